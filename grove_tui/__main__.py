@@ -1,0 +1,3 @@
+from grove_tui.cli import main
+
+main()

@@ -1,0 +1,62 @@
+"""The `grove` command: with no subcommand it opens the TUI; subcommands run the headless core.
+
+Subcommands live one per module in this package and are imported only when used, so
+`grove --help` and the TUI start fast.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+
+import click
+
+# name -> "module:attribute" of a click command or group
+SUBCOMMANDS: dict[str, str] = {
+    "worlds": "grove_tui.cli.worlds:worlds",
+    "bt": "grove_tui.cli.bt:bt",
+    "rag": "grove_tui.cli.rag:rag",
+    "models": "grove_tui.cli.models:models",
+    "generate": "grove_tui.cli.generate:generate",
+    "batch": "grove_tui.cli.generate:batch",
+    "simulate": "grove_tui.cli.generate:simulate",
+    "export": "grove_tui.cli.export:export",
+    "metrics": "grove_tui.cli.export:metrics",
+    "picture": "grove_tui.cli.export:picture",
+    "eval": "grove_tui.cli.evaluate:evaluate",
+}
+
+
+class LazyGroup(click.Group):
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted(SUBCOMMANDS)
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        target = SUBCOMMANDS.get(cmd_name)
+        if target is None:
+            return None
+        module_name, attribute = target.split(":")
+        module = importlib.import_module(module_name)
+        return getattr(module, attribute)
+
+
+@click.group(cls=LazyGroup, invoke_without_command=True, context_settings={"help_option_names": ["-h", "--help"]})
+@click.option("--model", "model", type=click.Path(dir_okay=False), help="GGUF for both roles (roi and bt).")
+@click.option("--roi-model", type=click.Path(dir_okay=False), help="GGUF for RoI selection.")
+@click.option("--bt-model", type=click.Path(dir_okay=False), help="GGUF for behavior-tree synthesis.")
+@click.option("--world", "world", default=None, help="World to open: a shipped name or a path to a world YAML.")
+@click.option("--preset", "preset", default=None, help="Preset to select: emergency, queuing, normal, vanilla or a user preset.")
+@click.version_option(package_name="grove-tui")
+@click.pass_context
+def main(ctx: click.Context, model: str | None, roi_model: str | None, bt_model: str | None,
+         world: str | None, preset: str | None) -> None:
+    """GROVE-TUI: type a sentence, get a runnable pedestrian scenario.
+
+    With no subcommand, opens the terminal app.
+    """
+    ctx.ensure_object(dict)
+    ctx.obj.update(model=model, roi_model=roi_model, bt_model=bt_model)
+    if ctx.invoked_subcommand is None:
+        from grove_tui.app import run_app
+
+        sys.exit(run_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))

@@ -1,0 +1,1 @@
+"""Local model handling: discovery, loading, grammar-constrained generation, embedded default."""

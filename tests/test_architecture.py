@@ -1,0 +1,59 @@
+"""The headless core never imports textual, so scripts and batch mode run without a UI."""
+
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+CORE = [ROOT / "grove_tui" / "engine", ROOT / "grove_tui" / "models"]
+FORBIDDEN = ("textual", "grove_tui.screens", "grove_tui.app")
+
+
+def _imports(path: Path) -> list[tuple[int, str]]:
+    tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [(node.lineno, alias.name) for alias in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            found.append((node.lineno, node.module))
+    return found
+
+
+def test_core_sources_never_import_textual():
+    offenders = []
+    for package in CORE:
+        for path in sorted(package.rglob("*.py")):
+            for line, module in _imports(path):
+                if module.startswith(FORBIDDEN):
+                    offenders.append(f"{path.relative_to(ROOT)}:{line} imports {module}")
+    assert not offenders, "\n".join(offenders)
+
+
+def test_importing_the_core_does_not_load_textual():
+    code = (
+        "import sys, pkgutil, importlib, grove_tui.engine as e, grove_tui.models as m\n"
+        "for pkg in (e, m):\n"
+        "    for info in pkgutil.walk_packages(pkg.__path__, pkg.__name__ + '.'):\n"
+        "        importlib.import_module(info.name)\n"
+        "bad = [n for n in sys.modules if n == 'textual' or n.startswith('textual.')]\n"
+        "print(','.join(bad))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "", f"textual loaded by the core: {out.stdout}"
+
+
+def test_import_linter_contract_holds():
+    pytest.importorskip("importlinter")
+    out = subprocess.run([sys.executable, "-m", "importlinter.cli", "--config", str(ROOT / "pyproject.toml")],
+                         capture_output=True, text=True, cwd=ROOT, timeout=300)
+    if "No module named importlinter.cli" in out.stderr:
+        out = subprocess.run(["lint-imports", "--config", str(ROOT / "pyproject.toml")],
+                             capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert out.returncode == 0, out.stdout + out.stderr
