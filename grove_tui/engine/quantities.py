@@ -1,0 +1,244 @@
+"""Deterministic reading of the prompt: word normalisation and the head counts it states.
+
+Small models miscount, so the numbers a user writes ("ten", "a dozen", "20 people", "a family of
+four") are read here, without the model, and post-processing makes the population match them.
+The same light lemmatiser feeds the strategic layer's token matching.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+STOPWORDS = frozenset(
+    """a an the and or of in on at to from into onto by with for as is are was were be been being it its
+    this that these those there their they them he she his her we our you your i me my some any each every
+    all who whom which what while when where then than so very just also around near next inside outside
+    toward towards through across about over under up down out off people person someone everyone
+    other others one ones do does did have has had will would should can could may might must let lets make makes
+    while during after before until still again more most many much few several""".split()
+)
+
+# Words that end a counted phrase without being stopwords for matching ("waiting" names a room).
+_PHRASE_STOPS = frozenset("go goes going walk walks walking stand stands standing wait waits waiting sit sits sitting".split())
+
+_IRREGULAR = {
+    "people": "person", "persons": "person", "children": "child", "men": "man", "women": "woman",
+    "staff": "staff", "feet": "foot", "teeth": "tooth", "mice": "mouse", "geese": "goose",
+    "elderly": "elderly", "police": "police", "series": "series", "news": "news",
+}
+_KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
+
+
+def lemma(word: str) -> str:
+    """Plural to singular by rule; enough to match "nurses" to "nurse" and "pharmacies" to "pharmacy"."""
+    w = word.lower()
+    if w in _IRREGULAR:
+        return _IRREGULAR[w]
+    if len(w) <= 3 or not w.endswith("s") or w.endswith(_KEEP_S):
+        return w
+    if w.endswith("ies") and len(w) > 4:
+        return w[:-3] + "y"
+    if w.endswith(("ches", "shes", "xes", "zes", "sses")):
+        return w[:-2]
+    return w[:-1]
+
+
+_WORD = re.compile(r"[a-z0-9]+(?:[,'][0-9]{3})*")
+
+
+def words(text: str) -> list[str]:
+    return _WORD.findall(text.lower().replace("-", " "))
+
+
+def semantic_tokens(text: str) -> list[str]:
+    """Lowercased, lemmatised content words, in order, without stopwords or numbers."""
+    out: list[str] = []
+    for w in words(text):
+        if w in STOPWORDS or w.isdigit() or w in _NUMBER_WORDS or "," in w:
+            continue
+        out.append(lemma(w))
+    return out
+
+
+_UNITS = {
+    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15,
+    "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19,
+}
+_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
+_SCALES = {"hundred": 100, "thousand": 1000}
+_NUMBER_WORDS = set(_UNITS) | set(_TENS) | set(_SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
+# Vague quantities get a fixed, documented reading so the same prompt always gives the same crowd.
+VAGUE = {"few": 3, "handful": 4, "several": 4, "some": 3, "couple": 2, "pair": 2, "dozens": 24, "many": 12}
+_VAGUE_EXACT = {"couple", "pair"}  # "a couple of" means two, not "about two"
+
+PERSON_NOUNS = frozenset(
+    """person people individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
+    colleague coworker manager receptionist clerk cashier pharmacist guard security officer cleaner janitor
+    porter student teacher child kid baby toddler teenager adult parent mother father mom dad grandparent
+    grandmother grandfather family friend couple guest resident neighbour neighbor roommate tenant customer
+    client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
+    volunteer caregiver paramedic intern developer engineer member attendee participant crowd group team
+    queue line occupant user walker runner""".split()
+)
+# Collectives whose size follows an "of N" ("a family of four", "a group of 5 friends").
+COLLECTIVES = frozenset({"family", "group", "team", "party", "crowd", "couple", "queue", "line", "bunch", "circle"})
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A head count the prompt states, attached to the phrase it counts."""
+
+    count: int
+    noun: str  # lemma of the counted noun: "patient", "family", "person"
+    phrase: str  # the prompt words from the number to the end of the noun: "ten patients"
+    start: int  # character span of `phrase` in the prompt
+    end: int
+    exact: bool  # False for vague words (few, several)
+
+    @property
+    def label_tokens(self) -> frozenset[str]:
+        return frozenset(t for t in semantic_tokens(self.phrase) if t not in _NUMBER_WORDS)
+
+
+_TOKEN = re.compile(r"\d{1,3}(?:,\d{3})+|\d+|[A-Za-z]+(?:'[A-Za-z]+)?")
+
+
+def extract_quantities(prompt: str) -> list[Quantity]:
+    """Every stated head count, in prompt order; each person phrase is counted once."""
+    toks = [(m.group(0), m.start(), m.end()) for m in _TOKEN.finditer(prompt)]
+    low = [t[0].lower() for t in toks]
+    found: list[Quantity] = []
+    used_until = -1
+    i = 0
+    while i < len(toks):
+        if i <= used_until:
+            i += 1
+            continue
+        parsed = _read_number(low, i)
+        if parsed is None:
+            i += 1
+            continue
+        value, exact, j = parsed  # j: first token after the number words
+        # "a family of four", "a group of 5 nurses": the collective noun sits before the number.
+        if i >= 2 and low[i - 1] == "of" and lemma(low[i - 2]) in COLLECTIVES and not _is_counted_noun(low, j):
+            noun_index = i - 2
+            begin = noun_index - 1 if noun_index >= 1 and low[noun_index - 1] in ("a", "an", "one") else noun_index
+            found.append(_quantity(prompt, toks, begin, j - 1, value, lemma(low[noun_index]), exact))
+            used_until = j - 1
+            i = j
+            continue
+        noun_at = _find_noun(low, j)
+        if noun_at is None and low[j - 1] in ("couple", "pair") and low[i] in ("a", "one"):
+            noun_at = j - 1  # "a couple walks in": the couple is the counted noun
+        if noun_at is None:
+            i = j
+            continue
+        noun = lemma(low[noun_at])
+        if noun in COLLECTIVES and noun_at + 2 < len(low) and low[noun_at + 1] == "of":
+            # "two groups of three" -> 6 people; "a group of nurses" -> the collective word's count.
+            inner = _read_number(low, noun_at + 2)
+            if inner is not None:
+                value, exact, end = value * inner[0], exact and inner[1], inner[2]
+                tail = _find_noun(low, end)
+                last = tail if tail is not None and tail <= end + 1 else end - 1
+                found.append(_quantity(prompt, toks, i, last, value, noun, exact))
+                used_until = last
+                i = last + 1
+                continue
+            member = _find_noun(low, noun_at + 2)
+            if member is not None and member <= noun_at + 3 and lemma(low[member]) in PERSON_NOUNS:
+                if value == 1 and low[i] in ("a", "an"):
+                    # "a group of nurses" states no number: the group's size is the model's choice.
+                    i = member + 1
+                    used_until = member
+                    continue
+        found.append(_quantity(prompt, toks, i, noun_at, value, noun, exact))
+        used_until = noun_at
+        i = noun_at + 1
+    return found
+
+
+def _quantity(prompt: str, toks, first: int, last: int, value: int, noun: str, exact: bool) -> Quantity:
+    start, end = toks[first][1], toks[last][2]
+    return Quantity(count=value, noun=noun, phrase=prompt[start:end], start=start, end=end, exact=exact)
+
+
+def _is_counted_noun(low: list[str], j: int) -> bool:
+    return j < len(low) and lemma(low[j]) in PERSON_NOUNS and lemma(low[j]) not in COLLECTIVES
+
+
+def _find_noun(low: list[str], j: int) -> int | None:
+    """The person noun a number counts: within three words ("ten tired old patients"), before any verb-like stop."""
+    for k in range(j, min(j + 4, len(low))):
+        w = low[k]
+        if w == "of" and k == j:
+            continue  # "a dozen of the nurses"
+        if w in ("the", "them", "those", "these") and k <= j + 1:
+            continue
+        if lemma(w) in PERSON_NOUNS:
+            return k
+        if (w in STOPWORDS or w in _PHRASE_STOPS) and w != "of":
+            return None
+    return None
+
+
+def _read_number(low: list[str], i: int) -> tuple[int, bool, int] | None:
+    """(value, exact, index after) for a number expression starting at token i, else None."""
+    w = low[i]
+    n = len(low)
+    nxt = low[i + 1] if i + 1 < n else ""
+    if re.fullmatch(r"\d{1,3}(?:,\d{3})+|\d+", w):
+        value = int(w.replace(",", ""))
+        if nxt == "dozen":
+            return value * 12, True, i + 2
+        if nxt in _SCALES:
+            return value * _SCALES[nxt], True, i + 2
+        return value, True, i + 1
+    if w in ("a", "an"):
+        if nxt == "dozen":
+            return 12, True, i + 2
+        if nxt in ("couple", "pair"):
+            j = i + 2
+            return 2, True, j + 1 if j < n and low[j] == "of" else j
+        if nxt in ("few", "handful"):
+            j = i + 2
+            return VAGUE[nxt], False, j + 1 if j < n and low[j] == "of" else j
+        if nxt in ("hundred", "thousand"):
+            return _SCALES[nxt], True, i + 2
+        if nxt and lemma(nxt) in PERSON_NOUNS:
+            return 1, True, i + 1
+        return None
+    if w in ("few", "several", "dozens", "handful"):
+        j = i + 1
+        return VAGUE[w], w in _VAGUE_EXACT, j + 1 if j < n and low[j] == "of" else j
+    if w in _UNITS or w in _TENS:
+        value, j = _spelled(low, i)
+        if j < n and low[j] == "dozen":
+            return value * 12, True, j + 1
+        return value, True, j
+    if w == "dozen":
+        return 12, True, i + 1
+    return None
+
+
+def _spelled(low: list[str], i: int) -> tuple[int, int]:
+    """Spelled-out whole numbers up to the thousands: "twenty five", "two hundred and ten"."""
+    total, current, j = 0, 0, i
+    while j < len(low):
+        w = low[j]
+        if w in _UNITS:
+            current += _UNITS[w]
+        elif w in _TENS:
+            current += _TENS[w]
+        elif w in _SCALES and (current or total):
+            current = max(current, 1) * _SCALES[w]
+            if w == "thousand":
+                total, current = total + current, 0
+        elif w == "and" and j + 1 < len(low) and (low[j + 1] in _UNITS or low[j + 1] in _TENS) and (current >= 100 or total):
+            pass
+        else:
+            break
+        j += 1
+    return total + current, j
