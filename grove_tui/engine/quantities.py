@@ -55,7 +55,7 @@ def semantic_tokens(text: str) -> list[str]:
     """Lowercased, lemmatised content words, in order, without stopwords or numbers."""
     out: list[str] = []
     for w in words(text):
-        if w in STOPWORDS or w.isdigit() or w in _NUMBER_WORDS or "," in w:
+        if w in STOPWORDS or w.isdigit() or w in NUMBER_WORDS or "," in w:
             continue
         out.append(lemma(w))
     return out
@@ -68,7 +68,7 @@ _UNITS = {
 }
 _TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
 _SCALES = {"hundred": 100, "thousand": 1000}
-_NUMBER_WORDS = set(_UNITS) | set(_TENS) | set(_SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
+NUMBER_WORDS = set(_UNITS) | set(_TENS) | set(_SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
 # Vague quantities get a fixed, documented reading so the same prompt always gives the same crowd.
 VAGUE = {"few": 3, "handful": 4, "several": 4, "some": 3, "couple": 2, "pair": 2, "dozens": 24, "many": 12}
 _VAGUE_EXACT = {"couple", "pair"}  # "a couple of" means two, not "about two"
@@ -99,7 +99,7 @@ class Quantity:
 
     @property
     def label_tokens(self) -> frozenset[str]:
-        return frozenset(t for t in semantic_tokens(self.phrase) if t not in _NUMBER_WORDS)
+        return frozenset(t for t in semantic_tokens(self.phrase) if t not in NUMBER_WORDS)
 
 
 _TOKEN = re.compile(r"\d{1,3}(?:,\d{3})+|\d+|[A-Za-z]+(?:'[A-Za-z]+)?")

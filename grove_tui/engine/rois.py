@@ -1,0 +1,360 @@
+"""Strategic layer: which Regions of Interest of the world the prompt is about.
+
+Semantic tokens of the prompt are matched against the world's RoI index (zone, door and entity
+names split on underscores, types, tags, aliases) with IDF-weighted lexical scoring, a small table
+of place synonyms and, when given, an embedding similarity. Each prompt word selects the RoIs that
+match it best, so "pharmacy counter" picks the counter (and through it the pharmacy) rather than
+every counter. Zones nobody mentions are dropped from the bt model's context; a place the prompt
+names that the world does not have is an error listing the closest real names.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from grove_tui.engine.presets import GenerationError, Preset
+from grove_tui.engine.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, semantic_tokens, words
+
+# Groups of words people use for the same kind of place; matching any word of a group counts as
+# matching the others, at a discount so that the literal word still wins.
+SYNONYMS: tuple[frozenset[str], ...] = tuple(
+    frozenset(group.split())
+    for group in (
+        "toilet restroom bathroom washroom wc lavatory",
+        "cafeteria canteen cafe coffee dining restaurant",
+        "lobby foyer entrance entry hall atrium",
+        "reception front desk check",
+        "corridor hallway hall passage aisle",
+        "exit way out door gate",
+        "stair stairs staircase stairway",
+        "elevator lift",
+        "kitchen kitchenette pantry",
+        "living lounge sitting family",
+        "bedroom bed sleeping",
+        "office workspace desk cubicle",
+        "meeting conference boardroom",
+        "ward patient room",
+        "pharmacy drugstore dispensary chemist medicine",
+        "waiting wait",
+        "emergency er ae casualty",
+        "sofa couch settee",
+        "vending machine snack",
+        "counter desk booth till",
+        "garden yard patio terrace balcony",
+        "study library",
+        "printer copier print",
+    )
+)
+
+# Nouns that follow "in the", "at the", "to the" without naming a place.
+NON_PLACES = frozenset(
+    """robot robots time same moment morning afternoon evening night day hour minute second end start beginning
+    middle front back side corner center centre way direction line queue row circle group pair hurry rush
+    panic order turn silence distance speed pace crowd other each everyone someone people person alarm fire
+    emergency evacuation meantime while chance case past future background foreground left right top bottom
+    area place spot location here there""".split()
+)
+_LOCATIVES = ("in", "at", "to", "into", "near", "inside", "from", "toward", "towards", "by", "through", "across",
+              "around", "outside", "beside", "behind", "past", "onto", "via", "within", "reach", "visit", "enter",
+              "leave", "exit", "use")
+_DETERMINERS = ("the", "a", "an", "their", "our", "its", "his", "her", "my", "your", "this", "that", "some")
+
+
+@dataclass(frozen=True)
+class RoIMatch:
+    kind: str  # "zone" | "door" | "entity"
+    name: str
+    zone: str
+    score: float
+    matched: tuple[str, ...]  # prompt tokens that selected it; empty when added by a rule
+    reason: str  # "prompt" | "preset" | "container" | "default" | "model"
+
+
+@dataclass
+class RoISelection:
+    """What the strategic layer hands on: selected RoIs, their zones, and the text the bt model sees."""
+
+    matches: list[RoIMatch]
+    zones: list[str]  # selected zone names, in prompt order
+    named_zones: list[str]  # zones the prompt itself names (directly or through a door/entity), for grounding
+    summary: str  # compact description of the selected RoIs for the bt model
+    roi_names: list[str] = field(default_factory=list)  # every name the draft may use as a target
+    exits: list[str] = field(default_factory=list)  # exit door names offered to the model
+
+    @property
+    def names(self) -> list[str]:
+        return [m.name for m in self.matches]
+
+
+@dataclass(frozen=True)
+class _Entry:
+    kind: str
+    name: str
+    zone: str
+    tokens: frozenset[str]  # exact vocabulary
+    phrases: tuple[tuple[str, ...], ...]  # multi-word names and aliases, lemmatised
+    obj: Any
+
+
+def _name_tokens(text: str) -> list[str]:
+    return [lemma(w) for w in words(text.replace("_", " ")) if w not in STOPWORDS and not w.isdigit()]
+
+
+class RoIMatcher:
+    """Index of a world's RoIs for prompt matching; build once per world."""
+
+    def __init__(self, world: Any, embed: Callable[[list[str]], Any] | None = None) -> None:
+        self.world = world
+        self._embed = embed
+        self.entries: list[_Entry] = []
+        for zone in world.zones:
+            self.entries.append(self._entry("zone", zone.name, zone.name, zone, zone.type, zone.tags, zone.aliases))
+            for door in zone.doors:
+                self.entries.append(self._entry("door", door.name, zone.name, door, "exit door" if door.exit else "door",
+                                                getattr(door, "tags", ()), getattr(door, "aliases", ())))
+            for entity in zone.entities:
+                self.entries.append(self._entry("entity", entity.name, zone.name, entity, entity.type, entity.tags,
+                                                getattr(entity, "aliases", ())))
+        df: dict[str, int] = {}
+        for e in self.entries:
+            for t in e.tokens:
+                df[t] = df.get(t, 0) + 1
+        n = len(self.entries)
+        self.idf = {t: math.log(1.0 + n / c) for t, c in df.items()}
+        self.vocabulary = frozenset(df)
+        self._embeddings = None
+
+    @staticmethod
+    def _entry(kind: str, name: str, zone: str, obj: Any, type_: str, tags: Sequence[str], aliases: Sequence[str]) -> _Entry:
+        tokens: set[str] = set(_name_tokens(name)) | set(_name_tokens(type_ or ""))
+        phrases = [tuple(_name_tokens(name))]
+        for tag in tags or ():
+            tokens |= set(_name_tokens(tag))
+        for alias in aliases or ():
+            alias_tokens = _name_tokens(alias)
+            tokens |= set(alias_tokens)
+            phrases.append(tuple(alias_tokens))
+        if type_:
+            phrases.append(tuple(_name_tokens(type_)))
+        return _Entry(kind, name, zone, frozenset(tokens), tuple(p for p in phrases if len(p) > 1), obj)
+
+    # ---- scoring ------------------------------------------------------------------------------
+
+    def _token_weight(self, entry: _Entry, token: str) -> float:
+        if token in entry.tokens:
+            return self.idf.get(token, 0.0)
+        for group in SYNONYMS:
+            if token in group:
+                hits = [t for t in entry.tokens if t in group]
+                if hits:
+                    return 0.6 * max(self.idf.get(t, 0.0) for t in hits)
+        return 0.0
+
+    def score(self, entry: _Entry, tokens: Sequence[str]) -> tuple[float, tuple[str, ...]]:
+        matched: list[str] = []
+        total = 0.0
+        for t in dict.fromkeys(tokens):
+            w = self._token_weight(entry, t)
+            if w > 0:
+                total += w
+                matched.append(t)
+        joined = " " + " ".join(tokens) + " "
+        for phrase in entry.phrases:
+            if " " + " ".join(phrase) + " " in joined:
+                total += 0.5 * sum(self.idf.get(t, 0.0) for t in phrase)
+        # A name fully present in the prompt beats one that only shares a word with it.
+        name_tokens = set(_name_tokens(entry.name))
+        if name_tokens and name_tokens <= set(tokens):
+            total += 0.5
+        return total, tuple(matched)
+
+    def _embedding_bonus(self, prompt: str) -> dict[str, float]:
+        if self._embed is None:
+            return {}
+        import numpy as np
+
+        if self._embeddings is None:
+            texts = [f"{e.name.replace('_', ' ')} {' '.join(sorted(e.tokens))}" for e in self.entries]
+            self._embeddings = np.asarray(self._embed(texts), dtype=np.float32)
+        query = np.asarray(self._embed([prompt]), dtype=np.float32)[0]
+        sims = self._embeddings @ query
+        return {e.name: float(s) for e, s in zip(self.entries, sims)}
+
+    # ---- selection ----------------------------------------------------------------------------
+
+    def match(self, prompt: str) -> list[RoIMatch]:
+        """RoIs the prompt names: for each prompt word, the best-scoring RoIs containing it."""
+        tokens = [t for t in semantic_tokens(prompt) if t not in PERSON_NOUNS or t in self.vocabulary]
+        bonus = self._embedding_bonus(prompt)
+        scored = []
+        for e in self.entries:
+            s, matched = self.score(e, tokens)
+            if s > 0:
+                scored.append((s + 0.5 * max(bonus.get(e.name, 0.0), 0.0), matched, e))
+        chosen: dict[str, tuple[float, tuple[str, ...], _Entry]] = {}
+        for t in dict.fromkeys(tokens):
+            holders = [(s, m, e) for s, m, e in scored if t in m]
+            if not holders:
+                continue
+            best = max(s for s, _, _ in holders)
+            for s, m, e in holders:
+                if s >= best - 1e-9:
+                    chosen[e.name] = (s, m, e)
+        # Order by first mention so group/zone order follows the sentence.
+        position = {t: i for i, t in reversed(list(enumerate(tokens)))}
+        ordered = sorted(chosen.values(), key=lambda v: (min(position.get(t, 1 << 30) for t in v[1]), -v[0], v[2].name))
+        return [RoIMatch(e.kind, e.name, e.zone, round(s, 4), m, "prompt") for s, m, e in ordered]
+
+    def unknown_places(self, prompt: str) -> list[str]:
+        """Place phrases ("the swimming pool") that match nothing in the world."""
+        toks = words(prompt)
+        missing: list[str] = []
+        for i, w in enumerate(toks):
+            if w not in _LOCATIVES:
+                continue
+            j = i + 1
+            while j < len(toks) and toks[j] in _DETERMINERS:
+                j += 1
+            if j == i + 1 and w in ("in", "at", "to", "by", "from"):
+                continue  # "in line", "at once", "to wait": no determiner, not a place phrase
+            phrase: list[str] = []
+            while (j < len(toks) and len(phrase) < 3 and toks[j] not in STOPWORDS and toks[j] not in _LOCATIVES
+                   and toks[j] not in NUMBER_WORDS and not toks[j][:1].isdigit()):
+                phrase.append(toks[j])
+                j += 1
+            if not phrase:
+                continue
+            lemmas = [lemma(p) for p in phrase]
+            if any(l in NON_PLACES or l in PERSON_NOUNS for l in lemmas[-1:]) or all(p.isdigit() for p in phrase):
+                continue
+            if any(self._known(l) for l in lemmas):
+                continue
+            missing.append(" ".join(phrase))
+        return list(dict.fromkeys(missing))
+
+    def _known(self, token: str) -> bool:
+        if token in self.vocabulary:
+            return True
+        return any(token in group and any(t in group for t in self.vocabulary) for group in SYNONYMS)
+
+    def close_matches(self, phrase: str, n: int = 5) -> list[str]:
+        names = [e.name for e in self.entries]
+        label = {e.name.replace("_", " "): e.name for e in self.entries}
+        for e in self.entries:
+            for t in e.tokens:
+                label.setdefault(t, e.name)
+        hits = difflib.get_close_matches(phrase.lower(), list(label), n=n * 2, cutoff=0.4)
+        out = list(dict.fromkeys(label[h] for h in hits))
+        if len(out) < n:
+            # Fall back to the zones themselves so the user always sees what exists.
+            out += [z.name for z in self.world.zones if z.name not in out]
+        return [name for name in out if name in names][:n]
+
+
+def select_rois(world: Any, preset: Preset, prompt: str, matcher: RoIMatcher | None = None,
+                max_default_zones: int = 3) -> RoISelection:
+    """The strategic layer: RoIs named by the prompt plus what the preset needs, summarised."""
+    matcher = matcher or RoIMatcher(world)
+    unknown = matcher.unknown_places(prompt)
+    if unknown:
+        parts = [f"'{p}' (closest: {', '.join(matcher.close_matches(p))})" for p in unknown]
+        raise GenerationError(f"the prompt names a place world '{world.name}' does not have: " + "; ".join(parts))
+    if preset.context == "world":
+        return _whole_world(world, matcher.match(prompt))
+    matches = matcher.match(prompt)
+    named_zones = list(dict.fromkeys(m.zone for m in matches))
+    if not matches:
+        # Nothing named: the busiest hubs (most doors) make a plausible default stage.
+        hubs = sorted(world.zones, key=lambda z: (-len(world.doors_of(z.name)), -z.area, z.name))[:max_default_zones]
+        matches = [RoIMatch("zone", z.name, z.name, 0.0, (), "default") for z in hubs]
+    selected = {m.name for m in matches}
+    for m in list(matches):
+        if m.kind != "zone" and m.zone not in selected:
+            matches.append(RoIMatch("zone", m.zone, m.zone, 0.0, (), "container"))
+            selected.add(m.zone)
+    exits: list[str] = []
+    if "exits" in preset.required_rois:
+        for door in world.exits():
+            exits.append(door.name)
+            if door.name not in selected:
+                matches.append(RoIMatch("door", door.name, door.zone, 0.0, (), "preset"))
+                selected.add(door.name)
+    zones = list(dict.fromkeys(m.zone if m.kind != "zone" else m.name for m in matches if m.kind == "zone" or m.reason != "preset"))
+    roi_names = list(dict.fromkeys(m.name for m in matches))
+    summary = summarize(world, zones, {m.name for m in matches}, exits)
+    return RoISelection(matches, zones, named_zones or zones, summary, roi_names, exits)
+
+
+def _whole_world(world: Any, named: list[RoIMatch]) -> RoISelection:
+    zones = [z.name for z in world.zones]
+    everything = []
+    for z in world.zones:
+        everything.append(RoIMatch("zone", z.name, z.name, 0.0, (), "world"))
+        everything += [RoIMatch("door", d.name, z.name, 0.0, (), "world") for d in z.doors]
+        everything += [RoIMatch("entity", e.name, z.name, 0.0, (), "world") for e in z.entities]
+    exits = [d.name for d in world.exits()]
+    names = [m.name for m in everything]
+    named_zones = list(dict.fromkeys(m.zone for m in named)) or zones
+    return RoISelection(everything, zones, named_zones, summarize(world, zones, set(names), exits, full=True), names, exits)
+
+
+def _fmt(v: float) -> str:
+    return f"{v:.1f}".rstrip("0").rstrip(".") if abs(v - round(v)) > 1e-9 else str(int(round(v)))
+
+
+def _pt(p: Sequence[float]) -> str:
+    return f"({_fmt(p[0])},{_fmt(p[1])})"
+
+
+def summarize(world: Any, zones: Sequence[str], selected: set[str], exits: Sequence[str], full: bool = False) -> str:
+    """One block per selected zone: metadata, boundary, entrances, selected entities.
+
+    Guided presets list only the entities the prompt selected (or all of a zone's entities when the
+    zone itself was named); `full` (the vanilla baseline) lists everything with descriptions.
+    """
+    lines: list[str] = []
+    for name in zones:
+        z = world.zone(name)
+        head = f"zone {z.name} ({z.type})"
+        if z.aliases:
+            head += " aka " + ", ".join(z.aliases)
+        lines.append(f"{head}: {z.description}".rstrip(": ") if z.description else head)
+        lines.append("  boundary: " + " ".join(_pt(p) for p in z.boundary))
+        if full and z.tags:
+            lines.append("  tags: " + ", ".join(z.tags))
+        doors = [d for d in world.doors() if d.zone == z.name or d.leads_to == z.name]
+        if doors:
+            parts = []
+            for d in doors:
+                other = d.leads_to if d.zone == z.name else d.zone
+                parts.append(f"{d.name} {_pt(d.position)} to {other}" + (" EXIT" if d.exit else ""))
+            lines.append("  doors: " + "; ".join(parts))
+        ents = [e for e in z.entities if full or e.name in selected or z.name in selected and _zone_named_alone(z, selected)]
+        if ents:
+            parts = []
+            for e in ents:
+                text = f"{e.name} ({e.type}) at {_pt(e.interaction_point)}"
+                if full and e.description:
+                    text += f" - {e.description}"
+                parts.append(text)
+            lines.append("  entities: " + "; ".join(parts))
+    if exits:
+        exit_doors = [d for d in world.exits() if d.name in exits]
+        lines.append("exits: " + "; ".join(f"{d.name} {_pt(d.position)} in {d.zone}" for d in exit_doors))
+    return "\n".join(lines)
+
+
+def _zone_named_alone(zone: Any, selected: set[str]) -> bool:
+    """True when the prompt named the zone but none of its entities: show them all, they may be meant."""
+    return not any(e.name in selected for e in zone.entities)
+
+
+def describe_selection(selection: RoISelection) -> list[dict[str, Any]]:
+    """JSON-ready record of the selection for generation.json."""
+    return [{"kind": m.kind, "name": m.name, "zone": m.zone, "score": m.score, "matched": list(m.matched),
+             "reason": m.reason} for m in selection.matches]
+

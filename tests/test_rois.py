@@ -1,0 +1,164 @@
+"""Strategic layer: the prompt's places are found in the world's RoI index; unknown places are refused."""
+
+from __future__ import annotations
+
+import pytest
+
+from grove_tui.engine.presets import GenerationError, load_preset
+from grove_tui.engine.rois import RoIMatcher, describe_selection, select_rois
+from grove_tui.engine.world import parse_world
+
+CLINIC = """
+name: clinic
+description: A small clinic for tests.
+zones:
+  - name: lobby
+    type: lobby
+    description: Entrance lobby with the reception desk.
+    aliases: [entrance hall, foyer]
+    boundary: [[0, 0], [10, 0], [10, 8], [0, 8]]
+    doors:
+      - {name: main_entrance, position: [5, 0], width: 2.0, leads_to: outside, exit: true}
+      - {name: lobby_corridor_door, position: [10, 4], width: 1.6, leads_to: corridor}
+    entities:
+      - {name: reception_desk, type: desk, footprint: [[3, 6], [7, 6], [7, 7], [3, 7]], interaction_point: [5, 5.4], tags: [reception, check-in]}
+  - name: corridor
+    type: corridor
+    description: Main corridor.
+    boundary: [[10, 2], [24, 2], [24, 6], [10, 6]]
+    doors:
+      - {name: corridor_pharmacy_door, position: [16, 6], width: 1.4, leads_to: pharmacy}
+      - {name: corridor_cafeteria_door, position: [20, 2], width: 1.6, leads_to: cafeteria}
+      - {name: back_exit, position: [24, 4], width: 1.6, leads_to: outside, exit: true}
+  - name: pharmacy
+    type: pharmacy
+    description: Pharmacy with a dispensing counter.
+    boundary: [[12, 6], [22, 6], [22, 14], [12, 14]]
+    entities:
+      - {name: pharmacy_counter, type: counter, footprint: [[14, 12.5], [20, 12.5], [20, 13.5], [14, 13.5]], interaction_point: [17, 11.8]}
+  - name: cafeteria
+    type: cafeteria
+    description: Cafeteria with tables and a coffee counter.
+    aliases: [canteen]
+    boundary: [[14, -8], [26, -8], [26, 2], [14, 2]]
+    entities:
+      - {name: coffee_counter, type: counter, footprint: [[15, -7.5], [19, -7.5], [19, -6.5], [15, -6.5]], interaction_point: [17, -5.8]}
+      - {name: vending_machine, type: vending_machine, footprint: [[24.5, 0], [25.5, 0], [25.5, 1], [24.5, 1]], interaction_point: [25, -0.6]}
+  - name: restroom
+    type: restroom
+    description: A tiny restroom.
+    aliases: [bathroom, toilet]
+    boundary: [[0, 8], [3, 8], [3, 10], [0, 10]]
+    doors:
+      - {name: restroom_door, position: [1.5, 8], width: 0.9, leads_to: lobby}
+"""
+
+
+@pytest.fixture(scope="module")
+def clinic():
+    world, problems = parse_world(CLINIC, "clinic.yaml")
+    assert not problems, problems
+    return world
+
+
+@pytest.fixture(scope="module")
+def matcher(clinic):
+    return RoIMatcher(clinic)
+
+
+def names(selection):
+    return [m.name for m in selection.matches]
+
+
+def test_entity_named_by_two_words_wins_over_every_counter(clinic, matcher):
+    sel = select_rois(clinic, load_preset("queuing"), "Ten patients queue at the pharmacy counter", matcher)
+    assert names(sel) == ["pharmacy_counter", "pharmacy"]
+    assert sel.zones == ["pharmacy"] and sel.named_zones == ["pharmacy"]
+    assert "coffee_counter" not in sel.summary and "cafeteria" not in sel.summary
+    assert "pharmacy_counter (counter) at (17,11.8)" in sel.summary
+
+
+def test_aliases_and_synonyms_select_zones_in_prompt_order(clinic, matcher):
+    sel = select_rois(clinic, load_preset("normal"), "A family walks from the lobby to the canteen", matcher)
+    assert sel.zones == ["lobby", "cafeteria"]
+    sel = select_rois(clinic, load_preset("normal"), "two visitors use the toilet", matcher)
+    assert sel.zones == ["restroom"]
+    sel = select_rois(clinic, load_preset("normal"), "nurses chat near the check-in", matcher)
+    assert names(sel) == ["reception_desk", "lobby"]
+
+
+def test_irrelevant_zones_are_dropped_from_the_summary(clinic, matcher):
+    sel = select_rois(clinic, load_preset("normal"), "people wander in the cafeteria", matcher)
+    assert sel.zones == ["cafeteria"]
+    assert "zone lobby" not in sel.summary and "zone cafeteria" in sel.summary
+    # the zone itself was named, so all its entities are offered
+    assert "coffee_counter" in sel.summary and "vending_machine" in sel.summary
+    assert "boundary: (14,-8) (26,-8) (26,2) (14,2)" in sel.summary
+
+
+def test_emergency_always_offers_the_exits(clinic, matcher):
+    sel = select_rois(clinic, load_preset("emergency"), "a fire alarm empties the pharmacy", matcher)
+    assert sel.zones == ["pharmacy"]
+    assert sel.exits == ["main_entrance", "back_exit"]
+    assert {"main_entrance", "back_exit"} <= set(sel.roi_names)
+    assert "exits: main_entrance (5,0) in lobby; back_exit (24,4) in corridor" in sel.summary
+
+
+def test_nothing_named_falls_back_to_the_best_connected_zones(clinic, matcher):
+    sel = select_rois(clinic, load_preset("normal"), "people walk around", matcher)
+    assert sel.zones == ["corridor", "lobby", "cafeteria"]
+    assert all(m.reason == "default" for m in sel.matches)
+
+
+@pytest.mark.parametrize("prompt, phrase", [
+    ("ten people swim in the swimming pool", "swimming pool"),
+    ("patients wait in the waiting room", "waiting room"),
+    ("a doctor walks to the helipad", "helipad"),
+])
+def test_unknown_place_is_an_error_with_close_matches(clinic, matcher, prompt, phrase):
+    with pytest.raises(GenerationError, match=f"does not have: '{phrase}' \\(closest: "):
+        select_rois(clinic, load_preset("normal"), prompt, matcher)
+
+
+@pytest.mark.parametrize("prompt", [
+    "people walk to the robot in the lobby",
+    "at the same time two nurses leave the pharmacy in a hurry",
+    "ten patients in line at the pharmacy counter",
+])
+def test_non_places_after_prepositions_are_not_errors(clinic, matcher, prompt):
+    select_rois(clinic, load_preset("normal"), prompt, matcher)
+
+
+def test_close_matches_prefer_similar_names(matcher):
+    assert matcher.close_matches("pharmacy counters")[0] == "pharmacy_counter"
+
+
+def test_vanilla_gets_the_whole_world(clinic, matcher):
+    sel = select_rois(clinic, load_preset("vanilla"), "Ten patients queue at the pharmacy counter", matcher)
+    assert sel.zones == [z.name for z in clinic.zones]
+    assert sel.named_zones == ["pharmacy"]
+    assert "coffee_counter" in sel.summary and "restroom_door" in sel.summary
+    guided = select_rois(clinic, load_preset("queuing"), "Ten patients queue at the pharmacy counter", matcher)
+    assert len(guided.summary) * 2 < len(sel.summary)
+
+
+def test_embedding_similarity_reranks_lexical_candidates_only(clinic):
+    seen = []
+
+    def embed(texts):
+        import numpy as np
+        seen.extend(texts)
+        # the prompt vector points at whatever mentions "coffee"
+        return np.array([[1.0, 0.0] if "coffee" in t or "cafe" in t else [0.0, 1.0] for t in texts])
+
+    m = RoIMatcher(clinic, embed=embed)
+    sel = select_rois(clinic, load_preset("normal"), "two people grab a coffee at the counter", m)
+    assert names(sel)[0] == "coffee_counter"
+    assert "restroom" not in names(sel)
+
+
+def test_selection_record_is_json_ready(clinic, matcher):
+    import json
+    sel = select_rois(clinic, load_preset("queuing"), "Ten patients queue at the pharmacy counter", matcher)
+    record = describe_selection(sel)
+    assert json.loads(json.dumps(record))[0]["name"] == "pharmacy_counter"
