@@ -1,0 +1,287 @@
+"""The app's facade over the headless engine.
+
+Screens call only this module, from worker threads, so the engine stays swappable: tests pass an
+`llm_factory` that returns a fake model (UI-only tests) or use the real embedded model. Heavy
+modules (the pipeline, llama.cpp, ChromaDB, torch) are imported inside the methods that need them
+so the app opens before they load.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from grove_tui.engine.errors import GroveError
+from grove_tui.engine.paths import data_dir
+
+LLMFactory = Callable[[str, Any], Any]  # (role, ModelInfo) -> LocalLLM-like
+RetrieverFactory = Callable[[], Any]
+
+
+@dataclass(frozen=True)
+class PresetInfo:
+    name: str
+    description: str
+
+
+@dataclass(frozen=True)
+class ModelStatus:
+    role: str
+    file: str
+    loaded: bool
+    error: str = ""
+
+
+@dataclass
+class GeneratedScenario:
+    """A generation result the app holds: the pipeline's result, its bundle on disk and the world."""
+
+    prompt: str
+    world_name: str
+    preset: str
+    seed: int
+    world: Any
+    result: Any  # GenerationResult: scenario, trees, fields, grid, report
+    bundle_dir: Path
+
+    @property
+    def scenario(self) -> Any:
+        return self.result.scenario
+
+
+@dataclass(frozen=True)
+class ExportedFile:
+    kind: str
+    path: Path
+
+
+@dataclass
+class ExportContext:
+    generated: GeneratedScenario
+    simulation: Any | None  # a Simulation that has run (its recorder holds the trajectories), or None
+    out_dir: Path
+    files: list[ExportedFile] = field(default_factory=list)
+
+    def add(self, kind: str, path: Path) -> None:
+        self.files.append(ExportedFile(kind, path))
+
+
+Exporter = Callable[[ExportContext], None]
+
+
+def export_bundle(ctx: ExportContext) -> None:
+    target = ctx.out_dir / "bundle"
+    shutil.copytree(ctx.generated.bundle_dir, target)
+    ctx.add("bundle", target)
+
+
+def export_trajectories(ctx: ExportContext) -> None:
+    if ctx.simulation is None:
+        return
+    path = ctx.out_dir / "trajectories.csv"
+    ctx.simulation.recorder.write_csv(path)
+    ctx.add("trajectories", path)
+
+
+def export_metrics(ctx: ExportContext) -> None:
+    if ctx.simulation is None:
+        return
+    from grove_tui.engine.atomic import write_text_atomic
+    from grove_tui.engine.metrics import Trajectories, compute_metrics
+
+    scenario = ctx.generated.scenario
+    trajectories = Trajectories.from_csv(ctx.out_dir / "trajectories.csv")
+    robot = scenario.robot
+    report = compute_metrics(
+        trajectories,
+        walls=ctx.generated.world.walls(),
+        robot_goal=None if robot is None else robot.goal,
+        robot_radius=0.3 if robot is None else robot.radius,
+        final_goals={a.id: a.goals[-1] for a in scenario.agents if a.goals},
+        events=tuple(getattr(ctx.simulation, "events", ()) or ()),
+    )
+    path = write_text_atomic(ctx.out_dir / "metrics.json", json.dumps(report.to_dict(), indent=2) + "\n")
+    ctx.add("metrics", path)
+
+
+EXPORTERS: list[tuple[str, Exporter]] = [
+    ("bundle", export_bundle),
+    ("trajectories", export_trajectories),
+    ("metrics", export_metrics),
+]
+
+
+def _slug(text: str, limit: int = 40) -> str:
+    return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")[:limit] or "scenario"
+
+
+class EngineBackend:
+    """Worlds, presets, models, generation, simulation and export, for the app's workers."""
+
+    def __init__(
+        self,
+        model: str | None = None,
+        roi_model: str | None = None,
+        bt_model: str | None = None,
+        llm_factory: LLMFactory | None = None,
+        retriever_factory: RetrieverFactory | None = None,
+        runs_dir: Path | None = None,
+        exporters: list[tuple[str, Exporter]] | None = None,
+    ) -> None:
+        self._cli_roi = roi_model or model
+        self._cli_bt = bt_model or model
+        self._llm_factory = llm_factory
+        self._retriever_factory = retriever_factory
+        self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
+        self.exporters = list(EXPORTERS if exporters is None else exporters)
+        self._lock = threading.RLock()
+        self._models: dict[str, Any] = {}
+        self._model_errors: dict[str, str] = {}
+        self._retriever: Any = None
+        self._worlds: dict[str, Any] = {}
+
+    # worlds and presets ------------------------------------------------------------------------------
+    def list_worlds(self) -> list[str]:
+        from grove_tui.engine.world import list_worlds
+
+        return list(list_worlds())
+
+    def load_world(self, name: str) -> Any:
+        with self._lock:
+            world = self._worlds.get(name)
+        if world is None:
+            from grove_tui.engine.world import load_world
+
+            world = load_world(name)
+            with self._lock:
+                self._worlds[name] = world
+        return world
+
+    def presets(self) -> list[PresetInfo]:
+        from grove_tui.engine.presets import list_presets, load_preset
+
+        infos = []
+        for name in list_presets():
+            try:
+                infos.append(PresetInfo(name, load_preset(name).description))
+            except GroveError as exc:
+                infos.append(PresetInfo(name, f"(broken: {exc})"))
+        return infos
+
+    # models --------------------------------------------------------------------------------------
+    def _resolve(self) -> dict[str, Any]:
+        from grove_tui.models.registry import resolve_models
+
+        return dict(resolve_models(self._cli_roi, self._cli_bt))
+
+    def model_status(self) -> list[ModelStatus]:
+        try:
+            infos = self._resolve()
+        except Exception as exc:  # a missing registry or model must show in the panel, not crash the app
+            problem = f"{type(exc).__name__}: {exc}"
+            return [ModelStatus("roi", "?", False, problem), ModelStatus("bt", "?", False, problem)]
+        with self._lock:
+            return [
+                ModelStatus(role, Path(str(_model_path(info))).name, role in self._models, self._model_errors.get(role, ""))
+                for role, info in infos.items()
+            ]
+
+    def load_models(self) -> dict[str, Any]:
+        """Load each role's model once (roles sharing a file share the instance)."""
+        with self._lock:
+            if self._models:
+                return dict(self._models)
+            infos = self._resolve()
+            by_path: dict[str, Any] = {}
+            for role, info in infos.items():
+                key = str(_model_path(info))
+                try:
+                    if key not in by_path:
+                        by_path[key] = self._make_llm(role, info)
+                except GroveError as exc:
+                    self._model_errors[role] = str(exc)
+                    raise
+                self._models[role] = by_path[key]
+                self._model_errors.pop(role, None)
+            return dict(self._models)
+
+    def _make_llm(self, role: str, info: Any) -> Any:
+        if self._llm_factory is not None:
+            return self._llm_factory(role, info)
+        from grove_tui.models.llm import LocalLLM
+
+        return LocalLLM(_model_path(info), n_ctx=getattr(info, "n_ctx", 4096), role=role)
+
+    def _retriever_instance(self) -> Any:
+        with self._lock:
+            if self._retriever is None:
+                if self._retriever_factory is not None:
+                    self._retriever = self._retriever_factory()
+                else:
+                    from grove_tui.engine.retrieval import NodeRetriever
+
+                    self._retriever = NodeRetriever()
+            return self._retriever
+
+    def close(self) -> None:
+        with self._lock:
+            for llm in {id(m): m for m in self._models.values()}.values():
+                closer = getattr(llm, "close", None)
+                if callable(closer):
+                    closer()
+            self._models.clear()
+
+    # generation ------------------------------------------------------------------------------------
+    def generate(
+        self,
+        world_name: str,
+        preset_name: str,
+        prompt: str,
+        seed: int,
+        on_event: Callable[[Any], None] | None = None,
+        cancel: threading.Event | None = None,
+    ) -> GeneratedScenario:
+        from grove_tui.engine.bundle import write_bundle
+        from grove_tui.engine.pipeline import GenerationPipeline
+        from grove_tui.engine.presets import load_preset
+
+        world = self.load_world(world_name)
+        preset = load_preset(preset_name)
+        models = self.load_models()
+        retriever = self._retriever_instance()
+        pipeline = GenerationPipeline(world, preset, models.get("roi"), models["bt"], retriever)
+        result = pipeline.run(prompt, seed=seed, on_event=on_event, cancel=cancel)
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        bundle_dir = write_bundle(result, self.runs_dir / f"{stamp}-{_slug(prompt)}-{seed}")
+        return GeneratedScenario(prompt, world_name, preset_name, seed, world, result, Path(bundle_dir))
+
+    # simulation ------------------------------------------------------------------------------------
+    def simulation(self, generated: GeneratedScenario) -> Any:
+        from grove_tui.engine.simulation import Simulation
+
+        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
+
+    # export ----------------------------------------------------------------------------------------
+    def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}"
+        suffix = 1
+        while out_dir.exists():
+            suffix += 1
+            out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}-{suffix}"
+        out_dir.mkdir(parents=True)
+        ctx = ExportContext(generated, simulation, out_dir)
+        for _kind, exporter in self.exporters:
+            exporter(ctx)
+        return ctx.files
+
+
+def _model_path(info: Any) -> Any:
+    return getattr(info, "path", info)

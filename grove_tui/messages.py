@@ -1,0 +1,101 @@
+"""Messages the app's worker threads post back to the UI (post_message is thread-safe)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from textual.message import Message
+
+
+@dataclass
+class WorldsListed(Message):
+    names: list[str]
+    error: str = ""
+
+
+@dataclass
+class WorldLoaded(Message):
+    name: str
+    world: Any
+
+
+@dataclass
+class WorldFailed(Message):
+    name: str
+    error: str
+
+
+@dataclass
+class PresetsListed(Message):
+    presets: list[Any]  # backend.PresetInfo
+
+
+@dataclass
+class ModelsChanged(Message):
+    statuses: list[Any]  # backend.ModelStatus
+    loading: bool = False
+
+
+@dataclass
+class StageStarted(Message):
+    stage: str
+
+
+@dataclass
+class StageFinished(Message):
+    stage: str
+    seconds: float
+    prompt_tokens: int
+    completion_tokens: int
+    detail: str
+
+
+@dataclass
+class TokensFlushed(Message):
+    """The streamed model text of a stage so far; a newer flush replaces one still queued."""
+
+    stage: str
+    text: str
+
+    def can_replace(self, message: Message) -> bool:
+        return isinstance(message, TokensFlushed) and message.stage == self.stage
+
+
+@dataclass
+class GenerationSucceeded(Message):
+    generated: Any  # backend.GeneratedScenario
+
+
+@dataclass
+class GenerationFailed(Message):
+    stage: str
+    error: str
+    hint: str
+
+
+@dataclass
+class GenerationCancelled(Message):
+    stage: str
+
+
+@dataclass
+class SimulationReady(Message):
+    simulation: Any
+
+
+@dataclass
+class SimulationFailed(Message):
+    error: str
+
+
+@dataclass
+class ExportFinished(Message):
+    files: list[Any]  # backend.ExportedFile
+    out_dir: Path
+
+
+@dataclass
+class ExportFailed(Message):
+    error: str

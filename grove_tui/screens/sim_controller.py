@@ -1,0 +1,171 @@
+"""Runs a Simulation in the worker thread and publishes immutable snapshots for the UI to draw.
+
+The UI never touches the Simulation: it sends commands through a queue and reads `latest`, a
+reference the sim thread swaps atomically. Nothing here imports textual.
+"""
+
+from __future__ import annotations
+
+import queue
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
+MAX_SPEED = 0.0  # as fast as the machine steps
+DRIVE_HOLD_SECONDS = 0.45  # terminals send no key-up: a drive command lasts until key repeat stops
+MAX_CATCH_UP_STEPS = 400
+
+
+@dataclass(frozen=True)
+class Snapshot:
+    serial: int
+    frame: Any
+    selected: int  # agent id whose tree status is attached, -1 for none
+    tree_status: tuple[tuple[Any, str, str], ...]
+    playing: bool
+    speed: float  # MAX_SPEED for as fast as possible
+    steps_per_second: float
+    manual_robot: bool
+
+
+class SimulationController:
+    def __init__(self, simulation: Any, fps: float = 20.0, speed: float = 1.0) -> None:
+        self.simulation = simulation
+        self.fps = fps
+        self.dt = float(getattr(simulation, "dt", 0.05))
+        self.speed = speed
+        self.playing = False
+        self.selected = -1
+        self.manual_robot = False
+        self.latest: Snapshot | None = None
+        self._commands: queue.SimpleQueue[tuple[Any, ...]] = queue.SimpleQueue()
+        self._serial = 0
+        self._anchor: tuple[float, float] | None = None
+        self._drive_until = 0.0
+        self._driving = False
+        self._step_times: list[tuple[float, int]] = []
+        self._steps = 0
+
+    # commands from the UI thread (thread-safe) ------------------------------------------------------
+    def send(self, *command: Any) -> None:
+        self._commands.put(command)
+
+    # the worker thread -----------------------------------------------------------------------------
+    def run(self, cancelled: Callable[[], bool]) -> None:
+        period = 1.0 / self.fps
+        self._publish()
+        while not cancelled():
+            tick_start = time.monotonic()
+            changed = self._drain()
+            if self.playing:
+                changed |= self._advance(tick_start, period)
+            if self._driving and time.monotonic() > self._drive_until:
+                self._robot_command(0.0, 0.0)
+                self._driving = False
+            if changed:
+                self._publish()
+            remaining = period - (time.monotonic() - tick_start)
+            if remaining > 0:
+                try:
+                    command = self._commands.get(timeout=remaining)
+                except queue.Empty:
+                    continue
+                self._commands.put(command)
+
+    def _advance(self, now: float, period: float) -> bool:
+        sim = self.simulation
+        before = self._steps
+        if self.speed == MAX_SPEED:
+            deadline = now + period
+            while time.monotonic() < deadline:
+                sim.step()
+                self._steps += 1
+        else:
+            t = self._time()
+            if self._anchor is None:
+                self._anchor = (now, t)
+            target = self._anchor[1] + self.speed * (now - self._anchor[0])
+            steps = int((target - t) / self.dt + 1e-9)
+            if steps > MAX_CATCH_UP_STEPS:  # the machine cannot keep up: drop the backlog, stay responsive
+                steps = MAX_CATCH_UP_STEPS
+                self._anchor = None
+            for _ in range(steps):
+                sim.step()
+                self._steps += 1
+        done = self._steps - before
+        if done:
+            self._step_times.append((time.monotonic(), done))
+            cutoff = time.monotonic() - 2.0
+            self._step_times = [(ts, n) for ts, n in self._step_times if ts >= cutoff]
+        return done > 0
+
+    def _time(self) -> float:
+        return float(getattr(self.simulation, "time", None) or self.simulation.frame().t)
+
+    def _drain(self) -> bool:
+        changed = False
+        while True:
+            try:
+                command = self._commands.get_nowait()
+            except queue.Empty:
+                return changed
+            changed = True
+            name, *args = command
+            if name == "play":
+                self.playing = bool(args[0]) if args else not self.playing
+                self._anchor = None
+            elif name == "step":
+                self.playing = False
+                for _ in range(int(args[0]) if args else 1):
+                    self.simulation.step()
+                    self._steps += 1
+            elif name == "speed":
+                self.speed = float(args[0])
+                self._anchor = None
+            elif name == "select":
+                self.selected = int(args[0])
+            elif name == "drive":
+                self.manual_robot = True
+                self._robot_command(float(args[0]), float(args[1]))
+                self._driving = True
+                self._drive_until = time.monotonic() + DRIVE_HOLD_SECONDS
+            elif name == "follow_path":
+                self.manual_robot = False
+                self._driving = False
+                crowd = getattr(self.simulation, "crowd", None)
+                if crowd is not None:
+                    crowd.clear_robot_command()
+            elif name == "call":
+                # Work that needs the simulation still (export) runs here, between steps;
+                # `reply` gets the result or the exception (it posts a message to the UI).
+                function, reply = args
+                try:
+                    result = function(self.simulation)
+                except Exception as exc:
+                    reply(exc)
+                else:
+                    reply(result)
+
+    def _robot_command(self, vx: float, vy: float) -> None:
+        crowd = getattr(self.simulation, "crowd", None)
+        if crowd is not None and crowd.has_robot:
+            crowd.command_robot(vx, vy)
+
+    def _publish(self) -> None:
+        sim = self.simulation
+        frame = sim.frame()
+        status: tuple[tuple[Any, str, str], ...] = ()
+        if self.selected >= 0:
+            try:
+                status = tuple(sim.tree_status(self.selected))
+            except Exception:  # the agent left (evacuated) or has no tree: no live status to show
+                status = ()
+        rate = 0.0
+        if len(self._step_times) >= 2:
+            span = self._step_times[-1][0] - self._step_times[0][0]
+            rate = sum(n for _, n in self._step_times[1:]) / span if span > 0 else 0.0
+        self._serial += 1
+        self.latest = Snapshot(self._serial, frame, self.selected, status, self.playing, self.speed,
+                               rate * self.dt, self.manual_robot)

@@ -1,0 +1,161 @@
+"""Behavior-tree viewer: groups -> agents -> BT.CPP v4 nodes with their ports, live status by node path."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from typing import Any
+
+from rich.style import Style
+from rich.text import Text
+from textual.widgets import Tree
+from textual.widgets.tree import TreeNode
+
+STATUS_CLASSES = {
+    "RUNNING": "bt--running",
+    "SUCCESS": "bt--success",
+    "FAILURE": "bt--failure",
+    "IDLE": "bt--idle",
+    "SKIPPED": "bt--idle",
+}
+LONG_PORT_CHARS = 18
+STRUCTURAL_TAGS = {"root", "BehaviorTree", "TreeNodesModel"}
+
+
+@dataclass(frozen=True)
+class BTNode:
+    """What a tree row stands for; `path` is the index path of the node inside its BehaviorTree."""
+
+    kind: str  # "group", "agent", "node", "robot"
+    agent_id: int = -1
+    name: str = ""
+    path: tuple[int, ...] = ()
+    ports: dict[str, str] = field(default_factory=dict)
+
+
+def short_port(value: str) -> str:
+    if ";" in value and len(value) > LONG_PORT_CHARS:
+        return f"[{value.count(';') + 1} pts]"
+    return value if len(value) <= LONG_PORT_CHARS else value[: LONG_PORT_CHARS - 1] + "…"
+
+
+def node_label(name: str, ports: dict[str, str]) -> Text:
+    label = Text(name, style="bold")
+    shown = [(k, v) for k, v in ports.items() if k not in ("name", "ID")]
+    if shown:
+        label.append(" ")
+        label.append(" ".join(f"{k}={short_port(v)}" for k, v in shown), style="dim")
+    return label
+
+
+def behavior_trees(xml_text: str) -> list[ET.Element]:
+    """The BehaviorTree elements of a BT.CPP v4 document, main tree first."""
+    root = ET.fromstring(xml_text)
+    trees = [root] if root.tag == "BehaviorTree" else root.findall("BehaviorTree")
+    main = root.get("main_tree_to_execute")
+    trees.sort(key=lambda t: t.get("ID") != main)
+    return trees
+
+
+def path_key(path: tuple[int, ...] | str) -> str:
+    return path if isinstance(path, str) else "/".join(str(i) for i in path)
+
+
+class BTTree(Tree[BTNode]):
+    HELP = """\
+## Behavior trees
+
+One branch per group, one per agent, then the agent's BehaviorTree.CPP nodes with their ports
+(long waypoint lists are abbreviated; the panel below shows them all). Selecting an agent or a
+node highlights it on the map. During simulation each node shows its live status:
+running, success, failure.
+"""
+
+    COMPONENT_CLASSES = {"bt--running", "bt--success", "bt--failure", "bt--idle"}
+    DEFAULT_CSS = """
+    BTTree > .bt--running { color: $warning; text-style: bold; }
+    BTTree > .bt--success { color: $success; }
+    BTTree > .bt--failure { color: $error; }
+    BTTree > .bt--idle { color: $foreground-muted; }
+    """
+
+    def __init__(self, label: str = "Scenario", **kwargs: Any) -> None:
+        super().__init__(label, **kwargs)
+        self.show_root = False
+        self.guide_depth = 2
+        self._status: dict[str, str] = {}
+        self._status_agent = -1
+        self._nodes_by_path: dict[tuple[int, str], TreeNode[BTNode]] = {}
+        self.agent_nodes: dict[int, TreeNode[BTNode]] = {}
+
+    # building ----------------------------------------------------------------------------------------
+    def add_agent_tree(self, parent: TreeNode[BTNode], agent_id: int, xml_text: str, expand: bool = False) -> None:
+        try:
+            trees = behavior_trees(xml_text)
+        except ET.ParseError as exc:
+            parent.add_leaf(Text(f"unreadable XML: {exc}", style="italic"), BTNode("node", agent_id, "error"))
+            return
+        for tree_index, tree in enumerate(trees):
+            container = parent if tree_index == 0 else parent.add(
+                Text(f"SubTree {tree.get('ID', '')}", style="italic"), BTNode("node", agent_id, tree.get("ID", "")))
+            for child_index, element in enumerate(tree):
+                self._add_element(container, agent_id, element, (child_index,) if tree_index == 0 else (), expand)
+
+    def _add_element(self, parent: TreeNode[BTNode], agent_id: int, element: ET.Element,
+                     path: tuple[int, ...], expand: bool) -> None:
+        if element.tag in STRUCTURAL_TAGS:
+            return
+        ports = dict(element.attrib)
+        data = BTNode("node", agent_id, element.tag, path, ports)
+        label = node_label(element.tag, ports)
+        children = [child for child in element if child.tag not in STRUCTURAL_TAGS]
+        if not children:
+            node = parent.add_leaf(label, data)
+        else:
+            node = parent.add(label, data, expand=expand)
+            for index, child in enumerate(children):
+                self._add_element(node, agent_id, child, path + (index,) if path else (), expand)
+        if path:
+            self._nodes_by_path[(agent_id, path_key(path))] = node
+
+    def add_agent(self, parent: TreeNode[BTNode], agent: Any, xml_text: str, expand: bool = False) -> TreeNode[BTNode]:
+        label = Text(f"agent {agent.id}", style="bold")
+        label.append(f" {agent.behavior} → {agent.zone}" if agent.zone else f" {agent.behavior}", style="dim")
+        node = parent.add(label, BTNode("agent", agent.id, f"agent {agent.id}"), expand=expand)
+        self.agent_nodes[agent.id] = node
+        self.add_agent_tree(node, agent.id, xml_text, expand=expand)
+        return node
+
+    def clear_all(self) -> None:
+        self.clear()
+        self._nodes_by_path.clear()
+        self.agent_nodes.clear()
+        self._status.clear()
+
+    # live status -------------------------------------------------------------------------------------
+    def set_status(self, agent_id: int, statuses: list[tuple[Any, str, str]]) -> None:
+        """Statuses from Simulation.tree_status: (node path, node name, status); repaints changed rows only."""
+        new = {path_key(path): str(status).upper() for path, _name, status in statuses}
+        if agent_id == self._status_agent and new == self._status:
+            return
+        changed = set(new.items()) ^ set(self._status.items()) if agent_id == self._status_agent else None
+        self._status, self._status_agent = new, agent_id
+        if changed is None:
+            self.refresh()
+            return
+        for key in {k for k, _ in changed}:
+            node = self._nodes_by_path.get((agent_id, key))
+            if node is not None:
+                node.refresh()
+
+    def render_label(self, node: TreeNode[BTNode], base_style: Style, style: Style) -> Text:
+        label = super().render_label(node, base_style, style)
+        data = node.data
+        if data is None or data.kind != "node" or data.agent_id != self._status_agent:
+            return label
+        status = self._status.get(path_key(data.path))
+        if status is None:
+            return label
+        status_style = self.get_component_rich_style(STATUS_CLASSES.get(status, "bt--idle"), partial=True)
+        marker = {"RUNNING": "▶ ", "SUCCESS": "✓ ", "FAILURE": "✗ "}.get(status, "· ")
+        return Text.assemble((marker, status_style), label)
