@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from grove_tui.engine.presets import GenerationError, Preset
-from grove_tui.engine.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, semantic_tokens, words
+from grove_tui.engine.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, words
 
 # Groups of words people use for the same kind of place; matching any word of a group counts as
 # matching the others, at a discount so that the literal word still wins.
@@ -95,13 +96,26 @@ class _Entry:
     kind: str
     name: str
     zone: str
-    tokens: frozenset[str]  # exact vocabulary
-    phrases: tuple[tuple[str, ...], ...]  # multi-word names and aliases, lemmatised
+    tokens: frozenset[str]  # names, aliases and type: what people call it
+    tag_tokens: frozenset[str]  # tags: what it is for; weaker evidence
+    phrases: tuple[tuple[str, ...], ...]  # name and aliases, lemmatised, for whole-phrase matches
     obj: Any
 
 
+# Words that say what people do, not where; they select a place only through its name or aliases
+# ("waiting room"), never through a tag ("queue" on a counter, "fire" on an exit).
+BEHAVIOR_WORDS = frozenset(
+    """queue line wait walk go come leave enter chat talk converse meet sit stand rest eat drink buy pay evacuate
+    evacuation escape flee run rush alarm fire emergency panic wander roam stroll browse look watch follow visit
+    work help serve check crowd gather hurry""".split()
+)
+# A door is a selected RoI only when the prompt speaks of a door, not merely of the rooms it joins.
+DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
+
+
 def _name_tokens(text: str) -> list[str]:
-    return [lemma(w) for w in words(text.replace("_", " ")) if w not in STOPWORDS and not w.isdigit()]
+    text = re.sub(r"'s\b", "", text.replace("_", " "))
+    return [lemma(w) for w in words(text) if w not in STOPWORDS]
 
 
 class RoIMatcher:
@@ -121,7 +135,7 @@ class RoIMatcher:
                                                 getattr(entity, "aliases", ())))
         df: dict[str, int] = {}
         for e in self.entries:
-            for t in e.tokens:
+            for t in e.tokens | e.tag_tokens:
                 df[t] = df.get(t, 0) + 1
         n = len(self.entries)
         self.idf = {t: math.log(1.0 + n / c) for t, c in df.items()}
@@ -132,15 +146,14 @@ class RoIMatcher:
     def _entry(kind: str, name: str, zone: str, obj: Any, type_: str, tags: Sequence[str], aliases: Sequence[str]) -> _Entry:
         tokens: set[str] = set(_name_tokens(name)) | set(_name_tokens(type_ or ""))
         phrases = [tuple(_name_tokens(name))]
-        for tag in tags or ():
-            tokens |= set(_name_tokens(tag))
         for alias in aliases or ():
             alias_tokens = _name_tokens(alias)
             tokens |= set(alias_tokens)
             phrases.append(tuple(alias_tokens))
-        if type_:
-            phrases.append(tuple(_name_tokens(type_)))
-        return _Entry(kind, name, zone, frozenset(tokens), tuple(p for p in phrases if len(p) > 1), obj)
+        tag_tokens: set[str] = set()
+        for tag in tags or ():
+            tag_tokens |= set(_name_tokens(tag))
+        return _Entry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens), tuple(p for p in phrases if p), obj)
 
     # ---- scoring ------------------------------------------------------------------------------
 
@@ -152,6 +165,8 @@ class RoIMatcher:
                 hits = [t for t in entry.tokens if t in group]
                 if hits:
                     return 0.6 * max(self.idf.get(t, 0.0) for t in hits)
+        if token in entry.tag_tokens and token not in BEHAVIOR_WORDS:
+            return 0.5 * self.idf.get(token, 0.0)
         return 0.0
 
     def score(self, entry: _Entry, tokens: Sequence[str]) -> tuple[float, tuple[str, ...]]:
@@ -162,15 +177,35 @@ class RoIMatcher:
             if w > 0:
                 total += w
                 matched.append(t)
+        literal = set(matched) & entry.tokens
+        if entry.kind == "door" and not (literal & (DOOR_WORDS | set(_name_tokens(entry.name)) - self._zone_words)):
+            return 0.0, ()
         joined = " " + " ".join(tokens) + " "
         for phrase in entry.phrases:
             if " " + " ".join(phrase) + " " in joined:
-                total += 0.5 * sum(self.idf.get(t, 0.0) for t in phrase)
-        # A name fully present in the prompt beats one that only shares a word with it.
-        name_tokens = set(_name_tokens(entry.name))
-        if name_tokens and name_tokens <= set(tokens):
-            total += 0.5
+                # The whole name or an alias is in the prompt: it beats anything sharing one of its words.
+                total += 0.5 + 0.5 * sum(self.idf.get(t, 0.0) for t in phrase)
         return total, tuple(matched)
+
+    @property
+    def _zone_words(self) -> set[str]:
+        if not hasattr(self, "_zone_words_cache"):
+            self._zone_words_cache = {t for e in self.entries if e.kind == "zone" for t in e.tokens}
+        return self._zone_words_cache
+
+    def _place_tokens(self, prompt: str) -> list[str]:
+        """Prompt tokens that can name a place: person words only inside a place name ("nurse station")."""
+        raw = _name_tokens(prompt)
+        out = []
+        for i, t in enumerate(raw):
+            if t in NUMBER_WORDS:
+                continue
+            if t in PERSON_NOUNS:
+                nxt = raw[i + 1] if i + 1 < len(raw) else None
+                if nxt is None or not any(t in e.tokens and nxt in e.tokens for e in self.entries):
+                    continue
+            out.append(t)
+        return out
 
     def _embedding_bonus(self, prompt: str) -> dict[str, float]:
         if self._embed is None:
@@ -188,7 +223,7 @@ class RoIMatcher:
 
     def match(self, prompt: str) -> list[RoIMatch]:
         """RoIs the prompt names: for each prompt word, the best-scoring RoIs containing it."""
-        tokens = [t for t in semantic_tokens(prompt) if t not in PERSON_NOUNS or t in self.vocabulary]
+        tokens = self._place_tokens(prompt)
         bonus = self._embedding_bonus(prompt)
         scored = []
         for e in self.entries:

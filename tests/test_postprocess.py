@@ -1,0 +1,209 @@
+"""Post-processing: counts follow the prompt, ids are automatic, spawns and goals are sampled in free space."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from lxml import etree
+
+from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
+from grove_tui.engine.grid import build_grid
+from grove_tui.engine.postprocess import SPAWN_SPACING, postprocess
+from grove_tui.engine.presets import GenerationError, load_preset
+from grove_tui.engine.quantities import extract_quantities
+from grove_tui.engine.rois import select_rois
+from grove_tui.engine.world import parse_world
+
+CLINIC = """
+name: clinic
+description: A small clinic for tests.
+zones:
+  - name: lobby
+    type: lobby
+    description: Entrance lobby with the reception desk.
+    aliases: [entrance hall, foyer]
+    boundary: [[0, 0], [10, 0], [10, 8], [0, 8]]
+    doors:
+      - {name: main_entrance, position: [5, 0], width: 2.0, leads_to: outside, exit: true}
+      - {name: lobby_corridor_door, position: [10, 4], width: 1.6, leads_to: corridor}
+    entities:
+      - {name: reception_desk, type: desk, footprint: [[3, 6], [7, 6], [7, 7], [3, 7]], interaction_point: [5, 5.4], tags: [reception, check-in]}
+  - name: corridor
+    type: corridor
+    description: Main corridor.
+    boundary: [[10, 2], [24, 2], [24, 6], [10, 6]]
+    doors:
+      - {name: corridor_pharmacy_door, position: [16, 6], width: 1.4, leads_to: pharmacy}
+      - {name: corridor_cafeteria_door, position: [20, 2], width: 1.6, leads_to: cafeteria}
+      - {name: back_exit, position: [24, 4], width: 1.6, leads_to: outside, exit: true}
+  - name: pharmacy
+    type: pharmacy
+    description: Pharmacy with a dispensing counter.
+    boundary: [[12, 6], [22, 6], [22, 14], [12, 14]]
+    entities:
+      - {name: pharmacy_counter, type: counter, footprint: [[14, 12.5], [20, 12.5], [20, 13.5], [14, 13.5]], interaction_point: [17, 11.8]}
+  - name: cafeteria
+    type: cafeteria
+    description: Cafeteria with tables and a coffee counter.
+    aliases: [canteen]
+    boundary: [[14, -8], [26, -8], [26, 2], [14, 2]]
+    entities:
+      - {name: coffee_counter, type: counter, footprint: [[15, -7.5], [19, -7.5], [19, -6.5], [15, -6.5]], interaction_point: [17, -5.8]}
+      - {name: vending_machine, type: vending_machine, footprint: [[24.5, 0], [25.5, 0], [25.5, 1], [24.5, 1]], interaction_point: [25, -0.6]}
+  - name: restroom
+    type: restroom
+    description: A tiny restroom.
+    aliases: [bathroom, toilet]
+    boundary: [[0, 8], [3, 8], [3, 10], [0, 10]]
+    doors:
+      - {name: restroom_door, position: [1.5, 8], width: 0.9, leads_to: lobby}
+"""
+
+
+@pytest.fixture(scope="module")
+def clinic():
+    world, problems = parse_world(CLINIC, "clinic.yaml")
+    assert not problems, problems
+    return world
+
+
+@pytest.fixture(scope="module")
+def grid(clinic):
+    return build_grid(clinic)
+
+
+def queue_tree(place="pharmacy_counter"):
+    return DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": place}), DraftNode("Queue", {"service_point": place})))
+
+
+def run(clinic, grid, preset, prompt, groups, seed=0, nodes=("Sequence", "GoTo", "Queue", "Converse", "JoinGroup")):
+    preset = load_preset(preset)
+    selection = select_rois(clinic, preset, prompt)
+    return postprocess(clinic, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed,
+                       prompt, nodes)
+
+
+PROMPT = "Ten patients queue at the pharmacy counter while two nurses chat in the lobby"
+
+
+def test_counts_follow_the_prompt_and_missing_groups_are_added_where_their_words_say(clinic, grid):
+    out = run(clinic, grid, "queuing", PROMPT, [DraftGroup("patients", 3, "pharmacy", queue_tree())])
+    assert [(g.label, g.count, g.spawn) for g in out.groups] == [("patients", 10, "pharmacy"), ("nurse", 2, "lobby")]
+    assert [a.id for a in out.agents] == list(range(1, 13))
+    nurses = [a for a in out.agents if a.label == "nurse"]
+    assert all(a.spawn_zone == "lobby" and a.zone == "lobby" for a in nurses)
+    assert any("count 3 -> 10" in n for n in out.notes) and any("added group 'nurse'" in n for n in out.notes)
+
+
+def test_groups_are_matched_to_quantities_by_label_and_extra_groups_dropped(clinic, grid):
+    groups = [DraftGroup("staff", 5, "lobby", DraftNode("GoTo", {"target": "lobby"})),
+              DraftGroup("nurses", 5, "lobby", DraftNode("GoTo", {"target": "lobby"})),
+              DraftGroup("patients", 1, "pharmacy", queue_tree())]
+    out = run(clinic, grid, "queuing", PROMPT, groups)
+    assert [(g.label, g.count) for g in out.groups] == [("patients", 10), ("nurses", 2)]
+    assert any("dropped group 'staff'" in n for n in out.notes)
+
+
+def test_without_stated_counts_the_model_counts_stand(clinic, grid):
+    out = run(clinic, grid, "normal", "patients wander in the cafeteria",
+              [DraftGroup("patients", 3, "cafeteria", DraftNode("GoTo", {"target": "cafeteria"}))])
+    assert len(out.agents) == 3
+
+
+def test_spawns_are_free_inside_their_zone_and_two_radii_apart(clinic, grid):
+    out = run(clinic, grid, "queuing", PROMPT, [DraftGroup("patients", 10, "pharmacy", queue_tree())])
+    for a in out.agents:
+        assert grid.is_free(*a.start)
+        assert clinic.zone(a.spawn_zone).polygon.contains(__import__("shapely").Point(a.start))
+    for i, a in enumerate(out.agents):
+        for b in out.agents[i + 1:]:
+            assert math.dist(a.start, b.start) >= SPAWN_SPACING - 1e-9
+
+
+def test_sequential_goal_allocation_gives_each_queuer_its_own_place_in_line(clinic, grid):
+    out = run(clinic, grid, "queuing", "Ten patients queue at the pharmacy counter",
+              [DraftGroup("patients", 10, "pharmacy", queue_tree())])
+    firsts = [a.targets[0][1] for a in out.agents]
+    assert firsts[0] == (17.0, 11.8)  # the head walks to the service point itself
+    assert len(set(firsts)) == 10
+    assert all(clinic.zone("pharmacy").polygon.contains(__import__("shapely").Point(p)) for p in firsts)
+    assert all(grid.is_free(*p) for p in firsts)
+    # the queue node is always told the service point
+    assert all(a.targets[1] == ("pharmacy_counter", (17.0, 11.8)) for a in out.agents)
+
+
+def test_zone_goals_are_spread_inside_the_zone(clinic, grid):
+    out = run(clinic, grid, "normal", "Six visitors walk to the cafeteria",
+              [DraftGroup("visitors", 6, "lobby", DraftNode("GoTo", {"target": "cafeteria"}))])
+    goals = [a.targets[0][1] for a in out.agents]
+    assert len(set(goals)) == 6
+    poly = clinic.zone("cafeteria").polygon
+    assert all(poly.contains(__import__("shapely").Point(p)) and grid.is_free(*p) for p in goals)
+    assert min(math.dist(p, q) for i, p in enumerate(goals) for q in goals[i + 1:]) >= 0.8 - 1e-9
+    assert all(a.zone == "cafeteria" for a in out.agents)
+
+
+def test_xml_is_btcpp_v4_with_ids_members_and_resolved_points(clinic, grid):
+    tree = DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), DraftNode("Converse", {"target": "lobby"})))
+    out = run(clinic, grid, "normal", "a family of four chats in the lobby", [DraftGroup("family", 4, "lobby", tree)])
+    roots = [etree.fromstring(a.xml.encode()) for a in out.agents]
+    for agent, root in zip(out.agents, roots):
+        assert root.get("BTCPP_format") == "4"
+        assert root.get("main_tree_to_execute") == f"agent_{agent.id}"
+        join = root.find(".//JoinGroup")
+        assert join.get("members") == "1,2,3,4" and join.get("agent_id") == "{id}" and join.get("group_id") == "0"
+        converse = root.find(".//Converse")
+        assert converse.get("members") == "1,2,3,4"
+    centres = {(r.find(".//Converse").get("x"), r.find(".//Converse").get("y")) for r in roots}
+    assert len(centres) == 1  # one conversation circle for the whole group
+    assert {a.sfm_group for a in out.agents} == {0}
+    # a group that talks starts together
+    starts = [a.start for a in out.agents]
+    assert max(math.dist(p, q) for p in starts for q in starts) < 4.0
+
+
+def test_same_seed_same_result_other_seed_other_spawns(clinic, grid):
+    groups = [DraftGroup("patients", 10, "pharmacy", queue_tree())]
+    a = run(clinic, grid, "queuing", PROMPT, groups, seed=3)
+    b = run(clinic, grid, "queuing", PROMPT, groups, seed=3)
+    c = run(clinic, grid, "queuing", PROMPT, groups, seed=4)
+    assert [x.xml for x in a.agents] == [x.xml for x in b.agents]
+    assert [x.start for x in a.agents] == [x.start for x in b.agents]
+    assert [x.start for x in a.agents] != [x.start for x in c.agents]
+
+
+def test_impossible_count_names_the_zone_and_its_capacity(clinic, grid):
+    prompt = "10,000 people crowd into the bathroom"
+    with pytest.raises(GenerationError, match=r"10000 people do not fit in zone 'restroom'.*holds at most \d+"):
+        run(clinic, grid, "normal", prompt, [DraftGroup("people", 5, "restroom", DraftNode("GoTo", {"target": "restroom"}))])
+
+
+def test_count_above_the_preset_limit_is_refused(clinic, grid):
+    prompt = "50 people wait in the cafeteria"
+    with pytest.raises(GenerationError, match="allows at most 40 per group"):
+        run(clinic, grid, "normal", prompt, [DraftGroup("people", 5, "cafeteria", DraftNode("GoTo", {"target": "cafeteria"}))])
+
+
+def evac(exit_name="main_entrance"):
+    return DraftNode("FollowVelocityField", {"exit": exit_name})
+
+
+def test_emergency_uses_one_shared_exit_named_in_the_prompt(clinic, grid):
+    out = run(clinic, grid, "emergency", "Eight people in the cafeteria leave through the back exit",
+              [DraftGroup("people", 8, "cafeteria", evac("main_entrance"))], nodes=("Sequence", "FollowVelocityField"))
+    assert out.exit == "back_exit"
+    for a in out.agents:
+        root = etree.fromstring(a.xml.encode())
+        node = root.find(".//FollowVelocityField")
+        assert node.get("exit") == "back_exit" and node.get("field") == "group_1"
+        assert (float(node.get("x")), float(node.get("y"))) == (24.0, 4.0)
+
+
+def test_emergency_exit_falls_back_to_the_models_then_the_nearest(clinic, grid):
+    out = run(clinic, grid, "emergency", "Eight people evacuate the cafeteria",
+              [DraftGroup("people", 8, "cafeteria", evac("main_entrance"))], nodes=("Sequence", "FollowVelocityField"))
+    assert out.exit == "main_entrance"
+    out = run(clinic, grid, "emergency", "Eight people evacuate the cafeteria",
+              [DraftGroup("people", 8, "cafeteria", evac("cafeteria"))], nodes=("Sequence", "FollowVelocityField"))
+    assert out.exit == "back_exit"  # nearer to the cafeteria than the main entrance
