@@ -11,19 +11,19 @@ import sys
 
 import click
 
-# name -> "module:attribute" of a click command or group
-SUBCOMMANDS: dict[str, str] = {
-    "worlds": "grove_tui.cli.worlds:worlds",
-    "bt": "grove_tui.cli.bt:bt",
-    "rag": "grove_tui.cli.rag:rag",
-    "models": "grove_tui.cli.models:models",
-    "generate": "grove_tui.cli.generate:generate",
-    "batch": "grove_tui.cli.generate:batch",
-    "simulate": "grove_tui.cli.generate:simulate",
-    "export": "grove_tui.cli.export:export",
-    "metrics": "grove_tui.cli.export:metrics",
-    "picture": "grove_tui.cli.export:picture",
-    "eval": "grove_tui.cli.evaluate:evaluate",
+# name -> ("module:attribute" of a click command or group, one-line help shown by `grove --help`)
+SUBCOMMANDS: dict[str, tuple[str, str]] = {
+    "worlds": ("grove_tui.cli.worlds:worlds", "List, draw and check semantic worlds."),
+    "bt": ("grove_tui.cli.bt:bt", "Behavior trees: print the node manifest, validate XML files."),
+    "rag": ("grove_tui.cli.rag:rag", "Node database: build the index, query it, measure recall."),
+    "models": ("grove_tui.cli.models:models", "Local GGUF models: list what is found, pull Qwen3."),
+    "generate": ("grove_tui.cli.generate:generate", "Generate a scenario bundle from a prompt (--no-ui)."),
+    "batch": ("grove_tui.cli.generate:batch", "Generate many scenarios from a JSONL file, loading models once."),
+    "simulate": ("grove_tui.cli.generate:simulate", "Simulate a bundle and write its trajectories."),
+    "export": ("grove_tui.cli.export:export", "Export a bundle: HuNavSim agents.yaml + BT XML, PedPy trajectories."),
+    "metrics": ("grove_tui.cli.export:metrics", "Robot and crowd metrics of a simulated bundle."),
+    "picture": ("grove_tui.cli.export:picture", "PNG/SVG picture of a scenario and its trajectories."),
+    "eval": ("grove_tui.cli.evaluate:evaluate", "Run an evaluation suite against the baselines."),
 }
 
 
@@ -31,11 +31,17 @@ class LazyGroup(click.Group):
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(SUBCOMMANDS)
 
+    def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        # Listing must not import the subcommands: they pull in numba, torch and llama.cpp.
+        rows = [(name, SUBCOMMANDS[name][1]) for name in self.list_commands(ctx)]
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
+
     def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
-        target = SUBCOMMANDS.get(cmd_name)
-        if target is None:
+        entry = SUBCOMMANDS.get(cmd_name)
+        if entry is None:
             return None
-        module_name, attribute = target.split(":")
+        module_name, attribute = entry[0].split(":")
         module = importlib.import_module(module_name)
         return getattr(module, attribute)
 
