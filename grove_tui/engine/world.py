@@ -878,7 +878,8 @@ def _validate(zones: list[_DraftZone], obstacles: list[_DraftObstacle], problems
             problems.add(path + ("footprint",), f"{kind} {thing_name!r} blocks door {door.name!r}: keep footprints at "
                                                 f"least {DOOR_CLEARANCE} m from a door opening")
 
-    _check_connectivity(zones, placed, by_name, problems)
+    # Judge reachability on declared links, so one misplaced door is reported once, not again as an island.
+    _check_connectivity(zones, all_doors, by_name, problems)
     return door_frames
 
 
@@ -955,7 +956,7 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
                  if (obstacle := _read_obstacle(item, ("obstacles", index), problems)) is not None]
     door_frames = _validate(zones, obstacles, problems)
     if problems.items:
-        return None, problems.items
+        return None, sorted(problems.items, key=lambda problem: problem.line or 0)
 
     built_zones = []
     for zone in zones:
