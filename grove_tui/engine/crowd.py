@@ -67,6 +67,9 @@ def _point(value: Any, what: str) -> tuple[float, float]:
 class Crowd:
     """SFM pedestrians plus one optional robot, stepped at a fixed dt."""
 
+    # Below this many agents a step is too short to pay for waking threads; both paths give equal results.
+    parallel_threshold = 1500
+
     def __init__(self, walls: np.ndarray | Sequence[Sequence[float]] | None = None,
                  params: SFMParams | None = None, dt: float = 0.05, seed: int = 0,
                  grid: Any = None) -> None:
@@ -544,7 +547,8 @@ class Crowd:
             return
         self._refresh_groups()
         k = self.n
-        sfm.advance(
+        kernel = sfm.advance_parallel if k >= self.parallel_threshold else sfm.advance_serial
+        kernel(
             n, self.dt, self._params_array,
             self._pos[:k], self._vel[:k], self._yaw[:k], self._radius[:k], self._desired_speed[:k],
             self._factors[:k], self._mode[:k], self._active[:k],

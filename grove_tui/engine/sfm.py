@@ -86,6 +86,10 @@ ROBOT_WAYPOINT_TOLERANCE = 0.1
 _BACKOFF = 1e-4          # metres kept between a blocked agent and the wall it hit
 _TINY = 1e-12
 _GOLDEN_ANGLE = 2.399963229728653
+# Social terms with exp(-x), x above this, are below 3.4e-4 of their peak and are skipped.
+_NEGLIGIBLE_EXPONENT = 8.0
+# No nnan/ninf: the kernels rely on isfinite checks to keep every value finite.
+_FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
 
 @dataclass(frozen=True)
@@ -505,6 +509,17 @@ def sample_field_stack(field_vectors, field_meta, f, x, y):
 
 
 @nb.njit(cache=True)
+def _tie_break_direction(i, j):
+    """Direction from i to j when they coincide: fixed per pair and opposite for the two."""
+    a = _GOLDEN_ANGLE * (min(i, j) * 7919 + max(i, j))
+    ux = math.cos(a)
+    uy = math.sin(a)
+    if i > j:
+        return -ux, -uy
+    return ux, uy
+
+
+@nb.njit(cache=True)
 def _social_force(px, py, vx, vy, qx, qy, wx, wy, i, j, params):
     """Moussaid force on an agent at p (velocity v) from one at q (velocity w), unweighted."""
     dx = qx - px
@@ -514,13 +529,7 @@ def _social_force(px, py, vx, vy, qx, qy, wx, wy, i, j, params):
         ex = dx / dist
         ey = dy / dist
     else:
-        # Coincident agents: a fixed direction per pair, opposite for the two of them.
-        a = _GOLDEN_ANGLE * (min(i, j) * 7919 + max(i, j))
-        ex = math.cos(a)
-        ey = math.sin(a)
-        if i > j:
-            ex = -ex
-            ey = -ey
+        ex, ey = _tie_break_direction(i, j)
     lam = params[P_LAMBDA]
     ix = lam * (vx - wx) + ex
     iy = lam * (vy - wy) + ey
@@ -688,21 +697,356 @@ def _advance_robot(robot, robot_path, dt, params, walls, wall_meta, wall_start, 
 # --------------------------------------------------------------------------- the step
 
 
-@nb.njit(cache=True, parallel=True)
-def advance(n_steps, dt, params,
-            pos, vel, yaw, radius, desired_speed, factors, mode, active,
-            group_slot, group_start, group_members,
-            goals, goal_len, goal_front, goal_radius, cyclic,
-            field_slot, field_vectors, field_meta,
-            face_kind, face_ref, face_point,
-            robot_interaction, robot, robot_path,
-            walls, wall_owner, wall_meta, wall_start, wall_items):
-    """Run n_steps of the SFM crowd; every array is updated in place.
-
-    Each agent reads the state at the start of the step and writes only its own row of the
-    new state, so the parallel loop gives the same result in any order.
-    """
+@nb.njit(cache=True, fastmath=_FASTMATH)
+def _update_agents(k0, k1, dt, params,
+                   pos, vel, yaw, radius, desired_speed, factors, mode, active,
+                   group_slot, group_start, group_members, group_cx, group_cy, group_n,
+                   goals, goal_len, goal_front, goal_radius, cyclic,
+                   field_slot, field_vectors, field_meta,
+                   face_kind, face_ref, face_point,
+                   robot_interaction, robot,
+                   walls, wall_owner, wall_meta, wall_start, wall_items,
+                   order, starts, cell_of, gnx, gny, spx, spy, svx, svy,
+                   new_pos, new_vel, new_yaw):
+    """Forces and integration for agents order[k0:k1]; each writes only its own row of new_*."""
     n = pos.shape[0]
+    cutoff = params[P_CUTOFF]
+    cutoff2 = cutoff * cutoff
+    tau = params[P_TAU]
+    sigma = params[P_SIGMA_OBS]
+    wall_range = params[P_WALL_RANGE]
+    half_pi = 0.5 * math.pi
+    lam = params[P_LAMBDA]
+    gamma = params[P_GAMMA]
+    epsilon = params[P_EPSILON]
+    n_angle = params[P_N]
+    n_vel = params[P_NPRIME]
+    robot_present = robot[R_PRESENT] != 0.0
+    rx = robot[R_X]
+    ry = robot[R_Y]
+    rvx = robot[R_VX]
+    rvy = robot[R_VY]
+    for k in range(k0, k1):
+        i = order[k]
+        px = pos[i, 0]
+        py = pos[i, 1]
+        vx = vel[i, 0]
+        vy = vel[i, 1]
+        ri = radius[i]
+        v0 = desired_speed[i]
+        w_goal = factors[i, 0]
+        w_obs = factors[i, 1]
+        w_soc = factors[i, 2]
+        w_other = factors[i, 3]
+        m = mode[i]
+
+        # desired force
+        has_dir = False
+        ex = 0.0
+        ey = 0.0
+        if m == MODE_GOALS:
+            f = goal_front[i]
+            if f < goal_len[i]:
+                gx = goals[i, f, 0] - px
+                gy = goals[i, f, 1] - py
+                gd = math.sqrt(gx * gx + gy * gy)
+                if gd > goal_radius[i] and gd > _TINY:
+                    has_dir = True
+                    ex = gx / gd
+                    ey = gy / gd
+        elif m == MODE_FIELD:
+            fs = field_slot[i]
+            if fs >= 0:
+                dxe = field_meta[fs, F_EXIT_X] - px
+                dye = field_meta[fs, F_EXIT_Y] - py
+                if dxe * dxe + dye * dye > goal_radius[i] * goal_radius[i]:
+                    sxv, syv = sample_field_stack(field_vectors, field_meta, fs, px, py)
+                    sl = math.sqrt(sxv * sxv + syv * syv)
+                    if sl > 1e-6:
+                        has_dir = True
+                        ex = sxv / sl
+                        ey = syv / sl
+        if has_dir:
+            fx = w_goal * (v0 * ex - vx) / tau
+            fy = w_goal * (v0 * ey - vy) / tau
+        else:
+            fx = -vx / tau
+            fy = -vy / tau
+
+        # social force from neighbours in the 3x3 surrounding cells (Moussaid, inlined: hot loop)
+        sfx = 0.0
+        sfy = 0.0
+        c = cell_of[i]
+        ccx = c % gnx
+        ccy = c // gnx
+        for oy in range(max(ccy - 1, 0), min(ccy + 2, gny)):
+            for ox in range(max(ccx - 1, 0), min(ccx + 2, gnx)):
+                cc = oy * gnx + ox
+                for kk in range(starts[cc], starts[cc + 1]):
+                    if kk == k:
+                        continue
+                    dx = spx[kk] - px
+                    dy = spy[kk] - py
+                    d2 = dx * dx + dy * dy
+                    if d2 > cutoff2:
+                        continue
+                    dist = math.sqrt(d2)
+                    if dist > _TINY:
+                        ux = dx / dist
+                        uy = dy / dist
+                    else:
+                        ux, uy = _tie_break_direction(i, order[kk])
+                    ix = lam * (vx - svx[kk]) + ux
+                    iy = lam * (vy - svy[kk]) + uy
+                    ilen = math.sqrt(ix * ix + iy * iy)
+                    if ilen <= _TINY:
+                        ix = ux
+                        iy = uy
+                        ilen = 1.0
+                    b = gamma * ilen
+                    q = dist / b
+                    if q > _NEGLIGIBLE_EXPONENT:
+                        continue
+                    ix /= ilen
+                    iy /= ilen
+                    theta = math.atan2(ix * uy - iy * ux, ix * ux + iy * uy) + epsilon * b
+                    ta = n_angle * b * theta
+                    tv = n_vel * b * theta
+                    ta2 = ta * ta
+                    tv2 = tv * tv
+                    if q + min(ta2, tv2) > _NEGLIGIBLE_EXPONENT:
+                        continue
+                    f_v = -math.exp(-q - tv2)
+                    f_a = 0.0
+                    if theta > 0.0:
+                        f_a = -math.exp(-q - ta2)
+                    elif theta < 0.0:
+                        f_a = math.exp(-q - ta2)
+                    # interaction direction times f_v plus its left normal (-iy, ix) times f_a
+                    sfx += f_v * ix - f_a * iy
+                    sfy += f_v * iy + f_a * ix
+
+        # the robot, as HuNavSim's behaviours perceive it
+        if robot_present:
+            ri_mode = robot_interaction[i]
+            rdx = rx - px
+            rdy = ry - py
+            rd2 = rdx * rdx + rdy * rdy
+            if ri_mode == ROBOT_AS_AGENT:
+                if rd2 <= cutoff2:
+                    ax_, ay_ = _social_force(px, py, vx, vy, rx, ry, rvx, rvy, i, -1, params)
+                    sfx += ax_
+                    sfy += ay_
+            elif ri_mode == ROBOT_AS_OBSTACLE:
+                if rd2 <= (wall_range + ri) * (wall_range + ri):
+                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, sigma, i)
+                    fx += ax_
+                    fy += ay_
+            elif ri_mode == ROBOT_FEARED:
+                rd = math.sqrt(rd2)
+                gap = rd - ri
+                if gap < 0.05:
+                    gap = 0.05
+                mag = w_other * sigma / gap
+                if rd > _TINY:
+                    fx -= mag * rdx / rd
+                    fy -= mag * rdy / rd
+                else:
+                    a = _GOLDEN_ANGLE * i
+                    fx += mag * math.cos(a)
+                    fy += mag * math.sin(a)
+        fx += w_soc * sfx
+        fy += w_soc * sfy
+
+        # obstacle force summed over nearby wall segments
+        wc = _wall_cell(px, py, wall_meta)
+        if wc >= 0:
+            for kk in range(wall_start[wc], wall_start[wc + 1]):
+                w = wall_items[kk]
+                cx, cy, t = _closest_on_segment(px, py, walls[w, 0], walls[w, 1], walls[w, 2], walls[w, 3])
+                if (t <= 0.0 and not wall_owner[w, 0]) or (t >= 1.0 and not wall_owner[w, 1]):
+                    continue
+                dx = px - cx
+                dy = py - cy
+                d = math.sqrt(dx * dx + dy * dy)
+                if d > wall_range + ri:
+                    continue
+                if d > _TINY:
+                    ux = dx / d
+                    uy = dy / d
+                else:
+                    ux, uy = _wall_normal_towards(w, px, py, walls)
+                mag = w_obs * math.exp(-(d - ri) / sigma)
+                fx += mag * ux
+                fy += mag * uy
+
+        # group gaze, coherence and repulsion (lightsfm non-paper version)
+        g = group_slot[i]
+        if g >= 0 and group_n[g] >= 2:
+            cnt = group_n[g]
+            gcx = group_cx[g]
+            gcy = group_cy[g]
+            if has_dir:
+                ocx = (cnt * gcx - px) / (cnt - 1) - px
+                ocy = (cnt * gcy - py) / (cnt - 1) - py
+                onorm = math.sqrt(ocx * ocx + ocy * ocy)
+                if onorm > _TINY:
+                    dot = ex * ocx + ey * ocy
+                    cosang = dot / onorm
+                    if cosang > 1.0:
+                        cosang = 1.0
+                    elif cosang < -1.0:
+                        cosang = -1.0
+                    if math.acos(cosang) > half_pi:
+                        fx += params[P_GAZE] * dot * ex
+                        fy += params[P_GAZE] * dot * ey
+            rcx = gcx - px
+            rcy = gcy - py
+            dist = math.sqrt(rcx * rcx + rcy * rcy)
+            soft = params[P_COHERENCE] * (math.tanh(dist - (cnt - 1) / 2.0) + 1.0) / 2.0
+            fx += soft * rcx
+            fy += soft * rcy
+            rep_x = 0.0
+            rep_y = 0.0
+            for kk in range(group_start[g], group_start[g + 1]):
+                j = group_members[kk]
+                if j == i or not active[j]:
+                    continue
+                dx = px - pos[j, 0]
+                dy = py - pos[j, 1]
+                if math.sqrt(dx * dx + dy * dy) < ri + radius[j]:
+                    rep_x += dx
+                    rep_y += dy
+            fx += params[P_REPULSION] * rep_x
+            fy += params[P_REPULSION] * rep_y
+
+        # integrate, clip to the desired speed
+        nvx = vx + fx * dt
+        nvy = vy + fy * dt
+        speed = math.sqrt(nvx * nvx + nvy * nvy)
+        if speed > v0:
+            if speed > 0.0:
+                nvx *= v0 / speed
+                nvy *= v0 / speed
+            else:
+                nvx = 0.0
+                nvy = 0.0
+        if not (math.isfinite(nvx) and math.isfinite(nvy)):
+            nvx = 0.0
+            nvy = 0.0
+        qx, qy, nvx, nvy = resolve_motion(px, py, px + nvx * dt, py + nvy * dt, nvx, nvy,
+                                          params[P_CLEARANCE] * ri,
+                                          walls, wall_meta, wall_start, wall_items)
+        new_pos[i, 0] = qx
+        new_pos[i, 1] = qy
+        new_vel[i, 0] = nvx
+        new_vel[i, 1] = nvy
+
+        # heading
+        yi = yaw[i]
+        if m == MODE_FACE:
+            kind = face_kind[i]
+            tx = face_point[i, 0]
+            ty = face_point[i, 1]
+            valid = True
+            if kind == FACE_AGENT:
+                jr = face_ref[i]
+                if jr >= 0 and jr < n:
+                    tx = pos[jr, 0]
+                    ty = pos[jr, 1]
+                else:
+                    valid = False
+            elif kind == FACE_ROBOT:
+                if robot_present:
+                    tx = rx
+                    ty = ry
+                else:
+                    valid = False
+            ddx = tx - qx
+            ddy = ty - qy
+            if valid and ddx * ddx + ddy * ddy > _TINY:
+                yi = _turn_towards(yi, math.atan2(ddy, ddx), params[P_TURN_RATE] * dt)
+        elif math.sqrt(nvx * nvx + nvy * nvy) >= params[P_YAW_HOLD]:
+            yi = math.atan2(nvy, nvx)
+        new_yaw[i] = yi
+
+        # the front goal pops (or cycles) once inside its radius; a final goal stays as the front
+        if m == MODE_GOALS:
+            f = goal_front[i]
+            nl = goal_len[i]
+            if f < nl:
+                gx = goals[i, f, 0] - qx
+                gy = goals[i, f, 1] - qy
+                if gx * gx + gy * gy <= goal_radius[i] * goal_radius[i]:
+                    if cyclic[i]:
+                        goal_front[i] = (f + 1) % nl
+                    elif f + 1 < nl:
+                        goal_front[i] = f + 1
+
+@nb.njit(cache=True)
+def _prepare_step(dt, params, pos, vel, active, group_start, group_members, group_cx, group_cy, group_n,
+                  robot, robot_path, walls, wall_meta, wall_start, wall_items):
+    """The serial part of a step: move the robot, group centres, cell list, gathered neighbours."""
+    _advance_robot(robot, robot_path, dt, params, walls, wall_meta, wall_start, wall_items)
+    n_groups = group_start.shape[0] - 1
+    for g in range(n_groups):
+        sx = 0.0
+        sy = 0.0
+        cnt = 0
+        for k in range(group_start[g], group_start[g + 1]):
+            j = group_members[k]
+            if active[j]:
+                sx += pos[j, 0]
+                sy += pos[j, 1]
+                cnt += 1
+        group_n[g] = cnt
+        if cnt > 0:
+            group_cx[g] = sx / cnt
+            group_cy[g] = sy / cnt
+    order, starts, cell_of, gnx, gny = _build_cells(pos, active, params[P_CUTOFF])
+    n_active = order.shape[0]
+    # Neighbour state gathered in cell order: the inner loop then reads contiguous memory.
+    spx = np.empty(n_active)
+    spy = np.empty(n_active)
+    svx = np.empty(n_active)
+    svy = np.empty(n_active)
+    for k in range(n_active):
+        j = order[k]
+        spx[k] = pos[j, 0]
+        spy[k] = pos[j, 1]
+        svx[k] = vel[j, 0]
+        svy[k] = vel[j, 1]
+    return order, starts, cell_of, gnx, gny, spx, spy, svx, svy
+
+
+@nb.njit(cache=True)
+def _commit_rows(k0, k1, order, pos, vel, yaw, new_pos, new_vel, new_yaw):
+    for k in range(k0, k1):
+        i = order[k]
+        pos[i, 0] = new_pos[i, 0]
+        pos[i, 1] = new_pos[i, 1]
+        vel[i, 0] = new_vel[i, 0]
+        vel[i, 1] = new_vel[i, 1]
+        yaw[i] = new_yaw[i]
+
+
+# Agents per parallel work item: large enough to amortise scheduling, small enough to balance.
+_BLOCK = 256
+
+
+# Two drivers with the same body: on a loaded 2-core machine a thread barrier costs more than a
+# small crowd's whole step, so Crowd runs small crowds serially. They are separate functions
+# (not one factory) because numba's on-disk cache keys by function name and line.
+@nb.njit(cache=True)
+def advance_serial(n_steps, dt, params,
+                   pos, vel, yaw, radius, desired_speed, factors, mode, active,
+                   group_slot, group_start, group_members,
+                   goals, goal_len, goal_front, goal_radius, cyclic,
+                   field_slot, field_vectors, field_meta,
+                   face_kind, face_ref, face_point,
+                   robot_interaction, robot, robot_path,
+                   walls, wall_owner, wall_meta, wall_start, wall_items):
+    """Run n_steps of the crowd on one thread; every array is updated in place."""
     n_groups = group_start.shape[0] - 1
     new_pos = np.empty_like(pos)
     new_vel = np.empty_like(vel)
@@ -710,270 +1054,62 @@ def advance(n_steps, dt, params,
     group_cx = np.zeros(max(n_groups, 1))
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
-    cutoff = params[P_CUTOFF]
-    cutoff2 = cutoff * cutoff
-    tau = params[P_TAU]
-    sigma = params[P_SIGMA_OBS]
-    wall_range = params[P_WALL_RANGE]
-    half_pi = 0.5 * math.pi
-
     for _step in range(n_steps):
-        _advance_robot(robot, robot_path, dt, params, walls, wall_meta, wall_start, wall_items)
-        robot_present = robot[R_PRESENT] != 0.0
-        rx = robot[R_X]
-        ry = robot[R_Y]
-        rvx = robot[R_VX]
-        rvy = robot[R_VY]
-        rrad = robot[R_RADIUS]
-
-        for g in range(n_groups):
-            sx = 0.0
-            sy = 0.0
-            cnt = 0
-            for k in range(group_start[g], group_start[g + 1]):
-                j = group_members[k]
-                if active[j]:
-                    sx += pos[j, 0]
-                    sy += pos[j, 1]
-                    cnt += 1
-            group_n[g] = cnt
-            if cnt > 0:
-                group_cx[g] = sx / cnt
-                group_cy[g] = sy / cnt
-
-        order, starts, cell_of, gnx, gny = _build_cells(pos, active, cutoff)
+        order, starts, cell_of, gnx, gny, spx, spy, svx, svy = _prepare_step(
+            dt, params, pos, vel, active, group_start, group_members, group_cx, group_cy, group_n,
+            robot, robot_path, walls, wall_meta, wall_start, wall_items)
         n_active = order.shape[0]
+        _update_agents(0, n_active, dt, params,
+                       pos, vel, yaw, radius, desired_speed, factors, mode, active,
+                       group_slot, group_start, group_members, group_cx, group_cy, group_n,
+                       goals, goal_len, goal_front, goal_radius, cyclic,
+                       field_slot, field_vectors, field_meta,
+                       face_kind, face_ref, face_point,
+                       robot_interaction, robot,
+                       walls, wall_owner, wall_meta, wall_start, wall_items,
+                       order, starts, cell_of, gnx, gny, spx, spy, svx, svy,
+                       new_pos, new_vel, new_yaw)
+        _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
 
-        for k in nb.prange(n_active):
-            i = order[k]
-            px = pos[i, 0]
-            py = pos[i, 1]
-            vx = vel[i, 0]
-            vy = vel[i, 1]
-            ri = radius[i]
-            v0 = desired_speed[i]
-            w_goal = factors[i, 0]
-            w_obs = factors[i, 1]
-            w_soc = factors[i, 2]
-            w_other = factors[i, 3]
-            m = mode[i]
 
-            # desired force
-            has_dir = False
-            ex = 0.0
-            ey = 0.0
-            if m == MODE_GOALS:
-                f = goal_front[i]
-                if f < goal_len[i]:
-                    gx = goals[i, f, 0] - px
-                    gy = goals[i, f, 1] - py
-                    gd = math.sqrt(gx * gx + gy * gy)
-                    if gd > goal_radius[i] and gd > _TINY:
-                        has_dir = True
-                        ex = gx / gd
-                        ey = gy / gd
-            elif m == MODE_FIELD:
-                fs = field_slot[i]
-                if fs >= 0:
-                    dxe = field_meta[fs, F_EXIT_X] - px
-                    dye = field_meta[fs, F_EXIT_Y] - py
-                    if dxe * dxe + dye * dye > goal_radius[i] * goal_radius[i]:
-                        sxv, syv = sample_field_stack(field_vectors, field_meta, fs, px, py)
-                        sl = math.sqrt(sxv * sxv + syv * syv)
-                        if sl > 1e-6:
-                            has_dir = True
-                            ex = sxv / sl
-                            ey = syv / sl
-            if has_dir:
-                fx = w_goal * (v0 * ex - vx) / tau
-                fy = w_goal * (v0 * ey - vy) / tau
-            else:
-                fx = -vx / tau
-                fy = -vy / tau
+@nb.njit(cache=True, parallel=True)
+def advance_parallel(n_steps, dt, params,
+                     pos, vel, yaw, radius, desired_speed, factors, mode, active,
+                     group_slot, group_start, group_members,
+                     goals, goal_len, goal_front, goal_radius, cyclic,
+                     field_slot, field_vectors, field_meta,
+                     face_kind, face_ref, face_point,
+                     robot_interaction, robot, robot_path,
+                     walls, wall_owner, wall_meta, wall_start, wall_items):
+    """advance_serial with agent blocks spread over threads.
 
-            # social force from neighbours in the 3x3 surrounding cells
-            sfx = 0.0
-            sfy = 0.0
-            c = cell_of[i]
-            ccx = c % gnx
-            ccy = c // gnx
-            for oy in range(max(ccy - 1, 0), min(ccy + 2, gny)):
-                for ox in range(max(ccx - 1, 0), min(ccx + 2, gnx)):
-                    cc = oy * gnx + ox
-                    for kk in range(starts[cc], starts[cc + 1]):
-                        j = order[kk]
-                        if j == i:
-                            continue
-                        dx = pos[j, 0] - px
-                        dy = pos[j, 1] - py
-                        if dx * dx + dy * dy > cutoff2:
-                            continue
-                        ax_, ay_ = _social_force(px, py, vx, vy, pos[j, 0], pos[j, 1], vel[j, 0], vel[j, 1],
-                                                 i, j, params)
-                        sfx += ax_
-                        sfy += ay_
-
-            # the robot, as HuNavSim's behaviours perceive it
-            if robot_present:
-                ri_mode = robot_interaction[i]
-                rdx = rx - px
-                rdy = ry - py
-                rd2 = rdx * rdx + rdy * rdy
-                if ri_mode == ROBOT_AS_AGENT:
-                    if rd2 <= cutoff2:
-                        ax_, ay_ = _social_force(px, py, vx, vy, rx, ry, rvx, rvy, i, -1, params)
-                        sfx += ax_
-                        sfy += ay_
-                elif ri_mode == ROBOT_AS_OBSTACLE:
-                    if rd2 <= (wall_range + ri) * (wall_range + ri):
-                        ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, sigma, i)
-                        fx += ax_
-                        fy += ay_
-                elif ri_mode == ROBOT_FEARED:
-                    rd = math.sqrt(rd2)
-                    gap = rd - ri
-                    if gap < 0.05:
-                        gap = 0.05
-                    mag = w_other * sigma / gap
-                    if rd > _TINY:
-                        fx -= mag * rdx / rd
-                        fy -= mag * rdy / rd
-                    else:
-                        a = _GOLDEN_ANGLE * i
-                        fx += mag * math.cos(a)
-                        fy += mag * math.sin(a)
-            fx += w_soc * sfx
-            fy += w_soc * sfy
-
-            # obstacle force summed over nearby wall segments
-            wc = _wall_cell(px, py, wall_meta)
-            if wc >= 0:
-                for kk in range(wall_start[wc], wall_start[wc + 1]):
-                    w = wall_items[kk]
-                    cx, cy, t = _closest_on_segment(px, py, walls[w, 0], walls[w, 1], walls[w, 2], walls[w, 3])
-                    if (t <= 0.0 and not wall_owner[w, 0]) or (t >= 1.0 and not wall_owner[w, 1]):
-                        continue
-                    dx = px - cx
-                    dy = py - cy
-                    d = math.sqrt(dx * dx + dy * dy)
-                    if d > wall_range + ri:
-                        continue
-                    if d > _TINY:
-                        ux = dx / d
-                        uy = dy / d
-                    else:
-                        ux, uy = _wall_normal_towards(w, px, py, walls)
-                    mag = w_obs * math.exp(-(d - ri) / sigma)
-                    fx += mag * ux
-                    fy += mag * uy
-
-            # group gaze, coherence and repulsion (lightsfm non-paper version)
-            g = group_slot[i]
-            if g >= 0 and group_n[g] >= 2:
-                cnt = group_n[g]
-                gcx = group_cx[g]
-                gcy = group_cy[g]
-                if has_dir:
-                    ocx = (cnt * gcx - px) / (cnt - 1) - px
-                    ocy = (cnt * gcy - py) / (cnt - 1) - py
-                    onorm = math.sqrt(ocx * ocx + ocy * ocy)
-                    if onorm > _TINY:
-                        dot = ex * ocx + ey * ocy
-                        cosang = dot / onorm
-                        if cosang > 1.0:
-                            cosang = 1.0
-                        elif cosang < -1.0:
-                            cosang = -1.0
-                        if math.acos(cosang) > half_pi:
-                            fx += params[P_GAZE] * dot * ex
-                            fy += params[P_GAZE] * dot * ey
-                rcx = gcx - px
-                rcy = gcy - py
-                dist = math.sqrt(rcx * rcx + rcy * rcy)
-                soft = params[P_COHERENCE] * (math.tanh(dist - (cnt - 1) / 2.0) + 1.0) / 2.0
-                fx += soft * rcx
-                fy += soft * rcy
-                rep_x = 0.0
-                rep_y = 0.0
-                for kk in range(group_start[g], group_start[g + 1]):
-                    j = group_members[kk]
-                    if j == i or not active[j]:
-                        continue
-                    dx = px - pos[j, 0]
-                    dy = py - pos[j, 1]
-                    if math.sqrt(dx * dx + dy * dy) < ri + radius[j]:
-                        rep_x += dx
-                        rep_y += dy
-                fx += params[P_REPULSION] * rep_x
-                fy += params[P_REPULSION] * rep_y
-
-            # integrate, clip to the desired speed
-            nvx = vx + fx * dt
-            nvy = vy + fy * dt
-            speed = math.sqrt(nvx * nvx + nvy * nvy)
-            if speed > v0:
-                if speed > 0.0:
-                    nvx *= v0 / speed
-                    nvy *= v0 / speed
-                else:
-                    nvx = 0.0
-                    nvy = 0.0
-            if not (math.isfinite(nvx) and math.isfinite(nvy)):
-                nvx = 0.0
-                nvy = 0.0
-            qx, qy, nvx, nvy = resolve_motion(px, py, px + nvx * dt, py + nvy * dt, nvx, nvy,
-                                              params[P_CLEARANCE] * ri,
-                                              walls, wall_meta, wall_start, wall_items)
-            new_pos[i, 0] = qx
-            new_pos[i, 1] = qy
-            new_vel[i, 0] = nvx
-            new_vel[i, 1] = nvy
-
-            # heading
-            yi = yaw[i]
-            if m == MODE_FACE:
-                kind = face_kind[i]
-                tx = face_point[i, 0]
-                ty = face_point[i, 1]
-                valid = True
-                if kind == FACE_AGENT:
-                    jr = face_ref[i]
-                    if jr >= 0 and jr < n:
-                        tx = pos[jr, 0]
-                        ty = pos[jr, 1]
-                    else:
-                        valid = False
-                elif kind == FACE_ROBOT:
-                    if robot_present:
-                        tx = rx
-                        ty = ry
-                    else:
-                        valid = False
-                ddx = tx - qx
-                ddy = ty - qy
-                if valid and ddx * ddx + ddy * ddy > _TINY:
-                    yi = _turn_towards(yi, math.atan2(ddy, ddx), params[P_TURN_RATE] * dt)
-            elif math.sqrt(nvx * nvx + nvy * nvy) >= params[P_YAW_HOLD]:
-                yi = math.atan2(nvy, nvx)
-            new_yaw[i] = yi
-
-            # the front goal pops (or cycles) once inside its radius; a final goal stays as the front
-            if m == MODE_GOALS:
-                f = goal_front[i]
-                nl = goal_len[i]
-                if f < nl:
-                    gx = goals[i, f, 0] - qx
-                    gy = goals[i, f, 1] - qy
-                    if gx * gx + gy * gy <= goal_radius[i] * goal_radius[i]:
-                        if cyclic[i]:
-                            goal_front[i] = (f + 1) % nl
-                        elif f + 1 < nl:
-                            goal_front[i] = f + 1
-
-        for k in nb.prange(n_active):
-            i = order[k]
-            pos[i, 0] = new_pos[i, 0]
-            pos[i, 1] = new_pos[i, 1]
-            vel[i, 0] = new_vel[i, 0]
-            vel[i, 1] = new_vel[i, 1]
-            yaw[i] = new_yaw[i]
+    Each agent reads the state at the start of the step and writes only its own row of the
+    new state, so the result is the same in any order and equal to advance_serial's.
+    """
+    n_groups = group_start.shape[0] - 1
+    new_pos = np.empty_like(pos)
+    new_vel = np.empty_like(vel)
+    new_yaw = np.empty_like(yaw)
+    group_cx = np.zeros(max(n_groups, 1))
+    group_cy = np.zeros(max(n_groups, 1))
+    group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
+    for _step in range(n_steps):
+        order, starts, cell_of, gnx, gny, spx, spy, svx, svy = _prepare_step(
+            dt, params, pos, vel, active, group_start, group_members, group_cx, group_cy, group_n,
+            robot, robot_path, walls, wall_meta, wall_start, wall_items)
+        n_active = order.shape[0]
+        n_blocks = (n_active + _BLOCK - 1) // _BLOCK
+        for b in nb.prange(n_blocks):
+            _update_agents(b * _BLOCK, min((b + 1) * _BLOCK, n_active), dt, params,
+                           pos, vel, yaw, radius, desired_speed, factors, mode, active,
+                           group_slot, group_start, group_members, group_cx, group_cy, group_n,
+                           goals, goal_len, goal_front, goal_radius, cyclic,
+                           field_slot, field_vectors, field_meta,
+                           face_kind, face_ref, face_point,
+                           robot_interaction, robot,
+                           walls, wall_owner, wall_meta, wall_start, wall_items,
+                           order, starts, cell_of, gnx, gny, spx, spy, svx, svy,
+                           new_pos, new_vel, new_yaw)
+        for b in nb.prange(n_blocks):
+            _commit_rows(b * _BLOCK, min((b + 1) * _BLOCK, n_active), order, pos, vel, yaw,
+                         new_pos, new_vel, new_yaw)
