@@ -82,8 +82,7 @@ def test_names_are_unique_and_snake_case(name):
 def test_doors_are_wide_enough_for_crowds(name):
     world = load_world(name)
     for door in world.doors():
-        minimum = 0.9 if "private" in door.tags else 1.2
-        assert door.width >= minimum, door.name
+        assert door.width >= 1.2, door.name
         if door.exit and name != "residential":
             assert door.width >= 1.8, door.name
 
