@@ -159,7 +159,8 @@ def _reaction_ports(extra: tuple[PortSpec, ...]) -> tuple[PortSpec, ...]:
         _time_step(),
         _in("beh_duration", "float", 5.0, "How long the reaction lasts once triggered, in simulation seconds.",
             min=0.0, max=600.0),
-        _in("only_once", "bool", True, "React only the first time; afterwards the node succeeds immediately."),
+        _in("only_once", "bool", True, "React only the first time; later activations fail at once, so a "
+            "Fallback falls through to the routine."),
     ) + extra
 
 

@@ -1,0 +1,374 @@
+"""GROVE nodes: the wrapped, id-free behaviors the model writes (paper, "Node Wrapping Strategy").
+
+They act only through crowd intents. Multi-agent behaviors meet in the shared registries of
+coordination.py (a queue owns its order, a conversation owns its spots).
+"""
+
+from __future__ import annotations
+
+import math
+
+import shapely
+
+from grove_tui.engine.bt.coordination import ARRIVAL_TOLERANCE, Conversation, ServiceQueue
+from grove_tui.engine.bt.leafbase import RUNNING, SUCCESS, AgentStatefulAction, AgentSyncAction
+from grove_tui.engine.bt.xml import BTError
+from grove_tui.engine.sfm import MODE_FACE, MODE_FIELD, MODE_GOALS, MODE_STOP
+
+EXIT_RADIUS = 0.6  # metres from the exit point at which an agent has left the building
+HUNAV_GOAL_TOLERANCE = 0.1  # IsGoalReached: goal radius + 0.1
+STEP_ASIDE = 1.2  # metres a served person steps sideways out of the line
+GROUP_ID_BASE = 100000  # SFM group ids derived from agent ids, far from the scenario's own
+
+
+def _go(sim, row: int, route, goal_radius: float) -> None:
+    crowd = sim.crowd
+    crowd.set_goals(row, route, goal_radius=goal_radius)
+    if crowd.mode[row] != MODE_GOALS:
+        crowd.set_mode(row, MODE_GOALS)
+
+
+def _stand(sim, row: int) -> None:
+    crowd = sim.crowd
+    crowd.set_goals(row, [])
+    if crowd.mode[row] != MODE_GOALS:
+        crowd.set_mode(row, MODE_GOALS)
+
+
+def _face(sim, row: int, point) -> None:
+    sim.crowd.set_face_target(row, (float(point[0]), float(point[1])))
+    sim.crowd.set_mode(row, MODE_FACE)
+
+
+class GoTo(AgentStatefulAction):
+    """Walks [waypoints..., target]; SUCCESS within tolerance + 0.1 m of the target (HuNavSim's rule).
+
+    The injected waypoints were planned from where the previous navigation ended; after an
+    interruption (halt) the agent is somewhere else, so it replans from where it stands.
+    """
+
+    __slots__ = ("target_point", "interrupted", "reach2")
+
+    def setup(self) -> None:
+        super().setup()
+        self.target_point = None
+        self.interrupted = False
+        self.reach2 = 0.0
+
+    def on_start(self) -> int:
+        sim = self.sim
+        target = self.get_input("target")
+        point = sim.resolve_target(target, self.get_input("x"), self.get_input("y"), self.get_input("goal_id"))
+        self.target_point = point
+        tolerance = self.get_input("tolerance")
+        self.reach2 = (tolerance + HUNAV_GOAL_TOLERANCE) ** 2
+        p = sim.pos[self.row]
+        sim.status[self.row] = f"going to {target or 'goal'}"
+        if (p[0] - point[0]) ** 2 + (p[1] - point[1]) ** 2 <= self.reach2:
+            sim.counters.reached_goals += 1
+            return SUCCESS
+        waypoints = self.get_input("waypoints") or ()
+        if waypoints and not self.interrupted:
+            route = [*waypoints, point]
+        else:
+            route = sim.plan(p, point)
+        _go(sim, self.row, route, tolerance)
+        return RUNNING
+
+    def on_running(self) -> int:
+        p = self.sim.pos[self.row]
+        t = self.target_point
+        if (p[0] - t[0]) ** 2 + (p[1] - t[1]) ** 2 <= self.reach2:
+            self.interrupted = False
+            self.sim.counters.reached_goals += 1
+            return SUCCESS
+        return RUNNING
+
+    def on_halted(self) -> None:
+        self.interrupted = True
+        _stand(self.sim, self.row)
+
+
+class Wait(AgentStatefulAction):
+    __slots__ = ()
+
+    def on_start(self) -> int:
+        sim = self.sim
+        self.started_at = sim.clock.now
+        sim.crowd.set_goals(self.row, [])
+        sim.crowd.set_mode(self.row, MODE_STOP)
+        sim.status[self.row] = "waiting"
+        return self.on_running()
+
+    def on_running(self) -> int:
+        return SUCCESS if self.elapsed() + 1e-9 >= self.get_input("duration") else RUNNING
+
+
+class Queue(AgentStatefulAction):
+    """Joins the line at a service point, advances slot by slot, is served at the head, steps aside."""
+
+    __slots__ = ("queue", "slot", "arrived", "slot_point")
+
+    def setup(self) -> None:
+        super().setup()
+        self.queue: ServiceQueue | None = None
+        self.slot = -1
+        self.arrived = False
+        self.slot_point = (0.0, 0.0)
+
+    def on_start(self) -> int:
+        sim = self.sim
+        name = self.get_input("service_point")
+        point = sim.resolve_target(name, self.get_input("x"), self.get_input("y"))
+        self.queue = sim.queues.join(name, point, self.get_input("spacing"), self.get_input("service_time"), self.row)
+        self.slot = -1
+        self.arrived = False
+        sim.status[self.row] = f"joining the queue at {name}"
+        return RUNNING
+
+    def on_running(self) -> int:
+        sim, queue, row = self.sim, self.queue, self.row
+        k = queue.position_of(row)
+        if k is None:
+            return RUNNING  # joined this tick; the registry orders same-tick arrivals at the end of the tick
+        p = sim.pos[row]
+        if k != self.slot:
+            self.slot = k
+            self.arrived = False
+            self.slot_point = queue.slot_point(k)
+            far = math.dist(p, self.slot_point) > 2.0
+            _go(sim, row, sim.plan(p, self.slot_point) if far else [self.slot_point], 0.15)
+            sim.status[row] = f"in the queue at {queue.name}, place {k + 1}"
+        if not self.arrived and math.dist(p, self.slot_point) <= ARRIVAL_TOLERANCE:
+            self.arrived = True
+            _face(sim, row, queue.service_point if k > 0 else _ahead(queue))
+        if k == 0 and self.arrived:
+            now = sim.clock.now
+            if queue.head_since is None:
+                queue.head_since = now
+                sim.status[row] = f"being served at {queue.name}"
+            elif now - queue.head_since + 1e-9 >= queue.service_time:
+                queue.leave(row)
+                queue.served += 1
+                sim.counters.served += 1
+                sim.status[row] = f"served at {queue.name}"
+                _go(sim, row, [_aside(sim, queue)], 0.3)
+                return SUCCESS
+        return RUNNING
+
+    def on_halted(self) -> None:
+        if self.queue is not None:
+            self.queue.leave(self.row)
+        _stand(self.sim, self.row)
+
+
+def _ahead(queue: ServiceQueue):
+    """What the person at the head faces: the served object, i.e. away from the line."""
+    sx, sy = queue.service_point
+    return (sx - queue.direction[0], sy - queue.direction[1])
+
+
+def _aside(sim, queue: ServiceQueue):
+    sx, sy = queue.service_point
+    dx, dy = queue.direction
+    for sign in (1.0, -1.0):
+        x, y = sx - sign * dy * STEP_ASIDE, sy + sign * dx * STEP_ASIDE
+        if sim.is_free(x, y):
+            return (x, y)
+    return sim.nearest_free(sx - dy * STEP_ASIDE, sy + dx * STEP_ASIDE)
+
+
+class FollowVelocityField(AgentStatefulAction):
+    """Follows the group's field to the exit; inside EXIT_RADIUS of it the agent is evacuated (deactivated).
+
+    Without a field (a scenario planned with waypoints) it walks the planned path to the exit instead.
+    """
+
+    __slots__ = ("exit_point",)
+
+    def setup(self) -> None:
+        super().setup()
+        self.exit_point = (0.0, 0.0)
+
+    def on_start(self) -> int:
+        sim, row = self.sim, self.row
+        field_id = self.get_input("field")
+        if field_id is None and len(sim.fields) == 1:
+            field_id = next(iter(sim.fields))
+        exit_name = self.get_input("exit")
+        slot = sim.fields.get(field_id) if field_id is not None else None
+        if field_id is not None and slot is None:
+            raise BTError(f"{self.path} FollowVelocityField: field {field_id!r} is not in the scenario "
+                          f"(fields: {', '.join(sim.fields) or 'none'})")
+        if slot is not None:
+            self.exit_point = sim.field_exits.get(field_id) or sim.resolve_target(exit_name, self.get_input("x"),
+                                                                                   self.get_input("y"))
+            sim.crowd.set_field(row, slot)
+            sim.crowd.set_mode(row, MODE_FIELD)
+        else:
+            self.exit_point = sim.resolve_target(exit_name, self.get_input("x"), self.get_input("y"))
+            _go(sim, row, sim.plan(sim.pos[row], self.exit_point), 0.3)
+        sim.status[row] = f"evacuating through {exit_name}"
+        return self.on_running()
+
+    def on_running(self) -> int:
+        sim, row = self.sim, self.row
+        p = sim.pos[row]
+        if math.dist(p, self.exit_point) <= EXIT_RADIUS:
+            sim.crowd.set_active(row, False)
+            sim.counters.evacuated += 1
+            sim.status[row] = "evacuated"
+            return SUCCESS
+        return RUNNING
+
+    def on_halted(self) -> None:
+        self.sim.crowd.set_mode(self.row, MODE_STOP)
+
+
+class Wander(AgentStatefulAction):
+    """Random reachable spots inside a zone, one after another with short pauses, for `duration`."""
+
+    __slots__ = ("zone", "goal", "pause_until")
+
+    def setup(self) -> None:
+        super().setup()
+        self.zone = None
+        self.goal = None
+        self.pause_until = -1.0
+
+    def on_start(self) -> int:
+        sim = self.sim
+        name = self.get_input("zone")
+        if sim.world is None:
+            raise BTError(f"{self.path} Wander: needs the world to know zone {name!r}")
+        try:
+            found = sim.world.find(name)
+        except Exception as exc:
+            raise BTError(f"{self.path} Wander: {exc}") from None
+        zone = found if hasattr(found, "boundary") else sim.world.zone(found.zone)
+        self.zone = zone
+        self.started_at = sim.clock.now
+        self.pause_until = -1.0
+        sim.status[self.row] = f"wandering in {zone.name}"
+        self._next_goal()
+        return RUNNING
+
+    def _next_goal(self) -> None:
+        sim = self.sim
+        polygon = self.zone.polygon
+        xmin, ymin, xmax, ymax = polygon.bounds
+        p = sim.pos[self.row]
+        for _ in range(8):
+            xs = sim.rng.uniform(xmin, xmax, 32)
+            ys = sim.rng.uniform(ymin, ymax, 32)
+            inside = shapely.contains_xy(polygon, xs, ys)
+            for x, y in zip(xs[inside], ys[inside]):
+                if sim.is_free(x, y) and math.dist(p, (x, y)) > 1.0:
+                    self.goal = (float(x), float(y))
+                    _go(sim, self.row, sim.plan(p, self.goal), 0.3)
+                    return
+        self.goal = self.zone.anchor
+        _go(sim, self.row, sim.plan(p, self.goal), 0.3)
+
+    def on_running(self) -> int:
+        sim = self.sim
+        duration = self.get_input("duration")
+        now = sim.clock.now
+        if duration > 0 and now - self.started_at + 1e-9 >= duration:
+            _stand(sim, self.row)
+            return SUCCESS
+        if self.pause_until >= 0:
+            if now >= self.pause_until:
+                self.pause_until = -1.0
+                self._next_goal()
+            return RUNNING
+        if math.dist(sim.pos[self.row], self.goal) <= 0.4:
+            sim.counters.reached_goals += 1
+            self.pause_until = now + float(sim.rng.uniform(1.0, 4.0))
+            _stand(sim, self.row)
+        return RUNNING
+
+    def on_halted(self) -> None:
+        _stand(self.sim, self.row)
+
+
+class JoinGroup(AgentSyncAction):
+    """Same SFM group as the draft group's other members; everyone walks at the slowest member's pace."""
+
+    __slots__ = ()
+
+    def tick(self) -> int:
+        sim, row = self.sim, self.row
+        agent_id = sim.ids[row]
+        members = self.get_input("members") or sim.members_of(agent_id)
+        rows = [sim.row_of[m] for m in members if m in sim.row_of]
+        group_id = self.get_input("group_id")
+        if group_id is None:
+            group_id = GROUP_ID_BASE + min(members, default=agent_id)
+        sim.crowd.set_group(row, int(group_id))
+        if rows:
+            sim.crowd.set_speed(row, min(sim.base_speed[r] for r in rows))
+        sim.status[row] = f"with a group of {len(rows)}"
+        return SUCCESS
+
+
+class Converse(AgentStatefulAction):
+    """Conversation circle at the target: walk to the assigned spot, face the centre, talk once all arrived."""
+
+    __slots__ = ("conv", "spot", "ready", "interrupted")
+
+    def setup(self) -> None:
+        super().setup()
+        self.conv: Conversation | None = None
+        self.spot = (0.0, 0.0)
+        self.ready = False
+        self.interrupted = False
+
+    def on_start(self) -> int:
+        sim, row = self.sim, self.row
+        centre = sim.resolve_target(self.get_input("target"), self.get_input("x"), self.get_input("y"))
+        agent_id = sim.ids[row]
+        members = tuple(self.get_input("members") or sim.members_of(agent_id))
+        rows = {sim.row_of[m] for m in members if m in sim.row_of}
+        rows.add(row)
+        self.conv = sim.conversations.join(centre, tuple(sorted(rows)), row)
+        self.spot = self.conv.spots[row]
+        self.ready = False
+        waypoints = self.get_input("waypoints") or ()
+        p = sim.pos[row]
+        route = [*waypoints, self.spot] if waypoints and not self.interrupted else sim.plan(p, self.spot)
+        _go(sim, row, route, 0.1)
+        sim.status[row] = f"meeting at {self.get_input('target')}"
+        return self.on_running()
+
+    def on_running(self) -> int:
+        sim, row, conv = self.sim, self.row, self.conv
+        if not self.ready and math.dist(sim.pos[row], self.spot) <= ARRIVAL_TOLERANCE:
+            self.ready = True
+            _face(sim, row, conv.centre)
+            sim.conversations.mark_ready(conv, row)
+        elif self.ready and conv.started_at is None:
+            sim.conversations.mark_ready(conv, row)  # re-check: someone may have left meanwhile
+        if conv.started_at is None:
+            if self.ready:
+                sim.status[row] = f"waiting for the others ({len(conv.ready)}/{len(conv.members)})"
+            return RUNNING
+        sim.status[row] = "talking"
+        duration = self.get_input("duration")
+        if duration > 0 and sim.clock.now - conv.started_at + 1e-9 >= duration:
+            sim.conversations.leave(conv, row)
+            self.interrupted = False
+            return SUCCESS
+        return RUNNING
+
+    def on_halted(self) -> None:
+        self.interrupted = True
+        if self.conv is not None:
+            self.sim.conversations.leave(self.conv, self.row)
+        _stand(self.sim, self.row)
+
+
+GROVE_LEAVES = {
+    cls.__name__: cls for cls in (GoTo, Wait, Queue, FollowVelocityField, Wander, JoinGroup, Converse)
+}
+
