@@ -312,6 +312,18 @@ class World:
         segments.flags.writeable = False
         return segments
 
+    @cached_property
+    def _room_wall_segments(self) -> np.ndarray:
+        merged = shapely.simplify(shapely.line_merge(self._room_walls), 0.0)
+        segments = np.array(list(_segments_of(merged)), dtype=np.float64).reshape(-1, 4)
+        segments = segments[np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]) > 1e-9]
+        segments.flags.writeable = False
+        return segments
+
+    def room_walls(self) -> np.ndarray:
+        """(M, 4) segments of the building walls only (zone boundaries minus doors, no footprints)."""
+        return self._room_wall_segments
+
     def walls(self) -> np.ndarray:
         """(M, 4) float64 segments x1, y1, x2, y2: walls minus door openings, plus footprint edges."""
         return self._wall_segments
