@@ -375,8 +375,9 @@ class ThetaStarPlanner:
     def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
         """(K, 2) float64 world points from `start` to `goal` inclusive, every segment collision-free.
 
-        An endpoint inside an obstacle but within one cell of free space is joined through the nearest
-        free cell (that first/last short segment is the only one that may touch an occupied cell).
+        An endpoint inside an obstacle (or on the border of one) but within one cell of free space is
+        joined through the centre of the nearest free cell: that first/last short segment is the only
+        one that may touch an occupied cell.
         """
         sx, sy = (float(v) for v in start)
         gx, gy = (float(v) for v in goal)
@@ -395,12 +396,13 @@ class ThetaStarPlanner:
         # The exact endpoints replace the centres of their cells when the straight line allows it,
         # otherwise the path goes through the cell centre (a segment inside one free cell is free).
         first_target = interior[0] if interior else (gx, gy)
-        start_in_free_cell = self.cell_of(sx, sy) == tuple(start_cell)
+        # A point on the border of an occupied cell already touches it: treat it like a snapped one.
+        start_in_free_cell = self.cell_of(sx, sy) == tuple(start_cell) and self.segment_is_free(sx, sy, sx, sy)
         if not (start_in_free_cell and self.segment_is_free(sx, sy, *first_target)):
             points.append(corners[0])
         points.extend(interior)
         last_from = points[-1]
-        goal_in_free_cell = self.cell_of(gx, gy) == tuple(goal_cell)
+        goal_in_free_cell = self.cell_of(gx, gy) == tuple(goal_cell) and self.segment_is_free(gx, gy, gx, gy)
         if not (goal_in_free_cell and self.segment_is_free(*last_from, gx, gy)) and len(corners) > 1:
             points.append(corners[-1])
         points.append((gx, gy))
