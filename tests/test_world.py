@@ -366,3 +366,14 @@ def test_interaction_point_distances_are_sane_in_shipped_worlds():
             gap = entity.polygon.exterior.distance(Point(entity.interaction_point))
             assert 0.45 <= gap <= 1.5, (name, entity.name, round(gap, 2))
             assert math.isfinite(gap)
+
+
+def test_readme_example_is_a_valid_world():
+    import re
+
+    readme = (Path(__file__).parents[1] / "worlds" / "README.md").read_text()
+    example = re.search(r"```yaml\n(.*?)```", readme, re.S).group(1)
+    world, problems = parse_world(example, "worlds/README.md")
+    assert problems == []
+    assert world.find("seats").name == "waiting_chairs"
+    assert world.find("clinic_entrance").exit
