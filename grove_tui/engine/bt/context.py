@@ -107,6 +107,7 @@ class SimContext:
         self.speech = SpeechLog()
         self.status = [""] * len(self.ids)  # short per-agent text for the TUI
         self.counters = Counters()
+        self.events: list[tuple[float, int, str, str]] = []  # (t, agent id, kind, detail), see metrics.SimEvent
         self._plan_failures = 0
         self.pos: list[list[float]] = []  # row -> [x, y], refreshed once per BT tick
         self.yaw: list[float] = []
@@ -130,6 +131,10 @@ class SimContext:
         else:
             self.robot = None
             self.robot_speed = 0.0
+
+    def event(self, kind: str, row: int, detail: str = "") -> None:
+        """Log queue_join, queue_served, evacuated, goal_reached for metrics and evaluation."""
+        self.events.append((self.clock.now, self.ids[row], kind, detail))
 
     # ---- intents that a temporary behavior replaces and gives back ------------------------------
 

@@ -79,6 +79,9 @@ class QueueRegistry:
     def join(self, name: str, service_point: Point, spacing: float, service_time: float, row: int) -> ServiceQueue:
         queue = self.queues.get(name)
         if queue is None:
+            # people do not stand inside each other: a spacing below two radii would only be pushed apart
+            radius = self._sim.crowd.radius
+            spacing = max(spacing, 2.0 * float(radius.max()) + 0.1) if len(radius) else spacing
             direction, free_length = self._line_direction(name, service_point, spacing)
             queue = ServiceQueue(name, service_point, direction, spacing, service_time, free_length, self._sim)
             self.queues[name] = queue

@@ -66,6 +66,7 @@ class GoTo(AgentStatefulAction):
         sim.status[self.row] = f"going to {target or 'goal'}"
         if (p[0] - point[0]) ** 2 + (p[1] - point[1]) ** 2 <= self.reach2:
             sim.counters.reached_goals += 1
+            sim.event("goal_reached", self.row, str(target or ""))
             return SUCCESS
         waypoints = self.get_input("waypoints") or ()
         if waypoints and not self.interrupted:
@@ -81,6 +82,7 @@ class GoTo(AgentStatefulAction):
         if (p[0] - t[0]) ** 2 + (p[1] - t[1]) ** 2 <= self.reach2:
             self.interrupted = False
             self.sim.counters.reached_goals += 1
+            self.sim.event("goal_reached", self.row, str(self.get_input("target") or ""))
             return SUCCESS
         return RUNNING
 
@@ -124,6 +126,7 @@ class Queue(AgentStatefulAction):
         self.slot = -1
         self.arrived = False
         sim.status[self.row] = f"joining the queue at {name}"
+        sim.event("queue_join", self.row, name)
         return RUNNING
 
     def on_running(self) -> int:
@@ -137,11 +140,12 @@ class Queue(AgentStatefulAction):
             self.arrived = False
             self.slot_point = queue.slot_point(k)
             far = math.dist(p, self.slot_point) > 2.0
-            _go(sim, row, sim.plan(p, self.slot_point) if far else [self.slot_point], 0.15)
+            _go(sim, row, sim.plan(p, self.slot_point) if far else [self.slot_point], 0.1)
             sim.status[row] = f"in the queue at {queue.name}, place {k + 1}"
         if not self.arrived and math.dist(p, self.slot_point) <= ARRIVAL_TOLERANCE:
+            # the slot stays the agent's goal: standing agents are pushed by their neighbours and
+            # the goal force pulls them back, so the line keeps its spacing
             self.arrived = True
-            _face(sim, row, queue.service_point if k > 0 else _ahead(queue))
         if k == 0 and self.arrived:
             now = sim.clock.now
             if queue.head_since is None:
@@ -151,6 +155,7 @@ class Queue(AgentStatefulAction):
                 queue.leave(row)
                 queue.served += 1
                 sim.counters.served += 1
+                sim.event("queue_served", row, queue.name)
                 sim.status[row] = f"served at {queue.name}"
                 _go(sim, row, [_aside(sim, queue)], 0.3)
                 return SUCCESS
@@ -160,12 +165,6 @@ class Queue(AgentStatefulAction):
         if self.queue is not None:
             self.queue.leave(self.row)
         _stand(self.sim, self.row)
-
-
-def _ahead(queue: ServiceQueue):
-    """What the person at the head faces: the served object, i.e. away from the line."""
-    sx, sy = queue.service_point
-    return (sx - queue.direction[0], sy - queue.direction[1])
 
 
 def _aside(sim, queue: ServiceQueue):
@@ -217,6 +216,7 @@ class FollowVelocityField(AgentStatefulAction):
         if math.dist(p, self.exit_point) <= EXIT_RADIUS:
             sim.crowd.set_active(row, False)
             sim.counters.evacuated += 1
+            sim.event("evacuated", row, str(self.get_input("exit") or ""))
             sim.status[row] = "evacuated"
             return SUCCESS
         return RUNNING
