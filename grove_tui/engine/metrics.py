@@ -384,3 +384,31 @@ def compute_metrics(
         crowd=crowd_metrics(traj, walls=walls, final_goals=final_goals, events=events,
                             walkable_area=walkable_area, radius=person_radius),
     )
+
+
+def write_events(path: str | Path, events: Sequence[SimEvent]) -> Path:
+    """The simulation's event log as JSON lines (t, agent_id, kind, detail), written atomically."""
+    import json
+
+    from grove_tui.engine.atomic import write_text_atomic
+
+    lines = [json.dumps({"t": round(e.t, 4), "agent_id": e.agent_id, "kind": e.kind, "detail": e.detail})
+             for e in events]
+    return write_text_atomic(path, "\n".join(lines) + ("\n" if lines else ""))
+
+
+def read_events(path: str | Path) -> list[SimEvent]:
+    import json
+
+    path = Path(path)
+    events = []
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+        if not line.strip():
+            continue
+        try:
+            data = json.loads(line)
+            events.append(SimEvent(float(data["t"]), int(data["agent_id"]), str(data["kind"]),
+                                   str(data.get("detail", ""))))
+        except (ValueError, KeyError, TypeError) as exc:
+            raise MetricsError(f"{path}:{number}: not an event record: {exc}") from None
+    return events

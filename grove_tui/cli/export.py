@@ -1,0 +1,137 @@
+"""`grove export`, `grove metrics`, `grove picture`: what a researcher carries on from a bundle."""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+from grove_tui.engine.errors import GroveError
+
+EXIT_BAD_INPUT = 2
+
+_bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_okay=False, path_type=Path))
+
+
+def _fail(message: str) -> None:
+    Console(stderr=True).print(f"[bold red]error:[/] {message}", highlight=False)
+    sys.exit(EXIT_BAD_INPUT)
+
+
+@click.group()
+def export() -> None:
+    """Export a bundle for HuNavSim (Gazebo, Isaac Sim) and PedPy."""
+
+
+@export.command("hunav")
+@_bundle_argument
+@click.option("--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
+              help="Directory to write agents yaml and BT XML files into (created; a previous export is replaced).")
+@click.option("--keep-grove-nodes", is_flag=True,
+              help="Keep GROVE-only nodes (Queue, FollowVelocityField...) and write their TreeNodesModel, "
+                   "instead of lowering them to HuNavSim nodes.")
+@click.option("--simulator", default="Gazebo Classic", show_default=True,
+              type=click.Choice(["Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots"]),
+              help="HuNavSim wrapper the files are for.")
+@click.option("--base-name", default=None, help="yaml_base_name (default agents_<world>).")
+def export_hunav_command(bundle: Path, out_dir: Path, keep_grove_nodes: bool, simulator: str,
+                         base_name: str | None) -> None:
+    """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
+    from grove_tui.engine.export_hunav import copy_trajectories, export_hunav
+
+    try:
+        result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name)
+    except GroveError as exc:
+        _fail(str(exc))
+        return
+    copied = copy_trajectories(bundle, out_dir)
+    click.echo(str(result.agents_yaml))
+    for path in result.trees:
+        click.echo(str(path))
+    if result.nodes_model is not None:
+        click.echo(str(result.nodes_model))
+    for path in copied:
+        click.echo(str(path))
+
+
+@export.command("trajectories")
+@_bundle_argument
+@click.option("--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
+              help="Directory for trajectories.csv and trajectories.sqlite (PedPy / JuPedSim schema).")
+def export_trajectories_command(bundle: Path, out_dir: Path) -> None:
+    """Trajectories as CSV and as a JuPedSim sqlite file that PedPy loads, with the walkable area."""
+    from grove_tui.engine.export_trajectories import export_trajectories
+
+    try:
+        paths = export_trajectories(bundle, out_dir)
+    except GroveError as exc:
+        _fail(str(exc))
+        return
+    for path in paths:
+        click.echo(str(path))
+
+
+def _format(value: float) -> str:
+    if isinstance(value, float) and math.isnan(value):
+        return "n/a"
+    return f"{value:.3f}".rstrip("0").rstrip(".") if isinstance(value, float) else str(value)
+
+
+@click.command()
+@_bundle_argument
+@click.option("--json", "as_json", is_flag=True, help="Print the metrics as JSON instead of tables.")
+def metrics(bundle: Path, as_json: bool) -> None:
+    """Robot (HuNavSim evaluator) and crowd metrics of a simulated bundle; also writes metrics.json."""
+    from grove_tui.engine.bundle_metrics import bundle_metrics
+
+    try:
+        report, path = bundle_metrics(bundle)
+    except GroveError as exc:
+        _fail(str(exc))
+        return
+    if as_json:
+        click.echo(json.dumps(report.to_dict(), indent=2, sort_keys=True, allow_nan=True))
+        return
+    console = Console()
+    for title, values in (("Robot", report.robot), ("Crowd", report.crowd)):
+        if not values:
+            continue
+        table = Table(title=title, title_justify="left", show_header=False, box=None, padding=(0, 2))
+        for key in sorted(values):
+            table.add_row(key.replace("_", " "), _format(values[key]))
+        console.print(table)
+    console.print(f"[dim]written to {path}[/]", highlight=False)
+
+
+@click.command()
+@_bundle_argument
+@click.option("--out", "out_path", type=click.Path(dir_okay=False, path_type=Path),
+              help="PNG, SVG or PDF file to write. Without it, the scenario is drawn in the terminal.")
+@click.option("--trajectories/--no-trajectories", default=True, show_default=True,
+              help="Draw the simulated trajectories when the bundle has them.")
+@click.option("--width", default=None, type=int, help="Terminal drawing width in columns.")
+def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
+    """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
+    from grove_tui.engine.pictures import draw_scenario, render_scenario_text
+    from grove_tui.engine.scenario import Scenario
+    from grove_tui.engine.world import load_world
+
+    try:
+        scenario = Scenario.load(bundle / "scenario.yaml")
+        world = load_world(scenario.world)
+        if out_path is None:
+            console = Console()
+            console.print(render_scenario_text(world, scenario, width or console.width))
+            return
+        csv = bundle / "trajectories.csv"
+        written = draw_scenario(world, scenario, bundle, out_path,
+                                trajectories=csv if trajectories and csv.exists() else None)
+    except GroveError as exc:
+        _fail(str(exc))
+        return
+    click.echo(str(written))
