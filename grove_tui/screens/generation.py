@@ -52,31 +52,48 @@ class GenerationRequest:
 
 
 class TokenBuffer:
-    """Collects streamed tokens in the worker and posts the stage text at most every FLUSH_SECONDS."""
+    """Collects streamed tokens in the worker and posts the stage text at most every FLUSH_SECONDS.
+
+    A timer flushes what is left when the model pauses, so the last tokens never wait for the next one.
+    """
 
     def __init__(self, post: Callable[[Any], Any], interval: float = FLUSH_SECONDS) -> None:
         self._post = post
         self._interval = interval
+        self._lock = threading.Lock()
         self._stage = ""
         self._text: list[str] = []
         self._dirty = False
         self._last_flush = 0.0
+        self._timer: threading.Timer | None = None
 
     def add(self, stage: str, text: str) -> None:
-        if stage != self._stage:
-            self.flush()
-            self._stage, self._text = stage, []
-        self._text.append(text)
-        self._dirty = True
-        now = time.monotonic()
-        if now - self._last_flush >= self._interval:
-            self.flush(now)
+        with self._lock:
+            if stage != self._stage:
+                self._flush_locked()
+                self._stage, self._text = stage, []
+            self._text.append(text)
+            self._dirty = True
+            wait = self._interval - (time.monotonic() - self._last_flush)
+            if wait <= 0:
+                self._flush_locked()
+            elif self._timer is None:
+                self._timer = threading.Timer(wait, self.flush)
+                self._timer.daemon = True
+                self._timer.start()
 
-    def flush(self, now: float | None = None) -> None:
+    def flush(self) -> None:
+        with self._lock:
+            self._flush_locked()
+
+    def _flush_locked(self) -> None:
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
         if self._dirty:
             self._post(msg.TokensFlushed(self._stage, "".join(self._text)))
             self._dirty = False
-        self._last_flush = time.monotonic() if now is None else now
+        self._last_flush = time.monotonic()
 
 
 def error_hint(exc: BaseException) -> str:
@@ -106,7 +123,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         self.request = request
         self._cancel = threading.Event()
         self._stage = ""
-        self._running = False
+        self._generating = False
         self._started: dict[str, float] = {}
 
     @property
@@ -145,7 +162,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
 
     def start(self) -> None:
         self._cancel = threading.Event()
-        self._running = True
+        self._generating = True
         self._stage = ""
         error = self.query_one("#gen-error", Static)
         error.update("")
@@ -173,6 +190,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
                 self.post_message(msg.StageStarted(event.stage))
             elif kind == "StageFinished":
                 buffer.flush()
+                current["stage"] = ""
                 self.post_message(msg.StageFinished(
                     event.stage, float(event.seconds), int(event.prompt_tokens or 0),
                     int(event.completion_tokens or 0), str(event.detail or "")))
@@ -218,27 +236,27 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
     def on_generation_succeeded(self, message: msg.GenerationSucceeded) -> None:
         from grove_tui.screens.inspect import InspectScreen
 
-        self._running = False
+        self._generating = False
         self.grove.generated = message.generated
         self.app.switch_screen(InspectScreen(message.generated))
 
     def on_generation_failed(self, message: msg.GenerationFailed) -> None:
-        self._running = False
+        self._generating = False
         if message.stage in STAGES:
             self.query_one("#stages", DataTable).update_cell(message.stage, "state", "failed")
         error = self.query_one("#gen-error", Static)
-        where = STAGES.get(message.stage, "start-up")
+        where = STAGES.get(message.stage, "generation")
         error.update(f"✗ {where} failed\n{message.error}\n→ {message.hint}")
         error.display = True
 
     def on_generation_cancelled(self, message: msg.GenerationCancelled) -> None:
-        self._running = False
+        self._generating = False
         self.app.pop_screen()
         self.notify("Generation cancelled.", title="Generation")
 
     # actions --------------------------------------------------------------------------------------
     def action_cancel(self) -> None:
-        if self._running:
+        if self._generating:
             self._cancel.set()
             self.workers.cancel_group(self, "generation")
             if self._stage in STAGES:
@@ -247,5 +265,5 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         self.app.pop_screen()
 
     def action_retry(self) -> None:
-        if not self._running:
+        if not self._generating:
             self.start()

@@ -116,7 +116,7 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
         super().__init__()
         self.generated = generated
         self._overlay = base_overlay(generated)
-        self._selected: BTNode | None = None
+        self._selected_node: BTNode | None = None
 
     @property
     def grove(self) -> GroveApp:
@@ -178,9 +178,9 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
     # selection ---------------------------------------------------------------------------------------
     @on(Tree.NodeHighlighted, "#bt-tree")
     def node_highlighted(self, event: Tree.NodeHighlighted[BTNode]) -> None:
-        self._selected = event.node.data
-        self.query_one("#inspect-map", MapView).set_overlay(highlight_for(self.generated, self._selected, self._overlay))
-        self.query_one("#node-detail", Static).update(self._detail(self._selected))
+        self._selected_node = event.node.data
+        self.query_one("#inspect-map", MapView).set_overlay(highlight_for(self.generated, self._selected_node, self._overlay))
+        self.query_one("#node-detail", Static).update(self._detail(self._selected_node))
         if self.query_one("#xml", TextArea).display:
             self._show_xml()
 
@@ -204,7 +204,7 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
 
     def _show_xml(self) -> None:
         agents = {a.id: a for a in self.generated.scenario.agents}
-        data = self._selected
+        data = self._selected_node
         agent = agents.get(data.agent_id) if data is not None else None
         if agent is None and agents:
             agent = next(iter(agents.values()))

@@ -49,8 +49,8 @@ which GGUF file serves each role and whether it is loaded yet.
                 presets = OptionList(id="presets")
                 presets.border_title = "Preset"
                 yield presets
-                yield Static("", id="preset-description")
-                models = Static("models: looking…", id="models")
+                yield Static("", id="preset-description", markup=False)
+                models = Static("models: looking…", id="models", markup=False)
                 models.border_title = "Models"
                 yield models
             preview = MapView(id="preview")
@@ -138,7 +138,7 @@ which GGUF file serves each role and whether it is loaded yet.
         lines = []
         for status in message.statuses:
             state = "loaded" if status.loaded else ("error" if status.error else ("loading…" if message.loading else "on demand"))
-            lines.append(f"{status.role:>3} {status.file} [{state}]")
+            lines.append(f"{status.role:>3} {status.file} · {state}")
             if status.error:
                 lines.append(f"    {status.error}")
         self.query_one("#models", Static).update("\n".join(lines) or "no models found")

@@ -116,14 +116,31 @@ class MapRaster:
         chars[rows[keep], cols[keep]] = ord(glyph)
         styles[rows[keep], cols[keep]] = style
 
-    def _paint_text(self, chars: np.ndarray, styles: np.ndarray, row: int, col: int, text: str, style: int) -> None:
-        if not 0 <= row < self.height:
+    def _paint_label(self, chars: np.ndarray, styles: np.ndarray, row: int, col: int, text: str, style: int) -> None:
+        """Write `text` centred on (row, col) in a run of empty cells, trying nearby rows, truncating if tight."""
+        best: tuple[int, int, int] | None = None
+        for candidate in (row, row - 1, row + 1, row - 2, row + 2):
+            if not (0 <= candidate < self.height and 0 <= col < self.width) or chars[candidate, col] != SPACE:
+                continue
+            start, end = col, col + 1
+            while start > 0 and chars[candidate, start - 1] == SPACE:
+                start -= 1
+            while end < self.width and chars[candidate, end] == SPACE:
+                end += 1
+            # keep one blank on each side so the label does not touch a wall
+            start, end = start + 1, end - 1
+            if end - start >= min(len(text), 4) and (best is None or end - start > best[2] - best[1]):
+                best = (candidate, start, end)
+                if end - start >= len(text):
+                    break
+        if best is None:
             return
-        for offset, char in enumerate(text):
-            c = col + offset
-            if 0 <= c < self.width and chars[row, c] == SPACE:
-                chars[row, c] = ord(char)
-                styles[row, c] = style
+        candidate, start, end = best
+        label = text[: end - start]
+        left = min(max(start, col - len(label) // 2), end - len(label))
+        for offset, char in enumerate(label):
+            chars[candidate, left + offset] = ord(char)
+            styles[candidate, left + offset] = style
 
     @staticmethod
     def _polygon_segments(points: Any) -> np.ndarray:
@@ -145,8 +162,7 @@ class MapRaster:
         for zone in world.zones:
             cx, cy = _centroid_xy(zone)
             rows, cols = self.to_cells(np.array([[cx, cy]]))
-            label = _zone_label(zone.name, self.width)
-            self._paint_text(chars, styles, int(rows[0]), int(cols[0]) - len(label) // 2, label, ZONE_LABEL)
+            self._paint_label(chars, styles, int(rows[0]), int(cols[0]), _zone_label(zone.name, self.width), ZONE_LABEL)
         return chars, styles
 
     def compose(self, overlay: Overlay | None) -> tuple[np.ndarray, np.ndarray]:
