@@ -377,3 +377,42 @@ def test_readme_example_is_a_valid_world():
     assert problems == []
     assert world.find("seats").name == "waiting_chairs"
     assert world.find("clinic_entrance").exit
+
+
+def test_repeated_keys_are_reported_not_silently_overwritten():
+    text = MINI.replace("    type: room\n    aliases", "    type: room\n    type: hall\n    aliases")
+    world, problems = parse_world(text, "repeat.yaml")
+    assert world is None
+    assert [(p.path, p.line) for p in problems] == [("zones[0].type", 6)]
+    assert "appears twice" in problems[0].message
+
+
+def test_mangled_worlds_give_problems_never_crashes():
+    import random
+    import re
+
+    base = (Path(__file__).parents[1] / "worlds" / "residential.yaml").read_text()
+    numbers = list(re.finditer(r"(?<![\w.])-?\d+(\.\d+)?", base))
+    lines = base.splitlines()
+    rng = random.Random(3)
+    loaded = rejected = 0
+    for _ in range(60):
+        if rng.random() < 0.5:
+            text = base
+            for match in sorted(rng.sample(numbers, 2), key=lambda m: -m.start()):
+                text = text[:match.start()] + str(rng.choice([0, -3, 0.5, 7.5, 16, 100, 6, 9])) + text[match.end():]
+        else:
+            mangled = list(lines)
+            k = rng.randrange(len(mangled))
+            mangled[k] = mangled[k].split(":")[0] + ": " + rng.choice(["null", "[]", "{}", "-1", "[[0, 0], [1, 1]]", "x"])
+            text = "\n".join(mangled)
+        world, problems = parse_world(text, "mangled.yaml")
+        assert (world is None) == bool(problems)
+        for problem in problems:
+            assert problem.file == "mangled.yaml" and problem.path and problem.message
+        if world is None:
+            rejected += 1
+        else:
+            loaded += 1
+            assert world.walls().shape[1] == 4
+    assert rejected > 20

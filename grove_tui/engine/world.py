@@ -409,8 +409,11 @@ def format_path(path: YamlPath) -> str:
 _SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
-def _compose_with_lines(text: str) -> tuple[Any, dict[YamlPath, int]]:
-    """Parse with SafeLoader semantics and record the 1-based line of every node by its path."""
+def _compose_with_lines(text: str) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:
+    """Parse with SafeLoader semantics; record the 1-based line of every node by its path.
+
+    Also returns the paths of repeated mapping keys, which YAML would otherwise silently overwrite.
+    """
     loader = _SAFE_LOADER(text)
     try:
         node = loader.get_single_node()
@@ -418,12 +421,18 @@ def _compose_with_lines(text: str) -> tuple[Any, dict[YamlPath, int]]:
     finally:
         loader.dispose()
     lines: dict[YamlPath, int] = {}
+    repeated: list[YamlPath] = []
 
     def walk(current: yaml.Node, path: YamlPath) -> None:
-        lines[path] = current.start_mark.line + 1
+        lines.setdefault(path, current.start_mark.line + 1)
         if isinstance(current, yaml.MappingNode):
+            seen_keys: set[str] = set()
             for key_node, value_node in current.value:
                 if isinstance(key_node, yaml.ScalarNode):
+                    if key_node.value in seen_keys:
+                        lines[path + (key_node.value, "#repeat")] = key_node.start_mark.line + 1
+                        repeated.append(path + (key_node.value, "#repeat"))
+                    seen_keys.add(key_node.value)
                     walk(value_node, path + (key_node.value,))
         elif isinstance(current, yaml.SequenceNode):
             for index, item in enumerate(current.value):
@@ -431,7 +440,7 @@ def _compose_with_lines(text: str) -> tuple[Any, dict[YamlPath, int]]:
 
     if node is not None:
         walk(node, ())
-    return data, lines
+    return data, lines, repeated
 
 
 class _Problems:
@@ -954,7 +963,7 @@ def _free_anchor(zone: _DraftZone, clearance: float = 0.4) -> Point2:
 def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list[WorldProblem]]:
     """Parse and validate world YAML text; returns the world (None if any problem) and every problem."""
     try:
-        data, lines = _compose_with_lines(text)
+        data, lines, repeated = _compose_with_lines(text)
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line = mark.line + 1 if mark is not None else None
@@ -963,6 +972,9 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
     except yaml.YAMLError as error:
         return None, [WorldProblem(source, "(document)", None, f"broken YAML: {error}")]
     problems = _Problems(source, lines)
+    for path in repeated:
+        problems.items.append(WorldProblem(source, format_path(path[:-1]), problems.line_of(path),
+                                           f"key {path[-2]!r} appears twice in the same mapping; the first value would be lost"))
     if not isinstance(data, dict):
         problems.add((), f"a world file must be a mapping with name and zones, got {type(data).__name__}")
         return None, problems.items
