@@ -3,7 +3,9 @@
 The paper's operational layer: each navigation node (`navigates=True` in the node manifest: GoTo,
 Converse, ...) carries its resolved target in the `x`, `y` ports; the legs start -> first target,
 first -> second, ... are planned with Theta* and the intermediate points land in the node's
-`waypoints` port ("x1,y1;x2,y2", start and target excluded). The tree keeps its structure and every
+`waypoints` port ("x1,y1;x2,y2", start and target excluded). Nodes that move the agent without a
+waypoints port (Queue, FollowVelocityField: resolved `x`, `y` but `navigates=False`) are not planned
+but move the start of the next leg to their point. The tree keeps its structure and every
 other attribute; the result depends only on the targets and the start, so injecting twice changes
 nothing.
 """
@@ -20,6 +22,12 @@ WAYPOINTS_PORT = "waypoints"
 
 def navigation_tags() -> frozenset[str]:
     return frozenset(name for name, spec in NODES.items() if spec.navigates)
+
+
+def relocating_tags() -> frozenset[str]:
+    """Nodes that leave the agent at their resolved x, y without planned waypoints (Queue, FollowVelocityField)."""
+    return frozenset(name for name, spec in NODES.items()
+                     if not spec.navigates and spec.port("x") is not None and spec.port("y") is not None)
 
 
 def _safe_parser() -> etree.XMLParser:
@@ -101,12 +109,20 @@ def inject_waypoints(xml: str, start, planner, start_label: str = "start") -> st
     except etree.XMLSyntaxError as exc:
         raise PlanningError(f"behavior-tree XML does not parse: {exc}") from None
     navigating = navigation_tags()
+    relocating = relocating_tags()
     trees = [root] if root.tag == "BehaviorTree" else root.iter("BehaviorTree")
     for tree in trees:
         position = (float(start[0]), float(start[1]))
         position_label = start_label
         for element in tree.iter():
-            if not isinstance(element.tag, str) or element.tag not in navigating:
+            if not isinstance(element.tag, str):
+                continue
+            if element.tag in relocating:
+                # The next leg starts where this node leaves the agent (e.g. at the queue's counter).
+                if element.get("x") is not None and element.get("y") is not None:
+                    position, position_label = _target_point(element), _target_label(element)
+                continue
+            if element.tag not in navigating:
                 continue
             target = _target_point(element)
             label = _target_label(element)
