@@ -29,10 +29,11 @@ def label_at(grid, labels, point) -> int:
     return int(labels[row, col])
 
 
+@pytest.mark.parametrize("resolution", (0.1, 0.05))
 @pytest.mark.parametrize("name", SHIPPED)
-def test_every_zone_door_and_entity_is_reachable_on_the_inflated_grid(name):
+def test_every_zone_door_and_entity_is_reachable_on_the_inflated_grid(name, resolution):
     world = load_world(name)
-    grid = build_grid(world, resolution=0.1, inflation=0.35)
+    grid = build_grid(world, resolution=resolution, inflation=0.35)
     labels = components(grid)
     start = label_at(grid, labels, world.zones[0].anchor)
     assert start != 0, "first zone's anchor is not free"
