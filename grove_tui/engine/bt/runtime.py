@@ -57,6 +57,7 @@ class SimClock:
 # ---- blackboard ---------------------------------------------------------------------------------
 
 _MISSING = object()
+_ABSENT = object()  # what BlackboardRef asks for, distinct from Blackboard.get's "no default" marker
 _TYPE_FAMILY = {"int": "int", "agent": "int", "float": "float", "bool": "bool"}  # everything else: text
 
 
@@ -129,8 +130,8 @@ class BlackboardRef:
         self.where = where
 
     def get(self) -> Any:
-        value = self.blackboard.get(self.key, _MISSING)
-        if value is _MISSING:
+        value = self.blackboard.get(self.key, _ABSENT)
+        if value is _ABSENT:
             raise BTError(f"{self.where}: port {self.port.name!r} reads blackboard entry {{{self.key}}}, "
                           "which is not set")
         if isinstance(value, str) and self.port.type not in ("string", "target"):
