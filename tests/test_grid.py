@@ -73,7 +73,7 @@ def test_inflation_matches_exact_segment_distance():
     ys = grid.origin[1] + (rows[pick] + 0.5) * grid.resolution
     walls = MultiLineString([((s[0], s[1]), (s[2], s[3])) for s in world.walls()])
     distance = shapely.distance(walls, shapely.points(xs, ys))
-    in_zone = shapely.contains_xy(world._zone_union, xs, ys)
+    in_zone = shapely.contains_xy(world.outline(), xs, ys)
     in_footprint = np.zeros(len(xs), dtype=bool)
     for entity in world.entities():
         in_footprint |= shapely.contains_xy(entity.polygon, xs, ys)

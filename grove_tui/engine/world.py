@@ -25,7 +25,7 @@ import numpy as np
 import shapely
 import shapely.ops
 import yaml
-from shapely.geometry import LineString, MultiLineString, Point, Polygon
+from shapely.geometry import LineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 from shapely.validation import explain_validity
@@ -290,6 +290,10 @@ class World:
     @cached_property
     def _zone_union(self) -> BaseGeometry:
         return unary_union([zone.polygon for zone in self._zones])
+
+    def outline(self) -> BaseGeometry:
+        """The union of all zones: the building's floor, ignoring walls and furniture."""
+        return self._zone_union
 
     @cached_property
     def _room_walls(self) -> BaseGeometry:
