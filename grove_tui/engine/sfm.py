@@ -47,7 +47,8 @@ P_REPULSION = 11
 P_YAW_HOLD = 12
 P_CLEARANCE = 13
 P_TURN_RATE = 14
-P_COUNT = 15
+P_BODY = 15
+P_COUNT = 16
 
 # Layout of the robot state vector.
 R_X = 0
@@ -120,6 +121,9 @@ class SFMParams:
     # HuNavSim 2.0 turns 0.2*pi per behaviour tick; at a 10 Hz tick that is 2*pi rad/s.
     face_turn_rate: float = 2.0 * math.pi
     goal_tolerance: float = 0.1
+    # Contact stiffness (1/s^2) acting only while two bodies overlap. Not in lightsfm, whose
+    # Moussaid force lets a symmetric crossing pair overlap by 0.25 m; 0 restores lightsfm exactly.
+    body_weight: float = 100.0
 
     def __post_init__(self) -> None:
         for name in ("obstacle_sigma", "gamma", "tau", "cutoff", "wall_range"):
@@ -146,6 +150,7 @@ class SFMParams:
         out[P_YAW_HOLD] = self.yaw_hold_speed
         out[P_CLEARANCE] = self.wall_clearance
         out[P_TURN_RATE] = self.face_turn_rate
+        out[P_BODY] = self.body_weight
         return out
 
 
@@ -706,7 +711,7 @@ def _update_agents(k0, k1, dt, params,
                    face_kind, face_ref, face_point,
                    robot_interaction, robot,
                    walls, wall_owner, wall_meta, wall_start, wall_items,
-                   order, starts, cell_of, gnx, gny, spx, spy, svx, svy,
+                   order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
                    new_pos, new_vel, new_yaw):
     """Forces and integration for agents order[k0:k1]; each writes only its own row of new_*."""
     n = pos.shape[0]
@@ -721,11 +726,13 @@ def _update_agents(k0, k1, dt, params,
     epsilon = params[P_EPSILON]
     n_angle = params[P_N]
     n_vel = params[P_NPRIME]
+    body = params[P_BODY]
     robot_present = robot[R_PRESENT] != 0.0
     rx = robot[R_X]
     ry = robot[R_Y]
     rvx = robot[R_VX]
     rvy = robot[R_VY]
+    rrad = robot[R_RADIUS]
     for k in range(k0, k1):
         i = order[k]
         px = pos[i, 0]
@@ -796,6 +803,10 @@ def _update_agents(k0, k1, dt, params,
                         uy = dy / dist
                     else:
                         ux, uy = _tie_break_direction(i, order[kk])
+                    overlap = ri + srad[kk] - dist
+                    if overlap > 0.0:
+                        fx -= body * overlap * ux
+                        fy -= body * overlap * uy
                     ix = lam * (vx - svx[kk]) + ux
                     iy = lam * (vy - svy[kk]) + uy
                     ilen = math.sqrt(ix * ix + iy * iy)
@@ -837,6 +848,11 @@ def _update_agents(k0, k1, dt, params,
                     ax_, ay_ = _social_force(px, py, vx, vy, rx, ry, rvx, rvy, i, -1, params)
                     sfx += ax_
                     sfy += ay_
+                    rd = math.sqrt(rd2)
+                    overlap = ri + rrad - rd
+                    if overlap > 0.0 and rd > _TINY:
+                        fx -= body * overlap * rdx / rd
+                        fy -= body * overlap * rdy / rd
             elif ri_mode == ROBOT_AS_OBSTACLE:
                 if rd2 <= (wall_range + ri) * (wall_range + ri):
                     ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, sigma, i)
@@ -984,7 +1000,7 @@ def _update_agents(k0, k1, dt, params,
                         goal_front[i] = f + 1
 
 @nb.njit(cache=True)
-def _prepare_step(dt, params, pos, vel, active, group_start, group_members, group_cx, group_cy, group_n,
+def _prepare_step(dt, params, pos, vel, radius, active, group_start, group_members, group_cx, group_cy, group_n,
                   robot, robot_path, walls, wall_meta, wall_start, wall_items):
     """The serial part of a step: move the robot, group centres, cell list, gathered neighbours."""
     _advance_robot(robot, robot_path, dt, params, walls, wall_meta, wall_start, wall_items)
@@ -1010,13 +1026,15 @@ def _prepare_step(dt, params, pos, vel, active, group_start, group_members, grou
     spy = np.empty(n_active)
     svx = np.empty(n_active)
     svy = np.empty(n_active)
+    srad = np.empty(n_active)
     for k in range(n_active):
         j = order[k]
         spx[k] = pos[j, 0]
         spy[k] = pos[j, 1]
         svx[k] = vel[j, 0]
         svy[k] = vel[j, 1]
-    return order, starts, cell_of, gnx, gny, spx, spy, svx, svy
+        srad[k] = radius[j]
+    return order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad
 
 
 @nb.njit(cache=True)
@@ -1055,8 +1073,8 @@ def advance_serial(n_steps, dt, params,
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
     for _step in range(n_steps):
-        order, starts, cell_of, gnx, gny, spx, spy, svx, svy = _prepare_step(
-            dt, params, pos, vel, active, group_start, group_members, group_cx, group_cy, group_n,
+        order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad = _prepare_step(
+            dt, params, pos, vel, radius, active, group_start, group_members, group_cx, group_cy, group_n,
             robot, robot_path, walls, wall_meta, wall_start, wall_items)
         n_active = order.shape[0]
         _update_agents(0, n_active, dt, params,
@@ -1067,7 +1085,7 @@ def advance_serial(n_steps, dt, params,
                        face_kind, face_ref, face_point,
                        robot_interaction, robot,
                        walls, wall_owner, wall_meta, wall_start, wall_items,
-                       order, starts, cell_of, gnx, gny, spx, spy, svx, svy,
+                       order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
                        new_pos, new_vel, new_yaw)
         _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
 
@@ -1094,8 +1112,8 @@ def advance_parallel(n_steps, dt, params,
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
     for _step in range(n_steps):
-        order, starts, cell_of, gnx, gny, spx, spy, svx, svy = _prepare_step(
-            dt, params, pos, vel, active, group_start, group_members, group_cx, group_cy, group_n,
+        order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad = _prepare_step(
+            dt, params, pos, vel, radius, active, group_start, group_members, group_cx, group_cy, group_n,
             robot, robot_path, walls, wall_meta, wall_start, wall_items)
         n_active = order.shape[0]
         n_blocks = (n_active + _BLOCK - 1) // _BLOCK
@@ -1108,7 +1126,7 @@ def advance_parallel(n_steps, dt, params,
                            face_kind, face_ref, face_point,
                            robot_interaction, robot,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
-                           order, starts, cell_of, gnx, gny, spx, spy, svx, svy,
+                           order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
                            new_pos, new_vel, new_yaw)
         for b in nb.prange(n_blocks):
             _commit_rows(b * _BLOCK, min((b + 1) * _BLOCK, n_active), order, pos, vel, yaw,
