@@ -104,3 +104,17 @@ def test_suite_errors_name_the_case(tmp_path):
         load_suite(path)
     case = EvalCase("a", "hospital", "normal", "x", 0, Expectation())
     assert dataclasses.replace(case, seed=2).seed == 2
+
+
+def test_shipped_suite_covers_every_world_and_preset_with_real_names():
+    from grove_tui.engine.paths import PROJECT_ROOT
+
+    cases = load_suite(PROJECT_ROOT / "eval" / "suite.yaml")
+    assert len(cases) >= 30
+    assert {(c.world, c.preset) for c in cases} >= {
+        (w, p) for w in ("hospital", "office", "residential") for p in ("emergency", "queuing", "normal")}
+    for case in cases:
+        world = load_world(case.world)
+        for name in case.expect.targets + case.expect.spawns:
+            world.find(name)  # raises on a name the world does not have
+    assert {"two-groups", "vague", "synonym"} <= {t for c in cases for t in c.tags}
