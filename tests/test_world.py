@@ -11,6 +11,7 @@ import pytest
 from shapely.geometry import Point
 
 from grove_tui.engine.errors import GroveError
+from grove_tui.engine.grid import build_grid
 from grove_tui.engine.world import (
     Door,
     Entity,
@@ -120,11 +121,13 @@ def test_pharmacy_queue_of_ten_fits_in_front_of_the_counter():
     away = (start - centre) / np.linalg.norm(start - centre)
     walkable = world.walkable()
     pharmacy = world.zone("pharmacy").polygon
+    grid = build_grid(world, resolution=0.1, inflation=0.35)
     for k in range(10):
         spot = Point(*(start + away * 0.6 * k))
         # Each person (radius 0.25) stands fully on free floor inside the pharmacy.
         assert walkable.contains(spot.buffer(0.25)), k
         assert pharmacy.contains(spot), k
+        assert grid.is_free(spot.x, spot.y), k
 
 
 def test_shipped_world_loads_fast():
