@@ -175,10 +175,11 @@ def _hardened_parser() -> etree.XMLParser:
 def _parse_root(data: bytes, source: str) -> etree._Element:
     if len(data) > MAX_BYTES:
         raise BTError(f"{source}: file is {len(data)} bytes; behavior trees are limited to {MAX_BYTES} bytes")
-    head = data[:4096].lower()
+    lowered = data.lower()
     # DTDs are how entity bombs and external entities get in; BT.CPP never needs one.
-    if b"<!doctype" in data.lower() or b"<!entity" in head or b"<!entity" in data.lower():
-        line = data[: max(data.lower().find(b"<!doctype"), data.lower().find(b"<!entity"))].count(b"\n") + 1
+    found = [i for i in (lowered.find(b"<!doctype"), lowered.find(b"<!entity")) if i >= 0]
+    if found:
+        line = data[: min(found)].count(b"\n") + 1
         raise BTError(f"{source}:{line}: DOCTYPE/ENTITY declarations are not allowed in behavior trees "
                       "(no DTDs, no entities)")
     try:
