@@ -219,6 +219,10 @@ class _Collector:
         self.problems.append(BTProblem(self.source, line, message))
 
 
+def _a(word: str) -> str:
+    return f"an {word}" if word[0] in "aeiou" else f"a {word}"
+
+
 def _suggest(name: str, known) -> str:
     close = difflib.get_close_matches(name, list(known), n=3, cutoff=0.6)
     return f" (did you mean {', '.join(close)}?)" if close else ""
@@ -268,7 +272,7 @@ def _convert_element(el: etree._Element, nodes: Mapping[str, NodeSpec], tree_ids
             _convert_element(ch, nodes, tree_ids, out)
         return None
     if tag in _EXPLICIT_TAGS and _EXPLICIT_TAGS[tag] != spec.category:
-        out.add(line, f"{node_id} is a {spec.category}, not a {_EXPLICIT_TAGS[tag]}")
+        out.add(line, f"{node_id} is {_a(spec.category)}, not {_a(_EXPLICIT_TAGS[tag])}")
 
     ports: dict[str, str] = {}
     for attr, value in attrs.items():
@@ -303,7 +307,7 @@ def _convert_element(el: etree._Element, nodes: Mapping[str, NodeSpec], tree_ids
     elif spec.category == "decorator" and n != 1:
         out.add(line, f"{node_id} is a decorator and needs exactly one child, has {n}")
     elif spec.category in ("action", "condition") and n:
-        out.add(line, f"{node_id} is a {spec.category} and cannot have children")
+        out.add(line, f"{node_id} is {_a(spec.category)} and cannot have children")
     children = tuple(c for c in (_convert_element(ch, nodes, tree_ids, out) for ch in element_children) if c)
     return TreeElement(node_id, name, ports, children, line)
 
