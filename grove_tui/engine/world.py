@@ -1013,7 +1013,8 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
         built_obstacles.append(Obstacle(obstacle.name, obstacle.footprint, obstacle.type,  # type: ignore[arg-type]
                                         obstacle.description, home))
     fingerprint = hashlib.sha1(text.encode("utf-8")).hexdigest()
-    source_path = Path(source) if source != "<string>" else None
+    # Text that did not come from a file (tests, generated worlds) has no source path.
+    source_path = Path(source) if source != "<string>" and Path(source).is_file() else None
     return World(name, description, built_zones, built_obstacles, source_path, fingerprint), []  # type: ignore[arg-type]
 
 
