@@ -207,3 +207,34 @@ def test_emergency_exit_falls_back_to_the_models_then_the_nearest(clinic, grid):
     out = run(clinic, grid, "emergency", "Eight people evacuate the cafeteria",
               [DraftGroup("people", 8, "cafeteria", evac("cafeteria"))], nodes=("Sequence", "FollowVelocityField"))
     assert out.exit == "back_exit"  # nearer to the cafeteria than the main entrance
+
+
+def test_spawn_follows_the_prompts_place_words_not_the_destination(clinic, grid):
+    prompt = "Four visitors in the lobby walk to the cafeteria"
+    out = run(clinic, grid, "normal", prompt,
+              [DraftGroup("visitors", 4, "restroom", DraftNode("GoTo", {"target": "cafeteria"}))])
+    assert out.groups[0].spawn == "lobby"
+    assert any("spawn restroom -> lobby" in n for n in out.notes)
+    out = run(clinic, grid, "normal", "Four visitors walk to the cafeteria",
+              [DraftGroup("visitors", 4, "lobby", DraftNode("GoTo", {"target": "cafeteria"}))])
+    assert out.groups[0].spawn == "lobby"  # the prompt is silent: the model's choice stands
+    out = run(clinic, grid, "normal", "Four visitors walk to the cafeteria",
+              [DraftGroup("visitors", 4, "cafeteria", DraftNode("GoTo", {"target": "cafeteria"}))])
+    assert out.groups[0].spawn == "corridor"  # not where they are going: the room next to it
+
+
+def test_queuing_overlay_adds_the_queue_subtree_the_model_left_out(clinic, grid):
+    wait_tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "pharmacy"}), DraftNode("Wait", {"duration": 10.0})))
+    out = run(clinic, grid, "queuing", "Ten patients wait in line at the pharmacy counter",
+              [DraftGroup("patients", 10, "pharmacy", wait_tree)], nodes=("Sequence", "GoTo", "Queue", "Wait"))
+    kinds = [n.node for n in out.groups[0].tree.walk()]
+    assert kinds == ["Sequence", "GoTo", "Queue"]
+    assert etree.fromstring(out.agents[3].xml.encode()).find(".//Queue").get("service_point") == "pharmacy_counter"
+
+
+def test_emergency_overlay_makes_every_group_leave(clinic, grid):
+    out = run(clinic, grid, "emergency", "Six people in the cafeteria hear the alarm",
+              [DraftGroup("people", 6, "cafeteria", DraftNode("Wait", {"duration": 5.0}))],
+              nodes=("Sequence", "Wait", "FollowVelocityField"))
+    assert [n.node for n in out.groups[0].tree.walk()] == ["Sequence", "Wait", "FollowVelocityField"]
+    assert out.exit in ("main_entrance", "back_exit")

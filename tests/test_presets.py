@@ -24,7 +24,8 @@ def test_shipped_presets_load(name):
 
 def test_shipped_preset_policies_follow_the_paper():
     emergency, queuing, normal, vanilla = (load_preset(n) for n in SHIPPED)
-    assert emergency.velocity == "field" and emergency.allowed_nodes == ("FollowVelocityField",)
+    assert emergency.velocity == "field" and emergency.required_nodes == ("FollowVelocityField",)
+    assert not {"Converse", "Wander", "FollowAgent"} & set(emergency.allowed_nodes)
     assert "exits" in emergency.required_rois
     assert queuing.goal_sampling == "sequential" and "Queue" in queuing.allowed_nodes and queuing.planner.enabled
     assert normal.velocity == "waypoints" and normal.planner.enabled and "FollowVelocityField" in normal.forbidden_nodes

@@ -10,6 +10,7 @@ least two radii apart, and auto ports are filled so each file is self-contained.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -136,11 +137,124 @@ def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Prese
     return plans
 
 
+def _group_text(group: GroupPlan, quantities: Sequence[Quantity], prompt: str) -> str:
+    """The prompt words about this group: from its quantity to the next one (the whole prompt if unstated)."""
+    if group.quantity is None:
+        return prompt
+    later = [q.start for q in quantities if q.start > group.quantity.start]
+    return prompt[group.quantity.start:min(later) if later else len(prompt)]
+
+
+def _ground_spawns(groups: Sequence[GroupPlan], quantities: Sequence[Quantity], prompt: str, selection: Any,
+                   notes: list[str], world: Any) -> None:
+    """People start where the prompt puts them; otherwise where the model put them, unless that is
+    the very place they are sent to, in which case they come from the largest room next to it."""
+    for g in groups:
+        named = spawn_named(_group_text(g, quantities, prompt), selection)
+        if named is None and len(groups) == 1:
+            named = spawn_named(prompt, selection)
+        if named is not None:
+            if named != g.spawn:
+                notes.append(f"group '{g.label}': spawn {g.spawn} -> {named} (the prompt puts them there)")
+                g.spawn = named
+            continue
+        first = _first_goto(g.tree)
+        if first is not None and _zone_of(world, first, g.spawn) == g.spawn:
+            neighbours = sorted({d.leads_to if d.zone == g.spawn else d.zone for d in world.doors_of(g.spawn)}
+                                - {g.spawn, "outside"})
+            if neighbours:
+                best = max(neighbours, key=lambda z: (world.zone(z).area, z))
+                notes.append(f"group '{g.label}': spawn {g.spawn} -> {best} (they walk to {first})")
+                g.spawn = best
+
+
+def _first_goto(tree: DraftNode) -> str | None:
+    for node in tree.walk():
+        if node.node in ("Wander", "Converse", "Queue", "FollowVelocityField", "Wait"):
+            return None
+        if node.node == "GoTo":
+            return node.ports.get("target")
+    return None
+
+
+def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, text: str, notes: list[str],
+                  label: str) -> DraftNode:
+    """The preset's deterministic overlay on a group's tree.
+
+    queuing: a group whose words speak of queueing, lining up or being served gets the Queue
+    subtree at its service point when the model left it out. emergency: every tree ends by
+    following the velocity field to the exit.
+    """
+    kinds = {n.node for n in tree.walk()}
+    if preset.name == "queuing" or (preset.goal_sampling == "sequential" and "Queue" in preset.required_nodes):
+        words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
+        if "Queue" not in kinds and words & QUEUE_WORDS:
+            service = _service_point(tree, world, selection)
+            if service is not None:
+                notes.append(f"group '{label}': queue at {service} (queuing preset)")
+                return DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": service}),
+                                                  DraftNode("Queue", {"service_point": service})))
+    if preset.velocity == "field" and "FollowVelocityField" not in kinds:
+        exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
+        if exit_name is not None:
+            notes.append(f"group '{label}': follows the evacuation field (emergency preset)")
+            follow = DraftNode("FollowVelocityField", {"exit": exit_name})
+            return DraftNode("Sequence", {}, (tree, follow)) if tree.children or tree.node != "Sequence" else follow
+    return tree
+
+
+def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
+    """Where a group is served: an entity its tree or the prompt names, else its zone's counter."""
+    candidates = [n for n in _tree_places(tree)]
+    candidates += [m.name for m in getattr(selection, "matches", ()) if m.reason == "prompt"]
+    for name in candidates:
+        try:
+            obj = world.find(name)
+        except Exception:
+            continue
+        if hasattr(obj, "interaction_point"):
+            return obj.name
+    for name in candidates + list(getattr(selection, "zones", ())):
+        try:
+            obj = world.find(name)
+        except Exception:
+            continue
+        zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
+        if hasattr(zone, "entities"):
+            service = _service_entity(zone)
+            if service is not None:
+                return service.name
+    return None
+
+
 def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
     for g in groups:
         if g.count > preset.limits.max_count:
             raise GenerationError(f"'{g.quantity.phrase if g.quantity else g.label}' asks for {g.count} people in one "
                                   f"group; preset '{preset.name}' allows at most {preset.limits.max_count} per group")
+
+
+_SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
+_GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
+QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
+
+
+def spawn_named(text: str, selection: Any) -> str | None:
+    """The place the words put people in ("in the lobby", "from the ward"), not where they go ("to the cafe")."""
+    if selection is None:
+        return None
+    preposition = None
+    for w in re.findall(r"[a-z0-9]+", text.lower()):
+        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
+            preposition = w
+            continue
+        t = lemma(w)
+        for m in getattr(selection, "matches", ()):
+            if m.reason == "prompt" and t in m.matched:
+                if preposition in _SPAWN_PREPOSITIONS:
+                    return m.zone
+                break
+    return None
 
 
 def _place_in(text: str, selection: Any) -> str | None:
@@ -471,8 +585,11 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
     groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection, allowed_nodes)
     if not groups:
         raise GenerationError("the draft has no groups of people")
+    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+    for g in groups:
+        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label)
     space = FreeSpace(world, grid)
-    _check_capacity(groups, space)
+    _check_capacity(groups, space, world)
     _check_limits(groups, preset)
     resolver = TargetResolver(world, grid, space, preset, rng)
     exit_name = _shared_exit(world, preset, groups, selection, notes) if preset.velocity == "field" else None
@@ -541,16 +658,23 @@ def _with_exit(tree: DraftNode, exit_name: str) -> DraftNode:
     return DraftNode(tree.node, ports, tuple(_with_exit(c, exit_name) for c in tree.children))
 
 
-def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace) -> None:
-    per_zone: dict[str, int] = {}
+def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -> None:
+    """Everyone must fit, at a plausible density, both where they start and where they end up."""
+    ends: dict[str, int] = {}
+    starts: dict[str, int] = {}
     for g in groups:
-        per_zone[g.spawn] = per_zone.get(g.spawn, 0) + g.count
-    for zone, n in per_zone.items():
-        cap = space.capacity(zone)
-        if n > cap:
-            raise GenerationError(
-                f"{n} people do not fit in zone '{zone}': its free floor of about "
-                f"{space.free_area(zone):.0f} m^2 holds at most {cap} at a plausible density ({MAX_DENSITY:g}/m^2)")
+        starts[g.spawn] = starts.get(g.spawn, 0) + g.count
+        places = [node.ports[port] for node, port in navigation_targets(g.tree) if node.node != "FollowVelocityField"]
+        if places:
+            zone = _zone_of(world, places[-1], g.spawn)
+            ends[zone] = ends.get(zone, 0) + g.count
+    for counts in (ends, starts):
+        for zone, n in counts.items():
+            cap = space.capacity(zone)
+            if n > cap:
+                raise GenerationError(
+                    f"{n} people do not fit in zone '{zone}': its free floor of about "
+                    f"{space.free_area(zone):.0f} m^2 holds at most {cap} at a plausible density ({MAX_DENSITY:g}/m^2)")
 
 
 def _shared_exit(world: Any, preset: Preset, groups: Sequence[GroupPlan], selection: Any, notes: list[str]) -> str:

@@ -56,8 +56,9 @@ class Preset:
     retrieval_filter: str | None  # the preset tag retrieval filters on; None retrieves nothing, every node is offered
     retrieval_k: int
     control_nodes: tuple[str, ...]
-    allowed_nodes: tuple[str, ...]  # empty: whatever retrieval returns (minus forbidden)
+    allowed_nodes: tuple[str, ...]  # leaves the model may use; empty: whatever retrieval returns (minus forbidden)
     forbidden_nodes: tuple[str, ...]
+    required_nodes: tuple[str, ...]  # leaves always offered, retrieved or not, so the preset's behavior is expressible
     goal_sampling: str
     velocity: str
     planner: PlannerSettings
@@ -182,6 +183,7 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         control_nodes=control,
         allowed_nodes=names(nodes, "allowed", "nodes.allowed"),
         forbidden_nodes=names(nodes, "forbidden", "nodes.forbidden"),
+        required_nodes=names(nodes, "required", "nodes.required"),
         goal_sampling=choice("goal_sampling", GOAL_SAMPLING),
         velocity=choice("velocity", VELOCITY),
         planner=PlannerSettings(
