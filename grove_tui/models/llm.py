@@ -102,6 +102,11 @@ class LocalLLM:
     def worker_pid(self) -> int | None:
         return self._process.pid if self.running else None
 
+    @property
+    def context_size(self) -> int:
+        """The context llama.cpp actually allocated (it rounds small requests up); n_ctx until loaded."""
+        return int(self._ready_info.get("n_ctx", self.n_ctx))
+
     def start(self) -> None:
         """Start the worker and load the model now (otherwise the first generate does it)."""
         with self._lock:

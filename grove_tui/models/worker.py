@@ -87,6 +87,9 @@ def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_thread
             conn.send(("error", "request", f"{type(error).__name__}: {error}"))
 
 
+MIN_ANSWER_TOKENS = 16
+
+
 class _RequestError(Exception):
     def __init__(self, kind: str, message: str) -> None:
         super().__init__(message)
@@ -122,12 +125,13 @@ class _Server:
         if request["op"] == "count":
             self.conn.send(("done", {"prompt": text, "prompt_tokens": len(tokens)}))
             return
-        max_tokens = int(request["max_tokens"])
         n_ctx = self.info["n_ctx"]
-        if len(tokens) + max_tokens > n_ctx:
-            raise _RequestError("context", f"the prompt has {len(tokens)} tokens and the answer may need {max_tokens}, "
-                                           f"but the context holds {n_ctx}")
-        self.generate(tokens, request)
+        room = n_ctx - len(tokens)
+        if room < MIN_ANSWER_TOKENS:
+            raise _RequestError("context", f"the prompt has {len(tokens)} tokens and the context holds {n_ctx}, "
+                                           f"leaving {max(room, 0)} for the answer")
+        # A budget beyond the context is clamped: if the answer really needs more it ends as "length".
+        self.generate(tokens, {**request, "max_tokens": min(int(request["max_tokens"]), room)})
 
     def generate(self, tokens: list[int], request: dict[str, Any]) -> None:
         from llama_cpp import LlamaGrammar, llama_vocab_is_eog
