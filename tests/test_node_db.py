@@ -80,7 +80,8 @@ def test_a_template_writing_an_automatic_port_is_reported(node_db_copy: Path):
 
 
 def test_a_template_whose_node_list_disagrees_with_its_tree_is_reported(node_db_copy: Path):
-    _write_template(node_db_copy, {"node": "Sequence", "children": [{"node": "GoTo", "target": "a"}, {"node": "Wait"}]}, ["GoTo"])
+    tree = {"node": "Sequence", "children": [{"node": "GoTo", "target": "a"}, {"node": "Wait"}]}
+    _write_template(node_db_copy, tree, ["Sequence", "GoTo"])
     problems = check_node_documents(node_db_copy)
     assert any("nodes omits ['Wait']" in p for p in problems), problems
 

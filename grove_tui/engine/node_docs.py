@@ -318,15 +318,14 @@ def template_problems(template: Template, nodes: Mapping[str, Any]) -> list[str]
     """Names or ports the template uses that the manifest does not have, and other inconsistencies."""
     problems = []
     where = template.source
-    used_leaves = set()
+    used = set()
     for index, draft in enumerate(tree_nodes(template.tree)):
         name = draft.get("node")
         spec = nodes.get(name)
         if spec is None:
             problems.append(f"{where}: tree node #{index} uses unknown node {name!r}")
             continue
-        if spec.category != "control":
-            used_leaves.add(name)
+        used.add(name)
         ports = {p.name: p for p in spec.ports}
         for key in draft:
             if key in ("node", "children"):
@@ -342,14 +341,16 @@ def template_problems(template: Template, nodes: Mapping[str, Any]) -> list[str]
     for name in template.nodes:
         if name not in nodes:
             problems.append(f"{where}: nodes lists unknown node {name!r}")
+    # `nodes` lists every node type of the tree, control nodes included, so the pipeline can allow
+    # exactly what a retrieved template needs.
     listed = set(template.nodes)
-    if used_leaves - listed:
-        problems.append(f"{where}: nodes omits {sorted(used_leaves - listed)} used in the tree")
-    if listed - used_leaves - {n for n in listed if n in nodes and nodes[n].category == "control"}:
-        problems.append(f"{where}: nodes lists {sorted(listed - used_leaves)} the tree does not use")
+    if used - listed:
+        problems.append(f"{where}: nodes omits {sorted(used - listed)} used in the tree")
+    if listed - used:
+        problems.append(f"{where}: nodes lists {sorted(listed - used)} the tree does not use")
     for name in template.nodes:
         spec = nodes.get(name)
-        if spec is not None and spec.category != "control" and not template.presets <= set(spec.presets):
+        if spec is not None and not template.presets <= set(spec.presets):
             problems.append(f"{where}: presets {sorted(template.presets - set(spec.presets))} may not retrieve {name}")
     return problems
 

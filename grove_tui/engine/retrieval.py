@@ -221,6 +221,17 @@ def _normalise_preset(preset: Any) -> str | None:
     return preset
 
 
+_UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}$")
+_CHROMA_FILES = {"chroma.sqlite3", "chroma.sqlite3-wal", "chroma.sqlite3-shm", "chroma.sqlite3-journal"}
+
+
+def _is_chroma_entry(path: Path) -> bool:
+    """What a PersistentClient writes: its sqlite file and one UUID-named folder per vector segment."""
+    if path.name in _CHROMA_FILES:
+        return path.is_file()
+    return path.is_dir() and bool(_UUID.match(path.name))
+
+
 def _vector_texts(doc: NodeDocument) -> list[str]:
     # The description carries meaning; the short names and synonyms each get their own vector so a
     # prompt that uses one of them is not drowned out by the rest of the description.
@@ -270,10 +281,11 @@ class NodeRetriever:
         self._collection = None
         SharedSystemClient.clear_system_cache()
         entries = list(self.index_dir.iterdir()) if self.index_dir.exists() else []
-        ours = not entries or (self.index_dir / "chroma.sqlite3").exists()
-        if not ours:
-            raise RetrievalError(f"{self.index_dir}: unusable as a retrieval index and holds files that are not a "
-                                 "Chroma database; refusing to delete them. Choose another index directory.")
+        strangers = [entry.name for entry in entries if not _is_chroma_entry(entry)]
+        if strangers:
+            raise RetrievalError(f"{self.index_dir}: unusable as a retrieval index and holds files Chroma did not "
+                                 f"write ({', '.join(sorted(strangers)[:5])}); refusing to delete them. "
+                                 "Choose another index directory.")
         shutil.rmtree(self.index_dir)
 
     def ensure_index(self, force: bool = False) -> IndexState:
