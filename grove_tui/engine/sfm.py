@@ -48,7 +48,8 @@ P_YAW_HOLD = 12
 P_CLEARANCE = 13
 P_TURN_RATE = 14
 P_BODY = 15
-P_COUNT = 16
+P_SKIP = 16
+P_COUNT = 17
 
 # Layout of the robot state vector.
 R_X = 0
@@ -87,8 +88,6 @@ ROBOT_WAYPOINT_TOLERANCE = 0.1
 _BACKOFF = 1e-4          # metres kept between a blocked agent and the wall it hit
 _TINY = 1e-12
 _GOLDEN_ANGLE = 2.399963229728653
-# Social terms with exp(-x), x above this, are below 3.4e-4 of their peak and are skipped.
-_NEGLIGIBLE_EXPONENT = 8.0
 # No nnan/ninf: the kernels rely on isfinite checks to keep every value finite.
 _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
@@ -124,6 +123,9 @@ class SFMParams:
     # Contact stiffness (1/s^2) acting only while two bodies overlap. Not in lightsfm, whose
     # Moussaid force lets a symmetric crossing pair overlap by 0.25 m; 0 restores lightsfm exactly.
     body_weight: float = 100.0
+    # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
+    # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
+    social_skip_exponent: float = 8.0
 
     def __post_init__(self) -> None:
         for name in ("obstacle_sigma", "gamma", "tau", "cutoff", "wall_range"):
@@ -151,6 +153,7 @@ class SFMParams:
         out[P_CLEARANCE] = self.wall_clearance
         out[P_TURN_RATE] = self.face_turn_rate
         out[P_BODY] = self.body_weight
+        out[P_SKIP] = self.social_skip_exponent
         return out
 
 
@@ -727,6 +730,7 @@ def _update_agents(k0, k1, dt, params,
     n_angle = params[P_N]
     n_vel = params[P_NPRIME]
     body = params[P_BODY]
+    skip_exponent = params[P_SKIP]
     robot_present = robot[R_PRESENT] != 0.0
     rx = robot[R_X]
     ry = robot[R_Y]
@@ -816,7 +820,7 @@ def _update_agents(k0, k1, dt, params,
                         ilen = 1.0
                     b = gamma * ilen
                     q = dist / b
-                    if q > _NEGLIGIBLE_EXPONENT:
+                    if q > skip_exponent:
                         continue
                     ix /= ilen
                     iy /= ilen
@@ -825,7 +829,7 @@ def _update_agents(k0, k1, dt, params,
                     tv = n_vel * b * theta
                     ta2 = ta * ta
                     tv2 = tv * tv
-                    if q + min(ta2, tv2) > _NEGLIGIBLE_EXPONENT:
+                    if q + min(ta2, tv2) > skip_exponent:
                         continue
                     f_v = -math.exp(-q - tv2)
                     f_a = 0.0
