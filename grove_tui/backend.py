@@ -8,7 +8,6 @@ so the app opens before they load.
 
 from __future__ import annotations
 
-import json
 import re
 import shutil
 import threading
@@ -60,61 +59,84 @@ class GeneratedScenario:
 class ExportedFile:
     kind: str
     path: Path
+    note: str = ""  # why it is missing, when an exporter could not write it
 
 
 @dataclass
 class ExportContext:
     generated: GeneratedScenario
-    simulation: Any | None  # a Simulation that has run (its recorder holds the trajectories), or None
+    simulation: Any | None  # a Simulation that has run (trajectories, events), or None before simulating
     out_dir: Path
     files: list[ExportedFile] = field(default_factory=list)
 
-    def add(self, kind: str, path: Path) -> None:
-        self.files.append(ExportedFile(kind, path))
+    @property
+    def bundle(self) -> Path:
+        return self.out_dir / "bundle"
+
+    @property
+    def trajectories(self) -> Path:
+        return self.bundle / "trajectories.csv"
+
+    def add(self, kind: str, path: Path, note: str = "") -> None:
+        self.files.append(ExportedFile(kind, path, note))
 
 
 Exporter = Callable[[ExportContext], None]
 
 
 def export_bundle(ctx: ExportContext) -> None:
-    target = ctx.out_dir / "bundle"
-    shutil.copytree(ctx.generated.bundle_dir, target)
-    ctx.add("bundle", target)
+    shutil.copytree(ctx.generated.bundle_dir, ctx.bundle)
+    ctx.add("bundle", ctx.bundle)
 
 
-def export_trajectories(ctx: ExportContext) -> None:
+def export_run(ctx: ExportContext) -> None:
+    """Trajectories and the event log go into the exported bundle, so `grove metrics` reads it as is."""
     if ctx.simulation is None:
         return
-    path = ctx.out_dir / "trajectories.csv"
-    ctx.simulation.recorder.write_csv(path)
-    ctx.add("trajectories", path)
+    from grove_tui.engine.metrics import write_events
+
+    recorder = getattr(ctx.simulation, "recorder", None)
+    if recorder is None:
+        ctx.add("trajectories", ctx.trajectories, "not recorded: this simulation has no trajectory recorder")
+    else:
+        recorder.write_csv(ctx.trajectories)
+        ctx.add("trajectories", ctx.trajectories)
+    events = write_events(ctx.bundle / "events.jsonl", ctx.simulation.events)
+    ctx.add("events", Path(events))
 
 
 def export_metrics(ctx: ExportContext) -> None:
-    if ctx.simulation is None:
+    if ctx.simulation is None or not ctx.trajectories.exists():
         return
-    from grove_tui.engine.atomic import write_text_atomic
-    from grove_tui.engine.metrics import Trajectories, compute_metrics
+    from grove_tui.engine.bundle_metrics import bundle_metrics
 
-    scenario = ctx.generated.scenario
-    trajectories = Trajectories.from_csv(ctx.out_dir / "trajectories.csv")
-    robot = scenario.robot
-    report = compute_metrics(
-        trajectories,
-        walls=ctx.generated.world.walls(),
-        robot_goal=None if robot is None else robot.goal,
-        robot_radius=0.3 if robot is None else robot.radius,
-        final_goals={a.id: a.goals[-1] for a in scenario.agents if a.goals},
-        events=tuple(getattr(ctx.simulation, "events", ()) or ()),
-    )
-    path = write_text_atomic(ctx.out_dir / "metrics.json", json.dumps(report.to_dict(), indent=2) + "\n")
-    ctx.add("metrics", path)
+    _report, path = bundle_metrics(ctx.bundle)
+    ctx.add("metrics", Path(path))
 
 
+def export_hunav_files(ctx: ExportContext) -> None:
+    from grove_tui.engine.export_hunav import export_hunav
+
+    result = export_hunav(ctx.bundle, ctx.out_dir / "hunav")
+    ctx.add("hunav", Path(result.agents_yaml), f"+ {len(result.trees)} agent trees")
+
+
+def export_picture(ctx: ExportContext) -> None:
+    from grove_tui.engine.pictures import draw_scenario
+
+    trajectories = ctx.trajectories if ctx.trajectories.exists() else None
+    path = draw_scenario(ctx.generated.world, ctx.generated.scenario, ctx.bundle, ctx.out_dir / "scenario.png",
+                         trajectories=trajectories, title=ctx.generated.prompt[:80])
+    ctx.add("picture", Path(path))
+
+
+# Order matters: later exporters read what earlier ones wrote into the exported bundle.
 EXPORTERS: list[tuple[str, Exporter]] = [
     ("bundle", export_bundle),
-    ("trajectories", export_trajectories),
+    ("trajectories", export_run),
     ("metrics", export_metrics),
+    ("hunav", export_hunav_files),
+    ("picture", export_picture),
 ]
 
 
@@ -135,8 +157,9 @@ class EngineBackend:
         runs_dir: Path | None = None,
         exporters: list[tuple[str, Exporter]] | None = None,
     ) -> None:
-        self._cli_roi = roi_model or model
-        self._cli_bt = bt_model or model
+        self._cli_model = model
+        self._cli_roi = roi_model
+        self._cli_bt = bt_model
         self._llm_factory = llm_factory
         self._retriever_factory = retriever_factory
         self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
@@ -179,7 +202,7 @@ class EngineBackend:
     def _resolve(self) -> dict[str, Any]:
         from grove_tui.models.registry import resolve_models
 
-        return dict(resolve_models(self._cli_roi, self._cli_bt))
+        return dict(resolve_models(self._cli_roi, self._cli_bt, self._cli_model))
 
     def model_status(self) -> list[ModelStatus]:
         try:
@@ -189,7 +212,8 @@ class EngineBackend:
             return [ModelStatus("roi", "?", False, problem), ModelStatus("bt", "?", False, problem)]
         with self._lock:
             return [
-                ModelStatus(role, Path(str(_model_path(info))).name, role in self._models, self._model_errors.get(role, ""))
+                ModelStatus(role, Path(str(_model_path(info))).name, _is_loaded(self._models.get(role)),
+                            self._model_errors.get(role, ""))
                 for role, info in infos.items()
             ]
 
@@ -217,7 +241,9 @@ class EngineBackend:
             return self._llm_factory(role, info)
         from grove_tui.models.llm import LocalLLM
 
-        return LocalLLM(_model_path(info), n_ctx=getattr(info, "n_ctx", 4096), role=role)
+        llm = LocalLLM(_model_path(info), role=role, n_ctx=getattr(info, "n_ctx", 4096))
+        llm.start()  # loads the weights in the model's worker process now, not at the first prompt
+        return llm
 
     def _retriever_instance(self) -> Any:
         with self._lock:
@@ -278,10 +304,22 @@ class EngineBackend:
             out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}-{suffix}"
         out_dir.mkdir(parents=True)
         ctx = ExportContext(generated, simulation, out_dir)
-        for _kind, exporter in self.exporters:
-            exporter(ctx)
+        for kind, exporter in self.exporters:
+            try:
+                exporter(ctx)
+            except Exception as exc:  # one failing format must not lose the others; the dialog shows why
+                if kind == "bundle":
+                    raise
+                ctx.add(kind, out_dir, f"failed: {type(exc).__name__}: {exc}")
         return ctx.files
 
 
 def _model_path(info: Any) -> Any:
     return getattr(info, "path", info)
+
+
+def _is_loaded(llm: Any) -> bool:
+    if llm is None:
+        return False
+    running = getattr(llm, "running", None)
+    return True if running is None else bool(running)

@@ -88,8 +88,9 @@ FIXED_SCRIPT: list[Any] = [
 class ScriptedBackend(EngineBackend):
     """Real worlds and presets; generation replays a fixed event script, then blocks, fails or returns."""
 
-    def __init__(self, script: list[Any], outcome: Any = "block", **kwargs: Any) -> None:
+    def __init__(self, script: list[Any], outcome: Any = "block", block_seconds: float = 30.0, **kwargs: Any) -> None:
         super().__init__(**kwargs)
+        self.block_seconds = block_seconds
         self.script = script
         self.outcome = outcome
         self.blocking = threading.Event()
@@ -108,7 +109,7 @@ class ScriptedBackend(EngineBackend):
             on_event(event)
         if self.outcome == "block":
             self.blocking.set()
-            if cancel.wait(30):
+            if cancel.wait(self.block_seconds):
                 self.cancel_seen.set()
                 raise ScriptedFailure("cancelled by the user")
             raise AssertionError("generation was never cancelled")
@@ -125,3 +126,65 @@ async def wait_until(pilot: Any, condition: Callable[[], bool], timeout: float =
         if loop.time() > deadline:
             raise AssertionError(f"timed out waiting for {what or condition}")
         await pilot.pause(0.05)
+
+
+# --- a fake LLM and a lexical retriever for UI-only tests of the real pipeline ----------------------
+
+QUEUE_DRAFT = (
+    '{"groups": [{"label": "patients", "count": 6, "spawn": "pharmacy", "tree": {"node": "Sequence", '
+    '"children": [{"node": "GoTo", "target": "pharmacy_counter"}, '
+    '{"node": "Queue", "service_point": "pharmacy_counter"}]}}]}'
+)
+
+
+class FakeLLM:
+    """Answers every request with a fixed draft, streamed a few characters at a time."""
+
+    def __init__(self, text: str = QUEUE_DRAFT, path: str = "fake-model.gguf") -> None:
+        self.text = text
+        self.path = Path(path)
+        self.running = True
+        self.requests = 0
+
+    def generate(self, messages: Any, grammar: str | None = None, *, max_tokens: int = 512, seed: int = 0,
+                 on_token: Callable[[str], None] | None = None, cancel: threading.Event | None = None,
+                 **_: Any) -> Any:
+        from grove_tui.models.llm import Generation
+
+        self.requests += 1
+        chunks = [self.text[i:i + 6] for i in range(0, len(self.text), 6)]
+        for chunk in chunks:
+            if cancel is not None and cancel.is_set():
+                from grove_tui.engine.errors import GroveError
+
+                raise GroveError("cancelled")
+            if on_token is not None:
+                on_token(chunk)
+        return Generation(self.text, "stop", 120, len(chunks), 0.01, 0.001)
+
+    def close(self) -> None:
+        self.running = False
+
+
+def lexical_retriever() -> Any:
+    """The real node database, ranked by shared words instead of embeddings (no torch, no index build)."""
+    from grove_tui.engine.retrieval import NodeRetriever, RetrievedNode, content_tokens
+
+    class LexicalRetriever(NodeRetriever):
+        def retrieve(self, prompt: str, preset: Any = None, k: int = 8) -> list[Any]:
+            words = set(content_tokens(prompt))
+            scored = []
+            for name in self.document_names(preset):
+                doc = self._documents[name]
+                overlap = len(words & set(content_tokens(doc.text)))
+                scored.append((-overlap, name))
+            scored.sort()
+            return [RetrievedNode(name=n, kind=self._documents[n].kind, score=float(-s), document=self._documents[n].text,
+                                  nodes=self._documents[n].nodes) for s, n in scored[:k]]
+
+    return LexicalRetriever()
+
+
+def fake_llm_backend(runs_dir: Path, llm: FakeLLM | None = None) -> EngineBackend:
+    model = llm or FakeLLM()
+    return EngineBackend(llm_factory=lambda role, info: model, retriever_factory=lexical_retriever, runs_dir=runs_dir)

@@ -23,7 +23,8 @@ class ExportResultScreen(ModalScreen[None]):
         self.out_dir = out_dir
 
     def compose(self) -> ComposeResult:
-        lines = [f"{f.kind:<13} {f.path}" for f in self.files] or ["nothing was exported"]
+        lines = [f"{f.kind:<13} {f.path}" + (f"  ({f.note})" if f.note else "") for f in self.files]
+        lines = lines or ["nothing was exported"]
         with Vertical(id="export-dialog"):
             yield Static(f"Exported to {self.out_dir}", id="export-title", markup=False)
             yield Static("\n".join(lines), id="export-files", markup=False)

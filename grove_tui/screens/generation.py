@@ -254,6 +254,10 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         self.app.pop_screen()
         self.notify("Generation cancelled.", title="Generation")
 
+    def on_unmount(self) -> None:
+        # Leaving the screen (or quitting) stops the pipeline instead of letting it run unseen.
+        self._cancel.set()
+
     # actions --------------------------------------------------------------------------------------
     def action_cancel(self) -> None:
         if self._generating:

@@ -63,7 +63,8 @@ which GGUF file serves each role and whether it is loaded yet.
 
     def on_mount(self) -> None:
         self.query_one("#prompt", PromptInput).focus()
-        self.load_catalogue()
+        # Paint the screen first; the catalogue worker's imports would otherwise delay the first frame.
+        self.call_after_refresh(self.load_catalogue)
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
         return [

@@ -16,7 +16,7 @@ from textual.worker import get_current_worker
 
 from grove_tui import messages as msg
 from grove_tui.backend import GeneratedScenario
-from grove_tui.screens.inspect import agent_xml, base_overlay
+from grove_tui.screens.inspect import base_overlay
 from grove_tui.screens.sim_controller import MAX_SPEED, SPEEDS, Snapshot, SimulationController
 from grove_tui.screens.widgets.bt_tree import BTNode, BTTree
 from grove_tui.screens.widgets.map_raster import rasterise_agents
@@ -29,9 +29,12 @@ BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threaten
 COUNTER_LABELS = {
     "reached_goals": "reached goals",
     "in_queue": "in queue",
+    "served": "served",
     "evacuated": "evacuated",
     "collisions": "collisions",
-    "closest_approach": "closest to robot",
+    "robot_collisions": "robot contacts",
+    "closest_robot_approach": "closest to robot",
+    "finished": "trees finished",
 }
 
 
@@ -212,8 +215,13 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         world_map.set_agents(rasterise_agents(raster, np.asarray(frame.pos), colours, selected_index, robot))
         self.frames_drawn += 1
         self._show_status(snapshot)
-        if snapshot.selected == self._selected_agent and self._selected_agent >= 0:
-            self.query_one("#sim-tree", BTTree).set_status(self._selected_agent, list(snapshot.tree_status))
+        if snapshot.selected == self._selected_agent and self._selected_agent >= 0 and snapshot.tree_status:
+            tree = self.query_one("#sim-tree", BTTree)
+            if self._tree_agent != self._selected_agent:
+                tree.clear_all()
+                tree.add_runtime_tree(tree.root, self._selected_agent, list(snapshot.tree_status))
+                self._tree_agent = self._selected_agent
+            tree.set_status(self._selected_agent, list(snapshot.tree_status))
 
     def _show_status(self, snapshot: Snapshot) -> None:
         frame = snapshot.frame
@@ -269,8 +277,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         agent = next(a for a in self.generated.scenario.agents if a.id == agent_id)
         tree = self.query_one("#sim-tree", BTTree)
         tree.clear_all()
-        tree.add_agent(tree.root, agent, agent_xml(self.generated, agent), expand=True)
-        tree.root.expand_all()
+        self._tree_agent = -1
         tree.border_title = f"Agent {agent_id} · {agent.label or agent.behavior}"
         self._shown_serial = -1
 

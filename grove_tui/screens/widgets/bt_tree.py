@@ -126,6 +126,20 @@ running, success, failure.
         self.add_agent_tree(node, agent.id, xml_text, expand=expand)
         return node
 
+    def add_runtime_tree(self, parent: TreeNode[BTNode], agent_id: int,
+                         statuses: list[tuple[Any, str, str]]) -> None:
+        """The tree as the simulation runs it (reaction wrappers and SubTrees included), from tree_status."""
+        nodes: dict[str, TreeNode[BTNode]] = {}
+        paths = [path_key(path) for path, _name, _status in statuses]
+        has_children = {p.rsplit("/", 1)[0] for p in paths if "/" in p}
+        for key, (_path, name, _status) in zip(paths, statuses):
+            container = nodes.get(key.rsplit("/", 1)[0], parent) if "/" in key else parent
+            data = BTNode("node", agent_id, name, tuple(int(i) for i in key.split("/") if i.isdigit()))
+            label = Text(name, style="bold")
+            node = container.add(label, data, expand=True) if key in has_children else container.add_leaf(label, data)
+            nodes[key] = node
+            self._nodes_by_path[(agent_id, key)] = node
+
     def clear_all(self) -> None:
         self.clear()
         self._nodes_by_path.clear()
@@ -153,7 +167,7 @@ running, success, failure.
         data = node.data
         if data is None or data.kind != "node" or data.agent_id != self._status_agent:
             return label
-        status = self._status.get(path_key(data.path))
+        status = self._status.get(path_key(data.path)) if data.path else None
         if status is None:
             return label
         status_style = self.get_component_rich_style(STATUS_CLASSES.get(status, "bt--idle"), partial=True)

@@ -14,11 +14,24 @@ from typing import Any
 
 import numpy as np
 
-# Style indexes; the widget maps them to its COMPONENT_CLASSES.
-FLOOR, WALL, ZONE_LABEL, DOOR, ENTITY, SPAWN, GOAL, WAYPOINT, FIELD, HIGHLIGHT, ROBOT, ROBOT_PATH, SELECTED = range(13)
-GROUP_BASE = 13
-GROUP_COLOURS = 8
-STYLE_COUNT = GROUP_BASE + GROUP_COLOURS
+from grove_tui.screens.widgets.map_styles import (  # noqa: F401  (re-exported for callers)
+    DOOR,
+    ENTITY,
+    FIELD,
+    FLOOR,
+    GOAL,
+    GROUP_BASE,
+    GROUP_COLOURS,
+    HIGHLIGHT,
+    ROBOT,
+    ROBOT_PATH,
+    SELECTED,
+    SPAWN,
+    STYLE_COUNT,
+    WALL,
+    WAYPOINT,
+    ZONE_LABEL,
+)
 
 BRAILLE_BASE = 0x2800
 # Braille dot bit for dot column c (0..1) and dot row r (0..3) inside one cell.

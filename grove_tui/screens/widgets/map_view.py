@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 from rich.segment import Segment
 from rich.style import Style
 from textual.binding import Binding
@@ -13,23 +12,28 @@ from textual.geometry import Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
-from grove_tui.screens.widgets import map_raster as mr
+from grove_tui.screens.widgets import map_styles as ms
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from grove_tui.screens.widgets import map_raster as mr
 
 _STYLE_CLASSES = {
-    mr.FLOOR: "map--floor",
-    mr.WALL: "map--wall",
-    mr.ZONE_LABEL: "map--zone-label",
-    mr.DOOR: "map--door",
-    mr.ENTITY: "map--entity",
-    mr.SPAWN: "map--spawn",
-    mr.GOAL: "map--goal",
-    mr.WAYPOINT: "map--waypoint",
-    mr.FIELD: "map--field",
-    mr.HIGHLIGHT: "map--highlight",
-    mr.ROBOT: "map--robot",
-    mr.ROBOT_PATH: "map--robot-path",
-    mr.SELECTED: "map--selected",
-    **{mr.GROUP_BASE + i: f"map--group-{i}" for i in range(mr.GROUP_COLOURS)},
+    ms.FLOOR: "map--floor",
+    ms.WALL: "map--wall",
+    ms.ZONE_LABEL: "map--zone-label",
+    ms.DOOR: "map--door",
+    ms.ENTITY: "map--entity",
+    ms.SPAWN: "map--spawn",
+    ms.GOAL: "map--goal",
+    ms.WAYPOINT: "map--waypoint",
+    ms.FIELD: "map--field",
+    ms.HIGHLIGHT: "map--highlight",
+    ms.ROBOT: "map--robot",
+    ms.ROBOT_PATH: "map--robot-path",
+    ms.SELECTED: "map--selected",
+    **{ms.GROUP_BASE + i: f"map--group-{i}" for i in range(ms.GROUP_COLOURS)},
 }
 
 ZOOM_STEP = 1.5
@@ -132,6 +136,8 @@ path, and the selection highlighted with `◆`.
                 self.refresh_line(row - top)
 
     def centre_on(self, x: float, y: float) -> None:
+        import numpy as np
+
         if self._raster is None:
             return
         rows, cols = self._raster.to_cells(np.array([[x, y]]))
@@ -167,6 +173,8 @@ path, and the selection highlighted with `◆`.
             self._strip_cache.clear()
             self.refresh()
             return
+        from grove_tui.screens.widgets import map_raster as mr
+
         cols = max(10, self.size.width or 40)
         rows = max(5, self.size.height or 20)
         self._fit_for = (self.size.width, self.size.height)
@@ -185,10 +193,12 @@ path, and the selection highlighted with `◆`.
     def _styles_palette(self) -> list[Style]:
         if self._palette is None:
             base = self.rich_style
-            self._palette = [base + self.get_component_rich_style(_STYLE_CLASSES[i]) for i in range(mr.STYLE_COUNT)]
+            self._palette = [base + self.get_component_rich_style(_STYLE_CLASSES[i]) for i in range(ms.STYLE_COUNT)]
         return self._palette
 
     def _strip_for(self, chars_row: np.ndarray, styles_row: np.ndarray) -> Strip:
+        from grove_tui.screens.widgets import map_raster as mr
+
         palette = self._styles_palette()
         text = mr.row_text(chars_row)
         return Strip([Segment(text[s:e], palette[style]) for s, e, style in mr.row_runs(styles_row)], len(text))

@@ -1,0 +1,205 @@
+"""Pilot tests of the whole flow: setup -> generate (real pipeline) -> inspect -> play -> export."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+from test_app_support import (  # noqa: F401  (fixtures)
+    FakeLLM,
+    anyio_backend,
+    fake_llm_backend,
+    isolated_user_dirs,
+    test_settings,
+    wait_until,
+)
+from textual.widgets import Static, TextArea
+
+from grove_tui.app import GroveApp
+from grove_tui.backend import EngineBackend
+from grove_tui.screens.export import ExportResultScreen
+from grove_tui.screens.generation import GenerationScreen
+from grove_tui.screens.inspect import InspectScreen
+from grove_tui.screens.setup import SetupScreen
+from grove_tui.screens.simulation import SimulationScreen
+from grove_tui.screens.widgets.bt_tree import BTTree
+from grove_tui.screens.widgets.map_view import MapView
+
+pytestmark = pytest.mark.anyio
+
+PROMPT = "six patients queue at the pharmacy counter"
+
+
+async def generate_to_inspect(pilot, app: GroveApp, prompt: str = PROMPT, timeout: float = 60) -> InspectScreen:
+    await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
+    setup = app.screen
+    await wait_until(pilot, lambda: setup.query_one("#preview", MapView).raster is not None, what="preview")
+    await pilot.press(*prompt, "enter")
+    await wait_until(pilot, lambda: isinstance(app.screen, (GenerationScreen, InspectScreen)), what="generation")
+    await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen)
+                     or (isinstance(app.screen, GenerationScreen) and app.screen.query_one("#gen-error").display),
+                     timeout=timeout, what="inspect screen")
+    if isinstance(app.screen, GenerationScreen):
+        pytest.fail("generation failed: " + str(app.screen.query_one("#gen-error", Static).render()))
+    inspect = app.screen
+    await wait_until(pilot, lambda: bool(inspect.query_one("#bt-tree", BTTree).root.children), what="trees shown")
+    return inspect
+
+
+async def test_generate_inspect_play_and_export(tmp_path):
+    llm = FakeLLM()
+    app = GroveApp(fake_llm_backend(tmp_path / "runs", llm), test_settings(tmp_path))
+    async with app.run_test(size=(100, 30)) as pilot:
+        inspect = await generate_to_inspect(pilot, app)
+        assert llm.requests >= 1
+        scenario = inspect.generated.scenario
+        assert len(scenario.agents) == 6
+        assert inspect.generated.bundle_dir.joinpath("scenario.yaml").is_file()
+
+        # the tree: group -> agents -> nodes with ports
+        tree = inspect.query_one("#bt-tree", BTTree)
+        group = tree.root.children[0]
+        assert "patients" in str(group.label) and "×6" in str(group.label)
+        agent_node = group.children[0]
+        assert agent_node.data.kind == "agent"
+        labels = [str(n.label) for n in agent_node.children[0].children]
+        assert any(label.startswith("GoTo") and "target=pharmacy_counter" in label for label in labels)
+
+        # moving through the tree highlights the agent's route on the map
+        world_map = inspect.query_one("#inspect-map", MapView)
+        plain = world_map._styles.copy()
+        tree.focus()
+        await pilot.press("down")
+        await wait_until(pilot, lambda: inspect._selected_node is not None and inspect._selected_node.kind == "agent",
+                         what="agent highlighted")
+        assert (world_map._styles != plain).any()
+        assert "agent" in str(inspect.query_one("#node-detail", Static).render())
+
+        # XML toggle
+        await pilot.press("x")
+        xml = inspect.query_one("#xml", TextArea)
+        assert xml.display and "<BehaviorTree" in xml.text
+        await pilot.press("x")
+        assert not xml.display and tree.display
+
+        # play
+        await pilot.press("p")
+        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
+        sim = app.screen
+        await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None,
+                         what="first frame")
+        first = sim.controller.latest.frame
+        await pilot.press("f")  # as fast as possible
+        await pilot.press("space")
+        await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 5.0, timeout=60, what="5 simulated seconds")
+        await pilot.press("space")
+        await wait_until(pilot, lambda: not sim.controller.latest.playing, what="paused")
+        frame = sim.controller.latest.frame
+        assert not np.allclose(np.asarray(frame.pos), np.asarray(first.pos)), "agents did not move"
+        assert sim.frames_drawn > 0
+        status = str(sim.query_one("#sim-status", Static).render())
+        assert "paused" in status and "t =" in status
+        assert "reached goals" in str(sim.query_one("#counters", Static).render())
+        # the selected agent's runtime tree shows live statuses
+        sim_tree = sim.query_one("#sim-tree", BTTree)
+        await wait_until(pilot, lambda: bool(sim_tree._status), what="live tree status")
+        assert set(sim_tree._status.values()) <= {"IDLE", "RUNNING", "SUCCESS", "FAILURE", "SKIPPED"}
+
+        # export
+        await pilot.press("e")
+        await wait_until(pilot, lambda: isinstance(app.screen, ExportResultScreen), timeout=60, what="export dialog")
+        files = {f.kind: f for f in app.screen.files}
+        assert (files["bundle"].path / "scenario.yaml").is_file()
+        assert files["trajectories"].path.is_file(), files["trajectories"].note
+        assert files["metrics"].path.is_file(), files["metrics"].note
+        assert files["hunav"].path.is_file(), files["hunav"].note
+        assert str(app.screen.out_dir).startswith(str(tmp_path / "exports"))
+        shown = str(app.screen.query_one("#export-files", Static).render())
+        assert str(files["bundle"].path) in shown
+        await pilot.press("escape")
+        assert isinstance(app.screen, SimulationScreen)
+        await pilot.press("escape")
+        assert isinstance(app.screen, InspectScreen)
+
+
+async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_path):
+    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    async with app.run_test(size=(80, 24)) as pilot:
+        await generate_to_inspect(pilot, app)
+        await pilot.press("p")
+        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
+        sim = app.screen
+        await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None, what="frame")
+        step0 = sim.controller.latest.frame.step
+        await pilot.press("n", "n", "n")
+        await wait_until(pilot, lambda: sim.controller.latest.frame.step == step0 + 3, what="three steps")
+        await pilot.press("right_square_bracket")
+        await wait_until(pilot, lambda: sim.controller.speed == 2.0, what="2x")
+        await pilot.press("left_square_bracket", "left_square_bracket", "left_square_bracket")
+        await wait_until(pilot, lambda: sim.controller.speed == 0.25, what="0.25x")
+        first = sim._selected_agent
+        await pilot.press("a")
+        assert sim._selected_agent != first
+        await pilot.press("A")
+        assert sim._selected_agent == first
+        if sim.generated.scenario.robot is not None:
+            start = sim.controller.latest.frame.robot
+            for _ in range(4):
+                await pilot.press("up")
+                await pilot.press("n")
+            await wait_until(pilot, lambda: sim.controller.latest.manual_robot, what="manual robot")
+            await pilot.press("space")
+            await wait_until(pilot, lambda: sim.controller.latest.frame.robot[1] > start[1] + 0.05, what="robot moves up")
+            await pilot.press("r")
+            await wait_until(pilot, lambda: not sim.controller.latest.manual_robot, what="robot back on its path")
+
+
+async def test_a_planning_error_from_the_model_answer_is_shown_with_a_hint(tmp_path):
+    # The draft names a spawn that does not exist in this world: the pipeline must refuse it.
+    bad = FakeLLM('{"groups": [{"label": "ghosts", "count": 2, "spawn": "nowhere", '
+                  '"tree": {"node": "GoTo", "target": "nowhere"}}]}')
+    app = GroveApp(fake_llm_backend(tmp_path / "runs", bad), test_settings(tmp_path))
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
+        await pilot.press(*PROMPT, "enter")
+        await wait_until(pilot, lambda: isinstance(app.screen, GenerationScreen), what="generation")
+        error = app.screen.query_one("#gen-error", Static)
+        await wait_until(pilot, lambda: bool(error.display), timeout=60, what="error shown")
+        text = str(error.render())
+        assert "failed" in text and "→" in text
+        assert not isinstance(app.screen, InspectScreen)
+
+
+def _embedded_model_available() -> bool:
+    try:
+        from grove_tui.models.registry import embedded_model_path
+
+        return Path(embedded_model_path()).is_file()
+    except Exception:
+        return False
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not _embedded_model_available(), reason="the embedded GGUF is not installed")
+async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_path, monkeypatch):
+    # The retrieval index is built once per machine in the user's cache, as `grove` does.
+    if os.environ.get("GROVE_TEST_CACHE_DIR"):
+        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+    else:
+        monkeypatch.delenv("GROVE_CACHE_DIR", raising=False)
+    backend = EngineBackend(runs_dir=tmp_path / "runs")
+    app = GroveApp(backend, test_settings(tmp_path))
+    async with app.run_test(size=(80, 24)) as pilot:
+        inspect = await generate_to_inspect(pilot, app, "ten patients queue at the pharmacy counter", timeout=400)
+        scenario = inspect.generated.scenario
+        assert scenario.agents, "the embedded model's scenario has no agents"
+        assert scenario.models["bt"].endswith(".gguf")
+        assert inspect.generated.bundle_dir.joinpath("generation.json").is_file()
+        await pilot.press("p")
+        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
+        sim = app.screen
+        await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None, what="frame")
+        await pilot.press("f", "space")
+        await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 2.0, timeout=60, what="2 simulated seconds")
