@@ -10,8 +10,10 @@ completes every tick by design) are ticked for the whole run, as HuNavSim does.
 
 Robot reactions: an agent whose scenario `behavior` is Surprised, Scared, Curious or Threatening and
 whose tree has no reaction node gets HuNavSim's reaction pattern around its tree:
-    ReactiveFallback[ Sequence[IsRobotVisible(distance), <Reaction>Nav(beh_duration, only_once)],
+    ReactiveFallback[ Sequence[IsRobotVisible(distance), ForceFailure(<Reaction>Nav(beh_duration, only_once))],
                       SubTree(original tree, _autoremap) ]
+(the reaction halts the routine while it runs; the routine then resumes: GoTo replans from where the
+agent stands, a queued agent gets its place back)
 with HuNavSim 1.0's values (Surprised 4 m/30 s/once, Scared 3 m/40 s/repeat, Curious 10 m/30 s/once,
 Threatening 4 m/40 s/once). Impassive agents treat the robot as an obstacle.
 """
@@ -34,6 +36,7 @@ from grove_tui.engine.bt.nodes_hunav import ROBOT_REACTIONS
 from grove_tui.engine.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
 from grove_tui.engine.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
 from grove_tui.engine.crowd import ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.engine.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
 REACTION_DEFAULTS = {
@@ -83,7 +86,7 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 class Simulation:
     def __init__(self, crowd: Crowd, context: SimContext, trees: list[BehaviorTree | None], *, dt: float,
                  bt_rate: float, loops: list[bool] | None = None, scenario: Any = None, world: Any = None,
-                 recorder: Any = None):
+                 recorder: TrajectoryRecorder | None = None):
         self.crowd = crowd
         self.context = context
         self.clock = context.clock
@@ -97,7 +100,7 @@ class Simulation:
         self.tree_result = ["" for _ in trees]
         self.scenario = scenario
         self.world = world
-        self.recorder = recorder
+        self.recorder = recorder if recorder is not None else _make_recorder(dt, context.ids)
         self.step_count = 0
         self._robot_contacts: set[int] = set()
         self._agent_contacts: set[tuple[int, int]] = set()
@@ -174,7 +177,7 @@ class Simulation:
             blackboard = Blackboard(values={"id": agent.id, "dt": bt_dt})
             trees.append(factory.create(document, blackboard, AgentContext(context, row), clock))
             loops.append(any(e.id in HUNAV_LOOPING_NODES for t in document.trees.values() for e in t.walk()))
-        recorder = _make_recorder()
+        recorder = _make_recorder(dt, ids)
         return cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
                    recorder=recorder)
 
@@ -302,16 +305,11 @@ class Simulation:
             self._agent_contacts = now
 
     def _record(self) -> None:
-        if self.recorder is not None:
-            self.recorder.record(self)
+        self.recorder.record(self.crowd)
 
 
-def _make_recorder() -> Any:
-    try:
-        from grove_tui.engine.recording import TrajectoryRecorder
-    except ImportError:
-        return None
-    return TrajectoryRecorder()
+def _make_recorder(dt: float, ids: list[int]) -> TrajectoryRecorder:
+    return TrajectoryRecorder(fps=1.0 / dt, id_map=ids)
 
 
 def _draft_groups(agents) -> dict[int, tuple[int, ...]]:
@@ -351,9 +349,12 @@ def with_robot_reaction(document: TreeDocument, behavior: str) -> TreeDocument:
         wrapper_id += "_"
     routine = TreeElement(SUBTREE, document.main_tree_id, {}, (), None, subtree_id=document.main_tree_id,
                           autoremap=True)
+    # ForceFailure: a finished reaction falls through to the routine instead of ending the tree
     reaction = TreeElement("Sequence", "Sequence", {}, (
         TreeElement("IsRobotVisible", "IsRobotVisible", {"distance": f"{distance:g}"}, (), None),
-        TreeElement(node, node, {"beh_duration": f"{duration:g}", "only_once": "true" if once else "false"}, (), None),
+        TreeElement("ForceFailure", "ForceFailure", {}, (
+            TreeElement(node, node, {"beh_duration": f"{duration:g}", "only_once": "true" if once else "false"}, (),
+                        None),), None),
     ), None)
     root = TreeElement("ReactiveFallback", f"{behavior} reaction", {}, (reaction, routine), None)
     trees = dict(document.trees)

@@ -17,6 +17,7 @@ Point = tuple[float, float]
 
 _DIRECTIONS = 48  # candidate headings for a queue line
 ARRIVAL_TOLERANCE = 0.3  # metres: an agent within this of its slot/spot has arrived
+QUEUE_GRACE = 60.0  # seconds an interrupted member (reacting to the robot) keeps its place in a queue
 
 
 class ServiceQueue:
@@ -32,6 +33,7 @@ class ServiceQueue:
         self.free_length = free_length
         self.members: list[int] = []  # crowd rows in queue order
         self.pending: list[int] = []  # joined during the current BT tick, ordered at commit()
+        self.away: dict[int, float] = {}  # interrupted members -> when they stepped out
         self.head_since: float | None = None  # when the current head started being served
         self.served = 0
         self._sim = sim
@@ -58,7 +60,15 @@ class ServiceQueue:
     def tail_point(self) -> Point:
         return self.slot_point(len(self.members))
 
+    def step_out(self, row: int, now: float) -> None:
+        """An interrupted member keeps its place for QUEUE_GRACE seconds (see QueueRegistry.commit)."""
+        if row in self.members:
+            self.away[row] = now
+        elif row in self.pending:
+            self.pending.remove(row)
+
     def leave(self, row: int) -> None:
+        self.away.pop(row, None)
         if row in self.pending:
             self.pending.remove(row)
         if row in self.members:
@@ -85,6 +95,7 @@ class QueueRegistry:
             direction, free_length = self._line_direction(name, service_point, spacing)
             queue = ServiceQueue(name, service_point, direction, spacing, service_time, free_length, self._sim)
             self.queues[name] = queue
+        queue.away.pop(row, None)  # back from an interruption: same place
         if row not in queue.members and row not in queue.pending:
             queue.pending.append(row)
         return queue
@@ -92,7 +103,11 @@ class QueueRegistry:
     def commit(self) -> None:
         """Agents that joined during the same tick line up nearest-first, so nobody cuts across the line."""
         pos = self._sim.crowd.pos
+        now = self._sim.clock.now
         for queue in self.queues.values():
+            for row, since in list(queue.away.items()):
+                if now - since > QUEUE_GRACE:
+                    queue.leave(row)
             if queue.pending:
                 tail = queue.tail_point()
                 queue.pending.sort(key=lambda r: (pos[r, 0] - tail[0]) ** 2 + (pos[r, 1] - tail[1]) ** 2)

@@ -163,7 +163,7 @@ class Queue(AgentStatefulAction):
 
     def on_halted(self) -> None:
         if self.queue is not None:
-            self.queue.leave(self.row)
+            self.queue.step_out(self.row, self.sim.clock.now)
         _stand(self.sim, self.row)
 
 
@@ -315,7 +315,7 @@ class JoinGroup(AgentSyncAction):
 class Converse(AgentStatefulAction):
     """Conversation circle at the target: walk to the assigned spot, face the centre, talk once all arrived."""
 
-    __slots__ = ("conv", "spot", "ready", "interrupted")
+    __slots__ = ("conv", "spot", "ready", "interrupted", "group")
 
     def setup(self) -> None:
         super().setup()
@@ -323,6 +323,7 @@ class Converse(AgentStatefulAction):
         self.spot = (0.0, 0.0)
         self.ready = False
         self.interrupted = False
+        self.group = -1
 
     def on_start(self) -> int:
         sim, row = self.sim, self.row
@@ -334,6 +335,7 @@ class Converse(AgentStatefulAction):
         self.conv = sim.conversations.join(centre, tuple(sorted(rows)), row)
         self.spot = self.conv.spots[row]
         self.ready = False
+        self.group = int(sim.crowd.group[row])
         waypoints = self.get_input("waypoints") or ()
         p = sim.pos[row]
         route = [*waypoints, self.spot] if waypoints and not self.interrupted else sim.plan(p, self.spot)
@@ -345,10 +347,21 @@ class Converse(AgentStatefulAction):
         sim, row, conv = self.sim, self.row, self.conv
         if not self.ready and math.dist(sim.pos[row], self.spot) <= ARRIVAL_TOLERANCE:
             self.ready = True
+            # group coherence would pull a standing circle into its centre; the circle is the formation
+            sim.crowd.set_group(row, -1)
             _face(sim, row, conv.centre)
             sim.conversations.mark_ready(conv, row)
-        elif self.ready and conv.started_at is None:
-            sim.conversations.mark_ready(conv, row)  # re-check: someone may have left meanwhile
+        elif self.ready:
+            # standing agents are nudged by their neighbours' social forces and facing has no goal
+            # force: step back onto the spot when pushed off, then face the centre again
+            off = math.dist(sim.pos[row], self.spot)
+            mode = sim.crowd.mode[row]
+            if off > 0.2 and mode == MODE_FACE:
+                _go(sim, row, [self.spot], 0.05)
+            elif off <= 0.1 and mode == MODE_GOALS:
+                _face(sim, row, conv.centre)
+            if conv.started_at is None:
+                sim.conversations.mark_ready(conv, row)  # re-check: someone may have left meanwhile
         if conv.started_at is None:
             if self.ready:
                 sim.status[row] = f"waiting for the others ({len(conv.ready)}/{len(conv.members)})"
@@ -357,6 +370,7 @@ class Converse(AgentStatefulAction):
         duration = self.get_input("duration")
         if duration > 0 and sim.clock.now - conv.started_at + 1e-9 >= duration:
             sim.conversations.leave(conv, row)
+            sim.crowd.set_group(row, self.group)
             self.interrupted = False
             return SUCCESS
         return RUNNING
@@ -365,6 +379,7 @@ class Converse(AgentStatefulAction):
         self.interrupted = True
         if self.conv is not None:
             self.sim.conversations.leave(self.conv, self.row)
+        self.sim.crowd.set_group(self.row, self.group)
         _stand(self.sim, self.row)
 
 

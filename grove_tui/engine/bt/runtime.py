@@ -930,10 +930,14 @@ class BehaviorTree:
         self.root.halt_node()
 
     def status_list(self) -> list[tuple[str, str, str]]:
-        """(path, name, status) of every node in depth-first order; SKIPPED shows the last report."""
+        """(path, name, status) of every node in depth-first order.
+
+        A node reset to IDLE after it completed shows its last result (SUCCESS/FAILURE/SKIPPED), as
+        Groot2 does, so a finished tree still tells how it ended; a halted node shows IDLE.
+        """
         out = []
         for node in self.nodes:
-            shown = node.status if node.status != IDLE or node.last != SKIPPED else SKIPPED
+            shown = node.status if node.status != IDLE or node.last == RUNNING else node.last
             label = node.node_id if node.name == node.node_id else f"{node.node_id} {node.name!r}"
             out.append((node.path, label, STATUS_NAMES[shown]))
         return out
