@@ -23,8 +23,8 @@ from grove_tui.engine.grid import OccupancyGrid, build_grid
 from grove_tui.engine.paths import worlds_dir
 from grove_tui.engine.planner import PlanCache, ThetaStarPlanner
 from grove_tui.engine.planning import PlanningCancelled, RobotRequest, plan_operational
-from grove_tui.engine.postprocess import postprocess
-from grove_tui.engine.presets import GenerationError, Preset
+from grove_tui.engine.postprocess import check_population, postprocess
+from grove_tui.engine.presets import GenerationError, Preset, PromptError
 from grove_tui.engine.quantities import extract_quantities
 from grove_tui.engine.rois import RoIMatcher, describe_selection, select_rois
 from grove_tui.engine.scenario import Scenario
@@ -127,9 +127,9 @@ class GenerationPipeline:
         emit = on_event or (lambda event: None)
         prompt = " ".join((prompt or "").split())
         if not prompt:
-            raise GenerationError("the prompt is empty: describe the people and what they do")
+            raise PromptError("the prompt is empty: describe the people and what they do")
         if len(prompt) > MAX_PROMPT_CHARS:
-            raise GenerationError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
+            raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
         preset, world = self.preset, self.world
         stages: dict[str, dict[str, Any]] = {}
         started = time.perf_counter()
@@ -149,6 +149,7 @@ class GenerationPipeline:
         t0 = begin("rois")
         quantities = extract_quantities(prompt)
         selection = select_rois(world, preset, prompt, self.matcher)
+        check_population(world, self.grid, preset, selection, quantities)
         end("rois", t0, ", ".join(selection.zones))
 
         t0 = begin("retrieval")

@@ -21,7 +21,7 @@ import shapely
 
 from grove_tui.engine.bt.manifest import NODES, NodeSpec
 from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
-from grove_tui.engine.presets import GenerationError, Preset
+from grove_tui.engine.presets import GenerationError, Preset, PromptError
 from grove_tui.engine.quantities import Quantity, lemma, semantic_tokens
 
 Point = tuple[float, float]
@@ -227,10 +227,28 @@ def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
     return None
 
 
+def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
+    """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
+    for q in quantities:
+        if q.count > preset.limits.max_count:
+            raise PromptError(f"'{q.phrase}' asks for {q.count} people in one group; preset '{preset.name}' "
+                              f"allows at most {preset.limits.max_count} per group")
+    total = sum(q.count for q in quantities)
+    zones = list(getattr(selection, "named_zones", ()) or getattr(selection, "zones", ()))
+    if not total or not zones:
+        return
+    space = FreeSpace(world, grid)
+    capacity = sum(space.capacity(z) for z in zones)
+    if total > capacity:
+        area = sum(space.free_area(z) for z in zones)
+        raise PromptError(f"{total} people do not fit in {', '.join(zones)}: about {area:.0f} m^2 of free floor "
+                          f"holds at most {capacity} at a plausible density ({MAX_DENSITY:g}/m^2)")
+
+
 def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
     for g in groups:
         if g.count > preset.limits.max_count:
-            raise GenerationError(f"'{g.quantity.phrase if g.quantity else g.label}' asks for {g.count} people in one "
+            raise PromptError(f"'{g.quantity.phrase if g.quantity else g.label}' asks for {g.count} people in one "
                                   f"group; preset '{preset.name}' allows at most {preset.limits.max_count} per group")
 
 
@@ -672,7 +690,7 @@ def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -
         for zone, n in counts.items():
             cap = space.capacity(zone)
             if n > cap:
-                raise GenerationError(
+                raise PromptError(
                     f"{n} people do not fit in zone '{zone}': its free floor of about "
                     f"{space.free_area(zone):.0f} m^2 holds at most {cap} at a plausible density ({MAX_DENSITY:g}/m^2)")
 

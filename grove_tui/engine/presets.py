@@ -22,6 +22,10 @@ class GenerationError(GroveError):
     """Generation cannot produce a valid scenario from this input; the message says why."""
 
 
+class PromptError(GenerationError):
+    """The prompt itself asks for something impossible: empty, a place the world lacks, too many people."""
+
+
 class PresetError(GroveError):
     """A preset file is missing or malformed; the message names the file and the key."""
 

@@ -80,7 +80,10 @@ PERSON_NOUNS = frozenset(
     grandmother grandfather family friend couple guest resident neighbour neighbor roommate tenant customer
     client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
     volunteer caregiver paramedic intern developer engineer member attendee participant crowd group team
-    queue line occupant user walker runner""".split()
+    queue line occupant user walker runner diner eater commuter spectator fan player athlete pilgrim
+    inpatient outpatient surgeon therapist technician radiologist dentist chef cook waiter waitress barista
+    employee boss intern professor pupil toddler infant housemate sibling brother sister son daughter husband
+    wife partner relative cousin uncle aunt delivery courier visitor smoker jogger""".split()
 )
 # Collectives whose size follows an "of N" ("a family of four", "a group of 5 friends").
 COLLECTIVES = frozenset({"family", "group", "team", "party", "crowd", "couple", "queue", "line", "bunch", "circle"})

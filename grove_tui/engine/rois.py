@@ -17,7 +17,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from grove_tui.engine.presets import GenerationError, Preset
+from grove_tui.engine.presets import Preset, PromptError
 from grove_tui.engine.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, words
 
 # Groups of words people use for the same kind of place; matching any word of a group counts as
@@ -297,7 +297,7 @@ def select_rois(world: Any, preset: Preset, prompt: str, matcher: RoIMatcher | N
     unknown = matcher.unknown_places(prompt)
     if unknown:
         parts = [f"'{p}' (closest: {', '.join(matcher.close_matches(p))})" for p in unknown]
-        raise GenerationError(f"the prompt names a place world '{world.name}' does not have: " + "; ".join(parts))
+        raise PromptError(f"the prompt names a place world '{world.name}' does not have: " + "; ".join(parts))
     if preset.context == "world":
         return _whole_world(world, matcher.match(prompt))
     matches = matcher.match(prompt)

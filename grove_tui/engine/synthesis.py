@@ -129,7 +129,8 @@ def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], pr
     retrieved_nodes = [n for r in retrieved for n in r.nodes]
     offered = offered_nodes(preset, retrieved_nodes)
     documents = choose_documents(preset, retrieved, offered, documents_for)
-    max_groups = min(preset.limits.max_groups, max(len(quantities), 1) + 1) if preset.guided else preset.limits.max_groups
+    # Post-processing keeps one group per stated quantity, so asking for more only costs tokens.
+    max_groups = min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities else preset.limits.max_groups
     schema = build_draft_schema(offered, selection.roi_names, max_groups=max_groups,
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
     messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names)

@@ -1,0 +1,346 @@
+"""`grove generate`, `grove batch`, `grove simulate`: the generation pipeline without the TUI.
+
+Progress goes to stderr (rich), results to stdout, so `grove generate ... > result.txt` keeps only
+what a script needs. Exit codes: 0 ok, 2 bad input, 3 generation failed, 4 model error, 130 cancelled.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import sys
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import click
+from rich.console import Console
+
+EXIT_OK = 0
+EXIT_BAD_INPUT = 2
+EXIT_GENERATION_FAILED = 3
+EXIT_MODEL_ERROR = 4
+EXIT_CANCELLED = 130
+
+
+def _err() -> Console:
+    return Console(file=sys.stderr, highlight=False, soft_wrap=True)
+
+
+def _out() -> Console:
+    return Console(file=sys.stdout, highlight=False, soft_wrap=True)
+
+
+def _root_options(ctx: click.Context) -> dict[str, Any]:
+    root = ctx.find_root()
+    return dict(root.obj or {}) if root.obj is not None else {}
+
+
+def exit_code_for(error: BaseException) -> int:
+    """The documented exit code for an exception raised while generating."""
+    from grove_tui.engine.bundle import BundleError
+    from grove_tui.engine.presets import PresetError, PromptError
+    from grove_tui.engine.world import WorldError
+    from grove_tui.models.errors import GenerationCancelled, ModelError
+
+    if isinstance(error, (GenerationCancelled, KeyboardInterrupt)):
+        return EXIT_CANCELLED
+    if isinstance(error, ModelError):
+        return EXIT_MODEL_ERROR
+    if isinstance(error, (PresetError, WorldError, PromptError, BundleError)):
+        return EXIT_BAD_INPUT
+    return EXIT_GENERATION_FAILED
+
+
+def parse_robot_point(text: str | None) -> tuple[float, float] | str | None:
+    """"x,y" -> point; anything else is an RoI name resolved by the pipeline."""
+    if text is None or not text.strip():
+        return None
+    match = re.fullmatch(r"\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*", text)
+    if match:
+        return (float(match.group(1)), float(match.group(2)))
+    return text.strip()
+
+
+@dataclass
+class Models:
+    """The loaded models, shared by every generation of a run."""
+
+    roi: Any
+    bt: Any
+
+    def close(self) -> None:
+        for llm in {id(m): m for m in (self.roi, self.bt) if m is not None}.values():
+            llm.close()
+
+
+def load_models(roi_model: str | None, bt_model: str | None, model: str | None) -> Models:
+    from grove_tui.models.llm import LocalLLM
+    from grove_tui.models.registry import resolve_models
+
+    choices = resolve_models(roi_model, bt_model, model)
+    bt = LocalLLM(choices["bt"].path, role="bt", n_ctx=choices["bt"].n_ctx)
+    # The strategic layer matches RoIs without a model; a separate roi model is loaded only when the
+    # user names one explicitly, and then it is recorded in the scenario.
+    roi = None
+    if roi_model:
+        roi = LocalLLM(choices["roi"].path, role="roi", n_ctx=choices["roi"].n_ctx)
+    return Models(roi, bt)
+
+
+class Progress:
+    """Stage lines on stderr; token count while the model writes."""
+
+    def __init__(self, console: Console, prefix: str = "") -> None:
+        self.console = console
+        self.prefix = prefix
+        self.tokens = 0
+        self._status: Any = None
+
+    def __call__(self, event: Any) -> None:
+        from grove_tui.engine.pipeline import StageFinished, StageStarted, TokenStreamed
+
+        if isinstance(event, StageStarted):
+            self.tokens = 0
+            if self.console.is_terminal:
+                self._status = self.console.status(f"{self.prefix}{event.stage}...")
+                self._status.start()
+        elif isinstance(event, TokenStreamed):
+            self.tokens += 1
+            if self._status is not None:
+                self._status.update(f"{self.prefix}{event.stage}: {self.tokens} tokens")
+        elif isinstance(event, StageFinished):
+            if self._status is not None:
+                self._status.stop()
+                self._status = None
+            tokens = f" ({event.prompt_tokens} prompt + {event.completion_tokens} completion tokens)" \
+                if event.prompt_tokens or event.completion_tokens else ""
+            self.console.print(f"{self.prefix}[green]{event.stage}[/] {event.seconds:.2f} s{tokens} {event.detail}")
+
+    def stop(self) -> None:
+        if self._status is not None:
+            self._status.stop()
+            self._status = None
+
+
+def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None = None) -> dict[str, Any]:
+    """Run a bundle's scenario for `seconds`, write trajectories.csv into it; return the counters."""
+    from grove_tui.engine.bundle import load_bundle
+    from grove_tui.engine.simulation import Simulation
+
+    scenario, _, _, _ = load_bundle(bundle)
+    sim = Simulation.from_scenario(scenario, bundle)
+    started = time.perf_counter()
+    frame = sim.run(seconds, cancel=cancel)
+    wall = time.perf_counter() - started
+    recorder = sim.recorder
+    if recorder is None:
+        raise click.ClickException("the simulation has no trajectory recorder")
+    recorder.write_csv(bundle / "trajectories.csv")
+    return {"sim_seconds": round(float(frame.t), 3), "wall_seconds": round(wall, 3),
+            "counters": _as_dict(frame.counters)}
+
+
+def _as_dict(obj: Any) -> dict[str, Any]:
+    from dataclasses import asdict, is_dataclass
+
+    return asdict(obj) if is_dataclass(obj) else {"value": str(obj)}
+
+
+def summary_lines(result: Any, bundle: Path) -> list[str]:
+    scenario, report = result.scenario, result.report
+    stages = " ".join(f"{k}={v['seconds']:.2f}s" for k, v in report["stages"].items())
+    groups = ", ".join(f"{g['count']} {g['label']} from {g['spawn']}" for g in report["groups"])
+    lines = [
+        f"bundle: {bundle}",
+        f"agents: {len(scenario.agents)} ({groups})",
+        f"zones: {', '.join(report['zones'])}",
+        f"tokens: prompt={report['prompt_tokens']} completion={report['completion_tokens']}",
+        f"time: total={report['total_seconds']:.2f}s {stages}",
+    ]
+    if scenario.robot is not None:
+        r = scenario.robot
+        lines.append(f"robot: ({r.start[0]:.2f}, {r.start[1]:.2f}) -> ({r.goal[0]:.2f}, {r.goal[1]:.2f})")
+    return lines
+
+
+def _validate_inputs(world: str, preset: str, prompt: str) -> tuple[Any, Any]:
+    from grove_tui.engine.presets import PromptError, load_preset
+    from grove_tui.engine.world import load_world
+
+    if not prompt or not prompt.strip():
+        raise PromptError("the prompt is empty: describe the people and what they do")
+    return load_world(world), load_preset(preset)
+
+
+@click.command("generate")
+@click.option("--no-ui", is_flag=True, help="Generate headless (the only mode of this command; the TUI is `grove`).")
+@click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential) or a path.")
+@click.option("--preset", "preset_name", required=True, help="emergency, queuing, normal, vanilla or a user preset.")
+@click.option("--prompt", required=True, help="The scenario in one sentence.")
+@click.option("--seed", type=int, default=0, show_default=True, help="Seeds the model and every sampler.")
+@click.option("--simulate", "simulate_seconds", type=click.FloatRange(min=0.0), default=None,
+              help="Also simulate this many seconds and write trajectories.csv into the bundle.")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Bundle directory to write.")
+@click.option("--roi-model", type=click.Path(dir_okay=False), default=None, help="GGUF for RoI selection.")
+@click.option("--bt-model", type=click.Path(dir_okay=False), default=None, help="GGUF for behavior-tree synthesis.")
+@click.option("--robot-start", default=None, help="Robot start: 'x,y' or an RoI name (default: chosen across the scene).")
+@click.option("--robot-goal", default=None, help="Robot goal: 'x,y' or an RoI name.")
+@click.option("--no-robot", is_flag=True, help="Generate without a robot.")
+@click.option("--json", "as_json", is_flag=True, help="Print the result as one JSON object on stdout.")
+@click.pass_context
+def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str, prompt: str, seed: int,
+             simulate_seconds: float | None, out_dir: str, roi_model: str | None, bt_model: str | None,
+             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool) -> None:
+    """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
+    from grove_tui.engine.bundle import write_bundle
+    from grove_tui.engine.errors import GroveError
+    from grove_tui.engine.pipeline import GenerationPipeline
+    from grove_tui.engine.planning import RobotRequest
+    from grove_tui.engine.retrieval import NodeRetriever
+
+    err = _err()
+    options = _root_options(ctx)
+    models = None
+    progress = Progress(err)
+    try:
+        world, preset = _validate_inputs(world_name, preset_name, prompt)
+        robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
+        models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
+                             options.get("model"))
+        pipeline = GenerationPipeline(world, preset, models.roi, models.bt, NodeRetriever(), robot=robot)
+        result = pipeline.run(prompt, seed=seed, on_event=progress)
+        bundle = write_bundle(result, Path(out_dir))
+        sim = simulate_bundle(bundle, simulate_seconds) if simulate_seconds else None
+    except (GroveError, KeyboardInterrupt) as exc:
+        progress.stop()
+        code = exit_code_for(exc)
+        err.print(f"[red]error:[/] {exc}" if str(exc) else "[red]cancelled[/]", markup=True)
+        ctx.exit(code)
+    finally:
+        if models is not None:
+            models.close()
+    if as_json:
+        payload = {"bundle": str(bundle), "agents": len(result.scenario.agents), "report": {
+            k: result.report[k] for k in ("stages", "total_seconds", "prompt_tokens", "completion_tokens", "zones",
+                                          "groups", "notes")}}
+        if sim is not None:
+            payload["simulation"] = sim
+        click.echo(json.dumps(payload))
+        return
+    out = _out()
+    for line in summary_lines(result, bundle):
+        out.print(line, markup=False)
+    if sim is not None:
+        out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
+                  f"{bundle / 'trajectories.csv'}", markup=False)
+
+
+@click.command("batch")
+@click.argument("jobs_file", type=click.Path(exists=True, dir_okay=False))
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Directory for the bundles.")
+@click.option("--roi-model", type=click.Path(dir_okay=False), default=None)
+@click.option("--bt-model", type=click.Path(dir_okay=False), default=None)
+@click.pass_context
+def batch(ctx: click.Context, jobs_file: str, out_dir: str, roi_model: str | None, bt_model: str | None) -> None:
+    """Generate many scenarios from a JSONL file, loading the models once.
+
+    Each line: {"world": ..., "preset": ..., "prompt": ..., "seed": 0, "name": "optional-dir-name",
+    "simulate": optional seconds}. A failed line is reported and the batch goes on; the exit code is
+    3 when any line failed, 2 when the file itself is malformed.
+    """
+    from grove_tui.engine.bundle import write_bundle
+    from grove_tui.engine.errors import GroveError
+    from grove_tui.engine.pipeline import GenerationPipeline
+    from grove_tui.engine.retrieval import NodeRetriever
+
+    err, out = _err(), _out()
+    jobs = _read_jobs(Path(jobs_file), err, ctx)
+    options = _root_options(ctx)
+    models = None
+    failures = 0
+    try:
+        models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
+                             options.get("model"))
+        retriever = NodeRetriever()
+        pipelines: dict[tuple[str, str], Any] = {}
+        for index, job in enumerate(jobs, start=1):
+            name = job.get("name") or f"{index:03d}-{job['world']}-{job['preset']}"
+            target = Path(out_dir) / _safe_name(name)
+            progress = Progress(err, prefix=f"[{index}/{len(jobs)}] ")
+            try:
+                world, preset = _validate_inputs(job["world"], job["preset"], job["prompt"])
+                key = (job["world"], job["preset"])
+                if key not in pipelines:
+                    pipelines[key] = GenerationPipeline(world, preset, models.roi, models.bt, retriever)
+                result = pipelines[key].run(job["prompt"], seed=int(job.get("seed", 0)), on_event=progress)
+                bundle = write_bundle(result, target)
+                if job.get("simulate"):
+                    simulate_bundle(bundle, float(job["simulate"]))
+                out.print(f"ok {bundle} agents={len(result.scenario.agents)} "
+                          f"prompt_tokens={result.report['prompt_tokens']} seconds={result.report['total_seconds']:.2f}",
+                          markup=False)
+            except KeyboardInterrupt:
+                raise
+            except GroveError as exc:
+                progress.stop()
+                if exit_code_for(exc) in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
+                    raise
+                failures += 1
+                out.print(f"failed {target} {exc}", markup=False)
+    except (GroveError, KeyboardInterrupt) as exc:
+        err.print(f"[red]error:[/] {exc}" if str(exc) else "[red]cancelled[/]")
+        ctx.exit(exit_code_for(exc))
+    finally:
+        if models is not None:
+            models.close()
+    err.print(f"{len(jobs) - failures}/{len(jobs)} scenarios generated")
+    ctx.exit(EXIT_GENERATION_FAILED if failures else EXIT_OK)
+
+
+def _safe_name(name: str) -> str:
+    cleaned = re.sub(r"[^A-Za-z0-9._-]+", "-", str(name)).strip("-.")
+    return cleaned or "scenario"
+
+
+def _read_jobs(path: Path, err: Console, ctx: click.Context) -> list[dict[str, Any]]:
+    jobs = []
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        try:
+            job = json.loads(line)
+        except json.JSONDecodeError as exc:
+            err.print(f"[red]error:[/] {path}:{number}: not valid JSON: {exc.msg}")
+            ctx.exit(EXIT_BAD_INPUT)
+        missing = [k for k in ("world", "preset", "prompt") if not isinstance(job, dict) or k not in job]
+        if missing:
+            err.print(f"[red]error:[/] {path}:{number}: missing {', '.join(missing)}")
+            ctx.exit(EXIT_BAD_INPUT)
+        jobs.append(job)
+    if not jobs:
+        err.print(f"[red]error:[/] {path}: no jobs")
+        ctx.exit(EXIT_BAD_INPUT)
+    return jobs
+
+
+@click.command("simulate")
+@click.argument("bundle", type=click.Path(file_okay=False))
+@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True), default=30.0, show_default=True)
+@click.pass_context
+def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
+    """Simulate a bundle and write trajectories.csv into it."""
+    from grove_tui.engine.errors import GroveError
+
+    err, out = _err(), _out()
+    try:
+        sim = simulate_bundle(Path(bundle), seconds)
+    except (GroveError, KeyboardInterrupt) as exc:
+        err.print(f"[red]error:[/] {exc}" if str(exc) else "[red]cancelled[/]")
+        ctx.exit(exit_code_for(exc))
+    out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
+              f"{Path(bundle) / 'trajectories.csv'}", markup=False)
+    for key, value in sim["counters"].items():
+        out.print(f"{key}: {value}", markup=False)

@@ -1,0 +1,149 @@
+"""Operational layer: waypoints keep every leg collision-free, fields lead groups out, the robot crosses the scene."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from lxml import etree
+
+from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
+from grove_tui.engine.grid import build_grid
+from grove_tui.engine.planner import ThetaStarPlanner, segment_is_free
+from grove_tui.engine.planning import RobotRequest, goals_from_tree, plan_operational
+from grove_tui.engine.postprocess import postprocess
+from grove_tui.engine.presets import GenerationError, load_preset
+from grove_tui.engine.quantities import extract_quantities
+from grove_tui.engine.rois import select_rois
+from grove_tui.engine.world import parse_world
+
+CLINIC = """
+name: clinic
+description: A small clinic for tests.
+zones:
+  - name: lobby
+    type: lobby
+    description: Entrance lobby with the reception desk.
+    aliases: [entrance hall, foyer]
+    boundary: [[0, 0], [10, 0], [10, 8], [0, 8]]
+    doors:
+      - {name: main_entrance, position: [5, 0], width: 2.0, leads_to: outside, exit: true}
+      - {name: lobby_corridor_door, position: [10, 4], width: 1.6, leads_to: corridor}
+    entities:
+      - {name: reception_desk, type: desk, footprint: [[3, 6], [7, 6], [7, 7], [3, 7]], interaction_point: [5, 5.4], tags: [reception, check-in]}
+  - name: corridor
+    type: corridor
+    description: Main corridor.
+    boundary: [[10, 2], [24, 2], [24, 6], [10, 6]]
+    doors:
+      - {name: corridor_pharmacy_door, position: [16, 6], width: 1.4, leads_to: pharmacy}
+      - {name: corridor_cafeteria_door, position: [20, 2], width: 1.6, leads_to: cafeteria}
+      - {name: back_exit, position: [24, 4], width: 1.6, leads_to: outside, exit: true}
+  - name: pharmacy
+    type: pharmacy
+    description: Pharmacy with a dispensing counter.
+    boundary: [[12, 6], [22, 6], [22, 14], [12, 14]]
+    entities:
+      - {name: pharmacy_counter, type: counter, footprint: [[14, 12.5], [20, 12.5], [20, 13.5], [14, 13.5]], interaction_point: [17, 11.8]}
+  - name: cafeteria
+    type: cafeteria
+    description: Cafeteria with tables and a coffee counter.
+    aliases: [canteen]
+    boundary: [[14, -8], [26, -8], [26, 2], [14, 2]]
+    entities:
+      - {name: coffee_counter, type: counter, footprint: [[15, -7.5], [19, -7.5], [19, -6.5], [15, -6.5]], interaction_point: [17, -5.8]}
+      - {name: vending_machine, type: vending_machine, footprint: [[24.5, 0], [25.5, 0], [25.5, 1], [24.5, 1]], interaction_point: [25, -0.6]}
+  - name: restroom
+    type: restroom
+    description: A tiny restroom.
+    aliases: [bathroom, toilet]
+    boundary: [[0, 8], [3, 8], [3, 10], [0, 10]]
+    doors:
+      - {name: restroom_door, position: [1.5, 8], width: 0.9, leads_to: lobby}
+"""
+
+
+@pytest.fixture(scope="module")
+def clinic():
+    world, problems = parse_world(CLINIC, "clinic.yaml")
+    assert not problems, problems
+    return world
+
+
+@pytest.fixture(scope="module")
+def grid(clinic):
+    return build_grid(clinic)
+
+
+def plan(clinic, grid, preset_name, prompt, groups, robot=None, seed=0):
+    preset = load_preset(preset_name)
+    selection = select_rois(clinic, preset, prompt)
+    post = postprocess(clinic, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed, prompt,
+                       ("Sequence", "GoTo", "Queue", "FollowVelocityField", "Wait", "JoinGroup"))
+    return post, plan_operational(clinic, grid, preset, post, seed, robot)
+
+
+def free_path(grid, points):
+    planner = ThetaStarPlanner(grid)
+    return all(planner.segment_is_free(a[0], a[1], b[0], b[1]) for a, b in zip(points, points[1:]))
+
+
+def test_waypoints_make_every_leg_collision_free(clinic, grid):
+    tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "cafeteria"}), DraftNode("GoTo", {"target": "pharmacy"})))
+    post, op = plan(clinic, grid, "normal", "Five visitors walk from the lobby to the cafeteria and then the pharmacy",
+                    [DraftGroup("visitors", 5, "lobby", tree)])
+    for agent in op.agents:
+        xml = op.trees[agent.tree]
+        gotos = etree.fromstring(xml.encode()).findall(".//GoTo")
+        assert all(g.get("waypoints") for g in gotos)  # lobby -> cafeteria cannot be a straight line
+        assert free_path(grid, [agent.start, *agent.goals])
+        assert agent.goals == tuple(goals_from_tree(xml))
+        assert clinic.zone("pharmacy").polygon.contains(__import__("shapely").Point(agent.goals[-1]))
+        assert agent.zone == "pharmacy"
+
+
+def test_emergency_builds_one_field_per_group_toward_the_shared_exit(clinic, grid):
+    groups = [DraftGroup("diners", 6, "cafeteria", DraftNode("FollowVelocityField", {"exit": "main_entrance"})),
+              DraftGroup("patients", 4, "pharmacy", DraftNode("FollowVelocityField", {"exit": "main_entrance"}))]
+    post, op = plan(clinic, grid, "emergency", "Six diners in the cafeteria and four patients in the pharmacy evacuate",
+                    groups)
+    assert set(op.fields) == {"group_1", "group_2"}
+    for fid, field in op.fields.items():
+        assert field.exit == clinic.find(post.exit).position
+        members = [a for a in op.agents if etree.fromstring(op.trees[a.tree].encode()).find(".//FollowVelocityField").get("field") == fid]
+        assert members
+        for a in members:
+            vx, vy = field.sample(*a.start)
+            assert math.hypot(vx, vy) > 0.5  # every spawn has a direction to follow
+            assert a.goals[-1] == tuple(round(v, 3) for v in field.path[-1])
+
+
+def test_robot_is_chosen_across_the_crowd_and_planned(clinic, grid):
+    post, op = plan(clinic, grid, "normal", "Eight visitors wait in the lobby",
+                    [DraftGroup("visitors", 8, "lobby", DraftNode("Wait", {"duration": 30.0}))])
+    robot = op.robot
+    assert robot is not None and len(robot.path) >= 2
+    assert robot.path[0] == robot.start and robot.path[-1] == robot.goal
+    assert all(math.dist(robot.start, a.start) >= 2.0 and math.dist(robot.goal, a.start) >= 2.0 for a in op.agents)
+    assert free_path(grid, list(robot.path))
+    assert math.dist(robot.start, robot.goal) >= 4.0
+
+
+def test_robot_start_and_goal_from_the_user(clinic, grid):
+    request = RobotRequest(start="main_entrance", goal=(17.0, -3.0))
+    post, op = plan(clinic, grid, "normal", "Eight visitors wait in the lobby",
+                    [DraftGroup("visitors", 8, "lobby", DraftNode("Wait", {"duration": 30.0}))], robot=request)
+    assert op.robot.start == pytest.approx(clinic.find("main_entrance").inward_point(0.8), abs=0.15)
+    assert op.robot.goal == (17.0, -3.0)
+    _, op = plan(clinic, grid, "normal", "Eight visitors wait in the lobby",
+                 [DraftGroup("visitors", 8, "lobby", DraftNode("Wait", {"duration": 30.0}))],
+                 robot=RobotRequest(enabled=False))
+    assert op.robot is None
+
+
+def test_robot_goal_on_a_wall_is_refused(clinic, grid):
+    with pytest.raises(GenerationError, match="robot goal"):
+        plan(clinic, grid, "normal", "Eight visitors wait in the lobby",
+             [DraftGroup("visitors", 8, "lobby", DraftNode("Wait", {"duration": 30.0}))],
+             robot=RobotRequest(start=(5.0, 3.0), goal=(60.0, 60.0)))
