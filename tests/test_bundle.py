@@ -1,0 +1,167 @@
+"""Bundles: written atomically, loaded back exactly, simulated identically."""
+
+from __future__ import annotations
+
+import filecmp
+
+import numpy as np
+import pytest
+
+from grove_tui.engine.bundle import BundleError, load_bundle, load_report, write_bundle
+from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
+from grove_tui.engine.grid import build_grid
+from grove_tui.engine.pipeline import GenerationResult
+from grove_tui.engine.planning import plan_operational
+from grove_tui.engine.postprocess import postprocess
+from grove_tui.engine.presets import load_preset
+from grove_tui.engine.quantities import extract_quantities
+from grove_tui.engine.rois import select_rois
+from grove_tui.engine.scenario import Scenario
+from grove_tui.engine.simulation import Simulation
+from grove_tui.engine.world import parse_world
+
+CLINIC = """
+name: clinic
+description: A small clinic for tests.
+zones:
+  - name: lobby
+    type: lobby
+    description: Entrance lobby with the reception desk.
+    aliases: [entrance hall, foyer]
+    boundary: [[0, 0], [10, 0], [10, 8], [0, 8]]
+    doors:
+      - {name: main_entrance, position: [5, 0], width: 2.0, leads_to: outside, exit: true}
+      - {name: lobby_corridor_door, position: [10, 4], width: 1.6, leads_to: corridor}
+    entities:
+      - {name: reception_desk, type: desk, footprint: [[3, 6], [7, 6], [7, 7], [3, 7]], interaction_point: [5, 5.4], tags: [reception, check-in]}
+  - name: corridor
+    type: corridor
+    description: Main corridor.
+    boundary: [[10, 2], [24, 2], [24, 6], [10, 6]]
+    doors:
+      - {name: corridor_pharmacy_door, position: [16, 6], width: 1.4, leads_to: pharmacy}
+      - {name: corridor_cafeteria_door, position: [20, 2], width: 1.6, leads_to: cafeteria}
+      - {name: back_exit, position: [24, 4], width: 1.6, leads_to: outside, exit: true}
+  - name: pharmacy
+    type: pharmacy
+    description: Pharmacy with a dispensing counter.
+    boundary: [[12, 6], [22, 6], [22, 14], [12, 14]]
+    entities:
+      - {name: pharmacy_counter, type: counter, footprint: [[14, 12.5], [20, 12.5], [20, 13.5], [14, 13.5]], interaction_point: [17, 11.8]}
+  - name: cafeteria
+    type: cafeteria
+    description: Cafeteria with tables and a coffee counter.
+    aliases: [canteen]
+    boundary: [[14, -8], [26, -8], [26, 2], [14, 2]]
+    entities:
+      - {name: coffee_counter, type: counter, footprint: [[15, -7.5], [19, -7.5], [19, -6.5], [15, -6.5]], interaction_point: [17, -5.8]}
+      - {name: vending_machine, type: vending_machine, footprint: [[24.5, 0], [25.5, 0], [25.5, 1], [24.5, 1]], interaction_point: [25, -0.6]}
+  - name: restroom
+    type: restroom
+    description: A tiny restroom.
+    aliases: [bathroom, toilet]
+    boundary: [[0, 8], [3, 8], [3, 10], [0, 10]]
+    doors:
+      - {name: restroom_door, position: [1.5, 8], width: 0.9, leads_to: lobby}
+"""
+
+
+@pytest.fixture(scope="module")
+def clinic(tmp_path_factory):
+    path = tmp_path_factory.mktemp("world") / "clinic.yaml"
+    path.write_text(CLINIC)
+    world, problems = parse_world(CLINIC, str(path))
+    assert not problems, problems
+    return world
+
+
+def make_result(world, preset_name, prompt, groups, seed=0):
+    preset = load_preset(preset_name)
+    grid = build_grid(world)
+    selection = select_rois(world, preset, prompt)
+    post = postprocess(world, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed, prompt,
+                       ("Sequence", "GoTo", "Queue", "FollowVelocityField"))
+    op = plan_operational(world, grid, preset, post, seed)
+    scenario = Scenario(world=str(world.source), preset=preset.name, prompt=prompt, seed=seed, models={"bt": "hand"},
+                        agents=tuple(op.agents), robot=op.robot,
+                        fields={fid: f"fields/{fid}.npz" for fid in op.fields})
+    return GenerationResult(scenario, op.trees, op.fields, grid, {"stages": {}, "notes": post.notes})
+
+
+QUEUE = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "pharmacy_counter"}),
+                                   DraftNode("Queue", {"service_point": "pharmacy_counter"})))
+
+
+def test_bundle_round_trips(clinic, tmp_path):
+    result = make_result(clinic, "queuing", "Six patients in the lobby queue at the pharmacy counter",
+                         [DraftGroup("patients", 6, "lobby", QUEUE)])
+    out = write_bundle(result, tmp_path / "b")
+    assert sorted(p.name for p in out.iterdir()) == ["generation.json", "grid.npz", "scenario.yaml", "trees"]
+    scenario, trees, fields, grid = load_bundle(out)
+    assert scenario == result.scenario
+    assert trees == result.trees
+    assert fields == {}
+    assert np.array_equal(grid.occupied, result.grid.occupied) and grid.origin == result.grid.origin
+    assert load_report(out)["notes"] == result.report["notes"]
+
+
+def test_emergency_bundle_keeps_its_fields(clinic, tmp_path):
+    result = make_result(clinic, "emergency", "Eight people in the cafeteria evacuate",
+                         [DraftGroup("people", 8, "cafeteria", DraftNode("FollowVelocityField", {"exit": "back_exit"}))])
+    out = write_bundle(result, tmp_path / "e")
+    scenario, _, fields, _ = load_bundle(out)
+    assert scenario.fields == {"group_1": "fields/group_1.npz"}
+    assert np.array_equal(fields["group_1"].vectors, result.fields["group_1"].vectors)
+
+
+def test_a_bundle_simulates_identically_twice(clinic, tmp_path):
+    result = make_result(clinic, "queuing", "Six patients in the lobby queue at the pharmacy counter",
+                         [DraftGroup("patients", 6, "lobby", QUEUE)])
+    out = write_bundle(result, tmp_path / "s")
+    runs = []
+    for _ in range(2):
+        scenario, *_ = load_bundle(out)
+        sim = Simulation.from_scenario(scenario, out, world=clinic)
+        sim.run(10.0)
+        runs.append(sim.recorder.to_array())
+    assert np.array_equal(runs[0], runs[1]) and len(runs[0]) > 0
+
+
+def test_failed_write_leaves_no_partial_bundle_and_keeps_the_old_one(clinic, tmp_path):
+    good = make_result(clinic, "queuing", "Six patients in the lobby queue at the pharmacy counter",
+                       [DraftGroup("patients", 6, "lobby", QUEUE)])
+    out = write_bundle(good, tmp_path / "b")
+    before = (out / "scenario.yaml").read_text()
+    broken = make_result(clinic, "emergency", "Eight people in the cafeteria evacuate",
+                         [DraftGroup("people", 8, "cafeteria", DraftNode("FollowVelocityField", {"exit": "back_exit"}))])
+    broken.fields.clear()  # the scenario names a field the result does not carry: writing it fails midway
+    with pytest.raises(KeyError):
+        write_bundle(broken, out)
+    assert (out / "scenario.yaml").read_text() == before
+    assert [p.name for p in tmp_path.iterdir()] == ["b"]  # no staging directory left behind
+    with pytest.raises(KeyError):
+        write_bundle(broken, tmp_path / "new")
+    assert not (tmp_path / "new").exists()
+
+
+def test_same_inputs_same_bundle_bytes(clinic, tmp_path):
+    args = ("queuing", "Six patients in the lobby queue at the pharmacy counter", [DraftGroup("patients", 6, "lobby", QUEUE)])
+    a = write_bundle(make_result(clinic, *args, seed=5), tmp_path / "a")
+    b = write_bundle(make_result(clinic, *args, seed=5), tmp_path / "b")
+    assert (a / "scenario.yaml").read_bytes() == (b / "scenario.yaml").read_bytes()
+    cmp = filecmp.dircmp(a / "trees", b / "trees")
+    assert not cmp.diff_files and not cmp.left_only and not cmp.right_only
+
+
+def test_loading_a_broken_bundle_names_the_problem(clinic, tmp_path):
+    with pytest.raises(BundleError, match="no such bundle directory"):
+        load_bundle(tmp_path / "nothing")
+    result = make_result(clinic, "queuing", "Six patients in the lobby queue at the pharmacy counter",
+                         [DraftGroup("patients", 6, "lobby", QUEUE)])
+    out = write_bundle(result, tmp_path / "b")
+    (out / "trees" / "agent_3.xml").unlink()
+    with pytest.raises(BundleError, match="agent 3's tree trees/agent_3.xml is missing"):
+        load_bundle(out)
+    (out / "scenario.yaml").write_text("agents: [")
+    with pytest.raises(BundleError, match="not valid YAML"):
+        load_bundle(out)
