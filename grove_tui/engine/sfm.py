@@ -731,6 +731,7 @@ def _update_agents(k0, k1, dt, params,
     n_vel = params[P_NPRIME]
     body = params[P_BODY]
     skip_exponent = params[P_SKIP]
+    n_min = min(n_angle, n_vel)
     robot_present = robot[R_PRESENT] != 0.0
     rx = robot[R_X]
     ry = robot[R_Y]
@@ -824,7 +825,14 @@ def _update_agents(k0, k1, dt, params,
                         continue
                     ix /= ilen
                     iy /= ilen
-                    theta = math.atan2(ix * uy - iy * ux, ix * ux + iy * uy) + epsilon * b
+                    cos_theta = ix * ux + iy * uy
+                    # |theta| >= sqrt(2 (1 - cos theta)): prunes pairs behind before the atan2.
+                    theta_floor = math.sqrt(max(2.0 * (1.0 - cos_theta), 0.0)) - abs(epsilon * b)
+                    if theta_floor > 0.0:
+                        t_floor = n_min * b * theta_floor
+                        if q + t_floor * t_floor > skip_exponent:
+                            continue
+                    theta = math.atan2(ix * uy - iy * ux, cos_theta) + epsilon * b
                     ta = n_angle * b * theta
                     tv = n_vel * b * theta
                     ta2 = ta * ta

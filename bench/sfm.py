@@ -1,0 +1,278 @@
+"""Crowd step benchmark: GROVE's numba SFM against PySocialForce 1.1.2 and JuPedSim 1.4.2 (SocialForceModel).
+
+The same scenario for all three: N pedestrians on a jittered grid (0.5 per m^2) in a walled square
+room, each walking to the nearest of four 2 m doors, one in the middle of each side. Agents that
+reach their door leave (JuPedSim's exit stages remove them; GROVE deactivates them each second;
+PySocialForce has no removal, its agents stop at the goal), so throughput is counted as live
+agents times steps. Each simulator runs at its own step: GROVE 0.05 s, JuPedSim 0.01 s (its
+default), PySocialForce 0.4 s (the step it really uses: its [scene] config is ignored), so both
+agent-steps per second and simulated seconds per wall second are printed.
+
+Run by hand (not a test):  python bench/sfm.py [--sizes 100 1000 10000] [--repeat 1]
+Needs `pip install pysocialforce==1.1.2 jupedsim==1.4.2`; a missing peer is reported and skipped.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import importlib
+import logging
+import math
+import os
+import platform
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from grove_tui.engine.crowd import Crowd  # noqa: E402
+
+DENSITY = 0.5          # initial pedestrians per square metre
+DOOR_WIDTH = 2.0
+SPEED = 1.2            # desired speed, m/s
+RADIUS = 0.3
+PSF_MAX_AGENTS = 2000  # PySocialForce is all-pairs: beyond this one step takes many seconds
+
+
+@dataclass
+class Scenario:
+    n: int
+    side: float
+    positions: np.ndarray      # (n, 2)
+    exit_of: np.ndarray        # (n,) index into doors
+    doors: np.ndarray          # (4, 2) door centres on the walls
+    outward: np.ndarray        # (4, 2) unit normals pointing out of the room
+
+    def walls(self) -> np.ndarray:
+        """Room boundary as segments with the four door openings cut out."""
+        s, h = self.side, DOOR_WIDTH / 2
+        m = s / 2
+        return np.array([
+            [0, 0, m - h, 0], [m + h, 0, s, 0],
+            [s, 0, s, m - h], [s, m + h, s, s],
+            [s, s, m + h, s], [m - h, s, 0, s],
+            [0, s, 0, m + h], [0, m - h, 0, 0],
+        ], dtype=float)
+
+    def goals(self) -> np.ndarray:
+        return self.doors[self.exit_of] + self.outward[self.exit_of] * 1.5
+
+
+def make_scenario(n: int, seed: int = 0) -> Scenario:
+    rng = np.random.default_rng(seed)
+    spacing = 1.0 / math.sqrt(DENSITY)
+    per_row = math.ceil(math.sqrt(n))
+    side = per_row * spacing + 2.0
+    cells = np.array([(i % per_row, i // per_row) for i in range(n)], dtype=float)
+    positions = 1.0 + (cells + 0.5) * spacing + rng.uniform(-0.25, 0.25, size=(n, 2))
+    m = side / 2
+    doors = np.array([[m, 0.0], [side, m], [m, side], [0.0, m]])
+    outward = np.array([[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])
+    exit_of = np.argmin(np.linalg.norm(positions[:, None, :] - doors[None], axis=2), axis=1)
+    return Scenario(n, side, positions, exit_of, doors, outward)
+
+
+@dataclass
+class Result:
+    name: str
+    n: int
+    steps: int
+    agent_steps: int
+    wall_s: float
+    sim_s: float
+    cpu_s: float
+
+    @property
+    def rate(self) -> float:
+        return self.agent_steps / self.wall_s
+
+    @property
+    def cpu_rate(self) -> float:
+        """Agent-steps per CPU-second summed over threads: comparable when other jobs share the cores."""
+        return self.agent_steps / self.cpu_s
+
+    @property
+    def realtime(self) -> float:
+        return self.sim_s / self.wall_s
+
+
+def run_grove(sc: Scenario, steps: int) -> Result:
+    crowd = Crowd(sc.walls(), dt=0.05)
+    goals = sc.goals()
+    for p, g in zip(sc.positions, goals):
+        crowd.add_agent(p, radius=RADIUS, desired_speed=SPEED, goals=[tuple(g)], goal_radius=1.0)
+    crowd.step(1)  # compiled already by the warm-up; this touches every page once
+    chunk = 20     # one second: arrivals are removed at this rate
+    agent_steps = 0
+    done = 0
+    cpu = time.process_time()
+    start = time.perf_counter()
+    while done < steps:
+        k = min(chunk, steps - done)
+        live = int(crowd.active.sum())
+        crowd.step(k)
+        agent_steps += live * k
+        done += k
+        arrived = np.hypot(*(crowd.pos - goals).T) <= 1.1
+        crowd.active[arrived] = False
+    wall = time.perf_counter() - start
+    cpu = time.process_time() - cpu
+    return Result("grove", sc.n, steps, agent_steps, wall, steps * crowd.dt, cpu)
+
+
+def warm_up_grove() -> None:
+    small = make_scenario(64)
+    run_grove(small, 2)
+    big = Crowd(small.walls())
+    big.parallel_threshold = 0
+    big.add_agent((5.0, 5.0))
+    big.step(1)
+
+
+@contextlib.contextmanager
+def _quiet_cwd():
+    """PySocialForce logs at DEBUG into ./file.log on import; keep that out of the repository."""
+    previous = os.getcwd()
+    with tempfile.TemporaryDirectory() as tmp:
+        os.chdir(tmp)
+        try:
+            yield
+        finally:
+            os.chdir(previous)
+
+
+def run_pysocialforce(sc: Scenario, steps: int) -> Result:
+    with _quiet_cwd():
+        psf = importlib.import_module("pysocialforce")
+        logging.getLogger().setLevel(logging.WARNING)
+        goals = sc.goals()
+        direction = goals - sc.positions
+        direction /= np.linalg.norm(direction, axis=1, keepdims=True)
+        # Desired speed is 1.3 x the initial speed: start at SPEED / 1.3 so both cap at SPEED.
+        state = np.column_stack([sc.positions, direction * SPEED / 1.3, goals])
+        obstacles = [[w[0], w[2], w[1], w[3]] for w in sc.walls()]
+        sim = psf.Simulator(state, obstacles=obstacles)
+        sim.step(1)  # numba helpers compile on the first call
+        cpu = time.process_time()
+        start = time.perf_counter()
+        sim.step(steps)
+        wall = time.perf_counter() - start
+        cpu = time.process_time() - cpu
+        step_width = float(sim.peds.step_width)
+    return Result("pysocialforce", sc.n, steps, sc.n * steps, wall, steps * step_width, cpu)
+
+
+def run_jupedsim(sc: Scenario, iterations: int) -> Result:
+    jps = importlib.import_module("jupedsim")
+    shapely = importlib.import_module("shapely")
+    s, h = sc.side, DOOR_WIDTH / 2
+    room = shapely.box(0, 0, s, s)
+    corridors, exits = [], []
+    for door, out in zip(sc.doors, sc.outward):
+        tangent = np.array([-out[1], out[0]])
+        a = door - tangent * h
+        b = door + tangent * h
+        corridors.append(shapely.Polygon([a - out * 0.01, b - out * 0.01, b + out * 3.0, a + out * 3.0]))
+        exits.append(shapely.Polygon([a + out * 1.0, b + out * 1.0, b + out * 2.0, a + out * 2.0]))
+    geometry = shapely.union_all([room, *corridors])
+    sim = jps.Simulation(model=jps.SocialForceModel(), geometry=geometry, dt=0.01)
+    journeys = []
+    for polygon in exits:
+        exit_id = sim.add_exit_stage(polygon)
+        journeys.append((sim.add_journey(jps.JourneyDescription([exit_id])), exit_id))
+    for p, e in zip(sc.positions, sc.exit_of):
+        journey_id, stage_id = journeys[e]
+        sim.add_agent(jps.SocialForceModelAgentParameters(
+            journey_id=journey_id, stage_id=stage_id, position=(float(p[0]), float(p[1])),
+            desired_speed=SPEED, radius=RADIUS))
+    chunk = 50
+    agent_steps = 0
+    done = 0
+    cpu = time.process_time()
+    start = time.perf_counter()
+    while done < iterations:
+        k = min(chunk, iterations - done)
+        agent_steps += sim.agent_count() * k
+        sim.iterate(k)
+        done += k
+    wall = time.perf_counter() - start
+    cpu = time.process_time() - cpu
+    return Result("jupedsim", sc.n, iterations, agent_steps, wall, iterations * 0.01, cpu)
+
+
+def available(module: str) -> bool:
+    try:
+        with _quiet_cwd():
+            importlib.import_module(module)
+        logging.getLogger().setLevel(logging.WARNING)
+        return True
+    except ImportError:
+        return False
+
+
+def best_of(repeat: int, fn, *args) -> Result:
+    results = [fn(*args) for _ in range(repeat)]
+    return max(results, key=lambda r: r.rate)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", type=int, nargs="+", default=[100, 1000, 10000])
+    parser.add_argument("--repeat", type=int, default=1, help="runs per measurement; the best is kept")
+    args = parser.parse_args(argv)
+
+    import numba
+
+    print(f"# {platform.processor() or platform.machine()}, {os.cpu_count()} cpus, Python {platform.python_version()}, "
+          f"numba {numba.__version__} ({numba.config.NUMBA_NUM_THREADS} threads), numpy {np.__version__}")
+    print(f"# load average before the run: {os.getloadavg()[0]:.1f} (other jobs on these cores lower every wall figure)")
+    print(f"# scenario: square room, 4 doors of {DOOR_WIDTH} m, {DENSITY} agents/m^2, v0 {SPEED} m/s, r {RADIUS} m")
+    have_psf = available("pysocialforce")
+    have_jps = available("jupedsim")
+    if not have_psf:
+        print("# pysocialforce not installed: skipped (pip install pysocialforce==1.1.2)")
+    if not have_jps:
+        print("# jupedsim not installed: skipped (pip install jupedsim==1.4.2)")
+    warm_up_grove()
+
+    header = (f"{'simulator':<14}{'N':>7}{'dt':>6}{'steps':>7}{'wall s':>9}{'agent-steps/s':>15}"
+              f"{'sim s/wall s':>14}{'per CPU-s':>13}")
+    print(header)
+    table: dict[tuple[str, int], Result] = {}
+    for n in args.sizes:
+        sc = make_scenario(n)
+        runs = [("grove", run_grove, int(np.clip(2_000_000 // n, 100, 600)), 0.05)]
+        if have_jps:
+            runs.append(("jupedsim", run_jupedsim, int(np.clip(1_000_000 // n, 100, 1000)), 0.01))
+        if have_psf and n <= PSF_MAX_AGENTS:
+            runs.append(("pysocialforce", run_pysocialforce, int(np.clip(2_000 // n, 2, 20)), 0.4))
+        for name, fn, steps, dt in runs:
+            result = best_of(args.repeat, fn, sc, steps)
+            table[(name, n)] = result
+            print(f"{name:<14}{n:>7}{dt:>6}{steps:>7}{result.wall_s:>9.2f}{result.rate:>15,.0f}"
+                  f"{result.realtime:>14.1f}{result.cpu_rate:>13,.0f}", flush=True)
+        grove = table[("grove", n)]
+        for peer in ("jupedsim", "pysocialforce"):
+            if (peer, n) in table:
+                other = table[(peer, n)]
+                print(f"  grove / {peer} at N={n}: {grove.rate / other.rate:.1f}x agent-steps/s, "
+                      f"{grove.realtime / other.realtime:.1f}x simulated time")
+
+    headline = {}
+    for (name, n), result in sorted(table.items(), key=lambda kv: (kv[0][1], kv[0][0])):
+        headline[f"{name}_{n}_agent_steps_per_s"] = f"{result.rate:.0f}"
+        headline[f"{name}_{n}_sim_s_per_wall_s"] = f"{result.realtime:.2f}"
+        if name != "grove" and ("grove", n) in table:
+            headline[f"ratio_vs_{name}_{n}"] = f"{table[('grove', n)].rate / result.rate:.2f}"
+    print(" ".join(f"{k}={v}" for k, v in headline.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
