@@ -213,16 +213,23 @@ def test_corner_is_felt_once_not_once_per_edge():
 # --------------------------------------------------------------------------- fields
 
 
-def test_field_sampling_is_bilinear_between_cell_centres():
-    vectors = np.zeros((1, 2, 2, 2), dtype=np.float32)
-    vectors[0, 0, 0] = (1, 0)
-    vectors[0, 0, 1] = (0, 1)
-    vectors[0, 1, 0] = (-1, 0)
-    vectors[0, 1, 1] = (0, -1)
-    meta = np.zeros((1, sfm.F_COUNT))
-    meta[0, :5] = (10.0, 20.0, 0.5, 2, 2)
-    # cell centres at x 10.25 / 10.75, y 20.25 / 20.75
-    assert sfm.sample_field_stack(vectors, meta, 0, 10.25, 20.25) == pytest.approx((1.0, 0.0))
-    assert sfm.sample_field_stack(vectors, meta, 0, 10.5, 20.25) == pytest.approx((0.5, 0.5))
-    assert sfm.sample_field_stack(vectors, meta, 0, 10.5, 20.5) == pytest.approx((0.0, 0.0))
-    assert sfm.sample_field_stack(vectors, meta, 0, 0.0, 0.0) == pytest.approx((1.0, 0.0))  # clamped
+def test_field_mode_steers_along_the_planners_sampled_direction():
+    from grove_tui.engine.velocity_field import VelocityField
+
+    rng = np.random.default_rng(1)
+    vectors = rng.normal(size=(6, 8, 2))
+    vectors /= np.linalg.norm(vectors, axis=2, keepdims=True)
+    field = VelocityField(origin=(1.0, 2.0), resolution=0.5, vectors=vectors.astype(np.float32), exit=(20.0, 20.0))
+    crowd = Crowd(params=SFMParams(social_weight=0.0))
+    field_id = crowd.register_field(field)
+    points = [(2.1, 3.3), (3.7, 4.1), (1.4, 2.2)]
+    for p in points:
+        i = crowd.add_agent(p, desired_speed=1.0)
+        crowd.set_field(i, field_id)
+        crowd.set_mode(i, sfm.MODE_FIELD)
+    crowd.step(1)
+    for i, p in enumerate(points):
+        direction = np.array(field.sample(*p))
+        direction /= np.linalg.norm(direction)
+        expected = 2.0 * 1.0 * direction / 0.5 * crowd.dt  # w_g v0 e / tau, from rest
+        assert np.allclose(crowd.vel[i], expected, atol=1e-6)

@@ -16,6 +16,8 @@ from dataclasses import dataclass
 import numba as nb
 import numpy as np
 
+from grove_tui.engine.velocity_field import sample_field
+
 MODE_GOALS = 0
 MODE_FIELD = 1
 MODE_STOP = 2
@@ -482,37 +484,6 @@ def wall_endpoint_owners(walls: np.ndarray) -> np.ndarray:
 # --------------------------------------------------------------------------- fields
 
 
-@nb.njit(cache=True)
-def sample_field_stack(field_vectors, field_meta, f, x, y):
-    """Bilinear sample of field f at (x, y); cell (r, c) centre is origin + (c + .5, r + .5) * res."""
-    ox = field_meta[f, F_OX]
-    oy = field_meta[f, F_OY]
-    res = field_meta[f, F_RES]
-    h = int(field_meta[f, F_H])
-    w = int(field_meta[f, F_W])
-    fx = (x - ox) / res - 0.5
-    fy = (y - oy) / res - 0.5
-    if fx < 0.0:
-        fx = 0.0
-    elif fx > w - 1:
-        fx = float(w - 1)
-    if fy < 0.0:
-        fy = 0.0
-    elif fy > h - 1:
-        fy = float(h - 1)
-    c0 = int(math.floor(fx))
-    r0 = int(math.floor(fy))
-    c1 = min(c0 + 1, w - 1)
-    r1 = min(r0 + 1, h - 1)
-    tx = fx - c0
-    ty = fy - r0
-    vx = ((1.0 - tx) * (1.0 - ty) * field_vectors[f, r0, c0, 0] + tx * (1.0 - ty) * field_vectors[f, r0, c1, 0]
-          + (1.0 - tx) * ty * field_vectors[f, r1, c0, 0] + tx * ty * field_vectors[f, r1, c1, 0])
-    vy = ((1.0 - tx) * (1.0 - ty) * field_vectors[f, r0, c0, 1] + tx * (1.0 - ty) * field_vectors[f, r0, c1, 1]
-          + (1.0 - tx) * ty * field_vectors[f, r1, c0, 1] + tx * ty * field_vectors[f, r1, c1, 1])
-    return vx, vy
-
-
 # --------------------------------------------------------------------------- forces
 
 
@@ -772,7 +743,8 @@ def _update_agents(k0, k1, dt, params,
                 dxe = field_meta[fs, F_EXIT_X] - px
                 dye = field_meta[fs, F_EXIT_Y] - py
                 if dxe * dxe + dye * dye > goal_radius[i] * goal_radius[i]:
-                    sxv, syv = sample_field_stack(field_vectors, field_meta, fs, px, py)
+                    sxv, syv = sample_field(field_vectors[fs], field_meta[fs, F_OX], field_meta[fs, F_OY],
+                                            field_meta[fs, F_RES], px, py)
                     sl = math.sqrt(sxv * sxv + syv * syv)
                     if sl > 1e-6:
                         has_dir = True
