@@ -11,12 +11,19 @@ segments, group gaze / coherence / repulsion, speed clipped to v0, yaw held when
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 
-import numba as nb
-import numpy as np
+# OpenMP threads otherwise spin at every barrier; on cores shared with other work (the TUI, a
+# model, other processes) that spinning steals the time the other thread needs. Measured on
+# 2 shared cores at 10,000 agents: 0.49M agent-steps per CPU-second spinning, 0.69M passive.
+# Takes effect only if libgomp is not loaded yet; an explicit setting wins.
+os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
-from grove_tui.engine.velocity_field import sample_field
+import numba as nb  # noqa: E402
+import numpy as np  # noqa: E402
+
+from grove_tui.engine.velocity_field import sample_field  # noqa: E402
 
 MODE_GOALS = 0
 MODE_FIELD = 1
@@ -1112,6 +1119,5 @@ def advance_parallel(n_steps, dt, params,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
                            order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
                            new_pos, new_vel, new_yaw)
-        for b in nb.prange(n_blocks):
-            _commit_rows(b * _BLOCK, min((b + 1) * _BLOCK, n_active), order, pos, vel, yaw,
-                         new_pos, new_vel, new_yaw)
+        # A serial copy costs less than another thread barrier.
+        _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
