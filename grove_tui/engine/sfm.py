@@ -529,15 +529,15 @@ def _social_force(px, py, vx, vy, qx, qy, wx, wy, i, j, params):
     theta = math.atan2(ix * ey - iy * ex, ix * ex + iy * ey)
     b = params[P_GAMMA] * ilen
     theta += params[P_EPSILON] * b
-    nb_ = params[P_N] * b * theta
-    npb = params[P_NPRIME] * b * theta
-    f_v = -math.exp(-dist / b - npb * npb)
+    t_angle = params[P_N] * b * theta
+    t_velocity = params[P_NPRIME] * b * theta
+    f_v = -math.exp(-dist / b - t_velocity * t_velocity)
     sign = 0.0
     if theta > 0.0:
         sign = 1.0
     elif theta < 0.0:
         sign = -1.0
-    f_a = -sign * math.exp(-dist / b - nb_ * nb_)
+    f_a = -sign * math.exp(-dist / b - t_angle * t_angle)
     # interaction direction times f_v plus its left normal (-iy, ix) times f_a
     return f_v * ix - f_a * iy, f_v * iy + f_a * ix
 
