@@ -150,6 +150,17 @@ def test_parse_enforces_depth_and_decorator_arity():
         parse_draft(text, NODE_SET, ROIS)
 
 
+def test_children_bound_is_configurable():
+    schema = build_draft_schema(NODE_SET, ROIS, max_children=2)
+    assert schema["$defs"]["Sequence_1"]["properties"]["children"]["maxItems"] == 2
+    assert schema["$defs"]["Inverter_1"]["properties"]["children"]["maxItems"] == 1
+    three = json.dumps({"groups": [{"label": "a", "count": 1, "spawn": "pharmacy", "tree": {
+        "node": "Sequence", "children": [{"node": "Wait"}] * 3}}]})
+    assert len(parse_draft(three, NODE_SET, ROIS).groups[0].tree.children) == 3
+    with pytest.raises(DraftError, match="1..2 children"):
+        parse_draft(three, NODE_SET, ROIS, max_children=2)
+
+
 def test_parse_accepts_in_bounds_numbers_outside_the_grammar_menu():
     """The grammar offers a short menu of values; a hand-written draft is held to the manifest bounds only."""
     text = _with("groups.0.tree.children.1.spacing", 0.65)

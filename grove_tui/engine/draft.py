@@ -152,7 +152,7 @@ def port_schema(port: Any, roi_names: list[str]) -> dict[str, Any]:
     raise DraftError(f"port {port.name!r} has type {port.type!r}, which a draft never writes")
 
 
-def _node_schema(spec: Any, roi_names: list[str], children_ref: str | None) -> dict[str, Any]:
+def _node_schema(spec: Any, roi_names: list[str], children_ref: str | None, max_children: int) -> dict[str, Any]:
     properties: dict[str, Any] = {"node": {"const": spec.name}}
     required = ["node"]
     for port in written_ports(spec):
@@ -160,35 +160,35 @@ def _node_schema(spec: Any, roi_names: list[str], children_ref: str | None) -> d
         if port.default is None:
             required.append(port.name)
     if children_ref is not None:
-        most = 1 if spec.category == "decorator" else MAX_CHILDREN
+        most = 1 if spec.category == "decorator" else max_children
         properties["children"] = {"type": "array", "items": {"$ref": children_ref}, "minItems": 1, "maxItems": most}
         required.append("children")
     return {"type": "object", "properties": properties, "required": required, "additionalProperties": False}
 
 
 def build_draft_schema(node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6,
-                       max_count: int = 60, max_depth: int = 3,
+                       max_count: int = 60, max_depth: int = 3, max_children: int = MAX_CHILDREN,
                        nodes: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """JSON schema of a draft for one request; recursion is unrolled into one `$defs` entry per tree level."""
     specs = _specs(node_names, nodes)
     rois = list(dict.fromkeys(roi_names))
     if not rois:
         raise DraftError("no RoI names given: a draft needs at least one place to spawn")
-    if not 1 <= max_groups <= 16 or not 1 <= max_count <= 500 or not 1 <= max_depth <= 6:
-        raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..16), "
-                         f"max_count={max_count} (1..500), max_depth={max_depth} (1..6)")
+    if not (1 <= max_groups <= 16 and 1 <= max_count <= 500 and 1 <= max_depth <= 6 and 1 <= max_children <= 8):
+        raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..16), max_count={max_count} (1..500), "
+                         f"max_depth={max_depth} (1..6), max_children={max_children} (1..8)")
     leaves = [name for name, spec in specs.items() if spec.category not in BRANCH_CATEGORIES]
     branches = [name for name, spec in specs.items() if spec.category in BRANCH_CATEGORIES]
     if not leaves:
         raise DraftError(f"the node types {', '.join(specs)} include no action or condition, so no tree can end")
     defs: dict[str, Any] = {}
     for name in leaves:
-        defs[name] = _node_schema(specs[name], rois, None)
+        defs[name] = _node_schema(specs[name], rois, None, max_children)
     for level in range(max_depth, 0, -1):
         options = [{"$ref": f"#/$defs/{name}"} for name in leaves]
         if level < max_depth:
             for name in branches:
-                defs[f"{name}_{level}"] = _node_schema(specs[name], rois, f"#/$defs/level_{level + 1}")
+                defs[f"{name}_{level}"] = _node_schema(specs[name], rois, f"#/$defs/level_{level + 1}", max_children)
                 options.append({"$ref": f"#/$defs/{name}_{level}"})
         defs[f"level_{level}"] = {"anyOf": options}
     group = {
@@ -225,10 +225,12 @@ def _reject_constant(name: str) -> Any:
 
 
 class _Parser:
-    def __init__(self, specs: dict[str, Any], rois: list[str], max_groups: int, max_count: int, max_depth: int):
+    def __init__(self, specs: dict[str, Any], rois: list[str], max_groups: int, max_count: int, max_depth: int,
+                 max_children: int):
         self.specs, self.rois = specs, rois
         self.roi_set = set(rois)
         self.max_groups, self.max_count, self.max_depth = max_groups, max_count, max_depth
+        self.max_children = max_children
 
     def fail(self, path: str, problem: str) -> DraftError:
         return DraftError(f"draft {path}: {problem}")
@@ -295,7 +297,7 @@ class _Parser:
         if branch:
             if level >= self.max_depth:
                 raise self.fail(path, f"{kind} needs children, but the tree may only be {self.max_depth} levels deep")
-            most = 1 if spec.category == "decorator" else MAX_CHILDREN
+            most = 1 if spec.category == "decorator" else self.max_children
             items = value["children"]
             if not isinstance(items, list) or not 1 <= len(items) <= most:
                 raise self.fail(f"{path}.children", f"{kind} takes {'exactly 1 child' if most == 1 else f'1..{most} children'}")
@@ -326,7 +328,8 @@ class _Parser:
 
 
 def parse_draft(text: str, node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6,
-                max_count: int = 60, max_depth: int = 3, nodes: Mapping[str, Any] | None = None) -> Draft:
+                max_count: int = 60, max_depth: int = 3, max_children: int = MAX_CHILDREN,
+                nodes: Mapping[str, Any] | None = None) -> Draft:
     """Strictly parse and validate the model's JSON; DraftError names the offending JSON path."""
     specs = _specs(node_names, nodes)
     rois = list(dict.fromkeys(roi_names))
@@ -335,7 +338,7 @@ def parse_draft(text: str, node_names: Iterable[str], roi_names: Iterable[str], 
     except json.JSONDecodeError as error:
         snippet = text[max(0, error.pos - 30):error.pos + 30].replace("\n", " ")
         raise DraftError(f"draft is not valid JSON ({error.msg} at character {error.pos}: ...{snippet}...)") from None
-    return _Parser(specs, rois, max_groups, max_count, max_depth).draft(data)
+    return _Parser(specs, rois, max_groups, max_count, max_depth, max_children).draft(data)
 
 
 def node_to_dict(node: DraftNode) -> dict[str, Any]:
