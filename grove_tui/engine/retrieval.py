@@ -118,6 +118,35 @@ def embed_texts(texts: Sequence[str]) -> np.ndarray:
     return np.asarray(vectors, dtype=np.float32)
 
 
+_query_lock = threading.Lock()
+
+
+@lru_cache(maxsize=512)
+def _embed_query_cached(text: str) -> bytes:
+    import torch
+
+    model = embedding_model()
+    with _query_lock, torch.inference_mode():
+        # One short sentence: intra-op threads only add hand-off cost, and on a shared machine the
+        # second thread often waits for a busy core (measured: 20 ms with one thread vs 240 ms with two
+        # under load). The setting is process-wide, hence the lock and the restore.
+        threads = torch.get_num_threads()
+        torch.set_num_threads(1)
+        try:
+            preprocess = getattr(model, "preprocess", None) or model.tokenize  # renamed in sentence-transformers 5
+            features = preprocess([text])
+            vector = model(features)["sentence_embedding"]
+            vector = torch.nn.functional.normalize(vector, dim=1)
+        finally:
+            torch.set_num_threads(threads)
+    return vector.numpy().astype(np.float32).tobytes()
+
+
+def embed_query(text: str) -> np.ndarray:
+    """The unit-length embedding of one prompt, shape (1, dim); repeated prompts are free."""
+    return np.frombuffer(_embed_query_cached(text), dtype=np.float32).reshape(1, -1)
+
+
 @lru_cache(maxsize=1)
 def embedding_function_class() -> type:
     """A registered chromadb EmbeddingFunction wrapping the packaged model.
@@ -256,6 +285,7 @@ class NodeRetriever:
         self._lock = threading.RLock()
         self._client: Any = None
         self._collection: Any = None
+        self._vector_count = 0
         self.last_index_state: IndexState | None = None
 
     # ---- index lifecycle
@@ -301,6 +331,7 @@ class NodeRetriever:
                 self._discard_index_dir(f"{type(exc).__name__}: {exc}")
                 state = self._open_or_build(force=True)
             self.last_index_state = state
+            self._vector_count = state.vectors
             return state
 
     def _open_or_build(self, force: bool) -> IndexState:
@@ -349,16 +380,18 @@ class NodeRetriever:
             return []
         preset_name = _normalise_preset(preset)
         self.ensure_index()
-        query_vector = embed_texts([prompt])
+        query_vector = embed_query(prompt)
         where = {_preset_key(preset_name): True} if preset_name else None
         try:
-            result = self._collection.query(query_embeddings=query_vector, n_results=self._collection.count(),
-                                            where=where, include=["metadatas", "distances"])
+            # Every vector of the allowed documents comes back (a few hundred), so each document gets
+            # its best similarity. Ids carry the document name: fetching metadatas costs more than the search.
+            result = self._collection.query(query_embeddings=query_vector, n_results=self._vector_count,
+                                            where=where, include=["distances"])
         except Exception as exc:
             raise RetrievalError(f"retrieval index {self.index_dir}: query failed: {exc}") from exc
         similarity: dict[str, float] = {}
-        for metadata, distance in zip(result["metadatas"][0], result["distances"][0]):
-            name = metadata["document"]
+        for vector_id, distance in zip(result["ids"][0], result["distances"][0]):
+            name = vector_id.rpartition("#")[0]
             similarity[name] = max(similarity.get(name, -1.0), 1.0 - float(distance))
         prompt_tokens = frozenset(content_tokens(prompt))
         prioritised = self.database.priorities.get(preset_name, frozenset()) if preset_name else frozenset()
