@@ -337,3 +337,29 @@ def test_plan_cache_reuses_plans_per_world_resolution_and_endpoints():
     assert cache.plan("rooms", planner, (1.0, 1.0), (5.0, 5.0)) is not first
     with pytest.raises(ValueError):
         first[0, 0] = 9.0  # cached paths are read-only so callers cannot corrupt them
+
+
+def test_landmark_heuristic_never_exceeds_the_grid_distance():
+    grid = make_grid(maze(8, seed=9))
+    planner = ThetaStarPlanner(grid, landmarks=4)
+    free = np.argwhere(~grid.occupied)
+    rng = np.random.default_rng(2)
+    goal = tuple(free[rng.integers(len(free))])
+    table = planner.landmarks
+    width = grid.occupied.shape[1]
+    goal_row = table[goal[0] * width + goal[1]]
+    for cell in free[rng.choice(len(free), 60, replace=False)]:
+        bound = float(np.max(np.abs(goal_row - table[cell[0] * width + cell[1]])))
+        assert bound <= reference_astar_length(grid, cell, goal) / grid.resolution + 1e-3
+    # and the landmarks carry information: in a maze the bound beats the straight-line distance
+    far = max(free, key=lambda c: float(np.max(np.abs(goal_row - table[c[0] * width + c[1]]))))
+    assert np.max(np.abs(goal_row - table[far[0] * width + far[1]])) > math.dist(far, goal) * 1.5
+
+
+def test_plan_cache_keeps_one_planner_per_grid():
+    grid = make_grid(rooms_with_doors())
+    cache = PlanCache()
+    planner = cache.planner(grid, landmarks=2)
+    assert cache.planner(grid) is planner
+    other = make_grid(rooms_with_doors(), resolution=0.2)
+    assert cache.planner(other, landmarks=0) is not planner

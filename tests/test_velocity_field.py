@@ -169,7 +169,7 @@ def test_plan_cache_builds_a_field_once(rooms_field):
 def test_world_fields_lead_every_cell_to_each_exit(name):
     world = load_world(name)
     grid = build_grid(world, resolution=0.1)
-    planner = ThetaStarPlanner(grid)
+    planner = ThetaStarPlanner(grid, landmarks=0)  # fields use only the grid maps
     exits = world.exits()
     assert exits, f"world {name} has no exit"
     start = world.zones[len(world.zones) // 2].anchor

@@ -7,12 +7,16 @@ corner (a conservative supercover). The 8-connected expansion uses the same rule
 is allowed only when both orthogonal neighbours are free and A*, Theta* and the line-of-sight test
 agree on what "collision-free" means.
 
-Two deviations from textbook Theta* make it fast and safe:
+Three deviations from textbook Theta* make it fast and safe:
 - line of sight jumps over open space using the Euclidean clearance of each cell (distance to the
   nearest occupied cell), so a long check costs a few steps instead of one per column;
 - improved vertices are re-opened. With that, the returned path is never longer than the shortest
-  8-connected grid path (Theta*'s own shortcut only ever shortens the A* relaxation), which the
-  property tests check against a reference A*.
+  8-connected grid path: Theta*'s shortcut only ever shortens the A* relaxation, so the argument
+  for A* goes through for any heuristic that never exceeds the 8-connected distance to the goal
+  (the property tests check it against a reference A*);
+- that freedom buys a much stronger heuristic than the Euclidean distance: ALT landmark bounds
+  (Goldberg & Harrelson 2005) from any-angle distance maps computed once per grid, which keep the
+  search from flooding every room that is close to the goal as the crow flies.
 """
 
 from __future__ import annotations
@@ -200,11 +204,116 @@ def _heap_pop(hf, hg, hn, size):
 
 
 @numba.njit(cache=True, nogil=True)
-def theta_star_cells(occupied, clearance, sr, sc, gr, gc, g_cost, parent, stamp, query):
+def any_angle_distances(occupied, clearance, sr, sc):
+    """Theta*-style Dijkstra from cell (sr, sc) over its whole free region.
+
+    Returns flat (H * W) distances in cells (inf where unreachable) and parents (-1 there): every
+    cell's parent is a cell in line of sight, closer to the source. Re-opening improved cells
+    makes the result edge-consistent: for every allowed 8-connected step u -> v,
+    d(v) <= d(u) + |u v|, so differences of these maps never exceed the 8-connected distance.
+    """
+    height, width = occupied.shape
+    distance = np.full(height * width, np.inf)
+    parent = np.full(height * width, -1, dtype=np.int64)
+    source = sr * width + sc
+    distance[source] = 0.0
+    parent[source] = source
+    capacity = 4096
+    hf = np.empty(capacity, dtype=np.float64)
+    hg = np.empty(capacity, dtype=np.float64)
+    hn = np.empty(capacity, dtype=np.int64)
+    size = _heap_push(hf, hg, hn, 0, 0.0, 0.0, source)
+    while size > 0:
+        node = hn[0]
+        node_d = hf[0]
+        size = _heap_pop(hf, hg, hn, size)
+        if node_d > distance[node]:
+            continue
+        r = node // width
+        c = node % width
+        p = parent[node]
+        pr = p // width
+        pc = p % width
+        for k in range(8):
+            nr = r + _NEIGHBOUR_DR[k]
+            nc = c + _NEIGHBOUR_DC[k]
+            if not _step_allowed(occupied, r, c, nr, nc):
+                continue
+            nb = nr * width + nc
+            if nb == p:
+                continue
+            via_parent = distance[p] + math.hypot(nr - pr, nc - pc)
+            if distance[nb] <= via_parent:
+                continue
+            if p != node and line_of_sight(occupied, clearance, pr, pc, nr, nc):
+                candidate = via_parent
+                candidate_parent = p
+            else:
+                candidate = node_d + (SQRT2 if k >= 4 else 1.0)
+                candidate_parent = node
+            if candidate >= distance[nb]:
+                continue
+            distance[nb] = candidate
+            parent[nb] = candidate_parent
+            if size >= capacity:
+                capacity *= 2
+                hf2 = np.empty(capacity, dtype=np.float64)
+                hg2 = np.empty(capacity, dtype=np.float64)
+                hn2 = np.empty(capacity, dtype=np.int64)
+                hf2[:size] = hf[:size]
+                hg2[:size] = hg[:size]
+                hn2[:size] = hn[:size]
+                hf, hg, hn = hf2, hg2, hn2
+            size = _heap_push(hf, hg, hn, size, candidate, -candidate, nb)
+    return distance, parent
+
+
+@numba.njit(cache=True, nogil=True)
+def landmark_table(occupied, clearance, seed_r, seed_c, count):
+    """(H * W, count) float32 any-angle distances from `count` landmarks spread by farthest-point selection."""
+    height, width = occupied.shape
+    table = np.full((height * width, count), np.inf, dtype=np.float32)
+    spread, _ = any_angle_distances(occupied, clearance, seed_r, seed_c)
+    for l in range(count):
+        best = -1
+        best_d = -1.0
+        for i in range(height * width):
+            if spread[i] < np.inf and spread[i] > best_d:
+                best_d = spread[i]
+                best = i
+        if best < 0 or best_d <= 0.0:
+            break
+        d, _ = any_angle_distances(occupied, clearance, best // width, best % width)
+        for i in range(height * width):
+            table[i, l] = d[i]
+            if d[i] < spread[i] or l == 0:
+                spread[i] = d[i]
+    return table
+
+
+@numba.njit(cache=True, nogil=True, inline="always")
+def _heuristic(landmarks, goal_row, use_landmarks, node, nr, nc, gr, gc):
+    # Euclidean, raised by the landmark (ALT) bound. Both are lower bounds of the 8-connected grid
+    # distance to the goal (the landmark maps are edge-consistent), which is all the "never longer
+    # than A*" argument needs; being any-angle distances they also stay nearly consistent with
+    # Theta*'s own costs, so few vertices are re-opened. The margin absorbs float32 rounding.
+    h = math.sqrt((gr - nr) * (gr - nr) + (gc - nc) * (gc - nc))
+    if use_landmarks:
+        row = landmarks[node]
+        for l in range(row.shape[0]):
+            bound = abs(goal_row[l] - row[l]) - 0.01
+            if bound > h:
+                h = bound
+    return h
+
+
+@numba.njit(cache=True, nogil=True)
+def theta_star_cells(occupied, clearance, landmarks, sr, sc, gr, gc, g_cost, parent, touched):
     """Theta* from cell (sr, sc) to (gr, gc); returns the (K, 2) int64 array of path cells, empty if none.
 
-    `g_cost`, `parent` and `stamp` are flat work buffers of H * W entries reused across queries: a
-    vertex's g and parent are valid only when stamp == query, so nothing needs clearing per query.
+    `g_cost` (all inf between queries), `parent` and `touched` are flat work buffers of H * W
+    entries reused across queries; only the cells a query touched are reset to inf at its end, so
+    a query costs what it explores, not the grid size.
     """
     height, width = occupied.shape
     start = sr * width + sc
@@ -215,8 +324,12 @@ def theta_star_cells(occupied, clearance, sr, sc, gr, gc, g_cost, parent, stamp,
     hn = np.empty(capacity, dtype=np.int64)
     g_cost[start] = 0.0
     parent[start] = start
-    stamp[start] = query
-    size = _heap_push(hf, hg, hn, 0, math.hypot(gr - sr, gc - sc), 0.0, start)
+    touched[0] = start
+    touched_count = 1
+    goal_row = landmarks[goal]
+    use_landmarks = landmarks.shape[1] > 0 and goal_row[0] < np.inf
+    size = _heap_push(hf, hg, hn, 0, _heuristic(landmarks, goal_row, use_landmarks, start, sr, sc, gr, gc),
+                      0.0, start)
     found = False
     while size > 0:
         node = hn[0]
@@ -241,11 +354,11 @@ def theta_star_cells(occupied, clearance, sr, sc, gr, gc, g_cost, parent, stamp,
             nb = nr * width + nc
             if nb == p:
                 continue
-            known = stamp[nb] == query
-            via_parent = g_p + math.hypot(nr - pr, nc - pc)
+            g_known = g_cost[nb]
+            via_parent = g_p + math.sqrt((nr - pr) * (nr - pr) + (nc - pc) * (nc - pc))
             # Neither relaxation can beat g(parent) + |parent n| (triangle inequality): skip the
             # line-of-sight test when the neighbour is already at least that good.
-            if known and g_cost[nb] <= via_parent:
+            if g_known <= via_parent:
                 continue
             if p != node and line_of_sight(occupied, clearance, pr, pc, nr, nc):
                 candidate = via_parent
@@ -254,11 +367,13 @@ def theta_star_cells(occupied, clearance, sr, sc, gr, gc, g_cost, parent, stamp,
                 step = SQRT2 if (nr != r and nc != c) else 1.0
                 candidate = node_g + step
                 candidate_parent = node
-            if known and candidate >= g_cost[nb]:
+            if candidate >= g_known:
                 continue
+            if g_known == np.inf:
+                touched[touched_count] = nb
+                touched_count += 1
             g_cost[nb] = candidate
             parent[nb] = candidate_parent
-            stamp[nb] = query
             if size >= capacity:
                 capacity *= 2
                 hf2 = np.empty(capacity, dtype=np.float64)
@@ -268,7 +383,10 @@ def theta_star_cells(occupied, clearance, sr, sc, gr, gc, g_cost, parent, stamp,
                 hg2[:size] = hg[:size]
                 hn2[:size] = hn[:size]
                 hf, hg, hn = hf2, hg2, hn2
-            size = _heap_push(hf, hg, hn, size, candidate + math.hypot(gr - nr, gc - nc), candidate, nb)
+            h = _heuristic(landmarks, goal_row, use_landmarks, nb, nr, nc, gr, gc)
+            size = _heap_push(hf, hg, hn, size, candidate + h, candidate, nb)
+    for i in range(touched_count):
+        g_cost[touched[i]] = np.inf
     if not found:
         return np.empty((0, 2), dtype=np.int64)
     count = 1
@@ -301,7 +419,7 @@ class ThetaStarPlanner:
     Thread-safe: queries share work buffers behind a lock (the kernels release the GIL).
     """
 
-    def __init__(self, grid):
+    def __init__(self, grid, landmarks: int = 8):
         self.grid = grid
         self.occupied = np.ascontiguousarray(grid.occupied, dtype=np.bool_)
         if self.occupied.ndim != 2 or self.occupied.size == 0:
@@ -311,12 +429,22 @@ class ThetaStarPlanner:
         self.centre_x, self.centre_y = (float(v) for v in grid.cell_to_world(0, 0))
         self.clearance = clearance_map(self.occupied)
         self.components = connected_components(self.occupied)
+        self.landmarks = self._landmarks(landmarks)
         cells = self.occupied.size
-        self._g_cost = np.zeros(cells, dtype=np.float64)
+        self._g_cost = np.full(cells, np.inf)
         self._parent = np.zeros(cells, dtype=np.int32)
-        self._stamp = np.zeros(cells, dtype=np.int32)
-        self._query = 0
+        self._touched = np.zeros(cells, dtype=np.int32)
         self._lock = threading.Lock()
+
+    def _landmarks(self, count: int) -> np.ndarray:
+        """Any-angle distances from landmarks in the largest free region (none when there is no free cell)."""
+        labels = self.components
+        if count <= 0 or labels.max() < 0:
+            return np.zeros((labels.size, 0), dtype=np.float32)
+        biggest = np.bincount(labels[labels >= 0]).argmax()
+        seed = np.flatnonzero(labels.ravel() == biggest)[0]
+        width = labels.shape[1]
+        return landmark_table(self.occupied, self.clearance, seed // width, seed % width, count)
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -368,9 +496,8 @@ class ThetaStarPlanner:
         if self.components[sr, sc] != self.components[gr, gc]:
             return np.empty((0, 2), dtype=np.int64)
         with self._lock:
-            self._query += 1
-            return theta_star_cells(self.occupied, self.clearance, sr, sc, gr, gc,
-                                    self._g_cost, self._parent, self._stamp, self._query)
+            return theta_star_cells(self.occupied, self.clearance, self.landmarks, sr, sc, gr, gc,
+                                    self._g_cost, self._parent, self._touched)
 
     def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
         """(K, 2) float64 world points from `start` to `goal` inclusive, every segment collision-free.
@@ -488,6 +615,16 @@ class PlanCache:
 
     def __len__(self) -> int:
         return len(self._entries)
+
+    def planner(self, grid, landmarks: int = 8) -> ThetaStarPlanner:
+        """One planner per (world, resolution, inflation): its landmark maps cost seconds on big grids."""
+        key = (str(getattr(grid, "world_name", "")), round(float(grid.resolution), 6),
+               round(float(getattr(grid, "inflation", 0.0)), 6), "planner", grid.occupied.shape)
+        planner = self.get(key)
+        if planner is None or planner.grid is not grid and not np.array_equal(planner.occupied, grid.occupied):
+            planner = ThetaStarPlanner(grid, landmarks=landmarks)
+            self.put(key, planner)
+        return planner
 
     def plan(self, world_name: str, planner: ThetaStarPlanner, start, goal,
              start_label: str = "start", goal_label: str = "goal") -> np.ndarray:

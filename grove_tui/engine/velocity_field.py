@@ -25,14 +25,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from grove_tui.engine.atomic import write_bytes_atomic
-from grove_tui.engine.planner import (
-    PlanningError,
-    ThetaStarPlanner,
-    _heap_pop,
-    _heap_push,
-    _step_allowed,
-    line_of_sight,
-)
+from grove_tui.engine.planner import PlanningError, ThetaStarPlanner, any_angle_distances, line_of_sight
 
 _DR = np.array([0, 0, 1, -1, 1, 1, -1, -1], dtype=np.int64)
 _DC = np.array([1, -1, 0, 0, 1, -1, 1, -1], dtype=np.int64)
@@ -84,65 +77,6 @@ class VelocityField:
 
 
 # ---- kernels -----------------------------------------------------------------------------------
-
-
-@numba.njit(cache=True, nogil=True)
-def geodesic_parents(occupied, clearance, er, ec):
-    """Any-angle Dijkstra from cell (er, ec): (distance (H, W) in cells, inf where unreachable; parent flat index)."""
-    height, width = occupied.shape
-    distance = np.full(height * width, np.inf)
-    parent = np.full(height * width, -1, dtype=np.int64)
-    source = er * width + ec
-    distance[source] = 0.0
-    parent[source] = source
-    capacity = 4096
-    hf = np.empty(capacity, dtype=np.float64)
-    hg = np.empty(capacity, dtype=np.float64)
-    hn = np.empty(capacity, dtype=np.int64)
-    size = _heap_push(hf, hg, hn, 0, 0.0, 0.0, source)
-    while size > 0:
-        node = hn[0]
-        node_d = hf[0]
-        size = _heap_pop(hf, hg, hn, size)
-        if node_d > distance[node]:
-            continue
-        r = node // width
-        c = node % width
-        p = parent[node]
-        pr = p // width
-        pc = p % width
-        for k in range(8):
-            nr = r + _DR[k]
-            nc = c + _DC[k]
-            if not _step_allowed(occupied, r, c, nr, nc):
-                continue
-            nb = nr * width + nc
-            if nb == p:
-                continue
-            via_parent = distance[p] + math.hypot(nr - pr, nc - pc)
-            if distance[nb] <= via_parent:
-                continue
-            if p != node and line_of_sight(occupied, clearance, pr, pc, nr, nc):
-                candidate = via_parent
-                candidate_parent = p
-            else:
-                candidate = node_d + (1.4142135623730951 if (nr != r and nc != c) else 1.0)
-                candidate_parent = node
-            if candidate >= distance[nb]:
-                continue
-            distance[nb] = candidate
-            parent[nb] = candidate_parent
-            if size >= capacity:
-                capacity *= 2
-                hf2 = np.empty(capacity, dtype=np.float64)
-                hg2 = np.empty(capacity, dtype=np.float64)
-                hn2 = np.empty(capacity, dtype=np.int64)
-                hf2[:size] = hf[:size]
-                hg2[:size] = hg[:size]
-                hn2[:size] = hn[:size]
-                hf, hg, hn = hf2, hg2, hn2
-            size = _heap_push(hf, hg, hn, size, candidate, -candidate, nb)
-    return distance.reshape((height, width)), parent.reshape((height, width))
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
@@ -355,12 +289,13 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     Every free cell connected to the exit gets a unit vector; the rest stay zero. An exit point
     inside an obstacle is taken to the nearest free cell within one cell (PlanningError otherwise).
     """
-    planner = planner or ThetaStarPlanner(grid)
+    planner = planner or ThetaStarPlanner(grid, landmarks=0)  # only its grid maps are used here
     occupied = planner.occupied
     height, width = occupied.shape
     ex, ey = float(exit_point[0]), float(exit_point[1])
     er, ec = planner.snap(ex, ey, exit_label, "exit")
-    _distance, parent = geodesic_parents(occupied, planner.clearance, er, ec)
+    _distance, parent = any_angle_distances(occupied, planner.clearance, er, ec)
+    parent = parent.reshape(height, width)
     res = planner.resolution
     exit_cx = (ex - planner.centre_x) / res
     exit_cy = (ey - planner.centre_y) / res
