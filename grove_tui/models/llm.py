@@ -68,6 +68,7 @@ class Generation:
     seconds: float
     first_token_seconds: float | None  # request sent -> first token of the accepted attempt
     attempts: int = 1
+    cached_tokens: int = 0  # prompt tokens served from the worker's live KV cache (shared prefix)
 
 
 class LocalLLM:
@@ -173,8 +174,17 @@ class LocalLLM:
                           f"it restarts on the next request. llama.cpp's log: {self.log_path}")
 
     def close(self) -> None:
-        with self._lock:
-            self._discard_worker()
+        """Stop the worker. A generation running in another thread ends with ModelError."""
+        if self._lock.acquire(timeout=CANCEL_GRACE_SECONDS):
+            try:
+                self._discard_worker()
+            finally:
+                self._lock.release()
+            return
+        # Busy: end the process so the generating thread sees the pipe close and returns promptly.
+        process = self._process
+        if process is not None and process.is_alive():
+            process.terminate()
 
     def __enter__(self) -> LocalLLM:
         return self
@@ -253,7 +263,7 @@ class LocalLLM:
                         text=result["text"], finish_reason="stop", prompt_tokens=int(result["prompt_tokens"]),
                         completion_tokens=spent_tokens, seconds=time.monotonic() - started,
                         first_token_seconds=None if first_token_at is None else first_token_at - sent,
-                        attempts=attempt)
+                        attempts=attempt, cached_tokens=int(result.get("cached_tokens", 0)))
                 room = self._ready_info.get("n_ctx", self.n_ctx) - int(result["prompt_tokens"])
                 budget = max(1, min(budget * 2, room))
         raise ModelError(f"the {self.role} model did not finish its answer within {budget} tokens "

@@ -139,6 +139,13 @@ class _Server:
         llm = self.llm
         grammar = LlamaGrammar.from_string(request["grammar"], verbose=False) if request.get("grammar") else None
         llm.set_seed(int(request["seed"]))
+        # What llama.cpp will keep from the live KV cache (generate() rewinds to the longest shared prefix).
+        reused = 0
+        for cached_token, token in zip(llm._input_ids.tolist(), tokens):
+            if cached_token != token:
+                break
+            reused += 1
+        reused = min(reused, len(tokens) - 1)
         self.conn.send(("started", len(tokens)))
         decoder = codecs.getincrementaldecoder("utf-8")(errors="replace")
         pieces: list[str] = []
@@ -172,4 +179,5 @@ class _Server:
             self.conn.send(("token", tail))
         self.conn.send(("done", {"text": "".join(pieces), "finish_reason": finish_reason,
                                  "prompt_tokens": len(tokens), "completion_tokens": completion_tokens,
+                                 "cached_tokens": reused,
                                  "worker_seconds": time.monotonic() - started}))
