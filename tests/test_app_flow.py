@@ -69,13 +69,14 @@ async def test_generate_inspect_play_and_export(tmp_path):
 
         # moving through the tree highlights the agent's route on the map
         world_map = inspect.query_one("#inspect-map", MapView)
-        plain = world_map._styles.copy()
-        tree.focus()
-        await pilot.press("down")
+        plain_styles, _ = world_map.raster.compose(inspect._overlay)[1], None
         await wait_until(pilot, lambda: inspect._selected_node is not None and inspect._selected_node.kind == "agent",
-                         what="agent highlighted")
-        assert (world_map._styles != plain).any()
-        assert "agent" in str(inspect.query_one("#node-detail", Static).render())
+                         what="first agent highlighted")
+        assert (world_map._styles != plain_styles).any(), "the agent's route is not highlighted"
+        assert "agent 1" in str(inspect.query_one("#node-detail", Static).render())
+        await pilot.press("down", "down")
+        await wait_until(pilot, lambda: inspect._selected_node.kind == "node", what="a tree node highlighted")
+        assert inspect._selected_node.name in str(inspect.query_one("#node-detail", Static).render())
 
         # XML toggle
         await pilot.press("x")
@@ -114,10 +115,15 @@ async def test_generate_inspect_play_and_export(tmp_path):
         assert (files["bundle"].path / "scenario.yaml").is_file()
         assert files["trajectories"].path.is_file(), files["trajectories"].note
         assert files["metrics"].path.is_file(), files["metrics"].note
-        assert files["hunav"].path.is_file(), files["hunav"].note
+        assert "events" in files and "picture" in files and "hunav" in files
         assert str(app.screen.out_dir).startswith(str(tmp_path / "exports"))
         shown = str(app.screen.query_one("#export-files", Static).render())
-        assert str(files["bundle"].path) in shown
+        assert str(files["bundle"].path) in shown and str(files["metrics"].path) in shown
+        # every format is either written or says why not, in the dialog
+        for exported in files.values():
+            assert exported.path.exists()
+            if exported.note.startswith("failed"):
+                assert exported.note[:40] in shown
         await pilot.press("escape")
         assert isinstance(app.screen, SimulationScreen)
         await pilot.press("escape")

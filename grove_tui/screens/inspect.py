@@ -145,7 +145,12 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
         world_map = self.query_one("#inspect-map", MapView)
         world_map.set_world(self.generated.world)
         world_map.set_overlay(self._overlay)
-        self.query_one("#bt-tree", BTTree).focus()
+        tree = self.query_one("#bt-tree", BTTree)
+        tree.focus()
+        if tree.agent_nodes:
+            # Start on the first agent so its route is highlighted straight away.
+            first_agent = tree.agent_nodes[min(tree.agent_nodes)]
+            self.call_after_refresh(tree.move_cursor, first_agent)
 
     def _build_tree(self) -> None:
         tree = self.query_one("#bt-tree", BTTree)
