@@ -118,3 +118,26 @@ def test_shipped_suite_covers_every_world_and_preset_with_real_names():
         for name in case.expect.targets + case.expect.spawns:
             world.find(name)  # raises on a name the world does not have
     assert {"two-groups", "vague", "synonym"} <= {t for c in cases for t in c.tags}
+
+
+def test_roaming_agents_are_grounded_by_the_zone_they_roam(hospital):
+    from grove_tui.engine.scenario import AgentSpec
+
+    agent = AgentSpec(id=1, group=-1, start=(30.0, 5.0), goals=(), zone="entrance_lobby", tree="trees/agent_1.xml")
+    tree = ('<root BTCPP_format="4" main_tree_to_execute="a"><BehaviorTree ID="a">'
+            '<Wander zone="cafeteria" duration="30"/></BehaviorTree></root>')
+    assert grounding(hospital, [agent], Expectation(targets=("cafeteria",)), {1: tree})["target_grounding"] == 1.0
+    assert grounding(hospital, [agent], Expectation(targets=("food_counter",)), {1: tree})["target_grounding"] == 1.0
+    assert grounding(hospital, [agent], Expectation(targets=("pharmacy",)), {1: tree})["target_grounding"] == 0.0
+
+
+def test_a_failed_generation_scores_zero_not_missing():
+    from grove_tui.engine.evaluation import CaseResult, summarize
+
+    case = EvalCase("c", "hospital", "normal", "p", 0, Expectation(targets=("pharmacy",), count=3))
+    ok = CaseResult(case, "grove", {"target_grounding": 1.0, "count_accuracy": 1.0})
+    failed = CaseResult(case, "vanilla", error="context too small")
+    summary = summarize([ok, failed])
+    assert summary[("normal", "vanilla")]["target_grounding"] == 0.0
+    assert summary[("normal", "vanilla")]["failed"] == 1.0
+    assert "spawn_grounding" not in summary[("normal", "vanilla")]  # the case has no spawn expectation

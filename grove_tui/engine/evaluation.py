@@ -19,6 +19,7 @@ Baselines run on the same cases and seeds:
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -135,13 +136,44 @@ def _matches_roi(world: Any, point: Sequence[float], names: Sequence[str]) -> bo
     return False
 
 
-def grounding(world: Any, agents: Sequence[AgentSpec], expect: Expectation) -> dict[str, float]:
-    """Shares of agents whose final target / spawn lie where the case says."""
+def _zone_matches(world: Any, zone_name: str, names: Sequence[str]) -> bool:
+    """A zone matches when it is named, or holds a named door or entity."""
+    for name in names:
+        if name == zone_name:
+            return True
+        try:
+            roi = world.find(name)
+        except GroveError:
+            continue
+        if getattr(roi, "zone", None) == zone_name:
+            return True
+    return False
+
+
+def _roaming_zone(tree_xml: str | None) -> str | None:
+    if not tree_xml:
+        return None
+    root = etree.fromstring(tree_xml.encode("utf-8"), etree.XMLParser(resolve_entities=False, no_network=True))
+    for el in root.iter("Wander"):
+        if el.get("zone"):
+            return el.get("zone")
+    return None
+
+
+def grounding(world: Any, agents: Sequence[AgentSpec], expect: Expectation,
+              trees: Mapping[int, str] | None = None) -> dict[str, float]:
+    """Shares of agents whose target / spawn lie where the case says. An agent's target is its last
+    goal; an agent with no fixed goal (roaming) targets the zone it roams, else its scenario zone."""
     out: dict[str, float] = {}
     if expect.targets:
-        scored = [a for a in agents if a.goals]
-        hits = sum(_matches_roi(world, a.goals[-1], expect.targets) for a in scored)
-        out["target_grounding"] = hits / len(scored) if scored else 0.0
+        hits = 0
+        for a in agents:
+            if a.goals:
+                hits += _matches_roi(world, a.goals[-1], expect.targets)
+            else:
+                zone = _roaming_zone((trees or {}).get(a.id)) or a.zone
+                hits += _zone_matches(world, zone, expect.targets)
+        out["target_grounding"] = hits / len(agents) if agents else 0.0
     if expect.spawns:
         hits = sum(_matches_roi(world, a.start, expect.spawns) for a in agents)
         out["spawn_grounding"] = hits / len(agents) if agents else 0.0
@@ -281,7 +313,7 @@ def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, 
                    traj: Trajectories | None, events: Sequence[SimEvent],
                    report: Mapping[str, Any] | None = None) -> CaseResult:
     scores: dict[str, float] = {"agents": float(len(scenario.agents))}
-    scores.update(grounding(world, scenario.agents, case.expect))
+    scores.update(grounding(world, scenario.agents, case.expect, trees))
     count = count_accuracy(scenario.agents, case.expect)
     if count is not None:
         scores["count_accuracy"] = count
@@ -297,3 +329,305 @@ def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, 
     scores["completion_tokens"] = float(
         sum(i.get("completion_tokens", 0) for i in (report or {}).get("stages", {}).values()))
     return CaseResult(case=case, method=method, scores=scores)
+
+
+# --- running a suite -----------------------------------------------------------------------------
+
+_XML_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+
+
+def _rewrite_trees(trees: Mapping[str, str], agents: Sequence[AgentSpec], edit) -> dict[str, str]:
+    """Apply `edit(agent, root)` to each agent's tree; returns relative path -> new XML."""
+    by_path = {a.tree: a for a in agents}
+    out = {}
+    for rel, xml in trees.items():
+        root = etree.fromstring(xml.encode("utf-8"), _XML_PARSER)
+        agent = by_path.get(rel)
+        if agent is not None:
+            edit(agent, root)
+        out[rel] = etree.tostring(root, pretty_print=True, xml_declaration=True, encoding="UTF-8").decode("utf-8")
+    return out
+
+
+def _navigation_tags() -> frozenset[str]:
+    from grove_tui.engine.bt.manifest import NODES
+
+    return frozenset(name for name, spec in NODES.items() if spec.navigates)
+
+
+def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
+    """The `no-planner` baseline: straight SFM goals, as HuNavSim runs behavior trees. Injected
+    waypoints are dropped and velocity fields are replaced by a straight walk to the exit."""
+    nav = _navigation_tags()
+
+    def edit(agent: AgentSpec, root: etree._Element) -> None:
+        for el in list(root.iter()):
+            if not isinstance(el.tag, str):
+                continue
+            if el.tag in nav and el.get("waypoints"):
+                el.set("waypoints", "")
+            if el.tag == "FollowVelocityField":
+                goto = etree.Element("GoTo", {"target": el.get("exit", "exit"), "x": el.get("x"), "y": el.get("y"),
+                                              "waypoints": "", "agent_id": "{id}"})
+                goto.tail = el.tail
+                el.getparent().replace(el, goto)
+
+    new_trees = _rewrite_trees(trees, scenario.agents, edit)
+    agents = tuple(dataclasses.replace(a, goals=a.goals[-1:]) for a in scenario.agents)
+    return dataclasses.replace(scenario, agents=agents, fields={}), new_trees
+
+
+def decoupled(scenario: Scenario, trees: Mapping[str, str], world: Any, grid: Any,
+              planner: Any) -> tuple[Scenario, dict[str, str]]:
+    """The `decoupled` baseline: same population and behaviors, but starts and goals drawn from zone
+    centres independently of the prompt; paths are still planned (Text-Crowd plans its roadmap too)."""
+    from grove_tui.engine.waypoints import inject_waypoints
+
+    agents = decoupled_agents(world, scenario.agents, scenario.seed, grid)
+    by_id = {a.id: a for a in agents}
+    nav = _navigation_tags()
+
+    def edit(agent: AgentSpec, root: etree._Element) -> None:
+        goal = by_id[agent.id].goals[-1]
+        for el in list(root.iter()):
+            if not isinstance(el.tag, str):
+                continue
+            if el.tag == "FollowVelocityField":
+                goto = etree.Element("GoTo", {"target": "sampled", "x": f"{goal[0]:.2f}", "y": f"{goal[1]:.2f}",
+                                              "waypoints": "", "agent_id": "{id}"})
+                goto.tail = el.tail
+                el.getparent().replace(el, goto)
+            elif el.tag in nav or el.tag == "Queue":
+                el.set("x", f"{goal[0]:.2f}")
+                el.set("y", f"{goal[1]:.2f}")
+                if el.get("waypoints") is not None:
+                    el.set("waypoints", "")
+
+    new_trees = _rewrite_trees(trees, scenario.agents, edit)
+    start_of = {a.tree: by_id[a.id].start for a in scenario.agents}
+    planned = {rel: inject_waypoints(xml, start_of[rel], planner) if rel in start_of else xml
+               for rel, xml in new_trees.items()}
+    return dataclasses.replace(scenario, agents=tuple(agents), fields={}), planned
+
+
+def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
+    import shutil
+
+    from grove_tui.engine.atomic import atomic_directory
+
+    with atomic_directory(target) as staging:
+        for name in ("grid.npz", "generation.json"):
+            if (base_bundle / name).exists():
+                shutil.copy2(base_bundle / name, staging / name)
+        if scenario.fields and (base_bundle / "fields").exists():
+            shutil.copytree(base_bundle / "fields", staging / "fields")
+        for rel, xml in trees.items():
+            (staging / rel).parent.mkdir(parents=True, exist_ok=True)
+            (staging / rel).write_text(xml, encoding="utf-8")
+        scenario.save(staging / "scenario.yaml")
+    return target
+
+
+def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: float):
+    """Run a bundle's scenario; trajectories and events for scoring (also written into the bundle)."""
+    from grove_tui.engine.metrics import write_events
+    from grove_tui.engine.simulation import Simulation
+
+    sim = Simulation.from_scenario(scenario, bundle, world=world)
+    sim.run(seconds)
+    recorder = sim.recorder
+    recorder.write_csv(bundle / "trajectories.csv")
+    events = sim.events
+    write_events(bundle / "events.jsonl", events)
+    return Trajectories.from_csv(bundle / "trajectories.csv"), events
+
+
+def _read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
+    return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
+
+
+def run_suite(cases: Sequence[EvalCase], out_dir: str | Path, *, bt_model: str | None = None,
+              methods: Sequence[str] = METHODS, sim_seconds: float = 30.0, on_progress=None) -> list[CaseResult]:
+    """Generate, simulate and score every case with every method; bundles are kept under out_dir."""
+    import json
+    import time
+
+    from grove_tui.engine.bundle import write_bundle
+    from grove_tui.engine.grid import build_grid
+    from grove_tui.engine.pipeline import GenerationPipeline
+    from grove_tui.engine.planner import ThetaStarPlanner
+    from grove_tui.engine.presets import load_preset
+    from grove_tui.engine.retrieval import NodeRetriever
+    from grove_tui.engine.world import load_world
+    from grove_tui.models.llm import LocalLLM
+    from grove_tui.models.registry import resolve_models
+
+    unknown = [m for m in methods if m not in METHODS]
+    if unknown:
+        raise EvalError(f"unknown method(s) {unknown}; choose from {', '.join(METHODS)}")
+    out = Path(out_dir)
+    choice = resolve_models(None, bt_model, None)["bt"]
+    llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)
+    retriever = NodeRetriever()
+    pipelines: dict[tuple[str, str], Any] = {}
+    results: list[CaseResult] = []
+
+    def pipeline_for(world_name: str, preset_name: str):
+        key = (world_name, preset_name)
+        if key not in pipelines:
+            pipelines[key] = GenerationPipeline(load_world(world_name), load_preset(preset_name), None, llm, retriever)
+        return pipelines[key]
+
+    try:
+        for index, case in enumerate(cases, start=1):
+            world = load_world(case.world)
+            grove_dir = out / "bundles" / case.id / "grove"
+            generated: dict[str, tuple[Scenario, dict[str, str], Path]] = {}
+            for method in methods:
+                started = time.perf_counter()
+                try:
+                    if method in ("grove", "vanilla"):
+                        preset = case.preset if method == "grove" else "vanilla"
+                        result = pipeline_for(case.world, preset).run(case.prompt, seed=case.seed)
+                        target = out / "bundles" / case.id / method
+                        write_bundle(result, target)
+                        generated[method] = (result.scenario, _read_trees(target, result.scenario), target)
+                    else:
+                        if "grove" not in generated:
+                            result = pipeline_for(case.world, case.preset).run(case.prompt, seed=case.seed)
+                            write_bundle(result, grove_dir)
+                            generated["grove"] = (result.scenario, _read_trees(grove_dir, result.scenario), grove_dir)
+                        base_scenario, base_trees, base_dir = generated["grove"]
+                        if method == "no-planner":
+                            scenario, trees = without_planner(base_scenario, base_trees)
+                        else:
+                            grid = build_grid(world, base_scenario.resolution)
+                            scenario, trees = decoupled(base_scenario, base_trees, world, grid, ThetaStarPlanner(grid))
+                        target = _write_variant(base_dir, out / "bundles" / case.id / method, scenario, trees)
+                        generated[method] = (scenario, dict(trees), target)
+                    scenario, trees, bundle = generated[method]
+                    traj, events = simulate_for_scores(bundle, scenario, world, sim_seconds)
+                    report_path = bundle / "generation.json"
+                    report = json.loads(report_path.read_text()) if report_path.exists() else {}
+                    by_id = {a.id: trees[a.tree] for a in scenario.agents}
+                    scored = score_scenario(case, method, world, scenario, by_id, traj, events,
+                                            report if method in ("grove", "vanilla") else None)
+                except GroveError as exc:
+                    scored = CaseResult(case=case, method=method, error=str(exc))
+                scored.scores["eval_seconds"] = round(time.perf_counter() - started, 3)
+                results.append(scored)
+                if on_progress is not None:
+                    on_progress(index, len(cases), scored)
+    finally:
+        llm.close()
+    write_results(results, out)
+    return results
+
+
+# --- tables --------------------------------------------------------------------------------------
+
+GROUNDING_KEYS = ("target_grounding", "spawn_grounding", "count_accuracy", "behavior_match")
+PLAUSIBILITY_KEYS = ("wall_penetrations", "goal_reach_rate", "agent_overlaps", "queue_order_violations",
+                     "evacuation_completion", "stop_and_go")
+VALIDITY_KEYS = ("valid_trees", "hallucinated_node_types", "hallucinated_places")
+COST_KEYS = ("prompt_tokens", "completion_tokens", "eval_seconds")
+SUMMARY_KEYS = GROUNDING_KEYS + PLAUSIBILITY_KEYS + VALIDITY_KEYS + COST_KEYS
+
+
+FAILED_SCORES = {"target_grounding": 0.0, "spawn_grounding": 0.0, "count_accuracy": 0.0, "behavior_match": 0.0,
+                 "goal_reach_rate": 0.0, "evacuation_completion": 0.0, "valid_trees": 0.0}
+
+
+def summarize(results: Sequence[CaseResult]) -> dict[tuple[str, str], dict[str, float]]:
+    """Mean of each score per (preset, method), over the cases where the score applies. A scenario
+    that could not be generated aligns with nothing: its grounding, reach and validity count as 0."""
+    table: dict[tuple[str, str], dict[str, list[float]]] = {}
+    for r in results:
+        row = table.setdefault((r.case.preset, r.method), {})
+        row.setdefault("failed", []).append(1.0 if r.error else 0.0)
+        if r.error:
+            expect = r.case.expect
+            applicable = {"target_grounding": bool(expect.targets), "spawn_grounding": bool(expect.spawns),
+                          "count_accuracy": expect.count is not None, "behavior_match": bool(expect.behaviors)}
+            for key, value in FAILED_SCORES.items():
+                if applicable.get(key, True):
+                    row.setdefault(key, []).append(value)
+            continue
+        for key in SUMMARY_KEYS:
+            value = r.scores.get(key)
+            if value is not None and not (isinstance(value, float) and math.isnan(value)):
+                row.setdefault(key, []).append(float(value))
+    return {k: {m: float(np.mean(v)) for m, v in row.items()} for k, row in table.items()}
+
+
+def grounding_score(row: Mapping[str, float]) -> float:
+    keys = [k for k in ("target_grounding", "spawn_grounding", "count_accuracy", "behavior_match") if k in row]
+    return float(np.mean([row[k] for k in keys])) if keys else math.nan
+
+
+def plausibility_score(row: Mapping[str, float]) -> float:
+    """One number per row: goal reach and stop-and-go up, penetrations and overlaps down (0..1)."""
+    parts = []
+    if "goal_reach_rate" in row:
+        parts.append(row["goal_reach_rate"])
+    if "wall_penetrations" in row:
+        parts.append(1.0 / (1.0 + row["wall_penetrations"]))
+    if "agent_overlaps" in row:
+        parts.append(1.0 / (1.0 + row["agent_overlaps"] / 100.0))
+    if "evacuation_completion" in row:
+        parts.append(row["evacuation_completion"])
+    return float(np.mean(parts)) if parts else math.nan
+
+
+def results_markdown(results: Sequence[CaseResult], command: str = "") -> str:
+    summary = summarize(results)
+    presets = sorted({p for p, _ in summary})
+    methods = [m for m in METHODS if any(m == mm for _, mm in summary)]
+    lines = ["# Evaluation results", ""]
+    if command:
+        lines += ["Made by:", "", "```", command, "```", ""]
+    cols = ["preset", "method", "grounding", "plausibility", "target", "spawn", "count", "behavior",
+            "wall pen.", "goal reach", "overlaps", "evac.", "stop&go", "valid", "halluc.", "prompt tok", "failed"]
+    lines += ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+
+    def fmt(row: Mapping[str, float], key: str, digits: int = 2) -> str:
+        v = row.get(key)
+        return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{v:.{digits}f}"
+
+    for preset in presets:
+        for method in methods:
+            row = summary.get((preset, method))
+            if row is None:
+                continue
+            halluc = row.get("hallucinated_node_types", 0.0) + row.get("hallucinated_places", 0.0)
+            lines.append("| " + " | ".join([
+                preset, method, f"{grounding_score(row):.2f}", f"{plausibility_score(row):.2f}",
+                fmt(row, "target_grounding"), fmt(row, "spawn_grounding"), fmt(row, "count_accuracy"),
+                fmt(row, "behavior_match"), fmt(row, "wall_penetrations", 1), fmt(row, "goal_reach_rate"),
+                fmt(row, "agent_overlaps", 1), fmt(row, "evacuation_completion"), fmt(row, "stop_and_go"),
+                fmt(row, "valid_trees"), f"{halluc:.1f}", fmt(row, "prompt_tokens", 0), fmt(row, "failed"),
+            ]) + " |")
+    lines += ["", "grounding = mean of target/spawn grounding, count accuracy and behavior match; "
+              "plausibility = mean of goal reach, 1/(1+wall penetrations), 1/(1+overlaps/100) and "
+              "evacuation completion. Means over the cases of each preset.", ""]
+    failures = [r for r in results if r.error]
+    if failures:
+        lines += ["## Failures", ""] + [f"- {r.case.id} / {r.method}: {r.error}" for r in failures] + [""]
+    return "\n".join(lines)
+
+
+def write_results(results: Sequence[CaseResult], out_dir: Path, command: str = "") -> list[Path]:
+    import csv
+    import io
+
+    from grove_tui.engine.atomic import write_text_atomic
+
+    keys = sorted({k for r in results for k in r.scores})
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["case", "world", "preset", "method", "error", *keys])
+    for r in results:
+        writer.writerow([r.case.id, r.case.world, r.case.preset, r.method, r.error,
+                         *[("" if r.scores.get(k) is None else r.scores[k]) for k in keys]])
+    return [write_text_atomic(Path(out_dir) / "results.csv", buffer.getvalue()),
+            write_text_atomic(Path(out_dir) / "RESULTS.md", results_markdown(results, command))]
