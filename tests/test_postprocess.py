@@ -238,3 +238,14 @@ def test_emergency_overlay_makes_every_group_leave(clinic, grid):
               nodes=("Sequence", "Wait", "FollowVelocityField"))
     assert [n.node for n in out.groups[0].tree.walk()] == ["Sequence", "Wait", "FollowVelocityField"]
     assert out.exit in ("main_entrance", "back_exit")
+
+
+def test_destinations_the_prompt_names_are_added_when_the_model_leaves_them_out(clinic, grid):
+    out = run(clinic, grid, "normal", "Two visitors walk from the lobby to the cafeteria",
+              [DraftGroup("visitors", 2, "lobby", DraftNode("JoinGroup", {}))])
+    assert [n.node for n in out.groups[0].tree.walk()] == ["Sequence", "JoinGroup", "GoTo"]
+    assert all(a.zone == "cafeteria" and a.targets[-1][0] == "cafeteria" for a in out.agents)
+    assert out.groups[0].spawn == "lobby"
+    kept = run(clinic, grid, "normal", "Two visitors walk from the lobby to the cafeteria",
+               [DraftGroup("visitors", 2, "lobby", DraftNode("GoTo", {"target": "vending_machine"}))])
+    assert [n.node for n in kept.groups[0].tree.walk()] == ["GoTo"]  # already reaches the cafeteria

@@ -178,12 +178,13 @@ def _first_goto(tree: DraftNode) -> str | None:
 
 
 def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, text: str, notes: list[str],
-                  label: str) -> DraftNode:
+                  label: str, allowed: Sequence[str] = ("GoTo",)) -> DraftNode:
     """The preset's deterministic overlay on a group's tree.
 
     queuing: a group whose words speak of queueing, lining up or being served gets the Queue
     subtree at its service point when the model left it out. emergency: every tree ends by
-    following the velocity field to the exit.
+    following the velocity field to the exit. Every preset with waypoints: places the prompt
+    sends the group to ("to the kitchen") that its tree never reaches are appended as GoTo steps.
     """
     kinds = {n.node for n in tree.walk()}
     if preset.name == "queuing" or (preset.goal_sampling == "sequential" and "Queue" in preset.required_nodes):
@@ -194,6 +195,16 @@ def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, t
                 notes.append(f"group '{label}': queue at {service} (queuing preset)")
                 return DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": service}),
                                                   DraftNode("Queue", {"service_point": service})))
+    if preset.velocity != "field" and "GoTo" in allowed:
+        # Destinations the prompt states must be in the tree, whatever the model wrote.
+        have = {_zone_of(world, p, p) for p in _tree_places(tree)} | _tree_places(tree)
+        missing = [g for g in goals_named(text, selection) if g not in have and _zone_of(world, g, g) not in have]
+        if missing:
+            notes.append(f"group '{label}': goes to {', '.join(missing)} (named in the prompt)")
+            steps = tuple(DraftNode("GoTo", {"target": g}) for g in missing)
+            if tree.node == "Sequence":
+                return DraftNode("Sequence", dict(tree.ports), tree.children + steps)
+            return DraftNode("Sequence", {}, (tree,) + steps)
     if preset.velocity == "field" and "FollowVelocityField" not in kinds:
         exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
         if exit_name is not None:
@@ -229,20 +240,19 @@ def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
 
 def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
     """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
+    total = sum(q.count for q in quantities)
+    zones = list(getattr(selection, "named_zones", ()) or getattr(selection, "zones", ()))
+    if total and zones:
+        space = FreeSpace(world, grid)
+        capacity = sum(space.capacity(z) for z in zones)
+        if total > capacity:
+            area = sum(space.free_area(z) for z in zones)
+            raise PromptError(f"{total} people do not fit in {', '.join(zones)}: about {area:.0f} m^2 of free floor "
+                              f"holds at most {capacity} at a plausible density ({MAX_DENSITY:g}/m^2)")
     for q in quantities:
         if q.count > preset.limits.max_count:
             raise PromptError(f"'{q.phrase}' asks for {q.count} people in one group; preset '{preset.name}' "
                               f"allows at most {preset.limits.max_count} per group")
-    total = sum(q.count for q in quantities)
-    zones = list(getattr(selection, "named_zones", ()) or getattr(selection, "zones", ()))
-    if not total or not zones:
-        return
-    space = FreeSpace(world, grid)
-    capacity = sum(space.capacity(z) for z in zones)
-    if total > capacity:
-        area = sum(space.free_area(z) for z in zones)
-        raise PromptError(f"{total} people do not fit in {', '.join(zones)}: about {area:.0f} m^2 of free floor "
-                          f"holds at most {capacity} at a plausible density ({MAX_DENSITY:g}/m^2)")
 
 
 def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
@@ -255,6 +265,31 @@ def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
 _SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
 _GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
 QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
+
+
+def places_named(text: str, selection: Any) -> list[tuple[str, str]]:
+    """(preposition, RoI name) for every selected RoI the words mention, in order."""
+    if selection is None:
+        return []
+    found: list[tuple[str, str]] = []
+    preposition = ""
+    for w in re.findall(r"[a-z0-9]+", text.lower()):
+        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
+            preposition = w
+            continue
+        t = lemma(w)
+        for m in getattr(selection, "matches", ()):
+            if m.reason == "prompt" and t in m.matched:
+                # One word, one place: the first (best-ranked) RoI it selected.
+                if not found or found[-1][1] != m.name:
+                    found.append((preposition, m.name))
+                break
+    return found
+
+
+def goals_named(text: str, selection: Any) -> list[str]:
+    """Places the words send people to ("to the kitchen", "into the cafe")."""
+    return list(dict.fromkeys(name for prep, name in places_named(text, selection) if prep in _GOAL_PREPOSITIONS))
 
 
 def spawn_named(text: str, selection: Any) -> str | None:
@@ -605,7 +640,8 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         raise GenerationError("the draft has no groups of people")
     _ground_spawns(groups, quantities, prompt, selection, notes, world)
     for g in groups:
-        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label)
+        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label,
+                               allowed_nodes)
     space = FreeSpace(world, grid)
     _check_capacity(groups, space, world)
     _check_limits(groups, preset)

@@ -1,0 +1,126 @@
+"""`grove generate --no-ui`, `grove batch`, `grove simulate`: exit codes, stdout/stderr split, no partial bundles.
+
+Bad input is refused before any model runs; the success paths generate with the embedded model.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from grove_tui.cli import main
+from grove_tui.cli.generate import (EXIT_BAD_INPUT, EXIT_GENERATION_FAILED, EXIT_MODEL_ERROR, EXIT_OK,
+                                    parse_robot_point)
+from grove_tui.engine.bundle import load_bundle
+from grove_tui.models.embedded import embedded_model_path
+
+
+@pytest.fixture(scope="module")
+def model() -> str:
+    return str(embedded_model_path())
+
+
+def invoke(args: list[str]):
+    return CliRunner().invoke(main, args, catch_exceptions=False)
+
+
+def generate_args(out, model, world="hospital", preset="queuing", prompt="Six patients queue at the pharmacy counter",
+                  extra=()):
+    return ["generate", "--no-ui", "--world", world, "--preset", preset, "--prompt", prompt, "--out", str(out),
+            "--bt-model", model, *extra]
+
+
+@pytest.mark.parametrize("world, preset, prompt, message", [
+    ("moonbase", "queuing", "Six patients queue", "no shipped world"),
+    ("hospital", "panic", "Six patients queue", "unknown preset 'panic'"),
+    ("hospital", "queuing", "   ", "the prompt is empty"),
+    ("hospital", "normal", "Ten patients swim in the swimming pool", "does not have: 'swimming pool'"),
+    ("hospital", "normal", "10,000 people crowd into the bathroom", "10000 people do not fit"),
+])
+def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, model, world, preset, prompt, message):
+    out = tmp_path / "bundle"
+    result = invoke(generate_args(out, model, world, preset, prompt))
+    assert result.exit_code == EXIT_BAD_INPUT
+    assert message in result.stderr
+    assert result.stdout == ""
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_world_by_path(tmp_path, model):
+    from grove_tui.engine.paths import worlds_dir
+
+    out = tmp_path / "bundle"
+    result = invoke(generate_args(out, model, world=str(worlds_dir() / "office.yaml"), preset="normal",
+                                  prompt="Ten people swim in the swimming pool"))
+    # the world loaded from its path: the error is about the prompt, not the world
+    assert result.exit_code == EXIT_BAD_INPUT and "world 'office' does not have" in result.stderr
+
+
+def test_model_that_is_not_a_gguf_exits_4(tmp_path):
+    fake = tmp_path / "model.gguf"
+    fake.write_bytes(b"not a model at all")
+    result = invoke(generate_args(tmp_path / "bundle", str(fake)))
+    assert result.exit_code == EXIT_MODEL_ERROR
+    assert "model.gguf" in result.stderr
+    assert not (tmp_path / "bundle").exists()
+
+
+def test_robot_points_parse():
+    assert parse_robot_point("3.5, -2") == (3.5, -2.0)
+    assert parse_robot_point("main_entrance") == "main_entrance"
+    assert parse_robot_point(" ") is None
+
+
+@pytest.mark.slow
+def test_generate_simulate_and_resimulate(tmp_path, model):
+    out = tmp_path / "pharmacy"
+    result = invoke(generate_args(out, model, extra=["--simulate", "5", "--seed", "2", "--robot-start", "main_entrance"]))
+    assert result.exit_code == EXIT_OK, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[0] == f"bundle: {out}"
+    assert any(line.startswith("agents: 6 ") for line in lines)
+    assert any(line.startswith("simulated: 5.0 s") for line in lines)
+    assert "synthesis" in result.stderr  # progress went to stderr
+    scenario, trees, _, _ = load_bundle(out)
+    assert len(scenario.agents) == 6 and scenario.seed == 2 and len(trees) == 6
+    header = (out / "trajectories.csv").read_text().splitlines()[0]
+    assert header == "frame,t,id,x,y,vx,vy,yaw,group"
+    first = (out / "trajectories.csv").read_text()
+    again = invoke(["simulate", str(out), "--seconds", "5"])
+    assert again.exit_code == EXIT_OK, again.stderr
+    assert (out / "trajectories.csv").read_text() == first  # the bundle simulates identically
+
+
+@pytest.mark.slow
+def test_batch_loads_once_and_reports_each_line(tmp_path, model):
+    jobs = tmp_path / "jobs.jsonl"
+    jobs.write_text("\n".join([
+        json.dumps({"world": "residential", "preset": "normal", "prompt": "Two children walk to the kitchen",
+                    "seed": 0, "name": "kids"}),
+        json.dumps({"world": "hospital", "preset": "normal", "prompt": "Ten people swim in the swimming pool",
+                    "name": "pool"}),
+    ]) + "\n")
+    out = tmp_path / "out"
+    result = invoke(["batch", str(jobs), "--out", str(out), "--bt-model", model])
+    assert result.exit_code == EXIT_GENERATION_FAILED  # one line failed, the other was generated
+    assert f"ok {out / 'kids'} agents=2" in result.stdout
+    assert f"failed {out / 'pool'}" in result.stdout and "swimming pool" in result.stdout
+    assert (out / "kids" / "scenario.yaml").is_file() and not (out / "pool").exists()
+    assert "1/2 scenarios generated" in result.stderr
+
+
+def test_batch_file_errors_exit_2(tmp_path, model):
+    jobs = tmp_path / "jobs.jsonl"
+    jobs.write_text('{"world": "hospital", "preset": "normal"}\n')
+    result = invoke(["batch", str(jobs), "--out", str(tmp_path / "out"), "--bt-model", model])
+    assert result.exit_code == EXIT_BAD_INPUT and "missing prompt" in result.stderr
+    jobs.write_text("{not json\n")
+    result = invoke(["batch", str(jobs), "--out", str(tmp_path / "out"), "--bt-model", model])
+    assert result.exit_code == EXIT_BAD_INPUT and "not valid JSON" in result.stderr
+
+
+def test_simulate_a_missing_bundle_exits_2(tmp_path):
+    result = invoke(["simulate", str(tmp_path / "nothing"), "--seconds", "1"])
+    assert result.exit_code == EXIT_BAD_INPUT and "no such bundle directory" in result.stderr

@@ -1,0 +1,184 @@
+"""End to end with the embedded model (real llama.cpp): a sentence becomes a bundle that validates,
+simulates without anyone crossing a wall, and sends people to the places the sentence names.
+
+One loaded model and one retriever serve the whole module. Every preset and every shipped world is
+covered once (queuing in the hospital, emergency in the office, normal in the residential world).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from lxml import etree
+from shapely.geometry import LineString, MultiLineString
+
+from grove_tui.engine.bt.xml import check_tree_file
+from grove_tui.engine.bundle import load_bundle, load_report, write_bundle
+from grove_tui.engine.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
+from grove_tui.engine.presets import PromptError, load_preset
+from grove_tui.engine.retrieval import NodeRetriever
+from grove_tui.engine.simulation import Simulation
+from grove_tui.engine.world import load_world
+from grove_tui.models.embedded import embedded_model_path
+from grove_tui.models.llm import LocalLLM
+
+pytestmark = pytest.mark.slow
+
+SIM_SECONDS = 30.0
+
+CASES = {
+    "hospital-queuing": ("hospital", "queuing", "Eight patients queue at the pharmacy counter", {"pharmacy"}),
+    "office-emergency": ("office", "emergency",
+                         "A fire alarm goes off and twelve employees in the open plan office evacuate",
+                         {"open_plan_office"}),
+    "residential-normal": ("residential", "normal", "Two children walk from the living room to the kitchen",
+                           {"living_room", "kitchen"}),
+}
+
+
+@pytest.fixture(scope="module")
+def llm():
+    model = LocalLLM(embedded_model_path(), role="bt")
+    yield model
+    model.close()
+
+
+@pytest.fixture(scope="module")
+def retriever():
+    return NodeRetriever()
+
+
+@pytest.fixture(scope="module")
+def generated(llm, retriever, tmp_path_factory):
+    """Each case generated once, written as a bundle and simulated; shared by the tests below."""
+    out = {}
+    for key, (world_name, preset_name, prompt, _) in CASES.items():
+        world = load_world(world_name)
+        pipeline = GenerationPipeline(world, load_preset(preset_name), None, llm, retriever)
+        events = []
+        result = pipeline.run(prompt, seed=1, on_event=events.append)
+        bundle = write_bundle(result, tmp_path_factory.mktemp(key) / "bundle")
+        scenario, *_ = load_bundle(bundle)
+        sim = Simulation.from_scenario(scenario, bundle, world=world)
+        sim.run(SIM_SECONDS)
+        out[key] = (world, result, bundle, sim, events)
+    return out
+
+
+@pytest.mark.parametrize("key", list(CASES))
+def test_bundle_validates_and_reports_every_stage(generated, key):
+    world, result, bundle, _, events = generated[key]
+    scenario, trees, _, _ = load_bundle(bundle)
+    assert scenario.preset == CASES[key][1] and scenario.world == CASES[key][0]
+    assert [a.id for a in scenario.agents] == list(range(1, len(scenario.agents) + 1))
+    for agent in scenario.agents:
+        assert check_tree_file(bundle / agent.tree) == []
+    report = load_report(bundle)
+    assert list(report["stages"]) == ["rois", "retrieval", "synthesis", "postprocess", "planning"]
+    assert report["prompt_tokens"] > 0 and report["completion_tokens"] > 0
+    started = [e.stage for e in events if isinstance(e, StageStarted)]
+    finished = [e.stage for e in events if isinstance(e, StageFinished)]
+    assert started == finished == list(report["stages"])
+    assert any(isinstance(e, TokenStreamed) for e in events)
+
+
+@pytest.mark.parametrize("key", list(CASES))
+def test_population_matches_the_stated_count(generated, key):
+    _, result, _, _, _ = generated[key]
+    stated = sum(q["count"] for q in result.report["quantities"])
+    assert len(result.scenario.agents) == stated
+
+
+@pytest.mark.parametrize("key", list(CASES))
+def test_simulation_never_crosses_a_wall(generated, key):
+    world, _, _, sim, _ = generated[key]
+    rows = sim.recorder.to_array()
+    assert len(rows) > 0 and rows[-1]["t"] >= SIM_SECONDS - 0.1
+    walls = MultiLineString([((x1, y1), (x2, y2)) for x1, y1, x2, y2 in world.walls()])
+    for agent_id in np.unique(rows["id"]):
+        track = rows[rows["id"] == agent_id]
+        points = np.column_stack([track["x"], track["y"]])
+        if len(points) >= 2:
+            assert not LineString(points).intersects(walls), f"agent {agent_id} crossed a wall"
+
+
+def _targets(xml: str) -> list[tuple[str, str, float, float]]:
+    root = etree.fromstring(xml.encode())
+    found = []
+    for el in root.iter():
+        if isinstance(el.tag, str) and el.get("x") is not None and el.get("y") is not None:
+            name = el.get("target") or el.get("service_point") or el.get("exit") or ""
+            found.append((el.tag, name, float(el.get("x")), float(el.get("y"))))
+    return found
+
+
+@pytest.mark.parametrize("key", ["hospital-queuing", "residential-normal"])
+def test_targets_lie_in_the_zones_the_prompt_names(generated, key):
+    world, result, _, _, _ = generated[key]
+    named = CASES[key][3]
+    for agent in result.scenario.agents:
+        assert agent.zone in named
+        targets = _targets(result.trees[agent.tree])
+        assert targets, f"agent {agent.id} goes nowhere"
+        for tag, name, x, y in targets:
+            zone = world.zone_at(x, y)
+            assert zone is not None and zone.name in named, f"agent {agent.id}: {tag} {name} at ({x}, {y})"
+
+
+def test_evacuees_start_where_named_and_share_one_exit(generated):
+    world, result, _, sim, _ = generated["office-emergency"]
+    exits = {d.name for d in world.exits()}
+    used = set()
+    for agent in result.scenario.agents:
+        assert world.zone_at(*agent.start).name in CASES["office-emergency"][3]
+        for tag, name, _, _ in _targets(result.trees[agent.tree]):
+            if tag == "FollowVelocityField":
+                used.add(name)
+    assert len(used) == 1 and used <= exits
+    assert result.scenario.fields and all(k.startswith("group_") for k in result.scenario.fields)
+    # everyone moved toward the exit during the simulation
+    door = world.find(used.pop()).position
+    rows = sim.recorder.to_array()
+    first = {int(r["id"]): (r["x"], r["y"]) for r in rows[rows["frame"] == rows["frame"].min()]}
+    moved_closer = 0
+    for agent in result.scenario.agents:
+        track = rows[rows["id"] == agent.id]
+        end = (track["x"][-1], track["y"][-1])
+        start = first.get(agent.id, agent.start)
+        if np.hypot(end[0] - door[0], end[1] - door[1]) < np.hypot(start[0] - door[0], start[1] - door[1]) - 1.0:
+            moved_closer += 1
+    assert moved_closer >= 0.8 * len(result.scenario.agents)
+
+
+def test_same_seed_gives_the_same_scenario(generated, llm, retriever):
+    world, result, _, _, _ = generated["residential-normal"]
+    again = GenerationPipeline(world, load_preset("normal"), None, llm, retriever).run(CASES["residential-normal"][2], seed=1)
+    assert again.scenario == result.scenario
+    assert again.trees == result.trees
+
+
+@pytest.mark.parametrize("prompt, message", [
+    ("", "the prompt is empty"),
+    ("   ", "the prompt is empty"),
+    ("Ten patients swim in the swimming pool", "does not have: 'swimming pool'"),
+    ("10,000 people crowd into the bathroom", r"10000 people do not fit in .*restroom"),
+])
+def test_bad_prompts_fail_clearly_and_write_nothing(llm, retriever, tmp_path, prompt, message):
+    pipeline = GenerationPipeline(load_world("hospital"), load_preset("normal"), None, llm, retriever)
+    out = tmp_path / "bundle"
+    with pytest.raises(PromptError, match=message):
+        write_bundle(pipeline.run(prompt), out)
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_cancel_before_start_stops_at_the_first_stage(llm, retriever):
+    import threading
+
+    from grove_tui.models.errors import GenerationCancelled
+
+    cancel = threading.Event()
+    cancel.set()
+    pipeline = GenerationPipeline(load_world("hospital"), load_preset("queuing"), None, llm, retriever)
+    with pytest.raises(GenerationCancelled):
+        pipeline.run("Eight patients queue at the pharmacy counter", cancel=cancel)
+
