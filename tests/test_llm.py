@@ -154,6 +154,17 @@ def test_truncated_gguf(tmp_path, tiny_path):
         LocalLLM(cut)
 
 
+def test_a_file_llama_cpp_cannot_load_is_reported_with_its_log(tmp_path, tiny_path):
+    """Header intact, tensor data cut short: only llama.cpp notices, and its reason reaches the message."""
+    damaged = tmp_path / "damaged.gguf"
+    data = tiny_path.read_bytes()
+    damaged.write_bytes(data[: len(data) * 9 // 10])
+    llm = LocalLLM(damaged, role="roi", n_threads=1)
+    with pytest.raises(ModelError, match="llama.cpp could not load"):
+        llm.generate("hi", max_tokens=4)
+    assert not llm.running
+
+
 def test_unsupported_architecture(tmp_path):
     path = build_tiny_qwen3(tmp_path / "encoder.gguf", architecture="t5encoder")
     with pytest.raises(ModelError, match="architecture 't5encoder' is not a text-generation model"):
@@ -215,3 +226,23 @@ def test_timeout_is_a_model_error(embedded_llm):
     with pytest.raises(ModelError, match="did not answer in time"):
         embedded_llm.generate(MESSAGES, max_tokens=900, length_retries=0, timeout=0.3)
     assert embedded_llm.generate("Hi", grammar=schema_to_gbnf({"const": 2}), max_tokens=4).text == "2"
+
+
+def test_close_during_a_generation_ends_it_with_a_model_error(embedded_llm):
+    embedded_llm.start()
+    outcome: list[BaseException] = []
+    first_token = threading.Event()
+
+    def run() -> None:
+        try:
+            embedded_llm.generate(MESSAGES, max_tokens=900, length_retries=0, on_token=lambda _t: first_token.set())
+        except BaseException as error:  # noqa: BLE001 - the test inspects what the thread saw
+            outcome.append(error)
+
+    thread = threading.Thread(target=run)
+    thread.start()
+    assert first_token.wait(60)
+    embedded_llm.close()
+    thread.join(30)
+    assert not thread.is_alive() and isinstance(outcome[0], ModelError)
+    assert embedded_llm.generate("Hi", grammar=schema_to_gbnf({"const": 3}), max_tokens=4).text == "3"
