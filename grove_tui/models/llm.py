@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import sys
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -71,6 +72,31 @@ class Generation:
     cached_tokens: int = 0  # prompt tokens served from the worker's live KV cache (shared prefix)
 
 
+def _start_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker on a valid stderr.
+
+    The tracker hands `sys.stderr.fileno()` to its process. Under a TUI that captures output (Textual
+    returns -1 there) every spawn then fails with "bad value(s) in fds_to_keep", so the tracker gets
+    devnull instead: it must never write over the screen anyway.
+    """
+    from multiprocessing import resource_tracker
+
+    try:
+        usable = sys.stderr is not None and sys.stderr.fileno() >= 0
+    except (AttributeError, OSError, ValueError):
+        usable = False
+    if usable:
+        resource_tracker.ensure_running()
+        return
+    saved = sys.stderr
+    with open(os.devnull, "w") as devnull:
+        sys.stderr = devnull
+        try:
+            resource_tracker.ensure_running()
+        finally:
+            sys.stderr = saved
+
+
 class LocalLLM:
     """A GGUF model for one role ("roi" or "bt"), served by a worker process started on first use."""
 
@@ -87,6 +113,7 @@ class LocalLLM:
         self.sampling = sampling or default_sampling(self.info.architecture, self.info.size_bytes)
         self.log_path = cache_dir() / "logs" / f"llm-{role}.log"
         self._context = multiprocessing.get_context("spawn")
+        _start_resource_tracker()  # before the first Event/Lock: they register with the tracker
         self._cancel_flag = self._context.Event()
         self._process: Any = None
         self._conn: Any = None
