@@ -40,7 +40,6 @@ SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "meeting conference boardroom",
         "ward patient room",
         "pharmacy drugstore dispensary chemist medicine",
-        "waiting wait",
         "emergency er ae casualty",
         "sofa couch settee",
         "vending machine snack",
@@ -57,11 +56,13 @@ NON_PLACES = frozenset(
     middle front back side corner center centre way direction line queue row circle group pair hurry rush
     panic order turn silence distance speed pace crowd other each everyone someone people person alarm fire
     emergency evacuation meantime while chance case past future background foreground left right top bottom
-    area place spot location here there""".split()
+    area place spot location here there building house home flat apartment premises site facility hospital
+    clinic floor scene""".split()
 )
 _LOCATIVES = ("in", "at", "to", "into", "near", "inside", "from", "toward", "towards", "by", "through", "across",
               "around", "outside", "beside", "behind", "past", "onto", "via", "within", "reach", "visit", "enter",
               "leave", "exit", "use")
+_BREAKS = frozenset(_LOCATIVES) | {"and", "or", "while", "then", "with", "but", "where", "when"}
 _DETERMINERS = ("the", "a", "an", "their", "our", "its", "his", "her", "my", "your", "this", "that", "some")
 
 
@@ -107,10 +108,15 @@ class _Entry:
 BEHAVIOR_WORDS = frozenset(
     """queue line wait walk go come leave enter chat talk converse meet sit stand rest eat drink buy pay evacuate
     evacuation escape flee run rush alarm fire emergency panic wander roam stroll browse look watch follow visit
-    work help serve check crowd gather hurry""".split()
+    work help serve crowd gather hurry waiting queuing""".split()
 )
 # A door is a selected RoI only when the prompt speaks of a door, not merely of the rooms it joins.
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
+
+
+def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:
+    n = len(phrase)
+    return any(tuple(run[i:i + n]) == tuple(phrase) for i in range(len(run) - n + 1))
 
 
 def _name_tokens(text: str) -> list[str]:
@@ -169,23 +175,43 @@ class RoIMatcher:
             return 0.5 * self.idf.get(token, 0.0)
         return 0.0
 
-    def score(self, entry: _Entry, tokens: Sequence[str]) -> tuple[float, tuple[str, ...]]:
-        matched: list[str] = []
-        total = 0.0
-        for t in dict.fromkeys(tokens):
-            w = self._token_weight(entry, t)
-            if w > 0:
-                total += w
-                matched.append(t)
-        literal = set(matched) & entry.tokens
-        if entry.kind == "door" and not (literal & (DOOR_WORDS | set(_name_tokens(entry.name)) - self._zone_words)):
-            return 0.0, ()
-        joined = " " + " ".join(tokens) + " "
-        for phrase in entry.phrases:
-            if " " + " ".join(phrase) + " " in joined:
-                # The whole name or an alias is in the prompt: it beats anything sharing one of its words.
-                total += 0.5 + 0.5 * sum(self.idf.get(t, 0.0) for t in phrase)
-        return total, tuple(matched)
+    def runs(self, entry: _Entry, tokens: Sequence[str | None]) -> list[tuple[float, int, int]]:
+        """(score, first, last) of each mention of the entry: a maximal run of consecutive prompt words it matches.
+
+        Words of one run name one thing ("pharmacy counter"); words far apart ("kitchen ... living room
+        ... front door") are separate mentions, so an RoI whose name happens to share words with several
+        of them does not add them up.
+        """
+        out: list[tuple[float, int, int]] = []
+        i = 0
+        n = len(tokens)
+        while i < n:
+            t = tokens[i]
+            w = self._token_weight(entry, t) if t is not None else 0.0
+            if w <= 0:
+                i += 1
+                continue
+            j, total = i, 0.0
+            while j < n and tokens[j] is not None and (wj := self._token_weight(entry, tokens[j])) > 0:
+                total += wj
+                j += 1
+            run = [t for t in tokens[i:j] if t is not None]
+            literal = set(run) & entry.tokens
+            if entry.kind == "door" and not (literal & (DOOR_WORDS | set(_name_tokens(entry.name)) - self._zone_words)):
+                i = j
+                continue
+            if all(t in BEHAVIOR_WORDS for t in run) and not any(len(p) > 1 and _contains(run, p) for p in entry.phrases):
+                # "wait", "queue" alone describe what people do, even when a name contains the word
+                i = j
+                continue
+            for phrase in entry.phrases:
+                if _contains(run, phrase):
+                    # The whole name or an alias is in the prompt: it beats anything sharing one of its words.
+                    total += 0.5 + 0.5 * sum(self.idf.get(t, 0.0) for t in phrase)
+                    break
+            out.append((total, i, j - 1))
+            i = j
+        return out
 
     @property
     def _zone_words(self) -> set[str]:
@@ -193,16 +219,24 @@ class RoIMatcher:
             self._zone_words_cache = {t for e in self.entries if e.kind == "zone" for t in e.tokens}
         return self._zone_words_cache
 
-    def _place_tokens(self, prompt: str) -> list[str]:
-        """Prompt tokens that can name a place: person words only inside a place name ("nurse station")."""
-        raw = _name_tokens(prompt)
-        out = []
+    def _place_tokens(self, prompt: str) -> list[str | None]:
+        """Prompt words that can name a place, None where a word breaks a mention (numbers, person words)."""
+        raw: list[str | None] = []
+        for w in words(re.sub(r"'s\b", "", prompt)):
+            if w in _BREAKS:
+                raw.append(None)  # "the coffee machine in the cafeteria" mentions two places
+            elif w not in STOPWORDS:
+                raw.append(lemma(w))
+        out: list[str | None] = []
         for i, t in enumerate(raw):
-            if t in NUMBER_WORDS:
+            if t is None:
+                out.append(None)
                 continue
-            if t in PERSON_NOUNS:
+            if t in NUMBER_WORDS or t in PERSON_NOUNS:
                 nxt = raw[i + 1] if i + 1 < len(raw) else None
-                if nxt is None or not any(t in e.tokens and nxt in e.tokens for e in self.entries):
+                # Person words count only inside a place name ("nurse station", "doctor's office").
+                if t in NUMBER_WORDS or nxt is None or not any(t in e.tokens and nxt in e.tokens for e in self.entries):
+                    out.append(None)
                     continue
             out.append(t)
         return out
@@ -222,27 +256,29 @@ class RoIMatcher:
     # ---- selection ----------------------------------------------------------------------------
 
     def match(self, prompt: str) -> list[RoIMatch]:
-        """RoIs the prompt names: for each prompt word, the best-scoring RoIs containing it."""
+        """RoIs the prompt names: for each mention, the best-scoring RoIs; a zone beats its own parts on a tie."""
         tokens = self._place_tokens(prompt)
         bonus = self._embedding_bonus(prompt)
-        scored = []
+        best_at: dict[int, list[tuple[float, _Entry, int, int]]] = {}
         for e in self.entries:
-            s, matched = self.score(e, tokens)
-            if s > 0:
-                scored.append((s + 0.5 * max(bonus.get(e.name, 0.0), 0.0), matched, e))
-        chosen: dict[str, tuple[float, tuple[str, ...], _Entry]] = {}
-        for t in dict.fromkeys(tokens):
-            holders = [(s, m, e) for s, m, e in scored if t in m]
-            if not holders:
-                continue
-            best = max(s for s, _, _ in holders)
-            for s, m, e in holders:
-                if s >= best - 1e-9:
-                    chosen[e.name] = (s, m, e)
-        # Order by first mention so group/zone order follows the sentence.
-        position = {t: i for i, t in reversed(list(enumerate(tokens)))}
-        ordered = sorted(chosen.values(), key=lambda v: (min(position.get(t, 1 << 30) for t in v[1]), -v[0], v[2].name))
-        return [RoIMatch(e.kind, e.name, e.zone, round(s, 4), m, "prompt") for s, m, e in ordered]
+            extra = 0.5 * max(bonus.get(e.name, 0.0), 0.0)
+            for score, first, last in self.runs(e, tokens):
+                for k in range(first, last + 1):
+                    best_at.setdefault(k, []).append((score + extra, e, first, last))
+        chosen: dict[str, tuple[float, _Entry, int, tuple[str, ...]]] = {}
+        for k in sorted(best_at):
+            holders = best_at[k]
+            top = max(h[0] for h in holders)
+            winners = [h for h in holders if h[0] >= top - 1e-9]
+            zones = {h[1].name for h in winners if h[1].kind == "zone"}
+            for score, e, first, last in winners:
+                if e.kind != "zone" and e.zone in zones:
+                    continue  # "the restroom": the room, not every fixture whose name repeats it
+                matched = tuple(t for t in tokens[first:last + 1] if t is not None)
+                if e.name not in chosen or chosen[e.name][0] < score:
+                    chosen[e.name] = (score, e, first if e.name not in chosen else min(first, chosen[e.name][2]), matched)
+        ordered = sorted(chosen.values(), key=lambda v: (v[2], -v[0], v[1].name))
+        return [RoIMatch(e.kind, e.name, e.zone, round(score, 4), matched, "prompt") for score, e, _, matched in ordered]
 
     def unknown_places(self, prompt: str) -> list[str]:
         """Place phrases ("the swimming pool") that match nothing in the world."""
