@@ -207,7 +207,12 @@ class Simulation:
             self._record()
 
     def tick_trees(self) -> None:
-        """Tick every unfinished tree once (what step() does every 1/bt_rate seconds)."""
+        """What step() does every 1/bt_rate seconds: tick every tree, then update the contact counters."""
+        self.tick_behaviors()
+        self._measure_contacts()
+
+    def tick_behaviors(self) -> None:
+        """Tick every unfinished tree once with the current positions, then order new queue arrivals."""
         ctx = self.context
         ctx.refresh()
         active = ctx.active
@@ -215,7 +220,12 @@ class Simulation:
         for row in range(len(trees)):
             if finished[row] or not active[row]:
                 continue
-            status = trees[row].tick()
+            tree = trees[row]
+            quiet = tree.quiet
+            # BehaviorTree.tick's quiescent check, inlined for the common guard-free case
+            if quiet is not None and not quiet[1] and quiet[0].poll():
+                continue
+            status = tree.tick()
             if (status == SUCCESS or status == FAILURE) and not loops[row]:
                 finished[row] = True
                 ctx.counters.finished_trees += 1
@@ -223,7 +233,6 @@ class Simulation:
                 if ctx.status[row] != "evacuated":
                     ctx.status[row] = f"{ctx.status[row]} · {self.tree_result[row]}" if ctx.status[row] else self.tree_result[row]
         ctx.queues.commit()
-        self._measure_contacts()
 
     def run(self, seconds: float, on_frame: Callable[[Frame], Any] | None = None,
             cancel: threading.Event | Callable[[], bool] | None = None) -> Frame:

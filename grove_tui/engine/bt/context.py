@@ -109,7 +109,11 @@ class SimContext:
         self.counters = Counters()
         self.events: list[tuple[float, int, str, str]] = []  # (t, agent id, kind, detail), see metrics.SimEvent
         self._plan_failures = 0
-        self.pos: list[list[float]] = []  # row -> [x, y], refreshed once per BT tick
+        # positions, refreshed once per BT tick as flat float lists: lists of floats are invisible to
+        # the garbage collector, a list of 1,000 [x, y] lists per tick kept triggering collections
+        self.px: list[float] = []
+        self.py: list[float] = []
+        self.pos = _Points(self)  # pos[row] -> (x, y)
         self.yaw: list[float] = []
         self.active: list[bool] = []
         self.robot: tuple[float, float, float] | None = None  # x, y, yaw
@@ -120,7 +124,9 @@ class SimContext:
         """Copy the positions leaves read into Python lists (one numpy call instead of one per leaf)."""
         crowd = self.crowd
         n = len(self.ids)
-        self.pos = crowd.pos[:n].tolist()
+        pos = crowd.pos[:n]
+        self.px = pos[:, 0].tolist()
+        self.py = pos[:, 1].tolist()
         self.yaw = crowd.yaw[:n].tolist()
         self.active = crowd.active[:n].tolist()
         if crowd.has_robot:
@@ -233,6 +239,16 @@ class SimContext:
         except (KeyError, TypeError, ValueError):
             raise BTError(f"{what}={agent_id!r} is not an agent of this scenario "
                           f"(ids {min(self.ids, default=0)}..{max(self.ids, default=0)})") from None
+
+
+class _Points:
+    __slots__ = ("_sim",)
+
+    def __init__(self, sim: SimContext):
+        self._sim = sim
+
+    def __getitem__(self, row: int) -> tuple[float, float]:
+        return (self._sim.px[row], self._sim.py[row])
 
 
 class AgentContext:

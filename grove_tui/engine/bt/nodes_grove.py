@@ -90,9 +90,19 @@ class GoTo(AgentStatefulAction):
         self.interrupted = True
         _stand(self.sim, self.row)
 
+    def poll(self) -> bool:
+        """Side-effect-free: would on_running return RUNNING (not arrived yet)?"""
+        sim, row, t = self.sim, self.row, self.target_point
+        dx = sim.px[row] - t[0]
+        dy = sim.py[row] - t[1]
+        return dx * dx + dy * dy > self.reach2
+
 
 class Wait(AgentStatefulAction):
     __slots__ = ()
+
+    def poll(self) -> bool:
+        return self.on_running() == RUNNING  # on_running only reads the clock
 
     def on_start(self) -> int:
         sim = self.sim
@@ -166,6 +176,16 @@ class Queue(AgentStatefulAction):
             self.queue.step_out(self.row, self.sim.clock.now)
         _stand(self.sim, self.row)
 
+    def poll(self) -> bool:
+        """RUNNING with nothing to do: same place in line, not arriving now, not at the head."""
+        k = self.queue.position_of(self.row)
+        if k is None:
+            return True
+        if k != self.slot or k == 0:
+            return False
+        sim, row, slot = self.sim, self.row, self.slot_point
+        return self.arrived or math.hypot(sim.px[row] - slot[0], sim.py[row] - slot[1]) > ARRIVAL_TOLERANCE
+
 
 def _aside(sim, queue: ServiceQueue):
     sx, sy = queue.service_point
@@ -223,6 +243,10 @@ class FollowVelocityField(AgentStatefulAction):
 
     def on_halted(self) -> None:
         self.sim.crowd.set_mode(self.row, MODE_STOP)
+
+    def poll(self) -> bool:
+        sim, row, e = self.sim, self.row, self.exit_point
+        return math.hypot(sim.px[row] - e[0], sim.py[row] - e[1]) > EXIT_RADIUS
 
 
 class Wander(AgentStatefulAction):
@@ -290,6 +314,16 @@ class Wander(AgentStatefulAction):
 
     def on_halted(self) -> None:
         _stand(self.sim, self.row)
+
+    def poll(self) -> bool:
+        duration = self.get_input("duration")
+        now = self.sim.clock.now
+        if duration > 0 and now - self.started_at + 1e-9 >= duration:
+            return False
+        if self.pause_until >= 0:
+            return now < self.pause_until
+        sim, row, goal = self.sim, self.row, self.goal
+        return math.hypot(sim.px[row] - goal[0], sim.py[row] - goal[1]) > 0.4
 
 
 class JoinGroup(AgentSyncAction):
@@ -381,6 +415,29 @@ class Converse(AgentStatefulAction):
             self.sim.conversations.leave(self.conv, self.row)
         self.sim.crowd.set_group(self.row, self.group)
         _stand(self.sim, self.row)
+
+    def poll(self) -> bool:
+        """Would on_running change nothing and return RUNNING? Walking to the spot, standing on it while
+        waiting for a circle that cannot start yet, or talking with time left."""
+        sim, row, spot = self.sim, self.row, self.spot
+        off = math.hypot(sim.px[row] - spot[0], sim.py[row] - spot[1])
+        if not self.ready:
+            return off > ARRIVAL_TOLERANCE
+        mode = sim.crowd.mode[row]
+        if (off > 0.2 and mode == MODE_FACE) or (off <= 0.1 and mode == MODE_GOALS):
+            return False
+        conv = self.conv
+        if conv.started_at is None:
+            # only an arrival (that member's own tick), a departure or the patience limit can start it
+            if conv.left or sim.clock.now - conv.created_at >= sim.conversations.PATIENCE:
+                return False
+            if len(conv.ready) >= len(conv.members) or not all(sim.active[m] for m in conv.members):
+                return False
+            return sim.status[row] == f"waiting for the others ({len(conv.ready)}/{len(conv.members)})"
+        duration = self.get_input("duration")
+        if duration > 0 and sim.clock.now - conv.started_at + 1e-9 >= duration:
+            return False
+        return sim.status[row] == "talking"
 
 
 GROVE_LEAVES = {

@@ -29,6 +29,7 @@ MIN_YAW_TOLERANCE = 0.02  # rad; the crowd turns at most 2*pi rad/s, 0.01 can be
 
 class IsGoalReached(AgentCondition):
     __slots__ = ()
+    PURE = True  # reads positions only: usable as a guard of quiescent ticks
 
     def tick(self) -> int:
         return SUCCESS if self.sim.crowd.goal_reached(self.row) else FAILURE
@@ -36,6 +37,7 @@ class IsGoalReached(AgentCondition):
 
 class IsRobotVisible(AgentCondition):
     __slots__ = ("distance",)
+    PURE = True
 
     def setup(self) -> None:
         super().setup()
@@ -46,9 +48,9 @@ class IsRobotVisible(AgentCondition):
         robot = sim.robot
         if robot is None:
             return FAILURE
-        p = sim.pos[self.row]
-        dx = robot[0] - p[0]
-        dy = robot[1] - p[1]
+        row = self.row
+        dx = robot[0] - sim.px[row]
+        dy = robot[1] - sim.py[row]
         distance = self.distance if self.distance is not None else self.get_input("distance")
         if dx * dx + dy * dy > distance * distance:
             return FAILURE
@@ -59,6 +61,7 @@ class IsRobotVisible(AgentCondition):
 
 class IsRobotClose(AgentCondition):
     __slots__ = ()
+    PURE = True  # reads positions only: usable as a guard of quiescent ticks
 
     def tick(self) -> int:
         robot = self.sim.robot
@@ -71,6 +74,7 @@ class IsRobotClose(AgentCondition):
 
 class IsRobotFacingAgent(AgentCondition):
     __slots__ = ()
+    PURE = True  # reads positions only: usable as a guard of quiescent ticks
 
     def tick(self) -> int:
         robot = self.sim.robot
@@ -116,6 +120,7 @@ def _other_row(node, port: str) -> int | None:
 
 class IsAgentVisible(AgentCondition):
     __slots__ = ()
+    PURE = True  # reads positions only: usable as a guard of quiescent ticks
     AGENT_PORT = "observer_id"
 
     def tick(self) -> int:
@@ -132,6 +137,7 @@ class IsAgentVisible(AgentCondition):
 
 class IsAgentClose(AgentCondition):
     __slots__ = ()
+    PURE = True  # reads positions only: usable as a guard of quiescent ticks
     AGENT_PORT = "observer_id"
 
     def tick(self) -> int:
@@ -144,6 +150,7 @@ class IsAgentClose(AgentCondition):
 
 class IsAtPosition(AgentCondition):
     __slots__ = ()
+    PURE = True  # reads positions only: usable as a guard of quiescent ticks
 
     def tick(self) -> int:
         tx, ty = self.get_input("target_x"), self.get_input("target_y")
@@ -358,6 +365,13 @@ class _Timed(AgentStatefulAction):
 
     def on_halted(self) -> None:
         self.restore_intents()
+
+    def poll(self) -> bool:
+        """True when on_running would only return RUNNING: no per-tick step and time left."""
+        if type(self).step is not _Timed.step:
+            return False
+        duration = self.get_input(self.DURATION_PORT)
+        return duration <= 0 or self.elapsed() + 1e-9 < duration
 
     def begin(self) -> None:
         """Set the intents the behavior starts with."""
@@ -649,6 +663,9 @@ class SetGroupWalk(_Timed):
 
 class _LookAt(AgentStatefulAction):
     __slots__ = ()
+
+    def poll(self) -> bool:
+        return self.on_running() == RUNNING  # on_running only reads positions
 
     def target(self):
         raise NotImplementedError

@@ -907,10 +907,22 @@ _CLOCKED = {"Timeout", "Delay", "TimeDelay"}
 
 # ---- the tree -----------------------------------------------------------------------------------
 
-class BehaviorTree:
-    """One instantiated tree: tick it once per BT period (Tree::tickExactlyOnce)."""
+# Nodes that, while their (one) running child stays RUNNING, return RUNNING and change nothing else.
+_PASS_THROUGH = (Sequence, SequenceWithMemory, Fallback, SubTreeNode, Inverter, ForceSuccess, ForceFailure, RunOnce,
+                 Repeat, RetryUntilSuccessful, KeepRunningUntilFailure)
 
-    __slots__ = ("root", "blackboard", "nodes", "source", "clock")
+
+class BehaviorTree:
+    """One instantiated tree: tick it once per BT period (Tree::tickExactlyOnce).
+
+    Quiescent ticks are skipped without changing the semantics: when the only running leaf sits below
+    pass-through nodes (and reactive nodes whose earlier children are side-effect-free conditions) and
+    that leaf's `poll()` says its on_running would just return RUNNING, a full tick would change no
+    state at all, so `tick` re-checks the reactive guards, polls the leaf and returns RUNNING.
+    tests/test_simulation_fastpath.py runs scenarios both ways and compares them.
+    """
+
+    __slots__ = ("root", "blackboard", "nodes", "source", "clock", "fast", "quiet")
 
     def __init__(self, root: TreeNode, blackboard: Blackboard, nodes: list[TreeNode], source: str, clock: SimClock):
         self.root = root
@@ -918,13 +930,58 @@ class BehaviorTree:
         self.nodes = nodes
         self.source = source
         self.clock = clock
+        self.fast = True  # allow quiescent-tick skipping
+        self.quiet: tuple[LeafNode, tuple[tuple[TreeNode, int], ...]] | None = None
 
     def tick(self) -> int:
+        quiet = self.quiet
+        if quiet is not None:
+            leaf, guards = quiet
+            for condition, expected in guards:
+                if condition.tick() != expected:
+                    break
+            else:
+                if leaf.poll():
+                    return RUNNING
         root = self.root
         status = root.execute_tick()
         if status == SUCCESS or status == FAILURE:
             root.status = IDLE
+            self.quiet = None
+        elif status == RUNNING and self.fast:
+            self.quiet = self._quiescent_path()
+        else:
+            self.quiet = None
         return status
+
+    def _quiescent_path(self):
+        node = self.root
+        guards: list[tuple[TreeNode, int]] = []
+        while True:
+            if node.status != RUNNING:
+                return None
+            if isinstance(node, LeafNode):
+                return (node, tuple(guards)) if getattr(node, "poll", None) is not None else None
+            if isinstance(node, _PASS_THROUGH):
+                if isinstance(node, DecoratorNode):
+                    node = node.child
+                else:
+                    node = node.kids[node.current]
+                continue
+            if isinstance(node, (ReactiveFallback, ReactiveSequence)):
+                expected = FAILURE if isinstance(node, ReactiveFallback) else SUCCESS
+                kids = node.kids
+                running = next((i for i, kid in enumerate(kids) if kid.status == RUNNING), -1)
+                if running < 0:
+                    return None
+                for kid in kids[:running]:
+                    guard = _pure_guard(kid, expected)
+                    if guard is None:
+                        return None
+                    guards.append(guard)
+                node = kids[running]
+                continue
+            return None
 
     def halt(self) -> None:
         self.root.halt_node()
@@ -944,6 +1001,18 @@ class BehaviorTree:
 
     def leaves(self) -> list[LeafNode]:
         return [n for n in self.nodes if isinstance(n, LeafNode)]
+
+
+def _pure_guard(node: TreeNode, expected: int) -> tuple[TreeNode, int] | None:
+    """(condition, status) whose side-effect-free tick decides what re-ticking `node` returns, if any."""
+    if isinstance(node, ConditionNode):
+        return (node, expected) if getattr(node, "PURE", False) else None
+    if isinstance(node, Inverter) and expected in (SUCCESS, FAILURE):
+        return _pure_guard(node.child, SUCCESS if expected == FAILURE else FAILURE)
+    if expected == FAILURE and node.status == IDLE and (
+            isinstance(node, ReactiveSequence) or (isinstance(node, Sequence) and node.current == 0)):
+        return _pure_guard(node.kids[0], FAILURE)  # a sequence whose first child fails fails at once
+    return None
 
 
 LeafClasses = Mapping[str, type[LeafNode]]
