@@ -413,13 +413,22 @@ def clearance_map(occupied: np.ndarray) -> np.ndarray:
     return distance_transform_edt(padded)[1:-1, 1:-1].astype(np.float32)
 
 
+# Landmark maps pay for themselves on big grids only: each costs one any-angle Dijkstra over the
+# grid (about 0.3 s per million cells), so small grids plan with the Euclidean heuristic alone.
+AUTO_LANDMARKS = 8
+AUTO_LANDMARKS_MIN_CELLS = 200_000
+
+
 class ThetaStarPlanner:
     """Any-angle shortest paths on one occupancy grid; builds its lookup maps once, then plans in milliseconds.
 
-    Thread-safe: queries share work buffers behind a lock (the kernels release the GIL).
+    `landmarks`: number of ALT landmark maps, built on the first query; None picks AUTO_LANDMARKS
+    for grids of at least AUTO_LANDMARKS_MIN_CELLS cells and none below. Create one planner per grid
+    and keep it (PlanCache.planner does). Thread-safe: queries share work buffers behind a lock
+    (the kernels release the GIL).
     """
 
-    def __init__(self, grid, landmarks: int = 8):
+    def __init__(self, grid, landmarks: int | None = None):
         self.grid = grid
         self.occupied = np.ascontiguousarray(grid.occupied, dtype=np.bool_)
         if self.occupied.ndim != 2 or self.occupied.size == 0:
@@ -429,15 +438,24 @@ class ThetaStarPlanner:
         self.centre_x, self.centre_y = (float(v) for v in grid.cell_to_world(0, 0))
         self.clearance = clearance_map(self.occupied)
         self.components = connected_components(self.occupied)
-        self.landmarks = self._landmarks(landmarks)
         cells = self.occupied.size
+        if landmarks is None:
+            landmarks = AUTO_LANDMARKS if cells >= AUTO_LANDMARKS_MIN_CELLS else 0
+        self.landmark_count = int(landmarks)
+        self._landmark_maps: np.ndarray | None = None
         self._g_cost = np.full(cells, np.inf)
         self._parent = np.zeros(cells, dtype=np.int32)
         self._touched = np.zeros(cells, dtype=np.int32)
         self._lock = threading.Lock()
 
-    def _landmarks(self, count: int) -> np.ndarray:
-        """Any-angle distances from landmarks in the largest free region (none when there is no free cell)."""
+    @property
+    def landmarks(self) -> np.ndarray:
+        """(H * W, L) float32 any-angle distances from L landmarks of the largest free region (built once)."""
+        if self._landmark_maps is None:
+            self._landmark_maps = self._build_landmarks(self.landmark_count)
+        return self._landmark_maps
+
+    def _build_landmarks(self, count: int) -> np.ndarray:
         labels = self.components
         if count <= 0 or labels.max() < 0:
             return np.zeros((labels.size, 0), dtype=np.float32)
@@ -616,7 +634,7 @@ class PlanCache:
     def __len__(self) -> int:
         return len(self._entries)
 
-    def planner(self, grid, landmarks: int = 8) -> ThetaStarPlanner:
+    def planner(self, grid, landmarks: int | None = None) -> ThetaStarPlanner:
         """One planner per (world, resolution, inflation): its landmark maps cost seconds on big grids."""
         key = (str(getattr(grid, "world_name", "")), round(float(grid.resolution), 6),
                round(float(getattr(grid, "inflation", 0.0)), 6), "planner", grid.occupied.shape)
