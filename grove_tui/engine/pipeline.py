@@ -26,7 +26,7 @@ from grove_tui.engine.planning import PlanningCancelled, RobotRequest, plan_oper
 from grove_tui.engine.postprocess import check_population, postprocess
 from grove_tui.engine.presets import GenerationError, Preset, PromptError
 from grove_tui.engine.quantities import extract_quantities
-from grove_tui.engine.rois import RoIMatcher, describe_selection, select_rois
+from grove_tui.engine.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.engine.scenario import Scenario
 from grove_tui.engine.synthesis import describe_documents, draft_summary, prepare_request, synthesize
 from grove_tui.engine.velocity_field import VelocityField
@@ -149,8 +149,11 @@ class GenerationPipeline:
         t0 = begin("rois")
         quantities = extract_quantities(prompt)
         selection = select_rois(world, preset, prompt, self.matcher)
+        roi_tokens = (0, 0)
+        if self.llm_roi is not None and preset.guided:
+            selection, *roi_tokens = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
         check_population(world, self.grid, preset, selection, quantities)
-        end("rois", t0, ", ".join(selection.zones))
+        end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 
         t0 = begin("retrieval")
         if preset.retrieval_filter is not None and preset.retrieval_k > 0:

@@ -11,6 +11,7 @@ names that the world does not have is an error listing the closest real names.
 from __future__ import annotations
 
 import difflib
+import json
 import math
 import re
 from collections.abc import Callable, Sequence
@@ -429,3 +430,58 @@ def describe_selection(selection: RoISelection) -> list[dict[str, Any]]:
     return [{"kind": m.kind, "name": m.name, "zone": m.zone, "score": m.score, "matched": list(m.matched),
              "reason": m.reason} for m in selection.matches]
 
+
+
+def ambiguous_mentions(selection: RoISelection) -> list[list[RoIMatch]]:
+    """Prompt matches that tie on the same words ("the restroom" -> men's and women's): the model may choose."""
+    groups: dict[tuple[tuple[str, ...], float], list[RoIMatch]] = {}
+    for m in selection.matches:
+        if m.reason == "prompt":
+            groups.setdefault((m.matched, m.score), []).append(m)
+    return [g for g in groups.values() if len(g) > 1]
+
+
+def refine_with_model(world: Any, preset: Preset, prompt: str, selection: RoISelection, llm: Any, seed: int = 0,
+                      cancel: Any = None) -> tuple[RoISelection, int, int]:
+    """Let the roi model pick one RoI per ambiguous mention, under a grammar that only allows the candidates.
+
+    Returns the refined selection and the prompt/completion tokens spent. Unambiguous matches are
+    never touched, so a weak model can only choose between places the prompt already named.
+    """
+    from grove_tui.models.grammar import schema_to_gbnf
+
+    prompt_tokens = completion_tokens = 0
+    dropped: set[str] = set()
+    for group in ambiguous_mentions(selection):
+        names = [m.name for m in group]
+        lines = []
+        for m in group:
+            obj = world.find(m.name)
+            aliases = ", ".join(getattr(obj, "aliases", ()) or ())
+            lines.append(f"- {m.name}" + (f" ({aliases})" if aliases else ""))
+        messages = [
+            {"role": "system", "content": "You choose which place a sentence means. Answer with JSON only."},
+            {"role": "user", "content": f"Sentence: {prompt}\nThe words '{' '.join(group[0].matched)}' could mean:\n"
+                                        + "\n".join(lines) + '\nAnswer {"place": NAME}.'},
+        ]
+        schema = {"type": "object", "properties": {"place": {"enum": names}}, "required": ["place"],
+                  "additionalProperties": False}
+        generation = llm.generate(messages, grammar=schema_to_gbnf(schema), max_tokens=32, seed=seed, cancel=cancel)
+        prompt_tokens += generation.prompt_tokens
+        completion_tokens += generation.completion_tokens
+        try:
+            choice = json.loads(generation.text)["place"]
+        except (ValueError, KeyError, TypeError):
+            continue  # the grammar makes this unreachable; keeping every candidate is the safe answer
+        if choice in names:
+            dropped |= set(names) - {choice}
+    if not dropped:
+        return selection, prompt_tokens, completion_tokens
+    kept = [m for m in selection.matches if m.name not in dropped]
+    # A zone that was only there to contain a dropped door or entity goes too.
+    kept = [m for m in kept if m.reason != "container" or any(k.zone == m.name and k.kind != "zone" for k in kept)]
+    zones = list(dict.fromkeys(m.zone for m in kept if m.reason != "preset"))
+    named = [z for z in selection.named_zones if z in zones]
+    summary = summarize(world, zones, {m.name for m in kept}, selection.exits)
+    return (RoISelection(kept, zones, named or zones, summary, [m.name for m in kept], selection.exits),
+            prompt_tokens, completion_tokens)
