@@ -230,3 +230,14 @@ def test_field_mode_steers_along_the_planners_sampled_direction():
         direction /= np.linalg.norm(direction)
         expected = 2.0 * 1.0 * direction / 0.5 * crowd.dt  # w_g v0 e / tau, from rest
         assert np.allclose(crowd.vel[i], expected, atol=1e-6)
+
+
+def test_kernel_math_matches_libm():
+    rng = np.random.default_rng(3)
+    for x, y in rng.normal(size=(20000, 2)):
+        assert sfm._fast_atan2(y, x) == pytest.approx(math.atan2(y, x), abs=5e-11)
+    for x, y in [(1.0, 0.0), (-1.0, 0.0), (-1.0, -0.0), (0.0, 1.0), (0.0, -1.0), (0.0, 0.0), (-3.0, 3.0)]:
+        assert sfm._fast_atan2(y, x) == pytest.approx(math.atan2(y, x), abs=5e-11)
+    for x in -rng.uniform(0.0, 60.0, size=20000):
+        assert sfm._fast_exp(x) == pytest.approx(math.exp(x), rel=1e-12)
+    assert sfm._fast_exp(0.0) == 1.0 and sfm._fast_exp(-800.0) == 0.0
