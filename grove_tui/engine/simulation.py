@@ -32,7 +32,7 @@ import numpy as np
 from grove_tui.engine.bt.context import AgentContext, SimContext
 from grove_tui.engine.bt.manifest import SUBTREE
 from grove_tui.engine.bt.nodes import tree_factory
-from grove_tui.engine.bt.nodes_hunav import ROBOT_REACTIONS
+from grove_tui.engine.bt.nodes_hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.engine.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
 from grove_tui.engine.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
 from grove_tui.engine.crowd import ROBOT_AS_OBSTACLE, Crowd
@@ -97,6 +97,16 @@ class Simulation:
         self.bt_dt = self.bt_every * self.dt
         self.loops = loops if loops is not None else [False] * len(trees)
         self.finished = [tree is None for tree in trees]
+        self._finished_mask = np.array(self.finished, dtype=bool)
+        n = len(trees)
+        # quiescence specs (see tick_behaviors): far from (x, y) by more than sqrt(r2), before t,
+        # robot unseen within guard distance (< 0: no guard)
+        self._q_on = np.zeros(n, dtype=bool)
+        self._q_x = np.zeros(n)
+        self._q_y = np.zeros(n)
+        self._q_r2 = np.zeros(n)
+        self._q_t = np.zeros(n)
+        self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
         self.scenario = scenario
         self.world = world
@@ -212,27 +222,81 @@ class Simulation:
         self._measure_contacts()
 
     def tick_behaviors(self) -> None:
-        """Tick every unfinished tree once with the current positions, then order new queue arrivals."""
+        """Tick every unfinished tree once with the current positions, then order new queue arrivals.
+
+        Trees waiting in a quiescent state (BehaviorTree.quiet) whose leaf condition is a distance or
+        a deadline (`quiet_spec`) are checked together in numpy, with margins so that only cases
+        certain to be quiet are skipped; everything else goes through BehaviorTree.tick, which
+        decides exactly.
+        """
         ctx = self.context
         ctx.refresh()
-        active = ctx.active
         trees, finished, loops = self.trees, self.finished, self.loops
-        for row in range(len(trees)):
-            if finished[row] or not active[row]:
-                continue
+        quiet_rows = self._quiet_rows()
+        alive = np.asarray(self.crowd.active[: len(trees)], dtype=bool) & ~self._finished_mask
+        for row in np.flatnonzero(alive & ~quiet_rows).tolist():
             tree = trees[row]
             quiet = tree.quiet
             # BehaviorTree.tick's quiescent check, inlined for the common guard-free case
             if quiet is not None and not quiet[1] and quiet[0].poll():
                 continue
             status = tree.tick()
+            self._update_quiet_spec(row)
             if (status == SUCCESS or status == FAILURE) and not loops[row]:
                 finished[row] = True
+                self._finished_mask[row] = True
+                self._q_on[row] = False
                 ctx.counters.finished_trees += 1
                 self.tree_result[row] = "done" if status == SUCCESS else "failed"
                 if ctx.status[row] != "evacuated":
                     ctx.status[row] = f"{ctx.status[row]} · {self.tree_result[row]}" if ctx.status[row] else self.tree_result[row]
         ctx.queues.commit()
+
+    def _update_quiet_spec(self, row: int) -> None:
+        tree = self.trees[row]
+        self._q_on[row] = False
+        quiet = tree.quiet
+        if quiet is None:
+            return
+        leaf, guards = quiet
+        spec_of = getattr(leaf, "quiet_spec", None)
+        if spec_of is None:
+            return
+        guard_distance = -1.0
+        if guards:
+            if len(guards) != 1 or guards[0][1] != FAILURE:
+                return
+            distance_of = getattr(guards[0][0], "robot_guard_distance", None)
+            distance = distance_of() if distance_of is not None else None
+            if distance is None:
+                return
+            guard_distance = float(distance)
+        spec = spec_of()
+        if spec is None:
+            return
+        self._q_x[row], self._q_y[row], self._q_r2[row], self._q_t[row] = spec
+        self._q_guard[row] = guard_distance
+        self._q_on[row] = True
+
+    def _quiet_rows(self) -> np.ndarray:
+        """Rows certain to be quiescent this tick (conservative margins; the rest are ticked exactly)."""
+        on = self._q_on
+        if not on.any():
+            return on.copy()
+        pos = self.crowd.pos[: len(self.trees)]
+        x, y = pos[:, 0], pos[:, 1]
+        d2 = (x - self._q_x) ** 2 + (y - self._q_y) ** 2
+        ok = on & (d2 > self._q_r2 + 1e-9) & (self.clock.now < self._q_t - 1e-6)
+        guarded = self._q_guard >= 0
+        if guarded.any():
+            robot = self.context.robot
+            if robot is not None:
+                dx, dy = robot[0] - x, robot[1] - y
+                far = dx * dx + dy * dy > self._q_guard ** 2 + 1e-6
+                off = np.abs(np.angle(np.exp(1j * (np.arctan2(dy, dx) - self.crowd.yaw[: len(self.trees)]))))
+                unseen = far | (off > VISIBLE_HALF_ANGLE + 1e-6)
+                ok &= ~guarded | unseen
+        return ok
 
     def run(self, seconds: float, on_frame: Callable[[Frame], Any] | None = None,
             cancel: threading.Event | Callable[[], bool] | None = None) -> Frame:

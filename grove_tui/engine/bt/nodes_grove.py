@@ -90,6 +90,11 @@ class GoTo(AgentStatefulAction):
         self.interrupted = True
         _stand(self.sim, self.row)
 
+    def quiet_spec(self):
+        """(x, y, r2, t_end): poll() holds while the agent is farther than sqrt(r2) from (x, y) and
+        the clock is before t_end; lets the simulation check all quiet agents at once in numpy."""
+        return (self.target_point[0], self.target_point[1], self.reach2, math.inf)
+
     def poll(self) -> bool:
         """Side-effect-free: would on_running return RUNNING (not arrived yet)?"""
         sim, row, t = self.sim, self.row, self.target_point
@@ -103,6 +108,9 @@ class Wait(AgentStatefulAction):
 
     def poll(self) -> bool:
         return self.on_running() == RUNNING  # on_running only reads the clock
+
+    def quiet_spec(self):
+        return (0.0, 0.0, -1.0, self.started_at + self.get_input("duration") - 1e-9)
 
     def on_start(self) -> int:
         sim = self.sim
@@ -244,6 +252,9 @@ class FollowVelocityField(AgentStatefulAction):
     def on_halted(self) -> None:
         self.sim.crowd.set_mode(self.row, MODE_STOP)
 
+    def quiet_spec(self):
+        return (self.exit_point[0], self.exit_point[1], EXIT_RADIUS * EXIT_RADIUS, math.inf)
+
     def poll(self) -> bool:
         sim, row, e = self.sim, self.row, self.exit_point
         return math.hypot(sim.px[row] - e[0], sim.py[row] - e[1]) > EXIT_RADIUS
@@ -314,6 +325,13 @@ class Wander(AgentStatefulAction):
 
     def on_halted(self) -> None:
         _stand(self.sim, self.row)
+
+    def quiet_spec(self):
+        duration = self.get_input("duration")
+        end = self.started_at + duration - 1e-9 if duration > 0 else math.inf
+        if self.pause_until >= 0:
+            return (0.0, 0.0, -1.0, min(self.pause_until, end))
+        return (self.goal[0], self.goal[1], 0.16, end)
 
     def poll(self) -> bool:
         duration = self.get_input("duration")
@@ -415,6 +433,11 @@ class Converse(AgentStatefulAction):
             self.sim.conversations.leave(self.conv, self.row)
         self.sim.crowd.set_group(self.row, self.group)
         _stand(self.sim, self.row)
+
+    def quiet_spec(self):
+        if self.ready:
+            return None
+        return (self.spot[0], self.spot[1], ARRIVAL_TOLERANCE * ARRIVAL_TOLERANCE, math.inf)
 
     def poll(self) -> bool:
         """Would on_running change nothing and return RUNNING? Walking to the spot, standing on it while

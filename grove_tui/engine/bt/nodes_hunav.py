@@ -39,6 +39,10 @@ class IsRobotVisible(AgentCondition):
     __slots__ = ("distance",)
     PURE = True
 
+    def robot_guard_distance(self) -> float | None:
+        """Its literal range, so the simulation can check many agents' guards at once."""
+        return self.distance
+
     def setup(self) -> None:
         super().setup()
         self.distance = self.get_input("distance") if self.is_literal("distance") else None
@@ -372,6 +376,12 @@ class _Timed(AgentStatefulAction):
             return False
         duration = self.get_input(self.DURATION_PORT)
         return duration <= 0 or self.elapsed() + 1e-9 < duration
+
+    def quiet_spec(self):
+        if type(self).step is not _Timed.step:
+            return None
+        duration = self.get_input(self.DURATION_PORT)
+        return (0.0, 0.0, -1.0, self.started_at + duration - 1e-9 if duration > 0 else math.inf)
 
     def begin(self) -> None:
         """Set the intents the behavior starts with."""
