@@ -8,11 +8,11 @@ cd "$(dirname "$0")"
 # llama-cpp-python compiles from source: a portable CPU build (no -march=native, no multimodal lib).
 export CMAKE_ARGS="${CMAKE_ARGS:--DGGML_NATIVE=OFF -DLLAVA_BUILD=OFF}"
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}"
-extras=""
+extras="[plots]"
 case "${1:-}" in
   "") ;;
-  test) extras="[test]" ;;
-  bench) extras="[test,bench]" ;;
+  test) extras="[plots,test]" ;;
+  bench) extras="[plots,test,bench]" ;;
   *) echo "usage: ./install.sh [test|bench]" >&2; exit 2 ;;
 esac
 python -m pip install -c constraints.txt "llama-cpp-python==0.3.36"
