@@ -277,7 +277,8 @@ def test_paths_are_deterministic_and_buffers_reusable():
 @pytest.fixture(scope="module", params=WORLDS)
 def world_planner(request):
     grid = build_grid(load_world(request.param), resolution=0.1)
-    return grid, ThetaStarPlanner(grid), np.argwhere(~grid.occupied)
+    # with the landmark heuristic on: the "no longer than A*" guarantee rests on its admissibility
+    return grid, ThetaStarPlanner(grid, landmarks=8), np.argwhere(~grid.occupied)
 
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
