@@ -48,6 +48,13 @@ async def generate_to_inspect(pilot, app: GroveApp, prompt: str = PROMPT, timeou
     return inspect
 
 
+async def first_frame(pilot, sim: SimulationScreen, timeout: float = 60) -> None:
+    status = sim.query_one("#sim-status", Static)
+    await wait_until(pilot, lambda: (sim.controller is not None and sim.controller.latest is not None)
+                     or "cannot simulate" in str(status.render()), timeout=timeout, what="first frame")
+    assert sim.controller is not None, str(status.render())
+
+
 async def test_generate_inspect_play_and_export(tmp_path):
     llm = FakeLLM()
     app = GroveApp(fake_llm_backend(tmp_path / "runs", llm), test_settings(tmp_path))
@@ -89,8 +96,7 @@ async def test_generate_inspect_play_and_export(tmp_path):
         await pilot.press("p")
         await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
         sim = app.screen
-        await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None,
-                         what="first frame")
+        await first_frame(pilot, sim)
         first = sim.controller.latest.frame
         await pilot.press("f")  # as fast as possible
         await pilot.press("space")
@@ -110,7 +116,8 @@ async def test_generate_inspect_play_and_export(tmp_path):
 
         # export
         await pilot.press("e")
-        await wait_until(pilot, lambda: isinstance(app.screen, ExportResultScreen), timeout=60, what="export dialog")
+        await wait_until(pilot, lambda: isinstance(app.screen, ExportResultScreen)
+                         and bool(app.screen.query("#export-files")), timeout=60, what="export dialog")
         files = {f.kind: f for f in app.screen.files}
         assert (files["bundle"].path / "scenario.yaml").is_file()
         assert files["trajectories"].path.is_file(), files["trajectories"].note
@@ -118,7 +125,8 @@ async def test_generate_inspect_play_and_export(tmp_path):
         assert "events" in files and "picture" in files and "hunav" in files
         assert str(app.screen.out_dir).startswith(str(tmp_path / "exports"))
         shown = str(app.screen.query_one("#export-files", Static).render())
-        assert str(files["bundle"].path) in shown and str(files["metrics"].path) in shown
+        assert str(app.screen.out_dir) in str(app.screen.query_one("#export-title", Static).render())
+        assert "✓ bundle" in shown and "bundle/metrics.json" in shown and "bundle/trajectories.csv" in shown
         # every format is either written or says why not, in the dialog
         for exported in files.values():
             assert exported.path.exists()
@@ -137,7 +145,7 @@ async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_pat
         await pilot.press("p")
         await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
         sim = app.screen
-        await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None, what="frame")
+        await first_frame(pilot, sim)
         step0 = sim.controller.latest.frame.step
         await pilot.press("n", "n", "n")
         await wait_until(pilot, lambda: sim.controller.latest.frame.step == step0 + 3, what="three steps")
@@ -206,6 +214,6 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
         await pilot.press("p")
         await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
         sim = app.screen
-        await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None, what="frame")
+        await first_frame(pilot, sim, timeout=180)
         await pilot.press("f", "space")
         await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 2.0, timeout=60, what="2 simulated seconds")

@@ -7,13 +7,31 @@ from typing import Any
 
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Vertical
+from textual.containers import Vertical, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Button, Static
 
+NOTE_CHARS = 160
+
+
+def describe(files: list[Any], out_dir: Path) -> str:
+    """One line per export, paths relative to the export folder (shown once above them)."""
+    lines = []
+    for exported in files:
+        try:
+            shown = str(Path(exported.path).relative_to(out_dir)) or "."
+        except ValueError:
+            shown = str(exported.path)
+        note = exported.note if len(exported.note) <= NOTE_CHARS else exported.note[: NOTE_CHARS - 1] + "…"
+        if note.startswith(("failed", "not ")):
+            lines.append(f"✗ {exported.kind:<12} {note}")
+        else:
+            lines.append(f"✓ {exported.kind:<12} {shown}" + (f"  {note}" if note else ""))
+    return "\n".join(lines) or "nothing was exported"
+
 
 class ExportResultScreen(ModalScreen[None]):
-    HELP = "## Export\n\nThe files just written. **Enter** or **Escape** closes this dialog."
+    HELP = "## Export\n\nThe files just written, relative to the export folder. **Enter** or **Escape** closes this dialog."
 
     BINDINGS = [Binding("escape,enter", "dismiss", "Close", id="export.close", tooltip="Close this dialog")]
 
@@ -23,11 +41,10 @@ class ExportResultScreen(ModalScreen[None]):
         self.out_dir = out_dir
 
     def compose(self) -> ComposeResult:
-        lines = [f"{f.kind:<13} {f.path}" + (f"  ({f.note})" if f.note else "") for f in self.files]
-        lines = lines or ["nothing was exported"]
         with Vertical(id="export-dialog"):
             yield Static(f"Exported to {self.out_dir}", id="export-title", markup=False)
-            yield Static("\n".join(lines), id="export-files", markup=False)
+            with VerticalScroll(id="export-scroll"):
+                yield Static(describe(self.files, self.out_dir), id="export-files", markup=False)
             yield Button("Close", id="export-close", variant="primary")
 
     def on_mount(self) -> None:

@@ -139,10 +139,12 @@ which GGUF file serves each role and whether it is loaded yet.
         lines = []
         for status in message.statuses:
             state = "loaded" if status.loaded else ("error" if status.error else ("loading…" if message.loading else "on demand"))
-            lines.append(f"{status.role:>3} {status.file} · {state}")
+            lines.append(f"{status.role:<3} {state}: {status.file}")
             if status.error:
                 lines.append(f"    {status.error}")
-        self.query_one("#models", Static).update("\n".join(lines) or "no models found")
+        panel = self.query_one("#models", Static)
+        panel.update("\n".join(lines) or "no models found")
+        panel.tooltip = "\n".join(f"{s.role}: {s.file}" for s in message.statuses)
 
     @on(OptionList.OptionHighlighted, "#worlds")
     def world_highlighted(self, event: OptionList.OptionHighlighted) -> None:

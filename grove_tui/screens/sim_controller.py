@@ -7,6 +7,7 @@ reference the sim thread swaps atomically. Nothing here imports textual.
 from __future__ import annotations
 
 import queue
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -41,6 +42,7 @@ class SimulationController:
         self.manual_robot = False
         self.latest: Snapshot | None = None
         self._commands: queue.SimpleQueue[tuple[Any, ...]] = queue.SimpleQueue()
+        self._wake = threading.Event()
         self._serial = 0
         self._anchor: tuple[float, float] | None = None
         self._drive_until = 0.0
@@ -51,6 +53,7 @@ class SimulationController:
     # commands from the UI thread (thread-safe) ------------------------------------------------------
     def send(self, *command: Any) -> None:
         self._commands.put(command)
+        self._wake.set()
 
     # the worker thread -----------------------------------------------------------------------------
     def run(self, cancelled: Callable[[], bool]) -> None:
@@ -67,12 +70,8 @@ class SimulationController:
             if changed:
                 self._publish()
             remaining = period - (time.monotonic() - tick_start)
-            if remaining > 0:
-                try:
-                    command = self._commands.get(timeout=remaining)
-                except queue.Empty:
-                    continue
-                self._commands.put(command)
+            if remaining > 0 and self._wake.wait(remaining):
+                self._wake.clear()
 
     def _advance(self, now: float, period: float) -> bool:
         sim = self.simulation

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -143,7 +144,9 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_table = self._build_colours()
         world_map = self.query_one("#sim-map", SimMapView)
         world_map.set_world(self.generated.world)
-        world_map.set_overlay(base_overlay(self.generated))
+        # Spawn and waypoint markers would read as people; the sim shows goals and the robot's path only.
+        overlay = base_overlay(self.generated)
+        world_map.set_overlay(replace(overlay, spawns=overlay.spawns[:0], waypoints=overlay.waypoints[:0]))
         world_map.focus()
         self.start_simulation()
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")

@@ -1,0 +1,124 @@
+"""SVG snapshots of every screen at 80x24 and 120x40 (pytest-textual-snapshot).
+
+Deterministic by construction: fixed seed, a fake LLM with a fixed answer, scripted pipeline timings,
+simulated time only (no wall clock), cursor blink off. Accept intended changes with
+`python -m pytest tests/test_tui_snapshots.py --snapshot-update` and review the SVGs.
+"""
+
+from __future__ import annotations
+
+import pytest
+from test_app_support import (  # noqa: F401  (fixtures)
+    FIXED_SCRIPT,
+    ScriptedBackend,
+    fake_llm_backend,
+    isolated_user_dirs,
+    test_settings,
+    wait_until,
+)
+from textual.widgets import DataTable, Input, Static
+
+from grove_tui.app import GroveApp
+from grove_tui.screens.generation import GenerationScreen
+from grove_tui.screens.help import HelpScreen
+from grove_tui.screens.inspect import InspectScreen
+from grove_tui.screens.setup import SetupScreen
+from grove_tui.screens.simulation import SimulationScreen
+from grove_tui.screens.widgets.bt_tree import BTTree
+from grove_tui.screens.widgets.map_view import MapView
+
+SIZES = [pytest.param((80, 24), id="80x24"), pytest.param((120, 40), id="120x40")]
+PROMPT = "six patients queue at the pharmacy counter"
+
+
+def no_blink(app: GroveApp) -> None:
+    for widget in app.screen.query(Input):
+        widget.cursor_blink = False
+
+
+async def setup_ready(pilot) -> None:
+    app = pilot.app
+    await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
+    screen = app.screen
+    await wait_until(pilot, lambda: screen.query_one("#preview", MapView).raster is not None, what="preview")
+    await wait_until(pilot, lambda: "loaded" in str(screen.query_one("#models", Static).render())
+                     or "demand" in str(screen.query_one("#models", Static).render()), what="model status")
+    no_blink(app)
+
+
+async def to_inspect(pilot) -> InspectScreen:
+    await setup_ready(pilot)
+    await pilot.press(*PROMPT, "enter")
+    app = pilot.app
+    await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen), timeout=60, what="inspect")
+    screen = app.screen
+    await wait_until(pilot, lambda: screen._selected_node is not None, what="first agent selected")
+    return screen
+
+
+class TestSetupScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_setup(self, snap_compare, tmp_path, size):
+        app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=setup_ready)
+
+
+class TestGenerationScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_generation_streaming(self, snap_compare, tmp_path, size):
+        backend = ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=10)
+
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press(*PROMPT, "enter")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, GenerationScreen), what="generation")
+            screen = app.screen
+            await wait_until(pilot, backend.blocking.is_set, what="script played")
+            table = screen.query_one("#stages", DataTable)
+            await wait_until(pilot, lambda: table.get_cell("synthesis", "state") == "running", what="synthesis")
+            await wait_until(pilot, lambda: "patients" in str(screen.query_one("#stream", Static).render()),
+                             what="stream")
+
+        app = GroveApp(backend, test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestInspectScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_inspect(self, snap_compare, tmp_path, size):
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=to_inspect)
+
+
+class TestSimulationScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_simulation_after_ten_steps(self, snap_compare, tmp_path, size):
+        async def run_before(pilot) -> None:
+            await to_inspect(pilot)
+            await pilot.press("p")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
+            sim = app.screen
+            await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None,
+                             what="first frame")
+            await pilot.press(*["n"] * 10)
+            await wait_until(pilot, lambda: sim.controller.latest.frame.step == 10, what="ten steps")
+            tree = sim.query_one("#sim-tree", BTTree)
+            await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial and bool(tree._status),
+                             what="last frame drawn")
+
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestHelpScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_help_for_the_prompt(self, snap_compare, tmp_path, size):
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press("f1")
+            await wait_until(pilot, lambda: isinstance(pilot.app.screen, HelpScreen), what="help")
+
+        app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=run_before)
