@@ -633,8 +633,8 @@ def _turn_towards(current, target, max_step):
 
 
 @nb.njit(cache=True)
-def _build_cells(pos, active, cutoff):
-    """Counting-sort cell list of the active agents (cells at least `cutoff` wide)."""
+def _build_cells(pos, active, min_cell):
+    """Counting-sort cell list of the active agents (cells at least `min_cell` wide)."""
     n = pos.shape[0]
     count = 0
     xmin = 1e300
@@ -659,7 +659,7 @@ def _build_cells(pos, active, cutoff):
         ymin = 0.0
         xmax = 0.0
         ymax = 0.0
-    cell = cutoff
+    cell = min_cell
     limit = max(4 * count, 64)
     nx = int((xmax - xmin) / cell) + 1
     ny = int((ymax - ymin) / cell) + 1
@@ -690,7 +690,7 @@ def _build_cells(pos, active, cutoff):
         if c >= 0:
             order[fill[c]] = i
             fill[c] += 1
-    return order, starts, cell_of, nx, ny
+    return order, starts, cell_of, nx, ny, cell
 
 
 # --------------------------------------------------------------------------- robot
@@ -751,7 +751,7 @@ def _update_agents(k0, k1, dt, params,
                    face_kind, face_ref, face_point,
                    robot_interaction, robot,
                    walls, wall_owner, wall_meta, wall_start, wall_items,
-                   order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
+                   order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                    new_pos, new_vel, new_yaw):
     """Forces and integration for agents order[k0:k1]; each writes only its own row of new_*."""
     n = pos.shape[0]
@@ -829,8 +829,8 @@ def _update_agents(k0, k1, dt, params,
         c = cell_of[i]
         ccx = c % gnx
         ccy = c // gnx
-        for oy in range(max(ccy - 1, 0), min(ccy + 2, gny)):
-            for ox in range(max(ccx - 1, 0), min(ccx + 2, gnx)):
+        for oy in range(max(ccy - span, 0), min(ccy + span + 1, gny)):
+            for ox in range(max(ccx - span, 0), min(ccx + span + 1, gnx)):
                 cc = oy * gnx + ox
                 for kk in range(starts[cc], starts[cc + 1]):
                     if kk == k:
@@ -1069,7 +1069,10 @@ def _prepare_step(dt, params, pos, vel, radius, active, group_start, group_membe
         if cnt > 0:
             group_cx[g] = sx / cnt
             group_cy[g] = sy / cnt
-    order, starts, cell_of, gnx, gny = _build_cells(pos, active, params[P_CUTOFF])
+    # Half-cutoff cells: the 5x5 block scanned is 31% smaller than a 3x3 block of cutoff cells,
+    # which matters in jams where most scanned candidates lie beyond the cutoff.
+    order, starts, cell_of, gnx, gny, cell = _build_cells(pos, active, 0.5 * params[P_CUTOFF])
+    span = int(math.ceil(params[P_CUTOFF] / cell - 1e-9))
     n_active = order.shape[0]
     # Neighbour state gathered in cell order: the inner loop then reads contiguous memory.
     spx = np.empty(n_active)
@@ -1084,7 +1087,7 @@ def _prepare_step(dt, params, pos, vel, radius, active, group_start, group_membe
         svx[k] = vel[j, 0]
         svy[k] = vel[j, 1]
         srad[k] = radius[j]
-    return order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad
+    return order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad
 
 
 @nb.njit(cache=True)
@@ -1123,7 +1126,7 @@ def advance_serial(n_steps, dt, params,
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
     for _step in range(n_steps):
-        order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad = _prepare_step(
+        order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad = _prepare_step(
             dt, params, pos, vel, radius, active, group_start, group_members, group_cx, group_cy, group_n,
             robot, robot_path, walls, wall_meta, wall_start, wall_items)
         n_active = order.shape[0]
@@ -1135,7 +1138,7 @@ def advance_serial(n_steps, dt, params,
                        face_kind, face_ref, face_point,
                        robot_interaction, robot,
                        walls, wall_owner, wall_meta, wall_start, wall_items,
-                       order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
+                       order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                        new_pos, new_vel, new_yaw)
         _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
 
@@ -1162,7 +1165,7 @@ def advance_parallel(n_steps, dt, params,
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
     for _step in range(n_steps):
-        order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad = _prepare_step(
+        order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad = _prepare_step(
             dt, params, pos, vel, radius, active, group_start, group_members, group_cx, group_cy, group_n,
             robot, robot_path, walls, wall_meta, wall_start, wall_items)
         n_active = order.shape[0]
@@ -1176,7 +1179,7 @@ def advance_parallel(n_steps, dt, params,
                            face_kind, face_ref, face_point,
                            robot_interaction, robot,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
-                           order, starts, cell_of, gnx, gny, spx, spy, svx, svy, srad,
+                           order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                            new_pos, new_vel, new_yaw)
         # A serial copy costs less than another thread barrier.
         _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
