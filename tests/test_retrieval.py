@@ -213,3 +213,15 @@ def test_lexical_matching_is_stemmed_and_order_free():
     assert phrase_in_prompt(content_tokens("counter"), prompt)
     assert not phrase_in_prompt(content_tokens("wait in line"), prompt)
     assert phrase_in_prompt(content_tokens("FollowVelocityField"), frozenset(content_tokens("use follow velocity fields")))
+
+
+def test_query_embeddings_match_document_embeddings():
+    from grove_tui.engine.retrieval import embed_query, embed_texts
+
+    texts = ["evacuate", "ten patients queue at the pharmacy counter",
+             "a family of four wanders around the lobby together while a curious child approaches the robot " * 8]
+    for text in texts:
+        query = embed_query(text)
+        assert query.shape == (1, 384)
+        assert abs(float(query @ query.T) - 1.0) < 1e-5
+        assert float(abs(query - embed_texts([text])).max()) < 1e-4, text

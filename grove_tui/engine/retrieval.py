@@ -152,6 +152,80 @@ def embed_texts(texts: Sequence[str]) -> np.ndarray:
     return np.asarray(vectors, dtype=np.float32)
 
 
+_query_encoder_lock = threading.Lock()
+_query_encoder: Any = None
+
+
+def _eager_query_encoder(model: Any) -> Any:
+    import torch
+
+    def encode(features: dict[str, Any]) -> Any:
+        return torch.nn.functional.normalize(model(features)["sentence_embedding"], dim=1)
+
+    return encode
+
+
+def _traced_query_encoder(model: Any) -> Any:
+    """The transformer plus mean pooling, traced and frozen by TorchScript: about 30 % less CPU per
+    query than the eager module stack (measured 9.7 vs 13.7 ms). Checked against the eager model on
+    two probe sentences of different lengths; any difference means the eager path is used."""
+    import torch
+
+    modules = [type(module).__name__ for module in model]
+    pooling = model[1].get_config_dict() if len(model) > 1 and hasattr(model[1], "get_config_dict") else {}
+    mean_pooling = pooling.get("pooling_mode") == "mean" or pooling.get("pooling_mode_mean_tokens") is True
+    if modules[:2] != ["Transformer", "Pooling"] or not mean_pooling:
+        return None
+    transformer = model[0].auto_model
+
+    class MeanPooledEncoder(torch.nn.Module):
+        def __init__(self) -> None:
+            super().__init__()
+            self.transformer = transformer
+
+        def forward(self, input_ids: Any, attention_mask: Any) -> Any:
+            hidden = self.transformer(input_ids=input_ids, attention_mask=attention_mask).last_hidden_state
+            mask = attention_mask.unsqueeze(-1).to(hidden.dtype)
+            return torch.nn.functional.normalize((hidden * mask).sum(1) / mask.sum(1).clamp(min=1e-9), dim=1)
+
+    preprocess = getattr(model, "preprocess", None) or model.tokenize  # renamed in sentence-transformers 5
+    probes = [preprocess(["ten patients queue at the pharmacy counter and then leave"]), preprocess(["evacuate"])]
+    eager = _eager_query_encoder(model)
+    from transformers.utils import logging as transformers_logging
+
+    verbosity = transformers_logging.get_verbosity()
+    transformers_logging.set_verbosity_error()  # tracing reads config fields that log harmless notices
+    try:
+        with torch.no_grad(), warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # TracerWarnings about shape-derived Python booleans, constant for us
+            traced = torch.jit.trace(MeanPooledEncoder().eval(), (probes[0]["input_ids"], probes[0]["attention_mask"]),
+                                     strict=False)
+            frozen = torch.jit.optimize_for_inference(torch.jit.freeze(traced))
+            for probe in probes:
+                if not torch.allclose(frozen(probe["input_ids"], probe["attention_mask"]), eager(probe), atol=1e-5):
+                    return None
+    finally:
+        transformers_logging.set_verbosity(verbosity)
+
+    def encode(features: dict[str, Any]) -> Any:
+        return frozen(features["input_ids"], features["attention_mask"])
+
+    return encode
+
+
+def _query_encoder_for(model: Any) -> Any:
+    global _query_encoder
+    with _query_encoder_lock:
+        if _query_encoder is None:
+            try:
+                _query_encoder = _traced_query_encoder(model)
+            except Exception as exc:  # TorchScript refuses some model versions; eager is always right
+                log.info("query encoder not traced (%s); using the eager model", exc)
+            if _query_encoder is None:
+                _query_encoder = _eager_query_encoder(model)
+        return _query_encoder
+
+
 @lru_cache(maxsize=512)
 def _embed_query_cached(text: str) -> bytes:
     import torch
@@ -159,10 +233,10 @@ def _embed_query_cached(text: str) -> bytes:
     model = embedding_model()
     # One short sentence: a second intra-op thread only adds hand-off cost (measured under load:
     # 20 ms with one thread, 240 ms with two).
-    with _torch_threads(1), torch.inference_mode():
-        preprocess = getattr(model, "preprocess", None) or model.tokenize  # renamed in sentence-transformers 5
-        features = preprocess([text])
-        vector = torch.nn.functional.normalize(model(features)["sentence_embedding"], dim=1)
+    with _torch_threads(1), torch.no_grad():
+        encode = _query_encoder_for(model)
+        preprocess = getattr(model, "preprocess", None) or model.tokenize
+        vector = encode(preprocess([text]))
     return vector.numpy().astype(np.float32).tobytes()
 
 
