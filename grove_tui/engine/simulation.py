@@ -287,15 +287,13 @@ class Simulation:
         x, y = pos[:, 0], pos[:, 1]
         d2 = (x - self._q_x) ** 2 + (y - self._q_y) ** 2
         ok = on & (d2 > self._q_r2 + 1e-9) & (self.clock.now < self._q_t - 1e-6)
-        guarded = self._q_guard >= 0
-        if guarded.any():
-            robot = self.context.robot
-            if robot is not None:
-                dx, dy = robot[0] - x, robot[1] - y
-                far = dx * dx + dy * dy > self._q_guard ** 2 + 1e-6
-                off = np.abs(np.angle(np.exp(1j * (np.arctan2(dy, dx) - self.crowd.yaw[: len(self.trees)]))))
-                unseen = far | (off > VISIBLE_HALF_ANGLE + 1e-6)
-                ok &= ~guarded | unseen
+        guarded = np.flatnonzero(ok & (self._q_guard >= 0))
+        robot = self.context.robot
+        if len(guarded) and robot is not None:
+            dx, dy = robot[0] - x[guarded], robot[1] - y[guarded]
+            far = dx * dx + dy * dy > self._q_guard[guarded] ** 2 + 1e-6
+            turn = (np.arctan2(dy, dx) - self.crowd.yaw[guarded] + np.pi) % (2 * np.pi) - np.pi
+            ok[guarded] = far | (np.abs(turn) > VISIBLE_HALF_ANGLE + 1e-6)
         return ok
 
     def run(self, seconds: float, on_frame: Callable[[Frame], Any] | None = None,
