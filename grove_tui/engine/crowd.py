@@ -12,6 +12,7 @@ import warnings
 from collections.abc import Iterable, Sequence
 from typing import Any
 
+import numba
 import numpy as np
 
 from grove_tui.engine import sfm
@@ -547,7 +548,18 @@ class Crowd:
             return
         self._refresh_groups()
         k = self.n
-        kernel = sfm.advance_parallel if k >= self.parallel_threshold else sfm.advance_serial
+        if k >= self.parallel_threshold:
+            # Agent blocks handed out one at a time: when another process holds one core, the
+            # thread that runs takes more blocks instead of waiting for its static half.
+            with numba.parallel_chunksize(1):
+                self._advance(sfm.advance_parallel, n)
+        else:
+            self._advance(sfm.advance_serial, n)
+        self.step_count += n
+        self.time = self.step_count * self.dt
+
+    def _advance(self, kernel: Any, n: int) -> None:
+        k = self.n
         kernel(
             n, self.dt, self._params_array,
             self._pos[:k], self._vel[:k], self._yaw[:k], self._radius[:k], self._desired_speed[:k],
@@ -559,5 +571,3 @@ class Crowd:
             self._robot_interaction[:k], self._robot, self._robot_path,
             self.walls, self._wall_owner, self._wall_meta, self._wall_start, self._wall_items,
         )
-        self.step_count += n
-        self.time = self.step_count * self.dt
