@@ -31,7 +31,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from grove_tui.engine.grid import OccupancyGrid, build_grid  # noqa: E402
-from grove_tui.engine.planner import ThetaStarPlanner, path_length  # noqa: E402
+from grove_tui.engine.planner import ThetaStarPlanner  # noqa: E402
 from grove_tui.engine.world import load_world  # noqa: E402
 
 try:

@@ -71,7 +71,8 @@ def test_each_leg_is_planned_from_the_previous_target(planner):
         if parsed:
             np.testing.assert_allclose(parsed, expected, atol=0.0051)
     assert nodes[3].get("waypoints") == "", "a straight leg has no intermediate points"
-    through_door = [(x, y) for x, y in parse_waypoints(nodes[0].get("waypoints")) if 2.8 <= x <= 3.3 and 4.3 <= y <= 5.0]
+    waypoints = parse_waypoints(nodes[0].get("waypoints"))
+    through_door = [(x, y) for x, y in waypoints if 2.8 <= x <= 3.3 and 4.3 <= y <= 5.0]
     assert through_door, f"start -> desk crosses the wall, so it bends at the door: {nodes[0].get('waypoints')}"
 
 
