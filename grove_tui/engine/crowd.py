@@ -69,7 +69,7 @@ class Crowd:
     """SFM pedestrians plus one optional robot, stepped at a fixed dt."""
 
     # Below this many agents a step is too short to pay for waking threads; both paths give equal results.
-    parallel_threshold = 1500
+    parallel_threshold = 1000
 
     def __init__(self, walls: np.ndarray | Sequence[Sequence[float]] | None = None,
                  params: SFMParams | None = None, dt: float = 0.05, seed: int = 0,
