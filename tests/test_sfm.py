@@ -241,3 +241,11 @@ def test_kernel_math_matches_libm():
     for x in -rng.uniform(0.0, 60.0, size=20000):
         assert sfm._fast_exp(x) == pytest.approx(math.exp(x), rel=1e-12)
     assert sfm._fast_exp(0.0) == 1.0 and sfm._fast_exp(-800.0) == 0.0
+
+
+def test_motion_along_a_walls_line_stops_at_its_end():
+    walls, meta, start, items = wall_setup([[0.0, 0.0, 5.0, 0.0]])
+    x, y, _, _ = sfm.resolve_motion(5.3, 0.0, 4.8, 0.0, -1.0, 0.0, 0.0, walls, meta, start, items)
+    assert 5.0 < x < 5.3 and y == 0.0
+    x, y, _, _ = sfm.resolve_motion(7.0, 0.0, 6.0, 0.0, -1.0, 0.0, 0.0, walls, meta, start, items)
+    assert (x, y) == (6.0, 0.0)

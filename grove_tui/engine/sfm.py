@@ -216,7 +216,10 @@ def _crossing_parameter(x0, y0, x1, y1, ax, ay, bx, by):
         t1 = ((x1 - ax) * ex + (y1 - ay) * ey) / len2
         if max(t0, t1) < 0.0 or min(t0, t1) > 1.0:
             return -1.0
-        return 0.0
+        if 0.0 <= t0 <= 1.0 or t1 == t0:
+            return 0.0
+        # Head-on along the wall's line: blocked where the motion reaches the wall's nearer end.
+        return ((0.0 if t0 < 0.0 else 1.0) - t0) / (t1 - t0)
     s = o1 / denom
     if s < 0.0:
         s = 0.0
