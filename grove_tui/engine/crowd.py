@@ -387,10 +387,8 @@ class Crowd:
             raise CrowdError(f"velocity field resolution must be > 0, got {resolution!r}")
         ox, oy = _point(field.origin, "velocity field origin")
         exit_point = getattr(field, "exit", None)
-        ex, ey = _point(exit_point, "velocity field exit") if exit_point is not None else (math.nan, math.nan)
-        if exit_point is None:
-            # No exit: the "arrived" test in the kernel must never fire.
-            ex, ey = 1e30, 1e30
+        # Without an exit the kernel's "arrived" test must never fire: put it out of reach.
+        ex, ey = _point(exit_point, "velocity field exit") if exit_point is not None else (1e30, 1e30)
         self._fields.append(field)
         count = len(self._fields)
         height = max(self._field_vectors.shape[1], vectors.shape[0])
