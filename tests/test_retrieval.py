@@ -226,3 +226,26 @@ def test_query_embeddings_match_document_embeddings():
         assert query.shape == (1, 384)
         assert abs(float(np.linalg.norm(query)) - 1.0) < 1e-5
         assert float(np.abs(query - embed_texts([text])).max()) < 1e-4, text
+
+
+def test_two_processes_building_one_index_both_succeed(small_node_db: Path, tmp_path: Path):
+    import subprocess
+    import sys
+
+    index = tmp_path / "shared_index"
+    # The children block the network themselves: conftest's guard does not reach other processes.
+    code = ("import socket, sys\n"
+            "def _blocked(*args, **kwargs): raise OSError('network blocked in test child')\n"
+            "socket.socket.connect = socket.create_connection = socket.getaddrinfo = _blocked\n"
+            "from grove_tui.engine.retrieval import NodeRetriever;"
+            "r = NodeRetriever(sys.argv[1], sys.argv[2]); s = r.ensure_index();"
+            "print(s.built, r.retrieve('patients queue at the counter', 'queuing', k=1)[0].name)")
+    root = Path(__file__).resolve().parents[1]
+    env = {**__import__("os").environ, "PYTHONPATH": str(root)}
+    runs = [subprocess.Popen([sys.executable, "-c", code, str(small_node_db), str(index)], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=env, cwd=root) for _ in range(2)]
+    outputs = [run.communicate(timeout=600) for run in runs]
+    assert all(run.returncode == 0 for run in runs), [err for _, err in outputs]
+    built = sorted(out.split()[0] for out, _ in outputs)
+    assert built == ["False", "True"]  # one built it, the other waited and reused it
+    assert all(out.split()[1] in ("Queue", "queue_at_counter") for out, _ in outputs)

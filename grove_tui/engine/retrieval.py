@@ -359,6 +359,27 @@ def _is_chroma_entry(path: Path) -> bool:
     return path.is_dir() and bool(_UUID.match(path.name))
 
 
+@contextmanager
+def _interprocess_lock(path: Path) -> Iterator[None]:
+    """Serialise index (re)builds between processes (the TUI and a CLI command may start together).
+
+    The lock file sits beside the index directory, never inside it, so the directory holds only
+    what Chroma writes.
+    """
+    try:
+        import fcntl
+    except ImportError:  # not POSIX: builds are not serialised, as before
+        yield
+        return
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "a+b") as handle:
+        fcntl.flock(handle.fileno(), fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(handle.fileno(), fcntl.LOCK_UN)
+
+
 def _vector_texts(doc: NodeDocument) -> list[str]:
     # The description carries meaning; the short names and synonyms each get their own vector so a
     # prompt that uses one of them is not drowned out by the rest of the description.
@@ -418,7 +439,7 @@ class NodeRetriever:
 
     def ensure_index(self, force: bool = False) -> IndexState:
         """Open the collection, (re)building it when missing, stale, foreign or corrupt."""
-        with self._lock:
+        with self._lock, _interprocess_lock(self.index_dir.parent / f".{self.index_dir.name}.lock"):
             if self._collection is not None and not force:
                 return self.last_index_state  # type: ignore[return-value]
             try:
