@@ -2,8 +2,8 @@
 
 Loads the models and the retriever once, warms them with one generation per preset (JIT, KV prefix,
 embedding model), then times `runs` generations per preset over the token benchmark's prompts and
-reports the mean seconds per stage (rois, retrieval, synthesis, postprocess, planning), bundle
-writing, and the total. The machine's load average is printed because the figures scale with it.
+reports the mean seconds per stage (rois, retrieval, synthesis, postprocess, planning), the part of
+synthesis spent evaluating the prompt before the first token (prefill), bundle writing, and the total. The machine's load average is printed because the figures scale with it.
 
     python bench/pipeline.py [--runs 3] [--bt-model PATH] [--presets emergency,normal,queuing]
 
@@ -76,7 +76,8 @@ def main() -> int:
                     total = time.perf_counter() - started
                     row = {s: result.report["stages"][s]["seconds"] for s in STAGES}
                     row.update(bundle=write_seconds, total=total, prompt_tokens=result.report["prompt_tokens"],
-                               completion_tokens=result.report["completion_tokens"])
+                               completion_tokens=result.report["completion_tokens"],
+                               prefill=result.report.get("first_token_seconds") or 0.0)
                     label = "warm-up" if index == 0 else f"run {index}"
                     print(f"{preset_name:9s} {label:7s} " + " ".join(f"{k}={v:.2f}" for k, v in row.items()
                                                                       if k not in ("prompt_tokens", "completion_tokens"))
@@ -90,7 +91,7 @@ def main() -> int:
     print(f"Generation time per stage, seconds, mean over {args.runs} warm runs per preset "
           f"(model {Path(choice.path).name}, {os.cpu_count()} cores, load average {load[0]:.1f}; "
           f"models + index loaded in {load_seconds:.1f} s)")
-    columns = [*STAGES, "bundle", "total"]
+    columns = [*STAGES, "prefill", "bundle", "total"]
     print(f"{'preset':10s} " + " ".join(f"{c:>11s}" for c in columns) + f" {'tokens':>11s}")
     headline = []
     for preset_name in presets:

@@ -207,6 +207,7 @@ class GenerationPipeline:
             "documents": describe_documents(request.documents), "offered_nodes": request.node_names,
             "draft": draft_summary(synthesis.draft), "draft_text": synthesis.text,
             "attempts": synthesis.attempts, "draft_errors": synthesis.errors,
+            "first_token_seconds": None if synthesis.first_token_seconds is None else round(synthesis.first_token_seconds, 4),
             "groups": [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
                         "field": g.field_id} for g in post.groups],
             "exit": post.exit, "notes": post.notes + plan.notes,

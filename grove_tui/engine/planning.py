@@ -20,7 +20,7 @@ from lxml import etree
 
 from grove_tui.engine.bt.manifest import NODES
 from grove_tui.engine.planner import PlanCache, PlanningError, ThetaStarPlanner
-from grove_tui.engine.postprocess import PostProcessed
+from grove_tui.engine.postprocess import FreeSpace, PostProcessed
 from grove_tui.engine.presets import GenerationError, Preset
 from grove_tui.engine.scenario import AgentSpec, RobotSpec
 from grove_tui.engine.velocity_field import VelocityField
@@ -227,8 +227,6 @@ def _robot_candidates(world: Any, grid: Any, post: PostProcessed, starts: Sequen
             if other in [zz.name for zz in world.zones] and other not in zones:
                 zones.append(other)
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x3C6EF372])
-    from grove_tui.engine.postprocess import FreeSpace
-
     space = FreeSpace(world, grid)
     found: list[Point] = []
     per_zone = max(4, ROBOT_CANDIDATES // max(len(zones), 1))

@@ -61,6 +61,7 @@ class SynthesisResult:
     seconds: float
     request: SynthesisRequest
     errors: list[str] = field(default_factory=list)
+    first_token_seconds: float | None = None  # prompt evaluation (prefill) of the accepted attempt
 
 
 def offered_nodes(preset: Preset, retrieved_nodes: Sequence[str]) -> list[str]:
@@ -160,7 +161,8 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
         except DraftError as exc:
             errors.append(f"attempt {attempt}: {exc}")
             continue
-        return SynthesisResult(draft, generation.text, prompt_tokens, completion_tokens, attempt, seconds, request, errors)
+        return SynthesisResult(draft, generation.text, prompt_tokens, completion_tokens, attempt, seconds, request, errors,
+                               generation.first_token_seconds)
     raise GenerationError(f"the bt model wrote no valid draft in {MAX_ATTEMPTS} attempts: " + "; ".join(errors))
 
 
