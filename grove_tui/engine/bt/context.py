@@ -207,6 +207,22 @@ class SimContext:
             return [(gx, gy)]
         return [(float(p[0]), float(p[1])) for p in path[1:]]
 
+    def sees(self, start: Sequence[float], goal: Sequence[float]) -> bool:
+        """Straight walk possible (no occupied cell on the segment); True without a planner."""
+        if self.planner is None:
+            return True
+        return bool(self.planner.segment_is_free(float(start[0]), float(start[1]), float(goal[0]), float(goal[1])))
+
+    def rejoin(self, start: Sequence[float], waypoints: Sequence[Point], goal: Sequence[float]) -> list[Point]:
+        """Route back onto planned waypoints after an interruption: from the furthest waypoint in
+        sight, else a fresh plan (Theta* costs tens of milliseconds on a large floor)."""
+        goal = (float(goal[0]), float(goal[1]))
+        points = [*waypoints, goal]
+        for j in range(len(points) - 1, -1, -1):
+            if self.sees(start, points[j]):
+                return [(float(x), float(y)) for x, y in points[j:]]
+        return self.plan(start, goal)
+
     # ---- agents -------------------------------------------------------------------------------
 
     def members_of(self, agent_id: int) -> tuple[int, ...]:

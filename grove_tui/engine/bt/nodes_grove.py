@@ -72,7 +72,7 @@ class GoTo(AgentStatefulAction):
         if waypoints and not self.interrupted:
             route = [*waypoints, point]
         else:
-            route = sim.plan(p, point)
+            route = sim.rejoin(p, waypoints, point)
         _go(sim, self.row, route, tolerance)
         return RUNNING
 
@@ -293,16 +293,19 @@ class Wander(AgentStatefulAction):
         polygon = self.zone.polygon
         xmin, ymin, xmax, ymax = polygon.bounds
         p = sim.pos[self.row]
+        hidden = None  # a reachable spot out of sight, used only if no spot in sight turns up
         for _ in range(8):
             xs = sim.rng.uniform(xmin, xmax, 32)
             ys = sim.rng.uniform(ymin, ymax, 32)
             inside = shapely.contains_xy(polygon, xs, ys)
             for x, y in zip(xs[inside], ys[inside]):
                 if sim.is_free(x, y) and math.dist(p, (x, y)) > 1.0:
-                    self.goal = (float(x), float(y))
-                    _go(sim, self.row, sim.plan(p, self.goal), 0.3)
-                    return
-        self.goal = self.zone.anchor
+                    if sim.sees(p, (x, y)):
+                        self.goal = (float(x), float(y))
+                        _go(sim, self.row, [self.goal], 0.3)
+                        return
+                    hidden = hidden or (float(x), float(y))
+        self.goal = hidden or self.zone.anchor
         _go(sim, self.row, sim.plan(p, self.goal), 0.3)
 
     def on_running(self) -> int:
