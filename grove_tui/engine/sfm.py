@@ -109,6 +109,7 @@ class SFMParams:
     obstacle_weight: float = 10.0
     obstacle_sigma: float = 0.2
     social_weight: float = 5.0
+    # Scale of the extra repulsion from the robot for agents in ROBOT_FEARED (HuNavSim Scared).
     other_weight: float = 20.0
     group_gaze: float = 3.0
     group_coherence: float = 2.0
@@ -130,7 +131,8 @@ class SFMParams:
     face_turn_rate: float = 2.0 * math.pi
     goal_tolerance: float = 0.1
     # Contact stiffness (1/s^2) acting only while two bodies overlap. Not in lightsfm, whose
-    # Moussaid force lets a symmetric crossing pair overlap by 0.25 m; 0 restores lightsfm exactly.
+    # Moussaid force lets a symmetric crossing pair overlap by 0.25 m. body_weight=0, epsilon=0
+    # and social_skip_exponent=inf give lightsfm's forces exactly (tests/test_sfm.py).
     body_weight: float = 100.0
     # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
     # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
