@@ -314,3 +314,18 @@ def test_from_scenario_loads_world_trees_and_runs(tmp_path, hall):
     with pytest.raises(ValueError):
         final.pos[0, 0] = 1.0  # frames are immutable snapshots
     assert sim.tree_status(2)[0][1:] == ("Queue", "SUCCESS")
+
+
+def test_hunavsim_regular_tree_walks_its_goals_forever(hall):
+    body = ('<Fallback><Sequence><Inverter><IsGoalReached/></Inverter><RegularNav/></Sequence><UpdateGoal/>'
+            '</Fallback>')
+    sim = simulate(hall, [agent(1, (5, 6), goals=((5.0, 6.0), (15.0, 6.0)))], [body])
+    xs = []
+    while sim.time < 45.0:
+        sim.step()
+        xs.append(float(sim.crowd.pos[0, 0]))
+    xs = np.array(xs)
+    assert not sim.finished[0]  # HuNavSim-style trees are ticked for the whole run
+    crossings = np.count_nonzero(np.diff(np.sign(xs - 10.0)) != 0)
+    assert crossings >= 3  # back and forth between the two goals
+    assert xs.max() > 14.0 and xs[len(xs) // 2:].min() < 6.0  # reached the far goal, then came back

@@ -186,7 +186,11 @@ class Simulation:
             document = with_robot_reaction(document, agent.behavior)
             blackboard = Blackboard(values={"id": agent.id, "dt": bt_dt})
             trees.append(factory.create(document, blackboard, AgentContext(context, row), clock))
-            loops.append(any(e.id in HUNAV_LOOPING_NODES for t in document.trees.values() for e in t.walk()))
+            hunav_style = any(e.id in HUNAV_LOOPING_NODES for t in document.trees.values() for e in t.walk())
+            loops.append(hunav_style)
+            if hunav_style and agent.goals:
+                # HuNavSim trees walk the agent's own goal list (agents YAML `goals`, cyclic by default)
+                crowd.set_goals(row, agent.goals, cyclic=True)
         recorder = _make_recorder(dt, ids)
         return cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
                    recorder=recorder)
