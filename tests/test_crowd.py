@@ -482,3 +482,11 @@ def test_many_agents_grow_storage_and_goal_lists():
     assert crowd.goals(39) == [(39.0, float(g)) for g in range(1, 4)]
     crowd.step(5)
     assert np.all(np.isfinite(crowd.pos))
+
+
+def test_non_finite_state_written_from_outside_is_refused():
+    crowd = Crowd()
+    i = crowd.add_agent((0.0, 0.0))
+    crowd.pos[i] = (math.nan, 0.0)
+    with pytest.raises(CrowdError, match=r"agents \[0\] have a non-finite"):
+        crowd.step(1)

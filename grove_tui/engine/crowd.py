@@ -546,6 +546,11 @@ class Crowd:
             return
         self._refresh_groups()
         k = self.n
+        state = np.concatenate([self._pos[:k], self._vel[:k]], axis=1)
+        if not np.isfinite(state).all():
+            # Values written into pos/vel from outside; the kernel's cell indexing needs finite input.
+            bad = np.flatnonzero(~np.isfinite(state).all(axis=1))
+            raise CrowdError(f"agents {bad[:10].tolist()} have a non-finite position or velocity")
         if k >= self.parallel_threshold:
             # Agent blocks handed out one at a time: when another process holds one core, the
             # thread that runs takes more blocks instead of waiting for its static half.

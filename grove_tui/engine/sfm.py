@@ -677,12 +677,8 @@ def _build_cells(pos, active, min_cell):
     starts = np.zeros(nx * ny + 1, dtype=np.int32)
     for i in range(n):
         if active[i]:
-            cx = int((pos[i, 0] - xmin) / cell)
-            cy = int((pos[i, 1] - ymin) / cell)
-            if cx >= nx:
-                cx = nx - 1
-            if cy >= ny:
-                cy = ny - 1
+            cx = min(max(int((pos[i, 0] - xmin) / cell), 0), nx - 1)
+            cy = min(max(int((pos[i, 1] - ymin) / cell), 0), ny - 1)
             c = cy * nx + cx
             cell_of[i] = c
             starts[c + 1] += 1
