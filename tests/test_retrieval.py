@@ -172,6 +172,22 @@ def test_a_corrupt_index_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path
     assert {r.name for r in results} == {"FollowVelocityField", "evacuation_group"}
 
 
+def test_rebuilding_a_corrupt_index_leaves_other_retrievers_working(small_node_db: Path, tmp_path: Path,
+                                                                   retriever: NodeRetriever):
+    before = [r.name for r in retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)]
+    index = tmp_path / "index"
+    index.mkdir()
+    (index / "chroma.sqlite3").write_bytes(b"\0garbage" * 512)
+    with pytest.warns(UserWarning, match="unusable"):
+        NodeRetriever(small_node_db, index).ensure_index()
+    assert [r.name for r in retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)] == before
+    # Chroma keeps one System per directory; a second client on the same directory must share it,
+    # never open the same sqlite file twice.
+    from chromadb.api.shared_system_client import SharedSystemClient
+
+    assert str(retriever.index_dir) in SharedSystemClient._identifier_to_system
+
+
 def test_a_foreign_collection_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path: Path):
     import chromadb
     from chromadb.config import Settings

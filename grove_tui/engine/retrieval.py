@@ -428,7 +428,16 @@ class NodeRetriever:
         log.warning("retrieval index %s is unusable (%s); rebuilding it", self.index_dir, reason)
         self._client = None
         self._collection = None
-        SharedSystemClient.clear_system_cache()
+        # Forget only this directory's cached Chroma system (keyed by the path as given): other
+        # retrievers in the process keep theirs.
+        identifier = str(self.index_dir)
+        system = SharedSystemClient._identifier_to_system.pop(identifier, None)
+        SharedSystemClient._identifier_to_refcount.pop(identifier, None)
+        if system is not None:
+            try:
+                system.stop()
+            except Exception as exc:  # a damaged database may fail to close; it is deleted next anyway
+                log.debug("closing the damaged index %s failed: %s", identifier, exc)
         entries = list(self.index_dir.iterdir()) if self.index_dir.exists() else []
         strangers = [entry.name for entry in entries if not _is_chroma_entry(entry)]
         if strangers:
