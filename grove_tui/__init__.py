@@ -10,6 +10,9 @@ for _key, _value in {
     "HF_HUB_DISABLE_TELEMETRY": "1",
     "ANONYMIZED_TELEMETRY": "False",
     "TOKENIZERS_PARALLELISM": "false",
+    # numba's OpenMP workers spin after each parallel step; on 2 cores that starves the Python
+    # (behavior trees, UI) that runs next. Must be set before the OpenMP runtime starts.
+    "OMP_WAIT_POLICY": "PASSIVE",
 }.items():
     os.environ.setdefault(_key, _value)
 

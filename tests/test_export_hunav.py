@@ -8,46 +8,18 @@ import pytest
 import yaml
 from lxml import etree
 
+from helpers.btcpp import load_in_btcpp as _load_in_btcpp
 from helpers.handmade import build_hospital_bundle
 
-from grove_tui.engine.bt.manifest import NODES
 from grove_tui.engine.export_hunav import GROVE_ONLY, ExportError, export_hunav
 from grove_tui.engine.scenario import Scenario
 
-bt = pytest.importorskip("behaviortreepy")
+pytest.importorskip("behaviortreepy")
 
 
 @pytest.fixture(scope="module")
 def hospital_bundle(tmp_path_factory):
     return build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-
-
-def _load_in_btcpp(xml: str) -> list[str]:
-    """Load a tree in BehaviorTree.CPP v4 and tick it; return the leaf types it saw.
-
-    behaviortreepy 0.1.4 registers Python leaves without a port list, and BT.CPP rejects ports a
-    node type did not declare, so leaf attributes are dropped for this load (the ports themselves
-    are checked against our manifest by check_tree_text). Built-in control nodes and decorators keep
-    theirs and are checked by BT.CPP.
-    """
-    root = etree.fromstring(xml.encode())
-    leaves = set()
-    for el in root.iter():
-        if isinstance(el.tag, str) and el.tag in NODES and NODES[el.tag].origin != "btcpp":
-            leaves.add(el.tag)
-            for attr in list(el.attrib):
-                if attr != "name":
-                    del el.attrib[attr]
-    factory = bt.BehaviorTreeFactory()
-    for name in sorted(leaves):
-        if NODES[name].category == "condition":
-            factory.register_simple_condition(name, lambda node: bt.NodeStatus.SUCCESS)
-        else:
-            factory.register_simple_action(name, lambda node: bt.NodeStatus.SUCCESS)
-    tree = factory.create_tree_from_text(etree.tostring(root, encoding="unicode"))
-    status = tree.tick_exactly_once()
-    assert status.name in ("SUCCESS", "FAILURE", "RUNNING")
-    return sorted(leaves)
 
 
 def test_lowered_export_round_trips_goals_poses_and_groups(hospital_bundle, tmp_path):
@@ -116,6 +88,14 @@ def test_kept_grove_nodes_come_with_their_treenodes_model(hospital_bundle, tmp_p
     xml = (tmp_path / "keep" / "agents_hospital__agent_2_bt.xml").read_text()
     assert "<Queue" in xml
     _load_in_btcpp(xml)
+    # kept GoTo nodes name their goal by this export's global_goals ids
+    goals = yaml.safe_load(out.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]["global_goals"]
+    numbered = [el for path in out.trees for el in etree.fromstring(path.read_bytes()).iter("GoTo")
+                if el.get("goal_id") is not None]
+    assert numbered  # agent 1's GoTo carried the pipeline's goal id 7
+    for el in numbered:
+        entry = goals[int(el.get("goal_id"))]
+        assert (entry["x"], entry["y"]) == pytest.approx((float(el.get("x")), float(el.get("y"))), abs=0.01)
 
 
 def test_export_refuses_a_directory_it_did_not_write(hospital_bundle, tmp_path):

@@ -182,3 +182,30 @@ def test_cancel_before_start_stops_at_the_first_stage(llm, retriever):
     with pytest.raises(GenerationCancelled):
         pipeline.run("Eight patients queue at the pharmacy counter", cancel=cancel)
 
+
+
+@pytest.mark.parametrize("key", list(CASES))
+def test_generated_bundle_exports_to_hunavsim_and_loads_in_btcpp(generated, key, tmp_path):
+    """Round trip: HuNavSim files whose goals, poses and groups match the bundle, loadable in BT.CPP v4."""
+    import yaml
+    from helpers.btcpp import load_in_btcpp
+
+    from grove_tui.engine.export_hunav import GROVE_ONLY, export_hunav
+
+    _, result, bundle, _, _ = generated[key]
+    out = export_hunav(bundle, tmp_path / "hunav")
+    params = yaml.safe_load(out.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]
+    goals = params["global_goals"]
+    assert sorted(goals) == list(range(1, len(goals) + 1))
+    for agent in result.scenario.agents:
+        entry = params[f"agent{agent.id}"]
+        assert entry["group_id"] == agent.group
+        assert (entry["init_pose"]["x"], entry["init_pose"]["y"]) == pytest.approx(agent.start, abs=1e-3)
+        assert [(goals[g]["x"], goals[g]["y"]) for g in entry["goals"]] == pytest.approx(
+            [(round(x, 2), round(y, 2)) for x, y in agent.goals], abs=1e-6)
+    for path in out.trees:
+        root = etree.fromstring(path.read_bytes())
+        leftovers = [el.tag for el in root.iter() if isinstance(el.tag, str) and el.tag in GROVE_ONLY
+                     and not (el.tag == "GoTo" and el.get("goal_id") and el.get("x") is None)]
+        assert leftovers == [], f"{path.name} keeps GROVE-only nodes {leftovers}"
+        load_in_btcpp(path.read_text())

@@ -126,7 +126,7 @@ class Progress:
 
 
 def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None = None) -> dict[str, Any]:
-    """Run a bundle's scenario for `seconds`, write trajectories.csv into it; return the counters."""
+    """Run a bundle's scenario for `seconds`; write trajectories.csv, events.jsonl and metrics.json into it."""
     from grove_tui.engine.bundle import load_bundle
     from grove_tui.engine.simulation import Simulation
 
@@ -139,8 +139,16 @@ def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None
     if recorder is None:
         raise click.ClickException("the simulation has no trajectory recorder")
     recorder.write_csv(bundle / "trajectories.csv")
+    from grove_tui.engine.bundle_metrics import bundle_metrics
+    from grove_tui.engine.metrics import write_events
+
+    write_events(bundle / "events.jsonl", sim.events)
+    report, _ = bundle_metrics(bundle)
+    crowd = report.crowd
     return {"sim_seconds": round(float(frame.t), 3), "wall_seconds": round(wall, 3),
-            "counters": _as_dict(frame.counters)}
+            "counters": _as_dict(frame.counters),
+            "wall_penetrations": int(crowd.get("wall_penetrations", 0)),
+            "goal_reach_rate": crowd.get("goal_reach_rate")}
 
 
 def _as_dict(obj: Any) -> dict[str, Any]:

@@ -280,7 +280,7 @@ def _planned(a: Point, b: Point, ctx: _AgentContext) -> list[Point]:
 def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element | None:
     """Replacement for a GROVE-only element, or None to keep it."""
     tag = el.tag
-    if tag == "GoTo" and el.get("goal_id") is None:
+    if tag == "GoTo" and el.get("x") is not None:  # GROVE's GoTo; HuNavSim's own names only a goal_id
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
         waypoints = list(parse_point_list(el.get("waypoints", "")))
         tolerance = float(el.get("tolerance", str(GOAL_TOLERANCE)))
@@ -364,6 +364,15 @@ def _behavior_block(agent: AgentSpec) -> dict[str, object]:
     }
 
 
+def _renumber_goal_ids(xml: str, goals: GoalTable) -> str:
+    """Point every node's `goal_id` at this export's global_goals entry for its (x, y)."""
+    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
+    for el in root.iter():
+        if isinstance(el.tag, str) and el.get("goal_id") is not None and el.get("x") and el.get("y"):
+            el.set("goal_id", str(goals.id_of((float(el.get("x")), float(el.get("y"))))))
+    return etree.tostring(root, pretty_print=True, encoding="unicode")
+
+
 def _rename_main_tree(xml: str, new_id: str) -> str:
     root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
     old = root.get("main_tree_to_execute")
@@ -419,7 +428,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         where = str(bundle / agent.tree)
         ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed)
         goal_ids = [goals.id_of(g) for g in agent.goals]
-        xml = lower_tree(trees[agent.id], ctx, where, world) if lower else trees[agent.id]
+        xml = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
         xml = _rename_main_tree(xml, "DefaultTree")
         problems = check_tree_text(xml, source=where, nodes=HUNAV_NODES if lower else NODES)
         if problems:

@@ -31,7 +31,7 @@ def build_hospital_bundle(bundle: Path) -> Path:
     queue = (f'<Queue service_point="pharmacy_counter" x="{counter[0]}" y="{counter[1]}" spacing="0.6" '
              f'service_time="8"/>')
     bodies = {
-        1: f'<Sequence><GoTo target="pharmacy_counter" x="{counter[0]}" y="{counter[1]}"/>'
+        1: f'<Sequence><GoTo target="pharmacy_counter" x="{counter[0]}" y="{counter[1]}" goal_id="7"/>'
            f'<Wait duration="4"/></Sequence>',
         2: f'<Sequence><GoTo target="pharmacy" x="{counter[0] - 1.0}" y="{counter[1] + 2.0}"/>{queue}</Sequence>',
         3: queue,
