@@ -4,10 +4,18 @@ from __future__ import annotations
 
 import os
 import socket
+import tempfile
 
 import pytest
 
 os.environ.setdefault("HF_HUB_OFFLINE", "1")
+# Tests never read or write the user's own cache, config or models: a user's config.yaml naming a
+# model, or a stale index, must not change what the suite checks. Subprocesses inherit these.
+_sandbox = tempfile.mkdtemp(prefix="grove-tests-")
+for _name in ("CACHE", "CONFIG", "DATA"):
+    os.environ.setdefault(f"GROVE_{_name}_DIR", os.path.join(_sandbox, _name.lower()))
+for _name in ("GROVE_MODEL", "GROVE_ROI_MODEL", "GROVE_BT_MODEL"):
+    os.environ.pop(_name, None)
 os.environ.setdefault("TRANSFORMERS_OFFLINE", "1")
 os.environ.setdefault("ANONYMIZED_TELEMETRY", "False")
 
