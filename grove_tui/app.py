@@ -19,7 +19,7 @@ from grove_tui.config import GroveSettings, load_history, load_settings, save_hi
 
 
 class GroveApp(App[int]):
-    CSS_PATH = "app.tcss"
+    CSS_PATH = Path(__file__).with_name("app.tcss")  # absolute, so subclasses elsewhere find it too
     TITLE = "GROVE"
     SUB_TITLE = "sentence -> pedestrian scenario"
     HORIZONTAL_BREAKPOINTS = [(0, "-narrow"), (100, "-wide")]

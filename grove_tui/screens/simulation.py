@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
@@ -26,6 +27,7 @@ from grove_tui.screens.widgets.map_view import MapView
 if TYPE_CHECKING:
     from grove_tui.app import GroveApp
 
+UI_SWITCH_INTERVAL = 0.001
 BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
 COUNTER_LABELS = {
     "reached_goals": "reached goals",
@@ -115,6 +117,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_mode = "group"
         self._colour_table = self._build_colours()
         self._last_snapshot: Snapshot | None = None
+        self._switch_interval = sys.getswitchinterval()
 
     @property
     def grove(self) -> GroveApp:
@@ -148,6 +151,10 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         overlay = base_overlay(self.generated)
         world_map.set_overlay(replace(overlay, spawns=overlay.spawns[:0], waypoints=overlay.waypoints[:0]))
         world_map.focus()
+        # The sim thread runs Python (behavior trees) between numba kernels; a shorter GIL switch
+        # interval hands the UI thread the GIL sooner, so frames keep their pace under load.
+        self._switch_interval = sys.getswitchinterval()
+        sys.setswitchinterval(UI_SWITCH_INTERVAL)
         self.start_simulation()
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
 
@@ -186,6 +193,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
 
     def on_unmount(self) -> None:
         self.workers.cancel_group(self, "simulation")
+        sys.setswitchinterval(self._switch_interval)
 
     # drawing (UI thread, set_interval) --------------------------------------------------------------
     def _build_colours(self) -> dict[int, int]:
