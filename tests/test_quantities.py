@@ -72,3 +72,14 @@ def test_lemma(word, expected):
 def test_semantic_tokens_drop_stopwords_and_numbers_but_keep_place_words():
     tokens = semantic_tokens("Ten patients queue at the pharmacies' counter; children wander in the waiting rooms")
     assert tokens == ["patient", "queue", "pharmacy", "counter", "child", "wander", "waiting", "room"]
+
+
+def test_a_collective_without_a_size_means_a_plausible_group_not_one_person():
+    from grove_tui.engine.quantities import extract_quantities
+
+    (family,) = extract_quantities("a family walks to the exit")
+    assert family.count == 4 and not family.exact
+    (families,) = extract_quantities("two families wait at reception")
+    assert families.count == 8
+    (sized,) = extract_quantities("a family of three walks in")
+    assert sized.count == 3 and sized.exact

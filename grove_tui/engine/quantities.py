@@ -87,6 +87,10 @@ PERSON_NOUNS = frozenset(
 )
 # Collectives whose size follows an "of N" ("a family of four", "a group of 5 friends").
 COLLECTIVES = frozenset({"family", "group", "team", "party", "crowd", "couple", "queue", "line", "bunch", "circle"})
+# How many people a collective means when the prompt gives no size ("a family walks to the exit"):
+# one family is not one person. These counts are marked inexact.
+TYPICAL_SIZE = {"family": 4, "group": 4, "team": 5, "party": 4, "crowd": 15, "bunch": 5, "circle": 4,
+                "queue": 6, "line": 6}
 
 
 @dataclass(frozen=True)
@@ -157,6 +161,8 @@ def extract_quantities(prompt: str) -> list[Quantity]:
                     i = member + 1
                     used_until = member
                     continue
+        if noun in TYPICAL_SIZE:
+            value, exact = value * TYPICAL_SIZE[noun], False
         found.append(_quantity(prompt, toks, i, noun_at, value, noun, exact))
         used_until = noun_at
         i = noun_at + 1
