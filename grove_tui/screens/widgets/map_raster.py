@@ -189,12 +189,13 @@ class MapRaster:
         if len(overlay.robot_path) > 1:
             path = np.asarray(overlay.robot_path, dtype=np.float64)
             self._paint_dots(chars, styles, *self._segment_dots(np.column_stack([path[:-1], path[1:]])), ROBOT_PATH)
-        self._paint_glyphs(chars, styles, overlay.waypoints, "·", WAYPOINT)
-        self._paint_glyphs(chars, styles, overlay.spawns, "○", SPAWN)
-        self._paint_glyphs(chars, styles, overlay.goals, "◎", GOAL)
         if len(overlay.highlight_path) > 1:
             path = np.asarray(overlay.highlight_path, dtype=np.float64)
             self._paint_dots(chars, styles, *self._segment_dots(np.column_stack([path[:-1], path[1:]])), HIGHLIGHT)
+        # markers go over the paths so a route never hides its own goals
+        self._paint_glyphs(chars, styles, overlay.waypoints, "·", WAYPOINT)
+        self._paint_glyphs(chars, styles, overlay.spawns, "○", SPAWN)
+        self._paint_glyphs(chars, styles, overlay.goals, "◎", GOAL)
         self._paint_glyphs(chars, styles, overlay.highlight_points, "◆", SELECTED)
         return chars, styles
 
