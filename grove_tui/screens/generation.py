@@ -228,7 +228,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         table.update_cell(message.stage, "time", f"{message.seconds:.2f}s")
         tokens = message.prompt_tokens + message.completion_tokens
         table.update_cell(message.stage, "tokens", f"{message.prompt_tokens}+{message.completion_tokens}" if tokens else "")
-        table.update_cell(message.stage, "detail", message.detail)
+        table.update_cell(message.stage, "detail", message.detail, update_width=True)
 
     def on_tokens_flushed(self, message: msg.TokensFlushed) -> None:
         self.query_one("#stream", Static).update(message.text[-STREAM_TAIL_CHARS:])
