@@ -122,7 +122,9 @@ async def test_generate_inspect_play_and_export(tmp_path):
         assert (files["bundle"].path / "scenario.yaml").is_file()
         assert files["trajectories"].path.is_file(), files["trajectories"].note
         assert files["metrics"].path.is_file(), files["metrics"].note
-        assert "events" in files and "picture" in files and "hunav" in files
+        assert files["events"].path.is_file(), files["events"].note
+        assert files["hunav"].path.is_file() and files["hunav"].path.name.endswith(".yaml"), files["hunav"].note
+        assert files["picture"].path.suffix == ".png" and files["picture"].path.is_file(), files["picture"].note
         assert str(app.screen.out_dir).startswith(str(tmp_path / "exports"))
         shown = str(app.screen.query_one("#export-files", Static).render())
         assert str(app.screen.out_dir) in str(app.screen.query_one("#export-title", Static).render())
