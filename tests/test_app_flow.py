@@ -155,6 +155,10 @@ async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_pat
         await wait_until(pilot, lambda: sim.controller.speed == 2.0, what="2x")
         await pilot.press("left_square_bracket", "left_square_bracket", "left_square_bracket")
         await wait_until(pilot, lambda: sim.controller.speed == 0.25, what="0.25x")
+        await pilot.press("c")
+        assert sim._colour_mode == "behavior"
+        await pilot.press("c")
+        assert sim._colour_mode == "group"
         first = sim._selected_agent
         await pilot.press("a")
         assert sim._selected_agent != first
