@@ -223,3 +223,18 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
         await first_frame(pilot, sim, timeout=180)
         await pilot.press("f", "space")
         await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 2.0, timeout=60, what="2 simulated seconds")
+
+
+async def test_emergency_scenarios_show_velocity_field_arrows_on_the_inspect_map(tmp_path):
+    from grove_tui.screens.widgets import map_raster as mr
+
+    draft = ('{"groups": [{"label": "visitors", "count": 8, "spawn": "entrance_lobby", "tree": {"node": "Sequence", '
+             '"children": [{"node": "FollowVelocityField", "exit": "main_entrance"}]}}]}')
+    app = GroveApp(fake_llm_backend(tmp_path / "runs", FakeLLM(draft)), test_settings(tmp_path, preset="emergency"))
+    async with app.run_test(size=(120, 40)) as pilot:
+        inspect = await generate_to_inspect(pilot, app, "eight visitors evacuate the lobby")
+        assert inspect.generated.result.fields, "the emergency preset planned no velocity field"
+        world_map = inspect.query_one("#inspect-map", MapView)
+        arrows = world_map._chars[world_map._styles == mr.FIELD]
+        assert len(arrows) > 50
+        assert set(map(chr, arrows)) <= set(mr.ARROWS)
