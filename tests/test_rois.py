@@ -118,3 +118,12 @@ def test_selection_record_is_json_ready(clinic, matcher):
     sel = select_rois(clinic, load_preset("queuing"), "Ten patients queue at the pharmacy counter", matcher)
     record = describe_selection(sel)
     assert json.loads(json.dumps(record))[0]["name"] == "pharmacy_counter"
+
+
+def test_qualified_places_are_not_unknown_places(clinic):
+    from grove_tui.engine.rois import RoIMatcher
+
+    matcher = RoIMatcher(clinic)
+    assert matcher.unknown_places("everyone evacuates through the nearest exit") == []
+    assert matcher.unknown_places("they walk to the other side of the lobby") == []
+    assert matcher.unknown_places("patients wait at the helipad") == ["helipad"]

@@ -65,6 +65,13 @@ _LOCATIVES = ("in", "at", "to", "into", "near", "inside", "from", "toward", "tow
               "leave", "exit", "use")
 _BREAKS = frozenset(_LOCATIVES) | {"and", "or", "while", "then", "with", "but", "where", "when"}
 _DETERMINERS = ("the", "a", "an", "their", "our", "its", "his", "her", "my", "your", "this", "that", "some")
+# Words that qualify a place without naming one ("the nearest exit", "the other corridor").
+_PLACE_MODIFIERS = frozenset({
+    "nearest", "closest", "nearby", "near", "far", "farthest", "furthest", "other", "same", "next", "first",
+    "last", "main", "back", "front", "side", "rear", "left", "right", "north", "south", "east", "west",
+    "northern", "southern", "eastern", "western", "big", "small", "large", "little", "new", "old", "busy",
+    "empty", "quiet", "crowded", "open", "closed", "whole", "entire", "central", "middle", "upper", "lower",
+})
 
 
 @dataclass(frozen=True)
@@ -294,13 +301,17 @@ class RoIMatcher:
             if j == i + 1 and w in ("in", "at", "to", "by", "from"):
                 continue  # "in line", "at once", "to wait": no determiner, not a place phrase
             phrase: list[str] = []
-            while (j < len(toks) and len(phrase) < 3 and toks[j] not in STOPWORDS and toks[j] not in _LOCATIVES
+            # "exit" is both a locative verb and a place: inside a phrase, a word the world knows is a place
+            while (j < len(toks) and len(phrase) < 3 and toks[j] not in STOPWORDS
+                   and (toks[j] not in _LOCATIVES or self._known(lemma(toks[j])))
                    and toks[j] not in NUMBER_WORDS and not toks[j][:1].isdigit()):
                 phrase.append(toks[j])
                 j += 1
             if not phrase:
                 continue
             lemmas = [lemma(p) for p in phrase]
+            if all(l in _PLACE_MODIFIERS for l in lemmas):
+                continue  # "the nearest", "the other one": no place named
             if any(l in NON_PLACES or l in PERSON_NOUNS for l in lemmas[-1:]) or all(p.isdigit() for p in phrase):
                 continue
             if any(self._known(l) for l in lemmas):
