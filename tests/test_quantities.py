@@ -83,3 +83,12 @@ def test_a_collective_without_a_size_means_a_plausible_group_not_one_person():
     assert families.count == 8
     (sized,) = extract_quantities("a family of three walks in")
     assert sized.count == 3 and sized.exact
+
+
+def test_a_bare_number_after_a_counted_phrase_borrows_its_noun():
+    from grove_tui.engine.quantities import extract_quantities
+
+    counts = extract_quantities("twenty people in the cafeteria and ten in the pharmacy evacuate")
+    assert [(q.count, q.noun) for q in counts] == [(20, "person"), (10, "person")]
+    assert [q.count for q in extract_quantities("five nurses at 3 in the afternoon")] == [5]
+    assert [q.count for q in extract_quantities("wait 10 minutes in the lobby")] == []

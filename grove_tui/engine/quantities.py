@@ -87,6 +87,11 @@ PERSON_NOUNS = frozenset(
 )
 # Collectives whose size follows an "of N" ("a family of four", "a group of 5 friends").
 COLLECTIVES = frozenset({"family", "group", "team", "party", "crowd", "couple", "queue", "line", "bunch", "circle"})
+# Words after a bare number that show it counts the people of an earlier phrase ("and ten in the lobby").
+_ELLIPSIS_FOLLOWERS = frozenset({"in", "at", "from", "inside", "near", "by", "on", "outside", "more", "others", "other"})
+# A bare number after these is a time or a label ("at 3 in the afternoon", "bed 4 in ward a").
+_NOT_A_HEAD_COUNT_BEFORE = frozenset({"at", "until", "till", "after", "before", "since", "room", "ward", "bed",
+                                      "floor", "level", "gate", "number", "no", "desk", "table", "platform"})
 # How many people a collective means when the prompt gives no size ("a family walks to the exit"):
 # one family is not one person. These counts are marked inexact.
 TYPICAL_SIZE = {"family": 4, "group": 4, "team": 5, "party": 4, "crowd": 15, "bunch": 5, "circle": 4,
@@ -139,6 +144,13 @@ def extract_quantities(prompt: str) -> list[Quantity]:
         noun_at = _find_noun(low, j)
         if noun_at is None and low[j - 1] in ("couple", "pair") and low[i] in ("a", "one"):
             noun_at = j - 1  # "a couple walks in": the couple is the counted noun
+        if (noun_at is None and found and j < len(low) and low[j] in _ELLIPSIS_FOLLOWERS and exact
+                and (i == 0 or low[i - 1] not in _NOT_A_HEAD_COUNT_BEFORE)):
+            # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
+            found.append(_quantity(prompt, toks, i, j - 1, value, found[-1].noun, exact))
+            used_until = j - 1
+            i = j
+            continue
         if noun_at is None:
             i = j
             continue
