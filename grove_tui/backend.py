@@ -288,6 +288,36 @@ class EngineBackend:
         bundle_dir = write_bundle(result, self.runs_dir / f"{stamp}-{_slug(prompt)}-{seed}")
         return GeneratedScenario(prompt, world_name, preset_name, seed, world, result, Path(bundle_dir))
 
+    def replan(
+        self,
+        generated: GeneratedScenario,
+        counts: dict[int, int],
+        seed: int | None = None,
+        on_event: Callable[[Any], None] | None = None,
+        cancel: threading.Event | None = None,
+    ) -> GeneratedScenario:
+        """The same draft with new head counts (group index -> count), re-planned without the model.
+
+        The new scenario gets its own bundle next to the first one; `generated` is left as it was.
+        """
+        from grove_tui.engine.bundle import write_bundle
+        from grove_tui.engine.pipeline import GenerationPipeline
+        from grove_tui.engine.presets import load_preset
+
+        preset = load_preset(generated.preset)
+        pipeline = GenerationPipeline(generated.world, preset, None, None, None)
+        result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
+        seed = result.scenario.seed
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        base = self.runs_dir / f"{stamp}-{_slug(generated.prompt)}-{seed}-counts"
+        out, suffix = base, 1
+        while out.exists():
+            suffix += 1
+            out = base.with_name(f"{base.name}-{suffix}")
+        bundle_dir = write_bundle(result, out)
+        return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, seed, generated.world,
+                                 result, Path(bundle_dir))
+
     # simulation ------------------------------------------------------------------------------------
     def simulation(self, generated: GeneratedScenario) -> Any:
         from grove_tui.engine.simulation import Simulation

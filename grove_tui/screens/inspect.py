@@ -99,13 +99,16 @@ class InspectScreen(Screen[None]):
 Left: the behavior trees, by group and agent, with each node's ports. Right: the map with spawns
 `○`, goals `◎`, injected waypoints `·`, the robot's path and any velocity-field arrows. Move through
 the tree to highlight an agent's route or a node's target on the map. **x** shows the selected
-agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bundle.
+agent's XML, **p** plays the simulation, **g** regenerates, **c** edits each group's head count
+and re-plans (same trees, no model call), **e** exports the bundle.
 """
 
     BINDINGS = [
         Binding("p", "simulate", "Play", id="inspect.simulate", tooltip="Simulate this scenario"),
         Binding("x", "toggle_xml", "XML", id="inspect.xml", tooltip="Show the selected agent's BT XML"),
         Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Run generation again"),
+        Binding("c", "edit_counts", "Counts", id="inspect.counts",
+                tooltip="Edit each group's head count and re-plan, without the model"),
         Binding("e", "export", "Export", id="inspect.export", tooltip="Export the bundle"),
         Binding("m", "focus_map", "Map", id="inspect.map", tooltip="Focus the map to zoom and pan"),
         Binding("t", "focus_tree", "Trees", id="inspect.tree", tooltip="Focus the behavior trees", show=False),
@@ -141,16 +144,38 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
         yield Footer()
 
     def on_mount(self) -> None:
+        self.query_one("#inspect-map", MapView).set_world(self.generated.world)
+        self._show_generated()
+
+    def _show_generated(self) -> None:
+        """Trees, map overlay and titles of `self.generated`, the first agent selected."""
+        self._overlay = base_overlay(self.generated)
+        self._selected_node = None
         self._build_tree()
         world_map = self.query_one("#inspect-map", MapView)
-        world_map.set_world(self.generated.world)
         world_map.set_overlay(self._overlay)
+        world_map.border_subtitle = self.generated.prompt[:70]
         tree = self.query_one("#bt-tree", BTTree)
+        tree.border_title = f"Trees · {len(self.generated.scenario.agents)} agents"
+        self.query_one("#node-detail", Static).update("")
+        xml = self.query_one("#xml", TextArea)
+        if xml.display:
+            xml.display = False
+            tree.display = True
         tree.focus()
         if tree.agent_nodes:
             # Start on the first agent so its route is highlighted straight away.
-            first_agent = tree.agent_nodes[min(tree.agent_nodes)]
-            self.call_after_refresh(tree.move_cursor, first_agent)
+            self.call_after_refresh(self._select_first_agent)
+
+    def _select_first_agent(self) -> None:
+        tree = self.query_one("#bt-tree", BTTree)
+        if not tree.agent_nodes:
+            return
+        first_agent = tree.agent_nodes[min(tree.agent_nodes)]
+        tree.move_cursor(first_agent)
+        if self._selected_node is None:
+            # A rebuilt tree whose cursor was already on that line posts no NodeHighlighted.
+            self._select(first_agent.data)
 
     def _build_tree(self) -> None:
         tree = self.query_one("#bt-tree", BTTree)
@@ -177,13 +202,18 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
             ("Play simulation", "Simulate this scenario", self.action_simulate),
             ("Toggle XML view", "Show the selected agent's BehaviorTree.CPP XML", self.action_toggle_xml),
             ("Regenerate", "Run the generation again with the same prompt", self.action_regenerate),
+            ("Edit counts and re-plan", "Change each group's head count; the trees are kept, the model is not called",
+             self.action_edit_counts),
             ("Export bundle", "Write the scenario bundle to the export folder", self.action_export),
         ]
 
     # selection ---------------------------------------------------------------------------------------
     @on(Tree.NodeHighlighted, "#bt-tree")
     def node_highlighted(self, event: Tree.NodeHighlighted[BTNode]) -> None:
-        self._selected_node = event.node.data
+        self._select(event.node.data)
+
+    def _select(self, data: BTNode | None) -> None:
+        self._selected_node = data
         self.query_one("#inspect-map", MapView).set_overlay(highlight_for(self.generated, self._selected_node, self._overlay))
         self.query_one("#node-detail", Static).update(self._detail(self._selected_node))
         if self.query_one("#xml", TextArea).display:
@@ -247,6 +277,21 @@ agent's XML, **p** plays the simulation, **g** regenerates, **e** exports the bu
 
         g = self.generated
         self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, g.seed)))
+
+    def action_edit_counts(self) -> None:
+        from grove_tui.screens.counts import CountsScreen
+
+        self.app.push_screen(CountsScreen(self.generated), self._counts_edited)
+
+    def _counts_edited(self, generated: GeneratedScenario | None) -> None:
+        if generated is None:
+            return
+        self.generated = generated
+        self.grove.generated = generated
+        self._show_generated()
+        note = generated.result.report.get("notes", [""])[0]
+        self.notify(f"{note}\n{len(generated.scenario.agents)} agents · bundle {generated.bundle_dir.name}",
+                    title="Re-planned", timeout=6)
 
     def action_back(self) -> None:
         self.app.pop_screen()
