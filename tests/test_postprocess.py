@@ -205,3 +205,31 @@ def test_destinations_the_prompt_names_are_added_when_the_model_leaves_them_out(
     kept = run(clinic, grid, "normal", "Two visitors walk from the lobby to the cafeteria",
                [DraftGroup("visitors", 2, "lobby", DraftNode("GoTo", {"target": "vending_machine"}))])
     assert [n.node for n in kept.groups[0].tree.walk()] == ["GoTo"]  # already reaches the cafeteria
+
+
+def test_a_group_does_what_its_own_words_say_where_they_say_it(clinic, grid):
+    """The small model queued everyone at the exit; the words say the patients queue at the counter
+    and the family walks to the exit."""
+    wrong = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "main_entrance"}),
+                                       DraftNode("Queue", {"service_point": "main_entrance"})))
+    out = run(clinic, grid, "queuing", "ten patients queue at the pharmacy counter while a family walks to the main entrance",
+              [DraftGroup("patients", 10, "lobby", wrong), DraftGroup("patients", 10, "lobby", wrong)])
+    patients, family = out.groups
+    assert patients.count == 10 and family.count == 4
+    assert {n.ports.get("service_point") for n in patients.tree.walk() if n.node == "Queue"} == {"pharmacy_counter"}
+    assert [n.node for n in family.tree.walk()] == ["GoTo"]
+    assert family.tree.ports["target"] == "main_entrance"
+    assert sum("as the prompt says" in n for n in out.notes) == 2
+
+
+def test_words_that_state_no_behavior_leave_the_model_tree_alone(clinic, grid):
+    tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "cafeteria"}), DraftNode("Converse", {"target": "cafeteria"})))
+    out = run(clinic, grid, "normal", "three visitors in the cafeteria", [DraftGroup("visitors", 3, "cafeteria", tree)])
+    assert [n.node for n in out.groups[0].tree.walk()] == ["Sequence", "GoTo", "Converse"]
+    assert not any("as the prompt says" in n for n in out.notes)
+
+
+def test_chatting_happens_where_the_words_put_it(clinic, grid):
+    elsewhere = DraftNode("Converse", {"target": "pharmacy"})
+    out = run(clinic, grid, "normal", "four nurses chat in the cafeteria", [DraftGroup("nurses", 4, "lobby", elsewhere)])
+    assert [(n.node, n.ports.get("target")) for n in out.groups[0].tree.walk()] == [("Converse", "cafeteria")]

@@ -186,6 +186,8 @@ def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, t
     following the velocity field to the exit. Every preset with waypoints: places the prompt
     sends the group to ("to the kitchen") that its tree never reaches are appended as GoTo steps.
     """
+    if preset.velocity != "field":
+        tree = _follow_stated_intent(tree, text, world, selection, allowed, notes, label)
     kinds = {n.node for n in tree.walk()}
     if preset.name == "queuing" or (preset.goal_sampling == "sequential" and "Queue" in preset.required_nodes):
         words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
@@ -212,6 +214,73 @@ def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, t
             follow = DraftNode("FollowVelocityField", {"exit": exit_name})
             return DraftNode("Sequence", {}, (tree, follow)) if tree.children or tree.node != "Sequence" else follow
     return tree
+
+
+def _stated_intent(text: str) -> str | None:
+    """The behavior a group's own words state, if they state one clearly."""
+    words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
+    for kind in ("queue", "converse", "wander"):
+        if words & _INTENT_WORDS[kind]:
+            return kind
+    if words & _INTENT_WORDS["walk"]:
+        return "walk"
+    return None
+
+
+def _entity_service(name: str, world: Any) -> str | None:
+    """The service point a place name stands for: the entity itself, or its zone's counter/desk."""
+    try:
+        obj = world.find(name)
+    except Exception:
+        return None
+    if hasattr(obj, "interaction_point"):
+        return obj.name
+    zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
+    service = _service_entity(zone) if hasattr(zone, "entities") else None
+    return None if service is None else service.name
+
+
+def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any, allowed: Sequence[str],
+                          notes: list[str], label: str) -> DraftNode:
+    """When a group's words say plainly what it does and where ("ten patients queue at the pharmacy
+    counter", "a family walks to the exit"), a tree that does something else, or elsewhere, is replaced
+    by the plain tree for those words. Vague words leave the model's tree alone."""
+    intent = _stated_intent(text)
+    if intent is None or selection is None:
+        return tree
+    places = places_named(text, selection)
+    kinds = {n.node for n in tree.walk()}
+    have = _tree_places(tree)
+    have_zones = {_zone_of(world, p, p) for p in have}
+    replacement: DraftNode | None = None
+    if intent == "queue" and "Queue" in allowed:
+        service = next((s for s in (_entity_service(name, world) for _, name in places) if s), None)
+        queued_at = {n.ports.get("service_point") for n in tree.walk() if n.node == "Queue"}
+        if service is not None and queued_at != {service}:
+            steps = (DraftNode("GoTo", {"target": service}),) if "GoTo" in allowed else ()
+            replacement = DraftNode("Sequence", {}, steps + (DraftNode("Queue", {"service_point": service}),))
+    elif intent == "converse" and "Converse" in allowed and places:
+        spot = places[-1][1]
+        if not any(n.node == "Converse" and _zone_of(world, n.ports.get("target", ""), "") == _zone_of(world, spot, spot)
+                   for n in tree.walk()):
+            replacement = DraftNode("Converse", {"target": spot})
+    elif intent == "wander" and "Wander" in allowed and places:
+        zone = _zone_of(world, places[-1][1], places[-1][1])
+        if not any(n.node == "Wander" and _zone_of(world, n.ports.get("zone", ""), "") == zone for n in tree.walk()):
+            replacement = DraftNode("Wander", {"zone": zone})
+    elif intent == "walk" and "GoTo" in allowed:
+        goals = [name for prep, name in places if prep in _GOAL_PREPOSITIONS]
+        stray = kinds & {"Queue", "Converse", "Wander"}
+        wrong = [p for p in have if p not in goals and _zone_of(world, p, p) not in {_zone_of(world, g, g) for g in goals}]
+        if goals and (stray or wrong):  # only missing the destination: the append rule below keeps the tree
+            together = (DraftNode("JoinGroup", {}),) if "JoinGroup" in kinds and "JoinGroup" in allowed else ()
+            steps = together + tuple(DraftNode("GoTo", {"target": g}) for g in goals)
+            replacement = steps[0] if len(steps) == 1 else DraftNode("Sequence", {}, steps)
+    if replacement is None:
+        return tree
+    notes.append(f"group '{label}': {intent} as the prompt says ({', '.join(sorted(_tree_places(replacement)))}) "
+                 f"instead of the model's {', '.join(sorted(kinds))}")
+    return replacement
 
 
 def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
@@ -265,6 +334,17 @@ def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
 _SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
 _GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
 QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
+# What a group's own words say it does. Stricter than QUEUE_WORDS: "wait" alone is not a queue.
+_INTENT_WORDS = {
+    "queue": frozenset("queue queuing queueing queued lining line turn served".split()),
+    "converse": frozenset("chat chatting chatted talk talking talked converse conversing conversation gossip "
+                          "gossiping discuss discussing socialise socialize socialising socializing".split()),
+    "wander": frozenset("wander wandering wandered stroll strolling strolled roam roaming browse browsing "
+                        "meander meandering mill milling".split()),
+    "walk": frozenset("walk walking walked go going goe gone head heading move moving come coming leave leaving "
+                      "hurry hurrying run running rush rushing return returning visit visiting enter entering "
+                      "cross crossing arrive arriving proceed proceeding".split()),
+}
 
 
 def places_named(text: str, selection: Any) -> list[tuple[str, str]]:
