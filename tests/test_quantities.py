@@ -41,7 +41,6 @@ def test_stated_counts(prompt, expected):
 @pytest.mark.parametrize(
     "prompt",
     [
-        "patients queue at the pharmacy",
         "a group of nurses talk in the corridor",
         "the robot crosses the lobby in 3 minutes",  # a number that counts no person
         "room 12 is busy",
@@ -92,3 +91,13 @@ def test_a_bare_number_after_a_counted_phrase_borrows_its_noun():
     assert [(q.count, q.noun) for q in counts] == [(20, "person"), (10, "person")]
     assert [q.count for q in extract_quantities("five nurses at 3 in the afternoon")] == [5]
     assert [q.count for q in extract_quantities("wait 10 minutes in the lobby")] == []
+
+
+def test_a_bare_plural_subject_is_an_implied_group():
+    from grove_tui.engine.quantities import extract_quantities
+
+    (implied,) = extract_quantities("patients queue at the pharmacy")
+    assert implied.implied and not implied.exact and implied.noun == "patient"
+    nurses, visitors = extract_quantities("four nurses chat in the staff room while visitors walk to ward a")
+    assert (nurses.count, nurses.implied) == (4, False) and (visitors.noun, visitors.implied) == ("visitor", True)
+    assert extract_quantities("the nurse helps patients in ward a") == []  # not who the clause is about

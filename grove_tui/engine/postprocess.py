@@ -114,9 +114,10 @@ def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Prese
         if pick is not None:
             unused.remove(pick)
             g = groups[pick]
-            if g.count != q.count:
-                notes.append(f"group '{g.label}': count {g.count} -> {q.count} ('{q.phrase}')")
-            plans.append(GroupPlan(len(plans), g.label, q.count, _zone_of(world, g.spawn, default_spawn), g.tree, q))
+            count = g.count if q.implied else q.count  # "visitors walk in": how many is the model's choice
+            if g.count != count:
+                notes.append(f"group '{g.label}': count {g.count} -> {count} ('{q.phrase}')")
+            plans.append(GroupPlan(len(plans), g.label, count, _zone_of(world, g.spawn, default_spawn), g.tree, q))
             continue
         if not groups:
             raise GenerationError(f"the model wrote no group of people for '{q.phrase}'; rephrase the prompt or try another seed")
@@ -132,6 +133,12 @@ def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Prese
             how = f"at {place}"
         notes.append(f"added group '{label}' of {q.count} for '{q.phrase}' ({how})")
         plans.append(GroupPlan(len(plans), label, q.count, spawn, tree, q))
+    if all(q.implied for q in quantities):
+        # No number anywhere: the prompt does not fix the population, so the model's other groups stand.
+        for i in unused:
+            g = groups[i]
+            plans.append(GroupPlan(len(plans), g.label, g.count, _zone_of(world, g.spawn, default_spawn), g.tree, None))
+        return plans
     for i in unused:
         notes.append(f"dropped group '{groups[i].label}' ({groups[i].count}): the prompt states no such people")
     return plans
@@ -245,10 +252,12 @@ def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any
     """When a group's words say plainly what it does and where ("ten patients queue at the pharmacy
     counter", "a family walks to the exit"), a tree that does something else, or elsewhere, is replaced
     by the plain tree for those words. Vague words leave the model's tree alone."""
+    text = _CLAUSE_BREAK.split(text, maxsplit=1)[0]  # "...chat in the staff room while visitors walk...": own clause only
     intent = _stated_intent(text)
     if intent is None or selection is None:
         return tree
     places = places_named(text, selection)
+    located = [name for prep, name in places if prep in _SPAWN_PREPOSITIONS] or [name for _, name in places]
     kinds = {n.node for n in tree.walk()}
     have = _tree_places(tree)
     have_zones = {_zone_of(world, p, p) for p in have}
@@ -260,12 +269,12 @@ def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any
             steps = (DraftNode("GoTo", {"target": service}),) if "GoTo" in allowed else ()
             replacement = DraftNode("Sequence", {}, steps + (DraftNode("Queue", {"service_point": service}),))
     elif intent == "converse" and "Converse" in allowed and places:
-        spot = places[-1][1]
+        spot = located[0]
         if not any(n.node == "Converse" and _zone_of(world, n.ports.get("target", ""), "") == _zone_of(world, spot, spot)
                    for n in tree.walk()):
             replacement = DraftNode("Converse", {"target": spot})
     elif intent == "wander" and "Wander" in allowed and places:
-        zone = _zone_of(world, places[-1][1], places[-1][1])
+        zone = _zone_of(world, located[0], located[0])
         if not any(n.node == "Wander" and _zone_of(world, n.ports.get("zone", ""), "") == zone for n in tree.walk()):
             replacement = DraftNode("Wander", {"zone": zone})
     elif intent == "walk" and "GoTo" in allowed:
@@ -334,6 +343,7 @@ def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
 _SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
 _GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
 QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
+_CLAUSE_BREAK = re.compile(r"\b(?:while|whilst|whereas|meanwhile|but)\b|[;.]", re.IGNORECASE)
 # What a group's own words say it does. Stricter than QUEUE_WORDS: "wait" alone is not a queue.
 _INTENT_WORDS = {
     "queue": frozenset("queue queuing queueing queued lining line turn served".split()),

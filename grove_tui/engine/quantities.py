@@ -108,6 +108,7 @@ class Quantity:
     start: int  # character span of `phrase` in the prompt
     end: int
     exact: bool  # False for vague words (few, several)
+    implied: bool = False  # no number at all ("visitors walk in"): adds a missing group, never resizes one
 
     @property
     def label_tokens(self) -> frozenset[str]:
@@ -117,8 +118,35 @@ class Quantity:
 _TOKEN = re.compile(r"\d{1,3}(?:,\d{3})+|\d+|[A-Za-z]+(?:'[A-Za-z]+)?")
 
 
+_CLAUSE_STARTERS = frozenset("while whilst and but as meanwhile then when".split())
+_SUBJECT_MODIFIERS = frozenset("the some other more many all tired young old elderly busy waiting".split())
+BARE_PLURAL_COUNT = 4  # "visitors walk to ward a": some visitors, not none
+
+
+def _bare_plurals(prompt: str, toks, low: list[str], found: list[Quantity]) -> list[Quantity]:
+    """Plural person nouns that open a clause with no number ("... while visitors walk to ward a"):
+    a vague head count, so the group is not lost."""
+    covered = [(q.start, q.end) for q in found]
+    out: list[Quantity] = []
+    for k, w in enumerate(low):
+        noun = lemma(w)
+        if noun == w or noun not in PERSON_NOUNS or noun in COLLECTIVES:
+            continue  # singular, not a person, or a collective ("families" is handled as a count)
+        if any(a <= toks[k][1] < b for a, b in covered) or (k + 1 < len(low) and low[k + 1] == "of"):
+            continue
+        j = k - 1
+        while j >= 0 and low[j] in _SUBJECT_MODIFIERS:
+            j -= 1
+        if j >= 0 and low[j] not in _CLAUSE_STARTERS:
+            continue  # "queue with patients", "help the nurses": not who the clause is about
+        q = _quantity(prompt, toks, j + 1, k, BARE_PLURAL_COUNT, noun, False)
+        out.append(Quantity(q.count, q.noun, q.phrase, q.start, q.end, q.exact, implied=True))
+    return out
+
+
 def extract_quantities(prompt: str) -> list[Quantity]:
-    """Every stated head count, in prompt order; each person phrase is counted once."""
+    """Every stated head count, in prompt order; each person phrase is counted once. A plural person
+    noun opening a clause without a number counts as a vague group of BARE_PLURAL_COUNT."""
     toks = [(m.group(0), m.start(), m.end()) for m in _TOKEN.finditer(prompt)]
     low = [t[0].lower() for t in toks]
     found: list[Quantity] = []
@@ -178,7 +206,7 @@ def extract_quantities(prompt: str) -> list[Quantity]:
         found.append(_quantity(prompt, toks, i, noun_at, value, noun, exact))
         used_until = noun_at
         i = noun_at + 1
-    return found
+    return sorted(found + _bare_plurals(prompt, toks, low, found), key=lambda q: q.start)
 
 
 def _quantity(prompt: str, toks, first: int, last: int, value: int, noun: str, exact: bool) -> Quantity:
