@@ -84,7 +84,9 @@ class PlanInputs:
 
     def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
         if self.quantities:
-            quantities = tuple(replace(q, count=counts[i]) if i in counts else q for i, q in enumerate(self.quantities))
+            # An edited count is stated by the user now, even where the prompt only implied the group.
+            quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
+                               for i, q in enumerate(self.quantities))
             return replace(self, quantities=quantities)
         groups = tuple(replace(g, count=counts[i]) if i in counts else g for i, g in enumerate(self.draft.groups))
         return replace(self, draft=Draft(groups))
