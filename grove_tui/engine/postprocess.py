@@ -117,7 +117,9 @@ def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Prese
             count = g.count if q.implied else q.count  # "visitors walk in": how many is the model's choice
             if g.count != count:
                 notes.append(f"group '{g.label}': count {g.count} -> {count} ('{q.phrase}')")
-            plans.append(GroupPlan(len(plans), g.label, count, _zone_of(world, g.spawn, default_spawn), g.tree, q))
+            # The prompt's word names the group when the model's label does not ("visitors", not "staff_room")
+            label = g.label if _label_score(g, q) > 0 else q.phrase.split()[-1].lower()
+            plans.append(GroupPlan(len(plans), label, count, _zone_of(world, g.spawn, default_spawn), g.tree, q))
             continue
         if not groups:
             raise GenerationError(f"the model wrote no group of people for '{q.phrase}'; rephrase the prompt or try another seed")
