@@ -141,3 +141,25 @@ def test_a_failed_generation_scores_zero_not_missing():
     assert summary[("normal", "vanilla")]["target_grounding"] == 0.0
     assert summary[("normal", "vanilla")]["failed"] == 1.0
     assert "spawn_grounding" not in summary[("normal", "vanilla")]  # the case has no spawn expectation
+
+
+def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
+    """GROVE's planned patient (agent 2) reaches the pharmacy counter through the door; without waypoints
+    and without run-time planning (HuNavSim's straight goals) the wall between lobby and pharmacy stops them."""
+    from grove_tui.engine.evaluation import simulate_for_scores, without_planner, _write_variant, _read_trees
+
+    scenario = Scenario.load(bundle / "scenario.yaml")
+    counter = hospital.find("pharmacy_counter").interaction_point
+
+    def final_distance(traj) -> float:
+        k = list(traj.ids).index(2)
+        pts = traj.people[:, k]
+        x, y = pts[np.isfinite(pts[:, 0])][-1]
+        return float(np.hypot(x - counter[0], y - counter[1]))
+
+    grove_traj, _ = simulate_for_scores(bundle, scenario, hospital, 40.0)
+    straight_scenario, straight_trees = without_planner(scenario, _read_trees(bundle, scenario))
+    straight = _write_variant(bundle, bundle.parent / "straight", straight_scenario, straight_trees)
+    straight_traj, _ = simulate_for_scores(straight, straight_scenario, hospital, 40.0, runtime_planning=False)
+    assert final_distance(grove_traj) < 2.5
+    assert final_distance(straight_traj) > 4.0

@@ -357,7 +357,8 @@ def _navigation_tags() -> frozenset[str]:
 
 def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
     """The `no-planner` baseline: straight SFM goals, as HuNavSim runs behavior trees. Injected
-    waypoints are dropped and velocity fields are replaced by a straight walk to the exit."""
+    waypoints are dropped, velocity fields are replaced by a straight walk to the exit, and the
+    simulation plans nothing at run time either (see simulate_for_scores)."""
     nav = _navigation_tags()
 
     def edit(agent: AgentSpec, root: etree._Element) -> None:
@@ -428,12 +429,12 @@ def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: M
     return target
 
 
-def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: float):
+def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: float, runtime_planning: bool = True):
     """Run a bundle's scenario; trajectories and events for scoring (also written into the bundle)."""
     from grove_tui.engine.metrics import write_events
     from grove_tui.engine.simulation import Simulation
 
-    sim = Simulation.from_scenario(scenario, bundle, world=world)
+    sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
     sim.run(seconds)
     recorder = sim.recorder
     recorder.write_csv(bundle / "trajectories.csv")
@@ -506,7 +507,8 @@ def run_suite(cases: Sequence[EvalCase], out_dir: str | Path, *, bt_model: str |
                         target = _write_variant(base_dir, out / "bundles" / case.id / method, scenario, trees)
                         generated[method] = (scenario, dict(trees), target)
                     scenario, trees, bundle = generated[method]
-                    traj, events = simulate_for_scores(bundle, scenario, world, sim_seconds)
+                    traj, events = simulate_for_scores(bundle, scenario, world, sim_seconds,
+                                                       runtime_planning=method != "no-planner")
                     report_path = bundle / "generation.json"
                     report = json.loads(report_path.read_text()) if report_path.exists() else {}
                     by_id = {a.id: trees[a.tree] for a in scenario.agents}

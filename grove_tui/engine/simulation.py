@@ -124,7 +124,9 @@ class Simulation:
 
     @classmethod
     def from_scenario(cls, scenario: Any, bundle_dir: str | Path, world: Any = None, dt: float = 0.05,
-                      bt_rate: float = 10.0) -> Simulation:
+                      bt_rate: float = 10.0, runtime_planning: bool = True) -> Simulation:
+        """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
+        no-planner baseline); by default goals set while running are planned with Theta*."""
         from grove_tui.engine.grid import OccupancyGrid, build_grid
         from grove_tui.engine.planner import ThetaStarPlanner
         from grove_tui.engine.world import load_world
@@ -145,7 +147,8 @@ class Simulation:
         documents = []
         for agent in sorted(scenario.agents, key=lambda a: a.id):
             documents.append(load_tree_file(bundle_dir / agent.tree))
-        return cls.build(scenario.agents, documents, world=world, grid=grid, planner=ThetaStarPlanner(grid),
+        planner = ThetaStarPlanner(grid) if runtime_planning else None
+        return cls.build(scenario.agents, documents, world=world, grid=grid, planner=planner,
                          walls=world.walls(), robot=scenario.robot, fields=fields, seed=scenario.seed, dt=dt,
                          bt_rate=bt_rate, scenario=scenario)
 
