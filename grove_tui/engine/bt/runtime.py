@@ -314,8 +314,14 @@ class StatefulActionNode(LeafNode):
 
 # ---- control nodes ------------------------------------------------------------------------------
 
-class Sequence(ControlNode):
+class _OrderedControl(ControlNode):
+    """Sequence and Fallback are duals: tick children in order, resuming at the running one, until
+    one returns STOP_ON (returned at once, children reset); when all returned CONTINUE_ON or were
+    SKIPPED the node returns CONTINUE_ON, or SKIPPED if every child was skipped (BT.CPP v4)."""
+
     __slots__ = ("current", "skipped")
+    STOP_ON = FAILURE
+    CONTINUE_ON = SUCCESS
 
     def __init__(self, name, children, node_id=None):
         super().__init__(name, children, node_id)
@@ -331,11 +337,11 @@ class Sequence(ControlNode):
             child_status = self.kids[self.current].execute_tick()
             if child_status == RUNNING:
                 return RUNNING
-            if child_status == FAILURE:
+            if child_status == self.STOP_ON:
                 self.reset_children()
                 self.current = 0
-                return FAILURE
-            if child_status == SUCCESS:
+                return self.STOP_ON
+            if child_status == self.CONTINUE_ON:
                 self.current += 1
             elif child_status == SKIPPED:
                 self.current += 1
@@ -347,12 +353,18 @@ class Sequence(ControlNode):
             self.reset_children()
             self.current = 0
             self.skipped = 0
-        return SKIPPED if all_skipped else SUCCESS
+        return SKIPPED if all_skipped else self.CONTINUE_ON
 
     def halt(self) -> None:
         self.current = 0
         self.skipped = 0
         ControlNode.halt(self)
+
+
+class Sequence(_OrderedControl):
+    __slots__ = ()
+    STOP_ON = FAILURE
+    CONTINUE_ON = SUCCESS
 
 
 class SequenceWithMemory(ControlNode):
@@ -402,45 +414,10 @@ class SequenceWithMemory(ControlNode):
         ControlNode.halt(self)
 
 
-class Fallback(ControlNode):
-    __slots__ = ("current", "skipped")
-
-    def __init__(self, name, children, node_id=None):
-        super().__init__(name, children, node_id)
-        self.current = 0
-        self.skipped = 0
-
-    def tick(self) -> int:
-        n = len(self.kids)
-        if not is_active(self.status):
-            self.skipped = 0
-        self.status = RUNNING
-        while self.current < n:
-            child_status = self.kids[self.current].execute_tick()
-            if child_status == RUNNING:
-                return RUNNING
-            if child_status == SUCCESS:
-                self.reset_children()
-                self.current = 0
-                return SUCCESS
-            if child_status == FAILURE:
-                self.current += 1
-            elif child_status == SKIPPED:
-                self.current += 1
-                self.skipped += 1
-            else:
-                raise BTError(f"{self.path} {self.node_id}: a child returned IDLE")
-        all_skipped = self.skipped == n
-        if self.current == n:
-            self.reset_children()
-            self.current = 0
-            self.skipped = 0
-        return SKIPPED if all_skipped else FAILURE
-
-    def halt(self) -> None:
-        self.current = 0
-        self.skipped = 0
-        ControlNode.halt(self)
+class Fallback(_OrderedControl):
+    __slots__ = ()
+    STOP_ON = SUCCESS
+    CONTINUE_ON = FAILURE
 
 
 class ReactiveSequence(ControlNode):
