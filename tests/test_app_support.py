@@ -44,25 +44,8 @@ def test_settings(tmp_path: Path, **overrides: Any) -> GroveSettings:
 test_settings.__test__ = False  # type: ignore[attr-defined]  # a helper, not a test
 
 
-# Pipeline events with the engine's class names (the generation screen dispatches on the name).
-@dataclass(frozen=True)
-class StageStarted:
-    stage: str
-
-
-@dataclass(frozen=True)
-class StageFinished:
-    stage: str
-    seconds: float
-    prompt_tokens: int
-    completion_tokens: int
-    detail: str
-
-
-@dataclass(frozen=True)
-class TokenStreamed:
-    stage: str
-    text: str
+# The engine's own pipeline events: the fake backend emits exactly what the real pipeline emits.
+from grove_tui.engine.pipeline import StageFinished, StageStarted, TokenStreamed  # noqa: E402,F401
 
 
 class ScriptedFailure(Exception):
