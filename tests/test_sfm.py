@@ -249,3 +249,17 @@ def test_motion_along_a_walls_line_stops_at_its_end():
     assert 5.0 < x < 5.3 and y == 0.0
     x, y, _, _ = sfm.resolve_motion(7.0, 0.0, 6.0, 0.0, -1.0, 0.0, 0.0, walls, meta, start, items)
     assert (x, y) == (6.0, 0.0)
+
+
+def test_a_slide_never_leaves_a_chord_through_another_wall_tip():
+    """Found by hypothesis: sliding along one wall made the step's chord clip another wall's end."""
+    walls = np.array([[0, 0, 10, 0], [10, 0, 10, 10], [10, 10, 0, 10], [0, 10, 0, 0],
+                      [3, 3, 7, 3.5], [5, 5, 5, 9], [2, 8, 4, 6], [7, 7, 7.0001, 7]], dtype=float)
+    walls, meta, start, items = wall_setup(walls)
+    x0, y0 = 3.0, 4.4375
+    x, y, _, _ = sfm.resolve_motion(x0, y0, x0 + 2.0, y0 + 3.0, 2.0, 3.0, 0.1, walls, meta, start, items)
+    a, b = np.array([x0, y0]), np.array([x, y])
+    for w in walls:
+        c, d = w[:2], w[2:]
+        assert not (orient(c, d, a) * orient(c, d, b) <= 0 and orient(a, b, c) * orient(a, b, d) <= 0
+                    and not np.array_equal(a, b)), f"chord {a} -> {b} crosses wall {w}"

@@ -301,6 +301,10 @@ def resolve_motion(x0, y0, x1, y1, vx, vy, clearance, walls, wall_meta, wall_sta
     sy = y0
     ex = x1
     ey = y1
+    # Where the straight motion first stops short of a wall: its chord from p0 is verified free.
+    first_x = x1
+    first_y = y1
+    first_hit = True
     for _ in range(4):
         mx = ex - sx
         my = ey - sy
@@ -319,6 +323,10 @@ def resolve_motion(x0, y0, x1, y1, vx, vy, clearance, walls, wall_meta, wall_sta
             s_safe = 0.0
         cx = sx + s_safe * mx
         cy = sy + s_safe * my
+        if first_hit:
+            first_x = cx
+            first_y = cy
+            first_hit = False
         rx = ex - cx
         ry = ey - cy
         into = rx * nx + ry * ny
@@ -344,6 +352,16 @@ def resolve_motion(x0, y0, x1, y1, vx, vy, clearance, walls, wall_meta, wall_sta
             ey = sy
     if clearance > 0.0:
         ex, ey = _keep_clearance(ex, ey, clearance, walls, wall_meta, wall_start, wall_items)
+    # A step is recorded as the straight chord p0 -> end; a slide around one wall can make that chord
+    # clip the tip of another. Then the step ends where the straight motion first stopped instead.
+    if ex != x0 or ey != y0:
+        mx = ex - x0
+        my = ey - y0
+        scan_all = math.sqrt(mx * mx + my * my) > reach
+        s, w = _earliest_hit(x0, y0, ex, ey, walls, wall_meta, wall_start, wall_items, scan_all)
+        if w >= 0:
+            ex = first_x
+            ey = first_y
     return ex, ey, vx, vy
 
 
