@@ -133,7 +133,7 @@ _TYPE_WORDS = {
 }
 
 
-def _placeholder(port: Any) -> Any:
+def _example_value(port: Any) -> Any:
     if port.default is not None:
         return port.default
     if port.type == "target":
@@ -154,7 +154,7 @@ def default_example(spec: Any) -> dict[str, Any]:
         if port.auto or getattr(port, "direction", "in") == "out":
             continue
         if port.default is None:
-            example[port.name] = _placeholder(port)
+            example[port.name] = _example_value(port)
     if spec.category in ("decorator", "control"):
         example["children"] = [{"node": "..."}]
     return example
