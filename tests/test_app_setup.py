@@ -37,6 +37,11 @@ async def setup_ready(pilot) -> SetupScreen:
     await wait_until(pilot, lambda: isinstance(pilot.app.screen, SetupScreen), what="setup screen")
     screen = pilot.app.screen
     await wait_until(pilot, lambda: screen.query_one("#preview", MapView).raster is not None, what="map preview")
+    # presets and model status arrive from background workers too; under load they can come last
+    await wait_until(pilot, lambda: str(screen.query_one("#preset-description", Static).render()).strip() != "",
+                     what="preset description")
+    await wait_until(pilot, lambda: "loaded" in str(screen.query_one("#models", Static).render())
+                     or "demand" in str(screen.query_one("#models", Static).render()), what="model status")
     return screen
 
 
