@@ -43,6 +43,8 @@ async def setup_ready(pilot) -> None:
     await wait_until(pilot, lambda: screen.query_one("#preview", MapView).raster is not None, what="preview")
     await wait_until(pilot, lambda: "loaded" in str(screen.query_one("#models", Static).render())
                      or "demand" in str(screen.query_one("#models", Static).render()), what="model status")
+    await wait_until(pilot, lambda: str(screen.query_one("#preset-description", Static).render()).strip() != "",
+                     what="preset description")
     no_blink(app)
 
 
