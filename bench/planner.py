@@ -125,7 +125,7 @@ def bench(name, grid, queries_count, repeats, min_cells, seed, fixed_queries=Non
     pf_build, pf_wall, pf_t, pf_raw, pf_smooth, clipping = run_pathfinding(grid.occupied, queries, planner)
     h, w = grid.occupied.shape
     print(f"\n== {name}: {h} x {w} cells, {grid.occupied.mean():.1%} occupied, {len(queries)} queries")
-    print(f"grid preparation (wall): ours {prepare * 1000:.0f} ms (clearance, components, 8 landmark maps), "
+    print(f"grid preparation (wall): ours {prepare * 1000:.0f} ms (clearance, components, {planner.landmark_count} landmark maps), "
           f"pathfinding {pf_build * 1000:.0f} ms (Grid from the matrix)")
     print(f"{'query':>5} {'ours cpu ms':>11} {'ours wall ms':>12} {'pf cpu ms':>9} {'pf wall ms':>10} {'speedup':>8} "
           f"{'ours m':>8} {'A* m':>8} {'A*+smooth m':>12} {'len ratio':>9}")

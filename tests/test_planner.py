@@ -20,6 +20,7 @@ from grove_tui.engine.planner import (
     clearance_map,
     line_of_sight,
     path_length,
+    sight_maps,
 )
 from grove_tui.engine.world import list_worlds, load_world
 
@@ -203,14 +204,14 @@ def test_diagonal_squeeze_between_two_corners_is_refused():
 
 def test_line_of_sight_agrees_with_brute_force_on_random_segments():
     grid = make_grid(random_rectangles(80, 30, seed=5), resolution=1.0)
-    clearance = clearance_map(grid.occupied)
+    sight = sight_maps(clearance_map(grid.occupied))
     free = np.argwhere(~grid.occupied)
     rng = np.random.default_rng(11)
     clear_seen = blocked_seen = 0
     for _ in range(3000):
         (r0, c0), (r1, c1) = free[rng.integers(len(free))], free[rng.integers(len(free))]
         expected = not segment_hits_occupied(grid, grid.cell_to_world(r0, c0), grid.cell_to_world(r1, c1))
-        assert line_of_sight(grid.occupied, clearance, r0, c0, r1, c1) == expected, (r0, c0, r1, c1)
+        assert line_of_sight(*sight, r0, c0, r1, c1) == expected, (r0, c0, r1, c1)
         clear_seen += expected
         blocked_seen += not expected
     assert clear_seen > 100 and blocked_seen > 100
@@ -219,9 +220,9 @@ def test_line_of_sight_agrees_with_brute_force_on_random_segments():
 def test_exact_corner_touch_blocks_line_of_sight():
     occupied = np.zeros((5, 5), dtype=bool)
     occupied[2, 3] = True  # the 45-degree segment (1,1)-(3,3) meets this cell only at its corner (2.5, 2.5)
-    clearance = clearance_map(occupied)
-    assert not line_of_sight(occupied, clearance, 1, 1, 3, 3)
-    assert line_of_sight(occupied, clearance, 1, 1, 1, 4)
+    sight = sight_maps(clearance_map(occupied))
+    assert not line_of_sight(*sight, 1, 1, 3, 3)
+    assert line_of_sight(*sight, 1, 1, 1, 4)
 
 
 def test_unreachable_goal_names_both_labels():
@@ -346,15 +347,13 @@ def test_landmark_heuristic_never_exceeds_the_grid_distance():
     free = np.argwhere(~grid.occupied)
     rng = np.random.default_rng(2)
     goal = tuple(free[rng.integers(len(free))])
-    table = planner.landmarks
-    width = grid.occupied.shape[1]
-    goal_row = table[goal[0] * width + goal[1]]
+    assert planner.landmarks.shape == (grid.occupied.size, 4)
     for cell in free[rng.choice(len(free), 60, replace=False)]:
-        bound = float(np.max(np.abs(goal_row - table[cell[0] * width + cell[1]])))
-        assert bound <= reference_astar_length(grid, cell, goal) / grid.resolution + 1e-3
+        bound = planner.landmark_bound(tuple(cell), goal)
+        assert bound <= reference_astar_length(grid, cell, goal) / grid.resolution
     # and the landmarks carry information: in a maze the bound beats the straight-line distance
-    far = max(free, key=lambda c: float(np.max(np.abs(goal_row - table[c[0] * width + c[1]]))))
-    assert np.max(np.abs(goal_row - table[far[0] * width + far[1]])) > math.dist(far, goal) * 1.5
+    far = max(free, key=lambda c: planner.landmark_bound(tuple(c), goal))
+    assert planner.landmark_bound(tuple(far), goal) > math.dist(far, goal) * 1.5
 
 
 def test_plan_cache_keeps_one_planner_per_grid():

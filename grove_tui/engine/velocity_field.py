@@ -187,8 +187,8 @@ def sample_field(vectors, origin_x, origin_y, resolution, x, y):
 
 
 @numba.njit(cache=True, nogil=True)
-def _blend_with_path(occupied, clearance, parent, exit_cx, exit_cy, samples, nearest, nearest_distance,
-                     capture_cells, lookahead_samples, fade_lo, fade_hi, vectors):
+def _blend_with_path(occupied, clearance, sight_rows, sight_cols, parent, exit_cx, exit_cy, samples, nearest,
+                     nearest_distance, capture_cells, lookahead_samples, fade_lo, fade_hi, vectors):
     """Fill `vectors` for every reachable cell: path pursuit blended with the geodesic direction."""
     height, width = occupied.shape
     last = samples.shape[0] - 1
@@ -229,7 +229,7 @@ def _blend_with_path(occupied, clearance, parent, exit_cx, exit_cy, samples, nea
                     py = ay - r
                     p_norm = math.hypot(px, py)
                     if p_norm > 1e-9 and 0 <= ar < height and 0 <= ac < width and not occupied[ar, ac] \
-                            and line_of_sight(occupied, clearance, r, c, ar, ac):
+                            and line_of_sight(sight_rows, sight_cols, r, c, ar, ac):
                         vx = weight * px / p_norm + (1.0 - weight) * gx
                         vy = weight * py / p_norm + (1.0 - weight) * gy
             vectors[r, c, 0] = vx
@@ -294,7 +294,7 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     height, width = occupied.shape
     ex, ey = float(exit_point[0]), float(exit_point[1])
     er, ec = planner.snap(ex, ey, exit_label, "exit")
-    _distance, parent = any_angle_distances(occupied, planner.clearance, er, ec)
+    _distance, parent = any_angle_distances(planner.sight_rows, planner.sight_cols, er, ec)
     parent = parent.reshape(height, width)
     res = planner.resolution
     exit_cx = (ex - planner.centre_x) / res
@@ -317,7 +317,7 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     else:
         samples = np.array([[exit_cx, exit_cy]], dtype=np.float64)
     vectors = np.zeros((height, width, 2), dtype=np.float32)
-    _blend_with_path(occupied, planner.clearance, parent, exit_cx, exit_cy, samples, nearest, nearest_distance,
+    _blend_with_path(occupied, planner.clearance, planner.sight_rows, planner.sight_cols, parent, exit_cx, exit_cy, samples, nearest, nearest_distance,
                      CAPTURE_RADIUS / res, max(1, int(round(LOOKAHEAD / res / spacing))),
                      WALL_FADE[0], WALL_FADE[1], vectors)
     origin = tuple(float(v) for v in getattr(grid, "origin", (planner.centre_x - res / 2, planner.centre_y - res / 2)))
