@@ -1,6 +1,6 @@
 """Planner benchmark (run by hand, not a test): our numba Theta* against PyPI `pathfinding`.
 
-    PYTHONPATH=. python bench/planner.py [--queries 5] [--repeats 3]
+    PYTHONPATH=. python bench/planner.py [--queries 20] [--repeats 3]
 
 Grids: a 1000 x 1000 grid of random rectangles (fixed seed) and the hospital world at 0.05 m
 (inflation 0.35 m). Queries: long random pairs in the same free region (fixed seed); on the hospital,
@@ -135,7 +135,9 @@ def bench(name, grid, queries_count, repeats, min_cells, seed, fixed_queries=Non
               f"{ol:8.2f} {pr:8.2f} {ps:12.2f} {ol / ps:9.3f}")
     summary = {
         "ours_ms_median": statistics.median(ours_t) * 1000,
+        "ours_ms_p90": float(np.percentile(ours_t, 90)) * 1000,
         "ours_ms_max": max(ours_t) * 1000,
+        "ours_share_under_20ms": sum(t <= 0.020 for t in ours_t) / len(ours_t),
         "ours_wall_ms_median": statistics.median(ours_wall) * 1000,
         "pathfinding_ms_median": statistics.median(pf_t) * 1000,
         "speedup_median": statistics.median(p / o for p, o in zip(pf_t, ours_t)),
@@ -165,7 +167,7 @@ def hospital_queries(world, count):
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--queries", type=int, default=5)
+    parser.add_argument("--queries", type=int, default=20)
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args()
     random_grid = OccupancyGrid(origin=(0.0, 0.0), resolution=0.05, occupied=random_rectangles(), inflation=0.0,
@@ -177,12 +179,15 @@ def main() -> None:
     # times are CPU ms per query; speedup = baseline CPU / ours; length ratio = ours / baseline
     headline = {
         "grid1000_ours_ms_median": grid_1000["ours_ms_median"],
+        "grid1000_ours_ms_p90": grid_1000["ours_ms_p90"],
         "grid1000_ours_ms_max": grid_1000["ours_ms_max"],
+        "grid1000_share_under_20ms": grid_1000["ours_share_under_20ms"],
         "grid1000_ours_wall_ms_median": grid_1000["ours_wall_ms_median"],
         "grid1000_pathfinding_ms_median": grid_1000["pathfinding_ms_median"],
         "grid1000_speedup": grid_1000["speedup_median"],
         "grid1000_length_ratio": grid_1000["length_ratio_vs_smoothed"],
         "hospital005_ours_ms_median": hospital["ours_ms_median"],
+        "hospital005_ours_ms_p90": hospital["ours_ms_p90"],
         "hospital005_ours_ms_max": hospital["ours_ms_max"],
         "hospital005_ours_wall_ms_median": hospital["ours_wall_ms_median"],
         "hospital005_pathfinding_ms_median": hospital["pathfinding_ms_median"],
