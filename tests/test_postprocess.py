@@ -222,6 +222,19 @@ def test_a_group_does_what_its_own_words_say_where_they_say_it(clinic, grid):
     assert sum("as the prompt says" in n for n in out.notes) == 2
 
 
+def test_a_group_sent_to_the_exit_walks_to_one_exit_and_starts_away_from_it(clinic, grid):
+    """"the exit" names no door; the group still walks to one (the exit nearest the scene), not into the queue."""
+    queued = queue_tree("pharmacy_counter")
+    out = run(clinic, grid, "queuing", "ten patients queue at the pharmacy while a family walks to the exit",
+              [DraftGroup("patients", 10, "pharmacy", queued), DraftGroup("patients", 4, "pharmacy", queued)])
+    patients, family = out.groups
+    assert {n.ports.get("service_point") for n in patients.tree.walk() if n.node == "Queue"} == {"pharmacy_counter"}
+    assert [n.node for n in family.tree.walk()] == ["GoTo"]
+    assert clinic.find(family.tree.ports["target"]).exit
+    assert family.spawn != clinic.find(family.tree.ports["target"]).zone
+    assert not any(n.node == "Queue" for n in family.tree.walk())
+
+
 def test_words_that_state_no_behavior_leave_the_model_tree_alone(clinic, grid):
     tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "cafeteria"}), DraftNode("Converse", {"target": "cafeteria"})))
     out = run(clinic, grid, "normal", "three visitors in the cafeteria", [DraftGroup("visitors", 3, "cafeteria", tree)])

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from grove_tui.engine.presets import GenerationError, load_preset
 from grove_tui.engine.rois import RoIMatcher, describe_selection, select_rois
-from grove_tui.engine.world import parse_world
+from grove_tui.engine.world import list_worlds, load_world, parse_world
 from helpers.clinic import CLINIC
 
 
@@ -127,3 +129,25 @@ def test_qualified_places_are_not_unknown_places(clinic):
     assert matcher.unknown_places("everyone evacuates through the nearest exit") == []
     assert matcher.unknown_places("they walk to the other side of the lobby") == []
     assert matcher.unknown_places("patients wait at the helipad") == ["helipad"]
+
+
+def test_the_exit_means_the_one_exit_nearest_the_places_named(clinic, matcher):
+    matches = matcher.match("ten patients queue at the pharmacy while a family walks to the exit")
+    doors = [m.name for m in matches if m.kind == "door"]
+    pharmacy = clinic.zone("pharmacy").centroid
+    assert doors == [min(clinic.exits(), key=lambda d: math.dist(d.position, pharmacy)).name]
+    assert [m.name for m in matches if m.kind == "zone"] == ["pharmacy"]
+    # with nothing else named, the world's first exit; a qualified exit is still one exit
+    assert [m.name for m in matcher.match("a family walks to the nearest exit")] == [clinic.exits()[0].name]
+    assert [m.name for m in matcher.match("visitors leave through the back exit")] == ["back_exit"]
+
+
+def test_exit_as_a_verb_names_no_place(matcher):
+    assert matcher.match("five people exit the building") == []
+
+
+@pytest.mark.parametrize("world_name", list_worlds())
+def test_every_world_grounds_the_exit_to_exactly_one_exit_door(world_name):
+    world = load_world(world_name)
+    matches = RoIMatcher(world).match("a group of visitors walks to the exit")
+    assert len(matches) == 1 and matches[0].kind == "door" and world.find(matches[0].name).exit

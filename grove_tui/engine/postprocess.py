@@ -730,10 +730,11 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
     groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection, allowed_nodes)
     if not groups:
         raise GenerationError("the draft has no groups of people")
-    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+    # Trees first: where a group starts depends on where its final tree sends it.
     for g in groups:
         g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label,
                                allowed_nodes)
+    _ground_spawns(groups, quantities, prompt, selection, notes, world)
     space = FreeSpace(world, grid)
     _check_capacity(groups, space, world)
     _check_limits(groups, preset)

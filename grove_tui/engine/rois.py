@@ -230,8 +230,9 @@ class RoIMatcher:
     def _place_tokens(self, prompt: str) -> list[str | None]:
         """Prompt words that can name a place, None where a word breaks a mention (numbers, person words)."""
         raw: list[str | None] = []
-        for w in words(re.sub(r"'s\b", "", prompt)):
-            if w in _BREAKS:
+        toks = words(re.sub(r"'s\b", "", prompt))
+        for i, w in enumerate(toks):
+            if w in _BREAKS and not self._locative_as_noun(toks, i):
                 raw.append(None)  # "the coffee machine in the cafeteria" mentions two places
             elif w not in STOPWORDS:
                 raw.append(lemma(w))
@@ -248,6 +249,14 @@ class RoIMatcher:
                     continue
             out.append(t)
         return out
+
+    def _locative_as_noun(self, toks: Sequence[str], i: int) -> bool:
+        """"the exit", "the nearest exit", "emergency exit": a locative verb the world knows as a place, used as a noun."""
+        w = toks[i]
+        if w not in _LOCATIVES or not self._known(lemma(w)) or i == 0:
+            return False
+        before = toks[i - 1]
+        return before in _DETERMINERS or before in _PLACE_MODIFIERS or lemma(before) in self.vocabulary
 
     def _embedding_bonus(self, prompt: str) -> dict[str, float]:
         if self._embed is None:
@@ -286,7 +295,40 @@ class RoIMatcher:
                 if e.name not in chosen or chosen[e.name][0] < score:
                     chosen[e.name] = (score, e, first if e.name not in chosen else min(first, chosen[e.name][2]), matched)
         ordered = sorted(chosen.values(), key=lambda v: (v[2], -v[0], v[1].name))
+        ordered = self._one_exit_per_mention(ordered)
         return [RoIMatch(e.kind, e.name, e.zone, round(score, 4), matched, "prompt") for score, e, _, matched in ordered]
+
+    def _one_exit_per_mention(self, ordered: list) -> list:
+        """"the exit" matches every exit door equally; a person means one: the exit nearest the other places
+        the prompt names (the world's first exit when it names none)."""
+        mentions: dict[int, list] = {}
+        for item in ordered:
+            mentions.setdefault(item[2], []).append(item)
+        anchors = [self._position(item[1]) for item in ordered
+                   if not (item[1].kind == "door" and getattr(item[1].obj, "exit", False))]
+        drop: set[str] = set()
+        for items in mentions.values():
+            exits = [item for item in items if item[1].kind == "door" and getattr(item[1].obj, "exit", False)]
+            if len(exits) < 2 or len(exits) != len(items) or len({round(item[0], 6) for item in exits}) > 1:
+                continue
+            if anchors:
+                cx = sum(p[0] for p in anchors) / len(anchors)
+                cy = sum(p[1] for p in anchors) / len(anchors)
+                keep = min(exits, key=lambda item: (math.dist(self._position(item[1]), (cx, cy)), item[1].name))
+            else:
+                order = [d.name for d in self.world.exits()]
+                keep = min(exits, key=lambda item: order.index(item[1].name) if item[1].name in order else len(order))
+            drop |= {item[1].name for item in exits if item is not keep}
+        return [item for item in ordered if item[1].name not in drop]
+
+    @staticmethod
+    def _position(entry: _Entry) -> tuple[float, float]:
+        obj = entry.obj
+        if entry.kind == "zone":
+            return tuple(obj.centroid)
+        if entry.kind == "door":
+            return tuple(obj.position)
+        return tuple(obj.interaction_point)
 
     def unknown_places(self, prompt: str) -> list[str]:
         """Place phrases ("the swimming pool") that match nothing in the world."""
