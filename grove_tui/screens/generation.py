@@ -141,7 +141,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         stream.border_title = "Model output"
         yield stream
         yield Static("", id="gen-error", markup=False)
-        yield Footer()
+        yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
         table = self.query_one("#stages", DataTable)

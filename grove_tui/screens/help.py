@@ -58,7 +58,8 @@ class HelpScreen(ModalScreen[None]):
         keys = keys_table(self._screen)
         if keys:
             parts.append("## Keys\n\n" + keys)
-        parts.append("Remap a key in `config.yaml` under `keymap:` with its binding id. **Escape** closes help.")
+        parts.append("**ctrl+p** opens the command palette (every action by name). Remap a key in `config.yaml` "
+                     "under `keymap:` with its binding id. **Escape** closes help.")
         with Vertical(id="help-dialog"):
             yield Markdown("\n\n".join(parts), id="help-text")
 

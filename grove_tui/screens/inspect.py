@@ -141,7 +141,7 @@ and re-plans (same trees, no model call), **e** exports the bundle.
             world_map.border_title = f"{scenario.world} · {scenario.preset}"
             world_map.border_subtitle = self.generated.prompt[:70]
             yield world_map
-        yield Footer()
+        yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
         self.query_one("#inspect-map", MapView).set_world(self.generated.world)

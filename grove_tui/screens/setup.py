@@ -59,7 +59,7 @@ which GGUF file serves each role and whether it is loaded yet.
         with Horizontal(id="prompt-row"):
             yield PromptInput(self.grove.history, placeholder="Describe the crowd… (Enter to generate)", id="prompt")
             yield Button("Generate", id="generate", variant="primary")
-        yield Footer()
+        yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
         self.query_one("#prompt", PromptInput).focus()

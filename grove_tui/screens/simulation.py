@@ -92,14 +92,14 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
 """
 
     BINDINGS = [
-        Binding("space", "toggle_play", "Play/Pause", id="sim.play", tooltip="Start or pause the simulation"),
-        Binding("n", "step", "Step", id="sim.step", tooltip="Advance one simulation step"),
+        Binding("space", "toggle_play", "Play", id="sim.play", tooltip="Start or pause the simulation"),
+        Binding("n", "step", "Step", show=False, id="sim.step", tooltip="Advance one simulation step"),
         Binding("left_square_bracket", "speed(-1)", "Slower", id="sim.slower", tooltip="Halve the speed"),
         Binding("right_square_bracket", "speed(1)", "Faster", id="sim.faster", tooltip="Double the speed"),
-        Binding("f", "max_speed", "Max", id="sim.max_speed", tooltip="Run as fast as possible"),
-        Binding("a", "select(1)", "Next agent", id="sim.next_agent", tooltip="Select the next agent"),
+        Binding("f", "max_speed", "Max speed", show=False, id="sim.max_speed", tooltip="Run as fast as possible"),
+        Binding("a", "select(1)", "Agent", id="sim.next_agent", tooltip="Select the next agent"),
         Binding("A", "select(-1)", "Prev agent", show=False, id="sim.prev_agent", tooltip="Select the previous agent"),
-        Binding("r", "follow_path", "Robot path", id="sim.robot_path", tooltip="Robot follows its planned path"),
+        Binding("r", "follow_path", "Robot", id="sim.robot_path", tooltip="Robot follows its planned path"),
         Binding("c", "colour_mode", "Colours", show=False, id="sim.colours", tooltip="Colour by group or behavior"),
         Binding("e", "export", "Export", id="sim.export", tooltip="Export bundle, trajectories and metrics"),
         Binding("escape", "back", "Back", id="sim.back", tooltip="Back to inspect"),
@@ -139,7 +139,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
                 tree = BTTree("agent", id="sim-tree")
                 tree.border_title = "Agent tree (a: select)"
                 yield tree
-        yield Footer()
+        yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
         settings = self.grove.settings.simulation

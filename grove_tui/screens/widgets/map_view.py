@@ -55,9 +55,9 @@ path, and the selection highlighted with `◆`.
 """
 
     BINDINGS = [
-        Binding("plus,equals_sign", "zoom(1)", "Zoom in", id="map.zoom_in", tooltip="Zoom in on the map"),
-        Binding("minus", "zoom(-1)", "Zoom out", id="map.zoom_out", tooltip="Zoom out"),
-        Binding("0", "fit", "Fit", id="map.fit", tooltip="Fit the whole world in view"),
+        Binding("plus,equals_sign", "zoom(1)", "Zoom in", show=False, id="map.zoom_in", tooltip="Zoom in on the map"),
+        Binding("minus", "zoom(-1)", "Zoom out", show=False, id="map.zoom_out", tooltip="Zoom out"),
+        Binding("0", "fit", "Fit", show=False, id="map.fit", tooltip="Fit the whole world in view"),
         Binding("h", "scroll_left", "Pan left", show=False, id="map.pan_left"),
         Binding("l", "scroll_right", "Pan right", show=False, id="map.pan_right"),
         Binding("k", "scroll_up", "Pan up", show=False, id="map.pan_up"),
