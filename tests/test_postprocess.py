@@ -9,7 +9,7 @@ from lxml import etree
 
 from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
 from grove_tui.engine.grid import build_grid
-from grove_tui.engine.postprocess import SPAWN_SPACING, postprocess
+from grove_tui.engine.postprocess import GOAL_SPACING, SPAWN_SPACING, postprocess
 from grove_tui.engine.presets import GenerationError, load_preset
 from grove_tui.engine.quantities import extract_quantities
 from grove_tui.engine.rois import select_rois
@@ -233,6 +233,20 @@ def test_a_group_sent_to_the_exit_walks_to_one_exit_and_starts_away_from_it(clin
     assert clinic.find(family.tree.ports["target"]).exit
     assert family.spawn != clinic.find(family.tree.ports["target"]).zone
     assert not any(n.node == "Queue" for n in family.tree.walk())
+
+
+def test_people_sent_to_one_door_or_thing_get_goal_points_of_their_own(clinic, grid):
+    """Four people on one goal point jostle for it for the rest of the run; they stand side by side instead."""
+    for target in ("main_entrance", "vending_machine"):
+        out = run(clinic, grid, "normal", f"four visitors walk to the {target.replace('_', ' ')}",
+                  [DraftGroup("visitors", 4, "pharmacy", DraftNode("GoTo", {"target": target}))])
+        goals = [a.targets[-1][1] for a in out.agents]
+        assert len(goals) == 4
+        assert min(math.dist(a, b) for i, a in enumerate(goals) for b in goals[i + 1:]) >= GOAL_SPACING - 1e-9
+        obj = clinic.find(target)
+        anchor = obj.interaction_point if hasattr(obj, "interaction_point") else obj.position
+        assert max(math.dist(g, anchor) for g in goals) < 3.0  # still at the door / the machine
+        assert all(grid.is_free(*g) for g in goals)
 
 
 def test_words_that_state_no_behavior_leave_the_model_tree_alone(clinic, grid):

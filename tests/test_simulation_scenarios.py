@@ -124,6 +124,43 @@ def test_queue_of_eight_forms_in_order_with_the_spacing_and_advances(hall):
     assert sim.tree_result[served_first] == "done"
 
 
+def test_served_people_step_aside_to_spots_of_their_own(hall):
+    """Served people used to step to one spot beside the counter and jostle there for the rest of the run."""
+    starts = [(9 + 2.5 * (i % 3), 2.5 + 5.5 * (i // 3)) for i in range(6)]
+    agents = [agent(i + 1, starts[i], radius=0.25) for i in range(6)]
+    body = '<Queue service_point="counter" spacing="0.6" service_time="2"/>'
+    sim = simulate(hall, agents, [body] * 6)
+    assert run_until(sim, lambda: sim.frame().counters.served == 6, 120.0)
+    sim.run(10.0)
+    spots = np.array(sim.context.queues.queues["counter"].aside)
+    assert len(spots) == 6
+    gaps = np.hypot(*(spots[:, None] - spots[None]).transpose(2, 0, 1))[np.triu_indices(6, 1)]
+    assert gaps.min() >= 0.8 - 1e-9
+    pos = sim.crowd.pos[:6]
+    assert np.all(np.hypot(*(pos[:, None] - spots[None]).transpose(2, 0, 1)).min(axis=1) < 0.4)  # they got there
+    apart = np.hypot(*(pos[:, None] - pos[None]).transpose(2, 0, 1))[np.triu_indices(6, 1)]
+    assert apart.min() > 0.6  # nobody stands in anybody's way
+    line = np.array([2.2, 6.0])
+    assert np.all(np.abs(spots[:, 1] - line[1]) >= 1.2 - 1e-9)  # beside the line, not in it
+
+
+def test_a_contact_counts_once_until_the_two_move_apart(hall):
+    sim = simulate(hall, [agent(1, (5, 6)), agent(2, (7, 6))], ['<Wait duration="100"/>'] * 2)
+
+    def place(gap: float) -> int:
+        sim.crowd.pos[0] = (5.0, 6.0)
+        sim.crowd.pos[1] = (5.0 + 0.7 + gap, 6.0)
+        sim.tick_trees()
+        return sim.frame().counters.collisions
+
+    assert place(0.5) == 0
+    assert place(-0.05) == 1  # bodies overlap: one collision
+    assert place(0.03) == 1  # brushing apart and back in a dense spot is the same contact
+    assert place(-0.02) == 1
+    assert place(0.3) == 1  # now they are apart
+    assert place(-0.05) == 2  # and this is a new contact
+
+
 # ---- conversation --------------------------------------------------------------------------------
 
 def test_conversation_of_four_forms_a_circle_facing_the_centre(hall):

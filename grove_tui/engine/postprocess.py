@@ -574,17 +574,27 @@ class TargetResolver:
             base = self.snap(obj.interaction_point, name)
             if self.preset.goal_sampling == "sequential" and slot is not None and node != "Queue":
                 return self._queue_slot(obj, base, slot)
-            return base
+            if node == "Queue":
+                return base
+            return self._beside(name, obj.zone, base, slot)
         if hasattr(obj, "leads_to"):  # door
             if node == "FollowVelocityField":
                 return (round(obj.position[0], 3), round(obj.position[1], 3))
-            return self.snap(obj.inward_point(0.6), name)
+            return self._beside(name, obj.zone, self.snap(obj.inward_point(0.6), name), slot)
         if node == "Queue":
             # A queue needs a service point; a zone named as one is served at its counter-like entity.
             service = _service_entity(obj)
             if service is not None:
                 return self.resolve(service.name, node=node, slot=slot)
         (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}")
+        return p
+
+    def _beside(self, name: str, zone: str, base: Point, slot: int | None) -> Point:
+        """The k-th person sent to one door or thing stands next to the ones before, not on top of them:
+        people sharing one goal point would jostle for it for the rest of the run."""
+        if not slot:
+            return base
+        (p,) = self.space.sample(zone, 1, self.rng, GOAL_SPACING, key=f"beside:{name}", cluster=base, avoid=(base,))
         return p
 
     def _queue_slot(self, entity: Any, base: Point, k: int) -> Point:

@@ -47,6 +47,9 @@ REACTION_DEFAULTS = {
 }
 HUNAV_LOOPING_NODES = frozenset({"RegularNav", "UpdateGoal"})
 ROBOT_CONTACT_GAP = 0.02  # HuNavSim evaluator: a gap below this is a collision
+# A contact ends only once the two have moved this far apart: bodies brushing against each other in a
+# dense spot flicker in and out of touch every step, and each flicker is not a new collision.
+CONTACT_RELEASE = 0.1
 
 
 @dataclass(frozen=True)
@@ -365,22 +368,24 @@ class Simulation:
                 c.closest_robot_approach = min(c.closest_robot_approach, max(0.0, float(gap.min())))
             touching = set(np.flatnonzero(gap < ROBOT_CONTACT_GAP).tolist())
             c.robot_collisions += len(touching - self._robot_contacts)
-            self._robot_contacts = touching
+            still = set(np.flatnonzero(gap < ROBOT_CONTACT_GAP + CONTACT_RELEASE).tolist())
+            self._robot_contacts = touching | (self._robot_contacts & still)
         rows = np.flatnonzero(active)
         if len(rows) > 1:
             from scipy.spatial import cKDTree
 
             p = pos[rows]
-            pairs = cKDTree(p).query_pairs(2.0 * float(radius[rows].max()), output_type="ndarray")
+            reach = 2.0 * float(radius[rows].max()) + CONTACT_RELEASE
+            pairs = cKDTree(p).query_pairs(reach, output_type="ndarray")
             if len(pairs):
                 i, j = rows[pairs[:, 0]], rows[pairs[:, 1]]
-                d = np.hypot(pos[i, 0] - pos[j, 0], pos[i, 1] - pos[j, 1])
-                hit = d < radius[i] + radius[j]
-                now = set(zip(i[hit].tolist(), j[hit].tolist()))
+                gap = np.hypot(pos[i, 0] - pos[j, 0], pos[i, 1] - pos[j, 1]) - radius[i] - radius[j]
+                now = set(zip(i[gap < 0.0].tolist(), j[gap < 0.0].tolist()))
+                near = set(zip(i[gap < CONTACT_RELEASE].tolist(), j[gap < CONTACT_RELEASE].tolist()))
             else:
-                now = set()
+                now, near = set(), set()
             c.collisions += len(now - self._agent_contacts)
-            self._agent_contacts = now
+            self._agent_contacts = now | (self._agent_contacts & near)
 
     def _record(self) -> None:
         self.recorder.record(self.crowd)

@@ -36,6 +36,7 @@ class ServiceQueue:
         self.away: dict[int, float] = {}  # interrupted members -> when they stepped out
         self.head_since: float | None = None  # when the current head started being served
         self.served = 0
+        self.aside: list[Point] = []  # where served people went to stand, so the next one stands elsewhere
         self._sim = sim
         self._slots: list[Point] = []
 

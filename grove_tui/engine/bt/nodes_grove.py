@@ -18,6 +18,7 @@ from grove_tui.engine.sfm import MODE_FACE, MODE_FIELD, MODE_GOALS, MODE_STOP
 EXIT_RADIUS = 0.6  # metres from the exit point at which an agent has left the building
 HUNAV_GOAL_TOLERANCE = 0.1  # IsGoalReached: goal radius + 0.1
 STEP_ASIDE = 1.2  # metres a served person steps sideways out of the line
+ASIDE_SPACING = 0.8  # metres between the spots served people step to
 GROUP_ID_BASE = 100000  # SFM group ids derived from agent ids, far from the scenario's own
 
 
@@ -196,13 +197,26 @@ class Queue(AgentStatefulAction):
 
 
 def _aside(sim, queue: ServiceQueue):
+    """A free spot beside the line, away from where earlier served people stand: everyone stepping
+    to one spot would pile up next to the head of the line for the rest of the run."""
     sx, sy = queue.service_point
     dx, dy = queue.direction
-    for sign in (1.0, -1.0):
-        x, y = sx - sign * dy * STEP_ASIDE, sy + sign * dx * STEP_ASIDE
-        if sim.is_free(x, y):
-            return (x, y)
-    return sim.nearest_free(sx - dy * STEP_ASIDE, sy + dx * STEP_ASIDE)
+    first = None
+    for ring in range(6):
+        out = STEP_ASIDE + ASIDE_SPACING * ring
+        for back in (0.0, ASIDE_SPACING):  # beside the head, or half a step back along the line
+            for sign in (1.0, -1.0):
+                x = sx - sign * dy * out + dx * back
+                y = sy + sign * dx * out + dy * back
+                if not sim.is_free(x, y):
+                    continue
+                first = first or (x, y)
+                if all(math.dist((x, y), q) >= ASIDE_SPACING for q in queue.aside):
+                    queue.aside.append((x, y))
+                    return (x, y)
+    spot = first or sim.nearest_free(sx - dy * STEP_ASIDE, sy + dx * STEP_ASIDE)
+    queue.aside.append(spot)
+    return spot
 
 
 class FollowVelocityField(AgentStatefulAction):
