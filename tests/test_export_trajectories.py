@@ -49,6 +49,21 @@ def test_grove_metrics_writes_metrics_json(simulated):
     assert 0.0 <= report["robot"]["intimate_space_intrusions"] <= 100.0
     on_disk = json.loads((simulated / "metrics.json").read_text())
     assert on_disk["crowd"]["agents"] == 5
+    robot = on_disk["robot"]
+    forces = ("social_force_on_agents", "social_force_on_robot", "social_work", "obstacle_force_on_robot",
+              "obstacle_force_on_agents")
+    bands = ("group_intimate_space_intrusions", "group_personal_space_intrusions", "group_social_space_intrusions")
+    assert {k: report["robot"][k] for k in forces + bands} == {k: robot[k] for k in forces + bands}
+    # The robot drives through the lobby among the five people, along the hospital's walls.
+    assert robot["social_force_on_robot"] > 0 and robot["social_force_on_agents"] > 0
+    assert robot["obstacle_force_on_robot"] > 0 and robot["obstacle_force_on_agents"] > 0
+    # Social work adds |sum of the people's pushes on the robot| (at most the sum of their moduli)
+    # to the obstacle force on it and the pushes it causes.
+    caused = robot["obstacle_force_on_robot"] + robot["social_force_on_agents"]
+    assert caused <= robot["social_work"] <= caused + robot["social_force_on_robot"] + 1e-9
+    # Agents 4 and 5 are the scenario's group 1; the robot's route passes where they start.
+    shares = [robot[k] for k in bands]
+    assert all(0.0 <= share <= 100.0 for share in shares) and 0.0 < sum(shares) <= 100.0
 
 
 def test_export_before_simulating_says_what_to_do(tmp_path):

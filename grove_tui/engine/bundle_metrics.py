@@ -33,6 +33,9 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
         final_goals={a.id: a.goals[-1] for a in scenario.agents if a.goals},
         events=events,
         walkable_area=float(world.walkable().area),
+        # The scenario's groups, not the recorded column: behaviours change the SFM group while they
+        # run (a conversation drops it, JoinGroup renumbers it); HuNavSim's group_id is the configured one.
+        groups={a.id: a.group for a in scenario.agents},
     )
     path = bundle / METRICS
     if write:

@@ -1,7 +1,8 @@
 """Metrics of a simulated scenario: HuNavSim evaluator's robot metrics and crowd plausibility metrics.
 
 Inputs are the recorded trajectories (columns frame, t, id, x, y, vx, vy, yaw, group; the robot is id 0),
-optionally the world's wall segments, the agents' final goals and the simulation's event log.
+optionally the world's wall segments, the agents' groups, their final goals and the simulation's event log.
+The evaluator's force-based metrics (social force, obstacle force, social work) live in force_metrics.py.
 Distances between bodies are centre distance minus both radii, clamped at 0 (as hunav_evaluator does).
 """
 
@@ -16,11 +17,14 @@ from pathlib import Path
 import numpy as np
 
 from grove_tui.engine.errors import GroveError
+from grove_tui.engine.force_metrics import force_metrics, force_series
 
 INTIMATE = 0.45
 PERSONAL = 1.2
 SOCIAL = 3.6
 COLLISION_GAP = 0.02
+# HuNavSim places a group's interaction centre at the mean of points this far ahead of its members.
+GROUP_CENTRE_AHEAD = 1.5
 ROBOT_ID = 0
 
 
@@ -36,7 +40,8 @@ class Trajectories:
     ids: np.ndarray  # (N,) person ids, robot excluded
     people: np.ndarray  # (F, N, 2)
     people_vel: np.ndarray  # (F, N, 2)
-    groups: np.ndarray  # (N,)
+    people_yaw: np.ndarray  # (F, N) NaN where absent
+    groups: np.ndarray  # (N,) as recorded in each agent's last row
     robot: np.ndarray | None  # (F, 3) x, y, yaw
     robot_vel: np.ndarray | None  # (F, 2)
 
@@ -59,6 +64,7 @@ class Trajectories:
         column = {int(i): k for k, i in enumerate(ids)}
         people = np.full((frames.size, ids.size, 2), np.nan)
         people_vel = np.full((frames.size, ids.size, 2), np.nan)
+        people_yaw = np.full((frames.size, ids.size), np.nan)
         groups = np.full(ids.size, -1, dtype=np.int64)
         robot = None
         robot_vel = None
@@ -74,8 +80,10 @@ class Trajectories:
         cols = np.array([column[int(i)] for i in p[:, 2]], dtype=np.int64)
         people[fi, cols] = p[:, 3:5]
         people_vel[fi, cols] = p[:, 5:7]
+        people_yaw[fi, cols] = p[:, 7]
         groups[cols] = p[:, 8].astype(np.int64)
-        return cls(t=t, ids=ids, people=people, people_vel=people_vel, groups=groups, robot=robot, robot_vel=robot_vel)
+        return cls(t=t, ids=ids, people=people, people_vel=people_vel, people_yaw=people_yaw, groups=groups,
+                   robot=robot, robot_vel=robot_vel)
 
     @classmethod
     def from_csv(cls, path: str | Path) -> Trajectories:
@@ -133,8 +141,15 @@ def robot_metrics(
     person_radius: float | np.ndarray = 0.35,
     goal: Sequence[float] | None = None,
     goal_radius: float = 0.3,
+    walls: np.ndarray | None = None,
+    groups: Mapping[int, int] | None = None,
 ) -> dict[str, float]:
-    """HuNavSim evaluator metrics for the robot (hunav_evaluator/hunav_metrics.py 2.0)."""
+    """HuNavSim evaluator metrics for the robot (hunav_evaluator/hunav_metrics.py 2.0).
+
+    `walls` (M, 4) are the obstacles of the force metrics (see force_metrics.py); without them the
+    obstacle forces and social work are left out. `groups` maps agent id -> group id for the group
+    space intrusions (see `group_space_intrusions`).
+    """
     if traj.robot is None:
         return {}
     valid = np.isfinite(traj.robot[:, 0])
@@ -191,10 +206,7 @@ def robot_metrics(
         out["minimum_distance_to_people"] = float(closest[seen].min())
         finite_gaps = gap[np.isfinite(gap)]
         out["maximum_distance_to_people"] = float(finite_gaps.max())
-        n = float(t.size)
-        out["intimate_space_intrusions"] = float(100.0 * (closest < INTIMATE).sum() / n)
-        out["personal_space_intrusions"] = float(100.0 * ((closest >= INTIMATE) & (closest < PERSONAL)).sum() / n)
-        out["social_space_intrusions"] = float(100.0 * ((closest >= PERSONAL) & (closest < SOCIAL)).sum() / n)
+        out.update(_space_intrusions(closest, prefix=""))
         nearest = np.argmin(gap, axis=1)
         nearest_vel = people_vel[np.arange(t.size), nearest]
         out["avg_closest_pedestrian_velocity"] = float(np.nanmean(np.hypot(nearest_vel[:, 0], nearest_vel[:, 1])))
@@ -203,7 +215,72 @@ def robot_metrics(
         out["person_on_robot_collision"] = float(person_hits)
     ped_speed = np.hypot(people_vel[:, :, 0], people_vel[:, :, 1])
     out["avg_pedestrian_velocity"] = float(np.nanmean(ped_speed)) if np.isfinite(ped_speed).any() else 0.0
+    out.update(group_space_intrusions(traj, robot_radius=robot_radius, groups=groups))
+    out.update(force_metrics(force_series(pose, vel, people, people_vel, traj.ids, robot_radius=robot_radius,
+                                          person_radius=radii, walls=walls)))
     return out
+
+
+def _space_intrusions(closest: np.ndarray, prefix: str) -> dict[str, float]:
+    """Share of frames (%) whose closest distance falls in the intimate, personal and social bands.
+
+    Every frame counts in the denominator, including frames where nothing was near (distance inf).
+    """
+    n = float(closest.size)
+    return {
+        f"{prefix}intimate_space_intrusions": float(100.0 * (closest < INTIMATE).sum() / n),
+        f"{prefix}personal_space_intrusions": float(100.0 * ((closest >= INTIMATE) & (closest < PERSONAL)).sum() / n),
+        f"{prefix}social_space_intrusions": float(100.0 * ((closest >= PERSONAL) & (closest < SOCIAL)).sum() / n),
+    }
+
+
+def group_space_intrusions(
+    traj: Trajectories,
+    *,
+    robot_radius: float = 0.3,
+    groups: Mapping[int, int] | None = None,
+) -> dict[str, float]:
+    """HuNavSim's group_{intimate,personal,social}_space_intrusions: % of the robot's frames whose
+    distance to the nearest group's interaction centre falls in the 0.45 / 1.2 / 3.6 m bands.
+
+    A group's interaction centre is the mean of the points GROUP_CENTRE_AHEAD (1.5 m) ahead of each
+    member present in the frame, along the member's recorded yaw. The distance is from the robot's
+    centre to that point minus the robot's radius, clamped at 0 like the body distances; no person
+    radius is subtracted, the centre being a point in front of the group rather than a body.
+
+    `groups` maps agent id -> group id (-1 for none); bundles pass the scenario's groups, which
+    like HuNavSim's configured group_id do not change while behaviours run. Without it, the group
+    recorded in each agent's last trajectory row is used.
+
+    With no group, or no member of one ever present while the robot was, the keys are left out,
+    as the person intrusions are when nobody is seen (the evaluator reports 0 % without groups).
+    """
+    if traj.robot is None:
+        return {}
+    valid = np.isfinite(traj.robot[:, 0])
+    if groups is None:
+        membership = traj.groups
+    else:
+        membership = np.array([groups.get(int(agent_id), -1) for agent_id in traj.ids], dtype=np.int64)
+    group_ids = np.unique(membership[membership >= 0])
+    if not valid.any() or group_ids.size == 0:
+        return {}
+    robot = traj.robot[valid, :2]
+    people = traj.people[valid]
+    yaw = traj.people_yaw[valid]
+    ahead = people + GROUP_CENTRE_AHEAD * np.stack([np.cos(yaw), np.sin(yaw)], axis=-1)
+    nearest = np.full(robot.shape[0], np.inf)
+    for group in group_ids:
+        points = ahead[:, membership == group]
+        present = np.isfinite(points[:, :, 0]) & np.isfinite(points[:, :, 1])
+        count = present.sum(axis=1)
+        summed = np.where(present[:, :, None], points, 0.0).sum(axis=1)
+        centre = summed / np.maximum(count, 1)[:, None]
+        distance = np.clip(np.hypot(*(robot - centre).T) - robot_radius, 0.0, None)
+        nearest = np.minimum(nearest, np.where(count > 0, distance, np.inf))
+    if not np.isfinite(nearest).any():
+        return {}
+    return _space_intrusions(nearest, prefix="group_")
 
 
 def _collisions(pose: np.ndarray, vel: np.ndarray, people: np.ndarray, people_vel: np.ndarray,
@@ -378,9 +455,11 @@ def compute_metrics(
     final_goals: Mapping[int, Sequence[float]] | None = None,
     events: Sequence[SimEvent] = (),
     walkable_area: float | None = None,
+    groups: Mapping[int, int] | None = None,
 ) -> MetricsReport:
     return MetricsReport(
-        robot=robot_metrics(traj, robot_radius=robot_radius, person_radius=person_radius, goal=robot_goal),
+        robot=robot_metrics(traj, robot_radius=robot_radius, person_radius=person_radius, goal=robot_goal,
+                            walls=walls, groups=groups),
         crowd=crowd_metrics(traj, walls=walls, final_goals=final_goals, events=events,
                             walkable_area=walkable_area, radius=person_radius),
     )
