@@ -249,6 +249,22 @@ def test_people_sent_to_one_door_or_thing_get_goal_points_of_their_own(clinic, g
         assert all(grid.is_free(*g) for g in goals)
 
 
+def test_a_big_walking_group_walks_as_small_social_groups(clinic, grid):
+    together = DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), DraftNode("GoTo", {"target": "cafeteria"})))
+    out = run(clinic, grid, "normal", "twelve visitors walk together from the lobby to the cafeteria",
+              [DraftGroup("visitors", 12, "lobby", together)])
+    parties = {}
+    for a in out.agents:
+        parties.setdefault(a.sfm_group, []).append(a)
+    assert sorted(len(p) for p in parties.values()) == [4, 4, 4] and -1 not in parties
+    for members in parties.values():  # each party starts together
+        assert max(math.dist(a.start, b.start) for a in members for b in members) < 3.0
+    assert any("12 people walk together as 3 groups of 4" in n for n in out.notes)
+    family = run(clinic, grid, "normal", "a family walks from the lobby to the cafeteria",
+                 [DraftGroup("family", 4, "lobby", together)])
+    assert len({a.sfm_group for a in family.agents}) == 1  # a family stays one group
+
+
 def test_words_that_state_no_behavior_leave_the_model_tree_alone(clinic, grid):
     tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "cafeteria"}), DraftNode("Converse", {"target": "cafeteria"})))
     out = run(clinic, grid, "normal", "three visitors in the cafeteria", [DraftGroup("visitors", 3, "cafeteria", tree)])

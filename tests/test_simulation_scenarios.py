@@ -282,6 +282,23 @@ def test_follow_velocity_field_agents_leave_through_the_exit(hall):
     assert np.all(np.hypot(*(sim.crowd.pos[:9] - np.array(exit_point)).T) <= EXIT_RADIUS + 0.05)
 
 
+def test_an_agent_told_to_leave_twice_is_evacuated_once(hall):
+    """A small model's tree may repeat FollowVelocityField; the counter showed 3 evacuations per person."""
+    from grove_tui.engine.velocity_field import build_velocity_field
+
+    world, grid, planner = hall
+    exit_point = world.roi("exit_door").point
+    starts = [(14.0, 4.0), (14.0, 6.0), (14.0, 8.0)]
+    field = build_velocity_field(grid, planner.plan(starts[1], exit_point), exit_point, planner=planner)
+    leave = '<FollowVelocityField exit="exit_door" field="group_0"/>'
+    sim = simulate(hall, [agent(i + 1, p, group=0) for i, p in enumerate(starts)], [f"<Sequence>{leave * 3}</Sequence>"] * 3,
+                   fields={"group_0": field})
+    assert run_until(sim, lambda: all(sim.finished), 40.0)
+    assert sim.frame().counters.evacuated == 3
+    assert [e.kind for e in sim.events].count("evacuated") == 3
+    assert sim.tree_result == ["done"] * 3
+
+
 # ---- navigation ---------------------------------------------------------------------------------
 
 def test_goto_walks_the_injected_waypoints_then_the_target(hall):

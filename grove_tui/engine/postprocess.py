@@ -34,6 +34,7 @@ QUEUE_SPACING = 0.6  # the Queue node's default slot spacing
 # scenario that starts at that density cannot move; beyond 1.5/m^2 we tell the user.
 MAX_DENSITY = 1.5
 GROUPING_NODES = frozenset({"JoinGroup", "Converse"})
+MAX_WALKING_GROUP = 5  # people who walk as one social group (observed groups are mostly 2-4)
 
 
 @dataclass
@@ -66,6 +67,7 @@ class GroupPlan:
     member_ids: list[int] = field(default_factory=list)
     sfm_group: int = -1
     field_id: str | None = None
+    parties: dict[int, list[int]] = field(default_factory=dict)  # social-group id -> its members
 
 
 @dataclass
@@ -676,7 +678,8 @@ class TreeWriter:
         spec = NODES[node.node]
         attrs: list[tuple[str, str]] = []
         point = targets.get(id(node))
-        others = [m for m in group.member_ids if m != agent.id]
+        party = group.parties.get(agent.sfm_group, group.member_ids)
+        others = [m for m in party if m != agent.id]
         for port in spec.ports:
             if port.direction != "in":
                 continue
@@ -709,10 +712,11 @@ class TreeWriter:
         if kind == "agent":
             # The other agent of a pair: the leader for members, the next member for the leader.
             if others:
-                return str(group.member_ids[0] if group.member_ids[0] != agent.id else others[0])
+                leader = group.parties.get(agent.sfm_group, group.member_ids)[0]
+                return str(leader if leader != agent.id else others[0])
             return None
         if kind == "agents":
-            ids = others if name == "non_main_agent_ids" else group.member_ids
+            ids = others if name == "non_main_agent_ids" else group.parties.get(agent.sfm_group, group.member_ids)
             return ",".join(str(i) for i in ids)
         if name in ("x", "target_x") and point is not None:
             return _fmt(point[0])
@@ -721,7 +725,7 @@ class TreeWriter:
         if name == "goal_id" and point is not None:
             return str(self.goal_id(point))
         if name == "group_id":
-            return str(max(group.sfm_group, 0))
+            return str(max(agent.sfm_group, 0))
         if name == "field":
             return agent.field_id
         if kind == "point_list":
@@ -758,18 +762,33 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         g.member_ids = list(range(next_id, next_id + g.count))
         next_id += g.count
         node_types = {n.node for n in g.tree.walk()}
+        # Who walks as one social group: the whole group for a conversation, and walking groups of at
+        # most MAX_WALKING_GROUP ("25 staff walk together" are colleagues in small groups, not one
+        # 25-person formation held together by group forces).
+        parties = [g.count]
         if node_types & GROUPING_NODES and g.count > 1:
             g.sfm_group = sfm_groups
-            sfm_groups += 1
+            if "Converse" not in node_types and g.count > MAX_WALKING_GROUP:
+                n = math.ceil(g.count / MAX_WALKING_GROUP)
+                parties = [g.count // n + (1 if i < g.count % n else 0) for i in range(n)]
+                sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
+                notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
+            sfm_groups += len(parties)
         if preset.velocity == "field":
             g.field_id = f"group_{g.index + 1}"
-        cluster = None
-        if g.sfm_group >= 0:
-            (cluster,) = space.sample(g.spawn, 1, rng, 0.1, key=f"anchor:{g.spawn}:{g.index}")
-        starts = space.sample(g.spawn, g.count, rng, SPAWN_SPACING, key="spawn", cluster=cluster)
-        for agent_id, start in zip(g.member_ids, starts):
-            agents.append(AgentPlan(agent_id, g.index, g.sfm_group, g.label, start, g.spawn, [], g.spawn, g.tree,
-                                    max_vel=preset.max_vel, field_id=g.field_id, exit=exit_name))
+        first = 0
+        for k, size in enumerate(parties):
+            party = g.sfm_group + k if g.sfm_group >= 0 else -1
+            cluster = None
+            if party >= 0:
+                (cluster,) = space.sample(g.spawn, 1, rng, 0.1, key=f"anchor:{g.spawn}:{g.index}:{k}")
+            starts = space.sample(g.spawn, size, rng, SPAWN_SPACING, key="spawn", cluster=cluster)
+            if party >= 0:
+                g.parties[party] = g.member_ids[first:first + size]
+            for agent_id, start in zip(g.member_ids[first:first + size], starts):
+                agents.append(AgentPlan(agent_id, g.index, party, g.label, start, g.spawn, [], g.spawn, g.tree,
+                                        max_vel=preset.max_vel, field_id=g.field_id, exit=exit_name))
+            first += size
 
     writer = TreeWriter(resolver)
     by_index = {g.index: g for g in groups}

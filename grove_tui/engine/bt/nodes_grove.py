@@ -233,6 +233,8 @@ class FollowVelocityField(AgentStatefulAction):
 
     def on_start(self) -> int:
         sim, row = self.sim, self.row
+        if not sim.crowd.active[row]:
+            return SUCCESS  # already out of the building (a tree may say "leave" twice): counted once
         field_id = self.get_input("field")
         if field_id is None and len(sim.fields) == 1:
             field_id = next(iter(sim.fields))
