@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time
 from dataclasses import replace
 
 import numpy as np
@@ -187,11 +186,8 @@ def test_save_and_load_round_trip(tmp_path):
         OccupancyGrid.load(tmp_path / "junk.npz")
 
 
-def test_hospital_grid_is_fast_at_five_centimetres():
-    world = load_world("hospital")
-    world.walls()
-    started = time.perf_counter()
-    grid = grid_module._rasterize(world, 0.05, 0.35)
-    elapsed = time.perf_counter() - started
+def test_hospital_rasterizes_at_five_centimetres():
+    # how fast: bench/worlds.py
+    grid = grid_module._rasterize(load_world("hospital"), 0.05, 0.35)
     assert grid.occupied.shape[0] * grid.occupied.shape[1] > 1_000_000
-    assert elapsed < 2.0  # about 0.25 s on one idle core; generous for a shared CI machine
+    assert 0.1 < grid.occupied.mean() < 0.5

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import time
 from pathlib import Path
 
 import numpy as np
@@ -128,18 +127,6 @@ def test_pharmacy_queue_of_ten_fits_in_front_of_the_counter():
         assert walkable.contains(spot.buffer(0.25)), k
         assert pharmacy.contains(spot), k
         assert grid.is_free(spot.x, spot.y), k
-
-
-def test_shipped_world_loads_fast():
-    from grove_tui.engine import world as world_module
-
-    text = (Path(__file__).parents[1] / "worlds" / "hospital.yaml").read_text()
-    world_module.parse_world(text, "warm-up")
-    started = time.perf_counter()
-    world, problems = world_module.parse_world(text, "hospital.yaml")
-    elapsed = time.perf_counter() - started
-    assert world is not None and problems == []
-    assert elapsed < 0.3
 
 
 # --- model and geometry -----------------------------------------------------------------------
