@@ -12,6 +12,7 @@ from test_app_support import (  # noqa: F401  (fixtures)
     anyio_backend,
     fake_llm_backend,
     isolated_user_dirs,
+    map_laid_out,
     test_settings,
     wait_until,
 )
@@ -76,9 +77,12 @@ async def test_generate_inspect_play_and_export(tmp_path):
 
         # moving through the tree highlights the agent's route on the map
         world_map = inspect.query_one("#inspect-map", MapView)
-        plain_styles, _ = world_map.raster.compose(inspect._overlay)[1], None
         await wait_until(pilot, lambda: inspect._selected_node is not None and inspect._selected_node.kind == "agent",
                          what="first agent highlighted")
+        # The map may still be settling into its final size; compare against the unhighlighted
+        # overlay drawn on the raster the map is showing now, not on an earlier one.
+        await map_laid_out(pilot, world_map)
+        plain_styles = world_map.raster.compose(inspect._overlay)[1]
         assert (world_map._styles != plain_styles).any(), "the agent's route is not highlighted"
         assert "agent 1" in str(inspect.query_one("#node-detail", Static).render())
         await pilot.press("down", "down")

@@ -9,6 +9,7 @@ from test_app_support import (  # noqa: F401  (fixtures)
     anyio_backend,
     fake_llm_backend,
     isolated_user_dirs,
+    map_laid_out,
     test_settings,
     wait_until,
 )
@@ -74,6 +75,7 @@ async def test_map_zooms_pans_and_fits_with_keys(tmp_path):
         await pilot.press("m")
         world_map = screen.query_one("#inspect-map", MapView)
         assert screen.focused is world_map
+        await map_laid_out(pilot, world_map)
         fitted = (world_map.raster.width, world_map.raster.height)
         assert world_map.raster.width <= world_map.size.width
         await pilot.press("plus", "plus")

@@ -111,6 +111,15 @@ async def wait_until(pilot: Any, condition: Callable[[], bool], timeout: float =
         await pilot.pause(0.05)
 
 
+async def map_laid_out(pilot: Any, world_map: Any) -> None:
+    """Wait until a MapView has drawn its raster for the size it finally got from the layout."""
+    await wait_until(
+        pilot,
+        lambda: world_map.raster is not None and world_map._fit_for == (world_map.size.width, world_map.size.height),
+        what="map laid out",
+    )
+
+
 # --- a fake LLM and a lexical retriever for UI-only tests of the real pipeline ----------------------
 
 QUEUE_DRAFT = (
