@@ -33,6 +33,7 @@ import numpy as np
 import yaml
 
 from grove_tui.engine import paths
+from grove_tui.engine.cpu import free_cores
 from grove_tui.engine.errors import GroveError
 from grove_tui.engine.node_docs import (
     RETRIEVAL_PRESETS,
@@ -128,17 +129,6 @@ def _torch_threads(count: int) -> Iterator[None]:
             torch.set_num_threads(previous)
 
 
-def _idle_cores() -> int:
-    # OpenMP workers spin-wait for their siblings, so on a busy machine extra threads make torch
-    # slower, not faster (measured on 2 shared cores: 545 texts in 18 s with one thread, 34-50 s
-    # with two). Use only the cores the load average leaves free.
-    try:
-        load = os.getloadavg()[0]
-    except OSError:
-        load = 0.0
-    return max(1, (os.cpu_count() or 1) - round(load))
-
-
 def embed_texts(texts: Sequence[str]) -> np.ndarray:
     """Unit-length float32 embeddings, one row per text (index building)."""
     if not texts:
@@ -146,7 +136,7 @@ def embed_texts(texts: Sequence[str]) -> np.ndarray:
     import torch
 
     model = embedding_model()
-    with _torch_threads(min(torch.get_num_threads(), _idle_cores())):
+    with _torch_threads(min(torch.get_num_threads(), free_cores())):
         vectors = model.encode(list(texts), batch_size=32, convert_to_numpy=True,
                                normalize_embeddings=True, show_progress_bar=False)
     return np.asarray(vectors, dtype=np.float32)

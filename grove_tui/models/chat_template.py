@@ -11,8 +11,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from llama_cpp.llama_chat_format import Jinja2ChatFormatter
-
 from grove_tui.models.errors import ModelError
 
 QWEN3_EMPTY_THINK = "<think>\n\n</think>\n\n"
@@ -62,6 +60,10 @@ def render_chat(template: str | None, messages: Sequence[dict[str, str]], *, bos
     for index, message in enumerate(messages):
         if not isinstance(message, dict) or set(message) - {"role", "content"} or "role" not in message:
             raise ModelError(f"chat message {index} must be a dict with 'role' and 'content', got {message!r}")
+    # Imported here: importing llama_cpp loads llama.cpp and its OpenMP runtime, which reads its
+    # settings once; the model worker tunes them first (worker.tune_openmp_for_llama).
+    from llama_cpp.llama_chat_format import Jinja2ChatFormatter
+
     formatter = Jinja2ChatFormatter(template=template or PLAIN_TEMPLATE, eos_token=eos_token, bos_token=bos_token)
     try:
         prompt = formatter(messages=list(messages), enable_thinking=False).prompt

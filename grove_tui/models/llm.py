@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from grove_tui.engine.cpu import free_cores
 from grove_tui.engine.paths import cache_dir
 from grove_tui.models.chat_template import Sampling, default_sampling
 from grove_tui.models.errors import GenerationCancelled, ModelError
@@ -44,20 +45,11 @@ __all__ = ["Generation", "GenerationCancelled", "LocalLLM", "ModelError"]
 
 
 def default_threads() -> int:
-    """Cores not already busy (GROVE_LLM_THREADS overrides).
-
-    llama.cpp's threads spin at barriers, so oversubscribing is catastrophic rather than mild:
-    measured on a 2-core machine under load ~5, SmolLM2 decoded 64 tok/s with 1 thread and 7 with 2.
-    """
+    """Cores free right now (GROVE_LLM_THREADS overrides); see engine.cpu for why not the load average."""
     override = os.environ.get("GROVE_LLM_THREADS")
     if override:
         return max(1, int(override))
-    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
-    try:
-        busy = int(os.getloadavg()[0] + 0.5)
-    except OSError:
-        busy = 0
-    return max(1, min(cores, cores - busy))
+    return free_cores()
 
 
 @dataclass(frozen=True)

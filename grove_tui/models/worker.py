@@ -46,10 +46,24 @@ def _log_tail(log_path: str, lines: int = 6) -> str:
     return "\n".join(useful[-lines:])
 
 
+# The package asks OpenMP for passive waits (grove_tui/__init__.py): right for numba's SFM next to
+# the UI, wrong here. llama.cpp meets its threads at dozens of barriers per token, and sleeping at
+# each one doubled the time per token (SmolLM2 on 2 cores: 35 ms passive, 17.5 ms with a short
+# spin, and 2 threads became slower than 1). A short spin, not an active wait: between requests
+# the threads must go to sleep, not burn the cores the simulation needs.
+LLAMA_SPIN_COUNT = "30000"
+
+
+def tune_openmp_for_llama() -> None:
+    """Set this process's OpenMP spin before llama.cpp loads libgomp (it reads the setting once)."""
+    os.environ.setdefault("GOMP_SPINCOUNT", LLAMA_SPIN_COUNT)
+
+
 def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threads: int, architecture: str,
           log_path: str) -> None:
     """Entry point of the worker process (multiprocessing spawn target)."""
     _redirect_stderr(log_path)
+    tune_openmp_for_llama()
     try:
         from llama_cpp import Llama
     except Exception as error:  # an unusable llama-cpp-python install is reported, not raised into the void
