@@ -102,10 +102,22 @@ class ScriptedBackend(EngineBackend):
 
 
 async def wait_until(pilot: Any, condition: Callable[[], bool], timeout: float = 30.0, what: str = "") -> None:
-    """Let the app run until `condition()` holds (workers post their messages meanwhile)."""
+    """Let the app run until `condition()` holds (workers post their messages meanwhile).
+
+    A widget the condition queries may not be mounted yet (a screen just pushed composes on a
+    later tick, much later on a cold first run): NoMatches means "not yet", not a failure.
+    """
+    from textual.css.query import NoMatches
+
+    def holds() -> bool:
+        try:
+            return bool(condition())
+        except NoMatches:
+            return False
+
     loop = asyncio.get_running_loop()
     deadline = loop.time() + timeout
-    while not condition():
+    while not holds():
         if loop.time() > deadline:
             raise AssertionError(f"timed out waiting for {what or condition}")
         await pilot.pause(0.05)
