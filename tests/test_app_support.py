@@ -104,14 +104,15 @@ class ScriptedBackend(EngineBackend):
 async def wait_until(pilot: Any, condition: Callable[[], bool], timeout: float = 30.0, what: str = "") -> None:
     """Let the app run until `condition()` holds (workers post their messages meanwhile).
 
-    A widget the condition queries may not be mounted yet (a screen just pushed composes on a
-    later tick, much later on a cold first run): NoMatches means "not yet", not a failure.
+    A screen just pushed is the app's screen before it has composed (much later on a cold first
+    run), so the wait also covers the current screen being mounted: callers query its widgets
+    next. A widget the condition itself queries may not exist yet: NoMatches means "not yet".
     """
     from textual.css.query import NoMatches
 
     def holds() -> bool:
         try:
-            return bool(condition())
+            return bool(condition()) and bool(getattr(pilot.app.screen, "is_mounted", True))
         except NoMatches:
             return False
 
