@@ -235,6 +235,40 @@ def test_a_group_sent_to_the_exit_walks_to_one_exit_and_starts_away_from_it(clin
     assert not any(n.node == "Queue" for n in family.tree.walk())
 
 
+def test_walking_to_the_zone_of_a_named_door_is_not_walking_to_the_door(clinic, grid):
+    """The embedded model sent "a family walks to the exit" to the lobby the exit opens from: a
+    door or thing the words name must be the goal itself; anywhere in a named zone is fine."""
+    to_lobby = DraftNode("GoTo", {"target": "lobby"})
+    out = run(clinic, grid, "normal", "a family walks to the main entrance",
+              [DraftGroup("family", 4, "pharmacy", to_lobby)])
+    assert out.groups[0].tree.ports["target"] == "main_entrance"
+    out = run(clinic, grid, "normal", "ten patients queue at the pharmacy while a family walks to the exit",
+              [DraftGroup("patients", 10, "pharmacy", queue_tree("pharmacy_counter")),
+               DraftGroup("family", 4, "pharmacy", to_lobby)])
+    family = out.groups[1]
+    assert [n.node for n in family.tree.walk()] == ["GoTo"]
+    assert clinic.find(family.tree.ports["target"]).exit
+    # A thing inside a named zone still counts as going to the zone: nothing is added.
+    kept = run(clinic, grid, "normal", "two visitors walk to the cafeteria",
+               [DraftGroup("visitors", 2, "lobby", DraftNode("GoTo", {"target": "vending_machine"}))])
+    assert [n.node for n in kept.groups[0].tree.walk()] == ["GoTo"]
+
+
+def test_people_who_come_in_through_a_door_start_there_and_leavers_go_there(clinic, grid):
+    """"through" is where arrivals come from and where leavers go."""
+    to_lobby = DraftNode("GoTo", {"target": "lobby"})
+    out = run(clinic, grid, "normal", "four visitors come in through the main entrance and go to the cafeteria",
+              [DraftGroup("visitors", 4, "cafeteria", to_lobby)])
+    visitors = out.groups[0]
+    assert visitors.spawn == clinic.find("main_entrance").zone
+    assert "main_entrance" not in {n.ports.get("target") for n in visitors.tree.walk()}
+    assert any(n.ports.get("target") == "cafeteria" for n in visitors.tree.walk())
+    out = run(clinic, grid, "normal", "four visitors in the cafeteria leave through the main entrance",
+              [DraftGroup("visitors", 4, "cafeteria", to_lobby)])
+    assert out.groups[0].tree.ports["target"] == "main_entrance"
+    assert out.groups[0].spawn == "cafeteria"
+
+
 def test_people_sent_to_one_door_or_thing_get_goal_points_of_their_own(clinic, grid):
     """Four people on one goal point jostle for it for the rest of the run; they stand side by side instead."""
     for target in ("main_entrance", "vending_machine"):

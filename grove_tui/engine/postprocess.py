@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 from xml.sax.saxutils import quoteattr
@@ -210,8 +210,8 @@ def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, t
                                                   DraftNode("Queue", {"service_point": service})))
     if preset.velocity != "field" and "GoTo" in allowed:
         # Destinations the prompt states must be in the tree, whatever the model wrote.
-        have = {_zone_of(world, p, p) for p in _tree_places(tree)} | _tree_places(tree)
-        missing = [g for g in goals_named(text, selection) if g not in have and _zone_of(world, g, g) not in have]
+        have = _tree_places(tree)
+        missing = [g for g in goals_named(text, selection) if not _reaches(world, g, have)]
         if missing:
             notes.append(f"group '{label}': goes to {', '.join(missing)} (named in the prompt)")
             steps = tuple(DraftNode("GoTo", {"target": g}) for g in missing)
@@ -284,7 +284,7 @@ def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any
     elif intent == "walk" and "GoTo" in allowed:
         goals = [name for prep, name in places if prep in _GOAL_PREPOSITIONS]
         stray = kinds & {"Queue", "Converse", "Wander"}
-        wrong = [p for p in have if p not in goals and _zone_of(world, p, p) not in {_zone_of(world, g, g) for g in goals}]
+        wrong = [p for p in have if not any(_reaches(world, g, {p}) for g in goals)]
         if goals and (stray or wrong):  # only missing the destination: the append rule below keeps the tree
             together = (DraftNode("JoinGroup", {}),) if "JoinGroup" in kinds and "JoinGroup" in allowed else ()
             steps = together + tuple(DraftNode("GoTo", {"target": g}) for g in goals)
@@ -361,16 +361,36 @@ _INTENT_WORDS = {
 }
 
 
+_ARRIVAL_VERBS = frozenset("come comes coming came enter enters entering entered arrive arrives arriving arrived".split())
+_DEPARTURE_VERBS = frozenset("leave leaves leaving left exit exits exiting exited go goes going went walk walks "
+                             "walking walked head heads heading headed".split())
+
+
+def _words_with_prepositions(text: str) -> Iterator[tuple[str, str]]:
+    """Each word that is not a preposition, with the preposition in force ("" before any).
+
+    "through" is where people come from after an arrival verb ("come in through the front door",
+    "enter through the garage") and where they go otherwise ("leave through the back door").
+    """
+    preposition = ""
+    arriving = False
+    for w in re.findall(r"[a-z0-9]+", text.lower()):
+        if w in _ARRIVAL_VERBS:
+            arriving = True
+        elif w in _DEPARTURE_VERBS:
+            arriving = False
+        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
+            preposition = "from" if w == "through" and arriving else w
+            continue
+        yield w, preposition
+
+
 def places_named(text: str, selection: Any) -> list[tuple[str, str]]:
     """(preposition, RoI name) for every selected RoI the words mention, in order."""
     if selection is None:
         return []
     found: list[tuple[str, str]] = []
-    preposition = ""
-    for w in re.findall(r"[a-z0-9]+", text.lower()):
-        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
-            preposition = w
-            continue
+    for w, preposition in _words_with_prepositions(text):
         t = lemma(w)
         for m in getattr(selection, "matches", ()):
             if m.reason == "prompt" and t in m.matched:
@@ -390,11 +410,7 @@ def spawn_named(text: str, selection: Any) -> str | None:
     """The place the words put people in ("in the lobby", "from the ward"), not where they go ("to the cafe")."""
     if selection is None:
         return None
-    preposition = None
-    for w in re.findall(r"[a-z0-9]+", text.lower()):
-        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
-            preposition = w
-            continue
+    for w, preposition in _words_with_prepositions(text):
         t = lemma(w)
         for m in getattr(selection, "matches", ()):
             if m.reason == "prompt" and t in m.matched:
@@ -431,6 +447,14 @@ def _walk_to(place: str, template: DraftNode, allowed_nodes: Sequence[str]) -> D
     if "FollowVelocityField" in allowed_nodes:
         return DraftNode("FollowVelocityField", {"exit": place})
     return template
+
+
+def _reaches(world: Any, goal: str, places: set[str]) -> bool:
+    """Whether a tree visiting `places` goes where the words send the group: anywhere in a named
+    zone, but to a named door or thing itself ("walks to the exit" is not "walks to the lobby")."""
+    if goal in places:
+        return True
+    return _zone_of(world, goal, "") == goal and any(_zone_of(world, p, p) == goal for p in places)
 
 
 def _zone_of(world: Any, name: str, default: str) -> str:
