@@ -31,7 +31,9 @@ def export() -> None:
 @export.command("hunav")
 @_bundle_argument
 @click.option("--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
-              help="Directory to write agents yaml and BT XML files into (created; a previous export is replaced).")
+              help="Folder to write agents yaml and BT XML files into (created; a previous export is replaced, "
+                   "any other non-empty folder is refused).")
+@click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not an export.")
 @click.option("--keep-grove-nodes", is_flag=True,
               help="Keep GROVE-only nodes (Queue, FollowVelocityField...) and write their TreeNodesModel, "
                    "instead of lowering them to HuNavSim nodes.")
@@ -39,17 +41,18 @@ def export() -> None:
               type=click.Choice(["Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots"]),
               help="HuNavSim wrapper the files are for.")
 @click.option("--base-name", default=None, help="yaml_base_name (default agents_<world>).")
-def export_hunav_command(bundle: Path, out_dir: Path, keep_grove_nodes: bool, simulator: str,
+def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grove_nodes: bool, simulator: str,
                          base_name: str | None) -> None:
     """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
-    from grove_tui.engine.export_hunav import copy_trajectories, export_hunav
+    from grove_tui.engine.export_hunav import export_hunav
 
     try:
-        result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name)
+        result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name,
+                              overwrite=overwrite, trajectories=True)
     except GroveError as exc:
         _fail(str(exc))
         return
-    copied = copy_trajectories(bundle, out_dir)
+    copied = result.trajectories
     click.echo(str(result.agents_yaml))
     for path in result.trees:
         click.echo(str(path))

@@ -40,7 +40,9 @@ def _root_options(ctx: click.Context) -> dict[str, Any]:
 
 def exit_code_for(error: BaseException) -> int:
     """The documented exit code for an exception raised while generating."""
+    from grove_tui.engine.atomic import OutputError
     from grove_tui.engine.bundle import BundleError
+    from grove_tui.engine.jobs import JobFileError
     from grove_tui.engine.presets import PresetError, PromptError
     from grove_tui.engine.world import WorldError
     from grove_tui.models.errors import GenerationCancelled, ModelError
@@ -49,7 +51,7 @@ def exit_code_for(error: BaseException) -> int:
         return EXIT_CANCELLED
     if isinstance(error, ModelError):
         return EXIT_MODEL_ERROR
-    if isinstance(error, (PresetError, WorldError, PromptError, BundleError)):
+    if isinstance(error, (PresetError, WorldError, PromptError, BundleError, OutputError, JobFileError)):
         return EXIT_BAD_INPUT
     return EXIT_GENERATION_FAILED
 
@@ -126,8 +128,13 @@ class Progress:
 
 
 def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None = None) -> dict[str, Any]:
-    """Run a bundle's scenario for `seconds`; write trajectories.csv, events.jsonl and metrics.json into it."""
-    from grove_tui.engine.bundle import load_bundle
+    """Run a bundle's scenario for `seconds`; give it trajectories.csv, events.jsonl and metrics.json.
+
+    The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
+    """
+    from grove_tui.engine.bundle import load_bundle, replace_run_outputs
+    from grove_tui.engine.bundle_metrics import bundle_metrics
+    from grove_tui.engine.metrics import write_events
     from grove_tui.engine.simulation import Simulation
 
     scenario, _, _, _ = load_bundle(bundle)
@@ -138,13 +145,15 @@ def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None
     recorder = sim.recorder
     if recorder is None:
         raise click.ClickException("the simulation has no trajectory recorder")
-    recorder.write_csv(bundle / "trajectories.csv")
-    from grove_tui.engine.bundle_metrics import bundle_metrics
-    from grove_tui.engine.metrics import write_events
+    reports = []
 
-    write_events(bundle / "events.jsonl", sim.events)
-    report, _ = bundle_metrics(bundle)
-    crowd = report.crowd
+    def write_run(stage: Path) -> None:
+        recorder.write_csv(stage / "trajectories.csv")
+        write_events(stage / "events.jsonl", sim.events)
+        reports.append(bundle_metrics(stage)[0])
+
+    replace_run_outputs(bundle, write_run)
+    crowd = reports[0].crowd
     return {"sim_seconds": round(float(frame.t), 3), "wall_seconds": round(wall, 3),
             "counters": _as_dict(frame.counters),
             "wall_penetrations": int(crowd.get("wall_penetrations", 0)),
@@ -188,10 +197,14 @@ def _validate_inputs(world: str, preset: str, prompt: str) -> tuple[Any, Any]:
 @click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential) or a path.")
 @click.option("--preset", "preset_name", required=True, help="emergency, queuing, normal, vanilla or a user preset.")
 @click.option("--prompt", required=True, help="The scenario in one sentence.")
-@click.option("--seed", type=int, default=0, show_default=True, help="Seeds the model and every sampler.")
-@click.option("--simulate", "simulate_seconds", type=click.FloatRange(min=0.0), default=None,
+@click.option("--seed", type=click.IntRange(0, 2**32 - 1), default=0, show_default=True,
+              help="Seeds the model and every sampler (0 to 2^32-1).")
+@click.option("--simulate", "simulate_seconds", type=click.FloatRange(min=0.0, max=24 * 3600.0), default=None,
+              callback=lambda ctx, param, value: _finite(value, param),
               help="Also simulate this many seconds and write trajectories.csv into the bundle.")
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Bundle directory to write.")
+@click.option("--out", "out_dir", type=click.Path(), required=True,
+              help="Bundle folder to write; an existing bundle there is replaced, any other folder is refused.")
+@click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bundle.")
 @click.option("--roi-model", type=click.Path(dir_okay=False), default=None, help="GGUF for RoI selection.")
 @click.option("--bt-model", type=click.Path(dir_okay=False), default=None, help="GGUF for behavior-tree synthesis.")
 @click.option("--robot-start", default=None, help="Robot start: 'x,y' or an RoI name (default: chosen across the scene).")
@@ -200,10 +213,11 @@ def _validate_inputs(world: str, preset: str, prompt: str) -> tuple[Any, Any]:
 @click.option("--json", "as_json", is_flag=True, help="Print the result as one JSON object on stdout.")
 @click.pass_context
 def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str, prompt: str, seed: int,
-             simulate_seconds: float | None, out_dir: str, roi_model: str | None, bt_model: str | None,
+             simulate_seconds: float | None, out_dir: str, overwrite: bool, roi_model: str | None, bt_model: str | None,
              robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
-    from grove_tui.engine.bundle import write_bundle
+    from grove_tui.engine.atomic import check_output_dir
+    from grove_tui.engine.bundle import WHAT, is_bundle, write_bundle
     from grove_tui.engine.errors import GroveError
     from grove_tui.engine.pipeline import GenerationPipeline
     from grove_tui.engine.planning import RobotRequest
@@ -214,13 +228,15 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
     models = None
     progress = Progress(err)
     try:
+        # Before any model loads: a refused or unwritable --out must not cost a generation.
+        check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
         world, preset = _validate_inputs(world_name, preset_name, prompt)
         robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
         models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
                              options.get("model"))
         pipeline = GenerationPipeline(world, preset, models.roi, models.bt, NodeRetriever(), robot=robot)
         result = pipeline.run(prompt, seed=seed, on_event=progress)
-        bundle = write_bundle(result, Path(out_dir))
+        bundle = write_bundle(result, Path(out_dir), overwrite=overwrite)
         sim = simulate_bundle(bundle, simulate_seconds) if simulate_seconds else None
     except (GroveError, KeyboardInterrupt) as exc:
         progress.stop()
@@ -247,46 +263,59 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
 
 
 @click.command("batch")
-@click.argument("jobs_file", type=click.Path(exists=True, dir_okay=False))
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), required=True, help="Directory for the bundles.")
+@click.argument("jobs_file", type=click.Path(dir_okay=False))
+@click.option("--out", "out_dir", type=click.Path(), required=True, help="Folder for the bundles, one per job.")
+@click.option("--overwrite", is_flag=True, help="Replace job folders even when they are not bundles.")
 @click.option("--roi-model", type=click.Path(dir_okay=False), default=None)
 @click.option("--bt-model", type=click.Path(dir_okay=False), default=None)
 @click.pass_context
-def batch(ctx: click.Context, jobs_file: str, out_dir: str, roi_model: str | None, bt_model: str | None) -> None:
+def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi_model: str | None,
+          bt_model: str | None) -> None:
     """Generate many scenarios from a JSONL file, loading the models once.
 
     Each line: {"world": ..., "preset": ..., "prompt": ..., "seed": 0, "name": "optional-dir-name",
-    "simulate": optional seconds}. A failed line is reported and the batch goes on; the exit code is
-    3 when any line failed, 2 when the file itself is malformed.
+    "simulate": optional seconds}. Every line is checked before any job runs: bad lines (and lines
+    whose name another line already uses) are reported with their line numbers and skipped, the good
+    ones run. A failed job is reported and the batch goes on. Exit code: 2 when any line was refused,
+    else 3 when any job failed, else 0.
     """
-    from grove_tui.engine.bundle import write_bundle
+    from grove_tui.engine.atomic import check_output_dir
+    from grove_tui.engine.bundle import WHAT, is_bundle, write_bundle
     from grove_tui.engine.errors import GroveError
+    from grove_tui.engine.jobs import read_jobs
     from grove_tui.engine.pipeline import GenerationPipeline
     from grove_tui.engine.retrieval import NodeRetriever
 
     err, out = _err(), _out()
-    jobs = _read_jobs(Path(jobs_file), err, ctx)
     options = _root_options(ctx)
     models = None
     failures = 0
     try:
+        jobs, problems = read_jobs(jobs_file)
+        jobs, refused = _check_jobs(jobs, Path(out_dir), overwrite)
+        problems = sorted(problems + refused, key=lambda p: p.line)
+        for problem in problems:
+            err.print(f"[red]error:[/] {jobs_file}:{problem.line}: {problem.message}", markup=True, highlight=False)
+        if not jobs:
+            err.print(f"[red]error:[/] {jobs_file}: no job can run", markup=True, highlight=False)
+            ctx.exit(EXIT_BAD_INPUT)
         models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
                              options.get("model"))
         retriever = NodeRetriever()
         pipelines: dict[tuple[str, str], Any] = {}
         for index, job in enumerate(jobs, start=1):
-            name = job.get("name") or f"{index:03d}-{job['world']}-{job['preset']}"
-            target = Path(out_dir) / _safe_name(name)
+            target = Path(out_dir) / job.name
             progress = Progress(err, prefix=f"[{index}/{len(jobs)}] ")
             try:
-                world, preset = _validate_inputs(job["world"], job["preset"], job["prompt"])
-                key = (job["world"], job["preset"])
+                world, preset = _validate_inputs(job.world, job.preset, job.prompt)
+                key = (job.world, job.preset)
                 if key not in pipelines:
                     pipelines[key] = GenerationPipeline(world, preset, models.roi, models.bt, retriever)
-                result = pipelines[key].run(job["prompt"], seed=int(job.get("seed", 0)), on_event=progress)
-                bundle = write_bundle(result, target)
-                if job.get("simulate"):
-                    simulate_bundle(bundle, float(job["simulate"]))
+                result = pipelines[key].run(job.prompt, seed=job.seed, on_event=progress)
+                check_output_dir(target, owned=is_bundle, what=WHAT, overwrite=overwrite)
+                bundle = write_bundle(result, target, overwrite=overwrite)
+                if job.simulate:
+                    simulate_bundle(bundle, job.simulate)
                 out.print(f"ok {bundle} agents={len(result.scenario.agents)} "
                           f"prompt_tokens={result.report['prompt_tokens']} seconds={result.report['total_seconds']:.2f}",
                           markup=False)
@@ -304,34 +333,48 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, roi_model: str | Non
     finally:
         if models is not None:
             models.close()
-    err.print(f"{len(jobs) - failures}/{len(jobs)} scenarios generated")
-    ctx.exit(EXIT_GENERATION_FAILED if failures else EXIT_OK)
+    total = len(jobs) + len(problems)
+    err.print(f"{len(jobs) - failures}/{total} scenarios generated")
+    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_GENERATION_FAILED if failures else EXIT_OK)
 
 
-def _safe_name(name: str) -> str:
-    cleaned = re.sub(r"[^A-Za-z0-9._-]+", "-", str(name)).strip("-.")
-    return cleaned or "scenario"
+def _check_jobs(jobs: list[Any], out_dir: Path, overwrite: bool) -> tuple[list[Any], list[Any]]:
+    """Jobs whose world, preset and output folder are usable; the others as problems, before any model loads."""
+    from grove_tui.engine.atomic import check_output_dir
+    from grove_tui.engine.bundle import WHAT, is_bundle
+    from grove_tui.engine.errors import GroveError
+    from grove_tui.engine.jobs import JobProblem
+    from grove_tui.engine.presets import load_preset
+    from grove_tui.engine.world import load_world
 
-
-def _read_jobs(path: Path, err: Console, ctx: click.Context) -> list[dict[str, Any]]:
-    jobs = []
-    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
-        if not line.strip() or line.lstrip().startswith("#"):
-            continue
+    check_output_dir(out_dir, owned=lambda _p: True, what="batch folder", overwrite=True)
+    known: dict[tuple[str, str], str] = {}
+    good, refused = [], []
+    for job in jobs:
         try:
-            job = json.loads(line)
-        except json.JSONDecodeError as exc:
-            err.print(f"[red]error:[/] {path}:{number}: not valid JSON: {exc.msg}")
-            ctx.exit(EXIT_BAD_INPUT)
-        missing = [k for k in ("world", "preset", "prompt") if not isinstance(job, dict) or k not in job]
-        if missing:
-            err.print(f"[red]error:[/] {path}:{number}: missing {', '.join(missing)}")
-            ctx.exit(EXIT_BAD_INPUT)
-        jobs.append(job)
-    if not jobs:
-        err.print(f"[red]error:[/] {path}: no jobs")
-        ctx.exit(EXIT_BAD_INPUT)
-    return jobs
+            for kind, name, loader in (("world", job.world, load_world), ("preset", job.preset, load_preset)):
+                if (kind, name) not in known:
+                    try:
+                        loader(name)
+                        known[(kind, name)] = ""
+                    except GroveError as exc:
+                        known[(kind, name)] = str(exc)
+                if known[(kind, name)]:
+                    raise GroveError(known[(kind, name)])
+            check_output_dir(out_dir / job.name, owned=is_bundle, what=WHAT, overwrite=overwrite)
+        except GroveError as exc:
+            refused.append(JobProblem(job.line, str(exc)))
+            continue
+        good.append(job)
+    return good, refused
+
+
+def _finite(value: float | None, param: click.Parameter) -> float | None:
+    import math
+
+    if value is not None and not math.isfinite(value):
+        raise click.BadParameter(f"{value} is not a finite number of seconds", param=param)
+    return value
 
 
 @click.command("simulate")

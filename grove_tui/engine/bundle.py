@@ -10,10 +10,11 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from grove_tui.engine.atomic import atomic_directory
+from grove_tui.engine.atomic import absolute_path, atomic_directory, link_or_copy
 from grove_tui.engine.errors import GroveError
 from grove_tui.engine.grid import OccupancyGrid
 from grove_tui.engine.scenario import Scenario, ScenarioError
@@ -22,30 +23,59 @@ from grove_tui.engine.velocity_field import VelocityField
 SCENARIO_FILE = "scenario.yaml"
 GRID_FILE = "grid.npz"
 REPORT_FILE = "generation.json"
+# What a simulation adds to a bundle; replaced together, never one without the others.
+RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
+WHAT = "scenario bundle"
 
 
 class BundleError(GroveError):
     """A bundle directory is missing a file or holds a broken one; the message names it."""
 
 
-def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = True) -> Path:
-    """Write a GenerationResult as a bundle; a reader sees the old bundle or the complete new one."""
-    out = Path(out_dir)
+def is_bundle(path: Path) -> bool:
+    """A folder GROVE wrote as a bundle (the only kind of folder `--out` replaces without asking)."""
+    return (path / SCENARIO_FILE).is_file() and not (path / SCENARIO_FILE).is_symlink()
+
+
+def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = False) -> Path:
+    """Write a GenerationResult as a bundle; a reader sees the old bundle or the complete new one.
+
+    An existing bundle at `out_dir` is replaced; any other non-empty folder only with `overwrite`.
+    """
     scenario: Scenario = result.scenario
-    try:
-        with atomic_directory(out, overwrite=overwrite) as stage:
-            (stage / SCENARIO_FILE).write_text(scenario.dump_yaml(), encoding="utf-8")
-            for rel, xml in sorted(result.trees.items()):
-                path = stage / rel
-                path.parent.mkdir(parents=True, exist_ok=True)
-                path.write_text(xml, encoding="utf-8")
-            for field_id, rel in sorted(scenario.fields.items()):
-                result.fields[field_id].save(stage / rel)
-            result.grid.save(stage / GRID_FILE)
-            (stage / REPORT_FILE).write_text(json.dumps(result.report, indent=2, sort_keys=False) + "\n", encoding="utf-8")
-    except FileExistsError:
-        raise BundleError(f"{out} already exists; choose another --out or allow overwriting") from None
-    return out
+    # Absolute first: after `--out .` the process's own folder is replaced, so "." names the old one.
+    target = absolute_path(out_dir)
+    with atomic_directory(target, owned=is_bundle, what=WHAT, overwrite=overwrite) as stage:
+        (stage / SCENARIO_FILE).write_text(scenario.dump_yaml(), encoding="utf-8")
+        for rel, xml in sorted(result.trees.items()):
+            path = stage / rel
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(xml, encoding="utf-8")
+        for field_id, rel in sorted(scenario.fields.items()):
+            result.fields[field_id].save(stage / rel)
+        result.grid.save(stage / GRID_FILE)
+        (stage / REPORT_FILE).write_text(json.dumps(result.report, indent=2, sort_keys=False) + "\n", encoding="utf-8")
+    return target
+
+
+def replace_run_outputs(bundle_dir: str | Path, write: Callable[[Path], None]) -> Path:
+    """Give a bundle new simulation outputs in one atomic step.
+
+    The bundle is staged as hard links (cheap), its old run files left out; `write(stage)` writes the
+    new ones; then the staged bundle takes the old one's place in a rename. Interrupted anywhere, the
+    bundle keeps all its old outputs or gets all the new ones, never a mix.
+    """
+    root = Path(bundle_dir)
+    if not is_bundle(root):
+        raise BundleError(f"{root}: not a bundle ({SCENARIO_FILE} is missing)")
+    with atomic_directory(root, owned=is_bundle, what=WHAT) as stage:
+        for path in sorted(root.rglob("*")):
+            rel = path.relative_to(root)
+            if str(rel) in RUN_FILES or path.is_symlink() or not path.is_file():
+                continue
+            link_or_copy(path, stage / rel)
+        write(stage)
+    return root
 
 
 def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, dict[str, str], dict[str, VelocityField], OccupancyGrid]:

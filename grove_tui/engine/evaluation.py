@@ -415,8 +415,9 @@ def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: M
     import shutil
 
     from grove_tui.engine.atomic import atomic_directory
+    from grove_tui.engine.bundle import WHAT, is_bundle
 
-    with atomic_directory(target) as staging:
+    with atomic_directory(target, owned=is_bundle, what=WHAT) as staging:
         for name in ("grid.npz", "generation.json"):
             if (base_bundle / name).exists():
                 shutil.copy2(base_bundle / name, staging / name)
@@ -434,12 +435,17 @@ def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: f
     from grove_tui.engine.metrics import write_events
     from grove_tui.engine.simulation import Simulation
 
+    from grove_tui.engine.bundle import replace_run_outputs
+
     sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
     sim.run(seconds)
-    recorder = sim.recorder
-    recorder.write_csv(bundle / "trajectories.csv")
     events = sim.events
-    write_events(bundle / "events.jsonl", events)
+
+    def write_run(stage: Path) -> None:
+        sim.recorder.write_csv(stage / "trajectories.csv")
+        write_events(stage / "events.jsonl", events)
+
+    replace_run_outputs(bundle, write_run)
     return Trajectories.from_csv(bundle / "trajectories.csv"), events
 
 

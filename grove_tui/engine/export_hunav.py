@@ -31,7 +31,7 @@ import numpy as np
 import yaml
 from lxml import etree
 
-from grove_tui.engine.atomic import atomic_directory
+from grove_tui.engine.atomic import atomic_directory, check_output_dir, safe_file_name
 from grove_tui.engine.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.engine.bt.xml import check_tree_text, parse_point_list
 from grove_tui.engine.errors import GroveError
@@ -87,6 +87,7 @@ class HunavExport:
     trees: tuple[Path, ...]
     nodes_model: Path | None
     lowered: bool
+    trajectories: tuple[Path, ...] = ()
 
 
 @dataclass
@@ -390,16 +391,26 @@ def _rename_main_tree(xml: str, new_id: str) -> str:
     return etree.tostring(root, pretty_print=True, encoding="unicode")
 
 
+def is_hunav_export(path: Path) -> bool:
+    """A folder `export_hunav` wrote (the only kind of non-empty folder it replaces without --overwrite)."""
+    return (path / EXPORT_MARKER).is_file()
+
+
 def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = True,
-                 simulator: str = "Gazebo Classic", base_name: str | None = None) -> HunavExport:
-    """Write `<base>.yaml` and `<base>__agent_<id>_bt.xml` files for HuNavSim 2.0 into `out_dir`."""
+                 simulator: str = "Gazebo Classic", base_name: str | None = None,
+                 overwrite: bool = False, trajectories: bool = False) -> HunavExport:
+    """Write `<base>.yaml` and `<base>__agent_<id>_bt.xml` files for HuNavSim 2.0 into `out_dir`.
+
+    With `trajectories`, a simulated bundle's trajectory files are copied beside them, in the same
+    atomic step. `out_dir` may be new, empty or an earlier export; another folder only with `overwrite`.
+    """
     bundle = Path(bundle_dir)
+    out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
+    if base_name is not None:
+        safe_file_name(base_name, "--base-name")
     scenario = Scenario.load(bundle / "scenario.yaml")
     world_name = Path(scenario.world).stem
     base = base_name or f"agents_{world_name}"
-    out = Path(out_dir)
-    if out.exists() and any(out.iterdir()) and not (out / EXPORT_MARKER).exists():
-        raise ExportError(f"{out}: exists and holds files that are not a GROVE export; choose an empty directory")
 
     trees: dict[int, str] = {}
     for agent in scenario.agents:
@@ -460,7 +471,10 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     document = {"hunav_loader": {"ros__parameters": params}}
     nodes_model = None if lower else treenodes_model_xml()
 
-    with atomic_directory(out) as staging:
+    copied: list[str] = []
+    with atomic_directory(out, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite) as staging:
+        if trajectories:
+            copied = copy_trajectories(bundle, staging)
         (staging / EXPORT_MARKER).write_text("written by grove export hunav\n", encoding="utf-8")
         (staging / f"{base}.yaml").write_text(yaml.safe_dump(document, sort_keys=False, width=120), encoding="utf-8")
         for name, xml in written.items():
@@ -473,17 +487,18 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         trees=tuple(out / name for name in written),
         nodes_model=None if nodes_model is None else out / "grove_nodes_model.xml",
         lowered=lower,
+        trajectories=tuple(out / name for name in copied),
     )
 
 
-def copy_trajectories(bundle_dir: Path, out_dir: Path) -> list[Path]:
-    """Trajectory files of a simulated bundle, copied beside an export."""
+def copy_trajectories(bundle_dir: Path, out_dir: Path) -> list[str]:
+    """Names of the trajectory files of a simulated bundle, copied into `out_dir`."""
     copied = []
     for name in ("trajectories.csv", "trajectories.sqlite", "trajectories.txt"):
         src = bundle_dir / name
-        if src.exists():
+        if src.is_file() and not src.is_symlink():
             shutil.copy2(src, out_dir / name)
-            copied.append(out_dir / name)
+            copied.append(name)
     return copied
 
 

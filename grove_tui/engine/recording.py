@@ -19,6 +19,7 @@ from typing import IO, Any
 
 import numpy as np
 
+from grove_tui.engine.atomic import atomic_file
 from grove_tui.engine.errors import GroveError
 
 ROW_DTYPE = np.dtype([
@@ -32,25 +33,6 @@ JUPEDSIM_SQLITE_VERSION = 2
 
 class RecordingError(GroveError):
     """A recorder was misused (bad fps, mismatched arrays) or an output could not be written."""
-
-
-@contextlib.contextmanager
-def _atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
-    """A temporary path beside `path` that replaces it on success (streamed variant of atomic.py)."""
-    target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    os.close(fd)
-    tmp_path = Path(tmp)
-    try:
-        yield tmp_path
-        with open(tmp_path, "rb") as handle:
-            os.fsync(handle.fileno())
-        os.replace(tmp_path, target)
-    except BaseException:
-        with contextlib.suppress(FileNotFoundError):
-            tmp_path.unlink()
-        raise
 
 
 class TrajectoryRecorder:
@@ -226,7 +208,7 @@ class TrajectoryRecorder:
     def write_csv(self, path: str | os.PathLike[str]) -> Path:
         """frame,t,id,x,y,vx,vy,yaw,group with one row per person per frame."""
         fmt = "%d,%.4f,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%d"
-        with _atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="\n") as out:
+        with atomic_file(path) as tmp, open(tmp, "w", encoding="utf-8", newline="\n") as out:
             out.write(",".join(CSV_COLUMNS) + "\n")
             for chunk in self.chunks():
                 table = np.column_stack([chunk[name].astype(np.float64) for name in CSV_COLUMNS])
@@ -235,7 +217,7 @@ class TrajectoryRecorder:
 
     def write_pedpy_txt(self, path: str | os.PathLike[str], include_robot: bool = False) -> Path:
         """PedPy's text format (`pedpy.load_trajectory_from_txt`): id frame x y z in metres."""
-        with _atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="\n") as out:
+        with atomic_file(path) as tmp, open(tmp, "w", encoding="utf-8", newline="\n") as out:
             out.write(f"# framerate: {self.fps:g}\n# written by GROVE-TUI\n# id frame x/m y/m z/m\n")
             for chunk in self.chunks():
                 if not include_robot:
@@ -254,7 +236,7 @@ class TrajectoryRecorder:
         if not isinstance(walkable_wkt, str) or not walkable_wkt.strip():
             raise RecordingError("write_jupedsim_sqlite needs the walkable area as a WKT string")
         geometry_hash = _stable_hash(walkable_wkt)
-        with _atomic_path(path) as tmp:
+        with atomic_file(path) as tmp:
             connection = sqlite3.connect(tmp)
             try:
                 cur = connection.cursor()
