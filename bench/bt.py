@@ -35,12 +35,12 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.engine.bt.xml import format_point_list, parse_tree_text  # noqa: E402
-from grove_tui.engine.grid import build_grid  # noqa: E402
-from grove_tui.engine.planner import ThetaStarPlanner  # noqa: E402
-from grove_tui.engine.scenario import AgentSpec, RobotSpec  # noqa: E402
-from grove_tui.engine.simulation import Simulation  # noqa: E402
-from grove_tui.engine.world import load_world  # noqa: E402
+from grove_tui.bt.xml import format_point_list, parse_tree_text  # noqa: E402
+from grove_tui.navigation.grid import build_grid  # noqa: E402
+from grove_tui.navigation.theta_star import ThetaStarPlanner  # noqa: E402
+from grove_tui.scenario.model import AgentSpec, RobotSpec  # noqa: E402
+from grove_tui.simulation.simulation import Simulation  # noqa: E402
+from grove_tui.world import load_world  # noqa: E402
 
 REACTIONS = ("Surprised", "Scared", "Curious")
 

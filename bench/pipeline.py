@@ -35,13 +35,13 @@ def main() -> int:
     parser.add_argument("--presets", default="emergency,normal,queuing")
     args = parser.parse_args()
 
-    from grove_tui.engine.bundle import write_bundle
-    from grove_tui.engine.pipeline import GenerationPipeline
-    from grove_tui.engine.presets import load_preset
-    from grove_tui.engine.retrieval import NodeRetriever
-    from grove_tui.engine.world import load_world
-    from grove_tui.models.llm import LocalLLM
-    from grove_tui.models.registry import resolve_models
+    from grove_tui.scenario.bundle import write_bundle
+    from grove_tui.generation.pipeline import GenerationPipeline
+    from grove_tui.generation.presets import load_preset
+    from grove_tui.generation.retrieval import NodeRetriever
+    from grove_tui.world import load_world
+    from grove_tui.llm.local import LocalLLM
+    from grove_tui.llm.registry import resolve_models
 
     choice = resolve_models(None, args.bt_model)["bt"]
     t0 = time.perf_counter()

@@ -30,9 +30,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.engine.grid import OccupancyGrid, build_grid  # noqa: E402
-from grove_tui.engine.planner import ThetaStarPlanner  # noqa: E402
-from grove_tui.engine.world import load_world  # noqa: E402
+from grove_tui.navigation.grid import OccupancyGrid, build_grid  # noqa: E402
+from grove_tui.navigation.theta_star import ThetaStarPlanner  # noqa: E402
+from grove_tui.world import load_world  # noqa: E402
 
 try:
     from pathfinding.core.diagonal_movement import DiagonalMovement

@@ -23,8 +23,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.engine import retrieval  # noqa: E402
-from grove_tui.engine.retrieval import NodeRetriever, embedding_model, evaluate, load_eval_set  # noqa: E402
+from grove_tui.generation import retrieval  # noqa: E402
+from grove_tui.generation.retrieval import NodeRetriever, embedding_model, evaluate, load_eval_set  # noqa: E402
 
 
 def main() -> None:

@@ -31,7 +31,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.engine.crowd import Crowd  # noqa: E402
+from grove_tui.crowd.crowd import Crowd  # noqa: E402
 
 DENSITY = 0.5          # initial pedestrians per square metre
 DOOR_WIDTH = 3.0

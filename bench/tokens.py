@@ -64,9 +64,9 @@ PRESETS = ("emergency", "normal", "queuing")
 
 
 def build_request(world, preset, prompt, retriever):
-    from grove_tui.engine.quantities import extract_quantities
-    from grove_tui.engine.rois import select_rois
-    from grove_tui.engine.synthesis import prepare_request
+    from grove_tui.language.quantities import extract_quantities
+    from grove_tui.generation.rois import select_rois
+    from grove_tui.generation.synthesis import prepare_request
 
     selection = select_rois(world, preset, prompt)
     retrieved = (retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
@@ -79,11 +79,11 @@ def main() -> int:
     parser.add_argument("--bt-model", default=None, help="GGUF whose tokenizer counts (default: the bt role's model)")
     args = parser.parse_args()
 
-    from grove_tui.engine.presets import load_preset
-    from grove_tui.engine.retrieval import NodeRetriever
-    from grove_tui.engine.world import load_world
-    from grove_tui.models.llm import LocalLLM
-    from grove_tui.models.registry import resolve_models
+    from grove_tui.generation.presets import load_preset
+    from grove_tui.generation.retrieval import NodeRetriever
+    from grove_tui.world import load_world
+    from grove_tui.llm.local import LocalLLM
+    from grove_tui.llm.registry import resolve_models
 
     choice = resolve_models(None, args.bt_model)["bt"]
     llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)

@@ -29,13 +29,13 @@ sys.path.insert(0, str(ROOT))
 
 
 def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
-    from grove_tui.backend import GeneratedScenario
-    from grove_tui.engine.bundle import load_bundle  # noqa: F401  (the bundle layout this writes)
-    from grove_tui.engine.grid import build_grid
-    from grove_tui.engine.planner import PlanningError, ThetaStarPlanner
-    from grove_tui.engine.scenario import AgentSpec, RobotSpec, Scenario
-    from grove_tui.engine.waypoints import inject_waypoints, parse_waypoints
-    from grove_tui.engine.world import load_world
+    from grove_tui.services.backend import GeneratedScenario
+    from grove_tui.scenario.bundle import load_bundle  # noqa: F401  (the bundle layout this writes)
+    from grove_tui.navigation.grid import build_grid
+    from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
+    from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
+    from grove_tui.generation.waypoints import inject_waypoints, parse_waypoints
+    from grove_tui.world import load_world
 
     world = load_world("hospital")
     grid = build_grid(world, resolution=0.1, inflation=0.35)
@@ -90,10 +90,10 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
 
 
 async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) -> dict:
-    from grove_tui.app import GroveApp
-    from grove_tui.backend import EngineBackend
-    from grove_tui.config import GroveSettings, SimulationSettings, UISettings
-    from grove_tui.screens.simulation import SimulationScreen
+    from grove_tui.tui.app import GroveApp
+    from grove_tui.services.backend import EngineBackend
+    from grove_tui.settings import GroveSettings, SimulationSettings, UISettings
+    from grove_tui.tui.screens.simulation import SimulationScreen
 
     painted = {"updates": 0, "encode_seconds": 0.0}
 

@@ -23,8 +23,8 @@ import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.engine import grid as grid_module  # noqa: E402
-from grove_tui.engine.world import list_worlds, parse_world, resolve_world_path  # noqa: E402
+from grove_tui.navigation import grid as grid_module  # noqa: E402
+from grove_tui.world import list_worlds, parse_world, resolve_world_path  # noqa: E402
 
 
 FASTEST_SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml when PyYAML has it

@@ -18,15 +18,15 @@ from test_app_support import (  # noqa: F401  (fixtures)
 )
 from textual.widgets import Static, TextArea
 
-from grove_tui.app import GroveApp
-from grove_tui.backend import EngineBackend
-from grove_tui.screens.export import ExportResultScreen
-from grove_tui.screens.generation import GenerationScreen
-from grove_tui.screens.inspect import InspectScreen
-from grove_tui.screens.setup import SetupScreen
-from grove_tui.screens.simulation import SimulationScreen
-from grove_tui.screens.widgets.bt_tree import BTTree
-from grove_tui.screens.widgets.map_view import MapView
+from grove_tui.tui.app import GroveApp
+from grove_tui.services.backend import EngineBackend
+from grove_tui.tui.screens.export import ExportResultScreen
+from grove_tui.tui.screens.generation import GenerationScreen
+from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.setup import SetupScreen
+from grove_tui.tui.screens.simulation import SimulationScreen
+from grove_tui.tui.widgets.bt_tree import BTTree
+from grove_tui.tui.widgets.map_view import MapView
 
 pytestmark = pytest.mark.anyio
 
@@ -198,7 +198,7 @@ async def test_a_planning_error_from_the_model_answer_is_shown_with_a_hint(tmp_p
 
 def _embedded_model_available() -> bool:
     try:
-        from grove_tui.models.registry import embedded_model_path
+        from grove_tui.llm.registry import embedded_model_path
 
         return Path(embedded_model_path()).is_file()
     except Exception:
@@ -230,7 +230,7 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
 
 
 async def test_emergency_scenarios_show_velocity_field_arrows_on_the_inspect_map(tmp_path):
-    from grove_tui.screens.widgets import map_raster as mr
+    from grove_tui.tui.widgets import map_raster as mr
 
     draft = ('{"groups": [{"label": "visitors", "count": 8, "spawn": "entrance_lobby", "tree": {"node": "Sequence", '
              '"children": [{"node": "FollowVelocityField", "exit": "main_entrance"}]}}]}')

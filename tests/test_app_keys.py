@@ -15,12 +15,12 @@ from test_app_support import (  # noqa: F401  (fixtures)
 )
 from textual.command import CommandPalette
 
-from grove_tui.app import GroveApp
-from grove_tui.screens.inspect import InspectScreen
-from grove_tui.screens.setup import SetupScreen
-from grove_tui.screens.simulation import SimulationScreen
-from grove_tui.screens.widgets.bt_tree import BTTree
-from grove_tui.screens.widgets.map_view import MapView
+from grove_tui.tui.app import GroveApp
+from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.setup import SetupScreen
+from grove_tui.tui.screens.simulation import SimulationScreen
+from grove_tui.tui.widgets.bt_tree import BTTree
+from grove_tui.tui.widgets.map_view import MapView
 
 pytestmark = pytest.mark.anyio
 
@@ -28,9 +28,9 @@ SCREENS = (SetupScreen, InspectScreen, SimulationScreen)
 
 
 def test_every_screen_binding_has_an_id_a_description_and_an_ssh_safe_key():
-    from grove_tui.screens.generation import GenerationScreen
-    from grove_tui.screens.simulation import SimMapView
-    from grove_tui.screens.widgets.prompt_input import PromptInput
+    from grove_tui.tui.screens.generation import GenerationScreen
+    from grove_tui.tui.screens.simulation import SimMapView
+    from grove_tui.tui.widgets.prompt_input import PromptInput
 
     safe_names = {"escape", "enter", "space", "up", "down", "left", "right", "plus", "minus", "equals_sign",
                   "left_square_bracket", "right_square_bracket", "f1"}

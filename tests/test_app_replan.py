@@ -14,11 +14,11 @@ from test_app_support import (  # noqa: F401  (fixtures)
 )
 from textual.widgets import Input, Static
 
-from grove_tui.app import GroveApp
-from grove_tui.screens.counts import CountsScreen
-from grove_tui.screens.help import HelpScreen
-from grove_tui.screens.inspect import InspectScreen
-from grove_tui.screens.widgets.bt_tree import BTTree
+from grove_tui.tui.app import GroveApp
+from grove_tui.tui.screens.counts import CountsScreen
+from grove_tui.tui.screens.help import HelpScreen
+from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.widgets.bt_tree import BTTree
 
 pytestmark = pytest.mark.anyio
 
@@ -114,7 +114,7 @@ async def test_inspect_help_lists_the_counts_binding(tmp_path):
         await generate_to_inspect(pilot, app)
         await pilot.press("f1")
         await wait_until(pilot, lambda: isinstance(app.screen, HelpScreen), what="help")
-        from grove_tui.screens.help import keys_table
+        from grove_tui.tui.screens.help import keys_table
 
         table = keys_table(app.screen._screen)
         assert "| `c` | Counts | `inspect.counts` |" in table

@@ -16,14 +16,14 @@ from test_app_support import (  # noqa: F401  (isolated_user_dirs is an autouse 
 )
 from textual.widgets import DataTable, OptionList, Static
 
-from grove_tui.app import GroveApp
-from grove_tui.backend import EngineBackend
-from grove_tui.config import load_history, load_settings
-from grove_tui.screens.generation import GenerationScreen
-from grove_tui.screens.help import HelpScreen
-from grove_tui.screens.setup import SetupScreen
-from grove_tui.screens.widgets.map_view import MapView
-from grove_tui.screens.widgets.prompt_input import PromptInput
+from grove_tui.tui.app import GroveApp
+from grove_tui.services.backend import EngineBackend
+from grove_tui.settings import load_history, load_settings
+from grove_tui.tui.screens.generation import GenerationScreen
+from grove_tui.tui.screens.help import HelpScreen
+from grove_tui.tui.screens.setup import SetupScreen
+from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.tui.widgets.prompt_input import PromptInput
 
 
 pytestmark = pytest.mark.anyio

@@ -11,8 +11,8 @@ from typing import Any
 
 import pytest
 
-from grove_tui.backend import EngineBackend, ModelStatus
-from grove_tui.config import ExportSettings, GenerationSettings, GroveSettings, SimulationSettings, UISettings
+from grove_tui.services.backend import EngineBackend, ModelStatus
+from grove_tui.settings import ExportSettings, GenerationSettings, GroveSettings, SimulationSettings, UISettings
 
 
 @pytest.fixture
@@ -45,7 +45,7 @@ test_settings.__test__ = False  # type: ignore[attr-defined]  # a helper, not a 
 
 
 # The engine's own pipeline events: the fake backend emits exactly what the real pipeline emits.
-from grove_tui.engine.pipeline import StageFinished, StageStarted, TokenStreamed  # noqa: E402,F401
+from grove_tui.generation.pipeline import StageFinished, StageStarted, TokenStreamed  # noqa: E402,F401
 
 
 class ScriptedFailure(Exception):
@@ -154,13 +154,13 @@ class FakeLLM:
     def generate(self, messages: Any, grammar: str | None = None, *, max_tokens: int = 512, seed: int = 0,
                  on_token: Callable[[str], None] | None = None, cancel: threading.Event | None = None,
                  **_: Any) -> Any:
-        from grove_tui.models.llm import Generation
+        from grove_tui.llm.local import Generation
 
         self.requests += 1
         chunks = [self.text[i:i + 6] for i in range(0, len(self.text), 6)]
         for chunk in chunks:
             if cancel is not None and cancel.is_set():
-                from grove_tui.engine.errors import GroveError
+                from grove_tui.errors import GroveError
 
                 raise GroveError("cancelled")
             if on_token is not None:
@@ -173,7 +173,7 @@ class FakeLLM:
 
 def lexical_retriever() -> Any:
     """The real node database, ranked by shared words instead of embeddings (no torch, no index build)."""
-    from grove_tui.engine.retrieval import NodeRetriever, RetrievedNode, content_tokens
+    from grove_tui.generation.retrieval import NodeRetriever, RetrievedNode, content_tokens
 
     class LexicalRetriever(NodeRetriever):
         def retrieve(self, prompt: str, preset: Any = None, k: int = 8) -> list[Any]:

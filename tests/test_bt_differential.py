@@ -13,11 +13,11 @@ from dataclasses import dataclass
 
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES, NodeSpec
-from grove_tui.engine.bt.runtime import (
+from grove_tui.bt.manifest import NODES, NodeSpec
+from grove_tui.bt.runtime import (
     FAILURE, RUNNING, SKIPPED, SUCCESS, ConditionNode, StatefulActionNode, TreeFactory,
 )
-from grove_tui.engine.bt.xml import parse_tree_text
+from grove_tui.bt.xml import parse_tree_text
 
 bt = pytest.importorskip("behaviortreepy")
 

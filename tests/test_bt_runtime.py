@@ -9,12 +9,12 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES, NodeSpec, PortSpec
-from grove_tui.engine.bt.runtime import (
+from grove_tui.bt.manifest import NODES, NodeSpec, PortSpec
+from grove_tui.bt.runtime import (
     FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, Blackboard, ConditionNode, SimClock, StatefulActionNode, SyncActionNode,
     TreeFactory,
 )
-from grove_tui.engine.bt.xml import BTError, parse_tree_text
+from grove_tui.bt.xml import BTError, parse_tree_text
 
 R, S, F, K = RUNNING, SUCCESS, FAILURE, SKIPPED
 NAMES = {IDLE: "IDLE", R: "RUNNING", S: "SUCCESS", F: "FAILURE", K: "SKIPPED"}

@@ -6,12 +6,12 @@ import pytest
 from click.testing import CliRunner
 from lxml import etree
 
-from grove_tui.engine.bt.manifest import NODES, treenodes_model_xml
-from grove_tui.engine.bt.xml import (
+from grove_tui.bt.manifest import NODES, treenodes_model_xml
+from grove_tui.bt.xml import (
     MAX_BYTES, MAX_DEPTH, BTError, check_tree_file, check_tree_text, format_point_list, parse_point_list,
     parse_tree_text,
 )
-from grove_tui.engine.errors import GroveError
+from grove_tui.errors import GroveError
 
 
 def tree(body: str, extra: str = "") -> str:

@@ -7,18 +7,18 @@ import filecmp
 import numpy as np
 import pytest
 
-from grove_tui.engine.bundle import BundleError, load_bundle, load_report, write_bundle
-from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.pipeline import GenerationResult
-from grove_tui.engine.planning import plan_operational
-from grove_tui.engine.postprocess import postprocess
-from grove_tui.engine.presets import load_preset
-from grove_tui.engine.quantities import extract_quantities
-from grove_tui.engine.rois import select_rois
-from grove_tui.engine.scenario import Scenario
-from grove_tui.engine.simulation import Simulation
-from grove_tui.engine.world import parse_world
+from grove_tui.scenario.bundle import BundleError, load_bundle, load_report, write_bundle
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.navigation.grid import build_grid
+from grove_tui.generation.pipeline import GenerationResult
+from grove_tui.generation.planning import plan_operational
+from grove_tui.generation.postprocess import postprocess
+from grove_tui.generation.presets import load_preset
+from grove_tui.language.quantities import extract_quantities
+from grove_tui.generation.rois import select_rois
+from grove_tui.scenario.model import Scenario
+from grove_tui.simulation.simulation import Simulation
+from grove_tui.world import parse_world
 from helpers.clinic import CLINIC
 
 

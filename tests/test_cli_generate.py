@@ -13,8 +13,8 @@ from click.testing import CliRunner
 from grove_tui.cli import main
 from grove_tui.cli.generate import (EXIT_BAD_INPUT, EXIT_GENERATION_FAILED, EXIT_MODEL_ERROR, EXIT_OK,
                                     parse_robot_point)
-from grove_tui.engine.bundle import load_bundle
-from grove_tui.models.embedded import embedded_model_path
+from grove_tui.scenario.bundle import load_bundle
+from grove_tui.llm.embedded import embedded_model_path
 
 
 @pytest.fixture(scope="module")
@@ -49,7 +49,7 @@ def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, model, w
 
 
 def test_world_by_path(tmp_path, model):
-    from grove_tui.engine.paths import worlds_dir
+    from grove_tui.paths import worlds_dir
 
     out = tmp_path / "bundle"
     result = invoke(generate_args(out, model, world=str(worlds_dir() / "office.yaml"), preset="normal",

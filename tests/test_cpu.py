@@ -6,8 +6,8 @@ import os
 
 import pytest
 
-from grove_tui.engine import cpu
-from grove_tui.engine.cpu import free_cores, read_cpu_times, usable_cores
+from grove_tui import cpu
+from grove_tui.cpu import free_cores, read_cpu_times, usable_cores
 
 
 def readings(*values):

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from grove_tui.engine.crowd import (
+from grove_tui.crowd.crowd import (
     MODE_FACE,
     MODE_FIELD,
     MODE_GOALS,

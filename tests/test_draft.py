@@ -6,8 +6,8 @@ import json
 
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES
-from grove_tui.engine.draft import (
+from grove_tui.bt.manifest import NODES
+from grove_tui.generation.draft import (
     Draft,
     DraftError,
     DraftGroup,
@@ -17,7 +17,7 @@ from grove_tui.engine.draft import (
     parse_draft,
     written_ports,
 )
-from grove_tui.models.grammar import schema_to_gbnf
+from grove_tui.llm.grammar import schema_to_gbnf
 
 NODE_SET = ["Sequence", "Fallback", "Inverter", "Repeat", "GoTo", "Queue", "Wait", "SaySomething", "IsRobotClose", "IsAnyoneSpeaking"]
 ROIS = ["pharmacy", "pharmacy_counter", "main_exit"]

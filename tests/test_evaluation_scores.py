@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from helpers.handmade import build_hospital_bundle
 
-from grove_tui.engine.evaluation import (
+from grove_tui.analysis.evaluation import (
     EvalCase,
     EvalError,
     Expectation,
@@ -20,10 +20,10 @@ from grove_tui.engine.evaluation import (
     stop_and_go_share,
     validity,
 )
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.metrics import Trajectories
-from grove_tui.engine.scenario import Scenario
-from grove_tui.engine.world import load_world
+from grove_tui.navigation.grid import build_grid
+from grove_tui.analysis.metrics import Trajectories
+from grove_tui.scenario.model import Scenario
+from grove_tui.world import load_world
 
 
 @pytest.fixture(scope="module")
@@ -107,7 +107,7 @@ def test_suite_errors_name_the_case(tmp_path):
 
 
 def test_shipped_suite_covers_every_world_and_preset_with_real_names():
-    from grove_tui.engine.paths import PROJECT_ROOT
+    from grove_tui.paths import PROJECT_ROOT
 
     cases = load_suite(PROJECT_ROOT / "eval" / "suite.yaml")
     assert len(cases) >= 30
@@ -121,7 +121,7 @@ def test_shipped_suite_covers_every_world_and_preset_with_real_names():
 
 
 def test_roaming_agents_are_grounded_by_the_zone_they_roam(hospital):
-    from grove_tui.engine.scenario import AgentSpec
+    from grove_tui.scenario.model import AgentSpec
 
     agent = AgentSpec(id=1, group=-1, start=(30.0, 5.0), goals=(), zone="entrance_lobby", tree="trees/agent_1.xml")
     tree = ('<root BTCPP_format="4" main_tree_to_execute="a"><BehaviorTree ID="a">'
@@ -132,7 +132,7 @@ def test_roaming_agents_are_grounded_by_the_zone_they_roam(hospital):
 
 
 def test_a_failed_generation_scores_zero_not_missing():
-    from grove_tui.engine.evaluation import CaseResult, summarize
+    from grove_tui.analysis.evaluation import CaseResult, summarize
 
     case = EvalCase("c", "hospital", "normal", "p", 0, Expectation(targets=("pharmacy",), count=3))
     ok = CaseResult(case, "grove", {"target_grounding": 1.0, "count_accuracy": 1.0})
@@ -146,7 +146,7 @@ def test_a_failed_generation_scores_zero_not_missing():
 def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
     """GROVE's planned patient (agent 2) reaches the pharmacy counter through the door; without waypoints
     and without run-time planning (HuNavSim's straight goals) the wall between lobby and pharmacy stops them."""
-    from grove_tui.engine.evaluation import simulate_for_scores, without_planner, _write_variant, _read_trees
+    from grove_tui.analysis.evaluation import simulate_for_scores, without_planner, _write_variant, _read_trees
 
     scenario = Scenario.load(bundle / "scenario.yaml")
     counter = hospital.find("pharmacy_counter").interaction_point

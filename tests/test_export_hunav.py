@@ -6,13 +6,13 @@ import math
 
 import pytest
 import yaml
-from lxml import etree
-
 from helpers.btcpp import load_in_btcpp as _load_in_btcpp
 from helpers.handmade import build_hospital_bundle
+from lxml import etree
 
-from grove_tui.engine.export_hunav import GROVE_ONLY, ExportError, export_hunav
-from grove_tui.engine.scenario import Scenario
+from grove_tui.exports.hunav import GROVE_ONLY, ExportError, export_hunav
+from grove_tui.files import OutputError
+from grove_tui.scenario.model import Scenario
 
 pytest.importorskip("behaviortreepy")
 
@@ -102,7 +102,7 @@ def test_export_refuses_a_directory_it_did_not_write(hospital_bundle, tmp_path):
     foreign = tmp_path / "notes"
     foreign.mkdir()
     (foreign / "thesis.tex").write_text("precious")
-    with pytest.raises(ExportError, match="not a GROVE export"):
+    with pytest.raises(OutputError, match="is not a GROVE HuNavSim export.*--overwrite"):
         export_hunav(hospital_bundle, foreign)
     assert (foreign / "thesis.tex").read_text() == "precious"
 

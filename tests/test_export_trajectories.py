@@ -10,7 +10,7 @@ from helpers.handmade import build_hospital_bundle
 
 from grove_tui.cli import main
 from grove_tui.cli.generate import simulate_bundle
-from grove_tui.engine.export_trajectories import TrajectoryExportError, export_trajectories
+from grove_tui.exports.trajectories import TrajectoryExportError, export_trajectories
 
 pedpy = pytest.importorskip("pedpy")
 

@@ -9,11 +9,11 @@ import json
 import pytest
 from helpers.tiny_qwen3 import build_tiny_qwen3
 
-from grove_tui.engine.draft import build_draft_schema, parse_draft
-from grove_tui.engine.presets import list_presets, load_preset
-from grove_tui.engine.world import load_world
-from grove_tui.models.grammar import GrammarError, gbnf_literal, json_literal, schema_to_gbnf
-from grove_tui.models.llm import LocalLLM, ModelError
+from grove_tui.generation.draft import build_draft_schema, parse_draft
+from grove_tui.generation.presets import list_presets, load_preset
+from grove_tui.world import load_world
+from grove_tui.llm.grammar import GrammarError, gbnf_literal, json_literal, schema_to_gbnf
+from grove_tui.llm.local import LocalLLM, ModelError
 
 
 def rules(grammar: str) -> dict[str, str]:
@@ -125,7 +125,7 @@ def test_unit_grammars_compile_and_produce_strict_json(tiny_llm, index):
 
 
 def _preset_node_sets():
-    from grove_tui.engine.bt.manifest import NODES
+    from grove_tui.bt.manifest import NODES
 
     sets = {}
     for name in list_presets():

@@ -10,9 +10,9 @@ import shapely
 from scipy import ndimage
 from shapely.geometry import MultiLineString
 
-from grove_tui.engine import grid as grid_module
-from grove_tui.engine.grid import GridError, OccupancyGrid, build_grid
-from grove_tui.engine.world import World, load_world, parse_world
+from grove_tui.navigation import grid as grid_module
+from grove_tui.navigation.grid import GridError, OccupancyGrid, build_grid
+from grove_tui.world import World, load_world, parse_world
 
 SHIPPED = ("hospital", "office", "residential")
 

@@ -11,12 +11,12 @@ import time
 import pytest
 from helpers.tiny_qwen3 import build_tiny_qwen3
 
-from grove_tui.engine.draft import build_draft_schema, parse_draft
-from grove_tui.models.chat_template import QWEN3_EMPTY_THINK, QWEN3_NON_THINKING, default_sampling, render_chat
-from grove_tui.models.embedded import embedded_model_path
-from grove_tui.models.gguf_info import check_loadable, read_gguf_info
-from grove_tui.models.grammar import schema_to_gbnf
-from grove_tui.models.llm import GenerationCancelled, LocalLLM, ModelError
+from grove_tui.generation.draft import build_draft_schema, parse_draft
+from grove_tui.llm.chat_template import QWEN3_EMPTY_THINK, QWEN3_NON_THINKING, default_sampling, render_chat
+from grove_tui.llm.embedded import embedded_model_path
+from grove_tui.llm.gguf_info import check_loadable, read_gguf_info
+from grove_tui.llm.grammar import schema_to_gbnf
+from grove_tui.llm.local import GenerationCancelled, LocalLLM, ModelError
 
 NODES = ["Sequence", "Fallback", "GoTo", "Queue", "Wait", "Wander"]
 ROIS = ["pharmacy", "pharmacy_counter", "main_entrance"]

@@ -10,12 +10,12 @@ import random
 
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES
-from grove_tui.engine.draft import build_draft_schema, parse_draft
-from grove_tui.engine.world import load_world
-from grove_tui.models.embedded import embedded_model_path
-from grove_tui.models.grammar import schema_to_gbnf
-from grove_tui.models.llm import LocalLLM
+from grove_tui.bt.manifest import NODES
+from grove_tui.generation.draft import build_draft_schema, parse_draft
+from grove_tui.world import load_world
+from grove_tui.llm.embedded import embedded_model_path
+from grove_tui.llm.grammar import schema_to_gbnf
+from grove_tui.llm.local import LocalLLM
 
 NODE_SETS = {
     "queuing": ["Sequence", "Fallback", "GoTo", "Queue", "Wait"],

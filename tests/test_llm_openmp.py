@@ -11,7 +11,7 @@ import json
 import subprocess
 import sys
 
-from grove_tui.models import worker
+from grove_tui.llm import worker
 
 
 def run_fresh(code: str, env_extra: dict[str, str] | None = None) -> dict:
@@ -27,8 +27,8 @@ def test_the_model_modules_do_not_load_llama_cpp_on_import():
     # What the worker process imports before serve() runs: the package, models.* (to unpickle serve).
     seen = run_fresh(
         "import json, sys\n"
-        "import grove_tui.models.worker, grove_tui.models.llm, grove_tui.models.registry\n"
-        "import grove_tui.models.chat_template, grove_tui.models.embedded, grove_tui.models.gguf_info\n"
+        "import grove_tui.llm.worker, grove_tui.llm.local, grove_tui.llm.registry\n"
+        "import grove_tui.llm.chat_template, grove_tui.llm.embedded, grove_tui.llm.gguf_info\n"
         "maps = open('/proc/self/maps').read() if sys.platform.startswith('linux') else ''\n"
         "print(json.dumps({'llama_cpp': 'llama_cpp' in sys.modules, 'libgomp': 'libgomp' in maps}))"
     )
@@ -38,7 +38,7 @@ def test_the_model_modules_do_not_load_llama_cpp_on_import():
 def test_the_worker_sets_a_short_spin_before_llama_cpp_loads():
     seen = run_fresh(
         "import json, os\n"
-        "from grove_tui.models.worker import tune_openmp_for_llama\n"
+        "from grove_tui.llm.worker import tune_openmp_for_llama\n"
         "tune_openmp_for_llama()\n"
         "import llama_cpp\n"
         "print(json.dumps({'spin': os.environ.get('GOMP_SPINCOUNT'), 'policy': os.environ.get('OMP_WAIT_POLICY')}))"
@@ -50,7 +50,7 @@ def test_the_worker_sets_a_short_spin_before_llama_cpp_loads():
 def test_a_users_own_spin_setting_wins():
     seen = run_fresh(
         "import json, os\n"
-        "from grove_tui.models.worker import tune_openmp_for_llama\n"
+        "from grove_tui.llm.worker import tune_openmp_for_llama\n"
         "tune_openmp_for_llama()\n"
         "print(json.dumps({'spin': os.environ.get('GOMP_SPINCOUNT')}))",
         {"GOMP_SPINCOUNT": "123"},

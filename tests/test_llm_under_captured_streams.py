@@ -20,8 +20,8 @@ def test_worker_starts_when_stderr_has_no_file_descriptor():
             def isatty(self): return True
             def fileno(self): return -1
 
-        from grove_tui.models.llm import LocalLLM
-        from grove_tui.models.registry import resolve_models
+        from grove_tui.llm.local import LocalLLM
+        from grove_tui.llm.registry import resolve_models
 
         choice = resolve_models(None, None, None)["bt"]
         real = sys.stderr

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from grove_tui.engine.force_metrics import force_series
-from grove_tui.engine.metrics import (
+from grove_tui.analysis.force_metrics import force_series
+from grove_tui.analysis.metrics import (
     MetricsError,
     SimEvent,
     Trajectories,

@@ -13,12 +13,12 @@ from click.testing import CliRunner
 from helpers.tiny_qwen3 import build_tiny_qwen3
 
 from grove_tui.cli import main as grove
-from grove_tui.models import pull as pull_module
-from grove_tui.models.embedded import EMBEDDED_MODEL, embedded_model_path
-from grove_tui.models.errors import ModelError
-from grove_tui.models.gguf_info import read_gguf_info
-from grove_tui.models.pull import CatalogEntry, pull_model
-from grove_tui.models.registry import list_models, resolve_models
+from grove_tui.llm import pull as pull_module
+from grove_tui.llm.embedded import EMBEDDED_MODEL, embedded_model_path
+from grove_tui.llm.errors import ModelError
+from grove_tui.llm.gguf_info import read_gguf_info
+from grove_tui.llm.pull import CatalogEntry, pull_model
+from grove_tui.llm.registry import list_models, resolve_models
 
 
 @pytest.fixture()

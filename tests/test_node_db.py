@@ -8,8 +8,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from grove_tui.engine.bt.manifest import NODES
-from grove_tui.engine.node_docs import (
+from grove_tui.bt.manifest import NODES
+from grove_tui.generation.node_docs import (
     check_node_documents,
     load_node_database,
     load_templates,
@@ -18,7 +18,7 @@ from grove_tui.engine.node_docs import (
     sync_node_documents,
     template_problems,
 )
-from grove_tui.engine.paths import node_db_dir
+from grove_tui.paths import node_db_dir
 
 
 @pytest.fixture

@@ -15,11 +15,11 @@ import pytest
 from click.testing import CliRunner
 
 from grove_tui.cli import main
-from grove_tui.engine.atomic import OutputError, atomic_directory, check_output_dir, write_bytes_atomic
-from grove_tui.engine.bundle import RUN_FILES, is_bundle, replace_run_outputs, write_bundle
-from grove_tui.engine.draft import DraftGroup, DraftNode
-from grove_tui.engine.jobs import read_jobs
-from grove_tui.engine.world import parse_world
+from grove_tui.files import OutputError, atomic_directory, check_output_dir, write_bytes_atomic
+from grove_tui.scenario.bundle import RUN_FILES, is_bundle, replace_run_outputs, write_bundle
+from grove_tui.generation.draft import DraftGroup, DraftNode
+from grove_tui.services.jobs import read_jobs
+from grove_tui.world import parse_world
 from helpers.clinic import CLINIC
 
 EXIT_BAD_INPUT = 2

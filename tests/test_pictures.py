@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 from helpers.handmade import build_hospital_bundle
 
-from grove_tui.engine.pictures import PictureError, draw_scenario, render_scenario_text
-from grove_tui.engine.scenario import Scenario
-from grove_tui.engine.world import load_world
+from grove_tui.exports.pictures import PictureError, draw_scenario, render_scenario_text
+from grove_tui.scenario.model import Scenario
+from grove_tui.world import load_world
 
 pytest.importorskip("matplotlib")
 

@@ -12,15 +12,15 @@ import pytest
 from lxml import etree
 from shapely.geometry import LineString, MultiLineString
 
-from grove_tui.engine.bt.xml import check_tree_file
-from grove_tui.engine.bundle import load_bundle, load_report, write_bundle
-from grove_tui.engine.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
-from grove_tui.engine.presets import PromptError, load_preset
-from grove_tui.engine.retrieval import NodeRetriever
-from grove_tui.engine.simulation import Simulation
-from grove_tui.engine.world import load_world
-from grove_tui.models.embedded import embedded_model_path
-from grove_tui.models.llm import LocalLLM
+from grove_tui.bt.xml import check_tree_file
+from grove_tui.scenario.bundle import load_bundle, load_report, write_bundle
+from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
+from grove_tui.generation.presets import PromptError, load_preset
+from grove_tui.generation.retrieval import NodeRetriever
+from grove_tui.simulation.simulation import Simulation
+from grove_tui.world import load_world
+from grove_tui.llm.embedded import embedded_model_path
+from grove_tui.llm.local import LocalLLM
 
 pytestmark = pytest.mark.slow
 
@@ -185,7 +185,7 @@ def test_bad_prompts_fail_clearly_and_write_nothing(llm, retriever, tmp_path, pr
 def test_cancel_before_start_stops_at_the_first_stage(llm, retriever):
     import threading
 
-    from grove_tui.models.errors import GenerationCancelled
+    from grove_tui.llm.errors import GenerationCancelled
 
     cancel = threading.Event()
     cancel.set()
@@ -201,7 +201,7 @@ def test_generated_bundle_exports_to_hunavsim_and_loads_in_btcpp(generated, key,
     import yaml
     from helpers.btcpp import load_in_btcpp
 
-    from grove_tui.engine.export_hunav import GROVE_ONLY, export_hunav
+    from grove_tui.exports.hunav import GROVE_ONLY, export_hunav
 
     _, result, bundle, _, _ = generated[key]
     out = export_hunav(bundle, tmp_path / "hunav")

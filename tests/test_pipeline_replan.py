@@ -10,16 +10,16 @@ from typing import Any
 
 import pytest
 
-from grove_tui.engine.bt.xml import parse_tree_text
-from grove_tui.engine.bundle import write_bundle
-from grove_tui.engine.pipeline import GenerationPipeline, StageFinished, StageStarted
-from grove_tui.engine.planner import ThetaStarPlanner
-from grove_tui.engine.planning import goals_from_tree
-from grove_tui.engine.presets import GenerationError, PromptError, load_preset
-from grove_tui.engine.retrieval import NodeRetriever
-from grove_tui.engine.world import parse_world
-from grove_tui.models.errors import GenerationCancelled
-from grove_tui.models.llm import Generation
+from grove_tui.bt.xml import parse_tree_text
+from grove_tui.scenario.bundle import write_bundle
+from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted
+from grove_tui.navigation.theta_star import ThetaStarPlanner
+from grove_tui.generation.planning import goals_from_tree
+from grove_tui.generation.presets import GenerationError, PromptError, load_preset
+from grove_tui.generation.retrieval import NodeRetriever
+from grove_tui.world import parse_world
+from grove_tui.llm.errors import GenerationCancelled
+from grove_tui.llm.local import Generation
 from helpers.clinic import CLINIC
 
 PROMPT = "Ten patients queue at the pharmacy counter while two nurses walk from the lobby to the cafeteria"

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES
-from grove_tui.engine.pipeline import STAGES, world_reference
-from grove_tui.engine.presets import load_preset
-from grove_tui.engine.quantities import extract_quantities
-from grove_tui.engine.retrieval import NodeRetriever, RetrievedNode
-from grove_tui.engine.rois import select_rois
-from grove_tui.engine.synthesis import offered_nodes, prepare_request
-from grove_tui.engine.world import load_world
+from grove_tui.bt.manifest import NODES
+from grove_tui.generation.pipeline import STAGES, world_reference
+from grove_tui.generation.presets import load_preset
+from grove_tui.language.quantities import extract_quantities
+from grove_tui.generation.retrieval import NodeRetriever, RetrievedNode
+from grove_tui.generation.rois import select_rois
+from grove_tui.generation.synthesis import offered_nodes, prepare_request
+from grove_tui.world import load_world
 
 
 @pytest.fixture(scope="module")
@@ -79,7 +79,7 @@ def test_vanilla_prompt_has_the_whole_world_and_every_node(hospital, retriever):
 def test_stage_names_and_world_reference(tmp_path):
     assert STAGES == ("rois", "retrieval", "synthesis", "postprocess", "planning")
     assert world_reference(load_world("office")) == "office"
-    from grove_tui.engine.paths import worlds_dir
+    from grove_tui.paths import worlds_dir
 
     copy = tmp_path / "my_office.yaml"
     copy.write_text((worlds_dir() / "office.yaml").read_text())
@@ -87,7 +87,7 @@ def test_stage_names_and_world_reference(tmp_path):
 
 
 def test_retrieved_templates_with_unoffered_nodes_are_left_out(hospital, retriever):
-    from grove_tui.engine.synthesis import choose_documents
+    from grove_tui.generation.synthesis import choose_documents
 
     preset = load_preset("emergency")
     retrieved = [RetrievedNode("conversation_circle", "template", 0.9, "talk", ("Converse", "GoTo")),

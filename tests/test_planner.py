@@ -11,9 +11,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from grove_tui.engine.errors import GroveError
-from grove_tui.engine.grid import OccupancyGrid, build_grid
-from grove_tui.engine.planner import (
+from grove_tui.errors import GroveError
+from grove_tui.navigation.grid import OccupancyGrid, build_grid
+from grove_tui.navigation.theta_star import (
     PlanCache,
     PlanningError,
     ThetaStarPlanner,
@@ -22,7 +22,7 @@ from grove_tui.engine.planner import (
     path_length,
     sight_maps,
 )
-from grove_tui.engine.world import list_worlds, load_world
+from grove_tui.world import list_worlds, load_world
 
 WORLDS = list_worlds()
 

@@ -8,15 +8,15 @@ import numpy as np
 import pytest
 from lxml import etree
 
-from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.planner import ThetaStarPlanner, segment_is_free
-from grove_tui.engine.planning import RobotRequest, goals_from_tree, plan_operational
-from grove_tui.engine.postprocess import postprocess
-from grove_tui.engine.presets import GenerationError, load_preset
-from grove_tui.engine.quantities import extract_quantities
-from grove_tui.engine.rois import select_rois
-from grove_tui.engine.world import parse_world
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.navigation.grid import build_grid
+from grove_tui.navigation.theta_star import ThetaStarPlanner, segment_is_free
+from grove_tui.generation.planning import RobotRequest, goals_from_tree, plan_operational
+from grove_tui.generation.postprocess import postprocess
+from grove_tui.generation.presets import GenerationError, load_preset
+from grove_tui.language.quantities import extract_quantities
+from grove_tui.generation.rois import select_rois
+from grove_tui.world import parse_world
 from helpers.clinic import CLINIC
 
 

@@ -7,13 +7,13 @@ import math
 import pytest
 from lxml import etree
 
-from grove_tui.engine.draft import Draft, DraftGroup, DraftNode
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.postprocess import GOAL_SPACING, SPAWN_SPACING, postprocess
-from grove_tui.engine.presets import GenerationError, load_preset
-from grove_tui.engine.quantities import extract_quantities
-from grove_tui.engine.rois import select_rois
-from grove_tui.engine.world import parse_world
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.navigation.grid import build_grid
+from grove_tui.generation.postprocess import GOAL_SPACING, SPAWN_SPACING, postprocess
+from grove_tui.generation.presets import GenerationError, load_preset
+from grove_tui.language.quantities import extract_quantities
+from grove_tui.generation.rois import select_rois
+from grove_tui.world import parse_world
 from helpers.clinic import CLINIC
 
 

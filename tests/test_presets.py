@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from grove_tui.engine.presets import PresetError, list_presets, load_preset, preset_from_dict
-from grove_tui.engine.paths import presets_dir
+from grove_tui.generation.presets import PresetError, list_presets, load_preset, preset_from_dict
+from grove_tui.paths import presets_dir
 
 SHIPPED = ("emergency", "queuing", "normal", "vanilla")
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.engine.quantities import extract_quantities, lemma, semantic_tokens
+from grove_tui.language.quantities import extract_quantities, lemma, semantic_tokens
 
 
 def counts(prompt: str) -> list[tuple[int, str]]:
@@ -74,7 +74,7 @@ def test_semantic_tokens_drop_stopwords_and_numbers_but_keep_place_words():
 
 
 def test_a_collective_without_a_size_means_a_plausible_group_not_one_person():
-    from grove_tui.engine.quantities import extract_quantities
+    from grove_tui.language.quantities import extract_quantities
 
     (family,) = extract_quantities("a family walks to the exit")
     assert family.count == 4 and not family.exact
@@ -85,7 +85,7 @@ def test_a_collective_without_a_size_means_a_plausible_group_not_one_person():
 
 
 def test_a_bare_number_after_a_counted_phrase_borrows_its_noun():
-    from grove_tui.engine.quantities import extract_quantities
+    from grove_tui.language.quantities import extract_quantities
 
     counts = extract_quantities("twenty people in the cafeteria and ten in the pharmacy evacuate")
     assert [(q.count, q.noun) for q in counts] == [(20, "person"), (10, "person")]
@@ -94,7 +94,7 @@ def test_a_bare_number_after_a_counted_phrase_borrows_its_noun():
 
 
 def test_a_bare_plural_subject_is_an_implied_group():
-    from grove_tui.engine.quantities import extract_quantities
+    from grove_tui.language.quantities import extract_quantities
 
     (implied,) = extract_quantities("patients queue at the pharmacy")
     assert implied.implied and not implied.exact and implied.noun == "patient"

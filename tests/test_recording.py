@@ -8,8 +8,8 @@ import tracemalloc
 import numpy as np
 import pytest
 
-from grove_tui.engine.crowd import Crowd
-from grove_tui.engine.recording import ROW_DTYPE, RecordingError, TrajectoryRecorder
+from grove_tui.crowd.crowd import Crowd
+from grove_tui.crowd.recording import ROW_DTYPE, RecordingError, TrajectoryRecorder
 
 pedpy = pytest.importorskip("pedpy")
 

@@ -12,9 +12,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES
-from grove_tui.engine.paths import node_db_dir
-from grove_tui.engine.retrieval import (
+from grove_tui.bt.manifest import NODES
+from grove_tui.paths import node_db_dir
+from grove_tui.generation.retrieval import (
     EMBEDDING_FUNCTION_NAME,
     NodeRetriever,
     RetrievalError,
@@ -192,7 +192,7 @@ def test_a_foreign_collection_is_rebuilt_with_a_warning(small_node_db: Path, tmp
     import chromadb
     from chromadb.config import Settings
 
-    from grove_tui.engine.retrieval import COLLECTION, embedding_function_class
+    from grove_tui.generation.retrieval import COLLECTION, embedding_function_class
 
     index = tmp_path / "index"
     client = chromadb.PersistentClient(path=str(index), settings=Settings(anonymized_telemetry=False, allow_reset=True))
@@ -233,7 +233,7 @@ def test_lexical_matching_is_stemmed_and_order_free():
 
 
 def test_query_embeddings_match_document_embeddings():
-    from grove_tui.engine.retrieval import embed_query, embed_texts
+    from grove_tui.generation.retrieval import embed_query, embed_texts
 
     texts = ["evacuate", "ten patients queue at the pharmacy counter",
              "a family of four wanders around the lobby together while a curious child approaches the robot " * 8]
@@ -253,7 +253,7 @@ def test_two_processes_building_one_index_both_succeed(small_node_db: Path, tmp_
     code = ("import socket, sys\n"
             "def _blocked(*args, **kwargs): raise OSError('network blocked in test child')\n"
             "socket.socket.connect = socket.create_connection = socket.getaddrinfo = _blocked\n"
-            "from grove_tui.engine.retrieval import NodeRetriever;"
+            "from grove_tui.generation.retrieval import NodeRetriever;"
             "r = NodeRetriever(sys.argv[1], sys.argv[2]); s = r.ensure_index();"
             "print(s.built, r.retrieve('patients queue at the counter', 'queuing', k=1)[0].name)")
     root = Path(__file__).resolve().parents[1]

@@ -6,9 +6,9 @@ import math
 
 import pytest
 
-from grove_tui.engine.presets import GenerationError, load_preset
-from grove_tui.engine.rois import RoIMatcher, describe_selection, select_rois
-from grove_tui.engine.world import list_worlds, load_world, parse_world
+from grove_tui.generation.presets import GenerationError, load_preset
+from grove_tui.generation.rois import RoIMatcher, describe_selection, select_rois
+from grove_tui.world import list_worlds, load_world, parse_world
 from helpers.clinic import CLINIC
 
 
@@ -123,7 +123,7 @@ def test_selection_record_is_json_ready(clinic, matcher):
 
 
 def test_qualified_places_are_not_unknown_places(clinic):
-    from grove_tui.engine.rois import RoIMatcher
+    from grove_tui.generation.rois import RoIMatcher
 
     matcher = RoIMatcher(clinic)
     assert matcher.unknown_places("everyone evacuates through the nearest exit") == []

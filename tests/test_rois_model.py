@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.engine.presets import load_preset
-from grove_tui.engine.rois import ambiguous_mentions, refine_with_model, select_rois
-from grove_tui.engine.world import load_world
-from grove_tui.models.embedded import embedded_model_path
-from grove_tui.models.llm import LocalLLM
+from grove_tui.generation.presets import load_preset
+from grove_tui.generation.rois import ambiguous_mentions, refine_with_model, select_rois
+from grove_tui.world import load_world
+from grove_tui.llm.embedded import embedded_model_path
+from grove_tui.llm.local import LocalLLM
 
 
 @pytest.fixture(scope="module")

@@ -9,8 +9,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from grove_tui.engine import sfm
-from grove_tui.engine.crowd import Crowd, SFMParams
+from grove_tui.crowd import sfm
+from grove_tui.crowd.crowd import Crowd, SFMParams
 
 
 def lightsfm_step(pos, vel, v0, radius, goals, goal_radius, group, walls, params, factors, dt):
@@ -211,7 +211,7 @@ def test_corner_is_felt_once_not_once_per_edge():
 
 
 def test_field_mode_steers_along_the_planners_sampled_direction():
-    from grove_tui.engine.velocity_field import VelocityField
+    from grove_tui.navigation.velocity_field import VelocityField
 
     rng = np.random.default_rng(1)
     vectors = rng.normal(size=(6, 8, 2))

@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from grove_tui.engine.bt.xml import parse_tree_text
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.planner import ThetaStarPlanner
-from grove_tui.engine.scenario import AgentSpec, RobotSpec
-from grove_tui.engine.simulation import Simulation
-from grove_tui.engine.world import parse_world
+from grove_tui.bt.xml import parse_tree_text
+from grove_tui.navigation.grid import build_grid
+from grove_tui.navigation.theta_star import ThetaStarPlanner
+from grove_tui.scenario.model import AgentSpec, RobotSpec
+from grove_tui.simulation.simulation import Simulation
+from grove_tui.world import parse_world
 from test_simulation_scenarios import HALL, tree_xml  # pytest puts this directory on sys.path
 
 BODIES = [

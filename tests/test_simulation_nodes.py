@@ -8,9 +8,9 @@ import math
 import numpy as np
 import pytest
 
-from grove_tui.engine.bt.manifest import NODES
-from grove_tui.engine.bt.nodes import LEAF_CLASSES
-from grove_tui.engine.scenario import RobotSpec
+from grove_tui.bt.manifest import NODES
+from grove_tui.bt.registry import LEAF_CLASSES
+from grove_tui.scenario.model import RobotSpec
 from test_simulation_scenarios import agent, hall, running, simulate  # noqa: F401  (hall is a fixture)
 
 # literal ports for nodes that need more than their defaults in this small world

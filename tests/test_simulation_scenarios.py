@@ -11,13 +11,13 @@ import math
 import numpy as np
 import pytest
 
-from grove_tui.engine.bt.nodes_grove import EXIT_RADIUS
-from grove_tui.engine.bt.xml import parse_tree_text
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.planner import ThetaStarPlanner
-from grove_tui.engine.scenario import AgentSpec, RobotSpec, Scenario
-from grove_tui.engine.simulation import REACTION_DEFAULTS, Simulation
-from grove_tui.engine.world import parse_world
+from grove_tui.bt.leaves.grove import EXIT_RADIUS
+from grove_tui.bt.xml import parse_tree_text
+from grove_tui.navigation.grid import build_grid
+from grove_tui.navigation.theta_star import ThetaStarPlanner
+from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
+from grove_tui.simulation.simulation import REACTION_DEFAULTS, Simulation
+from grove_tui.world import parse_world
 
 HALL = """
 name: bt_test_hall
@@ -249,7 +249,7 @@ def test_reactions_trigger_at_their_distance_and_end_after_their_duration(hall, 
 
 
 def test_impassive_agents_see_the_robot_as_an_obstacle(hall):
-    from grove_tui.engine.crowd import ROBOT_AS_OBSTACLE
+    from grove_tui.crowd.crowd import ROBOT_AS_OBSTACLE
 
     sim = simulate(hall, [agent(1, (6, 6), behavior="Impassive")], ['<Wait duration="5"/>'])
     assert sim.crowd.robot_interaction[0] == ROBOT_AS_OBSTACLE
@@ -258,7 +258,7 @@ def test_impassive_agents_see_the_robot_as_an_obstacle(hall):
 # ---- evacuation -------------------------------------------------------------------------------
 
 def test_follow_velocity_field_agents_leave_through_the_exit(hall):
-    from grove_tui.engine.velocity_field import build_velocity_field
+    from grove_tui.navigation.velocity_field import build_velocity_field
 
     world, grid, planner = hall
     exit_point = world.roi("exit_door").point
@@ -284,7 +284,7 @@ def test_follow_velocity_field_agents_leave_through_the_exit(hall):
 
 def test_an_agent_told_to_leave_twice_is_evacuated_once(hall):
     """A small model's tree may repeat FollowVelocityField; the counter showed 3 evacuations per person."""
-    from grove_tui.engine.velocity_field import build_velocity_field
+    from grove_tui.navigation.velocity_field import build_velocity_field
 
     world, grid, planner = hall
     exit_point = world.roi("exit_door").point

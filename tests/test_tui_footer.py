@@ -13,9 +13,9 @@ from test_app_support import (  # noqa: F401  (fixtures)
 from test_tui_snapshots import PROMPT, setup_ready
 from textual.widgets._footer import FooterKey
 
-from grove_tui.app import GroveApp
-from grove_tui.screens.inspect import InspectScreen
-from grove_tui.screens.simulation import SimulationScreen
+from grove_tui.tui.app import GroveApp
+from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.simulation import SimulationScreen
 
 pytestmark = pytest.mark.anyio
 

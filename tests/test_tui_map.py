@@ -7,8 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 import pytest
 
-from grove_tui.engine.world import parse_world
-from grove_tui.screens.widgets import map_raster as mr
+from grove_tui.world import parse_world
+from grove_tui.tui.widgets import map_raster as mr
 
 WORLD = """
 name: two_rooms

@@ -18,14 +18,14 @@ from test_app_support import (  # noqa: F401  (fixtures)
 )
 from textual.widgets import DataTable, Input, Static
 
-from grove_tui.app import GroveApp
-from grove_tui.screens.generation import GenerationScreen
-from grove_tui.screens.help import HelpScreen
-from grove_tui.screens.inspect import InspectScreen
-from grove_tui.screens.setup import SetupScreen
-from grove_tui.screens.simulation import SimulationScreen
-from grove_tui.screens.widgets.bt_tree import BTTree
-from grove_tui.screens.widgets.map_view import MapView
+from grove_tui.tui.app import GroveApp
+from grove_tui.tui.screens.generation import GenerationScreen
+from grove_tui.tui.screens.help import HelpScreen
+from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.setup import SetupScreen
+from grove_tui.tui.screens.simulation import SimulationScreen
+from grove_tui.tui.widgets.bt_tree import BTTree
+from grove_tui.tui.widgets.map_view import MapView
 
 SIZES = [pytest.param((80, 24), id="80x24"), pytest.param((120, 40), id="120x40")]
 PROMPT = "six patients queue at the pharmacy counter"

@@ -8,10 +8,10 @@ import numba
 import numpy as np
 import pytest
 
-from grove_tui.engine.grid import OccupancyGrid, build_grid
-from grove_tui.engine.planner import PlanCache, PlanningError, ThetaStarPlanner
-from grove_tui.engine.velocity_field import VelocityField, build_velocity_field, sample_field
-from grove_tui.engine.world import list_worlds, load_world
+from grove_tui.navigation.grid import OccupancyGrid, build_grid
+from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
+from grove_tui.navigation.velocity_field import VelocityField, build_velocity_field, sample_field
+from grove_tui.world import list_worlds, load_world
 
 ARRIVED, ENTERED_OBSTACLE, STALLED, TOO_LONG = 0, 1, 2, 3
 

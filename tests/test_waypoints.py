@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from lxml import etree
 
-from grove_tui.engine.grid import OccupancyGrid, build_grid
-from grove_tui.engine.planner import PlanningError, ThetaStarPlanner
-from grove_tui.engine.waypoints import format_waypoints, inject_waypoints, parse_waypoints
-from grove_tui.engine.world import load_world
+from grove_tui.navigation.grid import OccupancyGrid, build_grid
+from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
+from grove_tui.generation.waypoints import format_waypoints, inject_waypoints, parse_waypoints
+from grove_tui.world import load_world
 
 
 def two_rooms() -> OccupancyGrid:

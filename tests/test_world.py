@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 from shapely.geometry import Point
 
-from grove_tui.engine.errors import GroveError
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.world import (
+from grove_tui.errors import GroveError
+from grove_tui.navigation.grid import build_grid
+from grove_tui.world import (
     Door,
     Entity,
     WorldError,

@@ -7,8 +7,8 @@ from pathlib import Path
 from click.testing import CliRunner
 
 from grove_tui.cli import main
-from grove_tui.engine.world import load_world
-from grove_tui.engine.world_render import WorldCanvas, fit_projection, render_world_text
+from grove_tui.world import load_world
+from grove_tui.world.render import WorldCanvas, fit_projection, render_world_text
 
 BAD = Path(__file__).parent / "data" / "worlds_bad"
 ROOT = Path(__file__).parents[1]

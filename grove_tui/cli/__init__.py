@@ -63,6 +63,6 @@ def main(ctx: click.Context, model: str | None, roi_model: str | None, bt_model:
     ctx.ensure_object(dict)
     ctx.obj.update(model=model, roi_model=roi_model, bt_model=bt_model)
     if ctx.invoked_subcommand is None:
-        from grove_tui.app import run_app
+        from grove_tui.tui.app import run_app
 
         sys.exit(run_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))

@@ -17,7 +17,7 @@ def bt() -> None:
 @click.option("--preset", default=None, help="Only the nodes the model may use in this preset.")
 def manifest(as_list: bool, preset: str | None) -> None:
     """Print every node as a Groot2/BehaviorTree.CPP v4 TreeNodesModel."""
-    from grove_tui.engine.bt.manifest import NODES, nodes_for_preset, treenodes_model_xml
+    from grove_tui.bt.manifest import NODES, nodes_for_preset, treenodes_model_xml
 
     if not as_list and preset is None:
         click.echo(treenodes_model_xml(), nl=False)
@@ -36,7 +36,7 @@ def validate(files: tuple[str, ...]) -> None:
 
     Exit status 1 when any file has a problem.
     """
-    from grove_tui.engine.bt.xml import check_tree_file
+    from grove_tui.bt.xml import check_tree_file
 
     bad = 0
     for path in files:

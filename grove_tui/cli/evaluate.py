@@ -25,8 +25,8 @@ from rich.table import Table
 def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_ids: str | None,
              seconds: float) -> None:
     """Prompt alignment, plausibility and cost of every case, for GROVE and the baselines."""
-    from grove_tui.engine.errors import GroveError
-    from grove_tui.engine.evaluation import (
+    from grove_tui.errors import GroveError
+    from grove_tui.analysis.evaluation import (
         grounding_score,
         load_suite,
         plausibility_score,

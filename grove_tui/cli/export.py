@@ -11,7 +11,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from grove_tui.engine.errors import GroveError
+from grove_tui.errors import GroveError
 
 EXIT_BAD_INPUT = 2
 
@@ -44,7 +44,7 @@ def export() -> None:
 def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grove_nodes: bool, simulator: str,
                          base_name: str | None) -> None:
     """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
-    from grove_tui.engine.export_hunav import export_hunav
+    from grove_tui.exports.hunav import export_hunav
 
     try:
         result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name,
@@ -68,7 +68,7 @@ def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grov
               help="Directory for trajectories.csv and trajectories.sqlite (PedPy / JuPedSim schema).")
 def export_trajectories_command(bundle: Path, out_dir: Path) -> None:
     """Trajectories as CSV and as a JuPedSim sqlite file that PedPy loads, with the walkable area."""
-    from grove_tui.engine.export_trajectories import export_trajectories
+    from grove_tui.exports.trajectories import export_trajectories
 
     try:
         paths = export_trajectories(bundle, out_dir)
@@ -90,7 +90,7 @@ def _format(value: float) -> str:
 @click.option("--json", "as_json", is_flag=True, help="Print the metrics as JSON instead of tables.")
 def metrics(bundle: Path, as_json: bool) -> None:
     """Robot (HuNavSim evaluator) and crowd metrics of a simulated bundle; also writes metrics.json."""
-    from grove_tui.engine.bundle_metrics import bundle_metrics
+    from grove_tui.analysis.bundle_metrics import bundle_metrics
 
     try:
         report, path = bundle_metrics(bundle)
@@ -120,9 +120,9 @@ def metrics(bundle: Path, as_json: bool) -> None:
 @click.option("--width", default=None, type=int, help="Terminal drawing width in columns.")
 def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
-    from grove_tui.engine.pictures import draw_scenario, render_scenario_text
-    from grove_tui.engine.scenario import Scenario
-    from grove_tui.engine.world import load_world
+    from grove_tui.exports.pictures import draw_scenario, render_scenario_text
+    from grove_tui.scenario.model import Scenario
+    from grove_tui.world import load_world
 
     try:
         scenario = Scenario.load(bundle / "scenario.yaml")

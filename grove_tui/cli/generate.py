@@ -40,12 +40,12 @@ def _root_options(ctx: click.Context) -> dict[str, Any]:
 
 def exit_code_for(error: BaseException) -> int:
     """The documented exit code for an exception raised while generating."""
-    from grove_tui.engine.atomic import OutputError
-    from grove_tui.engine.bundle import BundleError
-    from grove_tui.engine.jobs import JobFileError
-    from grove_tui.engine.presets import PresetError, PromptError
-    from grove_tui.engine.world import WorldError
-    from grove_tui.models.errors import GenerationCancelled, ModelError
+    from grove_tui.files import OutputError
+    from grove_tui.scenario.bundle import BundleError
+    from grove_tui.services.jobs import JobFileError
+    from grove_tui.generation.presets import PresetError, PromptError
+    from grove_tui.world import WorldError
+    from grove_tui.llm.errors import GenerationCancelled, ModelError
 
     if isinstance(error, (GenerationCancelled, KeyboardInterrupt)):
         return EXIT_CANCELLED
@@ -79,8 +79,8 @@ class Models:
 
 
 def load_models(roi_model: str | None, bt_model: str | None, model: str | None) -> Models:
-    from grove_tui.models.llm import LocalLLM
-    from grove_tui.models.registry import resolve_models
+    from grove_tui.llm.local import LocalLLM
+    from grove_tui.llm.registry import resolve_models
 
     choices = resolve_models(roi_model, bt_model, model)
     bt = LocalLLM(choices["bt"].path, role="bt", n_ctx=choices["bt"].n_ctx)
@@ -102,7 +102,7 @@ class Progress:
         self._status: Any = None
 
     def __call__(self, event: Any) -> None:
-        from grove_tui.engine.pipeline import StageFinished, StageStarted, TokenStreamed
+        from grove_tui.generation.pipeline import StageFinished, StageStarted, TokenStreamed
 
         if isinstance(event, StageStarted):
             self.tokens = 0
@@ -132,10 +132,10 @@ def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None
 
     The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
     """
-    from grove_tui.engine.bundle import load_bundle, replace_run_outputs
-    from grove_tui.engine.bundle_metrics import bundle_metrics
-    from grove_tui.engine.metrics import write_events
-    from grove_tui.engine.simulation import Simulation
+    from grove_tui.scenario.bundle import load_bundle, replace_run_outputs
+    from grove_tui.analysis.bundle_metrics import bundle_metrics
+    from grove_tui.scenario.events import write_events
+    from grove_tui.simulation.simulation import Simulation
 
     scenario, _, _, _ = load_bundle(bundle)
     sim = Simulation.from_scenario(scenario, bundle)
@@ -184,8 +184,8 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
 
 
 def _validate_inputs(world: str, preset: str, prompt: str) -> tuple[Any, Any]:
-    from grove_tui.engine.presets import PromptError, load_preset
-    from grove_tui.engine.world import load_world
+    from grove_tui.generation.presets import PromptError, load_preset
+    from grove_tui.world import load_world
 
     if not prompt or not prompt.strip():
         raise PromptError("the prompt is empty: describe the people and what they do")
@@ -216,12 +216,12 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
              simulate_seconds: float | None, out_dir: str, overwrite: bool, roi_model: str | None, bt_model: str | None,
              robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
-    from grove_tui.engine.atomic import check_output_dir
-    from grove_tui.engine.bundle import WHAT, is_bundle, write_bundle
-    from grove_tui.engine.errors import GroveError
-    from grove_tui.engine.pipeline import GenerationPipeline
-    from grove_tui.engine.planning import RobotRequest
-    from grove_tui.engine.retrieval import NodeRetriever
+    from grove_tui.files import check_output_dir
+    from grove_tui.scenario.bundle import WHAT, is_bundle, write_bundle
+    from grove_tui.errors import GroveError
+    from grove_tui.generation.pipeline import GenerationPipeline
+    from grove_tui.generation.planning import RobotRequest
+    from grove_tui.generation.retrieval import NodeRetriever
 
     err = _err()
     options = _root_options(ctx)
@@ -279,12 +279,12 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
     ones run. A failed job is reported and the batch goes on. Exit code: 2 when any line was refused,
     else 3 when any job failed, else 0.
     """
-    from grove_tui.engine.atomic import check_output_dir
-    from grove_tui.engine.bundle import WHAT, is_bundle, write_bundle
-    from grove_tui.engine.errors import GroveError
-    from grove_tui.engine.jobs import read_jobs
-    from grove_tui.engine.pipeline import GenerationPipeline
-    from grove_tui.engine.retrieval import NodeRetriever
+    from grove_tui.files import check_output_dir
+    from grove_tui.scenario.bundle import WHAT, is_bundle, write_bundle
+    from grove_tui.errors import GroveError
+    from grove_tui.services.jobs import read_jobs
+    from grove_tui.generation.pipeline import GenerationPipeline
+    from grove_tui.generation.retrieval import NodeRetriever
 
     err, out = _err(), _out()
     options = _root_options(ctx)
@@ -340,12 +340,12 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
 
 def _check_jobs(jobs: list[Any], out_dir: Path, overwrite: bool) -> tuple[list[Any], list[Any]]:
     """Jobs whose world, preset and output folder are usable; the others as problems, before any model loads."""
-    from grove_tui.engine.atomic import check_output_dir
-    from grove_tui.engine.bundle import WHAT, is_bundle
-    from grove_tui.engine.errors import GroveError
-    from grove_tui.engine.jobs import JobProblem
-    from grove_tui.engine.presets import load_preset
-    from grove_tui.engine.world import load_world
+    from grove_tui.files import check_output_dir
+    from grove_tui.scenario.bundle import WHAT, is_bundle
+    from grove_tui.errors import GroveError
+    from grove_tui.services.jobs import JobProblem
+    from grove_tui.generation.presets import load_preset
+    from grove_tui.world import load_world
 
     check_output_dir(out_dir, owned=lambda _p: True, what="batch folder", overwrite=True)
     known: dict[tuple[str, str], str] = {}
@@ -383,7 +383,7 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 @click.pass_context
 def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
-    from grove_tui.engine.errors import GroveError
+    from grove_tui.errors import GroveError
 
     err, out = _err(), _out()
     try:

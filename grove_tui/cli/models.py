@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from grove_tui.models.errors import ModelError
+from grove_tui.llm.errors import ModelError
 
 
 def _console() -> Console:
@@ -29,8 +29,8 @@ def models() -> None:
 @click.pass_context
 def list_command(ctx: click.Context) -> None:
     """Show every model found (models dir, embedded, chosen paths) and the role using it."""
-    from grove_tui.engine.paths import models_dir
-    from grove_tui.models.registry import list_models
+    from grove_tui.paths import models_dir
+    from grove_tui.llm.registry import list_models
 
     options = (ctx.find_root().obj or {}) if ctx.find_root().obj is not None else {}
     found, choices = list_models(options.get("roi_model"), options.get("bt_model"), options.get("model"))
@@ -60,7 +60,7 @@ def list_command(ctx: click.Context) -> None:
 @click.option("--force", is_flag=True, help="Download again even if the file is already there.")
 def pull_command(name: str, endpoint: str | None, force: bool) -> None:
     """Download an official Qwen3 GGUF (qwen3-0.6b, qwen3-1.7b, qwen3-4b) into the models directory."""
-    from grove_tui.models.pull import CATALOG, download_url, pull_model
+    from grove_tui.llm.pull import CATALOG, download_url, pull_model
 
     entry = CATALOG.get(name)
     if entry is None:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from grove_tui.engine.errors import GroveError
+from grove_tui.errors import GroveError
 
 _INDEX_OPTION = click.option("--index-dir", type=click.Path(file_okay=False, path_type=Path), default=None,
                              help="Chroma index directory (default: <cache>/chroma).")
@@ -30,8 +30,8 @@ def rag() -> None:
 @click.option("--check", is_flag=True, help="Only report documents that are missing or stale; exit 1 if any.")
 def sync(node_db: Path | None, check: bool) -> None:
     """Generate node_db/nodes/<Name>.md from the node manifest (and node_db/notes.yaml)."""
-    from grove_tui.engine import paths
-    from grove_tui.engine.node_docs import check_node_documents, sync_node_documents
+    from grove_tui import paths
+    from grove_tui.generation.node_docs import check_node_documents, sync_node_documents
 
     root = node_db or paths.node_db_dir()
     try:
@@ -59,7 +59,7 @@ def sync(node_db: Path | None, check: bool) -> None:
 @click.option("--force", is_flag=True, help="Rebuild even when the index is up to date.")
 def build(node_db: Path | None, index_dir: Path | None, force: bool) -> None:
     """Build (or confirm) the retrieval index."""
-    from grove_tui.engine.retrieval import NodeRetriever
+    from grove_tui.generation.retrieval import NodeRetriever
 
     try:
         retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
@@ -80,7 +80,7 @@ def build(node_db: Path | None, index_dir: Path | None, force: bool) -> None:
 @_INDEX_OPTION
 def query(prompt: str, preset: str | None, k: int, show: bool, node_db: Path | None, index_dir: Path | None) -> None:
     """Show the documents retrieved for PROMPT."""
-    from grove_tui.engine.retrieval import NodeRetriever
+    from grove_tui.generation.retrieval import NodeRetriever
 
     try:
         retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
@@ -103,7 +103,7 @@ def query(prompt: str, preset: str | None, k: int, show: bool, node_db: Path | N
 @_INDEX_OPTION
 def evaluate_command(k: int, cases: Path | None, verbose: bool, node_db: Path | None, index_dir: Path | None) -> None:
     """Recall@k of retrieval on the labelled set, per preset and overall."""
-    from grove_tui.engine.retrieval import NodeRetriever, evaluate, load_eval_set
+    from grove_tui.generation.retrieval import NodeRetriever, evaluate, load_eval_set
 
     try:
         retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)

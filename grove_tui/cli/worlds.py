@@ -9,7 +9,7 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
-from grove_tui.engine.world import World, WorldError, check_world_file, list_worlds, load_world, resolve_world_path
+from grove_tui.world import World, WorldError, check_world_file, list_worlds, load_world, resolve_world_path
 
 
 def _console() -> Console:
@@ -56,7 +56,7 @@ def list_command() -> None:
 @click.option("--rois/--no-rois", default=False, help="Also list every zone, door and entity by name.")
 def show_command(name: str, width: int | None, height: int | None, rois: bool) -> None:
     """Draw a world (a shipped NAME or a path): walls, doors, exits, zone labels, entities."""
-    from grove_tui.engine.world_render import legend, render_world_text
+    from grove_tui.world.render import legend, render_world_text
 
     console = _console()
     try:

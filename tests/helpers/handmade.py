@@ -7,11 +7,11 @@ from pathlib import Path
 
 from lxml import etree
 
-from grove_tui.engine.grid import build_grid
-from grove_tui.engine.planner import ThetaStarPlanner
-from grove_tui.engine.scenario import AgentSpec, RobotSpec, Scenario
-from grove_tui.engine.waypoints import inject_waypoints
-from grove_tui.engine.world import load_world
+from grove_tui.navigation.grid import build_grid
+from grove_tui.navigation.theta_star import ThetaStarPlanner
+from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
+from grove_tui.generation.waypoints import inject_waypoints
+from grove_tui.world import load_world
 
 
 def _tree(agent_id: int, body: str) -> str:

@@ -1,0 +1,642 @@
+"""Evaluation: prompt alignment, plausibility and cost of generated scenarios, against baselines.
+
+The paper scores scenarios with a cloud VLM; we compute checks anyone can reproduce offline from the
+scenario and its simulation:
+- grounding: agents whose target lies where the prompt says (the case's zones), and whose spawn does;
+- counts: the population against the quantities in the prompt;
+- behavior match: the node types the case expects (a queue, a conversation, an evacuation field...);
+- validity: trees that validate, hallucinated node types or place names (must be 0);
+- plausibility: wall penetrations (must be 0), goal-reach rate, overlaps, queue order and progress,
+  evacuation completion and time, stop-and-go where the prompt implies it;
+- cost: prompt/completion tokens and seconds per stage.
+
+Baselines run on the same cases and seeds:
+- `vanilla`: the vanilla preset (whole world in the prompt, all nodes, no guidance);
+- `no-planner`: GROVE's trees without waypoint injection (straight SFM goals, as HuNavSim runs them);
+- `decoupled`: starts and goals sampled from zone centres independently of the prompt's semantics
+  (Text-Crowd's sampling, as the paper describes it).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import yaml
+from lxml import etree
+
+from grove_tui.errors import GroveError
+from grove_tui.analysis.metrics import Trajectories, crowd_metrics
+from grove_tui.scenario.events import SimEvent
+from grove_tui.scenario.model import AgentSpec, Scenario
+
+METHODS = ("grove", "vanilla", "no-planner", "decoupled")
+NEAR_POINT = 1.5  # an agent "targets" a door or entity when its final goal is this close to it
+STOP_SPEED = 0.1
+GO_SPEED = 0.5
+STOP_SECONDS = 1.0
+
+
+class EvalError(GroveError):
+    pass
+
+
+@dataclass(frozen=True)
+class Expectation:
+    targets: tuple[str, ...] = ()  # RoI names (zones, doors, entities) agents should head for
+    spawns: tuple[str, ...] = ()  # zones where agents should start
+    count: int | None = None  # total people the prompt asks for
+    behaviors: tuple[str, ...] = ()  # node types that must appear in the trees
+    stop_and_go: bool = False
+
+
+@dataclass(frozen=True)
+class EvalCase:
+    id: str
+    world: str
+    preset: str
+    prompt: str
+    seed: int
+    expect: Expectation
+    tags: tuple[str, ...] = ()
+
+
+def load_suite(path: str | Path) -> list[EvalCase]:
+    path = Path(path)
+    try:
+        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise EvalError(f"{path}: no such suite file") from None
+    except yaml.YAMLError as exc:
+        raise EvalError(f"{path}: not valid YAML: {exc}") from None
+    if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
+        raise EvalError(f"{path}: expected a mapping with a `cases` list")
+    cases: list[EvalCase] = []
+    seen: set[str] = set()
+    for i, raw in enumerate(data["cases"]):
+        where = f"{path}: cases[{i}]"
+        if not isinstance(raw, dict):
+            raise EvalError(f"{where}: expected a mapping")
+        try:
+            case_id = str(raw["id"])
+            expect = raw.get("expect") or {}
+            case = EvalCase(
+                id=case_id,
+                world=str(raw["world"]),
+                preset=str(raw["preset"]),
+                prompt=str(raw["prompt"]),
+                seed=int(raw.get("seed", 0)),
+                expect=Expectation(
+                    targets=tuple(str(t) for t in expect.get("targets", ())),
+                    spawns=tuple(str(s) for s in expect.get("spawns", ())),
+                    count=None if expect.get("count") is None else int(expect["count"]),
+                    behaviors=tuple(str(b) for b in expect.get("behaviors", ())),
+                    stop_and_go=bool(expect.get("stop_and_go", False)),
+                ),
+                tags=tuple(str(t) for t in raw.get("tags", ())),
+            )
+        except KeyError as exc:
+            raise EvalError(f"{where}: missing key {exc.args[0]!r}") from None
+        except (TypeError, ValueError) as exc:
+            raise EvalError(f"{where}: {exc}") from None
+        if case.id in seen:
+            raise EvalError(f"{where}: duplicate case id {case.id!r}")
+        seen.add(case.id)
+        cases.append(case)
+    return cases
+
+
+# --- alignment ---------------------------------------------------------------------------------
+
+
+def _matches_roi(world: Any, point: Sequence[float], names: Sequence[str]) -> bool:
+    """Does `point` lie in one of the named zones, or near one of the named doors/entities?"""
+    import shapely
+
+    p = shapely.Point(float(point[0]), float(point[1]))
+    for name in names:
+        try:
+            roi = world.find(name)
+        except GroveError:
+            continue
+        polygon = getattr(roi, "polygon", None)
+        boundary = getattr(roi, "boundary", None)
+        if polygon is not None and boundary is not None and polygon.buffer(0.3).contains(p):
+            return True
+        anchor = getattr(roi, "interaction_point", None) or getattr(roi, "position", None)
+        if anchor is not None and math.dist(anchor, (p.x, p.y)) <= NEAR_POINT:
+            return True
+        footprint = getattr(roi, "footprint", None)
+        if footprint is not None and shapely.Polygon(footprint).distance(p) <= NEAR_POINT:
+            return True
+    return False
+
+
+def _zone_matches(world: Any, zone_name: str, names: Sequence[str]) -> bool:
+    """A zone matches when it is named, or holds a named door or entity."""
+    for name in names:
+        if name == zone_name:
+            return True
+        try:
+            roi = world.find(name)
+        except GroveError:
+            continue
+        if getattr(roi, "zone", None) == zone_name:
+            return True
+    return False
+
+
+def _roaming_zone(tree_xml: str | None) -> str | None:
+    if not tree_xml:
+        return None
+    root = etree.fromstring(tree_xml.encode("utf-8"), etree.XMLParser(resolve_entities=False, no_network=True))
+    for el in root.iter("Wander"):
+        if el.get("zone"):
+            return el.get("zone")
+    return None
+
+
+def grounding(world: Any, agents: Sequence[AgentSpec], expect: Expectation,
+              trees: Mapping[int, str] | None = None) -> dict[str, float]:
+    """Shares of agents whose target / spawn lie where the case says. An agent's target is its last
+    goal; an agent with no fixed goal (roaming) targets the zone it roams, else its scenario zone."""
+    out: dict[str, float] = {}
+    if expect.targets:
+        hits = 0
+        for a in agents:
+            if a.goals:
+                hits += _matches_roi(world, a.goals[-1], expect.targets)
+            else:
+                zone = _roaming_zone((trees or {}).get(a.id)) or a.zone
+                hits += _zone_matches(world, zone, expect.targets)
+        out["target_grounding"] = hits / len(agents) if agents else 0.0
+    if expect.spawns:
+        hits = sum(_matches_roi(world, a.start, expect.spawns) for a in agents)
+        out["spawn_grounding"] = hits / len(agents) if agents else 0.0
+    return out
+
+
+def count_accuracy(agents: Sequence[AgentSpec], expect: Expectation) -> float | None:
+    if expect.count is None:
+        return None
+    return max(0.0, 1.0 - abs(len(agents) - expect.count) / expect.count)
+
+
+def tree_node_types(trees: Mapping[int, str]) -> set[str]:
+    types: set[str] = set()
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+    for xml in trees.values():
+        root = etree.fromstring(xml.encode("utf-8"), parser)
+        for tree in root.iter("BehaviorTree"):
+            types |= {el.tag for el in tree.iter() if isinstance(el.tag, str) and el.tag != "BehaviorTree"}
+    return types
+
+
+def behavior_match(trees: Mapping[int, str], expect: Expectation) -> float | None:
+    if not expect.behaviors:
+        return None
+    present = tree_node_types(trees)
+    return sum(b in present for b in expect.behaviors) / len(expect.behaviors)
+
+
+def validity(world: Any, trees: Mapping[int, str]) -> dict[str, float]:
+    """Trees that validate against the manifest, and names the model invented."""
+    from grove_tui.bt.manifest import NODES
+    from grove_tui.bt.xml import check_tree_text
+
+    valid = 0
+    hallucinated_nodes: set[str] = set()
+    hallucinated_places: set[str] = set()
+    known_places = {roi.name for roi in world.roi_index()}
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+    for agent_id, xml in trees.items():
+        if not check_tree_text(xml, source=f"agent {agent_id}"):
+            valid += 1
+        root = etree.fromstring(xml.encode("utf-8"), parser)
+        for tree in root.iter("BehaviorTree"):
+            for el in tree.iter():
+                if not isinstance(el.tag, str) or el.tag in ("BehaviorTree", "SubTree"):
+                    continue
+                spec = NODES.get(el.tag)
+                if spec is None:
+                    hallucinated_nodes.add(el.tag)
+                    continue
+                for port in spec.ports:
+                    if port.type == "target" and el.get(port.name) and el.get(port.name) not in known_places:
+                        hallucinated_places.add(el.get(port.name))
+    n = len(trees)
+    return {
+        "valid_trees": valid / n if n else 0.0,
+        "hallucinated_node_types": float(len(hallucinated_nodes)),
+        "hallucinated_places": float(len(hallucinated_places)),
+    }
+
+
+# --- plausibility --------------------------------------------------------------------------------
+
+
+def stop_and_go_share(traj: Trajectories) -> float:
+    """Share of people who stood still for at least a second and then walked on."""
+    if traj.ids.size == 0 or traj.frames < 3:
+        return 0.0
+    dt = float(np.median(np.diff(traj.t)))
+    need = max(1, int(round(STOP_SECONDS / dt)))
+    speed = np.hypot(traj.people_vel[:, :, 0], traj.people_vel[:, :, 1])
+    count = 0
+    for k in range(traj.ids.size):
+        s = speed[:, k]
+        s = s[np.isfinite(s)]
+        run = 0
+        stopped = False
+        for v in s:
+            if v < STOP_SPEED:
+                run += 1
+                if run >= need:
+                    stopped = True
+            else:
+                if stopped and v > GO_SPEED:
+                    count += 1
+                    break
+                run = 0
+    return count / traj.ids.size
+
+
+def plausibility(traj: Trajectories, world: Any, agents: Sequence[AgentSpec],
+                 events: Sequence[SimEvent]) -> dict[str, float]:
+    crowd = crowd_metrics(traj, walls=world.walls(), final_goals={a.id: a.goals[-1] for a in agents if a.goals},
+                          events=events, walkable_area=float(world.walkable().area),
+                          radius=max((a.radius for a in agents), default=0.35))
+    out = {k: crowd[k] for k in ("wall_penetrations", "goal_reach_rate", "agent_overlaps") if k in crowd}
+    for key in ("queue_members", "queue_served", "queue_order_violations", "evacuation_completion",
+                "evacuation_time"):
+        if key in crowd:
+            out[key] = crowd[key]
+    out["stop_and_go"] = stop_and_go_share(traj)
+    return out
+
+
+# --- baselines -----------------------------------------------------------------------------------
+
+
+def decoupled_agents(world: Any, agents: Sequence[AgentSpec], seed: int, grid: Any) -> list[AgentSpec]:
+    """Text-Crowd-style sampling: each agent starts and ends at zone centres drawn independently of
+    the prompt (nearest free point to a random zone's centroid), keeping count and trees."""
+    rng = np.random.default_rng(seed)
+    zones = list(world.zones)
+    out = []
+    for agent in agents:
+        picks = rng.choice(len(zones), size=2, replace=len(zones) < 2)
+        start_zone, goal_zone = zones[int(picks[0])], zones[int(picks[1])]
+        start = grid.nearest_free(*start_zone.centroid) or agent.start
+        jitter = rng.normal(0.0, 0.4, size=2)
+        start = grid.nearest_free(start[0] + jitter[0], start[1] + jitter[1]) or start
+        goal = grid.nearest_free(*goal_zone.centroid) or (agent.goals[-1] if agent.goals else start)
+        out.append(AgentSpec(id=agent.id, group=agent.group, start=tuple(start), goals=(tuple(goal),),
+                             zone=goal_zone.name, tree=agent.tree, radius=agent.radius, max_vel=agent.max_vel,
+                             label=agent.label, behavior=agent.behavior))
+    return out
+
+
+@dataclass
+class CaseResult:
+    case: EvalCase
+    method: str
+    scores: dict[str, float] = field(default_factory=dict)
+    error: str = ""
+
+
+def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, trees: Mapping[int, str],
+                   traj: Trajectories | None, events: Sequence[SimEvent],
+                   report: Mapping[str, Any] | None = None) -> CaseResult:
+    scores: dict[str, float] = {"agents": float(len(scenario.agents))}
+    scores.update(grounding(world, scenario.agents, case.expect, trees))
+    count = count_accuracy(scenario.agents, case.expect)
+    if count is not None:
+        scores["count_accuracy"] = count
+    match = behavior_match(trees, case.expect)
+    if match is not None:
+        scores["behavior_match"] = match
+    scores.update(validity(world, trees))
+    if traj is not None:
+        scores.update(plausibility(traj, world, scenario.agents, events))
+    for stage, info in (report or {}).get("stages", {}).items():
+        scores[f"{stage}_seconds"] = float(info.get("seconds", 0.0))
+    scores["prompt_tokens"] = float(sum(i.get("prompt_tokens", 0) for i in (report or {}).get("stages", {}).values()))
+    scores["completion_tokens"] = float(
+        sum(i.get("completion_tokens", 0) for i in (report or {}).get("stages", {}).values()))
+    return CaseResult(case=case, method=method, scores=scores)
+
+
+# --- running a suite -----------------------------------------------------------------------------
+
+_XML_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+
+
+def _rewrite_trees(trees: Mapping[str, str], agents: Sequence[AgentSpec], edit) -> dict[str, str]:
+    """Apply `edit(agent, root)` to each agent's tree; returns relative path -> new XML."""
+    by_path = {a.tree: a for a in agents}
+    out = {}
+    for rel, xml in trees.items():
+        root = etree.fromstring(xml.encode("utf-8"), _XML_PARSER)
+        agent = by_path.get(rel)
+        if agent is not None:
+            edit(agent, root)
+        out[rel] = etree.tostring(root, pretty_print=True, xml_declaration=True, encoding="UTF-8").decode("utf-8")
+    return out
+
+
+def _navigation_tags() -> frozenset[str]:
+    from grove_tui.bt.manifest import NODES
+
+    return frozenset(name for name, spec in NODES.items() if spec.navigates)
+
+
+def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
+    """The `no-planner` baseline: straight SFM goals, as HuNavSim runs behavior trees. Injected
+    waypoints are dropped, velocity fields are replaced by a straight walk to the exit, and the
+    simulation plans nothing at run time either (see simulate_for_scores)."""
+    nav = _navigation_tags()
+
+    def edit(agent: AgentSpec, root: etree._Element) -> None:
+        for el in list(root.iter()):
+            if not isinstance(el.tag, str):
+                continue
+            if el.tag in nav and el.get("waypoints"):
+                el.set("waypoints", "")
+            if el.tag == "FollowVelocityField":
+                goto = etree.Element("GoTo", {"target": el.get("exit", "exit"), "x": el.get("x"), "y": el.get("y"),
+                                              "waypoints": "", "agent_id": "{id}"})
+                goto.tail = el.tail
+                el.getparent().replace(el, goto)
+
+    new_trees = _rewrite_trees(trees, scenario.agents, edit)
+    agents = tuple(dataclasses.replace(a, goals=a.goals[-1:]) for a in scenario.agents)
+    return dataclasses.replace(scenario, agents=agents, fields={}), new_trees
+
+
+def decoupled(scenario: Scenario, trees: Mapping[str, str], world: Any, grid: Any,
+              planner: Any) -> tuple[Scenario, dict[str, str]]:
+    """The `decoupled` baseline: same population and behaviors, but starts and goals drawn from zone
+    centres independently of the prompt; paths are still planned (Text-Crowd plans its roadmap too)."""
+    from grove_tui.generation.waypoints import inject_waypoints
+
+    agents = decoupled_agents(world, scenario.agents, scenario.seed, grid)
+    by_id = {a.id: a for a in agents}
+    nav = _navigation_tags()
+
+    def edit(agent: AgentSpec, root: etree._Element) -> None:
+        goal = by_id[agent.id].goals[-1]
+        for el in list(root.iter()):
+            if not isinstance(el.tag, str):
+                continue
+            if el.tag == "FollowVelocityField":
+                goto = etree.Element("GoTo", {"target": "sampled", "x": f"{goal[0]:.2f}", "y": f"{goal[1]:.2f}",
+                                              "waypoints": "", "agent_id": "{id}"})
+                goto.tail = el.tail
+                el.getparent().replace(el, goto)
+            elif el.tag in nav or el.tag == "Queue":
+                el.set("x", f"{goal[0]:.2f}")
+                el.set("y", f"{goal[1]:.2f}")
+                if el.get("waypoints") is not None:
+                    el.set("waypoints", "")
+
+    new_trees = _rewrite_trees(trees, scenario.agents, edit)
+    start_of = {a.tree: by_id[a.id].start for a in scenario.agents}
+    planned = {rel: inject_waypoints(xml, start_of[rel], planner) if rel in start_of else xml
+               for rel, xml in new_trees.items()}
+    return dataclasses.replace(scenario, agents=tuple(agents), fields={}), planned
+
+
+def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
+    import shutil
+
+    from grove_tui.files import atomic_directory
+    from grove_tui.scenario.bundle import WHAT, is_bundle
+
+    with atomic_directory(target, owned=is_bundle, what=WHAT) as staging:
+        for name in ("grid.npz", "generation.json"):
+            if (base_bundle / name).exists():
+                shutil.copy2(base_bundle / name, staging / name)
+        if scenario.fields and (base_bundle / "fields").exists():
+            shutil.copytree(base_bundle / "fields", staging / "fields")
+        for rel, xml in trees.items():
+            (staging / rel).parent.mkdir(parents=True, exist_ok=True)
+            (staging / rel).write_text(xml, encoding="utf-8")
+        scenario.save(staging / "scenario.yaml")
+    return target
+
+
+def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: float, runtime_planning: bool = True):
+    """Run a bundle's scenario; trajectories and events for scoring (also written into the bundle)."""
+    from grove_tui.scenario.events import write_events
+    from grove_tui.simulation.simulation import Simulation
+
+    from grove_tui.scenario.bundle import replace_run_outputs
+
+    sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
+    sim.run(seconds)
+    events = sim.events
+
+    def write_run(stage: Path) -> None:
+        sim.recorder.write_csv(stage / "trajectories.csv")
+        write_events(stage / "events.jsonl", events)
+
+    replace_run_outputs(bundle, write_run)
+    return Trajectories.from_csv(bundle / "trajectories.csv"), events
+
+
+def _read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
+    return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
+
+
+def run_suite(cases: Sequence[EvalCase], out_dir: str | Path, *, bt_model: str | None = None,
+              methods: Sequence[str] = METHODS, sim_seconds: float = 30.0, on_progress=None) -> list[CaseResult]:
+    """Generate, simulate and score every case with every method; bundles are kept under out_dir."""
+    import json
+    import time
+
+    from grove_tui.scenario.bundle import write_bundle
+    from grove_tui.navigation.grid import build_grid
+    from grove_tui.generation.pipeline import GenerationPipeline
+    from grove_tui.navigation.theta_star import ThetaStarPlanner
+    from grove_tui.generation.presets import load_preset
+    from grove_tui.generation.retrieval import NodeRetriever
+    from grove_tui.world import load_world
+    from grove_tui.llm.local import LocalLLM
+    from grove_tui.llm.registry import resolve_models
+
+    unknown = [m for m in methods if m not in METHODS]
+    if unknown:
+        raise EvalError(f"unknown method(s) {unknown}; choose from {', '.join(METHODS)}")
+    out = Path(out_dir)
+    choice = resolve_models(None, bt_model, None)["bt"]
+    llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)
+    retriever = NodeRetriever()
+    pipelines: dict[tuple[str, str], Any] = {}
+    results: list[CaseResult] = []
+
+    def pipeline_for(world_name: str, preset_name: str):
+        key = (world_name, preset_name)
+        if key not in pipelines:
+            pipelines[key] = GenerationPipeline(load_world(world_name), load_preset(preset_name), None, llm, retriever)
+        return pipelines[key]
+
+    try:
+        for index, case in enumerate(cases, start=1):
+            world = load_world(case.world)
+            grove_dir = out / "bundles" / case.id / "grove"
+            generated: dict[str, tuple[Scenario, dict[str, str], Path]] = {}
+            for method in methods:
+                started = time.perf_counter()
+                try:
+                    if method in ("grove", "vanilla"):
+                        preset = case.preset if method == "grove" else "vanilla"
+                        result = pipeline_for(case.world, preset).run(case.prompt, seed=case.seed)
+                        target = out / "bundles" / case.id / method
+                        write_bundle(result, target)
+                        generated[method] = (result.scenario, _read_trees(target, result.scenario), target)
+                    else:
+                        if "grove" not in generated:
+                            result = pipeline_for(case.world, case.preset).run(case.prompt, seed=case.seed)
+                            write_bundle(result, grove_dir)
+                            generated["grove"] = (result.scenario, _read_trees(grove_dir, result.scenario), grove_dir)
+                        base_scenario, base_trees, base_dir = generated["grove"]
+                        if method == "no-planner":
+                            scenario, trees = without_planner(base_scenario, base_trees)
+                        else:
+                            grid = build_grid(world, base_scenario.resolution)
+                            scenario, trees = decoupled(base_scenario, base_trees, world, grid, ThetaStarPlanner(grid))
+                        target = _write_variant(base_dir, out / "bundles" / case.id / method, scenario, trees)
+                        generated[method] = (scenario, dict(trees), target)
+                    scenario, trees, bundle = generated[method]
+                    traj, events = simulate_for_scores(bundle, scenario, world, sim_seconds,
+                                                       runtime_planning=method != "no-planner")
+                    report_path = bundle / "generation.json"
+                    report = json.loads(report_path.read_text()) if report_path.exists() else {}
+                    by_id = {a.id: trees[a.tree] for a in scenario.agents}
+                    scored = score_scenario(case, method, world, scenario, by_id, traj, events,
+                                            report if method in ("grove", "vanilla") else None)
+                except GroveError as exc:
+                    scored = CaseResult(case=case, method=method, error=str(exc))
+                scored.scores["eval_seconds"] = round(time.perf_counter() - started, 3)
+                results.append(scored)
+                if on_progress is not None:
+                    on_progress(index, len(cases), scored)
+    finally:
+        llm.close()
+    write_results(results, out)
+    return results
+
+
+# --- tables --------------------------------------------------------------------------------------
+
+GROUNDING_KEYS = ("target_grounding", "spawn_grounding", "count_accuracy", "behavior_match")
+PLAUSIBILITY_KEYS = ("wall_penetrations", "goal_reach_rate", "agent_overlaps", "queue_order_violations",
+                     "evacuation_completion", "stop_and_go")
+VALIDITY_KEYS = ("valid_trees", "hallucinated_node_types", "hallucinated_places")
+COST_KEYS = ("prompt_tokens", "completion_tokens", "eval_seconds")
+SUMMARY_KEYS = GROUNDING_KEYS + PLAUSIBILITY_KEYS + VALIDITY_KEYS + COST_KEYS
+
+
+FAILED_SCORES = {"target_grounding": 0.0, "spawn_grounding": 0.0, "count_accuracy": 0.0, "behavior_match": 0.0,
+                 "goal_reach_rate": 0.0, "evacuation_completion": 0.0, "valid_trees": 0.0}
+
+
+def summarize(results: Sequence[CaseResult]) -> dict[tuple[str, str], dict[str, float]]:
+    """Mean of each score per (preset, method), over the cases where the score applies. A scenario
+    that could not be generated aligns with nothing: its grounding, reach and validity count as 0."""
+    table: dict[tuple[str, str], dict[str, list[float]]] = {}
+    for r in results:
+        row = table.setdefault((r.case.preset, r.method), {})
+        row.setdefault("failed", []).append(1.0 if r.error else 0.0)
+        if r.error:
+            expect = r.case.expect
+            applicable = {"target_grounding": bool(expect.targets), "spawn_grounding": bool(expect.spawns),
+                          "count_accuracy": expect.count is not None, "behavior_match": bool(expect.behaviors)}
+            for key, value in FAILED_SCORES.items():
+                if applicable.get(key, True):
+                    row.setdefault(key, []).append(value)
+            continue
+        for key in SUMMARY_KEYS:
+            value = r.scores.get(key)
+            if value is not None and not (isinstance(value, float) and math.isnan(value)):
+                row.setdefault(key, []).append(float(value))
+    return {k: {m: float(np.mean(v)) for m, v in row.items()} for k, row in table.items()}
+
+
+def grounding_score(row: Mapping[str, float]) -> float:
+    keys = [k for k in ("target_grounding", "spawn_grounding", "count_accuracy", "behavior_match") if k in row]
+    return float(np.mean([row[k] for k in keys])) if keys else math.nan
+
+
+def plausibility_score(row: Mapping[str, float]) -> float:
+    """One number per row: goal reach and stop-and-go up, penetrations and overlaps down (0..1)."""
+    parts = []
+    if "goal_reach_rate" in row:
+        parts.append(row["goal_reach_rate"])
+    if "wall_penetrations" in row:
+        parts.append(1.0 / (1.0 + row["wall_penetrations"]))
+    if "agent_overlaps" in row:
+        parts.append(1.0 / (1.0 + row["agent_overlaps"] / 100.0))
+    if "evacuation_completion" in row:
+        parts.append(row["evacuation_completion"])
+    return float(np.mean(parts)) if parts else math.nan
+
+
+def results_markdown(results: Sequence[CaseResult], command: str = "") -> str:
+    summary = summarize(results)
+    presets = sorted({p for p, _ in summary})
+    methods = [m for m in METHODS if any(m == mm for _, mm in summary)]
+    lines = ["# Evaluation results", ""]
+    if command:
+        lines += ["Made by:", "", "```", command, "```", ""]
+    cols = ["preset", "method", "grounding", "plausibility", "target", "spawn", "count", "behavior",
+            "wall pen.", "goal reach", "overlaps", "evac.", "stop&go", "valid", "halluc.", "prompt tok", "failed"]
+    lines += ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
+
+    def fmt(row: Mapping[str, float], key: str, digits: int = 2) -> str:
+        v = row.get(key)
+        return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{v:.{digits}f}"
+
+    for preset in presets:
+        for method in methods:
+            row = summary.get((preset, method))
+            if row is None:
+                continue
+            halluc = row.get("hallucinated_node_types", 0.0) + row.get("hallucinated_places", 0.0)
+            lines.append("| " + " | ".join([
+                preset, method, f"{grounding_score(row):.2f}", f"{plausibility_score(row):.2f}",
+                fmt(row, "target_grounding"), fmt(row, "spawn_grounding"), fmt(row, "count_accuracy"),
+                fmt(row, "behavior_match"), fmt(row, "wall_penetrations", 1), fmt(row, "goal_reach_rate"),
+                fmt(row, "agent_overlaps", 1), fmt(row, "evacuation_completion"), fmt(row, "stop_and_go"),
+                fmt(row, "valid_trees"), f"{halluc:.1f}", fmt(row, "prompt_tokens", 0), fmt(row, "failed"),
+            ]) + " |")
+    lines += ["", "grounding = mean of target/spawn grounding, count accuracy and behavior match; "
+              "plausibility = mean of goal reach, 1/(1+wall penetrations), 1/(1+overlaps/100) and "
+              "evacuation completion. Means over the cases of each preset.", ""]
+    failures = [r for r in results if r.error]
+    if failures:
+        lines += ["## Failures", ""] + [f"- {r.case.id} / {r.method}: {r.error}" for r in failures] + [""]
+    return "\n".join(lines)
+
+
+def write_results(results: Sequence[CaseResult], out_dir: Path, command: str = "") -> list[Path]:
+    import csv
+    import io
+
+    from grove_tui.files import write_text_atomic
+
+    keys = sorted({k for r in results for k in r.scores})
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["case", "world", "preset", "method", "error", *keys])
+    for r in results:
+        writer.writerow([r.case.id, r.case.world, r.case.preset, r.method, r.error,
+                         *[("" if r.scores.get(k) is None else r.scores[k]) for k in keys]])
+    return [write_text_atomic(Path(out_dir) / "results.csv", buffer.getvalue()),
+            write_text_atomic(Path(out_dir) / "RESULTS.md", results_markdown(results, command))]

@@ -1,0 +1,81 @@
+"""Base classes for leaves that act on one agent of the crowd.
+
+Positions are read from plain Python lists the simulation refreshes once per BT tick
+(`SimContext.refresh`), because indexing numpy arrays per agent per tick would cost more than
+the whole tree.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from grove_tui.bt.runtime import (
+    FAILURE, RUNNING, SUCCESS, BlackboardRef, ConditionNode, StatefulActionNode, SyncActionNode,
+)
+from grove_tui.bt.xml import BTError
+
+__all__ = ["AgentCondition", "AgentSyncAction", "AgentStatefulAction", "FAILURE", "RUNNING", "SUCCESS",
+           "bind_agent", "angle_diff"]
+
+
+def bind_agent(node: Any, port: str) -> None:
+    """Resolve the node's own agent (crowd row) once: its id never changes during a run."""
+    ctx = node.ctx
+    node.sim = ctx.sim if ctx is not None else None
+    node.row = ctx.row if ctx is not None else -1
+    if ctx is None:
+        return
+    value = node.inputs.get(port)
+    if type(value) is BlackboardRef:
+        try:
+            value = value.get()
+        except BTError:
+            value = None
+    if value is not None and int(value) != ctx.agent_id:
+        node.row = ctx.sim.row(value, f"{node.node_id}.{port}")
+
+
+def angle_diff(a: float, b: float) -> float:
+    d = a - b
+    return math.atan2(math.sin(d), math.cos(d))
+
+
+class AgentCondition(ConditionNode):
+    __slots__ = ("sim", "row")
+    AGENT_PORT = "agent_id"
+
+    def setup(self) -> None:
+        bind_agent(self, self.AGENT_PORT)
+
+
+class AgentSyncAction(SyncActionNode):
+    __slots__ = ("sim", "row")
+    AGENT_PORT = "agent_id"
+
+    def setup(self) -> None:
+        bind_agent(self, self.AGENT_PORT)
+
+
+class AgentStatefulAction(StatefulActionNode):
+    """A leaf that runs over several ticks; `started_at` is simulation time, `saved` the intents it
+    replaced (restored when it ends or is halted)."""
+
+    __slots__ = ("sim", "row", "started_at", "saved")
+    AGENT_PORT = "agent_id"
+
+    def setup(self) -> None:
+        bind_agent(self, self.AGENT_PORT)
+        self.started_at = 0.0
+        self.saved = None
+
+    def elapsed(self) -> float:
+        return self.sim.clock.now - self.started_at
+
+    def save_intents(self) -> None:
+        self.saved = self.sim.snapshot(self.row)
+
+    def restore_intents(self) -> None:
+        if self.saved is not None:
+            self.sim.restore(self.row, self.saved)
+            self.saved = None

@@ -1,0 +1,341 @@
+"""The generation pipeline: prompt -> RoIs -> retrieved nodes -> draft -> trees -> planned trees -> Scenario.
+
+    pipeline = GenerationPipeline(world, preset, llm_roi, llm_bt, retriever)
+    result = pipeline.run("Ten patients queue at the pharmacy counter", seed=0, on_event=print, cancel=event)
+    write_bundle(result, "out/pharmacy")
+
+`replan` reruns only post-processing and planning of an earlier result with edited head counts
+(no model call), so the user can change "ten patients" to fourteen without regenerating:
+
+    edited = pipeline.replan(result, {0: 14})
+
+`run` and `replan` are safe to call from a worker thread: progress comes back as plain dataclass events through
+`on_event` (called in the caller's thread), and `cancel` (a threading.Event) is checked between
+stages, between agents while planning, and during generation (the LLM stops within a second).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.navigation.grid import OccupancyGrid, build_grid
+from grove_tui.paths import worlds_dir
+from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
+from grove_tui.generation.draft import Draft
+from grove_tui.generation.planning import OperationalPlan, PlanningCancelled, RobotRequest, plan_operational
+from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
+from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.language.quantities import Quantity, extract_quantities
+from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
+from grove_tui.scenario.model import Scenario
+from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
+from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.llm.errors import GenerationCancelled
+
+STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
+MAX_PROMPT_CHARS = 2000
+
+__all__ = ["GenerationCancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs", "STAGES",
+           "StageFinished", "StageStarted", "TokenStreamed"]
+
+
+@dataclass(frozen=True)
+class StageStarted:
+    stage: str
+
+
+@dataclass(frozen=True)
+class StageFinished:
+    stage: str
+    seconds: float
+    prompt_tokens: int = 0
+    completion_tokens: int = 0
+    detail: str = ""
+
+
+@dataclass(frozen=True)
+class TokenStreamed:
+    stage: str
+    text: str
+
+
+Event = StageStarted | StageFinished | TokenStreamed
+
+
+@dataclass(frozen=True)
+class PlanInputs:
+    """What post-processing and planning consume, kept on the result so counts can be re-planned.
+
+    Group i of the result (report["groups"][i]) is the i-th stated quantity when the prompt states
+    counts, else the i-th draft group: that is how post-processing reconciles them.
+    """
+
+    prompt: str
+    draft: Draft
+    quantities: tuple[Quantity, ...]
+    selection: Any  # rois.RoISelection
+    node_names: tuple[str, ...]
+
+    def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
+        if self.quantities:
+            # An edited count is stated by the user now, even where the prompt only implied the group.
+            quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
+                               for i, q in enumerate(self.quantities))
+            return replace(self, quantities=quantities)
+        groups = tuple(replace(g, count=counts[i]) if i in counts else g for i, g in enumerate(self.draft.groups))
+        return replace(self, draft=Draft(groups))
+
+
+@dataclass
+class GenerationResult:
+    scenario: Scenario
+    trees: dict[str, str]  # relative path ("trees/agent_1.xml") -> BT XML
+    fields: dict[str, VelocityField]
+    grid: OccupancyGrid
+    report: dict[str, Any] = field(default_factory=dict)
+    # The draft and prompt analysis the trees came from; None for results rebuilt from a bundle.
+    inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
+
+
+class _StageClock:
+    """Times stages into `stages`, emits their events and checks `cancel` before each one starts."""
+
+    def __init__(self, emit: Callable[[Event], None], cancel: threading.Event | None,
+                 stages: dict[str, dict[str, Any]]) -> None:
+        self.emit, self.cancel, self.stages = emit, cancel, stages
+
+    def begin(self, stage: str) -> float:
+        if self.cancel is not None and self.cancel.is_set():
+            raise GenerationCancelled(f"generation cancelled before {stage}")
+        self.emit(StageStarted(stage))
+        return time.perf_counter()
+
+    def end(self, stage: str, t0: float, detail: str, prompt_tokens: int = 0, completion_tokens: int = 0) -> None:
+        seconds = time.perf_counter() - t0
+        self.stages[stage] = {"seconds": round(seconds, 4), "prompt_tokens": prompt_tokens,
+                              "completion_tokens": completion_tokens}
+        self.emit(StageFinished(stage, seconds, prompt_tokens, completion_tokens, detail))
+
+
+def world_reference(world: Any) -> str:
+    """How a scenario names its world: the shipped name, or the path of a user's world file."""
+    source = getattr(world, "source", None)
+    if source is None:
+        return world.name
+    source = Path(source)
+    try:
+        if source.resolve().parent == worlds_dir().resolve():
+            return source.stem
+    except OSError:
+        pass
+    return str(source)
+
+
+def _model_name(llm: Any) -> str:
+    path = getattr(llm, "path", None)
+    return Path(path).name if path is not None else type(llm).__name__
+
+
+class GenerationPipeline:
+    """One world and preset, models loaded once; `run` many prompts."""
+
+    def __init__(self, world: Any, preset: Preset, llm_roi: Any | None, llm_bt: Any, retriever: Any,
+                 resolution: float | None = None, robot: RobotRequest | None = None,
+                 plan_cache: PlanCache | None = None, embed: Callable[[list[str]], Any] | None = None,
+                 max_tokens: int = 512) -> None:
+        self.world = world
+        self.preset = preset
+        self.llm_roi = llm_roi
+        self.llm_bt = llm_bt
+        self.retriever = retriever
+        self.resolution = float(resolution or preset.planner.resolution)
+        self.robot = robot
+        self.plan_cache = plan_cache or PlanCache()
+        self.matcher = RoIMatcher(world, embed)
+        self.max_tokens = max_tokens
+        self._grid: OccupancyGrid | None = None
+        self._planner: ThetaStarPlanner | None = None
+
+    @property
+    def grid(self) -> OccupancyGrid:
+        if self._grid is None:
+            self._grid = build_grid(self.world, resolution=self.resolution, inflation=self.preset.planner.inflation)
+        return self._grid
+
+    @property
+    def planner(self) -> ThetaStarPlanner:
+        if self._planner is None:
+            self._planner = ThetaStarPlanner(self.grid)
+        return self._planner
+
+    def run(self, prompt: str, seed: int = 0, on_event: Callable[[Event], None] | None = None,
+            cancel: threading.Event | None = None) -> GenerationResult:
+        emit = on_event or (lambda event: None)
+        prompt = " ".join((prompt or "").split())
+        if not prompt:
+            raise PromptError("the prompt is empty: describe the people and what they do")
+        if len(prompt) > MAX_PROMPT_CHARS:
+            raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
+        preset, world = self.preset, self.world
+        stages: dict[str, dict[str, Any]] = {}
+        clock = _StageClock(emit, cancel, stages)
+        started = time.perf_counter()
+
+        t0 = clock.begin("rois")
+        quantities = extract_quantities(prompt)
+        selection = select_rois(world, preset, prompt, self.matcher)
+        roi_tokens = (0, 0)
+        if self.llm_roi is not None and preset.guided:
+            selection, *roi_tokens = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
+        check_population(world, self.grid, preset, selection, quantities)
+        clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
+
+        t0 = clock.begin("retrieval")
+        if preset.retrieval_filter is not None and preset.retrieval_k > 0:
+            retrieved = self.retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
+        else:
+            retrieved = []
+        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for)
+        clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
+
+        t0 = clock.begin("synthesis")
+        on_token = (lambda text: emit(TokenStreamed("synthesis", text))) if on_event else None
+        synthesis = synthesize(self.llm_bt, request, preset, seed, on_token=on_token, cancel=cancel,
+                               max_tokens=self.max_tokens)
+        clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
+                  synthesis.prompt_tokens, synthesis.completion_tokens)
+
+        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names))
+        post, plan = self._plan_stages(inputs, seed, clock, cancel)
+
+        models = {"bt": _model_name(self.llm_bt)}
+        if self.llm_roi is not None:
+            models["roi"] = _model_name(self.llm_roi)
+        report = {
+            "world": world_reference(world), "preset": preset.name, "prompt": prompt, "seed": int(seed),
+            "models": models, "stages": stages,
+            "total_seconds": round(time.perf_counter() - started, 4),
+            "prompt_tokens": synthesis.prompt_tokens, "completion_tokens": synthesis.completion_tokens,
+            "quantities": [{"phrase": q.phrase, "count": q.count, "noun": q.noun, "exact": q.exact} for q in quantities],
+            "selected_rois": describe_selection(selection), "zones": selection.zones, "named_zones": selection.named_zones,
+            "retrieved": [{"name": r.name, "kind": r.kind, "score": r.score, "nodes": list(r.nodes)} for r in retrieved],
+            "documents": describe_documents(request.documents), "offered_nodes": request.node_names,
+            "draft": draft_summary(synthesis.draft), "draft_text": synthesis.text,
+            "attempts": synthesis.attempts, "draft_errors": synthesis.errors,
+            "first_token_seconds": None if synthesis.first_token_seconds is None else round(synthesis.first_token_seconds, 4),
+        }
+        return self._assemble(inputs, seed, models, post, plan, report)
+
+    def replan(self, result: GenerationResult, counts: Mapping[int, int], seed: int | None = None,
+               on_event: Callable[[Event], None] | None = None,
+               cancel: threading.Event | None = None) -> GenerationResult:
+        """`result` with new head counts per group (index into report["groups"] -> count), no model call.
+
+        Only post-processing and planning run again, on the draft `result` kept, with the same checks
+        as `run` (GenerationError/PromptError for counts no zone can hold or the preset forbids). The new
+        report keeps the earlier stages' timings and tokens and records the edit. `result` is not changed.
+        The seed defaults to the result's own, so the same result, counts and seed give the same bundle.
+        """
+        inputs = result.inputs
+        if inputs is None:
+            raise GenerationError("this scenario keeps no draft to re-plan (it was loaded from a bundle); "
+                                  "regenerate it to change its counts")
+        if result.scenario.preset != self.preset.name or result.scenario.world != world_reference(self.world):
+            raise GenerationError(f"this pipeline is for world '{world_reference(self.world)}' with preset "
+                                  f"'{self.preset.name}', but the scenario is '{result.scenario.world}' with "
+                                  f"'{result.scenario.preset}'")
+        groups = list(result.report.get("groups", ()))
+        edits = self._check_counts(groups, counts)
+        seed = int(result.scenario.seed if seed is None else seed)
+        if self._grid is None and result.grid is not None and result.scenario.resolution == self.resolution:
+            self._grid = result.grid  # the same world and preset: the grid the run built
+        edited = inputs.with_counts(counts)
+        check_population(self.world, self.grid, self.preset, edited.selection, edited.quantities)
+
+        stages = {k: dict(v) for k, v in result.report.get("stages", {}).items()}
+        previous = sum(stages.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
+        clock = _StageClock(on_event or (lambda event: None), cancel, stages)
+        post, plan = self._plan_stages(edited, seed, clock, cancel)
+        for i, count in counts.items():
+            if post.groups[i].count != count:  # reconciliation must keep group order; refuse silently wrong counts
+                raise GenerationError(f"group '{groups[i]['label']}' came out with {post.groups[i].count} people "
+                                      f"instead of {count}; regenerate the scenario")
+
+        report = {k: v for k, v in result.report.items() if k not in ("groups", "exit", "notes", "goals")}
+        replanned = sum(stages[s]["seconds"] for s in ("postprocess", "planning"))
+        report["stages"] = stages
+        report["total_seconds"] = round(float(result.report.get("total_seconds", 0.0)) - previous + replanned, 4)
+        report["seed"] = seed
+        edit_note = "counts edited: " + ", ".join(f"{label} {old} -> {new}" for label, old, new in edits)
+        history = list(result.report.get("count_edits", ()))
+        history.append({"counts": {str(i): int(c) for i, c in sorted(counts.items())}, "seed": seed, "note": edit_note})
+        report["count_edits"] = history
+        new = self._assemble(edited, seed, dict(result.scenario.models), post, plan, report)
+        new.report["notes"] = [edit_note] + new.report["notes"]
+        if seed != result.scenario.seed:
+            new.report["notes"].insert(1, f"re-planned with seed {seed} (the draft came from seed {result.scenario.seed})")
+        return new
+
+    def _check_counts(self, groups: Sequence[Mapping[str, Any]], counts: Mapping[int, int]) -> list[tuple[str, int, int]]:
+        """(label, old, new) for each edited group; GenerationError for unknown groups or counts out of range."""
+        if not counts:
+            raise GenerationError("no counts to change: give at least one group a new number of people")
+        most = self.preset.limits.max_count
+        edits = []
+        for index, count in counts.items():
+            if isinstance(index, bool) or not isinstance(index, int) or not 0 <= index < len(groups):
+                raise GenerationError(f"there is no group {index!r}: this scenario has groups 0..{len(groups) - 1} "
+                                      f"({', '.join(str(g['label']) for g in groups)})")
+            label = str(groups[index]["label"])
+            if isinstance(count, bool) or not isinstance(count, int):
+                raise GenerationError(f"group '{label}': {count!r} is not a whole number of people")
+            if not 1 <= count <= most:
+                raise GenerationError(f"group '{label}': {count} people is out of range; preset '{self.preset.name}' "
+                                      f"allows 1 to {most} per group")
+            edits.append((index, label, int(groups[index]["count"]), count))
+        return [edit[1:] for edit in sorted(edits)]
+
+    def _plan_stages(self, inputs: PlanInputs, seed: int, clock: _StageClock,
+                     cancel: threading.Event | None) -> tuple[PostProcessed, OperationalPlan]:
+        """The post-processing and planning stages, shared by `run` and `replan`."""
+        world, preset, grid = self.world, self.preset, self.grid
+        t0 = clock.begin("postprocess")
+        post = postprocess(world, grid, preset, inputs.draft, list(inputs.quantities), inputs.selection, seed,
+                           inputs.prompt, list(inputs.node_names))
+        clock.end("postprocess", t0, f"{len(post.agents)} agents")
+
+        t0 = clock.begin("planning")
+        try:
+            plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
+                                    cache=self.plan_cache, cancel=cancel)
+        except PlanningCancelled:
+            raise GenerationCancelled("generation cancelled during planning") from None
+        for rel, xml in plan.trees.items():
+            try:
+                parse_tree_text(xml, rel)
+            except BTError as exc:
+                raise GenerationError(f"generated tree failed validation against the node manifest: {exc}") from None
+        clock.end("planning", t0, f"{len(plan.fields)} field(s)" if plan.fields else "waypoints injected"
+                  if preset.planner.enabled else "no planner")
+        return post, plan
+
+    def _assemble(self, inputs: PlanInputs, seed: int, models: dict[str, str], post: PostProcessed,
+                  plan: OperationalPlan, report: dict[str, Any]) -> GenerationResult:
+        """The Scenario and the planned part of the report (groups, exit, notes, goals)."""
+        scenario = Scenario(
+            world=world_reference(self.world), preset=self.preset.name, prompt=inputs.prompt, seed=int(seed),
+            models=models, agents=tuple(plan.agents), robot=plan.robot,
+            fields={fid: f"fields/{fid}.npz" for fid in sorted(plan.fields)}, resolution=self.resolution)
+        report = dict(report)
+        report["groups"] = [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
+                             "field": g.field_id} for g in post.groups]
+        report["exit"] = post.exit
+        report["notes"] = post.notes + plan.notes
+        report["goals"] = [list(p) for p in post.goals]
+        return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

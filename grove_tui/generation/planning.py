@@ -1,0 +1,252 @@
+"""Operational layer: collision-free geometry for the post-processed trees, and the robot's task.
+
+Normal and queuing presets plan every leg between consecutive navigation goals with Theta* and
+inject the waypoints into the trees; the emergency preset plans each group's centroid to the one
+shared exit and turns that path into the group's velocity field. The robot gets a start and a goal
+(the user's, or chosen across the scene so that its path runs through where people are) and a
+planned path.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from lxml import etree
+
+from grove_tui.bt.manifest import NODES
+from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
+from grove_tui.generation.postprocess import FreeSpace, PostProcessed
+from grove_tui.generation.presets import GenerationError, Preset
+from grove_tui.scenario.model import AgentSpec, RobotSpec
+from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.generation.waypoints import inject_waypoints, parse_waypoints
+
+Point = tuple[float, float]
+
+ROBOT_CLEARANCE = 2.0  # metres between the robot's start/goal and anybody's spawn
+ROBOT_CANDIDATES = 48
+
+
+class PlanningCancelled(Exception):
+    """Raised between agents when the caller's cancel event is set."""
+
+
+@dataclass(frozen=True)
+class RobotRequest:
+    """What the user asked of the robot; None parts are chosen by the pipeline. Strings are RoI names."""
+
+    start: Point | str | None = None
+    goal: Point | str | None = None
+    enabled: bool = True
+
+
+@dataclass
+class OperationalPlan:
+    agents: list[AgentSpec]
+    trees: dict[str, str]  # relative path -> XML with waypoints
+    fields: dict[str, VelocityField]  # field id -> field
+    robot: RobotSpec | None
+    notes: list[str] = field(default_factory=list)
+
+
+class CachedPlanner:
+    """Theta* behind a PlanCache: legs shared by many agents (same goal slot) are planned once."""
+
+    def __init__(self, world_name: str, planner: ThetaStarPlanner, cache: PlanCache | None = None) -> None:
+        self.world_name = world_name
+        self.planner = planner
+        self.cache = cache or PlanCache()
+
+    def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+        return self.cache.plan(self.world_name, self.planner, start, goal, start_label=start_label, goal_label=goal_label)
+
+
+def _safe_parser() -> etree.XMLParser:
+    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
+
+
+def goals_from_tree(xml: str) -> list[Point]:
+    """Every point the agent is sent to, in tick order: injected waypoints then the node's target."""
+    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
+    goals: list[Point] = []
+    for element in root.iter():
+        if not isinstance(element.tag, str):
+            continue
+        spec = NODES.get(element.tag)
+        if spec is None or element.get("x") is None or element.get("y") is None:
+            continue
+        if element.get("waypoints"):
+            goals.extend(parse_waypoints(element.get("waypoints")))
+        goals.append((float(element.get("x")), float(element.get("y"))))
+    return goals
+
+
+def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed, seed: int,
+                     robot: RobotRequest | None = None, planner: ThetaStarPlanner | None = None,
+                     cache: PlanCache | None = None, cancel: threading.Event | None = None) -> OperationalPlan:
+    planner = planner or ThetaStarPlanner(grid)
+    cached = CachedPlanner(world.name, planner, cache)
+    notes: list[str] = []
+    fields: dict[str, VelocityField] = {}
+    group_paths: dict[str, np.ndarray] = {}
+    if preset.velocity == "field":
+        exit_door = world.find(post.exit)
+        for g in post.groups:
+            _check_cancel(cancel)
+            members = [a for a in post.agents if a.group_index == g.index]
+            centroid = _free_centroid(grid, [a.start for a in members], g.spawn)
+            try:
+                built = cached.cache.field(world.name, planner, centroid, exit_door.position,
+                                           start_label=f"group '{g.label}' in {g.spawn}", exit_label=post.exit)
+            except PlanningError as exc:
+                raise GenerationError(f"group '{g.label}' cannot reach exit {post.exit}: {exc}") from None
+            fields[g.field_id] = built
+            group_paths[g.field_id] = built.path
+
+    agents: list[AgentSpec] = []
+    trees: dict[str, str] = {}
+    for a in post.agents:
+        _check_cancel(cancel)
+        xml = a.xml
+        if preset.velocity == "waypoints" and preset.planner.enabled:
+            try:
+                xml = inject_waypoints(xml, a.start, cached, start_label=f"agent {a.id} in {a.spawn_zone}")
+            except PlanningError as exc:
+                raise GenerationError(f"agent {a.id} ({a.label}) cannot reach its goal: {exc}") from None
+        goals = goals_from_tree(xml)
+        if a.field_id is not None and a.field_id in group_paths:
+            # Field followers head along their group's path: record it as their goals.
+            goals = [tuple(map(float, p)) for p in group_paths[a.field_id][1:]]
+        rel = f"trees/agent_{a.id}.xml"
+        trees[rel] = xml
+        agents.append(AgentSpec(
+            id=a.id, group=a.sfm_group, start=a.start, goals=tuple((round(x, 3), round(y, 3)) for x, y in goals),
+            zone=a.zone, tree=rel, radius=0.35, max_vel=a.max_vel, label=a.label))
+    robot_spec = None
+    if robot is None or robot.enabled:
+        robot_spec = plan_robot(world, grid, cached, post, robot or RobotRequest(), seed, notes)
+    return OperationalPlan(agents, trees, fields, robot_spec, notes)
+
+
+def _check_cancel(cancel: threading.Event | None) -> None:
+    if cancel is not None and cancel.is_set():
+        raise PlanningCancelled("planning cancelled")
+
+
+def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
+    cx = sum(p[0] for p in points) / len(points)
+    cy = sum(p[1] for p in points) / len(points)
+    q = grid.nearest_free(cx, cy)
+    if q is None:
+        raise GenerationError(f"no free floor near the centre of the group in {zone}")
+    # Snap to the nearest spawn when the centroid's free cell lies in another room (an L-shaped group).
+    nearest = min(points, key=lambda p: math.dist(p, (cx, cy)))
+    return (float(q[0]), float(q[1])) if math.dist(q, (cx, cy)) < 1.0 else nearest
+
+
+def _resolve_point(world: Any, grid: Any, value: Point | str, what: str) -> Point:
+    if isinstance(value, str):
+        try:
+            obj = world.find(value)
+        except Exception as exc:
+            raise GenerationError(f"robot {what} {value!r}: {exc}") from None
+        if hasattr(obj, "interaction_point"):
+            p = obj.interaction_point
+        elif hasattr(obj, "leads_to"):
+            p = obj.inward_point(0.8)
+        else:
+            p = obj.anchor
+    else:
+        p = (float(value[0]), float(value[1]))
+    q = grid.nearest_free(p[0], p[1], max_dist=1.0)
+    if q is None:
+        raise GenerationError(f"robot {what} ({p[0]:.2f}, {p[1]:.2f}) is not on free floor")
+    return (round(float(q[0]), 3), round(float(q[1]), 3))
+
+
+def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
+               notes: list[str]) -> RobotSpec:
+    """The robot crosses the scene: from one side of the crowd to the other, through where people are.
+
+    Candidates are free points of the zones people start in or head for and of the zones next to
+    them, at least ROBOT_CLEARANCE from every spawn. The pair chosen maximises its straight-line
+    length minus three times its distance from the crowd's centre, so the robot has to pass the crowd.
+    """
+    starts = [a.start for a in post.agents]
+    if request.start is not None and request.goal is not None:
+        start = _resolve_point(world, grid, request.start, "start")
+        goal = _resolve_point(world, grid, request.goal, "goal")
+    else:
+        fixed_start = _resolve_point(world, grid, request.start, "start") if request.start is not None else None
+        fixed_goal = _resolve_point(world, grid, request.goal, "goal") if request.goal is not None else None
+        candidates = _robot_candidates(world, grid, post, starts, seed)
+        centre = (sum(p[0] for p in starts) / len(starts), sum(p[1] for p in starts) / len(starts))
+        pairs = []
+        firsts = [fixed_start] if fixed_start else candidates
+        seconds = [fixed_goal] if fixed_goal else candidates
+        for a in firsts:
+            for b in seconds:
+                if a == b:
+                    continue
+                length = math.dist(a, b)
+                if length < 4.0:
+                    continue
+                # Crossing the crowd matters more than length; beyond 20 m a longer walk adds nothing.
+                pairs.append((min(length, 20.0) - 3.0 * _point_segment_distance(centre, a, b), a, b))
+        pairs.sort(key=lambda t: (-t[0], t[1], t[2]))
+        if not pairs:
+            raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
+        for _, a, b in pairs[:20]:
+            try:
+                path = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
+                return RobotSpec(start=a, goal=b, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
+            except PlanningError:
+                continue
+        raise GenerationError("no reachable start/goal pair for the robot near the scene")
+    try:
+        path = planner.plan(start, goal, start_label="robot start", goal_label="robot goal")
+    except PlanningError as exc:
+        raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
+    return RobotSpec(start=start, goal=goal, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
+
+
+def _robot_candidates(world: Any, grid: Any, post: PostProcessed, starts: Sequence[Point], seed: int) -> list[Point]:
+    zones: list[str] = []
+    for a in post.agents:
+        for z in (a.spawn_zone, a.zone):
+            if z and z not in zones:
+                zones.append(z)
+    for z in list(zones):
+        for d in world.doors_of(z):
+            other = d.leads_to if d.zone == z else d.zone
+            if other in [zz.name for zz in world.zones] and other not in zones:
+                zones.append(other)
+    rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x3C6EF372])
+    space = FreeSpace(world, grid)
+    found: list[Point] = []
+    per_zone = max(4, ROBOT_CANDIDATES // max(len(zones), 1))
+    spawn_arr = np.asarray(starts, dtype=float).reshape(-1, 2)
+    for z in zones:
+        pts = space.cells(z)
+        if len(pts) == 0:
+            continue
+        d = np.min(np.hypot(pts[:, None, 0] - spawn_arr[None, :, 0], pts[:, None, 1] - spawn_arr[None, :, 1]), axis=1)
+        pts = pts[d >= ROBOT_CLEARANCE]
+        if len(pts) == 0:
+            continue
+        pick = rng.choice(len(pts), size=min(per_zone, len(pts)), replace=False)
+        found += [(round(float(pts[i, 0]), 3), round(float(pts[i, 1]), 3)) for i in sorted(pick)]
+    return found
+
+
+def _point_segment_distance(p: Point, a: Point, b: Point) -> float:
+    ax, ay = a
+    dx, dy = b[0] - ax, b[1] - ay
+    length2 = dx * dx + dy * dy
+    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / length2))
+    return math.hypot(p[0] - ax - t * dx, p[1] - ay - t * dy)

@@ -1,0 +1,899 @@
+"""Post-processing: the model's draft becomes one BehaviorTree.CPP v4 file per agent.
+
+The model only names node types, places and counts. Everything a model tracks badly is done here,
+deterministically from the seed: the population is made to match the counts the prompt states,
+agents get ids 1..N, groups get ids, leaders and member lists, every `target` name is resolved to a
+point by the preset's goal sampling, spawn points are sampled in free space of the spawn zone at
+least two radii apart, and auto ports are filled so each file is self-contained.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+from xml.sax.saxutils import quoteattr
+
+import numpy as np
+import shapely
+
+from grove_tui.bt.manifest import NODES, NodeSpec
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.language.quantities import Quantity, lemma, semantic_tokens
+
+Point = tuple[float, float]
+
+AGENT_RADIUS = 0.35
+SPAWN_SPACING = 2 * AGENT_RADIUS  # centres at least two radii apart: nobody starts overlapping
+GOAL_SPACING = 0.8  # distinct goal points in one zone, so arrivals do not pile onto one spot
+QUEUE_SPACING = 0.6  # the Queue node's default slot spacing
+# Highest density we accept for a zone's free floor: standing crowds reach 2-3 people/m^2, but a
+# scenario that starts at that density cannot move; beyond 1.5/m^2 we tell the user.
+MAX_DENSITY = 1.5
+GROUPING_NODES = frozenset({"JoinGroup", "Converse"})
+MAX_WALKING_GROUP = 5  # people who walk as one social group (observed groups are mostly 2-4)
+
+
+@dataclass
+class AgentPlan:
+    """One agent after post-processing, before the operational layer adds waypoints."""
+
+    id: int
+    group_index: int  # index of the reconciled draft group
+    sfm_group: int  # social-force group id, -1 for none
+    label: str
+    start: Point
+    spawn_zone: str
+    targets: list[tuple[str, Point]]  # navigation targets in tree order (RoI name, point)
+    zone: str  # zone the agent is headed for
+    tree: DraftNode
+    xml: str = ""
+    max_vel: float = 1.0
+    field_id: str | None = None
+    exit: str | None = None
+
+
+@dataclass
+class GroupPlan:
+    index: int
+    label: str
+    count: int
+    spawn: str
+    tree: DraftNode
+    quantity: Quantity | None
+    member_ids: list[int] = field(default_factory=list)
+    sfm_group: int = -1
+    field_id: str | None = None
+    parties: dict[int, list[int]] = field(default_factory=dict)  # social-group id -> its members
+
+
+@dataclass
+class PostProcessed:
+    agents: list[AgentPlan]
+    groups: list[GroupPlan]
+    exit: str | None  # the shared exit (emergency)
+    goals: list[Point]  # global goal table: goal_id - 1 -> point (HuNavSim 2.0 global_goals)
+    notes: list[str]  # what was repaired, for generation.json
+
+
+# ---- populations ----------------------------------------------------------------------------
+
+def _label_score(group: DraftGroup, quantity: Quantity) -> float:
+    label = set(semantic_tokens(group.label)) | {lemma(w) for w in group.label.lower().split()}
+    score = 0.0
+    if quantity.noun in label:
+        score += 2.0
+    score += len(label & quantity.label_tokens)
+    return score
+
+
+def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Preset, world: Any,
+                     default_spawn: str, notes: list[str], prompt: str = "", selection: Any = None,
+                     allowed_nodes: Sequence[str] = ()) -> list[GroupPlan]:
+    """Groups whose counts are the counts the prompt states.
+
+    With stated quantities the population is exactly their sum: each quantity takes the draft group
+    whose label names its noun (else the next unused group in order); groups left over are dropped and
+    missing ones are added, so a model that merged "ten patients and two nurses" into one group still
+    yields two groups of ten and two. An added group starts in the place its own words name ("two
+    nurses chat in the lobby" -> lobby) and does what the closest draft group does there, or simply
+    walks to that place.
+    """
+    groups = list(draft.groups)
+    if not quantities:
+        return [GroupPlan(i, g.label, g.count, _zone_of(world, g.spawn, default_spawn), g.tree, None)
+                for i, g in enumerate(groups)]
+    unused = list(range(len(groups)))
+    plans: list[GroupPlan] = []
+    for qi, q in enumerate(quantities):
+        pick = None
+        if unused:
+            best = max(unused, key=lambda i: (_label_score(groups[i], q), -i))
+            pick = best if _label_score(groups[best], q) > 0 else unused[0]
+        if pick is not None:
+            unused.remove(pick)
+            g = groups[pick]
+            count = g.count if q.implied else q.count  # "visitors walk in": how many is the model's choice
+            if g.count != count:
+                notes.append(f"group '{g.label}': count {g.count} -> {count} ('{q.phrase}')")
+            # The prompt's word names the group when the model's label does not ("visitors", not "staff_room")
+            label = g.label if _label_score(g, q) > 0 else q.phrase.split()[-1].lower()
+            plans.append(GroupPlan(len(plans), label, count, _zone_of(world, g.spawn, default_spawn), g.tree, q))
+            continue
+        if not groups:
+            raise GenerationError(f"the model wrote no group of people for '{q.phrase}'; rephrase the prompt or try another seed")
+        end = quantities[qi + 1].start if qi + 1 < len(quantities) else len(prompt)
+        place = _place_in(prompt[q.end:end], selection)
+        template = max(groups, key=lambda g: _label_score(g, q))
+        label = "people" if q.noun == "person" else q.noun
+        if place is None:
+            spawn, tree, how = _zone_of(world, template.spawn, default_spawn), template.tree, f"tree copied from '{template.label}'"
+        else:
+            spawn = _zone_of(world, place, default_spawn)
+            tree = template.tree if place in _tree_places(template.tree) else _walk_to(place, template.tree, allowed_nodes)
+            how = f"at {place}"
+        notes.append(f"added group '{label}' of {q.count} for '{q.phrase}' ({how})")
+        plans.append(GroupPlan(len(plans), label, q.count, spawn, tree, q))
+    if all(q.implied for q in quantities):
+        # No number anywhere: the prompt does not fix the population, so the model's other groups stand.
+        for i in unused:
+            g = groups[i]
+            plans.append(GroupPlan(len(plans), g.label, g.count, _zone_of(world, g.spawn, default_spawn), g.tree, None))
+        return plans
+    for i in unused:
+        notes.append(f"dropped group '{groups[i].label}' ({groups[i].count}): the prompt states no such people")
+    return plans
+
+
+def _group_text(group: GroupPlan, quantities: Sequence[Quantity], prompt: str) -> str:
+    """The prompt words about this group: from its quantity to the next one (the whole prompt if unstated)."""
+    if group.quantity is None:
+        return prompt
+    later = [q.start for q in quantities if q.start > group.quantity.start]
+    return prompt[group.quantity.start:min(later) if later else len(prompt)]
+
+
+def _ground_spawns(groups: Sequence[GroupPlan], quantities: Sequence[Quantity], prompt: str, selection: Any,
+                   notes: list[str], world: Any) -> None:
+    """People start where the prompt puts them; otherwise where the model put them, unless that is
+    the very place they are sent to, in which case they come from the largest room next to it."""
+    for g in groups:
+        named = spawn_named(_group_text(g, quantities, prompt), selection)
+        if named is None and len(groups) == 1:
+            named = spawn_named(prompt, selection)
+        if named is not None:
+            if named != g.spawn:
+                notes.append(f"group '{g.label}': spawn {g.spawn} -> {named} (the prompt puts them there)")
+                g.spawn = named
+            continue
+        first = _first_goto(g.tree)
+        if first is not None and _zone_of(world, first, g.spawn) == g.spawn:
+            neighbours = sorted({d.leads_to if d.zone == g.spawn else d.zone for d in world.doors_of(g.spawn)}
+                                - {g.spawn, "outside"})
+            if neighbours:
+                best = max(neighbours, key=lambda z: (world.zone(z).area, z))
+                notes.append(f"group '{g.label}': spawn {g.spawn} -> {best} (they walk to {first})")
+                g.spawn = best
+
+
+def _first_goto(tree: DraftNode) -> str | None:
+    for node in tree.walk():
+        if node.node in ("Wander", "Converse", "Queue", "FollowVelocityField", "Wait"):
+            return None
+        if node.node == "GoTo":
+            return node.ports.get("target")
+    return None
+
+
+def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, text: str, notes: list[str],
+                  label: str, allowed: Sequence[str] = ("GoTo",)) -> DraftNode:
+    """The preset's deterministic overlay on a group's tree.
+
+    queuing: a group whose words speak of queueing, lining up or being served gets the Queue
+    subtree at its service point when the model left it out. emergency: every tree ends by
+    following the velocity field to the exit. Every preset with waypoints: places the prompt
+    sends the group to ("to the kitchen") that its tree never reaches are appended as GoTo steps.
+    """
+    if preset.velocity != "field":
+        tree = _follow_stated_intent(tree, text, world, selection, allowed, notes, label)
+    kinds = {n.node for n in tree.walk()}
+    if preset.name == "queuing" or (preset.goal_sampling == "sequential" and "Queue" in preset.required_nodes):
+        words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
+        if "Queue" not in kinds and words & QUEUE_WORDS:
+            service = _service_point(tree, world, selection)
+            if service is not None:
+                notes.append(f"group '{label}': queue at {service} (queuing preset)")
+                return DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": service}),
+                                                  DraftNode("Queue", {"service_point": service})))
+    if preset.velocity != "field" and "GoTo" in allowed:
+        # Destinations the prompt states must be in the tree, whatever the model wrote.
+        have = _tree_places(tree)
+        missing = [g for g in goals_named(text, selection) if not _reaches(world, g, have)]
+        if missing:
+            notes.append(f"group '{label}': goes to {', '.join(missing)} (named in the prompt)")
+            steps = tuple(DraftNode("GoTo", {"target": g}) for g in missing)
+            if tree.node == "Sequence":
+                return DraftNode("Sequence", dict(tree.ports), tree.children + steps)
+            return DraftNode("Sequence", {}, (tree,) + steps)
+    if preset.velocity == "field" and "FollowVelocityField" not in kinds:
+        exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
+        if exit_name is not None:
+            notes.append(f"group '{label}': follows the evacuation field (emergency preset)")
+            follow = DraftNode("FollowVelocityField", {"exit": exit_name})
+            return DraftNode("Sequence", {}, (tree, follow)) if tree.children or tree.node != "Sequence" else follow
+    return tree
+
+
+def _stated_intent(text: str) -> str | None:
+    """The behavior a group's own words state, if they state one clearly."""
+    words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
+    for kind in ("queue", "converse", "wander"):
+        if words & _INTENT_WORDS[kind]:
+            return kind
+    if words & _INTENT_WORDS["walk"]:
+        return "walk"
+    return None
+
+
+def _entity_service(name: str, world: Any) -> str | None:
+    """The service point a place name stands for: the entity itself, or its zone's counter/desk."""
+    try:
+        obj = world.find(name)
+    except Exception:
+        return None
+    if hasattr(obj, "interaction_point"):
+        return obj.name
+    zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
+    service = _service_entity(zone) if hasattr(zone, "entities") else None
+    return None if service is None else service.name
+
+
+def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any, allowed: Sequence[str],
+                          notes: list[str], label: str) -> DraftNode:
+    """When a group's words say plainly what it does and where ("ten patients queue at the pharmacy
+    counter", "a family walks to the exit"), a tree that does something else, or elsewhere, is replaced
+    by the plain tree for those words. Vague words leave the model's tree alone."""
+    text = _CLAUSE_BREAK.split(text, maxsplit=1)[0]  # "...chat in the staff room while visitors walk...": own clause only
+    intent = _stated_intent(text)
+    if intent is None or selection is None:
+        return tree
+    places = places_named(text, selection)
+    located = [name for prep, name in places if prep in _SPAWN_PREPOSITIONS] or [name for _, name in places]
+    kinds = {n.node for n in tree.walk()}
+    have = _tree_places(tree)
+    have_zones = {_zone_of(world, p, p) for p in have}
+    replacement: DraftNode | None = None
+    if intent == "queue" and "Queue" in allowed:
+        service = next((s for s in (_entity_service(name, world) for _, name in places) if s), None)
+        queued_at = {n.ports.get("service_point") for n in tree.walk() if n.node == "Queue"}
+        if service is not None and queued_at != {service}:
+            steps = (DraftNode("GoTo", {"target": service}),) if "GoTo" in allowed else ()
+            replacement = DraftNode("Sequence", {}, steps + (DraftNode("Queue", {"service_point": service}),))
+    elif intent == "converse" and "Converse" in allowed and places:
+        spot = located[0]
+        if not any(n.node == "Converse" and _zone_of(world, n.ports.get("target", ""), "") == _zone_of(world, spot, spot)
+                   for n in tree.walk()):
+            replacement = DraftNode("Converse", {"target": spot})
+    elif intent == "wander" and "Wander" in allowed and places:
+        zone = _zone_of(world, located[0], located[0])
+        if not any(n.node == "Wander" and _zone_of(world, n.ports.get("zone", ""), "") == zone for n in tree.walk()):
+            replacement = DraftNode("Wander", {"zone": zone})
+    elif intent == "walk" and "GoTo" in allowed:
+        goals = [name for prep, name in places if prep in _GOAL_PREPOSITIONS]
+        stray = kinds & {"Queue", "Converse", "Wander"}
+        wrong = [p for p in have if not any(_reaches(world, g, {p}) for g in goals)]
+        if goals and (stray or wrong):  # only missing the destination: the append rule below keeps the tree
+            together = (DraftNode("JoinGroup", {}),) if "JoinGroup" in kinds and "JoinGroup" in allowed else ()
+            steps = together + tuple(DraftNode("GoTo", {"target": g}) for g in goals)
+            replacement = steps[0] if len(steps) == 1 else DraftNode("Sequence", {}, steps)
+    if replacement is None:
+        return tree
+    notes.append(f"group '{label}': {intent} as the prompt says ({', '.join(sorted(_tree_places(replacement)))}) "
+                 f"instead of the model's {', '.join(sorted(kinds))}")
+    return replacement
+
+
+def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
+    """Where a group is served: an entity its tree or the prompt names, else its zone's counter."""
+    candidates = [n for n in _tree_places(tree)]
+    candidates += [m.name for m in getattr(selection, "matches", ()) if m.reason == "prompt"]
+    for name in candidates:
+        try:
+            obj = world.find(name)
+        except Exception:
+            continue
+        if hasattr(obj, "interaction_point"):
+            return obj.name
+    for name in candidates + list(getattr(selection, "zones", ())):
+        try:
+            obj = world.find(name)
+        except Exception:
+            continue
+        zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
+        if hasattr(zone, "entities"):
+            service = _service_entity(zone)
+            if service is not None:
+                return service.name
+    return None
+
+
+def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
+    """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
+    total = sum(q.count for q in quantities)
+    zones = list(getattr(selection, "named_zones", ()) or getattr(selection, "zones", ()))
+    if total and zones:
+        space = FreeSpace(world, grid)
+        capacity = sum(space.capacity(z) for z in zones)
+        if total > capacity:
+            area = sum(space.free_area(z) for z in zones)
+            raise PromptError(f"{total} people do not fit in {', '.join(zones)}: about {area:.0f} m^2 of free floor "
+                              f"holds at most {capacity} at a plausible density ({MAX_DENSITY:g}/m^2)")
+    for q in quantities:
+        if q.count > preset.limits.max_count:
+            raise PromptError(f"'{q.phrase}' asks for {q.count} people in one group; preset '{preset.name}' "
+                              f"allows at most {preset.limits.max_count} per group")
+
+
+def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
+    for g in groups:
+        if g.count > preset.limits.max_count:
+            raise PromptError(f"'{g.quantity.phrase if g.quantity else g.label}' asks for {g.count} people in one "
+                                  f"group; preset '{preset.name}' allows at most {preset.limits.max_count} per group")
+
+
+_SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
+_GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
+QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
+_CLAUSE_BREAK = re.compile(r"\b(?:while|whilst|whereas|meanwhile|but)\b|[;.]", re.IGNORECASE)
+# What a group's own words say it does. Stricter than QUEUE_WORDS: "wait" alone is not a queue.
+_INTENT_WORDS = {
+    "queue": frozenset("queue queuing queueing queued lining line turn served".split()),
+    "converse": frozenset("chat chatting chatted talk talking talked converse conversing conversation gossip "
+                          "gossiping discuss discussing socialise socialize socialising socializing".split()),
+    "wander": frozenset("wander wandering wandered stroll strolling strolled roam roaming browse browsing "
+                        "meander meandering mill milling".split()),
+    "walk": frozenset("walk walking walked go going goe gone head heading move moving come coming leave leaving "
+                      "hurry hurrying run running rush rushing return returning visit visiting enter entering "
+                      "cross crossing arrive arriving proceed proceeding".split()),
+}
+
+
+_ARRIVAL_VERBS = frozenset("come comes coming came enter enters entering entered arrive arrives arriving arrived".split())
+_DEPARTURE_VERBS = frozenset("leave leaves leaving left exit exits exiting exited go goes going went walk walks "
+                             "walking walked head heads heading headed".split())
+
+
+def _words_with_prepositions(text: str) -> Iterator[tuple[str, str]]:
+    """Each word that is not a preposition, with the preposition in force ("" before any).
+
+    "through" is where people come from after an arrival verb ("come in through the front door",
+    "enter through the garage") and where they go otherwise ("leave through the back door").
+    """
+    preposition = ""
+    arriving = False
+    for w in re.findall(r"[a-z0-9]+", text.lower()):
+        if w in _ARRIVAL_VERBS:
+            arriving = True
+        elif w in _DEPARTURE_VERBS:
+            arriving = False
+        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
+            preposition = "from" if w == "through" and arriving else w
+            continue
+        yield w, preposition
+
+
+def places_named(text: str, selection: Any) -> list[tuple[str, str]]:
+    """(preposition, RoI name) for every selected RoI the words mention, in order."""
+    if selection is None:
+        return []
+    found: list[tuple[str, str]] = []
+    for w, preposition in _words_with_prepositions(text):
+        t = lemma(w)
+        for m in getattr(selection, "matches", ()):
+            if m.reason == "prompt" and t in m.matched:
+                # One word, one place: the first (best-ranked) RoI it selected.
+                if not found or found[-1][1] != m.name:
+                    found.append((preposition, m.name))
+                break
+    return found
+
+
+def goals_named(text: str, selection: Any) -> list[str]:
+    """Places the words send people to ("to the kitchen", "into the cafe")."""
+    return list(dict.fromkeys(name for prep, name in places_named(text, selection) if prep in _GOAL_PREPOSITIONS))
+
+
+def spawn_named(text: str, selection: Any) -> str | None:
+    """The place the words put people in ("in the lobby", "from the ward"), not where they go ("to the cafe")."""
+    if selection is None:
+        return None
+    for w, preposition in _words_with_prepositions(text):
+        t = lemma(w)
+        for m in getattr(selection, "matches", ()):
+            if m.reason == "prompt" and t in m.matched:
+                if preposition in _SPAWN_PREPOSITIONS:
+                    return m.zone
+                break
+    return None
+
+
+def _place_in(text: str, selection: Any) -> str | None:
+    """The first selected RoI the text names (the words after a quantity, up to the next one)."""
+    if selection is None or not text.strip():
+        return None
+    tokens = set(semantic_tokens(text))
+    for m in getattr(selection, "matches", ()):
+        if m.reason == "prompt" and tokens & set(m.matched):
+            return m.name
+    return None
+
+
+def _tree_places(tree: DraftNode) -> set[str]:
+    places = set()
+    for node in tree.walk():
+        for port in _target_ports(NODES[node.node]):
+            if port in node.ports:
+                places.add(node.ports[port])
+    return places
+
+
+def _walk_to(place: str, template: DraftNode, allowed_nodes: Sequence[str]) -> DraftNode:
+    """The simplest tree that takes a person to `place` with the nodes this request allows."""
+    if "GoTo" in allowed_nodes:
+        return DraftNode("GoTo", {"target": place})
+    if "FollowVelocityField" in allowed_nodes:
+        return DraftNode("FollowVelocityField", {"exit": place})
+    return template
+
+
+def _reaches(world: Any, goal: str, places: set[str]) -> bool:
+    """Whether a tree visiting `places` goes where the words send the group: anywhere in a named
+    zone, but to a named door or thing itself ("walks to the exit" is not "walks to the lobby")."""
+    if goal in places:
+        return True
+    return _zone_of(world, goal, "") == goal and any(_zone_of(world, p, p) == goal for p in places)
+
+
+def _zone_of(world: Any, name: str, default: str) -> str:
+    """Spawns are zones; a door or entity as spawn means the zone it belongs to."""
+    try:
+        obj = world.find(name)
+    except Exception:
+        return default
+    zone = getattr(obj, "zone", None)
+    return zone if isinstance(zone, str) and zone else getattr(obj, "name", default)
+
+
+# ---- free-space sampling --------------------------------------------------------------------
+
+class FreeSpace:
+    """Free cells of the inflated grid per zone, restricted to the part connected to the zone's doors."""
+
+    def __init__(self, world: Any, grid: Any) -> None:
+        self.world = world
+        self.grid = grid
+        self._cells: dict[str, np.ndarray] = {}
+        free = ~np.asarray(grid.occupied, dtype=bool)
+        self._labels = _components(free)
+        self._main = self._main_component()
+        self._taken: dict[str, list[Point]] = {}
+
+    def _main_component(self) -> int:
+        counts = np.bincount(self._labels[self._labels > 0].ravel()) if np.any(self._labels > 0) else np.zeros(1)
+        return int(np.argmax(counts)) if len(counts) > 1 else 1
+
+    def cells(self, zone_name: str) -> np.ndarray:
+        """(K, 2) world points of free cell centres inside the zone, in the world's main free component."""
+        if zone_name in self._cells:
+            return self._cells[zone_name]
+        zone = self.world.zone(zone_name)
+        g = self.grid
+        x0, y0, x1, y1 = zone.polygon.bounds
+        r0, c0 = g.world_to_cell(x0, y0)
+        r1, c1 = g.world_to_cell(x1, y1)
+        h, w = g.occupied.shape
+        rows = np.arange(max(0, min(r0, r1)), min(h, max(r0, r1) + 1))
+        cols = np.arange(max(0, min(c0, c1)), min(w, max(c0, c1) + 1))
+        rr, cc = np.meshgrid(rows, cols, indexing="ij")
+        rr, cc = rr.ravel(), cc.ravel()
+        keep = (~np.asarray(g.occupied)[rr, cc]) & (self._labels[rr, cc] == self._main)
+        rr, cc = rr[keep], cc[keep]
+        xs = g.origin[0] + (cc + 0.5) * g.resolution
+        ys = g.origin[1] + (rr + 0.5) * g.resolution
+        inside = shapely.contains_xy(zone.polygon, xs, ys)
+        pts = np.stack([xs[inside], ys[inside]], axis=1) if np.any(inside) else np.zeros((0, 2))
+        self._cells[zone_name] = pts
+        return pts
+
+    def free_area(self, zone_name: str) -> float:
+        return len(self.cells(zone_name)) * self.grid.resolution ** 2
+
+    def capacity(self, zone_name: str) -> int:
+        # Inflation shrank the free area by a radius all round; people's centres live there but their
+        # bodies stand on the zone's whole walkable floor, which is what density is measured on.
+        walkable = self.world.walkable().intersection(self.world.zone(zone_name).polygon).area
+        return int(math.floor(walkable * MAX_DENSITY))
+
+    def sample(self, zone_name: str, n: int, rng: np.random.Generator, spacing: float, *,
+               key: str, cluster: Point | None = None, avoid: Sequence[Point] = ()) -> list[Point]:
+        """n points in the zone, pairwise >= spacing apart and from earlier samples with the same key.
+
+        Without `cluster` the points are spread over the zone (random order, greedy acceptance);
+        with it they are the acceptable points nearest to `cluster`, so a family starts together.
+        """
+        pts = self.cells(zone_name)
+        if len(pts) == 0:
+            raise GenerationError(f"zone '{zone_name}' has no free floor to place anyone on")
+        taken = self._taken.setdefault(key, [])
+        blockers = list(taken) + list(avoid)
+        order = rng.permutation(len(pts))
+        if cluster is not None:
+            d = np.hypot(pts[order, 0] - cluster[0], pts[order, 1] - cluster[1])
+            order = order[np.argsort(d, kind="stable")]
+        chosen: list[Point] = []
+        bucket: dict[tuple[int, int], list[Point]] = {}
+        cell = spacing
+
+        def ok(p: Point) -> bool:
+            bx, by = int(math.floor(p[0] / cell)), int(math.floor(p[1] / cell))
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    for q in bucket.get((bx + dx, by + dy), ()):
+                        if (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 < spacing * spacing:
+                            return False
+            return True
+
+        def add(p: Point) -> None:
+            bucket.setdefault((int(math.floor(p[0] / cell)), int(math.floor(p[1] / cell))), []).append(p)
+
+        for q in blockers:
+            add(q)
+        for idx in order:
+            p = (round(float(pts[idx, 0]), 3), round(float(pts[idx, 1]), 3))
+            if ok(p):
+                add(p)
+                chosen.append(p)
+                if len(chosen) == n:
+                    break
+        if len(chosen) < n:
+            raise GenerationError(f"zone '{zone_name}' cannot hold {n} more people at least {spacing:.1f} m apart "
+                                  f"(free floor {self.free_area(zone_name):.0f} m^2, {len(taken)} already there)")
+        taken.extend(chosen)
+        return chosen
+
+
+def _components(free: np.ndarray) -> np.ndarray:
+    """8-connected labels of free cells (0 = occupied)."""
+    from scipy import ndimage
+
+    labels, _ = ndimage.label(free, structure=np.ones((3, 3), dtype=int))
+    return labels
+
+
+# ---- targets --------------------------------------------------------------------------------
+
+class TargetResolver:
+    """Turns RoI names into points by the preset's goal sampling; seeded, spread, reproducible."""
+
+    def __init__(self, world: Any, grid: Any, space: FreeSpace, preset: Preset, rng: np.random.Generator) -> None:
+        self.world, self.grid, self.space, self.preset, self.rng = world, grid, space, preset, rng
+        self.group_points: dict[tuple[int, str], Point] = {}
+
+    def snap(self, p: Point, label: str) -> Point:
+        if self.grid.is_free(p[0], p[1]):
+            return (round(float(p[0]), 3), round(float(p[1]), 3))
+        q = self.grid.nearest_free(p[0], p[1], max_dist=3.0)
+        if q is None:
+            raise GenerationError(f"'{label}' has no free floor within 3 m of {p[0]:.1f}, {p[1]:.1f}")
+        return (round(float(q[0]), 3), round(float(q[1]), 3))
+
+    def zone_of(self, name: str) -> str:
+        obj = self.world.find(name)
+        return getattr(obj, "zone", None) if hasattr(obj, "interaction_point") or hasattr(obj, "leads_to") else obj.name
+
+    def resolve(self, name: str, *, node: str, slot: int | None = None) -> Point:
+        obj = self.world.find(name)
+        if hasattr(obj, "interaction_point"):  # entity
+            base = self.snap(obj.interaction_point, name)
+            if self.preset.goal_sampling == "sequential" and slot is not None and node != "Queue":
+                return self._queue_slot(obj, base, slot)
+            if node == "Queue":
+                return base
+            return self._beside(name, obj.zone, base, slot)
+        if hasattr(obj, "leads_to"):  # door
+            if node == "FollowVelocityField":
+                return (round(obj.position[0], 3), round(obj.position[1], 3))
+            return self._beside(name, obj.zone, self.snap(obj.inward_point(0.6), name), slot)
+        if node == "Queue":
+            # A queue needs a service point; a zone named as one is served at its counter-like entity.
+            service = _service_entity(obj)
+            if service is not None:
+                return self.resolve(service.name, node=node, slot=slot)
+        (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}")
+        return p
+
+    def _beside(self, name: str, zone: str, base: Point, slot: int | None) -> Point:
+        """The k-th person sent to one door or thing stands next to the ones before, not on top of them:
+        people sharing one goal point would jostle for it for the rest of the run."""
+        if not slot:
+            return base
+        (p,) = self.space.sample(zone, 1, self.rng, GOAL_SPACING, key=f"beside:{name}", cluster=base, avoid=(base,))
+        return p
+
+    def _queue_slot(self, entity: Any, base: Point, k: int) -> Point:
+        """Sequential allocation: the k-th person sent to a service point walks to the k-th place of its line.
+
+        The line leaves the service point away from the entity; where it would leave the zone or hit
+        an obstacle the person is sent to the nearest free spot of the zone instead.
+        """
+        if k == 0:
+            return base
+        cx, cy = entity.polygon.centroid.x, entity.polygon.centroid.y
+        dx, dy = base[0] - cx, base[1] - cy
+        norm = math.hypot(dx, dy) or 1.0
+        p = (base[0] + dx / norm * QUEUE_SPACING * k, base[1] + dy / norm * QUEUE_SPACING * k)
+        zone = self.world.zone(entity.zone)
+        if self.grid.is_free(*p) and zone.polygon.contains(shapely.Point(p)):
+            return (round(p[0], 3), round(p[1], 3))
+        (q,) = self.space.sample(entity.zone, 1, self.rng, QUEUE_SPACING, key=f"queue:{entity.name}", cluster=base)
+        return q
+
+
+def _service_entity(zone: Any) -> Any:
+    for wanted in ("counter", "desk", "reception", "booth", "vending_machine", "machine", "kiosk"):
+        for e in zone.entities:
+            if wanted in e.type or wanted in e.name:
+                return e
+    return zone.entities[0] if zone.entities else None
+
+
+# ---- trees ----------------------------------------------------------------------------------
+
+def _fmt(v: Any) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, float):
+        text = f"{v:.3f}".rstrip("0").rstrip(".")
+        return text if text not in ("", "-0") else "0"
+    return str(v)
+
+
+def _target_ports(spec: NodeSpec) -> list[str]:
+    return [p.name for p in spec.ports if p.type == "target"]
+
+
+def navigation_targets(tree: DraftNode) -> list[tuple[DraftNode, str]]:
+    """(node, target port) pairs in tick order for every node that moves the agent to a place."""
+    out = []
+    for node in tree.walk():
+        spec = NODES[node.node]
+        if spec.navigates or node.node in ("Queue", "FollowVelocityField"):
+            for port in _target_ports(spec):
+                if port in node.ports:
+                    out.append((node, port))
+    return out
+
+
+class TreeWriter:
+    """Per-agent BT XML from a draft tree: model-written ports verbatim, auto ports filled."""
+
+    def __init__(self, resolver: TargetResolver) -> None:
+        self.resolver = resolver
+        self.goal_ids: dict[Point, int] = {}
+
+    def goal_id(self, p: Point) -> int:
+        if p not in self.goal_ids:
+            self.goal_ids[p] = len(self.goal_ids) + 1
+        return self.goal_ids[p]
+
+    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> str:
+        body = self._node(agent.tree, agent, group, targets, 2)
+        tree_id = f"agent_{agent.id}"
+        return (
+            '<?xml version="1.0" encoding="UTF-8"?>\n'
+            f'<root BTCPP_format="4" main_tree_to_execute="{tree_id}">\n'
+            f'  <BehaviorTree ID="{tree_id}">\n{body}  </BehaviorTree>\n</root>\n'
+        )
+
+    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point], depth: int) -> str:
+        spec = NODES[node.node]
+        attrs: list[tuple[str, str]] = []
+        point = targets.get(id(node))
+        party = group.parties.get(agent.sfm_group, group.member_ids)
+        others = [m for m in party if m != agent.id]
+        for port in spec.ports:
+            if port.direction != "in":
+                continue
+            name = port.name
+            if name in node.ports:
+                attrs.append((name, _fmt(node.ports[name])))
+                continue
+            if not port.auto:
+                if port.default is not None:
+                    attrs.append((name, _fmt(port.default)))
+                continue
+            value = self._auto_value(spec, port, agent, group, others, point)
+            if value is not None:
+                attrs.append((name, value))
+        pad = "  " * depth
+        text = " ".join(f"{k}={quoteattr(v)}" for k, v in attrs)
+        opening = f"{pad}<{node.node}{(' ' + text) if text else ''}"
+        if not node.children:
+            return opening + "/>\n"
+        inner = "".join(self._node(c, agent, group, targets, depth + 1) for c in node.children)
+        return f"{opening}>\n{inner}{pad}</{node.node}>\n"
+
+    def _auto_value(self, spec: NodeSpec, port: Any, agent: AgentPlan, group: GroupPlan, others: list[int],
+                    point: Point | None) -> str | None:
+        name, kind = port.name, port.type
+        if kind == "agent" and isinstance(port.default, str) and port.default.startswith("{"):
+            return port.default  # the agent's own id, from the blackboard
+        if kind == "float" and isinstance(port.default, str) and port.default.startswith("{"):
+            return port.default  # {dt}
+        if kind == "agent":
+            # The other agent of a pair: the leader for members, the next member for the leader.
+            if others:
+                leader = group.parties.get(agent.sfm_group, group.member_ids)[0]
+                return str(leader if leader != agent.id else others[0])
+            return None
+        if kind == "agents":
+            ids = others if name == "non_main_agent_ids" else group.parties.get(agent.sfm_group, group.member_ids)
+            return ",".join(str(i) for i in ids)
+        if name in ("x", "target_x") and point is not None:
+            return _fmt(point[0])
+        if name in ("y", "target_y") and point is not None:
+            return _fmt(point[1])
+        if name == "goal_id" and point is not None:
+            return str(self.goal_id(point))
+        if name == "group_id":
+            return str(max(agent.sfm_group, 0))
+        if name == "field":
+            return agent.field_id
+        if kind == "point_list":
+            return ""
+        return None
+
+
+# ---- the stage ------------------------------------------------------------------------------
+
+def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity],
+                selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = ()) -> PostProcessed:
+    """Draft -> agents with ids, spawns, resolved targets and per-agent XML (waypoints still empty)."""
+    rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
+    notes: list[str] = []
+    default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
+    groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection, allowed_nodes)
+    if not groups:
+        raise GenerationError("the draft has no groups of people")
+    # Trees first: where a group starts depends on where its final tree sends it.
+    for g in groups:
+        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label,
+                               allowed_nodes)
+    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+    space = FreeSpace(world, grid)
+    _check_capacity(groups, space, world)
+    _check_limits(groups, preset)
+    resolver = TargetResolver(world, grid, space, preset, rng)
+    exit_name = _shared_exit(world, preset, groups, selection, notes) if preset.velocity == "field" else None
+
+    agents: list[AgentPlan] = []
+    next_id = 1
+    sfm_groups = 0
+    for g in groups:
+        g.member_ids = list(range(next_id, next_id + g.count))
+        next_id += g.count
+        node_types = {n.node for n in g.tree.walk()}
+        # Who walks as one social group: the whole group for a conversation, and walking groups of at
+        # most MAX_WALKING_GROUP ("25 staff walk together" are colleagues in small groups, not one
+        # 25-person formation held together by group forces).
+        parties = [g.count]
+        if node_types & GROUPING_NODES and g.count > 1:
+            g.sfm_group = sfm_groups
+            if "Converse" not in node_types and g.count > MAX_WALKING_GROUP:
+                n = math.ceil(g.count / MAX_WALKING_GROUP)
+                parties = [g.count // n + (1 if i < g.count % n else 0) for i in range(n)]
+                sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
+                notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
+            sfm_groups += len(parties)
+        if preset.velocity == "field":
+            g.field_id = f"group_{g.index + 1}"
+        first = 0
+        for k, size in enumerate(parties):
+            party = g.sfm_group + k if g.sfm_group >= 0 else -1
+            cluster = None
+            if party >= 0:
+                (cluster,) = space.sample(g.spawn, 1, rng, 0.1, key=f"anchor:{g.spawn}:{g.index}:{k}")
+            starts = space.sample(g.spawn, size, rng, SPAWN_SPACING, key="spawn", cluster=cluster)
+            if party >= 0:
+                g.parties[party] = g.member_ids[first:first + size]
+            for agent_id, start in zip(g.member_ids[first:first + size], starts):
+                agents.append(AgentPlan(agent_id, g.index, party, g.label, start, g.spawn, [], g.spawn, g.tree,
+                                        max_vel=preset.max_vel, field_id=g.field_id, exit=exit_name))
+            first += size
+
+    writer = TreeWriter(resolver)
+    by_index = {g.index: g for g in groups}
+    served: dict[str, int] = {}
+    for agent in agents:
+        g = by_index[agent.group_index]
+        tree = _with_exit(agent.tree, exit_name) if exit_name else agent.tree
+        agent.tree = tree
+        targets: dict[int, Point] = {}
+        slots: dict[str, int] = {}
+        for node, port in navigation_targets(tree):
+            name = node.ports[port]
+            if name not in slots:
+                # This agent's place in the line of everyone sent to `name` (sequential goal allocation).
+                slots[name] = served.get(name, 0)
+                served[name] = slots[name] + 1
+            if node.node == "Converse":
+                # One circle per group: everyone resolves the same centre.
+                point = _group_point(resolver, g, name)
+            else:
+                point = resolver.resolve(name, node=node.node, slot=slots[name])
+            targets[id(node)] = point
+            agent.targets.append((name, point))
+        if agent.targets:
+            agent.zone = resolver.zone_of(agent.targets[-1][0])
+        agent.xml = writer.write(agent, g, targets)
+    goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
+    return PostProcessed(agents, groups, exit_name, goals, notes)
+
+
+def _group_point(resolver: TargetResolver, group: GroupPlan, name: str) -> Point:
+    key = (group.index, name)
+    if key not in resolver.group_points:
+        resolver.group_points[key] = resolver.resolve(name, node="Converse")
+    return resolver.group_points[key]
+
+
+def _with_exit(tree: DraftNode, exit_name: str) -> DraftNode:
+    """Every FollowVelocityField of the scenario leads to the one shared exit."""
+    ports = dict(tree.ports)
+    if tree.node == "FollowVelocityField":
+        ports["exit"] = exit_name
+    return DraftNode(tree.node, ports, tuple(_with_exit(c, exit_name) for c in tree.children))
+
+
+def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -> None:
+    """Everyone must fit, at a plausible density, both where they start and where they end up."""
+    ends: dict[str, int] = {}
+    starts: dict[str, int] = {}
+    for g in groups:
+        starts[g.spawn] = starts.get(g.spawn, 0) + g.count
+        places = [node.ports[port] for node, port in navigation_targets(g.tree) if node.node != "FollowVelocityField"]
+        if places:
+            zone = _zone_of(world, places[-1], g.spawn)
+            ends[zone] = ends.get(zone, 0) + g.count
+    for counts in (ends, starts):
+        for zone, n in counts.items():
+            cap = space.capacity(zone)
+            if n > cap:
+                raise PromptError(
+                    f"{n} people do not fit in zone '{zone}': its free floor of about "
+                    f"{space.free_area(zone):.0f} m^2 holds at most {cap} at a plausible density ({MAX_DENSITY:g}/m^2)")
+
+
+def _shared_exit(world: Any, preset: Preset, groups: Sequence[GroupPlan], selection: Any, notes: list[str]) -> str:
+    """The one exit everyone evacuates through: named in the prompt, else the model's choice, else the nearest."""
+    exits = {d.name: d for d in world.exits()}
+    if not exits:
+        raise GenerationError(f"world '{world.name}' has no exit door to evacuate through")
+    for m in getattr(selection, "matches", ()):
+        if m.reason == "prompt" and m.name in exits:
+            return m.name
+    chosen: dict[str, int] = {}
+    for g in groups:
+        for node in g.tree.walk():
+            if node.node == "FollowVelocityField" and node.ports.get("exit") in exits:
+                chosen[node.ports["exit"]] = chosen.get(node.ports["exit"], 0) + g.count
+    if chosen:
+        return max(sorted(chosen), key=lambda n: chosen[n])
+    cx = sum(world.zone(g.spawn).centroid[0] * g.count for g in groups) / sum(g.count for g in groups)
+    cy = sum(world.zone(g.spawn).centroid[1] * g.count for g in groups) / sum(g.count for g in groups)
+    name = min(sorted(exits), key=lambda n: math.hypot(exits[n].position[0] - cx, exits[n].position[1] - cy))
+    notes.append(f"shared exit: {name} (nearest to the crowd)")
+    return name

@@ -1,0 +1,184 @@
+"""Tactical layer: the bt model writes the draft (groups, counts, spawns, trees) under a grammar.
+
+The prompt is built for KV prefix reuse: the system message is fixed per preset (rules, the
+preset's template, the draft format), and everything that varies (places, retrieved node
+documents, the user's sentence) comes last in the user message. The grammar comes from the draft
+schema of exactly the offered node types and selected RoI names, so the model cannot name a node
+that was not retrieved or a place that does not exist. An answer that still fails the draft check
+is retried with the next seed.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from grove_tui.bt.manifest import NODES
+from grove_tui.generation.draft import Draft, DraftError, build_draft_schema, parse_draft
+from grove_tui.generation.presets import GenerationError, Preset
+from grove_tui.language.quantities import Quantity
+
+MAX_ATTEMPTS = 3
+
+_RULES = """Write JSON only: {"groups": [...]}. Each group is one kind of people:
+- "label": who they are (a few words), "count": how many, "spawn": the zone where they start,
+- "tree": their behavior tree. A tree node is {"node": TYPE, ...its ports..., "children": [...]}.
+  Only control nodes have children. Use only the node types and place names given below.
+Ids, coordinates and paths are filled in later: never write them."""
+
+_EXAMPLE = """Example: {"groups": [{"label": "visitors", "count": 3, "spawn": "lobby", "tree": {"node": "Sequence", "children": [{"node": "GoTo", "target": "cafe"}, {"node": "Wait", "duration": 30.0}]}}]}"""
+
+
+@dataclass(frozen=True)
+class RetrievedDoc:
+    name: str
+    kind: str
+    score: float
+    nodes: tuple[str, ...]
+    text: str
+
+
+@dataclass
+class SynthesisRequest:
+    """Everything the bt model is asked, kept for generation.json and the token benchmark."""
+
+    messages: list[dict[str, str]]
+    node_names: list[str]
+    roi_names: list[str]
+    schema: dict[str, Any]
+    documents: list[RetrievedDoc] = field(default_factory=list)
+
+
+@dataclass
+class SynthesisResult:
+    draft: Draft
+    text: str
+    prompt_tokens: int
+    completion_tokens: int
+    attempts: int
+    seconds: float
+    request: SynthesisRequest
+    errors: list[str] = field(default_factory=list)
+    first_token_seconds: float | None = None  # prompt evaluation (prefill) of the accepted attempt
+
+
+def offered_nodes(preset: Preset, retrieved_nodes: Sequence[str]) -> list[str]:
+    """Node types the model may use: the preset's control nodes plus retrieved leaves it allows."""
+    key = preset.name if preset.name in ("emergency", "queuing", "normal", "vanilla") else None
+
+    def usable(name: str) -> bool:
+        spec = NODES.get(name)
+        if spec is None or not spec.llm or name in preset.forbidden_nodes:
+            return False
+        if key is not None and key not in spec.presets:
+            return False
+        return not preset.allowed_nodes or name in preset.allowed_nodes or name in preset.required_nodes
+
+    if preset.retrieval_filter is None:
+        # The baseline offers every node the manifest lets a model write.
+        leaves = [n for n, s in NODES.items() if s.llm and s.category not in ("control",) and usable(n)]
+    else:
+        leaves = [n for n in dict.fromkeys(list(preset.required_nodes) + list(retrieved_nodes))
+                  if NODES.get(n) is not None and NODES[n].category != "control" and usable(n)]
+    controls = [n for n in preset.control_nodes if n in NODES]
+    if not leaves:
+        raise GenerationError(f"preset '{preset.name}' leaves no behavior node to use for this prompt; "
+                              "add required nodes to the preset")
+    return controls + leaves
+
+
+def choose_documents(preset: Preset, retrieved: Sequence[Any], offered: Sequence[str],
+                     documents_for: Callable[[list[str]], list[str]]) -> list[RetrievedDoc]:
+    """Retrieved documents about offered nodes, plus the documents of required nodes not retrieved."""
+    offered_set = set(offered)
+    docs: list[RetrievedDoc] = []
+    covered: set[str] = set()
+    for r in retrieved:
+        if set(r.nodes) <= offered_set:
+            docs.append(RetrievedDoc(r.name, r.kind, float(r.score), tuple(r.nodes), r.document))
+            covered |= set(r.nodes)
+    missing = [n for n in offered if n not in covered and (n in preset.required_nodes or preset.retrieval_filter is None)]
+    if preset.retrieval_filter is None:
+        missing = [n for n in offered if n not in covered]
+    if missing:
+        for name, text in zip(missing, documents_for(missing)):
+            docs.append(RetrievedDoc(name, "node", 0.0, (name,), text))
+    return docs
+
+
+def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], prompt: str,
+                   quantities: Sequence[Quantity], roi_names: Sequence[str]) -> list[dict[str, str]]:
+    """System text fixed per preset first; the variable parts (places, nodes, the sentence) last."""
+    if preset.guided:
+        system = f"{preset.template}\n\n{_RULES}\n{_EXAMPLE}"
+    else:
+        system = preset.template  # the baseline: no scenario-specific guidance
+    parts = ["Places:", places, "", "Behavior nodes:"]
+    parts += [d.text.strip() for d in documents]
+    parts += ["", f"Scenario: {prompt.strip()}"]
+    if preset.guided:
+        if quantities:
+            parts.append("Groups to write: " + "; ".join(f"{q.phrase} ({q.count})" for q in quantities))
+        parts.append("Place names you may use: " + ", ".join(roi_names))
+    return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
+
+
+def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], prompt: str,
+                    quantities: Sequence[Quantity], documents_for: Callable[[list[str]], list[str]]) -> SynthesisRequest:
+    retrieved_nodes = [n for r in retrieved for n in r.nodes]
+    offered = offered_nodes(preset, retrieved_nodes)
+    documents = choose_documents(preset, retrieved, offered, documents_for)
+    # Post-processing keeps one group per stated quantity, so asking for more only costs tokens.
+    max_groups = min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities else preset.limits.max_groups
+    schema = build_draft_schema(offered, selection.roi_names, max_groups=max_groups,
+                                max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
+    messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names)
+    return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents)
+
+
+def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
+               on_token: Callable[[str], None] | None = None, cancel: threading.Event | None = None,
+               max_tokens: int = 512) -> SynthesisResult:
+    """Generate and parse the draft; retry with the next seed when the answer does not validate."""
+    from grove_tui.llm.grammar import schema_to_gbnf
+
+    grammar = schema_to_gbnf(request.schema)
+    errors: list[str] = []
+    prompt_tokens = completion_tokens = 0
+    seconds = 0.0
+    for attempt in range(1, MAX_ATTEMPTS + 1):
+        generation = llm.generate(request.messages, grammar=grammar, max_tokens=max_tokens,
+                                  seed=int(seed) * 7919 + attempt - 1, on_token=on_token, cancel=cancel)
+        prompt_tokens = generation.prompt_tokens
+        completion_tokens += generation.completion_tokens
+        seconds += generation.seconds
+        try:
+            draft = parse_draft(generation.text, request.node_names, request.roi_names,
+                                max_groups=_schema_limit(request.schema, "groups", "maxItems", preset.limits.max_groups),
+                                max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
+        except DraftError as exc:
+            errors.append(f"attempt {attempt}: {exc}")
+            continue
+        return SynthesisResult(draft, generation.text, prompt_tokens, completion_tokens, attempt, seconds, request, errors,
+                               generation.first_token_seconds)
+    raise GenerationError(f"the bt model wrote no valid draft in {MAX_ATTEMPTS} attempts: " + "; ".join(errors))
+
+
+def _schema_limit(schema: dict[str, Any], key: str, limit: str, default: int) -> int:
+    try:
+        return int(schema["properties"][key][limit])
+    except (KeyError, TypeError, ValueError):
+        return default
+
+
+def draft_summary(draft: Draft) -> list[dict[str, Any]]:
+    from grove_tui.generation.draft import node_to_dict
+
+    return [{"label": g.label, "count": g.count, "spawn": g.spawn, "tree": node_to_dict(g.tree)} for g in draft.groups]
+
+
+def describe_documents(documents: Sequence[RetrievedDoc]) -> list[dict[str, Any]]:
+    return [{"name": d.name, "kind": d.kind, "score": d.score, "nodes": list(d.nodes)} for d in documents]
+

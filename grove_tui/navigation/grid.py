@@ -1,0 +1,214 @@
+"""Occupancy grid of a world: what the global planner and spawner treat as free floor.
+
+A cell is occupied when its centre is outside every zone, inside an entity or obstacle
+footprint, or within `inflation` metres (the agent radius) of a wall segment. Distances to
+segments are exact, so the grid does not depend on how finely walls were rasterised.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import os
+from collections import OrderedDict
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import shapely
+from scipy import ndimage
+
+from grove_tui.files import write_bytes_atomic
+from grove_tui.errors import GroveError
+from grove_tui.world import World
+
+
+class GridError(GroveError):
+    """A grid file could not be read."""
+
+
+@dataclass(eq=False)
+class OccupancyGrid:
+    origin: tuple[float, float]          # world coordinates of the lower-left corner of cell (0, 0)
+    resolution: float                    # cell side in metres
+    occupied: np.ndarray                 # bool (H, W); row = y, col = x
+    inflation: float                     # radius the free space was shrunk by
+    world_name: str = ""
+    _nearest: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.occupied.shape  # type: ignore[return-value]
+
+    @property
+    def height(self) -> int:
+        return int(self.occupied.shape[0])
+
+    @property
+    def width(self) -> int:
+        return int(self.occupied.shape[1])
+
+    def extent(self) -> tuple[float, float, float, float]:
+        """xmin, ymin, xmax, ymax covered by the grid."""
+        x0, y0 = self.origin
+        return (x0, y0, x0 + self.width * self.resolution, y0 + self.height * self.resolution)
+
+    def world_to_cell(self, x: float, y: float) -> tuple[int, int]:
+        """(row, col) of the cell containing the point; may lie outside the grid."""
+        return (int(math.floor((y - self.origin[1]) / self.resolution)),
+                int(math.floor((x - self.origin[0]) / self.resolution)))
+
+    def cell_to_world(self, row: int, col: int) -> tuple[float, float]:
+        """Centre of the cell."""
+        return (self.origin[0] + (col + 0.5) * self.resolution, self.origin[1] + (row + 0.5) * self.resolution)
+
+    def in_grid(self, row: int, col: int) -> bool:
+        return 0 <= row < self.height and 0 <= col < self.width
+
+    def is_free(self, x: float, y: float) -> bool:
+        row, col = self.world_to_cell(x, y)
+        return self.in_grid(row, col) and not bool(self.occupied[row, col])
+
+    def free_cells(self) -> np.ndarray:
+        """(K, 2) int array of (row, col) of every free cell."""
+        return np.argwhere(~self.occupied)
+
+    def nearest_free(self, x: float, y: float, max_dist: float | None = None) -> tuple[float, float] | None:
+        """(x, y) itself when free, else the centre of the nearest free cell; None if none within max_dist."""
+        if self.is_free(x, y):
+            return (float(x), float(y))
+        row, col = self.world_to_cell(x, y)
+        if self.in_grid(row, col):
+            rows, cols = self._nearest_free_index()
+            free_row, free_col = int(rows[row, col]), int(cols[row, col])
+            if self.occupied[free_row, free_col]:
+                return None
+            best = self.cell_to_world(free_row, free_col)
+        else:
+            free = self.free_cells()
+            if len(free) == 0:
+                return None
+            centres_x = self.origin[0] + (free[:, 1] + 0.5) * self.resolution
+            centres_y = self.origin[1] + (free[:, 0] + 0.5) * self.resolution
+            index = int(np.argmin((centres_x - x) ** 2 + (centres_y - y) ** 2))
+            best = (float(centres_x[index]), float(centres_y[index]))
+        if max_dist is not None and math.dist(best, (x, y)) > max_dist:
+            return None
+        return best
+
+    def _nearest_free_index(self) -> tuple[np.ndarray, np.ndarray]:
+        if self._nearest is None:
+            # EDT of the occupied mask: for every cell, the indices of the closest free cell.
+            indices = ndimage.distance_transform_edt(self.occupied, return_distances=False, return_indices=True)
+            self._nearest = (indices[0].astype(np.int32), indices[1].astype(np.int32))
+        return self._nearest
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        buffer = io.BytesIO()
+        np.savez_compressed(buffer, origin=np.asarray(self.origin, dtype=np.float64),
+                            resolution=np.float64(self.resolution), inflation=np.float64(self.inflation),
+                            occupied=np.packbits(self.occupied, axis=None), shape=np.asarray(self.occupied.shape),
+                            world_name=np.str_(self.world_name))
+        return write_bytes_atomic(path, buffer.getvalue())
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> OccupancyGrid:
+        try:
+            with np.load(Path(path), allow_pickle=False) as data:
+                shape = tuple(int(v) for v in data["shape"])
+                bits = np.unpackbits(data["occupied"], count=shape[0] * shape[1])
+                occupied = bits.reshape(shape).astype(bool)
+                return cls(origin=(float(data["origin"][0]), float(data["origin"][1])),
+                           resolution=float(data["resolution"]), occupied=occupied,
+                           inflation=float(data["inflation"]), world_name=str(data["world_name"]))
+        except (OSError, KeyError, ValueError) as error:
+            raise GridError(f"cannot read occupancy grid {path}: {error}") from error
+
+
+def _mark_polygon(mask: np.ndarray, polygon: shapely.Geometry, origin: tuple[float, float],
+                  resolution: float, value: bool) -> None:
+    """Set mask cells whose centre is covered by the polygon (only the polygon's bounding box is tested)."""
+    xmin, ymin, xmax, ymax = polygon.bounds
+    height, width = mask.shape
+    c0 = max(int(math.floor((xmin - origin[0]) / resolution)), 0)
+    c1 = min(int(math.ceil((xmax - origin[0]) / resolution)), width)
+    r0 = max(int(math.floor((ymin - origin[1]) / resolution)), 0)
+    r1 = min(int(math.ceil((ymax - origin[1]) / resolution)), height)
+    if c0 >= c1 or r0 >= r1:
+        return
+    xs = origin[0] + (np.arange(c0, c1) + 0.5) * resolution
+    ys = origin[1] + (np.arange(r0, r1) + 0.5) * resolution
+    grid_x, grid_y = np.meshgrid(xs, ys)
+    shapely.prepare(polygon)
+    inside = shapely.contains_xy(polygon, grid_x, grid_y)
+    mask[r0:r1, c0:c1][inside] = value
+
+
+def _mark_near_segments(mask: np.ndarray, segments: np.ndarray, origin: tuple[float, float],
+                        resolution: float, radius: float) -> None:
+    """Set cells whose centre lies within `radius` of any segment (exact point-segment distance)."""
+    height, width = mask.shape
+    radius_sq = radius * radius
+    for x1, y1, x2, y2 in segments:
+        c0 = max(int(math.floor((min(x1, x2) - radius - origin[0]) / resolution)), 0)
+        c1 = min(int(math.ceil((max(x1, x2) + radius - origin[0]) / resolution)) + 1, width)
+        r0 = max(int(math.floor((min(y1, y2) - radius - origin[1]) / resolution)), 0)
+        r1 = min(int(math.ceil((max(y1, y2) + radius - origin[1]) / resolution)) + 1, height)
+        if c0 >= c1 or r0 >= r1:
+            continue
+        px = (origin[0] + (np.arange(c0, c1) + 0.5) * resolution)[None, :] - x1
+        py = (origin[1] + (np.arange(r0, r1) + 0.5) * resolution)[:, None] - y1
+        dx, dy = x2 - x1, y2 - y1
+        length_sq = dx * dx + dy * dy
+        t = np.clip((px * dx + py * dy) / length_sq, 0.0, 1.0) if length_sq > 0 else np.zeros((1, 1))
+        distance_sq = (px - t * dx) ** 2 + (py - t * dy) ** 2
+        mask[r0:r1, c0:c1] |= distance_sq <= radius_sq
+
+
+def _rasterize(world: World, resolution: float, inflation: float) -> OccupancyGrid:
+    xmin, ymin, xmax, ymax = world.bounds()
+    # A border of occupied cells around the world so every wall has both sides in the grid.
+    pad = 2 * resolution
+    origin = (xmin - pad, ymin - pad)
+    width = int(math.ceil((xmax - xmin + 2 * pad) / resolution))
+    height = int(math.ceil((ymax - ymin + 2 * pad) / resolution))
+    inside = np.zeros((height, width), dtype=bool)
+    for zone in world.zones:
+        _mark_polygon(inside, zone.polygon, origin, resolution, True)
+    occupied = ~inside
+    for entity in world.entities():
+        _mark_polygon(occupied, entity.polygon, origin, resolution, True)
+    for obstacle in world.obstacles:
+        _mark_polygon(occupied, obstacle.polygon, origin, resolution, True)
+    # Never thinner than half a cell diagonal: the marked cells then form a 4-connected chain
+    # along every wall, so 8-connected planners cannot slip diagonally through it.
+    radius = max(inflation, resolution * math.sqrt(0.5))
+    _mark_near_segments(occupied, world.walls(), origin, resolution, radius)
+    occupied.flags.writeable = False
+    return OccupancyGrid(origin=origin, resolution=resolution, occupied=occupied, inflation=inflation,
+                         world_name=world.name)
+
+
+_GRIDS: OrderedDict[tuple[str, float, float], OccupancyGrid] = OrderedDict()
+_GRID_CACHE_SIZE = 12
+
+
+def build_grid(world: World, resolution: float = 0.1, inflation: float = 0.35) -> OccupancyGrid:
+    """Rasterise the world; grids are cached in memory per (world content, resolution, inflation).
+
+    The returned grid's `occupied` array is read-only because cached grids are shared.
+    """
+    if not (resolution > 0):
+        raise GridError(f"grid resolution must be positive, got {resolution}")
+    if inflation < 0:
+        raise GridError(f"grid inflation must not be negative, got {inflation}")
+    key = (world.fingerprint, round(float(resolution), 9), round(float(inflation), 9))
+    grid = _GRIDS.get(key)
+    if grid is None:
+        grid = _rasterize(world, float(resolution), float(inflation))
+        _GRIDS[key] = grid
+        if len(_GRIDS) > _GRID_CACHE_SIZE:
+            _GRIDS.popitem(last=False)
+    else:
+        _GRIDS.move_to_end(key)
+    return grid

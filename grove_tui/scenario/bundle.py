@@ -1,0 +1,115 @@
+"""Scenario bundles: one directory per generated scenario, written atomically, loaded back exactly.
+
+    scenario.yaml      the Scenario (world, preset, prompt, seed, models, agents, robot, fields)
+    trees/*.xml        one BehaviorTree.CPP v4 file per agent
+    fields/*.npz       velocity fields (emergency preset)
+    grid.npz           the occupancy grid planning used
+    generation.json    per-stage seconds and tokens, selected RoIs, retrieved nodes, the draft
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from grove_tui.files import absolute_path, atomic_directory, link_or_copy
+from grove_tui.errors import GroveError
+from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.scenario.model import Scenario, ScenarioError
+from grove_tui.navigation.velocity_field import VelocityField
+
+SCENARIO_FILE = "scenario.yaml"
+GRID_FILE = "grid.npz"
+REPORT_FILE = "generation.json"
+# What a simulation adds to a bundle; replaced together, never one without the others.
+RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
+WHAT = "scenario bundle"
+
+
+class BundleError(GroveError):
+    """A bundle directory is missing a file or holds a broken one; the message names it."""
+
+
+def is_bundle(path: Path) -> bool:
+    """A folder GROVE wrote as a bundle (the only kind of folder `--out` replaces without asking)."""
+    return (path / SCENARIO_FILE).is_file() and not (path / SCENARIO_FILE).is_symlink()
+
+
+def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = False) -> Path:
+    """Write a GenerationResult as a bundle; a reader sees the old bundle or the complete new one.
+
+    An existing bundle at `out_dir` is replaced; any other non-empty folder only with `overwrite`.
+    """
+    scenario: Scenario = result.scenario
+    # Absolute first: after `--out .` the process's own folder is replaced, so "." names the old one.
+    target = absolute_path(out_dir)
+    with atomic_directory(target, owned=is_bundle, what=WHAT, overwrite=overwrite) as stage:
+        (stage / SCENARIO_FILE).write_text(scenario.dump_yaml(), encoding="utf-8")
+        for rel, xml in sorted(result.trees.items()):
+            path = stage / rel
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(xml, encoding="utf-8")
+        for field_id, rel in sorted(scenario.fields.items()):
+            result.fields[field_id].save(stage / rel)
+        result.grid.save(stage / GRID_FILE)
+        (stage / REPORT_FILE).write_text(json.dumps(result.report, indent=2, sort_keys=False) + "\n", encoding="utf-8")
+    return target
+
+
+def replace_run_outputs(bundle_dir: str | Path, write: Callable[[Path], None]) -> Path:
+    """Give a bundle new simulation outputs in one atomic step.
+
+    The bundle is staged as hard links (cheap), its old run files left out; `write(stage)` writes the
+    new ones; then the staged bundle takes the old one's place in a rename. Interrupted anywhere, the
+    bundle keeps all its old outputs or gets all the new ones, never a mix.
+    """
+    root = Path(bundle_dir)
+    if not is_bundle(root):
+        raise BundleError(f"{root}: not a bundle ({SCENARIO_FILE} is missing)")
+    with atomic_directory(root, owned=is_bundle, what=WHAT) as stage:
+        for path in sorted(root.rglob("*")):
+            rel = path.relative_to(root)
+            if str(rel) in RUN_FILES or path.is_symlink() or not path.is_file():
+                continue
+            link_or_copy(path, stage / rel)
+        write(stage)
+    return root
+
+
+def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, dict[str, str], dict[str, VelocityField], OccupancyGrid]:
+    """(Scenario, trees by relative path, fields by id, grid) of a bundle directory."""
+    root = Path(bundle_dir)
+    if not root.is_dir():
+        raise BundleError(f"{root}: no such bundle directory")
+    try:
+        scenario = Scenario.load(root / SCENARIO_FILE)
+    except ScenarioError as exc:
+        raise BundleError(str(exc)) from None
+    trees: dict[str, str] = {}
+    for agent in scenario.agents:
+        path = root / agent.tree
+        if not path.is_file():
+            raise BundleError(f"{root}: agent {agent.id}'s tree {agent.tree} is missing")
+        trees[agent.tree] = path.read_text(encoding="utf-8")
+    fields: dict[str, VelocityField] = {}
+    for field_id, rel in scenario.fields.items():
+        path = root / rel
+        if not path.is_file():
+            raise BundleError(f"{root}: velocity field {field_id} ({rel}) is missing")
+        fields[field_id] = VelocityField.load(path)
+    if not (root / GRID_FILE).is_file():
+        raise BundleError(f"{root}: {GRID_FILE} is missing")
+    grid = OccupancyGrid.load(root / GRID_FILE)
+    return scenario, trees, fields, grid
+
+
+def load_report(bundle_dir: str | Path) -> dict[str, Any]:
+    path = Path(bundle_dir) / REPORT_FILE
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise BundleError(f"{path}: missing") from None
+    except json.JSONDecodeError as exc:
+        raise BundleError(f"{path}: not valid JSON: {exc}") from None

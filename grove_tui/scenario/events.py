@@ -1,0 +1,49 @@
+"""The simulation's event log (`events.jsonl` in a bundle): queue joins and services, evacuations, goals."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from grove_tui.errors import GroveError
+from grove_tui.files import write_text_atomic
+
+EVENTS_FILE = "events.jsonl"
+
+
+class EventLogError(GroveError):
+    """An event log line that is not an event record; the message names the file and line."""
+
+
+@dataclass(frozen=True)
+class SimEvent:
+    """Something the simulation observed: queue joins/services, evacuations, goals reached."""
+
+    t: float
+    agent_id: int
+    kind: str  # "queue_join", "queue_served", "evacuated", "goal_reached"
+    detail: str = ""  # queue name for queue events
+
+
+def write_events(path: str | Path, events: Sequence[SimEvent]) -> Path:
+    """The simulation's event log as JSON lines (t, agent_id, kind, detail), written atomically."""
+    lines = [json.dumps({"t": round(e.t, 4), "agent_id": e.agent_id, "kind": e.kind, "detail": e.detail})
+             for e in events]
+    return write_text_atomic(path, "\n".join(lines) + ("\n" if lines else ""))
+
+
+def read_events(path: str | Path) -> list[SimEvent]:
+    path = Path(path)
+    events = []
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+        if not line.strip():
+            continue
+        try:
+            data = json.loads(line)
+            events.append(SimEvent(float(data["t"]), int(data["agent_id"]), str(data["kind"]),
+                                   str(data.get("detail", ""))))
+        except (ValueError, KeyError, TypeError) as exc:
+            raise EventLogError(f"{path}:{number}: not an event record: {exc}") from None
+    return events

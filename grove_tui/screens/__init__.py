@@ -1,1 +1,0 @@
-"""The Textual app's screens: a thin shell over grove_tui.engine."""

@@ -1,0 +1,355 @@
+"""The app's facade over the headless engine.
+
+Screens call only this module, from worker threads, so the engine stays swappable: tests pass an
+`llm_factory` that returns a fake model (UI-only tests) or use the real embedded model. Heavy
+modules (the pipeline, llama.cpp, ChromaDB, torch) are imported inside the methods that need them
+so the app opens before they load.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from grove_tui.errors import GroveError
+from grove_tui.paths import data_dir
+
+LLMFactory = Callable[[str, Any], Any]  # (role, ModelInfo) -> LocalLLM-like
+RetrieverFactory = Callable[[], Any]
+
+
+@dataclass(frozen=True)
+class PresetInfo:
+    name: str
+    description: str
+
+
+@dataclass(frozen=True)
+class ModelStatus:
+    role: str
+    file: str
+    loaded: bool
+    error: str = ""
+
+
+@dataclass
+class GeneratedScenario:
+    """A generation result the app holds: the pipeline's result, its bundle on disk and the world."""
+
+    prompt: str
+    world_name: str
+    preset: str
+    seed: int
+    world: Any
+    result: Any  # GenerationResult: scenario, trees, fields, grid, report
+    bundle_dir: Path
+
+    @property
+    def scenario(self) -> Any:
+        return self.result.scenario
+
+
+@dataclass(frozen=True)
+class ExportedFile:
+    kind: str
+    path: Path
+    note: str = ""  # why it is missing, when an exporter could not write it
+
+
+@dataclass
+class ExportContext:
+    generated: GeneratedScenario
+    simulation: Any | None  # a Simulation that has run (trajectories, events), or None before simulating
+    out_dir: Path
+    files: list[ExportedFile] = field(default_factory=list)
+
+    @property
+    def bundle(self) -> Path:
+        return self.out_dir / "bundle"
+
+    @property
+    def trajectories(self) -> Path:
+        return self.bundle / "trajectories.csv"
+
+    def add(self, kind: str, path: Path, note: str = "") -> None:
+        self.files.append(ExportedFile(kind, path, note))
+
+
+Exporter = Callable[[ExportContext], None]
+
+
+def export_bundle(ctx: ExportContext) -> None:
+    shutil.copytree(ctx.generated.bundle_dir, ctx.bundle)
+    ctx.add("bundle", ctx.bundle)
+
+
+def export_run(ctx: ExportContext) -> None:
+    """Trajectories and the event log go into the exported bundle, so `grove metrics` reads it as is."""
+    if ctx.simulation is None:
+        return
+    from grove_tui.scenario.events import write_events
+
+    recorder = getattr(ctx.simulation, "recorder", None)
+    if recorder is None:
+        ctx.add("trajectories", ctx.trajectories, "not recorded: this simulation has no trajectory recorder")
+    else:
+        recorder.write_csv(ctx.trajectories)
+        ctx.add("trajectories", ctx.trajectories)
+    events = write_events(ctx.bundle / "events.jsonl", ctx.simulation.events)
+    ctx.add("events", Path(events))
+
+
+def export_metrics(ctx: ExportContext) -> None:
+    if ctx.simulation is None or not ctx.trajectories.exists():
+        return
+    from grove_tui.analysis.bundle_metrics import bundle_metrics
+
+    _report, path = bundle_metrics(ctx.bundle)
+    ctx.add("metrics", Path(path))
+
+
+def export_hunav_files(ctx: ExportContext) -> None:
+    from grove_tui.exports.hunav import export_hunav
+
+    result = export_hunav(ctx.bundle, ctx.out_dir / "hunav")
+    ctx.add("hunav", Path(result.agents_yaml), f"+ {len(result.trees)} agent trees")
+
+
+def export_picture(ctx: ExportContext) -> None:
+    from grove_tui.exports.pictures import draw_scenario
+
+    trajectories = ctx.trajectories if ctx.trajectories.exists() else None
+    path = draw_scenario(ctx.generated.world, ctx.generated.scenario, ctx.bundle, ctx.out_dir / "scenario.png",
+                         trajectories=trajectories, title=ctx.generated.prompt[:80])
+    ctx.add("picture", Path(path))
+
+
+# Order matters: later exporters read what earlier ones wrote into the exported bundle.
+EXPORTERS: list[tuple[str, Exporter]] = [
+    ("bundle", export_bundle),
+    ("trajectories", export_run),
+    ("metrics", export_metrics),
+    ("hunav", export_hunav_files),
+    ("picture", export_picture),
+]
+
+
+def _slug(text: str, limit: int = 40) -> str:
+    return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")[:limit] or "scenario"
+
+
+class EngineBackend:
+    """Worlds, presets, models, generation, simulation and export, for the app's workers."""
+
+    def __init__(
+        self,
+        model: str | None = None,
+        roi_model: str | None = None,
+        bt_model: str | None = None,
+        llm_factory: LLMFactory | None = None,
+        retriever_factory: RetrieverFactory | None = None,
+        runs_dir: Path | None = None,
+        exporters: list[tuple[str, Exporter]] | None = None,
+    ) -> None:
+        self._cli_model = model
+        self._cli_roi = roi_model
+        self._cli_bt = bt_model
+        self._llm_factory = llm_factory
+        self._retriever_factory = retriever_factory
+        self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
+        self.exporters = list(EXPORTERS if exporters is None else exporters)
+        self._lock = threading.RLock()
+        self._models: dict[str, Any] = {}
+        self._model_errors: dict[str, str] = {}
+        self._retriever: Any = None
+        self._worlds: dict[str, Any] = {}
+
+    # worlds and presets ------------------------------------------------------------------------------
+    def list_worlds(self) -> list[str]:
+        from grove_tui.world import list_worlds
+
+        return list(list_worlds())
+
+    def load_world(self, name: str) -> Any:
+        with self._lock:
+            world = self._worlds.get(name)
+        if world is None:
+            from grove_tui.world import load_world
+
+            world = load_world(name)
+            with self._lock:
+                self._worlds[name] = world
+        return world
+
+    def presets(self) -> list[PresetInfo]:
+        from grove_tui.generation.presets import list_presets, load_preset
+
+        infos = []
+        for name in list_presets():
+            try:
+                infos.append(PresetInfo(name, load_preset(name).description))
+            except GroveError as exc:
+                infos.append(PresetInfo(name, f"(broken: {exc})"))
+        return infos
+
+    # models --------------------------------------------------------------------------------------
+    def _resolve(self) -> dict[str, Any]:
+        from grove_tui.llm.registry import resolve_models
+
+        return dict(resolve_models(self._cli_roi, self._cli_bt, self._cli_model))
+
+    def model_status(self) -> list[ModelStatus]:
+        try:
+            infos = self._resolve()
+        except Exception as exc:  # a missing registry or model must show in the panel, not crash the app
+            problem = f"{type(exc).__name__}: {exc}"
+            return [ModelStatus("roi", "?", False, problem), ModelStatus("bt", "?", False, problem)]
+        with self._lock:
+            return [
+                ModelStatus(role, Path(str(_model_path(info))).name, _is_loaded(self._models.get(role)),
+                            self._model_errors.get(role, ""))
+                for role, info in infos.items()
+            ]
+
+    def load_models(self) -> dict[str, Any]:
+        """Load each role's model once (roles sharing a file share the instance)."""
+        with self._lock:
+            if self._models:
+                return dict(self._models)
+            infos = self._resolve()
+            by_path: dict[str, Any] = {}
+            for role, info in infos.items():
+                key = str(_model_path(info))
+                try:
+                    if key not in by_path:
+                        by_path[key] = self._make_llm(role, info)
+                except GroveError as exc:
+                    self._model_errors[role] = str(exc)
+                    raise
+                self._models[role] = by_path[key]
+                self._model_errors.pop(role, None)
+            return dict(self._models)
+
+    def _make_llm(self, role: str, info: Any) -> Any:
+        if self._llm_factory is not None:
+            return self._llm_factory(role, info)
+        from grove_tui.llm.local import LocalLLM
+
+        llm = LocalLLM(_model_path(info), role=role, n_ctx=getattr(info, "n_ctx", 4096))
+        llm.start()  # loads the weights in the model's worker process now, not at the first prompt
+        return llm
+
+    def _retriever_instance(self) -> Any:
+        with self._lock:
+            if self._retriever is None:
+                if self._retriever_factory is not None:
+                    self._retriever = self._retriever_factory()
+                else:
+                    from grove_tui.generation.retrieval import NodeRetriever
+
+                    self._retriever = NodeRetriever()
+            return self._retriever
+
+    def close(self) -> None:
+        with self._lock:
+            for llm in {id(m): m for m in self._models.values()}.values():
+                closer = getattr(llm, "close", None)
+                if callable(closer):
+                    closer()
+            self._models.clear()
+
+    # generation ------------------------------------------------------------------------------------
+    def generate(
+        self,
+        world_name: str,
+        preset_name: str,
+        prompt: str,
+        seed: int,
+        on_event: Callable[[Any], None] | None = None,
+        cancel: threading.Event | None = None,
+    ) -> GeneratedScenario:
+        from grove_tui.scenario.bundle import write_bundle
+        from grove_tui.generation.pipeline import GenerationPipeline
+        from grove_tui.generation.presets import load_preset
+
+        world = self.load_world(world_name)
+        preset = load_preset(preset_name)
+        models = self.load_models()
+        retriever = self._retriever_instance()
+        pipeline = GenerationPipeline(world, preset, models.get("roi"), models["bt"], retriever)
+        result = pipeline.run(prompt, seed=seed, on_event=on_event, cancel=cancel)
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        bundle_dir = write_bundle(result, self.runs_dir / f"{stamp}-{_slug(prompt)}-{seed}")
+        return GeneratedScenario(prompt, world_name, preset_name, seed, world, result, Path(bundle_dir))
+
+    def replan(
+        self,
+        generated: GeneratedScenario,
+        counts: dict[int, int],
+        seed: int | None = None,
+        on_event: Callable[[Any], None] | None = None,
+        cancel: threading.Event | None = None,
+    ) -> GeneratedScenario:
+        """The same draft with new head counts (group index -> count), re-planned without the model.
+
+        The new scenario gets its own bundle next to the first one; `generated` is left as it was.
+        """
+        from grove_tui.scenario.bundle import write_bundle
+        from grove_tui.generation.pipeline import GenerationPipeline
+        from grove_tui.generation.presets import load_preset
+
+        preset = load_preset(generated.preset)
+        pipeline = GenerationPipeline(generated.world, preset, None, None, None)
+        result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
+        seed = result.scenario.seed
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        base = self.runs_dir / f"{stamp}-{_slug(generated.prompt)}-{seed}-counts"
+        out, suffix = base, 1
+        while out.exists():
+            suffix += 1
+            out = base.with_name(f"{base.name}-{suffix}")
+        bundle_dir = write_bundle(result, out)
+        return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, seed, generated.world,
+                                 result, Path(bundle_dir))
+
+    # simulation ------------------------------------------------------------------------------------
+    def simulation(self, generated: GeneratedScenario) -> Any:
+        from grove_tui.simulation.simulation import Simulation
+
+        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
+
+    # export ----------------------------------------------------------------------------------------
+    def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}"
+        suffix = 1
+        while out_dir.exists():
+            suffix += 1
+            out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}-{suffix}"
+        out_dir.mkdir(parents=True)
+        ctx = ExportContext(generated, simulation, out_dir)
+        for kind, exporter in self.exporters:
+            try:
+                exporter(ctx)
+            except Exception as exc:  # one failing format must not lose the others; the dialog shows why
+                if kind == "bundle":
+                    raise
+                ctx.add(kind, out_dir, f"failed: {type(exc).__name__}: {exc}")
+        return ctx.files
+
+
+def _model_path(info: Any) -> Any:
+    return getattr(info, "path", info)
+
+
+def _is_loaded(llm: Any) -> bool:
+    if llm is None:
+        return False
+    running = getattr(llm, "running", None)
+    return True if running is None else bool(running)

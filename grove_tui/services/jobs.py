@@ -1,0 +1,145 @@
+"""Batch job files: one JSON object per line, every line checked before any job runs.
+
+    {"world": "hospital", "preset": "queuing", "prompt": "...", "seed": 1, "name": "pharmacy", "simulate": 60}
+
+A bad line (not JSON, a missing or misspelled key, a value of the wrong type or out of range, a name
+another line already uses) is reported with its line number and skipped; the good lines still run.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from grove_tui.errors import GroveError
+
+MAX_JOB_FILE_BYTES = 64 * 1024 * 1024
+MAX_SEED = 2**32 - 1
+MAX_SIMULATE_SECONDS = 24 * 3600.0
+MAX_PROMPT_CHARS = 2000
+REQUIRED = ("world", "preset", "prompt")
+OPTIONAL = ("seed", "name", "simulate")
+
+
+class JobFileError(GroveError):
+    """The job file itself cannot be read (missing, not UTF-8, too large, no jobs)."""
+
+
+@dataclass(frozen=True)
+class BatchJob:
+    line: int
+    world: str
+    preset: str
+    prompt: str
+    seed: int
+    name: str  # the bundle folder's name inside the batch's --out, unique in the file
+    simulate: float | None
+
+
+@dataclass(frozen=True)
+class JobProblem:
+    line: int
+    message: str
+
+    def __str__(self) -> str:
+        return f"line {self.line}: {self.message}"
+
+
+def folder_name(text: str) -> str:
+    """A folder name made of `text`'s letters, digits, dots, dashes and underscores."""
+    cleaned = re.sub(r"[^A-Za-z0-9._-]+", "-", str(text)).strip("-.")
+    return cleaned[:120] or "scenario"
+
+
+def check_seed(value: Any) -> int:
+    """A seed is an integer in 0..2**32-1 (what numpy's generators and llama.cpp take)."""
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError(f"seed must be a whole number, got {value!r}")
+    if not 0 <= value <= MAX_SEED:
+        raise ValueError(f"seed must be between 0 and {MAX_SEED}, got {value}")
+    return value
+
+
+def check_simulate_seconds(value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"simulate must be a number of seconds, got {value!r}")
+    seconds = float(value)
+    if not math.isfinite(seconds) or not 0 < seconds <= MAX_SIMULATE_SECONDS:
+        raise ValueError(f"simulate must be more than 0 and at most {MAX_SIMULATE_SECONDS:g} seconds, got {value!r}")
+    return seconds
+
+
+def _did_you_mean(key: str) -> str:
+    close = difflib.get_close_matches(key, REQUIRED + OPTIONAL, n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def _check_job(number: int, job: Any, index: int) -> BatchJob:
+    if not isinstance(job, dict):
+        raise ValueError("a job must be a JSON object like {\"world\": ..., \"preset\": ..., \"prompt\": ...}")
+    unknown = [k for k in job if k not in REQUIRED + OPTIONAL]
+    if unknown:
+        raise ValueError("; ".join(f"unknown key {k!r}{_did_you_mean(str(k))}" for k in unknown))
+    missing = [k for k in REQUIRED if k not in job]
+    if missing:
+        raise ValueError(f"missing {', '.join(missing)}")
+    for key in REQUIRED:
+        value = job[key]
+        if not isinstance(value, str) or not value.strip():
+            raise ValueError(f"{key} must be a non-empty string, got {value!r}")
+    if len(job["prompt"]) > MAX_PROMPT_CHARS:
+        raise ValueError(f"prompt is {len(job['prompt'])} characters; the limit is {MAX_PROMPT_CHARS}")
+    seed = check_seed(job.get("seed", 0))
+    simulate = job.get("simulate")
+    seconds = None if simulate in (None, 0) else check_simulate_seconds(simulate)
+    name = job.get("name")
+    if name is not None and (not isinstance(name, str) or not name.strip()):
+        raise ValueError(f"name must be a non-empty string, got {name!r}")
+    folder = folder_name(name if name is not None else f"{index:03d}-{Path(job['world']).stem}-{job['preset']}")
+    return BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds)
+
+
+def read_jobs(path: str | Path) -> tuple[list[BatchJob], list[JobProblem]]:
+    """The good jobs of a job file and the problems of the bad lines; JobFileError if none can be read."""
+    source = Path(path)
+    try:
+        if not source.is_file():
+            raise JobFileError(f"{source}: no such job file")
+        if source.stat().st_size > MAX_JOB_FILE_BYTES:
+            raise JobFileError(f"{source}: larger than {MAX_JOB_FILE_BYTES // 2**20} MB")
+        text = source.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise JobFileError(f"{source}: not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise JobFileError(f"{source}: cannot read it: {exc.strerror}") from None
+    jobs: list[BatchJob] = []
+    problems: list[JobProblem] = []
+    names: dict[str, int] = {}
+    index = 0
+    for number, line in enumerate(text.splitlines(), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        index += 1
+        try:
+            job = _check_job(number, json.loads(line), index)
+        except json.JSONDecodeError as exc:
+            problems.append(JobProblem(number, f"not valid JSON: {exc.msg} (column {exc.colno})"))
+            continue
+        except (ValueError, RecursionError) as exc:
+            problems.append(JobProblem(number, str(exc) or "not a valid job"))
+            continue
+        first = names.get(job.name.lower())
+        if first is not None:
+            problems.append(JobProblem(number, f"name {job.name!r} is already used by line {first}; "
+                                               "two jobs cannot write the same bundle"))
+            continue
+        names[job.name.lower()] = number
+        jobs.append(job)
+    if not jobs and not problems:
+        raise JobFileError(f"{source}: no jobs (one JSON object per line)")
+    return jobs, problems

@@ -1,0 +1,445 @@
+"""The runnable scenario: the SFM crowd, one behavior tree per agent, the robot and the recorder.
+
+Each physics step advances the crowd by dt; every 1/bt_rate seconds (simulation time) first every
+agent's tree is ticked once (BT.CPP tickExactlyOnce) with blackboard {id, dt}. Trees change only
+intents on the crowd; the numba step moves everyone.
+
+Tree lifetime: a GROVE tree runs once. When its root returns SUCCESS or FAILURE the agent's
+behavior is done and it stays where it is. HuNavSim-style trees (those using RegularNav, whose root
+completes every tick by design) are ticked for the whole run, as HuNavSim does.
+
+Robot reactions: an agent whose scenario `behavior` is Surprised, Scared, Curious or Threatening and
+whose tree has no reaction node gets HuNavSim's reaction pattern around its tree:
+    ReactiveFallback[ Sequence[IsRobotVisible(distance), ForceFailure(<Reaction>Nav(beh_duration, only_once))],
+                      SubTree(original tree, _autoremap) ]
+(the reaction halts the routine while it runs; the routine then resumes: GoTo replans from where the
+agent stands, a queued agent gets its place back)
+with HuNavSim 1.0's values (Surprised 4 m/30 s/once, Scared 3 m/40 s/repeat, Curious 10 m/30 s/once,
+Threatening 4 m/40 s/once). Impassive agents treat the robot as an obstacle.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from grove_tui.bt.context import AgentContext, SimContext
+from grove_tui.bt.manifest import SUBTREE
+from grove_tui.bt.registry import tree_factory
+from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
+from grove_tui.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
+from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
+from grove_tui.crowd.crowd import ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.crowd.recording import TrajectoryRecorder
+
+# behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
+REACTION_DEFAULTS = {
+    "Surprised": ("SurprisedNav", 4.0, 30.0, True),
+    "Scared": ("ScaredNav", 3.0, 40.0, False),
+    "Curious": ("CuriousNav", 10.0, 30.0, True),
+    "Threatening": ("ThreateningNav", 4.0, 40.0, True),
+}
+HUNAV_LOOPING_NODES = frozenset({"RegularNav", "UpdateGoal"})
+ROBOT_CONTACT_GAP = 0.02  # HuNavSim evaluator: a gap below this is a collision
+# A contact ends only once the two have moved this far apart: bodies brushing against each other in a
+# dense spot flicker in and out of touch every step, and each flicker is not a new collision.
+CONTACT_RELEASE = 0.1
+
+
+@dataclass(frozen=True)
+class CounterSnapshot:
+    reached_goals: int
+    in_queue: int
+    served: int
+    evacuated: int
+    collisions: int
+    robot_collisions: int
+    closest_robot_approach: float
+    finished: int
+
+
+@dataclass(frozen=True)
+class Frame:
+    """Immutable snapshot of the active agents (evacuated ones are gone) and the robot."""
+
+    t: float
+    step: int
+    ids: np.ndarray  # (n,) int agent ids
+    pos: np.ndarray  # (n, 2)
+    vel: np.ndarray  # (n, 2)
+    yaw: np.ndarray  # (n,)
+    group: np.ndarray  # (n,) SFM group, -1 for none
+    status: tuple[str, ...]  # short text per agent
+    robot: tuple[float, float, float] | None  # x, y, yaw
+    counters: CounterSnapshot
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, copy=True)
+    a.setflags(write=False)
+    return a
+
+
+class Simulation:
+    def __init__(self, crowd: Crowd, context: SimContext, trees: list[BehaviorTree | None], *, dt: float,
+                 bt_rate: float, loops: list[bool] | None = None, scenario: Any = None, world: Any = None,
+                 recorder: TrajectoryRecorder | None = None):
+        self.crowd = crowd
+        self.context = context
+        self.clock = context.clock
+        self.trees = trees
+        self.dt = float(dt)
+        self.bt_rate = float(bt_rate)
+        self.bt_every = max(1, int(round(1.0 / (self.bt_rate * self.dt))))
+        self.bt_dt = self.bt_every * self.dt
+        self.loops = loops if loops is not None else [False] * len(trees)
+        self.finished = [tree is None for tree in trees]
+        self._finished_mask = np.array(self.finished, dtype=bool)
+        n = len(trees)
+        # quiescence specs (see tick_behaviors): far from (x, y) by more than sqrt(r2), before t,
+        # robot unseen within guard distance (< 0: no guard)
+        self._q_on = np.zeros(n, dtype=bool)
+        self._q_x = np.zeros(n)
+        self._q_y = np.zeros(n)
+        self._q_r2 = np.zeros(n)
+        self._q_t = np.zeros(n)
+        self._q_guard = np.full(n, -1.0)
+        self.tree_result = ["" for _ in trees]
+        self.scenario = scenario
+        self.world = world
+        self.recorder = recorder if recorder is not None else _make_recorder(dt, context.ids)
+        self.step_count = 0
+        self._robot_contacts: set[int] = set()
+        self._agent_contacts: set[tuple[int, int]] = set()
+        self._lock = threading.Lock()
+        for row in range(len(trees)):
+            tree = trees[row]
+            if tree is not None:
+                tree.blackboard.set("dt", self.bt_dt)
+
+    # ---- construction -------------------------------------------------------------------------
+
+    @classmethod
+    def from_scenario(cls, scenario: Any, bundle_dir: str | Path, world: Any = None, dt: float = 0.05,
+                      bt_rate: float = 10.0, runtime_planning: bool = True) -> Simulation:
+        """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
+        no-planner baseline); by default goals set while running are planned with Theta*."""
+        from grove_tui.navigation.grid import OccupancyGrid, build_grid
+        from grove_tui.navigation.theta_star import ThetaStarPlanner
+        from grove_tui.world import load_world
+
+        bundle_dir = Path(bundle_dir)
+        if world is None:
+            world_ref = scenario.world
+            candidate = bundle_dir / world_ref
+            world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
+        grid_path = bundle_dir / "grid.npz"
+        grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, resolution=scenario.resolution)
+        fields = {}
+        if scenario.fields:
+            from grove_tui.navigation.velocity_field import VelocityField
+
+            for field_id, rel in scenario.fields.items():
+                fields[field_id] = VelocityField.load(bundle_dir / rel)
+        documents = []
+        for agent in sorted(scenario.agents, key=lambda a: a.id):
+            documents.append(load_tree_file(bundle_dir / agent.tree))
+        planner = ThetaStarPlanner(grid) if runtime_planning else None
+        return cls.build(scenario.agents, documents, world=world, grid=grid, planner=planner,
+                         walls=world.walls(), robot=scenario.robot, fields=fields, seed=scenario.seed, dt=dt,
+                         bt_rate=bt_rate, scenario=scenario)
+
+    @classmethod
+    def build(cls, agents, documents: list[TreeDocument], *, world: Any = None, grid: Any = None, planner: Any = None,
+              walls: np.ndarray | None = None, robot: Any = None, fields: dict[str, Any] | None = None, seed: int = 0,
+              dt: float = 0.05, bt_rate: float = 10.0, scenario: Any = None, params: Any = None) -> Simulation:
+        """Build from agent specs (sorted by id, as in Scenario.agents) and their parsed trees."""
+        agents = sorted(agents, key=lambda a: a.id)
+        if len(documents) != len(agents):
+            raise BTError(f"{len(agents)} agents but {len(documents)} behavior trees")
+        crowd = Crowd(walls, params=params, dt=dt, seed=seed, grid=grid)
+        for agent in agents:
+            heading = 0.0
+            if agent.goals:
+                gx, gy = agent.goals[0]
+                heading = math.atan2(gy - agent.start[1], gx - agent.start[0])
+            crowd.add_agent(agent.start, radius=agent.radius, desired_speed=agent.max_vel, group=agent.group,
+                            goal_radius=0.3, yaw=heading,
+                            robot_interaction=ROBOT_AS_OBSTACLE if agent.behavior == "Impassive" else 0)
+        if robot is not None:
+            path = list(robot.path) if robot.path else [robot.start, robot.goal]
+            crowd.set_robot(robot.start, radius=robot.radius, max_speed=robot.max_vel, path=np.asarray(path, float))
+        ids = [a.id for a in agents]
+        groups = _draft_groups(agents)
+        clock = SimClock(0.0)
+        context = SimContext(crowd, clock, ids=ids, seed=seed, world=world, grid=grid, planner=planner, walls=walls,
+                             goal_table=_goal_table(documents), groups=groups,
+                             base_speed=[a.max_vel for a in agents])
+        for field_id, field in (fields or {}).items():
+            context.fields[field_id] = crowd.register_field(field)
+            context.field_exits[field_id] = (float(field.exit[0]), float(field.exit[1]))
+        factory = tree_factory()
+        bt_dt = max(1, int(round(1.0 / (bt_rate * dt)))) * dt
+        trees: list[BehaviorTree | None] = []
+        loops: list[bool] = []
+        for row, (agent, document) in enumerate(zip(agents, documents)):
+            document = with_robot_reaction(document, agent.behavior)
+            blackboard = Blackboard(values={"id": agent.id, "dt": bt_dt})
+            trees.append(factory.create(document, blackboard, AgentContext(context, row), clock))
+            hunav_style = any(e.id in HUNAV_LOOPING_NODES for t in document.trees.values() for e in t.walk())
+            loops.append(hunav_style)
+            if hunav_style and agent.goals:
+                # HuNavSim trees walk the agent's own goal list (agents YAML `goals`, cyclic by default)
+                crowd.set_goals(row, agent.goals, cyclic=True)
+        recorder = _make_recorder(dt, ids)
+        return cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
+                   recorder=recorder)
+
+    # ---- running --------------------------------------------------------------------------------
+
+    @property
+    def time(self) -> float:
+        return self.crowd.time
+
+    @property
+    def ids(self) -> list[int]:
+        return self.context.ids
+
+    @property
+    def events(self) -> list[Any]:
+        from grove_tui.scenario.events import SimEvent
+
+        return [SimEvent(t, agent_id, kind, detail) for t, agent_id, kind, detail in self.context.events]
+
+    def step(self) -> None:
+        with self._lock:
+            if self.step_count % self.bt_every == 0:
+                self.tick_trees()
+            self.crowd.step(1)
+            self.step_count += 1
+            self.clock.now = self.crowd.time
+            self._record()
+
+    def tick_trees(self) -> None:
+        """What step() does every 1/bt_rate seconds: tick every tree, then update the contact counters."""
+        self.tick_behaviors()
+        self._measure_contacts()
+
+    def tick_behaviors(self) -> None:
+        """Tick every unfinished tree once with the current positions, then order new queue arrivals.
+
+        Trees waiting in a quiescent state (BehaviorTree.quiet) whose leaf condition is a distance or
+        a deadline (`quiet_spec`) are checked together in numpy, with margins so that only cases
+        certain to be quiet are skipped; everything else goes through BehaviorTree.tick, which
+        decides exactly.
+        """
+        ctx = self.context
+        ctx.refresh()
+        trees, finished, loops = self.trees, self.finished, self.loops
+        quiet_rows = self._quiet_rows()
+        alive = np.asarray(self.crowd.active[: len(trees)], dtype=bool) & ~self._finished_mask
+        for row in np.flatnonzero(alive & ~quiet_rows).tolist():
+            tree = trees[row]
+            quiet = tree.quiet
+            # BehaviorTree.tick's quiescent check, inlined for the common guard-free case
+            if quiet is not None and not quiet[1] and quiet[0].poll():
+                continue
+            status = tree.tick()
+            self._update_quiet_spec(row)
+            if (status == SUCCESS or status == FAILURE) and not loops[row]:
+                finished[row] = True
+                self._finished_mask[row] = True
+                self._q_on[row] = False
+                ctx.counters.finished_trees += 1
+                self.tree_result[row] = "done" if status == SUCCESS else "failed"
+                if ctx.status[row] != "evacuated":
+                    ctx.status[row] = f"{ctx.status[row]} · {self.tree_result[row]}" if ctx.status[row] else self.tree_result[row]
+        ctx.queues.commit()
+
+    def _update_quiet_spec(self, row: int) -> None:
+        tree = self.trees[row]
+        self._q_on[row] = False
+        quiet = tree.quiet
+        if quiet is None:
+            return
+        leaf, guards = quiet
+        spec_of = getattr(leaf, "quiet_spec", None)
+        if spec_of is None:
+            return
+        guard_distance = -1.0
+        if guards:
+            if len(guards) != 1 or guards[0][1] != FAILURE:
+                return
+            distance_of = getattr(guards[0][0], "robot_guard_distance", None)
+            distance = distance_of() if distance_of is not None else None
+            if distance is None:
+                return
+            guard_distance = float(distance)
+        spec = spec_of()
+        if spec is None:
+            return
+        self._q_x[row], self._q_y[row], self._q_r2[row], self._q_t[row] = spec
+        self._q_guard[row] = guard_distance
+        self._q_on[row] = True
+
+    def _quiet_rows(self) -> np.ndarray:
+        """Rows certain to be quiescent this tick (conservative margins; the rest are ticked exactly)."""
+        on = self._q_on
+        if not on.any():
+            return on.copy()
+        pos = self.crowd.pos[: len(self.trees)]
+        x, y = pos[:, 0], pos[:, 1]
+        d2 = (x - self._q_x) ** 2 + (y - self._q_y) ** 2
+        ok = on & (d2 > self._q_r2 + 1e-9) & (self.clock.now < self._q_t - 1e-6)
+        guarded = np.flatnonzero(ok & (self._q_guard >= 0))
+        robot = self.context.robot
+        if len(guarded) and robot is not None:
+            dx, dy = robot[0] - x[guarded], robot[1] - y[guarded]
+            far = dx * dx + dy * dy > self._q_guard[guarded] ** 2 + 1e-6
+            turn = (np.arctan2(dy, dx) - self.crowd.yaw[guarded] + np.pi) % (2 * np.pi) - np.pi
+            ok[guarded] = far | (np.abs(turn) > VISIBLE_HALF_ANGLE + 1e-6)
+        return ok
+
+    def run(self, seconds: float, on_frame: Callable[[Frame], Any] | None = None,
+            cancel: threading.Event | Callable[[], bool] | None = None) -> Frame:
+        """Advance `seconds` of simulation time; on_frame gets a Frame after every BT period."""
+        steps = int(round(seconds / self.dt))
+        for k in range(steps):
+            if cancel is not None and (cancel.is_set() if hasattr(cancel, "is_set") else cancel()):
+                break
+            self.step()
+            if on_frame is not None and (k + 1) % self.bt_every == 0:
+                on_frame(self.frame())
+        return self.frame()
+
+    # ---- observation ----------------------------------------------------------------------------
+
+    def counters(self) -> CounterSnapshot:
+        c = self.context.counters
+        return CounterSnapshot(c.reached_goals, self.context.queues.in_queue(), c.served, c.evacuated, c.collisions,
+                               c.robot_collisions, c.closest_robot_approach, c.finished_trees)
+
+    def frame(self) -> Frame:
+        crowd = self.crowd
+        n = len(self.context.ids)
+        active = np.asarray(crowd.active[:n], dtype=bool)
+        idx = np.flatnonzero(active)
+        ids = np.asarray(self.context.ids, dtype=np.int64)[idx]
+        robot = None
+        if crowd.has_robot:
+            rp = crowd.robot_pos
+            robot = (float(rp[0]), float(rp[1]), float(crowd.robot_yaw))
+        status = tuple(self.context.status[i] for i in idx)
+        return Frame(float(crowd.time), self.step_count, _frozen(ids), _frozen(crowd.pos[idx]), _frozen(crowd.vel[idx]),
+                     _frozen(crowd.yaw[idx]), _frozen(crowd.group[idx]), status, robot, self.counters())
+
+    def tree_status(self, agent_id: int) -> list[tuple[str, str, str]]:
+        row = self.context.row(agent_id)
+        tree = self.trees[row]
+        if tree is None:
+            raise BTError(f"agent {agent_id} has no behavior tree")
+        return tree.status_list()
+
+    def agent_status(self, agent_id: int) -> str:
+        return self.context.status[self.context.row(agent_id)]
+
+    # ---- bookkeeping ----------------------------------------------------------------------------
+
+    def _measure_contacts(self) -> None:
+        crowd, ctx = self.crowd, self.context
+        n = len(ctx.ids)
+        if n == 0:
+            return
+        active = np.asarray(crowd.active[:n], dtype=bool)
+        pos = crowd.pos[:n]
+        radius = crowd.radius[:n]
+        c = ctx.counters
+        if crowd.has_robot:
+            rp = crowd.robot_pos
+            gap = np.hypot(pos[:, 0] - rp[0], pos[:, 1] - rp[1]) - radius - crowd.robot_radius
+            gap[~active] = np.inf
+            if np.any(active):
+                c.closest_robot_approach = min(c.closest_robot_approach, max(0.0, float(gap.min())))
+            touching = set(np.flatnonzero(gap < ROBOT_CONTACT_GAP).tolist())
+            c.robot_collisions += len(touching - self._robot_contacts)
+            still = set(np.flatnonzero(gap < ROBOT_CONTACT_GAP + CONTACT_RELEASE).tolist())
+            self._robot_contacts = touching | (self._robot_contacts & still)
+        rows = np.flatnonzero(active)
+        if len(rows) > 1:
+            from scipy.spatial import cKDTree
+
+            p = pos[rows]
+            reach = 2.0 * float(radius[rows].max()) + CONTACT_RELEASE
+            pairs = cKDTree(p).query_pairs(reach, output_type="ndarray")
+            if len(pairs):
+                i, j = rows[pairs[:, 0]], rows[pairs[:, 1]]
+                gap = np.hypot(pos[i, 0] - pos[j, 0], pos[i, 1] - pos[j, 1]) - radius[i] - radius[j]
+                now = set(zip(i[gap < 0.0].tolist(), j[gap < 0.0].tolist()))
+                near = set(zip(i[gap < CONTACT_RELEASE].tolist(), j[gap < CONTACT_RELEASE].tolist()))
+            else:
+                now, near = set(), set()
+            c.collisions += len(now - self._agent_contacts)
+            self._agent_contacts = now | (self._agent_contacts & near)
+
+    def _record(self) -> None:
+        self.recorder.record(self.crowd)
+
+
+def _make_recorder(dt: float, ids: list[int]) -> TrajectoryRecorder:
+    return TrajectoryRecorder(fps=1.0 / dt, id_map=ids)
+
+
+def _draft_groups(agents) -> dict[int, tuple[int, ...]]:
+    """agent id -> ids of its social group (same SFM group id >= 0); alone otherwise."""
+    by_group: dict[int, list[int]] = {}
+    for a in agents:
+        if a.group >= 0:
+            by_group.setdefault(a.group, []).append(a.id)
+    return {a.id: tuple(sorted(by_group[a.group])) if a.group >= 0 else (a.id,) for a in agents}
+
+
+def _goal_table(documents: list[TreeDocument]) -> dict[int, tuple[float, float]]:
+    """HuNavSim global goals: every node with a literal goal_id and x/y (as post-processing writes them)."""
+    table: dict[int, tuple[float, float]] = {}
+    for document in documents:
+        for root in document.trees.values():
+            for element in root.walk():
+                ports = element.ports
+                if "goal_id" in ports and "x" in ports and "y" in ports:
+                    try:
+                        table.setdefault(int(ports["goal_id"]), (float(ports["x"]), float(ports["y"])))
+                    except ValueError:
+                        continue
+    return table
+
+
+def with_robot_reaction(document: TreeDocument, behavior: str) -> TreeDocument:
+    """Wrap a tree in HuNavSim's reaction pattern for its scenario behavior (see the module docstring)."""
+    spec = REACTION_DEFAULTS.get(behavior)
+    if spec is None:
+        return document
+    if any(e.id in ROBOT_REACTIONS for t in document.trees.values() for e in t.walk()):
+        return document
+    node, distance, duration, once = spec
+    wrapper_id = "GroveRobotReaction"
+    while wrapper_id in document.trees:
+        wrapper_id += "_"
+    routine = TreeElement(SUBTREE, document.main_tree_id, {}, (), None, subtree_id=document.main_tree_id,
+                          autoremap=True)
+    # ForceFailure: a finished reaction falls through to the routine instead of ending the tree
+    reaction = TreeElement("Sequence", "Sequence", {}, (
+        TreeElement("IsRobotVisible", "IsRobotVisible", {"distance": f"{distance:g}"}, (), None),
+        TreeElement("ForceFailure", "ForceFailure", {}, (
+            TreeElement(node, node, {"beh_duration": f"{duration:g}", "only_once": "true" if once else "false"}, (),
+                        None),), None),
+    ), None)
+    root = TreeElement("ReactiveFallback", f"{behavior} reaction", {}, (reaction, routine), None)
+    trees = dict(document.trees)
+    trees[wrapper_id] = root
+    return TreeDocument(document.source, wrapper_id, trees, dict(document.tree_lines))

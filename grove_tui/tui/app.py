@@ -1,0 +1,107 @@
+"""GROVE-TUI's Textual app: setup -> generation -> inspect -> simulation -> export.
+
+`App.__init__` does no I/O: the engine facade (`backend`) and the settings come in as arguments so
+tests inject fakes, and everything slow (world loading, model loading, generation, simulation)
+runs in thread workers started after the first screen is on.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from textual.app import App
+from textual.binding import Binding
+
+from grove_tui.services.backend import EngineBackend, GeneratedScenario
+from grove_tui.tui.commands import GroveCommands
+from grove_tui.settings import GroveSettings, load_history, load_settings, save_history
+
+
+class GroveApp(App[int]):
+    CSS_PATH = Path(__file__).with_name("app.tcss")  # absolute, so subclasses elsewhere find it too
+    TITLE = "GROVE"
+    SUB_TITLE = "sentence -> pedestrian scenario"
+    HORIZONTAL_BREAKPOINTS = [(0, "-narrow"), (100, "-wide")]
+    COMMANDS = App.COMMANDS | {GroveCommands}
+    BINDINGS = [
+        Binding("f1", "help", "Help", id="app.help", tooltip="Help for the focused widget and the keys of this screen"),
+        Binding("ctrl+q", "quit", "Quit", id="app.quit", tooltip="Quit GROVE", priority=True),
+    ]
+
+    def __init__(
+        self,
+        backend: Any,
+        settings: GroveSettings | None = None,
+        *,
+        world: str | None = None,
+        preset: str | None = None,
+        history: list[str] | None = None,
+        persist_history: bool = False,
+    ) -> None:
+        super().__init__()
+        self.backend = backend
+        self.settings = settings if settings is not None else GroveSettings()
+        self.initial_world = world if world is not None else self.settings.generation.world
+        self.initial_preset = preset if preset is not None else self.settings.generation.preset
+        self.history: list[str] = list(history or [])
+        self.persist_history = persist_history
+        self.generated: GeneratedScenario | None = None
+        self.animation_level = self.settings.ui.animation
+
+    def on_mount(self) -> None:
+        from grove_tui.tui.screens.setup import SetupScreen
+
+        if self.settings.ui.theme in self.available_themes:
+            self.theme = self.settings.ui.theme
+        if self.settings.keymap:
+            self.set_keymap(self.settings.keymap)
+        self.push_screen(SetupScreen())
+
+    # shared state ------------------------------------------------------------------------------------
+    def remember_prompt(self, prompt: str) -> None:
+        if self.history and self.history[-1] == prompt:
+            return
+        self.history.append(prompt)
+        limit = self.settings.generation.history_size
+        del self.history[: max(0, len(self.history) - limit)]
+        if self.persist_history:
+            save_history(self.history, limit)
+
+    @property
+    def export_root(self) -> Path:
+        return Path(self.settings.export.directory)
+
+    # actions ---------------------------------------------------------------------------------------
+    def action_help(self) -> None:
+        from grove_tui.tui.screens.help import HelpScreen
+
+        if isinstance(self.screen, HelpScreen):
+            return
+        self.push_screen(HelpScreen(self.focused, self.screen))
+
+    def on_unmount(self) -> None:
+        close = getattr(self.backend, "close", None)
+        if callable(close):
+            close()
+
+
+def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
+            world: str | None = None, preset: str | None = None) -> int:
+    """Entry point of the `grove` command with no subcommand; returns the exit code."""
+    from pydantic import ValidationError
+
+    from grove_tui.settings import config_file
+
+    try:
+        settings = load_settings()
+    except ValidationError as exc:
+        import sys
+
+        print(f"grove: {config_file()}: invalid configuration:\n{exc}", file=sys.stderr)
+        return 2
+    backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
+    app = GroveApp(backend, settings, world=world, preset=preset,
+                   history=load_history(settings.generation.history_size), persist_history=True)
+    result = app.run()
+    return int(result or 0) if app.return_code in (None, 0) else int(app.return_code or 1)

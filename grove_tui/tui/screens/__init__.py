@@ -1,0 +1,1 @@
+"""The Textual app's screens: a thin shell over grove_tui."""

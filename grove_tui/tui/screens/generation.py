@@ -1,0 +1,273 @@
+"""Generation view: pipeline stages with timings and tokens, the model's streamed output, cancel, errors."""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from textual import work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.screen import Screen
+from textual.widgets import DataTable, Footer, Static
+from textual.worker import get_current_worker
+
+from grove_tui.tui import messages as msg
+
+if TYPE_CHECKING:
+    from grove_tui.tui.app import GroveApp
+
+STAGES = {
+    "rois": "RoIs",
+    "retrieval": "Retrieval",
+    "synthesis": "Tree synthesis",
+    "postprocess": "Post-processing",
+    "planning": "Planning",
+}
+STREAM_TAIL_CHARS = 1600
+FLUSH_SECONDS = 0.05  # ~20 Hz: smooth enough to read, cheap for the UI thread
+
+HINTS = {
+    "ModelError": "Check the model file (grove models), or start grove with --model PATH to another GGUF.",
+    "WorldError": "Fix the world file (worlds/README.md explains the format) or pick another world.",
+    "PlanningError": "A place in the prompt cannot be reached; name reachable zones, or fix the world's doors.",
+    "DraftError": "The model's answer did not fit the scenario; press r to retry, or rephrase the prompt.",
+    "GenerationError": "Rephrase the prompt with places from this world, or press r to retry.",
+    "RetrievalError": "Rebuild the node index (grove rag build), then press r.",
+    "PresetError": "Fix the preset file named above, or choose another preset.",
+    "BTError": "The generated tree is invalid; press r to retry or rephrase the prompt.",
+}
+DEFAULT_HINT = "Press r to retry, or Escape to go back and change the prompt."
+
+
+@dataclass(frozen=True)
+class GenerationRequest:
+    prompt: str
+    world: str
+    preset: str
+    seed: int
+
+
+class TokenBuffer:
+    """Collects streamed tokens in the worker and posts the stage text at most every FLUSH_SECONDS.
+
+    A timer flushes what is left when the model pauses, so the last tokens never wait for the next one.
+    """
+
+    def __init__(self, post: Callable[[Any], Any], interval: float = FLUSH_SECONDS) -> None:
+        self._post = post
+        self._interval = interval
+        self._lock = threading.Lock()
+        self._stage = ""
+        self._text: list[str] = []
+        self._dirty = False
+        self._last_flush = 0.0
+        self._timer: threading.Timer | None = None
+
+    def add(self, stage: str, text: str) -> None:
+        with self._lock:
+            if stage != self._stage:
+                self._flush_locked()
+                self._stage, self._text = stage, []
+            self._text.append(text)
+            self._dirty = True
+            wait = self._interval - (time.monotonic() - self._last_flush)
+            if wait <= 0:
+                self._flush_locked()
+            elif self._timer is None:
+                self._timer = threading.Timer(wait, self.flush)
+                self._timer.daemon = True
+                self._timer.start()
+
+    def flush(self) -> None:
+        with self._lock:
+            self._flush_locked()
+
+    def _flush_locked(self) -> None:
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        if self._dirty:
+            self._post(msg.TokensFlushed(self._stage, "".join(self._text)))
+            self._dirty = False
+        self._last_flush = time.monotonic()
+
+
+def error_hint(exc: BaseException) -> str:
+    for cls in type(exc).__mro__:
+        if cls.__name__ in HINTS:
+            return HINTS[cls.__name__]
+    return DEFAULT_HINT
+
+
+class GenerationScreen(Screen[None]):
+    HELP = """\
+## Generation
+
+The pipeline's stages run one after another: **RoIs** (the model picks the places the prompt
+talks about), **Retrieval** (behavior nodes that fit), **Tree synthesis** (the model writes the
+groups and their trees, streamed below), **Post-processing** (trees become BT.CPP XML per agent)
+and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** retries.
+"""
+
+    BINDINGS = [
+        Binding("escape", "cancel", "Cancel", id="generation.cancel", tooltip="Stop generating and go back"),
+        Binding("r", "retry", "Retry", id="generation.retry", tooltip="Run the generation again"),
+    ]
+
+    def __init__(self, request: GenerationRequest) -> None:
+        super().__init__()
+        self.request = request
+        self._cancel = threading.Event()
+        self._stage = ""
+        self._generating = False
+        self._started: dict[str, float] = {}
+
+    @property
+    def grove(self) -> GroveApp:
+        return self.app  # type: ignore[return-value]
+
+    def compose(self) -> ComposeResult:
+        r = self.request
+        yield Static(f"[b]{r.prompt}[/b]\nworld [i]{r.world}[/i] · preset [i]{r.preset}[/i] · seed {r.seed}",
+                     id="gen-title", markup=True)
+        table: DataTable[str] = DataTable(id="stages", cursor_type="none", zebra_stripes=False)
+        table.border_title = "Stages"
+        yield table
+        stream = Static("", id="stream", markup=False)
+        stream.border_title = "Model output"
+        yield stream
+        yield Static("", id="gen-error", markup=False)
+        yield Footer(compact=True, show_command_palette=False)
+
+    def on_mount(self) -> None:
+        table = self.query_one("#stages", DataTable)
+        table.add_column("Stage", key="stage", width=16)
+        table.add_column("State", key="state", width=9)
+        table.add_column("Time", key="time", width=7)
+        table.add_column("Tokens", key="tokens", width=11)
+        table.add_column("Detail", key="detail")
+        for key, label in STAGES.items():
+            table.add_row(label, "·", "", "", "", key=key)
+        self.start()
+
+    def command_entries(self) -> list[tuple[str, str, Any]]:
+        return [
+            ("Cancel generation", "Stop the pipeline and return to setup", self.action_cancel),
+            ("Retry generation", "Run the pipeline again with the same prompt", self.action_retry),
+        ]
+
+    def start(self) -> None:
+        self._cancel = threading.Event()
+        self._generating = True
+        self._stage = ""
+        error = self.query_one("#gen-error", Static)
+        error.update("")
+        error.display = False
+        table = self.query_one("#stages", DataTable)
+        for key in STAGES:
+            for column, value in (("state", "·"), ("time", ""), ("tokens", ""), ("detail", "")):
+                table.update_cell(key, column, value)
+        self.query_one("#stream", Static).update("")
+        self.run_generation(self.request, self._cancel)
+
+    @work(thread=True, exclusive=True, group="generation", exit_on_error=False, description="generating")
+    def run_generation(self, request: GenerationRequest, cancel: threading.Event) -> None:
+        worker = get_current_worker()
+        buffer = TokenBuffer(self.post_message)
+        current = {"stage": ""}
+
+        def on_event(event: Any) -> None:
+            kind = type(event).__name__
+            if kind == "TokenStreamed":
+                buffer.add(event.stage, event.text)
+            elif kind == "StageStarted":
+                buffer.flush()
+                current["stage"] = event.stage
+                self.post_message(msg.StageStarted(event.stage))
+            elif kind == "StageFinished":
+                buffer.flush()
+                current["stage"] = ""
+                self.post_message(msg.StageFinished(
+                    event.stage, float(event.seconds), int(event.prompt_tokens or 0),
+                    int(event.completion_tokens or 0), str(event.detail or "")))
+            if worker.is_cancelled:
+                cancel.set()
+
+        try:
+            generated = self.grove.backend.generate(
+                request.world, request.preset, request.prompt, request.seed, on_event=on_event, cancel=cancel)
+        except Exception as exc:
+            buffer.flush()
+            if cancel.is_set() or worker.is_cancelled:
+                self.post_message(msg.GenerationCancelled(current["stage"]))
+            else:
+                self.post_message(msg.GenerationFailed(current["stage"], f"{type(exc).__name__}: {exc}", error_hint(exc)))
+            return
+        buffer.flush()
+        if cancel.is_set() or worker.is_cancelled:
+            self.post_message(msg.GenerationCancelled(current["stage"]))
+        else:
+            self.post_message(msg.GenerationSucceeded(generated))
+
+    # messages -------------------------------------------------------------------------------------
+    def on_stage_started(self, message: msg.StageStarted) -> None:
+        self._stage = message.stage
+        if message.stage in STAGES:
+            self.query_one("#stages", DataTable).update_cell(message.stage, "state", "running")
+            self.query_one("#stream", Static).border_title = f"Model output · {STAGES[message.stage]}"
+
+    def on_stage_finished(self, message: msg.StageFinished) -> None:
+        if message.stage not in STAGES:
+            return
+        table = self.query_one("#stages", DataTable)
+        table.update_cell(message.stage, "state", "done")
+        table.update_cell(message.stage, "time", f"{message.seconds:.2f}s")
+        tokens = message.prompt_tokens + message.completion_tokens
+        table.update_cell(message.stage, "tokens", f"{message.prompt_tokens}+{message.completion_tokens}" if tokens else "")
+        table.update_cell(message.stage, "detail", message.detail, update_width=True)
+
+    def on_tokens_flushed(self, message: msg.TokensFlushed) -> None:
+        self.query_one("#stream", Static).update(message.text[-STREAM_TAIL_CHARS:])
+
+    def on_generation_succeeded(self, message: msg.GenerationSucceeded) -> None:
+        from grove_tui.tui.screens.inspect import InspectScreen
+
+        self._generating = False
+        self.grove.generated = message.generated
+        self.app.switch_screen(InspectScreen(message.generated))
+
+    def on_generation_failed(self, message: msg.GenerationFailed) -> None:
+        self._generating = False
+        if message.stage in STAGES:
+            self.query_one("#stages", DataTable).update_cell(message.stage, "state", "failed")
+        error = self.query_one("#gen-error", Static)
+        where = STAGES.get(message.stage, "generation")
+        error.update(f"✗ {where} failed\n{message.error}\n→ {message.hint}")
+        error.display = True
+
+    def on_generation_cancelled(self, message: msg.GenerationCancelled) -> None:
+        self._generating = False
+        self.app.pop_screen()
+        self.notify("Generation cancelled.", title="Generation")
+
+    def on_unmount(self) -> None:
+        # Leaving the screen (or quitting) stops the pipeline instead of letting it run unseen.
+        self._cancel.set()
+
+    # actions --------------------------------------------------------------------------------------
+    def action_cancel(self) -> None:
+        if self._generating:
+            self._cancel.set()
+            self.workers.cancel_group(self, "generation")
+            if self._stage in STAGES:
+                self.query_one("#stages", DataTable).update_cell(self._stage, "state", "stopping")
+            return
+        self.app.pop_screen()
+
+    def action_retry(self) -> None:
+        if not self._generating:
+            self.start()

@@ -1,0 +1,319 @@
+"""Inspect: the generated behavior trees next to the map with spawns, goals, waypoints and fields."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from rich.text import Text
+from textual import on, work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical
+from textual.screen import Screen
+from textual.widgets import Footer, Static, TextArea, Tree
+
+from grove_tui.tui import messages as msg
+from grove_tui.services.backend import GeneratedScenario
+from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
+from grove_tui.tui.widgets.map_raster import Overlay
+from grove_tui.tui.widgets.map_view import MapView
+
+if TYPE_CHECKING:
+    from grove_tui.tui.app import GroveApp
+
+
+def agent_xml(generated: GeneratedScenario, agent: Any) -> str:
+    trees = generated.result.trees
+    for key in (agent.tree, str(agent.id), agent.id, f"agent_{agent.id}"):
+        if key in trees:
+            return trees[key]
+    path = generated.bundle_dir / agent.tree
+    return path.read_text(encoding="utf-8") if path.is_file() else ""
+
+
+def group_key(agent: Any) -> tuple[int, str]:
+    return (agent.group, agent.label or (f"group {agent.group}" if agent.group >= 0 else "ungrouped"))
+
+
+def base_overlay(generated: GeneratedScenario) -> Overlay:
+    scenario = generated.scenario
+    agents = scenario.agents
+    spawns = np.array([a.start for a in agents], dtype=np.float64).reshape(-1, 2)
+    goals = np.array([a.goals[-1] for a in agents if a.goals], dtype=np.float64).reshape(-1, 2)
+    waypoints = np.array([g for a in agents for g in a.goals[:-1]], dtype=np.float64).reshape(-1, 2)
+    robot_path = np.zeros((0, 2))
+    if scenario.robot is not None:
+        robot_path = np.array(scenario.robot.path or (scenario.robot.start, scenario.robot.goal), dtype=np.float64)
+    fields = tuple(generated.result.fields.values()) if isinstance(generated.result.fields, dict) else ()
+    return Overlay(spawns=spawns, goals=goals, waypoints=waypoints, robot_path=robot_path, fields=fields)
+
+
+def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Overlay) -> Overlay:
+    if data is None:
+        return overlay
+    from dataclasses import replace
+
+    agents = {a.id: a for a in generated.scenario.agents}
+    agent = agents.get(data.agent_id)
+    if data.kind == "robot" and generated.scenario.robot is not None:
+        robot = generated.scenario.robot
+        return replace(overlay, highlight_path=overlay.robot_path, highlight_points=np.array([robot.start, robot.goal]))
+    if agent is None:
+        return overlay
+    if data.kind == "node":
+        ports = data.ports
+        if "waypoints" in ports and ports["waypoints"].strip():
+            points = parse_points(ports["waypoints"])
+            if len(points):
+                return replace(overlay, highlight_path=points, highlight_points=points[-1:])
+        if "x" in ports and "y" in ports:
+            try:
+                point = np.array([[float(ports["x"]), float(ports["y"])]])
+            except ValueError:
+                point = None
+            if point is not None:
+                return replace(overlay, highlight_points=point)
+    path = np.array([agent.start, *agent.goals], dtype=np.float64)
+    return replace(overlay, highlight_path=path, highlight_points=path[:1])
+
+
+def parse_points(text: str) -> np.ndarray:
+    """BT.CPP point lists: 'x,y;x,y;...'."""
+    points = []
+    for item in text.split(";"):
+        parts = item.replace(" ", "").split(",")
+        if len(parts) == 2:
+            try:
+                points.append((float(parts[0]), float(parts[1])))
+            except ValueError:
+                continue
+    return np.array(points, dtype=np.float64).reshape(-1, 2)
+
+
+class InspectScreen(Screen[None]):
+    HELP = """\
+## Inspect
+
+Left: the behavior trees, by group and agent, with each node's ports. Right: the map with spawns
+`○`, goals `◎`, injected waypoints `·`, the robot's path and any velocity-field arrows. Move through
+the tree to highlight an agent's route or a node's target on the map. **x** shows the selected
+agent's XML, **p** plays the simulation, **g** regenerates, **c** edits each group's head count
+and re-plans (same trees, no model call), **e** exports the bundle.
+"""
+
+    BINDINGS = [
+        Binding("p", "simulate", "Play", id="inspect.simulate", tooltip="Simulate this scenario"),
+        Binding("x", "toggle_xml", "XML", id="inspect.xml", tooltip="Show the selected agent's BT XML"),
+        Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Run generation again"),
+        Binding("c", "edit_counts", "Counts", id="inspect.counts",
+                tooltip="Edit each group's head count and re-plan, without the model"),
+        Binding("e", "export", "Export", id="inspect.export", tooltip="Export the bundle"),
+        Binding("m", "focus_map", "Map", id="inspect.map", tooltip="Focus the map to zoom and pan"),
+        Binding("t", "focus_tree", "Trees", id="inspect.tree", tooltip="Focus the behavior trees", show=False),
+        Binding("escape", "back", "Back", id="inspect.back", tooltip="Back to setup"),
+    ]
+
+    def __init__(self, generated: GeneratedScenario) -> None:
+        super().__init__()
+        self.generated = generated
+        self._overlay = base_overlay(generated)
+        self._selected_node: BTNode | None = None
+
+    @property
+    def grove(self) -> GroveApp:
+        return self.app  # type: ignore[return-value]
+
+    def compose(self) -> ComposeResult:
+        scenario = self.generated.scenario
+        with Horizontal(id="inspect-body"):
+            with Vertical(id="inspect-side"):
+                tree = BTTree("Scenario", id="bt-tree")
+                tree.border_title = f"Trees · {len(scenario.agents)} agents"
+                yield tree
+                xml = TextArea("", id="xml", read_only=True, show_line_numbers=False, soft_wrap=False)
+                xml.border_title = "XML"
+                xml.display = False
+                yield xml
+                yield Static("", id="node-detail", markup=False)
+            world_map = MapView(id="inspect-map")
+            world_map.border_title = f"{scenario.world} · {scenario.preset}"
+            world_map.border_subtitle = self.generated.prompt[:70]
+            yield world_map
+        yield Footer(compact=True, show_command_palette=False)
+
+    def on_mount(self) -> None:
+        self.query_one("#inspect-map", MapView).set_world(self.generated.world)
+        self._show_generated()
+
+    def _show_generated(self) -> None:
+        """Trees, map overlay and titles of `self.generated`, the first agent selected."""
+        self._overlay = base_overlay(self.generated)
+        self._selected_node = None
+        self._build_tree()
+        world_map = self.query_one("#inspect-map", MapView)
+        world_map.set_overlay(self._overlay)
+        world_map.border_subtitle = self.generated.prompt[:70]
+        tree = self.query_one("#bt-tree", BTTree)
+        tree.border_title = f"Trees · {len(self.generated.scenario.agents)} agents"
+        self.query_one("#node-detail", Static).update("")
+        xml = self.query_one("#xml", TextArea)
+        if xml.display:
+            xml.display = False
+            tree.display = True
+        tree.focus()
+        if tree.agent_nodes:
+            # Start on the first agent so its route is highlighted straight away.
+            self.call_after_refresh(self._select_first_agent)
+
+    def _select_first_agent(self) -> None:
+        tree = self.query_one("#bt-tree", BTTree)
+        if not tree.agent_nodes:
+            return
+        first_agent = tree.agent_nodes[min(tree.agent_nodes)]
+        tree.move_cursor(first_agent)
+        if self._selected_node is None:
+            # A rebuilt tree whose cursor was already on that line posts no NodeHighlighted.
+            self._select(first_agent.data)
+
+    def _build_tree(self) -> None:
+        tree = self.query_one("#bt-tree", BTTree)
+        tree.clear_all()
+        scenario = self.generated.scenario
+        groups: dict[tuple[int, str], list[Any]] = defaultdict(list)
+        for agent in scenario.agents:
+            groups[group_key(agent)].append(agent)
+        for index, ((_group, label), agents) in enumerate(sorted(groups.items(), key=lambda kv: kv[1][0].id)):
+            group_label = Text(label, style="bold")
+            group_label.append(f" ×{len(agents)}", style="dim")
+            group_node = tree.root.add(group_label, BTNode("group", agents[0].id, label), expand=index == 0)
+            for agent_index, agent in enumerate(agents):
+                tree.add_agent(group_node, agent, agent_xml(self.generated, agent), expand=index == 0 and agent_index == 0)
+        if scenario.robot is not None:
+            robot = scenario.robot
+            tree.root.add_leaf(
+                Text.assemble(("robot", "bold"), (f" {len(robot.path)} path points, {robot.max_vel} m/s", "dim")),
+                BTNode("robot", 0, "robot"))
+        tree.root.expand()
+
+    def command_entries(self) -> list[tuple[str, str, Any]]:
+        return [
+            ("Play simulation", "Simulate this scenario", self.action_simulate),
+            ("Toggle XML view", "Show the selected agent's BehaviorTree.CPP XML", self.action_toggle_xml),
+            ("Regenerate", "Run the generation again with the same prompt", self.action_regenerate),
+            ("Edit counts and re-plan", "Change each group's head count; the trees are kept, the model is not called",
+             self.action_edit_counts),
+            ("Export bundle", "Write the scenario bundle to the export folder", self.action_export),
+        ]
+
+    # selection ---------------------------------------------------------------------------------------
+    @on(Tree.NodeHighlighted, "#bt-tree")
+    def node_highlighted(self, event: Tree.NodeHighlighted[BTNode]) -> None:
+        self._select(event.node.data)
+
+    def _select(self, data: BTNode | None) -> None:
+        self._selected_node = data
+        self.query_one("#inspect-map", MapView).set_overlay(highlight_for(self.generated, self._selected_node, self._overlay))
+        self.query_one("#node-detail", Static).update(self._detail(self._selected_node))
+        if self.query_one("#xml", TextArea).display:
+            self._show_xml()
+
+    def _detail(self, data: BTNode | None) -> str:
+        if data is None:
+            return ""
+        agents = {a.id: a for a in self.generated.scenario.agents}
+        if data.kind == "node":
+            ports = "\n".join(f"{k} = {v}" for k, v in data.ports.items())
+            return f"{data.name} (agent {data.agent_id})\n{ports}"
+        if data.kind == "robot" and self.generated.scenario.robot is not None:
+            robot = self.generated.scenario.robot
+            return f"robot start {robot.start} goal {robot.goal}\nradius {robot.radius} m, {robot.max_vel} m/s"
+        agent = agents.get(data.agent_id)
+        if agent is None:
+            return ""
+        start = f"({agent.start[0]:.1f}, {agent.start[1]:.1f})"
+        prefix = f"group {data.name}: first agent\n" if data.kind == "group" else ""
+        return (f"{prefix}agent {agent.id} · {agent.label or 'no label'} · {agent.behavior}\n"
+                f"start {start} → {agent.zone} · {len(agent.goals)} goals · {agent.max_vel} m/s")
+
+    def _show_xml(self) -> None:
+        agents = {a.id: a for a in self.generated.scenario.agents}
+        data = self._selected_node
+        agent = agents.get(data.agent_id) if data is not None else None
+        if agent is None and agents:
+            agent = next(iter(agents.values()))
+        xml = self.query_one("#xml", TextArea)
+        xml.text = agent_xml(self.generated, agent) if agent is not None else ""
+        xml.border_title = f"XML · agent {agent.id}" if agent is not None else "XML"
+
+    # actions -----------------------------------------------------------------------------------------
+    def action_toggle_xml(self) -> None:
+        xml = self.query_one("#xml", TextArea)
+        tree = self.query_one("#bt-tree", BTTree)
+        showing = not xml.display
+        xml.display = showing
+        tree.display = not showing
+        if showing:
+            self._show_xml()
+            xml.focus()
+        else:
+            tree.focus()
+
+    def action_focus_map(self) -> None:
+        self.query_one("#inspect-map", MapView).focus()
+
+    def action_focus_tree(self) -> None:
+        xml = self.query_one("#xml", TextArea)
+        (xml if xml.display else self.query_one("#bt-tree", BTTree)).focus()
+
+    def action_simulate(self) -> None:
+        from grove_tui.tui.screens.simulation import SimulationScreen
+
+        self.app.push_screen(SimulationScreen(self.generated))
+
+    def action_regenerate(self) -> None:
+        from grove_tui.tui.screens.generation import GenerationRequest, GenerationScreen
+
+        g = self.generated
+        self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, g.seed)))
+
+    def action_edit_counts(self) -> None:
+        from grove_tui.tui.screens.counts import CountsScreen
+
+        self.app.push_screen(CountsScreen(self.generated), self._counts_edited)
+
+    def _counts_edited(self, generated: GeneratedScenario | None) -> None:
+        if generated is None:
+            return
+        self.generated = generated
+        self.grove.generated = generated
+        self._show_generated()
+        note = generated.result.report.get("notes", [""])[0]
+        self.notify(f"{note}\n{len(generated.scenario.agents)} agents · bundle {generated.bundle_dir.name}",
+                    title="Re-planned", timeout=6)
+
+    def action_back(self) -> None:
+        self.app.pop_screen()
+
+    def action_export(self) -> None:
+        self.notify("Exporting…", title="Export", timeout=2)
+        self.run_export()
+
+    @work(thread=True, exclusive=True, group="export", exit_on_error=False, description="exporting")
+    def run_export(self) -> None:
+        root = self.grove.export_root
+        try:
+            files = self.grove.backend.export(self.generated, None, root)
+        except Exception as exc:
+            self.post_message(msg.ExportFailed(f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(msg.ExportFinished(files, files[0].path.parent if files else root))
+
+    def on_export_finished(self, message: msg.ExportFinished) -> None:
+        from grove_tui.tui.screens.export import ExportResultScreen
+
+        self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
+
+    def on_export_failed(self, message: msg.ExportFailed) -> None:
+        self.notify(message.error, title="Export failed", severity="error", timeout=15)

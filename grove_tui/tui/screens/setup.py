@@ -1,0 +1,212 @@
+"""Setup: pick a world (live map preview) and a preset, see the models, type a prompt, Generate."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from textual import on, work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical
+from textual.screen import Screen
+from textual.widgets import Button, Footer, OptionList, Static
+from textual.widgets.option_list import Option
+
+from grove_tui.tui import messages as msg
+from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.tui.widgets.prompt_input import PromptInput
+
+if TYPE_CHECKING:
+    from grove_tui.tui.app import GroveApp
+
+
+class SetupScreen(Screen[None]):
+    HELP = """\
+## Setup
+
+Choose a **world** (the map on the right previews it) and a **preset** (what kind of scenario the
+model writes), type a prompt and press **Enter** or **ctrl+g** to generate. The models panel shows
+which GGUF file serves each role and whether it is loaded yet.
+"""
+
+    BINDINGS = [
+        Binding("ctrl+g", "generate", "Generate", id="setup.generate", tooltip="Generate a scenario from the prompt"),
+        Binding("ctrl+w", "focus('worlds')", "Worlds", id="setup.worlds", tooltip="Choose the world"),
+        Binding("ctrl+r", "focus('presets')", "Presets", id="setup.presets", tooltip="Choose the preset"),
+        Binding("ctrl+l", "focus('prompt')", "Prompt", id="setup.prompt", tooltip="Type the prompt", show=False),
+    ]
+
+    @property
+    def grove(self) -> GroveApp:
+        return self.app  # type: ignore[return-value]
+
+    def compose(self) -> ComposeResult:
+        with Horizontal(id="setup-body"):
+            with Vertical(id="setup-side"):
+                worlds = OptionList(id="worlds")
+                worlds.border_title = "World"
+                yield worlds
+                presets = OptionList(id="presets")
+                presets.border_title = "Preset"
+                yield presets
+                yield Static("", id="preset-description", markup=False)
+                models = Static("models: looking…", id="models", markup=False)
+                models.border_title = "Models"
+                yield models
+            preview = MapView(id="preview")
+            preview.border_title = "Map"
+            yield preview
+        with Horizontal(id="prompt-row"):
+            yield PromptInput(self.grove.history, placeholder="Describe the crowd… (Enter to generate)", id="prompt")
+            yield Button("Generate", id="generate", variant="primary")
+        yield Footer(compact=True, show_command_palette=False)
+
+    def on_mount(self) -> None:
+        self.query_one("#prompt", PromptInput).focus()
+        # Paint the screen first; the catalogue worker's imports would otherwise delay the first frame.
+        self.call_after_refresh(self.load_catalogue)
+
+    def command_entries(self) -> list[tuple[str, str, Any]]:
+        return [
+            ("Generate scenario", "Run the pipeline on the prompt", self.action_generate),
+            ("Choose world", "Focus the world list", lambda: self.action_focus("worlds")),
+            ("Choose preset", "Focus the preset list", lambda: self.action_focus("presets")),
+        ]
+
+    def action_focus(self, widget_id: str) -> None:
+        self.query_one(f"#{widget_id}").focus()
+
+    # workers -----------------------------------------------------------------------------------------
+    @work(thread=True, exclusive=True, group="catalogue", exit_on_error=False, description="listing worlds")
+    def load_catalogue(self) -> None:
+        backend = self.grove.backend
+        try:
+            names = backend.list_worlds()
+        except Exception as exc:  # an engine bug must show, not kill the app
+            self.post_message(msg.WorldsListed([], f"{type(exc).__name__}: {exc}"))
+        else:
+            self.post_message(msg.WorldsListed(names))
+        self.post_message(msg.PresetsListed(backend.presets()))
+        self.post_message(msg.ModelsChanged(backend.model_status(), loading=self.grove.settings.ui.preload_models))
+        if self.grove.settings.ui.preload_models:
+            self.preload_models()
+
+    @work(thread=True, exclusive=True, group="models", exit_on_error=False, description="loading models")
+    def preload_models(self) -> None:
+        backend = self.grove.backend
+        try:
+            backend.load_models()
+        except Exception:  # the status panel shows the model error next to its role
+            pass
+        self.post_message(msg.ModelsChanged(backend.model_status()))
+
+    @work(thread=True, exclusive=True, group="world", exit_on_error=False, description="loading world")
+    def load_world(self, name: str) -> None:
+        try:
+            world = self.grove.backend.load_world(name)
+        except Exception as exc:
+            self.post_message(msg.WorldFailed(name, f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(msg.WorldLoaded(name, world))
+
+    # messages ----------------------------------------------------------------------------------------
+    def on_worlds_listed(self, message: msg.WorldsListed) -> None:
+        worlds = self.query_one("#worlds", OptionList)
+        worlds.clear_options()
+        if message.error:
+            self.query_one("#preview", MapView).border_subtitle = "cannot list worlds"
+            self.notify(message.error, title="Worlds", severity="error", timeout=10)
+            return
+        initial = self.grove.initial_world
+        names = list(message.names)
+        if initial and initial not in names:
+            names.insert(0, initial)  # a path given with --world
+        worlds.add_options([Option(name, id=name) for name in names])
+        if names:
+            worlds.highlighted = names.index(initial) if initial in names else 0
+
+    def on_presets_listed(self, message: msg.PresetsListed) -> None:
+        presets = self.query_one("#presets", OptionList)
+        presets.clear_options()
+        presets.add_options([Option(p.name, id=p.name) for p in message.presets])
+        self._preset_descriptions = {p.name: p.description for p in message.presets}
+        names = [p.name for p in message.presets]
+        if names:
+            initial = self.grove.initial_preset
+            presets.highlighted = names.index(initial) if initial in names else 0
+
+    def on_models_changed(self, message: msg.ModelsChanged) -> None:
+        lines = []
+        for status in message.statuses:
+            state = "loaded" if status.loaded else ("error" if status.error else ("loading…" if message.loading else "on demand"))
+            lines.append(f"{status.role:<3} {state}: {status.file}")
+            if status.error:
+                lines.append(f"    {status.error}")
+        panel = self.query_one("#models", Static)
+        panel.update("\n".join(lines) or "no models found")
+        panel.tooltip = "\n".join(f"{s.role}: {s.file}" for s in message.statuses)
+
+    @on(OptionList.OptionHighlighted, "#worlds")
+    def world_highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        name = event.option.id
+        if name:
+            self.query_one("#preview", MapView).border_title = f"Map: {name} (loading)"
+            self.load_world(name)
+
+    @on(OptionList.OptionHighlighted, "#presets")
+    def preset_highlighted(self, event: OptionList.OptionHighlighted) -> None:
+        descriptions = getattr(self, "_preset_descriptions", {})
+        self.query_one("#preset-description", Static).update(descriptions.get(event.option.id or "", ""))
+
+    @on(OptionList.OptionSelected)
+    def option_selected(self) -> None:
+        self.query_one("#prompt", PromptInput).focus()
+
+    def on_world_loaded(self, message: msg.WorldLoaded) -> None:
+        if message.name != self.selected_world:
+            return
+        preview = self.query_one("#preview", MapView)
+        preview.set_world(message.world)
+        preview.border_title = f"Map: {message.world.name}"
+        preview.border_subtitle = (message.world.description or "")[:60]
+
+    def on_world_failed(self, message: msg.WorldFailed) -> None:
+        preview = self.query_one("#preview", MapView)
+        preview.set_world(None)
+        preview.border_title = f"Map: {message.name} (not loaded)"
+        self.notify(message.error, title=f"World {message.name}", severity="error", timeout=10)
+
+    # generate ----------------------------------------------------------------------------------------
+    @property
+    def selected_world(self) -> str | None:
+        worlds = self.query_one("#worlds", OptionList)
+        if worlds.highlighted is None:
+            return None
+        return worlds.get_option_at_index(worlds.highlighted).id
+
+    @property
+    def selected_preset(self) -> str | None:
+        presets = self.query_one("#presets", OptionList)
+        if presets.highlighted is None:
+            return None
+        return presets.get_option_at_index(presets.highlighted).id
+
+    @on(PromptInput.Submitted, "#prompt")
+    @on(Button.Pressed, "#generate")
+    def action_generate(self) -> None:
+        from grove_tui.tui.screens.generation import GenerationRequest, GenerationScreen
+
+        prompt_box = self.query_one("#prompt", PromptInput)
+        prompt = prompt_box.value.strip()
+        world, preset = self.selected_world, self.selected_preset
+        if not prompt:
+            self.notify("Type a prompt first, e.g. 'ten people queue at the counter'.", title="Prompt", severity="warning")
+            prompt_box.focus()
+            return
+        if world is None or preset is None:
+            self.notify("Choose a world and a preset first.", title="Setup", severity="warning")
+            return
+        self.grove.remember_prompt(prompt)
+        prompt_box.reset_history_position()
+        request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=self.grove.settings.generation.seed)
+        self.app.push_screen(GenerationScreen(request))

@@ -1,0 +1,349 @@
+"""Simulation: the crowd and the robot on the map, live, with counters and the selected agent's tree."""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from textual import on, work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical
+from textual.screen import Screen
+from textual.widgets import Footer, Static, Tree
+from textual.worker import get_current_worker
+
+from grove_tui.tui import messages as msg
+from grove_tui.services.backend import GeneratedScenario
+from grove_tui.tui.screens.inspect import base_overlay
+from grove_tui.tui.screens.sim_controller import MAX_SPEED, SPEEDS, Snapshot, SimulationController
+from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
+from grove_tui.tui.widgets.map_raster import rasterise_agents
+from grove_tui.tui.widgets.map_view import MapView
+
+if TYPE_CHECKING:
+    from grove_tui.tui.app import GroveApp
+
+UI_SWITCH_INTERVAL = 0.001
+BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
+COUNTER_LABELS = {
+    "reached_goals": "reached goals",
+    "in_queue": "in queue",
+    "served": "served",
+    "evacuated": "evacuated",
+    "collisions": "collisions",
+    "robot_collisions": "robot contacts",
+    "closest_robot_approach": "closest to robot",
+    "finished": "trees finished",
+}
+
+
+def speed_label(speed: float) -> str:
+    return "max" if speed == MAX_SPEED else f"{speed:g}x"
+
+
+def counter_lines(counters: Any) -> list[str]:
+    items = counters.items() if isinstance(counters, dict) else vars(counters).items()
+    lines = []
+    for key, value in items:
+        label = COUNTER_LABELS.get(key, key.replace("_", " "))
+        if isinstance(value, float):
+            text = "—" if not np.isfinite(value) else f"{value:.2f} m" if "approach" in key or "distance" in key else f"{value:.2f}"
+        else:
+            text = str(value)
+        lines.append(f"{label:<17}{text:>8}")
+    return lines
+
+
+class SimMapView(MapView):
+    """The map with agents; arrow keys drive the robot, h j k l pan."""
+
+    HELP = MapView.HELP + """
+In the simulation the **arrow keys drive the robot** (hold to keep moving) and **r** puts it back
+on its planned path. Agents are braille dots coloured by group (or behavior, **c**), the selected
+agent is highlighted, the robot is the red arrow.
+"""
+
+    BINDINGS = [
+        Binding("up", "drive(0, 1)", "Robot ↑", show=False, id="sim.robot_up"),
+        Binding("down", "drive(0, -1)", "Robot ↓", show=False, id="sim.robot_down"),
+        Binding("left", "drive(-1, 0)", "Robot ←", show=False, id="sim.robot_left"),
+        Binding("right", "drive(1, 0)", "Robot →", show=False, id="sim.robot_right"),
+    ]
+
+    def action_drive(self, dx: int, dy: int) -> None:
+        screen = self.screen
+        if isinstance(screen, SimulationScreen):
+            screen.drive(dx, dy)
+
+
+class SimulationScreen(Screen[None]):
+    HELP = """\
+## Simulation
+
+The Social Force crowd runs off the UI thread; the map shows every agent and the robot.
+**space** play/pause, **n** one step, **[ ]** slower/faster (0.25x to 8x), **f** as fast as
+possible, **a**/**A** select the next/previous agent (its tree shows the live status of every
+node), arrows drive the robot, **r** back to its path, **c** colour by group or behavior,
+**e** exports bundle, trajectories and metrics.
+"""
+
+    BINDINGS = [
+        Binding("space", "toggle_play", "Play", id="sim.play", tooltip="Start or pause the simulation"),
+        Binding("n", "step", "Step", show=False, id="sim.step", tooltip="Advance one simulation step"),
+        Binding("left_square_bracket", "speed(-1)", "Slower", id="sim.slower", tooltip="Halve the speed"),
+        Binding("right_square_bracket", "speed(1)", "Faster", id="sim.faster", tooltip="Double the speed"),
+        Binding("f", "max_speed", "Max speed", show=False, id="sim.max_speed", tooltip="Run as fast as possible"),
+        Binding("a", "select(1)", "Agent", id="sim.next_agent", tooltip="Select the next agent"),
+        Binding("A", "select(-1)", "Prev agent", show=False, id="sim.prev_agent", tooltip="Select the previous agent"),
+        Binding("r", "follow_path", "Robot", id="sim.robot_path", tooltip="Robot follows its planned path"),
+        Binding("c", "colour_mode", "Colours", show=False, id="sim.colours", tooltip="Colour by group or behavior"),
+        Binding("e", "export", "Export", id="sim.export", tooltip="Export bundle, trajectories and metrics"),
+        Binding("escape", "back", "Back", id="sim.back", tooltip="Back to inspect"),
+    ]
+
+    def __init__(self, generated: GeneratedScenario) -> None:
+        super().__init__()
+        self.generated = generated
+        self.controller: SimulationController | None = None
+        self._shown_serial = -1
+        self._selected_agent = -1
+        self._agent_ids = [a.id for a in generated.scenario.agents]
+        self._tree_agent = -1
+        self.frames_drawn = 0
+        self._colour_mode = "group"
+        self._colour_table = self._build_colours()
+        self._last_snapshot: Snapshot | None = None
+        self._switch_interval = sys.getswitchinterval()
+
+    @property
+    def grove(self) -> GroveApp:
+        return self.app  # type: ignore[return-value]
+
+    def compose(self) -> ComposeResult:
+        scenario = self.generated.scenario
+        with Horizontal(id="sim-body"):
+            world_map = SimMapView(id="sim-map")
+            world_map.border_title = f"{scenario.world} · {len(scenario.agents)} agents"
+            yield world_map
+            with Vertical(id="sim-side"):
+                status = Static("loading simulation…", id="sim-status")
+                status.border_title = "Simulation"
+                yield status
+                counters = Static("", id="counters")
+                counters.border_title = "Counters"
+                yield counters
+                tree = BTTree("agent", id="sim-tree")
+                tree.border_title = "Agent tree (a: select)"
+                yield tree
+        yield Footer(compact=True, show_command_palette=False)
+
+    def on_mount(self) -> None:
+        settings = self.grove.settings.simulation
+        self._colour_mode = settings.colour_by
+        self._colour_table = self._build_colours()
+        world_map = self.query_one("#sim-map", SimMapView)
+        world_map.set_world(self.generated.world)
+        # Spawn and waypoint markers would read as people; the sim shows goals and the robot's path only.
+        overlay = base_overlay(self.generated)
+        world_map.set_overlay(replace(overlay, spawns=overlay.spawns[:0], waypoints=overlay.waypoints[:0]))
+        world_map.focus()
+        # The sim thread runs Python (behavior trees) between numba kernels; a shorter GIL switch
+        # interval hands the UI thread the GIL sooner, so frames keep their pace under load.
+        self._switch_interval = sys.getswitchinterval()
+        sys.setswitchinterval(UI_SWITCH_INTERVAL)
+        self.start_simulation()
+        self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
+
+    def command_entries(self) -> list[tuple[str, str, Any]]:
+        return [
+            ("Play / pause", "Start or pause the simulation", self.action_toggle_play),
+            ("Step", "Advance one simulation step", self.action_step),
+            ("Run as fast as possible", "Simulate at maximum speed", self.action_max_speed),
+            ("Select next agent", "Show the next agent's live tree", lambda: self.action_select(1)),
+            ("Robot follows its path", "Stop driving the robot by hand", self.action_follow_path),
+            ("Export", "Bundle, trajectories and metrics", self.action_export),
+        ]
+
+    # the simulation worker --------------------------------------------------------------------------
+    @work(thread=True, exclusive=True, group="simulation", exit_on_error=False, description="simulating")
+    def start_simulation(self) -> None:
+        worker = get_current_worker()
+        try:
+            simulation = self.grove.backend.simulation(self.generated)
+        except Exception as exc:
+            self.post_message(msg.SimulationFailed(f"{type(exc).__name__}: {exc}"))
+            return
+        settings = self.grove.settings.simulation
+        controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed)
+        self.controller = controller
+        self.post_message(msg.SimulationReady(simulation))
+        controller.run(lambda: worker.is_cancelled)
+
+    def on_simulation_failed(self, message: msg.SimulationFailed) -> None:
+        self.query_one("#sim-status", Static).update(f"✗ cannot simulate\n{message.error}")
+        self.notify(message.error, title="Simulation", severity="error", timeout=15)
+
+    def on_simulation_ready(self, message: msg.SimulationReady) -> None:
+        if self._agent_ids and self._selected_agent < 0:
+            self.action_select(1)
+
+    def on_unmount(self) -> None:
+        self.workers.cancel_group(self, "simulation")
+        sys.setswitchinterval(self._switch_interval)
+
+    # drawing (UI thread, set_interval) --------------------------------------------------------------
+    def _build_colours(self) -> dict[int, int]:
+        agents = self.generated.scenario.agents
+        if self._colour_mode == "behavior":
+            return {a.id: BEHAVIORS.index(a.behavior) if a.behavior in BEHAVIORS else len(BEHAVIORS) for a in agents}
+        groups = sorted({(a.group, a.label) for a in agents})
+        index = {key: i for i, key in enumerate(groups)}
+        return {a.id: index[(a.group, a.label)] for a in agents}
+
+    def draw_latest(self) -> None:
+        controller = self.controller
+        snapshot = None if controller is None else controller.latest
+        if snapshot is None or snapshot.serial == self._shown_serial:
+            return
+        self._shown_serial = snapshot.serial
+        self._last_snapshot = snapshot
+        frame = snapshot.frame
+        world_map = self.query_one("#sim-map", SimMapView)
+        raster = world_map.raster
+        if raster is None:
+            return
+        ids = np.asarray(frame.ids, dtype=np.int64)
+        colours = np.array([self._colour_table.get(int(i), 0) for i in ids], dtype=np.int64)
+        selected_index = -1
+        if self._selected_agent >= 0:
+            hits = np.flatnonzero(ids == self._selected_agent)
+            selected_index = int(hits[0]) if len(hits) else -1
+        robot = robot_pose(frame)
+        world_map.set_agents(rasterise_agents(raster, np.asarray(frame.pos), colours, selected_index, robot))
+        self.frames_drawn += 1
+        self._show_status(snapshot)
+        if snapshot.selected == self._selected_agent and self._selected_agent >= 0 and snapshot.tree_status:
+            tree = self.query_one("#sim-tree", BTTree)
+            if self._tree_agent != self._selected_agent:
+                tree.clear_all()
+                tree.add_runtime_tree(tree.root, self._selected_agent, list(snapshot.tree_status))
+                self._tree_agent = self._selected_agent
+            tree.set_status(self._selected_agent, list(snapshot.tree_status))
+
+    def _show_status(self, snapshot: Snapshot) -> None:
+        frame = snapshot.frame
+        state = "▶ playing" if snapshot.playing else "⏸ paused"
+        robot = "manual" if snapshot.manual_robot else "path"
+        lines = [
+            f"{state}  speed {speed_label(snapshot.speed)}",
+            f"t = {float(frame.t):7.2f} s",
+            f"agents {len(frame.ids)} · robot {robot}",
+        ]
+        if self._selected_agent >= 0:
+            lines.append(f"selected agent {self._selected_agent}")
+        self.query_one("#sim-status", Static).update("\n".join(lines))
+        self.query_one("#counters", Static).update("\n".join(counter_lines(frame.counters)))
+
+    # actions ---------------------------------------------------------------------------------------
+    def _send(self, *command: Any) -> None:
+        if self.controller is not None:
+            self.controller.send(*command)
+
+    def action_toggle_play(self) -> None:
+        self._send("play")
+
+    def action_step(self) -> None:
+        self._send("step", 1)
+
+    def action_speed(self, direction: int) -> None:
+        current = self.controller.speed if self.controller is not None else 1.0
+        if current == MAX_SPEED:
+            speed = SPEEDS[-1] if direction < 0 else MAX_SPEED
+        else:
+            index = min(range(len(SPEEDS)), key=lambda i: abs(SPEEDS[i] - current))
+            index = max(0, min(len(SPEEDS) - 1, index + direction))
+            speed = SPEEDS[index]
+        self._send("speed", speed)
+        self.notify(f"speed {speed_label(speed)}", timeout=1)
+
+    def action_max_speed(self) -> None:
+        self._send("speed", MAX_SPEED)
+
+    def action_select(self, step: int) -> None:
+        if not self._agent_ids:
+            return
+        if self._selected_agent in self._agent_ids:
+            index = (self._agent_ids.index(self._selected_agent) + step) % len(self._agent_ids)
+        else:
+            index = 0 if step > 0 else len(self._agent_ids) - 1
+        self.select_agent(self._agent_ids[index])
+
+    def select_agent(self, agent_id: int) -> None:
+        self._selected_agent = agent_id
+        self._send("select", agent_id)
+        agent = next(a for a in self.generated.scenario.agents if a.id == agent_id)
+        tree = self.query_one("#sim-tree", BTTree)
+        tree.clear_all()
+        self._tree_agent = -1
+        tree.border_title = f"Agent {agent_id} · {agent.label or agent.behavior}"
+        self._shown_serial = -1
+
+    @on(Tree.NodeHighlighted, "#sim-tree")
+    def tree_node_highlighted(self, event: Tree.NodeHighlighted[BTNode]) -> None:
+        event.stop()
+
+    def drive(self, dx: int, dy: int) -> None:
+        speed = self.grove.settings.simulation.robot_speed
+        self._send("drive", dx * speed, dy * speed)
+
+    def action_follow_path(self) -> None:
+        self._send("follow_path")
+
+    def action_colour_mode(self) -> None:
+        self._colour_mode = "behavior" if self._colour_mode == "group" else "group"
+        self._colour_table = self._build_colours()
+        self._shown_serial = -1
+        self.notify(f"colour by {self._colour_mode}", timeout=1)
+
+    def action_back(self) -> None:
+        self.app.pop_screen()
+
+    def action_export(self) -> None:
+        if self.controller is None:
+            self.notify("The simulation is not running yet.", title="Export", severity="warning")
+            return
+        backend = self.grove.backend
+        generated = self.generated
+        root = self.grove.export_root
+
+        def export(simulation: Any) -> Any:
+            return backend.export(generated, simulation, root)
+
+        def reply(result: Any) -> None:
+            if isinstance(result, Exception):
+                self.post_message(msg.ExportFailed(f"{type(result).__name__}: {result}"))
+            else:
+                self.post_message(msg.ExportFinished(result, result[0].path.parent if result else root))
+
+        self.notify("Exporting…", title="Export", timeout=2)
+        self._send("call", export, reply)
+
+    def on_export_finished(self, message: msg.ExportFinished) -> None:
+        from grove_tui.tui.screens.export import ExportResultScreen
+
+        self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
+
+    def on_export_failed(self, message: msg.ExportFailed) -> None:
+        self.notify(message.error, title="Export failed", severity="error", timeout=15)
+
+
+def robot_pose(frame: Any) -> tuple[float, float, float] | None:
+    robot = getattr(frame, "robot", None)
+    if robot is None:
+        return None
+    values: Sequence[float] = robot if not hasattr(robot, "x") else (robot.x, robot.y, getattr(robot, "yaw", 0.0))
+    return (float(values[0]), float(values[1]), float(values[2]) if len(values) > 2 else 0.0)

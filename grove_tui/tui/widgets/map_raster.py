@@ -1,0 +1,308 @@
+"""Rasterise a world, its scenario overlays and a crowd frame into terminal cells.
+
+Pure numpy (no textual) so the map widget, the simulation view and the fps benchmark share it.
+Every cell holds one character code and one style index; walls, paths and agents are drawn with
+braille dots (2 x 4 per cell), which gives square dots because a terminal cell is about twice as
+tall as it is wide.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from grove_tui.tui.widgets.map_styles import (  # noqa: F401  (re-exported for callers)
+    DOOR,
+    ENTITY,
+    FIELD,
+    FLOOR,
+    GOAL,
+    GROUP_BASE,
+    GROUP_COLOURS,
+    HIGHLIGHT,
+    ROBOT,
+    ROBOT_PATH,
+    SELECTED,
+    SPAWN,
+    STYLE_COUNT,
+    WALL,
+    WAYPOINT,
+    ZONE_LABEL,
+)
+
+BRAILLE_BASE = 0x2800
+# Braille dot bit for dot column c (0..1) and dot row r (0..3) inside one cell.
+BRAILLE_BITS = np.array([[0x01, 0x08], [0x02, 0x10], [0x04, 0x20], [0x40, 0x80]], dtype=np.uint8)
+ARROWS = "→↗↑↖←↙↓↘"
+SPACE = ord(" ")
+MARGIN_M = 0.5
+
+
+@dataclass(frozen=True)
+class Overlay:
+    """What the inspect and simulation screens draw on the static map."""
+
+    spawns: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    goals: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    waypoints: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    robot_path: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    highlight_path: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    highlight_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    fields: tuple[Any, ...] = ()  # VelocityField-like: origin, resolution, vectors (H, W, 2)
+
+
+class MapRaster:
+    """A world drawn at `cols_per_metre` (rows per metre is half of it)."""
+
+    def __init__(self, world: Any, cols_per_metre: float) -> None:
+        self.world = world
+        self.cols_per_metre = cols_per_metre
+        self.dots_per_metre = 2.0 * cols_per_metre
+        xmin, ymin, xmax, ymax = world.bounds()
+        self.x0 = xmin - MARGIN_M
+        self.y1 = ymax + MARGIN_M
+        self.width = max(1, math.ceil((xmax - xmin + 2 * MARGIN_M) * self.dots_per_metre / 2))
+        self.height = max(1, math.ceil((ymax - ymin + 2 * MARGIN_M) * self.dots_per_metre / 4))
+        self.base_chars, self.base_styles = self._draw_world()
+
+    @staticmethod
+    def fit_scale(world: Any, cols: int, rows: int) -> float:
+        """Columns per metre so the whole world fits `cols` x `rows` cells."""
+        xmin, ymin, xmax, ymax = world.bounds()
+        span_x = xmax - xmin + 2 * MARGIN_M
+        span_y = ymax - ymin + 2 * MARGIN_M
+        return max(0.05, min(cols / span_x, 2.0 * rows / span_y))
+
+    # coordinates -------------------------------------------------------------------------------------
+    def to_dots(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        points = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+        dx = np.floor((points[:, 0] - self.x0) * self.dots_per_metre).astype(np.int64)
+        dy = np.floor((self.y1 - points[:, 1]) * self.dots_per_metre).astype(np.int64)
+        return dx, dy
+
+    def to_cells(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        dx, dy = self.to_dots(points)
+        return dy // 4, dx // 2
+
+    def cell_centre(self, row: int, col: int) -> tuple[float, float]:
+        return (self.x0 + (col + 0.5) * 2 / self.dots_per_metre, self.y1 - (row + 0.5) * 4 / self.dots_per_metre)
+
+    # drawing primitives ---------------------------------------------------------------------------------
+    def _segment_dots(self, segments: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Dots along segments (M, 4), sampled at half a dot so lines have no gaps."""
+        if len(segments) == 0:
+            return np.zeros(0, np.int64), np.zeros(0, np.int64)
+        segments = np.asarray(segments, dtype=np.float64)
+        lengths = np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1])
+        counts = np.maximum(2, np.ceil(lengths * self.dots_per_metre * 2).astype(np.int64) + 1)
+        owner = np.repeat(np.arange(len(segments)), counts)
+        starts = np.cumsum(counts) - counts
+        fraction = (np.arange(counts.sum()) - np.repeat(starts, counts)) / np.repeat(counts - 1, counts)
+        seg = segments[owner]
+        xs = seg[:, 0] + (seg[:, 2] - seg[:, 0]) * fraction
+        ys = seg[:, 1] + (seg[:, 3] - seg[:, 1]) * fraction
+        return self.to_dots(np.column_stack([xs, ys]))
+
+    def _paint_dots(self, chars: np.ndarray, styles: np.ndarray, dx: np.ndarray, dy: np.ndarray, style: int) -> None:
+        keep = (dx >= 0) & (dy >= 0) & (dx < self.width * 2) & (dy < self.height * 4)
+        dx, dy = dx[keep], dy[keep]
+        if len(dx) == 0:
+            return
+        rows, cols = dy // 4, dx // 2
+        bits = np.zeros((self.height, self.width), dtype=np.uint8)
+        np.bitwise_or.at(bits, (rows, cols), BRAILLE_BITS[dy % 4, dx % 2])
+        hit = bits > 0
+        existing = chars[hit]
+        was_braille = (existing >= BRAILLE_BASE) & (existing < BRAILLE_BASE + 256)
+        merged = bits[hit].astype(np.uint32) | np.where(was_braille, existing - BRAILLE_BASE, 0).astype(np.uint32)
+        chars[hit] = BRAILLE_BASE + merged
+        styles[hit] = style
+
+    def _paint_glyphs(self, chars: np.ndarray, styles: np.ndarray, points: np.ndarray, glyph: str, style: int) -> None:
+        if len(points) == 0:
+            return
+        rows, cols = self.to_cells(points)
+        keep = (rows >= 0) & (cols >= 0) & (rows < self.height) & (cols < self.width)
+        chars[rows[keep], cols[keep]] = ord(glyph)
+        styles[rows[keep], cols[keep]] = style
+
+    def _paint_label(self, chars: np.ndarray, styles: np.ndarray, row: int, col: int, text: str, style: int) -> None:
+        """Write `text` centred on (row, col) in a run of empty cells, trying nearby rows, truncating if tight."""
+        best: tuple[int, int, int] | None = None
+        for candidate in (row, row - 1, row + 1, row - 2, row + 2):
+            if not (0 <= candidate < self.height and 0 <= col < self.width) or chars[candidate, col] != SPACE:
+                continue
+            start, end = col, col + 1
+            while start > 0 and chars[candidate, start - 1] == SPACE:
+                start -= 1
+            while end < self.width and chars[candidate, end] == SPACE:
+                end += 1
+            # keep one blank on each side so the label does not touch a wall
+            start, end = start + 1, end - 1
+            if end - start >= min(len(text), 4) and (best is None or end - start > best[2] - best[1]):
+                best = (candidate, start, end)
+                if end - start >= len(text):
+                    break
+        if best is None:
+            return
+        candidate, start, end = best
+        label = text[: end - start]
+        left = min(max(start, col - len(label) // 2), end - len(label))
+        for offset, char in enumerate(label):
+            chars[candidate, left + offset] = ord(char)
+            styles[candidate, left + offset] = style
+
+    @staticmethod
+    def _polygon_segments(points: Any) -> np.ndarray:
+        ring = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+        if len(ring) < 2:
+            return np.zeros((0, 4))
+        return np.column_stack([ring, np.roll(ring, -1, axis=0)])
+
+    # layers ---------------------------------------------------------------------------------------------
+    def _draw_world(self) -> tuple[np.ndarray, np.ndarray]:
+        chars = np.full((self.height, self.width), SPACE, dtype=np.uint32)
+        styles = np.zeros((self.height, self.width), dtype=np.uint8)
+        world = self.world
+        self._paint_dots(chars, styles, *self._segment_dots(world.walls()), WALL)
+        for entity in world.entities():
+            self._paint_dots(chars, styles, *self._segment_dots(self._polygon_segments(entity.footprint)), ENTITY)
+        for door in world.doors():
+            self._paint_glyphs(chars, styles, np.asarray([door.position], dtype=np.float64), "▒", DOOR)
+        for zone in world.zones:
+            cx, cy = _centroid_xy(zone)
+            rows, cols = self.to_cells(np.array([[cx, cy]]))
+            self._paint_label(chars, styles, int(rows[0]), int(cols[0]), _zone_label(zone.name, self.width), ZONE_LABEL)
+        return chars, styles
+
+    def compose(self, overlay: Overlay | None) -> tuple[np.ndarray, np.ndarray]:
+        """The static map with scenario overlays; what the simulation draws agents on."""
+        chars = self.base_chars.copy()
+        styles = self.base_styles.copy()
+        if overlay is None:
+            return chars, styles
+        for velocity_field in overlay.fields:
+            self._paint_field(chars, styles, velocity_field)
+        if len(overlay.robot_path) > 1:
+            path = np.asarray(overlay.robot_path, dtype=np.float64)
+            self._paint_dots(chars, styles, *self._segment_dots(np.column_stack([path[:-1], path[1:]])), ROBOT_PATH)
+        if len(overlay.highlight_path) > 1:
+            path = np.asarray(overlay.highlight_path, dtype=np.float64)
+            self._paint_dots(chars, styles, *self._segment_dots(np.column_stack([path[:-1], path[1:]])), HIGHLIGHT)
+        # markers go over the paths so a route never hides its own goals
+        self._paint_glyphs(chars, styles, overlay.waypoints, "·", WAYPOINT)
+        self._paint_glyphs(chars, styles, overlay.spawns, "○", SPAWN)
+        self._paint_glyphs(chars, styles, overlay.goals, "◎", GOAL)
+        self._paint_glyphs(chars, styles, overlay.highlight_points, "◆", SELECTED)
+        return chars, styles
+
+    def _paint_field(self, chars: np.ndarray, styles: np.ndarray, velocity_field: Any) -> None:
+        vectors = np.asarray(velocity_field.vectors)
+        origin_x, origin_y = velocity_field.origin
+        resolution = float(velocity_field.resolution)
+        rows, cols = np.mgrid[0 : self.height : 2, 0 : self.width : 3]
+        rows, cols = rows.ravel(), cols.ravel()
+        xs = self.x0 + (cols + 0.5) * 2 / self.dots_per_metre
+        ys = self.y1 - (rows + 0.5) * 4 / self.dots_per_metre
+        fr = np.floor((ys - origin_y) / resolution).astype(np.int64)
+        fc = np.floor((xs - origin_x) / resolution).astype(np.int64)
+        inside = (fr >= 0) & (fc >= 0) & (fr < vectors.shape[0]) & (fc < vectors.shape[1])
+        rows, cols, fr, fc = rows[inside], cols[inside], fr[inside], fc[inside]
+        vx, vy = vectors[fr, fc, 0], vectors[fr, fc, 1]
+        moving = (np.hypot(vx, vy) > 1e-6) & (chars[rows, cols] == SPACE)
+        rows, cols, vx, vy = rows[moving], cols[moving], vx[moving], vy[moving]
+        octant = np.round(np.arctan2(vy, vx) / (math.pi / 4)).astype(np.int64) % 8
+        chars[rows, cols] = np.array([ord(a) for a in ARROWS], dtype=np.uint32)[octant]
+        styles[rows, cols] = FIELD
+
+
+@dataclass(frozen=True)
+class AgentCells:
+    """Agents rasterised to cells: flat cell indexes with their braille code and style."""
+
+    rows: np.ndarray
+    cols: np.ndarray
+    chars: np.ndarray
+    styles: np.ndarray
+
+    def by_row(self) -> dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+        out: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        if len(self.rows) == 0:
+            return out
+        order = np.argsort(self.rows, kind="stable")
+        rows = self.rows[order]
+        bounds = np.flatnonzero(np.diff(rows)) + 1
+        for chunk in np.split(np.arange(len(rows)), bounds):
+            index = order[chunk]
+            out[int(rows[chunk[0]])] = (self.cols[index], self.chars[index], self.styles[index])
+        return out
+
+
+def rasterise_agents(
+    raster: MapRaster,
+    positions: np.ndarray,
+    colour_index: np.ndarray,
+    selected: int = -1,
+    robot: tuple[float, float, float] | None = None,
+) -> AgentCells:
+    """Each agent is a 2x2 dot blob; the robot is an arrow glyph pointing along its heading."""
+    positions = np.asarray(positions, dtype=np.float64).reshape(-1, 2)
+    dx, dy = raster.to_dots(positions)
+    dx = np.concatenate([dx, dx + 1, dx, dx + 1])
+    dy = np.concatenate([dy, dy, dy + 1, dy + 1])
+    styles_per_agent = GROUP_BASE + (np.asarray(colour_index, dtype=np.int64) % GROUP_COLOURS)
+    if 0 <= selected < len(positions):
+        styles_per_agent = styles_per_agent.copy()
+        styles_per_agent[selected] = SELECTED
+    style_of_dot = np.tile(styles_per_agent, 4)
+    keep = (dx >= 0) & (dy >= 0) & (dx < raster.width * 2) & (dy < raster.height * 4)
+    dx, dy, style_of_dot = dx[keep], dy[keep], style_of_dot[keep]
+    flat = (dy // 4) * raster.width + dx // 2
+    bits = BRAILLE_BITS[dy % 4, dx % 2]
+    cells, inverse = np.unique(flat, return_inverse=True)
+    merged = np.zeros(len(cells), dtype=np.uint8)
+    np.bitwise_or.at(merged, inverse, bits)
+    cell_style = np.zeros(len(cells), dtype=np.uint8)
+    # The selected agent wins its cells; otherwise the last agent drawn there gives the colour.
+    order = np.argsort(style_of_dot == SELECTED, kind="stable")
+    cell_style[inverse[order]] = style_of_dot[order]
+    chars = (BRAILLE_BASE + merged.astype(np.uint32)).astype(np.uint32)
+    rows, cols = cells // raster.width, cells % raster.width
+    if robot is not None:
+        rrow, rcol = raster.to_cells(np.array([[robot[0], robot[1]]]))
+        if 0 <= rrow[0] < raster.height and 0 <= rcol[0] < raster.width:
+            octant = int(round(robot[2] / (math.pi / 4))) % 8
+            rows = np.append(rows, rrow[0])
+            cols = np.append(cols, rcol[0])
+            chars = np.append(chars, np.uint32(ord(ARROWS[octant])))
+            cell_style = np.append(cell_style, np.uint8(ROBOT))
+    return AgentCells(rows.astype(np.int64), cols.astype(np.int64), chars.astype(np.uint32), cell_style.astype(np.uint8))
+
+
+def row_text(chars_row: np.ndarray) -> str:
+    return np.ascontiguousarray(chars_row, dtype="<u4").tobytes().decode("utf-32-le")
+
+
+def row_runs(styles_row: np.ndarray) -> list[tuple[int, int, int]]:
+    """(start, end, style) runs of equal style along a row."""
+    if len(styles_row) == 0:
+        return []
+    change = np.flatnonzero(np.diff(styles_row)) + 1
+    starts = np.concatenate(([0], change))
+    ends = np.concatenate((change, [len(styles_row)]))
+    return [(int(s), int(e), int(styles_row[s])) for s, e in zip(starts, ends)]
+
+
+def _centroid_xy(zone: Any) -> tuple[float, float]:
+    centroid = zone.centroid
+    if hasattr(centroid, "x"):
+        return float(centroid.x), float(centroid.y)
+    return float(centroid[0]), float(centroid[1])
+
+
+def _zone_label(name: str, width: int) -> str:
+    label = name.replace("_", " ")
+    return label[: max(1, min(len(label), width // 3))]

@@ -1,0 +1,231 @@
+"""The map: a Line API ScrollView over a MapRaster, with agents drawn on top of cached static strips."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from rich.segment import Segment
+from rich.style import Style
+from textual.binding import Binding
+from textual.cache import LRUCache
+from textual.geometry import Size
+from textual.scroll_view import ScrollView
+from textual.strip import Strip
+
+from grove_tui.tui.widgets import map_styles as ms
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from grove_tui.tui.widgets import map_raster as mr
+
+_STYLE_CLASSES = {
+    ms.FLOOR: "map--floor",
+    ms.WALL: "map--wall",
+    ms.ZONE_LABEL: "map--zone-label",
+    ms.DOOR: "map--door",
+    ms.ENTITY: "map--entity",
+    ms.SPAWN: "map--spawn",
+    ms.GOAL: "map--goal",
+    ms.WAYPOINT: "map--waypoint",
+    ms.FIELD: "map--field",
+    ms.HIGHLIGHT: "map--highlight",
+    ms.ROBOT: "map--robot",
+    ms.ROBOT_PATH: "map--robot-path",
+    ms.SELECTED: "map--selected",
+    **{ms.GROUP_BASE + i: f"map--group-{i}" for i in range(ms.GROUP_COLOURS)},
+}
+
+ZOOM_STEP = 1.5
+MAX_ZOOM = 16.0
+
+
+class MapView(ScrollView, can_focus=True):
+    """World map: walls (braille), zone labels, doors ▒, spawns ○, goals ◎, waypoints ·, field arrows."""
+
+    HELP = """\
+## Map
+
+Walls and entity outlines are drawn with braille dots, zones are labelled, doors are `▒`.
+Scenario overlays: spawns `○`, goals `◎`, injected waypoints `·`, velocity-field arrows, the robot's
+path, and the selection highlighted with `◆`.
+
+- **+ / -** zoom in and out, **0** fit the whole world
+- **arrows** or **h j k l** pan
+"""
+
+    BINDINGS = [
+        Binding("plus,equals_sign", "zoom(1)", "Zoom in", show=False, id="map.zoom_in", tooltip="Zoom in on the map"),
+        Binding("minus", "zoom(-1)", "Zoom out", show=False, id="map.zoom_out", tooltip="Zoom out"),
+        Binding("0", "fit", "Fit", show=False, id="map.fit", tooltip="Fit the whole world in view"),
+        Binding("h", "scroll_left", "Pan left", show=False, id="map.pan_left"),
+        Binding("l", "scroll_right", "Pan right", show=False, id="map.pan_right"),
+        Binding("k", "scroll_up", "Pan up", show=False, id="map.pan_up"),
+        Binding("j", "scroll_down", "Pan down", show=False, id="map.pan_down"),
+    ]
+
+    COMPONENT_CLASSES = set(_STYLE_CLASSES.values())
+
+    DEFAULT_CSS = """
+    MapView { scrollbar-size: 1 1; }
+    MapView > .map--floor { color: $foreground-muted; }
+    MapView > .map--wall { color: $foreground; }
+    MapView > .map--zone-label { color: $secondary; text-style: italic; }
+    MapView > .map--door { color: $warning; }
+    MapView > .map--entity { color: $accent-muted; }
+    MapView > .map--spawn { color: $success; text-style: bold; }
+    MapView > .map--goal { color: $error; text-style: bold; }
+    MapView > .map--waypoint { color: $warning; }
+    MapView > .map--field { color: $primary-muted; }
+    MapView > .map--highlight { color: $accent; text-style: bold; }
+    MapView > .map--robot { color: $text-error; background: $error-muted; text-style: bold; }
+    MapView > .map--robot-path { color: $error-muted; }
+    MapView > .map--selected { color: $text-accent; background: $accent-muted; text-style: bold; }
+    MapView > .map--group-0 { color: $primary; }
+    MapView > .map--group-1 { color: $success; }
+    MapView > .map--group-2 { color: $warning; }
+    MapView > .map--group-3 { color: $secondary; }
+    MapView > .map--group-4 { color: $accent; }
+    MapView > .map--group-5 { color: $error; }
+    MapView > .map--group-6 { color: $text-primary; }
+    MapView > .map--group-7 { color: $text-success; }
+    """
+
+    def __init__(self, *, name: str | None = None, id: str | None = None, classes: str | None = None) -> None:
+        super().__init__(name=name, id=id, classes=classes)
+        self._world: Any = None
+        self._overlay: mr.Overlay | None = None
+        self._zoom = 1.0  # multiple of the fit scale
+        self._raster: mr.MapRaster | None = None
+        self._chars: np.ndarray | None = None
+        self._styles: np.ndarray | None = None
+        self._strip_cache: LRUCache[int, Strip] = LRUCache(512)
+        self._palette: list[Style] | None = None
+        self._agent_rows: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        self._fit_for: tuple[int, int] | None = None
+
+    # public API --------------------------------------------------------------------------------------
+    @property
+    def raster(self) -> mr.MapRaster | None:
+        return self._raster
+
+    @property
+    def world(self) -> Any:
+        return self._world
+
+    def set_world(self, world: Any) -> None:
+        self._world = world
+        self._overlay = None
+        self._agent_rows = {}
+        self._zoom = 1.0
+        self._rebuild()
+
+    def set_overlay(self, overlay: mr.Overlay | None) -> None:
+        self._overlay = overlay
+        self._recompose()
+
+    def set_agents(self, cells: mr.AgentCells | None) -> None:
+        """Swap the dynamic layer and repaint only the rows whose agents changed."""
+        new_rows = {} if cells is None else cells.by_row()
+        changed = set(self._agent_rows) | set(new_rows)
+        self._agent_rows = new_rows
+        top = int(self.scroll_offset.y)
+        bottom = top + self.size.height
+        for row in changed:
+            if top <= row < bottom:
+                self.refresh_line(row - top)
+
+    def centre_on(self, x: float, y: float) -> None:
+        import numpy as np
+
+        if self._raster is None:
+            return
+        rows, cols = self._raster.to_cells(np.array([[x, y]]))
+        self.scroll_to(
+            max(0, int(cols[0]) - self.size.width // 2), max(0, int(rows[0]) - self.size.height // 2), animate=False
+        )
+
+    # actions -----------------------------------------------------------------------------------------
+    def action_zoom(self, direction: int) -> None:
+        zoom = self._zoom * (ZOOM_STEP if direction > 0 else 1 / ZOOM_STEP)
+        self._zoom = min(MAX_ZOOM, max(1.0, zoom))
+        self._rebuild()
+
+    def action_fit(self) -> None:
+        self._zoom = 1.0
+        self._rebuild()
+
+    # rendering ---------------------------------------------------------------------------------------
+    def on_resize(self) -> None:
+        if self._world is not None and self._fit_for != (self.size.width, self.size.height):
+            self._rebuild()
+
+    def notify_style_update(self) -> None:
+        super().notify_style_update()
+        self._palette = None
+        self._strip_cache.clear()
+
+    def _rebuild(self) -> None:
+        if self._world is None:
+            self._raster = None
+            self._chars = self._styles = None
+            self.virtual_size = Size(0, 0)
+            self._strip_cache.clear()
+            self.refresh()
+            return
+        from grove_tui.tui.widgets import map_raster as mr
+
+        cols = max(10, self.size.width or 40)
+        rows = max(5, self.size.height or 20)
+        self._fit_for = (self.size.width, self.size.height)
+        scale = mr.MapRaster.fit_scale(self._world, cols - 1, rows)
+        self._raster = mr.MapRaster(self._world, scale * self._zoom)
+        self._recompose()
+
+    def _recompose(self) -> None:
+        if self._raster is None:
+            return
+        self._chars, self._styles = self._raster.compose(self._overlay)
+        self._strip_cache.clear()
+        self.virtual_size = Size(self._raster.width, self._raster.height)
+        self.refresh()
+
+    def _styles_palette(self) -> list[Style]:
+        if self._palette is None:
+            base = self.rich_style
+            self._palette = [base + self.get_component_rich_style(_STYLE_CLASSES[i]) for i in range(ms.STYLE_COUNT)]
+        return self._palette
+
+    def _strip_for(self, chars_row: np.ndarray, styles_row: np.ndarray) -> Strip:
+        from grove_tui.tui.widgets import map_raster as mr
+
+        palette = self._styles_palette()
+        text = mr.row_text(chars_row)
+        return Strip([Segment(text[s:e], palette[style]) for s, e, style in mr.row_runs(styles_row)], len(text))
+
+    def _static_strip(self, row: int) -> Strip:
+        strip = self._strip_cache.get(row)
+        if strip is None:
+            assert self._chars is not None and self._styles is not None
+            strip = self._strip_for(self._chars[row], self._styles[row])
+            self._strip_cache[row] = strip
+        return strip
+
+    def render_line(self, y: int) -> Strip:
+        scroll_x, scroll_y = self.scroll_offset
+        row = scroll_y + y
+        width = self.size.width
+        base = self.rich_style
+        if self._chars is None or self._styles is None or row >= len(self._chars):
+            return Strip.blank(width, base)
+        agents = self._agent_rows.get(row)
+        if agents is None:
+            strip = self._static_strip(row)
+        else:
+            cols, chars, styles = agents
+            chars_row = self._chars[row].copy()
+            styles_row = self._styles[row].copy()
+            chars_row[cols] = chars
+            styles_row[cols] = styles
+            strip = self._strip_for(chars_row, styles_row)
+        return strip.crop_extend(scroll_x, scroll_x + width, base)
