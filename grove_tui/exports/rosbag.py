@@ -82,13 +82,20 @@ def hunav_msg_text(name: str) -> str:
     return (MSG_DIR / name).read_text(encoding="utf-8")
 
 
-def _rosbags() -> Any:
+def missing_dependency() -> str | None:
+    """Why this export cannot run here (its optional dependency is not installed), or None."""
     try:
         import rosbags.rosbag2  # noqa: F401
         import rosbags.typesys  # noqa: F401
     except ImportError:
-        raise RosbagExportError(f"the ROS 2 bag export needs rosbags: {ROS_EXTRA}") from None
-    return rosbags
+        return f"the ROS 2 bag export needs rosbags: {ROS_EXTRA}"
+    return None
+
+
+def _rosbags() -> None:
+    missing = missing_dependency()
+    if missing is not None:
+        raise RosbagExportError(missing)
 
 
 def ros_typestore() -> Any:
