@@ -9,6 +9,7 @@ from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from grove_tui.errors import GroveError
@@ -19,7 +20,8 @@ _bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_ok
 
 
 def _fail(message: str) -> None:
-    Console(stderr=True).print(f"[bold red]error:[/] {message}", highlight=False)
+    # escape: messages hold user paths and text like `grove-tui[ros]` that rich would read as markup
+    Console(stderr=True).print(f"[bold red]error:[/] {escape(message)}", highlight=False)
     sys.exit(EXIT_BAD_INPUT)
 
 
