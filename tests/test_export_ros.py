@@ -367,6 +367,23 @@ def test_foxglove_deletes_people_who_leave(leaving, tmp_path):
         assert [e.id for e in update.entities] == [f"agent{i}" for i in frame["ids"]]
 
 
+def test_a_scenario_without_robot_has_no_robot_topics(simulated, tmp_path):
+    bundle = tmp_path / "bundle"
+    shutil.copytree(simulated, bundle)
+    scenario = Scenario.load(bundle / "scenario.yaml")
+    dataclasses.replace(scenario, robot=None).save(bundle / "scenario.yaml")
+    lines = (bundle / "trajectories.csv").read_text().splitlines()
+    (bundle / "trajectories.csv").write_text("\n".join([lines[0]] + [x for x in lines[1:] if x.split(",")[2] != "0"]))
+    frames = len(csv_frames(bundle))
+    bag = export_rosbag(bundle, tmp_path / "bag")
+    assert bag.counts == {"/human_states": frames, "/agent_markers": frames, "/events": event_count(bundle),
+                          "/map": 1, "/scenario_markers": 1}
+    messages, _, _ = read_bag(bag.directory)
+    assert all(m.ns == "people" for array in messages["/agent_markers"] for m in array.markers[1:])
+    mcap = fox.export_foxglove(bundle, tmp_path / "scene.mcap")
+    assert mcap.counts == {"/people": frames, "/events": event_count(bundle), "/world": 1, "/map": 1, "/paths": 1}
+
+
 def test_velocity_fields_are_drawn_as_arrows(simulated, tmp_path):
     from grove_tui.navigation.velocity_field import VelocityField
 

@@ -206,6 +206,10 @@ class _Static:
     goal: tuple[float, float] | None
 
 
+_SLOTS_U32 = frozenset({"sec", "nanosec"})  # stamps; every other slot is a float
+_SLOTS_32 = _SLOTS_U32 | {"yaw", "linear_vel", "angular_vel"}  # 4-byte slots; the rest are float64
+
+
 class _Template:
     """Serialized bytes of one message with the offsets where each frame's numbers go."""
 
@@ -233,10 +237,6 @@ class _Template:
             else:
                 f64[index] = value
         return buf
-
-
-_SLOTS_U32 = frozenset({"sec", "nanosec"})
-_SLOTS_32 = _SLOTS_U32 | {"yaw", "linear_vel", "angular_vel"}
 
 
 def _agent_fields(cdr: _Cdr, body: _Static, slots: dict[str, list[int]]) -> None:
