@@ -9,6 +9,7 @@ from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from grove_tui.errors import GroveError
@@ -19,13 +20,14 @@ _bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_ok
 
 
 def _fail(message: str) -> None:
-    Console(stderr=True).print(f"[bold red]error:[/] {message}", highlight=False)
+    # escape: messages hold user paths and text like `grove-tui[ros]` that rich would read as markup
+    Console(stderr=True).print(f"[bold red]error:[/] {escape(message)}", highlight=False)
     sys.exit(EXIT_BAD_INPUT)
 
 
 @click.group()
 def export() -> None:
-    """Export a bundle for HuNavSim (Gazebo, Isaac Sim) and PedPy."""
+    """Export a bundle for HuNavSim (Gazebo, Isaac Sim), PedPy, ROS 2 (bags) and Foxglove."""
 
 
 @export.command("hunav")
@@ -138,3 +140,42 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
         _fail(str(exc))
         return
     click.echo(str(written))
+
+
+@export.command("rosbag")
+@_bundle_argument
+@click.option("--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
+              help="Bag folder to write (metadata.yaml and the storage file; a previous bag export is replaced, "
+                   "any other non-empty folder is refused).")
+@click.option("--storage", type=click.Choice(["mcap", "sqlite3"]), default="mcap", show_default=True,
+              help="rosbag2 storage plugin.")
+@click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bag export.")
+def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: bool) -> None:
+    """ROS 2 bag of a simulated bundle: hunav_msgs/Agents on /human_states, markers, /map, /plan, /tf, events."""
+    from grove_tui.exports.rosbag import export_rosbag
+
+    try:
+        result = export_rosbag(bundle, out_dir, storage=storage, overwrite=overwrite)
+    except GroveError as exc:
+        _fail(str(exc))
+        return
+    click.echo(str(result.directory))
+    for topic, count in result.counts.items():
+        click.echo(f"  {topic}: {count}", err=True)
+
+
+@export.command("foxglove")
+@_bundle_argument
+@click.option("--out", "out_path", required=True, type=click.Path(dir_okay=False, path_type=Path),
+              help="The .mcap file to write; its Foxglove layout goes beside it as <name>.layout.json.")
+def export_foxglove_command(bundle: Path, out_path: Path) -> None:
+    """Foxglove MCAP of a simulated bundle (SceneUpdate, Grid, Log) and a layout that shows it in 3D."""
+    from grove_tui.exports.foxglove import export_foxglove
+
+    try:
+        result = export_foxglove(bundle, out_path)
+    except GroveError as exc:
+        _fail(str(exc))
+        return
+    click.echo(str(result.mcap))
+    click.echo(str(result.layout))

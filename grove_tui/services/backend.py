@@ -130,6 +130,36 @@ def export_picture(ctx: ExportContext) -> None:
     ctx.add("picture", Path(path))
 
 
+def export_rosbag_files(ctx: ExportContext) -> None:
+    """A ROS 2 bag of the run; a note instead when the `ros` extra is missing."""
+    if ctx.simulation is None or not ctx.trajectories.exists():
+        return
+    from grove_tui.exports.rosbag import export_rosbag, missing_dependency
+
+    out = ctx.out_dir / "rosbag"
+    missing = missing_dependency()
+    if missing is not None:
+        ctx.add("rosbag", out, f"not written: {missing}")
+        return
+    result = export_rosbag(ctx.bundle, out)
+    ctx.add("rosbag", result.directory, f"{result.frames} frames")
+
+
+def export_foxglove_files(ctx: ExportContext) -> None:
+    """A Foxglove MCAP of the run and its layout; a note instead when the `ros` extra is missing."""
+    if ctx.simulation is None or not ctx.trajectories.exists():
+        return
+    from grove_tui.exports.foxglove import export_foxglove, missing_dependency
+
+    out = ctx.out_dir / "scenario.mcap"
+    missing = missing_dependency()
+    if missing is not None:
+        ctx.add("foxglove", out, f"not written: {missing}")
+        return
+    result = export_foxglove(ctx.bundle, out)
+    ctx.add("foxglove", result.mcap, f"+ layout {result.layout.name}")
+
+
 # Order matters: later exporters read what earlier ones wrote into the exported bundle.
 EXPORTERS: list[tuple[str, Exporter]] = [
     ("bundle", export_bundle),
@@ -137,6 +167,8 @@ EXPORTERS: list[tuple[str, Exporter]] = [
     ("metrics", export_metrics),
     ("hunav", export_hunav_files),
     ("picture", export_picture),
+    ("rosbag", export_rosbag_files),
+    ("foxglove", export_foxglove_files),
 ]
 
 

@@ -1,6 +1,7 @@
 """Batch job files: one JSON object per line, every line checked before any job runs.
 
-    {"world": "hospital", "preset": "queuing", "prompt": "...", "seed": 1, "name": "pharmacy", "simulate": 60}
+    {"world": "hospital", "preset": "queuing", "prompt": "...", "seed": 1, "name": "pharmacy", "simulate": 60,
+     "export": ["rosbag", "foxglove"]}
 
 A bad line (not JSON, a missing or misspelled key, a value of the wrong type or out of range, a name
 another line already uses) is reported with its line number and skipped; the good lines still run.
@@ -23,7 +24,10 @@ MAX_SEED = 2**32 - 1
 MAX_SIMULATE_SECONDS = 24 * 3600.0
 MAX_PROMPT_CHARS = 2000
 REQUIRED = ("world", "preset", "prompt")
-OPTIONAL = ("seed", "name", "simulate")
+OPTIONAL = ("seed", "name", "simulate", "export")
+# What `export` may list: the `grove export` formats. All but hunav read the simulated run.
+EXPORT_KINDS = ("hunav", "trajectories", "rosbag", "foxglove")
+NEEDS_RUN = frozenset({"trajectories", "rosbag", "foxglove"})
 
 
 class JobFileError(GroveError):
@@ -39,6 +43,7 @@ class BatchJob:
     seed: int
     name: str  # the bundle folder's name inside the batch's --out, unique in the file
     simulate: float | None
+    exports: tuple[str, ...] = ()  # formats to write after the job, in the order given
 
 
 @dataclass(frozen=True)
@@ -74,9 +79,26 @@ def check_simulate_seconds(value: Any) -> float:
     return seconds
 
 
-def _did_you_mean(key: str) -> str:
-    close = difflib.get_close_matches(key, REQUIRED + OPTIONAL, n=1)
+def _did_you_mean(key: str, choices: tuple[str, ...] = REQUIRED + OPTIONAL) -> str:
+    close = difflib.get_close_matches(key, choices, n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def check_exports(value: Any, simulate: float | None) -> tuple[str, ...]:
+    """`export` is a list of distinct format names; those that read the run need `simulate`."""
+    if not isinstance(value, list) or not all(isinstance(kind, str) for kind in value):
+        raise ValueError(f"export must be a list of format names like [\"rosbag\"], got {value!r}")
+    unknown = [kind for kind in value if kind not in EXPORT_KINDS]
+    if unknown:
+        raise ValueError("; ".join(f"unknown export {kind!r}{_did_you_mean(kind, EXPORT_KINDS)} "
+                                   f"(formats: {', '.join(EXPORT_KINDS)})" for kind in unknown))
+    repeated = sorted({kind for kind in value if value.count(kind) > 1})
+    if repeated:
+        raise ValueError(f"export lists {', '.join(repeated)} more than once")
+    needing = [kind for kind in value if kind in NEEDS_RUN]
+    if needing and simulate is None:
+        raise ValueError(f"export {', '.join(needing)} needs a simulated run: add \"simulate\": SECONDS")
+    return tuple(value)
 
 
 def _check_job(number: int, job: Any, index: int) -> BatchJob:
@@ -100,8 +122,10 @@ def _check_job(number: int, job: Any, index: int) -> BatchJob:
     name = job.get("name")
     if name is not None and (not isinstance(name, str) or not name.strip()):
         raise ValueError(f"name must be a non-empty string, got {name!r}")
+    exports = check_exports(job["export"], seconds) if "export" in job else ()
     folder = folder_name(name if name is not None else f"{index:03d}-{Path(job['world']).stem}-{job['preset']}")
-    return BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds)
+    return BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds,
+                    exports)
 
 
 def read_jobs(path: str | Path) -> tuple[list[BatchJob], list[JobProblem]]:

@@ -1,0 +1,385 @@
+"""A simulated bundle as one MCAP file with Foxglove's own schemas (protobuf, from `foxglove-sdk`), plus a
+Foxglove layout written beside it, so opening the file in Foxglove shows the scenario in 3D at once.
+
+Topics (frame `map`, log times = simulation time):
+
+    /people   foxglove.SceneUpdate     every frame: a body and a heading arrow per person (group colour);
+                                       people who left are deleted
+    /robot    foxglove.SceneUpdate     every frame the robot was recorded: its body and heading
+    /tf       foxglove.FrameTransforms every frame the robot was recorded: map -> base_link
+    /world    foxglove.SceneUpdate     once: walls, furniture and obstacles (raised footprints), zones
+                                       with their names, doors (green) and exits (red)
+    /map      foxglove.Grid            once: the planner's occupancy grid (1 occupied, 0 free)
+    /paths    foxglove.SceneUpdate     once: the robot's planned path, each person's route, waypoints and goal
+    /fields   foxglove.SceneUpdate     once: velocity fields as arrows (LinePrimitive line lists)
+    /events   foxglove.Log             one per event of events.jsonl
+
+What is published once is logged at the start; Foxglove shows the latest message of each topic at
+the playback time, so they stay visible through the run.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import shapely
+
+from grove_tui.errors import GroveError
+from grove_tui.exports.frames import ROS_EXTRA, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
+    open_simulated_bundle
+from grove_tui.files import atomic_file
+
+LAYOUT_FILE = Path(__file__).with_name("foxglove_layout.json")
+FRAME_ID = "map"
+ROBOT_FRAME = "base_link"
+PERSON_HEIGHT = 1.7
+ROBOT_HEIGHT = 0.4
+WALL_HEIGHT = 1.0
+FURNITURE_HEIGHT = 0.75
+
+
+class FoxgloveExportError(GroveError):
+    pass
+
+
+@dataclass(frozen=True)
+class FoxgloveExport:
+    mcap: Path
+    layout: Path
+    frames: int
+    counts: dict[str, int]  # messages per topic
+
+
+def missing_dependency() -> str | None:
+    """Why this export cannot run here (its optional dependency is not installed), or None."""
+    try:
+        import foxglove.channels  # noqa: F401
+        import foxglove.messages  # noqa: F401
+    except ImportError:
+        return f"the Foxglove export needs foxglove-sdk: {ROS_EXTRA}"
+    return None
+
+
+def _foxglove() -> Any:
+    missing = missing_dependency()
+    if missing is not None:
+        raise FoxgloveExportError(missing)
+    import foxglove
+
+    return foxglove
+
+
+def layout_path_for(mcap: Path) -> Path:
+    """Where the layout goes: beside the MCAP, `<name>.layout.json`."""
+    return mcap.with_name(mcap.stem + ".layout.json")
+
+
+def build_layout() -> str:
+    """The shipped layout, made with foxglove-sdk's layout model: a 3D view from above with every topic
+    of the export, and the event log beside it."""
+    _foxglove()
+    import foxglove.layouts as fl
+
+    scene = fl.BaseRendererSceneUpdateTopicSettings
+    three_d = fl.ThreeDeePanel(title="Scenario", config=fl.ThreeDeeConfig(
+        follow_tf=FRAME_ID, follow_mode="follow-none",
+        camera_state=fl.ThreeDeeCameraState(perspective=True, distance=60.0, phi=35.0, theta_offset=0.0),
+        layers={"grid": fl.BaseRendererGridLayerSettings(visible=False)},
+        topics={
+            "/map": fl.BaseRendererGridTopicSettings(visible=True, color_mode="gradient",
+                                                    gradient=("#f4f1eaff", "#6b6357ff"), min_value=0.0,
+                                                    max_value=1.0, draw_behind=True,
+                                                    interpolation_method="nearestNeighbor"),
+            "/world": scene(visible=True),
+            "/paths": scene(visible=True),
+            "/fields": scene(visible=True),
+            "/people": scene(visible=True),
+            "/robot": scene(visible=True),
+        }))
+    log = fl.LogPanel(title="Events", config=fl.LogConfig(topic_to_render="/events", show_name=True))
+    layout = fl.Layout(content=fl.SplitContainer(direction="row", items=[
+        fl.SplitItem(proportion=3, content=three_d),
+        fl.SplitItem(proportion=1, content=log),
+    ]))
+    return json.dumps(json.loads(layout.to_json()), indent=2) + "\n"
+
+
+def shipped_layout() -> str:
+    return LAYOUT_FILE.read_text(encoding="utf-8")
+
+
+def _ns(t: float) -> int:
+    return int(round(t * 1e9))
+
+
+class _Scene:
+    """Builders for foxglove.messages values, with the constant parts made once."""
+
+    def __init__(self) -> None:
+        m = _foxglove().messages
+        self.m = m
+        self.identity = m.Quaternion(x=0.0, y=0.0, z=0.0, w=1.0)
+        self._colours: dict[tuple[float, ...], Any] = {}
+        self._sizes: dict[tuple[float, ...], Any] = {}
+
+    def colour(self, rgba: tuple[float, float, float, float]) -> Any:
+        key = tuple(round(c, 4) for c in rgba)
+        if key not in self._colours:
+            self._colours[key] = self.m.Color(r=key[0], g=key[1], b=key[2], a=key[3])
+        return self._colours[key]
+
+    def size(self, x: float, y: float, z: float) -> Any:
+        key = (x, y, z)
+        if key not in self._sizes:
+            self._sizes[key] = self.m.Vector3(x=x, y=y, z=z)
+        return self._sizes[key]
+
+    def pose(self, x: float, y: float, z: float = 0.0, yaw: float = 0.0) -> Any:
+        m = self.m
+        orientation = self.identity if yaw == 0.0 else m.Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2),
+                                                                    w=math.cos(yaw / 2))
+        return m.Pose(position=m.Vector3(x=x, y=y, z=z), orientation=orientation)
+
+    def stamp(self, ns: int) -> Any:
+        return self.m.Timestamp(ns // 1_000_000_000, ns % 1_000_000_000)
+
+    def line(self, kind: str, points: Any, rgba: tuple[float, float, float, float], thickness: float,
+             z: float = 0.02) -> Any:
+        m = self.m
+        return m.LinePrimitive(type=getattr(m.LinePrimitiveLineType, kind), pose=self.pose(0.0, 0.0),
+                               thickness=thickness, scale_invariant=False,
+                               points=[m.Point3(x=float(p[0]), y=float(p[1]), z=z) for p in points],
+                               color=self.colour(rgba))
+
+    def entity(self, ns: int, entity_id: str, **primitives: Any) -> Any:
+        return self.m.SceneEntity(timestamp=self.stamp(ns), frame_id=FRAME_ID, id=entity_id, **primitives)
+
+    def bodies(self, x: list[float], y: list[float], yaw: np.ndarray, looks: list[tuple[Any, Any, float]],
+               height: float) -> list[tuple[Any, Any]]:
+        """A standing cylinder and an arrow on the ground showing where it faces, per body.
+
+        `looks` holds each body's (colour, size, radius), made once; this runs for every person in every
+        frame, so it builds the foxglove values directly and takes sines in one numpy call."""
+        m = self.m
+        Vector3, Pose, Quaternion = m.Vector3, m.Pose, m.Quaternion
+        qz = np.sin(yaw / 2).tolist()
+        qw = np.cos(yaw / 2).tolist()
+        identity = self.identity
+        out = []
+        for k, (colour, size, radius) in enumerate(looks):
+            cylinder = m.CylinderPrimitive(pose=Pose(position=Vector3(x=x[k], y=y[k], z=height / 2),
+                                                     orientation=identity),
+                                           size=size, bottom_scale=1.0, top_scale=1.0, color=colour)
+            arrow = m.ArrowPrimitive(pose=Pose(position=Vector3(x=x[k], y=y[k], z=0.05),
+                                               orientation=Quaternion(x=0.0, y=0.0, z=qz[k], w=qw[k])),
+                                     shaft_length=radius + 0.15, shaft_diameter=0.06, head_length=0.2,
+                                     head_diameter=0.18, color=colour)
+            out.append((cylinder, arrow))
+        return out
+
+    def look(self, rgba: tuple[float, float, float, float], radius: float, height: float) -> tuple[Any, Any, float]:
+        return self.colour(rgba), self.size(2 * radius, 2 * radius, height), radius
+
+
+def _prism_top(scene: _Scene, footprint: Any, height: float, rgba: tuple[float, float, float, float]) -> Any:
+    """The footprint's polygon as triangles at `height` (constrained Delaunay, so concave shapes work)."""
+    m = scene.m
+    polygon = shapely.Polygon(footprint)
+    if not polygon.is_valid or polygon.area <= 0:
+        polygon = polygon.buffer(0)
+    triangles = shapely.get_parts(shapely.constrained_delaunay_triangles(polygon))
+    points = [m.Point3(x=float(x), y=float(y), z=height)
+              for tri in triangles for x, y in list(tri.exterior.coords)[:3]]
+    return m.TriangleListPrimitive(pose=scene.pose(0.0, 0.0), points=points, color=scene.colour(rgba))
+
+
+def _world_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+    m = scene.m
+    world = bundle.world
+    entities = []
+    walls = world.walls()
+    if walls.size:
+        cubes = []
+        for x0, y0, x1, y1 in walls.tolist():
+            length = math.hypot(x1 - x0, y1 - y0)
+            if length <= 1e-6:
+                continue
+            cubes.append(m.CubePrimitive(pose=scene.pose((x0 + x1) / 2, (y0 + y1) / 2, WALL_HEIGHT / 2,
+                                                         math.atan2(y1 - y0, x1 - x0)),
+                                         size=scene.size(length, 0.1, WALL_HEIGHT),
+                                         color=scene.colour((0.25, 0.25, 0.27, 0.9))))
+        entities.append(scene.entity(ns, "walls", cubes=cubes))
+    for thing, kind, rgba in ([(e, "furniture", (0.85, 0.81, 0.75, 1.0)) for e in world.entities()]
+                              + [(o, "obstacles", (0.69, 0.66, 0.6, 1.0)) for o in world.obstacles]):
+        outline = scene.line("LineLoop", thing.footprint, (0.66, 0.6, 0.5, 1.0), 0.03, z=FURNITURE_HEIGHT)
+        entities.append(scene.entity(
+            ns, f"{kind}/{thing.name}", triangles=[_prism_top(scene, thing.footprint, FURNITURE_HEIGHT, rgba)],
+            lines=[outline], metadata=[m.KeyValuePair(key="type", value=thing.type)]))
+    for zone in world.zones:
+        cx, cy = zone.centroid
+        entities.append(scene.entity(
+            ns, f"zones/{zone.name}", lines=[scene.line("LineLoop", zone.boundary, (0.54, 0.5, 0.44, 0.6), 0.04)],
+            texts=[m.TextPrimitive(pose=scene.pose(cx, cy, 0.1), billboard=True, font_size=14.0,
+                                   scale_invariant=True, color=scene.colour((0.3, 0.28, 0.24, 1.0)),
+                                   text=zone.name.replace("_", " "))]))
+    for door in world.doors():
+        rgba = (0.75, 0.22, 0.17, 1.0) if door.exit else (0.15, 0.68, 0.38, 1.0)
+        a, b = door.opening
+        entities.append(scene.entity(ns, f"doors/{door.name}", lines=[scene.line("LineList", [a, b], rgba, 0.15)]))
+    return m.SceneUpdate(entities=entities)
+
+
+def _paths_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+    m = scene.m
+    entities = []
+    for agent in bundle.scenario.agents:
+        if not agent.goals:
+            continue
+        rgba = group_rgba(agent.group)
+        colour = scene.colour(rgba)
+        spheres = [m.SpherePrimitive(pose=scene.pose(x, y, 0.1), size=scene.size(0.15, 0.15, 0.15), color=colour)
+                   for x, y in agent.goals[:-1]]
+        gx, gy = agent.goals[-1]
+        spheres.append(m.SpherePrimitive(pose=scene.pose(gx, gy, 0.15), size=scene.size(0.3, 0.3, 0.3),
+                                         color=colour))
+        entities.append(scene.entity(
+            ns, f"routes/agent{agent.id}", spheres=spheres,
+            lines=[scene.line("LineStrip", [agent.start, *agent.goals], group_rgba(agent.group, 0.6), 0.04)],
+            metadata=[m.KeyValuePair(key="behavior", value=agent.behavior),
+                      m.KeyValuePair(key="group", value=str(agent.group))]))
+    robot = bundle.scenario.robot
+    if robot is not None:
+        path = list(robot.path) or [robot.start, robot.goal]
+        entities.append(scene.entity(
+            ns, "robot_path", lines=[scene.line("LineStrip", path, (0.0, 0.0, 0.0, 1.0), 0.08, z=0.04)],
+            spheres=[m.SpherePrimitive(pose=scene.pose(*robot.goal, 0.2), size=scene.size(0.4, 0.4, 0.4),
+                                       color=scene.colour((0.0, 0.0, 0.0, 1.0)))]))
+    return m.SceneUpdate(entities=entities)
+
+
+def _fields_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+    entities = []
+    for field_id, field in sorted(bundle.fields.items()):
+        segments = arrow_segments(field_arrows(field)).reshape(-1, 2)
+        entities.append(scene.entity(ns, f"fields/{field_id}",
+                                     lines=[scene.line("LineList", segments, (0.5, 0.55, 0.55, 0.8), 0.03)]))
+    return scene.m.SceneUpdate(entities=entities)
+
+
+def _grid(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+    m = scene.m
+    grid = bundle.grid
+    return m.Grid(timestamp=scene.stamp(ns), frame_id=FRAME_ID, pose=scene.pose(*grid.origin),
+                  column_count=grid.width, cell_size=m.Vector2(x=grid.resolution, y=grid.resolution),
+                  row_stride=grid.width, cell_stride=1,
+                  fields=[m.PackedElementField(name="occupied", offset=0, type=m.PackedElementFieldNumericType.Uint8)],
+                  data=grid.occupied.astype(np.uint8).tobytes())
+
+
+def export_foxglove(bundle_dir: str | Path, out_path: str | Path) -> FoxgloveExport:
+    """Write `out_path` (.mcap) and its layout beside it; both complete, or neither is touched."""
+    out = Path(out_path)
+    if out.suffix.lower() != ".mcap":
+        raise FoxgloveExportError(f"{out}: a Foxglove export is an .mcap file (name it *.mcap)")
+    foxglove = _foxglove()
+    bundle = open_simulated_bundle(bundle_dir)
+    layout = layout_path_for(out)
+    with atomic_file(out) as tmp_mcap, atomic_file(layout) as tmp_layout:
+        frames, counts = _write_mcap(foxglove, bundle, tmp_mcap)
+        tmp_layout.write_text(shipped_layout(), encoding="utf-8")
+    return FoxgloveExport(out, layout, frames, counts)
+
+
+def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path) -> tuple[int, dict[str, int]]:
+    from foxglove import channels as ch
+
+    scene = _Scene()
+    m = scene.m
+    context = foxglove.Context()
+    frames = bundle.frames()
+    first = next(frames, None)
+    if first is None:
+        raise FoxgloveExportError(f"{bundle.trajectories}: no trajectory rows")
+    events = bundle.events
+    start = min([_ns(first.t)] + [_ns(e.t) for e in events[:1]])
+    counts: dict[str, int] = {}
+
+    writer = foxglove.open_mcap(path, allow_overwrite=True, context=context)
+    try:
+        def channel(kind: Any, topic: str) -> Any:
+            made = kind(topic, context=context)
+            counts[topic] = 0
+
+            def log(message: Any, ns: int) -> None:
+                made.log(message, log_time=ns)
+                counts[topic] += 1
+            return log
+
+        people_log = channel(ch.SceneUpdateChannel, "/people")
+        if bundle.scenario.robot is not None:
+            robot_log = channel(ch.SceneUpdateChannel, "/robot")
+            tf_log = channel(ch.FrameTransformsChannel, "/tf")
+        event_log = channel(ch.LogChannel, "/events")
+
+        def log_event(event: Any) -> None:
+            ns = max(_ns(event.t), start)
+            event_log(m.Log(timestamp=scene.stamp(ns), level=m.LogLevel.Info, name=event.kind,
+                            message=f"agent {event.agent_id}: {event.kind} {event.detail}".strip()), ns)
+
+        channel(ch.SceneUpdateChannel, "/world")(_world_update(bundle, scene, start), start)
+        channel(ch.GridChannel, "/map")(_grid(bundle, scene, start), start)
+        channel(ch.SceneUpdateChannel, "/paths")(_paths_update(bundle, scene, start), start)
+        if bundle.fields:
+            channel(ch.SceneUpdateChannel, "/fields")(_fields_update(bundle, scene, start), start)
+
+        people = {a.id: scene.look(group_rgba(a.group), a.radius, PERSON_HEIGHT) for a in bundle.scenario.agents}
+        names = {a.id: f"agent{a.id}" for a in bundle.scenario.agents}
+        robot = bundle.scenario.robot
+        robot_look = None if robot is None else scene.look((0.15, 0.15, 0.15, 1.0), robot.radius, ROBOT_HEIGHT)
+        pending = iter(events)
+        event = next(pending, None)
+        shown: set[int] = set()
+        count = 0
+        frame = first
+        while frame is not None:
+            ns = _ns(frame.t)
+            while event is not None and _ns(event.t) <= ns:
+                log_event(event)
+                event = next(pending, None)
+            stamp = scene.stamp(ns)
+            ids = frame.ids.tolist()
+            try:
+                looks = [people[i] for i in ids]
+            except KeyError as exc:
+                raise FoxgloveExportError(f"{bundle.trajectories}: person {exc.args[0]} is not an agent of "
+                                          f"{bundle.path / 'scenario.yaml'}; simulate the bundle again") from None
+            bodies = scene.bodies(frame.x.tolist(), frame.y.tolist(), frame.yaw, looks, PERSON_HEIGHT)
+            entities = [m.SceneEntity(timestamp=stamp, frame_id=FRAME_ID, id=names[i], cylinders=[cylinder],
+                                      arrows=[arrow]) for i, (cylinder, arrow) in zip(ids, bodies)]
+            here = set(ids)
+            deletions = [m.SceneEntityDeletion(timestamp=stamp, type=m.SceneEntityDeletionType.MatchingId,
+                                               id=names[i]) for i in sorted(shown - here)]
+            shown = here
+            people_log(m.SceneUpdate(deletions=deletions, entities=entities), ns)
+            if frame.robot is not None and robot_look is not None:
+                rx, ry, _rvx, _rvy, ryaw = (float(v) for v in frame.robot)
+                [(cylinder, arrow)] = scene.bodies([rx], [ry], np.array([ryaw]), [robot_look], ROBOT_HEIGHT)
+                robot_log(m.SceneUpdate(entities=[m.SceneEntity(timestamp=stamp, frame_id=FRAME_ID, id="robot",
+                                                                cylinders=[cylinder], arrows=[arrow])]), ns)
+                tf_log(m.FrameTransforms(transforms=[m.FrameTransform(
+                    timestamp=stamp, parent_frame_id=FRAME_ID, child_frame_id=ROBOT_FRAME,
+                    translation=m.Vector3(x=rx, y=ry, z=0.0),
+                    rotation=m.Quaternion(x=0.0, y=0.0, z=math.sin(ryaw / 2), w=math.cos(ryaw / 2)))]), ns)
+            count += 1
+            frame = next(frames, None)
+        while event is not None:
+            log_event(event)
+            event = next(pending, None)
+    finally:
+        writer.close()
+    return count, {topic: n for topic, n in counts.items() if n}
