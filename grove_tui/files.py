@@ -70,6 +70,7 @@ def atomic_file(path: str | os.PathLike[str]) -> Iterator[Path]:
     os.close(fd)
     tmp_path = Path(tmp)
     try:
+        _usual_mode(tmp_path, directory=False)
         yield tmp_path
         with open(tmp_path, "rb") as handle:
             os.fsync(handle.fileno())
@@ -78,6 +79,23 @@ def atomic_file(path: str | os.PathLike[str]) -> Iterator[Path]:
         with contextlib.suppress(FileNotFoundError):
             tmp_path.unlink()
         raise
+
+
+def _umask() -> int:
+    # Read without a window where another thread could create files under a zero umask.
+    try:
+        with open("/proc/self/status", encoding="ascii") as status:
+            for line in status:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError):
+        pass
+    return 0o022
+
+
+def _usual_mode(path: Path, directory: bool) -> None:
+    """mkstemp/mkdtemp make private 0600/0700 entries; outputs get what `open`/`mkdir` would give."""
+    os.chmod(path, (0o777 if directory else 0o666) & ~_umask())
 
 
 def absolute_path(path: str | os.PathLike[str]) -> Path:
@@ -162,6 +180,7 @@ def atomic_directory(path: str | os.PathLike[str], *, owned: OwnedTest, what: st
     except OSError as exc:
         raise OutputError(f"{target}: cannot write there: {exc.strerror}") from None
     try:
+        _usual_mode(staging, directory=True)
         yield staging
         check_output_dir(target, owned=owned, what=what, overwrite=overwrite, flag=flag)
         _swap_in(staging, target)

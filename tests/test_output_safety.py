@@ -219,3 +219,14 @@ def test_a_folder_that_changed_under_the_staging_is_not_replaced(tmp_path):
             (target / "precious.txt").write_text("appeared meanwhile")
     assert (target / "precious.txt").read_text() == "appeared meanwhile"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+
+
+def test_outputs_get_the_usual_permissions_not_private_temp_ones(tmp_path, result):
+    previous = os.umask(0o022)
+    try:
+        bundle = write_bundle(result, tmp_path / "bundle")
+        write_bytes_atomic(tmp_path / "file.bin", b"x")
+    finally:
+        os.umask(previous)
+    assert (bundle.stat().st_mode & 0o777) == 0o755
+    assert ((tmp_path / "file.bin").stat().st_mode & 0o777) == 0o644
