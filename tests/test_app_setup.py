@@ -194,3 +194,38 @@ async def test_history_is_saved_between_sessions(tmp_path):
         await pilot.press("escape")
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="back to setup")
     assert load_history(10) == ["people wait in the lobby"]
+
+
+async def test_ctrl_w_opens_worlds_from_the_prompt_without_deleting_a_word(tmp_path):
+    app = make_app(tmp_path)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await setup_ready(pilot)
+        prompt = screen.query_one(PromptInput)
+        prompt.focus()
+        await pilot.press(*"six nurses walk")
+        # the footer keeps the screen's keys while the prompt (an Input) has focus
+        footer_keys = {entry.binding.id for entry in screen.active_bindings.values() if entry.binding.show}
+        assert {"setup.worlds", "setup.presets", "setup.generate"} <= footer_keys
+        await pilot.press("ctrl+w")
+        await wait_until(pilot, lambda: screen.focused is screen.query_one("#worlds"), what="worlds focused")
+        assert prompt.value == "six nurses walk"
+
+
+async def test_help_scrolls_by_keyboard_at_80x24_and_lists_the_screen_keys_first(tmp_path):
+    from grove_tui.tui.screens.help import keys_table
+
+    app = make_app(tmp_path)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await setup_ready(pilot)
+        table = keys_table(screen)
+        first_row = table.splitlines()[2]
+        assert "setup." in first_row, first_row
+        await pilot.press("f1")
+        await wait_until(pilot, lambda: isinstance(app.screen, HelpScreen), what="help")
+        scroll = app.screen.query_one("#help-scroll")
+        await wait_until(pilot, lambda: scroll.max_scroll_y > 0, what="help taller than the screen")
+        for key, moved in (("pagedown", True), ("home", False), ("j", True), ("k", False), ("end", True)):
+            await pilot.press(key)
+            await pilot.pause()
+            assert (scroll.scroll_y > 0) is moved, key
+        assert scroll.scroll_y == scroll.max_scroll_y

@@ -6,7 +6,7 @@ import inspect
 
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Vertical
+from textual.containers import Vertical, VerticalScroll
 from textual.dom import DOMNode
 from textual.screen import ModalScreen, Screen
 from textual.widget import Widget
@@ -23,12 +23,27 @@ def help_text(node: DOMNode | None) -> str:
     return ""
 
 
+def _identities(node: DOMNode) -> set[tuple[str, str]]:
+    return {(b.id or "", b.action) for bindings in node._bindings.key_to_bindings.values()  # noqa: SLF001
+            for b in bindings}
+
+
+def _screen_first(screen: Screen[object]) -> list[Binding]:
+    """The screen's own keys first (what the user came for), then the focused widget's, then the app's."""
+    own, app_wide = _identities(screen), _identities(screen.app)
+
+    def rank(binding: Binding) -> int:
+        identity = (binding.id or "", binding.action)
+        return 0 if identity in own else 2 if identity in app_wide else 1
+
+    return sorted((entry.binding for entry in screen.active_bindings.values()), key=rank)
+
+
 def keys_table(screen: Screen[object]) -> str:
-    """Every active binding of the screen (focused widget first), as Footer sees them."""
+    """Every active binding of the screen, hidden ones included (screen keys first)."""
     rows = []
     seen: set[str] = set()
-    for active in screen.active_bindings.values():
-        binding = active.binding
+    for binding in _screen_first(screen):
         ident = binding.id or binding.action
         if not binding.description or ident in seen:
             continue
@@ -37,6 +52,16 @@ def keys_table(screen: Screen[object]) -> str:
     if not rows:
         return ""
     return "| Key | Action | Binding id |\n| :- | :- | :- |\n" + "\n".join(rows)
+
+
+class HelpScroll(VerticalScroll, can_focus=True):
+    """The help page; scrolls with the usual keys plus vi's j/k and space, which also work over SSH."""
+
+    BINDINGS = [
+        Binding("j", "scroll_down", "Scroll down", show=False, id="help.down"),
+        Binding("k", "scroll_up", "Scroll up", show=False, id="help.up"),
+        Binding("space", "page_down", "Page down", show=False, id="help.page_down"),
+    ]
 
 
 class HelpScreen(ModalScreen[None]):
@@ -60,8 +85,8 @@ class HelpScreen(ModalScreen[None]):
             parts.append("## Keys\n\n" + keys)
         parts.append("**ctrl+p** opens the command palette (every action by name). Remap a key in `config.yaml` "
                      "under `keymap:` with its binding id. **Escape** closes help.")
-        with Vertical(id="help-dialog"):
+        with Vertical(id="help-dialog"), HelpScroll(id="help-scroll"):
             yield Markdown("\n\n".join(parts), id="help-text")
 
     def on_mount(self) -> None:
-        self.query_one("#help-text").focus()
+        self.query_one("#help-scroll").focus()

@@ -29,11 +29,16 @@ model writes), type a prompt and press **Enter** or **ctrl+g** to generate. The 
 which GGUF file serves each role and whether it is loaded yet.
 """
 
+    # priority: the prompt (an Input) has focus by default and binds ctrl+w to "delete word"; the
+    # screen's keys must win there too, and stay in the footer while the prompt is focused.
     BINDINGS = [
-        Binding("ctrl+g", "generate", "Generate", id="setup.generate", tooltip="Generate a scenario from the prompt"),
-        Binding("ctrl+w", "focus('worlds')", "Worlds", id="setup.worlds", tooltip="Choose the world"),
-        Binding("ctrl+r", "focus('presets')", "Presets", id="setup.presets", tooltip="Choose the preset"),
-        Binding("ctrl+l", "focus('prompt')", "Prompt", id="setup.prompt", tooltip="Type the prompt", show=False),
+        Binding("ctrl+g", "generate", "Generate", id="setup.generate", tooltip="Generate a scenario from the prompt",
+                priority=True),
+        Binding("ctrl+w", "focus('worlds')", "Worlds", id="setup.worlds", tooltip="Choose the world", priority=True),
+        Binding("ctrl+r", "focus('presets')", "Presets", id="setup.presets", tooltip="Choose the preset",
+                priority=True),
+        Binding("ctrl+l", "focus('prompt')", "Prompt", id="setup.prompt", tooltip="Type the prompt", show=False,
+                priority=True),
     ]
 
     @property
