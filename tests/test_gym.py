@@ -35,14 +35,15 @@ def bundle(tmp_path_factory) -> Path:
     return build_hospital_bundle(tmp_path_factory.mktemp("gym") / "bundle")
 
 
-def with_robot(source: Path, out: Path, start, goal) -> Path:
-    """A copy of `source` whose robot goes straight from `start` to `goal`."""
+def with_robot(source: Path, out: Path, start, goal, via=()) -> Path:
+    """A copy of `source` whose robot's planned path goes from `start` through `via` to `goal`."""
     import shutil
 
     shutil.copytree(source, out)
     scenario = Scenario.load(out / "scenario.yaml")
     start, goal = tuple(float(v) for v in start), tuple(float(v) for v in goal)
-    robot = dataclasses.replace(scenario.robot, start=start, goal=goal, path=(start, goal))
+    path = (start, *(tuple(float(v) for v in p) for p in via), goal)
+    robot = dataclasses.replace(scenario.robot, start=start, goal=goal, path=path)
     dataclasses.replace(scenario, robot=robot).save(out / "scenario.yaml")
     return out
 
@@ -91,6 +92,27 @@ def test_observation_layout_and_frame(bundle):
     # agent 1 is Surprised, the others Regular: one 1 per row in the behavior columns
     assert np.all(people[:, 7:].sum(axis=1) == 1.0)
     assert info["metrics"]["minimum_distance_to_target"] == pytest.approx(obs["goal"][2], abs=1e-4)
+
+
+def test_waypoint_is_the_next_point_of_the_planned_path(bundle, tmp_path):
+    # a path through the free part of the corridor, below the people
+    out = with_robot(bundle, tmp_path / "path", (28.0, 4.0), (31.0, 2.5), via=[(28.0, 3.0), (29.5, 3.0)])
+    env = SocialNavEnv(out, kinematics="holonomic")
+    obs, _ = env.reset(seed=0)
+    path = np.asarray(Scenario.load(out / "scenario.yaml").robot.path)
+    start = path[0]
+    assert obs["waypoint"][:2] == pytest.approx(path[1] - start, abs=1e-4)
+    # drive onto the first path point: the waypoint moves on to the second, never back
+    seen = []
+    for _ in range(100):
+        target = obs["waypoint"][:2]
+        obs, _, terminated, truncated, _ = env.step(target / max(np.hypot(*target), 1e-6) * 0.8)
+        seen.append(env.waypoint_index)
+        if env.waypoint_index == 2 or terminated or truncated:
+            break
+    assert seen[-1] == 2 and seen == sorted(seen)
+    position = env.sim.crowd.robot_pos
+    assert obs["waypoint"][:2] == pytest.approx(path[2] - position, abs=1e-4)
 
 
 def test_occupancy_patch_sees_the_wall_ahead(bundle, tmp_path):

@@ -1,16 +1,16 @@
 """The scripted baseline: follow the planned path, avoid people with a sampled velocity obstacle.
 
 Each control period the policy
-1. takes the next waypoint of the robot's planned path (the first one more than WAYPOINT_REACHED
-   away, never going back), and wants to drive straight at it at full speed;
+1. takes the next waypoint of the robot's planned path (observation["waypoint"]) and wants to drive
+   straight at it at full speed;
 2. samples candidate velocities (speeds x headings around the wanted one) and drops every candidate
    inside the velocity obstacle of a person it observes: the candidate, relative to the person's
    velocity, would bring the two bodies (plus SAFETY_MARGIN) into contact within HORIZON seconds;
    or whose straight motion would bring the robot's body within WALL_MARGIN of a wall within
    WALL_LOOKAHEAD (unless it moves away from the wall);
 3. drives the admissible candidate closest to the wanted velocity, or stops when none is.
-It reads the observation (people, goal) and the environment's planned path and pose, and works
-for both kinematics (unicycle: turn toward the chosen velocity, slow down while the turn is large).
+It reads the observation (waypoint, people) and, from the environment, the robot's pose, size and the
+world's walls; it works for both kinematics (unicycle: turn toward the chosen velocity, slow down while the turn is large).
 """
 
 from __future__ import annotations
@@ -20,7 +20,6 @@ from typing import Any
 
 import numpy as np
 
-WAYPOINT_REACHED = 0.4  # metres: a waypoint this close counts as passed
 HORIZON = 2.0  # seconds a chosen velocity must stay collision-free
 SAFETY_MARGIN = 0.15  # metres added to the two radii
 CLOSE_IN = 0.1  # metres: how much closer a candidate may bring the robot to someone already within reach
@@ -37,25 +36,13 @@ class PathFollowingVOPolicy:
 
     def __init__(self, env: Any) -> None:
         self.env = env.unwrapped if hasattr(env, "unwrapped") else env
-        self._path_id: int | None = None
-        self._next = 1
-
-    def _waypoint(self, position: np.ndarray) -> np.ndarray:
-        path = self.env.path
-        if self._path_id != id(path):
-            # a new episode: start again from the path's first leg
-            self._path_id = id(path)
-            self._next = 1 if len(path) > 1 else 0
-        while self._next < len(path) - 1 and np.hypot(*(path[self._next] - position)) <= WAYPOINT_REACHED:
-            self._next += 1
-        return path[self._next]
 
     def act(self, observation: dict[str, np.ndarray]) -> np.ndarray:
         env = self.env
         position = np.asarray(env.sim.crowd.robot_pos, dtype=np.float64)
-        frame = env._frame()
+        frame = env.observation_frame()
         max_speed = float(env.robot_max_speed)
-        target = frame @ (self._waypoint(position) - position)  # in the observation frame
+        target = observation["waypoint"][:2].astype(np.float64)  # in the observation frame
         distance = float(np.hypot(*target))
         wanted_speed = min(max_speed, distance / env.control_period)
         wanted_angle = math.atan2(target[1], target[0]) if distance > 1e-9 else 0.0

@@ -7,6 +7,9 @@ for one control period.
 Observation (a Dict; all float32 except the patch; frame as in observation.py):
     robot        (7,)    vx, vy (frame), cos(yaw), sin(yaw) (world), radius, max speed, share of time left
     goal         (3,)    x, y of the goal (frame), distance to it
+    waypoint     (3,)    x, y (frame) and distance of the next point of the robot's planned path (Theta* on
+                         the scenario's grid): the next one farther than WAYPOINT_REACHED, never going
+                         back; the global planner's subgoal, as arena-rosnav's training set-ups give it
     pedestrians  (K, 13) the K nearest people within sensor range, nearest first; columns
                          present, x, y, vx, vy, radius, gap (centre distance minus both radii), then the
                          one-hot behavior (Regular, Impassive, Surprised, Scared, Curious, Threatening);
@@ -48,6 +51,7 @@ GOAL_TOLERANCE = 0.6
 TIME_LIMIT_FACTOR = 2.0
 TIME_LIMIT_SLACK = 10.0
 TIME_LIMIT_FLOOR = 20.0
+WAYPOINT_REACHED = 0.5  # metres: a path point this close counts as passed
 POSITION_LIMIT = 1.0e4  # metres; observation bounds, far beyond any world
 
 
@@ -120,6 +124,7 @@ class SocialNavEnv(gymnasium.Env):
         self.observation_space = spaces.Dict({
             "robot": spaces.Box(-big, big, shape=(7,), dtype=np.float32),
             "goal": spaces.Box(-big, big, shape=(3,), dtype=np.float32),
+            "waypoint": spaces.Box(-big, big, shape=(3,), dtype=np.float32),
             "pedestrians": spaces.Box(-big, big, shape=(k, len(PEDESTRIAN_COLUMNS)), dtype=np.float32),
             "occupancy": spaces.Box(0, 1, shape=(cells, cells), dtype=np.uint8),
         })
@@ -157,13 +162,14 @@ class SocialNavEnv(gymnasium.Env):
             max(TIME_LIMIT_FLOOR, TIME_LIMIT_FACTOR * _path_length(self.path) / max(self.robot_max_speed, 1e-6)
                 + TIME_LIMIT_SLACK)
         self.distance_to_goal = self._goal_distance()
+        self.waypoint_index = 1 if len(self.path) > 1 else 0
         self.episode_steps = 0
         self.episode_return = 0.0
         self.outcome = ""
         self.episode_actions = []
-        self._history = _History(capacity=int(math.ceil(self.time_limit / self.control_period)) + 2,
+        self.history = _History(capacity=int(math.ceil(self.time_limit / self.control_period)) + 2,
                                  people=len(self.current.scenario.agents))
-        self._history.append(self.sim, self._robot_pose())
+        self.history.append(self.sim, self._robot_pose())
         self._metrics: dict[str, float] = {}
         return self._observation(), self._info({})
 
@@ -204,7 +210,7 @@ class SocialNavEnv(gymnasium.Env):
         self.outcome = "collision" if collision else "goal" if reached else "timeout" if timed_out else ""
         terminated = bool(collision or reached)
         truncated = bool(timed_out)
-        self._history.append(self.sim, self._robot_pose())
+        self.history.append(self.sim, self._robot_pose())
         info = self._info(terms, collision=collision)
         return self._observation(), reward, terminated, truncated, info
 
@@ -219,7 +225,7 @@ class SocialNavEnv(gymnasium.Env):
         pos = self.sim.crowd.robot_pos
         return float(math.hypot(self.goal[0] - pos[0], self.goal[1] - pos[1]))
 
-    def _frame(self) -> np.ndarray:
+    def observation_frame(self) -> np.ndarray:
         return rotation(self.heading) if self.kinematics == "unicycle" else np.eye(2)
 
     def _contact(self) -> tuple[float, str]:
@@ -254,13 +260,20 @@ class SocialNavEnv(gymnasium.Env):
 
     def _observation(self) -> dict[str, np.ndarray]:
         crowd = self.sim.crowd
-        frame = self._frame()
+        frame = self.observation_frame()
         pos = crowd.robot_pos
         vel = frame @ crowd.robot_vel
         robot = np.array([vel[0], vel[1], math.cos(self.heading), math.sin(self.heading), self.robot_radius,
                           self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
         goal_xy = frame @ (self.goal - pos)
         goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
+        path = self.path
+        while self.waypoint_index < len(path) - 1 and \
+                math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED:
+            self.waypoint_index += 1
+        offset = path[self.waypoint_index] - pos
+        waypoint_xy = frame @ offset
+        waypoint = np.array([waypoint_xy[0], waypoint_xy[1], math.hypot(*offset)], dtype=np.float32)
         cfg = self.obs_config
         people = nearest_pedestrians(pos, self.robot_radius, frame, crowd.pos, crowd.vel, crowd.radius,
                                      np.asarray(crowd.active, dtype=bool), self._one_hot[self.scenario_index],
@@ -268,6 +281,7 @@ class SocialNavEnv(gymnasium.Env):
         patch = occupancy_patch(self.current.patch_grid, pos, frame, cfg.patch_cells, cfg.patch_resolution)
         limit = np.float32(POSITION_LIMIT)
         return {"robot": np.clip(robot, -limit, limit), "goal": np.clip(goal, -limit, limit),
+                "waypoint": np.clip(waypoint, -limit, limit),
                 "pedestrians": np.clip(people, -limit, limit), "occupancy": patch}
 
     def _info(self, terms: dict[str, float], collision: str = "") -> dict[str, Any]:
@@ -290,7 +304,7 @@ class SocialNavEnv(gymnasium.Env):
     def episode_metrics(self) -> dict[str, float]:
         """HuNavSim evaluator's robot metrics of the episode so far, one sample per control period."""
         scenario = self.current.scenario
-        traj = self._history.trajectories([a.id for a in sorted(scenario.agents, key=lambda a: a.id)])
+        traj = self.history.trajectories([a.id for a in sorted(scenario.agents, key=lambda a: a.id)])
         radii = [a.radius for a in scenario.agents]
         return robot_metrics(traj, robot_radius=self.robot_radius,
                              person_radius=max(radii) if radii else 0.35, goal=tuple(self.goal),

@@ -48,7 +48,7 @@ def record_episode(env: Any, out_dir: str | os.PathLike[str], overwrite: bool = 
     """Write `env`'s current episode (a SocialNavEnv after reset) as a bundle at `out_dir`, atomically."""
     source: Path = env.current.bundle_dir
     sim = env.sim
-    history = env._history
+    history = env.history
     xy = history.robot[: history.size, :2]
     robot = dataclasses.replace(env.current.scenario.robot, path=driven_path(xy))
     scenario = dataclasses.replace(env.current.scenario, robot=robot)
