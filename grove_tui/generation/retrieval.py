@@ -33,7 +33,7 @@ import yaml
 
 from grove_tui import paths
 from grove_tui.cpu import free_cores
-from grove_tui.errors import GroveError
+from grove_tui.errors import GroveError, RetrievalError
 from grove_tui.generation.node_docs import (
     RETRIEVAL_PRESETS,
     NodeDatabase,
@@ -51,10 +51,6 @@ INDEX_FORMAT = "2"
 EMBEDDING_FUNCTION_NAME = "grove-packaged-minilm"
 LEXICAL_WEIGHT = 0.25
 PRIORITY_BONUS = 0.15
-
-
-class RetrievalError(GroveError):
-    """Retrieval cannot run: the embedding model, node database or index is unusable."""
 
 
 @dataclass(frozen=True)
