@@ -29,7 +29,7 @@ def models() -> None:
 @click.pass_context
 def list_command(ctx: click.Context) -> None:
     """Show every model found (models dir, embedded, chosen paths) and the role using it."""
-    from grove_tui.paths import models_dir
+    from grove_tui.settings import models_dir
     from grove_tui.llm.registry import list_models
 
     options = (ctx.find_root().obj or {}) if ctx.find_root().obj is not None else {}

@@ -15,7 +15,8 @@ from typing import Any
 import yaml
 
 from grove_tui.errors import GenerationError, PresetError, PromptError
-from grove_tui.paths import config_dir, presets_dir
+from grove_tui.paths import presets_dir
+from grove_tui.settings import config_dir
 
 
 GOAL_SAMPLING = ("spread", "sequential", "exit")

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.cpu import free_cores
-from grove_tui.paths import cache_dir
+from grove_tui.settings import cache_dir, load_settings
 from grove_tui.llm.chat_template import Sampling, default_sampling
 from grove_tui.errors import Cancelled, ModelError
 from grove_tui.llm.gguf_info import GGUFInfo, check_loadable, read_gguf_info
@@ -45,11 +45,9 @@ __all__ = ["Generation", "Cancelled", "LocalLLM", "ModelError"]
 
 
 def default_threads() -> int:
-    """Cores free right now (GROVE_LLM_THREADS overrides); see engine.cpu for why not the load average."""
-    override = os.environ.get("GROVE_LLM_THREADS")
-    if override:
-        return max(1, int(override))
-    return free_cores()
+    """Cores free right now (GROVE_LLM_THREADS overrides); see cpu.py for why not the load average."""
+    override = load_settings().llm_threads
+    return override if override is not None else free_cores()
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.errors import GenerationError, GroveError, PromptError
-from grove_tui.paths import data_dir
+from grove_tui.settings import data_dir
 
 LLMFactory = Callable[[str, Any], Any]  # (role, ModelInfo) -> LocalLLM-like
 RetrieverFactory = Callable[[], Any]
