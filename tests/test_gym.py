@@ -25,7 +25,7 @@ import grove_tui.gym  # noqa: E402,F401  (registers grove/SocialNav-v0)
 from grove_tui.analysis.metrics import Trajectories  # noqa: E402
 from grove_tui.gym import ENV_ID, GymError, RewardWeights, SocialNavEnv  # noqa: E402
 from grove_tui.gym.baseline import PathFollowingVOPolicy  # noqa: E402
-from grove_tui.gym.observation import PEDESTRIAN_COLUMNS, wall_distance  # noqa: E402
+from grove_tui.gym.observation import PEDESTRIAN_COLUMNS, segment_clear, wall_distance  # noqa: E402
 from grove_tui.scenario.bundle import load_bundle  # noqa: E402
 from grove_tui.scenario.model import Scenario  # noqa: E402
 
@@ -94,25 +94,38 @@ def test_observation_layout_and_frame(bundle):
     assert info["metrics"]["minimum_distance_to_target"] == pytest.approx(obs["goal"][2], abs=1e-4)
 
 
-def test_waypoint_is_the_next_point_of_the_planned_path(bundle, tmp_path):
-    # a path through the free part of the corridor, below the people
-    out = with_robot(bundle, tmp_path / "path", (28.0, 4.0), (31.0, 2.5), via=[(28.0, 3.0), (29.5, 3.0)])
-    env = SocialNavEnv(out, kinematics="holonomic")
+def test_segment_clear_needs_room_for_the_body():
+    walls = np.array([[0.0, 0.0, 4.0, 0.0]])  # one wall along the x axis
+    assert segment_clear(np.array([0.0, 1.0]), np.array([4.0, 1.0]), walls, 0.3)
+    assert not segment_clear(np.array([0.0, 1.0]), np.array([4.0, 0.2]), walls, 0.3)  # ends too close
+    assert not segment_clear(np.array([2.0, 1.0]), np.array([2.0, -1.0]), walls, 0.3)  # crosses it
+    assert segment_clear(np.array([5.0, 1.0]), np.array([5.0, -1.0]), walls, 0.3)  # goes round its end
+
+
+def test_waypoint_is_the_farthest_path_point_in_straight_reach(bundle, tmp_path):
+    env = SocialNavEnv(bundle, kinematics="holonomic")
+    env.reset(seed=0)
+    walls = env.current.walls
+    # free corridor below the start: every point in straight reach, the subgoal is the last one
+    free = with_robot(bundle, tmp_path / "free", (28.0, 4.0), (31.0, 2.5), via=[(28.0, 3.0), (29.5, 3.0)])
+    obs, _ = SocialNavEnv(free, kinematics="holonomic").reset(seed=0)
+    assert obs["waypoint"][:2] == pytest.approx(np.array([31.0, 2.5]) - (28.0, 4.0), abs=1e-4)
+    # a path that turns behind the wall nearest to the start: the subgoal stays on this side
+    start = np.array([28.0, 4.0])
+    a, ab = walls[:, 0:2], walls[:, 2:4] - walls[:, 0:2]
+    t = np.clip(((start - a) * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-12), 0, 1)
+    points = a + ab * t[:, None]
+    k = int(np.argmin(np.hypot(*(points - start).T)))
+    wall_point = points[k]
+    inward = (start - wall_point) / np.hypot(*(start - wall_point))
+    near_side = wall_point + 0.6 * inward
+    far_side = wall_point - 0.6 * inward
+    assert not segment_clear(start, far_side, walls, 0.3)
+    turning = with_robot(bundle, tmp_path / "turning", start, far_side, via=[near_side])
+    env = SocialNavEnv(turning, kinematics="holonomic")
     obs, _ = env.reset(seed=0)
-    path = np.asarray(Scenario.load(out / "scenario.yaml").robot.path)
-    start = path[0]
-    assert obs["waypoint"][:2] == pytest.approx(path[1] - start, abs=1e-4)
-    # drive onto the first path point: the waypoint moves on to the second, never back
-    seen = []
-    for _ in range(100):
-        target = obs["waypoint"][:2]
-        obs, _, terminated, truncated, _ = env.step(target / max(np.hypot(*target), 1e-6) * 0.8)
-        seen.append(env.waypoint_index)
-        if env.waypoint_index == 2 or terminated or truncated:
-            break
-    assert seen[-1] == 2 and seen == sorted(seen)
-    position = env.sim.crowd.robot_pos
-    assert obs["waypoint"][:2] == pytest.approx(path[2] - position, abs=1e-4)
+    assert obs["waypoint"][:2] == pytest.approx(near_side - start, abs=1e-4)
+    assert env.waypoint_index == 1
 
 
 def test_occupancy_patch_sees_the_wall_ahead(bundle, tmp_path):

@@ -3,14 +3,17 @@
 Each control period the policy
 1. takes the next waypoint of the robot's planned path (observation["waypoint"]) and wants to drive
    straight at it at full speed;
-2. samples candidate velocities (speeds x headings around the wanted one) and drops every candidate
-   inside the velocity obstacle of a person it observes: the candidate, relative to the person's
-   velocity, would bring the two bodies (plus SAFETY_MARGIN) into contact within HORIZON seconds;
+2. samples candidate velocities (speeds x headings all around the wanted one, and standing still)
+   and drops every candidate inside the velocity obstacle of a person it observes: the candidate,
+   relative to the person's velocity, would bring the two bodies (plus SAFETY_MARGIN) into contact
+   within HORIZON seconds;
    or whose straight motion would bring the robot's body within WALL_MARGIN of a wall within
    WALL_LOOKAHEAD (unless it moves away from the wall);
-3. drives the admissible candidate closest to the wanted velocity, or stops when none is.
+3. drives the admissible candidate closest to the wanted velocity; when none is admissible, the one
+   that puts the contact off longest (backing away from someone walking at the robot).
 It reads the observation (waypoint, people) and, from the environment, the robot's pose, size and the
-world's walls; it works for both kinematics (unicycle: turn toward the chosen velocity, slow down while the turn is large).
+world's walls. Holonomic candidates are velocities; unicycle candidates are (v, w) pairs, each judged
+by the velocity the robot has once it has turned for one control period.
 """
 
 from __future__ import annotations
@@ -24,11 +27,13 @@ HORIZON = 2.0  # seconds a chosen velocity must stay collision-free
 SAFETY_MARGIN = 0.15  # metres added to the two radii
 CLOSE_IN = 0.1  # metres: how much closer a candidate may bring the robot to someone already within reach
 CONTACT_MARGIN = 0.05  # metres: never plan to come nearer than this to a body
+ESCAPE_LOOKAHEAD = 0.5  # seconds: when cornered, the room to everyone is judged this far ahead
 WALL_MARGIN = 0.05  # metres of air kept between the robot's body and a wall
 WALL_LOOKAHEAD = (0.25, 0.5)  # seconds ahead at which a candidate's position is checked against walls
 SPEED_FRACTIONS = (1.0, 0.75, 0.5, 0.25)
-HEADING_OFFSETS = np.radians([0, 15, -15, 30, -30, 45, -45, 60, -60, 90, -90])
-TURN_GAIN = 2.0  # rad/s of turn per radian of heading error (unicycle)
+HEADING_OFFSETS = np.radians([0, 15, -15, 30, -30, 45, -45, 60, -60, 90, -90, 120, -120, 150, -150, 180])
+TURN_STEPS = 7  # unicycle: turn rates sampled evenly in [-max, max]
+FACING_WEIGHT = 0.2  # unicycle: cost (m/s) per radian left between the heading and the wanted direction
 
 
 class PathFollowingVOPolicy:
@@ -54,52 +59,77 @@ class PathFollowingVOPolicy:
         ped_vel = people[present, 3:5].astype(np.float64)
         body = people[present, 5].astype(np.float64) + env.robot_radius
 
-        angles = wanted_angle + np.repeat(HEADING_OFFSETS[None, :], len(SPEED_FRACTIONS), axis=0).ravel()
-        speeds = wanted_speed * np.repeat(np.asarray(SPEED_FRACTIONS), len(HEADING_OFFSETS))
-        candidates = speeds[:, None] * np.column_stack([np.cos(angles), np.sin(angles)])  # frame velocities
-        safe = ~_near_walls(candidates @ frame, position, env.current.walls, env.robot_radius + WALL_MARGIN)
-        best: np.ndarray | None = None
-        best_cost = math.inf
-        for candidate in candidates[safe]:
-            if rel_pos.shape[0] and _collides(candidate, rel_pos, ped_vel, body):
-                continue
-            cost = float(np.hypot(*(candidate - wanted)))
-            if cost < best_cost:
-                best, best_cost = candidate, cost
-        chosen = best if best is not None else np.zeros(2)
-        return self._command(chosen, max_speed)
-
-    def _command(self, velocity: np.ndarray, max_speed: float) -> np.ndarray:
-        env = self.env
         if env.kinematics == "holonomic":
-            return velocity.astype(np.float32)  # the holonomic frame is the world's
-        speed = float(np.hypot(*velocity))
-        if speed < 1e-9:
-            return np.zeros(2, dtype=np.float32)
-        error = math.atan2(velocity[1], velocity[0])  # the frame's x axis is the heading
-        turn = float(np.clip(TURN_GAIN * error, -env.max_angular_speed, env.max_angular_speed))
-        forward = min(max_speed, speed) * max(0.0, math.cos(error))
-        return np.array([forward, turn], dtype=np.float32)
+            angles = wanted_angle + np.tile(HEADING_OFFSETS, len(SPEED_FRACTIONS))
+            speeds = wanted_speed * np.repeat(np.asarray(SPEED_FRACTIONS), len(HEADING_OFFSETS))
+            velocities = speeds[:, None] * np.column_stack([np.cos(angles), np.sin(angles)])
+            velocities = np.vstack([velocities, np.zeros((1, 2))])  # standing still is a choice too
+            commands = velocities
+            cost = np.hypot(*(velocities - wanted).T)
+        else:
+            # (v, w) pairs; the robot moves along the heading it has turned to by the period's end
+            v = max_speed * np.repeat(np.asarray((*SPEED_FRACTIONS, 0.0)), TURN_STEPS)
+            w = np.tile(np.linspace(-env.max_angular_speed, env.max_angular_speed, TURN_STEPS), len(SPEED_FRACTIONS) + 1)
+            turned = w * env.control_period
+            velocities = v[:, None] * np.column_stack([np.cos(turned), np.sin(turned)])
+            commands = np.column_stack([v, w])
+            facing = np.abs((wanted_angle - turned + np.pi) % (2 * np.pi) - np.pi)
+            cost = np.hypot(*(velocities - wanted).T) + FACING_WEIGHT * facing
+        walls_ok = ~_near_walls(velocities @ frame, position, env.current.walls, env.robot_radius + WALL_MARGIN)
+        ttc = time_to_collision(velocities, rel_pos, ped_vel, body)
+        safe = walls_ok & (ttc > HORIZON)
+        if safe.any():
+            chosen = np.flatnonzero(safe)[np.argmin(cost[safe])]
+        else:
+            # Nothing is safe for the whole horizon: put off the contact longest; among equals (someone
+            # already close), keep the most room to everyone a moment from now, then stay near the plan.
+            pool = np.flatnonzero(walls_ok) if walls_ok.any() else np.arange(len(commands))
+            room = clearance_after(velocities[pool], rel_pos, ped_vel, body, ESCAPE_LOOKAHEAD)
+            chosen = pool[np.lexsort((cost[pool], -np.round(room, 2), -ttc[pool]))[0]]
+        return commands[chosen].astype(np.float32)
 
 
-def _collides(velocity: np.ndarray, rel_pos: np.ndarray, ped_vel: np.ndarray, body: np.ndarray) -> bool:
-    """Whether the robot at `velocity` comes within body + SAFETY_MARGIN of any person within HORIZON
-    seconds, everyone keeping their velocity (the velocity obstacle truncated at the horizon).
+def clearance_after(velocities: np.ndarray, rel_pos: np.ndarray, ped_vel: np.ndarray, body: np.ndarray,
+                    seconds: float) -> np.ndarray:
+    """(C,) smallest gap between the robot's body and anyone's after `seconds` at each velocity."""
+    if rel_pos.shape[0] == 0:
+        return np.full(velocities.shape[0], np.inf)
+    later = rel_pos[None, :, :] - (velocities[:, None, :] - ped_vel[None, :, :]) * seconds
+    return (np.hypot(later[..., 0], later[..., 1]) - body[None, :]).min(axis=1)
 
-    A person already within that reach (standing in a doorway, say) blocks only velocities that would
-    bring the robot CLOSE_IN closer or near contact: the robot may still skirt or back away.
+
+def time_to_collision(velocities: np.ndarray, rel_pos: np.ndarray, ped_vel: np.ndarray,
+                      body: np.ndarray) -> np.ndarray:
+    """(C,) seconds until the robot at each candidate velocity comes within body + SAFETY_MARGIN of a
+    person, everyone keeping their velocity (inf: never). This is the velocity obstacle: a candidate
+    is inside it when its time to collision is within the horizon.
+
+    A person already within that reach (standing in a doorway, say) counts as a collision now (0)
+    only for velocities that would bring the robot CLOSE_IN closer within the horizon, or near
+    contact: the robot may still skirt them or back away.
     """
-    v = velocity[None, :] - ped_vel  # robot's velocity relative to each person
-    # closest approach of p(t) = rel_pos - v t over t in [0, HORIZON]
-    vv = np.einsum("ij,ij->i", v, v)
-    t = np.clip(np.einsum("ij,ij->i", rel_pos, v) / np.where(vv > 1e-12, vv, 1.0), 0.0, HORIZON)
-    closest = rel_pos - v * t[:, None]
-    approach = np.hypot(closest[:, 0], closest[:, 1])
-    now = np.hypot(rel_pos[:, 0], rel_pos[:, 1])
-    reach = body + SAFETY_MARGIN
-    inside = now < reach
-    blocked_inside = (approach < now - CLOSE_IN) | (approach < body + CONTACT_MARGIN)
-    return bool(np.any(np.where(inside, blocked_inside, approach < reach)))
+    out = np.full(velocities.shape[0], np.inf)
+    if rel_pos.shape[0] == 0:
+        return out
+    v = velocities[:, None, :] - ped_vel[None, :, :]  # (C, P, 2) robot's velocity relative to each person
+    p = rel_pos[None, :, :]
+    reach = (body + SAFETY_MARGIN)[None, :]
+    a = np.einsum("cpk,cpk->cp", v, v)
+    b = np.einsum("cpk,cpk->cp", np.broadcast_to(p, v.shape), v)
+    c = np.einsum("pk,pk->p", rel_pos, rel_pos)[None, :] - reach ** 2
+    disc = b * b - a * c
+    moving = a > 1e-12
+    root = np.where(moving & (disc >= 0), (b - np.sqrt(np.maximum(disc, 0.0))) / np.where(moving, a, 1.0), np.inf)
+    ttc = np.where(root >= 0, root, np.inf)
+    inside = c < 0
+    if inside.any():
+        # closest approach within the horizon, for the people already within reach
+        t = np.clip(b / np.where(moving, a, 1.0), 0.0, HORIZON)
+        closest = np.hypot(*(p - v * t[:, :, None]).transpose(2, 0, 1))
+        now = np.hypot(rel_pos[:, 0], rel_pos[:, 1])[None, :]
+        pressing = (closest < now - CLOSE_IN) | (closest < body[None, :] + CONTACT_MARGIN)
+        ttc = np.where(inside, np.where(pressing, 0.0, np.inf), ttc)
+    return ttc.min(axis=1)
 
 
 def _segment_distances(points: np.ndarray, walls: np.ndarray) -> np.ndarray:

@@ -7,9 +7,12 @@ for one control period.
 Observation (a Dict; all float32 except the patch; frame as in observation.py):
     robot        (7,)    vx, vy (frame), cos(yaw), sin(yaw) (world), radius, max speed, share of time left
     goal         (3,)    x, y of the goal (frame), distance to it
-    waypoint     (3,)    x, y (frame) and distance of the next point of the robot's planned path (Theta* on
-                         the scenario's grid): the next one farther than WAYPOINT_REACHED, never going
-                         back; the global planner's subgoal, as arena-rosnav's training set-ups give it
+    waypoint     (3,)    x, y (frame) and distance of the robot's subgoal on its planned path (Theta* on the
+                         scenario's grid), as arena-rosnav's training set-ups give a global planner's
+                         subgoal: the path's points are passed in order, each once the robot is within
+                         WAYPOINT_REACHED of it or can drive straight to the next one (its body clear of
+                         every wall); when the robot was pushed where it cannot drive straight to that
+                         point, the subgoal is the latest earlier point it can reach straight
     pedestrians  (K, 13) the K nearest people within sensor range, nearest first; columns
                          present, x, y, vx, vy, radius, gap (centre distance minus both radii), then the
                          one-hot behavior (Regular, Impassive, Surprised, Scared, Curious, Threatening);
@@ -40,7 +43,7 @@ from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metric
 from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
 from grove_tui.gym.errors import GymError
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
-                                       occupancy_patch, rotation, wall_distance)
+                                       occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
 
 ENV_ID = "grove/SocialNav-v0"
@@ -267,11 +270,7 @@ class SocialNavEnv(gymnasium.Env):
                           self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
         goal_xy = frame @ (self.goal - pos)
         goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
-        path = self.path
-        while self.waypoint_index < len(path) - 1 and \
-                math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED:
-            self.waypoint_index += 1
-        offset = path[self.waypoint_index] - pos
+        offset = self._subgoal(pos) - pos
         waypoint_xy = frame @ offset
         waypoint = np.array([waypoint_xy[0], waypoint_xy[1], math.hypot(*offset)], dtype=np.float32)
         cfg = self.obs_config
@@ -283,6 +282,20 @@ class SocialNavEnv(gymnasium.Env):
         return {"robot": np.clip(robot, -limit, limit), "goal": np.clip(goal, -limit, limit),
                 "waypoint": np.clip(waypoint, -limit, limit),
                 "pedestrians": np.clip(people, -limit, limit), "occupancy": patch}
+
+    def _subgoal(self, pos: np.ndarray) -> np.ndarray:
+        path, walls = self.path, self.current.walls
+        clearance = self.robot_radius
+        while self.waypoint_index < len(path) - 1 and (
+                math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
+                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance)):
+            self.waypoint_index += 1
+        index = self.waypoint_index
+        if not segment_clear(pos, path[index], walls, clearance):
+            for earlier in range(index - 1, -1, -1):
+                if segment_clear(pos, path[earlier], walls, clearance):
+                    return path[earlier]
+        return path[index]
 
     def _info(self, terms: dict[str, float], collision: str = "") -> dict[str, Any]:
         done = bool(self.outcome)

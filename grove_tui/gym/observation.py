@@ -88,3 +88,36 @@ def wall_distance(point: np.ndarray, walls: np.ndarray) -> float:
     t = np.clip(np.einsum("ij,ij->i", point - a, ab) / np.where(length2 > 0, length2, 1.0), 0.0, 1.0)
     nearest = a + ab * t[:, None]
     return float(np.hypot(nearest[:, 0] - point[0], nearest[:, 1] - point[1]).min())
+
+
+def _point_segment_distances(points: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """(M,) distance from points[k] to segment a[k]-b[k]."""
+    ab = b - a
+    length2 = np.einsum("ij,ij->i", ab, ab)
+    t = np.clip(np.einsum("ij,ij->i", points - a, ab) / np.where(length2 > 0, length2, 1.0), 0.0, 1.0)
+    nearest = a + ab * t[:, None]
+    return np.hypot(nearest[:, 0] - points[:, 0], nearest[:, 1] - points[:, 1])
+
+
+def segment_clear(p: np.ndarray, q: np.ndarray, walls: np.ndarray, clearance: float) -> bool:
+    """Whether a body of radius `clearance` can move straight from p to q without touching a wall."""
+    if walls.shape[0] == 0:
+        return True
+    lo = np.minimum(p, q) - clearance
+    hi = np.maximum(p, q) + clearance
+    near = walls[(np.maximum(walls[:, 0], walls[:, 2]) >= lo[0]) & (np.minimum(walls[:, 0], walls[:, 2]) <= hi[0])
+                 & (np.maximum(walls[:, 1], walls[:, 3]) >= lo[1]) & (np.minimum(walls[:, 1], walls[:, 3]) <= hi[1])]
+    if near.shape[0] == 0:
+        return True
+    a, b = near[:, 0:2], near[:, 2:4]
+    m = near.shape[0]
+    pp, qq = np.broadcast_to(p, (m, 2)), np.broadcast_to(q, (m, 2))
+
+    def orient(u: np.ndarray, v: np.ndarray, w: np.ndarray) -> np.ndarray:
+        return (v[:, 0] - u[:, 0]) * (w[:, 1] - u[:, 1]) - (v[:, 1] - u[:, 1]) * (w[:, 0] - u[:, 0])
+
+    if np.any((orient(a, b, pp) * orient(a, b, qq) < 0) & (orient(pp, qq, a) * orient(pp, qq, b) < 0)):
+        return False  # the motion crosses a wall
+    distance = np.minimum.reduce([_point_segment_distances(pp, a, b), _point_segment_distances(qq, a, b),
+                                  _point_segment_distances(a, pp, qq), _point_segment_distances(b, pp, qq)])
+    return bool(distance.min() >= clearance)
