@@ -171,6 +171,20 @@ def test_same_seeds_and_actions_give_the_same_observations(bundle):
     assert not np.array_equal(changed[-1][0]["robot"], obs_d[len(changed)]["robot"])
 
 
+def test_start_jitter_moves_the_start_by_the_seed(bundle):
+    env = SocialNavEnv(bundle, start_jitter=0.5)
+    scenario_start = np.array(Scenario.load(bundle / "scenario.yaml").robot.start)
+    starts = {}
+    for seed in (0, 1, 2, 0):
+        env.reset(seed=seed)
+        start = env.sim.crowd.robot_pos
+        assert np.hypot(*(start - scenario_start)) <= 0.5 + 0.1
+        assert env.current.grid.is_free(*start) and env.path[0] == pytest.approx(start)
+        starts.setdefault(seed, []).append(tuple(np.round(start, 6)))
+    assert starts[0][0] == starts[0][1]  # the same seed, the same start
+    assert len({starts[0][0], starts[1][0], starts[2][0]}) == 3
+
+
 def test_collision_with_a_person_terminates(bundle):
     env = SocialNavEnv(bundle, kinematics="holonomic")
     obs, _ = env.reset(seed=0)
@@ -185,8 +199,9 @@ def test_collision_with_a_person_terminates(bundle):
     assert info["reward_terms"]["intimate"] < 0  # it came through the intimate space first
     assert obs["pedestrians"][0, 6] < 0.02 + 1e-6
     assert info["metrics"]["robot_on_person_collision"] + info["metrics"]["person_on_robot_collision"] >= 1
-    with pytest.raises(GymError, match="reset"):
+    with pytest.raises(GymError, match="after the episode ended") as caught:
         env.step([0.0, 0.0])
+    assert "reset()" in caught.value.hint and caught.value.exit_code == 2
 
 
 def test_driving_into_a_wall_terminates(bundle):

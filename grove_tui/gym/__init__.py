@@ -6,12 +6,13 @@ bundles=[...])` works, also inside the worker processes of gymnasium.vector.Asyn
 
 from __future__ import annotations
 
-from grove_tui.gym.errors import GymError
+from grove_tui.errors import GymError
 
 try:
     import gymnasium
 except ImportError:  # the extra is optional; say how to get it instead of a bare ModuleNotFoundError
-    raise GymError("grove_tui.gym needs gymnasium", "install the extra: pip install 'grove-tui[gym]'") from None
+    raise GymError("grove_tui.gym needs gymnasium",
+                   hint="install the extra: pip install 'grove-tui[gym]'") from None
 
 from grove_tui.gym.config import BEHAVIORS, ObservationConfig, RewardWeights  # noqa: E402
 from grove_tui.gym.env import ENV_ID, SocialNavEnv  # noqa: E402
@@ -30,7 +31,7 @@ def register_rllib(name: str = ENV_ID) -> str:
     try:
         from ray.tune.registry import register_env
     except ImportError:
-        raise GymError("Ray is not installed", "pip install 'ray[rllib]' to train with RLlib") from None
+        raise GymError("Ray is not installed", hint="pip install 'ray[rllib]' to train with RLlib") from None
     register_env(name, lambda env_config: SocialNavEnv(**dict(env_config)))
     return name
 

@@ -69,7 +69,8 @@ class PathFollowingVOPolicy:
         else:
             # (v, w) pairs; the robot moves along the heading it has turned to by the period's end
             v = max_speed * np.repeat(np.asarray((*SPEED_FRACTIONS, 0.0)), TURN_STEPS)
-            w = np.tile(np.linspace(-env.max_angular_speed, env.max_angular_speed, TURN_STEPS), len(SPEED_FRACTIONS) + 1)
+            rates = np.linspace(-env.max_angular_speed, env.max_angular_speed, TURN_STEPS)
+            w = np.tile(rates, len(SPEED_FRACTIONS) + 1)
             turned = w * env.control_period
             velocities = v[:, None] * np.column_stack([np.cos(turned), np.sin(turned)])
             commands = np.column_stack([v, w])

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, fields
 
 from grove_tui.analysis.metrics import INTIMATE, PERSONAL
-from grove_tui.gym.errors import GymError
+from grove_tui.errors import GymError
 
 # HuNavSim's robot reactions (scenario `behavior`), the order of the pedestrians' one-hot columns.
 BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
@@ -90,6 +90,7 @@ def coerce(value: object, kind: type, what: str) -> object:
         known = {item.name for item in fields(kind)}
         unknown = sorted(set(value) - known)
         if unknown:
-            raise GymError(f"unknown {what} field(s) {', '.join(unknown)}", f"known: {', '.join(sorted(known))}")
+            raise GymError(f"unknown {what} field(s) {', '.join(unknown)}",
+                           hint=f"known: {', '.join(sorted(known))}")
         return kind(**value)
     raise GymError(f"{what} must be a {kind.__name__} or a dict of its fields, got {type(value).__name__}")

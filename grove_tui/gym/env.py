@@ -29,6 +29,7 @@ the HuNavSim evaluator's 2 cm, or its body overlapping a wall); truncated: the t
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 from collections.abc import Iterable
@@ -41,7 +42,7 @@ from gymnasium import spaces
 
 from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metrics
 from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
-from grove_tui.gym.errors import GymError
+from grove_tui.errors import GymError
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
@@ -64,6 +65,9 @@ class SocialNavEnv(gymnasium.Env):
     Scenarios: `bundles` (one bundle folder or a list), or `world`, `preset`, `prompt` and `seeds`,
     which generates one scenario per seed through the services layer and caches it. Each reset loads
     the next scenario in turn; reset(seed=s) starts the turn at scenario s modulo their number.
+    Everything else is deterministic: the same seeds and actions give the same observations. With
+    start_jitter > 0 the robot starts up to that many metres from the scenario's start, drawn from the
+    env's seeded generator (variety for training and evaluation).
     """
 
     metadata = {"render_modes": []}
@@ -73,11 +77,12 @@ class SocialNavEnv(gymnasium.Env):
                  seeds: Iterable[int] = (0,), cache: str | os.PathLike[str] | None = None,
                  kinematics: str = "unicycle", control_period: float = 0.2, sim_dt: float = 0.05,
                  time_limit: float | None = None, max_angular_speed: float = 1.5,
-                 goal_tolerance: float = GOAL_TOLERANCE, reward: RewardWeights | dict | None = None,
+                 goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
+                 reward: RewardWeights | dict | None = None,
                  observation: ObservationConfig | dict | None = None, metrics_every: int = 1) -> None:
         super().__init__()
         if kinematics not in KINEMATICS:
-            raise GymError(f"unknown kinematics {kinematics!r}", f"use one of {', '.join(KINEMATICS)}")
+            raise GymError(f"unknown kinematics {kinematics!r}", hint=f"use one of {', '.join(KINEMATICS)}")
         if not (sim_dt > 0 and math.isfinite(sim_dt)):
             raise GymError(f"sim_dt must be a positive number of seconds, got {sim_dt!r}")
         substeps = round(control_period / sim_dt) if control_period > 0 else 0
@@ -89,6 +94,8 @@ class SocialNavEnv(gymnasium.Env):
             raise GymError(f"max_angular_speed must be a positive number, got {max_angular_speed!r}")
         if not goal_tolerance > 0:
             raise GymError(f"goal_tolerance must be positive, got {goal_tolerance!r}")
+        if not (start_jitter >= 0 and math.isfinite(start_jitter)):
+            raise GymError(f"start_jitter must be a number of metres >= 0, got {start_jitter!r}")
         if isinstance(metrics_every, bool) or not isinstance(metrics_every, int) or metrics_every < 0:
             raise GymError(f"metrics_every must be a whole number >= 0 (0: only at the episode's end), "
                            f"got {metrics_every!r}")
@@ -99,8 +106,10 @@ class SocialNavEnv(gymnasium.Env):
         self.time_limit_setting = time_limit
         self.max_angular_speed = float(max_angular_speed)
         self.goal_tolerance = float(goal_tolerance)
+        self.start_jitter = float(start_jitter)
         self.weights: RewardWeights = coerce(reward, RewardWeights, "reward")  # type: ignore[assignment]
-        self.obs_config: ObservationConfig = coerce(observation, ObservationConfig, "observation")  # type: ignore[assignment]
+        self.obs_config: ObservationConfig = coerce(  # type: ignore[assignment]
+            observation, ObservationConfig, "observation")
         self.metrics_every = metrics_every
 
         if bundles is not None:
@@ -109,7 +118,7 @@ class SocialNavEnv(gymnasium.Env):
             paths = bundle_list(bundles)
         else:
             if world is None or preset is None or prompt is None:
-                raise GymError("no scenarios", "pass bundles=..., or world=, preset=, prompt= and seeds=")
+                raise GymError("no scenarios", hint="pass bundles=..., or world=, preset=, prompt= and seeds=")
             paths = generated_scenarios(world, preset, prompt, seeds, cache=cache)
         self.scenarios: list[LoadedScenario] = [load_scenario(p, self.obs_config.patch_resolution) for p in paths]
         self._one_hot = [behavior_one_hot(s.behaviors) for s in self.scenarios]
@@ -148,12 +157,12 @@ class SocialNavEnv(gymnasium.Env):
             index = int(options["scenario"])
             if not 0 <= index < len(self.scenarios):
                 raise GymError(f"options['scenario'] = {index} is out of range",
-                               f"this environment has {len(self.scenarios)} scenarios")
+                               hint=f"this environment has {len(self.scenarios)} scenarios")
         self._cursor = (index + 1) % len(self.scenarios)
         self.scenario_index = index
         self.current = self.scenarios[index]
-        self.sim = self.current.simulation(self.sim_dt)
-        robot = self.current.robot
+        robot = self._jittered(self.current.robot) if self.start_jitter > 0 else self.current.robot
+        self.sim = self.current.simulation(self.sim_dt, robot=robot)
         self.goal = np.asarray(robot.goal, dtype=np.float64)
         self.robot_radius = float(robot.radius)
         self.robot_max_speed = float(robot.max_vel)
@@ -178,9 +187,9 @@ class SocialNavEnv(gymnasium.Env):
 
     def step(self, action: Any) -> tuple[dict, float, bool, bool, dict]:
         if self.sim is None:
-            raise GymError("step() before reset()", "call reset() first")
+            raise GymError("step() before reset()", hint="call reset() first")
         if self.outcome:
-            raise GymError(f"step() after the episode ended ({self.outcome})", "call reset() first")
+            raise GymError(f"step() after the episode ended ({self.outcome})", hint="call reset() first")
         command = np.asarray(action, dtype=np.float64).reshape(-1)
         if command.shape != (2,) or not np.all(np.isfinite(command)):
             raise GymError(f"action must be two finite numbers, got {action!r}")
@@ -218,6 +227,23 @@ class SocialNavEnv(gymnasium.Env):
         return self._observation(), reward, terminated, truncated, info
 
     # ---- parts ---------------------------------------------------------------------------------
+
+    def _jittered(self, robot: Any) -> Any:
+        """The scenario's robot with its start moved up to start_jitter metres (uniform in the disc, drawn
+        from the env's seeded np_random) to a free cell of the planning grid; the planned path then
+        starts there, so the subgoal logic leads the robot back onto it."""
+        radius = self.start_jitter * math.sqrt(self.np_random.uniform())
+        angle = self.np_random.uniform(-math.pi, math.pi)
+        x = robot.start[0] + radius * math.cos(angle)
+        y = robot.start[1] + radius * math.sin(angle)
+        free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
+        # a free cell behind a wall (another room) is no start nearby: keep the scenario's
+        if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
+                                             self.current.walls, float(robot.radius)):
+            return robot
+        start = (float(free[0]), float(free[1]))
+        path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
+        return dataclasses.replace(robot, start=start, path=path)
 
     def _robot_pose(self) -> tuple[float, float, float, float, float]:
         crowd = self.sim.crowd
@@ -328,7 +354,7 @@ class SocialNavEnv(gymnasium.Env):
         from grove_tui.gym.recording import record_episode
 
         if self.sim is None:
-            raise GymError("nothing to record before reset()", "run an episode first")
+            raise GymError("nothing to record before reset()", hint="run an episode first")
         return record_episode(self, out_dir, overwrite=overwrite)
 
 

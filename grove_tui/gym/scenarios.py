@@ -19,11 +19,10 @@ from typing import Any
 import numpy as np
 
 from grove_tui.bt.xml import TreeDocument, load_tree_file
-from grove_tui.errors import GroveError
-from grove_tui.gym.errors import RUNTIME_FAILURE, GymError
+from grove_tui.errors import GroveError, GymError
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
-from grove_tui.paths import cache_dir
+from grove_tui.settings import cache_dir
 from grove_tui.scenario.bundle import is_bundle, load_bundle
 from grove_tui.scenario.model import Scenario
 from grove_tui.simulation.simulation import Simulation
@@ -48,10 +47,12 @@ class LoadedScenario:
     def robot(self) -> Any:
         return self.scenario.robot
 
-    def simulation(self, dt: float) -> Simulation:
-        """A fresh Simulation of this scenario, as Simulation.from_scenario builds it."""
+    def simulation(self, dt: float, robot: Any = None) -> Simulation:
+        """A fresh Simulation of this scenario, as Simulation.from_scenario builds it (`robot`: another
+        RobotSpec in place of the scenario's)."""
         return Simulation.build(self.scenario.agents, self.documents, world=self.world, grid=self.grid,
-                                planner=self.planner, walls=self.walls, robot=self.scenario.robot,
+                                planner=self.planner, walls=self.walls,
+                                robot=self.scenario.robot if robot is None else robot,
                                 fields=self.fields, seed=self.scenario.seed, dt=dt, bt_rate=10.0,
                                 scenario=self.scenario)
 
@@ -68,9 +69,11 @@ def load_scenario(bundle_dir: str | os.PathLike[str], patch_resolution: float) -
         world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
         documents = [load_tree_file(root / agent.tree) for agent in sorted(scenario.agents, key=lambda a: a.id)]
     except GroveError as exc:
-        raise GymError(f"{root}: cannot load the bundle: {exc}", "pass a folder `grove generate` wrote") from None
+        raise GymError(f"{root}: cannot load the bundle: {exc}",
+                       hint="pass a folder `grove generate` wrote") from None
     if scenario.robot is None:
-        raise GymError(f"{root}: the scenario has no robot", "generate it with a robot (the default) to train in it")
+        raise GymError(f"{root}: the scenario has no robot",
+                       hint="generate it with a robot (the default) to train in it")
     return LoadedScenario(
         bundle_dir=root, scenario=scenario, documents=documents, world=world, grid=grid,
         planner=ThetaStarPlanner(grid), fields=fields, walls=np.asarray(world.walls(), dtype=np.float64),
@@ -85,10 +88,12 @@ def bundle_list(bundles: str | os.PathLike[str] | Iterable[str | os.PathLike[str
     else:
         paths = [Path(b) for b in bundles]
     if not paths:
-        raise GymError("no scenario bundles given", "pass a bundle folder, a list of them, or world/preset/prompt")
+        raise GymError("no scenario bundles given",
+                       hint="pass a bundle folder, a list of them, or world/preset/prompt")
     for path in paths:
         if not is_bundle(path):
-            raise GymError(f"{path}: not a scenario bundle (no scenario.yaml)", "pass a folder `grove generate` wrote")
+            raise GymError(f"{path}: not a scenario bundle (no scenario.yaml)",
+                           hint="pass a folder `grove generate` wrote")
     return paths
 
 
@@ -112,7 +117,7 @@ def generated_scenarios(world: str, preset: str, prompt: str, seeds: Iterable[in
 
     seeds = [int(s) for s in seeds]
     if not seeds:
-        raise GymError("no seeds given", "pass seeds=[0, 1, ...]: one scenario is generated per seed")
+        raise GymError("no seeds given", hint="pass seeds=[0, 1, ...]: one scenario is generated per seed")
     root = Path(cache) if cache is not None else cache_dir() / "gym"
     staging = root / ".staging"
     engine = backend if backend is not None else EngineBackend(runs_dir=staging)
@@ -121,12 +126,8 @@ def generated_scenarios(world: str, preset: str, prompt: str, seeds: Iterable[in
     for seed in seeds:
         target = root / generation_key(world, preset, prompt, seed, models)
         if not is_bundle(target):
-            try:
-                generated = engine.generate(world, preset, prompt, seed)
-            except GroveError as exc:
-                raise GymError(f"generating {prompt!r} in {world} ({preset}, seed {seed}) failed: {exc}",
-                               "check the world, preset and prompt with `grove generate --no-ui`",
-                               exit_code=RUNTIME_FAILURE) from None
+            # A failure keeps its own error (bad prompt 2, generation 3, model 4) and hint.
+            generated = engine.generate(world, preset, prompt, seed)
             target.parent.mkdir(parents=True, exist_ok=True)
             try:
                 os.replace(generated.bundle_dir, target)
