@@ -32,8 +32,8 @@ import yaml
 from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, SUBTREE
 from grove_tui.bt.ports import format_point_list
-from grove_tui.bt.xml import BTError, check_tree_text, read_tree, write_tree
-from grove_tui.errors import GroveError
+from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
+from grove_tui.errors import BTError, EvalError, GroveError
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, Scenario
@@ -43,10 +43,6 @@ NEAR_POINT = 1.5  # an agent "targets" a door or entity when its final goal is t
 STOP_SPEED = 0.1
 GO_SPEED = 0.5
 STOP_SECONDS = 1.0
-
-
-class EvalError(GroveError):
-    pass
 
 
 @dataclass(frozen=True)

@@ -12,7 +12,7 @@ from typing import Any
 
 from grove_tui.bt.manifest import PortSpec
 from grove_tui.bt.ports import convert_literal
-from grove_tui.bt.xml import BTError
+from grove_tui.errors import BTError
 
 _MISSING = object()
 _ABSENT = object()  # what BlackboardRef asks for, distinct from Blackboard.get's "no default" marker

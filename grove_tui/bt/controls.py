@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from grove_tui.bt.blackboard import BlackboardRef
 from grove_tui.bt.tree_node import FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ControlNode, is_active
-from grove_tui.bt.xml import BTError
+from grove_tui.errors import BTError
 
 class _OrderedControl(ControlNode):
     """Sequence and Fallback are duals: tick children in order, resuming at the running one, until

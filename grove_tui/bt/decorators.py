@@ -13,7 +13,7 @@ from grove_tui.bt.manifest import SUBTREE
 from grove_tui.bt.tree_node import (
     FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, DecoratorNode, SimClock, is_completed,
 )
-from grove_tui.bt.xml import BTError
+from grove_tui.errors import BTError
 
 class Inverter(DecoratorNode):
     __slots__ = ()

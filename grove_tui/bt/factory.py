@@ -26,7 +26,8 @@ from grove_tui.bt.ports import blackboard_pointer, convert_literal
 from grove_tui.bt.tree_node import (
     FAILURE, IDLE, RUNNING, STATUS_NAMES, SUCCESS, ConditionNode, DecoratorNode, LeafNode, SimClock, TreeNode,
 )
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.bt.xml import parse_tree_text
+from grove_tui.errors import BTError
 
 # Nodes that, while their (one) running child stays RUNNING, return RUNNING and change nothing else.
 _PASS_THROUGH = (Sequence, SequenceWithMemory, Fallback, SubTreeNode, Inverter, ForceSuccess, ForceFailure, RunOnce,

@@ -23,7 +23,7 @@ from grove_tui.bt.tree_node import (
     FAILURE, IDLE, RUNNING, SKIPPED, STATUS_NAMES, SUCCESS, ConditionNode, ControlNode, DecoratorNode, LeafNode,
     NodeStatus, SimClock, StatefulActionNode, SyncActionNode, TreeNode, is_active, is_completed,
 )
-from grove_tui.bt.xml import BTError
+from grove_tui.errors import BTError
 
 __all__ = [
     "AlwaysFailure", "AlwaysSuccess", "BTCPP_LEAVES", "BTError", "BehaviorTree", "Blackboard", "BlackboardRef",

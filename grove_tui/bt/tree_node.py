@@ -11,7 +11,7 @@ from enum import IntEnum
 from typing import Any
 
 from grove_tui.bt.blackboard import Blackboard, BlackboardRef
-from grove_tui.bt.xml import BTError
+from grove_tui.errors import BTError
 
 # BT.CPP's NodeStatus values; plain ints keep the hot path fast
 IDLE, RUNNING, SUCCESS, FAILURE, SKIPPED = 0, 1, 2, 3, 4

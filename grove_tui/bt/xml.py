@@ -38,7 +38,7 @@ from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec
 from grove_tui.bt.ports import (  # noqa: F401  (re-exported: the codec's historical home)
     blackboard_pointer, convert_literal, format_point_list, parse_agent_list, parse_point_list,
 )
-from grove_tui.errors import GroveError
+from grove_tui.errors import BTError
 
 MAX_BYTES = 1_000_000
 MAX_DEPTH = 64  # element nesting inside one file
@@ -60,21 +60,13 @@ _SCRIPTING_ATTRIBUTES = {"_skipIf", "_successIf", "_failureIf", "_while", "_onSu
 _FORMAT = "4"
 
 
-class BTError(GroveError):
-    """A behavior tree that cannot be parsed, validated or run; the message names file, line and problem.
-
-    Errors about one place of a file also carry it apart (`line`, `detail`), so `check_tree_text` can
-    list them like any other problem."""
-
-    def __init__(self, message: str, *args, line: int | None = None, detail: str | None = None, **kwargs):
-        super().__init__(message, *args, **kwargs)
-        self.line = line
-        self.detail = detail
-
-
 def _fatal(source: str, line: int | None, detail: str) -> BTError:
+    """A BTError about one place of a file; it also carries the place apart (`line`, `detail`), so
+    `check_tree_text` can list it like any other problem."""
     where = f"{source}:{line}" if line else source
-    return BTError(f"{where}: {detail}", line=line, detail=detail)
+    error = BTError(f"{where}: {detail}")
+    error.line, error.detail = line, detail
+    return error
 
 
 @dataclass(frozen=True)
@@ -496,7 +488,7 @@ def check_tree_text(text: str | bytes, source: str = "<string>",
     try:
         root = _read_elements(text, source)
     except BTError as exc:
-        return [BTProblem(source, exc.line, exc.detail or str(exc))]
+        return [BTProblem(source, getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
     return _validate(root, source, nodes)[1].finish()
 
 
@@ -522,5 +514,5 @@ def check_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] 
     try:
         data = read_file_bytes(path)
     except BTError as exc:
-        return [BTProblem(str(path), exc.line, exc.detail or str(exc))]
+        return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
     return check_tree_text(data, str(path), nodes)

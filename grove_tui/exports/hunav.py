@@ -33,9 +33,9 @@ import yaml
 from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.ports import parse_point_list
-from grove_tui.bt.xml import BTError, check_tree_text, read_file_bytes, read_tree, write_tree
+from grove_tui.bt.xml import check_tree_text, read_file_bytes, read_tree, write_tree
+from grove_tui.errors import BTError, ExportError
 from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
-from grove_tui.errors import GroveError
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 Point = tuple[float, float]
@@ -57,10 +57,6 @@ SPAWN_HEIGHT = 1.25  # HuNavSim's Gazebo actors stand on z = 1.25
 GOAL_TOLERANCE = 0.3
 STREAMLINE_STEP = 0.2
 WANDER_LEG_SECONDS = 12.0
-
-
-class ExportError(GroveError):
-    pass
 
 
 @dataclass

@@ -11,7 +11,8 @@ from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
 from grove_tui.bt.document import TreeElement
-from grove_tui.bt.xml import BTError, read_tree
+from grove_tui.bt.xml import read_tree
+from grove_tui.errors import BTError
 
 STATUS_CLASSES = {
     "RUNNING": "bt--running",
