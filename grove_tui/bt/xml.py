@@ -54,7 +54,6 @@ MAX_SUGGESTIONS = 20
 MAX_SUGGESTION_CANDIDATES = 500
 MAX_PROBLEMS = 200
 
-_ATTRIBUTES_ANY_NODE = {"name", "ID", "_description", "_uid", "_fullpath"}
 _SCRIPTING_ATTRIBUTES = {"_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", "_onFailure", "_onHalted",
                          "_post"}
 _FORMAT = "4"
