@@ -107,3 +107,11 @@ def test_read_tree_checks_structure_but_not_nodes():
     ]:
         with pytest.raises(BTError, match=message):
             read_tree(text)
+
+
+@pytest.mark.parametrize("value", ["bell\x07", "nul\x00", "lone \ud800 surrogate"])
+def test_characters_xml_cannot_carry_are_refused_on_both_sides(value):
+    with pytest.raises(BTError, match="cannot be written in XML"):
+        write_tree(TreeDocument.single("Main", node("SaySomething", message=value)))
+    with pytest.raises(BTError):
+        read_tree(f'<root><BehaviorTree ID="Main"><SaySomething message="{value}"/></BehaviorTree></root>')

@@ -24,6 +24,7 @@ from __future__ import annotations
 import difflib
 import heapq
 import os
+import re
 import stat
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -86,13 +87,16 @@ def _hardened_parser() -> etree.XMLParser:
                            huge_tree=False, remove_comments=True, remove_pis=True, collect_ids=False)
 
 
-def _as_bytes(text: str | bytes) -> bytes:
+def _as_bytes(text: str | bytes, source: str) -> bytes:
     if isinstance(text, bytes):
         return text
     if text.lstrip().startswith("<?xml"):
         # lxml refuses str input with an encoding declaration
         text = text.split("?>", 1)[1] if "?>" in text else text
-    return text.encode("utf-8")
+    try:
+        return text.encode("utf-8")
+    except UnicodeEncodeError as exc:  # a lone surrogate, e.g. from a JSON "\ud800" escape
+        raise _fatal(source, None, f"not valid Unicode text ({exc.reason} at character {exc.start})") from None
 
 
 def _parse_lxml(data: bytes, source: str) -> etree._Element:
@@ -143,7 +147,7 @@ def _to_elements(root: etree._Element, source: str) -> TreeElement:
 
 
 def _read_elements(text: str | bytes, source: str) -> TreeElement:
-    return _to_elements(_parse_lxml(_as_bytes(text), source), source)
+    return _to_elements(_parse_lxml(_as_bytes(text, source), source), source)
 
 
 _FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
@@ -204,17 +208,29 @@ def read_tree_file(path: str | os.PathLike[str]) -> TreeDocument:
 
 # ---- writing ----------------------------------------------------------------------------------
 
+# Characters XML 1.0 cannot carry at all, not even as character references.
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
 _ATTRIBUTE_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "\n": "&#10;",
                                     "\r": "&#13;", "\t": "&#9;"})
 _TEXT_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;"})
 
 
-def _write_element(element: TreeElement, depth: int, lines: list[str]) -> None:
+def _check_writable(element: TreeElement, source: str) -> None:
+    for name, value in [("<tag>", element.tag), ("<text>", element.text), *element.attributes.items()]:
+        bad = _NOT_XML.search(str(name) + str(value))
+        if bad:
+            raise BTError(f"{source}: <{element.tag}> {name}: character U+{ord(bad.group()):04X} cannot be written "
+                          "in XML")
+
+
+def _write_element(element: TreeElement, depth: int, lines: list[str], source: str) -> None:
     # an explicit stack, not recursion: documents are bounded by MAX_DEPTH but code-built ones are not
     stack: list[tuple[TreeElement, int, bool]] = [(element, depth, False)]
     while stack:
         el, level, closing = stack.pop()
         pad = "  " * level
+        if not closing:
+            _check_writable(el, source)
         if closing:
             lines.append(f"{pad}</{el.tag}>")
             continue
@@ -229,14 +245,18 @@ def _write_element(element: TreeElement, depth: int, lines: list[str]) -> None:
 
 
 def write_tree(document: TreeDocument) -> str:
-    """The document as BT.CPP v4 XML text (UTF-8 declaration, two-space indentation, trailing newline)."""
+    """The document as BT.CPP v4 XML text (UTF-8 declaration, two-space indentation, trailing newline).
+
+    BTError when a value holds a character XML cannot carry (control characters, lone surrogates)."""
+    if _NOT_XML.search(document.main_tree_id):
+        raise BTError(f"{document.source}: main tree ID {document.main_tree_id!r} cannot be written in XML")
     lines = ['<?xml version="1.0" encoding="UTF-8"?>',
              f'<root BTCPP_format="{_FORMAT}" main_tree_to_execute="'
              f'{document.main_tree_id.translate(_ATTRIBUTE_ESCAPES)}">']
     for tree in document.trees.values():
-        _write_element(tree, 1, lines)
+        _write_element(tree, 1, lines, document.source)
     for model in document.models:
-        _write_element(model, 1, lines)
+        _write_element(model, 1, lines, document.source)
     lines.append("</root>")
     return "\n".join(lines) + "\n"
 
