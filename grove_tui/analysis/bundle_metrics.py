@@ -8,7 +8,7 @@ from pathlib import Path
 from grove_tui.files import write_text_atomic
 from grove_tui.analysis.metrics import MetricsReport, Trajectories, compute_metrics
 from grove_tui.scenario.events import read_events
-from grove_tui.scenario.model import Scenario
+from grove_tui.scenario.bundle import load_scenario
 from grove_tui.world import load_world
 
 TRAJECTORIES = "trajectories.csv"
@@ -18,7 +18,7 @@ METRICS = "metrics.json"
 
 def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsReport, Path]:
     bundle = Path(bundle_dir)
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world = load_world(scenario.world)
     traj = Trajectories.from_csv(bundle / TRAJECTORIES)
     events_path = bundle / EVENTS

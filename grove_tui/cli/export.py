@@ -21,7 +21,8 @@ _bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_ok
 
 def _fail(message: str) -> None:
     # escape: messages hold user paths and text like `grove-tui[ros]` that rich would read as markup
-    Console(stderr=True).print(f"[bold red]error:[/] {escape(message)}", highlight=False)
+    # soft_wrap: one message is one line, however narrow the terminal, so scripts can read it.
+    Console(stderr=True, soft_wrap=True).print(f"[bold red]error:[/] {escape(message)}", highlight=False)
     sys.exit(EXIT_BAD_INPUT)
 
 
@@ -123,11 +124,11 @@ def metrics(bundle: Path, as_json: bool) -> None:
 def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
     from grove_tui.exports.pictures import draw_scenario, render_scenario_text
-    from grove_tui.scenario.model import Scenario
+    from grove_tui.scenario.bundle import load_scenario
     from grove_tui.world import load_world
 
     try:
-        scenario = Scenario.load(bundle / "scenario.yaml")
+        scenario = load_scenario(bundle)
         world = load_world(scenario.world)
         if out_path is None:
             console = Console()

@@ -21,6 +21,7 @@ Threatening 4 m/40 s/once). Impassive agents treat the robot as an obstacle.
 from __future__ import annotations
 
 import math
+import os
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -34,7 +35,7 @@ from grove_tui.bt.manifest import SUBTREE
 from grove_tui.bt.registry import tree_factory
 from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
-from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
+from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, parse_tree_text
 from grove_tui.crowd.crowd import ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
@@ -130,8 +131,9 @@ class Simulation:
                       bt_rate: float = 10.0, runtime_planning: bool = True) -> Simulation:
         """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
         no-planner baseline); by default goals set while running are planned with Theta*."""
-        from grove_tui.navigation.grid import OccupancyGrid, build_grid
+        from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
+        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
         from grove_tui.world import load_world
 
         bundle_dir = Path(bundle_dir)
@@ -140,16 +142,13 @@ class Simulation:
             candidate = bundle_dir / world_ref
             world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
         grid_path = bundle_dir / "grid.npz"
-        grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, resolution=scenario.resolution)
-        fields = {}
-        if scenario.fields:
-            from grove_tui.navigation.velocity_field import VelocityField
-
-            for field_id, rel in scenario.fields.items():
-                fields[field_id] = VelocityField.load(bundle_dir / rel)
+        grid = load_grid(bundle_dir) if os.path.lexists(grid_path) else build_grid(world, resolution=scenario.resolution)
+        # Every file is checked to be a regular file inside the bundle before it is read.
+        fields = {field_id: load_field(bundle_dir, field_id, rel) for field_id, rel in scenario.fields.items()}
         documents = []
         for agent in sorted(scenario.agents, key=lambda a: a.id):
-            documents.append(load_tree_file(bundle_dir / agent.tree))
+            text = read_bundle_text(bundle_dir, agent.tree, f"agent {agent.id}'s tree")
+            documents.append(parse_tree_text(text, str(bundle_dir / agent.tree)))
         planner = ThetaStarPlanner(grid) if runtime_planning else None
         return cls.build(scenario.agents, documents, world=world, grid=grid, planner=planner,
                          walls=world.walls(), robot=scenario.robot, fields=fields, seed=scenario.seed, dt=dt,
