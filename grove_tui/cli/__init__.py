@@ -6,7 +6,9 @@ Subcommands live one per module in this package and are imported only when used,
 
 from __future__ import annotations
 
+import errno
 import importlib
+import os
 import sys
 
 import click
@@ -27,7 +29,31 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
+# Writing failed for lack of room or a broken device: stdout on /dev/full, a full disk, a dead terminal.
+_OUTPUT_ERRNOS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EIO})
+EXIT_RUNTIME_FAILURE = 3
+
+
 class LazyGroup(click.Group):
+    def invoke(self, ctx: click.Context) -> object:
+        try:
+            return super().invoke(ctx)
+        except OSError as exc:
+            if exc.errno not in _OUTPUT_ERRNOS:
+                raise
+            # One line on stderr, then stdout is pointed at /dev/null so the interpreter's final flush
+            # of the same unwritable stream does not print a traceback after our message.
+            try:
+                sys.stderr.write(f"error: cannot write the output: {exc.strerror}\n")
+                sys.stderr.flush()
+            except OSError:
+                pass
+            try:
+                os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            except (OSError, ValueError):
+                pass
+            ctx.exit(EXIT_RUNTIME_FAILURE)
+
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(SUBCOMMANDS)
 

@@ -22,7 +22,7 @@ import shapely
 from grove_tui.bt.manifest import NODES, NodeSpec
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
-from grove_tui.language.quantities import Quantity, lemma, semantic_tokens
+from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
 
 Point = tuple[float, float]
 
@@ -318,6 +318,26 @@ def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
             if service is not None:
                 return service.name
     return None
+
+
+# A minus sign right before the number (not a range like "3-5"), or the words minus / negative.
+_NEGATIVE_BEFORE = re.compile(r"(?:(?:^|[\s(])[-\u2212]|\bminus\s+|\bnegative\s+)$", re.IGNORECASE)
+
+
+def check_stated_counts(prompt: str, quantities: Sequence[Quantity]) -> None:
+    """Refuse prompts whose head counts cannot be a crowd, before any model runs: no readable words
+    at all (emoji only), a negative count ("-5 people") or zero people. Said to the user, not guessed
+    around: the model would otherwise invent a crowd of its own size."""
+    if not words(prompt):
+        raise PromptError("the prompt has no words to read (only symbols or emoji): describe in English who "
+                          "is there and what they do, e.g. 'ten patients queue at the pharmacy'")
+    for q in quantities:
+        if _NEGATIVE_BEFORE.search(prompt[:q.start]):
+            raise PromptError(f"'{prompt[max(0, q.start - 1):q.end].strip()}' is a negative number of people; "
+                              f"give a whole number of at least 1")
+        if q.count == 0:
+            raise PromptError(f"'{q.phrase}' asks for nobody; give a number of people of at least 1 "
+                              f"(or leave that group out)")
 
 
 def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
