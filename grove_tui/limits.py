@@ -17,7 +17,7 @@ from typing import Any
 
 import yaml
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import BadInputError
 
 # Nodes counted with aliases expanded: a 500-byte "billion laughs" file expands to billions.
 MAX_YAML_NODES = 5_000_000
@@ -32,7 +32,7 @@ YamlPath = tuple[str | int, ...]
 _SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
-class InputLimitError(GroveError):
+class InputLimitError(BadInputError):
     """An input file is unreadable, not a regular file, or beyond a size or shape limit.
 
     `line` is the 1-based line in the file when the problem is at one place.

@@ -171,4 +171,4 @@ def test_scenario_error_is_a_grove_error():
 
     with pytest.raises(GroveError):
         Scenario.from_dict({"world": "hospital"})
-    assert issubclass(ScenarioError, ValueError)
+    assert ScenarioError("x").exit_code == 2

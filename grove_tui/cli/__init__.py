@@ -10,6 +10,7 @@ import errno
 import importlib
 import os
 import sys
+from typing import Any
 
 import click
 
@@ -31,28 +32,47 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
 
 # Writing failed for lack of room or a broken device: stdout on /dev/full, a full disk, a dead terminal.
 _OUTPUT_ERRNOS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EIO})
-EXIT_RUNTIME_FAILURE = 3
 
 
 class LazyGroup(click.Group):
-    def invoke(self, ctx: click.Context) -> object:
+    """The `grove` group: lazy subcommands, and one way every subcommand fails.
+
+    A subcommand raises `GroveError` (or click rejects its arguments); `main` prints one line,
+    `error: ...`, through `grove_tui.errors.print_error` and exits with the error's code (the
+    README's exit-code table). No subcommand ends in a traceback on bad input.
+    """
+
+    def main(self, args: Any = None, prog_name: str | None = None, complete_var: str | None = None,
+             standalone_mode: bool = True, **extra: Any) -> Any:
+        from grove_tui.errors import EXIT_BAD_INPUT, BadInputError, Cancelled, GroveError, RuntimeFailure, print_error
+
         try:
-            return super().invoke(ctx)
-        except OSError as exc:
-            if exc.errno not in _OUTPUT_ERRNOS:
+            result = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        except GroveError as error:
+            sys.exit(print_error(error))
+        except click.exceptions.Abort:  # Ctrl+C at a click prompt or while a command runs
+            sys.exit(print_error(Cancelled("cancelled")))
+        except KeyboardInterrupt:
+            sys.exit(print_error(Cancelled("cancelled")))
+        except OSError as error:
+            if error.errno not in _OUTPUT_ERRNOS:
                 raise
-            # One line on stderr, then stdout is pointed at /dev/null so the interpreter's final flush
-            # of the same unwritable stream does not print a traceback after our message.
-            try:
-                sys.stderr.write(f"error: cannot write the output: {exc.strerror}\n")
-                sys.stderr.flush()
-            except OSError:
-                pass
+            # stdout on /dev/full or a full disk: one line, then stdout goes to /dev/null so the
+            # interpreter's final flush of the same unwritable stream prints no traceback after it.
+            code = print_error(RuntimeFailure(f"cannot write the output: {error.strerror}",
+                                              hint="free some space or write somewhere else"))
             try:
                 os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
             except (OSError, ValueError):
                 pass
-            ctx.exit(EXIT_RUNTIME_FAILURE)
+            sys.exit(code)
+        except click.ClickException as error:
+            # Usage errors (missing option, bad value) are bad input: one line, like every other error.
+            command = getattr(getattr(error, "ctx", None), "command_path", None) or "grove"
+            print_error(BadInputError(error.format_message(), hint=f"see {command} --help"))
+            sys.exit(EXIT_BAD_INPUT)
+        # standalone_mode=False returns a command's exit code from ctx.exit() / sys.exit() as the result.
+        sys.exit(result if isinstance(result, int) else 0)
 
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(SUBCOMMANDS)

@@ -19,14 +19,10 @@ import shapely
 from scipy import ndimage
 
 from grove_tui.files import write_bytes_atomic
-from grove_tui.errors import GroveError
+from grove_tui.errors import GridError
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.world import World
 from grove_tui.world.loader import MAX_COORDINATE
-
-
-class GridError(GroveError):
-    """A grid file could not be read, or a grid would be too large to build."""
 
 
 # The largest grid built or read: 100 million cells (a 250,000 m^2 world at 0.05 m). The planner's

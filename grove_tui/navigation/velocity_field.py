@@ -24,6 +24,7 @@ import numba
 import numpy as np
 from scipy.spatial import cKDTree
 
+from grove_tui.errors import BadInputError
 from grove_tui.files import write_bytes_atomic
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
@@ -37,8 +38,11 @@ _DC = np.array([1, -1, 0, 0, 1, -1, 1, -1], dtype=np.int64)
 MAX_FIELD_UNPACKED_BYTES = 256 * 1024 * 1024
 
 
-class FieldFileError(PlanningError):
+class FieldFileError(BadInputError):
     """A velocity field file is missing, corrupt, or beyond the size limits; the message names it."""
+
+    title = "Velocity field error"
+    hint = "Regenerate the bundle: one of its fields/*.npz files is broken."
 
 
 CAPTURE_RADIUS = 3.0  # metres: beyond this distance from the path only the geodesic direction is used

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.files import absolute_path, atomic_directory, link_or_copy
-from grove_tui.errors import GroveError
+from grove_tui.errors import BundleError, GroveError
 from grove_tui.limits import InputLimitError, check_regular_file, read_text_bounded
 from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
 from grove_tui.scenario.model import Scenario, ScenarioError
@@ -28,10 +28,6 @@ REPORT_FILE = "generation.json"
 # What a simulation adds to a bundle; replaced together, never one without the others.
 RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
 WHAT = "scenario bundle"
-
-
-class BundleError(GroveError):
-    """A bundle directory is missing a file or holds a broken one; the message names it."""
 
 
 def is_bundle(path: Path) -> bool:

@@ -17,17 +17,11 @@ from typing import Any
 
 import yaml
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import ScenarioError
 from grove_tui.files import write_text_atomic
 from grove_tui.limits import InputLimitError, load_yaml_bounded, read_text_bounded
 
 Point = tuple[float, float]
-
-
-class ScenarioError(GroveError, ValueError):
-    """A scenario file is malformed; the message names the file and the key.
-
-    A ValueError too, for callers that predate GroveError."""
 
 
 # HuNavSim's behavior types (hunav_msgs/Agent): what a bundle's `behavior` may name.
