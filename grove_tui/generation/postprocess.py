@@ -500,6 +500,8 @@ class FreeSpace:
         self._labels = _components(free)
         self._main = self._main_component()
         self._taken: dict[str, list[Point]] = {}
+        exits = [door.position for door in world.exits()] if hasattr(world, "exits") else []
+        self._exit_points = np.asarray(exits, dtype=float).reshape(-1, 2)
 
     def _main_component(self) -> int:
         counts = np.bincount(self._labels[self._labels > 0].ravel()) if np.any(self._labels > 0) else np.zeros(1)
@@ -547,6 +549,15 @@ class FreeSpace:
         pts = self.cells(zone_name)
         if len(pts) == 0:
             raise GenerationError(f"zone '{zone_name}' has no free floor to place anyone on")
+        if len(self._exit_points):
+            # Nobody starts on an exit: an evacuee there would leave at its first step, and anyone
+            # else would be pushed outside by the people behind.
+            near = np.hypot(pts[:, None, 0] - self._exit_points[None, :, 0],
+                            pts[:, None, 1] - self._exit_points[None, :, 1]).min(axis=1) < SPAWN_EXIT_CLEARANCE
+            if near.all():
+                raise GenerationError(f"zone '{zone_name}' has no free floor farther than "
+                                      f"{SPAWN_EXIT_CLEARANCE} m from an exit to place anyone on")
+            pts = pts[~near]
         taken = self._taken.setdefault(key, [])
         blockers = list(taken) + list(avoid)
         order = rng.permutation(len(pts))
@@ -583,6 +594,11 @@ class FreeSpace:
                                   f"(free floor {self.free_area(zone_name):.0f} m^2, {len(taken)} already there)")
         taken.extend(chosen)
         return chosen
+
+
+# Spawns keep this far from every exit door's centre: twice the distance at which an evacuee
+# counts as gone (bt.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
+SPAWN_EXIT_CLEARANCE = 1.2
 
 
 def _components(free: np.ndarray) -> np.ndarray:

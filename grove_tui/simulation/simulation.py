@@ -29,6 +29,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import shapely
 
 from grove_tui.bt.context import AgentContext, SimContext
 from grove_tui.bt.manifest import SUBTREE
@@ -36,7 +37,7 @@ from grove_tui.bt.registry import tree_factory
 from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
 from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, parse_tree_text
-from grove_tui.crowd.crowd import ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.crowd.crowd import MODE_FIELD, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
@@ -112,6 +113,8 @@ class Simulation:
         self._q_t = np.zeros(n)
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
+        self._building: Any = None  # the zones' union, prepared on first use (see _count_people_outside)
+        self._exits: list[tuple[str, tuple[float, float]]] = []
         self.scenario = scenario
         self.world = world
         self.recorder = recorder if recorder is not None else _make_recorder(dt, context.ids)
@@ -228,7 +231,48 @@ class Simulation:
     def tick_trees(self) -> None:
         """What step() does every 1/bt_rate seconds: tick every tree, then update the contact counters."""
         self.tick_behaviors()
+        # After the ticks, so an evacuee's tree has already set its field mode on the first tick.
+        self._count_people_outside()
         self._measure_contacts()
+
+    def _count_people_outside(self) -> None:
+        """Anyone the crowd pushed out of the building (through an exit: walls hold everywhere else)
+        has left it. An evacuee is counted as evacuated through the nearest exit; anyone else gets a
+        `left_building` event. Either way the agent stops taking part, so nobody wanders outside
+        uncounted. (An evacuee's tree is quiescent until it is near its own exit point, so without this
+        check one pushed past that point was never ticked again.)"""
+        world = self.world
+        if world is None or not hasattr(world, "outline"):
+            return
+        n = len(self.trees)
+        active = np.flatnonzero(np.asarray(self.crowd.active[:n], dtype=bool))
+        if active.size == 0:
+            return
+        if self._building is None:
+            self._building = world.outline()
+            shapely.prepare(self._building)
+            self._exits = [(door.name, door.position) for door in world.exits()]
+        pos = self.crowd.pos[active]
+        outside = active[~shapely.intersects_xy(self._building, pos[:, 0], pos[:, 1])]
+        ctx = self.context
+        for row in outside.tolist():
+            x, y = float(self.crowd.pos[row, 0]), float(self.crowd.pos[row, 1])
+            exit_name = min(self._exits, key=lambda e: math.dist(e[1], (x, y)))[0] if self._exits else ""
+            evacuating = int(self.crowd.mode[row]) == MODE_FIELD or ctx.status[row].startswith("evacuating")
+            self.crowd.set_active(row, False)
+            if evacuating:
+                ctx.counters.evacuated += 1
+                ctx.event("evacuated", row, exit_name)
+                ctx.status[row] = "evacuated"
+            else:
+                ctx.event("left_building", row, exit_name)
+                ctx.status[row] = f"left through {exit_name}" if exit_name else "left the building"
+            if not self.finished[row]:
+                self.finished[row] = True
+                self._finished_mask[row] = True
+                self._q_on[row] = False
+                ctx.counters.finished_trees += 1
+                self.tree_result[row] = "done"
 
     def tick_behaviors(self) -> None:
         """Tick every unfinished tree once with the current positions, then order new queue arrivals.
