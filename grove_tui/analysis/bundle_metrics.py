@@ -6,9 +6,9 @@ import json
 from pathlib import Path
 
 from grove_tui.files import write_text_atomic
-from grove_tui.analysis.metrics import MetricsReport, Trajectories, compute_metrics
+from grove_tui.analysis.metrics import MetricsReport, compute_metrics_csv
 from grove_tui.scenario.events import read_events
-from grove_tui.scenario.model import Scenario
+from grove_tui.scenario.bundle import load_scenario
 from grove_tui.world import load_world
 
 TRAJECTORIES = "trajectories.csv"
@@ -18,15 +18,15 @@ METRICS = "metrics.json"
 
 def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsReport, Path]:
     bundle = Path(bundle_dir)
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world = load_world(scenario.world)
-    traj = Trajectories.from_csv(bundle / TRAJECTORIES)
     events_path = bundle / EVENTS
     events = read_events(events_path) if events_path.exists() else []
     robot = scenario.robot
     radii = {a.radius for a in scenario.agents}
-    report = compute_metrics(
-        traj,
+    # Streamed a block of frames at a time: a long run's CSV is never held in memory whole.
+    report = compute_metrics_csv(
+        bundle / TRAJECTORIES,
         walls=world.walls(),
         robot_goal=None if robot is None else robot.goal,
         robot_radius=0.3 if robot is None else robot.radius,

@@ -352,7 +352,9 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 
 @click.command("simulate")
 @click.argument("bundle", type=click.Path(file_okay=False))
-@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True), default=30.0, show_default=True)
+@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True, max=24 * 3600.0), default=30.0,
+              show_default=True, callback=lambda ctx, param, value: _finite(value, param),
+              help="Simulated seconds to run (at most a day).")
 @click.pass_context
 def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
