@@ -31,7 +31,7 @@ from typing import Any
 
 import yaml
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import GroveError, UnderstandingError
 
 PLACE_ROLES = ("start", "destination", "location", "via")
 GROUP_FIELDS = ("count", "intent", *PLACE_ROLES, "places", "robot_interaction", "robot_reaction", "together",
@@ -44,16 +44,6 @@ SCENARIO_FIELDS = ("agent_count", "start_zones", "destination_zones", "location_
                    "no_idle_agents")
 NUMBER_WORDS = frozenset("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen "
                          "fifteen sixteen seventeen eighteen nineteen twenty thirty forty fifty hundred".split())
-
-
-class UnderstandingError(GroveError):
-    """The cases file is missing, malformed or names a world that does not exist."""
-
-    exit_code = 2
-
-    def __init__(self, message: str, hint: str = ""):
-        self.hint = hint
-        super().__init__(f"{message}{f' ({hint})' if hint else ''}")
 
 
 @dataclass(frozen=True)
@@ -70,15 +60,14 @@ class UnderstandingCase:
 
 def load_cases(path: str | Path) -> list[UnderstandingCase]:
     path = Path(path)
-    hint = "rebuild it with: python eval/understanding/build.py"
     try:
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
-        raise UnderstandingError(f"{path}: no such cases file", hint) from None
+        raise UnderstandingError(f"{path}: no such cases file") from None
     except yaml.YAMLError as exc:
-        raise UnderstandingError(f"{path}: not valid YAML: {exc}", hint) from None
+        raise UnderstandingError(f"{path}: not valid YAML: {exc}") from None
     if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
-        raise UnderstandingError(f"{path}: expected a mapping with a `cases` list", hint)
+        raise UnderstandingError(f"{path}: expected a mapping with a `cases` list")
     cases = []
     for index, raw in enumerate(data["cases"]):
         try:
@@ -89,10 +78,10 @@ def load_cases(path: str | Path) -> list[UnderstandingCase]:
                 groups=tuple(dict(g) for g in expect["groups"]),
                 unknown_places=tuple(expect.get("unknown_places") or ()), seed=int(raw.get("seed", 0))))
         except (KeyError, TypeError, ValueError) as exc:
-            raise UnderstandingError(f"{path}: cases[{index}]: missing or malformed {exc}", hint) from None
+            raise UnderstandingError(f"{path}: cases[{index}]: missing or malformed {exc}") from None
     ids = [c.id for c in cases]
     if len(ids) != len(set(ids)):
-        raise UnderstandingError(f"{path}: case ids repeat", hint)
+        raise UnderstandingError(f"{path}: case ids repeat")
     return cases
 
 
@@ -246,7 +235,7 @@ def run_reading(cases: Sequence[UnderstandingCase],
             try:
                 worlds[case.world] = load_world(case.world)
             except GroveError as exc:
-                raise UnderstandingError(f"case {case.id}: {exc}", "cases name shipped worlds") from None
+                raise UnderstandingError(f"case {case.id}: {exc}", hint="Cases name shipped worlds.") from None
         started = time.perf_counter()
         try:
             reading = reader(case.prompt, worlds[case.world], case.seed)

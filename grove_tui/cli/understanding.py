@@ -33,30 +33,26 @@ def understanding(cases_file: Path, out_dir: Path, scenarios: int, model: str | 
         summarize_scenarios,
         write_results,
     )
-    from grove_tui.errors import GroveError
 
     err = Console(stderr=True, highlight=False)
-    try:
-        cases = load_cases(cases_file)
-        if worlds:
-            cases = [c for c in cases if c.world in worlds]
-            if not cases:
-                raise click.BadParameter(f"no case in world(s) {', '.join(worlds)}", param_hint="--world")
-        err.print(f"reading {len(cases)} prompts")
-        reading = run_reading(cases)
-        scenario_scores = []
-        if scenarios:
-            sample = sample_cases(cases, scenarios)
+    # GroveErrors propagate to the `grove` group's printer (title, message, hint, exit code).
+    cases = load_cases(cases_file)
+    if worlds:
+        cases = [c for c in cases if c.world in worlds]
+        if not cases:
+            raise click.BadParameter(f"no case in world(s) {', '.join(worlds)}", param_hint="--world")
+    err.print(f"reading {len(cases)} prompts")
+    reading = run_reading(cases)
+    scenario_scores = []
+    if scenarios:
+        sample = sample_cases(cases, scenarios)
 
-            def progress(index: int, total: int, score) -> None:
-                status = f"[red]failed: {score.error}[/]" if score.error else (
-                    "ok" if not score.misses else "; ".join(score.misses))
-                err.print(f"[{index}/{total}] {score.case.id} ({score.seconds:.0f} s): {status}")
+        def progress(index: int, total: int, score) -> None:
+            status = f"[red]failed: {score.error}[/]" if score.error else (
+                "ok" if not score.misses else "; ".join(score.misses))
+            err.print(f"[{index}/{total}] {score.case.id} ({score.seconds:.0f} s): {status}")
 
-            scenario_scores = run_scenarios(sample, out_dir, bt_model=model, on_progress=progress)
-    except GroveError as exc:
-        err.print(f"[bold red]error:[/] {exc}")
-        sys.exit(getattr(exc, "exit_code", 2))
+        scenario_scores = run_scenarios(sample, out_dir, bt_model=model, on_progress=progress)
     args = sys.argv[sys.argv.index("understanding") + 1:] if "understanding" in sys.argv else [
         str(cases_file), "--out", str(out_dir)]
     command = "grove understanding " + " ".join(shlex.quote(a) for a in args)
