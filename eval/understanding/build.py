@@ -142,8 +142,10 @@ def _spoken(name: str) -> str:
 
 
 def _key(form: str) -> str:
-    """What a reader cannot tell apart: case, apostrophes, hyphens ("nurses' desk" = "nurses desk")."""
-    return " ".join(re.sub(r"[^a-z0-9 ]", " ", form.lower().replace("'", "")).split())
+    """What a reader cannot tell apart: case, apostrophes, hyphens and plurals ("nurses' desk" =
+    "nurse desk"), so a form that matches another place once lemmatised is left out."""
+    words = re.sub(r"[^a-z0-9 ]", " ", form.lower().replace("'", "")).split()
+    return " ".join(w[:-1] if len(w) > 3 and w.endswith("s") and not w.endswith("ss") else w for w in words)
 
 
 def world_places(world: World) -> dict[str, Place]:
@@ -441,7 +443,8 @@ def evacuate_clause(s: Slots) -> Clause:
     if roll < 0.2:
         # Everyone in the zone: the head count comes from the zone, at a sensible density.
         subject = whole_zone_subject(s, z)
-        text = f"{subject.text} {conjugate(s.rng.choice(['evacuate', 'head']), subject.singular)} to {X}"
+        verb = s.rng.choice(["evacuate to", "are evacuated to", "evacuate towards"])
+        text = f"{subject.text} {conjugate(verb, subject.singular)} {X}"
         return Clause(text, [group(subject, "evacuate", start=z.name, destination=x.name)], preset="emergency")
     subject = s.exact(low=2) if s.rng.random() < 0.7 else s.vague()
     v = lambda verb: conjugate(verb, subject.singular)  # noqa: E731
@@ -488,13 +491,17 @@ def exclusive_clause(s: Slots) -> Clause:
     if roll < 0.35:
         text = s.rng.choice([f"nobody is in {Z} except {who}, who {v('wait')} there",
                              f"no one but {who} {v('wait')} in {Z}",
-                             f"{Z} is empty apart from {who} waiting there"])
+                             f"there is no one in {Z} apart from {who}, who {v('wait')} there"])
         return Clause(text, [group(subject, "wait", location=z.name)])
     if roll < 0.7:
-        text = s.rng.choice([f"{Z} is empty except for {who} wandering around",
+        text = s.rng.choice([f"the only people in {Z} are {who}, wandering around" if n > 1 else
+                             f"the only person in {Z} is {who}, wandering around",
                              f"apart from {who}, nobody is in {Z}; {'they' if n > 1 else 'the ' + singular} "
                              f"{v('wander')} around",
                              f"nobody but {who} {v('wander')} around {Z}"])
+        if text.startswith("the only"):
+            # "the only people are two guards" states the number outright: exact reads it right too
+            subject = Subject(who, n == 1, {"kind": ["exclusive", "exact"], "value": n})
         return Clause(text, [group(subject, "wander", location=z.name)])
     b = s.pick(s.p.zones + s.p.exits, z)
     text = s.rng.choice([f"nobody moves except {who}, who {v('walk')} from {Z} to {b.say(s.rng)}",
