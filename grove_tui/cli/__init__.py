@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import importlib
 import sys
+from typing import Any
 
 import click
 
@@ -24,6 +25,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "metrics": ("grove_tui.cli.export:metrics", "Robot and crowd metrics of a simulated bundle."),
     "picture": ("grove_tui.cli.export:picture", "PNG/SVG picture of a scenario and its trajectories."),
     "eval": ("grove_tui.cli.evaluate:evaluate", "Run an evaluation suite against the baselines."),
+    "open": ("grove_tui.cli.open:open_command", "Open a saved scenario bundle in the app (inspect screen)."),
 }
 
 
@@ -63,6 +65,11 @@ def main(ctx: click.Context, model: str | None, roi_model: str | None, bt_model:
     ctx.ensure_object(dict)
     ctx.obj.update(model=model, roi_model=roi_model, bt_model=bt_model)
     if ctx.invoked_subcommand is None:
-        from grove_tui.tui.app import run_app
+        sys.exit(open_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
 
-        sys.exit(run_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
+
+def open_app(**options: Any) -> int:
+    """Run the terminal app (the one way from the command line into the TUI); returns its exit code."""
+    from grove_tui.tui.app import run_app
+
+    return run_app(**options)

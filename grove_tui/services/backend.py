@@ -56,6 +56,43 @@ class GeneratedScenario:
 
 
 @dataclass(frozen=True)
+class RunInfo:
+    """One saved bundle in the runs folder, as the recent-runs list shows it."""
+
+    path: Path
+    modified: float  # seconds since the epoch, of scenario.yaml
+    prompt: str = ""
+    world: str = ""
+    preset: str = ""
+    seed: int = 0
+    agents: int = 0
+    simulated: bool = False
+    error: str = ""  # why the bundle cannot be opened; empty when it can
+
+
+def list_runs(runs_dir: Path, limit: int = 50) -> list[RunInfo]:
+    """The newest `limit` bundles directly under `runs_dir` (a missing folder is an empty list)."""
+    from grove_tui.scenario.bundle import SCENARIO_FILE, is_bundle
+    from grove_tui.scenario.model import Scenario
+
+    if not runs_dir.is_dir():
+        return []
+    bundles = [path for path in runs_dir.iterdir() if path.is_dir() and is_bundle(path)]
+    bundles.sort(key=lambda path: (path / SCENARIO_FILE).stat().st_mtime, reverse=True)
+    runs = []
+    for path in bundles[:limit]:
+        modified = (path / SCENARIO_FILE).stat().st_mtime
+        try:
+            scenario = Scenario.load(path / SCENARIO_FILE)
+        except (GroveError, ValueError, OSError) as exc:  # ScenarioError is a ValueError; a file may vanish
+            runs.append(RunInfo(path, modified, error=str(exc)))
+            continue
+        runs.append(RunInfo(path, modified, scenario.prompt, scenario.world, scenario.preset, int(scenario.seed),
+                            len(scenario.agents), (path / "trajectories.csv").is_file()))
+    return runs
+
+
+@dataclass(frozen=True)
 class ExportedFile:
     kind: str
     path: Path
@@ -374,6 +411,26 @@ class EngineBackend:
                     raise
                 ctx.add(kind, out_dir, f"failed: {type(exc).__name__}: {exc}")
         return ctx.files
+
+
+    # saved runs --------------------------------------------------------------------------------------
+    def recent_runs(self, limit: int = 50) -> list[RunInfo]:
+        """Bundles under the runs folder, newest first; a broken one is listed with what is wrong."""
+        return list_runs(self.runs_dir, limit)
+
+    def open_run(self, bundle_dir: Path) -> GeneratedScenario:
+        """A saved bundle as the app holds a fresh generation (no draft: counts cannot be re-planned)."""
+        from grove_tui.generation.pipeline import GenerationResult
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report
+
+        bundle_dir = Path(bundle_dir)
+        scenario, trees, fields, grid = load_bundle(bundle_dir)
+        # A bundle copied without its report still opens; only the timings and groups are missing.
+        report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
+        world = self.load_world(scenario.world)
+        result = GenerationResult(scenario, trees, fields, grid, report)
+        return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
+                                 bundle_dir)
 
 
 def _model_path(info: Any) -> Any:

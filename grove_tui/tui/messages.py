@@ -66,6 +66,7 @@ class TokensFlushed(Message):
 @dataclass
 class GenerationSucceeded(Message):
     generated: Any  # backend.GeneratedScenario
+    note: str = ""  # what happened to count edits carried over from the previous scenario
 
 
 @dataclass
@@ -98,4 +99,15 @@ class ExportFinished(Message):
 
 @dataclass
 class ExportFailed(Message):
+    error: str
+
+
+@dataclass
+class RunOpened(Message):
+    generated: Any  # backend.GeneratedScenario loaded from a saved bundle
+
+
+@dataclass
+class RunOpenFailed(Message):
+    bundle_dir: Path
     error: str

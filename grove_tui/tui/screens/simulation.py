@@ -334,6 +334,11 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
 
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
+        from grove_tui.tui.screens.inspect import InspectScreen
+
+        for screen in self.app.screen_stack:  # the inspect screen below need not ask before leaving now
+            if isinstance(screen, InspectScreen) and screen.generated is self.generated:
+                screen.unsaved = False
 
         self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
 
