@@ -110,6 +110,8 @@ class TestSimulationScreen:
             tree = sim.query_one("#sim-tree", BTTree)
             await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial and bool(tree._status),
                              what="last frame drawn")
+            await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step,
+                             what="counters of the last frame")
 
         app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)

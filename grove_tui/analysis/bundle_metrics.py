@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 from grove_tui.files import write_text_atomic
 from grove_tui.analysis.metrics import MetricsReport, Trajectories, compute_metrics
@@ -23,9 +25,18 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
     traj = Trajectories.from_csv(bundle / TRAJECTORIES)
     events_path = bundle / EVENTS
     events = read_events(events_path) if events_path.exists() else []
+    report = scenario_metrics(scenario, world, traj, events)
+    path = bundle / METRICS
+    if write:
+        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
+    return report, path
+
+
+def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events: Sequence[Any]) -> MetricsReport:
+    """metrics.json's report of a run: also what the app's live counters show, so both always agree."""
     robot = scenario.robot
     radii = {a.radius for a in scenario.agents}
-    report = compute_metrics(
+    return compute_metrics(
         traj,
         walls=world.walls(),
         robot_goal=None if robot is None else robot.goal,
@@ -38,7 +49,3 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
         # run (a conversation drops it, JoinGroup renumbers it); HuNavSim's group_id is the configured one.
         groups={a.id: a.group for a in scenario.agents},
     )
-    path = bundle / METRICS
-    if write:
-        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
-    return report, path

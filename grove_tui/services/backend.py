@@ -393,6 +393,30 @@ class EngineBackend:
 
         return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
 
+    def run_metrics(self, generated: GeneratedScenario, rows: Any, events: list[Any]) -> dict[str, float]:
+        """metrics.json's numbers for a run so far, flat ({"agent_overlaps": ..., "minimum_distance_to_people": ...}).
+
+        `rows` are the recorder's rows (its structured array); they are rounded as trajectories.csv
+        stores them and go through the function `grove metrics` uses, so the app's counters equal
+        the exported metrics.json of the same run.
+        """
+        import numpy as np
+
+        from grove_tui.analysis.bundle_metrics import scenario_metrics
+        from grove_tui.analysis.metrics import Trajectories
+        from grove_tui.crowd.recording import CSV_COLUMNS
+
+        if len(rows) == 0:
+            return {}
+        table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
+        table[:, 1] = np.round(table[:, 1], 4)  # t, x, y, vx, vy, yaw: trajectories.csv's "%.4f"
+        table[:, 3:8] = np.round(table[:, 3:8], 4)
+        report = scenario_metrics(generated.scenario, generated.world, Trajectories.from_rows(table), events)
+        flat: dict[str, float] = {}
+        for section in report.to_dict().values():
+            flat.update(section)
+        return flat
+
     # export ----------------------------------------------------------------------------------------
     def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
         stamp = time.strftime("%Y%m%d-%H%M%S")

@@ -111,3 +111,13 @@ class RunOpened(Message):
 class RunOpenFailed(Message):
     bundle_dir: Path
     error: str
+
+
+@dataclass
+class MetricsComputed(Message):
+    """metrics.json's numbers for the run up to simulation step `step` (or why they could not be computed)."""
+
+    step: int
+    t: float
+    values: dict[str, float]
+    error: str = ""
