@@ -34,7 +34,7 @@ from lxml import etree
 from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.xml import check_tree_text, parse_point_list
-from grove_tui.errors import GroveError
+from grove_tui.errors import ExportError
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 Point = tuple[float, float]
@@ -56,10 +56,6 @@ SPAWN_HEIGHT = 1.25  # HuNavSim's Gazebo actors stand on z = 1.25
 GOAL_TOLERANCE = 0.3
 STREAMLINE_STEP = 0.2
 WANDER_LEG_SECONDS = 12.0
-
-
-class ExportError(GroveError):
-    pass
 
 
 @dataclass
