@@ -7,10 +7,6 @@ from pathlib import Path
 
 import click
 
-from grove_tui.errors import GroveError
-
-EXIT_BAD_INPUT = 2
-
 
 @click.command("open")
 @click.argument("bundle", type=click.Path(path_type=Path))
@@ -19,13 +15,9 @@ def open_command(ctx: click.Context, bundle: Path) -> None:
     """Open a saved scenario bundle (e.g. one under the runs folder) in the app's inspect screen."""
     from grove_tui.scenario.bundle import load_bundle
 
-    # Check the bundle before the app takes the terminal, so a wrong path is one line on stderr.
-    try:
-        load_bundle(bundle)
-    except GroveError as exc:
-        hint = getattr(exc, "hint", "") or "give a folder GROVE wrote (it holds scenario.yaml, trees/, grid.npz)"
-        click.echo(f"error: {exc}\nhint: {hint}", err=True)
-        sys.exit(getattr(exc, "exit_code", EXIT_BAD_INPUT) or EXIT_BAD_INPUT)
+    # Check the bundle before the app takes the terminal: a wrong path is the usual one-line error
+    # (BundleError, exit 2, printed by the `grove` group), not a failure inside the app.
+    load_bundle(bundle)
     from grove_tui.cli import open_app
 
     options = ctx.obj or {}
