@@ -177,6 +177,13 @@ class EvalError(BadInputError):
     hint = "Fix the suite file (eval/suite.yaml shows the format)."
 
 
+class UnderstandingError(EvalError):
+    """The understanding suite's cases file is missing, malformed or names a world that does not exist."""
+
+    title = "Understanding suite error"
+    hint = "Rebuild the cases with: python eval/understanding/build.py"
+
+
 class MetricsError(BadInputError):
     """A bundle whose run cannot be measured: no trajectories, or broken ones."""
 
