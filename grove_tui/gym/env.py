@@ -244,7 +244,7 @@ class SocialNavEnv(gymnasium.Env):
         free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
         # a free cell behind a wall (another room) is no start nearby: keep the scenario's
         if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
-                                             self.current.walls, float(robot.radius)):
+                                             self.current.walls, float(robot.radius), self.current.boxes):
             return robot
         start = (float(free[0]), float(free[1]))
         path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
@@ -274,7 +274,7 @@ class SocialNavEnv(gymnasium.Env):
             gap = float(gaps[active].min())
         if gap < COLLISION_GAP:
             return gap, "person"
-        if wall_distance(pos, self.current.walls) < self.robot_radius:
+        if wall_distance(pos, self.current.walls, self.robot_radius, self.current.boxes) < self.robot_radius:
             return gap, "obstacle"
         return gap, ""
 
@@ -318,16 +318,16 @@ class SocialNavEnv(gymnasium.Env):
         """Advance along the planned path (see the module docstring), then the subgoal and the distance
         to go: straight to the subgoal, then along the path to the goal."""
         pos = self.sim.crowd.robot_pos
-        path, walls = self.path, self.current.walls
+        path, walls, boxes = self.path, self.current.walls, self.current.boxes
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
                 math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
-                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance)):
+                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance, boxes)):
             self.waypoint_index += 1
         index = self.waypoint_index
-        if not segment_clear(pos, path[index], walls, clearance):
+        if not segment_clear(pos, path[index], walls, clearance, boxes):
             for earlier in range(index - 1, -1, -1):
-                if segment_clear(pos, path[earlier], walls, clearance):
+                if segment_clear(pos, path[earlier], walls, clearance, boxes):
                     index = earlier
                     break
         self.subgoal_index = index
