@@ -162,6 +162,7 @@ class SocialNavEnv(gymnasium.Env):
         self.scenario_index = index
         self.current = self.scenarios[index]
         robot = self._jittered(self.current.robot) if self.start_jitter > 0 else self.current.robot
+        self._release()
         self.sim = self.current.simulation(self.sim_dt, robot=robot)
         self.goal = np.asarray(robot.goal, dtype=np.float64)
         self.robot_radius = float(robot.radius)
@@ -230,6 +231,16 @@ class SocialNavEnv(gymnasium.Env):
         self.history.append(self.sim, self._robot_pose())
         info = self._info(terms, collision=collision)
         return self._observation(), reward, terminated, truncated, info
+
+    def close(self) -> None:
+        self._release()
+        super().close()
+
+    def _release(self) -> None:
+        """Close the finished episode's trajectory recorder (long episodes spill it to a temporary file)."""
+        if self.sim is not None and getattr(self.sim, "recorder", None) is not None:
+            self.sim.recorder.close()
+        self.sim = None
 
     # ---- parts ---------------------------------------------------------------------------------
 
