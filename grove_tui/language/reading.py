@@ -342,7 +342,12 @@ class _Reader:
 
     def _mention_at(self, s: int, found: list[_Mention]) -> _Mention | None:
         low = self.low
-        prev = len(found) - 1
+        if low[s] in ("the", "these", "those", "all") and s + 1 < self.n and self._number_at(s + 1) is not None:
+            inner = self._mention_at(s + 1, found)  # "the four people in the living room"
+            if inner is not None:
+                inner.first = s
+                inner.who = self._span(s, inner.last)
+            return inner
         j = s
         exclusive = self._exclusive_context(s)
         # Relations: "one of them", "two of the patients", "some of them"
@@ -715,8 +720,10 @@ class _Reader:
                     i_pos = self._advance(own, end)
                     continue
                 prev_verb = self._previous_verb(own, i_pos)
-                if prev_verb in lx.FOR_DESTINATION_VERBS:
-                    place = self._place_phrase(i + 1, "to", i)
+                # "head for the exit", "queue for the coffee machine": a place by its whole name after a
+                # determiner; "for coffee", "for their prescriptions" are purposes, whatever they match.
+                if prev_verb in lx.FOR_DESTINATION_VERBS or (nxt in ("the", "this", "that") and self._names_place(i + 2)):
+                    place = self._place_phrase(i + 1, "for", i)
                     if place is not None:
                         c.places.append(place)
                         used.update(range(i, place.end))
@@ -943,8 +950,9 @@ class _Reader:
                 break
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
-            if phrase and verb_lemma(w) in lx.INTENT_VERBS and verb_lemma(w) != w and not self.index.knows(lemma(w)):
-                break
+            if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
+                    self.w[j].tag.startswith("VB") or self.index.match([lemma(x) for x in phrase]) is not None):
+                break  # "in the cafeteria evacuate": the verb after the place ("gift shop" is a noun)
             if w.isdigit() or w in lx.UNITS:
                 if not phrase:
                     break
@@ -1006,11 +1014,11 @@ class _Reader:
             if name is None:
                 continue
             role = self._role(p, verb, verb_index, stationary, intent, p in scene_places)
-            if role == "start" and start is None:
+            if role == "start" and (start is None or self._narrower(name, start)):
                 start = name
-            elif role == "destination" and destination is None:
+            elif role == "destination" and (destination is None or self._narrower(name, destination)):
                 destination = name
-            elif role == "location" and location is None:
+            elif role == "location" and (location is None or self._narrower(name, location)):
                 location = name
             elif role == "via" and name not in via:
                 via.append(name)
@@ -1022,6 +1030,14 @@ class _Reader:
             location = destination
             if not c.moves:
                 destination = None
+        kind, _, parent_index = (m.relation or "").partition(":")
+        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier) and \
+                start is None and destination is None and location is None:
+            # "one of them stares at the robot": a member of a group keeps its route unless told otherwise
+            parent = earlier[int(parent_index)]
+            start, destination = parent.start, parent.destination
+            location = parent.location if stationary else None
+            via = list(parent.via)
         count = m.count
         if m.whole_zone:
             zone = start or location or destination
@@ -1060,12 +1076,19 @@ class _Reader:
             together=together, pace=pace, relation=m.relation, follows=c.follows,
             text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end] if span[1] > span[0] else m.who)
 
+    def _narrower(self, name: str, than: str) -> bool:
+        """Whether `name` is a door or thing inside the zone `than` ("the coffee machine in the kitchen")."""
+        entry = next((e for e in self.index.entries if e.name == name), None)
+        return entry is not None and entry.kind != "zone" and entry.zone == than
+
     def _role(self, p: _Place, verb: str, verb_index: int | None, stationary: bool, intent: str,
               from_scene: bool) -> str:
         prep = p.prep
         is_door = p.match is not None and p.match.kind == "door"
         if prep in ("from", "obj:start"):
             return "start"
+        if prep == "for":
+            return "location" if stationary else "destination"
         if prep in ("to", "into", "towards", "toward", "onto", "obj:dest"):
             return "destination"
         if prep == "obj:via":
