@@ -29,10 +29,10 @@ from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
-from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
+from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import grounding_report
-from grove_tui.language.quantities import Quantity
+from grove_tui.language.quantities import Quantity, extract_quantities
 from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
@@ -221,6 +221,8 @@ class GenerationPipeline:
         started = time.perf_counter()
 
         t0 = clock.begin("rois")
+        quantities = extract_quantities(prompt)
+        check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
         reading = read_prompt(prompt, world, seed=seed)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)

@@ -27,7 +27,9 @@ UNITS = {
     "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19,
 }
 TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
-SCALES = {"hundred": 100, "thousand": 1000}
+# Millions and billions are read so "a billion people" is refused as too many, not ignored.
+SCALES = {"hundred": 100, "thousand": 1000, "million": 10**6, "billion": 10**9, "trillion": 10**12}
+BIG_SCALES = frozenset({"thousand", "million", "billion", "trillion"})  # each closes a group of three digits
 NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
 
 # Words before a number that make it approximate ("about twenty people"): the value stays the

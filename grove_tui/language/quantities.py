@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from grove_tui.language.lexicon import BIG_SCALES as _BIG_SCALES
 from grove_tui.language.lexicon import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS
 from grove_tui.language.lexicon import SCALES as _SCALES
 from grove_tui.language.lexicon import TENS as _TENS
@@ -195,7 +196,7 @@ def _read_number(low: list[str], i: int) -> tuple[int, bool, int] | None:
         if nxt in ("few", "handful"):
             j = i + 2
             return VAGUE[nxt], False, j + 1 if j < n and low[j] == "of" else j
-        if nxt in ("hundred", "thousand"):
+        if nxt in _SCALES:
             return _SCALES[nxt], True, i + 2
         if nxt and lemma(nxt) in PERSON_NOUNS:
             return 1, True, i + 1
@@ -224,7 +225,7 @@ def _spelled(low: list[str], i: int) -> tuple[int, int]:
             current += _TENS[w]
         elif w in _SCALES and (current or total):
             current = max(current, 1) * _SCALES[w]
-            if w == "thousand":
+            if w in _BIG_SCALES:
                 total, current = total + current, 0
         elif w == "and" and j + 1 < len(low) and (low[j + 1] in _UNITS or low[j + 1] in _TENS) and (current >= 100 or total):
             pass

@@ -257,7 +257,7 @@ class _Reader:
                     pass  # "twenty-five"
                 elif x in lx.SCALES and (current or total):
                     current = max(current, 1) * lx.SCALES[x]
-                    if x == "thousand":
+                    if x in lx.BIG_SCALES:
                         total, current = total + current, 0
                 elif x == "and" and j + 1 < self.n and self.low[j + 1] in lx.UNITS and current >= 100:
                     pass
