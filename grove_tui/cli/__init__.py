@@ -27,6 +27,8 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "metrics": ("grove_tui.cli.export:metrics", "Robot and crowd metrics of a simulated bundle."),
     "picture": ("grove_tui.cli.export:picture", "PNG/SVG picture of a scenario and its trajectories."),
     "eval": ("grove_tui.cli.evaluate:evaluate", "Run an evaluation suite against the baselines."),
+    "understanding": ("grove_tui.cli.understanding:understanding",
+                      "Score prompt understanding: each field of the reading, and scenarios for a sample."),
 }
 
 

@@ -173,7 +173,7 @@ def _validate_inputs(world: str, preset: str, prompt: str) -> tuple[Any, Any]:
 
 @click.command("generate")
 @click.option("--no-ui", is_flag=True, help="Generate headless (the only mode of this command; the TUI is `grove`).")
-@click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential) or a path.")
+@click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential, airport) or a path.")
 @click.option("--preset", "preset_name", required=True, help="emergency, queuing, normal, vanilla or a user preset.")
 @click.option("--prompt", required=True, help="The scenario in one sentence.")
 @click.option("--seed", type=click.IntRange(0, 2**32 - 1), default=0, show_default=True,
