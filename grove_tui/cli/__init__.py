@@ -29,6 +29,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "eval": ("grove_tui.cli.evaluate:evaluate", "Run an evaluation suite against the baselines."),
     "understanding": ("grove_tui.cli.understanding:understanding",
                       "Score prompt understanding: each field of the reading, and scenarios for a sample."),
+    "open": ("grove_tui.cli.open:open_command", "Open a saved scenario bundle in the app (inspect screen)."),
 }
 
 
@@ -111,6 +112,11 @@ def main(ctx: click.Context, model: str | None, roi_model: str | None, bt_model:
     ctx.ensure_object(dict)
     ctx.obj.update(model=model, roi_model=roi_model, bt_model=bt_model)
     if ctx.invoked_subcommand is None:
-        from grove_tui.tui.app import run_app
+        sys.exit(open_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
 
-        sys.exit(run_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
+
+def open_app(**options: Any) -> int:
+    """Run the terminal app (the one way from the command line into the TUI); returns its exit code."""
+    from grove_tui.tui.app import run_app
+
+    return run_app(**options)
