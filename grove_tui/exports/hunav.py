@@ -16,6 +16,18 @@ and a C++ implementation know their ports:
                                     StopAndWaitTimerAction on the others
 
 Goals are written once into `global_goals` (ids consecutive from 1) and referenced by id.
+
+What HuNavSim 2.0 needs beyond node names (robotics-upo/hunav_sim 2.0 code, `namespace hunav`, as
+stored in the public code index; see bt/hunav_compat.py for the node table):
+- hunav_loader.cpp declares `<agent>.goals` as PARAMETER_INTEGER_ARRAY: an empty YAML list has no
+  type and aborts the loader, so every agent lists at least one goal (its tree's goals, else its start).
+- bt_node.cpp ticks every root on every ComputeAgents call and BT.CPP 4 resets a completed root, so
+  each tree runs once and then holds its final state (bt/hunav_compat.wrap_for_hunav).
+- go_to_node.cpp reads `tolerance` but sets the temporary goal's radius to a constant and succeeds on
+  `goalReached` (radius + 0.1 m): every GoTo is written with the tolerance HuNavSim applies.
+- Agents are never removed: evacuees walk through their exit door to their own point outside it.
+- 2.0 reacts to the robot only through the tree: a Surprised/Scared/Curious/Threatening agent gets
+  the reaction GROVE's simulation wraps around its tree.
 """
 
 from __future__ import annotations
@@ -32,6 +44,8 @@ import yaml
 from lxml import etree
 
 from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.bt.hunav_compat import (hunav_loading_problems, prefix_node_ids, restrict_to_hunav_ports,
+                                       wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.xml import check_tree_text, parse_point_list
 from grove_tui.errors import GroveError
@@ -53,7 +67,25 @@ HUNAV_NODES = {name: spec for name, spec in NODES.items() if spec.origin != "gro
 }
 EXPORT_MARKER = ".grove-hunav-export"
 SPAWN_HEIGHT = 1.25  # HuNavSim's Gazebo actors stand on z = 1.25
-GOAL_TOLERANCE = 0.3
+# go_to_node.cpp (2.0) sets the temporary goal radius to 0.1 and finishes on AgentManager::goalReached,
+# which adds 0.1 m: 0.2 m whatever `tolerance` says. Written as is so the file says what HuNavSim does.
+GOAL_TOLERANCE = 0.2
+GOAL_RADIUS = 0.1  # the agent's own goals (RegularNav); reach = radius + 0.1 m, as GoTo's
+# Simulators as HuNavSim 2.0's agent manager names them (bt_node.cpp: the wrapper package it loads
+# trees from depends on the loader's `simulator` parameter).
+SIMULATOR_PACKAGES = {
+    "Gazebo Classic": "hunav_gazebo_wrapper",
+    "Gazebo Fortress": "hunav_gazebo_fortress_wrapper",
+    "Isaac Sim": "hunav_isaac_wrapper",
+    "Webots": "hunav_webots_wrapper",
+}
+# Evacuees' points outside their exit: rows across the door, this far apart (more than two bodies
+# plus HuNavSim's 0.2 m reach, so nobody stands on anybody's goal), first row this far out.
+EXIT_SPREAD_SPACING = 1.0
+EXIT_SPREAD_FIRST_ROW = 2.0
+EXIT_SPREAD_PER_ROW = 5
+HOLD_WAIT_SECONDS = 60.0
+KEPT_NODE_PREFIX = "Grove"
 STREAMLINE_STEP = 0.2
 WANDER_LEG_SECONDS = 12.0
 
@@ -88,6 +120,7 @@ class HunavExport:
     nodes_model: Path | None
     lowered: bool
     trajectories: tuple[Path, ...] = ()
+    readme: Path | None = None
 
 
 @dataclass
@@ -100,6 +133,8 @@ class _AgentContext:
     grid: object | None
     planner: object | None
     seed: int
+    exit_rank: dict[tuple[int, str], int] = field(default_factory=dict)
+    world: object | None = None
 
 
 def _safe_parser() -> etree.XMLParser:
@@ -128,7 +163,9 @@ def _wait(seconds: float) -> etree._Element:
 
 
 def _sequence(children: Sequence[etree._Element], name: str) -> etree._Element:
-    seq = etree.Element("Sequence", {"name": name})
+    # With memory: when a robot reaction halts the route, the agent resumes at the leg it was on
+    # instead of walking back to the first point (BT.CPP 4 keeps the index across halt()).
+    seq = etree.Element("SequenceWithMemory", {"name": name})
     for child in children:
         seq.append(child)
     return seq
@@ -175,10 +212,10 @@ def _lower_queue(el: etree._Element, ctx: _AgentContext, where: str) -> etree._E
     slots = _queue_slots(service, spacing, rank + 1, ctx)
     steps: list[etree._Element] = []
     # Walk to the slot behind everyone who queued first, then advance one slot per service time.
-    steps += _route([slots[rank]], ctx, tolerance=0.2)
+    steps += _route([slots[rank]], ctx)
     for k in range(rank, 0, -1):
         steps.append(_wait(service_time))
-        steps += _route([slots[k - 1]], ctx, tolerance=0.2)
+        steps += _route([slots[k - 1]], ctx)
     steps.append(_wait(service_time))  # being served at the head
     return _sequence(steps, f"Queue_{name}")
 
@@ -236,7 +273,42 @@ def _lower_field(el: etree._Element, ctx: _AgentContext, where: str) -> etree._E
         raise ExportError(f"{where}: FollowVelocityField on line {el.sourceline} names field {field_id!r}, "
                           f"which the scenario does not list (fields: {sorted(ctx.scenario.fields)})")
     points = _streamline(ctx.bundle / rel, ctx.agent.start, exit_point, ctx)
+    points += _beyond_exit(el.get("exit", ""), ctx)
     return _sequence(_route(points, ctx), f"FollowVelocityField_{el.get('exit', 'exit')}")
+
+
+def _beyond_exit(door_name: str, ctx: _AgentContext) -> list[Point]:
+    """Through the door and on to this evacuee's own point outside, apart from everyone else's.
+
+    GROVE removes an evacuee at the door; HuNavSim never removes agents and a GoTo goal holds only
+    0.2 m, so without this every evacuee would end on the same point in the doorway.
+    """
+    world = ctx.world
+    if world is None or not door_name:
+        return []
+    try:
+        door = world.find(door_name)
+    except GroveError:
+        return []
+    if not hasattr(door, "outward_point"):
+        return []
+    rank = ctx.exit_rank.get((ctx.agent.id, door_name), 0)
+    slot = 0
+    nx, ny = -door.normal[0], -door.normal[1]
+    ax, ay = door.along
+    # Walk the slots in order and skip any that land inside a zone (another building part).
+    for _ in range(10000):
+        row, column = divmod(slot, EXIT_SPREAD_PER_ROW)
+        lateral = (column - (EXIT_SPREAD_PER_ROW - 1) / 2.0) * EXIT_SPREAD_SPACING
+        out = EXIT_SPREAD_FIRST_ROW + row * EXIT_SPREAD_SPACING
+        point = (door.position[0] + nx * out + ax * lateral, door.position[1] + ny * out + ay * lateral)
+        slot += 1
+        if world.zone_at(*point) is not None:
+            continue
+        if rank == 0:
+            return [door.outward_point(1.0), (round(point[0], 2), round(point[1], 2))]
+        rank -= 1
+    return [door.outward_point(1.0)]
 
 
 def _lower_wander(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element:
@@ -284,8 +356,7 @@ def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) ->
     if tag == "GoTo" and el.get("x") is not None:  # GROVE's GoTo; HuNavSim's own names only a goal_id
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
         waypoints = list(parse_point_list(el.get("waypoints", "")))
-        tolerance = float(el.get("tolerance", str(GOAL_TOLERANCE)))
-        return _sequence(_route(waypoints + [target], ctx, tolerance), f"GoTo_{el.get('target', 'target')}")
+        return _sequence(_route(waypoints + [target], ctx), f"GoTo_{el.get('target', 'target')}")
     if tag == "Wait":
         return _wait(float(el.get("duration", "5")))
     if tag == "Queue":
@@ -330,13 +401,14 @@ def lower_tree(xml: str, ctx: _AgentContext, where: str, world=None) -> str:
     return etree.tostring(root, pretty_print=True, encoding="unicode")
 
 
-def _queue_ranks(scenario: Scenario, trees: dict[int, str]) -> dict[tuple[int, str], int]:
-    """Sequential allocation: each queue's members in agent-id order."""
+def _queue_ranks(scenario: Scenario, trees: dict[int, str], tag: str = "Queue",
+                 key: str = "service_point") -> dict[tuple[int, str], int]:
+    """Sequential allocation: the members of each `tag` node's place (`key`), in agent-id order."""
     members: dict[str, list[int]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         root = etree.fromstring(trees[agent.id].encode("utf-8"), _safe_parser())
-        for el in root.iter("Queue"):
-            name = el.get("service_point", "service point")
+        for el in root.iter(tag):
+            name = el.get(key, "service point")
             if agent.id not in members.setdefault(name, []):
                 members[name].append(agent.id)
     return {(a, name): rank for name, ids in members.items() for rank, a in enumerate(ids)}
@@ -350,14 +422,18 @@ def _initial_heading(agent: AgentSpec) -> float:
 
 
 def _behavior_block(agent: AgentSpec) -> dict[str, object]:
+    from grove_tui.simulation.simulation import REACTION_DEFAULTS
+
     kind = agent.behavior if agent.behavior in BEHAVIOR_TYPES else "Regular"
+    # The tree carries the reaction (wrap_for_hunav); these mirror its values for tools that read them.
+    _, distance, duration, once = REACTION_DEFAULTS.get(kind, ("", 0.0, 40.0, True))
     return {
         "type": kind,
         "configuration": 0,
-        "duration": 40.0,
-        "once": True,
+        "duration": float(duration),
+        "once": bool(once),
         "vel": round(min(max(agent.max_vel, 0.0), 1.8), 3),
-        "dist": 0.0,
+        "dist": float(distance),
         "goal_force_factor": 2.0,
         "obstacle_force_factor": 10.0,
         "social_force_factor": 5.0,
@@ -405,6 +481,9 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     atomic step. `out_dir` may be new, empty or an earlier export; another folder only with `overwrite`.
     """
     bundle = Path(bundle_dir)
+    if simulator not in SIMULATOR_PACKAGES:
+        raise ExportError(f"--simulator {simulator!r}: HuNavSim 2.0 knows " + ", ".join(map(repr, SIMULATOR_PACKAGES))
+                          + " (the names its agent manager compares the loader's `simulator` parameter with)")
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
@@ -431,30 +510,48 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, scenario.resolution)
         planner = ThetaStarPlanner(grid)
 
+    from grove_tui.simulation.simulation import HUNAV_LOOPING_NODES, REACTION_DEFAULTS
+
     goals = GoalTable()
     ranks = _queue_ranks(scenario, trees) if lower else {}
+    exit_ranks = _queue_ranks(scenario, trees, "FollowVelocityField", "exit") if lower else {}
     written: dict[str, str] = {}
     agent_entries: dict[str, dict[str, object]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         where = str(bundle / agent.tree)
-        ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed)
+        ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
+                            exit_rank=exit_ranks, world=world)
         goal_ids = [goals.id_of(g) for g in agent.goals]
         xml = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
         xml = _rename_main_tree(xml, "DefaultTree")
         problems = check_tree_text(xml, source=where, nodes=HUNAV_NODES if lower else NODES)
         if problems:
             raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))
+        xml = wrap_for_hunav(xml, reaction=REACTION_DEFAULTS.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS,
+                             looping=HUNAV_LOOPING_NODES)
+        if not lower:
+            # Kept GROVE nodes get their own IDs, so GROVE's GoTo(target, x, y) never clashes with
+            # HuNavSim's registered GoTo(goal_id); a C++ plugin must register them under these names.
+            xml = prefix_node_ids(xml, GROVE_ONLY, KEPT_NODE_PREFIX)
+        xml = restrict_to_hunav_ports(xml)
+        if lower:
+            problems = hunav_loading_problems(xml)
+            if problems:
+                raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems))
+        if not goal_ids:
+            # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
+            goal_ids = _tree_goal_ids(xml) or [goals.id_of(agent.start)]
         written[f"{base}__agent_{agent.id}_bt.xml"] = xml
         agent_entries[f"agent{agent.id}"] = {
             "id": agent.id,
             "skin": agent.id % 5,
             "group_id": agent.group,
-            "max_vel": round(agent.max_vel, 3),
-            "radius": round(agent.radius, 3),
-            "goal_radius": GOAL_TOLERANCE,
+            "max_vel": round(float(agent.max_vel), 3),
+            "radius": round(float(agent.radius), 3),
+            "goal_radius": GOAL_RADIUS,
             "cyclic_goals": False,
-            "init_pose": {"x": round(agent.start[0], 3), "y": round(agent.start[1], 3), "z": SPAWN_HEIGHT,
-                          "h": round(_initial_heading(agent), 3)},
+            "init_pose": {"x": round(float(agent.start[0]), 3), "y": round(float(agent.start[1]), 3),
+                          "z": SPAWN_HEIGHT, "h": round(_initial_heading(agent), 3)},
             "behavior": _behavior_block(agent),
             "goals": goal_ids,
         }
@@ -469,7 +566,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     }
     params.update(agent_entries)
     document = {"hunav_loader": {"ros__parameters": params}}
-    nodes_model = None if lower else treenodes_model_xml()
+    nodes_model = None if lower else prefix_node_ids(treenodes_model_xml(), GROVE_ONLY, KEPT_NODE_PREFIX)
+    readme = export_readme(scenario, base, world_name, simulator, sorted(written), lower)
 
     copied: list[str] = []
     with atomic_directory(out, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite) as staging:
@@ -481,6 +579,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             (staging / name).write_text(xml, encoding="utf-8")
         if nodes_model is not None:
             (staging / "grove_nodes_model.xml").write_text(nodes_model, encoding="utf-8")
+        (staging / "README.md").write_text(readme, encoding="utf-8")
     return HunavExport(
         directory=out,
         agents_yaml=out / f"{base}.yaml",
@@ -488,7 +587,95 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         nodes_model=None if nodes_model is None else out / "grove_nodes_model.xml",
         lowered=lower,
         trajectories=tuple(out / name for name in copied),
+        readme=out / "README.md",
     )
+
+
+def _tree_goal_ids(xml: str) -> list[int]:
+    """The literal global goal ids a tree's nodes name, first use first."""
+    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
+    ids: list[int] = []
+    for el in root.iter():
+        value = el.get("goal_id") if isinstance(el.tag, str) else None
+        if value is not None and value.isdigit() and int(value) not in ids:
+            ids.append(int(value))
+    return ids
+
+
+def robot_launch_arguments(scenario: Scenario) -> dict[str, str]:
+    """hunav_gazebo_wrapper's robot pose launch arguments (launch/simulation.launch.py: gzpose_x/y/Y)."""
+    robot = scenario.robot
+    if robot is None:
+        return {}
+    heading = 0.0
+    if robot.path and len(robot.path) > 1:
+        (x0, y0), (x1, y1) = robot.path[0][:2], robot.path[1][:2]
+        heading = math.atan2(y1 - y0, x1 - x0)
+    elif robot.goal is not None:
+        heading = math.atan2(robot.goal[1] - robot.start[1], robot.goal[0] - robot.start[0])
+    return {"gzpose_x": f"{robot.start[0]:.3f}", "gzpose_y": f"{robot.start[1]:.3f}", "gzpose_Y": f"{heading:.3f}"}
+
+
+def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str, tree_files: list[str],
+                  lowered: bool) -> str:
+    """Where each exported file goes and how to start the scenario, for the README beside them."""
+    package = SIMULATOR_PACKAGES[simulator]
+    launch = robot_launch_arguments(scenario)
+    args = " ".join([f"configuration_file:={base}.yaml", f"environment_name:={world_name}"]
+                    + [f"{k}:={v}" for k, v in launch.items()])
+    lines = [
+        f"# HuNavSim 2.0 scenario exported by GROVE ({simulator})",
+        "",
+        f"World `{world_name}`, {len(scenario.agents)} agents, prompt: {scenario.prompt!r}.",
+        "",
+        "## Where the files go",
+        "",
+        f"- `{base}.yaml` -> `<ws>/src/{package}/scenarios/` (read by `hunav_loader`; the launch file takes it "
+        "as `configuration_file`).",
+        f"- `{base}__agent_<id>_bt.xml` ({len(tree_files)} files) -> `<ws>/src/{package}/behavior_trees/`: the "
+        "agent manager loads `<yaml_base_name>__agent_<id>_bt.xml` from the *source* folder of the wrapper "
+        "(bt_node.cpp `share_to_src_path`), not from `install/`.",
+        f"- `{world_name}.world` and `{world_name}.yaml`/`{world_name}.pgm`, when exported with the world, go to "
+        f"`<ws>/src/{package}/worlds/` and `maps/`: the launch loads `worlds/<environment_name>.world` and "
+        "`maps/<environment_name>.yaml`.",
+        "",
+        "## Run",
+        "",
+        "```bash",
+        f"ros2 launch {package} simulation.launch.py {args}",
+        "```",
+        "",
+    ]
+    if scenario.robot is not None and scenario.robot.goal is not None:
+        gx, gy = scenario.robot.goal
+        lines += [
+            "The robot's goal, for your navigation stack and HuNavSim's evaluator (which starts recording when a "
+            "goal arrives on `goal_pose`):",
+            "",
+            "```bash",
+            "ros2 topic pub --once /goal_pose geometry_msgs/msg/PoseStamped "
+            f"\"{{header: {{frame_id: map}}, pose: {{position: {{x: {gx:.3f}, y: {gy:.3f}}}, orientation: {{w: 1.0}}}}}}\"",
+            "```",
+            "",
+        ]
+    lines += [
+        "## How GROVE's behaviors became HuNavSim's",
+        "",
+        "- Each tree runs once, then the agent holds where it ended (HuNavSim ticks every root each step and "
+        "BehaviorTree.CPP restarts a finished root).",
+        "- Every GoTo reaches its goal within 0.2 m: HuNavSim 2.0's GoTo reads `tolerance` but does not apply it.",
+        "- Timed nodes: StopAndWaitTimerAction, ConversationFormation, TimeDelay, Delay, Timeout and the `duration` "
+        "of HuNavSim's stateful nodes count wall-clock seconds in HuNavSim (GROVE counts simulation seconds); "
+        "TimeExpiredCondition and the *Nav reactions count simulation time. Run Gazebo at real time factor 1 "
+        "for the two to agree.",
+        "- Evacuees walk through their exit to their own point outside (HuNavSim never removes agents).",
+        "- Surprised, Scared, Curious and Threatening agents carry their robot reaction in the tree "
+        "(IsRobotVisible then the *Nav node), as HuNavSim 2.0 reacts only through trees.",
+    ]
+    if not lowered:
+        lines += ["- Kept GROVE nodes are named `Grove<Node>` (see `grove_nodes_model.xml`); HuNavSim loads these "
+                  "trees only with a plugin that registers them."]
+    return "\n".join(lines) + "\n"
 
 
 def copy_trajectories(bundle_dir: Path, out_dir: Path) -> list[str]:
