@@ -18,6 +18,7 @@ from lxml import etree
 
 from grove_tui.bt.hunav_compat import HUNAV_NODES, hunav_loading_problems, restrict_to_hunav_ports
 from grove_tui.exports.hunav import GOAL_TOLERANCE, ExportError, export_hunav
+from grove_tui.exports.hunav_loader_check import check_hunav_export, check_loader_parameters
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.pipeline import GenerationResult
 from grove_tui.generation.planning import plan_operational
@@ -202,3 +203,32 @@ def test_hunav_node_table_covers_the_manifests_hunavsim_nodes():
 
     grove_side = {name for name, spec in NODES.items() if spec.origin == "hunavsim"}
     assert grove_side <= set(HUNAV_NODES)
+
+
+def test_loader_emulation_passes_the_export_and_catches_what_aborts_hunavsim(hospital_export):
+    _, export = hospital_export
+    assert check_hunav_export(export.agents_yaml) == []
+    document = yaml.safe_load(export.agents_yaml.read_text())
+    params = document["hunav_loader"]["ros__parameters"]
+    params["agent1"]["goals"] = []                      # no type: the loader aborts (issue 18 row 1)
+    params["agent2"]["goals"] = [len(params["global_goals"]) + 5]   # an id global_goals lacks
+    params["agent3"]["max_vel"] = 1                     # an integer where a double is declared
+    params["global_goals"][1]["x"] = 3                  # likewise
+    problems = check_loader_parameters(document)
+    assert any("agent1.goals is []" in p for p in problems)
+    assert any("agent2.goals names goal" in p for p in problems)
+    assert any("agent3.max_vel is 1" in p for p in problems)
+    assert any("global_goals.1.x is 3" in p for p in problems)
+    del params["global_goals"][2]
+    assert any("jump to 3 after 1" in p for p in check_loader_parameters(document))
+
+
+def test_loader_emulation_names_a_missing_tree(hospital_export, tmp_path):
+    import shutil
+
+    _, export = hospital_export
+    copy = tmp_path / "copy"
+    shutil.copytree(export.directory, copy)
+    (copy / "agents_hospital__agent_2_bt.xml").unlink()
+    problems = check_hunav_export(copy / "agents_hospital.yaml")
+    assert len(problems) == 1 and "agents_hospital__agent_2_bt.xml: missing" in problems[0]

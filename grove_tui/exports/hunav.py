@@ -566,6 +566,11 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     }
     params.update(agent_entries)
     document = {"hunav_loader": {"ros__parameters": params}}
+    from grove_tui.exports.hunav_loader_check import check_loader_parameters
+
+    loader_problems = check_loader_parameters(yaml.safe_load(yaml.safe_dump(document)), f"{base}.yaml")
+    if loader_problems:
+        raise ExportError("HuNavSim's loader would refuse the export: " + "; ".join(loader_problems))
     nodes_model = None if lower else prefix_node_ids(treenodes_model_xml(), GROVE_ONLY, KEPT_NODE_PREFIX)
     readme = export_readme(scenario, base, world_name, simulator, sorted(written), lower)
 
