@@ -1,5 +1,310 @@
-"""The root of every error the core raises on bad input; the UI and CLI show its message as is."""
+"""Every error GROVE raises on purpose, and the one printer the CLI and the app use to show them.
+
+An error carries what a front end needs to show it without knowing its class: a `title` (what kind
+of problem), its message (which file, object or value, and what is wrong), a `hint` (what to do
+about it) and the `exit_code` of the process that stops on it. The codes are four categories,
+one base class each; every domain error derives from exactly one of them:
+
+    2    BadInputError        a file, name or value the user gave is missing or broken
+    3    RuntimeFailure       the input was fine but a stage could not produce a result
+    4    ModelError           a model file or the model process failed
+    130  Cancelled            the user stopped it (Ctrl+C, Escape, a cancel event)
+
+Modelled on harlequin's `exception.py`: an error carries its own title, and one printer formats it.
+The domain errors live here, not beside the code raising them, so the whole vocabulary (and its
+exit codes, documented in the README's table) is one file; their modules re-export them.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import IO, Any
+
+EXIT_OK = 0
+EXIT_BAD_INPUT = 2
+EXIT_RUNTIME_FAILURE = 3
+EXIT_MODEL_ERROR = 4
+EXIT_CANCELLED = 130  # 128 + SIGINT, what a shell reports for Ctrl+C
 
 
 class GroveError(Exception):
-    """A problem with the user's input or environment, described well enough to act on."""
+    """A problem described well enough to act on: the message names the file or object and what is wrong."""
+
+    title: str = "GROVE failed"
+    hint: str = ""
+    exit_code: int = EXIT_RUNTIME_FAILURE
+
+    def __init__(self, message: str = "", *, hint: str | None = None, title: str | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        # Per-instance overrides: the caller often knows a better next step than the class does.
+        if hint is not None:
+            self.hint = hint
+        if title is not None:
+            self.title = title
+
+
+# -- the four categories -------------------------------------------------------------------------
+
+
+class BadInputError(GroveError):
+    """Something the user gave (a file, a name, a value) is missing or broken."""
+
+    title = "Bad input"
+    exit_code = EXIT_BAD_INPUT
+
+
+class RuntimeFailure(GroveError):
+    """The input was acceptable but a stage could not produce its result."""
+
+    title = "Failed"
+    exit_code = EXIT_RUNTIME_FAILURE
+
+
+class ModelError(GroveError):
+    """A model file or the model process cannot do what was asked; the message says which and why."""
+
+    title = "Model error"
+    hint = "Check the model file with `grove models list`, or name another GGUF with --model PATH."
+    exit_code = EXIT_MODEL_ERROR
+
+
+class Cancelled(GroveError):
+    """The user (Ctrl+C, Escape) or a caller's cancel event stopped the work; nothing was produced."""
+
+    title = "Cancelled"
+    exit_code = EXIT_CANCELLED
+
+
+# -- bad input (2) -------------------------------------------------------------------------------
+
+
+class SettingsError(BadInputError):
+    """The configuration file or a GROVE_* variable is not valid; the message names the key."""
+
+    title = "Invalid configuration"
+    hint = "Fix the key named above in the config file (or the GROVE_* variable), or unset GROVE_CONFIG_FILE."
+
+
+class WorldError(BadInputError):
+    """A world could not be loaded or a name is unknown; `problems` lists every issue found."""
+
+    title = "World error"
+    hint = "Fix the world file (worlds/README.md explains the format; `grove worlds check FILE` lists every problem)."
+
+    def __init__(self, message: str, problems: Iterable[Any] = (), *, hint: str | None = None) -> None:
+        super().__init__(message, hint=hint)
+        # world.model.WorldProblem records; typed loosely because errors sits below the world layer.
+        self.problems: tuple[Any, ...] = tuple(problems)
+
+
+class PresetError(BadInputError):
+    """A preset file is missing or malformed; the message names the file and the key."""
+
+    title = "Preset error"
+    hint = "Fix the preset file named above, or choose another preset (presets/*.yaml)."
+
+
+class PromptError(BadInputError):
+    """The prompt itself asks for something impossible: empty, a place the world lacks, too many people."""
+
+    title = "Prompt error"
+    hint = "Rephrase the prompt with places of this world and fewer people."
+
+
+class ScenarioError(BadInputError):
+    """A scenario file is malformed; the message names the file and the key."""
+
+    title = "Scenario error"
+    hint = "Regenerate the bundle (grove generate), or fix scenario.yaml by hand."
+
+
+class BundleError(BadInputError):
+    """A bundle directory is missing a file or holds a broken one; the message names it."""
+
+    title = "Bundle error"
+    hint = "Give the folder `grove generate --out` wrote (it holds scenario.yaml)."
+
+
+class EventLogError(BadInputError):
+    """An event log line that is not an event record; the message names the file and line."""
+
+    title = "Event log error"
+    hint = "Simulate the bundle again (grove simulate BUNDLE) to rewrite events.jsonl."
+
+
+class GridError(BadInputError):
+    """A grid file could not be read."""
+
+    title = "Grid error"
+    hint = "Regenerate the bundle: its grid.npz is broken."
+
+
+class BTError(BadInputError):
+    """A behavior tree that cannot be parsed, validated or run; the message names file, line and problem."""
+
+    title = "Behavior tree error"
+    hint = "`grove bt validate FILE` lists every problem; `grove bt manifest` shows the nodes and ports."
+
+
+class OutputError(BadInputError):
+    """An output path that GROVE must not or cannot write: the message names it and what to do."""
+
+    title = "Output error"
+
+
+class JobFileError(BadInputError):
+    """The job file itself cannot be read (missing, not UTF-8, too large, no jobs)."""
+
+    title = "Job file error"
+    hint = 'Give a file with one JSON object per line: {"world": ..., "preset": ..., "prompt": ...}.'
+
+
+class EvalError(BadInputError):
+    """An evaluation suite or results file is missing or malformed."""
+
+    title = "Evaluation error"
+    hint = "Fix the suite file (eval/suite.yaml shows the format)."
+
+
+class MetricsError(BadInputError):
+    """A bundle whose run cannot be measured: no trajectories, or broken ones."""
+
+    title = "Metrics error"
+    hint = "Simulate the bundle first: grove simulate BUNDLE."
+
+
+class ExportError(BadInputError):
+    """A bundle that cannot be exported as asked; the message names the file or the missing part."""
+
+    title = "Export error"
+
+
+class TrajectoryExportError(ExportError):
+    """Trajectories that cannot be written for PedPy/JuPedSim."""
+
+
+class StreamExportError(ExportError):
+    """A bundle the ROS 2 or Foxglove export cannot read; the message names the file."""
+
+
+class RosbagExportError(ExportError):
+    """A ROS 2 bag that cannot be written (missing `ros` extra, unsimulated bundle, bad output)."""
+
+
+class FoxgloveExportError(ExportError):
+    """A Foxglove MCAP that cannot be written (missing `ros` extra, unsimulated bundle, bad output)."""
+
+
+class PictureError(ExportError):
+    """A picture that cannot be drawn (unknown format, missing plotting extra)."""
+
+    title = "Picture error"
+
+
+# -- runtime failures (3) ----------------------------------------------------------------------
+
+
+class GenerationError(RuntimeFailure):
+    """Generation cannot produce a valid scenario from this input; the message says why."""
+
+    title = "Generation failed"
+    hint = "Rephrase the prompt with places from this world, or retry with another seed."
+
+
+class DraftError(RuntimeFailure):
+    """A draft (the model's JSON) that is not valid for this request; the message names the JSON path."""
+
+    title = "Invalid model answer"
+    hint = "The model's answer did not fit the scenario: retry with another seed, or rephrase the prompt."
+
+
+class PlanningError(RuntimeFailure):
+    """No collision-free path: an endpoint is inside an obstacle or the endpoints are disconnected."""
+
+    title = "Planning failed"
+    hint = "A place in the prompt cannot be reached: name reachable zones, or fix the world's doors."
+
+
+class RetrievalError(RuntimeFailure):
+    """Retrieval cannot run: the embedding model, node database or index is unusable."""
+
+    title = "Retrieval failed"
+    hint = "Rebuild the node index: grove rag build."
+
+
+class NodeDbError(RuntimeFailure):
+    """The node database is inconsistent with itself or with the node manifest."""
+
+    title = "Node database error"
+    hint = "Fix the node documents named above (node_db/), then grove rag build."
+
+
+class GrammarError(RuntimeFailure):
+    """The schema uses something outside the subset the grammar converter supports."""
+
+    title = "Grammar error"
+
+
+class CrowdError(RuntimeFailure):
+    """Bad input to the crowd: unknown agent index, mode, field, or a malformed array."""
+
+    title = "Simulation error"
+
+
+class RecordingError(RuntimeFailure):
+    """A recorder was misused (bad fps, mismatched arrays) or an output could not be written."""
+
+    title = "Recording error"
+
+
+# -- the printer -----------------------------------------------------------------------------------
+
+UNEXPECTED_HINT = "This is a bug in GROVE: please report it with the command you ran."
+
+
+@dataclass(frozen=True)
+class ErrorDescription:
+    """What a front end shows for an error: the CLI prints `line`, the app a title, message and hint."""
+
+    title: str
+    message: str
+    hint: str
+    exit_code: int
+
+    @property
+    def text(self) -> str:
+        """Title and message, as the app's panels show them above the hint."""
+        return f"{self.title}: {self.message}"
+
+    @property
+    def line(self) -> str:
+        """One line, `error: ...`: scripts and logs read one line per failure."""
+        hint = f" (hint: {self.hint})" if self.hint else ""
+        return f"error: {self.message}{hint}"
+
+
+def _one_line(text: str) -> str:
+    # A world's or tree's problem list comes one per line; on one line they stay readable as `a; b`.
+    return "; ".join(part.strip() for part in text.splitlines() if part.strip())
+
+
+def describe_error(error: BaseException) -> ErrorDescription:
+    """Title, one-line message, hint and exit code of any exception (unexpected ones are exit 3)."""
+    if isinstance(error, GroveError):
+        message = _one_line(error.message or str(error)) or error.title.lower()
+        return ErrorDescription(error.title, message, error.hint, error.exit_code)
+    if isinstance(error, KeyboardInterrupt):
+        return ErrorDescription(Cancelled.title, "cancelled", "", EXIT_CANCELLED)
+    message = _one_line(f"{type(error).__name__}: {error}")
+    return ErrorDescription("Unexpected error", message, UNEXPECTED_HINT, EXIT_RUNTIME_FAILURE)
+
+
+def print_error(error: BaseException, file: IO[str] | None = None) -> int:
+    """Write `error: ...` (one line) to stderr; return the exit code the process should end with."""
+    description = describe_error(error)
+    stream = sys.stderr if file is None else file
+    print(description.line, file=stream, flush=True)
+    return description.exit_code

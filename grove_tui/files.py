@@ -19,13 +19,9 @@ import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import OutputError
 
 OwnedTest = Callable[[Path], bool]
-
-
-class OutputError(GroveError):
-    """An output path that GROVE must not or cannot write: the message names it and what to do."""
 
 
 def write_text_atomic(path: str | os.PathLike[str], text: str, encoding: str = "utf-8") -> Path:

@@ -1,28 +1,75 @@
-"""The app's settings: defaults < YAML file in the user config dir < GROVE_* environment variables.
+"""The one settings model: defaults < the config file < GROVE_* environment variables.
 
-The YAML file is `config_dir()/config.yaml` (override the file with GROVE_CONFIG_FILE). Nested
-environment variables use `__`, e.g. `GROVE_SIMULATION__FPS=30`. The `keymap` section maps
-binding ids (shown by F1) to keys, e.g. `keymap: {sim.play: p}`.
+Every GROVE_* variable is read in this module and nowhere else:
+
+    GROVE_CONFIG_FILE      the config file (default: GROVE_CONFIG_DIR/config.yaml)
+    GROVE_CONFIG_DIR       user config directory (user presets in presets/); default platformdirs'
+    GROVE_DATA_DIR         user data directory (models/, runs/, exports/, prompt history)
+    GROVE_CACHE_DIR        user cache directory (retrieval index, compiled kernels)
+    GROVE_MODEL            GGUF for both roles; GROVE_ROI_MODEL / GROVE_BT_MODEL for one role
+    GROVE_LLM_THREADS      llama.cpp threads (default: the cores idle when the model starts)
+    GROVE_<SECTION>__<KEY> any key of the file, e.g. GROVE_SIMULATION__FPS=30
+
+The file is YAML with the sections below (`ui`, `generation`, `simulation`, `export`, `keymap`,
+`models`, `llm_threads`); `models: {roi: PATH, bt: PATH}` picks the model of each role (paths
+relative to the file). The `keymap` section maps binding ids (shown by F1) to keys, e.g.
+`keymap: {sim.play: p}`. A file that is not UTF-8, not YAML, uses tags (`!!python/...`), has an
+unknown key or a bad value, or a bad GROVE_* value, is a SettingsError (exit 2) naming the key.
+The directory variables are read without the file, because the file's default path depends on them.
 """
 
 from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
-from pydantic import BaseModel, Field
-from pydantic_settings import BaseSettings, PydanticBaseSettingsSource, SettingsConfigDict, YamlConfigSettingsSource
+import platformdirs
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic_settings import BaseSettings, InitSettingsSource, PydanticBaseSettingsSource, SettingsConfigDict
 
-from grove_tui.paths import config_dir, data_dir
+from grove_tui.errors import SettingsError
+from grove_tui.paths import APP
+
+MAX_CONFIG_BYTES = 1024 * 1024
+# Set only in the environment: the file names models in its `models:` section, with paths relative to it.
+ENVIRONMENT_ONLY = ("model", "roi_model", "bt_model")
+
+
+def _environment_directory(variable: str, default: str) -> Path:
+    value = os.environ.get(variable)
+    return Path(value).expanduser() if value else Path(default)
+
+
+def cache_dir() -> Path:
+    return _environment_directory("GROVE_CACHE_DIR", platformdirs.user_cache_dir(APP))
+
+
+def data_dir() -> Path:
+    return _environment_directory("GROVE_DATA_DIR", platformdirs.user_data_dir(APP))
+
+
+def config_dir() -> Path:
+    return _environment_directory("GROVE_CONFIG_DIR", platformdirs.user_config_dir(APP))
+
+
+def models_dir() -> Path:
+    """Where `grove models pull` writes and the registry looks for GGUF files."""
+    return data_dir() / "models"
 
 
 def config_file() -> Path:
     override = os.environ.get("GROVE_CONFIG_FILE")
-    return Path(override) if override else config_dir() / "config.yaml"
+    return Path(override).expanduser() if override else config_dir() / "config.yaml"
 
 
-class UISettings(BaseModel):
+class _Section(BaseModel):
+    # A misspelt key inside a section is an error too, not a default silently kept.
+    model_config = ConfigDict(extra="forbid")
+
+
+class UISettings(_Section):
     theme: str = "textual-dark"
     """Textual theme name (any built-in theme)."""
     animation: Literal["none", "basic", "full"] = "none"
@@ -31,7 +78,7 @@ class UISettings(BaseModel):
     """Load the GGUF models in the background as soon as the app opens."""
 
 
-class GenerationSettings(BaseModel):
+class GenerationSettings(_Section):
     world: str | None = None
     """World selected at start (a shipped name or a path); None picks the first shipped world."""
     preset: str = "normal"
@@ -42,7 +89,7 @@ class GenerationSettings(BaseModel):
     """How many prompts the history keeps (Up/Down in the prompt box)."""
 
 
-class SimulationSettings(BaseModel):
+class SimulationSettings(_Section):
     fps: int = Field(default=20, ge=5, le=60)
     """Frames per second of the simulation view."""
     speed: float = Field(default=1.0, gt=0)
@@ -53,13 +100,23 @@ class SimulationSettings(BaseModel):
     """Speed (m/s) of the robot when driven with the arrow keys."""
 
 
-class ExportSettings(BaseModel):
+class ExportSettings(_Section):
     directory: Path = Field(default_factory=lambda: data_dir() / "exports")
     """Where exports are written; each export gets its own sub-directory."""
 
 
+class ModelFiles(_Section):
+    """The config file's `models:` section: a GGUF per role, relative to the config file."""
+
+    roi: str | None = None
+    """GGUF that selects the regions of interest."""
+    bt: str | None = None
+    """GGUF that writes the behavior trees."""
+
+
 class GroveSettings(BaseSettings):
-    model_config = SettingsConfigDict(env_prefix="GROVE_", env_nested_delimiter="__", extra="ignore")
+    # extra="forbid": a misspelt key in the file is an error, not a setting silently ignored.
+    model_config = SettingsConfigDict(env_prefix="GROVE_", env_nested_delimiter="__", extra="forbid")
 
     ui: UISettings = Field(default_factory=UISettings)
     generation: GenerationSettings = Field(default_factory=GenerationSettings)
@@ -67,6 +124,15 @@ class GroveSettings(BaseSettings):
     export: ExportSettings = Field(default_factory=ExportSettings)
     keymap: dict[str, str] = Field(default_factory=dict)
     """Binding id -> comma-separated keys, applied with App.set_keymap."""
+    models: ModelFiles = Field(default_factory=ModelFiles)
+    llm_threads: int | None = Field(default=None, ge=1)
+    """llama.cpp threads (GROVE_LLM_THREADS); None uses the cores idle when the model starts."""
+    model: str | None = None
+    """GROVE_MODEL: GGUF for both roles."""
+    roi_model: str | None = None
+    """GROVE_ROI_MODEL."""
+    bt_model: str | None = None
+    """GROVE_BT_MODEL."""
 
     @classmethod
     def settings_customise_sources(
@@ -77,13 +143,76 @@ class GroveSettings(BaseSettings):
         dotenv_settings: PydanticBaseSettingsSource,
         file_secret_settings: PydanticBaseSettingsSource,
     ) -> tuple[PydanticBaseSettingsSource, ...]:
-        yaml_source = YamlConfigSettingsSource(settings_cls, yaml_file=config_file(), yaml_file_encoding="utf-8")
-        return (init_settings, env_settings, yaml_source)
+        file_source = InitSettingsSource(settings_cls, read_config_file(config_file()))
+        return (init_settings, env_settings, file_source)
+
+    def model_file(self, role: str) -> Path | None:
+        """The config file's model for `role`, resolved against the file's folder; None when unset."""
+        value = getattr(self.models, role)
+        if not value:
+            return None
+        path = Path(value).expanduser()
+        return path if path.is_absolute() else config_file().parent / path
+
+
+def read_config_file(path: Path) -> dict[str, Any]:
+    """The file's mapping ({} when there is no file); SettingsError when it is not a safe YAML mapping."""
+    try:
+        if not path.exists():
+            return {}
+        if not path.is_file():
+            raise SettingsError(f"{path}: not a file")
+        if path.stat().st_size > MAX_CONFIG_BYTES:
+            raise SettingsError(f"{path}: larger than {MAX_CONFIG_BYTES // 1024} KB; a config file is a few lines")
+        text = path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SettingsError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise SettingsError(f"{path}: cannot read it: {exc.strerror}") from None
+    try:
+        # safe_load refuses !!python/... tags: a config file must never run code.
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        where = getattr(exc, "problem_mark", None)
+        line = f" (line {where.line + 1})" if where is not None else ""
+        problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        raise SettingsError(f"{path}: not valid YAML{line}: {problem}") from None
+    if data is None:
+        return {}
+    if not isinstance(data, dict):
+        raise SettingsError(f"{path}: expected a mapping of sections (ui:, generation:, ...), got {type(data).__name__}")
+    misplaced = [key for key in ENVIRONMENT_ONLY if key in data]
+    if misplaced:
+        raise SettingsError(f"{path}: {', '.join(misplaced)} is set by GROVE_{misplaced[0].upper()}; "
+                            "in the file, name models under models: {roi: PATH, bt: PATH}")
+    return data
+
+
+def _validation_message(error: ValidationError) -> str:
+    problems = error.errors()
+    first = problems[0]
+    key = ".".join(str(part) for part in first["loc"]) or "(top level)"
+    value = f" (got {first['input']!r})" if "input" in first and not isinstance(first["input"], dict) else ""
+    more = f"; and {len(problems) - 1} more" if len(problems) > 1 else ""
+    return f"{key}: {first['msg']}{value}{more}"
+
+
+def _source_of(error: ValidationError) -> str:
+    """The GROVE_* variable that set the first bad value, or the config file."""
+    location = [str(part) for part in error.errors()[0]["loc"]]
+    for depth in range(len(location), 0, -1):
+        variable = "GROVE_" + "__".join(location[:depth]).upper()
+        if variable in os.environ:
+            return f"{variable}={os.environ[variable]!r}"
+    return str(config_file())
 
 
 def load_settings() -> GroveSettings:
-    """Read the settings; a broken config file raises pydantic's ValidationError naming the key."""
-    return GroveSettings()
+    """Read the file and the environment; SettingsError (one line, naming the key) when either is bad."""
+    try:
+        return GroveSettings()
+    except ValidationError as error:
+        raise SettingsError(f"{_source_of(error)}: {_validation_message(error)}") from None
 
 
 def history_file() -> Path:

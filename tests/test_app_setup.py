@@ -178,9 +178,9 @@ def test_environment_overrides_the_config_file(tmp_path, monkeypatch):
 
 def test_a_broken_config_value_names_the_key(tmp_path):
     (tmp_path / "config" / "config.yaml").write_text("simulation:\n  fps: fast\n", encoding="utf-8")
-    from pydantic import ValidationError
+    from grove_tui.errors import SettingsError
 
-    with pytest.raises(ValidationError, match="simulation.fps"):
+    with pytest.raises(SettingsError, match="simulation.fps"):
         load_settings()
 
 

@@ -52,8 +52,7 @@ class ScriptedFailure(Exception):
     pass
 
 
-class ModelError(Exception):
-    """Same class name as the engine's, so the screen shows the model hint."""
+from grove_tui.errors import ModelError  # noqa: E402  the engine's own error, so the screen shows its hint
 
 
 FIXED_SCRIPT: list[Any] = [

@@ -11,7 +11,8 @@ import pytest
 from click.testing import CliRunner
 
 from grove_tui.cli import main
-from grove_tui.cli.generate import (EXIT_BAD_INPUT, EXIT_GENERATION_FAILED, EXIT_MODEL_ERROR, EXIT_OK,
+from grove_tui.errors import EXIT_BAD_INPUT, EXIT_MODEL_ERROR, EXIT_OK, EXIT_RUNTIME_FAILURE as EXIT_GENERATION_FAILED
+from grove_tui.cli.generate import (
                                     parse_robot_point)
 from grove_tui.scenario.bundle import load_bundle
 from grove_tui.llm.embedded import embedded_model_path

@@ -16,7 +16,8 @@ from grove_tui.llm.chat_template import QWEN3_EMPTY_THINK, QWEN3_NON_THINKING, d
 from grove_tui.llm.embedded import embedded_model_path
 from grove_tui.llm.gguf_info import check_loadable, read_gguf_info
 from grove_tui.llm.grammar import schema_to_gbnf
-from grove_tui.llm.local import GenerationCancelled, LocalLLM, ModelError
+from grove_tui.errors import Cancelled, ModelError
+from grove_tui.llm.local import LocalLLM
 
 NODES = ["Sequence", "Fallback", "GoTo", "Queue", "Wait", "Wander"]
 ROIS = ["pharmacy", "pharmacy_counter", "main_entrance"]
@@ -203,7 +204,7 @@ def test_cancel_stops_a_generation_within_a_second(embedded_llm):
             cancelled_at.append(time.monotonic())
             cancel.set()
 
-    with pytest.raises(GenerationCancelled):
+    with pytest.raises(Cancelled):
         embedded_llm.generate(MESSAGES, max_tokens=900, length_retries=0, on_token=on_token, cancel=cancel)
     stopped = time.monotonic() - cancelled_at[0]
     assert stopped < 1.5, f"cancel took {stopped:.2f} s"  # the one timing requirement: within a second, with slack
@@ -216,7 +217,7 @@ def test_cancel_before_the_first_token_stops_a_stuck_worker(embedded_llm):
     cancel = threading.Event()
     cancel.set()
     started = time.monotonic()
-    with pytest.raises(GenerationCancelled):
+    with pytest.raises(Cancelled):
         embedded_llm.generate([{"role": "user", "content": "long text " * 300}], max_tokens=64, cancel=cancel)
     assert time.monotonic() - started < 1.5
     assert embedded_llm.generate("Hi", grammar=schema_to_gbnf({"const": 1}), max_tokens=4).text == "1"

@@ -18,6 +18,7 @@ from grove_tui.llm.embedded import EMBEDDED_MODEL, embedded_model_path
 from grove_tui.llm.errors import ModelError
 from grove_tui.llm.gguf_info import read_gguf_info
 from grove_tui.llm.pull import CatalogEntry, pull_model
+from grove_tui.errors import SettingsError
 from grove_tui.llm.registry import list_models, resolve_models
 
 
@@ -95,7 +96,7 @@ def test_an_explicit_bad_path_is_an_error_not_a_fallback(user_dirs, tmp_path, mo
     config = user_dirs / "grove_config_dir"
     config.mkdir()
     (config / "config.yaml").write_text("models:\n  planner: x.gguf\n")
-    with pytest.raises(ModelError, match="unknown model role"):
+    with pytest.raises(SettingsError, match="models.planner: Extra inputs are not permitted"):
         resolve_models()
 
 

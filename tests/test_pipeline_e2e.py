@@ -185,12 +185,12 @@ def test_bad_prompts_fail_clearly_and_write_nothing(llm, retriever, tmp_path, pr
 def test_cancel_before_start_stops_at_the_first_stage(llm, retriever):
     import threading
 
-    from grove_tui.llm.errors import GenerationCancelled
+    from grove_tui.errors import Cancelled
 
     cancel = threading.Event()
     cancel.set()
     pipeline = GenerationPipeline(load_world("hospital"), load_preset("queuing"), None, llm, retriever)
-    with pytest.raises(GenerationCancelled):
+    with pytest.raises(Cancelled):
         pipeline.run("Eight patients queue at the pharmacy counter", cancel=cancel)
 
 

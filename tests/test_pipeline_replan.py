@@ -18,7 +18,7 @@ from grove_tui.generation.planning import goals_from_tree
 from grove_tui.generation.presets import GenerationError, PromptError, load_preset
 from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.world import parse_world
-from grove_tui.llm.errors import GenerationCancelled
+from grove_tui.errors import Cancelled
 from grove_tui.llm.local import Generation
 from helpers.clinic import CLINIC
 
@@ -227,5 +227,5 @@ def test_cancel_stops_the_replan(generated):
     pipeline, _, result = generated
     cancel = threading.Event()
     cancel.set()
-    with pytest.raises(GenerationCancelled):
+    with pytest.raises(Cancelled):
         pipeline.replan(result, {0: 5}, cancel=cancel)

@@ -30,7 +30,7 @@ import numpy as np
 import yaml
 from lxml import etree
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import EvalError, GroveError
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, Scenario
@@ -40,10 +40,6 @@ NEAR_POINT = 1.5  # an agent "targets" a door or entity when its final goal is t
 STOP_SPEED = 0.1
 GO_SPEED = 0.5
 STOP_SECONDS = 1.0
-
-
-class EvalError(GroveError):
-    pass
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import MetricsError
 from grove_tui.scenario.events import SimEvent
 from grove_tui.analysis.force_metrics import force_metrics, force_series
 
@@ -27,10 +27,6 @@ COLLISION_GAP = 0.02
 # HuNavSim places a group's interaction centre at the mean of points this far ahead of its members.
 GROUP_CENTRE_AHEAD = 1.5
 ROBOT_ID = 0
-
-
-class MetricsError(GroveError):
-    pass
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ from pathlib import Path
 from lxml import etree
 
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec, PortSpec
-from grove_tui.errors import GroveError
+from grove_tui.errors import BTError
 
 MAX_BYTES = 1_000_000
 MAX_DEPTH = 64
@@ -37,10 +37,6 @@ _BLACKBOARD_POINTER = re.compile(r"^\{([A-Za-z_@][A-Za-z0-9_.@:-]*)\}$")
 _ATTRIBUTES_ANY_NODE = {"name", "ID", "_description", "_uid", "_fullpath"}
 _SCRIPTING_ATTRIBUTES = {"_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", "_onFailure", "_onHalted",
                          "_post"}
-
-
-class BTError(GroveError):
-    """A behavior tree that cannot be parsed, validated or run; the message names file, line and problem."""
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import importlib
 import sys
+from typing import Any
 
 import click
 
@@ -28,6 +29,33 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
 
 
 class LazyGroup(click.Group):
+    """The `grove` group: lazy subcommands, and one way every subcommand fails.
+
+    A subcommand raises `GroveError` (or click rejects its arguments); `main` prints one line,
+    `error: ...`, through `grove_tui.errors.print_error` and exits with the error's code (the
+    README's exit-code table). No subcommand ends in a traceback on bad input.
+    """
+
+    def main(self, args: Any = None, prog_name: str | None = None, complete_var: str | None = None,
+             standalone_mode: bool = True, **extra: Any) -> Any:
+        from grove_tui.errors import EXIT_BAD_INPUT, BadInputError, Cancelled, GroveError, print_error
+
+        try:
+            result = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        except GroveError as error:
+            sys.exit(print_error(error))
+        except click.exceptions.Abort:  # Ctrl+C at a click prompt or while a command runs
+            sys.exit(print_error(Cancelled("cancelled")))
+        except KeyboardInterrupt:
+            sys.exit(print_error(Cancelled("cancelled")))
+        except click.ClickException as error:
+            # Usage errors (missing option, bad value) are bad input: one line, like every other error.
+            command = getattr(getattr(error, "ctx", None), "command_path", None) or "grove"
+            print_error(BadInputError(error.format_message(), hint=f"see {command} --help"))
+            sys.exit(EXIT_BAD_INPUT)
+        # standalone_mode=False returns a command's exit code from ctx.exit() / sys.exit() as the result.
+        sys.exit(result if isinstance(result, int) else 0)
+
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(SUBCOMMANDS)
 

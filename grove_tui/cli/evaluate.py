@@ -25,7 +25,6 @@ from rich.table import Table
 def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_ids: str | None,
              seconds: float) -> None:
     """Prompt alignment, plausibility and cost of every case, for GROVE and the baselines."""
-    from grove_tui.errors import GroveError
     from grove_tui.analysis.evaluation import (
         grounding_score,
         load_suite,
@@ -36,25 +35,21 @@ def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_i
     )
 
     err = Console(stderr=True, highlight=False)
-    try:
-        cases = load_suite(suite)
-        if case_ids:
-            wanted = [c.strip() for c in case_ids.split(",") if c.strip()]
-            unknown = sorted(set(wanted) - {c.id for c in cases})
-            if unknown:
-                raise click.BadParameter(f"unknown case id(s): {', '.join(unknown)}", param_hint="--cases")
-            cases = [c for c in cases if c.id in wanted]
+    cases = load_suite(suite)
+    if case_ids:
+        wanted = [c.strip() for c in case_ids.split(",") if c.strip()]
+        unknown = sorted(set(wanted) - {c.id for c in cases})
+        if unknown:
+            raise click.BadParameter(f"unknown case id(s): {', '.join(unknown)}", param_hint="--cases")
+        cases = [c for c in cases if c.id in wanted]
 
-        def progress(index: int, total: int, result) -> None:
-            status = f"[red]failed: {result.error}[/]" if result.error else "ok"
-            err.print(f"[{index}/{total}] {result.case.id} {result.method}: {status}")
+    def progress(index: int, total: int, result) -> None:
+        status = f"[red]failed: {result.error}[/]" if result.error else "ok"
+        err.print(f"[{index}/{total}] {result.case.id} {result.method}: {status}")
 
-        results = run_suite(cases, out_dir, bt_model=model,
-                            methods=[m.strip() for m in methods.split(",") if m.strip()],
-                            sim_seconds=seconds, on_progress=progress)
-    except GroveError as exc:
-        err.print(f"[bold red]error:[/] {exc}")
-        sys.exit(2)
+    results = run_suite(cases, out_dir, bt_model=model,
+                        methods=[m.strip() for m in methods.split(",") if m.strip()],
+                        sim_seconds=seconds, on_progress=progress)
     args = sys.argv[sys.argv.index("eval") + 1:] if "eval" in sys.argv else [str(suite), "--out", str(out_dir)]
     paths = write_results(results, out_dir, command="grove eval " + " ".join(shlex.quote(a) for a in args))
     table = Table(title="GROVE vs baselines (means per preset)")

@@ -4,25 +4,13 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 from pathlib import Path
 
 import click
 from rich.console import Console
-from rich.markup import escape
 from rich.table import Table
 
-from grove_tui.errors import GroveError
-
-EXIT_BAD_INPUT = 2
-
 _bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_okay=False, path_type=Path))
-
-
-def _fail(message: str) -> None:
-    # escape: messages hold user paths and text like `grove-tui[ros]` that rich would read as markup
-    Console(stderr=True).print(f"[bold red]error:[/] {escape(message)}", highlight=False)
-    sys.exit(EXIT_BAD_INPUT)
 
 
 @click.group()
@@ -48,12 +36,8 @@ def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grov
     """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
     from grove_tui.exports.hunav import export_hunav
 
-    try:
-        result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name,
-                              overwrite=overwrite, trajectories=True)
-    except GroveError as exc:
-        _fail(str(exc))
-        return
+    result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name,
+                          overwrite=overwrite, trajectories=True)
     copied = result.trajectories
     click.echo(str(result.agents_yaml))
     for path in result.trees:
@@ -72,11 +56,7 @@ def export_trajectories_command(bundle: Path, out_dir: Path) -> None:
     """Trajectories as CSV and as a JuPedSim sqlite file that PedPy loads, with the walkable area."""
     from grove_tui.exports.trajectories import export_trajectories
 
-    try:
-        paths = export_trajectories(bundle, out_dir)
-    except GroveError as exc:
-        _fail(str(exc))
-        return
+    paths = export_trajectories(bundle, out_dir)
     for path in paths:
         click.echo(str(path))
 
@@ -94,11 +74,7 @@ def metrics(bundle: Path, as_json: bool) -> None:
     """Robot (HuNavSim evaluator) and crowd metrics of a simulated bundle; also writes metrics.json."""
     from grove_tui.analysis.bundle_metrics import bundle_metrics
 
-    try:
-        report, path = bundle_metrics(bundle)
-    except GroveError as exc:
-        _fail(str(exc))
-        return
+    report, path = bundle_metrics(bundle)
     if as_json:
         click.echo(json.dumps(report.to_dict(), indent=2, sort_keys=True, allow_nan=True))
         return
@@ -126,19 +102,15 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
     from grove_tui.scenario.model import Scenario
     from grove_tui.world import load_world
 
-    try:
-        scenario = Scenario.load(bundle / "scenario.yaml")
-        world = load_world(scenario.world)
-        if out_path is None:
-            console = Console()
-            console.print(render_scenario_text(world, scenario, width or console.width))
-            return
-        csv = bundle / "trajectories.csv"
-        written = draw_scenario(world, scenario, bundle, out_path,
-                                trajectories=csv if trajectories and csv.exists() else None)
-    except GroveError as exc:
-        _fail(str(exc))
+    scenario = Scenario.load(bundle / "scenario.yaml")
+    world = load_world(scenario.world)
+    if out_path is None:
+        console = Console()
+        console.print(render_scenario_text(world, scenario, width or console.width))
         return
+    csv = bundle / "trajectories.csv"
+    written = draw_scenario(world, scenario, bundle, out_path,
+                            trajectories=csv if trajectories and csv.exists() else None)
     click.echo(str(written))
 
 
@@ -154,11 +126,7 @@ def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: 
     """ROS 2 bag of a simulated bundle: hunav_msgs/Agents on /human_states, markers, /map, /plan, /tf, events."""
     from grove_tui.exports.rosbag import export_rosbag
 
-    try:
-        result = export_rosbag(bundle, out_dir, storage=storage, overwrite=overwrite)
-    except GroveError as exc:
-        _fail(str(exc))
-        return
+    result = export_rosbag(bundle, out_dir, storage=storage, overwrite=overwrite)
     click.echo(str(result.directory))
     for topic, count in result.counts.items():
         click.echo(f"  {topic}: {count}", err=True)
@@ -172,10 +140,6 @@ def export_foxglove_command(bundle: Path, out_path: Path) -> None:
     """Foxglove MCAP of a simulated bundle (SceneUpdate, Grid, Log) and a layout that shows it in 3D."""
     from grove_tui.exports.foxglove import export_foxglove
 
-    try:
-        result = export_foxglove(bundle, out_path)
-    except GroveError as exc:
-        _fail(str(exc))
-        return
+    result = export_foxglove(bundle, out_path)
     click.echo(str(result.mcap))
     click.echo(str(result.layout))

@@ -18,11 +18,7 @@ from typing import Any
 import click
 from rich.console import Console
 
-EXIT_OK = 0
-EXIT_BAD_INPUT = 2
-EXIT_GENERATION_FAILED = 3
-EXIT_MODEL_ERROR = 4
-EXIT_CANCELLED = 130
+from grove_tui.errors import EXIT_BAD_INPUT, EXIT_CANCELLED, EXIT_MODEL_ERROR, EXIT_OK, EXIT_RUNTIME_FAILURE
 
 
 def _err() -> Console:
@@ -36,24 +32,6 @@ def _out() -> Console:
 def _root_options(ctx: click.Context) -> dict[str, Any]:
     root = ctx.find_root()
     return dict(root.obj or {}) if root.obj is not None else {}
-
-
-def exit_code_for(error: BaseException) -> int:
-    """The documented exit code for an exception raised while generating."""
-    from grove_tui.files import OutputError
-    from grove_tui.scenario.bundle import BundleError
-    from grove_tui.services.jobs import JobFileError
-    from grove_tui.generation.presets import PresetError, PromptError
-    from grove_tui.world import WorldError
-    from grove_tui.llm.errors import GenerationCancelled, ModelError
-
-    if isinstance(error, (GenerationCancelled, KeyboardInterrupt)):
-        return EXIT_CANCELLED
-    if isinstance(error, ModelError):
-        return EXIT_MODEL_ERROR
-    if isinstance(error, (PresetError, WorldError, PromptError, BundleError, OutputError, JobFileError)):
-        return EXIT_BAD_INPUT
-    return EXIT_GENERATION_FAILED
 
 
 def parse_robot_point(text: str | None) -> tuple[float, float] | str | None:
@@ -132,6 +110,7 @@ def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None
 
     The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
     """
+    from grove_tui.errors import RuntimeFailure
     from grove_tui.scenario.bundle import load_bundle, replace_run_outputs
     from grove_tui.analysis.bundle_metrics import bundle_metrics
     from grove_tui.scenario.events import write_events
@@ -144,7 +123,7 @@ def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None
     wall = time.perf_counter() - started
     recorder = sim.recorder
     if recorder is None:
-        raise click.ClickException("the simulation has no trajectory recorder")
+        raise RuntimeFailure(f"{bundle}: the simulation has no trajectory recorder")
     reports = []
 
     def write_run(stage: Path) -> None:
@@ -218,7 +197,6 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
     from grove_tui.files import check_output_dir
     from grove_tui.scenario.bundle import WHAT, is_bundle, write_bundle
-    from grove_tui.errors import GroveError
     from grove_tui.generation.pipeline import GenerationPipeline
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.retrieval import NodeRetriever
@@ -238,11 +216,9 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
         result = pipeline.run(prompt, seed=seed, on_event=progress)
         bundle = write_bundle(result, Path(out_dir), overwrite=overwrite)
         sim = simulate_bundle(bundle, simulate_seconds) if simulate_seconds else None
-    except (GroveError, KeyboardInterrupt) as exc:
-        progress.stop()
-        code = exit_code_for(exc)
-        err.print(f"[red]error:[/] {exc}" if str(exc) else "[red]cancelled[/]", markup=True)
-        ctx.exit(code)
+    except BaseException:
+        progress.stop()  # the spinner must not overwrite the error line the grove group prints
+        raise
     finally:
         if models is not None:
             models.close()
@@ -282,6 +258,7 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
     from grove_tui.files import check_output_dir
     from grove_tui.scenario.bundle import WHAT, is_bundle, write_bundle
     from grove_tui.errors import GroveError
+    from grove_tui.errors import JobFileError, describe_error
     from grove_tui.services.jobs import read_jobs
     from grove_tui.generation.pipeline import GenerationPipeline
     from grove_tui.generation.retrieval import NodeRetriever
@@ -297,8 +274,7 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
         for problem in problems:
             err.print(f"[red]error:[/] {jobs_file}:{problem.line}: {problem.message}", markup=True, highlight=False)
         if not jobs:
-            err.print(f"[red]error:[/] {jobs_file}: no job can run", markup=True, highlight=False)
-            ctx.exit(EXIT_BAD_INPUT)
+            raise JobFileError(f"{jobs_file}: no job can run")
         models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
                              options.get("model"))
         retriever = NodeRetriever()
@@ -323,19 +299,16 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
                 raise
             except GroveError as exc:
                 progress.stop()
-                if exit_code_for(exc) in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
-                    raise
+                if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
+                    raise  # the model or the user stopped the whole batch, not just this job
                 failures += 1
-                out.print(f"failed {target} {exc}", markup=False)
-    except (GroveError, KeyboardInterrupt) as exc:
-        err.print(f"[red]error:[/] {exc}" if str(exc) else "[red]cancelled[/]")
-        ctx.exit(exit_code_for(exc))
+                out.print(f"failed {target} {describe_error(exc).message}", markup=False)
     finally:
         if models is not None:
             models.close()
     total = len(jobs) + len(problems)
     err.print(f"{len(jobs) - failures}/{total} scenarios generated")
-    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_GENERATION_FAILED if failures else EXIT_OK)
+    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_RUNTIME_FAILURE if failures else EXIT_OK)
 
 
 def _check_jobs(jobs: list[Any], out_dir: Path, overwrite: bool) -> tuple[list[Any], list[Any]]:
@@ -383,14 +356,8 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 @click.pass_context
 def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
-    from grove_tui.errors import GroveError
-
-    err, out = _err(), _out()
-    try:
-        sim = simulate_bundle(Path(bundle), seconds)
-    except (GroveError, KeyboardInterrupt) as exc:
-        err.print(f"[red]error:[/] {exc}" if str(exc) else "[red]cancelled[/]")
-        ctx.exit(exit_code_for(exc))
+    out = _out()
+    sim = simulate_bundle(Path(bundle), seconds)
     out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
               f"{Path(bundle) / 'trajectories.csv'}", markup=False)
     for key, value in sim["counters"].items():

@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import BadInputError, ModelError
 
 
 def _console() -> Console:
@@ -29,7 +29,7 @@ def models() -> None:
 @click.pass_context
 def list_command(ctx: click.Context) -> None:
     """Show every model found (models dir, embedded, chosen paths) and the role using it."""
-    from grove_tui.paths import models_dir
+    from grove_tui.settings import models_dir
     from grove_tui.llm.registry import list_models
 
     options = (ctx.find_root().obj or {}) if ctx.find_root().obj is not None else {}
@@ -64,7 +64,7 @@ def pull_command(name: str, endpoint: str | None, force: bool) -> None:
 
     entry = CATALOG.get(name)
     if entry is None:
-        raise click.ClickException(f"unknown model {name!r}; available: {', '.join(CATALOG)}")
+        raise BadInputError(f"unknown model {name!r}; available: {', '.join(CATALOG)}")
     console = _console()
     console.print(f"downloading {download_url(entry, endpoint)} ({_size(entry.size)}) ...")
     last_shown = [-1]
@@ -75,8 +75,5 @@ def pull_command(name: str, endpoint: str | None, force: bool) -> None:
             last_shown[0] = percent
             console.print(f"  {percent}%")
 
-    try:
-        path = pull_model(name, endpoint=endpoint, force=force, on_progress=progress)
-    except ModelError as error:
-        raise click.ClickException(str(error)) from None
+    path = pull_model(name, endpoint=endpoint, force=force, on_progress=progress)
     console.print(f"verified (size, sha256, GGUF header) and saved: {path}")

@@ -7,17 +7,10 @@ from pathlib import Path
 
 import click
 
-from grove_tui.errors import GroveError
-
 _INDEX_OPTION = click.option("--index-dir", type=click.Path(file_okay=False, path_type=Path), default=None,
                              help="Chroma index directory (default: <cache>/chroma).")
 _NODE_DB_OPTION = click.option("--node-db", type=click.Path(file_okay=False, path_type=Path), default=None,
                                help="Node database directory (default: the shipped node_db/).")
-
-
-def _fail(exc: GroveError) -> None:
-    click.echo(f"error: {exc}", err=True)
-    sys.exit(1)
 
 
 @click.group()
@@ -34,17 +27,14 @@ def sync(node_db: Path | None, check: bool) -> None:
     from grove_tui.generation.node_docs import check_node_documents, sync_node_documents
 
     root = node_db or paths.node_db_dir()
-    try:
-        if check:
-            problems = check_node_documents(root)
-            for problem in problems:
-                click.echo(problem)
-            click.echo(f"{len(problems)} problem(s)" if problems else "node database matches the manifest")
-            sys.exit(1 if problems else 0)
-        written, removed = sync_node_documents(root)
+    if check:
         problems = check_node_documents(root)
-    except GroveError as exc:
-        _fail(exc)
+        for problem in problems:
+            click.echo(problem)
+        click.echo(f"{len(problems)} problem(s)" if problems else "node database matches the manifest")
+        sys.exit(1 if problems else 0)
+    written, removed = sync_node_documents(root)
+    problems = check_node_documents(root)
     click.echo(f"wrote {len(written)} document(s){': ' + ', '.join(written) if written else ''}")
     if removed:
         click.echo(f"removed {len(removed)} document(s) of nodes no longer in the manifest: {', '.join(removed)}")
@@ -61,11 +51,8 @@ def build(node_db: Path | None, index_dir: Path | None, force: bool) -> None:
     """Build (or confirm) the retrieval index."""
     from grove_tui.generation.retrieval import NodeRetriever
 
-    try:
-        retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
-        state = retriever.ensure_index(force=force)
-    except GroveError as exc:
-        _fail(exc)
+    retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
+    state = retriever.ensure_index(force=force)
     verb = "built" if state.built else "up to date"
     click.echo(f"{verb}: {retriever.index_dir} ({state.documents} documents, {state.vectors} vectors, "
                f"{state.seconds:.2f} s, node_db {state.content_hash[:12]})")
@@ -82,11 +69,8 @@ def query(prompt: str, preset: str | None, k: int, show: bool, node_db: Path | N
     """Show the documents retrieved for PROMPT."""
     from grove_tui.generation.retrieval import NodeRetriever
 
-    try:
-        retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
-        results = retriever.retrieve(prompt, preset, k)
-    except GroveError as exc:
-        _fail(exc)
+    retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
+    results = retriever.retrieve(prompt, preset, k)
     for rank, item in enumerate(results, 1):
         uses = f"  uses {', '.join(item.nodes)}" if item.kind == "template" else ""
         click.echo(f"{rank:2d}. {item.score:6.3f}  {item.kind:8s} {item.name}{uses}")
@@ -105,12 +89,9 @@ def evaluate_command(k: int, cases: Path | None, verbose: bool, node_db: Path | 
     """Recall@k of retrieval on the labelled set, per preset and overall."""
     from grove_tui.generation.retrieval import NodeRetriever, evaluate, load_eval_set
 
-    try:
-        retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
-        labelled = load_eval_set(cases if cases is not None else retriever.node_db_dir / "eval.yaml")
-        result = evaluate(retriever, labelled, k)
-    except GroveError as exc:
-        _fail(exc)
+    retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
+    labelled = load_eval_set(cases if cases is not None else retriever.node_db_dir / "eval.yaml")
+    result = evaluate(retriever, labelled, k)
     for preset in result.presets():
         count = sum(1 for case, _, _ in result.per_case if case.preset == preset)
         click.echo(f"{preset:10s} recall@{k} = {result.recall(preset):.3f}  ({count} prompts)")

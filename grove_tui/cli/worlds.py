@@ -59,10 +59,7 @@ def show_command(name: str, width: int | None, height: int | None, rois: bool) -
     from grove_tui.world.render import legend, render_world_text
 
     console = _console()
-    try:
-        world = load_world(name)
-    except WorldError as error:
-        raise click.ClickException(str(error)) from error
+    world = load_world(name)
     columns = width or console.width
     console.print(Text.assemble((world.name, "bold"), f"  {_size(world)}, {len(world.zones)} zones, "
                                 f"{len(world.doors())} doors ({len(world.exits())} exits), "

@@ -16,7 +16,7 @@ import numba
 import numpy as np
 
 from grove_tui.crowd import sfm
-from grove_tui.errors import GroveError
+from grove_tui.errors import CrowdError
 from grove_tui.crowd.sfm import (
     FACE_AGENT,
     FACE_POINT,
@@ -49,10 +49,6 @@ __all__ = [
 _MODES = (MODE_GOALS, MODE_FIELD, MODE_STOP, MODE_FACE)
 _ROBOT_INTERACTIONS = (ROBOT_AS_AGENT, ROBOT_AS_OBSTACLE, ROBOT_IGNORED, ROBOT_FEARED)
 _FACTOR_NAMES = ("goal", "obstacle", "social", "other")
-
-
-class CrowdError(GroveError):
-    """Bad input to the crowd: unknown agent index, mode, field, or a malformed array."""
 
 
 def _point(value: Any, what: str) -> tuple[float, float]:

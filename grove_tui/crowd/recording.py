@@ -20,7 +20,7 @@ from typing import IO, Any
 import numpy as np
 
 from grove_tui.files import atomic_file
-from grove_tui.errors import GroveError
+from grove_tui.errors import RecordingError
 
 ROW_DTYPE = np.dtype([
     ("frame", np.int64), ("t", np.float64), ("id", np.int64), ("x", np.float64), ("y", np.float64),
@@ -29,10 +29,6 @@ ROW_DTYPE = np.dtype([
 CSV_COLUMNS = ("frame", "t", "id", "x", "y", "vx", "vy", "yaw", "group")
 ROBOT_ID = 0
 JUPEDSIM_SQLITE_VERSION = 2
-
-
-class RecordingError(GroveError):
-    """A recorder was misused (bad fps, mismatched arrays) or an output could not be written."""
 
 
 class TrajectoryRecorder:

@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import FoxgloveExportError
 from grove_tui.exports.frames import ROS_EXTRA, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.files import atomic_file
@@ -41,10 +41,6 @@ PERSON_HEIGHT = 1.7
 ROBOT_HEIGHT = 0.4
 WALL_HEIGHT = 1.0
 FURNITURE_HEIGHT = 0.75
-
-
-class FoxgloveExportError(GroveError):
-    pass
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from grove_tui.crowd.recording import CSV_COLUMNS, ROBOT_ID
-from grove_tui.errors import GroveError
+from grove_tui.errors import StreamExportError
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.scenario.bundle import load_bundle
@@ -26,10 +26,6 @@ from grove_tui.world import World, load_world
 TRAJECTORIES_FILE = "trajectories.csv"
 BLOCK_BYTES = 4 << 20  # lines parsed at a time; bounds memory, large enough to keep numpy busy
 ROS_EXTRA = "pip install 'grove-tui[ros]'"  # what the missing-dependency errors tell the user
-
-
-class StreamExportError(GroveError):
-    """A bundle the ROS 2 or Foxglove export cannot read; the message names the file."""
 
 
 @dataclass(frozen=True)

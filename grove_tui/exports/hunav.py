@@ -48,7 +48,7 @@ from grove_tui.bt.hunav_compat import (hunav_loading_problems, prefix_node_ids, 
                                        wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.xml import check_tree_text, parse_point_list
-from grove_tui.errors import GroveError
+from grove_tui.errors import ExportError
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 Point = tuple[float, float]
@@ -88,10 +88,6 @@ HOLD_WAIT_SECONDS = 60.0
 KEPT_NODE_PREFIX = "Grove"
 STREAMLINE_STEP = 0.2
 WANDER_LEG_SECONDS = 12.0
-
-
-class ExportError(GroveError):
-    pass
 
 
 @dataclass

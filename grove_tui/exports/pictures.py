@@ -14,7 +14,7 @@ import numpy as np
 from rich.text import Text
 
 from grove_tui.files import write_bytes_atomic
-from grove_tui.errors import GroveError
+from grove_tui.errors import PictureError
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import World
 
@@ -22,10 +22,6 @@ from grove_tui.world import World
 GROUP_COLOURS = ("#0072B2", "#E69F00", "#009E73", "#CC79A7", "#56B4E9", "#D55E00", "#F0E442", "#000000")
 SOLO_COLOUR = "#555555"
 RICH_GROUP_STYLES = ("bold cyan", "bold magenta", "bold green", "bold yellow", "bold blue", "bold red")
-
-
-class PictureError(GroveError):
-    pass
 
 
 def _group_colour(group: int) -> str:

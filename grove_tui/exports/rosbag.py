@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import RosbagExportError
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.files import atomic_directory, check_output_dir
@@ -63,10 +63,6 @@ PERSON, ROBOT = 1, 2  # hunav_msgs/Agent type constants
 BEHAVIORS = {"Regular": 1, "Impassive": 2, "Surprised": 3, "Scared": 4, "Curious": 5, "Threatening": 6}
 GOAL_RADIUS = 0.3
 SEPARATOR = "=" * 80
-
-
-class RosbagExportError(GroveError):
-    pass
 
 
 @dataclass(frozen=True)

@@ -8,15 +8,11 @@ from pathlib import Path
 
 import numpy as np
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import TrajectoryExportError
 from grove_tui.analysis.metrics import Trajectories
 from grove_tui.crowd.recording import TrajectoryRecorder
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import load_world
-
-
-class TrajectoryExportError(GroveError):
-    pass
 
 
 def recorder_from_csv(path: Path) -> TrajectoryRecorder:

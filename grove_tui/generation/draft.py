@@ -27,7 +27,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import DraftError
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
@@ -46,10 +46,6 @@ _SENSIBLE_FLOATS = (0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.6, 0.75, 1.0, 1.2, 1.5, 2.0
 _SENSIBLE_INTS = (-1, 0, 1, 2, 3, 4, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 3000, 5000, 10000, 20000,
                   30000, 60000, 120000, 300000, 600000, 1800000, 3600000)
 _ENUMERATE_ALL_INTS_UP_TO = 24
-
-
-class DraftError(GroveError):
-    """A draft (the model's JSON) that is not valid for this request; the message names the JSON path."""
 
 
 @dataclass(frozen=True)

@@ -28,7 +28,7 @@ from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft
-from grove_tui.generation.planning import OperationalPlan, PlanningCancelled, RobotRequest, plan_operational
+from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.language.quantities import Quantity, extract_quantities
@@ -36,12 +36,12 @@ from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_wit
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.llm.errors import GenerationCancelled
+from grove_tui.errors import Cancelled
 
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
 MAX_PROMPT_CHARS = 2000
 
-__all__ = ["GenerationCancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs", "STAGES",
+__all__ = ["Cancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs", "STAGES",
            "StageFinished", "StageStarted", "TokenStreamed"]
 
 
@@ -112,7 +112,7 @@ class _StageClock:
 
     def begin(self, stage: str) -> float:
         if self.cancel is not None and self.cancel.is_set():
-            raise GenerationCancelled(f"generation cancelled before {stage}")
+            raise Cancelled(f"generation cancelled before {stage}")
         self.emit(StageStarted(stage))
         return time.perf_counter()
 
@@ -311,11 +311,8 @@ class GenerationPipeline:
         clock.end("postprocess", t0, f"{len(post.agents)} agents")
 
         t0 = clock.begin("planning")
-        try:
-            plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
-                                    cache=self.plan_cache, cancel=cancel)
-        except PlanningCancelled:
-            raise GenerationCancelled("generation cancelled during planning") from None
+        plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
+                                cache=self.plan_cache, cancel=cancel)
         for rel, xml in plan.trees.items():
             try:
                 parse_tree_text(xml, rel)

@@ -19,6 +19,7 @@ import numpy as np
 from lxml import etree
 
 from grove_tui.bt.manifest import NODES
+from grove_tui.errors import Cancelled
 from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
 from grove_tui.generation.postprocess import FreeSpace, PostProcessed
 from grove_tui.generation.presets import GenerationError, Preset
@@ -30,10 +31,6 @@ Point = tuple[float, float]
 
 ROBOT_CLEARANCE = 2.0  # metres between the robot's start/goal and anybody's spawn
 ROBOT_CANDIDATES = 48
-
-
-class PlanningCancelled(Exception):
-    """Raised between agents when the caller's cancel event is set."""
 
 
 @dataclass(frozen=True)
@@ -135,7 +132,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
 
 def _check_cancel(cancel: threading.Event | None) -> None:
     if cancel is not None and cancel.is_set():
-        raise PlanningCancelled("planning cancelled")
+        raise Cancelled("generation cancelled during planning")
 
 
 def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:

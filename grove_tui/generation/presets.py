@@ -14,20 +14,9 @@ from typing import Any
 
 import yaml
 
-from grove_tui.errors import GroveError
-from grove_tui.paths import config_dir, presets_dir
-
-
-class GenerationError(GroveError):
-    """Generation cannot produce a valid scenario from this input; the message says why."""
-
-
-class PromptError(GenerationError):
-    """The prompt itself asks for something impossible: empty, a place the world lacks, too many people."""
-
-
-class PresetError(GroveError):
-    """A preset file is missing or malformed; the message names the file and the key."""
+from grove_tui.errors import GenerationError, PresetError, PromptError
+from grove_tui.paths import presets_dir
+from grove_tui.settings import config_dir
 
 
 GOAL_SAMPLING = ("spread", "sequential", "exit")

@@ -33,7 +33,8 @@ import yaml
 
 from grove_tui import paths
 from grove_tui.cpu import free_cores
-from grove_tui.errors import GroveError
+from grove_tui.errors import GroveError, RetrievalError
+from grove_tui.settings import cache_dir
 from grove_tui.generation.node_docs import (
     RETRIEVAL_PRESETS,
     NodeDatabase,
@@ -51,10 +52,6 @@ INDEX_FORMAT = "2"
 EMBEDDING_FUNCTION_NAME = "grove-packaged-minilm"
 LEXICAL_WEIGHT = 0.25
 PRIORITY_BONUS = 0.15
-
-
-class RetrievalError(GroveError):
-    """Retrieval cannot run: the embedding model, node database or index is unusable."""
 
 
 @dataclass(frozen=True)
@@ -383,7 +380,7 @@ class NodeRetriever:
 
     def __init__(self, node_db_dir: str | Path | None = None, index_dir: str | Path | None = None) -> None:
         self.node_db_dir = Path(node_db_dir) if node_db_dir is not None else paths.node_db_dir()
-        self.index_dir = Path(index_dir) if index_dir is not None else paths.cache_dir() / "chroma"
+        self.index_dir = Path(index_dir) if index_dir is not None else cache_dir() / "chroma"
         try:
             self.database: NodeDatabase = load_node_database(self.node_db_dir)
         except GroveError as exc:

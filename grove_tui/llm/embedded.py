@@ -17,7 +17,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from grove_tui.paths import cache_dir
+from grove_tui.settings import cache_dir
 from grove_tui.llm.errors import ModelError
 
 EMBEDDED_MODEL = "smollm2"

@@ -1,13 +1,7 @@
-"""Errors of the local model layer."""
+"""Errors of the local model layer, re-exported from grove_tui.errors (where every error lives)."""
 
 from __future__ import annotations
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import Cancelled, ModelError
 
-
-class ModelError(GroveError):
-    """A model file or the model process cannot do what was asked; the message says which and why."""
-
-
-class GenerationCancelled(GroveError):
-    """The caller's cancel event stopped a generation; nothing was produced."""
+__all__ = ["Cancelled", "ModelError"]

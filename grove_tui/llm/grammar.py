@@ -24,7 +24,7 @@ import json
 import re
 from typing import Any
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import GrammarError
 
 # The characters a free-text value may use: no quotes, backslashes or control characters, so strict
 # json.loads always accepts what the grammar allows and nothing can break out of the JSON string.
@@ -36,10 +36,6 @@ MAX_STRING_LENGTH = 256
 
 _IGNORED_KEYS = frozenset({"description", "title", "$comment", "default", "examples", "$schema"})
 _REF_PREFIX = "#/$defs/"
-
-
-class GrammarError(GroveError):
-    """The schema uses something outside the subset this converter supports."""
 
 
 def schema_to_gbnf(schema: dict[str, Any]) -> str:

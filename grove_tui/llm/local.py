@@ -9,7 +9,7 @@
 - Tokens stream back over a pipe; `on_token` runs in the caller's thread, never blocking the worker.
 - `cancel` (a threading.Event) stops the generation at the next token; if the worker does not answer
   within CANCEL_GRACE_SECONDS (a long prompt prefill is not interruptible) it is terminated and
-  restarted lazily. Either way generate raises GenerationCancelled within about a second.
+  restarted lazily. Either way generate raises Cancelled within about a second.
 - `finish_reason == "length"` is never returned as a result: the output is cut off (a grammar only
   guarantees a valid prefix), so the call is retried with a larger budget and the next seed, and
   raises ModelError if that also runs out.
@@ -30,9 +30,9 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.cpu import free_cores
-from grove_tui.paths import cache_dir
+from grove_tui.settings import cache_dir, load_settings
 from grove_tui.llm.chat_template import Sampling, default_sampling
-from grove_tui.llm.errors import GenerationCancelled, ModelError
+from grove_tui.errors import Cancelled, ModelError
 from grove_tui.llm.gguf_info import GGUFInfo, check_loadable, read_gguf_info
 
 CANCEL_GRACE_SECONDS = 0.5
@@ -41,15 +41,13 @@ _POLL_SECONDS = 0.02
 
 Messages = Sequence[dict[str, str]]
 
-__all__ = ["Generation", "GenerationCancelled", "LocalLLM", "ModelError"]
+__all__ = ["Generation", "Cancelled", "LocalLLM", "ModelError"]
 
 
 def default_threads() -> int:
-    """Cores free right now (GROVE_LLM_THREADS overrides); see engine.cpu for why not the load average."""
-    override = os.environ.get("GROVE_LLM_THREADS")
-    if override:
-        return max(1, int(override))
-    return free_cores()
+    """Cores free right now (GROVE_LLM_THREADS overrides); see cpu.py for why not the load average."""
+    override = load_settings().llm_threads
+    return override if override is not None else free_cores()
 
 
 @dataclass(frozen=True)
@@ -250,7 +248,7 @@ class LocalLLM:
 
         `grammar` must come from models.grammar.schema_to_gbnf. Sampling values left None take the model's
         defaults (Qwen's non-thinking settings for Qwen3). A cut-off answer is retried `length_retries` times
-        with twice the budget and the next seed. Raises GenerationCancelled or ModelError.
+        with twice the budget and the next seed. Raises Cancelled or ModelError.
         """
         if max_tokens < 1:
             raise ModelError(f"max_tokens must be at least 1, got {max_tokens}")
@@ -276,7 +274,7 @@ class LocalLLM:
                 result, first_token_at, _ = self._collect(on_token, cancel, deadline)
                 spent_tokens += int(result["completion_tokens"])
                 if result["finish_reason"] == "cancelled":
-                    raise GenerationCancelled(f"{self.role} generation cancelled")
+                    raise Cancelled(f"{self.role} generation cancelled")
                 if result["finish_reason"] == "stop":
                     return Generation(
                         text=result["text"], finish_reason="stop", prompt_tokens=int(result["prompt_tokens"]),
@@ -308,7 +306,7 @@ class LocalLLM:
                 # The worker is stuck in a prefill or in llama.cpp: stop it the hard way.
                 self._discard_worker()
                 if stop_reason == "cancel":
-                    raise GenerationCancelled(f"{self.role} generation cancelled (model process stopped)")
+                    raise Cancelled(f"{self.role} generation cancelled (model process stopped)")
                 raise ModelError(f"the {self.role} model did not answer in time; the model process was stopped")
             try:
                 if not conn.poll(_POLL_SECONDS):

@@ -24,7 +24,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from grove_tui.paths import models_dir
+from grove_tui.settings import models_dir
 from grove_tui.llm.errors import ModelError
 from grove_tui.llm.gguf_info import GGUF_MAGIC
 

@@ -5,7 +5,8 @@ interest) and `bt` (a stronger model writes the behavior trees). Each role is re
 
 1. the command line: --roi-model / --bt-model, or --model for both;
 2. the environment: GROVE_ROI_MODEL / GROVE_BT_MODEL, or GROVE_MODEL for both;
-3. the config file config_dir()/config.yaml:  models: {roi: PATH, bt: PATH}  (relative to that file);
+3. the config file (settings.config_file(), so GROVE_CONFIG_FILE is honoured):
+   models: {roi: PATH, bt: PATH}  (relative to that file);
 4. the models directory (models_dir(), where `grove models pull` writes): the smallest GGUF for
    roi, the largest for bt;
 5. the embedded model (models/embedded.py).
@@ -20,9 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import yaml
-
-from grove_tui.paths import config_dir, models_dir
+from grove_tui.settings import GroveSettings, config_file, load_settings, models_dir
 from grove_tui.llm.embedded import EMBEDDED_MODEL, embedded_model_path
 from grove_tui.llm.errors import ModelError
 from grove_tui.llm.gguf_info import GGUFInfo, check_gguf_file, read_gguf_info
@@ -50,35 +49,6 @@ class FoundModel:
     problem: str = ""
 
 
-def config_file() -> Path:
-    return config_dir() / "config.yaml"
-
-
-def _config_models() -> dict[str, Path]:
-    path = config_file()
-    if not path.is_file():
-        return {}
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
-    except yaml.YAMLError as error:
-        raise ModelError(f"{path}: not valid YAML ({error})") from None
-    models = data.get("models") if isinstance(data, dict) else None
-    if models is None:
-        return {}
-    if not isinstance(models, dict):
-        raise ModelError(f"{path}: 'models' must be a mapping like {{roi: PATH, bt: PATH}}")
-    unknown = set(models) - set(ROLES)
-    if unknown:
-        raise ModelError(f"{path}: unknown model role(s) {', '.join(sorted(map(str, unknown)))}; roles are roi and bt")
-    result = {}
-    for role, value in models.items():
-        if value in (None, ""):
-            continue
-        candidate = Path(str(value)).expanduser()
-        result[role] = candidate if candidate.is_absolute() else path.parent / candidate
-    return result
-
-
 def models_in_directory(directory: Path | None = None) -> list[Path]:
     """GGUF files in the models directory, smallest first (partial downloads are hidden dot-files)."""
     folder = models_dir() if directory is None else directory
@@ -96,26 +66,30 @@ def _checked(path: Path, source: str) -> Path:
 
 
 def resolve_models(cli_roi: str | os.PathLike[str] | None = None, cli_bt: str | os.PathLike[str] | None = None,
-                   cli_model: str | os.PathLike[str] | None = None) -> dict[str, ModelChoice]:
-    """The model for each role, by the precedence in the module docstring."""
+                   cli_model: str | os.PathLike[str] | None = None,
+                   settings: GroveSettings | None = None) -> dict[str, ModelChoice]:
+    """The model for each role, by the precedence in the module docstring (settings: read now if None)."""
+    settings = load_settings() if settings is None else settings
     cli = {"roi": cli_roi, "bt": cli_bt}
-    config = _config_models()
+    environment = {"roi": settings.roi_model, "bt": settings.bt_model}
     found = models_in_directory()
     choices: dict[str, ModelChoice] = {}
     for role in ROLES:
-        if cli[role]:
+        explicit = cli[role]
+        configured = settings.model_file(role)
+        if explicit:
             flag = "--roi-model" if role == "roi" else "--bt-model"
-            choices[role] = ModelChoice(role, _checked(Path(cli[role]).expanduser(), flag), flag)
+            choices[role] = ModelChoice(role, _checked(Path(explicit).expanduser(), flag), flag)
         elif cli_model:
             choices[role] = ModelChoice(role, _checked(Path(cli_model).expanduser(), "--model"), "--model")
-        elif os.environ.get(ROLE_ENV[role]):
+        elif environment[role]:
             name = ROLE_ENV[role]
-            choices[role] = ModelChoice(role, _checked(Path(os.environ[name]).expanduser(), name), name)
-        elif os.environ.get(SHARED_ENV):
-            choices[role] = ModelChoice(role, _checked(Path(os.environ[SHARED_ENV]).expanduser(), SHARED_ENV), SHARED_ENV)
-        elif role in config:
+            choices[role] = ModelChoice(role, _checked(Path(str(environment[role])).expanduser(), name), name)
+        elif settings.model:
+            choices[role] = ModelChoice(role, _checked(Path(settings.model).expanduser(), SHARED_ENV), SHARED_ENV)
+        elif configured is not None:
             source = f"{config_file()} models.{role}"
-            choices[role] = ModelChoice(role, _checked(config[role], source), source)
+            choices[role] = ModelChoice(role, _checked(configured, source), source)
         elif found:
             choices[role] = ModelChoice(role, found[0] if role == "roi" else found[-1], f"models dir {models_dir()}")
         else:

@@ -19,12 +19,8 @@ import shapely
 from scipy import ndimage
 
 from grove_tui.files import write_bytes_atomic
-from grove_tui.errors import GroveError
+from grove_tui.errors import GridError
 from grove_tui.world import World
-
-
-class GridError(GroveError):
-    """A grid file could not be read."""
 
 
 @dataclass(eq=False)

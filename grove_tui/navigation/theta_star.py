@@ -31,13 +31,7 @@ import numba
 import numpy as np
 from scipy.ndimage import distance_transform_edt
 
-try:  # the shared errors module may define it; the planner owns the class otherwise
-    from grove_tui.errors import PlanningError
-except ImportError:  # pragma: no cover - depends on the state of errors.py
-    from grove_tui.errors import GroveError
-
-    class PlanningError(GroveError):
-        """No collision-free path: an endpoint is inside an obstacle or the endpoints are disconnected."""
+from grove_tui.errors import PlanningError
 
 
 SQRT2 = math.sqrt(2.0)

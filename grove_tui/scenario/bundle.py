@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.files import absolute_path, atomic_directory, link_or_copy
-from grove_tui.errors import GroveError
+from grove_tui.errors import BundleError
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.scenario.model import Scenario, ScenarioError
 from grove_tui.navigation.velocity_field import VelocityField
@@ -26,10 +26,6 @@ REPORT_FILE = "generation.json"
 # What a simulation adds to a bundle; replaced together, never one without the others.
 RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
 WHAT = "scenario bundle"
-
-
-class BundleError(GroveError):
-    """A bundle directory is missing a file or holds a broken one; the message names it."""
 
 
 def is_bundle(path: Path) -> bool:

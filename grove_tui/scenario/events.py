@@ -7,14 +7,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import EventLogError
 from grove_tui.files import write_text_atomic
 
 EVENTS_FILE = "events.jsonl"
-
-
-class EventLogError(GroveError):
-    """An event log line that is not an event record; the message names the file and line."""
 
 
 @dataclass(frozen=True)

@@ -16,13 +16,10 @@ from typing import Any
 
 import yaml
 
+from grove_tui.errors import ScenarioError
 from grove_tui.files import write_text_atomic
 
 Point = tuple[float, float]
-
-
-class ScenarioError(ValueError):
-    """A scenario file is malformed; the message names the file and the key."""
 
 
 @dataclass(frozen=True)

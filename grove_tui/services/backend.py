@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from grove_tui.errors import GroveError
-from grove_tui.paths import data_dir
+from grove_tui.errors import GenerationError, GroveError, PromptError
+from grove_tui.settings import data_dir
 
 LLMFactory = Callable[[str, Any], Any]  # (role, ModelInfo) -> LocalLLM-like
 RetrieverFactory = Callable[[], Any]
@@ -338,7 +338,15 @@ class EngineBackend:
 
         preset = load_preset(generated.preset)
         pipeline = GenerationPipeline(generated.world, preset, None, None, None)
-        result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
+        try:
+            result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
+        except PromptError as exc:
+            # The counts, not the prompt, are what the user changed here: say what to do with them.
+            exc.hint = "Lower the counts of the groups in that zone, or regenerate with a roomier place."
+            raise
+        except GenerationError as exc:
+            exc.hint = "Change the counts and press Enter again, or Escape to keep the scenario as it is."
+            raise
         seed = result.scenario.seed
         stamp = time.strftime("%Y%m%d-%H%M%S")
         base = self.runs_dir / f"{stamp}-{_slug(generated.prompt)}-{seed}-counts"

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import JobFileError
 
 MAX_JOB_FILE_BYTES = 64 * 1024 * 1024
 MAX_SEED = 2**32 - 1
@@ -28,10 +28,6 @@ OPTIONAL = ("seed", "name", "simulate", "export")
 # What `export` may list: the `grove export` formats. All but hunav read the simulated run.
 EXPORT_KINDS = ("hunav", "trajectories", "rosbag", "foxglove")
 NEEDS_RUN = frozenset({"trajectories", "rosbag", "foxglove"})
-
-
-class JobFileError(GroveError):
-    """The job file itself cannot be read (missing, not UTF-8, too large, no jobs)."""
 
 
 @dataclass(frozen=True)

@@ -89,17 +89,12 @@ class GroveApp(App[int]):
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
             world: str | None = None, preset: str | None = None) -> int:
     """Entry point of the `grove` command with no subcommand; returns the exit code."""
-    from pydantic import ValidationError
-
-    from grove_tui.settings import config_file
+    from grove_tui.errors import SettingsError, print_error
 
     try:
         settings = load_settings()
-    except ValidationError as exc:
-        import sys
-
-        print(f"grove: {config_file()}: invalid configuration:\n{exc}", file=sys.stderr)
-        return 2
+    except SettingsError as exc:
+        return print_error(exc)
     backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
     app = GroveApp(backend, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True)

@@ -76,7 +76,9 @@ class GenerationFailed(Message):
 
 
 @dataclass
-class GenerationCancelled(Message):
+class GenerationStopped(Message):
+    """The user cancelled the generation (the engine raised grove_tui.errors.Cancelled or stopped early)."""
+
     stage: str
 
 

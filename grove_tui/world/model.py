@@ -26,7 +26,7 @@ from shapely.geometry import LineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 
-from grove_tui.errors import GroveError
+from grove_tui.errors import WorldError
 
 Point2 = tuple[float, float]
 
@@ -60,14 +60,6 @@ class WorldProblem:
     def __str__(self) -> str:
         where = f"{self.file}:{self.line}" if self.line is not None else self.file
         return f"{where}: {self.path}: {self.message}"
-
-
-class WorldError(GroveError):
-    """A world could not be loaded or a name is unknown; `problems` lists every issue found."""
-
-    def __init__(self, message: str, problems: Iterable[WorldProblem] = ()) -> None:
-        super().__init__(message)
-        self.problems: tuple[WorldProblem, ...] = tuple(problems)
 
 
 # --------------------------------------------------------------------------------------------

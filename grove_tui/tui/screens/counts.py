@@ -16,26 +16,13 @@ from textual.widgets import Button, Input, Label, Static
 from textual.worker import get_current_worker
 
 from grove_tui.services.backend import GeneratedScenario
-from grove_tui.tui.screens.generation import error_hint
+from grove_tui.tui.screens.generation import describe_failure
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
 
 COUNT_DIGITS = 3
 READY = "Enter applies · Tab next count · Escape cancels · F1 help"
-HINTS = {
-    "PromptError": "Lower the counts of the groups in that zone, or regenerate with a roomier place.",
-    "GenerationError": "Change the counts and press Enter again, or Escape to keep the scenario as it is.",
-}
-
-
-def replan_hint(exc: BaseException) -> str:
-    for cls in type(exc).__mro__:
-        if cls.__name__ in HINTS:
-            return HINTS[cls.__name__]
-    return error_hint(exc)
-
-
 def group_rows(generated: GeneratedScenario) -> list[dict[str, Any]]:
     """The groups as the pipeline reported them: index order is the order `replan` counts refer to."""
     return [dict(g) for g in generated.result.report.get("groups", ())]
@@ -179,7 +166,7 @@ and planning run again, the model does not. **Tab** moves between the counts, **
             result = self.grove.backend.replan(generated, counts, cancel=cancel)
         except Exception as exc:
             if not (cancel.is_set() or worker.is_cancelled):
-                self.post_message(self.ReplanFailed(self, f"{type(exc).__name__}: {exc}", replan_hint(exc)))
+                self.post_message(self.ReplanFailed(self, *describe_failure(exc)))
             return
         if not (cancel.is_set() or worker.is_cancelled):
             self.post_message(self.Replanned(self, result))

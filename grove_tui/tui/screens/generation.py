@@ -15,6 +15,7 @@ from textual.screen import Screen
 from textual.widgets import DataTable, Footer, Static
 from textual.worker import get_current_worker
 
+from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 
 if TYPE_CHECKING:
@@ -30,16 +31,6 @@ STAGES = {
 STREAM_TAIL_CHARS = 1600
 FLUSH_SECONDS = 0.05  # ~20 Hz: smooth enough to read, cheap for the UI thread
 
-HINTS = {
-    "ModelError": "Check the model file (grove models), or start grove with --model PATH to another GGUF.",
-    "WorldError": "Fix the world file (worlds/README.md explains the format) or pick another world.",
-    "PlanningError": "A place in the prompt cannot be reached; name reachable zones, or fix the world's doors.",
-    "DraftError": "The model's answer did not fit the scenario; press r to retry, or rephrase the prompt.",
-    "GenerationError": "Rephrase the prompt with places from this world, or press r to retry.",
-    "RetrievalError": "Rebuild the node index (grove rag build), then press r.",
-    "PresetError": "Fix the preset file named above, or choose another preset.",
-    "BTError": "The generated tree is invalid; press r to retry or rephrase the prompt.",
-}
 DEFAULT_HINT = "Press r to retry, or Escape to go back and change the prompt."
 
 
@@ -96,11 +87,10 @@ class TokenBuffer:
         self._last_flush = time.monotonic()
 
 
-def error_hint(exc: BaseException) -> str:
-    for cls in type(exc).__mro__:
-        if cls.__name__ in HINTS:
-            return HINTS[cls.__name__]
-    return DEFAULT_HINT
+def describe_failure(exc: BaseException) -> tuple[str, str]:
+    """The error line and the hint the screens show: the error's own title and hint (grove_tui.errors)."""
+    description = describe_error(exc)
+    return description.text, description.hint or DEFAULT_HINT
 
 
 class GenerationScreen(Screen[None]):
@@ -203,13 +193,13 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         except Exception as exc:
             buffer.flush()
             if cancel.is_set() or worker.is_cancelled:
-                self.post_message(msg.GenerationCancelled(current["stage"]))
+                self.post_message(msg.GenerationStopped(current["stage"]))
             else:
-                self.post_message(msg.GenerationFailed(current["stage"], f"{type(exc).__name__}: {exc}", error_hint(exc)))
+                self.post_message(msg.GenerationFailed(current["stage"], *describe_failure(exc)))
             return
         buffer.flush()
         if cancel.is_set() or worker.is_cancelled:
-            self.post_message(msg.GenerationCancelled(current["stage"]))
+            self.post_message(msg.GenerationStopped(current["stage"]))
         else:
             self.post_message(msg.GenerationSucceeded(generated))
 
@@ -249,7 +239,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         error.update(f"✗ {where} failed\n{message.error}\n→ {message.hint}")
         error.display = True
 
-    def on_generation_cancelled(self, message: msg.GenerationCancelled) -> None:
+    def on_generation_stopped(self, message: msg.GenerationStopped) -> None:
         self._generating = False
         self.app.pop_screen()
         self.notify("Generation cancelled.", title="Generation")

@@ -14,6 +14,7 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Footer, Static, TextArea, Tree
 
+from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
@@ -306,7 +307,7 @@ and re-plans (same trees, no model call), **e** exports the bundle.
         try:
             files = self.grove.backend.export(self.generated, None, root)
         except Exception as exc:
-            self.post_message(msg.ExportFailed(f"{type(exc).__name__}: {exc}"))
+            self.post_message(msg.ExportFailed(describe_error(exc).text))
             return
         self.post_message(msg.ExportFinished(files, files[0].path.parent if files else root))
 

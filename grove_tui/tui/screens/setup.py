@@ -12,6 +12,7 @@ from textual.screen import Screen
 from textual.widgets import Button, Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
+from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.map_view import MapView
 from grove_tui.tui.widgets.prompt_input import PromptInput
@@ -88,7 +89,7 @@ which GGUF file serves each role and whether it is loaded yet.
         try:
             names = backend.list_worlds()
         except Exception as exc:  # an engine bug must show, not kill the app
-            self.post_message(msg.WorldsListed([], f"{type(exc).__name__}: {exc}"))
+            self.post_message(msg.WorldsListed([], describe_error(exc).text))
         else:
             self.post_message(msg.WorldsListed(names))
         self.post_message(msg.PresetsListed(backend.presets()))
@@ -110,7 +111,7 @@ which GGUF file serves each role and whether it is loaded yet.
         try:
             world = self.grove.backend.load_world(name)
         except Exception as exc:
-            self.post_message(msg.WorldFailed(name, f"{type(exc).__name__}: {exc}"))
+            self.post_message(msg.WorldFailed(name, describe_error(exc).text))
             return
         self.post_message(msg.WorldLoaded(name, world))
 

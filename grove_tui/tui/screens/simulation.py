@@ -16,6 +16,7 @@ from textual.screen import Screen
 from textual.widgets import Footer, Static, Tree
 from textual.worker import get_current_worker
 
+from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.screens.inspect import base_overlay
@@ -175,7 +176,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         try:
             simulation = self.grove.backend.simulation(self.generated)
         except Exception as exc:
-            self.post_message(msg.SimulationFailed(f"{type(exc).__name__}: {exc}"))
+            self.post_message(msg.SimulationFailed(describe_error(exc).text))
             return
         settings = self.grove.settings.simulation
         controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed)
