@@ -479,7 +479,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     bundle = Path(bundle_dir)
     if simulator not in SIMULATOR_PACKAGES:
         raise ExportError(f"--simulator {simulator!r}: HuNavSim 2.0 knows " + ", ".join(map(repr, SIMULATOR_PACKAGES))
-                          + " (the names its agent manager compares the loader's `simulator` parameter with)")
+                          + " (the names its agent manager compares the loader's `simulator` parameter with)",
+                          hint="Pass --simulator \"Gazebo Classic\", \"Gazebo Fortress\", \"Isaac Sim\" or \"Webots\".")
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
@@ -533,7 +534,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         if lower:
             problems = hunav_loading_problems(xml)
             if problems:
-                raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems))
+                raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems),
+                                  hint="Export with --keep-grove-nodes to see the tree as GROVE wrote it.")
         if not goal_ids:
             # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
             goal_ids = _tree_goal_ids(xml) or [goals.id_of(agent.start)]
