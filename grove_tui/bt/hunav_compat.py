@@ -26,6 +26,7 @@ reactions accumulate the tree's `dt` (simulation time). `CLOCKS` records it per 
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 from lxml import etree
@@ -250,3 +251,15 @@ def prefix_node_ids(xml: str, names: frozenset[str], prefix: str) -> str:
         if element.tag in ("Action", "Condition", "Decorator", "Control") and element.get("ID") in names:
             element.set("ID", prefix + element.get("ID"))
     return etree.tostring(root, pretty_print=True, encoding="unicode", xml_declaration=False)
+
+
+def checked_port(spec, port):
+    """The port as GROVE checks a literal for it: HuNavSim's own nodes get no bounds.
+
+    HuNavSim declares its ports without limits (BT::InputPort<double>(...) in bt_node.cpp and the node
+    headers), and its shipped trees use values such as ThreateningNav goal_dist="20"; a tree HuNavSim
+    runs must not be refused here. The manifest's bounds still shape what the language model may write.
+    """
+    if spec.origin != "hunavsim" or (port.min is None and port.max is None):
+        return port
+    return dataclasses.replace(port, min=None, max=None)

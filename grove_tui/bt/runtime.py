@@ -20,6 +20,7 @@ from enum import IntEnum
 from typing import Any
 
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec, PortSpec
+from grove_tui.bt.hunav_compat import checked_port
 from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, blackboard_pointer, convert_literal
 
 # BT.CPP's NodeStatus values; plain ints keep the hot path fast
@@ -1037,10 +1038,10 @@ class TreeFactory:
             key = blackboard_pointer(text)
             if key is not None:
                 blackboard.declare(key, port.type, where)
-                inputs[port.name] = BlackboardRef(blackboard, key, port, where)
+                inputs[port.name] = BlackboardRef(blackboard, key, checked_port(spec, port), where)
             else:
                 try:
-                    inputs[port.name] = convert_literal(port, text)
+                    inputs[port.name] = convert_literal(checked_port(spec, port), text)
                 except ValueError as exc:
                     raise BTError(f"{where}: port {port.name!r}: {exc}") from None
         return inputs, outputs

@@ -12,7 +12,9 @@ Accepted format (BT.CPP v4):
     </root>
 Nodes are written compactly (<GoTo .../>) or explicitly (<Action ID="GoTo" .../>). A port value is a
 literal or a blackboard pointer "{key}". <SubTree ID="X" port="{key}" _autoremap="true"/> calls tree X.
-Not supported (rejected with a clear message): <include>, scripting attributes (_skipIf, _while...).
+Files: <include path="..."/> is inlined by load_tree_file/check_tree_file (bt/include.py: relative to the
+including file, depth-limited, never outside its folder); in text it is rejected with a clear message.
+Not supported (rejected with a clear message): scripting attributes (_skipIf, _while...).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from pathlib import Path
 
 from lxml import etree
 
+from grove_tui.bt.hunav_compat import checked_port
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec, PortSpec
 from grove_tui.errors import BTError
 
@@ -290,7 +293,7 @@ def _convert_element(el: etree._Element, nodes: Mapping[str, NodeSpec], tree_ids
             out.add(line, f"{node_id}: port {attr!r} value {value!r} is not a valid blackboard pointer '{{key}}'")
             continue
         try:
-            convert_literal(port, value)
+            convert_literal(checked_port(spec, port), value)
         except ValueError as exc:
             out.add(line, f"{node_id}: port {attr!r} ({port.type}): {exc}")
     for port in spec.ports:
@@ -345,7 +348,8 @@ def _check_document(data: bytes, source: str, nodes: Mapping[str, NodeSpec]) -> 
         elif child.tag == "TreeNodesModel":
             continue
         elif child.tag == "include":
-            out.add(child.sourceline, "<include> is not supported: put every BehaviorTree in the same file")
+            out.add(child.sourceline, "<include> is resolved only for tree files (grove bt validate FILE), "
+                                      "not in text: put every BehaviorTree in the same file")
         else:
             out.add(child.sourceline, f"unexpected <{child.tag}> under <root>; expected <BehaviorTree>")
     if not tree_elements:
@@ -427,7 +431,14 @@ def load_tree_file(path: str | Path, nodes: Mapping[str, NodeSpec] = NODES) -> T
         raise BTError(f"{path}: no such behavior-tree file") from None
     except IsADirectoryError:
         raise BTError(f"{path}: is a directory, not a behavior-tree file") from None
-    return parse_tree_text(data, str(path), nodes)
+    return parse_tree_text(_with_includes(path, data), str(path), nodes)
+
+
+def _with_includes(path: Path, data: bytes) -> bytes:
+    """`<include>`s of a tree file inlined, within its folder (bt/include.py)."""
+    from grove_tui.bt.include import has_includes, resolve_includes
+
+    return resolve_includes(path) if has_includes(data) else data
 
 
 def check_tree_file(path: str | Path, nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
@@ -439,4 +450,8 @@ def check_tree_file(path: str | Path, nodes: Mapping[str, NodeSpec] = NODES) -> 
         data = path.read_bytes()
     except OSError as exc:
         return [BTProblem(str(path), None, f"cannot read: {exc.strerror or exc}")]
+    try:
+        data = _with_includes(path, data)
+    except BTError as exc:
+        return [BTProblem(str(path), None, str(exc))]
     return check_tree_text(data, str(path), nodes)

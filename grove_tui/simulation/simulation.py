@@ -35,7 +35,7 @@ from grove_tui.bt.registry import tree_factory
 from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
 from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
-from grove_tui.crowd.crowd import ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.crowd.crowd import MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
@@ -111,6 +111,7 @@ class Simulation:
         self._q_t = np.zeros(n)
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
+        self.tree_errors: dict[int, str] = {}  # agent id -> why its tree stopped (e.g. an unset blackboard entry)
         self.scenario = scenario
         self.world = world
         self.recorder = recorder if recorder is not None else _make_recorder(dt, context.ids)
@@ -250,7 +251,13 @@ class Simulation:
             # BehaviorTree.tick's quiescent check, inlined for the common guard-free case
             if quiet is not None and not quiet[1] and quiet[0].poll():
                 continue
-            status = tree.tick()
+            try:
+                status = tree.tick()
+            except BTError as exc:
+                # One agent's broken tree (say a port reading a blackboard entry nobody sets) stops
+                # that agent, with the reason in its status and the event log, not the whole run.
+                self._fail_tree(row, str(exc))
+                continue
             self._update_quiet_spec(row)
             if (status == SUCCESS or status == FAILURE) and not loops[row]:
                 finished[row] = True
@@ -261,6 +268,18 @@ class Simulation:
                 if ctx.status[row] != "evacuated":
                     ctx.status[row] = f"{ctx.status[row]} · {self.tree_result[row]}" if ctx.status[row] else self.tree_result[row]
         ctx.queues.commit()
+
+    def _fail_tree(self, row: int, message: str) -> None:
+        ctx = self.context
+        self.finished[row] = True
+        self._finished_mask[row] = True
+        self._q_on[row] = False
+        ctx.counters.finished_trees += 1
+        self.tree_result[row] = "failed"
+        self.tree_errors[int(ctx.ids[row])] = message
+        self.crowd.set_mode(row, MODE_STOP)
+        ctx.status[row] = f"tree error: {message}"
+        ctx.event("tree_error", row, message)
 
     def _update_quiet_spec(self, row: int) -> None:
         tree = self.trees[row]
