@@ -221,7 +221,8 @@ def wrap_for_hunav(xml: str, *, reaction: tuple[str, float, float, bool] | None,
         return xml
     body = bodies[0]
     used = {el.tag for t in trees for el in t.iter() if isinstance(el.tag, str)}
-    if used & looping:
+    already = any(el.get("name") == "hold_final_state" for t in trees for el in t.iter() if isinstance(el.tag, str))
+    if used & looping or already:  # looping by design, or wrapped by an earlier export (re-export of an import)
         return xml
     main.remove(body)
     routine = _element("SequenceWithMemory", {"name": "run_once_then_hold"},
@@ -263,3 +264,13 @@ def checked_port(spec, port):
     if spec.origin != "hunavsim" or (port.min is None and port.max is None):
         return port
     return dataclasses.replace(port, min=None, max=None)
+
+
+def satisfied_by_goal_id(port, given_ports) -> bool:
+    """A navigation `target` given instead as HuNavSim's `goal_id` (a global goal of the scenario).
+
+    HuNavSim 2.0's GoTo names its destination only by goal_id (go_to_node.hpp); GROVE's GoTo accepts
+    that form too (the runtime resolves the id in the scenario's global goals), so a HuNavSim tree and
+    an exported GROVE tree validate without a `target`.
+    """
+    return port.type == "target" and "goal_id" in given_ports

@@ -20,7 +20,7 @@ from enum import IntEnum
 from typing import Any
 
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec, PortSpec
-from grove_tui.bt.hunav_compat import checked_port
+from grove_tui.bt.hunav_compat import checked_port, satisfied_by_goal_id
 from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, blackboard_pointer, convert_literal
 
 # BT.CPP's NodeStatus values; plain ints keep the hot path fast
@@ -1032,7 +1032,7 @@ class TreeFactory:
                     inputs[port.name] = BlackboardRef(blackboard, key, port, where)
                 elif default is not None:
                     inputs[port.name] = default
-                elif port.required:
+                elif port.required and not satisfied_by_goal_id(port, element.ports):
                     raise BTError(f"{where}: missing required port {port.name!r}")
                 continue
             key = blackboard_pointer(text)

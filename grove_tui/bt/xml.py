@@ -27,7 +27,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from grove_tui.bt.hunav_compat import checked_port
+from grove_tui.bt.hunav_compat import checked_port, satisfied_by_goal_id
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec, PortSpec
 from grove_tui.errors import BTError
 
@@ -297,7 +297,7 @@ def _convert_element(el: etree._Element, nodes: Mapping[str, NodeSpec], tree_ids
         except ValueError as exc:
             out.add(line, f"{node_id}: port {attr!r} ({port.type}): {exc}")
     for port in spec.ports:
-        if port.required and port.name not in ports:
+        if port.required and port.name not in ports and not satisfied_by_goal_id(port, ports):
             out.add(line, f"{node_id}: missing required port {port.name!r} ({port.type}: {port.description})")
 
     n = len(element_children)

@@ -410,11 +410,10 @@ def _queue_ranks(scenario: Scenario, trees: dict[int, str], tag: str = "Queue",
     return {(a, name): rank for name, ids in members.items() for rank, a in enumerate(ids)}
 
 
-def _initial_heading(agent: AgentSpec) -> float:
-    if not agent.goals:
-        return 0.0
-    gx, gy = agent.goals[0]
-    return math.atan2(gy - agent.start[1], gx - agent.start[0])
+def _initial_heading(start: Point, first_goal: Point) -> float:
+    """Facing the first goal the agents YAML lists (0 when that goal is where it stands)."""
+    dx, dy = first_goal[0] - start[0], first_goal[1] - start[1]
+    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-9 else 0.0
 
 
 def _behavior_block(agent: AgentSpec) -> dict[str, object]:
@@ -502,7 +501,10 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         from grove_tui.navigation.theta_star import ThetaStarPlanner
         from grove_tui.world import load_world
 
-        world = load_world(scenario.world)
+        # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
+        local_world = bundle / scenario.world
+        world = load_world(local_world if local_world.suffix in (".yaml", ".yml") and local_world.is_file()
+                           else scenario.world)
         grid_path = bundle / "grid.npz"
         grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, scenario.resolution)
         planner = ThetaStarPlanner(grid)
@@ -510,6 +512,11 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     from grove_tui.simulation.simulation import HUNAV_LOOPING_NODES, REACTION_DEFAULTS
 
     goals = GoalTable()
+    # An imported HuNavSim scenario's trees name goals by id: keep those ids (1..n) as they were.
+    for goal_id in sorted(scenario.global_goals):
+        if goals.id_of(scenario.global_goals[goal_id]) != goal_id:
+            raise ExportError(f"{bundle / 'scenario.yaml'}: global_goals must be numbered 1, 2, ... with distinct "
+                              f"points (goal {goal_id} repeats an earlier point or skips an id)")
     ranks = _queue_ranks(scenario, trees) if lower else {}
     exit_ranks = _queue_ranks(scenario, trees, "FollowVelocityField", "exit") if lower else {}
     written: dict[str, str] = {}
@@ -549,7 +556,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             "goal_radius": GOAL_RADIUS,
             "cyclic_goals": False,
             "init_pose": {"x": round(float(agent.start[0]), 3), "y": round(float(agent.start[1]), 3),
-                          "z": SPAWN_HEIGHT, "h": round(_initial_heading(agent), 3)},
+                          "z": SPAWN_HEIGHT, "h": round(_initial_heading(agent.start, goals.points[goal_ids[0] - 1]), 3)},
             "behavior": _behavior_block(agent),
             "goals": goal_ids,
         }

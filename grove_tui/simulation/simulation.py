@@ -180,7 +180,8 @@ class Simulation:
         groups = _draft_groups(agents)
         clock = SimClock(0.0)
         context = SimContext(crowd, clock, ids=ids, seed=seed, world=world, grid=grid, planner=planner, walls=walls,
-                             goal_table=_goal_table(documents), groups=groups,
+                             goal_table=_goal_table(documents) | dict(getattr(scenario, "global_goals", None) or {}),
+                             groups=groups,
                              base_speed=[a.max_vel for a in agents])
         for field_id, field in (fields or {}).items():
             context.fields[field_id] = crowd.register_field(field)
