@@ -49,6 +49,8 @@ from grove_tui.bt.hunav_compat import (hunav_loading_problems, prefix_node_ids, 
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.xml import check_tree_text, parse_point_list
 from grove_tui.errors import ExportError
+from grove_tui.exports.gazebo_world import world_sdf
+from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 Point = tuple[float, float]
@@ -117,6 +119,8 @@ class HunavExport:
     lowered: bool
     trajectories: tuple[Path, ...] = ()
     readme: Path | None = None
+    world_file: Path | None = None  # Gazebo SDF (exports/gazebo_world.py)
+    map_yaml: Path | None = None  # nav2 map description beside its .pgm (exports/nav2_map.py)
 
 
 @dataclass
@@ -495,16 +499,17 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         except FileNotFoundError:
             raise ExportError(f"{path}: tree file of agent {agent.id} is missing from the bundle") from None
 
-    world = grid = planner = None
-    if lower:
-        from grove_tui.navigation.grid import OccupancyGrid, build_grid
-        from grove_tui.navigation.theta_star import ThetaStarPlanner
-        from grove_tui.world import load_world
+    from grove_tui.navigation.grid import OccupancyGrid, build_grid
+    from grove_tui.world import load_world
 
-        # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
-        local_world = bundle / scenario.world
-        world = load_world(local_world if local_world.suffix in (".yaml", ".yml") and local_world.is_file()
-                           else scenario.world)
+    # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
+    local_world = bundle / scenario.world
+    world = load_world(local_world if local_world.suffix in (".yaml", ".yml") and local_world.is_file()
+                       else scenario.world)
+    grid = planner = None
+    if lower:
+        from grove_tui.navigation.theta_star import ThetaStarPlanner
+
         grid_path = bundle / "grid.npz"
         grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, scenario.resolution)
         planner = ThetaStarPlanner(grid)
@@ -524,7 +529,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         where = str(bundle / agent.tree)
         ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
-                            exit_rank=exit_ranks, world=world)
+                            exit_rank=exit_ranks, world=world if lower else None)
         goal_ids = [goals.id_of(g) for g in agent.goals]
         xml = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
         xml = _rename_main_tree(xml, "DefaultTree")
@@ -590,6 +595,10 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         if nodes_model is not None:
             (staging / "grove_nodes_model.xml").write_text(nodes_model, encoding="utf-8")
         (staging / "README.md").write_text(readme, encoding="utf-8")
+        # hunav_gazebo_wrapper's layout: worlds/<environment_name>.world, maps/<environment_name>.yaml
+        (staging / "worlds").mkdir()
+        (staging / "worlds" / f"{world_name}.world").write_text(world_sdf(world), encoding="utf-8")
+        write_nav2_map(build_grid(world, scenario.resolution, inflation=0.0), staging / "maps", world_name)
     return HunavExport(
         directory=out,
         agents_yaml=out / f"{base}.yaml",
@@ -598,6 +607,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         lowered=lower,
         trajectories=tuple(out / name for name in copied),
         readme=out / "README.md",
+        world_file=out / "worlds" / f"{world_name}.world",
+        map_yaml=out / "maps" / f"{world_name}.yaml",
     )
 
 
@@ -645,9 +656,11 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         f"- `{base}__agent_<id>_bt.xml` ({len(tree_files)} files) -> `<ws>/src/{package}/behavior_trees/`: the "
         "agent manager loads `<yaml_base_name>__agent_<id>_bt.xml` from the *source* folder of the wrapper "
         "(bt_node.cpp `share_to_src_path`), not from `install/`.",
-        f"- `{world_name}.world` and `{world_name}.yaml`/`{world_name}.pgm`, when exported with the world, go to "
-        f"`<ws>/src/{package}/worlds/` and `maps/`: the launch loads `worlds/<environment_name>.world` and "
-        "`maps/<environment_name>.yaml`.",
+        f"- `worlds/{world_name}.world` (Gazebo SDF: walls with the door gaps, furniture as boxes) -> "
+        f"`<ws>/src/{package}/worlds/`, and `maps/{world_name}.yaml` + `maps/{world_name}.pgm` (nav2 map, not "
+        f"inflated) -> `<ws>/src/{package}/maps/`: the launch loads `worlds/<environment_name>.world` and "
+        "`maps/<environment_name>.yaml`. (Isaac Sim and Webots build their scenes from USD/Webots files; the SDF "
+        "is for Gazebo.)",
         "",
         "## Run",
         "",
