@@ -232,3 +232,16 @@ def test_loader_emulation_names_a_missing_tree(hospital_export, tmp_path):
     (copy / "agents_hospital__agent_2_bt.xml").unlink()
     problems = check_hunav_export(copy / "agents_hospital.yaml")
     assert len(problems) == 1 and "agents_hospital__agent_2_bt.xml: missing" in problems[0]
+
+
+def test_timed_nodes_say_which_clock_hunavsim_runs_them_on(hospital_export):
+    _, export = hospital_export
+    seen = set()
+    for path in export.trees:
+        for el in etree.fromstring(path.read_bytes()).iter("StopAndWaitTimerAction", "Timeout", "Delay"):
+            assert el.get("name", "").endswith("(wall clock)"), etree.tostring(el)
+            seen.add(el.tag)
+        for el in etree.fromstring(path.read_bytes()).iter("SurprisedNav"):
+            assert el.getparent().tag == "ForceFailure"
+    assert {"StopAndWaitTimerAction", "Timeout"} <= seen
+    assert "wall-clock seconds" in export.readme.read_text()

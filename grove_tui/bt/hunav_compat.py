@@ -274,3 +274,16 @@ def satisfied_by_goal_id(port, given_ports) -> bool:
     an exported GROVE tree validate without a `target`.
     """
     return port.type == "target" and "goal_id" in given_ports
+
+
+def label_clocks(xml: str) -> str:
+    """Name every unnamed timed node after the clock HuNavSim runs it on (`CLOCKS`), e.g.
+    `StopAndWaitTimerAction name="StopAndWaitTimerAction (wall clock)"`: GROVE counts simulation
+    seconds everywhere, HuNavSim counts wall-clock seconds in these, and the file should say so where
+    a reader looks (Groot2 shows the name)."""
+    root = etree.fromstring(xml.encode("utf-8"), _parser())
+    for tree in root.iter("BehaviorTree"):
+        for element in tree.iter():
+            if isinstance(element.tag, str) and element.tag in CLOCKS and element.get("name") is None:
+                element.set("name", f"{element.tag} ({CLOCKS[element.tag]} clock)")
+    return etree.tostring(root, pretty_print=True, encoding="unicode")

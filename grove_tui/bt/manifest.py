@@ -16,7 +16,8 @@ Conventions
   entity) plus auto ports `x`, `y` (the resolved target point) and `waypoints` (point_list
   "x1,y1;x2,y2": intermediate points only, target excluded, injected by the planner).
 - Durations of HuNavSim and GROVE nodes are simulation seconds; BT.CPP's `msec` ports are
-  simulation milliseconds.
+  simulation milliseconds. (HuNavSim itself counts some of them in wall-clock time:
+  bt/hunav_compat.CLOCKS says which; exported trees name those nodes "... (wall clock)".)
 - GROVE's `GoTo` replaces HuNavSim's GoTo(agent_id, time_step, goal_id, tolerance): the HuNavSim
   ports are kept (all auto/optional) so a HuNavSim tree using `goal_id` still validates and runs.
 """

@@ -44,8 +44,8 @@ import yaml
 from lxml import etree
 
 from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
-from grove_tui.bt.hunav_compat import (hunav_loading_problems, prefix_node_ids, restrict_to_hunav_ports,
-                                       wrap_for_hunav)
+from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, prefix_node_ids,
+                                       restrict_to_hunav_ports, wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.xml import check_tree_text, parse_point_list
 from grove_tui.errors import ExportError
@@ -87,6 +87,7 @@ EXIT_SPREAD_SPACING = 1.0
 EXIT_SPREAD_FIRST_ROW = 2.0
 EXIT_SPREAD_PER_ROW = 5
 HOLD_WAIT_SECONDS = 60.0
+CONVERSATION_PATIENCE = 60.0  # GROVE's ConversationRegistry.PATIENCE: start anyway after this long
 KEPT_NODE_PREFIX = "Grove"
 STREAMLINE_STEP = 0.2
 WANDER_LEG_SECONDS = 12.0
@@ -135,6 +136,7 @@ class _AgentContext:
     seed: int
     exit_rank: dict[tuple[int, str], int] = field(default_factory=dict)
     world: object | None = None
+    conversations: dict[tuple, dict[int, Point]] = field(default_factory=dict)
 
 
 def _safe_parser() -> etree.XMLParser:
@@ -175,13 +177,6 @@ def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_
     return [_hunav_goto(ctx.goals.id_of(p), tolerance) for p in points]
 
 
-def _queue_slots(service: Point, spacing: float, count: int, ctx: _AgentContext) -> list[Point]:
-    """Slots on a line from the service point into the free space in front of it."""
-    heading = _free_heading(service, ctx, reach=spacing * (count + 1))
-    return [(service[0] + math.cos(heading) * spacing * (k + 1), service[1] + math.sin(heading) * spacing * (k + 1))
-            for k in range(count)]
-
-
 def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
     """The direction from `origin` with the longest free run on the grid (up to `reach`)."""
     grid = ctx.grid
@@ -203,20 +198,80 @@ def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
     return best_angle
 
 
+def _wait_until(condition: etree._Element, name: str) -> etree._Element:
+    """RUNNING until `condition` succeeds, then SUCCESS (BT.CPP built-ins only: HuNavSim has no wait-until)."""
+    negated = etree.Element("Inverter")
+    negated.append(condition)
+    loop = etree.Element("KeepRunningUntilFailure")
+    loop.append(negated)
+    done = etree.Element("Inverter", {"name": name})
+    done.append(loop)
+    return done
+
+
+def _at_most(seconds: float, child: etree._Element) -> etree._Element:
+    """`child`, given up (successfully) after `seconds` (BT.CPP Timeout: wall clock in HuNavSim)."""
+    timeout = etree.Element("Timeout", {"msec": str(int(round(seconds * 1000)))})
+    timeout.append(child)
+    forced = etree.Element("ForceSuccess")
+    forced.append(timeout)
+    return forced
+
+
+def _agent_close(other: int, threshold: float) -> etree._Element:
+    return etree.Element("IsAgentClose", {"observer_id": "{id}", "target_agent_id": str(other),
+                                          "threshold": f"{threshold:.2f}"})
+
+
+def _far_from(other: int, threshold: float) -> etree._Element:
+    negated = etree.Element("Inverter")
+    negated.append(_agent_close(other, threshold))
+    return negated
+
+
+def _aside_spot(service: Point, heading: float, rank: int, ctx: _AgentContext) -> Point:
+    """Where the rank-th served person steps to: GROVE's rule (bt/leaves/grove.py `_aside`), one spot each."""
+    from grove_tui.bt.leaves.grove import ASIDE_SPACING, STEP_ASIDE
+
+    dx, dy = math.cos(heading), math.sin(heading)
+    spots: list[Point] = []
+    for ring in range(12):
+        out = STEP_ASIDE + ASIDE_SPACING * ring
+        for back in (0.0, ASIDE_SPACING):
+            for sign in (1.0, -1.0):
+                x = service[0] - sign * dy * out + dx * back
+                y = service[1] + sign * dx * out + dy * back
+                if ctx.grid is None or ctx.grid.is_free(x, y):
+                    spots.append((x, y))
+    if not spots:
+        return service
+    return spots[rank % len(spots)]
+
+
 def _lower_queue(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+    """HuNavSim has no queue node: each person walks to its slot and moves up only once the person
+    ahead of it (the agent one rank before) has moved on, then is served and steps aside, as GROVE's
+    Queue does. Waiting on the person ahead instead of on a timer keeps two people off one slot."""
     service = (_attr_float(el, "x", where), _attr_float(el, "y", where))
     spacing = float(el.get("spacing", "0.6"))
     service_time = float(el.get("service_time", "10"))
     name = el.get("service_point", "service point")
     rank = ctx.queue_rank.get((ctx.agent.id, name), 0)
-    slots = _queue_slots(service, spacing, rank + 1, ctx)
+    heading = _free_heading(service, ctx, reach=spacing * (rank + 2))
+    slots = [(service[0] + math.cos(heading) * spacing * (k + 1), service[1] + math.sin(heading) * spacing * (k + 1))
+             for k in range(rank + 1)]
+    ahead = next((a for (a, n), r in ctx.queue_rank.items() if n == name and r == rank - 1), None)
     steps: list[etree._Element] = []
-    # Walk to the slot behind everyone who queued first, then advance one slot per service time.
     steps += _route([slots[rank]], ctx)
     for k in range(rank, 0, -1):
-        steps.append(_wait(service_time))
+        if ahead is not None:
+            # the person ahead is in line in front of me (given up after one service time: it may have
+            # moved on before I arrived), then has moved on out of the slot I step into
+            steps.append(_at_most(service_time, _wait_until(_agent_close(ahead, 1.2 * spacing), "ahead_in_line")))
+            steps.append(_wait_until(_far_from(ahead, 1.5 * spacing), "ahead_moved_on"))
         steps += _route([slots[k - 1]], ctx)
     steps.append(_wait(service_time))  # being served at the head
+    steps += _route([_aside_spot(service, heading, rank, ctx)], ctx)
     return _sequence(steps, f"Queue_{name}")
 
 
@@ -369,21 +424,90 @@ def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) ->
         group = el.get("group_id") or str(ctx.agent.group)
         return etree.Element("SetGroupId", {"agent_id": "{id}", "group_id": group})
     if tag == "Converse":
-        target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
-        waypoints = list(parse_point_list(el.get("waypoints", "")))
-        members = [int(m) for m in (el.get("members") or str(ctx.agent.id)).replace(" ", "").split(",") if m]
-        duration = float(el.get("duration", "20"))
-        steps = _route(waypoints + [target], ctx)
-        if members and members[0] == ctx.agent.id:
-            steps.append(etree.Element("ConversationFormation", {
-                "main_agent_id": "{id}", "goal_id": str(ctx.goals.id_of(target)),
-                "conversation_duration": f"{duration:g}", "time_step": "{dt}",
-                "non_main_agent_ids": ",".join(str(m) for m in members[1:]),
-            }))
-        else:
-            steps.append(_wait(duration))
-        return _sequence(steps, f"Converse_{el.get('target', 'spot')}")
+        return _lower_converse(el, ctx, where)
     return None
+
+
+def _members(el: etree._Element, agent_id: int) -> tuple[int, ...]:
+    return tuple(sorted({int(m) for m in (el.get("members") or str(agent_id)).replace(" ", "").split(",") if m}
+                        | {agent_id}))
+
+
+def _approach(el: etree._Element, start: Point) -> Point:
+    """Where an agent comes from when it reaches a conversation: its last waypoint, else its start."""
+    waypoints = list(parse_point_list(el.get("waypoints", "")))
+    return waypoints[-1] if waypoints else start
+
+
+def _conversation_spots(scenario: Scenario, trees: dict[int, str], grid) -> dict[tuple, dict[int, Point]]:
+    """Each conversation's spots, as GROVE's ConversationRegistry gives them (bt/coordination.py):
+    evenly around a circle of radius 0.5 + 0.2 per extra member, starting toward the first member,
+    each member taking the closest free spot, closest pair first. Computed once for all members, from
+    where each arrives, so every member's tree names the same circle."""
+    from grove_tui.bt.coordination import conversation_radius
+
+    arrivals: dict[tuple, dict[int, Point]] = {}
+    centres: dict[tuple, Point] = {}
+    for agent in sorted(scenario.agents, key=lambda a: a.id):
+        root = etree.fromstring(trees[agent.id].encode("utf-8"), _safe_parser())
+        for el in root.iter("Converse"):
+            if el.get("x") is None or el.get("y") is None:
+                continue
+            centre = (float(el.get("x")), float(el.get("y")))
+            key = (round(centre[0], 2), round(centre[1], 2), _members(el, agent.id))
+            centres[key] = centre
+            arrivals.setdefault(key, {})[agent.id] = _approach(el, agent.start)
+    plans: dict[tuple, dict[int, Point]] = {}
+    for key, arriving in arrivals.items():
+        members = key[2]
+        cx, cy = centres[key]
+        n = len(members)
+        radius = conversation_radius(n)
+        first = arriving.get(members[0], next(iter(arriving.values())))
+        start = math.atan2(first[1] - cy, first[0] - cx)
+        spots = []
+        for k in range(n):
+            x, y = cx + radius * math.cos(start + 2 * math.pi * k / n), cy + radius * math.sin(start + 2 * math.pi * k / n)
+            if grid is not None and not grid.is_free(x, y):
+                x, y = grid.nearest_free(x, y) or (x, y)
+            spots.append((float(x), float(y)))
+        pairs = sorted((math.dist(arriving.get(m, (cx, cy)), spot), m, k) for m in members for k, spot in enumerate(spots))
+        assigned: dict[int, Point] = {}
+        used: set[int] = set()
+        for _, m, k in pairs:
+            if m not in assigned and k not in used:
+                assigned[m] = spots[k]
+                used.add(k)
+        plans[key] = assigned
+    return plans
+
+
+def _lower_converse(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+    """GROVE's conversation in HuNavSim nodes: walk to one's own spot on the circle, wait until every
+    other member is at theirs (at most CONVERSATION_PATIENCE s, as GROVE's registry), face the
+    centre, talk for the duration.
+
+    Not HuNavSim's ConversationFormation: it pushes the spots behind the agent's existing goals and
+    then reads the goal list's front() (conversation_formation_node.cpp, onStart step 11 and onRunning
+    step 2), so an agent that has any goal (every agent does: the loader needs one) never walks to its
+    spot and the conversation never starts.
+    """
+    target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
+    waypoints = list(parse_point_list(el.get("waypoints", "")))
+    members = _members(el, ctx.agent.id)
+    duration = float(el.get("duration", "20"))
+    key = (round(target[0], 2), round(target[1], 2), members)
+    spots = ctx.conversations.get(key, {})
+    mine = spots.get(ctx.agent.id, target)
+    steps = _route(waypoints + [mine], ctx)
+    for other in members:
+        if other == ctx.agent.id:
+            continue
+        reach = math.dist(mine, spots.get(other, target)) + 0.5
+        steps.append(_at_most(CONVERSATION_PATIENCE, _wait_until(_agent_close(other, reach), f"wait_for_{other}")))
+    steps.append(etree.Element("LookAtPoint", {"agent_id": "{id}", "goal_id": str(ctx.goals.id_of(target))}))
+    steps.append(_wait(duration))
+    return _sequence(steps, f"Converse_{el.get('target', 'spot')}")
 
 
 def lower_tree(xml: str, ctx: _AgentContext, where: str, world=None) -> str:
@@ -524,12 +648,13 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
                               f"points (goal {goal_id} repeats an earlier point or skips an id)")
     ranks = _queue_ranks(scenario, trees) if lower else {}
     exit_ranks = _queue_ranks(scenario, trees, "FollowVelocityField", "exit") if lower else {}
+    conversations = _conversation_spots(scenario, trees, grid) if lower else {}
     written: dict[str, str] = {}
     agent_entries: dict[str, dict[str, object]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         where = str(bundle / agent.tree)
         ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
-                            exit_rank=exit_ranks, world=world if lower else None)
+                            exit_rank=exit_ranks, world=world if lower else None, conversations=conversations)
         goal_ids = [goals.id_of(g) for g in agent.goals]
         xml = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
         xml = _rename_main_tree(xml, "DefaultTree")
@@ -542,7 +667,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             # Kept GROVE nodes get their own IDs, so GROVE's GoTo(target, x, y) never clashes with
             # HuNavSim's registered GoTo(goal_id); a C++ plugin must register them under these names.
             xml = prefix_node_ids(xml, GROVE_ONLY, KEPT_NODE_PREFIX)
-        xml = restrict_to_hunav_ports(xml)
+        xml = label_clocks(restrict_to_hunav_ports(xml))
         if lower:
             problems = hunav_loading_problems(xml)
             if problems:
