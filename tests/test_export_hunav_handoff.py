@@ -17,6 +17,7 @@ from helpers.hunavsim_factory import HunavSimFactory
 from lxml import etree
 
 from grove_tui.bt.hunav_compat import HUNAV_NODES, hunav_loading_problems, restrict_to_hunav_ports
+from grove_tui.bt.xml import read_tree, write_tree
 from grove_tui.exports.hunav import GOAL_TOLERANCE, ExportError, export_hunav
 from grove_tui.exports.hunav_loader_check import check_hunav_export, check_loader_parameters
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
@@ -84,7 +85,7 @@ def test_undeclared_ports_are_what_hunavsim_refuses():
            'duration="5"/></Sequence></BehaviorTree></root>')
     problems = hunav_loading_problems(xml)
     assert len(problems) == 3 and "'agent_id'" in problems[0] and "'closest_dist'" in problems[1]
-    fixed = restrict_to_hunav_ports(xml)
+    fixed = write_tree(restrict_to_hunav_ports(read_tree(xml)))
     assert hunav_loading_problems(fixed) == []
     root = etree.fromstring(fixed.encode())
     assert dict(root.find(".//RandomChanceCondition").attrib) == {"probability": "0.5"}

@@ -29,8 +29,6 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from lxml import etree
-
 from grove_tui.bt.manifest import NODES
 
 # BT.CPP 4 built-ins a HuNavSim tree may use (BehaviorTree.CPP registers them in every factory).
@@ -112,146 +110,130 @@ CLOCKS: dict[str, str] = {name: node.clock for name, node in HUNAV_NODES.items()
     "Delay": "wall", "Timeout": "wall"}
 
 _ANY_NODE_ATTRIBUTES = frozenset({"name", "ID", "_description", "_uid", "_fullpath"})
-_STRUCTURE = frozenset({"root", "BehaviorTree", "TreeNodesModel", "include"})
+HOLD_NAME = "hold_final_state"
+REACTION_NODES = frozenset({"SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav"})
 
 
-def _parser() -> etree.XMLParser:
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False,
-                           remove_blank_text=True)
+def _read(xml: str | bytes):
+    from grove_tui.bt.xml import read_tree  # bt.xml imports this module: import at call time
+
+    return read_tree(xml, "<hunav tree>")
 
 
-def restrict_to_hunav_ports(xml: str) -> str:
-    """Drop every attribute of a HuNavSim node that HuNavSim does not declare (BT.CPP 4 would refuse it).
+def restrict_to_hunav_ports(document):
+    """Drop, in place, every attribute of a HuNavSim node that HuNavSim does not declare (BT.CPP 4 would
+    refuse it); returns the document.
 
     GROVE's manifest keeps ports HuNavSim's own TreeNodesModel.xml documents but its C++ no longer
     declares (RandomChanceCondition agent_id, ApproachAgent closest_dist/max_vel); HuNavSim uses its
     built-in values for those, so dropping them is what HuNavSim itself would run.
     """
-    root = etree.fromstring(xml.encode("utf-8"), _parser())
-    for tree in root.iter("BehaviorTree"):
-        for element in tree.iter():
-            if not isinstance(element.tag, str):
-                continue
-            node = HUNAV_NODES.get(element.tag)
-            if node is None:
-                continue
-            for attribute in list(element.attrib):
-                if attribute not in node.ports and attribute not in _ANY_NODE_ATTRIBUTES:
-                    del element.attrib[attribute]
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+    for element in document.nodes():
+        node = HUNAV_NODES.get(element.id)
+        if node is None:
+            continue
+        for attribute in list(element.attributes):
+            if attribute not in node.ports and attribute not in _ANY_NODE_ATTRIBUTES:
+                del element.attributes[attribute]
+    return document
 
 
-def hunav_loading_problems(xml: str) -> list[str]:
+def hunav_loading_problems(xml: str | bytes) -> list[str]:
     """Why HuNavSim 2.0's factory would refuse this tree: unregistered node IDs, undeclared ports.
 
-    Checks exactly what BT.CPP 4's XML parser checks against the registered manifests; an empty list
-    means `createTreeFromFile` gets past node creation (port *values* are read at tick time).
+    Checks what BT.CPP 4's XML parser checks against the registered manifests; an empty list means
+    `createTreeFromFile` gets past node creation (port *values* are read at tick time).
     """
-    root = etree.fromstring(xml.encode("utf-8"), _parser())
+    document = _read(xml)
     problems: list[str] = []
-    tree_ids = {tree.get("ID") for tree in root.iter("BehaviorTree")}
-    for tree in root.iter("BehaviorTree"):
-        for element in tree.iter():
-            if not isinstance(element.tag, str) or element is tree:
-                continue
-            where = f"line {element.sourceline}: <{element.tag}>"
-            if element.tag == "SubTree":
-                if element.get("ID") not in tree_ids:
-                    problems.append(f"{where} calls BehaviorTree {element.get('ID')!r}, not in this file")
-                continue
-            if element.tag in BTCPP_BUILTINS:
-                continue
-            node = HUNAV_NODES.get(element.tag)
-            if node is None:
-                problems.append(f"{where} is not a node HuNavSim 2.0 registers")
-                continue
-            for attribute in element.attrib:
-                if attribute not in node.ports and attribute not in _ANY_NODE_ATTRIBUTES:
-                    problems.append(f"{where} has port {attribute!r}, which HuNavSim's {element.tag} does not "
-                                    f"declare (it declares {', '.join(node.inputs + node.outputs)})")
+    for element in document.nodes():
+        where = f"line {element.line}: <{element.id}>"
+        if element.id == "SubTree":
+            if element.subtree_id not in document.trees:
+                problems.append(f"{where} calls BehaviorTree {element.subtree_id!r}, not in this file")
+            continue
+        if element.id in BTCPP_BUILTINS:
+            continue
+        node = HUNAV_NODES.get(element.id)
+        if node is None:
+            problems.append(f"{where} is not a node HuNavSim 2.0 registers")
+            continue
+        for attribute in element.attributes:
+            if attribute not in node.ports and attribute not in _ANY_NODE_ATTRIBUTES:
+                problems.append(f"{where} has port {attribute!r}, which HuNavSim's {element.id} does not "
+                                f"declare (it declares {', '.join(node.inputs + node.outputs)})")
     return problems
 
 
-def node_ids(xml: str) -> list[str]:
+def node_ids(xml: str | bytes) -> list[str]:
     """Node IDs used in the trees of a document (in document order, repeated)."""
-    root = etree.fromstring(xml.encode("utf-8"), _parser())
-    return [el.tag for tree in root.iter("BehaviorTree") for el in tree.iter()
-            if isinstance(el.tag, str) and el is not tree]
+    return [element.id for element in _read(xml).nodes()]
 
 
-def _element(tag: str, attributes: dict[str, str], children=()) -> etree._Element:
-    element = etree.Element(tag, attributes)
-    for child in children:
-        element.append(child)
-    return element
-
-
-def hold_forever(wait_seconds: float) -> etree._Element:
-    """A leaf-level subtree that stands still and never completes.
+def hold_forever(wait_seconds: float):
+    """A subtree that stands still and never completes.
 
     HuNavSim ticks every agent's root on every step and BT.CPP 4 resets a root that returned SUCCESS
     or FAILURE, so a tree that simply ends is started again (bt_node.cpp `tree_tick`, every
     ComputeAgents call). KeepRunningUntilFailure turns each completed wait into RUNNING and restarts it.
     """
-    return _element("KeepRunningUntilFailure", {"name": "hold_final_state"}, [
-        _element("StopAndWaitTimerAction", {"agent_id": "{id}", "wait_duration": f"{wait_seconds:g}"})])
+    from grove_tui.bt.document import node
+
+    hold = node("KeepRunningUntilFailure", [node("StopAndWaitTimerAction", agent_id="{id}",
+                                                 wait_duration=f"{wait_seconds:g}")])
+    hold.set("name", HOLD_NAME)
+    return hold
 
 
-def wrap_for_hunav(xml: str, *, reaction: tuple[str, float, float, bool] | None, hold_seconds: float,
-                   looping: frozenset[str]) -> str:
-    """Make a GROVE tree behave in HuNavSim as it does in GROVE.
+def wrap_for_hunav(document, *, reaction: tuple[str, float, float, bool] | None, hold_seconds: float,
+                   looping: frozenset[str]):
+    """Make a GROVE tree behave in HuNavSim as it does in GROVE (in place; returns the document).
 
     - The main tree's body runs once (ForceSuccess: a failing step ends the routine, as in GROVE, where
       a finished tree leaves the agent where it is) and then holds, standing where it ended; so the
       final state survives HuNavSim's per-step ticking of the root. Trees that loop HuNavSim-style
-      (a node of `looping`, e.g. RegularNav, completes every tick by design) are left as they are.
+      (a node of `looping`, e.g. RegularNav, completes every tick by design) and trees already
+      wrapped (a re-export of an imported export) are left as they are.
     - `reaction` (node, trigger distance m, duration s, only once) wraps the routine in the pattern
       GROVE's simulation uses (simulation.with_robot_reaction) and HuNavSim 1.0's BTSurprisedNav.xml
       used: ReactiveFallback[Sequence[IsRobotVisible, ForceFailure(<Reaction>Nav)], routine]. HuNavSim
       2.0 reacts to the robot only through the tree (no built-in reaction), so the tree must carry it.
     """
-    root = etree.fromstring(xml.encode("utf-8"), _parser())
-    main_id = root.get("main_tree_to_execute")
-    trees = root.findall("BehaviorTree")
-    main = next((t for t in trees if t.get("ID") == main_id), trees[0] if trees else None)
-    if main is None:
-        return xml
-    bodies = [child for child in main if isinstance(child.tag, str)]
-    if len(bodies) != 1:
-        return xml
-    body = bodies[0]
-    used = {el.tag for t in trees for el in t.iter() if isinstance(el.tag, str)}
-    already = any(el.get("name") == "hold_final_state" for t in trees for el in t.iter() if isinstance(el.tag, str))
-    if used & looping or already:  # looping by design, or wrapped by an earlier export (re-export of an import)
-        return xml
-    main.remove(body)
-    routine = _element("SequenceWithMemory", {"name": "run_once_then_hold"},
-                       [_element("ForceSuccess", {}, [body]), hold_forever(hold_seconds)])
-    reaction_nodes = {"SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav"}
-    if reaction is not None and not (used & reaction_nodes):
-        node, distance, duration, once = reaction
-        trigger = _element("Sequence", {"name": f"react_{node}"}, [
-            _element("IsRobotVisible", {"agent_id": "{id}", "distance": f"{distance:g}"}),
-            _element("ForceFailure", {}, [_element(node, {
-                "agent_id": "{id}", "time_step": "{dt}", "beh_duration": f"{duration:g}",
-                "only_once": "true" if once else "false"})]),
+    from grove_tui.bt.document import node
+
+    used = {element.id for element in document.nodes()}
+    wrapped = any(element.get("name") == HOLD_NAME for element in document.nodes())
+    if used & looping or wrapped:
+        return document
+    main = document.trees[document.main_tree_id]
+    if len(main.children) != 1:
+        return document
+    routine = node("SequenceWithMemory", [node("ForceSuccess", [main.children[0]]), hold_forever(hold_seconds)])
+    routine.set("name", "run_once_then_hold")
+    if reaction is not None and not (used & REACTION_NODES):
+        node_id, distance, duration, once = reaction
+        trigger = node("Sequence", [
+            node("IsRobotVisible", agent_id="{id}", distance=f"{distance:g}"),
+            node("ForceFailure", [node(node_id, agent_id="{id}", time_step="{dt}", beh_duration=f"{duration:g}",
+                                       only_once="true" if once else "false")]),
         ])
-        routine = _element("ReactiveFallback", {"name": "robot_reaction"}, [trigger, routine])
-    main.append(routine)
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+        trigger.set("name", f"react_{node_id}")
+        routine = node("ReactiveFallback", [trigger, routine])
+        routine.set("name", "robot_reaction")
+    main.children[0] = routine
+    return document
 
 
-def prefix_node_ids(xml: str, names: frozenset[str], prefix: str) -> str:
-    """Rename nodes `names` to `prefix + name` in trees and in a TreeNodesModel (ID attributes)."""
-    root = etree.fromstring(xml.encode("utf-8"), _parser())
-    for element in root.iter():
-        if not isinstance(element.tag, str):
-            continue
+def prefix_node_ids(document, names: frozenset[str], prefix: str):
+    """Rename nodes `names` to `prefix + name`, in place, in trees and TreeNodesModels (ID attributes)."""
+    for element in document.nodes():
         if element.tag in names:
             element.tag = prefix + element.tag
-        if element.tag in ("Action", "Condition", "Decorator", "Control") and element.get("ID") in names:
-            element.set("ID", prefix + element.get("ID"))
-    return etree.tostring(root, pretty_print=True, encoding="unicode", xml_declaration=False)
+    for model in document.models:
+        for element in model.walk():
+            if element.tag in ("Action", "Condition", "Decorator", "Control") and element.get("ID") in names:
+                element.set("ID", prefix + element.get("ID"))
+    return document
 
 
 def checked_port(spec, port):
@@ -276,14 +258,12 @@ def satisfied_by_goal_id(port, given_ports) -> bool:
     return port.type == "target" and "goal_id" in given_ports
 
 
-def label_clocks(xml: str) -> str:
-    """Name every unnamed timed node after the clock HuNavSim runs it on (`CLOCKS`), e.g.
+def label_clocks(document):
+    """Name every unnamed timed node after the clock HuNavSim runs it on (`CLOCKS`), in place, e.g.
     `StopAndWaitTimerAction name="StopAndWaitTimerAction (wall clock)"`: GROVE counts simulation
     seconds everywhere, HuNavSim counts wall-clock seconds in these, and the file should say so where
     a reader looks (Groot2 shows the name)."""
-    root = etree.fromstring(xml.encode("utf-8"), _parser())
-    for tree in root.iter("BehaviorTree"):
-        for element in tree.iter():
-            if isinstance(element.tag, str) and element.tag in CLOCKS and element.get("name") is None:
-                element.set("name", f"{element.tag} ({CLOCKS[element.tag]} clock)")
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+    for element in document.nodes():
+        if element.id in CLOCKS and element.get("name") is None:
+            element.set("name", f"{element.id} ({CLOCKS[element.id]} clock)")
+    return document

@@ -731,14 +731,17 @@ def _default_text(port: PortSpec) -> str | None:
     return str(port.default)
 
 
-def treenodes_model_xml() -> str:
-    """The manifest as a Groot2 TreeNodesModel (BT.CPP v4); built-in control nodes are omitted."""
+def treenodes_model_xml(renamed: dict[str, str] | None = None) -> str:
+    """The manifest as a Groot2 TreeNodesModel (BT.CPP v4); built-in control nodes are omitted.
+
+    `renamed` gives some nodes another ID (the HuNavSim export keeps GROVE nodes as Grove<Node>)."""
+    renamed = renamed or {}
     tag = {"control": "Control", "decorator": "Decorator", "action": "Action", "condition": "Condition"}
     lines = ['<?xml version="1.0" encoding="UTF-8"?>', '<root BTCPP_format="4">', "  <TreeNodesModel>"]
     for spec in NODES.values():
         if spec.origin == "btcpp":
             continue
-        lines.append(f"    <{tag[spec.category]} ID={quoteattr(spec.name)}>")
+        lines.append(f"    <{tag[spec.category]} ID={quoteattr(renamed.get(spec.name, spec.name))}>")
         for port in spec.ports:
             kind = "input_port" if port.direction == "in" else "output_port"
             attrs = f"name={quoteattr(port.name)} type={quoteattr(_BTCPP_TYPE[port.type])}"

@@ -17,8 +17,6 @@ Content, all static models:
 from __future__ import annotations
 
 import math
-from xml.sax.saxutils import quoteattr
-
 import numpy as np
 
 WALL_HEIGHT = 2.5
@@ -27,6 +25,15 @@ FURNITURE_HEIGHT = {"table": 0.75, "desk": 0.75, "counter": 1.05, "reception_des
                     "sofa": 0.8, "chair": 0.9, "vending_machine": 1.8, "coffee_machine": 1.2, "shelf": 1.8}
 DEFAULT_FURNITURE_HEIGHT = 1.0
 OBSTACLE_HEIGHT = WALL_HEIGHT
+
+
+_ATTRIBUTE_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;"})
+
+
+def quoteattr(value: str) -> str:
+    """An SDF attribute value in double quotes (names come from the world file; escape what XML needs).
+    Not xml.sax.saxutils: XML libraries belong to grove_tui/bt/ (tests/test_bt_ownership.py)."""
+    return '"' + str(value).translate(_ATTRIBUTE_ESCAPES) + '"'
 
 
 def _f(value: float) -> str:

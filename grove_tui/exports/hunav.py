@@ -41,14 +41,15 @@ from pathlib import Path
 
 import numpy as np
 import yaml
-from lxml import etree
 
 from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
 from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, prefix_node_ids,
                                        restrict_to_hunav_ports, wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
-from grove_tui.bt.xml import check_tree_text, parse_point_list
-from grove_tui.errors import ExportError
+from grove_tui.bt.document import TreeDocument, TreeElement, node
+from grove_tui.bt.ports import parse_point_list
+from grove_tui.bt.xml import check_tree_text, read_file_bytes, read_tree, write_tree
+from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.scenario.model import AgentSpec, Scenario
@@ -139,41 +140,32 @@ class _AgentContext:
     conversations: dict[tuple, dict[int, Point]] = field(default_factory=dict)
 
 
-def _safe_parser() -> etree.XMLParser:
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False,
-                           remove_blank_text=True)
-
-
-def _attr_float(el: etree._Element, name: str, where: str) -> float:
+def _attr_float(el: TreeElement, name: str, where: str) -> float:
     value = el.get(name)
     if value is None:
-        raise ExportError(f"{where}: <{el.tag}> on line {el.sourceline} has no `{name}` port; "
+        raise ExportError(f"{where}: <{el.id}> on line {el.line} has no `{name}` port; "
                           "export needs post-processed trees (generate the bundle with grove)")
     try:
         return float(value)
     except ValueError:
-        raise ExportError(f"{where}: <{el.tag}> on line {el.sourceline}: `{name}`={value!r} is not a number") from None
+        raise ExportError(f"{where}: <{el.id}> on line {el.line}: `{name}`={value!r} is not a number") from None
 
 
-def _hunav_goto(goal_id: int, tolerance: float) -> etree._Element:
-    return etree.Element("GoTo", {"agent_id": "{id}", "time_step": "{dt}", "goal_id": str(goal_id),
-                                  "tolerance": f"{tolerance:g}"})
+def _hunav_goto(goal_id: int, tolerance: float) -> TreeElement:
+    return node("GoTo", agent_id="{id}", time_step="{dt}", goal_id=str(goal_id), tolerance=f"{tolerance:g}")
 
 
-def _wait(seconds: float) -> etree._Element:
-    return etree.Element("StopAndWaitTimerAction", {"agent_id": "{id}", "wait_duration": f"{seconds:g}"})
+def _wait(seconds: float) -> TreeElement:
+    return node("StopAndWaitTimerAction", agent_id="{id}", wait_duration=f"{seconds:g}")
 
 
-def _sequence(children: Sequence[etree._Element], name: str) -> etree._Element:
+def _sequence(children: Sequence[TreeElement], name: str) -> TreeElement:
     # With memory: when a robot reaction halts the route, the agent resumes at the leg it was on
     # instead of walking back to the first point (BT.CPP 4 keeps the index across halt()).
-    seq = etree.Element("SequenceWithMemory", {"name": name})
-    for child in children:
-        seq.append(child)
-    return seq
+    return TreeElement("SequenceWithMemory", {"name": name}, list(children))
 
 
-def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[etree._Element]:
+def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[TreeElement]:
     return [_hunav_goto(ctx.goals.id_of(p), tolerance) for p in points]
 
 
@@ -198,35 +190,22 @@ def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
     return best_angle
 
 
-def _wait_until(condition: etree._Element, name: str) -> etree._Element:
+def _wait_until(condition: TreeElement, name: str) -> TreeElement:
     """RUNNING until `condition` succeeds, then SUCCESS (BT.CPP built-ins only: HuNavSim has no wait-until)."""
-    negated = etree.Element("Inverter")
-    negated.append(condition)
-    loop = etree.Element("KeepRunningUntilFailure")
-    loop.append(negated)
-    done = etree.Element("Inverter", {"name": name})
-    done.append(loop)
-    return done
+    return TreeElement("Inverter", {"name": name}, [node("KeepRunningUntilFailure", [node("Inverter", [condition])])])
 
 
-def _at_most(seconds: float, child: etree._Element) -> etree._Element:
+def _at_most(seconds: float, child: TreeElement) -> TreeElement:
     """`child`, given up (successfully) after `seconds` (BT.CPP Timeout: wall clock in HuNavSim)."""
-    timeout = etree.Element("Timeout", {"msec": str(int(round(seconds * 1000)))})
-    timeout.append(child)
-    forced = etree.Element("ForceSuccess")
-    forced.append(timeout)
-    return forced
+    return node("ForceSuccess", [node("Timeout", [child], msec=str(int(round(seconds * 1000))))])
 
 
-def _agent_close(other: int, threshold: float) -> etree._Element:
-    return etree.Element("IsAgentClose", {"observer_id": "{id}", "target_agent_id": str(other),
-                                          "threshold": f"{threshold:.2f}"})
+def _agent_close(other: int, threshold: float) -> TreeElement:
+    return node("IsAgentClose", observer_id="{id}", target_agent_id=str(other), threshold=f"{threshold:.2f}")
 
 
-def _far_from(other: int, threshold: float) -> etree._Element:
-    negated = etree.Element("Inverter")
-    negated.append(_agent_close(other, threshold))
-    return negated
+def _far_from(other: int, threshold: float) -> TreeElement:
+    return node("Inverter", [_agent_close(other, threshold)])
 
 
 def _aside_spot(service: Point, heading: float, rank: int, ctx: _AgentContext) -> Point:
@@ -248,7 +227,7 @@ def _aside_spot(service: Point, heading: float, rank: int, ctx: _AgentContext) -
     return spots[rank % len(spots)]
 
 
-def _lower_queue(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+def _lower_queue(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
     """HuNavSim has no queue node: each person walks to its slot and moves up only once the person
     ahead of it (the agent one rank before) has moved on, then is served and steps aside, as GROVE's
     Queue does. Waiting on the person ahead instead of on a timer keeps two people off one slot."""
@@ -261,7 +240,7 @@ def _lower_queue(el: etree._Element, ctx: _AgentContext, where: str) -> etree._E
     slots = [(service[0] + math.cos(heading) * spacing * (k + 1), service[1] + math.sin(heading) * spacing * (k + 1))
              for k in range(rank + 1)]
     ahead = next((a for (a, n), r in ctx.queue_rank.items() if n == name and r == rank - 1), None)
-    steps: list[etree._Element] = []
+    steps: list[TreeElement] = []
     steps += _route([slots[rank]], ctx)
     for k in range(rank, 0, -1):
         if ahead is not None:
@@ -320,12 +299,12 @@ def _simplify_free(points: list[Point], ctx: _AgentContext) -> list[Point]:
     return out
 
 
-def _lower_field(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
     exit_point = (_attr_float(el, "x", where), _attr_float(el, "y", where))
     field_id = el.get("field")
     rel = ctx.scenario.fields.get(field_id or "")
     if rel is None:
-        raise ExportError(f"{where}: FollowVelocityField on line {el.sourceline} names field {field_id!r}, "
+        raise ExportError(f"{where}: FollowVelocityField on line {el.line} names field {field_id!r}, "
                           f"which the scenario does not list (fields: {sorted(ctx.scenario.fields)})")
     points = _streamline(ctx.bundle / rel, ctx.agent.start, exit_point, ctx)
     points += _beyond_exit(el.get("exit", ""), ctx)
@@ -366,14 +345,14 @@ def _beyond_exit(door_name: str, ctx: _AgentContext) -> list[Point]:
     return [door.outward_point(1.0)]
 
 
-def _lower_wander(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element:
+def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement:
     zone_name = el.get("zone", "")
     duration = float(el.get("duration", "30"))
     if world is None:
-        raise ExportError(f"{where}: Wander on line {el.sourceline} needs the world to sample points")
+        raise ExportError(f"{where}: Wander on line {el.line} needs the world to sample points")
     zone = world.zone(zone_name) if zone_name in {z.name for z in world.zones} else world.zone_at(*ctx.agent.start)
     if zone is None:
-        raise ExportError(f"{where}: Wander on line {el.sourceline}: unknown zone {zone_name!r}")
+        raise ExportError(f"{where}: Wander on line {el.line}: unknown zone {zone_name!r}")
     rng = np.random.default_rng([ctx.seed, ctx.agent.id])
     minx, miny, maxx, maxy = zone.polygon.bounds
     legs = max(1, int(math.ceil(duration / WANDER_LEG_SECONDS)))
@@ -405,9 +384,9 @@ def _planned(a: Point, b: Point, ctx: _AgentContext) -> list[Point]:
     return [tuple(map(float, q)) for q in path[1:]]
 
 
-def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element | None:
+def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement | None:
     """Replacement for a GROVE-only element, or None to keep it."""
-    tag = el.tag
+    tag = el.id
     if tag == "GoTo" and el.get("x") is not None:  # GROVE's GoTo; HuNavSim's own names only a goal_id
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
         waypoints = list(parse_point_list(el.get("waypoints", "")))
@@ -422,24 +401,24 @@ def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) ->
         return _lower_wander(el, ctx, where, world)
     if tag == "JoinGroup":
         group = el.get("group_id") or str(ctx.agent.group)
-        return etree.Element("SetGroupId", {"agent_id": "{id}", "group_id": group})
+        return node("SetGroupId", agent_id="{id}", group_id=group)
     if tag == "Converse":
         return _lower_converse(el, ctx, where)
     return None
 
 
-def _members(el: etree._Element, agent_id: int) -> tuple[int, ...]:
+def _members(el: TreeElement, agent_id: int) -> tuple[int, ...]:
     return tuple(sorted({int(m) for m in (el.get("members") or str(agent_id)).replace(" ", "").split(",") if m}
                         | {agent_id}))
 
 
-def _approach(el: etree._Element, start: Point) -> Point:
+def _approach(el: TreeElement, start: Point) -> Point:
     """Where an agent comes from when it reaches a conversation: its last waypoint, else its start."""
     waypoints = list(parse_point_list(el.get("waypoints", "")))
     return waypoints[-1] if waypoints else start
 
 
-def _conversation_spots(scenario: Scenario, trees: dict[int, str], grid) -> dict[tuple, dict[int, Point]]:
+def _conversation_spots(scenario: Scenario, trees: dict[int, TreeDocument], grid) -> dict[tuple, dict[int, Point]]:
     """Each conversation's spots, as GROVE's ConversationRegistry gives them (bt/coordination.py):
     evenly around a circle of radius 0.5 + 0.2 per extra member, starting toward the first member,
     each member taking the closest free spot, closest pair first. Computed once for all members, from
@@ -449,9 +428,8 @@ def _conversation_spots(scenario: Scenario, trees: dict[int, str], grid) -> dict
     arrivals: dict[tuple, dict[int, Point]] = {}
     centres: dict[tuple, Point] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
-        root = etree.fromstring(trees[agent.id].encode("utf-8"), _safe_parser())
-        for el in root.iter("Converse"):
-            if el.get("x") is None or el.get("y") is None:
+        for el in trees[agent.id].nodes():
+            if el.id != "Converse" or el.get("x") is None or el.get("y") is None:
                 continue
             centre = (float(el.get("x")), float(el.get("y")))
             key = (round(centre[0], 2), round(centre[1], 2), _members(el, agent.id))
@@ -482,7 +460,7 @@ def _conversation_spots(scenario: Scenario, trees: dict[int, str], grid) -> dict
     return plans
 
 
-def _lower_converse(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+def _lower_converse(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
     """GROVE's conversation in HuNavSim nodes: walk to one's own spot on the circle, wait until every
     other member is at theirs (at most CONVERSATION_PATIENCE s, as GROVE's registry), face the
     centre, talk for the duration.
@@ -505,33 +483,33 @@ def _lower_converse(el: etree._Element, ctx: _AgentContext, where: str) -> etree
             continue
         reach = math.dist(mine, spots.get(other, target)) + 0.5
         steps.append(_at_most(CONVERSATION_PATIENCE, _wait_until(_agent_close(other, reach), f"wait_for_{other}")))
-    steps.append(etree.Element("LookAtPoint", {"agent_id": "{id}", "goal_id": str(ctx.goals.id_of(target))}))
+    steps.append(node("LookAtPoint", agent_id="{id}", goal_id=str(ctx.goals.id_of(target))))
     steps.append(_wait(duration))
     return _sequence(steps, f"Converse_{el.get('target', 'spot')}")
 
 
-def lower_tree(xml: str, ctx: _AgentContext, where: str, world=None) -> str:
-    """Rewrite one agent's tree so it uses only HuNavSim-registered and BT.CPP built-in nodes."""
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
-    for tree in root.iter("BehaviorTree"):
-        # Depth-first over a snapshot, so replacements do not disturb iteration.
-        for el in list(tree.iter()):
-            if not isinstance(el.tag, str) or el.tag not in GROVE_ONLY:
+def lower_tree(document: TreeDocument, ctx: _AgentContext, where: str, world=None) -> TreeDocument:
+    """Rewrite one agent's tree, in place, so it uses only HuNavSim-registered and BT.CPP built-in nodes."""
+    for tree in document.trees.values():
+        # Depth-first over a snapshot, so goal ids are allocated in tick order and replacements
+        # do not disturb the walk.
+        for parent, index, el in list(tree.walk_with_parents()):
+            if parent is None or el.id not in GROVE_ONLY:
                 continue
             replacement = _lower_element(el, ctx, where, world)
             if replacement is not None:
-                replacement.tail = el.tail
-                el.getparent().replace(el, replacement)
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+                parent.children[index] = replacement
+    return document
 
 
-def _queue_ranks(scenario: Scenario, trees: dict[int, str], tag: str = "Queue",
+def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument], tag: str = "Queue",
                  key: str = "service_point") -> dict[tuple[int, str], int]:
     """Sequential allocation: the members of each `tag` node's place (`key`), in agent-id order."""
     members: dict[str, list[int]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
-        root = etree.fromstring(trees[agent.id].encode("utf-8"), _safe_parser())
-        for el in root.iter(tag):
+        for el in trees[agent.id].nodes():
+            if el.id != tag:
+                continue
             name = el.get(key, "service point")
             if agent.id not in members.setdefault(name, []):
                 members[name].append(agent.id)
@@ -564,30 +542,27 @@ def _behavior_block(agent: AgentSpec) -> dict[str, object]:
     }
 
 
-def _renumber_goal_ids(xml: str, goals: GoalTable) -> str:
-    """Point every node's `goal_id` at this export's global_goals entry for its (x, y)."""
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
-    for el in root.iter():
-        if isinstance(el.tag, str) and el.get("goal_id") is not None and el.get("x") and el.get("y"):
+def _renumber_goal_ids(document: TreeDocument, goals: GoalTable) -> TreeDocument:
+    """Point every node's `goal_id` at this export's global_goals entry for its (x, y), in place."""
+    for el in document.nodes():
+        if el.get("goal_id") is not None and el.get("x") and el.get("y"):
             el.set("goal_id", str(goals.id_of((float(el.get("x")), float(el.get("y"))))))
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+    return document
 
 
-def _rename_main_tree(xml: str, new_id: str) -> str:
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
-    old = root.get("main_tree_to_execute")
-    if old is None:
-        trees = root.findall("BehaviorTree")
-        old = trees[0].get("ID") if trees else None
-    for tree in root.iter("BehaviorTree"):
-        if tree.get("ID") == old:
+def _rename_main_tree(document: TreeDocument, new_id: str) -> TreeDocument:
+    """The document with its main tree (and every SubTree call of it) renamed `new_id`."""
+    old = document.main_tree_id
+    for el in document.nodes():
+        if el.subtree_id == old:
+            el.set("ID", new_id)
+    renamed: dict[str, TreeElement] = {}
+    for tree_id, tree in document.trees.items():
+        if tree_id == old:
             tree.set("ID", new_id)
-    for sub in root.iter("SubTree"):
-        if sub.get("ID") == old:
-            sub.set("ID", new_id)
-    root.set("BTCPP_format", "4")
-    root.set("main_tree_to_execute", new_id)
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+            tree_id = new_id
+        renamed[tree_id] = tree
+    return TreeDocument(new_id, renamed, document.source, document.models)
 
 
 def is_hunav_export(path: Path) -> bool:
@@ -615,13 +590,15 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     world_name = Path(scenario.world).stem
     base = base_name or f"agents_{world_name}"
 
-    trees: dict[int, str] = {}
+    trees: dict[int, TreeDocument] = {}
     for agent in scenario.agents:
         path = bundle / agent.tree
+        if not path.exists() and not path.is_symlink():
+            raise ExportError(f"{path}: tree file of agent {agent.id} is missing from the bundle")
         try:
-            trees[agent.id] = path.read_text(encoding="utf-8")
-        except FileNotFoundError:
-            raise ExportError(f"{path}: tree file of agent {agent.id} is missing from the bundle") from None
+            trees[agent.id] = read_tree(read_file_bytes(path), str(path))
+        except BTError as exc:
+            raise ExportError(f"tree of agent {agent.id}: {exc}") from None
 
     from grove_tui.navigation.grid import OccupancyGrid, build_grid
     from grove_tui.world import load_world
@@ -656,18 +633,18 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
                             exit_rank=exit_ranks, world=world if lower else None, conversations=conversations)
         goal_ids = [goals.id_of(g) for g in agent.goals]
-        xml = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
-        xml = _rename_main_tree(xml, "DefaultTree")
-        problems = check_tree_text(xml, source=where, nodes=HUNAV_NODES if lower else NODES)
+        tree = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
+        tree = _rename_main_tree(tree, "DefaultTree")
+        problems = check_tree_text(write_tree(tree), source=where, nodes=HUNAV_NODES if lower else NODES)
         if problems:
             raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))
-        xml = wrap_for_hunav(xml, reaction=REACTION_DEFAULTS.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS,
-                             looping=HUNAV_LOOPING_NODES)
+        wrap_for_hunav(tree, reaction=REACTION_DEFAULTS.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS,
+                       looping=HUNAV_LOOPING_NODES)
         if not lower:
             # Kept GROVE nodes get their own IDs, so GROVE's GoTo(target, x, y) never clashes with
             # HuNavSim's registered GoTo(goal_id); a C++ plugin must register them under these names.
-            xml = prefix_node_ids(xml, GROVE_ONLY, KEPT_NODE_PREFIX)
-        xml = label_clocks(restrict_to_hunav_ports(xml))
+            prefix_node_ids(tree, GROVE_ONLY, KEPT_NODE_PREFIX)
+        xml = write_tree(label_clocks(restrict_to_hunav_ports(tree)))
         if lower:
             problems = hunav_loading_problems(xml)
             if problems:
@@ -675,7 +652,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
                                   hint="Export with --keep-grove-nodes to see the tree as GROVE wrote it.")
         if not goal_ids:
             # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
-            goal_ids = _tree_goal_ids(xml) or [goals.id_of(agent.start)]
+            goal_ids = _tree_goal_ids(tree) or [goals.id_of(agent.start)]
         written[f"{base}__agent_{agent.id}_bt.xml"] = xml
         agent_entries[f"agent{agent.id}"] = {
             "id": agent.id,
@@ -706,7 +683,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     loader_problems = check_loader_parameters(yaml.safe_load(yaml.safe_dump(document)), f"{base}.yaml")
     if loader_problems:
         raise ExportError("HuNavSim's loader would refuse the export: " + "; ".join(loader_problems))
-    nodes_model = None if lower else prefix_node_ids(treenodes_model_xml(), GROVE_ONLY, KEPT_NODE_PREFIX)
+    nodes_model = None if lower else treenodes_model_xml(
+        renamed={name: KEPT_NODE_PREFIX + name for name in GROVE_ONLY})
     readme = export_readme(scenario, base, world_name, simulator, sorted(written), lower)
 
     copied: list[str] = []
@@ -737,12 +715,11 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     )
 
 
-def _tree_goal_ids(xml: str) -> list[int]:
+def _tree_goal_ids(document: TreeDocument) -> list[int]:
     """The literal global goal ids a tree's nodes name, first use first."""
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
     ids: list[int] = []
-    for el in root.iter():
-        value = el.get("goal_id") if isinstance(el.tag, str) else None
+    for el in document.nodes():
+        value = el.get("goal_id")
         if value is not None and value.isdigit() and int(value) not in ids:
             ids.append(int(value))
     return ids

@@ -24,7 +24,7 @@ from typing import Any
 import yaml
 
 from grove_tui.bt.include import resolve_includes
-from grove_tui.bt.xml import BTError, check_tree_text
+from grove_tui.bt.xml import BTError, check_tree_text, read_tree, write_tree
 from grove_tui.errors import HunavImportError
 from grove_tui.exports.hunav import KEPT_NODE_PREFIX
 from grove_tui.exports.hunav_loader_check import check_loader_parameters
@@ -55,19 +55,17 @@ def _tree_file(folder_candidates: list[Path], base: str, agent_id: int) -> Path:
                            hint="Pass --trees DIR, the folder holding the agents' tree files.")
 
 
-def _grove_names(xml: bytes) -> str:
+def _grove_names(xml: bytes, source: str) -> str:
     """Trees an export wrote with --keep-grove-nodes name GROVE nodes Grove<Node>: give them back."""
-    from lxml import etree
-
     from grove_tui.bt.manifest import NODES
 
-    root = etree.fromstring(xml, etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False))
-    for element in root.iter():
-        if isinstance(element.tag, str) and element.tag.startswith(KEPT_NODE_PREFIX):
+    document = read_tree(xml, source)
+    for element in document.nodes():
+        if element.tag.startswith(KEPT_NODE_PREFIX):
             name = element.tag[len(KEPT_NODE_PREFIX):]
             if name in NODES and NODES[name].origin == "grove":
                 element.tag = name
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+    return write_tree(document)
 
 
 def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | None = None,
@@ -105,7 +103,7 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
             raise HunavImportError(f"{source}: {name}.id is {agent_id}; GROVE numbers agents from 1 (0 is the robot)")
         path = _tree_file(folders, base, agent_id)
         try:
-            xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]))
+            xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
         except BTError as exc:
             raise HunavImportError(str(exc), hint="Fix the tree, or pass --trees with the folder it includes from.") \
                 from None

@@ -14,12 +14,14 @@ import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
-from xml.sax.saxutils import quoteattr
 
 import numpy as np
 import shapely
 
+from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, NodeSpec
+from grove_tui.bt.ports import format_port_value
+from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.language.quantities import Quantity, lemma, semantic_tokens
@@ -50,10 +52,15 @@ class AgentPlan:
     targets: list[tuple[str, Point]]  # navigation targets in tree order (RoI name, point)
     zone: str  # zone the agent is headed for
     tree: DraftNode
-    xml: str = ""
+    document: TreeDocument | None = None  # the agent's behavior tree, auto ports filled, waypoints empty
     max_vel: float = 1.0
     field_id: str | None = None
     exit: str | None = None
+
+    @property
+    def xml(self) -> str:
+        """The agent's tree as BT.CPP v4 text."""
+        return write_tree(self.document) if self.document is not None else ""
 
 
 @dataclass
@@ -652,15 +659,6 @@ def _service_entity(zone: Any) -> Any:
 
 # ---- trees ----------------------------------------------------------------------------------
 
-def _fmt(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, float):
-        text = f"{v:.3f}".rstrip("0").rstrip(".")
-        return text if text not in ("", "-0") else "0"
-    return str(v)
-
-
 def _target_ports(spec: NodeSpec) -> list[str]:
     return [p.name for p in spec.ports if p.type == "target"]
 
@@ -678,7 +676,7 @@ def navigation_targets(tree: DraftNode) -> list[tuple[DraftNode, str]]:
 
 
 class TreeWriter:
-    """Per-agent BT XML from a draft tree: model-written ports verbatim, auto ports filled."""
+    """Per-agent behavior-tree documents from a draft tree: model-written ports verbatim, auto ports filled."""
 
     def __init__(self, resolver: TargetResolver) -> None:
         self.resolver = resolver
@@ -689,18 +687,13 @@ class TreeWriter:
             self.goal_ids[p] = len(self.goal_ids) + 1
         return self.goal_ids[p]
 
-    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> str:
-        body = self._node(agent.tree, agent, group, targets, 2)
+    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> TreeDocument:
         tree_id = f"agent_{agent.id}"
-        return (
-            '<?xml version="1.0" encoding="UTF-8"?>\n'
-            f'<root BTCPP_format="4" main_tree_to_execute="{tree_id}">\n'
-            f'  <BehaviorTree ID="{tree_id}">\n{body}  </BehaviorTree>\n</root>\n'
-        )
+        return TreeDocument.single(tree_id, self._node(agent.tree, agent, group, targets))
 
-    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point], depth: int) -> str:
+    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> TreeElement:
         spec = NODES[node.node]
-        attrs: list[tuple[str, str]] = []
+        attrs: dict[str, str] = {}
         point = targets.get(id(node))
         party = group.parties.get(agent.sfm_group, group.member_ids)
         others = [m for m in party if m != agent.id]
@@ -709,22 +702,17 @@ class TreeWriter:
                 continue
             name = port.name
             if name in node.ports:
-                attrs.append((name, _fmt(node.ports[name])))
+                attrs[name] = format_port_value(node.ports[name])
                 continue
             if not port.auto:
                 if port.default is not None:
-                    attrs.append((name, _fmt(port.default)))
+                    attrs[name] = format_port_value(port.default)
                 continue
             value = self._auto_value(spec, port, agent, group, others, point)
             if value is not None:
-                attrs.append((name, value))
-        pad = "  " * depth
-        text = " ".join(f"{k}={quoteattr(v)}" for k, v in attrs)
-        opening = f"{pad}<{node.node}{(' ' + text) if text else ''}"
-        if not node.children:
-            return opening + "/>\n"
-        inner = "".join(self._node(c, agent, group, targets, depth + 1) for c in node.children)
-        return f"{opening}>\n{inner}{pad}</{node.node}>\n"
+                attrs[name] = value
+        children = [self._node(c, agent, group, targets) for c in node.children]
+        return TreeElement(node.node, attrs, children)
 
     def _auto_value(self, spec: NodeSpec, port: Any, agent: AgentPlan, group: GroupPlan, others: list[int],
                     point: Point | None) -> str | None:
@@ -743,9 +731,9 @@ class TreeWriter:
             ids = others if name == "non_main_agent_ids" else group.parties.get(agent.sfm_group, group.member_ids)
             return ",".join(str(i) for i in ids)
         if name in ("x", "target_x") and point is not None:
-            return _fmt(point[0])
+            return format_port_value(point[0])
         if name in ("y", "target_y") and point is not None:
-            return _fmt(point[1])
+            return format_port_value(point[1])
         if name == "goal_id" and point is not None:
             return str(self.goal_id(point))
         if name == "group_id":
@@ -761,7 +749,7 @@ class TreeWriter:
 
 def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity],
                 selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = ()) -> PostProcessed:
-    """Draft -> agents with ids, spawns, resolved targets and per-agent XML (waypoints still empty)."""
+    """Draft -> agents with ids, spawns, resolved targets and per-agent trees (waypoints still empty)."""
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
     notes: list[str] = []
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
@@ -838,7 +826,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
             agent.targets.append((name, point))
         if agent.targets:
             agent.zone = resolver.zone_of(agent.targets[-1][0])
-        agent.xml = writer.write(agent, g, targets)
+        agent.document = writer.write(agent, g, targets)
     goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
     return PostProcessed(agents, groups, exit_name, goals, notes)
 

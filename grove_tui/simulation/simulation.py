@@ -30,11 +30,13 @@ from typing import Any
 import numpy as np
 
 from grove_tui.bt.context import AgentContext, SimContext
-from grove_tui.bt.manifest import SUBTREE
 from grove_tui.bt.registry import tree_factory
 from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
-from grove_tui.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
-from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
+from grove_tui.bt.blackboard import Blackboard
+from grove_tui.bt.document import TreeDocument, node, subtree_call
+from grove_tui.bt.factory import BehaviorTree
+from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
+from grove_tui.bt.xml import BTError, load_tree_file
 from grove_tui.crowd.crowd import MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
@@ -194,7 +196,7 @@ class Simulation:
             document = with_robot_reaction(document, agent.behavior)
             blackboard = Blackboard(values={"id": agent.id, "dt": bt_dt})
             trees.append(factory.create(document, blackboard, AgentContext(context, row), clock))
-            hunav_style = any(e.id in HUNAV_LOOPING_NODES for t in document.trees.values() for e in t.walk())
+            hunav_style = any(e.id in HUNAV_LOOPING_NODES for e in document.nodes())
             loops.append(hunav_style)
             if hunav_style and agent.goals:
                 # HuNavSim trees walk the agent's own goal list (agents YAML `goals`, cyclic by default)
@@ -428,14 +430,13 @@ def _goal_table(documents: list[TreeDocument]) -> dict[int, tuple[float, float]]
     """HuNavSim global goals: every node with a literal goal_id and x/y (as post-processing writes them)."""
     table: dict[int, tuple[float, float]] = {}
     for document in documents:
-        for root in document.trees.values():
-            for element in root.walk():
-                ports = element.ports
-                if "goal_id" in ports and "x" in ports and "y" in ports:
-                    try:
-                        table.setdefault(int(ports["goal_id"]), (float(ports["x"]), float(ports["y"])))
-                    except ValueError:
-                        continue
+        for element in document.nodes():
+            ports = element.ports
+            if "goal_id" in ports and "x" in ports and "y" in ports:
+                try:
+                    table.setdefault(int(ports["goal_id"]), (float(ports["x"]), float(ports["y"])))
+                except ValueError:
+                    continue
     return table
 
 
@@ -444,22 +445,19 @@ def with_robot_reaction(document: TreeDocument, behavior: str) -> TreeDocument:
     spec = REACTION_DEFAULTS.get(behavior)
     if spec is None:
         return document
-    if any(e.id in ROBOT_REACTIONS for t in document.trees.values() for e in t.walk()):
+    if any(e.id in ROBOT_REACTIONS for e in document.nodes()):
         return document
-    node, distance, duration, once = spec
+    reaction_node, distance, duration, once = spec
     wrapper_id = "GroveRobotReaction"
     while wrapper_id in document.trees:
         wrapper_id += "_"
-    routine = TreeElement(SUBTREE, document.main_tree_id, {}, (), None, subtree_id=document.main_tree_id,
-                          autoremap=True)
+    routine = subtree_call(document.main_tree_id, autoremap=True)
     # ForceFailure: a finished reaction falls through to the routine instead of ending the tree
-    reaction = TreeElement("Sequence", "Sequence", {}, (
-        TreeElement("IsRobotVisible", "IsRobotVisible", {"distance": f"{distance:g}"}, (), None),
-        TreeElement("ForceFailure", "ForceFailure", {}, (
-            TreeElement(node, node, {"beh_duration": f"{duration:g}", "only_once": "true" if once else "false"}, (),
-                        None),), None),
-    ), None)
-    root = TreeElement("ReactiveFallback", f"{behavior} reaction", {}, (reaction, routine), None)
-    trees = dict(document.trees)
-    trees[wrapper_id] = root
-    return TreeDocument(document.source, wrapper_id, trees, dict(document.tree_lines))
+    reaction = node("Sequence", [
+        node("IsRobotVisible", distance=f"{distance:g}"),
+        node("ForceFailure", [node(reaction_node, beh_duration=f"{duration:g}",
+                                   only_once="true" if once else "false")]),
+    ])
+    wrapped = TreeDocument(wrapper_id, dict(document.trees), document.source, list(document.models))
+    wrapped.add_tree(wrapper_id, node("ReactiveFallback", [reaction, routine], name=f"{behavior} reaction"))
+    return wrapped

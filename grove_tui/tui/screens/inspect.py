@@ -14,6 +14,7 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Footer, Static, TextArea, Tree
 
+from grove_tui.bt.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
@@ -81,15 +82,11 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
 
 
 def parse_points(text: str) -> np.ndarray:
-    """BT.CPP point lists: 'x,y;x,y;...'."""
-    points = []
-    for item in text.split(";"):
-        parts = item.replace(" ", "").split(",")
-        if len(parts) == 2:
-            try:
-                points.append((float(parts[0]), float(parts[1])))
-            except ValueError:
-                continue
+    """A BT.CPP point list ('x,y;x,y;...') as an (N, 2) array; malformed text shows no points."""
+    try:
+        points = parse_point_list(text)
+    except ValueError:
+        points = ()
     return np.array(points, dtype=np.float64).reshape(-1, 2)
 
 
