@@ -38,6 +38,14 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
         # run (a conversation drops it, JoinGroup renumbers it); HuNavSim's group_id is the configured one.
         groups={a.id: a.group for a in scenario.agents},
     )
+    # HuNavSim 2.0's danger and surprise costs, beside the 1.0 set (analysis/hunav2_metrics.py); the
+    # line of sight runs over the map HuNavSim's evaluator gets, the grid without inflation.
+    from grove_tui.analysis.hunav2_metrics import hunav2_costs
+    from grove_tui.navigation.grid import build_grid
+
+    report.robot.update(hunav2_costs(traj, build_grid(world, scenario.resolution, inflation=0.0),
+                                     robot_radius=0.3 if robot is None else robot.radius,
+                                     person_radius=max(radii) if radii else 0.35))
     path = bundle / METRICS
     if write:
         write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
