@@ -106,44 +106,65 @@ def shock_react(distance: np.ndarray, visible_for: np.ndarray) -> tuple[np.ndarr
     return np.maximum(base * (1 - gamma * sr), 0.0), base * (1 - sr)
 
 
-def hunav2_costs(traj: Trajectories, grid, *, robot_radius: float = 0.3,
-                 person_radius: float | np.ndarray = 0.35) -> dict[str, float]:
-    """The five HuNavSim 2.0 costs of a run (empty without a robot). `grid`: OccupancyGrid for sight."""
-    if traj.robot is None or traj.robot_vel is None:
-        return {}
-    n = traj.ids.size
-    radii = np.broadcast_to(np.asarray(person_radius, dtype=float), (n,))
-    totals = dict.fromkeys(METRIC_NAMES, 0.0)
-    visible_for = np.zeros(n)
-    previous_t = None
-    occupied = np.asarray(grid.occupied, dtype=bool)
-    origin = (float(grid.origin[0]), float(grid.origin[1]))
-    for f in range(traj.frames):
-        dt = 0.0 if previous_t is None else max(float(traj.t[f]) - previous_t, 0.0)
-        previous_t = float(traj.t[f])
+class Hunav2Accumulator:
+    """The five costs over a run read a block of frames at a time (metrics.iter_trajectory_chunks):
+    what carries over between blocks is each person's time in sight of the robot and the last stamp."""
+
+    def __init__(self, people: int, grid, *, robot_radius: float = 0.3, person_radius: float | np.ndarray = 0.35):
+        self.radii = np.broadcast_to(np.asarray(person_radius, dtype=float), (people,))
+        self.robot_radius = robot_radius
+        self.occupied = np.asarray(grid.occupied, dtype=bool)
+        self.origin = (float(grid.origin[0]), float(grid.origin[1]))
+        self.resolution = float(grid.resolution)
+        self.totals = dict.fromkeys(METRIC_NAMES, 0.0)
+        self.visible_for = np.zeros(people)
+        self.previous_t: float | None = None
+        self.saw_robot = False
+
+    def add(self, traj: Trajectories) -> None:
+        if traj.robot is None or traj.robot_vel is None:
+            self.visible_for[:] = 0.0
+            if traj.frames:
+                self.previous_t = float(traj.t[-1])
+            return
+        self.saw_robot = True
+        for f in range(traj.frames):
+            self._frame(traj, f)
+
+    def _frame(self, traj: Trajectories, f: int) -> None:
+        dt = 0.0 if self.previous_t is None else max(float(traj.t[f]) - self.previous_t, 0.0)
+        self.previous_t = float(traj.t[f])
         robot = traj.robot[f]
         if not np.all(np.isfinite(robot[:2])):
-            visible_for[:] = 0.0
-            continue
+            self.visible_for[:] = 0.0
+            return
         present = np.isfinite(traj.people[f, :, 0])
         people = np.where(present[:, None], traj.people[f], 0.0)
-        people_vel = np.nan_to_num(traj.people_vel[f])
-        yaw = np.nan_to_num(traj.people_yaw[f])
         robot_pos = robot[:2]
-        robot_vel = np.nan_to_num(traj.robot_vel[f])
-        fear, panic = fear_panic(robot_pos, robot_vel, people, people_vel, radii, robot_radius)
-        angle_cost = visibility_angle_cost(robot_pos, people, yaw)
+        fear, panic = fear_panic(robot_pos, np.nan_to_num(traj.robot_vel[f]), people,
+                                 np.nan_to_num(traj.people_vel[f]), self.radii, self.robot_radius)
+        angle_cost = visibility_angle_cost(robot_pos, people, np.nan_to_num(traj.people_yaw[f]))
         seen = present & (angle_cost > 0)
         for i in np.flatnonzero(seen):
-            if not line_of_sight(occupied, origin, grid.resolution, (people[i, 0], people[i, 1]),
+            if not line_of_sight(self.occupied, self.origin, self.resolution, (people[i, 0], people[i, 1]),
                                  (robot_pos[0], robot_pos[1])):
                 seen[i] = False
-        visible_for = np.where(seen, visible_for + dt, 0.0)
-        distance = np.hypot(*(robot_pos - people).T)
-        shock, react = shock_react(distance, visible_for)
-        totals["danger_fear_cost"] += float(fear[present].sum())
-        totals["danger_panic_cost"] += float(panic[present].sum())
-        totals["surprise_visibility_cost"] += float(angle_cost[seen].sum())
-        totals["surprise_shock_cost"] += float(shock[seen].sum())
-        totals["surprise_react_cost"] += float(react[seen].sum())
-    return totals
+        self.visible_for = np.where(seen, self.visible_for + dt, 0.0)
+        shock, react = shock_react(np.hypot(*(robot_pos - people).T), self.visible_for)
+        self.totals["danger_fear_cost"] += float(fear[present].sum())
+        self.totals["danger_panic_cost"] += float(panic[present].sum())
+        self.totals["surprise_visibility_cost"] += float(angle_cost[seen].sum())
+        self.totals["surprise_shock_cost"] += float(shock[seen].sum())
+        self.totals["surprise_react_cost"] += float(react[seen].sum())
+
+    def result(self) -> dict[str, float]:
+        """The totals ({} for a run without a robot, as the evaluator has nothing to measure)."""
+        return dict(self.totals) if self.saw_robot else {}
+
+
+def hunav2_costs(traj: Trajectories, grid, *, robot_radius: float = 0.3,
+                 person_radius: float | np.ndarray = 0.35) -> dict[str, float]:
+    """The five HuNavSim 2.0 costs of a run held in memory (empty without a robot)."""
+    accumulator = Hunav2Accumulator(traj.ids.size, grid, robot_radius=robot_radius, person_radius=person_radius)
+    accumulator.add(traj)
+    return accumulator.result()

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -48,10 +49,11 @@ from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, pre
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.document import TreeDocument, TreeElement, node
 from grove_tui.bt.ports import parse_point_list
-from grove_tui.bt.xml import check_tree_text, read_file_bytes, read_tree, write_tree
+from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
+from grove_tui.scenario.bundle import load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 Point = tuple[float, float]
@@ -254,10 +256,9 @@ def _lower_queue(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
     return _sequence(steps, f"Queue_{name}")
 
 
-def _streamline(field_path: Path, start: Point, exit_point: Point, ctx: _AgentContext) -> list[Point]:
-    from grove_tui.navigation.velocity_field import VelocityField, sample_field
+def _streamline(vf, start: Point, exit_point: Point, ctx: _AgentContext) -> list[Point]:
+    from grove_tui.navigation.velocity_field import sample_field
 
-    vf = VelocityField.load(field_path)
     ox, oy = float(vf.origin[0]), float(vf.origin[1])
     pos = np.array(start, dtype=float)
     points = [tuple(pos)]
@@ -306,7 +307,7 @@ def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
     if rel is None:
         raise ExportError(f"{where}: FollowVelocityField on line {el.line} names field {field_id!r}, "
                           f"which the scenario does not list (fields: {sorted(ctx.scenario.fields)})")
-    points = _streamline(ctx.bundle / rel, ctx.agent.start, exit_point, ctx)
+    points = _streamline(load_field(ctx.bundle, field_id or "", rel), ctx.agent.start, exit_point, ctx)
     points += _beyond_exit(el.get("exit", ""), ctx)
     return _sequence(_route(points, ctx), f"FollowVelocityField_{el.get('exit', 'exit')}")
 
@@ -586,21 +587,20 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world_name = Path(scenario.world).stem
     base = base_name or f"agents_{world_name}"
 
     trees: dict[int, TreeDocument] = {}
     for agent in scenario.agents:
-        path = bundle / agent.tree
-        if not path.exists() and not path.is_symlink():
-            raise ExportError(f"{path}: tree file of agent {agent.id} is missing from the bundle")
+        # Inside the bundle, a regular file, bounded: a tree linked to /dev/zero once read 7.5 GB here.
+        text = read_bundle_text(bundle, agent.tree, f"tree file of agent {agent.id}")
         try:
-            trees[agent.id] = read_tree(read_file_bytes(path), str(path))
+            trees[agent.id] = read_tree(text, str(bundle / agent.tree))
         except BTError as exc:
             raise ExportError(f"tree of agent {agent.id}: {exc}") from None
 
-    from grove_tui.navigation.grid import OccupancyGrid, build_grid
+    from grove_tui.navigation.grid import build_grid
     from grove_tui.world import load_world
 
     # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
@@ -612,7 +612,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         from grove_tui.navigation.theta_star import ThetaStarPlanner
 
         grid_path = bundle / "grid.npz"
-        grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, scenario.resolution)
+        grid = load_grid(bundle) if os.path.lexists(grid_path) else build_grid(world, scenario.resolution)
         planner = ThetaStarPlanner(grid)
 
     from grove_tui.simulation.simulation import HUNAV_LOOPING_NODES, REACTION_DEFAULTS

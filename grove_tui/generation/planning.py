@@ -136,6 +136,9 @@ def _check_cancel(cancel: threading.Event | None) -> None:
 
 
 def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
+    if not points:
+        # A group with no members has no centre; the prompt checks refuse "zero people" before this.
+        raise GenerationError(f"a group in {zone} has no people to lead to the exit")
     cx = sum(p[0] for p in points) / len(points)
     cy = sum(p[1] for p in points) / len(points)
     q = grid.nearest_free(cx, cy)

@@ -24,7 +24,7 @@ from grove_tui.bt.ports import format_port_value
 from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
-from grove_tui.language.quantities import Quantity, lemma, semantic_tokens
+from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
 
 Point = tuple[float, float]
 
@@ -327,6 +327,26 @@ def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
     return None
 
 
+# A minus sign right before the number (not a range like "3-5"), or the words minus / negative.
+_NEGATIVE_BEFORE = re.compile(r"(?:(?:^|[\s(])[-\u2212]|\bminus\s+|\bnegative\s+)$", re.IGNORECASE)
+
+
+def check_stated_counts(prompt: str, quantities: Sequence[Quantity]) -> None:
+    """Refuse prompts whose head counts cannot be a crowd, before any model runs: no readable words
+    at all (emoji only), a negative count ("-5 people") or zero people. Said to the user, not guessed
+    around: the model would otherwise invent a crowd of its own size."""
+    if not words(prompt):
+        raise PromptError("the prompt has no words to read (only symbols or emoji): describe in English who "
+                          "is there and what they do, e.g. 'ten patients queue at the pharmacy'")
+    for q in quantities:
+        if _NEGATIVE_BEFORE.search(prompt[:q.start]):
+            raise PromptError(f"'{prompt[max(0, q.start - 1):q.end].strip()}' is a negative number of people; "
+                              f"give a whole number of at least 1")
+        if q.count == 0:
+            raise PromptError(f"'{q.phrase}' asks for nobody; give a number of people of at least 1 "
+                              f"(or leave that group out)")
+
+
 def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
     """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
     total = sum(q.count for q in quantities)
@@ -487,6 +507,8 @@ class FreeSpace:
         self._labels = _components(free)
         self._main = self._main_component()
         self._taken: dict[str, list[Point]] = {}
+        exits = [door.position for door in world.exits()] if hasattr(world, "exits") else []
+        self._exit_points = np.asarray(exits, dtype=float).reshape(-1, 2)
 
     def _main_component(self) -> int:
         counts = np.bincount(self._labels[self._labels > 0].ravel()) if np.any(self._labels > 0) else np.zeros(1)
@@ -534,6 +556,15 @@ class FreeSpace:
         pts = self.cells(zone_name)
         if len(pts) == 0:
             raise GenerationError(f"zone '{zone_name}' has no free floor to place anyone on")
+        if len(self._exit_points):
+            # Nobody starts on an exit: an evacuee there would leave at its first step, and anyone
+            # else would be pushed outside by the people behind.
+            near = np.hypot(pts[:, None, 0] - self._exit_points[None, :, 0],
+                            pts[:, None, 1] - self._exit_points[None, :, 1]).min(axis=1) < SPAWN_EXIT_CLEARANCE
+            if near.all():
+                raise GenerationError(f"zone '{zone_name}' has no free floor farther than "
+                                      f"{SPAWN_EXIT_CLEARANCE} m from an exit to place anyone on")
+            pts = pts[~near]
         taken = self._taken.setdefault(key, [])
         blockers = list(taken) + list(avoid)
         order = rng.permutation(len(pts))
@@ -570,6 +601,11 @@ class FreeSpace:
                                   f"(free floor {self.free_area(zone_name):.0f} m^2, {len(taken)} already there)")
         taken.extend(chosen)
         return chosen
+
+
+# Spawns keep this far from every exit door's centre: twice the distance at which an evacuee
+# counts as gone (bt.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
+SPAWN_EXIT_CLEARANCE = 1.2
 
 
 def _components(free: np.ndarray) -> np.ndarray:

@@ -21,6 +21,7 @@ Threatening 4 m/40 s/once). Impassive agents treat the robot as an obstacle.
 from __future__ import annotations
 
 import math
+import os
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -28,6 +29,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import shapely
 
 from grove_tui.bt.context import AgentContext, SimContext
 from grove_tui.bt.registry import tree_factory
@@ -36,8 +38,8 @@ from grove_tui.bt.blackboard import Blackboard
 from grove_tui.bt.document import TreeDocument, node, subtree_call
 from grove_tui.bt.factory import BehaviorTree
 from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
-from grove_tui.bt.xml import BTError, load_tree_file
-from grove_tui.crowd.crowd import MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
@@ -114,6 +116,8 @@ class Simulation:
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
         self.tree_errors: dict[int, str] = {}  # agent id -> why its tree stopped (e.g. an unset blackboard entry)
+        self._building: Any = None  # the zones' union, prepared on first use (see _count_people_outside)
+        self._exits: list[tuple[str, tuple[float, float]]] = []
         self.scenario = scenario
         self.world = world
         self.recorder = recorder if recorder is not None else _make_recorder(dt, context.ids)
@@ -133,8 +137,9 @@ class Simulation:
                       bt_rate: float = 10.0, runtime_planning: bool = True) -> Simulation:
         """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
         no-planner baseline); by default goals set while running are planned with Theta*."""
-        from grove_tui.navigation.grid import OccupancyGrid, build_grid
+        from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
+        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
         from grove_tui.world import load_world
 
         bundle_dir = Path(bundle_dir)
@@ -143,16 +148,13 @@ class Simulation:
             candidate = bundle_dir / world_ref
             world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
         grid_path = bundle_dir / "grid.npz"
-        grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, resolution=scenario.resolution)
-        fields = {}
-        if scenario.fields:
-            from grove_tui.navigation.velocity_field import VelocityField
-
-            for field_id, rel in scenario.fields.items():
-                fields[field_id] = VelocityField.load(bundle_dir / rel)
+        grid = load_grid(bundle_dir) if os.path.lexists(grid_path) else build_grid(world, resolution=scenario.resolution)
+        # Every file is checked to be a regular file inside the bundle before it is read.
+        fields = {field_id: load_field(bundle_dir, field_id, rel) for field_id, rel in scenario.fields.items()}
         documents = []
         for agent in sorted(scenario.agents, key=lambda a: a.id):
-            documents.append(load_tree_file(bundle_dir / agent.tree))
+            text = read_bundle_text(bundle_dir, agent.tree, f"agent {agent.id}'s tree")
+            documents.append(parse_tree_text(text, str(bundle_dir / agent.tree)))
         planner = ThetaStarPlanner(grid) if runtime_planning else None
         return cls.build(scenario.agents, documents, world=world, grid=grid, planner=planner,
                          walls=world.walls(), robot=scenario.robot, fields=fields, seed=scenario.seed, dt=dt,
@@ -233,7 +235,48 @@ class Simulation:
     def tick_trees(self) -> None:
         """What step() does every 1/bt_rate seconds: tick every tree, then update the contact counters."""
         self.tick_behaviors()
+        # After the ticks, so an evacuee's tree has already set its field mode on the first tick.
+        self._count_people_outside()
         self._measure_contacts()
+
+    def _count_people_outside(self) -> None:
+        """Anyone the crowd pushed out of the building (through an exit: walls hold everywhere else)
+        has left it. An evacuee is counted as evacuated through the nearest exit; anyone else gets a
+        `left_building` event. Either way the agent stops taking part, so nobody wanders outside
+        uncounted. (An evacuee's tree is quiescent until it is near its own exit point, so without this
+        check one pushed past that point was never ticked again.)"""
+        world = self.world
+        if world is None or not hasattr(world, "outline"):
+            return
+        n = len(self.trees)
+        active = np.flatnonzero(np.asarray(self.crowd.active[:n], dtype=bool))
+        if active.size == 0:
+            return
+        if self._building is None:
+            self._building = world.outline()
+            shapely.prepare(self._building)
+            self._exits = [(door.name, door.position) for door in world.exits()]
+        pos = self.crowd.pos[active]
+        outside = active[~shapely.intersects_xy(self._building, pos[:, 0], pos[:, 1])]
+        ctx = self.context
+        for row in outside.tolist():
+            x, y = float(self.crowd.pos[row, 0]), float(self.crowd.pos[row, 1])
+            exit_name = min(self._exits, key=lambda e: math.dist(e[1], (x, y)))[0] if self._exits else ""
+            evacuating = int(self.crowd.mode[row]) == MODE_FIELD or ctx.status[row].startswith("evacuating")
+            self.crowd.set_active(row, False)
+            if evacuating:
+                ctx.counters.evacuated += 1
+                ctx.event("evacuated", row, exit_name)
+                ctx.status[row] = "evacuated"
+            else:
+                ctx.event("left_building", row, exit_name)
+                ctx.status[row] = f"left through {exit_name}" if exit_name else "left the building"
+            if not self.finished[row]:
+                self.finished[row] = True
+                self._finished_mask[row] = True
+                self._q_on[row] = False
+                ctx.counters.finished_trees += 1
+                self.tree_result[row] = "done"
 
     def tick_behaviors(self) -> None:
         """Tick every unfinished tree once with the current positions, then order new queue arrivals.
