@@ -148,3 +148,18 @@ def test_every_tree_in_a_hunavsim_folder_validates():
     assert files
     bad = {p.name: [str(q) for q in check_tree_file(p)] for p in files}
     assert {k: v for k, v in bad.items() if v} == {}
+
+
+def test_older_hunavsim_point_ports_validate_and_run(hall):
+    # Earlier HuNavSim 2.0 trees name points by target_x/target_y (GoTo, SetGoal, LookAtPoint) and
+    # center_x/center_y (ConversationFormation) instead of global goal ids.
+    body = ('<Sequence><GoTo agent_id="{id}" target_x="10" target_y="6" time_step="{dt}" temporary="false" '
+            'stop_duration="5.0"/><LookAtPoint agent_id="{id}" target_x="12" target_y="6"/></Sequence>')
+    xml = ('<root BTCPP_format="4" main_tree_to_execute="T"><BehaviorTree ID="T">' + body + '</BehaviorTree></root>')
+    from grove_tui.bt.xml import check_tree_text
+
+    assert check_tree_text(xml) == []
+    sim = simulate(hall, [agent(1, (5.0, 6.0))], [body])
+    sim.run(10.0)
+    assert math.dist(sim.crowd.pos[0], (10.0, 6.0)) < 0.6
+    assert sim.tree_errors == {}

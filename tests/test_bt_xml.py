@@ -79,8 +79,8 @@ def test_every_problem_is_reported_with_its_line():
                 '<Inverter><Wait/><Wait/></Inverter>\n<Wait duration="1"><Wait/></Wait>\n</Sequence>')
     problems = check_tree_text(text, "bad.xml")
     messages = [(p.line, p.message) for p in problems]
-    assert (4, "GoTo: unknown port 'targt' (did you mean target?); its ports are: target, x, y, waypoints, "
-               "tolerance, agent_id, time_step, goal_id") in messages
+    assert (4, "GoTo: unknown port 'targt' (did you mean target, target_y, target_x?); its ports are: target, x, y, waypoints, "
+               "tolerance, agent_id, time_step, target_x, target_y, temporary, stop_duration, goal_id") in messages
     assert any(line == 4 and "missing required port 'target'" in m for line, m in messages)
     assert (5, "unknown node 'Queu' (did you mean Queue?)") in messages
     assert (6, "Wait: port 'duration' (float): -3.0 is below the minimum 0.0") in messages

@@ -255,7 +255,7 @@ def satisfied_by_goal_id(port, given_ports) -> bool:
     that form too (the runtime resolves the id in the scenario's global goals), so a HuNavSim tree and
     an exported GROVE tree validate without a `target`.
     """
-    return port.type == "target" and "goal_id" in given_ports
+    return port.type == "target" and ("goal_id" in given_ports or "target_x" in given_ports)
 
 
 def label_clocks(document):
