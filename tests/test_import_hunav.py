@@ -103,3 +103,16 @@ def test_broken_scenarios_are_refused_with_the_reason(exported, tmp_path):
                                        "--out", str(tmp_path / "out2")])
     assert result.exit_code == 2 and "agents_hospital__agent_1_bt.xml: not found" in result.output
     assert not (tmp_path / "out").exists() and not (tmp_path / "out2").exists()
+
+
+def test_cli_export_then_import_prints_the_files(exported, tmp_path):
+    bundle, _ = exported
+    result = CliRunner().invoke(main, ["export", "hunav", str(bundle), "--out", str(tmp_path / "e")])
+    assert result.exit_code == 0, result.output
+    printed = result.output.split()
+    for name in ("agents_hospital.yaml", "hospital.world", "hospital.yaml", "README.md"):
+        assert any(line.endswith(name) for line in printed), name
+    result = CliRunner().invoke(main, ["import", "hunav", str(tmp_path / "e" / "agents_hospital.yaml"),
+                                       "--out", str(tmp_path / "b")])
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "b" / "scenario.yaml").is_file()
