@@ -1,33 +1,46 @@
-"""HuNavSim 2.0 hand-off: agents.yaml (`hunav_loader: ros__parameters:`) plus one BT XML per agent.
+"""HuNavSim 2.0 hand-off: agents.yaml (`hunav_loader: ros__parameters:`) plus one BT XML per agent,
+the world as Gazebo SDF (worlds/) and a nav2 map (maps/), and a README saying where each goes.
 
 HuNavSim only runs the nodes its agent manager registers. GROVE-only nodes are either
-*lowered* to HuNavSim nodes (the default) or kept, with a TreeNodesModel listing them so Groot2
-and a C++ implementation know their ports:
+*lowered* to HuNavSim nodes (the default) or kept as Grove<Node>, with a TreeNodesModel listing
+them so Groot2 and a C++ implementation know their ports:
 
-    GoTo(x, y, waypoints)        -> Sequence of HuNavSim GoTo(goal_id) over every waypoint and the target
+    GoTo(x, y, waypoints)        -> SequenceWithMemory of HuNavSim GoTo(goal_id) over every waypoint and the target
     Wait(duration)               -> StopAndWaitTimerAction(wait_duration)
-    Queue(service point)         -> walk to the agent's slot, then step forward slot by slot, waiting
-                                    one service time at each (its rank is its order among the queue's
-                                    members, which post-processing allocates sequentially)
-    FollowVelocityField(field)   -> the field's streamline from the agent's start, as GoTo waypoints
+    Queue(service point)         -> walk to the agent's slot; move up a slot once the person ahead (the agent one
+                                    rank before) has moved on (IsAgentClose on that agent); served one service time
+                                    at the head; step aside to a spot of one's own, as GROVE's Queue does
+    FollowVelocityField(field)   -> the field's streamline from the agent's start, through the exit door, to the
+                                    evacuee's own point outside (rows across the door, 1 m apart)
     Wander(zone, duration)       -> a seeded tour of planned points inside the zone
     JoinGroup(group_id)          -> SetGroupId
-    Converse(target, members)    -> walk to the spot, then ConversationFormation on the first member,
-                                    StopAndWaitTimerAction on the others
+    Converse(target, members)    -> walk to one's own spot on GROVE's conversation circle, wait for the other
+                                    members (IsAgentClose, at most 60 s), LookAtPoint(centre), StopAndWaitTimerAction
 
 Goals are written once into `global_goals` (ids consecutive from 1) and referenced by id.
 
-What HuNavSim 2.0 needs beyond node names (robotics-upo/hunav_sim 2.0 code, `namespace hunav`, as
-stored in the public code index; see bt/hunav_compat.py for the node table):
-- hunav_loader.cpp declares `<agent>.goals` as PARAMETER_INTEGER_ARRAY: an empty YAML list has no
-  type and aborts the loader, so every agent lists at least one goal (its tree's goals, else its start).
-- bt_node.cpp ticks every root on every ComputeAgents call and BT.CPP 4 resets a completed root, so
-  each tree runs once and then holds its final state (bt/hunav_compat.wrap_for_hunav).
-- go_to_node.cpp reads `tolerance` but sets the temporary goal's radius to a constant and succeeds on
-  `goalReached` (radius + 0.1 m): every GoTo is written with the tolerance HuNavSim applies.
-- Agents are never removed: evacuees walk through their exit door to their own point outside it.
+What HuNavSim 2.0 needs beyond node names. Sources: robotics-upo/hunav_sim, the 2.0 code under
+`namespace hunav` (newer than the humble/1.0 commit afa9743 the rosbag export pins). The public code
+index stores these 2.0 files without one common commit; each is cited with the commit the index gives,
+or by file and function where it gives none:
+- hunav_loader.cpp (2.0, `HunavLoader::HunavLoader`, "Handle new goals structure"): `<agent>.goals` is
+  declared PARAMETER_INTEGER_ARRAY; an empty YAML list has no type and aborts the loader, so every agent
+  lists at least one goal (its tree's goals, else its start). exports/hunav_loader_check.py emulates it.
+- bt_node.cpp (2.0, `tree_tick`) ticks every root on each ComputeAgents call and BT.CPP 4 resets a
+  completed root, so each tree runs once and then holds its final state (bt/hunav_compat.wrap_for_hunav).
+- go_to_node.cpp@306ec99c4451165c9322ab057ad00a0b6fabdbf8:49 sets the temporary goal's radius to 0.1 and
+  :71 finishes on `goalReached` (radius + 0.1 m), whatever `tolerance` says: every GoTo is written with
+  the 0.2 m HuNavSim applies.
+- Agents are never removed (agent_manager has no removal): evacuees walk out to points of their own.
 - 2.0 reacts to the robot only through the tree: a Surprised/Scared/Curious/Threatening agent gets
   the reaction GROVE's simulation wraps around its tree.
+- conversation_formation_node.cpp (2.0, onStart step 11 `setAgentGoal`, onRunning step 2 `.front()`):
+  why conversations are not lowered to ConversationFormation.
+- bt_node.cpp (2.0, BTnode constructor): the simulator names and the wrapper package trees load from,
+  `<src of the wrapper>/behavior_trees/<yaml_base_name>__agent_<id>_bt.xml` (`share_to_src_path`).
+- hunav_gazebo_wrapper launch/simulation.launch.py@3e5219ed1f78370bbb78c9168aa7325a76fda976: the robot
+  pose arguments gzpose_x/y/Y, `worlds/<environment_name>.world`, `maps/<environment_name>.yaml`,
+  `scenarios/<configuration_file>`.
 """
 
 from __future__ import annotations
