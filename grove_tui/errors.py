@@ -155,6 +155,14 @@ class OutputError(BadInputError):
     title = "Output error"
 
 
+class GymError(BadInputError):
+    """A Gymnasium environment argument (bundle, kinematics, action, config) is wrong, or a step came
+    before reset or after the episode ended; the message names the value."""
+
+    title = "Environment error"
+    hint = "See docs/training.md for the environment's arguments, spaces and episode rules."
+
+
 class JobFileError(BadInputError):
     """The job file itself cannot be read (missing, not UTF-8, too large, no jobs)."""
 
@@ -167,6 +175,13 @@ class EvalError(BadInputError):
 
     title = "Evaluation error"
     hint = "Fix the suite file (eval/suite.yaml shows the format)."
+
+
+class UnderstandingError(EvalError):
+    """The understanding suite's cases file is missing, malformed or names a world that does not exist."""
+
+    title = "Understanding suite error"
+    hint = "Rebuild the cases with: python eval/understanding/build.py"
 
 
 class MetricsError(BadInputError):

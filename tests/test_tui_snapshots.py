@@ -99,6 +99,20 @@ class TestInspectScreen:
         assert snap_compare(app, terminal_size=size, run_before=to_inspect)
 
 
+class TestInspectGrounding:
+    """The grounding report (key `a`) beside the map, read from the generated bundle's report."""
+
+    def test_grounding_report_at_80x24(self, snap_compare, tmp_path):
+        async def run_before(pilot) -> None:
+            screen = await to_inspect(pilot)
+            await pilot.press("a")
+            await wait_until(pilot, lambda: screen.query_one("#grounding").display, what="grounding panel")
+            await pilot.pause()
+
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
+
+
 class TestSimulationScreen:
     @pytest.mark.parametrize("size", SIZES)
     def test_simulation_after_ten_steps(self, snap_compare, tmp_path, size):

@@ -14,10 +14,12 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Footer, Static, TextArea, Tree
 
+from grove_tui.bt.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
+from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summary
 from grove_tui.tui.widgets.map_raster import Overlay
 from grove_tui.tui.widgets.map_view import MapView
 
@@ -81,15 +83,11 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
 
 
 def parse_points(text: str) -> np.ndarray:
-    """BT.CPP point lists: 'x,y;x,y;...'."""
-    points = []
-    for item in text.split(";"):
-        parts = item.replace(" ", "").split(",")
-        if len(parts) == 2:
-            try:
-                points.append((float(parts[0]), float(parts[1])))
-            except ValueError:
-                continue
+    """A BT.CPP point list ('x,y;x,y;...') as an (N, 2) array; malformed text shows no points."""
+    try:
+        points = parse_point_list(text)
+    except ValueError:
+        points = ()
     return np.array(points, dtype=np.float64).reshape(-1, 2)
 
 
@@ -100,7 +98,8 @@ class InspectScreen(Screen[None]):
 Left: the behavior trees, by group and agent, with each node's ports. Right: the map with spawns
 `○`, goals `◎`, injected waypoints `·`, the robot's path and any velocity-field arrows. Move through
 the tree to highlight an agent's route or a node's target on the map. **x** shows the selected
-agent's XML, **p** plays the simulation, **g** regenerates with the next seed (asking whether to
+agent's XML, **a** shows the grounding report (per group: what the sentence asked beside what
+the scenario does, ✓ or ✗ with the reason), **p** plays the simulation, **g** regenerates with the next seed (asking whether to
 keep your count edits), **c** edits each group's head count and re-plans (same trees, no model
 call), **e** exports the bundle. **Escape** goes back to setup; it asks first when the scenario
 has not been exported (it stays in the recent runs, **ctrl+o** on setup).
@@ -109,6 +108,10 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
     BINDINGS = [
         Binding("p", "simulate", "Play", id="inspect.simulate", tooltip="Simulate this scenario"),
         Binding("x", "toggle_xml", "XML", id="inspect.xml", tooltip="Show the selected agent's BT XML"),
+        Binding("a", "toggle_grounding", "Grounding", id="inspect.grounding",
+                tooltip="What the sentence asked beside what the scenario does, per group", show=False),
+        # Not in the footer: at 80 columns it would push out quit and help; the trees' border shows
+        # the verdict with the key ("2/3 groups ✓ · a"), and F1 lists it.
         Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Generate again with the next seed"),
         Binding("c", "edit_counts", "Counts", id="inspect.counts",
                 tooltip="Edit each group's head count and re-plan, without the model"),
@@ -144,6 +147,9 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                 xml.border_title = "XML"
                 xml.display = False
                 yield xml
+                grounding = GroundingPanel(self.generated.result.report, id="grounding")
+                grounding.display = False
+                yield grounding
                 yield Static("", id="node-detail", markup=False)
             world_map = MapView(id="inspect-map")
             world_map.border_title = f"{scenario.world} · {scenario.preset}"
@@ -165,12 +171,12 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         world_map.border_subtitle = self.generated.prompt[:70]
         tree = self.query_one("#bt-tree", BTTree)
         tree.border_title = f"Trees · {len(self.generated.scenario.agents)} agents"
+        # The verdict shows on the trees' border, so a ✗ is seen without opening the report.
+        counted = summary(read_grounding(self.generated.result.report))
+        tree.border_subtitle = f"{counted} · a" if counted else ""
+        self.query_one("#grounding", GroundingPanel).show(self.generated.result.report)
         self.query_one("#node-detail", Static).update("")
-        xml = self.query_one("#xml", TextArea)
-        if xml.display:
-            xml.display = False
-            tree.display = True
-        tree.focus()
+        self._show_side("tree")
         if tree.agent_nodes:
             # Start on the first agent so its route is highlighted straight away.
             self.call_after_refresh(self._select_first_agent)
@@ -209,6 +215,8 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         return [
             ("Play simulation", "Simulate this scenario", self.action_simulate),
             ("Toggle XML view", "Show the selected agent's BehaviorTree.CPP XML", self.action_toggle_xml),
+            ("Toggle grounding report", "Per group: what the sentence asked beside what the scenario does",
+             self.action_toggle_grounding),
             ("Regenerate", "Generate again with the same prompt and the next seed", self.action_regenerate),
             ("Edit counts and re-plan", "Change each group's head count; the trees are kept, the model is not called",
              self.action_edit_counts),
@@ -256,24 +264,29 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         xml.border_title = f"XML · agent {agent.id}" if agent is not None else "XML"
 
     # actions -----------------------------------------------------------------------------------------
-    def action_toggle_xml(self) -> None:
-        xml = self.query_one("#xml", TextArea)
-        tree = self.query_one("#bt-tree", BTTree)
-        showing = not xml.display
-        xml.display = showing
-        tree.display = not showing
-        if showing:
+    def _show_side(self, which: str) -> None:
+        """Show one of the side column's views (tree, xml, grounding) and focus it."""
+        views = {"tree": self.query_one("#bt-tree", BTTree), "xml": self.query_one("#xml", TextArea),
+                 "grounding": self.query_one("#grounding", GroundingPanel)}
+        for name, widget in views.items():
+            widget.display = name == which
+        if which == "xml":
             self._show_xml()
-            xml.focus()
-        else:
-            tree.focus()
+        views[which].focus()
+
+    def action_toggle_xml(self) -> None:
+        self._show_side("tree" if self.query_one("#xml", TextArea).display else "xml")
+
+    def action_toggle_grounding(self) -> None:
+        self._show_side("tree" if self.query_one("#grounding", GroundingPanel).display else "grounding")
 
     def action_focus_map(self) -> None:
         self.query_one("#inspect-map", MapView).focus()
 
     def action_focus_tree(self) -> None:
         xml = self.query_one("#xml", TextArea)
-        (xml if xml.display else self.query_one("#bt-tree", BTTree)).focus()
+        grounding = self.query_one("#grounding", GroundingPanel)
+        (xml if xml.display else grounding if grounding.display else self.query_one("#bt-tree", BTTree)).focus()
 
     def action_simulate(self) -> None:
         from grove_tui.tui.screens.simulation import SimulationScreen
