@@ -171,6 +171,10 @@ class SocialNavEnv(gymnasium.Env):
         # Face along the planned path, as a robot set down at its start would.
         ahead = self.path[1] - self.path[0] if len(self.path) > 1 else self.goal - self.path[0]
         self.heading = math.atan2(ahead[1], ahead[0]) if np.hypot(*ahead) > 1e-9 else 0.0
+        # The simulator set the robot down facing +x; the same robot, facing the heading, so recordings
+        # and the people's view of the robot start with it (the simulator then takes the yaw from motion).
+        self.sim.crowd.set_robot(robot.start, radius=robot.radius, max_speed=robot.max_vel, path=self.path,
+                                 yaw=self.heading)
         self.time_limit = self.time_limit_setting if self.time_limit_setting is not None else \
             max(TIME_LIMIT_FLOOR, TIME_LIMIT_FACTOR * _path_length(self.path) / max(self.robot_max_speed, 1e-6)
                 + TIME_LIMIT_SLACK)
