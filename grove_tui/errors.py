@@ -219,6 +219,12 @@ class PictureError(ExportError):
     title = "Picture error"
 
 
+class HunavImportError(BadInputError):
+    """A HuNavSim scenario (agents YAML, trees) that cannot become a GROVE bundle; the message says why."""
+
+    title = "HuNavSim import error"
+
+
 # -- runtime failures (3) ----------------------------------------------------------------------
 
 
