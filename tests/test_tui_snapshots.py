@@ -22,6 +22,7 @@ from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.generation import GenerationScreen
 from grove_tui.tui.screens.help import HelpScreen
 from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.recent import RecentRunsScreen
 from grove_tui.tui.screens.setup import SetupScreen
 from grove_tui.tui.screens.simulation import SimulationScreen
 from grove_tui.tui.widgets.bt_tree import BTTree
@@ -67,7 +68,11 @@ class TestSetupScreen:
 
 class TestGenerationScreen:
     @pytest.mark.parametrize("size", SIZES)
-    def test_generation_streaming(self, snap_compare, tmp_path, size):
+    def test_generation_streaming(self, snap_compare, tmp_path, size, monkeypatch):
+        from grove_tui.tui.screens import generation
+
+        # A stopped progress clock: elapsed 0.0 s and a fixed rate, whatever the machine's speed.
+        monkeypatch.setattr(generation, "monotonic", lambda: 100.0)
         backend = ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=10)
 
         async def run_before(pilot) -> None:
@@ -81,6 +86,7 @@ class TestGenerationScreen:
             await wait_until(pilot, lambda: table.get_cell("synthesis", "state") == "running", what="synthesis")
             await wait_until(pilot, lambda: "patients" in str(screen.query_one("#stream", Static).render()),
                              what="stream")
+            await wait_until(pilot, lambda: "tok/s" in str(table.get_cell("synthesis", "detail")), what="progress")
 
         app = GroveApp(backend, test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
@@ -123,6 +129,8 @@ class TestSimulationScreen:
             tree = sim.query_one("#sim-tree", BTTree)
             await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial and bool(tree._status),
                              what="last frame drawn")
+            await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step,
+                             what="counters of the last frame")
 
         app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
@@ -138,3 +146,33 @@ class TestHelpScreen:
 
         app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestRecentRunsScreen:
+    def test_recent_runs(self, snap_compare, tmp_path, monkeypatch):
+        import os
+        import time
+
+        # Fixed home, clock zone and file times: the list shows the folder (as ~/...) and each run's time.
+        monkeypatch.setenv("HOME", str(tmp_path))
+        monkeypatch.setenv("TZ", "UTC")
+        time.tzset()
+        backend = fake_llm_backend(tmp_path / "runs")
+        for index, seed in enumerate((3, 4)):
+            generated = backend.generate("hospital", "queuing", PROMPT, seed)
+            stamp = 1_790_000_000 + 600 * index
+            os.utime(generated.bundle_dir / "scenario.yaml", (stamp, stamp))
+
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press("ctrl+o")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, RecentRunsScreen) and len(app.screen.runs) == 2,
+                             what="recent runs")
+
+        app = GroveApp(backend, test_settings(tmp_path))
+        try:
+            assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
+        finally:
+            monkeypatch.undo()
+            time.tzset()

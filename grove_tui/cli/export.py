@@ -44,6 +44,9 @@ def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grov
         click.echo(str(path))
     if result.nodes_model is not None:
         click.echo(str(result.nodes_model))
+    for path in (result.world_file, result.map_yaml, result.readme):
+        if path is not None:
+            click.echo(str(path))
     for path in copied:
         click.echo(str(path))
 
@@ -99,10 +102,10 @@ def metrics(bundle: Path, as_json: bool) -> None:
 def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
     from grove_tui.exports.pictures import draw_scenario, render_scenario_text
-    from grove_tui.scenario.model import Scenario
+    from grove_tui.scenario.bundle import load_scenario
     from grove_tui.world import load_world
 
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world = load_world(scenario.world)
     if out_path is None:
         console = Console()

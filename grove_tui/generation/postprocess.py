@@ -14,15 +14,19 @@ import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
-from xml.sax.saxutils import quoteattr
 
 import numpy as np
 import shapely
 
+from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, NodeSpec
+from grove_tui.bt.ports import format_port_value
+from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
-from grove_tui.language.quantities import Quantity, lemma, semantic_tokens
+from grove_tui.generation.reconcile import reconcile
+from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
+from grove_tui.language.reading import PromptReading
 
 Point = tuple[float, float]
 
@@ -50,10 +54,16 @@ class AgentPlan:
     targets: list[tuple[str, Point]]  # navigation targets in tree order (RoI name, point)
     zone: str  # zone the agent is headed for
     tree: DraftNode
-    xml: str = ""
+    document: TreeDocument | None = None  # the agent's behavior tree, auto ports filled, waypoints empty
     max_vel: float = 1.0
     field_id: str | None = None
     exit: str | None = None
+    behavior: str = "Regular"  # HuNavSim reaction to the robot, from the prompt's reading
+
+    @property
+    def xml(self) -> str:
+        """The agent's tree as BT.CPP v4 text."""
+        return write_tree(self.document) if self.document is not None else ""
 
 
 @dataclass
@@ -68,6 +78,10 @@ class GroupPlan:
     sfm_group: int = -1
     field_id: str | None = None
     parties: dict[int, list[int]] = field(default_factory=dict)  # social-group id -> its members
+    behavior: str = "Regular"  # HuNavSim reaction to the robot
+    reading_index: int | None = None  # the prompt reading's group this one realises
+    party_size: int | None = None  # "two families of three": social groups of this size
+    speed_factor: float = 1.0  # the reading's pace: slow / fast walkers
 
 
 @dataclass
@@ -146,6 +160,18 @@ def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Prese
     for i in unused:
         notes.append(f"dropped group '{groups[i].label}' ({groups[i].count}): the prompt states no such people")
     return plans
+
+
+def _preset_overlay(tree: DraftNode, preset: Preset, selection: Any, notes: list[str], label: str) -> DraftNode:
+    """What the preset itself requires of every tree: under the emergency preset, following the
+    evacuation field to the exit."""
+    kinds = {n.node for n in tree.walk()}
+    if preset.velocity == "field" and "FollowVelocityField" not in kinds:
+        exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
+        if exit_name is not None:
+            notes.append(f"group '{label}': follows the evacuation field (emergency preset)")
+            return DraftNode("Sequence", {}, (tree, DraftNode("FollowVelocityField", {"exit": exit_name})))
+    return tree
 
 
 def _group_text(group: GroupPlan, quantities: Sequence[Quantity], prompt: str) -> str:
@@ -320,6 +346,26 @@ def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
     return None
 
 
+# A minus sign right before the number (not a range like "3-5"), or the words minus / negative.
+_NEGATIVE_BEFORE = re.compile(r"(?:(?:^|[\s(])[-\u2212]|\bminus\s+|\bnegative\s+)$", re.IGNORECASE)
+
+
+def check_stated_counts(prompt: str, quantities: Sequence[Quantity]) -> None:
+    """Refuse prompts whose head counts cannot be a crowd, before any model runs: no readable words
+    at all (emoji only), a negative count ("-5 people") or zero people. Said to the user, not guessed
+    around: the model would otherwise invent a crowd of its own size."""
+    if not words(prompt):
+        raise PromptError("the prompt has no words to read (only symbols or emoji): describe in English who "
+                          "is there and what they do, e.g. 'ten patients queue at the pharmacy'")
+    for q in quantities:
+        if _NEGATIVE_BEFORE.search(prompt[:q.start]):
+            raise PromptError(f"'{prompt[max(0, q.start - 1):q.end].strip()}' is a negative number of people; "
+                              f"give a whole number of at least 1")
+        if q.count == 0:
+            raise PromptError(f"'{q.phrase}' asks for nobody; give a number of people of at least 1 "
+                              f"(or leave that group out)")
+
+
 def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
     """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
     total = sum(q.count for q in quantities)
@@ -480,6 +526,8 @@ class FreeSpace:
         self._labels = _components(free)
         self._main = self._main_component()
         self._taken: dict[str, list[Point]] = {}
+        exits = [door.position for door in world.exits()] if hasattr(world, "exits") else []
+        self._exit_points = np.asarray(exits, dtype=float).reshape(-1, 2)
 
     def _main_component(self) -> int:
         counts = np.bincount(self._labels[self._labels > 0].ravel()) if np.any(self._labels > 0) else np.zeros(1)
@@ -527,6 +575,15 @@ class FreeSpace:
         pts = self.cells(zone_name)
         if len(pts) == 0:
             raise GenerationError(f"zone '{zone_name}' has no free floor to place anyone on")
+        if len(self._exit_points):
+            # Nobody starts on an exit: an evacuee there would leave at its first step, and anyone
+            # else would be pushed outside by the people behind.
+            near = np.hypot(pts[:, None, 0] - self._exit_points[None, :, 0],
+                            pts[:, None, 1] - self._exit_points[None, :, 1]).min(axis=1) < SPAWN_EXIT_CLEARANCE
+            if near.all():
+                raise GenerationError(f"zone '{zone_name}' has no free floor farther than "
+                                      f"{SPAWN_EXIT_CLEARANCE} m from an exit to place anyone on")
+            pts = pts[~near]
         taken = self._taken.setdefault(key, [])
         blockers = list(taken) + list(avoid)
         order = rng.permutation(len(pts))
@@ -563,6 +620,11 @@ class FreeSpace:
                                   f"(free floor {self.free_area(zone_name):.0f} m^2, {len(taken)} already there)")
         taken.extend(chosen)
         return chosen
+
+
+# Spawns keep this far from every exit door's centre: twice the distance at which an evacuee
+# counts as gone (bt.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
+SPAWN_EXIT_CLEARANCE = 1.2
 
 
 def _components(free: np.ndarray) -> np.ndarray:
@@ -652,15 +714,6 @@ def _service_entity(zone: Any) -> Any:
 
 # ---- trees ----------------------------------------------------------------------------------
 
-def _fmt(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, float):
-        text = f"{v:.3f}".rstrip("0").rstrip(".")
-        return text if text not in ("", "-0") else "0"
-    return str(v)
-
-
 def _target_ports(spec: NodeSpec) -> list[str]:
     return [p.name for p in spec.ports if p.type == "target"]
 
@@ -678,7 +731,7 @@ def navigation_targets(tree: DraftNode) -> list[tuple[DraftNode, str]]:
 
 
 class TreeWriter:
-    """Per-agent BT XML from a draft tree: model-written ports verbatim, auto ports filled."""
+    """Per-agent behavior-tree documents from a draft tree: model-written ports verbatim, auto ports filled."""
 
     def __init__(self, resolver: TargetResolver) -> None:
         self.resolver = resolver
@@ -689,18 +742,13 @@ class TreeWriter:
             self.goal_ids[p] = len(self.goal_ids) + 1
         return self.goal_ids[p]
 
-    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> str:
-        body = self._node(agent.tree, agent, group, targets, 2)
+    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> TreeDocument:
         tree_id = f"agent_{agent.id}"
-        return (
-            '<?xml version="1.0" encoding="UTF-8"?>\n'
-            f'<root BTCPP_format="4" main_tree_to_execute="{tree_id}">\n'
-            f'  <BehaviorTree ID="{tree_id}">\n{body}  </BehaviorTree>\n</root>\n'
-        )
+        return TreeDocument.single(tree_id, self._node(agent.tree, agent, group, targets))
 
-    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point], depth: int) -> str:
+    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> TreeElement:
         spec = NODES[node.node]
-        attrs: list[tuple[str, str]] = []
+        attrs: dict[str, str] = {}
         point = targets.get(id(node))
         party = group.parties.get(agent.sfm_group, group.member_ids)
         others = [m for m in party if m != agent.id]
@@ -709,22 +757,17 @@ class TreeWriter:
                 continue
             name = port.name
             if name in node.ports:
-                attrs.append((name, _fmt(node.ports[name])))
+                attrs[name] = format_port_value(node.ports[name])
                 continue
             if not port.auto:
                 if port.default is not None:
-                    attrs.append((name, _fmt(port.default)))
+                    attrs[name] = format_port_value(port.default)
                 continue
             value = self._auto_value(spec, port, agent, group, others, point)
             if value is not None:
-                attrs.append((name, value))
-        pad = "  " * depth
-        text = " ".join(f"{k}={quoteattr(v)}" for k, v in attrs)
-        opening = f"{pad}<{node.node}{(' ' + text) if text else ''}"
-        if not node.children:
-            return opening + "/>\n"
-        inner = "".join(self._node(c, agent, group, targets, depth + 1) for c in node.children)
-        return f"{opening}>\n{inner}{pad}</{node.node}>\n"
+                attrs[name] = value
+        children = [self._node(c, agent, group, targets) for c in node.children]
+        return TreeElement(node.node, attrs, children)
 
     def _auto_value(self, spec: NodeSpec, port: Any, agent: AgentPlan, group: GroupPlan, others: list[int],
                     point: Point | None) -> str | None:
@@ -743,9 +786,9 @@ class TreeWriter:
             ids = others if name == "non_main_agent_ids" else group.parties.get(agent.sfm_group, group.member_ids)
             return ",".join(str(i) for i in ids)
         if name in ("x", "target_x") and point is not None:
-            return _fmt(point[0])
+            return format_port_value(point[0])
         if name in ("y", "target_y") and point is not None:
-            return _fmt(point[1])
+            return format_port_value(point[1])
         if name == "goal_id" and point is not None:
             return str(self.goal_id(point))
         if name == "group_id":
@@ -760,19 +803,35 @@ class TreeWriter:
 # ---- the stage ------------------------------------------------------------------------------
 
 def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity],
-                selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = ()) -> PostProcessed:
-    """Draft -> agents with ids, spawns, resolved targets and per-agent XML (waypoints still empty)."""
+                selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = (),
+                reading: PromptReading | None = None) -> PostProcessed:
+    """Draft -> agents with ids, spawns, resolved targets and per-agent trees (waypoints still empty).
+
+    With a `reading` that found groups, the groups are the reading's and the draft is repaired
+    only where it contradicts it (generation/reconcile.py); without one, the older word rules of
+    this module reconcile the draft with the stated quantities."""
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
     notes: list[str] = []
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
-    groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection, allowed_nodes)
-    if not groups:
-        raise GenerationError("the draft has no groups of people")
-    # Trees first: where a group starts depends on where its final tree sends it.
-    for g in groups:
-        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label,
-                               allowed_nodes)
-    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+    if reading is not None and reading.groups:
+        groups = [GroupPlan(i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
+                            reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor)
+                  for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
+                                                  evacuation_field=preset.velocity == "field"))]
+        if not groups:
+            raise GenerationError("the prompt's groups leave nobody in the scenario")
+        for g in groups:
+            g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
+    else:
+        groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
+                                  allowed_nodes)
+        if not groups:
+            raise GenerationError("the draft has no groups of people")
+        # Trees first: where a group starts depends on where its final tree sends it.
+        for g in groups:
+            g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes,
+                                   g.label, allowed_nodes)
+        _ground_spawns(groups, quantities, prompt, selection, notes, world)
     space = FreeSpace(world, grid)
     _check_capacity(groups, space, world)
     _check_limits(groups, preset)
@@ -792,7 +851,11 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         parties = [g.count]
         if node_types & GROUPING_NODES and g.count > 1:
             g.sfm_group = sfm_groups
-            if "Converse" not in node_types and g.count > MAX_WALKING_GROUP:
+            if g.party_size and "Converse" not in node_types and g.count > g.party_size:
+                # "two families of three": the parties the sentence states
+                parties = [g.party_size] * (g.count // g.party_size) + ([g.count % g.party_size]
+                                                                       if g.count % g.party_size else [])
+            elif "Converse" not in node_types and g.count > MAX_WALKING_GROUP:
                 n = math.ceil(g.count / MAX_WALKING_GROUP)
                 parties = [g.count // n + (1 if i < g.count % n else 0) for i in range(n)]
                 sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
@@ -811,7 +874,8 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                 g.parties[party] = g.member_ids[first:first + size]
             for agent_id, start in zip(g.member_ids[first:first + size], starts):
                 agents.append(AgentPlan(agent_id, g.index, party, g.label, start, g.spawn, [], g.spawn, g.tree,
-                                        max_vel=preset.max_vel, field_id=g.field_id, exit=exit_name))
+                                        max_vel=round(preset.max_vel * g.speed_factor, 3), field_id=g.field_id,
+                                        exit=exit_name, behavior=g.behavior))
             first += size
 
     writer = TreeWriter(resolver)
@@ -838,7 +902,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
             agent.targets.append((name, point))
         if agent.targets:
             agent.zone = resolver.zone_of(agent.targets[-1][0])
-        agent.xml = writer.write(agent, g, targets)
+        agent.document = writer.write(agent, g, targets)
     goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
     return PostProcessed(agents, groups, exit_name, goals, notes)
 

@@ -56,6 +56,43 @@ class GeneratedScenario:
 
 
 @dataclass(frozen=True)
+class RunInfo:
+    """One saved bundle in the runs folder, as the recent-runs list shows it."""
+
+    path: Path
+    modified: float  # seconds since the epoch, of scenario.yaml
+    prompt: str = ""
+    world: str = ""
+    preset: str = ""
+    seed: int = 0
+    agents: int = 0
+    simulated: bool = False
+    error: str = ""  # why the bundle cannot be opened; empty when it can
+
+
+def list_runs(runs_dir: Path, limit: int = 50) -> list[RunInfo]:
+    """The newest `limit` bundles directly under `runs_dir` (a missing folder is an empty list)."""
+    from grove_tui.scenario.bundle import SCENARIO_FILE, is_bundle
+    from grove_tui.scenario.model import Scenario
+
+    if not runs_dir.is_dir():
+        return []
+    bundles = [path for path in runs_dir.iterdir() if path.is_dir() and is_bundle(path)]
+    bundles.sort(key=lambda path: (path / SCENARIO_FILE).stat().st_mtime, reverse=True)
+    runs = []
+    for path in bundles[:limit]:
+        modified = (path / SCENARIO_FILE).stat().st_mtime
+        try:
+            scenario = Scenario.load(path / SCENARIO_FILE)
+        except (GroveError, ValueError, OSError) as exc:  # ScenarioError is a ValueError; a file may vanish
+            runs.append(RunInfo(path, modified, error=str(exc)))
+            continue
+        runs.append(RunInfo(path, modified, scenario.prompt, scenario.world, scenario.preset, int(scenario.seed),
+                            len(scenario.agents), (path / "trajectories.csv").is_file()))
+    return runs
+
+
+@dataclass(frozen=True)
 class ExportedFile:
     kind: str
     path: Path
@@ -200,6 +237,7 @@ class EngineBackend:
         self._models: dict[str, Any] = {}
         self._model_errors: dict[str, str] = {}
         self._retriever: Any = None
+        self._embedder_warm = False
         self._worlds: dict[str, Any] = {}
 
     # worlds and presets ------------------------------------------------------------------------------
@@ -288,6 +326,20 @@ class EngineBackend:
                     self._retriever = NodeRetriever()
             return self._retriever
 
+    def warm_up_retriever(self) -> None:
+        """Open the node index and load the embedding model now, so the first Retrieval takes no extra time."""
+        retriever = self._retriever_instance()
+        if self._retriever_factory is None:
+            from grove_tui.generation.retrieval import embed_query
+
+            retriever.ensure_index()
+            embed_query("people walk")  # imports torch, loads the model and its traced query encoder
+        self._embedder_warm = True
+
+    def embedder_ready(self) -> bool:
+        """Whether retrieval runs without first loading the embedding model (warmed, or used once)."""
+        return self._embedder_warm or self._retriever_factory is not None
+
     def close(self) -> None:
         with self._lock:
             for llm in {id(m): m for m in self._models.values()}.values():
@@ -316,6 +368,7 @@ class EngineBackend:
         retriever = self._retriever_instance()
         pipeline = GenerationPipeline(world, preset, models.get("roi"), models["bt"], retriever)
         result = pipeline.run(prompt, seed=seed, on_event=on_event, cancel=cancel)
+        self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
         stamp = time.strftime("%Y%m%d-%H%M%S")
         bundle_dir = write_bundle(result, self.runs_dir / f"{stamp}-{_slug(prompt)}-{seed}")
         return GeneratedScenario(prompt, world_name, preset_name, seed, world, result, Path(bundle_dir))
@@ -364,6 +417,30 @@ class EngineBackend:
 
         return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
 
+    def run_metrics(self, generated: GeneratedScenario, rows: Any, events: list[Any]) -> dict[str, float]:
+        """metrics.json's numbers for a run so far, flat ({"agent_overlaps": ..., "minimum_distance_to_people": ...}).
+
+        `rows` are the recorder's rows (its structured array); they are rounded as trajectories.csv
+        stores them and go through the function `grove metrics` uses, so the app's counters equal
+        the exported metrics.json of the same run.
+        """
+        import numpy as np
+
+        from grove_tui.analysis.bundle_metrics import scenario_metrics
+        from grove_tui.analysis.metrics import Trajectories
+        from grove_tui.crowd.recording import CSV_COLUMNS
+
+        if len(rows) == 0:
+            return {}
+        table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
+        table[:, 1] = np.round(table[:, 1], 4)  # t, x, y, vx, vy, yaw: trajectories.csv's "%.4f"
+        table[:, 3:8] = np.round(table[:, 3:8], 4)
+        report = scenario_metrics(generated.scenario, generated.world, Trajectories.from_rows(table), events)
+        flat: dict[str, float] = {}
+        for section in report.to_dict().values():
+            flat.update(section)
+        return flat
+
     # export ----------------------------------------------------------------------------------------
     def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
         stamp = time.strftime("%Y%m%d-%H%M%S")
@@ -382,6 +459,26 @@ class EngineBackend:
                     raise
                 ctx.add(kind, out_dir, f"failed: {type(exc).__name__}: {exc}")
         return ctx.files
+
+
+    # saved runs --------------------------------------------------------------------------------------
+    def recent_runs(self, limit: int = 50) -> list[RunInfo]:
+        """Bundles under the runs folder, newest first; a broken one is listed with what is wrong."""
+        return list_runs(self.runs_dir, limit)
+
+    def open_run(self, bundle_dir: Path) -> GeneratedScenario:
+        """A saved bundle as the app holds a fresh generation (no draft: counts cannot be re-planned)."""
+        from grove_tui.generation.pipeline import GenerationResult
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report
+
+        bundle_dir = Path(bundle_dir)
+        scenario, trees, fields, grid = load_bundle(bundle_dir)
+        # A bundle copied without its report still opens; only the timings and groups are missing.
+        report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
+        world = self.load_world(scenario.world)
+        result = GenerationResult(scenario, trees, fields, grid, report)
+        return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
+                                 bundle_dir)
 
 
 def _model_path(info: Any) -> Any:

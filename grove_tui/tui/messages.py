@@ -36,6 +36,7 @@ class PresetsListed(Message):
 class ModelsChanged(Message):
     statuses: list[Any]  # backend.ModelStatus
     loading: bool = False
+    embedder: str = ""  # the node retriever's embedding model: "", "loading", "ready" or its error
 
 
 @dataclass
@@ -58,6 +59,7 @@ class TokensFlushed(Message):
 
     stage: str
     text: str
+    tokens: int = 0  # tokens streamed in this stage so far (each TokenStreamed is one token)
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, TokensFlushed) and message.stage == self.stage
@@ -66,6 +68,7 @@ class TokensFlushed(Message):
 @dataclass
 class GenerationSucceeded(Message):
     generated: Any  # backend.GeneratedScenario
+    note: str = ""  # what happened to count edits carried over from the previous scenario
 
 
 @dataclass
@@ -101,3 +104,24 @@ class ExportFinished(Message):
 @dataclass
 class ExportFailed(Message):
     error: str
+
+
+@dataclass
+class RunOpened(Message):
+    generated: Any  # backend.GeneratedScenario loaded from a saved bundle
+
+
+@dataclass
+class RunOpenFailed(Message):
+    bundle_dir: Path
+    error: str
+
+
+@dataclass
+class MetricsComputed(Message):
+    """metrics.json's numbers for the run up to simulation step `step` (or why they could not be computed)."""
+
+    step: int
+    t: float
+    values: dict[str, float]
+    error: str = ""

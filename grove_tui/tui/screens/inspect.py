@@ -14,6 +14,7 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Footer, Static, TextArea, Tree
 
+from grove_tui.bt.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
@@ -82,15 +83,11 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
 
 
 def parse_points(text: str) -> np.ndarray:
-    """BT.CPP point lists: 'x,y;x,y;...'."""
-    points = []
-    for item in text.split(";"):
-        parts = item.replace(" ", "").split(",")
-        if len(parts) == 2:
-            try:
-                points.append((float(parts[0]), float(parts[1])))
-            except ValueError:
-                continue
+    """A BT.CPP point list ('x,y;x,y;...') as an (N, 2) array; malformed text shows no points."""
+    try:
+        points = parse_point_list(text)
+    except ValueError:
+        points = ()
     return np.array(points, dtype=np.float64).reshape(-1, 2)
 
 
@@ -102,8 +99,10 @@ Left: the behavior trees, by group and agent, with each node's ports. Right: the
 `○`, goals `◎`, injected waypoints `·`, the robot's path and any velocity-field arrows. Move through
 the tree to highlight an agent's route or a node's target on the map. **x** shows the selected
 agent's XML, **a** shows the grounding report (per group: what the sentence asked beside what
-the scenario does, ✓ or ✗ with the reason), **p** plays the simulation, **g** regenerates, **c**
-edits each group's head count and re-plans (same trees, no model call), **e** exports the bundle.
+the scenario does, ✓ or ✗ with the reason), **p** plays the simulation, **g** regenerates with the next seed (asking whether to
+keep your count edits), **c** edits each group's head count and re-plans (same trees, no model
+call), **e** exports the bundle. **Escape** goes back to setup; it asks first when the scenario
+has not been exported (it stays in the recent runs, **ctrl+o** on setup).
 """
 
     BINDINGS = [
@@ -113,7 +112,7 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
                 tooltip="What the sentence asked beside what the scenario does, per group", show=False),
         # Not in the footer: at 80 columns it would push out quit and help; the trees' border shows
         # the verdict with the key ("2/3 groups ✓ · a"), and F1 lists it.
-        Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Run generation again"),
+        Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Generate again with the next seed"),
         Binding("c", "edit_counts", "Counts", id="inspect.counts",
                 tooltip="Edit each group's head count and re-plan, without the model"),
         Binding("e", "export", "Export", id="inspect.export", tooltip="Export the bundle"),
@@ -122,9 +121,14 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
         Binding("escape", "back", "Back", id="inspect.back", tooltip="Back to setup"),
     ]
 
-    def __init__(self, generated: GeneratedScenario) -> None:
+    def __init__(self, generated: GeneratedScenario, *, reopened: bool = False,
+                 count_edits: dict[str, int] | None = None) -> None:
         super().__init__()
         self.generated = generated
+        # A reopened run is already where the user found it; a new one asks before Escape leaves it.
+        self.unsaved = not reopened
+        # Head counts the user set, by group label, offered again when regenerating with a new seed.
+        self.count_edits: dict[str, int] = dict(count_edits or {})
         self._overlay = base_overlay(generated)
         self._selected_node: BTNode | None = None
 
@@ -213,7 +217,7 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
             ("Toggle XML view", "Show the selected agent's BehaviorTree.CPP XML", self.action_toggle_xml),
             ("Toggle grounding report", "Per group: what the sentence asked beside what the scenario does",
              self.action_toggle_grounding),
-            ("Regenerate", "Run the generation again with the same prompt", self.action_regenerate),
+            ("Regenerate", "Generate again with the same prompt and the next seed", self.action_regenerate),
             ("Edit counts and re-plan", "Change each group's head count; the trees are kept, the model is not called",
              self.action_edit_counts),
             ("Export bundle", "Write the scenario bundle to the export folder", self.action_export),
@@ -290,10 +294,25 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
         self.app.push_screen(SimulationScreen(self.generated))
 
     def action_regenerate(self) -> None:
+        from grove_tui.tui.screens.choice import Choice, ChoiceScreen
+
+        seed = self.generated.seed + 1
+        if not self.count_edits:
+            self._regenerate(seed, keep_counts=False)
+            return
+        edits = ", ".join(f"{label} {count}" for label, count in self.count_edits.items())
+        question = ChoiceScreen(
+            f"Regenerate with seed {seed}",
+            f"You changed the head counts ({edits}). Keep them in the new scenario? Groups are matched by label.",
+            [Choice("y", "Keep my counts", "keep"), Choice("n", "Model's counts", "drop")])
+        self.app.push_screen(question, lambda answer: answer and self._regenerate(seed, keep_counts=answer == "keep"))
+
+    def _regenerate(self, seed: int, keep_counts: bool) -> None:
         from grove_tui.tui.screens.generation import GenerationRequest, GenerationScreen
 
         g = self.generated
-        self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, g.seed)))
+        counts = tuple(self.count_edits.items()) if keep_counts else ()
+        self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, seed, counts)))
 
     def action_edit_counts(self) -> None:
         from grove_tui.tui.screens.counts import CountsScreen
@@ -303,6 +322,12 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
     def _counts_edited(self, generated: GeneratedScenario | None) -> None:
         if generated is None:
             return
+        before = list(self.generated.result.report.get("groups", ()))
+        after = list(generated.result.report.get("groups", ()))
+        for old, new in zip(before, after):
+            if int(old.get("count", 0)) != int(new.get("count", 0)):
+                self.count_edits[str(new.get("label", ""))] = int(new.get("count", 0))
+        self.unsaved = True
         self.generated = generated
         self.grove.generated = generated
         self._show_generated()
@@ -311,7 +336,23 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
                     title="Re-planned", timeout=6)
 
     def action_back(self) -> None:
-        self.app.pop_screen()
+        from grove_tui.tui.screens.choice import Choice, ChoiceScreen
+
+        if not self.unsaved:
+            self.app.pop_screen()
+            return
+        question = ChoiceScreen(
+            "Leave this scenario?",
+            f"It has not been exported. It stays saved in the recent runs (ctrl+o on setup) as "
+            f"{self.generated.bundle_dir.name}.",
+            [Choice("y", "Leave", "leave"), Choice("e", "Export first", "export"), Choice("n", "Stay", "stay")])
+        self.app.push_screen(question, self._back_answered)
+
+    def _back_answered(self, answer: str | None) -> None:
+        if answer == "leave":
+            self.app.pop_screen()
+        elif answer == "export":
+            self.action_export()
 
     def action_export(self) -> None:
         self.notify("Exporting…", title="Export", timeout=2)
@@ -330,6 +371,7 @@ edits each group's head count and re-plans (same trees, no model call), **e** ex
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
 
+        self.unsaved = False
         self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
 
     def on_export_failed(self, message: msg.ExportFailed) -> None:
