@@ -355,24 +355,44 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
             self.action_export()
 
     def action_export(self) -> None:
-        self.notify("Exporting…", title="Export", timeout=2)
+        from grove_tui.tui.screens.export import ExportProgressScreen
+
+        self._export_progress = ExportProgressScreen("the scenario")
+        self.app.push_screen(self._export_progress)
         self.run_export()
 
     @work(thread=True, exclusive=True, group="export", exit_on_error=False, description="exporting")
     def run_export(self) -> None:
         root = self.grove.export_root
+
+        def progress(kind: str, index: int, total: int) -> None:
+            self.post_message(msg.ExportProgress(kind, index, total))
+
         try:
-            files = self.grove.backend.export(self.generated, None, root)
+            files = self.grove.backend.export(self.generated, None, root, on_progress=progress)
         except Exception as exc:
             self.post_message(msg.ExportFailed(describe_error(exc).text))
             return
         self.post_message(msg.ExportFinished(files, files[0].path.parent if files else root))
 
+    def on_export_progress(self, message: msg.ExportProgress) -> None:
+        dialog = getattr(self, "_export_progress", None)
+        if dialog is not None and dialog.is_mounted:
+            dialog.advance(message.kind, message.index, message.total)
+
+    def _close_export_progress(self) -> None:
+        dialog = getattr(self, "_export_progress", None)
+        self._export_progress = None
+        if dialog is not None and self.app.screen is dialog:
+            self.app.pop_screen()
+
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
 
         self.unsaved = False
+        self._close_export_progress()
         self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
 
     def on_export_failed(self, message: msg.ExportFailed) -> None:
+        self._close_export_progress()
         self.notify(message.error, title="Export failed", severity="error", timeout=15)

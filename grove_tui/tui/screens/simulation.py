@@ -138,6 +138,9 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_table = self._build_colours()
         self._last_snapshot: Snapshot | None = None
         self._switch_interval = sys.getswitchinterval()
+        self.exporting = False
+        self._resume_after_export = False
+        self._export_progress: Any = None
         self.metrics: dict[str, float] = {}
         self.metrics_step = -1  # the simulation step the shown metrics were computed at
         self._metrics_busy = False
@@ -260,7 +263,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
 
     def _show_status(self, snapshot: Snapshot) -> None:
         frame = snapshot.frame
-        state = "▶ playing" if snapshot.playing else "⏸ paused"
+        state = "⏸ paused for export" if self.exporting else "▶ playing" if snapshot.playing else "⏸ paused"
         robot = "manual" if snapshot.manual_robot else "path"
         lines = [
             f"{state}  speed {speed_label(snapshot.speed)}",
@@ -278,7 +281,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
     def refresh_metrics(self) -> None:
         controller = self.controller
         snapshot = None if controller is None else controller.latest
-        if snapshot is None or self._metrics_busy or snapshot.frame.step == self.metrics_step:
+        if snapshot is None or self._metrics_busy or self.exporting or snapshot.frame.step == self.metrics_step:
             return
         self._metrics_busy = True
         self.compute_metrics(controller)
@@ -385,24 +388,60 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self.app.pop_screen()
 
     def action_export(self) -> None:
-        if self.controller is None:
+        from grove_tui.tui.screens.export import ExportProgressScreen
+
+        controller = self.controller
+        if controller is None:
             self.notify("The simulation is not running yet.", title="Export", severity="warning")
+            return
+        if self.exporting:
             return
         backend = self.grove.backend
         generated = self.generated
         root = self.grove.export_root
 
+        def progress(kind: str, index: int, total: int) -> None:
+            self.post_message(msg.ExportProgress(kind, index, total))
+
         def export(simulation: Any) -> Any:
-            return backend.export(generated, simulation, root)
+            # In the simulation thread, which is paused: the run cannot change while it is written.
+            return backend.export(generated, simulation, root, on_progress=progress)
 
         def reply(result: Any) -> None:
             if isinstance(result, Exception):
-                self.post_message(msg.ExportFailed(f"{type(result).__name__}: {result}"))
+                self.post_message(msg.ExportFailed(describe_error(result).text))
             else:
                 self.post_message(msg.ExportFinished(result, result[0].path.parent if result else root))
 
-        self.notify("Exporting…", title="Export", timeout=2)
+        # Pause first, visibly: the picture stops and the status says why, instead of "playing"
+        # over a frozen map while the export holds the simulation thread.
+        self._resume_after_export = controller.playing
+        self.exporting = True
+        self._send("play", False)
+        self._export_progress = ExportProgressScreen("the run")
+        self.app.push_screen(self._export_progress)
         self._send("call", export, reply)
+        if self._last_snapshot is not None:
+            self._show_status(self._last_snapshot)
+
+    def on_export_progress(self, message: msg.ExportProgress) -> None:
+        dialog = self._export_progress
+        if dialog is not None and dialog.is_mounted:
+            dialog.advance(message.kind, message.index, message.total)
+
+    def _export_done(self) -> None:
+        """Close the progress dialog; the run resumes when the user closes what comes next."""
+        dialog, self._export_progress = self._export_progress, None
+        if dialog is not None and self.app.screen is dialog:
+            self.app.pop_screen()
+
+    def _resume(self, _result: object = None) -> None:
+        self.exporting = False
+        if self._resume_after_export:
+            self._send("play", True)
+        self._resume_after_export = False
+        if self._last_snapshot is not None:
+            self._show_status(self._last_snapshot)
 
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
@@ -411,10 +450,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         for screen in self.app.screen_stack:  # the inspect screen below need not ask before leaving now
             if isinstance(screen, InspectScreen) and screen.generated is self.generated:
                 screen.unsaved = False
-
-        self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
+        self._export_done()
+        self.app.push_screen(ExportResultScreen(message.files, message.out_dir), self._resume)
 
     def on_export_failed(self, message: msg.ExportFailed) -> None:
+        self._export_done()
+        self._resume()
         self.notify(message.error, title="Export failed", severity="error", timeout=15)
 
 
