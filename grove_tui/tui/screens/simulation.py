@@ -19,9 +19,11 @@ from textual.worker import get_current_worker
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
-from grove_tui.tui.screens.inspect import base_overlay
+from grove_tui.tui.screens.inspect import base_overlay, busiest_goal
 from grove_tui.tui.screens.sim_controller import MAX_SPEED, SPEEDS, Snapshot, SimulationController
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
+from grove_tui.tui.widgets import map_styles as ms
+from grove_tui.tui.widgets.map_legend import MapLegend
 from grove_tui.tui.widgets.map_raster import rasterise_agents
 from grove_tui.tui.widgets.map_view import MapView
 
@@ -152,9 +154,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
     def compose(self) -> ComposeResult:
         scenario = self.generated.scenario
         with Horizontal(id="sim-body"):
-            world_map = SimMapView(id="sim-map")
-            world_map.border_title = f"{scenario.world} · {len(scenario.agents)} agents"
-            yield world_map
+            with Vertical(id="sim-map-column"):
+                world_map = SimMapView(id="sim-map")
+                world_map.border_title = f"{scenario.world} · {len(scenario.agents)} agents"
+                world_map.zoom_target = self._zoom_target
+                yield world_map
+                yield MapLegend("", id="sim-legend")
             with Vertical(id="sim-side"):
                 status = Static("loading simulation…", id="sim-status")
                 status.border_title = "Simulation"
@@ -177,6 +182,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         overlay = base_overlay(self.generated)
         world_map.set_overlay(replace(overlay, spawns=overlay.spawns[:0], waypoints=overlay.waypoints[:0]))
         world_map.focus()
+        self._show_legend()
         # The sim thread runs Python (behavior trees) between numba kernels; a shorter GIL switch
         # interval hands the UI thread the GIL sooner, so frames keep their pace under load.
         self._switch_interval = sys.getswitchinterval()
@@ -223,6 +229,13 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         sys.setswitchinterval(self._switch_interval)
 
     # drawing (UI thread, set_interval) --------------------------------------------------------------
+    def _colour_names(self) -> list[str]:
+        """What each colour index means in the current mode (the legend lists them in this order)."""
+        agents = self.generated.scenario.agents
+        if self._colour_mode == "behavior":
+            return [*BEHAVIORS, "other"]
+        return [label or f"group {group}" for group, label in sorted({(a.group, a.label) for a in agents})]
+
     def _build_colours(self) -> dict[int, int]:
         agents = self.generated.scenario.agents
         if self._colour_mode == "behavior":
@@ -230,6 +243,28 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         groups = sorted({(a.group, a.label) for a in agents})
         index = {key: i for i, key in enumerate(groups)}
         return {a.id: index[(a.group, a.label)] for a in agents}
+
+    def _show_legend(self) -> None:
+        names = self._colour_names()
+        if self._colour_mode == "behavior":
+            # Only the behaviors this scenario has: eight names do not fit one line at 80 columns.
+            present = {self._colour_table[a.id] for a in self.generated.scenario.agents}
+            names = [name if i in present else "" for i, name in enumerate(names)]
+        symbols = [("⣿", ms.SELECTED, "selected"), ("◎", ms.GOAL, "goal")]
+        if self.generated.scenario.robot is not None:
+            symbols.append(("↑", ms.ROBOT, "robot"))
+        self.query_one("#sim-legend", MapLegend).show_colours(
+            self.query_one("#sim-map", SimMapView), self._colour_mode, names, symbols)
+
+    def _zoom_target(self) -> tuple[float, float] | None:
+        """Zoom centres on the selected agent where it is now, else on where most people are going."""
+        snapshot = self._last_snapshot
+        if snapshot is not None and self._selected_agent >= 0:
+            hits = np.flatnonzero(np.asarray(snapshot.frame.ids) == self._selected_agent)
+            if len(hits):
+                x, y = np.asarray(snapshot.frame.pos)[int(hits[0])]
+                return float(x), float(y)
+        return busiest_goal(self.generated.scenario)
 
     def draw_latest(self) -> None:
         controller = self.controller
@@ -382,6 +417,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_mode = "behavior" if self._colour_mode == "group" else "group"
         self._colour_table = self._build_colours()
         self._shown_serial = -1
+        self._show_legend()
         self.notify(f"colour by {self._colour_mode}", timeout=1)
 
     def action_back(self) -> None:
