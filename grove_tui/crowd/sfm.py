@@ -58,7 +58,8 @@ P_CLEARANCE = 13
 P_TURN_RATE = 14
 P_BODY = 15
 P_SKIP = 16
-P_COUNT = 17
+P_HOLD = 17
+P_COUNT = 18
 
 # Layout of the robot state vector.
 R_X = 0
@@ -97,6 +98,10 @@ ROBOT_WAYPOINT_TOLERANCE = 0.1
 _BACKOFF = 1e-4          # metres kept between a blocked agent and the wall it hit
 _TINY = 1e-12
 _GOLDEN_ANGLE = 2.399963229728653
+# A standing person braces: the pull back to its spot may reach this multiple of the walking
+# drive (w_goal v0 / tau). Its speed stays clipped to v0, so it steps back no faster than it walks.
+# At 1x walkers shoved waiting people over 0.3 m (tests/test_physics_waiting.py).
+HOLD_BRACE = 3.0
 # No nnan/ninf: the kernels rely on isfinite checks to keep every value finite.
 _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
@@ -137,6 +142,11 @@ class SFMParams:
     # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
     # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
     social_skip_exponent: float = 8.0
+    # Seconds in which a waiting person (MODE_STOP, MODE_FACE; queueing people are pulled back to
+    # their slot by the goal force; walkers who arrived give way as before) would walk back to the spot where it stopped (spring stiffness w_goal / (tau hold_time));
+    # 0 turns holding off (lightsfm: standing agents are
+    # only damped and drift metres when walkers push past, issue 19).
+    hold_time: float = 0.1
 
     def __post_init__(self) -> None:
         for name in ("obstacle_sigma", "gamma", "tau", "cutoff", "wall_range"):
@@ -165,6 +175,7 @@ class SFMParams:
         out[P_TURN_RATE] = self.face_turn_rate
         out[P_BODY] = self.body_weight
         out[P_SKIP] = self.social_skip_exponent
+        out[P_HOLD] = self.hold_time
         return out
 
 
@@ -767,7 +778,7 @@ def _update_agents(k0, k1, dt, params,
                    group_slot, group_start, group_members, group_cx, group_cy, group_n,
                    goals, goal_len, goal_front, goal_radius, cyclic,
                    field_slot, field_vectors, field_meta,
-                   face_kind, face_ref, face_point,
+                   face_kind, face_ref, face_point, anchor,
                    robot_interaction, robot,
                    walls, wall_owner, wall_meta, wall_start, wall_items,
                    order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
@@ -838,9 +849,34 @@ def _update_agents(k0, k1, dt, params,
         if has_dir:
             fx = w_goal * (v0 * ex - vx) / tau
             fy = w_goal * (v0 * ey - vy) / tau
+            anchor[i, 0] = math.nan
         else:
             fx = -vx / tau
             fy = -vy / tau
+            hold = params[P_HOLD]
+            if robot_interaction[i] == ROBOT_FEARED:
+                anchor[i, 0] = math.nan  # a frightened person gives up its spot (HuNavSim Scared)
+            elif hold > 0.0 and (m == MODE_STOP or m == MODE_FACE):
+                # Waiting (Wait, Converse, facing): the spot where it stopped is its own. Pushed off it, it is pulled
+                # back by a critically damped spring (no rocking about the spot), so walkers cannot
+                # shove it around and an arriving walker stops within a few centimetres.
+                if math.isnan(anchor[i, 0]):
+                    anchor[i, 0] = px
+                    anchor[i, 1] = py
+                stiffness = w_goal / (tau * hold)
+                hx = stiffness * (anchor[i, 0] - px)
+                hy = stiffness * (anchor[i, 1] - py)
+                hs = math.sqrt(hx * hx + hy * hy)
+                brace = HOLD_BRACE * w_goal * v0 / tau
+                if hs > brace and hs > 0.0:
+                    hx *= brace / hs
+                    hy *= brace / hs
+                extra_damping = 2.0 * math.sqrt(max(stiffness, 0.0)) - 1.0 / tau
+                if extra_damping > 0.0:
+                    hx -= extra_damping * vx
+                    hy -= extra_damping * vy
+                fx += hx
+                fy += hy
 
         # social force from neighbours in the 3x3 surrounding cells (Moussaid, inlined: hot loop)
         sfx = 0.0
@@ -1133,7 +1169,7 @@ def advance_serial(n_steps, dt, params,
                    group_slot, group_start, group_members,
                    goals, goal_len, goal_front, goal_radius, cyclic,
                    field_slot, field_vectors, field_meta,
-                   face_kind, face_ref, face_point,
+                   face_kind, face_ref, face_point, anchor,
                    robot_interaction, robot, robot_path,
                    walls, wall_owner, wall_meta, wall_start, wall_items):
     """Run n_steps of the crowd on one thread; every array is updated in place."""
@@ -1154,7 +1190,7 @@ def advance_serial(n_steps, dt, params,
                        group_slot, group_start, group_members, group_cx, group_cy, group_n,
                        goals, goal_len, goal_front, goal_radius, cyclic,
                        field_slot, field_vectors, field_meta,
-                       face_kind, face_ref, face_point,
+                       face_kind, face_ref, face_point, anchor,
                        robot_interaction, robot,
                        walls, wall_owner, wall_meta, wall_start, wall_items,
                        order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
@@ -1168,7 +1204,7 @@ def advance_parallel(n_steps, dt, params,
                      group_slot, group_start, group_members,
                      goals, goal_len, goal_front, goal_radius, cyclic,
                      field_slot, field_vectors, field_meta,
-                     face_kind, face_ref, face_point,
+                     face_kind, face_ref, face_point, anchor,
                      robot_interaction, robot, robot_path,
                      walls, wall_owner, wall_meta, wall_start, wall_items):
     """advance_serial with agent blocks spread over threads.
@@ -1195,7 +1231,7 @@ def advance_parallel(n_steps, dt, params,
                            group_slot, group_start, group_members, group_cx, group_cy, group_n,
                            goals, goal_len, goal_front, goal_radius, cyclic,
                            field_slot, field_vectors, field_meta,
-                           face_kind, face_ref, face_point,
+                           face_kind, face_ref, face_point, anchor,
                            robot_interaction, robot,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
                            order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
