@@ -68,6 +68,10 @@ def load_suite(path: str | Path) -> list[EvalCase]:
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         raise EvalError(f"{path}: no such suite file") from None
+    except UnicodeDecodeError as exc:
+        raise EvalError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise EvalError(f"{path}: cannot read it: {exc.strerror}") from None
     except yaml.YAMLError as exc:
         raise EvalError(f"{path}: not valid YAML: {exc}") from None
     if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
@@ -81,6 +85,8 @@ def load_suite(path: str | Path) -> list[EvalCase]:
         try:
             case_id = str(raw["id"])
             expect = raw.get("expect") or {}
+            if not isinstance(expect, dict):
+                raise EvalError(f"{where}: expect must be a mapping like {{targets: [...], count: N}}")
             case = EvalCase(
                 id=case_id,
                 world=str(raw["world"]),
@@ -355,7 +361,7 @@ def _navigation_tags() -> frozenset[str]:
 def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
     """The `no-planner` baseline: straight SFM goals, as HuNavSim runs behavior trees. Injected
     waypoints are dropped, velocity fields are replaced by a straight walk to the exit, and the
-    simulation plans nothing at run time either (see simulate_for_scores)."""
+    simulation plans nothing at run time either (see simulate)."""
     nav = _navigation_tags()
 
     def edit(agent: AgentSpec, root: etree._Element) -> None:
@@ -408,7 +414,7 @@ def decoupled(scenario: Scenario, trees: Mapping[str, str], world: Any, grid: An
     return dataclasses.replace(scenario, agents=tuple(agents), fields={}), planned
 
 
-def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
+def write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
     import shutil
 
     from grove_tui.files import atomic_directory
@@ -427,106 +433,24 @@ def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: M
     return target
 
 
-def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: float, runtime_planning: bool = True):
-    """Run a bundle's scenario; trajectories and events for scoring (also written into the bundle)."""
-    from grove_tui.scenario.events import write_events
-    from grove_tui.simulation.simulation import Simulation
-
-    from grove_tui.scenario.bundle import replace_run_outputs
-
-    sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
-    sim.run(seconds)
-    events = sim.events
-
-    def write_run(stage: Path) -> None:
-        sim.recorder.write_csv(stage / "trajectories.csv")
-        write_events(stage / "events.jsonl", events)
-
-    replace_run_outputs(bundle, write_run)
-    return Trajectories.from_csv(bundle / "trajectories.csv"), events
-
-
-def _read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
+def read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
     return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
 
 
-def run_suite(cases: Sequence[EvalCase], out_dir: str | Path, *, bt_model: str | None = None,
-              methods: Sequence[str] = METHODS, sim_seconds: float = 30.0, on_progress=None) -> list[CaseResult]:
-    """Generate, simulate and score every case with every method; bundles are kept under out_dir."""
-    import json
-    import time
-
-    from grove_tui.scenario.bundle import write_bundle
+def baseline_variant(method: str, world: Any, scenario: Scenario, trees: Mapping[str, str], base_bundle: Path,
+                     target: Path) -> tuple[Scenario, dict[str, str], Path]:
+    """The `no-planner` or `decoupled` rewrite of GROVE's bundle, written to `target`."""
     from grove_tui.navigation.grid import build_grid
-    from grove_tui.generation.pipeline import GenerationPipeline
     from grove_tui.navigation.theta_star import ThetaStarPlanner
-    from grove_tui.generation.presets import load_preset
-    from grove_tui.generation.retrieval import NodeRetriever
-    from grove_tui.world import load_world
-    from grove_tui.llm.local import LocalLLM
-    from grove_tui.llm.registry import resolve_models
 
-    unknown = [m for m in methods if m not in METHODS]
-    if unknown:
-        raise EvalError(f"unknown method(s) {unknown}; choose from {', '.join(METHODS)}")
-    out = Path(out_dir)
-    choice = resolve_models(None, bt_model, None)["bt"]
-    llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)
-    retriever = NodeRetriever()
-    pipelines: dict[tuple[str, str], Any] = {}
-    results: list[CaseResult] = []
-
-    def pipeline_for(world_name: str, preset_name: str):
-        key = (world_name, preset_name)
-        if key not in pipelines:
-            pipelines[key] = GenerationPipeline(load_world(world_name), load_preset(preset_name), None, llm, retriever)
-        return pipelines[key]
-
-    try:
-        for index, case in enumerate(cases, start=1):
-            world = load_world(case.world)
-            grove_dir = out / "bundles" / case.id / "grove"
-            generated: dict[str, tuple[Scenario, dict[str, str], Path]] = {}
-            for method in methods:
-                started = time.perf_counter()
-                try:
-                    if method in ("grove", "vanilla"):
-                        preset = case.preset if method == "grove" else "vanilla"
-                        result = pipeline_for(case.world, preset).run(case.prompt, seed=case.seed)
-                        target = out / "bundles" / case.id / method
-                        write_bundle(result, target)
-                        generated[method] = (result.scenario, _read_trees(target, result.scenario), target)
-                    else:
-                        if "grove" not in generated:
-                            result = pipeline_for(case.world, case.preset).run(case.prompt, seed=case.seed)
-                            write_bundle(result, grove_dir)
-                            generated["grove"] = (result.scenario, _read_trees(grove_dir, result.scenario), grove_dir)
-                        base_scenario, base_trees, base_dir = generated["grove"]
-                        if method == "no-planner":
-                            scenario, trees = without_planner(base_scenario, base_trees)
-                        else:
-                            grid = build_grid(world, base_scenario.resolution)
-                            scenario, trees = decoupled(base_scenario, base_trees, world, grid, ThetaStarPlanner(grid))
-                        target = _write_variant(base_dir, out / "bundles" / case.id / method, scenario, trees)
-                        generated[method] = (scenario, dict(trees), target)
-                    scenario, trees, bundle = generated[method]
-                    traj, events = simulate_for_scores(bundle, scenario, world, sim_seconds,
-                                                       runtime_planning=method != "no-planner")
-                    report_path = bundle / "generation.json"
-                    report = json.loads(report_path.read_text()) if report_path.exists() else {}
-                    by_id = {a.id: trees[a.tree] for a in scenario.agents}
-                    scored = score_scenario(case, method, world, scenario, by_id, traj, events,
-                                            report if method in ("grove", "vanilla") else None)
-                except GroveError as exc:
-                    scored = CaseResult(case=case, method=method, error=str(exc))
-                scored.scores["eval_seconds"] = round(time.perf_counter() - started, 3)
-                results.append(scored)
-                if on_progress is not None:
-                    on_progress(index, len(cases), scored)
-    finally:
-        llm.close()
-    write_results(results, out)
-    return results
+    if method == "no-planner":
+        variant, new_trees = without_planner(scenario, trees)
+    elif method == "decoupled":
+        grid = build_grid(world, scenario.resolution)
+        variant, new_trees = decoupled(scenario, trees, world, grid, ThetaStarPlanner(grid))
+    else:
+        raise EvalError(f"{method!r} is not a baseline rewrite of GROVE's bundle (no-planner, decoupled)")
+    return variant, dict(new_trees), write_variant(base_bundle, target, variant, new_trees)
 
 
 # --- tables --------------------------------------------------------------------------------------

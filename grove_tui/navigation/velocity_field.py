@@ -15,7 +15,6 @@ an occupied cell (the property tests integrate it from sampled cells of every sh
 
 from __future__ import annotations
 
-import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -24,7 +23,7 @@ import numba
 import numpy as np
 from scipy.spatial import cKDTree
 
-from grove_tui.files import write_bytes_atomic
+from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, any_angle_distances, line_of_sight
 
 _DR = np.array([0, 0, 1, -1, 1, 1, -1, -1], dtype=np.int64)
@@ -54,12 +53,14 @@ class VelocityField:
         return np.any(self.vectors != 0.0, axis=2)
 
     def save(self, path) -> Path:
-        buffer = io.BytesIO()
-        np.savez_compressed(buffer, origin=np.asarray(self.origin, dtype=np.float64),
-                            resolution=np.float64(self.resolution), vectors=self.vectors.astype(np.float32),
-                            exit=np.asarray(self.exit, dtype=np.float64),
-                            path=np.asarray(self.path, dtype=np.float64).reshape(-1, 2))
-        return write_bytes_atomic(path, buffer.getvalue())
+        arrays = {
+            "origin": np.asarray(self.origin, dtype=np.float64),
+            "resolution": np.float64(self.resolution),
+            "vectors": self.vectors.astype(np.float32),
+            "exit": np.asarray(self.exit, dtype=np.float64),
+            "path": np.asarray(self.path, dtype=np.float64).reshape(-1, 2),
+        }
+        return write_bytes_atomic(path, npz_bytes(arrays))
 
     @classmethod
     def load(cls, path) -> VelocityField:
