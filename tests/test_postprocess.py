@@ -10,7 +10,7 @@ from lxml import etree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.navigation.grid import build_grid
 from grove_tui.generation.postprocess import GOAL_SPACING, SPAWN_SPACING, postprocess
-from grove_tui.generation.presets import GenerationError, load_preset
+from grove_tui.generation.presets import PromptError, load_preset
 from grove_tui.language.quantities import extract_quantities
 from grove_tui.generation.rois import select_rois
 from grove_tui.world import parse_world
@@ -131,13 +131,13 @@ def test_same_seed_same_result_other_seed_other_spawns(clinic, grid):
 
 def test_impossible_count_names_the_zone_and_its_capacity(clinic, grid):
     prompt = "10,000 people crowd into the bathroom"
-    with pytest.raises(GenerationError, match=r"10000 people do not fit in zone 'restroom'.*holds at most \d+"):
+    with pytest.raises(PromptError, match=r"10000 people do not fit in zone 'restroom'.*holds at most \d+"):
         run(clinic, grid, "normal", prompt, [DraftGroup("people", 5, "restroom", DraftNode("GoTo", {"target": "restroom"}))])
 
 
 def test_count_above_the_preset_limit_is_refused(clinic, grid):
     prompt = "50 people wait in the cafeteria"
-    with pytest.raises(GenerationError, match="allows at most 40 per group"):
+    with pytest.raises(PromptError, match="allows at most 40 per group"):
         run(clinic, grid, "normal", prompt, [DraftGroup("people", 5, "cafeteria", DraftNode("GoTo", {"target": "cafeteria"}))])
 
 

@@ -273,7 +273,8 @@ def plausibility(traj: Trajectories, world: Any, agents: Sequence[AgentSpec],
     crowd = crowd_metrics(traj, walls=world.walls(), final_goals={a.id: a.goals[-1] for a in agents if a.goals},
                           events=events, walkable_area=float(world.walkable().area),
                           radius=max((a.radius for a in agents), default=0.35))
-    out = {k: crowd[k] for k in ("wall_penetrations", "goal_reach_rate", "agent_overlaps") if k in crowd}
+    out: dict[str, float] = {k: crowd[k] for k in ("wall_penetrations", "goal_reach_rate", "agent_overlaps")
+                             if k in crowd}
     for key in ("queue_members", "queue_served", "queue_order_violations", "evacuation_completion",
                 "evacuation_time"):
         if key in crowd:
@@ -483,9 +484,9 @@ def summarize(results: Sequence[CaseResult]) -> dict[tuple[str, str], dict[str, 
                     row.setdefault(key, []).append(value)
             continue
         for key in SUMMARY_KEYS:
-            value = r.scores.get(key)
-            if value is not None and not (isinstance(value, float) and math.isnan(value)):
-                row.setdefault(key, []).append(float(value))
+            score = r.scores.get(key)
+            if score is not None and not (isinstance(score, float) and math.isnan(score)):
+                row.setdefault(key, []).append(float(score))
     return {k: {m: float(np.mean(v)) for m, v in row.items()} for k, row in table.items()}
 
 

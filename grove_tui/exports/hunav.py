@@ -26,6 +26,7 @@ import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
@@ -36,6 +37,10 @@ from grove_tui.bt.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.xml import check_tree_text, parse_point_list
 from grove_tui.errors import ExportError
 from grove_tui.scenario.model import AgentSpec, Scenario
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.grid import OccupancyGrid
+    from grove_tui.navigation.theta_star import ThetaStarPlanner
 
 Point = tuple[float, float]
 
@@ -93,8 +98,8 @@ class _AgentContext:
     bundle: Path
     goals: GoalTable
     queue_rank: dict[tuple[int, str], int]
-    grid: object | None
-    planner: object | None
+    grid: OccupancyGrid | None
+    planner: ThetaStarPlanner | None
     seed: int
 
 
@@ -271,7 +276,7 @@ def _planned(a: Point, b: Point, ctx: _AgentContext) -> list[Point]:
     if ctx.planner is None:
         return [b]
     path = ctx.planner.plan(a, b)
-    return [tuple(map(float, q)) for q in path[1:]]
+    return [(float(q[0]), float(q[1])) for q in path[1:]]
 
 
 def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element | None:

@@ -190,9 +190,10 @@ class GenerationPipeline:
         t0 = clock.begin("rois")
         quantities = extract_quantities(prompt)
         selection = select_rois(world, preset, prompt, self.matcher)
-        roi_tokens = (0, 0)
+        roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
         if self.llm_roi is not None and preset.guided:
-            selection, *roi_tokens = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
+            selection, *spent = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
+            roi_tokens = tuple(spent)
         check_population(world, self.grid, preset, selection, quantities)
         clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 

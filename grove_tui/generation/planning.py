@@ -92,9 +92,12 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
     if preset.velocity == "field":
+        if post.exit is None:
+            raise GenerationError("the preset follows velocity fields to an exit, but the world has no exit")
         exit_door = world.find(post.exit)
         for g in post.groups:
             _check_cancel(cancel)
+            assert g.field_id is not None  # post-processing names one field per group when fields are used
             members = [a for a in post.agents if a.group_index == g.index]
             centroid = _free_centroid(grid, [a.start for a in members], g.spawn)
             try:
@@ -118,7 +121,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
         goals = goals_from_tree(xml)
         if a.field_id is not None and a.field_id in group_paths:
             # Field followers head along their group's path: record it as their goals.
-            goals = [tuple(map(float, p)) for p in group_paths[a.field_id][1:]]
+            goals = [(float(p[0]), float(p[1])) for p in group_paths[a.field_id][1:]]
         rel = f"trees/agent_{a.id}.xml"
         trees[rel] = xml
         agents.append(AgentSpec(

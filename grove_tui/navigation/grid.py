@@ -33,7 +33,8 @@ class OccupancyGrid:
 
     @property
     def shape(self) -> tuple[int, int]:
-        return self.occupied.shape  # type: ignore[return-value]
+        rows, cols = self.occupied.shape
+        return rows, cols
 
     @property
     def height(self) -> int:

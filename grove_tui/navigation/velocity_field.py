@@ -321,5 +321,5 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     _blend_with_path(occupied, planner.clearance, planner.sight_rows, planner.sight_cols, parent, exit_cx, exit_cy, samples, nearest, nearest_distance,
                      CAPTURE_RADIUS / res, max(1, int(round(LOOKAHEAD / res / spacing))),
                      WALL_FADE[0], WALL_FADE[1], vectors)
-    origin = tuple(float(v) for v in getattr(grid, "origin", (planner.centre_x - res / 2, planner.centre_y - res / 2)))
-    return VelocityField(origin=origin, resolution=res, vectors=vectors, exit=(ex, ey), path=path.copy())
+    ox, oy = getattr(grid, "origin", (planner.centre_x - res / 2, planner.centre_y - res / 2))
+    return VelocityField(origin=(float(ox), float(oy)), resolution=res, vectors=vectors, exit=(ex, ey), path=path.copy())
