@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs GROVE-TUI into the active Python environment.
 #   ./install.sh        the app, the embedded models and all runtime dependencies
-#   ./install.sh test   the same plus what the test suite needs (and the ROS 2 / Foxglove exports it tests)
-#   ./install.sh bench  the same plus the peers the benchmarks compare against
+#   ./install.sh test   the same plus what the test suite needs (and the ROS 2 / Foxglove exports and the
+#                       Gymnasium environment it tests)
+#   ./install.sh bench  the same plus the peers the benchmarks compare against (and stable-baselines3, CPU torch)
 set -euo pipefail
 cd "$(dirname "$0")"
 # llama-cpp-python compiles from source: a portable CPU build (no -march=native, no multimodal lib).
@@ -11,8 +12,8 @@ export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-$(nproc)}"
 extras="[plots]"
 case "${1:-}" in
   "") ;;
-  test) extras="[plots,test,ros]" ;;
-  bench) extras="[plots,test,ros,bench]" ;;
+  test) extras="[plots,test,ros,gym]" ;;
+  bench) extras="[plots,test,ros,bench,gym-train]" ;;
   *) echo "usage: ./install.sh [test|bench]" >&2; exit 2 ;;
 esac
 python -m pip install -c constraints.txt "llama-cpp-python==0.3.36"

@@ -34,7 +34,8 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
     from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
-    from grove_tui.generation.waypoints import inject_waypoints, parse_waypoints
+    from grove_tui.bt.ports import parse_point_list
+    from grove_tui.generation.waypoints import inject_waypoints
     from grove_tui.world import load_world
 
     world = load_world("hospital")
@@ -70,7 +71,7 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
 
         match = re.search(r'waypoints="([^"]*)"', xml)
         if match and match.group(1):
-            waypoints = list(parse_waypoints(match.group(1)))
+            waypoints = list(parse_point_list(match.group(1)))
         tree_path = f"trees/agent_{agent_id}.xml"
         (out_dir / tree_path).write_text(xml, encoding="utf-8")
         trees[tree_path] = xml

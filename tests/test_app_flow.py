@@ -112,7 +112,8 @@ async def test_generate_inspect_play_and_export(tmp_path):
         assert sim.frames_drawn > 0
         status = str(sim.query_one("#sim-status", Static).render())
         assert "paused" in status and "t =" in status
-        assert "reached goals" in str(sim.query_one("#counters", Static).render())
+        await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step, what="counters")
+        assert "goal_reach_rate" in str(sim.query_one("#counters", Static).render())
         # the selected agent's runtime tree shows live statuses
         sim_tree = sim.query_one("#sim-tree", BTTree)
         await wait_until(pilot, lambda: bool(sim_tree._status), what="live tree status")

@@ -12,7 +12,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 # Everything but the app: the pipeline packages, the services layer, the CLI and the basics.
 CORE_PACKAGES = ("world", "language", "generation", "scenario", "navigation", "crowd", "simulation", "bt", "analysis",
-                 "exports", "llm", "services", "cli")
+                 "exports", "llm", "services", "gym", "cli")
 CORE_MODULES = ("errors", "files", "paths", "settings", "cpu")
 CORE = [ROOT / "grove_tui" / name for name in CORE_PACKAGES] + [ROOT / "grove_tui" / f"{name}.py" for name in CORE_MODULES]
 FORBIDDEN = ("textual", "grove_tui.tui")

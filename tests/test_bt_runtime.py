@@ -10,9 +10,10 @@ from __future__ import annotations
 import pytest
 
 from grove_tui.bt.manifest import NODES, NodeSpec, PortSpec
-from grove_tui.bt.runtime import (
-    FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, Blackboard, ConditionNode, SimClock, StatefulActionNode, SyncActionNode,
-    TreeFactory,
+from grove_tui.bt.blackboard import Blackboard
+from grove_tui.bt.factory import TreeFactory
+from grove_tui.bt.tree_node import (
+    FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ConditionNode, SimClock, StatefulActionNode, SyncActionNode,
 )
 from grove_tui.bt.xml import BTError, parse_tree_text
 

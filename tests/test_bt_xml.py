@@ -7,9 +7,10 @@ from click.testing import CliRunner
 from lxml import etree
 
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
+from grove_tui.bt.ports import format_point_list, parse_point_list
 from grove_tui.bt.xml import (
-    MAX_BYTES, MAX_DEPTH, BTError, check_tree_file, check_tree_text, format_point_list, parse_point_list,
-    parse_tree_text,
+    MAX_BYTES, MAX_DEPTH, MAX_EXPANDED_DEPTH, MAX_EXPANDED_NODES, MAX_PROBLEMS, MAX_SUGGESTIONS, BTError,
+    check_tree_file, check_tree_text, load_tree_file, parse_tree_text,
 )
 from grove_tui.errors import GroveError
 
@@ -210,3 +211,108 @@ def test_cli_manifest_and_validate(tmp_path):
 def test_check_tree_file_reports_unreadable_files(tmp_path):
     problems = check_tree_file(tmp_path / "nope.xml")
     assert len(problems) == 1 and "cannot read" in problems[0].message
+
+
+# ---- hostile files and limits (issue 17) --------------------------------------------------------
+
+def _chain(n: int, leaf: str = "<Wait/>") -> str:
+    """A main tree calling T1, which calls T2, ... down to T<n>, which runs `leaf`."""
+    trees = "".join(f'<BehaviorTree ID="T{i}"><SubTree ID="T{i + 1}"/></BehaviorTree>' for i in range(n))
+    return f'<root BTCPP_format="4" main_tree_to_execute="T0">{trees}<BehaviorTree ID="T{n}">{leaf}</BehaviorTree></root>'
+
+
+@pytest.mark.parametrize("path", ["/dev/zero", "symlink", "fifo"])
+def test_validate_refuses_devices_links_to_them_and_fifos_at_once(tmp_path, path):
+    import os
+    import time
+
+    from grove_tui.cli.bt import bt
+
+    if path == "symlink":
+        path = tmp_path / "tree.xml"
+        path.symlink_to("/dev/zero")
+    elif path == "fifo":
+        path = tmp_path / "tree.xml"
+        os.mkfifo(path)  # no writer: a blocking open would wait for ever
+    started = time.perf_counter()
+    result = CliRunner().invoke(bt, ["validate", str(path)])
+    assert time.perf_counter() - started < 5
+    assert result.exit_code == 1
+    assert f"{path}: is a " in result.output and "regular files only" in result.output
+    with pytest.raises(BTError, match="regular files only"):
+        load_tree_file(path)
+
+
+def test_a_file_over_the_size_limit_is_refused_before_it_is_read(tmp_path):
+    big = tmp_path / "big.xml"
+    with open(big, "wb") as handle:
+        handle.truncate(MAX_BYTES * 50)  # sparse: large on paper, nothing to read
+    problems = check_tree_file(big)
+    assert [p.message for p in problems] == [f"file is {MAX_BYTES * 50} bytes; behavior trees are limited to "
+                                             f"{MAX_BYTES} bytes"]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("", "empty file"),
+    ("   \n", "empty file"),
+    ("hello, not a tree", "not well-formed XML: Start tag expected"),
+    ('{"groups": []}', "not well-formed XML"),
+    ("<root>", "not well-formed XML"),
+])
+def test_empty_or_not_xml_is_one_line(tmp_path, text, message):
+    from grove_tui.cli.bt import bt
+
+    path = tmp_path / "t.xml"
+    path.write_text(text)
+    with pytest.raises(BTError, match=message) as info:
+        parse_tree_text(text, "t.xml")
+    assert "\n" not in str(info.value)
+    (problem,) = check_tree_file(path)
+    assert message in problem.message
+    result = CliRunner().invoke(bt, ["validate", str(path)])
+    assert result.exit_code == 1
+    lines = result.output.splitlines()
+    assert len(lines) == 2 and message in lines[0] and lines[1] == "1 of 1 file(s) have problems"
+
+
+def test_a_chain_of_2400_subtrees_is_a_bt_error_not_a_recursion_error():
+    with pytest.raises(BTError, match=f"SubTree calls nest 2401 levels deep from 'T0'; the limit is "
+                                      f"{MAX_EXPANDED_DEPTH}"):
+        parse_tree_text(_chain(2400), "chain.xml")
+    # a chain within the limit builds and runs
+    from grove_tui.bt.registry import tree_factory
+    from grove_tui.bt.tree_node import SUCCESS
+
+    tree = tree_factory().create(parse_tree_text(_chain(MAX_EXPANDED_DEPTH - 2, "<AlwaysSuccess/>")))
+    assert tree.tick() == SUCCESS
+
+
+def test_subtrees_that_expand_exponentially_are_refused():
+    trees = "".join(f'<BehaviorTree ID="T{i}"><Sequence><SubTree ID="T{i + 1}"/><SubTree ID="T{i + 1}"/></Sequence>'
+                    "</BehaviorTree>" for i in range(40))
+    text = f'<root BTCPP_format="4" main_tree_to_execute="T0">{trees}<BehaviorTree ID="T40"><Wait/></BehaviorTree></root>'
+    assert [p.message for p in check_tree_text(text)] == [
+        f"expanding the SubTree calls of 'T0' gives more than {MAX_EXPANDED_NODES} nodes"]
+
+
+def test_recursion_through_a_long_chain_is_found_without_recursing():
+    text = _chain(2400, '<SubTree ID="T0"/>')
+    assert any(p.message.startswith("SubTree recursion: T0 -> T1 -> T2") and p.message.endswith("T2400 -> T0")
+               for p in check_tree_text(text))
+
+
+def test_2400_subtrees_calling_unknown_ids_are_reported_fast_with_bounded_suggestions():
+    import time
+
+    n = 2400
+    # every call is one letter off a real tree ID, so every one of them has a close match
+    trees = "".join(f'<BehaviorTree ID="Tree{i}"><SubTree ID="Tree{i}x"/></BehaviorTree>' for i in range(n))
+    text = f'<root BTCPP_format="4" main_tree_to_execute="Tree0">{trees}</root>'
+    started = time.perf_counter()
+    problems = check_tree_text(text)
+    assert time.perf_counter() - started < 10
+    assert len(problems) == MAX_PROBLEMS + 1
+    assert problems[-1].message == f"... and {n - MAX_PROBLEMS} more problem(s)"
+    suggested = [p for p in problems if "did you mean" in p.message]
+    assert 0 < len(suggested) <= MAX_SUGGESTIONS
+    assert "SubTree refers to unknown BehaviorTree ID 'Tree0x' (did you mean Tree0" in problems[0].message

@@ -68,6 +68,10 @@ CASES = [
     ("picture", ["picture", "BUNDLE"], 2),
     ("eval", ["eval", "MISSING", "--out", "OUT"], 2),
     ("eval", ["eval", "SUITE", "--out", "OUT"], 2),
+    ("open", ["open", "MISSING"], 2),
+    ("open", ["open", "BUNDLE"], 2),
+    ("understanding", ["understanding", "MISSING", "--out", "OUT"], 2),
+    ("understanding", ["understanding", "CASES", "--out", "OUT"], 2),
 ]
 
 

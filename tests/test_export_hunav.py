@@ -113,6 +113,8 @@ def test_missing_tree_is_named(hospital_bundle, tmp_path):
     broken = tmp_path / "broken"
     shutil.copytree(hospital_bundle, broken)
     (broken / "trees" / "agent_3.xml").unlink()
-    with pytest.raises(ExportError, match="agent_3.xml: tree file of agent 3 is missing"):
+    from grove_tui.scenario.bundle import BundleError
+
+    with pytest.raises(BundleError, match="tree file of agent 3 trees/agent_3.xml is missing"):
         export_hunav(broken, tmp_path / "out")
     assert not (tmp_path / "out").exists()

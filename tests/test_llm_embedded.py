@@ -42,7 +42,7 @@ SYSTEM = (
 
 def _cases(count: int = 50) -> list[tuple[str, list[str], list[str], int]]:
     rng = random.Random(7)
-    worlds = [load_world(name) for name in ("hospital", "office", "residential")]
+    worlds = [load_world(name) for name in ("hospital", "office", "residential", "airport")]
     cases = []
     for index in range(count):
         world = worlds[index % len(worlds)]

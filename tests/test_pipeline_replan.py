@@ -104,9 +104,9 @@ def test_every_tree_validates_and_has_planned_waypoints(generated):
     planner = ThetaStarPlanner(edited.grid)
     for agent in edited.scenario.agents:
         xml = edited.trees[agent.tree]
-        parse_tree_text(xml, agent.tree)
+        document = parse_tree_text(xml, agent.tree)
         assert f'ID="agent_{agent.id}"' in xml
-        assert agent.goals == tuple(goals_from_tree(xml))
+        assert agent.goals == tuple(goals_from_tree(document))
         route = [agent.start, *agent.goals]
         assert all(planner.segment_is_free(a[0], a[1], b[0], b[1]) for a, b in zip(route, route[1:])), agent.id
     # lobby -> cafeteria is no straight line: the nurses' GoTo carries injected waypoints

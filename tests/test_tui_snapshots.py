@@ -22,6 +22,7 @@ from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.generation import GenerationScreen
 from grove_tui.tui.screens.help import HelpScreen
 from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.recent import RecentRunsScreen
 from grove_tui.tui.screens.setup import SetupScreen
 from grove_tui.tui.screens.simulation import SimulationScreen
 from grove_tui.tui.widgets.bt_tree import BTTree
@@ -93,6 +94,20 @@ class TestInspectScreen:
         assert snap_compare(app, terminal_size=size, run_before=to_inspect)
 
 
+class TestInspectGrounding:
+    """The grounding report (key `a`) beside the map, read from the generated bundle's report."""
+
+    def test_grounding_report_at_80x24(self, snap_compare, tmp_path):
+        async def run_before(pilot) -> None:
+            screen = await to_inspect(pilot)
+            await pilot.press("a")
+            await wait_until(pilot, lambda: screen.query_one("#grounding").display, what="grounding panel")
+            await pilot.pause()
+
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
+
+
 class TestSimulationScreen:
     @pytest.mark.parametrize("size", SIZES)
     def test_simulation_after_ten_steps(self, snap_compare, tmp_path, size):
@@ -109,6 +124,8 @@ class TestSimulationScreen:
             tree = sim.query_one("#sim-tree", BTTree)
             await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial and bool(tree._status),
                              what="last frame drawn")
+            await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step,
+                             what="counters of the last frame")
 
         app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
@@ -124,3 +141,33 @@ class TestHelpScreen:
 
         app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestRecentRunsScreen:
+    def test_recent_runs(self, snap_compare, tmp_path, monkeypatch):
+        import os
+        import time
+
+        # Fixed home, clock zone and file times: the list shows the folder (as ~/...) and each run's time.
+        monkeypatch.setenv("HOME", str(tmp_path))
+        monkeypatch.setenv("TZ", "UTC")
+        time.tzset()
+        backend = fake_llm_backend(tmp_path / "runs")
+        for index, seed in enumerate((3, 4)):
+            generated = backend.generate("hospital", "queuing", PROMPT, seed)
+            stamp = 1_790_000_000 + 600 * index
+            os.utime(generated.bundle_dir / "scenario.yaml", (stamp, stamp))
+
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press("ctrl+o")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, RecentRunsScreen) and len(app.screen.runs) == 2,
+                             what="recent runs")
+
+        app = GroveApp(backend, test_settings(tmp_path))
+        try:
+            assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
+        finally:
+            monkeypatch.undo()
+            time.tzset()

@@ -144,7 +144,10 @@ def test_save_and_load_round_trip(rooms_field, tmp_path):
     np.testing.assert_array_equal(loaded.path, field.path)
     assert loaded.origin == field.origin and loaded.resolution == field.resolution and loaded.exit == field.exit
     (tmp_path / "broken.npz").write_bytes(b"not a zip")
-    with pytest.raises(PlanningError, match="broken.npz"):
+    from grove_tui.navigation.velocity_field import FieldFileError
+
+    # A broken file is bad input (exit 2), not a planning failure.
+    with pytest.raises(FieldFileError, match="broken.npz"):
         VelocityField.load(tmp_path / "broken.npz")
 
 

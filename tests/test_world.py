@@ -23,7 +23,7 @@ from grove_tui.world import (
 )
 
 BAD = Path(__file__).parent / "data" / "worlds_bad"
-SHIPPED = ("hospital", "office", "residential")
+SHIPPED = ("hospital", "office", "residential", "airport")
 
 MINI = """\
 name: mini
@@ -56,7 +56,7 @@ def mini_world():
 # --- shipped worlds --------------------------------------------------------------------------
 
 
-def test_all_three_worlds_are_shipped():
+def test_all_four_worlds_are_shipped():
     assert set(SHIPPED) <= set(list_worlds())
 
 

@@ -19,10 +19,10 @@ def run(*args):
     return result
 
 
-def test_list_shows_the_three_worlds():
+def test_list_shows_the_four_worlds():
     result = run("list")
     assert result.exit_code == 0
-    for name in ("hospital", "office", "residential"):
+    for name in ("hospital", "office", "residential", "airport"):
         assert name in result.output
     assert "64 x 44 m" in result.output
 

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 from grove_tui.files import write_text_atomic
-from grove_tui.analysis.metrics import MetricsReport, Trajectories, compute_metrics
+from grove_tui.analysis.metrics import MetricsReport, Trajectories, compute_metrics, compute_metrics_csv
 from grove_tui.scenario.events import read_events
+from grove_tui.scenario.bundle import load_scenario
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import load_world
 
@@ -18,15 +21,28 @@ METRICS = "metrics.json"
 
 def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsReport, Path]:
     bundle = Path(bundle_dir)
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world = load_world(scenario.world)
-    traj = Trajectories.from_csv(bundle / TRAJECTORIES)
     events_path = bundle / EVENTS
     events = read_events(events_path) if events_path.exists() else []
+    # Streamed a block of frames at a time: a long run's CSV is never held in memory whole.
+    report = compute_metrics_csv(bundle / TRAJECTORIES, **metrics_options(scenario, world, events))
+    path = bundle / METRICS
+    if write:
+        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
+    return report, path
+
+
+def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events: Sequence[Any]) -> MetricsReport:
+    """metrics.json's report of a run held in memory: what the app's live counters show, so both always agree."""
+    return compute_metrics(traj, **metrics_options(scenario, world, events))
+
+
+def metrics_options(scenario: Scenario, world: Any, events: Sequence[Any]) -> dict[str, Any]:
+    """The scenario's side of the metrics: the same for the file on disk and the live run."""
     robot = scenario.robot
     radii = {a.radius for a in scenario.agents}
-    report = compute_metrics(
-        traj,
+    return dict(
         walls=world.walls(),
         robot_goal=None if robot is None else robot.goal,
         robot_radius=0.3 if robot is None else robot.radius,
@@ -38,7 +54,3 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
         # run (a conversation drops it, JoinGroup renumbers it); HuNavSim's group_id is the configured one.
         groups={a.id: a.group for a in scenario.agents},
     )
-    path = bundle / METRICS
-    if write:
-        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
-    return report, path

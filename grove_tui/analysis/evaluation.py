@@ -28,9 +28,12 @@ from typing import Any
 
 import numpy as np
 import yaml
-from lxml import etree
 
-from grove_tui.errors import EvalError, GroveError
+from grove_tui.bt.document import TreeDocument, TreeElement
+from grove_tui.bt.manifest import NODES, SUBTREE
+from grove_tui.bt.ports import format_point_list
+from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
+from grove_tui.errors import BTError, EvalError, GroveError
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, Scenario
@@ -156,9 +159,8 @@ def _zone_matches(world: Any, zone_name: str, names: Sequence[str]) -> bool:
 def _roaming_zone(tree_xml: str | None) -> str | None:
     if not tree_xml:
         return None
-    root = etree.fromstring(tree_xml.encode("utf-8"), etree.XMLParser(resolve_entities=False, no_network=True))
-    for el in root.iter("Wander"):
-        if el.get("zone"):
+    for el in read_tree(tree_xml).nodes():
+        if el.id == "Wander" and el.get("zone"):
             return el.get("zone")
     return None
 
@@ -191,11 +193,8 @@ def count_accuracy(agents: Sequence[AgentSpec], expect: Expectation) -> float | 
 
 def tree_node_types(trees: Mapping[int, str]) -> set[str]:
     types: set[str] = set()
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
     for xml in trees.values():
-        root = etree.fromstring(xml.encode("utf-8"), parser)
-        for tree in root.iter("BehaviorTree"):
-            types |= {el.tag for el in tree.iter() if isinstance(el.tag, str) and el.tag != "BehaviorTree"}
+        types |= {el.id for el in read_tree(xml).nodes()}
     return types
 
 
@@ -208,29 +207,28 @@ def behavior_match(trees: Mapping[int, str], expect: Expectation) -> float | Non
 
 def validity(world: Any, trees: Mapping[int, str]) -> dict[str, float]:
     """Trees that validate against the manifest, and names the model invented."""
-    from grove_tui.bt.manifest import NODES
-    from grove_tui.bt.xml import check_tree_text
-
     valid = 0
     hallucinated_nodes: set[str] = set()
     hallucinated_places: set[str] = set()
     known_places = {roi.name for roi in world.roi_index()}
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
     for agent_id, xml in trees.items():
         if not check_tree_text(xml, source=f"agent {agent_id}"):
             valid += 1
-        root = etree.fromstring(xml.encode("utf-8"), parser)
-        for tree in root.iter("BehaviorTree"):
-            for el in tree.iter():
-                if not isinstance(el.tag, str) or el.tag in ("BehaviorTree", "SubTree"):
-                    continue
-                spec = NODES.get(el.tag)
-                if spec is None:
-                    hallucinated_nodes.add(el.tag)
-                    continue
-                for port in spec.ports:
-                    if port.type == "target" and el.get(port.name) and el.get(port.name) not in known_places:
-                        hallucinated_places.add(el.get(port.name))
+        try:
+            document = read_tree(xml, f"agent {agent_id}")
+        except BTError:
+            continue  # not even a tree: counted as invalid above, and it names no nodes to judge
+        for el in document.nodes():
+            if el.id == SUBTREE:
+                continue
+            spec = NODES.get(el.id)
+            if spec is None:
+                hallucinated_nodes.add(el.id)
+                continue
+            for port in spec.ports:
+                place = el.get(port.name)
+                if port.type == "target" and place and place not in known_places:
+                    hallucinated_places.add(place)
     n = len(trees)
     return {
         "valid_trees": valid / n if n else 0.0,
@@ -337,25 +335,20 @@ def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, 
 
 # --- running a suite -----------------------------------------------------------------------------
 
-_XML_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
-
-
 def _rewrite_trees(trees: Mapping[str, str], agents: Sequence[AgentSpec], edit) -> dict[str, str]:
-    """Apply `edit(agent, root)` to each agent's tree; returns relative path -> new XML."""
+    """Apply `edit(agent, document)` to each agent's tree; returns relative path -> new XML."""
     by_path = {a.tree: a for a in agents}
     out = {}
     for rel, xml in trees.items():
-        root = etree.fromstring(xml.encode("utf-8"), _XML_PARSER)
+        document = read_tree(xml, rel)
         agent = by_path.get(rel)
         if agent is not None:
-            edit(agent, root)
-        out[rel] = etree.tostring(root, pretty_print=True, xml_declaration=True, encoding="UTF-8").decode("utf-8")
+            edit(agent, document)
+        out[rel] = write_tree(document)
     return out
 
 
 def _navigation_tags() -> frozenset[str]:
-    from grove_tui.bt.manifest import NODES
-
     return frozenset(name for name, spec in NODES.items() if spec.navigates)
 
 
@@ -365,17 +358,14 @@ def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scena
     simulation plans nothing at run time either (see simulate)."""
     nav = _navigation_tags()
 
-    def edit(agent: AgentSpec, root: etree._Element) -> None:
-        for el in list(root.iter()):
-            if not isinstance(el.tag, str):
-                continue
-            if el.tag in nav and el.get("waypoints"):
+    def edit(agent: AgentSpec, document: TreeDocument) -> None:
+        for parent, index, el in document.nodes_with_parents():
+            if el.id in nav and el.get("waypoints"):
                 el.set("waypoints", "")
-            if el.tag == "FollowVelocityField":
-                goto = etree.Element("GoTo", {"target": el.get("exit", "exit"), "x": el.get("x"), "y": el.get("y"),
-                                              "waypoints": "", "agent_id": "{id}"})
-                goto.tail = el.tail
-                el.getparent().replace(el, goto)
+            if el.id == "FollowVelocityField":
+                exit_point: dict[str, str] = {k: el.attributes[k] for k in ("x", "y") if k in el.attributes}
+                parent.children[index] = TreeElement("GoTo", {"target": el.get("exit") or "exit", **exit_point,
+                                                              "waypoints": "", "agent_id": "{id}"})
 
     new_trees = _rewrite_trees(trees, scenario.agents, edit)
     agents = tuple(dataclasses.replace(a, goals=a.goals[-1:]) for a in scenario.agents)
@@ -392,19 +382,15 @@ def decoupled(scenario: Scenario, trees: Mapping[str, str], world: Any, grid: An
     by_id = {a.id: a for a in agents}
     nav = _navigation_tags()
 
-    def edit(agent: AgentSpec, root: etree._Element) -> None:
-        goal = by_id[agent.id].goals[-1]
-        for el in list(root.iter()):
-            if not isinstance(el.tag, str):
-                continue
-            if el.tag == "FollowVelocityField":
-                goto = etree.Element("GoTo", {"target": "sampled", "x": f"{goal[0]:.2f}", "y": f"{goal[1]:.2f}",
-                                              "waypoints": "", "agent_id": "{id}"})
-                goto.tail = el.tail
-                el.getparent().replace(el, goto)
-            elif el.tag in nav or el.tag == "Queue":
-                el.set("x", f"{goal[0]:.2f}")
-                el.set("y", f"{goal[1]:.2f}")
+    def edit(agent: AgentSpec, document: TreeDocument) -> None:
+        goal_x, goal_y = format_point_list([by_id[agent.id].goals[-1]]).split(",")
+        for parent, index, el in document.nodes_with_parents():
+            if el.id == "FollowVelocityField":
+                parent.children[index] = TreeElement("GoTo", {"target": "sampled", "x": goal_x, "y": goal_y,
+                                                              "waypoints": "", "agent_id": "{id}"})
+            elif el.id in nav or el.id == "Queue":
+                el.set("x", goal_x)
+                el.set("y", goal_y)
                 if el.get("waypoints") is not None:
                     el.set("waypoints", "")
 

@@ -14,7 +14,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from grove_tui.bt.coordination import ConversationRegistry, QueueRegistry, SpeechLog
-from grove_tui.bt.runtime import SimClock
+from grove_tui.bt.tree_node import SimClock
 from grove_tui.bt.xml import BTError
 
 Point = tuple[float, float]

@@ -1,14 +1,18 @@
-"""Hardened parsing and validation of BehaviorTree.CPP v4 XML.
+"""Behavior-tree XML in and out: the only place GROVE reads or writes BehaviorTree.CPP v4 text.
 
-Trees come from a language model and from users, so the parser trusts nothing: no DTD, no entity
-expansion, no network, bounded size and depth. Validation checks every node and port against the
-manifest and reports *every* problem with its line, so one `grove bt validate` run shows them all.
+Trees come from a language model and from users, so the reader trusts nothing: no DTD, no entity
+expansion, no XInclude, no network, bounded size, depth and SubTree expansion; files must be regular
+files and are read with a limit. `read_tree` gives a structurally sound `TreeDocument` (for stages
+that edit trees); `parse_tree_text` also validates every node and port against the manifest, and
+`check_tree_text` reports *every* problem with its line, so one `grove bt validate` run shows them all.
+`write_tree` is the one serialisation: two-space indentation, one element per line, attributes in
+document order, so a tree read and written again is byte-identical.
 
 Accepted format (BT.CPP v4):
     <root BTCPP_format="4" main_tree_to_execute="MainTree">
       <BehaviorTree ID="MainTree"> <Sequence> <GoTo target="pharmacy"/> ... </Sequence> </BehaviorTree>
       <BehaviorTree ID="Other"> ... </BehaviorTree>
-      <TreeNodesModel> ... </TreeNodesModel>          (ignored)
+      <TreeNodesModel> ... </TreeNodesModel>          (kept, not validated)
     </root>
 Nodes are written compactly (<GoTo .../>) or explicitly (<Action ID="GoTo" .../>). A port value is a
 literal or a blackboard pointer "{key}". <SubTree ID="X" port="{key}" _autoremap="true"/> calls tree X.
@@ -18,25 +22,51 @@ Not supported (rejected with a clear message): <include>, scripting attributes (
 from __future__ import annotations
 
 import difflib
+import heapq
+import os
 import re
-from collections.abc import Mapping
-from dataclasses import dataclass, field
+import stat
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from pathlib import Path
 
 from lxml import etree
 
-from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec, PortSpec
+from grove_tui.bt.document import (
+    BEHAVIOR_TREE, EXPLICIT_TAGS, TREE_NODES_MODEL, TreeDocument, TreeElement,
+)
+from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec
+from grove_tui.bt.ports import (  # noqa: F401  (re-exported: the codec's historical home)
+    blackboard_pointer, convert_literal, format_point_list, parse_agent_list, parse_point_list,
+)
 from grove_tui.errors import BTError
 
 MAX_BYTES = 1_000_000
-MAX_DEPTH = 64
-MAX_NODES = 5_000
+MAX_DEPTH = 64  # element nesting inside one file
+MAX_NODES = 5_000  # elements in one file
+# A SubTree call puts the called tree below the caller: nesting and node count after expanding every
+# call are bounded too, or a short chain of SubTrees (each calling the next twice) grows exponentially
+# and a long one overflows the runtime's recursion when it is built or ticked.
+MAX_EXPANDED_DEPTH = 128
+MAX_EXPANDED_NODES = 20_000
+# "Did you mean" costs one string comparison per candidate: beyond these, a file of thousands of
+# misspelt names would spend minutes on suggestions nobody reads.
+MAX_SUGGESTIONS = 20
+MAX_SUGGESTION_CANDIDATES = 500
+MAX_PROBLEMS = 200
 
-_EXPLICIT_TAGS = {"Action": "action", "Condition": "condition", "Control": "control", "Decorator": "decorator"}
-_BLACKBOARD_POINTER = re.compile(r"^\{([A-Za-z_@][A-Za-z0-9_.@:-]*)\}$")
-_ATTRIBUTES_ANY_NODE = {"name", "ID", "_description", "_uid", "_fullpath"}
 _SCRIPTING_ATTRIBUTES = {"_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", "_onFailure", "_onHalted",
                          "_post"}
+_FORMAT = "4"
+
+
+def _fatal(source: str, line: int | None, detail: str) -> BTError:
+    """A BTError about one place of a file; it also carries the place apart (`line`, `detail`), so
+    `check_tree_text` can list it like any other problem."""
+    where = f"{source}:{line}" if line else source
+    error = BTError(f"{where}: {detail}")
+    error.line, error.detail = line, detail
+    return error
 
 
 @dataclass(frozen=True)
@@ -50,234 +80,329 @@ class BTProblem:
         return f"{where}: {self.message}"
 
 
-@dataclass(frozen=True)
-class TreeElement:
-    """One node of a parsed tree, before it is instantiated by the runtime."""
-
-    id: str  # node type (manifest name, or SubTree)
-    name: str  # instance name (the `name` attribute, else the id)
-    ports: Mapping[str, str]
-    children: tuple[TreeElement, ...]
-    line: int | None
-    subtree_id: str | None = None  # for SubTree: the called BehaviorTree ID
-    autoremap: bool = False  # for SubTree
-
-    def walk(self):
-        yield self
-        for child in self.children:
-            yield from child.walk()
-
-
-@dataclass(frozen=True)
-class TreeDocument:
-    source: str
-    main_tree_id: str
-    trees: Mapping[str, TreeElement]  # BehaviorTree ID -> its single root element
-    tree_lines: Mapping[str, int | None] = field(default_factory=dict)
-
-    @property
-    def main(self) -> TreeElement:
-        return self.trees[self.main_tree_id]
-
-
-def blackboard_pointer(value: str) -> str | None:
-    """The key of a "{key}" port value, else None."""
-    m = _BLACKBOARD_POINTER.match(value.strip())
-    return m.group(1) if m else None
-
-
-def convert_literal(port: PortSpec, text: str):
-    """Convert a port literal to its Python value; ValueError says what is expected."""
-    t = port.type
-    s = text.strip()
-    if t in ("int", "agent"):
-        try:
-            value = int(s)
-        except ValueError:
-            raise ValueError(f"expected an integer, got {text!r}") from None
-    elif t == "float":
-        try:
-            value = float(s)
-        except ValueError:
-            raise ValueError(f"expected a number, got {text!r}") from None
-        if value != value or value in (float("inf"), float("-inf")):
-            raise ValueError(f"expected a finite number, got {text!r}")
-    elif t == "bool":
-        low = s.lower()
-        if low in ("true", "1"):
-            value = True
-        elif low in ("false", "0"):
-            value = False
-        else:
-            raise ValueError(f"expected true or false, got {text!r}")
-    elif t == "agents":
-        value = parse_agent_list(s)
-    elif t == "point_list":
-        value = parse_point_list(s)
-    else:  # string, target
-        value = text
-        if len(value) > 1000:
-            raise ValueError("text longer than 1000 characters")
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        if port.min is not None and value < port.min:
-            raise ValueError(f"{value} is below the minimum {port.min}")
-        if port.max is not None and value > port.max:
-            raise ValueError(f"{value} is above the maximum {port.max}")
-    if port.choices is not None and value not in port.choices:
-        raise ValueError(f"{value!r} is not one of {', '.join(port.choices)}")
-    return value
-
-
-def parse_agent_list(text: str) -> tuple[int, ...]:
-    if not text.strip():
-        return ()
-    try:
-        return tuple(int(part) for part in text.replace(";", ",").split(",") if part.strip())
-    except ValueError:
-        raise ValueError(f"expected comma-separated agent ids like '2,3', got {text!r}") from None
-
-
-def parse_point_list(text: str) -> tuple[tuple[float, float], ...]:
-    if not text.strip():
-        return ()
-    points = []
-    for part in text.split(";"):
-        if not part.strip():
-            continue
-        xy = part.split(",")
-        try:
-            if len(xy) != 2:
-                raise ValueError
-            x, y = float(xy[0]), float(xy[1])
-        except ValueError:
-            raise ValueError(f"expected points like 'x1,y1;x2,y2', got {part.strip()!r}") from None
-        if not (abs(x) < 1e6 and abs(y) < 1e6):
-            raise ValueError(f"point {part.strip()!r} is not finite")
-        points.append((x, y))
-    return tuple(points)
-
-
-def format_point_list(points) -> str:
-    return ";".join(f"{float(x):.3f},{float(y):.3f}" for x, y in points)
-
-
-# ---- parsing ----------------------------------------------------------------------------------
+# ---- reading ----------------------------------------------------------------------------------
 
 def _hardened_parser() -> etree.XMLParser:
     return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False,
                            huge_tree=False, remove_comments=True, remove_pis=True, collect_ids=False)
 
 
-def _parse_root(data: bytes, source: str) -> etree._Element:
+def _as_bytes(text: str | bytes, source: str) -> bytes:
+    if isinstance(text, bytes):
+        return text
+    if text.lstrip().startswith("<?xml"):
+        # lxml refuses str input with an encoding declaration
+        text = text.split("?>", 1)[1] if "?>" in text else text
+    try:
+        return text.encode("utf-8")
+    except UnicodeEncodeError as exc:  # a lone surrogate, e.g. from a JSON "\ud800" escape
+        raise _fatal(source, None, f"not valid Unicode text ({exc.reason} at character {exc.start})") from None
+
+
+def _parse_lxml(data: bytes, source: str) -> etree._Element:
     if len(data) > MAX_BYTES:
-        raise BTError(f"{source}: file is {len(data)} bytes; behavior trees are limited to {MAX_BYTES} bytes")
+        raise _fatal(source, None, f"file is {len(data)} bytes; behavior trees are limited to {MAX_BYTES} bytes")
+    if not data.strip():
+        raise _fatal(source, None, 'empty file; a behavior tree is <root BTCPP_format="4"><BehaviorTree ID=...>')
     lowered = data.lower()
     # DTDs are how entity bombs and external entities get in; BT.CPP never needs one.
     found = [i for i in (lowered.find(b"<!doctype"), lowered.find(b"<!entity")) if i >= 0]
     if found:
         line = data[: min(found)].count(b"\n") + 1
-        raise BTError(f"{source}:{line}: DOCTYPE/ENTITY declarations are not allowed in behavior trees "
-                      "(no DTDs, no entities)")
+        raise _fatal(source, line, "DOCTYPE/ENTITY declarations are not allowed in behavior trees "
+                                   "(no DTDs, no entities)")
     try:
         root = etree.fromstring(data, _hardened_parser())
     except etree.XMLSyntaxError as exc:
         line = exc.lineno if exc.lineno else None
-        msg = exc.msg if hasattr(exc, "msg") and exc.msg else str(exc)
-        raise BTError(f"{source}:{line}: not well-formed XML: {msg}" if line else f"{source}: not well-formed XML: {msg}") from None
+        msg = (exc.msg if getattr(exc, "msg", None) else str(exc)).splitlines()[0]
+        raise _fatal(source, line, f"not well-formed XML: {msg}") from None
     docinfo = root.getroottree().docinfo
     if docinfo.internalDTD is not None or docinfo.externalDTD is not None or docinfo.doctype:
-        raise BTError(f"{source}: DOCTYPE declarations are not allowed in behavior trees")
-    for node in root.iter():
-        if isinstance(node, etree._Entity):
-            raise BTError(f"{source}:{node.sourceline}: entity references are not allowed in behavior trees")
+        raise _fatal(source, None, "DOCTYPE declarations are not allowed in behavior trees")
     return root
 
 
-def _element_depth_ok(root: etree._Element, source: str) -> None:
-    stack = [(root, 1)]
+def _to_elements(root: etree._Element, source: str) -> TreeElement:
+    """lxml tree -> TreeElement tree, iteratively, refusing entities, depth and size beyond the limits."""
+    top = TreeElement(str(root.tag), dict(root.attrib), [], root.sourceline, (root.text or "").strip())
+    stack = [(root, top, 1)]
     count = 0
     while stack:
-        el, depth = stack.pop()
+        el, converted, depth = stack.pop()
         count += 1
         if depth > MAX_DEPTH:
-            raise BTError(f"{source}:{el.sourceline}: tree nesting is deeper than {MAX_DEPTH} levels")
+            raise _fatal(source, el.sourceline, f"tree nesting is deeper than {MAX_DEPTH} levels")
         if count > MAX_NODES:
-            raise BTError(f"{source}: more than {MAX_NODES} XML elements")
-        stack.extend((child, depth + 1) for child in el if isinstance(child.tag, str))
+            raise _fatal(source, None, f"more than {MAX_NODES} XML elements")
+        for child in el:
+            if isinstance(child, etree._Entity):
+                raise _fatal(source, child.sourceline, "entity references are not allowed in behavior trees")
+            if not isinstance(child.tag, str):
+                continue
+            kid = TreeElement(child.tag, dict(child.attrib), [], child.sourceline, (child.text or "").strip())
+            converted.children.append(kid)
+            stack.append((child, kid, depth + 1))
+    return top
 
+
+def _read_elements(text: str | bytes, source: str) -> TreeElement:
+    return _to_elements(_parse_lxml(_as_bytes(text, source), source), source)
+
+
+_FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+               (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"))
+
+
+def read_file_bytes(path: str | os.PathLike[str], limit: int = MAX_BYTES) -> bytes:
+    """The bytes of a tree file, read with a limit; only regular files (no devices, FIFOs, directories).
+
+    A symlink is followed, so a link to /dev/zero is refused as what it points at. The file is opened
+    non-blocking, so a FIFO without a writer is refused instead of waited on.
+    """
+    path = Path(path)
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
+    except OSError as exc:
+        raise _fatal(str(path), None, f"cannot read: {exc.strerror or exc}") from None
+    with os.fdopen(fd, "rb") as handle:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
+            raise _fatal(str(path), None, f"is {kind}; behavior trees are read from regular files only")
+        if info.st_size > limit:
+            raise _fatal(str(path), None, f"file is {info.st_size} bytes; behavior trees are limited to {limit} bytes")
+        try:
+            data = handle.read(limit + 1)  # the file can grow after fstat
+        except OSError as exc:
+            raise _fatal(str(path), None, f"cannot read: {exc.strerror or exc}") from None
+    if len(data) > limit:
+        raise _fatal(str(path), None, f"file is over {limit} bytes; behavior trees are limited to {limit} bytes")
+    return data
+
+
+def _document(root: TreeElement, source: str) -> TreeDocument:
+    """The TreeDocument of a structurally sound element tree (the checks of `_check_structure` passed)."""
+    trees = {el.attributes["ID"]: el for el in root.children if el.tag == BEHAVIOR_TREE}
+    models = [el for el in root.children if el.tag == TREE_NODES_MODEL]
+    main = root.attributes.get("main_tree_to_execute") or next(iter(trees))
+    return TreeDocument(main, trees, source, models)
+
+
+def read_tree(text: str | bytes, source: str = "<string>") -> TreeDocument:
+    """Hardened read of a tree for stages that edit it: structure checked, nodes not (see parse_tree_text).
+
+    BTError on XML that is not well-formed, hostile, over a limit, or not <root> with BehaviorTrees.
+    """
+    root = _read_elements(text, source)
+    out = _Collector(source)
+    _check_structure(root, out)
+    if out.problems:
+        raise out.error()
+    return _document(root, source)
+
+
+def read_tree_file(path: str | os.PathLike[str]) -> TreeDocument:
+    return read_tree(read_file_bytes(path), str(path))
+
+
+# ---- writing ----------------------------------------------------------------------------------
+
+# Characters XML 1.0 cannot carry at all, not even as character references.
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+_ATTRIBUTE_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "\n": "&#10;",
+                                    "\r": "&#13;", "\t": "&#9;"})
+_TEXT_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;"})
+
+
+def _check_writable(element: TreeElement, source: str) -> None:
+    for name, value in [("<tag>", element.tag), ("<text>", element.text), *element.attributes.items()]:
+        bad = _NOT_XML.search(str(name) + str(value))
+        if bad:
+            raise BTError(f"{source}: <{element.tag}> {name}: character U+{ord(bad.group()):04X} cannot be written "
+                          "in XML")
+
+
+def _write_element(element: TreeElement, depth: int, lines: list[str], source: str) -> None:
+    # an explicit stack, not recursion: documents are bounded by MAX_DEPTH but code-built ones are not
+    stack: list[tuple[TreeElement, int, bool]] = [(element, depth, False)]
+    while stack:
+        el, level, closing = stack.pop()
+        pad = "  " * level
+        if not closing:
+            _check_writable(el, source)
+        if closing:
+            lines.append(f"{pad}</{el.tag}>")
+            continue
+        attributes = "".join(f' {k}="{str(v).translate(_ATTRIBUTE_ESCAPES)}"' for k, v in el.attributes.items())
+        text = el.text.translate(_TEXT_ESCAPES)
+        if not el.children:
+            lines.append(f"{pad}<{el.tag}{attributes}>{text}</{el.tag}>" if text else f"{pad}<{el.tag}{attributes}/>")
+            continue
+        lines.append(f"{pad}<{el.tag}{attributes}>{text}")
+        stack.append((el, level, True))
+        stack.extend((child, level + 1, False) for child in reversed(el.children))
+
+
+def write_tree(document: TreeDocument) -> str:
+    """The document as BT.CPP v4 XML text (UTF-8 declaration, two-space indentation, trailing newline).
+
+    BTError when a value holds a character XML cannot carry (control characters, lone surrogates)."""
+    if _NOT_XML.search(document.main_tree_id):
+        raise BTError(f"{document.source}: main tree ID {document.main_tree_id!r} cannot be written in XML")
+    lines = ['<?xml version="1.0" encoding="UTF-8"?>',
+             f'<root BTCPP_format="{_FORMAT}" main_tree_to_execute="'
+             f'{document.main_tree_id.translate(_ATTRIBUTE_ESCAPES)}">']
+    for tree in document.trees.values():
+        _write_element(tree, 1, lines, document.source)
+    for model in document.models:
+        _write_element(model, 1, lines, document.source)
+    lines.append("</root>")
+    return "\n".join(lines) + "\n"
+
+
+# ---- validation -------------------------------------------------------------------------------
 
 class _Collector:
     def __init__(self, source: str):
         self.source = source
         self.problems: list[BTProblem] = []
+        self.dropped = 0
+        self.suggestions_left = MAX_SUGGESTIONS
 
     def add(self, line, message):
-        self.problems.append(BTProblem(self.source, line, message))
+        if len(self.problems) < MAX_PROBLEMS:
+            self.problems.append(BTProblem(self.source, line, message))
+        else:
+            self.dropped += 1
+
+    def finish(self) -> list[BTProblem]:
+        if self.dropped:
+            return self.problems + [BTProblem(self.source, None, f"... and {self.dropped} more problem(s)")]
+        return self.problems
+
+    def error(self) -> BTError:
+        problems = self.finish()
+        if len(problems) == 1:
+            return BTError(str(problems[0]))
+        listed = "\n".join(f"  line {p.line}: {p.message}" if p.line else f"  {p.message}" for p in problems)
+        return BTError(f"{self.source}: {len(problems)} problem(s) in behavior tree:\n{listed}")
+
+    def suggest(self, name: str, known: Iterable[str]) -> str:
+        """' (did you mean X?)' for a misspelt name, within the suggestion budget."""
+        if self.suggestions_left <= 0:
+            return ""
+        self.suggestions_left -= 1
+        # difflib's ratio is at most 2*min(len)/(len a + len b): names whose lengths rule out the cutoff
+        # are skipped; of the rest, only the closest by the cheap character-count bound (quick_ratio)
+        # get the full comparison. Sorted first, so the suggestions do not depend on set order.
+        candidates = sorted(k for k in known if 2 * min(len(k), len(name)) >= 0.6 * (len(k) + len(name)))
+        if len(candidates) > MAX_SUGGESTION_CANDIDATES:
+            matcher = difflib.SequenceMatcher(b=name)
+
+            def bound(candidate: str) -> float:
+                matcher.set_seq1(candidate)
+                return matcher.quick_ratio()
+
+            candidates = heapq.nlargest(MAX_SUGGESTION_CANDIDATES, candidates, key=bound)
+        close = difflib.get_close_matches(name, candidates, n=3, cutoff=0.6)
+        return f" (did you mean {', '.join(close)}?)" if close else ""
 
 
 def _a(word: str) -> str:
     return f"an {word}" if word[0] in "aeiou" else f"a {word}"
 
 
-def _suggest(name: str, known) -> str:
-    close = difflib.get_close_matches(name, list(known), n=3, cutoff=0.6)
-    return f" (did you mean {', '.join(close)}?)" if close else ""
+def _check_structure(root: TreeElement, out: _Collector) -> set[str]:
+    """<root>, its BehaviorTrees (IDs, one root node each) and main tree; returns the tree IDs."""
+    if root.tag != "root":
+        out.add(root.line, f"the top element must be <root>, found <{root.tag}>")
+        return set()
+    fmt = root.attributes.get("BTCPP_format")
+    if fmt is not None and fmt.strip() != _FORMAT:
+        out.add(root.line, f"BTCPP_format must be \"4\" (BehaviorTree.CPP v4), found {fmt!r}")
+    trees: list[TreeElement] = []
+    for child in root.children:
+        if child.tag == BEHAVIOR_TREE:
+            trees.append(child)
+        elif child.tag == TREE_NODES_MODEL:
+            continue
+        elif child.tag == "include":
+            out.add(child.line, "<include> is not supported: put every BehaviorTree in the same file")
+        else:
+            out.add(child.line, f"unexpected <{child.tag}> under <root>; expected <BehaviorTree>")
+    if not trees:
+        out.add(root.line, "no <BehaviorTree> in the file")
+        return set()
+    tree_ids: set[str] = set()
+    for el in trees:
+        tid = el.attributes.get("ID")
+        if not tid:
+            out.add(el.line, "<BehaviorTree> needs an ID attribute")
+        elif tid in tree_ids:
+            out.add(el.line, f"BehaviorTree ID {tid!r} is defined twice")
+        else:
+            tree_ids.add(tid)
+        if len(el.children) != 1:
+            out.add(el.line, f"BehaviorTree {tid!r} must have exactly one root node, has {len(el.children)}")
+    main = root.attributes.get("main_tree_to_execute")
+    if main is None:
+        if len(tree_ids) > 1:
+            out.add(root.line, "several BehaviorTrees but no main_tree_to_execute attribute on <root>")
+    elif main not in tree_ids:
+        out.add(root.line, f"main_tree_to_execute={main!r} names no BehaviorTree{out.suggest(main, tree_ids)}")
+    return tree_ids
 
 
-def _convert_element(el: etree._Element, nodes: Mapping[str, NodeSpec], tree_ids: set[str],
-                     out: _Collector) -> TreeElement | None:
+def _check_node(el: TreeElement, nodes: Mapping[str, NodeSpec], tree_ids: set[str], out: _Collector) -> None:
+    """Problems of one node (not its children); unknown nodes are reported, their children still checked."""
     tag = el.tag
-    attrs = dict(el.attrib)
-    line = el.sourceline
-    if tag in _EXPLICIT_TAGS or tag == SUBTREE:
+    line = el.line
+    attrs = dict(el.attributes)
+    if tag in EXPLICIT_TAGS or tag == SUBTREE:
         node_id = attrs.pop("ID", None)
         if not node_id:
             out.add(line, f"<{tag}> needs an ID attribute naming the node")
-            return None
+            return
     else:
         node_id = tag
         attrs.pop("ID", None)
-    name = attrs.pop("name", None) or node_id
-    for meta in ("_description", "_uid", "_fullpath"):
+    for meta in ("name", "_description", "_uid", "_fullpath"):
         attrs.pop(meta, None)
     for attr in list(attrs):
         if attr in _SCRIPTING_ATTRIBUTES:
             out.add(line, f"{node_id}: scripting attribute {attr} is not supported")
             attrs.pop(attr)
-    element_children = [c for c in el if isinstance(c.tag, str)]
+    n = len(el.children)
 
     if tag == SUBTREE:
         autoremap_text = attrs.pop("_autoremap", "false").strip().lower()
         if autoremap_text not in ("true", "false", "1", "0"):
             out.add(line, f"SubTree {node_id}: _autoremap must be true or false, got {autoremap_text!r}")
         if node_id not in tree_ids:
-            out.add(line, f"SubTree refers to unknown BehaviorTree ID {node_id!r}{_suggest(node_id, tree_ids)}")
-        if element_children:
+            out.add(line, f"SubTree refers to unknown BehaviorTree ID {node_id!r}{out.suggest(node_id, tree_ids)}")
+        if n:
             out.add(line, f"SubTree {node_id} must not have children")
         for attr in attrs:
             if attr.startswith("_"):
                 out.add(line, f"SubTree {node_id}: unknown attribute {attr}")
-        ports = {k: v for k, v in attrs.items() if not k.startswith("_")}
-        return TreeElement(SUBTREE, name, ports, (), line, subtree_id=node_id,
-                           autoremap=autoremap_text in ("true", "1"))
+        return
 
     spec = nodes.get(node_id)
     if spec is None:
-        out.add(line, f"unknown node {node_id!r}{_suggest(node_id, nodes)}")
-        for ch in element_children:  # still report the problems below an unknown node
-            _convert_element(ch, nodes, tree_ids, out)
-        return None
-    if tag in _EXPLICIT_TAGS and _EXPLICIT_TAGS[tag] != spec.category:
-        out.add(line, f"{node_id} is {_a(spec.category)}, not {_a(_EXPLICIT_TAGS[tag])}")
-
-    ports: dict[str, str] = {}
+        out.add(line, f"unknown node {node_id!r}{out.suggest(node_id, nodes)}")
+        return
+    if tag in EXPLICIT_TAGS and EXPLICIT_TAGS[tag] != spec.category:
+        out.add(line, f"{node_id} is {_a(spec.category)}, not {_a(EXPLICIT_TAGS[tag])}")
+    present: set[str] = set()
     for attr, value in attrs.items():
         port = spec.port(attr)
         if port is None:
             known = ", ".join(spec.port_names) or "none"
-            out.add(line, f"{node_id}: unknown port {attr!r}{_suggest(attr, spec.port_names)}; its ports are: {known}")
+            out.add(line, f"{node_id}: unknown port {attr!r}{out.suggest(attr, spec.port_names)}; "
+                          f"its ports are: {known}")
             continue
-        ports[attr] = value
+        present.add(attr)
         key = blackboard_pointer(value)
         if port.direction == "out":
             if key is None:
@@ -294,149 +419,119 @@ def _convert_element(el: etree._Element, nodes: Mapping[str, NodeSpec], tree_ids
         except ValueError as exc:
             out.add(line, f"{node_id}: port {attr!r} ({port.type}): {exc}")
     for port in spec.ports:
-        if port.required and port.name not in ports:
+        if port.required and port.name not in present:
             out.add(line, f"{node_id}: missing required port {port.name!r} ({port.type}: {port.description})")
-
-    n = len(element_children)
     if spec.category == "control" and n == 0:
         out.add(line, f"{node_id} needs at least one child")
     elif spec.category == "decorator" and n != 1:
         out.add(line, f"{node_id} is a decorator and needs exactly one child, has {n}")
     elif spec.category in ("action", "condition") and n:
         out.add(line, f"{node_id} is {_a(spec.category)} and cannot have children")
-    children = tuple(c for c in (_convert_element(ch, nodes, tree_ids, out) for ch in element_children) if c)
-    return TreeElement(node_id, name, ports, children, line)
 
 
-def _check_subtree_cycles(trees: Mapping[str, TreeElement], main: str, out: _Collector) -> None:
-    calls = {tid: [(e.subtree_id, e.line) for e in root.walk() if e.id == SUBTREE] for tid, root in trees.items()}
-    state: dict[str, int] = {}
-
-    def visit(tid: str, chain: list[str]) -> None:
-        state[tid] = 1
-        for callee, line in calls.get(tid, ()):
-            if callee not in trees:
+def _check_subtree_calls(document: TreeDocument, out: _Collector) -> None:
+    """Recursion, and nesting/size after expanding SubTree calls, from the main tree; iterative."""
+    calls: dict[str, list[tuple[str, int | None, int]]] = {}  # tree -> (callee, line, depth of the call)
+    own: dict[str, tuple[int, int]] = {}  # tree -> (its own depth, its own node count)
+    for tid, tree in document.trees.items():
+        depth_of = {id(tree): 0}
+        deepest, count, found = 0, 0, []
+        for el in tree.walk():
+            d = depth_of[id(el)]
+            for child in el.children:
+                depth_of[id(child)] = d + 1
+            if el is tree:
                 continue
+            count += 1
+            deepest = max(deepest, d)
+            if el.tag == SUBTREE and el.subtree_id in document.trees:
+                found.append((el.subtree_id, el.line, d))
+        calls[tid], own[tid] = found, (deepest, count)
+
+    # depth-first over the call graph with an explicit stack; state 1 = on the stack, 2 = done
+    state: dict[str, int] = {}
+    depth: dict[str, int] = {}
+    size: dict[str, int] = {}
+    stack: list[tuple[str, int]] = [(document.main_tree_id, 0)]
+    chain: list[str] = []
+    while stack:
+        tid, next_call = stack.pop()
+        if next_call == 0:
+            state[tid] = 1
+            chain.append(tid)
+        callees = calls[tid]
+        if next_call < len(callees):
+            stack.append((tid, next_call + 1))
+            callee, line, _ = callees[next_call]
             if state.get(callee) == 1:
-                out.add(line, f"SubTree recursion: {' -> '.join(chain + [callee])}")
+                out.add(line, f"SubTree recursion: {' -> '.join(chain[chain.index(callee):] + [callee])}")
             elif callee not in state:
-                visit(callee, chain + [callee])
+                stack.append((callee, 0))
+            continue
+        # every callee is done: this tree's expanded depth and size
+        own_depth, own_count = own[tid]
+        depth[tid] = max([own_depth] + [d + depth.get(c, 0) for c, _, d in callees])
+        size[tid] = min(own_count + sum(size.get(c, 0) for c, _, _ in callees), MAX_EXPANDED_NODES + 1)
         state[tid] = 2
+        chain.pop()
+    main = document.main_tree_id
+    if depth.get(main, 0) > MAX_EXPANDED_DEPTH:
+        out.add(document.tree_line(main), f"SubTree calls nest {depth[main]} levels deep from {main!r}; "
+                                          f"the limit is {MAX_EXPANDED_DEPTH}")
+    if size.get(main, 0) > MAX_EXPANDED_NODES:
+        out.add(document.tree_line(main), f"expanding the SubTree calls of {main!r} gives more than "
+                                          f"{MAX_EXPANDED_NODES} nodes")
 
-    visit(main, [main])
 
-
-def _check_document(data: bytes, source: str, nodes: Mapping[str, NodeSpec]) -> tuple[TreeDocument | None, list[BTProblem]]:
-    root = _parse_root(data, source)
-    _element_depth_ok(root, source)
+def _validate(root: TreeElement, source: str, nodes: Mapping[str, NodeSpec]) -> tuple[TreeDocument | None, _Collector]:
     out = _Collector(source)
-    if root.tag != "root":
-        out.add(root.sourceline, f"the top element must be <root>, found <{root.tag}>")
-        return None, out.problems
-    fmt = root.get("BTCPP_format")
-    if fmt is not None and fmt.strip() != "4":
-        out.add(root.sourceline, f"BTCPP_format must be \"4\" (BehaviorTree.CPP v4), found {fmt!r}")
-    tree_elements = []
-    for child in root:
-        if not isinstance(child.tag, str):
+    tree_ids = _check_structure(root, out)
+    if not tree_ids:
+        return None, out
+    for tree in root.children:
+        if tree.tag != BEHAVIOR_TREE:
             continue
-        if child.tag == "BehaviorTree":
-            tree_elements.append(child)
-        elif child.tag == "TreeNodesModel":
-            continue
-        elif child.tag == "include":
-            out.add(child.sourceline, "<include> is not supported: put every BehaviorTree in the same file")
-        else:
-            out.add(child.sourceline, f"unexpected <{child.tag}> under <root>; expected <BehaviorTree>")
-    if not tree_elements:
-        out.add(root.sourceline, "no <BehaviorTree> in the file")
-        return None, out.problems
-    tree_ids: set[str] = set()
-    for el in tree_elements:
-        tid = el.get("ID")
-        if not tid:
-            out.add(el.sourceline, "<BehaviorTree> needs an ID attribute")
-        elif tid in tree_ids:
-            out.add(el.sourceline, f"BehaviorTree ID {tid!r} is defined twice")
-        else:
-            tree_ids.add(tid)
-    main = root.get("main_tree_to_execute")
-    if main is None:
-        if len(tree_ids) == 1:
-            main = next(iter(tree_ids))
-        else:
-            out.add(root.sourceline, "several BehaviorTrees but no main_tree_to_execute attribute on <root>")
-    elif main not in tree_ids:
-        out.add(root.sourceline, f"main_tree_to_execute={main!r} names no BehaviorTree{_suggest(main, tree_ids)}")
-    trees: dict[str, TreeElement] = {}
-    lines: dict[str, int | None] = {}
-    for el in tree_elements:
-        tid = el.get("ID")
-        kids = [c for c in el if isinstance(c.tag, str)]
-        if len(kids) != 1:
-            out.add(el.sourceline, f"BehaviorTree {tid!r} must have exactly one root node, has {len(kids)}")
-        converted = [_convert_element(k, nodes, tree_ids, out) for k in kids]
-        if tid and tid not in trees and converted and converted[0] is not None:
-            trees[tid] = converted[0]
-            lines[tid] = el.sourceline
-    if main in trees:
-        _check_subtree_cycles(trees, main, out)
-    if out.problems or main not in trees:
-        return None, out.problems
-    return TreeDocument(source, main, trees, lines), []
-
-
-def _as_bytes(text: str | bytes) -> bytes:
-    if isinstance(text, bytes):
-        return text
-    if text.startswith("<?xml"):
-        # lxml refuses str input with an encoding declaration
-        text = text.split("?>", 1)[1] if "?>" in text else text
-    return text.encode("utf-8")
+        for child in tree.children:
+            for el in child.walk():
+                _check_node(el, nodes, tree_ids, out)
+    if out.problems:
+        return None, out
+    document = _document(root, source)
+    _check_subtree_calls(document, out)
+    return (None if out.problems else document), out
 
 
 def check_tree_text(text: str | bytes, source: str = "<string>",
                     nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
     """Every problem of a tree (empty when valid). Fatal XML problems give one entry."""
     try:
-        _, problems = _check_document(_as_bytes(text), source, nodes)
+        root = _read_elements(text, source)
     except BTError as exc:
-        return [BTProblem(source, None, str(exc).removeprefix(f"{source}: "))]
-    return problems
+        return [BTProblem(source, getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
+    return _validate(root, source, nodes)[1].finish()
 
 
 def parse_tree_text(text: str | bytes, source: str = "<string>",
                     nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:
-    """Parse and validate; BTError lists every problem with its line."""
-    document, problems = _check_document(_as_bytes(text), source, nodes)
-    if problems:
-        listed = "\n".join(f"  line {p.line}: {p.message}" if p.line else f"  {p.message}" for p in problems)
-        raise BTError(f"{source}: {len(problems)} problem(s) in behavior tree:\n{listed}")
-    assert document is not None
+    """Read and validate against the manifest; BTError lists every problem with its line."""
+    document, out = _validate(_read_elements(text, source), source, nodes)
+    if document is None:
+        raise out.error()
     return document
 
 
-def load_tree_file(path: str | Path, nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:
-    path = Path(path)
-    try:
-        size = path.stat().st_size
-        if size > MAX_BYTES:
-            raise BTError(f"{path}: file is {size} bytes; behavior trees are limited to {MAX_BYTES} bytes")
-        data = path.read_bytes()
-    except FileNotFoundError:
-        raise BTError(f"{path}: no such behavior-tree file") from None
-    except IsADirectoryError:
-        raise BTError(f"{path}: is a directory, not a behavior-tree file") from None
-    return parse_tree_text(data, str(path), nodes)
+def validate_document(document: TreeDocument, nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:
+    """Validate a document built or edited in code, as if it had been written and read back."""
+    return parse_tree_text(write_tree(document), document.source, nodes)
 
 
-def check_tree_file(path: str | Path, nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
-    path = Path(path)
+def load_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:
+    return parse_tree_text(read_file_bytes(path), str(path), nodes)
+
+
+def check_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
     try:
-        size = path.stat().st_size
-        if size > MAX_BYTES:
-            return [BTProblem(str(path), None, f"file is {size} bytes; the limit is {MAX_BYTES}")]
-        data = path.read_bytes()
-    except OSError as exc:
-        return [BTProblem(str(path), None, f"cannot read: {exc.strerror or exc}")]
+        data = read_file_bytes(path)
+    except BTError as exc:
+        return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
     return check_tree_text(data, str(path), nodes)

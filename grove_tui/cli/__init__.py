@@ -6,7 +6,9 @@ Subcommands live one per module in this package and are imported only when used,
 
 from __future__ import annotations
 
+import errno
 import importlib
+import os
 import sys
 from typing import Any
 
@@ -25,7 +27,14 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "metrics": ("grove_tui.cli.export:metrics", "Robot and crowd metrics of a simulated bundle."),
     "picture": ("grove_tui.cli.export:picture", "PNG/SVG picture of a scenario and its trajectories."),
     "eval": ("grove_tui.cli.evaluate:evaluate", "Run an evaluation suite against the baselines."),
+    "understanding": ("grove_tui.cli.understanding:understanding",
+                      "Score prompt understanding: each field of the reading, and scenarios for a sample."),
+    "open": ("grove_tui.cli.open:open_command", "Open a saved scenario bundle in the app (inspect screen)."),
 }
+
+
+# Writing failed for lack of room or a broken device: stdout on /dev/full, a full disk, a dead terminal.
+_OUTPUT_ERRNOS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EIO})
 
 
 class LazyGroup(click.Group):
@@ -38,7 +47,7 @@ class LazyGroup(click.Group):
 
     def main(self, args: Any = None, prog_name: str | None = None, complete_var: str | None = None,
              standalone_mode: bool = True, **extra: Any) -> Any:
-        from grove_tui.errors import EXIT_BAD_INPUT, BadInputError, Cancelled, GroveError, print_error
+        from grove_tui.errors import EXIT_BAD_INPUT, BadInputError, Cancelled, GroveError, RuntimeFailure, print_error
 
         try:
             result = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
@@ -48,6 +57,18 @@ class LazyGroup(click.Group):
             sys.exit(print_error(Cancelled("cancelled")))
         except KeyboardInterrupt:
             sys.exit(print_error(Cancelled("cancelled")))
+        except OSError as error:
+            if error.errno not in _OUTPUT_ERRNOS:
+                raise
+            # stdout on /dev/full or a full disk: one line, then stdout goes to /dev/null so the
+            # interpreter's final flush of the same unwritable stream prints no traceback after it.
+            code = print_error(RuntimeFailure(f"cannot write the output: {error.strerror}",
+                                              hint="free some space or write somewhere else"))
+            try:
+                os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            except (OSError, ValueError):
+                pass
+            sys.exit(code)
         except click.ClickException as error:
             # Usage errors (missing option, bad value) are bad input: one line, like every other error.
             command = getattr(getattr(error, "ctx", None), "command_path", None) or "grove"
@@ -91,6 +112,11 @@ def main(ctx: click.Context, model: str | None, roi_model: str | None, bt_model:
     ctx.ensure_object(dict)
     ctx.obj.update(model=model, roi_model=roi_model, bt_model=bt_model)
     if ctx.invoked_subcommand is None:
-        from grove_tui.tui.app import run_app
+        sys.exit(open_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
 
-        sys.exit(run_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
+
+def open_app(**options: Any) -> int:
+    """Run the terminal app (the one way from the command line into the TUI); returns its exit code."""
+    from grove_tui.tui.app import run_app
+
+    return run_app(**options)

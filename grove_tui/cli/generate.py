@@ -108,7 +108,7 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
 
 @click.command("generate")
 @click.option("--no-ui", is_flag=True, help="Generate headless (the only mode of this command; the TUI is `grove`).")
-@click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential) or a path.")
+@click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential, airport) or a path.")
 @click.option("--preset", "preset_name", required=True, help="emergency, queuing, normal, vanilla or a user preset.")
 @click.option("--prompt", required=True, help="The scenario in one sentence.")
 @click.option("--seed", type=click.IntRange(0, 2**32 - 1), default=0, show_default=True,
@@ -231,7 +231,9 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 
 @click.command("simulate")
 @click.argument("bundle", type=click.Path(file_okay=False))
-@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True), default=30.0, show_default=True)
+@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True, max=24 * 3600.0), default=30.0,
+              show_default=True, callback=lambda ctx, param, value: _finite(value, param),
+              help="Simulated seconds to run (at most a day).")
 @click.pass_context
 def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
     """Simulate a bundle and write trajectories.csv into it."""

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -30,12 +31,14 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
-from lxml import etree
 
-from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
-from grove_tui.bt.xml import check_tree_text, parse_point_list
-from grove_tui.errors import ExportError
+from grove_tui.bt.ports import parse_point_list
+from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
+from grove_tui.errors import BTError, ExportError
+from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.scenario.bundle import load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 if TYPE_CHECKING:
@@ -103,39 +106,31 @@ class _AgentContext:
     seed: int
 
 
-def _safe_parser() -> etree.XMLParser:
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False,
-                           remove_blank_text=True)
-
-
-def _attr_float(el: etree._Element, name: str, where: str) -> float:
+def _attr_float(el: TreeElement, name: str, where: str) -> float:
     value = el.get(name)
     if value is None:
-        raise ExportError(f"{where}: <{el.tag}> on line {el.sourceline} has no `{name}` port; "
+        raise ExportError(f"{where}: <{el.id}> on line {el.line} has no `{name}` port; "
                           "export needs post-processed trees (generate the bundle with grove)")
     try:
         return float(value)
     except ValueError:
-        raise ExportError(f"{where}: <{el.tag}> on line {el.sourceline}: `{name}`={value!r} is not a number") from None
+        raise ExportError(f"{where}: <{el.id}> on line {el.line}: `{name}`={value!r} is not a number") from None
 
 
-def _hunav_goto(goal_id: int, tolerance: float) -> etree._Element:
-    return etree.Element("GoTo", {"agent_id": "{id}", "time_step": "{dt}", "goal_id": str(goal_id),
-                                  "tolerance": f"{tolerance:g}"})
+def _hunav_goto(goal_id: int, tolerance: float) -> TreeElement:
+    return TreeElement("GoTo", {"agent_id": "{id}", "time_step": "{dt}", "goal_id": str(goal_id),
+                                "tolerance": f"{tolerance:g}"})
 
 
-def _wait(seconds: float) -> etree._Element:
-    return etree.Element("StopAndWaitTimerAction", {"agent_id": "{id}", "wait_duration": f"{seconds:g}"})
+def _wait(seconds: float) -> TreeElement:
+    return TreeElement("StopAndWaitTimerAction", {"agent_id": "{id}", "wait_duration": f"{seconds:g}"})
 
 
-def _sequence(children: Sequence[etree._Element], name: str) -> etree._Element:
-    seq = etree.Element("Sequence", {"name": name})
-    for child in children:
-        seq.append(child)
-    return seq
+def _sequence(children: Sequence[TreeElement], name: str) -> TreeElement:
+    return TreeElement("Sequence", {"name": name}, list(children))
 
 
-def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[etree._Element]:
+def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[TreeElement]:
     return [_hunav_goto(ctx.goals.id_of(p), tolerance) for p in points]
 
 
@@ -167,14 +162,14 @@ def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
     return best_angle
 
 
-def _lower_queue(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+def _lower_queue(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
     service = (_attr_float(el, "x", where), _attr_float(el, "y", where))
     spacing = float(el.get("spacing", "0.6"))
     service_time = float(el.get("service_time", "10"))
     name = el.get("service_point", "service point")
     rank = ctx.queue_rank.get((ctx.agent.id, name), 0)
     slots = _queue_slots(service, spacing, rank + 1, ctx)
-    steps: list[etree._Element] = []
+    steps: list[TreeElement] = []
     # Walk to the slot behind everyone who queued first, then advance one slot per service time.
     steps += _route([slots[rank]], ctx, tolerance=0.2)
     for k in range(rank, 0, -1):
@@ -184,10 +179,9 @@ def _lower_queue(el: etree._Element, ctx: _AgentContext, where: str) -> etree._E
     return _sequence(steps, f"Queue_{name}")
 
 
-def _streamline(field_path: Path, start: Point, exit_point: Point, ctx: _AgentContext) -> list[Point]:
-    from grove_tui.navigation.velocity_field import VelocityField, sample_field
+def _streamline(vf, start: Point, exit_point: Point, ctx: _AgentContext) -> list[Point]:
+    from grove_tui.navigation.velocity_field import sample_field
 
-    vf = VelocityField.load(field_path)
     ox, oy = float(vf.origin[0]), float(vf.origin[1])
     pos = np.array(start, dtype=float)
     points = [tuple(pos)]
@@ -229,25 +223,25 @@ def _simplify_free(points: list[Point], ctx: _AgentContext) -> list[Point]:
     return out
 
 
-def _lower_field(el: etree._Element, ctx: _AgentContext, where: str) -> etree._Element:
+def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
     exit_point = (_attr_float(el, "x", where), _attr_float(el, "y", where))
     field_id = el.get("field")
     rel = ctx.scenario.fields.get(field_id or "")
     if rel is None:
-        raise ExportError(f"{where}: FollowVelocityField on line {el.sourceline} names field {field_id!r}, "
+        raise ExportError(f"{where}: FollowVelocityField on line {el.line} names field {field_id!r}, "
                           f"which the scenario does not list (fields: {sorted(ctx.scenario.fields)})")
-    points = _streamline(ctx.bundle / rel, ctx.agent.start, exit_point, ctx)
+    points = _streamline(load_field(ctx.bundle, field_id or "", rel), ctx.agent.start, exit_point, ctx)
     return _sequence(_route(points, ctx), f"FollowVelocityField_{el.get('exit', 'exit')}")
 
 
-def _lower_wander(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element:
+def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement:
     zone_name = el.get("zone", "")
     duration = float(el.get("duration", "30"))
     if world is None:
-        raise ExportError(f"{where}: Wander on line {el.sourceline} needs the world to sample points")
+        raise ExportError(f"{where}: Wander on line {el.line} needs the world to sample points")
     zone = world.zone(zone_name) if zone_name in {z.name for z in world.zones} else world.zone_at(*ctx.agent.start)
     if zone is None:
-        raise ExportError(f"{where}: Wander on line {el.sourceline}: unknown zone {zone_name!r}")
+        raise ExportError(f"{where}: Wander on line {el.line}: unknown zone {zone_name!r}")
     rng = np.random.default_rng([ctx.seed, ctx.agent.id])
     minx, miny, maxx, maxy = zone.polygon.bounds
     legs = max(1, int(math.ceil(duration / WANDER_LEG_SECONDS)))
@@ -279,9 +273,9 @@ def _planned(a: Point, b: Point, ctx: _AgentContext) -> list[Point]:
     return [(float(q[0]), float(q[1])) for q in path[1:]]
 
 
-def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) -> etree._Element | None:
+def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement | None:
     """Replacement for a GROVE-only element, or None to keep it."""
-    tag = el.tag
+    tag = el.id
     if tag == "GoTo" and el.get("x") is not None:  # GROVE's GoTo; HuNavSim's own names only a goal_id
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
         waypoints = list(parse_point_list(el.get("waypoints", "")))
@@ -297,7 +291,7 @@ def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) ->
         return _lower_wander(el, ctx, where, world)
     if tag == "JoinGroup":
         group = el.get("group_id") or str(ctx.agent.group)
-        return etree.Element("SetGroupId", {"agent_id": "{id}", "group_id": group})
+        return TreeElement("SetGroupId", {"agent_id": "{id}", "group_id": group})
     if tag == "Converse":
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
         waypoints = list(parse_point_list(el.get("waypoints", "")))
@@ -305,7 +299,7 @@ def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) ->
         duration = float(el.get("duration", "20"))
         steps = _route(waypoints + [target], ctx)
         if members and members[0] == ctx.agent.id:
-            steps.append(etree.Element("ConversationFormation", {
+            steps.append(TreeElement("ConversationFormation", {
                 "main_agent_id": "{id}", "goal_id": str(ctx.goals.id_of(target)),
                 "conversation_duration": f"{duration:g}", "time_step": "{dt}",
                 "non_main_agent_ids": ",".join(str(m) for m in members[1:]),
@@ -316,27 +310,27 @@ def _lower_element(el: etree._Element, ctx: _AgentContext, where: str, world) ->
     return None
 
 
-def lower_tree(xml: str, ctx: _AgentContext, where: str, world=None) -> str:
-    """Rewrite one agent's tree so it uses only HuNavSim-registered and BT.CPP built-in nodes."""
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
-    for tree in root.iter("BehaviorTree"):
-        # Depth-first over a snapshot, so replacements do not disturb iteration.
-        for el in list(tree.iter()):
-            if not isinstance(el.tag, str) or el.tag not in GROVE_ONLY:
+def lower_tree(document: TreeDocument, ctx: _AgentContext, where: str, world=None) -> TreeDocument:
+    """Rewrite one agent's tree, in place, so it uses only HuNavSim-registered and BT.CPP built-in nodes."""
+    for tree in document.trees.values():
+        # Depth-first over a snapshot, so goal ids are allocated in tick order and replacements
+        # do not disturb the walk.
+        for parent, index, el in list(tree.walk_with_parents()):
+            if parent is None or el.id not in GROVE_ONLY:
                 continue
             replacement = _lower_element(el, ctx, where, world)
             if replacement is not None:
-                replacement.tail = el.tail
-                el.getparent().replace(el, replacement)
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+                parent.children[index] = replacement
+    return document
 
 
-def _queue_ranks(scenario: Scenario, trees: dict[int, str]) -> dict[tuple[int, str], int]:
+def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument]) -> dict[tuple[int, str], int]:
     """Sequential allocation: each queue's members in agent-id order."""
     members: dict[str, list[int]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
-        root = etree.fromstring(trees[agent.id].encode("utf-8"), _safe_parser())
-        for el in root.iter("Queue"):
+        for el in trees[agent.id].nodes():
+            if el.id != "Queue":
+                continue
             name = el.get("service_point", "service point")
             if agent.id not in members.setdefault(name, []):
                 members[name].append(agent.id)
@@ -366,30 +360,27 @@ def _behavior_block(agent: AgentSpec) -> dict[str, object]:
     }
 
 
-def _renumber_goal_ids(xml: str, goals: GoalTable) -> str:
-    """Point every node's `goal_id` at this export's global_goals entry for its (x, y)."""
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
-    for el in root.iter():
-        if isinstance(el.tag, str) and el.get("goal_id") is not None and el.get("x") and el.get("y"):
+def _renumber_goal_ids(document: TreeDocument, goals: GoalTable) -> TreeDocument:
+    """Point every node's `goal_id` at this export's global_goals entry for its (x, y), in place."""
+    for el in document.nodes():
+        if el.get("goal_id") is not None and el.get("x") and el.get("y"):
             el.set("goal_id", str(goals.id_of((float(el.get("x")), float(el.get("y"))))))
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+    return document
 
 
-def _rename_main_tree(xml: str, new_id: str) -> str:
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
-    old = root.get("main_tree_to_execute")
-    if old is None:
-        trees = root.findall("BehaviorTree")
-        old = trees[0].get("ID") if trees else None
-    for tree in root.iter("BehaviorTree"):
-        if tree.get("ID") == old:
+def _rename_main_tree(document: TreeDocument, new_id: str) -> TreeDocument:
+    """The document with its main tree (and every SubTree call of it) renamed `new_id`."""
+    old = document.main_tree_id
+    for el in document.nodes():
+        if el.subtree_id == old:
+            el.set("ID", new_id)
+    renamed: dict[str, TreeElement] = {}
+    for tree_id, tree in document.trees.items():
+        if tree_id == old:
             tree.set("ID", new_id)
-    for sub in root.iter("SubTree"):
-        if sub.get("ID") == old:
-            sub.set("ID", new_id)
-    root.set("BTCPP_format", "4")
-    root.set("main_tree_to_execute", new_id)
-    return etree.tostring(root, pretty_print=True, encoding="unicode")
+            tree_id = new_id
+        renamed[tree_id] = tree
+    return TreeDocument(new_id, renamed, document.source, document.models)
 
 
 def is_hunav_export(path: Path) -> bool:
@@ -409,27 +400,28 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world_name = Path(scenario.world).stem
     base = base_name or f"agents_{world_name}"
 
-    trees: dict[int, str] = {}
+    trees: dict[int, TreeDocument] = {}
     for agent in scenario.agents:
-        path = bundle / agent.tree
+        # Inside the bundle, a regular file, bounded: a tree linked to /dev/zero once read 7.5 GB here.
+        text = read_bundle_text(bundle, agent.tree, f"tree file of agent {agent.id}")
         try:
-            trees[agent.id] = path.read_text(encoding="utf-8")
-        except FileNotFoundError:
-            raise ExportError(f"{path}: tree file of agent {agent.id} is missing from the bundle") from None
+            trees[agent.id] = read_tree(text, str(bundle / agent.tree))
+        except BTError as exc:
+            raise ExportError(f"tree of agent {agent.id}: {exc}") from None
 
     world = grid = planner = None
     if lower:
-        from grove_tui.navigation.grid import OccupancyGrid, build_grid
+        from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
         from grove_tui.world import load_world
 
         world = load_world(scenario.world)
         grid_path = bundle / "grid.npz"
-        grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, scenario.resolution)
+        grid = load_grid(bundle) if os.path.lexists(grid_path) else build_grid(world, scenario.resolution)
         planner = ThetaStarPlanner(grid)
 
     goals = GoalTable()
@@ -440,8 +432,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         where = str(bundle / agent.tree)
         ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed)
         goal_ids = [goals.id_of(g) for g in agent.goals]
-        xml = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
-        xml = _rename_main_tree(xml, "DefaultTree")
+        tree = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
+        xml = write_tree(_rename_main_tree(tree, "DefaultTree"))
         problems = check_tree_text(xml, source=where, nodes=HUNAV_NODES if lower else NODES)
         if problems:
             raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))

@@ -29,9 +29,9 @@ def _group_colour(group: int) -> str:
 
 
 def _load_fields(scenario: Scenario, bundle_dir: Path):
-    from grove_tui.navigation.velocity_field import VelocityField
+    from grove_tui.scenario.bundle import load_field
 
-    return {fid: VelocityField.load(bundle_dir / rel) for fid, rel in scenario.fields.items()}
+    return {fid: load_field(bundle_dir, fid, rel) for fid, rel in scenario.fields.items()}
 
 
 def draw_scenario(world: World, scenario: Scenario, bundle_dir: str | Path, out_path: str | Path, *,

@@ -11,7 +11,7 @@ import numpy as np
 from grove_tui.errors import TrajectoryExportError
 from grove_tui.analysis.metrics import Trajectories
 from grove_tui.crowd.recording import TrajectoryRecorder
-from grove_tui.scenario.model import Scenario
+from grove_tui.scenario.bundle import load_scenario
 from grove_tui.world import load_world
 
 
@@ -38,7 +38,7 @@ def export_trajectories(bundle_dir: str | Path, out_dir: str | Path) -> list[Pat
     csv = bundle / "trajectories.csv"
     if not csv.exists():
         raise TrajectoryExportError(f"{csv}: no trajectories yet; simulate first (grove simulate {bundle})")
-    scenario = Scenario.load(bundle / "scenario.yaml")
+    scenario = load_scenario(bundle)
     world = load_world(scenario.world)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)

@@ -29,7 +29,7 @@ from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
-from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
+from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.language.quantities import Quantity, extract_quantities
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
@@ -189,6 +189,7 @@ class GenerationPipeline:
 
         t0 = clock.begin("rois")
         quantities = extract_quantities(prompt)
+        check_stated_counts(prompt, quantities)
         selection = select_rois(world, preset, prompt, self.matcher)
         roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
         if self.llm_roi is not None and preset.guided:

@@ -16,16 +16,18 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from lxml import etree
 
+from grove_tui.bt.document import TreeDocument
 from grove_tui.bt.manifest import NODES
+from grove_tui.bt.ports import parse_point_list
+from grove_tui.bt.xml import write_tree
 from grove_tui.errors import Cancelled
 from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
 from grove_tui.generation.postprocess import FreeSpace, PostProcessed
 from grove_tui.generation.presets import GenerationError, Preset
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.generation.waypoints import inject_waypoints, parse_waypoints
+from grove_tui.generation.waypoints import plan_waypoints
 
 Point = tuple[float, float]
 
@@ -63,23 +65,21 @@ class CachedPlanner:
         return self.cache.plan(self.world_name, self.planner, start, goal, start_label=start_label, goal_label=goal_label)
 
 
-def _safe_parser() -> etree.XMLParser:
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
-
-
-def goals_from_tree(xml: str) -> list[Point]:
+def goals_from_tree(document: TreeDocument) -> list[Point]:
     """Every point the agent is sent to, in tick order: injected waypoints then the node's target."""
-    root = etree.fromstring(xml.encode("utf-8"), _safe_parser())
     goals: list[Point] = []
-    for element in root.iter():
-        if not isinstance(element.tag, str):
+    for element in document.nodes():
+        spec = NODES.get(element.id)
+        x, y = element.get("x"), element.get("y")
+        if spec is None or x is None or y is None:
             continue
-        spec = NODES.get(element.tag)
-        if spec is None or element.get("x") is None or element.get("y") is None:
-            continue
-        if element.get("waypoints"):
-            goals.extend(parse_waypoints(element.get("waypoints")))
-        goals.append((float(element.get("x")), float(element.get("y"))))
+        waypoints = element.get("waypoints")
+        if waypoints:
+            try:
+                goals.extend(parse_point_list(waypoints))
+            except ValueError as exc:
+                raise PlanningError(f"{element.describe()}: waypoints: {exc}") from None
+        goals.append((float(x), float(y)))
     return goals
 
 
@@ -112,18 +112,19 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
     trees: dict[str, str] = {}
     for a in post.agents:
         _check_cancel(cancel)
-        xml = a.xml
+        assert a.document is not None  # post-processing gives every agent its tree document
+        document = a.document.copy()  # planning edits its own copy: a re-plan starts from the same trees
         if preset.velocity == "waypoints" and preset.planner.enabled:
             try:
-                xml = inject_waypoints(xml, a.start, cached, start_label=f"agent {a.id} in {a.spawn_zone}")
+                plan_waypoints(document, a.start, cached, start_label=f"agent {a.id} in {a.spawn_zone}")
             except PlanningError as exc:
                 raise GenerationError(f"agent {a.id} ({a.label}) cannot reach its goal: {exc}") from None
-        goals = goals_from_tree(xml)
+        goals = goals_from_tree(document)
         if a.field_id is not None and a.field_id in group_paths:
             # Field followers head along their group's path: record it as their goals.
             goals = [(float(p[0]), float(p[1])) for p in group_paths[a.field_id][1:]]
         rel = f"trees/agent_{a.id}.xml"
-        trees[rel] = xml
+        trees[rel] = write_tree(document)
         agents.append(AgentSpec(
             id=a.id, group=a.sfm_group, start=a.start, goals=tuple((round(x, 3), round(y, 3)) for x, y in goals),
             zone=a.zone, tree=rel, radius=0.35, max_vel=a.max_vel, label=a.label))
@@ -139,6 +140,9 @@ def _check_cancel(cancel: threading.Event | None) -> None:
 
 
 def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
+    if not points:
+        # A group with no members has no centre; the prompt checks refuse "zero people" before this.
+        raise GenerationError(f"a group in {zone} has no people to lead to the exit")
     cx = sum(p[0] for p in points) / len(points)
     cy = sum(p[1] for p in points) / len(points)
     q = grid.nearest_free(cx, cy)

@@ -14,15 +14,17 @@ import re
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
-from xml.sax.saxutils import quoteattr
 
 import numpy as np
 import shapely
 
+from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, NodeSpec
+from grove_tui.bt.ports import format_port_value
+from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
-from grove_tui.language.quantities import Quantity, lemma, semantic_tokens
+from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
 
 Point = tuple[float, float]
 
@@ -50,10 +52,15 @@ class AgentPlan:
     targets: list[tuple[str, Point]]  # navigation targets in tree order (RoI name, point)
     zone: str  # zone the agent is headed for
     tree: DraftNode
-    xml: str = ""
+    document: TreeDocument | None = None  # the agent's behavior tree, auto ports filled, waypoints empty
     max_vel: float = 1.0
     field_id: str | None = None
     exit: str | None = None
+
+    @property
+    def xml(self) -> str:
+        """The agent's tree as BT.CPP v4 text."""
+        return write_tree(self.document) if self.document is not None else ""
 
 
 @dataclass
@@ -321,6 +328,26 @@ def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
     return None
 
 
+# A minus sign right before the number (not a range like "3-5"), or the words minus / negative.
+_NEGATIVE_BEFORE = re.compile(r"(?:(?:^|[\s(])[-\u2212]|\bminus\s+|\bnegative\s+)$", re.IGNORECASE)
+
+
+def check_stated_counts(prompt: str, quantities: Sequence[Quantity]) -> None:
+    """Refuse prompts whose head counts cannot be a crowd, before any model runs: no readable words
+    at all (emoji only), a negative count ("-5 people") or zero people. Said to the user, not guessed
+    around: the model would otherwise invent a crowd of its own size."""
+    if not words(prompt):
+        raise PromptError("the prompt has no words to read (only symbols or emoji): describe in English who "
+                          "is there and what they do, e.g. 'ten patients queue at the pharmacy'")
+    for q in quantities:
+        if _NEGATIVE_BEFORE.search(prompt[:q.start]):
+            raise PromptError(f"'{prompt[max(0, q.start - 1):q.end].strip()}' is a negative number of people; "
+                              f"give a whole number of at least 1")
+        if q.count == 0:
+            raise PromptError(f"'{q.phrase}' asks for nobody; give a number of people of at least 1 "
+                              f"(or leave that group out)")
+
+
 def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
     """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
     total = sum(q.count for q in quantities)
@@ -481,6 +508,8 @@ class FreeSpace:
         self._labels = _components(free)
         self._main = self._main_component()
         self._taken: dict[str, list[Point]] = {}
+        exits = [door.position for door in world.exits()] if hasattr(world, "exits") else []
+        self._exit_points = np.asarray(exits, dtype=float).reshape(-1, 2)
 
     def _main_component(self) -> int:
         counts = np.bincount(self._labels[self._labels > 0].ravel()) if np.any(self._labels > 0) else np.zeros(1)
@@ -528,6 +557,15 @@ class FreeSpace:
         pts = self.cells(zone_name)
         if len(pts) == 0:
             raise GenerationError(f"zone '{zone_name}' has no free floor to place anyone on")
+        if len(self._exit_points):
+            # Nobody starts on an exit: an evacuee there would leave at its first step, and anyone
+            # else would be pushed outside by the people behind.
+            near = np.hypot(pts[:, None, 0] - self._exit_points[None, :, 0],
+                            pts[:, None, 1] - self._exit_points[None, :, 1]).min(axis=1) < SPAWN_EXIT_CLEARANCE
+            if near.all():
+                raise GenerationError(f"zone '{zone_name}' has no free floor farther than "
+                                      f"{SPAWN_EXIT_CLEARANCE} m from an exit to place anyone on")
+            pts = pts[~near]
         taken = self._taken.setdefault(key, [])
         blockers = list(taken) + list(avoid)
         order = rng.permutation(len(pts))
@@ -564,6 +602,11 @@ class FreeSpace:
                                   f"(free floor {self.free_area(zone_name):.0f} m^2, {len(taken)} already there)")
         taken.extend(chosen)
         return chosen
+
+
+# Spawns keep this far from every exit door's centre: twice the distance at which an evacuee
+# counts as gone (bt.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
+SPAWN_EXIT_CLEARANCE = 1.2
 
 
 def _components(free: np.ndarray) -> np.ndarray:
@@ -654,15 +697,6 @@ def _service_entity(zone: Any) -> Any:
 
 # ---- trees ----------------------------------------------------------------------------------
 
-def _fmt(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, float):
-        text = f"{v:.3f}".rstrip("0").rstrip(".")
-        return text if text not in ("", "-0") else "0"
-    return str(v)
-
-
 def _target_ports(spec: NodeSpec) -> list[str]:
     return [p.name for p in spec.ports if p.type == "target"]
 
@@ -680,7 +714,7 @@ def navigation_targets(tree: DraftNode) -> list[tuple[DraftNode, str]]:
 
 
 class TreeWriter:
-    """Per-agent BT XML from a draft tree: model-written ports verbatim, auto ports filled."""
+    """Per-agent behavior-tree documents from a draft tree: model-written ports verbatim, auto ports filled."""
 
     def __init__(self, resolver: TargetResolver) -> None:
         self.resolver = resolver
@@ -691,18 +725,13 @@ class TreeWriter:
             self.goal_ids[p] = len(self.goal_ids) + 1
         return self.goal_ids[p]
 
-    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> str:
-        body = self._node(agent.tree, agent, group, targets, 2)
+    def write(self, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> TreeDocument:
         tree_id = f"agent_{agent.id}"
-        return (
-            '<?xml version="1.0" encoding="UTF-8"?>\n'
-            f'<root BTCPP_format="4" main_tree_to_execute="{tree_id}">\n'
-            f'  <BehaviorTree ID="{tree_id}">\n{body}  </BehaviorTree>\n</root>\n'
-        )
+        return TreeDocument.single(tree_id, self._node(agent.tree, agent, group, targets))
 
-    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point], depth: int) -> str:
+    def _node(self, node: DraftNode, agent: AgentPlan, group: GroupPlan, targets: dict[int, Point]) -> TreeElement:
         spec = NODES[node.node]
-        attrs: list[tuple[str, str]] = []
+        attrs: dict[str, str] = {}
         point = targets.get(id(node))
         party = group.parties.get(agent.sfm_group, group.member_ids)
         others = [m for m in party if m != agent.id]
@@ -711,22 +740,17 @@ class TreeWriter:
                 continue
             name = port.name
             if name in node.ports:
-                attrs.append((name, _fmt(node.ports[name])))
+                attrs[name] = format_port_value(node.ports[name])
                 continue
             if not port.auto:
                 if port.default is not None:
-                    attrs.append((name, _fmt(port.default)))
+                    attrs[name] = format_port_value(port.default)
                 continue
             value = self._auto_value(spec, port, agent, group, others, point)
             if value is not None:
-                attrs.append((name, value))
-        pad = "  " * depth
-        text = " ".join(f"{k}={quoteattr(v)}" for k, v in attrs)
-        opening = f"{pad}<{node.node}{(' ' + text) if text else ''}"
-        if not node.children:
-            return opening + "/>\n"
-        inner = "".join(self._node(c, agent, group, targets, depth + 1) for c in node.children)
-        return f"{opening}>\n{inner}{pad}</{node.node}>\n"
+                attrs[name] = value
+        children = [self._node(c, agent, group, targets) for c in node.children]
+        return TreeElement(node.node, attrs, children)
 
     def _auto_value(self, spec: NodeSpec, port: Any, agent: AgentPlan, group: GroupPlan, others: list[int],
                     point: Point | None) -> str | None:
@@ -745,9 +769,9 @@ class TreeWriter:
             ids = others if name == "non_main_agent_ids" else group.parties.get(agent.sfm_group, group.member_ids)
             return ",".join(str(i) for i in ids)
         if name in ("x", "target_x") and point is not None:
-            return _fmt(point[0])
+            return format_port_value(point[0])
         if name in ("y", "target_y") and point is not None:
-            return _fmt(point[1])
+            return format_port_value(point[1])
         if name == "goal_id" and point is not None:
             return str(self.goal_id(point))
         if name == "group_id":
@@ -763,7 +787,7 @@ class TreeWriter:
 
 def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity],
                 selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = ()) -> PostProcessed:
-    """Draft -> agents with ids, spawns, resolved targets and per-agent XML (waypoints still empty)."""
+    """Draft -> agents with ids, spawns, resolved targets and per-agent trees (waypoints still empty)."""
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
     notes: list[str] = []
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
@@ -840,7 +864,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
             agent.targets.append((name, point))
         if agent.targets:
             agent.zone = resolver.zone_of(agent.targets[-1][0])
-        agent.xml = writer.write(agent, g, targets)
+        agent.document = writer.write(agent, g, targets)
     goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
     return PostProcessed(agents, groups, exit_name, goals, notes)
 

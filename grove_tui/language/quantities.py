@@ -67,7 +67,9 @@ _UNITS = {
     "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19,
 }
 _TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
-_SCALES = {"hundred": 100, "thousand": 1000}
+# Millions and billions are read so "a billion people" is refused as too many, not ignored.
+_SCALES = {"hundred": 100, "thousand": 1000, "million": 10**6, "billion": 10**9, "trillion": 10**12}
+_BIG_SCALES = frozenset({"thousand", "million", "billion", "trillion"})
 NUMBER_WORDS = set(_UNITS) | set(_TENS) | set(_SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
 # Vague quantities get a fixed, documented reading so the same prompt always gives the same crowd.
 VAGUE = {"few": 3, "handful": 4, "several": 4, "some": 3, "couple": 2, "pair": 2, "dozens": 24, "many": 12}
@@ -254,7 +256,7 @@ def _read_number(low: list[str], i: int) -> tuple[int, bool, int] | None:
         if nxt in ("few", "handful"):
             j = i + 2
             return VAGUE[nxt], False, j + 1 if j < n and low[j] == "of" else j
-        if nxt in ("hundred", "thousand"):
+        if nxt in _SCALES:
             return _SCALES[nxt], True, i + 2
         if nxt and lemma(nxt) in PERSON_NOUNS:
             return 1, True, i + 1
@@ -283,7 +285,7 @@ def _spelled(low: list[str], i: int) -> tuple[int, int]:
             current += _TENS[w]
         elif w in _SCALES and (current or total):
             current = max(current, 1) * _SCALES[w]
-            if w == "thousand":
+            if w in _BIG_SCALES:
                 total, current = total + current, 0
         elif w == "and" and j + 1 < len(low) and (low[j + 1] in _UNITS or low[j + 1] in _TENS) and (current >= 100 or total):
             pass

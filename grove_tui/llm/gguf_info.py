@@ -99,6 +99,8 @@ class _Scanner:
     def skip_string(self) -> None:
         length = self.scalar(gguf.GGUFValueType.UINT64)
         self.offset += length
+        if self.offset > len(self.buffer):
+            raise ModelError(f"{self.path}: the GGUF header is truncated (the download may be incomplete)")
 
     def value(self, value_type: gguf.GGUFValueType) -> Any:
         if value_type == gguf.GGUFValueType.STRING:
@@ -148,7 +150,7 @@ def read_gguf_info(path: str | os.PathLike[str]) -> GGUFInfo:
         version = scanner.scalar(gguf.GGUFValueType.UINT32)
         if version not in (2, 3):
             raise ModelError(f"{file}: GGUF version {version} is not supported (expected 2 or 3)")
-        scanner.scalar(gguf.GGUFValueType.UINT64)  # tensor count
+        tensor_count = scanner.scalar(gguf.GGUFValueType.UINT64)
         kv_count = scanner.scalar(gguf.GGUFValueType.UINT64)
         metadata: dict[str, Any] = {}
         array_lengths: dict[str, int] = {}
@@ -162,6 +164,11 @@ def read_gguf_info(path: str | os.PathLike[str]) -> GGUFInfo:
                     metadata[key] = value
         except (ValueError, KeyError, struct.error) as error:
             raise ModelError(f"{file}: damaged GGUF metadata ({error})") from None
+        needed = _tensor_data_end(scanner, tensor_count, metadata)
+    if needed > size:
+        # The header is intact but the weights are cut short: an interrupted download or copy.
+        raise ModelError(f"{file}: truncated: its tensors need {needed:,} bytes but the file has {size:,} "
+                         f"(the download may be incomplete; fetch it again)")
     architecture = str(metadata.get("general.architecture", ""))
     if not architecture:
         raise ModelError(f"{file}: GGUF metadata has no general.architecture")
@@ -185,6 +192,32 @@ def read_gguf_info(path: str | os.PathLike[str]) -> GGUFInfo:
         key_length=arch_int("attention.key_length"), value_length=arch_int("attention.value_length"),
         vocab_size=vocab, chat_template=metadata.get("tokenizer.chat_template"), metadata=metadata,
     )
+
+
+def _tensor_data_end(scanner: _Scanner, tensor_count: int, metadata: dict[str, Any]) -> int:
+    """Where the last tensor's data ends, from the tensor infos after the metadata (GGUF v2/v3:
+    name, n_dims, dims, type, offset relative to the aligned start of the data section)."""
+    alignment = metadata.get("general.alignment", 32)
+    if not isinstance(alignment, int) or isinstance(alignment, bool) or alignment <= 0:
+        raise ModelError(f"{scanner.path}: damaged GGUF metadata (general.alignment is {alignment!r})")
+    end_of_data = 0
+    try:
+        for _ in range(tensor_count):
+            scanner.skip_string()
+            n_dims = scanner.scalar(gguf.GGUFValueType.UINT32)
+            if n_dims > 8:
+                raise ValueError(f"a tensor has {n_dims} dimensions")
+            elements = 1
+            for _ in range(n_dims):
+                elements *= scanner.scalar(gguf.GGUFValueType.UINT64)
+            tensor_type = gguf.GGMLQuantizationType(scanner.scalar(gguf.GGUFValueType.UINT32))
+            offset = scanner.scalar(gguf.GGUFValueType.UINT64)
+            block_size, type_size = gguf.GGML_QUANT_SIZES[tensor_type]
+            end_of_data = max(end_of_data, offset + elements // block_size * type_size)
+    except (ValueError, KeyError, struct.error) as error:
+        raise ModelError(f"{scanner.path}: damaged GGUF tensor table ({error})") from None
+    data_start = -(-scanner.offset // alignment) * alignment
+    return data_start + end_of_data
 
 
 def available_memory_bytes() -> int | None:

@@ -19,7 +19,27 @@ from scipy import ndimage
 
 from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.errors import GridError
+from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.world import World
+from grove_tui.world.loader import MAX_COORDINATE
+
+
+# The largest grid built or read: 100 million cells (a 250,000 m^2 world at 0.05 m). The planner's
+# maps take about 10 bytes per cell, so this bounds a run's memory at about 1 GB.
+MAX_GRID_CELLS = 100_000_000
+# A saved grid packs 8 cells per byte; the file and its unpacked arrays stay far below this.
+MAX_GRID_FILE_BYTES = 64 * 1024 * 1024
+MIN_RESOLUTION = 0.01
+MAX_RESOLUTION = 2.0
+
+
+def check_grid_shape(shape: tuple[int, int], what: str = "") -> None:
+    """Refuse a grid shape that is empty or over MAX_GRID_CELLS, before anything is allocated."""
+    height, width = shape
+    if height <= 0 or width <= 0:
+        raise ValueError(f"grid shape {height} x {width} is empty")
+    if height * width > MAX_GRID_CELLS:
+        raise ValueError(f"a grid of {height:,} x {width:,} cells{what} is over the limit of {MAX_GRID_CELLS:,} cells")
 
 
 @dataclass(eq=False)
@@ -112,16 +132,37 @@ class OccupancyGrid:
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> OccupancyGrid:
+        """Read a grid saved by `save`; every field is checked before the cells are unpacked."""
+        try:
+            check_npz(path, MAX_GRID_FILE_BYTES, MAX_GRID_FILE_BYTES, "occupancy grid")
+        except InputLimitError as error:
+            raise GridError(str(error)) from None
         try:
             with np.load(Path(path), allow_pickle=False) as data:
-                shape = tuple(int(v) for v in data["shape"])
-                bits = np.unpackbits(data["occupied"], count=shape[0] * shape[1])
+                shape_values = np.asarray(data["shape"])
+                if shape_values.shape != (2,) or shape_values.dtype.kind not in "iu":
+                    raise ValueError(f"shape must be two integers, got {shape_values.tolist()!r}")
+                shape = (int(shape_values[0]), int(shape_values[1]))
+                check_grid_shape(shape)
+                origin = np.asarray(data["origin"], dtype=np.float64).reshape(-1)
+                resolution = float(data["resolution"])
+                inflation = float(data["inflation"])
+                if origin.shape != (2,) or not np.isfinite(origin).all() or np.abs(origin).max() > MAX_COORDINATE:
+                    raise ValueError(f"origin must be two finite numbers within +-{MAX_COORDINATE:g} m, "
+                                     f"got {origin.tolist()!r}")
+                if not (MIN_RESOLUTION <= resolution <= MAX_RESOLUTION):
+                    raise ValueError(f"resolution must be {MIN_RESOLUTION}..{MAX_RESOLUTION} m, got {resolution!r}")
+                if not (0.0 <= inflation <= MAX_RESOLUTION * 10):
+                    raise ValueError(f"inflation must be 0..{MAX_RESOLUTION * 10} m, got {inflation!r}")
+                packed = np.asarray(data["occupied"], dtype=np.uint8)
+                if packed.size * 8 < shape[0] * shape[1]:
+                    raise ValueError(f"{packed.size * 8} cells stored for a {shape[0]} x {shape[1]} grid")
+                bits = np.unpackbits(packed, count=shape[0] * shape[1])
                 occupied = bits.reshape(shape).astype(bool)
-                return cls(origin=(float(data["origin"][0]), float(data["origin"][1])),
-                           resolution=float(data["resolution"]), occupied=occupied,
-                           inflation=float(data["inflation"]), world_name=str(data["world_name"]))
-        except (OSError, KeyError, ValueError) as error:
-            raise GridError(f"cannot read occupancy grid {path}: {error}") from error
+                return cls(origin=(float(origin[0]), float(origin[1])), resolution=resolution, occupied=occupied,
+                           inflation=inflation, world_name=str(data["world_name"]))
+        except NPZ_READ_ERRORS as error:
+            raise GridError(f"cannot read occupancy grid {path}: {error}") from None
 
 
 def _mark_polygon(mask: np.ndarray, polygon: shapely.Geometry, origin: tuple[float, float],
@@ -171,6 +212,10 @@ def _rasterize(world: World, resolution: float, inflation: float) -> OccupancyGr
     origin = (xmin - pad, ymin - pad)
     width = int(math.ceil((xmax - xmin + 2 * pad) / resolution))
     height = int(math.ceil((ymax - ymin + 2 * pad) / resolution))
+    try:
+        check_grid_shape((height, width), f" at {resolution} m")
+    except ValueError as error:
+        raise GridError(f"world {world.name!r}: {error}; use a coarser resolution") from None
     inside = np.zeros((height, width), dtype=bool)
     for zone in world.zones:
         _mark_polygon(inside, zone.polygon, origin, resolution, True)
@@ -197,10 +242,10 @@ def build_grid(world: World, resolution: float = 0.1, inflation: float = 0.35) -
 
     The returned grid's `occupied` array is read-only because cached grids are shared.
     """
-    if not (resolution > 0):
-        raise GridError(f"grid resolution must be positive, got {resolution}")
-    if inflation < 0:
-        raise GridError(f"grid inflation must not be negative, got {inflation}")
+    if not (MIN_RESOLUTION <= resolution <= MAX_RESOLUTION):
+        raise GridError(f"grid resolution must be {MIN_RESOLUTION}..{MAX_RESOLUTION} m, got {resolution}")
+    if not (0 <= inflation <= MAX_RESOLUTION * 10):
+        raise GridError(f"grid inflation must be 0..{MAX_RESOLUTION * 10} m, got {inflation}")
     key = (world.fingerprint, round(float(resolution), 9), round(float(inflation), 9))
     grid = _GRIDS.get(key)
     if grid is None:

@@ -23,11 +23,19 @@ import numba
 import numpy as np
 from scipy.spatial import cKDTree
 
+from grove_tui.errors import FieldFileError
 from grove_tui.files import npz_bytes, write_bytes_atomic
+from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
+from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
+from grove_tui.world.loader import MAX_COORDINATE
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, any_angle_distances, line_of_sight
 
 _DR = np.array([0, 0, 1, -1, 1, 1, -1, -1], dtype=np.int64)
 _DC = np.array([1, -1, 0, 0, 1, -1, 1, -1], dtype=np.int64)
+
+# A field stores 8 bytes per grid cell; the largest world grid at 0.1 m (25 million cells) needs 200 MB.
+MAX_FIELD_UNPACKED_BYTES = 256 * 1024 * 1024
+
 
 CAPTURE_RADIUS = 3.0  # metres: beyond this distance from the path only the geodesic direction is used
 LOOKAHEAD = 1.0  # metres along the path ahead of the nearest path point
@@ -64,17 +72,34 @@ class VelocityField:
 
     @classmethod
     def load(cls, path) -> VelocityField:
+        """Read a field saved by `save`. The unpacked size is checked from the zip headers first (a
+        3 MB zip bomb would otherwise unpack to gigabytes), then every value is checked."""
+        try:
+            check_npz(path, MAX_FIELD_UNPACKED_BYTES, MAX_FIELD_UNPACKED_BYTES, "velocity field")
+        except InputLimitError as error:
+            raise FieldFileError(str(error)) from None
         try:
             with np.load(Path(path), allow_pickle=False) as data:
                 vectors = np.ascontiguousarray(data["vectors"], dtype=np.float32)
-                if vectors.ndim != 3 or vectors.shape[2] != 2:
+                if vectors.ndim != 3 or vectors.shape[2] != 2 or vectors.shape[0] == 0 or vectors.shape[1] == 0:
                     raise ValueError(f"vectors have shape {vectors.shape}, expected (H, W, 2)")
-                return cls(origin=(float(data["origin"][0]), float(data["origin"][1])),
-                           resolution=float(data["resolution"]), vectors=vectors,
-                           exit=(float(data["exit"][0]), float(data["exit"][1])),
-                           path=np.asarray(data["path"], dtype=np.float64).reshape(-1, 2))
-        except (OSError, KeyError, ValueError) as error:
-            raise PlanningError(f"cannot read velocity field {path}: {error}") from error
+                if not np.isfinite(vectors).all():
+                    raise ValueError("vectors hold NaN or infinite values")
+                origin = np.asarray(data["origin"], dtype=np.float64).reshape(-1)
+                exit_point = np.asarray(data["exit"], dtype=np.float64).reshape(-1)
+                resolution = float(data["resolution"])
+                path_points = np.asarray(data["path"], dtype=np.float64).reshape(-1, 2)
+                for name, values in (("origin", origin), ("exit", exit_point)):
+                    if values.shape != (2,) or not np.isfinite(values).all() or np.abs(values).max() > MAX_COORDINATE:
+                        raise ValueError(f"{name} must be two finite numbers within +-{MAX_COORDINATE:g} m")
+                if not np.isfinite(path_points).all():
+                    raise ValueError("path holds NaN or infinite values")
+                if not (MIN_RESOLUTION <= resolution <= MAX_RESOLUTION):
+                    raise ValueError(f"resolution must be {MIN_RESOLUTION}..{MAX_RESOLUTION} m, got {resolution!r}")
+                return cls(origin=(float(origin[0]), float(origin[1])), resolution=resolution, vectors=vectors,
+                           exit=(float(exit_point[0]), float(exit_point[1])), path=path_points)
+        except NPZ_READ_ERRORS as error:
+            raise FieldFileError(f"cannot read velocity field {path}: {error}") from None
 
 
 # ---- kernels -----------------------------------------------------------------------------------

@@ -10,15 +10,17 @@
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from grove_tui.files import absolute_path, atomic_directory, link_or_copy
-from grove_tui.errors import BundleError
-from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.errors import BundleError, GroveError
+from grove_tui.limits import InputLimitError, check_regular_file, read_text_bounded
+from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
 from grove_tui.scenario.model import Scenario, ScenarioError
-from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.navigation.velocity_field import MAX_FIELD_UNPACKED_BYTES, VelocityField
 
 SCENARIO_FILE = "scenario.yaml"
 GRID_FILE = "grid.npz"
@@ -74,31 +76,72 @@ def replace_run_outputs(bundle_dir: str | Path, write: Callable[[Path], None]) -
     return root
 
 
-def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, dict[str, str], dict[str, VelocityField], OccupancyGrid]:
-    """(Scenario, trees by relative path, fields by id, grid) of a bundle directory."""
+# A behavior tree of one agent is a few kB; anything this large is not one.
+MAX_TREE_BYTES = 4 * 1024 * 1024
+
+
+def bundle_member(bundle_dir: str | Path, rel: str, what: str, max_bytes: int = MAX_TREE_BYTES) -> Path:
+    """The file `rel` of a bundle, checked before anything reads it: it must stay inside the bundle
+    (after following links), be a regular file (not /dev/zero, not a pipe) and be at most `max_bytes`.
+    """
+    root = Path(bundle_dir)
+    real_root = os.path.realpath(root)
+    real_path = os.path.realpath(root / rel)
+    if os.path.commonpath([real_root, real_path]) != real_root or real_path == real_root:
+        raise BundleError(f"{root}: {what} {rel} points outside the bundle folder")
+    try:
+        check_regular_file(real_path, max_bytes, what)
+    except InputLimitError as exc:
+        missing = not os.path.lexists(root / rel)
+        raise BundleError(f"{root}: {what} {rel} is missing" if missing else f"{root}: {exc}") from None
+    return root / rel
+
+
+def read_bundle_text(bundle_dir: str | Path, rel: str, what: str, max_bytes: int = MAX_TREE_BYTES) -> str:
+    path = bundle_member(bundle_dir, rel, what, max_bytes)
+    try:
+        return read_text_bounded(path, max_bytes, what)
+    except InputLimitError as exc:
+        raise BundleError(f"{bundle_dir}: {exc}") from None
+
+
+def load_scenario(bundle_dir: str | Path) -> Scenario:
+    """The bundle's Scenario; a missing or broken scenario.yaml is a BundleError naming it."""
     root = Path(bundle_dir)
     if not root.is_dir():
         raise BundleError(f"{root}: no such bundle directory")
     try:
-        scenario = Scenario.load(root / SCENARIO_FILE)
+        return Scenario.load(root / SCENARIO_FILE)
     except ScenarioError as exc:
         raise BundleError(str(exc)) from None
+
+
+def load_field(bundle_dir: str | Path, field_id: str, rel: str) -> VelocityField:
+    path = bundle_member(bundle_dir, rel, f"velocity field {field_id}", MAX_FIELD_UNPACKED_BYTES)
+    try:
+        return VelocityField.load(path)
+    except GroveError as exc:
+        raise BundleError(str(exc)) from None
+
+
+def load_grid(bundle_dir: str | Path) -> OccupancyGrid:
+    path = bundle_member(bundle_dir, GRID_FILE, "occupancy grid", MAX_GRID_FILE_BYTES)
+    try:
+        return OccupancyGrid.load(path)
+    except GroveError as exc:
+        raise BundleError(str(exc)) from None
+
+
+def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, dict[str, str], dict[str, VelocityField], OccupancyGrid]:
+    """(Scenario, trees by relative path, fields by id, grid) of a bundle directory."""
+    root = Path(bundle_dir)
+    scenario = load_scenario(root)
     trees: dict[str, str] = {}
     for agent in scenario.agents:
-        path = root / agent.tree
-        if not path.is_file():
-            raise BundleError(f"{root}: agent {agent.id}'s tree {agent.tree} is missing")
-        trees[agent.tree] = path.read_text(encoding="utf-8")
-    fields: dict[str, VelocityField] = {}
-    for field_id, rel in scenario.fields.items():
-        path = root / rel
-        if not path.is_file():
-            raise BundleError(f"{root}: velocity field {field_id} ({rel}) is missing")
-        fields[field_id] = VelocityField.load(path)
-    if not (root / GRID_FILE).is_file():
-        raise BundleError(f"{root}: {GRID_FILE} is missing")
-    grid = OccupancyGrid.load(root / GRID_FILE)
-    return scenario, trees, fields, grid
+        if agent.tree not in trees:
+            trees[agent.tree] = read_bundle_text(root, agent.tree, f"agent {agent.id}'s tree")
+    fields = {field_id: load_field(root, field_id, rel) for field_id, rel in scenario.fields.items()}
+    return scenario, trees, fields, load_grid(root)
 
 
 def load_report(bundle_dir: str | Path) -> dict[str, Any]:

@@ -29,13 +29,50 @@ from grove_tui.services.session import (
 from grove_tui.settings import data_dir
 
 __all__ = ["EXPORTERS", "EngineBackend", "ExportContext", "ExportedFile", "GeneratedScenario", "ModelStatus",
-           "PresetInfo"]
+           "PresetInfo", "RunInfo", "list_runs"]
 
 
 @dataclass(frozen=True)
 class PresetInfo:
     name: str
     description: str
+
+
+@dataclass(frozen=True)
+class RunInfo:
+    """One saved bundle in the runs folder, as the recent-runs list shows it."""
+
+    path: Path
+    modified: float  # seconds since the epoch, of scenario.yaml
+    prompt: str = ""
+    world: str = ""
+    preset: str = ""
+    seed: int = 0
+    agents: int = 0
+    simulated: bool = False
+    error: str = ""  # why the bundle cannot be opened; empty when it can
+
+
+def list_runs(runs_dir: Path, limit: int = 50) -> list[RunInfo]:
+    """The newest `limit` bundles directly under `runs_dir` (a missing folder is an empty list)."""
+    from grove_tui.scenario.bundle import SCENARIO_FILE, is_bundle
+    from grove_tui.scenario.model import Scenario
+
+    if not runs_dir.is_dir():
+        return []
+    bundles = [path for path in runs_dir.iterdir() if path.is_dir() and is_bundle(path)]
+    bundles.sort(key=lambda path: (path / SCENARIO_FILE).stat().st_mtime, reverse=True)
+    runs = []
+    for path in bundles[:limit]:
+        modified = (path / SCENARIO_FILE).stat().st_mtime
+        try:
+            scenario = Scenario.load(path / SCENARIO_FILE)
+        except (GroveError, OSError) as exc:  # a broken scenario.yaml, or a file that vanished meanwhile
+            runs.append(RunInfo(path, modified, error=str(exc)))
+            continue
+        runs.append(RunInfo(path, modified, scenario.prompt, scenario.world, scenario.preset, int(scenario.seed),
+                            len(scenario.agents), (path / "trajectories.csv").is_file()))
+    return runs
 
 
 @dataclass(frozen=True)
@@ -256,6 +293,30 @@ class EngineBackend:
     def simulation(self, generated: GeneratedScenario) -> Any:
         return self.session.simulation(generated)
 
+    def run_metrics(self, generated: GeneratedScenario, rows: Any, events: list[Any]) -> dict[str, float]:
+        """metrics.json's numbers for a run so far, flat ({"agent_overlaps": ..., "minimum_distance_to_people": ...}).
+
+        `rows` are the recorder's rows (its structured array); they are rounded as trajectories.csv
+        stores them and go through the function `grove metrics` uses, so the app's counters equal
+        the exported metrics.json of the same run.
+        """
+        import numpy as np
+
+        from grove_tui.analysis.bundle_metrics import scenario_metrics
+        from grove_tui.analysis.metrics import Trajectories
+        from grove_tui.crowd.recording import CSV_COLUMNS
+
+        if len(rows) == 0:
+            return {}
+        table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
+        table[:, 1] = np.round(table[:, 1], 4)  # t, x, y, vx, vy, yaw: trajectories.csv's "%.4f"
+        table[:, 3:8] = np.round(table[:, 3:8], 4)
+        report = scenario_metrics(generated.scenario, generated.world, Trajectories.from_rows(table), events)
+        flat: dict[str, float] = {}
+        for section in report.to_dict().values():
+            flat.update(section)
+        return flat
+
     # export ----------------------------------------------------------------------------------------
     def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
         stamp = time.strftime("%Y%m%d-%H%M%S")
@@ -274,3 +335,23 @@ class EngineBackend:
                     raise
                 ctx.add(kind, out_dir, f"failed: {describe_error(exc).text}")
         return ctx.files
+
+
+    # saved runs --------------------------------------------------------------------------------------
+    def recent_runs(self, limit: int = 50) -> list[RunInfo]:
+        """Bundles under the runs folder, newest first; a broken one is listed with what is wrong."""
+        return list_runs(self.runs_dir, limit)
+
+    def open_run(self, bundle_dir: Path) -> GeneratedScenario:
+        """A saved bundle as the app holds a fresh generation (no draft: counts cannot be re-planned)."""
+        from grove_tui.generation.pipeline import GenerationResult
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report
+
+        bundle_dir = Path(bundle_dir)
+        scenario, trees, fields, grid = load_bundle(bundle_dir)
+        # A bundle copied without its report still opens; only the timings and groups are missing.
+        report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
+        world = self.load_world(scenario.world)
+        result = GenerationResult(scenario, trees, fields, grid, report)
+        return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
+                                 bundle_dir)

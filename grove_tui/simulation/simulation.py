@@ -21,6 +21,7 @@ Threatening 4 m/40 s/once). Impassive agents treat the robot as an obstacle.
 from __future__ import annotations
 
 import math
+import os
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -28,14 +29,17 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import shapely
 
 from grove_tui.bt.context import AgentContext, SimContext
-from grove_tui.bt.manifest import SUBTREE
 from grove_tui.bt.registry import tree_factory
 from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
-from grove_tui.bt.runtime import FAILURE, SUCCESS, BehaviorTree, Blackboard, SimClock
-from grove_tui.bt.xml import BTError, TreeDocument, TreeElement, load_tree_file
-from grove_tui.crowd.crowd import ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.bt.blackboard import Blackboard
+from grove_tui.bt.document import TreeDocument, node, subtree_call
+from grove_tui.bt.factory import BehaviorTree
+from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
+from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.crowd.crowd import MODE_FIELD, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
@@ -111,6 +115,8 @@ class Simulation:
         self._q_t = np.zeros(n)
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
+        self._building: Any = None  # the zones' union, prepared on first use (see _count_people_outside)
+        self._exits: list[tuple[str, tuple[float, float]]] = []
         self.scenario = scenario
         self.world = world
         self.recorder = recorder if recorder is not None else _make_recorder(dt, context.ids)
@@ -130,8 +136,9 @@ class Simulation:
                       bt_rate: float = 10.0, runtime_planning: bool = True) -> Simulation:
         """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
         no-planner baseline); by default goals set while running are planned with Theta*."""
-        from grove_tui.navigation.grid import OccupancyGrid, build_grid
+        from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
+        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
         from grove_tui.world import load_world
 
         bundle_dir = Path(bundle_dir)
@@ -140,16 +147,13 @@ class Simulation:
             candidate = bundle_dir / world_ref
             world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
         grid_path = bundle_dir / "grid.npz"
-        grid = OccupancyGrid.load(grid_path) if grid_path.exists() else build_grid(world, resolution=scenario.resolution)
-        fields = {}
-        if scenario.fields:
-            from grove_tui.navigation.velocity_field import VelocityField
-
-            for field_id, rel in scenario.fields.items():
-                fields[field_id] = VelocityField.load(bundle_dir / rel)
+        grid = load_grid(bundle_dir) if os.path.lexists(grid_path) else build_grid(world, resolution=scenario.resolution)
+        # Every file is checked to be a regular file inside the bundle before it is read.
+        fields = {field_id: load_field(bundle_dir, field_id, rel) for field_id, rel in scenario.fields.items()}
         documents = []
         for agent in sorted(scenario.agents, key=lambda a: a.id):
-            documents.append(load_tree_file(bundle_dir / agent.tree))
+            text = read_bundle_text(bundle_dir, agent.tree, f"agent {agent.id}'s tree")
+            documents.append(parse_tree_text(text, str(bundle_dir / agent.tree)))
         planner = ThetaStarPlanner(grid) if runtime_planning else None
         return cls.build(scenario.agents, documents, world=world, grid=grid, planner=planner,
                          walls=world.walls(), robot=scenario.robot, fields=fields, seed=scenario.seed, dt=dt,
@@ -192,7 +196,7 @@ class Simulation:
             document = with_robot_reaction(document, agent.behavior)
             blackboard = Blackboard(values={"id": agent.id, "dt": bt_dt})
             trees.append(factory.create(document, blackboard, AgentContext(context, row), clock))
-            hunav_style = any(e.id in HUNAV_LOOPING_NODES for t in document.trees.values() for e in t.walk())
+            hunav_style = any(e.id in HUNAV_LOOPING_NODES for e in document.nodes())
             loops.append(hunav_style)
             if hunav_style and agent.goals:
                 # HuNavSim trees walk the agent's own goal list (agents YAML `goals`, cyclic by default)
@@ -229,7 +233,48 @@ class Simulation:
     def tick_trees(self) -> None:
         """What step() does every 1/bt_rate seconds: tick every tree, then update the contact counters."""
         self.tick_behaviors()
+        # After the ticks, so an evacuee's tree has already set its field mode on the first tick.
+        self._count_people_outside()
         self._measure_contacts()
+
+    def _count_people_outside(self) -> None:
+        """Anyone the crowd pushed out of the building (through an exit: walls hold everywhere else)
+        has left it. An evacuee is counted as evacuated through the nearest exit; anyone else gets a
+        `left_building` event. Either way the agent stops taking part, so nobody wanders outside
+        uncounted. (An evacuee's tree is quiescent until it is near its own exit point, so without this
+        check one pushed past that point was never ticked again.)"""
+        world = self.world
+        if world is None or not hasattr(world, "outline"):
+            return
+        n = len(self.trees)
+        active = np.flatnonzero(np.asarray(self.crowd.active[:n], dtype=bool))
+        if active.size == 0:
+            return
+        if self._building is None:
+            self._building = world.outline()
+            shapely.prepare(self._building)
+            self._exits = [(door.name, door.position) for door in world.exits()]
+        pos = self.crowd.pos[active]
+        outside = active[~shapely.intersects_xy(self._building, pos[:, 0], pos[:, 1])]
+        ctx = self.context
+        for row in outside.tolist():
+            x, y = float(self.crowd.pos[row, 0]), float(self.crowd.pos[row, 1])
+            exit_name = min(self._exits, key=lambda e: math.dist(e[1], (x, y)))[0] if self._exits else ""
+            evacuating = int(self.crowd.mode[row]) == MODE_FIELD or ctx.status[row].startswith("evacuating")
+            self.crowd.set_active(row, False)
+            if evacuating:
+                ctx.counters.evacuated += 1
+                ctx.event("evacuated", row, exit_name)
+                ctx.status[row] = "evacuated"
+            else:
+                ctx.event("left_building", row, exit_name)
+                ctx.status[row] = f"left through {exit_name}" if exit_name else "left the building"
+            if not self.finished[row]:
+                self.finished[row] = True
+                self._finished_mask[row] = True
+                self._q_on[row] = False
+                ctx.counters.finished_trees += 1
+                self.tree_result[row] = "done"
 
     def tick_behaviors(self) -> None:
         """Tick every unfinished tree once with the current positions, then order new queue arrivals.
@@ -408,14 +453,13 @@ def _goal_table(documents: list[TreeDocument]) -> dict[int, tuple[float, float]]
     """HuNavSim global goals: every node with a literal goal_id and x/y (as post-processing writes them)."""
     table: dict[int, tuple[float, float]] = {}
     for document in documents:
-        for root in document.trees.values():
-            for element in root.walk():
-                ports = element.ports
-                if "goal_id" in ports and "x" in ports and "y" in ports:
-                    try:
-                        table.setdefault(int(ports["goal_id"]), (float(ports["x"]), float(ports["y"])))
-                    except ValueError:
-                        continue
+        for element in document.nodes():
+            ports = element.ports
+            if "goal_id" in ports and "x" in ports and "y" in ports:
+                try:
+                    table.setdefault(int(ports["goal_id"]), (float(ports["x"]), float(ports["y"])))
+                except ValueError:
+                    continue
     return table
 
 
@@ -424,22 +468,19 @@ def with_robot_reaction(document: TreeDocument, behavior: str) -> TreeDocument:
     spec = REACTION_DEFAULTS.get(behavior)
     if spec is None:
         return document
-    if any(e.id in ROBOT_REACTIONS for t in document.trees.values() for e in t.walk()):
+    if any(e.id in ROBOT_REACTIONS for e in document.nodes()):
         return document
-    node, distance, duration, once = spec
+    reaction_node, distance, duration, once = spec
     wrapper_id = "GroveRobotReaction"
     while wrapper_id in document.trees:
         wrapper_id += "_"
-    routine = TreeElement(SUBTREE, document.main_tree_id, {}, (), None, subtree_id=document.main_tree_id,
-                          autoremap=True)
+    routine = subtree_call(document.main_tree_id, autoremap=True)
     # ForceFailure: a finished reaction falls through to the routine instead of ending the tree
-    reaction = TreeElement("Sequence", "Sequence", {}, (
-        TreeElement("IsRobotVisible", "IsRobotVisible", {"distance": f"{distance:g}"}, (), None),
-        TreeElement("ForceFailure", "ForceFailure", {}, (
-            TreeElement(node, node, {"beh_duration": f"{duration:g}", "only_once": "true" if once else "false"}, (),
-                        None),), None),
-    ), None)
-    root = TreeElement("ReactiveFallback", f"{behavior} reaction", {}, (reaction, routine), None)
-    trees = dict(document.trees)
-    trees[wrapper_id] = root
-    return TreeDocument(document.source, wrapper_id, trees, dict(document.tree_lines))
+    reaction = node("Sequence", [
+        node("IsRobotVisible", distance=f"{distance:g}"),
+        node("ForceFailure", [node(reaction_node, beh_duration=f"{duration:g}",
+                                   only_once="true" if once else "false")]),
+    ])
+    wrapped = TreeDocument(wrapper_id, dict(document.trees), document.source, list(document.models))
+    wrapped.add_tree(wrapper_id, node("ReactiveFallback", [reaction, routine], name=f"{behavior} reaction"))
+    return wrapped

@@ -14,6 +14,7 @@ from textual.app import App
 from textual.binding import Binding
 
 from grove_tui.services.backend import EngineBackend, GeneratedScenario
+from grove_tui.tui.messages import RunOpened, RunOpenFailed
 from grove_tui.tui.commands import GroveCommands
 from grove_tui.settings import GroveSettings, load_history, load_settings, save_history
 
@@ -38,6 +39,7 @@ class GroveApp(App[int]):
         preset: str | None = None,
         history: list[str] | None = None,
         persist_history: bool = False,
+        open_bundle: Path | None = None,
     ) -> None:
         super().__init__()
         self.backend = backend
@@ -48,6 +50,7 @@ class GroveApp(App[int]):
         self.persist_history = persist_history
         self.generated: GeneratedScenario | None = None
         self.animation_level = self.settings.ui.animation
+        self.open_bundle_at_start = open_bundle
 
     def on_mount(self) -> None:
         from grove_tui.tui.screens.setup import SetupScreen
@@ -57,6 +60,36 @@ class GroveApp(App[int]):
         if self.settings.keymap:
             self.set_keymap(self.settings.keymap)
         self.push_screen(SetupScreen())
+        if self.open_bundle_at_start is not None:
+            self.open_bundle(self.open_bundle_at_start)
+
+    # saved runs --------------------------------------------------------------------------------------
+    def open_bundle(self, bundle_dir: Path) -> None:
+        """Load a saved bundle off the UI thread, then show it in the inspect screen over setup."""
+        self.notify(f"Opening {bundle_dir.name}…", title="Open run", timeout=3)
+        self.run_worker(lambda: self._load_bundle(Path(bundle_dir)), thread=True, exclusive=True, group="open-run",
+                        exit_on_error=False, description="opening a run")
+
+    def _load_bundle(self, bundle_dir: Path) -> None:
+        try:
+            generated = self.backend.open_run(bundle_dir)
+        except Exception as exc:  # a broken bundle must say why, not close the app
+            self.post_message(RunOpenFailed(bundle_dir, f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(RunOpened(generated))
+
+    def on_run_opened(self, message: RunOpened) -> None:
+        from grove_tui.tui.screens.inspect import InspectScreen
+        from grove_tui.tui.screens.setup import SetupScreen
+
+        # The inspect screen sits on setup, so Escape goes back to setup as after a generation.
+        while len(self.screen_stack) > 2 and not isinstance(self.screen, SetupScreen):
+            self.pop_screen()
+        self.generated = message.generated
+        self.push_screen(InspectScreen(message.generated, reopened=True))
+
+    def on_run_open_failed(self, message: RunOpenFailed) -> None:
+        self.notify(message.error, title=f"Cannot open {message.bundle_dir.name}", severity="error", timeout=15)
 
     # shared state ------------------------------------------------------------------------------------
     def remember_prompt(self, prompt: str) -> None:
@@ -87,7 +120,7 @@ class GroveApp(App[int]):
 
 
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
-            world: str | None = None, preset: str | None = None) -> int:
+            world: str | None = None, preset: str | None = None, open_bundle: Path | None = None) -> int:
     """Entry point of the `grove` command with no subcommand; returns the exit code."""
     from grove_tui.errors import SettingsError, print_error
 
@@ -97,6 +130,7 @@ def run_app(model: str | None = None, roi_model: str | None = None, bt_model: st
         return print_error(exc)
     backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
     app = GroveApp(backend, settings, world=world, preset=preset,
-                   history=load_history(settings.generation.history_size), persist_history=True)
+                   history=load_history(settings.generation.history_size), persist_history=True,
+                   open_bundle=open_bundle)
     result = app.run()
     return int(result or 0) if app.return_code in (None, 0) else int(app.return_code or 1)

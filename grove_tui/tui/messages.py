@@ -66,6 +66,7 @@ class TokensFlushed(Message):
 @dataclass
 class GenerationSucceeded(Message):
     generated: Any  # backend.GeneratedScenario
+    note: str = ""  # what happened to count edits carried over from the previous scenario
 
 
 @dataclass
@@ -101,3 +102,24 @@ class ExportFinished(Message):
 @dataclass
 class ExportFailed(Message):
     error: str
+
+
+@dataclass
+class RunOpened(Message):
+    generated: Any  # backend.GeneratedScenario loaded from a saved bundle
+
+
+@dataclass
+class RunOpenFailed(Message):
+    bundle_dir: Path
+    error: str
+
+
+@dataclass
+class MetricsComputed(Message):
+    """metrics.json's numbers for the run up to simulation step `step` (or why they could not be computed)."""
+
+    step: int
+    t: float
+    values: dict[str, float]
+    error: str = ""

@@ -19,11 +19,13 @@ import numpy as np
 import shapely
 import shapely.ops
 import yaml
+from scipy.spatial import cKDTree
 from shapely.geometry import LineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 from shapely.validation import explain_validity
 
+from grove_tui.limits import InputLimitError, YamlPath, compose_yaml, read_text_bounded
 from grove_tui.paths import worlds_dir
 
 from grove_tui.world.model import (OUTSIDE, ON_BOUNDARY_TOLERANCE, OVERLAP_AREA_TOLERANCE, DOOR_CLEARANCE, SNAKE_CASE, WorldProblem, WorldError, Door, Entity, Obstacle, Zone, World, _unknown_name_message, Point2)
@@ -31,9 +33,6 @@ from grove_tui.world.model import (OUTSIDE, ON_BOUNDARY_TOLERANCE, OVERLAP_AREA_
 
 # --------------------------------------------------------------------------------------------
 # YAML with line numbers
-
-
-YamlPath = tuple[str | int, ...]
 
 
 def format_path(path: YamlPath) -> str:
@@ -46,42 +45,18 @@ def format_path(path: YamlPath) -> str:
     return text or "(document)"
 
 
-# libyaml's loader has the same safe semantics and keeps node marks, and it is ~20x faster.
-_SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-
-
-def _compose_with_lines(text: str) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:
-    """Parse with SafeLoader semantics; record the 1-based line of every node by its path.
-
-    Also returns the paths of repeated mapping keys, which YAML would otherwise silently overwrite.
-    """
-    loader = _SAFE_LOADER(text)
-    try:
-        node = loader.get_single_node()
-        data = loader.construct_document(node) if node is not None else None
-    finally:
-        loader.dispose()
-    lines: dict[YamlPath, int] = {}
-    repeated: list[YamlPath] = []
-
-    def walk(current: yaml.Node, path: YamlPath) -> None:
-        lines.setdefault(path, current.start_mark.line + 1)
-        if isinstance(current, yaml.MappingNode):
-            seen_keys: set[str] = set()
-            for key_node, value_node in current.value:
-                if isinstance(key_node, yaml.ScalarNode):
-                    if key_node.value in seen_keys:
-                        lines[path + (key_node.value, "#repeat")] = key_node.start_mark.line + 1
-                        repeated.append(path + (key_node.value, "#repeat"))
-                    seen_keys.add(key_node.value)
-                    walk(value_node, path + (key_node.value,))
-        elif isinstance(current, yaml.SequenceNode):
-            for index, item in enumerate(current.value):
-                walk(item, path + (index,))
-
-    if node is not None:
-        walk(node, ())
-    return data, lines, repeated
+# Limits checked before anything is built, so a hostile or mistaken file fails fast with one
+# message instead of hanging or exhausting memory (YAML size, depth and alias limits are in
+# grove_tui.limits). A world of 20,000 zones is about 4 MB of YAML and loads in about 8 s.
+MAX_WORLD_FILE_BYTES = 32 * 1024 * 1024
+MAX_ZONES = 30_000
+# Coordinates and sizes in metres: anything beyond 100 km is a typo (or an attack), and keeps
+# every float well inside the range the grid and the planner compute with.
+MAX_COORDINATE = 100_000.0
+# The occupancy grid at the default 0.1 m resolution must stay under this many cells (it is built
+# before planning and every planner map is a multiple of it): 250,000 m^2 of bounding box.
+MAX_GRID_CELLS = 25_000_000
+DEFAULT_GRID_RESOLUTION = 0.1
 
 
 class _Problems:
@@ -105,7 +80,22 @@ class _Problems:
 
 
 def _is_number(value: Any) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    """A finite number within +-MAX_COORDINATE (huge ints would overflow float conversion)."""
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
+        return False
+    if isinstance(value, int):
+        return -MAX_COORDINATE <= value <= MAX_COORDINATE
+    return math.isfinite(value) and -MAX_COORDINATE <= value <= MAX_COORDINATE
+
+
+def _short_repr(value: Any, limit: int = 60) -> str:
+    """repr() cut to `limit` characters: a message quoting a 5,000-digit number helps nobody
+    (and repr of such an int raises ValueError)."""
+    try:
+        text = repr(value)
+    except ValueError:
+        text = f"<{type(value).__name__} too large to print>"
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _check_keys(data: dict, allowed: tuple[str, ...], path: YamlPath, problems: _Problems) -> None:
@@ -125,7 +115,7 @@ def _read_str(data: dict, key: str, path: YamlPath, problems: _Problems, require
         return default
     value = data[key]
     if not isinstance(value, str) or not value.strip():
-        problems.add(path + (key,), f"{key} must be a non-empty string, got {value!r}")
+        problems.add(path + (key,), f"{key} must be a non-empty string, got {_short_repr(value)}")
         return None
     return value.strip()
 
@@ -147,7 +137,7 @@ def _read_str_list(data: dict, key: str, path: YamlPath, problems: _Problems) ->
     items: list[str] = []
     for index, item in enumerate(value):
         if not isinstance(item, str) or not item.strip():
-            problems.add(path + (key, index), f"{key} entries must be non-empty strings, got {item!r}")
+            problems.add(path + (key, index), f"{key} entries must be non-empty strings, got {_short_repr(item)}")
         else:
             items.append(item.strip())
     return tuple(items)
@@ -155,7 +145,8 @@ def _read_str_list(data: dict, key: str, path: YamlPath, problems: _Problems) ->
 
 def _read_point(value: Any, path: YamlPath, problems: _Problems, what: str) -> Point2 | None:
     if (not isinstance(value, list) or len(value) != 2 or not all(_is_number(v) for v in value)):
-        problems.add(path, f"{what} must be a point [x, y] of two finite numbers, got {value!r}")
+        problems.add(path, f"{what} must be a point [x, y] of two numbers within +-{MAX_COORDINATE:g} m, "
+                           f"got {_short_repr(value)}")
         return None
     return (float(value[0]), float(value[1]))
 
@@ -166,7 +157,7 @@ def _read_polygon(data: dict, key: str, path: YamlPath, problems: _Problems) -> 
         return None
     value = data[key]
     if not isinstance(value, list) or len(value) < 3:
-        problems.add(path + (key,), f"{key} must be a list of at least 3 [x, y] points, got {value!r}")
+        problems.add(path + (key,), f"{key} must be a list of at least 3 [x, y] points, got {_short_repr(value)}")
         return None
     points: list[Point2] = []
     for index, item in enumerate(value):
@@ -193,10 +184,10 @@ def _read_positive(data: dict, key: str, path: YamlPath, problems: _Problems) ->
         return None
     value = data[key]
     if not _is_number(value):
-        problems.add(path + (key,), f"{key} must be a number in metres, got {value!r}")
+        problems.add(path + (key,), f"{key} must be a number in metres within +-{MAX_COORDINATE:g}, got {_short_repr(value)}")
         return None
     if value <= 0:
-        problems.add(path + (key,), f"{key} must be positive, got {value!r}")
+        problems.add(path + (key,), f"{key} must be positive, got {_short_repr(value)}")
         return None
     return float(value)
 
@@ -285,7 +276,7 @@ class _DraftObstacle:
 
 def _read_door(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -> _DraftDoor | None:
     if not isinstance(data, dict):
-        problems.add(path, f"a door must be a mapping with name, position, width, leads_to; got {data!r}")
+        problems.add(path, f"a door must be a mapping with name, position, width, leads_to; got {_short_repr(data)}")
         return None
     _check_keys(data, DOOR_KEYS, path, problems)
     name = _read_name(data, path, problems)
@@ -296,7 +287,7 @@ def _read_door(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -
     leads_to = _read_str(data, "leads_to", path, problems)
     exit_value = data.get("exit", leads_to == OUTSIDE)
     if not isinstance(exit_value, bool):
-        problems.add(path + ("exit",), f"exit must be true or false, got {exit_value!r}")
+        problems.add(path + ("exit",), f"exit must be true or false, got {_short_repr(exit_value)}")
         exit_value = False
     return _DraftDoor(path, name, zone_name, position, width, leads_to, exit_value,
                       _read_str(data, "description", path, problems, required=False) or "",
@@ -305,7 +296,7 @@ def _read_door(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -
 
 def _read_entity(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -> _DraftEntity | None:
     if not isinstance(data, dict):
-        problems.add(path, f"an entity must be a mapping with name, type, footprint, interaction_point; got {data!r}")
+        problems.add(path, f"an entity must be a mapping with name, type, footprint, interaction_point; got {_short_repr(data)}")
         return None
     _check_keys(data, ENTITY_KEYS, path, problems)
     name = _read_name(data, path, problems)
@@ -324,7 +315,7 @@ def _read_entity(data: Any, path: YamlPath, zone_name: str, problems: _Problems)
 
 def _read_zone(data: Any, path: YamlPath, problems: _Problems) -> _DraftZone | None:
     if not isinstance(data, dict):
-        problems.add(path, f"a zone must be a mapping with name, type, boundary; got {data!r}")
+        problems.add(path, f"a zone must be a mapping with name, type, boundary; got {_short_repr(data)}")
         return None
     _check_keys(data, ZONE_KEYS, path, problems)
     name = _read_name(data, path, problems)
@@ -346,7 +337,7 @@ def _read_zone(data: Any, path: YamlPath, problems: _Problems) -> _DraftZone | N
 
 def _read_obstacle(data: Any, path: YamlPath, problems: _Problems) -> _DraftObstacle | None:
     if not isinstance(data, dict):
-        problems.add(path, f"an obstacle must be a mapping with name and footprint; got {data!r}")
+        problems.add(path, f"an obstacle must be a mapping with name and footprint; got {_short_repr(data)}")
         return None
     _check_keys(data, OBSTACLE_KEYS, path, problems)
     return _DraftObstacle(path, _read_name(data, path, problems),
@@ -393,6 +384,21 @@ def _opening(position: Point2, width: float, along: Point2) -> LineString:
                        (position[0] + half * along[0], position[1] + half * along[1])])
 
 
+def _check_extent(zones: list[_DraftZone], problems: _Problems) -> None:
+    """The bounding box must rasterise to a grid of at most MAX_GRID_CELLS at the default resolution,
+    or `generate` would try to allocate gigabytes after `worlds check` passed."""
+    boundaries = [zone.boundary for zone in zones if zone.boundary]
+    if not boundaries:
+        return
+    points = np.concatenate([np.asarray(boundary, dtype=np.float64) for boundary in boundaries])
+    width, height = points.max(axis=0) - points.min(axis=0)
+    cells = math.ceil(width / DEFAULT_GRID_RESOLUTION) * math.ceil(height / DEFAULT_GRID_RESOLUTION)
+    if cells > MAX_GRID_CELLS:
+        problems.add(("zones",), f"the world spans {width:,.0f} m x {height:,.0f} m, a grid of {cells:,} cells at "
+                                 f"{DEFAULT_GRID_RESOLUTION} m; at most {MAX_GRID_CELLS:,} cells "
+                                 f"({MAX_GRID_CELLS * DEFAULT_GRID_RESOLUTION ** 2:,.0f} m^2 of bounding box) are supported")
+
+
 def _validate(zones: list[_DraftZone], obstacles: list[_DraftObstacle], problems: _Problems) -> dict[int, tuple[Point2, Point2]]:
     """Cross-field checks; returns each valid door's (along, normal) keyed by id(draft door)."""
     door_frames: dict[int, tuple[Point2, Point2]] = {}
@@ -422,12 +428,18 @@ def _validate(zones: list[_DraftZone], obstacles: list[_DraftObstacle], problems
         problems.add(seen[OUTSIDE] + ("name",), f"{OUTSIDE!r} is reserved for doors that leave the building")
 
     shaped = [zone for zone in zones if zone.polygon is not None]
-    for i, first in enumerate(shaped):
-        for second in shaped[i + 1:]:
-            if not first.polygon.intersects(second.polygon):
-                continue
-            overlap = first.polygon.intersection(second.polygon).area
+    # A spatial index keeps every cross-zone check near linear: 20,000 zones load in seconds, where
+    # all pairs took minutes. The tree returns candidate pairs whose polygons intersect.
+    zone_shapes = np.array([zone.polygon for zone in shaped], dtype=object)
+    zone_tree = shapely.STRtree(zone_shapes)
+    if len(shaped) > 1:
+        left, right = zone_tree.query(zone_shapes, predicate="intersects")
+        ordered = left < right
+        left, right = left[ordered], right[ordered]
+        overlaps = shapely.area(shapely.intersection(zone_shapes[left], zone_shapes[right]))
+        for i, j, overlap in sorted(zip(left.tolist(), right.tolist(), overlaps.tolist())):
             if overlap > OVERLAP_AREA_TOLERANCE:
+                first, second = shaped[i], shaped[j]
                 problems.add(second.path + ("boundary",),
                              f"zone {second.name!r} overlaps zone {first.name!r} ({format_path(first.path)}, "
                              f"line {problems.line_of(first.path)}) by {overlap:.2f} m^2; zones may share edges but not area")
@@ -477,7 +489,8 @@ def _validate(zones: list[_DraftZone], obstacles: list[_DraftObstacle], problems
                                  f"{other.name!r} is shorter there; narrow it or move its position")
                     continue
             if door.leads_to == OUTSIDE:
-                for neighbour in shaped:
+                near = np.sort(zone_tree.query(position, predicate="dwithin", distance=ON_BOUNDARY_TOLERANCE))
+                for neighbour in (shaped[index] for index in near.tolist()):
                     if neighbour is zone:
                         continue
                     if neighbour.polygon.exterior.distance(position) <= ON_BOUNDARY_TOLERANCE:
@@ -489,8 +502,12 @@ def _validate(zones: list[_DraftZone], obstacles: list[_DraftObstacle], problems
 
     # A door declared once cuts both walls; declaring it again from the other side is a mistake.
     placed = [door for door in all_doors if id(door) in door_frames]
-    for i, first in enumerate(placed):
-        for second in placed[i + 1:]:
+    if len(placed) > 1:
+        # Candidate pairs from a k-d tree within the widest half-width, then the exact per-pair test.
+        positions = np.array([door.position for door in placed], dtype=np.float64)
+        widest = max(door.width for door in placed)  # type: ignore[type-var]
+        for i, j in sorted(cKDTree(positions).query_pairs(widest / 2)):
+            first, second = placed[i], placed[j]
             if math.dist(first.position, second.position) < max(first.width, second.width) / 2:  # type: ignore[arg-type]
                 problems.add(second.path + ("position",),
                              f"door {second.name!r} overlaps door {first.name!r} ({format_path(first.path)}); "
@@ -604,7 +621,7 @@ def _free_anchor(zone: _DraftZone, clearance: float = 0.4) -> Point2:
 def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list[WorldProblem]]:
     """Parse and validate world YAML text; returns the world (None if any problem) and every problem."""
     try:
-        data, lines, repeated = _compose_with_lines(text)
+        data, lines, repeated = compose_yaml(text)
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line = mark.line + 1 if mark is not None else None
@@ -612,6 +629,8 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
         return None, [WorldProblem(source, "(document)", line, f"broken YAML: {detail}")]
     except yaml.YAMLError as error:
         return None, [WorldProblem(source, "(document)", None, f"broken YAML: {error}")]
+    except InputLimitError as error:
+        return None, [WorldProblem(source, "(document)", error.line, str(error))]
     problems = _Problems(source, lines)
     for path in repeated:
         problems.items.append(WorldProblem(source, format_path(path[:-1]), problems.line_of(path),
@@ -626,10 +645,14 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
     if not isinstance(raw_zones, list) or not raw_zones:
         problems.add(("zones",) if "zones" in data else (), "zones must be a non-empty list of zones")
         raw_zones = []
+    if len(raw_zones) > MAX_ZONES:
+        problems.add(("zones",), f"the world has {len(raw_zones):,} zones; at most {MAX_ZONES:,} are supported")
+        return None, problems.items
     zones = [zone for index, item in enumerate(raw_zones)
              if (zone := _read_zone(item, ("zones", index), problems)) is not None]
     obstacles = [obstacle for index, item in enumerate(_read_list(data, "obstacles", (), problems))
                  if (obstacle := _read_obstacle(item, ("obstacles", index), problems)) is not None]
+    _check_extent(zones, problems)
     door_frames = _validate(zones, obstacles, problems)
     if problems.items:
         return None, sorted(problems.items, key=lambda problem: problem.line or 0)
@@ -642,11 +665,13 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
                                 e.description, e.aliases) for e in zone.entities)
         built_zones.append(Zone(zone.name, zone.type, zone.description, zone.aliases, zone.tags,  # type: ignore[arg-type]
                                 zone.boundary, doors, entities, _free_anchor(zone)))
-    zone_polygons = {zone.name: zone.polygon for zone in zones}
+    zone_tree = shapely.STRtree([zone.polygon for zone in zones])
     built_obstacles = []
     for obstacle in obstacles:
         footprint = Polygon(obstacle.footprint)
-        home = next((zname for zname, polygon in zone_polygons.items() if polygon.intersects(footprint)), None)
+        # The first zone in file order that the footprint touches is its home.
+        touching = zone_tree.query(footprint, predicate="intersects")
+        home = zones[int(touching.min())].name if len(touching) else None
         built_obstacles.append(Obstacle(obstacle.name, obstacle.footprint, obstacle.type,  # type: ignore[arg-type]
                                         obstacle.description, home))
     fingerprint = hashlib.sha1(text.encode("utf-8")).hexdigest()
@@ -655,13 +680,18 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
     return World(name, description, built_zones, built_obstacles, source_path, fingerprint), []  # type: ignore[arg-type]
 
 
+def _read_world_text(file: Path) -> str:
+    """The file's text, refusing devices, pipes and files over MAX_WORLD_FILE_BYTES before reading."""
+    return read_text_bounded(file, MAX_WORLD_FILE_BYTES, "world file")
+
+
 def check_world_file(path: str | os.PathLike[str]) -> list[WorldProblem]:
     """Every problem in a world file (empty when it loads)."""
     file = Path(path)
     try:
-        text = file.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        return [WorldProblem(str(file), "(document)", None, f"cannot read the file: {error}")]
+        text = _read_world_text(file)
+    except InputLimitError as error:
+        return [WorldProblem(str(file), "(document)", None, str(error))]
     return parse_world(text, str(file))[1]
 
 
@@ -705,13 +735,18 @@ def load_world(name_or_path: str | os.PathLike[str]) -> World:
         key = (str(path), stat.st_mtime_ns, stat.st_size)
         if key in _LOADED:
             return _LOADED[key]
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        raise WorldError(f"cannot read world file {path}: {error}") from error
+        text = _read_world_text(path)
+    except OSError as error:
+        raise WorldError(f"cannot read world file {path}: {error.strerror}") from None
+    except InputLimitError as error:
+        raise WorldError(str(error)) from None
     world, problems = parse_world(text, str(path))
     if world is None:
         count = len(problems)
+        if count == 1:
+            # One problem fits on one line, which is what a script or a terminal shows first.
+            raise WorldError(f"world file {problems[0]}", problems)
         listing = "\n".join(f"  {problem}" for problem in problems)
-        raise WorldError(f"world file {path} has {count} problem{'s' if count != 1 else ''}:\n{listing}", problems)
+        raise WorldError(f"world file {path} has {count} problems:\n{listing}", problems)
     _LOADED[key] = world
     return world

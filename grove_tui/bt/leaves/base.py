@@ -10,9 +10,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from grove_tui.bt.runtime import (
-    FAILURE, RUNNING, SUCCESS, BlackboardRef, ConditionNode, StatefulActionNode, SyncActionNode,
-)
+from grove_tui.bt.blackboard import BlackboardRef
+from grove_tui.bt.tree_node import FAILURE, RUNNING, SUCCESS, ConditionNode, StatefulActionNode, SyncActionNode
 from grove_tui.bt.xml import BTError
 
 __all__ = ["AgentCondition", "AgentSyncAction", "AgentStatefulAction", "FAILURE", "RUNNING", "SUCCESS",

@@ -40,6 +40,21 @@ class GenerationRequest:
     world: str
     preset: str
     seed: int
+    # Head counts the user set by group label, re-applied (re-planned, no model call) after generating.
+    counts: tuple[tuple[str, int], ...] = ()
+
+
+def counts_by_index(groups: list[dict[str, Any]], counts: dict[str, int]) -> tuple[dict[int, int], list[str]]:
+    """The label -> count edits as the pipeline's group index -> count, and the labels no group has now."""
+    by_index: dict[int, int] = {}
+    found: set[str] = set()
+    for index, group in enumerate(groups):
+        label = str(group.get("label", ""))
+        if label in counts:
+            found.add(label)
+            if int(counts[label]) != int(group.get("count", 0)):
+                by_index[index] = int(counts[label])
+    return by_index, [label for label in counts if label not in found]
 
 
 class TokenBuffer:
@@ -187,9 +202,17 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
             if worker.is_cancelled:
                 cancel.set()
 
+        note = ""
         try:
             generated = self.grove.backend.generate(
                 request.world, request.preset, request.prompt, request.seed, on_event=on_event, cancel=cancel)
+            if request.counts and not cancel.is_set():
+                edits, missing = counts_by_index(list(generated.result.report.get("groups", ())), dict(request.counts))
+                if edits:
+                    generated = self.grove.backend.replan(generated, edits, on_event=on_event, cancel=cancel)
+                kept = ", ".join(f"{label} {count}" for label, count in request.counts if label not in missing)
+                note = (f"kept counts: {kept}" if kept else "") + (
+                    f"{'; ' if kept else ''}no group named {', '.join(missing)} this time" if missing else "")
         except Exception as exc:
             buffer.flush()
             if cancel.is_set() or worker.is_cancelled:
@@ -201,7 +224,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         if cancel.is_set() or worker.is_cancelled:
             self.post_message(msg.GenerationStopped(current["stage"]))
         else:
-            self.post_message(msg.GenerationSucceeded(generated))
+            self.post_message(msg.GenerationSucceeded(generated, note))
 
     # messages -------------------------------------------------------------------------------------
     def on_stage_started(self, message: msg.StageStarted) -> None:
@@ -228,7 +251,9 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
 
         self._generating = False
         self.grove.generated = message.generated
-        self.app.switch_screen(InspectScreen(message.generated))
+        self.app.switch_screen(InspectScreen(message.generated, count_edits=dict(self.request.counts)))
+        if message.note:
+            self.app.notify(message.note, title="Counts", timeout=6)
 
     def on_generation_failed(self, message: msg.GenerationFailed) -> None:
         self._generating = False

@@ -14,10 +14,12 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Footer, Static, TextArea, Tree
 
+from grove_tui.bt.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
+from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summary
 from grove_tui.tui.widgets.map_raster import Overlay
 from grove_tui.tui.widgets.map_view import MapView
 
@@ -81,15 +83,11 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
 
 
 def parse_points(text: str) -> np.ndarray:
-    """BT.CPP point lists: 'x,y;x,y;...'."""
-    points = []
-    for item in text.split(";"):
-        parts = item.replace(" ", "").split(",")
-        if len(parts) == 2:
-            try:
-                points.append((float(parts[0]), float(parts[1])))
-            except ValueError:
-                continue
+    """A BT.CPP point list ('x,y;x,y;...') as an (N, 2) array; malformed text shows no points."""
+    try:
+        points = parse_point_list(text)
+    except ValueError:
+        points = ()
     return np.array(points, dtype=np.float64).reshape(-1, 2)
 
 
@@ -100,14 +98,21 @@ class InspectScreen(Screen[None]):
 Left: the behavior trees, by group and agent, with each node's ports. Right: the map with spawns
 `○`, goals `◎`, injected waypoints `·`, the robot's path and any velocity-field arrows. Move through
 the tree to highlight an agent's route or a node's target on the map. **x** shows the selected
-agent's XML, **p** plays the simulation, **g** regenerates, **c** edits each group's head count
-and re-plans (same trees, no model call), **e** exports the bundle.
+agent's XML, **a** shows the grounding report (per group: what the sentence asked beside what
+the scenario does, ✓ or ✗ with the reason), **p** plays the simulation, **g** regenerates with the next seed (asking whether to
+keep your count edits), **c** edits each group's head count and re-plans (same trees, no model
+call), **e** exports the bundle. **Escape** goes back to setup; it asks first when the scenario
+has not been exported (it stays in the recent runs, **ctrl+o** on setup).
 """
 
     BINDINGS = [
         Binding("p", "simulate", "Play", id="inspect.simulate", tooltip="Simulate this scenario"),
         Binding("x", "toggle_xml", "XML", id="inspect.xml", tooltip="Show the selected agent's BT XML"),
-        Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Run generation again"),
+        Binding("a", "toggle_grounding", "Grounding", id="inspect.grounding",
+                tooltip="What the sentence asked beside what the scenario does, per group", show=False),
+        # Not in the footer: at 80 columns it would push out quit and help; the trees' border shows
+        # the verdict with the key ("2/3 groups ✓ · a"), and F1 lists it.
+        Binding("g", "regenerate", "Regenerate", id="inspect.regenerate", tooltip="Generate again with the next seed"),
         Binding("c", "edit_counts", "Counts", id="inspect.counts",
                 tooltip="Edit each group's head count and re-plan, without the model"),
         Binding("e", "export", "Export", id="inspect.export", tooltip="Export the bundle"),
@@ -116,9 +121,14 @@ and re-plans (same trees, no model call), **e** exports the bundle.
         Binding("escape", "back", "Back", id="inspect.back", tooltip="Back to setup"),
     ]
 
-    def __init__(self, generated: GeneratedScenario) -> None:
+    def __init__(self, generated: GeneratedScenario, *, reopened: bool = False,
+                 count_edits: dict[str, int] | None = None) -> None:
         super().__init__()
         self.generated = generated
+        # A reopened run is already where the user found it; a new one asks before Escape leaves it.
+        self.unsaved = not reopened
+        # Head counts the user set, by group label, offered again when regenerating with a new seed.
+        self.count_edits: dict[str, int] = dict(count_edits or {})
         self._overlay = base_overlay(generated)
         self._selected_node: BTNode | None = None
 
@@ -137,6 +147,9 @@ and re-plans (same trees, no model call), **e** exports the bundle.
                 xml.border_title = "XML"
                 xml.display = False
                 yield xml
+                grounding = GroundingPanel(self.generated.result.report, id="grounding")
+                grounding.display = False
+                yield grounding
                 yield Static("", id="node-detail", markup=False)
             world_map = MapView(id="inspect-map")
             world_map.border_title = f"{scenario.world} · {scenario.preset}"
@@ -158,12 +171,12 @@ and re-plans (same trees, no model call), **e** exports the bundle.
         world_map.border_subtitle = self.generated.prompt[:70]
         tree = self.query_one("#bt-tree", BTTree)
         tree.border_title = f"Trees · {len(self.generated.scenario.agents)} agents"
+        # The verdict shows on the trees' border, so a ✗ is seen without opening the report.
+        counted = summary(read_grounding(self.generated.result.report))
+        tree.border_subtitle = f"{counted} · a" if counted else ""
+        self.query_one("#grounding", GroundingPanel).show(self.generated.result.report)
         self.query_one("#node-detail", Static).update("")
-        xml = self.query_one("#xml", TextArea)
-        if xml.display:
-            xml.display = False
-            tree.display = True
-        tree.focus()
+        self._show_side("tree")
         if tree.agent_nodes:
             # Start on the first agent so its route is highlighted straight away.
             self.call_after_refresh(self._select_first_agent)
@@ -202,7 +215,9 @@ and re-plans (same trees, no model call), **e** exports the bundle.
         return [
             ("Play simulation", "Simulate this scenario", self.action_simulate),
             ("Toggle XML view", "Show the selected agent's BehaviorTree.CPP XML", self.action_toggle_xml),
-            ("Regenerate", "Run the generation again with the same prompt", self.action_regenerate),
+            ("Toggle grounding report", "Per group: what the sentence asked beside what the scenario does",
+             self.action_toggle_grounding),
+            ("Regenerate", "Generate again with the same prompt and the next seed", self.action_regenerate),
             ("Edit counts and re-plan", "Change each group's head count; the trees are kept, the model is not called",
              self.action_edit_counts),
             ("Export bundle", "Write the scenario bundle to the export folder", self.action_export),
@@ -249,24 +264,29 @@ and re-plans (same trees, no model call), **e** exports the bundle.
         xml.border_title = f"XML · agent {agent.id}" if agent is not None else "XML"
 
     # actions -----------------------------------------------------------------------------------------
-    def action_toggle_xml(self) -> None:
-        xml = self.query_one("#xml", TextArea)
-        tree = self.query_one("#bt-tree", BTTree)
-        showing = not xml.display
-        xml.display = showing
-        tree.display = not showing
-        if showing:
+    def _show_side(self, which: str) -> None:
+        """Show one of the side column's views (tree, xml, grounding) and focus it."""
+        views = {"tree": self.query_one("#bt-tree", BTTree), "xml": self.query_one("#xml", TextArea),
+                 "grounding": self.query_one("#grounding", GroundingPanel)}
+        for name, widget in views.items():
+            widget.display = name == which
+        if which == "xml":
             self._show_xml()
-            xml.focus()
-        else:
-            tree.focus()
+        views[which].focus()
+
+    def action_toggle_xml(self) -> None:
+        self._show_side("tree" if self.query_one("#xml", TextArea).display else "xml")
+
+    def action_toggle_grounding(self) -> None:
+        self._show_side("tree" if self.query_one("#grounding", GroundingPanel).display else "grounding")
 
     def action_focus_map(self) -> None:
         self.query_one("#inspect-map", MapView).focus()
 
     def action_focus_tree(self) -> None:
         xml = self.query_one("#xml", TextArea)
-        (xml if xml.display else self.query_one("#bt-tree", BTTree)).focus()
+        grounding = self.query_one("#grounding", GroundingPanel)
+        (xml if xml.display else grounding if grounding.display else self.query_one("#bt-tree", BTTree)).focus()
 
     def action_simulate(self) -> None:
         from grove_tui.tui.screens.simulation import SimulationScreen
@@ -274,10 +294,25 @@ and re-plans (same trees, no model call), **e** exports the bundle.
         self.app.push_screen(SimulationScreen(self.generated))
 
     def action_regenerate(self) -> None:
+        from grove_tui.tui.screens.choice import Choice, ChoiceScreen
+
+        seed = self.generated.seed + 1
+        if not self.count_edits:
+            self._regenerate(seed, keep_counts=False)
+            return
+        edits = ", ".join(f"{label} {count}" for label, count in self.count_edits.items())
+        question = ChoiceScreen(
+            f"Regenerate with seed {seed}",
+            f"You changed the head counts ({edits}). Keep them in the new scenario? Groups are matched by label.",
+            [Choice("y", "Keep my counts", "keep"), Choice("n", "Model's counts", "drop")])
+        self.app.push_screen(question, lambda answer: answer and self._regenerate(seed, keep_counts=answer == "keep"))
+
+    def _regenerate(self, seed: int, keep_counts: bool) -> None:
         from grove_tui.tui.screens.generation import GenerationRequest, GenerationScreen
 
         g = self.generated
-        self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, g.seed)))
+        counts = tuple(self.count_edits.items()) if keep_counts else ()
+        self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, seed, counts)))
 
     def action_edit_counts(self) -> None:
         from grove_tui.tui.screens.counts import CountsScreen
@@ -287,6 +322,12 @@ and re-plans (same trees, no model call), **e** exports the bundle.
     def _counts_edited(self, generated: GeneratedScenario | None) -> None:
         if generated is None:
             return
+        before = list(self.generated.result.report.get("groups", ()))
+        after = list(generated.result.report.get("groups", ()))
+        for old, new in zip(before, after):
+            if int(old.get("count", 0)) != int(new.get("count", 0)):
+                self.count_edits[str(new.get("label", ""))] = int(new.get("count", 0))
+        self.unsaved = True
         self.generated = generated
         self.grove.generated = generated
         self._show_generated()
@@ -295,7 +336,23 @@ and re-plans (same trees, no model call), **e** exports the bundle.
                     title="Re-planned", timeout=6)
 
     def action_back(self) -> None:
-        self.app.pop_screen()
+        from grove_tui.tui.screens.choice import Choice, ChoiceScreen
+
+        if not self.unsaved:
+            self.app.pop_screen()
+            return
+        question = ChoiceScreen(
+            "Leave this scenario?",
+            f"It has not been exported. It stays saved in the recent runs (ctrl+o on setup) as "
+            f"{self.generated.bundle_dir.name}.",
+            [Choice("y", "Leave", "leave"), Choice("e", "Export first", "export"), Choice("n", "Stay", "stay")])
+        self.app.push_screen(question, self._back_answered)
+
+    def _back_answered(self, answer: str | None) -> None:
+        if answer == "leave":
+            self.app.pop_screen()
+        elif answer == "export":
+            self.action_export()
 
     def action_export(self) -> None:
         self.notify("Exporting…", title="Export", timeout=2)
@@ -314,6 +371,7 @@ and re-plans (same trees, no model call), **e** exports the bundle.
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
 
+        self.unsaved = False
         self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
 
     def on_export_failed(self, message: msg.ExportFailed) -> None:

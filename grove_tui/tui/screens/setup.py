@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from textual import on, work
@@ -9,7 +10,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
-from textual.widgets import Button, Footer, OptionList, Static
+from textual.widgets import Button, Footer, Input, Label, OptionList, Static
 from textual.widgets.option_list import Option
 
 from grove_tui.errors import describe_error
@@ -20,14 +21,19 @@ from grove_tui.tui.widgets.prompt_input import PromptInput
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
 
+SEED_DIGITS = 9  # any seed a user types fits numpy's 32-bit seeds
+
 
 class SetupScreen(Screen[None]):
     HELP = """\
 ## Setup
 
 Choose a **world** (the map on the right previews it) and a **preset** (what kind of scenario the
-model writes), type a prompt and press **Enter** or **ctrl+g** to generate. The models panel shows
-which GGUF file serves each role and whether it is loaded yet.
+model writes), type a prompt and press **Enter** or **ctrl+g** to generate. The **seed** beside the
+prompt makes a run reproducible (same world, preset, prompt, seed and model give the same
+scenario); **ctrl+s** jumps to it. **ctrl+o** lists the recent runs saved under the runs folder and
+reopens one in the inspect screen. The models panel shows which GGUF file serves each role and
+whether it is loaded yet.
 """
 
     # priority: the prompt (an Input) has focus by default and binds ctrl+w to "delete word"; the
@@ -37,6 +43,9 @@ which GGUF file serves each role and whether it is loaded yet.
                 priority=True),
         Binding("ctrl+w", "focus('worlds')", "Worlds", id="setup.worlds", tooltip="Choose the world", priority=True),
         Binding("ctrl+r", "focus('presets')", "Presets", id="setup.presets", tooltip="Choose the preset",
+                priority=True),
+        Binding("ctrl+o", "recent_runs", "Recent", id="setup.recent", tooltip="Reopen a saved run", priority=True),
+        Binding("ctrl+s", "focus('seed')", "Seed", id="setup.seed", tooltip="Change the seed", show=False,
                 priority=True),
         Binding("ctrl+l", "focus('prompt')", "Prompt", id="setup.prompt", tooltip="Type the prompt", show=False,
                 priority=True),
@@ -64,6 +73,9 @@ which GGUF file serves each role and whether it is loaded yet.
             yield preview
         with Horizontal(id="prompt-row"):
             yield PromptInput(self.grove.history, placeholder="Describe the crowd… (Enter to generate)", id="prompt")
+            yield Label("seed", id="seed-label")
+            yield Input(str(self.grove.settings.generation.seed), id="seed", restrict=r"[0-9]*", max_length=SEED_DIGITS,
+                        tooltip="Seed of the generation and the simulation (ctrl+s)")
             yield Button("Generate", id="generate", variant="primary")
         yield Footer(compact=True, show_command_palette=False)
 
@@ -77,7 +89,23 @@ which GGUF file serves each role and whether it is loaded yet.
             ("Generate scenario", "Run the pipeline on the prompt", self.action_generate),
             ("Choose world", "Focus the world list", lambda: self.action_focus("worlds")),
             ("Choose preset", "Focus the preset list", lambda: self.action_focus("presets")),
+            ("Recent runs", "Reopen a scenario saved under the runs folder", self.action_recent_runs),
+            ("Change seed", "Focus the seed field", lambda: self.action_focus("seed")),
         ]
+
+    def action_recent_runs(self) -> None:
+        from grove_tui.tui.screens.recent import RecentRunsScreen
+
+        def chosen(bundle_dir: Path | None) -> None:
+            if bundle_dir is not None:
+                self.grove.open_bundle(bundle_dir)
+
+        self.app.push_screen(RecentRunsScreen(), chosen)
+
+    @property
+    def seed(self) -> int | None:
+        text = self.query_one("#seed", Input).value.strip()
+        return int(text) if text else None
 
     def action_focus(self, widget_id: str) -> None:
         self.query_one(f"#{widget_id}").focus()
@@ -198,6 +226,7 @@ which GGUF file serves each role and whether it is loaded yet.
         return presets.get_option_at_index(presets.highlighted).id
 
     @on(PromptInput.Submitted, "#prompt")
+    @on(Input.Submitted, "#seed")
     @on(Button.Pressed, "#generate")
     def action_generate(self) -> None:
         from grove_tui.tui.screens.generation import GenerationRequest, GenerationScreen
@@ -214,5 +243,10 @@ which GGUF file serves each role and whether it is loaded yet.
             return
         self.grove.remember_prompt(prompt)
         prompt_box.reset_history_position()
-        request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=self.grove.settings.generation.seed)
+        seed = self.seed
+        if seed is None:
+            self.notify("Type a seed (a whole number, e.g. 0).", title="Seed", severity="warning")
+            self.query_one("#seed", Input).focus()
+            return
+        request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
         self.app.push_screen(GenerationScreen(request))

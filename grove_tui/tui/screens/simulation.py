@@ -30,33 +30,52 @@ if TYPE_CHECKING:
 
 UI_SWITCH_INTERVAL = 0.001
 BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
-COUNTER_LABELS = {
-    "reached_goals": "reached goals",
-    "in_queue": "in queue",
-    "served": "served",
-    "evacuated": "evacuated",
-    "collisions": "collisions",
-    "robot_collisions": "robot contacts",
-    "closest_robot_approach": "closest to robot",
-    "finished": "trees finished",
-}
+# metrics.json's keys, in the order the panel lists them; a key the run does not have is left out
+# (no robot: no robot metrics; no queue: no queue metrics).
+LIVE_METRICS = (
+    "goal_reach_rate",
+    "agent_overlaps",
+    "wall_penetrations",
+    "queue_members",
+    "queue_served",
+    "mean_time_in_queue",
+    "evacuated",
+    "minimum_distance_to_people",
+    "robot_on_person_collision",
+    "person_on_robot_collision",
+)
+METRICS_INTERVAL = 1.0  # seconds between recomputations of the counters (they read the whole run so far)
+METRICS_ROWS_TIMEOUT = 10.0
 
 
 def speed_label(speed: float) -> str:
     return "max" if speed == MAX_SPEED else f"{speed:g}x"
 
 
-def counter_lines(counters: Any) -> list[str]:
-    items = counters.items() if isinstance(counters, dict) else vars(counters).items()
+def metric_text(value: float) -> str:
+    """A metric as the panel shows it: counts as integers, the rest with two decimals, NaN as a dash."""
+    if not np.isfinite(value):
+        return "—"
+    return f"{int(value)}" if float(value).is_integer() else f"{value:.2f}"
+
+
+def metrics_text(values: dict[str, float], t: float, width: int) -> str:
+    """metrics.json's own names and numbers for the run so far, values right-aligned in `width` columns.
+
+    A name too long to share its line with the value (the narrow layout) gets the value on the next line.
+    """
+    width = max(width, 12)
     lines = []
-    for key, value in items:
-        label = COUNTER_LABELS.get(key, key.replace("_", " "))
-        if isinstance(value, float):
-            text = "—" if not np.isfinite(value) else f"{value:.2f} m" if "approach" in key or "distance" in key else f"{value:.2f}"
+    for key in LIVE_METRICS:
+        if key not in values:
+            continue
+        value = metric_text(values[key])
+        if len(key) + 1 + len(value) <= width:
+            lines.append(key + value.rjust(width - len(key)))
         else:
-            text = str(value)
-        lines.append(f"{label:<17}{text:>8}")
-    return lines
+            lines.extend([key[:width], value.rjust(width)])
+    lines.append(f"metrics.json to t = {t:.1f} s")
+    return "\n".join(lines)
 
 
 class SimMapView(MapView):
@@ -119,6 +138,9 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_table = self._build_colours()
         self._last_snapshot: Snapshot | None = None
         self._switch_interval = sys.getswitchinterval()
+        self.metrics: dict[str, float] = {}
+        self.metrics_step = -1  # the simulation step the shown metrics were computed at
+        self._metrics_busy = False
 
     @property
     def grove(self) -> GroveApp:
@@ -134,8 +156,8 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
                 status = Static("loading simulation…", id="sim-status")
                 status.border_title = "Simulation"
                 yield status
-                counters = Static("", id="counters")
-                counters.border_title = "Counters"
+                counters = Static("", id="counters", markup=False)
+                counters.border_title = "Counters (metrics.json)"
                 yield counters
                 tree = BTTree("agent", id="sim-tree")
                 tree.border_title = "Agent tree (a: select)"
@@ -158,6 +180,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         sys.setswitchinterval(UI_SWITCH_INTERVAL)
         self.start_simulation()
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
+        self.set_interval(METRICS_INTERVAL, self.refresh_metrics, name="sim-metrics")
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
         return [
@@ -244,10 +267,58 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
             f"t = {float(frame.t):7.2f} s",
             f"agents {len(frame.ids)} · robot {robot}",
         ]
+        in_queue = getattr(frame.counters, "in_queue", 0)
+        if in_queue:
+            lines.append(f"in queue now {in_queue}")
         if self._selected_agent >= 0:
             lines.append(f"selected agent {self._selected_agent}")
         self.query_one("#sim-status", Static).update("\n".join(lines))
-        self.query_one("#counters", Static).update("\n".join(counter_lines(frame.counters)))
+
+    # counters: metrics.json's function on the run so far, off the UI thread ------------------------------
+    def refresh_metrics(self) -> None:
+        controller = self.controller
+        snapshot = None if controller is None else controller.latest
+        if snapshot is None or self._metrics_busy or snapshot.frame.step == self.metrics_step:
+            return
+        self._metrics_busy = True
+        self.compute_metrics(controller)
+
+    @work(thread=True, exclusive=True, group="metrics", exit_on_error=False, description="computing counters")
+    def compute_metrics(self, controller: SimulationController) -> None:
+        import threading
+
+        taken: dict[str, Any] = {}
+        done = threading.Event()
+
+        def take(simulation: Any) -> None:
+            # In the simulation thread, between steps: rows, events and step all belong to one instant.
+            taken["step"] = simulation.step_count
+            taken["t"] = float(simulation.frame().t)
+            taken["rows"] = simulation.recorder.to_array()
+            taken["events"] = list(simulation.events)
+
+        def reply(result: Any) -> None:
+            taken["error"] = result if isinstance(result, Exception) else None
+            done.set()
+
+        controller.send("call", take, reply)
+        try:
+            if not done.wait(METRICS_ROWS_TIMEOUT) or taken.get("error") is not None:
+                raise RuntimeError(f"cannot read the run: {taken.get('error') or 'the simulation did not answer'}")
+            values = self.grove.backend.run_metrics(self.generated, taken["rows"], taken["events"])
+        except Exception as exc:  # a metrics bug must show in the panel, not stop the simulation
+            self.post_message(msg.MetricsComputed(-1, 0.0, {}, f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(msg.MetricsComputed(taken["step"], taken["t"], values))
+
+    def on_metrics_computed(self, message: msg.MetricsComputed) -> None:
+        self._metrics_busy = False
+        counters = self.query_one("#counters", Static)
+        if message.error:
+            counters.update(f"✗ {message.error}")
+            return
+        self.metrics, self.metrics_step = message.values, message.step
+        counters.update(metrics_text(message.values, message.t, counters.content_size.width))
 
     # actions ---------------------------------------------------------------------------------------
     def _send(self, *command: Any) -> None:
@@ -335,6 +406,11 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
 
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
+        from grove_tui.tui.screens.inspect import InspectScreen
+
+        for screen in self.app.screen_stack:  # the inspect screen below need not ask before leaving now
+            if isinstance(screen, InspectScreen) and screen.generated is self.generated:
+                screen.unsaved = False
 
         self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -10,6 +9,10 @@ from rich.style import Style
 from rich.text import Text
 from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
+
+from grove_tui.bt.document import TreeElement
+from grove_tui.bt.xml import read_tree
+from grove_tui.errors import BTError
 
 STATUS_CLASSES = {
     "RUNNING": "bt--running",
@@ -19,7 +22,6 @@ STATUS_CLASSES = {
     "SKIPPED": "bt--idle",
 }
 LONG_PORT_CHARS = 18
-STRUCTURAL_TAGS = {"root", "BehaviorTree", "TreeNodesModel"}
 
 
 @dataclass(frozen=True)
@@ -48,13 +50,9 @@ def node_label(name: str, ports: dict[str, str]) -> Text:
     return label
 
 
-def behavior_trees(xml_text: str) -> list[ET.Element]:
-    """The BehaviorTree elements of a BT.CPP v4 document, main tree first."""
-    root = ET.fromstring(xml_text)
-    trees = [root] if root.tag == "BehaviorTree" else root.findall("BehaviorTree")
-    main = root.get("main_tree_to_execute")
-    trees.sort(key=lambda t: t.get("ID") != main)
-    return trees
+def behavior_trees(xml_text: str) -> list[TreeElement]:
+    """The BehaviorTree elements of a BT.CPP v4 document, main tree first (hardened reader: BTError)."""
+    return read_tree(xml_text, "tree").ordered_trees()
 
 
 def path_key(path: tuple[int, ...] | str) -> str:
@@ -92,23 +90,21 @@ running, success, failure.
     def add_agent_tree(self, parent: TreeNode[BTNode], agent_id: int, xml_text: str, expand: bool = False) -> None:
         try:
             trees = behavior_trees(xml_text)
-        except ET.ParseError as exc:
-            parent.add_leaf(Text(f"unreadable XML: {exc}", style="italic"), BTNode("node", agent_id, "error"))
+        except BTError as exc:
+            parent.add_leaf(Text(f"unreadable tree: {exc}", style="italic"), BTNode("node", agent_id, "error"))
             return
         for tree_index, tree in enumerate(trees):
             container = parent if tree_index == 0 else parent.add(
                 Text(f"SubTree {tree.get('ID', '')}", style="italic"), BTNode("node", agent_id, tree.get("ID", "")))
-            for child_index, element in enumerate(tree):
+            for child_index, element in enumerate(tree.children):
                 self._add_element(container, agent_id, element, (child_index,) if tree_index == 0 else (), expand)
 
-    def _add_element(self, parent: TreeNode[BTNode], agent_id: int, element: ET.Element,
+    def _add_element(self, parent: TreeNode[BTNode], agent_id: int, element: TreeElement,
                      path: tuple[int, ...], expand: bool) -> None:
-        if element.tag in STRUCTURAL_TAGS:
-            return
-        ports = dict(element.attrib)
-        data = BTNode("node", agent_id, element.tag, path, ports)
-        label = node_label(element.tag, ports)
-        children = [child for child in element if child.tag not in STRUCTURAL_TAGS]
+        ports = dict(element.attributes)
+        data = BTNode("node", agent_id, element.id, path, ports)
+        label = node_label(element.id, ports)
+        children = element.children
         if not children:
             node = parent.add_leaf(label, data)
         else:

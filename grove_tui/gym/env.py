@@ -1,0 +1,415 @@
+"""`grove/SocialNav-v0`: a robot driven by a policy through a generated pedestrian scenario.
+
+The pedestrians run exactly as in the product (behavior trees ticking at 10 Hz, numba SFM at dt,
+reactions to the robot); the policy replaces the robot's scripted path with a velocity command held
+for one control period.
+
+Observation (a Dict; all float32 except the patch; frame as in observation.py):
+    robot        (7,)    vx, vy (frame), cos(yaw), sin(yaw) (world), radius, max speed, share of time left
+    goal         (3,)    x, y of the goal (frame), distance to it
+    waypoint     (3,)    x, y (frame) and distance of the robot's subgoal on its planned path (Theta* on the
+                         scenario's grid), as arena-rosnav's training set-ups give a global planner's
+                         subgoal: the path's points are passed in order, each once the robot is within
+                         WAYPOINT_REACHED of it or can drive straight to the next one (its body clear of
+                         every wall); when the robot was pushed where it cannot drive straight to that
+                         point, the subgoal is the latest earlier point it can reach straight
+    pedestrians  (K, 13) the K nearest people within sensor range, nearest first; columns
+                         present, x, y, vx, vy, radius, gap (centre distance minus both radii), then the
+                         one-hot behavior (Regular, Impassive, Surprised, Scared, Curious, Threatening);
+                         rows without a person are zero
+    occupancy    (P, P)  uint8, 1 = blocked; cell [i, j] at frame x = (j - (P-1)/2) res, y = (i - (P-1)/2) res
+
+Action (Box, physical units): unicycle (v, w) with v in [0, max speed] m/s and w in [-max_angular_speed,
+max_angular_speed] rad/s; holonomic (vx, vy) in the world frame, each in [-max speed, max speed], the
+norm clipped to max speed by the simulator.
+
+terminated: the robot reached its goal (within goal_tolerance) or collided (a gap to a person below
+the HuNavSim evaluator's 2 cm, or its body overlapping a wall); truncated: the time limit passed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from collections.abc import Iterable
+from pathlib import Path
+from typing import Any
+
+import gymnasium
+import numpy as np
+from gymnasium import spaces
+
+from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metrics
+from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
+from grove_tui.errors import GymError
+from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
+                                       occupancy_patch, rotation, segment_clear, wall_distance)
+from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
+
+ENV_ID = "grove/SocialNav-v0"
+# HuNavSim evaluator's completion rule: within goal radius (0.3 m) + 0.3 m of the goal.
+GOAL_TOLERANCE = 0.6
+# Without a stated limit an episode may last twice the planned path at full speed, plus time to wait
+# for people to clear a door; never less than TIME_LIMIT_FLOOR.
+TIME_LIMIT_FACTOR = 2.0
+TIME_LIMIT_SLACK = 10.0
+TIME_LIMIT_FLOOR = 20.0
+WAYPOINT_REACHED = 0.5  # metres: a path point this close counts as passed
+POSITION_LIMIT = 1.0e4  # metres; observation bounds, far beyond any world
+
+
+class SocialNavEnv(gymnasium.Env):
+    """A Gymnasium environment over GROVE scenarios (see the module docstring for spaces and ends).
+
+    Scenarios: `bundles` (one bundle folder or a list), or `world`, `preset`, `prompt` and `seeds`,
+    which generates one scenario per seed through the services layer and caches it. Each reset loads
+    the next scenario in turn; reset(seed=s) starts the turn at scenario s modulo their number.
+    Everything else is deterministic: the same seeds and actions give the same observations. With
+    start_jitter > 0 the robot starts up to that many metres from the scenario's start, drawn from the
+    env's seeded generator (variety for training and evaluation).
+    """
+
+    metadata = {"render_modes": []}
+
+    def __init__(self, bundles: str | os.PathLike[str] | Iterable[str | os.PathLike[str]] | None = None, *,
+                 world: str | None = None, preset: str | None = None, prompt: str | None = None,
+                 seeds: Iterable[int] = (0,), cache: str | os.PathLike[str] | None = None,
+                 kinematics: str = "unicycle", control_period: float = 0.2, sim_dt: float = 0.05,
+                 time_limit: float | None = None, max_angular_speed: float = 1.5,
+                 goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
+                 reward: RewardWeights | dict | None = None,
+                 observation: ObservationConfig | dict | None = None, metrics_every: int = 1) -> None:
+        super().__init__()
+        if kinematics not in KINEMATICS:
+            raise GymError(f"unknown kinematics {kinematics!r}", hint=f"use one of {', '.join(KINEMATICS)}")
+        if not (sim_dt > 0 and math.isfinite(sim_dt)):
+            raise GymError(f"sim_dt must be a positive number of seconds, got {sim_dt!r}")
+        substeps = round(control_period / sim_dt) if control_period > 0 else 0
+        if substeps < 1 or abs(substeps * sim_dt - control_period) > 1e-9:
+            raise GymError(f"control_period {control_period!r} s must be a positive multiple of sim_dt {sim_dt} s")
+        if time_limit is not None and not (time_limit > 0 and math.isfinite(time_limit)):
+            raise GymError(f"time_limit must be a positive number of seconds or None, got {time_limit!r}")
+        if not (max_angular_speed > 0 and math.isfinite(max_angular_speed)):
+            raise GymError(f"max_angular_speed must be a positive number, got {max_angular_speed!r}")
+        if not goal_tolerance > 0:
+            raise GymError(f"goal_tolerance must be positive, got {goal_tolerance!r}")
+        if not (start_jitter >= 0 and math.isfinite(start_jitter)):
+            raise GymError(f"start_jitter must be a number of metres >= 0, got {start_jitter!r}")
+        if isinstance(metrics_every, bool) or not isinstance(metrics_every, int) or metrics_every < 0:
+            raise GymError(f"metrics_every must be a whole number >= 0 (0: only at the episode's end), "
+                           f"got {metrics_every!r}")
+        self.kinematics = kinematics
+        self.sim_dt = float(sim_dt)
+        self.substeps = int(substeps)
+        self.control_period = self.substeps * self.sim_dt
+        self.time_limit_setting = time_limit
+        self.max_angular_speed = float(max_angular_speed)
+        self.goal_tolerance = float(goal_tolerance)
+        self.start_jitter = float(start_jitter)
+        self.weights: RewardWeights = coerce(reward, RewardWeights, "reward")  # type: ignore[assignment]
+        self.obs_config: ObservationConfig = coerce(  # type: ignore[assignment]
+            observation, ObservationConfig, "observation")
+        self.metrics_every = metrics_every
+
+        if bundles is not None:
+            if world is not None or prompt is not None:
+                raise GymError("give either bundles or world/preset/prompt, not both")
+            paths = bundle_list(bundles)
+        else:
+            if world is None or preset is None or prompt is None:
+                raise GymError("no scenarios", hint="pass bundles=..., or world=, preset=, prompt= and seeds=")
+            paths = generated_scenarios(world, preset, prompt, seeds, cache=cache)
+        self.scenarios: list[LoadedScenario] = [load_scenario(p, self.obs_config.patch_resolution) for p in paths]
+        self._one_hot = [behavior_one_hot(s.behaviors) for s in self.scenarios]
+
+        max_speed = max(float(s.robot.max_vel) for s in self.scenarios)
+        self.max_speed = max_speed
+        if kinematics == "unicycle":
+            self.action_space = spaces.Box(low=np.array([0.0, -self.max_angular_speed], dtype=np.float32),
+                                           high=np.array([max_speed, self.max_angular_speed], dtype=np.float32),
+                                           dtype=np.float32)
+        else:
+            self.action_space = spaces.Box(low=-max_speed, high=max_speed, shape=(2,), dtype=np.float32)
+        k, cells = self.obs_config.pedestrians, self.obs_config.patch_cells
+        big = np.float32(POSITION_LIMIT)
+        self.observation_space = spaces.Dict({
+            "robot": spaces.Box(-big, big, shape=(7,), dtype=np.float32),
+            "goal": spaces.Box(-big, big, shape=(3,), dtype=np.float32),
+            "waypoint": spaces.Box(-big, big, shape=(3,), dtype=np.float32),
+            "pedestrians": spaces.Box(-big, big, shape=(k, len(PEDESTRIAN_COLUMNS)), dtype=np.float32),
+            "occupancy": spaces.Box(0, 1, shape=(cells, cells), dtype=np.uint8),
+        })
+        self._cursor = 0
+        self.current: LoadedScenario | None = None
+        self.sim: Any = None
+        self.episode_actions: list[tuple[float, float]] = []
+
+    # ---- episode -------------------------------------------------------------------------------
+
+    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[dict, dict]:
+        """Load the next scenario (options={"scenario": i} picks one), place the robot at its start."""
+        super().reset(seed=seed)
+        if seed is not None:
+            self._cursor = int(seed) % len(self.scenarios)
+        index = self._cursor
+        if options and "scenario" in options:
+            index = int(options["scenario"])
+            if not 0 <= index < len(self.scenarios):
+                raise GymError(f"options['scenario'] = {index} is out of range",
+                               hint=f"this environment has {len(self.scenarios)} scenarios")
+        self._cursor = (index + 1) % len(self.scenarios)
+        self.scenario_index = index
+        self.current = self.scenarios[index]
+        robot = self._jittered(self.current.robot) if self.start_jitter > 0 else self.current.robot
+        self.sim = self.current.simulation(self.sim_dt, robot=robot)
+        self.goal = np.asarray(robot.goal, dtype=np.float64)
+        self.robot_radius = float(robot.radius)
+        self.robot_max_speed = float(robot.max_vel)
+        self.path = np.asarray(robot.path if robot.path else (robot.start, robot.goal), dtype=np.float64)
+        # Face along the planned path, as a robot set down at its start would.
+        ahead = self.path[1] - self.path[0] if len(self.path) > 1 else self.goal - self.path[0]
+        self.heading = math.atan2(ahead[1], ahead[0]) if np.hypot(*ahead) > 1e-9 else 0.0
+        self.time_limit = self.time_limit_setting if self.time_limit_setting is not None else \
+            max(TIME_LIMIT_FLOOR, TIME_LIMIT_FACTOR * _path_length(self.path) / max(self.robot_max_speed, 1e-6)
+                + TIME_LIMIT_SLACK)
+        self.distance_to_goal = self._goal_distance()
+        self.waypoint_index = 1 if len(self.path) > 1 else 0
+        self.episode_steps = 0
+        self.episode_return = 0.0
+        self.outcome = ""
+        self.episode_actions = []
+        self.history = _History(capacity=int(math.ceil(self.time_limit / self.control_period)) + 2,
+                                 people=len(self.current.scenario.agents))
+        self.history.append(self.sim, self._robot_pose())
+        self._metrics: dict[str, float] = {}
+        return self._observation(), self._info({})
+
+    def step(self, action: Any) -> tuple[dict, float, bool, bool, dict]:
+        if self.sim is None:
+            raise GymError("step() before reset()", hint="call reset() first")
+        if self.outcome:
+            raise GymError(f"step() after the episode ended ({self.outcome})", hint="call reset() first")
+        command = np.asarray(action, dtype=np.float64).reshape(-1)
+        if command.shape != (2,) or not np.all(np.isfinite(command)):
+            raise GymError(f"action must be two finite numbers, got {action!r}")
+        command = np.clip(command, self.action_space.low, self.action_space.high)
+        self.episode_actions.append((float(command[0]), float(command[1])))
+        crowd = self.sim.crowd
+        collision = ""
+        closest_gap = math.inf
+        for _ in range(self.substeps):
+            if self.kinematics == "unicycle":
+                self.heading = _wrap(self.heading + command[1] * self.sim_dt)
+                crowd.command_robot(command[0] * math.cos(self.heading), command[0] * math.sin(self.heading))
+            else:
+                crowd.command_robot(command[0], command[1])
+            self.sim.step()
+            gap, collision = self._contact()
+            closest_gap = min(closest_gap, gap)
+            if collision:
+                break
+        if self.kinematics == "holonomic":
+            self.heading = float(crowd.robot_yaw)
+        self.episode_steps += 1
+        previous = self.distance_to_goal
+        self.distance_to_goal = self._goal_distance()
+        reached = self.distance_to_goal <= self.goal_tolerance and not collision
+        timed_out = self.sim.time >= self.time_limit - 1e-9 and not (reached or collision)
+        terms = self._reward_terms(previous, closest_gap, collision, reached, timed_out)
+        reward = float(sum(terms.values()))
+        self.episode_return += reward
+        self.outcome = "collision" if collision else "goal" if reached else "timeout" if timed_out else ""
+        terminated = bool(collision or reached)
+        truncated = bool(timed_out)
+        self.history.append(self.sim, self._robot_pose())
+        info = self._info(terms, collision=collision)
+        return self._observation(), reward, terminated, truncated, info
+
+    # ---- parts ---------------------------------------------------------------------------------
+
+    def _jittered(self, robot: Any) -> Any:
+        """The scenario's robot with its start moved up to start_jitter metres (uniform in the disc, drawn
+        from the env's seeded np_random) to a free cell of the planning grid; the planned path then
+        starts there, so the subgoal logic leads the robot back onto it."""
+        radius = self.start_jitter * math.sqrt(self.np_random.uniform())
+        angle = self.np_random.uniform(-math.pi, math.pi)
+        x = robot.start[0] + radius * math.cos(angle)
+        y = robot.start[1] + radius * math.sin(angle)
+        free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
+        # a free cell behind a wall (another room) is no start nearby: keep the scenario's
+        if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
+                                             self.current.walls, float(robot.radius)):
+            return robot
+        start = (float(free[0]), float(free[1]))
+        path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
+        return dataclasses.replace(robot, start=start, path=path)
+
+    def _robot_pose(self) -> tuple[float, float, float, float, float]:
+        crowd = self.sim.crowd
+        pos, vel = crowd.robot_pos, crowd.robot_vel
+        return float(pos[0]), float(pos[1]), float(self.heading), float(vel[0]), float(vel[1])
+
+    def _goal_distance(self) -> float:
+        pos = self.sim.crowd.robot_pos
+        return float(math.hypot(self.goal[0] - pos[0], self.goal[1] - pos[1]))
+
+    def observation_frame(self) -> np.ndarray:
+        return rotation(self.heading) if self.kinematics == "unicycle" else np.eye(2)
+
+    def _contact(self) -> tuple[float, str]:
+        """(smallest gap to a person, "person" | "obstacle" | "") right now."""
+        crowd = self.sim.crowd
+        pos = crowd.robot_pos
+        people = crowd.pos
+        active = np.asarray(crowd.active, dtype=bool)
+        gap = math.inf
+        if people.shape[0] and active.any():
+            gaps = np.hypot(people[:, 0] - pos[0], people[:, 1] - pos[1]) - crowd.radius - self.robot_radius
+            gap = float(gaps[active].min())
+        if gap < COLLISION_GAP:
+            return gap, "person"
+        if wall_distance(pos, self.current.walls) < self.robot_radius:
+            return gap, "obstacle"
+        return gap, ""
+
+    def _reward_terms(self, previous: float, gap: float, collision: str, reached: bool,
+                      timed_out: bool) -> dict[str, float]:
+        w = self.weights
+        intimate = max(0.0, w.intimate_distance - gap)
+        personal = max(0.0, w.personal_distance - max(gap, w.intimate_distance)) if gap < w.personal_distance else 0.0
+        return {
+            "progress": w.progress * (previous - self.distance_to_goal),
+            "intimate": -w.intimate * intimate * self.control_period,
+            "personal": -w.personal * personal * self.control_period,
+            "collision": w.collision if collision else 0.0,
+            "success": w.success if reached else 0.0,
+            "timeout": w.timeout if timed_out else 0.0,
+        }
+
+    def _observation(self) -> dict[str, np.ndarray]:
+        crowd = self.sim.crowd
+        frame = self.observation_frame()
+        pos = crowd.robot_pos
+        vel = frame @ crowd.robot_vel
+        robot = np.array([vel[0], vel[1], math.cos(self.heading), math.sin(self.heading), self.robot_radius,
+                          self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
+        goal_xy = frame @ (self.goal - pos)
+        goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
+        offset = self._subgoal(pos) - pos
+        waypoint_xy = frame @ offset
+        waypoint = np.array([waypoint_xy[0], waypoint_xy[1], math.hypot(*offset)], dtype=np.float32)
+        cfg = self.obs_config
+        people = nearest_pedestrians(pos, self.robot_radius, frame, crowd.pos, crowd.vel, crowd.radius,
+                                     np.asarray(crowd.active, dtype=bool), self._one_hot[self.scenario_index],
+                                     cfg.pedestrians, cfg.sensor_range)
+        patch = occupancy_patch(self.current.patch_grid, pos, frame, cfg.patch_cells, cfg.patch_resolution)
+        limit = np.float32(POSITION_LIMIT)
+        return {"robot": np.clip(robot, -limit, limit), "goal": np.clip(goal, -limit, limit),
+                "waypoint": np.clip(waypoint, -limit, limit),
+                "pedestrians": np.clip(people, -limit, limit), "occupancy": patch}
+
+    def _subgoal(self, pos: np.ndarray) -> np.ndarray:
+        path, walls = self.path, self.current.walls
+        clearance = self.robot_radius
+        while self.waypoint_index < len(path) - 1 and (
+                math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
+                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance)):
+            self.waypoint_index += 1
+        index = self.waypoint_index
+        if not segment_clear(pos, path[index], walls, clearance):
+            for earlier in range(index - 1, -1, -1):
+                if segment_clear(pos, path[earlier], walls, clearance):
+                    return path[earlier]
+        return path[index]
+
+    def _info(self, terms: dict[str, float], collision: str = "") -> dict[str, Any]:
+        done = bool(self.outcome)
+        if done or (self.metrics_every and self.episode_steps % self.metrics_every == 0):
+            self._metrics = self.episode_metrics()
+        return {
+            "scenario": str(self.current.bundle_dir),
+            "time": float(self.sim.time),
+            "distance_to_goal": float(self.distance_to_goal),
+            "collision": collision,
+            "reached_goal": self.outcome == "goal",
+            "outcome": self.outcome,
+            "reward_terms": dict(terms),
+            "metrics": dict(self._metrics),
+        }
+
+    # ---- metrics and recording --------------------------------------------------------------------
+
+    def episode_metrics(self) -> dict[str, float]:
+        """HuNavSim evaluator's robot metrics of the episode so far, one sample per control period."""
+        scenario = self.current.scenario
+        traj = self.history.trajectories([a.id for a in sorted(scenario.agents, key=lambda a: a.id)])
+        radii = [a.radius for a in scenario.agents]
+        return robot_metrics(traj, robot_radius=self.robot_radius,
+                             person_radius=max(radii) if radii else 0.35, goal=tuple(self.goal),
+                             groups={a.id: a.group for a in scenario.agents})
+
+    def record_episode(self, out_dir: str | os.PathLike[str], overwrite: bool = False) -> Path:
+        """Write the episode so far as a bundle the exports and `grove metrics` read (see recording.py)."""
+        from grove_tui.gym.recording import record_episode
+
+        if self.sim is None:
+            raise GymError("nothing to record before reset()", hint="run an episode first")
+        return record_episode(self, out_dir, overwrite=overwrite)
+
+
+def _wrap(angle: float) -> float:
+    return (angle + math.pi) % (2 * math.pi) - math.pi
+
+
+def _path_length(path: np.ndarray) -> float:
+    if len(path) < 2:
+        return 0.0
+    d = np.diff(path, axis=0)
+    return float(np.hypot(d[:, 0], d[:, 1]).sum())
+
+
+class _History:
+    """The episode at the control rate, for the metrics: robot pose and velocity, people, in arrays."""
+
+    def __init__(self, capacity: int, people: int) -> None:
+        self.t = np.zeros(capacity)
+        self.robot = np.full((capacity, 3), np.nan)
+        self.robot_vel = np.full((capacity, 2), np.nan)
+        self.people = np.full((capacity, people, 2), np.nan)
+        self.people_vel = np.full((capacity, people, 2), np.nan)
+        self.people_yaw = np.full((capacity, people), np.nan)
+        self.groups = np.full(people, -1, dtype=np.int64)
+        self.size = 0
+
+    def append(self, sim: Any, pose: tuple[float, float, float, float, float]) -> None:
+        if self.size == self.t.shape[0]:
+            self._grow()
+        k = self.size
+        crowd = sim.crowd
+        n = self.people.shape[1]
+        active = np.asarray(crowd.active[:n], dtype=bool)
+        self.t[k] = sim.time
+        self.robot[k] = pose[:3]
+        self.robot_vel[k] = pose[3:]
+        self.people[k] = np.where(active[:, None], crowd.pos[:n], np.nan)
+        self.people_vel[k] = np.where(active[:, None], crowd.vel[:n], np.nan)
+        self.people_yaw[k] = np.where(active, crowd.yaw[:n], np.nan)
+        self.groups[:] = crowd.group[:n]
+        self.size += 1
+
+    def _grow(self) -> None:
+        for name in ("t", "robot", "robot_vel", "people", "people_vel", "people_yaw"):
+            old = getattr(self, name)
+            new = np.full((old.shape[0] * 2, *old.shape[1:]), np.nan)
+            new[: old.shape[0]] = old
+            setattr(self, name, new)
+
+    def trajectories(self, ids: list[int]) -> Trajectories:
+        k = self.size
+        return Trajectories(t=self.t[:k].copy(), ids=np.asarray(ids, dtype=np.int64), people=self.people[:k],
+                            people_vel=self.people_vel[:k], people_yaw=self.people_yaw[:k], groups=self.groups.copy(),
+                            robot=self.robot[:k], robot_vel=self.robot_vel[:k])
+
+
+__all__ = ["ENV_ID", "SocialNavEnv", "BEHAVIORS", "GOAL_TOLERANCE"]

@@ -1,0 +1,56 @@
+"""Prompts that cannot describe a crowd are refused with a sentence, before any model runs."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+from grove_tui.errors import PromptError
+from grove_tui.generation.postprocess import check_population, check_stated_counts
+from grove_tui.generation.presets import load_preset
+from grove_tui.generation.rois import select_rois
+from grove_tui.language.quantities import extract_quantities
+from grove_tui.navigation.grid import build_grid
+from grove_tui.world import load_world
+
+
+def refuse(prompt: str, preset: str = "emergency") -> str:
+    world = load_world("hospital")
+    quantities = extract_quantities(prompt)
+    with pytest.raises(PromptError) as caught:
+        check_stated_counts(prompt, quantities)
+        check_population(world, build_grid(world, 0.1), load_preset(preset),
+                         select_rois(world, load_preset(preset), prompt), quantities)
+    assert caught.value.exit_code == 2
+    return str(caught.value)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("-5 people walk to the pharmacy", "'-5 people' is a negative number of people"),
+    ("minus 3 nurses walk to the pharmacy", "is a negative number of people"),
+    ("a billion people evacuate the cafeteria", "1000000000 people"),
+    ("🔥🔥🔥", "no words to read"),
+    ("zero people evacuate the cafeteria", "'zero people' asks for nobody"),
+])
+def test_refused_with_a_reason(prompt, expected):
+    assert expected in refuse(prompt)
+
+
+@pytest.mark.parametrize("prompt, count", [("3-5 people walk to the pharmacy", 3),
+                                           ("twenty-five patients queue at the pharmacy", 25),
+                                           ("ten million visitors walk in", 10_000_000)])
+def test_ranges_hyphens_and_large_scales_are_read(prompt, count):
+    assert extract_quantities(prompt)[0].count == count
+
+
+def test_stdout_on_dev_full_is_one_line_not_a_traceback():
+    code = "import sys; sys.argv = ['grove', 'worlds', 'list']; from grove_tui.cli import main; main()"
+    with open("/dev/full", "w") as full:
+        done = subprocess.run([sys.executable, "-c", code], stdout=full, stderr=subprocess.PIPE, text=True,
+                              env={**os.environ}, timeout=120)
+    assert done.returncode == 3
+    assert done.stderr.strip().splitlines() == [
+        "error: cannot write the output: No space left on device (hint: free some space or write somewhere else)"]
