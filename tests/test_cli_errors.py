@@ -72,6 +72,8 @@ CASES = [
     ("open", ["open", "BUNDLE"], 2),
     ("understanding", ["understanding", "MISSING", "--out", "OUT"], 2),
     ("understanding", ["understanding", "CASES", "--out", "OUT"], 2),
+    ("import", ["import", "hunav", "MISSING", "--out", "OUT"], 2),
+    ("import", ["import", "hunav", "CASES", "--out", "OUT"], 2),
 ]
 
 

@@ -57,26 +57,44 @@ def test_lowered_queue_walks_slot_by_slot_toward_the_counter(hospital_bundle, tm
     doc = yaml.safe_load(out.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]
     goals = doc["global_goals"]
     counter = (48.4, 8.0)
-    # agent 3 is second in the pharmacy queue (ids allocate sequentially): two slots, then one
+    # agent 3 is second in the pharmacy queue (ids allocate sequentially): two slots, then one, then aside
     root = etree.fromstring((tmp_path / "hunav" / "agents_hospital__agent_3_bt.xml").read_bytes())
-    queue = next(el for el in root.iter("Sequence") if el.get("name", "").startswith("Queue_"))
+    queue = next(el for el in root.iter("SequenceWithMemory") if el.get("name", "").startswith("Queue_"))
     steps = [el for el in queue if isinstance(el.tag, str)]
+    assert [el.tag if el.tag != "Inverter" else el.get("name") for el in steps] == [
+        "GoTo", "ForceSuccess", "ahead_moved_on", "GoTo", "StopAndWaitTimerAction", "GoTo"]
     gotos = [el for el in steps if el.tag == "GoTo"]
-    waits = [el for el in steps if el.tag == "StopAndWaitTimerAction"]
-    assert len(gotos) == 2 and len(waits) == 2
     d = [math.dist(counter, (goals[int(g.get("goal_id"))]["x"], goals[int(g.get("goal_id"))]["y"])) for g in gotos]
     assert d[0] == pytest.approx(1.2, abs=0.02) and d[1] == pytest.approx(0.6, abs=0.02)
-    assert all(w.get("wait_duration") == "8" for w in waits)
+    assert d[2] >= 1.2 - 1e-6  # served, it steps out of the line
+    # it moves up when agent 2, the one ahead of it, has moved on: not on a timer of its own
+    waits = [el for el in steps[1].iter("IsAgentClose")] + [el for el in steps[2].iter("IsAgentClose")]
+    assert {el.get("target_agent_id") for el in waits} == {"2"}
+    assert [el.get("wait_duration") for el in steps if el.tag == "StopAndWaitTimerAction"] == ["8"]
+    head = etree.fromstring((tmp_path / "hunav" / "agents_hospital__agent_2_bt.xml").read_bytes())
+    assert not list(head.iter("IsAgentClose"))  # nobody ahead of the head of the line
 
 
-def test_conversation_is_led_by_its_first_member(hospital_bundle, tmp_path):
-    export_hunav(hospital_bundle, tmp_path / "hunav")
-    lead = etree.fromstring((tmp_path / "hunav" / "agents_hospital__agent_4_bt.xml").read_bytes())
-    other = etree.fromstring((tmp_path / "hunav" / "agents_hospital__agent_5_bt.xml").read_bytes())
-    formation = list(lead.iter("ConversationFormation"))
-    assert len(formation) == 1 and formation[0].get("non_main_agent_ids") == "5"
-    assert not list(other.iter("ConversationFormation"))
-    assert [el.get("group_id") for el in lead.iter("SetGroupId")] == ["1"]
+def test_conversation_members_meet_on_their_own_spots(hospital_bundle, tmp_path):
+    out = export_hunav(hospital_bundle, tmp_path / "hunav")
+    goals = yaml.safe_load(out.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]["global_goals"]
+    spots = {}
+    for agent_id, other in ((4, "5"), (5, "4")):
+        root = etree.fromstring((tmp_path / "hunav" / f"agents_hospital__agent_{agent_id}_bt.xml").read_bytes())
+        assert not list(root.iter("ConversationFormation"))
+        converse = next(el for el in root.iter("SequenceWithMemory") if el.get("name", "").startswith("Converse_"))
+        steps = [el for el in converse if isinstance(el.tag, str)]
+        last_goto = [el for el in steps if el.tag == "GoTo"][-1]
+        spots[agent_id] = (goals[int(last_goto.get("goal_id"))]["x"], goals[int(last_goto.get("goal_id"))]["y"])
+        assert [el.get("target_agent_id") for el in converse.iter("IsAgentClose")] == [other]
+        assert [el.tag for el in steps[-2:]] == ["LookAtPoint", "StopAndWaitTimerAction"]
+        assert steps[-1].get("wait_duration") == "30"
+    assert spots[4] != spots[5]
+    from grove_tui.world import load_world
+
+    centre = load_world("hospital").find("cafeteria_table_1").interaction_point
+    assert math.dist(spots[4], centre) == pytest.approx(0.7, abs=0.15)  # radius 0.5 + 0.2 for two
+    assert math.dist(spots[5], centre) == pytest.approx(0.7, abs=0.15)
 
 
 def test_kept_grove_nodes_come_with_their_treenodes_model(hospital_bundle, tmp_path):
@@ -84,13 +102,13 @@ def test_kept_grove_nodes_come_with_their_treenodes_model(hospital_bundle, tmp_p
     assert out.nodes_model is not None
     model = etree.fromstring(out.nodes_model.read_bytes())
     declared = {el.get("ID") for el in model.iter() if el.get("ID")}
-    assert {"Queue", "GoTo", "Converse", "JoinGroup"} <= declared
+    # kept under their own names, so they never clash with HuNavSim's registered GoTo
+    assert {"GroveQueue", "GroveGoTo", "GroveConverse", "GroveJoinGroup"} <= declared
     xml = (tmp_path / "keep" / "agents_hospital__agent_2_bt.xml").read_text()
-    assert "<Queue" in xml
-    _load_in_btcpp(xml)
+    assert "<GroveQueue" in xml
     # kept GoTo nodes name their goal by this export's global_goals ids
     goals = yaml.safe_load(out.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]["global_goals"]
-    numbered = [el for path in out.trees for el in etree.fromstring(path.read_bytes()).iter("GoTo")
+    numbered = [el for path in out.trees for el in etree.fromstring(path.read_bytes()).iter("GroveGoTo")
                 if el.get("goal_id") is not None]
     assert numbered  # agent 1's GoTo carried the pipeline's goal id 7
     for el in numbered:

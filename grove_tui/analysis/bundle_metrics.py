@@ -8,7 +8,8 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.files import write_text_atomic
-from grove_tui.analysis.metrics import MetricsReport, Trajectories, compute_metrics, compute_metrics_csv
+from grove_tui.analysis.metrics import (MetricsReport, Trajectories, compute_metrics, compute_metrics_csv,
+                                        iter_trajectory_chunks)
 from grove_tui.scenario.events import read_events
 from grove_tui.scenario.bundle import load_scenario
 from grove_tui.scenario.model import Scenario
@@ -27,6 +28,11 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
     events = read_events(events_path) if events_path.exists() else []
     # Streamed a block of frames at a time: a long run's CSV is never held in memory whole.
     report = compute_metrics_csv(bundle / TRAJECTORIES, **metrics_options(scenario, world, events))
+    ids, _groups, chunks = iter_trajectory_chunks(bundle / TRAJECTORIES)
+    accumulator = _hunav2_accumulator(scenario, world, len(ids))
+    for chunk in chunks:
+        accumulator.add(chunk)
+    report.robot.update(accumulator.result())
     path = bundle / METRICS
     if write:
         write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
@@ -35,7 +41,23 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
 
 def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events: Sequence[Any]) -> MetricsReport:
     """metrics.json's report of a run held in memory: what the app's live counters show, so both always agree."""
-    return compute_metrics(traj, **metrics_options(scenario, world, events))
+    report = compute_metrics(traj, **metrics_options(scenario, world, events))
+    accumulator = _hunav2_accumulator(scenario, world, traj.ids.size)
+    accumulator.add(traj)
+    report.robot.update(accumulator.result())
+    return report
+
+
+def _hunav2_accumulator(scenario: Scenario, world: Any, people: int):
+    """HuNavSim 2.0's danger and surprise costs, beside the 1.0 set (analysis/hunav2_metrics.py); the line
+    of sight runs over the map HuNavSim's evaluator gets, the grid without inflation."""
+    from grove_tui.analysis.hunav2_metrics import Hunav2Accumulator
+    from grove_tui.navigation.grid import build_grid
+
+    radii = {a.radius for a in scenario.agents}
+    return Hunav2Accumulator(people, build_grid(world, scenario.resolution, inflation=0.0),
+                             robot_radius=0.3 if scenario.robot is None else scenario.robot.radius,
+                             person_radius=max(radii) if radii else 0.35)
 
 
 def metrics_options(scenario: Scenario, world: Any, events: Sequence[Any]) -> dict[str, Any]:

@@ -20,6 +20,7 @@ from grove_tui.bt.decorators import (
     Repeat, RetryUntilSuccessful, RunOnce, SubTreeNode,
 )
 from grove_tui.bt.document import TreeDocument, TreeElement
+from grove_tui.bt.hunav_compat import checked_port, satisfied_by_goal_id
 from grove_tui.bt.leaves.btcpp import BTCPP_LEAVES
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec
 from grove_tui.bt.ports import blackboard_pointer, convert_literal
@@ -177,16 +178,16 @@ class TreeFactory:
                     inputs[port.name] = BlackboardRef(blackboard, key, port, where)
                 elif default is not None:
                     inputs[port.name] = default
-                elif port.required:
+                elif port.required and not satisfied_by_goal_id(port, written):
                     raise BTError(f"{where}: missing required port {port.name!r}")
                 continue
             key = blackboard_pointer(text)
             if key is not None:
                 blackboard.declare(key, port.type, where)
-                inputs[port.name] = BlackboardRef(blackboard, key, port, where)
+                inputs[port.name] = BlackboardRef(blackboard, key, checked_port(spec, port), where)
             else:
                 try:
-                    inputs[port.name] = convert_literal(port, text)
+                    inputs[port.name] = convert_literal(checked_port(spec, port), text)
                 except ValueError as exc:
                     raise BTError(f"{where}: port {port.name!r}: {exc}") from None
         return inputs, outputs

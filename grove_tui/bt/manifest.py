@@ -16,7 +16,8 @@ Conventions
   entity) plus auto ports `x`, `y` (the resolved target point) and `waypoints` (point_list
   "x1,y1;x2,y2": intermediate points only, target excluded, injected by the planner).
 - Durations of HuNavSim and GROVE nodes are simulation seconds; BT.CPP's `msec` ports are
-  simulation milliseconds.
+  simulation milliseconds. (HuNavSim itself counts some of them in wall-clock time:
+  bt/hunav_compat.CLOCKS says which; exported trees name those nodes "... (wall clock)".)
 - GROVE's `GoTo` replaces HuNavSim's GoTo(agent_id, time_step, goal_id, tolerance): the HuNavSim
   ports are kept (all auto/optional) so a HuNavSim tree using `goal_id` still validates and runs.
 """
@@ -151,6 +152,14 @@ def _waypoints() -> PortSpec:
     return _in("waypoints", "point_list", "",
                "Intermediate points 'x1,y1;x2,y2' from the global planner, target excluded (post-processing).",
                auto=True)
+
+
+def _legacy_point(x: str = "target_x", y: str = "target_y", what: str = "the point") -> tuple[PortSpec, PortSpec]:
+    """A literal point in the port names earlier HuNavSim 2.0 commits used before global goal ids
+    (go_to_node.hpp@ba0c562, conversation_formation_node.hpp center_x/center_y, TestBT_*.xml): read
+    when no goal_id is given, so the trees HuNavSim ships still validate and run."""
+    return (_in(x, "float", None, f"x of {what} (older HuNavSim 2.0 trees).", auto=True),
+            _in(y, "float", None, f"y of {what} (older HuNavSim 2.0 trees).", auto=True))
 
 
 def _reaction_ports(extra: tuple[PortSpec, ...]) -> tuple[PortSpec, ...]:
@@ -485,6 +494,7 @@ _node("SetGroupId", "action", (
 _node("SetGoal", "action", (
     _agent_id(),
     _in("goal_id", "int", None, "Id of the global goal to append.", auto=True, min=1, max=100000),
+    *_legacy_point(what="the goal"),
 ), """
     Appends a global goal (radius 0.1 m) to the agent's goal list; fails if the id is unknown. Low-level
     goal-list bookkeeping; generated trees use GoTo.""", "hunavsim", synonyms=("add goal",))
@@ -511,6 +521,7 @@ _node("StopAndWaitTimerAction", "action", (
 _node("ConversationFormation", "action", (
     _agent_id("main_agent_id"),
     _in("goal_id", "int", None, "Global goal at the centre of the conversation.", auto=True, min=1, max=100000),
+    *_legacy_point("center_x", "center_y", "the conversation centre"),
     _duration(10.0, "conversation_duration", "the conversation"),
     _time_step(),
     _in("non_main_agent_ids", "agents", "", "Comma-separated ids of the other participants.", auto=True),
@@ -603,6 +614,7 @@ _node("LookAtRobot", "action", (
 _node("LookAtPoint", "action", (
     _agent_id(),
     _in("goal_id", "int", None, "Global goal to look at.", auto=True, min=1, max=100000),
+    *_legacy_point(what="the point to look at"),
     _in("yaw_tolerance", "float", 0.01, "Heading tolerance in radians.", min=0.0, max=3.1416),
 ), """
     Turns to face a global goal; RUNNING while turning, SUCCESS when facing it. Low-level (goal ids).""",
@@ -617,6 +629,11 @@ _node("GoTo", "action", (
     _in("tolerance", "float", 0.3, "Distance in metres at which the target counts as reached.", min=0.05, max=5.0),
     _agent_id(),
     _time_step(),
+    *_legacy_point(what="the goal"),
+    _in("temporary", "bool", False, "Older HuNavSim 2.0 GoTo: a temporary goal (freezes the agent on arrival).",
+        auto=True),
+    _in("stop_duration", "float", 5.0, "Older HuNavSim 2.0 GoTo: how long a temporary goal freezes the agent.",
+        auto=True),
     _in("goal_id", "int", None, "HuNavSim compatibility: a global goal id used when x/y are absent.", auto=True,
         min=1, max=100000),
 ), """
@@ -730,14 +747,17 @@ def _default_text(port: PortSpec) -> str | None:
     return str(port.default)
 
 
-def treenodes_model_xml() -> str:
-    """The manifest as a Groot2 TreeNodesModel (BT.CPP v4); built-in control nodes are omitted."""
+def treenodes_model_xml(renamed: dict[str, str] | None = None) -> str:
+    """The manifest as a Groot2 TreeNodesModel (BT.CPP v4); built-in control nodes are omitted.
+
+    `renamed` gives some nodes another ID (the HuNavSim export keeps GROVE nodes as Grove<Node>)."""
+    renamed = renamed or {}
     tag = {"control": "Control", "decorator": "Decorator", "action": "Action", "condition": "Condition"}
     lines = ['<?xml version="1.0" encoding="UTF-8"?>', '<root BTCPP_format="4">', "  <TreeNodesModel>"]
     for spec in NODES.values():
         if spec.origin == "btcpp":
             continue
-        lines.append(f"    <{tag[spec.category]} ID={quoteattr(spec.name)}>")
+        lines.append(f"    <{tag[spec.category]} ID={quoteattr(renamed.get(spec.name, spec.name))}>")
         for port in spec.ports:
             kind = "input_port" if port.direction == "in" else "output_port"
             attrs = f"name={quoteattr(port.name)} type={quoteattr(_BTCPP_TYPE[port.type])}"

@@ -16,7 +16,9 @@ Accepted format (BT.CPP v4):
     </root>
 Nodes are written compactly (<GoTo .../>) or explicitly (<Action ID="GoTo" .../>). A port value is a
 literal or a blackboard pointer "{key}". <SubTree ID="X" port="{key}" _autoremap="true"/> calls tree X.
-Not supported (rejected with a clear message): <include>, scripting attributes (_skipIf, _while...).
+Files: <include path="..."/> is inlined by load_tree_file/check_tree_file (bt/include.py: relative to the
+including file, depth-limited, never outside its folder); in text it is rejected with a clear message.
+Not supported (rejected with a clear message): scripting attributes (_skipIf, _while...).
 """
 
 from __future__ import annotations
@@ -25,7 +27,6 @@ import difflib
 import heapq
 import os
 import re
-import stat
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,11 +36,13 @@ from lxml import etree
 from grove_tui.bt.document import (
     BEHAVIOR_TREE, EXPLICIT_TAGS, TREE_NODES_MODEL, TreeDocument, TreeElement,
 )
+from grove_tui.bt.hunav_compat import checked_port, satisfied_by_goal_id
 from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec
 from grove_tui.bt.ports import (  # noqa: F401  (re-exported: the codec's historical home)
     blackboard_pointer, convert_literal, format_point_list, parse_agent_list, parse_point_list,
 )
 from grove_tui.errors import BTError
+from grove_tui.limits import InputLimitError, read_bytes_bounded
 
 MAX_BYTES = 1_000_000
 MAX_DEPTH = 64  # element nesting inside one file
@@ -150,35 +153,18 @@ def _read_elements(text: str | bytes, source: str) -> TreeElement:
     return _to_elements(_parse_lxml(_as_bytes(text, source), source), source)
 
 
-_FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
-               (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"))
-
-
 def read_file_bytes(path: str | os.PathLike[str], limit: int = MAX_BYTES) -> bytes:
-    """The bytes of a tree file, read with a limit; only regular files (no devices, FIFOs, directories).
-
-    A symlink is followed, so a link to /dev/zero is refused as what it points at. The file is opened
-    non-blocking, so a FIFO without a writer is refused instead of waited on.
-    """
-    path = Path(path)
+    """The bytes of a tree file through the one bounded reader (grove_tui.limits): regular files only
+    (links followed, so a link to /dev/zero is refused as what it points at), at most `limit` bytes."""
+    what = "behavior-tree file"
     try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
-    except OSError as exc:
-        raise _fatal(str(path), None, f"cannot read: {exc.strerror or exc}") from None
-    with os.fdopen(fd, "rb") as handle:
-        info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode):
-            kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
-            raise _fatal(str(path), None, f"is {kind}; behavior trees are read from regular files only")
-        if info.st_size > limit:
-            raise _fatal(str(path), None, f"file is {info.st_size} bytes; behavior trees are limited to {limit} bytes")
-        try:
-            data = handle.read(limit + 1)  # the file can grow after fstat
-        except OSError as exc:
-            raise _fatal(str(path), None, f"cannot read: {exc.strerror or exc}") from None
-    if len(data) > limit:
-        raise _fatal(str(path), None, f"file is over {limit} bytes; behavior trees are limited to {limit} bytes")
-    return data
+        return read_bytes_bounded(path, limit, what)
+    except InputLimitError as exc:
+        # "behavior-tree file PATH is a device, not a file" -> "PATH: is a device, not a file"
+        message = str(exc)
+        prefix = f"{what} {path}"
+        detail = message[len(prefix):].lstrip(":").strip() if message.startswith(prefix) else message
+        raise _fatal(str(path), None, detail) from None
 
 
 def _document(root: TreeElement, source: str) -> TreeDocument:
@@ -328,7 +314,8 @@ def _check_structure(root: TreeElement, out: _Collector) -> set[str]:
         elif child.tag == TREE_NODES_MODEL:
             continue
         elif child.tag == "include":
-            out.add(child.line, "<include> is not supported: put every BehaviorTree in the same file")
+            out.add(child.line, "<include> is resolved only for tree files (grove bt validate FILE), "
+                                "not in text: put every BehaviorTree in the same file")
         else:
             out.add(child.line, f"unexpected <{child.tag}> under <root>; expected <BehaviorTree>")
     if not trees:
@@ -415,11 +402,11 @@ def _check_node(el: TreeElement, nodes: Mapping[str, NodeSpec], tree_ids: set[st
             out.add(line, f"{node_id}: port {attr!r} value {value!r} is not a valid blackboard pointer '{{key}}'")
             continue
         try:
-            convert_literal(port, value)
+            convert_literal(checked_port(spec, port), value)
         except ValueError as exc:
             out.add(line, f"{node_id}: port {attr!r} ({port.type}): {exc}")
     for port in spec.ports:
-        if port.required and port.name not in present:
+        if port.required and port.name not in present and not satisfied_by_goal_id(port, present):
             out.add(line, f"{node_id}: missing required port {port.name!r} ({port.type}: {port.description})")
     if spec.category == "control" and n == 0:
         out.add(line, f"{node_id} needs at least one child")
@@ -526,12 +513,19 @@ def validate_document(document: TreeDocument, nodes: Mapping[str, NodeSpec] = NO
 
 
 def load_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:
-    return parse_tree_text(read_file_bytes(path), str(path), nodes)
+    return parse_tree_text(_with_includes(path, read_file_bytes(path)), str(path), nodes)
 
 
 def check_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
     try:
-        data = read_file_bytes(path)
+        data = _with_includes(path, read_file_bytes(path))
     except BTError as exc:
         return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
     return check_tree_text(data, str(path), nodes)
+
+
+def _with_includes(path: str | os.PathLike[str], data: bytes) -> bytes:
+    """A tree file's `<include>`s inlined, within its folder (bt/include.py)."""
+    from grove_tui.bt.include import has_includes, resolve_includes
+
+    return resolve_includes(path) if has_includes(data) else data

@@ -24,6 +24,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "batch": ("grove_tui.cli.generate:batch", "Generate many scenarios from a JSONL file, loading models once."),
     "simulate": ("grove_tui.cli.generate:simulate", "Simulate a bundle and write its trajectories."),
     "export": ("grove_tui.cli.export:export", "Export a bundle: HuNavSim agents.yaml + BT XML, PedPy trajectories."),
+    "import": ("grove_tui.cli.importing:import_group", "Import a HuNavSim scenario (agents yaml + trees) as a bundle."),
     "metrics": ("grove_tui.cli.export:metrics", "Robot and crowd metrics of a simulated bundle."),
     "picture": ("grove_tui.cli.export:picture", "PNG/SVG picture of a scenario and its trajectories."),
     "eval": ("grove_tui.cli.evaluate:evaluate", "Run an evaluation suite against the baselines."),

@@ -44,6 +44,9 @@ def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grov
         click.echo(str(path))
     if result.nodes_model is not None:
         click.echo(str(result.nodes_model))
+    for path in (result.world_file, result.map_yaml, result.readme):
+        if path is not None:
+            click.echo(str(path))
     for path in copied:
         click.echo(str(path))
 

@@ -1,21 +1,46 @@
-"""HuNavSim 2.0 hand-off: agents.yaml (`hunav_loader: ros__parameters:`) plus one BT XML per agent.
+"""HuNavSim 2.0 hand-off: agents.yaml (`hunav_loader: ros__parameters:`) plus one BT XML per agent,
+the world as Gazebo SDF (worlds/) and a nav2 map (maps/), and a README saying where each goes.
 
 HuNavSim only runs the nodes its agent manager registers. GROVE-only nodes are either
-*lowered* to HuNavSim nodes (the default) or kept, with a TreeNodesModel listing them so Groot2
-and a C++ implementation know their ports:
+*lowered* to HuNavSim nodes (the default) or kept as Grove<Node>, with a TreeNodesModel listing
+them so Groot2 and a C++ implementation know their ports:
 
-    GoTo(x, y, waypoints)        -> Sequence of HuNavSim GoTo(goal_id) over every waypoint and the target
+    GoTo(x, y, waypoints)        -> SequenceWithMemory of HuNavSim GoTo(goal_id) over every waypoint and the target
     Wait(duration)               -> StopAndWaitTimerAction(wait_duration)
-    Queue(service point)         -> walk to the agent's slot, then step forward slot by slot, waiting
-                                    one service time at each (its rank is its order among the queue's
-                                    members, which post-processing allocates sequentially)
-    FollowVelocityField(field)   -> the field's streamline from the agent's start, as GoTo waypoints
+    Queue(service point)         -> walk to the agent's slot; move up a slot once the person ahead (the agent one
+                                    rank before) has moved on (IsAgentClose on that agent); served one service time
+                                    at the head; step aside to a spot of one's own, as GROVE's Queue does
+    FollowVelocityField(field)   -> the field's streamline from the agent's start, through the exit door, to the
+                                    evacuee's own point outside (rows across the door, 1 m apart)
     Wander(zone, duration)       -> a seeded tour of planned points inside the zone
     JoinGroup(group_id)          -> SetGroupId
-    Converse(target, members)    -> walk to the spot, then ConversationFormation on the first member,
-                                    StopAndWaitTimerAction on the others
+    Converse(target, members)    -> walk to one's own spot on GROVE's conversation circle, wait for the other
+                                    members (IsAgentClose, at most 60 s), LookAtPoint(centre), StopAndWaitTimerAction
 
 Goals are written once into `global_goals` (ids consecutive from 1) and referenced by id.
+
+What HuNavSim 2.0 needs beyond node names. Sources: robotics-upo/hunav_sim, the 2.0 code under
+`namespace hunav` (newer than the humble/1.0 commit afa9743 the rosbag export pins). The public code
+index stores these 2.0 files without one common commit; each is cited with the commit the index gives,
+or by file and function where it gives none:
+- hunav_loader.cpp (2.0, `HunavLoader::HunavLoader`, "Handle new goals structure"): `<agent>.goals` is
+  declared PARAMETER_INTEGER_ARRAY; an empty YAML list has no type and aborts the loader, so every agent
+  lists at least one goal (its tree's goals, else its start). exports/hunav_loader_check.py emulates it.
+- bt_node.cpp (2.0, `tree_tick`) ticks every root on each ComputeAgents call and BT.CPP 4 resets a
+  completed root, so each tree runs once and then holds its final state (bt/hunav_compat.wrap_for_hunav).
+- go_to_node.cpp@306ec99c4451165c9322ab057ad00a0b6fabdbf8:49 sets the temporary goal's radius to 0.1 and
+  :71 finishes on `goalReached` (radius + 0.1 m), whatever `tolerance` says: every GoTo is written with
+  the 0.2 m HuNavSim applies.
+- Agents are never removed (agent_manager has no removal): evacuees walk out to points of their own.
+- 2.0 reacts to the robot only through the tree: a Surprised/Scared/Curious/Threatening agent gets
+  the reaction GROVE's simulation wraps around its tree.
+- conversation_formation_node.cpp (2.0, onStart step 11 `setAgentGoal`, onRunning step 2 `.front()`):
+  why conversations are not lowered to ConversationFormation.
+- bt_node.cpp (2.0, BTnode constructor): the simulator names and the wrapper package trees load from,
+  `<src of the wrapper>/behavior_trees/<yaml_base_name>__agent_<id>_bt.xml` (`share_to_src_path`).
+- hunav_gazebo_wrapper launch/simulation.launch.py@3e5219ed1f78370bbb78c9168aa7325a76fda976: the robot
+  pose arguments gzpose_x/y/Y, `worlds/<environment_name>.world`, `maps/<environment_name>.yaml`,
+  `scenarios/<configuration_file>`.
 """
 
 from __future__ import annotations
@@ -32,12 +57,16 @@ from typing import TYPE_CHECKING
 import numpy as np
 import yaml
 
-from grove_tui.bt.document import TreeDocument, TreeElement
+from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, prefix_node_ids,
+                                       restrict_to_hunav_ports, wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
+from grove_tui.bt.document import TreeDocument, TreeElement, node
 from grove_tui.bt.ports import parse_point_list
 from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
-from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.exports.gazebo_world import world_sdf
+from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.scenario.bundle import load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
 
@@ -61,7 +90,26 @@ HUNAV_NODES = {name: spec for name, spec in NODES.items() if spec.origin != "gro
 }
 EXPORT_MARKER = ".grove-hunav-export"
 SPAWN_HEIGHT = 1.25  # HuNavSim's Gazebo actors stand on z = 1.25
-GOAL_TOLERANCE = 0.3
+# go_to_node.cpp (2.0) sets the temporary goal radius to 0.1 and finishes on AgentManager::goalReached,
+# which adds 0.1 m: 0.2 m whatever `tolerance` says. Written as is so the file says what HuNavSim does.
+GOAL_TOLERANCE = 0.2
+GOAL_RADIUS = 0.1  # the agent's own goals (RegularNav); reach = radius + 0.1 m, as GoTo's
+# Simulators as HuNavSim 2.0's agent manager names them (bt_node.cpp: the wrapper package it loads
+# trees from depends on the loader's `simulator` parameter).
+SIMULATOR_PACKAGES = {
+    "Gazebo Classic": "hunav_gazebo_wrapper",
+    "Gazebo Fortress": "hunav_gazebo_fortress_wrapper",
+    "Isaac Sim": "hunav_isaac_wrapper",
+    "Webots": "hunav_webots_wrapper",
+}
+# Evacuees' points outside their exit: rows across the door, this far apart (more than two bodies
+# plus HuNavSim's 0.2 m reach, so nobody stands on anybody's goal), first row this far out.
+EXIT_SPREAD_SPACING = 1.0
+EXIT_SPREAD_FIRST_ROW = 2.0
+EXIT_SPREAD_PER_ROW = 5
+HOLD_WAIT_SECONDS = 60.0
+CONVERSATION_PATIENCE = 60.0  # GROVE's ConversationRegistry.PATIENCE: start anyway after this long
+KEPT_NODE_PREFIX = "Grove"
 STREAMLINE_STEP = 0.2
 WANDER_LEG_SECONDS = 12.0
 
@@ -92,6 +140,9 @@ class HunavExport:
     nodes_model: Path | None
     lowered: bool
     trajectories: tuple[Path, ...] = ()
+    readme: Path | None = None
+    world_file: Path | None = None  # Gazebo SDF (exports/gazebo_world.py)
+    map_yaml: Path | None = None  # nav2 map description beside its .pgm (exports/nav2_map.py)
 
 
 @dataclass
@@ -104,6 +155,9 @@ class _AgentContext:
     grid: OccupancyGrid | None
     planner: ThetaStarPlanner | None
     seed: int
+    exit_rank: dict[tuple[int, str], int] = field(default_factory=dict)
+    world: object | None = None
+    conversations: dict[tuple, dict[int, Point]] = field(default_factory=dict)
 
 
 def _attr_float(el: TreeElement, name: str, where: str) -> float:
@@ -118,27 +172,21 @@ def _attr_float(el: TreeElement, name: str, where: str) -> float:
 
 
 def _hunav_goto(goal_id: int, tolerance: float) -> TreeElement:
-    return TreeElement("GoTo", {"agent_id": "{id}", "time_step": "{dt}", "goal_id": str(goal_id),
-                                "tolerance": f"{tolerance:g}"})
+    return node("GoTo", agent_id="{id}", time_step="{dt}", goal_id=str(goal_id), tolerance=f"{tolerance:g}")
 
 
 def _wait(seconds: float) -> TreeElement:
-    return TreeElement("StopAndWaitTimerAction", {"agent_id": "{id}", "wait_duration": f"{seconds:g}"})
+    return node("StopAndWaitTimerAction", agent_id="{id}", wait_duration=f"{seconds:g}")
 
 
 def _sequence(children: Sequence[TreeElement], name: str) -> TreeElement:
-    return TreeElement("Sequence", {"name": name}, list(children))
+    # With memory: when a robot reaction halts the route, the agent resumes at the leg it was on
+    # instead of walking back to the first point (BT.CPP 4 keeps the index across halt()).
+    return TreeElement("SequenceWithMemory", {"name": name}, list(children))
 
 
 def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[TreeElement]:
     return [_hunav_goto(ctx.goals.id_of(p), tolerance) for p in points]
-
-
-def _queue_slots(service: Point, spacing: float, count: int, ctx: _AgentContext) -> list[Point]:
-    """Slots on a line from the service point into the free space in front of it."""
-    heading = _free_heading(service, ctx, reach=spacing * (count + 1))
-    return [(service[0] + math.cos(heading) * spacing * (k + 1), service[1] + math.sin(heading) * spacing * (k + 1))
-            for k in range(count)]
 
 
 def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
@@ -162,20 +210,67 @@ def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
     return best_angle
 
 
+def _wait_until(condition: TreeElement, name: str) -> TreeElement:
+    """RUNNING until `condition` succeeds, then SUCCESS (BT.CPP built-ins only: HuNavSim has no wait-until)."""
+    return TreeElement("Inverter", {"name": name}, [node("KeepRunningUntilFailure", [node("Inverter", [condition])])])
+
+
+def _at_most(seconds: float, child: TreeElement) -> TreeElement:
+    """`child`, given up (successfully) after `seconds` (BT.CPP Timeout: wall clock in HuNavSim)."""
+    return node("ForceSuccess", [node("Timeout", [child], msec=str(int(round(seconds * 1000))))])
+
+
+def _agent_close(other: int, threshold: float) -> TreeElement:
+    return node("IsAgentClose", observer_id="{id}", target_agent_id=str(other), threshold=f"{threshold:.2f}")
+
+
+def _far_from(other: int, threshold: float) -> TreeElement:
+    return node("Inverter", [_agent_close(other, threshold)])
+
+
+def _aside_spot(service: Point, heading: float, rank: int, ctx: _AgentContext) -> Point:
+    """Where the rank-th served person steps to: GROVE's rule (bt/leaves/grove.py `_aside`), one spot each."""
+    from grove_tui.bt.leaves.grove import ASIDE_SPACING, STEP_ASIDE
+
+    dx, dy = math.cos(heading), math.sin(heading)
+    spots: list[Point] = []
+    for ring in range(12):
+        out = STEP_ASIDE + ASIDE_SPACING * ring
+        for back in (0.0, ASIDE_SPACING):
+            for sign in (1.0, -1.0):
+                x = service[0] - sign * dy * out + dx * back
+                y = service[1] + sign * dx * out + dy * back
+                if ctx.grid is None or ctx.grid.is_free(x, y):
+                    spots.append((x, y))
+    if not spots:
+        return service
+    return spots[rank % len(spots)]
+
+
 def _lower_queue(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
+    """HuNavSim has no queue node: each person walks to its slot and moves up only once the person
+    ahead of it (the agent one rank before) has moved on, then is served and steps aside, as GROVE's
+    Queue does. Waiting on the person ahead instead of on a timer keeps two people off one slot."""
     service = (_attr_float(el, "x", where), _attr_float(el, "y", where))
     spacing = float(el.get("spacing", "0.6"))
     service_time = float(el.get("service_time", "10"))
     name = el.get("service_point", "service point")
     rank = ctx.queue_rank.get((ctx.agent.id, name), 0)
-    slots = _queue_slots(service, spacing, rank + 1, ctx)
+    heading = _free_heading(service, ctx, reach=spacing * (rank + 2))
+    slots = [(service[0] + math.cos(heading) * spacing * (k + 1), service[1] + math.sin(heading) * spacing * (k + 1))
+             for k in range(rank + 1)]
+    ahead = next((a for (a, n), r in ctx.queue_rank.items() if n == name and r == rank - 1), None)
     steps: list[TreeElement] = []
-    # Walk to the slot behind everyone who queued first, then advance one slot per service time.
-    steps += _route([slots[rank]], ctx, tolerance=0.2)
+    steps += _route([slots[rank]], ctx)
     for k in range(rank, 0, -1):
-        steps.append(_wait(service_time))
-        steps += _route([slots[k - 1]], ctx, tolerance=0.2)
+        if ahead is not None:
+            # the person ahead is in line in front of me (given up after one service time: it may have
+            # moved on before I arrived), then has moved on out of the slot I step into
+            steps.append(_at_most(service_time, _wait_until(_agent_close(ahead, 1.2 * spacing), "ahead_in_line")))
+            steps.append(_wait_until(_far_from(ahead, 1.5 * spacing), "ahead_moved_on"))
+        steps += _route([slots[k - 1]], ctx)
     steps.append(_wait(service_time))  # being served at the head
+    steps += _route([_aside_spot(service, heading, rank, ctx)], ctx)
     return _sequence(steps, f"Queue_{name}")
 
 
@@ -231,7 +326,42 @@ def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
         raise ExportError(f"{where}: FollowVelocityField on line {el.line} names field {field_id!r}, "
                           f"which the scenario does not list (fields: {sorted(ctx.scenario.fields)})")
     points = _streamline(load_field(ctx.bundle, field_id or "", rel), ctx.agent.start, exit_point, ctx)
+    points += _beyond_exit(el.get("exit", ""), ctx)
     return _sequence(_route(points, ctx), f"FollowVelocityField_{el.get('exit', 'exit')}")
+
+
+def _beyond_exit(door_name: str, ctx: _AgentContext) -> list[Point]:
+    """Through the door and on to this evacuee's own point outside, apart from everyone else's.
+
+    GROVE removes an evacuee at the door; HuNavSim never removes agents and a GoTo goal holds only
+    0.2 m, so without this every evacuee would end on the same point in the doorway.
+    """
+    world = ctx.world
+    if world is None or not door_name:
+        return []
+    try:
+        door = world.find(door_name)
+    except GroveError:
+        return []
+    if not hasattr(door, "outward_point"):
+        return []
+    rank = ctx.exit_rank.get((ctx.agent.id, door_name), 0)
+    slot = 0
+    nx, ny = -door.normal[0], -door.normal[1]
+    ax, ay = door.along
+    # Walk the slots in order and skip any that land inside a zone (another building part).
+    for _ in range(10000):
+        row, column = divmod(slot, EXIT_SPREAD_PER_ROW)
+        lateral = (column - (EXIT_SPREAD_PER_ROW - 1) / 2.0) * EXIT_SPREAD_SPACING
+        out = EXIT_SPREAD_FIRST_ROW + row * EXIT_SPREAD_SPACING
+        point = (door.position[0] + nx * out + ax * lateral, door.position[1] + ny * out + ay * lateral)
+        slot += 1
+        if world.zone_at(*point) is not None:
+            continue
+        if rank == 0:
+            return [door.outward_point(1.0), (round(point[0], 2), round(point[1], 2))]
+        rank -= 1
+    return [door.outward_point(1.0)]
 
 
 def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement:
@@ -279,8 +409,7 @@ def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world) -> Tr
     if tag == "GoTo" and el.get("x") is not None:  # GROVE's GoTo; HuNavSim's own names only a goal_id
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
         waypoints = list(parse_point_list(el.get("waypoints", "")))
-        tolerance = float(el.get("tolerance", str(GOAL_TOLERANCE)))
-        return _sequence(_route(waypoints + [target], ctx, tolerance), f"GoTo_{el.get('target', 'target')}")
+        return _sequence(_route(waypoints + [target], ctx), f"GoTo_{el.get('target', 'target')}")
     if tag == "Wait":
         return _wait(float(el.get("duration", "5")))
     if tag == "Queue":
@@ -291,23 +420,91 @@ def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world) -> Tr
         return _lower_wander(el, ctx, where, world)
     if tag == "JoinGroup":
         group = el.get("group_id") or str(ctx.agent.group)
-        return TreeElement("SetGroupId", {"agent_id": "{id}", "group_id": group})
+        return node("SetGroupId", agent_id="{id}", group_id=group)
     if tag == "Converse":
-        target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
-        waypoints = list(parse_point_list(el.get("waypoints", "")))
-        members = [int(m) for m in (el.get("members") or str(ctx.agent.id)).replace(" ", "").split(",") if m]
-        duration = float(el.get("duration", "20"))
-        steps = _route(waypoints + [target], ctx)
-        if members and members[0] == ctx.agent.id:
-            steps.append(TreeElement("ConversationFormation", {
-                "main_agent_id": "{id}", "goal_id": str(ctx.goals.id_of(target)),
-                "conversation_duration": f"{duration:g}", "time_step": "{dt}",
-                "non_main_agent_ids": ",".join(str(m) for m in members[1:]),
-            }))
-        else:
-            steps.append(_wait(duration))
-        return _sequence(steps, f"Converse_{el.get('target', 'spot')}")
+        return _lower_converse(el, ctx, where)
     return None
+
+
+def _members(el: TreeElement, agent_id: int) -> tuple[int, ...]:
+    return tuple(sorted({int(m) for m in (el.get("members") or str(agent_id)).replace(" ", "").split(",") if m}
+                        | {agent_id}))
+
+
+def _approach(el: TreeElement, start: Point) -> Point:
+    """Where an agent comes from when it reaches a conversation: its last waypoint, else its start."""
+    waypoints = list(parse_point_list(el.get("waypoints", "")))
+    return waypoints[-1] if waypoints else start
+
+
+def _conversation_spots(scenario: Scenario, trees: dict[int, TreeDocument], grid) -> dict[tuple, dict[int, Point]]:
+    """Each conversation's spots, as GROVE's ConversationRegistry gives them (bt/coordination.py):
+    evenly around a circle of radius 0.5 + 0.2 per extra member, starting toward the first member,
+    each member taking the closest free spot, closest pair first. Computed once for all members, from
+    where each arrives, so every member's tree names the same circle."""
+    from grove_tui.bt.coordination import conversation_radius
+
+    arrivals: dict[tuple, dict[int, Point]] = {}
+    centres: dict[tuple, Point] = {}
+    for agent in sorted(scenario.agents, key=lambda a: a.id):
+        for el in trees[agent.id].nodes():
+            if el.id != "Converse" or el.get("x") is None or el.get("y") is None:
+                continue
+            centre = (float(el.get("x")), float(el.get("y")))
+            key = (round(centre[0], 2), round(centre[1], 2), _members(el, agent.id))
+            centres[key] = centre
+            arrivals.setdefault(key, {})[agent.id] = _approach(el, agent.start)
+    plans: dict[tuple, dict[int, Point]] = {}
+    for key, arriving in arrivals.items():
+        members = key[2]
+        cx, cy = centres[key]
+        n = len(members)
+        radius = conversation_radius(n)
+        first = arriving.get(members[0], next(iter(arriving.values())))
+        start = math.atan2(first[1] - cy, first[0] - cx)
+        spots = []
+        for k in range(n):
+            x, y = cx + radius * math.cos(start + 2 * math.pi * k / n), cy + radius * math.sin(start + 2 * math.pi * k / n)
+            if grid is not None and not grid.is_free(x, y):
+                x, y = grid.nearest_free(x, y) or (x, y)
+            spots.append((float(x), float(y)))
+        pairs = sorted((math.dist(arriving.get(m, (cx, cy)), spot), m, k) for m in members for k, spot in enumerate(spots))
+        assigned: dict[int, Point] = {}
+        used: set[int] = set()
+        for _, m, k in pairs:
+            if m not in assigned and k not in used:
+                assigned[m] = spots[k]
+                used.add(k)
+        plans[key] = assigned
+    return plans
+
+
+def _lower_converse(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement:
+    """GROVE's conversation in HuNavSim nodes: walk to one's own spot on the circle, wait until every
+    other member is at theirs (at most CONVERSATION_PATIENCE s, as GROVE's registry), face the
+    centre, talk for the duration.
+
+    Not HuNavSim's ConversationFormation: it pushes the spots behind the agent's existing goals and
+    then reads the goal list's front() (conversation_formation_node.cpp, onStart step 11 and onRunning
+    step 2), so an agent that has any goal (every agent does: the loader needs one) never walks to its
+    spot and the conversation never starts.
+    """
+    target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
+    waypoints = list(parse_point_list(el.get("waypoints", "")))
+    members = _members(el, ctx.agent.id)
+    duration = float(el.get("duration", "20"))
+    key = (round(target[0], 2), round(target[1], 2), members)
+    spots = ctx.conversations.get(key, {})
+    mine = spots.get(ctx.agent.id, target)
+    steps = _route(waypoints + [mine], ctx)
+    for other in members:
+        if other == ctx.agent.id:
+            continue
+        reach = math.dist(mine, spots.get(other, target)) + 0.5
+        steps.append(_at_most(CONVERSATION_PATIENCE, _wait_until(_agent_close(other, reach), f"wait_for_{other}")))
+    steps.append(node("LookAtPoint", agent_id="{id}", goal_id=str(ctx.goals.id_of(target))))
+    steps.append(_wait(duration))
+    return _sequence(steps, f"Converse_{el.get('target', 'spot')}")
 
 
 def lower_tree(document: TreeDocument, ctx: _AgentContext, where: str, world=None) -> TreeDocument:
@@ -324,35 +521,39 @@ def lower_tree(document: TreeDocument, ctx: _AgentContext, where: str, world=Non
     return document
 
 
-def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument]) -> dict[tuple[int, str], int]:
-    """Sequential allocation: each queue's members in agent-id order."""
+def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument], tag: str = "Queue",
+                 key: str = "service_point") -> dict[tuple[int, str], int]:
+    """Sequential allocation: the members of each `tag` node's place (`key`), in agent-id order."""
     members: dict[str, list[int]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         for el in trees[agent.id].nodes():
-            if el.id != "Queue":
+            if el.id != tag:
                 continue
-            name = el.get("service_point", "service point")
+            name = el.get(key, "service point")
             if agent.id not in members.setdefault(name, []):
                 members[name].append(agent.id)
     return {(a, name): rank for name, ids in members.items() for rank, a in enumerate(ids)}
 
 
-def _initial_heading(agent: AgentSpec) -> float:
-    if not agent.goals:
-        return 0.0
-    gx, gy = agent.goals[0]
-    return math.atan2(gy - agent.start[1], gx - agent.start[0])
+def _initial_heading(start: Point, first_goal: Point) -> float:
+    """Facing the first goal the agents YAML lists (0 when that goal is where it stands)."""
+    dx, dy = first_goal[0] - start[0], first_goal[1] - start[1]
+    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-9 else 0.0
 
 
 def _behavior_block(agent: AgentSpec) -> dict[str, object]:
+    from grove_tui.simulation.simulation import REACTION_DEFAULTS
+
     kind = agent.behavior if agent.behavior in BEHAVIOR_TYPES else "Regular"
+    # The tree carries the reaction (wrap_for_hunav); these mirror its values for tools that read them.
+    _, distance, duration, once = REACTION_DEFAULTS.get(kind, ("", 0.0, 40.0, True))
     return {
         "type": kind,
         "configuration": 0,
-        "duration": 40.0,
-        "once": True,
+        "duration": float(duration),
+        "once": bool(once),
         "vel": round(min(max(agent.max_vel, 0.0), 1.8), 3),
-        "dist": 0.0,
+        "dist": float(distance),
         "goal_force_factor": 2.0,
         "obstacle_force_factor": 10.0,
         "social_force_factor": 5.0,
@@ -397,6 +598,10 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     atomic step. `out_dir` may be new, empty or an earlier export; another folder only with `overwrite`.
     """
     bundle = Path(bundle_dir)
+    if simulator not in SIMULATOR_PACKAGES:
+        raise ExportError(f"--simulator {simulator!r}: HuNavSim 2.0 knows " + ", ".join(map(repr, SIMULATOR_PACKAGES))
+                          + " (the names its agent manager compares the loader's `simulator` parameter with)",
+                          hint="Pass --simulator \"Gazebo Classic\", \"Gazebo Fortress\", \"Isaac Sim\" or \"Webots\".")
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
@@ -413,41 +618,70 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         except BTError as exc:
             raise ExportError(f"tree of agent {agent.id}: {exc}") from None
 
-    world = grid = planner = None
-    if lower:
-        from grove_tui.navigation.grid import build_grid
-        from grove_tui.navigation.theta_star import ThetaStarPlanner
-        from grove_tui.world import load_world
+    from grove_tui.navigation.grid import build_grid
+    from grove_tui.world import load_world
 
-        world = load_world(scenario.world)
+    # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
+    local_world = bundle / scenario.world
+    world = load_world(local_world if local_world.suffix in (".yaml", ".yml") and local_world.is_file()
+                       else scenario.world)
+    grid = planner = None
+    if lower:
+        from grove_tui.navigation.theta_star import ThetaStarPlanner
+
         grid_path = bundle / "grid.npz"
         grid = load_grid(bundle) if os.path.lexists(grid_path) else build_grid(world, scenario.resolution)
         planner = ThetaStarPlanner(grid)
 
+    from grove_tui.simulation.simulation import HUNAV_LOOPING_NODES, REACTION_DEFAULTS
+
     goals = GoalTable()
+    # An imported HuNavSim scenario's trees name goals by id: keep those ids (1..n) as they were.
+    for goal_id in sorted(scenario.global_goals):
+        if goals.id_of(scenario.global_goals[goal_id]) != goal_id:
+            raise ExportError(f"{bundle / 'scenario.yaml'}: global_goals must be numbered 1, 2, ... with distinct "
+                              f"points (goal {goal_id} repeats an earlier point or skips an id)")
     ranks = _queue_ranks(scenario, trees) if lower else {}
+    exit_ranks = _queue_ranks(scenario, trees, "FollowVelocityField", "exit") if lower else {}
+    conversations = _conversation_spots(scenario, trees, grid) if lower else {}
     written: dict[str, str] = {}
     agent_entries: dict[str, dict[str, object]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         where = str(bundle / agent.tree)
-        ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed)
+        ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
+                            exit_rank=exit_ranks, world=world if lower else None, conversations=conversations)
         goal_ids = [goals.id_of(g) for g in agent.goals]
         tree = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
-        xml = write_tree(_rename_main_tree(tree, "DefaultTree"))
-        problems = check_tree_text(xml, source=where, nodes=HUNAV_NODES if lower else NODES)
+        tree = _rename_main_tree(tree, "DefaultTree")
+        problems = check_tree_text(write_tree(tree), source=where, nodes=HUNAV_NODES if lower else NODES)
         if problems:
             raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))
+        wrap_for_hunav(tree, reaction=REACTION_DEFAULTS.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS,
+                       looping=HUNAV_LOOPING_NODES)
+        if not lower:
+            # Kept GROVE nodes get their own IDs, so GROVE's GoTo(target, x, y) never clashes with
+            # HuNavSim's registered GoTo(goal_id); a C++ plugin must register them under these names.
+            prefix_node_ids(tree, GROVE_ONLY, KEPT_NODE_PREFIX)
+        xml = write_tree(label_clocks(restrict_to_hunav_ports(tree)))
+        if lower:
+            problems = hunav_loading_problems(xml)
+            if problems:
+                raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems),
+                                  hint="Export with --keep-grove-nodes to see the tree as GROVE wrote it.")
+        if not goal_ids:
+            # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
+            goal_ids = _tree_goal_ids(tree) or [goals.id_of(agent.start)]
         written[f"{base}__agent_{agent.id}_bt.xml"] = xml
         agent_entries[f"agent{agent.id}"] = {
             "id": agent.id,
             "skin": agent.id % 5,
             "group_id": agent.group,
-            "max_vel": round(agent.max_vel, 3),
-            "radius": round(agent.radius, 3),
-            "goal_radius": GOAL_TOLERANCE,
+            "max_vel": round(float(agent.max_vel), 3),
+            "radius": round(float(agent.radius), 3),
+            "goal_radius": GOAL_RADIUS,
             "cyclic_goals": False,
-            "init_pose": {"x": round(agent.start[0], 3), "y": round(agent.start[1], 3), "z": SPAWN_HEIGHT,
-                          "h": round(_initial_heading(agent), 3)},
+            "init_pose": {"x": round(float(agent.start[0]), 3), "y": round(float(agent.start[1]), 3),
+                          "z": SPAWN_HEIGHT, "h": round(_initial_heading(agent.start, goals.points[goal_ids[0] - 1]), 3)},
             "behavior": _behavior_block(agent),
             "goals": goal_ids,
         }
@@ -462,7 +696,14 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     }
     params.update(agent_entries)
     document = {"hunav_loader": {"ros__parameters": params}}
-    nodes_model = None if lower else treenodes_model_xml()
+    from grove_tui.exports.hunav_loader_check import check_loader_parameters
+
+    loader_problems = check_loader_parameters(yaml.safe_load(yaml.safe_dump(document)), f"{base}.yaml")
+    if loader_problems:
+        raise ExportError("HuNavSim's loader would refuse the export: " + "; ".join(loader_problems))
+    nodes_model = None if lower else treenodes_model_xml(
+        renamed={name: KEPT_NODE_PREFIX + name for name in GROVE_ONLY})
+    readme = export_readme(scenario, base, world_name, simulator, sorted(written), lower)
 
     copied: list[str] = []
     with atomic_directory(out, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite) as staging:
@@ -474,6 +715,11 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             (staging / name).write_text(xml, encoding="utf-8")
         if nodes_model is not None:
             (staging / "grove_nodes_model.xml").write_text(nodes_model, encoding="utf-8")
+        (staging / "README.md").write_text(readme, encoding="utf-8")
+        # hunav_gazebo_wrapper's layout: worlds/<environment_name>.world, maps/<environment_name>.yaml
+        (staging / "worlds").mkdir()
+        (staging / "worlds" / f"{world_name}.world").write_text(world_sdf(world), encoding="utf-8")
+        write_nav2_map(build_grid(world, scenario.resolution, inflation=0.0), staging / "maps", world_name)
     return HunavExport(
         directory=out,
         agents_yaml=out / f"{base}.yaml",
@@ -481,7 +727,98 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         nodes_model=None if nodes_model is None else out / "grove_nodes_model.xml",
         lowered=lower,
         trajectories=tuple(out / name for name in copied),
+        readme=out / "README.md",
+        world_file=out / "worlds" / f"{world_name}.world",
+        map_yaml=out / "maps" / f"{world_name}.yaml",
     )
+
+
+def _tree_goal_ids(document: TreeDocument) -> list[int]:
+    """The literal global goal ids a tree's nodes name, first use first."""
+    ids: list[int] = []
+    for el in document.nodes():
+        value = el.get("goal_id")
+        if value is not None and value.isdigit() and int(value) not in ids:
+            ids.append(int(value))
+    return ids
+
+
+def robot_launch_arguments(scenario: Scenario) -> dict[str, str]:
+    """hunav_gazebo_wrapper's robot pose launch arguments (launch/simulation.launch.py: gzpose_x/y/Y)."""
+    robot = scenario.robot
+    if robot is None:
+        return {}
+    heading = 0.0
+    if robot.path and len(robot.path) > 1:
+        (x0, y0), (x1, y1) = robot.path[0][:2], robot.path[1][:2]
+        heading = math.atan2(y1 - y0, x1 - x0)
+    elif robot.goal is not None:
+        heading = math.atan2(robot.goal[1] - robot.start[1], robot.goal[0] - robot.start[0])
+    return {"gzpose_x": f"{robot.start[0]:.3f}", "gzpose_y": f"{robot.start[1]:.3f}", "gzpose_Y": f"{heading:.3f}"}
+
+
+def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str, tree_files: list[str],
+                  lowered: bool) -> str:
+    """Where each exported file goes and how to start the scenario, for the README beside them."""
+    package = SIMULATOR_PACKAGES[simulator]
+    launch = robot_launch_arguments(scenario)
+    args = " ".join([f"configuration_file:={base}.yaml", f"environment_name:={world_name}"]
+                    + [f"{k}:={v}" for k, v in launch.items()])
+    lines = [
+        f"# HuNavSim 2.0 scenario exported by GROVE ({simulator})",
+        "",
+        f"World `{world_name}`, {len(scenario.agents)} agents, prompt: {scenario.prompt!r}.",
+        "",
+        "## Where the files go",
+        "",
+        f"- `{base}.yaml` -> `<ws>/src/{package}/scenarios/` (read by `hunav_loader`; the launch file takes it "
+        "as `configuration_file`).",
+        f"- `{base}__agent_<id>_bt.xml` ({len(tree_files)} files) -> `<ws>/src/{package}/behavior_trees/`: the "
+        "agent manager loads `<yaml_base_name>__agent_<id>_bt.xml` from the *source* folder of the wrapper "
+        "(bt_node.cpp `share_to_src_path`), not from `install/`.",
+        f"- `worlds/{world_name}.world` (Gazebo SDF: walls with the door gaps, furniture as boxes) -> "
+        f"`<ws>/src/{package}/worlds/`, and `maps/{world_name}.yaml` + `maps/{world_name}.pgm` (nav2 map, not "
+        f"inflated) -> `<ws>/src/{package}/maps/`: the launch loads `worlds/<environment_name>.world` and "
+        "`maps/<environment_name>.yaml`. (Isaac Sim and Webots build their scenes from USD/Webots files; the SDF "
+        "is for Gazebo.)",
+        "",
+        "## Run",
+        "",
+        "```bash",
+        f"ros2 launch {package} simulation.launch.py {args}",
+        "```",
+        "",
+    ]
+    if scenario.robot is not None and scenario.robot.goal is not None:
+        gx, gy = scenario.robot.goal
+        lines += [
+            "The robot's goal, for your navigation stack and HuNavSim's evaluator (which starts recording when a "
+            "goal arrives on `goal_pose`):",
+            "",
+            "```bash",
+            "ros2 topic pub --once /goal_pose geometry_msgs/msg/PoseStamped "
+            f"\"{{header: {{frame_id: map}}, pose: {{position: {{x: {gx:.3f}, y: {gy:.3f}}}, orientation: {{w: 1.0}}}}}}\"",
+            "```",
+            "",
+        ]
+    lines += [
+        "## How GROVE's behaviors became HuNavSim's",
+        "",
+        "- Each tree runs once, then the agent holds where it ended (HuNavSim ticks every root each step and "
+        "BehaviorTree.CPP restarts a finished root).",
+        "- Every GoTo reaches its goal within 0.2 m: HuNavSim 2.0's GoTo reads `tolerance` but does not apply it.",
+        "- Timed nodes: StopAndWaitTimerAction, ConversationFormation, TimeDelay, Delay, Timeout and the `duration` "
+        "of HuNavSim's stateful nodes count wall-clock seconds in HuNavSim (GROVE counts simulation seconds); "
+        "TimeExpiredCondition and the *Nav reactions count simulation time. Run Gazebo at real time factor 1 "
+        "for the two to agree.",
+        "- Evacuees walk through their exit to their own point outside (HuNavSim never removes agents).",
+        "- Surprised, Scared, Curious and Threatening agents carry their robot reaction in the tree "
+        "(IsRobotVisible then the *Nav node), as HuNavSim 2.0 reacts only through trees.",
+    ]
+    if not lowered:
+        lines += ["- Kept GROVE nodes are named `Grove<Node>` (see `grove_nodes_model.xml`); HuNavSim loads these "
+                  "trees only with a plugin that registers them."]
+    return "\n".join(lines) + "\n"
 
 
 def copy_trajectories(bundle_dir: Path, out_dir: Path) -> list[str]:

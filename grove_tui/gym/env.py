@@ -174,7 +174,11 @@ class SocialNavEnv(gymnasium.Env):
             max(TIME_LIMIT_FLOOR, TIME_LIMIT_FACTOR * _path_length(self.path) / max(self.robot_max_speed, 1e-6)
                 + TIME_LIMIT_SLACK)
         self.distance_to_goal = self._goal_distance()
+        # path length from each point of the planned path to its end (the goal)
+        legs = np.hypot(*np.diff(self.path, axis=0).T) if len(self.path) > 1 else np.zeros(0)
+        self._length_after = np.concatenate([np.cumsum(legs[::-1])[::-1], [0.0]])
         self.waypoint_index = 1 if len(self.path) > 1 else 0
+        self._refresh_subgoal()
         self.episode_steps = 0
         self.episode_return = 0.0
         self.outcome = ""
@@ -212,8 +216,9 @@ class SocialNavEnv(gymnasium.Env):
         if self.kinematics == "holonomic":
             self.heading = float(crowd.robot_yaw)
         self.episode_steps += 1
-        previous = self.distance_to_goal
+        previous = self.distance_to_go
         self.distance_to_goal = self._goal_distance()
+        self._refresh_subgoal()
         reached = self.distance_to_goal <= self.goal_tolerance and not collision
         timed_out = self.sim.time >= self.time_limit - 1e-9 and not (reached or collision)
         terms = self._reward_terms(previous, closest_gap, collision, reached, timed_out)
@@ -279,7 +284,7 @@ class SocialNavEnv(gymnasium.Env):
         intimate = max(0.0, w.intimate_distance - gap)
         personal = max(0.0, w.personal_distance - max(gap, w.intimate_distance)) if gap < w.personal_distance else 0.0
         return {
-            "progress": w.progress * (previous - self.distance_to_goal),
+            "progress": w.progress * (previous - self.distance_to_go),
             "intimate": -w.intimate * intimate * self.control_period,
             "personal": -w.personal * personal * self.control_period,
             "collision": w.collision if collision else 0.0,
@@ -296,7 +301,7 @@ class SocialNavEnv(gymnasium.Env):
                           self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
         goal_xy = frame @ (self.goal - pos)
         goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
-        offset = self._subgoal(pos) - pos
+        offset = self.path[self.subgoal_index] - pos
         waypoint_xy = frame @ offset
         waypoint = np.array([waypoint_xy[0], waypoint_xy[1], math.hypot(*offset)], dtype=np.float32)
         cfg = self.obs_config
@@ -309,7 +314,10 @@ class SocialNavEnv(gymnasium.Env):
                 "waypoint": np.clip(waypoint, -limit, limit),
                 "pedestrians": np.clip(people, -limit, limit), "occupancy": patch}
 
-    def _subgoal(self, pos: np.ndarray) -> np.ndarray:
+    def _refresh_subgoal(self) -> None:
+        """Advance along the planned path (see the module docstring), then the subgoal and the distance
+        to go: straight to the subgoal, then along the path to the goal."""
+        pos = self.sim.crowd.robot_pos
         path, walls = self.path, self.current.walls
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
@@ -320,8 +328,10 @@ class SocialNavEnv(gymnasium.Env):
         if not segment_clear(pos, path[index], walls, clearance):
             for earlier in range(index - 1, -1, -1):
                 if segment_clear(pos, path[earlier], walls, clearance):
-                    return path[earlier]
-        return path[index]
+                    index = earlier
+                    break
+        self.subgoal_index = index
+        self.distance_to_go = float(math.hypot(*(path[index] - pos)) + self._length_after[index])
 
     def _info(self, terms: dict[str, float], collision: str = "") -> dict[str, Any]:
         done = bool(self.outcome)
@@ -331,6 +341,7 @@ class SocialNavEnv(gymnasium.Env):
             "scenario": str(self.current.bundle_dir),
             "time": float(self.sim.time),
             "distance_to_goal": float(self.distance_to_goal),
+            "distance_to_go": float(self.distance_to_go),
             "collision": collision,
             "reached_goal": self.outcome == "goal",
             "outcome": self.outcome,

@@ -70,11 +70,18 @@ class Scenario:
     robot: RobotSpec | None
     fields: dict[str, str] = field(default_factory=dict)  # field id -> relative .npz path
     resolution: float = 0.1  # grid resolution used for planning (m)
+    # HuNavSim global goals (id -> point) that trees name by `goal_id` alone: set when a scenario is
+    # imported from HuNavSim (`grove import hunav`); generated scenarios write x/y beside every goal_id.
+    global_goals: dict[int, Point] = field(default_factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
         data = asdict(self)
         data["agents"] = [_agent_to_dict(a) for a in self.agents]
         data["robot"] = None if self.robot is None else _robot_to_dict(self.robot)
+        if self.global_goals:
+            data["global_goals"] = {int(k): [float(v[0]), float(v[1])] for k, v in self.global_goals.items()}
+        else:
+            del data["global_goals"]  # generated bundles stay as they were
         return data
 
     def dump_yaml(self) -> str:
@@ -122,6 +129,8 @@ class Scenario:
                 robot=robot,
                 fields={str(k): bundle_relative(v, f"{source}: fields.{k}") for k, v in fields.items()},
                 resolution=_number(data.get("resolution", 0.1), f"{source}: resolution", 0.01, 2.0),
+                global_goals={int(k): _point(v, f"{source}: global_goals[{k}]")
+                              for k, v in (data.get("global_goals") or {}).items()},
             )
         except KeyError as exc:
             raise ScenarioError(f"{source}: missing key {exc.args[0]!r}") from None

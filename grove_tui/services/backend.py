@@ -212,6 +212,8 @@ class EngineBackend:
                                     retriever_factory=retriever_factory)
         self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
         self.exporters = list(EXPORTERS if exporters is None else exporters)
+        self._retriever_factory = retriever_factory
+        self._embedder_warm = False
 
     # worlds and presets ------------------------------------------------------------------------------
     def list_worlds(self) -> list[str]:
@@ -240,6 +242,20 @@ class EngineBackend:
         models = self.session.load_models()
         return {"roi": models.roi, "bt": models.bt}
 
+    def warm_up_retriever(self) -> None:
+        """Open the node index and load the embedding model now, so the first Retrieval takes no extra time."""
+        retriever = self.session.retriever()
+        if self._retriever_factory is None:
+            from grove_tui.generation.retrieval import embed_query
+
+            retriever.ensure_index()
+            embed_query("people walk")  # imports torch, loads the model and its traced query encoder
+        self._embedder_warm = True
+
+    def embedder_ready(self) -> bool:
+        """Whether retrieval runs without first loading the embedding model (warmed, or used once)."""
+        return self._embedder_warm or self._retriever_factory is not None
+
     def close(self) -> None:
         self.session.close()
 
@@ -255,8 +271,10 @@ class EngineBackend:
     ) -> GeneratedScenario:
         stamp = time.strftime("%Y%m%d-%H%M%S")
         request = ScenarioRequest(world_name, preset_name, prompt, seed)
-        return self.session.generate(request, self._free_run_dir(f"{stamp}-{_slug(prompt)}-{seed}"),
-                                     on_event=on_event, cancel=cancel)
+        generated = self.session.generate(request, self._free_run_dir(f"{stamp}-{_slug(prompt)}-{seed}"),
+                                          on_event=on_event, cancel=cancel)
+        self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
+        return generated
 
     def replan(
         self,

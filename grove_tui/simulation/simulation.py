@@ -33,22 +33,17 @@ import shapely
 
 from grove_tui.bt.context import AgentContext, SimContext
 from grove_tui.bt.registry import tree_factory
-from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
+from grove_tui.bt.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.blackboard import Blackboard
 from grove_tui.bt.document import TreeDocument, node, subtree_call
 from grove_tui.bt.factory import BehaviorTree
 from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
 from grove_tui.bt.xml import BTError, parse_tree_text
-from grove_tui.crowd.crowd import MODE_FIELD, ROBOT_AS_OBSTACLE, Crowd
+from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
-REACTION_DEFAULTS = {
-    "Surprised": ("SurprisedNav", 4.0, 30.0, True),
-    "Scared": ("ScaredNav", 3.0, 40.0, False),
-    "Curious": ("CuriousNav", 10.0, 30.0, True),
-    "Threatening": ("ThreateningNav", 4.0, 40.0, True),
-}
+REACTION_DEFAULTS = ROBOT_REACTION_DEFAULTS
 HUNAV_LOOPING_NODES = frozenset({"RegularNav", "UpdateGoal"})
 ROBOT_CONTACT_GAP = 0.02  # HuNavSim evaluator: a gap below this is a collision
 # A contact ends only once the two have moved this far apart: bodies brushing against each other in a
@@ -115,6 +110,7 @@ class Simulation:
         self._q_t = np.zeros(n)
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
+        self.tree_errors: dict[int, str] = {}  # agent id -> why its tree stopped (e.g. an unset blackboard entry)
         self._building: Any = None  # the zones' union, prepared on first use (see _count_people_outside)
         self._exits: list[tuple[str, tuple[float, float]]] = []
         self.scenario = scenario
@@ -183,7 +179,8 @@ class Simulation:
         groups = _draft_groups(agents)
         clock = SimClock(0.0)
         context = SimContext(crowd, clock, ids=ids, seed=seed, world=world, grid=grid, planner=planner, walls=walls,
-                             goal_table=_goal_table(documents), groups=groups,
+                             goal_table=_goal_table(documents) | dict(getattr(scenario, "global_goals", None) or {}),
+                             groups=groups,
                              base_speed=[a.max_vel for a in agents])
         for field_id, field in (fields or {}).items():
             context.fields[field_id] = crowd.register_field(field)
@@ -295,7 +292,13 @@ class Simulation:
             # BehaviorTree.tick's quiescent check, inlined for the common guard-free case
             if quiet is not None and not quiet[1] and quiet[0].poll():
                 continue
-            status = tree.tick()
+            try:
+                status = tree.tick()
+            except BTError as exc:
+                # One agent's broken tree (say a port reading a blackboard entry nobody sets) stops
+                # that agent, with the reason in its status and the event log, not the whole run.
+                self._fail_tree(row, str(exc))
+                continue
             self._update_quiet_spec(row)
             if (status == SUCCESS or status == FAILURE) and not loops[row]:
                 finished[row] = True
@@ -306,6 +309,18 @@ class Simulation:
                 if ctx.status[row] != "evacuated":
                     ctx.status[row] = f"{ctx.status[row]} · {self.tree_result[row]}" if ctx.status[row] else self.tree_result[row]
         ctx.queues.commit()
+
+    def _fail_tree(self, row: int, message: str) -> None:
+        ctx = self.context
+        self.finished[row] = True
+        self._finished_mask[row] = True
+        self._q_on[row] = False
+        ctx.counters.finished_trees += 1
+        self.tree_result[row] = "failed"
+        self.tree_errors[int(ctx.ids[row])] = message
+        self.crowd.set_mode(row, MODE_STOP)
+        ctx.status[row] = f"tree error: {message}"
+        ctx.event("tree_error", row, message)
 
     def _update_quiet_spec(self, row: int) -> None:
         tree = self.trees[row]

@@ -51,6 +51,8 @@ class GroveApp(App[int]):
         self.generated: GeneratedScenario | None = None
         self.animation_level = self.settings.ui.animation
         self.open_bundle_at_start = open_bundle
+        # Completion tokens of each model stage's last run: the generation screen's ETA expects as many.
+        self.stage_tokens: dict[str, int] = {}
 
     def on_mount(self) -> None:
         from grove_tui.tui.screens.setup import SetupScreen

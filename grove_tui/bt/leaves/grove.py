@@ -59,7 +59,10 @@ class GoTo(AgentStatefulAction):
     def on_start(self) -> int:
         sim = self.sim
         target = self.get_input("target")
-        point = sim.resolve_target(target, self.get_input("x"), self.get_input("y"), self.get_input("goal_id"))
+        # x/y as GROVE writes them, else target_x/target_y as older HuNavSim 2.0 GoTo trees do
+        x = self.get_input("x", self.get_input("target_x"))
+        y = self.get_input("y", self.get_input("target_y"))
+        point = sim.resolve_target(target, x, y, self.get_input("goal_id"))
         self.target_point = point
         tolerance = self.get_input("tolerance")
         self.reach2 = (tolerance + HUNAV_GOAL_TOLERANCE) ** 2

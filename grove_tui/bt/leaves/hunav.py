@@ -312,12 +312,21 @@ class SetGroupId(AgentSyncAction):
         return SUCCESS
 
 
+def goal_point(node, x_port: str = "target_x", y_port: str = "target_y"):
+    """A node's point: its global goal (goal_id), else the literal x/y ports older HuNavSim 2.0 trees
+    wrote (manifest._legacy_point); None when it names neither."""
+    goal_id = node.get_input("goal_id")
+    if goal_id is not None and goal_id in node.sim.goal_table:
+        return node.sim.goal_table[goal_id]
+    x, y = node.get_input(x_port), node.get_input(y_port)
+    return (float(x), float(y)) if x is not None and y is not None else None
+
+
 class SetGoal(AgentSyncAction):
     __slots__ = ()
 
     def tick(self) -> int:
-        goal_id = self.get_input("goal_id")
-        point = self.sim.goal_table.get(goal_id) if goal_id is not None else None
+        point = goal_point(self)
         if point is None:
             return FAILURE
         crowd = self.sim.crowd
@@ -743,8 +752,7 @@ class LookAtPoint(_LookAt):
     __slots__ = ()
 
     def target(self):
-        goal_id = self.get_input("goal_id")
-        return self.sim.goal_table.get(goal_id) if goal_id is not None else None
+        return goal_point(self)
 
 
 class ConversationFormation(AgentStatefulAction):
@@ -762,7 +770,7 @@ class ConversationFormation(AgentStatefulAction):
     def on_start(self) -> int:
         sim = self.sim
         goal_id = self.get_input("goal_id")
-        centre = sim.goal_table.get(goal_id) if goal_id is not None else None
+        centre = goal_point(self, "center_x", "center_y")
         if centre is None:
             raise BTError(f"{self.path} ConversationFormation: goal_id={goal_id!r} is not a known global goal")
         others = self.get_input("non_main_agent_ids") or ()
@@ -815,4 +823,12 @@ HUNAV_LEAVES = {
     )
 }
 ROBOT_REACTIONS = ("SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav")
-__all__ = ["HUNAV_LEAVES", "ROBOT_REACTIONS", "ROBOT_AS_AGENT"]
+# HuNavSim behavior type -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0
+# values. The simulation wraps a tree in this pattern at run time; generation writes it into the tree.
+ROBOT_REACTION_DEFAULTS = {
+    "Surprised": ("SurprisedNav", 4.0, 30.0, True),
+    "Scared": ("ScaredNav", 3.0, 40.0, False),
+    "Curious": ("CuriousNav", 10.0, 30.0, True),
+    "Threatening": ("ThreateningNav", 4.0, 40.0, True),
+}
+__all__ = ["HUNAV_LEAVES", "ROBOT_REACTIONS", "ROBOT_REACTION_DEFAULTS", "ROBOT_AS_AGENT"]

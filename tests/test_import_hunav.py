@@ -1,0 +1,118 @@
+"""`grove import hunav`: a HuNavSim scenario becomes a bundle that plays in GROVE; export, import and
+export again give the same agents, goals and trees."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+import yaml
+from click.testing import CliRunner
+from helpers.handmade import build_hospital_bundle
+
+from grove_tui.cli import main
+from grove_tui.errors import HunavImportError
+from grove_tui.exports.hunav import export_hunav
+from grove_tui.exports.hunav_import import import_hunav
+from grove_tui.scenario.bundle import load_bundle
+from grove_tui.scenario.model import Scenario
+from grove_tui.simulation.simulation import Simulation
+
+pytest.importorskip("behaviortreepy")
+
+
+@pytest.fixture(scope="module")
+def exported(tmp_path_factory):
+    bundle = build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
+    return bundle, export_hunav(bundle, tmp_path_factory.mktemp("e1") / "hunav")
+
+
+def _params(path):
+    return yaml.safe_load(path.read_text())["hunav_loader"]["ros__parameters"]
+
+
+def test_export_import_export_gives_the_same_agents_goals_and_trees(exported, tmp_path):
+    _, first = exported
+    bundle = import_hunav(first.agents_yaml, tmp_path / "imported")
+    second = export_hunav(bundle, tmp_path / "again")
+    assert _params(second.agents_yaml) == _params(first.agents_yaml)
+    assert [p.name for p in second.trees] == [p.name for p in first.trees]
+    for a, b in zip(first.trees, second.trees):
+        assert a.read_text() == b.read_text(), a.name
+
+
+def test_imported_bundle_has_the_exported_agents_and_global_goals(exported, tmp_path):
+    original, first = exported
+    params = _params(first.agents_yaml)
+    bundle = import_hunav(first.agents_yaml, tmp_path / "imported")
+    scenario, trees, _, _ = load_bundle(bundle)
+    source = Scenario.load(original / "scenario.yaml")
+    assert [a.id for a in scenario.agents] == [a.id for a in source.agents]
+    for mine, theirs in zip(scenario.agents, source.agents):
+        assert mine.start == pytest.approx(theirs.start, abs=1e-3)
+        assert (mine.group, mine.behavior) == (theirs.group, theirs.behavior)
+    goals = {int(k): (v["x"], v["y"]) for k, v in params["global_goals"].items()}
+    assert scenario.global_goals == goals
+    # the trees are HuNavSim's, verbatim: goal ids resolved by the scenario's global goals
+    assert trees["trees/agent_1.xml"] == (first.directory / "agents_hospital__agent_1_bt.xml").read_text()
+
+
+def test_imported_bundle_plays_in_grove(exported, tmp_path):
+    _, first = exported
+    bundle = import_hunav(first.agents_yaml, tmp_path / "imported")
+    scenario = Scenario.load(bundle / "scenario.yaml")
+    sim = Simulation.from_scenario(scenario, bundle)
+    sim.run(20.0)
+    assert sim.tree_errors == {}
+    moved = [math.dist(sim.crowd.pos[i], a.start) for i, a in enumerate(scenario.agents)]
+    assert max(moved) > 2.0
+    # the queue leader walks toward its slot by HuNavSim goal ids alone
+    assert all(status != "failed" for status in sim.tree_result)
+
+
+def test_foreign_map_gets_an_open_floor_and_plays(exported, tmp_path):
+    _, first = exported
+    params = yaml.safe_load(first.agents_yaml.read_text())
+    params["hunav_loader"]["ros__parameters"]["map"] = "cafe"
+    folder = tmp_path / "cafe"
+    folder.mkdir()
+    (folder / "agents_hospital.yaml").write_text(yaml.safe_dump(params))
+    for tree in first.trees:
+        (folder / tree.name).write_text(tree.read_text())
+    result = CliRunner().invoke(main, ["import", "hunav", str(folder / "agents_hospital.yaml"),
+                                       "--out", str(tmp_path / "b")])
+    assert result.exit_code == 0, result.output
+    scenario = Scenario.load(tmp_path / "b" / "scenario.yaml")
+    assert scenario.world == "cafe.yaml" and (tmp_path / "b" / "cafe.yaml").is_file()
+    sim = Simulation.from_scenario(scenario, tmp_path / "b")
+    sim.run(5.0)
+    assert sim.tree_errors == {}
+
+
+def test_broken_scenarios_are_refused_with_the_reason(exported, tmp_path):
+    _, first = exported
+    params = yaml.safe_load(first.agents_yaml.read_text())
+    params["hunav_loader"]["ros__parameters"]["agent1"]["goals"] = []
+    (tmp_path / "bad.yaml").write_text(yaml.safe_dump(params))
+    with pytest.raises(HunavImportError, match="agent1.goals is"):
+        import_hunav(tmp_path / "bad.yaml", tmp_path / "out")
+    lonely = tmp_path / "lonely"
+    lonely.mkdir()
+    (lonely / "agents_hospital.yaml").write_text(first.agents_yaml.read_text())
+    result = CliRunner().invoke(main, ["import", "hunav", str(lonely / "agents_hospital.yaml"),
+                                       "--out", str(tmp_path / "out2")])
+    assert result.exit_code == 2 and "agents_hospital__agent_1_bt.xml: not found" in result.output
+    assert not (tmp_path / "out").exists() and not (tmp_path / "out2").exists()
+
+
+def test_cli_export_then_import_prints_the_files(exported, tmp_path):
+    bundle, _ = exported
+    result = CliRunner().invoke(main, ["export", "hunav", str(bundle), "--out", str(tmp_path / "e")])
+    assert result.exit_code == 0, result.output
+    printed = result.output.split()
+    for name in ("agents_hospital.yaml", "hospital.world", "hospital.yaml", "README.md"):
+        assert any(line.endswith(name) for line in printed), name
+    result = CliRunner().invoke(main, ["import", "hunav", str(tmp_path / "e" / "agents_hospital.yaml"),
+                                       "--out", str(tmp_path / "b")])
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "b" / "scenario.yaml").is_file()
