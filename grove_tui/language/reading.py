@@ -228,7 +228,9 @@ class _Reader:
         return rng.randint(low, high)
 
     def _is_punct(self, i: int) -> bool:
-        return self.w[i].pos == "PUNCT" or self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
+        # "b." at a sentence end is tagged PUNCT by the small model, but it is a word with a full stop
+        return (self.w[i].pos == "PUNCT" and not any(ch.isalnum() for ch in self.low[i])) or \
+            self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
 
     def _lemma(self, i: int) -> str:
         return lemma(self.low[i])
@@ -726,6 +728,11 @@ class _Reader:
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
+    def _hyphen_inside(self, j: int) -> bool:
+        """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
+        return self.low[j] == "-" and 0 < j < self.n - 1 and self.low[j - 1][-1:].isalnum() and \
+            self.low[j + 1][:1].isalnum() and self.w[j].start == self.w[j - 1].end
+
     def _fronted_start(self, previous_last: int, first: int) -> int:
         """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
         no verb, opened by a preposition and closed by a comma; else the mention itself."""
@@ -733,13 +740,15 @@ class _Reader:
         if b <= previous_last or self.low[b] != ",":
             return first
         j = b - 1
-        while j > previous_last and not self._is_punct(j) and self.low[j] not in lx.CLAUSE_STARTERS:
+        while j > previous_last and (not self._is_punct(j) or self._hyphen_inside(j)) \
+                and self.low[j] not in lx.CLAUSE_STARTERS:
             j -= 1
         fronted = range(j + 1, b)
         if not fronted or self.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
             return first
-        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS for x in fronted):
-            return first
+        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS
+               and not self.index.knows(lemma(self.low[x])) for x in fronted):
+            return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)
         return j + 1
 
     def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False) -> _Clause:
@@ -840,6 +849,8 @@ class _Reader:
                 if place is not None:
                     c.places.append(place)
                     used.update(range(i, place.end))
+                    i_pos = self._advance(own, place.end)  # "check in counter a": its "in" is not a new phrase
+                    continue
                 i_pos += 1
                 continue
             v = self._verb(i)
@@ -1051,7 +1062,7 @@ class _Reader:
                 continue
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and self.index.knows(lemma(w))):
                 break
-            joined = False
+            after_hyphen, joined = joined, False
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
@@ -1063,10 +1074,13 @@ class _Reader:
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1
                 continue
-            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)):
+            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)) \
+                    and not after_hyphen:
                 break
             phrase.append(w)
             j += 1
+            if self.w[j - 1].text.endswith(".") and len(self.w[j - 1].text) > 1:
+                break  # "room b." at a sentence end: the full stop closes the phrase
         if not phrase:
             return None
         lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
@@ -1089,7 +1103,7 @@ class _Reader:
         for end in range(j + 2, min(j + 4, self.n) + 1):
             extended = phrase_lemmas(list(phrase) + self.low[j:end])
             longer = self.index.match(extended)
-            if longer is None or not longer.exact or (here is not None and longer.name == here.name):
+            if longer is None or not longer.exact or (here is not None and here.exact and longer.name == here.name):
                 continue
             # every word of the longer phrase must be the one place's: "check in counter a", not
             # "ward c to the nurses" (two places either side of a preposition)
