@@ -380,3 +380,22 @@ def test_robot_phrases_around_the_robot(hospital, phrase, interaction):
 def test_names_with_letters_numbers_and_hyphens(hospital, phrase, place):
     g = one(read_prompt(f"Four visitors go to {phrase}.", hospital))
     assert g.destination == place
+
+
+@pytest.mark.parametrize("prompt,expected", [
+    ("A nurse pushes a cart to ward b while two orderlies stand near the lifts.",
+     [("walk", "ward_b", None), ("wait", None, "elevator_hall")]),
+    ("Half a dozen kids run around the waiting room as their parents sit on the benches.",
+     [("wander", None, "main_waiting_room"), ("wait", None, "lobby_bench_1")]),
+    ("Around 30 people are in the cafeteria; a few of them leave through the terrace door.",
+     [("wait", None, "cafeteria"), ("walk", "cafeteria_terrace_door", None)]),
+])
+def test_verbs_the_lexicon_lacks_possessives_and_subsets(hospital, prompt, expected):
+    reading = read_prompt(prompt, hospital)
+    assert [(g.intent, g.destination, g.location) for g in reading.groups] == expected
+
+
+@pytest.mark.parametrize("phrase", ["run up to it", "walk over to it", "head towards it"])
+def test_it_is_the_robot_once_the_robot_was_named(hospital, phrase):
+    g = one(read_prompt(f"When the robot enters the lobby, three children {phrase}.", hospital))
+    assert g.robot_interaction == "approach" and g.destination is None

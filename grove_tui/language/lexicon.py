@@ -166,6 +166,12 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("step", "in", "front", "of"): "block", ("walk", "behind"): "follow", ("look", "at"): "look",
     ("tag", "along"): "follow", ("turn", "to", "look"): "look", ("stop", "and", "stare"): "look",
 }
+# Any verb of motion toward or away from the robot: "run up to the robot", "step away from it".
+for _verb in "walk go come run rush hurry move step head wander stroll dash race jog".split():
+    for _tail in (("up", "to"), ("over", "to"), ("towards",), ("toward",), ("closer", "to"), ("right", "up", "to")):
+        ROBOT_PHRASES.setdefault((_verb, *_tail), "approach")
+    for _tail in (("away", "from"), ("away",), ("back", "from"), ("off",)):
+        ROBOT_PHRASES.setdefault((_verb, *_tail), "avoid")
 # Words right after the robot that name an interaction ("stand in the robot's way").
 ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
                                                    ("’s", "way"): "block", ("’s", "path"): "block"}
