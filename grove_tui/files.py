@@ -125,6 +125,12 @@ def _writable_ancestor(path: Path) -> Path:
         raise OutputError(f"{path}: cannot create it, {probe} is {_kind(os.lstat(probe).st_mode)}")
     if not os.access(probe, os.W_OK | os.X_OK):
         raise OutputError(f"{path}: cannot write there ({probe} is not writable)")
+    # access() says yes to root on a read-only mount and on /proc: create and remove a probe folder,
+    # so an unwritable --out fails now, not after a whole generation.
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=".grove-probe-", dir=probe))
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot write there ({probe}: {exc.strerror})") from None
     return probe
 
 

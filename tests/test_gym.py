@@ -128,6 +128,30 @@ def test_waypoint_is_the_farthest_path_point_in_straight_reach(bundle, tmp_path)
     assert env.waypoint_index == 1
 
 
+def test_progress_follows_the_planned_path_round_a_wall(bundle, tmp_path):
+    # The goal is behind the wall nearest to the start; the path runs 3 m along the wall first. Driving
+    # along it takes the robot farther from the goal as the crow flies, and is still progress.
+    env = SocialNavEnv(bundle, kinematics="holonomic")
+    env.reset(seed=0)
+    walls = env.current.walls
+    start = np.array([28.0, 4.0])
+    a, ab = walls[:, 0:2], walls[:, 2:4] - walls[:, 0:2]
+    t = np.clip(((start - a) * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-12), 0, 1)
+    points = a + ab * t[:, None]
+    k = int(np.argmin(np.hypot(*(points - start).T)))
+    inward = (start - points[k]) / np.hypot(*(start - points[k]))
+    along = ab[k] / np.hypot(*ab[k])
+    corner = start + 3.0 * along
+    goal = points[k] - 0.6 * inward
+    assert segment_clear(start, corner, walls, 0.3) and not segment_clear(start, goal, walls, 0.3)
+    env = SocialNavEnv(with_robot(bundle, tmp_path / "round", start, goal, via=[corner]), kinematics="holonomic")
+    env.reset(seed=0)
+    steps = run(env, [along * 0.8] * 5)
+    progress = sum(s[4]["reward_terms"]["progress"] for s in steps)
+    assert steps[-1][4]["distance_to_goal"] > np.hypot(*(goal - start)) + 0.1
+    assert progress == pytest.approx(0.1 * 0.8 * 0.2 * 5, rel=0.05)
+
+
 def test_occupancy_patch_sees_the_wall_ahead(bundle, tmp_path):
     env = SocialNavEnv(bundle, kinematics="holonomic", observation={"patch_cells": 21, "patch_resolution": 0.2})
     obs, _ = env.reset(seed=0)
@@ -351,6 +375,13 @@ def test_an_episode_records_as_a_bundle_the_metrics_read(bundle, tmp_path):
     picture = draw_scenario(load_world("hospital"), scenario, out, tmp_path / "episode.png",
                             trajectories=out / "trajectories.csv", title="episode")
     assert Path(picture).stat().st_size > 1000
+    # `grove simulate` replays it: its scripted robot now drives the policy's path
+    from grove_tui.cli.generate import simulate_bundle
+
+    simulate_bundle(out, 2.0)
+    replay = Trajectories.from_csv(out / "trajectories.csv")
+    moved = np.hypot(*(replay.robot[-1, :2] - np.asarray(scenario.robot.path[0])))
+    assert moved > 0.5 and (out / "episode.json").exists()
 
 
 @pytest.mark.slow

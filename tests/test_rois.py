@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from grove_tui.generation.presets import GenerationError, load_preset
+from grove_tui.generation.presets import PromptError, load_preset
 from grove_tui.generation.rois import RoIMatcher, describe_selection, select_rois
 from grove_tui.world import list_worlds, load_world, parse_world
 from helpers.clinic import CLINIC
@@ -74,7 +74,7 @@ def test_nothing_named_falls_back_to_the_best_connected_zones(clinic, matcher):
     ("a doctor walks to the helipad", "helipad"),
 ])
 def test_unknown_place_is_an_error_with_close_matches(clinic, matcher, prompt, phrase):
-    with pytest.raises(GenerationError, match=f"does not have: '{phrase}' \\(closest: "):
+    with pytest.raises(PromptError, match=f"does not have: '{phrase}' \\(closest: "):
         select_rois(clinic, load_preset("normal"), prompt, matcher)
 
 

@@ -68,7 +68,11 @@ class TestSetupScreen:
 
 class TestGenerationScreen:
     @pytest.mark.parametrize("size", SIZES)
-    def test_generation_streaming(self, snap_compare, tmp_path, size):
+    def test_generation_streaming(self, snap_compare, tmp_path, size, monkeypatch):
+        from grove_tui.tui.screens import generation
+
+        # A stopped progress clock: elapsed 0.0 s and a fixed rate, whatever the machine's speed.
+        monkeypatch.setattr(generation, "monotonic", lambda: 100.0)
         backend = ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=10)
 
         async def run_before(pilot) -> None:
@@ -82,6 +86,7 @@ class TestGenerationScreen:
             await wait_until(pilot, lambda: table.get_cell("synthesis", "state") == "running", what="synthesis")
             await wait_until(pilot, lambda: "patients" in str(screen.query_one("#stream", Static).render()),
                              what="stream")
+            await wait_until(pilot, lambda: "tok/s" in str(table.get_cell("synthesis", "detail")), what="progress")
 
         app = GroveApp(backend, test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)

@@ -31,6 +31,7 @@ from typing import Any
 
 import yaml
 
+from grove_tui.bt.xml import read_tree
 from grove_tui.errors import GroveError, UnderstandingError
 
 PLACE_ROLES = ("start", "destination", "location", "via")
@@ -316,12 +317,8 @@ def _zone_of(world: Any, name: str) -> str | None:
 
 def idle_tree(xml: str, action_names: frozenset[str]) -> bool:
     """A tree whose nodes include no action: it can only check conditions, so nobody moves."""
-    from lxml import etree
-
-    root = etree.fromstring(xml.encode("utf-8"))
-    tags = {el.tag for el in root.iter() if isinstance(el.tag, str)}
-    ids = {el.get("ID") for el in root.iter() if isinstance(el.tag, str) and el.get("ID")}
-    return not ((tags | ids) & action_names)
+    node_types = {el.id for el in read_tree(xml).nodes()}  # compact <GoTo/> and explicit <Action ID="GoTo"/>
+    return not (node_types & action_names)
 
 
 def score_scenario(case: UnderstandingCase, world: Any, scenario: Any, trees: Mapping[str, str],

@@ -27,7 +27,6 @@ import difflib
 import heapq
 import os
 import re
-import stat
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -43,6 +42,7 @@ from grove_tui.bt.ports import (  # noqa: F401  (re-exported: the codec's histor
     blackboard_pointer, convert_literal, format_point_list, parse_agent_list, parse_point_list,
 )
 from grove_tui.errors import BTError
+from grove_tui.limits import InputLimitError, read_bytes_bounded
 
 MAX_BYTES = 1_000_000
 MAX_DEPTH = 64  # element nesting inside one file
@@ -153,35 +153,18 @@ def _read_elements(text: str | bytes, source: str) -> TreeElement:
     return _to_elements(_parse_lxml(_as_bytes(text, source), source), source)
 
 
-_FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
-               (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"))
-
-
 def read_file_bytes(path: str | os.PathLike[str], limit: int = MAX_BYTES) -> bytes:
-    """The bytes of a tree file, read with a limit; only regular files (no devices, FIFOs, directories).
-
-    A symlink is followed, so a link to /dev/zero is refused as what it points at. The file is opened
-    non-blocking, so a FIFO without a writer is refused instead of waited on.
-    """
-    path = Path(path)
+    """The bytes of a tree file through the one bounded reader (grove_tui.limits): regular files only
+    (links followed, so a link to /dev/zero is refused as what it points at), at most `limit` bytes."""
+    what = "behavior-tree file"
     try:
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
-    except OSError as exc:
-        raise _fatal(str(path), None, f"cannot read: {exc.strerror or exc}") from None
-    with os.fdopen(fd, "rb") as handle:
-        info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode):
-            kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
-            raise _fatal(str(path), None, f"is {kind}; behavior trees are read from regular files only")
-        if info.st_size > limit:
-            raise _fatal(str(path), None, f"file is {info.st_size} bytes; behavior trees are limited to {limit} bytes")
-        try:
-            data = handle.read(limit + 1)  # the file can grow after fstat
-        except OSError as exc:
-            raise _fatal(str(path), None, f"cannot read: {exc.strerror or exc}") from None
-    if len(data) > limit:
-        raise _fatal(str(path), None, f"file is over {limit} bytes; behavior trees are limited to {limit} bytes")
-    return data
+        return read_bytes_bounded(path, limit, what)
+    except InputLimitError as exc:
+        # "behavior-tree file PATH is a device, not a file" -> "PATH: is a device, not a file"
+        message = str(exc)
+        prefix = f"{what} {path}"
+        detail = message[len(prefix):].lstrip(":").strip() if message.startswith(prefix) else message
+        raise _fatal(str(path), None, detail) from None
 
 
 def _document(root: TreeElement, source: str) -> TreeDocument:

@@ -159,6 +159,13 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
     if scenario.robot is not None:
         r = scenario.robot
         lines.append(f"robot: ({r.start[0]:.2f}, {r.start[1]:.2f}) -> ({r.goal[0]:.2f}, {r.goal[1]:.2f})")
+    if report.get("grounding"):
+        from grove_tui.scenario.report import GroundingReport
+
+        # What the sentence asked beside what the scenario does, so nothing is dropped silently.
+        grounding = GroundingReport.from_dict(report["grounding"])
+        lines.append("grounding: " + ("every group as asked" if grounding.ok else "NOT everything as asked"))
+        lines += ["  " + line for line in grounding.lines()]
     return lines
 
 
@@ -225,7 +232,7 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
     if as_json:
         payload = {"bundle": str(bundle), "agents": len(result.scenario.agents), "report": {
             k: result.report[k] for k in ("stages", "total_seconds", "prompt_tokens", "completion_tokens", "zones",
-                                          "groups", "notes")}}
+                                          "groups", "notes", "grounding") if k in result.report}}
         if sim is not None:
             payload["simulation"] = sim
         click.echo(json.dumps(payload))

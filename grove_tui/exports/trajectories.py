@@ -40,9 +40,10 @@ def export_trajectories(bundle_dir: str | Path, out_dir: str | Path) -> list[Pat
         raise TrajectoryExportError(f"{csv}: no trajectories yet; simulate first (grove simulate {bundle})")
     scenario = load_scenario(bundle)
     world = load_world(scenario.world)
+    # Read (and check) the trajectories before creating anything: a broken CSV leaves no folder behind.
+    recorder = recorder_from_csv(csv)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    recorder = recorder_from_csv(csv)
     try:
         written = [
             recorder.write_jupedsim_sqlite(out / "trajectories.sqlite", world.walkable().wkt),

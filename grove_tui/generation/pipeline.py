@@ -31,7 +31,9 @@ from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.generation.reconcile import grounding_report
 from grove_tui.language.quantities import Quantity, extract_quantities
+from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
@@ -81,8 +83,20 @@ class PlanInputs:
     quantities: tuple[Quantity, ...]
     selection: Any  # rois.RoISelection
     node_names: tuple[str, ...]
+    reading: PromptReading | None = None  # the prompt's groups; when it has any, they are the result's groups
 
     def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
+        if self.reading is not None and self.reading.groups:
+            # Result group i is the i-th reading group that has people of its own (effective_counts).
+            order = sorted(effective_counts(self.reading))
+            groups = list(self.reading.groups)
+            for i, n in counts.items():
+                r = order[i]
+                inside = sum(g.count.value for g in groups if g.relation == f"subset_of:{r}")
+                value = int(n) + inside  # a parent's count includes its subsets ("one of them")
+                groups[r] = replace(groups[r], count=Count("exact", value, value, value))
+            reading = replace(self.reading, groups=tuple(groups))
+            return replace(self, reading=reading, quantities=quantities_from_reading(reading))
         if self.quantities:
             # An edited count is stated by the user now, even where the prompt only implied the group.
             quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
@@ -101,6 +115,25 @@ class GenerationResult:
     report: dict[str, Any] = field(default_factory=dict)
     # The draft and prompt analysis the trees came from; None for results rebuilt from a bundle.
     inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
+
+
+def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
+    """The head counts of a reading in the older Quantity form (population checks, the report's
+    "quantities"): one per group with people of its own, spans located in the prompt."""
+    out: list[Quantity] = []
+    counts = effective_counts(reading)
+    cursor = 0
+    for i, g in enumerate(reading.groups):
+        at = reading.prompt.find(g.who, cursor)
+        start = at if at >= 0 else cursor
+        end = start + len(g.who)
+        cursor = end if at >= 0 else cursor
+        if counts.get(i, 0) <= 0:
+            continue
+        out.append(Quantity(count=counts[i], noun=g.label, phrase=g.who, start=start, end=end,
+                            exact=g.count.kind in ("exact", "structured", "exclusive"),
+                            implied=g.count.kind in ("vague", "implied")))
+    return out
 
 
 class _StageClock:
@@ -189,8 +222,10 @@ class GenerationPipeline:
 
         t0 = clock.begin("rois")
         quantities = extract_quantities(prompt)
-        check_stated_counts(prompt, quantities)
-        selection = select_rois(world, preset, prompt, self.matcher)
+        check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
+        reading = read_prompt(prompt, world, seed=seed)
+        quantities = quantities_from_reading(reading)
+        selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
         roi_tokens = (0, 0)
         if self.llm_roi is not None and preset.guided:
             selection, *roi_tokens = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
@@ -202,7 +237,8 @@ class GenerationPipeline:
             retrieved = self.retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
         else:
             retrieved = []
-        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for)
+        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
+                                  reading=reading)
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")
@@ -212,7 +248,7 @@ class GenerationPipeline:
         clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
                   synthesis.prompt_tokens, synthesis.completion_tokens)
 
-        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names))
+        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names), reading)
         post, plan = self._plan_stages(inputs, seed, clock, cancel)
 
         models = {"bt": _model_name(self.llm_bt)}
@@ -224,6 +260,7 @@ class GenerationPipeline:
             "total_seconds": round(time.perf_counter() - started, 4),
             "prompt_tokens": synthesis.prompt_tokens, "completion_tokens": synthesis.completion_tokens,
             "quantities": [{"phrase": q.phrase, "count": q.count, "noun": q.noun, "exact": q.exact} for q in quantities],
+            "reading": reading.to_dict(),
             "selected_rois": describe_selection(selection), "zones": selection.zones, "named_zones": selection.named_zones,
             "retrieved": [{"name": r.name, "kind": r.kind, "score": r.score, "nodes": list(r.nodes)} for r in retrieved],
             "documents": describe_documents(request.documents), "offered_nodes": request.node_names,
@@ -308,7 +345,7 @@ class GenerationPipeline:
         world, preset, grid = self.world, self.preset, self.grid
         t0 = clock.begin("postprocess")
         post = postprocess(world, grid, preset, inputs.draft, list(inputs.quantities), inputs.selection, seed,
-                           inputs.prompt, list(inputs.node_names))
+                           inputs.prompt, list(inputs.node_names), reading=inputs.reading)
         clock.end("postprocess", t0, f"{len(post.agents)} agents")
 
         t0 = clock.begin("planning")
@@ -332,8 +369,11 @@ class GenerationPipeline:
             fields={fid: f"fields/{fid}.npz" for fid in sorted(plan.fields)}, resolution=self.resolution)
         report = dict(report)
         report["groups"] = [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
-                             "field": g.field_id} for g in post.groups]
+                             "field": g.field_id, "behavior": g.behavior} for g in post.groups]
         report["exit"] = post.exit
         report["notes"] = post.notes + plan.notes
+        if inputs.reading is not None:
+            report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
+                                                   post.notes).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

@@ -24,7 +24,9 @@ from grove_tui.bt.ports import format_port_value
 from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.generation.reconcile import reconcile
 from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
+from grove_tui.language.reading import PromptReading
 
 Point = tuple[float, float]
 
@@ -56,6 +58,7 @@ class AgentPlan:
     max_vel: float = 1.0
     field_id: str | None = None
     exit: str | None = None
+    behavior: str = "Regular"  # HuNavSim reaction to the robot, from the prompt's reading
 
     @property
     def xml(self) -> str:
@@ -75,6 +78,10 @@ class GroupPlan:
     sfm_group: int = -1
     field_id: str | None = None
     parties: dict[int, list[int]] = field(default_factory=dict)  # social-group id -> its members
+    behavior: str = "Regular"  # HuNavSim reaction to the robot
+    reading_index: int | None = None  # the prompt reading's group this one realises
+    party_size: int | None = None  # "two families of three": social groups of this size
+    speed_factor: float = 1.0  # the reading's pace: slow / fast walkers
 
 
 @dataclass
@@ -153,6 +160,18 @@ def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Prese
     for i in unused:
         notes.append(f"dropped group '{groups[i].label}' ({groups[i].count}): the prompt states no such people")
     return plans
+
+
+def _preset_overlay(tree: DraftNode, preset: Preset, selection: Any, notes: list[str], label: str) -> DraftNode:
+    """What the preset itself requires of every tree: under the emergency preset, following the
+    evacuation field to the exit."""
+    kinds = {n.node for n in tree.walk()}
+    if preset.velocity == "field" and "FollowVelocityField" not in kinds:
+        exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
+        if exit_name is not None:
+            notes.append(f"group '{label}': follows the evacuation field (emergency preset)")
+            return DraftNode("Sequence", {}, (tree, DraftNode("FollowVelocityField", {"exit": exit_name})))
+    return tree
 
 
 def _group_text(group: GroupPlan, quantities: Sequence[Quantity], prompt: str) -> str:
@@ -784,19 +803,35 @@ class TreeWriter:
 # ---- the stage ------------------------------------------------------------------------------
 
 def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity],
-                selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = ()) -> PostProcessed:
-    """Draft -> agents with ids, spawns, resolved targets and per-agent trees (waypoints still empty)."""
+                selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = (),
+                reading: PromptReading | None = None) -> PostProcessed:
+    """Draft -> agents with ids, spawns, resolved targets and per-agent trees (waypoints still empty).
+
+    With a `reading` that found groups, the groups are the reading's and the draft is repaired
+    only where it contradicts it (generation/reconcile.py); without one, the older word rules of
+    this module reconcile the draft with the stated quantities."""
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
     notes: list[str] = []
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
-    groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection, allowed_nodes)
-    if not groups:
-        raise GenerationError("the draft has no groups of people")
-    # Trees first: where a group starts depends on where its final tree sends it.
-    for g in groups:
-        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes, g.label,
-                               allowed_nodes)
-    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+    if reading is not None and reading.groups:
+        groups = [GroupPlan(i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
+                            reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor)
+                  for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
+                                                  evacuation_field=preset.velocity == "field"))]
+        if not groups:
+            raise GenerationError("the prompt's groups leave nobody in the scenario")
+        for g in groups:
+            g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
+    else:
+        groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
+                                  allowed_nodes)
+        if not groups:
+            raise GenerationError("the draft has no groups of people")
+        # Trees first: where a group starts depends on where its final tree sends it.
+        for g in groups:
+            g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes,
+                                   g.label, allowed_nodes)
+        _ground_spawns(groups, quantities, prompt, selection, notes, world)
     space = FreeSpace(world, grid)
     _check_capacity(groups, space, world)
     _check_limits(groups, preset)
@@ -816,7 +851,11 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         parties = [g.count]
         if node_types & GROUPING_NODES and g.count > 1:
             g.sfm_group = sfm_groups
-            if "Converse" not in node_types and g.count > MAX_WALKING_GROUP:
+            if g.party_size and "Converse" not in node_types and g.count > g.party_size:
+                # "two families of three": the parties the sentence states
+                parties = [g.party_size] * (g.count // g.party_size) + ([g.count % g.party_size]
+                                                                       if g.count % g.party_size else [])
+            elif "Converse" not in node_types and g.count > MAX_WALKING_GROUP:
                 n = math.ceil(g.count / MAX_WALKING_GROUP)
                 parties = [g.count // n + (1 if i < g.count % n else 0) for i in range(n)]
                 sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
@@ -835,7 +874,8 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                 g.parties[party] = g.member_ids[first:first + size]
             for agent_id, start in zip(g.member_ids[first:first + size], starts):
                 agents.append(AgentPlan(agent_id, g.index, party, g.label, start, g.spawn, [], g.spawn, g.tree,
-                                        max_vel=preset.max_vel, field_id=g.field_id, exit=exit_name))
+                                        max_vel=round(preset.max_vel * g.speed_factor, 3), field_id=g.field_id,
+                                        exit=exit_name, behavior=g.behavior))
             first += size
 
     writer = TreeWriter(resolver)

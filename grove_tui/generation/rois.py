@@ -20,6 +20,7 @@ from typing import Any
 
 from grove_tui.generation.presets import Preset, PromptError
 from grove_tui.language.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, words
+from grove_tui.language.reading import PromptReading, read_prompt
 
 # Groups of words people use for the same kind of place; matching any word of a group counts as
 # matching the others, at a discount so that the literal word still wins.
@@ -331,35 +332,9 @@ class RoIMatcher:
         return tuple(obj.interaction_point)
 
     def unknown_places(self, prompt: str) -> list[str]:
-        """Place phrases ("the swimming pool") that match nothing in the world."""
-        toks = words(prompt)
-        missing: list[str] = []
-        for i, w in enumerate(toks):
-            if w not in _LOCATIVES:
-                continue
-            j = i + 1
-            while j < len(toks) and toks[j] in _DETERMINERS:
-                j += 1
-            if j == i + 1 and w in ("in", "at", "to", "by", "from"):
-                continue  # "in line", "at once", "to wait": no determiner, not a place phrase
-            phrase: list[str] = []
-            # "exit" is both a locative verb and a place: inside a phrase, a word the world knows is a place
-            while (j < len(toks) and len(phrase) < 3 and toks[j] not in STOPWORDS
-                   and (toks[j] not in _LOCATIVES or self._known(lemma(toks[j])))
-                   and toks[j] not in NUMBER_WORDS and not toks[j][:1].isdigit()):
-                phrase.append(toks[j])
-                j += 1
-            if not phrase:
-                continue
-            lemmas = [lemma(p) for p in phrase]
-            if all(l in _PLACE_MODIFIERS for l in lemmas):
-                continue  # "the nearest", "the other one": no place named
-            if any(l in NON_PLACES or l in PERSON_NOUNS for l in lemmas[-1:]) or all(p.isdigit() for p in phrase):
-                continue
-            if any(self._known(l) for l in lemmas):
-                continue
-            missing.append(" ".join(phrase))
-        return list(dict.fromkeys(missing))
+        """Noun phrases in a place role ("to the swimming pool") that name nothing in the world: the
+        prompt reader's answer (language/reading.py), the one rule for what is a place."""
+        return list(read_prompt(prompt, self.world).unknown_places)
 
     def _known(self, token: str) -> bool:
         if token in self.vocabulary:
@@ -381,16 +356,26 @@ class RoIMatcher:
 
 
 def select_rois(world: Any, preset: Preset, prompt: str, matcher: RoIMatcher | None = None,
-                max_default_zones: int = 3) -> RoISelection:
-    """The strategic layer: RoIs named by the prompt plus what the preset needs, summarised."""
+                max_default_zones: int = 3, reading: PromptReading | None = None) -> RoISelection:
+    """The strategic layer: RoIs named by the prompt plus what the preset needs, summarised.
+
+    Places the reading gives a role (start, destination, location, via) are always selected, so the
+    model may name them; only the reading's unknown places (noun phrases in a place role) are refused."""
     matcher = matcher or RoIMatcher(world)
-    unknown = matcher.unknown_places(prompt)
+    unknown = list(reading.unknown_places) if reading is not None else matcher.unknown_places(prompt)
     if unknown:
         parts = [f"'{p}' (closest: {', '.join(matcher.close_matches(p))})" for p in unknown]
         raise PromptError(f"the prompt names a place world '{world.name}' does not have: " + "; ".join(parts))
     if preset.context == "world":
         return _whole_world(world, matcher.match(prompt))
     matches = matcher.match(prompt)
+    have = {m.name for m in matches}
+    for name in reading_places(reading):
+        if name not in have:
+            obj = world.find(name)
+            kind = "zone" if hasattr(obj, "entities") else "door" if hasattr(obj, "leads_to") else "entity"
+            matches.append(RoIMatch(kind, name, obj.name if kind == "zone" else obj.zone, 0.0, (), "reading"))
+            have.add(name)
     named_zones = list(dict.fromkeys(m.zone for m in matches))
     if not matches:
         # Nothing named: the busiest hubs (most doors) make a plausible default stage.
@@ -412,6 +397,16 @@ def select_rois(world: Any, preset: Preset, prompt: str, matcher: RoIMatcher | N
     roi_names = list(dict.fromkeys(m.name for m in matches))
     summary = summarize(world, zones, {m.name for m in matches}, exits)
     return RoISelection(matches, zones, named_zones or zones, summary, roi_names, exits)
+
+
+def reading_places(reading: PromptReading | None) -> list[str]:
+    """Every place the reading gives a role, in group order."""
+    if reading is None:
+        return []
+    names: list[str] = []
+    for g in reading.groups:
+        names += [p for p in (g.start, g.location, *g.via, g.destination) if p]
+    return list(dict.fromkeys(names))
 
 
 def _whole_world(world: Any, named: list[RoIMatch]) -> RoISelection:

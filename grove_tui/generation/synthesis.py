@@ -19,6 +19,7 @@ from grove_tui.bt.manifest import NODES
 from grove_tui.generation.draft import Draft, DraftError, build_draft_schema, parse_draft
 from grove_tui.generation.presets import GenerationError, Preset
 from grove_tui.language.quantities import Quantity
+from grove_tui.language.reading import PromptReading
 
 MAX_ATTEMPTS = 3
 
@@ -108,8 +109,27 @@ def choose_documents(preset: Preset, retrieved: Sequence[Any], offered: Sequence
     return docs
 
 
+def describe_reading_groups(reading: PromptReading) -> str:
+    """The reading's groups as the model's task: who, how many, what, where ("Groups to write: ...")."""
+    parts = []
+    for g in reading.groups:
+        text = f"{g.label} x{g.count.value}: {g.intent}"
+        if g.robot_interaction:
+            text += f" ({g.robot_interaction} the robot)"
+        for key in ("start", "location", "destination"):
+            value = getattr(g, key)
+            if value:
+                text += f", {key} {value}"
+        if g.via:
+            text += ", via " + " ".join(g.via)
+        if g.together:
+            text += ", together"
+        parts.append(text)
+    return "; ".join(parts)
+
+
 def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], prompt: str,
-                   quantities: Sequence[Quantity], roi_names: Sequence[str]) -> list[dict[str, str]]:
+                   quantities: Sequence[Quantity], roi_names: Sequence[str], reading: PromptReading | None = None) -> list[dict[str, str]]:
     """System text fixed per preset first; the variable parts (places, nodes, the sentence) last."""
     if preset.guided:
         system = f"{preset.template}\n\n{_RULES}\n{_EXAMPLE}"
@@ -119,14 +139,17 @@ def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc
     parts += [d.text.strip() for d in documents]
     parts += ["", f"Scenario: {prompt.strip()}"]
     if preset.guided:
-        if quantities:
+        if reading is not None and reading.groups:
+            parts.append("Groups to write: " + describe_reading_groups(reading))
+        elif quantities:
             parts.append("Groups to write: " + "; ".join(f"{q.phrase} ({q.count})" for q in quantities))
         parts.append("Place names you may use: " + ", ".join(roi_names))
     return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
 
 
 def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], prompt: str,
-                    quantities: Sequence[Quantity], documents_for: Callable[[list[str]], list[str]]) -> SynthesisRequest:
+                    quantities: Sequence[Quantity], documents_for: Callable[[list[str]], list[str]],
+                    reading: PromptReading | None = None) -> SynthesisRequest:
     retrieved_nodes = [n for r in retrieved for n in r.nodes]
     offered = offered_nodes(preset, retrieved_nodes)
     documents = choose_documents(preset, retrieved, offered, documents_for)
@@ -134,7 +157,7 @@ def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], pr
     max_groups = min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities else preset.limits.max_groups
     schema = build_draft_schema(offered, selection.roi_names, max_groups=max_groups,
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
-    messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names)
+    messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names, reading)
     return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents)
 
 

@@ -24,10 +24,11 @@ class RewardWeights:
 
     - success: once, when the robot reaches its goal (CrowdNav success_reward).
     - collision: once, when the robot touches a person or an obstacle (CrowdNav collision_penalty).
-    - progress: per metre the robot got closer to its goal during the step. Potential-based shaping
-      (Ng, Harada, Russell, ICML 1999) leaves the optimal policy unchanged; CrowdNav has no such term,
-      and without it a few minutes of PPO learn nothing, so 0.1 is our choice: crossing a 10 m room
-      earns as much as arriving.
+    - progress: per metre the robot's distance to go shrank during the step, the distance to go being
+      straight to its subgoal and then along the planned path to the goal (so going round a wall is
+      progress, where the straight-line distance would punish it). Potential-based shaping (Ng, Harada,
+      Russell, ICML 1999) leaves the optimal policy unchanged; CrowdNav has no such term (its open
+      square needs none), so 0.1 is our choice: a 10 m route earns as much as arriving.
     - intimate: per metre of intrusion into a person's intimate space (gap below INTIMATE, 0.45 m, the
       band HuNavSim's evaluator counts) per second, CrowdNav's discomfort_penalty_factor 0.5. CrowdNav
       applies it below 0.2 m; the band here is HuNavSim's so reward and metrics speak of the same space.

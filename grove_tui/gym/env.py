@@ -41,8 +41,8 @@ import numpy as np
 from gymnasium import spaces
 
 from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metrics
-from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
 from grove_tui.errors import GymError
+from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
@@ -162,6 +162,7 @@ class SocialNavEnv(gymnasium.Env):
         self.scenario_index = index
         self.current = self.scenarios[index]
         robot = self._jittered(self.current.robot) if self.start_jitter > 0 else self.current.robot
+        self._release()
         self.sim = self.current.simulation(self.sim_dt, robot=robot)
         self.goal = np.asarray(robot.goal, dtype=np.float64)
         self.robot_radius = float(robot.radius)
@@ -170,11 +171,19 @@ class SocialNavEnv(gymnasium.Env):
         # Face along the planned path, as a robot set down at its start would.
         ahead = self.path[1] - self.path[0] if len(self.path) > 1 else self.goal - self.path[0]
         self.heading = math.atan2(ahead[1], ahead[0]) if np.hypot(*ahead) > 1e-9 else 0.0
+        # The simulator set the robot down facing +x; the same robot, facing the heading, so recordings
+        # and the people's view of the robot start with it (the simulator then takes the yaw from motion).
+        self.sim.crowd.set_robot(robot.start, radius=robot.radius, max_speed=robot.max_vel, path=self.path,
+                                 yaw=self.heading)
         self.time_limit = self.time_limit_setting if self.time_limit_setting is not None else \
             max(TIME_LIMIT_FLOOR, TIME_LIMIT_FACTOR * _path_length(self.path) / max(self.robot_max_speed, 1e-6)
                 + TIME_LIMIT_SLACK)
         self.distance_to_goal = self._goal_distance()
+        # path length from each point of the planned path to its end (the goal)
+        legs = np.hypot(*np.diff(self.path, axis=0).T) if len(self.path) > 1 else np.zeros(0)
+        self._length_after = np.concatenate([np.cumsum(legs[::-1])[::-1], [0.0]])
         self.waypoint_index = 1 if len(self.path) > 1 else 0
+        self._refresh_subgoal()
         self.episode_steps = 0
         self.episode_return = 0.0
         self.outcome = ""
@@ -212,8 +221,9 @@ class SocialNavEnv(gymnasium.Env):
         if self.kinematics == "holonomic":
             self.heading = float(crowd.robot_yaw)
         self.episode_steps += 1
-        previous = self.distance_to_goal
+        previous = self.distance_to_go
         self.distance_to_goal = self._goal_distance()
+        self._refresh_subgoal()
         reached = self.distance_to_goal <= self.goal_tolerance and not collision
         timed_out = self.sim.time >= self.time_limit - 1e-9 and not (reached or collision)
         terms = self._reward_terms(previous, closest_gap, collision, reached, timed_out)
@@ -225,6 +235,16 @@ class SocialNavEnv(gymnasium.Env):
         self.history.append(self.sim, self._robot_pose())
         info = self._info(terms, collision=collision)
         return self._observation(), reward, terminated, truncated, info
+
+    def close(self) -> None:
+        self._release()
+        super().close()
+
+    def _release(self) -> None:
+        """Close the finished episode's trajectory recorder (long episodes spill it to a temporary file)."""
+        if self.sim is not None and getattr(self.sim, "recorder", None) is not None:
+            self.sim.recorder.close()
+        self.sim = None
 
     # ---- parts ---------------------------------------------------------------------------------
 
@@ -239,7 +259,7 @@ class SocialNavEnv(gymnasium.Env):
         free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
         # a free cell behind a wall (another room) is no start nearby: keep the scenario's
         if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
-                                             self.current.walls, float(robot.radius)):
+                                             self.current.walls, float(robot.radius), self.current.boxes):
             return robot
         start = (float(free[0]), float(free[1]))
         path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
@@ -269,7 +289,7 @@ class SocialNavEnv(gymnasium.Env):
             gap = float(gaps[active].min())
         if gap < COLLISION_GAP:
             return gap, "person"
-        if wall_distance(pos, self.current.walls) < self.robot_radius:
+        if wall_distance(pos, self.current.walls, self.robot_radius, self.current.boxes) < self.robot_radius:
             return gap, "obstacle"
         return gap, ""
 
@@ -279,7 +299,7 @@ class SocialNavEnv(gymnasium.Env):
         intimate = max(0.0, w.intimate_distance - gap)
         personal = max(0.0, w.personal_distance - max(gap, w.intimate_distance)) if gap < w.personal_distance else 0.0
         return {
-            "progress": w.progress * (previous - self.distance_to_goal),
+            "progress": w.progress * (previous - self.distance_to_go),
             "intimate": -w.intimate * intimate * self.control_period,
             "personal": -w.personal * personal * self.control_period,
             "collision": w.collision if collision else 0.0,
@@ -296,7 +316,7 @@ class SocialNavEnv(gymnasium.Env):
                           self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
         goal_xy = frame @ (self.goal - pos)
         goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
-        offset = self._subgoal(pos) - pos
+        offset = self.path[self.subgoal_index] - pos
         waypoint_xy = frame @ offset
         waypoint = np.array([waypoint_xy[0], waypoint_xy[1], math.hypot(*offset)], dtype=np.float32)
         cfg = self.obs_config
@@ -309,19 +329,24 @@ class SocialNavEnv(gymnasium.Env):
                 "waypoint": np.clip(waypoint, -limit, limit),
                 "pedestrians": np.clip(people, -limit, limit), "occupancy": patch}
 
-    def _subgoal(self, pos: np.ndarray) -> np.ndarray:
-        path, walls = self.path, self.current.walls
+    def _refresh_subgoal(self) -> None:
+        """Advance along the planned path (see the module docstring), then the subgoal and the distance
+        to go: straight to the subgoal, then along the path to the goal."""
+        pos = self.sim.crowd.robot_pos
+        path, walls, boxes = self.path, self.current.walls, self.current.boxes
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
                 math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
-                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance)):
+                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance, boxes)):
             self.waypoint_index += 1
         index = self.waypoint_index
-        if not segment_clear(pos, path[index], walls, clearance):
+        if not segment_clear(pos, path[index], walls, clearance, boxes):
             for earlier in range(index - 1, -1, -1):
-                if segment_clear(pos, path[earlier], walls, clearance):
-                    return path[earlier]
-        return path[index]
+                if segment_clear(pos, path[earlier], walls, clearance, boxes):
+                    index = earlier
+                    break
+        self.subgoal_index = index
+        self.distance_to_go = float(math.hypot(*(path[index] - pos)) + self._length_after[index])
 
     def _info(self, terms: dict[str, float], collision: str = "") -> dict[str, Any]:
         done = bool(self.outcome)
@@ -331,6 +356,7 @@ class SocialNavEnv(gymnasium.Env):
             "scenario": str(self.current.bundle_dir),
             "time": float(self.sim.time),
             "distance_to_goal": float(self.distance_to_goal),
+            "distance_to_go": float(self.distance_to_go),
             "collision": collision,
             "reached_goal": self.outcome == "goal",
             "outcome": self.outcome,

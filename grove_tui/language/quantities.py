@@ -10,83 +10,23 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-STOPWORDS = frozenset(
-    """a an the and or of in on at to from into onto by with for as is are was were be been being it its
-    this that these those there their they them he she his her we our you your i me my some any each every
-    all who whom which what while when where then than so very just also around near next inside outside
-    toward towards through across about over under up down out off people person someone everyone
-    other others one ones do does did have has had will would should can could may might must let lets make makes
-    while during after before until still again more most many much few several""".split()
-)
+from grove_tui.language.lexicon import BIG_SCALES as _BIG_SCALES
+from grove_tui.language.lexicon import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS
+from grove_tui.language.lexicon import SCALES as _SCALES
+from grove_tui.language.lexicon import TENS as _TENS
+from grove_tui.language.lexicon import UNITS as _UNITS
+from grove_tui.language.tokens import lemma, semantic_tokens, words
+
+__all__ = ["NUMBER_WORDS", "PERSON_NOUNS", "STOPWORDS", "Quantity", "extract_quantities", "lemma", "semantic_tokens",
+           "words"]
 
 # Words that end a counted phrase without being stopwords for matching ("waiting" names a room).
 _PHRASE_STOPS = frozenset("go goes going walk walks walking stand stands standing wait waits waiting sit sits sitting".split())
 
-_IRREGULAR = {
-    "people": "person", "persons": "person", "children": "child", "men": "man", "women": "woman",
-    "staff": "staff", "feet": "foot", "teeth": "tooth", "mice": "mouse", "geese": "goose",
-    "elderly": "elderly", "police": "police", "series": "series", "news": "news",
-}
-_KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
-
-
-def lemma(word: str) -> str:
-    """Plural to singular by rule; enough to match "nurses" to "nurse" and "pharmacies" to "pharmacy"."""
-    w = word.lower()
-    if w in _IRREGULAR:
-        return _IRREGULAR[w]
-    if len(w) <= 3 or not w.endswith("s") or w.endswith(_KEEP_S):
-        return w
-    if w.endswith("ies") and len(w) > 4:
-        return w[:-3] + "y"
-    if w.endswith(("ches", "shes", "xes", "zes", "sses")):
-        return w[:-2]
-    return w[:-1]
-
-
-_WORD = re.compile(r"[a-z0-9]+(?:[,'][0-9]{3})*")
-
-
-def words(text: str) -> list[str]:
-    return _WORD.findall(text.lower().replace("-", " "))
-
-
-def semantic_tokens(text: str) -> list[str]:
-    """Lowercased, lemmatised content words, in order, without stopwords or numbers."""
-    out: list[str] = []
-    for w in words(text):
-        if w in STOPWORDS or w.isdigit() or w in NUMBER_WORDS or "," in w:
-            continue
-        out.append(lemma(w))
-    return out
-
-
-_UNITS = {
-    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
-    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15,
-    "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19,
-}
-_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
-# Millions and billions are read so "a billion people" is refused as too many, not ignored.
-_SCALES = {"hundred": 100, "thousand": 1000, "million": 10**6, "billion": 10**9, "trillion": 10**12}
-_BIG_SCALES = frozenset({"thousand", "million", "billion", "trillion"})
-NUMBER_WORDS = set(_UNITS) | set(_TENS) | set(_SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
 # Vague quantities get a fixed, documented reading so the same prompt always gives the same crowd.
 VAGUE = {"few": 3, "handful": 4, "several": 4, "some": 3, "couple": 2, "pair": 2, "dozens": 24, "many": 12}
 _VAGUE_EXACT = {"couple", "pair"}  # "a couple of" means two, not "about two"
 
-PERSON_NOUNS = frozenset(
-    """person people individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
-    colleague coworker manager receptionist clerk cashier pharmacist guard security officer cleaner janitor
-    porter student teacher child kid baby toddler teenager adult parent mother father mom dad grandparent
-    grandmother grandfather family friend couple guest resident neighbour neighbor roommate tenant customer
-    client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
-    volunteer caregiver paramedic intern developer engineer member attendee participant crowd group team
-    queue line occupant user walker runner diner eater commuter spectator fan player athlete pilgrim
-    inpatient outpatient surgeon therapist technician radiologist dentist chef cook waiter waitress barista
-    employee boss intern professor pupil toddler infant housemate sibling brother sister son daughter husband
-    wife partner relative cousin uncle aunt delivery courier visitor smoker jogger""".split()
-)
 # Collectives whose size follows an "of N" ("a family of four", "a group of 5 friends").
 COLLECTIVES = frozenset({"family", "group", "team", "party", "crowd", "couple", "queue", "line", "bunch", "circle"})
 # Words after a bare number that show it counts the people of an earlier phrase ("and ten in the lobby").

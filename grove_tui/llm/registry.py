@@ -59,10 +59,22 @@ def models_in_directory(directory: Path | None = None) -> list[Path]:
 
 
 def _checked(path: Path, source: str) -> Path:
+    """The path of a readable GGUF whose tensors are all there (a truncated download is refused here,
+    before a worker process tries to load it)."""
     try:
-        return check_gguf_file(path)
+        checked = check_gguf_file(path)
+        read_gguf_info(checked)
+        return checked
     except ModelError as error:
         raise ModelError(f"{source}: {error}") from None
+
+
+def _complete(path: Path) -> bool:
+    try:
+        read_gguf_info(path)
+        return True
+    except ModelError:
+        return False
 
 
 def resolve_models(cli_roi: str | os.PathLike[str] | None = None, cli_bt: str | os.PathLike[str] | None = None,
@@ -72,7 +84,8 @@ def resolve_models(cli_roi: str | os.PathLike[str] | None = None, cli_bt: str | 
     settings = load_settings() if settings is None else settings
     cli = {"roi": cli_roi, "bt": cli_bt}
     environment = {"roi": settings.roi_model, "bt": settings.bt_model}
-    found = models_in_directory()
+    # Damaged files in the models folder are skipped (`models list` shows them with the reason).
+    found = [path for path in models_in_directory() if _complete(path)]
     choices: dict[str, ModelChoice] = {}
     for role in ROLES:
         explicit = cli[role]

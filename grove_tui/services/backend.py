@@ -237,6 +237,7 @@ class EngineBackend:
         self._models: dict[str, Any] = {}
         self._model_errors: dict[str, str] = {}
         self._retriever: Any = None
+        self._embedder_warm = False
         self._worlds: dict[str, Any] = {}
 
     # worlds and presets ------------------------------------------------------------------------------
@@ -325,6 +326,20 @@ class EngineBackend:
                     self._retriever = NodeRetriever()
             return self._retriever
 
+    def warm_up_retriever(self) -> None:
+        """Open the node index and load the embedding model now, so the first Retrieval takes no extra time."""
+        retriever = self._retriever_instance()
+        if self._retriever_factory is None:
+            from grove_tui.generation.retrieval import embed_query
+
+            retriever.ensure_index()
+            embed_query("people walk")  # imports torch, loads the model and its traced query encoder
+        self._embedder_warm = True
+
+    def embedder_ready(self) -> bool:
+        """Whether retrieval runs without first loading the embedding model (warmed, or used once)."""
+        return self._embedder_warm or self._retriever_factory is not None
+
     def close(self) -> None:
         with self._lock:
             for llm in {id(m): m for m in self._models.values()}.values():
@@ -353,6 +368,7 @@ class EngineBackend:
         retriever = self._retriever_instance()
         pipeline = GenerationPipeline(world, preset, models.get("roi"), models["bt"], retriever)
         result = pipeline.run(prompt, seed=seed, on_event=on_event, cancel=cancel)
+        self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
         stamp = time.strftime("%Y%m%d-%H%M%S")
         bundle_dir = write_bundle(result, self.runs_dir / f"{stamp}-{_slug(prompt)}-{seed}")
         return GeneratedScenario(prompt, world_name, preset_name, seed, world, result, Path(bundle_dir))
@@ -426,7 +442,9 @@ class EngineBackend:
         return flat
 
     # export ----------------------------------------------------------------------------------------
-    def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
+    def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path,
+               on_progress: Callable[[str, int, int], None] | None = None) -> list[ExportedFile]:
+        """Every format into a new folder under `root`; `on_progress(kind, index, total)` before each one."""
         stamp = time.strftime("%Y%m%d-%H%M%S")
         out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}"
         suffix = 1
@@ -435,7 +453,9 @@ class EngineBackend:
             out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}-{suffix}"
         out_dir.mkdir(parents=True)
         ctx = ExportContext(generated, simulation, out_dir)
-        for kind, exporter in self.exporters:
+        for index, (kind, exporter) in enumerate(self.exporters):
+            if on_progress is not None:
+                on_progress(kind, index, len(self.exporters))
             try:
                 exporter(ctx)
             except Exception as exc:  # one failing format must not lose the others; the dialog shows why

@@ -33,7 +33,7 @@ import shapely
 
 from grove_tui.bt.context import AgentContext, SimContext
 from grove_tui.bt.registry import tree_factory
-from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
+from grove_tui.bt.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.blackboard import Blackboard
 from grove_tui.bt.document import TreeDocument, node, subtree_call
 from grove_tui.bt.factory import BehaviorTree
@@ -43,12 +43,7 @@ from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crow
 from grove_tui.crowd.recording import TrajectoryRecorder
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
-REACTION_DEFAULTS = {
-    "Surprised": ("SurprisedNav", 4.0, 30.0, True),
-    "Scared": ("ScaredNav", 3.0, 40.0, False),
-    "Curious": ("CuriousNav", 10.0, 30.0, True),
-    "Threatening": ("ThreateningNav", 4.0, 40.0, True),
-}
+REACTION_DEFAULTS = ROBOT_REACTION_DEFAULTS
 HUNAV_LOOPING_NODES = frozenset({"RegularNav", "UpdateGoal"})
 ROBOT_CONTACT_GAP = 0.02  # HuNavSim evaluator: a gap below this is a collision
 # A contact ends only once the two have moved this far apart: bodies brushing against each other in a

@@ -12,6 +12,7 @@ from typing import Any
 
 from textual.app import App
 from textual.binding import Binding
+from textual.screen import ModalScreen
 
 from grove_tui.services.backend import EngineBackend, GeneratedScenario
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
@@ -51,6 +52,8 @@ class GroveApp(App[int]):
         self.generated: GeneratedScenario | None = None
         self.animation_level = self.settings.ui.animation
         self.open_bundle_at_start = open_bundle
+        # Completion tokens of each model stage's last run: the generation screen's ETA expects as many.
+        self.stage_tokens: dict[str, int] = {}
 
     def on_mount(self) -> None:
         from grove_tui.tui.screens.setup import SetupScreen
@@ -90,6 +93,24 @@ class GroveApp(App[int]):
 
     def on_run_open_failed(self, message: RunOpenFailed) -> None:
         self.notify(message.error, title=f"Cannot open {message.bundle_dir.name}", severity="error", timeout=15)
+
+    # screens: notifications belong to the screen they were raised on -------------------------------------
+    # Cleared before a full screen replaces another (not for dialogs over the same screen), so toasts
+    # never carry over and cover the next screen; what the caller notifies after the switch stays.
+    def push_screen(self, screen: Any, *args: Any, **kwargs: Any) -> Any:
+        if not isinstance(screen, ModalScreen):
+            self.clear_notifications()
+        return super().push_screen(screen, *args, **kwargs)
+
+    def switch_screen(self, screen: Any) -> Any:
+        if not isinstance(screen, ModalScreen):
+            self.clear_notifications()
+        return super().switch_screen(screen)
+
+    def pop_screen(self) -> Any:
+        if not isinstance(self.screen, ModalScreen):
+            self.clear_notifications()
+        return super().pop_screen()
 
     # shared state ------------------------------------------------------------------------------------
     def remember_prompt(self, prompt: str) -> None:

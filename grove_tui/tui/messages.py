@@ -36,6 +36,7 @@ class PresetsListed(Message):
 class ModelsChanged(Message):
     statuses: list[Any]  # backend.ModelStatus
     loading: bool = False
+    embedder: str = ""  # the node retriever's embedding model: "", "loading", "ready" or its error
 
 
 @dataclass
@@ -58,6 +59,7 @@ class TokensFlushed(Message):
 
     stage: str
     text: str
+    tokens: int = 0  # tokens streamed in this stage so far (each TokenStreamed is one token)
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, TokensFlushed) and message.stage == self.stage
@@ -123,3 +125,12 @@ class MetricsComputed(Message):
     t: float
     values: dict[str, float]
     error: str = ""
+
+
+@dataclass
+class ExportProgress(Message):
+    """The exporter `kind` (number `index` of `total`) starts."""
+
+    kind: str
+    index: int
+    total: int

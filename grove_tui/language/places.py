@@ -1,0 +1,207 @@
+"""The one place matcher: a noun phrase of the prompt -> a zone, door or entity of the world.
+
+A world's RoIs are indexed by what people call them: their `name` split on underscores, their
+aliases, their type and (more weakly) their tags. A phrase is scored against each RoI with
+IDF-weighted word matches; the whole name or an alias inside the phrase beats anything that only
+shares one word, a zone beats its own fixtures on a tie, and a door is chosen only when the
+phrase speaks of a door or names that door. Words for the whole building ("the hospital") and
+generic heads ("area", "room") never have to match.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES,
+                                        PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
+from grove_tui.language.tokens import lemma, name_tokens
+
+SYNONYM_DISCOUNT = 0.6
+TAG_DISCOUNT = 0.3
+WHOLE_PHRASE_BONUS = 2.0
+
+
+@dataclass(frozen=True)
+class PlaceEntry:
+    kind: str  # "zone" | "door" | "entity"
+    name: str
+    zone: str
+    tokens: frozenset[str]  # name, aliases and type: what people call it
+    tag_tokens: frozenset[str]  # what it is for: weaker evidence
+    phrases: tuple[tuple[str, ...], ...]  # the name and each alias, lemmatised
+    exit: bool = False
+    area: float = 0.0
+
+
+@dataclass(frozen=True)
+class PlaceMatch:
+    name: str
+    kind: str
+    zone: str
+    score: float
+    exact: bool  # the phrase contains the whole name or an alias
+
+
+class PlaceIndex:
+    """Index of one world's places; build once per world (`place_index(world)` caches it)."""
+
+    def __init__(self, world: Any) -> None:
+        self.world = world
+        self.entries: list[PlaceEntry] = []
+        for zone in world.zones:
+            self.entries.append(_entry("zone", zone.name, zone.name, zone.type, zone.tags, zone.aliases,
+                                       area=float(zone.area)))
+            for door in zone.doors:
+                self.entries.append(_entry("door", door.name, zone.name, "exit door" if door.exit else "door",
+                                           door.tags, door.aliases, exit=door.exit))
+            for entity in zone.entities:
+                self.entries.append(_entry("entity", entity.name, zone.name, entity.type, entity.tags,
+                                           entity.aliases))
+        df: dict[str, int] = {}
+        for e in self.entries:
+            for t in e.tokens | e.tag_tokens:
+                df[t] = df.get(t, 0) + 1
+        n = len(self.entries)
+        self.idf = {t: math.log(1.0 + n / c) for t, c in df.items()}
+        self.vocabulary = frozenset(df)
+        self.building_words = BUILDING_WORDS | frozenset(name_tokens(getattr(world, "name", "")))
+        self._zone_words = {t for e in self.entries if e.kind == "zone" for t in e.tokens}
+
+    def knows(self, token: str) -> bool:
+        """Whether some place of the world is called by this word or a synonym of it."""
+        if token in self.vocabulary:
+            return True
+        return any(token in group and any(t in group for t in self.vocabulary) for group in PLACE_SYNONYMS)
+
+    def _weight(self, entry: PlaceEntry, token: str) -> float:
+        if token in entry.tokens:
+            return self.idf.get(token, 0.0)
+        for group in PLACE_SYNONYMS:
+            if token in group:
+                hits = [t for t in entry.tokens if t in group]
+                if hits:
+                    return SYNONYM_DISCOUNT * max(self.idf.get(t, 0.0) for t in hits)
+        if token in entry.tag_tokens:
+            return TAG_DISCOUNT * self.idf.get(token, 0.0)
+        return 0.0
+
+    def candidates(self, phrase: Sequence[str]) -> list[PlaceMatch]:
+        """Every place the lemmatised phrase could mean, best first."""
+        tokens = [t for t in phrase if t]
+        if not tokens:
+            return []
+        content = [t for t in tokens if t not in PLACE_MODIFIERS or t in self.vocabulary]
+        if not content:
+            return []
+        head = content[-1]
+        speaks_of_door = any(t in DOOR_WORDS for t in content)
+        scored: list[PlaceMatch] = []
+        for e in self.entries:
+            weights = [self._weight(e, t) for t in content]
+            total = sum(weights)
+            if total <= 0:
+                continue
+            matched = [p for p in e.phrases if _contains(content, p)]
+            exact = bool(matched)
+            if exact:
+                # The longest name or alias found in the phrase: "pharmacy counter" is the counter's
+                # whole name but only the pharmacy's name plus a stray word.
+                total += WHOLE_PHRASE_BONUS + sum(self.idf.get(t, 0.0) for t in max(matched, key=len))
+            elif head not in GENERIC_PLACE_HEADS and head not in self.building_words and weights[-1] <= 0:
+                continue  # "the coffee machine": a phrase whose head names nothing of this entry is not it
+            if e.kind == "door" and not exact and not speaks_of_door:
+                continue  # the rooms a door joins are not the door
+            if e.kind == "door" and not exact and not (set(content) & (e.tokens - self._zone_words) or
+                                                      (e.exit and ({"exit"} & set(content)))):
+                continue
+            scored.append(PlaceMatch(e.name, e.kind, e.zone, round(total, 4), exact))
+        if not scored:
+            return []
+        rank = {"zone": 0, "entity": 1, "door": 2}
+        scored.sort(key=lambda m: (-m.score, rank[m.kind], self._order(m.name)))
+        return scored
+
+    def match(self, phrase: Sequence[str]) -> PlaceMatch | None:
+        """The place a phrase names; a zone wins a tie with its own fixtures ("the restroom")."""
+        found = self.candidates(phrase)
+        if not found:
+            return None
+        best = found[0]
+        if best.kind != "zone":
+            for m in found[1:]:
+                if m.score < best.score - 1e-9:
+                    break
+                if m.kind == "zone" and m.name == best.zone:
+                    return m
+        return best
+
+    def _order(self, name: str) -> int:
+        if not hasattr(self, "_order_cache"):
+            self._order_cache = {e.name: i for i, e in enumerate(self.entries)}
+        return self._order_cache.get(name, len(self.entries))
+
+    def is_nameless(self, phrase: Sequence[str]) -> bool:
+        """A place phrase that names nothing in particular: the building, a time, a person, a manner."""
+        content = [t for t in phrase if t not in PLACE_MODIFIERS]
+        if not content:
+            return True
+        head = content[-1]
+        return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words
+                or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
+
+    def entry(self, name: str) -> PlaceEntry | None:
+        return next((e for e in self.entries if e.name == name), None)
+
+    def zone_area(self, name: str) -> float:
+        for e in self.entries:
+            if e.name == name:
+                zone = e.zone
+                break
+        else:
+            return 0.0
+        return next((e.area for e in self.entries if e.kind == "zone" and e.name == zone), 0.0)
+
+    def exits(self) -> list[str]:
+        return [e.name for e in self.entries if e.kind == "door" and e.exit]
+
+
+def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], aliases: Sequence[str], *,
+           exit: bool = False, area: float = 0.0) -> PlaceEntry:
+    tokens: set[str] = set(name_tokens(name)) | set(name_tokens(type_ or ""))
+    phrases = [tuple(name_tokens(name))]
+    for alias in aliases or ():
+        alias_tokens = name_tokens(alias)
+        tokens |= set(alias_tokens)
+        phrases.append(tuple(alias_tokens))
+    tag_tokens: set[str] = set()
+    for tag in tags or ():
+        tag_tokens |= set(name_tokens(tag))
+    return PlaceEntry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens),
+                      tuple(p for p in phrases if p), exit, area)
+
+
+def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:
+    n = len(phrase)
+    return any(tuple(run[i:i + n]) == tuple(phrase) for i in range(len(run) - n + 1))
+
+
+_INDEXES: dict[int, tuple[Any, PlaceIndex]] = {}
+
+
+def place_index(world: Any) -> PlaceIndex:
+    """The index of `world`, built once per world object."""
+    key = id(world)
+    cached = _INDEXES.get(key)
+    if cached is None or cached[0] is not world:
+        if len(_INDEXES) > 16:
+            _INDEXES.clear()
+        cached = (world, PlaceIndex(world))
+        _INDEXES[key] = cached
+    return cached[1]
+
+
+def lemmas(words: Sequence[str]) -> list[str]:
+    return [lemma(w) for w in words]

@@ -1,0 +1,1235 @@
+"""The reading of a prompt: which groups of people, how many, doing what, where (the shared contract).
+
+    reading = read_prompt("Two families of three walk together to the cafeteria, while a few others "
+                          "stroll around the lobby", world, seed=0)
+    reading.groups[0].count   # Count(kind="structured", value=6, low=6, high=6, parties=2, party_size=3)
+    reading.groups[1].intent  # "wander", location "entrance_lobby", relation "others_of:0"
+
+Pure and deterministic: spaCy (language/parser.py) tokenizes the prompt, splits sentences and tags
+words; the lexicon (language/lexicon.py) says what the words mean; the place matcher
+(language/places.py) turns place phrases into the world's own names. No model is asked.
+
+How a prompt is read:
+1. Mentions. A group of people starts at a person phrase in subject position: at the start of a
+   sentence or clause ("..., while", "and", "as", "then", "except"), after "there are" or an
+   imperative scene verb ("Simulate ten nurses"). Its count is read from the phrase: a number,
+   approximate ("about twenty"), vague ("a few", range in the lexicon, value chosen from the
+   seed), implied by a collective ("a family" 3-4), structured ("two families of three" = 2
+   parties of 3), whole-zone ("everyone in the cafeteria": the zone's area at a busy density) or
+   exclusive ("nobody ... except one guard"). Relations: "one of them" is part of the group
+   before (subset_of), "the others" / "a few others" are other people than that group
+   (others_of; after a subset, the rest of its parent), "a few more" adds to it (more_of).
+   A subset group's people are counted in its parent's `value` too: generation takes them out.
+2. Clauses. Each group owns the words from its mention to the next mention; words before a
+   sentence's first mention ("In the lobby, ...", "Evacuate the meeting area: ...") belong to the
+   whole sentence. A group whose own words state no action shares the next group's ("ten
+   patients and two nurses walk to the exit").
+3. Places by role. A preposition gives a place its role (from: start; to/into/towards:
+   destination; at/in/on/near/around: location for stationary intents, start for movers unless
+   the verb is one of arrival; through/via/past/across: via, or the destination of a departure
+   verb through an exit). "leave/evacuate the X" makes X the start, "enter/reach the X" the
+   destination. Only a noun phrase in such a role can be an unknown place, and never one whose
+   head is a word for people, time, manner or the building itself.
+4. Intents from the verbs (phrasal verbs first: "line up" is a queue, "walk around" wandering),
+   robot interactions from the verb that governs the robot (look, approach, follow, avoid,
+   block -> HuNavSim Surprised, Curious, Curious, Scared, Threatening), purposes that are not
+   places ("to register", "for coffee"), waits with durations, pace and togetherness.
+"""
+
+from __future__ import annotations
+
+import random
+import unicodedata
+import zlib
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass, field, replace
+from typing import Any
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.parser import Word, parse
+from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
+from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
+
+COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
+INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
+ROBOT_INTERACTIONS = ("look", "approach", "follow", "avoid", "block")
+
+
+@dataclass(frozen=True)
+class Count:
+    kind: str  # one of COUNT_KINDS
+    value: int  # the head count the scenario will use (seeded choice inside [low, high] when not exact)
+    low: int
+    high: int
+    parties: int | None = None  # "three families of four": parties=3, party_size=4, value=12
+    party_size: int | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> Count:
+        return cls(str(data["kind"]), int(data["value"]), int(data["low"]), int(data["high"]),
+                   data.get("parties"), data.get("party_size"))
+
+
+@dataclass(frozen=True)
+class GroupReading:
+    who: str  # the noun phrase as written ("patients", "a family", "a few others")
+    label: str  # short label, never a number word nor a node name ("patient", "family")
+    count: Count
+    intent: str  # one of INTENTS
+    robot_interaction: str | None = None  # one of ROBOT_INTERACTIONS
+    robot_reaction: str | None = None  # HuNavSim behavior type for the interaction
+    start: str | None = None  # world place name where they start
+    destination: str | None = None  # where they go
+    location: str | None = None  # where they are, for stationary intents
+    via: tuple[str, ...] = ()  # "through", "via", "past"
+    purpose: str | None = None  # a purpose that is not a place: "to check in", "for coffee"
+    wait_seconds: float | None = None  # "for five minutes" -> 300.0
+    together: bool = False  # "together", "as a group", families, couples
+    pace: str = "normal"  # "slow" | "normal" | "fast"
+    relation: str | None = None  # "subset_of:0", "others_of:0", "more_of:0"
+    follows: str | None = None  # whom a "follow" group follows, as written ("the nurse")
+    text: str = ""  # the prompt words this group owns
+
+    def to_dict(self) -> dict[str, Any]:
+        data = asdict(self)
+        data["count"] = self.count.to_dict()
+        data["via"] = list(self.via)
+        return data
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> GroupReading:
+        values = dict(data)
+        values["count"] = Count.from_dict(values["count"])
+        values["via"] = tuple(values.get("via", ()))
+        known = {f for f in cls.__dataclass_fields__}
+        return cls(**{k: v for k, v in values.items() if k in known})
+
+
+@dataclass(frozen=True)
+class PromptReading:
+    prompt: str
+    groups: tuple[GroupReading, ...]
+    unknown_places: tuple[str, ...] = ()  # noun phrases in a PLACE role that the world does not have
+    notes: tuple[str, ...] = ()  # what could not be honoured, said plainly
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"prompt": self.prompt, "groups": [g.to_dict() for g in self.groups],
+                "unknown_places": list(self.unknown_places), "notes": list(self.notes)}
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> PromptReading:
+        return cls(str(data.get("prompt", "")), tuple(GroupReading.from_dict(g) for g in data.get("groups", ())),
+                   tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())))
+
+    @property
+    def total(self) -> int:
+        """People in the scenario: every group, less the subsets counted inside their parent."""
+        return sum(effective_counts(self).values())
+
+
+def effective_counts(reading: PromptReading) -> dict[int, int]:
+    """Group index -> people of its own: a parent loses the members of its subsets ("one of them")
+    and of "the others" read as the rest of it; a parent left with nobody is absent."""
+    counts = {i: g.count.value for i, g in enumerate(reading.groups)}
+    for i, g in enumerate(reading.groups):
+        kind, _, parent = (g.relation or "").partition(":")
+        if kind == "subset_of" or (kind == "others_of" and g.count.kind == "implied" and parent.isdigit()
+                                   and _has_subset(reading, int(parent))):
+            p = int(parent)
+            if p in counts:
+                counts[p] = max(0, counts[p] - g.count.value)
+    return {i: c for i, c in counts.items() if c > 0}
+
+
+def _has_subset(reading: PromptReading, parent: int) -> bool:
+    return any(g.relation == f"subset_of:{parent}" for g in reading.groups)
+
+
+# ---- reading --------------------------------------------------------------------------------
+
+def _plain(word: str) -> str:
+    """The word without accents ("café" -> "cafe"), as world names are written."""
+    if word.isascii():
+        return word
+    return unicodedata.normalize("NFKD", word).encode("ascii", "ignore").decode() or word
+
+
+def read_prompt(prompt: str, world: Any, *, seed: int = 0) -> PromptReading:
+    """The groups of people a prompt describes, in the world's own place names (see module doc)."""
+    text = " ".join((prompt or "").split())
+    if not text:
+        return PromptReading(prompt or "", ())
+    return _Reader(text, parse(text), place_index(world), int(seed)).read()
+
+
+@dataclass
+class _Mention:
+    first: int  # token span of the person phrase
+    last: int
+    who: str
+    label: str
+    count: Count | None  # None for whole-zone and rest-of-parent counts, settled once places are known
+    relation: str | None = None
+    together: bool = False
+    whole_zone: bool = False
+    exclusive: bool = False
+    rest_of_parent: bool = False
+
+
+@dataclass
+class _Place:
+    prep: str  # the preposition or "obj:start" / "obj:dest" / "obj:via" for verb objects
+    index: int  # token index of the preposition
+    words: tuple[str, ...]
+    match: PlaceMatch | None
+    end: int = 0  # token index after the phrase
+
+
+@dataclass
+class _Clause:
+    intent: str | None = None
+    verb: str | None = None
+    verb_index: int | None = None
+    robot: str | None = None
+    places: list[_Place] = field(default_factory=list)
+    purpose: str | None = None
+    wait_seconds: float | None = None
+    together: bool = False
+    pace: str = "normal"
+    follows: str | None = None
+    evacuate: bool = False
+    has_action: bool = False
+    moves: bool = False  # a verb of walking is among the clause's verbs
+
+
+class _Reader:
+    def __init__(self, prompt: str, words: list[Word], index: PlaceIndex, seed: int) -> None:
+        self.prompt = prompt
+        self.w = words
+        # "ward b." at the end of a sentence: the small model keeps the full stop on the word
+        self.low = [_plain(t.lower.rstrip(".") if len(t.lower) > 1 and t.lower[0].isalnum() else t.lower)
+                    for t in words]
+        self.index = index
+        self.seed = seed
+        self.n = len(words)
+        self.unknown: list[str] = []
+        self.notes: list[str] = []
+        self.no_mention = self._together_phrase_tokens()
+
+    # -- helpers ---------------------------------------------------------------------------
+
+    def _choose(self, low: int, high: int, key: str) -> int:
+        if high <= low:
+            return low
+        rng = random.Random(zlib.crc32(f"{self.seed}|{key}".encode()))
+        return rng.randint(low, high)
+
+    def _is_punct(self, i: int) -> bool:
+        return self.w[i].pos == "PUNCT" or self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
+
+    def _lemma(self, i: int) -> str:
+        return lemma(self.low[i])
+
+    def _verb(self, i: int) -> str:
+        v = verb_lemma(self.low[i])
+        if v == self.low[i] and self.w[i].pos in ("VERB", "AUX"):
+            return self.w[i].lemma
+        return v
+
+    def _together_phrase_tokens(self) -> set[int]:
+        out: set[int] = set()
+        for i in range(self.n):
+            for phrase in lx.TOGETHER_PHRASES:
+                end = i + len(phrase)
+                if tuple(self.low[i:end]) == phrase:
+                    if end < self.n and verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
+                        continue  # "as a family talks": the family is who the clause is about
+                    out.update(range(i, end))
+        return out
+
+    def _number_at(self, i: int) -> tuple[int, int] | None:
+        """(value, index after) of a number written at token i: digits, words, "a dozen", "twenty five"."""
+        if i >= self.n:
+            return None
+        w = self.low[i].replace(",", "")
+        if w.isdigit():
+            value, j = int(w), i + 1
+        elif w in lx.UNITS or w in lx.TENS:
+            total, current, j = 0, 0, i
+            while j < self.n:
+                x = self.low[j]
+                if x in lx.UNITS:
+                    current += lx.UNITS[x]
+                elif x in lx.TENS:
+                    current += lx.TENS[x]
+                elif x == "-" and j + 1 < self.n and self.low[j + 1] in lx.UNITS and current % 10 == 0 and current:
+                    pass  # "twenty-five"
+                elif x in lx.SCALES and (current or total):
+                    current = max(current, 1) * lx.SCALES[x]
+                    if x in lx.BIG_SCALES:
+                        total, current = total + current, 0
+                elif x == "and" and j + 1 < self.n and self.low[j + 1] in lx.UNITS and current >= 100:
+                    pass
+                else:
+                    break
+                j += 1
+            value = total + current
+        elif w == "dozen":
+            value, j = 12, i + 1
+        elif w in ("a", "an") and i + 1 < self.n and self.low[i + 1] in ("dozen", "hundred"):
+            value, j = (12 if self.low[i + 1] == "dozen" else 100), i + 2
+        else:
+            return None
+        if j < self.n and self.low[j] == "dozen" and w != "dozen":
+            value, j = value * 12, j + 1
+        return value, j
+
+    def _is_person_noun(self, i: int) -> bool:
+        lem = self._lemma(i)
+        return lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS
+
+    # -- mentions ----------------------------------------------------------------------------
+
+    def _subject_position(self, s: int) -> bool:
+        if s == 0:
+            return True
+        p = s - 1
+        prev = self.low[p]
+        if self._is_punct(p) or self.w[p].sentence != self.w[s].sentence:
+            return True
+        if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
+            return True
+        if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
+            return True  # "empty except for two cleaners"
+        if prev == "from" and p > 0 and self.low[p - 1] == "apart":
+            return True  # "apart from one guard"
+        if prev in ("are", "is") and self._only_people_before(p):
+            return True  # "the only people in the ward are two men"
+        if prev in ("are", "is", "were", "was", "be") and p > 0 and self.low[p - 1] == "there":
+            return True
+        if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or self._is_punct(p - 1) or self.low[p - 1] in
+                                                   lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
+            return True
+        return False
+
+    def _mentions(self) -> list[_Mention]:
+        found: list[_Mention] = []
+        i = 0
+        while i < self.n:
+            if i in self.no_mention or not self._subject_position(i):
+                i += 1
+                continue
+            m = self._mention_at(i, found)
+            if m is None:
+                i += 1
+                continue
+            found.append(m)
+            i = m.last + 1
+        return found
+
+    def _skip(self, j: int, words: set[str] | frozenset[str]) -> int:
+        while j < self.n and self.low[j] in words:
+            j += 1
+        return j
+
+    def _person_head(self, j: int, *, counted: bool) -> int | None:
+        """Index of the person noun of a phrase starting at j ("tired old patients"), or None.
+
+        With a count before it, any plural noun counts ("ten zombies"), unless it names a place,
+        a time or a thing of the world."""
+        k = j
+        while k < self.n and k < j + 4:
+            if self._is_person_noun(k):
+                while k + 1 < self.n and self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES:
+                    k += 1  # "staff members", "security guards": the last noun heads the phrase
+                return k
+            if self.low[k] in lx.NP_MODIFIERS or self.w[k].pos == "ADJ":
+                k += 1
+                continue
+            if self.w[k].pos in ("NOUN", "PROPN") and k + 1 < self.n and self._is_person_noun(k + 1):
+                k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
+                continue
+            if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
+                    and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
+                    and verb_lemma(self.low[k]) not in lx.INTENT_VERBS):
+                return k
+            return None
+        return None
+
+    def _mention_at(self, s: int, found: list[_Mention]) -> _Mention | None:
+        low = self.low
+        if low[s] in ("the", "these", "those", "all") and s + 1 < self.n and self._number_at(s + 1) is not None:
+            inner = self._mention_at(s + 1, found)  # "the four people in the living room"
+            if inner is not None:
+                inner.first = s
+                inner.who = self._span(s, inner.last)
+            return inner
+        j = s
+        exclusive = self._exclusive_context(s)
+        # Relations: "one of them", "two of the patients", "some of them"
+        num = self._quantifier(j)
+        if num is not None and num[2] < self.n and low[num[2]] == "of" and num[2] + 1 < self.n:
+            k = num[2] + 1
+            if low[k] in ("them", "those", "these", "us", "whom") or (low[k] == "the" and k + 1 < self.n and
+                                                                   self._is_person_noun(k + 1)):
+                last = k if low[k] != "the" else k + 1
+                parent = self._parent(found)
+                label = found[parent].label if parent is not None else self._lemma(last)
+                count = self._count_from_quantifier(num, f"{s}", lx.OTHERS_RANGE)
+                return _Mention(s, last, self._span(s, last), label, count,
+                                relation=f"subset_of:{parent}" if parent is not None else None)
+        # "the others", "the rest", "everyone else"
+        j = self._skip(s, {"the"})
+        if j < self.n and low[j] in ("others", "rest") and (j == s or low[s] == "the"):
+            last = j + 2 if j + 2 < self.n and low[j + 1] == "of" and low[j + 2] in ("them", "us", "the") else j
+            parent = self._parent(found, plain=True)
+            label = found[parent].label if parent is not None else "person"
+            if low[s] == "the" and parent is not None and any(m.relation == f"subset_of:{parent}" for m in found):
+                return _Mention(s, last, self._span(s, last), label, None, relation=f"others_of:{parent}",
+                                rest_of_parent=True)
+            low_, high_ = lx.OTHERS_RANGE
+            count = Count("vague", self._choose(low_, high_, f"{s}:others"), low_, high_)
+            return _Mention(s, last, self._span(s, last), label, count,
+                            relation=f"others_of:{parent}" if parent is not None else None)
+        if low[s] in ("everyone", "everybody") and s + 1 < self.n and low[s + 1] == "else":
+            parent = self._parent(found)
+            label = found[parent].label if parent is not None else "person"
+            return _Mention(s, s + 1, self._span(s, s + 1), label, None,
+                            relation=f"others_of:{parent}" if parent is not None else None, rest_of_parent=True)
+        if low[s] == "the" and s + 1 < self.n and low[s + 1] == "only":
+            return None  # "the only people in the ward are two men": the men are the group
+        if low[s] == "every" and s + 1 < self.n:
+            head = self._person_head(s + 1, counted=False)
+            if head is not None:  # "every visitor in the lounge": everyone there
+                return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True)
+        # Whole zone: "everyone", "everybody", "all the people", "all patients"
+        if low[s] in ("everyone", "everybody") or (low[s] == "all" and not (num and num[0] > 0 and num[1] == "all")):
+            last = s
+            label = "person"
+            if low[s] == "all":
+                k = self._skip(s + 1, {"the", "of"})
+                n_after = self._number_at(k)
+                if n_after is not None:  # "all ten patients": a plain count
+                    head = self._person_head(n_after[1], counted=True)
+                    if head is not None:
+                        return _Mention(s, head, self._span(s, head), self._label(head),
+                                        Count("exact", n_after[0], n_after[0], n_after[0]))
+                head = self._person_head(k, counted=False)
+                if head is None:
+                    return None
+                last, label = head, self._label(head)
+            return _Mention(s, last, self._span(s, last), label, None, whole_zone=True)
+        # Someone, somebody, a person
+        if low[s] in ("someone", "somebody", "anyone", "anybody"):
+            return _Mention(s, s, self.w[s].text, "person", Count("exclusive" if exclusive else "exact", 1, 1, 1),
+                            exclusive=exclusive)
+        # "a few more", "two more patients", "another nurse"
+        if low[s] == "another":
+            head = self._person_head(s + 1, counted=False)
+            parent = self._parent(found, plain=True)
+            last = head if head is not None else s
+            label = self._label(head) if head is not None else (found[parent].label if parent is not None else "person")
+            return _Mention(s, last, self._span(s, last), label, Count("exact", 1, 1, 1),
+                            relation=f"more_of:{parent}" if parent is not None else None)
+        if num is not None:
+            value_part, after = num, num[2]
+            if after < self.n and low[after] == "more":
+                parent = self._parent(found, plain=True)
+                head = self._person_head(after + 1, counted=True)
+                last = head if head is not None else after
+                label = self._label(head) if head is not None else (found[parent].label if parent is not None else "person")
+                return _Mention(s, last, self._span(s, last), label, self._count_from_quantifier(value_part, f"{s}:more"),
+                                relation=f"more_of:{parent}" if parent is not None else None)
+            if after < self.n and low[after] in ("others", "other"):
+                parent = self._parent(found, plain=True)
+                head = self._person_head(after + 1, counted=False) if low[after] == "other" else None
+                if low[after] == "other" and head is None:
+                    return None
+                last = head if head is not None else after
+                label = self._label(head) if head is not None else (found[parent].label if parent is not None else "person")
+                return _Mention(s, last, self._span(s, last), label,
+                                self._count_from_quantifier(value_part, f"{s}:others", lx.OTHERS_RANGE),
+                                relation=f"others_of:{parent}" if parent is not None else None)
+            return self._counted(s, value_part, found, exclusive)
+        # Bare phrases: "visitors", "the nurses", "a nurse", "other visitors", "people"
+        k = self._skip(s, {"the", "a", "an", "other"})
+        det = low[s] if k > s else ""
+        other = "other" in low[s:k]
+        head = self._person_head(k, counted=False)
+        if head is None:
+            # "ten in the pharmacy": a bare number borrowing the last group's noun is handled in _counted
+            return None
+        singular = self._lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
+        label = self._label(head)
+        if det == "the" and any(m.label == label or self._lemma(head) == m.label for m in found):
+            return None  # "... one person; the person wanders around": the same people again
+        noun = self._lemma(head)
+        collective = self._collective(head)
+        if collective is not None:
+            return collective
+        if det in ("a", "an") or (singular and det == "the"):
+            kind = "exclusive" if exclusive else "exact"
+            return _Mention(s, head, self._span(s, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
+        if singular and noun not in lx.GENERIC_PEOPLE and not other:
+            return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
+        low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
+        parent = self._parent(found)
+        relation = f"others_of:{parent}" if other and parent is not None else None
+        return _Mention(s, head, self._span(s, head), label,
+                        Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
+
+    def _only_people_before(self, p: int) -> bool:
+        sentence = self.w[p].sentence
+        return any(self.low[k] == "only" and k + 1 < self.n and self.low[k + 1] in ("people", "person", "ones", "one")
+                   for k in range(p) if self.w[k].sentence == sentence)
+
+    def _exclusive_context(self, s: int) -> bool:
+        """Whether the phrase at s is the exception to "nobody" in its sentence ("nobody ... except one
+        guard", "apart from two pilots, nobody is ...", "the only people in X are two men")."""
+        sentence = self.w[s].sentence
+        words_ = [k for k in range(self.n) if self.w[k].sentence == sentence]
+        saw_nobody = any(self.low[k] in lx.NOBODY_WORDS or (self.low[k] == "no" and k + 1 < self.n and
+                                                           self.low[k + 1] in ("one", "people", "person", "body"))
+                         or self.low[k] in ("empty", "deserted") for k in words_)
+        near = [self.low[k] for k in words_ if k < s][-2:]
+        if near[-1:] in (["are"], ["is"]) and self._only_people_before(s - 1):
+            return True
+        return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"]
+                               or near == ["apart", "from"])
+
+    def _parent(self, found: list[_Mention], *, plain: bool = False) -> int | None:
+        """The group a relation refers to: the last one that is not itself a subset ("one of them"),
+        or with `plain` the last one with no relation at all ("the others", "a few more")."""
+        for k in range(len(found) - 1, -1, -1):
+            relation = found[k].relation or ""
+            if not relation.startswith("subset_of") and not (plain and relation):
+                return k
+        return None
+
+    def _label(self, head: int | None) -> str:
+        if head is None:
+            return "person"
+        noun = self._lemma(head)
+        if noun in ("member", "person") and head > 0 and self._is_person_noun(head - 1):
+            noun = self._lemma(head - 1)  # "staff members", "family members"
+        if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
+            return "person"
+        return noun
+
+    def _span(self, a: int, b: int) -> str:
+        return self.prompt[self.w[a].start:self.w[b].end]
+
+    def _quantifier(self, j: int) -> tuple[int, str, int, int | None] | None:
+        """(value or 0, kind, index after, high) of a count expression at j.
+
+        kind: "exact" | "approximate" | "vague:<word>" | "range" | "one" (a/an)."""
+        low = self.low
+        if j >= self.n:
+            return None
+        approx = False
+        k = j
+        if low[k] in lx.APPROXIMATE_WORDS and k + 1 < self.n and self._number_at(k + 1) is not None:
+            approx, k = True, k + 1
+        else:
+            for phrase in lx.APPROXIMATE_PHRASES:
+                if tuple(low[k:k + len(phrase)]) == phrase and self._number_at(k + len(phrase)) is not None:
+                    approx, k = True, k + len(phrase)
+                    break
+        if low[k] == "between" and self._number_at(k + 1):
+            a = self._number_at(k + 1)
+            if a[1] < self.n and low[a[1]] == "and" and self._number_at(a[1] + 1):
+                b = self._number_at(a[1] + 1)
+                return (a[0], "range", b[1], b[0])
+        num = self._number_at(k)
+        if num is not None:
+            value, after = num
+            if tuple(low[after:after + 2]) == ("or", "so"):
+                return (value, "approximate", after + 2, None)  # "fifteen or so women"
+            if after + 1 < self.n and low[after] in ("to", "-", "or") and self._number_at(after + 1):
+                b = self._number_at(after + 1)
+                if b[0] > value:
+                    return (value, "range", b[1], b[0])
+            return (value, "approximate" if approx else "exact", after, None)
+        if low[k] in ("a", "an") and k + 1 < self.n:
+            nxt = low[k + 1]
+            if nxt in ("couple", "pair") and k + 2 < self.n and low[k + 2] == "of":
+                return (2, "exact", k + 3, None)
+            if nxt in ("few", "handful", "number", "lot") :
+                after = k + 2
+                if after < self.n and low[after] == "of":
+                    after += 1
+                return (0, f"vague:{nxt}", after, None)
+            return None
+        if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous"):
+            after = k + 1
+            if after < self.n and low[after] == "of" and low[k] in ("lots", "dozens"):
+                after += 1
+            return (0, f"vague:{low[k]}", after, None)
+        return None
+
+    def _count_from_quantifier(self, q: tuple[int, str, int, int | None], key: str,
+                               default: tuple[int, int] = lx.BARE_PLURAL_RANGE) -> Count:
+        value, kind, _, high = q
+        if kind == "exact":
+            return Count("exact", value, value, value)
+        if kind == "approximate":
+            spread = max(1, round(value * lx.APPROXIMATE_SPREAD))
+            return Count("approximate", value, max(1, value - spread), value + spread)
+        if kind == "range":
+            return Count("vague", self._choose(value, high or value, key), value, high or value)
+        word = kind.split(":", 1)[1]
+        low_, high_ = lx.VAGUE_RANGES.get(word, default)
+        return Count("vague", self._choose(low_, high_, key), low_, high_)
+
+    def _collective(self, head: int, number: tuple | None = None, first: int | None = None) -> _Mention | None:
+        """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
+        noun = self._lemma(head)
+        if noun not in lx.IMPLIED_RANGES:
+            return None
+        low = self.low
+        s = first if first is not None else head
+        while s > 0 and first is None and (low[s - 1] in ("a", "an", "the") or low[s - 1] in lx.NP_MODIFIERS):
+            s -= 1
+        parties = 1
+        exact_parties = True
+        if number is not None:
+            value, kind, _, high = number
+            if kind in ("exact", "approximate") and value > 1:
+                parties = value
+            elif kind.startswith("vague") or kind == "range":
+                c = self._count_from_quantifier(number, f"{head}:parties")
+                parties, exact_parties = c.value, False
+        together = noun in lx.TOGETHER_COLLECTIVES
+        last = head
+        size: tuple[int, int] | None = None
+        label = noun
+        if head + 2 < self.n and low[head + 1] == "of":
+            inner = self._number_at(head + 2)
+            if inner is not None:
+                size = (inner[0], inner[0])
+                last = inner[1] - 1
+                member = self._person_head(inner[1], counted=True)
+                if member is not None and member <= inner[1] + 2:
+                    last = member
+                    if noun in ("group", "crowd", "bunch", "party", "team"):
+                        label = self._label(member)
+            else:
+                member = self._person_head(self._skip(head + 2, {"the", "their", "our"}), counted=False)
+                if member is not None:
+                    last = member
+                    if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
+                                "couple", "pair", "handful"):
+                        label = self._label(member)
+        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
+            # "a crowd of visitors": the collective only says how many, vaguely
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            return _Mention(s, last, self._span(s, last), label,
+                            Count("vague", self._choose(low_, high_, f"{head}:{noun}"), low_, high_), together=together)
+        if size is None:
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            party = self._choose(low_, high_, f"{head}:{noun}")
+            if parties == 1:
+                return _Mention(s, last, self._span(s, last), label,
+                                Count("implied", party, low_, high_, *((1, party) if together else (None, None))),
+                                together=together)
+            value = parties * party
+            return _Mention(s, last, self._span(s, last), label,
+                            Count("structured", value, parties * low_, parties * high_, parties, party), together=together)
+        if parties == 1 and exact_parties:
+            return _Mention(s, last, self._span(s, last), label, Count("exact", size[0], size[0], size[0], 1, size[0]),
+                            together=together)
+        value = parties * size[0]
+        return _Mention(s, last, self._span(s, last), label, Count("structured", value, value, value, parties, size[0]),
+                        together=together)
+
+    def _counted(self, s: int, q: tuple[int, str, int, int | None], found: list[_Mention],
+                 exclusive: bool) -> _Mention | None:
+        """A phrase that starts with a count: "ten patients", "about 20 people", "two families of three"."""
+        after = q[2]
+        if after < self.n and self.low[after] == "of":
+            after += 1
+            after = self._skip(after, {"the", "their", "our"})
+        head = self._person_head(after, counted=True)
+        if head is None:
+            # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
+            if (found and q[0] > 0 and after < self.n and (self.low[after] in lx.PLACE_PREPOSITIONS
+                                                           or verb_lemma(self.low[after]) in lx.INTENT_VERBS)
+                    and s > 0 and self.low[s - 1] not in ("at", "until", "till", "after", "before", "since")):
+                label = found[-1].label
+                return _Mention(s, after - 1, self._span(s, after - 1), label,
+                                self._count_from_quantifier(q, f"{s}:ellipsis"))
+            return None
+        if q[1] == "exact" and q[0] == 1 and self._lemma(head) in lx.IMPLIED_RANGES and self.low[s] == "one":
+            q = (1, "exact", q[2], None)
+        collective = self._collective(head, q, s)
+        if collective is not None:
+            return collective
+        count = self._count_from_quantifier(q, f"{s}:count")
+        if exclusive:
+            count = replace(count, kind="exclusive")
+        return _Mention(s, head, self._span(s, head), self._label(head), count, exclusive=exclusive)
+
+    # -- clauses ---------------------------------------------------------------------------
+
+    def read(self) -> PromptReading:
+        mentions = self._mentions()
+        if not mentions:
+            self._scan_unknown_places(range(self.n))
+            return PromptReading(self.prompt, (), tuple(dict.fromkeys(self.unknown)),
+                                 ("no group of people found in the prompt",))
+        # Each group owns its words up to the next mention; a sentence's words before its first
+        # mention are its preamble, read for every group of that sentence.
+        # A fronted phrase between two groups belongs to the one after it ("..., and from the office,
+        # eight people walk ...", "...; for 90 seconds, two residents wait ...").
+        starts = [mentions[0].first] + [self._fronted_start(mentions[k - 1].last, mentions[k].first)
+                                        for k in range(1, len(mentions))]
+        spans: list[tuple[int, int]] = []
+        for k, m in enumerate(mentions):
+            end = starts[k + 1] if k + 1 < len(mentions) else self.n
+            sentence_end = next((i for i in range(m.last + 1, end) if self.w[i].sentence != self.w[m.first].sentence),
+                                end)
+            spans.append((starts[k], sentence_end))
+        claimed = {i for a, b in spans for i in range(a, b)}
+        preamble_of: dict[int, list[int]] = {}
+        for i in range(self.n):
+            if i not in claimed:
+                preamble_of.setdefault(self.w[i].sentence, []).append(i)
+        mention_tokens = {i for m in mentions for i in range(m.first, m.last + 1)}
+        scenes = {s: self._clause(toks, mention_tokens, scene=True) for s, toks in preamble_of.items()}
+        # A sentence with no people ("Evacuate the pharmacy.") sets the scene of the sentences after it.
+        with_people = {self.w[m.first].sentence for m in mentions}
+        carried: _Clause | None = None
+        for sentence in range(self.w[-1].sentence + 1):
+            own = scenes.get(sentence)
+            if carried is not None:
+                scenes[sentence] = carried if own is None else replace(
+                    own, places=carried.places + own.places, evacuate=own.evacuate or carried.evacuate,
+                    intent=own.intent or carried.intent)
+            if sentence not in with_people and own is not None:
+                carried = scenes[sentence]
+        clauses = [self._clause(list(range(a, b)), mention_tokens) for a, b in spans]
+        evacuation = any(self.low[i] in lx.EVACUATION_CUES or verb_lemma(self.low[i]) in lx.EVACUATION_CUES
+                         for i in range(self.n))
+        # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
+        for k in range(len(clauses) - 2, -1, -1):
+            if not clauses[k].has_action and clauses[k + 1].has_action and \
+                    self.w[mentions[k].first].sentence == self.w[mentions[k + 1].first].sentence:
+                own = clauses[k]
+                shared = replace(clauses[k + 1], places=own.places + clauses[k + 1].places)
+                clauses[k] = shared
+        groups: list[GroupReading] = []
+        for k, (m, clause) in enumerate(zip(mentions, clauses)):
+            scene = scenes.get(self.w[m.first].sentence)
+            groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
+        return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+
+    def _fronted_start(self, previous_last: int, first: int) -> int:
+        """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
+        no verb, opened by a preposition and closed by a comma; else the mention itself."""
+        b = first - 1
+        if b <= previous_last or self.low[b] != ",":
+            return first
+        j = b - 1
+        while j > previous_last and not self._is_punct(j) and self.low[j] not in lx.CLAUSE_STARTERS:
+            j -= 1
+        fronted = range(j + 1, b)
+        if not fronted or self.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
+            return first
+        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS for x in fronted):
+            return first
+        return j + 1
+
+    def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False) -> _Clause:
+        c = _Clause()
+        low = self.low
+        own = [i for i in toks if i not in mention_tokens]
+        ownset = set(own)
+        used: set[int] = set()
+        # Robot interaction: phrases, then verbs, then feelings, when the robot is in the clause.
+        robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS]
+        if robot_at:
+            r = robot_at[0]
+            for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
+                if tuple(low[r + 1:r + 1 + len(phrase)]) == phrase:
+                    c.robot = interaction
+            # The verb closest before the robot governs it ("stop and stare at the robot": look).
+            for i in sorted((x for x in own if x < r), reverse=True):
+                if c.robot is not None:
+                    break
+                for phrase, interaction in lx.ROBOT_PHRASES.items():
+                    lemmas = tuple(verb_lemma(x) for x in low[i:i + len(phrase)])
+                    if lemmas == phrase and all(x in ownset for x in range(i, i + len(phrase))):
+                        c.robot = interaction
+                        break
+                v = self._verb(i)
+                if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
+                    c.robot = lx.ROBOT_VERBS[v]
+            if c.robot is None:
+                for i in own:
+                    if low[i] in lx.ROBOT_FEELINGS:
+                        c.robot = lx.ROBOT_FEELINGS[low[i]]
+                        break
+            if c.robot is not None:
+                c.has_action = True
+        # Places, purposes and durations, phrase by phrase.
+        i_pos = 0
+        while i_pos < len(own):
+            i = own[i_pos]
+            w = low[i]
+            nxt = low[i + 1] if i + 1 < self.n else ""
+            if w == "for" and not (i > 0 and low[i - 1] in lx.EXCEPT_WORDS):
+                dur = self._duration(i + 1)
+                if dur is not None:
+                    c.wait_seconds, end = dur
+                    used.update(range(i, end))
+                    i_pos = self._advance(own, end)
+                    continue
+                prev_verb = self._previous_verb(own, i_pos)
+                # "head for the exit", "queue for the coffee machine": a place by its whole name after a
+                # determiner; "for coffee", "for their prescriptions" are purposes, whatever they match.
+                if prev_verb in lx.FOR_DESTINATION_VERBS or (nxt in ("the", "this", "that") and self._names_place(i + 2)):
+                    place = self._place_phrase(i + 1, "for", i)
+                    if place is not None:
+                        c.places.append(place)
+                        used.update(range(i, place.end))
+                        i_pos += 1
+                        continue
+                end = self._phrase_end(i + 1)
+                if end > i + 1 and not any(low[x] in lx.ROBOT_WORDS for x in range(i + 1, end)) and \
+                        not (nxt in ("their", "his", "her") and i + 2 < self.n and low[i + 2] == "turn"):
+                    c.purpose = c.purpose or self.prompt[self.w[i].start:self.w[end - 1].end]
+                    used.update(range(i, end))
+                    i_pos = self._advance(own, end)
+                    continue
+            negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(low[i:i + len(p)]) == p), None)
+            if negated is not None:
+                # "go to the imaging instead of the waiting room": a place nobody goes to
+                k = i + len(negated)
+                place = self._place_phrase(k, "at", i, record_unknown=False)
+                end = place.end if place is not None else self._phrase_end(k)
+                used.update(range(i, end))
+                i_pos = self._advance(own, end)
+                continue
+            if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
+                place = self._place_phrase(i + 2, "obj:start", i)
+                c.evacuate = c.evacuate or w != "clearing"
+                if place is not None:
+                    c.places.append(place)
+                    used.update(range(i, place.end))
+                    i_pos = self._advance(own, place.end)
+                    continue
+            if w == "to" and (nxt == "" or self._verb_follows(i + 1)) and not self._names_place(i + 1):
+                end = self._phrase_end(i + 2, allow_objects=True)
+                c.purpose = c.purpose or self.prompt[self.w[i].start:self.w[max(end - 1, i + 1)].end]
+                used.update(range(i, end))
+                i_pos = self._advance(own, end)
+                continue
+            if w == "in" and nxt == "order" and i + 2 < self.n and low[i + 2] == "to":
+                end = self._phrase_end(i + 4, allow_objects=True)
+                c.purpose = c.purpose or self.prompt[self.w[i + 2].start:self.w[max(end - 1, i + 3)].end]
+                used.update(range(i, end))
+                i_pos = self._advance(own, end)
+                continue
+            prep = self._preposition(i)
+            if prep is not None:
+                name, width = prep
+                place = self._place_phrase(i + width, name, i)
+                if place is not None:
+                    c.places.append(place)
+                    used.update(range(i, place.end))
+                i_pos += 1
+                continue
+            v = self._verb(i)
+            object_verbs = lx.START_OBJECT_VERBS | lx.DESTINATION_OBJECT_VERBS | lx.LOCATION_OBJECT_VERBS
+            if not self._after_determiner(i) and v in object_verbs:
+                if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt))):
+                    role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v == "cross"
+                            else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
+                    place = self._place_phrase(i + 1, role, i)
+                    if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
+                        c.places.append(place)
+            i_pos += 1
+        if scene and own:
+            # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
+            # the sentence's people are.
+            subject = self._place_phrase(own[0], "at", own[0], record_unknown=False)
+            if subject is not None and subject.end < self.n and verb_lemma(low[subject.end]) in ("be", "stay", "remain"):
+                c.places.append(subject)
+                used.update(range(own[0], subject.end))
+        # Intents: phrasal verbs first, then single verbs; a verb inside a place phrase is not one.
+        candidates: list[tuple[int, str, str]] = []
+        for i in own:
+            if i in used and low[i] not in ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang"):
+                continue
+            for phrase, intent in lx.PHRASAL_INTENTS.items():
+                if tuple(verb_lemma(x) if t == 0 else x for t, x in enumerate(low[i:i + len(phrase)])) == phrase:
+                    candidates.append((i, intent, phrase[0]))
+                    break
+            else:
+                if i in used or self._after_determiner(i) or self._in_place_name(i, c.places):
+                    continue
+                v = self._verb(i)
+                if v in lx.INTENT_VERBS and not (v == "line" and self.w[i].pos != "VERB"):
+                    if v in ("make", "get") and not (i + 1 < self.n and low[i + 1] in ("their", "its", "his", "her",
+                                                                                     "way", "to")):
+                        continue
+                    candidates.append((i, lx.INTENT_VERBS[v], v))
+        if candidates:
+            c.has_action = True
+            c.moves = any(kind in ("walk", "evacuate") for _, kind, _ in candidates)
+            c.intent, c.verb, c.verb_index = self._main_intent(candidates, c)
+            c.verb_index = candidates[0][0] if c.verb_index is None else c.verb_index
+        if any(verb_lemma(low[i]) in ("evacuate", "flee", "escape") or low[i] in ("evacuation",) for i in own):
+            c.evacuate = True
+        # Follow someone: the person after a follow verb.
+        if c.intent == "follow" and c.verb_index is not None:
+            k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
+            k1 = self._skip(k0, {"behind", "after"})
+            k = self._skip(k1, lx.DETERMINERS)
+            if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide",
+                                                                     "us", "everyone")):
+                c.follows = self._span(c.verb_index + 1, k)
+            elif k1 > k0 or k0 >= self.n or self._is_punct(k0) or low[k0] in lx.CLAUSE_STARTERS:
+                c.follows = "the group before"  # "a porter follows close behind"
+            else:
+                c.intent = "walk"  # "follow the signs to the exit": walking, nobody is followed
+        # Pace and togetherness
+        lemmas = {verb_lemma(low[i]) for i in own} | {low[i] for i in own}
+        if lemmas & lx.FAST_WORDS or ("in", "a", "hurry") in self._trigrams(own):
+            c.pace = "fast"
+        elif lemmas & lx.SLOW_WORDS or ("take", "their", "time") in {(verb_lemma(a), b, d) for a, b, d in self._trigrams(own)}:
+            c.pace = "slow"
+        if {low[i] for i in own} & lx.TOGETHER_WORDS or any(i in self.no_mention for i in own):
+            c.together = True
+        return c
+
+    def _trigrams(self, own: Sequence[int]) -> set[tuple[str, str, str]]:
+        return {tuple(self.low[i:i + 3]) for i in own if i + 3 <= self.n}
+
+    def _main_intent(self, candidates: list[tuple[int, str, str]], c: _Clause) -> tuple[str, str, int]:
+        kinds = [k for _, k, _ in candidates]
+        has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places
+                              if p.match is not None)
+        for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
+            if wanted in kinds:
+                i, _, verb = candidates[kinds.index(wanted)]
+                if wanted == "wander" and has_destination and "walk" not in kinds[:kinds.index(wanted)]:
+                    if not self._around_follows(i):
+                        return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
+                return wanted, verb, i
+        i, kind, verb = candidates[0]
+        if kind == "walk" and self._around_follows(i) and not has_destination:
+            return "wander", verb, i
+        return kind, verb, i
+
+    def _around_follows(self, i: int) -> bool:
+        return i + 1 < self.n and self.low[i + 1] in ("around", "about")
+
+    def _after_determiner(self, i: int) -> bool:
+        return i > 0 and self.low[i - 1] in ("the", "a", "an", "their", "its", "his", "her", "our", "my", "this", "that")
+
+    def _in_place_name(self, i: int, places: Sequence[_Place]) -> bool:
+        return any(p.index < i < p.end for p in places)
+
+    def _verb_follows(self, k: int) -> bool:
+        """Whether the word at k is a verb (after "to": a purpose, not a place)."""
+        if k >= self.n:
+            return False
+        w = self.low[k]
+        if w in lx.DETERMINERS or self.w[k].pos in ("DET", "NUM", "PROPN"):
+            return False
+        if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
+            return False
+        return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
+            "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
+
+    def _names_place(self, k: int) -> bool:
+        """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
+        words = [self.low[j] for j in range(k, min(k + 4, self.n)) if not self._is_punct(j)]
+        for n in range(len(words), 0, -1):
+            match = self.index.match(phrase_lemmas(words[:n]))
+            if match is not None and match.exact:
+                return True
+        return False
+
+    def _previous_verb(self, own: Sequence[int], pos: int) -> str | None:
+        for k in range(pos - 1, -1, -1):
+            v = self._verb(own[k])
+            if v in lx.INTENT_VERBS or v in lx.FOR_DESTINATION_VERBS:
+                return v
+        return None
+
+    def _advance(self, own: Sequence[int], end: int) -> int:
+        return next((p for p, i in enumerate(own) if i >= end), len(own))
+
+    def _phrase_end(self, k: int, allow_objects: bool = False) -> int:
+        """End (exclusive) of a short phrase: up to punctuation, a clause word or a place preposition."""
+        j = k
+        while j < self.n and j < k + 6:
+            w = self.low[j]
+            if self._is_punct(j) or w in lx.CLAUSE_STARTERS or (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for":
+                break
+            if not allow_objects and j > k and verb_lemma(w) in lx.INTENT_VERBS and self.w[j].pos == "VERB":
+                break
+            j += 1
+        return j
+
+    def _duration(self, k: int) -> tuple[float, int] | None:
+        """(seconds, index after) of "five minutes", "a minute", "half an hour", "a few minutes"."""
+        low = self.low
+        if k >= self.n:
+            return None
+        if low[k] == "half" and k + 2 < self.n and low[k + 1] in ("a", "an") and lemma(low[k + 2]) in lx.DURATION_UNITS:
+            return lx.DURATION_UNITS[lemma(low[k + 2])] / 2, k + 3
+        j = k + 1 if low[k] in ("a", "one") else k
+        if (j + 3 < self.n and low[j] == "quarter" and low[j + 1] == "of" and low[j + 2] in ("a", "an")
+                and lemma(low[j + 3]) in lx.DURATION_UNITS):
+            return lx.DURATION_UNITS[lemma(low[j + 3])] / 4, j + 4  # "a quarter of an hour"
+        q = self._quantifier(k)
+        if q is not None:
+            value, kind, after, high = q
+            if after < self.n and lemma(low[after]) in lx.DURATION_UNITS:
+                unit = lx.DURATION_UNITS[lemma(low[after])]
+                if kind.startswith("vague"):
+                    low_, high_ = lx.VAGUE_RANGES.get(kind.split(":")[1], (2, 4))
+                    value = (low_ + high_) / 2
+                elif kind == "range":
+                    value = (value + (high or value)) / 2
+                return float(value) * unit, after + 1
+        if low[k] in ("a", "an", "one") and k + 1 < self.n and lemma(low[k + 1]) in lx.DURATION_UNITS:
+            return lx.DURATION_UNITS[lemma(low[k + 1])], k + 2
+        return None
+
+    def _preposition(self, i: int) -> tuple[str, int] | None:
+        """(role preposition, width) for a place preposition at i, multi-word ones included."""
+        low = self.low
+        w = low[i]
+        two = tuple(low[i:i + 2])
+        three = tuple(low[i:i + 3])
+        if three in (("in", "front", "of"),):
+            return "at", 3
+        if two in (("out", "of"), ("away", "from")):
+            return "from", 2
+        if two in (("next", "to"), ("close", "to"), ("up", "to"), ("over", "to"), ("down", "to"), ("on", "to"),
+                   ("in", "to")):
+            return ("at" if two[0] in ("next", "close") else "to"), 2
+        if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "down", 1
+        if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
+            return w, 1
+        return None
+
+    def _place_phrase(self, k: int, prep: str, at: int, record_unknown: bool = True) -> _Place | None:
+        """The noun phrase after a place preposition, matched against the world."""
+        low = self.low
+        j = k
+        while j < self.n and (low[j] in lx.DETERMINERS or low[j] in ("'s", "’s")):
+            j += 1
+        if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < self.n and \
+                not self.index.knows(lemma(low[j])):
+            return None  # "in line", "at once", "on time": no determiner and no place word
+        phrase: list[str] = []
+        joined = False  # the word follows a hyphen inside the phrase ("check-in")
+        while j < self.n and len(phrase) < 6:
+            w = low[j]
+            if w == "-" and phrase and j + 1 < self.n and low[j + 1][:1].isalnum():
+                joined = True
+                j += 1
+                continue
+            if phrase and not joined and self._extends_name(phrase, j):
+                phrase.append(w)  # "check in counter a": a preposition inside a name the world has
+                j += 1
+                continue
+            if self._is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
+                    w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
+                break
+            if w in ("'s", "’s"):
+                j += 1
+                continue
+            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and self.index.knows(lemma(w))):
+                break
+            joined = False
+            if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
+                break
+            if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
+                    self.w[j].tag.startswith("VB") or self.index.match([lemma(x) for x in phrase]) is not None):
+                break  # "in the cafeteria evacuate": the verb after the place ("gift shop" is a noun)
+            if w.isdigit() or w in lx.UNITS:
+                if not phrase:
+                    break
+                phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
+                j += 1
+                continue
+            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)):
+                break
+            phrase.append(w)
+            j += 1
+        if not phrase:
+            return None
+        lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
+        if any(w in lx.ROBOT_WORDS for w in phrase):
+            return None
+        if self._is_person_phrase(lemmas):
+            return None
+        match = self.index.match(lemmas)
+        if match is None and record_unknown and not self.index.is_nameless(lemmas):
+            self.unknown.append(" ".join(phrase))
+        if match is None:
+            return None
+        return _Place(prep, at, tuple(phrase), match, j)
+
+    def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
+        """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
+        if self.low[j] not in ("in", "of", "and", "on", "up", "out"):
+            return False  # "to", "from", "through" ... always mark a new place: never inside a name
+        here = self.index.match(phrase_lemmas(list(phrase)))
+        for end in range(j + 2, min(j + 4, self.n) + 1):
+            extended = phrase_lemmas(list(phrase) + self.low[j:end])
+            longer = self.index.match(extended)
+            if longer is None or not longer.exact or (here is not None and longer.name == here.name):
+                continue
+            # every word of the longer phrase must be the one place's: "check in counter a", not
+            # "ward c to the nurses" (two places either side of a preposition)
+            entry = self.index.entry(longer.name)
+            if entry is not None and all(t in entry.tokens for t in extended):
+                return True
+        return False
+
+    def _is_person_phrase(self, lemmas: Sequence[str]) -> bool:
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        return bool(content) and (content[-1] in lx.PERSON_NOUNS or content[-1] in lx.PRONOUN_PEOPLE) and \
+            not self.index.knows(content[-1])
+
+    def _scan_unknown_places(self, tokens: Sequence[int]) -> None:
+        for i in tokens:
+            prep = self._preposition(i)
+            if prep is not None:
+                self._place_phrase(i + prep[1], prep[0], i)
+
+    # -- groups ----------------------------------------------------------------------------
+
+    def _group(self, k: int, m: _Mention, c: _Clause, scene: _Clause | None, evacuation: bool,
+               span: tuple[int, int], earlier: list[GroupReading]) -> GroupReading:
+        intent = c.intent or (scene.intent if scene is not None and scene.intent else None)
+        if intent is None:
+            # No verb of action ("a cleaner is in the cafeteria"): people who are somewhere stay
+            # there; only a place they are sent to ("... to the exit") makes them walk.
+            sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places)
+            intent = "walk" if sends or c.robot else "wait"
+        if c.robot is not None:
+            intent = "robot"
+        if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):
+            intent = "evacuate"
+        start = destination = location = None
+        via: list[str] = []
+        places = list(c.places)
+        scene_places = list(scene.places) if scene is not None else []
+        stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and c.intent in lx.STATIONARY_INTENTS)
+        verb = c.verb or ""
+        verb_index = c.verb_index
+        for p in places + scene_places:
+            name = p.match.name if p.match is not None else None
+            if name is None:
+                continue
+            role = self._role(p, verb, verb_index, stationary, intent, p in scene_places)
+            if role == "start" and (start is None or self._narrower(name, start)):
+                start = name
+            elif role == "destination" and (destination is None or self._narrower(name, destination)):
+                destination = name
+            elif role == "location" and (location is None or self._narrower(name, location)):
+                location = name
+            elif role == "via" and name not in via:
+                via.append(name)
+        if intent == "evacuate" and start is None and location is not None:
+            start, location = location, None
+        if stationary and location is None and destination is not None and intent != "robot":
+            # "walk to the cafeteria and wait there": they go there, then stay; without a verb of
+            # motion ("queue to the desk") the place is only where they are.
+            location = destination
+            if not c.moves:
+                destination = None
+        kind, _, parent_index = (m.relation or "").partition(":")
+        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier) and \
+                start is None and destination is None and location is None:
+            # "one of them stares at the robot": a member of a group keeps its route unless told otherwise
+            parent = earlier[int(parent_index)]
+            start, destination = parent.start, parent.destination
+            location = parent.location if stationary else None
+            via = list(parent.via)
+        count = m.count
+        if m.whole_zone:
+            zone = start or location or destination
+            area = self.index.zone_area(zone) if zone else sum(e.area for e in self.index.entries if e.kind == "zone")
+            low_ = max(1, min(lx.WHOLE_ZONE_CAP, round(area * lx.WHOLE_ZONE_DENSITY[0])))
+            high_ = max(low_, min(lx.WHOLE_ZONE_CAP, round(area * lx.WHOLE_ZONE_DENSITY[1])))
+            count = Count("whole_zone", self._choose(low_, high_, f"{m.first}:whole"), low_, high_)
+            if zone is None:
+                self.notes.append(f"'{m.who}': no place says where everyone is; the whole building is filled")
+        if m.rest_of_parent:
+            parent = int((m.relation or "x:-1").split(":")[1]) if m.relation else -1
+            if 0 <= parent < len(earlier):
+                taken = sum(g.count.value for g in earlier if g.relation == f"subset_of:{parent}")
+                rest = max(0, earlier[parent].count.value - taken)
+                count = Count("implied", rest, rest, rest)
+                if rest == 0:
+                    self.notes.append(f"'{m.who}': nobody is left of '{earlier[parent].who}'")
+            else:
+                low_, high_ = lx.OTHERS_RANGE
+                count = Count("vague", self._choose(low_, high_, f"{m.first}:rest"), low_, high_)
+        if count is None:  # unreachable by construction: every mention kind sets or settles its count
+            count = Count("vague", lx.BARE_PLURAL_RANGE[0], *lx.BARE_PLURAL_RANGE)
+        if m.exclusive and count.kind != "exclusive":
+            count = replace(count, kind="exclusive")
+        interaction = c.robot
+        pace = c.pace if c.pace != "normal" or scene is None else scene.pace
+        together = m.together or c.together or count.kind == "structured"
+        wait = c.wait_seconds
+        if wait is None and scene is not None and intent == "wait":
+            wait = scene.wait_seconds
+        return GroupReading(
+            who=m.who, label=m.label, count=count, intent=intent,
+            robot_interaction=interaction, robot_reaction=lx.ROBOT_REACTIONS.get(interaction) if interaction else None,
+            start=start, destination=destination, location=location, via=tuple(via),
+            purpose=c.purpose or (scene.purpose if scene is not None else None), wait_seconds=wait,
+            together=together, pace=pace, relation=m.relation, follows=c.follows,
+            text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end] if span[1] > span[0] else m.who)
+
+    def _narrower(self, name: str, than: str) -> bool:
+        """Whether `name` is a door or thing inside the zone `than` ("the coffee machine in the kitchen")."""
+        entry = next((e for e in self.index.entries if e.name == name), None)
+        return entry is not None and entry.kind != "zone" and entry.zone == than
+
+    def _role(self, p: _Place, verb: str, verb_index: int | None, stationary: bool, intent: str,
+              from_scene: bool) -> str:
+        prep = p.prep
+        is_door = p.match is not None and p.match.kind == "door"
+        if prep in ("from", "obj:start"):
+            return "start"
+        if prep == "for":
+            return "location" if stationary else "destination"
+        if prep in ("to", "into", "towards", "toward", "onto", "obj:dest"):
+            return "destination"
+        if prep == "obj:via":
+            return "via"
+        if prep in lx.VIA_PREPOSITIONS:
+            if is_door and verb in lx.DEPARTURE_VERBS | {"evacuate"} or (is_door and intent == "evacuate"):
+                return "destination"
+            if is_door and verb in lx.ARRIVAL_VERBS:
+                return "start"
+            return "via"
+        if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS or intent == "evacuate"):
+            return "destination"
+        if prep == "obj:at":
+            return "location" if stationary else "via"
+        # at / in / on / near / around ...
+        if stationary:
+            return "location"
+        before_verb = from_scene or verb_index is None or p.index < verb_index
+        if before_verb:
+            return "start"
+        if verb in lx.ARRIVAL_VERBS:
+            return "destination"
+        return "start"

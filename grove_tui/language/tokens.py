@@ -1,0 +1,116 @@
+"""The one tokenizer-level helper set and the one lemmatiser of the product.
+
+`lemma` turns a word into the form the lexicon and the world index use: nouns singular
+("nurses" -> "nurse", "pharmacies" -> "pharmacy", "people" -> "person") and verbs to their base
+("waiting" -> "wait", "queued" -> "queue", "ran" -> "run", "leaves" -> "leave"). Verb forms are
+resolved against the lexicon's verbs, so a suffix rule never invents a word the lexicon does not
+know ("waiting" stays "waiting" when asked as a noun for a place name, "wait" as a verb).
+Sentence parsing (spaCy) is in language/parser.py; this module is plain Python so the world index
+and the older callers need no model.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from grove_tui.language.lexicon import (INTENT_VERBS, NUMBER_WORDS, ROBOT_VERBS, STOPWORDS)
+
+_IRREGULAR_NOUNS = {
+    "people": "person", "persons": "person", "children": "child", "men": "man", "women": "woman",
+    "staff": "staff", "feet": "foot", "teeth": "tooth", "mice": "mouse", "geese": "goose",
+    "elderly": "elderly", "police": "police", "series": "series", "news": "news", "kids": "kid",
+    "policemen": "policeman", "policewomen": "policewoman", "gentlemen": "gentleman", "ladies": "lady",
+    "passersby": "passerby", "passers": "passerby", "others": "other", "stairs": "stairs", "ones": "one",
+    "families": "family", "parties": "party",
+}
+_IRREGULAR_VERBS = {
+    "ran": "run", "went": "go", "gone": "go", "came": "come", "left": "leave", "sat": "sit", "stood": "stand",
+    "met": "meet", "made": "make", "got": "get", "saw": "see", "seen": "see", "took": "take", "led": "lead",
+    "fled": "flee", "is": "be", "are": "be", "was": "be", "were": "be", "has": "have", "had": "have",
+    "does": "do", "did": "do", "goes": "go", "lay": "lie", "hung": "hang", "kept": "keep", "read": "read",
+}
+_KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
+_KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
+    "look keep stay step back shy steer move get stand line form hang catch have sit mill take lead see "
+    "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help "
+    "clean guard patrol deliver carry push wheel bring drive fill sign book".split())
+
+
+def lemma(word: str) -> str:
+    """Plural nouns to singular by rule; enough to match "nurses" to "nurse" and "pharmacies" to "pharmacy"."""
+    w = word.lower()
+    if w in _IRREGULAR_NOUNS:
+        return _IRREGULAR_NOUNS[w]
+    if len(w) <= 3 or not w.endswith("s") or w.endswith(_KEEP_S):
+        return w
+    if w.endswith("ies") and len(w) > 4:
+        return w[:-3] + "y"
+    if w.endswith(("ches", "shes", "xes", "zes", "sses")):
+        return w[:-2]
+    return w[:-1]
+
+
+@lru_cache(maxsize=4096)
+def verb_lemma(word: str) -> str:
+    """The base form of a verb the lexicon knows ("queuing" -> "queue", "stares" -> "stare"); else `word`."""
+    w = word.lower()
+    if w in _IRREGULAR_VERBS:
+        return _IRREGULAR_VERBS[w]
+    if w in _KNOWN_VERBS:
+        return w
+    candidates: list[str] = []
+    if w.endswith("ing") and len(w) > 4:
+        stem = w[:-3]
+        candidates += [stem, stem + "e"]
+        if len(stem) > 2 and stem[-1] == stem[-2]:
+            candidates.append(stem[:-1])  # "chatting" -> "chat"
+        if stem.endswith("y"):
+            candidates.append(stem[:-1] + "ie")  # "lying" -> "lie"
+    if w.endswith("ed") and len(w) > 3:
+        stem = w[:-2]
+        candidates += [stem, stem + "e", w[:-1]]
+        if len(stem) > 2 and stem[-1] == stem[-2]:
+            candidates.append(stem[:-1])
+        if stem.endswith("i"):
+            candidates.append(stem[:-1] + "y")
+    if w.endswith("s") and len(w) > 2:
+        candidates += [w[:-1]]
+        if w.endswith("es"):
+            candidates.append(w[:-2])
+        if w.endswith("ies"):
+            candidates.append(w[:-3] + "y")
+    for c in candidates:
+        if c in _KNOWN_VERBS:
+            return c
+    return w
+
+
+_WORD = re.compile(r"[a-z0-9]+(?:[,'][0-9]{3})*")
+
+
+def words(text: str) -> list[str]:
+    """Lowercased words and numbers of a text; hyphens split ("check-in" -> "check", "in")."""
+    return _WORD.findall(text.lower().replace("-", " "))
+
+
+def semantic_tokens(text: str) -> list[str]:
+    """Lowercased, lemmatised content words, in order, without stopwords or numbers."""
+    out: list[str] = []
+    for w in words(text):
+        if w in STOPWORDS or w.isdigit() or w in NUMBER_WORDS or "," in w:
+            continue
+        out.append(lemma(w))
+    return out
+
+
+def name_tokens(text: str) -> list[str]:
+    """The lemmatised words of a world name or alias ("doctor's office" -> doctor, office)."""
+    text = re.sub(r"'s\b", "", text.replace("_", " "))
+    return phrase_lemmas(words(text))
+
+
+def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
+    """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
+    letter after the first word, which tells places apart ("ward a", "check-in counter b")."""
+    return [lemma(w) for k, w in enumerate(ws) if w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha())]
