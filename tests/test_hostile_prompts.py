@@ -72,3 +72,20 @@ def test_a_device_named_as_a_world_file_is_not_called_missing():
 
     with pytest.raises(WorldError, match="is not a regular file"):
         load_world("/dev/zero")
+
+
+def test_a_config_alias_bomb_is_refused_not_expanded(tmp_path, monkeypatch):
+    import time
+
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    levels = "a: &a [x,x,x,x,x,x,x,x,x]\n" + "".join(
+        f"{chr(98 + i)}: &{chr(98 + i)} [" + ",".join(["*" + chr(97 + i)] * 9) + "]\n" for i in range(8))
+    config = tmp_path / "config.yaml"
+    config.write_text(levels + "ui:\n  theme: *i\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    started = time.perf_counter()
+    with pytest.raises(SettingsError, match="expands to more than"):
+        load_settings()
+    assert time.perf_counter() - started < 5.0  # it hung (the error message repr'd the expansion)

@@ -53,6 +53,8 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
     "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6),
 }
+# Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
+QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
                                   "trio", "duo", "class", "tour", "delegation"})
 
@@ -60,7 +62,9 @@ WHOLE_ZONE_WORDS = frozenset({"everyone", "everybody", "all"})
 WHOLE_ZONE_DENSITY = (0.3, 0.5)  # person/m^2 of the zone's floor: a busy room, still able to move
 WHOLE_ZONE_CAP = 40  # the presets' default per-group limit
 NOBODY_WORDS = frozenset({"nobody", "noone", "none"})  # "no one" is read as two words
-EXCEPT_WORDS = frozenset({"except", "but", "save", "besides"})  # "other than" is read as two words
+EXCEPT_WORDS = frozenset({"except", "but", "save", "besides"})  # "other than", "apart from" are read as two words
+# A place after these is where people do NOT go: neither a role nor an unknown place.
+NEGATED_PLACE_PHRASES = (("instead", "of"), ("rather", "than"))
 
 DURATION_UNITS = {"second": 1.0, "sec": 1.0, "minute": 60.0, "min": 60.0, "hour": 3600.0, "hr": 3600.0, "moment": 10.0}
 
@@ -109,11 +113,11 @@ for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
-    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol",
+    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
-            "hurry rush run jog dash sprint race march step make get reach transfer walk pace",
+            "hurry rush run jog dash sprint race march step make get reach transfer walk pace shuffle stride stroll",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -160,7 +164,11 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("walk", "toward"): "approach", ("go", "towards"): "approach", ("move", "towards"): "approach",
     ("stand", "in", "front", "of"): "block", ("get", "in", "the", "way"): "block", ("stand", "in", "the", "way"): "block",
     ("step", "in", "front", "of"): "block", ("walk", "behind"): "follow", ("look", "at"): "look",
+    ("tag", "along"): "follow", ("turn", "to", "look"): "look", ("stop", "and", "stare"): "look",
 }
+# Words right after the robot that name an interaction ("stand in the robot's way").
+ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
+                                                   ("’s", "way"): "block", ("’s", "path"): "block"}
 # Feelings that name a reaction when the robot is in the same clause ("scared of the robot").
 ROBOT_FEELINGS: dict[str, str] = {
     "curious": "approach", "curiosity": "approach", "interested": "approach", "fascinated": "approach",

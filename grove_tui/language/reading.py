@@ -39,6 +39,7 @@ How a prompt is read:
 from __future__ import annotations
 
 import random
+import unicodedata
 import zlib
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field, replace
@@ -47,7 +48,7 @@ from typing import Any
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word, parse
 from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
-from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
@@ -149,6 +150,13 @@ def _has_subset(reading: PromptReading, parent: int) -> bool:
 
 # ---- reading --------------------------------------------------------------------------------
 
+def _plain(word: str) -> str:
+    """The word without accents ("café" -> "cafe"), as world names are written."""
+    if word.isascii():
+        return word
+    return unicodedata.normalize("NFKD", word).encode("ascii", "ignore").decode() or word
+
+
 def read_prompt(prompt: str, world: Any, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes, in the world's own place names (see module doc)."""
     text = " ".join((prompt or "").split())
@@ -202,7 +210,8 @@ class _Reader:
         self.prompt = prompt
         self.w = words
         # "ward b." at the end of a sentence: the small model keeps the full stop on the word
-        self.low = [t.lower.rstrip(".") if len(t.lower) > 1 and t.lower[0].isalnum() else t.lower for t in words]
+        self.low = [_plain(t.lower.rstrip(".") if len(t.lower) > 1 and t.lower[0].isalnum() else t.lower)
+                    for t in words]
         self.index = index
         self.seed = seed
         self.n = len(words)
@@ -234,8 +243,11 @@ class _Reader:
         out: set[int] = set()
         for i in range(self.n):
             for phrase in lx.TOGETHER_PHRASES:
-                if tuple(self.low[i:i + len(phrase)]) == phrase:
-                    out.update(range(i, i + len(phrase)))
+                end = i + len(phrase)
+                if tuple(self.low[i:end]) == phrase:
+                    if end < self.n and verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
+                        continue  # "as a family talks": the family is who the clause is about
+                    out.update(range(i, end))
         return out
 
     def _number_at(self, i: int) -> tuple[int, int] | None:
@@ -292,6 +304,10 @@ class _Reader:
             return True
         if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
             return True  # "empty except for two cleaners"
+        if prev == "from" and p > 0 and self.low[p - 1] == "apart":
+            return True  # "apart from one guard"
+        if prev in ("are", "is") and self._only_people_before(p):
+            return True  # "the only people in the ward are two men"
         if prev in ("are", "is", "were", "was", "be") and p > 0 and self.low[p - 1] == "there":
             return True
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or self._is_punct(p - 1) or self.low[p - 1] in
@@ -332,6 +348,9 @@ class _Reader:
                 return k
             if self.low[k] in lx.NP_MODIFIERS or self.w[k].pos == "ADJ":
                 k += 1
+                continue
+            if self.w[k].pos in ("NOUN", "PROPN") and k + 1 < self.n and self._is_person_noun(k + 1):
+                k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
                 continue
             if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
                     and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
@@ -380,6 +399,12 @@ class _Reader:
             label = found[parent].label if parent is not None else "person"
             return _Mention(s, s + 1, self._span(s, s + 1), label, None,
                             relation=f"others_of:{parent}" if parent is not None else None, rest_of_parent=True)
+        if low[s] == "the" and s + 1 < self.n and low[s + 1] == "only":
+            return None  # "the only people in the ward are two men": the men are the group
+        if low[s] == "every" and s + 1 < self.n:
+            head = self._person_head(s + 1, counted=False)
+            if head is not None:  # "every visitor in the lounge": everyone there
+                return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True)
         # Whole zone: "everyone", "everybody", "all the people", "all patients"
         if low[s] in ("everyone", "everybody") or (low[s] == "all" and not (num and num[0] > 0 and num[1] == "all")):
             last = s
@@ -439,6 +464,8 @@ class _Reader:
             return None
         singular = self._lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
         label = self._label(head)
+        if det == "the" and any(m.label == label or self._lemma(head) == m.label for m in found):
+            return None  # "... one person; the person wanders around": the same people again
         noun = self._lemma(head)
         collective = self._collective(head)
         if collective is not None:
@@ -454,15 +481,24 @@ class _Reader:
         return _Mention(s, head, self._span(s, head), label,
                         Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
 
+    def _only_people_before(self, p: int) -> bool:
+        sentence = self.w[p].sentence
+        return any(self.low[k] == "only" and k + 1 < self.n and self.low[k + 1] in ("people", "person", "ones", "one")
+                   for k in range(p) if self.w[k].sentence == sentence)
+
     def _exclusive_context(self, s: int) -> bool:
-        """Whether the phrase at s follows "nobody ... except" in its sentence."""
+        """Whether the phrase at s is the exception to "nobody" in its sentence ("nobody ... except one
+        guard", "apart from two pilots, nobody is ...", "the only people in X are two men")."""
         sentence = self.w[s].sentence
-        before = [k for k in range(s) if self.w[k].sentence == sentence]
+        words_ = [k for k in range(self.n) if self.w[k].sentence == sentence]
         saw_nobody = any(self.low[k] in lx.NOBODY_WORDS or (self.low[k] == "no" and k + 1 < self.n and
                                                            self.low[k + 1] in ("one", "people", "person", "body"))
-                         or self.low[k] in ("empty", "deserted") for k in before)
-        near = [self.low[k] for k in before[-2:]]
-        return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"])
+                         or self.low[k] in ("empty", "deserted") for k in words_)
+        near = [self.low[k] for k in words_ if k < s][-2:]
+        if near[-1:] in (["are"], ["is"]) and self._only_people_before(s - 1):
+            return True
+        return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"]
+                               or near == ["apart", "from"])
 
     def _parent(self, found: list[_Mention], *, plain: bool = False) -> int | None:
         """The group a relation refers to: the last one that is not itself a subset ("one of them"),
@@ -510,6 +546,8 @@ class _Reader:
         num = self._number_at(k)
         if num is not None:
             value, after = num
+            if tuple(low[after:after + 2]) == ("or", "so"):
+                return (value, "approximate", after + 2, None)  # "fifteen or so women"
             if after + 1 < self.n and low[after] in ("to", "-", "or") and self._number_at(after + 1):
                 b = self._number_at(after + 1)
                 if b[0] > value:
@@ -585,6 +623,11 @@ class _Reader:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self._label(member)
+        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
+            # "a crowd of visitors": the collective only says how many, vaguely
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            return _Mention(s, last, self._span(s, last), label,
+                            Count("vague", self._choose(low_, high_, f"{head}:{noun}"), low_, high_), together=together)
         if size is None:
             low_, high_ = lx.IMPLIED_RANGES[noun]
             party = self._choose(low_, high_, f"{head}:{noun}")
@@ -639,12 +682,16 @@ class _Reader:
                                  ("no group of people found in the prompt",))
         # Each group owns its words up to the next mention; a sentence's words before its first
         # mention are its preamble, read for every group of that sentence.
+        # A fronted phrase between two groups belongs to the one after it ("..., and from the office,
+        # eight people walk ...", "...; for 90 seconds, two residents wait ...").
+        starts = [mentions[0].first] + [self._fronted_start(mentions[k - 1].last, mentions[k].first)
+                                        for k in range(1, len(mentions))]
         spans: list[tuple[int, int]] = []
         for k, m in enumerate(mentions):
-            end = mentions[k + 1].first if k + 1 < len(mentions) else self.n
+            end = starts[k + 1] if k + 1 < len(mentions) else self.n
             sentence_end = next((i for i in range(m.last + 1, end) if self.w[i].sentence != self.w[m.first].sentence),
                                 end)
-            spans.append((m.first, sentence_end))
+            spans.append((starts[k], sentence_end))
         claimed = {i for a, b in spans for i in range(a, b)}
         preamble_of: dict[int, list[int]] = {}
         for i in range(self.n):
@@ -679,6 +726,22 @@ class _Reader:
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
+    def _fronted_start(self, previous_last: int, first: int) -> int:
+        """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
+        no verb, opened by a preposition and closed by a comma; else the mention itself."""
+        b = first - 1
+        if b <= previous_last or self.low[b] != ",":
+            return first
+        j = b - 1
+        while j > previous_last and not self._is_punct(j) and self.low[j] not in lx.CLAUSE_STARTERS:
+            j -= 1
+        fronted = range(j + 1, b)
+        if not fronted or self.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
+            return first
+        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS for x in fronted):
+            return first
+        return j + 1
+
     def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False) -> _Clause:
         c = _Clause()
         low = self.low
@@ -689,13 +752,18 @@ class _Reader:
         robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS]
         if robot_at:
             r = robot_at[0]
-            for i in own:
-                if i >= r:
+            for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
+                if tuple(low[r + 1:r + 1 + len(phrase)]) == phrase:
+                    c.robot = interaction
+            # The verb closest before the robot governs it ("stop and stare at the robot": look).
+            for i in sorted((x for x in own if x < r), reverse=True):
+                if c.robot is not None:
                     break
                 for phrase, interaction in lx.ROBOT_PHRASES.items():
                     lemmas = tuple(verb_lemma(x) for x in low[i:i + len(phrase)])
                     if lemmas == phrase and all(x in ownset for x in range(i, i + len(phrase))):
-                        c.robot = c.robot or interaction
+                        c.robot = interaction
+                        break
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
@@ -735,6 +803,23 @@ class _Reader:
                     c.purpose = c.purpose or self.prompt[self.w[i].start:self.w[end - 1].end]
                     used.update(range(i, end))
                     i_pos = self._advance(own, end)
+                    continue
+            negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(low[i:i + len(p)]) == p), None)
+            if negated is not None:
+                # "go to the imaging instead of the waiting room": a place nobody goes to
+                k = i + len(negated)
+                place = self._place_phrase(k, "at", i, record_unknown=False)
+                end = place.end if place is not None else self._phrase_end(k)
+                used.update(range(i, end))
+                i_pos = self._advance(own, end)
+                continue
+            if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
+                place = self._place_phrase(i + 2, "obj:start", i)
+                c.evacuate = c.evacuate or w != "clearing"
+                if place is not None:
+                    c.places.append(place)
+                    used.update(range(i, place.end))
+                    i_pos = self._advance(own, place.end)
                     continue
             if w == "to" and (nxt == "" or self._verb_follows(i + 1)) and not self._names_place(i + 1):
                 end = self._phrase_end(i + 2, allow_objects=True)
@@ -801,9 +886,14 @@ class _Reader:
             c.evacuate = True
         # Follow someone: the person after a follow verb.
         if c.intent == "follow" and c.verb_index is not None:
-            k = self._skip(c.verb_index + 1, lx.DETERMINERS)
-            if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide")):
+            k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
+            k1 = self._skip(k0, {"behind", "after"})
+            k = self._skip(k1, lx.DETERMINERS)
+            if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide",
+                                                                     "us", "everyone")):
                 c.follows = self._span(c.verb_index + 1, k)
+            elif k1 > k0 or k0 >= self.n or self._is_punct(k0) or low[k0] in lx.CLAUSE_STARTERS:
+                c.follows = "the group before"  # "a porter follows close behind"
             else:
                 c.intent = "walk"  # "follow the signs to the exit": walking, nobody is followed
         # Pace and togetherness
@@ -860,7 +950,7 @@ class _Reader:
         """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
         words = [self.low[j] for j in range(k, min(k + 4, self.n)) if not self._is_punct(j)]
         for n in range(len(words), 0, -1):
-            match = self.index.match([lemma(w) for w in words[:n]])
+            match = self.index.match(phrase_lemmas(words[:n]))
             if match is not None and match.exact:
                 return True
         return False
@@ -894,6 +984,10 @@ class _Reader:
             return None
         if low[k] == "half" and k + 2 < self.n and low[k + 1] in ("a", "an") and lemma(low[k + 2]) in lx.DURATION_UNITS:
             return lx.DURATION_UNITS[lemma(low[k + 2])] / 2, k + 3
+        j = k + 1 if low[k] in ("a", "one") else k
+        if (j + 3 < self.n and low[j] == "quarter" and low[j + 1] == "of" and low[j + 2] in ("a", "an")
+                and lemma(low[j + 3]) in lx.DURATION_UNITS):
+            return lx.DURATION_UNITS[lemma(low[j + 3])] / 4, j + 4  # "a quarter of an hour"
         q = self._quantifier(k)
         if q is not None:
             value, kind, after, high = q
@@ -938,16 +1032,26 @@ class _Reader:
                 not self.index.knows(lemma(low[j])):
             return None  # "in line", "at once", "on time": no determiner and no place word
         phrase: list[str] = []
-        while j < self.n and len(phrase) < 5:
+        joined = False  # the word follows a hyphen inside the phrase ("check-in")
+        while j < self.n and len(phrase) < 6:
             w = low[j]
-            if self._is_punct(j) or w in lx.CLAUSE_STARTERS or w in ("who", "which", "that", "where", "for", "of",
-                                                                     "with", "then", "to"):
+            if w == "-" and phrase and j + 1 < self.n and low[j + 1][:1].isalnum():
+                joined = True
+                j += 1
+                continue
+            if phrase and not joined and self._extends_name(phrase, j):
+                phrase.append(w)  # "check in counter a": a preposition inside a name the world has
+                j += 1
+                continue
+            if self._is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
+                    w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
             if w in ("'s", "’s"):
                 j += 1
                 continue
-            if w in lx.PLACE_PREPOSITIONS and not (phrase and self.index.knows(lemma(w))):
+            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and self.index.knows(lemma(w))):
                 break
+            joined = False
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
@@ -965,7 +1069,7 @@ class _Reader:
             j += 1
         if not phrase:
             return None
-        lemmas = tuple(lemma(w) for w in phrase)
+        lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
         if any(w in lx.ROBOT_WORDS for w in phrase):
             return None
         if self._is_person_phrase(lemmas):
@@ -976,6 +1080,23 @@ class _Reader:
         if match is None:
             return None
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
+        """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
+        if self.low[j] not in ("in", "of", "and", "on", "up", "out"):
+            return False  # "to", "from", "through" ... always mark a new place: never inside a name
+        here = self.index.match(phrase_lemmas(list(phrase)))
+        for end in range(j + 2, min(j + 4, self.n) + 1):
+            extended = phrase_lemmas(list(phrase) + self.low[j:end])
+            longer = self.index.match(extended)
+            if longer is None or not longer.exact or (here is not None and longer.name == here.name):
+                continue
+            # every word of the longer phrase must be the one place's: "check in counter a", not
+            # "ward c to the nurses" (two places either side of a preposition)
+            entry = self.index.entry(longer.name)
+            if entry is not None and all(t in entry.tokens for t in extended):
+                return True
+        return False
 
     def _is_person_phrase(self, lemmas: Sequence[str]) -> bool:
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]

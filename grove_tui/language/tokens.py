@@ -107,4 +107,10 @@ def semantic_tokens(text: str) -> list[str]:
 def name_tokens(text: str) -> list[str]:
     """The lemmatised words of a world name or alias ("doctor's office" -> doctor, office)."""
     text = re.sub(r"'s\b", "", text.replace("_", " "))
-    return [lemma(w) for w in words(text) if w not in STOPWORDS]
+    return phrase_lemmas(words(text))
+
+
+def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
+    """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
+    letter after the first word, which tells places apart ("ward a", "check-in counter b")."""
+    return [lemma(w) for k, w in enumerate(ws) if w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha())]

@@ -298,6 +298,7 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                  "grounding": self.query_one("#grounding", GroundingPanel)}
         for name, widget in views.items():
             widget.display = name == which
+        self.query_one("#inspect-side").set_class(which == "grounding", "-grounding")
         if which == "xml":
             self._show_xml()
         views[which].focus()
