@@ -854,15 +854,17 @@ def _update_agents(k0, k1, dt, params,
             fx = -vx / tau
             fy = -vy / tau
             hold = params[P_HOLD]
-            if robot_interaction[i] == ROBOT_FEARED:
-                anchor[i, 0] = math.nan  # a frightened person gives up its spot (HuNavSim Scared)
-            elif hold > 0.0 and (m == MODE_STOP or m == MODE_FACE):
-                # Waiting (Wait, Converse, facing): the spot where it stopped is its own. Pushed off it, it is pulled
-                # back by a critically damped spring (no rocking about the spot), so walkers cannot
-                # shove it around and an arriving walker stops within a few centimetres.
-                if math.isnan(anchor[i, 0]):
-                    anchor[i, 0] = px
-                    anchor[i, 1] = py
+            if robot_interaction[i] == ROBOT_FEARED or not (m == MODE_STOP or m == MODE_FACE):
+                # only waiting people (Wait, Converse, facing) own a spot; a frightened one gives it up
+                anchor[i, 0] = math.nan
+            elif hold > 0.0 and math.isnan(anchor[i, 0]) and vx * vx + vy * vy < params[P_YAW_HOLD] ** 2:
+                # The spot is where plain damping (-v / tau) brought it to rest, as in lightsfm:
+                # holding changes how a waiting person resists pushes, not where it stops.
+                anchor[i, 0] = px
+                anchor[i, 1] = py
+            if hold > 0.0 and not math.isnan(anchor[i, 0]):
+                # Pushed off its spot, a waiting person is pulled back by a critically damped spring
+                # (no rocking about the spot), so walkers cannot shove it around.
                 stiffness = w_goal / (tau * hold)
                 hx = stiffness * (anchor[i, 0] - px)
                 hy = stiffness * (anchor[i, 1] - py)
