@@ -132,7 +132,7 @@ class SFMParams:
     goal_tolerance: float = 0.1
     # Contact stiffness (1/s^2) acting only while two bodies overlap. Not in lightsfm, whose
     # Moussaid force lets a symmetric crossing pair overlap by 0.25 m. body_weight=0, epsilon=0
-    # and social_skip_exponent=inf give lightsfm's forces exactly (tests/test_sfm.py).
+    # and social_skip_exponent=inf give lightsfm's forces exactly (tests/crowd/test_sfm.py).
     body_weight: float = 100.0
     # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
     # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
@@ -522,7 +522,7 @@ def _fast_atan2(y, x):
     """atan2 within 3e-11 rad: one division, then an odd degree-23 fit of atan on [0, 1].
 
     libm's atan2 costs a third of a social-force pair; the fit keeps the kernel equal to
-    lightsfm to 1e-9 (tests/test_sfm.py) at a fifth less time per step.
+    lightsfm to 1e-9 (tests/crowd/test_sfm.py) at a fifth less time per step.
     """
     ax = abs(x)
     ay = abs(y)
