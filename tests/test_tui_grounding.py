@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from grove_tui.tui.widgets.grounding import read_grounding, render_grounding, summary
+from grove_tui.tui.widgets.grounding import grounding_text, read_grounding, summary
 
 # The shape the language layer's GroundingReport.to_dict() writes.
 REPORT = {"grounding": {
@@ -37,13 +37,21 @@ def test_reads_the_language_layers_report():
 
 
 def test_renders_asked_beside_done_with_marks_and_reasons():
-    text = render_grounding(read_grounding(REPORT)).plain
+    text = grounding_text(read_grounding(REPORT), width=60)
     assert "✓ ten patients ×10" in text
-    assert "✓ count: 10" in text  # agreement shows the value once
-    assert "✗ destination: main_entrance → cafeteria" in text
+    assert " ✓ count       10" in text  # agreement shows the value once
+    assert " ✗ destination main_entrance → cafeteria" in text
     assert "no path to main_entrance from the spawn" in text
-    assert "✓ count: 2-6 → 3" in text
+    assert " ✓ count       2-6 → 3" in text
     assert "! 'by the window': the world has no window" in text
+
+
+def test_values_wrap_inside_their_column_at_80x24_widths():
+    lines = grounding_text(read_grounding(REPORT), width=30).splitlines()
+    reason = [i for i, line in enumerate(lines) if "no path" in line][0]
+    # the reason starts under the value column, not under the mark
+    assert lines[reason].index("no path") == lines[reason - 1].index("cafeteria") > 10
+    assert max(len(line.rstrip()) for line in lines) <= 30
 
 
 def test_other_shapes_and_missing_reports():
@@ -60,5 +68,5 @@ def test_other_shapes_and_missing_reports():
     assert read_grounding({"grounding": {"groups": [{"who": "someone", "label": "visitor", "checks": []}]}}
                           )[0][0].label == "someone → visitor"
     assert read_grounding({"stages": {}}) is None and read_grounding(None) is None
-    assert "No grounding report" in render_grounding(None).plain
+    assert "No grounding report" in grounding_text(None)
     assert summary(None) == ""

@@ -336,7 +336,9 @@ class EngineBackend:
         return flat
 
     # export ----------------------------------------------------------------------------------------
-    def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path) -> list[ExportedFile]:
+    def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path,
+               on_progress: Callable[[str, int, int], None] | None = None) -> list[ExportedFile]:
+        """Every format into a new folder under `root`; `on_progress(kind, index, total)` before each one."""
         stamp = time.strftime("%Y%m%d-%H%M%S")
         out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}"
         suffix = 1
@@ -345,7 +347,9 @@ class EngineBackend:
             out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}-{suffix}"
         out_dir.mkdir(parents=True)
         ctx = ExportContext(generated, simulation, out_dir, self.session)
-        for kind, exporter in self.exporters:
+        for index, (kind, exporter) in enumerate(self.exporters):
+            if on_progress is not None:
+                on_progress(kind, index, len(self.exporters))
             try:
                 exporter(ctx)
             except Exception as exc:  # one failing format must not lose the others; the dialog shows why

@@ -9,10 +9,13 @@ checks per group, or `asked`/`done` mappings) and says plainly when there is no 
 
 from __future__ import annotations
 
+import io
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from rich.console import Console, Group
+from rich.table import Table
 from rich.text import Text
 from textual.containers import VerticalScroll
 from textual.widgets import Static
@@ -130,36 +133,53 @@ def _value(value: Any) -> str:
     return str(value)
 
 
-def render_grounding(parsed: tuple[list[GroundingGroup], list[str]] | None) -> Text:
-    """One block per group: its verdict and label, then each check (asked → done, reason when ✗)."""
-    text = Text()
+def render_grounding(parsed: tuple[list[GroundingGroup], list[str]] | None) -> Group:
+    """One block per group: its verdict and label, then a grid of checks (mark, field, value), the
+    value wrapping inside its own column so a narrow panel (80x24) stays readable. A value the
+    sentence did not state shows dim (the scenario chose it); one that differs shows asked → done."""
     if parsed is None:
-        text.append("No grounding report in this bundle: it was generated before the sentence was read "
-                    "into groups. Regenerate (g) to get one.", style="dim")
-        return text
+        return Group(Text("No grounding report in this bundle: it was generated before the sentence was read "
+                          "into groups. Regenerate (g) to get one.", style="dim"))
     groups, notes = parsed
+    parts: list[Any] = []
     if not groups:
-        text.append("The sentence was read as no group of people.", style="dim")
-    for index, group in enumerate(groups):
-        if index:
-            text.append("\n")
-        text.append(f"{OK_MARK if group.ok else FAIL_MARK} ", style="bold green" if group.ok else "bold red")
-        text.append(group.label, style="bold")
+        parts.append(Text("The sentence was read as no group of people.", style="dim"))
+    for group in groups:
+        header = Text()
+        header.append(f"{OK_MARK if group.ok else FAIL_MARK} ", style="bold green" if group.ok else "bold red")
+        header.append(group.label, style="bold")
         if group.agents is not None:
-            text.append(f" ×{group.agents}", style="dim")
+            header.append(f" ×{group.agents}", style="dim")
         if group.reason and not group.ok:
-            text.append(f"  {group.reason}", style="dim")
+            header.append(f"  {group.reason}", style="dim")
+        parts.append(header)
+        grid = Table.grid(padding=(0, 1, 0, 0))
+        grid.add_column(no_wrap=True)
+        grid.add_column(no_wrap=True)
+        grid.add_column(overflow="fold", ratio=1)
         for check in group.checks:
-            text.append("\n  ")
-            text.append(OK_MARK if check.ok else FAIL_MARK, style="green" if check.ok else "red")
-            text.append(f" {check.field}: ", style="bold" if not check.ok else "")
+            mark = Text(f" {OK_MARK if check.ok else FAIL_MARK}", style="green" if check.ok else "red")
             asked, done = _value(check.asked), _value(check.done)
-            text.append(asked if asked == done else f"{asked} → {done}")
+            if asked == "—":
+                value = Text(done, style="dim")
+            elif asked == done:
+                value = Text(done)
+            else:
+                value = Text(f"{asked} → {done}")
             if check.reason and not check.ok:
-                text.append(f"\n     {check.reason}", style="italic")
+                value.append(f"\n{check.reason}", style="italic")
+            grid.add_row(mark, Text(check.field, style="" if check.ok else "bold"), value)
+        parts.append(grid)
     for note in notes:
-        text.append(f"\n! {note}", style="yellow")
-    return text
+        parts.append(Text(f"! {note}", style="yellow"))
+    return Group(*parts)
+
+
+def grounding_text(parsed: tuple[list[GroundingGroup], list[str]] | None, width: int = 60) -> str:
+    """The report as plain text at a given width (what the panel shows, without colours)."""
+    console = Console(width=width, record=True, color_system=None, file=io.StringIO())
+    console.print(render_grounding(parsed))
+    return console.export_text()
 
 
 def summary(parsed: tuple[list[GroundingGroup], list[str]] | None) -> str:
