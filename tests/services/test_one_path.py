@@ -50,9 +50,13 @@ def test_app_generate_batch_and_eval_write_byte_identical_bundles(tmp_path):
              "--out", str(cli_bundle)])
 
     jobs = tmp_path / "jobs.jsonl"
-    jobs.write_text(json.dumps({"world": WORLD, "preset": PRESET, "prompt": PROMPT, "seed": SEED, "name": "one"}) + "\n",
-                    encoding="utf-8")
+    # The job also simulates and exports: neither touches the bundle's contract files.
+    jobs.write_text(json.dumps({"world": WORLD, "preset": PRESET, "prompt": PROMPT, "seed": SEED, "name": "one",
+                                "simulate": 2, "export": ["hunav", "trajectories"]}) + "\n", encoding="utf-8")
     _invoke(["batch", str(jobs), "--out", str(tmp_path / "batch")])
+    assert (tmp_path / "batch" / "one" / "trajectories.csv").is_file()
+    assert any((tmp_path / "batch" / "one.hunav").glob("*.yaml"))
+    assert (tmp_path / "batch" / "one.trajectories" / "trajectories.csv").is_file()
 
     suite = tmp_path / "suite.yaml"
     suite.write_text(yaml.safe_dump({"cases": [{"id": "fire", "world": WORLD, "preset": PRESET, "prompt": PROMPT,
