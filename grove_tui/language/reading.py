@@ -259,6 +259,8 @@ class _Reader:
         w = self.low[i].replace(",", "")
         if w.isdigit():
             value, j = int(w), i + 1
+            if j < self.n and self.low[j] in lx.SCALES:  # "10 million people": read, so it can be refused
+                value, j = value * lx.SCALES[self.low[j]], j + 1
         elif w in lx.UNITS or w in lx.TENS:
             total, current, j = 0, 0, i
             while j < self.n:
@@ -281,8 +283,9 @@ class _Reader:
             value = total + current
         elif w == "dozen":
             value, j = 12, i + 1
-        elif w in ("a", "an") and i + 1 < self.n and self.low[i + 1] in ("dozen", "hundred"):
-            value, j = (12 if self.low[i + 1] == "dozen" else 100), i + 2
+        elif w in ("a", "an") and i + 1 < self.n and (self.low[i + 1] == "dozen" or self.low[i + 1] in lx.SCALES):
+            # "a thousand", "a billion people": read as numbers, so check_population refuses them.
+            value, j = (12 if self.low[i + 1] == "dozen" else lx.SCALES[self.low[i + 1]]), i + 2
         elif w == "half" and tuple(self.low[i + 1:i + 3]) == ("a", "dozen"):
             value, j = 6, i + 3  # "half a dozen"
         else:
