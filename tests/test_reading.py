@@ -418,3 +418,9 @@ def test_a_role_without_a_number_is_one_person(worlds, who, label):
 def test_a_place_people_skip_is_not_on_their_way(hospital, verb):
     g = one(read_prompt(f"Thirteen people {verb} the pharmacy and go straight to the cafeteria.", hospital))
     assert g.via == () and g.destination == "cafeteria"
+
+
+@pytest.mark.parametrize("verb", ["gawk", "smile", "point", "wave"])
+def test_an_unknown_verb_aimed_at_the_robot_is_looking(hospital, verb):
+    g = one(read_prompt(f"A couple of kids {verb} at the robot.", hospital))
+    assert g.robot_interaction == "look" and g.count.value == 2

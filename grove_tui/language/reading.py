@@ -824,6 +824,9 @@ class _Reader:
                 if low[i] in lx.ROBOT_FEELINGS:
                     c.robot = lx.ROBOT_FEELINGS[low[i]]
                     break
+        if robot_at and c.robot is None and any(low[r - 1] == "at" or (low[r - 1] == "the" and low[r - 2] == "at")
+                                                 for r in robot_at if r >= 2):
+            c.robot = "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
         if c.robot is not None:
             c.has_action = True
         # Places, purposes and durations, phrase by phrase.
