@@ -72,14 +72,14 @@ def labels_and_counts(result):
 
 def test_counts_change_the_population_exactly_without_calling_the_model(generated):
     pipeline, llm, result = generated
-    assert labels_and_counts(result) == [("patients", 10), ("nurses", 2)]
+    assert labels_and_counts(result) == [("patient", 10), ("nurse", 2)]
     events = []
     edited = pipeline.replan(result, {0: 14, 1: 3}, on_event=events.append)
     assert llm.calls == 1, "re-planning called the model"
-    assert labels_and_counts(edited) == [("patients", 14), ("nurses", 3)]
+    assert labels_and_counts(edited) == [("patient", 14), ("nurse", 3)]
     agents = edited.scenario.agents
     assert [a.id for a in agents] == list(range(1, 18))
-    assert sum(a.label == "patients" for a in agents) == 14 and sum(a.label == "nurses" for a in agents) == 3
+    assert sum(a.label == "patient" for a in agents) == 14 and sum(a.label == "nurse" for a in agents) == 3
     assert edited.report["groups"][0]["members"] == list(range(1, 15))
     assert edited.report["groups"][1]["members"] == [15, 16, 17]
     # only the two replayed stages ran
@@ -101,7 +101,7 @@ def test_every_tree_validates_and_has_planned_waypoints(generated):
         route = [agent.start, *agent.goals]
         assert all(planner.segment_is_free(a[0], a[1], b[0], b[1]) for a, b in zip(route, route[1:])), agent.id
     # lobby -> cafeteria is no straight line: the nurses' GoTo carries injected waypoints
-    nurses = [a for a in edited.scenario.agents if a.label == "nurses"]
+    nurses = [a for a in edited.scenario.agents if a.label == "nurse"]
     assert len(nurses) == 2
     assert all('waypoints=""' not in edited.trees[a.tree] and "waypoints=" in edited.trees[a.tree] for a in nurses)
     assert edited.scenario.robot is not None and len(edited.scenario.robot.path) >= 2
@@ -116,14 +116,14 @@ def test_report_keeps_earlier_stages_and_records_the_edit(generated):
     assert set(new["stages"]) == {"rois", "retrieval", "synthesis", "postprocess", "planning"}
     assert new["prompt_tokens"] == old["prompt_tokens"] and new["completion_tokens"] == old["completion_tokens"]
     assert new["draft"] == old["draft"] and new["draft_text"] == old["draft_text"]
-    assert new["notes"][0] == "counts edited: patients 10 -> 12"
-    assert new["count_edits"] == [{"counts": {"0": 12}, "seed": 3, "note": "counts edited: patients 10 -> 12"}]
+    assert new["notes"][0] == "counts edited: patient 10 -> 12"
+    assert new["count_edits"] == [{"counts": {"0": 12}, "seed": 3, "note": "counts edited: patient 10 -> 12"}]
     # a second edit builds on the first and keeps the history
     again = pipeline.replan(edited, {1: 4})
-    assert labels_and_counts(again) == [("patients", 12), ("nurses", 4)]
-    assert again.report["notes"][0] == "counts edited: nurses 2 -> 4"
+    assert labels_and_counts(again) == [("patient", 12), ("nurse", 4)]
+    assert again.report["notes"][0] == "counts edited: nurse 2 -> 4"
     assert [e["note"] for e in again.report["count_edits"]] == [
-        "counts edited: patients 10 -> 12", "counts edited: nurses 2 -> 4"]
+        "counts edited: patient 10 -> 12", "counts edited: nurse 2 -> 4"]
 
 
 def test_same_result_counts_and_seed_give_the_same_bundle(generated, tmp_path):
@@ -149,8 +149,8 @@ def test_same_counts_reproduce_the_original_run(generated):
 
 
 @pytest.mark.parametrize("counts, message", [
-    ({0: 0}, "group 'patients': 0 people is out of range; preset 'queuing' allows 1 to"),
-    ({1: 41}, "group 'nurses': 41 people is out of range"),
+    ({0: 0}, "group 'patient': 0 people is out of range; preset 'queuing' allows 1 to"),
+    ({1: 41}, "group 'nurse': 41 people is out of range"),
     ({2: 3}, "there is no group 2"),
     ({0: "7"}, "is not a whole number"),
     ({}, "no counts to change"),
@@ -166,7 +166,7 @@ def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(cl
                                     "tree": {"node": "GoTo", "target": "lobby"}}]})
     pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
     result = pipeline.run("two nurses walk from the restroom to the lobby", seed=0)
-    assert labels_and_counts(result) == [("nurses", 2)]
+    assert labels_and_counts(result) == [("nurse", 2)]
     before_report = copy.deepcopy(result.report)
     before = (result.scenario, dict(result.trees))
     # The restroom (3 x 2 m) holds a handful of people at a plausible density, not twenty.
@@ -176,7 +176,7 @@ def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(cl
     assert result.report == before_report
     assert (result.scenario, result.trees) == before
     # and the result still re-plans afterwards
-    assert labels_and_counts(pipeline.replan(result, {0: 3})) == [("nurses", 3)]
+    assert labels_and_counts(pipeline.replan(result, {0: 3})) == [("nurse", 3)]
 
 
 def test_a_result_without_its_draft_cannot_be_replanned(generated):
@@ -193,14 +193,16 @@ def test_another_preset_pipeline_refuses_the_result(generated, clinic, retriever
         make_pipeline(clinic, retriever, preset="normal").replan(result, {0: 5})
 
 
-def test_without_stated_counts_the_draft_groups_are_edited(clinic, retriever):
+def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retriever):
     draft = json.dumps({"groups": [{"label": "visitors", "count": 3, "spawn": "cafeteria",
                                     "tree": {"node": "GoTo", "target": "coffee_counter"}}]})
     pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
     result = pipeline.run("visitors walk to the coffee counter", seed=0)
-    assert labels_and_counts(result) == [("visitors", 3)]
+    # "visitors" with no number: the reading's vague count (a seeded choice in its documented range)
+    vague = result.inputs.reading.groups[0].count
+    assert vague.kind == "vague" and labels_and_counts(result) == [("visitor", vague.value)]
     edited = pipeline.replan(result, {0: 6})
-    assert labels_and_counts(edited) == [("visitors", 6)]
+    assert labels_and_counts(edited) == [("visitor", 6)]
     assert [a.id for a in edited.scenario.agents] == list(range(1, 7))
 
 

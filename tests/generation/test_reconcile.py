@@ -149,3 +149,11 @@ def test_the_report_says_what_was_not_honoured(hospital, grid):
     checks = {c.field: c for c in report.groups[0].checks}
     assert not checks["destination"].ok and not checks["count"].ok and not report.ok
     assert any(line.startswith("✗") for line in report.lines())
+
+
+def test_wandering_at_the_destination_is_kept_after_walking_there(hospital):
+    tree = DraftNode("Wander", {"zone": "ward_a", "duration": 120.0})
+    groups, notes = run(hospital, "Three visitors walk from the entrance lobby to ward a.",
+                        [DraftGroup("visitors", 3, "ward_a", tree)])
+    assert groups[0].tree == seq(goto("ward_a"), tree) and groups[0].spawn == "entrance_lobby"
+    assert any("walks to ward_a before" in n for n in notes)

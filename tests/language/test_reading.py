@@ -399,3 +399,28 @@ def test_verbs_the_lexicon_lacks_possessives_and_subsets(hospital, prompt, expec
 def test_it_is_the_robot_once_the_robot_was_named(hospital, phrase):
     g = one(read_prompt(f"When the robot enters the lobby, three children {phrase}.", hospital))
     assert g.robot_interaction == "approach" and g.destination is None
+
+
+def test_followed_by_a_second_group(worlds):
+    reading = read_prompt("The manager walks to the boardroom, followed by two assistants.", worlds["office"])
+    manager, assistants = reading.groups
+    assert assistants.intent == "follow" and assistants.count.value == 2
+    assert assistants.destination == manager.destination == "boardroom"
+
+
+@pytest.mark.parametrize("who,label", [("Mum", "mum"), ("Grandpa", "grandpa"), ("Her grandson", "grandson")])
+def test_a_role_without_a_number_is_one_person(worlds, who, label):
+    g = one(read_prompt(f"{who} cooks in the kitchen.", worlds["residential"]))
+    assert g.count.value == 1 and g.label == label and g.location == "kitchen"
+
+
+@pytest.mark.parametrize("verb", ["skip", "bypass"])
+def test_a_place_people_skip_is_not_on_their_way(hospital, verb):
+    g = one(read_prompt(f"Thirteen people {verb} the pharmacy and go straight to the cafeteria.", hospital))
+    assert g.via == () and g.destination == "cafeteria"
+
+
+@pytest.mark.parametrize("verb", ["gawk", "smile", "point", "wave"])
+def test_an_unknown_verb_aimed_at_the_robot_is_looking(hospital, verb):
+    g = one(read_prompt(f"A couple of kids {verb} at the robot.", hospital))
+    assert g.robot_interaction == "look" and g.count.value == 2
