@@ -165,6 +165,9 @@ def test_scenario_helpers():
     cases = load_cases(CASES)
     sample = sample_cases(cases, 20)
     assert len(sample) == 20 and len({c.world for c in sample}) == 4 and not any(c.unknown_places for c in sample)
+    assert len({c.cls for c in sample}) == 20  # one case per class until the classes run out
+    assert {"robot_look", "evacuate", "queue", "compound_2"} <= {c.cls for c in sample}
+    assert sample_cases(cases, 20) == sample and len(sample_cases(cases, 40)) == 40
 
 
 def test_scenario_checks_on_a_hand_built_bundle(tmp_path):
