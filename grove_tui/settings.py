@@ -30,6 +30,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from pydantic_settings import BaseSettings, InitSettingsSource, PydanticBaseSettingsSource, SettingsConfigDict
 
 from grove_tui.errors import SettingsError
+from grove_tui.limits import InputLimitError, compose_yaml
 from grove_tui.paths import APP
 
 MAX_CONFIG_BYTES = 1024 * 1024
@@ -170,8 +171,12 @@ def read_config_file(path: Path) -> dict[str, Any]:
     except OSError as exc:
         raise SettingsError(f"{path}: cannot read it: {exc.strerror}") from None
     try:
-        # safe_load refuses !!python/... tags: a config file must never run code.
-        data = yaml.safe_load(text)
+        # Safe semantics refuse !!python/... tags: a config file must never run code. The node graph is
+        # measured first, so a 500-byte alias bomb is refused instead of hanging validation.
+        data = compose_yaml(text)[0]
+    except InputLimitError as exc:
+        line = f" (line {exc.line})" if exc.line else ""
+        raise SettingsError(f"{path}{line}: {exc}") from None
     except yaml.YAMLError as exc:
         where = getattr(exc, "problem_mark", None)
         line = f" (line {where.line + 1})" if where is not None else ""

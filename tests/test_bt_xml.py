@@ -203,7 +203,7 @@ def test_cli_manifest_and_validate(tmp_path):
     result = runner.invoke(bt, ["validate", str(good)])
     assert result.exit_code == 0 and "good.xml: ok" in result.output
     result = runner.invoke(bt, ["validate", str(good), str(bad), str(tmp_path / "missing.xml")])
-    assert result.exit_code == 1
+    assert result.exit_code == 2  # a missing file is bad input; the others are still checked and listed
     assert f"{bad}:4: GoTo: missing required port 'target'" in result.output
     assert f"{bad}:5: Wander: port 'duration' (float): expected a number, got 'x'" in result.output
     assert "missing.xml: does not exist" in result.output
@@ -319,3 +319,14 @@ def test_2400_subtrees_calling_unknown_ids_are_reported_fast_with_bounded_sugges
     suggested = [p for p in problems if "did you mean" in p.message]
     assert 0 < len(suggested) <= MAX_SUGGESTIONS
     assert "SubTree refers to unknown BehaviorTree ID 'Tree0x' (did you mean Tree0" in problems[0].message
+
+
+def test_xinclude_is_never_processed(tmp_path):
+    secret = tmp_path / "secret.xml"
+    secret.write_text('<BehaviorTree ID="Leak"><SaySomething message="TOP-SECRET"/></BehaviorTree>')
+    text = (f'<root BTCPP_format="4" xmlns:xi="http://www.w3.org/2001/XInclude"><xi:include href="{secret}"/>'
+            '<BehaviorTree ID="Main"><Wait/></BehaviorTree></root>')
+    problems = check_tree_text(text)
+    assert [p.message for p in problems] == ["unexpected <{http://www.w3.org/2001/XInclude}include> under <root>; "
+                                             "expected <BehaviorTree>"]
+    assert "TOP-SECRET" not in str(problems)

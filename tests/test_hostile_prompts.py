@@ -18,12 +18,17 @@ from grove_tui.world import load_world
 
 
 def refuse(prompt: str, preset: str = "emergency") -> str:
+    """The checks GenerationPipeline.run makes before any model runs, in its order."""
+    from grove_tui.generation.pipeline import quantities_from_reading
+    from grove_tui.language.reading import read_prompt
+
     world = load_world("hospital")
-    quantities = extract_quantities(prompt)
     with pytest.raises(PromptError) as caught:
-        check_stated_counts(prompt, quantities)
+        check_stated_counts(prompt, extract_quantities(prompt))
+        reading = read_prompt(prompt, world)
         check_population(world, build_grid(world, 0.1), load_preset(preset),
-                         select_rois(world, load_preset(preset), prompt), quantities)
+                         select_rois(world, load_preset(preset), prompt, reading=reading),
+                         quantities_from_reading(reading))
     assert caught.value.exit_code == 2
     return str(caught.value)
 
@@ -32,6 +37,7 @@ def refuse(prompt: str, preset: str = "emergency") -> str:
     ("-5 people walk to the pharmacy", "'-5 people' is a negative number of people"),
     ("minus 3 nurses walk to the pharmacy", "is a negative number of people"),
     ("a billion people evacuate the cafeteria", "1000000000 people"),
+    ("10 million people evacuate the cafeteria", "10000000 people"),
     ("🔥🔥🔥", "no words to read"),
     ("zero people evacuate the cafeteria", "'zero people' asks for nobody"),
 ])
@@ -72,3 +78,20 @@ def test_a_device_named_as_a_world_file_is_not_called_missing():
 
     with pytest.raises(WorldError, match="is not a regular file"):
         load_world("/dev/zero")
+
+
+def test_a_config_alias_bomb_is_refused_not_expanded(tmp_path, monkeypatch):
+    import time
+
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    levels = "a: &a [x,x,x,x,x,x,x,x,x]\n" + "".join(
+        f"{chr(98 + i)}: &{chr(98 + i)} [" + ",".join(["*" + chr(97 + i)] * 9) + "]\n" for i in range(8))
+    config = tmp_path / "config.yaml"
+    config.write_text(levels + "ui:\n  theme: *i\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    started = time.perf_counter()
+    with pytest.raises(SettingsError, match="expands to more than"):
+        load_settings()
+    assert time.perf_counter() - started < 5.0  # it hung (the error message repr'd the expansion)

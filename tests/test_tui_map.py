@@ -120,3 +120,15 @@ def test_agents_outside_the_map_are_dropped(raster):
 
 def test_row_runs_split_a_row_by_style():
     assert mr.row_runs(np.array([0, 0, 1, 1, 1, 0], dtype=np.uint8)) == [(0, 2, 0), (2, 5, 1), (5, 6, 0)]
+
+
+def test_markers_on_a_zone_label_move_the_label_instead_of_cutting_it(raster):
+    base_rows = text_of(raster.base_chars)
+    label_row = next(i for i, row in enumerate(base_rows) if "hall" in row)
+    col = base_rows[label_row].index("hall")
+    # a row of spawn markers right across the label, where the issue saw "○p○○◆○○"
+    points = np.array([raster.cell_centre(label_row, c) for c in range(col - 2, col + 6)])
+    chars, _styles = raster.compose(mr.Overlay(spawns=points))
+    rows = text_of(chars)
+    assert "○" * 8 in rows[label_row], "the markers themselves must stay"
+    assert any("hall" in row for row in rows), "the label was cut by the markers"

@@ -41,8 +41,8 @@ import numpy as np
 from gymnasium import spaces
 
 from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metrics
-from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
 from grove_tui.errors import GymError
+from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
@@ -162,6 +162,7 @@ class SocialNavEnv(gymnasium.Env):
         self.scenario_index = index
         self.current = self.scenarios[index]
         robot = self._jittered(self.current.robot) if self.start_jitter > 0 else self.current.robot
+        self._release()
         self.sim = self.current.simulation(self.sim_dt, robot=robot)
         self.goal = np.asarray(robot.goal, dtype=np.float64)
         self.robot_radius = float(robot.radius)
@@ -170,6 +171,10 @@ class SocialNavEnv(gymnasium.Env):
         # Face along the planned path, as a robot set down at its start would.
         ahead = self.path[1] - self.path[0] if len(self.path) > 1 else self.goal - self.path[0]
         self.heading = math.atan2(ahead[1], ahead[0]) if np.hypot(*ahead) > 1e-9 else 0.0
+        # The simulator set the robot down facing +x; the same robot, facing the heading, so recordings
+        # and the people's view of the robot start with it (the simulator then takes the yaw from motion).
+        self.sim.crowd.set_robot(robot.start, radius=robot.radius, max_speed=robot.max_vel, path=self.path,
+                                 yaw=self.heading)
         self.time_limit = self.time_limit_setting if self.time_limit_setting is not None else \
             max(TIME_LIMIT_FLOOR, TIME_LIMIT_FACTOR * _path_length(self.path) / max(self.robot_max_speed, 1e-6)
                 + TIME_LIMIT_SLACK)
@@ -231,6 +236,16 @@ class SocialNavEnv(gymnasium.Env):
         info = self._info(terms, collision=collision)
         return self._observation(), reward, terminated, truncated, info
 
+    def close(self) -> None:
+        self._release()
+        super().close()
+
+    def _release(self) -> None:
+        """Close the finished episode's trajectory recorder (long episodes spill it to a temporary file)."""
+        if self.sim is not None and getattr(self.sim, "recorder", None) is not None:
+            self.sim.recorder.close()
+        self.sim = None
+
     # ---- parts ---------------------------------------------------------------------------------
 
     def _jittered(self, robot: Any) -> Any:
@@ -244,7 +259,7 @@ class SocialNavEnv(gymnasium.Env):
         free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
         # a free cell behind a wall (another room) is no start nearby: keep the scenario's
         if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
-                                             self.current.walls, float(robot.radius)):
+                                             self.current.walls, float(robot.radius), self.current.boxes):
             return robot
         start = (float(free[0]), float(free[1]))
         path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
@@ -274,7 +289,7 @@ class SocialNavEnv(gymnasium.Env):
             gap = float(gaps[active].min())
         if gap < COLLISION_GAP:
             return gap, "person"
-        if wall_distance(pos, self.current.walls) < self.robot_radius:
+        if wall_distance(pos, self.current.walls, self.robot_radius, self.current.boxes) < self.robot_radius:
             return gap, "obstacle"
         return gap, ""
 
@@ -318,16 +333,16 @@ class SocialNavEnv(gymnasium.Env):
         """Advance along the planned path (see the module docstring), then the subgoal and the distance
         to go: straight to the subgoal, then along the path to the goal."""
         pos = self.sim.crowd.robot_pos
-        path, walls = self.path, self.current.walls
+        path, walls, boxes = self.path, self.current.walls, self.current.boxes
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
                 math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
-                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance)):
+                or segment_clear(pos, path[self.waypoint_index + 1], walls, clearance, boxes)):
             self.waypoint_index += 1
         index = self.waypoint_index
-        if not segment_clear(pos, path[index], walls, clearance):
+        if not segment_clear(pos, path[index], walls, clearance, boxes):
             for earlier in range(index - 1, -1, -1):
-                if segment_clear(pos, path[earlier], walls, clearance):
+                if segment_clear(pos, path[earlier], walls, clearance, boxes):
                     index = earlier
                     break
         self.subgoal_index = index

@@ -78,8 +78,24 @@ def occupancy_patch(grid: OccupancyGrid, robot_xy: np.ndarray, frame: np.ndarray
     return patch
 
 
-def wall_distance(point: np.ndarray, walls: np.ndarray) -> float:
-    """Distance from a point to the nearest wall segment (inf without walls)."""
+def wall_boxes(walls: np.ndarray) -> np.ndarray:
+    """(M, 4) xmin, ymin, xmax, ymax of each wall segment: computed once per scenario, so the per-step
+    wall queries below look only at the few segments whose box is near."""
+    return np.column_stack([np.minimum(walls[:, 0], walls[:, 2]), np.minimum(walls[:, 1], walls[:, 3]),
+                            np.maximum(walls[:, 0], walls[:, 2]), np.maximum(walls[:, 1], walls[:, 3])])
+
+
+def _near(boxes: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    return (boxes[:, 2] >= lo[0]) & (boxes[:, 0] <= hi[0]) & (boxes[:, 3] >= lo[1]) & (boxes[:, 1] <= hi[1])
+
+
+def wall_distance(point: np.ndarray, walls: np.ndarray, within: float = np.inf,
+                  boxes: np.ndarray | None = None) -> float:
+    """Distance from a point to the nearest wall segment; with `within`, any distance above it may be
+    reported as inf (only segments whose box lies within that range are measured)."""
+    if walls.shape[0] and np.isfinite(within):
+        boxes = wall_boxes(walls) if boxes is None else boxes
+        walls = walls[_near(boxes, point - within, point + within)]
     if walls.shape[0] == 0:
         return float("inf")
     a = walls[:, 0:2]
@@ -99,14 +115,14 @@ def _point_segment_distances(points: np.ndarray, a: np.ndarray, b: np.ndarray) -
     return np.hypot(nearest[:, 0] - points[:, 0], nearest[:, 1] - points[:, 1])
 
 
-def segment_clear(p: np.ndarray, q: np.ndarray, walls: np.ndarray, clearance: float) -> bool:
-    """Whether a body of radius `clearance` can move straight from p to q without touching a wall."""
+def segment_clear(p: np.ndarray, q: np.ndarray, walls: np.ndarray, clearance: float,
+                  boxes: np.ndarray | None = None) -> bool:
+    """Whether a body of radius `clearance` can move straight from p to q without touching a wall
+    (`boxes`: wall_boxes(walls), when the caller keeps them)."""
     if walls.shape[0] == 0:
         return True
-    lo = np.minimum(p, q) - clearance
-    hi = np.maximum(p, q) + clearance
-    near = walls[(np.maximum(walls[:, 0], walls[:, 2]) >= lo[0]) & (np.minimum(walls[:, 0], walls[:, 2]) <= hi[0])
-                 & (np.maximum(walls[:, 1], walls[:, 3]) >= lo[1]) & (np.minimum(walls[:, 1], walls[:, 3]) <= hi[1])]
+    boxes = wall_boxes(walls) if boxes is None else boxes
+    near = walls[_near(boxes, np.minimum(p, q) - clearance, np.maximum(p, q) + clearance)]
     if near.shape[0] == 0:
         return True
     a, b = near[:, 0:2], near[:, 2:4]

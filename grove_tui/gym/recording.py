@@ -3,7 +3,9 @@
     scenario.yaml      the scenario, its robot path replaced by the path the policy drove
                        (so `grove simulate` and the app's "robot follows its path" drive it again)
     trees/, fields/, grid.npz, generation.json   as in the source bundle (hard links where possible)
-    trajectories.csv   every simulation step, robot id 0 (the existing TrajectoryRecorder writer)
+    trajectories.csv   every simulation step, robot id 0 (the existing TrajectoryRecorder writer); the
+                       robot's yaw is the simulator's, its direction of motion (a unicycle turning on
+                       the spot keeps its last one there)
     events.jsonl       queue joins and services, evacuations, goals (scenario.events.write_events)
     metrics.json       HuNavSim robot metrics and crowd metrics (analysis.bundle_metrics)
     episode.json       kinematics, control period, actions, return, outcome: enough to replay the

@@ -20,6 +20,7 @@ import numpy as np
 
 from grove_tui.bt.xml import TreeDocument, load_tree_file
 from grove_tui.errors import GroveError, GymError
+from grove_tui.gym.observation import wall_boxes
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.settings import cache_dir
@@ -40,6 +41,7 @@ class LoadedScenario:
     planner: ThetaStarPlanner
     fields: dict[str, Any]
     walls: np.ndarray  # (M, 4) the world's wall segments
+    boxes: np.ndarray  # (M, 4) their bounding boxes (observation.wall_boxes)
     patch_grid: OccupancyGrid  # uninflated, at the observation patch's resolution
     behaviors: tuple[str, ...]  # per agent, in agent id order
 
@@ -74,9 +76,10 @@ def load_scenario(bundle_dir: str | os.PathLike[str], patch_resolution: float) -
     if scenario.robot is None:
         raise GymError(f"{root}: the scenario has no robot",
                        hint="generate it with a robot (the default) to train in it")
+    walls = np.asarray(world.walls(), dtype=np.float64).reshape(-1, 4)
     return LoadedScenario(
         bundle_dir=root, scenario=scenario, documents=documents, world=world, grid=grid,
-        planner=ThetaStarPlanner(grid), fields=fields, walls=np.asarray(world.walls(), dtype=np.float64),
+        planner=ThetaStarPlanner(grid), fields=fields, walls=walls, boxes=wall_boxes(walls),
         patch_grid=build_grid(world, resolution=patch_resolution, inflation=0.0),
         behaviors=tuple(a.behavior for a in sorted(scenario.agents, key=lambda a: a.id)))
 

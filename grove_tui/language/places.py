@@ -152,6 +152,9 @@ class PlaceIndex:
         return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words
                 or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
 
+    def entry(self, name: str) -> PlaceEntry | None:
+        return next((e for e in self.entries if e.name == name), None)
+
     def zone_area(self, name: str) -> float:
         for e in self.entries:
             if e.name == name:

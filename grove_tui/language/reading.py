@@ -39,6 +39,7 @@ How a prompt is read:
 from __future__ import annotations
 
 import random
+import unicodedata
 import zlib
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field, replace
@@ -47,7 +48,7 @@ from typing import Any
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word, parse
 from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
-from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
@@ -149,6 +150,13 @@ def _has_subset(reading: PromptReading, parent: int) -> bool:
 
 # ---- reading --------------------------------------------------------------------------------
 
+def _plain(word: str) -> str:
+    """The word without accents ("café" -> "cafe"), as world names are written."""
+    if word.isascii():
+        return word
+    return unicodedata.normalize("NFKD", word).encode("ascii", "ignore").decode() or word
+
+
 def read_prompt(prompt: str, world: Any, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes, in the world's own place names (see module doc)."""
     text = " ".join((prompt or "").split())
@@ -202,7 +210,8 @@ class _Reader:
         self.prompt = prompt
         self.w = words
         # "ward b." at the end of a sentence: the small model keeps the full stop on the word
-        self.low = [t.lower.rstrip(".") if len(t.lower) > 1 and t.lower[0].isalnum() else t.lower for t in words]
+        self.low = [_plain(t.lower.rstrip(".") if len(t.lower) > 1 and t.lower[0].isalnum() else t.lower)
+                    for t in words]
         self.index = index
         self.seed = seed
         self.n = len(words)
@@ -219,7 +228,9 @@ class _Reader:
         return rng.randint(low, high)
 
     def _is_punct(self, i: int) -> bool:
-        return self.w[i].pos == "PUNCT" or self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
+        # "b." at a sentence end is tagged PUNCT by the small model, but it is a word with a full stop
+        return (self.w[i].pos == "PUNCT" and not any(ch.isalnum() for ch in self.low[i])) or \
+            self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
 
     def _lemma(self, i: int) -> str:
         return lemma(self.low[i])
@@ -234,8 +245,11 @@ class _Reader:
         out: set[int] = set()
         for i in range(self.n):
             for phrase in lx.TOGETHER_PHRASES:
-                if tuple(self.low[i:i + len(phrase)]) == phrase:
-                    out.update(range(i, i + len(phrase)))
+                end = i + len(phrase)
+                if tuple(self.low[i:end]) == phrase:
+                    if end < self.n and verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
+                        continue  # "as a family talks": the family is who the clause is about
+                    out.update(range(i, end))
         return out
 
     def _number_at(self, i: int) -> tuple[int, int] | None:
@@ -245,6 +259,8 @@ class _Reader:
         w = self.low[i].replace(",", "")
         if w.isdigit():
             value, j = int(w), i + 1
+            if j < self.n and self.low[j] in lx.SCALES:  # "10 million people": read, so it can be refused
+                value, j = value * lx.SCALES[self.low[j]], j + 1
         elif w in lx.UNITS or w in lx.TENS:
             total, current, j = 0, 0, i
             while j < self.n:
@@ -267,8 +283,11 @@ class _Reader:
             value = total + current
         elif w == "dozen":
             value, j = 12, i + 1
-        elif w in ("a", "an") and i + 1 < self.n and self.low[i + 1] in ("dozen", "hundred"):
-            value, j = (12 if self.low[i + 1] == "dozen" else 100), i + 2
+        elif w in ("a", "an") and i + 1 < self.n and (self.low[i + 1] == "dozen" or self.low[i + 1] in lx.SCALES):
+            # "a thousand", "a billion people": read as numbers, so check_population refuses them.
+            value, j = (12 if self.low[i + 1] == "dozen" else lx.SCALES[self.low[i + 1]]), i + 2
+        elif w == "half" and tuple(self.low[i + 1:i + 3]) == ("a", "dozen"):
+            value, j = 6, i + 3  # "half a dozen"
         else:
             return None
         if j < self.n and self.low[j] == "dozen" and w != "dozen":
@@ -292,6 +311,10 @@ class _Reader:
             return True
         if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
             return True  # "empty except for two cleaners"
+        if prev == "from" and p > 0 and self.low[p - 1] == "apart":
+            return True  # "apart from one guard"
+        if prev in ("are", "is") and self._only_people_before(p):
+            return True  # "the only people in the ward are two men"
         if prev in ("are", "is", "were", "was", "be") and p > 0 and self.low[p - 1] == "there":
             return True
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or self._is_punct(p - 1) or self.low[p - 1] in
@@ -333,6 +356,9 @@ class _Reader:
             if self.low[k] in lx.NP_MODIFIERS or self.w[k].pos == "ADJ":
                 k += 1
                 continue
+            if self.w[k].pos in ("NOUN", "PROPN") and k + 1 < self.n and self._is_person_noun(k + 1):
+                k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
+                continue
             if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
                     and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
                     and verb_lemma(self.low[k]) not in lx.INTENT_VERBS):
@@ -352,8 +378,11 @@ class _Reader:
         exclusive = self._exclusive_context(s)
         # Relations: "one of them", "two of the patients", "some of them"
         num = self._quantifier(j)
-        if num is not None and num[2] < self.n and low[num[2]] == "of" and num[2] + 1 < self.n:
-            k = num[2] + 1
+        # "a few of" is read with its "of" by the quantifier; "two of" leaves it
+        of_at = num[2] if num is not None and num[2] < self.n and low[num[2]] == "of" else (
+            num[2] - 1 if num is not None and low[num[2] - 1] == "of" else None)
+        if of_at is not None and of_at + 1 < self.n:
+            k = of_at + 1
             if low[k] in ("them", "those", "these", "us", "whom") or (low[k] == "the" and k + 1 < self.n and
                                                                    self._is_person_noun(k + 1)):
                 last = k if low[k] != "the" else k + 1
@@ -380,6 +409,12 @@ class _Reader:
             label = found[parent].label if parent is not None else "person"
             return _Mention(s, s + 1, self._span(s, s + 1), label, None,
                             relation=f"others_of:{parent}" if parent is not None else None, rest_of_parent=True)
+        if low[s] == "the" and s + 1 < self.n and low[s + 1] == "only":
+            return None  # "the only people in the ward are two men": the men are the group
+        if low[s] == "every" and s + 1 < self.n:
+            head = self._person_head(s + 1, counted=False)
+            if head is not None:  # "every visitor in the lounge": everyone there
+                return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True)
         # Whole zone: "everyone", "everybody", "all the people", "all patients"
         if low[s] in ("everyone", "everybody") or (low[s] == "all" and not (num and num[0] > 0 and num[1] == "all")):
             last = s
@@ -405,6 +440,11 @@ class _Reader:
         if low[s] == "another":
             head = self._person_head(s + 1, counted=False)
             parent = self._parent(found, plain=True)
+            if head is not None and self._lemma(head) in lx.IMPLIED_RANGES:
+                collective = self._collective(head, None, s)  # "another group": a group's size, not one
+                if collective is not None:
+                    collective.relation = f"more_of:{parent}" if parent is not None else None
+                    return collective
             last = head if head is not None else s
             label = self._label(head) if head is not None else (found[parent].label if parent is not None else "person")
             return _Mention(s, last, self._span(s, last), label, Count("exact", 1, 1, 1),
@@ -430,7 +470,7 @@ class _Reader:
                                 relation=f"others_of:{parent}" if parent is not None else None)
             return self._counted(s, value_part, found, exclusive)
         # Bare phrases: "visitors", "the nurses", "a nurse", "other visitors", "people"
-        k = self._skip(s, {"the", "a", "an", "other"})
+        k = self._skip(s, {"the", "a", "an", "other", "their", "his", "her", "our", "its"})
         det = low[s] if k > s else ""
         other = "other" in low[s:k]
         head = self._person_head(k, counted=False)
@@ -439,6 +479,8 @@ class _Reader:
             return None
         singular = self._lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
         label = self._label(head)
+        if det == "the" and any(m.label == label or self._lemma(head) == m.label for m in found):
+            return None  # "... one person; the person wanders around": the same people again
         noun = self._lemma(head)
         collective = self._collective(head)
         if collective is not None:
@@ -454,15 +496,24 @@ class _Reader:
         return _Mention(s, head, self._span(s, head), label,
                         Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
 
+    def _only_people_before(self, p: int) -> bool:
+        sentence = self.w[p].sentence
+        return any(self.low[k] == "only" and k + 1 < self.n and self.low[k + 1] in ("people", "person", "ones", "one")
+                   for k in range(p) if self.w[k].sentence == sentence)
+
     def _exclusive_context(self, s: int) -> bool:
-        """Whether the phrase at s follows "nobody ... except" in its sentence."""
+        """Whether the phrase at s is the exception to "nobody" in its sentence ("nobody ... except one
+        guard", "apart from two pilots, nobody is ...", "the only people in X are two men")."""
         sentence = self.w[s].sentence
-        before = [k for k in range(s) if self.w[k].sentence == sentence]
+        words_ = [k for k in range(self.n) if self.w[k].sentence == sentence]
         saw_nobody = any(self.low[k] in lx.NOBODY_WORDS or (self.low[k] == "no" and k + 1 < self.n and
                                                            self.low[k + 1] in ("one", "people", "person", "body"))
-                         or self.low[k] in ("empty", "deserted") for k in before)
-        near = [self.low[k] for k in before[-2:]]
-        return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"])
+                         or self.low[k] in ("empty", "deserted") for k in words_)
+        near = [self.low[k] for k in words_ if k < s][-2:]
+        if near[-1:] in (["are"], ["is"]) and self._only_people_before(s - 1):
+            return True
+        return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"]
+                               or near == ["apart", "from"])
 
     def _parent(self, found: list[_Mention], *, plain: bool = False) -> int | None:
         """The group a relation refers to: the last one that is not itself a subset ("one of them"),
@@ -510,6 +561,8 @@ class _Reader:
         num = self._number_at(k)
         if num is not None:
             value, after = num
+            if tuple(low[after:after + 2]) == ("or", "so"):
+                return (value, "approximate", after + 2, None)  # "fifteen or so women"
             if after + 1 < self.n and low[after] in ("to", "-", "or") and self._number_at(after + 1):
                 b = self._number_at(after + 1)
                 if b[0] > value:
@@ -585,6 +638,11 @@ class _Reader:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self._label(member)
+        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
+            # "a crowd of visitors": the collective only says how many, vaguely
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            return _Mention(s, last, self._span(s, last), label,
+                            Count("vague", self._choose(low_, high_, f"{head}:{noun}"), low_, high_), together=together)
         if size is None:
             low_, high_ = lx.IMPLIED_RANGES[noun]
             party = self._choose(low_, high_, f"{head}:{noun}")
@@ -639,12 +697,16 @@ class _Reader:
                                  ("no group of people found in the prompt",))
         # Each group owns its words up to the next mention; a sentence's words before its first
         # mention are its preamble, read for every group of that sentence.
+        # A fronted phrase between two groups belongs to the one after it ("..., and from the office,
+        # eight people walk ...", "...; for 90 seconds, two residents wait ...").
+        starts = [mentions[0].first] + [self._fronted_start(mentions[k - 1].last, mentions[k].first)
+                                        for k in range(1, len(mentions))]
         spans: list[tuple[int, int]] = []
         for k, m in enumerate(mentions):
-            end = mentions[k + 1].first if k + 1 < len(mentions) else self.n
+            end = starts[k + 1] if k + 1 < len(mentions) else self.n
             sentence_end = next((i for i in range(m.last + 1, end) if self.w[i].sentence != self.w[m.first].sentence),
                                 end)
-            spans.append((m.first, sentence_end))
+            spans.append((starts[k], sentence_end))
         claimed = {i for a, b in spans for i in range(a, b)}
         preamble_of: dict[int, list[int]] = {}
         for i in range(self.n):
@@ -668,8 +730,10 @@ class _Reader:
                          for i in range(self.n))
         # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
         for k in range(len(clauses) - 2, -1, -1):
-            if not clauses[k].has_action and clauses[k + 1].has_action and \
-                    self.w[mentions[k].first].sentence == self.w[mentions[k + 1].first].sentence:
+            between = range(mentions[k].last + 1, mentions[k + 1].first)
+            if not clauses[k].has_action and clauses[k + 1].has_action and mentions[k + 1].relation is None and \
+                    self.w[mentions[k].first].sentence == self.w[mentions[k + 1].first].sentence and \
+                    not any(self.low[x] in (";", ".", ":") for x in between):
                 own = clauses[k]
                 shared = replace(clauses[k + 1], places=own.places + clauses[k + 1].places)
                 clauses[k] = shared
@@ -679,6 +743,29 @@ class _Reader:
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
+    def _hyphen_inside(self, j: int) -> bool:
+        """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
+        return self.low[j] == "-" and 0 < j < self.n - 1 and self.low[j - 1][-1:].isalnum() and \
+            self.low[j + 1][:1].isalnum() and self.w[j].start == self.w[j - 1].end
+
+    def _fronted_start(self, previous_last: int, first: int) -> int:
+        """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
+        no verb, opened by a preposition and closed by a comma; else the mention itself."""
+        b = first - 1
+        if b <= previous_last or self.low[b] != ",":
+            return first
+        j = b - 1
+        while j > previous_last and (not self._is_punct(j) or self._hyphen_inside(j)) \
+                and self.low[j] not in lx.CLAUSE_STARTERS:
+            j -= 1
+        fronted = range(j + 1, b)
+        if not fronted or self.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
+            return first
+        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS
+               and not self.index.knows(lemma(self.low[x])) for x in fronted):
+            return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)
+        return j + 1
+
     def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False) -> _Clause:
         c = _Clause()
         low = self.low
@@ -686,16 +773,24 @@ class _Reader:
         ownset = set(own)
         used: set[int] = set()
         # Robot interaction: phrases, then verbs, then feelings, when the robot is in the clause.
-        robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS]
+        # "it" is the robot after the robot was named in the sentence ("when the robot enters, they run up to it")
+        robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS or (
+            low[i] == "it" and any(low[k] in lx.ROBOT_WORDS and self.w[k].sentence == self.w[i].sentence
+                                   for k in range(i)))]
         if robot_at:
             r = robot_at[0]
-            for i in own:
-                if i >= r:
+            for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
+                if tuple(low[r + 1:r + 1 + len(phrase)]) == phrase:
+                    c.robot = interaction
+            # The verb closest before the robot governs it ("stop and stare at the robot": look).
+            for i in sorted((x for x in own if x < r), reverse=True):
+                if c.robot is not None:
                     break
                 for phrase, interaction in lx.ROBOT_PHRASES.items():
                     lemmas = tuple(verb_lemma(x) for x in low[i:i + len(phrase)])
                     if lemmas == phrase and all(x in ownset for x in range(i, i + len(phrase))):
-                        c.robot = c.robot or interaction
+                        c.robot = interaction
+                        break
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
@@ -736,6 +831,23 @@ class _Reader:
                     used.update(range(i, end))
                     i_pos = self._advance(own, end)
                     continue
+            negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(low[i:i + len(p)]) == p), None)
+            if negated is not None:
+                # "go to the imaging instead of the waiting room": a place nobody goes to
+                k = i + len(negated)
+                place = self._place_phrase(k, "at", i, record_unknown=False)
+                end = place.end if place is not None else self._phrase_end(k)
+                used.update(range(i, end))
+                i_pos = self._advance(own, end)
+                continue
+            if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
+                place = self._place_phrase(i + 2, "obj:start", i)
+                c.evacuate = c.evacuate or w != "clearing"
+                if place is not None:
+                    c.places.append(place)
+                    used.update(range(i, place.end))
+                    i_pos = self._advance(own, place.end)
+                    continue
             if w == "to" and (nxt == "" or self._verb_follows(i + 1)) and not self._names_place(i + 1):
                 end = self._phrase_end(i + 2, allow_objects=True)
                 c.purpose = c.purpose or self.prompt[self.w[i].start:self.w[max(end - 1, i + 1)].end]
@@ -755,6 +867,8 @@ class _Reader:
                 if place is not None:
                     c.places.append(place)
                     used.update(range(i, place.end))
+                    i_pos = self._advance(own, place.end)  # "check in counter a": its "in" is not a new phrase
+                    continue
                 i_pos += 1
                 continue
             v = self._verb(i)
@@ -767,6 +881,9 @@ class _Reader:
                     if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                         c.places.append(place)
             i_pos += 1
+        if scene and any(low[i] in lx.ROBOT_WORDS for i in own):
+            c.places = [p for p in c.places if p.index < min(i for i in own if low[i] in lx.ROBOT_WORDS)]
+            # "When the robot enters the lobby, ...": the robot's places, not the people's
         if scene and own:
             # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
             # the sentence's people are.
@@ -792,6 +909,8 @@ class _Reader:
                                                                                      "way", "to")):
                         continue
                     candidates.append((i, lx.INTENT_VERBS[v], v))
+        if any(self.w[i].pos == "VERB" and self.w[i].lemma not in ("be", "have") and i not in used for i in own):
+            c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
         if candidates:
             c.has_action = True
             c.moves = any(kind in ("walk", "evacuate") for _, kind, _ in candidates)
@@ -801,9 +920,14 @@ class _Reader:
             c.evacuate = True
         # Follow someone: the person after a follow verb.
         if c.intent == "follow" and c.verb_index is not None:
-            k = self._skip(c.verb_index + 1, lx.DETERMINERS)
-            if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide")):
+            k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
+            k1 = self._skip(k0, {"behind", "after"})
+            k = self._skip(k1, lx.DETERMINERS)
+            if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide",
+                                                                     "us", "everyone")):
                 c.follows = self._span(c.verb_index + 1, k)
+            elif k1 > k0 or k0 >= self.n or self._is_punct(k0) or low[k0] in lx.CLAUSE_STARTERS:
+                c.follows = "the group before"  # "a porter follows close behind"
             else:
                 c.intent = "walk"  # "follow the signs to the exit": walking, nobody is followed
         # Pace and togetherness
@@ -860,7 +984,7 @@ class _Reader:
         """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
         words = [self.low[j] for j in range(k, min(k + 4, self.n)) if not self._is_punct(j)]
         for n in range(len(words), 0, -1):
-            match = self.index.match([lemma(w) for w in words[:n]])
+            match = self.index.match(phrase_lemmas(words[:n]))
             if match is not None and match.exact:
                 return True
         return False
@@ -894,6 +1018,10 @@ class _Reader:
             return None
         if low[k] == "half" and k + 2 < self.n and low[k + 1] in ("a", "an") and lemma(low[k + 2]) in lx.DURATION_UNITS:
             return lx.DURATION_UNITS[lemma(low[k + 2])] / 2, k + 3
+        j = k + 1 if low[k] in ("a", "one") else k
+        if (j + 3 < self.n and low[j] == "quarter" and low[j + 1] == "of" and low[j + 2] in ("a", "an")
+                and lemma(low[j + 3]) in lx.DURATION_UNITS):
+            return lx.DURATION_UNITS[lemma(low[j + 3])] / 4, j + 4  # "a quarter of an hour"
         q = self._quantifier(k)
         if q is not None:
             value, kind, after, high = q
@@ -938,16 +1066,26 @@ class _Reader:
                 not self.index.knows(lemma(low[j])):
             return None  # "in line", "at once", "on time": no determiner and no place word
         phrase: list[str] = []
-        while j < self.n and len(phrase) < 5:
+        joined = False  # the word follows a hyphen inside the phrase ("check-in")
+        while j < self.n and len(phrase) < 6:
             w = low[j]
-            if self._is_punct(j) or w in lx.CLAUSE_STARTERS or w in ("who", "which", "that", "where", "for", "of",
-                                                                     "with", "then", "to"):
+            if w == "-" and phrase and j + 1 < self.n and low[j + 1][:1].isalnum():
+                joined = True
+                j += 1
+                continue
+            if phrase and not joined and self._extends_name(phrase, j):
+                phrase.append(w)  # "check in counter a": a preposition inside a name the world has
+                j += 1
+                continue
+            if self._is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
+                    w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
             if w in ("'s", "’s"):
                 j += 1
                 continue
-            if w in lx.PLACE_PREPOSITIONS and not (phrase and self.index.knows(lemma(w))):
+            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and self.index.knows(lemma(w))):
                 break
+            after_hyphen, joined = joined, False
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
@@ -959,13 +1097,16 @@ class _Reader:
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1
                 continue
-            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)):
+            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)) \
+                    and not after_hyphen:
                 break
             phrase.append(w)
             j += 1
+            if self.w[j - 1].text.endswith(".") and len(self.w[j - 1].text) > 1:
+                break  # "room b." at a sentence end: the full stop closes the phrase
         if not phrase:
             return None
-        lemmas = tuple(lemma(w) for w in phrase)
+        lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
         if any(w in lx.ROBOT_WORDS for w in phrase):
             return None
         if self._is_person_phrase(lemmas):
@@ -976,6 +1117,23 @@ class _Reader:
         if match is None:
             return None
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
+        """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
+        if self.low[j] not in ("in", "of", "and", "on", "up", "out"):
+            return False  # "to", "from", "through" ... always mark a new place: never inside a name
+        here = self.index.match(phrase_lemmas(list(phrase)))
+        for end in range(j + 2, min(j + 4, self.n) + 1):
+            extended = phrase_lemmas(list(phrase) + self.low[j:end])
+            longer = self.index.match(extended)
+            if longer is None or not longer.exact or (here is not None and here.exact and longer.name == here.name):
+                continue
+            # every word of the longer phrase must be the one place's: "check in counter a", not
+            # "ward c to the nurses" (two places either side of a preposition)
+            entry = self.index.entry(longer.name)
+            if entry is not None and all(t in entry.tokens for t in extended):
+                return True
+        return False
 
     def _is_person_phrase(self, lemmas: Sequence[str]) -> bool:
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
@@ -1031,13 +1189,15 @@ class _Reader:
             if not c.moves:
                 destination = None
         kind, _, parent_index = (m.relation or "").partition(":")
-        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier) and \
-                start is None and destination is None and location is None:
-            # "one of them stares at the robot": a member of a group keeps its route unless told otherwise
+        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier):
             parent = earlier[int(parent_index)]
-            start, destination = parent.start, parent.destination
-            location = parent.location if stationary else None
-            via = list(parent.via)
+            if start is None and destination is None and location is None:
+                # "one of them stares at the robot": a member of a group keeps its route unless told otherwise
+                start, destination = parent.start, parent.destination
+                location = parent.location if stationary else None
+                via = list(parent.via)
+            elif start is None and not stationary:
+                start = parent.start or parent.location  # "a few of them leave": from where the group is
         count = m.count
         if m.whole_zone:
             zone = start or location or destination

@@ -33,7 +33,7 @@ _IRREGULAR_VERBS = {
 _KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
 _KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
     "look keep stay step back shy steer move get stand line form hang catch have sit mill take lead see "
-    "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help "
+    "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help tag "
     "clean guard patrol deliver carry push wheel bring drive fill sign book".split())
 
 
@@ -107,4 +107,10 @@ def semantic_tokens(text: str) -> list[str]:
 def name_tokens(text: str) -> list[str]:
     """The lemmatised words of a world name or alias ("doctor's office" -> doctor, office)."""
     text = re.sub(r"'s\b", "", text.replace("_", " "))
-    return [lemma(w) for w in words(text) if w not in STOPWORDS]
+    return phrase_lemmas(words(text))
+
+
+def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
+    """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
+    letter after the first word, which tells places apart ("ward a", "check-in counter b")."""
+    return [lemma(w) for k, w in enumerate(ws) if w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha())]

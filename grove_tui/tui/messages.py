@@ -125,3 +125,12 @@ class MetricsComputed(Message):
     t: float
     values: dict[str, float]
     error: str = ""
+
+
+@dataclass
+class ExportProgress(Message):
+    """The exporter `kind` (number `index` of `total`) starts."""
+
+    kind: str
+    index: int
+    total: int

@@ -9,7 +9,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical, VerticalScroll
 from textual.screen import ModalScreen
-from textual.widgets import Button, Static
+from textual.widgets import Button, ProgressBar, Static
 
 NOTE_CHARS = 160
 
@@ -52,3 +52,32 @@ class ExportResultScreen(ModalScreen[None]):
 
     def on_button_pressed(self) -> None:
         self.dismiss()
+
+
+class ExportProgressScreen(ModalScreen[None]):
+    """Shown while exporting: which format is being written, n of N. The caller dismisses it when done."""
+
+    HELP = """\
+## Exporting
+
+The formats are written one after another into a new folder of the export directory; the bar
+moves as each starts. The simulation is paused meanwhile and resumes when the export is done.
+"""
+
+    BINDINGS = [Binding("f1", "app.help", "Help", id="export_progress.help", tooltip="Help for this dialog")]
+
+    def __init__(self, what: str) -> None:
+        super().__init__()
+        self.what = what
+        self.kind = ""
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="export-progress-dialog"):
+            yield Static(f"Exporting {self.what}…", id="export-progress-title", markup=False)
+            yield ProgressBar(total=None, show_eta=False, id="export-progress-bar")
+            yield Static("starting", id="export-progress-step", markup=False)
+
+    def advance(self, kind: str, index: int, total: int) -> None:
+        self.kind = kind
+        self.query_one("#export-progress-bar", ProgressBar).update(total=total, progress=index)
+        self.query_one("#export-progress-step", Static).update(f"{index + 1}/{total} · {kind}")

@@ -21,6 +21,7 @@ from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
 from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summary
 from grove_tui.tui.widgets.map_raster import Overlay
+from grove_tui.tui.widgets.map_legend import FIELD, INSPECT_SYMBOLS, ROBOT_PATH, MapLegend
 from grove_tui.tui.widgets.map_view import MapView
 
 if TYPE_CHECKING:
@@ -80,6 +81,15 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
                 return replace(overlay, highlight_points=point)
     path = np.array([agent.start, *agent.goals], dtype=np.float64)
     return replace(overlay, highlight_path=path, highlight_points=path[:1])
+
+
+def busiest_goal(scenario: Any) -> tuple[float, float] | None:
+    """The final goal most agents share (a queue's counter, an exit), to the nearest half metre."""
+    goals = [tuple(np.round(np.asarray(a.goals[-1], dtype=np.float64) * 2) / 2) for a in scenario.agents if a.goals]
+    if not goals:
+        return None
+    x, y = max(set(goals), key=goals.count)
+    return float(x), float(y)
 
 
 def parse_points(text: str) -> np.ndarray:
@@ -143,7 +153,9 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                 tree = BTTree("Scenario", id="bt-tree")
                 tree.border_title = f"Trees · {len(scenario.agents)} agents"
                 yield tree
-                xml = TextArea("", id="xml", read_only=True, show_line_numbers=False, soft_wrap=False)
+                # Soft wrap: at 80 columns a node's ports run far past the panel, and a read-only view has
+                # no reason to make the user scroll sideways to read them.
+                xml = TextArea("", id="xml", read_only=True, show_line_numbers=False, soft_wrap=True)
                 xml.border_title = "XML"
                 xml.display = False
                 yield xml
@@ -151,10 +163,13 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                 grounding.display = False
                 yield grounding
                 yield Static("", id="node-detail", markup=False)
-            world_map = MapView(id="inspect-map")
-            world_map.border_title = f"{scenario.world} · {scenario.preset}"
-            world_map.border_subtitle = self.generated.prompt[:70]
-            yield world_map
+            with Vertical(id="inspect-map-column"):
+                world_map = MapView(id="inspect-map")
+                world_map.border_title = f"{scenario.world} · {scenario.preset}"
+                world_map.border_subtitle = self.generated.prompt[:70]
+                world_map.zoom_target = self._zoom_target
+                yield world_map
+                yield MapLegend("", id="inspect-legend")
         yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
@@ -169,6 +184,12 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         world_map = self.query_one("#inspect-map", MapView)
         world_map.set_overlay(self._overlay)
         world_map.border_subtitle = self.generated.prompt[:70]
+        symbols = list(INSPECT_SYMBOLS)
+        if len(self._overlay.robot_path):
+            symbols.append(ROBOT_PATH)
+        if self._overlay.fields:
+            symbols.append(FIELD)
+        self.query_one("#inspect-legend", MapLegend).show_symbols(world_map, symbols)
         tree = self.query_one("#bt-tree", BTTree)
         tree.border_title = f"Trees · {len(self.generated.scenario.agents)} agents"
         # The verdict shows on the trees' border, so a ✗ is seen without opening the report.
@@ -180,6 +201,13 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         if tree.agent_nodes:
             # Start on the first agent so its route is highlighted straight away.
             self.call_after_refresh(self._select_first_agent)
+
+    def _zoom_target(self) -> tuple[float, float] | None:
+        """Zoom centres on the selection's point on the map, else on where most people are going."""
+        shown = highlight_for(self.generated, self._selected_node, self._overlay)
+        if len(shown.highlight_points):
+            return float(shown.highlight_points[0][0]), float(shown.highlight_points[0][1])
+        return busiest_goal(self.generated.scenario)
 
     def _select_first_agent(self) -> None:
         tree = self.query_one("#bt-tree", BTTree)
@@ -356,24 +384,44 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
             self.action_export()
 
     def action_export(self) -> None:
-        self.notify("Exporting…", title="Export", timeout=2)
+        from grove_tui.tui.screens.export import ExportProgressScreen
+
+        self._export_progress = ExportProgressScreen("the scenario")
+        self.app.push_screen(self._export_progress)
         self.run_export()
 
     @work(thread=True, exclusive=True, group="export", exit_on_error=False, description="exporting")
     def run_export(self) -> None:
         root = self.grove.export_root
+
+        def progress(kind: str, index: int, total: int) -> None:
+            self.post_message(msg.ExportProgress(kind, index, total))
+
         try:
-            files = self.grove.backend.export(self.generated, None, root)
+            files = self.grove.backend.export(self.generated, None, root, on_progress=progress)
         except Exception as exc:
             self.post_message(msg.ExportFailed(describe_error(exc).text))
             return
         self.post_message(msg.ExportFinished(files, files[0].path.parent if files else root))
 
+    def on_export_progress(self, message: msg.ExportProgress) -> None:
+        dialog = getattr(self, "_export_progress", None)
+        if dialog is not None and dialog.is_mounted:
+            dialog.advance(message.kind, message.index, message.total)
+
+    def _close_export_progress(self) -> None:
+        dialog = getattr(self, "_export_progress", None)
+        self._export_progress = None
+        if dialog is not None and self.app.screen is dialog:
+            self.app.pop_screen()
+
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
 
         self.unsaved = False
+        self._close_export_progress()
         self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
 
     def on_export_failed(self, message: msg.ExportFailed) -> None:
+        self._close_export_progress()
         self.notify(message.error, title="Export failed", severity="error", timeout=15)

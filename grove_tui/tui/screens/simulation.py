@@ -19,9 +19,11 @@ from textual.worker import get_current_worker
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
-from grove_tui.tui.screens.inspect import base_overlay
+from grove_tui.tui.screens.inspect import base_overlay, busiest_goal
 from grove_tui.tui.screens.sim_controller import MAX_SPEED, SPEEDS, Snapshot, SimulationController
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
+from grove_tui.tui.widgets import map_styles as ms
+from grove_tui.tui.widgets.map_legend import MapLegend
 from grove_tui.tui.widgets.map_raster import rasterise_agents
 from grove_tui.tui.widgets.map_view import MapView
 
@@ -138,6 +140,9 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_table = self._build_colours()
         self._last_snapshot: Snapshot | None = None
         self._switch_interval = sys.getswitchinterval()
+        self.exporting = False
+        self._resume_after_export = False
+        self._export_progress: Any = None
         self.metrics: dict[str, float] = {}
         self.metrics_step = -1  # the simulation step the shown metrics were computed at
         self._metrics_busy = False
@@ -149,9 +154,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
     def compose(self) -> ComposeResult:
         scenario = self.generated.scenario
         with Horizontal(id="sim-body"):
-            world_map = SimMapView(id="sim-map")
-            world_map.border_title = f"{scenario.world} · {len(scenario.agents)} agents"
-            yield world_map
+            with Vertical(id="sim-map-column"):
+                world_map = SimMapView(id="sim-map")
+                world_map.border_title = f"{scenario.world} · {len(scenario.agents)} agents"
+                world_map.zoom_target = self._zoom_target
+                yield world_map
+                yield MapLegend("", id="sim-legend")
             with Vertical(id="sim-side"):
                 status = Static("loading simulation…", id="sim-status")
                 status.border_title = "Simulation"
@@ -174,6 +182,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         overlay = base_overlay(self.generated)
         world_map.set_overlay(replace(overlay, spawns=overlay.spawns[:0], waypoints=overlay.waypoints[:0]))
         world_map.focus()
+        self._show_legend()
         # The sim thread runs Python (behavior trees) between numba kernels; a shorter GIL switch
         # interval hands the UI thread the GIL sooner, so frames keep their pace under load.
         self._switch_interval = sys.getswitchinterval()
@@ -220,6 +229,13 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         sys.setswitchinterval(self._switch_interval)
 
     # drawing (UI thread, set_interval) --------------------------------------------------------------
+    def _colour_names(self) -> list[str]:
+        """What each colour index means in the current mode (the legend lists them in this order)."""
+        agents = self.generated.scenario.agents
+        if self._colour_mode == "behavior":
+            return [*BEHAVIORS, "other"]
+        return [label or f"group {group}" for group, label in sorted({(a.group, a.label) for a in agents})]
+
     def _build_colours(self) -> dict[int, int]:
         agents = self.generated.scenario.agents
         if self._colour_mode == "behavior":
@@ -227,6 +243,28 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         groups = sorted({(a.group, a.label) for a in agents})
         index = {key: i for i, key in enumerate(groups)}
         return {a.id: index[(a.group, a.label)] for a in agents}
+
+    def _show_legend(self) -> None:
+        names = self._colour_names()
+        if self._colour_mode == "behavior":
+            # Only the behaviors this scenario has: eight names do not fit one line at 80 columns.
+            present = {self._colour_table[a.id] for a in self.generated.scenario.agents}
+            names = [name if i in present else "" for i, name in enumerate(names)]
+        symbols = [("⣿", ms.SELECTED, "selected"), ("◎", ms.GOAL, "goal")]
+        if self.generated.scenario.robot is not None:
+            symbols.append(("↑", ms.ROBOT, "robot"))
+        self.query_one("#sim-legend", MapLegend).show_colours(
+            self.query_one("#sim-map", SimMapView), self._colour_mode, names, symbols)
+
+    def _zoom_target(self) -> tuple[float, float] | None:
+        """Zoom centres on the selected agent where it is now, else on where most people are going."""
+        snapshot = self._last_snapshot
+        if snapshot is not None and self._selected_agent >= 0:
+            hits = np.flatnonzero(np.asarray(snapshot.frame.ids) == self._selected_agent)
+            if len(hits):
+                x, y = np.asarray(snapshot.frame.pos)[int(hits[0])]
+                return float(x), float(y)
+        return busiest_goal(self.generated.scenario)
 
     def draw_latest(self) -> None:
         controller = self.controller
@@ -260,7 +298,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
 
     def _show_status(self, snapshot: Snapshot) -> None:
         frame = snapshot.frame
-        state = "▶ playing" if snapshot.playing else "⏸ paused"
+        state = "⏸ paused for export" if self.exporting else "▶ playing" if snapshot.playing else "⏸ paused"
         robot = "manual" if snapshot.manual_robot else "path"
         lines = [
             f"{state}  speed {speed_label(snapshot.speed)}",
@@ -278,7 +316,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
     def refresh_metrics(self) -> None:
         controller = self.controller
         snapshot = None if controller is None else controller.latest
-        if snapshot is None or self._metrics_busy or snapshot.frame.step == self.metrics_step:
+        if snapshot is None or self._metrics_busy or self.exporting or snapshot.frame.step == self.metrics_step:
             return
         self._metrics_busy = True
         self.compute_metrics(controller)
@@ -379,30 +417,67 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_mode = "behavior" if self._colour_mode == "group" else "group"
         self._colour_table = self._build_colours()
         self._shown_serial = -1
+        self._show_legend()
         self.notify(f"colour by {self._colour_mode}", timeout=1)
 
     def action_back(self) -> None:
         self.app.pop_screen()
 
     def action_export(self) -> None:
-        if self.controller is None:
+        from grove_tui.tui.screens.export import ExportProgressScreen
+
+        controller = self.controller
+        if controller is None:
             self.notify("The simulation is not running yet.", title="Export", severity="warning")
+            return
+        if self.exporting:
             return
         backend = self.grove.backend
         generated = self.generated
         root = self.grove.export_root
 
+        def progress(kind: str, index: int, total: int) -> None:
+            self.post_message(msg.ExportProgress(kind, index, total))
+
         def export(simulation: Any) -> Any:
-            return backend.export(generated, simulation, root)
+            # In the simulation thread, which is paused: the run cannot change while it is written.
+            return backend.export(generated, simulation, root, on_progress=progress)
 
         def reply(result: Any) -> None:
             if isinstance(result, Exception):
-                self.post_message(msg.ExportFailed(f"{type(result).__name__}: {result}"))
+                self.post_message(msg.ExportFailed(describe_error(result).text))
             else:
                 self.post_message(msg.ExportFinished(result, result[0].path.parent if result else root))
 
-        self.notify("Exporting…", title="Export", timeout=2)
+        # Pause first, visibly: the picture stops and the status says why, instead of "playing"
+        # over a frozen map while the export holds the simulation thread.
+        self._resume_after_export = controller.playing
+        self.exporting = True
+        self._send("play", False)
+        self._export_progress = ExportProgressScreen("the run")
+        self.app.push_screen(self._export_progress)
         self._send("call", export, reply)
+        if self._last_snapshot is not None:
+            self._show_status(self._last_snapshot)
+
+    def on_export_progress(self, message: msg.ExportProgress) -> None:
+        dialog = self._export_progress
+        if dialog is not None and dialog.is_mounted:
+            dialog.advance(message.kind, message.index, message.total)
+
+    def _export_done(self) -> None:
+        """Close the progress dialog; the run resumes when the user closes what comes next."""
+        dialog, self._export_progress = self._export_progress, None
+        if dialog is not None and self.app.screen is dialog:
+            self.app.pop_screen()
+
+    def _resume(self, _result: object = None) -> None:
+        self.exporting = False
+        if self._resume_after_export:
+            self._send("play", True)
+        self._resume_after_export = False
+        if self._last_snapshot is not None:
+            self._show_status(self._last_snapshot)
 
     def on_export_finished(self, message: msg.ExportFinished) -> None:
         from grove_tui.tui.screens.export import ExportResultScreen
@@ -411,10 +486,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         for screen in self.app.screen_stack:  # the inspect screen below need not ask before leaving now
             if isinstance(screen, InspectScreen) and screen.generated is self.generated:
                 screen.unsaved = False
-
-        self.app.push_screen(ExportResultScreen(message.files, message.out_dir))
+        self._export_done()
+        self.app.push_screen(ExportResultScreen(message.files, message.out_dir), self._resume)
 
     def on_export_failed(self, message: msg.ExportFailed) -> None:
+        self._export_done()
+        self._resume()
         self.notify(message.error, title="Export failed", severity="error", timeout=15)
 
 

@@ -66,7 +66,10 @@ class MapRaster:
         self.y1 = ymax + MARGIN_M
         self.width = max(1, math.ceil((xmax - xmin + 2 * MARGIN_M) * self.dots_per_metre / 2))
         self.height = max(1, math.ceil((ymax - ymin + 2 * MARGIN_M) * self.dots_per_metre / 4))
-        self.base_chars, self.base_styles = self._draw_world()
+        # Walls, entities and doors; zone labels go on last, into the cells the overlays leave empty.
+        self._plain_chars, self._plain_styles = self._draw_world()
+        self.base_chars, self.base_styles = self._plain_chars.copy(), self._plain_styles.copy()
+        self._paint_labels(self.base_chars, self.base_styles)
 
     @staticmethod
     def fit_scale(world: Any, cols: int, rows: int) -> float:
@@ -172,20 +175,21 @@ class MapRaster:
             self._paint_dots(chars, styles, *self._segment_dots(self._polygon_segments(entity.footprint)), ENTITY)
         for door in world.doors():
             self._paint_glyphs(chars, styles, np.asarray([door.position], dtype=np.float64), "▒", DOOR)
-        for zone in world.zones:
+        return chars, styles
+
+    def _paint_labels(self, chars: np.ndarray, styles: np.ndarray) -> None:
+        """Zone names into empty cells near each zone's centre: markers move a label, never cut it."""
+        for zone in self.world.zones:
             cx, cy = _centroid_xy(zone)
             rows, cols = self.to_cells(np.array([[cx, cy]]))
             self._paint_label(chars, styles, int(rows[0]), int(cols[0]), _zone_label(zone.name, self.width), ZONE_LABEL)
-        return chars, styles
 
     def compose(self, overlay: Overlay | None) -> tuple[np.ndarray, np.ndarray]:
         """The static map with scenario overlays; what the simulation draws agents on."""
-        chars = self.base_chars.copy()
-        styles = self.base_styles.copy()
         if overlay is None:
-            return chars, styles
-        for velocity_field in overlay.fields:
-            self._paint_field(chars, styles, velocity_field)
+            return self.base_chars.copy(), self.base_styles.copy()
+        chars = self._plain_chars.copy()
+        styles = self._plain_styles.copy()
         if len(overlay.robot_path) > 1:
             path = np.asarray(overlay.robot_path, dtype=np.float64)
             self._paint_dots(chars, styles, *self._segment_dots(np.column_stack([path[:-1], path[1:]])), ROBOT_PATH)
@@ -197,6 +201,10 @@ class MapRaster:
         self._paint_glyphs(chars, styles, overlay.spawns, "○", SPAWN)
         self._paint_glyphs(chars, styles, overlay.goals, "◎", GOAL)
         self._paint_glyphs(chars, styles, overlay.highlight_points, "◆", SELECTED)
+        self._paint_labels(chars, styles)
+        # Field arrows last: they fill only the cells still empty, so paths, markers and labels stay whole.
+        for velocity_field in overlay.fields:
+            self._paint_field(chars, styles, velocity_field)
         return chars, styles
 
     def _paint_field(self, chars: np.ndarray, styles: np.ndarray, velocity_field: Any) -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from rich.segment import Segment
@@ -19,7 +20,7 @@ if TYPE_CHECKING:
 
     from grove_tui.tui.widgets import map_raster as mr
 
-_STYLE_CLASSES = {
+STYLE_CLASSES = {
     ms.FLOOR: "map--floor",
     ms.WALL: "map--wall",
     ms.ZONE_LABEL: "map--zone-label",
@@ -50,7 +51,7 @@ Walls and entity outlines are drawn with braille dots, zones are labelled, doors
 Scenario overlays: spawns `○`, goals `◎`, injected waypoints `·`, velocity-field arrows, the robot's
 path, and the selection highlighted with `◆`.
 
-- **+ / -** zoom in and out, **0** fit the whole world
+- **+ / -** zoom in and out, centred on the selection (or the queue), **0** fit the whole world
 - **arrows** or **h j k l** pan
 """
 
@@ -64,7 +65,7 @@ path, and the selection highlighted with `◆`.
         Binding("j", "scroll_down", "Pan down", show=False, id="map.pan_down"),
     ]
 
-    COMPONENT_CLASSES = set(_STYLE_CLASSES.values())
+    COMPONENT_CLASSES = set(STYLE_CLASSES.values())
 
     DEFAULT_CSS = """
     MapView { scrollbar-size: 1 1; }
@@ -103,6 +104,8 @@ path, and the selection highlighted with `◆`.
         self._palette: list[Style] | None = None
         self._agent_rows: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
         self._fit_for: tuple[int, int] | None = None
+        # The world point zoom centres on (the screen's selection or queue); None: the view's middle.
+        self.zoom_target: Callable[[], tuple[float, float] | None] | None = None
 
     # public API --------------------------------------------------------------------------------------
     @property
@@ -146,10 +149,25 @@ path, and the selection highlighted with `◆`.
         )
 
     # actions -----------------------------------------------------------------------------------------
+    def view_centre(self) -> tuple[float, float] | None:
+        """The world point at the middle of what the map shows now."""
+        if self._raster is None:
+            return None
+        row = int(self.scroll_offset.y) + self.size.height // 2
+        col = int(self.scroll_offset.x) + self.size.width // 2
+        return self._raster.cell_centre(row, col)
+
     def action_zoom(self, direction: int) -> None:
+        # Centre on what the screen is about (the selected agent, the queue), else keep the view's middle.
+        target = self.zoom_target() if self.zoom_target is not None else None
+        if target is None:
+            target = self.view_centre()
         zoom = self._zoom * (ZOOM_STEP if direction > 0 else 1 / ZOOM_STEP)
         self._zoom = min(MAX_ZOOM, max(1.0, zoom))
         self._rebuild()
+        if target is not None:
+            x, y = target
+            self.call_after_refresh(self.centre_on, x, y)
 
     def action_fit(self) -> None:
         self._zoom = 1.0
@@ -193,7 +211,7 @@ path, and the selection highlighted with `◆`.
     def _styles_palette(self) -> list[Style]:
         if self._palette is None:
             base = self.rich_style
-            self._palette = [base + self.get_component_rich_style(_STYLE_CLASSES[i]) for i in range(ms.STYLE_COUNT)]
+            self._palette = [base + self.get_component_rich_style(STYLE_CLASSES[i]) for i in range(ms.STYLE_COUNT)]
         return self._palette
 
     def _strip_for(self, chars_row: np.ndarray, styles_row: np.ndarray) -> Strip:
