@@ -352,14 +352,40 @@ def score_scenario(case: UnderstandingCase, world: Any, scenario: Any, trees: Ma
     return score
 
 
+# The order classes enter a scenario sample: what the issue's must-show depends on first.
+SAMPLE_PRIORITY = ("compound_2", "robot_look", "evacuate", "queue", "robot_approach", "purpose", "wait_duration",
+                   "robot_avoid", "subset", "others", "robot_block", "structured", "whole_zone", "exclusive",
+                   "robot_follow", "pace", "compound_3", "together", "vague_count", "negation", "converse", "wander",
+                   "evacuate_compound", "more", "follow", "walk", "via", "approximate_count", "wait")
+
+
 def sample_cases(cases: Sequence[UnderstandingCase], n: int) -> list[UnderstandingCase]:
-    """N cases spread evenly over the suite (so over worlds and classes), refusals left out: a refused
-    prompt builds no scenario."""
+    """N cases over as many classes as N allows (SAMPLE_PRIORITY order, then any other class), the
+    world rotating from class to class and round to round; refusals are left out (a refused prompt
+    builds no scenario). Deterministic: the same suite gives the same sample."""
     pool = [c for c in cases if not c.unknown_places]
     if n <= 0 or not pool:
         return []
-    step = len(pool) / min(n, len(pool))
-    return [pool[int(i * step)] for i in range(min(n, len(pool)))]
+    by_class: dict[str, dict[str, list[UnderstandingCase]]] = {}
+    for case in pool:
+        by_class.setdefault(case.cls, {}).setdefault(case.world, []).append(case)
+    order = [c for c in SAMPLE_PRIORITY if c in by_class] + sorted(set(by_class) - set(SAMPLE_PRIORITY))
+    worlds = sorted({c.world for c in pool})
+    chosen: list[UnderstandingCase] = []
+    taken: set[str] = set()
+    for round_index in range(len(pool)):
+        for class_index, cls in enumerate(order):
+            if len(chosen) >= n:
+                return chosen
+            in_worlds = by_class[cls]
+            for shift in range(len(worlds)):
+                world = worlds[(class_index + round_index + shift) % len(worlds)]
+                options = [c for c in in_worlds.get(world, []) if c.id not in taken]
+                if options:
+                    chosen.append(options[0])
+                    taken.add(options[0].id)
+                    break
+    return chosen
 
 
 def summarize_scenarios(scores: Sequence[ScenarioScore]) -> dict[str, tuple[int, int]]:
