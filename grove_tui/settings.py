@@ -187,7 +187,7 @@ def read_config_file(path: Path) -> dict[str, Any]:
     if not isinstance(data, dict):
         raise SettingsError(f"{path}: expected a mapping of sections (ui:, generation:, ...), got {type(data).__name__}")
     odd_key = _non_text_key(data)
-    if odd_key is not None:
+    if odd_key is not _NO_KEY:
         # A key such as `!!binary AAAA` or `1:` is not a setting name (and pydantic fails on it).
         raise SettingsError(f"{path}: key {odd_key!r} is not a setting name; keys are words like theme or seed")
     misplaced = [key for key in ENVIRONMENT_ONLY if key in data]
@@ -197,8 +197,11 @@ def read_config_file(path: Path) -> dict[str, Any]:
     return data
 
 
+_NO_KEY = object()  # a key can be None (`: value` in YAML), so "no such key" needs its own marker
+
+
 def _non_text_key(value: Any) -> Any:
-    """The first mapping key anywhere in `value` that is not a string, else None (found by fuzzing)."""
+    """The first mapping key anywhere in `value` that is not a string, else _NO_KEY (found by fuzzing)."""
     stack = [value]
     while stack:
         current = stack.pop()
@@ -209,7 +212,7 @@ def _non_text_key(value: Any) -> Any:
                 stack.append(item)
         elif isinstance(current, list):
             stack.extend(current)
-    return None
+    return _NO_KEY
 
 
 def _validation_message(error: ValidationError) -> str:
