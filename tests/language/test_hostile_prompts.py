@@ -95,3 +95,27 @@ def test_a_config_alias_bomb_is_refused_not_expanded(tmp_path, monkeypatch):
     with pytest.raises(SettingsError, match="expands to more than"):
         load_settings()
     assert time.perf_counter() - started < 5.0  # it hung (the error message repr'd the expansion)
+
+
+def test_a_config_key_that_is_not_text_is_a_settings_error(tmp_path, monkeypatch):
+    # Found by bench/fuzz.py: a `!!binary` key reached pydantic, which raised TypeError.
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    config = tmp_path / "config.yaml"
+    config.write_text("!!binary AAAA: dark\nui:\n  theme: dark\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    with pytest.raises(SettingsError, match="is not a setting name"):
+        load_settings()
+
+
+def test_an_empty_config_key_is_a_settings_error(tmp_path, monkeypatch):
+    # Found by bench/fuzz.py: `&anchor:` on a line of its own makes a None key.
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    config = tmp_path / "config.yaml"
+    config.write_text("ui:\n  theme: dark\ngeneration:\n&lation:\n  seconds: 60\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    with pytest.raises(SettingsError, match="key None is not a setting name"):
+        load_settings()

@@ -89,11 +89,12 @@ def big_world(columns: int, rows: int, size: float = 2.0) -> str:
 
 
 def test_20000_zones_load_in_seconds_not_minutes():
-    # All-pairs checks took over 180 s here; the spatial indexes make it ~10 s on a busy 2-core machine.
+    # All-pairs checks took over 180 s here; the spatial indexes make it about 10 s of CPU. CPU time,
+    # not wall clock: on a shared machine the wall clock says more about the neighbours than the code.
     text = big_world(100, 200)
-    started = time.perf_counter()
+    started = time.process_time()
     world, problems = parse_world(text, "big.yaml")
-    elapsed = time.perf_counter() - started
+    elapsed = time.process_time() - started
     assert problems == [] and len(world.zones) == 20_000
     assert elapsed < 60.0, f"{elapsed:.1f} s"
 
