@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import os
 import sys
 import tempfile
 import time
@@ -191,6 +192,14 @@ async def key_latency(prompt: str, presses: int, size: tuple[int, int]) -> dict:
             await until(pilot, lambda: isinstance(app.screen, SetupScreen))
             setup = app.screen
             await until(pilot, lambda: "ready to generate" in str(setup.query_one("#models").render()), 600)
+            # The same presses with nothing generating: what this machine's load alone costs.
+            idle: list[float] = []
+            for _ in range(max(4, presses // 4)):
+                for key, screen_type in (("f1", HelpScreen), ("escape", SetupScreen)):
+                    started = time.perf_counter()
+                    await pilot.press(key)
+                    await until(pilot, lambda t=screen_type: isinstance(app.screen, t))
+                    idle.append(time.perf_counter() - started)
             await pilot.press(*prompt, "enter")
             await until(pilot, lambda: isinstance(app.screen, GenerationScreen))
             generation = app.screen
@@ -215,7 +224,9 @@ async def key_latency(prompt: str, presses: int, size: tuple[int, int]) -> dict:
         ms = np.array(latencies) * 1000
         return {"key_presses": len(ms), "median_ms": round(float(np.median(ms)), 1),
                 "p90_ms": round(float(np.percentile(ms, 90)), 1), "max_ms": round(float(ms.max()), 1),
-                "terminal": f"{size[0]}x{size[1]}"}
+                "idle_median_ms": round(float(np.median(idle)) * 1000, 1),
+                "idle_p90_ms": round(float(np.percentile(idle, 90)) * 1000, 1),
+                "load_average": round(os.getloadavg()[0], 2), "terminal": f"{size[0]}x{size[1]}"}
 
 
 def main() -> int:
