@@ -1,6 +1,8 @@
 """End to end in a real terminal: tmux runs the installed `grove`, we type, and read the screen back.
 
-Launch -> type a prompt -> generate with the embedded model -> play 10 simulated seconds -> export.
+Launch -> type a prompt -> generate with the embedded model -> play 10 simulated seconds -> export
+while playing -> back to setup -> reopen the run from the recent runs -> regenerate with the next seed
+-> quit.
 Needs tmux (CI: `apt-get install -y tmux`) and the installed `grove` command (`pip install -e .`).
 """
 
@@ -106,18 +108,18 @@ def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
 
         terminal.keys("p")
         terminal.wait_for(r"paused", 300, "the simulation screen")
-        terminal.keys("f")
-        terminal.keys("Space")
+        terminal.keys("Space")  # real time: still playing when the export starts
         deadline = time.monotonic() + 300
         while simulated_time(terminal.screen()) < 10.0:
             assert time.monotonic() < deadline, "10 simulated seconds did not pass:\n" + terminal.screen()
             time.sleep(0.2)
-        terminal.keys("Space")
-        terminal.wait_for(r"⏸ paused", 10, "pause")
         played = simulated_time(terminal.screen())
         assert played >= 10.0
 
+        # export while playing: the run pauses visibly, a dialog shows the progress, then the files
         terminal.keys("e")
+        terminal.wait_for(r"Exporting the run", 30, "the export progress dialog")
+        terminal.wait_for(r"paused for export|Exported to", 30, "the paused simulation behind the dialog")
         terminal.wait_for(r"Exported to", 180, "the export dialog")
         screen = terminal.screen()
         assert "✓ bundle" in screen and "✓ trajectories" in screen
@@ -132,8 +134,27 @@ def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
         assert (bundle / "metrics.json").is_file()
 
         terminal.keys("Escape")
+        terminal.wait_for(r"▶ playing", 10, "the simulation playing again after the export")
+        terminal.keys("Escape")  # to inspect; exported, so Escape goes to setup without asking
+        terminal.wait_for(r"Trees · \d+ agents", 10, "the inspect screen")
+        terminal.keys("Escape")
+        terminal.wait_for(r"Recent", 10, "the setup screen")
+
+        # reopen the run from the recent runs, then regenerate it with the next seed
+        terminal.keys("C-o")
+        terminal.wait_for(r"seed 0 · \d+ agents", 20, "the recent runs list")
+        terminal.keys("Enter")
+        terminal.wait_for(r"Trees · \d+ agents", 60, "the reopened run in inspect")
+        terminal.keys("g")
+        terminal.wait_for(r"seed 1", 30, "the generation with seed 1")
+        terminal.wait_for(r"Trees · \d+ agents", 900, "the regenerated scenario")
+        runs = sorted((tmp_path / "data" / "runs").iterdir())
+        assert [run.name.rsplit("-", 1)[-1] for run in runs] == ["0", "1"], [run.name for run in runs]
+
+        started = time.monotonic()
         terminal.keys("C-q")
         terminal.wait_for(r"GROVE-EXITED 0", 20, "a clean exit")
+        print(f"quit took {time.monotonic() - started:.2f} s")
     finally:
         terminal.close()
 
