@@ -149,6 +149,26 @@ class BTError(BadInputError):
     hint = "`grove bt validate FILE` lists every problem; `grove bt manifest` shows the nodes and ports."
 
 
+class InputLimitError(BadInputError):
+    """An input file is unreadable, not a regular file, or beyond a size or shape limit.
+
+    `line` is the 1-based line in the file when the problem is at one place.
+    """
+
+    title = "Input too large or unreadable"
+
+    def __init__(self, message: str, line: int | None = None, *, hint: str | None = None) -> None:
+        super().__init__(message, hint=hint)
+        self.line = line
+
+
+class FieldFileError(BadInputError):
+    """A velocity field file is missing, corrupt, or beyond the size limits; the message names it."""
+
+    title = "Velocity field error"
+    hint = "Regenerate the bundle: one of its fields/*.npz files is broken."
+
+
 class OutputError(BadInputError):
     """An output path that GROVE must not or cannot write: the message names it and what to do."""
 

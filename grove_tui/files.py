@@ -16,12 +16,34 @@ import os
 import shutil
 import stat
 import tempfile
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
+from typing import Any
 
 from grove_tui.errors import OutputError
 
 OwnedTest = Callable[[Path], bool]
+# Zip entries of .npz files get this timestamp (the zip format's earliest), not the time of writing,
+# so the same arrays always give the same bytes and bundles compare byte for byte.
+NPZ_TIMESTAMP = (1980, 1, 1, 0, 0, 0)
+
+
+def npz_bytes(arrays: Mapping[str, Any]) -> bytes:
+    """A compressed .npz (what np.load reads) whose bytes depend only on the arrays, in the given order."""
+    import io
+    import zipfile
+
+    import numpy as np
+
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", compression=zipfile.ZIP_DEFLATED) as archive:
+        for name, value in arrays.items():
+            info = zipfile.ZipInfo(f"{name}.npy", date_time=NPZ_TIMESTAMP)
+            info.compress_type = zipfile.ZIP_DEFLATED
+            info.external_attr = 0o644 << 16  # fixed permissions, not the writer's umask
+            with archive.open(info, "w", force_zip64=True) as member:
+                np.lib.format.write_array(member, np.asanyarray(value), allow_pickle=False)
+    return buffer.getvalue()
 
 
 def write_text_atomic(path: str | os.PathLike[str], text: str, encoding: str = "utf-8") -> Path:

@@ -17,7 +17,7 @@ from typing import Any
 
 import yaml
 
-from grove_tui.errors import BadInputError
+from grove_tui.errors import InputLimitError
 
 # Nodes counted with aliases expanded: a 500-byte "billion laughs" file expands to billions.
 MAX_YAML_NODES = 5_000_000
@@ -30,17 +30,6 @@ YamlPath = tuple[str | int, ...]
 
 # libyaml's loader has the same safe semantics and keeps node marks, and it is ~20x faster.
 _SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-
-
-class InputLimitError(BadInputError):
-    """An input file is unreadable, not a regular file, or beyond a size or shape limit.
-
-    `line` is the 1-based line in the file when the problem is at one place.
-    """
-
-    def __init__(self, message: str, line: int | None = None) -> None:
-        super().__init__(message)
-        self.line = line
 
 
 def _describe_mode(mode: int) -> str:

@@ -31,7 +31,7 @@ from rosbags.interfaces import QosDurability  # noqa: E402
 from rosbags.rosbag2 import Reader  # noqa: E402
 
 from grove_tui.cli import main  # noqa: E402
-from grove_tui.cli.generate import simulate_bundle  # noqa: E402
+from grove_tui.services.session import GroveSession  # noqa: E402
 from grove_tui.errors import GroveError  # noqa: E402
 from grove_tui.exports import foxglove as fox  # noqa: E402
 from grove_tui.exports import rosbag  # noqa: E402
@@ -47,7 +47,7 @@ LEAVERS = (2, 5)  # people who leave the derived bundle half-way
 @pytest.fixture(scope="module")
 def simulated(tmp_path_factory) -> Path:
     bundle = build_hospital_bundle(tmp_path_factory.mktemp("ros") / "bundle")
-    simulate_bundle(bundle, 8.0)
+    GroveSession().simulate(bundle, 8.0)
     return bundle
 
 

@@ -9,7 +9,7 @@ from click.testing import CliRunner
 from helpers.handmade import build_hospital_bundle
 
 from grove_tui.cli import main
-from grove_tui.cli.generate import simulate_bundle
+from grove_tui.services.session import GroveSession
 from grove_tui.exports.trajectories import TrajectoryExportError, export_trajectories
 
 pedpy = pytest.importorskip("pedpy")
@@ -18,7 +18,7 @@ pedpy = pytest.importorskip("pedpy")
 @pytest.fixture(scope="module")
 def simulated(tmp_path_factory):
     bundle = build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-    simulate_bundle(bundle, 20.0)
+    GroveSession().simulate(bundle, 20.0)
     return bundle
 
 

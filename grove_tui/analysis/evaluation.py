@@ -71,6 +71,10 @@ def load_suite(path: str | Path) -> list[EvalCase]:
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         raise EvalError(f"{path}: no such suite file") from None
+    except UnicodeDecodeError as exc:
+        raise EvalError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise EvalError(f"{path}: cannot read it: {exc.strerror}") from None
     except yaml.YAMLError as exc:
         raise EvalError(f"{path}: not valid YAML: {exc}") from None
     if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
@@ -84,6 +88,8 @@ def load_suite(path: str | Path) -> list[EvalCase]:
         try:
             case_id = str(raw["id"])
             expect = raw.get("expect") or {}
+            if not isinstance(expect, dict):
+                raise EvalError(f"{where}: expect must be a mapping like {{targets: [...], count: N}}")
             case = EvalCase(
                 id=case_id,
                 world=str(raw["world"]),
@@ -220,8 +226,9 @@ def validity(world: Any, trees: Mapping[int, str]) -> dict[str, float]:
                 hallucinated_nodes.add(el.id)
                 continue
             for port in spec.ports:
-                if port.type == "target" and el.get(port.name) and el.get(port.name) not in known_places:
-                    hallucinated_places.add(el.get(port.name))
+                place = el.get(port.name)
+                if port.type == "target" and place and place not in known_places:
+                    hallucinated_places.add(place)
     n = len(trees)
     return {
         "valid_trees": valid / n if n else 0.0,
@@ -264,7 +271,8 @@ def plausibility(traj: Trajectories, world: Any, agents: Sequence[AgentSpec],
     crowd = crowd_metrics(traj, walls=world.walls(), final_goals={a.id: a.goals[-1] for a in agents if a.goals},
                           events=events, walkable_area=float(world.walkable().area),
                           radius=max((a.radius for a in agents), default=0.35))
-    out = {k: crowd[k] for k in ("wall_penetrations", "goal_reach_rate", "agent_overlaps") if k in crowd}
+    out: dict[str, float] = {k: crowd[k] for k in ("wall_penetrations", "goal_reach_rate", "agent_overlaps")
+                             if k in crowd}
     for key in ("queue_members", "queue_served", "queue_order_violations", "evacuation_completion",
                 "evacuation_time"):
         if key in crowd:
@@ -347,7 +355,7 @@ def _navigation_tags() -> frozenset[str]:
 def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
     """The `no-planner` baseline: straight SFM goals, as HuNavSim runs behavior trees. Injected
     waypoints are dropped, velocity fields are replaced by a straight walk to the exit, and the
-    simulation plans nothing at run time either (see simulate_for_scores)."""
+    simulation plans nothing at run time either (see simulate)."""
     nav = _navigation_tags()
 
     def edit(agent: AgentSpec, document: TreeDocument) -> None:
@@ -355,8 +363,8 @@ def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scena
             if el.id in nav and el.get("waypoints"):
                 el.set("waypoints", "")
             if el.id == "FollowVelocityField":
-                exit_point = {k: el.attributes[k] for k in ("x", "y") if k in el.attributes}
-                parent.children[index] = TreeElement("GoTo", {"target": el.get("exit", "exit"), **exit_point,
+                exit_point: dict[str, str] = {k: el.attributes[k] for k in ("x", "y") if k in el.attributes}
+                parent.children[index] = TreeElement("GoTo", {"target": el.get("exit") or "exit", **exit_point,
                                                               "waypoints": "", "agent_id": "{id}"})
 
     new_trees = _rewrite_trees(trees, scenario.agents, edit)
@@ -393,7 +401,7 @@ def decoupled(scenario: Scenario, trees: Mapping[str, str], world: Any, grid: An
     return dataclasses.replace(scenario, agents=tuple(agents), fields={}), planned
 
 
-def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
+def write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
     import shutil
 
     from grove_tui.files import atomic_directory
@@ -412,106 +420,24 @@ def _write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: M
     return target
 
 
-def simulate_for_scores(bundle: Path, scenario: Scenario, world: Any, seconds: float, runtime_planning: bool = True):
-    """Run a bundle's scenario; trajectories and events for scoring (also written into the bundle)."""
-    from grove_tui.scenario.events import write_events
-    from grove_tui.simulation.simulation import Simulation
-
-    from grove_tui.scenario.bundle import replace_run_outputs
-
-    sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
-    sim.run(seconds)
-    events = sim.events
-
-    def write_run(stage: Path) -> None:
-        sim.recorder.write_csv(stage / "trajectories.csv")
-        write_events(stage / "events.jsonl", events)
-
-    replace_run_outputs(bundle, write_run)
-    return Trajectories.from_csv(bundle / "trajectories.csv"), events
-
-
-def _read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
+def read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
     return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
 
 
-def run_suite(cases: Sequence[EvalCase], out_dir: str | Path, *, bt_model: str | None = None,
-              methods: Sequence[str] = METHODS, sim_seconds: float = 30.0, on_progress=None) -> list[CaseResult]:
-    """Generate, simulate and score every case with every method; bundles are kept under out_dir."""
-    import json
-    import time
-
-    from grove_tui.scenario.bundle import write_bundle
+def baseline_variant(method: str, world: Any, scenario: Scenario, trees: Mapping[str, str], base_bundle: Path,
+                     target: Path) -> tuple[Scenario, dict[str, str], Path]:
+    """The `no-planner` or `decoupled` rewrite of GROVE's bundle, written to `target`."""
     from grove_tui.navigation.grid import build_grid
-    from grove_tui.generation.pipeline import GenerationPipeline
     from grove_tui.navigation.theta_star import ThetaStarPlanner
-    from grove_tui.generation.presets import load_preset
-    from grove_tui.generation.retrieval import NodeRetriever
-    from grove_tui.world import load_world
-    from grove_tui.llm.local import LocalLLM
-    from grove_tui.llm.registry import resolve_models
 
-    unknown = [m for m in methods if m not in METHODS]
-    if unknown:
-        raise EvalError(f"unknown method(s) {unknown}; choose from {', '.join(METHODS)}")
-    out = Path(out_dir)
-    choice = resolve_models(None, bt_model, None)["bt"]
-    llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)
-    retriever = NodeRetriever()
-    pipelines: dict[tuple[str, str], Any] = {}
-    results: list[CaseResult] = []
-
-    def pipeline_for(world_name: str, preset_name: str):
-        key = (world_name, preset_name)
-        if key not in pipelines:
-            pipelines[key] = GenerationPipeline(load_world(world_name), load_preset(preset_name), None, llm, retriever)
-        return pipelines[key]
-
-    try:
-        for index, case in enumerate(cases, start=1):
-            world = load_world(case.world)
-            grove_dir = out / "bundles" / case.id / "grove"
-            generated: dict[str, tuple[Scenario, dict[str, str], Path]] = {}
-            for method in methods:
-                started = time.perf_counter()
-                try:
-                    if method in ("grove", "vanilla"):
-                        preset = case.preset if method == "grove" else "vanilla"
-                        result = pipeline_for(case.world, preset).run(case.prompt, seed=case.seed)
-                        target = out / "bundles" / case.id / method
-                        write_bundle(result, target)
-                        generated[method] = (result.scenario, _read_trees(target, result.scenario), target)
-                    else:
-                        if "grove" not in generated:
-                            result = pipeline_for(case.world, case.preset).run(case.prompt, seed=case.seed)
-                            write_bundle(result, grove_dir)
-                            generated["grove"] = (result.scenario, _read_trees(grove_dir, result.scenario), grove_dir)
-                        base_scenario, base_trees, base_dir = generated["grove"]
-                        if method == "no-planner":
-                            scenario, trees = without_planner(base_scenario, base_trees)
-                        else:
-                            grid = build_grid(world, base_scenario.resolution)
-                            scenario, trees = decoupled(base_scenario, base_trees, world, grid, ThetaStarPlanner(grid))
-                        target = _write_variant(base_dir, out / "bundles" / case.id / method, scenario, trees)
-                        generated[method] = (scenario, dict(trees), target)
-                    scenario, trees, bundle = generated[method]
-                    traj, events = simulate_for_scores(bundle, scenario, world, sim_seconds,
-                                                       runtime_planning=method != "no-planner")
-                    report_path = bundle / "generation.json"
-                    report = json.loads(report_path.read_text()) if report_path.exists() else {}
-                    by_id = {a.id: trees[a.tree] for a in scenario.agents}
-                    scored = score_scenario(case, method, world, scenario, by_id, traj, events,
-                                            report if method in ("grove", "vanilla") else None)
-                except GroveError as exc:
-                    scored = CaseResult(case=case, method=method, error=str(exc))
-                scored.scores["eval_seconds"] = round(time.perf_counter() - started, 3)
-                results.append(scored)
-                if on_progress is not None:
-                    on_progress(index, len(cases), scored)
-    finally:
-        llm.close()
-    write_results(results, out)
-    return results
+    if method == "no-planner":
+        variant, new_trees = without_planner(scenario, trees)
+    elif method == "decoupled":
+        grid = build_grid(world, scenario.resolution)
+        variant, new_trees = decoupled(scenario, trees, world, grid, ThetaStarPlanner(grid))
+    else:
+        raise EvalError(f"{method!r} is not a baseline rewrite of GROVE's bundle (no-planner, decoupled)")
+    return variant, dict(new_trees), write_variant(base_bundle, target, variant, new_trees)
 
 
 # --- tables --------------------------------------------------------------------------------------
@@ -544,9 +470,9 @@ def summarize(results: Sequence[CaseResult]) -> dict[tuple[str, str], dict[str, 
                     row.setdefault(key, []).append(value)
             continue
         for key in SUMMARY_KEYS:
-            value = r.scores.get(key)
-            if value is not None and not (isinstance(value, float) and math.isnan(value)):
-                row.setdefault(key, []).append(float(value))
+            score = r.scores.get(key)
+            if score is not None and not (isinstance(score, float) and math.isnan(score)):
+                row.setdefault(key, []).append(float(score))
     return {k: {m: float(np.mean(v)) for m, v in row.items()} for k, row in table.items()}
 
 

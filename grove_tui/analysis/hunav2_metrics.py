@@ -132,6 +132,7 @@ class Hunav2Accumulator:
             self._frame(traj, f)
 
     def _frame(self, traj: Trajectories, f: int) -> None:
+        assert traj.robot is not None and traj.robot_vel is not None  # add() steps only runs with a robot
         dt = 0.0 if self.previous_t is None else max(float(traj.t[f]) - self.previous_t, 0.0)
         self.previous_t = float(traj.t[f])
         robot = traj.robot[f]

@@ -328,7 +328,9 @@ class RobotAccumulator:
                               person_radius=self.radii, walls=self.walls)
         series["social_on_robot"].append(forces.social_on_robot)
         series["social_on_agents"].append(forces.social_on_agents)
-        if forces.social_work is not None:
+        # The three obstacle columns are computed together (with wall geometry) or not at all.
+        if (forces.social_work is not None and forces.obstacle_on_robot is not None
+                and forces.obstacle_on_agents is not None):
             series["social_work"].append(forces.social_work)
             series["obstacle_on_robot"].append(forces.obstacle_on_robot)
             series["obstacle_on_agents"].append(forces.obstacle_on_agents)
@@ -453,7 +455,7 @@ def _group_nearest(traj: Trajectories, valid: np.ndarray, robot_radius: float,
     else:
         membership = np.array([groups.get(int(agent_id), -1) for agent_id in traj.ids], dtype=np.int64)
     group_ids = np.unique(membership[membership >= 0])
-    if not valid.any() or group_ids.size == 0:
+    if not valid.any() or group_ids.size == 0 or traj.robot is None:
         return None
     robot = traj.robot[valid, :2]
     people = traj.people[valid]

@@ -191,7 +191,7 @@ def _align(expected: Sequence[Mapping], got: Sequence[Mapping], node_names: froz
         return best[1]
     for chosen in itertools.combinations(range(len(got)), len(expected)):
         agree = sum(ok for e, m in zip(expected, chosen) for _, ok, _ in _group_checks(e, got[m], node_names))
-        best = max(best, (agree, list(chosen)), key=lambda pair: pair[0])
+        best = max(best, (agree, list[int | None](chosen)), key=lambda pair: pair[0])
     return best[1]
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import click
 
@@ -34,10 +35,15 @@ def manifest(as_list: bool, preset: str | None) -> None:
 def validate(files: tuple[str, ...]) -> None:
     """Check behavior-tree XML files against the manifest; print every problem with its line.
 
-    Exit status 1 when any file has a problem.
+    Exit status 1 when any file has a problem, 2 when a file is missing.
     """
     from grove_tui.bt.xml import check_tree_file
+    from grove_tui.errors import BadInputError
 
+    missing = [path for path in files if not Path(path).is_file()]
+    if missing:
+        # Nothing to check is bad input (exit 2), unlike a tree with problems (exit 1).
+        raise BadInputError(f"{missing[0]}: no such tree file" + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))
     bad = 0
     for path in files:
         problems = check_tree_file(path)

@@ -29,7 +29,6 @@ def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_i
         grounding_score,
         load_suite,
         plausibility_score,
-        run_suite,
         summarize,
         write_results,
     )
@@ -47,9 +46,11 @@ def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_i
         status = f"[red]failed: {result.error}[/]" if result.error else "ok"
         err.print(f"[{index}/{total}] {result.case.id} {result.method}: {status}")
 
-    results = run_suite(cases, out_dir, bt_model=model,
-                        methods=[m.strip() for m in methods.split(",") if m.strip()],
-                        sim_seconds=seconds, on_progress=progress)
+    from grove_tui.services.session import GroveSession
+
+    with GroveSession(bt_model=model) as session:
+        results = session.evaluate(cases, out_dir, methods=[m.strip() for m in methods.split(",") if m.strip()],
+                                   sim_seconds=seconds, on_progress=progress)
     args = sys.argv[sys.argv.index("eval") + 1:] if "eval" in sys.argv else [str(suite), "--out", str(out_dir)]
     paths = write_results(results, out_dir, command="grove eval " + " ".join(shlex.quote(a) for a in args))
     table = Table(title="GROVE vs baselines (means per preset)")

@@ -10,6 +10,8 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from grove_tui.services.session import GroveSession
+
 _bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_okay=False, path_type=Path))
 
 
@@ -34,10 +36,8 @@ def export() -> None:
 def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grove_nodes: bool, simulator: str,
                          base_name: str | None) -> None:
     """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
-    from grove_tui.exports.hunav import export_hunav
-
-    result = export_hunav(bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator, base_name=base_name,
-                          overwrite=overwrite, trajectories=True)
+    result = GroveSession().export("hunav", bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator,
+                                   base_name=base_name, overwrite=overwrite, trajectories=True)
     copied = result.trajectories
     click.echo(str(result.agents_yaml))
     for path in result.trees:
@@ -57,9 +57,7 @@ def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grov
               help="Directory for trajectories.csv and trajectories.sqlite (PedPy / JuPedSim schema).")
 def export_trajectories_command(bundle: Path, out_dir: Path) -> None:
     """Trajectories as CSV and as a JuPedSim sqlite file that PedPy loads, with the walkable area."""
-    from grove_tui.exports.trajectories import export_trajectories
-
-    paths = export_trajectories(bundle, out_dir)
+    paths = GroveSession().export("trajectories", bundle, out_dir)
     for path in paths:
         click.echo(str(path))
 
@@ -127,9 +125,7 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
 @click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bag export.")
 def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: bool) -> None:
     """ROS 2 bag of a simulated bundle: hunav_msgs/Agents on /human_states, markers, /map, /plan, /tf, events."""
-    from grove_tui.exports.rosbag import export_rosbag
-
-    result = export_rosbag(bundle, out_dir, storage=storage, overwrite=overwrite)
+    result = GroveSession().export("rosbag", bundle, out_dir, storage=storage, overwrite=overwrite)
     click.echo(str(result.directory))
     for topic, count in result.counts.items():
         click.echo(f"  {topic}: {count}", err=True)
@@ -141,8 +137,6 @@ def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: 
               help="The .mcap file to write; its Foxglove layout goes beside it as <name>.layout.json.")
 def export_foxglove_command(bundle: Path, out_path: Path) -> None:
     """Foxglove MCAP of a simulated bundle (SceneUpdate, Grid, Log) and a layout that shows it in 3D."""
-    from grove_tui.exports.foxglove import export_foxglove
-
-    result = export_foxglove(bundle, out_path)
+    result = GroveSession().export("foxglove", bundle, out_path)
     click.echo(str(result.mcap))
     click.echo(str(result.layout))

@@ -1,7 +1,8 @@
 """`grove generate`, `grove batch`, `grove simulate`: the generation pipeline without the TUI.
 
 Progress goes to stderr (rich), results to stdout, so `grove generate ... > result.txt` keeps only
-what a script needs. Exit codes: 0 ok, 2 bad input, 3 generation failed, 4 model error, 130 cancelled.
+what a script needs. They build nothing themselves: a `services.session.GroveSession` does the work.
+Exit codes (README): 0 ok, 2 bad input, 3 generation failed, 4 model error, 130 cancelled.
 """
 
 from __future__ import annotations
@@ -9,16 +10,16 @@ from __future__ import annotations
 import json
 import re
 import sys
-import threading
-import time
-from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 from rich.console import Console
 
-from grove_tui.errors import EXIT_BAD_INPUT, EXIT_CANCELLED, EXIT_MODEL_ERROR, EXIT_OK, EXIT_RUNTIME_FAILURE
+from grove_tui.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUNTIME_FAILURE
+
+if TYPE_CHECKING:
+    from grove_tui.services.session import GroveSession
 
 
 def _err() -> Console:
@@ -44,30 +45,13 @@ def parse_robot_point(text: str | None) -> tuple[float, float] | str | None:
     return text.strip()
 
 
-@dataclass
-class Models:
-    """The loaded models, shared by every generation of a run."""
+def session_for(ctx: click.Context, roi_model: str | None = None, bt_model: str | None = None) -> GroveSession:
+    """The run's application session; a subcommand's model options win over the `grove` group's."""
+    from grove_tui.services.session import GroveSession
 
-    roi: Any
-    bt: Any
-
-    def close(self) -> None:
-        for llm in {id(m): m for m in (self.roi, self.bt) if m is not None}.values():
-            llm.close()
-
-
-def load_models(roi_model: str | None, bt_model: str | None, model: str | None) -> Models:
-    from grove_tui.llm.local import LocalLLM
-    from grove_tui.llm.registry import resolve_models
-
-    choices = resolve_models(roi_model, bt_model, model)
-    bt = LocalLLM(choices["bt"].path, role="bt", n_ctx=choices["bt"].n_ctx)
-    # The strategic layer matches RoIs without a model; a separate roi model is loaded only when the
-    # user names one explicitly, and then it is recorded in the scenario.
-    roi = None
-    if roi_model:
-        roi = LocalLLM(choices["roi"].path, role="roi", n_ctx=choices["roi"].n_ctx)
-    return Models(roi, bt)
+    options = _root_options(ctx)
+    return GroveSession(model=options.get("model"), roi_model=roi_model or options.get("roi_model"),
+                        bt_model=bt_model or options.get("bt_model"))
 
 
 class Progress:
@@ -105,46 +89,6 @@ class Progress:
             self._status = None
 
 
-def simulate_bundle(bundle: Path, seconds: float, cancel: threading.Event | None = None) -> dict[str, Any]:
-    """Run a bundle's scenario for `seconds`; give it trajectories.csv, events.jsonl and metrics.json.
-
-    The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
-    """
-    from grove_tui.errors import RuntimeFailure
-    from grove_tui.scenario.bundle import load_bundle, replace_run_outputs
-    from grove_tui.analysis.bundle_metrics import bundle_metrics
-    from grove_tui.scenario.events import write_events
-    from grove_tui.simulation.simulation import Simulation
-
-    scenario, _, _, _ = load_bundle(bundle)
-    sim = Simulation.from_scenario(scenario, bundle)
-    started = time.perf_counter()
-    frame = sim.run(seconds, cancel=cancel)
-    wall = time.perf_counter() - started
-    recorder = sim.recorder
-    if recorder is None:
-        raise RuntimeFailure(f"{bundle}: the simulation has no trajectory recorder")
-    reports = []
-
-    def write_run(stage: Path) -> None:
-        recorder.write_csv(stage / "trajectories.csv")
-        write_events(stage / "events.jsonl", sim.events)
-        reports.append(bundle_metrics(stage)[0])
-
-    replace_run_outputs(bundle, write_run)
-    crowd = reports[0].crowd
-    return {"sim_seconds": round(float(frame.t), 3), "wall_seconds": round(wall, 3),
-            "counters": _as_dict(frame.counters),
-            "wall_penetrations": int(crowd.get("wall_penetrations", 0)),
-            "goal_reach_rate": crowd.get("goal_reach_rate")}
-
-
-def _as_dict(obj: Any) -> dict[str, Any]:
-    from dataclasses import asdict, is_dataclass
-
-    return asdict(obj) if is_dataclass(obj) else {"value": str(obj)}
-
-
 def summary_lines(result: Any, bundle: Path) -> list[str]:
     scenario, report = result.scenario, result.report
     stages = " ".join(f"{k}={v['seconds']:.2f}s" for k, v in report["stages"].items())
@@ -167,15 +111,6 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
         lines.append("grounding: " + ("every group as asked" if grounding.ok else "NOT everything as asked"))
         lines += ["  " + line for line in grounding.lines()]
     return lines
-
-
-def _validate_inputs(world: str, preset: str, prompt: str) -> tuple[Any, Any]:
-    from grove_tui.generation.presets import PromptError, load_preset
-    from grove_tui.world import load_world
-
-    if not prompt or not prompt.strip():
-        raise PromptError("the prompt is empty: describe the people and what they do")
-    return load_world(world), load_preset(preset)
 
 
 @click.command("generate")
@@ -202,33 +137,20 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
              simulate_seconds: float | None, out_dir: str, overwrite: bool, roi_model: str | None, bt_model: str | None,
              robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
-    from grove_tui.files import check_output_dir
-    from grove_tui.scenario.bundle import WHAT, is_bundle, write_bundle
-    from grove_tui.generation.pipeline import GenerationPipeline
     from grove_tui.generation.planning import RobotRequest
-    from grove_tui.generation.retrieval import NodeRetriever
+    from grove_tui.services.session import ScenarioRequest
 
-    err = _err()
-    options = _root_options(ctx)
-    models = None
-    progress = Progress(err)
+    progress = Progress(_err())
+    robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
+    request = ScenarioRequest(world_name, preset_name, prompt, seed, robot)
     try:
-        # Before any model loads: a refused or unwritable --out must not cost a generation.
-        check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
-        world, preset = _validate_inputs(world_name, preset_name, prompt)
-        robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
-        models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
-                             options.get("model"))
-        pipeline = GenerationPipeline(world, preset, models.roi, models.bt, NodeRetriever(), robot=robot)
-        result = pipeline.run(prompt, seed=seed, on_event=progress)
-        bundle = write_bundle(result, Path(out_dir), overwrite=overwrite)
-        sim = simulate_bundle(bundle, simulate_seconds) if simulate_seconds else None
+        with session_for(ctx, roi_model, bt_model) as session:
+            generated = session.generate(request, Path(out_dir), overwrite=overwrite, on_event=progress)
+            sim = session.simulate(generated.bundle_dir, simulate_seconds).to_dict() if simulate_seconds else None
     except BaseException:
         progress.stop()  # the spinner must not overwrite the error line the grove group prints
         raise
-    finally:
-        if models is not None:
-            models.close()
+    result, bundle = generated.result, generated.bundle_dir
     if as_json:
         payload = {"bundle": str(bundle), "agents": len(result.scenario.agents), "report": {
             k: result.report[k] for k in ("stages", "total_seconds", "prompt_tokens", "completion_tokens", "zones",
@@ -262,91 +184,48 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
     ones run. A failed job is reported and the batch goes on. Exit code: 2 when any line was refused,
     else 3 when any job failed, else 0.
     """
-    from grove_tui.files import check_output_dir
-    from grove_tui.scenario.bundle import WHAT, is_bundle, write_bundle
-    from grove_tui.errors import GroveError
     from grove_tui.errors import JobFileError, describe_error
     from grove_tui.services.jobs import read_jobs
-    from grove_tui.generation.pipeline import GenerationPipeline
-    from grove_tui.generation.retrieval import NodeRetriever
 
     err, out = _err(), _out()
-    options = _root_options(ctx)
-    models = None
-    failures = 0
+    session = session_for(ctx, roi_model, bt_model)
+    jobs, problems = read_jobs(jobs_file)
+    jobs, refused = session.check_jobs(jobs, Path(out_dir), overwrite)
+    problems = sorted(problems + refused, key=lambda p: p.line)
+    if not jobs:
+        # Nothing runs: one error line naming every refused line, like any other bad input.
+        raise JobFileError(f"{jobs_file}: no job can run: " + "; ".join(map(str, problems)))
+    for problem in problems:
+        err.print(f"error: {jobs_file}:{problem.line}: {problem.message}", markup=False, highlight=False)
+    progresses: list[Progress] = []
+
+    def events_for(index: int, job: Any) -> Progress:
+        progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] "))
+        return progresses[-1]
+
+    def report(index: int, outcome: Any) -> None:
+        progresses[-1].stop()
+        if outcome.error is not None:
+            out.print(f"failed {outcome.bundle} {describe_error(outcome.error).message}", markup=False)
+            return
+        result = outcome.generated.result
+        exports = "".join(f" {kind}={path}" for kind, path in outcome.exports.items())
+        out.print(f"ok {outcome.bundle} agents={len(result.scenario.agents)} "
+                  f"prompt_tokens={result.report['prompt_tokens']} seconds={result.report['total_seconds']:.2f}"
+                  f"{exports}", markup=False)
+
     try:
-        jobs, problems = read_jobs(jobs_file)
-        jobs, refused = _check_jobs(jobs, Path(out_dir), overwrite)
-        problems = sorted(problems + refused, key=lambda p: p.line)
-        for problem in problems:
-            err.print(f"[red]error:[/] {jobs_file}:{problem.line}: {problem.message}", markup=True, highlight=False)
-        if not jobs:
-            raise JobFileError(f"{jobs_file}: no job can run")
-        models = load_models(roi_model or options.get("roi_model"), bt_model or options.get("bt_model"),
-                             options.get("model"))
-        retriever = NodeRetriever()
-        pipelines: dict[tuple[str, str], Any] = {}
-        for index, job in enumerate(jobs, start=1):
-            target = Path(out_dir) / job.name
-            progress = Progress(err, prefix=f"[{index}/{len(jobs)}] ")
-            try:
-                world, preset = _validate_inputs(job.world, job.preset, job.prompt)
-                key = (job.world, job.preset)
-                if key not in pipelines:
-                    pipelines[key] = GenerationPipeline(world, preset, models.roi, models.bt, retriever)
-                result = pipelines[key].run(job.prompt, seed=job.seed, on_event=progress)
-                check_output_dir(target, owned=is_bundle, what=WHAT, overwrite=overwrite)
-                bundle = write_bundle(result, target, overwrite=overwrite)
-                if job.simulate:
-                    simulate_bundle(bundle, job.simulate)
-                out.print(f"ok {bundle} agents={len(result.scenario.agents)} "
-                          f"prompt_tokens={result.report['prompt_tokens']} seconds={result.report['total_seconds']:.2f}",
-                          markup=False)
-            except KeyboardInterrupt:
-                raise
-            except GroveError as exc:
-                progress.stop()
-                if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
-                    raise  # the model or the user stopped the whole batch, not just this job
-                failures += 1
-                out.print(f"failed {target} {describe_error(exc).message}", markup=False)
-    finally:
-        if models is not None:
-            models.close()
+        with session:
+            outcomes = session.batch(jobs, Path(out_dir), overwrite=overwrite, events_for=events_for,
+                                     on_outcome=report)
+    except BaseException:
+        if progresses:
+            progresses[-1].stop()
+        raise
+    failures = sum(1 for outcome in outcomes if outcome.error is not None)
     total = len(jobs) + len(problems)
     err.print(f"{len(jobs) - failures}/{total} scenarios generated")
     ctx.exit(EXIT_BAD_INPUT if problems else EXIT_RUNTIME_FAILURE if failures else EXIT_OK)
-
-
-def _check_jobs(jobs: list[Any], out_dir: Path, overwrite: bool) -> tuple[list[Any], list[Any]]:
-    """Jobs whose world, preset and output folder are usable; the others as problems, before any model loads."""
-    from grove_tui.files import check_output_dir
-    from grove_tui.scenario.bundle import WHAT, is_bundle
-    from grove_tui.errors import GroveError
-    from grove_tui.services.jobs import JobProblem
-    from grove_tui.generation.presets import load_preset
-    from grove_tui.world import load_world
-
-    check_output_dir(out_dir, owned=lambda _p: True, what="batch folder", overwrite=True)
-    known: dict[tuple[str, str], str] = {}
-    good, refused = [], []
-    for job in jobs:
-        try:
-            for kind, name, loader in (("world", job.world, load_world), ("preset", job.preset, load_preset)):
-                if (kind, name) not in known:
-                    try:
-                        loader(name)
-                        known[(kind, name)] = ""
-                    except GroveError as exc:
-                        known[(kind, name)] = str(exc)
-                if known[(kind, name)]:
-                    raise GroveError(known[(kind, name)])
-            check_output_dir(out_dir / job.name, owned=is_bundle, what=WHAT, overwrite=overwrite)
-        except GroveError as exc:
-            refused.append(JobProblem(job.line, str(exc)))
-            continue
-        good.append(job)
-    return good, refused
 
 
 def _finite(value: float | None, param: click.Parameter) -> float | None:
@@ -366,7 +245,8 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
     out = _out()
-    sim = simulate_bundle(Path(bundle), seconds)
+    with session_for(ctx) as session:
+        sim = session.simulate(Path(bundle), seconds).to_dict()
     out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
               f"{Path(bundle) / 'trajectories.csv'}", markup=False)
     for key, value in sim["counters"].items():

@@ -52,6 +52,7 @@ import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
@@ -68,6 +69,10 @@ from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.scenario.bundle import load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.grid import OccupancyGrid
+    from grove_tui.navigation.theta_star import ThetaStarPlanner
 
 Point = tuple[float, float]
 
@@ -147,8 +152,8 @@ class _AgentContext:
     bundle: Path
     goals: GoalTable
     queue_rank: dict[tuple[int, str], int]
-    grid: object | None
-    planner: object | None
+    grid: OccupancyGrid | None
+    planner: ThetaStarPlanner | None
     seed: int
     exit_rank: dict[tuple[int, str], int] = field(default_factory=dict)
     world: object | None = None
@@ -395,7 +400,7 @@ def _planned(a: Point, b: Point, ctx: _AgentContext) -> list[Point]:
     if ctx.planner is None:
         return [b]
     path = ctx.planner.plan(a, b)
-    return [tuple(map(float, q)) for q in path[1:]]
+    return [(float(q[0]), float(q[1])) for q in path[1:]]
 
 
 def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement | None:

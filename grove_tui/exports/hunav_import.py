@@ -133,9 +133,11 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
     else:
         world_ref = f"{map_name}.yaml"
         world_text = _open_floor_world(map_name, points)
-        world_obj, world_problems = parse_world(world_text, world_ref)
-        if world_problems:
-            raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r}: {world_problems[0]}")
+        parsed, world_problems = parse_world(world_text, world_ref)
+        if world_problems or parsed is None:
+            problem = world_problems[0] if world_problems else "no world"
+            raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r}: {problem}")
+        world_obj = parsed
     agents = [dataclasses.replace(a, zone=getattr(world_obj.zone_at(*a.start), "name", "")) for a in agents]
     scenario = Scenario(world=world_ref, preset="normal", prompt=f"imported from HuNavSim {source.name}", seed=0,
                         models={}, agents=tuple(sorted(agents, key=lambda a: a.id)), robot=None,

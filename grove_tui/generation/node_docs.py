@@ -314,14 +314,14 @@ def template_problems(template: Template, nodes: Mapping[str, Any]) -> list[str]
     """Names or ports the template uses that the manifest does not have, and other inconsistencies."""
     problems = []
     where = template.source
-    used = set()
+    used: set[str] = set()
     for index, draft in enumerate(tree_nodes(template.tree)):
         name = draft.get("node")
-        spec = nodes.get(name)
+        spec = nodes.get(name) if isinstance(name, str) else None
         if spec is None:
             problems.append(f"{where}: tree node #{index} uses unknown node {name!r}")
             continue
-        used.add(name)
+        used.add(str(name))
         ports = {p.name: p for p in spec.ports}
         for key in draft:
             if key in ("node", "children"):

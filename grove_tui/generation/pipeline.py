@@ -96,14 +96,14 @@ class PlanInputs:
                 value = int(n) + inside  # a parent's count includes its subsets ("one of them")
                 groups[r] = replace(groups[r], count=Count("exact", value, value, value))
             reading = replace(self.reading, groups=tuple(groups))
-            return replace(self, reading=reading, quantities=quantities_from_reading(reading))
+            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)))
         if self.quantities:
             # An edited count is stated by the user now, even where the prompt only implied the group.
             quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
                                for i, q in enumerate(self.quantities))
             return replace(self, quantities=quantities)
-        groups = tuple(replace(g, count=counts[i]) if i in counts else g for i, g in enumerate(self.draft.groups))
-        return replace(self, draft=Draft(groups))
+        drafted = tuple(replace(g, count=counts[i]) if i in counts else g for i, g in enumerate(self.draft.groups))
+        return replace(self, draft=Draft(drafted))
 
 
 @dataclass
@@ -226,9 +226,10 @@ class GenerationPipeline:
         reading = read_prompt(prompt, world, seed=seed)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
-        roi_tokens = (0, 0)
+        roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
         if self.llm_roi is not None and preset.guided:
-            selection, *roi_tokens = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
+            selection, *spent = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
+            roi_tokens = tuple(spent)
         check_population(world, self.grid, preset, selection, quantities)
         clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 

@@ -92,9 +92,12 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
     if preset.velocity == "field":
+        if post.exit is None:
+            raise GenerationError("the preset follows velocity fields to an exit, but the world has no exit")
         exit_door = world.find(post.exit)
         for g in post.groups:
             _check_cancel(cancel)
+            assert g.field_id is not None  # post-processing names one field per group when fields are used
             members = [a for a in post.agents if a.group_index == g.index]
             centroid = _free_centroid(grid, [a.start for a in members], g.spawn)
             try:
@@ -109,6 +112,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
     trees: dict[str, str] = {}
     for a in post.agents:
         _check_cancel(cancel)
+        assert a.document is not None  # post-processing gives every agent its tree document
         document = a.document.copy()  # planning edits its own copy: a re-plan starts from the same trees
         if preset.velocity == "waypoints" and preset.planner.enabled:
             try:
@@ -118,7 +122,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
         goals = goals_from_tree(document)
         if a.field_id is not None and a.field_id in group_paths:
             # Field followers head along their group's path: record it as their goals.
-            goals = [tuple(map(float, p)) for p in group_paths[a.field_id][1:]]
+            goals = [(float(p[0]), float(p[1])) for p in group_paths[a.field_id][1:]]
         rel = f"trees/agent_{a.id}.xml"
         trees[rel] = write_tree(document)
         agents.append(AgentSpec(

@@ -312,9 +312,10 @@ def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any
         stray = kinds & {"Queue", "Converse", "Wander"}
         wrong = [p for p in have if not any(_reaches(world, g, {p}) for g in goals)]
         if goals and (stray or wrong):  # only missing the destination: the append rule below keeps the tree
-            together = (DraftNode("JoinGroup", {}),) if "JoinGroup" in kinds and "JoinGroup" in allowed else ()
-            steps = together + tuple(DraftNode("GoTo", {"target": g}) for g in goals)
-            replacement = steps[0] if len(steps) == 1 else DraftNode("Sequence", {}, steps)
+            joins = "JoinGroup" in kinds and "JoinGroup" in allowed
+            walk = ((DraftNode("JoinGroup", {}),) if joins else ()) + tuple(DraftNode("GoTo", {"target": g})
+                                                                             for g in goals)
+            replacement = walk[0] if len(walk) == 1 else DraftNode("Sequence", {}, walk)
     if replacement is None:
         return tree
     notes.append(f"group '{label}': {intent} as the prompt says ({', '.join(sorted(_tree_places(replacement)))}) "
@@ -545,8 +546,8 @@ class FreeSpace:
         h, w = g.occupied.shape
         rows = np.arange(max(0, min(r0, r1)), min(h, max(r0, r1) + 1))
         cols = np.arange(max(0, min(c0, c1)), min(w, max(c0, c1) + 1))
-        rr, cc = np.meshgrid(rows, cols, indexing="ij")
-        rr, cc = rr.ravel(), cc.ravel()
+        grid_rows, grid_cols = np.meshgrid(rows, cols, indexing="ij")
+        rr, cc = grid_rows.ravel(), grid_cols.ravel()
         keep = (~np.asarray(g.occupied)[rr, cc]) & (self._labels[rr, cc] == self._main)
         rr, cc = rr[keep], cc[keep]
         xs = g.origin[0] + (cc + 0.5) * g.resolution
@@ -654,7 +655,8 @@ class TargetResolver:
 
     def zone_of(self, name: str) -> str:
         obj = self.world.find(name)
-        return getattr(obj, "zone", None) if hasattr(obj, "interaction_point") or hasattr(obj, "leads_to") else obj.name
+        # Doors and entities name their zone; a zone is its own.
+        return str(getattr(obj, "zone")) if hasattr(obj, "interaction_point") or hasattr(obj, "leads_to") else obj.name
 
     def resolve(self, name: str, *, node: str, slot: int | None = None) -> Point:
         obj = self.world.find(name)

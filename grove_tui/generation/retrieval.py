@@ -33,7 +33,7 @@ import yaml
 
 from grove_tui import paths
 from grove_tui.cpu import free_cores
-from grove_tui.errors import GroveError, RetrievalError
+from grove_tui.errors import EvalError, GroveError, RetrievalError
 from grove_tui.settings import cache_dir
 from grove_tui.generation.node_docs import (
     RETRIEVAL_PRESETS,
@@ -566,8 +566,12 @@ def load_eval_set(path: str | Path | None = None) -> list[EvalCase]:
     path = Path(path) if path is not None else paths.node_db_dir() / "eval.yaml"
     try:
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, yaml.YAMLError) as exc:
-        raise RetrievalError(f"{path}: cannot read the labelled set: {exc}") from exc
+    except FileNotFoundError:
+        raise EvalError(f"{path}: no such labelled set") from None
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
+        raise EvalError(f"{path}: cannot read the labelled set: {exc}") from None
+    if data is not None and not isinstance(data, dict):
+        raise EvalError(f"{path}: expected a mapping with a `cases` list")
     cases = []
     for index, item in enumerate((data or {}).get("cases", [])):
         try:
@@ -575,9 +579,9 @@ def load_eval_set(path: str | Path | None = None) -> list[EvalCase]:
             cases.append(EvalCase(prompt=str(item["prompt"]), preset=str(item["preset"]),
                                   world=str(item.get("world", "")), needs=needs))
         except (KeyError, TypeError) as exc:
-            raise RetrievalError(f"{path}: cases[{index}] needs prompt, preset and needs: {exc}") from exc
+            raise EvalError(f"{path}: cases[{index}] needs prompt, preset and needs: {exc}") from None
     if not cases:
-        raise RetrievalError(f"{path}: no cases")
+        raise EvalError(f"{path}: no cases")
     return cases
 
 

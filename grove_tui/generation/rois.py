@@ -155,7 +155,7 @@ class RoIMatcher:
         n = len(self.entries)
         self.idf = {t: math.log(1.0 + n / c) for t, c in df.items()}
         self.vocabulary = frozenset(df)
-        self._embeddings = None
+        self._embeddings: Any = None  # (entries, dim) float32, computed at the first query
 
     @staticmethod
     def _entry(kind: str, name: str, zone: str, obj: Any, type_: str, tags: Sequence[str], aliases: Sequence[str]) -> _Entry:
@@ -201,7 +201,7 @@ class RoIMatcher:
                 i += 1
                 continue
             j, total = i, 0.0
-            while j < n and tokens[j] is not None and (wj := self._token_weight(entry, tokens[j])) > 0:
+            while j < n and (tj := tokens[j]) is not None and (wj := self._token_weight(entry, tj)) > 0:
                 total += wj
                 j += 1
             run = [t for t in tokens[i:j] if t is not None]

@@ -66,7 +66,7 @@ def render_chat(template: str | None, messages: Sequence[dict[str, str]], *, bos
 
     formatter = Jinja2ChatFormatter(template=template or PLAIN_TEMPLATE, eos_token=eos_token, bos_token=bos_token)
     try:
-        prompt = formatter(messages=list(messages), enable_thinking=False).prompt
+        prompt = formatter(messages=list(messages), enable_thinking=False).prompt  # type: ignore[arg-type]  # plain role/content dicts are llama_cpp's TypedDicts
     except Exception as error:  # a template is user data: any Jinja failure is a problem with the file
         raise ModelError(f"the model's chat template failed to render: {error}") from None
     if (architecture in ("qwen3", "qwen3moe") and template and template_supports_thinking_switch(template)

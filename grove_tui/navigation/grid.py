@@ -7,7 +7,6 @@ segments are exact, so the grid does not depend on how finely walls were rasteri
 
 from __future__ import annotations
 
-import io
 import math
 import os
 from collections import OrderedDict
@@ -18,7 +17,7 @@ import numpy as np
 import shapely
 from scipy import ndimage
 
-from grove_tui.files import write_bytes_atomic
+from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.errors import GridError
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.world import World
@@ -54,7 +53,8 @@ class OccupancyGrid:
 
     @property
     def shape(self) -> tuple[int, int]:
-        return self.occupied.shape  # type: ignore[return-value]
+        rows, cols = self.occupied.shape
+        return rows, cols
 
     @property
     def height(self) -> int:
@@ -120,12 +120,15 @@ class OccupancyGrid:
         return self._nearest
 
     def save(self, path: str | os.PathLike[str]) -> Path:
-        buffer = io.BytesIO()
-        np.savez_compressed(buffer, origin=np.asarray(self.origin, dtype=np.float64),
-                            resolution=np.float64(self.resolution), inflation=np.float64(self.inflation),
-                            occupied=np.packbits(self.occupied, axis=None), shape=np.asarray(self.occupied.shape),
-                            world_name=np.str_(self.world_name))
-        return write_bytes_atomic(path, buffer.getvalue())
+        arrays = {
+            "origin": np.asarray(self.origin, dtype=np.float64),
+            "resolution": np.float64(self.resolution),
+            "inflation": np.float64(self.inflation),
+            "occupied": np.packbits(self.occupied, axis=None),
+            "shape": np.asarray(self.occupied.shape),
+            "world_name": np.str_(self.world_name),
+        }
+        return write_bytes_atomic(path, npz_bytes(arrays))
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> OccupancyGrid:

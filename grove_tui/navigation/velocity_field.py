@@ -15,7 +15,6 @@ an occupied cell (the property tests integrate it from sampled cells of every sh
 
 from __future__ import annotations
 
-import io
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -24,8 +23,8 @@ import numba
 import numpy as np
 from scipy.spatial import cKDTree
 
-from grove_tui.errors import BadInputError
-from grove_tui.files import write_bytes_atomic
+from grove_tui.errors import FieldFileError
+from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
 from grove_tui.world.loader import MAX_COORDINATE
@@ -36,13 +35,6 @@ _DC = np.array([1, -1, 0, 0, 1, -1, 1, -1], dtype=np.int64)
 
 # A field stores 8 bytes per grid cell; the largest world grid at 0.1 m (25 million cells) needs 200 MB.
 MAX_FIELD_UNPACKED_BYTES = 256 * 1024 * 1024
-
-
-class FieldFileError(BadInputError):
-    """A velocity field file is missing, corrupt, or beyond the size limits; the message names it."""
-
-    title = "Velocity field error"
-    hint = "Regenerate the bundle: one of its fields/*.npz files is broken."
 
 
 CAPTURE_RADIUS = 3.0  # metres: beyond this distance from the path only the geodesic direction is used
@@ -69,12 +61,14 @@ class VelocityField:
         return np.any(self.vectors != 0.0, axis=2)
 
     def save(self, path) -> Path:
-        buffer = io.BytesIO()
-        np.savez_compressed(buffer, origin=np.asarray(self.origin, dtype=np.float64),
-                            resolution=np.float64(self.resolution), vectors=self.vectors.astype(np.float32),
-                            exit=np.asarray(self.exit, dtype=np.float64),
-                            path=np.asarray(self.path, dtype=np.float64).reshape(-1, 2))
-        return write_bytes_atomic(path, buffer.getvalue())
+        arrays = {
+            "origin": np.asarray(self.origin, dtype=np.float64),
+            "resolution": np.float64(self.resolution),
+            "vectors": self.vectors.astype(np.float32),
+            "exit": np.asarray(self.exit, dtype=np.float64),
+            "path": np.asarray(self.path, dtype=np.float64).reshape(-1, 2),
+        }
+        return write_bytes_atomic(path, npz_bytes(arrays))
 
     @classmethod
     def load(cls, path) -> VelocityField:
@@ -352,5 +346,5 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     _blend_with_path(occupied, planner.clearance, planner.sight_rows, planner.sight_cols, parent, exit_cx, exit_cy, samples, nearest, nearest_distance,
                      CAPTURE_RADIUS / res, max(1, int(round(LOOKAHEAD / res / spacing))),
                      WALL_FADE[0], WALL_FADE[1], vectors)
-    origin = tuple(float(v) for v in getattr(grid, "origin", (planner.centre_x - res / 2, planner.centre_y - res / 2)))
-    return VelocityField(origin=origin, resolution=res, vectors=vectors, exit=(ex, ey), path=path.copy())
+    ox, oy = getattr(grid, "origin", (planner.centre_x - res / 2, planner.centre_y - res / 2))
+    return VelocityField(origin=(float(ox), float(oy)), resolution=res, vectors=vectors, exit=(ex, ey), path=path.copy())

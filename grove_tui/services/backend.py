@@ -1,9 +1,9 @@
-"""The app's facade over the headless engine.
+"""The app's seam over the application layer (`services.session.GroveSession`).
 
-Screens call only this module, from worker threads, so the engine stays swappable: tests pass an
-`llm_factory` that returns a fake model (UI-only tests) or use the real embedded model. Heavy
-modules (the pipeline, llama.cpp, ChromaDB, torch) are imported inside the methods that need them
-so the app opens before they load.
+Screens call only this module, from worker threads. It adds what only the app needs: run folders
+named by time and prompt, and the export dialog's list of formats; everything else (worlds,
+presets, models, generation, re-planning, simulation, exports) is the session's, as for the CLI.
+Tests pass an `llm_factory` that returns a fake model (UI-only tests) or use the real embedded model.
 """
 
 from __future__ import annotations
@@ -17,42 +17,25 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from grove_tui.errors import GenerationError, GroveError, PromptError
+from grove_tui.errors import GenerationError, GroveError, PromptError, describe_error
+from grove_tui.services.session import (
+    GeneratedScenario,
+    GroveSession,
+    LLMFactory,
+    ModelStatus,
+    RetrieverFactory,
+    ScenarioRequest,
+)
 from grove_tui.settings import data_dir
 
-LLMFactory = Callable[[str, Any], Any]  # (role, ModelInfo) -> LocalLLM-like
-RetrieverFactory = Callable[[], Any]
+__all__ = ["EXPORTERS", "EngineBackend", "ExportContext", "ExportedFile", "GeneratedScenario", "ModelStatus",
+           "PresetInfo", "RunInfo", "list_runs"]
 
 
 @dataclass(frozen=True)
 class PresetInfo:
     name: str
     description: str
-
-
-@dataclass(frozen=True)
-class ModelStatus:
-    role: str
-    file: str
-    loaded: bool
-    error: str = ""
-
-
-@dataclass
-class GeneratedScenario:
-    """A generation result the app holds: the pipeline's result, its bundle on disk and the world."""
-
-    prompt: str
-    world_name: str
-    preset: str
-    seed: int
-    world: Any
-    result: Any  # GenerationResult: scenario, trees, fields, grid, report
-    bundle_dir: Path
-
-    @property
-    def scenario(self) -> Any:
-        return self.result.scenario
 
 
 @dataclass(frozen=True)
@@ -84,7 +67,7 @@ def list_runs(runs_dir: Path, limit: int = 50) -> list[RunInfo]:
         modified = (path / SCENARIO_FILE).stat().st_mtime
         try:
             scenario = Scenario.load(path / SCENARIO_FILE)
-        except (GroveError, ValueError, OSError) as exc:  # ScenarioError is a ValueError; a file may vanish
+        except (GroveError, OSError) as exc:  # a broken scenario.yaml, or a file that vanished meanwhile
             runs.append(RunInfo(path, modified, error=str(exc)))
             continue
         runs.append(RunInfo(path, modified, scenario.prompt, scenario.world, scenario.preset, int(scenario.seed),
@@ -104,6 +87,7 @@ class ExportContext:
     generated: GeneratedScenario
     simulation: Any | None  # a Simulation that has run (trajectories, events), or None before simulating
     out_dir: Path
+    session: GroveSession = field(default_factory=GroveSession)
     files: list[ExportedFile] = field(default_factory=list)
 
     @property
@@ -152,9 +136,7 @@ def export_metrics(ctx: ExportContext) -> None:
 
 
 def export_hunav_files(ctx: ExportContext) -> None:
-    from grove_tui.exports.hunav import export_hunav
-
-    result = export_hunav(ctx.bundle, ctx.out_dir / "hunav")
+    result = ctx.session.export("hunav", ctx.bundle, ctx.out_dir / "hunav")
     ctx.add("hunav", Path(result.agents_yaml), f"+ {len(result.trees)} agent trees")
 
 
@@ -171,14 +153,14 @@ def export_rosbag_files(ctx: ExportContext) -> None:
     """A ROS 2 bag of the run; a note instead when the `ros` extra is missing."""
     if ctx.simulation is None or not ctx.trajectories.exists():
         return
-    from grove_tui.exports.rosbag import export_rosbag, missing_dependency
+    from grove_tui.exports.rosbag import missing_dependency
 
     out = ctx.out_dir / "rosbag"
     missing = missing_dependency()
     if missing is not None:
         ctx.add("rosbag", out, f"not written: {missing}")
         return
-    result = export_rosbag(ctx.bundle, out)
+    result = ctx.session.export("rosbag", ctx.bundle, out)
     ctx.add("rosbag", result.directory, f"{result.frames} frames")
 
 
@@ -186,14 +168,14 @@ def export_foxglove_files(ctx: ExportContext) -> None:
     """A Foxglove MCAP of the run and its layout; a note instead when the `ros` extra is missing."""
     if ctx.simulation is None or not ctx.trajectories.exists():
         return
-    from grove_tui.exports.foxglove import export_foxglove, missing_dependency
+    from grove_tui.exports.foxglove import missing_dependency
 
     out = ctx.out_dir / "scenario.mcap"
     missing = missing_dependency()
     if missing is not None:
         ctx.add("foxglove", out, f"not written: {missing}")
         return
-    result = export_foxglove(ctx.bundle, out)
+    result = ctx.session.export("foxglove", ctx.bundle, out)
     ctx.add("foxglove", result.mcap, f"+ layout {result.layout.name}")
 
 
@@ -226,109 +208,43 @@ class EngineBackend:
         runs_dir: Path | None = None,
         exporters: list[tuple[str, Exporter]] | None = None,
     ) -> None:
-        self._cli_model = model
-        self._cli_roi = roi_model
-        self._cli_bt = bt_model
-        self._llm_factory = llm_factory
-        self._retriever_factory = retriever_factory
+        self.session = GroveSession(model=model, roi_model=roi_model, bt_model=bt_model, llm_factory=llm_factory,
+                                    retriever_factory=retriever_factory)
         self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
         self.exporters = list(EXPORTERS if exporters is None else exporters)
-        self._lock = threading.RLock()
-        self._models: dict[str, Any] = {}
-        self._model_errors: dict[str, str] = {}
-        self._retriever: Any = None
+        self._retriever_factory = retriever_factory
         self._embedder_warm = False
-        self._worlds: dict[str, Any] = {}
 
     # worlds and presets ------------------------------------------------------------------------------
     def list_worlds(self) -> list[str]:
-        from grove_tui.world import list_worlds
-
-        return list(list_worlds())
+        return self.session.list_worlds()
 
     def load_world(self, name: str) -> Any:
-        with self._lock:
-            world = self._worlds.get(name)
-        if world is None:
-            from grove_tui.world import load_world
-
-            world = load_world(name)
-            with self._lock:
-                self._worlds[name] = world
-        return world
+        return self.session.load_world(name)
 
     def presets(self) -> list[PresetInfo]:
-        from grove_tui.generation.presets import list_presets, load_preset
+        from grove_tui.generation.presets import list_presets
 
         infos = []
         for name in list_presets():
             try:
-                infos.append(PresetInfo(name, load_preset(name).description))
+                infos.append(PresetInfo(name, self.session.load_preset(name).description))
             except GroveError as exc:
                 infos.append(PresetInfo(name, f"(broken: {exc})"))
         return infos
 
     # models --------------------------------------------------------------------------------------
-    def _resolve(self) -> dict[str, Any]:
-        from grove_tui.llm.registry import resolve_models
-
-        return dict(resolve_models(self._cli_roi, self._cli_bt, self._cli_model))
-
     def model_status(self) -> list[ModelStatus]:
-        try:
-            infos = self._resolve()
-        except Exception as exc:  # a missing registry or model must show in the panel, not crash the app
-            problem = f"{type(exc).__name__}: {exc}"
-            return [ModelStatus("roi", "?", False, problem), ModelStatus("bt", "?", False, problem)]
-        with self._lock:
-            return [
-                ModelStatus(role, Path(str(_model_path(info))).name, _is_loaded(self._models.get(role)),
-                            self._model_errors.get(role, ""))
-                for role, info in infos.items()
-            ]
+        return self.session.model_status()
 
     def load_models(self) -> dict[str, Any]:
         """Load each role's model once (roles sharing a file share the instance)."""
-        with self._lock:
-            if self._models:
-                return dict(self._models)
-            infos = self._resolve()
-            by_path: dict[str, Any] = {}
-            for role, info in infos.items():
-                key = str(_model_path(info))
-                try:
-                    if key not in by_path:
-                        by_path[key] = self._make_llm(role, info)
-                except GroveError as exc:
-                    self._model_errors[role] = str(exc)
-                    raise
-                self._models[role] = by_path[key]
-                self._model_errors.pop(role, None)
-            return dict(self._models)
-
-    def _make_llm(self, role: str, info: Any) -> Any:
-        if self._llm_factory is not None:
-            return self._llm_factory(role, info)
-        from grove_tui.llm.local import LocalLLM
-
-        llm = LocalLLM(_model_path(info), role=role, n_ctx=getattr(info, "n_ctx", 4096))
-        llm.start()  # loads the weights in the model's worker process now, not at the first prompt
-        return llm
-
-    def _retriever_instance(self) -> Any:
-        with self._lock:
-            if self._retriever is None:
-                if self._retriever_factory is not None:
-                    self._retriever = self._retriever_factory()
-                else:
-                    from grove_tui.generation.retrieval import NodeRetriever
-
-                    self._retriever = NodeRetriever()
-            return self._retriever
+        models = self.session.load_models()
+        return {"roi": models.roi, "bt": models.bt}
 
     def warm_up_retriever(self) -> None:
         """Open the node index and load the embedding model now, so the first Retrieval takes no extra time."""
-        retriever = self._retriever_instance()
+        retriever = self.session.retriever()
         if self._retriever_factory is None:
             from grove_tui.generation.retrieval import embed_query
 
@@ -341,12 +257,7 @@ class EngineBackend:
         return self._embedder_warm or self._retriever_factory is not None
 
     def close(self) -> None:
-        with self._lock:
-            for llm in {id(m): m for m in self._models.values()}.values():
-                closer = getattr(llm, "close", None)
-                if callable(closer):
-                    closer()
-            self._models.clear()
+        self.session.close()
 
     # generation ------------------------------------------------------------------------------------
     def generate(
@@ -358,20 +269,12 @@ class EngineBackend:
         on_event: Callable[[Any], None] | None = None,
         cancel: threading.Event | None = None,
     ) -> GeneratedScenario:
-        from grove_tui.scenario.bundle import write_bundle
-        from grove_tui.generation.pipeline import GenerationPipeline
-        from grove_tui.generation.presets import load_preset
-
-        world = self.load_world(world_name)
-        preset = load_preset(preset_name)
-        models = self.load_models()
-        retriever = self._retriever_instance()
-        pipeline = GenerationPipeline(world, preset, models.get("roi"), models["bt"], retriever)
-        result = pipeline.run(prompt, seed=seed, on_event=on_event, cancel=cancel)
-        self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
         stamp = time.strftime("%Y%m%d-%H%M%S")
-        bundle_dir = write_bundle(result, self.runs_dir / f"{stamp}-{_slug(prompt)}-{seed}")
-        return GeneratedScenario(prompt, world_name, preset_name, seed, world, result, Path(bundle_dir))
+        request = ScenarioRequest(world_name, preset_name, prompt, seed)
+        generated = self.session.generate(request, self._free_run_dir(f"{stamp}-{_slug(prompt)}-{seed}"),
+                                          on_event=on_event, cancel=cancel)
+        self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
+        return generated
 
     def replan(
         self,
@@ -385,14 +288,10 @@ class EngineBackend:
 
         The new scenario gets its own bundle next to the first one; `generated` is left as it was.
         """
-        from grove_tui.scenario.bundle import write_bundle
-        from grove_tui.generation.pipeline import GenerationPipeline
-        from grove_tui.generation.presets import load_preset
-
-        preset = load_preset(generated.preset)
-        pipeline = GenerationPipeline(generated.world, preset, None, None, None)
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        out = self._free_run_dir(f"{stamp}-{_slug(generated.prompt)}-{generated.seed if seed is None else seed}-counts")
         try:
-            result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
+            return self.session.replan(generated, counts, out, seed=seed, on_event=on_event, cancel=cancel)
         except PromptError as exc:
             # The counts, not the prompt, are what the user changed here: say what to do with them.
             exc.hint = "Lower the counts of the groups in that zone, or regenerate with a roomier place."
@@ -400,22 +299,17 @@ class EngineBackend:
         except GenerationError as exc:
             exc.hint = "Change the counts and press Enter again, or Escape to keep the scenario as it is."
             raise
-        seed = result.scenario.seed
-        stamp = time.strftime("%Y%m%d-%H%M%S")
-        base = self.runs_dir / f"{stamp}-{_slug(generated.prompt)}-{seed}-counts"
-        out, suffix = base, 1
+
+    def _free_run_dir(self, name: str) -> Path:
+        out, suffix = self.runs_dir / name, 1
         while out.exists():
             suffix += 1
-            out = base.with_name(f"{base.name}-{suffix}")
-        bundle_dir = write_bundle(result, out)
-        return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, seed, generated.world,
-                                 result, Path(bundle_dir))
+            out = self.runs_dir / f"{name}-{suffix}"
+        return out
 
     # simulation ------------------------------------------------------------------------------------
     def simulation(self, generated: GeneratedScenario) -> Any:
-        from grove_tui.simulation.simulation import Simulation
-
-        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
+        return self.session.simulation(generated)
 
     def run_metrics(self, generated: GeneratedScenario, rows: Any, events: list[Any]) -> dict[str, float]:
         """metrics.json's numbers for a run so far, flat ({"agent_overlaps": ..., "minimum_distance_to_people": ...}).
@@ -452,7 +346,7 @@ class EngineBackend:
             suffix += 1
             out_dir = Path(root) / f"{stamp}-{_slug(generated.prompt)}-{suffix}"
         out_dir.mkdir(parents=True)
-        ctx = ExportContext(generated, simulation, out_dir)
+        ctx = ExportContext(generated, simulation, out_dir, self.session)
         for index, (kind, exporter) in enumerate(self.exporters):
             if on_progress is not None:
                 on_progress(kind, index, len(self.exporters))
@@ -461,7 +355,7 @@ class EngineBackend:
             except Exception as exc:  # one failing format must not lose the others; the dialog shows why
                 if kind == "bundle":
                     raise
-                ctx.add(kind, out_dir, f"failed: {type(exc).__name__}: {exc}")
+                ctx.add(kind, out_dir, f"failed: {describe_error(exc).text}")
         return ctx.files
 
 
@@ -483,14 +377,3 @@ class EngineBackend:
         result = GenerationResult(scenario, trees, fields, grid, report)
         return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
                                  bundle_dir)
-
-
-def _model_path(info: Any) -> Any:
-    return getattr(info, "path", info)
-
-
-def _is_loaded(llm: Any) -> bool:
-    if llm is None:
-        return False
-    running = getattr(llm, "running", None)
-    return True if running is None else bool(running)

@@ -1,0 +1,498 @@
+"""The one application layer: every front end (the app, `grove generate|batch|simulate|export|eval`) goes
+through a `GroveSession`, so the same world, preset, prompt, seed and models give the same bundle
+whichever way it was asked for.
+
+A session holds what is expensive and shared: the models, loaded once per role (roles naming the
+same file share one instance), the retriever, worlds and presets, and one generation pipeline per
+(world, preset, robot request). The RoI model is used the same way on every path: the `roi` role's
+model (by default the embedded one, like `bt`) refines ambiguous place mentions in every
+generation, and the scenario records it.
+
+Heavy modules (the pipeline, llama.cpp, ChromaDB, torch, numba) are imported inside the methods
+that need them, so a front end opens before they load.
+"""
+
+from __future__ import annotations
+
+import json
+import threading
+import time
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import asdict, dataclass, field, is_dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from grove_tui.errors import (
+    EXIT_CANCELLED,
+    EXIT_MODEL_ERROR,
+    BadInputError,
+    EvalError,
+    GroveError,
+    PromptError,
+    RuntimeFailure,
+)
+
+if TYPE_CHECKING:
+    from grove_tui.analysis.evaluation import CaseResult, EvalCase
+    from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
+    from grove_tui.generation.planning import RobotRequest
+    from grove_tui.generation.presets import Preset
+    from grove_tui.llm.registry import ModelChoice
+    from grove_tui.services.jobs import BatchJob, JobProblem
+    from grove_tui.simulation.simulation import Simulation
+    from grove_tui.world import World
+
+LLMFactory = Callable[[str, Any], Any]  # (role, ModelChoice) -> a LocalLLM-like object
+RetrieverFactory = Callable[[], Any]
+EventSink = Callable[[Any], None]  # receives the pipeline's StageStarted / StageFinished / TokenStreamed
+
+
+@dataclass(frozen=True)
+class ScenarioRequest:
+    """What a scenario is generated from; equal requests through the same session give equal bundles."""
+
+    world: str  # shipped world name or path to a world YAML
+    preset: str
+    prompt: str
+    seed: int = 0
+    robot: RobotRequest | None = None  # None: a robot placed by the pipeline
+
+
+@dataclass
+class GeneratedScenario:
+    """A generation result, the world it was made in, and the bundle written for it."""
+
+    prompt: str
+    world_name: str
+    preset: str
+    seed: int
+    world: Any
+    result: Any  # GenerationResult: scenario, trees, fields, grid, report
+    bundle_dir: Path
+
+    @property
+    def scenario(self) -> Any:
+        return self.result.scenario
+
+
+@dataclass(frozen=True)
+class ModelStatus:
+    role: str
+    file: str
+    loaded: bool
+    error: str = ""
+
+
+@dataclass(frozen=True)
+class Models:
+    """The model of each role; one object when both roles name the same file."""
+
+    roi: Any
+    bt: Any
+
+
+@dataclass(frozen=True)
+class SimulationSummary:
+    sim_seconds: float
+    wall_seconds: float
+    counters: dict[str, Any]
+    wall_penetrations: int
+    goal_reach_rate: float | None
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+@dataclass(frozen=True)
+class JobOutcome:
+    """One batch job: its bundle, or the error that stopped it (the batch goes on)."""
+
+    job: BatchJob
+    bundle: Path
+    generated: GeneratedScenario | None = None
+    simulation: SimulationSummary | None = None
+    exports: dict[str, Path] = field(default_factory=dict)
+    error: GroveError | None = None
+
+
+# The `grove export` formats, also what a batch job's "export" key may list. Each writes beside
+# nothing it does not own: `out` is the folder (or .mcap file) the format's exporter writes.
+EXPORT_FORMATS = ("hunav", "trajectories", "rosbag", "foxglove")
+
+
+class GroveSession:
+    """Models loaded once per role; generate, re-plan, simulate, export, evaluate and batch."""
+
+    def __init__(self, *, model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
+                 llm_factory: LLMFactory | None = None, retriever_factory: RetrieverFactory | None = None) -> None:
+        self._cli_model = model
+        self._cli_roi = roi_model
+        self._cli_bt = bt_model
+        self._llm_factory = llm_factory
+        self._retriever_factory = retriever_factory
+        self._lock = threading.RLock()
+        self._models: Models | None = None
+        self._model_errors: dict[str, str] = {}
+        self._retriever: Any = None
+        self._worlds: dict[str, World] = {}
+        self._pipelines: dict[tuple[str, str, Any], GenerationPipeline] = {}
+
+    # inputs -------------------------------------------------------------------------------------------
+    def list_worlds(self) -> list[str]:
+        from grove_tui.world import list_worlds
+
+        return list(list_worlds())
+
+    def load_world(self, name: str) -> World:
+        """A world by shipped name or path, loaded once per session."""
+        with self._lock:
+            world = self._worlds.get(name)
+        if world is None:
+            from grove_tui.world import load_world
+
+            world = load_world(name)
+            with self._lock:
+                self._worlds[name] = world
+        return world
+
+    def load_preset(self, name: str) -> Preset:
+        from grove_tui.generation.presets import load_preset
+
+        return load_preset(name)
+
+    def check_request(self, request: ScenarioRequest) -> tuple[World, Preset]:
+        """World and preset of a request, and a non-empty prompt, before any model loads."""
+        if not request.prompt or not request.prompt.strip():
+            raise PromptError("the prompt is empty: describe the people and what they do")
+        return self.load_world(request.world), self.load_preset(request.preset)
+
+    # models ---------------------------------------------------------------------------------------------
+    def model_choices(self) -> dict[str, ModelChoice]:
+        from grove_tui.llm.registry import resolve_models
+
+        return dict(resolve_models(self._cli_roi, self._cli_bt, self._cli_model))
+
+    def model_status(self) -> list[ModelStatus]:
+        """Each role's file and whether it is loaded; a role that cannot be resolved shows its error."""
+        from grove_tui.errors import describe_error
+
+        try:
+            choices = self.model_choices()
+        except GroveError as exc:
+            problem = describe_error(exc).text
+            return [ModelStatus("roi", "?", False, problem), ModelStatus("bt", "?", False, problem)]
+        with self._lock:
+            loaded = {"roi": self._models.roi, "bt": self._models.bt} if self._models is not None else {}
+            return [ModelStatus(role, choice.path.name, _is_running(loaded.get(role)), self._model_errors.get(role, ""))
+                    for role, choice in choices.items()]
+
+    def load_models(self) -> Models:
+        """Load each role's model once; roles naming the same file share the instance."""
+        with self._lock:
+            if self._models is not None:
+                return self._models
+            by_path: dict[Path, Any] = {}
+            loaded: dict[str, Any] = {}
+            for role, choice in self.model_choices().items():
+                key = choice.path.resolve()
+                try:
+                    if key not in by_path:
+                        by_path[key] = self._make_llm(role, choice)
+                except GroveError as exc:
+                    self._model_errors[role] = str(exc)
+                    for llm in by_path.values():
+                        _close(llm)
+                    raise
+                loaded[role] = by_path[key]
+                self._model_errors.pop(role, None)
+            self._models = Models(roi=loaded["roi"], bt=loaded["bt"])
+            return self._models
+
+    def _make_llm(self, role: str, choice: ModelChoice) -> Any:
+        if self._llm_factory is not None:
+            return self._llm_factory(role, choice)
+        from grove_tui.llm.local import LocalLLM
+
+        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx)
+        llm.start()  # loads the weights in the model's worker process now, not at the first prompt
+        return llm
+
+    def retriever(self) -> Any:
+        with self._lock:
+            if self._retriever is None:
+                if self._retriever_factory is not None:
+                    self._retriever = self._retriever_factory()
+                else:
+                    from grove_tui.generation.retrieval import NodeRetriever
+
+                    self._retriever = NodeRetriever()
+            return self._retriever
+
+    def close(self) -> None:
+        """Stop the model processes; the session loads them again if used after."""
+        with self._lock:
+            if self._models is not None:
+                for llm in {id(m): m for m in (self._models.roi, self._models.bt)}.values():
+                    _close(llm)
+            self._models = None
+            self._pipelines.clear()
+
+    def __enter__(self) -> GroveSession:
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        self.close()
+
+    # generation -----------------------------------------------------------------------------------------
+    def pipeline(self, world_name: str, preset_name: str, robot: RobotRequest | None = None) -> GenerationPipeline:
+        """The pipeline of a world and preset (and robot request), built once per session."""
+        from grove_tui.generation.pipeline import GenerationPipeline
+
+        key = (world_name, preset_name, robot)
+        with self._lock:
+            pipeline = self._pipelines.get(key)
+        if pipeline is None:
+            world, preset = self.load_world(world_name), self.load_preset(preset_name)
+            models = self.load_models()
+            pipeline = GenerationPipeline(world, preset, models.roi, models.bt, self.retriever(), robot=robot)
+            with self._lock:
+                pipeline = self._pipelines.setdefault(key, pipeline)
+        return pipeline
+
+    def generate(self, request: ScenarioRequest, out_dir: str | Path, *, overwrite: bool = False,
+                 on_event: EventSink | None = None, cancel: threading.Event | None = None) -> GeneratedScenario:
+        """Generate the request's scenario and write its bundle to `out_dir` (an old bundle there is replaced)."""
+        from grove_tui.files import check_output_dir
+        from grove_tui.scenario.bundle import WHAT, is_bundle
+
+        world, _preset = self.check_request(request)
+        # Before the model runs: a refused or unwritable folder must not cost a generation.
+        check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
+        pipeline = self.pipeline(request.world, request.preset, request.robot)
+        result = pipeline.run(request.prompt, seed=request.seed, on_event=on_event, cancel=cancel)
+        bundle = self.write_bundle(result, out_dir, overwrite=overwrite)
+        return GeneratedScenario(request.prompt, request.world, request.preset, request.seed, world, result, bundle)
+
+    def write_bundle(self, result: GenerationResult, out_dir: str | Path, *, overwrite: bool = False) -> Path:
+        from grove_tui.scenario.bundle import write_bundle
+
+        return Path(write_bundle(result, Path(out_dir), overwrite=overwrite))
+
+    def replan(self, generated: GeneratedScenario, counts: dict[int, int], out_dir: str | Path, *,
+               seed: int | None = None, on_event: EventSink | None = None,
+               cancel: threading.Event | None = None) -> GeneratedScenario:
+        """The same draft with new head counts (group index -> count), re-planned without a model call."""
+        from grove_tui.generation.pipeline import GenerationPipeline
+
+        preset = self.load_preset(generated.preset)
+        pipeline = GenerationPipeline(generated.world, preset, None, None, None)
+        result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
+        bundle = self.write_bundle(result, out_dir)
+        return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, result.scenario.seed,
+                                 generated.world, result, bundle)
+
+    # simulation -----------------------------------------------------------------------------------------
+    def simulation(self, generated: GeneratedScenario) -> Simulation:
+        """A runnable simulation of a generated scenario, for a front end that steps it itself."""
+        from grove_tui.simulation.simulation import Simulation
+
+        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
+
+    def simulate(self, bundle: str | Path, seconds: float, *, cancel: threading.Event | None = None,
+                 runtime_planning: bool = True) -> SimulationSummary:
+        """Run a bundle's scenario for `seconds`; give it trajectories.csv, events.jsonl and metrics.json.
+
+        The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
+        """
+        from grove_tui.analysis.bundle_metrics import bundle_metrics
+        from grove_tui.scenario.bundle import load_bundle, replace_run_outputs
+        from grove_tui.scenario.events import write_events
+        from grove_tui.simulation.simulation import Simulation
+
+        bundle = Path(bundle)
+        scenario, _, _, _ = load_bundle(bundle)
+        world = self.load_world(_world_name(scenario.world, bundle))
+        sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
+        started = time.perf_counter()
+        frame = sim.run(seconds, cancel=cancel)
+        wall = time.perf_counter() - started
+        recorder = sim.recorder
+        if recorder is None:
+            raise RuntimeFailure(f"{bundle}: the simulation has no trajectory recorder")
+        reports = []
+
+        def write_run(stage: Path) -> None:
+            recorder.write_csv(stage / "trajectories.csv")
+            write_events(stage / "events.jsonl", sim.events)
+            reports.append(bundle_metrics(stage)[0])
+
+        replace_run_outputs(bundle, write_run)
+        crowd = reports[0].crowd
+        counters = asdict(frame.counters) if is_dataclass(frame.counters) else {"value": str(frame.counters)}
+        return SimulationSummary(round(float(frame.t), 3), round(wall, 3), counters,
+                                 int(crowd.get("wall_penetrations", 0)), crowd.get("goal_reach_rate"))
+
+    # exports ----------------------------------------------------------------------------------------------
+    def export(self, kind: str, bundle: str | Path, out: str | Path, **options: Any) -> Any:
+        """Write one export format of a bundle (see EXPORT_FORMATS); returns that exporter's result."""
+        bundle, out = Path(bundle), Path(out)
+        if kind == "hunav":
+            from grove_tui.exports.hunav import export_hunav
+
+            return export_hunav(bundle, out, **options)
+        if kind == "trajectories":
+            from grove_tui.exports.trajectories import export_trajectories
+
+            return export_trajectories(bundle, out, **options)
+        if kind == "rosbag":
+            from grove_tui.exports.rosbag import export_rosbag
+
+            return export_rosbag(bundle, out, **options)
+        if kind == "foxglove":
+            from grove_tui.exports.foxglove import export_foxglove
+
+            return export_foxglove(bundle, out, **options)
+        raise BadInputError(f"unknown export format {kind!r}; formats: {', '.join(EXPORT_FORMATS)}")
+
+    # batch ------------------------------------------------------------------------------------------------
+    def check_jobs(self, jobs: Sequence[BatchJob], out_dir: Path,
+                   overwrite: bool) -> tuple[list[BatchJob], list[JobProblem]]:
+        """Jobs whose world, preset and output folder are usable; the others as problems, before any model loads."""
+        from grove_tui.files import check_output_dir
+        from grove_tui.scenario.bundle import WHAT, is_bundle
+        from grove_tui.services.jobs import JobProblem
+
+        check_output_dir(out_dir, owned=lambda _path: True, what="batch folder", overwrite=True)
+        good, refused = [], []
+        for job in jobs:
+            try:
+                self.check_request(ScenarioRequest(job.world, job.preset, job.prompt, job.seed))
+                check_output_dir(out_dir / job.name, owned=is_bundle, what=WHAT, overwrite=overwrite)
+            except GroveError as exc:
+                refused.append(JobProblem(job.line, str(exc)))
+                continue
+            good.append(job)
+        return good, refused
+
+    def run_job(self, job: BatchJob, out_dir: Path, *, overwrite: bool = False,
+                on_event: EventSink | None = None, cancel: threading.Event | None = None) -> JobOutcome:
+        """Generate one job's bundle, simulate it and write its exports. A model error or a
+        cancellation stops the whole batch (it is raised); any other error is the job's outcome."""
+        target = out_dir / job.name
+        try:
+            generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed), target,
+                                      overwrite=overwrite, on_event=on_event, cancel=cancel)
+            summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
+            exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name) for kind in job.exports}
+        except GroveError as exc:
+            if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
+                raise
+            return JobOutcome(job, target, error=exc)
+        return JobOutcome(job, target, generated, summary, exports)
+
+    def _batch_export(self, kind: str, bundle: Path, out_dir: Path, name: str) -> Path:
+        # Beside the bundle, never inside it: a bundle holds only what generation and simulation wrote.
+        if kind == "foxglove":
+            return Path(self.export(kind, bundle, out_dir / f"{name}.mcap").mcap)
+        target = out_dir / f"{name}.{kind}"
+        result = self.export(kind, bundle, target, **({"overwrite": True} if kind in ("hunav", "rosbag") else {}))
+        return target if not hasattr(result, "directory") else Path(result.directory)
+
+    def batch(self, jobs: Sequence[BatchJob], out_dir: str | Path, *, overwrite: bool = False,
+              events_for: Callable[[int, BatchJob], EventSink | None] | None = None,
+              on_outcome: Callable[[int, JobOutcome], None] | None = None,
+              cancel: threading.Event | None = None) -> list[JobOutcome]:
+        """Run checked jobs in order with the models loaded once; one outcome per job."""
+        outcomes = []
+        for index, job in enumerate(jobs, start=1):
+            sink = events_for(index, job) if events_for is not None else None
+            outcome = self.run_job(job, Path(out_dir), overwrite=overwrite, on_event=sink, cancel=cancel)
+            outcomes.append(outcome)
+            if on_outcome is not None:
+                on_outcome(index, outcome)
+        return outcomes
+
+    # evaluation -------------------------------------------------------------------------------------------
+    def evaluate(self, cases: Sequence[EvalCase], out_dir: str | Path, *, methods: Iterable[str] | None = None,
+                 sim_seconds: float = 30.0,
+                 on_progress: Callable[[int, int, CaseResult], None] | None = None) -> list[CaseResult]:
+        """Generate, simulate and score every case with every method; bundles are kept under out_dir.
+
+        `grove` and `vanilla` generate through `generate` (so their bundles are those of `grove generate`
+        for the same request); `no-planner` and `decoupled` rewrite GROVE's bundle (analysis.evaluation).
+        """
+        from grove_tui.analysis.evaluation import (
+            METHODS,
+            CaseResult,
+            baseline_variant,
+            read_trees,
+            score_scenario,
+            write_results,
+        )
+        from grove_tui.analysis.metrics import Trajectories
+        from grove_tui.scenario.events import read_events
+
+        chosen = list(METHODS if methods is None else methods)
+        unknown = [m for m in chosen if m not in METHODS]
+        if unknown:
+            raise EvalError(f"unknown method(s) {unknown}; choose from {', '.join(METHODS)}")
+        out = Path(out_dir)
+        results: list[CaseResult] = []
+        for index, case in enumerate(cases, start=1):
+            world = self.load_world(case.world)
+            generated: dict[str, tuple[Any, dict[str, str], Path]] = {}
+
+            def generate_method(method: str) -> tuple[Any, dict[str, str], Path]:
+                preset = case.preset if method == "grove" else "vanilla"
+                made = self.generate(ScenarioRequest(case.world, preset, case.prompt, case.seed),
+                                     out / "bundles" / case.id / method)
+                return made.scenario, read_trees(made.bundle_dir, made.scenario), made.bundle_dir
+
+            for method in chosen:
+                started = time.perf_counter()
+                try:
+                    if method in ("grove", "vanilla"):
+                        generated[method] = generate_method(method)
+                    else:
+                        if "grove" not in generated:
+                            generated["grove"] = generate_method("grove")
+                        generated[method] = baseline_variant(method, world, *generated["grove"],
+                                                             out / "bundles" / case.id / method)
+                    scenario, trees, bundle = generated[method]
+                    self.simulate(bundle, sim_seconds, runtime_planning=method != "no-planner")
+                    traj = Trajectories.from_csv(bundle / "trajectories.csv")
+                    events = read_events(bundle / "events.jsonl")
+                    report_path = bundle / "generation.json"
+                    report = json.loads(report_path.read_text(encoding="utf-8")) if report_path.exists() else {}
+                    by_id = {a.id: trees[a.tree] for a in scenario.agents}
+                    scored = score_scenario(case, method, world, scenario, by_id, traj, events,
+                                            report if method in ("grove", "vanilla") else None)
+                except GroveError as exc:
+                    if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
+                        raise  # a broken model or a cancellation stops the evaluation, not one case
+                    scored = CaseResult(case=case, method=method, error=str(exc))
+                scored.scores["eval_seconds"] = round(time.perf_counter() - started, 3)
+                results.append(scored)
+                if on_progress is not None:
+                    on_progress(index, len(cases), scored)
+        write_results(results, out)
+        return results
+
+
+def _world_name(reference: str, bundle: Path) -> str:
+    """A scenario's world reference as load_world takes it: a path relative to the bundle, or a name."""
+    candidate = bundle / reference
+    return str(candidate) if candidate.suffix in (".yaml", ".yml") and candidate.exists() else reference
+
+
+def _close(llm: Any) -> None:
+    closer = getattr(llm, "close", None)
+    if callable(closer):
+        closer()
+
+
+def _is_running(llm: Any) -> bool:
+    if llm is None:
+        return False
+    running = getattr(llm, "running", None)
+    return True if running is None else bool(running)
