@@ -100,6 +100,10 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
         f"tokens: prompt={report['prompt_tokens']} completion={report['completion_tokens']}",
         f"time: total={report['total_seconds']:.2f}s {stages}",
     ]
+    if report.get("variation"):
+        variation = report["variation"]
+        lines.insert(1, f"variation: {variation['index']} of {variation['count']} (seed {scenario.seed}, "
+                        f"parent seed {variation['parent_seed']})")
     if scenario.robot is not None:
         r = scenario.robot
         lines.append(f"robot: ({r.start[0]:.2f}, {r.start[1]:.2f}) -> ({r.goal[0]:.2f}, {r.goal[1]:.2f})")
@@ -132,21 +136,37 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
 @click.option("--robot-goal", default=None, help="Robot goal: 'x,y' or an RoI name.")
 @click.option("--no-robot", is_flag=True, help="Generate without a robot.")
 @click.option("--json", "as_json", is_flag=True, help="Print the result as one JSON object on stdout.")
+@click.option("--variations", type=click.IntRange(1, 10_000), default=1, show_default=True,
+              help="Write N scenarios of the prompt into --out/v000 .. (seeds derived from --seed; v000 uses it).")
 @click.pass_context
 def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str, prompt: str, seed: int,
              simulate_seconds: float | None, out_dir: str, overwrite: bool, roi_model: str | None, bt_model: str | None,
-             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool) -> None:
+             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool, variations: int) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
     from grove_tui.generation.planning import RobotRequest
-    from grove_tui.services.session import ScenarioRequest
+    from grove_tui.services.jobs import variation_suffix
+    from grove_tui.services.session import ScenarioRequest, variation_requests
 
-    progress = Progress(_err())
     robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
     request = ScenarioRequest(world_name, preset_name, prompt, seed, robot)
+    if variations == 1:
+        targets = [(request, Path(out_dir))]
+    else:
+        # --out holds one bundle per variation; each bundle folder is checked like a single --out.
+        targets = [(varied, Path(out_dir) / variation_suffix(varied.variation.index, variations).lstrip("-"))
+                   for varied in variation_requests(request, variations) if varied.variation is not None]
+    with session_for(ctx, roi_model, bt_model) as session:
+        for varied, target in targets:
+            prefix = f"[{varied.variation.index + 1}/{variations}] " if varied.variation is not None else ""
+            _generate_one(session, varied, target, overwrite, simulate_seconds, as_json, prefix)
+
+
+def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite: bool,
+                  simulate_seconds: float | None, as_json: bool, prefix: str) -> None:
+    progress = Progress(_err(), prefix=prefix)
     try:
-        with session_for(ctx, roi_model, bt_model) as session:
-            generated = session.generate(request, Path(out_dir), overwrite=overwrite, on_event=progress)
-            sim = session.simulate(generated.bundle_dir, simulate_seconds).to_dict() if simulate_seconds else None
+        generated = session.generate(request, out_dir, overwrite=overwrite, on_event=progress)
+        sim = session.simulate(generated.bundle_dir, simulate_seconds).to_dict() if simulate_seconds else None
     except BaseException:
         progress.stop()  # the spinner must not overwrite the error line the grove group prints
         raise
@@ -154,7 +174,7 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
     if as_json:
         payload = {"bundle": str(bundle), "agents": len(result.scenario.agents), "report": {
             k: result.report[k] for k in ("stages", "total_seconds", "prompt_tokens", "completion_tokens", "zones",
-                                          "groups", "notes", "grounding") if k in result.report}}
+                                          "groups", "notes", "grounding", "variation") if k in result.report}}
         if sim is not None:
             payload["simulation"] = sim
         click.echo(json.dumps(payload))
