@@ -69,7 +69,7 @@ async def test_generate_inspect_play_and_export(tmp_path):
         # the tree: group -> agents -> nodes with ports
         tree = inspect.query_one("#bt-tree", BTTree)
         group = tree.root.children[0]
-        assert "patients" in str(group.label) and "×6" in str(group.label)
+        assert "patient" in str(group.label) and "×6" in str(group.label)
         agent_node = group.children[0]
         assert agent_node.data.kind == "agent"
         labels = [str(n.label) for n in agent_node.children[0].children]

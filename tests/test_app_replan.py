@@ -45,7 +45,7 @@ async def test_edit_a_count_and_replan_without_the_model(tmp_path):
         dialog = await open_counts(pilot, app)
         field = dialog.query_one("#count-0", Input)
         assert field.value == "6" and app.focused is field
-        assert "patients" in str(dialog.query_one(".counts-label", Static).render())
+        assert "patient" in str(dialog.query_one(".counts-label", Static).render())
         await pilot.press(*CLEAR, *"x9", "enter")  # letters are refused: digits only
         await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen), timeout=60, what="back to inspect")
         assert app.screen is inspect
@@ -56,7 +56,7 @@ async def test_edit_a_count_and_replan_without_the_model(tmp_path):
         assert app.generated is generated
         assert len(generated.scenario.agents) == 9
         assert [a.id for a in generated.scenario.agents] == list(range(1, 10))
-        assert generated.result.report["notes"][0] == "counts edited: patients 6 -> 9"
+        assert generated.result.report["notes"][0] == "counts edited: patient 6 -> 9"
         assert generated.bundle_dir != first.bundle_dir and (generated.bundle_dir / "scenario.yaml").is_file()
         assert len(first.scenario.agents) == 6  # the first scenario and its bundle are untouched
 

@@ -151,16 +151,17 @@ async def test_g_keeps_count_edits_when_asked_and_drops_them_otherwise(tmp_path)
         await pilot.press(*CLEAR, *"4", "enter")
         await wait_until(pilot, lambda: app.screen is inspect and len(inspect.generated.scenario.agents) == 4,
                          timeout=60, what="re-planned")
-        assert inspect.count_edits == {"patients": 4}
+        label = inspect.generated.result.report["groups"][0]["label"]
+        assert inspect.count_edits == {label: 4}
         await pilot.press("g")
         await wait_until(pilot, lambda: isinstance(app.screen, ChoiceScreen), what="keep counts question")
-        assert "patients 4" in app.screen.text
+        assert f"{label} 4" in app.screen.text
         await pilot.press("y")
         await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen) and app.screen is not inspect,
                          timeout=60, what="regenerated with counts")
         kept = app.screen
         assert kept.generated.seed == 1 and len(kept.generated.scenario.agents) == 4
-        assert kept.count_edits == {"patients": 4}
+        assert kept.count_edits == {label: 4}
         await pilot.press("g")
         await wait_until(pilot, lambda: isinstance(app.screen, ChoiceScreen), what="question again")
         await pilot.press("n")

@@ -150,6 +150,32 @@ def test_every_tree_in_a_hunavsim_folder_validates():
     assert {k: v for k, v in bad.items() if v} == {}
 
 
+@pytest.mark.skipif(not os.environ.get("GROVE_HUNAV_TREES"), reason="set GROVE_HUNAV_TREES to HuNavSim's tree folder")
+def test_every_tree_in_a_hunavsim_folder_ticks_for_a_minute(hall):
+    """Each tree drives agent 1 among three RegularNav agents for 60 s: it runs, or stops that agent
+    alone on a blackboard entry HuNavSim's agent manager never sets ({dist}, {duration}...)."""
+    from grove_tui.scenario.model import RobotSpec
+    from grove_tui.simulation.simulation import Simulation
+
+    folder = Path(os.environ["GROVE_HUNAV_TREES"])
+    world, grid, planner = hall
+    goals = {i: (4.0 + 1.5 * i, 3.0 + (i % 3) * 2.5) for i in range(1, 9)}
+
+    class _Scenario:
+        global_goals = goals
+
+    regular = next(p for p in folder.rglob("BTRegularNav.xml"))
+    for path in sorted(p for p in folder.rglob("*.xml") if "<BehaviorTree" in p.read_text(errors="replace")):
+        documents = [load_tree_file(path)] + [load_tree_file(regular)] * 3
+        agents = [agent(i, (3.0 + 2 * i, 5.0), goals=(goals[i], goals[i + 4])) for i in range(1, 5)]
+        sim = Simulation.build(agents, documents, world=world, grid=grid, planner=planner, walls=world.walls(),
+                               robot=RobotSpec(start=(15.0, 8.0), goal=(5.0, 8.0), max_vel=0.5), seed=1,
+                               scenario=_Scenario())
+        sim.run(60.0)
+        assert set(sim.tree_errors) <= {1}, path.name
+        assert all("which is not set" in message for message in sim.tree_errors.values()), path.name
+
+
 def test_older_hunavsim_point_ports_validate_and_run(hall):
     # Earlier HuNavSim 2.0 trees name points by target_x/target_y (GoTo, SetGoal, LookAtPoint) and
     # center_x/center_y (ConversationFormation) instead of global goal ids.

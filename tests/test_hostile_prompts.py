@@ -18,12 +18,17 @@ from grove_tui.world import load_world
 
 
 def refuse(prompt: str, preset: str = "emergency") -> str:
+    """The checks GenerationPipeline.run makes before any model runs, in its order."""
+    from grove_tui.generation.pipeline import quantities_from_reading
+    from grove_tui.language.reading import read_prompt
+
     world = load_world("hospital")
-    quantities = extract_quantities(prompt)
     with pytest.raises(PromptError) as caught:
-        check_stated_counts(prompt, quantities)
+        check_stated_counts(prompt, extract_quantities(prompt))
+        reading = read_prompt(prompt, world)
         check_population(world, build_grid(world, 0.1), load_preset(preset),
-                         select_rois(world, load_preset(preset), prompt), quantities)
+                         select_rois(world, load_preset(preset), prompt, reading=reading),
+                         quantities_from_reading(reading))
     assert caught.value.exit_code == 2
     return str(caught.value)
 
@@ -32,6 +37,7 @@ def refuse(prompt: str, preset: str = "emergency") -> str:
     ("-5 people walk to the pharmacy", "'-5 people' is a negative number of people"),
     ("minus 3 nurses walk to the pharmacy", "is a negative number of people"),
     ("a billion people evacuate the cafeteria", "1000000000 people"),
+    ("10 million people evacuate the cafeteria", "10000000 people"),
     ("🔥🔥🔥", "no words to read"),
     ("zero people evacuate the cafeteria", "'zero people' asks for nobody"),
 ])

@@ -116,3 +116,89 @@ def test_cli_export_then_import_prints_the_files(exported, tmp_path):
                                        "--out", str(tmp_path / "b")])
     assert result.exit_code == 0, result.output
     assert (tmp_path / "b" / "scenario.yaml").is_file()
+
+
+HUNAV_STYLE_YAML = """hunav_loader:
+  ros__parameters:
+    yaml_base_name: agents_lab
+    simulator: Gazebo Classic
+    map: lab
+    publish_people: true
+    global_goals:
+      1: {x: 1.0, y: 1.0}
+      2: {x: 6.0, y: 1.5}
+      3: {x: 6.5, y: 5.0}
+    agents: [agent1, agent2]
+    agent1:
+      id: 1
+      group_id: -1
+      skin: 0
+      max_vel: 1.2
+      radius: 0.4
+      goal_radius: 0.3
+      cyclic_goals: true
+      init_pose: {x: 0.5, y: 4.0, z: 1.25, h: 0.0}
+      behavior: {type: Regular, configuration: 0}
+      goals: [1, 2]
+    agent2:
+      id: 2
+      group_id: -1
+      skin: 1
+      max_vel: 1.0
+      radius: 0.4
+      goal_radius: 0.3
+      cyclic_goals: true
+      init_pose: {x: 3.0, y: 6.0, z: 1.25, h: 0.0}
+      behavior: {type: Surprised, dist: 2.0, duration: 20.0, once: true, configuration: 0}
+      goals: [3]
+"""
+REGULAR_TREE = """<root BTCPP_format="4" main_tree_to_execute="RegularNavTree">
+  <BehaviorTree ID="RegularNavTree">
+    <Fallback>
+      <Sequence><Inverter><IsGoalReached agent_id="{id}"/></Inverter><RegularNav agent_id="{id}" time_step="{dt}"/></Sequence>
+      <UpdateGoal agent_id="{id}"/>
+    </Fallback>
+  </BehaviorTree>
+</root>
+"""
+
+
+def _agent_tree(goal_ids):
+    sets = "".join(f'<RunOnce><SetGoal agent_id="{{id}}" goal_id="{g}"/></RunOnce>' for g in goal_ids)
+    return f"""<root BTCPP_format="4" main_tree_to_execute="DefaultTree">
+  <include path="BTRegularNav.xml"/>
+  <BehaviorTree ID="DefaultTree">
+    <Fallback>
+      <Inverter><Sequence>{sets}</Sequence></Inverter>
+      <Sequence>
+        <SetBlackboard output_key="agentid" value="{{id}}"/>
+        <SetBlackboard output_key="timestep" value="{{dt}}"/>
+        <SubTree ID="RegularNavTree" id="{{agentid}}" dt="{{timestep}}"/>
+      </Sequence>
+    </Fallback>
+  </BehaviorTree>
+</root>
+"""
+
+
+def test_a_hunavsim_scenario_with_includes_imports_and_plays(tmp_path):
+    """HuNavSim's wrapper layout: scenarios/agents_<x>.yaml, behavior_trees/<base>__agent_<id>_bt.xml that
+    include BTRegularNav.xml and set their goals by global goal id; an unknown map gets an open floor."""
+    (tmp_path / "scenarios").mkdir()
+    (tmp_path / "behavior_trees").mkdir()
+    (tmp_path / "scenarios" / "agents_lab.yaml").write_text(HUNAV_STYLE_YAML)
+    (tmp_path / "behavior_trees" / "BTRegularNav.xml").write_text(REGULAR_TREE)
+    (tmp_path / "behavior_trees" / "agents_lab__agent_1_bt.xml").write_text(_agent_tree([1, 2]))
+    (tmp_path / "behavior_trees" / "agents_lab__agent_2_bt.xml").write_text(_agent_tree([3]))
+    bundle = import_hunav(tmp_path / "scenarios" / "agents_lab.yaml", tmp_path / "bundle")
+    scenario = Scenario.load(bundle / "scenario.yaml")
+    assert scenario.world == "lab.yaml" and scenario.global_goals == {1: (1.0, 1.0), 2: (6.0, 1.5), 3: (6.5, 5.0)}
+    assert [a.goals for a in scenario.agents] == [((1.0, 1.0), (6.0, 1.5)), ((6.5, 5.0),)]
+    assert [a.behavior for a in scenario.agents] == ["Regular", "Surprised"]
+    trees = load_bundle(bundle)[1]
+    assert "<include" not in trees["trees/agent_1.xml"] and "RegularNavTree" in trees["trees/agent_1.xml"]
+    sim = Simulation.from_scenario(scenario, bundle)
+    sim.run(12.0)
+    assert sim.tree_errors == {}
+    # agent 2 walks to its one goal (6.5, 5.0) from (3.0, 6.0)
+    assert math.dist(sim.crowd.pos[1], (6.5, 5.0)) < math.dist((3.0, 6.0), (6.5, 5.0)) - 2.0

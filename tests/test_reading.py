@@ -303,3 +303,99 @@ def test_labels_are_never_numbers_or_node_names(worlds):
                        "Three of them queue", "a few more wander around", "Five groups walk"):
             for g in read_prompt(prompt, world).groups:
                 assert g.label and g.label not in lx.NUMBER_WORDS and not g.label.isdigit() and g.label not in nodes
+
+
+@pytest.mark.parametrize("noun,label", [("flight attendants", "attendant"), ("dog walkers", "walker"),
+                                        ("security guards", "guard"), ("staff members", "staff")])
+@pytest.mark.parametrize("verb", ["run to the cafeteria", "head over to the cafeteria"])
+def test_compound_person_nouns(hospital, noun, label, verb):
+    g = one(read_prompt(f"Twelve {noun} {verb}.", hospital))
+    assert g.count.value == 12 and g.label == label and g.destination == "cafeteria"
+
+
+@pytest.mark.parametrize("who", ["Every visitor", "Every patient", "All the nurses"])
+def test_every_x_in_a_zone_is_a_whole_zone_count(hospital, who):
+    g = one(read_prompt(f"{who} in the pharmacy goes to the cafeteria.", hospital))
+    assert g.count.kind == "whole_zone" and g.start == "pharmacy" and g.destination == "cafeteria"
+
+
+@pytest.mark.parametrize("frame", ["The only people in the {p} are {w}, wandering around.",
+                                   "There is no one in the {p} apart from {w}, who wait there.",
+                                   "Apart from {w}, nobody is in the {p}; they wander around."])
+def test_more_exclusive_phrasings(hospital, frame):
+    g = one(read_prompt(frame.format(p="staff room", w="two nurses"), hospital))
+    assert g.count == Count("exclusive", 2, 2, 2) and g.location == "staff_room"
+
+
+@pytest.mark.parametrize("number,value", [("Fifteen", 15), ("5", 5), ("twenty", 20)])
+def test_or_so_is_approximate(hospital, number, value):
+    g = one(read_prompt(f"{number} or so visitors head to the lobby.", hospital))
+    assert g.count.kind == "approximate" and g.count.value == value
+
+
+@pytest.mark.parametrize("fronted,check", [
+    ("from the pharmacy", lambda g: g.start == "pharmacy"),
+    ("for 90 seconds", lambda g: g.wait_seconds == 90.0),
+    ("in the lobby", lambda g: g.location == "entrance_lobby" or g.start == "entrance_lobby"),
+])
+@pytest.mark.parametrize("joiner", [", and", ";", ", while"])
+def test_a_fronted_phrase_belongs_to_the_group_after_it(hospital, fronted, check, joiner):
+    reading = read_prompt(f"Five nurses walk to the cafeteria{joiner} {fronted}, two visitors wait.", hospital)
+    assert len(reading.groups) == 2
+    assert reading.groups[0].destination == "cafeteria" and reading.groups[0].wait_seconds is None
+    assert check(reading.groups[1])
+
+
+@pytest.mark.parametrize("negation", ["instead of", "rather than"])
+def test_a_place_after_instead_of_is_neither_a_role_nor_unknown(hospital, negation):
+    reading = read_prompt(f"Six doctors go to the pharmacy {negation} the waiting room.", hospital)
+    g = one(reading)
+    assert g.intent == "walk" and g.destination == "pharmacy" and g.location is None
+    assert reading.unknown_places == ()
+
+
+@pytest.mark.parametrize("zone_phrase,zone", [("the pharmacy", "pharmacy"), ("the staff room", "staff_room")])
+def test_during_the_evacuation_of_a_zone_people_start_there(hospital, zone_phrase, zone):
+    g = one(read_prompt(f"During the evacuation of {zone_phrase}, nine people head to the west exit.", hospital))
+    assert g.intent == "evacuate" and g.start == zone and g.destination == "west_emergency_exit"
+
+
+@pytest.mark.parametrize("tail", ["follows close behind", "follows behind them", "follows them"])
+def test_following_the_group_before(hospital, tail):
+    reading = read_prompt(f"Three visitors walk to the pharmacy, and a porter {tail}.", hospital)
+    assert [g.intent for g in reading.groups] == ["walk", "follow"]
+
+
+@pytest.mark.parametrize("phrase,interaction", [("stand in the robot's way", "block"), ("get in the robot's way", "block"),
+                                                ("tag along behind the robot", "follow"),
+                                                ("stop and stare at the robot", "look"),
+                                                ("turn to look at the robot", "look")])
+def test_robot_phrases_around_the_robot(hospital, phrase, interaction):
+    g = one(read_prompt(f"Two guests {phrase}.", hospital))
+    assert g.robot_interaction == interaction and g.robot_reaction == lx.ROBOT_REACTIONS[interaction]
+
+
+@pytest.mark.parametrize("phrase,place", [("the check-in kiosk", "checkin_kiosk"), ("ward b", "ward_b"),
+                                          ("the patient room c", "ward_c"), ("exam room 2", "exam_room_2")])
+def test_names_with_letters_numbers_and_hyphens(hospital, phrase, place):
+    g = one(read_prompt(f"Four visitors go to {phrase}.", hospital))
+    assert g.destination == place
+
+
+@pytest.mark.parametrize("prompt,expected", [
+    ("A nurse pushes a cart to ward b while two orderlies stand near the lifts.",
+     [("walk", "ward_b", None), ("wait", None, "elevator_hall")]),
+    ("Half a dozen kids run around the waiting room as their parents sit on the benches.",
+     [("wander", None, "main_waiting_room"), ("wait", None, "lobby_bench_1")]),
+    ("Around 30 people are in the cafeteria; a few of them leave through the terrace door.",
+     [("wait", None, "cafeteria"), ("walk", "cafeteria_terrace_door", None)]),
+])
+def test_verbs_the_lexicon_lacks_possessives_and_subsets(hospital, prompt, expected):
+    reading = read_prompt(prompt, hospital)
+    assert [(g.intent, g.destination, g.location) for g in reading.groups] == expected
+
+
+@pytest.mark.parametrize("phrase", ["run up to it", "walk over to it", "head towards it"])
+def test_it_is_the_robot_once_the_robot_was_named(hospital, phrase):
+    g = one(read_prompt(f"When the robot enters the lobby, three children {phrase}.", hospital))
+    assert g.robot_interaction == "approach" and g.destination is None

@@ -88,3 +88,12 @@ def test_the_cli_reports_a_bad_config_on_one_line_with_exit_2(elsewhere, monkeyp
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: GROVE_LLM_THREADS='abc'"), result.stderr
     assert result.exception is None or isinstance(result.exception, SystemExit)
+
+
+def test_the_app_refuses_a_bad_config_on_one_line_before_it_opens(elsewhere, capsys):
+    from grove_tui.tui.app import run_app
+
+    elsewhere.write_bytes(b"ui:\n  theme: [unclosed\n")
+    assert run_app() == EXIT_BAD_INPUT
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {elsewhere}: not valid YAML"), lines

@@ -60,17 +60,10 @@ class Terminal:
         subprocess.run([TMUX, "kill-session", "-t", self.name], capture_output=True)
 
 
-def simulated_time(screen: str) -> float:
-    match = re.search(r"t =\s+([0-9.]+) s", screen)
-    return float(match.group(1)) if match else -1.0
-
-
-def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
+def grove_env(tmp_path: Path, config: str) -> dict[str, str]:
     config_dir = tmp_path / "config"
-    config_dir.mkdir()
-    exports = tmp_path / "exports"
-    (config_dir / "config.yaml").write_text(
-        f"generation:\n  world: hospital\n  preset: queuing\nexport:\n  directory: {exports}\n", encoding="utf-8")
+    config_dir.mkdir(exist_ok=True)
+    (config_dir / "config.yaml").write_text(config, encoding="utf-8")
     env = {
         "GROVE_CONFIG_DIR": str(config_dir),
         "GROVE_DATA_DIR": str(tmp_path / "data"),
@@ -81,6 +74,20 @@ def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
     # The retrieval index lives in the user's cache, built once per machine, as for any `grove` user.
     if os.environ.get("GROVE_TEST_CACHE_DIR"):
         env["GROVE_CACHE_DIR"] = os.environ["GROVE_TEST_CACHE_DIR"]
+    # A worktree's code, when the tests run with PYTHONPATH pointing at it (the command is installed editable).
+    if os.environ.get("PYTHONPATH"):
+        env["PYTHONPATH"] = os.environ["PYTHONPATH"]
+    return env
+
+
+def simulated_time(screen: str) -> float:
+    match = re.search(r"t =\s+([0-9.]+) s", screen)
+    return float(match.group(1)) if match else -1.0
+
+
+def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
+    exports = tmp_path / "exports"
+    env = grove_env(tmp_path, f"generation:\n  world: hospital\n  preset: queuing\nexport:\n  directory: {exports}\n")
 
     started = time.monotonic()
     terminal = Terminal(shlex.quote(GROVE or "grove"), env)
@@ -127,5 +134,22 @@ def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
         terminal.keys("Escape")
         terminal.keys("C-q")
         terminal.wait_for(r"GROVE-EXITED 0", 20, "a clean exit")
+    finally:
+        terminal.close()
+
+
+def test_quit_takes_under_a_second_once_everything_is_loaded(tmp_path):
+    """Issue 21 item 14: ctrl+q to the shell prompt, with both models and the embedder warm."""
+    env = grove_env(tmp_path, "generation:\n  world: hospital\n  preset: queuing\n")
+    terminal = Terminal(shlex.quote(GROVE or "grove"), env, 80, 24)
+    try:
+        terminal.wait_for(r"Generate", 30, "the setup screen")
+        terminal.wait_for(r"ready to generate", 300, "models and embedder warm")
+        started = time.monotonic()
+        terminal.keys("C-q")
+        terminal.wait_for(r"GROVE-EXITED 0", 20, "a clean exit")
+        seconds = time.monotonic() - started
+        print(f"\nquit took {seconds:.2f} s")
+        assert seconds < 1.0, f"quit took {seconds:.2f} s"
     finally:
         terminal.close()

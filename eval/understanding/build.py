@@ -673,7 +673,7 @@ def build_cases() -> list[dict]:
                 clause = maker(slots)
                 check_places(world, clause)
                 prompt = sentence(clause.text)
-                if prompt in seen:
+                if prompt in seen or not fits(world, clause):
                     continue
                 seen.add(prompt)
                 index += 1
@@ -686,6 +686,33 @@ def build_cases() -> list[dict]:
                     "expect": {"groups": clause.groups, "unknown_places": clause.unknown},
                 })
     return cases
+
+
+# People a zone can take as a destination or a place to stay: one per two square metres of its area,
+# so the scenario the sentence asks for can be built (a world's small rooms refuse larger groups).
+PEOPLE_PER_M2 = 0.5
+
+
+def _typical(count: dict) -> float:
+    if "value" in count:
+        return float(count["value"])
+    low, high = count["range"]
+    return low + (high - low) / 4  # a reader's seeded choice sits low in a wide range more often than not
+
+
+def fits(world: World, clause: Clause) -> bool:
+    """Whether the groups sent to (or staying in) each zone fit in it at PEOPLE_PER_M2."""
+    load: dict[str, float] = {}
+    for expected in clause.groups:
+        target = expected.get("destination") or expected.get("location")
+        if target is None:
+            continue
+        place = world.find(target)
+        zone = target if hasattr(place, "boundary") else place.zone
+        if getattr(place, "leads_to", None) == "outside":
+            continue  # people leaving by an exit do not stay in its zone
+        load[zone] = load.get(zone, 0.0) + _typical(expected["count"])
+    return all(people <= world.zone(zone).polygon.area * PEOPLE_PER_M2 for zone, people in load.items())
 
 
 def check_places(world: World, clause: Clause) -> None:

@@ -117,8 +117,9 @@ class Trajectories:
 
 
 TRAJECTORY_COLUMNS = ["frame", "t", "id", "x", "y", "vx", "vy", "yaw", "group"]
-# Rows parsed per block: about 70 MB of float64 whatever the run's length.
-ROWS_PER_BLOCK = 1_000_000
+# Rows parsed per block: 250,000 rows (500 frames of 500 people) keep the metrics step's peak near
+# 0.5 GB with the hospital's walls whatever the run's length (bench/metrics_memory.py).
+ROWS_PER_BLOCK = 250_000
 
 
 def iter_row_blocks(path: str | Path, rows_per_block: int = ROWS_PER_BLOCK,

@@ -165,11 +165,6 @@ def hunav_loading_problems(xml: str | bytes) -> list[str]:
     return problems
 
 
-def node_ids(xml: str | bytes) -> list[str]:
-    """Node IDs used in the trees of a document (in document order, repeated)."""
-    return [element.id for element in _read(xml).nodes()]
-
-
 def hold_forever(wait_seconds: float):
     """A subtree that stands still and never completes.
 

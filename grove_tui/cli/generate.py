@@ -191,20 +191,29 @@ def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite:
 @click.argument("jobs_file", type=click.Path(dir_okay=False))
 @click.option("--out", "out_dir", type=click.Path(), required=True, help="Folder for the bundles, one per job.")
 @click.option("--overwrite", is_flag=True, help="Replace job folders even when they are not bundles.")
+@click.option("--resume", is_flag=True,
+              help="Skip jobs an earlier run of this --out completed with the same inputs (batch-state.jsonl).")
+@click.option("--ray", "ray_address", is_flag=False, flag_value="local", default=None, metavar="[ADDRESS]",
+              help="Run the jobs on Ray actors: alone a private local Ray, or `auto` / `ray://host:port` for a "
+                   "cluster (needs ./install.sh cluster).")
+@click.option("--workers", type=click.IntRange(1, 100_000), default=None,
+              help="Ray actors to start (default: one per CPU of the Ray cluster).")
 @click.option("--roi-model", type=click.Path(dir_okay=False), default=None)
 @click.option("--bt-model", type=click.Path(dir_okay=False), default=None)
 @click.pass_context
-def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi_model: str | None,
-          bt_model: str | None) -> None:
-    """Generate many scenarios from a JSONL file, loading the models once.
+def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, resume: bool, ray_address: str | None,
+          workers: int | None, roi_model: str | None, bt_model: str | None) -> None:
+    """Generate many scenarios from a JSONL file, loading the models once (per Ray worker with --ray).
 
     Each line: {"world": ..., "preset": ..., "prompt": ..., "seed": 0, "name": "optional-dir-name",
-    "simulate": optional seconds}. Every line is checked before any job runs: bad lines (and lines
-    whose name another line already uses) are reported with their line numbers and skipped, the good
-    ones run. A failed job is reported and the batch goes on. Exit code: 2 when any line was refused,
-    else 3 when any job failed, else 0.
+    "simulate": optional seconds, "variations": optional N}. Every line is checked before any job runs:
+    bad lines (and lines whose name another line already uses) are reported with their line numbers and
+    skipped, the good ones run. A failed job is recorded (batch-state.jsonl: message and exit code) and
+    the batch goes on; --out/dataset.sqlite indexes every scenario. Exit code: 2 when any line was
+    refused, else 3 when any job failed, else 0.
     """
-    from grove_tui.errors import JobFileError, describe_error
+    from grove_tui.errors import JobFileError
+    from grove_tui.services.batch import run_batch
     from grove_tui.services.jobs import read_jobs
 
     err, out = _err(), _out()
@@ -218,34 +227,73 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
     for problem in problems:
         err.print(f"error: {jobs_file}:{problem.line}: {problem.message}", markup=False, highlight=False)
     progresses: list[Progress] = []
+    bar = _BatchBar(err) if ray_address is not None else None
 
     def events_for(index: int, job: Any) -> Progress:
         progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] "))
         return progresses[-1]
 
-    def report(index: int, outcome: Any) -> None:
-        progresses[-1].stop()
-        if outcome.error is not None:
-            out.print(f"failed {outcome.bundle} {describe_error(outcome.error).message}", markup=False)
+    def started(to_run: list[Any], skipped: list[Any]) -> None:
+        if skipped:
+            err.print(f"resume: {len(skipped)} completed job(s) skipped, {len(to_run)} to run", markup=False)
+        if bar is not None:
+            bar.start(len(to_run))
+
+    def report(record: Any) -> None:
+        if progresses:
+            progresses[-1].stop()
+        if bar is not None:
+            bar.advance()
+        bundle = Path(out_dir) / record.name
+        if not record.ok:
+            out.print(f"failed {bundle} (exit {record.exit_code}) {record.message}", markup=False)
             return
-        result = outcome.generated.result
-        exports = "".join(f" {kind}={path}" for kind, path in outcome.exports.items())
-        out.print(f"ok {outcome.bundle} agents={len(result.scenario.agents)} "
-                  f"prompt_tokens={result.report['prompt_tokens']} seconds={result.report['total_seconds']:.2f}"
-                  f"{exports}", markup=False)
+        exports = "".join(f" {kind}={path}" for kind, path in record.exports)
+        out.print(f"ok {bundle} agents={record.agents} prompt_tokens={record.prompt_tokens} "
+                  f"seconds={record.seconds:.2f}{exports}", markup=False)
 
     try:
         with session:
-            outcomes = session.batch(jobs, Path(out_dir), overwrite=overwrite, events_for=events_for,
-                                     on_outcome=report)
-    except BaseException:
+            result = run_batch(session, jobs, Path(out_dir), overwrite=overwrite, resume=resume,
+                               ray_address=ray_address, workers=workers, on_start=started,
+                               events_for=None if bar is not None else events_for, on_record=report)
+    finally:
         if progresses:
             progresses[-1].stop()
-        raise
-    failures = sum(1 for outcome in outcomes if outcome.error is not None)
+        if bar is not None:
+            bar.stop()
+    done = len(result.records) - result.failures + len(result.skipped)
     total = len(jobs) + len(problems)
-    err.print(f"{len(jobs) - failures}/{total} scenarios generated")
-    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_RUNTIME_FAILURE if failures else EXIT_OK)
+    err.print(f"{done}/{total} scenarios generated; index: {result.index}")
+    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_RUNTIME_FAILURE if result.failures else EXIT_OK)
+
+
+class _BatchBar:
+    """A rich progress bar for a Ray batch: jobs done, scenarios per hour, time left."""
+
+    def __init__(self, console: Console) -> None:
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress as RichProgress, TextColumn, \
+            TimeElapsedColumn, TimeRemainingColumn
+
+        self._progress = RichProgress(TextColumn("batch"), BarColumn(), MofNCompleteColumn(),
+                                      TextColumn("{task.fields[rate]}"), TimeElapsedColumn(), TextColumn("ETA"),
+                                      TimeRemainingColumn(), console=console, transient=False)
+        self._task: Any = None
+
+    def start(self, total: int) -> None:
+        self._task = self._progress.add_task("batch", total=total, rate="")
+        self._progress.start()
+
+    def advance(self) -> None:
+        if self._task is None:
+            return
+        self._progress.advance(self._task)
+        task = self._progress.tasks[0]
+        if task.elapsed:
+            self._progress.update(self._task, rate=f"{task.completed / task.elapsed * 3600:.0f}/h")
+
+    def stop(self) -> None:
+        self._progress.stop()
 
 
 def _finite(value: float | None, param: click.Parameter) -> float | None:

@@ -25,6 +25,7 @@ from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import reconcile
+from grove_tui.language import lexicon as lx
 from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
 from grove_tui.language.reading import PromptReading
 
@@ -391,26 +392,15 @@ def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
                                   f"group; preset '{preset.name}' allows at most {preset.limits.max_count} per group")
 
 
-_SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
-_GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
-QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
+# The older clause rules' word tables live in the one lexicon (language/lexicon.py, "Clause rules
+# without a reading"): this module only applies them when the reader found no group.
+_SPAWN_PREPOSITIONS = lx.CLAUSE_SPAWN_PREPOSITIONS
+_GOAL_PREPOSITIONS = lx.CLAUSE_GOAL_PREPOSITIONS
+QUEUE_WORDS = lx.CLAUSE_QUEUE_WORDS
 _CLAUSE_BREAK = re.compile(r"\b(?:while|whilst|whereas|meanwhile|but)\b|[;.]", re.IGNORECASE)
-# What a group's own words say it does. Stricter than QUEUE_WORDS: "wait" alone is not a queue.
-_INTENT_WORDS = {
-    "queue": frozenset("queue queuing queueing queued lining line turn served".split()),
-    "converse": frozenset("chat chatting chatted talk talking talked converse conversing conversation gossip "
-                          "gossiping discuss discussing socialise socialize socialising socializing".split()),
-    "wander": frozenset("wander wandering wandered stroll strolling strolled roam roaming browse browsing "
-                        "meander meandering mill milling".split()),
-    "walk": frozenset("walk walking walked go going goe gone head heading move moving come coming leave leaving "
-                      "hurry hurrying run running rush rushing return returning visit visiting enter entering "
-                      "cross crossing arrive arriving proceed proceeding".split()),
-}
-
-
-_ARRIVAL_VERBS = frozenset("come comes coming came enter enters entering entered arrive arrives arriving arrived".split())
-_DEPARTURE_VERBS = frozenset("leave leaves leaving left exit exits exiting exited go goes going went walk walks "
-                             "walking walked head heads heading headed".split())
+_INTENT_WORDS = lx.CLAUSE_INTENT_WORDS
+_ARRIVAL_VERBS = lx.CLAUSE_ARRIVAL_VERBS
+_DEPARTURE_VERBS = lx.CLAUSE_DEPARTURE_VERBS
 
 
 def _words_with_prepositions(text: str) -> Iterator[tuple[str, str]]:

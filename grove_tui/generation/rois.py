@@ -19,60 +19,17 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from grove_tui.generation.presets import Preset, PromptError
+from grove_tui.language import lexicon as lx
 from grove_tui.language.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, words
 from grove_tui.language.reading import PromptReading, read_prompt
 
-# Groups of words people use for the same kind of place; matching any word of a group counts as
-# matching the others, at a discount so that the literal word still wins.
-SYNONYMS: tuple[frozenset[str], ...] = tuple(
-    frozenset(group.split())
-    for group in (
-        "toilet restroom bathroom washroom wc lavatory",
-        "cafeteria canteen cafe coffee dining restaurant",
-        "lobby foyer entrance entry hall atrium",
-        "reception front desk check",
-        "corridor hallway hall passage aisle",
-        "exit way out door gate",
-        "stair stairs staircase stairway",
-        "elevator lift",
-        "kitchen kitchenette pantry",
-        "living lounge sitting family",
-        "bedroom bed sleeping",
-        "office workspace desk cubicle",
-        "meeting conference boardroom",
-        "ward patient room",
-        "pharmacy drugstore dispensary chemist medicine",
-        "emergency er ae casualty",
-        "sofa couch settee",
-        "vending machine snack",
-        "counter desk booth till",
-        "garden yard patio terrace balcony",
-        "study library",
-        "printer copier print",
-    )
-)
-
-# Nouns that follow "in the", "at the", "to the" without naming a place.
-NON_PLACES = frozenset(
-    """robot robots time same moment morning afternoon evening night day hour minute second end start beginning
-    middle front back side corner center centre way direction line queue row circle group pair hurry rush
-    panic order turn silence distance speed pace crowd other each everyone someone people person alarm fire
-    emergency evacuation meantime while chance case past future background foreground left right top bottom
-    area place spot location here there building house home flat apartment premises site facility hospital
-    clinic floor scene""".split()
-)
-_LOCATIVES = ("in", "at", "to", "into", "near", "inside", "from", "toward", "towards", "by", "through", "across",
-              "around", "outside", "beside", "behind", "past", "onto", "via", "within", "reach", "visit", "enter",
-              "leave", "exit", "use")
+# The word tables (place synonyms, determiners, place modifiers, door and behavior words, locatives)
+# are the one lexicon's: language/lexicon.py.
+SYNONYMS = lx.PLACE_SYNONYMS
+_LOCATIVES = lx.LOCATIVE_WORDS
 _BREAKS = frozenset(_LOCATIVES) | {"and", "or", "while", "then", "with", "but", "where", "when"}
-_DETERMINERS = ("the", "a", "an", "their", "our", "its", "his", "her", "my", "your", "this", "that", "some")
-# Words that qualify a place without naming one ("the nearest exit", "the other corridor").
-_PLACE_MODIFIERS = frozenset({
-    "nearest", "closest", "nearby", "near", "far", "farthest", "furthest", "other", "same", "next", "first",
-    "last", "main", "back", "front", "side", "rear", "left", "right", "north", "south", "east", "west",
-    "northern", "southern", "eastern", "western", "big", "small", "large", "little", "new", "old", "busy",
-    "empty", "quiet", "crowded", "open", "closed", "whole", "entire", "central", "middle", "upper", "lower",
-})
+_DETERMINERS = lx.DETERMINERS
+_PLACE_MODIFIERS = lx.PLACE_MODIFIERS
 
 
 @dataclass(frozen=True)
@@ -112,15 +69,8 @@ class _Entry:
     obj: Any
 
 
-# Words that say what people do, not where; they select a place only through its name or aliases
-# ("waiting room"), never through a tag ("queue" on a counter, "fire" on an exit).
-BEHAVIOR_WORDS = frozenset(
-    """queue line wait walk go come leave enter chat talk converse meet sit stand rest eat drink buy pay evacuate
-    evacuation escape flee run rush alarm fire emergency panic wander roam stroll browse look watch follow visit
-    work help serve crowd gather hurry waiting queuing""".split()
-)
-# A door is a selected RoI only when the prompt speaks of a door, not merely of the rooms it joins.
-DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
+BEHAVIOR_WORDS = lx.BEHAVIOR_WORDS
+DOOR_WORDS = lx.DOOR_WORDS
 
 
 def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:

@@ -228,7 +228,9 @@ class _Reader:
         return rng.randint(low, high)
 
     def _is_punct(self, i: int) -> bool:
-        return self.w[i].pos == "PUNCT" or self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
+        # "b." at a sentence end is tagged PUNCT by the small model, but it is a word with a full stop
+        return (self.w[i].pos == "PUNCT" and not any(ch.isalnum() for ch in self.low[i])) or \
+            self.low[i] in {",", ";", ":", ".", "!", "?", "-", "--", "—", "(", ")"}
 
     def _lemma(self, i: int) -> str:
         return lemma(self.low[i])
@@ -257,6 +259,8 @@ class _Reader:
         w = self.low[i].replace(",", "")
         if w.isdigit():
             value, j = int(w), i + 1
+            if j < self.n and self.low[j] in lx.SCALES:  # "10 million people": read, so it can be refused
+                value, j = value * lx.SCALES[self.low[j]], j + 1
         elif w in lx.UNITS or w in lx.TENS:
             total, current, j = 0, 0, i
             while j < self.n:
@@ -279,8 +283,11 @@ class _Reader:
             value = total + current
         elif w == "dozen":
             value, j = 12, i + 1
-        elif w in ("a", "an") and i + 1 < self.n and self.low[i + 1] in ("dozen", "hundred"):
-            value, j = (12 if self.low[i + 1] == "dozen" else 100), i + 2
+        elif w in ("a", "an") and i + 1 < self.n and (self.low[i + 1] == "dozen" or self.low[i + 1] in lx.SCALES):
+            # "a thousand", "a billion people": read as numbers, so check_population refuses them.
+            value, j = (12 if self.low[i + 1] == "dozen" else lx.SCALES[self.low[i + 1]]), i + 2
+        elif w == "half" and tuple(self.low[i + 1:i + 3]) == ("a", "dozen"):
+            value, j = 6, i + 3  # "half a dozen"
         else:
             return None
         if j < self.n and self.low[j] == "dozen" and w != "dozen":
@@ -371,8 +378,11 @@ class _Reader:
         exclusive = self._exclusive_context(s)
         # Relations: "one of them", "two of the patients", "some of them"
         num = self._quantifier(j)
-        if num is not None and num[2] < self.n and low[num[2]] == "of" and num[2] + 1 < self.n:
-            k = num[2] + 1
+        # "a few of" is read with its "of" by the quantifier; "two of" leaves it
+        of_at = num[2] if num is not None and num[2] < self.n and low[num[2]] == "of" else (
+            num[2] - 1 if num is not None and low[num[2] - 1] == "of" else None)
+        if of_at is not None and of_at + 1 < self.n:
+            k = of_at + 1
             if low[k] in ("them", "those", "these", "us", "whom") or (low[k] == "the" and k + 1 < self.n and
                                                                    self._is_person_noun(k + 1)):
                 last = k if low[k] != "the" else k + 1
@@ -430,6 +440,11 @@ class _Reader:
         if low[s] == "another":
             head = self._person_head(s + 1, counted=False)
             parent = self._parent(found, plain=True)
+            if head is not None and self._lemma(head) in lx.IMPLIED_RANGES:
+                collective = self._collective(head, None, s)  # "another group": a group's size, not one
+                if collective is not None:
+                    collective.relation = f"more_of:{parent}" if parent is not None else None
+                    return collective
             last = head if head is not None else s
             label = self._label(head) if head is not None else (found[parent].label if parent is not None else "person")
             return _Mention(s, last, self._span(s, last), label, Count("exact", 1, 1, 1),
@@ -455,7 +470,7 @@ class _Reader:
                                 relation=f"others_of:{parent}" if parent is not None else None)
             return self._counted(s, value_part, found, exclusive)
         # Bare phrases: "visitors", "the nurses", "a nurse", "other visitors", "people"
-        k = self._skip(s, {"the", "a", "an", "other"})
+        k = self._skip(s, {"the", "a", "an", "other", "their", "his", "her", "our", "its"})
         det = low[s] if k > s else ""
         other = "other" in low[s:k]
         head = self._person_head(k, counted=False)
@@ -715,8 +730,10 @@ class _Reader:
                          for i in range(self.n))
         # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
         for k in range(len(clauses) - 2, -1, -1):
-            if not clauses[k].has_action and clauses[k + 1].has_action and \
-                    self.w[mentions[k].first].sentence == self.w[mentions[k + 1].first].sentence:
+            between = range(mentions[k].last + 1, mentions[k + 1].first)
+            if not clauses[k].has_action and clauses[k + 1].has_action and mentions[k + 1].relation is None and \
+                    self.w[mentions[k].first].sentence == self.w[mentions[k + 1].first].sentence and \
+                    not any(self.low[x] in (";", ".", ":") for x in between):
                 own = clauses[k]
                 shared = replace(clauses[k + 1], places=own.places + clauses[k + 1].places)
                 clauses[k] = shared
@@ -726,6 +743,11 @@ class _Reader:
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
+    def _hyphen_inside(self, j: int) -> bool:
+        """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
+        return self.low[j] == "-" and 0 < j < self.n - 1 and self.low[j - 1][-1:].isalnum() and \
+            self.low[j + 1][:1].isalnum() and self.w[j].start == self.w[j - 1].end
+
     def _fronted_start(self, previous_last: int, first: int) -> int:
         """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
         no verb, opened by a preposition and closed by a comma; else the mention itself."""
@@ -733,13 +755,15 @@ class _Reader:
         if b <= previous_last or self.low[b] != ",":
             return first
         j = b - 1
-        while j > previous_last and not self._is_punct(j) and self.low[j] not in lx.CLAUSE_STARTERS:
+        while j > previous_last and (not self._is_punct(j) or self._hyphen_inside(j)) \
+                and self.low[j] not in lx.CLAUSE_STARTERS:
             j -= 1
         fronted = range(j + 1, b)
         if not fronted or self.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
             return first
-        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS for x in fronted):
-            return first
+        if any(self.w[x].pos == "VERB" and verb_lemma(self.low[x]) in lx.INTENT_VERBS
+               and not self.index.knows(lemma(self.low[x])) for x in fronted):
+            return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)
         return j + 1
 
     def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False) -> _Clause:
@@ -749,7 +773,10 @@ class _Reader:
         ownset = set(own)
         used: set[int] = set()
         # Robot interaction: phrases, then verbs, then feelings, when the robot is in the clause.
-        robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS]
+        # "it" is the robot after the robot was named in the sentence ("when the robot enters, they run up to it")
+        robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS or (
+            low[i] == "it" and any(low[k] in lx.ROBOT_WORDS and self.w[k].sentence == self.w[i].sentence
+                                   for k in range(i)))]
         if robot_at:
             r = robot_at[0]
             for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
@@ -840,6 +867,8 @@ class _Reader:
                 if place is not None:
                     c.places.append(place)
                     used.update(range(i, place.end))
+                    i_pos = self._advance(own, place.end)  # "check in counter a": its "in" is not a new phrase
+                    continue
                 i_pos += 1
                 continue
             v = self._verb(i)
@@ -852,6 +881,9 @@ class _Reader:
                     if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                         c.places.append(place)
             i_pos += 1
+        if scene and any(low[i] in lx.ROBOT_WORDS for i in own):
+            c.places = [p for p in c.places if p.index < min(i for i in own if low[i] in lx.ROBOT_WORDS)]
+            # "When the robot enters the lobby, ...": the robot's places, not the people's
         if scene and own:
             # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
             # the sentence's people are.
@@ -877,6 +909,8 @@ class _Reader:
                                                                                      "way", "to")):
                         continue
                     candidates.append((i, lx.INTENT_VERBS[v], v))
+        if any(self.w[i].pos == "VERB" and self.w[i].lemma not in ("be", "have") and i not in used for i in own):
+            c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
         if candidates:
             c.has_action = True
             c.moves = any(kind in ("walk", "evacuate") for _, kind, _ in candidates)
@@ -1051,7 +1085,7 @@ class _Reader:
                 continue
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and self.index.knows(lemma(w))):
                 break
-            joined = False
+            after_hyphen, joined = joined, False
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
@@ -1063,10 +1097,13 @@ class _Reader:
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1
                 continue
-            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)):
+            if self.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not self.index.knows(lemma(w)) \
+                    and not after_hyphen:
                 break
             phrase.append(w)
             j += 1
+            if self.w[j - 1].text.endswith(".") and len(self.w[j - 1].text) > 1:
+                break  # "room b." at a sentence end: the full stop closes the phrase
         if not phrase:
             return None
         lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
@@ -1089,7 +1126,7 @@ class _Reader:
         for end in range(j + 2, min(j + 4, self.n) + 1):
             extended = phrase_lemmas(list(phrase) + self.low[j:end])
             longer = self.index.match(extended)
-            if longer is None or not longer.exact or (here is not None and longer.name == here.name):
+            if longer is None or not longer.exact or (here is not None and here.exact and longer.name == here.name):
                 continue
             # every word of the longer phrase must be the one place's: "check in counter a", not
             # "ward c to the nurses" (two places either side of a preposition)
@@ -1152,13 +1189,15 @@ class _Reader:
             if not c.moves:
                 destination = None
         kind, _, parent_index = (m.relation or "").partition(":")
-        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier) and \
-                start is None and destination is None and location is None:
-            # "one of them stares at the robot": a member of a group keeps its route unless told otherwise
+        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier):
             parent = earlier[int(parent_index)]
-            start, destination = parent.start, parent.destination
-            location = parent.location if stationary else None
-            via = list(parent.via)
+            if start is None and destination is None and location is None:
+                # "one of them stares at the robot": a member of a group keeps its route unless told otherwise
+                start, destination = parent.start, parent.destination
+                location = parent.location if stationary else None
+                via = list(parent.via)
+            elif start is None and not stationary:
+                start = parent.start or parent.location  # "a few of them leave": from where the group is
         count = m.count
         if m.whole_zone:
             zone = start or location or destination

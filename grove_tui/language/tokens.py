@@ -33,7 +33,7 @@ _IRREGULAR_VERBS = {
 _KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
 _KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
     "look keep stay step back shy steer move get stand line form hang catch have sit mill take lead see "
-    "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help "
+    "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help tag "
     "clean guard patrol deliver carry push wheel bring drive fill sign book".split())
 
 

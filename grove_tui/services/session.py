@@ -182,6 +182,11 @@ class GroveSession:
         return self.load_world(request.world), self.load_preset(request.preset)
 
     # models ---------------------------------------------------------------------------------------------
+    @property
+    def model_options(self) -> tuple[str | None, str | None, str | None]:
+        """The (model, roi_model, bt_model) this session was made with, to make an equal one elsewhere (a Ray worker)."""
+        return self._cli_model, self._cli_roi, self._cli_bt
+
     def model_choices(self) -> dict[str, ModelChoice]:
         from grove_tui.llm.registry import resolve_models
 

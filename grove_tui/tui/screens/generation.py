@@ -149,7 +149,9 @@ class GenerationScreen(Screen[None]):
 The pipeline's stages run one after another: **RoIs** (the model picks the places the prompt
 talks about), **Retrieval** (behavior nodes that fit), **Tree synthesis** (the model writes the
 groups and their trees, streamed below), **Post-processing** (trees become BT.CPP XML per agent)
-and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** retries.
+and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** retries. The
+running stage shows its elapsed time, tokens, tokens/s and an ETA; **←/→** scroll the table
+sideways when a stage's detail is longer than the screen.
 """
 
     BINDINGS = [

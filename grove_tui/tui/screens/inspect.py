@@ -153,7 +153,9 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                 tree = BTTree("Scenario", id="bt-tree")
                 tree.border_title = f"Trees · {len(scenario.agents)} agents"
                 yield tree
-                xml = TextArea("", id="xml", read_only=True, show_line_numbers=False, soft_wrap=False)
+                # Soft wrap: at 80 columns a node's ports run far past the panel, and a read-only view has
+                # no reason to make the user scroll sideways to read them.
+                xml = TextArea("", id="xml", read_only=True, show_line_numbers=False, soft_wrap=True)
                 xml.border_title = "XML"
                 xml.display = False
                 yield xml

@@ -7,6 +7,7 @@ from typing import Any
 
 from rich.style import Style
 from rich.text import Text
+from textual.binding import Binding
 from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
@@ -64,10 +65,16 @@ class BTTree(Tree[BTNode]):
 ## Behavior trees
 
 One branch per group, one per agent, then the agent's BehaviorTree.CPP nodes with their ports
-(long waypoint lists are abbreviated; the panel below shows them all). Selecting an agent or a
-node highlights it on the map. During simulation each node shows its live status:
+(long waypoint lists are abbreviated; the panel below shows them all). **←/→** scroll long lines
+sideways. Selecting an agent or a node highlights it on the map. During simulation each node shows its live status:
 running, success, failure.
 """
+
+    # Labels longer than the panel (ports at 80 columns) scroll sideways; Tree binds neither key itself.
+    BINDINGS = [
+        Binding("right", "scroll_right", "Scroll right", show=False, id="bt.scroll_right"),
+        Binding("left", "scroll_left", "Scroll left", show=False, id="bt.scroll_left"),
+    ]
 
     COMPONENT_CLASSES = {"bt--running", "bt--success", "bt--failure", "bt--idle"}
     DEFAULT_CSS = """
