@@ -88,20 +88,11 @@ def _roi_table(world: World) -> Table:
 @worlds.command("check")
 @click.argument("files", nargs=-1, required=True)
 def check_command(files: tuple[str, ...]) -> None:
-    """Validate world YAML FILES (or shipped names) and print every problem; exits 1 if any."""
+    """Validate world YAML FILES (or shipped names) and print every problem; exits 1 if any, 2 if a file is missing."""
     console = _console()
     total = 0
     for item in files:
-<<<<<<< HEAD
-        try:
-            path = resolve_world_path(item)
-        except WorldError as error:
-            console.print(Text(str(error), style="red"))
-            total += 1
-            continue
-=======
         path = resolve_world_path(item)  # a missing file is bad input (exit 2), not a problem of a world
->>>>>>> main
         # One parse: load_world reports every problem on its WorldError (a 20,000-zone world parsed
         # twice took twice as long).
         try:
