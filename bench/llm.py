@@ -19,7 +19,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from grove_tui.generation.draft import DraftError, build_draft_schema, parse_draft  # noqa: E402
 from grove_tui.llm.embedded import CANDIDATES, EMBEDDED_MODEL, embedded_model_path  # noqa: E402
-from grove_tui.llm.errors import ModelError  # noqa: E402
+from grove_tui.errors import ModelError  # noqa: E402
 from grove_tui.llm.grammar import schema_to_gbnf  # noqa: E402
 from grove_tui.llm.local import LocalLLM  # noqa: E402
 

@@ -203,7 +203,7 @@ def test_cli_manifest_and_validate(tmp_path):
     result = runner.invoke(bt, ["validate", str(good)])
     assert result.exit_code == 0 and "good.xml: ok" in result.output
     result = runner.invoke(bt, ["validate", str(good), str(bad), str(tmp_path / "missing.xml")])
-    assert result.exit_code == 1
+    assert result.exit_code == 2  # a missing file is bad input; the others are still checked and listed
     assert f"{bad}:4: GoTo: missing required port 'target'" in result.output
     assert f"{bad}:5: Wander: port 'duration' (float): expected a number, got 'x'" in result.output
     assert "missing.xml: does not exist" in result.output

@@ -49,7 +49,7 @@ def test_scenario_error_is_a_grove_error_and_not_a_plain_value_error():
 
 def test_the_modules_that_raise_an_error_re_export_the_same_class():
     from grove_tui.generation.presets import GenerationError, PromptError
-    from grove_tui.llm.errors import ModelError as LlmModelError
+    from grove_tui.errors import ModelError as LlmModelError
     from grove_tui.scenario.model import ScenarioError
     from grove_tui.world import WorldError
 

@@ -155,15 +155,14 @@ def test_truncated_gguf(tmp_path, tiny_path):
         LocalLLM(cut)
 
 
-def test_a_file_llama_cpp_cannot_load_is_reported_with_its_log(tmp_path, tiny_path):
-    """Header intact, tensor data cut short: only llama.cpp notices, and its reason reaches the message."""
+def test_a_file_with_its_tensor_data_cut_short_is_refused_before_llama_cpp_loads_it(tmp_path, tiny_path):
+    """Header intact, tensor data cut short (an interrupted download): the header's tensor table says
+    how many bytes must follow, so the file is refused with that reason and no worker starts."""
     damaged = tmp_path / "damaged.gguf"
     data = tiny_path.read_bytes()
     damaged.write_bytes(data[: len(data) * 9 // 10])
-    llm = LocalLLM(damaged, role="roi", n_threads=1)
-    with pytest.raises(ModelError, match="llama.cpp could not load"):
-        llm.generate("hi", max_tokens=4)
-    assert not llm.running
+    with pytest.raises(ModelError, match="truncated: its tensors need"):
+        LocalLLM(damaged, role="roi", n_threads=1).generate("hi", max_tokens=4)
 
 
 def test_unsupported_architecture(tmp_path):

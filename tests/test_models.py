@@ -15,7 +15,7 @@ from helpers.tiny_qwen3 import build_tiny_qwen3
 from grove_tui.cli import main as grove
 from grove_tui.llm import pull as pull_module
 from grove_tui.llm.embedded import EMBEDDED_MODEL, embedded_model_path
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import ModelError
 from grove_tui.llm.gguf_info import read_gguf_info
 from grove_tui.llm.pull import CatalogEntry, pull_model
 from grove_tui.errors import SettingsError

@@ -35,15 +35,19 @@ def manifest(as_list: bool, preset: str | None) -> None:
 def validate(files: tuple[str, ...]) -> None:
     """Check behavior-tree XML files against the manifest; print every problem with its line.
 
-    Exit status 1 when any file has a problem, 2 when a file is missing.
+    Exit status 1 when any file has a problem, 2 when a file is missing (the others are still checked).
     """
+    import os
+
     from grove_tui.bt.xml import check_tree_file
     from grove_tui.errors import BadInputError
 
-    missing = [path for path in files if not Path(path).is_file()]
-    if missing:
+    missing = [path for path in files if not os.path.lexists(path)]
+    if len(missing) == len(files):
         # Nothing to check is bad input (exit 2), unlike a tree with problems (exit 1).
         raise BadInputError(f"{missing[0]}: no such tree file" + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))
+    # Like a linter: every file is checked and every problem listed (devices, pipes and links to them
+    # are problems of their own, named by check_tree_file), then the worst status wins.
     bad = 0
     for path in files:
         problems = check_tree_file(path)
@@ -55,4 +59,4 @@ def validate(files: tuple[str, ...]) -> None:
             click.echo(f"{path}: ok")
     if bad:
         click.echo(f"{bad} of {len(files)} file(s) have problems", err=True)
-        sys.exit(1)
+        sys.exit(2 if missing else 1)

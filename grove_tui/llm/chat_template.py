@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import ModelError
 
 QWEN3_EMPTY_THINK = "<think>\n\n</think>\n\n"
 QWEN3_ASSISTANT_START = "<|im_start|>assistant\n"

@@ -18,7 +18,7 @@ import tempfile
 from pathlib import Path
 
 from grove_tui.settings import cache_dir
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import ModelError
 
 EMBEDDED_MODEL = "smollm2"
 CANDIDATES = ("smollm2", "gemma3")

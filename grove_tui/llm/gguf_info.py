@@ -17,7 +17,7 @@ from typing import Any
 
 import gguf
 
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import ModelError
 
 GGUF_MAGIC = b"GGUF"
 # gguf knows these architectures, but they embed, encode or tokenize audio: nothing to chat with.

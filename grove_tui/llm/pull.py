@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.settings import models_dir
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import ModelError
 from grove_tui.llm.gguf_info import GGUF_MAGIC
 
 DEFAULT_ENDPOINT = "https://huggingface.co"

@@ -23,7 +23,7 @@ from typing import Any
 
 from grove_tui.settings import GroveSettings, config_file, load_settings, models_dir
 from grove_tui.llm.embedded import EMBEDDED_MODEL, embedded_model_path
-from grove_tui.llm.errors import ModelError
+from grove_tui.errors import ModelError
 from grove_tui.llm.gguf_info import GGUFInfo, check_gguf_file, read_gguf_info
 
 ROLES = ("roi", "bt")

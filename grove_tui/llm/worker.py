@@ -129,7 +129,7 @@ class _Server:
         return self.llm.tokenize(text.encode("utf-8"), add_bos=add_bos, special=True)
 
     def handle(self, request: dict[str, Any]) -> None:
-        from grove_tui.llm.errors import ModelError
+        from grove_tui.errors import ModelError
 
         try:
             text = self.prompt_text(request)
