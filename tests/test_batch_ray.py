@@ -18,16 +18,17 @@ from grove_tui.services.dataset import STATE_FILE, read_records
 
 ray = pytest.importorskip("ray", reason="the cluster extra is not installed (./install.sh cluster)")
 
+# One world and preset: each process (and each Ray worker) builds its pipeline once, which dominates a
+# short batch on a loaded 2-core machine.
 JOBS = [
     {"world": "hospital", "preset": "normal", "prompt": "a few visitors walk to the cafeteria", "seed": 1,
-     "name": "visitors", "variations": 3},
-    {"world": "residential", "preset": "normal", "prompt": "Two children walk to the kitchen", "name": "kids",
+     "name": "visitors", "variations": 4},
+    {"world": "hospital", "preset": "normal", "prompt": "Two nurses walk to the pharmacy", "name": "nurses",
      "variations": 2},
-    {"world": "hospital", "preset": "queuing", "prompt": "Six patients queue at the pharmacy counter", "name": "queue"},
     # The hospital has no swimming pool: this job fails, the six others must still be written.
     {"world": "hospital", "preset": "normal", "prompt": "Ten people swim in the swimming pool", "name": "pool"},
 ]
-GOOD = ["visitors-v000", "visitors-v001", "visitors-v002", "kids-v000", "kids-v001", "queue"]
+GOOD = ["visitors-v000", "visitors-v001", "visitors-v002", "visitors-v003", "nurses-v000", "nurses-v001"]
 
 
 @pytest.fixture(autouse=True)
@@ -48,6 +49,7 @@ def _batch(jobs: Path, out: Path, *extra: str):
 
 @pytest.mark.slow
 @pytest.mark.ray
+@pytest.mark.timeout(2400)  # two batches of 7 jobs and a resume; about 10 minutes at load average 12 on 2 cores
 def test_ray_batch_matches_one_process_records_failures_and_resumes(tmp_path):
     jobs = tmp_path / "jobs.jsonl"
     jobs.write_text("".join(json.dumps(job) + "\n" for job in JOBS), encoding="utf-8")
@@ -79,7 +81,7 @@ def test_ray_batch_matches_one_process_records_failures_and_resumes(tmp_path):
             variations = db.execute("SELECT variation, variations, parent_seed FROM scenarios "
                                     "WHERE name = 'visitors-v002'").fetchone()
         assert rows == {**{name: "ok" for name in GOOD}, "pool": "failed"}
-        assert variations == (2, 3, 1)
+        assert variations == (2, 4, 1)
 
     summary = CliRunner().invoke(main, ["dataset", "summary", str(tmp_path / "ray")])
     assert summary.exit_code == 0, summary.output
