@@ -54,6 +54,7 @@ def _run(jobs_file: Path, out: Path, ray_address: str | None, workers: int | Non
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--variations", type=int, default=3)
+    parser.add_argument("--prompts", type=int, default=len(PROMPTS), help=f"how many of the {len(PROMPTS)} prompts")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--simulate", type=float, default=0.0, help="simulated seconds per scenario (0: none)")
     parser.add_argument("--out", type=Path, default=Path("/tmp/grove-bench-batch"))
@@ -61,7 +62,8 @@ def main() -> None:
     args.out.mkdir(parents=True, exist_ok=True)
     jobs_file = args.out / "jobs.jsonl"
     lines = []
-    for index, (world, preset, prompt) in enumerate(PROMPTS):
+    prompts = PROMPTS[:max(1, args.prompts)]
+    for index, (world, preset, prompt) in enumerate(prompts):
         job = {"world": world, "preset": preset, "prompt": prompt, "seed": index, "name": f"p{index}",
                "variations": args.variations}
         if args.simulate > 0:
@@ -69,7 +71,7 @@ def main() -> None:
         lines.append(json.dumps(job))
     jobs_file.write_text("\n".join(lines) + "\n", encoding="utf-8")
     cpus = os.cpu_count() or 1
-    print(f"{len(PROMPTS) * args.variations} jobs, {cpus} cores, load average {os.getloadavg()}")
+    print(f"{len(prompts) * args.variations} jobs, {cpus} cores, load average {os.getloadavg()}")
 
     figures = {}
     for label, address, workers in (("single", None, None), ("ray", "local", args.workers)):
