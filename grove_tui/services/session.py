@@ -39,7 +39,7 @@ if TYPE_CHECKING:
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.presets import Preset
     from grove_tui.llm.registry import ModelChoice
-    from grove_tui.services.jobs import BatchJob, JobProblem
+    from grove_tui.services.jobs import BatchJob, JobProblem, Variation
     from grove_tui.simulation.simulation import Simulation
     from grove_tui.world import World
 
@@ -57,6 +57,21 @@ class ScenarioRequest:
     prompt: str
     seed: int = 0
     robot: RobotRequest | None = None  # None: a robot placed by the pipeline
+    variation: Variation | None = None  # which of N variations of the prompt (recorded in generation.json)
+
+
+def variation_requests(request: ScenarioRequest, count: int) -> list[ScenarioRequest]:
+    """The `count` variations of a request: same prompt, seeds derived from its seed (jobs.variation_seed)."""
+    from dataclasses import replace
+
+    from grove_tui.services.jobs import Variation, check_variations, variation_seed
+
+    try:
+        check_variations(count)
+    except ValueError as exc:
+        raise BadInputError(str(exc)) from None
+    return [replace(request, seed=variation_seed(request.seed, index), variation=Variation(index, count, request.seed))
+            for index in range(count)]
 
 
 @dataclass
@@ -168,6 +183,11 @@ class GroveSession:
         return self.load_world(request.world), self.load_preset(request.preset)
 
     # models ---------------------------------------------------------------------------------------------
+    @property
+    def model_options(self) -> tuple[str | None, str | None, str | None]:
+        """The (model, roi_model, bt_model) this session was made with, to make an equal one elsewhere (a Ray worker)."""
+        return self._cli_model, self._cli_roi, self._cli_bt
+
     def model_choices(self) -> dict[str, ModelChoice]:
         from grove_tui.llm.registry import resolve_models
 
@@ -271,6 +291,8 @@ class GroveSession:
         check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
         pipeline = self.pipeline(request.world, request.preset, request.robot)
         result = pipeline.run(request.prompt, seed=request.seed, on_event=on_event, cancel=cancel)
+        if request.variation is not None:
+            result.report["variation"] = request.variation.to_dict(request.prompt)
         bundle = self.write_bundle(result, out_dir, overwrite=overwrite)
         return GeneratedScenario(request.prompt, request.world, request.preset, request.seed, world, result, bundle)
 
@@ -381,7 +403,8 @@ class GroveSession:
         cancellation stops the whole batch (it is raised); any other error is the job's outcome."""
         target = out_dir / job.name
         try:
-            generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed), target,
+            generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed,
+                                                      variation=job.variation), target,
                                       overwrite=overwrite, on_event=on_event, cancel=cancel)
             summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
             exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name) for kind in job.exports}
