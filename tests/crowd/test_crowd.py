@@ -250,7 +250,7 @@ def test_spawn_near_a_wall_is_pushed_out_with_a_warning():
     crowd = Crowd(np.array(box(0, 0, 5, 5), dtype=float))
     with pytest.warns(UserWarning, match="moved to"):
         i = crowd.add_agent((0.05, 2.0), radius=0.3)
-    assert crowd.pos[i, 0] == pytest.approx(0.15, abs=1e-9)
+    assert crowd.pos[i, 0] == pytest.approx(crowd.params.wall_clearance * 0.3, abs=1e-9)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         crowd.add_agent((2.5, 2.5))

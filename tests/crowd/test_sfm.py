@@ -87,8 +87,7 @@ def lightsfm_step(pos, vel, v0, radius, goals, goal_radius, group, walls, params
 def test_kernel_matches_a_direct_transcription_of_lightsfm():
     rng = np.random.default_rng(4)
     # lightsfm exactly: no theta shift, no contact term, every agent and wall within range.
-    params = SFMParams(epsilon=0.0, body_weight=0.0, cutoff=50.0, wall_range=50.0, wall_clearance=0.0,
-                      social_skip_exponent=math.inf)
+    params = SFMParams.lightsfm(cutoff=50.0, wall_range=50.0, wall_clearance=0.0)
     walls = np.array([[-1.0, -1.0, 9.0, -1.0], [9.0, -1.0, 9.0, 7.0]])
     crowd = Crowd(walls, params=params)
     n = 9
