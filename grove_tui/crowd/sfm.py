@@ -145,7 +145,7 @@ class SFMParams:
     # Body compression (1/s^2: force per kg per metre of overlap) acting only while two bodies, or a
     # body and a wall, overlap: Helbing, Farkas & Vicsek 2000, k = 1.2e5 kg/s^2 for an 80 kg person,
     # as JuPedSim's SFM. Not in lightsfm, whose Moussaid force let bodies overlap by 34 cm of 50 and
-    # walls by 12 cm (issue 19). SFMParams.lightsfm() gives lightsfm's forces exactly (tests/test_sfm.py).
+    # walls by 12 cm (issue 19). SFMParams.lightsfm() gives lightsfm's forces exactly (tests/crowd/test_sfm.py).
     body_weight: float = 1.2e5 / 80.0
     # Sliding friction (1/(m s)) along the contact tangent while bodies overlap: HFV 2000's
     # kappa = 2.4e5 kg/(m s) for 80 kg. It is what makes a jammed doorway slow.
@@ -565,7 +565,7 @@ def _fast_atan2(y, x):
     """atan2 within 3e-11 rad: one division, then an odd degree-23 fit of atan on [0, 1].
 
     libm's atan2 costs a third of a social-force pair; the fit keeps the kernel equal to
-    lightsfm to 1e-9 (tests/test_sfm.py) at a fifth less time per step.
+    lightsfm to 1e-9 (tests/crowd/test_sfm.py) at a fifth less time per step.
     """
     ax = abs(x)
     ay = abs(y)
