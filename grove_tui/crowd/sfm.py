@@ -102,7 +102,7 @@ _TINY = 1e-12
 _GOLDEN_ANGLE = 2.399963229728653
 # A standing person braces: the pull back to its spot may reach this multiple of the walking
 # drive (w_goal v0 / tau). Its speed stays clipped to v0, so it steps back no faster than it walks.
-# At 1x walkers shoved waiting people over 0.3 m (tests/test_physics_waiting.py).
+# At 1x walkers shoved waiting people over 0.3 m (tests/simulation/test_physics_waiting.py).
 HOLD_BRACE = 3.0
 # No nnan/ninf: the kernels rely on isfinite checks to keep every value finite.
 _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
