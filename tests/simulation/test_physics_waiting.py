@@ -8,7 +8,7 @@ import pytest
 from grove_tui.bt.xml import parse_tree_text
 from grove_tui.crowd.sfm import SFMParams
 from grove_tui.simulation.simulation import Simulation
-from tests.test_simulation_scenarios import agent, hall, tree_xml  # noqa: F401  (hall is a fixture)
+from helpers.hall import agent, tree_xml
 
 
 def crossing_crowd(hall, params):

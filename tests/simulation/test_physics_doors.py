@@ -6,7 +6,7 @@ import numpy as np
 import shapely
 
 from grove_tui.navigation.velocity_field import build_velocity_field
-from tests.test_simulation_scenarios import agent, hall, simulate  # noqa: F401  (hall is a fixture)
+from helpers.hall import agent, simulate
 
 LEAVE = '<FollowVelocityField exit="exit_door" field="group_0"/>'
 
