@@ -352,57 +352,40 @@ def score_scenario(case: UnderstandingCase, world: Any, scenario: Any, trees: Ma
     return score
 
 
+# The order classes enter a scenario sample: what the issue's must-show depends on first.
+SAMPLE_PRIORITY = ("compound_2", "robot_look", "evacuate", "queue", "robot_approach", "purpose", "wait_duration",
+                   "robot_avoid", "subset", "others", "robot_block", "structured", "whole_zone", "exclusive",
+                   "robot_follow", "pace", "compound_3", "together", "vague_count", "negation", "converse", "wander",
+                   "evacuate_compound", "more", "follow", "walk", "via", "approximate_count", "wait")
+
+
 def sample_cases(cases: Sequence[UnderstandingCase], n: int) -> list[UnderstandingCase]:
-    """N cases spread evenly over the suite (so over worlds and classes), refusals left out: a refused
-    prompt builds no scenario."""
+    """N cases over as many classes as N allows (SAMPLE_PRIORITY order, then any other class), the
+    world rotating from class to class and round to round; refusals are left out (a refused prompt
+    builds no scenario). Deterministic: the same suite gives the same sample."""
     pool = [c for c in cases if not c.unknown_places]
     if n <= 0 or not pool:
         return []
-    step = len(pool) / min(n, len(pool))
-    return [pool[int(i * step)] for i in range(min(n, len(pool)))]
-
-
-def run_scenarios(cases: Sequence[UnderstandingCase], out_dir: str | Path, *, bt_model: str | None = None,
-                  on_progress: Callable[[int, int, ScenarioScore], None] | None = None) -> list[ScenarioScore]:
-    """Generate each case with the local model (loaded once) and score the scenario; bundles are kept."""
-    from grove_tui.bt.manifest import NODES
-    from grove_tui.generation.pipeline import GenerationPipeline
-    from grove_tui.generation.presets import load_preset
-    from grove_tui.generation.retrieval import NodeRetriever
-    from grove_tui.llm.local import LocalLLM
-    from grove_tui.llm.registry import resolve_models
-    from grove_tui.scenario.bundle import write_bundle
-    from grove_tui.world import load_world
-
-    action_names = frozenset(name for name, spec in NODES.items() if spec.category == "action")
-    choice = resolve_models(None, bt_model, None)["bt"]
-    llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)
-    retriever = NodeRetriever()
-    pipelines: dict[tuple[str, str], Any] = {}
-    scores: list[ScenarioScore] = []
-    try:
-        for index, case in enumerate(cases, start=1):
-            started = time.perf_counter()
-            world = load_world(case.world)
-            key = (case.world, case.preset)
-            try:
-                if key not in pipelines:
-                    pipelines[key] = GenerationPipeline(world, load_preset(case.preset), None, llm, retriever)
-                result = pipelines[key].run(case.prompt, seed=case.seed)
-                bundle = write_bundle(result, Path(out_dir) / "bundles" / case.id)
-                trees = {a.tree: (Path(bundle) / a.tree).read_text(encoding="utf-8") for a in result.scenario.agents}
-                score = score_scenario(case, world, result.scenario, trees, action_names)
-            except GroveError as exc:
-                score = ScenarioScore(case, error=str(exc))
-                for name in SCENARIO_FIELDS:
-                    score.set(name, False, score.error)
-            score.seconds = time.perf_counter() - started
-            scores.append(score)
-            if on_progress is not None:
-                on_progress(index, len(cases), score)
-    finally:
-        llm.close()
-    return scores
+    by_class: dict[str, dict[str, list[UnderstandingCase]]] = {}
+    for case in pool:
+        by_class.setdefault(case.cls, {}).setdefault(case.world, []).append(case)
+    order = [c for c in SAMPLE_PRIORITY if c in by_class] + sorted(set(by_class) - set(SAMPLE_PRIORITY))
+    worlds = sorted({c.world for c in pool})
+    chosen: list[UnderstandingCase] = []
+    taken: set[str] = set()
+    for round_index in range(len(pool)):
+        for class_index, cls in enumerate(order):
+            if len(chosen) >= n:
+                return chosen
+            in_worlds = by_class[cls]
+            for shift in range(len(worlds)):
+                world = worlds[(class_index + round_index + shift) % len(worlds)]
+                options = [c for c in in_worlds.get(world, []) if c.id not in taken]
+                if options:
+                    chosen.append(options[0])
+                    taken.add(options[0].id)
+                    break
+    return chosen
 
 
 def summarize_scenarios(scores: Sequence[ScenarioScore]) -> dict[str, tuple[int, int]]:
@@ -505,6 +488,6 @@ def write_results(reading: Sequence[ReadingScore], scenarios: Sequence[ScenarioS
 
 
 __all__ = ["UnderstandingCase", "UnderstandingError", "load_cases", "score_reading", "run_reading",
-           "summarize_reading", "below_threshold", "score_scenario", "run_scenarios", "sample_cases",
+           "summarize_reading", "below_threshold", "score_scenario", "sample_cases",
            "summarize_scenarios", "write_results", "results_markdown", "results_csv", "expected_total",
            "idle_tree"]
