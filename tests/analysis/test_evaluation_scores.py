@@ -169,3 +169,14 @@ def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
     straight_traj = simulate_for_scores(straight, 40.0, runtime_planning=False)
     assert final_distance(grove_traj) < 2.5
     assert final_distance(straight_traj) > 4.0
+
+
+def test_the_bundles_own_grounding_report_is_scored_for_grove_only():
+    from grove_tui.analysis.evaluation import grounding_report_scores
+
+    report = {"grounding": {"prompt": "p", "ok": False, "unhonoured": ["'except the lobby': no such place"],
+                            "groups": [{"who": "ten patients", "ok": True}, {"who": "a family", "ok": False},
+                                       {"who": "a guard", "ok": True}, {"who": "others", "ok": True}]}}
+    assert grounding_report_scores(report) == {"report_unhonoured": 1.0, "report_groups_ok": 0.75}
+    assert grounding_report_scores({"stages": {}}) == {}  # bundles written before the report existed
+    assert grounding_report_scores(None) == {}
