@@ -1215,7 +1215,9 @@ def _separate(k0, k1, params, radius, order, starts, cell_of, gnx, gny, new_pos,
     act; one Jacobi projection over the new positions (each agent moves only itself, never through
     a wall) keeps bodies within a few centimetres, as JuPedSim's SFM does at dt 0.01 s. Cells are at
     least half the 3 m cutoff wide, so every body in contact sits in the 3 x 3 block around one's cell.
+    Returns how many agents it moved: none means later passes would change nothing.
     """
+    moved = 0
     for k in range(k0, k1):
         i = order[k]
         px = new_pos[i, 0]
@@ -1255,9 +1257,11 @@ def _separate(k0, k1, params, radius, order, starts, cell_of, gnx, gny, new_pos,
                                               walls, wall_meta, wall_start, wall_items)
             out_pos[i, 0] = qx
             out_pos[i, 1] = qy
+            moved += 1
         else:
             out_pos[i, 0] = px
             out_pos[i, 1] = py
+    return moved
 
 
 @nb.njit(cache=True)
@@ -1319,10 +1323,13 @@ def advance_serial(n_steps, dt, params,
             # passes in pairs, there and back, so the result is in new_pos (no buffer swapping:
             # numba's parallel lowering must see the same arrays in every prange)
             for _pair in range(SEPARATION_PASSES // 2):
-                _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, new_pos, separated,
-                          walls, wall_meta, wall_start, wall_items)
-                _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, separated, new_pos,
-                          walls, wall_meta, wall_start, wall_items)
+                # a pass that moved nobody copied its input: new_pos already holds the result
+                if _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, new_pos, separated,
+                             walls, wall_meta, wall_start, wall_items) == 0:
+                    break
+                if _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, separated, new_pos,
+                             walls, wall_meta, wall_start, wall_items) == 0:
+                    break
         _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
 
 
@@ -1367,11 +1374,17 @@ def advance_parallel(n_steps, dt, params,
                            new_pos, new_vel, new_yaw)
         if params[P_BODY] > 0.0:
             for _pair in range(SEPARATION_PASSES // 2):
+                moved = 0
                 for b in nb.prange(n_blocks):
-                    _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts, cell_of,
-                              gnx, gny, new_pos, separated, walls, wall_meta, wall_start, wall_items)
+                    moved += _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts,
+                                       cell_of, gnx, gny, new_pos, separated, walls, wall_meta, wall_start, wall_items)
+                if moved == 0:
+                    break
+                moved = 0
                 for b in nb.prange(n_blocks):
-                    _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts, cell_of,
-                              gnx, gny, separated, new_pos, walls, wall_meta, wall_start, wall_items)
+                    moved += _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts,
+                                       cell_of, gnx, gny, separated, new_pos, walls, wall_meta, wall_start, wall_items)
+                if moved == 0:
+                    break
         # A serial copy costs less than another thread barrier.
         _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
