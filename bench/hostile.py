@@ -66,7 +66,7 @@ def room(boundary: str) -> str:
 
 
 def big_world(columns: int, rows: int, size: float = 2.0) -> str:
-    from tests.test_world_limits import big_world as build
+    from tests.world.test_world_limits import big_world as build
 
     return build(columns, rows, size)
 

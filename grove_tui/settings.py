@@ -186,11 +186,33 @@ def read_config_file(path: Path) -> dict[str, Any]:
         return {}
     if not isinstance(data, dict):
         raise SettingsError(f"{path}: expected a mapping of sections (ui:, generation:, ...), got {type(data).__name__}")
+    odd_key = _non_text_key(data)
+    if odd_key is not _NO_KEY:
+        # A key such as `!!binary AAAA` or `1:` is not a setting name (and pydantic fails on it).
+        raise SettingsError(f"{path}: key {odd_key!r} is not a setting name; keys are words like theme or seed")
     misplaced = [key for key in ENVIRONMENT_ONLY if key in data]
     if misplaced:
         raise SettingsError(f"{path}: {', '.join(misplaced)} is set by GROVE_{misplaced[0].upper()}; "
                             "in the file, name models under models: {roi: PATH, bt: PATH}")
     return data
+
+
+_NO_KEY = object()  # a key can be None (`: value` in YAML), so "no such key" needs its own marker
+
+
+def _non_text_key(value: Any) -> Any:
+    """The first mapping key anywhere in `value` that is not a string, else _NO_KEY (found by fuzzing)."""
+    stack = [value]
+    while stack:
+        current = stack.pop()
+        if isinstance(current, dict):
+            for key, item in current.items():
+                if not isinstance(key, str):
+                    return key
+                stack.append(item)
+        elif isinstance(current, list):
+            stack.extend(current)
+    return _NO_KEY
 
 
 def _validation_message(error: ValidationError) -> str:

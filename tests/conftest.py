@@ -68,3 +68,35 @@ def block_network():
     socket.socket.connect = _real_connect  # type: ignore[method-assign]
     socket.socket.connect_ex = _real_connect_ex  # type: ignore[method-assign]
     socket.getaddrinfo = _real_getaddrinfo
+
+
+# ---- shared worlds: one fixture each, used across tiers ------------------------------------------
+
+
+@pytest.fixture(scope="session")
+def clinic(tmp_path_factory):
+    """The small clinic world of tests/helpers/clinic.py, loaded from a real file (bundles name it)."""
+    from helpers.clinic import CLINIC
+
+    from grove_tui.world import parse_world
+
+    path = tmp_path_factory.mktemp("world") / "clinic.yaml"
+    path.write_text(CLINIC)
+    world, problems = parse_world(CLINIC, str(path))
+    assert not problems, problems
+    return world
+
+
+@pytest.fixture(scope="module")
+def hall():
+    """The hall of tests/helpers/hall.py: (world, grid, Theta* planner)."""
+    from helpers.hall import HALL
+
+    from grove_tui.navigation.grid import build_grid
+    from grove_tui.navigation.theta_star import ThetaStarPlanner
+    from grove_tui.world import parse_world
+
+    world, problems = parse_world(HALL, "hall.yaml")
+    assert not problems
+    grid = build_grid(world)
+    return world, grid, ThetaStarPlanner(grid)

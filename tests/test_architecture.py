@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from helpers.paths import REPO
 import ast
 import subprocess
 import sys
@@ -9,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = REPO
 # Everything but the app: the pipeline packages, the services layer, the CLI and the basics.
 CORE_PACKAGES = ("world", "language", "generation", "scenario", "navigation", "crowd", "simulation", "bt", "analysis",
                  "exports", "llm", "services", "gym", "cli")

@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 from hypothesis import HealthCheck, given, settings
 
-from tests.helpers.fuzzing import TARGETS, run_target
+from helpers.fuzzing import TARGETS, run_target
 
 # Examples per target: the slow targets (a world parse is ~20 ms) get fewer.
 EXAMPLES = {"world_text": 60, "world_structured": 80, "world_file": 40, "tree": 150, "scenario_dict": 200,

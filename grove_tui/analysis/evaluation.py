@@ -330,7 +330,23 @@ def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, 
     scores["prompt_tokens"] = float(sum(i.get("prompt_tokens", 0) for i in (report or {}).get("stages", {}).values()))
     scores["completion_tokens"] = float(
         sum(i.get("completion_tokens", 0) for i in (report or {}).get("stages", {}).values()))
+    scores.update(grounding_report_scores(report) if method == "grove" else {})
     return CaseResult(case=case, method=method, scores=scores)
+
+
+def grounding_report_scores(report: Mapping[str, Any] | None) -> dict[str, float]:
+    """What the bundle's own grounding report says (generation.json `grounding`): the share of the
+    sentence's groups whose count, places, behavior and robot reaction all hold (✓), and how many
+    parts of the sentence it says it could not honour. The suite's expectations score the same
+    scenario from outside; this is the product's account of itself, so the two can be compared."""
+    grounding_entry = (report or {}).get("grounding")
+    if not isinstance(grounding_entry, Mapping):
+        return {}
+    groups = [g for g in grounding_entry.get("groups", ()) if isinstance(g, Mapping)]
+    scores = {"report_unhonoured": float(len(grounding_entry.get("unhonoured", ()) or ()))}
+    if groups:
+        scores["report_groups_ok"] = sum(bool(g.get("ok")) for g in groups) / len(groups)
+    return scores
 
 
 # --- running a suite -----------------------------------------------------------------------------
@@ -503,7 +519,8 @@ def results_markdown(results: Sequence[CaseResult], command: str = "") -> str:
     if command:
         lines += ["Made by:", "", "```", command, "```", ""]
     cols = ["preset", "method", "grounding", "plausibility", "target", "spawn", "count", "behavior",
-            "wall pen.", "goal reach", "overlaps", "evac.", "stop&go", "valid", "halluc.", "prompt tok", "failed"]
+            "wall pen.", "goal reach", "overlaps", "evac.", "stop&go", "valid", "halluc.", "prompt tok", "report ✓",
+            "unhonoured", "failed"]
     lines += ["| " + " | ".join(cols) + " |", "|" + "---|" * len(cols)]
 
     def fmt(row: Mapping[str, float], key: str, digits: int = 2) -> str:
@@ -521,11 +538,14 @@ def results_markdown(results: Sequence[CaseResult], command: str = "") -> str:
                 fmt(row, "target_grounding"), fmt(row, "spawn_grounding"), fmt(row, "count_accuracy"),
                 fmt(row, "behavior_match"), fmt(row, "wall_penetrations", 1), fmt(row, "goal_reach_rate"),
                 fmt(row, "agent_overlaps", 1), fmt(row, "evacuation_completion"), fmt(row, "stop_and_go"),
-                fmt(row, "valid_trees"), f"{halluc:.1f}", fmt(row, "prompt_tokens", 0), fmt(row, "failed"),
+                fmt(row, "valid_trees"), f"{halluc:.1f}", fmt(row, "prompt_tokens", 0), fmt(row, "report_groups_ok"),
+                fmt(row, "report_unhonoured", 1), fmt(row, "failed"),
             ]) + " |")
     lines += ["", "grounding = mean of target/spawn grounding, count accuracy and behavior match; "
               "plausibility = mean of goal reach, 1/(1+wall penetrations), 1/(1+overlaps/100) and "
-              "evacuation completion. Means over the cases of each preset.", ""]
+              "evacuation completion. report ✓ = share of the sentence's groups the bundle's own grounding report "
+              "marks ✓ (count, start, destination, behavior, robot reaction all hold); unhonoured = parts of the "
+              "sentence it says it could not honour, per case. Means over the cases of each preset.", ""]
     failures = [r for r in results if r.error]
     if failures:
         lines += ["## Failures", ""] + [f"- {r.case.id} / {r.method}: {r.error}" for r in failures] + [""]

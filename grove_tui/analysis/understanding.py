@@ -388,49 +388,6 @@ def sample_cases(cases: Sequence[UnderstandingCase], n: int) -> list[Understandi
     return chosen
 
 
-def run_scenarios(cases: Sequence[UnderstandingCase], out_dir: str | Path, *, bt_model: str | None = None,
-                  on_progress: Callable[[int, int, ScenarioScore], None] | None = None) -> list[ScenarioScore]:
-    """Generate each case with the local model (loaded once) and score the scenario; bundles are kept."""
-    from grove_tui.bt.manifest import NODES
-    from grove_tui.generation.pipeline import GenerationPipeline
-    from grove_tui.generation.presets import load_preset
-    from grove_tui.generation.retrieval import NodeRetriever
-    from grove_tui.llm.local import LocalLLM
-    from grove_tui.llm.registry import resolve_models
-    from grove_tui.scenario.bundle import write_bundle
-    from grove_tui.world import load_world
-
-    action_names = frozenset(name for name, spec in NODES.items() if spec.category == "action")
-    choice = resolve_models(None, bt_model, None)["bt"]
-    llm = LocalLLM(choice.path, role="bt", n_ctx=choice.n_ctx)
-    retriever = NodeRetriever()
-    pipelines: dict[tuple[str, str], Any] = {}
-    scores: list[ScenarioScore] = []
-    try:
-        for index, case in enumerate(cases, start=1):
-            started = time.perf_counter()
-            world = load_world(case.world)
-            key = (case.world, case.preset)
-            try:
-                if key not in pipelines:
-                    pipelines[key] = GenerationPipeline(world, load_preset(case.preset), None, llm, retriever)
-                result = pipelines[key].run(case.prompt, seed=case.seed)
-                bundle = write_bundle(result, Path(out_dir) / "bundles" / case.id)
-                trees = {a.tree: (Path(bundle) / a.tree).read_text(encoding="utf-8") for a in result.scenario.agents}
-                score = score_scenario(case, world, result.scenario, trees, action_names)
-            except GroveError as exc:
-                score = ScenarioScore(case, error=str(exc))
-                for name in SCENARIO_FIELDS:
-                    score.set(name, False, score.error)
-            score.seconds = time.perf_counter() - started
-            scores.append(score)
-            if on_progress is not None:
-                on_progress(index, len(cases), score)
-    finally:
-        llm.close()
-    return scores
-
-
 def summarize_scenarios(scores: Sequence[ScenarioScore]) -> dict[str, tuple[int, int]]:
     table = {}
     for name in SCENARIO_FIELDS:
@@ -531,6 +488,6 @@ def write_results(reading: Sequence[ReadingScore], scenarios: Sequence[ScenarioS
 
 
 __all__ = ["UnderstandingCase", "UnderstandingError", "load_cases", "score_reading", "run_reading",
-           "summarize_reading", "below_threshold", "score_scenario", "run_scenarios", "sample_cases",
+           "summarize_reading", "below_threshold", "score_scenario", "sample_cases",
            "summarize_scenarios", "write_results", "results_markdown", "results_csv", "expected_total",
            "idle_tree"]

@@ -2,7 +2,7 @@
 becomes nodes bound to a blackboard, a simulation clock and the agent's context.
 
 BehaviorTree.tick is Tree::tickExactlyOnce: the root is reset to IDLE after it completes. The
-differential test (tests/test_bt_differential.py) compares this runtime with BT.CPP itself through
+differential test (tests/bt/test_bt_differential.py) compares this runtime with BT.CPP itself through
 `behaviortreepy`.
 """
 
@@ -42,7 +42,7 @@ class BehaviorTree:
     pass-through nodes (and reactive nodes whose earlier children are side-effect-free conditions) and
     that leaf's `poll()` says its on_running would just return RUNNING, a full tick would change no
     state at all, so `tick` re-checks the reactive guards, polls the leaf and returns RUNNING.
-    tests/test_simulation_fastpath.py runs scenarios both ways and compares them.
+    tests/simulation/test_simulation_fastpath.py runs scenarios both ways and compares them.
     """
 
     __slots__ = ("root", "blackboard", "nodes", "source", "clock", "fast", "quiet")

@@ -22,6 +22,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "models": ("grove_tui.cli.models:models", "Local GGUF models: list what is found, pull Qwen3."),
     "generate": ("grove_tui.cli.generate:generate", "Generate a scenario bundle from a prompt (--no-ui)."),
     "batch": ("grove_tui.cli.generate:batch", "Generate many scenarios from a JSONL file, loading models once."),
+    "dataset": ("grove_tui.cli.dataset:dataset", "Datasets written by `grove batch`: print an index's totals."),
     "simulate": ("grove_tui.cli.generate:simulate", "Simulate a bundle and write its trajectories."),
     "export": ("grove_tui.cli.export:export", "Export a bundle: HuNavSim agents.yaml + BT XML, PedPy trajectories."),
     "import": ("grove_tui.cli.importing:import_group", "Import a HuNavSim scenario (agents yaml + trees) as a bundle."),

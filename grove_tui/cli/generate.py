@@ -100,6 +100,10 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
         f"tokens: prompt={report['prompt_tokens']} completion={report['completion_tokens']}",
         f"time: total={report['total_seconds']:.2f}s {stages}",
     ]
+    if report.get("variation"):
+        variation = report["variation"]
+        lines.insert(1, f"variation: {variation['index']} of {variation['count']} (seed {scenario.seed}, "
+                        f"parent seed {variation['parent_seed']})")
     if scenario.robot is not None:
         r = scenario.robot
         lines.append(f"robot: ({r.start[0]:.2f}, {r.start[1]:.2f}) -> ({r.goal[0]:.2f}, {r.goal[1]:.2f})")
@@ -132,21 +136,37 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
 @click.option("--robot-goal", default=None, help="Robot goal: 'x,y' or an RoI name.")
 @click.option("--no-robot", is_flag=True, help="Generate without a robot.")
 @click.option("--json", "as_json", is_flag=True, help="Print the result as one JSON object on stdout.")
+@click.option("--variations", type=click.IntRange(1, 10_000), default=1, show_default=True,
+              help="Write N scenarios of the prompt into --out/v000 .. (seeds derived from --seed; v000 uses it).")
 @click.pass_context
 def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str, prompt: str, seed: int,
              simulate_seconds: float | None, out_dir: str, overwrite: bool, roi_model: str | None, bt_model: str | None,
-             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool) -> None:
+             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool, variations: int) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
     from grove_tui.generation.planning import RobotRequest
-    from grove_tui.services.session import ScenarioRequest
+    from grove_tui.services.jobs import variation_suffix
+    from grove_tui.services.session import ScenarioRequest, variation_requests
 
-    progress = Progress(_err())
     robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
     request = ScenarioRequest(world_name, preset_name, prompt, seed, robot)
+    if variations == 1:
+        targets = [(request, Path(out_dir))]
+    else:
+        # --out holds one bundle per variation; each bundle folder is checked like a single --out.
+        targets = [(varied, Path(out_dir) / variation_suffix(varied.variation.index, variations).lstrip("-"))
+                   for varied in variation_requests(request, variations) if varied.variation is not None]
+    with session_for(ctx, roi_model, bt_model) as session:
+        for varied, target in targets:
+            prefix = f"[{varied.variation.index + 1}/{variations}] " if varied.variation is not None else ""
+            _generate_one(session, varied, target, overwrite, simulate_seconds, as_json, prefix)
+
+
+def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite: bool,
+                  simulate_seconds: float | None, as_json: bool, prefix: str) -> None:
+    progress = Progress(_err(), prefix=prefix)
     try:
-        with session_for(ctx, roi_model, bt_model) as session:
-            generated = session.generate(request, Path(out_dir), overwrite=overwrite, on_event=progress)
-            sim = session.simulate(generated.bundle_dir, simulate_seconds).to_dict() if simulate_seconds else None
+        generated = session.generate(request, out_dir, overwrite=overwrite, on_event=progress)
+        sim = session.simulate(generated.bundle_dir, simulate_seconds).to_dict() if simulate_seconds else None
     except BaseException:
         progress.stop()  # the spinner must not overwrite the error line the grove group prints
         raise
@@ -154,7 +174,7 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
     if as_json:
         payload = {"bundle": str(bundle), "agents": len(result.scenario.agents), "report": {
             k: result.report[k] for k in ("stages", "total_seconds", "prompt_tokens", "completion_tokens", "zones",
-                                          "groups", "notes", "grounding") if k in result.report}}
+                                          "groups", "notes", "grounding", "variation") if k in result.report}}
         if sim is not None:
             payload["simulation"] = sim
         click.echo(json.dumps(payload))
@@ -171,20 +191,29 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
 @click.argument("jobs_file", type=click.Path(dir_okay=False))
 @click.option("--out", "out_dir", type=click.Path(), required=True, help="Folder for the bundles, one per job.")
 @click.option("--overwrite", is_flag=True, help="Replace job folders even when they are not bundles.")
+@click.option("--resume", is_flag=True,
+              help="Skip jobs an earlier run of this --out completed with the same inputs (batch-state.jsonl).")
+@click.option("--ray", "ray_address", is_flag=False, flag_value="local", default=None, metavar="[ADDRESS]",
+              help="Run the jobs on Ray actors: alone a private local Ray, or `auto` / `ray://host:port` for a "
+                   "cluster (needs ./install.sh cluster).")
+@click.option("--workers", type=click.IntRange(1, 100_000), default=None,
+              help="Ray actors to start (default: one per CPU of the Ray cluster).")
 @click.option("--roi-model", type=click.Path(dir_okay=False), default=None)
 @click.option("--bt-model", type=click.Path(dir_okay=False), default=None)
 @click.pass_context
-def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi_model: str | None,
-          bt_model: str | None) -> None:
-    """Generate many scenarios from a JSONL file, loading the models once.
+def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, resume: bool, ray_address: str | None,
+          workers: int | None, roi_model: str | None, bt_model: str | None) -> None:
+    """Generate many scenarios from a JSONL file, loading the models once (per Ray worker with --ray).
 
     Each line: {"world": ..., "preset": ..., "prompt": ..., "seed": 0, "name": "optional-dir-name",
-    "simulate": optional seconds}. Every line is checked before any job runs: bad lines (and lines
-    whose name another line already uses) are reported with their line numbers and skipped, the good
-    ones run. A failed job is reported and the batch goes on. Exit code: 2 when any line was refused,
-    else 3 when any job failed, else 0.
+    "simulate": optional seconds, "variations": optional N}. Every line is checked before any job runs:
+    bad lines (and lines whose name another line already uses) are reported with their line numbers and
+    skipped, the good ones run. A failed job is recorded (batch-state.jsonl: message and exit code) and
+    the batch goes on; --out/dataset.sqlite indexes every scenario. Exit code: 2 when any line was
+    refused, else 3 when any job failed, else 0.
     """
-    from grove_tui.errors import JobFileError, describe_error
+    from grove_tui.errors import JobFileError
+    from grove_tui.services.batch import run_batch
     from grove_tui.services.jobs import read_jobs
 
     err, out = _err(), _out()
@@ -198,34 +227,73 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, roi
     for problem in problems:
         err.print(f"error: {jobs_file}:{problem.line}: {problem.message}", markup=False, highlight=False)
     progresses: list[Progress] = []
+    bar = _BatchBar(err) if ray_address is not None else None
 
     def events_for(index: int, job: Any) -> Progress:
         progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] "))
         return progresses[-1]
 
-    def report(index: int, outcome: Any) -> None:
-        progresses[-1].stop()
-        if outcome.error is not None:
-            out.print(f"failed {outcome.bundle} {describe_error(outcome.error).message}", markup=False)
+    def started(to_run: list[Any], skipped: list[Any]) -> None:
+        if skipped:
+            err.print(f"resume: {len(skipped)} completed job(s) skipped, {len(to_run)} to run", markup=False)
+        if bar is not None:
+            bar.start(len(to_run))
+
+    def report(record: Any) -> None:
+        if progresses:
+            progresses[-1].stop()
+        if bar is not None:
+            bar.advance()
+        bundle = Path(out_dir) / record.name
+        if not record.ok:
+            out.print(f"failed {bundle} (exit {record.exit_code}) {record.message}", markup=False)
             return
-        result = outcome.generated.result
-        exports = "".join(f" {kind}={path}" for kind, path in outcome.exports.items())
-        out.print(f"ok {outcome.bundle} agents={len(result.scenario.agents)} "
-                  f"prompt_tokens={result.report['prompt_tokens']} seconds={result.report['total_seconds']:.2f}"
-                  f"{exports}", markup=False)
+        exports = "".join(f" {kind}={path}" for kind, path in record.exports)
+        out.print(f"ok {bundle} agents={record.agents} prompt_tokens={record.prompt_tokens} "
+                  f"seconds={record.seconds:.2f}{exports}", markup=False)
 
     try:
         with session:
-            outcomes = session.batch(jobs, Path(out_dir), overwrite=overwrite, events_for=events_for,
-                                     on_outcome=report)
-    except BaseException:
+            result = run_batch(session, jobs, Path(out_dir), overwrite=overwrite, resume=resume,
+                               ray_address=ray_address, workers=workers, on_start=started,
+                               events_for=None if bar is not None else events_for, on_record=report)
+    finally:
         if progresses:
             progresses[-1].stop()
-        raise
-    failures = sum(1 for outcome in outcomes if outcome.error is not None)
+        if bar is not None:
+            bar.stop()
+    done = len(result.records) - result.failures + len(result.skipped)
     total = len(jobs) + len(problems)
-    err.print(f"{len(jobs) - failures}/{total} scenarios generated")
-    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_RUNTIME_FAILURE if failures else EXIT_OK)
+    err.print(f"{done}/{total} scenarios generated; index: {result.index}")
+    ctx.exit(EXIT_BAD_INPUT if problems else EXIT_RUNTIME_FAILURE if result.failures else EXIT_OK)
+
+
+class _BatchBar:
+    """A rich progress bar for a Ray batch: jobs done, scenarios per hour, time left."""
+
+    def __init__(self, console: Console) -> None:
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress as RichProgress, TextColumn, \
+            TimeElapsedColumn, TimeRemainingColumn
+
+        self._progress = RichProgress(TextColumn("batch"), BarColumn(), MofNCompleteColumn(),
+                                      TextColumn("{task.fields[rate]}"), TimeElapsedColumn(), TextColumn("ETA"),
+                                      TimeRemainingColumn(), console=console, transient=False)
+        self._task: Any = None
+
+    def start(self, total: int) -> None:
+        self._task = self._progress.add_task("batch", total=total, rate="")
+        self._progress.start()
+
+    def advance(self) -> None:
+        if self._task is None:
+            return
+        self._progress.advance(self._task)
+        task = self._progress.tasks[0]
+        if task.elapsed:
+            self._progress.update(self._task, rate=f"{task.completed / task.elapsed * 3600:.0f}/h")
+
+    def stop(self) -> None:
+        self._progress.stop()
 
 
 def _finite(value: float | None, param: click.Parameter) -> float | None:

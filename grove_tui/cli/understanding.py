@@ -27,7 +27,6 @@ def understanding(cases_file: Path, out_dir: Path, scenarios: int, model: str | 
         below_threshold,
         load_cases,
         run_reading,
-        run_scenarios,
         sample_cases,
         summarize_reading,
         summarize_scenarios,
@@ -52,7 +51,10 @@ def understanding(cases_file: Path, out_dir: Path, scenarios: int, model: str | 
                 "ok" if not score.misses else "; ".join(score.misses))
             err.print(f"[{index}/{total}] {score.case.id} ({score.seconds:.0f} s): {status}")
 
-        scenario_scores = run_scenarios(sample, out_dir, bt_model=model, on_progress=progress)
+        from grove_tui.services.session import GroveSession
+
+        with GroveSession(bt_model=model) as session:
+            scenario_scores = session.understand(sample, out_dir, on_progress=progress)
     args = sys.argv[sys.argv.index("understanding") + 1:] if "understanding" in sys.argv else [
         str(cases_file), "--out", str(out_dir)]
     command = "grove understanding " + " ".join(shlex.quote(a) for a in args)

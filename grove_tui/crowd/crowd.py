@@ -132,10 +132,12 @@ class Crowd:
         self._face_ref = np.full(capacity, -1, dtype=np.int32)
         self._face_point = np.zeros((capacity, 2))
         self._robot_interaction = np.zeros(capacity, dtype=np.int8)
+        # Where a standing agent stopped (NaN while it walks); the kernel sets and clears it.
+        self._anchor = np.full((capacity, 2), np.nan)
 
     _PER_AGENT = ("_pos", "_vel", "_yaw", "_radius", "_desired_speed", "_base_speed", "_group", "_factors",
                   "_base_factors", "_mode", "_active", "_goal_len", "_goal_front", "_goal_radius", "_cyclic",
-                  "_field_slot", "_face_kind", "_face_ref", "_face_point", "_robot_interaction")
+                  "_field_slot", "_face_kind", "_face_ref", "_face_point", "_robot_interaction", "_anchor")
 
     def _grow(self, capacity: int) -> None:
         old = {name: getattr(self, name) for name in self._PER_AGENT}
@@ -245,6 +247,7 @@ class Crowd:
         self._face_ref[i] = -1
         self._face_point[i] = (x, y)
         self._robot_interaction[i] = robot_interaction
+        self._anchor[i] = np.nan
         goal_list = list(goals)
         if goal_list:
             self.set_goals(i, goal_list)
@@ -300,6 +303,7 @@ class Crowd:
             self._goals[i, : len(pts)] = pts
         self._goal_len[i] = len(pts)
         self._goal_front[i] = 0
+        self._anchor[i] = np.nan  # a new intent: the next place it stands is its spot
         if goal_radius is not None:
             if not goal_radius >= 0:
                 raise CrowdError(f"goal_radius must be >= 0, got {goal_radius!r}")
@@ -371,6 +375,8 @@ class Crowd:
             raise CrowdError(f"unknown mode {mode!r}; use MODE_GOALS, MODE_FIELD, MODE_STOP or MODE_FACE")
         if mode == MODE_FIELD and self._field_slot[i] < 0:
             raise CrowdError(f"agent {i} has no velocity field; call set_field(i, field_id) first")
+        if mode != self._mode[i]:
+            self._anchor[i] = np.nan
         self._mode[i] = mode
 
     def register_field(self, field: Any) -> int:
@@ -566,7 +572,7 @@ class Crowd:
             self._group_slot, self._group_start, self._group_members,
             self._goals[:k], self._goal_len[:k], self._goal_front[:k], self._goal_radius[:k], self._cyclic[:k],
             self._field_slot[:k], self._field_vectors, self._field_meta,
-            self._face_kind[:k], self._face_ref[:k], self._face_point[:k],
+            self._face_kind[:k], self._face_ref[:k], self._face_point[:k], self._anchor[:k],
             self._robot_interaction[:k], self._robot, self._robot_path,
             self.walls, self._wall_owner, self._wall_meta, self._wall_start, self._wall_items,
         )

@@ -58,7 +58,9 @@ P_CLEARANCE = 13
 P_TURN_RATE = 14
 P_BODY = 15
 P_SKIP = 16
-P_COUNT = 17
+P_HOLD = 17
+P_FRICTION = 18
+P_COUNT = 19
 
 # Layout of the robot state vector.
 R_X = 0
@@ -97,8 +99,16 @@ ROBOT_WAYPOINT_TOLERANCE = 0.1
 _BACKOFF = 1e-4          # metres kept between a blocked agent and the wall it hit
 _TINY = 1e-12
 _GOLDEN_ANGLE = 2.399963229728653
+# A standing person braces: the pull back to its spot may reach this multiple of the walking
+# drive (w_goal v0 / tau). Its speed stays clipped to v0, so it steps back no faster than it walks.
+# At 1x walkers shoved waiting people over 0.3 m (tests/test_physics_waiting.py).
+HOLD_BRACE = 3.0
 # No nnan/ninf: the kernels rely on isfinite checks to keep every value finite.
 _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
+
+
+# The pedestrian models a user can pick by name (SFMParams.named).
+SFM_MODELS = ("grove", "lightsfm")
 
 
 @dataclass(frozen=True)
@@ -125,18 +135,43 @@ class SFMParams:
     # exp(-2 / 0.2) * 10 < 5e-4: walls further than this contribute nothing measurable.
     wall_range: float = 2.0
     yaw_hold_speed: float = 0.07
-    # Agents end every step at least this fraction of their radius away from any wall.
-    wall_clearance: float = 0.5
+    # Agents end every step at least this fraction of their radius away from any wall: 0.9 keeps a
+    # body at most 3.5 cm (radius 0.35) into a wall; at 0.5 a dense crowd pressed bodies 12 cm in.
+    wall_clearance: float = 0.9
     # HuNavSim 2.0 turns 0.2*pi per behaviour tick; at a 10 Hz tick that is 2*pi rad/s.
     face_turn_rate: float = 2.0 * math.pi
     goal_tolerance: float = 0.1
-    # Contact stiffness (1/s^2) acting only while two bodies overlap. Not in lightsfm, whose
-    # Moussaid force lets a symmetric crossing pair overlap by 0.25 m. body_weight=0, epsilon=0
-    # and social_skip_exponent=inf give lightsfm's forces exactly (tests/test_sfm.py).
-    body_weight: float = 100.0
+    # Body compression (1/s^2: force per kg per metre of overlap) acting only while two bodies, or a
+    # body and a wall, overlap: Helbing, Farkas & Vicsek 2000, k = 1.2e5 kg/s^2 for an 80 kg person,
+    # as JuPedSim's SFM. Not in lightsfm, whose Moussaid force let bodies overlap by 34 cm of 50 and
+    # walls by 12 cm (issue 19). SFMParams.lightsfm() gives lightsfm's forces exactly (tests/crowd/test_sfm.py).
+    body_weight: float = 1.2e5 / 80.0
+    # Sliding friction (1/(m s)) along the contact tangent while bodies overlap: HFV 2000's
+    # kappa = 2.4e5 kg/(m s) for 80 kg. It is what makes a jammed doorway slow.
+    friction_weight: float = 2.4e5 / 80.0
     # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
     # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
     social_skip_exponent: float = 8.0
+    # Seconds in which a waiting person (MODE_STOP, MODE_FACE; queueing people are pulled back to
+    # their slot by the goal force; walkers who arrived give way as before) would walk back to the spot where it stopped (spring stiffness w_goal / (tau hold_time));
+    # 0 turns holding off (lightsfm: standing agents are
+    # only damped and drift metres when walkers push past, issue 19).
+    hold_time: float = 0.1
+
+    @classmethod
+    def lightsfm(cls, **overrides: float) -> SFMParams:
+        """lightsfm's (HuNavSim's) forces exactly, as Gazebo runs them: soft bodies, no holding."""
+        values = dict(epsilon=0.0, body_weight=0.0, friction_weight=0.0, hold_time=0.0,
+                      social_skip_exponent=math.inf, wall_clearance=0.5)
+        values.update(overrides)
+        return cls(**values)
+
+    @classmethod
+    def named(cls, name: str) -> SFMParams:
+        """A pedestrian model by name: "grove" (default, RiMEA-oriented contacts) or "lightsfm"."""
+        if name not in SFM_MODELS:
+            raise ValueError(f"unknown pedestrian model {name!r}; choose one of {', '.join(SFM_MODELS)}")
+        return cls.lightsfm() if name == "lightsfm" else cls()
 
     def __post_init__(self) -> None:
         for name in ("obstacle_sigma", "gamma", "tau", "cutoff", "wall_range"):
@@ -165,6 +200,8 @@ class SFMParams:
         out[P_TURN_RATE] = self.face_turn_rate
         out[P_BODY] = self.body_weight
         out[P_SKIP] = self.social_skip_exponent
+        out[P_HOLD] = self.hold_time
+        out[P_FRICTION] = self.friction_weight
         return out
 
 
@@ -522,7 +559,7 @@ def _fast_atan2(y, x):
     """atan2 within 3e-11 rad: one division, then an odd degree-23 fit of atan on [0, 1].
 
     libm's atan2 costs a third of a social-force pair; the fit keeps the kernel equal to
-    lightsfm to 1e-9 (tests/test_sfm.py) at a fifth less time per step.
+    lightsfm to 1e-9 (tests/crowd/test_sfm.py) at a fifth less time per step.
     """
     ax = abs(x)
     ay = abs(y)
@@ -767,7 +804,7 @@ def _update_agents(k0, k1, dt, params,
                    group_slot, group_start, group_members, group_cx, group_cy, group_n,
                    goals, goal_len, goal_front, goal_radius, cyclic,
                    field_slot, field_vectors, field_meta,
-                   face_kind, face_ref, face_point,
+                   face_kind, face_ref, face_point, anchor,
                    robot_interaction, robot,
                    walls, wall_owner, wall_meta, wall_start, wall_items,
                    order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
@@ -786,6 +823,7 @@ def _update_agents(k0, k1, dt, params,
     n_angle = params[P_N]
     n_vel = params[P_NPRIME]
     body = params[P_BODY]
+    friction = params[P_FRICTION]
     skip_exponent = params[P_SKIP]
     n_min = min(n_angle, n_vel)
     robot_present = robot[R_PRESENT] != 0.0
@@ -838,9 +876,36 @@ def _update_agents(k0, k1, dt, params,
         if has_dir:
             fx = w_goal * (v0 * ex - vx) / tau
             fy = w_goal * (v0 * ey - vy) / tau
+            anchor[i, 0] = math.nan
         else:
             fx = -vx / tau
             fy = -vy / tau
+            hold = params[P_HOLD]
+            if robot_interaction[i] == ROBOT_FEARED or not (m == MODE_STOP or m == MODE_FACE):
+                # only waiting people (Wait, Converse, facing) own a spot; a frightened one gives it up
+                anchor[i, 0] = math.nan
+            elif hold > 0.0 and math.isnan(anchor[i, 0]) and vx * vx + vy * vy < params[P_YAW_HOLD] ** 2:
+                # The spot is where plain damping (-v / tau) brought it to rest, as in lightsfm:
+                # holding changes how a waiting person resists pushes, not where it stops.
+                anchor[i, 0] = px
+                anchor[i, 1] = py
+            if hold > 0.0 and not math.isnan(anchor[i, 0]):
+                # Pushed off its spot, a waiting person is pulled back by a critically damped spring
+                # (no rocking about the spot), so walkers cannot shove it around.
+                stiffness = w_goal / (tau * hold)
+                hx = stiffness * (anchor[i, 0] - px)
+                hy = stiffness * (anchor[i, 1] - py)
+                hs = math.sqrt(hx * hx + hy * hy)
+                brace = HOLD_BRACE * w_goal * v0 / tau
+                if hs > brace and hs > 0.0:
+                    hx *= brace / hs
+                    hy *= brace / hs
+                extra_damping = 2.0 * math.sqrt(max(stiffness, 0.0)) - 1.0 / tau
+                if extra_damping > 0.0:
+                    hx -= extra_damping * vx
+                    hy -= extra_damping * vy
+                fx += hx
+                fy += hy
 
         # social force from neighbours in the 3x3 surrounding cells (Moussaid, inlined: hot loop)
         sfx = 0.0
@@ -869,6 +934,10 @@ def _update_agents(k0, k1, dt, params,
                     if overlap > 0.0:
                         fx -= body * overlap * ux
                         fy -= body * overlap * uy
+                        # sliding friction: the neighbour's tangential velocity relative to ours
+                        slide = (svx[kk] - vx) * -uy + (svy[kk] - vy) * ux
+                        fx -= friction * overlap * slide * uy
+                        fy += friction * overlap * slide * ux
                     ix = lam * (vx - svx[kk]) + ux
                     iy = lam * (vy - svy[kk]) + uy
                     ilen = math.sqrt(ix * ix + iy * iy)
@@ -962,6 +1031,12 @@ def _update_agents(k0, k1, dt, params,
                 else:
                     ux, uy = _wall_normal_towards(w, px, py, walls)
                 mag = w_obs * math.exp(-(d - ri) / sigma)
+                if d < ri:
+                    # body against the wall: compression out of it and friction along it (HFV 2000)
+                    mag += body * (ri - d)
+                    slide = vx * -uy + vy * ux
+                    fx += friction * (ri - d) * slide * uy
+                    fy -= friction * (ri - d) * slide * ux
                 fx += mag * ux
                 fy += mag * uy
 
@@ -1109,6 +1184,60 @@ def _prepare_step(dt, params, pos, vel, radius, active, group_start, group_membe
     return order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad
 
 
+@nb.njit(cache=True, fastmath=_FASTMATH)
+def _separate(k0, k1, params, radius, order, starts, cell_of, gnx, gny, new_pos, out_pos,
+              walls, wall_meta, wall_start, wall_items):
+    """Move agents order[k0:k1] apart by half of each overlap left at their new positions.
+
+    At dt 0.05 s two people closing at walking speed meet 13 cm deep before any contact force can
+    act; one Jacobi projection over the new positions (each agent moves only itself, never through
+    a wall) keeps bodies within a few centimetres, as JuPedSim's SFM does at dt 0.01 s. Cells are at
+    least half the 3 m cutoff wide, so every body in contact sits in the 3 x 3 block around one's cell.
+    """
+    for k in range(k0, k1):
+        i = order[k]
+        px = new_pos[i, 0]
+        py = new_pos[i, 1]
+        ri = radius[i]
+        sx = 0.0
+        sy = 0.0
+        c = cell_of[i]
+        ccx = c % gnx
+        ccy = c // gnx
+        for oy in range(max(ccy - 1, 0), min(ccy + 2, gny)):
+            for ox in range(max(ccx - 1, 0), min(ccx + 2, gnx)):
+                cc = oy * gnx + ox
+                for kk in range(starts[cc], starts[cc + 1]):
+                    if kk == k:
+                        continue
+                    j = order[kk]
+                    dx = px - new_pos[j, 0]
+                    dy = py - new_pos[j, 1]
+                    reach = ri + radius[j]
+                    d2 = dx * dx + dy * dy
+                    if d2 >= reach * reach:
+                        continue
+                    d = math.sqrt(d2)
+                    if d > _TINY:
+                        ux = dx / d
+                        uy = dy / d
+                    else:
+                        ux, uy = _tie_break_direction(i, j)
+                        ux = -ux
+                        uy = -uy
+                    share = 0.5 * (reach - d)
+                    sx += share * ux
+                    sy += share * uy
+        if sx != 0.0 or sy != 0.0:
+            qx, qy, _vx, _vy = resolve_motion(px, py, px + sx, py + sy, 0.0, 0.0, params[P_CLEARANCE] * ri,
+                                              walls, wall_meta, wall_start, wall_items)
+            out_pos[i, 0] = qx
+            out_pos[i, 1] = qy
+        else:
+            out_pos[i, 0] = px
+            out_pos[i, 1] = py
+
+
 @nb.njit(cache=True)
 def _commit_rows(k0, k1, order, pos, vel, yaw, new_pos, new_vel, new_yaw):
     for k in range(k0, k1):
@@ -1119,6 +1248,10 @@ def _commit_rows(k0, k1, order, pos, vel, yaw, new_pos, new_vel, new_yaw):
         vel[i, 1] = new_vel[i, 1]
         yaw[i] = new_yaw[i]
 
+
+# Jacobi passes of _separate per step: in a room pressed into a corner one left 8.7 cm overlaps,
+# three 5.3 cm.
+SEPARATION_PASSES = 4
 
 # Agents per parallel work item: large enough to amortise scheduling, small enough to balance.
 _BLOCK = 256
@@ -1133,12 +1266,13 @@ def advance_serial(n_steps, dt, params,
                    group_slot, group_start, group_members,
                    goals, goal_len, goal_front, goal_radius, cyclic,
                    field_slot, field_vectors, field_meta,
-                   face_kind, face_ref, face_point,
+                   face_kind, face_ref, face_point, anchor,
                    robot_interaction, robot, robot_path,
                    walls, wall_owner, wall_meta, wall_start, wall_items):
     """Run n_steps of the crowd on one thread; every array is updated in place."""
     n_groups = group_start.shape[0] - 1
     new_pos = np.empty_like(pos)
+    separated = np.empty_like(pos)
     new_vel = np.empty_like(vel)
     new_yaw = np.empty_like(yaw)
     group_cx = np.zeros(max(n_groups, 1))
@@ -1154,12 +1288,19 @@ def advance_serial(n_steps, dt, params,
                        group_slot, group_start, group_members, group_cx, group_cy, group_n,
                        goals, goal_len, goal_front, goal_radius, cyclic,
                        field_slot, field_vectors, field_meta,
-                       face_kind, face_ref, face_point,
+                       face_kind, face_ref, face_point, anchor,
                        robot_interaction, robot,
                        walls, wall_owner, wall_meta, wall_start, wall_items,
                        order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                        new_pos, new_vel, new_yaw)
-        _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
+        source = new_pos
+        target = separated
+        if params[P_BODY] > 0.0:
+            for _pass in range(SEPARATION_PASSES):
+                _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, source, target,
+                          walls, wall_meta, wall_start, wall_items)
+                source, target = target, source
+        _commit_rows(0, n_active, order, pos, vel, yaw, source, new_vel, new_yaw)
 
 
 @nb.njit(cache=True, parallel=True)
@@ -1168,7 +1309,7 @@ def advance_parallel(n_steps, dt, params,
                      group_slot, group_start, group_members,
                      goals, goal_len, goal_front, goal_radius, cyclic,
                      field_slot, field_vectors, field_meta,
-                     face_kind, face_ref, face_point,
+                     face_kind, face_ref, face_point, anchor,
                      robot_interaction, robot, robot_path,
                      walls, wall_owner, wall_meta, wall_start, wall_items):
     """advance_serial with agent blocks spread over threads.
@@ -1178,6 +1319,7 @@ def advance_parallel(n_steps, dt, params,
     """
     n_groups = group_start.shape[0] - 1
     new_pos = np.empty_like(pos)
+    separated = np.empty_like(pos)
     new_vel = np.empty_like(vel)
     new_yaw = np.empty_like(yaw)
     group_cx = np.zeros(max(n_groups, 1))
@@ -1195,10 +1337,18 @@ def advance_parallel(n_steps, dt, params,
                            group_slot, group_start, group_members, group_cx, group_cy, group_n,
                            goals, goal_len, goal_front, goal_radius, cyclic,
                            field_slot, field_vectors, field_meta,
-                           face_kind, face_ref, face_point,
+                           face_kind, face_ref, face_point, anchor,
                            robot_interaction, robot,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
                            order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                            new_pos, new_vel, new_yaw)
+        source = new_pos
+        target = separated
+        if params[P_BODY] > 0.0:
+            for _pass in range(SEPARATION_PASSES):
+                for b in nb.prange(n_blocks):
+                    _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts, cell_of,
+                              gnx, gny, source, target, walls, wall_meta, wall_start, wall_items)
+                source, target = target, source
         # A serial copy costs less than another thread barrier.
-        _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
+        _commit_rows(0, n_active, order, pos, vel, yaw, source, new_vel, new_yaw)

@@ -30,7 +30,7 @@ import numpy as np
 import shapely
 
 from grove_tui.errors import FoxgloveExportError
-from grove_tui.exports.frames import ROS_EXTRA, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
+from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.files import atomic_file
 
@@ -341,7 +341,7 @@ def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path) -> tuple[int
         event = next(pending, None)
         shown: set[int] = set()
         count = 0
-        frame = first
+        frame: Frame | None = first
         while frame is not None:
             ns = _ns(frame.t)
             while event is not None and _ns(event.t) <= ns:

@@ -372,6 +372,7 @@ class GenerationPipeline:
         report["groups"] = [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
                              "field": g.field_id, "behavior": g.behavior} for g in post.groups]
         report["exit"] = post.exit
+        report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes
         if inputs.reading is not None:
             report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,

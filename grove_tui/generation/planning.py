@@ -1,8 +1,9 @@
 """Operational layer: collision-free geometry for the post-processed trees, and the robot's task.
 
 Normal and queuing presets plan every leg between consecutive navigation goals with Theta* and
-inject the waypoints into the trees; the emergency preset plans each group's centroid to the one
-shared exit and turns that path into the group's velocity field. The robot gets a start and a goal
+inject the waypoints into the trees; the emergency preset plans each group's centroid to its exit
+(per person the nearest allowed one; a group split over exits plans one field per exit) and turns
+that path into the velocity field. The robot gets a start and a goal
 (the user's, or chosen across the scene so that its path runs through where people are) and a
 planned path.
 """
@@ -94,19 +95,25 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
     if preset.velocity == "field":
         if post.exit is None:
             raise GenerationError("the preset follows velocity fields to an exit, but the world has no exit")
-        exit_door = world.find(post.exit)
-        for g in post.groups:
+        # One field per group and exit: a group whose members' nearest exits differ gets one per exit.
+        followers: dict[str, list[Any]] = {}
+        for a in post.agents:
+            if a.field_id is not None:
+                followers.setdefault(a.field_id, []).append(a)
+        labels = {g.index: g for g in post.groups}
+        for field_id, members in followers.items():
             _check_cancel(cancel)
-            assert g.field_id is not None  # post-processing names one field per group when fields are used
-            members = [a for a in post.agents if a.group_index == g.index]
+            g = labels[members[0].group_index]
+            exit_name = members[0].exit or post.exit
+            exit_door = world.find(exit_name)
             centroid = _free_centroid(grid, [a.start for a in members], g.spawn)
             try:
                 built = cached.cache.field(world.name, planner, centroid, exit_door.position,
-                                           start_label=f"group '{g.label}' in {g.spawn}", exit_label=post.exit)
+                                           start_label=f"group '{g.label}' in {g.spawn}", exit_label=exit_name)
             except PlanningError as exc:
-                raise GenerationError(f"group '{g.label}' cannot reach exit {post.exit}: {exc}") from None
-            fields[g.field_id] = built
-            group_paths[g.field_id] = built.path
+                raise GenerationError(f"group '{g.label}' cannot reach exit {exit_name}: {exc}") from None
+            fields[field_id] = built
+            group_paths[field_id] = built.path
 
     agents: list[AgentSpec] = []
     trees: dict[str, str] = {}

@@ -28,6 +28,8 @@ from grove_tui.generation.reconcile import reconcile
 from grove_tui.language import lexicon as lx
 from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
 from grove_tui.language.reading import PromptReading
+from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
+from grove_tui.navigation.velocity_field import nearest_exits
 
 Point = tuple[float, float]
 
@@ -89,9 +91,10 @@ class GroupPlan:
 class PostProcessed:
     agents: list[AgentPlan]
     groups: list[GroupPlan]
-    exit: str | None  # the shared exit (emergency)
+    exit: str | None  # the evacuation's first exit (emergency); every exit in use is in `exits`
     goals: list[Point]  # global goal table: goal_id - 1 -> point (HuNavSim 2.0 global_goals)
     notes: list[str]  # what was repaired, for generation.json
+    exits: list[str] = field(default_factory=list)  # the exits evacuees use, each person its nearest
 
 
 # ---- populations ----------------------------------------------------------------------------
@@ -828,7 +831,8 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
     _check_capacity(groups, space, world)
     _check_limits(groups, preset)
     resolver = TargetResolver(world, grid, space, preset, rng)
-    exit_name = _shared_exit(world, preset, groups, selection, notes) if preset.velocity == "field" else None
+    exit_names = _evacuation_exits(world, selection, notes) if preset.velocity == "field" else []
+    exit_name = exit_names[0] if exit_names else None
 
     agents: list[AgentPlan] = []
     next_id = 1
@@ -854,7 +858,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                 notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
             sfm_groups += len(parties)
         if preset.velocity == "field":
-            g.field_id = f"group_{g.index + 1}"
+            g.field_id = f"group_{g.index + 1}"  # the group's first field; per exit below when it splits
         first = 0
         for k, size in enumerate(parties):
             party = g.sfm_group + k if g.sfm_group >= 0 else -1
@@ -870,12 +874,15 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                                         exit=exit_name, behavior=g.behavior))
             first += size
 
+    if len(exit_names) > 1:
+        _assign_nearest_exits(world, grid, groups, agents, exit_names, notes)
+
     writer = TreeWriter(resolver)
     by_index = {g.index: g for g in groups}
     served: dict[str, int] = {}
     for agent in agents:
         g = by_index[agent.group_index]
-        tree = _with_exit(agent.tree, exit_name) if exit_name else agent.tree
+        tree = _with_exit(agent.tree, agent.exit) if agent.exit else agent.tree
         agent.tree = tree
         targets: dict[int, Point] = {}
         slots: dict[str, int] = {}
@@ -896,7 +903,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
             agent.zone = resolver.zone_of(agent.targets[-1][0])
         agent.document = writer.write(agent, g, targets)
     goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
-    return PostProcessed(agents, groups, exit_name, goals, notes)
+    return PostProcessed(agents, groups, exit_name, goals, notes, exit_names)
 
 
 def _group_point(resolver: TargetResolver, group: GroupPlan, name: str) -> Point:
@@ -907,7 +914,7 @@ def _group_point(resolver: TargetResolver, group: GroupPlan, name: str) -> Point
 
 
 def _with_exit(tree: DraftNode, exit_name: str) -> DraftNode:
-    """Every FollowVelocityField of the scenario leads to the one shared exit."""
+    """Every FollowVelocityField of the agent's tree leads to the agent's exit."""
     ports = dict(tree.ports)
     if tree.node == "FollowVelocityField":
         ports["exit"] = exit_name
@@ -933,23 +940,48 @@ def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -
                     f"{space.free_area(zone):.0f} m^2 holds at most {cap} at a plausible density ({MAX_DENSITY:g}/m^2)")
 
 
-def _shared_exit(world: Any, preset: Preset, groups: Sequence[GroupPlan], selection: Any, notes: list[str]) -> str:
-    """The one exit everyone evacuates through: named in the prompt, else the model's choice, else the nearest."""
+def _evacuation_exits(world: Any, selection: Any, notes: list[str]) -> list[str]:
+    """The exits evacuees may use: those the prompt names, else every exit of the world.
+
+    Each person then leaves through the nearest of them (_assign_nearest_exits): "the nearest exit"
+    is each person's own, not one exit shared by the whole crowd (issue 19).
+    """
     exits = {d.name: d for d in world.exits()}
     if not exits:
         raise GenerationError(f"world '{world.name}' has no exit door to evacuate through")
-    for m in getattr(selection, "matches", ()):
-        if m.reason == "prompt" and m.name in exits:
-            return m.name
-    chosen: dict[str, int] = {}
+    named = [m.name for m in getattr(selection, "matches", ()) if m.reason == "prompt" and m.name in exits]
+    if named:
+        return list(dict.fromkeys(named))
+    # The prompt allows every exit: a small model's tree naming one does not restrict the crowd to it.
+    notes.append(f"evacuation exits: {', '.join(sorted(exits))} (each person takes the nearest)")
+    return sorted(exits)
+
+
+def _assign_nearest_exits(world: Any, grid: Any, groups: Sequence[GroupPlan], agents: Sequence[AgentPlan],
+                          exit_names: Sequence[str], notes: list[str]) -> None:
+    """Each evacuee's exit is the nearest by walking distance; a group split over exits gets one field per exit."""
+    evacuees = [a for a in agents if a.field_id is not None]
+    if not evacuees:
+        return
+    doors = {name: world.find(name).position for name in exit_names}
+    try:
+        choice = nearest_exits(ThetaStarPlanner(grid, landmarks=0), doors, [a.start for a in evacuees])
+    except PlanningError as exc:
+        raise GenerationError(f"an evacuee cannot reach any exit: {exc}") from None
+    # A social party (family, friends) leaves together: through its first member's nearest exit.
+    party_exit: dict[int, str] = {}
+    for agent, name in zip(evacuees, choice):
+        if agent.sfm_group >= 0:
+            party_exit.setdefault(agent.sfm_group, name)
+    used: dict[str, int] = {}
+    for agent, name in zip(evacuees, choice):
+        name = party_exit.get(agent.sfm_group, name)
+        agent.exit = name
+        used[name] = used.get(name, 0) + 1
     for g in groups:
-        for node in g.tree.walk():
-            if node.node == "FollowVelocityField" and node.ports.get("exit") in exits:
-                chosen[node.ports["exit"]] = chosen.get(node.ports["exit"], 0) + g.count
-    if chosen:
-        return max(sorted(chosen), key=lambda n: chosen[n])
-    cx = sum(world.zone(g.spawn).centroid[0] * g.count for g in groups) / sum(g.count for g in groups)
-    cy = sum(world.zone(g.spawn).centroid[1] * g.count for g in groups) / sum(g.count for g in groups)
-    name = min(sorted(exits), key=lambda n: math.hypot(exits[n].position[0] - cx, exits[n].position[1] - cy))
-    notes.append(f"shared exit: {name} (nearest to the crowd)")
-    return name
+        members = [a for a in evacuees if a.group_index == g.index]
+        if len({a.exit for a in members}) > 1:
+            for a in members:
+                a.field_id = f"group_{g.index + 1}_{a.exit}"
+            g.field_id = members[0].field_id  # the report's field for the group: its first member's
+    notes.append("exits in use: " + ", ".join(f"{name} ({used[name]} people)" for name in sorted(used)))

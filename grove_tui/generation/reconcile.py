@@ -40,6 +40,8 @@ ROUTINE_NODES = frozenset({"GoTo", "Wait", "Queue", "Wander", "Converse", "Follo
 STATIONARY_NODES = {"queue": {"Queue"}, "converse": {"Converse", "ConversationFormation"}, "wander": {"Wander"},
                     "wait": {"Wait", "StopAndWaitTimerAction", "Queue"}}
 PACE_FACTORS = {"slow": 0.7, "normal": 1.0, "fast": 1.4}
+MOVING_INTENTS = frozenset({"walk", "evacuate", "follow"})
+WALKING_NODES = frozenset({"GoTo", "FollowVelocityField", "FollowAgent"})
 DEFAULT_WAIT_SECONDS = 60.0  # "a man waits on the bench": long enough to be seen waiting
 SERVICE_TYPES = ("counter", "desk", "reception", "booth", "kiosk", "vending_machine", "machine")
 
@@ -151,7 +153,17 @@ def _repair(tree: DraftNode, group: GroupReading, world: Any, notes: list[str], 
     if destination and not _reaches(world, destination, _tree_places(tree)):
         notes.append(f"group '{label}': goes to {destination} (named in the prompt)")
         tree = _append(tree, DraftNode("GoTo", {"target": destination}))
+    elif destination and base in MOVING_INTENTS and not _reaches(world, destination, _walked_places(tree)):
+        # "walk from the lobby to ward a" drafted as wandering in ward a: they walk there first, then
+        # do what the model added
+        notes.append(f"group '{label}': walks to {destination} before the model's {_kinds(tree)}")
+        tree = _prepend(DraftNode("GoTo", {"target": destination}), tree)
     return tree
+
+
+def _walked_places(tree: DraftNode) -> list[str]:
+    """Places a tree walks to (GoTo, the evacuation field), not those it only stays in."""
+    return [p for node in tree.walk() if node.node in WALKING_NODES for p in [_node_place(node)] if p]
 
 
 def _base_intent(group: GroupReading) -> str:
@@ -349,6 +361,7 @@ def _spawn(group: GroupReading, d: DraftGroup | None, world: Any, default: str, 
 _INTENT_NODES = {"queue": {"Queue"}, "converse": {"Converse", "ConversationFormation"}, "wander": {"Wander"},
                  "wait": {"Wait", "StopAndWaitTimerAction", "Queue"}, "walk": {"GoTo", "Wander"},
                  "follow": {"GoTo", "FollowAgent", "Wander"}, "evacuate": {"GoTo", "FollowVelocityField"}}
+# A walk with a destination must walk there; wandering is a walk only when no destination is named.
 
 
 def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: Any,
@@ -420,6 +433,8 @@ def _check_behavior(r: GroupReading, g: Any, world: Any) -> GroundingCheck:
     if is_idle(g.tree):
         return GroundingCheck("behavior", asked, "nothing (idle tree)", False, "the tree has no action")
     wanted = _INTENT_NODES.get(base, set())
+    if base in MOVING_INTENTS and r.destination:
+        wanted = set(WALKING_NODES)
     does = ", ".join(sorted(nodes & ROUTINE_NODES)) or "nothing"
     ok = bool(nodes & wanted)
     reason = ""

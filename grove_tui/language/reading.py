@@ -313,6 +313,8 @@ class _Reader:
             return True  # "empty except for two cleaners"
         if prev == "from" and p > 0 and self.low[p - 1] == "apart":
             return True  # "apart from one guard"
+        if prev == "by" and p > 0 and self.low[p - 1] in ("followed", "trailed", "accompanied", "joined"):
+            return True  # "the manager walks to the boardroom, followed by two assistants"
         if prev in ("are", "is") and self._only_people_before(p):
             return True  # "the only people in the ward are two men"
         if prev in ("are", "is", "were", "was", "be") and p > 0 and self.low[p - 1] == "there":
@@ -350,8 +352,12 @@ class _Reader:
         k = j
         while k < self.n and k < j + 4:
             if self._is_person_noun(k):
-                while k + 1 < self.n and self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES:
-                    k += 1  # "staff members", "security guards": the last noun heads the phrase
+                while k + 1 < self.n and self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES \
+                        and not self.w[k + 1].tag.startswith("VB") and not (
+                            not counted and k + 2 < self.n and self.w[k + 2].pos in ("ADP", "DET", "PUNCT")):
+                    # "staff members", "security guards": the last noun heads the phrase; but in "Mum
+                    # cooks in the kitchen" the second word is the verb
+                    k += 1
                 return k
             if self.low[k] in lx.NP_MODIFIERS or self.w[k].pos == "ADJ":
                 k += 1
@@ -489,6 +495,9 @@ class _Reader:
             kind = "exclusive" if exclusive else "exact"
             return _Mention(s, head, self._span(s, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
+            if self._verb_after(head) and noun not in lx.PRONOUN_PEOPLE and noun not in lx.NOBODY_WORDS:
+                return _Mention(s, head, self._span(s, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
+                                exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
             return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
         low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
         parent = self._parent(found)
@@ -500,6 +509,15 @@ class _Reader:
         sentence = self.w[p].sentence
         return any(self.low[k] == "only" and k + 1 < self.n and self.low[k + 1] in ("people", "person", "ones", "one")
                    for k in range(p) if self.w[k].sentence == sentence)
+
+    def _verb_after(self, k: int) -> bool:
+        """Whether the word after k is a verb (so the word at k is the subject of a clause)."""
+        if k + 1 >= self.n:
+            return False
+        nxt = self.low[k + 1]
+        # the small model tags "cooks" in "Mum cooks in the kitchen" as a plural noun, but as the root
+        return (self.w[k + 1].tag in ("VBZ", "VBP", "VBD") or self.w[k + 1].dep == "ROOT"
+                or (verb_lemma(nxt) in lx.INTENT_VERBS and nxt != verb_lemma(nxt)) or nxt in ("is", "are", "was", "were"))
 
     def _exclusive_context(self, s: int) -> bool:
         """Whether the phrase at s is the exception to "nobody" in its sentence ("nobody ... except one
@@ -731,7 +749,11 @@ class _Reader:
         # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
         for k in range(len(clauses) - 2, -1, -1):
             between = range(mentions[k].last + 1, mentions[k + 1].first)
+            in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
+            leftover = [x for x in between if x not in in_places and not self._is_punct(x)
+                        and self.low[x] not in ("and", "as", "well", "plus", "with")]
             if not clauses[k].has_action and clauses[k + 1].has_action and mentions[k + 1].relation is None and \
+                    not leftover and \
                     self.w[mentions[k].first].sentence == self.w[mentions[k + 1].first].sentence and \
                     not any(self.low[x] in (";", ".", ":") for x in between):
                 own = clauses[k]
@@ -777,13 +799,16 @@ class _Reader:
         robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS or (
             low[i] == "it" and any(low[k] in lx.ROBOT_WORDS and self.w[k].sentence == self.w[i].sentence
                                    for k in range(i)))]
-        if robot_at:
-            r = robot_at[0]
+        for n_mention, r in enumerate(robot_at):
+            if c.robot is not None:
+                break
             for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
                 if tuple(low[r + 1:r + 1 + len(phrase)]) == phrase:
                     c.robot = interaction
-            # The verb closest before the robot governs it ("stop and stare at the robot": look).
-            for i in sorted((x for x in own if x < r), reverse=True):
+            # The verb closest before the robot governs it ("stop and stare at the robot": look); with
+            # two mentions, the words since the one before ("curious about the robot and follow it").
+            since = robot_at[n_mention - 1] if n_mention else -1
+            for i in sorted((x for x in own if since < x < r), reverse=True):
                 if c.robot is not None:
                     break
                 for phrase, interaction in lx.ROBOT_PHRASES.items():
@@ -794,13 +819,16 @@ class _Reader:
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
-            if c.robot is None:
-                for i in own:
-                    if low[i] in lx.ROBOT_FEELINGS:
-                        c.robot = lx.ROBOT_FEELINGS[low[i]]
-                        break
-            if c.robot is not None:
-                c.has_action = True
+        if robot_at and c.robot is None:
+            for i in own:
+                if low[i] in lx.ROBOT_FEELINGS:
+                    c.robot = lx.ROBOT_FEELINGS[low[i]]
+                    break
+        if robot_at and c.robot is None and any(low[r - 1] == "at" or (low[r - 1] == "the" and low[r - 2] == "at")
+                                                 for r in robot_at if r >= 2):
+            c.robot = "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
+        if c.robot is not None:
+            c.has_action = True
         # Places, purposes and durations, phrase by phrase.
         i_pos = 0
         while i_pos < len(own):
@@ -873,7 +901,20 @@ class _Reader:
                 continue
             v = self._verb(i)
             object_verbs = lx.START_OBJECT_VERBS | lx.DESTINATION_OBJECT_VERBS | lx.LOCATION_OBJECT_VERBS
-            if not self._after_determiner(i) and v in object_verbs:
+            if v in lx.NEGATING_VERBS and nxt in lx.DETERMINERS:
+                # "skip the critical care and go to ...": a place they do not go to
+                place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
+                end = place.end if place is not None else i + 1
+                used.update(range(i, end))
+                i_pos = self._advance(own, end)
+                continue
+            if (self.w[i].pos == "VERB" and v not in lx.INTENT_VERBS and v not in lx.ROBOT_VERBS and nxt in lx.DETERMINERS
+                    and not self._after_determiner(i) and self._names_place(self._skip(i + 1, lx.DETERMINERS))):
+                place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
+                if place is not None:
+                    c.places.append(place)
+                    used.update(range(i, place.end))
+            elif not self._after_determiner(i) and v in object_verbs:
                 if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt))):
                     role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v == "cross"
                             else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
@@ -982,7 +1023,11 @@ class _Reader:
 
     def _names_place(self, k: int) -> bool:
         """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
-        words = [self.low[j] for j in range(k, min(k + 4, self.n)) if not self._is_punct(j)]
+        words: list[str] = []
+        for j in range(k, min(k + 4, self.n)):
+            if self._is_punct(j) or (words and self.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}):
+                break  # "queue at the copier": the name ends where another place phrase starts
+            words.append(self.low[j])
         for n in range(len(words), 0, -1):
             match = self.index.match(phrase_lemmas(words[:n]))
             if match is not None and match.exact:
@@ -1156,6 +1201,18 @@ class _Reader:
             # there; only a place they are sent to ("... to the exit") makes them walk.
             sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places)
             intent = "walk" if sends or c.robot else "wait"
+        if m.first >= 2 and self.low[m.first - 1] == "by" and \
+                self.low[m.first - 2] in ("followed", "trailed", "accompanied", "joined") and earlier:
+            # "..., followed by two assistants": they go where the group before goes, behind it
+            leader = earlier[-1]
+            intent = "follow" if self.low[m.first - 2] in ("followed", "trailed") else intent
+            c = replace(c, follows=leader.who, places=c.places or [])
+            if not c.places:
+                return replace(leader, who=m.who, label=m.label, count=m.count or leader.count,
+                               intent=intent if intent == "follow" else leader.intent, relation=None,
+                               follows=leader.who if intent == "follow" else None, robot_interaction=None,
+                               robot_reaction=None, together=m.together,
+                               text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end])
         if c.robot is not None:
             intent = "robot"
         if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):

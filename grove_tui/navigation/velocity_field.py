@@ -348,3 +348,30 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
                      WALL_FADE[0], WALL_FADE[1], vectors)
     ox, oy = getattr(grid, "origin", (planner.centre_x - res / 2, planner.centre_y - res / 2))
     return VelocityField(origin=(float(ox), float(oy)), resolution=res, vectors=vectors, exit=(ex, ey), path=path.copy())
+
+
+def nearest_exits(planner: ThetaStarPlanner, exits: dict[str, tuple[float, float]],
+                  starts: list[tuple[float, float]]) -> list[str]:
+    """For each start, the exit with the shortest walk (any-angle geodesic over the planner's grid).
+
+    One Dijkstra per exit covers every start, so this costs the same for 10 people or 10,000.
+    An exit nobody can reach from a start is never chosen for it; a start that reaches no exit
+    raises PlanningError.
+    """
+    names = sorted(exits)
+    height, width = planner.occupied.shape
+    walks = np.full((len(names), len(starts)), np.inf)
+    start_cells = []
+    for x, y in starts:
+        row, col = planner.snap(float(x), float(y), f"({x:.2f}, {y:.2f})", "start")
+        start_cells.append(row * width + col)
+    flat = np.asarray(start_cells, dtype=np.int64)
+    for k, name in enumerate(names):
+        er, ec = planner.snap(*exits[name], name, "exit")
+        distance, _parent = any_angle_distances(planner.sight_rows, planner.sight_cols, er, ec)
+        walks[k] = distance[flat]
+    if len(starts) and not np.isfinite(walks.min(axis=0)).all():
+        stuck = int(np.flatnonzero(~np.isfinite(walks.min(axis=0)))[0])
+        raise PlanningError(f"start ({starts[stuck][0]:.2f}, {starts[stuck][1]:.2f}) reaches none of the exits "
+                            f"{', '.join(names)}")
+    return [names[k] for k in np.argmin(walks, axis=0).tolist()] if len(starts) else []

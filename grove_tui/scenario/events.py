@@ -19,7 +19,7 @@ class SimEvent:
 
     t: float
     agent_id: int
-    kind: str  # "queue_join", "queue_served", "evacuated", "goal_reached"
+    kind: str  # "queue_join", "queue_served", "evacuated", "left_building" (pushed outside, not evacuating), "goal_reached"
     detail: str = ""  # queue name for queue events
 
 

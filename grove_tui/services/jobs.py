@@ -1,7 +1,10 @@
 """Batch job files: one JSON object per line, every line checked before any job runs.
 
     {"world": "hospital", "preset": "queuing", "prompt": "...", "seed": 1, "name": "pharmacy", "simulate": 60,
-     "export": ["rosbag", "foxglove"]}
+     "export": ["rosbag", "foxglove"], "variations": 4}
+
+A job with "variations": N stands for N jobs (bundles NAME-v000 .. NAME-v{N-1}) whose seeds derive
+from its seed (`variation_seed`); variation 0 keeps the job's own seed, so it is the plain job's bundle.
 
 A bad line (not JSON, a missing or misspelled key, a value of the wrong type or out of range, a name
 another line already uses) is reported with its line number and skipped; the good lines still run.
@@ -10,10 +13,11 @@ another line already uses) is reported with its line number and skipped; the goo
 from __future__ import annotations
 
 import difflib
+import hashlib
 import json
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -24,7 +28,9 @@ MAX_SEED = 2**32 - 1
 MAX_SIMULATE_SECONDS = 24 * 3600.0
 MAX_PROMPT_CHARS = 2000
 REQUIRED = ("world", "preset", "prompt")
-OPTIONAL = ("seed", "name", "simulate", "export")
+OPTIONAL = ("seed", "name", "simulate", "export", "variations")
+# A generous bound that still refuses a typo like 1e9 before it expands into a billion jobs.
+MAX_VARIATIONS = 10_000
 # What `export` may list: the `grove export` formats. All but hunav read the simulated run.
 EXPORT_KINDS = ("hunav", "trajectories", "rosbag", "foxglove")
 NEEDS_RUN = frozenset({"trajectories", "rosbag", "foxglove"})
@@ -40,6 +46,44 @@ class BatchJob:
     name: str  # the bundle folder's name inside the batch's --out, unique in the file
     simulate: float | None
     exports: tuple[str, ...] = ()  # formats to write after the job, in the order given
+    variation: Variation | None = None  # set when the line asked for variations
+
+
+@dataclass(frozen=True)
+class Variation:
+    """Which of the N variations of one prompt a scenario is; recorded in its generation.json."""
+
+    index: int
+    count: int
+    parent_seed: int  # the seed the line (or `grove generate --seed`) gave; index 0 uses it as is
+
+    def to_dict(self, prompt: str) -> dict[str, Any]:
+        return {"index": self.index, "count": self.count, "parent_prompt": prompt, "parent_seed": self.parent_seed}
+
+
+def variation_seed(seed: int, index: int) -> int:
+    """The seed of variation `index` of `seed`: the same pair always gives the same seed.
+
+    Every sampler of the pipeline (the reader's vague counts and place choices, the models, spawn
+    points, timing) draws from the scenario seed, so a new seed varies all that the sentence leaves
+    open and nothing it fixes. A hash, not seed + index, so that variations of seeds 1 and 2 don't overlap.
+    """
+    if index == 0:
+        return seed
+    digest = hashlib.blake2b(f"grove-variation:{seed}:{index}".encode(), digest_size=4).digest()
+    return int.from_bytes(digest, "big")
+
+
+def variation_suffix(index: int, count: int) -> str:
+    return f"-v{index:0{max(3, len(str(count - 1)))}d}"
+
+
+def check_variations(value: Any) -> int:
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ValueError(f"variations must be a whole number, got {value!r}")
+    if not 1 <= value <= MAX_VARIATIONS:
+        raise ValueError(f"variations must be between 1 and {MAX_VARIATIONS}, got {value}")
+    return value
 
 
 @dataclass(frozen=True)
@@ -97,7 +141,7 @@ def check_exports(value: Any, simulate: float | None) -> tuple[str, ...]:
     return tuple(value)
 
 
-def _check_job(number: int, job: Any, index: int) -> BatchJob:
+def _check_job(number: int, job: Any, index: int) -> list[BatchJob]:
     if not isinstance(job, dict):
         raise ValueError("a job must be a JSON object like {\"world\": ..., \"preset\": ..., \"prompt\": ...}")
     unknown = [k for k in job if k not in REQUIRED + OPTIONAL]
@@ -120,8 +164,12 @@ def _check_job(number: int, job: Any, index: int) -> BatchJob:
         raise ValueError(f"name must be a non-empty string, got {name!r}")
     exports = check_exports(job["export"], seconds) if "export" in job else ()
     folder = folder_name(name if name is not None else f"{index:03d}-{Path(job['world']).stem}-{job['preset']}")
-    return BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds,
-                    exports)
+    plain = BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds, exports)
+    if "variations" not in job:
+        return [plain]
+    count = check_variations(job["variations"])
+    return [replace(plain, seed=variation_seed(seed, i), name=folder + variation_suffix(i, count),
+                    variation=Variation(i, count, seed)) for i in range(count)]
 
 
 def read_jobs(path: str | Path) -> tuple[list[BatchJob], list[JobProblem]]:
@@ -146,20 +194,21 @@ def read_jobs(path: str | Path) -> tuple[list[BatchJob], list[JobProblem]]:
             continue
         index += 1
         try:
-            job = _check_job(number, json.loads(line), index)
+            expanded = _check_job(number, json.loads(line), index)
         except json.JSONDecodeError as exc:
             problems.append(JobProblem(number, f"not valid JSON: {exc.msg} (column {exc.colno})"))
             continue
         except (ValueError, RecursionError) as exc:
             problems.append(JobProblem(number, str(exc) or "not a valid job"))
             continue
-        first = names.get(job.name.lower())
-        if first is not None:
-            problems.append(JobProblem(number, f"name {job.name!r} is already used by line {first}; "
+        clash = next(((job.name, names[job.name.lower()]) for job in expanded if job.name.lower() in names), None)
+        if clash is not None:
+            problems.append(JobProblem(number, f"name {clash[0]!r} is already used by line {clash[1]}; "
                                                "two jobs cannot write the same bundle"))
             continue
-        names[job.name.lower()] = number
-        jobs.append(job)
+        for job in expanded:
+            names[job.name.lower()] = number
+        jobs.extend(expanded)
     if not jobs and not problems:
         raise JobFileError(f"{source}: no jobs (one JSON object per line)")
     return jobs, problems

@@ -2,7 +2,7 @@
 through a `GroveSession`, so the same world, preset, prompt, seed and models give the same bundle
 whichever way it was asked for.
 
-A session holds what is expensive and shared: the models, loaded once per role (roles naming the
+(`grove understanding` generates its scenario sample through it too.) A session holds what is expensive and shared: the models, loaded once per role (roles naming the
 same file share one instance), the retriever, worlds and presets, and one generation pipeline per
 (world, preset, robot request). The RoI model is used the same way on every path: the `roi` role's
 model (by default the embedded one, like `bt`) refines ambiguous place mentions in every
@@ -34,11 +34,12 @@ from grove_tui.errors import (
 
 if TYPE_CHECKING:
     from grove_tui.analysis.evaluation import CaseResult, EvalCase
+    from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.presets import Preset
     from grove_tui.llm.registry import ModelChoice
-    from grove_tui.services.jobs import BatchJob, JobProblem
+    from grove_tui.services.jobs import BatchJob, JobProblem, Variation
     from grove_tui.simulation.simulation import Simulation
     from grove_tui.world import World
 
@@ -56,6 +57,21 @@ class ScenarioRequest:
     prompt: str
     seed: int = 0
     robot: RobotRequest | None = None  # None: a robot placed by the pipeline
+    variation: Variation | None = None  # which of N variations of the prompt (recorded in generation.json)
+
+
+def variation_requests(request: ScenarioRequest, count: int) -> list[ScenarioRequest]:
+    """The `count` variations of a request: same prompt, seeds derived from its seed (jobs.variation_seed)."""
+    from dataclasses import replace
+
+    from grove_tui.services.jobs import Variation, check_variations, variation_seed
+
+    try:
+        check_variations(count)
+    except ValueError as exc:
+        raise BadInputError(str(exc)) from None
+    return [replace(request, seed=variation_seed(request.seed, index), variation=Variation(index, count, request.seed))
+            for index in range(count)]
 
 
 @dataclass
@@ -167,6 +183,11 @@ class GroveSession:
         return self.load_world(request.world), self.load_preset(request.preset)
 
     # models ---------------------------------------------------------------------------------------------
+    @property
+    def model_options(self) -> tuple[str | None, str | None, str | None]:
+        """The (model, roi_model, bt_model) this session was made with, to make an equal one elsewhere (a Ray worker)."""
+        return self._cli_model, self._cli_roi, self._cli_bt
+
     def model_choices(self) -> dict[str, ModelChoice]:
         from grove_tui.llm.registry import resolve_models
 
@@ -270,6 +291,8 @@ class GroveSession:
         check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
         pipeline = self.pipeline(request.world, request.preset, request.robot)
         result = pipeline.run(request.prompt, seed=request.seed, on_event=on_event, cancel=cancel)
+        if request.variation is not None:
+            result.report["variation"] = request.variation.to_dict(request.prompt)
         bundle = self.write_bundle(result, out_dir, overwrite=overwrite)
         return GeneratedScenario(request.prompt, request.world, request.preset, request.seed, world, result, bundle)
 
@@ -380,7 +403,8 @@ class GroveSession:
         cancellation stops the whole batch (it is raised); any other error is the job's outcome."""
         target = out_dir / job.name
         try:
-            generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed), target,
+            generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed,
+                                                      variation=job.variation), target,
                                       overwrite=overwrite, on_event=on_event, cancel=cancel)
             summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
             exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name) for kind in job.exports}
@@ -477,6 +501,35 @@ class GroveSession:
                     on_progress(index, len(cases), scored)
         write_results(results, out)
         return results
+
+
+    def understand(self, cases: Sequence[UnderstandingCase], out_dir: str | Path, *,
+                   on_progress: Callable[[int, int, ScenarioScore], None] | None = None) -> list[ScenarioScore]:
+        """Generate each understanding case through `generate` and score its scenario; bundles are kept
+        under out_dir/bundles. A case that fails is scored as failed on every field."""
+        from grove_tui.analysis.understanding import SCENARIO_FIELDS, ScenarioScore, score_scenario
+        from grove_tui.bt.manifest import NODES
+
+        action_names = frozenset(name for name, spec in NODES.items() if spec.category == "action")
+        scores: list[ScenarioScore] = []
+        for index, case in enumerate(cases, start=1):
+            started = time.perf_counter()
+            try:
+                made = self.generate(ScenarioRequest(case.world, case.preset, case.prompt, case.seed),
+                                     Path(out_dir) / "bundles" / case.id)
+                trees = {a.tree: (made.bundle_dir / a.tree).read_text(encoding="utf-8") for a in made.scenario.agents}
+                score = score_scenario(case, made.world, made.scenario, trees, action_names)
+            except GroveError as exc:
+                if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
+                    raise  # a broken model or a cancellation stops the run, not one case
+                score = ScenarioScore(case, error=str(exc))
+                for name in SCENARIO_FIELDS:
+                    score.set(name, False, score.error)
+            score.seconds = time.perf_counter() - started
+            scores.append(score)
+            if on_progress is not None:
+                on_progress(index, len(cases), score)
+        return scores
 
 
 def _world_name(reference: str, bundle: Path) -> str:

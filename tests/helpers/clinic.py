@@ -44,3 +44,32 @@ zones:
     doors:
       - {name: restroom_door, position: [1.5, 8], width: 0.9, leads_to: lobby}
 """
+
+
+# ---- a bundle's generation result built by hand on the clinic (no model): post-processing + planning
+from grove_tui.generation.draft import Draft, DraftNode  # noqa: E402
+from grove_tui.generation.pipeline import GenerationResult  # noqa: E402
+from grove_tui.generation.planning import plan_operational  # noqa: E402
+from grove_tui.generation.postprocess import postprocess  # noqa: E402
+from grove_tui.generation.presets import load_preset  # noqa: E402
+from grove_tui.generation.rois import select_rois  # noqa: E402
+from grove_tui.language.quantities import extract_quantities  # noqa: E402
+from grove_tui.navigation.grid import build_grid  # noqa: E402
+from grove_tui.scenario.model import Scenario  # noqa: E402
+
+
+def make_result(world, preset_name, prompt, groups, seed=0):
+    preset = load_preset(preset_name)
+    grid = build_grid(world)
+    selection = select_rois(world, preset, prompt)
+    post = postprocess(world, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed, prompt,
+                       ("Sequence", "GoTo", "Queue", "FollowVelocityField"))
+    op = plan_operational(world, grid, preset, post, seed)
+    scenario = Scenario(world=str(world.source), preset=preset.name, prompt=prompt, seed=seed, models={"bt": "hand"},
+                        agents=tuple(op.agents), robot=op.robot,
+                        fields={fid: f"fields/{fid}.npz" for fid in op.fields})
+    return GenerationResult(scenario, op.trees, op.fields, grid, {"stages": {}, "notes": post.notes})
+
+
+QUEUE = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "pharmacy_counter"}),
+                                   DraftNode("Queue", {"service_point": "pharmacy_counter"})))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import sys
 import threading
 import time
 from collections.abc import Callable
@@ -30,6 +31,7 @@ STAGES = {
 }
 STREAM_TAIL_CHARS = 1600
 FLUSH_SECONDS = 0.05  # ~20 Hz: smooth enough to read, cheap for the UI thread
+UI_SWITCH_INTERVAL = 0.001  # seconds; Python's default 0.005 lets a busy worker hold the GIL 5x longer
 PROGRESS_SECONDS = 0.5  # how often the running stage's elapsed time, rate and ETA are redrawn
 # The grammar's token caps of the model stages: the ETA's upper bound until a run of the stage has
 # told how many tokens it really takes (then that count is the estimate).
@@ -167,6 +169,7 @@ sideways when a stage's detail is longer than the screen.
         self._generating = False
         self._started: dict[str, float] = {}
         self._progress: StageProgress | None = None
+        self._switch_interval = sys.getswitchinterval()
 
     @property
     def grove(self) -> GroveApp:
@@ -195,6 +198,10 @@ sideways when a stage's detail is longer than the screen.
         for key, label in STAGES.items():
             table.add_row(label, "·", "", "", "", key=key)
         self.set_interval(PROGRESS_SECONDS, self.show_progress, name="stage-progress")
+        # The pipeline thread runs Python (token relay, grammar, post-processing) beside the UI; a
+        # short GIL switch interval hands the UI thread the GIL sooner, so keys answer while it works.
+        self._switch_interval = sys.getswitchinterval()
+        sys.setswitchinterval(UI_SWITCH_INTERVAL)
         self.start()
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
@@ -337,6 +344,7 @@ sideways when a stage's detail is longer than the screen.
     def on_unmount(self) -> None:
         # Leaving the screen (or quitting) stops the pipeline instead of letting it run unseen.
         self._cancel.set()
+        sys.setswitchinterval(self._switch_interval)
 
     # actions --------------------------------------------------------------------------------------
     def action_cancel(self) -> None:

@@ -1,0 +1,76 @@
+"""One batch, in one process or on Ray: resume, per-job records, the dataset index.
+
+`run_batch` is what `grove batch` calls. Both ways run each job through `GroveSession.run_job`, skip
+the same completed jobs, append the same records to batch-state.jsonl and rebuild the same
+dataset.sqlite (services.dataset), so `--ray` changes where jobs run and nothing they produce.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from grove_tui.services.dataset import (
+    JobRecord,
+    append_record,
+    completed_jobs,
+    job_inputs_hash,
+    model_identity,
+    record_outcome,
+    write_index,
+)
+from grove_tui.services.jobs import BatchJob
+from grove_tui.services.session import EventSink, GroveSession
+
+
+@dataclass(frozen=True)
+class BatchResult:
+    records: list[JobRecord]  # the jobs that ran, in the order they ended
+    skipped: list[BatchJob]  # completed by an earlier run with the same inputs (resume)
+    index: Path  # dataset.sqlite
+
+    @property
+    def failures(self) -> int:
+        return sum(1 for record in self.records if not record.ok)
+
+
+def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *, overwrite: bool = False,
+              resume: bool = False, ray_address: str | None = None, workers: int | None = None,
+              on_start: Callable[[list[BatchJob], list[BatchJob]], None] | None = None,
+              events_for: Callable[[int, BatchJob], EventSink | None] | None = None,
+              on_record: Callable[[JobRecord], None] | None = None) -> BatchResult:
+    """Run the checked jobs; `on_start(to_run, skipped)` before the first, `on_record` as each ends."""
+    identity = model_identity(session.model_choices())
+    hashes = {job.name: job_inputs_hash(job, identity) for job in jobs}
+    done = completed_jobs(jobs, out_dir, hashes) if resume else set()
+    skipped = [job for job in jobs if job.name in done]
+    to_run = [job for job in jobs if job.name not in done]
+    if on_start is not None:
+        on_start(to_run, skipped)
+    records: list[JobRecord] = []
+
+    def finished(record: JobRecord) -> None:
+        append_record(out_dir, record)
+        records.append(record)
+        if on_record is not None:
+            on_record(record)
+
+    try:
+        if not to_run:
+            pass
+        elif ray_address is not None:
+            from grove_tui.services.cluster import run_on_ray
+
+            run_on_ray(to_run, out_dir, hashes, address=ray_address, workers=workers, overwrite=overwrite,
+                       models=session.model_options, on_record=finished)
+        else:
+            def outcome_done(_index: int, outcome: Any) -> None:
+                finished(record_outcome(outcome, hashes[outcome.job.name]))
+
+            session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)
+    finally:
+        # Also after a model error or Ctrl+C: the index shows what is done, failed and still pending.
+        index = write_index(out_dir, jobs)
+    return BatchResult(records, skipped, index)

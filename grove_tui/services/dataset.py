@@ -1,0 +1,241 @@
+"""A batch's record of its jobs and the dataset index built from its bundles.
+
+Both ways of running a batch (one process, or Ray actors) share this module, so they skip, record
+and index jobs the same way:
+
+- `batch-state.jsonl` (in the batch's --out): one line per finished job, appended as it finishes:
+  name, inputs hash, status ("ok" or "failed"), and for a failure its message and exit code. A
+  resumed batch skips a job whose last line says "ok" with the same inputs hash and whose bundle is
+  still there; a changed job (prompt, seed, models...) has another hash and runs again.
+- `dataset.sqlite`: one row per job of the file (world, preset, prompt, variation, seed, models,
+  counts per group, grounding verdicts, simulation metrics, status), rebuilt from the bundles after
+  every batch. Trajectories stay in the bundles. `grove dataset summary DIR` prints its totals.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import sqlite3
+from collections.abc import Iterable, Sequence
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from grove_tui.errors import BadInputError, describe_error
+
+if TYPE_CHECKING:
+    from grove_tui.services.jobs import BatchJob
+    from grove_tui.services.session import JobOutcome
+
+STATE_FILE = "batch-state.jsonl"
+INDEX_FILE = "dataset.sqlite"
+
+
+class DatasetError(BadInputError):
+    title = "Not a dataset"
+    hint = "Point `grove dataset summary` at the --out folder of a `grove batch` run."
+
+
+@dataclass(frozen=True)
+class JobRecord:
+    """How one job ended, small enough to send from a Ray worker to the driver."""
+
+    name: str
+    line: int
+    inputs: str  # job_inputs_hash
+    status: str  # "ok" | "failed"
+    message: str = ""
+    exit_code: int = 0
+    agents: int = 0
+    prompt_tokens: int = 0
+    seconds: float = 0.0
+    exports: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "ok"
+
+
+def job_inputs_hash(job: BatchJob, models: dict[str, str]) -> str:
+    """What decides a job's bundle: its request, simulation, exports and the model files of each role."""
+    variation = None if job.variation is None else [job.variation.index, job.variation.count, job.variation.parent_seed]
+    inputs = {"world": job.world, "preset": job.preset, "prompt": job.prompt, "seed": job.seed, "name": job.name,
+              "simulate": job.simulate, "exports": list(job.exports), "variation": variation, "models": models}
+    return hashlib.sha256(json.dumps(inputs, sort_keys=True).encode()).hexdigest()[:20]
+
+
+def model_identity(choices: dict[str, Any]) -> dict[str, str]:
+    """Each role's model file by name and size: a swapped GGUF changes the inputs hash."""
+    identity = {}
+    for role, choice in sorted(choices.items()):
+        path = Path(choice.path)
+        size = path.stat().st_size if path.is_file() else -1
+        identity[role] = f"{path.name}:{size}"
+    return identity
+
+
+def record_outcome(outcome: JobOutcome, inputs: str) -> JobRecord:
+    job = outcome.job
+    if outcome.error is not None:
+        return JobRecord(job.name, job.line, inputs, "failed", describe_error(outcome.error).message,
+                         outcome.error.exit_code)
+    assert outcome.generated is not None  # a JobOutcome without an error has its scenario
+    report = outcome.generated.result.report
+    return JobRecord(job.name, job.line, inputs, "ok", agents=len(outcome.generated.scenario.agents),
+                     prompt_tokens=int(report.get("prompt_tokens", 0)),
+                     seconds=float(report.get("total_seconds", 0.0)),
+                     exports=tuple((kind, str(path)) for kind, path in outcome.exports.items()))
+
+
+def append_record(out_dir: Path, record: JobRecord) -> None:
+    """One line per finished job; a line is written in one call so a crash leaves whole lines."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    line = json.dumps({k: v for k, v in asdict(record).items() if k != "exports"}) + "\n"
+    with open(out_dir / STATE_FILE, "a", encoding="utf-8") as state:
+        state.write(line)
+
+
+def read_records(out_dir: Path) -> dict[str, dict[str, Any]]:
+    """The last record of each job name; a torn last line (a killed batch) is ignored."""
+    records: dict[str, dict[str, Any]] = {}
+    path = out_dir / STATE_FILE
+    if not path.is_file():
+        return records
+    for line in path.read_text(encoding="utf-8").splitlines():
+        try:
+            entry = json.loads(line)
+        except json.JSONDecodeError:
+            continue
+        if isinstance(entry, dict) and isinstance(entry.get("name"), str):
+            records[entry["name"]] = entry
+    return records
+
+
+def completed_jobs(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str]) -> set[str]:
+    """Names of the jobs a resumed batch skips: recorded ok with the same inputs, bundle still there."""
+    from grove_tui.scenario.bundle import is_bundle
+
+    records = read_records(out_dir)
+    done = set()
+    for job in jobs:
+        entry = records.get(job.name)
+        if entry and entry.get("status") == "ok" and entry.get("inputs") == hashes[job.name] \
+                and is_bundle(out_dir / job.name):
+            done.add(job.name)
+    return done
+
+
+# -- the dataset index ---------------------------------------------------------------------------------
+
+COLUMNS = (
+    ("name", "TEXT PRIMARY KEY"), ("status", "TEXT"), ("exit_code", "INTEGER"), ("message", "TEXT"),
+    ("world", "TEXT"), ("preset", "TEXT"), ("prompt", "TEXT"), ("variation", "INTEGER"), ("variations", "INTEGER"),
+    ("parent_seed", "INTEGER"), ("seed", "INTEGER"), ("model_roi", "TEXT"), ("model_bt", "TEXT"),
+    ("agents", "INTEGER"), ("group_counts", "TEXT"), ("grounding_ok", "INTEGER"), ("grounding", "TEXT"),
+    ("generation_seconds", "REAL"), ("prompt_tokens", "INTEGER"), ("completion_tokens", "INTEGER"),
+    ("simulated", "INTEGER"), ("metrics", "TEXT"), ("inputs", "TEXT"),
+)
+
+
+def _read_json(path: Path) -> dict[str, Any]:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
+def _row(job: BatchJob, out_dir: Path, record: dict[str, Any] | None) -> dict[str, Any]:
+    bundle = out_dir / job.name
+    report = _read_json(bundle / "generation.json") if record and record.get("status") == "ok" else {}
+    metrics = _read_json(bundle / "metrics.json") if report else {}
+    grounding = report.get("grounding") or {}
+    groups = grounding.get("groups", []) if isinstance(grounding, dict) else []
+    models = report.get("models", {})
+    return {
+        "name": job.name, "status": record.get("status", "pending") if record else "pending",
+        "exit_code": int(record.get("exit_code", 0)) if record else None,
+        "message": record.get("message", "") if record else "",
+        "world": job.world, "preset": job.preset, "prompt": job.prompt,
+        "variation": job.variation.index if job.variation else None,
+        "variations": job.variation.count if job.variation else None,
+        "parent_seed": job.variation.parent_seed if job.variation else job.seed, "seed": job.seed,
+        "model_roi": models.get("roi"), "model_bt": models.get("bt"),
+        "agents": sum(int(g.get("count", 0)) for g in report.get("groups", [])) if report else None,
+        "group_counts": json.dumps({g.get("label", str(i)): g.get("count") for i, g in
+                                    enumerate(report.get("groups", []))}) if report else None,
+        "grounding_ok": (int(all(g.get("ok", False) for g in groups) and not grounding.get("unhonoured"))
+                         if grounding else None),
+        "grounding": json.dumps(grounding) if grounding else None,
+        "generation_seconds": report.get("total_seconds"), "prompt_tokens": report.get("prompt_tokens"),
+        "completion_tokens": report.get("completion_tokens"),
+        "simulated": int(bool(metrics)) if report else None, "metrics": json.dumps(metrics) if metrics else None,
+        "inputs": record.get("inputs") if record else None,
+    }
+
+
+def write_index(out_dir: Path, jobs: Iterable[BatchJob]) -> Path:
+    """Rebuild dataset.sqlite from the bundles and batch-state.jsonl; replaced in one rename."""
+    records = read_records(out_dir)
+    rows = [_row(job, out_dir, records.get(job.name)) for job in jobs]
+    target = out_dir / INDEX_FILE
+    stage = out_dir / f".{INDEX_FILE}.tmp"
+    stage.unlink(missing_ok=True)
+    with sqlite3.connect(stage) as db:
+        db.execute(f"CREATE TABLE scenarios ({', '.join(f'{name} {kind}' for name, kind in COLUMNS)})")
+        names = [name for name, _ in COLUMNS]
+        db.executemany(f"INSERT INTO scenarios ({', '.join(names)}) VALUES ({', '.join('?' * len(names))})",
+                       [tuple(row[name] for name in names) for row in rows])
+    db.close()
+    stage.replace(target)
+    return target
+
+
+@dataclass(frozen=True)
+class DatasetSummary:
+    scenarios: int
+    ok: int
+    failed: int
+    pending: int
+    agents: int
+    grounded: int  # scenarios whose grounding report says every group is as asked
+    simulated: int
+    worlds: dict[str, int]
+    presets: dict[str, int]
+    prompts: int
+    generation_seconds: float
+    failures: list[tuple[str, int, str]]  # name, exit code, message
+
+
+def summarize(out_dir: str | Path) -> DatasetSummary:
+    path = Path(out_dir) / INDEX_FILE
+    if not path.is_file():
+        raise DatasetError(f"{out_dir}: no {INDEX_FILE} (not the --out folder of a `grove batch` run)")
+    try:
+        db = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+        try:
+            cursor = db.execute("SELECT * FROM scenarios ORDER BY name")
+            names = [column[0] for column in cursor.description]
+            rows = [dict(zip(names, values)) for values in cursor]
+        finally:
+            db.close()
+    except sqlite3.Error as exc:
+        raise DatasetError(f"{path}: not a readable dataset index: {exc}") from None
+
+    def count_by(key: str) -> dict[str, int]:
+        counts: dict[str, int] = {}
+        for row in rows:
+            counts[row[key]] = counts.get(row[key], 0) + 1
+        return dict(sorted(counts.items()))
+
+    ok = [row for row in rows if row["status"] == "ok"]
+    return DatasetSummary(
+        scenarios=len(rows), ok=len(ok), failed=sum(row["status"] == "failed" for row in rows),
+        pending=sum(row["status"] == "pending" for row in rows), agents=sum(row["agents"] or 0 for row in ok),
+        grounded=sum(1 for row in ok if row["grounding_ok"]), simulated=sum(1 for row in ok if row["simulated"]),
+        worlds=count_by("world"), presets=count_by("preset"), prompts=len({row["prompt"] for row in rows}),
+        generation_seconds=round(sum(row["generation_seconds"] or 0.0 for row in ok), 2),
+        failures=[(row["name"], int(row["exit_code"] or 0), row["message"]) for row in rows
+                  if row["status"] == "failed"])
+

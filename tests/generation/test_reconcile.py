@@ -1,0 +1,159 @@
+"""The draft checked against the reading (generation/reconcile.py) and the grounding report.
+
+Drafts are written by hand here, as a weak or a capable model would write them, so each repair
+(and each thing that must NOT be repaired) is tested on its own; the e2e tests run the real model.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.generation.postprocess import postprocess
+from grove_tui.generation.presets import load_preset
+from grove_tui.generation.reconcile import grounding_report, is_idle, reconcile
+from grove_tui.generation.rois import select_rois
+from grove_tui.language.reading import read_prompt
+from grove_tui.navigation.grid import build_grid
+from grove_tui.paths import worlds_dir
+from grove_tui.scenario.report import GroundingReport
+from grove_tui.world.loader import load_world
+
+
+@pytest.fixture(scope="module")
+def hospital():
+    return load_world(worlds_dir() / "hospital.yaml")
+
+
+@pytest.fixture(scope="module")
+def grid(hospital):
+    return build_grid(hospital, resolution=0.2, inflation=0.35)
+
+
+def goto(target):
+    return DraftNode("GoTo", {"target": target})
+
+
+def seq(*children):
+    return DraftNode("Sequence", {}, tuple(children))
+
+
+def run(hospital, prompt, groups, notes=None):
+    notes = [] if notes is None else notes
+    return reconcile(Draft(tuple(groups)), read_prompt(prompt, hospital), hospital, "entrance_lobby", notes), notes
+
+
+def test_a_tree_that_only_checks_conditions_is_idle_and_replaced(hospital):
+    idle = DraftNode("Sequence", {}, (DraftNode("IsRobotVisible", {"distance": 5.0}),))
+    assert is_idle(idle)
+    groups, notes = run(hospital, "Six visitors walk to the cafeteria.", [DraftGroup("visitors", 6, "entrance_lobby", idle)])
+    assert not is_idle(groups[0].tree)
+    assert any(n.node == "GoTo" and n.ports["target"] == "cafeteria" for n in groups[0].tree.walk())
+    assert any("no action" in n for n in notes)
+
+
+@pytest.mark.parametrize("model_tree", [goto("pharmacy_counter"), seq(goto("cafeteria"), DraftNode("Wait", {}))])
+def test_a_queue_the_model_turned_into_something_else_is_repaired(hospital, model_tree):
+    groups, notes = run(hospital, "Five patients line up at the reception desk to register.",
+                        [DraftGroup("patients", 5, "entrance_lobby", model_tree)])
+    queue = [n for n in groups[0].tree.walk() if n.node == "Queue"]
+    assert [q.ports["service_point"] for q in queue] == ["reception_desk"]
+    assert any("queue at reception_desk" in n for n in notes)
+
+
+def test_what_a_capable_model_adds_is_kept(hospital):
+    # The model walks them to the cafeteria and adds a wait there: nothing contradicts the reading.
+    tree = seq(goto("main_corridor"), goto("cafeteria"), DraftNode("Wait", {"duration": 30.0}))
+    groups, notes = run(hospital, "Six visitors walk to the cafeteria.", [DraftGroup("visitors", 6, "entrance_lobby", tree)])
+    assert groups[0].tree == tree and notes == []
+
+
+def test_a_destination_the_tree_never_reaches_is_appended(hospital):
+    tree = seq(goto("main_corridor"), DraftNode("Wait", {"duration": 10.0}))
+    groups, notes = run(hospital, "Six visitors walk to the cafeteria.", [DraftGroup("visitors", 6, "entrance_lobby", tree)])
+    assert groups[0].tree.children[:2] == tree.children
+    assert groups[0].tree.children[-1] == goto("cafeteria")
+
+
+def test_a_missing_second_group_is_added_and_counts_follow_the_reading(hospital):
+    prompt = "Ten patients walk to the pharmacy, while a few others stroll around the lobby."
+    groups, notes = run(hospital, prompt, [DraftGroup("patients", 3, "entrance_lobby", goto("pharmacy"))])
+    reading = read_prompt(prompt, hospital)
+    assert [(g.label, g.count) for g in groups] == [("patient", 10), ("patient", reading.groups[1].count.value)]
+    assert [n.node for n in groups[1].tree.walk()] == ["Wander"]
+    assert any("count 3 -> 10" in n for n in notes) and any("added" in n for n in notes)
+
+
+def test_extra_model_groups_are_dropped_with_a_note(hospital):
+    groups, notes = run(hospital, "Six visitors walk to the cafeteria.",
+                        [DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),
+                         DraftGroup("FollowAgent", 2, "entrance_lobby", goto("pharmacy"))])
+    assert len(groups) == 1 and any("dropped group 'FollowAgent'" in n for n in notes)
+
+
+@pytest.mark.parametrize("phrase,behavior", [("stares at the robot", "Surprised"), ("follows the robot", "Curious"),
+                                             ("avoids the robot", "Scared"), ("blocks the robot", "Threatening"),
+                                             ("approaches the robot", "Curious")])
+def test_robot_reactions_set_the_behavior_and_the_tree(hospital, phrase, behavior):
+    prompt = f"Eight visitors walk to the cafeteria and one of them {phrase}."
+    groups, _ = run(hospital, prompt, [DraftGroup("visitors", 8, "entrance_lobby", goto("cafeteria"))])
+    assert [(g.count, g.behavior) for g in groups] == [(7, "Regular"), (1, behavior)]
+    reactor = groups[1].tree
+    assert reactor.node == "ReactiveFallback" and any(n.node in ROBOT_REACTIONS for n in reactor.walk())
+    assert not is_idle(reactor)
+
+
+def test_structured_counts_become_parties(hospital):
+    groups, _ = run(hospital, "Two families of three walk to the cafeteria.",
+                    [DraftGroup("families", 2, "entrance_lobby", goto("cafeteria"))])
+    assert (groups[0].count, groups[0].party_size, groups[0].label) == (6, 3, "family")
+    assert groups[0].tree.children[0].node == "JoinGroup"
+
+
+@pytest.mark.parametrize("prompt", [
+    "Ten patients queue at the pharmacy counter while two nurses chat in the staff room.",
+    "Two families of three walk together to the cafeteria, while a few others stroll around the lobby.",
+    "Evacuate the pharmacy: twenty people leave by the main entrance and one of them follows the robot.",
+    "Nobody is here except one guard who waits on the bench for five minutes.",
+])
+def test_postprocessed_scenario_grounds_every_group(hospital, grid, prompt):
+    preset = load_preset("normal")
+    reading = read_prompt(prompt, hospital)
+    selection = select_rois(hospital, preset, prompt, reading=reading)
+    # The weakest draft: one idle group with a node name for a label.
+    draft = Draft((DraftGroup("FollowAgent", 1, "entrance_lobby", DraftNode("IsRobotVisible", {})),))
+    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("GoTo", "Queue"), reading=reading)
+    assert all(not is_idle(g.tree) for g in post.groups)
+    assert all(g.label not in ("FollowAgent",) for g in post.groups)
+    report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
+    assert report.ok, report.lines()
+    assert len(report.groups) == len([g for g in post.groups])
+    assert GroundingReport.from_dict(report.to_dict()) == report
+    for g in post.groups:
+        reading_group = reading.groups[g.reading_index]
+        if reading_group.robot_reaction:
+            assert all(a.behavior == reading_group.robot_reaction for a in post.agents if a.group_index == g.index)
+
+
+def test_the_report_says_what_was_not_honoured(hospital, grid):
+    prompt = "Six visitors walk to the cafeteria."
+    preset = load_preset("normal")
+    reading = read_prompt(prompt, hospital)
+    selection = select_rois(hospital, preset, prompt, reading=reading)
+    post = postprocess(hospital, grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
+                       [], selection, 0, prompt, ("GoTo",), reading=reading)
+    post.groups[0].tree = goto("pharmacy")  # as if something downstream had sent them elsewhere
+    post.groups[0].count = 4
+    report = grounding_report(reading, post.groups, post.agents, hospital)
+    checks = {c.field: c for c in report.groups[0].checks}
+    assert not checks["destination"].ok and not checks["count"].ok and not report.ok
+    assert any(line.startswith("✗") for line in report.lines())
+
+
+def test_wandering_at_the_destination_is_kept_after_walking_there(hospital):
+    tree = DraftNode("Wander", {"zone": "ward_a", "duration": 120.0})
+    groups, notes = run(hospital, "Three visitors walk from the entrance lobby to ward a.",
+                        [DraftGroup("visitors", 3, "ward_a", tree)])
+    assert groups[0].tree == seq(goto("ward_a"), tree) and groups[0].spawn == "entrance_lobby"
+    assert any("walks to ward_a before" in n for n in notes)

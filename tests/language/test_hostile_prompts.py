@@ -1,0 +1,121 @@
+"""Prompts that cannot describe a crowd are refused with a sentence, before any model runs."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+from grove_tui.errors import PromptError
+from grove_tui.generation.postprocess import check_population, check_stated_counts
+from grove_tui.generation.presets import load_preset
+from grove_tui.generation.rois import select_rois
+from grove_tui.language.quantities import extract_quantities
+from grove_tui.navigation.grid import build_grid
+from grove_tui.world import load_world
+
+
+def refuse(prompt: str, preset: str = "emergency") -> str:
+    """The checks GenerationPipeline.run makes before any model runs, in its order."""
+    from grove_tui.generation.pipeline import quantities_from_reading
+    from grove_tui.language.reading import read_prompt
+
+    world = load_world("hospital")
+    with pytest.raises(PromptError) as caught:
+        check_stated_counts(prompt, extract_quantities(prompt))
+        reading = read_prompt(prompt, world)
+        check_population(world, build_grid(world, 0.1), load_preset(preset),
+                         select_rois(world, load_preset(preset), prompt, reading=reading),
+                         quantities_from_reading(reading))
+    assert caught.value.exit_code == 2
+    return str(caught.value)
+
+
+@pytest.mark.parametrize("prompt, expected", [
+    ("-5 people walk to the pharmacy", "'-5 people' is a negative number of people"),
+    ("minus 3 nurses walk to the pharmacy", "is a negative number of people"),
+    ("a billion people evacuate the cafeteria", "1000000000 people"),
+    ("10 million people evacuate the cafeteria", "10000000 people"),
+    ("🔥🔥🔥", "no words to read"),
+    ("zero people evacuate the cafeteria", "'zero people' asks for nobody"),
+])
+def test_refused_with_a_reason(prompt, expected):
+    assert expected in refuse(prompt)
+
+
+@pytest.mark.parametrize("prompt, count", [("3-5 people walk to the pharmacy", 3),
+                                           ("twenty-five patients queue at the pharmacy", 25),
+                                           ("ten million visitors walk in", 10_000_000)])
+def test_ranges_hyphens_and_large_scales_are_read(prompt, count):
+    assert extract_quantities(prompt)[0].count == count
+
+
+def test_stdout_on_dev_full_is_one_line_not_a_traceback():
+    code = "import sys; sys.argv = ['grove', 'worlds', 'list']; from grove_tui.cli import main; main()"
+    with open("/dev/full", "w") as full:
+        done = subprocess.run([sys.executable, "-c", code], stdout=full, stderr=subprocess.PIPE, text=True,
+                              env={**os.environ}, timeout=120)
+    assert done.returncode == 3
+    assert done.stderr.strip().splitlines() == [
+        "error: cannot write the output: No space left on device (hint: free some space or write somewhere else)"]
+
+
+def test_an_unwritable_out_is_refused_before_any_work():
+    from grove_tui.errors import OutputError
+    from grove_tui.files import check_output_dir
+    from grove_tui.scenario.bundle import is_bundle
+
+    # root passes access() on /proc; only creating something there tells the truth.
+    with pytest.raises(OutputError, match="cannot write there"):
+        check_output_dir("/proc/grove-out", owned=is_bundle)
+
+
+def test_a_device_named_as_a_world_file_is_not_called_missing():
+    from grove_tui.errors import WorldError
+    from grove_tui.world import load_world
+
+    with pytest.raises(WorldError, match="is not a regular file"):
+        load_world("/dev/zero")
+
+
+def test_a_config_alias_bomb_is_refused_not_expanded(tmp_path, monkeypatch):
+    import time
+
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    levels = "a: &a [x,x,x,x,x,x,x,x,x]\n" + "".join(
+        f"{chr(98 + i)}: &{chr(98 + i)} [" + ",".join(["*" + chr(97 + i)] * 9) + "]\n" for i in range(8))
+    config = tmp_path / "config.yaml"
+    config.write_text(levels + "ui:\n  theme: *i\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    started = time.perf_counter()
+    with pytest.raises(SettingsError, match="expands to more than"):
+        load_settings()
+    assert time.perf_counter() - started < 5.0  # it hung (the error message repr'd the expansion)
+
+
+def test_a_config_key_that_is_not_text_is_a_settings_error(tmp_path, monkeypatch):
+    # Found by bench/fuzz.py: a `!!binary` key reached pydantic, which raised TypeError.
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    config = tmp_path / "config.yaml"
+    config.write_text("!!binary AAAA: dark\nui:\n  theme: dark\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    with pytest.raises(SettingsError, match="is not a setting name"):
+        load_settings()
+
+
+def test_an_empty_config_key_is_a_settings_error(tmp_path, monkeypatch):
+    # Found by bench/fuzz.py: `&anchor:` on a line of its own makes a None key.
+    from grove_tui.errors import SettingsError
+    from grove_tui.settings import load_settings
+
+    config = tmp_path / "config.yaml"
+    config.write_text("ui:\n  theme: dark\ngeneration:\n&lation:\n  seconds: 60\n")
+    monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
+    with pytest.raises(SettingsError, match="key None is not a setting name"):
+        load_settings()

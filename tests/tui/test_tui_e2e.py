@@ -1,0 +1,176 @@
+"""End to end in a real terminal: tmux runs the installed `grove`, we type, and read the screen back.
+
+Launch -> type a prompt -> generate with the embedded model -> play 10 simulated seconds -> export
+while playing -> back to setup -> reopen the run from the recent runs -> regenerate with the next seed
+-> quit.
+Needs tmux (CI: `apt-get install -y tmux`) and the installed `grove` command (`pip install -e .`).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import time
+import uuid
+from pathlib import Path
+
+import pytest
+
+TMUX = shutil.which("tmux")
+GROVE = shutil.which("grove")
+WIDTH, HEIGHT = 120, 40
+
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(TMUX is None, reason="tmux is not installed; CI must run `apt-get install -y tmux`"),
+    pytest.mark.skipif(GROVE is None, reason="the `grove` command is not installed (pip install -e .)"),
+]
+
+
+class Terminal:
+    def __init__(self, command: str, env: dict[str, str], width: int = WIDTH, height: int = HEIGHT) -> None:
+        self.name = f"grove-e2e-{uuid.uuid4().hex[:8]}"
+        exports = " ".join(f"{k}={shlex.quote(v)}" for k, v in env.items())
+        # `sleep` keeps the pane readable if grove exits early, so the failure shows what it printed.
+        script = f"env {exports} {command}; echo GROVE-EXITED $?; sleep 60"
+        subprocess.run([TMUX, "new-session", "-d", "-s", self.name, "-x", str(width), "-y", str(height), script],
+                       check=True)
+
+    def screen(self) -> str:
+        out = subprocess.run([TMUX, "capture-pane", "-p", "-t", self.name], capture_output=True, text=True)
+        return out.stdout
+
+    def keys(self, *keys: str, literal: bool = False) -> None:
+        args = [TMUX, "send-keys", "-t", self.name] + (["-l"] if literal else []) + list(keys)
+        subprocess.run(args, check=True)
+
+    def wait_for(self, pattern: str, timeout: float, what: str) -> re.Match[str]:
+        deadline = time.monotonic() + timeout
+        while True:
+            text = self.screen()
+            match = re.search(pattern, text)
+            if match:
+                return match
+            if "GROVE-EXITED" in text or time.monotonic() > deadline:
+                raise AssertionError(f"waiting for {what} ({pattern!r}); the screen shows:\n{text}")
+            time.sleep(0.1)
+
+    def close(self) -> None:
+        subprocess.run([TMUX, "kill-session", "-t", self.name], capture_output=True)
+
+
+def grove_env(tmp_path: Path, config: str) -> dict[str, str]:
+    config_dir = tmp_path / "config"
+    config_dir.mkdir(exist_ok=True)
+    (config_dir / "config.yaml").write_text(config, encoding="utf-8")
+    env = {
+        "GROVE_CONFIG_DIR": str(config_dir),
+        "GROVE_DATA_DIR": str(tmp_path / "data"),
+        "TERM": "xterm-256color",
+        "HF_HUB_OFFLINE": "1",
+        "TRANSFORMERS_OFFLINE": "1",
+    }
+    # The retrieval index lives in the user's cache, built once per machine, as for any `grove` user.
+    if os.environ.get("GROVE_TEST_CACHE_DIR"):
+        env["GROVE_CACHE_DIR"] = os.environ["GROVE_TEST_CACHE_DIR"]
+    # A worktree's code, when the tests run with PYTHONPATH pointing at it (the command is installed editable).
+    if os.environ.get("PYTHONPATH"):
+        env["PYTHONPATH"] = os.environ["PYTHONPATH"]
+    return env
+
+
+def simulated_time(screen: str) -> float:
+    match = re.search(r"t =\s+([0-9.]+) s", screen)
+    return float(match.group(1)) if match else -1.0
+
+
+def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
+    exports = tmp_path / "exports"
+    env = grove_env(tmp_path, f"generation:\n  world: hospital\n  preset: queuing\nexport:\n  directory: {exports}\n")
+
+    started = time.monotonic()
+    terminal = Terminal(shlex.quote(GROVE or "grove"), env)
+    try:
+        terminal.wait_for(r"Generate", 20, "the setup screen")
+        startup = time.monotonic() - started
+        print(f"\ngrove was interactive after {startup:.2f} s")
+        assert startup < 5.0, f"startup took {startup:.2f} s"
+        terminal.wait_for(r"Map: hospital", 30, "the hospital map preview")
+
+        terminal.keys("ten patients queue at the pharmacy counter", literal=True)
+        terminal.keys("Enter")
+        terminal.wait_for(r"Tree synthesis|RoIs", 30, "the generation view")
+        terminal.wait_for(r"Trees · \d+ agents", 900, "the inspect screen")
+        assert "Regular" in terminal.screen() or "agent" in terminal.screen()
+
+        terminal.keys("p")
+        terminal.wait_for(r"paused", 300, "the simulation screen")
+        terminal.keys("Space")  # real time: still playing when the export starts
+        deadline = time.monotonic() + 300
+        while simulated_time(terminal.screen()) < 10.0:
+            assert time.monotonic() < deadline, "10 simulated seconds did not pass:\n" + terminal.screen()
+            time.sleep(0.2)
+        played = simulated_time(terminal.screen())
+        assert played >= 10.0
+
+        # export while playing: the run pauses visibly, a dialog shows the progress, then the files
+        terminal.keys("e")
+        terminal.wait_for(r"Exporting the run", 30, "the export progress dialog")
+        terminal.wait_for(r"paused for export|Exported to", 30, "the paused simulation behind the dialog")
+        terminal.wait_for(r"Exported to", 180, "the export dialog")
+        screen = terminal.screen()
+        assert "✓ bundle" in screen and "✓ trajectories" in screen
+        out_dirs = sorted(exports.iterdir())
+        assert len(out_dirs) == 1
+        bundle = out_dirs[0] / "bundle"
+        assert (bundle / "scenario.yaml").is_file()
+        rows = (bundle / "trajectories.csv").read_text(encoding="utf-8").splitlines()
+        assert rows[0].startswith("frame,t,id,x,y")
+        last_t = max(float(line.split(",")[1]) for line in rows[1:])
+        assert last_t >= 10.0 - 0.1, f"trajectories end at {last_t} s"
+        assert (bundle / "metrics.json").is_file()
+
+        terminal.keys("Escape")
+        terminal.wait_for(r"▶ playing", 10, "the simulation playing again after the export")
+        terminal.keys("Escape")  # to inspect; exported, so Escape goes to setup without asking
+        terminal.wait_for(r"Trees · \d+ agents", 10, "the inspect screen")
+        terminal.keys("Escape")
+        terminal.wait_for(r"Recent", 10, "the setup screen")
+
+        # reopen the run from the recent runs, then regenerate it with the next seed
+        terminal.keys("C-o")
+        terminal.wait_for(r"seed 0 · \d+ agents", 20, "the recent runs list")
+        terminal.keys("Enter")
+        terminal.wait_for(r"Trees · \d+ agents", 60, "the reopened run in inspect")
+        terminal.keys("g")
+        terminal.wait_for(r"seed 1", 30, "the generation with seed 1")
+        terminal.wait_for(r"Trees · \d+ agents", 900, "the regenerated scenario")
+        runs = sorted((tmp_path / "data" / "runs").iterdir())
+        assert [run.name.rsplit("-", 1)[-1] for run in runs] == ["0", "1"], [run.name for run in runs]
+
+        started = time.monotonic()
+        terminal.keys("C-q")
+        terminal.wait_for(r"GROVE-EXITED 0", 20, "a clean exit")
+        print(f"quit took {time.monotonic() - started:.2f} s")
+    finally:
+        terminal.close()
+
+
+def test_quit_takes_under_a_second_once_everything_is_loaded(tmp_path):
+    """Issue 21 item 14: ctrl+q to the shell prompt, with both models and the embedder warm."""
+    env = grove_env(tmp_path, "generation:\n  world: hospital\n  preset: queuing\n")
+    terminal = Terminal(shlex.quote(GROVE or "grove"), env, 80, 24)
+    try:
+        terminal.wait_for(r"Generate", 30, "the setup screen")
+        terminal.wait_for(r"ready to generate", 300, "models and embedder warm")
+        started = time.monotonic()
+        terminal.keys("C-q")
+        terminal.wait_for(r"GROVE-EXITED 0", 20, "a clean exit")
+        seconds = time.monotonic() - started
+        print(f"\nquit took {seconds:.2f} s")
+        assert seconds < 1.0, f"quit took {seconds:.2f} s"
+    finally:
+        terminal.close()

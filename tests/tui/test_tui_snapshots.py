@@ -1,0 +1,159 @@
+"""SVG snapshots of every screen at 80x24 and 120x40 (pytest-textual-snapshot).
+
+Deterministic by construction: fixed seed, a fake LLM with a fixed answer, scripted pipeline timings,
+simulated time only (no wall clock), cursor blink off. Accept intended changes with
+`python -m pytest tests/tui/test_tui_snapshots.py --snapshot-update` and review the SVGs.
+"""
+
+from __future__ import annotations
+
+import pytest
+from helpers.app import (
+    FIXED_SCRIPT,
+    PROMPT,
+    ScriptedBackend,
+    fake_llm_backend,
+    setup_ready,
+    test_settings,
+    wait_until,
+)
+from textual.widgets import DataTable, Static
+
+from grove_tui.tui.app import GroveApp
+from grove_tui.tui.screens.generation import GenerationScreen
+from grove_tui.tui.screens.help import HelpScreen
+from grove_tui.tui.screens.inspect import InspectScreen
+from grove_tui.tui.screens.recent import RecentRunsScreen
+from grove_tui.tui.screens.simulation import SimulationScreen
+from grove_tui.tui.widgets.bt_tree import BTTree
+
+SIZES = [pytest.param((80, 24), id="80x24"), pytest.param((120, 40), id="120x40")]
+
+
+async def to_inspect(pilot) -> InspectScreen:
+    await setup_ready(pilot)
+    await pilot.press(*PROMPT, "enter")
+    app = pilot.app
+    await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen), timeout=60, what="inspect")
+    screen = app.screen
+    await wait_until(pilot, lambda: screen._selected_node is not None, what="first agent selected")
+    return screen
+
+
+class TestSetupScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_setup(self, snap_compare, tmp_path, size):
+        app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=setup_ready)
+
+
+class TestGenerationScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_generation_streaming(self, snap_compare, tmp_path, size, monkeypatch):
+        from grove_tui.tui.screens import generation
+
+        # A stopped progress clock: elapsed 0.0 s and a fixed rate, whatever the machine's speed.
+        monkeypatch.setattr(generation, "monotonic", lambda: 100.0)
+        backend = ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=10)
+
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press(*PROMPT, "enter")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, GenerationScreen), what="generation")
+            screen = app.screen
+            await wait_until(pilot, backend.blocking.is_set, what="script played")
+            table = screen.query_one("#stages", DataTable)
+            await wait_until(pilot, lambda: table.get_cell("synthesis", "state") == "running", what="synthesis")
+            await wait_until(pilot, lambda: "patients" in str(screen.query_one("#stream", Static).render()),
+                             what="stream")
+            await wait_until(pilot, lambda: "tok/s" in str(table.get_cell("synthesis", "detail")), what="progress")
+
+        app = GroveApp(backend, test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestInspectScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_inspect(self, snap_compare, tmp_path, size):
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=to_inspect)
+
+
+class TestInspectGrounding:
+    """The grounding report (key `a`) beside the map, read from the generated bundle's report."""
+
+    def test_grounding_report_at_80x24(self, snap_compare, tmp_path):
+        async def run_before(pilot) -> None:
+            screen = await to_inspect(pilot)
+            await pilot.press("a")
+            await wait_until(pilot, lambda: screen.query_one("#grounding").display, what="grounding panel")
+            await pilot.pause()
+
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
+
+
+class TestSimulationScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_simulation_after_ten_steps(self, snap_compare, tmp_path, size):
+        async def run_before(pilot) -> None:
+            await to_inspect(pilot)
+            await pilot.press("p")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
+            sim = app.screen
+            await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None,
+                             what="first frame")
+            await pilot.press(*["n"] * 10)
+            await wait_until(pilot, lambda: sim.controller.latest.frame.step == 10, what="ten steps")
+            tree = sim.query_one("#sim-tree", BTTree)
+            await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial and bool(tree._status),
+                             what="last frame drawn")
+            await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step,
+                             what="counters of the last frame")
+
+        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestHelpScreen:
+    @pytest.mark.parametrize("size", SIZES)
+    def test_help_for_the_prompt(self, snap_compare, tmp_path, size):
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press("f1")
+            await wait_until(pilot, lambda: isinstance(pilot.app.screen, HelpScreen), what="help")
+
+        app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+        assert snap_compare(app, terminal_size=size, run_before=run_before)
+
+
+class TestRecentRunsScreen:
+    def test_recent_runs(self, snap_compare, tmp_path, monkeypatch):
+        import os
+        import time
+
+        # Fixed home, clock zone and file times: the list shows the folder (as ~/...) and each run's time.
+        monkeypatch.setenv("HOME", str(tmp_path))
+        monkeypatch.setenv("TZ", "UTC")
+        time.tzset()
+        backend = fake_llm_backend(tmp_path / "runs")
+        for index, seed in enumerate((3, 4)):
+            generated = backend.generate("hospital", "queuing", PROMPT, seed)
+            stamp = 1_790_000_000 + 600 * index
+            os.utime(generated.bundle_dir / "scenario.yaml", (stamp, stamp))
+
+        async def run_before(pilot) -> None:
+            await setup_ready(pilot)
+            await pilot.press("ctrl+o")
+            app = pilot.app
+            await wait_until(pilot, lambda: isinstance(app.screen, RecentRunsScreen) and len(app.screen.runs) == 2,
+                             what="recent runs")
+
+        app = GroveApp(backend, test_settings(tmp_path))
+        try:
+            assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
+        finally:
+            monkeypatch.undo()
+            time.tzset()
