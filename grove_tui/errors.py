@@ -169,6 +169,13 @@ class FieldFileError(BadInputError):
     hint = "Regenerate the bundle: one of its fields/*.npz files is broken."
 
 
+class DatasetError(BadInputError):
+    """A folder that is not the output of a `grove batch` run, or whose dataset index is unreadable."""
+
+    title = "Not a dataset"
+    hint = "Point `grove dataset summary` at the --out folder of a `grove batch` run."
+
+
 class OutputError(BadInputError):
     """An output path that GROVE must not or cannot write: the message names it and what to do."""
 
