@@ -32,6 +32,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "understanding": ("grove_tui.cli.understanding:understanding",
                       "Score prompt understanding: each field of the reading, and scenarios for a sample."),
     "open": ("grove_tui.cli.open:open_command", "Open a saved scenario bundle in the app (inspect screen)."),
+    "validate": ("grove_tui.cli.validate:validate", "Verify the simulation: RiMEA tests as a pass/fail table."),
 }
 
 

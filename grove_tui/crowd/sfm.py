@@ -60,7 +60,8 @@ P_BODY = 15
 P_SKIP = 16
 P_HOLD = 17
 P_FRICTION = 18
-P_COUNT = 19
+P_DENSITY_RADIUS = 19
+P_COUNT = 20
 
 # Layout of the robot state vector.
 R_X = 0
@@ -101,7 +102,7 @@ _TINY = 1e-12
 _GOLDEN_ANGLE = 2.399963229728653
 # A standing person braces: the pull back to its spot may reach this multiple of the walking
 # drive (w_goal v0 / tau). Its speed stays clipped to v0, so it steps back no faster than it walks.
-# At 1x walkers shoved waiting people over 0.3 m (tests/test_physics_waiting.py).
+# At 1x walkers shoved waiting people over 0.3 m (tests/simulation/test_physics_waiting.py).
 HOLD_BRACE = 3.0
 # No nnan/ninf: the kernels rely on isfinite checks to keep every value finite.
 _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
@@ -149,6 +150,10 @@ class SFMParams:
     # Sliding friction (1/(m s)) along the contact tangent while bodies overlap: HFV 2000's
     # kappa = 2.4e5 kg/(m s) for 80 kg. It is what makes a jammed doorway slow.
     friction_weight: float = 2.4e5 / 80.0
+    # Speed falls with the density ahead as in Weidmann 1993 (RiMEA test 4): the desired speed is
+    # scaled by 1 - exp(-1.913 (1/rho - 1/5.4)), rho counted in the half disc of this radius in
+    # front of the agent. 0 turns it off (lightsfm: a dense crowd walks at free speed, issue 19).
+    density_radius: float = 1.5
     # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
     # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
     social_skip_exponent: float = 8.0
@@ -161,7 +166,7 @@ class SFMParams:
     @classmethod
     def lightsfm(cls, **overrides: float) -> SFMParams:
         """lightsfm's (HuNavSim's) forces exactly, as Gazebo runs them: soft bodies, no holding."""
-        values = dict(epsilon=0.0, body_weight=0.0, friction_weight=0.0, hold_time=0.0,
+        values = dict(epsilon=0.0, body_weight=0.0, friction_weight=0.0, hold_time=0.0, density_radius=0.0,
                       social_skip_exponent=math.inf, wall_clearance=0.5)
         values.update(overrides)
         return cls(**values)
@@ -202,6 +207,7 @@ class SFMParams:
         out[P_SKIP] = self.social_skip_exponent
         out[P_HOLD] = self.hold_time
         out[P_FRICTION] = self.friction_weight
+        out[P_DENSITY_RADIUS] = self.density_radius
         return out
 
 
@@ -824,6 +830,9 @@ def _update_agents(k0, k1, dt, params,
     n_vel = params[P_NPRIME]
     body = params[P_BODY]
     friction = params[P_FRICTION]
+    density_radius = params[P_DENSITY_RADIUS]
+    # people per m^2 = count in the half disc ahead / its area
+    density_area = 0.5 * math.pi * density_radius * density_radius
     skip_exponent = params[P_SKIP]
     n_min = min(n_angle, n_vel)
     robot_present = robot[R_PRESENT] != 0.0
@@ -910,6 +919,7 @@ def _update_agents(k0, k1, dt, params,
         # social force from neighbours in the 3x3 surrounding cells (Moussaid, inlined: hot loop)
         sfx = 0.0
         sfy = 0.0
+        ahead = 0
         c = cell_of[i]
         ccx = c % gnx
         ccy = c // gnx
@@ -930,6 +940,8 @@ def _update_agents(k0, k1, dt, params,
                         uy = dy / dist
                     else:
                         ux, uy = _tie_break_direction(i, order[kk])
+                    if dist < density_radius and ux * ex + uy * ey > 0.0:
+                        ahead += 1
                     overlap = ri + srad[kk] - dist
                     if overlap > 0.0:
                         fx -= body * overlap * ux
@@ -1011,6 +1023,16 @@ def _update_agents(k0, k1, dt, params,
                     fy += mag * math.sin(a)
         fx += w_soc * sfx
         fy += w_soc * sfy
+        if has_dir and ahead > 0 and density_radius > 0.0:
+            # Weidmann's fundamental diagram, normalised to 1 at free flow: the drive aims at the
+            # slower speed (lowering v0 in w_goal (v0 e - v) / tau)
+            rho = ahead / density_area
+            slow = 0.0
+            if rho < 5.4:
+                # _fast_exp, not math.exp: the same bits in the serial and the parallel kernel
+                slow = 1.0 - _fast_exp(-1.913 * (1.0 / rho - 1.0 / 5.4))
+            fx -= w_goal * v0 * (1.0 - slow) * ex / tau
+            fy -= w_goal * v0 * (1.0 - slow) * ey / tau
 
         # obstacle force summed over nearby wall segments
         wc = _wall_cell(px, py, wall_meta)
@@ -1249,8 +1271,8 @@ def _commit_rows(k0, k1, order, pos, vel, yaw, new_pos, new_vel, new_yaw):
         yaw[i] = new_yaw[i]
 
 
-# Jacobi passes of _separate per step: in a room pressed into a corner one left 8.7 cm overlaps,
-# three 5.3 cm.
+# Jacobi passes of _separate per step (even: they run in pairs): in a room pressed into a corner
+# one left 8.7 cm overlaps, three 5.3 cm, four under 5.
 SEPARATION_PASSES = 4
 
 # Agents per parallel work item: large enough to amortise scheduling, small enough to balance.
@@ -1293,14 +1315,15 @@ def advance_serial(n_steps, dt, params,
                        walls, wall_owner, wall_meta, wall_start, wall_items,
                        order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                        new_pos, new_vel, new_yaw)
-        source = new_pos
-        target = separated
         if params[P_BODY] > 0.0:
-            for _pass in range(SEPARATION_PASSES):
-                _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, source, target,
+            # passes in pairs, there and back, so the result is in new_pos (no buffer swapping:
+            # numba's parallel lowering must see the same arrays in every prange)
+            for _pair in range(SEPARATION_PASSES // 2):
+                _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, new_pos, separated,
                           walls, wall_meta, wall_start, wall_items)
-                source, target = target, source
-        _commit_rows(0, n_active, order, pos, vel, yaw, source, new_vel, new_yaw)
+                _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, separated, new_pos,
+                          walls, wall_meta, wall_start, wall_items)
+        _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
 
 
 @nb.njit(cache=True, parallel=True)
@@ -1342,13 +1365,13 @@ def advance_parallel(n_steps, dt, params,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
                            order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
                            new_pos, new_vel, new_yaw)
-        source = new_pos
-        target = separated
         if params[P_BODY] > 0.0:
-            for _pass in range(SEPARATION_PASSES):
+            for _pair in range(SEPARATION_PASSES // 2):
                 for b in nb.prange(n_blocks):
                     _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts, cell_of,
-                              gnx, gny, source, target, walls, wall_meta, wall_start, wall_items)
-                source, target = target, source
+                              gnx, gny, new_pos, separated, walls, wall_meta, wall_start, wall_items)
+                for b in nb.prange(n_blocks):
+                    _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts, cell_of,
+                              gnx, gny, separated, new_pos, walls, wall_meta, wall_start, wall_items)
         # A serial copy costs less than another thread barrier.
-        _commit_rows(0, n_active, order, pos, vel, yaw, source, new_vel, new_yaw)
+        _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)

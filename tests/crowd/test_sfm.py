@@ -216,7 +216,7 @@ def test_field_mode_steers_along_the_planners_sampled_direction():
     vectors = rng.normal(size=(6, 8, 2))
     vectors /= np.linalg.norm(vectors, axis=2, keepdims=True)
     field = VelocityField(origin=(1.0, 2.0), resolution=0.5, vectors=vectors.astype(np.float32), exit=(20.0, 20.0))
-    crowd = Crowd(params=SFMParams(social_weight=0.0))
+    crowd = Crowd(params=SFMParams(social_weight=0.0, density_radius=0.0))  # the drive alone, no crowding
     field_id = crowd.register_field(field)
     points = [(2.1, 3.3), (3.7, 4.1), (1.4, 2.2)]
     for p in points:

@@ -1,0 +1,31 @@
+"""RiMEA verification (issue 19): a fast subset of `grove validate rimea` on the product's crowd."""
+
+from __future__ import annotations
+
+from click.testing import CliRunner
+
+from grove_tui.analysis.rimea import run_rimea
+from grove_tui.cli.validate import validate
+
+
+def test_corridor_premovement_and_fundamental_diagram_pass_with_the_default_model():
+    results = {r.test: r for r in run_rimea("grove", (1, 4, 5))}
+    assert all(r.passed for r in results.values()), [r for r in results.values() if not r.passed]
+    assert results[1].measured.endswith(" s") and 26.0 <= float(results[1].measured.split()[0]) <= 34.0
+
+
+def test_lightsfm_fails_where_issue_19_said_it_does():
+    """The same checks can fail: HuNavSim's forces barely slow with density and let waiting people drift."""
+    results = {r.test: r for r in run_rimea("lightsfm", (4, 5))}
+    assert not results[4].passed and not results[5].passed
+
+
+def test_the_command_prints_the_table_and_exits_1_on_a_failure():
+    runner = CliRunner()
+    ok = runner.invoke(validate, ["rimea", "--test", "1"])
+    assert ok.exit_code == 0, ok.output
+    assert "corridor 40 m at 1.33 m/s" in ok.output and ok.output.rstrip().endswith("pass")
+    failing = runner.invoke(validate, ["rimea", "--model", "lightsfm", "--test", "5"])
+    assert failing.exit_code == 1 and "FAIL" in failing.output
+    unknown = runner.invoke(validate, ["rimea", "--test", "12"])
+    assert unknown.exit_code != 0
