@@ -71,6 +71,14 @@ class ModelError(GroveError):
     exit_code = EXIT_MODEL_ERROR
 
 
+class ContextTooSmallError(ModelError):
+    """The request does not fit the model's context. The model is fine: a shorter prompt or a larger
+    n_ctx works, so an evaluation records it against the one case instead of stopping."""
+
+    title = "Prompt too long for the model"
+    hint = "Shorten the prompt, raise the context (n_ctx in config.yaml under models:), or use a long-context model."
+
+
 class Cancelled(GroveError):
     """The user (Ctrl+C, Escape) or a caller's cancel event stopped the work; nothing was produced."""
 
@@ -167,6 +175,13 @@ class FieldFileError(BadInputError):
 
     title = "Velocity field error"
     hint = "Regenerate the bundle: one of its fields/*.npz files is broken."
+
+
+class DatasetError(BadInputError):
+    """A folder that is not the output of a `grove batch` run, or whose dataset index is unreadable."""
+
+    title = "Not a dataset"
+    hint = "Point `grove dataset summary` at the --out folder of a `grove batch` run."
 
 
 class OutputError(BadInputError):

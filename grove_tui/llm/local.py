@@ -32,7 +32,7 @@ from typing import Any
 from grove_tui.cpu import free_cores
 from grove_tui.settings import cache_dir, load_settings
 from grove_tui.llm.chat_template import Sampling, default_sampling
-from grove_tui.errors import Cancelled, ModelError
+from grove_tui.errors import Cancelled, ContextTooSmallError, ModelError
 from grove_tui.llm.gguf_info import GGUFInfo, check_loadable, read_gguf_info
 
 CANCEL_GRACE_SECONDS = 0.5
@@ -333,6 +333,6 @@ class LocalLLM:
                 return result, first_token_at, prompt_tokens
             elif kind == "error":
                 if message[1] == "context":
-                    raise ModelError(f"context too small for the prompt: {message[2]} "
+                    raise ContextTooSmallError(f"context too small for the prompt: {message[2]} "
                                      f"({self.path.name}, role {self.role}); shorten the prompt or raise n_ctx")
                 raise ModelError(f"the {self.role} model ({self.path.name}) failed: {message[2]}")

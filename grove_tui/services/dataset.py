@@ -22,7 +22,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from grove_tui.errors import BadInputError, describe_error
+from grove_tui.errors import DatasetError, describe_error
 
 if TYPE_CHECKING:
     from grove_tui.services.jobs import BatchJob
@@ -30,11 +30,6 @@ if TYPE_CHECKING:
 
 STATE_FILE = "batch-state.jsonl"
 INDEX_FILE = "dataset.sqlite"
-
-
-class DatasetError(BadInputError):
-    title = "Not a dataset"
-    hint = "Point `grove dataset summary` at the --out folder of a `grove batch` run."
 
 
 @dataclass(frozen=True)

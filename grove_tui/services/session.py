@@ -26,6 +26,7 @@ from grove_tui.errors import (
     EXIT_CANCELLED,
     EXIT_MODEL_ERROR,
     BadInputError,
+    ContextTooSmallError,
     EvalError,
     GroveError,
     PromptError,
@@ -492,8 +493,10 @@ class GroveSession:
                     scored = score_scenario(case, method, world, scenario, by_id, traj, events,
                                             report if method in ("grove", "vanilla") else None)
                 except GroveError as exc:
-                    if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
-                        raise  # a broken model or a cancellation stops the evaluation, not one case
+                    # A broken model or a cancellation stops the evaluation; a prompt too long for the
+                    # model's context (vanilla's whole-world prompt on a small model) fails only its case.
+                    if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED) and not isinstance(exc, ContextTooSmallError):
+                        raise
                     scored = CaseResult(case=case, method=method, error=str(exc))
                 scored.scores["eval_seconds"] = round(time.perf_counter() - started, 3)
                 results.append(scored)

@@ -74,6 +74,8 @@ CASES = [
     ("understanding", ["understanding", "CASES", "--out", "OUT"], 2),
     ("import", ["import", "hunav", "MISSING", "--out", "OUT"], 2),
     ("import", ["import", "hunav", "CASES", "--out", "OUT"], 2),
+    ("dataset", ["dataset", "summary", "MISSING"], 2),
+    ("dataset", ["dataset", "summary", "BUNDLE"], 2),  # a folder that is no batch output
 ]
 
 
