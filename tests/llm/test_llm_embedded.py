@@ -60,6 +60,7 @@ def test_node_sets_are_manifest_llm_nodes():
 
 
 @pytest.mark.slow
+@pytest.mark.long  # bench/llm.py --compare measures draft validity of the embedded models on 20 prompts per run
 @pytest.mark.timeout(1800)  # ~2 min on an idle 2-core machine; shared CI runners can be several times slower
 def test_fifty_prompts_all_give_valid_drafts():
     cases = _cases()
