@@ -50,8 +50,10 @@ from grove_tui.crowd.sfm import (
 
 # lightsfm's defaults as hunav_evaluator/sfm.py sets them: social weight 2.1, obstacle weight 10,
 # obstacle sigma 0.2, lambda 2, gamma 0.35, n 2, n' 3. epsilon 0 keeps the plain Moussaid angle.
-EVALUATOR_SFM = SFMParams(social_weight=2.1, obstacle_weight=10.0, obstacle_sigma=0.2,
-                          lambda_=2.0, gamma=0.35, n=2.0, n_prime=3.0, epsilon=0.0)
+# lightsfm's forces, not GROVE's default pedestrian model: these metrics reproduce HuNavSim's evaluator,
+# which recomputes forces with lightsfm whatever moved the people.
+EVALUATOR_SFM = SFMParams.lightsfm(social_weight=2.1, obstacle_weight=10.0, obstacle_sigma=0.2,
+                                   lambda_=2.0, gamma=0.35, n=2.0, n_prime=3.0, epsilon=0.0)
 # How far the Gazebo Classic wrapper looks for an agent's closest obstacle.
 OBSTACLE_SEARCH_RANGE = 10.0
 ROBOT_ID = 0
