@@ -42,6 +42,7 @@ from grove_tui.generation.node_docs import (
     load_node_database,
     split_camel,
 )
+from grove_tui.language.tokens import match_tokens
 
 log = logging.getLogger(__name__)
 
@@ -274,32 +275,9 @@ def embedding_function_class() -> type:
 
 # --------------------------------------------------------------------------- lexical matching
 
-STOP_WORDS = frozenset(
-    "a an the to of at in on into onto by for from with and or as is are be being was were it its their them "
-    "they he she his her who that this these those some any each every all one two three four five six seven "
-    "eight nine ten few several many while then than there here up down out over under about around near "
-    "until when where which do does not no".split()
-)
-_IRREGULAR = {"people": "person", "men": "man", "women": "woman", "children": "child", "kids": "kid",
-              "feet": "foot", "lying": "lie", "left": "leave", "leaves": "leave", "stood": "stand"}
-_WORD = re.compile(r"[a-z0-9]+")
-
-
-def stem(word: str) -> str:
-    """Crude suffix stripping, applied identically to prompts and phrases so both meet halfway."""
-    word = _IRREGULAR.get(word, word)
-    for suffix, keep in (("ies", "y"), ("ing", ""), ("ed", ""), ("es", ""), ("s", "")):
-        if word.endswith(suffix) and len(word) - len(suffix) >= 3 and not word.endswith("ss"):
-            word = word[: len(word) - len(suffix)] + keep
-            break
-    if len(word) > 3 and word[-1] == word[-2] and word[-1] not in "aeiouls":
-        word = word[:-1]  # queueing/queued -> queu, running -> run
-    return word.rstrip("e") if len(word) > 3 else word
-
-
 def content_tokens(text: str) -> list[str]:
     # CamelCase node names typed into a prompt ("use FollowVelocityField") match their phrases too.
-    return [stem(w) for w in _WORD.findall(split_camel(text)) if w not in STOP_WORDS]
+    return match_tokens(split_camel(text))
 
 
 def phrase_in_prompt(phrase_tokens: Sequence[str], prompt_tokens: frozenset[str]) -> bool:

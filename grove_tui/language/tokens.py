@@ -114,3 +114,35 @@ def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
     """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
     letter after the first word, which tells places apart ("ward a", "check-in counter b")."""
     return [lemma(w) for k, w in enumerate(ws) if w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha())]
+
+
+# ---- crude stems for matching node-document phrases against a prompt (generation/retrieval.py) ----
+# Deliberately cruder than `lemma`: both sides are stemmed the same way, so "queueing", "queued" and
+# "queue" meet halfway; it never has to produce a real word.
+
+MATCH_STOP_WORDS = frozenset(
+    "a an the to of at in on into onto by for from with and or as is are be being was were it its their them "
+    "they he she his her who that this these those some any each every all one two three four five six seven "
+    "eight nine ten few several many while then than there here up down out over under about around near "
+    "until when where which do does not no".split()
+)
+_MATCH_IRREGULAR = {"people": "person", "men": "man", "women": "woman", "children": "child", "kids": "kid",
+              "feet": "foot", "lying": "lie", "left": "leave", "leaves": "leave", "stood": "stand"}
+_MATCH_WORD = re.compile(r"[a-z0-9]+")
+
+
+def match_stem(word: str) -> str:
+    """Crude suffix stripping, applied identically to prompts and phrases so both meet halfway."""
+    word = _MATCH_IRREGULAR.get(word, word)
+    for suffix, keep in (("ies", "y"), ("ing", ""), ("ed", ""), ("es", ""), ("s", "")):
+        if word.endswith(suffix) and len(word) - len(suffix) >= 3 and not word.endswith("ss"):
+            word = word[: len(word) - len(suffix)] + keep
+            break
+    if len(word) > 3 and word[-1] == word[-2] and word[-1] not in "aeiouls":
+        word = word[:-1]  # queueing/queued -> queu, running -> run
+    return word.rstrip("e") if len(word) > 3 else word
+
+
+def match_tokens(text: str) -> list[str]:
+    """The content words of a text, lower-cased and stemmed for phrase matching."""
+    return [match_stem(w) for w in _MATCH_WORD.findall(text.lower()) if w not in MATCH_STOP_WORDS]
