@@ -76,6 +76,8 @@ CASES = [
     ("import", ["import", "hunav", "CASES", "--out", "OUT"], 2),
     ("dataset", ["dataset", "summary", "MISSING"], 2),
     ("dataset", ["dataset", "summary", "BUNDLE"], 2),  # a folder that is no batch output
+    ("validate", ["validate", "no-such-test-set"], 2),  # reads no file: a missing and a bad choice
+    ("validate", ["validate", "rimea", "--model", "no-such-model"], 2),
 ]
 
 
