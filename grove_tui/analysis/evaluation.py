@@ -463,7 +463,9 @@ PLAUSIBILITY_KEYS = ("wall_penetrations", "goal_reach_rate", "agent_overlaps", "
                      "evacuation_completion", "stop_and_go")
 VALIDITY_KEYS = ("valid_trees", "hallucinated_node_types", "hallucinated_places")
 COST_KEYS = ("prompt_tokens", "completion_tokens", "eval_seconds")
-SUMMARY_KEYS = GROUNDING_KEYS + PLAUSIBILITY_KEYS + VALIDITY_KEYS + COST_KEYS
+# What the bundle says of itself (its grounding report), beside what the suite measures from outside.
+REPORT_KEYS = ("report_groups_ok", "report_unhonoured")
+SUMMARY_KEYS = GROUNDING_KEYS + PLAUSIBILITY_KEYS + VALIDITY_KEYS + COST_KEYS + REPORT_KEYS
 
 
 FAILED_SCORES = {"target_grounding": 0.0, "spawn_grounding": 0.0, "count_accuracy": 0.0, "behavior_match": 0.0,
