@@ -376,9 +376,9 @@ def test_an_episode_records_as_a_bundle_the_metrics_read(bundle, tmp_path):
                             trajectories=out / "trajectories.csv", title="episode")
     assert Path(picture).stat().st_size > 1000
     # `grove simulate` replays it: its scripted robot now drives the policy's path
-    from grove_tui.cli.generate import simulate_bundle
+    from grove_tui.services.session import GroveSession
 
-    simulate_bundle(out, 2.0)
+    GroveSession().simulate(out, 2.0)
     replay = Trajectories.from_csv(out / "trajectories.csv")
     moved = np.hypot(*(replay.robot[-1, :2] - np.asarray(scenario.robot.path[0])))
     assert moved > 0.5 and (out / "episode.json").exists()
