@@ -626,6 +626,10 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
         mark = error.problem_mark or error.context_mark
         line = mark.line + 1 if mark is not None else None
         detail = " ".join(part for part in (error.context, error.problem) if part)
+        if "maximum nesting depth" in detail:
+            # PyYAML 6.0.4 and later stop deep nesting in the parser, before our own depth check sees it.
+            problem = f"the YAML nests more than its parser allows ({detail})"
+            return None, [WorldProblem(source, "(document)", line, problem)]
         return None, [WorldProblem(source, "(document)", line, f"broken YAML: {detail}")]
     except yaml.YAMLError as error:
         return None, [WorldProblem(source, "(document)", None, f"broken YAML: {error}")]
