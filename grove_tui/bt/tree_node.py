@@ -66,7 +66,8 @@ class TreeNode:
         return new_status
 
     def tick(self) -> int:
-        raise NotImplementedError
+        """Each node kind's own tick (controls, decorators, leaves); the base class has none."""
+        raise NotImplementedError(f"{type(self).__name__} must define tick()")
 
     def halt(self) -> None:
         """Stop a running activity; the node's own state reset happens in halt_node."""
@@ -202,10 +203,12 @@ class StatefulActionNode(LeafNode):
             self.on_halted()
 
     def on_start(self) -> int:
-        raise NotImplementedError
+        """A stateful action's first tick, as BT.CPP's StatefulActionNode::onStart."""
+        raise NotImplementedError(f"{type(self).__name__} must define on_start()")
 
     def on_running(self) -> int:
-        raise NotImplementedError
+        """A stateful action's later ticks, as BT.CPP's StatefulActionNode::onRunning."""
+        raise NotImplementedError(f"{type(self).__name__} must define on_running()")
 
     def on_halted(self) -> None:
         """Undo what on_start set up."""

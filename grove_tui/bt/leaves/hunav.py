@@ -186,7 +186,8 @@ class _Watch(AgentStatefulAction):
         return RUNNING
 
     def look(self) -> int | None:
-        raise NotImplementedError
+        """Who the watching condition looks for (an agent row, or None); each subclass says."""
+        raise NotImplementedError(f"{type(self).__name__} must define look()")
 
 
 class IsAnyoneSpeaking(_Watch):
@@ -707,7 +708,8 @@ class _LookAt(AgentStatefulAction):
         return self.on_running() == RUNNING  # on_running only reads positions
 
     def target(self):
-        raise NotImplementedError
+        """Where the approach goes; each subclass says (the robot, an agent)."""
+        raise NotImplementedError(f"{type(self).__name__} must define target()")
 
     def on_start(self) -> int:
         target = self.target()
