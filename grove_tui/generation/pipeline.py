@@ -370,7 +370,8 @@ class GenerationPipeline:
             fields={fid: f"fields/{fid}.npz" for fid in sorted(plan.fields)}, resolution=self.resolution)
         report = dict(report)
         report["groups"] = [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
-                             "field": g.field_id, "behavior": g.behavior} for g in post.groups]
+                             "field": g.field_id, "behavior": g.behavior}
+                            | ({"spawn_zones": dict(g.spawn_zones)} if g.spawn_zones else {}) for g in post.groups]
         report["exit"] = post.exit
         report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes

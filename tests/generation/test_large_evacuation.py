@@ -67,6 +67,12 @@ def test_500_people_placed_nowhere_start_across_the_building_each_to_the_nearest
         assert i == j or math.dist(starts[i], starts[j]) >= SPAWN_SPACING - 1e-9
     assert len({a.exit for a in out.agents}) >= 2  # every exit is allowed: each person its nearest
     assert any("start across the building" in note for note in out.notes)
+    from grove_tui.generation.reconcile import grounding_report
+
+    report = grounding_report(read_prompt("500 people evacuate the hospital", hospital), out.groups, out.agents,
+                              hospital, out.notes)
+    (start,) = [c for c in report.groups[0].checks if c.field == "start"]
+    assert start.ok and start.does == f"across the building ({len(zones)} zones)"
     # Deterministic: the same seed spreads them the same way.
     again = generate(hospital, grid, "500 people evacuate the hospital", 40)
     assert [a.start for a in again.agents] == starts
