@@ -199,6 +199,8 @@ CASES: list[Case] = [
     Case("prompt", "zero people evacuate the cafeteria", lambda r: GENERATE + ["--prompt", "zero people evacuate the cafeteria", "--out", str(r / "out")], model=True),
     Case("prompt", "-5 people", lambda r: GENERATE + ["--prompt", "-5 people evacuate the cafeteria", "--out", str(r / "out")], model=True),
     Case("prompt", "a billion people", lambda r: GENERATE + ["--prompt", "a billion people evacuate the cafeteria", "--out", str(r / "out")], model=True),
+    Case("prompt", "501 people evacuate the hospital (limit 500)", lambda r: GENERATE + ["--prompt", "501 people evacuate the hospital", "--out", str(r / "out")], model=True),
+    Case("prompt", "500 people across the hospital evacuate", lambda r: GENERATE + ["--prompt", "500 people across the hospital evacuate", "--out", str(r / "out")], model=True),
     Case("prompt", "emoji only", lambda r: GENERATE + ["--prompt", "🔥🔥🔥", "--out", str(r / "out")], model=True),
     # arguments
     Case("arguments", "--seed -1", lambda r: GENERATE + ["--prompt", "ten people evacuate", "--seed", "-1", "--out", str(r / "out")]),
