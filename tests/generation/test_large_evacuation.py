@@ -93,3 +93,18 @@ def test_over_the_limit_is_one_refusal_naming_it(hospital, grid):
     with pytest.raises(PromptError, match=rf"asks for 501 people in one group; preset 'emergency' allows at most "
                                           rf"{MAX_GROUP_COUNT} per group"):
         generate(hospital, grid, "501 people evacuate the hospital", 40)
+
+
+def test_grove_generate_says_a_spread_crowd_starts_across_the_building(hospital, grid, tmp_path):
+    from types import SimpleNamespace
+
+    from grove_tui.cli.generate import summary_lines
+
+    out = generate(hospital, grid, "500 people evacuate the hospital", 40)
+    (group,) = out.groups
+    report = {"stages": {}, "zones": [group.spawn], "prompt_tokens": 0, "completion_tokens": 0, "total_seconds": 0.0,
+              "groups": [{"label": group.label, "count": group.count, "spawn": group.spawn,
+                          "spawn_zones": dict(group.spawn_zones)}]}
+    lines = summary_lines(SimpleNamespace(scenario=SimpleNamespace(agents=out.agents, robot=None, seed=0),
+                                          report=report), tmp_path)
+    assert f"agents: 500 (500 {group.label} across {len(group.spawn_zones)} zones)" in lines
