@@ -109,3 +109,16 @@ def test_a_worker_sees_the_drivers_folder_only_by_the_probe_token(tmp_path):
     assert worker.sees(str(probe), "token-1")
     assert not worker.sees(str(probe), "token-2"), "another driver's probe"
     assert not worker.sees(str(tmp_path / "elsewhere" / probe.name), "token-1"), "a folder it does not have"
+
+
+def test_ray_return_without_ray_is_a_usage_error(tmp_path):
+    from click.testing import CliRunner
+
+    from grove_tui.cli import main
+
+    jobs = tmp_path / "jobs.jsonl"
+    jobs.write_text('{"world": "hospital", "preset": "normal", "prompt": "Two nurses walk"}\n', encoding="utf-8")
+    result = CliRunner().invoke(main, ["batch", str(jobs), "--out", str(tmp_path / "out"), "--ray-return"])
+    assert result.exit_code == 2
+    assert "--ray-return sends files from Ray workers: use it with --ray" in result.output
+    assert not (tmp_path / "out").exists()
