@@ -115,7 +115,7 @@ def collect_job_files(root: Path, limit: int = MAX_RETURNED_BYTES) -> JobFiles:
                                      "it cannot be sent to the driver")
             total += info.st_size
             if total > limit:
-                raise RuntimeFailure(f"the job's files exceed the {limit // 2**20} MB a Ray worker sends back "
+                raise RuntimeFailure(f"the job's files exceed the {limit / 2**20:.3g} MB a Ray worker sends back "
                                      "to the driver", hint="Give the Ray workers a --out on a shared file system.")
             members.append((rel, path))
     return tuple((rel, path.read_bytes()) for rel, path in members)
@@ -135,6 +135,8 @@ def write_returned_files(out_dir: Path, name: str, files: JobFiles, overwrite: b
     write_bundle_files(entries.pop(name), out_dir / name, overwrite=overwrite)
     for top, members in sorted(entries.items()):
         if "" in members:  # a single file beside the bundle (a Foxglove .mcap and its layout)
+            if len(members) > 1:
+                raise RuntimeFailure(f"{out_dir / top}: the worker sent it both as a file and as a folder")
             write_bytes_atomic(out_dir / top, members[""])
         else:  # an export folder: replaced like the one-process batch replaces its own exports
             write_files_atomic(out_dir / top, members, owned=lambda _path: True, what="batch export",
