@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import re
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -57,11 +58,12 @@ def session_for(ctx: click.Context, roi_model: str | None = None, bt_model: str 
 class Progress:
     """Stage lines on stderr; token count while the model writes."""
 
-    def __init__(self, console: Console, prefix: str = "", spinner: bool = True) -> None:
+    def __init__(self, console: Console, prefix: str = "", show: Callable[[str], None] | None = None) -> None:
         self.console = console
         self.prefix = prefix
-        # Off under a batch's progress bar: rich shows one live display at a time.
-        self.spinner = spinner
+        # Under a batch's progress bar the stage and token count go to `show` (the bar's own line), not to
+        # a spinner: rich shows one live display at a time.
+        self.show = show
         self.tokens = 0
         self._status: Any = None
 
@@ -70,12 +72,16 @@ class Progress:
 
         if isinstance(event, StageStarted):
             self.tokens = 0
-            if self.console.is_terminal and self.spinner:
+            if self.show is not None:
+                self.show(f"{self.prefix}{event.stage}...")
+            elif self.console.is_terminal:
                 self._status = self.console.status(f"{self.prefix}{event.stage}...")
                 self._status.start()
         elif isinstance(event, TokenStreamed):
             self.tokens += 1
-            if self._status is not None:
+            if self.show is not None:
+                self.show(f"{self.prefix}{event.stage}: {self.tokens} tokens")
+            elif self._status is not None:
                 self._status.update(f"{self.prefix}{event.stage}: {self.tokens} tokens")
         elif isinstance(event, StageFinished):
             if self._status is not None:
@@ -243,7 +249,7 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
 
     def events_for(index: int, job: Any) -> Progress:
         # Stage lines print above the bar; a Ray batch's stages run in the workers and print nothing here.
-        progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] ", spinner=False))
+        progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] ", show=bar.show))
         return progresses[-1]
 
     def started(to_run: list[Any], skipped: list[Any]) -> None:
@@ -288,12 +294,18 @@ class _BatchBar:
 
         self._progress = RichProgress(TextColumn("batch"), BarColumn(), MofNCompleteColumn(),
                                       TextColumn("{task.fields[rate]}"), TimeElapsedColumn(), TextColumn("ETA"),
-                                      TimeRemainingColumn(), console=console, transient=False)
+                                      TimeRemainingColumn(), TextColumn("{task.fields[now]}"), console=console,
+                                      transient=False)
         self._task: Any = None
 
     def start(self, total: int) -> None:
-        self._task = self._progress.add_task("batch", total=total, rate="")
+        self._task = self._progress.add_task("batch", total=total, rate="", now="")
         self._progress.start()
+
+    def show(self, text: str) -> None:
+        """What the running job does now (one-process batch: its stage and tokens)."""
+        if self._task is not None:
+            self._progress.update(self._task, now=text)
 
     def advance(self) -> None:
         if self._task is None:
@@ -301,7 +313,8 @@ class _BatchBar:
         self._progress.advance(self._task)
         task = self._progress.tasks[0]
         if task.elapsed:
-            self._progress.update(self._task, rate=f"{task.completed / task.elapsed * 3600:.0f}/h")
+            per_hour = task.completed / task.elapsed * 3600
+            self._progress.update(self._task, rate=f"{per_hour:.0f} scenarios/h", now="")
 
     def stop(self) -> None:
         self._progress.stop()
