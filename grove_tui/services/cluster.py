@@ -160,6 +160,10 @@ def _connect(ray: Any, address: str, workers: int | None) -> None:
                                "include_dashboard": False, "logging_level": "warning"}
     try:
         if address == "local":
+            # A private Ray's workers import the driver's own grove_tui, not whichever the folder they
+            # start in or the environment's install would give (a checkout beside an installed copy).
+            package_root = str(Path(__file__).resolve().parents[2])
+            env["PYTHONPATH"] = os.pathsep.join(p for p in (package_root, os.environ.get("PYTHONPATH")) if p)
             ray.init(address="local", num_cpus=workers or os.cpu_count() or 1, **options)
         else:
             ray.init(address=address, **options)
