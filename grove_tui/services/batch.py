@@ -42,6 +42,10 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
               events_for: Callable[[int, BatchJob], EventSink | None] | None = None,
               on_record: Callable[[JobRecord], None] | None = None) -> BatchResult:
     """Run the checked jobs; `on_start(to_run, skipped)` before the first, `on_record` as each ends."""
+    if jobs and ray_address is None:
+        # Models, embedder and reader load while the inputs are hashed and checked for resume (the
+        # model files are read whole for the hash); the first job waits only for what is left.
+        session.start_warm_up(jobs[0].world, jobs[0].preset)
     identity = model_identity(session.model_choices())
     hashes = {job.name: job_inputs_hash(job, identity) for job in jobs}
     done = completed_jobs(jobs, out_dir, hashes) if resume else set()
