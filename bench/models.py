@@ -20,7 +20,7 @@ role; the roi role stays on its default, the embedded model):
 Scaling: --threads 1,2 (default 1 and this machine's llama.cpp budget) prints warm total and decode
 speed per thread count. --first-scenario also runs the app's start with the default (embedded) model
 in fresh processes: cold (nothing warmed), and GroveSession.warm_up then the first scenario, each
-against a warm repeat of the same prompt (another prompt in between, so only the shared prefix is cached).
+against a warm repeat of the same request (another prompt in between, so only the shared prefix is cached).
 
     python bench/models.py [--sizes 0.6b,1.7b,4b] [--threads 1,2] [--presets normal,queuing] [--first-scenario]
 
@@ -183,7 +183,7 @@ def measure(model: str, path: Path | None, threads: int, preset: str, out: Path)
 
 
 def first_scenario(model: str, path: Path | None, threads: int, preset: str, warm_up: bool) -> dict[str, float]:
-    """In this (fresh) process: optionally GroveSession.warm_up, then prompt A, prompt B, prompt A again (seed 1)."""
+    """In this (fresh) process: optionally GroveSession.warm_up, then prompt A, prompt B, prompt A again."""
     from grove_tui.services.session import GroveSession, ScenarioRequest
 
     os.environ["GROVE_LLM_THREADS"] = str(threads)
@@ -195,8 +195,10 @@ def first_scenario(model: str, path: Path | None, threads: int, preset: str, war
             started = time.perf_counter()
             session.warm_up(world_a, preset)
             figures["warm_up_s"] = time.perf_counter() - started
+        # The same request twice (same output, same work), prompt B between them so that only the
+        # prefix A and B share is still in the model's KV cache, as for any new prompt.
         for key, world, prompt, seed in (("first_s", world_a, prompt_a, 0), ("other_s", world_b, prompt_b, 0),
-                                         ("warm_s", world_a, prompt_a, 1)):
+                                         ("warm_s", world_a, prompt_a, 0)):
             started = time.perf_counter()
             session.generate(ScenarioRequest(world, preset, prompt, seed=seed), Path(tmp) / key)
             figures[key] = time.perf_counter() - started
