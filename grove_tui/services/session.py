@@ -342,6 +342,9 @@ class GroveSession:
     def _warm_planner(self, world: str, preset: str) -> None:
         from grove_tui.errors import PlanningError
 
+        with self._lock:
+            if self._models is None or self._stop_warm_up.is_set():
+                return  # the models failed (already reported) or the session closed: build no pipeline now
         planner = self.pipeline(world, preset).planner
         free = planner.grid.free_cells()
         if len(free) < 2:
