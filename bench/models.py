@@ -182,6 +182,50 @@ def measure(model: str, path: Path | None, threads: int, preset: str, out: Path)
     return row
 
 
+RATE_TOKENS = 24
+
+
+def token_rates(name: str, path: Path | None, threads: int) -> dict[str, float]:
+    """--rates: load, prefill and decode rates and the grammar's cost on bench/llm.py's short draft
+    request (about 300 prompt tokens, RATE_TOKENS output), without the pipeline around it: minutes
+    for a 4B-shaped model on a loaded machine where a whole scenario takes most of an hour."""
+    from llm import CASES, NODES, messages_for
+
+    from grove_tui.errors import ModelError
+    from grove_tui.generation.draft import build_draft_schema
+    from grove_tui.llm.embedded import embedded_model_path
+    from grove_tui.llm.grammar import schema_to_gbnf
+    from grove_tui.llm.local import LocalLLM
+
+    sentence, places = CASES[0][0], CASES[0][1]
+    messages = messages_for(sentence, places)
+    grammar = schema_to_gbnf(build_draft_schema(NODES, places, max_groups=2, max_depth=2))
+    started = time.perf_counter()
+    llm = LocalLLM(path or embedded_model_path(), role=f"bench-{name}", n_ctx=2048, n_threads=threads)
+    llm.start()
+    figures: dict[str, float] = {"load_s": time.perf_counter() - started,
+                                 "prompt_tokens": llm.count_tokens(messages)}
+    try:
+        decode = []
+        for constraint in (grammar, None):  # the second run finds the prompt in the KV cache
+            stamps: list[float] = []
+            started = time.perf_counter()
+            try:
+                llm.generate(messages, constraint, max_tokens=RATE_TOKENS, seed=3, length_retries=0,
+                             on_token=lambda _piece: stamps.append(time.perf_counter()))
+            except ModelError:  # the budget ran out (a cut-off draft is an error to the product, data here)
+                pass
+            if constraint is not None and stamps:
+                figures["prefill_tps"] = figures["prompt_tokens"] / (stamps[0] - started)
+            decode.append((len(stamps) - 1) / (stamps[-1] - stamps[0]) if len(stamps) > 1 else float("nan"))
+        figures["decode_tps"], figures["free_decode_tps"] = decode
+        figures["grammar_ms"] = 1000 * (1 / decode[0] - 1 / decode[1])
+    finally:
+        llm.close()
+    print(f"  rates {name} t{threads}: {figures}", file=sys.stderr, flush=True)
+    return figures
+
+
 def first_scenario(model: str, path: Path | None, threads: int, preset: str, warm_up: bool) -> dict[str, float]:
     """In this (fresh) process: optionally GroveSession.warm_up, then prompt A, prompt B, prompt A again."""
     from grove_tui.services.session import GroveSession, ScenarioRequest
@@ -227,6 +271,8 @@ def main() -> int:
     parser.add_argument("--presets", default="normal,queuing")
     parser.add_argument("--first-scenario", action="store_true",
                         help="also time the first scenario of a fresh process, cold and after GroveSession.warm_up")
+    parser.add_argument("--rates", action="store_true",
+                        help="only load, prefill, decode and grammar rates on a short request (no pipeline)")
     parser.add_argument("--child-first-scenario", default=None, help=argparse.SUPPRESS)
     parser.add_argument("--child-model-path", default=None, help=argparse.SUPPRESS)
     parser.add_argument("--child-warm-up", action="store_true", help=argparse.SUPPRESS)
@@ -246,12 +292,28 @@ def main() -> int:
         parser.error(f"unknown size(s) {unknown}; sizes: {', '.join(SIZES)}")
     models: list[tuple[str, Path | None]] = [(EMBEDDED, None)]
     models += [(f"qwen3-{size}-{DEFAULT_QUANT[size].lower()}", model_path(size)) for size in sizes]
+    if args.rates:
+        load = os.getloadavg()
+        print(f"\nToken rates on a short draft request ({os.cpu_count()} cores, load average "
+              f"{load[0]:.1f} {load[1]:.1f} {load[2]:.1f})")
+        print("| model | threads | load s | prompt tok | prefill tok/s | decode tok/s (grammar) | grammar ms/tok |")
+        print("|---|---|---|---|---|---|---|")
+        headline = []
+        for name, path in models:
+            for count in threads:
+                f = token_rates(name, path, count)
+                print(f"| {name} | {count} | {f['load_s']:.1f} | {f.get('prompt_tokens', 0):.0f} | "
+                      f"{f.get('prefill_tps', float('nan')):.1f} | {f.get('decode_tps', float('nan')):.2f} | {f['grammar_ms']:.0f} |")
+                headline.append(f"{name}_t{count}_decode_tps={f.get('decode_tps', float('nan')):.2f}")
+        print(" ".join(headline + [f"load_average={os.getloadavg()[0]:.2f}"]))
+        return 0
     rows: list[Row] = []
     with tempfile.TemporaryDirectory(prefix="grove-bench-models-") as tmp:
         for name, path in models:
             for count in threads:
                 for preset in presets:
                     rows.append(measure(name, path, count, preset, Path(tmp)))
+                    print(f"  row: {rows[-1]}", file=sys.stderr, flush=True)  # kept if the run is stopped early
     first_runs: dict[tuple[str, bool], dict[str, float]] = {}
     if args.first_scenario:
         # The app's start with the default (embedded) model: a fresh process each, cold then warmed.
