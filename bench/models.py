@@ -26,7 +26,13 @@ against a warm repeat of the same request (another prompt in between, so only th
 
 The last line holds the headline figures as key=value pairs.
 
-Measured here (2 shared cores, results in README "Model speed"), see the README for the table.
+Measured 2026-11-25 on 2 cores shared with seven other sessions, one thread, queuing (README "Model speed"):
+  --first-scenario, load average 10.7:  model            load  first   warm  prompt+out  prefill  decode  grammar
+                                        embedded         2.7s  94.2s  25.0s  1363+53     51 t/s  14.9    9.7 ms/t
+                                        qwen3-0.6b-q8_0  3.9s 116.1s 185.1s  1356+250    13 t/s   2.4    110 ms/t
+  first scenario (embedded): cold x1.63 of warm; after warm_up (40.9 s) x1.78 (the rest: the first prefill)
+  --rates, load average 13.0:           embedded 24.0 t/s prefill, 7.15 t/s decode, grammar 46 ms/t
+                                        qwen3-0.6b-q8_0 10.0 / 1.59 / 234;  qwen3-4b-q4_0 2.2 / 1.33 / 169
 """
 
 from __future__ import annotations
