@@ -33,6 +33,7 @@ Measured 2026-11-25 on 2 cores shared with seven other sessions, one thread, que
   first scenario (embedded): cold x1.63 of warm; after warm_up (40.9 s) x1.78 (the rest: the first prefill)
   --rates, load average 13.0:           embedded 24.0 t/s prefill, 7.15 t/s decode, grammar 46 ms/t
                                         qwen3-0.6b-q8_0 10.0 / 1.59 / 234;  qwen3-4b-q4_0 2.2 / 1.33 / 169
+  --rates --threads 1,2, load average 10.7: decode 14.64 -> 0.55 t/s (embedded), 3.12 -> 0.40 (0.6b)
 """
 
 from __future__ import annotations
