@@ -157,15 +157,17 @@ def cgroup_cpu_quota(root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path = Pa
         if len(parts) != 3:
             continue
         hierarchy_id, controllers, relative = parts
+        found: Path | None
         if hierarchy_id == "0" and controllers == "":
-            base, v2 = root, True
+            found, v2 = root, True
         elif "cpu" in controllers.split(","):
-            base = next((root / name for name in (controllers, "cpu", "cpu,cpuacct") if (root / name).is_dir()), None)
-            if base is None:
-                continue
+            found = next((root / name for name in (controllers, "cpu", "cpu,cpuacct") if (root / name).is_dir()), None)
             v2 = False
         else:
             continue
+        if found is None:
+            continue
+        base = found
         folder = base / relative.lstrip("/")
         while True:
             quota = _read_quota(folder, v2)

@@ -284,14 +284,14 @@ class GroveSession:
         `on_status`; a step that fails does not stop the next ones (the generation reports it again).
         Safe to run beside a generation: each part loads under its own lock, once.
         """
-        steps: list[tuple[str, str, Callable[[], None]]] = [
+        steps: list[tuple[str, str, Callable[[], Any]]] = [
             ("models", "loading the models", self.load_models),
             ("retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
             ("reader", "loading the English reader", _warm_reader),
         ]
         if world is not None and preset is not None:
             steps.append(("planner", f"preparing {world}'s map and planner", lambda: self._warm_planner(world, preset)))
-        statuses = []
+        statuses: list[WarmUpStatus] = []
         for step, doing, run in steps:
             if self._stop_warm_up.is_set():
                 return statuses
