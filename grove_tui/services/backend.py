@@ -25,11 +25,12 @@ from grove_tui.services.session import (
     ModelStatus,
     RetrieverFactory,
     ScenarioRequest,
+    WarmUpStatus,
 )
 from grove_tui.settings import data_dir
 
 __all__ = ["EXPORTERS", "EngineBackend", "ExportContext", "ExportedFile", "GeneratedScenario", "ModelStatus",
-           "PresetInfo", "RunInfo", "list_runs"]
+           "PresetInfo", "RunInfo", "WarmUpStatus", "list_runs"]
 
 
 @dataclass(frozen=True)
@@ -242,14 +243,21 @@ class EngineBackend:
         models = self.session.load_models()
         return {"roi": models.roi, "bt": models.bt}
 
+    def warm_up(self, world: str | None = None, preset: str | None = None, *,
+                on_status: Callable[[WarmUpStatus], None] | None = None) -> list[WarmUpStatus]:
+        """GroveSession.warm_up (models, node index and embedder, reader, the world's planner); each
+        step's WarmUpStatus goes to `on_status`, whose `text` is the app's status line."""
+        def relay(status: WarmUpStatus) -> None:
+            if status.step == "retrieval" and status.state == "done":
+                self._embedder_warm = True
+            if on_status is not None:
+                on_status(status)
+
+        return self.session.warm_up(world, preset, on_status=relay)
+
     def warm_up_retriever(self) -> None:
         """Open the node index and load the embedding model now, so the first Retrieval takes no extra time."""
-        retriever = self.session.retriever()
-        if self._retriever_factory is None:
-            from grove_tui.generation.retrieval import embed_query
-
-            retriever.ensure_index()
-            embed_query("people walk")  # imports torch, loads the model and its traced query encoder
+        self.session.warm_up_retrieval()
         self._embedder_warm = True
 
     def embedder_ready(self) -> bool:

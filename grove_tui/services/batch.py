@@ -49,6 +49,10 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
     the workers that cannot see `out_dir` do). `index_format`: "sqlite" or "parquet" (needs pyarrow).
     """
     check_index_format(index_format)  # before any job runs: a missing pyarrow must not cost a batch
+    if jobs and ray_address is None:
+        # Models, embedder and reader load while the inputs are hashed and checked for resume (the
+        # model files are read whole for the hash); the first job waits only for what is left.
+        session.start_warm_up(jobs[0].world, jobs[0].preset)
     identity = model_identity(session.model_choices())
     hashes = {job.name: job_inputs_hash(job, identity) for job in jobs}
     done = completed_jobs(jobs, out_dir, hashes) if resume else set()

@@ -58,6 +58,8 @@ class BatchWorker:
         from grove_tui.services.session import GroveSession
 
         self.session = GroveSession(model=model, roi_model=roi_model, bt_model=bt_model)
+        # Loading starts with the actor, not with its first job: the driver is still placing the others.
+        self.session.start_warm_up()
 
     def sees(self, probe: str, token: str) -> bool:
         """Whether this worker reads the driver's probe file, that is, shares the driver's --out."""

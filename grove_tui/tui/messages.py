@@ -37,6 +37,7 @@ class ModelsChanged(Message):
     statuses: list[Any]  # backend.ModelStatus
     loading: bool = False
     embedder: str = ""  # the node retriever's embedding model: "", "loading", "ready" or its error
+    warm_up: str = ""  # the backend's warm-up status line ("loading the models…"), "" when none runs
 
 
 @dataclass
