@@ -24,6 +24,7 @@ import numba as nb  # noqa: E402
 import numpy as np  # noqa: E402
 
 from grove_tui.navigation.velocity_field import sample_field  # noqa: E402
+from grove_tui.settings import PEDESTRIAN_MODELS  # noqa: E402
 
 MODE_GOALS = 0
 MODE_FIELD = 1
@@ -109,7 +110,7 @@ _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
 
 # The pedestrian models a user can pick by name (SFMParams.named).
-SFM_MODELS = ("grove", "lightsfm")
+SFM_MODELS = PEDESTRIAN_MODELS
 
 
 @dataclass(frozen=True)
