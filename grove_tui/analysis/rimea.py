@@ -10,7 +10,7 @@ behavior trees, Simulation.build). Run them with `grove validate rimea`.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -171,7 +171,11 @@ class EvacuationRun:
     worst_overlap: float
 
 
-def _room_yaml(name: str, zones: list[tuple[str, list[tuple[float, float]], list[tuple[str, tuple[float, float], float, str, bool]]]]) -> str:
+# A door: name, centre, width, the zone it leads to ("outside" for an exit), whether it is an exit.
+DoorSpec = tuple[str, tuple[float, float], float, str, bool]
+
+
+def _room_yaml(name: str, zones: Sequence[tuple[str, Sequence[tuple[float, float]], Sequence[DoorSpec]]]) -> str:
     lines = [f"name: {name}", f"description: RiMEA verification geometry {name}.", "zones:"]
     for zone, boundary, doors in zones:
         lines += [f"  - name: {zone}", "    type: room", f"    description: {zone}.",
@@ -318,9 +322,10 @@ def test_9_exits(params: SFMParams, people: int = 1000) -> RimeaResult:
 
 def building_of_rooms() -> str:
     """RiMEA 10's building: twelve 4 x 4 m rooms on both sides of a 2 m corridor, an exit at each end."""
-    zones = []
-    corridor_doors = [("west_exit", (0.0, 5.0), 1.8, "outside", True), ("east_exit", (24.0, 5.0), 1.8, "outside", True)]
-    zones.append(("corridor", [(0, 4), (24, 4), (24, 6), (0, 6)], corridor_doors))
+    zones: list[tuple[str, Sequence[tuple[float, float]], Sequence[DoorSpec]]] = []
+    # each exit spans the whole end of the corridor: its jambs are the corridor's corners
+    corridor_doors = [("west_exit", (0.0, 5.0), 2.0, "outside", True), ("east_exit", (24.0, 5.0), 2.0, "outside", True)]
+    zones.append(("corridor", [(0.0, 4.0), (24.0, 4.0), (24.0, 6.0), (0.0, 6.0)], corridor_doors))
     for k in range(6):
         x0 = 4.0 * k
         zones.append((f"room_s{k + 1}", [(x0, 0), (x0 + 4, 0), (x0 + 4, 4), (x0, 4)],
