@@ -197,13 +197,16 @@ def _load(text: str, source: str):
     return world
 
 
-def evacuate(world, starts: list[tuple[float, float]], exit_of: list[str], params: SFMParams, *,
+def evacuate(world, starts: list[tuple[float, float]], exit_of: list[str], params: SFMParams | JuPedSimModel, *,
              radius: float = PRODUCT_RADIUS, speed: float = PRODUCT_SPEED, limit: float = 900.0,
              line_x: float | None = None) -> EvacuationRun:
     """Everyone follows the velocity field of their own exit and leaves through its door.
 
     `line_x`: also record the times people's centres first cross x = line_x going +x (a bottleneck).
+    With `params` JUPEDSIM the same people leave the same world in JuPedSim instead.
     """
+    if isinstance(params, JuPedSimModel):
+        return _evacuate_jupedsim(world, starts, exit_of, radius=radius, speed=speed, limit=limit, line_x=line_x)
     from grove_tui.bt.xml import parse_tree_text
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import ThetaStarPlanner
@@ -303,7 +306,7 @@ def room_with_exits(exits: tuple[str, ...]) -> str:
          [(name, doors[name][0], doors[name][1], "outside", True) for name in exits])])
 
 
-def test_9_exits(params: SFMParams, people: int = 1000) -> RimeaResult:
+def test_9_exits(params: SFMParams | JuPedSimModel, people: int = 1000) -> RimeaResult:
     """A 30 x 20 m room of `people` leaves through 4 exits, then through 2: the time about doubles."""
     starts = _grid_of_people(0.6, 29.4, 0.6, 19.4, people, 2.0 * PRODUCT_RADIUS + 0.02)
     times = []
@@ -335,7 +338,7 @@ def building_of_rooms() -> str:
     return _room_yaml("rimea_10_rooms", zones)
 
 
-def test_10_assigned_routes(params: SFMParams) -> RimeaResult:
+def test_10_assigned_routes(params: SFMParams | JuPedSimModel) -> RimeaResult:
     """23 people in 12 rooms, each with an assigned exit (some the farther one): all use their own."""
     world = _load(building_of_rooms(), "rimea_10.yaml")
     starts, exits = [], []
@@ -377,7 +380,7 @@ def exit_choice(world, starts, names, radius: float, speed: float, how: str) -> 
                                  [speed] * len(starts))
 
 
-def test_11_exit_choice(params: SFMParams, people: int = 1000) -> RimeaResult:
+def test_11_exit_choice(params: SFMParams | JuPedSimModel, people: int = 1000) -> RimeaResult:
     """People in the west two thirds of the room, exit 1 nearer for all: the least-congested choice sends
     some of them to exit 2 (the nearest-exit choice, shown beside it, sends nobody)."""
     world = _load(room_with_two_exits(), "rimea_11.yaml")
@@ -404,7 +407,7 @@ def bottleneck_building() -> str:
     ])
 
 
-def bottleneck_flow(params: SFMParams, people: int = 150, radius: float = PRODUCT_RADIUS) -> tuple[float, float, int]:
+def bottleneck_flow(params: SFMParams | JuPedSimModel, people: int = 150, radius: float = PRODUCT_RADIUS) -> tuple[float, float, int]:
     """(specific flow into the 1 m bottleneck /s/m, flow out of the last exit /s, people left inside)."""
     world = _load(bottleneck_building(), "rimea_12.yaml")
     starts = _grid_of_people(0.6, 9.0, 0.6, 9.4, people, 2.0 * radius + 0.02)
@@ -421,7 +424,7 @@ def _steady_flow(times: list[float]) -> float:
     return (b - a) / max(times[b] - times[a], 1e-9)
 
 
-def test_12_bottleneck(params: SFMParams, people: int = 150) -> RimeaResult:
+def test_12_bottleneck(params: SFMParams | JuPedSimModel, people: int = 150) -> RimeaResult:
     """150 people through a 1 m, 5 m long corridor: specific flow 1.3-1.9 /s/m, no jam at the exit after it."""
     specific, last, inside = bottleneck_flow(params, people)
     # no jam after the bottleneck: the last exit, as wide, passes people as fast as they arrive
@@ -431,13 +434,101 @@ def test_12_bottleneck(params: SFMParams, people: int = 150) -> RimeaResult:
                        "specific flow 1.3-1.9 /s/m; exit after it >= 0.9 of it", passed)
 
 
-TESTS: dict[int, Callable[[SFMParams], RimeaResult]] = {
+TESTS: dict[int, Callable[..., RimeaResult]] = {
     1: test_1_corridor, 4: test_4_fundamental_diagram, 5: test_5_premovement, 6: test_6_corner,
     7: test_7_speed_distribution, 9: test_9_exits, 10: test_10_assigned_routes, 11: test_11_exit_choice,
     12: test_12_bottleneck,
 }
 
 
-def run_rimea(model: str = "grove", tests: tuple[int, ...] = tuple(TESTS)) -> list[RimeaResult]:
+# --------------------------------------------------------------------------- JuPedSim beside GROVE
+
+
+class JuPedSimModel:
+    """Stands in for SFMParams in the building tests: `evacuate` then runs JuPedSim's SocialForceModel
+    on the same world (its walkable area plus a strip outside each exit), people, radius and speed, at
+    JuPedSim's own dt of 0.01 s. People leave at an exit stage 1-2 m beyond their door line."""
+
+    dt = 0.01
+
+
+JUPEDSIM = JuPedSimModel()
+# The tests JuPedSim runs beside GROVE: those on whole buildings, built from a world file.
+JUPEDSIM_TESTS = (9, 10, 11, 12)
+
+
+def jupedsim_version() -> str | None:
+    """JuPedSim's version when it can be imported (`./install.sh bench`), else None."""
+    import importlib.util
+
+    if importlib.util.find_spec("jupedsim") is None:
+        return None
+    try:
+        import jupedsim
+    except ImportError:
+        return None
+    return str(getattr(jupedsim, "__version__", "?"))
+
+
+def _evacuate_jupedsim(world, starts: list[tuple[float, float]], exit_of: list[str], *, radius: float, speed: float,
+                       limit: float, line_x: float | None) -> EvacuationRun:
+    import jupedsim as jps
+    import shapely as sh
+
+    pieces = [world.walkable()]
+    stages = {}
+    for name in sorted(set(exit_of)):
+        door = world.find(name)
+        (ax, ay), (bx, by) = door.opening
+        ox, oy = -door.normal[0], -door.normal[1]  # out of the building
+        pieces.append(sh.Polygon([(ax - 0.06 * ox, ay - 0.06 * oy), (bx - 0.06 * ox, by - 0.06 * oy),
+                                  (bx + 3.0 * ox, by + 3.0 * oy), (ax + 3.0 * ox, ay + 3.0 * oy)]))
+        stages[name] = sh.Polygon([(ax + 1.0 * ox, ay + 1.0 * oy), (bx + 1.0 * ox, by + 1.0 * oy),
+                                   (bx + 2.0 * ox, by + 2.0 * oy), (ax + 2.0 * ox, ay + 2.0 * oy)])
+    geometry = sh.union_all(pieces)
+    if geometry.geom_type != "Polygon":
+        geometry = max(geometry.geoms, key=lambda g: g.area)
+    sim = jps.Simulation(model=jps.SocialForceModel(), geometry=geometry, dt=JUPEDSIM.dt)
+    journeys = {}
+    for name, polygon in stages.items():
+        stage = sim.add_exit_stage(polygon)
+        journeys[name] = (sim.add_journey(jps.JourneyDescription([stage])), stage)
+    agent_exit = {}
+    for k, (start, name) in enumerate(zip(starts, exit_of)):
+        journey, stage = journeys[name]
+        agent = sim.add_agent(jps.SocialForceModelAgentParameters(journey_id=journey, stage_id=stage,
+                                                                  position=start, desired_speed=speed, radius=radius))
+        agent_exit[agent] = (k + 1, name)
+    every = 10  # positions read every 0.1 s
+    last = {a.id: a.position for a in sim.agents()}
+    exit_of_id: dict[int, str] = {}
+    time_of: dict[int, float] = {}
+    crossings: list[float] = []
+    crossed: set[int] = set()
+    t = 0.0
+    while sim.agent_count() and t < limit:
+        try:
+            sim.iterate(every)
+        except RuntimeError:
+            break  # JuPedSim stops when its SFM pushes someone out of the walkable area (issue 19)
+        t = sim.iteration_count() * JUPEDSIM.dt
+        now = {a.id: a.position for a in sim.agents()}
+        for agent in set(last) - set(now):
+            person, name = agent_exit[agent]
+            exit_of_id[person] = name
+            time_of[person] = t
+        if line_x is not None:
+            for agent, (x, _y) in now.items():
+                if agent not in crossed and x >= line_x and last.get(agent, (x, 0))[0] < line_x:
+                    crossed.add(agent)
+                    crossings.append(t)
+        last = now
+    return EvacuationRun(exit_of_id, time_of, crossings, sim.agent_count(), t, float("nan"))
+
+
+def run_rimea(model: str = "grove", tests: tuple[int, ...] = tuple(TESTS),
+              jupedsim: bool = False) -> list[tuple[RimeaResult, RimeaResult | None]]:
+    """Each test on the model's crowd, with JuPedSim's result beside the building tests when asked."""
     params = SFMParams.named(model)
-    return [TESTS[t](params) for t in tests]
+    return [(TESTS[t](params), TESTS[t](JUPEDSIM) if jupedsim and t in JUPEDSIM_TESTS else None)
+            for t in tests]

@@ -10,23 +10,23 @@ from grove_tui.crowd.sfm import SFMParams
 
 
 def test_corridor_premovement_and_fundamental_diagram_pass_with_the_default_model():
-    results = {r.test: r for r in run_rimea("grove", (1, 4, 5))}
+    results = {r.test: r for r, _ in run_rimea("grove", (1, 4, 5))}
     assert all(r.passed for r in results.values()), [r for r in results.values() if not r.passed]
     assert results[1].measured.endswith(" s") and 26.0 <= float(results[1].measured.split()[0]) <= 34.0
 
 
 def test_lightsfm_fails_where_issue_19_said_it_does():
     """The same checks can fail: HuNavSim's forces barely slow with density and let waiting people drift."""
-    results = {r.test: r for r in run_rimea("lightsfm", (4, 5))}
+    results = {r.test: r for r, _ in run_rimea("lightsfm", (4, 5))}
     assert not results[4].passed and not results[5].passed
 
 
 def test_the_command_prints_the_table_and_exits_1_on_a_failure():
     runner = CliRunner()
-    ok = runner.invoke(validate, ["rimea", "--test", "1"])
+    ok = runner.invoke(validate, ["rimea", "--test", "1", "--no-jupedsim"])
     assert ok.exit_code == 0, ok.output
     assert "corridor 40 m at 1.33 m/s" in ok.output and ok.output.rstrip().endswith("pass")
-    failing = runner.invoke(validate, ["rimea", "--model", "lightsfm", "--test", "5"])
+    failing = runner.invoke(validate, ["rimea", "--model", "lightsfm", "--test", "5", "--no-jupedsim"])
     assert failing.exit_code == 1 and "FAIL" in failing.output
     unknown = runner.invoke(validate, ["rimea", "--test", "2"])
     assert unknown.exit_code != 0
@@ -34,7 +34,7 @@ def test_the_command_prints_the_table_and_exits_1_on_a_failure():
 
 def test_assigned_routes_and_the_bottleneck_pass_at_product_defaults():
     """RiMEA 10 and 12 in full: every person through the assigned exit; 150 through a 1 m corridor."""
-    results = {r.test: r for r in run_rimea("grove", (10, 12))}
+    results = {r.test: r for r, _ in run_rimea("grove", (10, 12))}
     assert results[10].passed, results[10]
     assert results[12].passed, results[12]
 
