@@ -397,24 +397,25 @@ def least_congested_exits(planner: ThetaStarPlanner, exits: dict[str, tuple[tupl
                           starts: list[tuple[float, float]], speeds: list[float]) -> list[str]:
     """For each start, the exit through which it expects to be out soonest (RiMEA 11's route choice).
 
-    People choose in the order they would reach their nearest door. Each expects to be out of
-    exit e at max(walk_e / speed, people already heading for e / door capacity_e) plus its own
-    passage time: walking to a far door pays off once the near door's queue would take longer to
-    drain than the detour. With one uncrowded door nearest, this is the nearest-exit choice.
-    `exits` maps a name to (door centre, door width in metres).
+    Each door is a queue that lets one person through every 1 / capacity seconds. People choose in
+    the order they would reach their nearest door; one reaching door e at walk_e / speed is out at
+    max(that, when the door is next free) + 1 / capacity, and takes the door where that is soonest.
+    Walking to a far door pays off once the near door's queue would take longer to clear than the
+    detour; with nobody queueing, this is the nearest-exit choice. `exits` maps a name to (door
+    centre, door width in metres).
     """
     names, walks = exit_walks(planner, {n: p for n, (p, _w) in exits.items()}, starts)
     if not len(starts):
         return []
-    capacity = np.array([DOOR_SPECIFIC_FLOW * max(float(exits[n][1]), 0.5) for n in names])
+    passage = 1.0 / np.array([DOOR_SPECIFIC_FLOW * max(float(exits[n][1]), 0.5) for n in names])
     speed = np.maximum(np.asarray(speeds, dtype=np.float64), 0.1)
-    walk_time = walks / speed[None, :]
-    queued = np.zeros(len(names))
+    arrival = walks / speed[None, :]
+    free_at = np.zeros(len(names))
     choice = np.empty(len(starts), dtype=np.int64)
     # ties broken by start index: the same starts always give the same choice
-    for person in np.lexsort((np.arange(len(starts)), walk_time.min(axis=0))).tolist():
-        out_at = np.maximum(walk_time[:, person], queued / capacity) + 1.0 / capacity
+    for person in np.lexsort((np.arange(len(starts)), arrival.min(axis=0))).tolist():
+        out_at = np.maximum(arrival[:, person], free_at) + passage
         best = int(np.argmin(out_at))
         choice[person] = best
-        queued[best] += 1.0
+        free_at[best] = out_at[best]
     return [names[k] for k in choice.tolist()]

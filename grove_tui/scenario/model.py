@@ -80,6 +80,11 @@ class Scenario:
     # imported from HuNavSim (`grove import hunav`); generated scenarios write x/y beside every goal_id.
     global_goals: dict[int, Point] = field(default_factory=dict)
 
+    @property
+    def grid_inflation(self) -> float:
+        """How far the planner's grid keeps centres off walls: the largest body radius of its people."""
+        return max((a.radius for a in self.agents), default=DEFAULT_AGENT_RADIUS)
+
     def to_dict(self) -> dict[str, Any]:
         data = asdict(self)
         data["agents"] = [_agent_to_dict(a) for a in self.agents]

@@ -41,7 +41,6 @@ from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
 from grove_tui.bt.xml import BTError, parse_tree_text
 from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
-from grove_tui.scenario.model import DEFAULT_AGENT_RADIUS
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
 REACTION_DEFAULTS = ROBOT_REACTION_DEFAULTS
@@ -146,9 +145,8 @@ class Simulation:
             world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
         grid_path = bundle_dir / "grid.npz"
         # a bundle without its grid: inflate by the people's largest radius, as generation did
-        inflation = max((a.radius for a in scenario.agents), default=DEFAULT_AGENT_RADIUS)
         grid = (load_grid(bundle_dir) if os.path.lexists(grid_path)
-                else build_grid(world, resolution=scenario.resolution, inflation=inflation))
+                else build_grid(world, resolution=scenario.resolution, inflation=scenario.grid_inflation))
         # Every file is checked to be a regular file inside the bundle before it is read.
         fields = {field_id: load_field(bundle_dir, field_id, rel) for field_id, rel in scenario.fields.items()}
         documents = []
