@@ -33,8 +33,9 @@ from grove_tui.navigation.velocity_field import least_congested_exits, nearest_e
 
 Point = tuple[float, float]
 
-AGENT_RADIUS = 0.35
-SPAWN_SPACING = 2 * AGENT_RADIUS  # centres at least two radii apart: nobody starts overlapping
+# Centres at least this far apart at the start: wider than any default body (0.5 m), so nobody starts
+# overlapping, and people start with room to move.
+SPAWN_SPACING = 0.7
 GOAL_SPACING = 0.8  # distinct goal points in one zone, so arrivals do not pile onto one spot
 QUEUE_SPACING = 0.6  # the Queue node's default slot spacing
 # Highest density we accept for a zone's free floor: standing crowds reach 2-3 people/m^2, but a
