@@ -18,6 +18,7 @@ import click
 from rich.console import Console
 
 from grove_tui.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUNTIME_FAILURE
+from grove_tui.settings import PEDESTRIAN_MODELS
 
 if TYPE_CHECKING:
     from grove_tui.services.session import GroveSession
@@ -333,12 +334,15 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 @click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True, max=24 * 3600.0), default=30.0,
               show_default=True, callback=lambda ctx, param, value: _finite(value, param),
               help="Simulated seconds to run (at most a day).")
+@click.option("--model", type=click.Choice(PEDESTRIAN_MODELS), default=None,
+              help="Pedestrian model: grove (passes RiMEA) or lightsfm (HuNavSim's forces); "
+                   "default the settings' simulation.pedestrian_model.")
 @click.pass_context
-def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
+def simulate(ctx: click.Context, bundle: str, seconds: float, model: str | None) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
     out = _out()
     with session_for(ctx) as session:
-        sim = session.simulate(Path(bundle), seconds).to_dict()
+        sim = session.simulate(Path(bundle), seconds, model=model).to_dict()
     out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
               f"{Path(bundle) / 'trajectories.csv'}", markup=False)
     for key, value in sim["counters"].items():

@@ -134,7 +134,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
         trees[rel] = write_tree(document)
         agents.append(AgentSpec(
             id=a.id, group=a.sfm_group, start=a.start, goals=tuple((round(x, 3), round(y, 3)) for x, y in goals),
-            zone=a.zone, tree=rel, radius=0.35, max_vel=a.max_vel, label=a.label,
+            zone=a.zone, tree=rel, radius=preset.agent_radius, max_vel=a.max_vel, label=a.label,
             behavior=a.behavior))
     robot_spec = None
     if robot is None or robot.enabled:

@@ -438,11 +438,14 @@ class GroveSession:
         """A runnable simulation of a generated scenario, for a front end that steps it itself."""
         from grove_tui.simulation.simulation import Simulation
 
-        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
+        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world,
+                                        params=pedestrian_params())
 
     def simulate(self, bundle: str | Path, seconds: float, *, cancel: threading.Event | None = None,
-                 runtime_planning: bool = True) -> SimulationSummary:
+                 runtime_planning: bool = True, model: str | None = None) -> SimulationSummary:
         """Run a bundle's scenario for `seconds`; give it trajectories.csv, events.jsonl and metrics.json.
+
+        `model`: the pedestrian model ("grove" or "lightsfm"); default the settings' simulation.pedestrian_model.
 
         The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
         """
@@ -454,7 +457,8 @@ class GroveSession:
         bundle = Path(bundle)
         scenario, _, _, _ = load_bundle(bundle)
         world = self.load_world(_world_name(scenario.world, bundle))
-        sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
+        sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning,
+                                       params=pedestrian_params(model))
         started = time.perf_counter()
         frame = sim.run(seconds, cancel=cancel)
         wall = time.perf_counter() - started
@@ -670,3 +674,14 @@ def _is_running(llm: Any) -> bool:
         return False
     running = getattr(llm, "running", None)
     return True if running is None else bool(running)
+
+
+def pedestrian_params(model: str | None = None) -> Any:
+    """SFMParams of a pedestrian model by name, or of the settings' simulation.pedestrian_model."""
+    from grove_tui.crowd.sfm import SFMParams
+    from grove_tui.settings import PEDESTRIAN_MODELS, load_settings
+
+    name = model if model is not None else load_settings().simulation.pedestrian_model
+    if name not in PEDESTRIAN_MODELS:
+        raise BadInputError(f"unknown pedestrian model {name!r}", hint=f"choose one of {', '.join(PEDESTRIAN_MODELS)}")
+    return SFMParams.named(name)
