@@ -42,6 +42,7 @@ import random
 import unicodedata
 import zlib
 from collections.abc import Sequence
+from functools import lru_cache
 from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
@@ -150,6 +151,41 @@ def _has_subset(reading: PromptReading, parent: int) -> bool:
 
 # ---- reading --------------------------------------------------------------------------------
 
+@lru_cache(maxsize=2048)
+def _near_person_noun(word: str) -> bool:
+    """One insertion, deletion, substitution or swap of two neighbours away from a person noun or
+    its plural (Damerau-Levenshtein distance 1)."""
+    forms = _person_forms()
+    for n in (len(word) - 1, len(word), len(word) + 1):
+        for form in forms.get(n, ()):
+            if _one_edit(word, form):
+                return True
+    return False
+
+
+@lru_cache(maxsize=1)
+def _person_forms() -> dict[int, frozenset[str]]:
+    by_length: dict[int, set[str]] = {}
+    for noun in lx.PERSON_NOUNS:
+        for form in (noun, noun + "s", noun[:-1] + "ies" if noun.endswith("y") else noun + "es", "children", "people",
+                     "women", "men"):
+            if len(form) >= 5:
+                by_length.setdefault(len(form), set()).add(form)
+    return {n: frozenset(f) for n, f in by_length.items()}
+
+
+def _one_edit(a: str, b: str) -> bool:
+    if a == b:
+        return False
+    if len(a) == len(b):
+        diff = [k for k in range(len(a)) if a[k] != b[k]]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]]
+                                  and a[diff[1]] == b[diff[0]])
+    if len(a) > len(b):
+        a, b = b, a
+    return any(b[:k] + b[k + 1:] == a for k in range(len(b)))
+
+
 def _plain(word: str) -> str:
     """The word without accents ("café" -> "cafe"), as world names are written."""
     if word.isascii():
@@ -177,6 +213,7 @@ class _Mention:
     whole_zone: bool = False
     exclusive: bool = False
     rest_of_parent: bool = False
+    collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
 
 
 @dataclass
@@ -296,7 +333,12 @@ class _Reader:
 
     def _is_person_noun(self, i: int) -> bool:
         lem = self._lemma(i)
-        return lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS
+        if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS:
+            return True
+        # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
+        # enough that the edit cannot turn one real word into another, and no name of the world.
+        return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
+                and _near_person_noun(self.low[i]))
 
     # -- mentions ----------------------------------------------------------------------------
 
@@ -322,7 +364,38 @@ class _Reader:
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or self._is_punct(p - 1) or self.low[p - 1] in
                                                    lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
             return True
+        if prev == "by" and self.w[p].dep == "agent":
+            return True  # "the balcony is used by a smoker": the passive's doer
+        if prev == "of" and self._event_before(p):
+            return True  # "the boardroom meeting of twelve people breaks up"
+        return self._parser_subject(s)
+
+    def _parser_subject(self, s: int) -> bool:
+        """Whether the phrase at s is the subject the parser found ("At six the staff head out"):
+        determiners, numbers and adjectives, then a person noun the parser calls the subject."""
+        if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM"):
+            return False  # inside a noun phrase that starts earlier ("the only people")
+        for k in range(s, min(s + 5, self.n)):
+            if self.low[k] in lx.NOBODY_WORDS:
+                return False
+            if self._is_person_noun(k):
+                return self.w[k].dep in ("nsubj", "nsubjpass") and self.w[self.w[k].head].pos in ("VERB", "AUX")
+            if self.w[k].pos not in ("DET", "NUM", "ADJ") and self.low[k] not in lx.NP_MODIFIERS:
+                return False
         return False
+
+    def _event_before(self, of: int) -> bool:
+        """Whether "of" closes a subject noun phrase of no people ("the boardroom meeting of ..."):
+        nouns and adjectives back to a determiner at a subject position."""
+        k = of - 1
+        if k < 0 or self.w[k].pos not in ("NOUN", "PROPN") or self._is_person_noun(k) or \
+                self._lemma(k) in lx.IMPLIED_RANGES or self._number_at(k) is not None:
+            return False
+        while k > 0 and self.w[k - 1].pos in ("NOUN", "PROPN", "ADJ") and not self._is_punct(k - 1):
+            k -= 1
+        if k > 0 and self.low[k - 1] in ("the", "a", "an", "this", "that"):
+            k -= 1
+        return self._subject_position(k) if self.low[k - 1:k] != ["of"] else False
 
     def _mentions(self) -> list[_Mention]:
         found: list[_Mention] = []
@@ -351,7 +424,16 @@ class _Reader:
         a time or a thing of the world."""
         k = j
         while k < self.n and k < j + 4:
-            if self._is_person_noun(k):
+            if self._is_person_noun(k) and self.w[k].pos == "ADJ" and k + 1 < self.n and \
+                    self.w[k + 1].pos in ("NOUN", "PROPN") and (self._is_person_noun(k + 1) or
+                                                               self._lemma(k + 1) in lx.IMPLIED_RANGES):
+                k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
+                continue
+            if self._is_person_noun(k) and self._modifies_next_noun(k):
+                return None  # "the outpatient clinic", "security alert": a thing named after people
+            if self._is_person_noun(k) or (self._lemma(k) in lx.IMPLIED_RANGES and k + 1 < self.n
+                                           and self.low[k + 1] == "of"):
+                # ("a queue of eight people": the collective heads the phrase)
                 while k + 1 < self.n and self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES \
                         and not self.w[k + 1].tag.startswith("VB") and not (
                             not counted and k + 2 < self.n and self.w[k + 2].pos in ("ADP", "DET", "PUNCT")):
@@ -372,9 +454,22 @@ class _Reader:
             return None
         return None
 
+    def _modifies_next_noun(self, k: int) -> bool:
+        """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
+        that noun is no person, no collective and no verb the lexicon knows, and the parser does not
+        make it the sentence's verb ("Mum cooks dinner")."""
+        if k + 1 >= self.n:
+            return False
+        nxt, word = self.w[k + 1], self.low[k + 1]
+        return (nxt.pos == "NOUN" and nxt.dep != "ROOT" and not nxt.tag.startswith("VB")
+                and not self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES
+                and verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS
+                and self._lemma(k + 1) not in lx.DURATION_UNITS)
+
     def _mention_at(self, s: int, found: list[_Mention]) -> _Mention | None:
         low = self.low
-        if low[s] in ("the", "these", "those", "all") and s + 1 < self.n and self._number_at(s + 1) is not None:
+        if low[s] in ("the", "these", "those", "all", "its", "their", "our", "his", "her", "my", "your") and \
+                s + 1 < self.n and self._number_at(s + 1) is not None:
             inner = self._mention_at(s + 1, found)  # "the four people in the living room"
             if inner is not None:
                 inner.first = s
@@ -581,6 +676,10 @@ class _Reader:
             value, after = num
             if tuple(low[after:after + 2]) == ("or", "so"):
                 return (value, "approximate", after + 2, None)  # "fifteen or so women"
+            if after < self.n and low[after] == "odd":
+                return (value, "approximate", after + 1, None)  # "twenty-odd customers"
+            if tuple(low[after:after + 2]) == ("-", "odd"):
+                return (value, "approximate", after + 2, None)
             if after + 1 < self.n and low[after] in ("to", "-", "or") and self._number_at(after + 1):
                 b = self._number_at(after + 1)
                 if b[0] > value:
@@ -647,7 +746,7 @@ class _Reader:
                 member = self._person_head(inner[1], counted=True)
                 if member is not None and member <= inner[1] + 2:
                     last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team"):
+                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
                         label = self._label(member)
             else:
                 member = self._person_head(self._skip(head + 2, {"the", "their", "our"}), counted=False)
@@ -656,6 +755,12 @@ class _Reader:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self._label(member)
+        mention = self._collective_mention(noun, s, last, label, size, parties, exact_parties, together, head)
+        mention.collective = noun
+        return mention
+
+    def _collective_mention(self, noun: str, s: int, last: int, label: str, size: tuple[int, int] | None,
+                            parties: int, exact_parties: bool, together: bool, head: int) -> _Mention:
         if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
             # "a crowd of visitors": the collective only says how many, vaguely
             low_, high_ = lx.IMPLIED_RANGES[noun]
