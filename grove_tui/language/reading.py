@@ -254,6 +254,7 @@ class _Reader:
         self.n = len(words)
         self.unknown: list[str] = []
         self.notes: list[str] = []
+        self.context_zones: list[str] = []  # zones of the places read so far, in reading order
         self.no_mention = self._together_phrase_tokens()
 
     # -- helpers ---------------------------------------------------------------------------
@@ -917,13 +918,26 @@ class _Reader:
                 if c.robot is not None:
                     break
                 for phrase, interaction in lx.ROBOT_PHRASES.items():
-                    lemmas = tuple(verb_lemma(x) for x in low[i:i + len(phrase)])
-                    if lemmas == phrase and all(x in ownset for x in range(i, i + len(phrase))):
+                    taken = self._phrase_words(i, len(phrase), ownset)
+                    if taken == phrase:
                         c.robot = interaction
                         break
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
+                if c.robot is None and self._lemma(i) in lx.ROBOT_NOUNS:
+                    c.robot = lx.ROBOT_NOUNS[self._lemma(i)]  # "stop to take photos of the robot"
+            if c.robot is None:
+                # "give the robot a wide berth": a noun just after the robot names it
+                for i in range(r + 1, min(r + 5, self.n)):
+                    if i not in ownset or self._is_punct(i):
+                        break
+                    if self._lemma(i) in lx.ROBOT_NOUNS:
+                        c.robot = lx.ROBOT_NOUNS[self._lemma(i)]
+                        break
+            if c.robot is None and r + 3 < self.n and verb_lemma(low[r + 1]) == "be" and \
+                    verb_lemma(low[r + 2]) in lx.ROBOT_VERBS and low[r + 3] == "by":
+                c.robot = lx.ROBOT_VERBS[verb_lemma(low[r + 2])]  # "the robot is followed by ..."
         if robot_at and c.robot is None:
             for i in own:
                 if low[i] in lx.ROBOT_FEELINGS:
@@ -947,11 +961,12 @@ class _Reader:
                     used.update(range(i, end))
                     i_pos = self._advance(own, end)
                     continue
-                prev_verb = self._previous_verb(own, i_pos)
-                # "head for the exit", "queue for the coffee machine": a place by its whole name after a
-                # determiner; "for coffee", "for their prescriptions" are purposes, whatever they match.
-                if prev_verb in lx.FOR_DESTINATION_VERBS or (nxt in ("the", "this", "that") and self._names_place(i + 2)):
-                    place = self._place_phrase(i + 1, "for", i)
+                # "head for the exit", "make a beeline for gate B2", "queue for the coffee machine": a
+                # place by its whole name after a determiner; "for coffee", "for their prescriptions",
+                # "head out the back for a cigarette" are purposes, whatever they match.
+                right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS
+                if right_after_verb or (nxt in ("the", "this", "that") and self._names_place(i + 2)):
+                    place = self._place_phrase(i + 1, "for", i, record_unknown=right_after_verb)
                     if place is not None:
                         c.places.append(place)
                         used.update(range(i, place.end))
@@ -996,6 +1011,8 @@ class _Reader:
             prep = self._preposition(i)
             if prep is not None:
                 name, width = prep
+                if name == "from" and self._after_transaction(i, own):
+                    name = "at"  # "buy tickets from the machines": where they stand, not where they start
                 place = self._place_phrase(i + width, name, i)
                 if place is not None:
                     c.places.append(place)
@@ -1086,6 +1103,23 @@ class _Reader:
             c.together = True
         return c
 
+    def _phrase_words(self, i: int, n: int, ownset: set[int]) -> tuple[str, ...]:
+        """The n words from i on in their base forms, skipping intensifiers after the first ("keep
+        well clear"); words outside the clause end it."""
+        out: list[str] = []
+        j = i
+        while j < self.n and len(out) < n:
+            if j not in ownset:
+                break
+            word = self.low[j]
+            if out and word in lx.ROBOT_PHRASE_FILLERS:
+                j += 1
+                continue
+            base = verb_lemma(word)
+            out.append(base if base != word else lemma(word))
+            j += 1
+        return tuple(out)
+
     def _trigrams(self, own: Sequence[int]) -> set[tuple[str, str, str]]:
         return {tuple(self.low[i:i + 3]) for i in own if i + 3 <= self.n}
 
@@ -1136,8 +1170,26 @@ class _Reader:
         for n in range(len(words), 0, -1):
             match = self.index.match(phrase_lemmas(words[:n]))
             if match is not None and match.exact:
-                return True
+                # the name starts here: "to pick up wheelchairs" is a purpose, though "wheelchairs" is a name
+                entry = self.index.entry(match.name)
+                first = next((lemma(w) for w in words[:n] if w not in lx.DETERMINERS), "")
+                return entry is None or first in entry.tokens
         return False
+
+    def _after_transaction(self, i: int, own: Sequence[int]) -> bool:
+        """Whether a verb of getting something governs the preposition at i ("buy tickets from")."""
+        before = [k for k in own if i - 4 <= k < i]
+        return any(verb_lemma(self.low[k]) in lx.TRANSACTION_VERBS for k in before)
+
+    def _verb_just_before(self, i: int) -> str | None:
+        """The verb (or "beeline") right before i, past adverbs ("head straight for the exit")."""
+        j = i - 1
+        while j >= 0 and (self.w[j].pos == "ADV" or self.low[j] in ("straight", "directly", "off", "back")):
+            j -= 1
+        if j < 0:
+            return None
+        word = self.low[j]
+        return word if word in lx.FOR_DESTINATION_VERBS else verb_lemma(word)
 
     def _previous_verb(self, own: Sequence[int], pos: int) -> str | None:
         for k in range(pos - 1, -1, -1):
@@ -1202,6 +1254,8 @@ class _Reader:
             return ("at" if two[0] in ("next", "close") else "to"), 2
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
+        if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "out", 1  # "head out the back", "walk out the front door"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
         return None
@@ -1261,12 +1315,31 @@ class _Reader:
             return None
         if self._is_person_phrase(lemmas):
             return None
-        match = self.index.match(lemmas)
+        match = None
+        if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
+            door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
+            match = door if door is not None and door.kind == "door" else None
+        match = match or self._in_context(self.index.match(lemmas), lemmas)
         if match is None and record_unknown and not self.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
             return None
+        self.context_zones.append(match.zone)
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
+        """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
+        has already named ("Gate A1: ... staff at the desk")."""
+        if match is None or not self.context_zones:
+            return match
+        tied = [m for m in self.index.candidates(lemmas) if m.score >= match.score - 1e-9]
+        if len(tied) < 2 or match.zone in self.context_zones:
+            return match
+        for zone in reversed(self.context_zones):
+            for m in tied:
+                if m.zone == zone:
+                    return m
+        return match
 
     def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
         """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
@@ -1407,6 +1480,8 @@ class _Reader:
               from_scene: bool) -> str:
         prep = p.prep
         is_door = p.match is not None and p.match.kind == "door"
+        if prep == "out":
+            return "destination" if is_door else "start"
         if prep in ("from", "obj:start"):
             return "start"
         if prep == "for":
@@ -1415,6 +1490,8 @@ class _Reader:
             return "destination"
         if prep == "obj:via":
             return "via"
+        if prep in lx.VIA_PREPOSITIONS and stationary and not is_door:
+            return "location"  # "pace up and down the corridor", "wander through the concourse"
         if prep in lx.VIA_PREPOSITIONS:
             if is_door and verb in lx.DEPARTURE_VERBS | {"evacuate"} or (is_door and intent == "evacuate"):
                 return "destination"
