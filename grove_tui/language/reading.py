@@ -376,6 +376,8 @@ class _Reader:
         determiners, numbers and adjectives, then a person noun the parser calls the subject."""
         if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM"):
             return False  # inside a noun phrase that starts earlier ("the only people")
+        if s > 0 and self.w[s - 1].pos == "SCONJ" and self.low[s - 1] not in lx.CLAUSE_STARTERS:
+            return False  # "... until someone collects them", "if anyone asks": nobody who is there
         for k in range(s, min(s + 5, self.n)):
             if self.low[k] in lx.NOBODY_WORDS:
                 return False
@@ -462,7 +464,12 @@ class _Reader:
         if k + 1 >= self.n:
             return False
         nxt, word = self.w[k + 1], self.low[k + 1]
-        return (nxt.pos == "NOUN" and nxt.dep != "ROOT" and not nxt.tag.startswith("VB")
+        if word in ("'s", "’s", "'") or nxt.tag == "POS":
+            return True  # "the manager's office"
+        # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
+        # is one, "Security alert:" is not.
+        verb_like = nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])
+        return (nxt.pos == "NOUN" and not verb_like and not nxt.tag.startswith("VB")
                 and not self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES
                 and verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS
                 and self._lemma(k + 1) not in lx.DURATION_UNITS)
@@ -1050,8 +1057,18 @@ class _Reader:
         if scene and own:
             # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
             # the sentence's people are.
+            # So is a place that heads the sentence before a colon ("Gate A1: 25 people seated") or
+            # names the event the people come from ("the boardroom meeting of twelve people"); the
+            # subject of a passive takes the role the verb gives its object ("Ward B is visited by").
             subject = self._place_phrase(own[0], "at", own[0], record_unknown=False)
-            if subject is not None and subject.end < self.n and verb_lemma(low[subject.end]) in ("be", "stay", "remain"):
+            after = low[subject.end] if subject is not None and subject.end < self.n else ""
+            if subject is not None and (verb_lemma(after) in ("be", "stay", "remain", "get") or after in (":", "of")):
+                passive = subject.end + 1 < self.n and self.w[subject.end + 1].tag == "VBN"
+                verb = verb_lemma(low[subject.end + 1]) if passive else ""
+                if verb in lx.START_OBJECT_VERBS:
+                    subject = replace(subject, prep="obj:start")
+                elif verb in lx.DESTINATION_OBJECT_VERBS:
+                    subject = replace(subject, prep="obj:dest")
                 c.places.append(subject)
                 used.update(range(own[0], subject.end))
         # Intents: phrasal verbs first, then single verbs; a verb inside a place phrase is not one.
@@ -1074,6 +1091,8 @@ class _Reader:
                     candidates.append((i, lx.INTENT_VERBS[v], v))
         if any(self.w[i].pos == "VERB" and self.w[i].lemma not in ("be", "have") and i not in used for i in own):
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
+        if len(candidates) > 1 and own and candidates[0][0] == own[0] and self.w[own[0]].tag == "VBG":
+            candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
         if candidates:
             c.has_action = True
             c.moves = any(kind in ("walk", "evacuate") for _, kind, _ in candidates)
@@ -1086,6 +1105,8 @@ class _Reader:
             k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
             k1 = self._skip(k0, {"behind", "after"})
             k = self._skip(k1, lx.DETERMINERS)
+            if k + 1 < self.n and self.w[k].pos in ("NOUN", "ADJ", "PROPN") and self._is_person_noun(k + 1):
+                k += 1  # "follow the charge nurse"
             if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide",
                                                                      "us", "everyone")):
                 c.follows = self._span(c.verb_index + 1, k)
@@ -1256,6 +1277,8 @@ class _Reader:
             return "down", 1
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
+        if w == "off" and self.w[i].dep == "prt":
+            return None  # "drops off a parcel": a particle of the verb
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
         return None
@@ -1391,26 +1414,35 @@ class _Reader:
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together,
                                text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end])
-        if c.robot is not None:
-            intent = "robot"
+        robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
+        if m.collective in lx.QUEUE_COLLECTIVES and c.intent is None and intent in ("wait", "walk"):
+            intent = "queue"  # "a queue of eight people forms at the ticket office"
+        if robot is not None:
+            intent = "robot"  # also "Startled by the robot, a woman ...", "The robot is followed by ..."
         if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):
             intent = "evacuate"
         start = destination = location = None
         via: list[str] = []
         places = list(c.places)
         scene_places = list(scene.places) if scene is not None else []
-        stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and c.intent in lx.STATIONARY_INTENTS)
+        # Someone who looks at the robot or blocks it, with no verb of motion, stays where they are.
+        stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and (
+            c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block"))))
         verb = c.verb or ""
         verb_index = c.verb_index
+        said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
         for p in places + scene_places:
             name = p.match.name if p.match is not None else None
             if name is None:
                 continue
             role = self._role(p, verb, verb_index, stationary, intent, p in scene_places)
+            marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
             if role == "start" and (start is None or self._narrower(name, start)):
                 start = name
-            elif role == "destination" and (destination is None or self._narrower(name, destination)):
-                destination = name
+            elif role == "destination" and (destination is None or self._narrower(name, destination)
+                                            or (marked and not said_to)):
+                # "drops her bags off at the lockers and heads to the café": the café
+                destination, said_to = name, said_to or marked
             elif role == "location" and (location is None or self._narrower(name, location)):
                 location = name
             elif role == "via" and name not in via:
@@ -1457,11 +1489,11 @@ class _Reader:
             count = Count("vague", lx.BARE_PLURAL_RANGE[0], *lx.BARE_PLURAL_RANGE)
         if m.exclusive and count.kind != "exclusive":
             count = replace(count, kind="exclusive")
-        interaction = c.robot
+        interaction = robot
         pace = c.pace if c.pace != "normal" or scene is None else scene.pace
         together = m.together or c.together or count.kind == "structured"
         wait = c.wait_seconds
-        if wait is None and scene is not None and intent == "wait":
+        if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
             wait = scene.wait_seconds
         return GroupReading(
             who=m.who, label=m.label, count=count, intent=intent,
