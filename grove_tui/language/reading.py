@@ -823,6 +823,9 @@ class _Reader:
     def read(self) -> PromptReading:
         mentions = self._mentions()
         if not mentions:
+            evacuated = self._evacuated_zone_without_people()
+            if evacuated is not None:
+                return evacuated
             self._scan_unknown_places(range(self.n))
             return PromptReading(self.prompt, (), tuple(dict.fromkeys(self.unknown)),
                                  ("no group of people found in the prompt",))
@@ -877,6 +880,32 @@ class _Reader:
             scene = scenes.get(self.w[m.first].sentence)
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+
+    def _evacuated_zone_without_people(self) -> PromptReading | None:
+        """"The entire concourse is evacuated through the side entrance", "Evacuate the pharmacy.":
+        a zone is emptied and nobody is named, so everyone in it leaves (a whole-zone group), and the
+        reading says that it assumed them."""
+        clause = self._clause(list(range(self.n)), set(), scene=True)
+        for i in range(2, self.n):  # the subject of a passive evacuation: "<the X> is evacuated"
+            if verb_lemma(self.low[i]) == "evacuate" and self.w[i].tag == "VBN" and \
+                    verb_lemma(self.low[i - 1]) in ("be", "get"):
+                first = i - 2
+                while first > 0 and self.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM") and \
+                        not self._is_punct(first - 1):
+                    first -= 1
+                place = self._place_phrase(first, "obj:start", first, record_unknown=False)
+                if place is not None:
+                    clause.places.append(place)
+        zones = [p for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
+        if not zones or not (clause.evacuate or clause.intent == "evacuate"):
+            return None
+        zone = zones[0].match.zone
+        mention = _Mention(zones[0].index, zones[0].end - 1, f"everyone in {zones[0].match.name}", "person", None,
+                           whole_zone=True)
+        group = self._group(0, mention, clause, None, True, (0, self.n), [])
+        group = replace(group, who="everyone", text=self.prompt)
+        self.notes.append(f"no people are named: everyone in {zone} is evacuated")
+        return PromptReading(self.prompt, (group,), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
     def _hyphen_inside(self, j: int) -> bool:
         """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
@@ -1020,7 +1049,8 @@ class _Reader:
                 name, width = prep
                 if name == "from" and self._after_transaction(i, own):
                     name = "at"  # "buy tickets from the machines": where they stand, not where they start
-                place = self._place_phrase(i + width, name, i)
+                # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
+                place = self._place_phrase(i + width, name, i, record_unknown=name != "off")
                 if place is not None:
                     c.places.append(place)
                     used.update(range(i, place.end))
@@ -1277,8 +1307,6 @@ class _Reader:
             return "down", 1
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
-        if w == "off" and self.w[i].dep == "prt":
-            return None  # "drops off a parcel": a particle of the verb
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
         return None
