@@ -152,26 +152,30 @@ def _has_subset(reading: PromptReading, parent: int) -> bool:
 # ---- reading --------------------------------------------------------------------------------
 
 @lru_cache(maxsize=2048)
-def _near_person_noun(word: str) -> bool:
-    """One insertion, deletion, substitution or swap of two neighbours away from a person noun or
-    its plural (Damerau-Levenshtein distance 1)."""
+def _near_person_noun(word: str) -> str | None:
+    """The person noun a word is one insertion, deletion, substitution or swap of two neighbours
+    away from, in its singular or plural (Damerau-Levenshtein distance 1); None if none is."""
     forms = _person_forms()
     for n in (len(word) - 1, len(word), len(word) + 1):
-        for form in forms.get(n, ()):
+        for form, noun in sorted(forms.get(n, {}).items()):
             if _one_edit(word, form):
-                return True
-    return False
+                return noun
+    return None
 
 
 @lru_cache(maxsize=1)
-def _person_forms() -> dict[int, frozenset[str]]:
-    by_length: dict[int, set[str]] = {}
+def _person_forms() -> dict[int, dict[str, str]]:
+    """Length -> {written form: person noun}, for the typo check."""
+    by_length: dict[int, dict[str, str]] = {}
+    irregular = {"children": "child", "people": "person", "women": "woman", "men": "man"}
     for noun in lx.PERSON_NOUNS:
-        for form in (noun, noun + "s", noun[:-1] + "ies" if noun.endswith("y") else noun + "es", "children", "people",
-                     "women", "men"):
+        plural = noun[:-1] + "ies" if noun.endswith("y") else noun + "s"
+        for form in (noun, plural, noun + "es"):
             if len(form) >= 5:
-                by_length.setdefault(len(form), set()).add(form)
-    return {n: frozenset(f) for n, f in by_length.items()}
+                by_length.setdefault(len(form), {}).setdefault(form, noun)
+    for form, noun in irregular.items():
+        by_length.setdefault(len(form), {})[form] = noun
+    return by_length
 
 
 def _one_edit(a: str, b: str) -> bool:
@@ -339,7 +343,7 @@ class _Reader:
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, and no name of the world.
         return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
-                and _near_person_noun(self.low[i]))
+                and _near_person_noun(self.low[i]) is not None)
 
     # -- mentions ----------------------------------------------------------------------------
 
@@ -428,7 +432,8 @@ class _Reader:
         k = j
         while k < self.n and k < j + 4:
             if self._is_person_noun(k) and self.w[k].pos == "ADJ" and k + 1 < self.n and \
-                    self.w[k + 1].pos in ("NOUN", "PROPN") and (self._is_person_noun(k + 1) or
+                    self.w[k + 1].pos in ("NOUN", "PROPN") and self.w[k + 1].dep != "ROOT" and (
+                        self._is_person_noun(k + 1) or
                                                                self._lemma(k + 1) in lx.IMPLIED_RANGES):
                 k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
                 continue
@@ -469,9 +474,10 @@ class _Reader:
         # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
         # is one, "Security alert:" is not.
         verb_like = nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])
+        gerund_noun = nxt.tag == "NN" and word.endswith("ing")  # "the team meeting", not "nurses meeting"
         return (nxt.pos == "NOUN" and not verb_like and not nxt.tag.startswith("VB")
                 and not self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES
-                and verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS
+                and (gerund_noun or (verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS))
                 and self._lemma(k + 1) not in lx.DURATION_UNITS)
 
     def _mention_at(self, s: int, found: list[_Mention]) -> _Mention | None:
@@ -649,6 +655,8 @@ class _Reader:
         if head is None:
             return "person"
         noun = self._lemma(head)
+        if noun not in lx.PERSON_NOUNS and len(self.low[head]) >= 6:
+            noun = _near_person_noun(self.low[head]) or noun  # "nurzes" -> nurse
         if noun in ("member", "person") and head > 0 and self._is_person_noun(head - 1):
             noun = self._lemma(head - 1)  # "staff members", "family members"
         if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
@@ -887,9 +895,10 @@ class _Reader:
         reading says that it assumed them."""
         clause = self._clause(list(range(self.n)), set(), scene=True)
         for i in range(2, self.n):  # the subject of a passive evacuation: "<the X> is evacuated"
-            if verb_lemma(self.low[i]) == "evacuate" and self.w[i].tag == "VBN" and \
-                    verb_lemma(self.low[i - 1]) in ("be", "get"):
-                first = i - 2
+            aux = i - 2 if self.low[i - 1] in ("being", "been") else i - 1
+            if verb_lemma(self.low[i]) == "evacuate" and self.w[i].tag == "VBN" and aux >= 1 and \
+                    verb_lemma(self.low[aux]) in ("be", "get"):
+                first = aux - 1
                 while first > 0 and self.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM") and \
                         not self._is_punct(first - 1):
                     first -= 1
