@@ -432,9 +432,8 @@ class _Reader:
         k = j
         while k < self.n and k < j + 4:
             if self._is_person_noun(k) and self.w[k].pos == "ADJ" and k + 1 < self.n and \
-                    self.w[k + 1].pos in ("NOUN", "PROPN") and self.w[k + 1].dep != "ROOT" and (
-                        self._is_person_noun(k + 1) or
-                                                               self._lemma(k + 1) in lx.IMPLIED_RANGES):
+                    self.w[k + 1].pos in ("NOUN", "PROPN") and self.w[k + 1].dep != "ROOT" and \
+                    (self._is_person_noun(k + 1) or self._lemma(k + 1) in lx.IMPLIED_RANGES):
                 k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
                 continue
             if self._is_person_noun(k) and self._modifies_next_noun(k):
@@ -905,12 +904,12 @@ class _Reader:
                 place = self._place_phrase(first, "obj:start", first, record_unknown=False)
                 if place is not None:
                     clause.places.append(place)
-        zones = [p for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
-        if not zones or not (clause.evacuate or clause.intent == "evacuate"):
+        emptied = [(p, p.match) for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
+        if not emptied or not (clause.evacuate or clause.intent == "evacuate"):
             return None
-        zone = zones[0].match.zone
-        mention = _Mention(zones[0].index, zones[0].end - 1, f"everyone in {zones[0].match.name}", "person", None,
-                           whole_zone=True)
+        place, match = emptied[0]
+        zone = match.zone
+        mention = _Mention(place.index, place.end - 1, f"everyone in {match.name}", "person", None, whole_zone=True)
         group = self._group(0, mention, clause, None, True, (0, self.n), [])
         group = replace(group, who="everyone", text=self.prompt)
         self.notes.append(f"no people are named: everyone in {zone} is evacuated")
