@@ -819,6 +819,11 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         for g in groups:
             g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
     else:
+        # The older clause rules run only here, where no reading or no group of it exists; where the
+        # reader found groups (above) nothing of them second-guesses it.
+        if reading is not None:
+            notes.append("the reader found no group of people in the sentence: the model's groups are kept "
+                         "and placed by word rules")
         groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
                                   allowed_nodes)
         if not groups:

@@ -23,7 +23,7 @@ from grove_tui.world import (
 )
 
 BAD = TEST_DATA / "worlds_bad"
-SHIPPED = ("hospital", "office", "residential", "airport")
+SHIPPED = ("hospital", "office", "residential", "airport", "station")
 
 MINI = """\
 name: mini
