@@ -246,14 +246,23 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         buffer = TokenBuffer(self.post_message)
         current = {"stage": ""}
 
+        writing: set[str] = set()  # stages whose model has streamed a token
+
         def on_event(event: Any) -> None:
             kind = type(event).__name__
             if kind == "TokenStreamed":
+                if event.stage not in writing:
+                    # The model process surely exists once it writes (it restarts lazily after a
+                    # cancel): from now on it gives way to this process, so keys answer while it writes.
+                    writing.add(event.stage)
+                    self.grove.backend.yield_cpu_to_the_app()
                 buffer.add(event.stage, event.text)
             elif kind == "AttemptStarted":
                 buffer.restart(event.stage, int(event.attempt), str(event.reason))
             elif kind == "StageStarted":
                 buffer.flush()
+                if event.stage in MODEL_STAGES:
+                    self.grove.backend.yield_cpu_to_the_app()
                 current["stage"] = event.stage
                 self.post_message(msg.StageStarted(event.stage))
             elif kind == "StageFinished":
