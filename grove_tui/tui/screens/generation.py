@@ -339,7 +339,10 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         self.show_progress()
 
     def on_tokens_flushed(self, message: msg.TokensFlushed) -> None:
-        self.query_one("#stream", Static).update(self._attempt_header + message.text[-STREAM_TAIL_CHARS:])
+        # The panel's size is set by the layout (1fr), never by its text: repaint it alone, without a
+        # layout pass over the whole screen 20 times a second while the model writes.
+        self.query_one("#stream", Static).update(self._attempt_header + message.text[-STREAM_TAIL_CHARS:],
+                                                 layout=False)
         progress = self._progress
         if progress is not None and progress.stage == message.stage and message.tokens:
             if progress.first_token is None:
