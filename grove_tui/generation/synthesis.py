@@ -227,7 +227,7 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
                     raise ModelError(
                         f"the bt model did not finish its answer within {budget} tokens (attempt {attempt}); "
                         "the output was cut off, so it was not used",
-                        hint="Shorten the prompt (fewer groups), or give the model a larger generation budget.") from None
+                        hint="Ask for fewer groups in the prompt, or try another seed.") from None
                 reason = f"cut off at {budget} tokens"
                 budget *= 2
                 continue
