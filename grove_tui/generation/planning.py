@@ -210,12 +210,13 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
     formations = [f for f in formations if not any(f in formations_at(formations, q, clearance) for q in fixed)]
     robot_planner = ThetaStarPlanner(block_formations(grid, formations, clearance)) if formations else None
 
-    def plan_path(a: Point, b: Point) -> np.ndarray:
+    def plan_path(a: Point, b: Point, may_cross: bool = True) -> np.ndarray:
         if robot_planner is not None:
             try:
                 return robot_planner.plan(a, b, start_label="robot start", goal_label="robot goal")
             except PlanningError:
-                pass
+                if not may_cross:
+                    raise
         path = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
         if robot_planner is not None:
             crossed = [f.describe() for f in formations
@@ -249,12 +250,15 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
         pairs.sort(key=lambda t: (-t[0], t[1], t[2]))
         if not pairs:
             raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
-        for _, a, b in pairs[:20]:
-            try:
-                path = plan_path(a, b)
-                return RobotSpec(start=a, goal=b, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
-            except PlanningError:
-                continue
+        # Every pair around the formations first; through one only when no pair can go around.
+        for may_cross in (False, True) if robot_planner is not None else (True,):
+            for _, a, b in pairs[:20]:
+                try:
+                    path = plan_path(a, b, may_cross)
+                    return RobotSpec(start=a, goal=b,
+                                     path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
+                except PlanningError:
+                    continue
         raise GenerationError("no reachable start/goal pair for the robot near the scene")
     try:
         path = plan_path(start, goal)
