@@ -105,3 +105,32 @@ def test_the_predicted_queue_is_where_the_simulated_people_stand(clinic, tmp_pat
     assert len(queued) == 6
     # Bodies stand where the prediction put them, give or take the push of their neighbours.
     assert formation_distance(formations[0], np.asarray(frame.pos)[queued]).max() < 0.25
+
+
+NARROW = """
+name: narrow
+description: A corridor with a ticket counter halfway along its north wall.
+zones:
+  - name: corridor
+    type: corridor
+    description: A long narrow corridor.
+    boundary: [[0, 0], [16, 0], [16, 1.8], [0, 1.8]]
+    entities:
+      - {name: ticket_counter, type: counter, footprint: [[7.5, 1.5], [8.5, 1.5], [8.5, 1.8], [7.5, 1.8]], interaction_point: [8, 1.0]}
+"""
+
+
+def test_with_no_way_around_the_robot_passes_the_queue_and_the_report_says_so(tmp_path):
+    from grove_tui.world import load_world
+
+    (tmp_path / "narrow.yaml").write_text(NARROW, encoding="utf-8")
+    narrow = load_world(tmp_path / "narrow.yaml")
+    grid = build_grid(narrow)
+    queue = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "ticket_counter"}),
+                                       DraftNode("Queue", {"service_point": "ticket_counter"})))
+    preset, post = post_processed(narrow, grid, "queuing", "five people queue at the ticket counter",
+                                  DraftGroup("people", 5, "corridor", queue))
+    op = plan_operational(narrow, grid, preset, post, 0, RobotRequest(start=(0.8, 0.9), goal=(15.2, 0.9)))
+    assert op.robot.path[-1] == (15.2, 0.9), "the robot still gets to its goal"
+    assert op.notes == ["the robot's path passes close to the queue at ticket_counter (5 places): "
+                        "there is no way around"]
