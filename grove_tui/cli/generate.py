@@ -69,9 +69,13 @@ class Progress:
         self._status: Any = None
 
     def __call__(self, event: Any) -> None:
-        from grove_tui.generation.pipeline import StageFinished, StageStarted, TokenStreamed
+        from grove_tui.generation.pipeline import AttemptStarted, StageFinished, StageStarted, TokenStreamed
 
-        if isinstance(event, StageStarted):
+        if isinstance(event, AttemptStarted):
+            self.tokens = 0  # the count is the running attempt's, as the app shows it
+            self.console.print(f"{self.prefix}[yellow]{event.stage}[/] attempt {event.attempt} ({event.reason})",
+                               markup=True, highlight=False)
+        elif isinstance(event, StageStarted):
             self.tokens = 0
             if self.show is not None:
                 self.show(f"{self.prefix}{event.stage}...")

@@ -367,6 +367,13 @@ class GroveSession:
                     self._retriever = NodeRetriever()
             return self._retriever
 
+    def loaded_models(self) -> list[Any]:
+        """The model instances loaded so far (each once), without loading any."""
+        with self._lock:
+            if self._models is None:
+                return []
+            return list({id(m): m for m in (self._models.roi, self._models.bt)}.values())
+
     def close(self) -> None:
         """Stop the model processes (and a background warm-up); the session loads them again if used after."""
         self._stop_warm_up.set()
