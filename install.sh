@@ -4,7 +4,8 @@
 #   ./install.sh test   the same plus what the test suite needs (and the ROS 2 / Foxglove exports and the
 #                       Gymnasium environment it tests)
 #   ./install.sh bench  the same plus the peers the benchmarks compare against (and stable-baselines3, CPU torch)
-#   ./install.sh cluster  the app plus Ray, for `grove batch --ray` (locally or on a Ray cluster)
+#   ./install.sh cluster  the app plus Ray, for `grove batch --ray` (locally or on a Ray cluster), and pyarrow
+#                         for its `--index parquet`
 set -euo pipefail
 cd "$(dirname "$0")"
 # llama-cpp-python compiles from source: a portable CPU build (no -march=native, no multimodal lib).
@@ -15,7 +16,7 @@ case "${1:-}" in
   "") ;;
   test) extras="[plots,test,ros,gym]" ;;
   bench) extras="[plots,test,ros,bench,gym-train]" ;;
-  cluster) extras="[plots,cluster]" ;;
+  cluster) extras="[plots,cluster,parquet]" ;;
   *) echo "usage: ./install.sh [test|bench|cluster]" >&2; exit 2 ;;
 esac
 python -m pip install -c constraints.txt "llama-cpp-python==0.3.36"

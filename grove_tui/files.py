@@ -17,7 +17,7 @@ import shutil
 import stat
 import tempfile
 from collections.abc import Callable, Iterator, Mapping
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import Any
 
 from grove_tui.errors import OutputError
@@ -211,6 +211,38 @@ def atomic_directory(path: str | os.PathLike[str], *, owned: OwnedTest, what: st
     except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
         raise
+
+
+def relative_file(rel: str) -> PurePosixPath:
+    """`rel` as a path inside a folder: relative, no `..`, `.` or empty parts; else an OutputError."""
+    path = PurePosixPath(rel)
+    if (not rel or "\\" in rel or "\x00" in rel or path.is_absolute()
+            or any(part in ("", ".", "..") for part in rel.split("/"))):
+        raise OutputError(f"{rel!r}: not a plain relative file path (no leading '/', no '.' or '..' parts)")
+    return path
+
+
+def write_files_atomic(path: str | os.PathLike[str], files: Mapping[str, bytes], *, owned: OwnedTest,
+                       what: str = "GROVE output", overwrite: bool = False) -> Path:
+    """A folder holding exactly `files` (relative path -> bytes) takes `path`'s place in one rename.
+
+    For a folder written elsewhere and sent here as bytes (a Ray worker without the driver's disk):
+    the same checks and swap as `atomic_directory`, so a reader never sees half of it.
+    """
+    checked = {relative_file(rel): data for rel, data in files.items()}
+    target = absolute_path(path)
+    with atomic_directory(target, owned=owned, what=what, overwrite=overwrite) as stage:
+        for rel, data in sorted(checked.items()):
+            member = stage.joinpath(*rel.parts)
+            try:
+                member.parent.mkdir(parents=True, exist_ok=True)
+                with open(member, "xb") as handle:  # "x": two entries naming one file are refused, not merged
+                    handle.write(data)
+            except (FileExistsError, NotADirectoryError):
+                raise OutputError(f"{target}: {rel} is named twice (as a file and as a folder)") from None
+            except OSError as exc:
+                raise OutputError(f"{target}: cannot write {rel}: {exc.strerror}") from None
+    return target
 
 
 def _swap_in(staging: Path, target: Path) -> None:

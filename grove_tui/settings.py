@@ -34,6 +34,9 @@ from grove_tui.limits import InputLimitError, compose_yaml
 from grove_tui.paths import APP
 
 MAX_CONFIG_BYTES = 1024 * 1024
+# The pedestrian models a user can pick (crowd.sfm.SFMParams.named); here so that front ends list
+# them without compiling the crowd's kernels.
+PEDESTRIAN_MODELS = ("grove", "lightsfm")
 # Set only in the environment: the file names models in its `models:` section, with paths relative to it.
 ENVIRONMENT_ONLY = ("model", "roi_model", "bt_model")
 
@@ -99,6 +102,9 @@ class SimulationSettings(_Section):
     """What agent colours show: their group or their HuNavSim behavior."""
     robot_speed: float = Field(default=0.8, gt=0)
     """Speed (m/s) of the robot when driven with the arrow keys."""
+    pedestrian_model: Literal["grove", "lightsfm"] = "grove"
+    """Pedestrian forces: "grove" (contacts, density slowing, waiting in place; passes RiMEA) or
+    "lightsfm" (HuNavSim's forces exactly, as Gazebo runs them): PEDESTRIAN_MODELS."""
 
 
 class ExportSettings(_Section):

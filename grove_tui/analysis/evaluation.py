@@ -449,7 +449,7 @@ def baseline_variant(method: str, world: Any, scenario: Scenario, trees: Mapping
     if method == "no-planner":
         variant, new_trees = without_planner(scenario, trees)
     elif method == "decoupled":
-        grid = build_grid(world, scenario.resolution)
+        grid = build_grid(world, scenario.resolution, scenario.grid_inflation)
         variant, new_trees = decoupled(scenario, trees, world, grid, ThetaStarPlanner(grid))
     else:
         raise EvalError(f"{method!r} is not a baseline rewrite of GROVE's bundle (no-planner, decoupled)")

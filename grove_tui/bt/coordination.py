@@ -90,9 +90,7 @@ class QueueRegistry:
     def join(self, name: str, service_point: Point, spacing: float, service_time: float, row: int) -> ServiceQueue:
         queue = self.queues.get(name)
         if queue is None:
-            # people do not stand inside each other: a spacing below two radii would only be pushed apart
-            radius = self._sim.crowd.radius
-            spacing = max(spacing, 2.0 * float(radius.max()) + 0.1) if len(radius) else spacing
+            spacing = queue_spacing(spacing, self._sim.crowd.radius)
             direction, free_length = self._line_direction(name, service_point, spacing)
             queue = ServiceQueue(name, service_point, direction, spacing, service_time, free_length, self._sim)
             self.queues[name] = queue
@@ -119,45 +117,57 @@ class QueueRegistry:
         return sum(len(q) for q in self.queues.values())
 
     def _line_direction(self, name: str, service_point: Point, spacing: float) -> tuple[Point, float]:
-        """Heading of the line: the direction with the most free floor, preferring straight away from the
-        served object (a counter's queue extends from its front, not along it)."""
-        sim = self._sim
-        sx, sy = service_point
-        preferred = None
-        if sim.world is not None:
-            try:
-                found: Any = sim.world.find(name)
-            except Exception:
-                found = None
-            footprint = getattr(found, "footprint", None)
-            if footprint:
-                cx = sum(p[0] for p in footprint) / len(footprint)
-                cy = sum(p[1] for p in footprint) / len(footprint)
-                norm = math.hypot(sx - cx, sy - cy)
-                if norm > 1e-6:
-                    preferred = ((sx - cx) / norm, (sy - cy) / norm)
-            normal = getattr(found, "normal", None)
-            if preferred is None and normal is not None:
-                preferred = (float(normal[0]), float(normal[1]))
-        wanted = max(6.0, 12 * spacing)
-        step = 0.1
-        best, best_score, best_length = (1.0, 0.0), -math.inf, 0.0
-        for k in range(_DIRECTIONS):
-            a = 2 * math.pi * k / _DIRECTIONS
-            ux, uy = math.cos(a), math.sin(a)
-            length = 0.0
-            d = step
-            while d <= wanted:
-                if not sim.is_free(sx + ux * d, sy + uy * d):
-                    break
-                length = d
-                d += step
-            score = length
-            if preferred is not None:
-                score += 1.0 * (ux * preferred[0] + uy * preferred[1])
-            if score > best_score + 1e-9:
-                best, best_score, best_length = (ux, uy), score, length
-        return best, best_length
+        return queue_line_direction(self._sim, name, service_point, spacing)
+
+
+def queue_spacing(spacing: float, radii: Any) -> float:
+    """People do not stand inside each other: a spacing below two radii would only be pushed apart."""
+    return max(spacing, 2.0 * float(max(radii)) + 0.1) if len(radii) else spacing
+
+
+def queue_line_direction(space: Any, name: str, service_point: Point, spacing: float) -> tuple[Point, float]:
+    """Heading of the line: the direction with the most free floor, preferring straight away from the
+    served object (a counter's queue extends from its front, not along it).
+
+    `space` has `world` (or None) and `is_free(x, y)`: the running simulation, or the occupancy grid
+    when generation predicts where a queue will stand (the robot's planner keeps out of it).
+    """
+    sx, sy = service_point
+    preferred = None
+    if space.world is not None:
+        try:
+            found: Any = space.world.find(name)
+        except Exception:
+            found = None
+        footprint = getattr(found, "footprint", None)
+        if footprint:
+            cx = sum(p[0] for p in footprint) / len(footprint)
+            cy = sum(p[1] for p in footprint) / len(footprint)
+            norm = math.hypot(sx - cx, sy - cy)
+            if norm > 1e-6:
+                preferred = ((sx - cx) / norm, (sy - cy) / norm)
+        normal = getattr(found, "normal", None)
+        if preferred is None and normal is not None:
+            preferred = (float(normal[0]), float(normal[1]))
+    wanted = max(6.0, 12 * spacing)
+    step = 0.1
+    best, best_score, best_length = (1.0, 0.0), -math.inf, 0.0
+    for k in range(_DIRECTIONS):
+        a = 2 * math.pi * k / _DIRECTIONS
+        ux, uy = math.cos(a), math.sin(a)
+        length = 0.0
+        d = step
+        while d <= wanted:
+            if not space.is_free(sx + ux * d, sy + uy * d):
+                break
+            length = d
+            d += step
+        score = length
+        if preferred is not None:
+            score += 1.0 * (ux * preferred[0] + uy * preferred[1])
+        if score > best_score + 1e-9:
+            best, best_score, best_length = (ux, uy), score, length
+    return best, best_length
 
 
 class Conversation:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import re
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -17,6 +18,7 @@ import click
 from rich.console import Console
 
 from grove_tui.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUNTIME_FAILURE
+from grove_tui.settings import PEDESTRIAN_MODELS
 
 if TYPE_CHECKING:
     from grove_tui.services.session import GroveSession
@@ -57,23 +59,34 @@ def session_for(ctx: click.Context, roi_model: str | None = None, bt_model: str 
 class Progress:
     """Stage lines on stderr; token count while the model writes."""
 
-    def __init__(self, console: Console, prefix: str = "") -> None:
+    def __init__(self, console: Console, prefix: str = "", show: Callable[[str], None] | None = None) -> None:
         self.console = console
         self.prefix = prefix
+        # Under a batch's progress bar the stage and token count go to `show` (the bar's own line), not to
+        # a spinner: rich shows one live display at a time.
+        self.show = show
         self.tokens = 0
         self._status: Any = None
 
     def __call__(self, event: Any) -> None:
-        from grove_tui.generation.pipeline import StageFinished, StageStarted, TokenStreamed
+        from grove_tui.generation.pipeline import AttemptStarted, StageFinished, StageStarted, TokenStreamed
 
-        if isinstance(event, StageStarted):
+        if isinstance(event, AttemptStarted):
+            self.tokens = 0  # the count is the running attempt's, as the app shows it
+            self.console.print(f"{self.prefix}[yellow]{event.stage}[/] attempt {event.attempt} ({event.reason})",
+                               markup=True, highlight=False)
+        elif isinstance(event, StageStarted):
             self.tokens = 0
-            if self.console.is_terminal:
+            if self.show is not None:
+                self.show(f"{self.prefix}{event.stage}...")
+            elif self.console.is_terminal:
                 self._status = self.console.status(f"{self.prefix}{event.stage}...")
                 self._status.start()
         elif isinstance(event, TokenStreamed):
             self.tokens += 1
-            if self._status is not None:
+            if self.show is not None:
+                self.show(f"{self.prefix}{event.stage}: {self.tokens} tokens")
+            elif self._status is not None:
                 self._status.update(f"{self.prefix}{event.stage}: {self.tokens} tokens")
         elif isinstance(event, StageFinished):
             if self._status is not None:
@@ -199,25 +212,35 @@ def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite:
                    "cluster (needs ./install.sh cluster).")
 @click.option("--workers", type=click.IntRange(1, 100_000), default=None,
               help="Ray actors to start (default: one per CPU of the Ray cluster).")
+@click.option("--ray-return", is_flag=True,
+              help="With --ray: workers send each job's files back and this process writes them into --out "
+                   "(for workers without a shared file system; automatic for a worker that cannot see --out).")
+@click.option("--index", "index_format", type=click.Choice(["sqlite", "parquet"]), default="sqlite",
+              show_default=True, help="The dataset index: --out/dataset.sqlite, or dataset.parquet (needs pyarrow).")
 @click.option("--roi-model", type=click.Path(dir_okay=False), default=None)
 @click.option("--bt-model", type=click.Path(dir_okay=False), default=None)
 @click.pass_context
 def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, resume: bool, ray_address: str | None,
-          workers: int | None, roi_model: str | None, bt_model: str | None) -> None:
+          workers: int | None, ray_return: bool, index_format: str, roi_model: str | None, bt_model: str | None) -> None:
     """Generate many scenarios from a JSONL file, loading the models once (per Ray worker with --ray).
 
     Each line: {"world": ..., "preset": ..., "prompt": ..., "seed": 0, "name": "optional-dir-name",
     "simulate": optional seconds, "variations": optional N}. Every line is checked before any job runs:
     bad lines (and lines whose name another line already uses) are reported with their line numbers and
     skipped, the good ones run. A failed job is recorded (batch-state.jsonl: message and exit code) and
-    the batch goes on; --out/dataset.sqlite indexes every scenario. Exit code: 2 when any line was
-    refused, else 3 when any job failed, else 0.
+    the batch goes on; --out/dataset.sqlite (or .parquet) indexes every scenario. A progress bar shows
+    jobs done, scenarios per hour and time left. Exit code: 2 when any line was refused, else 3 when
+    any job failed, else 0.
     """
     from grove_tui.errors import JobFileError
     from grove_tui.services.batch import run_batch
+    from grove_tui.services.dataset import check_index_format
     from grove_tui.services.jobs import read_jobs
 
     err, out = _err(), _out()
+    if ray_return and ray_address is None:
+        raise click.UsageError("--ray-return sends files from Ray workers: use it with --ray")
+    check_index_format(index_format)  # before the job file is read: nothing runs without its index
     session = session_for(ctx, roi_model, bt_model)
     jobs, problems = read_jobs(jobs_file)
     jobs, refused = session.check_jobs(jobs, Path(out_dir), overwrite)
@@ -228,23 +251,22 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
     for problem in problems:
         err.print(f"error: {jobs_file}:{problem.line}: {problem.message}", markup=False, highlight=False)
     progresses: list[Progress] = []
-    bar = _BatchBar(err) if ray_address is not None else None
+    bar = _BatchBar(err)
 
     def events_for(index: int, job: Any) -> Progress:
-        progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] "))
+        # Stage lines print above the bar; a Ray batch's stages run in the workers and print nothing here.
+        progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] ", show=bar.show))
         return progresses[-1]
 
     def started(to_run: list[Any], skipped: list[Any]) -> None:
         if skipped:
             err.print(f"resume: {len(skipped)} completed job(s) skipped, {len(to_run)} to run", markup=False)
-        if bar is not None:
-            bar.start(len(to_run))
+        bar.start(len(to_run))
 
     def report(record: Any) -> None:
         if progresses:
             progresses[-1].stop()
-        if bar is not None:
-            bar.advance()
+        bar.advance()
         bundle = Path(out_dir) / record.name
         if not record.ok:
             out.print(f"failed {bundle} (exit {record.exit_code}) {record.message}", markup=False)
@@ -256,13 +278,13 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
     try:
         with session:
             result = run_batch(session, jobs, Path(out_dir), overwrite=overwrite, resume=resume,
-                               ray_address=ray_address, workers=workers, on_start=started,
-                               events_for=None if bar is not None else events_for, on_record=report)
+                               ray_address=ray_address, workers=workers, ray_return=ray_return,
+                               index_format=index_format, on_start=started,
+                               events_for=None if ray_address is not None else events_for, on_record=report)
     finally:
         if progresses:
             progresses[-1].stop()
-        if bar is not None:
-            bar.stop()
+        bar.stop()
     done = len(result.records) - result.failures + len(result.skipped)
     total = len(jobs) + len(problems)
     err.print(f"{done}/{total} scenarios generated; index: {result.index}")
@@ -270,7 +292,7 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
 
 
 class _BatchBar:
-    """A rich progress bar for a Ray batch: jobs done, scenarios per hour, time left."""
+    """A rich progress bar for a batch: jobs done, scenarios per hour, time left."""
 
     def __init__(self, console: Console) -> None:
         from rich.progress import BarColumn, MofNCompleteColumn, Progress as RichProgress, TextColumn, \
@@ -278,12 +300,18 @@ class _BatchBar:
 
         self._progress = RichProgress(TextColumn("batch"), BarColumn(), MofNCompleteColumn(),
                                       TextColumn("{task.fields[rate]}"), TimeElapsedColumn(), TextColumn("ETA"),
-                                      TimeRemainingColumn(), console=console, transient=False)
+                                      TimeRemainingColumn(), TextColumn("{task.fields[now]}"), console=console,
+                                      transient=False)
         self._task: Any = None
 
     def start(self, total: int) -> None:
-        self._task = self._progress.add_task("batch", total=total, rate="")
+        self._task = self._progress.add_task("batch", total=total, rate="", now="")
         self._progress.start()
+
+    def show(self, text: str) -> None:
+        """What the running job does now (one-process batch: its stage and tokens)."""
+        if self._task is not None:
+            self._progress.update(self._task, now=text)
 
     def advance(self) -> None:
         if self._task is None:
@@ -291,7 +319,8 @@ class _BatchBar:
         self._progress.advance(self._task)
         task = self._progress.tasks[0]
         if task.elapsed:
-            self._progress.update(self._task, rate=f"{task.completed / task.elapsed * 3600:.0f}/h")
+            per_hour = task.completed / task.elapsed * 3600
+            self._progress.update(self._task, rate=f"{per_hour:.0f} scenarios/h", now="")
 
     def stop(self) -> None:
         self._progress.stop()
@@ -310,12 +339,15 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 @click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True, max=24 * 3600.0), default=30.0,
               show_default=True, callback=lambda ctx, param, value: _finite(value, param),
               help="Simulated seconds to run (at most a day).")
+@click.option("--model", type=click.Choice(PEDESTRIAN_MODELS), default=None,
+              help="Pedestrian model: grove (passes RiMEA) or lightsfm (HuNavSim's forces); "
+                   "default the settings' simulation.pedestrian_model.")
 @click.pass_context
-def simulate(ctx: click.Context, bundle: str, seconds: float) -> None:
+def simulate(ctx: click.Context, bundle: str, seconds: float, model: str | None) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
     out = _out()
     with session_for(ctx) as session:
-        sim = session.simulate(Path(bundle), seconds).to_dict()
+        sim = session.simulate(Path(bundle), seconds, model=model).to_dict()
     out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
               f"{Path(bundle) / 'trajectories.csv'}", markup=False)
     for key, value in sim["counters"].items():

@@ -24,6 +24,7 @@ import numba as nb  # noqa: E402
 import numpy as np  # noqa: E402
 
 from grove_tui.navigation.velocity_field import sample_field  # noqa: E402
+from grove_tui.settings import PEDESTRIAN_MODELS  # noqa: E402
 
 MODE_GOALS = 0
 MODE_FIELD = 1
@@ -109,7 +110,7 @@ _FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
 
 # The pedestrian models a user can pick by name (SFMParams.named).
-SFM_MODELS = ("grove", "lightsfm")
+SFM_MODELS = PEDESTRIAN_MODELS
 
 
 @dataclass(frozen=True)
@@ -814,8 +815,12 @@ def _update_agents(k0, k1, dt, params,
                    robot_interaction, robot,
                    walls, wall_owner, wall_meta, wall_start, wall_items,
                    order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
-                   new_pos, new_vel, new_yaw):
-    """Forces and integration for agents order[k0:k1]; each writes only its own row of new_*."""
+                   new_pos, new_vel, new_yaw, rmax, start_gap):
+    """Forces and integration for agents order[k0:k1]; each writes only its own row of new_* and start_gap.
+
+    start_gap[i]: the narrowest gap between i's body and any other at the start of the step (a lower bound
+    when nobody is within the cutoff), so the separation can skip those who cannot touch anyone.
+    """
     n = pos.shape[0]
     cutoff = params[P_CUTOFF]
     cutoff2 = cutoff * cutoff
@@ -920,6 +925,7 @@ def _update_agents(k0, k1, dt, params,
         sfx = 0.0
         sfy = 0.0
         ahead = 0
+        gmin = cutoff - ri - rmax
         c = cell_of[i]
         ccx = c % gnx
         ccy = c // gnx
@@ -943,6 +949,8 @@ def _update_agents(k0, k1, dt, params,
                     if dist < density_radius and ux * ex + uy * ey > 0.0:
                         ahead += 1
                     overlap = ri + srad[kk] - dist
+                    if -overlap < gmin:
+                        gmin = -overlap
                     if overlap > 0.0:
                         fx -= body * overlap * ux
                         fy -= body * overlap * uy
@@ -1121,6 +1129,7 @@ def _update_agents(k0, k1, dt, params,
                                           walls, wall_meta, wall_start, wall_items)
         new_pos[i, 0] = qx
         new_pos[i, 1] = qy
+        start_gap[i] = gmin
         new_vel[i, 0] = nvx
         new_vel[i, 1] = nvy
 
@@ -1208,7 +1217,7 @@ def _prepare_step(dt, params, pos, vel, radius, active, group_start, group_membe
 
 @nb.njit(cache=True, fastmath=_FASTMATH)
 def _separate(k0, k1, params, radius, order, starts, cell_of, gnx, gny, new_pos, out_pos,
-              walls, wall_meta, wall_start, wall_items):
+              walls, wall_meta, wall_start, wall_items, slack, clear_limit):
     """Move agents order[k0:k1] apart by half of each overlap left at their new positions.
 
     At dt 0.05 s two people closing at walking speed meet 13 cm deep before any contact force can
@@ -1216,12 +1225,18 @@ def _separate(k0, k1, params, radius, order, starts, cell_of, gnx, gny, new_pos,
     a wall) keeps bodies within a few centimetres, as JuPedSim's SFM does at dt 0.01 s. Cells are at
     least half the 3 m cutoff wide, so every body in contact sits in the 3 x 3 block around one's cell.
     Returns how many agents it moved: none means later passes would change nothing.
+    An agent whose slack (start gap minus its own step) exceeds clear_limit (everyone else's largest
+    step) cannot touch anyone: it is copied without looking at its neighbours.
     """
     moved = 0
     for k in range(k0, k1):
         i = order[k]
         px = new_pos[i, 0]
         py = new_pos[i, 1]
+        if slack[i] > clear_limit + 1e-9:  # a nanometre spare for rounding
+            out_pos[i, 0] = px
+            out_pos[i, 1] = py
+            continue
         ri = radius[i]
         sx = 0.0
         sy = 0.0
@@ -1265,6 +1280,25 @@ def _separate(k0, k1, params, radius, order, starts, cell_of, gnx, gny, new_pos,
 
 
 @nb.njit(cache=True)
+def _slack_after_moves(n_active, order, pos, new_pos, start_gap, slack):
+    """slack[i] = start_gap[i] minus i's own step; returns the largest step anyone took.
+
+    Two bodies closed in by at most the sum of their steps: one whose slack exceeds every other
+    step (the largest) still does not touch anyone at its new position.
+    """
+    largest = 0.0
+    for k in range(n_active):
+        i = order[k]
+        dx = new_pos[i, 0] - pos[i, 0]
+        dy = new_pos[i, 1] - pos[i, 1]
+        step = math.sqrt(dx * dx + dy * dy)
+        slack[i] = start_gap[i] - step
+        if step > largest:
+            largest = step
+    return largest
+
+
+@nb.njit(cache=True)
 def _commit_rows(k0, k1, order, pos, vel, yaw, new_pos, new_vel, new_yaw):
     for k in range(k0, k1):
         i = order[k]
@@ -1301,6 +1335,9 @@ def advance_serial(n_steps, dt, params,
     separated = np.empty_like(pos)
     new_vel = np.empty_like(vel)
     new_yaw = np.empty_like(yaw)
+    start_gap = np.empty_like(yaw)
+    slack = np.empty_like(yaw)
+    rmax = radius.max() if radius.shape[0] else 0.0
     group_cx = np.zeros(max(n_groups, 1))
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
@@ -1318,17 +1355,20 @@ def advance_serial(n_steps, dt, params,
                        robot_interaction, robot,
                        walls, wall_owner, wall_meta, wall_start, wall_items,
                        order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
-                       new_pos, new_vel, new_yaw)
+                       new_pos, new_vel, new_yaw, rmax, start_gap)
         if params[P_BODY] > 0.0:
+            # the first pass skips whoever cannot touch anyone; later ones look at everyone
+            clear_limit = _slack_after_moves(n_active, order, pos, new_pos, start_gap, slack)
             # passes in pairs, there and back, so the result is in new_pos (no buffer swapping:
             # numba's parallel lowering must see the same arrays in every prange)
             for _pair in range(SEPARATION_PASSES // 2):
                 # a pass that moved nobody copied its input: new_pos already holds the result
                 if _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, new_pos, separated,
-                             walls, wall_meta, wall_start, wall_items) == 0:
+                             walls, wall_meta, wall_start, wall_items, slack, clear_limit) == 0:
                     break
+                clear_limit = math.inf
                 if _separate(0, n_active, params, radius, order, starts, cell_of, gnx, gny, separated, new_pos,
-                             walls, wall_meta, wall_start, wall_items) == 0:
+                             walls, wall_meta, wall_start, wall_items, slack, clear_limit) == 0:
                     break
         _commit_rows(0, n_active, order, pos, vel, yaw, new_pos, new_vel, new_yaw)
 
@@ -1352,6 +1392,9 @@ def advance_parallel(n_steps, dt, params,
     separated = np.empty_like(pos)
     new_vel = np.empty_like(vel)
     new_yaw = np.empty_like(yaw)
+    start_gap = np.empty_like(yaw)
+    slack = np.empty_like(yaw)
+    rmax = radius.max() if radius.shape[0] else 0.0
     group_cx = np.zeros(max(n_groups, 1))
     group_cy = np.zeros(max(n_groups, 1))
     group_n = np.zeros(max(n_groups, 1), dtype=np.int64)
@@ -1371,19 +1414,23 @@ def advance_parallel(n_steps, dt, params,
                            robot_interaction, robot,
                            walls, wall_owner, wall_meta, wall_start, wall_items,
                            order, starts, cell_of, gnx, gny, span, spx, spy, svx, svy, srad,
-                           new_pos, new_vel, new_yaw)
+                           new_pos, new_vel, new_yaw, rmax, start_gap)
         if params[P_BODY] > 0.0:
+            clear_limit = _slack_after_moves(n_active, order, pos, new_pos, start_gap, slack)
             for _pair in range(SEPARATION_PASSES // 2):
                 moved = 0
                 for b in nb.prange(n_blocks):
                     moved += _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts,
-                                       cell_of, gnx, gny, new_pos, separated, walls, wall_meta, wall_start, wall_items)
+                                       cell_of, gnx, gny, new_pos, separated, walls, wall_meta, wall_start, wall_items,
+                                       slack, clear_limit)
                 if moved == 0:
                     break
+                clear_limit = math.inf
                 moved = 0
                 for b in nb.prange(n_blocks):
                     moved += _separate(b * _BLOCK, min((b + 1) * _BLOCK, n_active), params, radius, order, starts,
-                                       cell_of, gnx, gny, separated, new_pos, walls, wall_meta, wall_start, wall_items)
+                                       cell_of, gnx, gny, separated, new_pos, walls, wall_meta, wall_start, wall_items,
+                                       slack, clear_limit)
                 if moved == 0:
                     break
         # A serial copy costs less than another thread barrier.

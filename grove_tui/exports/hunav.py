@@ -630,7 +630,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         from grove_tui.navigation.theta_star import ThetaStarPlanner
 
         grid_path = bundle / "grid.npz"
-        grid = load_grid(bundle) if os.path.lexists(grid_path) else build_grid(world, scenario.resolution)
+        grid = load_grid(bundle) if os.path.lexists(grid_path) else build_grid(world, scenario.resolution, scenario.grid_inflation)
         planner = ThetaStarPlanner(grid)
 
     from grove_tui.simulation.simulation import HUNAV_LOOPING_NODES, REACTION_DEFAULTS

@@ -142,7 +142,7 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
     scenario = Scenario(world=world_ref, preset="normal", prompt=f"imported from HuNavSim {source.name}", seed=0,
                         models={}, agents=tuple(sorted(agents, key=lambda a: a.id)), robot=None,
                         global_goals=global_goals)
-    grid = build_grid(world_obj, scenario.resolution)
+    grid = build_grid(world_obj, scenario.resolution, scenario.grid_inflation)
     report = {"stages": {}, "notes": [f"imported from {source} (HuNavSim map {map_name!r}, {len(agents)} agents)"]}
     files = dict(trees)
     if world_text is not None:

@@ -43,8 +43,8 @@ from grove_tui.errors import Cancelled
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
 MAX_PROMPT_CHARS = 2000
 
-__all__ = ["Cancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs", "STAGES",
-           "StageFinished", "StageStarted", "TokenStreamed"]
+__all__ = ["AttemptStarted", "Cancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs",
+           "STAGES", "StageFinished", "StageStarted", "TokenStreamed"]
 
 
 @dataclass(frozen=True)
@@ -67,7 +67,16 @@ class TokenStreamed:
     text: str
 
 
-Event = StageStarted | StageFinished | TokenStreamed
+@dataclass(frozen=True)
+class AttemptStarted:
+    """The model is asked again within a stage: the tokens streamed so far belong to a discarded attempt."""
+
+    stage: str
+    attempt: int  # 2 for the first retry
+    reason: str  # why the previous attempt was discarded ("cut off at 512 tokens", "invalid draft: ...")
+
+
+Event = StageStarted | StageFinished | TokenStreamed | AttemptStarted
 
 
 @dataclass(frozen=True)
@@ -244,8 +253,9 @@ class GenerationPipeline:
 
         t0 = clock.begin("synthesis")
         on_token = (lambda text: emit(TokenStreamed("synthesis", text))) if on_event else None
+        on_attempt = (lambda attempt, reason: emit(AttemptStarted("synthesis", attempt, reason))) if on_event else None
         synthesis = synthesize(self.llm_bt, request, preset, seed, on_token=on_token, cancel=cancel,
-                               max_tokens=self.max_tokens)
+                               max_tokens=self.max_tokens, on_attempt=on_attempt)
         clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
                   synthesis.prompt_tokens, synthesis.completion_tokens)
 

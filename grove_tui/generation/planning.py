@@ -24,6 +24,13 @@ from grove_tui.bt.ports import parse_point_list
 from grove_tui.bt.xml import write_tree
 from grove_tui.errors import Cancelled
 from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
+from grove_tui.generation.formations import (
+    PASSING_MARGIN,
+    block_formations,
+    formations_at,
+    nearest_formation_gap,
+    predict_formations,
+)
 from grove_tui.generation.postprocess import FreeSpace, PostProcessed
 from grove_tui.generation.presets import GenerationError, Preset
 from grove_tui.scenario.model import AgentSpec, RobotSpec
@@ -134,7 +141,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
         trees[rel] = write_tree(document)
         agents.append(AgentSpec(
             id=a.id, group=a.sfm_group, start=a.start, goals=tuple((round(x, 3), round(y, 3)) for x, y in goals),
-            zone=a.zone, tree=rel, radius=0.35, max_vel=a.max_vel, label=a.label,
+            zone=a.zone, tree=rel, radius=preset.agent_radius, max_vel=a.max_vel, label=a.label,
             behavior=a.behavior))
     robot_spec = None
     if robot is None or robot.enabled:
@@ -188,15 +195,45 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
     Candidates are free points of the zones people start in or head for and of the zones next to
     them, at least ROBOT_CLEARANCE from every spawn. The pair chosen maximises its straight-line
     length minus three times its distance from the crowd's centre, so the robot has to pass the crowd.
+    Queues and conversation circles the trees will form are obstacles for the robot's planner
+    (`formations.py`): it passes them with PASSING_MARGIN to spare, or through them only when there
+    is no other way (a note says so).
     """
     starts = [a.start for a in post.agents]
+    robot_radius = RobotSpec((0.0, 0.0), (0.0, 0.0)).radius
+    clearance = robot_radius + PASSING_MARGIN
+    formations = predict_formations(world, grid, [a.document for a in post.agents if a.document is not None],
+                                    post.goals)
+    fixed = [_resolve_point(world, grid, p, what) for p, what in ((request.start, "start"), (request.goal, "goal"))
+             if p is not None]
+    # A start or goal the user put inside a formation (the robot delivers to the counter): that one is not an obstacle.
+    formations = [f for f in formations if not any(f in formations_at(formations, q, clearance) for q in fixed)]
+    robot_planner = ThetaStarPlanner(block_formations(grid, formations, clearance)) if formations else None
+
+    def plan_path(a: Point, b: Point, may_cross: bool = True) -> np.ndarray:
+        if robot_planner is not None:
+            try:
+                return robot_planner.plan(a, b, start_label="robot start", goal_label="robot goal")
+            except PlanningError:
+                if not may_cross:
+                    raise
+        path = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
+        if robot_planner is not None:
+            crossed = [f.describe() for f in formations
+                       if nearest_formation_gap([f], [tuple(p) for p in path]) < clearance]
+            if crossed:
+                notes.append(f"the robot's path passes close to {', '.join(crossed)}: there is no way around")
+        return path
+
     if request.start is not None and request.goal is not None:
-        start = _resolve_point(world, grid, request.start, "start")
-        goal = _resolve_point(world, grid, request.goal, "goal")
+        start, goal = fixed
     else:
-        fixed_start = _resolve_point(world, grid, request.start, "start") if request.start is not None else None
-        fixed_goal = _resolve_point(world, grid, request.goal, "goal") if request.goal is not None else None
+        fixed_start = fixed[0] if request.start is not None else None
+        fixed_goal = fixed[-1] if request.goal is not None else None
         candidates = _robot_candidates(world, grid, post, starts, seed)
+        if robot_planner is not None:
+            # Not inside a queue or circle, unless nothing else is left.
+            candidates = [c for c in candidates if robot_planner.grid.is_free(*c)] or candidates
         centre = (sum(p[0] for p in starts) / len(starts), sum(p[1] for p in starts) / len(starts))
         pairs = []
         firsts = [fixed_start] if fixed_start else candidates
@@ -213,15 +250,18 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
         pairs.sort(key=lambda t: (-t[0], t[1], t[2]))
         if not pairs:
             raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
-        for _, a, b in pairs[:20]:
-            try:
-                path = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
-                return RobotSpec(start=a, goal=b, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
-            except PlanningError:
-                continue
+        # Every pair around the formations first; through one only when no pair can go around.
+        for may_cross in (False, True) if robot_planner is not None else (True,):
+            for _, a, b in pairs[:20]:
+                try:
+                    path = plan_path(a, b, may_cross)
+                    return RobotSpec(start=a, goal=b,
+                                     path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
+                except PlanningError:
+                    continue
         raise GenerationError("no reachable start/goal pair for the robot near the scene")
     try:
-        path = planner.plan(start, goal, start_label="robot start", goal_label="robot goal")
+        path = plan_path(start, goal)
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
     return RobotSpec(start=start, goal=goal, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))

@@ -29,12 +29,13 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
 from grove_tui.language.reading import PromptReading
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
-from grove_tui.navigation.velocity_field import nearest_exits
+from grove_tui.navigation.velocity_field import least_congested_exits, nearest_exits
 
 Point = tuple[float, float]
 
-AGENT_RADIUS = 0.35
-SPAWN_SPACING = 2 * AGENT_RADIUS  # centres at least two radii apart: nobody starts overlapping
+# Centres at least this far apart at the start: wider than any default body (0.5 m), so nobody starts
+# overlapping, and people start with room to move.
+SPAWN_SPACING = 0.7
 GOAL_SPACING = 0.8  # distinct goal points in one zone, so arrivals do not pile onto one spot
 QUEUE_SPACING = 0.6  # the Queue node's default slot spacing
 # Highest density we accept for a zone's free floor: standing crowds reach 2-3 people/m^2, but a
@@ -826,6 +827,11 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         for g in groups:
             g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
     else:
+        # The older clause rules run only here, where no reading or no group of it exists; where the
+        # reader found groups (above) nothing of them second-guesses it.
+        if reading is not None:
+            notes.append("the reader found no group of people in the sentence: the model's groups are kept "
+                         "and placed by word rules")
         groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
                                   allowed_nodes)
         if not groups:
@@ -885,7 +891,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
             first += size
 
     if len(exit_names) > 1:
-        _assign_nearest_exits(world, grid, groups, agents, exit_names, notes)
+        _assign_exits(world, grid, groups, agents, exit_names, notes, preset.exit_choice)
 
     writer = TreeWriter(resolver)
     by_index = {g.index: g for g in groups}
@@ -999,7 +1005,7 @@ def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -
 def _evacuation_exits(world: Any, selection: Any, notes: list[str]) -> list[str]:
     """The exits evacuees may use: those the prompt names, else every exit of the world.
 
-    Each person then leaves through the nearest of them (_assign_nearest_exits): "the nearest exit"
+    Each person then leaves through the nearest of them (_assign_exits): "the nearest exit"
     is each person's own, not one exit shared by the whole crowd (issue 19).
     """
     exits = {d.name: d for d in world.exits()}
@@ -1013,15 +1019,22 @@ def _evacuation_exits(world: Any, selection: Any, notes: list[str]) -> list[str]
     return sorted(exits)
 
 
-def _assign_nearest_exits(world: Any, grid: Any, groups: Sequence[GroupPlan], agents: Sequence[AgentPlan],
-                          exit_names: Sequence[str], notes: list[str]) -> None:
-    """Each evacuee's exit is the nearest by walking distance; a group split over exits gets one field per exit."""
+def _assign_exits(world: Any, grid: Any, groups: Sequence[GroupPlan], agents: Sequence[AgentPlan],
+                  exit_names: Sequence[str], notes: list[str], how: str = "nearest") -> None:
+    """Each evacuee's exit: the nearest by walking distance, or with `how` "least_congested" the one it
+    expects to be out of soonest (preset exit_choice); a group split over exits gets one field per exit."""
     evacuees = [a for a in agents if a.field_id is not None]
     if not evacuees:
         return
-    doors = {name: world.find(name).position for name in exit_names}
+    doors = {name: world.find(name) for name in exit_names}
+    starts = [a.start for a in evacuees]
     try:
-        choice = nearest_exits(ThetaStarPlanner(grid, landmarks=0), doors, [a.start for a in evacuees])
+        planner = ThetaStarPlanner(grid, landmarks=0)
+        if how == "least_congested":
+            choice = least_congested_exits(planner, {n: (d.position, d.width) for n, d in doors.items()}, starts,
+                                           [a.max_vel for a in evacuees])
+        else:
+            choice = nearest_exits(planner, {n: d.position for n, d in doors.items()}, starts)
     except PlanningError as exc:
         raise GenerationError(f"an evacuee cannot reach any exit: {exc}") from None
     # A social party (family, friends) leaves together: through its first member's nearest exit.

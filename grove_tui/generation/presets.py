@@ -17,10 +17,14 @@ import yaml
 from grove_tui.errors import GenerationError, PresetError, PromptError
 from grove_tui.limits import MAX_GROUP_COUNT
 from grove_tui.paths import presets_dir
+from grove_tui.scenario.model import DEFAULT_AGENT_RADIUS, RADIUS_RANGE
 from grove_tui.settings import config_dir
 
 
 GOAL_SAMPLING = ("spread", "sequential", "exit")
+# How each evacuee picks among the exits it may use: the nearest by walking distance, or the one it
+# expects to be out of soonest, counting the people already heading there (RiMEA test 11).
+EXIT_CHOICE = ("nearest", "least_congested")
 VELOCITY = ("waypoints", "field")
 CONTEXT = ("rois", "world")
 REQUIRED_ROIS = ("exits",)
@@ -30,7 +34,9 @@ REQUIRED_ROIS = ("exits",)
 class PlannerSettings:
     enabled: bool = True
     resolution: float = 0.1
-    inflation: float = 0.35
+    # The grid is shrunk by this much round walls so a centre on a free cell keeps the body off them:
+    # the people's radius unless a preset sets planner.inflation.
+    inflation: float = DEFAULT_AGENT_RADIUS
 
 
 @dataclass(frozen=True)
@@ -60,6 +66,8 @@ class Preset:
     required_rois: tuple[str, ...]
     max_vel: float
     source: Path | None = None
+    agent_radius: float = DEFAULT_AGENT_RADIUS  # every generated person's body radius (agent.radius)
+    exit_choice: str = "nearest"  # EXIT_CHOICE: how evacuees pick among the exits they may use
 
     @property
     def guided(self) -> bool:
@@ -164,6 +172,12 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
     enabled = planner.get("enabled", True)
     if not isinstance(enabled, bool):
         raise PresetError(f"{where}: planner.enabled must be true or false")
+    agent_radius = positive(agent, "radius", "agent.radius", DEFAULT_AGENT_RADIUS, float)
+    if not RADIUS_RANGE[0] <= agent_radius <= RADIUS_RANGE[1]:
+        raise PresetError(f"{where}: agent.radius must be {RADIUS_RANGE[0]}..{RADIUS_RANGE[1]} m, got {agent_radius!r}")
+    exit_choice = data.get("exit_choice", "nearest")
+    if exit_choice not in EXIT_CHOICE:
+        raise PresetError(f"{where}: exit_choice must be one of {', '.join(EXIT_CHOICE)}, got {exit_choice!r}")
     control = names(nodes, "control", "nodes.control")
     if not control:
         raise PresetError(f"{where}: nodes.control must name at least one control node")
@@ -183,7 +197,7 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         planner=PlannerSettings(
             enabled=enabled,
             resolution=positive(planner, "resolution", "planner.resolution", 0.1, float),
-            inflation=positive(planner, "inflation", "planner.inflation", 0.35, float),
+            inflation=positive(planner, "inflation", "planner.inflation", agent_radius, float),
         ),
         limits=Limits(
             max_groups=positive(limits, "max_groups", "limits.max_groups", 6),
@@ -195,6 +209,8 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         required_rois=required,
         max_vel=positive(agent, "max_vel", "agent.max_vel", 1.0, float),
         source=source,
+        agent_radius=agent_radius,
+        exit_choice=exit_choice,
     )
 
 

@@ -375,6 +375,12 @@ def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequ
     out: list[GroupGrounding] = []
     unhonoured: list[str] = [f"'{p}' is not a place of world '{world.name}'" for p in reading.unknown_places]
     unhonoured += list(reading.notes)
+    if not reading.groups and groups:
+        # The older word rules placed the model's groups: say that nothing here was read from the
+        # sentence rather than let the report look clean.
+        guessed = ", ".join(f"{g.label} x{g.count}" for g in groups)
+        unhonoured.append(f"no group of people was read from the sentence: the scenario's groups ({guessed}) are "
+                          f"the model's guess, placed by word rules")
     for index, r in enumerate(reading.groups):
         g = by_reading.get(index)
         if g is None:

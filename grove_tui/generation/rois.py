@@ -1,8 +1,9 @@
 """Strategic layer: which Regions of Interest of the world the prompt is about.
 
-Semantic tokens of the prompt are matched against the world's RoI index (zone, door and entity
-names split on underscores, types, tags, aliases) with IDF-weighted lexical scoring, a small table
-of place synonyms and, when given, an embedding similarity. Each prompt word selects the RoIs that
+Semantic tokens of the prompt are matched against the world's one place index (language/places.py:
+zone, door and entity names split on underscores, types, tags, aliases, with the reader's
+lemmatiser) with IDF-weighted lexical scoring, a small table of place synonyms and, when given, an
+embedding similarity. Each prompt word selects the RoIs that
 match it best, so "pharmacy counter" picks the counter (and through it the pharmacy) rather than
 every counter. Zones nobody mentions are dropped from the bt model's context; a place the prompt
 names that the world does not have is an error listing the closest real names.
@@ -20,8 +21,10 @@ from typing import Any
 
 from grove_tui.generation.presets import Preset, PromptError
 from grove_tui.language import lexicon as lx
-from grove_tui.language.quantities import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS, lemma, words
+from grove_tui.language.lexicon import NUMBER_WORDS, PERSON_NOUNS, STOPWORDS
+from grove_tui.language.places import PlaceEntry, place_index
 from grove_tui.language.reading import PromptReading, read_prompt
+from grove_tui.language.tokens import lemma, name_tokens, words
 
 # The word tables (place synonyms, determiners, place modifiers, door and behavior words, locatives)
 # are the one lexicon's: language/lexicon.py.
@@ -79,46 +82,34 @@ def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:
 
 
 def _name_tokens(text: str) -> list[str]:
-    text = re.sub(r"'s\b", "", text.replace("_", " "))
-    return [lemma(w) for w in words(text) if w not in STOPWORDS]
+    """A name's words as the prompt side sees them: the place index's lemmas, stopwords out (the
+    prompt's words are stripped of them too, so "ward a" meets the prompt as "ward")."""
+    return [t for t in name_tokens(text) if t not in STOPWORDS]
+
+
+def _entry(place: PlaceEntry, obj: Any) -> _Entry:
+    """The strategic layer's view of one entry of the place index (language/places.py)."""
+    phrases = tuple(p for p in (tuple(t for t in phrase if t not in STOPWORDS) for phrase in place.phrases) if p)
+    return _Entry(place.kind, place.name, place.zone, frozenset(place.tokens - STOPWORDS),
+                  frozenset(place.tag_tokens - STOPWORDS), phrases, obj)
 
 
 class RoIMatcher:
-    """Index of a world's RoIs for prompt matching; build once per world."""
+    """The world's places, from the one place index, matched against a whole prompt; build once per world."""
 
     def __init__(self, world: Any, embed: Callable[[list[str]], Any] | None = None) -> None:
         self.world = world
         self._embed = embed
-        self.entries: list[_Entry] = []
+        self.index = place_index(world)
+        objects: dict[str, Any] = {}
         for zone in world.zones:
-            self.entries.append(self._entry("zone", zone.name, zone.name, zone, zone.type, zone.tags, zone.aliases))
-            for door in zone.doors:
-                self.entries.append(self._entry("door", door.name, zone.name, door, "exit door" if door.exit else "door",
-                                                getattr(door, "tags", ()), getattr(door, "aliases", ())))
-            for entity in zone.entities:
-                self.entries.append(self._entry("entity", entity.name, zone.name, entity, entity.type, entity.tags,
-                                                getattr(entity, "aliases", ())))
-        df: dict[str, int] = {}
-        for e in self.entries:
-            for t in e.tokens | e.tag_tokens:
-                df[t] = df.get(t, 0) + 1
-        n = len(self.entries)
-        self.idf = {t: math.log(1.0 + n / c) for t, c in df.items()}
-        self.vocabulary = frozenset(df)
+            objects[zone.name] = zone
+            objects.update((door.name, door) for door in zone.doors)
+            objects.update((entity.name, entity) for entity in zone.entities)
+        self.entries: list[_Entry] = [_entry(place, objects[place.name]) for place in self.index.entries]
+        self.idf = self.index.idf
+        self.vocabulary = frozenset(t for t in self.index.vocabulary if t not in STOPWORDS)
         self._embeddings: Any = None  # (entries, dim) float32, computed at the first query
-
-    @staticmethod
-    def _entry(kind: str, name: str, zone: str, obj: Any, type_: str, tags: Sequence[str], aliases: Sequence[str]) -> _Entry:
-        tokens: set[str] = set(_name_tokens(name)) | set(_name_tokens(type_ or ""))
-        phrases = [tuple(_name_tokens(name))]
-        for alias in aliases or ():
-            alias_tokens = _name_tokens(alias)
-            tokens |= set(alias_tokens)
-            phrases.append(tuple(alias_tokens))
-        tag_tokens: set[str] = set()
-        for tag in tags or ():
-            tag_tokens |= set(_name_tokens(tag))
-        return _Entry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens), tuple(p for p in phrases if p), obj)
 
     # ---- scoring ------------------------------------------------------------------------------
 
@@ -294,9 +285,7 @@ class RoIMatcher:
         return list(read_prompt(prompt, self.world).unknown_places)
 
     def _known(self, token: str) -> bool:
-        if token in self.vocabulary:
-            return True
-        return any(token in group and any(t in group for t in self.vocabulary) for group in SYNONYMS)
+        return self.index.knows(token)
 
     def close_matches(self, phrase: str, n: int = 5) -> list[str]:
         names = [e.name for e in self.entries]

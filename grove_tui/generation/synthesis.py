@@ -11,6 +11,7 @@ is retried with the next seed.
 from __future__ import annotations
 
 import threading
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -161,19 +162,76 @@ def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], pr
     return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents)
 
 
+# Cut-off answers: LocalLLM.generate(length_retries=0) raises ModelError with this phrase when the
+# answer filled its token budget (tests/llm/test_llm.py holds the llm to it). Synthesis retries a
+# cut-off itself, once per attempt with twice the budget and the next seed (what LocalLLM's own
+# length retry did), so every model call is an attempt the caller is told about.
+CUT_OFF_PHRASE = "did not finish its answer"
+CUT_OFF_RETRIES = 1
+
+
+def is_cut_off(exc: BaseException) -> bool:
+    """Whether a model error is an answer that ran out of tokens (worth a retry with a larger budget)."""
+    from grove_tui.errors import ContextTooSmallError, ModelError
+
+    return isinstance(exc, ModelError) and not isinstance(exc, ContextTooSmallError) and CUT_OFF_PHRASE in str(exc)
+
+
 def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
                on_token: Callable[[str], None] | None = None, cancel: threading.Event | None = None,
-               max_tokens: int = 512) -> SynthesisResult:
-    """Generate and parse the draft; retry with the next seed when the answer does not validate."""
+               max_tokens: int = 512, on_attempt: Callable[[int, str], None] | None = None) -> SynthesisResult:
+    """Generate and parse the draft; retry with the next seed when the answer does not validate.
+
+    Every model call is one attempt: an answer cut off at its token budget is asked again with twice
+    the budget, an answer that fails the draft check with the next seed. Before every attempt after
+    the first, `on_attempt(attempt, reason)` says why, so a stream of tokens can start afresh there.
+    """
+    from grove_tui.errors import ModelError
     from grove_tui.llm.grammar import schema_to_gbnf
 
     grammar = schema_to_gbnf(request.schema)
     errors: list[str] = []
     prompt_tokens = completion_tokens = 0
     seconds = 0.0
-    for attempt in range(1, MAX_ATTEMPTS + 1):
-        generation = llm.generate(request.messages, grammar=grammar, max_tokens=max_tokens,
-                                  seed=int(seed) * 7919 + attempt - 1, on_token=on_token, cancel=cancel)
+    attempt = 0
+    streamed = [0]  # tokens of the running call: what a cut-off call spent (it returns no Generation)
+
+    def relay(text: str) -> None:
+        streamed[0] += 1
+        if on_token is not None:
+            on_token(text)
+
+    def begin(reason: str) -> None:
+        nonlocal attempt
+        attempt += 1
+        streamed[0] = 0
+        if attempt > 1 and on_attempt is not None:
+            on_attempt(attempt, reason)
+
+    reason = ""
+    for draft_try in range(1, MAX_ATTEMPTS + 1):
+        draft_seed = int(seed) * 7919 + draft_try - 1
+        budget = max_tokens
+        for cut_try in range(CUT_OFF_RETRIES + 1):
+            begin(reason)
+            started = time.monotonic()
+            try:
+                generation = llm.generate(request.messages, grammar=grammar, max_tokens=budget,
+                                          seed=draft_seed + cut_try, on_token=relay, cancel=cancel, length_retries=0)
+            except ModelError as exc:
+                if not is_cut_off(exc):
+                    raise
+                completion_tokens += streamed[0]
+                seconds += time.monotonic() - started
+                if cut_try == CUT_OFF_RETRIES:
+                    raise ModelError(
+                        f"the bt model did not finish its answer within {budget} tokens (attempt {attempt}); "
+                        "the output was cut off, so it was not used",
+                        hint="Ask for fewer groups in the prompt, or try another seed.") from None
+                reason = f"cut off at {budget} tokens"
+                budget *= 2
+                continue
+            break
         prompt_tokens = generation.prompt_tokens
         completion_tokens += generation.completion_tokens
         seconds += generation.seconds
@@ -183,10 +241,11 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
         except DraftError as exc:
             errors.append(f"attempt {attempt}: {exc}")
+            reason = f"invalid draft: {exc}"
             continue
         return SynthesisResult(draft, generation.text, prompt_tokens, completion_tokens, attempt, seconds, request, errors,
                                generation.first_token_seconds)
-    raise GenerationError(f"the bt model wrote no valid draft in {MAX_ATTEMPTS} attempts: " + "; ".join(errors))
+    raise GenerationError(f"the bt model wrote no valid draft in {attempt} attempts: " + "; ".join(errors))
 
 
 def _schema_limit(schema: dict[str, Any], key: str, limit: str, default: int) -> int:

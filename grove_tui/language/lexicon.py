@@ -51,12 +51,14 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
     "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
-    "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6),
+    "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
 QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
-                                  "trio", "duo", "class", "tour", "delegation"})
+                                  "trio", "duo", "class", "tour", "delegation", "twin"})
+# Collectives whose members stand in line: "a queue of eight people forms at the desk" is a queue.
+QUEUE_COLLECTIVES = frozenset({"queue", "line"})
 
 WHOLE_ZONE_WORDS = frozenset({"everyone", "everybody", "all"})
 WHOLE_ZONE_DENSITY = (0.3, 0.5)  # person/m^2 of the zone's floor: a busy room, still able to move
@@ -86,7 +88,11 @@ PERSON_NOUNS = frozenset(
     homeowner host hostess child everyone everybody someone somebody anyone anybody nobody gang trio duo
     delegation tour class kids youngster adolescent elder pensioner retiree grandson granddaughter grandchild
     nephew niece baby nanny babysitter mum mom dad papa mama husband wife fiance bride groom
-    cashier clerk vendor shopkeeper salesperson pharmacist surgeon midwife janitor custodian""".split()
+    cashier clerk vendor shopkeeper salesperson pharmacist surgeon midwife janitor custodian
+    grandad granddad gran granny nan nana grandpa ceo cto cfo boss backpacker hiker businessman businesswoman
+    businessperson twin toddler schoolchild schoolboy schoolgirl inspector conductor driver mechanic builder
+    lecturer researcher scientist relative carer holidaymaker
+    traveler sightseer photographer journalist reporter""".split()
 )
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
@@ -97,8 +103,9 @@ GENERIC_PEOPLE = frozenset({"person", "people", "individual", "pedestrian", "som
 # ---- clause structure -----------------------------------------------------------------------
 
 # Words after which a new group of people may be introduced ("..., while a few others stroll").
+# Not "until", "unless" or "if": "... until someone collects them" names nobody who is there.
 CLAUSE_STARTERS = frozenset("and while whilst whereas but as meanwhile then when also plus so after before once "
-                            "until except with".split())
+                            "except with".split())
 # Imperative verbs that introduce the people of a scenario ("Simulate ten patients ...").
 SCENE_VERBS = frozenset("simulate show create generate spawn add have make let put place model imagine picture "
                         "depict want need include populate start".split())
@@ -115,11 +122,12 @@ for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
-    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift",
+    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
-            "hurry rush run jog dash sprint race march step make get reach transfer walk pace shuffle stride stroll",
+            "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
+            "file troop toddle deliver drop bring fetch collect slip sneak nip pop",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -131,15 +139,21 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
     ("hang", "out"): "converse", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
     ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
+    ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",
+    ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
+    ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
+    ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
 }
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour".split())
-ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end".split())
+ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end deliver drop bring".split())
+# "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.
+TRANSACTION_VERBS = frozenset("buy purchase get collect pick fetch order borrow take grab withdraw".split())
 DEPARTURE_VERBS = frozenset("leave exit evacuate flee escape vacate depart".split())
 # "head for the exit": `for` marks a destination only after these; otherwise it is a purpose.
-FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race".split())
+FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race beeline".split())
 STATIONARY_INTENTS = frozenset({"queue", "wait", "converse", "wander"})
 # Verbs whose object is a place people do not go to ("skip the ICU", "bypass the lobby").
 NEGATING_VERBS = frozenset("skip bypass ignore miss shun".split())
@@ -169,7 +183,16 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("stand", "in", "front", "of"): "block", ("get", "in", "the", "way"): "block", ("stand", "in", "the", "way"): "block",
     ("step", "in", "front", "of"): "block", ("walk", "behind"): "follow", ("look", "at"): "look",
     ("tag", "along"): "follow", ("turn", "to", "look"): "look", ("stop", "and", "stare"): "look",
+    ("keep", "clear"): "avoid", ("stay", "clear"): "avoid", ("give", "a", "wide", "berth"): "avoid",
+    ("at", "the", "sight", "of"): "look", ("take", "a", "photo"): "look", ("take", "photo"): "look",
+    ("take", "picture"): "look", ("take", "a", "picture"): "look", ("take", "a", "selfie"): "look",
 }
+# Words that may stand inside a robot phrase without changing it ("keep well clear", "steer
+# completely clear", "stand right in front of").
+ROBOT_PHRASE_FILLERS = frozenset("well very far right completely quite just deliberately carefully".split())
+# Nouns in the robot's clause that name the interaction when no verb does ("a wide berth", "photos of it").
+ROBOT_NOUNS: dict[str, str] = {"berth": "avoid", "photo": "look", "picture": "look", "selfie": "look",
+                               "video": "look", "glimpse": "look", "sight": "look"}
 # Any verb of motion toward or away from the robot: "run up to the robot", "step away from it".
 for _verb in "walk go come run rush hurry move step head wander stroll dash race jog".split():
     for _tail in (("up", "to"), ("over", "to"), ("towards",), ("toward",), ("closer", "to"), ("right", "up", "to")):
@@ -200,12 +223,12 @@ TOGETHER_WORDS = frozenset({"together", "jointly"})
 TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "family"), ("side", "by", "side"),
                     ("in", "pairs"), ("in", "groups"), ("with", "each", "other"), ("as", "a", "team"),
                     ("in", "a", "pack"), ("arm", "in", "arm"), ("hand", "in", "hand"))
-EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates alarm flee escape".split())
+EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates evacuated alarm flee escape drill alert".split())
 
 # ---- places ---------------------------------------------------------------------------------
 
 # Prepositions and the role of the place they introduce.
-START_PREPOSITIONS = frozenset({"from"})
+START_PREPOSITIONS = frozenset({"from", "off"})
 DESTINATION_PREPOSITIONS = frozenset({"to", "into", "towards", "toward", "onto", "inside"})
 LOCATION_PREPOSITIONS = frozenset({"at", "in", "on", "near", "by", "beside", "within", "around", "outside", "next",
                                    "behind", "about", "opposite", "against", "under", "among"})
@@ -226,7 +249,7 @@ NON_PLACES = frozenset(
     future background foreground left right top bottom here there curiosity fear surprise interest anger
     conversation chat talk discussion meeting lunch breakfast dinner coffee tea break work shift appointment
     purpose reason fun sake help care each other them themselves him her it rest once all least most front
-    side half""".split())
+    side half sight flight train bus plane match delay delays""".split())
 # Words for the whole building: never an unknown place, never a particular RoI.
 BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment premises site facility floor "
                            "place area scene venue property complex centre center interior indoors outdoors "

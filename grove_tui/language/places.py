@@ -138,8 +138,9 @@ class PlaceIndex:
                 total += WHOLE_PHRASE_BONUS + sum(self.idf.get(t, 0.0) for t in max(matched, key=len))
             elif head not in GENERIC_PLACE_HEADS and head not in self.building_words and weights[-1] <= 0:
                 continue  # "the coffee machine": a phrase whose head names nothing of this entry is not it
-            if e.kind == "door" and not exact and not speaks_of_door:
-                continue  # the rooms a door joins are not the door
+            own_words = e.tokens - self._zone_words
+            if e.kind == "door" and not exact and not speaks_of_door and not set(content) <= own_words:
+                continue  # the rooms a door joins are not the door; "the jet bridge" is the door's own name
             if e.kind == "door" and not exact and not (set(content) & (e.tokens - self._zone_words) or
                                                       (e.exit and ({"exit"} & set(content)))):
                 continue

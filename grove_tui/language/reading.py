@@ -42,6 +42,7 @@ import random
 import unicodedata
 import zlib
 from collections.abc import Sequence
+from functools import lru_cache
 from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
@@ -150,6 +151,45 @@ def _has_subset(reading: PromptReading, parent: int) -> bool:
 
 # ---- reading --------------------------------------------------------------------------------
 
+@lru_cache(maxsize=2048)
+def _near_person_noun(word: str) -> str | None:
+    """The person noun a word is one insertion, deletion, substitution or swap of two neighbours
+    away from, in its singular or plural (Damerau-Levenshtein distance 1); None if none is."""
+    forms = _person_forms()
+    for n in (len(word) - 1, len(word), len(word) + 1):
+        for form, noun in sorted(forms.get(n, {}).items()):
+            if _one_edit(word, form):
+                return noun
+    return None
+
+
+@lru_cache(maxsize=1)
+def _person_forms() -> dict[int, dict[str, str]]:
+    """Length -> {written form: person noun}, for the typo check."""
+    by_length: dict[int, dict[str, str]] = {}
+    irregular = {"children": "child", "people": "person", "women": "woman", "men": "man"}
+    for noun in lx.PERSON_NOUNS:
+        plural = noun[:-1] + "ies" if noun.endswith("y") else noun + "s"
+        for form in (noun, plural, noun + "es"):
+            if len(form) >= 5:
+                by_length.setdefault(len(form), {}).setdefault(form, noun)
+    for form, noun in irregular.items():
+        by_length.setdefault(len(form), {})[form] = noun
+    return by_length
+
+
+def _one_edit(a: str, b: str) -> bool:
+    if a == b:
+        return False
+    if len(a) == len(b):
+        diff = [k for k in range(len(a)) if a[k] != b[k]]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]]
+                                  and a[diff[1]] == b[diff[0]])
+    if len(a) > len(b):
+        a, b = b, a
+    return any(b[:k] + b[k + 1:] == a for k in range(len(b)))
+
+
 def _plain(word: str) -> str:
     """The word without accents ("café" -> "cafe"), as world names are written."""
     if word.isascii():
@@ -177,6 +217,7 @@ class _Mention:
     whole_zone: bool = False
     exclusive: bool = False
     rest_of_parent: bool = False
+    collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
 
 
 @dataclass
@@ -217,6 +258,7 @@ class _Reader:
         self.n = len(words)
         self.unknown: list[str] = []
         self.notes: list[str] = []
+        self.context_zones: list[str] = []  # zones of the places read so far, in reading order
         self.no_mention = self._together_phrase_tokens()
 
     # -- helpers ---------------------------------------------------------------------------
@@ -296,7 +338,12 @@ class _Reader:
 
     def _is_person_noun(self, i: int) -> bool:
         lem = self._lemma(i)
-        return lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS
+        if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS:
+            return True
+        # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
+        # enough that the edit cannot turn one real word into another, and no name of the world.
+        return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
+                and _near_person_noun(self.low[i]) is not None)
 
     # -- mentions ----------------------------------------------------------------------------
 
@@ -322,7 +369,40 @@ class _Reader:
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or self._is_punct(p - 1) or self.low[p - 1] in
                                                    lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
             return True
+        if prev == "by" and self.w[p].dep == "agent":
+            return True  # "the balcony is used by a smoker": the passive's doer
+        if prev == "of" and self._event_before(p):
+            return True  # "the boardroom meeting of twelve people breaks up"
+        return self._parser_subject(s)
+
+    def _parser_subject(self, s: int) -> bool:
+        """Whether the phrase at s is the subject the parser found ("At six the staff head out"):
+        determiners, numbers and adjectives, then a person noun the parser calls the subject."""
+        if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM"):
+            return False  # inside a noun phrase that starts earlier ("the only people")
+        if s > 0 and self.w[s - 1].pos == "SCONJ" and self.low[s - 1] not in lx.CLAUSE_STARTERS:
+            return False  # "... until someone collects them", "if anyone asks": nobody who is there
+        for k in range(s, min(s + 5, self.n)):
+            if self.low[k] in lx.NOBODY_WORDS:
+                return False
+            if self._is_person_noun(k):
+                return self.w[k].dep in ("nsubj", "nsubjpass") and self.w[self.w[k].head].pos in ("VERB", "AUX")
+            if self.w[k].pos not in ("DET", "NUM", "ADJ") and self.low[k] not in lx.NP_MODIFIERS:
+                return False
         return False
+
+    def _event_before(self, of: int) -> bool:
+        """Whether "of" closes a subject noun phrase of no people ("the boardroom meeting of ..."):
+        nouns and adjectives back to a determiner at a subject position."""
+        k = of - 1
+        if k < 0 or self.w[k].pos not in ("NOUN", "PROPN") or self._is_person_noun(k) or \
+                self._lemma(k) in lx.IMPLIED_RANGES or self._number_at(k) is not None:
+            return False
+        while k > 0 and self.w[k - 1].pos in ("NOUN", "PROPN", "ADJ") and not self._is_punct(k - 1):
+            k -= 1
+        if k > 0 and self.low[k - 1] in ("the", "a", "an", "this", "that"):
+            k -= 1
+        return self._subject_position(k) if self.low[k - 1:k] != ["of"] else False
 
     def _mentions(self) -> list[_Mention]:
         found: list[_Mention] = []
@@ -351,7 +431,16 @@ class _Reader:
         a time or a thing of the world."""
         k = j
         while k < self.n and k < j + 4:
-            if self._is_person_noun(k):
+            if self._is_person_noun(k) and self.w[k].pos == "ADJ" and k + 1 < self.n and \
+                    self.w[k + 1].pos in ("NOUN", "PROPN") and self.w[k + 1].dep != "ROOT" and \
+                    (self._is_person_noun(k + 1) or self._lemma(k + 1) in lx.IMPLIED_RANGES):
+                k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
+                continue
+            if self._is_person_noun(k) and self._modifies_next_noun(k):
+                return None  # "the outpatient clinic", "security alert": a thing named after people
+            if self._is_person_noun(k) or (self._lemma(k) in lx.IMPLIED_RANGES and k + 1 < self.n
+                                           and self.low[k + 1] == "of"):
+                # ("a queue of eight people": the collective heads the phrase)
                 while k + 1 < self.n and self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES \
                         and not self.w[k + 1].tag.startswith("VB") and not (
                             not counted and k + 2 < self.n and self.w[k + 2].pos in ("ADP", "DET", "PUNCT")):
@@ -372,9 +461,28 @@ class _Reader:
             return None
         return None
 
+    def _modifies_next_noun(self, k: int) -> bool:
+        """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
+        that noun is no person, no collective and no verb the lexicon knows, and the parser does not
+        make it the sentence's verb ("Mum cooks dinner")."""
+        if k + 1 >= self.n:
+            return False
+        nxt, word = self.w[k + 1], self.low[k + 1]
+        if word in ("'s", "’s", "'") or nxt.tag == "POS":
+            return True  # "the manager's office"
+        # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
+        # is one, "Security alert:" is not.
+        verb_like = nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])
+        gerund_noun = nxt.tag == "NN" and word.endswith("ing")  # "the team meeting", not "nurses meeting"
+        return (nxt.pos == "NOUN" and not verb_like and not nxt.tag.startswith("VB")
+                and not self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES
+                and (gerund_noun or (verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS))
+                and self._lemma(k + 1) not in lx.DURATION_UNITS)
+
     def _mention_at(self, s: int, found: list[_Mention]) -> _Mention | None:
         low = self.low
-        if low[s] in ("the", "these", "those", "all") and s + 1 < self.n and self._number_at(s + 1) is not None:
+        if low[s] in ("the", "these", "those", "all", "its", "their", "our", "his", "her", "my", "your") and \
+                s + 1 < self.n and self._number_at(s + 1) is not None:
             inner = self._mention_at(s + 1, found)  # "the four people in the living room"
             if inner is not None:
                 inner.first = s
@@ -546,6 +654,8 @@ class _Reader:
         if head is None:
             return "person"
         noun = self._lemma(head)
+        if noun not in lx.PERSON_NOUNS and len(self.low[head]) >= 6:
+            noun = _near_person_noun(self.low[head]) or noun  # "nurzes" -> nurse
         if noun in ("member", "person") and head > 0 and self._is_person_noun(head - 1):
             noun = self._lemma(head - 1)  # "staff members", "family members"
         if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
@@ -581,6 +691,10 @@ class _Reader:
             value, after = num
             if tuple(low[after:after + 2]) == ("or", "so"):
                 return (value, "approximate", after + 2, None)  # "fifteen or so women"
+            if after < self.n and low[after] == "odd":
+                return (value, "approximate", after + 1, None)  # "twenty-odd customers"
+            if tuple(low[after:after + 2]) == ("-", "odd"):
+                return (value, "approximate", after + 2, None)
             if after + 1 < self.n and low[after] in ("to", "-", "or") and self._number_at(after + 1):
                 b = self._number_at(after + 1)
                 if b[0] > value:
@@ -647,7 +761,7 @@ class _Reader:
                 member = self._person_head(inner[1], counted=True)
                 if member is not None and member <= inner[1] + 2:
                     last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team"):
+                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
                         label = self._label(member)
             else:
                 member = self._person_head(self._skip(head + 2, {"the", "their", "our"}), counted=False)
@@ -656,6 +770,12 @@ class _Reader:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self._label(member)
+        mention = self._collective_mention(noun, s, last, label, size, parties, exact_parties, together, head)
+        mention.collective = noun
+        return mention
+
+    def _collective_mention(self, noun: str, s: int, last: int, label: str, size: tuple[int, int] | None,
+                            parties: int, exact_parties: bool, together: bool, head: int) -> _Mention:
         if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
             # "a crowd of visitors": the collective only says how many, vaguely
             low_, high_ = lx.IMPLIED_RANGES[noun]
@@ -710,6 +830,9 @@ class _Reader:
     def read(self) -> PromptReading:
         mentions = self._mentions()
         if not mentions:
+            evacuated = self._evacuated_zone_without_people()
+            if evacuated is not None:
+                return evacuated
             self._scan_unknown_places(range(self.n))
             return PromptReading(self.prompt, (), tuple(dict.fromkeys(self.unknown)),
                                  ("no group of people found in the prompt",))
@@ -765,6 +888,33 @@ class _Reader:
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
+    def _evacuated_zone_without_people(self) -> PromptReading | None:
+        """"The entire concourse is evacuated through the side entrance", "Evacuate the pharmacy.":
+        a zone is emptied and nobody is named, so everyone in it leaves (a whole-zone group), and the
+        reading says that it assumed them."""
+        clause = self._clause(list(range(self.n)), set(), scene=True)
+        for i in range(2, self.n):  # the subject of a passive evacuation: "<the X> is evacuated"
+            aux = i - 2 if self.low[i - 1] in ("being", "been") else i - 1
+            if verb_lemma(self.low[i]) == "evacuate" and self.w[i].tag == "VBN" and aux >= 1 and \
+                    verb_lemma(self.low[aux]) in ("be", "get"):
+                first = aux - 1
+                while first > 0 and self.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM") and \
+                        not self._is_punct(first - 1):
+                    first -= 1
+                place = self._place_phrase(first, "obj:start", first, record_unknown=False)
+                if place is not None:
+                    clause.places.append(place)
+        emptied = [(p, p.match) for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
+        if not emptied or not (clause.evacuate or clause.intent == "evacuate"):
+            return None
+        place, match = emptied[0]
+        zone = match.zone
+        mention = _Mention(place.index, place.end - 1, f"everyone in {match.name}", "person", None, whole_zone=True)
+        group = self._group(0, mention, clause, None, True, (0, self.n), [])
+        group = replace(group, who="everyone", text=self.prompt)
+        self.notes.append(f"no people are named: everyone in {zone} is evacuated")
+        return PromptReading(self.prompt, (group,), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+
     def _hyphen_inside(self, j: int) -> bool:
         """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
         return self.low[j] == "-" and 0 < j < self.n - 1 and self.low[j - 1][-1:].isalnum() and \
@@ -812,13 +962,26 @@ class _Reader:
                 if c.robot is not None:
                     break
                 for phrase, interaction in lx.ROBOT_PHRASES.items():
-                    lemmas = tuple(verb_lemma(x) for x in low[i:i + len(phrase)])
-                    if lemmas == phrase and all(x in ownset for x in range(i, i + len(phrase))):
+                    taken = self._phrase_words(i, len(phrase), ownset)
+                    if taken == phrase:
                         c.robot = interaction
                         break
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
+                if c.robot is None and self._lemma(i) in lx.ROBOT_NOUNS:
+                    c.robot = lx.ROBOT_NOUNS[self._lemma(i)]  # "stop to take photos of the robot"
+            if c.robot is None:
+                # "give the robot a wide berth": a noun just after the robot names it
+                for i in range(r + 1, min(r + 5, self.n)):
+                    if i not in ownset or self._is_punct(i):
+                        break
+                    if self._lemma(i) in lx.ROBOT_NOUNS:
+                        c.robot = lx.ROBOT_NOUNS[self._lemma(i)]
+                        break
+            if c.robot is None and r + 3 < self.n and verb_lemma(low[r + 1]) == "be" and \
+                    verb_lemma(low[r + 2]) in lx.ROBOT_VERBS and low[r + 3] == "by":
+                c.robot = lx.ROBOT_VERBS[verb_lemma(low[r + 2])]  # "the robot is followed by ..."
         if robot_at and c.robot is None:
             for i in own:
                 if low[i] in lx.ROBOT_FEELINGS:
@@ -842,11 +1005,12 @@ class _Reader:
                     used.update(range(i, end))
                     i_pos = self._advance(own, end)
                     continue
-                prev_verb = self._previous_verb(own, i_pos)
-                # "head for the exit", "queue for the coffee machine": a place by its whole name after a
-                # determiner; "for coffee", "for their prescriptions" are purposes, whatever they match.
-                if prev_verb in lx.FOR_DESTINATION_VERBS or (nxt in ("the", "this", "that") and self._names_place(i + 2)):
-                    place = self._place_phrase(i + 1, "for", i)
+                # "head for the exit", "make a beeline for gate B2", "queue for the coffee machine": a
+                # place by its whole name after a determiner; "for coffee", "for their prescriptions",
+                # "head out the back for a cigarette" are purposes, whatever they match.
+                right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS
+                if right_after_verb or (nxt in ("the", "this", "that") and self._names_place(i + 2)):
+                    place = self._place_phrase(i + 1, "for", i, record_unknown=right_after_verb)
                     if place is not None:
                         c.places.append(place)
                         used.update(range(i, place.end))
@@ -891,7 +1055,10 @@ class _Reader:
             prep = self._preposition(i)
             if prep is not None:
                 name, width = prep
-                place = self._place_phrase(i + width, name, i)
+                if name == "from" and self._after_transaction(i, own):
+                    name = "at"  # "buy tickets from the machines": where they stand, not where they start
+                # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
+                place = self._place_phrase(i + width, name, i, record_unknown=name != "off")
                 if place is not None:
                     c.places.append(place)
                     used.update(range(i, place.end))
@@ -928,8 +1095,18 @@ class _Reader:
         if scene and own:
             # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
             # the sentence's people are.
+            # So is a place that heads the sentence before a colon ("Gate A1: 25 people seated") or
+            # names the event the people come from ("the boardroom meeting of twelve people"); the
+            # subject of a passive takes the role the verb gives its object ("Ward B is visited by").
             subject = self._place_phrase(own[0], "at", own[0], record_unknown=False)
-            if subject is not None and subject.end < self.n and verb_lemma(low[subject.end]) in ("be", "stay", "remain"):
+            after = low[subject.end] if subject is not None and subject.end < self.n else ""
+            if subject is not None and (verb_lemma(after) in ("be", "stay", "remain", "get") or after in (":", "of")):
+                passive = subject.end + 1 < self.n and self.w[subject.end + 1].tag == "VBN"
+                verb = verb_lemma(low[subject.end + 1]) if passive else ""
+                if verb in lx.START_OBJECT_VERBS:
+                    subject = replace(subject, prep="obj:start")
+                elif verb in lx.DESTINATION_OBJECT_VERBS:
+                    subject = replace(subject, prep="obj:dest")
                 c.places.append(subject)
                 used.update(range(own[0], subject.end))
         # Intents: phrasal verbs first, then single verbs; a verb inside a place phrase is not one.
@@ -952,6 +1129,8 @@ class _Reader:
                     candidates.append((i, lx.INTENT_VERBS[v], v))
         if any(self.w[i].pos == "VERB" and self.w[i].lemma not in ("be", "have") and i not in used for i in own):
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
+        if len(candidates) > 1 and own and candidates[0][0] == own[0] and self.w[own[0]].tag == "VBG":
+            candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
         if candidates:
             c.has_action = True
             c.moves = any(kind in ("walk", "evacuate") for _, kind, _ in candidates)
@@ -964,6 +1143,8 @@ class _Reader:
             k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
             k1 = self._skip(k0, {"behind", "after"})
             k = self._skip(k1, lx.DETERMINERS)
+            if k + 1 < self.n and self.w[k].pos in ("NOUN", "ADJ", "PROPN") and self._is_person_noun(k + 1):
+                k += 1  # "follow the charge nurse"
             if k < self.n and (self._is_person_noun(k) or low[k] in ("them", "him", "her", "others", "leader", "guide",
                                                                      "us", "everyone")):
                 c.follows = self._span(c.verb_index + 1, k)
@@ -980,6 +1161,23 @@ class _Reader:
         if {low[i] for i in own} & lx.TOGETHER_WORDS or any(i in self.no_mention for i in own):
             c.together = True
         return c
+
+    def _phrase_words(self, i: int, n: int, ownset: set[int]) -> tuple[str, ...]:
+        """The n words from i on in their base forms, skipping intensifiers after the first ("keep
+        well clear"); words outside the clause end it."""
+        out: list[str] = []
+        j = i
+        while j < self.n and len(out) < n:
+            if j not in ownset:
+                break
+            word = self.low[j]
+            if out and word in lx.ROBOT_PHRASE_FILLERS:
+                j += 1
+                continue
+            base = verb_lemma(word)
+            out.append(base if base != word else lemma(word))
+            j += 1
+        return tuple(out)
 
     def _trigrams(self, own: Sequence[int]) -> set[tuple[str, str, str]]:
         return {tuple(self.low[i:i + 3]) for i in own if i + 3 <= self.n}
@@ -1031,8 +1229,26 @@ class _Reader:
         for n in range(len(words), 0, -1):
             match = self.index.match(phrase_lemmas(words[:n]))
             if match is not None and match.exact:
-                return True
+                # the name starts here: "to pick up wheelchairs" is a purpose, though "wheelchairs" is a name
+                entry = self.index.entry(match.name)
+                first = next((lemma(w) for w in words[:n] if w not in lx.DETERMINERS), "")
+                return entry is None or first in entry.tokens
         return False
+
+    def _after_transaction(self, i: int, own: Sequence[int]) -> bool:
+        """Whether a verb of getting something governs the preposition at i ("buy tickets from")."""
+        before = [k for k in own if i - 4 <= k < i]
+        return any(verb_lemma(self.low[k]) in lx.TRANSACTION_VERBS for k in before)
+
+    def _verb_just_before(self, i: int) -> str | None:
+        """The verb (or "beeline") right before i, past adverbs ("head straight for the exit")."""
+        j = i - 1
+        while j >= 0 and (self.w[j].pos == "ADV" or self.low[j] in ("straight", "directly", "off", "back")):
+            j -= 1
+        if j < 0:
+            return None
+        word = self.low[j]
+        return word if word in lx.FOR_DESTINATION_VERBS else verb_lemma(word)
 
     def _previous_verb(self, own: Sequence[int], pos: int) -> str | None:
         for k in range(pos - 1, -1, -1):
@@ -1097,6 +1313,8 @@ class _Reader:
             return ("at" if two[0] in ("next", "close") else "to"), 2
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
+        if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "out", 1  # "head out the back", "walk out the front door"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
         return None
@@ -1156,12 +1374,31 @@ class _Reader:
             return None
         if self._is_person_phrase(lemmas):
             return None
-        match = self.index.match(lemmas)
+        match = None
+        if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
+            door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
+            match = door if door is not None and door.kind == "door" else None
+        match = match or self._in_context(self.index.match(lemmas), lemmas)
         if match is None and record_unknown and not self.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
             return None
+        self.context_zones.append(match.zone)
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
+        """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
+        has already named ("Gate A1: ... staff at the desk")."""
+        if match is None or not self.context_zones:
+            return match
+        tied = [m for m in self.index.candidates(lemmas) if m.score >= match.score - 1e-9]
+        if len(tied) < 2 or match.zone in self.context_zones:
+            return match
+        for zone in reversed(self.context_zones):
+            for m in tied:
+                if m.zone == zone:
+                    return m
+        return match
 
     def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
         """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
@@ -1213,26 +1450,35 @@ class _Reader:
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together,
                                text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end])
-        if c.robot is not None:
-            intent = "robot"
+        robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
+        if m.collective in lx.QUEUE_COLLECTIVES and c.intent is None and intent in ("wait", "walk"):
+            intent = "queue"  # "a queue of eight people forms at the ticket office"
+        if robot is not None:
+            intent = "robot"  # also "Startled by the robot, a woman ...", "The robot is followed by ..."
         if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):
             intent = "evacuate"
         start = destination = location = None
         via: list[str] = []
         places = list(c.places)
         scene_places = list(scene.places) if scene is not None else []
-        stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and c.intent in lx.STATIONARY_INTENTS)
+        # Someone who looks at the robot or blocks it, with no verb of motion, stays where they are.
+        stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and (
+            c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block"))))
         verb = c.verb or ""
         verb_index = c.verb_index
+        said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
         for p in places + scene_places:
             name = p.match.name if p.match is not None else None
             if name is None:
                 continue
             role = self._role(p, verb, verb_index, stationary, intent, p in scene_places)
+            marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
             if role == "start" and (start is None or self._narrower(name, start)):
                 start = name
-            elif role == "destination" and (destination is None or self._narrower(name, destination)):
-                destination = name
+            elif role == "destination" and (destination is None or self._narrower(name, destination)
+                                            or (marked and not said_to)):
+                # "drops her bags off at the lockers and heads to the café": the café
+                destination, said_to = name, said_to or marked
             elif role == "location" and (location is None or self._narrower(name, location)):
                 location = name
             elif role == "via" and name not in via:
@@ -1279,11 +1525,11 @@ class _Reader:
             count = Count("vague", lx.BARE_PLURAL_RANGE[0], *lx.BARE_PLURAL_RANGE)
         if m.exclusive and count.kind != "exclusive":
             count = replace(count, kind="exclusive")
-        interaction = c.robot
+        interaction = robot
         pace = c.pace if c.pace != "normal" or scene is None else scene.pace
         together = m.together or c.together or count.kind == "structured"
         wait = c.wait_seconds
-        if wait is None and scene is not None and intent == "wait":
+        if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
             wait = scene.wait_seconds
         return GroupReading(
             who=m.who, label=m.label, count=count, intent=intent,
@@ -1302,6 +1548,8 @@ class _Reader:
               from_scene: bool) -> str:
         prep = p.prep
         is_door = p.match is not None and p.match.kind == "door"
+        if prep == "out":
+            return "destination" if is_door else "start"
         if prep in ("from", "obj:start"):
             return "start"
         if prep == "for":
@@ -1310,6 +1558,8 @@ class _Reader:
             return "destination"
         if prep == "obj:via":
             return "via"
+        if prep in lx.VIA_PREPOSITIONS and stationary and not is_door:
+            return "location"  # "pace up and down the corridor", "wander through the concourse"
         if prep in lx.VIA_PREPOSITIONS:
             if is_door and verb in lx.DEPARTURE_VERBS | {"evacuate"} or (is_door and intent == "evacuate"):
                 return "destination"

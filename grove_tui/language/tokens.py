@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from grove_tui.language.lexicon import (INTENT_VERBS, NUMBER_WORDS, ROBOT_VERBS, STOPWORDS)
+from grove_tui.language.lexicon import INTENT_VERBS, NUMBER_WORDS, PERSON_NOUNS, ROBOT_VERBS, STOPWORDS
 
 _IRREGULAR_NOUNS = {
     "people": "person", "persons": "person", "children": "child", "men": "man", "women": "woman",
@@ -42,8 +42,8 @@ def lemma(word: str) -> str:
     w = word.lower()
     if w in _IRREGULAR_NOUNS:
         return _IRREGULAR_NOUNS[w]
-    if len(w) <= 3 or not w.endswith("s") or w.endswith(_KEEP_S):
-        return w
+    if len(w) <= 3 or not w.endswith("s") or (w.endswith(_KEEP_S) and w[:-1] not in PERSON_NOUNS):
+        return w  # "physics", "bus"; but "paramedics" is more than one paramedic
     if w.endswith("ies") and len(w) > 4:
         return w[:-3] + "y"
     if w.endswith(("ches", "shes", "xes", "zes", "sses")):

@@ -2,8 +2,9 @@
 
 A crash inside llama.cpp (a bad grammar, a broken file, out of memory) kills only this process, and a
 generation can be stopped by terminating it. The model is loaded once and serves every request of
-its role, so llama.cpp's live KV cache reuses the longest shared token prefix (the system prompt)
-from one request to the next.
+its role, so llama.cpp's live KV cache reuses a shared token prefix (the system prompt) from one
+request to the next, in whole evaluation batches only (see `reusable_prefix`), so that an answer never
+depends on which request the worker served before.
 
 Protocol over one duplex pipe (parent -> worker: requests; worker -> parent: events):
     worker sends ("ready", {bos_token, eos_token, chat_template, architecture, n_ctx})
@@ -104,6 +105,27 @@ def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_thread
 MIN_ANSWER_TOKENS = 16
 
 
+def reusable_prefix(cached: list[int], tokens: list[int], prompt_evaluated: int, n_batch: int) -> int:
+    """How many leading tokens of `tokens` may be served from the live KV cache holding `cached`.
+
+    llama.cpp's result for a token depends on how the prompt was cut into evaluation batches (the
+    matrix kernels differ with the batch's size), so reusing "the longest shared prefix" made an answer
+    depend on the request served before it: the same job gave different trees in a one-process batch
+    and on a Ray worker. A cold evaluation cuts the prompt into batches of `n_batch` from position 0;
+    reusing only whole batches of that cut, and only tokens that were evaluated as prompt
+    (`prompt_evaluated`: the tokens after it were decoded one at a time), leaves every cached value
+    exactly what a cold evaluation of `tokens` computes. At least the last token is always evaluated,
+    since its logits give the first answer token.
+    """
+    shared = 0
+    for cached_token, token in zip(cached, tokens):
+        if cached_token != token:
+            break
+        shared += 1
+    shared = min(shared, prompt_evaluated, len(tokens) - 1)
+    return (shared // n_batch) * n_batch if n_batch > 0 else 0
+
+
 class _RequestError(Exception):
     def __init__(self, kind: str, message: str) -> None:
         super().__init__(message)
@@ -113,6 +135,9 @@ class _RequestError(Exception):
 class _Server:
     def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any]) -> None:
         self.llm, self.conn, self.cancel, self.info = llm, conn, cancel, info
+        # How many leading tokens of the live KV cache were evaluated as a prompt (in whole batches
+        # cut from position 0); 0 when the cache holds nothing a new request may reuse.
+        self.prompt_evaluated = 0
 
     def prompt_text(self, request: dict[str, Any]) -> str:
         if request.get("messages") is not None:
@@ -153,13 +178,15 @@ class _Server:
         llm = self.llm
         grammar = LlamaGrammar.from_string(request["grammar"], verbose=False) if request.get("grammar") else None
         llm.set_seed(int(request["seed"]))
-        # What llama.cpp will keep from the live KV cache (generate() rewinds to the longest shared prefix).
-        reused = 0
-        for cached_token, token in zip(llm._input_ids.tolist(), tokens):
-            if cached_token != token:
-                break
-            reused += 1
-        reused = min(reused, len(tokens) - 1)
+        reused = reusable_prefix(llm._input_ids.tolist(), tokens, self.prompt_evaluated, llm.n_batch)
+        # generate() keeps the longest prefix shared with its first n_tokens cached tokens: cut the cache
+        # there, so it evaluates the rest exactly as a cold start would (reset() when nothing is kept).
+        if reused == 0:
+            llm.reset()
+        else:
+            llm.n_tokens = reused
+        # Until this prompt is evaluated in full, the cache holds nothing a later request may trust.
+        self.prompt_evaluated = 0
         self.conn.send(("started", len(tokens)))
         decoder = codecs.getincrementaldecoder("utf-8")(errors="replace")
         pieces: list[str] = []
@@ -174,6 +201,7 @@ class _Server:
                                       min_p=float(request["min_p"]), temp=float(request["temperature"]),
                                       presence_penalty=float(request["presence_penalty"]), repeat_penalty=1.0,
                                       grammar=grammar):
+                self.prompt_evaluated = len(tokens)  # a token was sampled: the whole prompt is evaluated
                 if llama_vocab_is_eog(llm._model.vocab, token):
                     finish_reason = "stop"
                     break

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-from grove_tui.files import absolute_path, atomic_directory, link_or_copy
+from grove_tui.files import absolute_path, atomic_directory, link_or_copy, write_files_atomic
 from grove_tui.errors import BundleError, GroveError
 from grove_tui.limits import InputLimitError, check_regular_file, read_text_bounded
 from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
@@ -54,6 +54,16 @@ def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = False) -> P
         result.grid.save(stage / GRID_FILE)
         (stage / REPORT_FILE).write_text(json.dumps(result.report, indent=2, sort_keys=False) + "\n", encoding="utf-8")
     return target
+
+
+def write_bundle_files(files: Mapping[str, bytes], out_dir: str | Path, overwrite: bool = False) -> Path:
+    """Write a bundle given as its files' bytes (relative path -> bytes), with `write_bundle`'s guarantees.
+
+    How a Ray batch's driver writes the bundle a worker without its file system generated and sent back.
+    """
+    if SCENARIO_FILE not in files:
+        raise BundleError(f"{out_dir}: the files sent as a bundle have no {SCENARIO_FILE}")
+    return write_files_atomic(absolute_path(out_dir), files, owned=is_bundle, what=WHAT, overwrite=overwrite)
 
 
 def replace_run_outputs(bundle_dir: str | Path, write: Callable[[Path], None]) -> Path:

@@ -34,6 +34,12 @@ MAX_COORDINATE = 100_000.0  # metres, as for world files
 MAX_SEED = 2**32 - 1  # numpy's seed range
 MAX_SCENARIO_BYTES = 64 * 1024 * 1024
 MAX_AGENTS = 100_000
+# A person's body radius when nothing says otherwise: generation gives it to everyone, and the
+# planner's grid is inflated by it (a centre that far from a wall keeps the body off it). A 0.5 m
+# wide body, about an adult's shoulder breadth; JuPedSim's RiMEA runs in issue 19 used it too. With
+# bodies that no longer overlap, 0.35 (a 0.7 m disc) wedged in 1 m doors: 0.4-0.8 persons/s where
+# people pass 1.3-1.9 (RiMEA 12, analysis/rimea.py).
+DEFAULT_AGENT_RADIUS = 0.25
 
 
 @dataclass(frozen=True)
@@ -44,7 +50,7 @@ class AgentSpec:
     goals: tuple[Point, ...]  # every navigation target in order, injected waypoints included
     zone: str  # name of the zone the agent is headed for
     tree: str  # path of its BT XML file, relative to the bundle
-    radius: float = 0.35
+    radius: float = DEFAULT_AGENT_RADIUS
     max_vel: float = 1.0  # SFM desired speed (HuNavSim `max_vel`)
     label: str = ""  # the draft group label the agent came from ("patients", "family")
     behavior: str = "Regular"  # HuNavSim reaction to the robot: Regular, Impassive, Surprised, Scared, Curious, Threatening
@@ -73,6 +79,11 @@ class Scenario:
     # HuNavSim global goals (id -> point) that trees name by `goal_id` alone: set when a scenario is
     # imported from HuNavSim (`grove import hunav`); generated scenarios write x/y beside every goal_id.
     global_goals: dict[int, Point] = field(default_factory=dict)
+
+    @property
+    def grid_inflation(self) -> float:
+        """How far the planner's grid keeps centres off walls: the largest body radius of its people."""
+        return max((a.radius for a in self.agents), default=DEFAULT_AGENT_RADIUS)
 
     def to_dict(self) -> dict[str, Any]:
         data = asdict(self)
@@ -228,7 +239,7 @@ def _agent_from_dict(data: Any, where: str) -> AgentSpec:
             goals=tuple(_point(g, f"{where}.goals[{j}]") for j, g in enumerate(goals)),
             zone=str(data.get("zone", "")),
             tree=bundle_relative(data["tree"], f"{where}.tree"),
-            radius=_number(data.get("radius", 0.35), f"{where}.radius", *RADIUS_RANGE),
+            radius=_number(data.get("radius", DEFAULT_AGENT_RADIUS), f"{where}.radius", *RADIUS_RANGE),
             max_vel=_number(data.get("max_vel", 1.0), f"{where}.max_vel", *MAX_VEL_RANGE),
             label=str(data.get("label", "")),
             behavior=behavior,

@@ -8,6 +8,7 @@ Tests pass an `llm_factory` that returns a fake model (UI-only tests) or use the
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import threading
@@ -25,11 +26,17 @@ from grove_tui.services.session import (
     ModelStatus,
     RetrieverFactory,
     ScenarioRequest,
+    WarmUpStatus,
 )
 from grove_tui.settings import data_dir
 
+# How far below the app's priority the model processes run while the app is open (see
+# EngineBackend.yield_cpu_to_the_app); 0 leaves them alone.
+MODEL_NICENESS = 10
+LOWEST_PRIORITY = 19  # the largest niceness POSIX allows
+
 __all__ = ["EXPORTERS", "EngineBackend", "ExportContext", "ExportedFile", "GeneratedScenario", "ModelStatus",
-           "PresetInfo", "RunInfo", "list_runs"]
+           "PresetInfo", "RunInfo", "WarmUpStatus", "list_runs"]
 
 
 @dataclass(frozen=True)
@@ -207,7 +214,9 @@ class EngineBackend:
         retriever_factory: RetrieverFactory | None = None,
         runs_dir: Path | None = None,
         exporters: list[tuple[str, Exporter]] | None = None,
+        model_niceness: int = MODEL_NICENESS,
     ) -> None:
+        self.model_niceness = model_niceness
         self.session = GroveSession(model=model, roi_model=roi_model, bt_model=bt_model, llm_factory=llm_factory,
                                     retriever_factory=retriever_factory)
         self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
@@ -242,14 +251,47 @@ class EngineBackend:
         models = self.session.load_models()
         return {"roi": models.roi, "bt": models.bt}
 
+    def warm_up(self, world: str | None = None, preset: str | None = None, *,
+                on_status: Callable[[WarmUpStatus], None] | None = None) -> list[WarmUpStatus]:
+        """GroveSession.warm_up (models, node index and embedder, reader, the world's planner); each
+        step's WarmUpStatus goes to `on_status`, whose `text` is the app's status line."""
+        def relay(status: WarmUpStatus) -> None:
+            if status.step == "retrieval" and status.state == "done":
+                self._embedder_warm = True
+            if on_status is not None:
+                on_status(status)
+
+        return self.session.warm_up(world, preset, on_status=relay)
+
+    def yield_cpu_to_the_app(self) -> list[int]:
+        """Run the model processes `model_niceness` steps below the app's priority; the pids changed.
+
+        llama.cpp sizes its threads to the cores free when its process starts and spins at its
+        barriers, so while it writes it holds every core and the app's key handling waits for a time
+        slice (0.4-0.8 s per key in issue 21). One step of niceness is ~1.25x less CPU weight, so at +10
+        the app's thread takes a core within the scheduler's latency whenever it has work, and the
+        model loses only the little CPU the app uses. Niceness cannot be lowered again without
+        privileges, so this is only done for the app's own model processes, and is idempotent.
+        """
+        if self.model_niceness <= 0 or not hasattr(os, "setpriority"):
+            return []
+        target = min(os.getpriority(os.PRIO_PROCESS, 0) + self.model_niceness, LOWEST_PRIORITY)
+        changed = []
+        for llm in self.session.loaded_models():
+            pid = getattr(llm, "worker_pid", None)
+            if not isinstance(pid, int):
+                continue
+            try:
+                if os.getpriority(os.PRIO_PROCESS, pid) < target:
+                    os.setpriority(os.PRIO_PROCESS, pid, target)
+                    changed.append(pid)
+            except OSError:  # the process ended (cancelled, crashed) between the lookup and the call
+                continue
+        return changed
+
     def warm_up_retriever(self) -> None:
         """Open the node index and load the embedding model now, so the first Retrieval takes no extra time."""
-        retriever = self.session.retriever()
-        if self._retriever_factory is None:
-            from grove_tui.generation.retrieval import embed_query
-
-            retriever.ensure_index()
-            embed_query("people walk")  # imports torch, loads the model and its traced query encoder
+        self.session.warm_up_retrieval()
         self._embedder_warm = True
 
     def embedder_ready(self) -> bool:

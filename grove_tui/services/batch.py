@@ -2,7 +2,7 @@
 
 `run_batch` is what `grove batch` calls. Both ways run each job through `GroveSession.run_job`, skip
 the same completed jobs, append the same records to batch-state.jsonl and rebuild the same
-dataset.sqlite (services.dataset), so `--ray` changes where jobs run and nothing they produce.
+dataset index (services.dataset), so `--ray` changes where jobs run and nothing they produce.
 """
 
 from __future__ import annotations
@@ -15,6 +15,7 @@ from typing import Any
 from grove_tui.services.dataset import (
     JobRecord,
     append_record,
+    check_index_format,
     completed_jobs,
     job_inputs_hash,
     model_identity,
@@ -29,7 +30,7 @@ from grove_tui.services.session import EventSink, GroveSession
 class BatchResult:
     records: list[JobRecord]  # the jobs that ran, in the order they ended
     skipped: list[BatchJob]  # completed by an earlier run with the same inputs (resume)
-    index: Path  # dataset.sqlite
+    index: Path  # dataset.sqlite or dataset.parquet
 
     @property
     def failures(self) -> int:
@@ -38,10 +39,20 @@ class BatchResult:
 
 def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *, overwrite: bool = False,
               resume: bool = False, ray_address: str | None = None, workers: int | None = None,
+              ray_return: bool = False, index_format: str = "sqlite",
               on_start: Callable[[list[BatchJob], list[BatchJob]], None] | None = None,
               events_for: Callable[[int, BatchJob], EventSink | None] | None = None,
               on_record: Callable[[JobRecord], None] | None = None) -> BatchResult:
-    """Run the checked jobs; `on_start(to_run, skipped)` before the first, `on_record` as each ends."""
+    """Run the checked jobs; `on_start(to_run, skipped)` before the first, `on_record` as each ends.
+
+    `ray_return`: every Ray worker sends its jobs' files back and the driver writes them (else only
+    the workers that cannot see `out_dir` do). `index_format`: "sqlite" or "parquet" (needs pyarrow).
+    """
+    check_index_format(index_format)  # before any job runs: a missing pyarrow must not cost a batch
+    if jobs and ray_address is None:
+        # Models, embedder and reader load while the inputs are hashed and checked for resume (the
+        # model files are read whole for the hash); the first job waits only for what is left.
+        session.start_warm_up(jobs[0].world, jobs[0].preset)
     identity = model_identity(session.model_choices())
     hashes = {job.name: job_inputs_hash(job, identity) for job in jobs}
     done = completed_jobs(jobs, out_dir, hashes) if resume else set()
@@ -64,7 +75,7 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
             from grove_tui.services.cluster import run_on_ray
 
             run_on_ray(to_run, out_dir, hashes, address=ray_address, workers=workers, overwrite=overwrite,
-                       models=session.model_options, on_record=finished)
+                       models=session.model_options, on_record=finished, return_files=True if ray_return else None)
         else:
             def outcome_done(_index: int, outcome: Any) -> None:
                 finished(record_outcome(outcome, hashes[outcome.job.name]))
@@ -72,5 +83,5 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
             session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)
     finally:
         # Also after a model error or Ctrl+C: the index shows what is done, failed and still pending.
-        index = write_index(out_dir, jobs)
+        index = write_index(out_dir, jobs, index_format)
     return BatchResult(records, skipped, index)

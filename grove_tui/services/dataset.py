@@ -7,9 +7,10 @@ and index jobs the same way:
   name, inputs hash, status ("ok" or "failed"), and for a failure its message and exit code. A
   resumed batch skips a job whose last line says "ok" with the same inputs hash and whose bundle is
   still there; a changed job (prompt, seed, models...) has another hash and runs again.
-- `dataset.sqlite`: one row per job of the file (world, preset, prompt, variation, seed, models,
-  counts per group, grounding verdicts, simulation metrics, status), rebuilt from the bundles after
-  every batch. Trajectories stay in the bundles. `grove dataset summary DIR` prints its totals.
+- `dataset.sqlite` (or `dataset.parquet` with `--index parquet`, when pyarrow is installed): one row
+  per job of the file (world, preset, prompt, variation, seed, models, counts per group, grounding
+  verdicts, simulation metrics, status), rebuilt from the bundles after every batch. Trajectories
+  stay in the bundles. `grove dataset summary DIR` prints the totals of the newer of the two.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from grove_tui.errors import DatasetError, describe_error
+from grove_tui.files import atomic_file
 
 if TYPE_CHECKING:
     from grove_tui.services.jobs import BatchJob
@@ -30,6 +32,8 @@ if TYPE_CHECKING:
 
 STATE_FILE = "batch-state.jsonl"
 INDEX_FILE = "dataset.sqlite"
+PARQUET_FILE = "dataset.parquet"
+INDEX_FORMATS = ("sqlite", "parquet")
 
 
 @dataclass(frozen=True)
@@ -170,10 +174,32 @@ def _row(job: BatchJob, out_dir: Path, record: dict[str, Any] | None) -> dict[st
     }
 
 
-def write_index(out_dir: Path, jobs: Iterable[BatchJob]) -> Path:
-    """Rebuild dataset.sqlite from the bundles and batch-state.jsonl; replaced in one rename."""
+def check_index_format(index_format: str) -> None:
+    """`index_format` is one this install can write; else a DatasetError saying what to install."""
+    if index_format not in INDEX_FORMATS:
+        raise DatasetError(f"index format {index_format!r}: choose one of {', '.join(INDEX_FORMATS)}",
+                           title="Unknown index format", hint="Use --index sqlite (the default) or --index parquet.")
+    if index_format == "parquet":
+        _pyarrow()
+
+
+def _pyarrow() -> tuple[Any, Any]:
+    try:
+        import pyarrow
+        import pyarrow.parquet
+    except ImportError:
+        raise DatasetError("dataset.parquet needs pyarrow, which this install does not have",
+                           title="pyarrow is not installed",
+                           hint="pip install pyarrow, or keep the default --index sqlite.") from None
+    return pyarrow, pyarrow.parquet
+
+
+def write_index(out_dir: Path, jobs: Iterable[BatchJob], index_format: str = "sqlite") -> Path:
+    """Rebuild the dataset index from the bundles and batch-state.jsonl; replaced in one rename."""
     records = read_records(out_dir)
     rows = [_row(job, out_dir, records.get(job.name)) for job in jobs]
+    if index_format == "parquet":
+        return _write_parquet(out_dir / PARQUET_FILE, rows)
     target = out_dir / INDEX_FILE
     stage = out_dir / f".{INDEX_FILE}.tmp"
     stage.unlink(missing_ok=True)
@@ -185,6 +211,46 @@ def write_index(out_dir: Path, jobs: Iterable[BatchJob]) -> Path:
     db.close()
     stage.replace(target)
     return target
+
+
+def _write_parquet(target: Path, rows: list[dict[str, Any]]) -> Path:
+    pa, pq = _pyarrow()
+    # The sqlite table's columns and types, so both indexes read the same.
+    types = {"TEXT": pa.string(), "INTEGER": pa.int64(), "REAL": pa.float64()}
+    schema = pa.schema([(name, types[kind.split()[0]]) for name, kind in COLUMNS])
+    table = pa.Table.from_pylist(rows, schema=schema)
+    with atomic_file(target) as stage:
+        pq.write_table(table, stage)
+    return target
+
+
+def _read_index(out_dir: Path) -> list[dict[str, Any]]:
+    """The rows of DIR's dataset index: the newer of dataset.sqlite and dataset.parquet."""
+    present = [path for path in (out_dir / INDEX_FILE, out_dir / PARQUET_FILE) if path.is_file()]
+    if not present:
+        raise DatasetError(f"{out_dir}: no {INDEX_FILE} or {PARQUET_FILE} "
+                           "(not the --out folder of a `grove batch` run)")
+    path = max(present, key=lambda candidate: candidate.stat().st_mtime_ns)
+    if path.name == PARQUET_FILE:
+        _pa, pq = _pyarrow()
+        try:
+            table = pq.read_table(path)
+        except (OSError, ValueError) as exc:  # pyarrow's ArrowInvalid is a ValueError
+            raise DatasetError(f"{path}: not a readable dataset index: {exc}") from None
+        missing = [name for name, _ in COLUMNS if name not in table.column_names]
+        if missing:
+            raise DatasetError(f"{path}: not a GROVE dataset index (no column {', '.join(missing)})")
+        return sorted(table.to_pylist(), key=lambda row: str(row["name"]))
+    try:
+        db = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+        try:
+            cursor = db.execute("SELECT * FROM scenarios ORDER BY name")
+            names = [column[0] for column in cursor.description]
+            return [dict(zip(names, values)) for values in cursor]
+        finally:
+            db.close()
+    except sqlite3.Error as exc:
+        raise DatasetError(f"{path}: not a readable dataset index: {exc}") from None
 
 
 @dataclass(frozen=True)
@@ -204,19 +270,7 @@ class DatasetSummary:
 
 
 def summarize(out_dir: str | Path) -> DatasetSummary:
-    path = Path(out_dir) / INDEX_FILE
-    if not path.is_file():
-        raise DatasetError(f"{out_dir}: no {INDEX_FILE} (not the --out folder of a `grove batch` run)")
-    try:
-        db = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
-        try:
-            cursor = db.execute("SELECT * FROM scenarios ORDER BY name")
-            names = [column[0] for column in cursor.description]
-            rows = [dict(zip(names, values)) for values in cursor]
-        finally:
-            db.close()
-    except sqlite3.Error as exc:
-        raise DatasetError(f"{path}: not a readable dataset index: {exc}") from None
+    rows = _read_index(Path(out_dir))
 
     def count_by(key: str) -> dict[str, int]:
         counts: dict[str, int] = {}

@@ -101,6 +101,39 @@ class ModelStatus:
 
 
 @dataclass(frozen=True)
+class WarmUpStatus:
+    """One step of GroveSession.warm_up, for a status line: "loading the models…", "ready to generate"."""
+
+    step: str  # "models" | "retrieval" | "reader" | "planner", then "ready" once all have run
+    state: str  # "running" | "done" | "failed"
+    doing: str  # what the step does, in words
+    error: str = ""
+
+    @property
+    def text(self) -> str:
+        if self.state == "running":
+            return f"{self.doing}…"
+        if self.state == "failed":
+            return f"{self.doing}: failed: {self.error}" if self.error else "not ready: a warm-up step failed"
+        return self.doing if self.step == "ready" else f"{self.doing}: done"
+
+
+def llm_threads() -> int:
+    """llama.cpp's threads: GROVE_LLM_THREADS, else cpu.default_llm_threads (machine budget, idle cores)."""
+    from grove_tui.cpu import default_llm_threads
+    from grove_tui.settings import load_settings
+
+    override = load_settings().llm_threads
+    return override if override is not None else default_llm_threads()
+
+
+def _warm_reader() -> None:
+    from grove_tui.language import parser
+
+    parser.load()
+
+
+@dataclass(frozen=True)
 class Models:
     """The model of each role; one object when both roles name the same file."""
 
@@ -153,6 +186,8 @@ class GroveSession:
         self._retriever: Any = None
         self._worlds: dict[str, World] = {}
         self._pipelines: dict[tuple[str, str, Any], GenerationPipeline] = {}
+        self._warm = False
+        self._stop_warm_up = threading.Event()  # set by close(): a warm-up still running loads nothing more
 
     # inputs -------------------------------------------------------------------------------------------
     def list_worlds(self) -> list[str]:
@@ -235,9 +270,91 @@ class GroveSession:
             return self._llm_factory(role, choice)
         from grove_tui.llm.local import LocalLLM
 
-        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx)
+        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx, n_threads=llm_threads())
         llm.start()  # loads the weights in the model's worker process now, not at the first prompt
         return llm
+
+    # warm start -----------------------------------------------------------------------------------------
+    def warm_up(self, world: str | None = None, preset: str | None = None, *,
+                on_status: Callable[[WarmUpStatus], None] | None = None) -> list[WarmUpStatus]:
+        """Load now what the first generation would otherwise load: the models, the node index and its
+        embedder, the English reader, and (given a world and preset) their pipeline's grid and planner.
+
+        Each step reports a WarmUpStatus (`running`, then `done` or `failed` with the error) through
+        `on_status`; a step that fails does not stop the next ones (the generation reports it again).
+        Safe to run beside a generation: each part loads under its own lock, once.
+        """
+        steps: list[tuple[str, str, Callable[[], Any]]] = [
+            ("models", "loading the models", self.load_models),
+            ("retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
+            ("reader", "loading the English reader", _warm_reader),
+        ]
+        if world is not None and preset is not None:
+            steps.append(("planner", f"preparing {world}'s map and planner", lambda: self._warm_planner(world, preset)))
+        statuses: list[WarmUpStatus] = []
+        for step, doing, run in steps:
+            if self._stop_warm_up.is_set():
+                return statuses
+            if on_status is not None:
+                on_status(WarmUpStatus(step, "running", doing))
+            try:
+                run()
+            except GroveError as exc:
+                status = WarmUpStatus(step, "failed", doing, str(exc))
+            except Exception as exc:  # noqa: BLE001 - any engine failure is reported on the status line, not raised
+                status = WarmUpStatus(step, "failed", doing, f"{type(exc).__name__}: {exc}")
+            else:
+                status = WarmUpStatus(step, "done", doing)
+            statuses.append(status)
+            if on_status is not None:
+                on_status(status)
+        with self._lock:
+            self._warm = all(status.state == "done" for status in statuses)
+        if on_status is not None:
+            on_status(WarmUpStatus("ready", "done" if self._warm else "failed", "ready to generate"))
+        return statuses
+
+    def start_warm_up(self, world: str | None = None, preset: str | None = None, *,
+                      on_status: Callable[[WarmUpStatus], None] | None = None) -> threading.Thread:
+        """`warm_up` in a background thread (the app and a batch start it and go on)."""
+        self._stop_warm_up.clear()
+        thread = threading.Thread(target=self.warm_up, args=(world, preset), kwargs={"on_status": on_status},
+                                  name="grove-warm-up", daemon=True)
+        thread.start()
+        return thread
+
+    @property
+    def warm(self) -> bool:
+        """Whether a warm-up finished with every step done."""
+        with self._lock:
+            return self._warm
+
+    def warm_up_retrieval(self) -> None:
+        """Open the node index and load the embedding model, so the first retrieval loads neither."""
+        retriever = self.retriever()
+        if self._retriever_factory is not None:
+            return  # a test's retriever: nothing of the real index or embedder to load
+        from grove_tui.generation.retrieval import embed_query
+
+        retriever.ensure_index()
+        embed_query("people walk to the exit")  # imports torch, loads the model and its traced query encoder
+
+    def _warm_planner(self, world: str, preset: str) -> None:
+        from grove_tui.errors import PlanningError
+
+        with self._lock:
+            if self._models is None or self._stop_warm_up.is_set():
+                return  # the models failed (already reported) or the session closed: build no pipeline now
+        planner = self.pipeline(world, preset).planner
+        free = planner.grid.free_cells()
+        if len(free) < 2:
+            return
+        # One short plan loads the numba kernels (compiled into the cache dir on the first run ever).
+        first, last = free[0], free[min(len(free) - 1, 50)]
+        try:
+            planner.plan(planner.grid.cell_to_world(*first), planner.grid.cell_to_world(*last))
+        except PlanningError:
+            pass  # two cells with no path between them have still loaded the kernels
 
     def retriever(self) -> Any:
         with self._lock:
@@ -250,8 +367,16 @@ class GroveSession:
                     self._retriever = NodeRetriever()
             return self._retriever
 
+    def loaded_models(self) -> list[Any]:
+        """The model instances loaded so far (each once), without loading any."""
+        with self._lock:
+            if self._models is None:
+                return []
+            return list({id(m): m for m in (self._models.roi, self._models.bt)}.values())
+
     def close(self) -> None:
-        """Stop the model processes; the session loads them again if used after."""
+        """Stop the model processes (and a background warm-up); the session loads them again if used after."""
+        self._stop_warm_up.set()
         with self._lock:
             if self._models is not None:
                 for llm in {id(m): m for m in (self._models.roi, self._models.bt)}.values():
@@ -320,11 +445,14 @@ class GroveSession:
         """A runnable simulation of a generated scenario, for a front end that steps it itself."""
         from grove_tui.simulation.simulation import Simulation
 
-        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world)
+        return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world,
+                                        params=pedestrian_params())
 
     def simulate(self, bundle: str | Path, seconds: float, *, cancel: threading.Event | None = None,
-                 runtime_planning: bool = True) -> SimulationSummary:
+                 runtime_planning: bool = True, model: str | None = None) -> SimulationSummary:
         """Run a bundle's scenario for `seconds`; give it trajectories.csv, events.jsonl and metrics.json.
+
+        `model`: the pedestrian model ("grove" or "lightsfm"); default the settings' simulation.pedestrian_model.
 
         The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
         """
@@ -336,7 +464,8 @@ class GroveSession:
         bundle = Path(bundle)
         scenario, _, _, _ = load_bundle(bundle)
         world = self.load_world(_world_name(scenario.world, bundle))
-        sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning)
+        sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning,
+                                       params=pedestrian_params(model))
         started = time.perf_counter()
         frame = sim.run(seconds, cancel=cancel)
         wall = time.perf_counter() - started
@@ -552,3 +681,14 @@ def _is_running(llm: Any) -> bool:
         return False
     running = getattr(llm, "running", None)
     return True if running is None else bool(running)
+
+
+def pedestrian_params(model: str | None = None) -> Any:
+    """SFMParams of a pedestrian model by name, or of the settings' simulation.pedestrian_model."""
+    from grove_tui.crowd.sfm import SFMParams
+    from grove_tui.settings import PEDESTRIAN_MODELS, load_settings
+
+    name = model if model is not None else load_settings().simulation.pedestrian_model
+    if name not in PEDESTRIAN_MODELS:
+        raise BadInputError(f"unknown pedestrian model {name!r}", hint=f"choose one of {', '.join(PEDESTRIAN_MODELS)}")
+    return SFMParams.named(name)

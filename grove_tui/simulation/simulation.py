@@ -129,9 +129,10 @@ class Simulation:
 
     @classmethod
     def from_scenario(cls, scenario: Any, bundle_dir: str | Path, world: Any = None, dt: float = 0.05,
-                      bt_rate: float = 10.0, runtime_planning: bool = True) -> Simulation:
+                      bt_rate: float = 10.0, runtime_planning: bool = True, params: Any = None) -> Simulation:
         """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
-        no-planner baseline); by default goals set while running are planned with Theta*."""
+        no-planner baseline); by default goals set while running are planned with Theta*.
+        `params`: the pedestrian model's SFMParams (default: the "grove" model)."""
         from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
         from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
@@ -143,7 +144,9 @@ class Simulation:
             candidate = bundle_dir / world_ref
             world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
         grid_path = bundle_dir / "grid.npz"
-        grid = load_grid(bundle_dir) if os.path.lexists(grid_path) else build_grid(world, resolution=scenario.resolution)
+        # a bundle without its grid: inflate by the people's largest radius, as generation did
+        grid = (load_grid(bundle_dir) if os.path.lexists(grid_path)
+                else build_grid(world, resolution=scenario.resolution, inflation=scenario.grid_inflation))
         # Every file is checked to be a regular file inside the bundle before it is read.
         fields = {field_id: load_field(bundle_dir, field_id, rel) for field_id, rel in scenario.fields.items()}
         documents = []
@@ -153,7 +156,7 @@ class Simulation:
         planner = ThetaStarPlanner(grid) if runtime_planning else None
         return cls.build(scenario.agents, documents, world=world, grid=grid, planner=planner,
                          walls=world.walls(), robot=scenario.robot, fields=fields, seed=scenario.seed, dt=dt,
-                         bt_rate=bt_rate, scenario=scenario)
+                         bt_rate=bt_rate, scenario=scenario, params=params)
 
     @classmethod
     def build(cls, agents, documents: list[TreeDocument], *, world: Any = None, grid: Any = None, planner: Any = None,

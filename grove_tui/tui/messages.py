@@ -37,6 +37,7 @@ class ModelsChanged(Message):
     statuses: list[Any]  # backend.ModelStatus
     loading: bool = False
     embedder: str = ""  # the node retriever's embedding model: "", "loading", "ready" or its error
+    warm_up: str = ""  # the backend's warm-up status line ("loading the models…"), "" when none runs
 
 
 @dataclass
@@ -59,10 +60,20 @@ class TokensFlushed(Message):
 
     stage: str
     text: str
-    tokens: int = 0  # tokens streamed in this stage so far (each TokenStreamed is one token)
+    tokens: int = 0  # tokens streamed in this attempt so far (each TokenStreamed is one token)
+    attempt: int = 1  # the stage's model call the text belongs to
 
     def can_replace(self, message: Message) -> bool:
-        return isinstance(message, TokensFlushed) and message.stage == self.stage
+        return isinstance(message, TokensFlushed) and (message.stage, message.attempt) == (self.stage, self.attempt)
+
+
+@dataclass
+class AttemptStarted(Message):
+    """The stage asks the model again (`attempt` 2 is the first retry); the text streamed before is discarded."""
+
+    stage: str
+    attempt: int
+    reason: str
 
 
 @dataclass

@@ -40,6 +40,8 @@ DOOR_CLEARANCE = 0.5
 # Walls are drawn as lines; `walkable()` removes this half-thickness around them so the
 # polygon does not connect rooms through walls (JuPedSim and similar tools need that).
 WALL_HALF_THICKNESS = 0.05
+# Half-width of the band that cuts a door opening out of its wall line (metres).
+DOOR_CUT = 0.02
 
 SNAKE_CASE = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
 
@@ -286,10 +288,27 @@ class World:
     def _room_walls(self) -> BaseGeometry:
         """Zone boundaries, shared edges merged once, with every door opening cut out."""
         outlines = unary_union([zone.polygon.boundary for zone in self._zones])
-        openings = [LineString(door.opening).buffer(0.02, cap_style="flat") for door in self.doors()]
-        if openings:
-            outlines = outlines.difference(unary_union(openings))
-        return outlines
+        doors = self.doors()
+        if not doors:
+            return outlines
+        # Each opening is cut with a thin band (door positions may sit a little off the line). The
+        # band also bites DOOR_CUT into walls that run across the door line, such as the side walls
+        # of a corridor whose door spans its whole end; those bits go back, so jambs stay closed
+        # corners instead of 2 cm gaps whose two loose wall ends each repelled (issue 19).
+        openings = [LineString(door.opening) for door in doors]
+        bands = unary_union([line.buffer(DOOR_CUT, cap_style="flat") for line in openings])
+        kept = outlines.difference(bands)
+        cut = outlines.intersection(bands)
+        index = shapely.STRtree(openings)
+        across = []
+        for x1, y1, x2, y2 in _segments_of(cut):
+            length = ((x2 - x1) ** 2 + (y2 - y1) ** 2) ** 0.5
+            if length <= 1e-12:
+                continue
+            door = doors[int(index.nearest(Point((x1 + x2) / 2.0, (y1 + y2) / 2.0)))]
+            if abs((x2 - x1) * door.along[0] + (y2 - y1) * door.along[1]) / length < 0.5:
+                across.append(LineString([(x1, y1), (x2, y2)]))
+        return unary_union([kept, *across]) if across else kept
 
     @cached_property
     def _wall_segments(self) -> np.ndarray:

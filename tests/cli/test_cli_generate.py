@@ -125,3 +125,21 @@ def test_batch_file_errors_exit_2(tmp_path, model):
 def test_simulate_a_missing_bundle_exits_2(tmp_path):
     result = invoke(["simulate", str(tmp_path / "nothing"), "--seconds", "1"])
     assert result.exit_code == EXIT_BAD_INPUT and "no such bundle directory" in result.stderr
+
+
+def test_progress_says_when_the_model_is_asked_again():
+    import io
+
+    from rich.console import Console
+
+    from grove_tui.cli.generate import Progress
+    from grove_tui.generation.pipeline import AttemptStarted, StageStarted, TokenStreamed
+
+    console = Console(file=io.StringIO(), width=100, record=True)
+    progress = Progress(console)
+    progress(StageStarted("synthesis"))
+    for _ in range(3):
+        progress(TokenStreamed("synthesis", "x"))
+    progress(AttemptStarted("synthesis", 2, "cut off at 512 tokens"))
+    assert progress.tokens == 0, "the token count is the running attempt's"
+    assert "synthesis attempt 2 (cut off at 512 tokens)" in console.export_text()

@@ -106,3 +106,23 @@ def test_not_a_mapping(tmp_path):
     path.write_text("- a\n- b\n")
     with pytest.raises(PresetError, match="list.yaml: expected a mapping"):
         load_preset(str(path))
+
+
+def test_grid_inflation_follows_the_agents_radius_unless_the_preset_sets_it():
+    data = _base()
+    data["agent"]["radius"] = 0.3
+    assert preset_from_dict(data, source=Path("p.yaml")).planner.inflation == 0.3
+    data["planner"]["inflation"] = 0.4
+    preset = preset_from_dict(data, source=Path("p.yaml"))
+    assert (preset.agent_radius, preset.planner.inflation) == (0.3, 0.4)
+
+
+def test_exit_choice_and_radius_are_checked():
+    data = _base()
+    data["exit_choice"] = "busiest"
+    with pytest.raises(PresetError, match="exit_choice must be one of nearest, least_congested"):
+        preset_from_dict(data, source=Path("bad.yaml"))
+    data = _base()
+    data["agent"]["radius"] = 5.0
+    with pytest.raises(PresetError, match=r"agent.radius must be 0.05..2.0 m"):
+        preset_from_dict(data, source=Path("bad.yaml"))

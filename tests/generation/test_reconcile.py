@@ -157,3 +157,17 @@ def test_wandering_at_the_destination_is_kept_after_walking_there(hospital):
                         [DraftGroup("visitors", 3, "ward_a", tree)])
     assert groups[0].tree == seq(goto("ward_a"), tree) and groups[0].spawn == "entrance_lobby"
     assert any("walks to ward_a before" in n for n in notes)
+
+
+def test_without_a_group_read_from_the_sentence_the_report_says_the_groups_are_guessed(hospital, grid):
+    prompt = "The cafeteria gets busy around noon."
+    preset = load_preset("normal")
+    reading = read_prompt(prompt, hospital)
+    assert reading.groups == ()
+    selection = select_rois(hospital, preset, prompt, reading=reading)
+    draft = Draft((DraftGroup("diners", 5, "cafeteria", goto("cafeteria")),))
+    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("GoTo",), reading=reading)
+    assert any("no group of people" in note for note in post.notes)
+    report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
+    assert report.groups == () and not report.ok
+    assert any("the model's guess" in line for line in report.unhonoured)

@@ -67,3 +67,85 @@ def test_reads_the_real_proc_stat_and_answers_within_the_usable_cores(tmp_path):
     assert read_cpu_times(str(broken)) is None
     broken.write_text("cpu  a b c d e\n")
     assert read_cpu_times(str(broken)) is None
+
+
+# ---- llama.cpp's thread count: a pure policy over the machine's budget and its idle cores ----------
+
+from grove_tui.cpu import CoreBudget, cgroup_cpu_quota, llm_thread_count, physical_cores  # noqa: E402
+
+
+@pytest.mark.parametrize("idle", [1, 2, 8, 16])
+def test_a_workstation_never_runs_two_threads(idle):
+    # 16 usable cores: a busy core or two sampled at start (the app itself) must not cut llama.cpp to two.
+    assert llm_thread_count(16, idle) >= 8
+    assert llm_thread_count(16, 16) == 16
+
+
+def test_a_workstation_uses_the_idle_cores_it_has():
+    assert llm_thread_count(12, 10) == 10
+    assert llm_thread_count(8, 3) == 4  # half its budget at least
+
+
+@pytest.mark.parametrize(("budget", "idle", "threads"), [
+    (1, 1, 1),  # one core: the one thread
+    (2, 2, 1),  # an idle 2-core machine: one core stays with the UI and the SFM
+    (2, 1, 1),
+    (4, 4, 3),
+    (4, 2, 2),  # busy cores are left alone
+    (4, 1, 1),
+])
+def test_a_small_machine_leaves_a_core_and_takes_only_idle_ones(budget, idle, threads):
+    assert llm_thread_count(budget, idle) == threads
+
+
+def test_the_budget_counts_physical_cores_and_the_cgroup_quota():
+    assert CoreBudget(cpus=16, physical=8, quota=None).cores == 8  # hyper-thread siblings add nothing
+    assert CoreBudget(cpus=16, physical=16, quota=4.0).cores == 4  # a container limited to 4 CPUs
+    assert CoreBudget(cpus=16, physical=16, quota=1.5).cores == 1  # a second thread would be throttled
+    assert CoreBudget(cpus=4, physical=4, quota=0.5).cores == 1
+    assert CoreBudget(cpus=2, physical=2, quota=None).cores == 2  # an affinity mask of 2 CPUs on a big host
+
+
+def _topology(root, cores):
+    for cpu, (package, core) in enumerate(cores):
+        folder = root / f"cpu{cpu}" / "topology"
+        folder.mkdir(parents=True)
+        (folder / "physical_package_id").write_text(f"{package}\n")
+        (folder / "core_id").write_text(f"{core}\n")
+
+
+def test_physical_cores_count_hyperthread_siblings_once(tmp_path):
+    _topology(tmp_path, [(0, 0), (0, 1), (0, 0), (0, 1), (1, 0), (1, 0)])
+    assert physical_cores(range(6), tmp_path) == 3
+    assert physical_cores([0, 2], tmp_path) == 1  # an affinity mask holding two siblings of one core
+    assert physical_cores(range(8), tmp_path) == 8  # no topology for cpu6: every CPU counts
+
+
+def test_cgroup_v2_quota_is_read_up_the_hierarchy(tmp_path):
+    (tmp_path / "proc").write_text("0::/user.slice/app\n")
+    leaf = tmp_path / "cg" / "user.slice" / "app"
+    leaf.mkdir(parents=True)
+    (leaf / "cpu.max").write_text("max 100000\n")
+    assert cgroup_cpu_quota(tmp_path / "cg", tmp_path / "proc") is None
+    (leaf.parent / "cpu.max").write_text("250000 100000\n")  # the slice above limits it to 2.5 CPUs
+    assert cgroup_cpu_quota(tmp_path / "cg", tmp_path / "proc") == 2.5
+    (leaf / "cpu.max").write_text("50000 100000\n")
+    assert cgroup_cpu_quota(tmp_path / "cg", tmp_path / "proc") == 0.5
+
+
+def test_cgroup_v1_quota_and_unlimited(tmp_path):
+    (tmp_path / "proc").write_text("4:memory:/docker/x\n2:cpu,cpuacct:/docker/x\n")
+    folder = tmp_path / "cg" / "cpu,cpuacct" / "docker" / "x"
+    folder.mkdir(parents=True)
+    (folder / "cpu.cfs_quota_us").write_text("-1\n")
+    (folder / "cpu.cfs_period_us").write_text("100000\n")
+    assert cgroup_cpu_quota(tmp_path / "cg", tmp_path / "proc") is None
+    (folder / "cpu.cfs_quota_us").write_text("300000\n")
+    assert cgroup_cpu_quota(tmp_path / "cg", tmp_path / "proc") == 3.0
+    assert cgroup_cpu_quota(tmp_path / "cg", tmp_path / "missing") is None
+
+
+def test_the_real_budget_is_within_the_affinity_mask():
+    budget = cpu.core_budget()
+    assert 1 <= budget.cores <= budget.cpus <= (os.cpu_count() or 1)
+    assert 1 <= cpu.default_llm_threads() <= budget.cores

@@ -14,7 +14,7 @@ from grove_tui.navigation import grid as grid_module
 from grove_tui.navigation.grid import GridError, OccupancyGrid, build_grid
 from grove_tui.world import World, load_world, parse_world
 
-SHIPPED = ("hospital", "office", "residential", "airport")
+SHIPPED = ("hospital", "office", "residential", "airport", "station")
 
 
 def components(grid: OccupancyGrid) -> np.ndarray:

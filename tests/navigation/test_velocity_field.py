@@ -183,3 +183,37 @@ def test_world_fields_lead_every_cell_to_each_exit(name):
         exit_cell = planner.snap(*exit_point, door.name, "exit")
         np.testing.assert_array_equal(field.reachable, planner.components == planner.components[exit_cell])
         assert_following_reaches_exit(grid, field, exit_cell, samples=120)
+
+
+def _open_planner(width: float = 30.0, height: float = 10.0, resolution: float = 0.1) -> ThetaStarPlanner:
+    """An empty walled room as a grid (no world needed): walls one cell thick all round."""
+    cols, rows = int(width / resolution), int(height / resolution)
+    occupied = np.zeros((rows, cols), dtype=bool)
+    occupied[0, :] = occupied[-1, :] = occupied[:, 0] = occupied[:, -1] = True
+    return ThetaStarPlanner(OccupancyGrid((0.0, 0.0), resolution, occupied, 0.0), landmarks=0)
+
+
+def test_least_congested_exits_send_people_to_the_far_door_only_when_the_near_queue_is_longer():
+    from grove_tui.navigation.velocity_field import exit_walks, least_congested_exits, nearest_exits
+
+    planner = _open_planner()
+    exits = {"west": ((0.5, 5.0), 1.0), "east": ((29.5, 5.0), 1.0)}
+    crowd = [(2.0 + 0.5 * (k % 10), 2.0 + 0.6 * (k // 10)) for k in range(100)]  # all by the west door
+    names, walks = exit_walks(planner, {n: p for n, (p, _w) in exits.items()}, crowd[:1])
+    assert walks[names.index("west"), 0] == pytest.approx(math.dist((2.0, 2.0), (0.5, 5.0)), abs=0.2)  # metres
+    assert set(nearest_exits(planner, {n: p for n, (p, _w) in exits.items()}, crowd)) == {"west"}
+    chosen = least_congested_exits(planner, exits, crowd, [1.34] * len(crowd))
+    # a 27 m detour (about 20 s) pays off once ~30 people queue at a 1 m door (1.6 /s); the west door
+    # drains from the start, the east one only once walkers arrive, so the west keeps more
+    assert 15 < chosen.count("east") < 50 < chosen.count("west")
+    # the first to reach the west door, before any queue could form there, all take it
+    west_walk = exit_walks(planner, {"west": (0.5, 5.0)}, crowd)[1][0]
+    first = np.argsort(west_walk, kind="stable")[:20]
+    assert all(chosen[k] == "west" for k in first)
+    # a handful of people never walk to the far door: there is no queue worth avoiding
+    few = least_congested_exits(planner, exits, crowd[:5], [1.34] * 5)
+    assert few == ["west"] * 5
+    # a wider door drains faster, so it takes more of them
+    wide = least_congested_exits(planner, {"west": ((0.5, 5.0), 1.0), "east": ((29.5, 5.0), 3.0)}, crowd,
+                                 [1.34] * len(crowd))
+    assert wide.count("east") > chosen.count("east")

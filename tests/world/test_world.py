@@ -23,7 +23,7 @@ from grove_tui.world import (
 )
 
 BAD = TEST_DATA / "worlds_bad"
-SHIPPED = ("hospital", "office", "residential", "airport")
+SHIPPED = ("hospital", "office", "residential", "airport", "station")
 
 MINI = """\
 name: mini
@@ -406,3 +406,37 @@ def test_mangled_worlds_give_problems_never_crashes():
             loaded += 1
             assert world.walls().shape[1] == 4
     assert rejected > 20
+
+
+CORRIDOR_INTO_HALL = """
+name: corridor_into_hall
+description: A 2 m corridor whose whole east end is a door into a hall.
+zones:
+  - name: corridor
+    type: corridor
+    description: Corridor.
+    boundary: [[0, 4], [10, 4], [10, 6], [0, 6]]
+    doors:
+      - {name: corridor_end, position: [10, 5], width: 2.0, leads_to: hall}
+  - name: hall
+    type: hall
+    description: Hall.
+    boundary: [[10, 0], [20, 0], [20, 10], [10, 10]]
+"""
+
+
+def test_a_door_spanning_a_whole_wall_edge_leaves_clean_jambs():
+    """Issue 19: the cut used to bite 2 cm off the corridor's side walls, leaving gaps at both jambs."""
+    from grove_tui.world import parse_world
+
+    world, problems = parse_world(CORRIDOR_INTO_HALL, "corridor_into_hall.yaml")
+    assert not problems
+    walls = world.walls()
+    ends = {(round(x, 9), round(y, 9)) for x1, y1, x2, y2 in walls for x, y in ((x1, y1), (x2, y2))}
+    # The side walls run right up to the door line, where the hall's wall takes over: one corner each.
+    assert (10.0, 4.0) in ends and (10.0, 6.0) in ends
+    assert not any(9.9 < x < 10.0 for x, _y in ends), sorted(ends)
+    assert _segments_on_line_x(walls, 10.0) == [(0.0, 4.0), (6.0, 10.0)]
+    # ...and the opening itself stays open for the length of the door.
+    lengths = np.hypot(walls[:, 2] - walls[:, 0], walls[:, 3] - walls[:, 1])
+    assert lengths.sum() == pytest.approx(2 * 10 + 2 + 4 * 10 - 2)

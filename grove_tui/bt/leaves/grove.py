@@ -180,7 +180,7 @@ class Queue(AgentStatefulAction):
                 sim.counters.served += 1
                 sim.event("queue_served", row, queue.name)
                 sim.status[row] = f"served at {queue.name}"
-                _go(sim, row, [_aside(sim, queue)], 0.3)
+                _go(sim, row, [aside_spot(sim, queue)], 0.3)
                 return SUCCESS
         return RUNNING
 
@@ -200,9 +200,11 @@ class Queue(AgentStatefulAction):
         return self.arrived or math.hypot(sim.px[row] - slot[0], sim.py[row] - slot[1]) > ARRIVAL_TOLERANCE
 
 
-def _aside(sim, queue: ServiceQueue):
+def aside_spot(sim, queue: ServiceQueue):
     """A free spot beside the line, away from where earlier served people stand: everyone stepping
-    to one spot would pile up next to the head of the line for the rest of the run."""
+    to one spot would pile up next to the head of the line for the rest of the run.
+
+    `sim` needs only is_free and nearest_free, so generation can predict the spots on its grid."""
     sx, sy = queue.service_point
     dx, dy = queue.direction
     first = None

@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 import threading
 import time
+from textwrap import shorten
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -30,6 +31,7 @@ STAGES = {
     "planning": "Planning",
 }
 STREAM_TAIL_CHARS = 1600
+ATTEMPT_REASON_CHARS = 160  # a draft error can be long; the header of a retry keeps to a line or two
 FLUSH_SECONDS = 0.05  # ~20 Hz: smooth enough to read, cheap for the UI thread
 UI_SWITCH_INTERVAL = 0.001  # seconds; Python's default 0.005 lets a busy worker hold the GIL 5x longer
 PROGRESS_SECONDS = 0.5  # how often the running stage's elapsed time, rate and ETA are redrawn
@@ -76,6 +78,7 @@ class TokenBuffer:
         self._interval = interval
         self._lock = threading.Lock()
         self._stage = ""
+        self._attempt = 1
         self._text: list[str] = []
         self._tokens = 0
         self._dirty = False
@@ -86,7 +89,7 @@ class TokenBuffer:
         with self._lock:
             if stage != self._stage:
                 self._flush_locked()
-                self._stage, self._text, self._tokens = stage, [], 0
+                self._stage, self._attempt, self._text, self._tokens = stage, 1, [], 0
             self._text.append(text)
             self._tokens += 1
             self._dirty = True
@@ -102,12 +105,19 @@ class TokenBuffer:
         with self._lock:
             self._flush_locked()
 
+    def restart(self, stage: str, attempt: int, reason: str) -> None:
+        """The stage asks the model again: post what the old attempt streamed, then start an empty text."""
+        with self._lock:
+            self._flush_locked()
+            self._stage, self._attempt, self._text, self._tokens = stage, attempt, [], 0
+            self._post(msg.AttemptStarted(stage, attempt, reason))
+
     def _flush_locked(self) -> None:
         if self._timer is not None:
             self._timer.cancel()
             self._timer = None
         if self._dirty:
-            self._post(msg.TokensFlushed(self._stage, "".join(self._text), self._tokens))
+            self._post(msg.TokensFlushed(self._stage, "".join(self._text), self._tokens, self._attempt))
             self._dirty = False
         self._last_flush = time.monotonic()
 
@@ -120,18 +130,20 @@ class StageProgress:
     started: float  # time.monotonic()
     tokens: int = 0
     first_token: float | None = None  # when the first token arrived (before it the model reads the prompt)
+    attempt: int = 1  # the model call running now; tokens, rate and ETA are this attempt's
 
     def describe(self, now: float, expected_tokens: int | None, bound: bool) -> tuple[str, str, str]:
         """(time, tokens, detail) cells; `bound` marks an ETA from the token cap, not from experience."""
         elapsed = now - self.started
         time_cell = f"{elapsed:.1f}s"
+        retry = f"attempt {self.attempt} · " if self.attempt > 1 else ""
         if self.tokens == 0 or self.first_token is None:
             if self.stage in MODEL_STAGES:
-                return time_cell, "", "reading the prompt…"
-            return time_cell, "", ""
+                return time_cell, "", retry + "reading the prompt…"
+            return time_cell, "", retry.removesuffix(" · ")
         writing = max(now - self.first_token, 1e-3)
         rate = self.tokens / writing
-        detail = f"{rate:.1f} tok/s"
+        detail = f"{retry}{rate:.1f} tok/s"
         if expected_tokens and rate > 0:
             remaining = max(expected_tokens - self.tokens, 0) / rate
             detail += f" · ETA {'≤' if bound else '~'}{remaining:.0f}s"
@@ -153,7 +165,8 @@ talks about), **Retrieval** (behavior nodes that fit), **Tree synthesis** (the m
 groups and their trees, streamed below), **Post-processing** (trees become BT.CPP XML per agent)
 and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** retries. The
 running stage shows its elapsed time, tokens, tokens/s and an ETA; **←/→** scroll the table
-sideways when a stage's detail is longer than the screen.
+sideways when a stage's detail is longer than the screen. When the model is asked again (its
+answer was cut off or failed the draft check), the output starts afresh under "attempt N (why)".
 """
 
     BINDINGS = [
@@ -169,6 +182,7 @@ sideways when a stage's detail is longer than the screen.
         self._generating = False
         self._started: dict[str, float] = {}
         self._progress: StageProgress | None = None
+        self._attempt_header = ""  # the output panel's first line during a retry
         self._switch_interval = sys.getswitchinterval()
 
     @property
@@ -222,6 +236,7 @@ sideways when a stage's detail is longer than the screen.
         for key in STAGES:
             for column, value in (("state", "·"), ("time", ""), ("tokens", ""), ("detail", "")):
                 table.update_cell(key, column, value)
+        self._attempt_header = ""
         self.query_one("#stream", Static).update("")
         self.run_generation(self.request, self._cancel)
 
@@ -231,12 +246,23 @@ sideways when a stage's detail is longer than the screen.
         buffer = TokenBuffer(self.post_message)
         current = {"stage": ""}
 
+        writing: set[str] = set()  # stages whose model has streamed a token
+
         def on_event(event: Any) -> None:
             kind = type(event).__name__
             if kind == "TokenStreamed":
+                if event.stage not in writing:
+                    # The model process surely exists once it writes (it restarts lazily after a
+                    # cancel): from now on it gives way to this process, so keys answer while it writes.
+                    writing.add(event.stage)
+                    self.grove.backend.yield_cpu_to_the_app()
                 buffer.add(event.stage, event.text)
+            elif kind == "AttemptStarted":
+                buffer.restart(event.stage, int(event.attempt), str(event.reason))
             elif kind == "StageStarted":
                 buffer.flush()
+                if event.stage in MODEL_STAGES:
+                    self.grove.backend.yield_cpu_to_the_app()
                 current["stage"] = event.stage
                 self.post_message(msg.StageStarted(event.stage))
             elif kind == "StageFinished":
@@ -275,6 +301,7 @@ sideways when a stage's detail is longer than the screen.
     # messages -------------------------------------------------------------------------------------
     def on_stage_started(self, message: msg.StageStarted) -> None:
         self._stage = message.stage
+        self._attempt_header = ""
         self._progress = StageProgress(message.stage, monotonic())
         if message.stage == "retrieval" and not self.grove.backend.embedder_ready():
             self.query_one("#stream", Static).update("loading the embedding model (first generation only)…")
@@ -297,8 +324,25 @@ sideways when a stage's detail is longer than the screen.
         table.update_cell(message.stage, "tokens", f"{message.prompt_tokens}+{message.completion_tokens}" if tokens else "")
         table.update_cell(message.stage, "detail", message.detail, update_width=True)
 
+    def on_attempt_started(self, message: msg.AttemptStarted) -> None:
+        """A retry: the output panel starts a fresh section headed by why, the table counts the attempt."""
+        self._attempt_header = f"── attempt {message.attempt} ({shorten(message.reason, ATTEMPT_REASON_CHARS)}) ──\n"
+        self.query_one("#stream", Static).update(self._attempt_header)
+        if message.stage in STAGES:
+            self.query_one("#stream", Static).border_title = (
+                f"Model output · {STAGES[message.stage]} · attempt {message.attempt}")
+        progress = self._progress
+        if progress is not None and progress.stage == message.stage:
+            progress.attempt = message.attempt
+            progress.tokens = 0
+            progress.first_token = None
+        self.show_progress()
+
     def on_tokens_flushed(self, message: msg.TokensFlushed) -> None:
-        self.query_one("#stream", Static).update(message.text[-STREAM_TAIL_CHARS:])
+        # The panel's size is set by the layout (1fr), never by its text: repaint it alone, without a
+        # layout pass over the whole screen 20 times a second while the model writes.
+        self.query_one("#stream", Static).update(self._attempt_header + message.text[-STREAM_TAIL_CHARS:],
+                                                 layout=False)
         progress = self._progress
         if progress is not None and progress.stage == message.stage and message.tokens:
             if progress.first_token is None:

@@ -19,6 +19,7 @@ from grove_tui.tui.widgets.map_view import MapView
 from grove_tui.tui.widgets.prompt_input import PromptInput
 
 if TYPE_CHECKING:
+    from grove_tui.services.backend import WarmUpStatus
     from grove_tui.tui.app import GroveApp
 
 SEED_DIGITS = 9  # any seed a user types fits numpy's 32-bit seeds
@@ -117,6 +118,7 @@ whether it is loaded yet.
     @work(thread=True, exclusive=True, group="catalogue", exit_on_error=False, description="listing worlds")
     def load_catalogue(self) -> None:
         backend = self.grove.backend
+        names: list[str] = []
         try:
             names = backend.list_worlds()
         except Exception as exc:  # an engine bug must show, not kill the app
@@ -126,23 +128,27 @@ whether it is loaded yet.
         self.post_message(msg.PresetsListed(backend.presets()))
         self.post_message(msg.ModelsChanged(backend.model_status(), loading=self.grove.settings.ui.preload_models))
         if self.grove.settings.ui.preload_models:
-            self.preload_models()
+            self.preload_models(self.grove.initial_world or (names[0] if names else None), self.grove.initial_preset)
 
     @work(thread=True, exclusive=True, group="models", exit_on_error=False, description="loading models")
-    def preload_models(self) -> None:
-        """Warm everything the first generation needs: the GGUF models, then the retriever's embedder."""
+    def preload_models(self, world: str | None, preset: str | None) -> None:
+        """Warm everything the first generation needs (backend.warm_up); the panel shows each step."""
         backend = self.grove.backend
+        embedder = ""
+
+        def report(status: WarmUpStatus) -> None:
+            nonlocal embedder
+            if status.step == "retrieval":
+                embedder = {"running": "loading", "done": "ready"}.get(status.state, status.error or "failed")
+            loading = status.step == "models" and status.state == "running"
+            self.post_message(msg.ModelsChanged(backend.model_status(), loading=loading, embedder=embedder,
+                                                warm_up="" if status.step == "ready" and status.state == "done" else status.text))
+
         try:
-            backend.load_models()
-        except Exception:  # the status panel shows the model error next to its role
-            pass
-        self.post_message(msg.ModelsChanged(backend.model_status(), embedder="loading"))
-        try:
-            backend.warm_up_retriever()
-        except Exception as exc:  # retrieval will say so again; the panel says it now
-            self.post_message(msg.ModelsChanged(backend.model_status(), embedder=f"{type(exc).__name__}: {exc}"))
-            return
-        self.post_message(msg.ModelsChanged(backend.model_status(), embedder="ready"))
+            backend.warm_up(world, preset, on_status=report)
+        except Exception as exc:  # an engine bug must show on the panel, not kill the app
+            self.post_message(msg.ModelsChanged(backend.model_status(), embedder=embedder,
+                                                warm_up=f"warm-up failed: {describe_error(exc).text}"))
 
     @work(thread=True, exclusive=True, group="world", exit_on_error=False, description="loading world")
     def load_world(self, name: str) -> None:
@@ -191,7 +197,9 @@ whether it is loaded yet.
         problems = self.model_problems()
         if message.embedder not in ("", "loading", "ready"):
             problems.append(f"embedder: {message.embedder}")
-        if not problems and all(status.loaded for status in message.statuses) and message.embedder == "ready":
+        if message.warm_up:
+            lines.append(message.warm_up)  # a warm-up step still running (or failed)
+        elif not problems and all(status.loaded for status in message.statuses) and message.embedder == "ready":
             lines.append("ready to generate")
         panel = self.query_one("#models", Static)
         panel.update("\n".join(lines) or "no models found")
