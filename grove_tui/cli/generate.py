@@ -208,8 +208,8 @@ def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite:
 @click.option("--resume", is_flag=True,
               help="Skip jobs an earlier run of this --out completed with the same inputs (batch-state.jsonl).")
 @click.option("--ray", "ray_address", is_flag=False, flag_value="local", default=None, metavar="[ADDRESS]",
-              help="Run the jobs on Ray actors: alone a private local Ray, or `auto` / `ray://host:port` for a "
-                   "cluster (needs ./install.sh cluster).")
+              help="Run the jobs on Ray actors: alone a private local Ray, or `auto` / `host:port` / "
+                   "`ray://host:port` for a running cluster (needs ./install.sh cluster).")
 @click.option("--workers", type=click.IntRange(1, 100_000), default=None,
               help="Ray actors to start (default: one per CPU of the Ray cluster).")
 @click.option("--ray-return", is_flag=True,

@@ -18,12 +18,14 @@ process. Where its bundle is written depends on what the worker sees:
 
 from __future__ import annotations
 
+import hashlib
 import os
 import secrets
 import stat
 import tempfile
 from collections import defaultdict
 from collections.abc import Callable, Sequence
+from functools import cache
 from pathlib import Path, PurePosixPath
 from typing import Any
 
@@ -61,6 +63,10 @@ class BatchWorker:
         # Loading starts with the actor, not with its first job: the driver is still placing the others.
         self.session.start_warm_up()
 
+    def package(self) -> tuple[str, str]:
+        """Where this worker imports grove_tui from, and the digest of that code (`package_fingerprint`)."""
+        return package_fingerprint()
+
     def sees(self, probe: str, token: str) -> bool:
         """Whether this worker reads the driver's probe file, that is, shares the driver's --out."""
         try:
@@ -92,6 +98,34 @@ class BatchWorker:
 
     def close(self) -> None:
         self.session.close()
+
+
+@cache
+def package_fingerprint() -> tuple[str, str]:
+    """The folder this process imports grove_tui from, and a SHA-256 of every Python source in it.
+
+    The digest, not the folder, decides whether a worker runs the driver's code: on another node the
+    same code sits at another path, and on this machine another checkout may sit at the same one.
+    """
+    import grove_tui
+
+    root = Path(grove_tui.__file__).resolve().parent
+    digest = hashlib.sha256()
+    for source in sorted(root.rglob("*.py")):
+        digest.update(source.relative_to(root).as_posix().encode() + b"\0")
+        digest.update(hashlib.sha256(source.read_bytes()).digest())
+    return str(root), digest.hexdigest()
+
+
+def check_same_package(driver: tuple[str, str], workers: Sequence[tuple[str, str]]) -> None:
+    """RuntimeFailure when a worker's grove_tui (`package_fingerprint`) is not the driver's code."""
+    for where, digest in workers:
+        if digest != driver[1]:
+            # Another version would write other bundles under the same inputs hash, and resume would trust them.
+            raise RuntimeFailure(
+                f"a Ray worker imports grove_tui from {where}, whose code differs from this driver's "
+                f"({driver[0]}): its bundles would not be the one-process batch's",
+                hint="Install the same GROVE-TUI on every node, or run the driver from the copy the workers import.")
 
 
 def _relocated(record: JobRecord, local: str, out_dir: str) -> JobRecord:
@@ -154,24 +188,29 @@ def _import_ray() -> Any:
 
 
 def _connect(ray: Any, address: str, workers: int | None) -> None:
-    """`local`: a private Ray on this machine; `auto` or `ray://host:port`: an existing cluster."""
+    """`local`: a private Ray on this machine; `auto`, `host:port` (its GCS) or `ray://host:port`: an
+    existing cluster."""
     # The workers read the same GROVE_* settings (cache folder, model folder, threads) as the driver,
     # so a job gives the bundle it gives in one process.
     env = {key: value for key, value in os.environ.items() if key.startswith("GROVE_")}
     options: dict[str, Any] = {"runtime_env": {"env_vars": env}, "log_to_driver": False,
                                "include_dashboard": False, "logging_level": "warning"}
+    # Workers on this machine, of a private Ray or of a cluster started beforehand with `ray start`,
+    # import the driver's own grove_tui, not whichever the folder they start in or the environment's
+    # install would give (a checkout beside an installed copy). On other nodes the folder is usually
+    # absent and Python skips it; `check_same_package` refuses workers whose code still differs.
+    package_root = str(Path(__file__).resolve().parents[2])
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (package_root, os.environ.get("PYTHONPATH")) if p)
     try:
         if address == "local":
-            # A private Ray's workers import the driver's own grove_tui, not whichever the folder they
-            # start in or the environment's install would give (a checkout beside an installed copy).
-            package_root = str(Path(__file__).resolve().parents[2])
-            env["PYTHONPATH"] = os.pathsep.join(p for p in (package_root, os.environ.get("PYTHONPATH")) if p)
             ray.init(address="local", num_cpus=workers or os.cpu_count() or 1, **options)
         else:
             ray.init(address=address, **options)
     except (ConnectionError, ValueError, RuntimeError) as exc:
         raise RuntimeFailure(f"cannot connect to Ray at {address!r}: {exc}",
-                             hint="Start one with `ray start --head`, or use --ray local.") from None
+                             hint="Start one with `ray start --head`, or use --ray local. A cluster with token "
+                                  "authentication (Ray's default) needs its token in RAY_AUTH_TOKEN or "
+                                  "~/.ray/auth_token.") from None
 
 
 def _next_job(queue: Sequence[BatchJob], prompt: tuple[str, str, str] | None) -> int:
@@ -209,14 +248,16 @@ def run_on_ray(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str], 
         actors = [worker_class.remote(*models) for _ in range(count)]
         sends_back: dict[Any, bool] = {}
 
-        def check_sight(new: list[Any]) -> None:
+        def check_workers(new: list[Any]) -> None:
+            """New actors must run the driver's code; then: does each see --out, or send files back?"""
+            check_same_package(package_fingerprint(), ray.get([actor.package.remote() for actor in new]))
             if return_files:
                 sends_back.update((actor, True) for actor in new)
                 return
             seen = ray.get([actor.sees.remote(str(probe), token) for actor in new])
             sends_back.update((actor, not sees) for actor, sees in zip(new, seen))
 
-        check_sight(actors)
+        check_workers(actors)
         idle = list(actors)
         queue = list(jobs)
         running: dict[Any, tuple[Any, BatchJob]] = {}
@@ -245,7 +286,7 @@ def run_on_ray(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str], 
                     actors.remove(actor)
                     actor = worker_class.remote(*models)
                     actors.append(actor)
-                    check_sight([actor])
+                    check_workers([actor])
                 if record.status == "fatal":
                     raise (Cancelled if record.exit_code == EXIT_CANCELLED else ModelError)(record.message)
                 if record.ok and files:  # a worker without --out sent the job's files back
