@@ -83,6 +83,10 @@ def loopback_cluster(monkeypatch: pytest.MonkeyPatch, cpus: int) -> Iterator[str
     # cluster, which this switch (named for Windows and macOS, read everywhere) makes it; then
     # the GCS and the raylet listen on loopback only.
     monkeypatch.setenv("RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER", "0")
+    # This process imported Ray already, which read the switch then; the driver must resolve 127.0.0.1 alike.
+    from ray._private import ray_constants
+
+    monkeypatch.setattr(ray_constants, "ENABLE_RAY_CLUSTER", False)
     # Ray 2.60 starts clusters with token authentication; this cluster's token, for it and the driver.
     monkeypatch.setenv("RAY_AUTH_MODE", "token")
     monkeypatch.setenv("RAY_AUTH_TOKEN", secrets.token_hex(32))
