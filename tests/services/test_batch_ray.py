@@ -26,7 +26,7 @@ from click.testing import CliRunner
 
 from grove_tui.cli import main
 from grove_tui.errors import EXIT_RUNTIME_FAILURE
-from grove_tui.services.cluster import _connect, package_fingerprint
+from grove_tui.services.cluster import package_fingerprint
 from grove_tui.services.dataset import STATE_FILE, read_records
 
 # One world and preset: each process (and each Ray worker) builds its pipeline once, which dominates a
@@ -69,9 +69,11 @@ CLUSTER_START_SECONDS = 240
 
 
 @contextmanager
-def loopback_cluster(monkeypatch: pytest.MonkeyPatch, cpus: int) -> Iterator[str]:
-    """A Ray head started with `ray start --head` on 127.0.0.1, stopped on exit even on failure; its address.
+def loopback_cluster(cpus: int) -> Iterator[tuple[str, dict[str, str]]]:
+    """A Ray head started with `ray start --head` on 127.0.0.1, stopped on exit even on failure.
 
+    Yields its address and the environment a driver needs to join it. Ray reads these variables when
+    it is imported, so drivers run as processes of their own, as `grove batch` runs for a user.
     Not `ray stop` afterwards: it stops every Ray process of the machine, other people's runs included.
     `ray start --block` stays in the foreground as the cluster's parent, so ending that process (and
     the process group it leads) stops this cluster and nothing else.
@@ -79,26 +81,22 @@ def loopback_cluster(monkeypatch: pytest.MonkeyPatch, cpus: int) -> Iterator[str
     # Ray's unix sockets live under the temp dir and their paths must stay under 108 bytes.
     temp_dir = tempfile.mkdtemp(prefix="grove-ray-")
     port = _free_port()
-    # Ray rewrites 127.0.0.1 into the machine's routable address unless it runs as a one-node
-    # cluster, which this switch (named for Windows and macOS, read everywhere) makes it; then
-    # the GCS and the raylet listen on loopback only.
-    monkeypatch.setenv("RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER", "0")
-    # This process imported Ray already, which read the switch then; the driver must resolve 127.0.0.1 alike.
-    from ray._private import ray_constants
-
-    monkeypatch.setattr(ray_constants, "ENABLE_RAY_CLUSTER", False)
-    # Ray 2.60 starts clusters with token authentication; this cluster's token, for it and the driver.
-    monkeypatch.setenv("RAY_AUTH_MODE", "token")
-    monkeypatch.setenv("RAY_AUTH_TOKEN", secrets.token_hex(32))
-    # Without the driver's PYTHONPATH, the cluster's workers import whatever grove_tui this
-    # environment has installed, unless the batch passes its own (what the test checks).
     env = {key: value for key, value in os.environ.items() if key not in ("PYTHONPATH", "RAY_ADDRESS")}
+    env.update({
+        # Ray rewrites 127.0.0.1 into the machine's routable address unless it runs as a one-node
+        # cluster, which this switch (named for Windows and macOS, read everywhere) makes it; then the
+        # GCS and the raylet listen on loopback only.
+        "RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER": "0",
+        # Ray 2.60 starts clusters with token authentication: this cluster's token, for it and its drivers.
+        "RAY_AUTH_MODE": "token", "RAY_AUTH_TOKEN": secrets.token_hex(32)})
     log_path = Path(temp_dir) / "ray-start.log"
     command = [str(Path(sys.executable).parent / "ray"), "start", "--head", "--block",
                "--node-ip-address", "127.0.0.1", "--port", str(port), "--num-cpus", str(cpus),
                "--include-dashboard", "false", "--disable-usage-stats", "--temp-dir", temp_dir,
                # Fixed defaults (10001, 52365) would collide with another cluster on this machine.
                "--ray-client-server-port", str(_free_port()), "--dashboard-agent-listen-port", str(_free_port())]
+    # The cluster starts without the driver's PYTHONPATH: its workers would import whatever grove_tui
+    # this environment has installed, unless the batch gives them its own (what the test checks).
     with log_path.open("wb") as log:
         head = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, cwd=temp_dir, env=env,
                                 start_new_session=True)
@@ -108,7 +106,7 @@ def loopback_cluster(monkeypatch: pytest.MonkeyPatch, cpus: int) -> Iterator[str
             if head.poll() is not None or time.monotonic() > deadline:
                 pytest.fail(f"ray start did not come up:\n{log_path.read_text(errors='replace')[-3000:]}")
             time.sleep(0.5)
-        yield f"127.0.0.1:{port}"
+        yield f"127.0.0.1:{port}", env
     finally:
         head.terminate()  # the head drains, then stops its GCS, raylet and workers
         try:
@@ -123,12 +121,35 @@ def loopback_cluster(monkeypatch: pytest.MonkeyPatch, cpus: int) -> Iterator[str
         shutil.rmtree(temp_dir, ignore_errors=True)
 
 
+def _grove(env: dict[str, str], cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
+    """`python -m grove_tui ARGS` as a user runs it, importing this checkout's grove_tui."""
+    driver_env = {**env, "PYTHONPATH": CHECKOUT}
+    return subprocess.run([sys.executable, "-m", "grove_tui", *args], cwd=cwd, env=driver_env,
+                          capture_output=True, text=True, timeout=1800)
+
+
+# The folder holding the grove_tui this test imports: the driver's code, which the workers must run.
+CHECKOUT = str(Path(package_fingerprint()[0]).parent)
+# Joins the cluster as `grove batch --ray ADDRESS` does and prints where a task there imports grove_tui
+# from, and from where the driver does.
+WHERE_WORKERS_IMPORT = """
+import json, sys
+import ray
+from grove_tui.services.cluster import _connect, package_fingerprint
+if __name__ == "__main__":
+    _connect(ray, sys.argv[1], None)
+    on_a_worker = ray.remote(lambda: package_fingerprint())  # the worker imports grove_tui.services.cluster
+    print(json.dumps([ray.get(on_a_worker.remote()), package_fingerprint()]))
+    ray.shutdown()
+"""
+
+
 @pytest.mark.slow
 @pytest.mark.ray
 @pytest.mark.timeout(2400)  # two batches of 7 jobs and a resume of 2; about 10 minutes at load average 12 on 2 cores
-def test_ray_cluster_batch_matches_one_process_records_failures_and_resumes(tmp_path, monkeypatch):
+def test_ray_cluster_batch_matches_one_process_records_failures_and_resumes(tmp_path):
     # Here, not at module level: the resume test below needs no Ray and runs without the extra.
-    ray = pytest.importorskip("ray", reason="the cluster extra is not installed (./install.sh cluster)")
+    pytest.importorskip("ray", reason="the cluster extra is not installed (./install.sh cluster)")
     jobs = tmp_path / "jobs.jsonl"
     jobs.write_text("".join(json.dumps(job) + "\n" for job in JOBS), encoding="utf-8")
 
@@ -136,14 +157,13 @@ def test_ray_cluster_batch_matches_one_process_records_failures_and_resumes(tmp_
     assert single.exit_code == EXIT_RUNTIME_FAILURE, single.output  # one job failed, the batch went on
     assert "6/7 scenarios generated" in single.stderr
 
-    with loopback_cluster(monkeypatch, cpus=2) as address:
+    with loopback_cluster(cpus=2) as (address, env):
         # Ray puts the driver's working folder first on its workers' sys.path: from a folder without
         # grove_tui, only the PYTHONPATH the batch gives its workers makes them import the driver's copy.
-        monkeypatch.chdir(tmp_path)
-        on_ray = _batch(jobs, tmp_path / "ray", "--ray", address, "--workers", "2")
-        assert on_ray.exit_code == EXIT_RUNTIME_FAILURE, on_ray.output
+        on_ray = _grove(env, tmp_path, "batch", str(jobs), "--out", str(tmp_path / "ray"), "--ray", address,
+                        "--workers", "2")
+        assert on_ray.returncode == EXIT_RUNTIME_FAILURE, on_ray.stdout + on_ray.stderr
         assert "6/7 scenarios generated" in on_ray.stderr
-        assert not ray.is_initialized(), "the batch disconnects from the cluster it joined"
 
         for name in GOOD:
             reference = _files(tmp_path / "single" / name)
@@ -183,8 +203,9 @@ def test_ray_cluster_batch_matches_one_process_records_failures_and_resumes(tmp_
         shutil.rmtree(tmp_path / "ray" / gone)
         kept = [name for name in GOOD if name != gone]
         stamps = {name: (tmp_path / "ray" / name / "scenario.yaml").stat().st_mtime_ns for name in kept}
-        resumed = _batch(jobs, tmp_path / "ray", "--ray", address, "--workers", "1", "--resume", "--ray-return")
-        assert resumed.exit_code == EXIT_RUNTIME_FAILURE, resumed.output
+        resumed = _grove(env, tmp_path, "batch", str(jobs), "--out", str(tmp_path / "ray"), "--ray", address,
+                         "--workers", "1", "--resume", "--ray-return")
+        assert resumed.returncode == EXIT_RUNTIME_FAILURE, resumed.stdout + resumed.stderr
         assert "resume: 5 completed job(s) skipped, 2 to run" in resumed.stderr
         assert {name: (tmp_path / "ray" / name / "scenario.yaml").stat().st_mtime_ns for name in kept} == stamps
         assert _files(tmp_path / "ray" / gone) == _files(tmp_path / "single" / gone)
@@ -196,11 +217,11 @@ def test_ray_cluster_batch_matches_one_process_records_failures_and_resumes(tmp_
         # here, directly: a task on the cluster, joined as the batch joins it, imports the driver's
         # grove_tui from the driver's folder, though the cluster started without the driver's PYTHONPATH
         # (this environment's install of GROVE-TUI may be another checkout).
-        _connect(ray, address, None)
-        try:
-            assert ray.get(ray.remote(package_fingerprint).remote()) == package_fingerprint()
-        finally:
-            ray.shutdown()
+        where = subprocess.run([sys.executable, "-c", WHERE_WORKERS_IMPORT, address], cwd=tmp_path,
+                               env={**env, "PYTHONPATH": CHECKOUT}, capture_output=True, text=True, timeout=600)
+        assert where.returncode == 0, where.stderr[-3000:]
+        worker, driver = json.loads(where.stdout.strip().splitlines()[-1])
+        assert worker == driver == list(package_fingerprint())
 
 
 @pytest.mark.slow
