@@ -13,9 +13,12 @@ is retried with the next seed.
 
 from __future__ import annotations
 
+import hashlib
 import threading
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
 from grove_tui.bt.manifest import NODES
@@ -56,6 +59,7 @@ class SynthesisRequest:
     roi_names: list[str]
     schema: dict[str, Any]
     documents: list[RetrievedDoc] = field(default_factory=list)
+    prefix_label: str = ""  # names the persisted KV state of messages[0] (world, its file hash, preset, version)
 
 
 @dataclass
@@ -69,6 +73,8 @@ class SynthesisResult:
     request: SynthesisRequest
     errors: list[str] = field(default_factory=list)
     first_token_seconds: float | None = None  # prompt evaluation (prefill) of the accepted attempt
+    cached_tokens: int = 0  # prompt tokens of the accepted attempt served from a live or persisted KV cache
+    cache_source: str = "cold"  # "live", "disk" or "cold"
 
 
 def offered_nodes(preset: Preset, retrieved_nodes: Sequence[str]) -> list[str]:
@@ -147,6 +153,30 @@ def fixed_system_message(preset: Preset, world: Any | None = None) -> str:
     return system
 
 
+def prefix_label(preset: Preset, world: Any | None) -> str:
+    """What the fixed system message's cached KV state is for: world (and its file's hash), preset, template version.
+
+    The prefix's tokens are part of the cache key as well, so this only has to name the file and to
+    keep caches of different worlds and presets apart when their text happens to agree.
+    """
+    source = getattr(world, "source", None)
+    digest = ""
+    if source is not None:
+        try:
+            stat = Path(source).stat()
+            digest = _file_digest(str(source), stat.st_size, stat.st_mtime_ns)
+        except OSError:
+            digest = "unread"
+    name = getattr(world, "name", "none")
+    return f"{name}-{digest}-{preset.name}-v{PROMPT_TEMPLATE_VERSION}"
+
+
+@lru_cache(maxsize=64)
+def _file_digest(path: str, size: int, mtime_ns: int) -> str:
+    """The file's hash, once per version of it (size and mtime in the key): big worlds are megabytes."""
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()[:12]
+
+
 def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], prompt: str,
                    quantities: Sequence[Quantity], roi_names: Sequence[str], reading: PromptReading | None = None,
                    world: Any | None = None) -> list[dict[str, str]]:
@@ -181,7 +211,8 @@ def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], pr
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
     messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names, reading,
                               world)
-    return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents)
+    return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents,
+                            prefix_label(preset, world))
 
 
 def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
@@ -196,7 +227,8 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
     seconds = 0.0
     for attempt in range(1, MAX_ATTEMPTS + 1):
         generation = llm.generate(request.messages, grammar=grammar, max_tokens=max_tokens,
-                                  seed=int(seed) * 7919 + attempt - 1, on_token=on_token, cancel=cancel)
+                                  seed=int(seed) * 7919 + attempt - 1, on_token=on_token, cancel=cancel,
+                                  prefix_label=request.prefix_label)
         prompt_tokens = generation.prompt_tokens
         completion_tokens += generation.completion_tokens
         seconds += generation.seconds
@@ -208,7 +240,8 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
             errors.append(f"attempt {attempt}: {exc}")
             continue
         return SynthesisResult(draft, generation.text, prompt_tokens, completion_tokens, attempt, seconds, request, errors,
-                               generation.first_token_seconds)
+                               generation.first_token_seconds, int(getattr(generation, "cached_tokens", 0)),
+                               str(getattr(generation, "cache_source", "cold")))
     raise GenerationError(f"the bt model wrote no valid draft in {MAX_ATTEMPTS} attempts: " + "; ".join(errors))
 
 

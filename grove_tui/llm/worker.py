@@ -12,6 +12,16 @@ Protocol over one duplex pipe (parent -> worker: requests; worker -> parent: eve
     worker sends ("started", prompt_tokens), then ("token", text)*, then ("done", {...})
                  or ("error", kind, message) with kind "context" | "request"
 The parent's cancel request is a shared Event checked before every token.
+
+Prompt evaluation is split at fixed places so that output never depends on what the worker ran
+before: llama.cpp's logits for a token depend on how the prompt was cut into batches. A chat
+request's prompt is evaluated as two segments, the fixed prefix (everything before the last
+message's content: the system message, the same for every sentence of a world and preset) and the
+rest, each in batches of n_batch from its own start. The worker reuses live KV only up to such a
+batch start, never tokens it decoded (one at a time), and persists the fixed prefix's KV to disk
+(`kv_cache_dir`, keyed by model file, llama-cpp-python version, n_ctx, n_batch, the caller's label
+and the prefix's tokens), so a fresh worker restores it instead of evaluating it again. The same
+request gives the same tokens cold, warm or restored (tests/llm/test_kv_cache.py).
 """
 
 from __future__ import annotations
@@ -60,7 +70,7 @@ def tune_openmp_for_llama() -> None:
 
 
 def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threads: int, architecture: str,
-          log_path: str) -> None:
+          log_path: str, kv_cache_dir: str | None = None) -> None:
     """Entry point of the worker process (multiprocessing spawn target)."""
     _redirect_stderr(log_path)
     tune_openmp_for_llama()
@@ -85,7 +95,8 @@ def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_thread
         "n_ctx": llm.n_ctx(),
     }
     conn.send(("ready", info))
-    server = _Server(llm, conn, cancel, info)
+    server = _Server(llm, conn, cancel, info, PrefixStore(kv_cache_dir, model_path, n_ctx, llm.n_batch)
+                     if kv_cache_dir else None)
     while True:
         try:
             request = conn.recv()
@@ -110,9 +121,94 @@ class _RequestError(Exception):
         self.kind = kind
 
 
+class PrefixStore:
+    """The fixed prefix's KV state (sequence 0) on disk: one file per model, settings, label and prefix."""
+
+    MAGIC = b"GROVE-KV1\n"
+
+    def __init__(self, folder: str, model_path: str, n_ctx: int, n_batch: int) -> None:
+        import llama_cpp
+
+        stat = os.stat(model_path)
+        self.folder = Path(folder)
+        # What the state depends on besides the tokens: the model's bytes (size and mtime stand in for
+        # a hash of gigabytes), the library that wrote it, and the context layout.
+        self.identity = {"model": os.path.abspath(model_path), "size": stat.st_size, "mtime_ns": stat.st_mtime_ns,
+                         "llama_cpp": llama_cpp.__version__, "n_ctx": n_ctx, "n_batch": n_batch}
+
+    def path(self, label: str, tokens: list[int]) -> Path:
+        import hashlib
+        import json
+        import re
+
+        key = hashlib.sha256(json.dumps({**self.identity, "label": label, "tokens": tokens}).encode()).hexdigest()
+        name = re.sub(r"[^A-Za-z0-9_.-]+", "-", label)[:80].strip("-") or "prefix"
+        return self.folder / f"{name}-{key[:24]}.kv"
+
+    def load(self, llm: Any, label: str, tokens: list[int]) -> bool:
+        """Restore the prefix into sequence 0 of an emptied context; False when no usable file exists."""
+        import ctypes
+        import json
+
+        import llama_cpp
+
+        path = self.path(label, tokens)
+        try:
+            data = path.read_bytes()
+        except OSError:
+            return False
+        header_end = data.find(b"\n", len(self.MAGIC))
+        if not data.startswith(self.MAGIC) or header_end < 0:
+            return False
+        try:
+            header = json.loads(data[len(self.MAGIC):header_end])
+        except ValueError:
+            return False
+        if header.get("tokens") != tokens or header.get("identity") != self.identity:
+            return False
+        state = data[header_end + 1:]
+        buffer = (ctypes.c_uint8 * len(state)).from_buffer_copy(state)
+        llm.reset()
+        llm._ctx.kv_cache_clear()
+        if llama_cpp.llama_state_seq_set_data(llm._ctx.ctx, buffer, len(state), 0) != len(state):
+            llm._ctx.kv_cache_clear()
+            return False
+        llm.input_ids[:len(tokens)] = tokens
+        llm.n_tokens = len(tokens)
+        return True
+
+    def save(self, llm: Any, label: str, tokens: list[int]) -> None:
+        import ctypes
+        import json
+
+        import llama_cpp
+
+        from grove_tui.files import write_bytes_atomic
+
+        size = llama_cpp.llama_state_seq_get_size(llm._ctx.ctx, 0)
+        buffer = (ctypes.c_uint8 * size)()
+        written = llama_cpp.llama_state_seq_get_data(llm._ctx.ctx, buffer, size, 0)
+        header = json.dumps({"identity": self.identity, "label": label, "tokens": tokens}).encode()
+        path = self.path(label, tokens)
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            write_bytes_atomic(path, self.MAGIC + header + b"\n" + bytes(buffer)[:written])
+        except OSError as error:  # a read-only or full cache costs speed, never the answer
+            print(f"grove: could not write the prefix cache {path}: {error}", file=sys.stderr)
+
+
+def segment_starts(fixed: int, total: int, n_batch: int) -> list[int]:
+    """Where a cold evaluation of `total` prompt tokens starts a batch: the prefix's batches, then the rest's."""
+    starts = list(range(0, fixed, n_batch)) if fixed > 0 else []
+    starts += list(range(fixed, total, n_batch))
+    return starts
+
+
 class _Server:
-    def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any]) -> None:
-        self.llm, self.conn, self.cancel, self.info = llm, conn, cancel, info
+    def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any],
+                 store: PrefixStore | None = None) -> None:
+        self.llm, self.conn, self.cancel, self.info, self.store = llm, conn, cancel, info, store
+        self.live_prompt = 0  # leading live KV tokens that came from prompt evaluation (not decoding)
 
     def prompt_text(self, request: dict[str, Any]) -> str:
         if request.get("messages") is not None:
@@ -127,6 +223,50 @@ class _Server:
         # Templates that write the BOS themselves must not get a second one from the tokenizer.
         add_bos = not (bos and text.startswith(bos))
         return self.llm.tokenize(text.encode("utf-8"), add_bos=add_bos, special=True)
+
+    def fixed_length(self, request: dict[str, Any], tokens: list[int]) -> int:
+        """Tokens before the last message's content: shared by every request with the same earlier messages."""
+        messages = request.get("messages")
+        if not messages or len(messages) < 2:
+            return 0
+        empty = self.tokens(self.prompt_text({**request, "messages": [*messages[:-1], {**messages[-1], "content": ""}]}))
+        fixed = 0
+        for a, b in zip(empty, tokens):
+            if a != b:
+                break
+            fixed += 1
+        # Stop short of the empty message's own closing tokens, which the real prompt does not share
+        # when its content starts differently; and leave at least one token to evaluate.
+        return min(fixed, len(tokens) - 1)
+
+    def prepare(self, tokens: list[int], fixed: int, label: str) -> tuple[int, str]:
+        """Bring the KV cache to a batch start of this prompt's cold evaluation; evaluate the prefix.
+
+        Returns (prompt tokens not evaluated by this request, where they came from: live, disk, cold).
+        """
+        llm = self.llm
+        shared = 0
+        for cached_token, token in zip(llm._input_ids[:self.live_prompt].tolist(), tokens):
+            if cached_token != token:
+                break
+            shared += 1
+        self.live_prompt = 0  # until this prompt is evaluated, a cancel or error leaves the live state unknown
+        limit = min(shared, len(tokens) - 1)
+        start = max([b for b in segment_starts(fixed, len(tokens), llm.n_batch) if b <= limit], default=0)
+        source = "live" if start > 0 else "cold"
+        if start < fixed and self.store is not None and self.store.load(llm, label, tokens[:fixed]):
+            start, source = fixed, "disk"
+        elif start == 0:
+            llm.reset()
+        else:
+            llm._ctx.kv_cache_seq_rm(-1, start, -1)
+            llm.n_tokens = start
+        reused = start
+        if start < fixed:
+            llm.eval(tokens[start:fixed])  # batches from a batch start, as a cold evaluation has them
+            if self.store is not None:
+                self.store.save(llm, label, tokens[:fixed])
+        return reused, source
 
     def handle(self, request: dict[str, Any]) -> None:
         from grove_tui.errors import ModelError
@@ -144,8 +284,29 @@ class _Server:
         if room < MIN_ANSWER_TOKENS:
             raise _RequestError("context", f"the prompt has {len(tokens)} tokens and the context holds {n_ctx}, "
                                            f"leaving {max(room, 0)} for the answer")
+        if request["op"] == "evaluate":
+            self.evaluate(tokens, request)
+            return
         # A budget beyond the context is clamped: if the answer really needs more it ends as "length".
         self.generate(tokens, {**request, "max_tokens": min(int(request["max_tokens"]), room)})
+
+    def evaluate(self, tokens: list[int], request: dict[str, Any]) -> None:
+        """Evaluate the prompt as generate does and report a digest of the next-token logits.
+
+        The logits are what sampling draws from, so equal digests mean every sampler sees the same
+        distribution: how the tests check that a restored or live cache changes nothing.
+        """
+        import ctypes
+        import hashlib
+
+        llm = self.llm
+        reused, source = self.prepare(tokens, self.fixed_length(request, tokens), str(request.get("prefix_label") or ""))
+        llm.eval(tokens[llm.n_tokens:])  # the rest in batches from its start, as generate() evaluates it
+        self.live_prompt = len(tokens)
+        n_vocab = llm.n_vocab()
+        logits = ctypes.string_at(llm._ctx.get_logits_ith(-1), n_vocab * ctypes.sizeof(ctypes.c_float))
+        self.conn.send(("done", {"prompt_tokens": len(tokens), "cached_tokens": reused, "cache_source": source,
+                                 "logits_sha256": hashlib.sha256(logits).hexdigest()}))
 
     def generate(self, tokens: list[int], request: dict[str, Any]) -> None:
         from llama_cpp import LlamaGrammar, llama_vocab_is_eog
@@ -153,14 +314,8 @@ class _Server:
         llm = self.llm
         grammar = LlamaGrammar.from_string(request["grammar"], verbose=False) if request.get("grammar") else None
         llm.set_seed(int(request["seed"]))
-        # What llama.cpp will keep from the live KV cache (generate() rewinds to the longest shared prefix).
-        reused = 0
-        for cached_token, token in zip(llm._input_ids.tolist(), tokens):
-            if cached_token != token:
-                break
-            reused += 1
-        reused = min(reused, len(tokens) - 1)
         self.conn.send(("started", len(tokens)))
+        reused, source = self.prepare(tokens, self.fixed_length(request, tokens), str(request.get("prefix_label") or ""))
         decoder = codecs.getincrementaldecoder("utf-8")(errors="replace")
         pieces: list[str] = []
         completion_tokens = 0
@@ -187,11 +342,12 @@ class _Server:
                     break
                 if completion_tokens >= max_tokens:
                     break
+        self.live_prompt = len(tokens)  # generate() evaluated the rest of the prompt; what follows was decoded
         tail = decoder.decode(b"", final=True)
         if tail:
             pieces.append(tail)
             self.conn.send(("token", tail))
         self.conn.send(("done", {"text": "".join(pieces), "finish_reason": finish_reason,
                                  "prompt_tokens": len(tokens), "completion_tokens": completion_tokens,
-                                 "cached_tokens": reused,
+                                 "cached_tokens": reused, "cache_source": source,
                                  "worker_seconds": time.monotonic() - started}))
