@@ -2,8 +2,8 @@
 
 A crash inside llama.cpp (a bad grammar, a broken file, out of memory) kills only this process, and a
 generation can be stopped by terminating it. The model is loaded once and serves every request of
-its role, so llama.cpp's live KV cache reuses the longest shared token prefix (the system prompt)
-from one request to the next.
+its role, so its live KV cache keeps the shared system prompt from one request to the next (below).
+Tokens are sampled grammar-last, as upstream llama.cpp does (SampleFirst).
 
 Protocol over one duplex pipe (parent -> worker: requests; worker -> parent: events):
     worker sends ("ready", {bos_token, eos_token, chat_template, architecture, n_ctx})
@@ -309,11 +309,9 @@ class _Server:
                                  "logits_sha256": hashlib.sha256(logits).hexdigest()}))
 
     def generate(self, tokens: list[int], request: dict[str, Any]) -> None:
-        from llama_cpp import LlamaGrammar, llama_vocab_is_eog
+        from llama_cpp import llama_vocab_is_eog
 
         llm = self.llm
-        grammar = LlamaGrammar.from_string(request["grammar"], verbose=False) if request.get("grammar") else None
-        llm.set_seed(int(request["seed"]))
         self.conn.send(("started", len(tokens)))
         reused, source = self.prepare(tokens, self.fixed_length(request, tokens), str(request.get("prefix_label") or ""))
         decoder = codecs.getincrementaldecoder("utf-8")(errors="replace")
@@ -322,27 +320,36 @@ class _Server:
         finish_reason = "length"
         started = time.monotonic()
         max_tokens = int(request["max_tokens"])
+        rejections = 0
         if self.cancel.is_set():
             finish_reason = "cancelled"
         else:
-            for token in llm.generate(tokens, top_k=int(request["top_k"]), top_p=float(request["top_p"]),
-                                      min_p=float(request["min_p"]), temp=float(request["temperature"]),
-                                      presence_penalty=float(request["presence_penalty"]), repeat_penalty=1.0,
-                                      grammar=grammar):
-                if llama_vocab_is_eog(llm._model.vocab, token):
-                    finish_reason = "stop"
-                    break
-                completion_tokens += 1
-                piece = decoder.decode(llm.detokenize([token], special=False))
-                if piece:
-                    pieces.append(piece)
-                    self.conn.send(("token", piece))
-                if self.cancel.is_set():
-                    finish_reason = "cancelled"
-                    break
-                if completion_tokens >= max_tokens:
-                    break
-        self.live_prompt = len(tokens)  # generate() evaluated the rest of the prompt; what follows was decoded
+            sampler = SampleFirst(llm, request.get("grammar") or None, top_k=int(request["top_k"]),
+                                  top_p=float(request["top_p"]), min_p=float(request["min_p"]),
+                                  temperature=float(request["temperature"]),
+                                  presence_penalty=float(request["presence_penalty"]), seed=int(request["seed"]))
+            try:
+                llm.eval(tokens[llm.n_tokens:])  # the rest of the prompt, in batches from its own start
+                self.live_prompt = len(tokens)  # what follows is decoded one token at a time: never reused
+                while True:
+                    token = sampler.sample()
+                    if llama_vocab_is_eog(llm._model.vocab, token):
+                        finish_reason = "stop"
+                        break
+                    completion_tokens += 1
+                    piece = decoder.decode(llm.detokenize([token], special=False))
+                    if piece:
+                        pieces.append(piece)
+                        self.conn.send(("token", piece))
+                    if self.cancel.is_set():
+                        finish_reason = "cancelled"
+                        break
+                    if completion_tokens >= max_tokens:
+                        break
+                    llm.eval([token])
+            finally:
+                rejections = sampler.rejections
+                sampler.close()
         tail = decoder.decode(b"", final=True)
         if tail:
             pieces.append(tail)
@@ -350,4 +357,92 @@ class _Server:
         self.conn.send(("done", {"text": "".join(pieces), "finish_reason": finish_reason,
                                  "prompt_tokens": len(tokens), "completion_tokens": completion_tokens,
                                  "cached_tokens": reused, "cache_source": source,
+                                 "grammar_rejections": rejections,
                                  "worker_seconds": time.monotonic() - started}))
+
+
+class SampleFirst:
+    """Sample as upstream llama.cpp does (common/sampling.cpp): the grammar is asked about one token.
+
+    llama-cpp-python puts the grammar first in its sampler chain, so every token checks the grammar
+    against the whole vocabulary (152k entries for Qwen3: tens of ms per token, bench/grammar.py).
+    Here the chain (presence penalty, top-k, top-p, min-p, temperature, seeded draw) samples without
+    the grammar; the grammar then checks only the chosen token, and when it refuses it, the token is
+    drawn again from a chain with the grammar first, over the whole vocabulary. Every token is one the
+    grammar accepts, so every output is grammar-valid, and the same seed gives the same output.
+    """
+
+    def __init__(self, llm: Any, grammar: str | None, *, top_k: int, top_p: float, min_p: float, temperature: float,
+                 presence_penalty: float, seed: int) -> None:
+        import ctypes
+
+        import llama_cpp
+        import numpy as np
+        from llama_cpp import _internals
+
+        self._lc, self._ctypes, self._np, self.llm = llama_cpp, ctypes, np, llm
+        self.n_vocab = llm.n_vocab()
+
+        def chain(grammar_first: bool) -> Any:
+            sampler = _internals.LlamaSampler()
+            sampler.add_penalties(n_vocab=self.n_vocab, penalty_last_n=llm.last_n_tokens_size, penalty_repeat=1.0,
+                                  penalty_freq=0.0, penalty_present=presence_penalty)
+            if grammar_first:
+                sampler.add_grammar(llm._model, llama_cpp.LlamaGrammar.from_string(grammar, verbose=False))
+            if temperature <= 0.0:
+                sampler.add_greedy()
+            else:
+                sampler.add_top_k(top_k)
+                sampler.add_top_p(top_p, 1)
+                sampler.add_min_p(min_p, 1)
+                sampler.add_temp(temperature)
+                sampler.add_dist(seed)
+            return sampler
+
+        self.free = chain(False)
+        self.constrained = chain(True) if grammar else None
+        self.grammar = (llama_cpp.llama_sampler_init_grammar(llm._model.vocab, grammar.encode("utf-8"), b"root")
+                        if grammar else None)
+        self.ids = np.arange(self.n_vocab, dtype=np.intc)
+        self.cells = np.zeros(self.n_vocab, dtype=np.dtype([("id", np.intc), ("logit", np.single), ("p", np.single)],
+                                                          align=True))
+        self.one = (llama_cpp.llama_token_data * 1)()
+        self.rejections = 0
+
+    def _draw(self, sampler: Any) -> int:
+        lc, np = self._lc, self._np
+        self.cells["id"] = self.ids
+        self.cells["logit"] = np.ctypeslib.as_array(self.llm._ctx.get_logits_ith(-1), shape=(self.n_vocab,))
+        self.cells["p"] = 0.0
+        array = lc.llama_token_data_array(data=self.cells.ctypes.data_as(self._ctypes.POINTER(lc.llama_token_data)),
+                                          size=self.n_vocab, selected=-1, sorted=False)
+        lc.llama_sampler_apply(sampler.sampler, self._ctypes.byref(array))
+        if array.selected < 0:
+            raise RuntimeError("the sampler chain selected no token")
+        return int(self.cells["id"][array.selected])
+
+    def sample(self) -> int:
+        """The next token (also accepted into the chains and the grammar, so they follow the output)."""
+        lc = self._lc
+        token = self._draw(self.free)
+        if self.grammar is not None:
+            self.one[0].id, self.one[0].logit, self.one[0].p = token, 0.0, 0.0
+            single = lc.llama_token_data_array(data=self.one, size=1, selected=-1, sorted=False)
+            lc.llama_sampler_apply(self.grammar, self._ctypes.byref(single))
+            if not self._np.isfinite(self.one[0].logit):
+                self.rejections += 1
+                token = self._draw(self.constrained)
+        for sampler in (self.free, self.constrained):
+            if sampler is not None:
+                lc.llama_sampler_accept(sampler.sampler, token)
+        if self.grammar is not None:
+            lc.llama_sampler_accept(self.grammar, token)
+        return token
+
+    def close(self) -> None:
+        if self.grammar is not None:
+            self._lc.llama_sampler_free(self.grammar)
+            self.grammar = None
+        for sampler in (self.free, self.constrained):
+            if sampler is not None:
+                sampler.close()
