@@ -227,26 +227,34 @@ def _card_number(value: Any) -> str:
     return json.dumps(value)
 
 
-def _card_port(port: Any) -> str:
+def _card_kind(port: Any) -> str:
     if port.choices:
-        kind = "|".join(str(c) for c in port.choices)
-    elif port.type in ("int", "float") and port.min is not None and port.max is not None:
-        kind = f"{_card_number(port.min)}..{_card_number(port.max)}"
-    else:
-        kind = _CARD_TYPE_WORDS.get(port.type, port.type)
-    if port.default is None:
-        return f"{port.name}: {kind}"
-    return f"{port.name}?: {kind} = {_card_number(port.default)}"
+        return "|".join(str(c) for c in port.choices)
+    if port.type in ("int", "float") and port.min is not None and port.max is not None:
+        return f"{_card_number(port.min)}..{_card_number(port.max)}"
+    return _CARD_TYPE_WORDS.get(port.type, port.type)
 
 
 def node_signature(spec: Any) -> str:
-    """`GoTo(target: place, tolerance?: 0.05..5 = 0.3)`: the ports a draft may write; `?` marks optional ones."""
-    ports = [_card_port(p) for p in spec.llm_ports]
+    """The node as the draft writes it, required ports filled with what they take, then its optional ports:
+    `{"node": "GoTo", "target": "<place>"} optional tolerance (0.05..5, default 0.3)`.
+
+    The shape of the JSON the model must write, because small models copy what they see."""
+    fields = [f'"node": "{spec.name}"']
+    optional = []
+    for port in spec.llm_ports:
+        kind = _card_kind(port)
+        if port.default is None:
+            value = f'"<{kind}>"' if port.type in ("target", "agent", "agents", "string") else f"<{kind}>"
+            fields.append(f'"{port.name}": {value}')
+        else:
+            optional.append(f"{port.name} ({kind}, default {_card_number(port.default)})")
     if spec.category == "decorator":
-        ports.append("children: [one node]")
+        fields.append('"children": [<one node>]')
     elif spec.category == "control":
-        ports.append("children: [nodes]")
-    return f"{spec.name}({', '.join(ports)})"
+        fields.append('"children": [<nodes>]')
+    text = "{" + ", ".join(fields) + "}"
+    return text + (" optional " + ", ".join(optional) if optional else "")
 
 
 def _first_sentence(text: str) -> str:

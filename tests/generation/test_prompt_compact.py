@@ -84,7 +84,7 @@ def test_every_offered_node_has_its_card_and_the_sentence_comes_last(world_name,
     for name in request.node_names:
         if NODES[name].category == "control":
             continue  # control nodes are in the rules' example and every template
-        assert any(line.startswith(f"{name}(") for line in lines) or any(
+        assert any(line.startswith(f'{{"node": "{name}"') for line in lines) or any(
             name in line for line in lines if line.startswith("Template ")), name
     assert user.index("Places:") < user.index("Nodes:") < user.index(f"Scenario: {prompt}")
 
@@ -97,7 +97,7 @@ def test_a_card_is_one_line_with_every_writable_port_and_no_automatic_one():
         assert "\n" not in card and card.startswith(node_signature(spec) + ":")
         signature = node_signature(spec)
         for port in spec.ports:
-            written = re.search(rf"[(, ]{re.escape(port.name)}\??:", signature) is not None
+            written = re.search(rf'"{re.escape(port.name)}":|[ ,]{re.escape(port.name)} \(', signature) is not None
             assert written == (port in spec.llm_ports), (spec.name, port.name)
         assert card.endswith("Always. Never alone.")
 
