@@ -95,7 +95,7 @@ def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_thread
         "n_ctx": llm.n_ctx(),
     }
     conn.send(("ready", info))
-    server = _Server(llm, conn, cancel, info, PrefixStore(kv_cache_dir, model_path, n_ctx, llm.n_batch)
+    server = _Server(llm, conn, cancel, info, PrefixStore(kv_cache_dir, model_path, n_ctx, llm.n_batch, n_threads)
                      if kv_cache_dir else None)
     while True:
         try:
@@ -125,16 +125,20 @@ class PrefixStore:
     """The fixed prefix's KV state (sequence 0) on disk: one file per model, settings, label and prefix."""
 
     MAGIC = b"GROVE-KV1\n"
+    KEEP_FILES = 32  # the most recently used prefixes kept; a Qwen3-4B prefix of 320 tokens is ~46 MB
+    MIN_TOKENS = 32  # shorter prefixes cost less to evaluate than to read back
 
-    def __init__(self, folder: str, model_path: str, n_ctx: int, n_batch: int) -> None:
+    def __init__(self, folder: str, model_path: str, n_ctx: int, n_batch: int, n_threads: int) -> None:
         import llama_cpp
 
         stat = os.stat(model_path)
         self.folder = Path(folder)
         # What the state depends on besides the tokens: the model's bytes (size and mtime stand in for
-        # a hash of gigabytes), the library that wrote it, and the context layout.
+        # a hash of gigabytes), the library that wrote it, and the context layout. The thread count too:
+        # llama.cpp's CPU results are not known to depend on it, but a wrong restore would be silent.
         self.identity = {"model": os.path.abspath(model_path), "size": stat.st_size, "mtime_ns": stat.st_mtime_ns,
-                         "llama_cpp": llama_cpp.__version__, "n_ctx": n_ctx, "n_batch": n_batch}
+                         "llama_cpp": llama_cpp.__version__, "n_ctx": n_ctx, "n_batch": n_batch,
+                         "n_threads": n_threads}
 
     def path(self, label: str, tokens: list[int]) -> Path:
         import hashlib
@@ -175,6 +179,10 @@ class PrefixStore:
             return False
         llm.input_ids[:len(tokens)] = tokens
         llm.n_tokens = len(tokens)
+        try:
+            os.utime(path)  # recently used: kept when the folder is pruned
+        except OSError:
+            pass
         return True
 
     def save(self, llm: Any, label: str, tokens: list[int]) -> None:
@@ -185,6 +193,8 @@ class PrefixStore:
 
         from grove_tui.files import write_bytes_atomic
 
+        if len(tokens) < self.MIN_TOKENS:
+            return
         size = llama_cpp.llama_state_seq_get_size(llm._ctx.ctx, 0)
         buffer = (ctypes.c_uint8 * size)()
         written = llama_cpp.llama_state_seq_get_data(llm._ctx.ctx, buffer, size, 0)
@@ -195,6 +205,17 @@ class PrefixStore:
             write_bytes_atomic(path, self.MAGIC + header + b"\n" + bytes(buffer)[:written])
         except OSError as error:  # a read-only or full cache costs speed, never the answer
             print(f"grove: could not write the prefix cache {path}: {error}", file=sys.stderr)
+            return
+        self.prune()
+
+    def prune(self) -> None:
+        """Keep the KEEP_FILES most recently used prefix files of this folder."""
+        try:
+            files = sorted(self.folder.glob("*.kv"), key=lambda f: f.stat().st_mtime_ns, reverse=True)
+            for stale in files[self.KEEP_FILES:]:
+                stale.unlink()
+        except OSError:
+            pass  # another worker pruned the same folder
 
 
 def segment_starts(fixed: int, total: int, n_batch: int) -> list[int]:
@@ -254,7 +275,8 @@ class _Server:
         limit = min(shared, len(tokens) - 1)
         start = max([b for b in segment_starts(fixed, len(tokens), llm.n_batch) if b <= limit], default=0)
         source = "live" if start > 0 else "cold"
-        if start < fixed and self.store is not None and self.store.load(llm, label, tokens[:fixed]):
+        if (start < fixed and self.store is not None and fixed >= self.store.MIN_TOKENS
+                and self.store.load(llm, label, tokens[:fixed])):
             start, source = fixed, "disk"
         elif start == 0:
             llm.reset()

@@ -111,3 +111,19 @@ def test_a_damaged_cache_file_is_ignored_and_rewritten(model, kv_dir):
         assert result["cache_source"] == "cold" and result["logits_sha256"] == reference
     with fresh(model) as llm:
         assert llm.evaluate(messages(USERS[0]), label)["cache_source"] == "disk"
+
+
+def test_the_folder_keeps_only_the_most_recently_used_prefixes(model, kv_dir):
+    from grove_tui.llm.worker import PrefixStore
+
+    kv_dir.mkdir(parents=True)
+    for i in range(PrefixStore.KEEP_FILES + 8):
+        stale = kv_dir / f"old-{i}.kv"
+        stale.write_bytes(b"x")
+        os.utime(stale, ns=(1_000_000_000 * (i + 1), 1_000_000_000 * (i + 1)))
+    with fresh(model) as llm:
+        assert llm.evaluate(messages(USERS[0]), "hospital-abc-queuing-v2")["cache_source"] == "cold"
+    kept = {p.name for p in kv_dir.glob("*.kv")}
+    assert len(kept) == PrefixStore.KEEP_FILES
+    assert any(name.startswith("hospital-abc-queuing-v2-") for name in kept)
+    assert "old-0.kv" not in kept and f"old-{PrefixStore.KEEP_FILES + 7}.kv" in kept
