@@ -405,12 +405,12 @@ class SampleFirst:
         self._lc, self._ctypes, self._np, self.llm = llama_cpp, ctypes, np, llm
         self.n_vocab = llm.n_vocab()
 
-        def chain(grammar_first: bool) -> Any:
+        def chain(grammar_first: str | None) -> Any:
             sampler = _internals.LlamaSampler()
             sampler.add_penalties(n_vocab=self.n_vocab, penalty_last_n=llm.last_n_tokens_size, penalty_repeat=1.0,
                                   penalty_freq=0.0, penalty_present=presence_penalty)
-            if grammar_first:
-                sampler.add_grammar(llm._model, llama_cpp.LlamaGrammar.from_string(grammar, verbose=False))
+            if grammar_first is not None:
+                sampler.add_grammar(llm._model, llama_cpp.LlamaGrammar.from_string(grammar_first, verbose=False))
             if temperature <= 0.0:
                 sampler.add_greedy()
             else:
@@ -421,8 +421,8 @@ class SampleFirst:
                 sampler.add_dist(seed)
             return sampler
 
-        self.free = chain(False)
-        self.constrained = chain(True) if grammar else None
+        self.free = chain(None)
+        self.constrained = chain(grammar) if grammar else None
         self.grammar = (llama_cpp.llama_sampler_init_grammar(llm._model.vocab, grammar.encode("utf-8"), b"root")
                         if grammar else None)
         self.ids = np.arange(self.n_vocab, dtype=np.intc)
@@ -448,10 +448,11 @@ class SampleFirst:
         lc = self._lc
         token = self._draw(self.free)
         if self.grammar is not None:
-            self.one[0].id, self.one[0].logit, self.one[0].p = token, 0.0, 0.0
+            cell = self.one[0]
+            cell.id, cell.logit, cell.p = token, 0.0, 0.0  # type: ignore[assignment]  # ctypes converts the int
             single = lc.llama_token_data_array(data=self.one, size=1, selected=-1, sorted=False)
             lc.llama_sampler_apply(self.grammar, self._ctypes.byref(single))
-            if not self._np.isfinite(self.one[0].logit):
+            if not self._np.isfinite(cell.logit):
                 self.rejections += 1
                 token = self._draw(self.constrained)
         for sampler in (self.free, self.constrained):
