@@ -230,6 +230,7 @@ class _Server:
                  store: PrefixStore | None = None) -> None:
         self.llm, self.conn, self.cancel, self.info, self.store = llm, conn, cancel, info, store
         self.live_prompt = 0  # leading live KV tokens that came from prompt evaluation (not decoding)
+        self.live_bounds: list[int] = []  # where that evaluation's batches started, and its end
 
     def prompt_text(self, request: dict[str, Any]) -> str:
         if request.get("messages") is not None:
@@ -273,12 +274,19 @@ class _Server:
             shared += 1
         self.live_prompt = 0  # until this prompt is evaluated, a cancel or error leaves the live state unknown
         limit = min(shared, len(tokens) - 1)
-        start = max([b for b in segment_starts(fixed, len(tokens), llm.n_batch) if b <= limit], default=0)
+        starts = segment_starts(fixed, len(tokens), llm.n_batch)
+        # A live token is reused only if the batches that computed it are the ones a cold evaluation of
+        # this prompt would use: a batch of the earlier prompt ended there, and every start below agrees.
+        usable = [b for b in starts if b <= limit and b in self.live_bounds
+                  and [x for x in self.live_bounds if x < b] == [x for x in starts if x < b]]
+        start = max(usable, default=0)
+        self.live_bounds = starts + [len(tokens)]
         source = "live" if start > 0 else "cold"
         if (start < fixed and self.store is not None and fixed >= self.store.MIN_TOKENS
                 and self.store.load(llm, label, tokens[:fixed])):
             start, source = fixed, "disk"
-        elif start == 0:
+        elif start == 0 or llm.n_tokens < start:  # nothing to keep, or a failed restore emptied the context
+            start, source = 0, "cold"
             llm.reset()
         else:
             llm._ctx.kv_cache_seq_rm(-1, start, -1)
