@@ -8,7 +8,7 @@ on one model, the same prompt (a real synthesis request) and the draft grammar o
 
 - `free`: no grammar (what decoding alone costs);
 - `grammar_first`: llama-cpp-python's chain (what GROVE runs today);
-- `sample_first`: the upstream scheme, written here over llama.cpp's sampler API.
+- `sample_first`: the upstream scheme, as the model worker runs it (`worker.SampleFirst`).
 
 Per-token times exclude the prompt's evaluation. Run by hand (loads a model; the figures scale with
 the machine's load, printed with them):
@@ -21,7 +21,6 @@ The last line holds the headline figures as key=value pairs.
 from __future__ import annotations
 
 import argparse
-import ctypes
 import os
 import sys
 import time
@@ -52,61 +51,6 @@ def synthesis_request():
                            retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
 
 
-class SampleFirst:
-    """Upstream llama.cpp's scheme: the chain without the grammar, the grammar asked about one token."""
-
-    def __init__(self, llm, grammar_text: str, sampling, seed: int) -> None:
-        import llama_cpp
-        from llama_cpp import _internals
-
-        self.llama_cpp, self.llm = llama_cpp, llm
-        self.n_vocab = llm.n_vocab()
-
-        def chain(with_grammar: bool):
-            sampler = _internals.LlamaSampler()
-            sampler.add_penalties(n_vocab=self.n_vocab, penalty_last_n=llm.last_n_tokens_size, penalty_repeat=1.0,
-                                  penalty_freq=0.0, penalty_present=sampling.presence_penalty)
-            if with_grammar:
-                sampler.add_grammar(llm._model, llama_cpp.LlamaGrammar.from_string(grammar_text, verbose=False))
-            sampler.add_top_k(sampling.top_k)
-            sampler.add_top_p(sampling.top_p, 1)
-            sampler.add_min_p(sampling.min_p, 1)
-            sampler.add_temp(sampling.temperature)
-            sampler.add_dist(seed)
-            return sampler
-
-        self.free, self.constrained = chain(False), chain(True)
-        self.grammar = llama_cpp.llama_sampler_init_grammar(llm._model.vocab, grammar_text.encode(), b"root")
-        self.cells = np.zeros(self.n_vocab, dtype=np.dtype([("id", np.intc), ("logit", np.single), ("p", np.single)],
-                                                          align=True))
-        self.one = (llama_cpp.llama_token_data * 1)()
-        self.rejections = 0
-
-    def _apply(self, sampler) -> int:
-        lc = self.llama_cpp
-        logits = np.ctypeslib.as_array(self.llm._ctx.get_logits_ith(-1), shape=(self.n_vocab,))
-        self.cells["id"] = np.arange(self.n_vocab)
-        self.cells["logit"] = logits
-        self.cells["p"] = 0.0
-        array = lc.llama_token_data_array(data=self.cells.ctypes.data_as(ctypes.POINTER(lc.llama_token_data)),
-                                          size=self.n_vocab, selected=-1, sorted=False)
-        lc.llama_sampler_apply(sampler.sampler, ctypes.byref(array))
-        return int(self.cells["id"][array.selected])
-
-    def sample(self) -> int:
-        lc = self.llama_cpp
-        token = self._apply(self.free)
-        self.one[0].id, self.one[0].logit, self.one[0].p = token, 1.0, 0.0
-        single = lc.llama_token_data_array(data=self.one, size=1, selected=-1, sorted=False)
-        lc.llama_sampler_apply(self.grammar, ctypes.byref(single))
-        if not np.isfinite(self.one[0].logit):
-            self.rejections += 1
-            token = self._apply(self.constrained)
-        for sampler in (self.free.sampler, self.constrained.sampler, self.grammar):
-            lc.llama_sampler_accept(sampler, token)
-        return token
-
-
 def run(llm, tokens, grammar_text, sampling, mode: str, n_tokens: int, seed: int) -> tuple[float, int, int, str]:
     """(seconds per decoded token, tokens, rejections, text) for one mode, prompt evaluated beforehand."""
     from llama_cpp import LlamaGrammar, llama_vocab_is_eog
@@ -122,7 +66,10 @@ def run(llm, tokens, grammar_text, sampling, mode: str, n_tokens: int, seed: int
     rejections = 0
     started = time.perf_counter()
     if mode == "sample_first":
-        sampler = SampleFirst(llm, grammar_text, sampling, seed)
+        from grove_tui.llm.worker import SampleFirst
+
+        sampler = SampleFirst(llm, grammar_text, top_k=sampling.top_k, top_p=sampling.top_p, min_p=sampling.min_p,
+                              temperature=sampling.temperature, presence_penalty=sampling.presence_penalty, seed=seed)
         llm.eval(tokens[-1:])
         for _ in range(n_tokens):
             token = sampler.sample()
@@ -131,6 +78,7 @@ def run(llm, tokens, grammar_text, sampling, mode: str, n_tokens: int, seed: int
             decoded.append(token)
             llm.eval([token])
         rejections = sampler.rejections
+        sampler.close()
     else:
         grammar = LlamaGrammar.from_string(grammar_text, verbose=False) if mode == "grammar_first" else None
         llm.set_seed(seed)

@@ -400,7 +400,14 @@ class SampleFirst:
     the grammar; the grammar then checks only the chosen token, and when it refuses it, the token is
     drawn again from a chain with the grammar first, over the whole vocabulary. Every token is one the
     grammar accepts, so every output is grammar-valid, and the same seed gives the same output.
+
+    A model that mostly writes what the grammar refuses (random weights; a model that does not know
+    the format) would pay for both draws, so once more than half of at least SWITCH_AFTER tokens were
+    refused the rest of the answer is drawn grammar-first only. The switch depends only on the tokens
+    drawn so far, so it is as deterministic as the draws.
     """
+
+    SWITCH_AFTER = 8
 
     def __init__(self, llm: Any, grammar: str | None, *, top_k: int, top_p: float, min_p: float, temperature: float,
                  presence_penalty: float, seed: int) -> None:
@@ -438,6 +445,8 @@ class SampleFirst:
                                                           align=True))
         self.one = (llama_cpp.llama_token_data * 1)()
         self.rejections = 0
+        self.drawn = 0
+        self.grammar_first = False
 
     def _draw(self, sampler: Any) -> int:
         lc, np = self._lc, self._np
@@ -454,6 +463,23 @@ class SampleFirst:
     def sample(self) -> int:
         """The next token (also accepted into the chains and the grammar, so they follow the output)."""
         lc = self._lc
+        self.drawn += 1
+        if (self.constrained is not None and self.drawn > self.SWITCH_AFTER
+                and 2 * self.rejections > self.drawn - 1):
+            self.grammar_first = True  # for the rest of the answer: the model keeps missing the grammar
+        if self.grammar_first:
+            token = self._draw(self.constrained)
+        else:
+            token = self._sample_first()
+        for sampler in (self.free, self.constrained):
+            if sampler is not None:
+                lc.llama_sampler_accept(sampler.sampler, token)
+        if self.grammar is not None:
+            lc.llama_sampler_accept(self.grammar, token)
+        return token
+
+    def _sample_first(self) -> int:
+        lc = self._lc
         token = self._draw(self.free)
         if self.grammar is not None:
             cell = self.one[0]
@@ -463,11 +489,6 @@ class SampleFirst:
             if not self._np.isfinite(cell.logit):
                 self.rejections += 1
                 token = self._draw(self.constrained)
-        for sampler in (self.free, self.constrained):
-            if sampler is not None:
-                lc.llama_sampler_accept(sampler.sampler, token)
-        if self.grammar is not None:
-            lc.llama_sampler_accept(self.grammar, token)
         return token
 
     def close(self) -> None:
