@@ -250,7 +250,15 @@ def run_on_ray(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str], 
 
         def check_workers(new: list[Any]) -> None:
             """New actors must run the driver's code; then: does each see --out, or send files back?"""
-            check_same_package(package_fingerprint(), ray.get([actor.package.remote() for actor in new]))
+            try:
+                packages = ray.get([actor.package.remote() for actor in new])
+            except ray.exceptions.RayError as exc:
+                # An actor that did not start (its session could not be built), or a worker whose grove_tui
+                # is older than the driver's and has no BatchWorker.package: Ray's last line says which.
+                cause = (str(exc).strip().splitlines() or [type(exc).__name__])[-1]
+                raise RuntimeFailure(f"a Ray worker could not say which grove_tui it runs: {cause}",
+                                     hint="Install the same GROVE-TUI (and model files) on every node.") from None
+            check_same_package(package_fingerprint(), packages)
             if return_files:
                 sends_back.update((actor, True) for actor in new)
                 return

@@ -93,8 +93,9 @@ def loopback_cluster(cpus: int) -> Iterator[tuple[str, dict[str, str]]]:
     command = [str(Path(sys.executable).parent / "ray"), "start", "--head", "--block",
                "--node-ip-address", "127.0.0.1", "--port", str(port), "--num-cpus", str(cpus),
                "--include-dashboard", "false", "--disable-usage-stats", "--temp-dir", temp_dir,
-               # Fixed defaults (10001, 52365) would collide with another cluster on this machine.
-               "--ray-client-server-port", str(_free_port()), "--dashboard-agent-listen-port", str(_free_port())]
+               # Fixed defaults (10001, 52365, 8265) would collide with another cluster on this machine.
+               "--ray-client-server-port", str(_free_port()), "--dashboard-agent-listen-port", str(_free_port()),
+               "--dashboard-port", str(_free_port())]
     # The cluster starts without the driver's PYTHONPATH: its workers would import whatever grove_tui
     # this environment has installed, unless the batch gives them its own (what the test checks).
     with log_path.open("wb") as log:
