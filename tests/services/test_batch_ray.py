@@ -147,7 +147,7 @@ if __name__ == "__main__":
 
 @pytest.mark.slow
 @pytest.mark.ray
-@pytest.mark.timeout(2400)  # two batches of 7 jobs and a resume of 2; about 10 minutes at load average 12 on 2 cores
+@pytest.mark.timeout(2400)  # two batches of 7 jobs and a resume of 2: 3.2 min at load average 6, ~10 at 12, on 2 cores
 def test_ray_cluster_batch_matches_one_process_records_failures_and_resumes(tmp_path):
     # Here, not at module level: the resume test below needs no Ray and runs without the extra.
     pytest.importorskip("ray", reason="the cluster extra is not installed (./install.sh cluster)")
