@@ -118,6 +118,13 @@ PERSON_NOUNS = frozenset(
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
 )
+# Verbs only people do: the noun that is their subject is a person even when no list names it
+# ("a sommelier chats with ...", "two botanists stroll to ..."). Not "wait", "go", "run" or "move":
+# trains, queues and lifts do those too.
+HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate socialise socialize greet "
+                                "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
+                                "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
+                                "tiptoe limp hobble shuffle".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})

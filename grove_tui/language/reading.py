@@ -340,11 +340,33 @@ class _Reader:
         lem = self._lemma(i)
         if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS:
             return True
+        if self._subject_of_a_human_verb(i):
+            return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
         # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).
         return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
                 and not known_word(self.low[i]) and _near_person_noun(self.low[i]) is not None)
+
+    def _subject_of_a_human_verb(self, i: int) -> bool:
+        """A noun no list names, the parser's subject of a verb only people do ("a sommelier
+        chats", "two botanists stroll"): a person, unless it names a place, the robot, a group
+        word, a time or a hazard."""
+        word = self.w[i]
+        parsed = word.pos in ("NOUN", "PROPN") and word.dep == "nsubj" and word.head != i and \
+            self.w[word.head].pos == "VERB" and self._verb(word.head) in lx.HUMAN_SUBJECT_VERBS
+        # The parser may also take the noun for an adjective and the verb for a plural noun ("a
+        # sommelier chats"): a determiner or number, the word, then a human verb's "-s" form.
+        nxt = i + 1
+        mistagged = (0 < i and nxt < self.n and word.pos in ("NOUN", "PROPN", "ADJ")
+                     and self.w[i - 1].pos in ("DET", "NUM") and verb_lemma(self.low[nxt]) in lx.HUMAN_SUBJECT_VERBS
+                     and self.low[nxt] != verb_lemma(self.low[nxt]) and self.low[nxt].endswith("s"))
+        if not (parsed or mistagged):
+            return False
+        lem = self._lemma(i)
+        return (lem.isalpha() and not self.index.knows(lem) and lem not in lx.ROBOT_WORDS
+                and lem not in lx.NON_PLACES and lem not in lx.IMPLIED_RANGES and lem not in lx.HAZARD_NOUNS
+                and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS)
 
     # -- mentions ----------------------------------------------------------------------------
 

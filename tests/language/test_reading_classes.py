@@ -252,3 +252,16 @@ def test_a_single_conversation_partner_is_no_group_but_a_counted_one_is(worlds):
     one(read(worlds, "hospital", "A nurse chats with the receptionist in the lobby."))
     reading = read(worlds, "hospital", "A nurse chats with two visitors in the lobby.")
     assert [g.count.value for g in reading.groups] == [1, 2]
+
+
+@pytest.mark.parametrize("world, prompt, label", [
+    ("office", "A sommelier chats with the manager in the kitchen.", "sommelier"),
+    ("office", "Two botanists stroll to the boardroom.", "botanist"),
+    ("station", "A locksmith browses in the newsagent.", "locksmith"),
+])
+def test_the_subject_of_a_verb_only_people_do_is_a_person(worlds, world, prompt, label):
+    assert one(read(worlds, world, prompt)).label == label
+
+
+def test_a_thing_doing_a_thing_is_nobody(worlds):
+    assert read(worlds, "office", "The new printer whirs in the open office.").groups == ()
