@@ -125,6 +125,10 @@ HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate 
                                 "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
                                 "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
                                 "tiptoe limp hobble shuffle".split())
+# Verbs of things, not people: a counted noun no list names that does only these is no group
+# ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
+THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "
+                        "contain lean".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})

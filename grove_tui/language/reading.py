@@ -481,10 +481,20 @@ class _Reader:
                 continue
             if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
                     and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
-                    and verb_lemma(self.low[k]) not in lx.INTENT_VERBS):
+                    and verb_lemma(self.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
                 return k
             return None
         return None
+
+    def _does_what_people_do(self, k: int) -> bool:
+        """Whether a counted noun no list names is the subject of something people do ("ten zombies
+        shamble to the exit", "five volunteers hand out leaflets"), not a thing that only is or
+        hangs somewhere ("two posters hang in the lobby", "three clocks tick")."""
+        head = self.w[k].head
+        if self.w[k].dep not in ("nsubj", "nsubjpass") or head == k:
+            return True  # the parser gives no verb to judge by: keep the count's reading
+        verb = self._verb(head)
+        return verb not in lx.THING_VERBS
 
     def _modifies_next_noun(self, k: int) -> bool:
         """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):

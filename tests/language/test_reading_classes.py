@@ -265,3 +265,11 @@ def test_the_subject_of_a_verb_only_people_do_is_a_person(worlds, world, prompt,
 
 def test_a_thing_doing_a_thing_is_nobody(worlds):
     assert read(worlds, "office", "The new printer whirs in the open office.").groups == ()
+
+
+@pytest.mark.parametrize("prompt, counts", [
+    ("Two posters hang in the lobby while three porters walk to the pharmacy.", [3]),
+    ("Four screens flash in the lobby. Ten zombies shamble to the pharmacy.", [10]),
+])
+def test_a_counted_thing_that_only_does_what_things_do_is_nobody(worlds, prompt, counts):
+    assert [g.count.value for g in read(worlds, "hospital", prompt).groups] == counts
