@@ -183,6 +183,13 @@ CASES: list[Case] = [
     Case("trajectories", "NaN row: export trajectories", lambda r: (lambda b: (open(b / "trajectories.csv", "a").write("9999,1.0,1,nan,2,0,0,0,-1\n"), ["export", "trajectories", str(b), "--out", str(r / "x")])[1])(bundle(r))),
     # trees
     Case("tree input", "bt validate /dev/zero", lambda r: ["bt", "validate", "/dev/zero"]),
+    Case("tree input", "2,400 SubTrees calling unknown IDs", lambda r: ["bt", "validate", str(write(r, "t.xml", (
+        '<root BTCPP_format="4" main_tree_to_execute="M"><BehaviorTree ID="M"><Sequence>'
+        + "".join(f'<SubTree ID="missing_tree_{i}"/>' for i in range(2400)) + "</Sequence></BehaviorTree></root>")))]),
+    Case("tree input", "a chain of 2,400 SubTrees", lambda r: ["bt", "validate", str(write(r, "t.xml", (
+        '<root BTCPP_format="4" main_tree_to_execute="T0">'
+        + "".join(f'<BehaviorTree ID="T{i}"><SubTree ID="T{i + 1}"/></BehaviorTree>' for i in range(2400))
+        + '<BehaviorTree ID="T2400"><Wait/></BehaviorTree></root>')))]),
     # config and environment
     Case("config", "GROVE_CONFIG_FILE=/etc/passwd", lambda r: ["models", "list"], env={"GROVE_CONFIG_FILE": "/etc/passwd"}),
     Case("config", "config with a !!python tag", lambda r: ["models", "list"], env={"GROVE_CONFIG_FILE": "{root}/c.yaml"}),
@@ -194,11 +201,17 @@ CASES: list[Case] = [
         {"world": "hospital", "preset": "normal", "prompt": 123},
         {"world": "hospital", "preset": "normal", "prompt": "ten people", "simulate": "abc"},
         {"world": "hospital", "preset": "normal", "prompt": "ten people", "seeed": 1})))), "--out", str(r / "out")]),
+    Case("batch", "two jobs with the same name", lambda r: ["batch", str(write(r, "jobs.jsonl", "\n".join(json.dumps(j) for j in (
+        {"world": "hospital", "preset": "normal", "prompt": "ten people walk", "name": "same"},
+        {"world": "hospital", "preset": "normal", "prompt": "two people wait", "name": "same"})))), "--out", str(r / "out")],
+         writes=True, model=True),  # the good first job runs; the duplicate is refused
     Case("batch", "non-UTF-8 job file", lambda r: ["batch", str(write(r, "jobs.jsonl", b"\xff\xfe{}\n")), "--out", str(r / "out")]),
     # prompts
     Case("prompt", "zero people evacuate the cafeteria", lambda r: GENERATE + ["--prompt", "zero people evacuate the cafeteria", "--out", str(r / "out")], model=True),
     Case("prompt", "-5 people", lambda r: GENERATE + ["--prompt", "-5 people evacuate the cafeteria", "--out", str(r / "out")], model=True),
     Case("prompt", "a billion people", lambda r: GENERATE + ["--prompt", "a billion people evacuate the cafeteria", "--out", str(r / "out")], model=True),
+    Case("prompt", "501 people evacuate the hospital (limit 500)", lambda r: GENERATE + ["--prompt", "501 people evacuate the hospital", "--out", str(r / "out")], model=True),
+    Case("prompt", "500 people across the hospital evacuate", lambda r: GENERATE + ["--prompt", "500 people across the hospital evacuate", "--out", str(r / "out")], model=True),
     Case("prompt", "emoji only", lambda r: GENERATE + ["--prompt", "🔥🔥🔥", "--out", str(r / "out")], model=True),
     # arguments
     Case("arguments", "--seed -1", lambda r: GENERATE + ["--prompt", "ten people evacuate", "--seed", "-1", "--out", str(r / "out")]),
@@ -209,6 +222,7 @@ CASES: list[Case] = [
     Case("arguments", "stdout is /dev/full", lambda r: ["worlds", "list"], stdout_to="/dev/full"),
     # data loss (fixed earlier on main; kept in the table)
     Case("data loss", "--out is a user's folder", lambda r: (write(r, "mine/notes.txt", "keep me"), GENERATE + ["--prompt", "ten people evacuate", "--out", str(r / "mine")])[1]),
+    Case("data loss", "--out . (the working folder)", lambda r: (write(r, "notes.txt", "keep me"), GENERATE + ["--prompt", "ten people evacuate", "--out", "."])[1]),
     Case("data loss", "--out is a device node", lambda r: GENERATE + ["--prompt", "ten people evacuate", "--out", "/dev/full"]),
     Case("data loss", "export --base-name ../../x", lambda r: ["export", "hunav", str(bundle(r)), "--out", str(r / "x"), "--base-name", "../../x"]),
 ]
@@ -298,7 +312,7 @@ def main() -> None:
         text = first.replace("|", "\\|")
         if len(text) > 220:
             text = text[:217] + "..."
-        print(f"| {case.section} | {case.name} | {code} | {seconds:.1f} | {'yes' if unchanged else 'NO'} | {text} |",
+        print(f"| {case.section} | {case.name} | {code} | {seconds:.1f} | {'yes' if unchanged else 'wrote (expected)' if case.writes else 'NO'} | {text} |",
               flush=True)
     print(f"\ncases={len(cases)} exit_2={bad_input} tracebacks={tracebacks}")
 

@@ -26,6 +26,12 @@ MAX_YAML_DEPTH = 32
 # Digits in one YAML number: the interpreter refuses ints past 4,300 digits, floats overflow far sooner.
 MAX_NUMBER_DIGITS = 1000
 
+# People in one group of one prompt ("500 people evacuate"): the bound of every preset's
+# limits.max_count and of the draft grammar's counts. A preset may allow fewer (presets/*.yaml); the
+# emergency preset allows this many, spread over the building when the prompt places them nowhere.
+# 500 is the dense hospital evacuation of bench/evacuation.py (docs/HOSTILE.md).
+MAX_GROUP_COUNT = 500
+
 YamlPath = tuple[str | int, ...]
 
 # libyaml's loader has the same safe semantics and keeps node marks, and it is ~20x faster.

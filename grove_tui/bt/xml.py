@@ -518,7 +518,20 @@ def load_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] =
 
 def check_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
     try:
-        data = _with_includes(path, read_file_bytes(path))
+        data = read_file_bytes(path)
+    except BTError as exc:
+        return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
+    return check_tree_bytes(path, data, nodes)
+
+
+def check_tree_bytes(path: str | os.PathLike[str], data: bytes,
+                     nodes: Mapping[str, NodeSpec] = NODES) -> list[BTProblem]:
+    """Every problem of a tree file already read (read_file_bytes); its `<include>`s are read from its folder.
+
+    Apart from check_tree_file so `grove bt validate` can tell a file it could not read (exit 2)
+    from a file with problems (exit 1)."""
+    try:
+        data = _with_includes(path, data)
     except BTError as exc:
         return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
     return check_tree_text(data, str(path), nodes)

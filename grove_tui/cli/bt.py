@@ -35,22 +35,24 @@ def manifest(as_list: bool, preset: str | None) -> None:
 def validate(files: tuple[str, ...]) -> None:
     """Check behavior-tree XML files against the manifest; print every problem with its line.
 
-    Exit status 1 when any file has a problem, 2 when a file is missing (the others are still checked).
+    Exit status, as linters have it: 0 when every file is fine, 1 when a file has problems, 2 when a
+    file could not be read at all (missing, a folder, device or pipe, over the size limit). Every file
+    is still checked; the highest status wins.
     """
-    import os
+    from grove_tui.bt.xml import MAX_BYTES, check_tree_bytes, read_file_bytes
+    from grove_tui.errors import EXIT_BAD_INPUT, BTError, print_error
 
-    from grove_tui.bt.xml import check_tree_file
-    from grove_tui.errors import BadInputError
-
-    missing = [path for path in files if not os.path.lexists(path)]
-    if len(missing) == len(files):
-        # Nothing to check is bad input (exit 2), unlike a tree with problems (exit 1).
-        raise BadInputError(f"{missing[0]}: no such tree file" + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))
-    # Like a linter: every file is checked and every problem listed (devices, pipes and links to them
-    # are problems of their own, named by check_tree_file), then the worst status wins.
-    bad = 0
+    bad = unreadable = 0
     for path in files:
-        problems = check_tree_file(path)
+        try:
+            data = read_file_bytes(path)
+        except BTError as error:
+            # Nothing to check: one `error:` line naming the file ("PATH: does not exist").
+            unreadable += 1
+            print_error(BTError(error.message,
+                                hint=f"give readable tree XML files (regular files of at most {MAX_BYTES:,} bytes)"))
+            continue
+        problems = check_tree_bytes(path, data)
         if problems:
             bad += 1
             for problem in problems:
@@ -58,5 +60,9 @@ def validate(files: tuple[str, ...]) -> None:
         else:
             click.echo(f"{path}: ok")
     if bad:
-        click.echo(f"{bad} of {len(files)} file(s) have problems", err=True)
-        sys.exit(2 if missing else 1)
+        unread = f"; {unreadable} could not be read" if unreadable else ""
+        click.echo(f"{bad} of {len(files)} file(s) have problems{unread}", err=True)
+    if unreadable:
+        sys.exit(EXIT_BAD_INPUT)
+    if bad:
+        sys.exit(1)

@@ -105,7 +105,8 @@ class Progress:
 def summary_lines(result: Any, bundle: Path) -> list[str]:
     scenario, report = result.scenario, result.report
     stages = " ".join(f"{k}={v['seconds']:.2f}s" for k, v in report["stages"].items())
-    groups = ", ".join(f"{g['count']} {g['label']} from {g['spawn']}" for g in report["groups"])
+    groups = ", ".join(f"{g['count']} {g['label']} " + (f"across {len(g['spawn_zones'])} zones" if g.get("spawn_zones")
+                                                         else f"from {g['spawn']}") for g in report["groups"])
     lines = [
         f"bundle: {bundle}",
         f"agents: {len(scenario.agents)} ({groups})",

@@ -9,7 +9,7 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
-from grove_tui.world import World, WorldError, list_worlds, load_world, resolve_world_path
+from grove_tui.world import World, WorldError, list_worlds, load_world, parse_world, read_world_file
 
 
 def _console() -> Console:
@@ -88,19 +88,29 @@ def _roi_table(world: World) -> Table:
 @worlds.command("check")
 @click.argument("files", nargs=-1, required=True)
 def check_command(files: tuple[str, ...]) -> None:
-    """Validate world YAML FILES (or shipped names) and print every problem; exits 1 if any, 2 if a file is missing."""
+    """Validate world YAML FILES (or shipped names) and print every problem.
+
+    Exit status, as linters have it: 0 when every file is fine, 1 when a file has problems (each
+    listed with its line), 2 when a file could not be read at all (missing, an unknown name, not a
+    regular file, over the size limit, not UTF-8). Every file is still checked; the highest status wins.
+    """
+    from grove_tui.errors import EXIT_BAD_INPUT, print_error
+    from grove_tui.world.loader import MAX_WORLD_FILE_BYTES
+
     console = _console()
-    total = 0
+    total = unreadable = 0
     for item in files:
-        path = resolve_world_path(item)  # a missing file is bad input (exit 2), not a problem of a world
-        # One parse: load_world reports every problem on its WorldError (a 20,000-zone world parsed
-        # twice took twice as long).
         try:
-            world = load_world(path)
-            problems = []
+            path, text = read_world_file(item)
         except WorldError as error:
-            problems = list(error.problems) or [str(error)]
-        if not problems:
+            # Nothing to lint: one `error:` line naming the file, and the others are still checked.
+            unreadable += 1
+            print_error(WorldError(error.message, hint="give readable world YAML files (regular, UTF-8, at most "
+                                   f"{MAX_WORLD_FILE_BYTES >> 20} MB) or shipped names (grove worlds list)"))
+            continue
+        # One parse: parse_world reports every problem (a 20,000-zone world parsed twice took twice as long).
+        world, problems = parse_world(text, str(path))
+        if world is not None:  # parse_world returns a world only when it found no problem
             console.print(Text.assemble(("ok ", "bold green"), f"{path}: {len(world.zones)} zones, "
                                         f"{len(world.doors())} doors, {len(world.entities())} entities"))
             continue
@@ -109,5 +119,7 @@ def check_command(files: tuple[str, ...]) -> None:
                                     f"in {path}:"))
         for problem in problems:
             console.print(Text("  " + str(problem)), soft_wrap=True)
+    if unreadable:
+        raise SystemExit(EXIT_BAD_INPUT)
     if total:
         raise SystemExit(1)

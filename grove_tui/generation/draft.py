@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from grove_tui.errors import DraftError
+from grove_tui.limits import MAX_GROUP_COUNT
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
@@ -170,8 +171,9 @@ def build_draft_schema(node_names: Iterable[str], roi_names: Iterable[str], max_
     rois = list(dict.fromkeys(roi_names))
     if not rois:
         raise DraftError("no RoI names given: a draft needs at least one place to spawn")
-    if not (1 <= max_groups <= 16 and 1 <= max_count <= 500 and 1 <= max_depth <= 6 and 1 <= max_children <= 8):
-        raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..16), max_count={max_count} (1..500), "
+    if not (1 <= max_groups <= 16 and 1 <= max_count <= MAX_GROUP_COUNT and 1 <= max_depth <= 6 and 1 <= max_children <= 8):
+        raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..16), max_count={max_count} "
+                         f"(1..{MAX_GROUP_COUNT}), "
                          f"max_depth={max_depth} (1..6), max_children={max_children} (1..8)")
     leaves = [name for name, spec in specs.items() if spec.category not in BRANCH_CATEGORIES]
     branches = [name for name, spec in specs.items() if spec.category in BRANCH_CATEGORIES]

@@ -86,6 +86,9 @@ class GroupPlan:
     reading_index: int | None = None  # the prompt reading's group this one realises
     party_size: int | None = None  # "two families of three": social groups of this size
     speed_factor: float = 1.0  # the reading's pace: slow / fast walkers
+    # zone -> people, when an evacuation group the sentence places nowhere is too large for one zone
+    # and starts spread over the building (_spread_unplaced_evacuees); empty: everyone in `spawn`.
+    spawn_zones: dict[str, int] = field(default_factory=dict)
 
 
 @dataclass
@@ -376,6 +379,11 @@ def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quan
     """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
     total = sum(q.count for q in quantities)
     zones = list(getattr(selection, "named_zones", ()) or getattr(selection, "zones", ()))
+    placed = [m for m in getattr(selection, "matches", ()) if m.reason not in ("default", "preset", "world")]
+    if preset.velocity == "field" and not placed:
+        # An evacuation the prompt places nowhere may start anywhere in the building (postprocess
+        # spreads a group too large for one zone), so the building's floor is what must hold it.
+        zones = [z.name for z in world.zones]
     if total and zones:
         space = FreeSpace(world, grid)
         capacity = sum(space.capacity(z) for z in zones)
@@ -834,6 +842,8 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                                    g.label, allowed_nodes)
         _ground_spawns(groups, quantities, prompt, selection, notes, world)
     space = FreeSpace(world, grid)
+    if preset.velocity == "field" and reading is not None:
+        _spread_unplaced_evacuees(groups, reading, space, world, notes)
     _check_capacity(groups, space, world)
     _check_limits(groups, preset)
     resolver = TargetResolver(world, grid, space, preset, rng)
@@ -866,16 +876,16 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         if preset.velocity == "field":
             g.field_id = f"group_{g.index + 1}"  # the group's first field; per exit below when it splits
         first = 0
-        for k, size in enumerate(parties):
+        for zone, size, k in _spawn_chunks(g, parties):
             party = g.sfm_group + k if g.sfm_group >= 0 else -1
             cluster = None
             if party >= 0:
-                (cluster,) = space.sample(g.spawn, 1, rng, 0.1, key=f"anchor:{g.spawn}:{g.index}:{k}")
-            starts = space.sample(g.spawn, size, rng, SPAWN_SPACING, key="spawn", cluster=cluster)
+                (cluster,) = space.sample(zone, 1, rng, 0.1, key=f"anchor:{zone}:{g.index}:{k}")
+            starts = space.sample(zone, size, rng, SPAWN_SPACING, key="spawn", cluster=cluster)
             if party >= 0:
-                g.parties[party] = g.member_ids[first:first + size]
+                g.parties.setdefault(party, []).extend(g.member_ids[first:first + size])
             for agent_id, start in zip(g.member_ids[first:first + size], starts):
-                agents.append(AgentPlan(agent_id, g.index, party, g.label, start, g.spawn, [], g.spawn, g.tree,
+                agents.append(AgentPlan(agent_id, g.index, party, g.label, start, zone, [], zone, g.tree,
                                         max_vel=round(preset.max_vel * g.speed_factor, 3), field_id=g.field_id,
                                         exit=exit_name, behavior=g.behavior))
             first += size
@@ -927,12 +937,58 @@ def _with_exit(tree: DraftNode, exit_name: str) -> DraftNode:
     return DraftNode(tree.node, ports, tuple(_with_exit(c, exit_name) for c in tree.children))
 
 
+def _spread_unplaced_evacuees(groups: Sequence[GroupPlan], reading: PromptReading, space: FreeSpace, world: Any,
+                              notes: list[str]) -> None:
+    """An evacuation group that the sentence places nowhere ("500 people evacuate") and that is too
+    large for the zone the draft starts it in, starts spread over the building instead: every zone
+    with free floor takes a share in proportion to that floor (largest remainders), so the crowd is
+    as dense everywhere. A group the sentence does place keeps its zone, and the capacity check
+    refuses it there if it does not fit."""
+    zones = [z.name for z in world.zones if space.capacity(z.name) >= 1 and len(space.cells(z.name))]
+    for g in groups:
+        if g.reading_index is None or not 0 <= g.reading_index < len(reading.groups):
+            continue
+        asked = reading.groups[g.reading_index]
+        if asked.start or asked.location or g.count <= space.capacity(g.spawn):
+            continue
+        area = np.array([space.free_area(z) for z in zones])
+        shares = g.count * area / area.sum()
+        counts = np.floor(shares).astype(int)
+        # Largest remainders; ties by zone order, so the split is deterministic.
+        for i in np.argsort(-(shares - counts), kind="stable")[: g.count - int(counts.sum())]:
+            counts[i] += 1
+        g.spawn_zones = {zone: int(n) for zone, n in zip(zones, counts) if n > 0}
+        first_zone = max(g.spawn_zones, key=lambda z: (g.spawn_zones[z], z))
+        notes.append(f"group '{g.label}': {g.count} people do not fit in {g.spawn} (at most {space.capacity(g.spawn)}) "
+                     f"and the sentence places them nowhere, so they start across the building: "
+                     f"{len(g.spawn_zones)} zones in proportion to their free floor")
+        g.spawn = first_zone
+
+
+def _spawn_chunks(group: GroupPlan, parties: Sequence[int]) -> list[tuple[str, int, int]]:
+    """(zone, people, party index) in spawning order. A spread group's social parties each start in
+    one zone, handed to the zone with the most places left; one party spread over zones (or no
+    parties) fills each zone's share."""
+    if not group.spawn_zones:
+        return [(group.spawn, size, k) for k, size in enumerate(parties)]
+    if len(parties) == 1:
+        return [(zone, n, 0) for zone, n in group.spawn_zones.items()]
+    left = dict(group.spawn_zones)
+    chunks = []
+    for k, size in enumerate(parties):
+        zone = max(left, key=lambda z: (left[z], z))
+        left[zone] -= size
+        chunks.append((zone, size, k))
+    return chunks
+
+
 def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -> None:
     """Everyone must fit, at a plausible density, both where they start and where they end up."""
     ends: dict[str, int] = {}
     starts: dict[str, int] = {}
     for g in groups:
-        starts[g.spawn] = starts.get(g.spawn, 0) + g.count
+        for zone, n in (g.spawn_zones or {g.spawn: g.count}).items():
+            starts[zone] = starts.get(zone, 0) + n
         places = [node.ports[port] for node, port in navigation_targets(g.tree) if node.node != "FollowVelocityField"]
         if places:
             zone = _zone_of(world, places[-1], g.spawn)

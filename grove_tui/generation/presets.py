@@ -15,6 +15,7 @@ from typing import Any
 import yaml
 
 from grove_tui.errors import GenerationError, PresetError, PromptError
+from grove_tui.limits import MAX_GROUP_COUNT
 from grove_tui.paths import presets_dir
 from grove_tui.scenario.model import DEFAULT_AGENT_RADIUS, RADIUS_RANGE
 from grove_tui.settings import config_dir
@@ -200,7 +201,8 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         ),
         limits=Limits(
             max_groups=positive(limits, "max_groups", "limits.max_groups", 6),
-            max_count=positive(limits, "max_count", "limits.max_count", 40),
+            max_count=_at_most(positive(limits, "max_count", "limits.max_count", 40), MAX_GROUP_COUNT,
+                               f"{where}: limits.max_count"),
             max_depth=positive(limits, "max_depth", "limits.max_depth", 3),
             default_count=positive(limits, "default_count", "limits.default_count", 4),
         ),
@@ -215,3 +217,9 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
 def _kind_name(kind: type | tuple[type, ...]) -> str:
     kinds = kind if isinstance(kind, tuple) else (kind,)
     return " or ".join({str: "text", int: "a whole number", float: "a number", dict: "a mapping", list: "a list", bool: "true or false"}.get(k, k.__name__) for k in kinds)
+
+
+def _at_most(value: int, most: int, what: str) -> int:
+    if value > most:
+        raise PresetError(f"{what}: {value} is over the limit of {most} people per group (grove_tui/limits.py)")
+    return value

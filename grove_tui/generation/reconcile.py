@@ -388,7 +388,9 @@ def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequ
                 unhonoured.append(f"'{r.who}' has no group in the scenario")
             continue
         checks = [_check_count(r, counts.get(index, 0), g)]
-        checks.append(_check_place("start", r.start, g.spawn, world, zone_level=True))
+        spread = getattr(g, "spawn_zones", None)  # a crowd the sentence places nowhere, spread over the building
+        checks.append(_check_place("start", r.start, f"across the building ({len(spread)} zones)" if spread else g.spawn,
+                                   world, zone_level=True))
         places = _tree_places(g.tree)
         if r.destination:
             does = r.destination if _reaches(world, r.destination, places) else (places[-1] if places else "nowhere")

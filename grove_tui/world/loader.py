@@ -25,7 +25,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 from shapely.validation import explain_validity
 
-from grove_tui.limits import InputLimitError, YamlPath, compose_yaml, read_text_bounded
+from grove_tui.limits import InputLimitError, YamlPath, check_regular_file, compose_yaml, read_text_bounded
 from grove_tui.paths import worlds_dir
 
 from grove_tui.world.model import (OUTSIDE, ON_BOUNDARY_TOLERANCE, OVERLAP_AREA_TOLERANCE, DOOR_CLEARANCE, SNAKE_CASE, WorldProblem, WorldError, Door, Entity, Obstacle, Zone, World, _unknown_name_message, Point2)
@@ -689,6 +689,22 @@ def _read_world_text(file: Path) -> str:
     return read_text_bounded(file, MAX_WORLD_FILE_BYTES, "world file")
 
 
+def read_world_file(name_or_path: str | os.PathLike[str]) -> tuple[Path, str]:
+    """The resolved path and the text of a world (a shipped name or a path).
+
+    WorldError when there is nothing to check: the name is unknown, or the file is missing, not a
+    regular file, over MAX_WORLD_FILE_BYTES, unreadable or not UTF-8. `grove worlds check` tells this
+    "could not read it" (exit 2) apart from the problems of a file it did read (exit 1).
+    """
+    path = resolve_world_path(name_or_path)
+    try:
+        return path, _read_world_text(path)
+    except OSError as error:
+        raise WorldError(f"cannot read world file {path}: {error.strerror}") from None
+    except InputLimitError as error:
+        raise WorldError(str(error)) from None
+
+
 def check_world_file(path: str | os.PathLike[str]) -> list[WorldProblem]:
     """Every problem in a world file (empty when it loads)."""
     file = Path(path)
@@ -716,11 +732,12 @@ def resolve_world_path(name_or_path: str | os.PathLike[str]) -> Path:
     candidate = Path(text).expanduser()
     looks_like_path = os.sep in text or "/" in text or text.endswith((".yaml", ".yml"))
     if looks_like_path:
-        if not candidate.is_file():
-            if candidate.exists():
-                # A folder, a device (/dev/zero) or a pipe: say what it is rather than "missing".
-                raise WorldError(f"world file {text} is not a regular file")
-            raise WorldError(f"world file {text} does not exist")
+        try:
+            # A folder, a device (/dev/zero), a pipe or an oversized file: say what it is rather than
+            # "missing", before anything opens it.
+            check_regular_file(candidate, MAX_WORLD_FILE_BYTES, "world file")
+        except InputLimitError as error:
+            raise WorldError(str(error)) from None
         return candidate.resolve()
     shipped = worlds_dir() / f"{text}.yaml"
     if shipped.is_file():

@@ -202,12 +202,14 @@ def test_cli_manifest_and_validate(tmp_path):
     bad.write_text(tree("<Sequence>\n<GoTo/>\n<Wander zone='hall' duration='x'/>\n</Sequence>"))
     result = runner.invoke(bt, ["validate", str(good)])
     assert result.exit_code == 0 and "good.xml: ok" in result.output
+    result = runner.invoke(bt, ["validate", str(bad)])
+    assert result.exit_code == 1  # problems found, like a linter
     result = runner.invoke(bt, ["validate", str(good), str(bad), str(tmp_path / "missing.xml")])
-    assert result.exit_code == 2  # a missing file is bad input; the others are still checked and listed
+    assert result.exit_code == 2  # a file that cannot be read wins; the others are still checked and listed
     assert f"{bad}:4: GoTo: missing required port 'target'" in result.output
     assert f"{bad}:5: Wander: port 'duration' (float): expected a number, got 'x'" in result.output
-    assert "missing.xml: does not exist" in result.output
-    assert "2 of 3 file(s) have problems" in result.output
+    assert f"error: {tmp_path / 'missing.xml'}: does not exist (hint: " in result.stderr
+    assert "1 of 3 file(s) have problems; 1 could not be read" in result.output
 
 
 def test_check_tree_file_reports_unreadable_files(tmp_path):
@@ -239,8 +241,9 @@ def test_validate_refuses_devices_links_to_them_and_fifos_at_once(tmp_path, path
     started = time.perf_counter()
     result = CliRunner().invoke(bt, ["validate", str(path)])
     assert time.perf_counter() - started < 5
-    assert result.exit_code == 1
-    assert result.output.splitlines()[0] == f"{path}: is {kind}, not a file"
+    assert result.exit_code == 2  # could not read the input, apart from exit 1 (a tree with problems)
+    (line,) = result.stderr.splitlines()
+    assert line.startswith(f"error: {path}: is {kind}, not a file (hint: ")
     with pytest.raises(BTError, match=f"is {kind}, not a file"):
         load_tree_file(path)
 
@@ -251,6 +254,10 @@ def test_a_file_over_the_size_limit_is_refused_before_it_is_read(tmp_path):
         handle.truncate(MAX_BYTES * 50)  # sparse: large on paper, nothing to read
     problems = check_tree_file(big)
     assert len(problems) == 1 and "the limit is" in problems[0].message
+    from grove_tui.cli.bt import bt
+
+    result = CliRunner().invoke(bt, ["validate", str(big)])
+    assert result.exit_code == 2 and result.stderr.startswith(f"error: {big}: ") and "the limit is" in result.stderr
     with pytest.raises(BTError, match="the limit is"):
         load_tree_file(big)
 

@@ -85,6 +85,7 @@ def _base() -> dict:
         (lambda d: d.update(velocity="teleport"), "velocity must be one of waypoints, field"),
         (lambda d: d.update(goal_sampling=3), "goal_sampling must be text"),
         (lambda d: d["limits"].update(max_count=0), "limits.max_count must be a positive number"),
+        (lambda d: d["limits"].update(max_count=501), "limits.max_count: 501 is over the limit of 500 people per group"),
         (lambda d: d["limits"].update(max_groups=2.5), "limits.max_groups must be a whole number"),
         (lambda d: d["planner"].update(enabled="yes"), "planner.enabled must be true or false"),
         (lambda d: d["nodes"].update(control=[]), "nodes.control must name at least one"),

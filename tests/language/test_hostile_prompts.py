@@ -76,7 +76,7 @@ def test_a_device_named_as_a_world_file_is_not_called_missing():
     from grove_tui.errors import WorldError
     from grove_tui.world import load_world
 
-    with pytest.raises(WorldError, match="is not a regular file"):
+    with pytest.raises(WorldError, match="is a device, not a file"):
         load_world("/dev/zero")
 
 

@@ -273,3 +273,15 @@ def test_a_thing_doing_a_thing_is_nobody(worlds):
 ])
 def test_a_counted_thing_that_only_does_what_things_do_is_nobody(worlds, prompt, counts):
     assert [g.count.value for g in read(worlds, "hospital", prompt).groups] == counts
+
+
+@pytest.mark.parametrize("world, prompt, count", [
+    ("hospital", "500 people across the hospital evacuate", 500),
+    ("office", "120 staff throughout the office evacuate", 120),
+    ("hospital", "Two hundred visitors across the building leave in a hurry", 200),
+])
+def test_a_verb_after_the_building_is_not_part_of_a_place(worlds, world, prompt, count):
+    reading = read(worlds, world, prompt)
+    group = one(reading)
+    assert group.count.value == count and group.start is None
+    assert not reading.unknown_places

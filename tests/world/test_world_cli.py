@@ -78,6 +78,27 @@ def test_check_reports_broken_yaml():
     assert "broken_yaml.yaml:7: (document): broken YAML" in " ".join(result.output.split())
 
 
+def test_check_exits_2_when_a_file_cannot_be_read_and_still_checks_the_others(tmp_path):
+    # Linters' convention: 1 is "problems found", 2 is "could not read the input"; the highest wins.
+    not_utf8 = tmp_path / "latin1.yaml"
+    not_utf8.write_bytes(b"name: caf\xe9\n")
+    big = tmp_path / "big.yaml"
+    with big.open("wb") as handle:
+        handle.truncate(33 * 1024 * 1024)  # sparse: over the limit on paper, nothing to read
+    for unreadable, reason in ((tmp_path / "missing.yaml", "does not exist"), ("/dev/zero", "is a device, not a file"),
+                               (tmp_path, "is a folder, not a file"), (not_utf8, "is not UTF-8 text"),
+                               (big, "the limit is 32.0 MB"), ("hotel", "no shipped world named 'hotel'")):
+        result = run("check", str(unreadable))
+        assert result.exit_code == 2, (unreadable, result.output)
+        (line,) = result.stderr.splitlines()
+        assert line.startswith("error: ") and str(unreadable) in line and reason in line, line
+        assert result.stdout == ""
+    result = run("check", str(tmp_path / "missing.yaml"), str(BAD / "many_problems.yaml"), "hospital")
+    assert result.exit_code == 2
+    assert "4 problems" in result.stdout and "ok " in result.stdout  # the readable files were checked
+    assert result.stderr.count("error: ") == 1
+
+
 def test_render_fits_the_requested_size_and_keeps_proportions():
     world = load_world("hospital")
     text = render_world_text(world, 80, 30)
