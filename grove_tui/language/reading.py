@@ -34,6 +34,12 @@ How a prompt is read:
    robot interactions from the verb that governs the robot (look, approach, follow, avoid,
    block -> HuNavSim Surprised, Curious, Curious, Scared, Threatening), purposes that are not
    places ("to register", "for coffee"), waits with durations, pace and togetherness.
+5. Evacuations: a cue word ("evacuate", "alarm"), a hazard named on its own ("Fire!", "a bomb
+   scare", not "the fire exit"), an emptying phrase ("empty out"; "get out" with urgency) or a
+   zone that is cleared ("Platform 1 must be cleared", "clear the kitchen": its start).
+6. Who is a person: a noun of the lexicon's list, a misspelling of one that is no word of the
+   parser's vocabulary, the subject of a verb only people do ("a sommelier chats"), or a counted
+   noun that does more than things do ("ten zombies shamble", not "two posters hang").
 """
 
 from __future__ import annotations
