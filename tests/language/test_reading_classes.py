@@ -173,6 +173,108 @@ def test_counts_after_a_possessive_and_odd_counts(worlds, world, prompt, value):
     assert (group.count.value, group.intent) == (value, "evacuate")
 
 
+# ---- round 2: the classes heldout_fresh.yaml found (none of its sentences, none of heldout_fresh2's) ----
+
+
+@pytest.mark.parametrize("world, prompt, start, destination", [
+    ("office", "Smoke in the boardroom! Six staff get out through the fire exit.", None, "fire_exit"),
+    ("hospital", "Ward C has to be emptied: eight patients leave by the east exit.", "ward_c", "east_emergency_exit"),
+    ("office", "Clear the kitchen: five employees go out by the back door.", "kitchen", "back_exit"),
+    ("station", "Everyone in the waiting room must get out through the ticket hall now.", "waiting_room", None),
+    ("airport", "A bomb scare at the cafe: twelve travellers empty out into the concourse.", None, "concourse"),
+])
+def test_evacuation_idioms_hazards_and_cleared_zones(worlds, world, prompt, start, destination):
+    group = one(read(worlds, world, prompt))
+    assert group.intent == "evacuate"
+    if start is not None:
+        assert group.start == start
+    if destination is not None:
+        assert group.destination == destination
+
+
+@pytest.mark.parametrize("world, prompt", [
+    ("office", "Two managers walk to the fire exit."),
+    ("hospital", "Two visitors get out of the lift and walk to the cafeteria."),
+    ("residential", "Dad checks the smoke detector in the hallway and then goes to the kitchen."),
+])
+def test_leaving_without_an_emergency_is_a_walk(worlds, world, prompt):
+    assert one(read(worlds, world, prompt)).intent == "walk"
+
+
+@pytest.mark.parametrize("world, prompt, interaction", [
+    ("airport", "A traveller recoils whenever the robot beeps at gate A1.", "avoid"),
+    ("station", "Commuters cower behind the benches when the robot rolls by.", "avoid"),
+    ("office", "An intern parks himself in front of the robot in the corridor.", "block"),
+    ("hospital", "A porter jumps back as the robot turns into the main corridor.", "avoid"),
+])
+def test_robot_postures_avoid_and_block(worlds, world, prompt, interaction):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.robot_interaction) == ("robot", interaction)
+
+
+@pytest.mark.parametrize("world, prompt, label", [
+    ("office", "An applicant waits at the front desk.", "applicant"),
+    ("airport", "Two pursers walk to gate B2.", "purser"),
+    ("hospital", "A phlebotomist goes to ward A.", "phlebotomist"),
+    ("station", "A ticket inspector stands at the gates.", "inspector"),
+])
+def test_occupations_and_roles_are_people(worlds, world, prompt, label):
+    assert one(read(worlds, world, prompt)).label == label
+
+
+def test_a_real_word_one_edit_from_a_person_is_no_typo(worlds):
+    reading = read(worlds, "hospital", "Posters hang in the lobby while three porters walk to the pharmacy.")
+    group = one(reading)
+    assert (group.label, group.count.value, group.destination) == ("porter", 3, "pharmacy")
+    assert one(read(worlds, "hospital", "Three passangers walk to the pharmacy.")).label == "passenger"
+
+
+@pytest.mark.parametrize("world, prompt, location, low, high", [
+    ("station", "There's a queue of people at the ticket office, about fifteen.", "ticket_office", 12, 18),
+    ("airport", "There is a line of travellers at the cafe counter.", "cafe_counter", 4, 8),
+])
+def test_existential_lines_are_queues_with_their_apposed_count(worlds, world, prompt, location, low, high):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.location) == ("queue", location)
+    assert low <= group.count.value <= high
+
+
+@pytest.mark.parametrize("world, prompt, places", [
+    ("office", "A cleaner dusts the boardroom.", ["boardroom"]),
+    ("station", "A porter sweeps near the toilets while two commuters wait on platform 2.", ["toilets", "platform_2"]),
+])
+def test_a_verb_the_parser_tags_as_a_noun_after_a_person(worlds, world, prompt, places):
+    reading = read(worlds, world, prompt)
+    assert [g.location for g in reading.groups] == places
+
+
+def test_a_single_conversation_partner_is_no_group_but_a_counted_one_is(worlds):
+    one(read(worlds, "hospital", "A nurse chats with the receptionist in the lobby."))
+    reading = read(worlds, "hospital", "A nurse chats with two visitors in the lobby.")
+    assert [g.count.value for g in reading.groups] == [1, 2]
+
+
+@pytest.mark.parametrize("world, prompt, label", [
+    ("office", "A sommelier chats with the manager in the kitchen.", "sommelier"),
+    ("office", "Two botanists stroll to the boardroom.", "botanist"),
+    ("station", "A locksmith browses in the newsagent.", "locksmith"),
+])
+def test_the_subject_of_a_verb_only_people_do_is_a_person(worlds, world, prompt, label):
+    assert one(read(worlds, world, prompt)).label == label
+
+
+def test_a_thing_doing_a_thing_is_nobody(worlds):
+    assert read(worlds, "office", "The new printer whirs in the open office.").groups == ()
+
+
+@pytest.mark.parametrize("prompt, counts", [
+    ("Two posters hang in the lobby while three porters walk to the pharmacy.", [3]),
+    ("Four screens flash in the lobby. Ten zombies shamble to the pharmacy.", [10]),
+])
+def test_a_counted_thing_that_only_does_what_things_do_is_nobody(worlds, prompt, counts):
+    assert [g.count.value for g in read(worlds, "hospital", prompt).groups] == counts
+
+
 @pytest.mark.parametrize("world, prompt, count", [
     ("hospital", "500 people across the hospital evacuate", 500),
     ("office", "120 staff throughout the office evacuate", 120),
