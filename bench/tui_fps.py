@@ -367,7 +367,8 @@ def compare_with_peer(args: argparse.Namespace) -> int:
     for key in keys:
         print(f"{key:<30}{median('this', key):>10.2f}{median('peer', key):>10.2f}")
     for name in ("this", "peer"):
-        print(f"{name} fps per round: {[r['fps'] for r in runs[name]]} at load {[r['load_average'] for r in runs[name]]}")
+        fps_list = [r["fps"] for r in runs[name]]
+        print(f"{name} fps per round: {fps_list} at load {[r['load_average'] for r in runs[name]]}")
     fps_ratio = median("this", "fps") / max(median("peer", "fps"), 1e-9)
     ui_this = median("this", "mean_render_ms") + median("this", "mean_encode_ms")
     ui_peer = median("peer", "mean_render_ms") + median("peer", "mean_encode_ms")

@@ -241,7 +241,9 @@ path, and the selection highlighted with `◆`.
         palette = self._styles_palette()
         text = mr.row_text(chars_row)
         starts, ends, styles = mr.row_run_lists(styles_row)
-        return Strip([Segment(text[s:e], palette[k]) for s, e, k in zip(starts, ends, styles)], len(text))
+        # tuple.__new__ skips Segment's Python-level constructor (defaults), the costliest call here.
+        new, segment = tuple.__new__, Segment
+        return Strip([new(segment, (text[s:e], palette[k], None)) for s, e, k in zip(starts, ends, styles)], len(text))
 
     def _static_strip(self, row: int) -> Strip:
         strip = self._strip_cache.get(row)
