@@ -5,7 +5,9 @@ through the strategic and tactical layers (RoI selection, retrieval, prompt buil
 rendered chat prompt is tokenised by the bt model itself (its chat template included). The same
 prompts are built with the vanilla preset (the whole world, every node document, no guidance).
 Counting needs no generation, so the figures are exact and repeatable; a generation sends exactly
-this prompt (LocalLLM reports the same prompt_tokens).
+this prompt (LocalLLM reports the same prompt_tokens). GROVE's prompt is also split into its fixed
+part (the system message, the same for every sentence in a world and preset, whose KV state is
+cached) and its variable part (everything after it, evaluated on every request).
 
     python bench/tokens.py [--bt-model PATH]
 
@@ -64,14 +66,35 @@ PRESETS = ("emergency", "normal", "queuing")
 
 
 def build_request(world, preset, prompt, retriever):
-    from grove_tui.language.quantities import extract_quantities
+    """The bt model's request exactly as GenerationPipeline.run builds it (without the optional RoI model)."""
+    from grove_tui.generation.pipeline import quantities_from_reading
     from grove_tui.generation.rois import select_rois
     from grove_tui.generation.synthesis import prepare_request
+    from grove_tui.language.reading import read_prompt
 
-    selection = select_rois(world, preset, prompt)
+    reading = read_prompt(prompt, world, seed=0)
+    selection = select_rois(world, preset, prompt, reading=reading)
     retrieved = (retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
                  if preset.retrieval_filter is not None and preset.retrieval_k > 0 else [])
-    return prepare_request(preset, selection, retrieved, prompt, extract_quantities(prompt), retriever.documents_for)
+    return prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
+                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
+
+
+def fixed_tokens(llm, messages) -> int:
+    """Tokens of the rendered prompt up to the user's content: the part shared by every sentence.
+
+    The chat template is rendered with and without the user's content; their common text ends at
+    special tokens (end of the system turn, start of the user turn), where tokenization splits, so
+    its token count is exactly the shared token prefix.
+    """
+    full = llm.render(messages)
+    empty = llm.render([*messages[:-1], {**messages[-1], "content": ""}])
+    shared = 0
+    for a, b in zip(full, empty):
+        if a != b:
+            break
+        shared += 1
+    return llm.count_tokens(full[:shared])
 
 
 def main() -> int:
@@ -90,20 +113,24 @@ def main() -> int:
     retriever = NodeRetriever()
     vanilla = load_preset("vanilla")
     worlds = {}
-    table: dict[str, dict[str, list[int]]] = {"vanilla": {}, "grove": {}}
+    table: dict[str, dict[str, list[int]]] = {"vanilla": {}, "grove": {}, "fixed": {}, "variable": {}}
     try:
         for preset_name in PRESETS:
             preset = load_preset(preset_name)
-            table["vanilla"][preset_name] = []
-            table["grove"][preset_name] = []
+            for row in table.values():
+                row[preset_name] = []
             for world_name, prompt in PROMPTS[preset_name]:
                 world = worlds.setdefault(world_name, load_world(world_name))
                 guided = build_request(world, preset, prompt, retriever)
                 baseline = build_request(world, vanilla, prompt, retriever)
                 g, v = llm.count_tokens(guided.messages), llm.count_tokens(baseline.messages)
+                fixed = fixed_tokens(llm, guided.messages)
                 table["grove"][preset_name].append(g)
                 table["vanilla"][preset_name].append(v)
-                print(f"{preset_name:9s} {world_name:11s} grove={g:6d} vanilla={v:6d}  {prompt}", file=sys.stderr)
+                table["fixed"][preset_name].append(fixed)
+                table["variable"][preset_name].append(g - fixed)
+                print(f"{preset_name:9s} {world_name:11s} grove={g:6d} (fixed {fixed:5d}, variable {g - fixed:5d}) "
+                      f"vanilla={v:6d}  {prompt}", file=sys.stderr)
     finally:
         llm.close()
 
@@ -115,9 +142,13 @@ def main() -> int:
     print(f"{'Vanilla':12s} " + " ".join(f"{means['vanilla'][p]:10.0f}" for p in PRESETS))
     print(f"{'GROVE':12s} " + " ".join(f"{means['grove'][p]:10.0f}" for p in PRESETS))
     print(f"{'Improvement':12s} " + " ".join(f"{improvement[p] * 100:9.0f}%" for p in PRESETS))
+    print(f"{'  fixed':12s} " + " ".join(f"{means['fixed'][p]:10.0f}" for p in PRESETS) + "   (system: world + preset, cached)")
+    print(f"{'  variable':12s} " + " ".join(f"{means['variable'][p]:10.0f}" for p in PRESETS) + "   (per sentence)")
+    print(f"{'  variable max':12s} " + " ".join(f"{max(table['variable'][p]):10d}" for p in PRESETS))
+    most_variable = max(max(rows) for rows in table["variable"].values())
     print(" ".join([f"{p}_grove={means['grove'][p]:.0f} {p}_vanilla={means['vanilla'][p]:.0f} "
-                    f"{p}_reduction={improvement[p]:.3f}" for p in PRESETS]
-                   + [f"min_reduction={min(improvement.values()):.3f}"]))
+                    f"{p}_reduction={improvement[p]:.3f} {p}_variable={means['variable'][p]:.0f}" for p in PRESETS]
+                   + [f"min_reduction={min(improvement.values()):.3f}", f"max_variable={most_variable}"]))
     return 0 if min(improvement.values()) >= 0.5 else 1
 
 

@@ -17,7 +17,7 @@ import hashlib
 import json
 import re
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -43,6 +43,7 @@ class NodeDocument:
     presets: frozenset[str]  # retrieval presets allowed to return it
     nodes: tuple[str, ...]  # node types it uses (a node: itself)
     indexed: bool = True
+    card: str = ""  # the one line the bt model reads in guided presets (node_card / template_card)
 
 
 @dataclass(frozen=True)
@@ -206,6 +207,75 @@ def render_node_document(spec: Any, note: Mapping[str, Any] | None = None) -> st
     lines += ["", "Example: " + json.dumps(example, separators=(", ", ": "))]
     header = yaml.safe_dump(front, sort_keys=False, allow_unicode=True, width=200).strip()
     return f"---\n{header}\n---\n{GENERATED_NOTICE}\n" + "\n".join(lines) + "\n"
+
+
+# ---- compact cards: what the bt model reads ------------------------------------------------------
+#
+# The markdown documents above are written for retrieval and for people; the bt model reads one line
+# per document instead: a signature (ports it may write, their bounds and defaults), when to use the
+# node and the hand-written constraints of notes.yaml. Ids, automatic ports and the generic category
+# rules are left out because the grammar already enforces them, and every token of the prompt is
+# paid for in prefill on every request (issue 20: a full document cost ~150 tokens, a card ~40).
+
+_CARD_TYPE_WORDS = {"target": "place", "agent": "group label", "agents": "group labels", "string": "text",
+                    "bool": "true|false"}
+
+
+def _card_number(value: Any) -> str:
+    if isinstance(value, float) and value.is_integer():
+        return str(int(value))
+    return json.dumps(value)
+
+
+def _card_kind(port: Any) -> str:
+    if port.choices:
+        return "|".join(str(c) for c in port.choices)
+    if port.type in ("int", "float") and port.min is not None and port.max is not None:
+        return f"{_card_number(port.min)}..{_card_number(port.max)}"
+    return _CARD_TYPE_WORDS.get(port.type, port.type)
+
+
+def node_signature(spec: Any) -> str:
+    """The node as the draft writes it, required ports filled with what they take, then its optional ports:
+    `{"node": "GoTo", "target": "<place>"} optional tolerance (0.05..5, default 0.3)`.
+
+    The shape of the JSON the model must write, because small models copy what they see."""
+    fields = [f'"node": "{spec.name}"']
+    optional = []
+    for port in spec.llm_ports:
+        kind = _card_kind(port)
+        if port.default is None:
+            value = f'"<{kind}>"' if port.type in ("target", "agent", "agents", "string") else f"<{kind}>"
+            fields.append(f'"{port.name}": {value}')
+        else:
+            optional.append(f"{port.name} ({kind}, default {_card_number(port.default)})")
+    if spec.category == "decorator":
+        fields.append('"children": [<one node>]')
+    elif spec.category == "control":
+        fields.append('"children": [<nodes>]')
+    text = "{" + ", ".join(fields) + "}"
+    return text + (" optional " + ", ".join(optional) if optional else "")
+
+
+def _first_sentence(text: str) -> str:
+    text = " ".join(text.split())
+    end = text.find(". ")
+    return text if end < 0 else text[: end + 1]
+
+
+def node_card(spec: Any, note: Mapping[str, Any] | None = None) -> str:
+    """One line for the bt model: signature, when to use it, the notes' constraints."""
+    note = note or {}
+    use = " ".join(str(note["use_when"]).split()) if note.get("use_when") else _first_sentence(spec.description)
+    use = use[0].upper() + use[1:] if use else use
+    parts = [node_signature(spec) + ":", use.rstrip(".") + "."]
+    parts += [" ".join(str(c).split()).rstrip(".") + "." for c in note.get("constraints", [])]
+    return " ".join(parts)
+
+
+def template_card(template: Template) -> str:
+    """One line for the bt model: the template's title and its draft tree."""
+    return f"Template '{template.title}': {json.dumps(template.tree, separators=(', ', ': '))}"
 
 
 def _manifest_nodes() -> Mapping[str, Any]:
@@ -401,6 +471,7 @@ def _template_document(template: Template) -> NodeDocument:
         phrases=(template.title.lower(), *template.keywords),
         presets=template.presets,
         nodes=template.nodes,
+        card=template_card(template),
     )
 
 
@@ -439,6 +510,9 @@ def load_node_database(node_db_dir: Path) -> NodeDatabase:
     if not (node_db_dir / "nodes").is_dir():
         raise NodeDbError(f"{node_db_dir}: no nodes/ folder; run `grove rag sync` to generate the node documents")
     documents = [_parse_node_file(path) for path in sorted((node_db_dir / "nodes").glob("*.md"))]
+    notes, specs = load_notes(node_db_dir), _manifest_nodes()
+    documents = [replace(doc, card=node_card(specs[doc.name], notes.get(doc.name))) if doc.name in specs else doc
+                 for doc in documents]
     documents += [_template_document(t) for t in load_templates(node_db_dir)]
     names = [doc.name for doc in documents]
     duplicates = sorted({n for n in names if names.count(n) > 1})

@@ -248,7 +248,7 @@ class GenerationPipeline:
         else:
             retrieved = []
         request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
-                                  reading=reading)
+                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")
@@ -278,6 +278,8 @@ class GenerationPipeline:
             "draft": draft_summary(synthesis.draft), "draft_text": synthesis.text,
             "attempts": synthesis.attempts, "draft_errors": synthesis.errors,
             "first_token_seconds": None if synthesis.first_token_seconds is None else round(synthesis.first_token_seconds, 4),
+            # Prompt tokens the bt model did not evaluate: its live KV or the world+preset prefix restored from disk.
+            "cached_tokens": synthesis.cached_tokens, "cache_source": synthesis.cache_source,
         }
         return self._assemble(inputs, seed, models, post, plan, report)
 

@@ -62,6 +62,7 @@ class RetrievedNode:
     score: float
     document: str
     nodes: tuple[str, ...]
+    card: str = ""  # the compact one-line form guided prompts use (node_docs.node_card / template_card)
 
 
 # --------------------------------------------------------------------------- embedding model
@@ -496,7 +497,8 @@ class NodeRetriever:
         found = []
         for score, name in scored[:k]:
             doc = self._documents[name]
-            found.append(RetrievedNode(name=name, kind=doc.kind, score=round(score, 4), document=doc.text, nodes=doc.nodes))
+            found.append(RetrievedNode(name=name, kind=doc.kind, score=round(score, 4), document=doc.text, nodes=doc.nodes,
+                                       card=doc.card))
         return found
 
     def documents_for(self, names: Iterable[str]) -> list[str]:
@@ -508,6 +510,11 @@ class NodeRetriever:
                 raise RetrievalError(f"node database {self.node_db_dir} has no document {name!r}")
             texts.append(doc.text)
         return texts
+
+    def cards_for(self, names: Iterable[str]) -> list[str]:
+        """The one-line cards of these documents, in order (the full document where a node has no card)."""
+        names = list(names)
+        return [self._documents[name].card or text for name, text in zip(names, self.documents_for(names))]
 
     def document_names(self, preset: Any = None, kind: str | None = None) -> list[str]:
         """Names of the indexed documents `preset` may retrieve (all of them for vanilla/None)."""

@@ -377,11 +377,16 @@ def _pt(p: Sequence[float]) -> str:
 
 
 def summarize(world: Any, zones: Sequence[str], selected: set[str], exits: Sequence[str], full: bool = False) -> str:
-    """One block per selected zone: metadata, boundary, entrances, selected entities.
+    """The selected places as the bt model reads them.
 
-    Guided presets list only the entities the prompt selected (or all of a zone's entities when the
-    zone itself was named); `full` (the vanilla baseline) lists everything with descriptions.
+    Guided presets get one line per selected zone naming exactly the places the draft may use there
+    (its selected doors and entities), then the exits: no coordinates, boundaries or descriptions,
+    because the model writes names only and post-processing resolves them to points (issue 20: the
+    long form cost ~100 tokens per zone of prefill). `full` (the vanilla baseline) lists the whole
+    zone with boundary, door positions, tags and descriptions, as the paper's baseline does.
     """
+    if not full:
+        return _compact_summary(world, zones, selected, exits)
     lines: list[str] = []
     for name in zones:
         z = world.zone(name)
@@ -390,7 +395,7 @@ def summarize(world: Any, zones: Sequence[str], selected: set[str], exits: Seque
             head += " aka " + ", ".join(z.aliases)
         lines.append(f"{head}: {z.description}".rstrip(": ") if z.description else head)
         lines.append("  boundary: " + " ".join(_pt(p) for p in z.boundary))
-        if full and z.tags:
+        if z.tags:
             lines.append("  tags: " + ", ".join(z.tags))
         doors = [d for d in world.doors() if d.zone == z.name or d.leads_to == z.name]
         if doors:
@@ -399,12 +404,12 @@ def summarize(world: Any, zones: Sequence[str], selected: set[str], exits: Seque
                 other = d.leads_to if d.zone == z.name else d.zone
                 parts.append(f"{d.name} {_pt(d.position)} to {other}" + (" EXIT" if d.exit else ""))
             lines.append("  doors: " + "; ".join(parts))
-        ents = [e for e in z.entities if full or e.name in selected or z.name in selected and _zone_named_alone(z, selected)]
+        ents = list(z.entities)
         if ents:
             parts = []
             for e in ents:
                 text = f"{e.name} ({e.type}) at {_pt(e.interaction_point)}"
-                if full and e.description:
+                if e.description:
                     text += f" - {e.description}"
                 parts.append(text)
             lines.append("  entities: " + "; ".join(parts))
@@ -414,9 +419,24 @@ def summarize(world: Any, zones: Sequence[str], selected: set[str], exits: Seque
     return "\n".join(lines)
 
 
-def _zone_named_alone(zone: Any, selected: set[str]) -> bool:
-    """True when the prompt named the zone but none of its entities: show them all, they may be meant."""
-    return not any(e.name in selected for e in zone.entities)
+def _compact_summary(world: Any, zones: Sequence[str], selected: set[str], exits: Sequence[str]) -> str:
+    """`- pharmacy (pharmacy): pharmacy_counter (counter), pharmacy_door (door to main_corridor)` per zone."""
+    lines: list[str] = []
+    shown: set[str] = set()
+    for name in zones:
+        z = world.zone(name)
+        places = [f"{e.name} ({e.type})" for e in z.entities if e.name in selected]
+        shown |= {e.name for e in z.entities if e.name in selected}
+        for d in world.doors():
+            if d.name in selected and d.name not in shown and (d.zone == z.name or d.leads_to == z.name):
+                other = d.leads_to if d.zone == z.name else d.zone
+                places.append(f"{d.name} ({'exit' if d.exit else 'door to ' + other})")
+                shown.add(d.name)
+        lines.append(f"- {z.name} ({z.type})" + (": " + ", ".join(places) if places else ""))
+    rest = [d for d in world.exits() if d.name in exits and d.name not in shown]
+    if rest:
+        lines.append("- exits: " + ", ".join(f"{d.name} (in {d.zone})" for d in rest))
+    return "\n".join(lines)
 
 
 def describe_selection(selection: RoISelection) -> list[dict[str, Any]]:

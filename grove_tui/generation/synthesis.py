@@ -1,8 +1,11 @@
 """Tactical layer: the bt model writes the draft (groups, counts, spawns, trees) under a grammar.
 
-The prompt is built for KV prefix reuse: the system message is fixed per preset (rules, the
-preset's template, the draft format), and everything that varies (places, retrieved node
-documents, the user's sentence) comes last in the user message. The grammar comes from the draft
+The prompt is built for KV prefix reuse: the system message is fixed per world and preset (the
+preset's template, the draft format, the world's one-line description), and everything that varies
+(places, retrieved node cards, the user's sentence) comes last in the user message, in compact
+form: one line per selected zone and one card per node or template (issue 20: every prompt token
+is prefill paid on every request). The vanilla baseline keeps the whole world and the full node
+documents. The grammar comes from the draft
 schema of exactly the offered node types and selected RoI names, so the model cannot name a node
 that was not retrieved or a place that does not exist. An answer that still fails the draft check
 is retried with the next seed.
@@ -10,10 +13,13 @@ is retried with the next seed.
 
 from __future__ import annotations
 
+import hashlib
 import threading
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
 from grove_tui.bt.manifest import NODES
@@ -23,6 +29,8 @@ from grove_tui.language.quantities import Quantity
 from grove_tui.language.reading import PromptReading
 
 MAX_ATTEMPTS = 3
+# Bump when the prompt's wording or layout changes: persisted KV caches of the fixed prefix are keyed by it.
+PROMPT_TEMPLATE_VERSION = 2
 
 _RULES = """Write JSON only: {"groups": [...]}. Each group is one kind of people:
 - "label": who they are (a few words), "count": how many, "spawn": the zone where they start,
@@ -39,7 +47,8 @@ class RetrievedDoc:
     kind: str
     score: float
     nodes: tuple[str, ...]
-    text: str
+    text: str  # the full document (the vanilla baseline reads it)
+    card: str = ""  # its one-line card (guided presets read it)
 
 
 @dataclass
@@ -51,6 +60,7 @@ class SynthesisRequest:
     roi_names: list[str]
     schema: dict[str, Any]
     documents: list[RetrievedDoc] = field(default_factory=list)
+    prefix_label: str = ""  # names the persisted KV state of messages[0] (world, its file hash, preset, version)
 
 
 @dataclass
@@ -64,6 +74,8 @@ class SynthesisResult:
     request: SynthesisRequest
     errors: list[str] = field(default_factory=list)
     first_token_seconds: float | None = None  # prompt evaluation (prefill) of the accepted attempt
+    cached_tokens: int = 0  # prompt tokens of the accepted attempt served from a live or persisted KV cache
+    cache_source: str = "cold"  # "live", "disk" or "cold"
 
 
 def offered_nodes(preset: Preset, retrieved_nodes: Sequence[str]) -> list[str]:
@@ -92,21 +104,23 @@ def offered_nodes(preset: Preset, retrieved_nodes: Sequence[str]) -> list[str]:
 
 
 def choose_documents(preset: Preset, retrieved: Sequence[Any], offered: Sequence[str],
-                     documents_for: Callable[[list[str]], list[str]]) -> list[RetrievedDoc]:
+                     documents_for: Callable[[list[str]], list[str]],
+                     cards_for: Callable[[list[str]], list[str]] | None = None) -> list[RetrievedDoc]:
     """Retrieved documents about offered nodes, plus the documents of required nodes not retrieved."""
     offered_set = set(offered)
     docs: list[RetrievedDoc] = []
     covered: set[str] = set()
     for r in retrieved:
         if set(r.nodes) <= offered_set:
-            docs.append(RetrievedDoc(r.name, r.kind, float(r.score), tuple(r.nodes), r.document))
+            docs.append(RetrievedDoc(r.name, r.kind, float(r.score), tuple(r.nodes), r.document, getattr(r, "card", "")))
             covered |= set(r.nodes)
     missing = [n for n in offered if n not in covered and (n in preset.required_nodes or preset.retrieval_filter is None)]
     if preset.retrieval_filter is None:
         missing = [n for n in offered if n not in covered]
     if missing:
-        for name, text in zip(missing, documents_for(missing)):
-            docs.append(RetrievedDoc(name, "node", 0.0, (name,), text))
+        cards = cards_for(missing) if cards_for is not None else [""] * len(missing)
+        for name, text, card in zip(missing, documents_for(missing), cards):
+            docs.append(RetrievedDoc(name, "node", 0.0, (name,), text, card))
     return docs
 
 
@@ -129,37 +143,77 @@ def describe_reading_groups(reading: PromptReading) -> str:
     return "; ".join(parts)
 
 
+def fixed_system_message(preset: Preset, world: Any | None = None) -> str:
+    """The system message: everything fixed for a world and preset, so its KV state can be cached."""
+    if not preset.guided:
+        return preset.template  # the baseline: no scenario-specific guidance
+    system = f"{preset.template.rstrip()}\n\n{_RULES}\n{_EXAMPLE}"
+    description = " ".join(str(getattr(world, "description", "") or "").split())
+    if world is not None:
+        system += f"\n\nWorld {world.name}" + (f": {description}" if description else "")
+    return system
+
+
+def prefix_label(preset: Preset, world: Any | None) -> str:
+    """What the fixed system message's cached KV state is for: world (and its file's hash), preset, template version.
+
+    The prefix's tokens are part of the cache key as well, so this only has to name the file and to
+    keep caches of different worlds and presets apart when their text happens to agree.
+    """
+    source = getattr(world, "source", None)
+    digest = ""
+    if source is not None:
+        try:
+            stat = Path(source).stat()
+            digest = _file_digest(str(source), stat.st_size, stat.st_mtime_ns)
+        except OSError:
+            digest = "unread"
+    name = getattr(world, "name", "none")
+    return f"{name}-{digest}-{preset.name}-v{PROMPT_TEMPLATE_VERSION}"
+
+
+@lru_cache(maxsize=64)
+def _file_digest(path: str, size: int, mtime_ns: int) -> str:
+    """The file's hash, once per version of it (size and mtime in the key): big worlds are megabytes."""
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()[:12]
+
+
 def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], prompt: str,
-                   quantities: Sequence[Quantity], roi_names: Sequence[str], reading: PromptReading | None = None) -> list[dict[str, str]]:
-    """System text fixed per preset first; the variable parts (places, nodes, the sentence) last."""
-    if preset.guided:
-        system = f"{preset.template}\n\n{_RULES}\n{_EXAMPLE}"
-    else:
-        system = preset.template  # the baseline: no scenario-specific guidance
-    parts = ["Places:", places, "", "Behavior nodes:"]
-    parts += [d.text.strip() for d in documents]
-    parts += ["", f"Scenario: {prompt.strip()}"]
-    if preset.guided:
-        if reading is not None and reading.groups:
-            parts.append("Groups to write: " + describe_reading_groups(reading))
-        elif quantities:
-            parts.append("Groups to write: " + "; ".join(f"{q.phrase} ({q.count})" for q in quantities))
-        parts.append("Place names you may use: " + ", ".join(roi_names))
+                   quantities: Sequence[Quantity], roi_names: Sequence[str], reading: PromptReading | None = None,
+                   world: Any | None = None) -> list[dict[str, str]]:
+    """System text fixed per world and preset first; the variable parts (places, nodes, the sentence) last."""
+    system = fixed_system_message(preset, world)
+    if not preset.guided:
+        parts = ["Places:", places, "", "Behavior nodes:"]
+        parts += [d.text.strip() for d in documents]
+        parts += ["", f"Scenario: {prompt.strip()}"]
+        return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
+    # The places list names exactly what the grammar lets the draft use, so no separate name list.
+    parts = ["Places:", places, "Nodes:"]
+    parts += [(d.card or d.text).strip() for d in documents]
+    parts.append(f"Scenario: {prompt.strip()}")
+    if reading is not None and reading.groups:
+        parts.append("Groups to write: " + describe_reading_groups(reading))
+    elif quantities:
+        parts.append("Groups to write: " + "; ".join(f"{q.phrase} ({q.count})" for q in quantities))
     return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
 
 
 def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], prompt: str,
                     quantities: Sequence[Quantity], documents_for: Callable[[list[str]], list[str]],
-                    reading: PromptReading | None = None) -> SynthesisRequest:
+                    reading: PromptReading | None = None, world: Any | None = None,
+                    cards_for: Callable[[list[str]], list[str]] | None = None) -> SynthesisRequest:
     retrieved_nodes = [n for r in retrieved for n in r.nodes]
     offered = offered_nodes(preset, retrieved_nodes)
-    documents = choose_documents(preset, retrieved, offered, documents_for)
+    documents = choose_documents(preset, retrieved, offered, documents_for, cards_for)
     # Post-processing keeps one group per stated quantity, so asking for more only costs tokens.
     max_groups = min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities else preset.limits.max_groups
     schema = build_draft_schema(offered, selection.roi_names, max_groups=max_groups,
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
-    messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names, reading)
-    return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents)
+    messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names, reading,
+                              world)
+    return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents,
+                            prefix_label(preset, world))
 
 
 # Cut-off answers: LocalLLM.generate(length_retries=0) raises ModelError with this phrase when the
@@ -217,7 +271,8 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
             started = time.monotonic()
             try:
                 generation = llm.generate(request.messages, grammar=grammar, max_tokens=budget,
-                                          seed=draft_seed + cut_try, on_token=relay, cancel=cancel, length_retries=0)
+                                          seed=draft_seed + cut_try, on_token=relay, cancel=cancel, length_retries=0,
+                                          prefix_label=request.prefix_label)
             except ModelError as exc:
                 if not is_cut_off(exc):
                     raise
@@ -244,7 +299,8 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
             reason = f"invalid draft: {exc}"
             continue
         return SynthesisResult(draft, generation.text, prompt_tokens, completion_tokens, attempt, seconds, request, errors,
-                               generation.first_token_seconds)
+                               generation.first_token_seconds, int(getattr(generation, "cached_tokens", 0)),
+                               str(getattr(generation, "cache_source", "cold")))
     raise GenerationError(f"the bt model wrote no valid draft in {attempt} attempts: " + "; ".join(errors))
 
 

@@ -1352,8 +1352,11 @@ class _Reader:
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
-                    self.w[j].tag.startswith("VB") or self.index.match([lemma(x) for x in phrase]) is not None):
-                break  # "in the cafeteria evacuate": the verb after the place ("gift shop" is a noun)
+                    self.w[j].tag.startswith("VB") or self.index.match([lemma(x) for x in phrase]) is not None
+                    or self.index.is_nameless([lemma(x) for x in phrase])):
+                # "in the cafeteria evacuate", "across the hospital evacuate": the verb after the place or
+                # the building ("gift shop" is a noun)
+                break
             if w.isdigit() or w in lx.UNITS:
                 if not phrase:
                     break

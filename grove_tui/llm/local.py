@@ -14,7 +14,10 @@
   guarantees a valid prefix), so the call is retried with a larger budget and the next seed, and
   raises ModelError if that also runs out.
 - One LocalLLM serves one role; calls are serialised (llama.cpp contexts are not thread-safe) and the
-  loaded model keeps its KV cache between calls, so a shared system prompt is evaluated once.
+  loaded model keeps its KV cache between calls, so a shared system prompt is evaluated once. The
+  KV state of a chat request's fixed prefix (everything before the last message's content) is also
+  kept on disk under `cache_dir()/kv`, so a fresh worker restores it (worker.PrefixStore); the output
+  is the same cold, warm or restored.
 """
 
 from __future__ import annotations
@@ -59,7 +62,8 @@ class Generation:
     seconds: float
     first_token_seconds: float | None  # request sent -> first token of the accepted attempt
     attempts: int = 1
-    cached_tokens: int = 0  # prompt tokens served from the worker's live KV cache (shared prefix)
+    cached_tokens: int = 0  # prompt tokens not evaluated by this request: live KV or the prefix restored from disk
+    cache_source: str = "cold"  # where they came from: "live", "disk" or "cold" (none)
 
 
 def _start_resource_tracker() -> None:
@@ -141,7 +145,7 @@ class LocalLLM:
         process = self._context.Process(
             target=worker.serve, name=f"grove-llm-{self.role}", daemon=True,
             args=(child_conn, self._cancel_flag, str(self.path), self.n_ctx, self.n_threads,
-                  self.info.architecture, str(self.log_path)))
+                  self.info.architecture, str(self.log_path), str(cache_dir() / "kv")))
         process.start()
         child_conn.close()
         self._process, self._conn = process, parent_conn
@@ -231,6 +235,18 @@ class LocalLLM:
             result, _, _ = self._collect(None, None, None)
             return int(result["prompt_tokens"])
 
+    def evaluate(self, messages_or_prompt: Messages | str, prefix_label: str = "") -> dict[str, Any]:
+        """Evaluate the prompt exactly as `generate` would, without sampling.
+
+        Returns {"prompt_tokens", "cached_tokens", "cache_source", "logits_sha256"}: the digest of the
+        next-token logits, so callers can check that caches never change what the model sees.
+        """
+        with self._lock:
+            self._ensure_worker()
+            self._conn.send({"op": "evaluate", "prefix_label": prefix_label, **self._request_body(messages_or_prompt)})
+            result, _, _ = self._collect(None, None, None)
+            return dict(result)
+
     def render(self, messages: Messages) -> str:
         """The exact prompt text the chat template produces (Qwen3: ends with the empty think block)."""
         with self._lock:
@@ -243,12 +259,14 @@ class LocalLLM:
                  temperature: float | None = None, top_p: float | None = None, top_k: int | None = None,
                  min_p: float | None = None, presence_penalty: float | None = None, seed: int = 0,
                  on_token: Callable[[str], None] | None = None, cancel: threading.Event | None = None,
-                 timeout: float | None = None, length_retries: int = 1) -> Generation:
+                 timeout: float | None = None, length_retries: int = 1, prefix_label: str = "") -> Generation:
         """Generate a reply to chat `messages` (rendered with the model's template) or to a raw prompt string.
 
         `grammar` must come from models.grammar.schema_to_gbnf. Sampling values left None take the model's
         defaults (Qwen's non-thinking settings for Qwen3). A cut-off answer is retried `length_retries` times
-        with twice the budget and the next seed. Raises Cancelled or ModelError.
+        with twice the budget and the next seed. `prefix_label` names the fixed prefix's persisted KV file
+        (what it is for, e.g. world, preset and template version; the tokens themselves are part of its key).
+        Raises Cancelled or ModelError.
         """
         if max_tokens < 1:
             raise ModelError(f"max_tokens must be at least 1, got {max_tokens}")
@@ -270,7 +288,7 @@ class LocalLLM:
                 self._cancel_flag.clear()
                 sent = time.monotonic()
                 self._conn.send({"op": "generate", **body, "grammar": grammar, "max_tokens": budget,
-                                 "seed": seed + attempt - 1, **sampling})
+                                 "seed": seed + attempt - 1, "prefix_label": prefix_label, **sampling})
                 result, first_token_at, _ = self._collect(on_token, cancel, deadline)
                 spent_tokens += int(result["completion_tokens"])
                 if result["finish_reason"] == "cancelled":
@@ -280,7 +298,8 @@ class LocalLLM:
                         text=result["text"], finish_reason="stop", prompt_tokens=int(result["prompt_tokens"]),
                         completion_tokens=spent_tokens, seconds=time.monotonic() - started,
                         first_token_seconds=None if first_token_at is None else first_token_at - sent,
-                        attempts=attempt, cached_tokens=int(result.get("cached_tokens", 0)))
+                        attempts=attempt, cached_tokens=int(result.get("cached_tokens", 0)),
+                        cache_source=str(result.get("cache_source", "cold")))
                 room = self._ready_info.get("n_ctx", self.n_ctx) - int(result["prompt_tokens"])
                 budget = max(1, min(budget * 2, room))
         raise ModelError(f"the {self.role} model did not finish its answer within {budget} tokens "

@@ -2,9 +2,8 @@
 
 A crash inside llama.cpp (a bad grammar, a broken file, out of memory) kills only this process, and a
 generation can be stopped by terminating it. The model is loaded once and serves every request of
-its role, so llama.cpp's live KV cache reuses a shared token prefix (the system prompt) from one
-request to the next, in whole evaluation batches only (see `reusable_prefix`), so that an answer never
-depends on which request the worker served before.
+its role, so its live KV cache keeps the shared system prompt from one request to the next (below).
+Tokens are sampled grammar-last, as upstream llama.cpp does (SampleFirst).
 
 Protocol over one duplex pipe (parent -> worker: requests; worker -> parent: events):
     worker sends ("ready", {bos_token, eos_token, chat_template, architecture, n_ctx})
@@ -13,6 +12,16 @@ Protocol over one duplex pipe (parent -> worker: requests; worker -> parent: eve
     worker sends ("started", prompt_tokens), then ("token", text)*, then ("done", {...})
                  or ("error", kind, message) with kind "context" | "request"
 The parent's cancel request is a shared Event checked before every token.
+
+Prompt evaluation is split at fixed places so that output never depends on what the worker ran
+before: llama.cpp's logits for a token depend on how the prompt was cut into batches. A chat
+request's prompt is evaluated as two segments, the fixed prefix (everything before the last
+message's content: the system message, the same for every sentence of a world and preset) and the
+rest, each in batches of n_batch from its own start. The worker reuses live KV only up to such a
+batch start, never tokens it decoded (one at a time), and persists the fixed prefix's KV to disk
+(`kv_cache_dir`, keyed by model file, llama-cpp-python version, n_ctx, n_batch, the caller's label
+and the prefix's tokens), so a fresh worker restores it instead of evaluating it again. The same
+request gives the same tokens cold, warm or restored (tests/llm/test_kv_cache.py).
 """
 
 from __future__ import annotations
@@ -61,7 +70,7 @@ def tune_openmp_for_llama() -> None:
 
 
 def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threads: int, architecture: str,
-          log_path: str) -> None:
+          log_path: str, kv_cache_dir: str | None = None) -> None:
     """Entry point of the worker process (multiprocessing spawn target)."""
     _redirect_stderr(log_path)
     tune_openmp_for_llama()
@@ -86,7 +95,8 @@ def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_thread
         "n_ctx": llm.n_ctx(),
     }
     conn.send(("ready", info))
-    server = _Server(llm, conn, cancel, info)
+    server = _Server(llm, conn, cancel, info, PrefixStore(kv_cache_dir, model_path, n_ctx, llm.n_batch, n_threads)
+                     if kv_cache_dir else None)
     while True:
         try:
             request = conn.recv()
@@ -105,39 +115,122 @@ def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_thread
 MIN_ANSWER_TOKENS = 16
 
 
-def reusable_prefix(cached: list[int], tokens: list[int], prompt_evaluated: int, n_batch: int) -> int:
-    """How many leading tokens of `tokens` may be served from the live KV cache holding `cached`.
-
-    llama.cpp's result for a token depends on how the prompt was cut into evaluation batches (the
-    matrix kernels differ with the batch's size), so reusing "the longest shared prefix" made an answer
-    depend on the request served before it: the same job gave different trees in a one-process batch
-    and on a Ray worker. A cold evaluation cuts the prompt into batches of `n_batch` from position 0;
-    reusing only whole batches of that cut, and only tokens that were evaluated as prompt
-    (`prompt_evaluated`: the tokens after it were decoded one at a time), leaves every cached value
-    exactly what a cold evaluation of `tokens` computes. At least the last token is always evaluated,
-    since its logits give the first answer token.
-    """
-    shared = 0
-    for cached_token, token in zip(cached, tokens):
-        if cached_token != token:
-            break
-        shared += 1
-    shared = min(shared, prompt_evaluated, len(tokens) - 1)
-    return (shared // n_batch) * n_batch if n_batch > 0 else 0
-
-
 class _RequestError(Exception):
     def __init__(self, kind: str, message: str) -> None:
         super().__init__(message)
         self.kind = kind
 
 
+class PrefixStore:
+    """The fixed prefix's KV state (sequence 0) on disk: one file per model, settings, label and prefix."""
+
+    MAGIC = b"GROVE-KV1\n"
+    KEEP_FILES = 32  # the most recently used prefixes kept; a Qwen3-4B prefix of 320 tokens is ~46 MB
+    MIN_TOKENS = 32  # shorter prefixes cost less to evaluate than to read back
+
+    def __init__(self, folder: str, model_path: str, n_ctx: int, n_batch: int, n_threads: int) -> None:
+        import llama_cpp
+
+        stat = os.stat(model_path)
+        self.folder = Path(folder)
+        # What the state depends on besides the tokens: the model's bytes (size and mtime stand in for
+        # a hash of gigabytes), the library that wrote it, and the context layout. The thread count too:
+        # llama.cpp's CPU results are not known to depend on it, but a wrong restore would be silent.
+        self.identity = {"model": os.path.abspath(model_path), "size": stat.st_size, "mtime_ns": stat.st_mtime_ns,
+                         "llama_cpp": llama_cpp.__version__, "n_ctx": n_ctx, "n_batch": n_batch,
+                         "n_threads": n_threads}
+
+    def path(self, label: str, tokens: list[int]) -> Path:
+        import hashlib
+        import json
+        import re
+
+        key = hashlib.sha256(json.dumps({**self.identity, "label": label, "tokens": tokens}).encode()).hexdigest()
+        name = re.sub(r"[^A-Za-z0-9_.-]+", "-", label)[:80].strip("-") or "prefix"
+        return self.folder / f"{name}-{key[:24]}.kv"
+
+    def load(self, llm: Any, label: str, tokens: list[int]) -> bool:
+        """Restore the prefix into sequence 0 of an emptied context; False when no usable file exists."""
+        import ctypes
+        import json
+
+        import llama_cpp
+
+        path = self.path(label, tokens)
+        try:
+            data = path.read_bytes()
+        except OSError:
+            return False
+        header_end = data.find(b"\n", len(self.MAGIC))
+        if not data.startswith(self.MAGIC) or header_end < 0:
+            return False
+        try:
+            header = json.loads(data[len(self.MAGIC):header_end])
+        except ValueError:
+            return False
+        if header.get("tokens") != tokens or header.get("identity") != self.identity:
+            return False
+        state = data[header_end + 1:]
+        buffer = (ctypes.c_uint8 * len(state)).from_buffer_copy(state)
+        llm.reset()
+        llm._ctx.kv_cache_clear()
+        if llama_cpp.llama_state_seq_set_data(llm._ctx.ctx, buffer, len(state), 0) != len(state):
+            llm._ctx.kv_cache_clear()
+            return False
+        llm.input_ids[:len(tokens)] = tokens
+        llm.n_tokens = len(tokens)
+        try:
+            os.utime(path)  # recently used: kept when the folder is pruned
+        except OSError:
+            pass
+        return True
+
+    def save(self, llm: Any, label: str, tokens: list[int]) -> None:
+        import ctypes
+        import json
+
+        import llama_cpp
+
+        from grove_tui.files import write_bytes_atomic
+
+        if len(tokens) < self.MIN_TOKENS:
+            return
+        size = llama_cpp.llama_state_seq_get_size(llm._ctx.ctx, 0)
+        buffer = (ctypes.c_uint8 * size)()
+        written = llama_cpp.llama_state_seq_get_data(llm._ctx.ctx, buffer, size, 0)
+        header = json.dumps({"identity": self.identity, "label": label, "tokens": tokens}).encode()
+        path = self.path(label, tokens)
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            write_bytes_atomic(path, self.MAGIC + header + b"\n" + bytes(buffer)[:written])
+        except OSError as error:  # a read-only or full cache costs speed, never the answer
+            print(f"grove: could not write the prefix cache {path}: {error}", file=sys.stderr)
+            return
+        self.prune()
+
+    def prune(self) -> None:
+        """Keep the KEEP_FILES most recently used prefix files of this folder."""
+        try:
+            files = sorted(self.folder.glob("*.kv"), key=lambda f: f.stat().st_mtime_ns, reverse=True)
+            for stale in files[self.KEEP_FILES:]:
+                stale.unlink()
+        except OSError:
+            pass  # another worker pruned the same folder
+
+
+def segment_starts(fixed: int, total: int, n_batch: int) -> list[int]:
+    """Where a cold evaluation of `total` prompt tokens starts a batch: the prefix's batches, then the rest's."""
+    starts = list(range(0, fixed, n_batch)) if fixed > 0 else []
+    starts += list(range(fixed, total, n_batch))
+    return starts
+
+
 class _Server:
-    def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any]) -> None:
-        self.llm, self.conn, self.cancel, self.info = llm, conn, cancel, info
-        # How many leading tokens of the live KV cache were evaluated as a prompt (in whole batches
-        # cut from position 0); 0 when the cache holds nothing a new request may reuse.
-        self.prompt_evaluated = 0
+    def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any],
+                 store: PrefixStore | None = None) -> None:
+        self.llm, self.conn, self.cancel, self.info, self.store = llm, conn, cancel, info, store
+        self.live_prompt = 0  # leading live KV tokens that came from prompt evaluation (not decoding)
+        self.live_bounds: list[int] = []  # where that evaluation's batches started, and its end
 
     def prompt_text(self, request: dict[str, Any]) -> str:
         if request.get("messages") is not None:
@@ -152,6 +245,58 @@ class _Server:
         # Templates that write the BOS themselves must not get a second one from the tokenizer.
         add_bos = not (bos and text.startswith(bos))
         return self.llm.tokenize(text.encode("utf-8"), add_bos=add_bos, special=True)
+
+    def fixed_length(self, request: dict[str, Any], tokens: list[int]) -> int:
+        """Tokens before the last message's content: shared by every request with the same earlier messages."""
+        messages = request.get("messages")
+        if not messages or len(messages) < 2:
+            return 0
+        empty = self.tokens(self.prompt_text({**request, "messages": [*messages[:-1], {**messages[-1], "content": ""}]}))
+        fixed = 0
+        for a, b in zip(empty, tokens):
+            if a != b:
+                break
+            fixed += 1
+        # Stop short of the empty message's own closing tokens, which the real prompt does not share
+        # when its content starts differently; and leave at least one token to evaluate.
+        return min(fixed, len(tokens) - 1)
+
+    def prepare(self, tokens: list[int], fixed: int, label: str) -> tuple[int, str]:
+        """Bring the KV cache to a batch start of this prompt's cold evaluation; evaluate the prefix.
+
+        Returns (prompt tokens not evaluated by this request, where they came from: live, disk, cold).
+        """
+        llm = self.llm
+        shared = 0
+        for cached_token, token in zip(llm._input_ids[:self.live_prompt].tolist(), tokens):
+            if cached_token != token:
+                break
+            shared += 1
+        self.live_prompt = 0  # until this prompt is evaluated, a cancel or error leaves the live state unknown
+        limit = min(shared, len(tokens) - 1)
+        starts = segment_starts(fixed, len(tokens), llm.n_batch)
+        # A live token is reused only if the batches that computed it are the ones a cold evaluation of
+        # this prompt would use: a batch of the earlier prompt ended there, and every start below agrees.
+        usable = [b for b in starts if b <= limit and b in self.live_bounds
+                  and [x for x in self.live_bounds if x < b] == [x for x in starts if x < b]]
+        start = max(usable, default=0)
+        self.live_bounds = starts + [len(tokens)]
+        source = "live" if start > 0 else "cold"
+        if (start < fixed and self.store is not None and fixed >= self.store.MIN_TOKENS
+                and self.store.load(llm, label, tokens[:fixed])):
+            start, source = fixed, "disk"
+        elif start == 0 or llm.n_tokens < start:  # nothing to keep, or a failed restore emptied the context
+            start, source = 0, "cold"
+            llm.reset()
+        else:
+            llm._ctx.kv_cache_seq_rm(-1, start, -1)
+            llm.n_tokens = start
+        reused = start
+        if start < fixed:
+            llm.eval(tokens[start:fixed])  # batches from a batch start, as a cold evaluation has them
+            if self.store is not None:
+                self.store.save(llm, label, tokens[:fixed])
+        return reused, source
 
     def handle(self, request: dict[str, Any]) -> None:
         from grove_tui.errors import ModelError
@@ -169,57 +314,187 @@ class _Server:
         if room < MIN_ANSWER_TOKENS:
             raise _RequestError("context", f"the prompt has {len(tokens)} tokens and the context holds {n_ctx}, "
                                            f"leaving {max(room, 0)} for the answer")
+        if request["op"] == "evaluate":
+            self.evaluate(tokens, request)
+            return
         # A budget beyond the context is clamped: if the answer really needs more it ends as "length".
         self.generate(tokens, {**request, "max_tokens": min(int(request["max_tokens"]), room)})
 
-    def generate(self, tokens: list[int], request: dict[str, Any]) -> None:
-        from llama_cpp import LlamaGrammar, llama_vocab_is_eog
+    def evaluate(self, tokens: list[int], request: dict[str, Any]) -> None:
+        """Evaluate the prompt as generate does and report a digest of the next-token logits.
+
+        The logits are what sampling draws from, so equal digests mean every sampler sees the same
+        distribution: how the tests check that a restored or live cache changes nothing.
+        """
+        import ctypes
+        import hashlib
 
         llm = self.llm
-        grammar = LlamaGrammar.from_string(request["grammar"], verbose=False) if request.get("grammar") else None
-        llm.set_seed(int(request["seed"]))
-        reused = reusable_prefix(llm._input_ids.tolist(), tokens, self.prompt_evaluated, llm.n_batch)
-        # generate() keeps the longest prefix shared with its first n_tokens cached tokens: cut the cache
-        # there, so it evaluates the rest exactly as a cold start would (reset() when nothing is kept).
-        if reused == 0:
-            llm.reset()
-        else:
-            llm.n_tokens = reused
-        # Until this prompt is evaluated in full, the cache holds nothing a later request may trust.
-        self.prompt_evaluated = 0
+        reused, source = self.prepare(tokens, self.fixed_length(request, tokens), str(request.get("prefix_label") or ""))
+        llm.eval(tokens[llm.n_tokens:])  # the rest in batches from its start, as generate() evaluates it
+        self.live_prompt = len(tokens)
+        n_vocab = llm.n_vocab()
+        logits = ctypes.string_at(llm._ctx.get_logits_ith(-1), n_vocab * ctypes.sizeof(ctypes.c_float))
+        self.conn.send(("done", {"prompt_tokens": len(tokens), "cached_tokens": reused, "cache_source": source,
+                                 "logits_sha256": hashlib.sha256(logits).hexdigest()}))
+
+    def generate(self, tokens: list[int], request: dict[str, Any]) -> None:
+        from llama_cpp import llama_vocab_is_eog
+
+        llm = self.llm
         self.conn.send(("started", len(tokens)))
+        reused, source = self.prepare(tokens, self.fixed_length(request, tokens), str(request.get("prefix_label") or ""))
         decoder = codecs.getincrementaldecoder("utf-8")(errors="replace")
         pieces: list[str] = []
         completion_tokens = 0
         finish_reason = "length"
         started = time.monotonic()
         max_tokens = int(request["max_tokens"])
+        rejections = 0
         if self.cancel.is_set():
             finish_reason = "cancelled"
         else:
-            for token in llm.generate(tokens, top_k=int(request["top_k"]), top_p=float(request["top_p"]),
-                                      min_p=float(request["min_p"]), temp=float(request["temperature"]),
-                                      presence_penalty=float(request["presence_penalty"]), repeat_penalty=1.0,
-                                      grammar=grammar):
-                self.prompt_evaluated = len(tokens)  # a token was sampled: the whole prompt is evaluated
-                if llama_vocab_is_eog(llm._model.vocab, token):
-                    finish_reason = "stop"
-                    break
-                completion_tokens += 1
-                piece = decoder.decode(llm.detokenize([token], special=False))
-                if piece:
-                    pieces.append(piece)
-                    self.conn.send(("token", piece))
-                if self.cancel.is_set():
-                    finish_reason = "cancelled"
-                    break
-                if completion_tokens >= max_tokens:
-                    break
+            sampler = SampleFirst(llm, request.get("grammar") or None, top_k=int(request["top_k"]),
+                                  top_p=float(request["top_p"]), min_p=float(request["min_p"]),
+                                  temperature=float(request["temperature"]),
+                                  presence_penalty=float(request["presence_penalty"]), seed=int(request["seed"]))
+            try:
+                llm.eval(tokens[llm.n_tokens:])  # the rest of the prompt, in batches from its own start
+                self.live_prompt = len(tokens)  # what follows is decoded one token at a time: never reused
+                while True:
+                    token = sampler.sample()
+                    if llama_vocab_is_eog(llm._model.vocab, token):
+                        finish_reason = "stop"
+                        break
+                    completion_tokens += 1
+                    piece = decoder.decode(llm.detokenize([token], special=False))
+                    if piece:
+                        pieces.append(piece)
+                        self.conn.send(("token", piece))
+                    if self.cancel.is_set():
+                        finish_reason = "cancelled"
+                        break
+                    if completion_tokens >= max_tokens:
+                        break
+                    llm.eval([token])
+            finally:
+                rejections = sampler.rejections
+                sampler.close()
         tail = decoder.decode(b"", final=True)
         if tail:
             pieces.append(tail)
             self.conn.send(("token", tail))
         self.conn.send(("done", {"text": "".join(pieces), "finish_reason": finish_reason,
                                  "prompt_tokens": len(tokens), "completion_tokens": completion_tokens,
-                                 "cached_tokens": reused,
+                                 "cached_tokens": reused, "cache_source": source,
+                                 "grammar_rejections": rejections,
                                  "worker_seconds": time.monotonic() - started}))
+
+
+class SampleFirst:
+    """Sample as upstream llama.cpp does (common/sampling.cpp): the grammar is asked about one token.
+
+    llama-cpp-python puts the grammar first in its sampler chain, so every token checks the grammar
+    against the whole vocabulary (152k entries for Qwen3: tens of ms per token, bench/grammar.py).
+    Here the chain (presence penalty, top-k, top-p, min-p, temperature, seeded draw) samples without
+    the grammar; the grammar then checks only the chosen token, and when it refuses it, the token is
+    drawn again from a chain with the grammar first, over the whole vocabulary. Every token is one the
+    grammar accepts, so every output is grammar-valid, and the same seed gives the same output.
+
+    A model that mostly writes what the grammar refuses (random weights; a model that does not know
+    the format) would pay for both draws, so once more than half of at least SWITCH_AFTER tokens were
+    refused the rest of the answer is drawn grammar-first only. The switch depends only on the tokens
+    drawn so far, so it is as deterministic as the draws.
+    """
+
+    SWITCH_AFTER = 8
+
+    def __init__(self, llm: Any, grammar: str | None, *, top_k: int, top_p: float, min_p: float, temperature: float,
+                 presence_penalty: float, seed: int) -> None:
+        import ctypes
+
+        import llama_cpp
+        import numpy as np
+        from llama_cpp import _internals
+
+        self._lc, self._ctypes, self._np, self.llm = llama_cpp, ctypes, np, llm
+        self.n_vocab = llm.n_vocab()
+
+        def chain(grammar_first: str | None) -> Any:
+            sampler = _internals.LlamaSampler()
+            sampler.add_penalties(n_vocab=self.n_vocab, penalty_last_n=llm.last_n_tokens_size, penalty_repeat=1.0,
+                                  penalty_freq=0.0, penalty_present=presence_penalty)
+            if grammar_first is not None:
+                sampler.add_grammar(llm._model, llama_cpp.LlamaGrammar.from_string(grammar_first, verbose=False))
+            if temperature <= 0.0:
+                sampler.add_greedy()
+            else:
+                sampler.add_top_k(top_k)
+                sampler.add_top_p(top_p, 1)
+                sampler.add_min_p(min_p, 1)
+                sampler.add_temp(temperature)
+                sampler.add_dist(seed)
+            return sampler
+
+        self.free = chain(None)
+        self.constrained = chain(grammar) if grammar else None
+        self.grammar = (llama_cpp.llama_sampler_init_grammar(llm._model.vocab, grammar.encode("utf-8"), b"root")
+                        if grammar else None)
+        self.ids = np.arange(self.n_vocab, dtype=np.intc)
+        self.cells = np.zeros(self.n_vocab, dtype=np.dtype([("id", np.intc), ("logit", np.single), ("p", np.single)],
+                                                          align=True))
+        self.one = (llama_cpp.llama_token_data * 1)()
+        self.rejections = 0
+        self.drawn = 0
+        self.grammar_first = False
+
+    def _draw(self, sampler: Any) -> int:
+        lc, np = self._lc, self._np
+        self.cells["id"] = self.ids
+        self.cells["logit"] = np.ctypeslib.as_array(self.llm._ctx.get_logits_ith(-1), shape=(self.n_vocab,))
+        self.cells["p"] = 0.0
+        array = lc.llama_token_data_array(data=self.cells.ctypes.data_as(self._ctypes.POINTER(lc.llama_token_data)),
+                                          size=self.n_vocab, selected=-1, sorted=False)
+        lc.llama_sampler_apply(sampler.sampler, self._ctypes.byref(array))
+        if array.selected < 0:
+            raise RuntimeError("the sampler chain selected no token")
+        return int(self.cells["id"][array.selected])
+
+    def sample(self) -> int:
+        """The next token (also accepted into the chains and the grammar, so they follow the output)."""
+        lc = self._lc
+        self.drawn += 1
+        if (self.constrained is not None and self.drawn > self.SWITCH_AFTER
+                and 2 * self.rejections > self.drawn - 1):
+            self.grammar_first = True  # for the rest of the answer: the model keeps missing the grammar
+        if self.grammar_first:
+            token = self._draw(self.constrained)
+        else:
+            token = self._sample_first()
+        for sampler in (self.free, self.constrained):
+            if sampler is not None:
+                lc.llama_sampler_accept(sampler.sampler, token)
+        if self.grammar is not None:
+            lc.llama_sampler_accept(self.grammar, token)
+        return token
+
+    def _sample_first(self) -> int:
+        lc = self._lc
+        token = self._draw(self.free)
+        if self.grammar is not None:
+            cell = self.one[0]
+            cell.id, cell.logit, cell.p = token, 0.0, 0.0  # type: ignore[assignment]  # ctypes converts the int
+            single = lc.llama_token_data_array(data=self.one, size=1, selected=-1, sorted=False)
+            lc.llama_sampler_apply(self.grammar, self._ctypes.byref(single))
+            if not self._np.isfinite(cell.logit):
+                self.rejections += 1
+                token = self._draw(self.constrained)
+        return token
+
+    def close(self) -> None:
+        if self.grammar is not None:
+            self._lc.llama_sampler_free(self.grammar)
+            self.grammar = None
+        for sampler in (self.free, self.constrained):
+            if sampler is not None:
+                sampler.close()

@@ -29,7 +29,7 @@ def request(hospital, retriever, preset_name, prompt):
     selection = select_rois(hospital, preset, prompt)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k) if preset.retrieval_filter else []
     return preset, selection, prepare_request(preset, selection, retrieved, prompt, extract_quantities(prompt),
-                                              retriever.documents_for)
+                                              retriever.documents_for, world=hospital, cards_for=retriever.cards_for)
 
 
 def test_emergency_offers_only_field_following_and_no_social_nodes():
@@ -58,9 +58,9 @@ def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(ho
     assert system["role"] == "system" and prompt not in system["content"]
     _, _, other = request(hospital, retriever, "queuing", "Eight visitors line up at the reception desk")
     assert other.messages[0] == system  # identical prefix across prompts: the KV cache is reused
-    assert user["content"].index("Places:") < user["content"].index("Behavior nodes:") < user["content"].index(prompt)
+    assert user["content"].index("Places:") < user["content"].index("Nodes:") < user["content"].index(prompt)
     assert "Groups to write: Ten patients (10)" in user["content"]
-    assert "zone pharmacy" in user["content"] and "zone cafeteria" not in user["content"]
+    assert "- pharmacy (" in user["content"] and "cafeteria" not in user["content"]
     assert req.roi_names == selection.roi_names
     assert req.schema["properties"]["groups"]["maxItems"] == 1  # one stated quantity, one group
 

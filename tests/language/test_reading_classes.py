@@ -171,3 +171,15 @@ def test_people_counted_inside_an_event(worlds, world, prompt, count):
 def test_counts_after_a_possessive_and_odd_counts(worlds, world, prompt, value):
     group = one(read(worlds, world, prompt))
     assert (group.count.value, group.intent) == (value, "evacuate")
+
+
+@pytest.mark.parametrize("world, prompt, count", [
+    ("hospital", "500 people across the hospital evacuate", 500),
+    ("office", "120 staff throughout the office evacuate", 120),
+    ("hospital", "Two hundred visitors across the building leave in a hurry", 200),
+])
+def test_a_verb_after_the_building_is_not_part_of_a_place(worlds, world, prompt, count):
+    reading = read(worlds, world, prompt)
+    group = one(reading)
+    assert group.count.value == count and group.start is None
+    assert not reading.unknown_places

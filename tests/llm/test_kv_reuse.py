@@ -10,19 +10,9 @@ from pathlib import Path
 import pytest
 
 from grove_tui.llm.embedded import embedded_model_path
-from grove_tui.llm.worker import _Server, reusable_prefix
+from grove_tui.llm.worker import _Server
 
 REQUESTS = json.loads((Path(__file__).parents[1] / "data" / "variation_requests.json").read_text())["requests"]
-
-
-def test_only_whole_batches_of_evaluated_prompt_are_reused():
-    cached = list(range(1000))
-    assert reusable_prefix(cached, list(range(1000)), prompt_evaluated=1000, n_batch=512) == 512
-    assert reusable_prefix(cached, list(range(700)) + [-1], prompt_evaluated=1000, n_batch=512) == 512
-    assert reusable_prefix(cached, list(range(500)) + [-1] * 100, prompt_evaluated=1000, n_batch=512) == 0
-    # tokens the model decoded one by one after its prompt are never reused
-    assert reusable_prefix(cached, list(range(1000)), prompt_evaluated=400, n_batch=128) == 384
-    assert reusable_prefix([], [1, 2, 3], prompt_evaluated=0, n_batch=512) == 0
 
 
 class _Events:

@@ -94,21 +94,18 @@ def test_tiny_qwen3_generates_grammar_valid_drafts(tiny_llm):
         assert 0 < result.completion_tokens <= 900
 
 
-# Longer than one evaluation batch (512 tokens at n_ctx 1024), so whole batches of it can be reused.
-LONG_SYSTEM = {"role": "system", "content": "You write pedestrian scenarios for robots in hospitals. " * 14}
-
-
-def test_shared_system_prefix_is_reused_in_whole_batches(tiny_llm):
+def test_shared_system_prefix_is_reused_from_the_kv_cache(tiny_llm):
     grammar = schema_to_gbnf({"const": 1})
-    first = tiny_llm.generate([LONG_SYSTEM, {"role": "user", "content": "one"}], grammar=grammar, max_tokens=4)
-    second = tiny_llm.generate([LONG_SYSTEM, {"role": "user", "content": "two"}], grammar=grammar, max_tokens=4)
-    system_part = tiny_llm.render([LONG_SYSTEM, {"role": "user", "content": ""}]).split("<|im_start|>user")[0]
+    system = {"role": "system", "content": "You write pedestrian scenarios. " * 8}
+    first = tiny_llm.generate([system, {"role": "user", "content": "one"}], grammar=grammar, max_tokens=4)
+    second = tiny_llm.generate([system, {"role": "user", "content": "two"}], grammar=grammar, max_tokens=4)
+    system_part = tiny_llm.render([system, {"role": "user", "content": ""}]).split("<|im_start|>user")[0]
     shared = tiny_llm.count_tokens(system_part) + tiny_llm.count_tokens("<|im_start|>user\n")
-    assert shared > 512 and second.prompt_tokens == first.prompt_tokens
-    assert second.cached_tokens == (shared // 512) * 512
+    assert second.prompt_tokens == first.prompt_tokens
+    assert second.cached_tokens == shared
     other = tiny_llm.generate([{"role": "system", "content": "Something else."}, {"role": "user", "content": "two"}],
                               grammar=grammar, max_tokens=4)
-    assert other.cached_tokens == 0
+    assert other.cached_tokens < 10
 
 
 def test_same_seed_same_output(tiny_llm):

@@ -1,0 +1,119 @@
+"""The compact synthesis prompt (issue 20): what the bt model reads is short, complete and fixed-first.
+
+No model here: the prompt is built as the pipeline builds it (reading, RoI selection, retrieval,
+cards) for sentences of every guided preset in every shipped world, and checked against what the
+grammar lets the draft use. Drafts written from this prompt by the embedded model are checked in
+test_pipeline_e2e.py (every preset in every world) and by the grammar tests in tests/llm.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from grove_tui.bt.manifest import NODES
+from grove_tui.generation.node_docs import node_card, node_signature
+from grove_tui.generation.pipeline import quantities_from_reading
+from grove_tui.generation.presets import load_preset
+from grove_tui.generation.retrieval import NodeRetriever
+from grove_tui.generation.rois import select_rois
+from grove_tui.generation.synthesis import fixed_system_message, prepare_request
+from grove_tui.language.reading import read_prompt
+from grove_tui.world import list_worlds, load_world
+
+# One everyday sentence per preset, with the places filled in from each world, so every world is
+# exercised without a sentence written for it.
+SENTENCES = {
+    "queuing": "{n} people queue at the {entity}",
+    "normal": "Three visitors walk from the {zone} to the {other}",
+    "emergency": "A fire alarm: ten people in the {zone} evacuate",
+}
+
+
+@pytest.fixture(scope="module")
+def retriever():
+    return NodeRetriever()
+
+
+def _places(world):
+    zones = [z for z in world.zones if z.entities]
+    zone, other = zones[0], zones[-1]
+    entity = zone.entities[0]
+    return {"zone": zone.name.replace("_", " "), "other": other.name.replace("_", " "),
+            "entity": entity.name.replace("_", " "), "n": "Five"}
+
+
+def build(world, preset_name, retriever, prompt):
+    preset = load_preset(preset_name)
+    reading = read_prompt(prompt, world, seed=0)
+    selection = select_rois(world, preset, prompt, reading=reading)
+    retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
+    request = prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
+                              retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
+    return preset, selection, request
+
+
+CASES = [(w, p) for w in list_worlds() for p in SENTENCES]
+
+
+@pytest.mark.parametrize("world_name,preset_name", CASES)
+def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, preset_name, retriever):
+    world = load_world(world_name)
+    prompt = SENTENCES[preset_name].format(**_places(world))
+    _, selection, request = build(world, preset_name, retriever, prompt)
+    user = request.messages[1]["content"]
+    places = user[user.index("Places:\n") + len("Places:\n"):user.index("\nNodes:\n")]
+    named = set(re.findall(r"[a-z][a-z0-9_]*", places))
+    assert set(request.roi_names) <= named, f"places the grammar allows but the prompt hides: {set(request.roi_names) - named}"
+    # Every place the block lists (a name followed by its type) is one the grammar accepts; other
+    # zones appear only as where a door leads or an exit lies.
+    listed = set(re.findall(r"([a-z][a-z0-9_]*) \(", places))
+    assert listed <= set(request.roi_names), listed - set(request.roi_names)
+    assert not re.search(r"\(-?\d+(\.\d+)?,-?\d", user), "coordinates in a guided prompt"
+
+
+@pytest.mark.parametrize("world_name,preset_name", CASES)
+def test_every_offered_node_has_its_card_and_the_sentence_comes_last(world_name, preset_name, retriever):
+    world = load_world(world_name)
+    prompt = SENTENCES[preset_name].format(**_places(world))
+    preset, _, request = build(world, preset_name, retriever, prompt)
+    system, user = (m["content"] for m in request.messages)
+    assert system == fixed_system_message(preset, world) and prompt not in system
+    lines = user.splitlines()
+    for name in request.node_names:
+        if NODES[name].category == "control":
+            continue  # control nodes are in the rules' example and every template
+        assert any(line.startswith(f'{{"node": "{name}"') for line in lines) or any(
+            name in line for line in lines if line.startswith("Template ")), name
+    assert user.index("Places:") < user.index("Nodes:") < user.index(f"Scenario: {prompt}")
+
+
+def test_a_card_is_one_line_with_every_writable_port_and_no_automatic_one():
+    for spec in NODES.values():
+        if not spec.llm:
+            continue
+        card = node_card(spec, {"use_when": "always.", "constraints": ["Never alone."]})
+        assert "\n" not in card and card.startswith(node_signature(spec) + ":")
+        signature = node_signature(spec)
+        for port in spec.ports:
+            written = re.search(rf'"{re.escape(port.name)}":|[ ,]{re.escape(port.name)} \(', signature) is not None
+            assert written == (port in spec.llm_ports), (spec.name, port.name)
+        assert card.endswith("Always. Never alone.")
+
+
+def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_them(retriever):
+    hospital, office = load_world("hospital"), load_world("office")
+    _, _, a = build(hospital, "queuing", retriever, "Ten patients queue at the pharmacy counter")
+    _, _, b = build(hospital, "queuing", retriever, "Two visitors wait in line at the reception desk")
+    assert a.messages[0] == b.messages[0] and a.messages[1] != b.messages[1]
+    assert fixed_system_message(load_preset("queuing"), office) != a.messages[0]["content"]
+    assert fixed_system_message(load_preset("normal"), hospital) != a.messages[0]["content"]
+
+
+def test_vanilla_keeps_the_full_documents_and_world(retriever):
+    hospital = load_world("hospital")
+    _, _, request = build(hospital, "vanilla", retriever, "Ten patients queue at the pharmacy counter")
+    user = request.messages[1]["content"]
+    assert all(f"zone {z.name} " in user for z in hospital.zones)
+    assert "Ports:" in user and "boundary:" in user
