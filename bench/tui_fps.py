@@ -341,9 +341,10 @@ def main() -> int:
         print(json.dumps(result))
     else:
         for key, value in result.items():
-            print(f"{key:<28}{value}")
+            print(f"{key:<30}{value}")
         verdict = "meets" if result["fps"] >= 15 else "MISSES"
-        print(f"{verdict} the 15 fps goal with {result['agents']} agents")
+        print(f"{verdict} the 15 fps goal with {result['agents']} agents (ratio fps/goal {result['fps'] / 15:.2f}; "
+              f"--peer CHECKOUT compares with another checkout in the same run)")
     print(f"fps={result['fps']} agents={result['agents']} terminal={result['terminal']} "
           f"real_time_factor={result['real_time_factor']} load={round(os.getloadavg()[0], 2)}")
     return 0
