@@ -139,6 +139,9 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._colour_mode = "group"
         self._colour_table = self._build_colours()
         self._last_snapshot: Snapshot | None = None
+        self._status_text = ""
+        self._colour_ids: bytes = b""
+        self._colour_array = np.zeros(0, dtype=np.int64)
         self._switch_interval = sys.getswitchinterval()
         self.exporting = False
         self._resume_after_export = False
@@ -266,6 +269,15 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
                 return float(x), float(y)
         return busiest_goal(self.generated.scenario)
 
+    def _colours_for(self, ids: np.ndarray) -> np.ndarray:
+        """Colour index per agent in `ids` order; rebuilt only when the ids or the colour mode change."""
+        key = ids.tobytes()
+        if key != self._colour_ids or len(self._colour_array) != len(ids):
+            table = self._colour_table
+            self._colour_array = np.array([table.get(int(i), 0) for i in ids], dtype=np.int64)
+            self._colour_ids = key
+        return self._colour_array
+
     def draw_latest(self) -> None:
         controller = self.controller
         snapshot = None if controller is None else controller.latest
@@ -279,7 +291,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         if raster is None:
             return
         ids = np.asarray(frame.ids, dtype=np.int64)
-        colours = np.array([self._colour_table.get(int(i), 0) for i in ids], dtype=np.int64)
+        colours = self._colours_for(ids)
         selected_index = -1
         if self._selected_agent >= 0:
             hits = np.flatnonzero(ids == self._selected_agent)
@@ -310,7 +322,15 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
             lines.append(f"in queue now {in_queue}")
         if self._selected_agent >= 0:
             lines.append(f"selected agent {self._selected_agent}")
-        self.query_one("#sim-status", Static).update("\n".join(lines))
+        text = "\n".join(lines)
+        if text == self._status_text:
+            return
+        # Lines of new lengths may change the panel's height (count, wrapping); otherwise the text
+        # changes in place, and a layout pass of the whole screen every frame (the clock ticks in
+        # each one) is wasted work.
+        same_shape = [len(line) for line in self._status_text.split("\n")] == [len(line) for line in lines]
+        self._status_text = text
+        self.query_one("#sim-status", Static).update(text, layout=not same_shape)
 
     # counters: metrics.json's function on the run so far, off the UI thread ------------------------------
     def refresh_metrics(self) -> None:
@@ -416,6 +436,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
     def action_colour_mode(self) -> None:
         self._colour_mode = "behavior" if self._colour_mode == "group" else "group"
         self._colour_table = self._build_colours()
+        self._colour_ids = b""
         self._shown_serial = -1
         self._show_legend()
         self.notify(f"colour by {self._colour_mode}", timeout=1)

@@ -296,12 +296,16 @@ def row_text(chars_row: np.ndarray) -> str:
 
 def row_runs(styles_row: np.ndarray) -> list[tuple[int, int, int]]:
     """(start, end, style) runs of equal style along a row."""
+    return list(zip(*row_run_lists(styles_row)))
+
+
+def row_run_lists(styles_row: np.ndarray) -> tuple[list[int], list[int], list[int]]:
+    """The runs of `row_runs` as three plain lists (starts, ends, styles): one numpy pass, no per-run numpy."""
     if len(styles_row) == 0:
-        return []
-    change = np.flatnonzero(np.diff(styles_row)) + 1
-    starts = np.concatenate(([0], change))
-    ends = np.concatenate((change, [len(styles_row)]))
-    return [(int(s), int(e), int(styles_row[s])) for s, e in zip(starts, ends)]
+        return [], [], []
+    change = (np.flatnonzero(styles_row[1:] != styles_row[:-1]) + 1).tolist()
+    starts = [0, *change]
+    return starts, [*change, len(styles_row)], styles_row[starts].tolist()
 
 
 def _centroid_xy(zone: Any) -> tuple[float, float]:

@@ -102,7 +102,12 @@ path, and the selection highlighted with `◆`.
         self._styles: np.ndarray | None = None
         self._strip_cache: LRUCache[int, Strip] = LRUCache(512)
         self._palette: list[Style] | None = None
+        self._base_style: Style | None = None
         self._agent_rows: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+        # Per map row: the bytes of its agents' cells, and the strip last built for them. A frame
+        # repaints only rows whose key changed, and re-rendering an unchanged row reuses its strip.
+        self._agent_keys: dict[int, bytes] = {}
+        self._agent_strips: dict[int, tuple[bytes, Strip]] = {}
         self._fit_for: tuple[int, int] | None = None
         # The world point zoom centres on (the screen's selection or queue); None: the view's middle.
         self.zoom_target: Callable[[], tuple[float, float] | None] | None = None
@@ -120,6 +125,7 @@ path, and the selection highlighted with `◆`.
         self._world = world
         self._overlay = None
         self._agent_rows = {}
+        self._agent_keys = {}
         self._zoom = 1.0
         self._rebuild()
 
@@ -127,16 +133,20 @@ path, and the selection highlighted with `◆`.
         self._overlay = overlay
         self._recompose()
 
-    def set_agents(self, cells: mr.AgentCells | None) -> None:
-        """Swap the dynamic layer and repaint only the rows whose agents changed."""
+    def set_agents(self, cells: mr.AgentCells | None) -> int:
+        """Swap the dynamic layer and repaint only the visible rows whose cells changed; returns how many."""
         new_rows = {} if cells is None else cells.by_row()
-        changed = set(self._agent_rows) | set(new_rows)
-        self._agent_rows = new_rows
+        new_keys = {row: agent_row_key(*cells_of_row) for row, cells_of_row in new_rows.items()}
+        old_keys = self._agent_keys
+        self._agent_rows, self._agent_keys = new_rows, new_keys
         top = int(self.scroll_offset.y)
         bottom = top + self.size.height
-        for row in changed:
-            if top <= row < bottom:
+        repainted = 0
+        for row in old_keys.keys() | new_keys.keys():
+            if top <= row < bottom and old_keys.get(row) != new_keys.get(row):
                 self.refresh_line(row - top)
+                repainted += 1
+        return repainted
 
     def centre_on(self, x: float, y: float) -> None:
         import numpy as np
@@ -181,7 +191,9 @@ path, and the selection highlighted with `◆`.
     def notify_style_update(self) -> None:
         super().notify_style_update()
         self._palette = None
+        self._base_style = None
         self._strip_cache.clear()
+        self._agent_strips.clear()
 
     def _rebuild(self) -> None:
         if self._world is None:
@@ -189,6 +201,7 @@ path, and the selection highlighted with `◆`.
             self._chars = self._styles = None
             self.virtual_size = Size(0, 0)
             self._strip_cache.clear()
+            self._agent_strips.clear()
             self.refresh()
             return
         from grove_tui.tui.widgets import map_raster as mr
@@ -205,21 +218,32 @@ path, and the selection highlighted with `◆`.
             return
         self._chars, self._styles = self._raster.compose(self._overlay)
         self._strip_cache.clear()
+        self._agent_strips.clear()
         self.virtual_size = Size(self._raster.width, self._raster.height)
         self.refresh()
 
     def _styles_palette(self) -> list[Style]:
         if self._palette is None:
-            base = self.rich_style
+            base = self._rich_base_style()
             self._palette = [base + self.get_component_rich_style(STYLE_CLASSES[i]) for i in range(ms.STYLE_COUNT)]
         return self._palette
+
+    def _rich_base_style(self) -> Style:
+        # `rich_style` walks the DOM for the inherited background on every call (about 0.1 ms);
+        # render_line needs it for every row of every frame, and it changes only with the CSS.
+        if self._base_style is None:
+            self._base_style = self.rich_style
+        return self._base_style
 
     def _strip_for(self, chars_row: np.ndarray, styles_row: np.ndarray) -> Strip:
         from grove_tui.tui.widgets import map_raster as mr
 
         palette = self._styles_palette()
         text = mr.row_text(chars_row)
-        return Strip([Segment(text[s:e], palette[style]) for s, e, style in mr.row_runs(styles_row)], len(text))
+        starts, ends, styles = mr.row_run_lists(styles_row)
+        # tuple.__new__ skips Segment's Python-level constructor (defaults), the costliest call here.
+        new, segment = tuple.__new__, Segment
+        return Strip([new(segment, (text[s:e], palette[k], None)) for s, e, k in zip(starts, ends, styles)], len(text))
 
     def _static_strip(self, row: int) -> Strip:
         strip = self._strip_cache.get(row)
@@ -229,21 +253,33 @@ path, and the selection highlighted with `◆`.
             self._strip_cache[row] = strip
         return strip
 
+    def _agent_strip(self, row: int, agents: tuple[np.ndarray, np.ndarray, np.ndarray]) -> Strip:
+        assert self._chars is not None and self._styles is not None
+        key = self._agent_keys.get(row, b"")
+        cached = self._agent_strips.get(row)
+        if cached is not None and cached[0] == key:
+            return cached[1]
+        cols, chars, styles = agents
+        chars_row = self._chars[row].copy()
+        styles_row = self._styles[row].copy()
+        chars_row[cols] = chars
+        styles_row[cols] = styles
+        strip = self._strip_for(chars_row, styles_row)
+        self._agent_strips[row] = (key, strip)
+        return strip
+
     def render_line(self, y: int) -> Strip:
         scroll_x, scroll_y = self.scroll_offset
         row = scroll_y + y
         width = self.size.width
-        base = self.rich_style
+        base = self._rich_base_style()
         if self._chars is None or self._styles is None or row >= len(self._chars):
             return Strip.blank(width, base)
         agents = self._agent_rows.get(row)
-        if agents is None:
-            strip = self._static_strip(row)
-        else:
-            cols, chars, styles = agents
-            chars_row = self._chars[row].copy()
-            styles_row = self._styles[row].copy()
-            chars_row[cols] = chars
-            styles_row[cols] = styles
-            strip = self._strip_for(chars_row, styles_row)
+        strip = self._static_strip(row) if agents is None else self._agent_strip(row, agents)
         return strip.crop_extend(scroll_x, scroll_x + width, base)
+
+
+def agent_row_key(cols: np.ndarray, chars: np.ndarray, styles: np.ndarray) -> bytes:
+    """What one map row's agents look like, as bytes: equal keys draw the same row."""
+    return cols.tobytes() + chars.tobytes() + styles.tobytes()

@@ -1,0 +1,96 @@
+"""The live map's frames (issue 21, 500 agents at 15 fps): only rows whose agents changed are repainted,
+and what a row shows after many frames is what a fresh map shows for the last frame alone."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from textual.app import App, ComposeResult
+from textual.containers import Horizontal
+
+from grove_tui.tui.widgets import map_raster as mr
+from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.world import parse_world
+
+pytestmark = pytest.mark.anyio
+
+WORLD = """
+name: two_rooms
+description: A hall and a shop joined by a door.
+zones:
+  - name: hall
+    type: lobby
+    description: Entrance hall
+    boundary: [[0, 0], [20, 0], [20, 10], [0, 10]]
+    doors:
+      - {name: main_entrance, position: [10, 0], width: 1.6, leads_to: outside, exit: true}
+      - {name: shop_door, position: [20, 5], width: 1.2, leads_to: shop}
+    entities:
+      - name: desk
+        type: counter
+        footprint: [[4, 6], [8, 6], [8, 7], [4, 7]]
+        interaction_point: [6, 5.4]
+  - name: shop
+    type: shop
+    description: Shop
+    boundary: [[20, 0], [30, 0], [30, 10], [20, 10]]
+"""
+
+
+class TwoMaps(App[None]):
+    """One map that plays every frame, one that is only ever given the last frame."""
+
+    def compose(self) -> ComposeResult:
+        with Horizontal():
+            yield MapView(id="playing")
+            yield MapView(id="fresh")
+
+
+def rendered(world_map: MapView) -> list[list[tuple[str, object]]]:
+    return [[(segment.text, segment.style) for segment in world_map.render_line(y)]
+            for y in range(world_map.size.height)]
+
+
+def frame(world_map: MapView, positions: np.ndarray, selected: int = -1) -> mr.AgentCells:
+    assert world_map.raster is not None
+    return mr.rasterise_agents(world_map.raster, positions, np.arange(len(positions)) % 3, selected,
+                               robot=(15.0, 2.0, 0.5))
+
+
+async def test_only_changed_rows_repaint_and_rows_match_a_fresh_map():
+    built, problems = parse_world(WORLD)
+    assert built is not None, problems
+    app = TwoMaps()
+    async with app.run_test(size=(80, 20)) as pilot:
+        playing = app.query_one("#playing", MapView)
+        fresh = app.query_one("#fresh", MapView)
+        for world_map in (playing, fresh):
+            world_map.set_world(built)
+        await pilot.pause()
+        assert playing.raster is not None and playing.raster.height <= playing.size.height
+        rng = np.random.default_rng(3)
+        positions = np.column_stack([rng.uniform(1, 29, 40), rng.uniform(1, 9, 40)])
+        first = frame(playing, positions)
+        assert playing.set_agents(first) == len(first.by_row())  # every row with agents is new
+        rendered(playing)
+        assert playing.set_agents(frame(playing, positions)) == 0  # nothing moved: nothing repainted
+        # One agent jumps to other rows: the rows it left and the rows it reached (a blob may span two), no others.
+        moved = positions.copy()
+        moved[0] = (positions[0, 0], positions[0, 1] + 4.0 if positions[0, 1] < 5 else positions[0, 1] - 4.0)
+        before, after = frame(playing, positions).by_row(), frame(playing, moved).by_row()
+        changed = {row for row in before.keys() | after.keys()
+                   if [a.tobytes() for a in before.get(row, ())] != [a.tobytes() for a in after.get(row, ())]}
+        assert 2 <= len(changed) <= 4
+        assert playing.set_agents(frame(playing, moved)) == len(changed)
+        # Many frames later (walking, a selection, the robot), every row equals a map given only the last frame.
+        for step in range(30):
+            moved = np.clip(moved + rng.normal(0, 0.4, moved.shape), 0.5, [29.5, 9.5])
+            playing.set_agents(frame(playing, moved, selected=step % 5))
+            rendered(playing)  # each frame is drawn, as the compositor would
+        fresh.set_agents(frame(fresh, moved, selected=29 % 5))
+        await pilot.pause()
+        assert rendered(playing) == rendered(fresh)
+        # Leaving the map empty clears every row that had agents.
+        playing.set_agents(None)
+        fresh.set_agents(None)
+        assert rendered(playing) == rendered(fresh)
