@@ -214,7 +214,8 @@ def evacuate(world, starts: list[tuple[float, float]], exit_of: list[str], param
     """
     if isinstance(params, JuPedSimModel):
         return _evacuate_jupedsim(world, starts, exit_of, radius=radius, speed=speed, limit=limit, line_x=line_x)
-    from grove_tui.bt.xml import parse_tree_text
+    from grove_tui.bt.document import TreeDocument, node
+    from grove_tui.bt.xml import validate_document
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import ThetaStarPlanner
     from grove_tui.navigation.velocity_field import build_velocity_field
@@ -237,9 +238,8 @@ def evacuate(world, starts: list[tuple[float, float]], exit_of: list[str], param
         zone = world.zone_at(*start)
         agents.append(AgentSpec(id=k + 1, group=-1, start=start, goals=(), zone=zone.name if zone else "",
                                 tree=f"trees/agent_{k + 1}.xml", radius=radius, max_vel=speed))
-        xml = ('<root BTCPP_format="4" main_tree_to_execute="T"><BehaviorTree ID="T">'
-               f'<FollowVelocityField exit="{name}" field="to_{name}"/></BehaviorTree></root>')
-        documents.append(parse_tree_text(xml, f"agent_{k + 1}.xml"))
+        tree = TreeDocument.single("T", node("FollowVelocityField", exit=name, field=f"to_{name}"), f"agent_{k + 1}.xml")
+        documents.append(validate_document(tree))
     sim = Simulation.build(agents, documents, world=world, grid=grid, planner=planner, walls=world.walls(),
                            fields=fields, seed=0, dt=DT, params=params)
     n = len(agents)
