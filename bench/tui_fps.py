@@ -276,8 +276,14 @@ async def key_latency(prompt: str, presses: int, size: tuple[int, int], model_ni
                 for key, screen_type in (("f1", HelpScreen), ("escape", GenerationScreen)):
                     started = time.perf_counter()
                     await pilot.press(key)
-                    await until(pilot, lambda t=screen_type: isinstance(app.screen, t))
+                    # The generation may end while help is open: Escape then lands on the inspect screen,
+                    # and that press was not made while the model wrote.
+                    await until(pilot, lambda t=screen_type: isinstance(app.screen, t) or not generation._generating)
+                    if not generation._generating:
+                        break
                     latencies.append(time.perf_counter() - started)
+                if not generation._generating:
+                    break
                 await pilot.pause(0.1)
             if isinstance(app.screen, GenerationScreen) and generation._generating:
                 generation.action_cancel()
