@@ -65,6 +65,30 @@ async def test_setup_lists_worlds_presets_and_previews_the_map(tmp_path):
         assert "scripted.gguf" in models and "loaded" in models
 
 
+class SlowPresetsBackend(ScriptedBackend):
+    """Presets that take a while to read, as on a loaded machine (the CI failure of stop 26)."""
+
+    def presets(self):
+        import time
+
+        time.sleep(1.0)
+        return super().presets()
+
+
+async def test_a_preset_is_chosen_by_the_time_the_map_preview_names_its_world(tmp_path):
+    # A user (and the tmux test) types as soon as the map is named; Enter must then generate, not
+    # warn "Choose a world and a preset first" because the preset list had not arrived yet.
+    app = make_app(tmp_path, SlowPresetsBackend(FIXED_SCRIPT))
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: isinstance(pilot.app.screen, SetupScreen), what="setup screen")
+        screen = pilot.app.screen
+        preview = screen.query_one("#preview", MapView)
+        await wait_until(pilot, lambda: str(preview.border_title or "").startswith("Map: hospital"), what="map title")
+        assert screen.selected_preset == "queuing"
+        await pilot.press(*"ten people queue at the counter", "enter")
+        await wait_until(pilot, lambda: isinstance(pilot.app.screen, GenerationScreen), what="generation screen")
+
+
 async def test_choosing_another_preset_updates_its_description(tmp_path):
     app = make_app(tmp_path)
     async with app.run_test(size=(80, 24)) as pilot:

@@ -118,6 +118,9 @@ whether it is loaded yet.
     @work(thread=True, exclusive=True, group="catalogue", exit_on_error=False, description="listing worlds")
     def load_catalogue(self) -> None:
         backend = self.grove.backend
+        # Presets before worlds: the map preview's title is what a user (and the tmux test) waits
+        # for before typing, and Enter with no preset highlighted yet would refuse the prompt.
+        self.post_message(msg.PresetsListed(backend.presets()))
         names: list[str] = []
         try:
             names = backend.list_worlds()
@@ -125,7 +128,6 @@ whether it is loaded yet.
             self.post_message(msg.WorldsListed([], describe_error(exc).text))
         else:
             self.post_message(msg.WorldsListed(names))
-        self.post_message(msg.PresetsListed(backend.presets()))
         self.post_message(msg.ModelsChanged(backend.model_status(), loading=self.grove.settings.ui.preload_models))
         if self.grove.settings.ui.preload_models:
             self.preload_models(self.grove.initial_world or (names[0] if names else None), self.grove.initial_preset)
