@@ -68,6 +68,13 @@ class TestGenerationScreen:
             await wait_until(pilot, lambda: "patients" in str(screen.query_one("#stream", Static).render()),
                              what="stream")
             await wait_until(pilot, lambda: "tok/s" in str(table.get_cell("synthesis", "detail")), what="progress")
+            # The Detail column widens on the table's next layout pass, not when the cell changes: under
+            # load the snapshot could be taken in between, with "1000.0 tok/s" cut to the old width.
+            detail_width = len(str(table.get_cell("synthesis", "detail")))
+            await wait_until(pilot, lambda: table.columns["detail"].get_render_width(table) >= detail_width
+                             and table.virtual_size.width >= sum(c.get_render_width(table) for c in table.columns.values()),
+                             what="the table laid out for its widest detail")
+            await pilot.pause()
 
         app = GroveApp(backend, test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
