@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from grove_tui.cpu import free_cores
+from grove_tui.cpu import default_llm_threads
 from grove_tui.settings import cache_dir, load_settings
 from grove_tui.llm.chat_template import Sampling, default_sampling
 from grove_tui.errors import Cancelled, ContextTooSmallError, ModelError
@@ -48,9 +48,11 @@ __all__ = ["Generation", "Cancelled", "LocalLLM", "ModelError"]
 
 
 def default_threads() -> int:
-    """Cores free right now (GROVE_LLM_THREADS overrides); see cpu.py for why not the load average."""
+    """llama.cpp's threads: GROVE_LLM_THREADS, else cpu.default_llm_threads (the machine's budget and
+    its idle cores now; cpu.py says why not the load average). The one thread policy: the session,
+    batch workers and a LocalLLM made without `n_threads` all come here."""
     override = load_settings().llm_threads
-    return override if override is not None else free_cores()
+    return override if override is not None else default_llm_threads()
 
 
 @dataclass(frozen=True)

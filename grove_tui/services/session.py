@@ -118,15 +118,6 @@ class WarmUpStatus:
         return self.doing if self.step == "ready" else f"{self.doing}: done"
 
 
-def llm_threads() -> int:
-    """llama.cpp's threads: GROVE_LLM_THREADS, else cpu.default_llm_threads (machine budget, idle cores)."""
-    from grove_tui.cpu import default_llm_threads
-    from grove_tui.settings import load_settings
-
-    override = load_settings().llm_threads
-    return override if override is not None else default_llm_threads()
-
-
 def _warm_reader() -> None:
     from grove_tui.language import parser
 
@@ -268,9 +259,9 @@ class GroveSession:
     def _make_llm(self, role: str, choice: ModelChoice) -> Any:
         if self._llm_factory is not None:
             return self._llm_factory(role, choice)
-        from grove_tui.llm.local import LocalLLM
+        from grove_tui.llm.local import LocalLLM, default_threads
 
-        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx, n_threads=llm_threads())
+        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx, n_threads=default_threads())
         llm.start()  # loads the weights in the model's worker process now, not at the first prompt
         return llm
 
