@@ -41,7 +41,7 @@ import numpy as np
 from gymnasium import spaces
 
 from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metrics
-from grove_tui.errors import GymError
+from grove_tui.errors import GroveError, GymError
 from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
@@ -79,7 +79,8 @@ class SocialNavEnv(gymnasium.Env):
                  time_limit: float | None = None, max_angular_speed: float = 1.5,
                  goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
                  reward: RewardWeights | dict | None = None,
-                 observation: ObservationConfig | dict | None = None, metrics_every: int = 1) -> None:
+                 observation: ObservationConfig | dict | None = None, metrics_every: int = 1,
+                 pedestrian_model: str | None = None) -> None:
         super().__init__()
         if kinematics not in KINEMATICS:
             raise GymError(f"unknown kinematics {kinematics!r}", hint=f"use one of {', '.join(KINEMATICS)}")
@@ -111,6 +112,13 @@ class SocialNavEnv(gymnasium.Env):
         self.obs_config: ObservationConfig = coerce(  # type: ignore[assignment]
             observation, ObservationConfig, "observation")
         self.metrics_every = metrics_every
+        # The people move as `grove simulate` and the app move them: the settings' model unless named.
+        from grove_tui.services.session import pedestrian_params
+
+        try:
+            self.pedestrian_params = pedestrian_params(pedestrian_model)
+        except GroveError as exc:
+            raise GymError(f"pedestrian_model: {exc}", hint=exc.hint) from None
 
         if bundles is not None:
             if world is not None or prompt is not None:
@@ -163,7 +171,7 @@ class SocialNavEnv(gymnasium.Env):
         self.current = self.scenarios[index]
         robot = self._jittered(self.current.robot) if self.start_jitter > 0 else self.current.robot
         self._release()
-        self.sim = self.current.simulation(self.sim_dt, robot=robot)
+        self.sim = self.current.simulation(self.sim_dt, robot=robot, params=self.pedestrian_params)
         self.goal = np.asarray(robot.goal, dtype=np.float64)
         self.robot_radius = float(robot.radius)
         self.robot_max_speed = float(robot.max_vel)

@@ -49,14 +49,14 @@ class LoadedScenario:
     def robot(self) -> Any:
         return self.scenario.robot
 
-    def simulation(self, dt: float, robot: Any = None) -> Simulation:
+    def simulation(self, dt: float, robot: Any = None, params: Any = None) -> Simulation:
         """A fresh Simulation of this scenario, as Simulation.from_scenario builds it (`robot`: another
-        RobotSpec in place of the scenario's)."""
+        RobotSpec in place of the scenario's; `params`: the pedestrian model's SFMParams)."""
         return Simulation.build(self.scenario.agents, self.documents, world=self.world, grid=self.grid,
                                 planner=self.planner, walls=self.walls,
                                 robot=self.scenario.robot if robot is None else robot,
                                 fields=self.fields, seed=self.scenario.seed, dt=dt, bt_rate=10.0,
-                                scenario=self.scenario)
+                                scenario=self.scenario, params=params)
 
 
 def load_scenario(bundle_dir: str | os.PathLike[str], patch_resolution: float) -> LoadedScenario:

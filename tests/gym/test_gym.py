@@ -195,6 +195,19 @@ def test_same_seeds_and_actions_give_the_same_observations(bundle):
     assert not np.array_equal(changed[-1][0]["robot"], obs_d[len(changed)]["robot"])
 
 
+def test_people_move_by_the_pedestrian_model_of_the_settings_or_the_one_named(bundle, monkeypatch):
+    def people_after(env) -> np.ndarray:
+        env.reset(seed=0)
+        steps = run(env, [np.array([0.0, 0.0], dtype=np.float32)] * 40)
+        return steps[-1][0]["pedestrians"]
+
+    grove = people_after(SocialNavEnv(bundle, pedestrian_model="grove"))
+    lightsfm = people_after(SocialNavEnv(bundle, pedestrian_model="lightsfm"))
+    assert not np.array_equal(grove, lightsfm)  # the two models do move people differently here
+    monkeypatch.setenv("GROVE_SIMULATION__PEDESTRIAN_MODEL", "lightsfm")
+    assert np.array_equal(people_after(SocialNavEnv(bundle)), lightsfm)  # `grove simulate`'s setting
+
+
 def test_start_jitter_moves_the_start_by_the_seed(bundle):
     env = SocialNavEnv(bundle, start_jitter=0.5)
     scenario_start = np.array(Scenario.load(bundle / "scenario.yaml").robot.start)
@@ -283,6 +296,8 @@ def test_bad_arguments_are_grove_errors(bundle, tmp_path):
         SocialNavEnv(tmp_path)
     with pytest.raises(GymError, match="unknown reward field"):
         SocialNavEnv(bundle, reward={"sucess": 2.0})
+    with pytest.raises(GymError, match="unknown pedestrian model 'helbing'"):
+        SocialNavEnv(bundle, pedestrian_model="helbing")
     env = SocialNavEnv(bundle)
     env.reset(seed=0)
     with pytest.raises(GymError, match="two finite numbers"):
