@@ -282,6 +282,8 @@ class GroveSession:
         ]
         if world is not None and preset is not None:
             steps.append(("planner", f"preparing {world}'s map and planner", lambda: self._warm_planner(world, preset)))
+            steps.append(("prompt", f"reading {world}/{preset}'s fixed prompt into the model",
+                          lambda: self._warm_prefix(world, preset)))
         statuses: list[WarmUpStatus] = []
         for step, doing, run in steps:
             if self._stop_warm_up.is_set():
@@ -346,6 +348,16 @@ class GroveSession:
             planner.plan(planner.grid.cell_to_world(*first), planner.grid.cell_to_world(*last))
         except PlanningError:
             pass  # two cells with no path between them have still loaded the kernels
+
+    def _warm_prefix(self, world: str, preset: str) -> None:
+        from grove_tui.generation.synthesis import warm_prefix
+
+        with self._lock:
+            if self._models is None or self._stop_warm_up.is_set():
+                return
+        pipeline = self.pipeline(world, preset)
+        if pipeline.llm_bt is not None:
+            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world)
 
     def retriever(self) -> Any:
         with self._lock:

@@ -127,3 +127,27 @@ def test_the_folder_keeps_only_the_most_recently_used_prefixes(model, kv_dir):
     assert len(kept) == PrefixStore.KEEP_FILES
     assert any(name.startswith("hospital-abc-queuing-v2-") for name in kept)
     assert "old-0.kv" not in kept and f"old-{PrefixStore.KEEP_FILES + 7}.kv" in kept
+
+
+def test_warming_the_prefix_serves_the_first_request_from_it(model, kv_dir):
+    # GroveSession.warm_up's "prompt" step: the world/preset system message evaluated before any
+    # request, so the first scenario prefills only its own part (issue 20, first scenario vs warm).
+    from grove_tui.generation.presets import load_preset
+    from grove_tui.generation.synthesis import fixed_system_message, prefix_label, warm_prefix
+    from grove_tui.world import load_world
+
+    preset, world = load_preset("queuing"), load_world("hospital")
+    request = [{"role": "system", "content": fixed_system_message(preset, world)},
+               {"role": "user", "content": "Scenario: ten patients queue at the pharmacy counter"}]
+    label = prefix_label(preset, world)
+    with fresh(model) as llm:  # the control: nothing warmed, nothing on disk
+        cold = llm.evaluate(request, label)
+    assert (cold["cache_source"], cold["cached_tokens"]) == ("cold", 0)
+    for path in kv_dir.iterdir():
+        path.unlink()  # as on a machine that never ran this world and preset
+    with fresh(model) as llm:
+        warmed = warm_prefix(llm, preset, world)
+        assert warmed is not None and warmed["cache_source"] == "cold"
+        first = llm.evaluate(request, label)
+    assert first["cache_source"] == "live" and first["cached_tokens"] > 0.5 * cold["prompt_tokens"]
+    assert first["logits_sha256"] == cold["logits_sha256"]  # and the model sees the same thing

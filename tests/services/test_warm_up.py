@@ -45,7 +45,7 @@ def test_warm_up_loads_the_index_and_embedder_so_the_first_retrieval_loads_nothi
     session = GroveSession(llm_factory=lambda role, choice: object())
     statuses: list[WarmUpStatus] = []
     done = session.warm_up("hospital", "queuing", on_status=statuses.append)
-    assert [s.step for s in done] == ["models", "retrieval", "reader", "planner"]
+    assert [s.step for s in done] == ["models", "retrieval", "reader", "planner", "prompt"]
     assert all(s.state == "done" for s in done), [s.text for s in done]
     assert session.warm
     assert len(unloaded_embedder) == 1, "the warm-up loads the embedder once"
