@@ -45,6 +45,7 @@ How a prompt is read:
 from __future__ import annotations
 
 import random
+import re
 import unicodedata
 import zlib
 from collections.abc import Sequence
@@ -57,6 +58,9 @@ from grove_tui.language.parser import Word, known_word, parse
 from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
 from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
+# A word that picks one place of a series: a number, a letter and a number ("c4", "a1"), or a single
+# letter after the first word of a name ("ward b").
+_IDENTIFIER = re.compile(r"[a-z]?\d+[a-z]?|[a-z]")
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
 ROBOT_INTERACTIONS = ("look", "approach", "follow", "avoid", "block")
@@ -121,15 +125,18 @@ class PromptReading:
     groups: tuple[GroupReading, ...]
     unknown_places: tuple[str, ...] = ()  # noun phrases in a PLACE role that the world does not have
     notes: tuple[str, ...] = ()  # what could not be honoured, said plainly
+    corrections: tuple[str, ...] = ()  # misspelt place words read as the world's ("read 'kitchn' as 'kitchen'")
 
     def to_dict(self) -> dict[str, Any]:
         return {"prompt": self.prompt, "groups": [g.to_dict() for g in self.groups],
-                "unknown_places": list(self.unknown_places), "notes": list(self.notes)}
+                "unknown_places": list(self.unknown_places), "notes": list(self.notes),
+                "corrections": list(self.corrections)}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> PromptReading:
         return cls(str(data.get("prompt", "")), tuple(GroupReading.from_dict(g) for g in data.get("groups", ())),
-                   tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())))
+                   tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())),
+                   tuple(data.get("corrections", ())))
 
     @property
     def total(self) -> int:
@@ -208,7 +215,76 @@ def read_prompt(prompt: str, world: Any, *, seed: int = 0) -> PromptReading:
     text = " ".join((prompt or "").split())
     if not text:
         return PromptReading(prompt or "", ())
-    return _Reader(text, parse(text), place_index(world), int(seed)).read()
+    index = place_index(world)
+    words = parse(text)
+    corrected, corrections = _place_spelling(text, words, index)
+    if not corrections:
+        return _Reader(text, words, index, int(seed)).read()
+    # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
+    reading = _Reader(corrected, parse(corrected), index, int(seed)).read()
+    return replace(reading, prompt=text, corrections=tuple(corrections))
+
+
+def _place_spelling(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple[str, list[str]]:
+    """The prompt with misspelt place words put right, and what was put right ("read 'kitchn' as
+    'kitchen'"). Conservative, so a real word is never turned into a place: a word is corrected only
+    when the world has no place word like it, it is no word for people and no verb the lexicon knows,
+    and exactly one word of the world's place names is one edit away (an insertion, deletion,
+    substitution or swap of neighbours). Short words (4 letters) and real English words ("sever") are
+    corrected only when the correction completes a name with the word next to them ("sever room" ->
+    "server room"), never alone ("left" is not "lift"). Two words of a name run together are split
+    ("livingroom" -> "living room")."""
+    edits: list[tuple[int, int, str, str]] = []
+    for k, w in enumerate(words):
+        low = _plain(w.lower)
+        if not low.isalpha() or len(low) < 4:
+            continue
+        base = lemma(low)
+        if base in index.vocabulary or low in index.vocabulary or base in lx.PERSON_NOUNS or \
+                low in lx.STOPWORDS or low in lx.NUMBER_WORDS or low in lx.ROBOT_WORDS or \
+                verb_lemma(low) in lx.INTENT_VERBS or verb_lemma(low) in lx.ROBOT_VERBS:
+            continue
+        person = _near_person_noun(low)
+        if person is not None and person not in index.vocabulary:
+            continue  # "docters": a person, read by the people rule ("securty" is both: a place here)
+        before, after = _content_neighbours(words, k)
+        joined = index.joined_pairs.get(low)
+        if joined is not None:
+            if known_word(low):
+                continue
+            replacement = " ".join(joined)
+        else:
+            found = sorted({v for v in index.name_words if abs(len(v) - len(low)) <= 1 and _one_edit(low, v)}
+                           | {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1
+                              and _one_edit(base, v)})
+            if len(found) != 1:
+                continue  # nothing near, or two names equally near: no guess
+            replacement = found[0]
+            completes = (before, replacement) in index.name_pairs or (replacement, after) in index.name_pairs
+            if (len(low) < 5 or known_word(low)) and not completes:
+                continue
+        if w.text[:1].isupper():
+            replacement = replacement[:1].upper() + replacement[1:]
+        edits.append((w.start, w.end, replacement, w.text))
+    if not edits:
+        return text, []
+    out = text
+    for start, end, replacement, _ in reversed(edits):
+        out = out[:start] + replacement + out[end:]
+    return out, [f"read '{original}' as '{replacement}'" for _, _, replacement, original in edits]
+
+
+def _content_neighbours(words: Sequence[Word], k: int) -> tuple[str, str]:
+    """The lemmas of the nearest content words before and after word k ("chek-in hall": "hall")."""
+    def near(indices: range) -> str:
+        for j in indices:
+            low = _plain(words[j].lower)
+            if low.isalnum() and low not in lx.STOPWORDS:
+                return lemma(low)
+            if low.isalnum() and low not in ("in", "of", "-"):
+                return ""
+        return ""
+    return near(range(k - 1, max(-1, k - 3), -1)), near(range(k + 1, min(len(words), k + 3)))
 
 
 @dataclass
@@ -351,7 +427,10 @@ class _Reader:
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
         # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).
-        return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
+        # The parser may call such a word a verb after a number ("Five colleages stroll"): a count
+        # is followed by what it counts.
+        counted = i > 0 and self.w[i - 1].pos == "NUM"
+        return (len(self.low[i]) >= 6 and (self.w[i].pos in ("NOUN", "PROPN") or counted) and not self.index.knows(lem)
                 and not known_word(self.low[i]) and _near_person_noun(self.low[i]) is not None)
 
     def _subject_of_a_human_verb(self, i: int) -> bool:
@@ -1331,6 +1410,8 @@ class _Reader:
             return False
         if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
             return False
+        if k + 1 < self.n and _IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)):
+            return False  # "to gate C4": a place word with its number, though the parser calls "gate" a verb
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
             "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
 
@@ -1497,12 +1578,26 @@ class _Reader:
             door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(self.index.match(lemmas), lemmas)
+        if match is not None and not self._identifiers_agree(lemmas, match):
+            match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
         if match is None and record_unknown and not self.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
             return None
         self.context_zones.append(match.zone)
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _identifiers_agree(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
+        """Whether every identifier of a place phrase ("c4", "2", the "b" of "ward b") belongs to the
+        place matched or to one of the places it ties with: a number or letter names one place of a
+        series, so a place whose series lacks it is not that place."""
+        ids = [t for k, t in enumerate(lemmas) if _IDENTIFIER.fullmatch(t) and (k > 0 or not t.isalpha())]
+        if not ids:
+            return True
+        entry = self.index.entry(match.name)
+        return entry is None or all(t in entry.tokens for t in ids) or any(
+            all(t in (self.index.entry(m.name) or entry).tokens for t in ids)
+            for m in self.index.candidates(lemmas)[:8])
 
     def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
         """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt

@@ -285,3 +285,43 @@ def test_a_verb_after_the_building_is_not_part_of_a_place(worlds, world, prompt,
     group = one(reading)
     assert group.count.value == count and group.start is None
     assert not reading.unknown_places
+
+
+# ---- round 3: classes found by eval/understanding/heldout_fresh3.yaml ----------------------------
+
+
+@pytest.mark.parametrize("world, prompt, role, place, corrected", [
+    ("hospital", "Two nurses walk from the radiolgy to the pharmacy.", "start", "radiology", "radiolgy"),
+    ("office", "Six engineers head to the conferance room.", "destination", "boardroom", "conferance"),
+    ("residential", "Mum goes from the hallway to the bathrom.", "destination", "bathroom", "bathrom"),
+    ("station", "A porter waits in the waiting roon.", "location", "waiting_room", "roon"),
+    ("airport", "Some tourists stroll to the arivals hall.", "destination", "arrivals_hall", "arivals"),
+    ("residential", "Two guests walk from the kitchen to the diningroom.", "destination", "kitchen", "diningroom"),
+])
+def test_misspelt_places_are_corrected_and_the_correction_reported(worlds, world, prompt, role, place, corrected):
+    reading = read(worlds, world, prompt)
+    group = one(reading)
+    assert getattr(group, role) == place
+    assert any(f"'{corrected}'" in c for c in reading.corrections), reading.corrections
+    assert reading.to_dict()["corrections"] == list(reading.corrections)
+
+
+@pytest.mark.parametrize("world, prompt", [
+    ("hospital", "Three visitors turn left at the lift lobby and walk to ward B."),  # "left" is no "lift"
+    ("office", "Two colleagues walk to the kitchen."),
+])
+def test_real_words_are_not_corrected_into_places(worlds, world, prompt):
+    reading = read(worlds, world, prompt)
+    assert reading.corrections == ()
+    assert not reading.unknown_places
+
+
+@pytest.mark.parametrize("world, prompt, unknown", [
+    ("airport", "Four passengers walk to gate D7.", "gate d7"),
+    ("station", "Nine commuters wait on platform 5.", "platform 5"),
+    ("hospital", "Two porters walk to the helipad.", "helipad"),
+])
+def test_a_place_one_edit_from_nothing_or_with_a_foreign_number_is_still_refused(worlds, world, prompt, unknown):
+    reading = read(worlds, world, prompt)
+    assert unknown in reading.unknown_places, reading.unknown_places
+    assert reading.corrections == ()
