@@ -1054,6 +1054,10 @@ class _Reader:
                 place = self._place_phrase(first, "obj:start", first, record_unknown=False)
                 if place is not None:
                     clause.places.append(place)
+        for place in self._emptied_zones(range(self.n)):
+            clause.places.insert(0, place)
+            clause.evacuate = True
+            clause.intent = clause.intent or "evacuate"
         emptied = [(p, p.match) for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
         if not emptied or not (clause.evacuate or clause.intent == "evacuate"):
             return None
@@ -1085,6 +1089,34 @@ class _Reader:
                                                or self.w[j].tag == "MD" or verb_lemma(self.low[j]) in ("have", "need")):
             j += 1
         return j > k and j < self.n and self.w[j].tag == "VBN" and verb_lemma(self.low[j]) in lx.ZONE_EMPTYING_VERBS
+
+    def _emptied_zones(self, tokens: Sequence[int]) -> list[_Place]:
+        """Zones that are the subject of an emptying verb used without an object: "the cafeteria
+        clears out", "the whole boardroom empties into the corridor", "the kitchen empties in
+        seconds". Everybody in them leaves (their start), as in an evacuation. "clear the tables"
+        has an object and "the kitchen is clear" no verb: neither is one."""
+        out: list[_Place] = []
+        for i in tokens:
+            if i < 1 or verb_lemma(self.low[i]) not in lx.ZONE_EMPTYING_VERBS or self.low[i] == verb_lemma(self.low[i]):
+                continue  # the base form is an imperative or infinitive ("clear the ward"), read elsewhere
+            if not (self.w[i].pos == "VERB" or self.w[i].tag in ("VBZ", "VBD", "VBP", "NNS")) or self.w[i].tag == "VBN":
+                continue
+            nxt = self.low[i + 1] if i + 1 < self.n else ""
+            if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt)) and nxt != "out"):
+                continue  # an object follows: "empties the bins"
+            first = i
+            while first > 0 and not self._is_punct(first - 1) and (
+                    self.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM")
+                    or self.low[first - 1] in lx.PLACE_MODIFIERS) and self.low[first - 1] not in lx.CLAUSE_STARTERS:
+                first -= 1
+            words = tuple(self.low[first:i])
+            lemmas = [t for t in phrase_lemmas(list(words)) if t not in lx.PLACE_MODIFIERS]
+            match = self.index.match(lemmas) if lemmas else None
+            if match is None or match.kind != "zone" or self._is_person_phrase(lemmas):
+                continue
+            self.context_zones.append(match.zone)
+            out.append(_Place("obj:start", first, words, match, i))
+        return out
 
     def _hyphen_inside(self, j: int) -> bool:
         """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
@@ -1274,6 +1306,11 @@ class _Reader:
         if scene and any(low[i] in lx.ROBOT_WORDS for i in own):
             c.places = [p for p in c.places if p.index < min(i for i in own if low[i] in lx.ROBOT_WORDS)]
             # "When the robot enters the lobby, ...": the robot's places, not the people's
+        if scene:
+            # "Gate B1 clears out when the alarm sounds; its passengers ...": where they all leave
+            for place in self._emptied_zones(own):
+                c.places.insert(0, place)
+                c.evacuate = True
         if scene and own:
             # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
             # the sentence's people are.
@@ -1573,6 +1610,8 @@ class _Reader:
             return None
         if self._is_person_phrase(lemmas):
             return None
+        if lemmas and lemmas[-1] in lx.DURATION_UNITS:
+            return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
         match = None
         if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
             door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door

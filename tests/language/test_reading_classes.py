@@ -325,3 +325,21 @@ def test_a_place_one_edit_from_nothing_or_with_a_foreign_number_is_still_refused
     reading = read(worlds, world, prompt)
     assert unknown in reading.unknown_places, reading.unknown_places
     assert reading.corrections == ()
+
+
+@pytest.mark.parametrize("world, prompt, start, destination", [
+    ("hospital", "The pharmacy empties out into the main corridor when the alarm sounds.", "pharmacy", "main_corridor"),
+    ("office", "Smoke everywhere: the kitchen clears out through the fire exit.", "kitchen", "fire_exit"),
+    ("station", "Within a minute the whole waiting room empties.", "waiting_room", None),
+    ("airport", "When the alarm goes off, gate A2 clears out; its passengers run to the west fire exit.", "gate_a2",
+     "emergency_exit_west"),
+])
+def test_a_zone_that_empties_is_where_everyone_leaves_from(worlds, world, prompt, start, destination):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.start, group.destination) == ("evacuate", start, destination)
+
+
+def test_clearing_an_object_or_a_clear_room_is_no_evacuation(worlds):
+    group = one(read(worlds, "office", "A cleaner clears the tables in the kitchen."))
+    assert group.intent != "evacuate"
+    assert read(worlds, "office", "The kitchen is clear and quiet.").groups == ()
