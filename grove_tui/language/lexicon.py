@@ -162,7 +162,7 @@ for _intent, _verbs in {
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
-            "file troop toddle deliver drop bring fetch collect slip sneak nip pop",
+            "file troop toddle deliver drop bring fetch collect slip sneak nip pop board",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -178,7 +178,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
-    ("get", "out"): "walk", ("get", "off"): "walk",
+    ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
 }
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())

@@ -300,6 +300,7 @@ class _Mention:
     exclusive: bool = False
     rest_of_parent: bool = False
     collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
+    exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
 
 
 @dataclass
@@ -525,6 +526,9 @@ class _Reader:
             if m is None:
                 i += 1
                 continue
+            if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
+                    self._after_except(m.first):
+                m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
             found.append(m)
             i = m.last + 1
         return found
@@ -753,7 +757,8 @@ class _Reader:
             kind = "exclusive" if exclusive else "exact"
             return _Mention(s, head, self._span(s, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
-            if self._verb_after(head) and noun not in lx.PRONOUN_PEOPLE and noun not in lx.NOBODY_WORDS:
+            if (self._verb_after(head) or self._after_except(s)) and noun not in lx.PRONOUN_PEOPLE \
+                    and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return _Mention(s, head, self._span(s, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
                                 exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
             return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
@@ -762,6 +767,13 @@ class _Reader:
         relation = f"others_of:{parent}" if other and parent is not None else None
         return _Mention(s, head, self._span(s, head), label,
                         Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
+
+    def _after_except(self, s: int) -> bool:
+        """Whether the phrase at s follows a word of exception ("except", "apart from", "other than")."""
+        prev = self.low[s - 1] if s > 0 else ""
+        before = self.low[s - 2] if s > 1 else ""
+        return prev in lx.EXCEPT_WORDS - {"but"} or (prev == "from" and before == "apart") or \
+            (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
 
     def _only_people_before(self, p: int) -> bool:
         sentence = self.w[p].sentence
@@ -1032,11 +1044,36 @@ class _Reader:
                 own = clauses[k]
                 shared = replace(clauses[k + 1], places=own.places + clauses[k + 1].places)
                 clauses[k] = shared
+        for k, m in enumerate(mentions):
+            if m.exception_of != k - 1 or k == 0:
+                continue
+            between = range(mentions[k - 1].last + 1, m.first)
+            if all(self.low[x] in lx.EXCEPT_WORDS | {"apart", "from", "for", "other", "than", ","} for x in between) \
+                    and not clauses[k - 1].has_action and clauses[k].has_action:
+                # "Everybody except the receptionist leaves": the verb is the everybody's; the
+                # exception does not do it, so stays where it is
+                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
+                clauses[k] = _Clause()
         groups: list[GroupReading] = []
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             scene = scenes.get(self.w[m.first].sentence)
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
+        gone = [k for k, m in enumerate(mentions) if any(x.exception_of == k for x in mentions)
+                and self._already_gone(spans[k])]
+        if gone and not any(g.relation for g in groups):
+            # "Everyone has gone home except two engineers": the everyone is no longer there
+            for k in gone:
+                self.notes = [n for n in self.notes if not n.startswith(f"'{groups[k].who}': ")]
+                self.notes.append(f"'{groups[k].who}' have already left: only the exception is in the scenario")
+            groups = [g for k, g in enumerate(groups) if k not in gone]
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+
+    def _already_gone(self, span: tuple[int, int]) -> bool:
+        """Whether a clause says its people have left already: a verb of leaving in the perfect
+        ("has gone home", "have left")."""
+        return any(verb_lemma(self.low[i]) in lx.DEPARTURE_VERBS | {"go"} and self.w[i].tag == "VBN"
+                   and self.low[i - 1] in ("has", "have", "had", "'s", "'ve", "already")
+                   for i in range(max(span[0], 1), span[1]))
 
     def _evacuated_zone_without_people(self) -> PromptReading | None:
         """"The entire concourse is evacuated through the side entrance", "Evacuate the pharmacy.":
@@ -1584,6 +1621,14 @@ class _Reader:
             after_hyphen, joined = joined, False
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
                 break
+            if phrase and verb_lemma(w) in lx.INTENT_VERBS and self.index.knows(lemma(w)) and \
+                    not w.endswith("ing") and self._whole_name(phrase) and \
+                    not any(self._whole_name([*phrase, *low[j:end]]) for end in range(j + 1, min(j + 3, self.n) + 1)) \
+                    and (j + 1 >= self.n or not self._is_person_noun(j + 1)):
+                # "at gate B2 boards the plane", "the check-in hall queue at": a whole name, then a verb
+                # that only happens to be a place word too ("departures board", the tag "queue"); but
+                # "the pharmacy waiting chairs" and "the boardroom meeting" are names and nouns
+                break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
                     self.w[j].tag.startswith("VB") or self.index.match([lemma(x) for x in phrase]) is not None
                     or self.index.is_nameless([lemma(x) for x in phrase])):
@@ -1625,6 +1670,11 @@ class _Reader:
             return None
         self.context_zones.append(match.zone)
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _whole_name(self, phrase: Sequence[str]) -> bool:
+        """Whether the words are exactly a name or alias of a place (determiners aside)."""
+        lemmas = tuple(t for t in phrase_lemmas(list(phrase)) if t not in lx.PLACE_MODIFIERS)
+        return bool(lemmas) and any(lemmas == p for e in self.index.entries for p in e.phrases)
 
     def _identifiers_agree(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
         """Whether every identifier of a place phrase ("c4", "2", the "b" of "ward b") belongs to the
@@ -1753,6 +1803,10 @@ class _Reader:
                 via = list(parent.via)
             elif start is None and not stationary:
                 start = parent.start or parent.location  # "a few of them leave": from where the group is
+        if m.exception_of is not None and m.exception_of < len(earlier) and \
+                start is None and destination is None and location is None:
+            parent = earlier[m.exception_of]
+            location = parent.start or parent.location  # "... except three patients, who stay seated"
         count = m.count
         if count is not None and count.kind in ("implied", "vague") and m.relation is None:
             count = self._count_after_comma(m, span) or count

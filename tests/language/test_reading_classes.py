@@ -343,3 +343,38 @@ def test_clearing_an_object_or_a_clear_room_is_no_evacuation(worlds):
     group = one(read(worlds, "office", "A cleaner clears the tables in the kitchen."))
     assert group.intent != "evacuate"
     assert read(worlds, "office", "The kitchen is clear and quiet.").groups == ()
+
+
+@pytest.mark.parametrize("world, prompt, rest, exception", [
+    ("hospital", "Everyone in the cafeteria walks to ward A except two cooks, who stay put.",
+     ("walk", "cafeteria", "ward_a"), (2, "wait", "cafeteria")),
+    ("office", "Everybody except the manager leaves through the back door.",
+     ("walk", None, "back_exit"), (1, "wait", None)),
+    ("residential", "Everyone in the kitchen goes to the balcony except dad.",
+     ("walk", "kitchen", "balcony"), (1, "wait", "kitchen")),
+    ("station", "Everyone on platform 1 gets on the train apart from a guard.",
+     ("walk", "platform_1", None), (1, "wait", "platform_1")),
+])
+def test_everyone_except_some_is_two_groups(worlds, world, prompt, rest, exception):
+    reading = read(worlds, world, prompt)
+    assert len(reading.groups) == 2, [g.who for g in reading.groups]
+    everyone, excepted = reading.groups
+    assert (everyone.intent, everyone.start, everyone.destination) == rest
+    assert (excepted.count.value, excepted.intent, excepted.location) == exception
+
+
+def test_everyone_who_has_already_left_is_not_in_the_scenario(worlds):
+    reading = read(worlds, "hospital", "Everybody has left the ward except one nurse at the nurse station.")
+    group = one(reading)
+    assert (group.count.value, group.location) == (1, "nurse_station")
+    assert any("already left" in n for n in reading.notes)
+
+
+@pytest.mark.parametrize("world, prompt, intent, place", [
+    ("airport", "Everyone at gate A1 boards the plane.", "walk", ("start", "gate_a1")),
+    ("airport", "Twelve travellers in the baggage hall queue at the lost and found.", "queue",
+     ("location", "lost_luggage_desk")),
+])
+def test_a_verb_that_is_also_a_place_word_ends_the_place_before_it(worlds, world, prompt, intent, place):
+    group = one(read(worlds, world, prompt))
+    assert group.intent == intent and getattr(group, place[0]) == place[1]
