@@ -864,6 +864,8 @@ class _Reader:
             return (value, "approximate" if approx else "exact", after, None)
         if low[k] in ("a", "an") and k + 1 < self.n:
             nxt = low[k + 1]
+            if nxt == "couple" and tuple(low[k + 2:k + 4]) == ("of", "dozen"):
+                return (24, "approximate", k + 4, None)  # "a couple of dozen tourists": about 24
             if nxt in ("couple", "pair") and k + 2 < self.n and low[k + 2] == "of":
                 return (2, "exact", k + 3, None)
             if nxt in ("few", "handful", "number", "lot") :
@@ -900,8 +902,9 @@ class _Reader:
             return None
         low = self.low
         s = first if first is not None else head
-        while s > 0 and first is None and (low[s - 1] in ("a", "an", "the") or low[s - 1] in lx.NP_MODIFIERS):
-            s -= 1
+        while s > 0 and first is None and (low[s - 1] in ("a", "an", "the") or low[s - 1] in lx.NP_MODIFIERS
+                                           or (self.w[s - 1].pos == "ADJ" and s > 1 and self.w[s - 2].pos == "DET")):
+            s -= 1  # "a long queue of ...": the adjective is the collective's
         parties = 1
         exact_parties = True
         if number is not None:
@@ -917,6 +920,20 @@ class _Reader:
         label = noun
         if head + 2 < self.n and low[head + 1] == "of":
             inner = self._number_at(head + 2)
+            loose = self._quantifier(head + 2)
+            if loose is not None and loose[1] in ("approximate", "range") and parties == 1 and exact_parties:
+                # "a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside
+                # the collective, counted loosely
+                member = self._person_head(loose[2], counted=True)
+                last = member if member is not None and member <= loose[2] + 2 else loose[2] - 1
+                if member is not None and noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES:
+                    label = self._label(member)
+                elif member is not None and noun in ("group", "crowd", "bunch", "party", "team", "queue", "line"):
+                    label = self._label(member)
+                mention = _Mention(s, last, self._span(s, last), label,
+                                   self._count_from_quantifier(loose, f"{head}:inside"), together=together)
+                mention.collective = noun
+                return mention
             if inner is not None:
                 size = (inner[0], inner[0])
                 last = inner[1] - 1
@@ -1753,8 +1770,8 @@ class _Reader:
                                robot_reaction=None, together=m.together,
                                text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end])
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
-        if m.collective in lx.QUEUE_COLLECTIVES and c.intent is None and intent in ("wait", "walk"):
-            intent = "queue"  # "a queue of eight people forms at the ticket office"
+        if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
+            intent = "queue"  # "a queue of eight people forms at the ticket office", "a line of five waiting"
         if robot is not None:
             intent = "robot"  # also "Startled by the robot, a woman ...", "The robot is followed by ..."
         if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):
@@ -1787,6 +1804,9 @@ class _Reader:
                 via.append(name)
         if intent == "evacuate" and start is None and location is not None:
             start, location = location, None
+        if intent == "queue" and location is None and start is not None and destination is None:
+            # "a queue snakes back from the check-in counter": a queue stands where its head is
+            start, location = None, start
         if stationary and location is None and destination is not None and intent != "robot":
             # "walk to the cafeteria and wait there": they go there, then stay; without a verb of
             # motion ("queue to the desk") the place is only where they are.

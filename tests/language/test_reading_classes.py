@@ -378,3 +378,25 @@ def test_everyone_who_has_already_left_is_not_in_the_scenario(worlds):
 def test_a_verb_that_is_also_a_place_word_ends_the_place_before_it(worlds, world, prompt, intent, place):
     group = one(read(worlds, world, prompt))
     assert group.intent == intent and getattr(group, place[0]) == place[1]
+
+
+@pytest.mark.parametrize("world, prompt, kind, low, high, location", [
+    ("hospital", "A long line of roughly twenty visitors stretches back from the reception desk.", "approximate",
+     16, 24, "reception_desk"),
+    ("station", "A queue of around ten commuters winds out of the newsagent.", "approximate", 8, 12, "newsagent"),
+    ("office", "A short queue of four people waiting for the coffee machine.", "exact", 4, 4, "coffee_machine"),
+])
+def test_a_queue_noun_counts_the_people_inside_it_and_stands_at_its_head(worlds, world, prompt, kind, low, high,
+                                                                        location):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.count.kind, group.location) == ("queue", kind, location)
+    assert low <= group.count.value <= high and group.start is None
+
+
+@pytest.mark.parametrize("world, prompt, low, high", [
+    ("airport", "A couple of dozen passengers wait at gate A2.", 20, 28),
+    ("station", "A crowd of about sixty fans waits on the concourse.", 48, 72),
+])
+def test_loose_counts_inside_collectives_and_dozens(worlds, world, prompt, low, high):
+    group = one(read(worlds, world, prompt))
+    assert low <= group.count.value <= high and group.count.kind == "approximate"
