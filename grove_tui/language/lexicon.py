@@ -118,6 +118,22 @@ PERSON_NOUNS = frozenset(
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
 )
+# People named by two words, the second of which means something else alone ("au pair" is one
+# person, not a pair; "station master" is no master of anything here).
+MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (
+    "au pair", "station master", "tour guide", "ground crew", "cabin crew", "lollipop lady",
+    "night porter", "head waiter", "shop assistant", "sales assistant", "flight crew", "crossing guard",
+    "best man", "maid of honour"))
+# Animals and things that can be counted and do something, but are nobody a crowd simulation places
+# ("two cats sleep on the sofa", "three trolleys stand by the door").
+NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull crow horse pony donkey cow sheep goat
+    pig duck goose chicken hen rabbit hamster mouse rat fish goldfish parrot squirrel fox deer bee wasp fly ant insect
+    animal pet clock lamp light bulb candle train bus car taxi van lorry truck plane aircraft jet trolley cart suitcase
+    bag case luggage box parcel machine computer laptop phone monitor heater radiator speaker alarm siren bell
+    engine motor drone balloon leaf flower plant tree""".split())
+# Endings of nouns for someone who does something ("busker", "florist", "violinist", "sommelier"):
+# the subject of a verb, such a noun is a person unless the world or a list says otherwise.
+AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")
 # Verbs only people do: the noun that is their subject is a person even when no list names it
 # ("a sommelier chats with ...", "two botanists stroll to ..."). Not "wait", "go", "run" or "move":
 # trains, queues and lifts do those too.
@@ -143,7 +159,7 @@ CLAUSE_STARTERS = frozenset("and while whilst whereas but as meanwhile then when
                             "except with".split())
 # Imperative verbs that introduce the people of a scenario ("Simulate ten patients ...").
 SCENE_VERBS = frozenset("simulate show create generate spawn add have make let put place model imagine picture "
-                        "depict want need include populate start".split())
+                        "depict want need include populate start send position".split())
 # Words that can stand between a count and its person noun ("ten tired old patients").
 NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting new local senior junior impatient "
                          "anxious worried excited angry calm happy curious nervous hungry sick injured "
@@ -261,7 +277,7 @@ FAST_WORDS = frozenset("quickly fast rush hurry hurried hurriedly run running da
                        "rapidly swiftly speedily hasty quick urgent urgently stride striding strode scurry scamper "
                        "bolt dart zoom gallop barrel".split())
 SLOW_WORDS = frozenset("slowly slow leisurely stroll amble shuffle saunter dawdle unhurried unhurriedly gently "
-                       "carefully calmly limp hobble".split())
+                       "carefully calmly limp hobble trudge plod tiptoe totter creep mosey".split())
 TOGETHER_WORDS = frozenset({"together", "jointly"})
 TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "family"), ("side", "by", "side"),
                     ("in", "pairs"), ("in", "groups"), ("with", "each", "other"), ("as", "a", "team"),

@@ -421,9 +421,11 @@ class _Reader:
 
     def _is_person_noun(self, i: int) -> bool:
         lem = self._lemma(i)
-        if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS:
+        if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
+            return False
+        if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS or self._multiword_end(i):
             return True
-        if self._subject_of_a_human_verb(i):
+        if self._subject_of_a_human_verb(i) or self._agent_subject(i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
@@ -431,8 +433,35 @@ class _Reader:
         # The parser may call such a word a verb after a number ("Five colleages stroll"): a count
         # is followed by what it counts.
         counted = i > 0 and self.w[i - 1].pos == "NUM"
+        if i > 0 and self.low[i - 1] in lx.ROBOT_WORDS:
+            return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(self.low[i]) >= 6 and (self.w[i].pos in ("NOUN", "PROPN") or counted) and not self.index.knows(lem)
                 and not known_word(self.low[i]) and _near_person_noun(self.low[i]) is not None)
+
+    def _multiword_end(self, i: int) -> bool:
+        """Whether word i ends a person named by two words ("au pair", "station master")."""
+        return any(i - len(p) + 1 >= 0 and tuple(self.low[i - len(p) + 1:i + 1]) == p for p in lx.MULTIWORD_PEOPLE)
+
+    def _multiword_start(self, i: int) -> int | None:
+        """The last word of a person named by two words starting at i, else None."""
+        for p in lx.MULTIWORD_PEOPLE:
+            if tuple(self.low[i:i + len(p)]) == p:
+                return i + len(p) - 1
+        return None
+
+    def _agent_subject(self, i: int) -> bool:
+        """A noun for someone who does something ("a busker strums", "the florist arranges"), in no
+        list: the parser's subject of a verb that things do not do, ending like an agent noun, and
+        no place, robot, thing or time word."""
+        word = self.w[i]
+        if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i:
+            return False
+        lem = self._lemma(i)
+        head = self.w[word.head]
+        return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
+                and self._verb(word.head) not in lx.THING_VERBS and not self.index.knows(lem)
+                and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
+                and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
 
     def _subject_of_a_human_verb(self, i: int) -> bool:
         """A noun no list names, the parser's subject of a verb only people do ("a sommelier
@@ -467,6 +496,8 @@ class _Reader:
             return False
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
+        if prev == "instead" and self.low[s] != "of":
+            return True  # "nobody waits there; instead eight patients queue ..."
         if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
             return True  # "empty except for two cleaners"
         if prev == "from" and p > 0 and self.low[p - 1] == "apart":
@@ -489,15 +520,19 @@ class _Reader:
     def _parser_subject(self, s: int) -> bool:
         """Whether the phrase at s is the subject the parser found ("At six the staff head out"):
         determiners, numbers and adjectives, then a person noun the parser calls the subject."""
-        if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM"):
-            return False  # inside a noun phrase that starts earlier ("the only people")
+        if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM") and not (
+                self.w[s - 1].pos == "NUM" and self.w[s - 1].head < s - 1 and self.low[s] in lx.DETERMINERS):
+            return False  # inside a noun phrase that starts earlier ("the only people"); not "At 8:15 the ..."
         if s > 0 and self.w[s - 1].pos == "SCONJ" and self.low[s - 1] not in lx.CLAUSE_STARTERS:
             return False  # "... until someone collects them", "if anyone asks": nobody who is there
         for k in range(s, min(s + 5, self.n)):
             if self.low[k] in lx.NOBODY_WORDS:
                 return False
             if self._is_person_noun(k):
-                return self.w[k].dep in ("nsubj", "nsubjpass") and self.w[self.w[k].head].pos in ("VERB", "AUX")
+                head = self.w[k].head
+                # the small model may tag the verb a noun ("the commuters on platform 1 walk to ...")
+                return self.w[k].dep in ("nsubj", "nsubjpass") and (self.w[head].pos in ("VERB", "AUX") or (
+                    head > k and verb_lemma(self.low[head]) in lx.INTENT_VERBS and not self.index.knows(self._lemma(head))))
             if self.w[k].pos not in ("DET", "NUM", "ADJ") and self.low[k] not in lx.NP_MODIFIERS:
                 return False
         return False
@@ -545,6 +580,13 @@ class _Reader:
         a time or a thing of the world."""
         k = j
         while k < self.n and k < j + 4:
+            if self.low[k] in lx.ROBOT_WORDS:
+                return None  # "the robot glides": whatever follows, the robot is nobody's kind
+            end = self._multiword_start(k)
+            if end is not None:
+                return end  # "the au pair": one person
+            if self._is_person_noun(k) and self._does_only_what_things_do(k):
+                return None  # "two fans whir in the server room"
             if self._is_person_noun(k) and self.w[k].pos == "ADJ" and k + 1 < self.n and \
                     self.w[k + 1].pos in ("NOUN", "PROPN") and self.w[k + 1].dep != "ROOT" and \
                     (self._is_person_noun(k + 1) or self._lemma(k + 1) in lx.IMPLIED_RANGES):
@@ -569,6 +611,7 @@ class _Reader:
                 k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
                 continue
             if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
+                    and self._lemma(k) not in lx.NON_PEOPLE
                     and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
                     and verb_lemma(self.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
                 return k
@@ -585,6 +628,16 @@ class _Reader:
         verb = self._verb(head)
         return verb not in lx.THING_VERBS
 
+    def _does_only_what_things_do(self, k: int) -> bool:
+        """Whether a person word is the parser's subject of a verb only things do, with no object
+        ("two fans whir", not "two nurses hang the posters")."""
+        word = self.w[k]
+        if word.dep not in ("nsubj", "nsubjpass") or word.head == k or self.w[word.head].pos != "VERB":
+            return False
+        has_object = any(w.head == word.head and w.dep in ("dobj", "obj") for w in self.w)
+        verb = self._verb(word.head)
+        return verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+
     def _modifies_next_noun(self, k: int) -> bool:
         """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
         that noun is no person, no collective and no verb the lexicon knows, and the parser does not
@@ -594,6 +647,10 @@ class _Reader:
         nxt, word = self.w[k + 1], self.low[k + 1]
         if word in ("'s", "’s", "'") or nxt.tag == "POS":
             return True  # "the manager's office"
+        if k > 0 and self.w[k - 1].pos == "NUM" and self._lemma(k) != self.low[k] and \
+                not self.index.knows(self._lemma(k + 1)) and k + 2 < self.n and \
+                self.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):
+            return False  # "two interns lug boxes from ...": after a count, the next word is the verb
         # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
         # is one, "Security alert:" is not.
         verb_like = (nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])) or \
@@ -818,6 +875,8 @@ class _Reader:
         noun = self._lemma(head)
         if noun not in lx.PERSON_NOUNS and len(self.low[head]) >= 6 and not known_word(self.low[head]):
             noun = _near_person_noun(self.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays
+        if self._multiword_end(head):
+            return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if tuple(self.low[head - len(p) + 1:head + 1]) == p)
         if noun in ("member", "person") and head > 0 and self._is_person_noun(head - 1):
             noun = self._lemma(head - 1)  # "staff members", "family members"
         if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
@@ -898,8 +957,8 @@ class _Reader:
     def _collective(self, head: int, number: tuple | None = None, first: int | None = None) -> _Mention | None:
         """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
         noun = self._lemma(head)
-        if noun not in lx.IMPLIED_RANGES:
-            return None
+        if noun not in lx.IMPLIED_RANGES or self._multiword_end(head):
+            return None  # "the au pair" is no pair
         low = self.low
         s = first if first is not None else head
         while s > 0 and first is None and (low[s - 1] in ("a", "an", "the") or low[s - 1] in lx.NP_MODIFIERS
@@ -1755,7 +1814,9 @@ class _Reader:
         if intent is None:
             # No verb of action ("a cleaner is in the cafeteria"): people who are somewhere stay
             # there; only a place they are sent to ("... to the exit") makes them walk.
-            sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places)
+            # A way taken ("push a bed along the corridor") is walking too.
+            sends = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS or p.prep == "obj:dest"
+                        for p in c.places)
             intent = "walk" if sends or c.robot else "wait"
         if m.first >= 2 and self.low[m.first - 1] == "by" and \
                 self.low[m.first - 2] in ("followed", "trailed", "accompanied", "joined") and earlier:
@@ -1907,6 +1968,9 @@ class _Reader:
         if prep in lx.VIA_PREPOSITIONS:
             if is_door and verb in lx.DEPARTURE_VERBS | {"evacuate"} or (is_door and intent == "evacuate"):
                 return "destination"
+            entry = self.index.entry(p.match.name) if is_door and p.match is not None else None
+            if entry is not None and entry.exit and verb not in lx.ARRIVAL_VERBS:
+                return "destination"  # "go home through the back door": out of an exit is where they end
             if is_door and verb in lx.ARRIVAL_VERBS:
                 return "start"
             return "via"

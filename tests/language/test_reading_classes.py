@@ -400,3 +400,52 @@ def test_a_queue_noun_counts_the_people_inside_it_and_stands_at_its_head(worlds,
 def test_loose_counts_inside_collectives_and_dozens(worlds, world, prompt, low, high):
     group = one(read(worlds, world, prompt))
     assert low <= group.count.value <= high and group.count.kind == "approximate"
+
+
+@pytest.mark.parametrize("world, prompt, counts, label", [
+    ("residential", "An au pair walks from the kitchen to the hallway.", [1], "au pair"),
+    ("station", "The station master waits on platform 2.", [1], "station master"),
+    ("airport", "A tour guide and nine tourists wait at the meeting point.", [1, 9], "tour guide"),
+])
+def test_people_named_by_two_words_are_one_person(worlds, world, prompt, counts, label):
+    reading = read(worlds, world, prompt)
+    assert [g.count.value for g in reading.groups] == counts
+    assert reading.groups[0].label == label
+
+
+@pytest.mark.parametrize("world, prompt, who", [
+    ("residential", "Three dogs sleep in the hallway while two children play in the kids room.", ["two children"]),
+    ("office", "Four fans hum in the server room while an engineer waits there.", ["an engineer"]),
+    ("hospital", "Two trolleys stand by the lifts and a porter walks to ward A.", ["a porter"]),
+    ("office", "When the robot rolls into the boardroom, two managers watch it.", ["two managers"]),
+])
+def test_animals_things_and_the_robot_are_nobody(worlds, world, prompt, who):
+    assert [g.who for g in read(worlds, world, prompt).groups] == who
+
+
+@pytest.mark.parametrize("world, prompt, label, location", [
+    ("station", "A juggler performs in the ticket hall.", "juggler", "ticket_hall"),
+    ("airport", "A violinist plays near the café counter.", "violinist", "cafe_counter"),
+])
+def test_an_agent_noun_doing_something_is_a_person(worlds, world, prompt, label, location):
+    group = one(read(worlds, world, prompt))
+    assert (group.label, group.location) == (label, location)
+
+
+@pytest.mark.parametrize("world, prompt, count, intent, places", [
+    ("office", "Three interns haul chairs from the kitchen to the boardroom.", 3, "walk",
+     {"start": "kitchen", "destination": "boardroom"}),
+    ("station", "At 7:40 the commuters on platform 1 walk to the concourse.", 3, "walk",
+     {"start": "platform_1", "destination": "concourse"}),
+    ("hospital", "Nobody sits in the cafeteria; instead six visitors wait in the lobby.", 6, "wait",
+     {"location": "entrance_lobby"}),
+    ("airport", "Send twelve passengers from the concourse to gate B1.", 12, "walk",
+     {"start": "concourse", "destination": "gate_b1"}),
+    ("office", "In the evening two cleaners leave through the back door.", 2, "walk", {"destination": "back_exit"}),
+    ("hospital", "Two porters wheel a trolley along the main corridor.", 2, "walk", {"via": ("main_corridor",)}),
+])
+def test_subjects_found_past_parser_slips_and_ways_out(worlds, world, prompt, count, intent, places):
+    group = one(read(worlds, world, prompt))
+    assert group.intent == intent and (group.count.value == count or group.count.low <= count <= group.count.high)
+    for role, place in places.items():
+        assert getattr(group, role) == place, (role, group)
