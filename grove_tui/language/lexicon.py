@@ -221,7 +221,7 @@ for _interaction, _verbs in {
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
-    "block": "block obstruct confront threaten stop corner impede hinder intercept harass",
+    "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)
@@ -257,6 +257,12 @@ for _verb in "walk go come run rush hurry move step head wander stroll dash race
         ROBOT_PHRASES.setdefault((_verb, *_tail), "approach")
     for _tail in (("away", "from"), ("away",), ("back", "from"), ("off",)):
         ROBOT_PHRASES.setdefault((_verb, *_tail), "avoid")
+# Gathering round the robot is coming to see it ("crowd around the robot").
+for _verb in "crowd gather cluster swarm huddle flock throng mob".split():
+    for _tail in (("around",), ("round",), ("about",)):
+        ROBOT_PHRASES.setdefault((_verb, *_tail), "approach")
+# Any verb of walking the lexicon knows, not only the few above ("toddle up to the robot").
+ROBOT_APPROACH_TAILS = (("up", "to"), ("over", "to"), ("towards",), ("toward",), ("closer", "to"), ("right", "up", "to"))
 # Words right after the robot that name an interaction ("stand in the robot's way").
 ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
                                                    ("’s", "way"): "block", ("’s", "path"): "block"}

@@ -342,6 +342,7 @@ class _Reader:
         self.unknown: list[str] = []
         self.notes: list[str] = []
         self.context_zones: list[str] = []  # zones of the places read so far, in reading order
+        self.relative = self._relative_clause_tokens()
         self.no_mention = self._together_phrase_tokens()
 
     # -- helpers ---------------------------------------------------------------------------
@@ -365,6 +366,31 @@ class _Reader:
         if v == self.low[i] and self.w[i].pos in ("VERB", "AUX"):
             return self.w[i].lemma
         return v
+
+    def _relative_clause_tokens(self) -> set[int]:
+        """The words of relative clauses ("the visitors who are waiting in the lobby"): they say who
+        the people are, not what they do, unless nothing else in their clause does."""
+        children: dict[int, list[int]] = {}
+        for w in self.w:
+            if w.head != w.i:
+                children.setdefault(w.head, []).append(w.i)
+        out: set[int] = set()
+        for w in self.w:
+            if w.dep == "relcl":
+                clause: set[int] = set()
+                stack = [w.i]
+                while stack:
+                    k = stack.pop()
+                    if k not in clause:
+                        clause.add(k)
+                        stack.extend(children.get(k, ()))
+                # The small model may hang the main verb inside it ("who were sitting in the boardroom
+                # walk to ..."): a finite verb of the lexicon after the relative's own verb ends it.
+                end = next((k for k in sorted(clause) if k > w.i and self.w[k].tag not in ("VBG", "VBN")
+                            and verb_lemma(self.low[k]) in lx.INTENT_VERBS and self.low[k - 1] != "to"
+                            and self.w[k - 1].pos != "DET"), None)
+                out |= {k for k in clause if end is None or k < end}
+        return out
 
     def _together_phrase_tokens(self) -> set[int]:
         out: set[int] = set()
@@ -458,8 +484,11 @@ class _Reader:
             return False
         lem = self._lemma(i)
         head = self.w[word.head]
+        verb = self._verb(word.head)
+        # Not after a verb things do as well ("the sprinklers go off", "the heater stays on").
         return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
-                and self._verb(word.head) not in lx.THING_VERBS and not self.index.knows(lem)
+                and verb not in lx.THING_VERBS and verb not in lx.INTENT_VERBS and verb not in ("be", "go", "start")
+                and not self.index.knows(lem)
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
                 and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
 
@@ -1282,6 +1311,13 @@ class _Reader:
                     if taken == phrase:
                         c.robot = interaction
                         break
+                # any verb of walking, known or only tagged a verb by the parser ("waddle over to it")
+                if c.robot is None and (lx.INTENT_VERBS.get(self._verb(i)) == "walk" or (
+                        self.w[i].pos == "VERB" and self._verb(i) not in lx.INTENT_VERBS)):
+                    for tail in lx.ROBOT_APPROACH_TAILS:
+                        if self._phrase_words(i + 1, len(tail), ownset) == tail:
+                            c.robot = "approach"  # "the twins toddle up to the robot"
+                            break
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
@@ -1466,6 +1502,8 @@ class _Reader:
                     candidates.append((i, lx.INTENT_VERBS[v], v))
         if any(self.w[i].pos == "VERB" and self.w[i].lemma not in ("be", "have") and i not in used for i in own):
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
+        if any(i not in self.relative for i, _, _ in candidates):
+            candidates = [c_ for c_ in candidates if c_[0] not in self.relative]
         if len(candidates) > 1 and own and candidates[0][0] == own[0] and self.w[own[0]].tag == "VBG":
             candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
         if candidates:
@@ -1815,8 +1853,9 @@ class _Reader:
             # No verb of action ("a cleaner is in the cafeteria"): people who are somewhere stay
             # there; only a place they are sent to ("... to the exit") makes them walk.
             # A way taken ("push a bed along the corridor") is walking too.
+            # So is being the doer of a passive whose subject is a destination ("the desk is approached by").
             sends = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS or p.prep == "obj:dest"
-                        for p in c.places)
+                        for p in c.places) or (scene is not None and any(p.prep == "obj:dest" for p in scene.places))
             intent = "walk" if sends or c.robot else "wait"
         if m.first >= 2 and self.low[m.first - 1] == "by" and \
                 self.low[m.first - 2] in ("followed", "trailed", "accompanied", "joined") and earlier:

@@ -449,3 +449,41 @@ def test_subjects_found_past_parser_slips_and_ways_out(worlds, world, prompt, co
     assert group.intent == intent and (group.count.value == count or group.count.low <= count <= group.count.high)
     for role, place in places.items():
         assert getattr(group, role) == place, (role, group)
+
+
+@pytest.mark.parametrize("world, prompt, intent, places", [
+    ("office", "The engineers who were sitting in the boardroom walk to the kitchen.", "walk",
+     {"start": "boardroom", "destination": "kitchen"}),
+    ("airport", "Passengers who are waiting at gate A1 queue at the A1 desk.", "queue", {"location": "gate_a1_desk"}),
+])
+def test_a_relative_clause_says_who_not_what_they_do(worlds, world, prompt, intent, places):
+    group = one(read(worlds, world, prompt))
+    assert group.intent == intent
+    for role, place in places.items():
+        assert getattr(group, role) == place
+
+
+@pytest.mark.parametrize("world, prompt, interaction", [
+    ("hospital", "Two toddlers waddle over to the robot.", "approach"),
+    ("office", "Some interns gather round the robot in the kitchen.", "approach"),
+    ("station", "A drunk fan refuses to let the robot through the gates.", "block"),
+])
+def test_robot_interactions_from_any_verb_of_walking_gathering_or_refusing(worlds, world, prompt, interaction):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.robot_interaction) == ("robot", interaction)
+
+
+def test_the_doer_of_a_passive_approach_walks_there(worlds):
+    group = one(read(worlds, "office", "The printer is approached by two engineers."))
+    assert (group.intent, group.destination) == ("walk", "printer")
+
+
+def test_compound_plurals_of_child_and_man(worlds):
+    group = one(read(worlds, "station", "Three businessmen and no one else wait in the waiting room."))
+    assert group.label == "businessman"
+    assert one(read(worlds, "airport", "Ten schoolchildren walk to gate A1.")).label == "schoolchild"
+
+
+def test_a_thing_that_goes_off_is_nobody(worlds):
+    reading = read(worlds, "office", "When the smoke detectors go off, two engineers leave by the fire exit.")
+    assert [g.who for g in reading.groups] == ["two engineers"]
