@@ -367,6 +367,27 @@ class _Reader:
             return self.w[i].lemma
         return v
 
+    def _negated_clause_tokens(self) -> set[int]:
+        """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers
+        are waiting on platform 1, but ..."): its places are where nobody is, so they set no scene.
+        Not when the clause names an exception ("nobody is in the kitchen except the cleaner")."""
+        out: set[int] = set()
+        for i in range(self.n):
+            nobody = self.low[i] in lx.NOBODY_WORDS or (self.low[i] == "no" and i + 1 < self.n and (
+                self.low[i + 1] in ("one", "body") or self._is_person_noun(i + 1)))
+            if not nobody:
+                continue
+            end = i + 1
+            while end < self.n and self.w[end].sentence == self.w[i].sentence and self.low[end] not in (";", ":") \
+                    and not (self.low[end] in lx.CLAUSE_STARTERS | {"instead"} and end > i + 2):
+                end += 1
+            clause = range(i, end)
+            if any(self.low[k] in lx.EXCEPT_WORDS or self.low[k] in ("apart", "only", "than") for k in clause) or \
+                    (end < self.n and self.low[end] in lx.EXCEPT_WORDS - {"but"}):  # "..., but a cleaner"
+                continue
+            out.update(clause)
+        return out
+
     def _relative_clause_tokens(self) -> set[int]:
         """The words of relative clauses ("the visitors who are waiting in the lobby"): they say who
         the people are, not what they do, unless nothing else in their clause does."""
@@ -1117,8 +1138,9 @@ class _Reader:
             spans.append((starts[k], sentence_end))
         claimed = {i for a, b in spans for i in range(a, b)}
         preamble_of: dict[int, list[int]] = {}
+        negated = self._negated_clause_tokens()
         for i in range(self.n):
-            if i not in claimed:
+            if i not in claimed and i not in negated:
                 preamble_of.setdefault(self.w[i].sentence, []).append(i)
         mention_tokens = {i for m in mentions for i in range(m.first, m.last + 1)}
         scenes = {s: self._clause(toks, mention_tokens, scene=True) for s, toks in preamble_of.items()}
@@ -1375,6 +1397,14 @@ class _Reader:
                     used.update(range(i, end))
                     i_pos = self._advance(own, end)
                     continue
+            if i > 0 and lx.INTENT_VERBS.get(self._verb(i - 1)) in lx.STATIONARY_INTENTS and \
+                    c.wait_seconds is None:
+                dur = self._duration(i)  # "waits 15 minutes outside the room": a duration without "for"
+                if dur is not None:
+                    c.wait_seconds, end = dur
+                    used.update(range(i, end))
+                    i_pos = self._advance(own, end)
+                    continue
             negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(low[i:i + len(p)]) == p), None)
             if negated is not None:
                 # "go to the imaging instead of the waiting room": a place nobody goes to
@@ -1420,7 +1450,7 @@ class _Reader:
                 continue
             v = self._verb(i)
             object_verbs = lx.START_OBJECT_VERBS | lx.DESTINATION_OBJECT_VERBS | lx.LOCATION_OBJECT_VERBS
-            if v in lx.NEGATING_VERBS and nxt in lx.DETERMINERS:
+            if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self._names_place(i + 1)):
                 # "skip the critical care and go to ...": a place they do not go to
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
                 end = place.end if place is not None else i + 1
@@ -1438,8 +1468,9 @@ class _Reader:
                     i_pos = self._advance(own, place.end)
                     continue
             if ((self.w[i].pos == "VERB" or self._third_person_verb(i)) and v not in lx.INTENT_VERBS
-                    and v not in lx.ROBOT_VERBS and nxt in lx.DETERMINERS
+                    and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self._names_place(i + 1))
                     and not self._after_determiner(i) and self._names_place(self._skip(i + 1, lx.DETERMINERS))):
+                # "a cleaner sweeps platform 2", "mops the corridor": the object of a verb the lexicon lacks
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
                 if place is not None:
                     c.places.append(place)
@@ -1707,6 +1738,8 @@ class _Reader:
         """The noun phrase after a place preposition, matched against the world."""
         low = self.low
         j = k
+        if tuple(low[j:j + 2]) in (("one", "of"), ("each", "of"), ("any", "of"), ("some", "of")):
+            j += 2  # "sits on one of the concourse benches": the benches
         while j < self.n and (low[j] in lx.DETERMINERS or low[j] in ("'s", "’s")):
             j += 1
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < self.n and \

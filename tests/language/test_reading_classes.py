@@ -487,3 +487,26 @@ def test_compound_plurals_of_child_and_man(worlds):
 def test_a_thing_that_goes_off_is_nobody(worlds):
     reading = read(worlds, "office", "When the smoke detectors go off, two engineers leave by the fire exit.")
     assert [g.who for g in reading.groups] == ["two engineers"]
+
+
+@pytest.mark.parametrize("world, prompt, seconds, location", [
+    ("office", "A courier waits ten minutes at the front desk.", 600.0, "reception_desk"),
+    ("residential", "Grandma sits half an hour on the sofa.", 1800.0, "sofa"),
+])
+def test_a_wait_with_a_duration_but_no_for(worlds, world, prompt, seconds, location):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.wait_seconds, group.location) == ("wait", seconds, location)
+
+
+@pytest.mark.parametrize("world, prompt, role, place", [
+    ("hospital", "No visitors are allowed in ward C, but a nurse tidies ward B.", "location", "ward_b"),
+    ("airport", "Nobody uses the arrivals corridor; six pilots walk to gate B2.", "via", ()),
+])
+def test_a_clause_about_nobody_sets_no_scene(worlds, world, prompt, role, place):
+    group = one(read(worlds, world, prompt))
+    assert getattr(group, role) == place
+
+
+def test_one_of_several_places(worlds):
+    group = one(read(worlds, "office", "An engineer sits at one of the desks in the open office."))
+    assert group.location == "open_plan_office"
