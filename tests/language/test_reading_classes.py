@@ -499,7 +499,8 @@ def test_a_wait_with_a_duration_but_no_for(worlds, world, prompt, seconds, locat
 
 
 @pytest.mark.parametrize("world, prompt, role, place", [
-    ("hospital", "No visitors are allowed in ward C, but a nurse tidies ward B.", "location", "ward_b"),
+    ("hospital", "No visitors are allowed in ward C, but a nurse is working.", "location", None),
+    ("station", "No trains stop at platform 1, but a porter sweeps platform 2.", "location", "platform_2"),
     ("airport", "Nobody uses the arrivals corridor; six pilots walk to gate B2.", "via", ()),
 ])
 def test_a_clause_about_nobody_sets_no_scene(worlds, world, prompt, role, place):
