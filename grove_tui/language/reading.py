@@ -1263,23 +1263,35 @@ class _Reader:
         for i in tokens:
             if i < 1 or verb_lemma(self.low[i]) not in lx.ZONE_EMPTYING_VERBS or self.low[i] == verb_lemma(self.low[i]):
                 continue  # the base form is an imperative or infinitive ("clear the ward"), read elsewhere
-            if not (self.w[i].pos == "VERB" or self.w[i].tag in ("VBZ", "VBD", "VBP", "NNS")) or self.w[i].tag == "VBN":
+            if self.w[i].tag == "VBN":
+                # the passive, wherever it stands: "..., so the ticket hall has to be emptied"
+                j = i - 1
+                while j > 0 and (self.low[j] in ("be", "been", "being", "is", "are", "was", "were", "to", "has",
+                                                 "have", "had", "needs", "need", "got", "gets", "get")
+                                 or self.w[j].tag == "MD"):
+                    j -= 1
+                if j == i - 1:
+                    continue  # no auxiliary: "the emptied room"
+                end = j + 1
+            elif self.w[i].pos == "VERB" or self.w[i].tag in ("VBZ", "VBD", "VBP", "NNS"):
+                nxt = self.low[i + 1] if i + 1 < self.n else ""
+                if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt)) and nxt != "out"):
+                    continue  # an object follows: "empties the bins"
+                end = i
+            else:
                 continue
-            nxt = self.low[i + 1] if i + 1 < self.n else ""
-            if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt)) and nxt != "out"):
-                continue  # an object follows: "empties the bins"
-            first = i
+            first = end
             while first > 0 and not self._is_punct(first - 1) and (
                     self.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM")
                     or self.low[first - 1] in lx.PLACE_MODIFIERS) and self.low[first - 1] not in lx.CLAUSE_STARTERS:
                 first -= 1
-            words = tuple(self.low[first:i])
+            words = tuple(self.low[first:end])
             lemmas = [t for t in phrase_lemmas(list(words)) if t not in lx.PLACE_MODIFIERS]
             match = self.index.match(lemmas) if lemmas else None
             if match is None or match.kind != "zone" or self._is_person_phrase(lemmas):
                 continue
             self.context_zones.append(match.zone)
-            out.append(_Place("obj:start", first, words, match, i))
+            out.append(_Place("obj:start", first, words, match, end))
         return out
 
     def _hyphen_inside(self, j: int) -> bool:
@@ -1422,6 +1434,9 @@ class _Reader:
                     used.update(range(i, place.end))
                     i_pos = self._advance(own, place.end)
                     continue
+            if w == "to" and nxt == "be" and i + 2 < self.n and verb_lemma(low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
+                i_pos += 1
+                continue  # "the hall has to be emptied": the zone's evacuation, read by _emptied_zones
             if w == "to" and (nxt == "" or self._verb_follows(i + 1)) and not self._names_place(i + 1):
                 end = self._phrase_end(i + 2, allow_objects=True)
                 c.purpose = c.purpose or self.prompt[self.w[i].start:self.w[max(end - 1, i + 1)].end]
@@ -1474,6 +1489,7 @@ class _Reader:
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
                 if place is not None:
                     c.places.append(place)
+                    c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
                     used.update(range(i, place.end))
             elif not self._after_determiner(i) and v in object_verbs:
                 if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt))):

@@ -511,3 +511,20 @@ def test_a_clause_about_nobody_sets_no_scene(worlds, world, prompt, role, place)
 def test_one_of_several_places(worlds):
     group = one(read(worlds, "office", "An engineer sits at one of the desks in the open office."))
     assert group.location == "open_plan_office"
+
+
+@pytest.mark.parametrize("world, prompt, start", [
+    ("hospital", "A gas leak is reported, so the pharmacy must be cleared; ten people leave by the main entrance.",
+     "pharmacy"),
+    ("office", "Because of the smoke the boardroom needs to be emptied and six managers head to the fire exit.",
+     "boardroom"),
+])
+def test_a_zone_emptied_in_the_passive_anywhere_in_the_sentence(worlds, world, prompt, start):
+    group = one(read(worlds, world, prompt))
+    assert (group.intent, group.start, group.purpose) == ("evacuate", start, None)
+
+
+def test_a_verb_no_list_names_with_a_place_object_is_the_groups_own_action(worlds):
+    reading = read(worlds, "office", "A cleaner polishes the main corridor, two interns walk to the kitchen.")
+    cleaner = reading.groups[0]
+    assert (cleaner.intent, cleaner.location, cleaner.destination) == ("wait", "main_corridor", None)
