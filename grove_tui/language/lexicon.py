@@ -53,6 +53,8 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
     "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
+# Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
+FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4)}
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
 QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
@@ -196,6 +198,9 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
 }
+# Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
+# the subject walks the route, the object follows.
+LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show".split())
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())

@@ -546,6 +546,8 @@ class _Reader:
             return False
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
+        if self._led_by(s):
+            return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
         if prev == "instead" and self.low[s] != "of":
             return True  # "nobody waits there; instead eight patients queue ..."
         if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
@@ -872,8 +874,19 @@ class _Reader:
         low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
         parent = self._parent(found)
         relation = f"others_of:{parent}" if other and parent is not None else None
+        if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[s] in ("their", "his", "her", "our", "my")):
+            low_, high_ = lx.FAMILY_PLURALS[noun]  # "the parents": the two of one family
+            return _Mention(s, head, self._span(s, head), label,
+                            Count("implied", self._choose(low_, high_, f"{s}:family"), low_, high_))
         return _Mention(s, head, self._span(s, head), label,
                         Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
+
+    def _led_by(self, s: int) -> bool:
+        """Whether the phrase at s is the counted object of a verb of leading right after a person
+        ("a tour guide leads twelve tourists", "two nurses escort five patients")."""
+        p = s - 1
+        return p >= 1 and verb_lemma(self.low[p]) in lx.LEADING_VERBS and self._is_person_noun(p - 1) and \
+            self._number_at(s) is not None and self._number_at(s)[0] > 1
 
     def _after_except(self, s: int) -> bool:
         """Whether the phrase at s follows a word of exception ("except", "apart from", "other than")."""
@@ -1181,6 +1194,11 @@ class _Reader:
                 # exception does not do it, so stays where it is
                 clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
                 clauses[k] = _Clause()
+        for k, m in enumerate(mentions):
+            if k > 0 and self._led_by(m.first) and mentions[k - 1].last == m.first - 2:
+                # the leader takes the route the led group is said to take
+                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
+                                         intent=clauses[k].intent or "walk", has_action=True)
         groups: list[GroupReading] = []
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             scene = scenes.get(self.w[m.first].sentence)
@@ -1918,6 +1936,9 @@ class _Reader:
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together,
                                text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end])
+        if self._led_by(m.first) and earlier and c.robot is None:
+            intent = "follow"  # "leads twelve tourists": they follow the one who leads
+            c = replace(c, follows=earlier[-1].who)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
         if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
             intent = "queue"  # "a queue of eight people forms at the ticket office", "a line of five waiting"

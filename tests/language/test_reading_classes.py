@@ -528,3 +528,25 @@ def test_a_verb_no_list_names_with_a_place_object_is_the_groups_own_action(world
     reading = read(worlds, "office", "A cleaner polishes the main corridor, two interns walk to the kitchen.")
     cleaner = reading.groups[0]
     assert (cleaner.intent, cleaner.location, cleaner.destination) == ("wait", "main_corridor", None)
+
+
+@pytest.mark.parametrize("world, prompt, leader, led", [
+    ("hospital", "Two porters escort six patients from the lobby to radiology.", 2, 6),
+    ("station", "A guide leads fifteen students from the ticket hall to platform 1.", 1, 15),
+])
+def test_a_counted_group_led_by_someone_follows_the_same_route(worlds, world, prompt, leader, led):
+    reading = read(worlds, world, prompt)
+    assert [g.count.value for g in reading.groups] == [leader, led]
+    first, second = reading.groups
+    assert first.intent == "walk" and second.intent == "follow" and second.follows == first.who
+    assert first.destination == second.destination is not None
+
+
+@pytest.mark.parametrize("world, prompt, low, high", [
+    ("residential", "Her parents wait in the living room.", 2, 2),
+    ("residential", "The grandparents sit on the balcony.", 2, 4),
+    ("hospital", "Parents wait in the main waiting room.", 3, 6),  # no family said: a bare plural
+])
+def test_family_plurals_said_of_one_family(worlds, world, prompt, low, high):
+    group = one(read(worlds, world, prompt))
+    assert (group.count.low, group.count.high) == (low, high)
