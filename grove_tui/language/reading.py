@@ -61,6 +61,7 @@ from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 # A word that picks one place of a series: a number, a letter and a number ("c4", "a1"), or a single
 # letter after the first word of a name ("ward b").
 _IDENTIFIER = re.compile(r"[a-z]?\d+[a-z]?|[a-z]")
+_MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
 ROBOT_INTERACTIONS = ("look", "approach", "follow", "avoid", "block")
@@ -487,6 +488,8 @@ class _Reader:
 
     def _multiword_end(self, i: int) -> bool:
         """Whether word i ends a person named by two words ("au pair", "station master")."""
+        if self.low[i] not in _MULTIWORD_LAST:
+            return False  # asked for every word the reader looks at: the common answer first
         return any(i - len(p) + 1 >= 0 and tuple(self.low[i - len(p) + 1:i + 1]) == p for p in lx.MULTIWORD_PEOPLE)
 
     def _multiword_start(self, i: int) -> int | None:
