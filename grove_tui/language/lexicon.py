@@ -173,7 +173,8 @@ NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting ne
 INTENT_VERBS: dict[str, str] = {}
 for _intent, _verbs in {
     "queue": "queue line queueing",
-    "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather",
+    "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
+            "snooze",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter",
     "follow": "follow accompany escort trail shadow",
@@ -305,6 +306,9 @@ EVACUATION_PHRASES: tuple[tuple[str, ...], ...] = (("clear", "out"), ("empty", "
 URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"),
                                                     ("run", "out"), ("hurry", "out"), ("pour", "out"))
 URGENCY_WORDS = frozenset("now immediately urgently quickly asap must fast instantly".split())
+# Words that make plain leaving ("leave", "exit") an evacuation: not "must" or "quickly", which a
+# normal departure can have ("the visitors must leave by six").
+IMMEDIACY_WORDS = frozenset("immediately urgently asap instantly".split())
 # Verbs whose object (or passive subject) is a zone that people leave: "clear the platform",
 # "the ward must be emptied" is an evacuation of that zone.
 ZONE_EMPTYING_VERBS = frozenset("clear empty vacate evacuate".split())
@@ -320,6 +324,9 @@ VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down
 PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
 
 DETERMINERS = frozenset("the a an their our its his her my your this that these those some each every any".split())
+# Parts of a place, said with "of" before it ("the corner of the lobby"): the place itself.
+PLACE_PARTS = frozenset("corner end middle centre center side edge floor back front rear far part area half "
+                        "top bottom entrance".split())
 # Words that qualify a place without naming one ("the nearest exit", "the other corridor").
 PLACE_MODIFIERS = frozenset(
     """nearest closest nearby near far farthest furthest other same next first last main back front side rear left

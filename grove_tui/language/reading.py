@@ -344,6 +344,7 @@ class _Reader:
         self.notes: list[str] = []
         self.context_zones: list[str] = []  # zones of the places read so far, in reading order
         self.relative = self._relative_clause_tokens()
+        self.quiet = False  # True while reading a clause whose places nobody goes to (see read)
         self.no_mention = self._together_phrase_tokens()
 
     # -- helpers ---------------------------------------------------------------------------
@@ -869,7 +870,8 @@ class _Reader:
             kind = "exclusive" if exclusive else "exact"
             return _Mention(s, head, self._span(s, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
-            if (self._verb_after(head) or self._after_except(s)) and noun not in lx.PRONOUN_PEOPLE \
+            if (self._verb_after(head) or self._after_except(s) or self._coordinated_person(head)) \
+                    and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return _Mention(s, head, self._span(s, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
                                 exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
@@ -891,6 +893,15 @@ class _Reader:
         return p >= 1 and verb_lemma(self.low[p]) in lx.LEADING_VERBS and self._is_person_noun(p - 1) and \
             self._number_at(s) is not None and self._number_at(s)[0] > 1
 
+    def _coordinated_person(self, head: int) -> bool:
+        """Whether a person word is joined by "and" to another person phrase ("Mum and two kids
+        walk", "Mum and Dad chat"): the first of two subjects, though no verb follows it."""
+        if head + 2 >= self.n or self.low[head + 1] != "and":
+            return False
+        q = self._quantifier(head + 2)
+        start = q[2] if q is not None else self._skip(head + 2, lx.DETERMINERS)
+        return start < self.n and self._person_head(start, counted=q is not None) is not None
+
     def _after_except(self, s: int) -> bool:
         """Whether the phrase at s follows a word of exception ("except", "apart from", "other than")."""
         prev = self.low[s - 1] if s > 0 else ""
@@ -909,7 +920,7 @@ class _Reader:
             return False
         nxt = self.low[k + 1]
         # the small model tags "cooks" in "Mum cooks in the kitchen" as a plural noun, but as the root
-        return (self.w[k + 1].tag in ("VBZ", "VBP", "VBD") or self.w[k + 1].dep == "ROOT"
+        return (self.w[k + 1].tag in ("VBZ", "VBP", "VBD") or self.w[k + 1].dep == "ROOT" or self._third_person_verb(k + 1)
                 or (verb_lemma(nxt) in lx.INTENT_VERBS and nxt != verb_lemma(nxt)) or nxt in ("is", "are", "was", "were"))
 
     def _exclusive_context(self, s: int) -> bool:
@@ -1159,7 +1170,14 @@ class _Reader:
             if i not in claimed and i not in negated:
                 preamble_of.setdefault(self.w[i].sentence, []).append(i)
         mention_tokens = {i for m in mentions for i in range(m.first, m.last + 1)}
-        scenes = {s: self._clause(toks, mention_tokens, scene=True) for s, toks in preamble_of.items()}
+        scenes = {}
+        for s_, toks in preamble_of.items():
+            # a clause about animals or things ("two goldfish swim in a tank") names no place to refuse
+            first = next((i for i in toks if self.w[i].pos not in ("DET", "NUM") and self.low[i] not in
+                          lx.NP_MODIFIERS), None)
+            self.quiet = first is not None and self._lemma(first) in lx.NON_PEOPLE
+            scenes[s_] = self._clause(toks, mention_tokens, scene=True)
+            self.quiet = False
         # A sentence with no people ("Evacuate the pharmacy.") sets the scene of the sentences after it.
         with_people = {self.w[m.first].sentence for m in mentions}
         carried: _Clause | None = None
@@ -1588,6 +1606,8 @@ class _Reader:
                 if not candidates or c.intent in lx.STATIONARY_INTENTS:
                     c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", pair[0], i, True, True
                 break
+        if any(self._verb(i) in lx.DEPARTURE_VERBS for i in own) and any(low[i] in lx.IMMEDIACY_WORDS for i in own):
+            c.evacuate = True  # "everyone must leave immediately through the customs exit"
         # Follow someone: the person after a follow verb.
         if c.intent == "follow" and c.verb_index is not None:
             k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
@@ -1671,8 +1691,18 @@ class _Reader:
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
             "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
 
+    def _past_part(self, k: int) -> int:
+        """Past "the corner of", "the far end of" at k: a part of a place is the place."""
+        j = k
+        while j < self.n and j < k + 3 and (self.low[j] in lx.PLACE_MODIFIERS or lemma(self.low[j]) in lx.PLACE_PARTS):
+            j += 1
+        if j > k and j < self.n and self.low[j] == "of" and lemma(self.low[j - 1]) in lx.PLACE_PARTS:
+            return self._skip(j + 1, lx.DETERMINERS)
+        return k
+
     def _names_place(self, k: int) -> bool:
         """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
+        k = self._past_part(k)
         words: list[str] = []
         for j in range(k, min(k + 4, self.n)):
             if self._is_punct(j) or (words and self.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}):
@@ -1779,6 +1809,7 @@ class _Reader:
             j += 2  # "sits on one of the concourse benches": the benches
         while j < self.n and (low[j] in lx.DETERMINERS or low[j] in ("'s", "’s")):
             j += 1
+        j = self._past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < self.n and \
                 not self.index.knows(lemma(low[j])):
             return None  # "in line", "at once", "on time": no determiner and no place word
@@ -1848,7 +1879,7 @@ class _Reader:
         match = match or self._in_context(self.index.match(lemmas), lemmas)
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
-        if match is None and record_unknown and not self.index.is_nameless(lemmas):
+        if match is None and record_unknown and not self.quiet and not self.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
             return None

@@ -550,3 +550,34 @@ def test_a_counted_group_led_by_someone_follows_the_same_route(worlds, world, pr
 def test_family_plurals_said_of_one_family(worlds, world, prompt, low, high):
     group = one(read(worlds, world, prompt))
     assert (group.count.low, group.count.high) == (low, high)
+
+
+@pytest.mark.parametrize("world, prompt, counts", [
+    ("residential", "Dad and three guests walk from the hallway to the balcony.", [1, 3]),
+    ("office", "The boss and the receptionist talk at the front desk.", [1, 1]),
+])
+def test_a_bare_person_joined_by_and_is_a_subject_of_its_own(worlds, world, prompt, counts):
+    assert [g.count.value for g in read(worlds, world, prompt).groups] == counts
+
+
+@pytest.mark.parametrize("world, prompt, role, place", [
+    ("office", "Three developers chat in the far corner of the open office.", "location", "open_plan_office"),
+    ("hospital", "A porter sweeps the floor of the cafeteria.", "location", "cafeteria"),
+    ("station", "Two guards walk to the end of platform 2.", "destination", "platform_2"),
+])
+def test_a_part_of_a_place_is_the_place(worlds, world, prompt, role, place):
+    group = one(read(worlds, world, prompt))
+    assert getattr(group, role) == place
+
+
+def test_leaving_at_once_is_an_evacuation_but_leaving_by_a_door_is_not(worlds):
+    assert one(read(worlds, "office", "All the staff in the kitchen must exit immediately by the back door.")
+               ).intent == "evacuate"
+    assert one(read(worlds, "office", "Five visitors must leave by the main entrance.")).intent == "walk"
+
+
+def test_places_of_animals_are_not_refused_but_those_of_an_alarm_are(worlds):
+    reading = read(worlds, "hospital", "Three pigeons strut on a ledge while a porter naps in the staff room.")
+    assert one(reading).location == "staff_room"
+    reading = read(worlds, "hospital", "When the alarm sounds in the chapel, two nurses walk to the lobby.")
+    assert "chapel" in reading.unknown_places
