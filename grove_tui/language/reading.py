@@ -255,12 +255,15 @@ def _place_spelling(text: str, words: Sequence[Word], index: PlaceIndex) -> tupl
                 continue
             replacement = " ".join(joined)
         else:
-            found = sorted({v for v in index.name_words if abs(len(v) - len(low)) <= 1 and _one_edit(low, v)}
-                           | {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1
-                              and _one_edit(base, v)})
+            as_written = {v for v in index.name_words if abs(len(v) - len(low)) <= 1 and _one_edit(low, v)}
+            as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1
+                         and _one_edit(base, v)}
+            found = sorted(as_written | as_plural)
             if len(found) != 1:
                 continue  # nothing near, or two names equally near: no guess
             replacement = found[0]
+            if replacement not in as_written:
+                replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
             completes = (before, replacement) in index.name_pairs or (replacement, after) in index.name_pairs
             if (len(low) < 5 or known_word(low)) and not completes:
                 continue

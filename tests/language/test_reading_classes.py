@@ -581,3 +581,9 @@ def test_places_of_animals_are_not_refused_but_those_of_an_alarm_are(worlds):
     assert one(reading).location == "staff_room"
     reading = read(worlds, "hospital", "When the alarm sounds in the chapel, two nurses walk to the lobby.")
     assert "chapel" in reading.unknown_places
+
+
+def test_a_misspelt_plural_place_word_is_corrected_to_the_plural(worlds):
+    reading = read(worlds, "airport", "Three pilots sit on the A1 seets.")
+    assert one(reading).location == "gate_a1_seats"
+    assert reading.corrections == ("read 'seets' as 'seats'",)
