@@ -183,6 +183,8 @@ class PlaceIndex:
         if not content:
             return True
         head = content[-1]
+        if len(content) >= 2 and any(ch.isdigit() for ch in head) and content[-2] in NON_PLACES:
+            return True  # "flight BA123", "train 42": a service and its number, not a place
         return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words
                 or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
 

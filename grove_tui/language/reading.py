@@ -1227,13 +1227,14 @@ class _Reader:
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             scene = scenes.get(self.w[m.first].sentence)
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
-        gone = [k for k, m in enumerate(mentions) if any(x.exception_of == k for x in mentions)
-                and self._already_gone(spans[k])]
+        # "everyone has gone home (except ...)", "after everyone has left": people no longer there
+        gone = [k for k, m in enumerate(mentions) if m.whole_zone and m.relation is None
+                and self._already_gone(spans[k]) and len(mentions) > 1]
         if gone and not any(g.relation for g in groups):
             # "Everyone has gone home except two engineers": the everyone is no longer there
             for k in gone:
                 self.notes = [n for n in self.notes if not n.startswith(f"'{groups[k].who}': ")]
-                self.notes.append(f"'{groups[k].who}' have already left: only the exception is in the scenario")
+                self.notes.append(f"'{groups[k].who}' have already left: they are not in the scenario")
             groups = [g for k, g in enumerate(groups) if k not in gone]
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
@@ -1880,6 +1881,8 @@ class _Reader:
             door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(self.index.match(lemmas), lemmas)
+        if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
+            return None  # "off the train": a word that names no place, though an alias shares it
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
         if match is None and record_unknown and not self.quiet and not self.index.is_nameless(lemmas):

@@ -587,3 +587,20 @@ def test_a_misspelt_plural_place_word_is_corrected_to_the_plural(worlds):
     reading = read(worlds, "airport", "Three pilots sit on the A1 seets.")
     assert one(reading).location == "gate_a1_seats"
     assert reading.corrections == ("read 'seets' as 'seats'",)
+
+
+def test_a_service_and_its_number_is_no_place(worlds):
+    reading = read(worlds, "station", "Passengers off train 2C41 wait on platform 1.")
+    assert one(reading).location == "platform_1"
+    reading = read(worlds, "airport", "Travellers from flight EZY808 walk to baggage claim.")
+    assert one(reading).destination == "baggage_claim"
+
+
+def test_a_word_that_names_no_place_is_no_place_though_an_alias_shares_it(worlds):
+    group = one(read(worlds, "station", "Travellers step off the train and walk to the café."))
+    assert (group.start, group.destination) == (None, "cafe")
+
+
+def test_everyone_who_has_gone_is_no_group_in_a_time_clause_either(worlds):
+    reading = read(worlds, "office", "Two cleaners vacuum the boardroom after everybody has left.")
+    assert [g.who for g in reading.groups] == ["Two cleaners"]
