@@ -305,6 +305,8 @@ class _Mention:
     rest_of_parent: bool = False
     collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
     exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
+    fraction: float = 1.0  # "half the office": the share of the zone's people
+    zone_place: _Place | None = None  # the zone named inside the mention ("half the open office")
 
 
 @dataclass
@@ -799,6 +801,10 @@ class _Reader:
             head = self._person_head(s + 1, counted=False)
             if head is not None:  # "every visitor in the lounge": everyone there
                 return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True)
+        if low[s] == "half" and s + 1 < self.n:
+            half = self._half_of(s)
+            if half is not None:
+                return half
         # Whole zone: "everyone", "everybody", "all the people", "all patients"
         if low[s] in ("everyone", "everybody") or (low[s] == "all" and not (num and num[0] > 0 and num[1] == "all")):
             last = s
@@ -888,6 +894,22 @@ class _Reader:
                             Count("implied", self._choose(low_, high_, f"{s}:family"), low_, high_))
         return _Mention(s, head, self._span(s, head), label,
                         Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
+
+    def _half_of(self, s: int) -> _Mention | None:
+        """"half the open office", "half of the patients in the lobby": half of everyone in a zone
+        (the zone named right there, or by the clause)."""
+        k = self._skip(s + 1, {"of"})
+        k = self._skip(k, {"the", "all"})
+        if k == s + 1 or k >= self.n:
+            return None  # "half an hour", "half a dozen" are read elsewhere
+        head = self._person_head(k, counted=False)
+        if head is not None:
+            return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True, fraction=0.5)
+        place = self._place_phrase(k, "in", s, record_unknown=False)
+        if place is None or place.match is None or place.match.kind != "zone":
+            return None
+        return _Mention(s, place.end - 1, self._span(s, place.end - 1), "person", None, whole_zone=True,
+                        fraction=0.5, zone_place=place)
 
     def _led_by(self, s: int) -> bool:
         """Whether the phrase at s is the counted object of a verb of leading right after a person
@@ -1193,6 +1215,9 @@ class _Reader:
             if sentence not in with_people and own is not None:
                 carried = scenes[sentence]
         clauses = [self._clause(list(range(a, b)), mention_tokens) for a, b in spans]
+        for k, m in enumerate(mentions):
+            if m.zone_place is not None:  # "half the open office goes ...": where they are
+                clauses[k].places.insert(0, m.zone_place)
         evacuation = any(self.low[i] in lx.EVACUATION_CUES or verb_lemma(self.low[i]) in lx.EVACUATION_CUES
                          or self._hazard(i) for i in range(self.n))
         # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
@@ -2045,6 +2070,8 @@ class _Reader:
             area = self.index.zone_area(zone) if zone else sum(e.area for e in self.index.entries if e.kind == "zone")
             low_ = max(1, min(lx.WHOLE_ZONE_CAP, round(area * lx.WHOLE_ZONE_DENSITY[0])))
             high_ = max(low_, min(lx.WHOLE_ZONE_CAP, round(area * lx.WHOLE_ZONE_DENSITY[1])))
+            if m.fraction < 1.0:
+                low_, high_ = max(1, round(low_ * m.fraction)), max(1, round(high_ * m.fraction))
             count = Count("whole_zone", self._choose(low_, high_, f"{m.first}:whole"), low_, high_)
             if zone is None:
                 self.notes.append(f"'{m.who}': no place says where everyone is; the whole building is filled")

@@ -604,3 +604,20 @@ def test_a_word_that_names_no_place_is_no_place_though_an_alias_shares_it(worlds
 def test_everyone_who_has_gone_is_no_group_in_a_time_clause_either(worlds):
     reading = read(worlds, "office", "Two cleaners vacuum the boardroom after everybody has left.")
     assert [g.who for g in reading.groups] == ["Two cleaners"]
+
+
+@pytest.mark.parametrize("world, prompt, start, destination", [
+    ("hospital", "At noon, half the cafeteria walks back to ward A.", "cafeteria", "ward_a"),
+    ("station", "Half of the commuters on platform 2 head to the concourse.", "platform_2", "concourse"),
+])
+def test_half_of_a_zone_or_of_its_people_is_half_a_whole_zone_count(worlds, world, prompt, start, destination):
+    group = one(read(worlds, world, prompt))
+    assert (group.start, group.destination, group.count.kind) == (start, destination, "whole_zone")
+    full = one(read(worlds, world, prompt.replace("half the", "everyone in the").replace("Half of the commuters",
+                                                                                         "All the commuters")))
+    assert group.count.high <= (full.count.high + 1) // 2 + 1
+
+
+def test_half_an_hour_and_half_a_dozen_stay_what_they_were(worlds):
+    group = one(read(worlds, "station", "Half a dozen tourists wait half an hour on the concourse."))
+    assert (group.count.value, group.wait_seconds) == (6, 1800.0)
