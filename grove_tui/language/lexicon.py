@@ -9,7 +9,8 @@ Vague and implied counts have documented ranges; the reader picks a value inside
 the seed, so one prompt and one seed always give the same crowd:
 
     a few / few 2-4      a handful 3-5     several 3-6     some 3-6      a number of 4-8
-    many / lots of 8-15  dozens of 24-40   others / the rest 2-5 (when no total fixes them)
+    many / lots of 8-15  dozens of 24-40   scores of 40-80   hundreds of 100-300
+    others / the rest 2-5 (when no total fixes them)
     a bare plural ("visitors walk in") 3-6
     implied: couple 2, pair 2, family 3-4, group 3-5, party 3-5, team 3-6, crowd 15-30
 
@@ -42,7 +43,7 @@ APPROXIMATE_SPREAD = 0.2
 VAGUE_RANGES: dict[str, tuple[int, int]] = {
     "few": (2, 4), "handful": (3, 5), "several": (3, 6), "some": (3, 6), "number": (4, 8),
     "many": (8, 15), "lots": (8, 15), "lot": (8, 15), "plenty": (8, 15), "numerous": (8, 15),
-    "dozens": (24, 40), "various": (3, 6), "multiple": (3, 6),
+    "dozens": (24, 40), "various": (3, 6), "multiple": (3, 6), "scores": (40, 80), "hundreds": (100, 300),
 }
 OTHERS_RANGE = (2, 5)  # "others", "a few others" with nothing that fixes how many
 BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not none
@@ -383,6 +384,7 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "emergency er ae casualty",
         "sofa couch settee",
         "vending machine snack",
+        "tv television telly",
         "counter desk booth till",
         "garden yard patio terrace balcony",
         "study library",

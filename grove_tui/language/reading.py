@@ -1035,9 +1035,10 @@ class _Reader:
                     after += 1
                 return (0, f"vague:{nxt}", after, None)
             return None
-        if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous"):
+        if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous", "scores",
+                      "hundreds"):
             after = k + 1
-            if after < self.n and low[after] == "of" and low[k] in ("lots", "dozens"):
+            if after < self.n and low[after] == "of" and low[k] in ("lots", "dozens", "scores", "hundreds"):
                 after += 1
             return (0, f"vague:{low[k]}", after, None)
         return None
@@ -1906,6 +1907,11 @@ class _Reader:
             door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(self.index.match(lemmas), lemmas)
+        if at >= 1 and k < self.n and low[k] in ("a", "an") and self._is_person_noun(at - 1) and \
+                (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
+            # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person
+            # has or wears, not where they are ("a man on a bench" is still the bench)
+            return None
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
             return None  # "off the train": a word that names no place, though an alias shares it
         if match is not None and not self._identifiers_agree(lemmas, match):

@@ -621,3 +621,20 @@ def test_half_of_a_zone_or_of_its_people_is_half_a_whole_zone_count(worlds, worl
 def test_half_an_hour_and_half_a_dozen_stay_what_they_were(worlds):
     group = one(read(worlds, "station", "Half a dozen tourists wait half an hour on the concourse."))
     assert (group.count.value, group.wait_seconds) == (6, 1800.0)
+
+
+def test_what_a_person_is_in_or_on_is_no_place_to_refuse(worlds):
+    reading = read(worlds, "hospital", "A man in a wheelchair waits in the main waiting room.")
+    assert one(reading).location == "main_waiting_room"
+    assert "chapel" in read(worlds, "hospital", "Two nurses walk to a chapel.").unknown_places
+
+
+def test_hundreds_and_scores_are_vague_counts(worlds):
+    group = one(read(worlds, "station", "Hundreds of fans walk from platform 1 to the concourse."))
+    assert group.count.kind == "vague" and 100 <= group.count.value <= 300
+    assert 40 <= one(read(worlds, "station", "Scores of commuters wait on platform 2.")).count.value <= 80
+
+
+def test_british_words_for_the_tv(worlds):
+    group = one(read(worlds, "residential", "Two kids sit in front of the telly."))
+    assert group.location == "tv" and not read(worlds, "residential", "Two kids sit in front of the telly.").unknown_places
