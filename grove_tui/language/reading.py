@@ -553,6 +553,8 @@ class _Reader:
             return True
         if prev == "with" and self._conversation_partner(p, s):
             return False
+        if prev == "with" and self.low[s] in ("their", "his", "her", "its", "our", "my"):
+            return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
         if self._led_by(s):
@@ -1907,6 +1909,8 @@ class _Reader:
             door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(self.index.match(lemmas), lemmas)
+        if match is None and k < self.n and low[k] in ("her", "his", "their", "my", "our", "its"):
+            return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
         if at >= 1 and k < self.n and low[k] in ("a", "an") and self._is_person_noun(at - 1) and \
                 (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
             # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person

@@ -638,3 +638,10 @@ def test_hundreds_and_scores_are_vague_counts(worlds):
 def test_british_words_for_the_tv(worlds):
     group = one(read(worlds, "residential", "Two kids sit in front of the telly."))
     assert group.location == "tv" and not read(worlds, "residential", "Two kids sit in front of the telly.").unknown_places
+
+
+def test_the_persons_own_things_are_no_place_and_their_own_people_no_group(worlds):
+    reading = read(worlds, "hospital", "A surgeon on his break walks from ward B to the cafeteria.")
+    assert one(reading).destination == "cafeteria"
+    reading = read(worlds, "station", "Two tourists with their kids wait in the waiting room.")
+    assert one(reading).location == "waiting_room"
