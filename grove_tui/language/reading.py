@@ -231,14 +231,14 @@ def _place_spelling(text: str, words: Sequence[Word], index: PlaceIndex) -> tupl
     'kitchen'"). Conservative, so a real word is never turned into a place: a word is corrected only
     when the world has no place word like it, it is no word for people and no verb the lexicon knows,
     and exactly one word of the world's place names is one edit away (an insertion, deletion,
-    substitution or swap of neighbours). Short words (4 letters) and real English words ("sever") are
+    substitution or swap of neighbours). Short words (3-4 letters) and real English words ("sever") are
     corrected only when the correction completes a name with the word next to them ("sever room" ->
     "server room"), never alone ("left" is not "lift"). Two words of a name run together are split
     ("livingroom" -> "living room")."""
     edits: list[tuple[int, int, str, str]] = []
     for k, w in enumerate(words):
         low = _plain(w.lower)
-        if not low.isalpha() or len(low) < 4:
+        if not low.isalpha() or len(low) < 3:
             continue
         base = lemma(low)
         if base in index.vocabulary or low in index.vocabulary or base in lx.PERSON_NOUNS or \
@@ -266,7 +266,7 @@ def _place_spelling(text: str, words: Sequence[Word], index: PlaceIndex) -> tupl
                 replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
             completes = (before, replacement) in index.name_pairs or (replacement, after) in index.name_pairs
             if (len(low) < 5 or known_word(low)) and not completes:
-                continue
+                continue  # "ticket hal" is the ticket hall; "hal" alone is nothing
         if w.text[:1].isupper():
             replacement = replacement[:1].upper() + replacement[1:]
         edits.append((w.start, w.end, replacement, w.text))
@@ -1239,7 +1239,8 @@ class _Reader:
         for k, m in enumerate(mentions):
             if m.exception_of != k - 1 or k == 0:
                 continue
-            between = range(mentions[k - 1].last + 1, m.first)
+            in_places = {x for p in clauses[k - 1].places for x in range(p.index, p.end)}
+            between = [x for x in range(mentions[k - 1].last + 1, m.first) if x not in in_places]
             if all(self.low[x] in lx.EXCEPT_WORDS | {"apart", "from", "for", "other", "than", ","} for x in between) \
                     and not clauses[k - 1].has_action and clauses[k].has_action:
                 # "Everybody except the receptionist leaves": the verb is the everybody's; the

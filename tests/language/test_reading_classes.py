@@ -645,3 +645,16 @@ def test_the_persons_own_things_are_no_place_and_their_own_people_no_group(world
     assert one(reading).destination == "cafeteria"
     reading = read(worlds, "station", "Two tourists with their kids wait in the waiting room.")
     assert one(reading).location == "waiting_room"
+
+
+def test_a_three_letter_misspelling_is_corrected_only_inside_a_name(worlds):
+    reading = read(worlds, "station", "Two porters walk from the booking hal to platform 2.")
+    assert one(reading).start == "ticket_hall" and reading.corrections == ("read 'hal' as 'hall'",)
+    assert read(worlds, "office", "Two colleagues walk to the gym.").unknown_places == ("gym",)
+
+
+def test_the_rest_and_the_exception_with_the_rests_place_between_them(worlds):
+    reading = read(worlds, "airport", "All the travellers at gate B1 except two walk to the café.")
+    rest, exception = reading.groups
+    assert (rest.start, rest.destination, rest.intent) == ("gate_b1", "cafe", "walk")
+    assert (exception.count.value, exception.intent, exception.location) == (2, "wait", "gate_b1")
