@@ -264,7 +264,7 @@ def _place_spelling(text: str, words: Sequence[Word], index: PlaceIndex) -> tupl
             replacement = found[0]
             if replacement not in as_written:
                 replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
-            completes = (before, replacement) in index.name_pairs or (replacement, after) in index.name_pairs
+            completes = (before, found[0]) in index.name_pairs or (found[0], after) in index.name_pairs
             if (len(low) < 5 or known_word(low)) and not completes:
                 continue  # "ticket hal" is the ticket hall; "hal" alone is nothing
         if w.text[:1].isupper():
