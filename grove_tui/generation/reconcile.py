@@ -410,7 +410,8 @@ def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequ
         else:
             checks.append(GroundingCheck("robot reaction", asked, does, True, "the sentence asks for none"))
         out.append(GroupGrounding(r.who, g.label, tuple(checks), tuple(g.member_ids)))
-    return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs))
+    return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),
+                           tuple(reading.corrections))
 
 
 def _check_count(r: GroupReading, wanted: int, g: Any) -> GroundingCheck:

@@ -9,7 +9,8 @@ Vague and implied counts have documented ranges; the reader picks a value inside
 the seed, so one prompt and one seed always give the same crowd:
 
     a few / few 2-4      a handful 3-5     several 3-6     some 3-6      a number of 4-8
-    many / lots of 8-15  dozens of 24-40   others / the rest 2-5 (when no total fixes them)
+    many / lots of 8-15  dozens of 24-40   scores of 40-80   hundreds of 100-300
+    others / the rest 2-5 (when no total fixes them)
     a bare plural ("visitors walk in") 3-6
     implied: couple 2, pair 2, family 3-4, group 3-5, party 3-5, team 3-6, crowd 15-30
 
@@ -42,7 +43,7 @@ APPROXIMATE_SPREAD = 0.2
 VAGUE_RANGES: dict[str, tuple[int, int]] = {
     "few": (2, 4), "handful": (3, 5), "several": (3, 6), "some": (3, 6), "number": (4, 8),
     "many": (8, 15), "lots": (8, 15), "lot": (8, 15), "plenty": (8, 15), "numerous": (8, 15),
-    "dozens": (24, 40), "various": (3, 6), "multiple": (3, 6),
+    "dozens": (24, 40), "various": (3, 6), "multiple": (3, 6), "scores": (40, 80), "hundreds": (100, 300),
 }
 OTHERS_RANGE = (2, 5)  # "others", "a few others" with nothing that fixes how many
 BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not none
@@ -53,6 +54,8 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
     "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
+# Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
+FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4)}
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
 QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
@@ -118,6 +121,22 @@ PERSON_NOUNS = frozenset(
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
 )
+# People named by two words, the second of which means something else alone ("au pair" is one
+# person, not a pair; "station master" is no master of anything here).
+MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (
+    "au pair", "station master", "tour guide", "ground crew", "cabin crew", "lollipop lady",
+    "night porter", "head waiter", "shop assistant", "sales assistant", "flight crew", "crossing guard",
+    "best man", "maid of honour"))
+# Animals and things that can be counted and do something, but are nobody a crowd simulation places
+# ("two cats sleep on the sofa", "three trolleys stand by the door").
+NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull crow horse pony donkey cow sheep goat
+    pig duck goose chicken hen rabbit hamster mouse rat fish goldfish parrot squirrel fox deer bee wasp fly ant insect
+    animal pet clock lamp light bulb candle train bus car taxi van lorry truck plane aircraft jet trolley cart suitcase
+    bag case luggage box parcel machine computer laptop phone monitor heater radiator speaker alarm siren bell
+    engine motor drone balloon leaf flower plant tree""".split())
+# Endings of nouns for someone who does something ("busker", "florist", "violinist", "sommelier"):
+# the subject of a verb, such a noun is a person unless the world or a list says otherwise.
+AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")
 # Verbs only people do: the noun that is their subject is a person even when no list names it
 # ("a sommelier chats with ...", "two botanists stroll to ..."). Not "wait", "go", "run" or "move":
 # trains, queues and lifts do those too.
@@ -143,7 +162,7 @@ CLAUSE_STARTERS = frozenset("and while whilst whereas but as meanwhile then when
                             "except with".split())
 # Imperative verbs that introduce the people of a scenario ("Simulate ten patients ...").
 SCENE_VERBS = frozenset("simulate show create generate spawn add have make let put place model imagine picture "
-                        "depict want need include populate start".split())
+                        "depict want need include populate start send position".split())
 # Words that can stand between a count and its person noun ("ten tired old patients").
 NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting new local senior junior impatient "
                          "anxious worried excited angry calm happy curious nervous hungry sick injured "
@@ -155,14 +174,15 @@ NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting ne
 INTENT_VERBS: dict[str, str] = {}
 for _intent, _verbs in {
     "queue": "queue line queueing",
-    "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather",
+    "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
+            "snooze",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
-            "file troop toddle deliver drop bring fetch collect slip sneak nip pop",
+            "file troop toddle deliver drop bring fetch collect slip sneak nip pop board",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -178,8 +198,11 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
-    ("get", "out"): "walk", ("get", "off"): "walk",
+    ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
 }
+# Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
+# the subject walks the route, the object follows.
+LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show".split())
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
@@ -205,7 +228,7 @@ for _interaction, _verbs in {
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
-    "block": "block obstruct confront threaten stop corner impede hinder intercept harass",
+    "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)
@@ -241,6 +264,12 @@ for _verb in "walk go come run rush hurry move step head wander stroll dash race
         ROBOT_PHRASES.setdefault((_verb, *_tail), "approach")
     for _tail in (("away", "from"), ("away",), ("back", "from"), ("off",)):
         ROBOT_PHRASES.setdefault((_verb, *_tail), "avoid")
+# Gathering round the robot is coming to see it ("crowd around the robot").
+for _verb in "crowd gather cluster swarm huddle flock throng mob".split():
+    for _tail in (("around",), ("round",), ("about",)):
+        ROBOT_PHRASES.setdefault((_verb, *_tail), "approach")
+# Any verb of walking the lexicon knows, not only the few above ("toddle up to the robot").
+ROBOT_APPROACH_TAILS = (("up", "to"), ("over", "to"), ("towards",), ("toward",), ("closer", "to"), ("right", "up", "to"))
 # Words right after the robot that name an interaction ("stand in the robot's way").
 ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
                                                    ("’s", "way"): "block", ("’s", "path"): "block"}
@@ -261,7 +290,7 @@ FAST_WORDS = frozenset("quickly fast rush hurry hurried hurriedly run running da
                        "rapidly swiftly speedily hasty quick urgent urgently stride striding strode scurry scamper "
                        "bolt dart zoom gallop barrel".split())
 SLOW_WORDS = frozenset("slowly slow leisurely stroll amble shuffle saunter dawdle unhurried unhurriedly gently "
-                       "carefully calmly limp hobble".split())
+                       "carefully calmly limp hobble trudge plod tiptoe totter creep mosey".split())
 TOGETHER_WORDS = frozenset({"together", "jointly"})
 TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "family"), ("side", "by", "side"),
                     ("in", "pairs"), ("in", "groups"), ("with", "each", "other"), ("as", "a", "team"),
@@ -278,6 +307,9 @@ EVACUATION_PHRASES: tuple[tuple[str, ...], ...] = (("clear", "out"), ("empty", "
 URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"),
                                                     ("run", "out"), ("hurry", "out"), ("pour", "out"))
 URGENCY_WORDS = frozenset("now immediately urgently quickly asap must fast instantly".split())
+# Words that make plain leaving ("leave", "exit") an evacuation: not "must" or "quickly", which a
+# normal departure can have ("the visitors must leave by six").
+IMMEDIACY_WORDS = frozenset("immediately urgently asap instantly".split())
 # Verbs whose object (or passive subject) is a zone that people leave: "clear the platform",
 # "the ward must be emptied" is an evacuation of that zone.
 ZONE_EMPTYING_VERBS = frozenset("clear empty vacate evacuate".split())
@@ -293,6 +325,9 @@ VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down
 PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
 
 DETERMINERS = frozenset("the a an their our its his her my your this that these those some each every any".split())
+# Parts of a place, said with "of" before it ("the corner of the lobby"): the place itself.
+PLACE_PARTS = frozenset("corner end middle centre center side edge floor back front rear far part area half "
+                        "top bottom entrance".split())
 # Words that qualify a place without naming one ("the nearest exit", "the other corridor").
 PLACE_MODIFIERS = frozenset(
     """nearest closest nearby near far farthest furthest other same next first last main back front side rear left
@@ -349,6 +384,7 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "emergency er ae casualty",
         "sofa couch settee",
         "vending machine snack",
+        "tv television telly",
         "counter desk booth till",
         "garden yard patio terrace balcony",
         "study library",

@@ -71,6 +71,13 @@ class PlaceIndex:
         self._zone_words = {t for e in self.entries if e.kind == "zone" for t in e.tokens}
         self._token_weights: dict[str, dict[int, float]] = {}
         self._candidates: dict[tuple[str, ...], list[PlaceMatch]] = {}
+        # What a misspelling can be corrected to: the words of names, aliases and types (never tags,
+        # which say what a place is for, not what it is called), and the neighbouring word pairs of
+        # each name, so "sever room" can be told to complete "server room" and "livingroom" to be
+        # two words run together.
+        self.name_words = frozenset(t for e in self.entries for t in e.tokens if t.isalpha() and len(t) >= 4)
+        self.name_pairs = frozenset(pair for e in self.entries for p in e.phrases for pair in zip(p, p[1:]))
+        self.joined_pairs = {a + b: (a, b) for a, b in self.name_pairs if a.isalpha() and b.isalpha()}
 
     def knows(self, token: str) -> bool:
         """Whether some place of the world is called by this word or a synonym of it."""
@@ -176,6 +183,8 @@ class PlaceIndex:
         if not content:
             return True
         head = content[-1]
+        if len(content) >= 2 and any(ch.isdigit() for ch in head) and content[-2] in NON_PLACES:
+            return True  # "flight BA123", "train 42": a service and its number, not a place
         return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words
                 or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
 

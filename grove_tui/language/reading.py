@@ -45,6 +45,7 @@ How a prompt is read:
 from __future__ import annotations
 
 import random
+import re
 import unicodedata
 import zlib
 from collections.abc import Sequence
@@ -57,6 +58,10 @@ from grove_tui.language.parser import Word, known_word, parse
 from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
 from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
+# A word that picks one place of a series: a number, a letter and a number ("c4", "a1"), or a single
+# letter after the first word of a name ("ward b").
+_IDENTIFIER = re.compile(r"[a-z]?\d+[a-z]?|[a-z]")
+_MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
 ROBOT_INTERACTIONS = ("look", "approach", "follow", "avoid", "block")
@@ -121,15 +126,18 @@ class PromptReading:
     groups: tuple[GroupReading, ...]
     unknown_places: tuple[str, ...] = ()  # noun phrases in a PLACE role that the world does not have
     notes: tuple[str, ...] = ()  # what could not be honoured, said plainly
+    corrections: tuple[str, ...] = ()  # misspelt place words read as the world's ("read 'kitchn' as 'kitchen'")
 
     def to_dict(self) -> dict[str, Any]:
         return {"prompt": self.prompt, "groups": [g.to_dict() for g in self.groups],
-                "unknown_places": list(self.unknown_places), "notes": list(self.notes)}
+                "unknown_places": list(self.unknown_places), "notes": list(self.notes),
+                "corrections": list(self.corrections)}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> PromptReading:
         return cls(str(data.get("prompt", "")), tuple(GroupReading.from_dict(g) for g in data.get("groups", ())),
-                   tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())))
+                   tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())),
+                   tuple(data.get("corrections", ())))
 
     @property
     def total(self) -> int:
@@ -208,7 +216,79 @@ def read_prompt(prompt: str, world: Any, *, seed: int = 0) -> PromptReading:
     text = " ".join((prompt or "").split())
     if not text:
         return PromptReading(prompt or "", ())
-    return _Reader(text, parse(text), place_index(world), int(seed)).read()
+    index = place_index(world)
+    words = parse(text)
+    corrected, corrections = _place_spelling(text, words, index)
+    if not corrections:
+        return _Reader(text, words, index, int(seed)).read()
+    # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
+    reading = _Reader(corrected, parse(corrected), index, int(seed)).read()
+    return replace(reading, prompt=text, corrections=tuple(corrections))
+
+
+def _place_spelling(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple[str, list[str]]:
+    """The prompt with misspelt place words put right, and what was put right ("read 'kitchn' as
+    'kitchen'"). Conservative, so a real word is never turned into a place: a word is corrected only
+    when the world has no place word like it, it is no word for people and no verb the lexicon knows,
+    and exactly one word of the world's place names is one edit away (an insertion, deletion,
+    substitution or swap of neighbours). Short words (3-4 letters) and real English words ("sever") are
+    corrected only when the correction completes a name with the word next to them ("sever room" ->
+    "server room"), never alone ("left" is not "lift"). Two words of a name run together are split
+    ("livingroom" -> "living room")."""
+    edits: list[tuple[int, int, str, str]] = []
+    for k, w in enumerate(words):
+        low = _plain(w.lower)
+        if not low.isalpha() or len(low) < 3:
+            continue
+        base = lemma(low)
+        if base in index.vocabulary or low in index.vocabulary or base in lx.PERSON_NOUNS or \
+                low in lx.STOPWORDS or low in lx.NUMBER_WORDS or low in lx.ROBOT_WORDS or \
+                verb_lemma(low) in lx.INTENT_VERBS or verb_lemma(low) in lx.ROBOT_VERBS:
+            continue
+        person = _near_person_noun(low)
+        if person is not None and person not in index.vocabulary:
+            continue  # "docters": a person, read by the people rule ("securty" is both: a place here)
+        before, after = _content_neighbours(words, k)
+        joined = index.joined_pairs.get(low)
+        if joined is not None:
+            if known_word(low):
+                continue
+            replacement = " ".join(joined)
+        else:
+            as_written = {v for v in index.name_words if abs(len(v) - len(low)) <= 1 and _one_edit(low, v)}
+            as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1
+                         and _one_edit(base, v)}
+            found = sorted(as_written | as_plural)
+            if len(found) != 1:
+                continue  # nothing near, or two names equally near: no guess
+            replacement = found[0]
+            if replacement not in as_written:
+                replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
+            completes = (before, found[0]) in index.name_pairs or (found[0], after) in index.name_pairs
+            if (len(low) < 5 or known_word(low)) and not completes:
+                continue  # "ticket hal" is the ticket hall; "hal" alone is nothing
+        if w.text[:1].isupper():
+            replacement = replacement[:1].upper() + replacement[1:]
+        edits.append((w.start, w.end, replacement, w.text))
+    if not edits:
+        return text, []
+    out = text
+    for start, end, replacement, _ in reversed(edits):
+        out = out[:start] + replacement + out[end:]
+    return out, [f"read '{original}' as '{replacement}'" for _, _, replacement, original in edits]
+
+
+def _content_neighbours(words: Sequence[Word], k: int) -> tuple[str, str]:
+    """The lemmas of the nearest content words before and after word k ("chek-in hall": "hall")."""
+    def near(indices: range) -> str:
+        for j in indices:
+            low = _plain(words[j].lower)
+            if low.isalnum() and low not in lx.STOPWORDS:
+                return lemma(low)
+            if low.isalnum() and low not in ("in", "of", "-"):
+                return ""
+        return ""
+    return near(range(k - 1, max(-1, k - 3), -1)), near(range(k + 1, min(len(words), k + 3)))
 
 
 @dataclass
@@ -224,6 +304,9 @@ class _Mention:
     exclusive: bool = False
     rest_of_parent: bool = False
     collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
+    exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
+    fraction: float = 1.0  # "half the office": the share of the zone's people
+    zone_place: _Place | None = None  # the zone named inside the mention ("half the open office")
 
 
 @dataclass
@@ -265,6 +348,8 @@ class _Reader:
         self.unknown: list[str] = []
         self.notes: list[str] = []
         self.context_zones: list[str] = []  # zones of the places read so far, in reading order
+        self.relative = self._relative_clause_tokens()
+        self.quiet = False  # True while reading a clause whose places nobody goes to (see read)
         self.no_mention = self._together_phrase_tokens()
 
     # -- helpers ---------------------------------------------------------------------------
@@ -288,6 +373,52 @@ class _Reader:
         if v == self.low[i] and self.w[i].pos in ("VERB", "AUX"):
             return self.w[i].lemma
         return v
+
+    def _negated_clause_tokens(self) -> set[int]:
+        """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers
+        are waiting on platform 1, but ..."): its places are where nobody is, so they set no scene.
+        Not when the clause names an exception ("nobody is in the kitchen except the cleaner")."""
+        out: set[int] = set()
+        for i in range(self.n):
+            nobody = self.low[i] in lx.NOBODY_WORDS or (self.low[i] == "no" and i + 1 < self.n and (
+                self.low[i + 1] in ("one", "body") or self._is_person_noun(i + 1)))
+            if not nobody:
+                continue
+            end = i + 1
+            while end < self.n and self.w[end].sentence == self.w[i].sentence and self.low[end] not in (";", ":") \
+                    and not (self.low[end] in lx.CLAUSE_STARTERS | {"instead"} and end > i + 2):
+                end += 1
+            clause = range(i, end)
+            if any(self.low[k] in lx.EXCEPT_WORDS or self.low[k] in ("apart", "only", "than") for k in clause) or \
+                    (end < self.n and self.low[end] in lx.EXCEPT_WORDS - {"but"}):  # "..., but a cleaner"
+                continue
+            out.update(clause)
+        return out
+
+    def _relative_clause_tokens(self) -> set[int]:
+        """The words of relative clauses ("the visitors who are waiting in the lobby"): they say who
+        the people are, not what they do, unless nothing else in their clause does."""
+        children: dict[int, list[int]] = {}
+        for w in self.w:
+            if w.head != w.i:
+                children.setdefault(w.head, []).append(w.i)
+        out: set[int] = set()
+        for w in self.w:
+            if w.dep == "relcl":
+                clause: set[int] = set()
+                stack = [w.i]
+                while stack:
+                    k = stack.pop()
+                    if k not in clause:
+                        clause.add(k)
+                        stack.extend(children.get(k, ()))
+                # The small model may hang the main verb inside it ("who were sitting in the boardroom
+                # walk to ..."): a finite verb of the lexicon after the relative's own verb ends it.
+                end = next((k for k in sorted(clause) if k > w.i and self.w[k].tag not in ("VBG", "VBN")
+                            and verb_lemma(self.low[k]) in lx.INTENT_VERBS and self.low[k - 1] != "to"
+                            and self.w[k - 1].pos != "DET"), None)
+                out |= {k for k in clause if end is None or k < end}
+        return out
 
     def _together_phrase_tokens(self) -> set[int]:
         out: set[int] = set()
@@ -344,15 +475,52 @@ class _Reader:
 
     def _is_person_noun(self, i: int) -> bool:
         lem = self._lemma(i)
-        if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS:
+        if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
+            return False
+        if lem in lx.PERSON_NOUNS or self.low[i] in lx.PERSON_NOUNS or self._multiword_end(i):
             return True
-        if self._subject_of_a_human_verb(i):
+        if self._subject_of_a_human_verb(i) or self._agent_subject(i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
         # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).
-        return (len(self.low[i]) >= 6 and self.w[i].pos in ("NOUN", "PROPN") and not self.index.knows(lem)
+        # The parser may call such a word a verb after a number ("Five colleages stroll"): a count
+        # is followed by what it counts.
+        counted = i > 0 and self.w[i - 1].pos == "NUM"
+        if i > 0 and self.low[i - 1] in lx.ROBOT_WORDS:
+            return False  # "the robot glides": the robot's verb, however close to "guides"
+        return (len(self.low[i]) >= 6 and (self.w[i].pos in ("NOUN", "PROPN") or counted) and not self.index.knows(lem)
                 and not known_word(self.low[i]) and _near_person_noun(self.low[i]) is not None)
+
+    def _multiword_end(self, i: int) -> bool:
+        """Whether word i ends a person named by two words ("au pair", "station master")."""
+        if self.low[i] not in _MULTIWORD_LAST:
+            return False  # asked for every word the reader looks at: the common answer first
+        return any(i - len(p) + 1 >= 0 and tuple(self.low[i - len(p) + 1:i + 1]) == p for p in lx.MULTIWORD_PEOPLE)
+
+    def _multiword_start(self, i: int) -> int | None:
+        """The last word of a person named by two words starting at i, else None."""
+        for p in lx.MULTIWORD_PEOPLE:
+            if tuple(self.low[i:i + len(p)]) == p:
+                return i + len(p) - 1
+        return None
+
+    def _agent_subject(self, i: int) -> bool:
+        """A noun for someone who does something ("a busker strums", "the florist arranges"), in no
+        list: the parser's subject of a verb that things do not do, ending like an agent noun, and
+        no place, robot, thing or time word."""
+        word = self.w[i]
+        if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i:
+            return False
+        lem = self._lemma(i)
+        head = self.w[word.head]
+        verb = self._verb(word.head)
+        # Not after a verb things do as well ("the sprinklers go off", "the heater stays on").
+        return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
+                and verb not in lx.THING_VERBS and verb not in lx.INTENT_VERBS and verb not in ("be", "go", "start")
+                and not self.index.knows(lem)
+                and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
+                and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
 
     def _subject_of_a_human_verb(self, i: int) -> bool:
         """A noun no list names, the parser's subject of a verb only people do ("a sommelier
@@ -385,8 +553,14 @@ class _Reader:
             return True
         if prev == "with" and self._conversation_partner(p, s):
             return False
+        if prev == "with" and self.low[s] in ("their", "his", "her", "its", "our", "my"):
+            return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
+        if self._led_by(s):
+            return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
+        if prev == "instead" and self.low[s] != "of":
+            return True  # "nobody waits there; instead eight patients queue ..."
         if prev == "for" and p > 0 and self.low[p - 1] in lx.EXCEPT_WORDS:
             return True  # "empty except for two cleaners"
         if prev == "from" and p > 0 and self.low[p - 1] == "apart":
@@ -409,15 +583,19 @@ class _Reader:
     def _parser_subject(self, s: int) -> bool:
         """Whether the phrase at s is the subject the parser found ("At six the staff head out"):
         determiners, numbers and adjectives, then a person noun the parser calls the subject."""
-        if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM"):
-            return False  # inside a noun phrase that starts earlier ("the only people")
+        if s > 0 and self.w[s - 1].pos in ("DET", "ADJ", "NUM") and not (
+                self.w[s - 1].pos == "NUM" and self.w[s - 1].head < s - 1 and self.low[s] in lx.DETERMINERS):
+            return False  # inside a noun phrase that starts earlier ("the only people"); not "At 8:15 the ..."
         if s > 0 and self.w[s - 1].pos == "SCONJ" and self.low[s - 1] not in lx.CLAUSE_STARTERS:
             return False  # "... until someone collects them", "if anyone asks": nobody who is there
         for k in range(s, min(s + 5, self.n)):
             if self.low[k] in lx.NOBODY_WORDS:
                 return False
             if self._is_person_noun(k):
-                return self.w[k].dep in ("nsubj", "nsubjpass") and self.w[self.w[k].head].pos in ("VERB", "AUX")
+                head = self.w[k].head
+                # the small model may tag the verb a noun ("the commuters on platform 1 walk to ...")
+                return self.w[k].dep in ("nsubj", "nsubjpass") and (self.w[head].pos in ("VERB", "AUX") or (
+                    head > k and verb_lemma(self.low[head]) in lx.INTENT_VERBS and not self.index.knows(self._lemma(head))))
             if self.w[k].pos not in ("DET", "NUM", "ADJ") and self.low[k] not in lx.NP_MODIFIERS:
                 return False
         return False
@@ -446,6 +624,9 @@ class _Reader:
             if m is None:
                 i += 1
                 continue
+            if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
+                    self._after_except(m.first):
+                m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
             found.append(m)
             i = m.last + 1
         return found
@@ -462,6 +643,13 @@ class _Reader:
         a time or a thing of the world."""
         k = j
         while k < self.n and k < j + 4:
+            if self.low[k] in lx.ROBOT_WORDS:
+                return None  # "the robot glides": whatever follows, the robot is nobody's kind
+            end = self._multiword_start(k)
+            if end is not None:
+                return end  # "the au pair": one person
+            if self._is_person_noun(k) and self._does_only_what_things_do(k):
+                return None  # "two fans whir in the server room"
             if self._is_person_noun(k) and self.w[k].pos == "ADJ" and k + 1 < self.n and \
                     self.w[k + 1].pos in ("NOUN", "PROPN") and self.w[k + 1].dep != "ROOT" and \
                     (self._is_person_noun(k + 1) or self._lemma(k + 1) in lx.IMPLIED_RANGES):
@@ -486,6 +674,7 @@ class _Reader:
                 k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
                 continue
             if (counted and self.w[k].tag in ("NNS", "NNPS") and self._lemma(k) not in lx.NON_PLACES
+                    and self._lemma(k) not in lx.NON_PEOPLE
                     and self._lemma(k) not in lx.DURATION_UNITS and not self.index.knows(self._lemma(k))
                     and verb_lemma(self.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
                 return k
@@ -502,6 +691,16 @@ class _Reader:
         verb = self._verb(head)
         return verb not in lx.THING_VERBS
 
+    def _does_only_what_things_do(self, k: int) -> bool:
+        """Whether a person word is the parser's subject of a verb only things do, with no object
+        ("two fans whir", not "two nurses hang the posters")."""
+        word = self.w[k]
+        if word.dep not in ("nsubj", "nsubjpass") or word.head == k or self.w[word.head].pos != "VERB":
+            return False
+        has_object = any(w.head == word.head and w.dep in ("dobj", "obj") for w in self.w)
+        verb = self._verb(word.head)
+        return verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+
     def _modifies_next_noun(self, k: int) -> bool:
         """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
         that noun is no person, no collective and no verb the lexicon knows, and the parser does not
@@ -511,6 +710,10 @@ class _Reader:
         nxt, word = self.w[k + 1], self.low[k + 1]
         if word in ("'s", "’s", "'") or nxt.tag == "POS":
             return True  # "the manager's office"
+        if k > 0 and self.w[k - 1].pos == "NUM" and self._lemma(k) != self.low[k] and \
+                not self.index.knows(self._lemma(k + 1)) and k + 2 < self.n and \
+                self.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):
+            return False  # "two interns lug boxes from ...": after a count, the next word is the verb
         # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
         # is one, "Security alert:" is not.
         verb_like = (nxt.dep == "ROOT" and (word.endswith("s") or self._lemma(k) != self.low[k])) or \
@@ -600,6 +803,10 @@ class _Reader:
             head = self._person_head(s + 1, counted=False)
             if head is not None:  # "every visitor in the lounge": everyone there
                 return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True)
+        if low[s] == "half" and s + 1 < self.n:
+            half = self._half_of(s)
+            if half is not None:
+                return half
         # Whole zone: "everyone", "everybody", "all the people", "all patients"
         if low[s] in ("everyone", "everybody") or (low[s] == "all" and not (num and num[0] > 0 and num[1] == "all")):
             last = s
@@ -674,15 +881,60 @@ class _Reader:
             kind = "exclusive" if exclusive else "exact"
             return _Mention(s, head, self._span(s, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
-            if self._verb_after(head) and noun not in lx.PRONOUN_PEOPLE and noun not in lx.NOBODY_WORDS:
+            if (self._verb_after(head) or self._after_except(s) or self._coordinated_person(head)) \
+                    and noun not in lx.PRONOUN_PEOPLE \
+                    and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return _Mention(s, head, self._span(s, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
                                 exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
             return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
         low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
         parent = self._parent(found)
         relation = f"others_of:{parent}" if other and parent is not None else None
+        if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[s] in ("their", "his", "her", "our", "my")):
+            low_, high_ = lx.FAMILY_PLURALS[noun]  # "the parents": the two of one family
+            return _Mention(s, head, self._span(s, head), label,
+                            Count("implied", self._choose(low_, high_, f"{s}:family"), low_, high_))
         return _Mention(s, head, self._span(s, head), label,
                         Count("vague", self._choose(low_, high_, f"{s}:bare"), low_, high_), relation=relation)
+
+    def _half_of(self, s: int) -> _Mention | None:
+        """"half the open office", "half of the patients in the lobby": half of everyone in a zone
+        (the zone named right there, or by the clause)."""
+        k = self._skip(s + 1, {"of"})
+        k = self._skip(k, {"the", "all"})
+        if k == s + 1 or k >= self.n:
+            return None  # "half an hour", "half a dozen" are read elsewhere
+        head = self._person_head(k, counted=False)
+        if head is not None:
+            return _Mention(s, head, self._span(s, head), self._label(head), None, whole_zone=True, fraction=0.5)
+        place = self._place_phrase(k, "in", s, record_unknown=False)
+        if place is None or place.match is None or place.match.kind != "zone":
+            return None
+        return _Mention(s, place.end - 1, self._span(s, place.end - 1), "person", None, whole_zone=True,
+                        fraction=0.5, zone_place=place)
+
+    def _led_by(self, s: int) -> bool:
+        """Whether the phrase at s is the counted object of a verb of leading right after a person
+        ("a tour guide leads twelve tourists", "two nurses escort five patients")."""
+        p = s - 1
+        return p >= 1 and verb_lemma(self.low[p]) in lx.LEADING_VERBS and self._is_person_noun(p - 1) and \
+            self._number_at(s) is not None and self._number_at(s)[0] > 1
+
+    def _coordinated_person(self, head: int) -> bool:
+        """Whether a person word is joined by "and" to another person phrase ("Mum and two kids
+        walk", "Mum and Dad chat"): the first of two subjects, though no verb follows it."""
+        if head + 2 >= self.n or self.low[head + 1] != "and":
+            return False
+        q = self._quantifier(head + 2)
+        start = q[2] if q is not None else self._skip(head + 2, lx.DETERMINERS)
+        return start < self.n and self._person_head(start, counted=q is not None) is not None
+
+    def _after_except(self, s: int) -> bool:
+        """Whether the phrase at s follows a word of exception ("except", "apart from", "other than")."""
+        prev = self.low[s - 1] if s > 0 else ""
+        before = self.low[s - 2] if s > 1 else ""
+        return prev in lx.EXCEPT_WORDS - {"but"} or (prev == "from" and before == "apart") or \
+            (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
 
     def _only_people_before(self, p: int) -> bool:
         sentence = self.w[p].sentence
@@ -695,7 +947,7 @@ class _Reader:
             return False
         nxt = self.low[k + 1]
         # the small model tags "cooks" in "Mum cooks in the kitchen" as a plural noun, but as the root
-        return (self.w[k + 1].tag in ("VBZ", "VBP", "VBD") or self.w[k + 1].dep == "ROOT"
+        return (self.w[k + 1].tag in ("VBZ", "VBP", "VBD") or self.w[k + 1].dep == "ROOT" or self._third_person_verb(k + 1)
                 or (verb_lemma(nxt) in lx.INTENT_VERBS and nxt != verb_lemma(nxt)) or nxt in ("is", "are", "was", "were"))
 
     def _exclusive_context(self, s: int) -> bool:
@@ -727,6 +979,8 @@ class _Reader:
         noun = self._lemma(head)
         if noun not in lx.PERSON_NOUNS and len(self.low[head]) >= 6 and not known_word(self.low[head]):
             noun = _near_person_noun(self.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays
+        if self._multiword_end(head):
+            return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if tuple(self.low[head - len(p) + 1:head + 1]) == p)
         if noun in ("member", "person") and head > 0 and self._is_person_noun(head - 1):
             noun = self._lemma(head - 1)  # "staff members", "family members"
         if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
@@ -773,6 +1027,8 @@ class _Reader:
             return (value, "approximate" if approx else "exact", after, None)
         if low[k] in ("a", "an") and k + 1 < self.n:
             nxt = low[k + 1]
+            if nxt == "couple" and tuple(low[k + 2:k + 4]) == ("of", "dozen"):
+                return (24, "approximate", k + 4, None)  # "a couple of dozen tourists": about 24
             if nxt in ("couple", "pair") and k + 2 < self.n and low[k + 2] == "of":
                 return (2, "exact", k + 3, None)
             if nxt in ("few", "handful", "number", "lot") :
@@ -781,9 +1037,10 @@ class _Reader:
                     after += 1
                 return (0, f"vague:{nxt}", after, None)
             return None
-        if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous"):
+        if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous", "scores",
+                      "hundreds"):
             after = k + 1
-            if after < self.n and low[after] == "of" and low[k] in ("lots", "dozens"):
+            if after < self.n and low[after] == "of" and low[k] in ("lots", "dozens", "scores", "hundreds"):
                 after += 1
             return (0, f"vague:{low[k]}", after, None)
         return None
@@ -805,12 +1062,13 @@ class _Reader:
     def _collective(self, head: int, number: tuple | None = None, first: int | None = None) -> _Mention | None:
         """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
         noun = self._lemma(head)
-        if noun not in lx.IMPLIED_RANGES:
-            return None
+        if noun not in lx.IMPLIED_RANGES or self._multiword_end(head):
+            return None  # "the au pair" is no pair
         low = self.low
         s = first if first is not None else head
-        while s > 0 and first is None and (low[s - 1] in ("a", "an", "the") or low[s - 1] in lx.NP_MODIFIERS):
-            s -= 1
+        while s > 0 and first is None and (low[s - 1] in ("a", "an", "the") or low[s - 1] in lx.NP_MODIFIERS
+                                           or (self.w[s - 1].pos == "ADJ" and s > 1 and self.w[s - 2].pos == "DET")):
+            s -= 1  # "a long queue of ...": the adjective is the collective's
         parties = 1
         exact_parties = True
         if number is not None:
@@ -826,6 +1084,20 @@ class _Reader:
         label = noun
         if head + 2 < self.n and low[head + 1] == "of":
             inner = self._number_at(head + 2)
+            loose = self._quantifier(head + 2)
+            if loose is not None and loose[1] in ("approximate", "range") and parties == 1 and exact_parties:
+                # "a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside
+                # the collective, counted loosely
+                member = self._person_head(loose[2], counted=True)
+                last = member if member is not None and member <= loose[2] + 2 else loose[2] - 1
+                if member is not None and noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES:
+                    label = self._label(member)
+                elif member is not None and noun in ("group", "crowd", "bunch", "party", "team", "queue", "line"):
+                    label = self._label(member)
+                mention = _Mention(s, last, self._span(s, last), label,
+                                   self._count_from_quantifier(loose, f"{head}:inside"), together=together)
+                mention.collective = noun
+                return mention
             if inner is not None:
                 size = (inner[0], inner[0])
                 last = inner[1] - 1
@@ -921,11 +1193,19 @@ class _Reader:
             spans.append((starts[k], sentence_end))
         claimed = {i for a, b in spans for i in range(a, b)}
         preamble_of: dict[int, list[int]] = {}
+        negated = self._negated_clause_tokens()
         for i in range(self.n):
-            if i not in claimed:
+            if i not in claimed and i not in negated:
                 preamble_of.setdefault(self.w[i].sentence, []).append(i)
         mention_tokens = {i for m in mentions for i in range(m.first, m.last + 1)}
-        scenes = {s: self._clause(toks, mention_tokens, scene=True) for s, toks in preamble_of.items()}
+        scenes = {}
+        for s_, toks in preamble_of.items():
+            # a clause about animals or things ("two goldfish swim in a tank") names no place to refuse
+            first = next((i for i in toks if self.w[i].pos not in ("DET", "NUM") and self.low[i] not in
+                          lx.NP_MODIFIERS), None)
+            self.quiet = first is not None and self._lemma(first) in lx.NON_PEOPLE
+            scenes[s_] = self._clause(toks, mention_tokens, scene=True)
+            self.quiet = False
         # A sentence with no people ("Evacuate the pharmacy.") sets the scene of the sentences after it.
         with_people = {self.w[m.first].sentence for m in mentions}
         carried: _Clause | None = None
@@ -938,6 +1218,9 @@ class _Reader:
             if sentence not in with_people and own is not None:
                 carried = scenes[sentence]
         clauses = [self._clause(list(range(a, b)), mention_tokens) for a, b in spans]
+        for k, m in enumerate(mentions):
+            if m.zone_place is not None:  # "half the open office goes ...": where they are
+                clauses[k].places.insert(0, m.zone_place)
         evacuation = any(self.low[i] in lx.EVACUATION_CUES or verb_lemma(self.low[i]) in lx.EVACUATION_CUES
                          or self._hazard(i) for i in range(self.n))
         # A group with no action of its own shares the next group's ("ten patients and two nurses walk out").
@@ -953,11 +1236,43 @@ class _Reader:
                 own = clauses[k]
                 shared = replace(clauses[k + 1], places=own.places + clauses[k + 1].places)
                 clauses[k] = shared
+        for k, m in enumerate(mentions):
+            if m.exception_of != k - 1 or k == 0:
+                continue
+            in_places = {x for p in clauses[k - 1].places for x in range(p.index, p.end)}
+            between = [x for x in range(mentions[k - 1].last + 1, m.first) if x not in in_places]
+            if all(self.low[x] in lx.EXCEPT_WORDS | {"apart", "from", "for", "other", "than", ","} for x in between) \
+                    and not clauses[k - 1].has_action and clauses[k].has_action:
+                # "Everybody except the receptionist leaves": the verb is the everybody's; the
+                # exception does not do it, so stays where it is
+                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
+                clauses[k] = _Clause()
+        for k, m in enumerate(mentions):
+            if k > 0 and self._led_by(m.first) and mentions[k - 1].last == m.first - 2:
+                # the leader takes the route the led group is said to take
+                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
+                                         intent=clauses[k].intent or "walk", has_action=True)
         groups: list[GroupReading] = []
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             scene = scenes.get(self.w[m.first].sentence)
             groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
+        # "everyone has gone home (except ...)", "after everyone has left": people no longer there
+        gone = [k for k, m in enumerate(mentions) if m.whole_zone and m.relation is None
+                and self._already_gone(spans[k]) and len(mentions) > 1]
+        if gone and not any(g.relation for g in groups):
+            # "Everyone has gone home except two engineers": the everyone is no longer there
+            for k in gone:
+                self.notes = [n for n in self.notes if not n.startswith(f"'{groups[k].who}': ")]
+                self.notes.append(f"'{groups[k].who}' have already left: they are not in the scenario")
+            groups = [g for k, g in enumerate(groups) if k not in gone]
         return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+
+    def _already_gone(self, span: tuple[int, int]) -> bool:
+        """Whether a clause says its people have left already: a verb of leaving in the perfect
+        ("has gone home", "have left")."""
+        return any(verb_lemma(self.low[i]) in lx.DEPARTURE_VERBS | {"go"} and self.w[i].tag == "VBN"
+                   and self.low[i - 1] in ("has", "have", "had", "'s", "'ve", "already")
+                   for i in range(max(span[0], 1), span[1]))
 
     def _evacuated_zone_without_people(self) -> PromptReading | None:
         """"The entire concourse is evacuated through the side entrance", "Evacuate the pharmacy.":
@@ -975,6 +1290,10 @@ class _Reader:
                 place = self._place_phrase(first, "obj:start", first, record_unknown=False)
                 if place is not None:
                     clause.places.append(place)
+        for place in self._emptied_zones(range(self.n)):
+            clause.places.insert(0, place)
+            clause.evacuate = True
+            clause.intent = clause.intent or "evacuate"
         emptied = [(p, p.match) for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
         if not emptied or not (clause.evacuate or clause.intent == "evacuate"):
             return None
@@ -1006,6 +1325,46 @@ class _Reader:
                                                or self.w[j].tag == "MD" or verb_lemma(self.low[j]) in ("have", "need")):
             j += 1
         return j > k and j < self.n and self.w[j].tag == "VBN" and verb_lemma(self.low[j]) in lx.ZONE_EMPTYING_VERBS
+
+    def _emptied_zones(self, tokens: Sequence[int]) -> list[_Place]:
+        """Zones that are the subject of an emptying verb used without an object: "the cafeteria
+        clears out", "the whole boardroom empties into the corridor", "the kitchen empties in
+        seconds". Everybody in them leaves (their start), as in an evacuation. "clear the tables"
+        has an object and "the kitchen is clear" no verb: neither is one."""
+        out: list[_Place] = []
+        for i in tokens:
+            if i < 1 or verb_lemma(self.low[i]) not in lx.ZONE_EMPTYING_VERBS or self.low[i] == verb_lemma(self.low[i]):
+                continue  # the base form is an imperative or infinitive ("clear the ward"), read elsewhere
+            if self.w[i].tag == "VBN":
+                # the passive, wherever it stands: "..., so the ticket hall has to be emptied"
+                j = i - 1
+                while j > 0 and (self.low[j] in ("be", "been", "being", "is", "are", "was", "were", "to", "has",
+                                                 "have", "had", "needs", "need", "got", "gets", "get")
+                                 or self.w[j].tag == "MD"):
+                    j -= 1
+                if j == i - 1:
+                    continue  # no auxiliary: "the emptied room"
+                end = j + 1
+            elif self.w[i].pos == "VERB" or self.w[i].tag in ("VBZ", "VBD", "VBP", "NNS"):
+                nxt = self.low[i + 1] if i + 1 < self.n else ""
+                if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt)) and nxt != "out"):
+                    continue  # an object follows: "empties the bins"
+                end = i
+            else:
+                continue
+            first = end
+            while first > 0 and not self._is_punct(first - 1) and (
+                    self.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM")
+                    or self.low[first - 1] in lx.PLACE_MODIFIERS) and self.low[first - 1] not in lx.CLAUSE_STARTERS:
+                first -= 1
+            words = tuple(self.low[first:end])
+            lemmas = [t for t in phrase_lemmas(list(words)) if t not in lx.PLACE_MODIFIERS]
+            match = self.index.match(lemmas) if lemmas else None
+            if match is None or match.kind != "zone" or self._is_person_phrase(lemmas):
+                continue
+            self.context_zones.append(match.zone)
+            out.append(_Place("obj:start", first, words, match, end))
+        return out
 
     def _hyphen_inside(self, j: int) -> bool:
         """A hyphen joining two words ("self-service", "forty-five"), not a dash between clauses."""
@@ -1058,6 +1417,13 @@ class _Reader:
                     if taken == phrase:
                         c.robot = interaction
                         break
+                # any verb of walking, known or only tagged a verb by the parser ("waddle over to it")
+                if c.robot is None and (lx.INTENT_VERBS.get(self._verb(i)) == "walk" or (
+                        self.w[i].pos == "VERB" and self._verb(i) not in lx.INTENT_VERBS)):
+                    for tail in lx.ROBOT_APPROACH_TAILS:
+                        if self._phrase_words(i + 1, len(tail), ownset) == tail:
+                            c.robot = "approach"  # "the twins toddle up to the robot"
+                            break
                 v = self._verb(i)
                 if c.robot is None and v in lx.ROBOT_VERBS and not self._after_determiner(i):
                     c.robot = lx.ROBOT_VERBS[v]
@@ -1115,6 +1481,14 @@ class _Reader:
                     used.update(range(i, end))
                     i_pos = self._advance(own, end)
                     continue
+            if i > 0 and lx.INTENT_VERBS.get(self._verb(i - 1)) in lx.STATIONARY_INTENTS and \
+                    c.wait_seconds is None:
+                dur = self._duration(i)  # "waits 15 minutes outside the room": a duration without "for"
+                if dur is not None:
+                    c.wait_seconds, end = dur
+                    used.update(range(i, end))
+                    i_pos = self._advance(own, end)
+                    continue
             negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(low[i:i + len(p)]) == p), None)
             if negated is not None:
                 # "go to the imaging instead of the waiting room": a place nobody goes to
@@ -1132,6 +1506,9 @@ class _Reader:
                     used.update(range(i, place.end))
                     i_pos = self._advance(own, place.end)
                     continue
+            if w == "to" and nxt == "be" and i + 2 < self.n and verb_lemma(low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
+                i_pos += 1
+                continue  # "the hall has to be emptied": the zone's evacuation, read by _emptied_zones
             if w == "to" and (nxt == "" or self._verb_follows(i + 1)) and not self._names_place(i + 1):
                 end = self._phrase_end(i + 2, allow_objects=True)
                 c.purpose = c.purpose or self.prompt[self.w[i].start:self.w[max(end - 1, i + 1)].end]
@@ -1160,7 +1537,7 @@ class _Reader:
                 continue
             v = self._verb(i)
             object_verbs = lx.START_OBJECT_VERBS | lx.DESTINATION_OBJECT_VERBS | lx.LOCATION_OBJECT_VERBS
-            if v in lx.NEGATING_VERBS and nxt in lx.DETERMINERS:
+            if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self._names_place(i + 1)):
                 # "skip the critical care and go to ...": a place they do not go to
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
                 end = place.end if place is not None else i + 1
@@ -1178,11 +1555,13 @@ class _Reader:
                     i_pos = self._advance(own, place.end)
                     continue
             if ((self.w[i].pos == "VERB" or self._third_person_verb(i)) and v not in lx.INTENT_VERBS
-                    and v not in lx.ROBOT_VERBS and nxt in lx.DETERMINERS
+                    and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self._names_place(i + 1))
                     and not self._after_determiner(i) and self._names_place(self._skip(i + 1, lx.DETERMINERS))):
+                # "a cleaner sweeps platform 2", "mops the corridor": the object of a verb the lexicon lacks
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
                 if place is not None:
                     c.places.append(place)
+                    c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
                     used.update(range(i, place.end))
             elif not self._after_determiner(i) and v in object_verbs:
                 if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt))):
@@ -1195,6 +1574,11 @@ class _Reader:
         if scene and any(low[i] in lx.ROBOT_WORDS for i in own):
             c.places = [p for p in c.places if p.index < min(i for i in own if low[i] in lx.ROBOT_WORDS)]
             # "When the robot enters the lobby, ...": the robot's places, not the people's
+        if scene:
+            # "Gate B1 clears out when the alarm sounds; its passengers ...": where they all leave
+            for place in self._emptied_zones(own):
+                c.places.insert(0, place)
+                c.evacuate = True
         if scene and own:
             # "The cafeteria is empty except for ...": a place as the subject of "to be" is where
             # the sentence's people are.
@@ -1237,6 +1621,8 @@ class _Reader:
                     candidates.append((i, lx.INTENT_VERBS[v], v))
         if any(self.w[i].pos == "VERB" and self.w[i].lemma not in ("be", "have") and i not in used for i in own):
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
+        if any(i not in self.relative for i, _, _ in candidates):
+            candidates = [c_ for c_ in candidates if c_[0] not in self.relative]
         if len(candidates) > 1 and own and candidates[0][0] == own[0] and self.w[own[0]].tag == "VBG":
             candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
         if candidates:
@@ -1253,6 +1639,8 @@ class _Reader:
                 if not candidates or c.intent in lx.STATIONARY_INTENTS:
                     c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", pair[0], i, True, True
                 break
+        if any(self._verb(i) in lx.DEPARTURE_VERBS for i in own) and any(low[i] in lx.IMMEDIACY_WORDS for i in own):
+            c.evacuate = True  # "everyone must leave immediately through the customs exit"
         # Follow someone: the person after a follow verb.
         if c.intent == "follow" and c.verb_index is not None:
             k0 = self._skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
@@ -1331,11 +1719,23 @@ class _Reader:
             return False
         if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
             return False
+        if k + 1 < self.n and _IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)):
+            return False  # "to gate C4": a place word with its number, though the parser calls "gate" a verb
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
             "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
 
+    def _past_part(self, k: int) -> int:
+        """Past "the corner of", "the far end of" at k: a part of a place is the place."""
+        j = k
+        while j < self.n and j < k + 3 and (self.low[j] in lx.PLACE_MODIFIERS or lemma(self.low[j]) in lx.PLACE_PARTS):
+            j += 1
+        if j > k and j < self.n and self.low[j] == "of" and lemma(self.low[j - 1]) in lx.PLACE_PARTS:
+            return self._skip(j + 1, lx.DETERMINERS)
+        return k
+
     def _names_place(self, k: int) -> bool:
         """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
+        k = self._past_part(k)
         words: list[str] = []
         for j in range(k, min(k + 4, self.n)):
             if self._is_punct(j) or (words and self.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}):
@@ -1438,8 +1838,11 @@ class _Reader:
         """The noun phrase after a place preposition, matched against the world."""
         low = self.low
         j = k
+        if tuple(low[j:j + 2]) in (("one", "of"), ("each", "of"), ("any", "of"), ("some", "of")):
+            j += 2  # "sits on one of the concourse benches": the benches
         while j < self.n and (low[j] in lx.DETERMINERS or low[j] in ("'s", "’s")):
             j += 1
+        j = self._past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < self.n and \
                 not self.index.knows(lemma(low[j])):
             return None  # "in line", "at once", "on time": no determiner and no place word
@@ -1465,6 +1868,14 @@ class _Reader:
                 break
             after_hyphen, joined = joined, False
             if phrase and self.w[j].pos in ("VERB", "AUX") and not self.index.knows(lemma(w)):
+                break
+            if phrase and verb_lemma(w) in lx.INTENT_VERBS and self.index.knows(lemma(w)) and \
+                    not w.endswith("ing") and self._whole_name(phrase) and \
+                    not any(self._whole_name([*phrase, *low[j:end]]) for end in range(j + 1, min(j + 3, self.n) + 1)) \
+                    and (j + 1 >= self.n or not self._is_person_noun(j + 1)):
+                # "at gate B2 boards the plane", "the check-in hall queue at": a whole name, then a verb
+                # that only happens to be a place word too ("departures board", the tag "queue"); but
+                # "the pharmacy waiting chairs" and "the boardroom meeting" are names and nouns
                 break
             if phrase and verb_lemma(w) in lx.INTENT_VERBS and not self.index.knows(lemma(w)) and (
                     self.w[j].tag.startswith("VB") or self.index.match([lemma(x) for x in phrase]) is not None
@@ -1492,17 +1903,47 @@ class _Reader:
             return None
         if self._is_person_phrase(lemmas):
             return None
+        if lemmas and lemmas[-1] in lx.DURATION_UNITS:
+            return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
         match = None
         if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
             door = self.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(self.index.match(lemmas), lemmas)
-        if match is None and record_unknown and not self.index.is_nameless(lemmas):
+        if match is None and k < self.n and low[k] in ("her", "his", "their", "my", "our", "its"):
+            return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
+        if at >= 1 and k < self.n and low[k] in ("a", "an") and self._is_person_noun(at - 1) and \
+                (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
+            # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person
+            # has or wears, not where they are ("a man on a bench" is still the bench)
+            return None
+        if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
+            return None  # "off the train": a word that names no place, though an alias shares it
+        if match is not None and not self._identifiers_agree(lemmas, match):
+            match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
+        if match is None and record_unknown and not self.quiet and not self.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
             return None
         self.context_zones.append(match.zone)
         return _Place(prep, at, tuple(phrase), match, j)
+
+    def _whole_name(self, phrase: Sequence[str]) -> bool:
+        """Whether the words are exactly a name or alias of a place (determiners aside)."""
+        lemmas = tuple(t for t in phrase_lemmas(list(phrase)) if t not in lx.PLACE_MODIFIERS)
+        return bool(lemmas) and any(lemmas == p for e in self.index.entries for p in e.phrases)
+
+    def _identifiers_agree(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
+        """Whether every identifier of a place phrase ("c4", "2", the "b" of "ward b") belongs to the
+        place matched or to one of the places it ties with: a number or letter names one place of a
+        series, so a place whose series lacks it is not that place."""
+        ids = [t for k, t in enumerate(lemmas) if _IDENTIFIER.fullmatch(t) and (k > 0 or not t.isalpha())]
+        if not ids:
+            return True
+        entry = self.index.entry(match.name)
+        return entry is None or all(t in entry.tokens for t in ids) or any(
+            all(t in (self.index.entry(m.name) or entry).tokens for t in ids)
+            for m in self.index.candidates(lemmas)[:8])
 
     def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
         """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
@@ -1554,7 +1995,10 @@ class _Reader:
         if intent is None:
             # No verb of action ("a cleaner is in the cafeteria"): people who are somewhere stay
             # there; only a place they are sent to ("... to the exit") makes them walk.
-            sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places)
+            # A way taken ("push a bed along the corridor") is walking too.
+            # So is being the doer of a passive whose subject is a destination ("the desk is approached by").
+            sends = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS or p.prep == "obj:dest"
+                        for p in c.places) or (scene is not None and any(p.prep == "obj:dest" for p in scene.places))
             intent = "walk" if sends or c.robot else "wait"
         if m.first >= 2 and self.low[m.first - 1] == "by" and \
                 self.low[m.first - 2] in ("followed", "trailed", "accompanied", "joined") and earlier:
@@ -1568,9 +2012,12 @@ class _Reader:
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together,
                                text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end])
+        if self._led_by(m.first) and earlier and c.robot is None:
+            intent = "follow"  # "leads twelve tourists": they follow the one who leads
+            c = replace(c, follows=earlier[-1].who)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
-        if m.collective in lx.QUEUE_COLLECTIVES and c.intent is None and intent in ("wait", "walk"):
-            intent = "queue"  # "a queue of eight people forms at the ticket office"
+        if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
+            intent = "queue"  # "a queue of eight people forms at the ticket office", "a line of five waiting"
         if robot is not None:
             intent = "robot"  # also "Startled by the robot, a woman ...", "The robot is followed by ..."
         if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):
@@ -1603,6 +2050,9 @@ class _Reader:
                 via.append(name)
         if intent == "evacuate" and start is None and location is not None:
             start, location = location, None
+        if intent == "queue" and location is None and start is not None and destination is None:
+            # "a queue snakes back from the check-in counter": a queue stands where its head is
+            start, location = None, start
         if stationary and location is None and destination is not None and intent != "robot":
             # "walk to the cafeteria and wait there": they go there, then stay; without a verb of
             # motion ("queue to the desk") the place is only where they are.
@@ -1619,6 +2069,10 @@ class _Reader:
                 via = list(parent.via)
             elif start is None and not stationary:
                 start = parent.start or parent.location  # "a few of them leave": from where the group is
+        if m.exception_of is not None and m.exception_of < len(earlier) and \
+                start is None and destination is None and location is None:
+            parent = earlier[m.exception_of]
+            location = parent.start or parent.location  # "... except three patients, who stay seated"
         count = m.count
         if count is not None and count.kind in ("implied", "vague") and m.relation is None:
             count = self._count_after_comma(m, span) or count
@@ -1627,6 +2081,8 @@ class _Reader:
             area = self.index.zone_area(zone) if zone else sum(e.area for e in self.index.entries if e.kind == "zone")
             low_ = max(1, min(lx.WHOLE_ZONE_CAP, round(area * lx.WHOLE_ZONE_DENSITY[0])))
             high_ = max(low_, min(lx.WHOLE_ZONE_CAP, round(area * lx.WHOLE_ZONE_DENSITY[1])))
+            if m.fraction < 1.0:
+                low_, high_ = max(1, round(low_ * m.fraction)), max(1, round(high_ * m.fraction))
             count = Count("whole_zone", self._choose(low_, high_, f"{m.first}:whole"), low_, high_)
             if zone is None:
                 self.notes.append(f"'{m.who}': no place says where everyone is; the whole building is filled")
@@ -1699,6 +2155,9 @@ class _Reader:
         if prep in lx.VIA_PREPOSITIONS:
             if is_door and verb in lx.DEPARTURE_VERBS | {"evacuate"} or (is_door and intent == "evacuate"):
                 return "destination"
+            entry = self.index.entry(p.match.name) if is_door and p.match is not None else None
+            if entry is not None and entry.exit and verb not in lx.ARRIVAL_VERBS:
+                return "destination"  # "go home through the back door": out of an exit is where they end
             if is_door and verb in lx.ARRIVAL_VERBS:
                 return "start"
             return "via"

@@ -46,6 +46,10 @@ def lemma(word: str) -> str:
     w = word.lower()
     if w in _IRREGULAR_NOUNS:
         return _IRREGULAR_NOUNS[w]
+    if len(w) > 8 and w.endswith("children"):
+        return w[:-3]  # "schoolchildren" -> "schoolchild"
+    if len(w) > 5 and w.endswith(("men", "women")) and w[:-3] + "man" in PERSON_NOUNS:
+        return w[:-3] + "man"  # "businessmen", "firemen"
     if len(w) <= 3 or not w.endswith("s") or (w.endswith(_KEEP_S) and w[:-1] not in PERSON_NOUNS):
         return w  # "physics", "bus"; but "paramedics" is more than one paramedic
     if w.endswith("ies") and len(w) > 4:

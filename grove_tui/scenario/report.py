@@ -65,6 +65,9 @@ class GroundingReport:
     groups: tuple[GroupGrounding, ...]
     unhonoured: tuple[str, ...] = ()  # parts of the sentence the scenario could not honour, said plainly
     repairs: tuple[str, ...] = field(default=())  # where the model's draft was repaired to match the sentence
+    # Misspelt place words the reading put right ("read 'kitchn' as 'kitchen'"): honoured, but said,
+    # so a user sees which place a typo was taken for. They do not make the report fail.
+    corrections: tuple[str, ...] = field(default=())
 
     @property
     def ok(self) -> bool:
@@ -72,12 +75,14 @@ class GroundingReport:
 
     def to_dict(self) -> dict[str, Any]:
         return {"prompt": self.prompt, "ok": self.ok, "groups": [g.to_dict() for g in self.groups],
-                "unhonoured": list(self.unhonoured), "repairs": list(self.repairs)}
+                "unhonoured": list(self.unhonoured), "repairs": list(self.repairs),
+                "corrections": list(self.corrections)}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> GroundingReport:
         return cls(str(data.get("prompt", "")), tuple(GroupGrounding.from_dict(g) for g in data.get("groups", ())),
-                   tuple(str(u) for u in data.get("unhonoured", ())), tuple(str(r) for r in data.get("repairs", ())))
+                   tuple(str(u) for u in data.get("unhonoured", ())), tuple(str(r) for r in data.get("repairs", ())),
+                   tuple(str(c) for c in data.get("corrections", ())))
 
     def lines(self) -> list[str]:
         """Plain-text rendering, one line per group and one per check (for the CLI and logs)."""
@@ -89,6 +94,8 @@ class GroundingReport:
                 if c.reason:
                     line += f" ({c.reason})"
                 out.append(line)
+        for correction in self.corrections:
+            out.append(f"~ correction: {correction}")
         for u in self.unhonoured:
             out.append(f"{FAIL_MARK} not honoured: {u}")
         return out

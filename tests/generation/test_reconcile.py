@@ -171,3 +171,17 @@ def test_without_a_group_read_from_the_sentence_the_report_says_the_groups_are_g
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
     assert report.groups == () and not report.ok
     assert any("the model's guess" in line for line in report.unhonoured)
+
+
+def test_the_report_carries_the_place_spelling_corrections(hospital, grid):
+    prompt = "Six visitors walk to the cafetaria."
+    preset = load_preset("normal")
+    reading = read_prompt(prompt, hospital)
+    assert reading.groups[0].destination == "cafeteria" and reading.corrections
+    selection = select_rois(hospital, preset, prompt, reading=reading)
+    post = postprocess(hospital, grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
+                       [], selection, 0, prompt, ("GoTo",), reading=reading)
+    report = grounding_report(reading, post.groups, post.agents, hospital)
+    assert report.corrections == reading.corrections and report.ok, report.lines()
+    assert any(line.startswith("~ correction: read 'cafetaria'") for line in report.lines())
+    assert GroundingReport.from_dict(report.to_dict()) == report

@@ -116,6 +116,9 @@ def read_grounding(report: Mapping[str, Any] | None) -> tuple[list[GroundingGrou
     else:
         return None
     notes = [str(n) for n in notes] if isinstance(notes, Sequence) and not isinstance(notes, str) else [str(notes)]
+    corrections = grounding.get("corrections") if isinstance(grounding, Mapping) else None
+    if isinstance(corrections, Sequence) and not isinstance(corrections, str):
+        notes += [f"correction: {c}" for c in corrections]  # a misspelt place the reading put right
     return [_group(i, g) for i, g in enumerate(groups_data)], notes
 
 
