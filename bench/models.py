@@ -262,7 +262,16 @@ def run_first_scenario_child(model: str, path: Path | None, threads: int, preset
         command += ["--child-model-path", str(path)]
     if warm_up:
         command.append("--child-warm-up")
-    done = subprocess.run(command, capture_output=True, text=True, check=False)
+    # As on a machine that never ran this world and preset: no persisted prefix KV (a cache dir of its
+    # own), but the node index and unpacked models the user's cache already holds (not a scenario's cost).
+    from grove_tui.settings import cache_dir
+
+    with tempfile.TemporaryDirectory(prefix="grove-bench-cache-") as cache:
+        for shared in ("chroma", "models"):
+            if (cache_dir() / shared).exists():
+                os.symlink(cache_dir() / shared, Path(cache) / shared)
+        done = subprocess.run(command, capture_output=True, text=True, check=False,
+                              env={**os.environ, "GROVE_CACHE_DIR": cache})
     if done.returncode != 0:
         print(done.stderr[-2000:], file=sys.stderr)
         return {}
