@@ -24,13 +24,13 @@ from grove_tui.llm.local import LocalLLM  # noqa: E402
 
 NODES = ["Sequence", "GoTo", "Queue", "Wait", "Wander", "Converse"]
 SYSTEM = (
-    "You write pedestrian scenarios for a simulator, one line per group: LABEL COUNT SPAWN: TREE. "
-    "LABEL: who (a few words); COUNT: how many people; SPAWN: the place where they start; TREE: what they do, "
+    "You write pedestrian scenarios for a simulator, one line per group: COUNT LABEL from SPAWN: TREE. "
+    "COUNT: how many people; LABEL: who (one word); SPAWN: the place where they start; TREE: what they do, "
     "a node written Node(required values, optional port=value, children); only Sequence has children. "
     "Node types: GoTo(place) walk to a place; Queue(place) wait in line; Wait(duration=seconds); "
     "Wander(place); Converse(place) chat at a place; Sequence(nodes) do them in order. "
     "Use only the place names given.\n"
-    "Example: visitors 3 lobby: Sequence(GoTo(cafe), Wait(duration=30))"
+    "Example: 3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))"
 )
 
 # (sentence, places offered, expected spawn, expected target, expected count) over the shipped worlds

@@ -1,10 +1,14 @@
 """The draft: the compact, bounded text the model writes instead of XML (ARCHITECTURE.md section 5).
 
-One line per group, `LABEL COUNT SPAWN: TREE`, and a tree node as `Name(required values, optional
-port=value, children)`:
+One line per group, `COUNT LABEL from SPAWN: TREE`, and a tree node as `Name(required values,
+optional port=value, children)`:
 
-    patients 10 pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter, spacing=0.6))
-    visitors 3 lobby: Sequence(GoTo(cafe), Wait(duration=30))
+    10 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter, spacing=0.6))
+    3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))
+
+The line starts with the count because a chat model's first words are otherwise chat ("Here is a
+sample of a ..." filled the label when it came first, with SmolLM2): a digit first puts it straight
+into the scenario, and "3 visitors from lobby" is how English says it.
 
 Every token of the answer is a decode step, including the ones the grammar forces (issue 20). The
 JSON draft this replaces spent about two thirds of its tokens on keys, quotes and braces the grammar
@@ -24,7 +28,9 @@ job: the model never writes ids). Ports without a manifest default are required;
 optional and post-processing fills the manifest default. Numbers are chosen from a short list of
 sensible values inside the port's bounds (the grammar cannot bound free digits); parse_draft
 accepts any number within the bounds, so a hand-written draft is not held to that list. A label is
-letters, spaces and `_'-` only: the count that follows it is the first digit of the line.
+one word of letters and `_'-` (`elderly_patients`): SmolLM2 given room for several words wrote on
+into the sentence ("patients queue at the") until the length bound cut it off, tokens spent on a
+label the reading usually replaces anyway.
 """
 
 from __future__ import annotations
@@ -46,9 +52,9 @@ MAX_CHILDREN = 4
 # or break the line structure; what the grammar lets through is what the parser accepts.
 SAFE_STRING_CHARS = "A-Za-z0-9 _.,'()/:-"
 _SAFE_STRING = re.compile(f"^[{SAFE_STRING_CHARS}]*$")
-# A label: no digits (the count after it starts at the first one) and no `:` (it ends the header).
+# A label: one word (so " from " always ends it) without digits, so it reads as who the people are.
 LABEL_FIRST_CHARS = "A-Za-z"
-LABEL_CHARS = "A-Za-z _'-"
+LABEL_CHARS = "A-Za-z_'-"
 _LABEL = re.compile(f"^[{LABEL_FIRST_CHARS}][{LABEL_CHARS}]*$")
 # A bare value (place names, true/false) is one word; RoI names are snake_case (world/model.py).
 _BARE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
@@ -297,7 +303,7 @@ class _GrammarBuilder:
         label_char = self.rules.add("label-char", f"[{LABEL_CHARS}]")
         label = self.rules.add("label", f"[{LABEL_FIRST_CHARS}] ({_bounded(label_char, 1, LABEL_MAX_LENGTH - 1)})?")
         count = self.rules.add("count", _alternatives(str(n) for n in range(self.max_count, 0, -1)))
-        group = self.rules.add("group", f'{label} " " {count} " " {self.place} ": " {self.level(1)}')
+        group = self.rules.add("group", f'{count} " " {label} " from " {self.place} ": " {self.level(1)}')
         return self.rules.text(_bounded(group, 1, max_groups, '"\\n" '))
 
 
@@ -310,6 +316,8 @@ def draft_grammar(node_names: Iterable[str], roi_names: Iterable[str], max_group
 
 # ---- the parser --------------------------------------------------------------------------------
 
+# COUNT LABEL from SPAWN, three words around "from".
+_HEADER = re.compile(r"^(\S+)\s+(\S+)\s+from\s+(\S+)$")
 _TOKEN = re.compile(r'\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<number>-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)'
                     r'|(?P<text>"[^"\n]*")|(?P<punct>[(),=])|(?P<bad>\S))')
 
@@ -357,7 +365,7 @@ class _Parser:
     def draft(self, text: str) -> Draft:
         lines = [(number, line) for number, line in enumerate(text.splitlines(), 1) if line.strip()]
         if not lines:
-            raise DraftError("draft is empty: expected one line per group, `LABEL COUNT SPAWN: TREE`")
+            raise DraftError("draft is empty: expected one line per group, `COUNT LABEL from SPAWN: TREE`")
         if len(lines) > self.max_groups:
             self.line = lines[self.max_groups][0]
             raise self.fail("groups", f"{len(lines)} groups, at most {self.max_groups} allowed")
@@ -370,16 +378,15 @@ class _Parser:
     def group(self, line: str, path: str) -> DraftGroup:
         header, colon, tree = line.partition(":")
         if not colon:
-            raise self.fail(path, f"expected `LABEL COUNT SPAWN: TREE`, found no ':' in {line.strip()[:60]!r}")
-        words = header.split()
-        if len(words) < 3:
-            raise self.fail(path, f"expected `LABEL COUNT SPAWN` before ':', got {header.strip()!r}")
-        label = header.strip().rsplit(None, 2)[0]
+            raise self.fail(path, f"expected `COUNT LABEL from SPAWN: TREE`, found no ':' in {line.strip()[:60]!r}")
+        parts = _HEADER.match(header.strip())
+        if parts is None:
+            raise self.fail(path, f"expected `COUNT LABEL from SPAWN` before ':', got {header.strip()!r}")
+        count_text, label, spawn = parts.group(1), parts.group(2).strip(), parts.group(3)
         if len(label) > LABEL_MAX_LENGTH:
             raise self.fail(f"{path}.label", f"longer than {LABEL_MAX_LENGTH} characters")
         if not _LABEL.match(label):
-            raise self.fail(f"{path}.label", f"{label!r} must start with a letter and use only letters, spaces and _'-")
-        count_text, spawn = words[-2], words[-1]
+            raise self.fail(f"{path}.label", f"{label!r} must be one word: a letter, then letters and _'-")
         if not count_text.isdigit() or not 1 <= int(count_text) <= self.max_count:
             raise self.fail(f"{path}.count", f"{count_text!r} is not a whole number in 1..{self.max_count}")
         if spawn not in self.roi_set:
@@ -543,7 +550,11 @@ def node_to_text(node: DraftNode, nodes: Mapping[str, Any] | None = None) -> str
 
 def draft_to_text(draft: Draft, nodes: Mapping[str, Any] | None = None) -> str:
     """The draft as the model writes it, one line per group (parse_draft(draft_to_text(d)) == d)."""
-    return "\n".join(f"{group.label} {group.count} {group.spawn}: {node_to_text(group.tree, nodes)}"
+    unwritable = [group.label for group in draft.groups if not _LABEL.match(group.label)]
+    if unwritable:
+        raise DraftError(f"label(s) {', '.join(map(repr, unwritable))} cannot be written in a draft: "
+                         "a label is one word of letters and _'-")
+    return "\n".join(f"{group.count} {group.label} from {group.spawn}: {node_to_text(group.tree, nodes)}"
                      for group in draft.groups)
 
 

@@ -34,14 +34,14 @@ PROMPT_TEMPLATE_VERSION = 3
 
 # The draft syntax (generation/draft.py): the model learns it from these lines and the node cards,
 # which show each node in the same form.
-_RULES = """Write one line per group of people: LABEL COUNT SPAWN: TREE
-- LABEL: who they are (a few words), COUNT: how many, SPAWN: the place where they start.
+_RULES = """Write one line per group of people: COUNT LABEL from SPAWN: TREE
+- COUNT: how many, LABEL: who they are (one word), SPAWN: the place where they start.
 - TREE: their behavior, a node written Node(required values, optional port=value, children).
   Only control nodes have children. Use only the node types and place names given below.
 Ids, coordinates and paths are filled in later: never write them."""
 
 _EXAMPLE = """Example:
-visitors 3 lobby: Sequence(GoTo(cafe), Wait(duration=30))"""
+3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))"""
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ from grove_tui.llm.local import LocalLLM
 
 NODES = ["Sequence", "Fallback", "GoTo", "Queue", "Wait", "Wander"]
 ROIS = ["pharmacy", "pharmacy_counter", "main_entrance"]
-MESSAGES = [{"role": "system", "content": "Write a pedestrian scenario, one line per group: LABEL COUNT SPAWN: TREE."},
+MESSAGES = [{"role": "system", "content": "Write a pedestrian scenario, one line per group: COUNT LABEL from SPAWN: TREE."},
             {"role": "user", "content": "ten patients queue at the pharmacy counter"}]
 
 

@@ -33,8 +33,8 @@ VERBS = [
     "{n} {who} wait in the {a} and then go to the {b}",
 ]
 SYSTEM = (
-    "You write pedestrian scenarios for a simulator, one line per group: LABEL COUNT SPAWN: TREE. LABEL is who "
-    "they are, COUNT how many, SPAWN where they start and TREE what they do, a behavior tree written "
+    "You write pedestrian scenarios for a simulator, one line per group: COUNT LABEL from SPAWN: TREE. COUNT is how "
+    "many, LABEL who they are, SPAWN where they start and TREE what they do, a behavior tree written "
     "Node(required values, optional port=value, children). Use only the node types and places given."
 )
 

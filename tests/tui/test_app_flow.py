@@ -210,7 +210,7 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
 async def test_emergency_scenarios_show_velocity_field_arrows_on_the_inspect_map(tmp_path):
     from grove_tui.tui.widgets import map_raster as mr
 
-    draft = "visitors 8 entrance_lobby: Sequence(FollowVelocityField(main_entrance))"
+    draft = "8 visitors from entrance_lobby: Sequence(FollowVelocityField(main_entrance))"
     app = GroveApp(fake_llm_backend(tmp_path / "runs", FakeLLM(draft)), test_settings(tmp_path, preset="emergency"))
     async with app.run_test(size=(120, 40)) as pilot:
         inspect = await generate_to_inspect(pilot, app, "eight visitors evacuate the lobby")

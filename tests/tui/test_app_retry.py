@@ -23,7 +23,7 @@ from grove_tui.tui.screens.setup import SetupScreen
 
 pytestmark = pytest.mark.anyio
 
-FIRST_ANSWER_TAIL = "6 pharmacy: Sequence(GoTo(pharm"  # where attempt 1 stops
+FIRST_ANSWER_TAIL = "from pharmacy: Sequence(GoTo(pharm"  # where attempt 1 stops
 
 
 class RetryingLLM(FakeLLM):
