@@ -160,8 +160,7 @@ async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_pat
 
 async def test_a_planning_error_from_the_model_answer_is_shown_with_a_hint(tmp_path):
     # The draft names a spawn that does not exist in this world: the pipeline must refuse it.
-    bad = FakeLLM('{"groups": [{"label": "ghosts", "count": 2, "spawn": "nowhere", '
-                  '"tree": {"node": "GoTo", "target": "nowhere"}}]}')
+    bad = FakeLLM("2 ghosts from nowhere: GoTo(nowhere)")
     app = GroveApp(fake_llm_backend(tmp_path / "runs", bad), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
