@@ -103,7 +103,6 @@ def main() -> int:
 
     from grove_tui.cpu import free_cores
     from grove_tui.llm.chat_template import default_sampling, render_chat
-    from grove_tui.llm.grammar import schema_to_gbnf
     from grove_tui.llm.gguf_info import read_gguf_info
     from grove_tui.llm.registry import resolve_models
     from grove_tui.llm.worker import tune_openmp_for_llama
@@ -111,7 +110,7 @@ def main() -> int:
     path = Path(args.model) if args.model else resolve_models(None, None)["bt"].path
     info = read_gguf_info(path)
     request = synthesis_request()
-    grammar_text = schema_to_gbnf(request.schema)
+    grammar_text = request.grammar
     threads = args.threads or free_cores()
     tune_openmp_for_llama()
     from llama_cpp import Llama

@@ -17,22 +17,20 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.generation.draft import DraftError, build_draft_schema, parse_draft  # noqa: E402
+from grove_tui.generation.draft import DraftError, draft_grammar, parse_draft  # noqa: E402
 from grove_tui.llm.embedded import CANDIDATES, EMBEDDED_MODEL, embedded_model_path  # noqa: E402
 from grove_tui.errors import ModelError  # noqa: E402
-from grove_tui.llm.grammar import schema_to_gbnf  # noqa: E402
 from grove_tui.llm.local import LocalLLM  # noqa: E402
 
 NODES = ["Sequence", "GoTo", "Queue", "Wait", "Wander", "Converse"]
 SYSTEM = (
-    "You write pedestrian scenarios for a simulator as JSON only: {\"groups\": [...]}. Each group: "
-    "\"label\" (who, a few words), \"count\" (how many people), \"spawn\" (the place where they start), "
-    "\"tree\" (what they do: {\"node\": TYPE, ...ports..., \"children\": [...]} ; only Sequence has children). "
-    "Node types: GoTo(target) walk to a place; Queue(service_point) wait in line; Wait(duration); "
-    "Wander(zone); Converse(target) chat at a place; Sequence(children) do children in order. "
+    "You write pedestrian scenarios for a simulator, one line per group: COUNT LABEL from SPAWN: TREE. "
+    "COUNT: how many people; LABEL: who (one word); SPAWN: the place where they start; TREE: what they do, "
+    "a node written Node(required values, optional port=value, children); only Sequence has children. "
+    "Node types: GoTo(place) walk to a place; Queue(place) wait in line; Wait(duration=seconds); "
+    "Wander(place); Converse(place) chat at a place; Sequence(nodes) do them in order. "
     "Use only the place names given.\n"
-    "Example: {\"groups\": [{\"label\": \"visitors\", \"count\": 3, \"spawn\": \"lobby\", \"tree\": "
-    "{\"node\": \"Sequence\", \"children\": [{\"node\": \"GoTo\", \"target\": \"cafe\"}, {\"node\": \"Wait\", \"duration\": 30}]}}]}"
+    "Example: 3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))"
 )
 
 # (sentence, places offered, expected spawn, expected target, expected count) over the shipped worlds
@@ -97,9 +95,9 @@ def compare(threads: int | None) -> dict[str, float]:
         seconds: list[float] = []
         tokens = 0
         for sentence, places, spawn, target, count in CASES:
-            schema = build_draft_schema(NODES, places, max_groups=2, max_count=60, max_depth=2)
+            grammar = draft_grammar(NODES, places, max_groups=2, max_count=60, max_depth=2)
             try:
-                result = llm.generate(messages_for(sentence, places), grammar=schema_to_gbnf(schema), max_tokens=200, seed=0)
+                result = llm.generate(messages_for(sentence, places), grammar=grammar, max_tokens=200, seed=0)
                 draft = parse_draft(result.text, NODES, places, max_groups=2, max_count=60, max_depth=2)
             except (ModelError, DraftError) as error:
                 print(f"  {name}: {sentence[:40]}... FAILED {error}")
@@ -132,7 +130,7 @@ def speed(path: Path, threads: int | None) -> dict[str, float]:
     llm.start()
     sentence, places = CASES[0][0], CASES[0][1]
     messages = messages_for(sentence, places)
-    grammar = schema_to_gbnf(build_draft_schema(NODES, places, max_groups=2, max_depth=2))
+    grammar = draft_grammar(NODES, places, max_groups=2, max_depth=2)
     # Free text has no natural end here, so a fixed budget measures pure decode speed (length is expected).
     free_rates, grammar_rates, warm_first, reused = [], [], [], []
     for seed in range(3):
@@ -146,7 +144,7 @@ def speed(path: Path, threads: int | None) -> dict[str, float]:
         grammar_rates.append(result.completion_tokens / result.seconds)
         # Warm prefix: same system prompt, a different scenario sentence (what the pipeline does per request).
         other_sentence, other_places = CASES[seed + 1][0], CASES[seed + 1][1]
-        other_grammar = schema_to_gbnf(build_draft_schema(NODES, other_places, max_groups=2, max_depth=2))
+        other_grammar = draft_grammar(NODES, other_places, max_groups=2, max_depth=2)
         warm = llm.generate(messages_for(other_sentence, other_places), grammar=other_grammar, max_tokens=300, seed=seed)
         warm_first.append(warm.first_token_seconds or float("nan"))
         reused.append(warm.cached_tokens / warm.prompt_tokens)

@@ -199,14 +199,13 @@ def token_rates(name: str, path: Path | None, threads: int) -> dict[str, float]:
     from llm import CASES, NODES, messages_for
 
     from grove_tui.errors import ModelError
-    from grove_tui.generation.draft import build_draft_schema
+    from grove_tui.generation.draft import draft_grammar
     from grove_tui.llm.embedded import embedded_model_path
-    from grove_tui.llm.grammar import schema_to_gbnf
     from grove_tui.llm.local import LocalLLM
 
     sentence, places = CASES[0][0], CASES[0][1]
     messages = messages_for(sentence, places)
-    grammar = schema_to_gbnf(build_draft_schema(NODES, places, max_groups=2, max_depth=2))
+    grammar = draft_grammar(NODES, places, max_groups=2, max_depth=2)
     started = time.perf_counter()
     llm = LocalLLM(path or embedded_model_path(), role=f"bench-{name}", n_ctx=2048, n_threads=threads)
     llm.start()

@@ -271,7 +271,7 @@ class GenerationError(RuntimeFailure):
 
 
 class DraftError(RuntimeFailure):
-    """A draft (the model's JSON) that is not valid for this request; the message names the JSON path."""
+    """A draft (the model's answer) that is not valid for this request; the message names the line and draft path."""
 
     title = "Invalid model answer"
     hint = "The model's answer did not fit the scenario: retry with another seed, or rephrase the prompt."

@@ -1,26 +1,40 @@
-"""The draft: the bounded JSON the model writes instead of XML (ARCHITECTURE.md section 5).
+"""The draft: the compact, bounded text the model writes instead of XML (ARCHITECTURE.md section 5).
 
-    {"groups": [{"label": "patients", "count": 10, "spawn": "pharmacy",
-                 "tree": {"node": "Sequence", "children": [
-                     {"node": "GoTo", "target": "pharmacy_counter"},
-                     {"node": "Queue", "service_point": "pharmacy_counter"}]}}]}
+One line per group, `COUNT LABEL from SPAWN: TREE`, and a tree node as `Name(required values,
+optional port=value, children)`:
 
-`build_draft_schema` makes the JSON schema for one request: only the retrieved node types, only the
-selected RoI names for `target` ports, and every number, string, list and the tree depth bounded, so
-the grammar built from it (models/grammar.py) always finishes. `parse_draft` is the strict check of
-the text that comes back, whether it was grammar-constrained or not.
+    10 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter, spacing=0.6))
+    3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))
+
+The line starts with the count because a chat model's first words are otherwise chat ("Here is a
+sample of a ..." filled the label when it came first, with SmolLM2): a digit first puts it straight
+into the scenario, and "3 visitors from lobby" is how English says it.
+
+Every token of the answer is a decode step, including the ones the grammar forces (issue 20). The
+JSON draft this replaces spent about two thirds of its tokens on keys, quotes and braces the grammar
+already knew ("node", "children", "label", ...). Here nothing is written that the grammar could
+infer: required ports are positional (manifest order), and only optional ports the model chooses to
+set carry their name. A node without written ports is its bare name.
+
+This module is the one owner of the syntax: `draft_grammar` builds the GBNF for one request (only
+the offered node types, only the selected RoI names, every number, string, list and the tree depth
+bounded, so the model always finishes), `parse_draft` is the strict check of the text that comes
+back, whether it was grammar-constrained or not, and `draft_to_text` writes a Draft in the same
+form (parse_draft(draft_to_text(d)) == d).
 
 What the model writes per node: the node type and the non-auto input ports of that node in the
 manifest, except ports typed agent/agents/point_list (ids and point lists are post-processing's
 job: the model never writes ids). Ports without a manifest default are required; the others are
 optional and post-processing fills the manifest default. Numbers are chosen from a short list of
 sensible values inside the port's bounds (the grammar cannot bound free digits); parse_draft
-accepts any number within the bounds, so a hand-written draft is not held to that list.
+accepts any number within the bounds, so a hand-written draft is not held to that list. A label is
+one word of letters and `_'-` (`elderly_patients`): SmolLM2 given room for several words wrote on
+into the sentence ("patients queue at the") until the length bound cut it off, tokens spent on a
+label the reading usually replaces anyway.
 """
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from collections.abc import Iterable, Mapping
@@ -29,14 +43,21 @@ from typing import Any
 
 from grove_tui.errors import DraftError
 from grove_tui.limits import MAX_GROUP_COUNT
+from grove_tui.llm.grammar import gbnf_literal
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
 MAX_CHILDREN = 4
-# Mirrors models.grammar.SAFE_STRING_CHARS: what the grammar lets through is what we accept here.
+# A quoted text value (SaySomething's message): no quote, backslash or newline, so it cannot end early
+# or break the line structure; what the grammar lets through is what the parser accepts.
 SAFE_STRING_CHARS = "A-Za-z0-9 _.,'()/:-"
-SAFE_STRING_PATTERN = f"^[{SAFE_STRING_CHARS}]*$"
-_SAFE_STRING = re.compile(SAFE_STRING_PATTERN)
+_SAFE_STRING = re.compile(f"^[{SAFE_STRING_CHARS}]*$")
+# A label: one word (so " from " always ends it) without digits, so it reads as who the people are.
+LABEL_FIRST_CHARS = "A-Za-z"
+LABEL_CHARS = "A-Za-z_'-"
+_LABEL = re.compile(f"^[{LABEL_FIRST_CHARS}][{LABEL_CHARS}]*$")
+# A bare value (place names, true/false) is one word; RoI names are snake_case (world/model.py).
+_BARE = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 # Port types the model never writes: agent ids and point lists come from post-processing.
 POST_PROCESSED_TYPES = frozenset({"agent", "agents", "point_list"})
 WRITTEN_TYPES = frozenset({"int", "float", "bool", "string", "target"})
@@ -132,94 +153,198 @@ def _sensible_floats(port: Any) -> list[float]:
     return sorted(values)
 
 
-def port_schema(port: Any, roi_names: list[str]) -> dict[str, Any]:
-    """The JSON schema of one written port value."""
-    if port.choices:
-        return {"enum": list(port.choices)}
-    if port.type == "target":
-        return {"enum": list(roi_names)}
-    if port.type == "bool":
-        return {"type": "boolean"}
-    if port.type == "int":
-        return {"enum": _sensible_ints(port)}
-    if port.type == "float":
-        return {"enum": _sensible_floats(port)}
-    if port.type == "string":
-        return {"type": "string", "maxLength": STRING_PORT_MAX_LENGTH, "pattern": SAFE_STRING_PATTERN}
-    raise DraftError(f"port {port.name!r} has type {port.type!r}, which a draft never writes")
-
-
-def _node_schema(spec: Any, roi_names: list[str], children_ref: str | None, max_children: int) -> dict[str, Any]:
-    properties: dict[str, Any] = {"node": {"const": spec.name}}
-    required = ["node"]
-    for port in written_ports(spec):
-        properties[port.name] = port_schema(port, roi_names)
-        if port.default is None:
-            required.append(port.name)
-    if children_ref is not None:
-        most = 1 if spec.category == "decorator" else max_children
-        properties["children"] = {"type": "array", "items": {"$ref": children_ref}, "minItems": 1, "maxItems": most}
-        required.append("children")
-    return {"type": "object", "properties": properties, "required": required, "additionalProperties": False}
-
-
-def build_draft_schema(node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6,
-                       max_count: int = 60, max_depth: int = 3, max_children: int = MAX_CHILDREN,
-                       nodes: Mapping[str, Any] | None = None) -> dict[str, Any]:
-    """JSON schema of a draft for one request; recursion is unrolled into one `$defs` entry per tree level."""
+def _check_request(node_names: Iterable[str], roi_names: Iterable[str], max_groups: int, max_count: int,
+                   max_depth: int, max_children: int, nodes: Mapping[str, Any] | None) -> tuple[dict[str, Any], list[str]]:
+    """The node specs and place names of one request, refused when no bounded draft could be written."""
     specs = _specs(node_names, nodes)
     rois = list(dict.fromkeys(roi_names))
     if not rois:
         raise DraftError("no RoI names given: a draft needs at least one place to spawn")
+    bare = [name for name in rois if not _BARE.match(name)]
+    if bare:
+        raise DraftError(f"place name(s) {', '.join(map(repr, bare))} are not single words, which a draft writes bare")
     if not (1 <= max_groups <= 16 and 1 <= max_count <= MAX_GROUP_COUNT and 1 <= max_depth <= 6 and 1 <= max_children <= 8):
         raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..16), max_count={max_count} "
                          f"(1..{MAX_GROUP_COUNT}), "
                          f"max_depth={max_depth} (1..6), max_children={max_children} (1..8)")
-    leaves = [name for name, spec in specs.items() if spec.category not in BRANCH_CATEGORIES]
-    branches = [name for name, spec in specs.items() if spec.category in BRANCH_CATEGORIES]
-    if not leaves:
+    if not any(spec.category not in BRANCH_CATEGORIES for spec in specs.values()):
         raise DraftError(f"the node types {', '.join(specs)} include no action or condition, so no tree can end")
-    defs: dict[str, Any] = {}
-    for name in leaves:
-        defs[name] = _node_schema(specs[name], rois, None, max_children)
-    for level in range(max_depth, 0, -1):
-        options = [{"$ref": f"#/$defs/{name}"} for name in leaves]
-        if level < max_depth:
-            for name in branches:
-                defs[f"{name}_{level}"] = _node_schema(specs[name], rois, f"#/$defs/level_{level + 1}", max_children)
-                options.append({"$ref": f"#/$defs/{name}_{level}"})
-        defs[f"level_{level}"] = {"anyOf": options}
-    group = {
-        "type": "object",
-        "properties": {
-            "label": {"type": "string", "minLength": 1, "maxLength": LABEL_MAX_LENGTH, "pattern": SAFE_STRING_PATTERN},
-            "count": {"type": "integer", "minimum": 1, "maximum": max_count},
-            "spawn": {"enum": rois},
-            "tree": {"$ref": "#/$defs/level_1"},
-        },
-        "required": ["label", "count", "spawn", "tree"],
-        "additionalProperties": False,
-    }
-    return {
-        "type": "object",
-        "properties": {"groups": {"type": "array", "items": group, "minItems": 1, "maxItems": max_groups}},
-        "required": ["groups"],
-        "additionalProperties": False,
-        "$defs": defs,
-    }
+    for spec in specs.values():
+        for port in written_ports(spec):
+            if port.type not in WRITTEN_TYPES:
+                raise DraftError(f"port {port.name!r} has type {port.type!r}, which a draft never writes")
+            if port.choices and not all(_BARE.match(str(choice)) for choice in port.choices):
+                raise DraftError(f"{spec.name}.{port.name}: choices {port.choices} are not single words")
+    return specs, rois
 
 
-def _reject_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    result: dict[str, Any] = {}
-    for key, value in pairs:
-        if key in result:
-            raise DraftError(f"key {key!r} appears twice in one object")
-        result[key] = value
-    return result
+def _required(spec: Any) -> tuple[Any, ...]:
+    return tuple(port for port in written_ports(spec) if port.default is None)
 
 
-def _reject_constant(name: str) -> Any:
-    raise DraftError(f"{name} is not valid JSON")
+def _optional(spec: Any) -> tuple[Any, ...]:
+    return tuple(port for port in written_ports(spec) if port.default is not None)
+
+
+def number_text(value: float) -> str:
+    """A number as the draft writes it: whole numbers without a fraction (2, not 2.0), the shortest form tokenizers see."""
+    if isinstance(value, float) and value.is_integer():
+        return str(int(value))
+    return repr(value) if isinstance(value, float) else str(int(value))
+
+
+# ---- the grammar -------------------------------------------------------------------------------
+
+class _Rules:
+    """GBNF rules by name, sharing one rule between identical bodies."""
+
+    def __init__(self) -> None:
+        self.rules: dict[str, str] = {}
+        self.by_body: dict[str, str] = {}
+
+    def add(self, hint: str, body: str) -> str:
+        existing = self.by_body.get(body)
+        if existing is not None:
+            return existing
+        base = re.sub(r"[^A-Za-z0-9]+", "-", hint).strip("-").lower() or "r"
+        name, counter = base, 1
+        while name in self.rules or name == "root":
+            counter += 1
+            name = f"{base}-{counter}"
+        self.rules[name] = body
+        self.by_body[body] = name
+        return name
+
+    def text(self, root: str) -> str:
+        return f"root ::= {root}\n" + "".join(f"{name} ::= {body}\n" for name, body in self.rules.items())
+
+
+def _bounded(item: str, low: int, high: int, separator: str = "") -> str:
+    """`item` low..high times (low >= 1); the optional tail nests so every length parses one way and ends."""
+    tail = ""
+    for _ in range(high - low):
+        tail = f"({separator}{item}{(' ' + tail) if tail else ''})?"
+    mandatory = " ".join([item] + [f"{separator}{item}"] * (low - 1))
+    return f"{mandatory} {tail}".strip()
+
+
+def _alternatives(literals: Iterable[str]) -> str:
+    return " | ".join(dict.fromkeys(gbnf_literal(text) for text in literals))
+
+
+class _GrammarBuilder:
+    def __init__(self, specs: dict[str, Any], rois: list[str], max_count: int, max_depth: int, max_children: int):
+        self.specs, self.rois = specs, rois
+        self.max_count, self.max_depth, self.max_children = max_count, max_depth, max_children
+        self.rules = _Rules()
+        self.sep = self.rules.add("sep", '"," " "?')
+        self.place = self.rules.add("place", _alternatives(rois))
+
+    def value(self, spec: Any, port: Any) -> str:
+        if port.choices:
+            return self.rules.add(f"{spec.name}-{port.name}", _alternatives(map(str, port.choices)))
+        if port.type == "target":
+            return self.place
+        if port.type == "bool":
+            return self.rules.add("bool", '"true" | "false"')
+        if port.type == "int":
+            return self.rules.add(f"{spec.name}-{port.name}", _alternatives(str(v) for v in _sensible_ints(port)))
+        if port.type == "float":
+            return self.rules.add(f"{spec.name}-{port.name}", _alternatives(number_text(v) for v in _sensible_floats(port)))
+        if port.type == "string":
+            char = self.rules.add("text-char", f"[{SAFE_STRING_CHARS}]")
+            return self.rules.add("text", f'"\\"" ({_bounded(char, 1, STRING_PORT_MAX_LENGTH)})? "\\""')
+        raise DraftError(f"port {port.name!r} has type {port.type!r}, which a draft never writes")
+
+    def keyed(self, spec: Any, port: Any) -> str:
+        return f"{gbnf_literal(port.name + '=')} {self.value(spec, port)}"
+
+    def optional_ports(self, spec: Any) -> str | None:
+        """One or more optional ports in manifest order, comma-separated: one alternative per first port written."""
+        ports = _optional(spec)
+        if not ports:
+            return None
+        options = []
+        for index, port in enumerate(ports):
+            rest = " ".join(f"({self.sep} {self.keyed(spec, later)})?" for later in ports[index + 1:])
+            options.append(f"{self.keyed(spec, port)} {rest}".strip())
+        return self.rules.add(f"{spec.name}-options", " | ".join(f"({option})" for option in options))
+
+    def node(self, spec: Any, level: int) -> str | None:
+        """The rule of `spec` at tree level `level`; None for a branch that has no room for children there."""
+        branch = spec.category in BRANCH_CATEGORIES
+        if branch and level >= self.max_depth:
+            return None
+        required = [self.value(spec, port) for port in _required(spec)]
+        options = self.optional_ports(spec)
+        name = gbnf_literal(spec.name)
+        opened = gbnf_literal(spec.name + "(")
+        if branch:
+            most = 1 if spec.category == "decorator" else self.max_children
+            child = self.level(level + 1)
+            children = _bounded(child, 1, most, f"{self.sep} ")
+            if required:
+                inside = f" {self.sep} ".join(required) + (f" ({self.sep} {options})?" if options else "") + f" {self.sep} {children}"
+            else:
+                inside = (f"({options} {self.sep})? " if options else "") + children
+            return self.rules.add(f"{spec.name}-{level}", f'{opened} {inside} ")"')
+        if required:
+            inside = f" {self.sep} ".join(required) + (f" ({self.sep} {options})?" if options else "")
+            return self.rules.add(spec.name, f'{opened} {inside} ")"')
+        if options:
+            return self.rules.add(spec.name, f'{name} ("(" {options} ")")?')
+        return self.rules.add(spec.name, name)
+
+    def level(self, level: int) -> str:
+        options = [rule for spec in self.specs.values() if (rule := self.node(spec, level)) is not None]
+        return self.rules.add(f"level-{level}", " | ".join(options))
+
+    def grammar(self, max_groups: int) -> str:
+        label_char = self.rules.add("label-char", f"[{LABEL_CHARS}]")
+        label = self.rules.add("label", f"[{LABEL_FIRST_CHARS}] ({_bounded(label_char, 1, LABEL_MAX_LENGTH - 1)})?")
+        count = self.rules.add("count", _alternatives(str(n) for n in range(self.max_count, 0, -1)))
+        group = self.rules.add("group", f'{count} " " {label} " from " {self.place} ": " {self.level(1)}')
+        return self.rules.text(_bounded(group, 1, max_groups, '"\\n" '))
+
+
+def draft_grammar(node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6, max_count: int = 60,
+                  max_depth: int = 3, max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> str:
+    """The GBNF (root rule `root`) of every draft this request allows; recursion is unrolled into one rule per tree level."""
+    specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
+    return _GrammarBuilder(specs, rois, max_count, max_depth, max_children).grammar(max_groups)
+
+
+# ---- the parser --------------------------------------------------------------------------------
+
+# COUNT LABEL from SPAWN, three words around "from".
+_HEADER = re.compile(r"^(\S+)\s+(\S+)\s+from\s+(\S+)$")
+_TOKEN = re.compile(r'\s*(?:(?P<name>[A-Za-z_][A-Za-z0-9_]*)|(?P<number>-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)'
+                    r'|(?P<text>"[^"\n]*")|(?P<punct>[(),=])|(?P<bad>\S))')
+
+
+@dataclass(frozen=True)
+class _Token:
+    kind: str  # name, number, text, punct, end
+    value: str
+    column: int  # 1-based, in the whole line
+
+
+def _tokens(text: str, offset: int) -> list[_Token]:
+    found = []
+    position = 0
+    while position < len(text):
+        match = _TOKEN.match(text, position)
+        if match is None:  # only whitespace was left
+            break
+        kind = match.lastgroup or "bad"
+        found.append(_Token(kind, match.group(kind), offset + match.start(kind) + 1))
+        position = match.end()
+    found.append(_Token("end", "", offset + len(text) + 1))
+    return found
+
+
+def _shown(token: _Token) -> str:
+    return "the end of the line" if token.kind == "end" else repr(token.value)
 
 
 class _Parser:
@@ -229,114 +354,208 @@ class _Parser:
         self.roi_set = set(rois)
         self.max_groups, self.max_count, self.max_depth = max_groups, max_count, max_depth
         self.max_children = max_children
+        self.line = 0
+        self.tokens: list[_Token] = []
+        self.at = 0
 
-    def fail(self, path: str, problem: str) -> DraftError:
-        return DraftError(f"draft {path}: {problem}")
+    def fail(self, path: str, problem: str, token: _Token | None = None) -> DraftError:
+        where = f"line {self.line}" + (f", column {token.column}" if token is not None else "")
+        return DraftError(f"draft {path} ({where}): {problem}")
 
-    def expect_keys(self, value: Any, path: str, allowed: list[str], required: list[str]) -> dict[str, Any]:
-        if not isinstance(value, dict):
-            raise self.fail(path, f"expected an object, got {json.dumps(value)[:60]}")
-        extra = [key for key in value if key not in allowed]
-        if extra:
-            raise self.fail(path, f"unexpected key(s) {', '.join(extra)}; allowed: {', '.join(allowed)}")
-        missing = [key for key in required if key not in value]
-        if missing:
-            raise self.fail(path, f"missing key(s) {', '.join(missing)}")
-        return value
+    def draft(self, text: str) -> Draft:
+        lines = [(number, line) for number, line in enumerate(text.splitlines(), 1) if line.strip()]
+        if not lines:
+            raise DraftError("draft is empty: expected one line per group, `COUNT LABEL from SPAWN: TREE`")
+        if len(lines) > self.max_groups:
+            self.line = lines[self.max_groups][0]
+            raise self.fail("groups", f"{len(lines)} groups, at most {self.max_groups} allowed")
+        groups = []
+        for index, (number, line) in enumerate(lines):
+            self.line = number
+            groups.append(self.group(line, f"groups[{index}]"))
+        return Draft(tuple(groups))
 
-    def draft(self, data: Any) -> Draft:
-        data = self.expect_keys(data, "(top level)", ["groups"], ["groups"])
-        groups = data["groups"]
-        if not isinstance(groups, list) or not 1 <= len(groups) <= self.max_groups:
-            raise self.fail("groups", f"expected a list of 1..{self.max_groups} groups")
-        return Draft(tuple(self.group(item, f"groups[{index}]") for index, item in enumerate(groups)))
+    def group(self, line: str, path: str) -> DraftGroup:
+        header, colon, tree = line.partition(":")
+        if not colon:
+            raise self.fail(path, f"expected `COUNT LABEL from SPAWN: TREE`, found no ':' in {line.strip()[:60]!r}")
+        parts = _HEADER.match(header.strip())
+        if parts is None:
+            raise self.fail(path, f"expected `COUNT LABEL from SPAWN` before ':', got {header.strip()!r}")
+        count_text, label, spawn = parts.group(1), parts.group(2).strip(), parts.group(3)
+        if len(label) > LABEL_MAX_LENGTH:
+            raise self.fail(f"{path}.label", f"longer than {LABEL_MAX_LENGTH} characters")
+        if not _LABEL.match(label):
+            raise self.fail(f"{path}.label", f"{label!r} must be one word: a letter, then letters and _'-")
+        if not count_text.isdigit() or not 1 <= int(count_text) <= self.max_count:
+            raise self.fail(f"{path}.count", f"{count_text!r} is not a whole number in 1..{self.max_count}")
+        if spawn not in self.roi_set:
+            raise self.fail(f"{path}.spawn", f"{spawn!r} is not one of the selected places: {', '.join(self.rois)}")
+        self.tokens, self.at = _tokens(tree, len(header) + 1), 0
+        node = self.node(f"{path}.tree", 1)
+        if self.peek().kind != "end":
+            raise self.fail(f"{path}.tree", f"unexpected {_shown(self.peek())} after the tree", self.peek())
+        return DraftGroup(label, int(count_text), spawn, node)
 
-    def group(self, value: Any, path: str) -> DraftGroup:
-        keys = ["label", "count", "spawn", "tree"]
-        value = self.expect_keys(value, path, keys, keys)
-        label = self.safe_string(value["label"], f"{path}.label", LABEL_MAX_LENGTH)
-        if not label.strip():
-            raise self.fail(f"{path}.label", "must not be empty")
-        count = value["count"]
-        if not isinstance(count, int) or isinstance(count, bool) or not 1 <= count <= self.max_count:
-            raise self.fail(f"{path}.count", f"{json.dumps(count)} is not a whole number in 1..{self.max_count}")
-        spawn = self.roi(value["spawn"], f"{path}.spawn")
-        return DraftGroup(label, count, spawn, self.node(value["tree"], f"{path}.tree", 1))
+    def peek(self, ahead: int = 0) -> _Token:
+        return self.tokens[min(self.at + ahead, len(self.tokens) - 1)]
 
-    def roi(self, value: Any, path: str) -> str:
-        if not isinstance(value, str) or value not in self.roi_set:
-            raise self.fail(path, f"{json.dumps(value)} is not one of the selected places: {', '.join(self.rois)}")
-        return value
+    def take(self) -> _Token:
+        token = self.peek()
+        self.at = min(self.at + 1, len(self.tokens) - 1)
+        return token
 
-    def safe_string(self, value: Any, path: str, most: int) -> str:
-        if not isinstance(value, str):
-            raise self.fail(path, f"expected a string, got {json.dumps(value)}")
-        if len(value) > most:
-            raise self.fail(path, f"longer than {most} characters")
-        if not _SAFE_STRING.match(value):
-            raise self.fail(path, f"{json.dumps(value)} uses characters outside [{SAFE_STRING_CHARS}]")
-        return value
+    def expect(self, value: str, path: str, what: str) -> None:
+        token = self.take()
+        if token.value != value or token.kind != "punct":
+            raise self.fail(path, f"expected {what}, found {_shown(token)}", token)
 
-    def node(self, value: Any, path: str, level: int) -> DraftNode:
-        if not isinstance(value, dict):
-            raise self.fail(path, f"expected a node object, got {json.dumps(value)[:60]}")
-        kind = value.get("node")
-        if kind not in self.specs:
-            raise self.fail(f"{path}.node", f"{json.dumps(kind)} is not one of the allowed node types: {', '.join(self.specs)}")
+    def node(self, path: str, level: int) -> DraftNode:
+        token = self.take()
+        if token.kind != "name" or token.value not in self.specs:
+            raise self.fail(path, f"{_shown(token)} is not one of the allowed node types: {', '.join(self.specs)}", token)
+        kind = token.value
         spec = self.specs[kind]
-        ports = written_ports(spec)
+        path = f"{path} ({kind})"
         branch = spec.category in BRANCH_CATEGORIES
-        allowed = ["node", *(port.name for port in ports), *(["children"] if branch else [])]
-        required = ["node", *(port.name for port in ports if port.default is None), *(["children"] if branch else [])]
-        self.expect_keys(value, f"{path} ({kind})", allowed, required)
-        values = {port.name: self.port_value(port, value[port.name], f"{path}.{port.name}")
-                  for port in ports if port.name in value}
-        children: tuple[DraftNode, ...] = ()
-        if branch:
-            if level >= self.max_depth:
-                raise self.fail(path, f"{kind} needs children, but the tree may only be {self.max_depth} levels deep")
+        if branch and level >= self.max_depth:
+            raise self.fail(path, f"{kind} needs children, but the tree may only be {self.max_depth} levels deep", token)
+        required, ports = _required(spec), {port.name: port for port in written_ports(spec)}
+        values: dict[str, Any] = {}
+        children: list[DraftNode] = []
+        if self.peek().value == "(" and self.peek().kind == "punct":
+            self.take()
+            positional, named = 0, False  # required values come first, by position, then port=value, then children
+            while True:
+                item = self.peek()
+                keyed = item.kind == "name" and self.peek(1).value == "=" and self.peek(1).kind == "punct"
+                if keyed:
+                    if children:
+                        raise self.fail(path, f"port {item.value} comes after the children; ports come first", item)
+                    if item.value not in ports:
+                        raise self.fail(path, f"{kind} has no port {item.value!r} to write; it takes "
+                                        f"{', '.join(ports) or 'none'}", item)
+                    if item.value in values:
+                        raise self.fail(path, f"port {item.value} is written twice", item)
+                    self.take(), self.take()
+                    values[item.value] = self.value(ports[item.value], f"{path}.{item.value}")
+                    named = True
+                elif not named and not children and positional < len(required):
+                    port = required[positional]
+                    values[port.name] = self.value(port, f"{path}.{port.name}")
+                    positional += 1
+                elif branch:
+                    most = 1 if spec.category == "decorator" else self.max_children
+                    if len(children) == most:
+                        raise self.fail(path, f"{kind} takes {'exactly 1 child' if most == 1 else f'1..{most} children'}", item)
+                    children.append(self.node(f"{path}.children[{len(children)}]", level + 1))
+                else:
+                    wanted = f"{len(required)} value(s) ({', '.join(p.name for p in required)})" if required else "no values"
+                    raise self.fail(path, f"unexpected {_shown(item)}: {kind} takes {wanted}, then optional port=value",
+                                    item)
+                separator = self.take()
+                if separator.kind == "punct" and separator.value == ")":
+                    break
+                if separator.kind != "punct" or separator.value != ",":
+                    raise self.fail(path, f"expected ',' or ')', found {_shown(separator)}", separator)
+        missing = [port.name for port in required if port.name not in values]
+        if missing:
+            raise self.fail(path, f"missing required port(s) {', '.join(missing)}", token)
+        if branch and not children:
             most = 1 if spec.category == "decorator" else self.max_children
-            items = value["children"]
-            if not isinstance(items, list) or not 1 <= len(items) <= most:
-                raise self.fail(f"{path}.children", f"{kind} takes {'exactly 1 child' if most == 1 else f'1..{most} children'}")
-            children = tuple(self.node(item, f"{path}.children[{index}]", level + 1) for index, item in enumerate(items))
-        return DraftNode(kind, values, children)
+            raise self.fail(path, f"{kind} takes {'exactly 1 child' if most == 1 else f'1..{most} children'}", token)
+        ordered = {port.name: values[port.name] for port in written_ports(spec) if port.name in values}
+        return DraftNode(kind, ordered, tuple(children))
 
-    def port_value(self, port: Any, value: Any, path: str) -> Any:
+    def value(self, port: Any, path: str) -> Any:
+        token = self.take()
         if port.choices:
-            if value not in port.choices:
-                raise self.fail(path, f"{json.dumps(value)} is not one of {', '.join(map(str, port.choices))}")
-            return value
+            if token.value not in port.choices:
+                raise self.fail(path, f"{_shown(token)} is not one of {', '.join(map(str, port.choices))}", token)
+            return token.value
         if port.type == "target":
-            return self.roi(value, path)
+            if token.kind != "name" or token.value not in self.roi_set:
+                raise self.fail(path, f"{_shown(token)} is not one of the selected places: {', '.join(self.rois)}", token)
+            return token.value
         if port.type == "bool":
-            if not isinstance(value, bool):
-                raise self.fail(path, f"expected true or false, got {json.dumps(value)}")
-            return value
+            if token.kind != "name" or token.value not in ("true", "false"):
+                raise self.fail(path, f"expected true or false, found {_shown(token)}", token)
+            return token.value == "true"
         if port.type == "string":
-            return self.safe_string(value, path, STRING_PORT_MAX_LENGTH)
-        numeric = isinstance(value, (int, float)) and not isinstance(value, bool)
-        if port.type == "int" and not (numeric and float(value).is_integer()):
-            raise self.fail(path, f"expected a whole number, got {json.dumps(value)}")
-        if port.type == "float" and not (numeric and math.isfinite(value)):
-            raise self.fail(path, f"expected a number, got {json.dumps(value)}")
+            if token.kind != "text":
+                raise self.fail(path, f'expected a quoted text ("..."), found {_shown(token)}', token)
+            text = token.value[1:-1]
+            if len(text) > STRING_PORT_MAX_LENGTH:
+                raise self.fail(path, f"longer than {STRING_PORT_MAX_LENGTH} characters", token)
+            if not _SAFE_STRING.match(text):
+                raise self.fail(path, f"{token.value} uses characters outside [{SAFE_STRING_CHARS}]", token)
+            return text
+        if token.kind != "number":
+            raise self.fail(path, f"expected a number, found {_shown(token)}", token)
+        if port.type == "int" and not re.fullmatch(r"-?\d+", token.value):
+            raise self.fail(path, f"expected a whole number, found {token.value}", token)
+        value = float(token.value)
+        if not math.isfinite(value):
+            raise self.fail(path, f"expected a finite number, found {token.value}", token)
         if (port.min is not None and value < port.min) or (port.max is not None and value > port.max):
-            raise self.fail(path, f"{json.dumps(value)} is outside {port.min}..{port.max}")
-        return int(value) if port.type == "int" else float(value)
+            raise self.fail(path, f"{token.value} is outside {number_text(port.min)}..{number_text(port.max)}", token)
+        return int(token.value) if port.type == "int" else value
 
 
 def parse_draft(text: str, node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6,
                 max_count: int = 60, max_depth: int = 3, max_children: int = MAX_CHILDREN,
                 nodes: Mapping[str, Any] | None = None) -> Draft:
-    """Strictly parse and validate the model's JSON; DraftError names the offending JSON path."""
-    specs = _specs(node_names, nodes)
-    rois = list(dict.fromkeys(roi_names))
-    try:
-        data = json.loads(text, object_pairs_hook=_reject_duplicates, parse_constant=_reject_constant)
-    except json.JSONDecodeError as error:
-        snippet = text[max(0, error.pos - 30):error.pos + 30].replace("\n", " ")
-        raise DraftError(f"draft is not valid JSON ({error.msg} at character {error.pos}: ...{snippet}...)") from None
-    return _Parser(specs, rois, max_groups, max_count, max_depth, max_children).draft(data)
+    """Strictly parse and validate the model's draft; DraftError names the line, column and the draft path."""
+    specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
+    return _Parser(specs, rois, max_groups, max_count, max_depth, max_children).draft(text)
+
+
+# ---- writing drafts ----------------------------------------------------------------------------
+
+def _value_text(port: Any, value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return number_text(value)
+    if port is not None and port.type == "string":
+        return f'"{value}"'
+    return str(value)
+
+
+def tree_text(node: Mapping[str, Any], nodes: Mapping[str, Any] | None = None) -> str:
+    """A draft node given as a mapping ({"node": ..., ports..., "children": [...]}: node_db templates) in draft syntax.
+
+    Written as the model must write it, without checking the values: templates hold placeholders
+    such as `<destination>` for the model to fill in."""
+    table = _manifest() if nodes is None else nodes
+    name = str(node.get("node"))
+    spec = table.get(name)
+    ports = {port.name: port for port in written_ports(spec)} if spec is not None else {}
+    required = [port.name for port in _required(spec)] if spec is not None else []
+    given = {key: value for key, value in node.items() if key not in ("node", "children")}
+    items = [_value_text(ports.get(key), given[key]) for key in required if key in given]
+    positional = all(key in given for key in required)
+    if not positional:  # a required port missing: name every port so nothing shifts into the wrong place
+        items = []
+    items += [f"{key}={_value_text(ports.get(key), value)}" for key, value in given.items()
+              if not (positional and key in required)]
+    items += [tree_text(child, table) for child in node.get("children") or ()]
+    return f"{name}({', '.join(items)})" if items else name
+
+
+def node_to_text(node: DraftNode, nodes: Mapping[str, Any] | None = None) -> str:
+    """One draft node (and its subtree) as the model writes it."""
+    return tree_text(node_to_dict(node), nodes)
+
+
+def draft_to_text(draft: Draft, nodes: Mapping[str, Any] | None = None) -> str:
+    """The draft as the model writes it, one line per group (parse_draft(draft_to_text(d)) == d)."""
+    unwritable = [group.label for group in draft.groups if not _LABEL.match(group.label)]
+    if unwritable:
+        raise DraftError(f"label(s) {', '.join(map(repr, unwritable))} cannot be written in a draft: "
+                         "a label is one word of letters and _'-")
+    return "\n".join(f"{group.count} {group.label} from {group.spawn}: {node_to_text(group.tree, nodes)}"
+                     for group in draft.groups)
 
 
 def node_to_dict(node: DraftNode) -> dict[str, Any]:
@@ -346,8 +565,3 @@ def node_to_dict(node: DraftNode) -> dict[str, Any]:
     return result
 
 
-def draft_to_json(draft: Draft, indent: int | None = None) -> str:
-    """The draft as JSON in the same key order the model writes (parse_draft(draft_to_json(d)) == d)."""
-    data = {"groups": [{"label": group.label, "count": group.count, "spawn": group.spawn, "tree": node_to_dict(group.tree)}
-                       for group in draft.groups]}
-    return json.dumps(data, indent=indent, separators=None if indent else (",", ":"))

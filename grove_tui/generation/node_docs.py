@@ -24,6 +24,7 @@ from typing import Any
 import yaml
 
 from grove_tui.errors import NodeDbError
+from grove_tui.generation.draft import tree_text, written_ports
 
 RETRIEVAL_PRESETS = ("emergency", "queuing", "normal", "vanilla")
 # Control nodes come from the preset (`nodes.control`), never from retrieval, so they get documents
@@ -236,24 +237,27 @@ def _card_kind(port: Any) -> str:
 
 
 def node_signature(spec: Any) -> str:
-    """The node as the draft writes it, required ports filled with what they take, then its optional ports:
-    `{"node": "GoTo", "target": "<place>"} optional tolerance (0.05..5, default 0.3)`.
+    """The node as the draft writes it (generation/draft.py), required values and children in place, then
+    its optional ports: `GoTo(<place>) optional tolerance=0.05..5 (default 0.3)`.
 
-    The shape of the JSON the model must write, because small models copy what they see."""
-    fields = [f'"node": "{spec.name}"']
+    The shape of the text the model must write, because small models copy what they see. Only the
+    ports the grammar lets a draft write: ids (agent-typed ports) are post-processing's job."""
+    values = []
     optional = []
-    for port in spec.llm_ports:
+    for port in written_ports(spec):
         kind = _card_kind(port)
         if port.default is None:
-            value = f'"<{kind}>"' if port.type in ("target", "agent", "agents", "string") else f"<{kind}>"
-            fields.append(f'"{port.name}": {value}')
+            if port.type == "target":
+                values.append(f"<{kind}>")
+            else:  # a bare number or text says nothing by itself: name what it is
+                values.append(f'"<{port.name}: {kind}>"' if port.type == "string" else f"<{port.name}: {kind}>")
         else:
-            optional.append(f"{port.name} ({kind}, default {_card_number(port.default)})")
+            optional.append(f"{port.name}={kind} (default {_card_number(port.default)})")
     if spec.category == "decorator":
-        fields.append('"children": [<one node>]')
+        values.append("<one node>")
     elif spec.category == "control":
-        fields.append('"children": [<nodes>]')
-    text = "{" + ", ".join(fields) + "}"
+        values.append("<nodes>")
+    text = f"{spec.name}({', '.join(values)})" if values else spec.name
     return text + (" optional " + ", ".join(optional) if optional else "")
 
 
@@ -274,8 +278,8 @@ def node_card(spec: Any, note: Mapping[str, Any] | None = None) -> str:
 
 
 def template_card(template: Template) -> str:
-    """One line for the bt model: the template's title and its draft tree."""
-    return f"Template '{template.title}': {json.dumps(template.tree, separators=(', ', ': '))}"
+    """One line for the bt model: the template's title and its tree in draft syntax."""
+    return f"Template '{template.title}': {tree_text(template.tree)}"
 
 
 def _manifest_nodes() -> Mapping[str, Any]:

@@ -5,9 +5,9 @@ preset's template, the draft format, the world's one-line description), and ever
 (places, retrieved node cards, the user's sentence) comes last in the user message, in compact
 form: one line per selected zone and one card per node or template (issue 20: every prompt token
 is prefill paid on every request). The vanilla baseline keeps the whole world and the full node
-documents. The grammar comes from the draft
-schema of exactly the offered node types and selected RoI names, so the model cannot name a node
-that was not retrieved or a place that does not exist. An answer that still fails the draft check
+documents. The grammar is the draft
+grammar of exactly the offered node types and selected RoI names (generation/draft.py), so the
+model cannot name a node that was not retrieved or a place that does not exist. An answer that still fails the draft check
 is retried with the next seed.
 """
 
@@ -23,22 +23,25 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.bt.manifest import NODES
-from grove_tui.generation.draft import Draft, DraftError, build_draft_schema, parse_draft
+from grove_tui.generation.draft import Draft, DraftError, draft_grammar, parse_draft
 from grove_tui.generation.presets import GenerationError, Preset
 from grove_tui.language.quantities import Quantity
 from grove_tui.language.reading import PromptReading
 
 MAX_ATTEMPTS = 3
 # Bump when the prompt's wording or layout changes: persisted KV caches of the fixed prefix are keyed by it.
-PROMPT_TEMPLATE_VERSION = 2
+PROMPT_TEMPLATE_VERSION = 3
 
-_RULES = """Write JSON only: {"groups": [...]}. Each group is one kind of people:
-- "label": who they are (a few words), "count": how many, "spawn": the zone where they start,
-- "tree": their behavior tree. A tree node is {"node": TYPE, ...its ports..., "children": [...]}.
+# The draft syntax (generation/draft.py): the model learns it from these lines and the node cards,
+# which show each node in the same form.
+_RULES = """Write one line per group of people: COUNT LABEL from SPAWN: TREE
+- COUNT: how many, LABEL: who they are (one word), SPAWN: the place where they start.
+- TREE: their behavior, a node written Node(required values, optional port=value, children).
   Only control nodes have children. Use only the node types and place names given below.
 Ids, coordinates and paths are filled in later: never write them."""
 
-_EXAMPLE = """Example: {"groups": [{"label": "visitors", "count": 3, "spawn": "lobby", "tree": {"node": "Sequence", "children": [{"node": "GoTo", "target": "cafe"}, {"node": "Wait", "duration": 30.0}]}}]}"""
+_EXAMPLE = """Example:
+3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))"""
 
 
 @dataclass(frozen=True)
@@ -58,7 +61,8 @@ class SynthesisRequest:
     messages: list[dict[str, str]]
     node_names: list[str]
     roi_names: list[str]
-    schema: dict[str, Any]
+    grammar: str  # the GBNF of every draft this request allows (draft.draft_grammar)
+    max_groups: int  # the grammar's bound on groups, which parse_draft holds the answer to as well
     documents: list[RetrievedDoc] = field(default_factory=list)
     prefix_label: str = ""  # names the persisted KV state of messages[0] (world, its file hash, preset, version)
 
@@ -208,11 +212,11 @@ def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], pr
     documents = choose_documents(preset, retrieved, offered, documents_for, cards_for)
     # Post-processing keeps one group per stated quantity, so asking for more only costs tokens.
     max_groups = min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities else preset.limits.max_groups
-    schema = build_draft_schema(offered, selection.roi_names, max_groups=max_groups,
-                                max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
+    grammar = draft_grammar(offered, selection.roi_names, max_groups=max_groups,
+                            max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
     messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names, reading,
                               world)
-    return SynthesisRequest(messages, list(offered), list(selection.roi_names), schema, documents,
+    return SynthesisRequest(messages, list(offered), list(selection.roi_names), grammar, max_groups, documents,
                             prefix_label(preset, world))
 
 
@@ -241,9 +245,8 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
     the first, `on_attempt(attempt, reason)` says why, so a stream of tokens can start afresh there.
     """
     from grove_tui.errors import ModelError
-    from grove_tui.llm.grammar import schema_to_gbnf
 
-    grammar = schema_to_gbnf(request.schema)
+    grammar = request.grammar
     errors: list[str] = []
     prompt_tokens = completion_tokens = 0
     seconds = 0.0
@@ -292,7 +295,7 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
         seconds += generation.seconds
         try:
             draft = parse_draft(generation.text, request.node_names, request.roi_names,
-                                max_groups=_schema_limit(request.schema, "groups", "maxItems", preset.limits.max_groups),
+                                max_groups=request.max_groups,
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
         except DraftError as exc:
             errors.append(f"attempt {attempt}: {exc}")
@@ -302,13 +305,6 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
                                generation.first_token_seconds, int(getattr(generation, "cached_tokens", 0)),
                                str(getattr(generation, "cache_source", "cold")))
     raise GenerationError(f"the bt model wrote no valid draft in {attempt} attempts: " + "; ".join(errors))
-
-
-def _schema_limit(schema: dict[str, Any], key: str, limit: str, default: int) -> int:
-    try:
-        return int(schema["properties"][key][limit])
-    except (KeyError, TypeError, ValueError):
-        return default
 
 
 def draft_summary(draft: Draft) -> list[dict[str, Any]]:

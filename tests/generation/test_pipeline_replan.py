@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import copy
-import json
 import threading
 from pathlib import Path
 from typing import Any
@@ -21,11 +20,8 @@ from grove_tui.errors import Cancelled
 from grove_tui.llm.local import Generation
 
 PROMPT = "Ten patients queue at the pharmacy counter while two nurses walk from the lobby to the cafeteria"
-DRAFT = json.dumps({"groups": [
-    {"label": "patients", "count": 10, "spawn": "pharmacy", "tree": {"node": "Sequence", "children": [
-        {"node": "GoTo", "target": "pharmacy_counter"}, {"node": "Queue", "service_point": "pharmacy_counter"}]}},
-    {"label": "nurses", "count": 2, "spawn": "lobby", "tree": {"node": "GoTo", "target": "cafeteria"}},
-]})
+DRAFT = ("10 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter))\n"
+         "2 nurses from lobby: GoTo(cafeteria)")
 
 
 class CountingLLM:
@@ -162,8 +158,7 @@ def test_counts_out_of_range_are_refused(generated, counts, message):
 
 
 def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(clinic, retriever):
-    draft = json.dumps({"groups": [{"label": "nurses", "count": 2, "spawn": "restroom",
-                                    "tree": {"node": "GoTo", "target": "lobby"}}]})
+    draft = "2 nurses from restroom: GoTo(lobby)"
     pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
     result = pipeline.run("two nurses walk from the restroom to the lobby", seed=0)
     assert labels_and_counts(result) == [("nurse", 2)]
@@ -194,8 +189,7 @@ def test_another_preset_pipeline_refuses_the_result(generated, clinic, retriever
 
 
 def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retriever):
-    draft = json.dumps({"groups": [{"label": "visitors", "count": 3, "spawn": "cafeteria",
-                                    "tree": {"node": "GoTo", "target": "coffee_counter"}}]})
+    draft = "3 visitors from cafeteria: GoTo(coffee_counter)"
     pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
     result = pipeline.run("visitors walk to the coffee counter", seed=0)
     # "visitors" with no number: the reading's vague count (a seeded choice in its documented range)
@@ -207,8 +201,7 @@ def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retri
 
 
 def test_emergency_replan_rebuilds_the_group_fields(clinic, retriever):
-    draft = json.dumps({"groups": [{"label": "visitors", "count": 5, "spawn": "cafeteria",
-                                    "tree": {"node": "FollowVelocityField", "exit": "back_exit"}}]})
+    draft = "5 visitors from cafeteria: FollowVelocityField(back_exit)"
     pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="emergency")
     result = pipeline.run("five visitors evacuate the cafeteria", seed=0)
     edited = pipeline.replan(result, {0: 9})

@@ -62,7 +62,7 @@ def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(ho
     assert "Groups to write: Ten patients (10)" in user["content"]
     assert "- pharmacy (" in user["content"] and "cafeteria" not in user["content"]
     assert req.roi_names == selection.roi_names
-    assert req.schema["properties"]["groups"]["maxItems"] == 1  # one stated quantity, one group
+    assert req.max_groups == 1 and req.grammar.startswith("root ::= group\n")  # one stated quantity, one group
 
 
 def test_vanilla_prompt_has_the_whole_world_and_every_node(hospital, retriever):

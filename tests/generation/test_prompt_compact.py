@@ -13,6 +13,7 @@ import re
 import pytest
 
 from grove_tui.bt.manifest import NODES
+from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
 from grove_tui.generation.pipeline import quantities_from_reading
 from grove_tui.generation.presets import load_preset
@@ -84,21 +85,26 @@ def test_every_offered_node_has_its_card_and_the_sentence_comes_last(world_name,
     for name in request.node_names:
         if NODES[name].category == "control":
             continue  # control nodes are in the rules' example and every template
-        assert any(line.startswith(f'{{"node": "{name}"') for line in lines) or any(
+        assert any(re.match(rf"{name}[(: ]", line) for line in lines) or any(
             name in line for line in lines if line.startswith("Template ")), name
     assert user.index("Places:") < user.index("Nodes:") < user.index(f"Scenario: {prompt}")
 
 
 def test_a_card_is_one_line_with_every_writable_port_and_no_automatic_one():
+    """The card shows the node as the draft writes it: required values in place (a place as <place>, anything
+    else with its port's name), optional ports as name=..., and no port the grammar would refuse."""
     for spec in NODES.values():
         if not spec.llm:
             continue
         card = node_card(spec, {"use_when": "always.", "constraints": ["Never alone."]})
         assert "\n" not in card and card.startswith(node_signature(spec) + ":")
         signature = node_signature(spec)
+        assert re.match(rf"{spec.name}(\(|$| optional )", signature), signature
         for port in spec.ports:
-            written = re.search(rf'"{re.escape(port.name)}":|[ ,]{re.escape(port.name)} \(', signature) is not None
-            assert written == (port in spec.llm_ports), (spec.name, port.name)
+            if port.default is None and port.type == "target":
+                continue  # shown as <place>: its name says nothing the model needs
+            shown = re.search(rf"[ ,(<]{re.escape(port.name)}[=:]", signature) is not None
+            assert shown == (port in written_ports(spec)), (spec.name, port.name)
         assert card.endswith("Always. Never alone.")
 
 

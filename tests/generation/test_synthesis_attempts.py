@@ -12,20 +12,14 @@ from helpers.tiny_qwen3 import build_tiny_qwen3
 from grove_tui.errors import ModelError
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.synthesis import SynthesisRequest, is_cut_off, synthesize
+from grove_tui.llm.grammar import gbnf_literal
 from grove_tui.llm.local import LocalLLM
 
-# One group whose every value is fixed: 75 characters, with the grammar's optional spaces at most 85.
-# The vocabulary is single bytes plus four two-byte merges ("Ġt", "ou", "ro", "es"), of which the
-# answer can use at most three, so it takes 72 to 85 tokens: cut off at 45, complete within 90.
-SCHEMA = {
-    "type": "object", "additionalProperties": False, "required": ["groups"],
-    "properties": {"groups": {"type": "array", "minItems": 1, "maxItems": 1, "items": {
-        "type": "object", "additionalProperties": False, "required": ["label", "count", "spawn", "tree"],
-        "properties": {
-            "label": {"const": "p"}, "count": {"const": 2}, "spawn": {"const": "lobby"},
-            "tree": {"type": "object", "additionalProperties": False, "required": ["node"],
-                     "properties": {"node": {"const": "Wait"}}}}}}},
-}
+# A grammar that allows exactly one draft of two groups, 79 characters. The vocabulary is single bytes
+# plus four two-byte merges ("Ġt", "ou", "ro", "es"), of which the answer can use at most four, so it
+# takes 75 to 79 tokens: cut off at 45, complete within 90.
+DRAFT = "2 people from lobby: Wait(duration=30)\n3 visitors from lobby: Wait(duration=60)"
+GRAMMAR = f"root ::= {gbnf_literal(DRAFT)}\n"
 MESSAGES = [{"role": "user", "content": "Two people wait in the lobby."}]
 
 
@@ -38,7 +32,7 @@ def tiny_llm(tmp_path_factory):
 
 
 def request() -> SynthesisRequest:
-    return SynthesisRequest(MESSAGES, ["Wait"], ["lobby"], SCHEMA)
+    return SynthesisRequest(MESSAGES, ["Wait"], ["lobby"], GRAMMAR, 2)
 
 
 def run(llm, max_tokens):
@@ -62,7 +56,7 @@ def test_a_cut_off_answer_is_a_second_attempt_with_twice_the_budget(tiny_llm):
     assert calls == [(2, "cut off at 45 tokens", calls[0][2])]
     assert 0 < calls[0][2] <= 45, "attempt 1 streamed at most its budget before attempt 2 was announced"
     assert result.attempts == 2
-    assert result.draft.groups[0].spawn == "lobby"
+    assert result.draft.groups[0].spawn == "lobby" and result.text == DRAFT
     assert "".join(streamed) == result.text, "after the announcement only attempt 2's text streams"
     assert result.completion_tokens >= calls[0][2] + len(streamed), "both attempts are accounted"
 

@@ -118,11 +118,7 @@ async def map_laid_out(pilot: Any, world_map: Any) -> None:
 
 # --- a fake LLM and a lexical retriever for UI-only tests of the real pipeline ----------------------
 
-QUEUE_DRAFT = (
-    '{"groups": [{"label": "patients", "count": 6, "spawn": "pharmacy", "tree": {"node": "Sequence", '
-    '"children": [{"node": "GoTo", "target": "pharmacy_counter"}, '
-    '{"node": "Queue", "service_point": "pharmacy_counter"}]}}]}'
-)
+QUEUE_DRAFT = "6 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter))"
 
 
 class FakeLLM:

@@ -9,9 +9,9 @@ import json
 import pytest
 from helpers.tiny_qwen3 import build_tiny_qwen3
 
-from grove_tui.generation.draft import build_draft_schema, parse_draft
+from grove_tui.generation.draft import draft_grammar, parse_draft
 from grove_tui.generation.presets import list_presets, load_preset
-from grove_tui.world import load_world
+from grove_tui.world import list_worlds, load_world
 from grove_tui.llm.grammar import GrammarError, gbnf_literal, json_literal, schema_to_gbnf
 from grove_tui.llm.local import LocalLLM, ModelError
 
@@ -125,30 +125,36 @@ def test_unit_grammars_compile_and_produce_strict_json(tiny_llm, index):
 
 
 def _preset_node_sets():
-    from grove_tui.bt.manifest import NODES
+    """Per preset, every node the model may be offered from the real node database (all it can retrieve)."""
+    from grove_tui.generation.node_docs import load_node_database
+    from grove_tui.generation.synthesis import offered_nodes
+    from grove_tui.paths import node_db_dir
 
+    database = load_node_database(node_db_dir())
     sets = {}
     for name in list_presets():
         preset = load_preset(name)
-        nodes = [n for n, spec in NODES.items() if spec.llm and name in spec.presets]
-        sets[name] = (nodes, preset.limits)
+        retrievable = [node for doc in database.documents
+                       if preset.retrieval_filter is None or preset.retrieval_filter in doc.presets for node in doc.nodes]
+        sets[name] = (offered_nodes(preset, retrievable), preset.limits)
     return sets
 
 
 def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
-    """The grammar of every preset's full node set over a real world: llama.cpp samples it, parse_draft accepts it."""
-    world = load_world("hospital")
-    rois = [roi.name for roi in world.roi_index()][:40]
-    for preset, (nodes, limits) in _preset_node_sets().items():
-        schema = build_draft_schema(nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
+    """The grammar of every preset's full node set over every shipped world: llama.cpp compiles and samples it
+    (random weights write long, varied drafts), and parse_draft accepts what it wrote."""
+    worlds = list_worlds()
+    assert len(worlds) >= 4
+    for index, world_name in enumerate(worlds):
+        rois = [roi.name for roi in load_world(world_name).roi_index()]
+        for preset, (nodes, limits) in _preset_node_sets().items():
+            grammar = draft_grammar(nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                     max_depth=limits.max_depth)
-        grammar = schema_to_gbnf(schema)
-        for seed in range(3):
             result = tiny_llm.generate([{"role": "user", "content": f"{preset} scenario"}], grammar=grammar,
-                                       max_tokens=1800, seed=seed, temperature=1.0)
+                                       max_tokens=1800, seed=index, temperature=1.0)
             draft = parse_draft(result.text, nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                 max_depth=limits.max_depth)
-            assert draft.node_types() <= set(nodes), preset
+            assert draft.node_types() <= set(nodes) and draft.places() <= set(rois), (world_name, preset)
 
 
 def test_a_malformed_grammar_costs_one_worker_not_the_app(tiny_llm):

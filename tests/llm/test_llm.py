@@ -11,7 +11,7 @@ import time
 import pytest
 from helpers.tiny_qwen3 import build_tiny_qwen3
 
-from grove_tui.generation.draft import build_draft_schema, parse_draft
+from grove_tui.generation.draft import draft_grammar, parse_draft
 from grove_tui.llm.chat_template import QWEN3_EMPTY_THINK, QWEN3_NON_THINKING, default_sampling, render_chat
 from grove_tui.llm.embedded import embedded_model_path
 from grove_tui.llm.gguf_info import check_loadable, read_gguf_info
@@ -21,6 +21,7 @@ from grove_tui.llm.local import LocalLLM
 
 NODES = ["Sequence", "Fallback", "GoTo", "Queue", "Wait", "Wander"]
 ROIS = ["pharmacy", "pharmacy_counter", "main_entrance"]
+# The close and kill tests need a long free answer from the embedded model, which this prompt gives.
 MESSAGES = [{"role": "system", "content": "Write a pedestrian scenario as JSON."},
             {"role": "user", "content": "ten patients queue at the pharmacy counter"}]
 
@@ -56,7 +57,7 @@ def test_tiny_qwen3_metadata(tiny_path):
 def test_qwen3_prompt_ends_with_the_exact_empty_think_block(tiny_llm):
     prompt = tiny_llm.render(MESSAGES)
     assert prompt.endswith("<|im_start|>assistant\n<think>\n\n</think>\n\n")
-    assert prompt.startswith("<|im_start|>system\nWrite a pedestrian scenario as JSON.<|im_end|>\n")
+    assert prompt.startswith("<|im_start|>system\n" + MESSAGES[0]["content"] + "<|im_end|>\n")
 
 
 def test_qwen3_sampling_defaults_are_the_non_thinking_ones():
@@ -82,8 +83,7 @@ def test_qwen3_template_that_ignores_the_flag_still_gets_the_think_block():
 
 
 def test_tiny_qwen3_generates_grammar_valid_drafts(tiny_llm):
-    schema = build_draft_schema(NODES, ROIS, max_groups=3, max_count=30, max_depth=3)
-    grammar = schema_to_gbnf(schema)
+    grammar = draft_grammar(NODES, ROIS, max_groups=3, max_count=30, max_depth=3)
     for seed in range(5):
         streamed: list[str] = []
         result = tiny_llm.generate(MESSAGES, grammar=grammar, max_tokens=900, seed=seed, on_token=streamed.append)
@@ -109,7 +109,7 @@ def test_shared_system_prefix_is_reused_from_the_kv_cache(tiny_llm):
 
 
 def test_same_seed_same_output(tiny_llm):
-    grammar = schema_to_gbnf(build_draft_schema(NODES, ROIS, max_groups=2, max_depth=2))
+    grammar = draft_grammar(NODES, ROIS, max_groups=2, max_depth=2)
     first = tiny_llm.generate(MESSAGES, grammar=grammar, max_tokens=600, seed=11, temperature=1.0).text
     second = tiny_llm.generate(MESSAGES, grammar=grammar, max_tokens=600, seed=11, temperature=1.0).text
     assert first == second
@@ -188,7 +188,7 @@ def test_a_killed_worker_is_reported_and_the_next_call_works(embedded_llm):
     with pytest.raises(ModelError, match=r"stopped unexpectedly.*signal 9"):
         embedded_llm.generate(MESSAGES, max_tokens=900, length_retries=0)
     cancel_killer.join()
-    result = embedded_llm.generate(MESSAGES, grammar=schema_to_gbnf(build_draft_schema(NODES, ROIS, max_groups=1, max_depth=2)),
+    result = embedded_llm.generate(MESSAGES, grammar=draft_grammar(NODES, ROIS, max_groups=1, max_depth=2),
                                    max_tokens=200)
     parse_draft(result.text, NODES, ROIS, max_groups=1, max_depth=2)
     assert embedded_llm.worker_pid not in (None, pid)

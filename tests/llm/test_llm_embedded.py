@@ -11,10 +11,9 @@ import random
 import pytest
 
 from grove_tui.bt.manifest import NODES
-from grove_tui.generation.draft import build_draft_schema, parse_draft
+from grove_tui.generation.draft import draft_grammar, parse_draft
 from grove_tui.world import load_world
 from grove_tui.llm.embedded import embedded_model_path
-from grove_tui.llm.grammar import schema_to_gbnf
 from grove_tui.llm.local import LocalLLM
 
 NODE_SETS = {
@@ -34,9 +33,9 @@ VERBS = [
     "{n} {who} wait in the {a} and then go to the {b}",
 ]
 SYSTEM = (
-    "You write pedestrian scenarios for a simulator as JSON only: {\"groups\": [...]}. Each group has "
-    "\"label\" (who), \"count\" (how many), \"spawn\" (where they start) and \"tree\" (what they do, a behavior "
-    "tree of {\"node\": TYPE, ports..., \"children\": [...]}). Use only the node types and places given."
+    "You write pedestrian scenarios for a simulator, one line per group: COUNT LABEL from SPAWN: TREE. COUNT is how "
+    "many, LABEL who they are, SPAWN where they start and TREE what they do, a behavior tree written "
+    "Node(required values, optional port=value, children). Use only the node types and places given."
 )
 
 
@@ -67,12 +66,12 @@ def test_fifty_prompts_all_give_valid_drafts():
     assert len({sentence for sentence, *_ in cases}) == 50
     with LocalLLM(embedded_model_path(), role="bt", n_ctx=2048) as llm:
         for sentence, places, nodes, max_groups in cases:
-            schema = build_draft_schema(nodes, places, max_groups=max_groups, max_count=30, max_depth=2,
-                                        max_children=2)
+            grammar = draft_grammar(nodes, places, max_groups=max_groups, max_count=30, max_depth=2,
+                                    max_children=2)
             messages = [{"role": "system", "content": SYSTEM},
                         {"role": "user", "content": f"Node types: {', '.join(nodes)}\nPlaces: {', '.join(places)}\n"
                                                     f"Scenario: {sentence}"}]
-            result = llm.generate(messages, grammar=schema_to_gbnf(schema), max_tokens=160, seed=0)
+            result = llm.generate(messages, grammar=grammar, max_tokens=160, seed=0)
             assert result.finish_reason == "stop" and result.prompt_tokens > 50
-            # Raises DraftError naming the JSON path if the answer is not a valid draft for this request.
+            # Raises DraftError naming the line and draft path if the answer is not a valid draft for this request.
             parse_draft(result.text, nodes, places, max_groups=max_groups, max_count=30, max_depth=2, max_children=2)

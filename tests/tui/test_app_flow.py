@@ -160,8 +160,7 @@ async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_pat
 
 async def test_a_planning_error_from_the_model_answer_is_shown_with_a_hint(tmp_path):
     # The draft names a spawn that does not exist in this world: the pipeline must refuse it.
-    bad = FakeLLM('{"groups": [{"label": "ghosts", "count": 2, "spawn": "nowhere", '
-                  '"tree": {"node": "GoTo", "target": "nowhere"}}]}')
+    bad = FakeLLM("2 ghosts from nowhere: GoTo(nowhere)")
     app = GroveApp(fake_llm_backend(tmp_path / "runs", bad), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
@@ -210,8 +209,7 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
 async def test_emergency_scenarios_show_velocity_field_arrows_on_the_inspect_map(tmp_path):
     from grove_tui.tui.widgets import map_raster as mr
 
-    draft = ('{"groups": [{"label": "visitors", "count": 8, "spawn": "entrance_lobby", "tree": {"node": "Sequence", '
-             '"children": [{"node": "FollowVelocityField", "exit": "main_entrance"}]}}]}')
+    draft = "8 visitors from entrance_lobby: Sequence(FollowVelocityField(main_entrance))"
     app = GroveApp(fake_llm_backend(tmp_path / "runs", FakeLLM(draft)), test_settings(tmp_path, preset="emergency"))
     async with app.run_test(size=(120, 40)) as pilot:
         inspect = await generate_to_inspect(pilot, app, "eight visitors evacuate the lobby")
