@@ -13,7 +13,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
-from textual.widgets import Footer, Static, Tree
+from textual.widgets import Static, Tree
 from textual.worker import get_current_worker
 
 from grove_tui.errors import describe_error
@@ -26,6 +26,7 @@ from grove_tui.tui.widgets import map_styles as ms
 from grove_tui.tui.widgets.map_legend import MapLegend
 from grove_tui.tui.widgets.map_raster import rasterise_agents
 from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
