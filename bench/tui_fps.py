@@ -25,6 +25,14 @@ Figures (2 shared cores, 500 agents, 120x40, --fps 30):
   17.3 fps against 16.9 at load average 5.1 (ratio 1.02: at that load both reach the ceiling, the
   simulation publishing 20 frames/s at 1x); render+encode 24.7 ms per screen update against 31.6
   (ratio 0.78); 20 of the map's ~29 rows repainted per frame.
+- 2026-11-25 19:03, blank cells merged into the run before them, counters paced: 14.6 fps at load 6.5;
+  --peer (the map before), 2 rounds at load 6-7: 15.0 against 15.9 (machine-bound at that load).
+
+Key latency (--key-latency, 120x40; timed from the Key event to the first painted update of its
+screen, and main measured with `--tree` in the same hour):
+- load 2-3: median 19 / p90 31 ms while the model writes (main: 34 / 46 ms); full GC pauses 17-32 ms
+  (main: 483 and 573 ms, the unfrozen ~800,000-object heap).
+- load 11.6: median 296 / p90 522 ms (main: 415 / 1,215 ms, max 7.0 s in a 6.5 s full collection).
 """
 
 from __future__ import annotations
