@@ -25,6 +25,15 @@ Figures (2 shared cores, 500 agents, 120x40, --fps 30):
   17.3 fps against 16.9 at load average 5.1 (ratio 1.02: at that load both reach the ceiling, the
   simulation publishing 20 frames/s at 1x); render+encode 24.7 ms per screen update against 31.6
   (ratio 0.78); 20 of the map's ~29 rows repainted per frame.
+- 2026-11-25 19:03, blank cells merged into the run before them, counters paced: 14.6 fps at load 6.5;
+  --peer (the map before), 2 rounds at load 6-7: 15.0 against 15.9 (machine-bound at that load).
+
+Key latency (--key-latency, 120x40; timed from the Key event to the first painted update of its
+screen, and main measured with `--tree` in the same hour):
+- load 0.7: median 17 / p90 29 ms while the model writes, idle p90 22 ms (main: 29 / 53 ms, idle p90 73 ms).
+- load 2-3: median 19 / p90 31 ms while the model writes (main: 34 / 46 ms); full GC pauses 17-32 ms
+  (main: 483 and 573 ms, the unfrozen ~800,000-object heap).
+- load 11.6: median 296 / p90 522 ms (main: 415 / 1,215 ms, max 7.0 s in a 6.5 s full collection).
 """
 
 from __future__ import annotations
@@ -221,14 +230,47 @@ async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) ->
         }
 
 
+class GcPauses:
+    """Full (oldest generation) collections while it is on: they stop every thread, the UI's too."""
+
+    def __init__(self) -> None:
+        import gc
+
+        self._gc = gc
+        self._started = 0.0
+        self.pauses: list[float] = []
+
+    def _callback(self, phase: str, info: dict) -> None:
+        if info.get("generation") != 2:
+            return
+        if phase == "start":
+            self._started = time.perf_counter()
+        else:
+            self.pauses.append(time.perf_counter() - self._started)
+
+    def __enter__(self) -> "GcPauses":
+        self._gc.callbacks.append(self._callback)
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._gc.callbacks.remove(self._callback)
+
+
 async def key_latency(prompt: str, presses: int, size: tuple[int, int], model_niceness: int | None = None) -> dict:
-    """Milliseconds from a key press to its screen on the display while the real model writes.
+    """Milliseconds from a key event reaching the app to the first painted update showing its screen.
 
     F1 on the generation screen opens help (a new screen: compose, layout, paint) and Escape closes
-    it; each press is timed until the screen it opens or closes is the app's screen again. Only
-    presses made while a model stage (RoIs or tree synthesis) was running count. `model_niceness`
-    is EngineBackend's (None: the app's default; 0: the model processes keep the app's priority).
+    it. Each key goes in as a terminal's would (the driver posts the Key event to the app from
+    outside its loop), and the time stops at the first screen update painted (and encoded for a
+    terminal, as the fps bench does) while the screen it opens or closes is the app's screen: what
+    a user sees. Pilot's press() is not used to time: it adds two waits for the process to go idle
+    (20 ms each at least, up to 1 s while the pipeline thread works), which is test pacing, not
+    response. Only presses made while a model stage (RoIs or tree synthesis) was running count.
+    `model_niceness` is EngineBackend's (None: the app's default; 0: the model processes keep the
+    app's priority). Full garbage collections during the presses are reported too (they stop the UI).
     """
+    from textual import events
+
     from grove_tui.services.backend import EngineBackend
     from grove_tui.settings import ExportSettings, GenerationSettings, GroveSettings, UISettings
     from grove_tui.tui.app import GroveApp
@@ -236,64 +278,94 @@ async def key_latency(prompt: str, presses: int, size: tuple[int, int], model_ni
     from grove_tui.tui.screens.help import HelpScreen
     from grove_tui.tui.screens.setup import SetupScreen
 
+    painted: list[tuple[float, object]] = []
+
+    class TimedApp(GroveApp):
+        def _display(self, screen, renderable) -> None:  # noqa: ANN001 - Textual's private hook
+            if renderable is not None:
+                renderable.render_segments(self.console)  # the terminal encoding a real terminal pays
+                painted.append((time.perf_counter(), self.screen))
+            super()._display(screen, renderable)
+
     async def until(pilot, condition, timeout: float = 120.0) -> None:
         deadline = time.monotonic() + timeout
         while not condition():
             if time.monotonic() > deadline:
                 raise SystemExit("timed out: " + str(pilot.app.screen))
-            await pilot.pause(0.005)
+            await asyncio.sleep(0.005)
+
+    async def press(app, key: str, screen_type: type, give_up=lambda: False) -> float | None:
+        """Seconds from the key event to the first paint of `screen_type`; None if give_up() came first."""
+        seen = len(painted)
+        started = time.perf_counter()
+        app._driver.send_message(events.Key(key, "\x1b" if key == "escape" else None))
+        deadline = started + 120
+        while True:
+            for when, screen in painted[seen:]:
+                if isinstance(screen, screen_type):
+                    return when - started
+            seen = len(painted)
+            if give_up():
+                return None
+            if time.perf_counter() > deadline:
+                raise SystemExit(f"{key}: {screen_type.__name__} never painted")
+            await asyncio.sleep(0.001)
 
     with tempfile.TemporaryDirectory(prefix="grove-keys-") as tmp:
         settings = GroveSettings(ui=UISettings(preload_models=True),
                                  generation=GenerationSettings(world="hospital", preset="queuing"),
                                  export=ExportSettings(directory=Path(tmp) / "exports"))
         extra = {} if model_niceness is None else {"model_niceness": model_niceness}
-        app = GroveApp(EngineBackend(runs_dir=Path(tmp) / "runs", **extra), settings)
+        app = TimedApp(EngineBackend(runs_dir=Path(tmp) / "runs", **extra), settings)
         latencies: list[float] = []
         async with app.run_test(size=size) as pilot:
             await until(pilot, lambda: isinstance(app.screen, SetupScreen))
             setup = app.screen
             await until(pilot, lambda: "ready to generate" in str(setup.query_one("#models").render()), 600)
+            await pilot.pause(0.5)
             # The same presses with nothing generating: what this machine's load alone costs.
             idle: list[float] = []
-            for _ in range(max(4, presses // 4)):
-                for key, screen_type in (("f1", HelpScreen), ("escape", SetupScreen)):
-                    started = time.perf_counter()
-                    await pilot.press(key)
-                    await until(pilot, lambda t=screen_type: isinstance(app.screen, t))
-                    idle.append(time.perf_counter() - started)
+            with GcPauses() as idle_gc:
+                for _ in range(max(4, presses // 4)):
+                    for key, screen_type in (("f1", HelpScreen), ("escape", SetupScreen)):
+                        idle.append(await press(app, key, screen_type))
+                        await asyncio.sleep(0.05)
             await pilot.press(*prompt, "enter")
             await until(pilot, lambda: isinstance(app.screen, GenerationScreen))
             generation = app.screen
             attempts = 0
-            while len(latencies) < presses and attempts < presses * 20:
-                attempts += 1
-                if not generation._generating:
-                    break
-                if generation._stage not in MODEL_STAGES:
-                    await pilot.pause(0.05)
-                    continue
-                for key, screen_type in (("f1", HelpScreen), ("escape", GenerationScreen)):
-                    started = time.perf_counter()
-                    await pilot.press(key)
-                    # The generation may end while help is open: Escape then lands on the inspect screen,
-                    # and that press was not made while the model wrote.
-                    await until(pilot, lambda t=screen_type: isinstance(app.screen, t) or not generation._generating)
+            with GcPauses() as busy_gc:
+                while len(latencies) < presses and attempts < presses * 40:
+                    attempts += 1
                     if not generation._generating:
                         break
-                    latencies.append(time.perf_counter() - started)
-                if not generation._generating:
-                    break
-                await pilot.pause(0.1)
+                    if generation._stage not in MODEL_STAGES:
+                        await asyncio.sleep(0.05)
+                        continue
+                    for key, screen_type in (("f1", HelpScreen), ("escape", GenerationScreen)):
+                        # The generation may end while help is open: Escape then lands on the inspect
+                        # screen, and that press was not made while the model wrote.
+                        took = await press(app, key, screen_type, give_up=lambda: not generation._generating)
+                        if took is None or not generation._generating:
+                            break
+                        latencies.append(took)
+                        await asyncio.sleep(0.05)
+                    if not generation._generating:
+                        break
+                    await asyncio.sleep(0.1)
             if isinstance(app.screen, GenerationScreen) and generation._generating:
                 generation.action_cancel()
+            frozen = getattr(app, "frozen_heap", None)  # a peer checkout may not freeze
         if not latencies:
             raise SystemExit("the model finished before any key could be timed; use a longer prompt")
         ms = np.array(latencies) * 1000
+        idle_ms = np.array(idle) * 1000
         return {"key_presses": len(ms), "median_ms": round(float(np.median(ms)), 1),
                 "p90_ms": round(float(np.percentile(ms, 90)), 1), "max_ms": round(float(ms.max()), 1),
-                "idle_median_ms": round(float(np.median(idle)) * 1000, 1),
-                "idle_p90_ms": round(float(np.percentile(idle, 90)) * 1000, 1),
+                "idle_median_ms": round(float(np.median(idle_ms)), 1),
+                "idle_p90_ms": round(float(np.percentile(idle_ms, 90)), 1),
+                "full_gc_pauses_ms": [round(p * 1000) for p in idle_gc.pauses + busy_gc.pauses],
+                "frozen_objects": None if frozen is None else frozen.frozen,
                 "load_average": round(os.getloadavg()[0], 2), "terminal": f"{size[0]}x{size[1]}"}
 
 

@@ -17,6 +17,7 @@ from textual.screen import ModalScreen
 from grove_tui.services.backend import EngineBackend, GeneratedScenario
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
 from grove_tui.tui.commands import GroveCommands
+from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
 from grove_tui.settings import GroveSettings, load_history, load_settings, save_history
 
 
@@ -54,6 +55,10 @@ class GroveApp(App[int]):
         self.open_bundle_at_start = open_bundle
         # Completion tokens of each model stage's last run: the generation screen's ETA expects as many.
         self.stage_tokens: dict[str, int] = {}
+        # Freeze the heap once the warm-up has loaded the models, embedder and reader (tui/heap.py);
+        # what that freeze did, for the bench and the tests.
+        self.freeze_heap_when_warm = True
+        self.frozen_heap: FrozenHeap | None = None
 
     def on_mount(self) -> None:
         from grove_tui.tui.screens.setup import SetupScreen
@@ -105,12 +110,17 @@ class GroveApp(App[int]):
     def switch_screen(self, screen: Any) -> Any:
         if not isinstance(screen, ModalScreen):
             self.clear_notifications()
-        return super().switch_screen(screen)
+        result = super().switch_screen(screen)
+        drop_dead_widget_caches()
+        return result
 
     def pop_screen(self) -> Any:
         if not isinstance(self.screen, ModalScreen):
             self.clear_notifications()
-        return super().pop_screen()
+        result = super().pop_screen()
+        # The closed screen's widgets would stay reachable from a Textual memo (tui/heap.py).
+        drop_dead_widget_caches()
+        return result
 
     # shared state ------------------------------------------------------------------------------------
     def remember_prompt(self, prompt: str) -> None:

@@ -24,3 +24,12 @@ def isolated_user_dirs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     return tmp_path
 
 
+
+
+@pytest.fixture(autouse=True)
+def unfrozen_heap():
+    """A test that warms the app up freezes the heap (tui/heap.py); the next test starts unfrozen."""
+    import gc
+
+    yield
+    gc.unfreeze()

@@ -76,3 +76,54 @@ async def test_only_changed_rows_repaint_and_rows_match_a_fresh_map():
         playing.set_agents(None)
         fresh.set_agents(None)
         assert rendered(playing) == rendered(fresh)
+
+
+def cells_as_seen(world_map: MapView) -> list[list[tuple]]:
+    """What a terminal shows in each cell: the character and background, and the ink only where there is some."""
+    rows = []
+    for y in range(world_map.size.height):
+        row = []
+        for segment in world_map.render_line(y):
+            style = segment.style
+            for char in segment.text:
+                blank = char in (" ", chr(mr.BLANK_BRAILLE))
+                ink = None if blank else (style.color, style.bold, style.italic, style.dim)
+                row.append((char, style.bgcolor, style.underline, style.reverse, ink))
+        rows.append(row)
+    return rows
+
+
+async def test_blank_cells_joining_the_run_before_them_change_nothing_on_screen(monkeypatch):
+    built, problems = parse_world(WORLD)
+    assert built is not None, problems
+    app = TwoMaps()
+    async with app.run_test(size=(80, 20)) as pilot:
+        merged = app.query_one("#playing", MapView)
+        plain = app.query_one("#fresh", MapView)
+        for world_map in (merged, plain):
+            world_map.set_world(built)
+        await pilot.pause()
+        rng = np.random.default_rng(5)
+        positions = np.column_stack([rng.uniform(1, 29, 60), rng.uniform(1, 9, 60)])
+        for world_map in (merged, plain):
+            world_map.set_agents(frame(world_map, positions, selected=4))  # the selection has a background
+        merged_cells, merged_segments = cells_as_seen(merged), sum(len(list(merged.render_line(y)))
+                                                                   for y in range(merged.size.height))
+        monkeypatch.setattr(mr, "merge_blank_cells", lambda chars, styles, safe: styles)
+        plain._strip_cache.clear()
+        plain._agent_strips.clear()
+        plain_cells, plain_segments = cells_as_seen(plain), sum(len(list(plain.render_line(y)))
+                                                                for y in range(plain.size.height))
+        assert merged_cells == plain_cells
+        assert merged_segments < 0.8 * plain_segments, (merged_segments, plain_segments)
+
+
+def test_a_blank_cell_takes_the_style_before_it_only_where_both_look_alike():
+    space, dots, empty = ord(" "), mr.BRAILLE_BASE + 0x09, mr.BLANK_BRAILLE
+    safe = np.array([True, True, False])  # style 2 paints a background (the selection)
+    chars = np.array([space, dots, space, empty, dots, space, dots, space, space], dtype=np.uint32)
+    styles = np.array([0, 1, 0, 0, 2, 0, 1, 2, 0], dtype=np.uint8)
+    merged = mr.merge_blank_cells(chars, styles, safe)
+    # a leading blank keeps its style; blanks after a safe cell join it; after the selection they do not;
+    # a blank in a background style is not blank-safe itself and stays
+    assert merged.tolist() == [0, 1, 1, 1, 2, 0, 1, 2, 0]

@@ -14,11 +14,12 @@ from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.screen import Screen
-from textual.widgets import DataTable, Footer, Static
+from textual.widgets import DataTable, Static
 from textual.worker import get_current_worker
 
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
+from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp

@@ -5,15 +5,25 @@ from __future__ import annotations
 import inspect
 
 from rich import box
+from rich.console import Group, RenderableType
+from rich.markdown import Markdown
+from rich.style import Style
 from rich.table import Table
 from rich.text import Text
+from rich.theme import Theme
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Vertical, VerticalScroll
+from textual.cache import LRUCache
+from textual.containers import Vertical
 from textual.dom import DOMNode
+from textual.geometry import Size
 from textual.screen import ModalScreen, Screen
+from textual.scroll_view import ScrollView
+from textual.strip import Strip
 from textual.widget import Widget
-from textual.widgets import Markdown, Static
+
+FOOTER = ("[b]ctrl+p[/b] opens the command palette (every action by name). Remap a key in "
+          "[i]config.yaml[/i] under [i]keymap:[/i] with its binding id. [b]Escape[/b] closes help.")
 
 
 def help_text(node: DOMNode | None) -> str:
@@ -24,6 +34,18 @@ def help_text(node: DOMNode | None) -> str:
         if text:
             return inspect.cleandoc(text)
     return ""
+
+
+def help_markdown(focused: DOMNode | None, screen: DOMNode) -> str:
+    """The page's prose: the focused widget's help (when it has its own), then the screen's."""
+    parts = []
+    widget_help = help_text(focused)
+    screen_help = help_text(screen)
+    if widget_help and widget_help != screen_help:
+        parts.append(widget_help)
+    if screen_help:
+        parts.append(screen_help)
+    return "\n\n".join(parts)
 
 
 def _identities(node: DOMNode) -> set[tuple[str, str]]:
@@ -76,14 +98,113 @@ def keys_renderable(rows: list[tuple[str, str, str]]) -> Table:
     return table
 
 
-class HelpScroll(VerticalScroll, can_focus=True):
-    """The help page; scrolls with the usual keys plus vi's j/k and space, which also work over SSH."""
+PageKey = tuple[str, tuple[tuple[str, str, str], ...], int, tuple[Style, ...]]
+# Rendered pages by (prose, keys, width, styles): a screen's help is the same page every time F1 is
+# pressed there, so the second and later presses only crop lines (the cache is small: a page is a
+# few dozen strips, and there are about ten screens and dialogs).
+_PAGES: LRUCache[PageKey, list[Strip]] = LRUCache(32)
+
+
+class HelpPage(ScrollView, can_focus=True):
+    """The help page as lines rendered once per width and reused (Line API), scrolled by keyboard.
+
+    It used to be a Markdown widget (a widget per block, each styled and laid out) and a Rich table
+    in a Static, rendered twice per open (height, then lines): 60-200 ms of the UI thread per F1 at
+    120x40. Here the prose, the keys table and the footer are rendered to strips in one pass, kept in
+    `_PAGES`, and each visible line is a crop of a cached strip. The usual scroll keys work, plus
+    vi's j/k and space, which also work over SSH.
+    """
 
     BINDINGS = [
         Binding("j", "scroll_down", "Scroll down", show=False, id="help.down"),
         Binding("k", "scroll_up", "Scroll up", show=False, id="help.up"),
         Binding("space", "page_down", "Page down", show=False, id="help.page_down"),
     ]
+    COMPONENT_CLASSES = {"help--heading", "help--code", "help--strong", "help--bullet", "help--key", "help--dim"}
+    DEFAULT_CSS = """
+    HelpPage { scrollbar-gutter: stable; }
+    HelpPage > .help--heading { color: $markdown-h2-color; text-style: $markdown-h2-text-style; }
+    HelpPage > .help--code { color: $text-warning 95%; background: $warning 10%; }
+    HelpPage > .help--strong { text-style: bold; }
+    HelpPage > .help--bullet { color: $text-primary; }
+    HelpPage > .help--key { text-style: bold; }
+    HelpPage > .help--dim { text-style: dim; }
+    """
+
+    def __init__(self, markdown: str, rows: list[tuple[str, str, str]], *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.markdown = markdown
+        self.rows = tuple(rows)
+        self._strips: list[Strip] = []
+        self._width = -1
+
+    def notify_style_update(self) -> None:
+        super().notify_style_update()
+        self._width = -1  # the theme changed: look the page up again under the new styles
+
+    def _styles(self) -> tuple[Style, ...]:
+        return (self.rich_style, *(self.get_component_rich_style(name, partial=True) for name in (
+            "help--heading", "help--code", "help--strong", "help--bullet", "help--key", "help--dim")))
+
+    def page(self, width: int) -> list[Strip]:
+        """The page's lines at `width` columns, rendered once and then taken from the cache."""
+        styles = self._styles()
+        key = (self.markdown, self.rows, width, styles)
+        strips = _PAGES.get(key)
+        if strips is None:
+            strips = self._render_page(width, styles)
+            _PAGES[key] = strips
+        return strips
+
+    def _render_page(self, width: int, styles: tuple[Style, ...]) -> list[Strip]:
+        base, heading, code, strong, bullet, key, dim = styles
+        theme = Theme({
+            "markdown.h1": heading, "markdown.h2": heading, "markdown.h3": heading + strong,
+            "markdown.code": code, "markdown.strong": strong, "markdown.item.bullet": bullet,
+            "markdown.em": Style(italic=True), "markdown.paragraph": Style(), "markdown.text": Style(),
+        })
+        parts: list[RenderableType] = []
+        if self.markdown:
+            parts.extend([Markdown(self.markdown, hyperlinks=False), Text("")])
+        if self.rows:
+            table = keys_renderable(list(self.rows))
+            table.title_style = strong
+            table.columns[0].style = key
+            table.columns[2].style = dim
+            parts.extend([table, Text("")])
+        parts.append(Text.from_markup(FOOTER))
+        console = self.app.console
+        with console.use_theme(theme):
+            lines = console.render_lines(Group(*parts), console.options.update(width=width, height=None),
+                                         style=base, pad=True)
+        return [Strip(line, width) for line in lines]
+
+    def _ensure_page(self) -> None:
+        width = self.scrollable_content_region.width
+        if width <= 0 or width == self._width:
+            return
+        self._width = width
+        self._strips = self.page(width)
+        self.virtual_size = Size(width, len(self._strips))
+
+    def on_resize(self) -> None:
+        self._ensure_page()
+
+    def plain_text(self) -> str:
+        """The page as text at its current width (what the tests read)."""
+        self._ensure_page()
+        return "\n".join(strip.text.rstrip() for strip in self._strips)
+
+    def render_line(self, y: int) -> Strip:
+        # Built here on the first paint too, so F1 paints the page at once rather than an empty frame
+        # before the resize event arrives.
+        self._ensure_page()
+        scroll_x, scroll_y = self.scroll_offset
+        row = scroll_y + y
+        width = self.scrollable_content_region.width
+        if row >= len(self._strips):
+            return Strip.blank(width, self.rich_style)
+        return self._strips[row].crop_extend(scroll_x, scroll_x + width, self.rich_style)
 
 
 class HelpScreen(ModalScreen[None]):
@@ -95,22 +216,8 @@ class HelpScreen(ModalScreen[None]):
         self._screen = screen
 
     def compose(self) -> ComposeResult:
-        parts = []
-        widget_help = help_text(self._focused)
-        screen_help = help_text(self._screen)
-        if widget_help and widget_help != screen_help:
-            parts.append(widget_help)
-        if screen_help:
-            parts.append(screen_help)
-        rows = key_rows(self._screen)
-        with Vertical(id="help-dialog"), HelpScroll(id="help-scroll"):
-            yield Markdown("\n\n".join(parts), id="help-text")
-            if rows:
-                yield Static(keys_renderable(rows), id="help-keys")
-            yield Static(Text.from_markup(
-                "[b]ctrl+p[/b] opens the command palette (every action by name). Remap a key in "
-                "[i]config.yaml[/i] under [i]keymap:[/i] with its binding id. [b]Escape[/b] closes help."),
-                id="help-footer")
+        with Vertical(id="help-dialog"):
+            yield HelpPage(help_markdown(self._focused, self._screen), key_rows(self._screen), id="help-scroll")
 
     def on_mount(self) -> None:
         self.query_one("#help-scroll").focus()

@@ -12,7 +12,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
-from textual.widgets import Footer, Static, TextArea, Tree
+from textual.widgets import Static, TextArea, Tree
 
 from grove_tui.bt.ports import parse_point_list
 from grove_tui.errors import describe_error
@@ -23,6 +23,7 @@ from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summ
 from grove_tui.tui.widgets.map_raster import Overlay
 from grove_tui.tui.widgets.map_legend import FIELD, INSPECT_SYMBOLS, ROBOT_PATH, MapLegend
 from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp

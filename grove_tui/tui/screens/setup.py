@@ -10,13 +10,15 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
-from textual.widgets import Button, Footer, Input, Label, OptionList, Static
+from textual.widgets import Button, Input, Label, OptionList, Static
 from textual.widgets.option_list import Option
 
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.map_view import MapView
 from grove_tui.tui.widgets.prompt_input import PromptInput
+from grove_tui.tui.heap import freeze_heap
+from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
     from grove_tui.services.backend import WarmUpStatus
@@ -143,6 +145,10 @@ whether it is loaded yet.
             if status.step == "retrieval":
                 embedder = {"running": "loading", "done": "ready"}.get(status.state, status.error or "failed")
             loading = status.step == "models" and status.state == "running"
+            if status.step == "ready" and status.state == "done" and self.grove.freeze_heap_when_warm:
+                # Everything long-lived is loaded now: freeze it before the user starts typing, so
+                # no later collection pauses the UI thread to walk it (tui/heap.py).
+                self.grove.frozen_heap = freeze_heap()
             self.post_message(msg.ModelsChanged(backend.model_status(), loading=loading, embedder=embedder,
                                                 warm_up="" if status.step == "ready" and status.state == "done" else status.text))
 

@@ -13,12 +13,11 @@ from textual.geometry import Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
+from grove_tui.tui.widgets import map_raster as mr
 from grove_tui.tui.widgets import map_styles as ms
 
 if TYPE_CHECKING:
     import numpy as np
-
-    from grove_tui.tui.widgets import map_raster as mr
 
 STYLE_CLASSES = {
     ms.FLOOR: "map--floor",
@@ -102,6 +101,7 @@ path, and the selection highlighted with `◆`.
         self._styles: np.ndarray | None = None
         self._strip_cache: LRUCache[int, Strip] = LRUCache(512)
         self._palette: list[Style] | None = None
+        self._blank_safe: np.ndarray | None = None  # per style: a blank cell in it looks like the floor
         self._base_style: Style | None = None
         self._agent_rows: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
         # Per map row: the bytes of its agents' cells, and the strip last built for them. A frame
@@ -204,8 +204,6 @@ path, and the selection highlighted with `◆`.
             self._agent_strips.clear()
             self.refresh()
             return
-        from grove_tui.tui.widgets import map_raster as mr
-
         cols = max(10, self.size.width or 40)
         rows = max(5, self.size.height or 20)
         self._fit_for = (self.size.width, self.size.height)
@@ -224,8 +222,11 @@ path, and the selection highlighted with `◆`.
 
     def _styles_palette(self) -> list[Style]:
         if self._palette is None:
+            import numpy as np
+
             base = self._rich_base_style()
             self._palette = [base + self.get_component_rich_style(STYLE_CLASSES[i]) for i in range(ms.STYLE_COUNT)]
+            self._blank_safe = np.array([blank_looks_alike(style, base) for style in self._palette], dtype=bool)
         return self._palette
 
     def _rich_base_style(self) -> Style:
@@ -236,11 +237,11 @@ path, and the selection highlighted with `◆`.
         return self._base_style
 
     def _strip_for(self, chars_row: np.ndarray, styles_row: np.ndarray) -> Strip:
-        from grove_tui.tui.widgets import map_raster as mr
-
+        # (map_raster is imported with the module: an import statement per row cost as much as the row's numpy.)
         palette = self._styles_palette()
+        assert self._blank_safe is not None  # set with the palette
         text = mr.row_text(chars_row)
-        starts, ends, styles = mr.row_run_lists(styles_row)
+        starts, ends, styles = mr.row_run_lists(mr.merge_blank_cells(chars_row, styles_row, self._blank_safe))
         # tuple.__new__ skips Segment's Python-level constructor (defaults), the costliest call here.
         new, segment = tuple.__new__, Segment
         return Strip([new(segment, (text[s:e], palette[k], None)) for s, e, k in zip(starts, ends, styles)], len(text))
@@ -278,6 +279,13 @@ path, and the selection highlighted with `◆`.
         agents = self._agent_rows.get(row)
         strip = self._static_strip(row) if agents is None else self._agent_strip(row, agents)
         return strip.crop_extend(scroll_x, scroll_x + width, base)
+
+
+def blank_looks_alike(style: Style, base: Style) -> bool:
+    """Whether a blank cell in `style` looks exactly like one in `base`: same background, no lines."""
+    return (style.bgcolor == base.bgcolor and not style.reverse and not style.underline and not style.underline2
+            and not style.strike and not style.overline and not style.blink and not style.blink2
+            and not style.frame and not style.encircle and style.link is None)
 
 
 def agent_row_key(cols: np.ndarray, chars: np.ndarray, styles: np.ndarray) -> bytes:
