@@ -359,7 +359,9 @@ def _spawn(group: GroupReading, d: DraftGroup | None, world: Any, default: str, 
 # ---- the grounding report -------------------------------------------------------------------
 
 _INTENT_NODES = {"queue": {"Queue"}, "converse": {"Converse", "ConversationFormation"}, "wander": {"Wander"},
-                 "wait": {"Wait", "StopAndWaitTimerAction", "Queue"}, "walk": {"GoTo", "Wander"},
+                 "wait": {"Wait", "StopAndWaitTimerAction", "Queue"},
+                 # with no destination named, walking along the evacuation field (to the nearest exit) is walking
+                 "walk": {"GoTo", "Wander", "FollowVelocityField"},
                  "follow": {"GoTo", "FollowAgent", "Wander"}, "evacuate": {"GoTo", "FollowVelocityField"}}
 # A walk with a destination must walk there; wandering is a walk only when no destination is named.
 

@@ -185,3 +185,20 @@ def test_the_report_carries_the_place_spelling_corrections(hospital, grid):
     assert report.corrections == reading.corrections and report.ok, report.lines()
     assert any(line.startswith("~ correction: read 'cafetaria'") for line in report.lines())
     assert GroundingReport.from_dict(report.to_dict()) == report
+
+
+def test_walking_out_with_no_destination_is_honoured_by_the_evacuation_field(hospital, grid):
+    # In an emergency every mover follows the field to the nearest exit; a sentence that says they
+    # walk ("get out", "leave") and names no destination is then played as it asks.
+    prompt = "Four visitors in the cafeteria get out of the building."
+    preset = load_preset("emergency")
+    reading = read_prompt(prompt, hospital)
+    assert reading.groups[0].intent == "walk" and not reading.groups[0].destination
+    selection = select_rois(hospital, preset, prompt, reading=reading)
+    draft = Draft((DraftGroup("visitors", 4, "cafeteria", DraftNode("FollowVelocityField", {})),))
+    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("FollowVelocityField",),
+                       reading=reading)
+    assert any(n.node == "FollowVelocityField" for n in post.groups[0].tree.walk())
+    report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
+    behavior = next(c for c in report.groups[0].checks if c.field == "behavior")
+    assert behavior.ok, report.lines()
