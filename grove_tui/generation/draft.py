@@ -43,7 +43,7 @@ from typing import Any
 
 from grove_tui.errors import DraftError
 from grove_tui.limits import MAX_GROUP_COUNT
-from grove_tui.llm.grammar import gbnf_literal
+from grove_tui.llm.grammar import GbnfRules, gbnf_literal
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
@@ -195,30 +195,6 @@ def number_text(value: float) -> str:
 
 # ---- the grammar -------------------------------------------------------------------------------
 
-class _Rules:
-    """GBNF rules by name, sharing one rule between identical bodies."""
-
-    def __init__(self) -> None:
-        self.rules: dict[str, str] = {}
-        self.by_body: dict[str, str] = {}
-
-    def add(self, hint: str, body: str) -> str:
-        existing = self.by_body.get(body)
-        if existing is not None:
-            return existing
-        base = re.sub(r"[^A-Za-z0-9]+", "-", hint).strip("-").lower() or "r"
-        name, counter = base, 1
-        while name in self.rules or name == "root":
-            counter += 1
-            name = f"{base}-{counter}"
-        self.rules[name] = body
-        self.by_body[body] = name
-        return name
-
-    def text(self, root: str) -> str:
-        return f"root ::= {root}\n" + "".join(f"{name} ::= {body}\n" for name, body in self.rules.items())
-
-
 def _bounded(item: str, low: int, high: int, separator: str = "") -> str:
     """`item` low..high times (low >= 1); the optional tail nests so every length parses one way and ends."""
     tail = ""
@@ -236,7 +212,7 @@ class _GrammarBuilder:
     def __init__(self, specs: dict[str, Any], rois: list[str], max_count: int, max_depth: int, max_children: int):
         self.specs, self.rois = specs, rois
         self.max_count, self.max_depth, self.max_children = max_count, max_depth, max_children
-        self.rules = _Rules()
+        self.rules = GbnfRules()
         self.sep = self.rules.add("sep", '"," " "?')
         self.place = self.rules.add("place", _alternatives(rois))
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 from grove_tui.errors import GrammarError
@@ -74,37 +75,53 @@ def json_literal(value: Any) -> str:
     raise GrammarError(f"enum/const value {value!r} is not a JSON scalar")
 
 
+class GbnfRules:
+    """GBNF rules by name, one rule shared between identical bodies (the JSON-schema grammar here and
+    the draft syntax's grammar in generation/draft.py both name their rules this way)."""
+
+    def __init__(self, reserved: Iterable[str] = ("root",)) -> None:
+        self.rules: dict[str, str] = {}
+        self.by_body: dict[str, str] = {}
+        self.reserved = frozenset(reserved)
+
+    def add(self, hint: str, body: str) -> str:
+        """Name `body` as a rule (a name made from `hint`), or return the name it already has."""
+        existing = self.by_body.get(body)
+        if existing is not None:
+            return existing
+        base = re.sub(r"[^A-Za-z0-9]+", "-", hint).strip("-").lower() or "r"
+        name, counter = base, 1
+        while name in self.rules or name in self.reserved:
+            counter += 1
+            name = f"{base}-{counter}"
+        self.rules[name] = body
+        self.by_body[body] = name
+        return name
+
+    def text(self, root: str, extra: Mapping[str, str] | None = None) -> str:
+        """The grammar: `root`, the named rules, then `extra` (rules whose names are reserved)."""
+        rules = {"root": root, **self.rules, **(extra or {})}
+        return "".join(f"{name} ::= {body}\n" for name, body in rules.items())
+
+
 class _Converter:
     def __init__(self, schema: dict[str, Any]) -> None:
         if not isinstance(schema, dict):
             raise GrammarError(f"schema must be a JSON object, got {type(schema).__name__}")
         self.schema = schema
         self.defs: dict[str, Any] = schema.get("$defs", {})
-        self.rules: dict[str, str] = {}
-        self.rule_by_body: dict[str, str] = {}
+        self.named = GbnfRules(reserved=("root", "ws"))
         self.def_rules: dict[str, str] = {}
         self.resolving: list[str] = []
 
     def convert(self) -> str:
         root_schema = {key: value for key, value in self.schema.items() if key != "$defs"}
         body = self.expression(root_schema, "root")
-        self.rules = {"root": body, **self.rules}
-        self.rules["ws"] = '" "?'
-        return "".join(f"{name} ::= {rule}\n" for name, rule in self.rules.items())
+        return self.named.text(body, {"ws": '" "?'})
 
     def add_rule(self, hint: str, body: str) -> str:
         """Name `body` as a rule, sharing one rule between identical bodies."""
-        existing = self.rule_by_body.get(body)
-        if existing is not None:
-            return existing
-        base = re.sub(r"[^A-Za-z0-9]+", "-", hint).strip("-").lower() or "r"
-        name, counter = base, 1
-        while name in self.rules or name in ("root", "ws"):
-            counter += 1
-            name = f"{base}-{counter}"
-        self.rules[name] = body
-        self.rule_by_body[body] = name
-        return name
+        return self.named.add(hint, body)
 
     def expression(self, schema: Any, hint: str) -> str:
         """A GBNF expression matching `schema`; composite parts become named rules."""
