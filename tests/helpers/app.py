@@ -213,6 +213,16 @@ async def first_frame(pilot, sim: SimulationScreen, timeout: float = 60) -> None
 
 
 
+async def generate_to_simulation(pilot, app: GroveApp) -> SimulationScreen:
+    """Generate the default prompt, open the simulation (`p`) and wait for its first frame."""
+    await generate_to_inspect(pilot, app)
+    await pilot.press("p")
+    await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
+    sim = app.screen
+    await first_frame(pilot, sim)
+    return sim
+
+
 def no_blink(app: GroveApp) -> None:
     for widget in app.screen.query(Input):
         widget.cursor_blink = False

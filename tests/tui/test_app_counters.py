@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from helpers.app import first_frame, generate_to_inspect
+from helpers.app import generate_to_simulation
 from helpers.app import (
     fake_llm_backend,
     test_settings,
@@ -15,7 +15,7 @@ from textual.widgets import Static
 
 from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.export import ExportResultScreen
-from grove_tui.tui.screens.simulation import LIVE_METRICS, SimulationScreen, metric_text
+from grove_tui.tui.screens.simulation import LIVE_METRICS, metric_text
 
 pytestmark = pytest.mark.anyio
 
@@ -23,11 +23,7 @@ pytestmark = pytest.mark.anyio
 async def test_counters_shown_equal_the_exported_metrics_json_of_the_same_run(tmp_path):
     app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(120, 40)) as pilot:
-        await generate_to_inspect(pilot, app)
-        await pilot.press("p")
-        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
-        sim = app.screen
-        await first_frame(pilot, sim)
+        sim = await generate_to_simulation(pilot, app)
         await pilot.press("f", "space")  # as fast as possible: queues form and people get served
         await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 30.0, timeout=120, what="30 s simulated")
         await pilot.press("space")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import threading
 
 import pytest
-from helpers.app import first_frame, generate_to_inspect
+from helpers.app import generate_to_inspect, generate_to_simulation
 from helpers.app import (
     fake_llm_backend,
     test_settings,
@@ -17,7 +17,6 @@ from grove_tui.services.backend import EXPORTERS
 from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.export import ExportProgressScreen, ExportResultScreen
 from grove_tui.tui.screens.inspect import InspectScreen
-from grove_tui.tui.screens.simulation import SimulationScreen
 
 pytestmark = pytest.mark.anyio
 
@@ -39,11 +38,7 @@ async def test_export_while_playing_pauses_visibly_shows_progress_and_resumes(tm
     gate, started = threading.Event(), threading.Event()
     app = GroveApp(gated_backend(tmp_path / "runs", gate, started), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
-        await generate_to_inspect(pilot, app)
-        await pilot.press("p")
-        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
-        sim = app.screen
-        await first_frame(pilot, sim)
+        sim = await generate_to_simulation(pilot, app)
         await pilot.press("space")
         await wait_until(pilot, lambda: sim.controller.latest.playing and sim.controller.latest.frame.t > 0.5,
                          what="playing")

@@ -10,6 +10,7 @@ import pytest
 from helpers.app import (
     first_frame,
     generate_to_inspect,
+    generate_to_simulation,
     PROMPT,
     FakeLLM,
     fake_llm_backend,
@@ -125,11 +126,7 @@ async def test_generate_inspect_play_and_export(tmp_path):
 async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_path):
     app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
-        await generate_to_inspect(pilot, app)
-        await pilot.press("p")
-        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation screen")
-        sim = app.screen
-        await first_frame(pilot, sim)
+        sim = await generate_to_simulation(pilot, app)
         step0 = sim.controller.latest.frame.step
         await pilot.press("n", "n", "n")
         await wait_until(pilot, lambda: sim.controller.latest.frame.step == step0 + 3, what="three steps")

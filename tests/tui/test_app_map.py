@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from helpers.app import first_frame, generate_to_inspect
+from helpers.app import generate_to_inspect, generate_to_simulation
 from helpers.app import (
     fake_llm_backend,
     map_laid_out,
@@ -13,7 +13,6 @@ from helpers.app import (
 )
 
 from grove_tui.tui.app import GroveApp
-from grove_tui.tui.screens.simulation import SimulationScreen
 from grove_tui.tui.widgets.map_legend import MapLegend
 from grove_tui.tui.widgets.map_view import MapView
 
@@ -50,11 +49,7 @@ async def test_zoom_centres_on_the_selected_agent_and_the_legend_names_the_symbo
 async def test_simulation_legend_names_the_colours_of_each_mode(tmp_path):
     app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
-        await generate_to_inspect(pilot, app)
-        await pilot.press("p")
-        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
-        sim = app.screen
-        await first_frame(pilot, sim)
+        sim = await generate_to_simulation(pilot, app)
         legend = sim.query_one("#sim-legend", MapLegend)
         label = sim.generated.scenario.agents[0].label
         assert str(legend.render()).startswith("group: ") and f"⣿{label}" in str(legend.render())

@@ -94,9 +94,9 @@ async def test_the_heap_is_frozen_once_the_warm_up_is_done(tmp_path):
 async def test_the_counters_take_a_bounded_share_of_the_time_however_long_they_take(tmp_path):
     import time
 
-    from helpers.app import first_frame, generate_to_inspect
+    from helpers.app import generate_to_simulation
 
-    from grove_tui.tui.screens.simulation import METRICS_DUTY, SimulationScreen
+    from grove_tui.tui.screens.simulation import METRICS_DUTY
 
     backend = fake_llm_backend(tmp_path / "runs")
     real = backend.run_metrics
@@ -111,11 +111,7 @@ async def test_the_counters_take_a_bounded_share_of_the_time_however_long_they_t
     backend.run_metrics = slow_metrics
     app = GroveApp(backend, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
-        await generate_to_inspect(pilot, app)
-        await pilot.press("p")
-        await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
-        sim = app.screen
-        await first_frame(pilot, sim)
+        sim = await generate_to_simulation(pilot, app)
         await pilot.press("space")
         await wait_until(pilot, lambda: len(started) >= 2, timeout=30, what="two recomputations")
         # The next one waited METRICS_DUTY times the last one's duration (the 1 s timer alone would
