@@ -50,11 +50,13 @@ import unicodedata
 import zlib
 from collections.abc import Sequence
 from functools import lru_cache
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word, known_word, parse
+from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,  # noqa: F401
+                                      GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.places import PlaceIndex, PlaceMatch, place_index
 from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
@@ -62,105 +64,6 @@ from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 # letter after the first word of a name ("ward b").
 _IDENTIFIER = re.compile(r"[a-z]?\d+[a-z]?|[a-z]")
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
-COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
-INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
-ROBOT_INTERACTIONS = ("look", "approach", "follow", "avoid", "block")
-
-
-@dataclass(frozen=True)
-class Count:
-    kind: str  # one of COUNT_KINDS
-    value: int  # the head count the scenario will use (seeded choice inside [low, high] when not exact)
-    low: int
-    high: int
-    parties: int | None = None  # "three families of four": parties=3, party_size=4, value=12
-    party_size: int | None = None
-
-    def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
-
-    @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> Count:
-        return cls(str(data["kind"]), int(data["value"]), int(data["low"]), int(data["high"]),
-                   data.get("parties"), data.get("party_size"))
-
-
-@dataclass(frozen=True)
-class GroupReading:
-    who: str  # the noun phrase as written ("patients", "a family", "a few others")
-    label: str  # short label, never a number word nor a node name ("patient", "family")
-    count: Count
-    intent: str  # one of INTENTS
-    robot_interaction: str | None = None  # one of ROBOT_INTERACTIONS
-    robot_reaction: str | None = None  # HuNavSim behavior type for the interaction
-    start: str | None = None  # world place name where they start
-    destination: str | None = None  # where they go
-    location: str | None = None  # where they are, for stationary intents
-    via: tuple[str, ...] = ()  # "through", "via", "past"
-    purpose: str | None = None  # a purpose that is not a place: "to check in", "for coffee"
-    wait_seconds: float | None = None  # "for five minutes" -> 300.0
-    together: bool = False  # "together", "as a group", families, couples
-    pace: str = "normal"  # "slow" | "normal" | "fast"
-    relation: str | None = None  # "subset_of:0", "others_of:0", "more_of:0"
-    follows: str | None = None  # whom a "follow" group follows, as written ("the nurse")
-    text: str = ""  # the prompt words this group owns
-
-    def to_dict(self) -> dict[str, Any]:
-        data = asdict(self)
-        data["count"] = self.count.to_dict()
-        data["via"] = list(self.via)
-        return data
-
-    @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupReading:
-        values = dict(data)
-        values["count"] = Count.from_dict(values["count"])
-        values["via"] = tuple(values.get("via", ()))
-        known = {f for f in cls.__dataclass_fields__}
-        return cls(**{k: v for k, v in values.items() if k in known})
-
-
-@dataclass(frozen=True)
-class PromptReading:
-    prompt: str
-    groups: tuple[GroupReading, ...]
-    unknown_places: tuple[str, ...] = ()  # noun phrases in a PLACE role that the world does not have
-    notes: tuple[str, ...] = ()  # what could not be honoured, said plainly
-    corrections: tuple[str, ...] = ()  # misspelt place words read as the world's ("read 'kitchn' as 'kitchen'")
-
-    def to_dict(self) -> dict[str, Any]:
-        return {"prompt": self.prompt, "groups": [g.to_dict() for g in self.groups],
-                "unknown_places": list(self.unknown_places), "notes": list(self.notes),
-                "corrections": list(self.corrections)}
-
-    @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> PromptReading:
-        return cls(str(data.get("prompt", "")), tuple(GroupReading.from_dict(g) for g in data.get("groups", ())),
-                   tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())),
-                   tuple(data.get("corrections", ())))
-
-    @property
-    def total(self) -> int:
-        """People in the scenario: every group, less the subsets counted inside their parent."""
-        return sum(effective_counts(self).values())
-
-
-def effective_counts(reading: PromptReading) -> dict[int, int]:
-    """Group index -> people of its own: a parent loses the members of its subsets ("one of them")
-    and of "the others" read as the rest of it; a parent left with nobody is absent."""
-    counts = {i: g.count.value for i, g in enumerate(reading.groups)}
-    for i, g in enumerate(reading.groups):
-        kind, _, parent = (g.relation or "").partition(":")
-        if kind == "subset_of" or (kind == "others_of" and g.count.kind == "implied" and parent.isdigit()
-                                   and _has_subset(reading, int(parent))):
-            p = int(parent)
-            if p in counts:
-                counts[p] = max(0, counts[p] - g.count.value)
-    return {i: c for i, c in counts.items() if c > 0}
-
-
-def _has_subset(reading: PromptReading, parent: int) -> bool:
-    return any(g.relation == f"subset_of:{parent}" for g in reading.groups)
 
 
 # ---- reading --------------------------------------------------------------------------------
