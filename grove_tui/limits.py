@@ -31,6 +31,17 @@ MAX_NUMBER_DIGITS = 1000
 # emergency preset allows this many, spread over the building when the prompt places them nowhere.
 # 500 is the dense hospital evacuation of bench/evacuation.py (docs/HOSTILE.md).
 MAX_GROUP_COUNT = 500
+# Groups in one scenario: the draft grammar's bound (generation/draft.py), so generation never writes
+# more than MAX_GROUPS * MAX_GROUP_COUNT people; an imported scenario is held to the same.
+MAX_GROUPS = 16
+MAX_SCENARIO_AGENTS = MAX_GROUPS * MAX_GROUP_COUNT
+
+# Coordinates in metres a scenario can use: the bound of the behavior-tree ports that carry points
+# (GoTo x/y, bt/manifest.py). A world, an imported scenario or a bundle beyond it would load and then
+# fail at generation ("GoTo port x above maximum 10000"), so every reader refuses it up front.
+MAX_COORDINATE = 10_000.0
+# Grids and velocity fields pad the world by a few cells: their stored origins may lie this far out.
+MAX_PADDED_COORDINATE = MAX_COORDINATE + 100.0
 
 YamlPath = tuple[str | int, ...]
 
