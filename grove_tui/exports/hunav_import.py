@@ -44,7 +44,7 @@ OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a
 MAX_AGENTS_YAML_BYTES = 8 * 1024 * 1024
 # `map` and `yaml_base_name` become file names (world/<map>.yaml, <base>__agent_<id>_bt.xml).
 PLAIN_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}$")
-SHOWN_PROBLEMS = 5  # problems printed in the one-line error; the count of the rest follows
+SHOWN_PROBLEMS = 3  # problems printed in the one-line error; the count of the rest follows
 
 
 def _open_floor_world(name: str, points: list[tuple[float, float]]) -> str:
@@ -83,11 +83,12 @@ def _grove_names(xml: bytes, source: str) -> str:
     return write_tree(document)
 
 
-def _one_line(problems: list[str]) -> str:
-    """The first problems, then how many more: a million-agent file must not give a 128 MB error line."""
-    shown = "; ".join(problems[:SHOWN_PROBLEMS])
+def _one_line(problems: list[str], source: Path) -> str:
+    """The file once, its first problems, then how many more: a million-agent file gave a 128 MB line."""
+    prefix = f"{source}: "
+    shown = "; ".join(problem.removeprefix(prefix) for problem in problems[:SHOWN_PROBLEMS])
     more = len(problems) - SHOWN_PROBLEMS
-    return shown + (f" (and {more:,} more problems)" if more > 0 else "")
+    return prefix + shown + (f" (and {more:,} more problems)" if more > 0 else "")
 
 
 def _short(value: Any) -> str:
@@ -114,7 +115,7 @@ def _read_document(source: Path) -> dict[str, Any]:
                                f"{MAX_SCENARIO_AGENTS:,} (the most generation writes)")
     problems = check_loader_parameters(document, str(source))
     if problems:
-        raise HunavImportError(_one_line(problems), hint="HuNavSim's own loader would stop on this file too.")
+        raise HunavImportError(_one_line(problems, source), hint="HuNavSim's own loader would stop on this file too.")
     assert isinstance(params, dict)  # check_loader_parameters refuses a file without it
     return params
 
@@ -176,9 +177,9 @@ def _agent_fields(name: str, entry: dict[str, Any], global_goals: dict[int, tupl
     }
 
 
-def _check_groups(agents: list[Any], source: Path) -> None:
+def _check_groups(groups: list[int], source: Path) -> None:
     """Generation's bounds: at most MAX_GROUP_COUNT people share a group."""
-    sizes = Counter(agent.group for agent in agents if agent.group >= 0)
+    sizes = Counter(group for group in groups if group >= 0)
     crowded = [(group, size) for group, size in sizes.items() if size > MAX_GROUP_COUNT]
     if crowded:
         group, size = crowded[0]
@@ -203,16 +204,21 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
                     for k, v in (params.get("global_goals") or {}).items()}
 
     folders = [Path(trees_dir)] if trees_dir is not None else [source.parent, source.parent.parent / "behavior_trees"]
-    agents: list[AgentSpec] = []
-    trees: dict[str, str] = {}
-    points: list[tuple[float, float]] = list(global_goals.values())
+    # Every agent's values first (cheap), then the trees (parsed one by one): a bad value is refused
+    # before any tree is read.
+    checked: list[tuple[str, int, dict[str, Any]]] = []
     for name in params.get("agents") or []:
         entry = params[name]
         agent_id = entry.get("id", -1)
         if not 1 <= agent_id <= 10 * MAX_SCENARIO_AGENTS:
             raise HunavImportError(f"{source}: {name}.id is {_short(agent_id)}; GROVE numbers agents from 1 "
                                    f"(0 is the robot) up to {10 * MAX_SCENARIO_AGENTS}")
-        fields = _agent_fields(name, entry, global_goals, source)
+        checked.append((name, agent_id, _agent_fields(name, entry, global_goals, source)))
+    _check_groups([fields["group"] for _name, _id, fields in checked], source)
+    agents: list[AgentSpec] = []
+    trees: dict[str, str] = {}
+    points: list[tuple[float, float]] = list(global_goals.values())
+    for name, agent_id, fields in checked:
         path = _tree_file(folders, base, agent_id)
         try:
             xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
@@ -226,7 +232,6 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
         rel = f"trees/agent_{agent_id}.xml"
         trees[rel] = xml
         agents.append(AgentSpec(id=agent_id, zone="", tree=rel, label=name, **fields))
-    _check_groups(agents, source)
 
     world_text = None
     if world is not None:
