@@ -28,6 +28,7 @@ import contextlib
 import json
 import logging
 import math
+import os
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -339,10 +340,16 @@ class _WriteFailures(logging.Handler):
     def __init__(self) -> None:
         super().__init__(logging.ERROR)
         self.first: str | None = None
+        self.reason: str | None = None  # the operating system's words, when a report carries them
 
     def emit(self, record: logging.LogRecord) -> None:
+        text = record.getMessage()
         if self.first is None:
-            self.first = record.getMessage()
+            self.first = text
+        if self.reason is None:
+            found = re.search(r'message: "([^"]+)"', text)
+            if found:
+                self.reason = found.group(1)
 
 
 @contextlib.contextmanager
@@ -359,10 +366,18 @@ def _watch_writes() -> Iterator[_WriteFailures]:
         logger.propagate = propagate
 
 
-def _write_failure(out: Path, detail: str) -> OutputError:
-    """One line for what foxglove-sdk said (its Rust io::Error's message when there is one)."""
+def _write_failure(out: Path, watch: _WriteFailures, raised: str = "") -> OutputError:
+    """One line for what foxglove-sdk said (the operating system's words when it passed them on)."""
+    detail = watch.reason or watch.first or raised
     found = re.search(r'message: "([^"]+)"', detail)
-    reason = found.group(1) if found else detail.splitlines()[0][:160]
+    reason = found.group(1) if found else (detail.splitlines() or ["unknown error"])[0][:160]
+    reason = reason.removeprefix("FoxgloveError: ")
+    try:  # the SDK does not always pass the system's reason on: say so when the disk is the cause
+        space = os.statvfs(out.parent)
+        if space.f_bavail * space.f_frsize < 1 << 20:
+            reason = f"No space left on device ({reason})"
+    except OSError:
+        pass
     return OutputError(f"{out}: cannot write it: {reason}")
 
 
@@ -373,7 +388,7 @@ def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path) -
         except RuntimeError as exc:  # foxglove-sdk's FoxgloveError, raised when closing a failed file
             if watch.first is None and "FoxgloveError" not in str(exc):
                 raise
-            raise _write_failure(out, watch.first or str(exc)) from None
+            raise _write_failure(out, watch, str(exc)) from None
 
 
 def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
@@ -460,7 +475,7 @@ def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
                     rotation=m.Quaternion(x=0.0, y=0.0, z=math.sin(ryaw / 2), w=math.cos(ryaw / 2)))]), ns)
             count += 1
             if watch.first is not None:
-                raise _write_failure(out, watch.first)
+                raise _write_failure(out, watch)
             frame = next(frames, None)
         while event is not None:
             log_event(event)
