@@ -63,8 +63,16 @@ class Clauses:
         self.places = places
 
     def read(self, toks: Sequence[int], excluded: set[int], scene: bool = False,
-             robot_after: int | None = None) -> Clause:
-        """The clause of the words `toks` less `excluded` (mentions, the robot's own clauses)."""
+             robot_after: int | None = None, owner: str | None = None) -> Clause:
+        """The clause of the words `toks` less `excluded` (mentions, the robot's own clauses), said of
+        people of the kind `owner` ("their room" is a room of theirs)."""
+        before, self.places.owner = self.places.owner, owner
+        try:
+            return self._read(toks, excluded, scene, robot_after)
+        finally:
+            self.places.owner = before
+
+    def _read(self, toks: Sequence[int], excluded: set[int], scene: bool, robot_after: int | None) -> Clause:
         s = self.s
         own = [i for i in toks if i not in excluded]
         scan = _Scan(Clause(), own)

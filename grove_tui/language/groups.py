@@ -54,8 +54,8 @@ class Groups:
         # The robot's own clauses belong to no group: a group's places never come from them.
         excluded = {i for m in mentions for i in range(m.first, m.last + 1)} | robot_tokens
         scenes = self._scenes(mentions, spans, excluded, robot_tokens)
-        clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses))
-                   for a, b in spans]
+        clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
+                                     owner=m.label) for m, (a, b) in zip(mentions, spans)]
         for k, m in enumerate(mentions):
             if m.zone_place is not None:  # "half the open office goes ...": where they are
                 clauses[k].places.insert(0, m.zone_place)

@@ -129,6 +129,21 @@ PERSON_NOUNS = frozenset(
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
 )
+# Kinds of people a place can belong to, by the kind it counts as: "their room" said of teenagers
+# is the kids' room, "his office" said of the boss is the manager's office.
+OWNER_KINDS: dict[str, str] = {}
+for _kind, _people in {
+    "child": "child kid teenager teen son daughter boy girl toddler baby youngster schoolchild pupil infant",
+    "parent": "parent mum mom dad mother father husband wife",
+    "manager": "manager director boss ceo executive head",
+    "guard": "guard security officer",
+    "doctor": "doctor physician surgeon consultant",
+    "nurse": "nurse",
+    "staff": "staff employee worker colleague clerk",
+}.items():
+    for _person in _people.split():
+        OWNER_KINDS.setdefault(_person, _kind)
+
 # People named by two words, the second of which means something else alone ("au pair" is one
 # person, not a pair; "station master" is no master of anything here).
 MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (

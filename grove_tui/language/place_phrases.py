@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.model import FieldConfidence
+from grove_tui.language.model import UNSURE_BELOW, FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -46,6 +46,14 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
     return out
 
 
+# A place matched by meaning alone: at least this similar to one of its names, and this much nearer
+# than any place of another zone (measured on synonyms and absent places of every shipped world,
+# none of them from the understanding sets: tests/language/test_meaning.py).
+MEANING_ACCEPT = 0.75
+MEANING_MARGIN = 0.03
+_Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
+
+
 class PlacePhrases:
     """Place phrases of one sentence, read in order: it remembers the zones named so far, which
     decide later ties, and the phrases in a place role the world does not have."""
@@ -57,6 +65,7 @@ class PlacePhrases:
         self.context_zones: list[str] = []  # zones of the places read so far, in reading order
         self.frame_zones: list[str] = []  # zones named as where people are ("on platform 2"), in order
         self.quiet = False  # True while reading a clause whose places nobody goes to
+        self.owner: str | None = None  # the kind of people whose clause is read ("her office" is theirs)
 
     def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True) -> Place | None:
         """The noun phrase from word k, after the place preposition (or verb) at `at`."""
@@ -84,7 +93,11 @@ class PlacePhrases:
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas)
-        if match is None and k < s.n and low[k] in ("her", "his", "their", "my", "our", "its"):
+        possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its")
+        owned = self._owned(lemmas, match) if possessive and self.owner else None
+        if owned is not None:
+            match = owned[0]
+        if match is None and possessive:
             return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
         if at >= 1 and k < s.n and low[k] in ("a", "an") and self.people.is_person_noun(at - 1) and \
                 (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
@@ -93,17 +106,109 @@ class PlacePhrases:
             return None
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
             return None  # "off the train": a word that names no place, though an alias shares it
+        numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
+        meant = None
+        if match is None and not numbered and not s.index.is_nameless(lemmas):
+            meant = self._by_meaning(phrase, lemmas)  # "the eating area": no word of it names a place
+            match = meant[0] if meant is not None else None
         if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
             return None
+        sure = owned[1:] if owned is not None else meant[1:] if meant is not None else None
+        score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
+        if not numbered and owned is None and ((alternatives and score < UNSURE_BELOW) or
+                                               self._headed_elsewhere(lemmas, match)):
+            # Words do not decide: two places alike ("the main meeting room": the boardroom and both
+            # meeting rooms share "meeting room"), or a thing's name inside a phrase headed by a room
+            # word ("the mummy gallery" is no mummy): the one nearest in meaning, if one is clearly nearer.
+            chosen = self._nearest_of(phrase, lemmas, match, alternatives)
+            if chosen is not None:
+                match, (score, reason, alternatives) = chosen[0], chosen[1:]
         self.context_zones.append(match.zone)
         if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
             self.frame_zones.append(match.zone)
-        score, reason, alternatives = self._confidence(phrase, lemmas, match)
         return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives)
+
+    # ---- by meaning, and by owner ----------------------------------------------------------------
+
+    def _by_meaning(self, phrase: Sequence[str], lemmas: Sequence[str]) -> _Decided | None:
+        """The place a phrase no word of which names one means, when one is clearly nearest: similar
+        enough to one of its names, and clearly nearer than any place of another zone."""
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        head = content[-1] if content else ""
+        speaks_of_door = bool(set(content) & lx.DOOR_WORDS)
+        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase))
+                  if (r.entry.kind != "door" or speaks_of_door)
+                  and (r.entry.kind == "zone" or head not in lx.GENERIC_PLACE_HEADS)]
+        if not ranked or ranked[0].similarity < MEANING_ACCEPT:
+            return None
+        best = ranked[0]
+        other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
+        margin = best.similarity - (other.similarity if other is not None else 0.0)
+        if margin < MEANING_MARGIN:
+            return None
+        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
+        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
+            best = zone  # "the x-ray room": the room, though the machine's name is as near
+        said = " ".join(phrase)
+        score = 0.7 if best.similarity >= 0.85 and margin >= 0.08 else 0.55
+        alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
+        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
+                f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
+
+    def _headed_elsewhere(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
+        """Whether a fixture or door matched by its whole name sits inside a phrase whose head is a
+        word for rooms it lacks ("the mummy gallery", "the coffee area")."""
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        entry = self.s.index.entry(match.name)
+        return bool(content) and match.kind != "zone" and match.exact and entry is not None and \
+            content[-1] not in entry.tokens and content[-1] in self.s.index.zone_words
+
+    def _nearest_of(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch,
+                    alternatives: Sequence[str]) -> _Decided | None:
+        """Of the places the phrase's words point at (the match, the places alike and any place
+        sharing one of its words), the one nearest in meaning, when it is clearly nearer; a room
+        when the phrase's head is a word for rooms."""
+        index = self.s.index
+        said = " ".join(phrase)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        rooms_only = bool(content) and (content[-1] in lx.GENERIC_PLACE_HEADS or self._headed_elsewhere(lemmas, match))
+        among = {match.name, *alternatives, *index.sharing(content)}
+        ranked = [r for r in index.by_meaning(said, among=among) if r.entry.kind == "zone" or not rooms_only]
+        if len(ranked) < 2:
+            return None
+        best, margin = ranked[0], ranked[0].similarity - ranked[1].similarity
+        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
+        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
+            best = zone  # "the whale gallery": the room, though its whale is as near
+            margin = best.similarity - max(r.similarity for r in ranked if r.entry.zone != best.entry.zone)
+        elif margin < MEANING_MARGIN:
+            return None
+        score = 0.7 if margin >= 0.08 else 0.55
+        rest = tuple(r.entry.name for r in ranked[:4] if r.entry.name != best.entry.name)
+        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, match.score, False), score,
+                f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
+                f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
+
+    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None) -> _Decided | None:
+        """"her office", "their room": of the places named like the phrase, the one that belongs to the
+        kind of person whose clause it is ("the director ... her office": the director's office)."""
+        assert self.owner is not None
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if not content:
+            return None
+        head = content[-1]
+        owned = [e for e in self.s.index.owned_by(self.owner) if head in e.tokens or
+                 (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
+        mine = [e for e in owned if match is not None and e.name == match.name]
+        if len(owned) != 1 and not mine:
+            return None
+        e = (mine or owned)[0]  # the words may already name it: then the owner decides a tie
+        return (PlaceMatch(e.name, e.kind, e.zone, match.score if match is not None else 1.0, False), 0.8,
+                f"'{' '.join(lemmas)}' of a {self.owner}: {e.name}", ())
 
     def _words(self, j: int) -> tuple[list[str], int]:
         """The words of a place phrase from j, and the index after them."""
@@ -181,7 +286,7 @@ class PlacePhrases:
                 and not (match.kind == "zone" and m.zone == match.name)
                 and not (m.kind == "zone" and match.zone == m.name)]
         alternatives = tuple(dict.fromkeys(m.name for m in tied))[:4]
-        if alternatives and match.zone in self.context_zones[:-1]:
+        if alternatives and match.zone in self.context_zones:  # (this phrase's zone is not in it yet)
             return (0.7, f"'{said}' fits {len(alternatives) + 1} places; {match.name} is in {match.zone}, "
                          f"named before", alternatives)
         if alternatives:

@@ -26,10 +26,17 @@ _JOINING_SIGN = re.compile(r"(?<=\w)\s*(?:&|\+)\s*(?=\w)")  # "3 kids & their mu
 def normalise(text: str) -> str:
     """The prompt as the reader parses it (see the module doc); "" when nothing readable is left."""
     folded = unicodedata.normalize("NFKC", text or "")
-    kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES else ch for ch in folded)
+    kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
+                   for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     return " ".join(kept.split())
+
+
+def _variation_selector(ch: str) -> bool:
+    """Emoji presentation selectors ("⚕️" is U+2695 U+FE0F), marks of no letter."""
+    code = ord(ch)
+    return 0xFE00 <= code <= 0xFE0F or 0xE0100 <= code <= 0xE01EF
 
 
 def _spelled_out(word: str) -> str:
