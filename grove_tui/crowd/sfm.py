@@ -1050,6 +1050,7 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc)
     cutoff2 = cutoff * cutoff
     lam = params[P_LAMBDA]
     gamma = params[P_GAMMA]
+    inv_gamma = 1.0 / gamma
     epsilon = params[P_EPSILON]
     n_angle = params[P_N]
     n_vel = params[P_NPRIME]
@@ -1147,11 +1148,11 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc)
                         ix = ux
                         iy = uy
                         ilen = 1.0
+                    inv_ilen = 1.0 / ilen
                     b = gamma * ilen
-                    q = dist / b
+                    q = dist * inv_ilen * inv_gamma
                     if q > skip_exponent:
                         continue
-                    inv_ilen = 1.0 / ilen
                     ix *= inv_ilen
                     iy *= inv_ilen
                     cos_theta = ix * ux + iy * uy
