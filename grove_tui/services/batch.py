@@ -28,6 +28,7 @@ from grove_tui.services.dataset import (
     append_record,
     check_index_format,
     completed_jobs,
+    index_path,
     job_inputs_hash,
     model_identity,
     record_outcome,
@@ -60,6 +61,10 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
     the workers that cannot see `out_dir` do). `index_format`: "sqlite" or "parquet" (needs pyarrow).
     """
     check_index_format(index_format)  # before any job runs: a missing pyarrow must not cost a batch
+    if ray_address is not None:
+        from grove_tui.services.cluster import require_ray
+
+        require_ray()  # likewise a missing Ray: one error line, nothing read or written
     made_out_dir = not os.path.lexists(out_dir)
     sweep_stale(out_dir)  # staging folders and files a killed earlier run left behind
     if jobs and ray_address is None:
@@ -97,19 +102,22 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
     except BaseException:
         # Also after a model error or Ctrl+C the index shows what is done, failed and still pending; if it
         # cannot be written either (the disk that stopped the batch is full), the batch's own error is the
-        # one reported, and a --out this run made and never wrote into is removed.
-        with contextlib.suppress(GroveError):
-            write_index(out_dir, jobs, index_format)
+        # one reported, and a --out this run made and never wrote into is removed. A batch stopped before
+        # its folder existed has nothing to index (and sqlite's "unable to open" would hide why it stopped).
+        if out_dir.is_dir():
+            with contextlib.suppress(GroveError):
+                write_index(out_dir, jobs, index_format)
         if made_out_dir:
             _remove_if_empty(out_dir)
         raise
     try:
-        index = write_index(out_dir, jobs, index_format)
+        if out_dir.is_dir():
+            write_index(out_dir, jobs, index_format)
     except BaseException:
         if made_out_dir:
             _remove_if_empty(out_dir)
         raise
-    return BatchResult(records, skipped, index)
+    return BatchResult(records, skipped, index_path(out_dir, index_format))
 
 
 def _remove_if_empty(folder: Path) -> None:
