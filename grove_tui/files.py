@@ -277,15 +277,19 @@ def append_line(path: str | os.PathLike[str], line: str) -> Path:
 
     The line is written with one write() on an O_APPEND descriptor. A last line torn by an earlier
     crash (no newline at its end) is ended first, so the new record starts a line of its own instead
-    of being glued to the torn one (and lost with it).
+    of being glued to the torn one (and lost with it). A write that fails part-way (a full disk) is
+    cut back off, and a log (and folders) this call created and could not fill is removed.
     """
     target = check_output_file(path)
     text = line if line.endswith("\n") else line + "\n"
+    created = _make_parents(target)
+    new_file = not os.path.lexists(target)
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
         fd = os.open(target, os.O_WRONLY | os.O_APPEND | os.O_CREAT | os.O_NOFOLLOW, 0o666)
     except OSError as exc:
+        _remove_created(created)
         raise OutputError(f"{target}: cannot write it: {exc.strerror}") from None
+    size = 0
     try:
         size = os.fstat(fd).st_size
         if size:
@@ -300,9 +304,15 @@ def append_line(path: str | os.PathLike[str], line: str) -> Path:
             written += os.write(fd, data[written:])
         write_point(f"append:{target.name}:after")
     except OSError as exc:
-        raise OutputError(f"{target}: cannot write it: {exc.strerror}") from None
-    finally:
+        with contextlib.suppress(OSError):
+            os.ftruncate(fd, size)  # no half line
         os.close(fd)
+        if new_file and os.path.getsize(target) == 0:  # nothing written: leave no empty log (or folder) behind
+            with contextlib.suppress(OSError):
+                target.unlink()
+            _remove_created(created)
+        raise OutputError(f"{target}: cannot write it: {exc.strerror}") from None
+    os.close(fd)
     return target
 
 

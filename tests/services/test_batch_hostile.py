@@ -114,20 +114,25 @@ def test_the_next_run_removes_what_a_killed_run_left(tmp_path):
 
 
 def test_a_full_disk_leaves_no_empty_output_folder(tmp_path):
+    """The batch folder is made by the first record's append; on a full disk that append fails, and the
+    batch's error is what the user sees, with no empty folder (or empty batch-state.jsonl) left behind."""
     out = tmp_path / "new" / "out"
-    code = ("import resource, signal, sys\n"
+    code = ("import resource, signal\n"
             "from pathlib import Path\n"
-            "from grove_tui.services.batch import run_batch\n"
-            "from grove_tui.services.session import GroveSession\n"
-            "session = GroveSession()\n"
+            "from grove_tui.services.dataset import JobRecord, append_record\n"
             "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
             "resource.setrlimit(resource.RLIMIT_FSIZE, (1, 1))\n"
             "try:\n"
-            f"    run_batch(session, [], Path({str(out)!r}))\n"
+            f"    append_record(Path({str(out)!r}), JobRecord('job', 1, 'h', 'failed', 'no room', 2))\n"
             "except Exception as exc:\n"
             "    print(type(exc).__name__, exc)\n")
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")]))
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, env=env, cwd=REPO)
-    assert done.stdout.startswith("OutputError") and "cannot write the dataset index" in done.stdout, \
+    assert done.stdout.startswith("OutputError") and "batch-state.jsonl: cannot write it" in done.stdout, \
         done.stdout + done.stderr[-2000:]
-    assert not out.exists()
+    assert not (tmp_path / "new").exists()
+    # A batch with nothing to run into a folder that does not exist makes none.
+    from grove_tui.services.batch import run_batch
+
+    run_batch(GroveSession(), [], out)
+    assert not (tmp_path / "new").exists()
