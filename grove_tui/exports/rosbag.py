@@ -41,7 +41,7 @@ import numpy as np
 from grove_tui.errors import RosbagExportError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
-from grove_tui.files import atomic_directory, check_output_dir
+from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap
 from grove_tui.scenario.model import AgentSpec
 
 # robotics-upo/hunav_sim, branch humble (HuNavSim 1.0), commit of 2023-10-10; the .msg files last changed
@@ -430,6 +430,7 @@ def export_rosbag(bundle_dir: str | Path, out_dir: str | Path, *, storage: str =
         raise RosbagExportError(f"storage must be one of {', '.join(STORAGES)}, got {storage!r}")
     _rosbags()
     out = check_output_dir(out_dir, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite)
+    refuse_overlap(out, bundle_dir, "the bundle being exported")
     bundle = open_simulated_bundle(bundle_dir)
     store = ros_typestore()
     with atomic_directory(out, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite) as stage:
