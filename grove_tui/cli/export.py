@@ -123,9 +123,13 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
 @click.option("--storage", type=click.Choice(["mcap", "sqlite3"]), default="mcap", show_default=True,
               help="rosbag2 storage plugin.")
 @click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bag export.")
-def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: bool) -> None:
+@click.option("--hunav-msgs", "hunav_msgs", type=click.Choice(["2.0", "1.0"]), default="2.0", show_default=True,
+              help="HuNavSim's message version for /human_states and /robot_states: 2.0 (Agent with a nested "
+                   "AgentBehavior) or 1.0 (uint8 behavior, behavior_state).")
+def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: bool, hunav_msgs: str) -> None:
     """ROS 2 bag of a simulated bundle: hunav_msgs/Agents on /human_states, markers, /map, /plan, /tf, events."""
-    result = GroveSession().export("rosbag", bundle, out_dir, storage=storage, overwrite=overwrite)
+    result = GroveSession().export("rosbag", bundle, out_dir, storage=storage, overwrite=overwrite,
+                                   hunav_msgs_version=hunav_msgs)
     click.echo(str(result.directory))
     for topic, count in result.counts.items():
         click.echo(f"  {topic}: {count}", err=True)

@@ -67,7 +67,8 @@ from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
-from grove_tui.scenario.bundle import load_field, load_grid, load_scenario, read_bundle_text
+from grove_tui.exports.scene import agent_radius, behavior_block, goal_radius, scene_of, skin
+from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 if TYPE_CHECKING:
@@ -76,7 +77,6 @@ if TYPE_CHECKING:
 
 Point = tuple[float, float]
 
-BEHAVIOR_TYPES = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
 GROVE_ONLY = frozenset(name for name, spec in NODES.items() if spec.origin == "grove")
 _HUNAV_GOTO_PORTS = ("agent_id", "time_step", "goal_id", "tolerance")
 # What a lowered tree may contain: BT.CPP built-ins, HuNavSim's nodes, and HuNavSim's own GoTo(goal_id).
@@ -90,10 +90,6 @@ HUNAV_NODES = {name: spec for name, spec in NODES.items() if spec.origin != "gro
 }
 EXPORT_MARKER = ".grove-hunav-export"
 SPAWN_HEIGHT = 1.25  # HuNavSim's Gazebo actors stand on z = 1.25
-# go_to_node.cpp (2.0) sets the temporary goal radius to 0.1 and finishes on AgentManager::goalReached,
-# which adds 0.1 m: 0.2 m whatever `tolerance` says. Written as is so the file says what HuNavSim does.
-GOAL_TOLERANCE = 0.2
-GOAL_RADIUS = 0.1  # the agent's own goals (RegularNav); reach = radius + 0.1 m, as GoTo's
 # Simulators as HuNavSim 2.0's agent manager names them (bt_node.cpp: the wrapper package it loads
 # trees from depends on the loader's `simulator` parameter).
 SIMULATOR_PACKAGES = {
@@ -102,11 +98,6 @@ SIMULATOR_PACKAGES = {
     "Isaac Sim": "hunav_isaac_wrapper",
     "Webots": "hunav_webots_wrapper",
 }
-# Evacuees' points outside their exit: rows across the door, this far apart (more than two bodies
-# plus HuNavSim's 0.2 m reach, so nobody stands on anybody's goal), first row this far out.
-EXIT_SPREAD_SPACING = 1.0
-EXIT_SPREAD_FIRST_ROW = 2.0
-EXIT_SPREAD_PER_ROW = 5
 HOLD_WAIT_SECONDS = 60.0
 CONVERSATION_PATIENCE = 60.0  # GROVE's ConversationRegistry.PATIENCE: start anyway after this long
 KEPT_NODE_PREFIX = "Grove"
@@ -116,13 +107,14 @@ WANDER_LEG_SECONDS = 12.0
 
 @dataclass
 class GoalTable:
-    """HuNavSim's `global_goals`: each distinct point once, ids consecutive from 1."""
+    """HuNavSim's `global_goals`: each distinct point once, ids consecutive from 1, at full precision
+    (an imported file's 3.360 comes back as 3.36, the same double)."""
 
     points: list[Point] = field(default_factory=list)
     _ids: dict[tuple[float, float], int] = field(default_factory=dict)
 
     def id_of(self, point: Sequence[float]) -> int:
-        key = (round(float(point[0]), 2), round(float(point[1]), 2))
+        key = (float(point[0]), float(point[1]))
         if key not in self._ids:
             self.points.append(key)
             self._ids[key] = len(self.points)
@@ -155,7 +147,7 @@ class _AgentContext:
     grid: OccupancyGrid | None
     planner: ThetaStarPlanner | None
     seed: int
-    exit_rank: dict[tuple[int, str], int] = field(default_factory=dict)
+    muster: dict[tuple[int, str], Point] = field(default_factory=dict)
     world: object | None = None
     conversations: dict[tuple, dict[int, Point]] = field(default_factory=dict)
 
@@ -172,7 +164,7 @@ def _attr_float(el: TreeElement, name: str, where: str) -> float:
 
 
 def _hunav_goto(goal_id: int, tolerance: float) -> TreeElement:
-    return node("GoTo", agent_id="{id}", time_step="{dt}", goal_id=str(goal_id), tolerance=f"{tolerance:g}")
+    return node("GoTo", agent_id="{id}", time_step="{dt}", goal_id=str(goal_id), tolerance=repr(float(tolerance)))
 
 
 def _wait(seconds: float) -> TreeElement:
@@ -185,8 +177,10 @@ def _sequence(children: Sequence[TreeElement], name: str) -> TreeElement:
     return TreeElement("SequenceWithMemory", {"name": name}, list(children))
 
 
-def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[TreeElement]:
-    return [_hunav_goto(ctx.goals.id_of(p), tolerance) for p in points]
+def _route(points: Sequence[Point], ctx: _AgentContext) -> list[TreeElement]:
+    """HuNavSim GoTo nodes over `points`, each with the agent's goal radius as tolerance (scene.goal_radius:
+    the agents YAML and the bag say the same; HuNavSim 2.0's GoTo itself always uses 0.1)."""
+    return [_hunav_goto(ctx.goals.id_of(p), goal_radius(ctx.agent)) for p in points]
 
 
 def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
@@ -331,37 +325,18 @@ def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
 
 
 def _beyond_exit(door_name: str, ctx: _AgentContext) -> list[Point]:
-    """Through the door and on to this evacuee's own point outside, apart from everyone else's.
+    """Through the door and on to this evacuee's own point outside, apart from everyone else's
+    (scene.muster_points: the Gazebo world and the map cover it).
 
     GROVE removes an evacuee at the door; HuNavSim never removes agents and a GoTo goal holds only
     0.2 m, so without this every evacuee would end on the same point in the doorway.
     """
     world = ctx.world
-    if world is None or not door_name:
+    point = ctx.muster.get((ctx.agent.id, door_name))
+    if world is None or point is None:
         return []
-    try:
-        door = world.find(door_name)
-    except GroveError:
-        return []
-    if not hasattr(door, "outward_point"):
-        return []
-    rank = ctx.exit_rank.get((ctx.agent.id, door_name), 0)
-    slot = 0
-    nx, ny = -door.normal[0], -door.normal[1]
-    ax, ay = door.along
-    # Walk the slots in order and skip any that land inside a zone (another building part).
-    for _ in range(10000):
-        row, column = divmod(slot, EXIT_SPREAD_PER_ROW)
-        lateral = (column - (EXIT_SPREAD_PER_ROW - 1) / 2.0) * EXIT_SPREAD_SPACING
-        out = EXIT_SPREAD_FIRST_ROW + row * EXIT_SPREAD_SPACING
-        point = (door.position[0] + nx * out + ax * lateral, door.position[1] + ny * out + ay * lateral)
-        slot += 1
-        if world.zone_at(*point) is not None:
-            continue
-        if rank == 0:
-            return [door.outward_point(1.0), (round(point[0], 2), round(point[1], 2))]
-        rank -= 1
-    return [door.outward_point(1.0)]
+    door = world.find(door_name)
+    return [door.outward_point(1.0), point]
 
 
 def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement:
@@ -535,32 +510,6 @@ def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument], tag: str = 
     return {(a, name): rank for name, ids in members.items() for rank, a in enumerate(ids)}
 
 
-def _initial_heading(start: Point, first_goal: Point) -> float:
-    """Facing the first goal the agents YAML lists (0 when that goal is where it stands)."""
-    dx, dy = first_goal[0] - start[0], first_goal[1] - start[1]
-    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-9 else 0.0
-
-
-def _behavior_block(agent: AgentSpec) -> dict[str, object]:
-    from grove_tui.simulation.simulation import REACTION_DEFAULTS
-
-    kind = agent.behavior if agent.behavior in BEHAVIOR_TYPES else "Regular"
-    # The tree carries the reaction (wrap_for_hunav); these mirror its values for tools that read them.
-    _, distance, duration, once = REACTION_DEFAULTS.get(kind, ("", 0.0, 40.0, True))
-    return {
-        "type": kind,
-        "configuration": 0,
-        "duration": float(duration),
-        "once": bool(once),
-        "vel": round(min(max(agent.max_vel, 0.0), 1.8), 3),
-        "dist": float(distance),
-        "goal_force_factor": 2.0,
-        "obstacle_force_factor": 10.0,
-        "social_force_factor": 5.0,
-        "other_force_factor": 20.0,
-    }
-
-
 def _renumber_goal_ids(document: TreeDocument, goals: GoalTable) -> TreeDocument:
     """Point every node's `goal_id` at this export's global_goals entry for its (x, y), in place."""
     for el in document.nodes():
@@ -619,12 +568,9 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             raise ExportError(f"tree of agent {agent.id}: {exc}") from None
 
     from grove_tui.navigation.grid import build_grid
-    from grove_tui.world import load_world
 
-    # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
-    local_world = bundle / scenario.world
-    world = load_world(local_world if local_world.suffix in (".yaml", ".yml") and local_world.is_file()
-                       else scenario.world)
+    world = load_bundle_world(bundle, scenario)
+    scene = scene_of(world, scenario, trees)
     grid = planner = None
     if lower:
         from grove_tui.navigation.theta_star import ThetaStarPlanner
@@ -642,14 +588,13 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             raise ExportError(f"{bundle / 'scenario.yaml'}: global_goals must be numbered 1, 2, ... with distinct "
                               f"points (goal {goal_id} repeats an earlier point or skips an id)")
     ranks = _queue_ranks(scenario, trees) if lower else {}
-    exit_ranks = _queue_ranks(scenario, trees, "FollowVelocityField", "exit") if lower else {}
     conversations = _conversation_spots(scenario, trees, grid) if lower else {}
     written: dict[str, str] = {}
     agent_entries: dict[str, dict[str, object]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         where = str(bundle / agent.tree)
         ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
-                            exit_rank=exit_ranks, world=world if lower else None, conversations=conversations)
+                            muster=scene.muster, world=world if lower else None, conversations=conversations)
         goal_ids = [goals.id_of(g) for g in agent.goals]
         tree = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
         tree = _rename_main_tree(tree, "DefaultTree")
@@ -674,17 +619,19 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         written[f"{base}__agent_{agent.id}_bt.xml"] = xml
         agent_entries[f"agent{agent.id}"] = {
             "id": agent.id,
-            "skin": agent.id % 5,
+            "skin": skin(agent),
             "group_id": agent.group,
-            "max_vel": round(float(agent.max_vel), 3),
-            "radius": round(float(agent.radius), 3),
-            "goal_radius": GOAL_RADIUS,
-            "cyclic_goals": False,
-            "init_pose": {"x": round(float(agent.start[0]), 3), "y": round(float(agent.start[1]), 3),
-                          "z": SPAWN_HEIGHT, "h": round(_initial_heading(agent.start, goals.points[goal_ids[0] - 1]), 3)},
-            "behavior": _behavior_block(agent),
+            "max_vel": float(agent.max_vel),
+            "radius": agent_radius(agent),
+            "goal_radius": goal_radius(agent),
+            "cyclic_goals": bool(agent.cyclic_goals),
+            "init_pose": {"x": float(agent.start[0]), "y": float(agent.start[1]), "z": SPAWN_HEIGHT,
+                          "h": agent.initial_heading()},
+            "behavior": behavior_block(agent),
             "goals": goal_ids,
         }
+    # The world file and the map cover every goal the export names (scene.extent).
+    scene = scene.with_points(goals.points)
 
     params: dict[str, object] = {
         "yaml_base_name": base,
@@ -718,8 +665,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         (staging / "README.md").write_text(readme, encoding="utf-8")
         # hunav_gazebo_wrapper's layout: worlds/<environment_name>.world, maps/<environment_name>.yaml
         (staging / "worlds").mkdir()
-        (staging / "worlds" / f"{world_name}.world").write_text(world_sdf(world), encoding="utf-8")
-        write_nav2_map(build_grid(world, scenario.resolution, inflation=0.0), staging / "maps", world_name)
+        (staging / "worlds" / f"{world_name}.world").write_text(world_sdf(scene), encoding="utf-8")
+        write_nav2_map(scene.static_map, staging / "maps", world_name)
     return HunavExport(
         directory=out,
         agents_yaml=out / f"{base}.yaml",
@@ -769,6 +716,10 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         "",
         f"World `{world_name}`, {len(scenario.agents)} agents, prompt: {scenario.prompt!r}.",
         "",
+        "For HuNavSim 2.0 (robotics-upo/hunav_sim master: behavior trees in BehaviorTree.CPP 4, `global_goals`, "
+        "`hunav_msgs/Agent` with a nested `AgentBehavior`). ROS 2 bags of the same run (`grove export rosbag`) "
+        "carry hunav_msgs 2.0 by default; `--hunav-msgs 1.0` writes HuNavSim 1.0's messages.",
+        "",
         "## Where the files go",
         "",
         f"- `{base}.yaml` -> `<ws>/src/{package}/scenarios/` (read by `hunav_loader`; the launch file takes it "
@@ -776,15 +727,20 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         f"- `{base}__agent_<id>_bt.xml` ({len(tree_files)} files) -> `<ws>/src/{package}/behavior_trees/`: the "
         "agent manager loads `<yaml_base_name>__agent_<id>_bt.xml` from the *source* folder of the wrapper "
         "(bt_node.cpp `share_to_src_path`), not from `install/`.",
-        f"- `worlds/{world_name}.world` (Gazebo SDF: walls with the door gaps, furniture as boxes) -> "
-        f"`<ws>/src/{package}/worlds/`, and `maps/{world_name}.yaml` + `maps/{world_name}.pgm` (nav2 map, not "
-        f"inflated) -> `<ws>/src/{package}/maps/`: the launch loads `worlds/<environment_name>.world` and "
+        f"- `worlds/{world_name}.world` (Gazebo SDF: walls with the door gaps, furniture as boxes, a ground plane "
+        f"under every goal) -> `<ws>/src/{package}/worlds/`, and `maps/{world_name}.yaml` + "
+        f"`maps/{world_name}.pgm` (nav2 map of the same walls and boxes over the same extent, not inflated) -> "
+        f"`<ws>/src/{package}/maps/`: the launch loads `worlds/<environment_name>.world` and "
         "`maps/<environment_name>.yaml`. (Isaac Sim and Webots build their scenes from USD/Webots files; the SDF "
         "is for Gazebo.)",
         "",
-        "## Run",
+        "## Build, then run",
+        "",
+        f"The launch file finds the scenario, the world and the map in the *installed* share folder of "
+        f"`{package}` (`FindPackageShare`), so rebuild the workspace after copying the files:",
         "",
         "```bash",
+        f"cd <ws> && colcon build --packages-select {package} && source install/setup.bash",
         f"ros2 launch {package} simulation.launch.py {args}",
         "```",
         "",
@@ -806,7 +762,8 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         "",
         "- Each tree runs once, then the agent holds where it ended (HuNavSim ticks every root each step and "
         "BehaviorTree.CPP restarts a finished root).",
-        "- Every GoTo reaches its goal within 0.2 m: HuNavSim 2.0's GoTo reads `tolerance` but does not apply it.",
+        "- Every GoTo's `tolerance` is its agent's `goal_radius` (GROVE's agents: 0.1 m, the radius HuNavSim 2.0's "
+        "GoTo applies whatever `tolerance` says); a goal counts as reached within goal_radius + 0.1 m.",
         "- Timed nodes: StopAndWaitTimerAction, ConversationFormation, TimeDelay, Delay, Timeout and the `duration` "
         "of HuNavSim's stateful nodes count wall-clock seconds in HuNavSim (GROVE counts simulation seconds); "
         "TimeExpiredCondition and the *Nav reactions count simulation time. Run Gazebo at real time factor 1 "

@@ -21,6 +21,8 @@ from grove_tui.limits import InputLimitError, check_regular_file, read_text_boun
 from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
 from grove_tui.scenario.model import Scenario, ScenarioError
 from grove_tui.navigation.velocity_field import MAX_FIELD_UNPACKED_BYTES, VelocityField
+from grove_tui.world import World, load_world
+from grove_tui.world.loader import MAX_WORLD_FILE_BYTES
 
 SCENARIO_FILE = "scenario.yaml"
 GRID_FILE = "grid.npz"
@@ -124,6 +126,23 @@ def load_scenario(bundle_dir: str | Path) -> Scenario:
         return Scenario.load(root / SCENARIO_FILE)
     except ScenarioError as exc:
         raise BundleError(str(exc)) from None
+
+
+def bundle_world_reference(bundle_dir: str | Path, scenario: Scenario) -> str:
+    """The scenario's world as `load_world` takes it, never relative to the current folder: a world
+    file the bundle holds (`world` relative to the bundle, what `grove import hunav` writes), an
+    absolute path (a user's world file at generation), or a shipped world's name."""
+    reference = scenario.world
+    if Path(reference).is_absolute():
+        return reference
+    if reference.endswith((".yaml", ".yml")) or "/" in reference or "\\" in reference:
+        return str(bundle_member(bundle_dir, reference, "world file", MAX_WORLD_FILE_BYTES))
+    return reference
+
+
+def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> World:
+    """The World a bundle's scenario plays in, from whatever folder GROVE runs in."""
+    return load_world(bundle_world_reference(bundle_dir, scenario))
 
 
 def load_field(bundle_dir: str | Path, field_id: str, rel: str) -> VelocityField:
