@@ -11,9 +11,8 @@ from grove_tui.files import write_text_atomic
 from grove_tui.analysis.metrics import (MetricsReport, Trajectories, compute_metrics, compute_metrics_csv,
                                         iter_trajectory_chunks)
 from grove_tui.scenario.events import read_events
-from grove_tui.scenario.bundle import load_scenario
+from grove_tui.scenario.bundle import load_bundle_world, load_scenario
 from grove_tui.scenario.model import Scenario
-from grove_tui.world import load_world
 
 TRAJECTORIES = "trajectories.csv"
 EVENTS = "events.jsonl"
@@ -23,7 +22,7 @@ METRICS = "metrics.json"
 def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsReport, Path]:
     bundle = Path(bundle_dir)
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
+    world = load_bundle_world(bundle, scenario)
     events_path = bundle / EVENTS
     events = read_events(events_path) if events_path.exists() else []
     # Streamed a block of frames at a time: a long run's CSV is never held in memory whole.

@@ -100,11 +100,10 @@ def metrics(bundle: Path, as_json: bool) -> None:
 def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
     from grove_tui.exports.pictures import draw_scenario, render_scenario_text
-    from grove_tui.scenario.bundle import load_scenario
-    from grove_tui.world import load_world
+    from grove_tui.scenario.bundle import load_bundle_world, load_scenario
 
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
+    world = load_bundle_world(bundle, scenario)
     if out_path is None:
         console = Console()
         console.print(render_scenario_text(world, scenario, width or console.width))

@@ -1,35 +1,71 @@
-"""`grove import hunav AGENTS.yaml`: a HuNavSim 2.0 scenario (agents, global_goals, trees) as a GROVE bundle.
+"""`grove import hunav AGENTS.yaml`: a HuNavSim scenario (agents, goals, trees) as a GROVE bundle.
 
-The agents YAML is checked as HuNavSim's loader reads it (exports/hunav_loader_check.py); each agent's
-tree is the file HuNavSim's agent manager would load, `<yaml_base_name>__agent_<id>_bt.xml` (bt_node.cpp,
-`initializeBehaviorTree`), looked up beside the YAML, in `--trees`, or in the wrapper layout's
-`../behavior_trees/`. Its `<include>`s are inlined (bt/include.py) so the bundle is self-contained.
-Trees keep HuNavSim's `goal_id`s; the bundle's scenario carries `global_goals`, which GROVE's runtime
-resolves them with. Nodes an export kept as `Grove<Node>` get their GROVE names back.
+Both agents-YAML layouts HuNavSim has shipped are read (exports/hunav_loader_check.hunav_layout):
+- 2.0: `global_goals` {id: {x, y}}, each agent's `goals` a list of ids, `behavior.type` a name, and
+  one tree per agent, `<yaml_base_name>__agent_<id>_bt.xml` (bt_node.cpp, `initializeBehaviorTree`),
+  looked up beside the YAML, in `--trees`, or in the wrapper layout's `../behavior_trees/`; its
+  `<include>`s are inlined (bt/include.py) for GROVE to run it;
+- 1.0: each agent's `goals` a list of names, each name a block {x, y, h}, `behavior` a type number
+  (or a block whose `type` is one). HuNavSim 1.0 runs a fixed tree per behavior; GROVE gives each agent
+  HuNavSim's regular navigation tree, and its simulation wraps the behavior's robot reaction around it.
 
-The world: `--world`, else the YAML's `map` when it is a GROVE world (what `grove export hunav` writes),
-else an open floor around every pose and goal (HuNavSim's worlds are Gazebo files GROVE cannot read),
-written into the bundle as `<map>.yaml`.
+Nothing HuNavSim's loader reads is lost (the export writes it back, exports/hunav.py): every agent key
+keeps its value and its place (AgentSpec's own fields, and `HunavAgent` for the rest: the key in the
+file, skin, spawn height, the behavior block with configuration and force factors, goal names and
+headings, goal ids); the file's top level (layout, yaml_base_name, simulator, map, publish_people, key
+order) is `Scenario.hunav`; each 2.0 tree file is kept verbatim under `hunav/` and written back while
+GROVE's tree made from it is unchanged. Numbers keep full precision (3.360 reads as the double 3.36).
 
-Export, then import, then export again gives the same agents YAML and the same trees.
+The world: `--world` (a shipped name, or a world file copied into the bundle), else the YAML's `map`
+when it is a shipped GROVE world, else an open floor around every pose and goal (HuNavSim's worlds are
+Gazebo files GROVE cannot read) written into the bundle. Either way the bundle names a world it
+carries or GROVE ships, never a path relative to the current folder: it runs from anywhere.
+
+A file `grove export hunav` wrote carries GROVE's line (`# grove: {...}`: prompt, preset, seed, robot,
+labels); importing it gives those back, so GROVE -> HuNavSim -> GROVE keeps the prompt and the robot.
 """
 
 from __future__ import annotations
 
-import dataclasses
+import hashlib
+import json
 import math
+import os
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import yaml
 
-from grove_tui.bt.include import resolve_includes
+from grove_tui.bt.include import included_files, resolve_includes
+from grove_tui.bt.document import TreeDocument, TreeElement, node
 from grove_tui.bt.xml import BTError, check_tree_text, read_tree, write_tree
-from grove_tui.errors import HunavImportError
-from grove_tui.exports.hunav import KEPT_NODE_PREFIX
-from grove_tui.exports.hunav_loader_check import check_loader_parameters
+from grove_tui.errors import GroveError, HunavImportError
+from grove_tui.exports.hunav import GROVE_LINE_PREFIX, KEPT_NODE_PREFIX
+from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout
+from grove_tui.exports.scene import BEHAVIOR_NUMBERS
+from grove_tui.scenario.model import AgentSpec, HunavAgent, HunavBehavior, HunavSource, RobotSpec, Scenario
 
 OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a synthesized world
+WORLD_FOLDER = "world"  # where an imported bundle keeps its world file
+SOURCE_FOLDER = "hunav"  # where it keeps HuNavSim's tree files, verbatim
+BEHAVIOR_NAMES = {number: name for name, number in BEHAVIOR_NUMBERS.items()}
+
+
+def regular_nav_tree() -> str:
+    """HuNavSim's regular navigation (hunav_agent_manager/behavior_trees/BTRegularNav.xml), what a 1.0
+    agent runs: walk to the front goal, and on reaching it take the next (round and round if cyclic)."""
+    walk = TreeElement("Sequence", {"name": "RegularNavigation"}, [
+        node("Inverter", [node("IsGoalReached", agent_id="{id}")]),
+        node("RegularNav", agent_id="{id}", time_step="{dt}")])
+    root = TreeElement("Fallback", {"name": "RegularNavFallback"}, [walk, node("UpdateGoal", agent_id="{id}")])
+    tree = TreeElement("BehaviorTree", {"ID": "RegularNavTree"}, [root])
+    return write_tree(TreeDocument("RegularNavTree", {"RegularNavTree": tree}, "BTRegularNav.xml"))
+
+
+def tree_digest(text: str) -> str:
+    """What `HunavAgent.tree_digest` records of a GROVE tree: the SHA-256 of its text."""
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 def _open_floor_world(name: str, points: list[tuple[float, float]]) -> str:
@@ -68,18 +104,142 @@ def _grove_names(xml: bytes, source: str) -> str:
     return write_tree(document)
 
 
+def _grove_line(text: str) -> dict[str, Any]:
+    """GROVE's own line in an agents YAML it exported (prompt, preset, seed, robot, labels), or {}."""
+    for line in text.splitlines():
+        if line.startswith(GROVE_LINE_PREFIX):
+            try:
+                data = json.loads(line[len(GROVE_LINE_PREFIX):])
+            except json.JSONDecodeError:
+                return {}
+            return data if isinstance(data, dict) else {}
+        if line.strip() and not line.startswith("#"):
+            break
+    return {}
+
+
+def _keys(mapping: dict[str, Any], prefix: str = "") -> tuple[str, ...]:
+    """The keys of an agent's block in file order, nested ones dotted ("init_pose.x", "g0.h")."""
+    out: list[str] = []
+    for key, value in mapping.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out += _keys(value, f"{name}.") or [name]
+        else:
+            out.append(name)
+    return tuple(out)
+
+
+def _behavior(entry: dict[str, Any], where: str) -> tuple[str, HunavBehavior | None]:
+    """(GROVE behavior name, the block as given, or None for 1.0's flat `behavior: <number>`)."""
+    given = entry.get("behavior")
+    block = given if isinstance(given, dict) else None
+    kind = block.get("type") if block is not None else given
+    if kind is None:
+        name = "Regular"  # the loader's default type
+    elif isinstance(kind, str):
+        name = kind
+    elif isinstance(kind, int) and kind in BEHAVIOR_NAMES:
+        name = BEHAVIOR_NAMES[kind]
+    else:
+        raise HunavImportError(f"{where}.behavior: type {kind!r} is not a HuNavSim behavior "
+                               f"({', '.join(f'{n} {k}' for k, n in BEHAVIOR_NAMES.items())})")
+    if name not in BEHAVIOR_NUMBERS:
+        raise HunavImportError(f"{where}.behavior: type {name!r} is not a HuNavSim behavior "
+                               f"({', '.join(BEHAVIOR_NUMBERS)})")
+    if block is None:
+        return name, None
+    return name, HunavBehavior(**{key: block.get(key) for key in HunavBehavior.__dataclass_fields__})
+
+
+def _type_is_number(entry: dict[str, Any]) -> bool:
+    """Whether the agent's behavior type is written as a number (1.0) rather than a name (2.0)."""
+    given = entry.get("behavior")
+    kind = given.get("type") if isinstance(given, dict) else given
+    return isinstance(kind, int) and not isinstance(kind, bool)
+
+
+def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int, tuple[float, float]],
+           where: str) -> tuple[AgentSpec, HunavAgent]:
+    """The agent as GROVE runs it and what else its file says (tree fields set by the caller)."""
+    agent_id = int(entry.get("id", -1))
+    if agent_id < 1:
+        raise HunavImportError(f"{where}.id is {agent_id}; GROVE numbers agents from 1 (0 is the robot)")
+    pose = entry.get("init_pose") or {}
+    kind, behavior = _behavior(entry, where)
+    listed = list(entry.get("goals") or [])
+    if layout == "2.0":
+        goals = tuple(global_goals[g] for g in listed)
+        names: tuple[str, ...] = ()
+        headings: tuple[float | None, ...] = ()
+        ids = tuple(int(g) for g in listed)
+    else:
+        blocks: list[dict[str, Any]] = []
+        for goal in listed:
+            block = entry.get(goal)
+            blocks.append(block if isinstance(block, dict) else {})
+        goals = tuple((float(b.get("x", 0.0)), float(b.get("y", 0.0))) for b in blocks)
+        names = tuple(str(g) for g in listed)
+        headings = tuple(None if b.get("h") is None else float(b["h"]) for b in blocks)
+        ids = ()
+    spec = AgentSpec(
+        id=agent_id, group=int(entry.get("group_id", -1)),
+        start=(float(pose.get("x", 0.0)), float(pose.get("y", 0.0))), goals=goals, zone="",
+        tree=f"trees/agent_{agent_id}.xml", radius=float(entry.get("radius", 0.35)),
+        max_vel=float(entry.get("max_vel", 1.0)), label=name, behavior=kind,
+        # HuNavSim's loader defaults where the file is silent: the agent moves as HuNavSim moves it
+        goal_radius=float(entry.get("goal_radius", 0.0)), cyclic_goals=bool(entry.get("cyclic_goals", True)),
+        heading=float(pose.get("h", 0.0)))
+    extra = HunavAgent(name=name, skin=None if entry.get("skin") is None else int(entry["skin"]),
+                       z=None if pose.get("z") is None else float(pose["z"]), behavior=behavior,
+                       goal_names=names, goal_headings=headings, goal_ids=ids, keys=_keys(entry))
+    return spec, extra
+
+
+def _world(world: str | None, map_name: str, grove: dict[str, Any], points: list[tuple[float, float]],
+           source: Path) -> tuple[str, str | None, Any]:
+    """(the scenario's world reference, the world file text to write into the bundle or None, World)."""
+    from grove_tui.world import list_worlds, load_world, parse_world, read_world_file
+
+    if world is not None:
+        if world in list_worlds():
+            return world, None, load_world(world)
+        path, text = read_world_file(world)  # a user's world file: the bundle carries a copy
+        return f"{WORLD_FOLDER}/{path.stem}.yaml", text, load_world(path)
+    for candidate in (map_name, str(grove.get("world", ""))):
+        if candidate in list_worlds():
+            return candidate, None, load_world(candidate)
+    reference = f"{WORLD_FOLDER}/{map_name}.yaml"
+    text = _open_floor_world(map_name, points)
+    parsed, problems = parse_world(text, reference)
+    if problems or parsed is None:
+        problem = problems[0] if problems else "no world"
+        raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r}: {problem}")
+    return reference, text, parsed
+
+
+def _robot(data: Any, source: Path) -> RobotSpec | None:
+    if data is None:
+        return None
+    try:
+        probe = Scenario.from_dict({"world": "w", "preset": "p", "prompt": "", "seed": 0, "agents": [],
+                                    "robot": data}, f"{source}: grove line")
+    except GroveError as exc:
+        raise HunavImportError(str(exc)) from None
+    return probe.robot
+
+
 def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | None = None,
                  trees_dir: str | Path | None = None, overwrite: bool = False) -> Path:
     """Write a GROVE bundle for a HuNavSim agents YAML and its trees; returns the bundle folder."""
     from grove_tui.generation.pipeline import GenerationResult
     from grove_tui.navigation.grid import build_grid
     from grove_tui.scenario.bundle import write_bundle
-    from grove_tui.scenario.model import AgentSpec, Scenario
-    from grove_tui.world import list_worlds, load_world, parse_world
 
     source = Path(agents_yaml)
     try:
-        document = yaml.safe_load(source.read_text(encoding="utf-8"))
+        text = source.read_text(encoding="utf-8")
+        document = yaml.safe_load(text)
     except FileNotFoundError:
         raise HunavImportError(f"{source}: no such file") from None
     except yaml.YAMLError as exc:
@@ -88,63 +248,66 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
     if problems:
         raise HunavImportError("; ".join(problems), hint="HuNavSim's own loader would stop on this file too.")
     params: dict[str, Any] = document["hunav_loader"]["ros__parameters"]
-    base = str(params.get("yaml_base_name", "warehouse_agents"))
-    map_name = str(params.get("map", "warehouse"))
+    layout = hunav_layout(params)
+    grove = _grove_line(text)
+    base = str(params.get("yaml_base_name", source.stem))
+    map_name = str(params.get("map", source.stem))
     global_goals = {int(k): (float(v["x"]), float(v["y"])) for k, v in (params.get("global_goals") or {}).items()}
 
     folders = [Path(trees_dir)] if trees_dir is not None else [source.parent, source.parent.parent / "behavior_trees"]
     agents: list[AgentSpec] = []
-    trees: dict[str, str] = {}
+    files: dict[str, str] = {}
     points: list[tuple[float, float]] = list(global_goals.values())
+    includes: list[str] = []
+    numbered = False
     for name in params.get("agents") or []:
-        entry = params[name]
-        agent_id = int(entry.get("id", -1))
-        if agent_id < 1:
-            raise HunavImportError(f"{source}: {name}.id is {agent_id}; GROVE numbers agents from 1 (0 is the robot)")
-        path = _tree_file(folders, base, agent_id)
-        try:
-            xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
-        except BTError as exc:
-            raise HunavImportError(str(exc), hint="Fix the tree, or pass --trees with the folder it includes from.") \
-                from None
-        tree_problems = check_tree_text(xml, str(path))
-        if tree_problems:
-            raise HunavImportError(f"{path}: " + "; ".join(str(p) for p in tree_problems))
-        pose = entry.get("init_pose") or {}
-        start = (float(pose.get("x", 0.0)), float(pose.get("y", 0.0)))
-        points.append(start)
-        rel = f"trees/agent_{agent_id}.xml"
-        trees[rel] = xml
-        behavior = entry.get("behavior") or {}
-        agents.append(AgentSpec(
-            id=agent_id, group=int(entry.get("group_id", -1)), start=start,
-            goals=tuple(global_goals[g] for g in entry.get("goals") or []), zone="", tree=rel,
-            radius=float(entry.get("radius", 0.35)), max_vel=float(entry.get("max_vel", 1.0)), label=name,
-            behavior=str(behavior.get("type", "Regular")),
-        ))
+        spec, extra = _agent(name, params[name], layout, global_goals, f"{source}: {name}")
+        numbered = numbered or _type_is_number(params[name])
+        if layout == "2.0":
+            path = _tree_file(folders, base, spec.id)
+            try:
+                xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
+            except BTError as exc:
+                raise HunavImportError(str(exc), hint="Fix the tree, or pass --trees with the folder it includes "
+                                                      "from.") from None
+            tree_problems = check_tree_text(xml, str(path))
+            if tree_problems:
+                raise HunavImportError(f"{path}: " + "; ".join(str(p) for p in tree_problems))
+            kept = f"{SOURCE_FOLDER}/{path.name}"
+            files[kept] = path.read_text(encoding="utf-8")  # verbatim, for a byte-exact export
+            extra = replace(extra, tree_file=kept)
+            for included in included_files(path, allowed_roots=[path.parent]):
+                rel = Path(os.path.relpath(included, path.parent)).as_posix()
+                if rel not in includes:
+                    includes.append(rel)
+                    files[f"{SOURCE_FOLDER}/{rel}"] = included.read_text(encoding="utf-8")
+        else:
+            xml = regular_nav_tree()
+        files[spec.tree] = xml
+        labels = grove.get("agents", {}).get(str(spec.id), {}) if isinstance(grove.get("agents"), dict) else {}
+        agents.append(replace(spec, hunav=replace(extra, tree_digest=tree_digest(xml)),
+                              label=str(labels.get("label", spec.label)), zone=str(labels.get("zone", ""))))
+        points += [spec.start, *spec.goals]
 
-    world_text = None
-    if world is not None:
-        world_ref = world
-        world_obj = load_world(world)
-    elif map_name in list_worlds():
-        world_ref = map_name
-        world_obj = load_world(map_name)
-    else:
-        world_ref = f"{map_name}.yaml"
-        world_text = _open_floor_world(map_name, points)
-        parsed, world_problems = parse_world(world_text, world_ref)
-        if world_problems or parsed is None:
-            problem = world_problems[0] if world_problems else "no world"
-            raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r}: {problem}")
-        world_obj = parsed
-    agents = [dataclasses.replace(a, zone=getattr(world_obj.zone_at(*a.start), "name", "")) for a in agents]
-    scenario = Scenario(world=world_ref, preset="normal", prompt=f"imported from HuNavSim {source.name}", seed=0,
-                        models={}, agents=tuple(sorted(agents, key=lambda a: a.id)), robot=None,
-                        global_goals=global_goals)
+    world_ref, world_text, world_obj = _world(world, map_name, grove, points, source)
+    agents = [a if a.zone else replace(a, zone=getattr(world_obj.zone_at(*a.start), "name", "")) for a in agents]
+    hunav = HunavSource(layout=layout, file=source.name, agents=tuple(params.get("agents") or []),
+                        behavior_type="number" if numbered else "name",
+                        base_name=params.get("yaml_base_name"), simulator=params.get("simulator"),
+                        map=params.get("map"), publish_people=params.get("publish_people"), keys=tuple(params),
+                        grove_comment=bool(grove), includes=tuple(includes))
+    scenario = Scenario(world=world_ref, preset=str(grove.get("preset", "normal")),
+                        prompt=str(grove.get("prompt", f"imported from HuNavSim {source.name}")),
+                        seed=int(grove.get("seed", 0)), models={}, agents=tuple(sorted(agents, key=lambda a: a.id)),
+                        robot=_robot(grove.get("robot"), source), global_goals=global_goals, hunav=hunav,
+                        resolution=float(grove.get("resolution", 0.1)))
+    try:  # every value within GROVE's bounds, as a bundle must be to load again
+        scenario = Scenario.from_dict(yaml.safe_load(scenario.dump_yaml()), str(source))
+    except GroveError as exc:
+        raise HunavImportError(str(exc)) from None
     grid = build_grid(world_obj, scenario.resolution, scenario.grid_inflation)
-    report = {"stages": {}, "notes": [f"imported from {source} (HuNavSim map {map_name!r}, {len(agents)} agents)"]}
-    files = dict(trees)
+    report = {"stages": {}, "notes": [f"imported from {source} (HuNavSim {layout} layout, map {map_name!r}, "
+                                      f"{len(agents)} agents)"]}
     if world_text is not None:
         files[world_ref] = world_text  # written in the same atomic step as the trees
     return write_bundle(GenerationResult(scenario, files, {}, grid, report), out_dir, overwrite=overwrite)

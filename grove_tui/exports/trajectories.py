@@ -11,8 +11,7 @@ import numpy as np
 from grove_tui.errors import TrajectoryExportError
 from grove_tui.analysis.metrics import Trajectories
 from grove_tui.crowd.recording import TrajectoryRecorder
-from grove_tui.scenario.bundle import load_scenario
-from grove_tui.world import load_world
+from grove_tui.scenario.bundle import load_bundle_world, load_scenario
 
 
 def recorder_from_csv(path: Path) -> TrajectoryRecorder:
@@ -39,7 +38,7 @@ def export_trajectories(bundle_dir: str | Path, out_dir: str | Path) -> list[Pat
     if not csv.exists():
         raise TrajectoryExportError(f"{csv}: no trajectories yet; simulate first (grove simulate {bundle})")
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
+    world = load_bundle_world(bundle, scenario)
     # Read (and check) the trajectories before creating anything: a broken CSV leaves no folder behind.
     recorder = recorder_from_csv(csv)
     out = Path(out_dir)

@@ -79,7 +79,8 @@ class HunavAgent:
     goal_headings: tuple[float | None, ...] = ()  # 1.0 layout: each goal's h
     goal_ids: tuple[int, ...] = ()  # 2.0 layout: the global_goals ids, as listed
     tree_file: str = ""  # 2.0 layout: HuNavSim's tree file, kept verbatim in the bundle
-    tree_digest: str = ""  # SHA-256 of the GROVE tree made from it; while equal, the export writes tree_file
+    tree_digest: str = ""  # SHA-256 of the GROVE tree import made; while equal, the export writes tree_file
+    keys: tuple[str, ...] = ()  # the agent's keys in the file, in order ("init_pose.x", "g0.h", ...)
 
 
 @dataclass(frozen=True)
@@ -95,6 +96,9 @@ class HunavSource:
     simulator: str | None = None
     map: str | None = None
     publish_people: bool | None = None
+    keys: tuple[str, ...] = ()  # the top-level keys of `ros__parameters`, in order
+    grove_comment: bool = False  # the file carried GROVE's own line (an earlier `grove export hunav`)
+    includes: tuple[str, ...] = ()  # files its trees <include>, kept verbatim under hunav/ (relative paths)
 
 
 @dataclass(frozen=True)
@@ -371,7 +375,16 @@ def _hunav_agent(data: Any, where: str) -> HunavAgent:
         goal_ids=tuple(_integer(g, f"{where}.goal_ids[{j}]", -(2**31), 2**31 - 1) for j, g in enumerate(ids)),
         tree_file="" if not data.get("tree_file") else bundle_relative(data["tree_file"], f"{where}.tree_file"),
         tree_digest=str(data.get("tree_digest", "")),
+        keys=_texts(data.get("keys"), f"{where}.keys"),
     )
+
+
+def _texts(value: Any, where: str) -> tuple[str, ...]:
+    if value is None:
+        return ()
+    if not isinstance(value, list):
+        raise ScenarioError(f"{where}: expected a list of names")
+    return tuple(_text(v, f"{where}[{j}]") for j, v in enumerate(value))
 
 
 def _hunav_source(data: Any, where: str) -> HunavSource:
@@ -390,7 +403,11 @@ def _hunav_source(data: Any, where: str) -> HunavSource:
                        agents=tuple(_text(a, f"{where}.agents[{j}]") for j, a in enumerate(agents)),
                        behavior_type=behavior_type, base_name=_optional(data, "base_name", str, where),
                        simulator=_optional(data, "simulator", str, where), map=_optional(data, "map", str, where),
-                       publish_people=_optional(data, "publish_people", bool, where))
+                       publish_people=_optional(data, "publish_people", bool, where),
+                       keys=_texts(data.get("keys"), f"{where}.keys"),
+                       grove_comment=_optional(data, "grove_comment", bool, where) or False,
+                       includes=tuple(bundle_relative(v, f"{where}.includes") for v in _texts(data.get("includes"),
+                                                                                                  f"{where}.includes")))
 
 
 def _agent_from_dict(data: Any, where: str) -> AgentSpec:

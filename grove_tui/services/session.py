@@ -460,13 +460,13 @@ class GroveSession:
         The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
         """
         from grove_tui.analysis.bundle_metrics import bundle_metrics
-        from grove_tui.scenario.bundle import load_bundle, replace_run_outputs
+        from grove_tui.scenario.bundle import bundle_world_reference, load_bundle, replace_run_outputs
         from grove_tui.scenario.events import write_events
         from grove_tui.simulation.simulation import Simulation
 
         bundle = Path(bundle)
         scenario, _, _, _ = load_bundle(bundle)
-        world = self.load_world(_world_name(scenario.world, bundle))
+        world = self.load_world(bundle_world_reference(bundle, scenario))
         sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning,
                                        params=pedestrian_params(model))
         started = time.perf_counter()
@@ -665,12 +665,6 @@ class GroveSession:
             if on_progress is not None:
                 on_progress(index, len(cases), score)
         return scores
-
-
-def _world_name(reference: str, bundle: Path) -> str:
-    """A scenario's world reference as load_world takes it: a path relative to the bundle, or a name."""
-    candidate = bundle / reference
-    return str(candidate) if candidate.suffix in (".yaml", ".yml") and candidate.exists() else reference
 
 
 def _close(llm: Any) -> None:

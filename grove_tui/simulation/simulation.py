@@ -135,14 +135,11 @@ class Simulation:
         `params`: the pedestrian model's SFMParams (default: the "grove" model)."""
         from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
-        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
-        from grove_tui.world import load_world
+        from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, read_bundle_text
 
         bundle_dir = Path(bundle_dir)
         if world is None:
-            world_ref = scenario.world
-            candidate = bundle_dir / world_ref
-            world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
+            world = load_bundle_world(bundle_dir, scenario)
         grid_path = bundle_dir / "grid.npz"
         # a bundle without its grid: inflate by the people's largest radius, as generation did
         grid = (load_grid(bundle_dir) if os.path.lexists(grid_path)
