@@ -29,13 +29,16 @@ def export() -> None:
 @click.option("--keep-grove-nodes", is_flag=True,
               help="Keep GROVE-only nodes (Queue, FollowVelocityField...) and write their TreeNodesModel, "
                    "instead of lowering them to HuNavSim nodes.")
-@click.option("--simulator", default="Gazebo Classic", show_default=True,
+@click.option("--simulator", default=None,
               type=click.Choice(["Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots"]),
-              help="HuNavSim wrapper the files are for.")
-@click.option("--base-name", default=None, help="yaml_base_name (default agents_<world>).")
+              help="HuNavSim wrapper the files are for (default: an imported scenario's own, else Gazebo Classic).")
+@click.option("--base-name", default=None,
+              help="yaml_base_name (default: an imported scenario's own, else agents_<world>).")
 def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grove_nodes: bool, simulator: str,
                          base_name: str | None) -> None:
-    """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
+    """HuNavSim agents yaml and one BehaviorTree.CPP v4 file per agent (2.0), with the world and map.
+
+    A bundle imported from HuNavSim gets its own file back: its layout (1.0 or 2.0), parameters and trees."""
     result = GroveSession().export("hunav", bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator,
                                    base_name=base_name, overwrite=overwrite, trajectories=True)
     copied = result.trajectories
