@@ -8,6 +8,7 @@ long the run.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -20,8 +21,8 @@ from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.bt.xml import read_tree
 from grove_tui.exports.scene import Scene, scene_of
-from grove_tui.scenario.bundle import load_bundle, load_bundle_world
-from grove_tui.scenario.events import EVENTS_FILE, SimEvent, read_events
+from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle, load_bundle_world
+from grove_tui.scenario.events import EVENTS_FILE, MAX_EVENTS_BYTES, SimEvent, read_events
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import World
 
@@ -66,11 +67,16 @@ def open_simulated_bundle(bundle_dir: str | Path) -> SimulatedBundle:
     root = Path(bundle_dir)
     scenario, trees, fields, grid = load_bundle(root)
     csv = root / TRAJECTORIES_FILE
-    if not csv.is_file():
+    if not os.path.lexists(csv):
         raise StreamExportError(f"{csv}: no trajectories yet; simulate first: grove simulate {root}")
+    # Inside the bundle, a regular file (not a pipe, not a link to /dev/zero), bounded.
+    bundle_member(root, TRAJECTORIES_FILE, "trajectory file", MAX_TRAJECTORY_BYTES)
     world = load_bundle_world(root, scenario)
     events_path = root / EVENTS_FILE
-    events = sorted(read_events(events_path), key=lambda e: e.t) if events_path.is_file() else []
+    events = []
+    if os.path.lexists(events_path):
+        events = sorted(read_events(bundle_member(root, EVENTS_FILE, "event log", MAX_EVENTS_BYTES)),
+                        key=lambda e: e.t)
     _check_header(csv)
     documents = {agent.id: read_tree(trees[agent.tree], str(root / agent.tree)) for agent in scenario.agents}
     return SimulatedBundle(root, scenario, world, grid, fields, events, csv, scene_of(world, scenario, documents))

@@ -23,6 +23,11 @@ carries or GROVE ships, never a path relative to the current folder: it runs fro
 
 A file `grove export hunav` wrote carries GROVE's line (`# grove: {...}`: prompt, preset, seed, robot,
 labels); importing it gives those back, so GROVE -> HuNavSim -> GROVE keeps the prompt and the robot.
+
+The file is read as every user file is (a bounded regular file, UTF-8, YAML without alias bombs or
+deep nesting) and checked against the limits generation keeps: finite poses and goals within the
+coordinates scenarios use, speeds and radii as a bundle allows them, HuNavSim's behavior types, at most
+MAX_GROUP_COUNT people per group and MAX_SCENARIO_AGENTS in all. What it writes, `simulate` reads.
 """
 
 from __future__ import annotations
@@ -31,6 +36,8 @@ import hashlib
 import json
 import math
 import os
+import re
+from collections import Counter
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
@@ -44,11 +51,19 @@ from grove_tui.errors import GroveError, HunavImportError
 from grove_tui.exports.hunav import GROVE_LINE_PREFIX, KEPT_NODE_PREFIX
 from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout
 from grove_tui.exports.scene import BEHAVIOR_NUMBERS
-from grove_tui.scenario.model import AgentSpec, HunavAgent, HunavBehavior, HunavSource, RobotSpec, Scenario
+from grove_tui.limits import (MAX_COORDINATE, MAX_GROUP_COUNT, MAX_SCENARIO_AGENTS, InputLimitError, load_yaml_bounded,
+                              read_text_bounded)
+from grove_tui.scenario.bundle import HUNAV_FOLDER, WORLD_FOLDER
+from grove_tui.scenario.model import (BEHAVIOR_TYPES, MAX_AGENTS, MAX_VEL_RANGE, RADIUS_RANGE, AgentSpec, HunavAgent,
+                                      HunavBehavior, HunavSource, RobotSpec, Scenario)
 
 OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a synthesized world
-WORLD_FOLDER = "world"  # where an imported bundle keeps its world file
-SOURCE_FOLDER = "hunav"  # where it keeps HuNavSim's tree files, verbatim
+# A HuNavSim scenario of MAX_SCENARIO_AGENTS agents is well under a megabyte of YAML.
+MAX_AGENTS_YAML_BYTES = 8 * 1024 * 1024
+# `map` and `yaml_base_name` become file names (world/<map>.yaml, <base>__agent_<id>_bt.xml).
+PLAIN_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}$")
+SHOWN_PROBLEMS = 3  # problems printed in the one-line error; the count of the rest follows
+GOAL_RADIUS_RANGE = (0.0, 100.0)  # metres, as a bundle takes it
 BEHAVIOR_NAMES = {number: name for name, number in BEHAVIOR_NUMBERS.items()}
 
 
@@ -118,6 +133,84 @@ def _grove_line(text: str) -> dict[str, Any]:
     return {}
 
 
+def _one_line(problems: list[str], source: Path) -> str:
+    """The file once, its first problems, then how many more: a million-agent file gave a 128 MB line."""
+    prefix = f"{source}: "
+    shown = "; ".join(problem.removeprefix(prefix) for problem in problems[:SHOWN_PROBLEMS])
+    more = len(problems) - SHOWN_PROBLEMS
+    return prefix + shown + (f" (and {more:,} more problems)" if more > 0 else "")
+
+
+def _short(value: Any) -> str:
+    try:
+        text = repr(value)
+    except ValueError:  # an int too long to print
+        return f"<{type(value).__name__}>"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _read_document(source: Path) -> tuple[str, dict[str, Any]]:
+    """The agents YAML's text and its `ros__parameters`, read as every user file is and checked before any use."""
+    try:
+        text = read_text_bounded(source, MAX_AGENTS_YAML_BYTES, "agents YAML")
+        document = load_yaml_bounded(text, str(source))
+    except InputLimitError as exc:
+        raise HunavImportError(str(exc)) from None
+    params = document.get("hunav_loader", {}).get("ros__parameters") if isinstance(document, dict) and \
+        isinstance(document.get("hunav_loader"), dict) else None
+    agents = params.get("agents") if isinstance(params, dict) else None
+    if isinstance(agents, list) and len(agents) > MAX_SCENARIO_AGENTS:
+        # Before the per-agent checks: a million names would make a million problems.
+        raise HunavImportError(f"{source}: `agents` lists {len(agents):,} agents; GROVE scenarios hold at most "
+                               f"{MAX_SCENARIO_AGENTS:,} (the most generation writes)")
+    problems = check_loader_parameters(document, str(source))
+    if problems:
+        raise HunavImportError(_one_line(problems, source), hint="HuNavSim's own loader would stop on this file too.")
+    assert isinstance(params, dict)  # check_loader_parameters refuses a file without it
+    return text, params
+
+
+def _plain_name(params: dict[str, Any], key: str, default: str, source: Path) -> str:
+    value = params.get(key, default)
+    if not isinstance(value, str) or not PLAIN_NAME.match(value):
+        raise HunavImportError(f"{source}: `{key}` is {_short(value)}; it names files, so it must be 1 to 100 "
+                               "letters, digits, '_', '-' or '.' (not starting with '.')")
+    return value
+
+
+def _number(value: Any, where: str, low: float, high: float) -> float:
+    """A finite number in [low, high], as a bundle's own checks take it (scenario/model.py)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise HunavImportError(f"{where} is {_short(value)}; expected a number")
+    if isinstance(value, int) and not low <= value <= high:
+        raise HunavImportError(f"{where} is {_short(value)}; it must be within {low:g}..{high:g}")
+    number = float(value)
+    if not (math.isfinite(number) and low <= number <= high):
+        raise HunavImportError(f"{where} is {_short(value)}; it must be a finite number within {low:g}..{high:g}")
+    return number
+
+
+def _point(mapping: Any, where: str) -> tuple[float, float]:
+    if not isinstance(mapping, dict):
+        raise HunavImportError(f"{where} is {_short(mapping)}; expected a mapping with x and y (metres)")
+    return (_number(mapping.get("x", 0.0), f"{where}.x", -MAX_COORDINATE, MAX_COORDINATE),
+            _number(mapping.get("y", 0.0), f"{where}.y", -MAX_COORDINATE, MAX_COORDINATE))
+
+
+def _optional_number(mapping: dict[str, Any], key: str, where: str, low: float, high: float) -> float | None:
+    return None if mapping.get(key) is None else _number(mapping[key], f"{where}.{key}", low, high)
+
+
+def _check_groups(groups: list[int], source: Path) -> None:
+    """Generation's bounds: at most MAX_GROUP_COUNT people share a group."""
+    sizes = Counter(group for group in groups if group >= 0)
+    crowded = [(group, size) for group, size in sizes.items() if size > MAX_GROUP_COUNT]
+    if crowded:
+        group, size = crowded[0]
+        raise HunavImportError(f"{source}: group_id {group} has {size:,} agents; a group holds at most "
+                               f"{MAX_GROUP_COUNT} (as generation allows)")
+
+
 def _keys(mapping: dict[str, Any], prefix: str = "") -> tuple[str, ...]:
     """The keys of an agent's block in file order, nested ones dotted ("init_pose.x", "g0.h")."""
     out: list[str] = []
@@ -130,43 +223,51 @@ def _keys(mapping: dict[str, Any], prefix: str = "") -> tuple[str, ...]:
     return tuple(out)
 
 
-def _behavior(entry: dict[str, Any], where: str) -> tuple[str, HunavBehavior | None]:
+def _behavior(entry: dict[str, Any], layout: str, where: str) -> tuple[str, HunavBehavior | None]:
     """(GROVE behavior name, the block as given, or None for 1.0's flat `behavior: <number>`)."""
     given = entry.get("behavior")
+    if given is not None and not isinstance(given, dict) and layout == "2.0":
+        raise HunavImportError(f"{where}.behavior is {_short(given)}; HuNavSim's loader reads a mapping "
+                               f"(behavior: {{type: Scared, ...}})")
     block = given if isinstance(given, dict) else None
     kind = block.get("type") if block is not None else given
     if kind is None:
         name = "Regular"  # the loader's default type
-    elif isinstance(kind, str):
-        name = kind
-    elif isinstance(kind, int) and kind in BEHAVIOR_NAMES:
-        name = BEHAVIOR_NAMES[kind]
+    elif isinstance(kind, int) and not isinstance(kind, bool) and kind in BEHAVIOR_NAMES:
+        name = BEHAVIOR_NAMES[kind]  # 1.0 numbers its behaviors
     else:
-        raise HunavImportError(f"{where}.behavior: type {kind!r} is not a HuNavSim behavior "
-                               f"({', '.join(f'{n} {k}' for k, n in BEHAVIOR_NAMES.items())})")
-    if name not in BEHAVIOR_NUMBERS:
-        raise HunavImportError(f"{where}.behavior: type {name!r} is not a HuNavSim behavior "
-                               f"({', '.join(BEHAVIOR_NUMBERS)})")
+        name = kind if isinstance(kind, str) else ""
+    if name not in BEHAVIOR_TYPES:
+        numbers = ", ".join(f"{number} {label}" for number, label in BEHAVIOR_NAMES.items())
+        raise HunavImportError(f"{where}.behavior.type is {_short(kind)}; HuNavSim's behaviors are "
+                               f"{', '.join(BEHAVIOR_TYPES)} (1.0 numbers them: {numbers})")
     if block is None:
         return name, None
-    return name, HunavBehavior(**{key: block.get(key) for key in HunavBehavior.__dataclass_fields__})
-
-
-def _type_is_number(entry: dict[str, Any]) -> bool:
-    """Whether the agent's behavior type is written as a number (1.0) rather than a name (2.0)."""
-    given = entry.get("behavior")
-    kind = given.get("type") if isinstance(given, dict) else given
-    return isinstance(kind, int) and not isinstance(kind, bool)
+    values: dict[str, Any] = {}
+    for key in HunavBehavior.__dataclass_fields__:
+        value = block.get(key)
+        if value is not None and key not in ("configuration", "once"):
+            value = _number(value, f"{where}.behavior.{key}", -1e6, 1e6)
+        values[key] = value
+    return name, HunavBehavior(**values)
 
 
 def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int, tuple[float, float]],
-           where: str) -> tuple[AgentSpec, HunavAgent]:
-    """The agent as GROVE runs it and what else its file says (tree fields set by the caller)."""
-    agent_id = int(entry.get("id", -1))
-    if agent_id < 1:
-        raise HunavImportError(f"{where}.id is {agent_id}; GROVE numbers agents from 1 (0 is the robot)")
-    pose = entry.get("init_pose") or {}
-    kind, behavior = _behavior(entry, where)
+           source: Path) -> tuple[AgentSpec, HunavAgent]:
+    """The agent as GROVE runs it and what else its file says (tree fields set by the caller), each value
+    checked against what a bundle accepts (so `simulate` reads the result)."""
+    where = f"{source}: {name}"
+    agent_id = entry.get("id", -1)
+    if isinstance(agent_id, bool) or not isinstance(agent_id, int) or not 1 <= agent_id <= 10 * MAX_SCENARIO_AGENTS:
+        raise HunavImportError(f"{where}.id is {_short(agent_id)}; GROVE numbers agents from 1 "
+                               f"(0 is the robot) up to {10 * MAX_SCENARIO_AGENTS}")
+    group = entry.get("group_id", -1)
+    if isinstance(group, bool) or not isinstance(group, int) or not -1 <= group <= 10 * MAX_AGENTS:
+        raise HunavImportError(f"{where}.group_id is {_short(group)}; expected -1 (no group) or a group id "
+                               f"0..{10 * MAX_AGENTS}")
+    pose = entry.get("init_pose", {})
+    start = _point(pose, f"{where}.init_pose")
+    kind, behavior = _behavior(entry, layout, where)
     listed = list(entry.get("goals") or [])
     if layout == "2.0":
         goals = tuple(global_goals[g] for g in listed)
@@ -174,25 +275,24 @@ def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int
         headings: tuple[float | None, ...] = ()
         ids = tuple(int(g) for g in listed)
     else:
-        blocks: list[dict[str, Any]] = []
-        for goal in listed:
-            block = entry.get(goal)
-            blocks.append(block if isinstance(block, dict) else {})
-        goals = tuple((float(b.get("x", 0.0)), float(b.get("y", 0.0))) for b in blocks)
+        goals = tuple(_point(entry.get(g), f"{where}.{g}") for g in listed)
         names = tuple(str(g) for g in listed)
-        headings = tuple(None if b.get("h") is None else float(b["h"]) for b in blocks)
+        headings = tuple(_optional_number(entry[g], "h", f"{where}.{g}", -1e3, 1e3) for g in listed)
         ids = ()
+    skin = entry.get("skin")
+    if skin is not None and (isinstance(skin, bool) or not isinstance(skin, int) or not -1 <= skin <= 1000):
+        raise HunavImportError(f"{where}.skin is {_short(skin)}; expected a mesh number")
     spec = AgentSpec(
-        id=agent_id, group=int(entry.get("group_id", -1)),
-        start=(float(pose.get("x", 0.0)), float(pose.get("y", 0.0))), goals=goals, zone="",
-        tree=f"trees/agent_{agent_id}.xml", radius=float(entry.get("radius", 0.35)),
-        max_vel=float(entry.get("max_vel", 1.0)), label=name, behavior=kind,
+        id=agent_id, group=group, start=start, goals=goals, zone="", tree=f"trees/agent_{agent_id}.xml",
+        radius=_number(entry.get("radius", 0.35), f"{where}.radius", *RADIUS_RANGE),
+        max_vel=_number(entry.get("max_vel", 1.0), f"{where}.max_vel", *MAX_VEL_RANGE), label=name, behavior=kind,
         # HuNavSim's loader defaults where the file is silent: the agent moves as HuNavSim moves it
-        goal_radius=float(entry.get("goal_radius", 0.0)), cyclic_goals=bool(entry.get("cyclic_goals", True)),
-        heading=float(pose.get("h", 0.0)))
-    extra = HunavAgent(name=name, skin=None if entry.get("skin") is None else int(entry["skin"]),
-                       z=None if pose.get("z") is None else float(pose["z"]), behavior=behavior,
-                       goal_names=names, goal_headings=headings, goal_ids=ids, keys=_keys(entry))
+        goal_radius=_number(entry.get("goal_radius", 0.0), f"{where}.goal_radius", *GOAL_RADIUS_RANGE),
+        cyclic_goals=bool(entry.get("cyclic_goals", True)),
+        heading=_number(pose.get("h", 0.0), f"{where}.init_pose.h", -1e3, 1e3))
+    extra = HunavAgent(name=name, skin=skin, z=_optional_number(pose, "z", f"{where}.init_pose", -MAX_COORDINATE,
+                                                                 MAX_COORDINATE),
+                       behavior=behavior, goal_names=names, goal_headings=headings, goal_ids=ids, keys=_keys(entry))
     return spec, extra
 
 
@@ -213,8 +313,9 @@ def _world(world: str | None, map_name: str, grove: dict[str, Any], points: list
     text = _open_floor_world(map_name, points)
     parsed, problems = parse_world(text, reference)
     if problems or parsed is None:
-        problem = problems[0] if problems else "no world"
-        raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r}: {problem}")
+        problem = problems[0].message if problems else "no world"
+        raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r} around the agents' "
+                               f"poses and goals: {problem}")
     return reference, text, parsed
 
 
@@ -237,22 +338,17 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
     from grove_tui.scenario.bundle import write_bundle
 
     source = Path(agents_yaml)
-    try:
-        text = source.read_text(encoding="utf-8")
-        document = yaml.safe_load(text)
-    except FileNotFoundError:
-        raise HunavImportError(f"{source}: no such file") from None
-    except yaml.YAMLError as exc:
-        raise HunavImportError(f"{source}: not valid YAML: {exc}") from None
-    problems = check_loader_parameters(document, str(source))
-    if problems:
-        raise HunavImportError("; ".join(problems), hint="HuNavSim's own loader would stop on this file too.")
-    params: dict[str, Any] = document["hunav_loader"]["ros__parameters"]
+    text, params = _read_document(source)
     layout = hunav_layout(params)
     grove = _grove_line(text)
-    base = str(params.get("yaml_base_name", source.stem))
-    map_name = str(params.get("map", source.stem))
-    global_goals = {int(k): (float(v["x"]), float(v["y"])) for k, v in (params.get("global_goals") or {}).items()}
+    base = _plain_name(params, "yaml_base_name", source.stem, source)
+    map_name = _plain_name(params, "map", source.stem, source)
+    global_goals = {int(k): _point(v, f"{source}: global_goals.{k}")
+                    for k, v in (params.get("global_goals") or {}).items()}
+    # Every agent's values first (cheap), then the trees (parsed one by one): a bad value is refused
+    # before any tree is read.
+    checked = [(name, *_agent(name, params[name], layout, global_goals, source)) for name in params.get("agents") or []]
+    _check_groups([spec.group for _name, spec, _extra in checked], source)
 
     folders = [Path(trees_dir)] if trees_dir is not None else [source.parent, source.parent.parent / "behavior_trees"]
     agents: list[AgentSpec] = []
@@ -260,8 +356,7 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
     points: list[tuple[float, float]] = list(global_goals.values())
     includes: list[str] = []
     numbered = False
-    for name in params.get("agents") or []:
-        spec, extra = _agent(name, params[name], layout, global_goals, f"{source}: {name}")
+    for name, spec, extra in checked:
         numbered = numbered or _type_is_number(params[name])
         if layout == "2.0":
             path = _tree_file(folders, base, spec.id)
@@ -273,14 +368,14 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
             tree_problems = check_tree_text(xml, str(path))
             if tree_problems:
                 raise HunavImportError(f"{path}: " + "; ".join(str(p) for p in tree_problems))
-            kept = f"{SOURCE_FOLDER}/{path.name}"
+            kept = f"{HUNAV_FOLDER}/{path.name}"
             files[kept] = path.read_text(encoding="utf-8")  # verbatim, for a byte-exact export
             extra = replace(extra, tree_file=kept)
             for included in included_files(path, allowed_roots=[path.parent]):
                 rel = Path(os.path.relpath(included, path.parent)).as_posix()
                 if rel not in includes:
                     includes.append(rel)
-                    files[f"{SOURCE_FOLDER}/{rel}"] = included.read_text(encoding="utf-8")
+                    files[f"{HUNAV_FOLDER}/{rel}"] = included.read_text(encoding="utf-8")
         else:
             xml = regular_nav_tree()
         files[spec.tree] = xml
@@ -301,11 +396,11 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
                         seed=int(grove.get("seed", 0)), models={}, agents=tuple(sorted(agents, key=lambda a: a.id)),
                         robot=_robot(grove.get("robot"), source), global_goals=global_goals, hunav=hunav,
                         resolution=float(grove.get("resolution", 0.1)))
-    try:  # every value within GROVE's bounds, as a bundle must be to load again
-        scenario = Scenario.from_dict(yaml.safe_load(scenario.dump_yaml()), str(source))
+    try:  # the checks `simulate` makes when it reads the bundle back: what is written, loads
+        scenario = Scenario.from_dict(yaml.safe_load(scenario.dump_yaml()), f"{source} (as a bundle)")
+        grid = build_grid(world_obj, scenario.resolution, scenario.grid_inflation)
     except GroveError as exc:
         raise HunavImportError(str(exc)) from None
-    grid = build_grid(world_obj, scenario.resolution, scenario.grid_inflation)
     report = {"stages": {}, "notes": [f"imported from {source} (HuNavSim {layout} layout, map {map_name!r}, "
                                       f"{len(agents)} agents)"]}
     if world_text is not None:
