@@ -49,7 +49,7 @@ from grove_tui.bt.document import TreeDocument, TreeElement, node
 from grove_tui.bt.xml import BTError, check_tree_text, read_tree, write_tree
 from grove_tui.errors import GroveError, HunavImportError
 from grove_tui.exports.hunav import GROVE_LINE_PREFIX, KEPT_NODE_PREFIX
-from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout
+from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout, ignored_keys
 from grove_tui.exports.scene import BEHAVIOR_NUMBERS
 from grove_tui.limits import (MAX_COORDINATE, MAX_GROUP_COUNT, MAX_SCENARIO_AGENTS, InputLimitError, load_yaml_bounded,
                               read_text_bounded)
@@ -252,6 +252,13 @@ def _behavior(entry: dict[str, Any], layout: str, where: str) -> tuple[str, Huna
     return name, HunavBehavior(**values)
 
 
+def _type_is_number(entry: dict[str, Any]) -> bool:
+    """Whether the agent's behavior type is written as a number (1.0) rather than a name (2.0)."""
+    given = entry.get("behavior")
+    kind = given.get("type") if isinstance(given, dict) else given
+    return isinstance(kind, int) and not isinstance(kind, bool)
+
+
 def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int, tuple[float, float]],
            source: Path) -> tuple[AgentSpec, HunavAgent]:
     """The agent as GROVE runs it and what else its file says (tree fields set by the caller), each value
@@ -401,8 +408,13 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
         grid = build_grid(world_obj, scenario.resolution, scenario.grid_inflation)
     except GroveError as exc:
         raise HunavImportError(str(exc)) from None
-    report = {"stages": {}, "notes": [f"imported from {source} (HuNavSim {layout} layout, map {map_name!r}, "
-                                      f"{len(agents)} agents)"]}
+    notes = [f"imported from {source} (HuNavSim {layout} layout, map {map_name!r}, {len(agents)} agents)"]
+    ignored = ignored_keys({"hunav_loader": {"ros__parameters": params}})
+    if ignored:
+        notes.append("HuNavSim's loader never reads " + ", ".join(ignored[:SHOWN_PROBLEMS])
+                     + (f" and {len(ignored) - SHOWN_PROBLEMS} more" if len(ignored) > SHOWN_PROBLEMS else "")
+                     + ": not kept")
+    report = {"stages": {}, "notes": notes}
     if world_text is not None:
         files[world_ref] = world_text  # written in the same atomic step as the trees
     return write_bundle(GenerationResult(scenario, files, {}, grid, report), out_dir, overwrite=overwrite)

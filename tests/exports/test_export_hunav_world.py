@@ -122,21 +122,29 @@ def test_nav2_map_cells_are_the_worlds_boxes_not_inflated(which, request):
     description, occupied = _map(exported)
     r = description["resolution"]
     x0, y0 = description["origin"][:2]
-    rows, cols = np.indices(occupied.shape)
-    cx, cy = x0 + (cols + 0.5) * r, y0 + (rows + 0.5) * r
     models = _models(exported)
-    boxes = [_box_polygon(pose, size) for pose, size in models.values()]
+
+    def cells(polygon, test):
+        """`occupied`-shaped mask of the cells whose centre passes `test` against the polygon."""
+        mask = np.zeros(occupied.shape, dtype=bool)
+        bx0, by0, bx1, by1 = polygon.bounds
+        c0, c1 = max(int((bx0 - x0) // r) - 1, 0), min(int((bx1 - x0) // r) + 2, occupied.shape[1])
+        r0, r1 = max(int((by0 - y0) // r) - 1, 0), min(int((by1 - y0) // r) + 2, occupied.shape[0])
+        rows, cols = np.mgrid[r0:r1, c0:c1]
+        mask[r0:r1, c0:c1] = test(polygon, x0 + (cols + 0.5) * r, y0 + (rows + 0.5) * r)
+        return mask
+
     # every cell whose centre lies inside a box of the world file is occupied...
     inside = np.zeros(occupied.shape, dtype=bool)
-    for box in boxes:
-        inside |= shapely.contains_xy(box, cx, cy)
+    for pose, size in models.values():
+        inside |= cells(_box_polygon(pose, size), shapely.contains_xy)
     assert occupied[inside].all()
     # ...and every occupied cell is one: a box grown by at most half a cell diagonal (so a 0.1 m wall is
     # a closed chain of cells), nothing inflated by a body radius
     grown = np.zeros(occupied.shape, dtype=bool)
     d = r * math.sqrt(0.5) + 1e-9
     for name, (pose, size) in models.items():
-        grown |= shapely.intersects_xy(_box_polygon(pose, size, d, d if name.startswith("wall_") else 0.0), cx, cy)
+        grown |= cells(_box_polygon(pose, size, d, d if name.startswith("wall_") else 0.0), shapely.intersects_xy)
     assert not (occupied & ~grown).any()
     # the door openings stay free: a robot's planner can pass them
     world = load_world(yaml.safe_load(exported.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]["map"])

@@ -10,6 +10,7 @@ and every agent field, and a second export equals the first. (Generated bundles:
 from __future__ import annotations
 
 import dataclasses
+import json
 from pathlib import Path
 
 import pytest
@@ -75,13 +76,15 @@ def shipped_round_trip(request, tmp_path_factory):
 
 
 def test_every_parameter_the_loader_reads_comes_back_field_by_field(shipped_round_trip):
-    name, source, _bundle, export = shipped_round_trip
+    name, source, bundle, export = shipped_round_trip
     original, exported = _document(source), _document(export.agents_yaml)
     assert field_differences(original, exported) == [], name
     # Not only what the loader reads: the whole file, less keys the loader never reads (the
     # warehouse 1.0 file's `worker4.g3.H`, a typo for `h`), parses to the same document...
     ignored = ignored_keys(original)
     assert ignored == (["worker4.g3.H"] if name == "1.0-warehouse" else [])
+    notes = json.loads((bundle / "generation.json").read_text())["notes"]
+    assert any("never reads worker4.g3.H" in note for note in notes) == bool(ignored)
     assert _without(original, ignored) == exported
     # ...with every key in its place: the same order, top level and agent by agent
     stripped = _without(original, ignored)["hunav_loader"]["ros__parameters"]
