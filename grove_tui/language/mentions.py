@@ -44,7 +44,7 @@ class Mention:
     exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
     fraction: float = 1.0  # "half the office": the share of the zone's people
     zone_place: Place | None = None  # the zone named inside the mention ("half the open office")
-    escorted_by: int | None = None  # "an orderly wheels a patient": the mention of who takes them along
+    apposition: tuple[int, int] | None = None  # "everyone in the café, some thirty of them,": the count's words
 
 
 class Mentions:
@@ -67,12 +67,37 @@ class Mentions:
             if m is None:
                 i += 1
                 continue
+            if found and self._apposition(found[-1], m, len(found) - 1):
+                # "All the diners in the canteen, some thirty of them, leave": how many the group before is
+                count = m.count
+                assert count is not None
+                found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
+                i = m.last + 1
+                continue
             if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
             found.append(m)
             i = m.last + 1
         return found
+
+    def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
+        """Whether m only says how many the mention before is, set off by commas, with no verb
+        between them: "everyone in the auditorium, roughly sixty people, evacuates", "the commuters
+        on platform 1, some forty of them, walk"."""
+        s = self.s
+        if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or \
+                m.count.kind not in ("exact", "approximate") or m.last + 1 >= s.n:
+            return False
+        if m.relation not in (None, f"subset_of:{index}") or m.label not in ("person", before.label):
+            return False
+        if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
+            return False  # "Ten nurses, two of them students, ...": part of a group said in full
+        between = range(before.last + 1, m.first - 1)
+        if any(s.w[x].pos in ("VERB", "AUX") or s.low[x] in (",", ";", ":") for x in between):
+            return False
+        after = m.last + 1
+        return s.low[after] == "," or s.w[after].pos in ("VERB", "AUX") or self.people.third_person_verb(after)
 
     # ---- where a group can start -------------------------------------------------------------
 
@@ -109,9 +134,22 @@ class Mentions:
             return True
         if prev == "by" and s.w[p].dep == "agent":
             return True  # "the balcony is used by a smoker": the passive's doer
+        if verb_lemma(prev) == "have" and self._place_before(p):
+            return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
             return True  # "the boardroom meeting of twelve people breaks up"
         return self._parser_subject(at)
+
+    def _place_before(self, p: int) -> bool:
+        """Whether the words of p's clause before it name a place and no person ("the café has")."""
+        s = self.s
+        k = p - 1
+        words: list[int] = []
+        while k >= 0 and not s.is_punct(k) and s.low[k] not in lx.CLAUSE_STARTERS and s.w[k].sentence == s.w[p].sentence:
+            words.append(k)
+            k -= 1
+        return bool(words) and not any(self.people.is_person_noun(x) for x in words) and \
+            any(s.index.knows(s.lemma(x)) for x in words)
 
     def _parser_subject(self, at: int) -> bool:
         """Whether the phrase at `at` is the subject the parser found ("At six the staff head out"):
@@ -149,13 +187,17 @@ class Mentions:
         return self.subject_position(k) if s.low[k - 1:k] != ["of"] else False
 
     def led_by(self, at: int) -> bool:
-        """Whether the phrase at `at` is the counted object of a verb of leading right after a person
-        ("a tour guide leads twelve tourists", "two nurses escort five patients")."""
+        """Whether the phrase at `at` names people a person right before takes along: the object of a
+        verb of leading, escorting, pushing or helping ("a tour guide leads twelve tourists", "an
+        orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
-        number = number_at(s, at)
-        return p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS and self.people.is_person_noun(p - 1) and \
-            number is not None and number[0] > 1
+        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not self.people.is_person_noun(p - 1):
+            return False
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        start = s.skip(start, {"of", "the"})
+        return self.people.person_head(start, counted=q is not None) is not None
 
     def _conversation_partner(self, p: int, at: int) -> bool:
         """Whether the phrase at `at`, after "with" at p, is who a person talks or walks with, not a
@@ -469,15 +511,22 @@ class Mentions:
                 parties = number.value
             elif number.kind.startswith("vague") or number.kind == "range":
                 parties, exact_parties = count_of(s, number, f"{head}:parties").value, False
+        elif low[head] != noun and first is None and noun not in lx.ONE_SET_PLURALS:
+            # "groups of three or four", "pairs of tourists": several, however many is not said
+            parties, exact_parties = s.choose(*lx.PLURAL_PARTIES_RANGE, f"{head}:groups"), False
         together = noun in lx.TOGETHER_COLLECTIVES
         last, size, label = head, None, noun
+        loose: Quantifier | None = None
         if head + 2 < s.n and low[head + 1] == "of":
             loose = quantifier(s, head + 2)
             if loose is not None and loose.kind in ("approximate", "range") and parties == 1 and exact_parties:
                 return self._loosely_counted(noun, at, head, loose, together)
             inner = number_at(s, head + 2)
+            if loose is not None and loose.kind == "range" and loose.high is not None:
+                # "groups of two or three": each party a size in the range
+                size, inner = s.choose(loose.value, loose.high, f"{head}:party"), (loose.value, loose.end)
             if inner is not None:
-                size = inner[0]
+                size = size or inner[0]
                 last = inner[1] - 1
                 member = self.people.person_head(inner[1], counted=True)
                 if member is not None and member <= inner[1] + 2:
@@ -491,10 +540,15 @@ class Mentions:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self.people.label(member)
-        mention = Mention(at, last, s.span(at, last), label,
-                          self._collective_count(noun, label, size, parties, exact_parties, together, head),
-                          together=together, collective=noun)
-        return mention
+        count = self._collective_count(noun, label, size, parties, exact_parties, together, head)
+        if not exact_parties and count.parties:
+            # the number of parties is a seeded guess: the range runs over every number it could be
+            low_size, high_size = (loose.value, loose.high) if loose is not None and loose.kind == "range" and \
+                loose.high is not None else (count.low // max(1, count.parties), count.high // max(1, count.parties))
+            parties_range = lx.PLURAL_PARTIES_RANGE if number is None else (count_of(s, number, "").low,
+                                                                            count_of(s, number, "").high)
+            count = replace(count, low=parties_range[0] * low_size, high=parties_range[1] * high_size)
+        return Mention(at, last, s.span(at, last), label, count, together=together, collective=noun)
 
     def _loosely_counted(self, noun: str, at: int, head: int, loose: Quantifier, together: bool) -> Mention:
         """"a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside the

@@ -250,7 +250,7 @@ class RobotClauses:
             return "start"
         if stationary:
             return "location"
-        if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for"):
+        if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for", "purpose"):
             return "destination"
         if prep in lx.VIA_PREPOSITIONS or prep in ("obj:via", "obj:at"):
             return "via"
