@@ -8,7 +8,7 @@ from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import Quantifier, count_of, quantifier
-from grove_tui.language.mentions import Mention
+from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.sentence import Sentence
 

@@ -16,7 +16,8 @@ from dataclasses import dataclass, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.group_counts import count_confidence, settle_count
-from grove_tui.language.mentions import Mention, Mentions
+from grove_tui.language.mention import Mention
+from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import FieldConfidence, GroupReading
 from grove_tui.language.place_phrases import PlacePhrases, place_confidences
 from grove_tui.language.robot import RobotClause, RobotClauses

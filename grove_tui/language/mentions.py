@@ -8,43 +8,22 @@ collective ("a family" 3-4), structured ("two families of three"), whole-zone ("
 cafeteria", settled once places are known) or exclusive ("nobody ... except one guard").
 Relations: "one of them" is part of the group before (subset_of), "the others" are other people
 than that group (others_of; after a subset, the rest of its parent), "a few more" adds to it
-(more_of).
+(more_of). Counted phrases and collectives are read in collectives.py.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-
 from grove_tui.language import lexicon as lx
+from grove_tui.language.collectives import Collectives
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
+from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
-from grove_tui.language.place_phrases import Place, PlacePhrases
+from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
-
-
-@dataclass
-class Mention:
-    """A person phrase that starts a group."""
-
-    first: int  # word span of the person phrase
-    last: int
-    who: str
-    label: str
-    count: Count | None  # None for whole-zone and rest-of-parent counts, settled once places are known
-    relation: str | None = None
-    together: bool = False
-    whole_zone: bool = False
-    exclusive: bool = False
-    rest_of_parent: bool = False
-    collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
-    exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
-    fraction: float = 1.0  # "half the office": the share of the zone's people
-    zone_place: Place | None = None  # the zone named inside the mention ("half the open office")
-    apposition: tuple[int, int] | None = None  # "everyone in the café, some thirty of them,": the count's words
 
 
 class Mentions:
@@ -54,6 +33,7 @@ class Mentions:
         self.s = s
         self.people = people
         self.places = places
+        self.collectives = Collectives(s, people)
 
     def find(self) -> list[Mention]:
         s = self.s
@@ -388,7 +368,7 @@ class Mentions:
         parent = self.parent(found, plain=True)
         relation = f"more_of:{parent}" if parent is not None else None
         if head is not None and s.lemma(head) in lx.IMPLIED_RANGES:
-            collective = self._collective(head, None, at)  # "another group": a group's size, not one
+            collective = self.collectives.collective(head, None, at)  # "another group": a group's size, not one
             if collective is not None:
                 collective.relation = relation
                 return collective
@@ -420,7 +400,7 @@ class Mentions:
                                                                       else "person")
             return Mention(at, last, s.span(at, last), label, count_of(s, num, f"{at}:others", lx.OTHERS_RANGE),
                            relation=f"others_of:{parent}" if parent is not None else None)
-        return self._counted(at, num, found, exclusive)
+        return self.collectives.counted(at, num, found, exclusive)
 
     def _bare(self, at: int, found: list[Mention], exclusive: bool) -> Mention | None:
         """Phrases with no count: "visitors", "the nurses", "a nurse", "other visitors", "people"."""
@@ -437,7 +417,7 @@ class Mentions:
         if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
             return None  # "... one person; the person wanders around": the same people again
         noun = s.lemma(head)
-        collective = self._collective(head)
+        collective = self.collectives.collective(head)
         if collective is not None:
             return collective
         if det in ("a", "an") or (singular and det == "the"):
@@ -469,114 +449,3 @@ class Mentions:
         q = quantifier(s, head + 2)
         start = q.end if q is not None else s.skip(head + 2, lx.DETERMINERS)
         return start < s.n and self.people.person_head(start, counted=q is not None) is not None
-
-    # ---- counted phrases and collectives -------------------------------------------------------
-
-    def _counted(self, at: int, q: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
-        """A phrase that starts with a count: "ten patients", "about 20 people", "two families of three"."""
-        s = self.s
-        after = q.end
-        if after < s.n and s.low[after] == "of":
-            after = s.skip(after + 1, {"the", "their", "our"})
-        head = self.people.person_head(after, counted=True)
-        if head is None:
-            # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
-            if (found and q.value > 0 and after < s.n and (s.low[after] in lx.PLACE_PREPOSITIONS
-                                                           or verb_lemma(s.low[after]) in lx.INTENT_VERBS)
-                    and at > 0 and s.low[at - 1] not in ("at", "until", "till", "after", "before", "since")):
-                return Mention(at, after - 1, s.span(at, after - 1), found[-1].label, count_of(s, q, f"{at}:ellipsis"))
-            return None
-        collective = self._collective(head, q, at)
-        if collective is not None:
-            return collective
-        count = count_of(s, q, f"{at}:count")
-        if exclusive:
-            count = replace(count, kind="exclusive")
-        return Mention(at, head, s.span(at, head), self.people.label(head), count, exclusive=exclusive)
-
-    def _collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
-        """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
-        s = self.s
-        noun = s.lemma(head)
-        if noun not in lx.IMPLIED_RANGES or self.people.multiword_end(head):
-            return None  # "the au pair" is no pair
-        low = s.low
-        at = first if first is not None else head
-        while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
-                                            or (s.w[at - 1].pos == "ADJ" and at > 1 and s.w[at - 2].pos == "DET")):
-            at -= 1  # "a long queue of ...": the adjective is the collective's
-        parties, exact_parties = 1, True
-        if number is not None:
-            if number.kind in ("exact", "approximate") and number.value > 1:
-                parties = number.value
-            elif number.kind.startswith("vague") or number.kind == "range":
-                parties, exact_parties = count_of(s, number, f"{head}:parties").value, False
-        elif low[head] != noun and first is None and noun not in lx.ONE_SET_PLURALS:
-            # "groups of three or four", "pairs of tourists": several, however many is not said
-            parties, exact_parties = s.choose(*lx.PLURAL_PARTIES_RANGE, f"{head}:groups"), False
-        together = noun in lx.TOGETHER_COLLECTIVES
-        last, size, label = head, None, noun
-        loose: Quantifier | None = None
-        if head + 2 < s.n and low[head + 1] == "of":
-            loose = quantifier(s, head + 2)
-            if loose is not None and loose.kind in ("approximate", "range") and parties == 1 and exact_parties:
-                return self._loosely_counted(noun, at, head, loose, together)
-            inner = number_at(s, head + 2)
-            if loose is not None and loose.kind == "range" and loose.high is not None:
-                # "groups of two or three": each party a size in the range
-                size, inner = s.choose(loose.value, loose.high, f"{head}:party"), (loose.value, loose.end)
-            if inner is not None:
-                size = size or inner[0]
-                last = inner[1] - 1
-                member = self.people.person_head(inner[1], counted=True)
-                if member is not None and member <= inner[1] + 2:
-                    last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
-                        label = self.people.label(member)
-            else:
-                member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
-                if member is not None:
-                    last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
-                                "couple", "pair", "handful"):
-                        label = self.people.label(member)
-        count = self._collective_count(noun, label, size, parties, exact_parties, together, head)
-        if not exact_parties and count.parties:
-            # the number of parties is a seeded guess: the range runs over every number it could be
-            low_size, high_size = (loose.value, loose.high) if loose is not None and loose.kind == "range" and \
-                loose.high is not None else (count.low // max(1, count.parties), count.high // max(1, count.parties))
-            parties_range = lx.PLURAL_PARTIES_RANGE if number is None else (count_of(s, number, "").low,
-                                                                            count_of(s, number, "").high)
-            count = replace(count, low=parties_range[0] * low_size, high=parties_range[1] * high_size)
-        return Mention(at, last, s.span(at, last), label, count, together=together, collective=noun)
-
-    def _loosely_counted(self, noun: str, at: int, head: int, loose: Quantifier, together: bool) -> Mention:
-        """"a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside the
-        collective, counted loosely."""
-        s = self.s
-        member = self.people.person_head(loose.end, counted=True)
-        last = member if member is not None and member <= loose.end + 2 else loose.end - 1
-        label = noun
-        if member is not None and (noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES or
-                                   noun in ("group", "crowd", "bunch", "party", "team", "queue", "line")):
-            label = self.people.label(member)
-        return Mention(at, last, s.span(at, last), label, count_of(s, loose, f"{head}:inside"), together=together,
-                       collective=noun)
-
-    def _collective_count(self, noun: str, label: str, size: int | None, parties: int, exact_parties: bool,
-                          together: bool, head: int) -> Count:
-        s = self.s
-        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
-            # "a crowd of visitors": the collective only says how many, vaguely
-            low_, high_ = lx.IMPLIED_RANGES[noun]
-            return Count("vague", s.choose(low_, high_, f"{head}:{noun}"), low_, high_)
-        if size is None:
-            low_, high_ = lx.IMPLIED_RANGES[noun]
-            party = s.choose(low_, high_, f"{head}:{noun}")
-            if parties == 1:
-                return Count("implied", party, low_, high_, *((1, party) if together else (None, None)))
-            return Count("structured", parties * party, parties * low_, parties * high_, parties, party)
-        if parties == 1 and exact_parties:
-            return Count("exact", size, size, size, 1, size)
-        value = parties * size
-        return Count("structured", value, value, value, parties, size)
