@@ -393,13 +393,13 @@ class EngineBackend:
     def open_run(self, bundle_dir: Path) -> GeneratedScenario:
         """A saved bundle as the app holds a fresh generation (no draft: counts cannot be re-planned)."""
         from grove_tui.generation.pipeline import GenerationResult
-        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report, world_source
 
         bundle_dir = Path(bundle_dir)
         scenario, trees, fields, grid = load_bundle(bundle_dir)
         # A bundle copied without its report still opens; only the timings and groups are missing.
         report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
-        world = self.load_world(scenario.world)
+        world = self.load_world(str(world_source(bundle_dir, scenario)))
         result = GenerationResult(scenario, trees, fields, grid, report)
         return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
                                  bundle_dir)
