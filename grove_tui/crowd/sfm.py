@@ -1297,6 +1297,41 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc,
         _add_pair_terms(count, first, second, pout, acc)
 
 
+# Points spread evenly over the unit half disc ahead (x forward, y to the left): 3 rings of equal
+# area, 8 directions each. _visible_share asks which of them a wall hides.
+_AHEAD_SAMPLES = np.array([(math.sqrt((k + 0.5) / 3.0) * math.cos(-0.5 * math.pi + math.pi * (m + 0.5) / 8.0),
+                            math.sqrt((k + 0.5) / 3.0) * math.sin(-0.5 * math.pi + math.pi * (m + 0.5) / 8.0))
+                           for k in range(3) for m in range(8)])
+
+
+@nb.njit(cache=True)
+def _visible_share(px, py, ex, ey, reach, walls, wall_meta, wall_start, wall_items):
+    """Share of the half disc of radius `reach` ahead of p (along unit e) that no wall hides from p.
+
+    Next to a wall, part of the disc in which one counts the people ahead lies behind it, where
+    nobody can be: the density is their count over the area left (in a 4 m corridor, counting
+    over the whole disc made people walk 21 % faster than Weidmann at 3 per m^2).
+    """
+    cell = _wall_cell(px, py, wall_meta)
+    if cell < 0 or wall_start[cell] == wall_start[cell + 1]:
+        return 1.0
+    visible = 0
+    for s in range(_AHEAD_SAMPLES.shape[0]):
+        a = _AHEAD_SAMPLES[s, 0] * reach
+        b = _AHEAD_SAMPLES[s, 1] * reach
+        sx = px + a * ex - b * ey
+        sy = py + a * ey + b * ex
+        hidden = False
+        for kk in range(wall_start[cell], wall_start[cell + 1]):
+            w = wall_items[kk]
+            if _crossing_parameter(px, py, sx, sy, walls[w, 0], walls[w, 1], walls[w, 2], walls[w, 3]) >= 0.0:
+                hidden = True
+                break
+        if not hidden:
+            visible += 1
+    return visible / _AHEAD_SAMPLES.shape[0]
+
+
 @nb.njit(cache=True, fastmath=_FASTMATH, error_model="numpy")
 def _integrate(i0, i1, dt, params,
                rank, pos, vel, yaw, radius, desired_speed, factors, mode, active,
@@ -1423,10 +1458,16 @@ def _integrate(i0, i1, dt, params,
                     fy += mag * math.sin(a)
         fx += w_soc * sfx
         fy += w_soc * sfy
+        clear = _wall_free(px, py, free_meta, wall_free)
         if has_dir and ahead > 0.0 and density_radius > 0.0:
             # Weidmann's fundamental diagram, normalised to 1 at free flow: the drive aims at the
             # slower speed (lowering v0 in w_goal (v0 e - v) / tau)
-            rho = ahead / density_area
+            # the people counted stand in the part of the half disc no wall hides, outside one's
+            # own body plus theirs (that disc holds no neighbour's centre)
+            share = 1.0
+            if clear < density_radius:
+                share = _visible_share(px, py, ex, ey, density_radius, walls, wall_meta, wall_start, wall_items)
+            rho = ahead / max(share * density_area, 0.05 * density_area)
             slow = 0.0
             if rho < 5.4:
                 # _fast_exp, not math.exp: the same bits in the serial and the parallel kernel
@@ -1435,7 +1476,6 @@ def _integrate(i0, i1, dt, params,
             fy -= w_goal * v0 * (1.0 - slow) * ey / tau
 
         # obstacle force summed over nearby wall segments
-        clear = _wall_free(px, py, free_meta, wall_free)
         wc = _wall_cell(px, py, wall_meta) if clear <= wall_range + ri else -1
         if wc >= 0:
             for kk in range(wall_start[wc], wall_start[wc + 1]):
