@@ -65,7 +65,8 @@ P_DENSITY_RADIUS = 19
 # Periodic x (Crowd(periodic=...)): the period and where it starts; 0 = walls only.
 P_PERIOD = 20
 P_PERIOD_X0 = 21
-P_COUNT = 22
+P_ROBOT_SIGMA = 22
+P_COUNT = 23
 
 # Layout of the robot state vector.
 R_X = 0
@@ -122,7 +123,13 @@ class SFMParams:
 
     goal_weight: float = 2.0
     obstacle_weight: float = 10.0
-    obstacle_sigma: float = 0.2
+    # How fast the wall repulsion fades (m): HFV 2000's B_w = 0.08 m, as JuPedSim's SFM. lightsfm's
+    # 0.2 m pushed people 0.15 m off both walls of a 0.8 m bottleneck, which then passed 0.99 persons
+    # per second (1.23 per metre): below the laboratory band (analysis/empirical.py); at 0.08 m, 1.18 per s.
+    obstacle_sigma: float = 0.08
+    # The same fade for the robot seen as an obstacle (Impassive) and for the fear of it (Scared):
+    # HuNavSim's 0.2 m in both models, so reactions to the robot stay HuNavSim's.
+    robot_sigma: float = 0.2
     social_weight: float = 5.0
     # Scale of the extra repulsion from the robot for agents in ROBOT_FEARED (HuNavSim Scared).
     other_weight: float = 20.0
@@ -137,8 +144,9 @@ class SFMParams:
     epsilon: float = 0.005
     tau: float = 0.5
     cutoff: float = 3.0
-    # exp(-2 / 0.2) * 10 < 5e-4: walls further than this contribute nothing measurable.
-    wall_range: float = 2.0
+    # 10 exp(-1 / 0.08) < 4e-5 (lightsfm: 10 exp(-2 / 0.2) < 5e-4): walls further than this
+    # contribute nothing measurable.
+    wall_range: float = 1.0
     yaw_hold_speed: float = 0.07
     # Agents end every step at least this fraction of their radius away from any wall: 0.9 keeps a
     # body at most 3.5 cm (radius 0.35) into a wall; at 0.5 a dense crowd pressed bodies 12 cm in.
@@ -151,9 +159,11 @@ class SFMParams:
     # as JuPedSim's SFM. Not in lightsfm, whose Moussaid force let bodies overlap by 34 cm of 50 and
     # walls by 12 cm (issue 19). SFMParams.lightsfm() gives lightsfm's forces exactly (tests/crowd/test_sfm.py).
     body_weight: float = 1.2e5 / 80.0
-    # Sliding friction (1/(m s)) along the contact tangent while bodies overlap: HFV 2000's
-    # kappa = 2.4e5 kg/(m s) for 80 kg. It is what makes a jammed doorway slow.
-    friction_weight: float = 2.4e5 / 80.0
+    # Sliding friction (1/(m s)) along the contact tangent while bodies overlap: a tenth of HFV 2000's
+    # kappa = 2.4e5 kg/(m s) for 80 kg, which models panicking crowds crushing into a door: with it,
+    # 150 people left a 0.8 m bottleneck at 0.76 per second, half what laboratory crowds manage
+    # (analysis/empirical.py). It still slows a jammed doorway (RiMEA 12).
+    friction_weight: float = 2.4e4 / 80.0
     # Speed falls with the density ahead as in Weidmann 1993 (RiMEA test 4): the desired speed is
     # scaled by 1 - exp(-1.913 (1/rho - 1/5.4)), rho counted in the half disc of this radius in
     # front of the agent. 0 turns it off (lightsfm: a dense crowd walks at free speed, issue 19).
@@ -171,7 +181,7 @@ class SFMParams:
     def lightsfm(cls, **overrides: float) -> SFMParams:
         """lightsfm's (HuNavSim's) forces exactly, as Gazebo runs them: soft bodies, no holding."""
         values = dict(epsilon=0.0, body_weight=0.0, friction_weight=0.0, hold_time=0.0, density_radius=0.0,
-                      social_skip_exponent=math.inf, wall_clearance=0.5)
+                      social_skip_exponent=math.inf, wall_clearance=0.5, obstacle_sigma=0.2, wall_range=2.0)
         values.update(overrides)
         return cls(**values)
 
@@ -183,7 +193,7 @@ class SFMParams:
         return cls.lightsfm() if name == "lightsfm" else cls()
 
     def __post_init__(self) -> None:
-        for name in ("obstacle_sigma", "gamma", "tau", "cutoff", "wall_range"):
+        for name in ("obstacle_sigma", "robot_sigma", "gamma", "tau", "cutoff", "wall_range"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"SFMParams.{name} must be > 0, got {getattr(self, name)!r}")
 
@@ -199,6 +209,7 @@ class SFMParams:
         out[P_EPSILON] = self.epsilon
         out[P_TAU] = self.tau
         out[P_SIGMA_OBS] = self.obstacle_sigma
+        out[P_ROBOT_SIGMA] = self.robot_sigma
         out[P_CUTOFF] = self.cutoff
         out[P_WALL_RANGE] = self.wall_range
         out[P_GAZE] = self.group_gaze
@@ -1348,6 +1359,8 @@ def _integrate(i0, i1, dt, params,
     cutoff2 = cutoff * cutoff
     tau = params[P_TAU]
     sigma = params[P_SIGMA_OBS]
+    robot_sigma = params[P_ROBOT_SIGMA]
+    robot_range = 10.0 * robot_sigma  # exp(-10) of the peak: nothing measurable beyond
     wall_range = params[P_WALL_RANGE]
     half_pi = 0.5 * math.pi
     body = params[P_BODY]
@@ -1439,8 +1452,8 @@ def _integrate(i0, i1, dt, params,
                         fx -= body * overlap * rdx / rd
                         fy -= body * overlap * rdy / rd
             elif ri_mode == ROBOT_AS_OBSTACLE:
-                if rd2 <= (wall_range + ri) * (wall_range + ri):
-                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, sigma, i)
+                if rd2 <= (robot_range + ri) * (robot_range + ri):
+                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, robot_sigma, i)
                     fx += ax_
                     fy += ay_
             elif ri_mode == ROBOT_FEARED:
@@ -1448,7 +1461,7 @@ def _integrate(i0, i1, dt, params,
                 gap = rd - ri
                 if gap < 0.05:
                     gap = 0.05
-                mag = w_other * sigma / gap
+                mag = w_other * robot_sigma / gap
                 if rd > _TINY:
                     fx -= mag * rdx / rd
                     fy -= mag * rdy / rd
