@@ -43,7 +43,7 @@ from typing import Any
 
 from grove_tui.errors import DraftError
 from grove_tui.limits import MAX_GROUP_COUNT
-from grove_tui.llm.grammar import GbnfRules, gbnf_literal
+from grove_tui.llm.grammar import GbnfRules, bounded_repeat, gbnf_literal
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
@@ -196,12 +196,8 @@ def number_text(value: float) -> str:
 # ---- the grammar -------------------------------------------------------------------------------
 
 def _bounded(item: str, low: int, high: int, separator: str = "") -> str:
-    """`item` low..high times (low >= 1); the optional tail nests so every length parses one way and ends."""
-    tail = ""
-    for _ in range(high - low):
-        tail = f"({separator}{item}{(' ' + tail) if tail else ''})?"
-    mandatory = " ".join([item] + [f"{separator}{item}"] * (low - 1))
-    return f"{mandatory} {tail}".strip()
+    """`item` low..high times (low >= 1): llm.grammar.bounded_repeat, so every length parses one way and ends."""
+    return bounded_repeat(item, low, high, separator)
 
 
 def _alternatives(literals: Iterable[str]) -> str:

@@ -66,6 +66,8 @@ class Generation:
     attempts: int = 1
     cached_tokens: int = 0  # prompt tokens not evaluated by this request: live KV or the prefix restored from disk
     cache_source: str = "cold"  # where they came from: "live", "disk" or "cold" (none)
+    grammar_engine: str = ""  # what kept the answer to its grammar: "llguidance" (token masks), "gbnf" or "" (none)
+    forced_tokens: int = 0  # output tokens the grammar forced: evaluated in a batch, not sampled
 
 
 def _start_resource_tracker() -> None:
@@ -301,7 +303,9 @@ class LocalLLM:
                         completion_tokens=spent_tokens, seconds=time.monotonic() - started,
                         first_token_seconds=None if first_token_at is None else first_token_at - sent,
                         attempts=attempt, cached_tokens=int(result.get("cached_tokens", 0)),
-                        cache_source=str(result.get("cache_source", "cold")))
+                        cache_source=str(result.get("cache_source", "cold")),
+                        grammar_engine=str(result.get("grammar_engine", "")),
+                        forced_tokens=int(result.get("forced_tokens", 0)))
                 room = self._ready_info.get("n_ctx", self.n_ctx) - int(result["prompt_tokens"])
                 budget = max(1, min(budget * 2, room))
         raise ModelError(f"the {self.role} model did not finish its answer within {budget} tokens "

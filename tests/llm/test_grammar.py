@@ -122,6 +122,7 @@ def test_unit_grammars_compile_and_produce_strict_json(tiny_llm, index):
     for seed in range(4):
         result = tiny_llm.generate("<|im_start|>assistant\n", grammar=grammar, max_tokens=400, seed=seed, temperature=1.0)
         json.loads(result.text)
+        assert result.grammar_engine == "llguidance"  # token masks took the grammar (no GBNF fallback)
 
 
 def _preset_node_sets():
@@ -155,6 +156,7 @@ def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
             draft = parse_draft(result.text, nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                 max_depth=limits.max_depth)
             assert draft.node_types() <= set(nodes) and draft.places() <= set(rois), (world_name, preset)
+            assert result.grammar_engine == "llguidance", (world_name, preset)  # token masks, not the GBNF fallback
 
 
 def test_a_malformed_grammar_costs_one_worker_not_the_app(tiny_llm):
