@@ -259,9 +259,10 @@ class GroveSession:
     def _make_llm(self, role: str, choice: ModelChoice) -> Any:
         if self._llm_factory is not None:
             return self._llm_factory(role, choice)
-        from grove_tui.llm.local import LocalLLM, default_threads
+        from grove_tui.llm.local import LocalLLM
 
-        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx, n_threads=default_threads())
+        # No fixed thread count: every request takes the idle cores of that moment (cpu.py).
+        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx)
         llm.start()  # loads the weights in the model's worker process now, not at the first prompt
         return llm
 
