@@ -50,7 +50,8 @@ def synthesis_request():
     selection = select_rois(world, preset, prompt, reading=reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
     return prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
+                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for,
+                           documents_named=retriever.documents_named)
 
 
 _MASKS = None

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -271,6 +271,10 @@ class _GrammarBuilder:
         options = [rule for spec in self.specs.values() if (rule := self.node(spec, level)) is not None]
         return self.rules.add(f"level-{level}", " | ".join(options))
 
+    def trees(self, groups: int) -> str:
+        """Exactly `groups` lines, each one tree: the lean draft, whose headers the reading fills in."""
+        return self.rules.text(_bounded(self.level(1), groups, groups, '"\\n" '))
+
     def grammar(self, max_groups: int) -> str:
         label_char = self.rules.add("label-char", f"[{LABEL_CHARS}]")
         label = self.rules.add("label", f"[{LABEL_FIRST_CHARS}] ({_bounded(label_char, 1, LABEL_MAX_LENGTH - 1)})?")
@@ -284,6 +288,13 @@ def draft_grammar(node_names: Iterable[str], roi_names: Iterable[str], max_group
     """The GBNF (root rule `root`) of every draft this request allows; recursion is unrolled into one rule per tree level."""
     specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
     return _GrammarBuilder(specs, rois, max_count, max_depth, max_children).grammar(max_groups)
+
+
+def tree_grammar(node_names: Iterable[str], roi_names: Iterable[str], groups: int, max_depth: int = 3,
+                 max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> str:
+    """The GBNF of a lean draft: exactly `groups` lines, each the tree of one group (GroupHead gives the rest)."""
+    specs, rois = _check_request(node_names, roi_names, max(1, groups), 1, max_depth, max_children, nodes)
+    return _GrammarBuilder(specs, rois, 1, max_depth, max_children).trees(groups)
 
 
 # ---- the parser --------------------------------------------------------------------------------
@@ -345,6 +356,22 @@ class _Parser:
         for index, (number, line) in enumerate(lines):
             self.line = number
             groups.append(self.group(line, f"groups[{index}]"))
+        return Draft(tuple(groups))
+
+    def trees(self, text: str, heads: Sequence[GroupHead]) -> Draft:
+        lines = [(number, line) for number, line in enumerate(text.splitlines(), 1) if line.strip()]
+        if len(lines) != len(heads):
+            self.line = lines[-1][0] if lines else 0
+            raise self.fail("groups", f"{len(lines)} line(s), expected one tree per group: {len(heads)}")
+        groups = []
+        for index, ((number, line), head) in enumerate(zip(lines, heads)):
+            self.line = number
+            path = f"groups[{index}].tree"
+            self.tokens, self.at = _tokens(line, 0), 0
+            node = self.node(path, 1)
+            if self.peek().kind != "end":
+                raise self.fail(path, f"unexpected {_shown(self.peek())} after the tree", self.peek())
+            groups.append(DraftGroup(head.label, head.count, head.spawn, node))
         return Draft(tuple(groups))
 
     def group(self, line: str, path: str) -> DraftGroup:
@@ -480,6 +507,22 @@ def parse_draft(text: str, node_names: Iterable[str], roi_names: Iterable[str], 
     """Strictly parse and validate the model's draft; DraftError names the line, column and the draft path."""
     specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
     return _Parser(specs, rois, max_groups, max_count, max_depth, max_children).draft(text)
+
+
+@dataclass(frozen=True)
+class GroupHead:
+    """What the reading fixes for a group of a lean draft: the model writes only its tree."""
+
+    label: str
+    count: int
+    spawn: str
+
+
+def parse_trees(text: str, heads: Sequence[GroupHead], node_names: Iterable[str], roi_names: Iterable[str],
+                max_depth: int = 3, max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> Draft:
+    """Strictly parse a lean draft (one tree per line, in the order of `heads`) into a Draft."""
+    specs, rois = _check_request(node_names, roi_names, max(1, len(heads)), 1, max_depth, max_children, nodes)
+    return _Parser(specs, rois, len(heads), MAX_GROUP_COUNT, max_depth, max_children).trees(text, heads)
 
 
 # ---- writing drafts ----------------------------------------------------------------------------

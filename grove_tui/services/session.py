@@ -358,7 +358,8 @@ class GroveSession:
                 return
         pipeline = self.pipeline(world, preset)
         if pipeline.llm_bt is not None:
-            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world)
+            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world,
+                        getattr(pipeline.retriever, "documents_named", None))
 
     def retriever(self) -> Any:
         with self._lock:
