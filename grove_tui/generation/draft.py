@@ -6,6 +6,12 @@ optional port=value, children)`:
     10 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter, spacing=0.6))
     3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))
 
+When the reading has groups, the model writes the lean draft instead: one line per reading group,
+only its tree (`tree_grammar`, `parse_trees`), and each group's label, count and spawn come from the
+reading (`GroupHead`), so the Draft that comes back has the same types either way:
+
+    Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter))
+
 The line starts with the count because a chat model's first words are otherwise chat ("Here is a
 sample of a ..." filled the label when it came first, with SmolLM2): a digit first puts it straight
 into the scenario, and "3 visitors from lobby" is how English says it.
