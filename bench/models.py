@@ -139,19 +139,23 @@ GRAMMAR_PROBE_TOKENS = 24
 
 def grammar_cost_ms(call: dict[str, Any]) -> float:
     """Milliseconds per token the grammar adds: the same prompt (in the KV cache, so both runs are
-    decode) decoded for up to GRAMMAR_PROBE_TOKENS tokens with and without it, same seed."""
+    decode) decoded for up to GRAMMAR_PROBE_TOKENS tokens with and without it, same seed, timed from
+    the first streamed token to the last (a request's fixed costs, spread over a short constrained
+    answer, would otherwise count as the grammar's)."""
     from grove_tui.errors import ModelError
 
     llm, messages = call["llm"], call["messages"]
     per_token = []
     for grammar in (call["grammar"], None):
-        started = time.perf_counter()
+        stamps: list[float] = []
         try:
-            run = llm.generate(messages, grammar, max_tokens=GRAMMAR_PROBE_TOKENS, seed=11, length_retries=0)
-            tokens, seconds = max(1, run.completion_tokens), run.seconds
+            run = llm.generate(messages, grammar, max_tokens=GRAMMAR_PROBE_TOKENS, seed=11, length_retries=0,
+                               on_token=lambda _piece: stamps.append(time.perf_counter()))
+            tokens = run.completion_tokens
         except ModelError:  # ran to the budget (a cut-off answer is an error to the product, data here)
-            tokens, seconds = GRAMMAR_PROBE_TOKENS, time.perf_counter() - started
-        per_token.append(seconds / tokens)
+            tokens = GRAMMAR_PROBE_TOKENS
+        # Forced tokens arrive in bursts with the sampled one: count tokens, not pieces.
+        per_token.append((stamps[-1] - stamps[0]) / max(1, tokens - 1) if len(stamps) > 1 else float("nan"))
     return 1000 * (per_token[0] - per_token[1])
 
 
