@@ -260,16 +260,20 @@ def _file_digest(path: str, size: int, mtime_ns: int) -> str:
 
 
 def lean_places(world: Any | None, selection: Any, reading: PromptReading, indices: Sequence[int]) -> list[str]:
-    """The places a lean draft may name: the groups' own (start, location, destination, via), the zones
-    they lie in and the selected exits, in the selection's order. The reading has already fixed where
-    each group is and goes, so the model is not offered every place the selection holds for planning;
-    a sentence that names no place keeps the whole selection."""
+    """The places a lean draft may name: where the groups are, go and pass (location, destination, via),
+    the zones those lie in and the selected exits, in the selection's order. The reading has already
+    fixed where each group is and goes, so the model is not offered every place the selection holds
+    for planning; nor where a group starts, which its head gives (a small model offered it walked
+    there first: "GoTo(kitchen)" for people who start in the kitchen). A sentence that names no such
+    place keeps the whole selection."""
     selected = list(selection.roi_names)
     wanted: set[str] = set(getattr(selection, "exits", ()) or ())
     named = {p for i in indices for g in (reading.groups[i],)
-             for p in (g.start, g.location, g.destination, *g.via) if p}
+             for p in (g.location, g.destination, *g.via) if p}
     if not named & set(selected) or world is None:
-        return selected
+        evacuating = any(reading.groups[i].intent == "evacuate" for i in indices)
+        exits = [name for name in selected if name in wanted]
+        return exits if evacuating and exits else selected  # evacuees need only the way out
     wanted |= named
     for name in named:
         try:
