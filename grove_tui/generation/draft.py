@@ -373,7 +373,12 @@ class _Parser:
         for index, ((number, line), head) in enumerate(zip(lines, heads)):
             self.line = number
             path = f"groups[{index}].tree"
-            self.tokens, self.at = _tokens(line, 0), 0
+            offset = 0
+            header, colon, _ = line.partition(":")
+            if colon and _HEADER.match(header.strip()):
+                # A full draft's line (an unconstrained or scripted answer): the reading's head wins over it.
+                offset = len(header) + 1
+            self.tokens, self.at = _tokens(line[offset:], offset), 0
             node = self.node(path, 1)
             if self.peek().kind != "end":
                 raise self.fail(path, f"unexpected {_shown(self.peek())} after the tree", self.peek())
@@ -526,7 +531,10 @@ class GroupHead:
 
 def parse_trees(text: str, heads: Sequence[GroupHead], node_names: Iterable[str], roi_names: Iterable[str],
                 max_depth: int = 3, max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> Draft:
-    """Strictly parse a lean draft (one tree per line, in the order of `heads`) into a Draft."""
+    """Strictly parse a lean draft (one tree per line, in the order of `heads`) into a Draft.
+
+    A line that still carries the full draft's `COUNT LABEL from SPAWN:` (an answer written without the
+    lean grammar) is read for its tree; its head comes from `heads` all the same."""
     specs, rois = _check_request(node_names, roi_names, max(1, len(heads)), 1, max_depth, max_children, nodes)
     return _Parser(specs, rois, len(heads), MAX_GROUP_COUNT, max_depth, max_children).trees(text, heads)
 
