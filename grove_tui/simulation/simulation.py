@@ -79,6 +79,21 @@ class Frame:
     counters: CounterSnapshot
 
 
+@dataclass(frozen=True)
+class RunState:
+    """Where the people of a run stand: how many it has, how many have left it (evacuated, out of the
+    building) and how many are out or have finished their tree. Nothing is left to happen to the
+    people once `over` (a HuNavSim looping tree never finishes: its agent keeps a run going)."""
+
+    agents: int
+    out: int
+    done: int
+
+    @property
+    def over(self) -> bool:
+        return self.agents > 0 and self.done == self.agents
+
+
 def _frozen(a: np.ndarray) -> np.ndarray:
     a = np.array(a, copy=True)
     a.setflags(write=False)
@@ -135,14 +150,11 @@ class Simulation:
         `params`: the pedestrian model's SFMParams (default: the "grove" model)."""
         from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
-        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
-        from grove_tui.world import load_world
+        from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, read_bundle_text
 
         bundle_dir = Path(bundle_dir)
         if world is None:
-            world_ref = scenario.world
-            candidate = bundle_dir / world_ref
-            world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
+            world = load_bundle_world(bundle_dir, scenario)
         grid_path = bundle_dir / "grid.npz"
         # a bundle without its grid: inflate by the people's largest radius, as generation did
         grid = (load_grid(bundle_dir) if os.path.lexists(grid_path)
@@ -168,12 +180,8 @@ class Simulation:
             raise BTError(f"{len(agents)} agents but {len(documents)} behavior trees")
         crowd = Crowd(walls, params=params, dt=dt, seed=seed, grid=grid)
         for agent in agents:
-            heading = 0.0
-            if agent.goals:
-                gx, gy = agent.goals[0]
-                heading = math.atan2(gy - agent.start[1], gx - agent.start[0])
             crowd.add_agent(agent.start, radius=agent.radius, desired_speed=agent.max_vel, group=agent.group,
-                            goal_radius=0.3, yaw=heading,
+                            goal_radius=agent.goal_radius, yaw=agent.initial_heading(),
                             robot_interaction=ROBOT_AS_OBSTACLE if agent.behavior == "Impassive" else 0)
         if robot is not None:
             path = list(robot.path) if robot.path else [robot.start, robot.goal]
@@ -199,8 +207,8 @@ class Simulation:
             hunav_style = any(e.id in HUNAV_LOOPING_NODES for e in document.nodes())
             loops.append(hunav_style)
             if hunav_style and agent.goals:
-                # HuNavSim trees walk the agent's own goal list (agents YAML `goals`, cyclic by default)
-                crowd.set_goals(row, agent.goals, cyclic=True)
+                # HuNavSim trees walk the agent's own goal list (agents YAML `goals` and `cyclic_goals`)
+                crowd.set_goals(row, agent.goals, cyclic=agent.cyclic_goals)
         recorder = _make_recorder(dt, ids)
         return cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
                    recorder=recorder)
@@ -392,6 +400,11 @@ class Simulation:
         c = self.context.counters
         return CounterSnapshot(c.reached_goals, self.context.queues.in_queue(), c.served, c.evacuated, c.collisions,
                                c.robot_collisions, c.closest_robot_approach, c.finished_trees)
+
+    def run_state(self) -> RunState:
+        n = len(self.trees)
+        active = np.asarray(self.crowd.active[:n], dtype=bool)
+        return RunState(n, int(n - active.sum()), int((self._finished_mask | ~active).sum()))
 
     def frame(self) -> Frame:
         crowd = self.crowd
