@@ -94,6 +94,19 @@ def _describe(kind: str) -> str:
             "int_array": "a non-empty list of integers (an empty list has no type)"}[kind]
 
 
+def _listed(value: Any) -> list[Any]:
+    """A list as it is, anything else as no entries (its type is reported by the declared-type check)."""
+    return value if isinstance(value, list) else []
+
+
+def _short(value: Any) -> str:
+    try:
+        text = repr(value)
+    except ValueError:  # an int too long to print
+        return f"<{type(value).__name__}>"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
 def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[str]:
     """Every problem HuNavSim 2.0's loader would hit with this parameters file (empty: it loads)."""
     problems: list[str] = []
@@ -137,6 +150,9 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
     agents = params.get("agents") or []
     seen_ids: dict[int, str] = {}
     for name in agents if isinstance(agents, list) else []:
+        if not isinstance(name, str):  # `agents` names blocks; a number or a mapping names none
+            problems.append(f"{source}: `agents` lists {_short(name)}, which is not an agent's name")
+            continue
         entry = params.get(name)
         if not isinstance(entry, dict):
             problems.append(f"{source}: agent {name!r} is listed in `agents` but has no `{name}:` block")
@@ -145,7 +161,7 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
         if layout == "1.0":
             behavior = entry.get("behavior")
             declared = AGENT_1 | (BEHAVIOR_BLOCK_1 if isinstance(behavior, dict) else {"behavior": "int"})
-            for goal in entry.get("goals") or []:
+            for goal in _listed(entry.get("goals")):
                 block = entry.get(goal) if isinstance(goal, str) else None
                 if not isinstance(block, dict):
                     problems.append(f"{source}: {name}.goals names goal {goal!r}, which has no `{goal}:` block "
@@ -164,7 +180,7 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
                 continue
             if not _type_ok(value, kind):
                 problems.append(f"{source}: {name}.{key} is {value!r}; the loader declares it as {_describe(kind)}")
-        for goal in entry.get("goals") or []:
+        for goal in _listed(entry.get("goals")):
             if isinstance(goal, int) and goal not in goal_ids:
                 problems.append(f"{source}: {name}.goals names goal {goal}, which global_goals does not define "
                                 "(the loader would put it at 0, 0)")
