@@ -89,11 +89,14 @@ def test_export_trajectories_keeps_a_users_folder(bundle, tmp_path):
     assert not (mine / "notes.md").exists()
 
 
-def test_export_trajectories_never_replaces_the_bundle_it_reads(bundle):
+@pytest.mark.parametrize("kind", ["trajectories", "hunav", "rosbag"])
+def test_an_export_never_replaces_the_bundle_it_reads(bundle, kind):
+    if kind == "rosbag":
+        pytest.importorskip("rosbags")
     before = listing(bundle)
-    for extra in ([], ["--overwrite"]):
-        run = invoke(["export", "trajectories", bundle, "--out", bundle, *extra])
-        assert run.exit_code == EXIT_BAD_INPUT, run.output
+    for out in (bundle, bundle.parent):
+        run = invoke(["export", kind, bundle, "--out", out, "--overwrite"])
+        assert run.exit_code == EXIT_BAD_INPUT and "the bundle being exported" in run.stderr, run.output
     assert listing(bundle) == before
 
 
