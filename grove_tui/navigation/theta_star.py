@@ -25,7 +25,12 @@ import math
 import os
 import threading
 from collections import OrderedDict
+import hashlib
+import weakref
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
 
 import numba
 import numpy as np
@@ -552,30 +557,86 @@ def landmark_sites(sight_rows: np.ndarray, seed_cell: tuple[int, int], count: in
     return sites
 
 
+GEODESICS_KEPT = 8  # shortest-path trees kept per grid (8 bytes x 2 per cell each)
+
+
+@dataclass(eq=False)
+class _SharedMaps:
+    """What every planner of one grid object shares: its lookup maps, block guides, trees, door graphs."""
+
+    fingerprint: bytes
+    occupied: np.ndarray
+    clearance: np.ndarray
+    sight_rows: np.ndarray
+    sight_cols: np.ndarray
+    components: np.ndarray
+    lock: Any = field(default_factory=threading.RLock)
+    block_graph: np.ndarray | None = None
+    guides: OrderedDict = field(default_factory=OrderedDict)
+    geodesics: OrderedDict = field(default_factory=OrderedDict)
+    door_graphs: dict = field(default_factory=dict)
+
+
+_SHARED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_SHARED_LOCK = threading.Lock()
+
+
+def _shared_maps(grid: Any, occupied: np.ndarray) -> _SharedMaps:
+    """The grid's shared maps, rebuilt when its cells changed since (a grid object is not always read-only)."""
+    fingerprint = hashlib.blake2b(np.packbits(occupied).tobytes() + str(occupied.shape).encode(),
+                                  digest_size=16).digest()
+    with _SHARED_LOCK:
+        try:
+            shared = _SHARED.get(grid)
+        except TypeError:  # an unhashable grid-like object: nothing to share it through
+            shared = None
+        if shared is not None and shared.fingerprint == fingerprint:
+            return shared
+    clearance = clearance_map(occupied)
+    sight_rows, sight_cols = sight_maps(clearance)
+    shared = _SharedMaps(fingerprint, occupied, clearance, sight_rows, sight_cols, connected_components(occupied))
+    with _SHARED_LOCK:
+        try:
+            _SHARED[grid] = shared
+        except TypeError:
+            pass
+    return shared
+
+
 class ThetaStarPlanner:
     """Any-angle shortest paths on one occupancy grid; builds its lookup maps once, then plans in milliseconds.
 
     `landmarks`: number of ALT landmark maps, built on the first query (exact paths); None picks none,
-    and grids of at least GUIDE_MIN_CELLS cells are guided by blocks. Create one planner per grid
+    and grids of at least GUIDE_MIN_CELLS cells are guided by blocks. `world`: the world the grid was
+    built from (by default the grid's own, see build_grid); without landmarks, plans between its zones
+    then search only the start and goal zones (DoorGraph).
+    Create one planner per grid
     and keep it (PlanCache.planner does). Thread-safe: queries share work buffers behind a lock
     (the kernels release the GIL).
     """
 
-    def __init__(self, grid, landmarks: int | None = None):
+    def __init__(self, grid, landmarks: int | None = None, world: Any = None, door_graph_dir: Path | None = None):
         self.grid = grid
-        self.occupied = np.ascontiguousarray(grid.occupied, dtype=np.bool_)
-        if self.occupied.ndim != 2 or self.occupied.size == 0:
-            raise PlanningError(f"occupancy grid has shape {self.occupied.shape}; a planner needs a non-empty 2-D grid")
+        # With the grid's world (given, or the one build_grid made the grid from), plans between
+        # zones go through its door graph (door_graph.py), built on first use or read from the data dir.
+        self.world = world if world is not None else getattr(grid, "world", None)
+        self._door_graph_dir = door_graph_dir
+        occupied = np.ascontiguousarray(grid.occupied, dtype=np.bool_)
+        if occupied.ndim != 2 or occupied.size == 0:
+            raise PlanningError(f"occupancy grid has shape {occupied.shape}; a planner needs a non-empty 2-D grid")
+        # Everything derived from the grid alone is shared by every planner of that grid object:
+        # generation, exit choice, fields and the simulation each make one, and pay for them once.
+        shared = _shared_maps(grid, occupied)
+        self._shared = shared
+        self.occupied = shared.occupied
         self.resolution = float(grid.resolution)
         # Centre of cell (0, 0), asked of the grid so both agree on where cells are.
         self.centre_x, self.centre_y = (float(v) for v in grid.cell_to_world(0, 0))
-        self.clearance = clearance_map(self.occupied)
-        self.sight_rows, self.sight_cols = sight_maps(self.clearance)
-        self.components = connected_components(self.occupied)
+        self.clearance = shared.clearance
+        self.sight_rows, self.sight_cols = shared.sight_rows, shared.sight_cols
+        self.components = shared.components
         cells = self.occupied.size
         self.guide_block = GUIDE_BLOCK if landmarks is None and cells >= GUIDE_MIN_CELLS else 0
-        self._block_graph: np.ndarray | None = None
-        self._guides: OrderedDict = OrderedDict()
         self.landmark_count = int(landmarks or 0)
         self._landmark_maps: np.ndarray | None = None
         self._landmark_scale = 16.0
@@ -584,6 +645,40 @@ class ThetaStarPlanner:
         self._parent = np.zeros(cells, dtype=np.int32)
         self._touched = np.zeros(cells, dtype=np.int32)
         self._lock = threading.Lock()
+
+    def geodesic(self, row: int, col: int) -> tuple[np.ndarray, np.ndarray]:
+        """Any-angle distances (cells, flat) from cell (row, col) to every cell and the shortest-path tree
+        (flat parents, each in line of sight): one Dijkstra per cell and grid, shared by everyone who
+        heads there (exit choice, the fields of every group, their paths)."""
+        shared = self._shared
+        with shared.lock:
+            key = (int(row), int(col))
+            found = shared.geodesics.get(key)
+            if found is None:
+                found = any_angle_distances(self.sight_rows, self.sight_cols, key[0], key[1])
+                shared.geodesics[key] = found
+                while len(shared.geodesics) > GEODESICS_KEPT:
+                    shared.geodesics.popitem(last=False)
+            shared.geodesics.move_to_end(key)
+            return found
+
+    def path_in_tree(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+        """`plan(start, goal)` read off the goal's shortest-path tree (`geodesic`): no search of its own, so
+        every agent heading to one goal costs one Dijkstra in all. The tree's corners are pulled tight."""
+        sx, sy = (float(v) for v in start)
+        gx, gy = (float(v) for v in goal)
+        start_cell = self.snap(sx, sy, start_label, "start")
+        goal_cell = self.snap(gx, gy, goal_label, "goal")
+        distance, parent = self.geodesic(*goal_cell)
+        width = self.occupied.shape[1]
+        node = start_cell[0] * width + start_cell[1]
+        if not np.isfinite(distance[node]):
+            return self.plan(start, goal, start_label, goal_label)  # the same error, worded once
+        corners = [self.cell_centre(*start_cell)]
+        while parent[node] != node:
+            node = int(parent[node])
+            corners.append(self.cell_centre(node // width, node % width))
+        return self._with_endpoints(start_cell, goal_cell, corners, sx, sy, gx, gy)
 
     @property
     def landmarks(self) -> np.ndarray:
@@ -699,17 +794,18 @@ class ThetaStarPlanner:
         """The block distances to the goal's block (empty when the planner is not guided); the last few are kept."""
         if not self.guide_block:
             return np.empty(0)
-        with self._landmark_lock:
-            if self._block_graph is None:
-                self._block_graph = block_graph(self.occupied, self.guide_block)
+        shared = self._shared
+        with shared.lock:
+            if shared.block_graph is None:
+                shared.block_graph = block_graph(self.occupied, self.guide_block)
             key = (goal_row // self.guide_block, goal_col // self.guide_block)
-            guide = self._guides.get(key)
+            guide = shared.guides.get(key)
             if guide is None:
-                guide = block_distances(self._block_graph, key[0], key[1], self.guide_block)
-                self._guides[key] = guide
-                while len(self._guides) > 16:
-                    self._guides.popitem(last=False)
-            self._guides.move_to_end(key)
+                guide = block_distances(shared.block_graph, key[0], key[1], self.guide_block)
+                shared.guides[key] = guide
+                while len(shared.guides) > 16:
+                    shared.guides.popitem(last=False)
+            shared.guides.move_to_end(key)
             return guide
 
     @property
@@ -727,6 +823,9 @@ class ThetaStarPlanner:
         gx, gy = (float(v) for v in goal)
         start_cell = self.snap(sx, sy, start_label, "start")
         goal_cell = self.snap(gx, gy, goal_label, "goal")
+        through_doors = self.door_graph.plan(start_cell, goal_cell) if self.door_graph is not None else None
+        if through_doors is not None:
+            return self._with_endpoints(start_cell, goal_cell, [tuple(p) for p in through_doors], sx, sy, gx, gy)
         cells = self.plan_cells(start_cell, goal_cell)
         if len(cells) == 0:
             raise PlanningError(
@@ -735,6 +834,26 @@ class ThetaStarPlanner:
                 f"(resolution {self.resolution:g} m, inflation {getattr(self.grid, 'inflation', 0.0):.2f} m); "
                 f"a wall or a narrow door blocks the way")
         corners = [self.cell_centre(int(r), int(c)) for r, c in cells]
+        return self._with_endpoints(start_cell, goal_cell, corners, sx, sy, gx, gy)
+
+    @property
+    def door_graph(self) -> Any:
+        """The world's DoorGraph on this grid (None without a world), built or loaded on first use."""
+        if self.world is None or not getattr(self.world, "zones", None) or self.landmark_count:
+            return None  # landmarks ask for exact Theta* paths: the door graph's are pulled tight, not exact
+        shared = self._shared
+        with shared.lock:
+            key = (id(self.world), str(self._door_graph_dir))
+            graph = shared.door_graphs.get(key)
+            if graph is None:
+                from grove_tui.navigation.door_graph import DoorGraph
+
+                graph = DoorGraph(self.world, self, self._door_graph_dir)
+                shared.door_graphs[key] = graph
+            return graph
+
+    def _with_endpoints(self, start_cell, goal_cell, corners, sx, sy, gx, gy) -> np.ndarray:
+        """The exact endpoints joined to a path of cell centres (`corners`, from the start's cell to the goal's)."""
         points = [(sx, sy)]
         interior = corners[1:-1]
         # The exact endpoints replace the centres of their cells when the straight line allows it,
