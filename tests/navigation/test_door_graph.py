@@ -75,7 +75,8 @@ def test_exit_walks_through_the_graph_match_the_exits_trees(residential, tmp_pat
     assert names == plain_names
     reachable = np.isfinite(plain)
     # the graph's walks pass door centres: a little longer, never shorter than the geodesic
-    assert np.all(walks[reachable] >= plain[reachable] - 1e-4)  # float32 door fields
+    # (the graph snaps a door to a cell of all its zones: up to a cell off the exit tree's root)
+    assert np.all(walks[reachable] >= plain[reachable] - grid.resolution)
     assert np.all(walks[reachable] <= plain[reachable] * 1.15 + 1.0)
 
 
