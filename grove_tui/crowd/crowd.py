@@ -151,10 +151,13 @@ class Crowd:
         self._robot_interaction = np.zeros(capacity, dtype=np.int8)
         # Where a standing agent stopped (NaN while it walks); the kernel sets and clears it.
         self._anchor = np.full((capacity, 2), np.nan)
+        # The narrowest gap to any other body at the start of the last step (the kernel's pair pass).
+        self._min_gap = np.full(capacity, np.inf)
 
     _PER_AGENT = ("_pos", "_vel", "_yaw", "_radius", "_desired_speed", "_base_speed", "_group", "_factors",
                   "_base_factors", "_mode", "_active", "_goal_len", "_goal_front", "_goal_radius", "_cyclic",
-                  "_field_slot", "_face_kind", "_face_ref", "_face_point", "_robot_interaction", "_anchor")
+                  "_field_slot", "_face_kind", "_face_ref", "_face_point", "_robot_interaction", "_anchor",
+                  "_min_gap")
 
     def _grow(self, capacity: int) -> None:
         old = {name: getattr(self, name) for name in self._PER_AGENT}
@@ -206,6 +209,13 @@ class Crowd:
     @property
     def active(self) -> np.ndarray:
         return self._active[: self.n]
+
+    @property
+    def min_gap(self) -> np.ndarray:
+        """Per agent, the narrowest gap (m) between its body and any other within the cutoff at the start
+        of the last step (negative: overlapping; a lower bound when nobody is that near; inf if inactive).
+        Contact counters use it to look only at people who may touch."""
+        return self._min_gap[: self.n]
 
     @property
     def goal_radius(self) -> np.ndarray:
@@ -610,7 +620,7 @@ class Crowd:
             self._face_kind[:k], self._face_ref[:k], self._face_point[:k], self._anchor[:k],
             self._robot_interaction[:k], self._robot, self._robot_path,
             self.walls, self._wall_owner, self._wall_meta, self._wall_start, self._wall_items,
-            self._free_meta, self._wall_free, _block_size(k),
+            self._free_meta, self._wall_free, _block_size(k), self._min_gap[:k],
         )
 
 

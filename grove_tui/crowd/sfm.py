@@ -1730,14 +1730,17 @@ def _apply_separation(k0, k1, params, nstate, where, push, out,
 
 
 @nb.njit(cache=True)
-def _commit(i0, i1, params, rank, pos, vel, yaw, npos, nvel, nyaw):
-    """The new state back in agent order; on a periodic crowd x wraps into the period."""
+def _commit(i0, i1, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap):
+    """The new state back in agent order; on a periodic crowd x wraps into the period. min_gap[i]: the
+    narrowest gap between i's body and any other at the start of the step (inf when inactive)."""
     period = params[P_PERIOD]
     x0 = params[P_PERIOD_X0]
     for i in range(i0, i1):
         k = rank[i]
         if k < 0:
+            min_gap[i] = np.inf
             continue
+        min_gap[i] = acc[k, A_GAP]
         x = npos[k, 0]
         if period > 0.0:
             x = x0 + (x - x0) % period
@@ -1800,7 +1803,7 @@ def advance_serial(n_steps, dt, params,
                    field_slot, field_vectors, field_meta,
                    face_kind, face_ref, face_point, anchor,
                    robot_interaction, robot, robot_path,
-                   walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block):
+                   walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block, min_gap):
     """Run n_steps of the crowd on one thread; every array is updated in place."""
     n = pos.shape[0]
     n_groups = group_start.shape[0] - 1
@@ -1832,7 +1835,7 @@ def advance_serial(n_steps, dt, params,
         if params[P_BODY] > 0.0:
             _separation_serial(params, n_active, order, starts, n_major, n_minor, span, n_bands, nstate, acc,
                                npos, spare, push, slack, walls, wall_meta, wall_start, wall_items, free_meta, wall_free)
-        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw)
+        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap)
 
 
 @nb.njit(cache=True, parallel=True)
@@ -1843,7 +1846,7 @@ def advance_parallel(n_steps, dt, params,
                      field_slot, field_vectors, field_meta,
                      face_kind, face_ref, face_point, anchor,
                      robot_interaction, robot, robot_path,
-                     walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block):
+                     walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block, min_gap):
     """advance_serial with agent blocks of `block` rows and bands spread over threads.
 
     Per-agent passes write only their own rows; pair passes run the even bands together, then
@@ -1911,7 +1914,7 @@ def advance_parallel(n_steps, dt, params,
                 if moved == 0:
                     break
         # A serial copy costs less than another thread barrier.
-        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw)
+        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap)
 
 
 # --------------------------------------------------------------------------- profiling
@@ -1929,7 +1932,7 @@ def profile_steps(n_steps, dt, params,
                   field_slot, field_vectors, field_meta,
                   face_kind, face_ref, face_point, anchor,
                   robot_interaction, robot, robot_path,
-                  walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block):
+                  walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block, min_gap):
     """advance_serial's steps with every pass timed in process CPU seconds: {phase: seconds}.
 
     The passes are the compiled ones, called from Python one by one (a few microseconds of call
@@ -1986,6 +1989,6 @@ def profile_steps(n_steps, dt, params,
                                npos, spare, push, slack, walls, wall_meta, wall_start, wall_items, free_meta, wall_free)
         spent["separation passes"] += cpu() - t
         t = cpu()
-        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw)
+        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap)
         spent["commit"] += cpu() - t
     return spent
