@@ -72,10 +72,13 @@ class Crowd:
 
     def __init__(self, walls: np.ndarray | Sequence[Sequence[float]] | None = None,
                  params: SFMParams | None = None, dt: float = 0.05, seed: int = 0,
-                 grid: Any = None, periodic_x: tuple[float, float] | None = None) -> None:
+                 grid: Any = None, periodic_x: tuple[float, float] | None = None,
+                 precision: str = "float64") -> None:
         """`periodic_x` = (x0, x1): x wraps from x1 back to x0 and people interact across that seam,
         as in a corridor with no ends (the fundamental diagram is measured in one). Walls along the
-        corridor should reach a little past both ends; a periodic crowd always steps on one thread."""
+        corridor should reach a little past both ends; a periodic crowd always steps on one thread.
+        `precision` "float32" computes the pairwise terms in single precision (positions, velocities and
+        every sum stay float64): faster, and within SINGLE_PRECISION_TOLERANCE of "float64" (tests/crowd)."""
         if dt <= 0 or not math.isfinite(dt):
             raise CrowdError(f"Crowd dt must be a positive number of seconds, got {dt!r}")
         wall_array = np.zeros((0, 4)) if walls is None else np.asarray(walls, dtype=np.float64)
@@ -85,6 +88,10 @@ class Crowd:
             raise CrowdError(f"Crowd walls must be an (M, 4) array of x1, y1, x2, y2, got shape {wall_array.shape}")
         if not np.all(np.isfinite(wall_array)):
             raise CrowdError("Crowd walls contain NaN or infinite coordinates")
+        if precision not in ("float64", "float32"):
+            raise CrowdError(f"Crowd precision must be 'float64' or 'float32', got {precision!r}")
+        self.precision = precision
+        self._precision = np.empty(0, dtype=np.float32 if precision == "float32" else np.float64)
         self.params = params if params is not None else SFMParams()
         self.dt = float(dt)
         self.seed = int(seed)
@@ -620,7 +627,7 @@ class Crowd:
             self._face_kind[:k], self._face_ref[:k], self._face_point[:k], self._anchor[:k],
             self._robot_interaction[:k], self._robot, self._robot_path,
             self.walls, self._wall_owner, self._wall_meta, self._wall_start, self._wall_items,
-            self._free_meta, self._wall_free, _block_size(k), self._min_gap[:k],
+            self._free_meta, self._wall_free, _block_size(k), self._min_gap[:k], self._precision,
         )
 
 
