@@ -56,7 +56,7 @@ def empirical(models: tuple[str, ...], checks: tuple[str, ...]) -> None:
     """Compare the crowd with measured crowds (Weidmann 1993; Seyfried 2009, Kretz 2006; Zhang 2012).
 
     Every model reports; the command exits 1 only when the default model ("grove") fails a check.
-    The published values and their sources: analysis/data/empirical.yaml in the package.
+    The published values and their sources: grove_tui/analysis/data/empirical.yaml.
     """
     from grove_tui.analysis.empirical import CHECKS, run_empirical
 
