@@ -558,6 +558,9 @@ def landmark_sites(sight_rows: np.ndarray, seed_cell: tuple[int, int], count: in
 
 
 GEODESICS_KEPT = 8  # shortest-path trees kept per grid (8 bytes x 2 per cell each)
+# From the TREE_AFTER-th plan to one goal cell on, plans to it are read off its shortest-path tree:
+# one Dijkstra over the grid (0.15 s of CPU for the hospital at 0.1 m) instead of a search each.
+TREE_AFTER = 16
 
 
 @dataclass(eq=False)
@@ -575,6 +578,7 @@ class _SharedMaps:
     guides: OrderedDict = field(default_factory=OrderedDict)
     geodesics: OrderedDict = field(default_factory=OrderedDict)
     door_graphs: dict = field(default_factory=dict)
+    goal_requests: dict = field(default_factory=dict)
 
 
 _SHARED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
@@ -823,6 +827,12 @@ class ThetaStarPlanner:
         gx, gy = (float(v) for v in goal)
         start_cell = self.snap(sx, sy, start_label, "start")
         goal_cell = self.snap(gx, gy, goal_label, "goal")
+        with self._shared.lock:
+            asked = self._shared.goal_requests.get(goal_cell, 0) + 1
+            self._shared.goal_requests[goal_cell] = asked
+        if asked > TREE_AFTER and self.components[start_cell] == self.components[goal_cell]:
+            # many people head for this goal (a counter, an exit): one shortest-path tree serves them all
+            return self.path_in_tree((sx, sy), (gx, gy), start_label, goal_label)
         through_doors = self.door_graph.plan(start_cell, goal_cell) if self.door_graph is not None else None
         if through_doors is not None:
             return self._with_endpoints(start_cell, goal_cell, [tuple(p) for p in through_doors], sx, sy, gx, gy)
@@ -982,7 +992,9 @@ class PlanCache:
                        start, exit_point)
         field = self.get(key)
         if field is None:
-            path = self.plan(world_name, planner, start, exit_point, start_label=start_label, goal_label=exit_label)
-            field = build_velocity_field(planner.grid, path, exit_point)
+            # the group's path is read off the exit's shortest-path tree, which the field is built on
+            # too: one Dijkstra per exit serves the exit choice, every group's path and every field
+            path = planner.path_in_tree(start, exit_point, start_label=start_label, goal_label=exit_label)
+            field = build_velocity_field(planner.grid, path, exit_point, exit_label=exit_label, planner=planner)
             self.put(key, field)
         return field

@@ -336,11 +336,21 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     if len(path) >= 2:
         path_cells = np.column_stack(((path[:, 0] - planner.centre_x) / res, (path[:, 1] - planner.centre_y) / res))
         samples = _resample(path_cells, spacing)
-        rows, cols = np.nonzero(parent >= 0)
+        # only cells within the capture radius of the path pursue it: look for nearest samples there
+        capture = CAPTURE_RADIUS / res
+        c0 = max(int(math.floor(samples[:, 0].min() - capture)), 0)
+        c1 = min(int(math.ceil(samples[:, 0].max() + capture)) + 1, width)
+        r0 = max(int(math.floor(samples[:, 1].min() - capture)), 0)
+        r1 = min(int(math.ceil(samples[:, 1].max() + capture)) + 1, height)
+        rows, cols = np.nonzero(parent[r0:r1, c0:c1] >= 0)
+        rows += r0
+        cols += c0
         if len(rows):
-            distances, indices = cKDTree(samples).query(np.column_stack((cols, rows)).astype(np.float64))
-            nearest[rows, cols] = indices
-            nearest_distance[rows, cols] = distances
+            distances, indices = cKDTree(samples).query(np.column_stack((cols, rows)).astype(np.float64),
+                                                        distance_upper_bound=capture)
+            near = np.isfinite(distances)
+            nearest[rows[near], cols[near]] = indices[near]
+            nearest_distance[rows[near], cols[near]] = distances[near]
     else:
         samples = np.array([[exit_cx, exit_cy]], dtype=np.float64)
     vectors = np.zeros((height, width, 2), dtype=np.float32)

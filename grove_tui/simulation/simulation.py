@@ -451,8 +451,14 @@ class Simulation:
             c.robot_collisions += len(touching - self._robot_contacts)
             still = set(np.flatnonzero(gap < ROBOT_CONTACT_GAP + CONTACT_RELEASE).tolist())
             self._robot_contacts = touching | (self._robot_contacts & still)
-        rows = np.flatnonzero(active)
-        if len(rows) > 1:
+        # Only people who were near someone at the start of the last step can touch now: bodies close
+        # in by at most two steps, so a gap over CONTACT_RELEASE plus that rules a person out.
+        reach = CONTACT_RELEASE + 2.0 * float(crowd.desired_speed[:n].max(initial=0.0)) * crowd.dt
+        near_someone = crowd.min_gap[:n] < reach if crowd.step_count else np.ones(n, dtype=bool)
+        rows = np.flatnonzero(active & near_someone)
+        if len(rows) <= 1:
+            self._agent_contacts = set()
+        else:
             from scipy.spatial import cKDTree
 
             p = pos[rows]
