@@ -100,3 +100,103 @@ def hall():
     assert not problems
     grid = build_grid(world)
     return world, grid, ThetaStarPlanner(grid)
+
+
+@pytest.fixture(scope="session")
+def hospital():
+    """The shipped hospital world (load_world caches it: every caller gets the same object)."""
+    from grove_tui.world import load_world
+
+    return load_world("hospital")
+
+
+# ---- hand-built bundles: the hospital scenario of tests/helpers/handmade.py ----------------------
+
+
+@pytest.fixture(scope="module")
+def bundle(tmp_path_factory):
+    """The hand-built hospital bundle (queue, conversation, a Surprised agent, a robot), not simulated."""
+    from helpers.handmade import build_hospital_bundle
+
+    return build_hospital_bundle(tmp_path_factory.mktemp("bundle") / "bundle")
+
+
+@pytest.fixture(scope="session")
+def _hospital_runs(tmp_path_factory):
+    """Simulated hand-built hospital bundles by duration, each simulated once per session (read-only)."""
+    from helpers.handmade import build_hospital_bundle
+
+    from grove_tui.services.session import GroveSession
+
+    runs: dict[float, object] = {}
+
+    def run(seconds: float):
+        if seconds not in runs:
+            bundle = build_hospital_bundle(tmp_path_factory.mktemp(f"run_{seconds:g}s") / "bundle")
+            GroveSession().simulate(bundle, seconds)
+            runs[seconds] = bundle
+        return runs[seconds]
+
+    return run
+
+
+@pytest.fixture(scope="module")
+def simulated(request, tmp_path_factory, _hospital_runs):
+    """The hand-built hospital bundle after a real simulation of the module's SIMULATED_SECONDS (3 s if it
+    names none): one run per duration per session, copied so that each module owns what it writes."""
+    import shutil
+
+    seconds = float(getattr(request.module, "SIMULATED_SECONDS", 3.0))
+    copy = tmp_path_factory.mktemp("simulated") / "bundle"
+    shutil.copytree(_hospital_runs(seconds), copy, symlinks=True)
+    return copy
+
+
+@pytest.fixture()
+def simulated_copy(simulated, tmp_path):
+    """A copy of `simulated` that one test may damage."""
+    import shutil
+
+    copy = tmp_path / "bundle"
+    shutil.copytree(simulated, copy, symlinks=True)
+    return copy
+
+
+# ---- real models: the embedded SmolLM2, a tiny random Qwen3, the node index ----------------------
+
+
+@pytest.fixture(scope="module")
+def llm():
+    """The embedded model (SmolLM2-135M) for behavior trees, one worker per module."""
+    from grove_tui.llm.embedded import embedded_model_path
+    from grove_tui.llm.local import LocalLLM
+
+    model = LocalLLM(embedded_model_path(), role="bt")
+    yield model
+    model.close()
+
+
+@pytest.fixture(scope="module")
+def tiny_path(tmp_path_factory):
+    """A two-layer Qwen3-architecture GGUF with random weights (tests/helpers/tiny_qwen3.py)."""
+    from helpers.tiny_qwen3 import build_tiny_qwen3
+
+    return build_tiny_qwen3(tmp_path_factory.mktemp("qwen3") / "tiny-qwen3.gguf")
+
+
+@pytest.fixture(scope="module")
+def tiny_llm(tiny_path):
+    """The tiny Qwen3 served as the behavior-tree model, one thread, 1024 tokens of context."""
+    from grove_tui.llm.local import LocalLLM
+
+    model = LocalLLM(tiny_path, role="bt", n_ctx=1024, n_threads=1)
+    yield model
+    model.close()
+
+
+@pytest.fixture(scope="module")
+def retriever():
+    """The node retriever on the suite's index (built once in the sandboxed cache, then reused)."""
+    from grove_tui.generation.retrieval import NodeRetriever
+
+    return NodeRetriever()

@@ -45,18 +45,18 @@ class NoRetrieval(NodeRetriever):
 
 
 @pytest.fixture(scope="module")
-def retriever():
+def no_retrieval():
     return NoRetrieval()
 
 
-def make_pipeline(clinic, retriever, llm=None, preset="queuing"):
-    return GenerationPipeline(clinic, load_preset(preset), None, llm or CountingLLM(DRAFT), retriever)
+def make_pipeline(clinic, no_retrieval, llm=None, preset="queuing"):
+    return GenerationPipeline(clinic, load_preset(preset), None, llm or CountingLLM(DRAFT), no_retrieval)
 
 
 @pytest.fixture(scope="module")
-def generated(clinic, retriever):
+def generated(clinic, no_retrieval):
     llm = CountingLLM(DRAFT)
-    pipeline = make_pipeline(clinic, retriever, llm)
+    pipeline = make_pipeline(clinic, no_retrieval, llm)
     result = pipeline.run(PROMPT, seed=3)
     assert llm.calls == 1
     return pipeline, llm, result
@@ -157,9 +157,9 @@ def test_counts_out_of_range_are_refused(generated, counts, message):
         pipeline.replan(result, counts)
 
 
-def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(clinic, retriever):
+def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(clinic, no_retrieval):
     draft = "2 nurses from restroom: GoTo(lobby)"
-    pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
+    pipeline = make_pipeline(clinic, no_retrieval, CountingLLM(draft), preset="normal")
     result = pipeline.run("two nurses walk from the restroom to the lobby", seed=0)
     assert labels_and_counts(result) == [("nurse", 2)]
     before_report = copy.deepcopy(result.report)
@@ -182,15 +182,15 @@ def test_a_result_without_its_draft_cannot_be_replanned(generated):
         pipeline.replan(replace(result, inputs=None), {0: 5})
 
 
-def test_another_preset_pipeline_refuses_the_result(generated, clinic, retriever):
+def test_another_preset_pipeline_refuses_the_result(generated, clinic, no_retrieval):
     _, _, result = generated
     with pytest.raises(GenerationError, match="preset 'normal'"):
-        make_pipeline(clinic, retriever, preset="normal").replan(result, {0: 5})
+        make_pipeline(clinic, no_retrieval, preset="normal").replan(result, {0: 5})
 
 
-def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retriever):
+def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, no_retrieval):
     draft = "3 visitors from cafeteria: GoTo(coffee_counter)"
-    pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
+    pipeline = make_pipeline(clinic, no_retrieval, CountingLLM(draft), preset="normal")
     result = pipeline.run("visitors walk to the coffee counter", seed=0)
     # "visitors" with no number: the reading's vague count (a seeded choice in its documented range)
     vague = result.inputs.reading.groups[0].count
@@ -200,9 +200,9 @@ def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retri
     assert [a.id for a in edited.scenario.agents] == list(range(1, 7))
 
 
-def test_emergency_replan_rebuilds_the_group_fields(clinic, retriever):
+def test_emergency_replan_rebuilds_the_group_fields(clinic, no_retrieval):
     draft = "5 visitors from cafeteria: FollowVelocityField(back_exit)"
-    pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="emergency")
+    pipeline = make_pipeline(clinic, no_retrieval, CountingLLM(draft), preset="emergency")
     result = pipeline.run("five visitors evacuate the cafeteria", seed=0)
     edited = pipeline.replan(result, {0: 9})
     assert len(edited.scenario.agents) == 9 and set(edited.fields) == set(result.fields) == {"group_1"}

@@ -2,26 +2,14 @@
 
 from __future__ import annotations
 
-import pytest
-
 from grove_tui.bt.manifest import NODES
 from grove_tui.generation.pipeline import STAGES, world_reference
 from grove_tui.generation.presets import load_preset
 from grove_tui.language.quantities import extract_quantities
-from grove_tui.generation.retrieval import NodeRetriever, RetrievedNode
+from grove_tui.generation.retrieval import RetrievedNode
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import offered_nodes, prepare_request
 from grove_tui.world import load_world
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
-
-
-@pytest.fixture(scope="module")
-def hospital():
-    return load_world("hospital")
 
 
 def request(hospital, retriever, preset_name, prompt):

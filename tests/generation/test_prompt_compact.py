@@ -17,7 +17,6 @@ from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
 from grove_tui.generation.pipeline import quantities_from_reading
 from grove_tui.generation.presets import load_preset
-from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import fixed_system_message, prepare_request
 from grove_tui.language.reading import read_prompt
@@ -30,11 +29,6 @@ SENTENCES = {
     "normal": "Three visitors walk from the {zone} to the {other}",
     "emergency": "A fire alarm: ten people in the {zone} evacuate",
 }
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
 
 
 def _places(world):

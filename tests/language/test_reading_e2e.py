@@ -19,8 +19,6 @@ from grove_tui.generation.presets import load_preset
 from grove_tui.generation.reconcile import ROUTINE_NODES
 from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.language.reading import effective_counts
-from grove_tui.llm.embedded import embedded_model_path
-from grove_tui.llm.local import LocalLLM
 from grove_tui.scenario.bundle import load_bundle, write_bundle
 from grove_tui.scenario.report import GroundingReport
 from grove_tui.simulation.simulation import Simulation
@@ -38,13 +36,6 @@ PROMPTS = {
     "evacuate": ("hospital", "Evacuate the pharmacy: eight people leave by the main entrance and one of them "
                              "follows the robot."),
 }
-
-
-@pytest.fixture(scope="module")
-def llm():
-    model = LocalLLM(embedded_model_path(), role="bt")
-    yield model
-    model.close()
 
 
 @pytest.fixture(scope="module")

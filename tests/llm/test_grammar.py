@@ -7,7 +7,6 @@ from __future__ import annotations
 import json
 
 import pytest
-from helpers.tiny_qwen3 import build_tiny_qwen3
 
 from grove_tui.generation.draft import draft_grammar, parse_draft
 from grove_tui.generation.presets import list_presets, load_preset
@@ -97,9 +96,9 @@ def test_literals_are_escaped():
 # ---- compiled and sampled by llama.cpp ---------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def tiny_llm(tmp_path_factory):
-    path = build_tiny_qwen3(tmp_path_factory.mktemp("tiny") / "tiny-qwen3.gguf")
-    llm = LocalLLM(path, role="grammar-test", n_ctx=2048, n_threads=1)
+def grammar_llm(tiny_path):
+    """The tiny Qwen3 with room for the longest preset grammar's drafts."""
+    llm = LocalLLM(tiny_path, role="grammar-test", n_ctx=2048, n_threads=1)
     yield llm
     llm.close()
 
@@ -117,10 +116,10 @@ UNIT_SCHEMAS = [
 
 
 @pytest.mark.parametrize("index", range(len(UNIT_SCHEMAS)))
-def test_unit_grammars_compile_and_produce_strict_json(tiny_llm, index):
+def test_unit_grammars_compile_and_produce_strict_json(grammar_llm, index):
     grammar = schema_to_gbnf(UNIT_SCHEMAS[index])
     for seed in range(4):
-        result = tiny_llm.generate("<|im_start|>assistant\n", grammar=grammar, max_tokens=400, seed=seed, temperature=1.0)
+        result = grammar_llm.generate("<|im_start|>assistant\n", grammar=grammar, max_tokens=400, seed=seed, temperature=1.0)
         json.loads(result.text)
 
 
@@ -140,7 +139,7 @@ def _preset_node_sets():
     return sets
 
 
-def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
+def test_every_preset_draft_grammar_compiles_and_parses(grammar_llm):
     """The grammar of every preset's full node set over every shipped world: llama.cpp compiles and samples it
     (random weights write long, varied drafts), and parse_draft accepts what it wrote."""
     worlds = list_worlds()
@@ -150,15 +149,15 @@ def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
         for preset, (nodes, limits) in _preset_node_sets().items():
             grammar = draft_grammar(nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                     max_depth=limits.max_depth)
-            result = tiny_llm.generate([{"role": "user", "content": f"{preset} scenario"}], grammar=grammar,
+            result = grammar_llm.generate([{"role": "user", "content": f"{preset} scenario"}], grammar=grammar,
                                        max_tokens=1800, seed=index, temperature=1.0)
             draft = parse_draft(result.text, nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                 max_depth=limits.max_depth)
             assert draft.node_types() <= set(nodes) and draft.places() <= set(rois), (world_name, preset)
 
 
-def test_a_malformed_grammar_costs_one_worker_not_the_app(tiny_llm):
+def test_a_malformed_grammar_costs_one_worker_not_the_app(grammar_llm):
     """The reason only our own grammars are compiled: llama.cpp may die on a bad one, and only the worker goes."""
     with pytest.raises(ModelError):
-        tiny_llm.generate("x", grammar="root ::= [a-", max_tokens=4)
-    assert json.loads(tiny_llm.generate("x", grammar=schema_to_gbnf({"const": 7}), max_tokens=4).text) == 7
+        grammar_llm.generate("x", grammar="root ::= [a-", max_tokens=4)
+    assert json.loads(grammar_llm.generate("x", grammar=schema_to_gbnf({"const": 7}), max_tokens=4).text) == 7

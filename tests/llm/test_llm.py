@@ -27,18 +27,6 @@ MESSAGES = [{"role": "system", "content": "Write a pedestrian scenario as JSON."
 
 
 @pytest.fixture(scope="module")
-def tiny_path(tmp_path_factory):
-    return build_tiny_qwen3(tmp_path_factory.mktemp("qwen3") / "tiny-qwen3.gguf")
-
-
-@pytest.fixture(scope="module")
-def tiny_llm(tiny_path):
-    llm = LocalLLM(tiny_path, role="bt", n_ctx=1024, n_threads=1)
-    yield llm
-    llm.close()
-
-
-@pytest.fixture(scope="module")
 def embedded_llm():
     llm = LocalLLM(embedded_model_path(), role="bt", n_ctx=1024, n_threads=1)
     yield llm
