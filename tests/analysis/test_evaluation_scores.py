@@ -31,11 +31,6 @@ def bundle(tmp_path_factory):
     return build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
 
 
-@pytest.fixture(scope="module")
-def hospital():
-    return load_world("hospital")
-
-
 def _trees(bundle, scenario):
     return {a.id: (bundle / a.tree).read_text() for a in scenario.agents}
 
