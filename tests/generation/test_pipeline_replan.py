@@ -54,7 +54,7 @@ def make_pipeline(clinic, no_retrieval, llm=None, preset="queuing"):
 
 
 @pytest.fixture(scope="module")
-def generated(clinic, no_retrieval):
+def planned(clinic, no_retrieval):
     llm = CountingLLM(DRAFT)
     pipeline = make_pipeline(clinic, no_retrieval, llm)
     result = pipeline.run(PROMPT, seed=3)
@@ -66,8 +66,8 @@ def labels_and_counts(result):
     return [(g["label"], g["count"]) for g in result.report["groups"]]
 
 
-def test_counts_change_the_population_exactly_without_calling_the_model(generated):
-    pipeline, llm, result = generated
+def test_counts_change_the_population_exactly_without_calling_the_model(planned):
+    pipeline, llm, result = planned
     assert labels_and_counts(result) == [("patient", 10), ("nurse", 2)]
     events = []
     edited = pipeline.replan(result, {0: 14, 1: 3}, on_event=events.append)
@@ -84,8 +84,8 @@ def test_counts_change_the_population_exactly_without_calling_the_model(generate
     assert all(isinstance(e, (StageStarted, StageFinished)) for e in events)
 
 
-def test_every_tree_validates_and_has_planned_waypoints(generated):
-    pipeline, _, result = generated
+def test_every_tree_validates_and_has_planned_waypoints(planned):
+    pipeline, _, result = planned
     edited = pipeline.replan(result, {0: 7})
     assert len(edited.trees) == len(edited.scenario.agents) == 9
     planner = ThetaStarPlanner(edited.grid)
@@ -103,8 +103,8 @@ def test_every_tree_validates_and_has_planned_waypoints(generated):
     assert edited.scenario.robot is not None and len(edited.scenario.robot.path) >= 2
 
 
-def test_report_keeps_earlier_stages_and_records_the_edit(generated):
-    pipeline, _, result = generated
+def test_report_keeps_earlier_stages_and_records_the_edit(planned):
+    pipeline, _, result = planned
     edited = pipeline.replan(result, {0: 12})
     old, new = result.report, edited.report
     for stage in ("rois", "retrieval", "synthesis"):
@@ -122,8 +122,8 @@ def test_report_keeps_earlier_stages_and_records_the_edit(generated):
         "counts edited: patient 10 -> 12", "counts edited: nurse 2 -> 4"]
 
 
-def test_same_result_counts_and_seed_give_the_same_bundle(generated, tmp_path):
-    pipeline, _, result = generated
+def test_same_result_counts_and_seed_give_the_same_bundle(planned, tmp_path):
+    pipeline, _, result = planned
     first = pipeline.replan(result, {0: 11, 1: 3})
     second = make_pipeline(pipeline.world, pipeline.retriever).replan(result, {0: 11, 1: 3})
     assert first.scenario == second.scenario
@@ -138,8 +138,8 @@ def test_same_result_counts_and_seed_give_the_same_bundle(generated, tmp_path):
     assert "re-planned with seed 4" in other.report["notes"][1]
 
 
-def test_same_counts_reproduce_the_original_run(generated):
-    pipeline, _, result = generated
+def test_same_counts_reproduce_the_original_run(planned):
+    pipeline, _, result = planned
     same = pipeline.replan(result, {0: 10, 1: 2})
     assert same.scenario == result.scenario and same.trees == result.trees
 
@@ -151,8 +151,8 @@ def test_same_counts_reproduce_the_original_run(generated):
     ({0: "7"}, "is not a whole number"),
     ({}, "no counts to change"),
 ])
-def test_counts_out_of_range_are_refused(generated, counts, message):
-    pipeline, _, result = generated
+def test_counts_out_of_range_are_refused(planned, counts, message):
+    pipeline, _, result = planned
     with pytest.raises(GenerationError, match=message.replace("(", r"\(")):
         pipeline.replan(result, counts)
 
@@ -174,16 +174,16 @@ def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(cl
     assert labels_and_counts(pipeline.replan(result, {0: 3})) == [("nurse", 3)]
 
 
-def test_a_result_without_its_draft_cannot_be_replanned(generated):
-    pipeline, _, result = generated
+def test_a_result_without_its_draft_cannot_be_replanned(planned):
+    pipeline, _, result = planned
     from dataclasses import replace
 
     with pytest.raises(GenerationError, match="keeps no draft"):
         pipeline.replan(replace(result, inputs=None), {0: 5})
 
 
-def test_another_preset_pipeline_refuses_the_result(generated, clinic, no_retrieval):
-    _, _, result = generated
+def test_another_preset_pipeline_refuses_the_result(planned, clinic, no_retrieval):
+    _, _, result = planned
     with pytest.raises(GenerationError, match="preset 'normal'"):
         make_pipeline(clinic, no_retrieval, preset="normal").replan(result, {0: 5})
 
@@ -209,8 +209,8 @@ def test_emergency_replan_rebuilds_the_group_fields(clinic, no_retrieval):
     assert all(len(a.goals) >= 1 for a in edited.scenario.agents)
 
 
-def test_cancel_stops_the_replan(generated):
-    pipeline, _, result = generated
+def test_cancel_stops_the_replan(planned):
+    pipeline, _, result = planned
     cancel = threading.Event()
     cancel.set()
     with pytest.raises(Cancelled):
