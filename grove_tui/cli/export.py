@@ -103,7 +103,8 @@ def metrics(bundle: Path, as_json: bool) -> None:
 @click.option("--trajectories/--no-trajectories", default=True, show_default=True,
               help="Draw the simulated trajectories when the bundle has them.")
 @click.option("--width", default=None, type=int, help="Terminal drawing width in columns.")
-def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
+@click.option("--overwrite", is_flag=True, help="Replace --out even when it is a file GROVE did not draw.")
+def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None, overwrite: bool) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
     from grove_tui.exports.pictures import draw_scenario, render_scenario_text
     from grove_tui.scenario.bundle import load_bundle_world, load_scenario
@@ -116,7 +117,7 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
         return
     csv = bundle / "trajectories.csv"
     written = draw_scenario(world, scenario, bundle, out_path,
-                            trajectories=csv if trajectories and csv.exists() else None)
+                            trajectories=csv if trajectories and csv.exists() else None, overwrite=overwrite)
     click.echo(str(written))
 
 
