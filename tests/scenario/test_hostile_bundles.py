@@ -17,6 +17,8 @@ from grove_tui.cli import main
 from grove_tui.scenario.bundle import load_bundle
 from grove_tui.scenario.model import Scenario, ScenarioError
 
+# The `simulated` fixture's run (tests/conftest.py): metrics and exports need trajectories to read.
+SIMULATED_SECONDS = 2.0
 COMMANDS = {
     "metrics": lambda b, tmp: ["metrics", str(b)],
     "export hunav": lambda b, tmp: ["export", "hunav", str(b), "--out", str(tmp / "hunav_out")],
