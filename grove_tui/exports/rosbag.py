@@ -258,7 +258,7 @@ class _Static:
     skin: int = 0
     goal_radius: float = 0.0
     cyclic_goals: bool = False
-    behavior: dict[str, Any] = field(default_factory=dict)  # hunav_msgs/AgentBehavior's fields (scene.behavior_values)
+    behavior: dict[str, float | int | bool] = field(default_factory=dict)  # hunav_msgs/AgentBehavior's fields (scene.behavior_values)
 
 
 _SLOTS_U32 = frozenset({"sec", "nanosec"})  # stamps; every other slot is a float
