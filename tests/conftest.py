@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import os
 import socket
 import tempfile
@@ -68,6 +69,52 @@ def block_network():
     socket.socket.connect = _real_connect  # type: ignore[method-assign]
     socket.socket.connect_ex = _real_connect_ex  # type: ignore[method-assign]
     socket.getaddrinfo = _real_getaddrinfo
+
+
+# ---- `slow` marks every test that runs a real model ------------------------------------------------
+# `python -m pytest -m "not slow"` is the fast run for daily work. It stays fast only if no test in it
+# starts a llama.cpp worker (the embedded model, a tiny Qwen3, any GGUF), the sentence-transformers
+# embedder or the ChromaDB node index; so the ways in are watched here and such a test without the mark
+# fails, saying so. (A model loaded by a child process, `grove ...` run as a subprocess or a Ray worker,
+# is not seen here: `--durations` shows those tests.)
+
+_MODELS_USED: list[str] = []
+
+
+def _watch(owner: object, name: str, what: str) -> None:
+    original = getattr(owner, name)
+
+    @functools.wraps(original)
+    def watched(*args, **kwargs):  # type: ignore[no-untyped-def]
+        _MODELS_USED.append(what)
+        return original(*args, **kwargs)
+
+    setattr(owner, name, watched)
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    from grove_tui.generation import retrieval
+    from grove_tui.llm.local import LocalLLM
+
+    _watch(LocalLLM, "_ensure_worker", "a llama.cpp model (LocalLLM)")
+    _watch(retrieval, "embedding_model", "the sentence-transformers embedder")
+    _watch(retrieval.NodeRetriever, "ensure_index", "the ChromaDB node index")
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_setup(item: pytest.Item):  # type: ignore[no-untyped-def]
+    _MODELS_USED.clear()  # a module's model fixture is set up in its first test's setup: that test uses it
+    return (yield)
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_call(item: pytest.Item):  # type: ignore[no-untyped-def]
+    result = yield
+    used = sorted(set(_MODELS_USED))
+    if used and item.get_closest_marker("slow") is None:
+        pytest.fail(f"{item.nodeid} uses {', '.join(used)} but is not marked `slow`: add @pytest.mark.slow "
+                    "(or pytestmark = pytest.mark.slow for a module of such tests)", pytrace=False)
+    return result
 
 
 # ---- shared worlds: one fixture each, used across tiers ------------------------------------------
