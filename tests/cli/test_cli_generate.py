@@ -37,8 +37,11 @@ def generate_args(out, embedded_path, world="hospital", preset="queuing", prompt
     ("moonbase", "queuing", "Six patients queue", "no shipped world"),
     ("hospital", "panic", "Six patients queue", "unknown preset 'panic'"),
     ("hospital", "queuing", "   ", "the prompt is empty"),
-    ("hospital", "normal", "Ten patients swim in the swimming pool", "does not have: 'swimming pool'"),
-    ("hospital", "normal", "10,000 people crowd into the bathroom", "10000 people do not fit"),
+    # These two start the model before the sentence is refused.
+    pytest.param("hospital", "normal", "Ten patients swim in the swimming pool", "does not have: 'swimming pool'",
+                 marks=pytest.mark.slow),
+    pytest.param("hospital", "normal", "10,000 people crowd into the bathroom", "10000 people do not fit",
+                 marks=pytest.mark.slow),
 ])
 def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, embedded_path, world, preset, prompt, message):
     out = tmp_path / "bundle"
@@ -49,6 +52,7 @@ def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, embedded
     assert not out.exists() and list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_world_by_path(tmp_path, embedded_path):
     from grove_tui.paths import worlds_dir
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from grove_tui.bt.manifest import NODES
 from grove_tui.generation.pipeline import STAGES, world_reference
 from grove_tui.generation.presets import load_preset
@@ -39,6 +41,7 @@ def test_vanilla_offers_every_node_a_model_may_write():
     assert writable <= offered
 
 
+@pytest.mark.slow
 def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(hospital, retriever):
     prompt = "Ten patients queue at the pharmacy counter"
     preset, selection, req = request(hospital, retriever, "queuing", prompt)

@@ -52,6 +52,7 @@ def build(world, preset_name, retriever, prompt):
 CASES = [(w, p) for w in list_worlds() for p in SENTENCES]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", CASES)
 def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, preset_name, retriever):
     world = load_world(world_name)
@@ -102,6 +103,7 @@ def test_a_card_is_one_line_with_every_writable_port_and_no_automatic_one():
         assert card.endswith("Always. Never alone.")
 
 
+@pytest.mark.slow
 def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_them(retriever):
     hospital, office = load_world("hospital"), load_world("office")
     _, _, a = build(hospital, "queuing", retriever, "Ten patients queue at the pharmacy counter")

@@ -47,6 +47,7 @@ def small_node_db(tmp_path: Path) -> Path:
     return root
 
 
+@pytest.mark.slow
 def test_recall_at_8_on_the_labelled_set_is_at_least_095(fresh_retriever: NodeRetriever):
     result = evaluate(fresh_retriever, load_eval_set(), k=8)
     misses = [(case.prompt, missing) for case, _, missing in result.per_case if missing]
@@ -83,6 +84,7 @@ def test_results_are_sorted_and_typed(fresh_retriever: NodeRetriever):
     assert {"Queue", "GoTo"} <= {n for r in results for n in r.nodes}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("preset", ["emergency", "queuing", "normal", "vanilla"])
 def test_every_result_is_allowed_for_its_preset(fresh_retriever: NodeRetriever, preset: str):
     documents = fresh_retriever.database.by_name()
@@ -92,6 +94,7 @@ def test_every_result_is_allowed_for_its_preset(fresh_retriever: NodeRetriever, 
             assert preset in documents[item.name].presets, (preset, item.name)
 
 
+@pytest.mark.slow
 def test_emergency_offers_only_velocity_field_navigation(fresh_retriever: NodeRetriever):
     results = fresh_retriever.retrieve("visitors chat, wander around and follow the guide to the cafeteria", "emergency", k=20)
     used = {n for r in results for n in r.nodes}
@@ -99,6 +102,7 @@ def test_emergency_offers_only_velocity_field_navigation(fresh_retriever: NodeRe
     assert "FollowVelocityField" in used
 
 
+@pytest.mark.slow
 def test_queuing_prioritises_the_queue_subtree(fresh_retriever: NodeRetriever):
     neutral = "people in the hospital"
     queuing = [r.name for r in fresh_retriever.retrieve(neutral, "queuing", k=3)]
@@ -107,6 +111,7 @@ def test_queuing_prioritises_the_queue_subtree(fresh_retriever: NodeRetriever):
     assert "queue_at_counter" not in normal
 
 
+@pytest.mark.slow
 def test_a_preset_object_is_read_through_its_retrieval_filter(fresh_retriever: NodeRetriever):
     class PresetLike:
         name = "my-evacuation"
@@ -121,6 +126,7 @@ def test_unknown_preset_is_a_clear_error(fresh_retriever: NodeRetriever):
         fresh_retriever.retrieve("anything", "home")
 
 
+@pytest.mark.slow
 def test_no_preset_searches_everything(fresh_retriever: NodeRetriever):
     names = {r.name for r in fresh_retriever.retrieve("evacuate and queue and chat", None, k=100)}
     assert names == set(fresh_retriever.document_names(None))
@@ -150,6 +156,7 @@ def test_model_comes_from_the_installed_package():
     assert "site-packages" in str(model_dir) or "dist-packages" in str(model_dir)
 
 
+@pytest.mark.slow
 def test_index_is_reused_until_the_node_database_changes(small_node_db: Path, tmp_path: Path):
     index = tmp_path / "index"
     first = NodeRetriever(small_node_db, index).ensure_index()
@@ -163,6 +170,7 @@ def test_index_is_reused_until_the_node_database_changes(small_node_db: Path, tm
     assert changed.retrieve("people line up at the counter", "queuing", k=1)[0].name in ("Queue", "queue_at_counter")
 
 
+@pytest.mark.slow
 def test_a_corrupt_index_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path: Path):
     index = tmp_path / "index"
     index.mkdir()
@@ -173,6 +181,7 @@ def test_a_corrupt_index_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path
     assert {r.name for r in results} == {"FollowVelocityField", "evacuation_group"}
 
 
+@pytest.mark.slow
 def test_rebuilding_a_corrupt_index_leaves_other_retrievers_working(small_node_db: Path, tmp_path: Path,
                                                                    fresh_retriever: NodeRetriever):
     before = [r.name for r in fresh_retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)]
@@ -189,6 +198,7 @@ def test_rebuilding_a_corrupt_index_leaves_other_retrievers_working(small_node_d
     assert str(fresh_retriever.index_dir) in SharedSystemClient._identifier_to_system
 
 
+@pytest.mark.slow
 def test_a_foreign_collection_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path: Path):
     import chromadb
     from chromadb.config import Settings
@@ -233,6 +243,7 @@ def test_lexical_matching_is_stemmed_and_order_free():
     assert phrase_in_prompt(content_tokens("FollowVelocityField"), frozenset(content_tokens("use follow velocity fields")))
 
 
+@pytest.mark.slow
 def test_query_embeddings_match_document_embeddings():
     from grove_tui.generation.retrieval import embed_query, embed_texts
 
@@ -245,6 +256,7 @@ def test_query_embeddings_match_document_embeddings():
         assert float(np.abs(query - embed_texts([text])).max()) < 1e-4, text
 
 
+@pytest.mark.slow
 def test_two_processes_building_one_index_both_succeed(small_node_db: Path, tmp_path: Path):
     import subprocess
     import sys

@@ -6,10 +6,14 @@ small draft, so how many tokens an answer needs is known without trusting what t
 
 from __future__ import annotations
 
+import pytest
+
 from grove_tui.errors import ModelError
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.synthesis import SynthesisRequest, is_cut_off, synthesize
 from grove_tui.llm.grammar import gbnf_literal
+
+pytestmark = pytest.mark.slow  # every test here runs a real model
 
 # A grammar that allows exactly one draft of two groups, 79 characters. The vocabulary is single bytes
 # plus four two-byte merges ("Ġt", "ou", "ro", "es"), of which the answer can use at most four, so it

@@ -115,6 +115,7 @@ UNIT_SCHEMAS = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("index", range(len(UNIT_SCHEMAS)))
 def test_unit_grammars_compile_and_produce_strict_json(grammar_llm, index):
     grammar = schema_to_gbnf(UNIT_SCHEMAS[index])
@@ -139,6 +140,7 @@ def _preset_node_sets():
     return sets
 
 
+@pytest.mark.slow
 def test_every_preset_draft_grammar_compiles_and_parses(grammar_llm):
     """The grammar of every preset's full node set over every shipped world: llama.cpp compiles and samples it
     (random weights write long, varied drafts), and parse_draft accepts what it wrote."""
@@ -156,6 +158,7 @@ def test_every_preset_draft_grammar_compiles_and_parses(grammar_llm):
             assert draft.node_types() <= set(nodes) and draft.places() <= set(rois), (world_name, preset)
 
 
+@pytest.mark.slow
 def test_a_malformed_grammar_costs_one_worker_not_the_app(grammar_llm):
     """The reason only our own grammars are compiled: llama.cpp may die on a bad one, and only the worker goes."""
     with pytest.raises(ModelError):

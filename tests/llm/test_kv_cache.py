@@ -18,6 +18,8 @@ from helpers.tiny_qwen3 import build_tiny_qwen3
 from grove_tui.llm.grammar import schema_to_gbnf
 from grove_tui.llm.local import LocalLLM
 
+pytestmark = pytest.mark.slow  # every test here runs a real model
+
 # Longer than one batch (512) in the tiny model's byte-level vocabulary, so the prefix has two batches.
 SYSTEM = " ".join(f"Rule {i}: people walk from zone_{i} to zone_{i + 1} and queue at counter_{i}." for i in range(14))
 # A bounded answer, so every generation ends by itself; free text samples from nearly the whole vocabulary.

@@ -11,7 +11,8 @@ from grove_tui.llm.grammar import schema_to_gbnf
 from grove_tui.llm.local import LocalLLM
 from grove_tui.services.backend import LOWEST_PRIORITY, MODEL_NICENESS, EngineBackend
 
-pytestmark = pytest.mark.skipif(not hasattr(os, "setpriority"), reason="no process priorities on this platform")
+pytestmark = [pytest.mark.skipif(not hasattr(os, "setpriority"), reason="no process priorities on this platform"),
+              pytest.mark.slow]  # the model workers are real llama.cpp processes
 
 
 def backend_with(tiny_path, tmp_path, **kwargs):

@@ -8,7 +8,7 @@ from grove_tui.generation import retrieval
 from grove_tui.services.session import GroveSession, WarmUpStatus
 
 
-pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
+pytestmark = [pytest.mark.usefixtures("shared_index"), pytest.mark.slow]
 
 
 @pytest.fixture
