@@ -58,7 +58,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import yaml
 
-from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap, safe_file_name
 from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, prefix_node_ids,
                                        restrict_to_hunav_ports, wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
@@ -598,6 +598,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
                           + " (the names its agent manager compares the loader's `simulator` parameter with)",
                           hint="Pass --simulator \"Gazebo Classic\", \"Gazebo Fortress\", \"Isaac Sim\" or \"Webots\".")
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
+    refuse_overlap(out, bundle_dir, "the bundle being exported")
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
     scenario = load_scenario(bundle)

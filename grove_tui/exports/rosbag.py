@@ -51,7 +51,7 @@ from grove_tui.errors import RosbagExportError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.exports.scene import agent_radius, behavior_values, goal_radius, skin
-from grove_tui.files import atomic_directory, check_output_dir
+from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap
 from grove_tui.scenario.model import AgentSpec
 
 if TYPE_CHECKING:  # rosbags is the `ros` extra; the export imports it when it runs
@@ -507,6 +507,7 @@ def export_rosbag(bundle_dir: str | Path, out_dir: str | Path, *, storage: str =
     hunav_msgs(hunav_msgs_version)
     _rosbags()
     out = check_output_dir(out_dir, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite)
+    refuse_overlap(out, bundle_dir, "the bundle being exported")
     bundle = open_simulated_bundle(bundle_dir)
     store = ros_typestore(hunav_msgs_version)
     with atomic_directory(out, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite) as stage:

@@ -74,11 +74,14 @@ def test_export_trajectories_keeps_a_users_folder(simulated_copy, tmp_path):
     assert not (mine / "notes.md").exists()
 
 
-def test_export_trajectories_never_replaces_the_bundle_it_reads(simulated_copy):
+@pytest.mark.parametrize("kind", ["trajectories", "hunav", "rosbag"])
+def test_an_export_never_replaces_the_bundle_it_reads(simulated_copy, kind):
+    if kind == "rosbag":
+        pytest.importorskip("rosbags")
     before = listing(simulated_copy)
-    for extra in ([], ["--overwrite"]):
-        run = invoke(["export", "trajectories", simulated_copy, "--out", simulated_copy, *extra])
-        assert run.exit_code == EXIT_BAD_INPUT, run.output
+    for out in (simulated_copy, simulated_copy.parent):
+        run = invoke(["export", kind, simulated_copy, "--out", out, "--overwrite"])
+        assert run.exit_code == EXIT_BAD_INPUT and "the bundle being exported" in run.stderr, run.output
     assert listing(simulated_copy) == before
 
 
@@ -157,14 +160,14 @@ def test_a_bundle_file_named_like_the_bundles_own_is_refused(tmp_path):
     assert listing(bundle) == before
 
 
-def test_picture_keeps_a_users_image_and_replaces_its_own(bundle, tmp_path):
+def test_picture_keeps_a_users_image_and_replaces_its_own(simulated_copy, tmp_path):
     pytest.importorskip("matplotlib")
     photo = tmp_path / "figure.png"
     photo.write_bytes(b"\x89PNG\r\n\x1a\n a photo of the lab")
-    run = invoke(["picture", bundle, "--out", photo])
+    run = invoke(["picture", simulated_copy, "--out", photo])
     assert run.exit_code == EXIT_BAD_INPUT and "is not a picture GROVE drew" in run.stderr
     assert photo.read_bytes() == b"\x89PNG\r\n\x1a\n a photo of the lab"
     own = tmp_path / "own.svg"
-    assert invoke(["picture", bundle, "--out", own]).exit_code == 0
-    assert invoke(["picture", bundle, "--out", own]).exit_code == 0
-    assert invoke(["picture", bundle, "--out", photo, "--overwrite"]).exit_code == 0
+    assert invoke(["picture", simulated_copy, "--out", own]).exit_code == 0
+    assert invoke(["picture", simulated_copy, "--out", own]).exit_code == 0
+    assert invoke(["picture", simulated_copy, "--out", photo, "--overwrite"]).exit_code == 0

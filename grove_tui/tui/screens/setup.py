@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -100,7 +101,9 @@ shows its world, preset, prompt and seed.
         self._presets_listed = False
         self._queued = False  # Enter came before the lists: generate once they are in
         self._adopted: object = None  # the scenario whose choices the screen shows (on_screen_resume)
+        self._warm_step: tuple[str, float, float] | None = None  # (text, started, expected seconds)
         self.query_one("#prompt", PromptInput).focus()
+        self.set_interval(1.0, self._tick_warm_up, name="warm-up-eta")
         # Paint the screen first; the catalogue worker's imports would otherwise delay the first frame.
         self.call_after_refresh(self.load_catalogue)
 
@@ -197,8 +200,10 @@ shows its world, preset, prompt and seed.
                 # Everything long-lived is loaded now: freeze it before the user starts typing, so
                 # no later collection pauses the UI thread to walk it (tui/heap.py).
                 self.grove.frozen_heap = freeze_heap()
-            self.post_message(msg.ModelsChanged(backend.model_status(), loading=loading, embedder=embedder,
-                                                warm_up="" if status.step == "ready" and status.state == "done" else status.text))
+            self.post_message(msg.ModelsChanged(
+                backend.model_status(), loading=loading, embedder=embedder,
+                warm_up="" if status.step == "ready" and status.state == "done" else status.text,
+                expected_seconds=status.expected_seconds if status.state == "running" else 0.0))
 
         try:
             backend.warm_up(world, preset, on_status=report)
@@ -263,18 +268,34 @@ shows its world, preset, prompt and seed.
         problems = self.model_problems()
         if message.embedder not in ("", "loading", "ready"):
             problems.append(f"embedder: {message.embedder}")
+        # A running warm-up step counts down from what it took last time: progress from the first second.
+        self._warm_step = ((message.warm_up, time.monotonic(), message.expected_seconds)
+                           if message.warm_up and message.expected_seconds else None)
         if message.warm_up:
             lines.append(message.warm_up)  # a warm-up step still running (or failed)
         elif not problems and all(status.loaded for status in message.statuses) and message.embedder == "ready":
             lines.append("ready to generate")
+        self._model_lines = lines
         panel = self.query_one("#models", Static)
-        panel.update("\n".join(lines) or "no models found")
+        panel.update(self._models_text())
         panel.set_class(bool(problems), "-broken")
         panel.tooltip = "\n".join([f"{s.role}: {s.file}" for s in message.statuses] + problems)
         # The whole message, wrapped, under the status lines: "error: ?" alone does not say what to fix.
         shown = self.query_one("#model-problems", Static)
         shown.update("\n".join(problems))
         shown.display = bool(problems)
+
+    def _models_text(self) -> str:
+        lines = list(getattr(self, "_model_lines", []))
+        step = getattr(self, "_warm_step", None)
+        if step is not None and lines:
+            text, started, expected = step
+            lines[-1] = f"~{max(expected - (time.monotonic() - started), 0):.0f}s {text}"
+        return "\n".join(lines) or "no models found"
+
+    def _tick_warm_up(self) -> None:
+        if getattr(self, "_warm_step", None) is not None:
+            self.query_one("#models", Static).update(self._models_text(), layout=False)
 
     def model_problems(self) -> list[str]:
         """One line per role whose model is known to be broken, with the error's own message."""
