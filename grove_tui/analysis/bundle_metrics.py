@@ -4,18 +4,24 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, TypedDict
+
+import numpy as np
 
 from grove_tui.files import check_output_file, write_text_atomic
 from grove_tui.analysis.metrics import (MetricsReport, Trajectories, compute_metrics, compute_metrics_csv,
                                         iter_trajectory_chunks)
-from grove_tui.scenario.events import read_events
+from grove_tui.scenario.events import SimEvent, read_events
 from grove_tui.errors import MetricsError
 from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle_world, load_scenario
 from grove_tui.scenario.events import MAX_EVENTS_BYTES
 from grove_tui.scenario.model import Scenario
+
+if TYPE_CHECKING:
+    from grove_tui.analysis.hunav2_metrics import Hunav2Accumulator
+    from grove_tui.world.model import World
 
 TRAJECTORIES = "trajectories.csv"
 EVENTS = "events.jsonl"
@@ -57,7 +63,7 @@ def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsR
 _METRICS_GUARD: dict = dict(owned=lambda _path: True, what="metrics file")
 
 
-def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events: Sequence[Any]) -> MetricsReport:
+def scenario_metrics(scenario: Scenario, world: World, traj: Trajectories, events: Sequence[SimEvent]) -> MetricsReport:
     """metrics.json's report of a run held in memory: what the app's live counters show, so both always agree."""
     report = compute_metrics(traj, **metrics_options(scenario, world, events))
     accumulator = _hunav2_accumulator(scenario, world, traj.ids.size)
@@ -66,7 +72,7 @@ def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events:
     return report
 
 
-def _hunav2_accumulator(scenario: Scenario, world: Any, people: int):
+def _hunav2_accumulator(scenario: Scenario, world: World, people: int) -> Hunav2Accumulator:
     """HuNavSim 2.0's danger and surprise costs, beside the 1.0 set (analysis/hunav2_metrics.py); the line
     of sight runs over the map HuNavSim's evaluator gets, the grid without inflation."""
     from grove_tui.analysis.hunav2_metrics import Hunav2Accumulator
@@ -78,11 +84,24 @@ def _hunav2_accumulator(scenario: Scenario, world: Any, people: int):
                              person_radius=max(radii) if radii else 0.35)
 
 
-def metrics_options(scenario: Scenario, world: Any, events: Sequence[Any]) -> dict[str, Any]:
+class MetricsOptions(TypedDict):
+    """compute_metrics' keyword arguments that come from the scenario and the world, not the trajectories."""
+
+    walls: np.ndarray
+    robot_goal: tuple[float, float] | None
+    robot_radius: float
+    person_radius: float
+    final_goals: Mapping[int, tuple[float, float]]
+    events: Sequence[SimEvent]
+    walkable_area: float
+    groups: Mapping[int, int]
+
+
+def metrics_options(scenario: Scenario, world: World, events: Sequence[SimEvent]) -> MetricsOptions:
     """The scenario's side of the metrics: the same for the file on disk and the live run."""
     robot = scenario.robot
     radii = {a.radius for a in scenario.agents}
-    return dict(
+    return MetricsOptions(
         walls=world.walls(),
         robot_goal=None if robot is None else robot.goal,
         robot_radius=0.3 if robot is None else robot.radius,

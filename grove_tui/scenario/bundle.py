@@ -13,7 +13,7 @@ import json
 import os
 from collections.abc import Callable, Mapping
 from pathlib import Path, PurePosixPath
-from typing import Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from grove_tui.files import (absolute_path, atomic_directory, link_or_copy, protect_folders, relative_file,
                              write_files_atomic)
@@ -22,6 +22,9 @@ from grove_tui.limits import InputLimitError, check_regular_file, read_text_boun
 from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
 from grove_tui.scenario.model import Scenario, ScenarioError
 from grove_tui.navigation.velocity_field import MAX_FIELD_UNPACKED_BYTES, VelocityField
+
+if TYPE_CHECKING:
+    from grove_tui.world.model import World
 
 SCENARIO_FILE = "scenario.yaml"
 GRID_FILE = "grid.npz"
@@ -52,7 +55,27 @@ def is_bundle(path: Path) -> bool:
 protect_folders(is_bundle, OWN_NAMES, WHAT)
 
 
-def _member_files(result: Any) -> list[tuple[PurePosixPath, str]]:
+class BundleContents(Protocol):
+    """What a bundle is written from: generation's GenerationResult (scenario is below generation, so it
+    names the result by what it holds)."""
+
+    @property
+    def scenario(self) -> Scenario: ...
+
+    @property
+    def trees(self) -> Mapping[str, str]: ...  # bundle-relative path ("trees/agent_1.xml") -> BT XML
+
+    @property
+    def fields(self) -> Mapping[str, VelocityField]: ...
+
+    @property
+    def grid(self) -> OccupancyGrid: ...
+
+    @property
+    def report(self) -> Mapping[str, Any]: ...  # generation.json: JSON, written as it is
+
+
+def _member_files(result: BundleContents) -> list[tuple[PurePosixPath, str]]:
     """The trees (and any other text files) of a GenerationResult, each checked to be a plain relative
     path that names none of the bundle's fixed files."""
     checked = []
@@ -67,12 +90,12 @@ def _member_files(result: Any) -> list[tuple[PurePosixPath, str]]:
     return checked
 
 
-def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = False) -> Path:
+def write_bundle(result: BundleContents, out_dir: str | Path, overwrite: bool = False) -> Path:
     """Write a GenerationResult as a bundle; a reader sees the old bundle or the complete new one.
 
     An existing bundle at `out_dir` is replaced; any other non-empty folder only with `overwrite`.
     """
-    scenario: Scenario = result.scenario
+    scenario = result.scenario
     members = _member_files(result)
     # Absolute first: after `--out .` the process's own folder is replaced, so "." names the old one.
     target = absolute_path(out_dir)
@@ -201,14 +224,14 @@ def world_source(bundle_dir: str | Path, scenario: Scenario) -> str | Path:
     return reference
 
 
-def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> Any:
+def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> World:
     """The World a bundle plays in (see `world_source`)."""
     from grove_tui.world import load_world
 
     return load_world(world_source(bundle_dir, scenario))
 
 
-def load_report(bundle_dir: str | Path) -> dict[str, Any]:
+def load_report(bundle_dir: str | Path) -> dict[str, Any]:  # generation.json: JSON, read key by key by its users
     path = Path(bundle_dir) / REPORT_FILE
     try:
         return json.loads(path.read_text(encoding="utf-8"))

@@ -14,6 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+# generation.json's "grounding" entry and its parts as JSON holds them: to_dict writes them, from_dict reads them.
+JsonDict = dict[str, Any]
 OK_MARK = "✓"
 FAIL_MARK = "✗"
 CHECKED_FIELDS = ("count", "start", "destination", "behavior", "robot reaction")
@@ -29,11 +31,11 @@ class GroundingCheck:
     ok: bool
     reason: str = ""
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JsonDict:
         return {"field": self.field, "asked": self.asked, "does": self.does, "ok": self.ok, "reason": self.reason}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroundingCheck:
+    def from_dict(cls, data: JsonDict) -> GroundingCheck:
         return cls(str(data["field"]), str(data["asked"]), str(data["does"]), bool(data["ok"]),
                    str(data.get("reason", "")))
 
@@ -49,12 +51,12 @@ class GroupGrounding:
     def ok(self) -> bool:
         return all(c.ok for c in self.checks)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JsonDict:
         return {"who": self.who, "label": self.label, "ok": self.ok, "members": list(self.members),
                 "checks": [c.to_dict() for c in self.checks]}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupGrounding:
+    def from_dict(cls, data: JsonDict) -> GroupGrounding:
         return cls(str(data["who"]), str(data["label"]), tuple(GroundingCheck.from_dict(c) for c in data["checks"]),
                    tuple(int(m) for m in data.get("members", ())))
 
@@ -73,13 +75,13 @@ class GroundingReport:
     def ok(self) -> bool:
         return all(g.ok for g in self.groups) and not self.unhonoured
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JsonDict:
         return {"prompt": self.prompt, "ok": self.ok, "groups": [g.to_dict() for g in self.groups],
                 "unhonoured": list(self.unhonoured), "repairs": list(self.repairs),
                 "corrections": list(self.corrections)}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroundingReport:
+    def from_dict(cls, data: JsonDict) -> GroundingReport:
         return cls(str(data.get("prompt", "")), tuple(GroupGrounding.from_dict(g) for g in data.get("groups", ())),
                    tuple(str(u) for u in data.get("unhonoured", ())), tuple(str(r) for r in data.get("repairs", ())),
                    tuple(str(c) for c in data.get("corrections", ())))

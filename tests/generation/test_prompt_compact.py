@@ -17,7 +17,6 @@ from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
 from grove_tui.generation.pipeline import quantities_from_reading
 from grove_tui.generation.presets import load_preset
-from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import fixed_system_message, pinned_cards, prepare_request
 from grove_tui.language.reading import read_prompt
@@ -30,11 +29,6 @@ SENTENCES = {
     "normal": "Three visitors walk from the {zone} to the {other}",
     "emergency": "A fire alarm: ten people in the {zone} evacuate",
 }
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
 
 
 def _places(world):
@@ -59,6 +53,7 @@ def build(world, preset_name, retriever, prompt):
 CASES = [(w, p) for w in list_worlds() for p in SENTENCES]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", CASES)
 def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, preset_name, retriever):
     world = load_world(world_name)
@@ -112,6 +107,7 @@ def test_a_card_is_one_line_with_every_writable_port_and_no_automatic_one():
         assert card.endswith("Always. Never alone.")
 
 
+@pytest.mark.slow
 def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_them(retriever):
     hospital, office = load_world("hospital"), load_world("office")
     _, _, a = build(hospital, "queuing", retriever, "Ten patients queue at the pharmacy counter")

@@ -16,18 +16,12 @@ from grove_tui.generation.reconcile import grounding_report, is_idle, reconcile
 from grove_tui.generation.rois import select_rois
 from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
-from grove_tui.paths import worlds_dir
 from grove_tui.scenario.report import GroundingReport
-from grove_tui.world.loader import load_world
 
 
 @pytest.fixture(scope="module")
-def hospital():
-    return load_world(worlds_dir() / "hospital.yaml")
-
-
-@pytest.fixture(scope="module")
-def grid(hospital):
+def coarse_grid(hospital):
+    """The hospital at 20 cm cells: the repairs checked here do not depend on finer ones."""
     return build_grid(hospital, resolution=0.2, inflation=0.35)
 
 
@@ -117,13 +111,13 @@ def test_structured_counts_become_parties(hospital):
     "Evacuate the pharmacy: twenty people leave by the main entrance and one of them follows the robot.",
     "Nobody is here except one guard who waits on the bench for five minutes.",
 ])
-def test_postprocessed_scenario_grounds_every_group(hospital, grid, prompt):
+def test_postprocessed_scenario_grounds_every_group(hospital, coarse_grid, prompt):
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
     selection = select_rois(hospital, preset, prompt, reading=reading)
     # The weakest draft: one idle group with a node name for a label.
     draft = Draft((DraftGroup("FollowAgent", 1, "entrance_lobby", DraftNode("IsRobotVisible", {})),))
-    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("GoTo", "Queue"), reading=reading)
+    post = postprocess(hospital, coarse_grid, preset, draft, [], selection, 0, prompt, ("GoTo", "Queue"), reading=reading)
     assert all(not is_idle(g.tree) for g in post.groups)
     assert all(g.label not in ("FollowAgent",) for g in post.groups)
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
@@ -136,12 +130,12 @@ def test_postprocessed_scenario_grounds_every_group(hospital, grid, prompt):
             assert all(a.behavior == reading_group.robot_reaction for a in post.agents if a.group_index == g.index)
 
 
-def test_the_report_says_what_was_not_honoured(hospital, grid):
+def test_the_report_says_what_was_not_honoured(hospital, coarse_grid):
     prompt = "Six visitors walk to the cafeteria."
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
     selection = select_rois(hospital, preset, prompt, reading=reading)
-    post = postprocess(hospital, grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
+    post = postprocess(hospital, coarse_grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
                        [], selection, 0, prompt, ("GoTo",), reading=reading)
     post.groups[0].tree = goto("pharmacy")  # as if something downstream had sent them elsewhere
     post.groups[0].count = 4
@@ -159,27 +153,27 @@ def test_wandering_at_the_destination_is_kept_after_walking_there(hospital):
     assert any("walks to ward_a before" in n for n in notes)
 
 
-def test_without_a_group_read_from_the_sentence_the_report_says_the_groups_are_guessed(hospital, grid):
+def test_without_a_group_read_from_the_sentence_the_report_says_the_groups_are_guessed(hospital, coarse_grid):
     prompt = "The cafeteria gets busy around noon."
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
     assert reading.groups == ()
     selection = select_rois(hospital, preset, prompt, reading=reading)
     draft = Draft((DraftGroup("diners", 5, "cafeteria", goto("cafeteria")),))
-    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("GoTo",), reading=reading)
+    post = postprocess(hospital, coarse_grid, preset, draft, [], selection, 0, prompt, ("GoTo",), reading=reading)
     assert any("no group of people" in note for note in post.notes)
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
     assert report.groups == () and not report.ok
     assert any("the model's guess" in line for line in report.unhonoured)
 
 
-def test_the_report_carries_the_place_spelling_corrections(hospital, grid):
+def test_the_report_carries_the_place_spelling_corrections(hospital, coarse_grid):
     prompt = "Six visitors walk to the cafetaria."
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
     assert reading.groups[0].destination == "cafeteria" and reading.corrections
     selection = select_rois(hospital, preset, prompt, reading=reading)
-    post = postprocess(hospital, grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
+    post = postprocess(hospital, coarse_grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
                        [], selection, 0, prompt, ("GoTo",), reading=reading)
     report = grounding_report(reading, post.groups, post.agents, hospital)
     assert report.corrections == reading.corrections and report.ok, report.lines()
@@ -187,7 +181,7 @@ def test_the_report_carries_the_place_spelling_corrections(hospital, grid):
     assert GroundingReport.from_dict(report.to_dict()) == report
 
 
-def test_walking_out_with_no_destination_is_honoured_by_the_evacuation_field(hospital, grid):
+def test_walking_out_with_no_destination_is_honoured_by_the_evacuation_field(hospital, coarse_grid):
     # In an emergency every mover follows the field to the nearest exit; a sentence that says they
     # walk ("get out", "leave") and names no destination is then played as it asks.
     prompt = "Four visitors in the cafeteria get out of the building."
@@ -196,7 +190,7 @@ def test_walking_out_with_no_destination_is_honoured_by_the_evacuation_field(hos
     assert reading.groups[0].intent == "walk" and not reading.groups[0].destination
     selection = select_rois(hospital, preset, prompt, reading=reading)
     draft = Draft((DraftGroup("visitors", 4, "cafeteria", DraftNode("FollowVelocityField", {})),))
-    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("FollowVelocityField",),
+    post = postprocess(hospital, coarse_grid, preset, draft, [], selection, 0, prompt, ("FollowVelocityField",),
                        reading=reading)
     assert any(n.node == "FollowVelocityField" for n in post.groups[0].tree.walk())
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)

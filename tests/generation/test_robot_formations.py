@@ -8,7 +8,6 @@ that the predicted queue is where the simulated people really stand.
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from helpers.clinic import QUEUE, make_result
 
 from grove_tui.bt.xml import read_tree
@@ -34,11 +33,6 @@ QUEUE_PROMPT = "six patients queue at the pharmacy counter"
 CHAT_PROMPT = "four friends chat in the cafeteria"
 # The robot's body plus the margin it keeps, less one grid cell: Theta* corners are cell centres.
 CLEARANCE = RobotSpec((0.0, 0.0), (0.0, 0.0)).radius + PASSING_MARGIN - 0.1
-
-
-@pytest.fixture(scope="module")
-def grid(clinic):
-    return build_grid(clinic)
 
 
 def post_processed(clinic, grid, preset_name, prompt, group):

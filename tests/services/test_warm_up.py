@@ -2,19 +2,13 @@
 
 from __future__ import annotations
 
-import os
-
 import pytest
 
 from grove_tui.generation import retrieval
 from grove_tui.services.session import GroveSession, WarmUpStatus
 
 
-@pytest.fixture(autouse=True)
-def shared_index(monkeypatch):
-    # The retrieval index is built once per machine; reuse the suite's when it has one.
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+pytestmark = [pytest.mark.usefixtures("shared_index"), pytest.mark.slow]
 
 
 @pytest.fixture
