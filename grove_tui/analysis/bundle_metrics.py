@@ -20,23 +20,53 @@ EVENTS = "events.jsonl"
 METRICS = "metrics.json"
 
 
-def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsReport, Path]:
+def bundle_metrics(bundle_dir: str | Path, write: bool = True, outcomes: bool = False) -> tuple[MetricsReport, Path]:
+    """metrics.json of a simulated bundle. With `outcomes`, the grounding report's claims are checked
+    on the same pass over the trajectories (analysis/outcomes.py) and written as grounding.json
+    (when the bundle has a planned report)."""
     bundle = Path(bundle_dir)
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
+    world = load_world(_world_reference(scenario.world, bundle))
     events_path = bundle / EVENTS
     events = read_events(events_path) if events_path.exists() else []
     # Streamed a block of frames at a time: a long run's CSV is never held in memory whole.
     report = compute_metrics_csv(bundle / TRAJECTORIES, **metrics_options(scenario, world, events))
     ids, _groups, chunks = iter_trajectory_chunks(bundle / TRAJECTORIES)
     accumulator = _hunav2_accumulator(scenario, world, len(ids))
+    checker = _outcome_checker(bundle, scenario, world, ids) if outcomes else None
     for chunk in chunks:
         accumulator.add(chunk)
+        if checker is not None:
+            checker.add(chunk)
     report.robot.update(accumulator.result())
     path = bundle / METRICS
     if write:
         write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
+        if checker is not None:
+            from grove_tui.analysis.outcomes import GROUNDING_FILE
+
+            checked = checker.result(events)
+            write_text_atomic(bundle / GROUNDING_FILE,
+                              json.dumps(checked.to_dict(), indent=2, ensure_ascii=False) + "\n")
     return report, path
+
+
+def _outcome_checker(bundle: Path, scenario: Scenario, world: Any, ids: Any) -> Any:
+    from grove_tui.analysis.outcomes import OutcomeChecker, planned_report
+    from grove_tui.scenario.bundle import REPORT_FILE, load_report
+
+    planned = planned_report(load_report(bundle)) if (bundle / REPORT_FILE).is_file() else None
+    if planned is None:
+        return None
+    checker = OutcomeChecker(planned, scenario, world)
+    checker.set_ids(ids)
+    return checker
+
+
+def _world_reference(reference: str, bundle: Path) -> str:
+    """A scenario's world as load_world takes it: a world file kept in the bundle, or a name."""
+    candidate = bundle / reference
+    return str(candidate) if candidate.suffix in (".yaml", ".yml") and candidate.exists() else reference
 
 
 def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events: Sequence[Any]) -> MetricsReport:

@@ -93,6 +93,7 @@ class PlanInputs:
     selection: Any  # rois.RoISelection
     node_names: tuple[str, ...]
     reading: PromptReading | None = None  # the prompt's groups; when it has any, they are the result's groups
+    sentence: PromptReading | None = None  # the reading before the user's count edits (None: no edit yet)
 
     def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
         if self.reading is not None and self.reading.groups:
@@ -105,7 +106,8 @@ class PlanInputs:
                 value = int(n) + inside  # a parent's count includes its subsets ("one of them")
                 groups[r] = replace(groups[r], count=Count("exact", value, value, value))
             reading = replace(self.reading, groups=tuple(groups))
-            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)))
+            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)),
+                           sentence=self.sentence or self.reading)
         if self.quantities:
             # An edited count is stated by the user now, even where the prompt only implied the group.
             quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
@@ -363,7 +365,7 @@ class GenerationPipeline:
 
         t0 = clock.begin("planning")
         plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
-                                cache=self.plan_cache, cancel=cancel)
+                                cache=self.plan_cache, cancel=cancel, reading=inputs.reading)
         for rel, xml in plan.trees.items():
             try:
                 parse_tree_text(xml, rel)
@@ -389,6 +391,8 @@ class GenerationPipeline:
         report["notes"] = post.notes + plan.notes
         if inputs.reading is not None:
             report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
-                                                   post.notes).to_dict()
+                                                   post.notes + plan.notes, robot=plan.robot,
+                                                   sentence=inputs.sentence or inputs.reading,
+                                                   walking_speed=self.preset.max_vel).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

@@ -89,6 +89,10 @@ class GroupPlan:
     # zone -> people, when an evacuation group the sentence places nowhere is too large for one zone
     # and starts spread over the building (_spread_unplaced_evacuees); empty: everyone in `spawn`.
     spawn_zones: dict[str, int] = field(default_factory=dict)
+    added: list[str] = field(default_factory=list)  # what its tree does beyond the reading, in words
+    # Its whole activity is reacting to the robot and the sentence places it nowhere: planning starts
+    # it where the robot passes (generation/planning.py, place_robot_reactors).
+    reacts_only: bool = False
 
 
 @dataclass
@@ -819,13 +823,18 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
     if reading is not None and reading.groups:
         groups = [GroupPlan(i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
-                            reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor)
+                            reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor,
+                            added=list(r.added),
+                            reacts_only=r.reacts_only and not reading.groups[r.reading_index].start)
                   for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
                                                   evacuation_field=preset.velocity == "field"))]
         if not groups:
             raise GenerationError("the prompt's groups leave nobody in the scenario")
         for g in groups:
-            g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
+            # The preset's evacuation is for those the sentence evacuates: a guard who waits by the
+            # door during a drill waits (nothing unasked).
+            if g.reading_index is not None and reading.groups[g.reading_index].intent == "evacuate":
+                g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
     else:
         # The older clause rules run only here, where no reading or no group of it exists; where the
         # reader found groups (above) nothing of them second-guesses it.
@@ -873,7 +882,7 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                 sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
                 notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
             sfm_groups += len(parties)
-        if preset.velocity == "field":
+        if preset.velocity == "field" and "FollowVelocityField" in node_types:
             g.field_id = f"group_{g.index + 1}"  # the group's first field; per exit below when it splits
         first = 0
         for zone, size, k in _spawn_chunks(g, parties):

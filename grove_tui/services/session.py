@@ -480,7 +480,8 @@ class GroveSession:
         def write_run(stage: Path) -> None:
             recorder.write_csv(stage / "trajectories.csv")
             write_events(stage / "events.jsonl", sim.events)
-            reports.append(bundle_metrics(stage)[0])
+            # metrics.json and grounding.json (the sentence's claims checked on this run) in one pass
+            reports.append(bundle_metrics(stage, outcomes=True)[0])
 
         replace_run_outputs(bundle, write_run)
         crowd = reports[0].crowd
