@@ -727,7 +727,8 @@ class _RobotAvoidProbe(_RobotProbe):
     def __init__(self, *args: Any) -> None:
         super().__init__(*args)
         m = self.cols.size
-        self.away = np.zeros(m)  # metres moved away from the robot while it was near
+        self.away = np.zeros(m)  # net metres moved away from the robot while it was near, so far
+        self.best = np.zeros(m)  # the most that net ever was: stepping away and coming back is avoiding it
         self.near = np.zeros(m)
         self.closest = np.full(m, np.inf)
         self.last = np.full((m, 2), np.nan)
@@ -747,7 +748,9 @@ class _RobotAvoidProbe(_RobotProbe):
         near = np.isfinite(dist) & (dist <= AVOID_NEAR) & (dist > 1e-6)
         move = pos - prev
         radial = np.where(near, (move[..., 0] * rel[..., 0] + move[..., 1] * rel[..., 1]) / np.where(near, dist, 1.0), 0.0)
-        self.away += np.where(np.isfinite(radial), radial, 0.0).sum(axis=0)
+        running = self.away[None, :] + np.cumsum(np.where(np.isfinite(radial), radial, 0.0), axis=0)
+        self.best = np.maximum(self.best, running.max(axis=0))
+        self.away = running[-1]
         self.near += near.sum(axis=0)
         now = np.hypot(pos[..., 0] - robot[:, 0:1], pos[..., 1] - robot[:, 1:2])
         self.closest = np.fmin(self.closest, np.nanmin(np.where(np.isfinite(now), now, np.inf), axis=0))
@@ -760,13 +763,13 @@ class _RobotAvoidProbe(_RobotProbe):
             return self.no_robot()
         n = self.members
         came = self.near > 0
-        ok = came & (self.away >= AVOID_MOVED)
+        ok = came & (self.best >= AVOID_MOVED)
         k = int(ok.sum())
         if not came.any():
             closest = float(self.closest.min()) if self.closest.size else math.inf
             return FAILS, f"the robot never came within {AVOID_NEAR:g} m of them (closest {closest:.1f} m)"
         text = (f"{k}/{int(came.sum())} moved away when it came within {AVOID_NEAR:g} m "
-                f"({float(self.away[came].mean()):.1f} m on average; closest {float(self.closest[came].min()):.1f} m)")
+                f"({float(self.best[came].mean()):.1f} m on average; closest {float(self.closest[came].min()):.1f} m)")
         return (HOLDS if k >= _need(self.claim, int(came.sum())) else FAILS), text
 
 

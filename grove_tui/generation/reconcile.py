@@ -545,6 +545,14 @@ def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequ
                            tuple(reading.corrections), robot_row, tuple(dict.fromkeys(questions)))
 
 
+def reading_questions(reading: PromptReading) -> list[str]:
+    """Every question about the fields the reader was unsure of, groups first, then the robot."""
+    out = [question(g.who, g, c) for g in reading.groups for c in g.confidence if c.unsure]
+    if reading.robot is not None:
+        out += [question("the robot", reading.robot, c) for c in reading.robot.confidence if c.unsure]
+    return list(dict.fromkeys(out))
+
+
 def question(who: str, subject: GroupReading | RobotReading, confidence: FieldConfidence) -> str:
     """The question the app asks (and `--strict` refuses with) for an unsure field."""
     value = getattr(subject, confidence.field, None) if confidence.field != "group" else who

@@ -209,6 +209,17 @@ class GroveSession:
             raise PromptError("the prompt is empty: describe the people and what they do")
         return self.load_world(request.world), self.load_preset(request.preset)
 
+    def unsure(self, request: ScenarioRequest) -> list[str]:
+        """Questions about what the reader is unsure of in the request's sentence ("'the big meeting
+        room' start: boardroom or meeting_room?"), before any model loads; [] when it is sure of all.
+
+        The app asks them before generating; `grove generate --strict` refuses with them."""
+        from grove_tui.generation.reconcile import reading_questions
+        from grove_tui.language.reading import read_prompt
+
+        world, _preset = self.check_request(request)
+        return reading_questions(read_prompt(" ".join(request.prompt.split()), world, seed=request.seed))
+
     # models ---------------------------------------------------------------------------------------------
     @property
     def model_options(self) -> tuple[str | None, str | None, str | None]:

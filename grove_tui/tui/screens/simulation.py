@@ -28,6 +28,7 @@ from grove_tui.tui.widgets.map_legend import MapLegend
 from grove_tui.tui.widgets.map_raster import rasterise_agents
 from grove_tui.tui.widgets.map_view import MapView
 from grove_tui.tui.widgets.footer import Footer
+from grove_tui.tui.widgets.grounding import GroundingPanel
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
@@ -55,6 +56,7 @@ METRICS_INTERVAL = 1.0  # seconds between recomputations of the counters (they r
 # counters take at most 1 / (1 + METRICS_DUTY) of the time the frames need (the panel says "to t = ...").
 METRICS_DUTY = 4.0
 METRICS_ROWS_TIMEOUT = 10.0
+GROUNDING_INTERVAL = 2.0  # seconds between checks of the grounding report on the run so far
 
 
 def speed_label(speed: float) -> str:
@@ -117,7 +119,8 @@ The Social Force crowd runs off the UI thread; the map shows every agent and the
 **space** play/pause, **n** one step, **[ ]** slower/faster (0.25x to 8x), **f** as fast as
 possible, **a**/**A** select the next/previous agent (its tree shows the live status of every
 node), arrows drive the robot, **r** back to its path, **c** colour by group or behavior,
-**e** exports bundle, trajectories and metrics.
+**e** exports bundle, trajectories and metrics, **g** shows the grounding report checked on the
+run so far (every few seconds; it opens by itself once every claim is decided).
 """
 
     BINDINGS = [
@@ -131,6 +134,8 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         Binding("r", "follow_path", "Robot", id="sim.robot_path", tooltip="Robot follows its planned path"),
         Binding("c", "colour_mode", "Colours", show=False, id="sim.colours", tooltip="Colour by group or behavior"),
         Binding("e", "export", "Export", id="sim.export", tooltip="Export bundle, trajectories and metrics"),
+        Binding("g", "toggle_grounding", "Grounding", show=False, id="sim.grounding",
+                tooltip="The sentence's claims checked on the run so far"),
         Binding("escape", "back", "Back", id="sim.back", tooltip="Back to inspect"),
     ]
 
@@ -158,6 +163,13 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self._metrics_busy = False
         self._metrics_started = 0.0  # time.monotonic() of the running recomputation
         self._metrics_not_before = 0.0  # no recomputation starts before this time.monotonic()
+        # The grounding report checked on the run as it plays: one checker fed the new frames each time.
+        self._checker: Any = None
+        self._checker_frames = 0
+        self._grounding_busy = False
+        self._grounding_shown_once = False
+        self._grounding_step = -1
+        self.grounding: Any = None  # the latest checked report (scenario.report.GroundingReport)
 
     @property
     def grove(self) -> GroveApp:
@@ -182,6 +194,9 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
                 tree = BTTree("agent", id="sim-tree")
                 tree.border_title = "Agent tree (a: select)"
                 yield tree
+                grounding = GroundingPanel(self.generated.result.report, id="sim-grounding")
+                grounding.display = False
+                yield grounding
         yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
@@ -202,6 +217,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self.start_simulation()
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
         self.set_interval(METRICS_INTERVAL, self.refresh_metrics, name="sim-metrics")
+        self.set_interval(GROUNDING_INTERVAL, self.refresh_grounding, name="sim-grounding")
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
         return [
@@ -211,6 +227,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
             ("Select next agent", "Show the next agent's live tree", lambda: self.action_select(1)),
             ("Robot follows its path", "Stop driving the robot by hand", self.action_follow_path),
             ("Export", "Bundle, trajectories and metrics", self.action_export),
+            ("Grounding report", "The sentence's claims checked on the run so far", self.action_toggle_grounding),
         ]
 
     # the simulation worker --------------------------------------------------------------------------
@@ -392,6 +409,76 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
             return
         self.metrics, self.metrics_step = message.values, message.step
         counters.update(metrics_text(message.values, message.t, counters.content_size.width))
+
+    # the grounding report checked on the run so far, off the UI thread -----------------------------
+    def refresh_grounding(self) -> None:
+        controller = self.controller
+        if controller is None or controller.latest is None or self._grounding_busy or self.exporting:
+            return
+        step = controller.latest.frame.step
+        if step == self._grounding_step:
+            return  # paused: nothing new to check
+        self._grounding_step = step
+        self._grounding_busy = True
+        self.check_grounding(controller)
+
+    @work(thread=True, exclusive=True, group="grounding", exit_on_error=False, description="checking the claims")
+    def check_grounding(self, controller: SimulationController) -> None:
+        import threading
+
+        taken: dict[str, Any] = {}
+        done = threading.Event()
+
+        def take(simulation: Any) -> None:
+            taken["rows"] = simulation.recorder.to_array()
+            taken["events"] = list(simulation.events)
+
+        def reply(result: Any) -> None:
+            taken["error"] = result if isinstance(result, Exception) else None
+            done.set()
+
+        try:
+            if self._checker is None:
+                self._checker = self.grove.backend.outcome_checker(self.generated)
+            if self._checker is None:
+                self.post_message(msg.GroundingChecked(None))
+                return
+            controller.send("call", take, reply)
+            if not done.wait(METRICS_ROWS_TIMEOUT) or taken.get("error") is not None:
+                raise RuntimeError(f"cannot read the run: {taken.get('error') or 'the simulation did not answer'}")
+            report, self._checker_frames = self.grove.backend.check_run_rows(
+                self._checker, taken["rows"], taken["events"], self._checker_frames)
+        except Exception as exc:  # a check bug must show in the panel, not stop the simulation
+            self.post_message(msg.GroundingChecked(None, f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(msg.GroundingChecked(report))
+
+    def on_grounding_checked(self, message: msg.GroundingChecked) -> None:
+        self._grounding_busy = False
+        panel = self.query_one("#sim-grounding", GroundingPanel)
+        if message.report is None:
+            if message.error:
+                panel.border_title = f"Grounding ✗ {message.error}"
+            return
+        self.grounding = message.report
+        panel.show(message.report)
+        decided = all(c.status in ("holds", "fails") for g in message.report.groups for c in g.claims)
+        if decided and message.report.groups and not self._grounding_shown_once:
+            # every claim is decided: the checked report is the run's result, show it
+            self._grounding_shown_once = True
+            if not panel.display:
+                self.action_toggle_grounding()
+            self.notify(message.report.summary(), title="Grounding checked", timeout=6)
+
+    def action_toggle_grounding(self) -> None:
+        panel = self.query_one("#sim-grounding", GroundingPanel)
+        show = not panel.display
+        panel.display = show
+        self.query_one("#sim-tree", BTTree).display = not show
+        self.query_one("#sim-side").set_class(show, "-grounding")
+        if show:
+            self._grounding_step = -1
+            self.refresh_grounding()
 
     # actions ---------------------------------------------------------------------------------------
     def _send(self, *command: Any) -> None:
