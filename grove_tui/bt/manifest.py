@@ -26,7 +26,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Any
-from xml.sax.saxutils import escape, quoteattr
+from lxml import etree
+
+from grove_tui.limits import MAX_COORDINATE
 
 CATEGORIES = ("control", "decorator", "action", "condition")
 PORT_TYPES = ("int", "float", "bool", "string", "target", "agent", "agents", "point_list")
@@ -142,9 +144,9 @@ def _target(name="target", what="Region of interest to go to") -> PortSpec:
 def _xy() -> tuple[PortSpec, PortSpec]:
     return (
         _in("x", "float", None, "Resolved x of the target point in metres (post-processing).", auto=True,
-            min=-1e4, max=1e4),
+            min=-MAX_COORDINATE, max=MAX_COORDINATE),
         _in("y", "float", None, "Resolved y of the target point in metres (post-processing).", auto=True,
-            min=-1e4, max=1e4),
+            min=-MAX_COORDINATE, max=MAX_COORDINATE),
     )
 
 
@@ -374,8 +376,10 @@ _node("IsAgentClose", "condition", (
 _node("IsAtPosition", "condition", (
     _agent_id(),
     _in("goal_id", "int", None, "Id of a global goal (HuNavSim 2.0) to compare with.", auto=True, min=1, max=100000),
-    _in("target_x", "float", None, "x of the position (HuNavSim d5b716b variant).", auto=True, min=-1e4, max=1e4),
-    _in("target_y", "float", None, "y of the position (HuNavSim d5b716b variant).", auto=True, min=-1e4, max=1e4),
+    _in("target_x", "float", None, "x of the position (HuNavSim d5b716b variant).", auto=True,
+        min=-MAX_COORDINATE, max=MAX_COORDINATE),
+    _in("target_y", "float", None, "y of the position (HuNavSim d5b716b variant).", auto=True,
+        min=-MAX_COORDINATE, max=MAX_COORDINATE),
     _in("tolerance", "float", 0.1, "Distance in metres.", min=0.0, max=10.0),
 ), """
     Succeeds when the agent stands within tolerance of a global goal (goal_id) or of target_x/target_y.
@@ -750,22 +754,24 @@ def _default_text(port: PortSpec) -> str | None:
 def treenodes_model_xml(renamed: dict[str, str] | None = None) -> str:
     """The manifest as a Groot2 TreeNodesModel (BT.CPP v4); built-in control nodes are omitted.
 
-    `renamed` gives some nodes another ID (the HuNavSim export keeps GROVE nodes as Grove<Node>)."""
+    `renamed` gives some nodes another ID (the HuNavSim export keeps GROVE nodes as Grove<Node>).
+    Built as an lxml tree, so every ID, port name, default and description is escaped by the writer."""
     renamed = renamed or {}
     tag = {"control": "Control", "decorator": "Decorator", "action": "Action", "condition": "Condition"}
-    lines = ['<?xml version="1.0" encoding="UTF-8"?>', '<root BTCPP_format="4">', "  <TreeNodesModel>"]
+    root = etree.Element("root", BTCPP_format="4")
+    model = etree.SubElement(root, "TreeNodesModel")
     for spec in NODES.values():
         if spec.origin == "btcpp":
             continue
-        lines.append(f"    <{tag[spec.category]} ID={quoteattr(renamed.get(spec.name, spec.name))}>")
+        node = etree.SubElement(model, tag[spec.category], ID=renamed.get(spec.name, spec.name))
         for port in spec.ports:
             kind = "input_port" if port.direction == "in" else "output_port"
-            attrs = f"name={quoteattr(port.name)} type={quoteattr(_BTCPP_TYPE[port.type])}"
+            element = etree.SubElement(node, kind, name=port.name, type=_BTCPP_TYPE[port.type])
             default = _default_text(port)
             if default is not None:
-                attrs += f" default={quoteattr(default)}"
-            lines.append(f"      <{kind} {attrs}>{escape(port.description)}</{kind}>")
-        lines.append(f"      <MetadataFields><Metadata description={quoteattr(spec.description)}/></MetadataFields>")
-        lines.append(f"    </{tag[spec.category]}>")
-    lines += ["  </TreeNodesModel>", "</root>", ""]
-    return "\n".join(lines)
+                element.set("default", default)
+            element.text = port.description
+        metadata = etree.SubElement(node, "MetadataFields")
+        etree.SubElement(metadata, "Metadata", description=spec.description)
+    etree.indent(root, space="  ")
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + etree.tostring(root, encoding="unicode", pretty_print=True)

@@ -558,7 +558,8 @@ def question(who: str, subject: GroupReading | RobotReading, confidence: FieldCo
     value = getattr(subject, confidence.field, None) if confidence.field != "group" else who
     if hasattr(value, "value"):
         value = getattr(value, "value")
-    choices = [str(v) for v in (value,) if v not in (None, "")] + [a for a in confidence.alternatives if a != value]
+    choices = list(dict.fromkeys([str(v) for v in (value,) if v not in (None, "")]
+                                 + [str(a) for a in confidence.alternatives]))
     what = f"'{who}' {confidence.field}" if confidence.field != "group" else f"'{who}'"
     text = f"{what}: {' or '.join(choices)}?" if choices else f"{what}?"
     return text + (f" ({confidence.reason})" if confidence.reason else "")

@@ -80,6 +80,21 @@ class Frame:
     counters: CounterSnapshot
 
 
+@dataclass(frozen=True)
+class RunState:
+    """Where the people of a run stand: how many it has, how many have left it (evacuated, out of the
+    building) and how many are out or have finished their tree. Nothing is left to happen to the
+    people once `over` (a HuNavSim looping tree never finishes: its agent keeps a run going)."""
+
+    agents: int
+    out: int
+    done: int
+
+    @property
+    def over(self) -> bool:
+        return self.agents > 0 and self.done == self.agents
+
+
 def _frozen(a: np.ndarray) -> np.ndarray:
     a = np.array(a, copy=True)
     a.setflags(write=False)
@@ -137,14 +152,11 @@ class Simulation:
         `params`: the pedestrian model's SFMParams (default: the "grove" model)."""
         from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
-        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
-        from grove_tui.world import load_world
+        from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, read_bundle_text
 
         bundle_dir = Path(bundle_dir)
         if world is None:
-            world_ref = scenario.world
-            candidate = bundle_dir / world_ref
-            world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
+            world = load_bundle_world(bundle_dir, scenario)
         grid_path = bundle_dir / "grid.npz"
         # a bundle without its grid: inflate by the people's largest radius, as generation did
         grid = (load_grid(bundle_dir) if os.path.lexists(grid_path)
@@ -237,6 +249,10 @@ class Simulation:
             self.crowd.step(1)
             self.step_count += 1
             self.clock.now = self.crowd.time
+            # Every step, not every tick: whoever stepped over the building's outline (an exit's door
+            # line) leaves before the frame is recorded, so trajectories end at the door line and stay
+            # inside the walkable area PedPy checks them against (30 us for 200 people).
+            self._count_people_outside()
             self._record()
 
     def tick_trees(self) -> None:
@@ -252,8 +268,8 @@ class Simulation:
         """Anyone the crowd pushed out of the building (through an exit: walls hold everywhere else)
         has left it. An evacuee is counted as evacuated through the nearest exit; anyone else gets a
         `left_building` event. Either way the agent stops taking part, so nobody wanders outside
-        uncounted. (An evacuee's tree is quiescent until it is near its own exit point, so without this
-        check one pushed past that point was never ticked again.)"""
+        uncounted, and is not recorded outside. (An evacuee's tree is quiescent until it is near its
+        own exit point, so without this check one pushed past that point was never ticked again.)"""
         world = self.world
         if world is None or not hasattr(world, "outline"):
             return
@@ -266,7 +282,8 @@ class Simulation:
             shapely.prepare(self._building)
             self._exits = [(door.name, door.position) for door in world.exits()]
         pos = self.crowd.pos[active]
-        outside = active[~shapely.intersects_xy(self._building, pos[:, 0], pos[:, 1])]
+        # strictly inside, as PedPy's walkable-area check (shapely.within) counts it
+        outside = active[~shapely.contains_xy(self._building, pos[:, 0], pos[:, 1])]
         ctx = self.context
         for row in outside.tolist():
             x, y = float(self.crowd.pos[row, 0]), float(self.crowd.pos[row, 1])
@@ -398,6 +415,11 @@ class Simulation:
         c = self.context.counters
         return CounterSnapshot(c.reached_goals, self.context.queues.in_queue(), c.served, c.evacuated, c.collisions,
                                c.robot_collisions, c.closest_robot_approach, c.finished_trees)
+
+    def run_state(self) -> RunState:
+        n = len(self.trees)
+        active = np.asarray(self.crowd.active[:n], dtype=bool)
+        return RunState(n, int(n - active.sum()), int((self._finished_mask | ~active).sum()))
 
     def frame(self) -> Frame:
         crowd = self.crowd

@@ -302,7 +302,7 @@ whether it is loaded yet.
             self.query_one("#seed", Input).focus()
             return
         request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
-        if getattr(self.grove.backend, "unsure", None) is None:
+        if not self.grove.settings.ui.ask_when_unsure or getattr(self.grove.backend, "unsure", None) is None:
             self.app.push_screen(GenerationScreen(request))
             return
         self.check_reading(request)  # unsure readings are asked about first (on_reading_checked)
