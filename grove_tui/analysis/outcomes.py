@@ -48,12 +48,13 @@ GROUNDING_FILE = "grounding.json"
 SAMPLE_DT = 0.2  # seconds between the frames the checks look at
 ZONE_MARGIN = 0.3  # a person's centre this far outside a zone's boundary still counts as in it (doorways)
 MOVING = 0.3  # m/s: faster than this is walking, for pace
+PACE_QUANTILE = 0.75  # the pace is this quantile of the moving speeds
 ROBOT_MOVING = 0.1  # m/s
 FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep within reach
 LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
 LOOK_SHARE = 0.5
-AVOID_NEAR = 4.0  # metres (centres): the robot is near
+AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
 AVOID_MOVED = 0.5  # metres moved away while it was near
 BLOCK_AHEAD = 2.5  # metres ahead of the robot's front
 BLOCK_SIDE = 0.8  # metres to either side of its heading
@@ -456,6 +457,35 @@ class _WanderProbe(_Probe):
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 
+class _LeaveProbe(_Probe):
+    """They leave a place: each member is somewhere else than `zone` at some time of the run."""
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.left = np.full(self.cols.size, np.inf)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size or not np.isinf(self.left).any():
+            return
+        outside = ~self.inside(f) & np.isfinite(f.pos[:, self.cols, 0])
+        for j in np.flatnonzero(np.isinf(self.left) & outside.any(axis=0)):
+            self.left[j] = f.t[np.argmax(outside[:, j])]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        gone = self.left[np.isfinite(self.left)]
+        k = int(gone.size) + sum(1 for a in self._evacuated(events))
+        k = min(k, n)
+        text = f"{k}/{n} left {self.where()}" + (f" (last at {_when(float(gone.max()))})" if gone.size else "")
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+    def _evacuated(self, events: dict[int, list[SimEvent]]) -> list[int]:
+        """Members out of the building without a frame outside the zone first (left through its own exit)."""
+        ids = [int(i) for i in self.checker.ids[self.cols]] if self.cols.size else []
+        return [i for j, i in enumerate(ids) if np.isinf(self.left[j])
+                and any(e.kind in ("evacuated", "left_building") for e in events.get(i, ()))]
+
+
 class _MoveProbe(_Probe):
     def __init__(self, *args: Any) -> None:
         super().__init__(*args)
@@ -499,14 +529,16 @@ class _PaceProbe(_Probe):
         total = self.histogram.sum()
         if total * checker.sample_dt < 2.0:
             return UNCHECKED, "too little walking to measure a pace"
+        # The pace people keep while under way: the upper quartile of their moving speeds (slowing to
+        # arrive, to go through a door, to stop beside someone is not their pace).
         cumulative = np.cumsum(self.histogram)
-        k = int(np.searchsorted(cumulative, total / 2.0))
-        median = float((self.BINS[k] + self.BINS[k + 1]) / 2.0)
+        k = int(np.searchsorted(cumulative, PACE_QUANTILE * total))
+        pace = float((self.BINS[k] + self.BINS[k + 1]) / 2.0)
         low, high = self.claim.low or 0.0, self.claim.high or 9.9
-        ok = low <= median <= high
+        ok = low <= pace <= high
         band = f"{low:.2f}-{high:.2f}" if self.claim.low and self.claim.high and high < 9 else (
             f"at most {high:.2f}" if high < 9 else f"at least {low:.2f}")
-        return (HOLDS if ok else FAILS), f"median walking speed {median:.2f} m/s (asked {self.claim.asked}: {band} m/s)"
+        return (HOLDS if ok else FAILS), f"walking pace {pace:.2f} m/s (asked {self.claim.asked}: {band} m/s)"
 
 
 class _EventsProbe(_Probe):
@@ -524,8 +556,8 @@ class _QueueProbe(_EventsProbe):
         elsewhere: set[str] = set()
         for agent in self.member_ids():
             mine = [e for e in events.get(agent, ()) if e.kind.startswith("queue_")]
-            here = [e for e in mine if place is None or e.detail == place]
-            elsewhere |= {e.detail for e in mine if e.kind == "queue_join" and place is not None and e.detail != place}
+            here = [e for e in mine if self._here(e.detail)]
+            elsewhere |= {e.detail for e in mine if e.kind == "queue_join" and not self._here(e.detail)}
             joined += any(e.kind == "queue_join" for e in here)
             advanced += any(e.kind == "queue_advance" for e in here)
             got = [e.t for e in here if e.kind == "queue_served"]
@@ -533,13 +565,27 @@ class _QueueProbe(_EventsProbe):
             if got:
                 first_served = min(first_served, min(got))
         n = self.members
-        text = f"joined {joined}/{n} at {place or 'a queue'}, advanced {advanced}, served {served}"
+        text = f"joined {joined}/{n} at {place or self.claim.zone or 'a queue'}, advanced {advanced}, served {served}"
         if served:
             text += f" (first at {_when(first_served)})"
         if elsewhere:
             text += f"; queued elsewhere: {', '.join(sorted(elsewhere))}"
         ok = joined >= _need(self.claim, n) and served >= 1 and (n < 2 or advanced + served >= 2 or served >= 1)
         return (HOLDS if ok else FAILS), text
+
+
+    def _here(self, service: str) -> bool:
+        """A queue at the claim's service point, or (a claim about a zone) at any service point in it."""
+        claim = self.claim
+        if claim.place is not None:
+            return service == claim.place
+        if claim.zone is None:
+            return True
+        try:
+            found = self.checker.world.find(service)
+        except Exception:
+            return False
+        return getattr(found, "zone", getattr(found, "name", None)) == claim.zone
 
 
 class _ConverseProbe(_EventsProbe):
@@ -745,7 +791,7 @@ class _RobotAvoidProbe(_RobotProbe):
         prev_robot = np.concatenate([self.last_robot[None], robot[:-1]], axis=0)
         rel = prev - prev_robot[:, None, :]
         dist = np.hypot(rel[..., 0], rel[..., 1])
-        near = np.isfinite(dist) & (dist <= AVOID_NEAR) & (dist > 1e-6)
+        near = np.isfinite(dist) & (dist <= (self.claim.distance or AVOID_NEAR)) & (dist > 1e-6)
         move = pos - prev
         radial = np.where(near, (move[..., 0] * rel[..., 0] + move[..., 1] * rel[..., 1]) / np.where(near, dist, 1.0), 0.0)
         running = self.away[None, :] + np.cumsum(np.where(np.isfinite(radial), radial, 0.0), axis=0)
@@ -767,8 +813,9 @@ class _RobotAvoidProbe(_RobotProbe):
         k = int(ok.sum())
         if not came.any():
             closest = float(self.closest.min()) if self.closest.size else math.inf
-            return FAILS, f"the robot never came within {AVOID_NEAR:g} m of them (closest {closest:.1f} m)"
-        text = (f"{k}/{int(came.sum())} moved away when it came within {AVOID_NEAR:g} m "
+            return FAILS, f"the robot never came within {self.claim.distance or AVOID_NEAR:g} m of them " \
+                          f"(closest {closest:.1f} m)"
+        text = (f"{k}/{int(came.sum())} moved away when it came within {self.claim.distance or AVOID_NEAR:g} m "
                 f"({float(self.best[came].mean()):.1f} m on average; closest {float(self.closest[came].min()):.1f} m)")
         return (HOLDS if k >= _need(self.claim, int(came.sum())) else FAILS), text
 
@@ -932,7 +979,7 @@ class _RobotFollowPersonProbe(_Probe):
 
 _PROBES: dict[str, type[_Probe]] = {
     "count": _CountProbe, "start": _StartProbe, "reach": _ReachProbe, "stay": _StayProbe, "wander": _WanderProbe,
-    "move": _MoveProbe, "pace": _PaceProbe, "queue": _QueueProbe, "converse": _ConverseProbe,
+    "move": _MoveProbe, "leave": _LeaveProbe, "pace": _PaceProbe, "queue": _QueueProbe, "converse": _ConverseProbe,
     "evacuate": _EvacuateProbe, "follow_person": _FollowPersonProbe, "robot_follow": _RobotFollowProbe,
     "robot_approach": _RobotApproachProbe, "robot_block": _RobotBlockProbe, "robot_avoid": _RobotAvoidProbe,
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,

@@ -322,7 +322,9 @@ def _chosen_pair(world: Any, grid: Any, post: PostProcessed, people: Sequence[Po
     if not candidates:
         candidates = [c for c in _robot_candidates(world, grid, post, people, seed, evacuated=set()) if
                       picker.free(c)] or _robot_candidates(world, grid, post, people, seed, evacuated=set())
-    focus = [a.start for a in post.agents if a.id in reactors] or list(people) or \
+    # past the people who react to it where the sentence puts them, else through the crowd
+    placed = {g.index for g in post.groups if getattr(g, "reactor_zone", None)}
+    focus = [a.start for a in post.agents if a.id in reactors and a.group_index in placed] or list(people) or \
         [a.start for a in post.agents]
     centre = (sum(p[0] for p in focus) / len(focus), sum(p[1] for p in focus) / len(focus))
     pairs = []
@@ -491,7 +493,7 @@ def _followed(reading: PromptReading | None, post: PostProcessed) -> tuple[int, 
     the first group of the sentence."""
     if reading is None or reading.robot is None or not post.groups:
         return ()
-    text = {lemma(w) for w in words(reading.robot.text)}
+    text = {lemma(w) for w in words(reading.robot.follows or reading.robot.text)}
     best = None
     for g in post.groups:
         if g.reading_index is None or g.reading_index >= len(reading.groups):
@@ -501,6 +503,8 @@ def _followed(reading: PromptReading | None, post: PostProcessed) -> tuple[int, 
         if names & text - {"the", "a", "robot"}:
             best = g
             break
+    if best is None and reading.robot.follows:
+        return ()  # whom it follows is no group of the sentence: nobody to follow (the report says so)
     best = best or post.groups[0]
     return tuple(best.member_ids)
 
@@ -532,12 +536,22 @@ def place_robot_reactors(world: Any, grid: Any, post: PostProcessed, robot: Robo
         node = next((n.node for n in g.tree.walk() if n.node in REACTOR_BAND), "ApproachRobot")
         near, far = REACTOR_BAND[node]
         order = np.argsort(np.abs(arcs - min(max(0.3 * total, 4.0), total)), kind="stable") if total else np.arange(1)
+        if g.reactor_zone is not None:
+            # the sentence puts them in a zone: the route's points nearest to it first
+            polygon = world.zone(g.reactor_zone).polygon
+            gap = shapely.distance(polygon, shapely.points(samples))
+            order = np.lexsort((np.abs(arcs - min(max(0.3 * total, 4.0), total)), np.round(gap, 0)))
         placed = None
-        for k in order[:200]:
-            anchor = samples[k]
-            found = _spots(world, space, sight, anchor, near, far, robot.start, taken, g.count, rng)
-            if found is not None:
-                placed = (found, float(arcs[k]) if total else 0.0)
+        # the band the reaction needs first; in the sentence's zone, further off when the route passes by
+        for widen in (0.0, 4.0) if g.reactor_zone is not None else (0.0,):
+            for k in order[:300]:
+                anchor = samples[k]
+                found = _spots(world, space, sight, anchor, near, far + widen, robot.start, taken, g.count, rng,
+                               g.reactor_zone)
+                if found is not None:
+                    placed = (found, float(arcs[k]) if total else 0.0)
+                    break
+            if placed is not None:
                 break
         if placed is None:
             notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
@@ -570,11 +584,14 @@ def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _spots(world: Any, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
-           robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator) -> list[Point] | None:
-    zone = world.zone_at(float(anchor[0]), float(anchor[1]))
-    if zone is None:
-        return None
-    pts = space.cells(zone.name)
+           robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator,
+           zone_name: str | None = None) -> list[Point] | None:
+    if zone_name is None:
+        zone = world.zone_at(float(anchor[0]), float(anchor[1]))
+        if zone is None:
+            return None
+        zone_name = zone.name
+    pts = space.cells(zone_name)
     if not len(pts):
         return None
     d = np.hypot(pts[:, 0] - anchor[0], pts[:, 1] - anchor[1])

@@ -64,8 +64,8 @@ MAX_TRAILING_WAIT = 120.0
 
 # The robot interaction a group does as its whole activity, ungated: (node, ports).
 ROBOT_ACTIVITIES: dict[str, tuple[str, dict[str, Any]]] = {
-    "follow": ("ApproachRobot", {"closest_dist": 1.0, "max_vel": 1.3, "duration": 0.0}),
-    "approach": ("ApproachRobot", {"closest_dist": 0.8, "max_vel": 1.0, "duration": 0.0}),
+    "follow": ("ApproachRobot", {"closest_dist": 1.0, "max_vel": 1.5, "duration": 0.0}),
+    "approach": ("ApproachRobot", {"closest_dist": 0.8, "max_vel": 1.3, "duration": 0.0}),
     "block": ("BlockRobot", {"front_dist": 0.8, "duration": 0.0}),
     "avoid": ("AvoidRobot", {"safe_distance": 3.0, "runaway_vel": 1.2, "duration": 0.0}),
     "look": ("LookAtRobot", {"yaw_tolerance": 0.1}),
@@ -74,7 +74,8 @@ ROBOT_ACTIVITIES: dict[str, tuple[str, dict[str, Any]]] = {
 # them off (HuNavSim's 3-4 m for Scared/Surprised/Threatening would let it slip by unseen).
 REACTION_TRIGGER = {"Surprised": 8.0, "Curious": 10.0, "Scared": 5.0, "Threatening": 6.0}
 # Distances the outcome checks measure reactions against (metres between centres).
-REACTION_DISTANCE = {"follow": 3.0, "approach": 2.0, "block": 2.5, "avoid": 4.0, "look": 10.0}
+# (centre to centre: room for a few people around the robot when a group comes up to it)
+REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0}
 
 
 @dataclass
@@ -131,6 +132,9 @@ def reconcile(draft: Draft, reading: PromptReading, world: Any, default_spawn: s
                 notes.append(f"group '{label}': count {d.count} -> {count} ('{group.who}')")
             tree, added = honest_tree(d.tree, group, world, notes, label, evacuation_field, robot_zones)
             spawn = _spawn(group, d, world, default_spawn, tree, robot_zones)
+        onward = onward_note(group, tree, world)
+        if onward is not None:
+            added.append(onward)
         behavior = group.robot_reaction or "Regular"
         reacts_only = False
         if group.robot_interaction:
@@ -215,7 +219,7 @@ def honest_tree(tree: DraftNode, group: GroupReading, world: Any, notes: list[st
     dropped = [s for s in dropped if s.node in ROUTINE_NODES]
     if dropped:
         notes.append(f"group '{label}': removed what the sentence does not ask for: "
-                     f"{', '.join(_describe(s, None) for s in dropped)}")
+                     f"{', '.join(_describe(s, None, after=False) for s in dropped)}")
     if done_at < 0 and not dropped:
         notes.append(f"group '{label}': {group.intent} as the prompt says, instead of the model's {_kinds(tree)}")
     if not kept:
@@ -264,10 +268,13 @@ def _capped(step: DraftNode) -> DraftNode:
     return DraftNode(step.node, ports, step.children)
 
 
-def _describe(step: DraftNode, zone: str | None) -> str:
+def _describe(step: DraftNode, zone: str | None, after: bool = True) -> str:
+    """A step in words: "waits for 30 s afterwards" (kept after the core), "Wait 30 s" (dropped)."""
     place = _node_place(step)
     seconds = step.ports.get("duration", step.ports.get("wait_duration"))
     duration = f" for {float(seconds):g} s" if isinstance(seconds, (int, float)) and seconds else ""
+    if not after:
+        return f"{step.node}" + (f"({place})" if place else "") + (f" {float(seconds):g} s" if duration else "")
     if step.node in ("Wait", "StopAndWaitTimerAction"):
         return f"waits{duration} afterwards"
     if step.node == "Wander":
@@ -287,9 +294,12 @@ def _base_intent(group: GroupReading) -> str:
 
 
 def reacts_only(group: GroupReading) -> bool:
-    """The group's whole activity is its robot interaction (no place to go or be of its own)."""
-    return bool(group.robot_interaction) and group.intent == "robot" and not group.destination \
-        and not group.location and not group.via
+    """The group's whole activity is its robot interaction: nowhere to go ("two visitors stare at the
+    robot in the lobby" are in the lobby, and what they do there is look at the robot). Followers go
+    where the robot goes: "follow the robot through the concourse" names the robot's way, not theirs."""
+    if not group.robot_interaction or group.intent != "robot":
+        return False
+    return group.robot_interaction == "follow" or (not group.destination and not group.via)
 
 
 def tree_for(group: GroupReading, world: Any, evacuation_field: bool = False) -> DraftNode:
@@ -327,17 +337,43 @@ def tree_for(group: GroupReading, world: Any, evacuation_field: bool = False) ->
         return _sequence(via + steps)
     # walk, evacuate, follow
     destination = group.destination
+    if base in ("walk", "evacuate") and _is_exit(world, destination):
+        # "leave through the back door", "walk to the exit": out of the building through that door (the
+        # field in an emergency, else the planned way to the door and through it)
+        return _sequence(via + [DraftNode("FollowVelocityField", {"exit": destination})])
     if destination is None and base == "evacuate":
         destination = _nearest_exit(world, group.start)
     if destination is None:
         if evacuation_field:
             # "get out", "leave" in an emergency: out along the field to the nearest exit
             return _sequence(via + [DraftNode("FollowVelocityField", {"exit": _nearest_exit(world, group.start)})])
+        start = _zone_of(world, group.start or "")
+        onward = _largest_neighbour(world, start) if start and base == "walk" else None
+        if onward is not None:
+            # "people leave the big meeting room": out of it, into the largest room next to it
+            return _sequence(via + [DraftNode("GoTo", {"target": onward})])
         zone = _zone_of(world, group.start or group.location or "")
         if zone:
             return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": 0.0})])
         destination = _nearest_exit(world, None)
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
+
+
+def _largest_neighbour(world: Any, zone: str) -> str | None:
+    neighbours = sorted({door.leads_to if door.zone == zone else door.zone for door in world.doors_of(zone)}
+                        - {zone, "outside"})
+    return max(neighbours, key=lambda z: (world.zone(z).area, z)) if neighbours else None
+
+
+def onward_note(group: GroupReading, tree: DraftNode, world: Any) -> str | None:
+    """What a group the sentence sends out of a place, but nowhere, is given to do: said as added."""
+    start = _zone_of(world, group.start or "")
+    if group.destination or not start or _base_intent(group) != "walk":
+        return None
+    onward = _largest_neighbour(world, start)
+    if onward is not None and any(n.node == "GoTo" and n.ports.get("target") == onward for n in tree.walk()):
+        return f"walks on to {onward} (the sentence says where they leave, not where they go)"
+    return None
 
 
 def _sequence(steps: list[DraftNode]) -> DraftNode:
@@ -349,7 +385,11 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
     interaction = group.robot_interaction or ""
     if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
         node, ports = ROBOT_ACTIVITIES[interaction]
-        activity = DraftNode(node, dict(ports))
+        ports = dict(ports)
+        for speed in ("max_vel", "runaway_vel"):  # "run up to the robot": at the group's pace
+            if speed in ports:
+                ports[speed] = round(ports[speed] * PACE_FACTORS.get(group.pace, 1.0), 2)
+        activity = DraftNode(node, ports)
         if group.together:
             return DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), activity)), True
         return activity, True
@@ -595,12 +635,20 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: Any, re
                             place=r.start, share=1.0))
     tree_nodes = {node.node for node in g.tree.walk()}
     base = _base_intent(r)
-    for v in r.via:
+    for v in () if reacts_only(r) else r.via:
         claims.append(_place_claim("reach", v, f"walk through {v}", world, n, _eta(agents, v, world, speed)))
     if r.robot_interaction:
         claims.append(_reaction_claim(r, g, robot_seconds))
         if reacts_only(r):
             base = "none"
+            zone = _zone_of(world, r.location or "")
+            if zone and not r.start:
+                # "a cleaner stands in the robot's way in the corridor": that is where they are at first
+                claims.append(Claim("start", r.location or zone, f"start in {g.spawn}", PLANNED if zone == g.spawn
+                                    else FAILS, "" if zone == g.spawn else f"they start in {g.spawn}", zone=zone,
+                                    place=r.location, share=1.0))
+    if base == "walk" and _is_exit(world, r.destination):
+        base = "evacuate"  # walking out through an exit door is leaving the building through it
     if base == "walk" or base == "follow":
         if r.destination:
             claim = _place_claim("reach", r.destination, f"walk to {r.destination}", world, n,
@@ -612,6 +660,11 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: Any, re
         elif "FollowVelocityField" in tree_nodes:
             claims.append(Claim("evacuate", "walk out (no destination named)", "follow the evacuation field to "
                                 "the nearest exit", needs_seconds=_evacuation_eta(agents, world, speed, n)))
+        elif r.start and _zone_of(world, r.start):
+            # "people leave the big meeting room": out of it, wherever to
+            zone = _zone_of(world, r.start)
+            claims.append(Claim("leave", r.start, "walk out" if "Wander" not in tree_nodes else f"wander in {zone}",
+                                zone=zone, place=r.start, needs_seconds=_eta(agents, None, world, speed) + 20.0))
         else:
             claims.append(Claim("move", "walk (no destination named)",
                                 "wander where they are" if "Wander" in tree_nodes else "walk",
@@ -623,6 +676,10 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: Any, re
                                     partners=tuple(leader.member_ids), distance=3.0, share=0.9))
     elif base == "evacuate":
         exits = (r.destination,) if _is_exit(world, r.destination) else ()
+        unsure = r.confidence_of("destination")
+        if exits and unsure is not None and unsure.unsure:
+            # the reader could not tell which exit ("the nearest exit"): any it weighed
+            exits = tuple(dict.fromkeys(e for e in (r.destination, *unsure.alternatives) if _is_exit(world, e)))
         if r.destination and not exits:
             claims.append(_place_claim("reach", r.destination, f"evacuate to {r.destination}", world, n,
                                        _eta(agents, r.destination, world, speed)))

@@ -44,6 +44,7 @@ GROUP_CLAIMS = (
     "stay",            # they stay at `zone` / `point` (for `seconds` when asked)
     "wander",          # they move around inside `zone`
     "move",            # they walk (the sentence names no destination)
+    "leave",           # they leave `zone` (the sentence names where from, not where to)
     "queue",           # they join the line at `place`, it advances, people are served
     "converse",        # they talk with `partners` (a conversation event)
     "evacuate",        # they leave the building (through `exits` when named)
