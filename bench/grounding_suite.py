@@ -1,7 +1,7 @@
 """The grounding suite (eval/grounding/suite.yaml), end to end, with the embedded model (run by hand, not a test).
 
     PYTHONPATH=. python bench/grounding_suite.py [--suite eval/grounding/suite.yaml] [--out /tmp/grounding]
-                                                 [--only ID ...] [--limit N] [--write-results]
+                                                 [--only ID ...] [--limit N] [--write-results] [--rescore]
 
 Each case is generated through the services layer (the same path as `grove generate`), simulated for
 its `seconds` (which writes grounding.json, the report checked on the run), and scored against the
@@ -29,13 +29,22 @@ from grove_tui.errors import GroveError, describe_error  # noqa: E402
 from grove_tui.services.session import GroveSession, ScenarioRequest  # noqa: E402
 
 
-def run(suite: Path, out: Path, only: list[str], limit: int | None) -> list[CaseScore]:
+def run(suite: Path, out: Path, only: list[str], limit: int | None, rescore: bool = False) -> list[CaseScore]:
     cases = load_suite(suite)
     if only:
         cases = [c for c in cases if c.id in only]
     if limit:
         cases = cases[:limit]
     scores: list[CaseScore] = []
+    if rescore:  # the bundles of an earlier run of this command, scored again (no generation, no run)
+        for index, case in enumerate(cases, start=1):
+            try:
+                score = score_bundle(case, out / case.id)
+            except (GroveError, OSError) as exc:
+                score = CaseScore(case, error=str(exc))
+            scores.append(score)
+            print(line(index, len(cases), score), flush=True)
+        return scores
     with GroveSession() as session:
         for index, case in enumerate(cases, start=1):
             started = time.perf_counter()
@@ -115,11 +124,12 @@ def main() -> None:
     parser.add_argument("--only", nargs="*", default=[])
     parser.add_argument("--limit", type=int, default=None)
     parser.add_argument("--write-results", action="store_true")
+    parser.add_argument("--rescore", action="store_true", help="score the bundles already in --out again")
     args = parser.parse_args()
     os.environ.setdefault("HF_HUB_OFFLINE", "1")
     args.out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
-    scores = run(args.suite, args.out, args.only, args.limit)
+    scores = run(args.suite, args.out, args.only, args.limit, args.rescore)
     wall = time.perf_counter() - started
     load = os.getloadavg()
     f = figures(scores)

@@ -520,7 +520,13 @@ class _PaceProbe(_Probe):
         if not self.cols.size:
             return
         v = f.vel[:, self.cols]
-        speed = np.hypot(v[..., 0], v[..., 1]).ravel()
+        speed = np.hypot(v[..., 0], v[..., 1])
+        if self.claim.distance is not None and f.robot is not None:
+            # a pace on the way to the robot: only while farther than `distance` from it
+            pos = f.pos[:, self.cols]
+            away = np.hypot(pos[..., 0] - f.robot[:, 0:1], pos[..., 1] - f.robot[:, 1:2]) > self.claim.distance
+            speed = np.where(away, speed, np.nan)
+        speed = speed.ravel()
         speed = speed[np.isfinite(speed) & (speed > MOVING)]
         if speed.size:
             self.histogram += np.histogram(np.clip(speed, 0.0, 2.999), self.BINS)[0]

@@ -31,7 +31,7 @@ from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
-from grove_tui.generation.reconcile import grounding_report
+from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.quantities import Quantity, extract_quantities
 from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
@@ -234,7 +234,7 @@ class GenerationPipeline:
         t0 = clock.begin("rois")
         quantities = extract_quantities(prompt)
         check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
-        reading = read_prompt(prompt, world, seed=seed)
+        reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
         roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model

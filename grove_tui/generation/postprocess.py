@@ -886,8 +886,8 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         groups = [GroupPlan(i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
                             reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor,
                             added=list(r.added), reacts_only=r.reacts_only,
-                            reactor_zone=_reactor_zone(world, reading.groups[r.reading_index]) if r.reacts_only
-                            else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index]))
+                            reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
+                            else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]))
                   for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
                                                   evacuation_field=preset.velocity == "field"))]
         if not groups:

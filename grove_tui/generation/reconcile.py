@@ -26,13 +26,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from grove_tui.bt.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
 from grove_tui.bt.manifest import NODES
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
-from grove_tui.language.model import FieldConfidence, RobotReading
+from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
 from grove_tui.language.tokens import lemma, words
 from grove_tui.scenario.report import (
@@ -92,6 +92,29 @@ class ReconciledGroup:
     speed_factor: float = 1.0
     added: list[str] = field(default_factory=list)  # what the tree does beyond the reading, in words
     reacts_only: bool = False  # its whole activity is reacting to the robot: it starts where the robot passes
+
+
+def with_followed_person(reading: PromptReading, world: Any) -> PromptReading:
+    """The person a robot's clause follows, as a group of the sentence when the reading has none for
+    them: "the robot follows a guide from the entrance hall to the auditorium" asks for a guide who
+    walks from the entrance hall to the auditorium, with the robot behind."""
+    robot = reading.robot
+    if robot is None or robot.task != "follow" or not robot.follows:
+        return reading
+    wanted = {lemma(w) for w in words(robot.follows)} - {"a", "an", "the", "one", "him", "her", "them", "someone"}
+    if not wanted or any(wanted & ({lemma(w) for w in words(g.who)} | {g.label, lemma(g.label)})
+                         for g in reading.groups):
+        return reading
+    label = lemma(words(robot.follows)[-1])
+    count = Count("exact", 1, 1, 1)
+    where = [p for p in (robot.start, robot.destination) if p]
+    followed = GroupReading(robot.follows, label, count, "walk" if robot.destination else "wait",
+                            start=robot.start, destination=robot.destination,
+                            location=None if robot.destination else (robot.location or robot.start),
+                            via=tuple(robot.via), text=robot.text)
+    if not where and not followed.location:
+        followed = replace(followed, intent="wander")
+    return replace(reading, groups=reading.groups + (followed,))
 
 
 def robot_places(reading: PromptReading, world: Any) -> set[str]:
@@ -271,10 +294,11 @@ def _capped(step: DraftNode) -> DraftNode:
 def _describe(step: DraftNode, zone: str | None, after: bool = True) -> str:
     """A step in words: "waits for 30 s afterwards" (kept after the core), "Wait 30 s" (dropped)."""
     place = _node_place(step)
-    seconds = step.ports.get("duration", step.ports.get("wait_duration"))
-    duration = f" for {float(seconds):g} s" if isinstance(seconds, (int, float)) and seconds else ""
+    value = step.ports.get("duration", step.ports.get("wait_duration"))
+    seconds = float(value) if isinstance(value, (int, float)) else 0.0
+    duration = f" for {seconds:g} s" if seconds else ""
     if not after:
-        return f"{step.node}" + (f"({place})" if place else "") + (f" {float(seconds):g} s" if duration else "")
+        return f"{step.node}" + (f"({place})" if place else "") + (f" {seconds:g} s" if seconds else "")
     if step.node in ("Wait", "StopAndWaitTimerAction"):
         return f"waits{duration} afterwards"
     if step.node == "Wander":
@@ -675,11 +699,11 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: Any, re
                 claims.append(Claim("follow_person", f"follow {r.follows}", f"walk with {leader.label}",
                                     partners=tuple(leader.member_ids), distance=3.0, share=0.9))
     elif base == "evacuate":
-        exits = (r.destination,) if _is_exit(world, r.destination) else ()
+        exits: tuple[str, ...] = (r.destination,) if r.destination and _is_exit(world, r.destination) else ()
         unsure = r.confidence_of("destination")
         if exits and unsure is not None and unsure.unsure:
             # the reader could not tell which exit ("the nearest exit"): any it weighed
-            exits = tuple(dict.fromkeys(e for e in (r.destination, *unsure.alternatives) if _is_exit(world, e)))
+            exits = tuple(dict.fromkeys(e for e in (*exits, *unsure.alternatives) if _is_exit(world, e)))
         if r.destination and not exits:
             claims.append(_place_claim("reach", r.destination, f"evacuate to {r.destination}", world, n,
                                        _eta(agents, r.destination, world, speed)))
@@ -728,8 +752,12 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: Any, re
     if r.pace in ("slow", "fast"):
         normal = walking_speed
         low, high = (0.2, round(0.85 * normal, 2)) if r.pace == "slow" else (round(1.15 * normal, 2), 3.0)
-        claims.append(Claim("pace", r.pace, f"desired speed {speed:.2f} m/s", low=low, high=high,
-                            needs_seconds=15.0))
+        # "run up to the robot": the pace on the way to it (once there they keep the robot's)
+        reach = REACTION_DISTANCE[r.robot_interaction] + 0.5 if r.robot_interaction in ("approach", "follow") \
+            else None
+        claims.append(Claim("pace", r.pace, f"desired speed {speed:.2f} m/s" + (" on the way to the robot" if reach
+                                                                                 else ""),
+                            low=low, high=high, distance=reach, needs_seconds=15.0))
     return claims
 
 

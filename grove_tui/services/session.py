@@ -635,6 +635,9 @@ class GroveSession:
                     events = read_events(bundle / "events.jsonl")
                     report_path = bundle / "generation.json"
                     report = json.loads(report_path.read_text(encoding="utf-8")) if report_path.exists() else {}
+                    checked_path = bundle / "grounding.json"
+                    if checked_path.is_file():  # the report checked on this run: its ✓ is earned there
+                        report = dict(report, grounding=json.loads(checked_path.read_text(encoding="utf-8")))
                     by_id = {a.id: trees[a.tree] for a in scenario.agents}
                     scored = score_scenario(case, method, world, scenario, by_id, traj, events,
                                             report if method in ("grove", "vanilla") else None)

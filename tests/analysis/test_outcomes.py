@@ -145,7 +145,16 @@ def test_move_is_walking_somewhere(clinic):
     assert check(clinic, claim, run(10, people(line((1, 1), (1, 1)), line((1, 3), (1, 3))))).status == FAILS
 
 
-def test_pace_is_the_median_walking_speed_against_the_asked_band(clinic):
+def test_leave_is_being_out_of_the_place_at_some_time(clinic):
+    claim = Claim("leave", "lobby", "walk out", zone="lobby")
+    out = people(line((5, 4), (14, 4)), line((6, 4), (16, 4)))  # into the corridor
+    held = check(clinic, claim, run(15, out))
+    assert held.status == HOLDS and "2/2 left lobby" in held.evidence
+    stay = people(line((5, 4), (8, 4)), line((6, 4), (14, 4)))
+    assert check(clinic, claim, run(15, stay)).status == FAILS
+
+
+def test_pace_is_the_walking_speed_against_the_asked_band(clinic):
     slow = Claim("pace", "slow", "0.7 m/s", low=0.2, high=0.85)
     assert check(clinic, slow, run(10, people(line((1, 1), (9, 1), 0.6), line((1, 3), (9, 3), 0.6)))).status == HOLDS
     outcome = check(clinic, slow, run(10, people(line((1, 1), (9, 1), 1.3), line((1, 3), (9, 3), 1.3))))
