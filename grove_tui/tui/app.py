@@ -7,6 +7,8 @@ runs in thread workers started after the first screen is on.
 
 from __future__ import annotations
 
+import asyncio
+import threading
 from pathlib import Path
 from typing import Any
 
@@ -18,7 +20,11 @@ from grove_tui.services.backend import EngineBackend, GeneratedScenario
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
 from grove_tui.tui.commands import GroveCommands
 from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
-from grove_tui.settings import GroveSettings, load_history, load_settings, save_history
+from grove_tui.settings import (GroveSettings, load_history, load_last_choices, load_settings, save_history,
+                                save_last_choices)
+
+
+QUIT_WAIT_SECONDS = 0.05  # a moment for the model processes to stop by themselves when the app closes
 
 
 class GroveApp(App[int]):
@@ -42,12 +48,18 @@ class GroveApp(App[int]):
         history: list[str] | None = None,
         persist_history: bool = False,
         open_bundle: Path | None = None,
+        last_choices: dict[str, Any] | None = None,
+        remember_choices: bool = False,
     ) -> None:
         super().__init__()
         self.backend = backend
         self.settings = settings if settings is not None else GroveSettings()
-        self.initial_world = world if world is not None else self.settings.generation.world
-        self.initial_preset = preset if preset is not None else self.settings.generation.preset
+        # The command line's choice, else the last generation's (data dir), else the config file's.
+        last = dict(last_choices or {})
+        self.initial_world = world if world is not None else last.get("world", self.settings.generation.world)
+        self.initial_preset = preset if preset is not None else last.get("preset", self.settings.generation.preset)
+        self.initial_seed = int(last.get("seed", self.settings.generation.seed))
+        self.remember_choices = remember_choices
         self.history: list[str] = list(history or [])
         self.persist_history = persist_history
         self.generated: GeneratedScenario | None = None
@@ -55,6 +67,8 @@ class GroveApp(App[int]):
         self.open_bundle_at_start = open_bundle
         # Completion tokens of each model stage's last run: the generation screen's ETA expects as many.
         self.stage_tokens: dict[str, int] = {}
+        # Seconds each model stage read its prompt before the first token last time: the ETA till then.
+        self.stage_first_token: dict[str, float] = {}
         # Freeze the heap once the warm-up has loaded the models, embedder and reader (tui/heap.py);
         # what that freeze did, for the bench and the tests.
         self.freeze_heap_when_warm = True
@@ -132,6 +146,15 @@ class GroveApp(App[int]):
         if self.persist_history:
             save_history(self.history, limit)
 
+    def remember(self, world: str, preset: str, seed: int) -> None:
+        """The choices of a generation, for the next start of the app (when this app remembers them)."""
+        if not self.remember_choices:
+            return
+        try:
+            save_last_choices(world, preset, seed)
+        except OSError as exc:  # an unwritable data dir must not stop a generation
+            self.notify(f"Cannot remember the choices: {exc}", title="Settings", severity="warning", timeout=5)
+
     @property
     def export_root(self) -> Path:
         return Path(self.settings.export.directory)
@@ -145,9 +168,14 @@ class GroveApp(App[int]):
         self.push_screen(HelpScreen(self.focused, self.screen))
 
     def on_unmount(self) -> None:
+        # Closing stops the model processes; it may wait for one that is busy. Quit must take under a
+        # second in every state (issue 31), so it waits that long at most: what is still running then
+        # is ended by exit_now (run_app), which terminates the app's child processes.
         close = getattr(self.backend, "close", None)
         if callable(close):
-            close()
+            closer = threading.Thread(target=close, name="grove-close", daemon=True)
+            closer.start()
+            closer.join(QUIT_WAIT_SECONDS)
 
 
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
@@ -168,8 +196,11 @@ def run_app(model: str | None = None, roi_model: str | None = None, bt_model: st
         backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
     app = GroveApp(backend, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True,
-                   open_bundle=open_bundle)
-    result = app.run()
+                   open_bundle=open_bundle, last_choices=load_last_choices(), remember_choices=True)
+    # A loop of our own, never closed: asyncio.run's teardown waits for the default executor, where the
+    # app's thread workers run, so a quit while the node index loaded waited 7-13 s for the load to end.
+    # exit_now ends the process (those threads with it) once the app has restored the terminal.
+    result = app.run(loop=asyncio.new_event_loop())
     code = int(result or 0) if app.return_code in (None, 0) else int(app.return_code or 1)
     exit_now(code)
     return code  # not reached: exit_now ends the process
@@ -182,9 +213,17 @@ def exit_now(code: int) -> None:
     written, recorder spill files are unlinked temporary files. What is left is freeing torch,
     ChromaDB and numba objects one by one, which took 2.8 s of a 3.4 s quit (issue 21 item 14).
     """
+    import multiprocessing
     import os
     import sys
 
+    # A model process still loading or evaluating when the app closed (on_unmount waits QUIT_WAIT_SECONDS
+    # for them): end it now rather than leave it to notice its closed pipe when it is done.
+    for child in multiprocessing.active_children():
+        try:
+            child.terminate()
+        except OSError:
+            pass
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()
