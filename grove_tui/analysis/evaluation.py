@@ -342,10 +342,10 @@ def score_scenario(case: EvalCase, method: str, world: World, scenario: Scenario
     return CaseResult(case=case, method=method, scores=scores)
 
 
-def grounding_report_scores(report: GenerationReport | None) -> dict[str, float]:
-    """What the bundle's own grounding report says (generation.json `grounding`): the share of the
-    sentence's groups whose count, places, behavior and robot reaction all hold (✓), and how many
-    parts of the sentence it says it could not honour. The suite's expectations score the same
+def grounding_report_scores(report: Mapping[str, Any] | None) -> dict[str, float]:
+    """What the bundle's own grounding report says, checked on its run (grounding.json, else the
+    planned report of generation.json, where nothing is ✓ yet): the share of the sentence's groups
+    whose every claim held in the run (✓), and how many parts of the sentence it says it could not honour. The suite's expectations score the same
     scenario from outside; this is the product's account of itself, so the two can be compared."""
     grounding_entry = (report or {}).get("grounding")
     if not isinstance(grounding_entry, Mapping):

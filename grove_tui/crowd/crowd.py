@@ -528,6 +528,21 @@ class Crowd:
         self._robot[sfm.R_CMD_VY] = 0.0
 
     @property
+    def robot_commanded(self) -> bool:
+        """A velocity command drives the robot (a user, a policy), not its scripted path."""
+        return bool(self._robot[sfm.R_COMMANDED])
+
+    def set_robot_speed_limit(self, speed: float) -> None:
+        """The most the robot may drive at (a scripted robot slows or stops for someone in its way)."""
+        if not (math.isfinite(speed) and speed >= 0):
+            raise CrowdError(f"robot speed limit must be >= 0, got {speed!r}")
+        self._robot[sfm.R_MAX_SPEED] = float(speed)
+
+    @property
+    def robot_speed_limit(self) -> float:
+        return float(self._robot[sfm.R_MAX_SPEED])
+
+    @property
     def has_robot(self) -> bool:
         return bool(self._robot[sfm.R_PRESENT])
 

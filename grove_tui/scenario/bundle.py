@@ -4,7 +4,9 @@
     trees/*.xml        one BehaviorTree.CPP v4 file per agent
     fields/*.npz       velocity fields (emergency preset)
     grid.npz           the occupancy grid planning used
-    generation.json    per-stage seconds and tokens, selected RoIs, retrieved nodes, the draft
+    generation.json    per-stage seconds and tokens, selected RoIs, retrieved nodes, the draft, the
+                       planned grounding report
+    after a run: trajectories.csv, events.jsonl, metrics.json, grounding.json (the report checked on the run)
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ SCENARIO_FILE = "scenario.yaml"
 GRID_FILE = "grid.npz"
 REPORT_FILE = "generation.json"
 # What a simulation adds to a bundle; replaced together, never one without the others.
-RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
+RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json", "grounding.json")
 # trajectories.csv is read a block at a time, so its size costs time, not memory: a 500-person hour is
 # about 2 GB. The bound refuses what no run writes, such as a link to a huge unrelated file.
 MAX_TRAJECTORY_BYTES = 64 * 1024**3

@@ -138,6 +138,11 @@ class RobotSpec:
     radius: float = 0.3
     max_vel: float = 0.8
     path: tuple[Point, ...] = ()  # planned path start..goal (empty when not planned)
+    # What the robot does with its path (ROBOT_TASKS): "cross" drives it once (the default), "wait"
+    # stays at start, "patrol" drives it there and back again and again, "follow" keeps behind the
+    # people in `follows` (agent ids).
+    task: str = "cross"
+    follows: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -447,6 +452,13 @@ def _robot_to_dict(robot: RobotSpec) -> YamlDict:
     data["start"] = list(robot.start)
     data["goal"] = list(robot.goal)
     data["path"] = [list(p) for p in robot.path]
+    # A robot that just crosses is written as before, so earlier bundles stay byte for byte the same.
+    if robot.task == "cross":
+        del data["task"]
+    if not robot.follows:
+        del data["follows"]
+    else:
+        data["follows"] = list(robot.follows)
     return data
 
 
@@ -463,6 +475,18 @@ def _robot_from_dict(data: object, where: str) -> RobotSpec:
             radius=_number(data.get("radius", 0.3), f"{where}.radius", *RADIUS_RANGE),
             max_vel=_number(data.get("max_vel", 0.8), f"{where}.max_vel", *MAX_VEL_RANGE),
             path=tuple(_point(p, f"{where}.path[{j}]") for j, p in enumerate(path)),
+            task=_robot_task(data.get("task", "cross"), f"{where}.task"),
+            follows=tuple(_integer(i, f"{where}.follows[{j}]", 1, 10 * MAX_AGENTS)
+                          for j, i in enumerate(data.get("follows") or [])),
         )
     except KeyError as exc:
         raise ScenarioError(f"{where}: missing key {exc.args[0]!r}") from None
+
+
+ROBOT_TASKS = ("cross", "wait", "patrol", "follow")
+
+
+def _robot_task(value: Any, where: str) -> str:
+    if value not in ROBOT_TASKS:
+        raise ScenarioError(f"{where}: {_short(value)} is not a robot task; use one of {', '.join(ROBOT_TASKS)}")
+    return str(value)

@@ -338,6 +338,10 @@ class EngineBackend:
         self.session.close()
 
     # generation ------------------------------------------------------------------------------------
+    def unsure(self, world_name: str, preset_name: str, prompt: str, seed: int) -> list[str]:
+        """Questions about the fields the reader is unsure of in the sentence (asked before generating)."""
+        return self.session.unsure(ScenarioRequest(world_name, preset_name, prompt, seed))
+
     def generate(
         self,
         world_name: str,
@@ -403,6 +407,31 @@ class EngineBackend:
         from grove_tui.analysis.live_metrics import LiveMetrics
 
         return LiveMetrics(generated.scenario, generated.world)
+
+    def outcome_checker(self, generated: GeneratedScenario) -> Any:
+        """A checker of the scenario's planned grounding report for a run as it plays (None without a
+        report); feed it with `check_run_rows` from one thread at a time."""
+        from grove_tui.analysis.outcomes import OutcomeChecker, planned_report
+
+        planned = planned_report(generated.result.report)
+        if planned is None:
+            return None
+        return OutcomeChecker(planned, generated.scenario, generated.world)
+
+    def check_run_rows(self, checker: Any, rows: Any, events: list[Any], partial: bool = True) -> Any:
+        """The report checked on the run so far: the recorder's new rows (whole frames, taken between
+        steps) go into the checker, rounded as trajectories.csv stores them, so the live report equals
+        the grounding.json the same run writes."""
+        import numpy as np
+
+        from grove_tui.crowd.recording import CSV_COLUMNS
+
+        if len(rows):
+            table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
+            table[:, 1] = np.round(table[:, 1], 4)
+            table[:, 3:8] = np.round(table[:, 3:8], 4)
+            checker.add_rows(table)
+        return checker.result(events, partial=partial)
 
     # export ----------------------------------------------------------------------------------------
     def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path,

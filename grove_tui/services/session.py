@@ -245,6 +245,17 @@ class GroveSession:
                               hint="Give the prompt as UTF-8 text.") from None
         return self.load_world(request.world), self.load_preset(request.preset)
 
+    def unsure(self, request: ScenarioRequest) -> list[str]:
+        """Questions about what the reader is unsure of in the request's sentence ("'the big meeting
+        room' start: boardroom or meeting_room?"), before any model loads; [] when it is sure of all.
+
+        The app asks them before generating; `grove generate --strict` refuses with them."""
+        from grove_tui.generation.reconcile import reading_questions
+        from grove_tui.language.reading import read_prompt
+
+        world, _preset = self.check_request(request)
+        return reading_questions(read_prompt(" ".join(request.prompt.split()), world, seed=request.seed))
+
     # models ---------------------------------------------------------------------------------------------
     @property
     def model_options(self) -> tuple[str | None, str | None, str | None]:
@@ -586,7 +597,8 @@ class GroveSession:
         def write_run(stage: Path) -> None:
             recorder.write_csv(stage / "trajectories.csv")
             write_events(stage / "events.jsonl", sim.events)
-            reports.append(bundle_metrics(stage)[0])
+            # metrics.json and grounding.json (the sentence's claims checked on this run) in one pass
+            reports.append(bundle_metrics(stage, outcomes=True)[0])
 
         replace_run_outputs(bundle, write_run)
         crowd = reports[0].crowd
@@ -729,6 +741,9 @@ class GroveSession:
                     events = read_events(bundle / "events.jsonl")
                     report_path = bundle / "generation.json"
                     report = json.loads(report_path.read_text(encoding="utf-8")) if report_path.exists() else {}
+                    checked_path = bundle / "grounding.json"
+                    if checked_path.is_file():  # the report checked on this run: its ✓ is earned there
+                        report = dict(report, grounding=json.loads(checked_path.read_text(encoding="utf-8")))
                     by_id = {a.id: trees[a.tree] for a in scenario.agents}
                     scored = score_scenario(case, method, world, scenario, by_id, traj, events,
                                             report if method in ("grove", "vanilla") else None)

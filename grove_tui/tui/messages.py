@@ -159,3 +159,20 @@ class ExportProgress(Message):
     kind: str
     index: int
     total: int
+
+
+@dataclass
+class ReadingChecked(Message):
+    """The sentence was read before generating: the questions about what the reader is unsure of."""
+
+    request: Any  # screens.generation.GenerationRequest
+    questions: list[str]
+
+
+@dataclass
+class GroundingChecked(Message):
+    """The sentence's claims checked on the run so far (analysis/outcomes.py), or why they could not be."""
+
+    report: Any  # scenario.report.GroundingReport, None on error
+    error: str = ""
+    final: bool = False  # checked on the whole run, once it ended

@@ -72,6 +72,16 @@ def test_model_that_is_not_a_gguf_exits_4(tmp_path):
     assert not (tmp_path / "bundle").exists()
 
 
+def test_strict_refuses_an_unsure_reading_with_the_question_and_writes_nothing(tmp_path, model):
+    # "the counter": the hospital has the pharmacy's and the cafeteria's; no model loads to say so
+    out = tmp_path / "bundle"
+    result = invoke(generate_args(out, model, prompt="Ten people queue at the counter", extra=["--strict"]))
+    assert result.exit_code == EXIT_BAD_INPUT
+    assert "unsure" in result.stderr and "pharmacy" in result.stderr and "food_counter" in result.stderr
+    assert "without --strict" in result.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
 def test_robot_points_parse():
     assert parse_robot_point("3.5, -2") == (3.5, -2.0)
     assert parse_robot_point("main_entrance") == "main_entrance"
@@ -87,6 +97,9 @@ def test_generate_simulate_and_resimulate(tmp_path, embedded_path):
     assert lines[0] == f"bundle: {out}"
     assert any(line.startswith("agents: 6 ") for line in lines)
     assert any(line.startswith("simulated: 5.0 s") for line in lines)
+    # after a run the report is the checked one, with the run it was checked on
+    assert any(line.startswith("grounding: ") and "(run of 5 s)" in line for line in lines), lines
+    assert (out / "grounding.json").is_file()
     assert "synthesis" in result.stderr  # progress went to stderr
     scenario, trees, _, _ = load_bundle(out)
     assert len(scenario.agents) == 6 and scenario.seed == 2 and len(trees) == 6

@@ -84,6 +84,24 @@ def test_counts_change_the_population_exactly_without_calling_the_model(planned)
     assert all(isinstance(e, (StageStarted, StageFinished)) for e in events)
 
 
+def test_the_report_says_what_the_sentence_asked_and_what_the_user_changed(planned):
+    # issue 28: after 10 -> 20 the count is not "✓ ten patients x20 / ✓ count 20"
+    from grove_tui.scenario.report import GroundingReport
+
+    pipeline, _, result = planned
+    edited = pipeline.replan(result, {0: 14})
+    report = GroundingReport.from_dict(edited.report["grounding"])
+    patients = report.groups[0]
+    (count,) = [c for c in patients.claims if c.kind == "count"]
+    assert count.asked == "10" and count.plan == "14 people (edited from 10)" and count.status == "planned"
+    assert patients.edit == "the sentence asked 10 ('Ten patients'); you changed it to 14"
+    assert not report.groups[1].edit
+    # a second edit still says what the sentence asked
+    again = GroundingReport.from_dict(pipeline.replan(edited, {0: 20}).report["grounding"])
+    assert again.groups[0].edit.startswith("the sentence asked 10 ") and again.groups[0].edit.endswith("to 20")
+    assert any(line.strip().startswith("! the sentence asked 10") for line in again.lines())
+
+
 def test_every_tree_validates_and_has_planned_waypoints(planned):
     pipeline, _, result = planned
     edited = pipeline.replan(result, {0: 7})

@@ -391,4 +391,34 @@ shows its world, preset, prompt and seed.
             return
         request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
         self.grove.remember(world, preset, seed)
-        self.app.push_screen(GenerationScreen(request))
+        if not self.grove.settings.ui.ask_when_unsure or getattr(self.grove.backend, "unsure", None) is None:
+            self.app.push_screen(GenerationScreen(request))
+            return
+        self.check_reading(request)  # unsure readings are asked about first (on_reading_checked)
+
+    @work(thread=True, exclusive=True, group="reading", exit_on_error=False, description="reading the sentence")
+    def check_reading(self, request: Any) -> None:
+        try:
+            questions = list(self.grove.backend.unsure(request.world, request.preset, request.prompt, request.seed))
+        except Exception:  # a sentence that cannot be read fails in the generation, with its reason shown there
+            questions = []
+        self.post_message(msg.ReadingChecked(request, questions))
+
+    def on_reading_checked(self, message: msg.ReadingChecked) -> None:
+        from grove_tui.tui.screens.choice import Choice, ChoiceScreen
+        from grove_tui.tui.screens.generation import GenerationScreen
+
+        if not message.questions:
+            self.app.push_screen(GenerationScreen(message.request))
+            return
+
+        def answered(value: str | None) -> None:
+            if value == "generate":
+                self.app.push_screen(GenerationScreen(message.request))
+            else:
+                self.query_one("#prompt", PromptInput).focus()
+
+        text = "\n".join(f"• {q}" for q in message.questions)
+        self.app.push_screen(ChoiceScreen("The reader is unsure", text + "\n\nGenerate as read, or edit the sentence?",
+                                          [Choice("enter", "Generate as read", "generate"),
+                                           Choice("e", "Edit the sentence", "edit")]), answered)
