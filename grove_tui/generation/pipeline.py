@@ -248,7 +248,8 @@ class GenerationPipeline:
         else:
             retrieved = []
         request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
-                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None))
+                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None),
+                                  documents_named=getattr(self.retriever, "documents_named", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")

@@ -235,6 +235,14 @@ class GroveSession:
         """World and preset of a request, and a non-empty prompt, before any model loads."""
         if not request.prompt or not request.prompt.strip():
             raise PromptError("the prompt is empty: describe the people and what they do")
+        try:
+            request.prompt.encode("utf-8")
+        except UnicodeEncodeError as exc:
+            # A lone surrogate (JSON's "\ud800", or bytes that are not UTF-8 on the command line) reaches
+            # no parser: spaCy, the model and the dataset index all refuse to encode it.
+            raise PromptError(f"the prompt is not Unicode text: character {exc.start + 1} is a lone surrogate "
+                              f"(\\u{ord(request.prompt[exc.start]):04x})",
+                              hint="Give the prompt as UTF-8 text.") from None
         return self.load_world(request.world), self.load_preset(request.preset)
 
     # models ---------------------------------------------------------------------------------------------
@@ -304,9 +312,10 @@ class GroveSession:
     def _make_llm(self, role: str, choice: ModelChoice) -> Any:
         if self._llm_factory is not None:
             return self._llm_factory(role, choice)
-        from grove_tui.llm.local import LocalLLM, default_threads
+        from grove_tui.llm.local import LocalLLM
 
-        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx, n_threads=default_threads())
+        # No fixed thread count: every request takes the idle cores of that moment (cpu.py).
+        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx)
         llm.start()  # loads the weights in the model's worker process now, not at the first prompt
         return llm
 
@@ -450,7 +459,8 @@ class GroveSession:
                 return
         pipeline = self.pipeline(world, preset)
         if pipeline.llm_bt is not None:
-            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world)
+            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world,
+                        getattr(pipeline.retriever, "documents_named", None))
 
     def retriever(self) -> Any:
         with self._lock:
