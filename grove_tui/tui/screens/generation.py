@@ -283,6 +283,8 @@ answer was cut off or failed the draft check), the output starts afresh under "a
                 table.update_cell(key, column, value)
         self._attempt_header = ""
         self.query_one("#stream", Static).update("")
+        r = self.request
+        self.grove.remember(r.world, r.preset, r.seed)  # the next start of the app opens on these
         self.run_generation(self.request, self._cancel)
 
     @work(thread=True, exclusive=True, group="generation", exit_on_error=False, description="generating")

@@ -171,8 +171,13 @@ shows its world, preset, prompt and seed.
     @work(thread=True, exclusive=True, group="catalogue", exit_on_error=False, description="listing worlds")
     def load_catalogue(self) -> None:
         backend = self.grove.backend
+        preload = self.grove.settings.ui.preload_models
+        initial = self.grove.initial_world
+        if preload and initial:
+            # The world is known: warm up at once, beside the listing (progress from the first second).
+            self.preload_models(initial, self.grove.initial_preset)
         # Presets before worlds: the map preview's title is what a user (and the tmux test) waits
-        # for before typing, and Enter with no preset highlighted yet would refuse the prompt.
+        # for before typing.
         self.post_message(msg.PresetsListed(backend.presets()))
         names: list[str] = []
         try:
@@ -181,9 +186,11 @@ shows its world, preset, prompt and seed.
             self.post_message(msg.WorldsListed([], describe_error(exc).text))
         else:
             self.post_message(msg.WorldsListed(names))
-        self.post_message(msg.ModelsChanged(backend.model_status(), loading=self.grove.settings.ui.preload_models))
-        if self.grove.settings.ui.preload_models:
-            self.preload_models(self.grove.initial_world or (names[0] if names else None), self.grove.initial_preset)
+        if preload and not initial:
+            self.post_message(msg.ModelsChanged(backend.model_status(), loading=True))
+            self.preload_models(names[0] if names else None, self.grove.initial_preset)
+        elif not preload:
+            self.post_message(msg.ModelsChanged(backend.model_status()))
 
     @work(thread=True, exclusive=True, group="models", exit_on_error=False, description="loading models")
     def preload_models(self, world: str | None, preset: str | None) -> None:
@@ -390,7 +397,6 @@ shows its world, preset, prompt and seed.
             self.query_one("#seed", Input).focus()
             return
         request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
-        self.grove.remember(world, preset, seed)
         if not self.grove.settings.ui.ask_when_unsure or getattr(self.grove.backend, "unsure", None) is None:
             self.app.push_screen(GenerationScreen(request))
             return

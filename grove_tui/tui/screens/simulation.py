@@ -205,7 +205,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
                 status = Static("loading simulation…", id="sim-status")
                 status.border_title = "Simulation"
                 yield status
-                counters = Static("", id="counters", markup=False)
+                counters = Static("counted once the run plays", id="counters", markup=False)
                 counters.border_title = "Counters"
                 counters.border_subtitle = "metrics.json"
                 yield counters
