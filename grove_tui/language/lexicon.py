@@ -177,7 +177,8 @@ for _intent, _verbs in {
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
             "snooze",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
-    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter",
+    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
+              "mop sweep vacuum hoover scrub tidy",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
@@ -206,7 +207,8 @@ LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
-LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour".split())
+LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum "
+                                  "hoover scrub tidy".split())
 ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end deliver drop bring".split())
 # "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.
 TRANSACTION_VERBS = frozenset("buy purchase get collect pick fetch order borrow take grab withdraw".split())
