@@ -27,13 +27,13 @@ from grove_tui.bt.xml import BTError, parse_tree_text
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
-from grove_tui.generation.draft import Draft
+from grove_tui.generation.draft import Draft, node_to_dict
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import grounding_report
 from grove_tui.language.quantities import Quantity, extract_quantities
-from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
+from grove_tui.language.reading import Count, GroupReading, PromptReading, effective_counts, read_prompt
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
@@ -126,6 +126,22 @@ class GenerationResult:
     inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
 
 
+@dataclass(frozen=True)
+class Drafted:
+    """What the rois, retrieval and synthesis stages give post-processing (GenerationPipeline.draft)."""
+
+    reading: PromptReading
+    quantities: tuple[Quantity, ...]
+    selection: Any  # rois.RoISelection
+    retrieved: tuple[Any, ...]
+    request: Any  # synthesis.SynthesisRequest
+    synthesis: Any  # synthesis.SynthesisResult
+
+
+def _no_event(event: Event) -> None:
+    """The event sink of a caller that listens to nothing."""
+
+
 def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
     """The head counts of a reading in the older Quantity form (population checks, the report's
     "quantities"): one per group with people of its own, spans located in the prompt."""
@@ -145,7 +161,35 @@ def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
     return out
 
 
-class _StageClock:
+def group_records(groups: Sequence[Any], reading: PromptReading | None, asked_by: int = 0) -> list[dict[str, Any]]:
+    """generation.json's "groups": per post-processed group its label, count, spawn, members and field,
+    and what a refinement needs to edit it without the model (generation/refine.py): the reading it
+    realises (its count the group's own people), its tree before ids and points (draft form), and the
+    sentence that asked for it (0: the first)."""
+    records = []
+    for g in groups:
+        record: dict[str, Any] = {"label": g.label, "count": g.count, "spawn": g.spawn, "members": list(g.member_ids),
+                                  "field": g.field_id, "behavior": g.behavior}
+        if g.spawn_zones:
+            record["spawn_zones"] = dict(g.spawn_zones)
+        index = getattr(g, "reading_index", None)
+        if reading is not None and index is not None and 0 <= index < len(reading.groups):
+            record["reading"] = own_reading(reading.groups[index], g.count).to_dict()
+        record["tree"] = node_to_dict(g.tree)
+        record["asked_by"] = asked_by
+        records.append(record)
+    return records
+
+
+def own_reading(group: GroupReading, count: int) -> GroupReading:
+    """A reading group as the scenario's group realises it: its own people ("one of them" taken out of
+    its parent), no relation to the other groups of its sentence."""
+    c = group.count
+    own = c if c.value == count else Count("exact", count, count, count)
+    return replace(group, count=own, relation=None)
+
+
+class StageClock:
     """Times stages into `stages`, emits their events and checks `cancel` before each one starts."""
 
     def __init__(self, emit: Callable[[Event], None], cancel: threading.Event | None,
@@ -218,7 +262,7 @@ class GenerationPipeline:
 
     def run(self, prompt: str, seed: int = 0, on_event: Callable[[Event], None] | None = None,
             cancel: threading.Event | None = None) -> GenerationResult:
-        emit = on_event or (lambda event: None)
+        emit = on_event or _no_event
         prompt = " ".join((prompt or "").split())
         if not prompt:
             raise PromptError("the prompt is empty: describe the people and what they do")
@@ -226,13 +270,48 @@ class GenerationPipeline:
             raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
         preset, world = self.preset, self.world
         stages: dict[str, dict[str, Any]] = {}
-        clock = _StageClock(emit, cancel, stages)
+        clock = StageClock(emit, cancel, stages)
         started = time.perf_counter()
 
+        drafted = self.draft(prompt, seed, clock, on_event, cancel)
+        reading, selection, retrieved = drafted.reading, drafted.selection, drafted.retrieved
+        request, synthesis, quantities = drafted.request, drafted.synthesis, list(drafted.quantities)
+        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names), reading)
+        post, plan = self._plan_stages(inputs, seed, clock, cancel)
+
+        models = {"bt": _model_name(self.llm_bt)}
+        if self.llm_roi is not None:
+            models["roi"] = _model_name(self.llm_roi)
+        report = {
+            "world": world_reference(world), "preset": preset.name, "prompt": prompt, "seed": int(seed),
+            "models": models, "stages": stages,
+            "total_seconds": round(time.perf_counter() - started, 4),
+            "prompt_tokens": synthesis.prompt_tokens, "completion_tokens": synthesis.completion_tokens,
+            "quantities": [{"phrase": q.phrase, "count": q.count, "noun": q.noun, "exact": q.exact} for q in quantities],
+            "reading": reading.to_dict(),
+            "selected_rois": describe_selection(selection), "zones": selection.zones, "named_zones": selection.named_zones,
+            "retrieved": [{"name": r.name, "kind": r.kind, "score": r.score, "nodes": list(r.nodes)} for r in retrieved],
+            "documents": describe_documents(request.documents), "offered_nodes": request.node_names,
+            "draft": draft_summary(synthesis.draft), "draft_text": synthesis.text,
+            "attempts": synthesis.attempts, "draft_errors": synthesis.errors,
+            "first_token_seconds": None if synthesis.first_token_seconds is None else round(synthesis.first_token_seconds, 4),
+            # Prompt tokens the bt model did not evaluate: its live KV or the world+preset prefix restored from disk.
+            "cached_tokens": synthesis.cached_tokens, "cache_source": synthesis.cache_source,
+        }
+        return self._assemble(inputs, seed, models, post, plan, report)
+
+    def draft(self, prompt: str, seed: int, clock: StageClock, on_event: Callable[[Event], None] | None,
+              cancel: threading.Event | None, reading: PromptReading | None = None) -> Drafted:
+        """The model's draft for a sentence: the rois (with the reading), retrieval and synthesis stages.
+
+        `run` asks it for the whole sentence, read here; a refinement (generation/refine.py) for the
+        groups a follow-up adds or changes, giving their `reading` alone, so the model writes only those."""
+        preset, world = self.preset, self.world
+        emit = on_event or _no_event
         t0 = clock.begin("rois")
-        quantities = extract_quantities(prompt)
-        check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
-        reading = read_prompt(prompt, world, seed=seed)
+        if reading is None:
+            check_stated_counts(prompt, extract_quantities(prompt))  # no words, negative or zero counts: refused
+            reading = read_prompt(prompt, world, seed=seed)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
         roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
@@ -258,30 +337,7 @@ class GenerationPipeline:
                                max_tokens=self.max_tokens, on_attempt=on_attempt)
         clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
                   synthesis.prompt_tokens, synthesis.completion_tokens)
-
-        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names), reading)
-        post, plan = self._plan_stages(inputs, seed, clock, cancel)
-
-        models = {"bt": _model_name(self.llm_bt)}
-        if self.llm_roi is not None:
-            models["roi"] = _model_name(self.llm_roi)
-        report = {
-            "world": world_reference(world), "preset": preset.name, "prompt": prompt, "seed": int(seed),
-            "models": models, "stages": stages,
-            "total_seconds": round(time.perf_counter() - started, 4),
-            "prompt_tokens": synthesis.prompt_tokens, "completion_tokens": synthesis.completion_tokens,
-            "quantities": [{"phrase": q.phrase, "count": q.count, "noun": q.noun, "exact": q.exact} for q in quantities],
-            "reading": reading.to_dict(),
-            "selected_rois": describe_selection(selection), "zones": selection.zones, "named_zones": selection.named_zones,
-            "retrieved": [{"name": r.name, "kind": r.kind, "score": r.score, "nodes": list(r.nodes)} for r in retrieved],
-            "documents": describe_documents(request.documents), "offered_nodes": request.node_names,
-            "draft": draft_summary(synthesis.draft), "draft_text": synthesis.text,
-            "attempts": synthesis.attempts, "draft_errors": synthesis.errors,
-            "first_token_seconds": None if synthesis.first_token_seconds is None else round(synthesis.first_token_seconds, 4),
-            # Prompt tokens the bt model did not evaluate: its live KV or the world+preset prefix restored from disk.
-            "cached_tokens": synthesis.cached_tokens, "cache_source": synthesis.cache_source,
-        }
-        return self._assemble(inputs, seed, models, post, plan, report)
+        return Drafted(reading, tuple(quantities), selection, tuple(retrieved), request, synthesis)
 
     def replan(self, result: GenerationResult, counts: Mapping[int, int], seed: int | None = None,
                on_event: Callable[[Event], None] | None = None,
@@ -311,7 +367,7 @@ class GenerationPipeline:
 
         stages = {k: dict(v) for k, v in result.report.get("stages", {}).items()}
         previous = sum(stages.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
-        clock = _StageClock(on_event or (lambda event: None), cancel, stages)
+        clock = StageClock(on_event or (lambda event: None), cancel, stages)
         post, plan = self._plan_stages(edited, seed, clock, cancel)
         for i, count in counts.items():
             if post.groups[i].count != count:  # reconciliation must keep group order; refuse silently wrong counts
@@ -352,7 +408,7 @@ class GenerationPipeline:
             edits.append((index, label, int(groups[index]["count"]), count))
         return [edit[1:] for edit in sorted(edits)]
 
-    def _plan_stages(self, inputs: PlanInputs, seed: int, clock: _StageClock,
+    def _plan_stages(self, inputs: PlanInputs, seed: int, clock: StageClock,
                      cancel: threading.Event | None) -> tuple[PostProcessed, OperationalPlan]:
         """The post-processing and planning stages, shared by `run` and `replan`."""
         world, preset, grid = self.world, self.preset, self.grid
@@ -381,9 +437,7 @@ class GenerationPipeline:
             models=models, agents=tuple(plan.agents), robot=plan.robot,
             fields={fid: f"fields/{fid}.npz" for fid in sorted(plan.fields)}, resolution=self.resolution)
         report = dict(report)
-        report["groups"] = [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
-                             "field": g.field_id, "behavior": g.behavior}
-                            | ({"spawn_zones": dict(g.spawn_zones)} if g.spawn_zones else {}) for g in post.groups]
+        report["groups"] = group_records(post.groups, inputs.reading)
         report["exit"] = post.exit
         report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes

@@ -168,7 +168,7 @@ def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
     return (float(q[0]), float(q[1])) if math.dist(q, (cx, cy)) < 1.0 else nearest
 
 
-def _resolve_point(world: Any, grid: Any, value: Point | str, what: str) -> Point:
+def resolve_robot_point(world: Any, grid: Any, value: Point | str, what: str) -> Point:
     if isinstance(value, str):
         try:
             obj = world.find(value)
@@ -204,7 +204,7 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
     clearance = robot_radius + PASSING_MARGIN
     formations = predict_formations(world, grid, [a.document for a in post.agents if a.document is not None],
                                     post.goals)
-    fixed = [_resolve_point(world, grid, p, what) for p, what in ((request.start, "start"), (request.goal, "goal"))
+    fixed = [resolve_robot_point(world, grid, p, what) for p, what in ((request.start, "start"), (request.goal, "goal"))
              if p is not None]
     # A start or goal the user put inside a formation (the robot delivers to the counter): that one is not an obstacle.
     formations = [f for f in formations if not any(f in formations_at(formations, q, clearance) for q in fixed)]

@@ -739,12 +739,15 @@ def _target_ports(spec: NodeSpec) -> list[str]:
     return [p.name for p in spec.ports if p.type == "target"]
 
 
+NAVIGATING_EXTRA = frozenset({"Queue", "FollowVelocityField"})  # resolved to a point, though they do not walk
+
+
 def navigation_targets(tree: DraftNode) -> list[tuple[DraftNode, str]]:
     """(node, target port) pairs in tick order for every node that moves the agent to a place."""
     out = []
     for node in tree.walk():
         spec = NODES[node.node]
-        if spec.navigates or node.node in ("Queue", "FollowVelocityField"):
+        if spec.navigates or node.node in NAVIGATING_EXTRA:
             for port in _target_ports(spec):
                 if port in node.ports:
                     out.append((node, port))
@@ -879,6 +882,10 @@ class KeptMembers:
     ids: tuple[int, ...]
     starts: tuple[Point, ...]
     zone: str
+    # per member, (RoI name, point) of each place its tree sent it to: a member whose tree still goes
+    # to the same places in the same order goes to the same points
+    targets: tuple[tuple[tuple[str, Point], ...], ...] = ()
+    sfm_groups: tuple[int, ...] = ()  # the social groups its members formed, reused while they fit
 
 
 @dataclass(frozen=True)
@@ -945,7 +952,11 @@ def place_groups(world: Any, grid: Any, preset: Preset, groups: list[GroupPlan],
                 parties = [g.count // n + (1 if i < g.count % n else 0) for i in range(n)]
                 sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
                 notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
-            sfm_groups += len(parties)
+            own = kept.sfm_groups if kept is not None else ()
+            if own and len(parties) <= len(own) and own == tuple(range(own[0], own[0] + len(own))):
+                g.sfm_group = own[0]  # a changed group keeps its social groups' ids
+            else:
+                sfm_groups += len(parties)
         if preset.velocity == "field":
             g.field_id = f"group_{g.index + 1}"  # the group's first field; per exit below when it splits
         first = 0
@@ -976,19 +987,26 @@ def place_groups(world: Any, grid: Any, preset: Preset, groups: list[GroupPlan],
             served[name] = len(points)
             resolver.reserve(name, points)
     by_index = {g.index: g for g in groups}
+    kept_targets = {m: t for kept in (scene.kept.values() if scene is not None else ())
+                    for m, t in zip(kept.ids, kept.targets)}
     for agent in agents:
         g = by_index[agent.group_index]
         tree = _with_exit(agent.tree, agent.exit) if agent.exit else agent.tree
         agent.tree = tree
         targets: dict[int, Point] = {}
         slots: dict[str, int] = {}
-        for node, port in navigation_targets(tree):
+        before = kept_targets.get(agent.id, ())
+        for k, (node, port) in enumerate(navigation_targets(tree)):
             name = node.ports[port]
             if name not in slots:
                 # This agent's place in the line of everyone sent to `name` (sequential goal allocation).
                 slots[name] = served.get(name, 0)
                 served[name] = slots[name] + 1
-            if node.node == "Converse":
+            if k < len(before) and before[k][0] == name and node.node != "FollowVelocityField":
+                point = before[k][1]  # a kept member goes where it went
+                if node.node == "Converse":
+                    resolver.group_points.setdefault((g.index, name), point)  # newcomers join its circle
+            elif node.node == "Converse":
                 # One circle per group: everyone resolves the same centre.
                 point = _group_point(resolver, g, name)
             else:

@@ -516,8 +516,10 @@ def _stated_fields(group: GroupReading, predicate: str, ctx: _Context) -> list[s
     fields: list[str] = []
     acts = _states_action(predicate)
     plain_walk = group.intent == "walk" and not (group.destination or group.via or group.start)
-    if acts and not (plain_walk and (group.pace != "normal" or group.together)):
-        fields.append("intent")  # "walks slowly": how they walk, not that they now walk
+    # "walks slowly": how they walk, not that they now walk; "should block the robot": how they react to
+    # it, while they go on doing what they did
+    if acts and group.intent != "robot" and not (plain_walk and (group.pace != "normal" or group.together)):
+        fields.append("intent")
     for name in ("start", "destination", "location"):
         if getattr(group, name):
             fields.append(name)
