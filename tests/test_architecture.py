@@ -71,3 +71,41 @@ def test_mypy_is_clean_on_the_headless_core():
     pytest.importorskip("mypy")
     out = subprocess.run([sys.executable, "-m", "mypy"], capture_output=True, text=True, cwd=ROOT, timeout=900)
     assert out.returncode == 0, out.stdout[-4000:] + out.stderr[-2000:]
+
+
+def _names_a_module(dotted: str) -> bool:
+    """grove_tui.a.b[.attr...]: the longest prefix that is a module or package must be below grove_tui
+    itself, and the first name after it must be defined in that module."""
+    import re
+
+    parts = dotted.split(".")
+    for k in range(len(parts), 1, -1):
+        candidate = ROOT.joinpath(*parts[:k])
+        source = candidate.with_suffix(".py") if candidate.with_suffix(".py").exists() else candidate / "__init__.py"
+        if not source.exists():
+            continue
+        rest = parts[k:]
+        if not rest or rest[0].startswith("__"):
+            return True
+        return re.search(rf"\b{re.escape(rest[0])}\b", source.read_text(encoding="utf-8")) is not None
+    return len(parts) == 2 and parts[1].startswith("__")  # grove_tui.__file__
+
+
+def test_every_module_path_named_in_code_and_docs_exists():
+    """Docstrings, generated node documents and docs name modules by path (grove_tui/bt/manifest.py) or
+    dotted name (grove_tui.generation.draft); after a move, a stale name sends a newcomer nowhere."""
+    import re
+
+    files = [*ROOT.glob("grove_tui/**/*.py"), *ROOT.glob("node_db/**/*.md"), *ROOT.glob("docs/*.md"),
+             ROOT / "README.md"]
+    stale = []
+    for path in files:
+        text = path.read_text(encoding="utf-8")
+        for match in re.finditer(r"grove_tui/[A-Za-z0-9_/]+(?:\.py)?", text):
+            name = match.group(0).rstrip("/")
+            if not (ROOT / name).exists() and not (ROOT / f"{name}.py").exists():
+                stale.append(f"{path.relative_to(ROOT)}: {name}")
+        for match in re.finditer(r"\bgrove_tui(?:\.[A-Za-z_0-9]+)+", text):
+            if not _names_a_module(match.group(0)):
+                stale.append(f"{path.relative_to(ROOT)}: {match.group(0)}")
+    assert not stale, "\n".join(sorted(set(stale)))

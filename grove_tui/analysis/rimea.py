@@ -1,6 +1,6 @@
 """RiMEA verification tests (RiMEA e.V., Guideline for Microscopic Evacuation Analysis, v3) on GROVE's crowd.
 
-Each test builds its geometry and people with `grove_tui.crowd.Crowd` (the kernel every scenario
+Each test builds its geometry and people with `grove_tui.crowd.crowd.Crowd` (the kernel every scenario
 runs on) at the product's step (dt 0.05 s) and returns a RimeaResult with the measured value and
 whether it meets RiMEA's criterion. Tests 1, 4, 5, 6 and 7 drive the crowd directly; 9, 10, 11 and
 12 need whole buildings and run the evacuation path end to end (world YAML, grid, velocity fields,

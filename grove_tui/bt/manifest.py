@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Any
-from xml.sax.saxutils import escape, quoteattr
+from lxml import etree
 
 CATEGORIES = ("control", "decorator", "action", "condition")
 PORT_TYPES = ("int", "float", "bool", "string", "target", "agent", "agents", "point_list")
@@ -750,22 +750,24 @@ def _default_text(port: PortSpec) -> str | None:
 def treenodes_model_xml(renamed: dict[str, str] | None = None) -> str:
     """The manifest as a Groot2 TreeNodesModel (BT.CPP v4); built-in control nodes are omitted.
 
-    `renamed` gives some nodes another ID (the HuNavSim export keeps GROVE nodes as Grove<Node>)."""
+    `renamed` gives some nodes another ID (the HuNavSim export keeps GROVE nodes as Grove<Node>).
+    Built as an lxml tree, so every ID, port name, default and description is escaped by the writer."""
     renamed = renamed or {}
     tag = {"control": "Control", "decorator": "Decorator", "action": "Action", "condition": "Condition"}
-    lines = ['<?xml version="1.0" encoding="UTF-8"?>', '<root BTCPP_format="4">', "  <TreeNodesModel>"]
+    root = etree.Element("root", BTCPP_format="4")
+    model = etree.SubElement(root, "TreeNodesModel")
     for spec in NODES.values():
         if spec.origin == "btcpp":
             continue
-        lines.append(f"    <{tag[spec.category]} ID={quoteattr(renamed.get(spec.name, spec.name))}>")
+        node = etree.SubElement(model, tag[spec.category], ID=renamed.get(spec.name, spec.name))
         for port in spec.ports:
             kind = "input_port" if port.direction == "in" else "output_port"
-            attrs = f"name={quoteattr(port.name)} type={quoteattr(_BTCPP_TYPE[port.type])}"
+            element = etree.SubElement(node, kind, name=port.name, type=_BTCPP_TYPE[port.type])
             default = _default_text(port)
             if default is not None:
-                attrs += f" default={quoteattr(default)}"
-            lines.append(f"      <{kind} {attrs}>{escape(port.description)}</{kind}>")
-        lines.append(f"      <MetadataFields><Metadata description={quoteattr(spec.description)}/></MetadataFields>")
-        lines.append(f"    </{tag[spec.category]}>")
-    lines += ["  </TreeNodesModel>", "</root>", ""]
-    return "\n".join(lines)
+                element.set("default", default)
+            element.text = port.description
+        metadata = etree.SubElement(node, "MetadataFields")
+        etree.SubElement(metadata, "Metadata", description=spec.description)
+    etree.indent(root, space="  ")
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + etree.tostring(root, encoding="unicode", pretty_print=True)

@@ -1,4 +1,4 @@
-"""JSON schema -> GBNF for llama.cpp, for exactly the bounded subset `engine.draft` emits.
+"""JSON schema -> GBNF for llama.cpp, for exactly the bounded subset GROVE's own schemas use (the roi model's answer).
 
 A malformed GBNF crashes llama.cpp inside the C++ sampler, so we never compile a grammar we did not
 build here, and this converter refuses anything outside the subset instead of guessing:
