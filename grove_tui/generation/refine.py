@@ -152,7 +152,7 @@ def plan_refinement(scene: Scene, edit: EditReading) -> Refinement:
     diff = _diff(scene, edit, planned, gone, robot, notes)
     if diff.empty:
         reason = "; ".join(notes) if notes else "every group it names already does that"
-        raise EditError(f"'{edit.sentence}' changes nothing: {reason}")
+        raise EditError(f"'{edit.sentence}' changes nothing in the scenario: {reason}")
     return Refinement(edit, step, tuple(planned), gone, robot, diff)
 
 

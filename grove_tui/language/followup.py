@@ -178,10 +178,8 @@ def read_followup(sentence: str, world: Any, groups: Sequence[GroupReading], *, 
         touched = tuple(t for e in found if e.kind != "add" and e.target is not None for t in e.target.targets)
         if touched:
             ctx.last = touched
-    if not edits and robot is None and text:
-        ctx.notes.append(f"'{text}' asks for no change the scenario can make: add, change or remove a group "
-                         f"(\"add two guards at the entrance\", \"the visitors walk slowly\", \"remove the "
-                         f"cleaner\") or the robot (\"the robot waits at reception\", \"no robot\")")
+    if not edits and robot is None and text and not ctx.notes:
+        ctx.notes.append("nothing in it adds, changes or removes a group or the robot")
     return EditReading(text, tuple(edits), robot, tuple(dict.fromkeys(ctx.notes)))
 
 
@@ -490,7 +488,7 @@ def _change_or_add(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit]:
             ctx.notes.append(f"'{subject or reading.groups[0].who}' names no group of the scenario"
                              f"{_known_groups(ctx)}: added as a new group")
             return _additions(body, ctx, text=text)
-        ctx.notes.append(f"'{text}': no group of the scenario and no people were read{_known_groups(ctx)}")
+        ctx.notes.append(f"'{text}' names no group of the scenario and no new people{_known_groups(ctx)}")
         return []
     stated = read_prompt(f"{NEUTRAL_SUBJECT} {predicate}", ctx.world, seed=ctx.seed) if predicate else None
     if stated is not None:
@@ -505,8 +503,8 @@ def _change_or_add(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit]:
     if not fields:
         ctx.notes.append(f"'{text}': nothing to change was read for {subject}")
         return []
-    if counted is not None and not _definite(subject) and "instead" not in cues and not ref.ambiguous and \
-            not _restates(group, fields, ref, ctx):
+    if _indefinite(subject) and "instead" not in cues and not ref.ambiguous and \
+            not (counted is not None and _restates(group, fields, ref, ctx)):
         return _additions(body, ctx, text=text)  # "two nurses chat in the lobby": more people, not a change
     return [GroupEdit("change", text, ref, group, tuple(fields), count)]
 
@@ -680,6 +678,13 @@ def _definite(phrase: str) -> bool:
     ws = words(phrase)
     return bool(ws) and (ws[0] in ("the", "this", "that", "these", "those", "our", "my", "their", "his", "her",
                                    "its") or ws[0] in PRONOUNS or ws[0] in EVERY_WORDS)
+
+
+def _indefinite(phrase: str) -> bool:
+    """"a nurse", "two nurses", "some visitors": people introduced, not people already there."""
+    ws = words(phrase)
+    return bool(ws) and (ws[0] in ("a", "an", "another", "some", "several", "few", "many") or ws[0].isdigit()
+                         or ws[0] in lx.NUMBER_WORDS)
 
 
 def _count_in(phrase: str, ctx: _Context) -> int | None:

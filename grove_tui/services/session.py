@@ -626,6 +626,9 @@ class GroveSession:
             generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed,
                                                       variation=job.variation), target,
                                       overwrite=overwrite, on_event=on_event, cancel=cancel)
+            for followup in job.refine:  # each step replaces the job's bundle, atomically
+                generated = self.refine(generated, followup, target, overwrite=True, on_event=on_event,
+                                        cancel=cancel)
             summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
             exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name) for kind in job.exports}
         except GroveError as exc:
