@@ -275,6 +275,37 @@ class PictureError(ExportError):
     title = "Picture error"
 
 
+class MissingExtraError(BadInputError):
+    """An optional part this command needs (Ray, pyarrow, rosbags, foxglove-sdk) is not installed.
+
+    Bad input, not a failure: the command asked for something this install lacks, and the hint is the
+    one line that installs it. Raised before anything is written (`require_extra`)."""
+
+    title = "Optional part missing"
+
+    def __init__(self, feature: str, package: str, install: str) -> None:
+        super().__init__(f"{feature} needs {package}, which this install does not have", hint=install)
+        self.package = package
+
+
+def missing_extra(modules: Iterable[str]) -> str | None:
+    """The first of `modules` that cannot be imported here, or None when all of them can."""
+    import importlib
+
+    for name in modules:
+        try:
+            importlib.import_module(name)
+        except ImportError:
+            return name
+    return None
+
+
+def require_extra(feature: str, package: str, modules: Iterable[str], install: str) -> None:
+    """MissingExtraError (exit 2, the install line as hint) unless every module of `modules` imports."""
+    if missing_extra(modules) is not None:
+        raise MissingExtraError(feature, package, install)
+
+
 class HunavImportError(BadInputError):
     """A HuNavSim scenario (agents YAML, trees) that cannot become a GROVE bundle; the message says why."""
 

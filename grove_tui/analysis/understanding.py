@@ -37,7 +37,7 @@ from grove_tui.errors import GroveError, UnderstandingError
 PLACE_ROLES = ("start", "destination", "location", "via")
 GROUP_FIELDS = ("count", "intent", *PLACE_ROLES, "places", "robot_interaction", "robot_reaction", "together",
                 "pace", "wait_seconds", "purpose", "relation", "label")
-CASE_FIELDS = ("groups", "unknown_place_refusals", "false_refusals")
+CASE_FIELDS = ("groups", "unknown_place_refusals", "false_refusals", "robot_task", "robot_places")
 # The issue's thresholds: each of these at >= 95 %, and no false refusal of a place the world has.
 THRESHOLD_FIELDS = ("groups", "count", "intent", "places", "robot_reaction")
 THRESHOLD = 0.95
@@ -57,6 +57,10 @@ class UnderstandingCase:
     groups: tuple[dict, ...]
     unknown_places: tuple[str, ...] = ()
     seed: int = 0
+    # What the sentence asks of the robot itself ({task, start, destination, location, via}); None:
+    # it asks nothing of the robot. Scored only when the case states it (`robot_stated`).
+    robot: dict | None = None
+    robot_stated: bool = False
 
 
 def load_cases(path: str | Path) -> list[UnderstandingCase]:
@@ -77,7 +81,8 @@ def load_cases(path: str | Path) -> list[UnderstandingCase]:
                 id=str(raw["id"]), world=str(raw["world"]), preset=str(raw.get("preset", "normal")),
                 cls=str(raw.get("class", "")), prompt=str(raw["prompt"]),
                 groups=tuple(dict(g) for g in expect["groups"]),
-                unknown_places=tuple(expect.get("unknown_places") or ()), seed=int(raw.get("seed", 0))))
+                unknown_places=tuple(expect.get("unknown_places") or ()), seed=int(raw.get("seed", 0)),
+                robot=dict(expect["robot"]) if expect.get("robot") else None, robot_stated="robot" in expect))
         except (KeyError, TypeError, ValueError) as exc:
             raise UnderstandingError(f"{path}: cases[{index}]: missing or malformed {exc}") from None
     ids = [c.id for c in cases]
@@ -212,7 +217,24 @@ def score_reading(case: UnderstandingCase, reading: Mapping[str, Any], node_name
     for number, (expected, index) in enumerate(zip(case.groups, mapping)):
         for name, ok, detail in _group_checks(expected, None if index is None else got[index], node_names):
             score.add(name, ok, f"group {number}: {detail}")
+    if case.robot_stated:
+        _score_robot(score, case.robot, reading.get("robot"))
     return score
+
+
+def _score_robot(score: ReadingScore, expected: Mapping[str, Any] | None, got: Mapping[str, Any] | None) -> None:
+    """The robot's own clause: its task, and its places by role (those the case states)."""
+    if expected is None:
+        score.add("robot_task", got is None, f"expected no robot task, read {got!r}")
+        return
+    have = got or {}
+    score.add("robot_task", have.get("task") == expected.get("task"),
+              f"expected {expected.get('task')!r}, read {have.get('task')!r}")
+    roles = [r for r in PLACE_ROLES if r in expected]
+    if roles:
+        wrong = [f"{r}: expected {expected[r]!r}, read {have.get(r)!r}" for r in roles
+                 if (sorted(expected[r] or ()) != sorted(have.get(r) or ()) if r == "via" else have.get(r) != expected[r])]
+        score.add("robot_places", not wrong, "; ".join(wrong))
 
 
 def default_reader() -> Callable[[str, Any, int], Mapping[str, Any]]:

@@ -241,6 +241,10 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
     if ray_return and ray_address is None:
         raise click.UsageError("--ray-return sends files from Ray workers: use it with --ray")
     check_index_format(index_format)  # before the job file is read: nothing runs without its index
+    if ray_address is not None:
+        from grove_tui.services.cluster import require_ray
+
+        require_ray()  # nor without Ray: one error line (exit 2), nothing read or written
     session = session_for(ctx, roi_model, bt_model)
     jobs, problems = read_jobs(jobs_file)
     jobs, refused = session.check_jobs(jobs, Path(out_dir), overwrite)

@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.errors import FoxgloveExportError
+from grove_tui.errors import FoxgloveExportError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.files import atomic_file
@@ -51,20 +51,18 @@ class FoxgloveExport:
     counts: dict[str, int]  # messages per topic
 
 
+FOXGLOVE_MODULES = ("foxglove", "foxglove.channels", "foxglove.messages")
+
+
 def missing_dependency() -> str | None:
     """Why this export cannot run here (its optional dependency is not installed), or None."""
-    try:
-        import foxglove.channels  # noqa: F401
-        import foxglove.messages  # noqa: F401
-    except ImportError:
-        return f"the Foxglove export needs foxglove-sdk: {ROS_EXTRA}"
-    return None
+    if missing_extra(FOXGLOVE_MODULES) is None:
+        return None
+    return f"the Foxglove export needs foxglove-sdk: {ROS_EXTRA}"
 
 
 def _foxglove() -> Any:
-    missing = missing_dependency()
-    if missing is not None:
-        raise FoxgloveExportError(missing)
+    require_extra("the Foxglove MCAP export", "foxglove-sdk", FOXGLOVE_MODULES, ROS_EXTRA)
     import foxglove
 
     return foxglove

@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from grove_tui.errors import RosbagExportError
+from grove_tui.errors import RosbagExportError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.files import atomic_directory, check_output_dir
@@ -78,20 +78,18 @@ def hunav_msg_text(name: str) -> str:
     return (MSG_DIR / name).read_text(encoding="utf-8")
 
 
+ROSBAGS_MODULES = ("rosbags.rosbag2", "rosbags.typesys", "rosbags.interfaces")
+
+
 def missing_dependency() -> str | None:
     """Why this export cannot run here (its optional dependency is not installed), or None."""
-    try:
-        import rosbags.rosbag2  # noqa: F401
-        import rosbags.typesys  # noqa: F401
-    except ImportError:
-        return f"the ROS 2 bag export needs rosbags: {ROS_EXTRA}"
-    return None
+    if missing_extra(ROSBAGS_MODULES) is None:
+        return None
+    return f"the ROS 2 bag export needs rosbags: {ROS_EXTRA}"
 
 
 def _rosbags() -> None:
-    missing = missing_dependency()
-    if missing is not None:
-        raise RosbagExportError(missing)
+    require_extra("the ROS 2 bag export", "rosbags", ROSBAGS_MODULES, ROS_EXTRA)
 
 
 def ros_typestore() -> Any:

@@ -222,6 +222,22 @@ NEGATING_VERBS = frozenset("skip bypass ignore miss shun".split())
 # ---- the robot -------------------------------------------------------------------------------
 
 ROBOT_WORDS = frozenset({"robot", "robots", "bot", "amr", "droid"})
+# What the robot itself is asked to do, by the verb of its own clause ("the robot waits by reception":
+# wait; "a robot crosses the hall to the lifts": cross). A verb of motion none of these lists names is a
+# crossing when the clause gives the robot somewhere to go.
+ROBOT_WAIT_VERBS = frozenset("wait stand stay park idle remain sit rest stop pause hover linger charge sleep halt "
+                             "dock be".split())
+ROBOT_PATROL_VERBS = frozenset("patrol roam wander circle sweep clean mop vacuum guard scan explore monitor tour "
+                               "survey inspect cruise prowl loop".split())
+ROBOT_FOLLOW_VERBS = frozenset("follow trail accompany shadow tail chase pursue".split())
+ROBOT_CROSS_VERBS = frozenset("cross pass traverse drive roll glide move navigate travel deliver carry bring fetch "
+                              "transport head go leave enter return zoom trundle come reach visit proceed rush hurry "
+                              "ride run walk lead guide escort take make get exit arrive depart".split())
+# Verbs of sending the robot somewhere: "send the robot to ward A", "have the robot wait by the door".
+ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct program command dispatch "
+                                "instruct".split())
+# Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
+VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
 # verb lemma -> interaction when the robot is its object ("stares at the robot").
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
@@ -266,6 +282,7 @@ for _verb in "walk go come run rush hurry move step head wander stroll dash race
         ROBOT_PHRASES.setdefault((_verb, *_tail), "approach")
     for _tail in (("away", "from"), ("away",), ("back", "from"), ("off",)):
         ROBOT_PHRASES.setdefault((_verb, *_tail), "avoid")
+    ROBOT_PHRASES.setdefault((_verb, "after"), "follow")  # "a boy runs after it"
 # Gathering round the robot is coming to see it ("crowd around the robot").
 for _verb in "crowd gather cluster swarm huddle flock throng mob".split():
     for _tail in (("around",), ("round",), ("about",)):

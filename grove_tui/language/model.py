@@ -129,6 +129,7 @@ class RobotReading:
     via: tuple[str, ...] = ()
     text: str = ""  # the prompt words of the robot's clause
     confidence: tuple[FieldConfidence, ...] = ()
+    follows: str | None = None  # whom a "follow" task follows, as written ("a porter", "him")
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
@@ -136,12 +137,13 @@ class RobotReading:
     def to_dict(self) -> dict[str, Any]:
         return {"task": self.task, "start": self.start, "destination": self.destination,
                 "location": self.location, "via": list(self.via), "text": self.text,
-                "confidence": [c.to_dict() for c in self.confidence]}
+                "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> RobotReading:
         return cls(str(data["task"]), data.get("start"), data.get("destination"), data.get("location"),
-                   tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")))
+                   tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")),
+                   data.get("follows"))
 
 
 @dataclass(frozen=True)

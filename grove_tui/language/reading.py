@@ -68,6 +68,17 @@ _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
 # ---- reading --------------------------------------------------------------------------------
 
+def _place_confidences(roles: dict[str, str | None], via: Sequence[str],
+                       read_from: dict[str, _Place]) -> list[FieldConfidence]:
+    """The confidence of each place field whose match was less than sure (see _match_confidence)."""
+    out: list[FieldConfidence] = []
+    for name, value in [*roles.items(), *(("via", v) for v in via)]:
+        place = read_from.get(value) if value else None
+        if place is not None and place.score < 1.0:
+            out.append(FieldConfidence(name, place.score, place.reason, place.alternatives))
+    return out
+
+
 @lru_cache(maxsize=2048)
 def _near_person_noun(word: str) -> str | None:
     """The person noun a word is one insertion, deletion, substitution or swap of two neighbours
@@ -219,6 +230,19 @@ class _Place:
     words: tuple[str, ...]
     match: PlaceMatch | None
     end: int = 0  # token index after the phrase
+    score: float = 1.0  # how sure the match is (1.0: the phrase holds the place's whole name or an alias)
+    reason: str = ""
+    alternatives: tuple[str, ...] = ()  # other places the phrase fits as well
+
+
+@dataclass
+class _RobotClause:
+    """A clause whose subject is the robot ("a robot crosses the hall to the lifts", "as it passes
+    the lobby", "send the robot to ward A"): its words, and the index of its verb."""
+
+    tokens: list[int]
+    verb: int | None
+    command: bool = False  # "send the robot to ...": the verb is the sender's
 
 
 @dataclass
@@ -251,6 +275,7 @@ class _Reader:
         self.unknown: list[str] = []
         self.notes: list[str] = []
         self.context_zones: list[str] = []  # zones of the places read so far, in reading order
+        self.frame_zones: list[str] = []  # zones named as where people are ("on platform 2"), in reading order
         self.relative = self._relative_clause_tokens()
         self.quiet = False  # True while reading a clause whose places nobody goes to (see read)
         self.no_mention = self._together_phrase_tokens()
@@ -1075,13 +1100,16 @@ class _Reader:
 
     def read(self) -> PromptReading:
         mentions = self._mentions()
+        robot_clauses = self._robot_clauses(mentions)
+        robot_tokens = {i for rc in robot_clauses for i in rc.tokens}
+        robot = self._robot_reading(robot_clauses)
         if not mentions:
             evacuated = self._evacuated_zone_without_people()
             if evacuated is not None:
-                return evacuated
-            self._scan_unknown_places(range(self.n))
+                return replace(evacuated, robot=robot)
+            self._scan_unknown_places([i for i in range(self.n) if i not in robot_tokens])
             return PromptReading(self.prompt, (), tuple(dict.fromkeys(self.unknown)),
-                                 ("no group of people found in the prompt",))
+                                 ("no group of people found in the prompt",), robot=robot)
         # Each group owns its words up to the next mention; a sentence's words before its first
         # mention are its preamble, read for every group of that sentence.
         # A fronted phrase between two groups belongs to the one after it ("..., and from the office,
@@ -1098,9 +1126,10 @@ class _Reader:
         preamble_of: dict[int, list[int]] = {}
         negated = self._negated_clause_tokens()
         for i in range(self.n):
-            if i not in claimed and i not in negated:
+            if i not in claimed and i not in negated and i not in robot_tokens:
                 preamble_of.setdefault(self.w[i].sentence, []).append(i)
-        mention_tokens = {i for m in mentions for i in range(m.first, m.last + 1)}
+        # The robot's own clauses belong to no group: a group's places never come from them.
+        mention_tokens = {i for m in mentions for i in range(m.first, m.last + 1)} | robot_tokens
         scenes = {}
         for s_, toks in preamble_of.items():
             # a clause about animals or things ("two goldfish swim in a tank") names no place to refuse
@@ -1120,7 +1149,8 @@ class _Reader:
                     intent=own.intent or carried.intent)
             if sentence not in with_people and own is not None:
                 carried = scenes[sentence]
-        clauses = [self._clause(list(range(a, b)), mention_tokens) for a, b in spans]
+        clauses = [self._clause(list(range(a, b)), mention_tokens, robot_after=self._robot_clause_after(a, b, robot_clauses))
+                   for a, b in spans]
         for k, m in enumerate(mentions):
             if m.zone_place is not None:  # "half the open office goes ...": where they are
                 clauses[k].places.insert(0, m.zone_place)
@@ -1158,7 +1188,8 @@ class _Reader:
         groups: list[GroupReading] = []
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             scene = scenes.get(self.w[m.first].sentence)
-            groups.append(self._group(k, m, clause, scene, evacuation, spans[k], groups))
+            groups.append(self._group(k, m, clause, scene, evacuation, self._own_span(spans[k], m, robot_tokens),
+                                      groups))
         # "everyone has gone home (except ...)", "after everyone has left": people no longer there
         gone = [k for k, m in enumerate(mentions) if m.whole_zone and m.relation is None
                 and self._already_gone(spans[k]) and len(mentions) > 1]
@@ -1168,7 +1199,215 @@ class _Reader:
                 self.notes = [n for n in self.notes if not n.startswith(f"'{groups[k].who}': ")]
                 self.notes.append(f"'{groups[k].who}' have already left: they are not in the scenario")
             groups = [g for k, g in enumerate(groups) if k not in gone]
-        return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
+        return PromptReading(self.prompt, tuple(groups), tuple(dict.fromkeys(self.unknown)), tuple(self.notes),
+                             robot=robot)
+
+    def _own_span(self, span: tuple[int, int], m: _Mention, robot_tokens: set[int]) -> tuple[int, int]:
+        """A group's span without a robot clause that ends it ("..., while a robot crosses the hall")."""
+        end = next((i for i in range(m.last + 1, span[1]) if i in robot_tokens), span[1])
+        while end > m.last + 1 and (self._is_punct(end - 1) or self.low[end - 1] in lx.CLAUSE_STARTERS):
+            end -= 1
+        return span[0], end
+
+    # -- the robot ----------------------------------------------------------------------------
+
+    def _robot_clauses(self, mentions: Sequence[_Mention]) -> list[_RobotClause]:
+        """The clauses whose subject is the robot: "a (delivery) robot <verb> ...", "it <verb> ..." once
+        the robot is named, "send / have the robot ...". Each runs to the next group's mention, the
+        next clause about someone else, or the end of its sentence. A passive ("the robot is followed
+        by ...") is the people's clause, not the robot's."""
+        starts = {m.first for m in mentions}
+        taken = {i for m in mentions for i in range(m.first, m.last + 1)}
+        out: list[_RobotClause] = []
+        i = 0
+        while i < self.n:
+            found = self._robot_subject(i, taken)
+            if found is None:
+                i += 1
+                continue
+            first, verb, command = found
+            end = self._robot_clause_end(verb if verb is not None else i + 1, starts)
+            out.append(_RobotClause(list(range(first, end)), verb, command))
+            i = end
+        return out
+
+    def _robot_subject(self, i: int, taken: set[int]) -> tuple[int, int | None, bool] | None:
+        """(first word, verb index, command) when the robot (or "it" for it) is the subject at i."""
+        low = self.low
+        is_robot = low[i] in lx.ROBOT_WORDS
+        is_it = low[i] == "it" and any(x in lx.ROBOT_WORDS for x in low[:i]) and self.w[i].dep in ("nsubj", "")
+        if not (is_robot or is_it) or i in taken:
+            return None
+        first = i
+        if is_robot:
+            while first > 0 and not self._is_punct(first - 1) and (
+                    self.w[first - 1].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or low[first - 1] in lx.NP_MODIFIERS
+                    or (low[first - 1] == "-" and first > 1)) and low[first - 1] not in lx.CLAUSE_STARTERS \
+                    and low[first - 1] not in lx.PLACE_PREPOSITIONS and (first - 1) not in taken:
+                first -= 1  # "a delivery robot", "the small cleaning robot"
+        before = first - 1
+        command = before >= 0 and verb_lemma(low[before]) in lx.ROBOT_COMMAND_VERBS and (
+            before == 0 or self._is_punct(before - 1) or low[before - 1] in lx.CLAUSE_STARTERS | {"please"})
+        subject = (first == 0 or self._is_punct(before) or low[before] in lx.CLAUSE_STARTERS
+                   or self.w[before].sentence != self.w[first].sentence
+                   or (before >= 0 and self.w[before].pos == "NUM" and self.w[first].sentence == self.w[before].sentence
+                       and before > 0 and low[before - 1] == "at"))  # "At 9 the robot ..."
+        if command:
+            first = before
+        elif not subject:
+            return None
+        j = i + 1
+        while j < self.n and (self.w[j].pos == "ADV" or self.w[j].tag == "MD" or low[j] in ("then", "also", "now", "first")) \
+                and not self._is_punct(j):
+            j += 1
+        if j >= self.n or self._is_punct(j):
+            return None
+        if command:
+            if low[j] == "to" and j + 1 < self.n and self._verb_follows(j + 1):
+                return first, j + 1, True  # "tell the robot to wait by the door"
+            if self.w[j].pos == "VERB" or self.w[j].tag == "VB":
+                return first, j, True  # "have the robot patrol the lobby"
+            return first, None, True  # "send the robot to ward A": the sender's verb moves it
+        if verb_lemma(low[j]) == "be":
+            k = j + 1
+            while k < self.n and self.w[k].pos == "ADV":
+                k += 1
+            if k < self.n and self.w[k].tag == "VBN":
+                return None  # "the robot is followed by two children": the people's clause
+            if k < self.n and self.w[k].tag == "VBG":
+                return first, k, False  # "the robot is crossing the hall"
+            if k < self.n and self._preposition(k) is not None:
+                return first, j, False  # "the robot is in the lobby": it stays there
+            return None
+        if self.w[j].pos in ("VERB", "AUX") or self.w[j].tag.startswith("VB") or self._third_person_verb_after_robot(j):
+            return first, j, False
+        return None
+
+    def _third_person_verb_after_robot(self, j: int) -> bool:
+        """The small parser may tag the robot's verb a plural noun ("the robot rolls", "the robot
+        patrols"): an "-s" word the lexicon knows as a verb, right after the robot."""
+        word = self.low[j]
+        return word.endswith("s") and verb_lemma(word) != word and (
+            verb_lemma(word) in lx.INTENT_VERBS or verb_lemma(word) in lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS
+            | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS)
+
+    def _robot_clause_end(self, k: int, starts: set[int]) -> int:
+        """Where a robot clause from k ends: the next group's mention (less the words joining it),
+        a new subject after a clause word ("... as a family buys tickets"), a semicolon or colon, or
+        the end of the sentence."""
+        sentence = self.w[k].sentence if k < self.n else -1
+        j = k
+        while j < self.n and self.w[j].sentence == sentence and self.low[j] not in (";", ":"):
+            if j in starts:
+                break
+            if self.low[j] in lx.CLAUSE_STARTERS - {"and", "then", "with"} and j > k and \
+                    self._new_subject_after(j + 1):
+                break
+            if self.low[j] in ("and", ",") and j > k and self._new_subject_after(j + 1) and \
+                    not (j + 1 < self.n and self.low[j + 1] in lx.ROBOT_WORDS):
+                break
+            j += 1
+        while j > k and (self.low[j - 1] in lx.CLAUSE_STARTERS or self._is_punct(j - 1)
+                         or verb_lemma(self.low[j - 1]) in lx.SCENE_VERBS):
+            j -= 1  # "send the robot to the kitchen and have ...": not the robot's words
+        return j
+
+    def _new_subject_after(self, k: int) -> bool:
+        """Whether a new subject starts at k: a person phrase, a pronoun for people, or a starter."""
+        k = self._skip(k, {","} | (lx.CLAUSE_STARTERS - {"with"}))
+        if k >= self.n:
+            return False
+        if self.low[k] in ("they", "he", "she", "we", "people", "everyone", "everybody", "someone", "somebody",
+                           "nobody", "visitors", "staff"):
+            return True
+        q = self._quantifier(k)
+        start = q[2] if q is not None else self._skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
+        return start < self.n and self._person_head(start, counted=q is not None) is not None
+
+    def _robot_reading(self, clauses: Sequence[_RobotClause]) -> RobotReading | None:
+        """What the robot's clauses ask of it: a task from their verbs and the places by role."""
+        if not clauses:
+            return None
+        task: str | None = None
+        task_score, task_reason = 1.0, ""
+        start = destination = location = None
+        via: list[str] = []
+        follows: str | None = None
+        read_from: dict[str, _Place] = {}
+        texts: list[str] = []
+        for rc in clauses:
+            quiet, self.quiet = self.quiet, False
+            clause = self._clause(rc.tokens, set())
+            self.quiet = quiet
+            verb = self._verb(rc.verb) if rc.verb is not None else ""
+            has_places = any(p.match is not None for p in clause.places)
+            kind = self._robot_task(verb, clause, rc.command)
+            if kind is None:
+                if not has_places:
+                    continue
+                kind, task_score, task_reason = "cross", 0.6, f"'{verb}' is read as the robot going somewhere"
+            task = task or kind
+            if kind == "follow" and rc.verb is not None and follows is None:
+                k = self._skip(rc.verb + 1, {"close", "closely", "right", "just", "along", "behind", "after"})
+                end = self._skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
+                if end < self.n and (self._is_person_noun(end) or self.low[end] in ("him", "her", "them", "us")):
+                    follows = self._span(k, end)
+            stationary = kind in ("wait", "patrol")
+            for place in clause.places:
+                if place.match is None:
+                    continue
+                name = place.match.name
+                read_from.setdefault(name, place)
+                role = self._robot_role(place, rc.verb, stationary)
+                if role == "start" and start is None:
+                    start = name
+                elif role == "destination":
+                    destination = name
+                elif role == "location" and location is None:
+                    location = name
+                elif role == "via" and name not in via:
+                    via.append(name)
+            texts.append(self._span(rc.tokens[0], rc.tokens[-1]))
+        if task is None or (task == "cross" and not (start or destination or via)):
+            return None  # "when the robot comes near": it moves, but the sentence sets no route
+        if task in ("wait", "patrol") and location is None:
+            location = destination or (via[0] if via and task == "patrol" else None)
+            if location == destination:
+                destination = None
+            if location is not None and location in via:
+                via.remove(location)
+        confidence = _place_confidences({"start": start, "destination": destination, "location": location}, via,
+                                        read_from)
+        if task_score < 1.0:
+            confidence.insert(0, FieldConfidence("task", task_score, task_reason))
+        return RobotReading(task, start, destination, location, tuple(via), " ... ".join(texts), tuple(confidence),
+                            follows)
+
+    def _robot_task(self, verb: str, clause: _Clause, command: bool) -> str | None:
+        if verb in lx.ROBOT_FOLLOW_VERBS:
+            return "follow"
+        if verb in lx.ROBOT_PATROL_VERBS or lx.INTENT_VERBS.get(verb) == "wander" or clause.intent == "wander":
+            return "patrol"
+        if verb in lx.ROBOT_WAIT_VERBS or (verb and lx.INTENT_VERBS.get(verb) == "wait"):
+            return "wait"
+        if verb in lx.ROBOT_CROSS_VERBS or lx.INTENT_VERBS.get(verb) in ("walk", "evacuate") or \
+                (command and not verb):
+            return "cross"
+        return None
+
+    def _robot_role(self, p: _Place, verb_index: int | None, stationary: bool) -> str:
+        prep = p.prep
+        if prep in ("from", "obj:start", "out"):
+            return "start"
+        if stationary:
+            return "location"
+        if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for"):
+            return "destination"
+        if prep in lx.VIA_PREPOSITIONS or prep in ("obj:via", "obj:at"):
+            return "via"
+        if verb_index is not None and p.index < verb_index:
+            return "start"  # "the robot in the lobby drives to ward A"
+        return "via"  # "drives to ward A, stopping at the nurse station"
 
     def _already_gone(self, span: tuple[int, int]) -> bool:
         """Whether a clause says its people have left already: a verb of leaving in the perfect
@@ -1204,7 +1443,8 @@ class _Reader:
         zone = match.zone
         mention = _Mention(place.index, place.end - 1, f"everyone in {match.name}", "person", None, whole_zone=True)
         group = self._group(0, mention, clause, None, True, (0, self.n), [])
-        group = replace(group, who="everyone", text=self.prompt)
+        group = replace(group, who="everyone", text=self.prompt, confidence=group.confidence + (
+            FieldConfidence("group", 0.45, f"no people are named: everyone in {zone} is assumed"),))
         self.notes.append(f"no people are named: everyone in {zone} is evacuated")
         return PromptReading(self.prompt, (group,), tuple(dict.fromkeys(self.unknown)), tuple(self.notes))
 
@@ -1292,7 +1532,17 @@ class _Reader:
             return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)
         return j + 1
 
-    def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False) -> _Clause:
+    def _robot_clause_after(self, a: int, b: int, robot_clauses: Sequence[_RobotClause]) -> int | None:
+        """The first word of a robot clause that a group's clause leads into with a word of time
+        ("two patients step aside as it passes"): the group reacts to the robot there."""
+        for rc in robot_clauses:
+            r = rc.tokens[0]
+            if a < r <= b and r > 0 and self.low[r - 1] in ("as", "when", "whenever", "while", "once", "until"):
+                return r
+        return None
+
+    def _clause(self, toks: list[int], mention_tokens: set[int], scene: bool = False,
+                robot_after: int | None = None) -> _Clause:
         c = _Clause()
         low = self.low
         own = [i for i in toks if i not in mention_tokens]
@@ -1301,14 +1551,16 @@ class _Reader:
         # Robot interaction: phrases, then verbs, then feelings, when the robot is in the clause.
         # "it" is the robot after the robot was named in the sentence ("when the robot enters, they run up to it")
         robot_at = [i for i in own if low[i] in lx.ROBOT_WORDS or (
-            low[i] == "it" and any(low[k] in lx.ROBOT_WORDS and self.w[k].sentence == self.w[i].sentence
-                                   for k in range(i)))]
+            low[i] in ("it", "its") and any(low[k] in lx.ROBOT_WORDS for k in range(i)))]
+        if robot_after is not None:
+            robot_at.append(robot_after)  # "... step aside as it passes": the robot of the next clause
         for n_mention, r in enumerate(robot_at):
             if c.robot is not None:
                 break
             for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
-                if tuple(low[r + 1:r + 1 + len(phrase)]) == phrase:
-                    c.robot = interaction
+                if tuple(low[r + 1:r + 1 + len(phrase)]) == phrase or (
+                        low[r] == "its" and tuple(low[r:r + len(phrase)]) == ("its", *phrase[1:])):
+                    c.robot = interaction  # "stands in the robot's way", "blocks its path"
             # The verb closest before the robot governs it ("stop and stare at the robot": look); with
             # two mentions, the words since the one before ("curious about the robot and follow it").
             since = robot_at[n_mention - 1] if n_mention else -1
@@ -1439,7 +1691,8 @@ class _Reader:
                 i_pos += 1
                 continue
             v = self._verb(i)
-            object_verbs = lx.START_OBJECT_VERBS | lx.DESTINATION_OBJECT_VERBS | lx.LOCATION_OBJECT_VERBS
+            object_verbs = (lx.START_OBJECT_VERBS | lx.DESTINATION_OBJECT_VERBS | lx.LOCATION_OBJECT_VERBS
+                            | lx.VIA_OBJECT_VERBS)
             if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self._names_place(i + 1)):
                 # "skip the critical care and go to ...": a place they do not go to
                 place = self._place_phrase(i + 1, "obj:at", i, record_unknown=False)
@@ -1468,7 +1721,7 @@ class _Reader:
                     used.update(range(i, place.end))
             elif not self._after_determiner(i) and v in object_verbs:
                 if nxt in lx.DETERMINERS or (nxt and self.index.knows(lemma(nxt))):
-                    role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v == "cross"
+                    role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
                             else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
                     place = self._place_phrase(i + 1, role, i)
                     if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
@@ -1786,6 +2039,9 @@ class _Reader:
                 # "in the cafeteria evacuate", "across the hospital evacuate": the verb after the place or
                 # the building ("gift shop" is a noun)
                 break
+            if phrase and w in lx.DETERMINERS and j + 1 < self.n and self.w[j + 1].pos in ("NOUN", "PROPN", "ADJ", "NUM") \
+                    and not self._extends_name(phrase, j) and not self._whole_name([*phrase, w]):
+                break  # "on platform 2 a man sits": the place ends where a new noun phrase starts
             if w.isdigit() or w in lx.UNITS:
                 if not phrase:
                     break
@@ -1829,7 +2085,31 @@ class _Reader:
         if match is None:
             return None
         self.context_zones.append(match.zone)
-        return _Place(prep, at, tuple(phrase), match, j)
+        if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
+            self.frame_zones.append(match.zone)
+        score, reason, alternatives = self._match_confidence(phrase, lemmas, match)
+        return _Place(prep, at, tuple(phrase), match, j, score, reason, alternatives)
+
+    def _match_confidence(self, phrase: Sequence[str], lemmas: Sequence[str],
+                          match: PlaceMatch) -> tuple[float, str, tuple[str, ...]]:
+        """How sure a place match is, why, and the places that fit the phrase as well: a whole name or
+        alias found and no other place like it is sure; a place only sharing words with the phrase
+        is less so; two places scoring alike are unsure, unless a zone the prompt named before
+        decides between them."""
+        said = " ".join(phrase)
+        tied = [m for m in self.index.candidates(lemmas)
+                if m.name != match.name and m.score >= match.score - 1e-9
+                and not (match.kind == "zone" and m.zone == match.name)
+                and not (m.kind == "zone" and match.zone == m.name)]
+        alternatives = tuple(dict.fromkeys(m.name for m in tied))[:4]
+        if alternatives and match.zone in self.context_zones[:-1]:
+            return (0.7, f"'{said}' fits {len(alternatives) + 1} places; {match.name} is in {match.zone}, "
+                         f"named before", alternatives)
+        if alternatives:
+            return 0.4, f"'{said}' fits {match.name} and {', '.join(alternatives)} alike", alternatives
+        if not match.exact:
+            return 0.75, f"'{said}' shares words with {match.name} but is not its name", ()
+        return 1.0, "", ()
 
     def _whole_name(self, phrase: Sequence[str]) -> bool:
         """Whether the words are exactly a name or alias of a place (determiners aside)."""
@@ -1851,14 +2131,24 @@ class _Reader:
     def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
         """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
         has already named ("Gate A1: ... staff at the desk")."""
-        if match is None or not self.context_zones:
+        if match is None or not self.context_zones or match.zone in self.context_zones:
             return match
-        tied = [m for m in self.index.candidates(lemmas) if m.score >= match.score - 1e-9]
-        if len(tied) < 2 or match.zone in self.context_zones:
-            return match
+        candidates = self.index.candidates(lemmas)
+        tied = [m for m in candidates if m.score >= match.score - 1e-9]
         for zone in reversed(self.context_zones):
             for m in tied:
                 if m.zone == zone:
+                    return m
+        if match.kind != "entity":
+            return match  # a room or door named outright is that one, wherever the sentence was before
+        # "On platform 2 a man sits on the bench": a fixture of the zone named before, called by the
+        # phrase's own head word, though another zone's fixture has it as its whole name
+        # (only a zone the people are in, "on platform 2", "in the pharmacy", not one they leave)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        for zone in reversed(self.frame_zones):
+            for m in candidates:
+                entry = self.index.entry(m.name)
+                if m.zone == zone and m.kind == "entity" and entry is not None and set(content) <= entry.tokens:
                     return m
         return match
 
@@ -1935,10 +2225,12 @@ class _Reader:
         verb = c.verb or ""
         verb_index = c.verb_index
         said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
+        read_from: dict[str, _Place] = {}  # the place phrase each named place was read from
         for p in places + scene_places:
             name = p.match.name if p.match is not None else None
             if name is None:
                 continue
+            read_from.setdefault(name, p)
             role = self._role(p, verb, verb_index, stationary, intent, p in scene_places)
             marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
             if role == "start" and (start is None or self._narrower(name, start)):
@@ -2010,13 +2302,44 @@ class _Reader:
         wait = c.wait_seconds
         if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
             wait = scene.wait_seconds
+        confidence = self._count_confidence(m, count) + _place_confidences(
+            {"start": start, "destination": destination, "location": location}, via, read_from)
+        if robot is not None and c.robot is None and scene is not None and scene.robot is not None:
+            confidence.append(FieldConfidence("robot_interaction", 0.7, "read from the sentence's words about the "
+                                                                      "robot, not from this group's own"))
         return GroupReading(
             who=m.who, label=m.label, count=count, intent=intent,
             robot_interaction=interaction, robot_reaction=lx.ROBOT_REACTIONS.get(interaction) if interaction else None,
             start=start, destination=destination, location=location, via=tuple(via),
             purpose=c.purpose or (scene.purpose if scene is not None else None), wait_seconds=wait,
             together=together, pace=pace, relation=m.relation, follows=c.follows,
-            text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end] if span[1] > span[0] else m.who)
+            text=self.prompt[self.w[span[0]].start:self.w[span[1] - 1].end] if span[1] > span[0] else m.who,
+            confidence=tuple(confidence))
+
+    def _count_confidence(self, m: _Mention, count: Count) -> list[FieldConfidence]:
+        """How sure a count is: said outright (not listed), approximate, a vague word's range, a
+        collective's usual size, a share of a zone's floor, or no number at all (a guess)."""
+        said = f"'{m.who}'"
+        if count.kind in ("exact", "structured", "exclusive"):
+            return []
+        if count.kind == "approximate":
+            return [FieldConfidence("count", 0.9, f"{said}: about {count.value} ({count.low}-{count.high})")]
+        if count.kind == "whole_zone":
+            return [FieldConfidence("count", 0.6, f"{said}: {count.value} people from the place's floor area "
+                                                  f"({count.low}-{count.high})")]
+        if count.kind == "implied" and m.collective is not None:
+            return [FieldConfidence("count", 0.65, f"the size of {said} is not said: {count.value} chosen in "
+                                                   f"{count.low}-{count.high}")]
+        if count.kind == "implied":
+            return [FieldConfidence("count", 0.8, f"{said}: {count.value}, from the rest of the sentence")]
+        first = self.low[m.first]
+        worded = self._quantifier(m.first) is not None or first in ("others", "other", "rest") or \
+            self.low[m.first] in ("a", "an") or (first == "the" and m.relation is not None)
+        if worded:
+            return [FieldConfidence("count", 0.7, f"{said} gives no number: {count.value} chosen in "
+                                                  f"{count.low}-{count.high}")]
+        return [FieldConfidence("count", 0.5, f"no number is given for {said}: {count.value} guessed in "
+                                              f"{count.low}-{count.high}", (str(count.low), str(count.high)))]
 
     def _count_after_comma(self, m: _Mention, span: tuple[int, int]) -> Count | None:
         """A count said on its own after the group's phrase, between a comma and the clause's end:

@@ -15,7 +15,7 @@ import re
 from functools import lru_cache
 
 from grove_tui.language.lexicon import (EVACUATION_PHRASES, INTENT_VERBS, NUMBER_WORDS, PERSON_NOUNS, ROBOT_PHRASES,
-                                        ROBOT_VERBS, STOPWORDS, URGENT_EXIT_PHRASES, ZONE_EMPTYING_VERBS)
+                                        ROBOT_VERBS, STOPWORDS, UNITS, URGENT_EXIT_PHRASES, ZONE_EMPTYING_VERBS)
 
 _IRREGULAR_NOUNS = {
     "people": "person", "persons": "person", "children": "child", "men": "man", "women": "woman",
@@ -120,8 +120,15 @@ def name_tokens(text: str) -> list[str]:
 
 def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
     """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
-    letter after the first word, which tells places apart ("ward a", "check-in counter b")."""
-    return [lemma(w) for k, w in enumerate(ws) if w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha())]
+    letter after the first word, which tells places apart ("ward a", "check-in counter b"), and a
+    number word after it, read as its digits ("platform one" is "platform 1", not any platform)."""
+    out: list[str] = []
+    for k, w in enumerate(ws):
+        if k > 0 and w in UNITS and UNITS[w] > 0:
+            out.append(str(UNITS[w]))
+        elif w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha()):
+            out.append(lemma(w))
+    return out
 
 
 # ---- crude stems for matching node-document phrases against a prompt (generation/retrieval.py) ----

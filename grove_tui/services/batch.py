@@ -17,6 +17,7 @@ from grove_tui.services.dataset import (
     append_record,
     check_index_format,
     completed_jobs,
+    index_path,
     job_inputs_hash,
     model_identity,
     record_outcome,
@@ -49,6 +50,10 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
     the workers that cannot see `out_dir` do). `index_format`: "sqlite" or "parquet" (needs pyarrow).
     """
     check_index_format(index_format)  # before any job runs: a missing pyarrow must not cost a batch
+    if ray_address is not None:
+        from grove_tui.services.cluster import require_ray
+
+        require_ray()  # likewise a missing Ray: one error line, nothing read or written
     if jobs and ray_address is None:
         # Models, embedder and reader load while the inputs are hashed and checked for resume (the
         # model files are read whole for the hash); the first job waits only for what is left.
@@ -82,6 +87,9 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
 
             session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)
     finally:
-        # Also after a model error or Ctrl+C: the index shows what is done, failed and still pending.
-        index = write_index(out_dir, jobs, index_format)
-    return BatchResult(records, skipped, index)
+        # Also after a model error or Ctrl+C: the index shows what is done, failed and still pending. A
+        # batch stopped before its folder existed has nothing to index (and sqlite's "unable to open"
+        # would hide why it stopped).
+        if out_dir.is_dir():
+            write_index(out_dir, jobs, index_format)
+    return BatchResult(records, skipped, index_path(out_dir, index_format))

@@ -29,7 +29,8 @@ from functools import cache
 from pathlib import Path, PurePosixPath
 from typing import Any
 
-from grove_tui.errors import EXIT_CANCELLED, EXIT_RUNTIME_FAILURE, Cancelled, GroveError, ModelError, RuntimeFailure
+from grove_tui.errors import EXIT_CANCELLED, EXIT_RUNTIME_FAILURE, Cancelled, GroveError, ModelError, \
+    RuntimeFailure, require_extra
 from grove_tui.files import absolute_path, write_bytes_atomic, write_files_atomic, write_text_atomic
 from grove_tui.scenario.bundle import write_bundle_files
 from grove_tui.services.dataset import JobRecord, record_outcome
@@ -48,9 +49,12 @@ PROBE_PREFIX = ".grove-ray-probe-"
 JobFiles = tuple[tuple[str, bytes], ...]
 
 
-class RayUnavailable(RuntimeFailure):
-    title = "Ray is not installed"
-    hint = "Install the cluster extra: ./install.sh cluster (or pip install 'grove-tui[cluster]')."
+RAY_INSTALL = "Install the cluster extra: ./install.sh cluster (or pip install 'grove-tui[cluster]')."
+
+
+def require_ray() -> None:
+    """MissingExtraError (exit 2) unless Ray imports here: checked before a batch reads or writes anything."""
+    require_extra("`--ray`", "Ray", ["ray"], RAY_INSTALL)
 
 
 class BatchWorker:
@@ -180,10 +184,9 @@ def write_returned_files(out_dir: Path, name: str, files: JobFiles, overwrite: b
 
 
 def _import_ray() -> Any:
-    try:
-        import ray
-    except ImportError:
-        raise RayUnavailable("`--ray` needs Ray, which this install does not have") from None
+    require_ray()
+    import ray
+
     return ray
 
 

@@ -23,7 +23,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from grove_tui.errors import DatasetError, describe_error
+from grove_tui.errors import DatasetError, describe_error, require_extra
 from grove_tui.files import atomic_file
 
 if TYPE_CHECKING:
@@ -185,15 +185,20 @@ def check_index_format(index_format: str) -> None:
         _pyarrow()
 
 
+PYARROW_INSTALL = "pip install 'grove-tui[parquet]', or keep the default --index sqlite."
+
+
 def _pyarrow() -> tuple[Any, Any]:
-    try:
-        import pyarrow
-        import pyarrow.parquet
-    except ImportError:
-        raise DatasetError("dataset.parquet needs pyarrow, which this install does not have",
-                           title="pyarrow is not installed",
-                           hint="pip install pyarrow, or keep the default --index sqlite.") from None
+    require_extra("dataset.parquet", "pyarrow", ["pyarrow", "pyarrow.parquet"], PYARROW_INSTALL)
+    import pyarrow
+    import pyarrow.parquet
+
     return pyarrow, pyarrow.parquet
+
+
+def index_path(out_dir: Path, index_format: str = "sqlite") -> Path:
+    """Where `write_index` puts the dataset index of `out_dir` in `index_format`."""
+    return out_dir / (PARQUET_FILE if index_format == "parquet" else INDEX_FILE)
 
 
 def write_index(out_dir: Path, jobs: Iterable[BatchJob], index_format: str = "sqlite") -> Path:

@@ -13,7 +13,7 @@ import pytest
 from click.testing import CliRunner
 
 from grove_tui.cli import main
-from grove_tui.errors import EXIT_BAD_INPUT, DatasetError
+from grove_tui.errors import EXIT_BAD_INPUT, DatasetError, MissingExtraError
 from grove_tui.services.dataset import (
     COLUMNS,
     INDEX_FILE,
@@ -107,9 +107,9 @@ def test_a_broken_parquet_index_is_named(batch_out):
 def test_parquet_without_pyarrow_is_refused_before_any_job(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "pyarrow", None)  # what `import pyarrow` meets in an install without it
     monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)
-    with pytest.raises(DatasetError, match="needs pyarrow") as caught:
+    with pytest.raises(MissingExtraError, match="needs pyarrow") as caught:
         check_index_format("parquet")
-    assert "--index sqlite" in caught.value.hint
+    assert "--index sqlite" in caught.value.hint and "grove-tui[parquet]" in caught.value.hint
     jobs = tmp_path / "jobs.jsonl"
     jobs.write_text(json.dumps({"world": "hospital", "preset": "normal", "prompt": "Two nurses walk"}) + "\n",
                     encoding="utf-8")
