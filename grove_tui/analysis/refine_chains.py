@@ -179,7 +179,7 @@ def _activity(tree: Mapping[str, Any], world: Any) -> tuple[str, frozenset[str]]
     if last_go >= 0:
         place = _place(nodes[last_go])
         exits = {d.name for d in world.exits()}
-        if place in exits:
+        if place is not None and place in exits:
             return "walk", frozenset({place, "exit"}) | _zones(world, [place])
         return "walk", _zones(world, [place])
     return "idle", frozenset()

@@ -313,6 +313,11 @@ def _robot_task(predicate: str, ctx: _Context) -> RobotReading | None:
             return None
         return RobotReading("cross", start=place if start is not None else None,
                             destination=place if end is not None else None, text=predicate)
+    said = read_prompt(f"the robot {predicate}", ctx.world, seed=ctx.seed)
+    if said.robot is not None and not said.groups and not any(c.unsure for c in said.robot.confidence):
+        _note_unknown(said.unknown_places, ctx)
+        return replace(said.robot, text=predicate)
+    # the same words said of a person, read as the reader reads people
     reading = read_prompt(f"a person {predicate}", ctx.world, seed=ctx.seed)
     _note_unknown(reading.unknown_places, ctx)
     if not reading.groups:
