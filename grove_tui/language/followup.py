@@ -577,6 +577,12 @@ def _resolve(phrase: str, ctx: _Context, label: str | None = None) -> GroupRef:
     if label and label not in lx.GENERIC_PEOPLE and label not in person_words and label != "group":
         person_words.append(label)
     narrowed = False
+    generic = [lemma(w) for w in content if lemma(w) in lx.GENERIC_PEOPLE]
+    if not person_words and generic:
+        # "the people" of a scenario that has a group the sentence called people is that group
+        named = [i for i in candidates if lemma(_group(i, ctx).label) in lx.GENERIC_PEOPLE]
+        if named:
+            candidates, narrowed = named, True
     if person_words:
         candidates = [i for i in candidates if _names_group(person_words, _group(i, ctx))]
         narrowed = True

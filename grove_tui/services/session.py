@@ -435,9 +435,15 @@ class GroveSession:
     def replan(self, generated: GeneratedScenario, counts: dict[int, int], out_dir: str | Path, *,
                seed: int | None = None, on_event: EventSink | None = None,
                cancel: threading.Event | None = None) -> GeneratedScenario:
-        """The same draft with new head counts (group index -> count), re-planned without a model call."""
+        """The same draft with new head counts (group index -> count), re-planned without a model call.
+
+        A scenario that keeps no draft (opened from a bundle, or refined) changes its counts as a
+        refinement: the other groups stay byte for byte, and the edit is a step of its history."""
         from grove_tui.generation.pipeline import GenerationPipeline
 
+        if generated.result.inputs is None and generated.result.report.get("groups"):
+            return self.refine(generated, self._count_refinement(generated, counts), out_dir, on_event=on_event,
+                               cancel=cancel)
         preset = self.load_preset(generated.preset)
         pipeline = GenerationPipeline(generated.world, preset, None, None, None)
         result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
@@ -516,6 +522,27 @@ class GroveSession:
         bundle = self.write_bundle(result, out_dir, overwrite=overwrite)
         return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, generated.seed,
                                  generated.world, result, bundle)
+
+    def _count_refinement(self, generated: GeneratedScenario, counts: dict[int, int]) -> Refinement:
+        """Head counts typed per group (the app's count dialog) as a refinement of their groups."""
+        from grove_tui.generation.refine import plan_refinement
+        from grove_tui.generation.scene import scene_of
+        from grove_tui.language.edits import CountChange, EditReading, GroupEdit, GroupRef
+
+        scene = scene_of(generated.result, generated.world)
+        most = self.load_preset(generated.preset).limits.max_count
+        edits = []
+        for index, count in sorted(counts.items()):
+            if not 0 <= index < len(scene.groups):
+                raise BadInputError(f"there is no group {index + 1}: this scenario has {len(scene.groups)}")
+            if not 1 <= int(count) <= most:
+                raise PromptError(f"group '{scene.groups[index].label}': {count} people is out of range; preset "
+                                  f"'{generated.preset}' allows 1 to {most} per group")
+            label = scene.groups[index].label
+            edits.append(GroupEdit("change", f"{label} {count}", GroupRef(label, (index,)), None, ("count",),
+                                   CountChange("set", float(count))))
+        sentence = "counts: " + ", ".join(e.text for e in edits)
+        return plan_refinement(scene, EditReading(sentence, tuple(edits)))
 
     def _planning_pipeline(self, generated: GeneratedScenario) -> GenerationPipeline:
         """A pipeline for post-processing and planning only (no model loads): count, pace and robot edits."""
