@@ -444,6 +444,9 @@ def _addition(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit] | Non
             return _additions(rest, ctx, text=text)
     if "add" in cues and _has_people(text, ctx) and not _subject_names_group(text, ctx):
         return _additions(text, ctx, text=text)
+    subject, _ = _subject(text)
+    if set(words(subject)) & MORE_WORDS and _has_people(text, ctx):
+        return _additions(text, ctx, text=text)  # "a few more visitors", "another nurse waits at reception"
     return None
 
 

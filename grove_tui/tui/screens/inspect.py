@@ -132,7 +132,8 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
                 tooltip="Edit each group's head count and re-plan, without the model"),
         Binding("e", "export", "Export", id="inspect.export", tooltip="Export the bundle"),
         Binding("f", "followup", "Follow-up", id="inspect.followup",
-                tooltip="Type a sentence that edits the scenario (add, change, remove a group; the robot)"),
+                tooltip="Type a sentence that edits the scenario (add, change, remove a group; the robot)",
+                show=False),  # not in the footer at 80 columns: the box itself says "f: follow-up"
         Binding("ctrl+z", "undo", "Undo", id="inspect.undo", tooltip="Undo the last edit (follow-up or counts)",
                 show=False),
         Binding("ctrl+y", "redo", "Redo", id="inspect.redo", tooltip="Redo the edit undone last", show=False),

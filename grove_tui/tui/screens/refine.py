@@ -173,7 +173,8 @@ several groups, press the number of the one you mean.
         self.refinement = message.refinement
         self.state = "ready"
         self.query_one("#refine-diff", Static).update("\n".join(message.refinement.diff.lines()))
-        model = "the model writes the new and changed groups" if message.refinement.calls_model else "no model call"
+        written = sum(1 for g in message.refinement.groups if g.regenerate)
+        model = f"the model writes {written} group(s)" if written else "no model call"
         self._status(f"Enter applies ({model}) · Escape cancels")
         apply = self.query_one("#refine-apply", Button)
         apply.disabled = False
