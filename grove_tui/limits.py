@@ -31,6 +31,17 @@ MAX_NUMBER_DIGITS = 1000
 # emergency preset allows this many, spread over the building when the prompt places them nowhere.
 # 500 is the dense hospital evacuation of bench/evacuation.py (docs/HOSTILE.md).
 MAX_GROUP_COUNT = 500
+# Groups in one scenario: the draft grammar's bound (generation/draft.py), so generation never writes
+# more than MAX_GROUPS * MAX_GROUP_COUNT people; an imported scenario is held to the same.
+MAX_GROUPS = 16
+MAX_SCENARIO_AGENTS = MAX_GROUPS * MAX_GROUP_COUNT
+
+# Coordinates in metres a scenario can use: the bound of the behavior-tree ports that carry points
+# (GoTo x/y, bt/manifest.py). A world, an imported scenario or a bundle beyond it would load and then
+# fail at generation ("GoTo port x above maximum 10000"), so every reader refuses it up front.
+MAX_COORDINATE = 10_000.0
+# Grids and velocity fields pad the world by a few cells: their stored origins may lie this far out.
+MAX_PADDED_COORDINATE = MAX_COORDINATE + 100.0
 
 YamlPath = tuple[str | int, ...]
 
@@ -102,13 +113,14 @@ def _human(size: int) -> str:
 # YAML
 
 
-def compose_yaml(text: str) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:
+def compose_yaml(text: str, locate: bool = True) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:
     """Parse YAML with safe semantics, checking the node graph against the limits first.
 
     Returns (data, line of every node by its path, paths of repeated mapping keys, each ending in
     "#repeat"). The node graph is walked before Python objects are constructed, so a recursive alias
     or an alias bomb never reaches the constructor or the caller's validators. Broken YAML raises
-    yaml.YAMLError (with marks); a limit raises InputLimitError.
+    yaml.YAMLError (with marks); a limit raises InputLimitError. Without `locate` the limits are checked
+    but no line map is made (lines and repeated come back empty): several times faster on big files.
     """
     loader = _SAFE_LOADER(text)
     try:
@@ -119,7 +131,11 @@ def compose_yaml(text: str) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:
             raise InputLimitError(f"the YAML nests more than {MAX_YAML_DEPTH} levels deep") from None
         if node is None:
             return None, {}, []
-        lines, repeated = _walk_nodes(node)
+        if locate:
+            lines, repeated = _walk_nodes(node)
+        else:
+            lines, repeated = {}, []
+            _check_limits(node)
         try:
             data = loader.construct_document(node)
         except (ValueError, OverflowError) as exc:
@@ -182,14 +198,18 @@ def _measure(root: yaml.Node) -> None:
         stack.extend((kid, None) for kid in kids if not isinstance(kid, yaml.ScalarNode) and id(kid) not in size)
 
 
-def _walk_nodes(root: yaml.Node) -> tuple[dict[YamlPath, int], list[YamlPath]]:
-    """Line of every node by its YAML path, and repeated keys; the graph is measured first, so the
-    walk is bounded in size and depth and has no cycles."""
+def _check_limits(root: yaml.Node) -> None:
     if isinstance(root, yaml.ScalarNode):
         if len(root.value) > MAX_NUMBER_DIGITS and root.tag.endswith((":int", ":float")):
             raise InputLimitError(f"a number with {len(root.value):,} digits is out of range", 1)
     else:
         _measure(root)
+
+
+def _walk_nodes(root: yaml.Node) -> tuple[dict[YamlPath, int], list[YamlPath]]:
+    """Line of every node by its YAML path, and repeated keys; the graph is measured first, so the
+    walk is bounded in size and depth and has no cycles."""
+    _check_limits(root)
     lines: dict[YamlPath, int] = {}
     repeated: list[YamlPath] = []
     stack: list[tuple[yaml.Node, YamlPath]] = [(root, ())]
@@ -213,7 +233,7 @@ def _walk_nodes(root: yaml.Node) -> tuple[dict[YamlPath, int], list[YamlPath]]:
 def load_yaml_bounded(text: str, what: str) -> Any:
     """The data of a YAML text under the limits; any problem is one InputLimitError naming `what`."""
     try:
-        return compose_yaml(text)[0]
+        return compose_yaml(text, locate=False)[0]
     except InputLimitError as exc:
         where = f" (line {exc.line})" if exc.line else ""
         raise InputLimitError(f"{what}{where}: {exc}", exc.line) from None

@@ -3,17 +3,19 @@
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from grove_tui.files import write_text_atomic
+from grove_tui.files import check_output_file, write_text_atomic
 from grove_tui.analysis.metrics import (MetricsReport, Trajectories, compute_metrics, compute_metrics_csv,
                                         iter_trajectory_chunks)
 from grove_tui.scenario.events import read_events
-from grove_tui.scenario.bundle import load_scenario
+from grove_tui.errors import MetricsError
+from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle_world, load_scenario
+from grove_tui.scenario.events import MAX_EVENTS_BYTES
 from grove_tui.scenario.model import Scenario
-from grove_tui.world import load_world
 
 TRAJECTORIES = "trajectories.csv"
 EVENTS = "events.jsonl"
@@ -21,22 +23,38 @@ METRICS = "metrics.json"
 
 
 def bundle_metrics(bundle_dir: str | Path, write: bool = True) -> tuple[MetricsReport, Path]:
+    """The run's metrics, kept in the bundle's metrics.json (`write`).
+
+    The run files are read only as regular files inside the bundle, of bounded size (a link to
+    /dev/zero or a pipe is refused before it is opened); metrics.json is replaced atomically and
+    never through a link (a link there is refused: it could point at any file).
+    """
     bundle = Path(bundle_dir)
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
-    events_path = bundle / EVENTS
-    events = read_events(events_path) if events_path.exists() else []
+    world = load_bundle_world(bundle, scenario)
+    path = bundle / METRICS
+    if write:  # before the work: a refused output costs nothing
+        check_output_file(path, **_METRICS_GUARD, own_folder=bundle)
+    if not os.path.lexists(bundle / TRAJECTORIES):
+        raise MetricsError(f"{bundle / TRAJECTORIES}: no trajectory file (simulate the bundle first)")
+    trajectories = bundle_member(bundle, TRAJECTORIES, "trajectory file", MAX_TRAJECTORY_BYTES)
+    events = (read_events(bundle_member(bundle, EVENTS, "event log", MAX_EVENTS_BYTES))
+              if os.path.lexists(bundle / EVENTS) else [])
     # Streamed a block of frames at a time: a long run's CSV is never held in memory whole.
-    report = compute_metrics_csv(bundle / TRAJECTORIES, **metrics_options(scenario, world, events))
-    ids, _groups, chunks = iter_trajectory_chunks(bundle / TRAJECTORIES)
+    report = compute_metrics_csv(trajectories, **metrics_options(scenario, world, events))
+    ids, _groups, chunks = iter_trajectory_chunks(trajectories)
     accumulator = _hunav2_accumulator(scenario, world, len(ids))
     for chunk in chunks:
         accumulator.add(chunk)
     report.robot.update(accumulator.result())
-    path = bundle / METRICS
     if write:
-        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n")
+        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, sort_keys=True) + "\n", **_METRICS_GUARD,
+                          own_folder=bundle)
     return report, path
+
+
+# metrics.json is the bundle's own file: any regular file there is replaced, a link or a folder never.
+_METRICS_GUARD: dict = dict(owned=lambda _path: True, what="metrics file")
 
 
 def scenario_metrics(scenario: Scenario, world: Any, traj: Trajectories, events: Sequence[Any]) -> MetricsReport:

@@ -313,20 +313,33 @@ def room_with_exits(exits: tuple[str, ...]) -> str:
          [(name, doors[name][0], doors[name][1], "outside", True) for name in exits])])
 
 
-def test_9_exits(params: SFMParams | JuPedSimModel, people: int = 1000) -> RimeaResult:
-    """A 30 x 20 m room of `people` leaves through 4 exits, then through 2: the time about doubles."""
-    starts = _grid_of_people(0.6, 29.4, 0.6, 19.4, people, 2.0 * PRODUCT_RADIUS + 0.02)
+def test_9_exits(params: SFMParams | JuPedSimModel, people: int = 1000, runs: int = 3) -> RimeaResult:
+    """A 30 x 20 m room of `people` leaves through 4 exits, then through 2: the time about doubles.
+
+    A crowd draining through 1 m doors is chaotic: a millimetre more or less at the start decides
+    whether an arch jams a door for seconds (one run's 4-exit time ranged 37.7-43.6 s over such
+    starts). So, as RiMEA asks of evacuation times, each configuration runs `runs` times from
+    starts shifted by under a millimetre, and the median time counts.
+    """
+    base = _grid_of_people(0.6, 29.4, 0.6, 19.4, people, 2.0 * PRODUCT_RADIUS + 0.02)
     times = []
     for exits in (("exit_nw", "exit_ne", "exit_se", "exit_sw"), ("exit_nw", "exit_sw")):
         world = _load(room_with_exits(exits), f"rimea_9_{len(exits)}_exits.yaml")
-        run = evacuate(world, starts, _nearest_exit(world, starts, list(exits), PRODUCT_RADIUS), params,
-                       limit=60.0 + 1.5 * people)
-        if run.unfinished():
-            return RimeaResult(9, f"room of {people}, 4 exits then 2", f"{run.unfinished()} ({len(exits)} exits)",
-                               "T(2)/T(4) about 2 (1.7-2.3)", False)
-        times.append(max(run.time_of.values()))
+        choice = _nearest_exit(world, base, list(exits), PRODUCT_RADIUS)
+        finished = []
+        for run_index in range(max(runs, 1)):
+            rng = np.random.default_rng(run_index)
+            shift = 0.0 if run_index == 0 else 0.001
+            starts = [(x + shift * rng.uniform(-1, 1), y + shift * rng.uniform(-1, 1)) for x, y in base]
+            run = evacuate(world, starts, choice, params, limit=60.0 + 1.5 * people)
+            if run.unfinished():
+                return RimeaResult(9, f"room of {people}, 4 exits then 2", f"{run.unfinished()} ({len(exits)} exits)",
+                                   "T(2)/T(4) about 2 (1.7-2.3)", False)
+            finished.append(max(run.time_of.values()))
+        times.append(float(np.median(finished)))
     ratio = times[1] / times[0]
-    return RimeaResult(9, f"room of {people}, 4 exits then 2", f"{times[0]:.1f} s / {times[1]:.1f} s, ratio {ratio:.2f}",
+    return RimeaResult(9, f"room of {people}, 4 exits then 2",
+                       f"{times[0]:.1f} s / {times[1]:.1f} s, ratio {ratio:.2f} (median of {max(runs, 1)})",
                        "T(2)/T(4) about 2 (1.7-2.3)", 1.7 <= ratio <= 2.3)
 
 

@@ -28,6 +28,8 @@ from dataclasses import dataclass
 from typing import Any
 from lxml import etree
 
+from grove_tui.limits import MAX_COORDINATE
+
 CATEGORIES = ("control", "decorator", "action", "condition")
 PORT_TYPES = ("int", "float", "bool", "string", "target", "agent", "agents", "point_list")
 PRESETS = ("emergency", "queuing", "normal", "vanilla")
@@ -142,9 +144,9 @@ def _target(name="target", what="Region of interest to go to") -> PortSpec:
 def _xy() -> tuple[PortSpec, PortSpec]:
     return (
         _in("x", "float", None, "Resolved x of the target point in metres (post-processing).", auto=True,
-            min=-1e4, max=1e4),
+            min=-MAX_COORDINATE, max=MAX_COORDINATE),
         _in("y", "float", None, "Resolved y of the target point in metres (post-processing).", auto=True,
-            min=-1e4, max=1e4),
+            min=-MAX_COORDINATE, max=MAX_COORDINATE),
     )
 
 
@@ -374,8 +376,10 @@ _node("IsAgentClose", "condition", (
 _node("IsAtPosition", "condition", (
     _agent_id(),
     _in("goal_id", "int", None, "Id of a global goal (HuNavSim 2.0) to compare with.", auto=True, min=1, max=100000),
-    _in("target_x", "float", None, "x of the position (HuNavSim d5b716b variant).", auto=True, min=-1e4, max=1e4),
-    _in("target_y", "float", None, "y of the position (HuNavSim d5b716b variant).", auto=True, min=-1e4, max=1e4),
+    _in("target_x", "float", None, "x of the position (HuNavSim d5b716b variant).", auto=True,
+        min=-MAX_COORDINATE, max=MAX_COORDINATE),
+    _in("target_y", "float", None, "y of the position (HuNavSim d5b716b variant).", auto=True,
+        min=-MAX_COORDINATE, max=MAX_COORDINATE),
     _in("tolerance", "float", 0.1, "Distance in metres.", min=0.0, max=10.0),
 ), """
     Succeeds when the agent stands within tolerance of a global goal (goal_id) or of target_x/target_y.

@@ -54,10 +54,13 @@ def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grov
 @export.command("trajectories")
 @_bundle_argument
 @click.option("--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
-              help="Directory for trajectories.csv and trajectories.sqlite (PedPy / JuPedSim schema).")
-def export_trajectories_command(bundle: Path, out_dir: Path) -> None:
+              help="Folder for trajectories.csv, .sqlite (PedPy / JuPedSim schema) and .txt (created; a previous "
+                   "trajectories export is replaced, any other non-empty folder is refused).")
+@click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a trajectories "
+                                                 "export.")
+def export_trajectories_command(bundle: Path, out_dir: Path, overwrite: bool) -> None:
     """Trajectories as CSV and as a JuPedSim sqlite file that PedPy loads, with the walkable area."""
-    paths = GroveSession().export("trajectories", bundle, out_dir)
+    paths = GroveSession().export("trajectories", bundle, out_dir, overwrite=overwrite)
     for path in paths:
         click.echo(str(path))
 
@@ -100,11 +103,10 @@ def metrics(bundle: Path, as_json: bool) -> None:
 def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
     from grove_tui.exports.pictures import draw_scenario, render_scenario_text
-    from grove_tui.scenario.bundle import load_scenario
-    from grove_tui.world import load_world
+    from grove_tui.scenario.bundle import load_bundle_world, load_scenario
 
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
+    world = load_bundle_world(bundle, scenario)
     if out_path is None:
         console = Console()
         console.print(render_scenario_text(world, scenario, width or console.width))
@@ -134,9 +136,11 @@ def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: 
 @export.command("foxglove")
 @_bundle_argument
 @click.option("--out", "out_path", required=True, type=click.Path(dir_okay=False, path_type=Path),
-              help="The .mcap file to write; its Foxglove layout goes beside it as <name>.layout.json.")
-def export_foxglove_command(bundle: Path, out_path: Path) -> None:
+              help="The .mcap file to write; its Foxglove layout goes beside it as <name>.layout.json (a previous "
+                   "export is replaced; any other file is refused).")
+@click.option("--overwrite", is_flag=True, help="Replace --out and its layout file even when GROVE did not write them.")
+def export_foxglove_command(bundle: Path, out_path: Path, overwrite: bool) -> None:
     """Foxglove MCAP of a simulated bundle (SceneUpdate, Grid, Log) and a layout that shows it in 3D."""
-    result = GroveSession().export("foxglove", bundle, out_path)
+    result = GroveSession().export("foxglove", bundle, out_path, overwrite=overwrite)
     click.echo(str(result.mcap))
     click.echo(str(result.layout))

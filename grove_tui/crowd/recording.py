@@ -185,6 +185,36 @@ class TrajectoryRecorder:
             for start in range(0, chunk.shape[0], chunk_rows):
                 yield chunk[start:start + chunk_rows]
 
+    @property
+    def recorded_rows(self) -> int:
+        """Rows recorded since the start, dropped ones included: where `rows_from` would start next."""
+        return self._dropped + self._spilled + self._count
+
+    def rows_from(self, start: int) -> np.ndarray:
+        """A copy of the rows recorded from row `start` on (counted as `recorded_rows` counts them).
+
+        Reads only those rows from the spill file, so following a long run (the app's live counters)
+        costs the new rows each time, not the whole run. Rows a ring buffer dropped cannot be read.
+        """
+        if start < self._dropped:
+            raise RecordingError(f"rows before {self._dropped} were dropped by the ring buffer; asked from {start}")
+        index = start - self._dropped
+        parts: list[np.ndarray] = []
+        if index < self._spilled and self._spill_file is not None:
+            self._spill_file.flush()
+            row_bytes = ROW_DTYPE.itemsize
+            self._spill_file.seek(index * row_bytes)
+            parts.append(np.frombuffer(self._spill_file.read((self._spilled - index) * row_bytes), dtype=ROW_DTYPE))
+            index = self._spilled
+        skip = index - self._spilled
+        for chunk in self._buffered_chunks():
+            if skip >= chunk.shape[0]:
+                skip -= chunk.shape[0]
+                continue
+            parts.append(chunk[skip:].copy())
+            skip = 0
+        return np.concatenate(parts) if parts else np.zeros(0, dtype=ROW_DTYPE)
+
     def to_array(self) -> np.ndarray:
         """Every retained row in one array (memory grows with the run: for tests and small runs)."""
         parts = list(self.chunks())

@@ -16,12 +16,21 @@ Topics (frame `map`, log times = simulation time):
 
 What is published once is logged at the start; Foxglove shows the latest message of each topic at
 the playback time, so they stay visible through the run.
+
+The file carries a metadata record `grove-tui` (written first, so it sits in the file's first bytes):
+that is how a later export knows an existing .mcap is its own to replace. Any other file at `--out`,
+and a layout file other than the one GROVE writes, is kept unless the user passes `--overwrite`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
+import logging
 import math
+import os
+import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -29,10 +38,10 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.errors import FoxgloveExportError, missing_extra, require_extra
+from grove_tui.errors import FoxgloveExportError, OutputError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
-from grove_tui.files import atomic_file
+from grove_tui.files import atomic_file, check_output_file
 
 LAYOUT_FILE = Path(__file__).with_name("foxglove_layout.json")
 FRAME_ID = "map"
@@ -41,6 +50,9 @@ PERSON_HEIGHT = 1.7
 ROBOT_HEIGHT = 0.4
 WALL_HEIGHT = 1.0
 FURNITURE_HEIGHT = 0.75
+MCAP_MAGIC = b"\x89MCAP0\r\n"
+METADATA_NAME = "grove-tui"  # the metadata record that marks GROVE's own export
+_OWN_MARK_WINDOW = 64 * 1024  # the record is written first: it lies within the file's first bytes
 
 
 @dataclass(frozen=True)
@@ -71,6 +83,26 @@ def _foxglove() -> Any:
 def layout_path_for(mcap: Path) -> Path:
     """Where the layout goes: beside the MCAP, `<name>.layout.json`."""
     return mcap.with_name(mcap.stem + ".layout.json")
+
+
+def is_grove_mcap(path: Path) -> bool:
+    """An MCAP file `grove export foxglove` wrote (its `grove-tui` metadata record near the start)."""
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(_OWN_MARK_WINDOW)
+    except OSError:
+        return False
+    return head.startswith(MCAP_MAGIC) and METADATA_NAME.encode() in head
+
+
+def is_grove_layout(path: Path) -> bool:
+    """The layout GROVE writes, unchanged (one the user edited in Foxglove is theirs)."""
+    expected = shipped_layout().encode("utf-8")
+    try:
+        with open(path, "rb") as handle:
+            return handle.read(len(expected) + 1) == expected
+    except OSError:
+        return False
 
 
 def build_layout() -> str:
@@ -275,21 +307,90 @@ def _grid(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
                   data=grid.occupied.astype(np.uint8).tobytes())
 
 
-def export_foxglove(bundle_dir: str | Path, out_path: str | Path) -> FoxgloveExport:
-    """Write `out_path` (.mcap) and its layout beside it; both complete, or neither is touched."""
+def export_foxglove(bundle_dir: str | Path, out_path: str | Path, *, overwrite: bool = False) -> FoxgloveExport:
+    """Write `out_path` (.mcap) and its layout beside it; both complete, or neither is touched.
+
+    An existing file at either path is replaced only when GROVE wrote it (`is_grove_mcap`,
+    `is_grove_layout`) or with `overwrite`; links, folders and special files never.
+    """
     out = Path(out_path)
     if out.suffix.lower() != ".mcap":
         raise FoxgloveExportError(f"{out}: a Foxglove export is an .mcap file (name it *.mcap)")
+    layout = layout_path_for(out)
+    mcap_guard = dict(owned=is_grove_mcap, what="GROVE Foxglove export", overwrite=overwrite)
+    layout_guard = dict(owned=is_grove_layout, what="GROVE Foxglove layout", overwrite=overwrite)
+    # Both checked before anything is written: a refused layout must not cost the user's .mcap either.
+    out = check_output_file(out, **mcap_guard)  # type: ignore[arg-type]
+    layout = check_output_file(layout, **layout_guard)  # type: ignore[arg-type]
     foxglove = _foxglove()
     bundle = open_simulated_bundle(bundle_dir)
-    layout = layout_path_for(out)
-    with atomic_file(out) as tmp_mcap, atomic_file(layout) as tmp_layout:
-        frames, counts = _write_mcap(foxglove, bundle, tmp_mcap)
+    with atomic_file(out, **mcap_guard) as tmp_mcap, atomic_file(layout, **layout_guard) as tmp_layout:  # type: ignore[arg-type]
+        frames, counts = _write_mcap(foxglove, bundle, tmp_mcap, out)
         tmp_layout.write_text(shipped_layout(), encoding="utf-8")
     return FoxgloveExport(out, layout, frames, counts)
 
 
-def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path) -> tuple[int, dict[str, int]]:
+class _WriteFailures(logging.Handler):
+    """foxglove-sdk reports a failed write (a full disk) by logging it, once per message, and raises
+    only when the file is closed: catch the first report, keep the thousands after it off stderr,
+    and let the writer stop at once with one error."""
+
+    def __init__(self) -> None:
+        super().__init__(logging.ERROR)
+        self.first: str | None = None
+        self.reason: str | None = None  # the operating system's words, when a report carries them
+
+    def emit(self, record: logging.LogRecord) -> None:
+        text = record.getMessage()
+        if self.first is None:
+            self.first = text
+        if self.reason is None:
+            found = re.search(r'message: "([^"]+)"', text)
+            if found:
+                self.reason = found.group(1)
+
+
+@contextlib.contextmanager
+def _watch_writes() -> Iterator[_WriteFailures]:
+    logger = logging.getLogger("foxglove")
+    watch = _WriteFailures()
+    propagate = logger.propagate
+    logger.addHandler(watch)
+    logger.propagate = False
+    try:
+        yield watch
+    finally:
+        logger.removeHandler(watch)
+        logger.propagate = propagate
+
+
+def _write_failure(out: Path, watch: _WriteFailures, raised: str = "") -> OutputError:
+    """One line for what foxglove-sdk said (the operating system's words when it passed them on)."""
+    detail = watch.reason or watch.first or raised
+    found = re.search(r'message: "([^"]+)"', detail)
+    reason = found.group(1) if found else (detail.splitlines() or ["unknown error"])[0][:160]
+    reason = reason.removeprefix("FoxgloveError: ")
+    try:  # the SDK does not always pass the system's reason on: say so when the disk is the cause
+        space = os.statvfs(out.parent)
+        if space.f_bavail * space.f_frsize < 1 << 20:
+            reason = f"No space left on device ({reason})"
+    except OSError:
+        pass
+    return OutputError(f"{out}: cannot write it: {reason}")
+
+
+def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path) -> tuple[int, dict[str, int]]:
+    with _watch_writes() as watch:
+        try:
+            return _write_frames(foxglove, bundle, path, out, watch)
+        except RuntimeError as exc:  # foxglove-sdk's FoxgloveError, raised when closing a failed file
+            if watch.first is None and "FoxgloveError" not in str(exc):
+                raise
+            raise _write_failure(out, watch, str(exc)) from None
+
+
+def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
+                  watch: _WriteFailures) -> tuple[int, dict[str, int]]:
     from foxglove import channels as ch
 
     scene = _Scene()
@@ -304,6 +405,7 @@ def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path) -> tuple[int
     counts: dict[str, int] = {}
 
     writer = foxglove.open_mcap(path, allow_overwrite=True, context=context)
+    writer.write_metadata(METADATA_NAME, {"writer": "grove export foxglove", "bundle": bundle.path.name})
     try:
         def channel(kind: Any, topic: str) -> Any:
             made = kind(topic, context=context)
@@ -370,6 +472,8 @@ def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path) -> tuple[int
                     translation=m.Vector3(x=rx, y=ry, z=0.0),
                     rotation=m.Quaternion(x=0.0, y=0.0, z=math.sin(ryaw / 2), w=math.cos(ryaw / 2)))]), ns)
             count += 1
+            if watch.first is not None:
+                raise _write_failure(out, watch)
             frame = next(frames, None)
         while event is not None:
             log_event(event)

@@ -8,6 +8,7 @@ long the run.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,10 +19,10 @@ from grove_tui.crowd.recording import CSV_COLUMNS, ROBOT_ID
 from grove_tui.errors import StreamExportError
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.scenario.bundle import load_bundle
-from grove_tui.scenario.events import EVENTS_FILE, SimEvent, read_events
+from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle, load_bundle_world
+from grove_tui.scenario.events import EVENTS_FILE, MAX_EVENTS_BYTES, SimEvent, read_events
 from grove_tui.scenario.model import Scenario
-from grove_tui.world import World, load_world
+from grove_tui.world import World
 
 TRAJECTORIES_FILE = "trajectories.csv"
 BLOCK_BYTES = 4 << 20  # lines parsed at a time; bounds memory, large enough to keep numpy busy
@@ -63,13 +64,16 @@ def open_simulated_bundle(bundle_dir: str | Path) -> SimulatedBundle:
     root = Path(bundle_dir)
     scenario, _trees, fields, grid = load_bundle(root)
     csv = root / TRAJECTORIES_FILE
-    if not csv.is_file():
+    if not os.path.lexists(csv):
         raise StreamExportError(f"{csv}: no trajectories yet; simulate first: grove simulate {root}")
-    world_ref = scenario.world
-    candidate = root / world_ref
-    world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.is_file() else world_ref)
+    # Inside the bundle, a regular file (not a pipe, not a link to /dev/zero), bounded.
+    bundle_member(root, TRAJECTORIES_FILE, "trajectory file", MAX_TRAJECTORY_BYTES)
+    world = load_bundle_world(root, scenario)
     events_path = root / EVENTS_FILE
-    events = sorted(read_events(events_path), key=lambda e: e.t) if events_path.is_file() else []
+    events = []
+    if os.path.lexists(events_path):
+        events = sorted(read_events(bundle_member(root, EVENTS_FILE, "event log", MAX_EVENTS_BYTES)),
+                        key=lambda e: e.t)
     _check_header(csv)
     return SimulatedBundle(root, scenario, world, grid, fields, events, csv)
 

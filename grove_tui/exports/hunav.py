@@ -67,7 +67,7 @@ from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
-from grove_tui.scenario.bundle import load_field, load_grid, load_scenario, read_bundle_text
+from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
 
 if TYPE_CHECKING:
@@ -619,12 +619,9 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             raise ExportError(f"tree of agent {agent.id}: {exc}") from None
 
     from grove_tui.navigation.grid import build_grid
-    from grove_tui.world import load_world
 
     # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
-    local_world = bundle / scenario.world
-    world = load_world(local_world if local_world.suffix in (".yaml", ".yml") and local_world.is_file()
-                       else scenario.world)
+    world = load_bundle_world(bundle, scenario)
     grid = planner = None
     if lower:
         from grove_tui.navigation.theta_star import ThetaStarPlanner

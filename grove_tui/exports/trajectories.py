@@ -3,16 +3,20 @@ schema with the walkable area (PedPy's `load_trajectory_from_jupedsim_sqlite`), 
 
 from __future__ import annotations
 
+import os
 import shutil
+import sqlite3
 from pathlib import Path
 
 import numpy as np
 
-from grove_tui.errors import TrajectoryExportError
+from grove_tui.errors import OutputError, TrajectoryExportError
 from grove_tui.analysis.metrics import Trajectories
 from grove_tui.crowd.recording import TrajectoryRecorder
-from grove_tui.scenario.bundle import load_scenario
-from grove_tui.world import load_world
+from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap
+from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle_world, load_scenario
+
+EXPORT_MARKER = ".grove-trajectories-export"
 
 
 def recorder_from_csv(path: Path) -> TrajectoryRecorder:
@@ -33,25 +37,40 @@ def recorder_from_csv(path: Path) -> TrajectoryRecorder:
     return recorder
 
 
-def export_trajectories(bundle_dir: str | Path, out_dir: str | Path) -> list[Path]:
+def is_trajectories_export(path: Path) -> bool:
+    """A folder `grove export trajectories` wrote (its marker file), the only kind it replaces unasked."""
+    return (path / EXPORT_MARKER).is_file()
+
+
+def export_trajectories(bundle_dir: str | Path, out_dir: str | Path, *, overwrite: bool = False) -> list[Path]:
+    """trajectories.csv, .sqlite (JuPedSim, with the walkable area) and .txt (PedPy) in the folder `out_dir`.
+
+    The folder is written as one: new, empty or an earlier trajectories export is replaced in one
+    rename; another folder only with `overwrite`; never the bundle itself or a folder holding it.
+    """
     bundle = Path(bundle_dir)
+    out = check_output_dir(out_dir, **_guard(overwrite))
+    refuse_overlap(out, bundle, "the bundle being exported")
     csv = bundle / "trajectories.csv"
-    if not csv.exists():
+    if not os.path.lexists(csv):
         raise TrajectoryExportError(f"{csv}: no trajectories yet; simulate first (grove simulate {bundle})")
+    csv = bundle_member(bundle, "trajectories.csv", "trajectory file", MAX_TRAJECTORY_BYTES)
     scenario = load_scenario(bundle)
-    world = load_world(scenario.world)
+    world = load_bundle_world(bundle, scenario)
     # Read (and check) the trajectories before creating anything: a broken CSV leaves no folder behind.
     recorder = recorder_from_csv(csv)
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
     try:
-        written = [
-            recorder.write_jupedsim_sqlite(out / "trajectories.sqlite", world.walkable().wkt),
-            recorder.write_pedpy_txt(out / "trajectories.txt"),
-        ]
+        with atomic_directory(out, **_guard(overwrite)) as stage:
+            recorder.write_jupedsim_sqlite(stage / "trajectories.sqlite", world.walkable().wkt)
+            recorder.write_pedpy_txt(stage / "trajectories.txt")
+            shutil.copyfile(csv, stage / "trajectories.csv")
+            (stage / EXPORT_MARKER).write_text("written by grove export trajectories\n", encoding="utf-8")
+    except sqlite3.Error as exc:  # "database or disk is full" and the like, from the JuPedSim file
+        raise OutputError(f"{out}: cannot write trajectories.sqlite: {exc}") from None
     finally:
         recorder.close()
-    target = out / "trajectories.csv"
-    if target.resolve() != csv.resolve():
-        shutil.copy2(csv, target)
-    return [target, *written]
+    return [out / "trajectories.csv", out / "trajectories.sqlite", out / "trajectories.txt"]
+
+
+def _guard(overwrite: bool) -> dict:
+    return dict(owned=is_trajectories_export, what="GROVE trajectories export", overwrite=overwrite)

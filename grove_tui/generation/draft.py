@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from grove_tui.errors import DraftError
-from grove_tui.limits import MAX_GROUP_COUNT
+from grove_tui.limits import MAX_GROUP_COUNT, MAX_GROUPS
 from grove_tui.llm.grammar import GbnfRules, gbnf_literal
 
 LABEL_MAX_LENGTH = 24
@@ -163,8 +163,9 @@ def _check_request(node_names: Iterable[str], roi_names: Iterable[str], max_grou
     bare = [name for name in rois if not _BARE.match(name)]
     if bare:
         raise DraftError(f"place name(s) {', '.join(map(repr, bare))} are not single words, which a draft writes bare")
-    if not (1 <= max_groups <= 16 and 1 <= max_count <= MAX_GROUP_COUNT and 1 <= max_depth <= 6 and 1 <= max_children <= 8):
-        raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..16), max_count={max_count} "
+    if not (1 <= max_groups <= MAX_GROUPS and 1 <= max_count <= MAX_GROUP_COUNT and 1 <= max_depth <= 6
+            and 1 <= max_children <= 8):
+        raise DraftError(f"draft limits out of range: max_groups={max_groups} (1..{MAX_GROUPS}), max_count={max_count} "
                          f"(1..{MAX_GROUP_COUNT}), "
                          f"max_depth={max_depth} (1..6), max_children={max_children} (1..8)")
     if not any(spec.category not in BRANCH_CATEGORIES for spec in specs.values()):

@@ -24,7 +24,7 @@ from grove_tui.gym.observation import wall_boxes
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.settings import cache_dir
-from grove_tui.scenario.bundle import is_bundle, load_bundle
+from grove_tui.scenario.bundle import is_bundle, load_bundle, load_bundle_world
 from grove_tui.scenario.model import Scenario
 from grove_tui.simulation.simulation import Simulation
 
@@ -61,14 +61,10 @@ class LoadedScenario:
 
 def load_scenario(bundle_dir: str | os.PathLike[str], patch_resolution: float) -> LoadedScenario:
     """Read a bundle for the environment; GymError when it cannot hold a robot episode."""
-    from grove_tui.world import load_world
-
     root = Path(bundle_dir)
     try:
         scenario, _trees, fields, grid = load_bundle(root)
-        world_ref = scenario.world
-        candidate = root / world_ref
-        world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
+        world = load_bundle_world(root, scenario)
         documents = [load_tree_file(root / agent.tree) for agent in sorted(scenario.agents, key=lambda a: a.id)]
     except GroveError as exc:
         raise GymError(f"{root}: cannot load the bundle: {exc}",

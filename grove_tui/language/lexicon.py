@@ -73,6 +73,14 @@ NEGATED_PLACE_PHRASES = (("instead", "of"), ("rather", "than"))
 
 DURATION_UNITS = {"second": 1.0, "sec": 1.0, "minute": 60.0, "min": 60.0, "hour": 3600.0, "hr": 3600.0, "moment": 10.0}
 
+# Abbreviations people type in a hurry, written out before the prompt is parsed (language/text.py).
+CHAT_WORDS: dict[str, str] = {
+    "ppl": "people", "ppls": "people", "peeps": "people", "pax": "passengers", "thru": "through",
+    "w/": "with", "w/o": "without", "abt": "about", "approx": "approximately", "approx.": "approximately",
+    "ca.": "about", "nr": "near", "btw": "", "pls": "please", "plz": "please", "mins": "minutes",
+    "hrs": "hours", "secs": "seconds", "sec": "second", "min": "minute", "ppl's": "people's",
+}
+
 # ---- people ---------------------------------------------------------------------------------
 
 PERSON_NOUNS = frozenset(
@@ -121,6 +129,21 @@ PERSON_NOUNS = frozenset(
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
 )
+# Kinds of people a place can belong to, by the kind it counts as: "their room" said of teenagers
+# is the kids' room, "his office" said of the boss is the manager's office.
+OWNER_KINDS: dict[str, str] = {}
+for _kind, _people in {
+    "child": "child kid teenager teen son daughter boy girl toddler baby youngster schoolchild pupil infant",
+    "parent": "parent mum mom dad mother father husband wife",
+    "manager": "manager director boss ceo executive head",
+    "guard": "guard security officer",
+    "doctor": "doctor physician surgeon consultant",
+    "nurse": "nurse",
+    "staff": "staff employee worker colleague clerk",
+}.items():
+    for _person in _people.split():
+        OWNER_KINDS.setdefault(_person, _kind)
+
 # People named by two words, the second of which means something else alone ("au pair" is one
 # person, not a pair; "station master" is no master of anything here).
 MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (
@@ -209,6 +232,9 @@ START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum "
                                   "hoover scrub tidy".split())
+# Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
+VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
+OBJECT_VERBS = START_OBJECT_VERBS | DESTINATION_OBJECT_VERBS | LOCATION_OBJECT_VERBS | VIA_OBJECT_VERBS
 ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end deliver drop bring".split())
 # "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.
 TRANSACTION_VERBS = frozenset("buy purchase get collect pick fetch order borrow take grab withdraw".split())
@@ -236,8 +262,6 @@ ROBOT_CROSS_VERBS = frozenset("cross pass traverse drive roll glide move navigat
 # Verbs of sending the robot somewhere: "send the robot to ward A", "have the robot wait by the door".
 ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct program command dispatch "
                                 "instruct".split())
-# Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
-VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
 # verb lemma -> interaction when the robot is its object ("stares at the robot").
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {

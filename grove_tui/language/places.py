@@ -1,23 +1,31 @@
-"""The one place matcher: a noun phrase of the prompt -> a zone, door or entity of the world.
+"""The one place index of the product: a noun phrase of the prompt -> a zone, door or entity of the world.
 
-A world's RoIs are indexed by what people call them: their `name` split on underscores, their
-aliases, their type and (more weakly) their tags. A phrase is scored against each RoI with
+A world's places are indexed by what people call them: their `name` split on underscores, their
+aliases, their type and (more weakly) their tags. A phrase is scored against each place with
 IDF-weighted word matches; the whole name or an alias inside the phrase beats anything that only
 shares one word, a zone beats its own fixtures on a tie, and a door is chosen only when the
 phrase speaks of a door or names that door. Words for the whole building ("the hospital") and
 generic heads ("area", "room") never have to match.
+
+When words do not decide (no place shares the phrase's words, or several score alike), places are
+scored by meaning: the phrase against each place's names with the sentence-embedding model
+(language/meaning.py; "the big meeting room" is nearest "large meeting room"). A place also knows
+the kinds of people it belongs to ("director's office", "kids room", "guards' room"), so "her
+office" is read against the offices of that kind of person.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
-from typing import Any
+from functools import lru_cache
 
-from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES,
+from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
+from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
 from grove_tui.language.tokens import lemma, name_tokens
+from grove_tui.world.model import World
 
 SYNONYM_DISCOUNT = 0.6
 TAG_DISCOUNT = 0.3
@@ -34,6 +42,8 @@ class PlaceEntry:
     phrases: tuple[tuple[str, ...], ...]  # the name and each alias, lemmatised
     exit: bool = False
     area: float = 0.0
+    said: tuple[str, ...] = ()  # the name (as words), the type and each alias, as people write them
+    owners: frozenset[str] = frozenset()  # kinds of people it belongs to ("child" for "kids room")
 
 
 @dataclass(frozen=True)
@@ -45,10 +55,19 @@ class PlaceMatch:
     exact: bool  # the phrase contains the whole name or an alias
 
 
+@dataclass(frozen=True)
+class MeaningMatch:
+    """A place scored by meaning: its cosine similarity to the phrase, and its name that came nearest."""
+
+    entry: PlaceEntry
+    similarity: float
+    nearest: str
+
+
 class PlaceIndex:
     """Index of one world's places; build once per world (`place_index(world)` caches it)."""
 
-    def __init__(self, world: Any) -> None:
+    def __init__(self, world: World) -> None:
         self.world = world
         self.entries: list[PlaceEntry] = []
         for zone in world.zones:
@@ -68,7 +87,8 @@ class PlaceIndex:
         self.idf = {t: math.log(1.0 + n / c) for t, c in df.items()}
         self.vocabulary = frozenset(df)
         self.building_words = BUILDING_WORDS | frozenset(name_tokens(getattr(world, "name", "")))
-        self._zone_words = {t for e in self.entries if e.kind == "zone" for t in e.tokens}
+        self.zone_words = frozenset(t for e in self.entries if e.kind == "zone" for t in e.tokens)
+        self._zone_words = self.zone_words
         self._token_weights: dict[str, dict[int, float]] = {}
         self._candidates: dict[tuple[str, ...], list[PlaceMatch]] = {}
         # What a misspelling can be corrected to: the words of names, aliases and types (never tags,
@@ -78,6 +98,49 @@ class PlaceIndex:
         self.name_words = frozenset(t for e in self.entries for t in e.tokens if t.isalpha() and len(t) >= 4)
         self.name_pairs = frozenset(pair for e in self.entries for p in e.phrases for pair in zip(p, p[1:]))
         self.joined_pairs = {a + b: (a, b) for a, b in self.name_pairs if a.isalpha() and b.isalpha()}
+        self._said = [(i, text) for i, e in enumerate(self.entries) for text in e.said]
+        self._vectors = PhraseVectors([text for _, text in self._said])
+        self._order_cache = {e.name: i for i, e in enumerate(self.entries)}
+        self._by_name = {e.name: e for e in self.entries}
+
+    # ---- meaning ---------------------------------------------------------------------------------
+
+    def by_meaning(self, text: str, among: Collection[str] | None = None) -> list[MeaningMatch]:
+        """Places ranked by how near `text` is in meaning to one of their names (best first), all of
+        them or those named in `among`; empty when the embedding model is not installed."""
+        model = MiniLM.shared()
+        if model is None or not self._said:
+            return []
+        vectors = self._vectors.vectors(model)
+        similarity = vectors @ _query_vector(model, text)
+        best: dict[int, tuple[float, str]] = {}
+        for (i, said), value in zip(self._said, similarity.tolist()):
+            if (among is None or self.entries[i].name in among) and value > best.get(i, (-2.0, ""))[0]:
+                best[i] = (value, said)
+        ranked = sorted(best.items(), key=lambda item: (-item[1][0], self._order(self.entries[item[0]].name)))
+        return [MeaningMatch(self.entries[i], round(value, 4), said) for i, (value, said) in ranked]
+
+    def warm_meaning(self) -> bool:
+        """Load the model and this world's name vectors now (from disk when a process did before)."""
+        model = MiniLM.shared()
+        if model is None:
+            return False
+        self._vectors.vectors(model)
+        return True
+
+    def sharing(self, phrase: Sequence[str]) -> list[str]:
+        """The places (no doors, unless the phrase speaks of one) that share a word of the phrase."""
+        doors = any(t in DOOR_WORDS for t in phrase)
+        found = {i for t in phrase if t not in PLACE_MODIFIERS for i in self._weights_of(t)}
+        return [self.entries[i].name for i in sorted(found) if self.entries[i].kind != "door" or doors]
+
+    # ---- owners ----------------------------------------------------------------------------------
+
+    def owned_by(self, person: str) -> list[PlaceEntry]:
+        """The places that belong to a kind of person: "director" owns "director's office", "child"
+        owns "kids room", "guard" owns "guards' room"."""
+        kinds = owner_kinds(person)
+        return [e for e in self.entries if e.owners & kinds]
 
     def knows(self, token: str) -> bool:
         """Whether some place of the world is called by this word or a synonym of it."""
@@ -173,8 +236,6 @@ class PlaceIndex:
         return best
 
     def _order(self, name: str) -> int:
-        if not hasattr(self, "_order_cache"):
-            self._order_cache = {e.name: i for i, e in enumerate(self.entries)}
         return self._order_cache.get(name, len(self.entries))
 
     def is_nameless(self, phrase: Sequence[str]) -> bool:
@@ -189,7 +250,7 @@ class PlaceIndex:
                 or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
 
     def entry(self, name: str) -> PlaceEntry | None:
-        return next((e for e in self.entries if e.name == name), None)
+        return self._by_name.get(name)
 
     def zone_area(self, name: str) -> float:
         for e in self.entries:
@@ -211,12 +272,29 @@ def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], ali
     for alias in aliases or ():
         alias_tokens = name_tokens(alias)
         tokens |= set(alias_tokens)
-        phrases.append(tuple(alias_tokens))
+        if len(alias_tokens) > 1 or (alias_tokens and alias_tokens[0] not in GENERIC_PLACE_HEADS):
+            phrases.append(tuple(alias_tokens))  # an alias that is only "room" names no room in particular
     tag_tokens: set[str] = set()
     for tag in tags or ():
         tag_tokens |= set(name_tokens(tag))
+    said = [name.replace("_", " ")] + ([type_.replace("_", " ")] if type_ and kind != "door" else []) + \
+        [a for a in aliases or () if a]
+    owners = {t for phrase in phrases for t in phrase if t in PERSON_NOUNS and t not in ("person", "people")}
     return PlaceEntry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens),
-                      tuple(p for p in phrases if p), exit, area)
+                      tuple(p for p in phrases if p), exit, area, tuple(dict.fromkeys(said)),
+                      frozenset(k for t in owners for k in owner_kinds(t)))
+
+
+def owner_kinds(person: str) -> frozenset[str]:
+    """A kind of person and the kinds it counts as for owning a place ("kid" -> kid, child)."""
+    kind = OWNER_KINDS.get(person)
+    return frozenset({person, kind} if kind else {person})
+
+
+@lru_cache(maxsize=512)
+def _query_vector(model: MiniLM, text: str) -> Vectors:
+    vector: Vectors = model.encode([text])[0]
+    return vector
 
 
 def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:
@@ -224,10 +302,10 @@ def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:
     return any(tuple(run[i:i + n]) == tuple(phrase) for i in range(len(run) - n + 1))
 
 
-_INDEXES: dict[int, tuple[Any, PlaceIndex]] = {}
+_INDEXES: dict[int, tuple[World, PlaceIndex]] = {}
 
 
-def place_index(world: Any) -> PlaceIndex:
+def place_index(world: World) -> PlaceIndex:
     """The index of `world`, built once per world object."""
     key = id(world)
     cached = _INDEXES.get(key)

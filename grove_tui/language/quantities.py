@@ -65,7 +65,7 @@ _SUBJECT_MODIFIERS = frozenset("the some other more many all tired young old eld
 BARE_PLURAL_COUNT = 4  # "visitors walk to ward a": some visitors, not none
 
 
-def _bare_plurals(prompt: str, toks, low: list[str], found: list[Quantity]) -> list[Quantity]:
+def _bare_plurals(prompt: str, toks: list[tuple[str, int, int]], low: list[str], found: list[Quantity]) -> list[Quantity]:
     """Plural person nouns that open a clause with no number ("... while visitors walk to ward a"):
     a vague head count, so the group is not lost."""
     covered = [(q.start, q.end) for q in found]
@@ -151,7 +151,7 @@ def extract_quantities(prompt: str) -> list[Quantity]:
     return sorted(found + _bare_plurals(prompt, toks, low, found), key=lambda q: q.start)
 
 
-def _quantity(prompt: str, toks, first: int, last: int, value: int, noun: str, exact: bool) -> Quantity:
+def _quantity(prompt: str, toks: list[tuple[str, int, int]], first: int, last: int, value: int, noun: str, exact: bool) -> Quantity:
     start, end = toks[first][1], toks[last][2]
     return Quantity(count=value, noun=noun, phrase=prompt[start:end], start=start, end=end, exact=exact)
 

@@ -121,11 +121,14 @@ def name_tokens(text: str) -> list[str]:
 def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
     """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
     letter after the first word, which tells places apart ("ward a", "check-in counter b"), and a
-    number word after it, read as its digits ("platform one" is "platform 1", not any platform)."""
+    number word after it, read as its digits ("platform one" is "platform 1", not any platform), and
+    "it" before another word, which is information technology there ("the IT room"), not a pronoun."""
     out: list[str] = []
     for k, w in enumerate(ws):
         if k > 0 and w in UNITS and UNITS[w] > 0:
             out.append(str(UNITS[w]))
+        elif w == "it" and k + 1 < len(ws):
+            out.append(w)
         elif w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha()):
             out.append(lemma(w))
     return out

@@ -21,7 +21,7 @@ from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.errors import GridError
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.world import World
-from grove_tui.world.loader import MAX_COORDINATE
+from grove_tui.limits import MAX_PADDED_COORDINATE as MAX_COORDINATE
 
 
 # The largest grid built or read: 100 million cells (a 250,000 m^2 world at 0.05 m). The planner's

@@ -27,7 +27,7 @@ from grove_tui.errors import FieldFileError
 from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
-from grove_tui.world.loader import MAX_COORDINATE
+from grove_tui.limits import MAX_PADDED_COORDINATE as MAX_COORDINATE
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, any_angle_distances, line_of_sight
 
 _DR = np.array([0, 0, 1, -1, 1, 1, -1, -1], dtype=np.int64)

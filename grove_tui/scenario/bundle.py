@@ -12,10 +12,11 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Callable, Mapping
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import Any
 
-from grove_tui.files import absolute_path, atomic_directory, link_or_copy, write_files_atomic
+from grove_tui.files import (absolute_path, atomic_directory, link_or_copy, protect_folders, relative_file,
+                             write_files_atomic)
 from grove_tui.errors import BundleError, GroveError
 from grove_tui.limits import InputLimitError, check_regular_file, read_text_bounded
 from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
@@ -27,6 +28,16 @@ GRID_FILE = "grid.npz"
 REPORT_FILE = "generation.json"
 # What a simulation adds to a bundle; replaced together, never one without the others.
 RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
+# trajectories.csv is read a block at a time, so its size costs time, not memory: a 500-person hour is
+# about 2 GB. The bound refuses what no run writes, such as a link to a huge unrelated file.
+MAX_TRAJECTORY_BYTES = 64 * 1024**3
+# Where a bundle keeps a world file of its own (an imported HuNavSim scenario's open floor).
+WORLD_FOLDER = "world"
+# Every name a bundle's own writers use: no other output may take one (`--out BUNDLE/trees`, an
+# imported world called scenario.yaml). episode.json is a recorded Gym episode's.
+OWN_NAMES = (SCENARIO_FILE, "trees", "fields", GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json", WORLD_FOLDER)
+# Files at fixed places: a tree, field or world file named like one of them would overwrite it.
+FIXED_FILES = frozenset({SCENARIO_FILE, GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json"})
 WHAT = "scenario bundle"
 
 
@@ -35,20 +46,39 @@ def is_bundle(path: Path) -> bool:
     return (path / SCENARIO_FILE).is_file() and not (path / SCENARIO_FILE).is_symlink()
 
 
+protect_folders(is_bundle, OWN_NAMES, WHAT)
+
+
+def _member_files(result: Any) -> list[tuple[PurePosixPath, str]]:
+    """The trees (and any other text files) of a GenerationResult, each checked to be a plain relative
+    path that names none of the bundle's fixed files."""
+    checked = []
+    for rel, text in sorted(result.trees.items()):
+        try:
+            path = relative_file(rel)
+        except GroveError as exc:
+            raise BundleError(f"a bundle file {exc}") from None
+        if str(path) in FIXED_FILES or path.parts[0] in FIXED_FILES:
+            raise BundleError(f"a bundle file named {rel!r} would replace the bundle's own {path.parts[0]}")
+        checked.append((path, text))
+    return checked
+
+
 def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = False) -> Path:
     """Write a GenerationResult as a bundle; a reader sees the old bundle or the complete new one.
 
     An existing bundle at `out_dir` is replaced; any other non-empty folder only with `overwrite`.
     """
     scenario: Scenario = result.scenario
+    members = _member_files(result)
     # Absolute first: after `--out .` the process's own folder is replaced, so "." names the old one.
     target = absolute_path(out_dir)
     with atomic_directory(target, owned=is_bundle, what=WHAT, overwrite=overwrite) as stage:
         (stage / SCENARIO_FILE).write_text(scenario.dump_yaml(), encoding="utf-8")
-        for rel, xml in sorted(result.trees.items()):
-            path = stage / rel
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(xml, encoding="utf-8")
+        for member_path, xml in members:
+            member = stage.joinpath(*member_path.parts)
+            member.parent.mkdir(parents=True, exist_ok=True)
+            member.write_text(xml, encoding="utf-8")
         for field_id, rel in sorted(scenario.fields.items()):
             result.fields[field_id].save(stage / rel)
         result.grid.save(stage / GRID_FILE)
@@ -152,6 +182,27 @@ def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, dict[str, str], dict[
             trees[agent.tree] = read_bundle_text(root, agent.tree, f"agent {agent.id}'s tree")
     fields = {field_id: load_field(root, field_id, rel) for field_id, rel in scenario.fields.items()}
     return scenario, trees, fields, load_grid(root)
+
+
+def world_source(bundle_dir: str | Path, scenario: Scenario) -> str | Path:
+    """What `load_world` takes for a bundle's world: a shipped name, the absolute path of the user's
+    world file (what generation records), or a world file inside the bundle (an imported HuNavSim
+    scenario's open floor). A relative path is always the bundle's own file, never one in the
+    current folder, and it must stay inside the bundle and be a bounded regular file."""
+    from grove_tui.world.loader import MAX_WORLD_FILE_BYTES
+
+    reference = scenario.world
+    relative = not os.path.isabs(reference) and ("/" in reference or reference.endswith((".yaml", ".yml")))
+    if relative:
+        return bundle_member(bundle_dir, reference, "world file", MAX_WORLD_FILE_BYTES)
+    return reference
+
+
+def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> Any:
+    """The World a bundle plays in (see `world_source`)."""
+    from grove_tui.world import load_world
+
+    return load_world(world_source(bundle_dir, scenario))
 
 
 def load_report(bundle_dir: str | Path) -> dict[str, Any]:

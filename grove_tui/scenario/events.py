@@ -9,8 +9,11 @@ from pathlib import Path
 
 from grove_tui.errors import EventLogError
 from grove_tui.files import write_text_atomic
+from grove_tui.limits import InputLimitError, read_text_bounded
 
 EVENTS_FILE = "events.jsonl"
+# A long crowded run logs a few events per person: 64 MB is hundreds of thousands of them.
+MAX_EVENTS_BYTES = 64 * 1024 * 1024
 
 
 @dataclass(frozen=True)
@@ -33,7 +36,12 @@ def write_events(path: str | Path, events: Sequence[SimEvent]) -> Path:
 def read_events(path: str | Path) -> list[SimEvent]:
     path = Path(path)
     events = []
-    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+    try:
+        # A regular file of bounded size: events.jsonl linked to /dev/zero or made a pipe once read forever.
+        text = read_text_bounded(path, MAX_EVENTS_BYTES, "event log")
+    except InputLimitError as exc:
+        raise EventLogError(str(exc)) from None
+    for number, line in enumerate(text.splitlines(), start=1):
         if not line.strip():
             continue
         try:

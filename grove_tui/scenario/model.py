@@ -19,7 +19,7 @@ import yaml
 
 from grove_tui.errors import ScenarioError
 from grove_tui.files import write_text_atomic
-from grove_tui.limits import InputLimitError, load_yaml_bounded, read_text_bounded
+from grove_tui.limits import MAX_COORDINATE, InputLimitError, load_yaml_bounded, read_text_bounded
 
 Point = tuple[float, float]
 
@@ -30,7 +30,6 @@ BEHAVIOR_TYPES = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Thr
 # and the simulation would produce garbage rather than fail.
 RADIUS_RANGE = (0.05, 2.0)  # metres
 MAX_VEL_RANGE = (0.0, 10.0)  # m/s; 0 is a person who stands
-MAX_COORDINATE = 100_000.0  # metres, as for world files
 MAX_SEED = 2**32 - 1  # numpy's seed range
 MAX_SCENARIO_BYTES = 64 * 1024 * 1024
 MAX_AGENTS = 100_000

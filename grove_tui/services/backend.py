@@ -365,29 +365,13 @@ class EngineBackend:
     def simulation(self, generated: GeneratedScenario) -> Any:
         return self.session.simulation(generated)
 
-    def run_metrics(self, generated: GeneratedScenario, rows: Any, events: list[Any]) -> dict[str, float]:
-        """metrics.json's numbers for a run so far, flat ({"agent_overlaps": ..., "minimum_distance_to_people": ...}).
+    def live_metrics(self, generated: GeneratedScenario) -> Any:
+        """metrics.json's numbers for a run while it runs (analysis.live_metrics.LiveMetrics): fed the
+        recorder's new rows, rounded as trajectories.csv stores them, through the accumulators
+        `grove metrics` streams the file through, so the app's counters equal the exported metrics.json."""
+        from grove_tui.analysis.live_metrics import LiveMetrics
 
-        `rows` are the recorder's rows (its structured array); they are rounded as trajectories.csv
-        stores them and go through the function `grove metrics` uses, so the app's counters equal
-        the exported metrics.json of the same run.
-        """
-        import numpy as np
-
-        from grove_tui.analysis.bundle_metrics import scenario_metrics
-        from grove_tui.analysis.metrics import Trajectories
-        from grove_tui.crowd.recording import CSV_COLUMNS
-
-        if len(rows) == 0:
-            return {}
-        table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
-        table[:, 1] = np.round(table[:, 1], 4)  # t, x, y, vx, vy, yaw: trajectories.csv's "%.4f"
-        table[:, 3:8] = np.round(table[:, 3:8], 4)
-        report = scenario_metrics(generated.scenario, generated.world, Trajectories.from_rows(table), events)
-        flat: dict[str, float] = {}
-        for section in report.to_dict().values():
-            flat.update(section)
-        return flat
+        return LiveMetrics(generated.scenario, generated.world)
 
     # export ----------------------------------------------------------------------------------------
     def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path,
@@ -421,13 +405,13 @@ class EngineBackend:
     def open_run(self, bundle_dir: Path) -> GeneratedScenario:
         """A saved bundle as the app holds a fresh generation (no draft: counts cannot be re-planned)."""
         from grove_tui.generation.pipeline import GenerationResult
-        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report, world_source
 
         bundle_dir = Path(bundle_dir)
         scenario, trees, fields, grid = load_bundle(bundle_dir)
         # A bundle copied without its report still opens; only the timings and groups are missing.
         report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
-        world = self.load_world(scenario.world)
+        world = self.load_world(str(world_source(bundle_dir, scenario)))
         result = GenerationResult(scenario, trees, fields, grid, report)
         return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
                                  bundle_dir)

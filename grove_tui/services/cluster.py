@@ -174,13 +174,30 @@ def write_returned_files(out_dir: Path, name: str, files: JobFiles, overwrite: b
         raise RuntimeFailure(f"{out_dir / name}: the worker sent no bundle for job {name!r}")
     write_bundle_files(entries.pop(name), out_dir / name, overwrite=overwrite)
     for top, members in sorted(entries.items()):
+        # Each export replaces only its own earlier output, as the one-process batch does; the same guard.
+        owned, what = export_owner(top[len(name) + 1:])
         if "" in members:  # a single file beside the bundle (a Foxglove .mcap and its layout)
             if len(members) > 1:
                 raise RuntimeFailure(f"{out_dir / top}: the worker sent it both as a file and as a folder")
-            write_bytes_atomic(out_dir / top, members[""])
-        else:  # an export folder: replaced like the one-process batch replaces its own exports
-            write_files_atomic(out_dir / top, members, owned=lambda _path: True, what="batch export",
-                               overwrite=True)
+            write_bytes_atomic(out_dir / top, members[""], owned=owned, what=what, overwrite=overwrite)
+        else:  # an export folder
+            write_files_atomic(out_dir / top, members, owned=owned, what=what, overwrite=overwrite)
+
+
+def export_owner(suffix: str) -> tuple[Callable[[Path], bool], str]:
+    """The ownership test of the export a batch writes as NAME.<suffix> (hunav, rosbag, mcap, layout.json...)."""
+    from grove_tui.exports.foxglove import is_grove_layout, is_grove_mcap
+    from grove_tui.exports.hunav import is_hunav_export
+    from grove_tui.exports.rosbag import is_rosbag_export
+    from grove_tui.exports.trajectories import is_trajectories_export
+
+    owners: dict[str, tuple[Callable[[Path], bool], str]] = {
+        "hunav": (is_hunav_export, "GROVE HuNavSim export"), "rosbag": (is_rosbag_export, "GROVE ROS 2 bag export"),
+        "trajectories": (is_trajectories_export, "GROVE trajectories export"),
+        "mcap": (is_grove_mcap, "GROVE Foxglove export"), "layout.json": (is_grove_layout, "GROVE Foxglove layout")}
+    if suffix not in owners:
+        raise RuntimeFailure(f"a batch export named *.{suffix} is not one GROVE writes")
+    return owners[suffix]
 
 
 def _import_ray() -> Any:

@@ -574,13 +574,13 @@ class GroveSession:
         The three files replace the old ones in one atomic step: interrupted, the bundle keeps its old run.
         """
         from grove_tui.analysis.bundle_metrics import bundle_metrics
-        from grove_tui.scenario.bundle import load_bundle, replace_run_outputs
+        from grove_tui.scenario.bundle import load_bundle, replace_run_outputs, world_source
         from grove_tui.scenario.events import write_events
         from grove_tui.simulation.simulation import Simulation
 
         bundle = Path(bundle)
         scenario, _, _, _ = load_bundle(bundle)
-        world = self.load_world(_world_name(scenario.world, bundle))
+        world = self.load_world(str(world_source(bundle, scenario)))
         sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning,
                                        params=pedestrian_params(model))
         started = time.perf_counter()
@@ -657,19 +657,21 @@ class GroveSession:
                 generated = self.refine(generated, followup, target, overwrite=True, on_event=on_event,
                                         cancel=cancel)
             summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
-            exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name) for kind in job.exports}
+            exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name, overwrite)
+                       for kind in job.exports}
         except GroveError as exc:
             if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
                 raise
             return JobOutcome(job, target, error=exc)
         return JobOutcome(job, target, generated, summary, exports)
 
-    def _batch_export(self, kind: str, bundle: Path, out_dir: Path, name: str) -> Path:
+    def _batch_export(self, kind: str, bundle: Path, out_dir: Path, name: str, overwrite: bool) -> Path:
         # Beside the bundle, never inside it: a bundle holds only what generation and simulation wrote.
+        # Each export replaces its own earlier output; anything else only with the batch's --overwrite.
         if kind == "foxglove":
-            return Path(self.export(kind, bundle, out_dir / f"{name}.mcap").mcap)
+            return Path(self.export(kind, bundle, out_dir / f"{name}.mcap", overwrite=overwrite).mcap)
         target = out_dir / f"{name}.{kind}"
-        result = self.export(kind, bundle, target, **({"overwrite": True} if kind in ("hunav", "rosbag") else {}))
+        result = self.export(kind, bundle, target, overwrite=overwrite)
         return target if not hasattr(result, "directory") else Path(result.directory)
 
     def batch(self, jobs: Sequence[BatchJob], out_dir: str | Path, *, overwrite: bool = False,
@@ -782,12 +784,6 @@ class GroveSession:
             if on_progress is not None:
                 on_progress(index, len(cases), score)
         return scores
-
-
-def _world_name(reference: str, bundle: Path) -> str:
-    """A scenario's world reference as load_world takes it: a path relative to the bundle, or a name."""
-    candidate = bundle / reference
-    return str(candidate) if candidate.suffix in (".yaml", ".yml") and candidate.exists() else reference
 
 
 def _close(llm: Any) -> None:

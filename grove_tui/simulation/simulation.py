@@ -79,6 +79,21 @@ class Frame:
     counters: CounterSnapshot
 
 
+@dataclass(frozen=True)
+class RunState:
+    """Where the people of a run stand: how many it has, how many have left it (evacuated, out of the
+    building) and how many are out or have finished their tree. Nothing is left to happen to the
+    people once `over` (a HuNavSim looping tree never finishes: its agent keeps a run going)."""
+
+    agents: int
+    out: int
+    done: int
+
+    @property
+    def over(self) -> bool:
+        return self.agents > 0 and self.done == self.agents
+
+
 def _frozen(a: np.ndarray) -> np.ndarray:
     a = np.array(a, copy=True)
     a.setflags(write=False)
@@ -135,14 +150,11 @@ class Simulation:
         `params`: the pedestrian model's SFMParams (default: the "grove" model)."""
         from grove_tui.navigation.grid import build_grid
         from grove_tui.navigation.theta_star import ThetaStarPlanner
-        from grove_tui.scenario.bundle import load_field, load_grid, read_bundle_text
-        from grove_tui.world import load_world
+        from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, read_bundle_text
 
         bundle_dir = Path(bundle_dir)
         if world is None:
-            world_ref = scenario.world
-            candidate = bundle_dir / world_ref
-            world = load_world(candidate if candidate.suffix in (".yaml", ".yml") and candidate.exists() else world_ref)
+            world = load_bundle_world(bundle_dir, scenario)
         grid_path = bundle_dir / "grid.npz"
         # a bundle without its grid: inflate by the people's largest radius, as generation did
         grid = (load_grid(bundle_dir) if os.path.lexists(grid_path)
@@ -392,6 +404,11 @@ class Simulation:
         c = self.context.counters
         return CounterSnapshot(c.reached_goals, self.context.queues.in_queue(), c.served, c.evacuated, c.collisions,
                                c.robot_collisions, c.closest_robot_approach, c.finished_trees)
+
+    def run_state(self) -> RunState:
+        n = len(self.trees)
+        active = np.asarray(self.crowd.active[:n], dtype=bool)
+        return RunState(n, int(n - active.sum()), int((self._finished_mask | ~active).sum()))
 
     def frame(self) -> Frame:
         crowd = self.crowd

@@ -151,15 +151,21 @@ class GroveApp(App[int]):
 
 
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
-            world: str | None = None, preset: str | None = None, open_bundle: Path | None = None) -> int:
-    """Entry point of the `grove` command with no subcommand; returns the exit code."""
+            world: str | None = None, preset: str | None = None, open_bundle: Path | None = None,
+            backend: EngineBackend | None = None) -> int:
+    """Entry point of the `grove` command with no subcommand; returns the exit code.
+
+    `backend` replaces the one built from the model options (the terminal tests of the UI pass one
+    with a scripted model, tests/helpers/fake_grove.py).
+    """
     from grove_tui.errors import SettingsError, print_error
 
     try:
         settings = load_settings()
     except SettingsError as exc:
         return print_error(exc)
-    backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
+    if backend is None:
+        backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
     app = GroveApp(backend, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True,
                    open_bundle=open_bundle)

@@ -129,13 +129,15 @@ class RunOpenFailed(Message):
 
 
 @dataclass
-class MetricsComputed(Message):
-    """metrics.json's numbers for the run up to simulation step `step` (or why they could not be computed)."""
+class RunEnded(Message):
+    """The run is over at simulated time `t`: every one of its `agents` is out of the building (`out`)
+    or done with their tree, and the simulation paused itself. `text` says it ("all 40 out at t = 83 s");
+    the run's files (trajectories, events, metrics) are complete up to `t`."""
 
-    step: int
     t: float
-    values: dict[str, float]
-    error: str = ""
+    text: str
+    agents: int
+    out: int
 
 
 @dataclass

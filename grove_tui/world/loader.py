@@ -10,6 +10,7 @@ import difflib
 import hashlib
 import math
 import os
+import re
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -25,6 +26,7 @@ from shapely.geometry.base import BaseGeometry
 from shapely.ops import unary_union
 from shapely.validation import explain_validity
 
+from grove_tui.limits import MAX_COORDINATE as LIMIT_COORDINATE
 from grove_tui.limits import InputLimitError, YamlPath, check_regular_file, compose_yaml, read_text_bounded
 from grove_tui.paths import worlds_dir
 
@@ -50,9 +52,13 @@ def format_path(path: YamlPath) -> str:
 # grove_tui.limits). A world of 20,000 zones is about 4 MB of YAML and loads in about 8 s.
 MAX_WORLD_FILE_BYTES = 32 * 1024 * 1024
 MAX_ZONES = 30_000
-# Coordinates and sizes in metres: anything beyond 100 km is a typo (or an attack), and keeps
-# every float well inside the range the grid and the planner compute with.
-MAX_COORDINATE = 100_000.0
+# Coordinates and sizes in metres: the range a scenario can use (limits.MAX_COORDINATE, the bound of
+# the behavior-tree ports that carry points), so `worlds check` refuses what generation could not use.
+MAX_COORDINATE = LIMIT_COORDINATE
+# Points of one polygon (zone boundary, footprint): a hand-drawn room has tens; a curved hall a few
+# hundred. GEOS simplifies wall lines recursively, and a zigzag of some 80,000 points overflowed the
+# C stack (exit 139) in `generate` after `worlds check` had passed it.
+MAX_POLYGON_POINTS = 10_000
 # The occupancy grid at the default 0.1 m resolution must stay under this many cells (it is built
 # before planning and every planner map is a multiple of it): 250,000 m^2 of bounding box.
 MAX_GRID_CELLS = 25_000_000
@@ -98,9 +104,17 @@ def _short_repr(value: Any, limit: int = 60) -> str:
     return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
+# A key worth quoting back: a word or two. Anything else is quoted by position only, so a file that is
+# not a world at all (a password file given by mistake, or through a link) is never echoed into a message.
+_KEY_LIKE = re.compile(r"^[A-Za-z_][A-Za-z0-9_ -]{0,39}$")
+
+
 def _check_keys(data: dict, allowed: tuple[str, ...], path: YamlPath, problems: _Problems) -> None:
     for key in data:
         if key not in allowed:
+            if not (isinstance(key, str) and _KEY_LIKE.match(key)):
+                problems.add(path, f"a key that is not a word (not one of {', '.join(allowed)})")
+                continue
             close = difflib.get_close_matches(str(key), allowed, n=1)
             hint = f" (did you mean {close[0]!r}?)" if close else ""
             problems.add(path + (str(key),), f"unknown key {key!r}{hint}; allowed keys: {', '.join(allowed)}")
@@ -158,6 +172,10 @@ def _read_polygon(data: dict, key: str, path: YamlPath, problems: _Problems) -> 
     value = data[key]
     if not isinstance(value, list) or len(value) < 3:
         problems.add(path + (key,), f"{key} must be a list of at least 3 [x, y] points, got {_short_repr(value)}")
+        return None
+    if len(value) > MAX_POLYGON_POINTS:
+        problems.add(path + (key,), f"{key} has {len(value):,} points; at most {MAX_POLYGON_POINTS:,} per polygon "
+                                    "are supported (simplify the outline)")
         return None
     points: list[Point2] = []
     for index, item in enumerate(value):
@@ -641,6 +659,11 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
                                            f"key {path[-2]!r} appears twice in the same mapping; the first value would be lost"))
     if not isinstance(data, dict):
         problems.add((), f"a world file must be a mapping with name and zones, got {type(data).__name__}")
+        return None, problems.items
+    if data and not any(key in data for key in WORLD_KEYS):
+        # Not a world at all: one problem, and nothing of the file's content quoted back.
+        problems.add((), f"not a world file: none of {', '.join(WORLD_KEYS)} at its top level "
+                         f"({len(data)} other keys); a world starts with `name:` and `zones:`")
         return None, problems.items
     _check_keys(data, WORLD_KEYS, (), problems)
     name = _read_name(data, (), problems)

@@ -315,7 +315,7 @@ class World:
         footprints = [entity.polygon.exterior for entity in self.entities()]
         footprints += [obstacle.polygon.exterior for obstacle in self._obstacles]
         lines = unary_union([self._room_walls, *footprints])
-        merged = shapely.simplify(shapely.line_merge(lines), 0.0)
+        merged = _drop_collinear(shapely.line_merge(lines))
         segments = np.array(list(_segments_of(merged)), dtype=np.float64).reshape(-1, 4)
         lengths = np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1])
         segments = segments[lengths > 1e-9]
@@ -324,7 +324,7 @@ class World:
 
     @cached_property
     def _room_wall_segments(self) -> np.ndarray:
-        merged = shapely.simplify(shapely.line_merge(self._room_walls), 0.0)
+        merged = _drop_collinear(shapely.line_merge(self._room_walls))
         segments = np.array(list(_segments_of(merged)), dtype=np.float64).reshape(-1, 4)
         segments = segments[np.hypot(segments[:, 2] - segments[:, 0], segments[:, 3] - segments[:, 1]) > 1e-9]
         segments.flags.writeable = False
@@ -373,6 +373,29 @@ class World:
             if item.name == name:
                 return item
         raise WorldError(_unknown_name_message(f"world {self._name!r} has no RoI", name, [r.name for r in self._roi_index]))
+
+
+# Vertices per piece handed to GEOS's simplify: its Douglas-Peucker recursion goes as deep as a line
+# has vertices, and a zigzag wall of ~80,000 overflowed the C stack (a segfault in `generate`).
+_SIMPLIFY_PIECE = 5_000
+
+
+def _drop_collinear(lines: BaseGeometry) -> BaseGeometry:
+    """`shapely.simplify(lines, 0.0)` (vertices on a straight run dropped), with long lines simplified in
+    pieces that share their end vertices, so the recursion stays shallow whatever the world. Lines of
+    real worlds are far shorter than a piece and come out exactly as before."""
+    parts = shapely.get_parts(lines)
+    if all(shapely.get_num_coordinates(part) <= _SIMPLIFY_PIECE for part in parts):
+        return shapely.simplify(lines, 0.0)
+    pieces: list[BaseGeometry] = []
+    for part in parts:
+        coords = shapely.get_coordinates(part)
+        if len(coords) <= _SIMPLIFY_PIECE:
+            pieces.append(shapely.simplify(part, 0.0))
+            continue
+        for start in range(0, len(coords) - 1, _SIMPLIFY_PIECE - 1):
+            pieces.append(shapely.simplify(LineString(coords[start:start + _SIMPLIFY_PIECE]), 0.0))
+    return shapely.MultiLineString([piece for piece in pieces if not piece.is_empty])
 
 
 def _segments_of(geometry: BaseGeometry) -> Iterator[tuple[float, float, float, float]]:

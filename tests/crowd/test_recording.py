@@ -120,3 +120,26 @@ def test_bad_recorder_input():
     recorder = TrajectoryRecorder(fps=5)
     with pytest.raises(RecordingError, match="shape"):
         recorder.record_frame(0.0, [1, 2], [0.0], [0.0], [0.0], [0.0], [0.0], [0])
+
+
+def test_rows_from_reads_only_what_was_recorded_since_across_spill_and_buffer():
+    recorder = TrajectoryRecorder(fps=20.0, capacity_rows=64)  # the buffer spills every ~9 frames
+    ids = np.arange(1, 8)
+    zeros = np.zeros(7)
+    read: list[np.ndarray] = []
+    start = 0
+    for frame in range(100):
+        recorder.record_frame(frame * 0.05, ids, zeros + frame, zeros, zeros, zeros, zeros, zeros)
+        if frame % 3 == 0:
+            read.append(recorder.rows_from(start))
+            start = recorder.recorded_rows
+    read.append(recorder.rows_from(start))
+    assert np.array_equal(np.concatenate(read), recorder.to_array())
+    assert recorder.rows_from(recorder.recorded_rows).shape == (0,)
+    assert np.array_equal(recorder.rows_from(7 * 50)["frame"], np.repeat(np.arange(50, 100), 7))
+    ring = TrajectoryRecorder(fps=10.0, capacity_rows=20, spill=False)
+    for frame in range(10):
+        ring.record_frame(frame * 0.1, ids, zeros + frame, zeros, zeros, zeros, zeros, zeros)
+    assert np.array_equal(ring.rows_from(ring.recorded_rows - 7)["frame"], np.full(7, 9))
+    with pytest.raises(RecordingError, match="dropped"):
+        ring.rows_from(0)

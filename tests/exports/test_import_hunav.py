@@ -83,7 +83,7 @@ def test_foreign_map_gets_an_open_floor_and_plays(exported, tmp_path):
                                        "--out", str(tmp_path / "b")])
     assert result.exit_code == 0, result.output
     scenario = Scenario.load(tmp_path / "b" / "scenario.yaml")
-    assert scenario.world == "cafe.yaml" and (tmp_path / "b" / "cafe.yaml").is_file()
+    assert scenario.world == "world/cafe.yaml" and (tmp_path / "b" / "world" / "cafe.yaml").is_file()
     sim = Simulation.from_scenario(scenario, tmp_path / "b")
     sim.run(5.0)
     assert sim.tree_errors == {}
@@ -192,7 +192,7 @@ def test_a_hunavsim_scenario_with_includes_imports_and_plays(tmp_path):
     (tmp_path / "behavior_trees" / "agents_lab__agent_2_bt.xml").write_text(_agent_tree([3]))
     bundle = import_hunav(tmp_path / "scenarios" / "agents_lab.yaml", tmp_path / "bundle")
     scenario = Scenario.load(bundle / "scenario.yaml")
-    assert scenario.world == "lab.yaml" and scenario.global_goals == {1: (1.0, 1.0), 2: (6.0, 1.5), 3: (6.5, 5.0)}
+    assert scenario.world == "world/lab.yaml" and scenario.global_goals == {1: (1.0, 1.0), 2: (6.0, 1.5), 3: (6.5, 5.0)}
     assert [a.goals for a in scenario.agents] == [((1.0, 1.0), (6.0, 1.5)), ((6.5, 5.0),)]
     assert [a.behavior for a in scenario.agents] == ["Regular", "Surprised"]
     trees = load_bundle(bundle)[1]

@@ -1,4 +1,5 @@
-"""Issue 21 item 5: the simulation's counters are metrics.json's numbers, under metrics.json's names."""
+"""Issue 21 item 5: the simulation's counters are metrics.json's numbers, under metrics.json's names;
+issue 31: they are measured as the run goes, each look reading only the frames since the last one."""
 
 from __future__ import annotations
 
@@ -24,13 +25,14 @@ async def test_counters_shown_equal_the_exported_metrics_json_of_the_same_run(tm
     app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(120, 40)) as pilot:
         sim = await generate_to_simulation(pilot, app)
-        await pilot.press("f", "space")  # as fast as possible: queues form and people get served
-        await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 30.0, timeout=120, what="30 s simulated")
-        await pilot.press("space")
-        await wait_until(pilot, lambda: not sim.controller.latest.playing, what="paused")
+        await pilot.press("f", "space")  # as fast as possible: queues form, people get served, the run ends
+        await wait_until(pilot, lambda: sim.controller.latest.ended is not None, timeout=120, what="the run's end")
+        assert not sim.controller.latest.playing, "the run pauses itself at its end"
         paused_at = sim.controller.latest.frame.step
         await wait_until(pilot, lambda: sim.metrics_step == paused_at, timeout=30, what="counters of the paused run")
-        shown = str(sim.query_one("#counters", Static).render())
+        counters = sim.query_one("#counters", Static)
+        shown = str(counters.render())
+        assert counters.border_title == f"Counters · t = {sim.controller.latest.frame.t:.2f} s"
 
         await pilot.press("e")
         await wait_until(pilot, lambda: isinstance(app.screen, ExportResultScreen), timeout=120, what="exported")
@@ -45,3 +47,51 @@ async def test_counters_shown_equal_the_exported_metrics_json_of_the_same_run(tm
             assert metric_text(sim.metrics[key]) == metric_text(flat[key]), key
             assert key in shown and metric_text(flat[key]) in shown, (key, shown)
         assert flat["queue_served"] > 0, "the run is too short to test the queue counters"
+
+
+def test_the_controller_reads_only_the_frames_recorded_since_its_last_measure(tmp_path):
+    """The counters' cost follows the frames since the last look, not the run's length."""
+    import threading
+    import time
+
+    from helpers.handmade import build_hospital_bundle
+
+    from grove_tui.analysis.live_metrics import LiveMetrics
+    from grove_tui.scenario.bundle import load_scenario
+    from grove_tui.simulation.simulation import Simulation
+    from grove_tui.tui.screens.sim_controller import SimulationController
+    from grove_tui.world import load_world
+
+    bundle = build_hospital_bundle(tmp_path / "bundle")
+    scenario = load_scenario(bundle)
+    world = load_world(scenario.world)
+    sim = Simulation.from_scenario(scenario, bundle, world=world)
+    reads: list[tuple[int, int]] = []
+    rows_from = sim.recorder.rows_from
+
+    def spied(start: int):
+        reads.append((start, sim.recorder.recorded_rows))
+        return rows_from(start)
+
+    sim.recorder.rows_from = spied
+    controller = SimulationController(sim, fps=20, speed=8.0, metrics=LiveMetrics(scenario, world))
+    stop = threading.Event()
+    thread = threading.Thread(target=controller.run, args=(stop.is_set,))
+    thread.start()
+    try:
+        controller.send("play", True)
+        deadline = time.monotonic() + 60
+        while controller.latest is None or controller.latest.frame.t < 8.0:
+            assert time.monotonic() < deadline
+            time.sleep(0.05)
+        controller.send("play", False)
+        time.sleep(0.3)
+    finally:
+        stop.set()
+        thread.join()
+    latest = controller.latest
+    assert latest.counters is not None and latest.counters.step == latest.frame.step, "paused: the paused instant"
+    assert latest.counters.t == pytest.approx(latest.frame.t)
+    assert len(reads) >= 4
+    # Each look starts where the previous one stopped: no frame is read twice.
+    assert all(later[0] == earlier[1] for earlier, later in zip(reads, reads[1:]))

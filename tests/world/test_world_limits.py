@@ -46,12 +46,12 @@ def test_5000_digit_integer_is_out_of_range():
 @pytest.mark.parametrize("number", ["9" * 400, "9" * 400 + ".5", "1.0e400", "-.inf"])
 def test_huge_coordinates_are_out_of_range(number):
     message = only_problem(HEADER + "  - {name: z, type: r, boundary: [[0,0],[" + number + ",0],[1,1]]}\n")
-    assert "within +-100000 m" in message and len(message) < 200
+    assert "within +-10000 m" in message and len(message) < 200
 
 
 def test_a_world_too_large_for_a_grid_fails_the_check_not_the_allocation():
-    text = HEADER + ("  - {name: z, type: r, boundary: [[0,0],[20000,0],[20000,20000],[0,20000]], "
-                     "doors: [{name: d, position: [10,0], width: 1, leads_to: outside}]}\n")
+    text = HEADER + ("  - {name: z, type: r, boundary: [[-9000,-9000],[9000,-9000],[9000,9000],[-9000,9000]], "
+                     "doors: [{name: d, position: [10,-9000], width: 1, leads_to: outside}]}\n")
     assert "25,000,000 cells" in only_problem(text)
 
 
@@ -165,3 +165,61 @@ def test_velocity_field_zip_bomb_is_refused_from_the_headers(tmp_path):
     with pytest.raises(FieldFileError, match="unpacks to 288.0 MB; the limit is 256.0 MB"):
         VelocityField.load(bomb)
     assert time.perf_counter() - started < 1.0
+
+
+# -- issue 35: `worlds check` refuses what `generate` cannot use ------------------------------------------------
+
+
+def test_a_boundary_of_more_points_than_generation_can_use_fails_the_check(tmp_path):
+    """200,000 points passed the check and crashed `generate` (exit 139, GEOS's recursion in shapely.simplify)."""
+    from grove_tui.world.loader import MAX_POLYGON_POINTS
+
+    count = MAX_POLYGON_POINTS + 1_000  # bench/hostile.py runs the 200,000-point file through the CLI
+    points = ", ".join(f"[{20 * i / count:.5f}, {0.01 * (i % 2)}]" for i in range(count))
+    text = HEADER + ("  - {name: z, type: r, boundary: [" + points + ", [20, 10], [0, 10]], "
+                     "doors: [{name: d, position: [0, 5], width: 1, leads_to: outside}]}\n")
+    message = only_problem(text)
+    assert f"{count + 2:,} points; at most {MAX_POLYGON_POINTS:,} per polygon" in message and len(message) < 200
+
+
+def test_a_world_beyond_the_coordinates_trees_can_carry_fails_the_check():
+    """A world near 99,999 m passed the check, then failed generation at 'GoTo port x above maximum 10000'."""
+    from grove_tui.bt.manifest import NODES
+
+    text = HEADER + ("  - {name: z, type: r, boundary: [[99990,0],[99999,0],[99999,9],[99990,9]], "
+                     "doors: [{name: d, position: [99995,0], width: 1, leads_to: outside}]}\n")
+    world, problems = parse_world(text, "w.yaml")
+    assert world is None and problems and all("within +-10000 m" in p.message for p in problems)
+    assert NODES["GoTo"].port("x").max == 10_000.0  # the same bound
+
+
+def test_long_wall_lines_are_simplified_without_deep_recursion(tmp_path):
+    """An 80,000-vertex zigzag wall overflowed the C stack in shapely.simplify; it runs in a child process
+    so a crash fails this test instead of ending the suite."""
+    import subprocess
+    import sys
+
+    code = ("import numpy as np, shapely\n"
+            "from grove_tui.world.model import _drop_collinear\n"
+            "i = np.arange(80_000, dtype=float)\n"
+            "line = shapely.LineString(np.c_[i / 800.0, (i % 2) * 0.01])\n"
+            "out = _drop_collinear(shapely.MultiLineString([line, shapely.LineString([(0, 5), (1, 5), (2, 5)])]))\n"
+            "print(int(shapely.get_num_coordinates(out)))\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr[-500:]
+    assert 80_000 <= int(done.stdout) <= 80_000 + 2 + 40  # every zigzag vertex kept, the straight run's middle dropped
+
+
+def test_a_file_that_is_not_a_world_is_not_quoted_back(tmp_path):
+    """`worlds check` on a link to a private file printed the file's lines in its errors."""
+    secret = tmp_path / "shadow"
+    secret.write_text("root:$6$SECRETHASH:19000:0:99999:7:::\ndaemon:*:19000:0:99999:7:::\n")
+    link = tmp_path / "w.yaml"
+    link.symlink_to(secret)
+    problems = check_world_file(link)
+    assert len(problems) == 1 and "not a world file" in problems[0].message
+    assert all("SECRET" not in str(p) and "daemon" not in str(p) for p in problems)
+    # A world with one odd key still names it when it is a word, and hides it when it is not.
+    listed = parse_world(HEADER.replace("zones:", "zonse: 1\nzones:") + ROOM + "'root:x:0:0': 1\n", "w.yaml")[1]
+    assert any("'zonse' (did you mean 'zones'?)" in p.message for p in listed)
+    assert all("root:x" not in str(p) for p in listed)

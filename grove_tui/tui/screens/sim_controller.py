@@ -1,7 +1,12 @@
 """Runs a Simulation in the worker thread and publishes immutable snapshots for the UI to draw.
 
 The UI never touches the Simulation: it sends commands through a queue and reads `latest`, a
-reference the sim thread swaps atomically. Nothing here imports textual.
+reference the sim thread swaps atomically. The run's counters (metrics.json's numbers, through
+`analysis.live_metrics.LiveMetrics`) are measured here too, between steps, on the frames recorded
+since the last measure: a snapshot carries the counters of its own instant (or of at most
+METRICS_SECONDS of wall time before it while playing), whatever the speed, and paused they are
+always the paused instant's. The controller also notices when the run is over (everyone out or
+done) and pauses it there. Nothing here imports textual.
 """
 
 from __future__ import annotations
@@ -10,13 +15,43 @@ import queue
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 MAX_SPEED = 0.0  # as fast as the machine steps
 DRIVE_HOLD_SECONDS = 0.45  # terminals send no key-up: a drive command lasts until key repeat stops
 MAX_CATCH_UP_STEPS = 400
+# Wall seconds between two measures of the counters while playing (each reads only the frames since
+# the last one); paused, stepped or over, they are measured at once.
+METRICS_SECONDS = 0.25
+
+
+@dataclass(frozen=True)
+class RunEnd:
+    """The run is over: every person is out of the building or done with their tree, at time t."""
+
+    t: float
+    agents: int
+    out: int
+
+    @property
+    def text(self) -> str:
+        """'all 40 out at t = 83 s', or 'all 40 done at t = 83 s (12 out)'."""
+        when = f"t = {self.t:.0f} s"
+        if self.out == self.agents:
+            return f"all {self.agents} out at {when}"
+        return f"all {self.agents} done at {when}" + (f" ({self.out} out)" if self.out else "")
+
+
+@dataclass(frozen=True)
+class Counters:
+    """metrics.json's numbers for the run up to simulation time `t` (frame `step`), or why there are none."""
+
+    t: float
+    step: int
+    values: dict[str, float] = field(default_factory=dict)
+    error: str = ""
 
 
 @dataclass(frozen=True)
@@ -27,12 +62,14 @@ class Snapshot:
     tree_status: tuple[tuple[Any, str, str], ...]
     playing: bool
     speed: float  # MAX_SPEED for as fast as possible
-    steps_per_second: float
+    steps_per_second: float  # simulated seconds per wall second over the last two seconds (the real speed)
     manual_robot: bool
+    counters: Counters | None = None
+    ended: RunEnd | None = None
 
 
 class SimulationController:
-    def __init__(self, simulation: Any, fps: float = 20.0, speed: float = 1.0) -> None:
+    def __init__(self, simulation: Any, fps: float = 20.0, speed: float = 1.0, metrics: Any = None) -> None:
         self.simulation = simulation
         self.fps = fps
         self.dt = float(getattr(simulation, "dt", 0.05))
@@ -41,6 +78,9 @@ class SimulationController:
         self.selected = -1
         self.manual_robot = False
         self.latest: Snapshot | None = None
+        self.metrics = metrics  # LiveMetrics (or None: no counters)
+        self.counters: Counters | None = None
+        self.ended: RunEnd | None = None
         self._commands: queue.SimpleQueue[tuple[Any, ...]] = queue.SimpleQueue()
         self._wake = threading.Event()
         self._serial = 0
@@ -49,6 +89,8 @@ class SimulationController:
         self._driving = False
         self._step_times: list[tuple[float, int]] = []
         self._steps = 0
+        self._measured_steps = -1  # the step count the counters were last measured at
+        self._metrics_due = 0.0
 
     # commands from the UI thread (thread-safe) ------------------------------------------------------
     def send(self, *command: Any) -> None:
@@ -58,6 +100,7 @@ class SimulationController:
     # the worker thread -----------------------------------------------------------------------------
     def run(self, cancelled: Callable[[], bool]) -> None:
         period = 1.0 / self.fps
+        self._measure()
         self._publish()
         while not cancelled():
             tick_start = time.monotonic()
@@ -67,6 +110,11 @@ class SimulationController:
             if self._driving and time.monotonic() > self._drive_until:
                 self._robot_command(0.0, 0.0)
                 self._driving = False
+            if changed:
+                self._check_end()
+            if self._counters_due():
+                self._measure()
+                changed = True
             if changed:
                 self._publish()
             remaining = period - (time.monotonic() - tick_start)
@@ -102,6 +150,43 @@ class SimulationController:
 
     def _time(self) -> float:
         return float(getattr(self.simulation, "time", None) or self.simulation.frame().t)
+
+    def _check_end(self) -> None:
+        """Pause the run where nothing is left to happen to its people (once: play resumes it after)."""
+        if self.ended is not None:
+            return
+        run_state = getattr(self.simulation, "run_state", None)
+        if run_state is None:
+            return
+        state = run_state()
+        if state.over:
+            self.ended = RunEnd(self._time(), state.agents, state.out)
+            self.playing = False
+            self._anchor = None
+
+    def _counters_due(self) -> bool:
+        if self.metrics is None or self._measured_steps == self._steps:
+            return False
+        # Paused (after a step, or at the end): measure now; playing: every METRICS_SECONDS.
+        return not self.playing or time.monotonic() >= self._metrics_due
+
+    def _measure(self) -> None:
+        """The counters up to now: the live metrics read the frames recorded since their last read."""
+        self._measured_steps = self._steps
+        self._metrics_due = time.monotonic() + METRICS_SECONDS
+        live = self.metrics
+        if live is None or (self.counters is not None and self.counters.error):
+            return
+        sim = self.simulation
+        step = int(getattr(sim, "step_count", self._steps))
+        try:
+            live.update(sim.recorder)
+            values = live.values(sim.events)
+        except Exception as exc:  # a metrics bug must show in the panel, not stop the simulation
+            self.counters = Counters(self._time(), step, {}, f"{type(exc).__name__}: {exc}")
+            return
+        if live.t is not None:
+            self.counters = Counters(float(live.t), step, values)
 
     def _drain(self) -> bool:
         changed = False
@@ -167,4 +252,4 @@ class SimulationController:
             rate = sum(n for _, n in self._step_times[1:]) / span if span > 0 else 0.0
         self._serial += 1
         self.latest = Snapshot(self._serial, frame, self.selected, status, self.playing, self.speed,
-                               rate * self.dt, self.manual_robot)
+                               rate * self.dt, self.manual_robot, self.counters, self.ended)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-import time
 from collections.abc import Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
@@ -21,7 +20,8 @@ from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.screens.inspect import base_overlay, busiest_goal
-from grove_tui.tui.screens.sim_controller import MAX_SPEED, SPEEDS, Snapshot, SimulationController
+from grove_tui.tui.screens.counters import CountersScreen
+from grove_tui.tui.screens.sim_controller import MAX_SPEED, SPEEDS, Counters, RunEnd, Snapshot, SimulationController
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
 from grove_tui.tui.widgets import map_styles as ms
 from grove_tui.tui.widgets.map_legend import MapLegend
@@ -48,13 +48,8 @@ LIVE_METRICS = (
     "robot_on_person_collision",
     "person_on_robot_collision",
 )
-METRICS_INTERVAL = 1.0  # seconds between recomputations of the counters (they read the whole run so far)
-# A recomputation reads the whole run so far, so it grows with the run: with 500 agents it took 4.8 s
-# of CPU at t = 21 s (pairwise overlaps per frame, line of sight in Python), in a thread sharing the
-# GIL and the cores with the UI. After one that took D seconds the next waits METRICS_DUTY * D, so the
-# counters take at most 1 / (1 + METRICS_DUTY) of the time the frames need (the panel says "to t = ...").
-METRICS_DUTY = 4.0
-METRICS_ROWS_TIMEOUT = 10.0
+TREE_MIN_ROWS = 8  # the live tree's panel: six rows of nodes and its border, whatever else the column shows
+COUNTERS_KEY = "m"
 
 
 def speed_label(speed: float) -> str:
@@ -68,11 +63,9 @@ def metric_text(value: float) -> str:
     return f"{int(value)}" if float(value).is_integer() else f"{value:.2f}"
 
 
-def metrics_text(values: dict[str, float], t: float, width: int) -> str:
-    """metrics.json's own names and numbers for the run so far, values right-aligned in `width` columns.
-
-    A name too long to share its line with the value (the narrow layout) gets the value on the next line.
-    """
+def counter_lines(values: dict[str, float], width: int) -> list[str]:
+    """metrics.json's own names and numbers, values right-aligned in `width` columns; a name too long
+    to share its line with the value (the narrow layout) gets the value on the next line."""
     width = max(width, 12)
     lines = []
     for key in LIVE_METRICS:
@@ -82,9 +75,21 @@ def metrics_text(values: dict[str, float], t: float, width: int) -> str:
         if len(key) + 1 + len(value) <= width:
             lines.append(key + value.rjust(width - len(key)))
         else:
-            lines.extend([key[:width], value.rjust(width)])
-    lines.append(f"metrics.json to t = {t:.1f} s")
-    return "\n".join(lines)
+            lines.extend([cut(key, width), value.rjust(width)])
+    return lines
+
+
+def counters_line(values: dict[str, float], width: int) -> str:
+    """The counters folded into one line ("goal_reach_rate 0.17 · agent_overlaps 0 · …"), cut with "…"."""
+    parts = [f"{key} {metric_text(values[key])}" for key in LIVE_METRICS if key in values]
+    return cut(" · ".join(parts), width)
+
+
+def cut(text: str, width: int) -> str:
+    """`text` in `width` columns: whole, or cut with "…" as its last character."""
+    if len(text) <= width:
+        return text
+    return text[: max(0, width - 1)] + "…"
 
 
 class SimMapView(MapView):
@@ -118,6 +123,12 @@ The Social Force crowd runs off the UI thread; the map shows every agent and the
 possible, **a**/**A** select the next/previous agent (its tree shows the live status of every
 node), arrows drive the robot, **r** back to its path, **c** colour by group or behavior,
 **e** exports bundle, trajectories and metrics.
+
+The **Counters** are metrics.json's numbers for the run so far (what `grove metrics` gives for the
+exported run), under metrics.json's names; their title says the simulated time they are for (a
+quarter of a second behind the clock at most while playing, exact when paused). When the column
+is short they fold into one line and **m** lists them all. The run pauses by itself once everyone
+is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 """
 
     BINDINGS = [
@@ -131,6 +142,8 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         Binding("r", "follow_path", "Robot", id="sim.robot_path", tooltip="Robot follows its planned path"),
         Binding("c", "colour_mode", "Colours", show=False, id="sim.colours", tooltip="Colour by group or behavior"),
         Binding("e", "export", "Export", id="sim.export", tooltip="Export bundle, trajectories and metrics"),
+        Binding(COUNTERS_KEY, "counters", "Counters", show=False, id="sim.counters",
+                tooltip="Every counter of the run so far, with the time it is for"),
         Binding("escape", "back", "Back", id="sim.back", tooltip="Back to inspect"),
     ]
 
@@ -153,11 +166,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         self.exporting = False
         self._resume_after_export = False
         self._export_progress: Any = None
-        self.metrics: dict[str, float] = {}
-        self.metrics_step = -1  # the simulation step the shown metrics were computed at
-        self._metrics_busy = False
-        self._metrics_started = 0.0  # time.monotonic() of the running recomputation
-        self._metrics_not_before = 0.0  # no recomputation starts before this time.monotonic()
+        self.metrics: dict[str, float] = {}  # the counters shown, metrics.json's flat numbers
+        self.metrics_step = -1  # the simulation step the shown counters were measured at
+        self.metrics_t: float | None = None  # the simulated time they are for
+        self._counters: Counters | None = None
+        self._counters_folded = False
+        self.run_end: RunEnd | None = None  # set once the run is over (RunEnded posted)
 
     @property
     def grove(self) -> GroveApp:
@@ -177,7 +191,8 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
                 status.border_title = "Simulation"
                 yield status
                 counters = Static("", id="counters", markup=False)
-                counters.border_title = "Counters (metrics.json)"
+                counters.border_title = "Counters"
+                counters.border_subtitle = "metrics.json"
                 yield counters
                 tree = BTTree("agent", id="sim-tree")
                 tree.border_title = "Agent tree (a: select)"
@@ -201,7 +216,6 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         sys.setswitchinterval(UI_SWITCH_INTERVAL)
         self.start_simulation()
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
-        self.set_interval(METRICS_INTERVAL, self.refresh_metrics, name="sim-metrics")
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
         return [
@@ -211,6 +225,7 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
             ("Select next agent", "Show the next agent's live tree", lambda: self.action_select(1)),
             ("Robot follows its path", "Stop driving the robot by hand", self.action_follow_path),
             ("Export", "Bundle, trajectories and metrics", self.action_export),
+            ("Counters", "Every counter of the run so far", self.action_counters),
         ]
 
     # the simulation worker --------------------------------------------------------------------------
@@ -219,11 +234,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         worker = get_current_worker()
         try:
             simulation = self.grove.backend.simulation(self.generated)
+            metrics = self.grove.backend.live_metrics(self.generated)
         except Exception as exc:
             self.post_message(msg.SimulationFailed(describe_error(exc).text))
             return
         settings = self.grove.settings.simulation
-        controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed)
+        controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed, metrics=metrics)
         self.controller = controller
         self.post_message(msg.SimulationReady(simulation))
         controller.run(lambda: worker.is_cancelled)
@@ -309,6 +325,12 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         world_map.set_agents(rasterise_agents(raster, np.asarray(frame.pos), colours, selected_index, robot))
         self.frames_drawn += 1
         self._show_status(snapshot)
+        if snapshot.counters is not self._counters:
+            self._show_counters(snapshot.counters)
+        if snapshot.ended is not None and self.run_end is None:
+            self.run_end = snapshot.ended
+            self.post_message(msg.RunEnded(snapshot.ended.t, snapshot.ended.text, snapshot.ended.agents,
+                                           snapshot.ended.out))
         if snapshot.selected == self._selected_agent and self._selected_agent >= 0 and snapshot.tree_status:
             tree = self.query_one("#sim-tree", BTTree)
             if self._tree_agent != self._selected_agent:
@@ -320,17 +342,21 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
     def _show_status(self, snapshot: Snapshot) -> None:
         frame = snapshot.frame
         state = "⏸ paused for export" if self.exporting else "▶ playing" if snapshot.playing else "⏸ paused"
+        speed = speed_label(snapshot.speed)
+        if snapshot.playing and snapshot.speed != MAX_SPEED and 0 < snapshot.steps_per_second < 0.9 * snapshot.speed:
+            speed += f" ({snapshot.steps_per_second:.1f}x)"  # what the machine keeps up with
         robot = "manual" if snapshot.manual_robot else "path"
+        total = len(self._agent_ids)
         lines = [
-            f"{state}  speed {speed_label(snapshot.speed)}",
+            f"{state}  {speed}",
             f"t = {float(frame.t):7.2f} s",
-            f"agents {len(frame.ids)} · robot {robot}",
+            f"agents {len(frame.ids)}/{total} · robot {robot}",
         ]
         in_queue = getattr(frame.counters, "in_queue", 0)
         if in_queue:
             lines.append(f"in queue now {in_queue}")
-        if self._selected_agent >= 0:
-            lines.append(f"selected agent {self._selected_agent}")
+        if snapshot.ended is not None:
+            lines.append(f"■ {snapshot.ended.text}")
         text = "\n".join(lines)
         if text == self._status_text:
             return
@@ -340,58 +366,57 @@ node), arrows drive the robot, **r** back to its path, **c** colour by group or 
         same_shape = [len(line) for line in self._status_text.split("\n")] == [len(line) for line in lines]
         self._status_text = text
         self.query_one("#sim-status", Static).update(text, layout=not same_shape)
+        if not same_shape:
+            self.call_after_refresh(self._fit_counters)
 
-    # counters: metrics.json's function on the run so far, off the UI thread ------------------------------
-    def refresh_metrics(self) -> None:
-        controller = self.controller
-        snapshot = None if controller is None else controller.latest
-        if snapshot is None or self._metrics_busy or self.exporting or snapshot.frame.step == self.metrics_step:
+    # counters: metrics.json's numbers, measured in the simulation thread (sim_controller) ----------------
+    def _show_counters(self, counters: Counters | None) -> None:
+        self._counters = counters
+        panel = self.query_one("#counters", Static)
+        if counters is None:
             return
-        now = time.monotonic()
-        if now < self._metrics_not_before:
+        if counters.error:
+            panel.update(cut(f"✗ {counters.error}", 200))
             return
-        self._metrics_busy = True
-        self._metrics_started = now
-        self.compute_metrics(controller)
+        self.metrics, self.metrics_step, self.metrics_t = counters.values, counters.step, counters.t
+        panel.border_title = f"Counters · t = {counters.t:.2f} s"
+        width = panel.content_size.width or 26
+        if self._counters_folded:
+            panel.update(counters_line(counters.values, width), layout=False)
+        else:
+            panel.update("\n".join(counter_lines(counters.values, width)))
+            self.call_after_refresh(self._fit_counters)
+        dialog = self.app.screen
+        if isinstance(dialog, CountersScreen):
+            dialog.show(counters)
 
-    @work(thread=True, exclusive=True, group="metrics", exit_on_error=False, description="computing counters")
-    def compute_metrics(self, controller: SimulationController) -> None:
-        import threading
-
-        taken: dict[str, Any] = {}
-        done = threading.Event()
-
-        def take(simulation: Any) -> None:
-            # In the simulation thread, between steps: rows, events and step all belong to one instant.
-            taken["step"] = simulation.step_count
-            taken["t"] = float(simulation.frame().t)
-            taken["rows"] = simulation.recorder.to_array()
-            taken["events"] = list(simulation.events)
-
-        def reply(result: Any) -> None:
-            taken["error"] = result if isinstance(result, Exception) else None
-            done.set()
-
-        controller.send("call", take, reply)
-        try:
-            if not done.wait(METRICS_ROWS_TIMEOUT) or taken.get("error") is not None:
-                raise RuntimeError(f"cannot read the run: {taken.get('error') or 'the simulation did not answer'}")
-            values = self.grove.backend.run_metrics(self.generated, taken["rows"], taken["events"])
-        except Exception as exc:  # a metrics bug must show in the panel, not stop the simulation
-            self.post_message(msg.MetricsComputed(-1, 0.0, {}, f"{type(exc).__name__}: {exc}"))
+    def _fit_counters(self) -> None:
+        """All the counters when the column has room for them and the live tree's rows; else one line."""
+        counters = self._counters
+        if counters is None or counters.error or not self.is_mounted:
             return
-        self.post_message(msg.MetricsComputed(taken["step"], taken["t"], values))
+        panel = self.query_one("#counters", Static)
+        side = self.query_one("#sim-side")
+        status = self.query_one("#sim-status", Static)
+        width = panel.content_size.width or 26
+        lines = counter_lines(counters.values, width)
+        room = side.size.height - status.outer_size.height - TREE_MIN_ROWS - 2  # the counters' border
+        folded = len(lines) > room
+        if folded != self._counters_folded or folded:
+            self._counters_folded = folded
+            panel.set_class(folded, "-folded")
+            panel.border_subtitle = f"{COUNTERS_KEY}: all" if folded else "metrics.json"
+            panel.update(counters_line(counters.values, width) if folded else "\n".join(lines))
 
-    def on_metrics_computed(self, message: msg.MetricsComputed) -> None:
-        self._metrics_busy = False
-        now = time.monotonic()
-        self._metrics_not_before = now + METRICS_DUTY * (now - self._metrics_started)
-        counters = self.query_one("#counters", Static)
-        if message.error:
-            counters.update(f"✗ {message.error}")
-            return
-        self.metrics, self.metrics_step = message.values, message.step
-        counters.update(metrics_text(message.values, message.t, counters.content_size.width))
+    def on_resize(self) -> None:
+        self.call_after_refresh(self._fit_counters)
+
+    def action_counters(self) -> None:
+        self.app.push_screen(CountersScreen(self._counters))
+
+    def on_run_ended(self, message: msg.RunEnded) -> None:
+        """Everyone is out or done: the run paused itself; say so (the grounding report can hook here)."""
+        self.notify(f"{message.text}. Space plays on; e exports the run.", title="Run over", timeout=8)
 
     # actions ---------------------------------------------------------------------------------------
     def _send(self, *command: Any) -> None:

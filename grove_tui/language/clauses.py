@@ -1,0 +1,433 @@
+"""Pass 3: what each clause says its people do, and where.
+
+A clause is the words a group owns (from its mention to the next group's) or a sentence's words
+before its first mention (its scene, read for every group of that sentence). Phrase by phrase: a
+preposition gives a place its role (from: start; to/into: destination; at/in/on: location, or the
+start of movers; through/via/past: via), a verb's object does too ("leave the ward", "enter the
+lobby", "cross the hall"), "to"/"in order to"/"for" open a purpose ("to catch the train at platform 1"
+keeps its place as where they go), and durations are waits. Then the intent from the verbs (phrasal
+verbs first), the robot interaction (reactions.py), evacuation cues, whom a follower follows, pace
+and togetherness.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.counts import duration_at
+from grove_tui.language.people import People
+from grove_tui.language.place_phrases import Place, PlacePhrases
+from grove_tui.language.reactions import robot_interaction, robot_positions
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import lemma, verb_lemma
+
+# Words that keep a word inside a place phrase available as a verb ("wait in the waiting room").
+_VERBS_INSIDE_NAMES = ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang")
+
+
+@dataclass
+class Clause:
+    intent: str | None = None
+    verb: str | None = None
+    verb_index: int | None = None
+    robot: str | None = None
+    places: list[Place] = field(default_factory=list)
+    purpose: str | None = None
+    wait_seconds: float | None = None
+    together: bool = False
+    pace: str = "normal"
+    follows: str | None = None
+    evacuate: bool = False
+    has_action: bool = False
+    moves: bool = False  # a verb of walking is among the clause's verbs
+
+
+@dataclass
+class _Scan:
+    """The state of one clause's phrase-by-phrase scan."""
+
+    c: Clause
+    own: list[int]
+    used: set[int] = field(default_factory=set)
+    pos: int = 0  # position in `own`
+
+
+class Clauses:
+    """Reads clauses of one sentence."""
+
+    def __init__(self, s: Sentence, people: People, places: PlacePhrases) -> None:
+        self.s = s
+        self.people = people
+        self.places = places
+
+    def read(self, toks: Sequence[int], excluded: set[int], scene: bool = False,
+             robot_after: int | None = None, owner: str | None = None) -> Clause:
+        """The clause of the words `toks` less `excluded` (mentions, the robot's own clauses), said of
+        people of the kind `owner` ("their room" is a room of theirs)."""
+        before, self.places.owner = self.places.owner, owner
+        try:
+            return self._read(toks, excluded, scene, robot_after)
+        finally:
+            self.places.owner = before
+
+    def _read(self, toks: Sequence[int], excluded: set[int], scene: bool, robot_after: int | None) -> Clause:
+        s = self.s
+        own = [i for i in toks if i not in excluded]
+        scan = _Scan(Clause(), own)
+        c = scan.c
+        c.robot = robot_interaction(s, own, robot_positions(s, own, robot_after))
+        c.has_action = c.robot is not None
+        while scan.pos < len(own):
+            if not self._phrase(scan):
+                scan.pos += 1
+        if scene:
+            self._scene(scan)
+        self._intent(scan)
+        self._evacuation(c, own)
+        if c.intent == "follow" and c.verb_index is not None:
+            self._followed(c)
+        self._manner(c, own)
+        return c
+
+    # ---- phrases ---------------------------------------------------------------------------------
+
+    def _phrase(self, scan: _Scan) -> bool:
+        """Read the phrase at the scan's position; False when no phrase starts there."""
+        s = self.s
+        i = scan.own[scan.pos]
+        w = s.low[i]
+        nxt = s.low[i + 1] if i + 1 < s.n else ""
+        if w == "for" and not (i > 0 and s.low[i - 1] in lx.EXCEPT_WORDS) and self._for(scan, i, nxt):
+            return True
+        if i > 0 and lx.INTENT_VERBS.get(s.verb(i - 1)) in lx.STATIONARY_INTENTS and scan.c.wait_seconds is None:
+            dur = duration_at(s, i)  # "waits 15 minutes outside the room": a duration without "for"
+            if dur is not None:
+                scan.c.wait_seconds = dur[0]
+                self._take(scan, i, dur[1])
+                return True
+        negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(s.low[i:i + len(p)]) == p), None)
+        if negated is not None:
+            # "go to the imaging instead of the waiting room": a place nobody goes to
+            k = i + len(negated)
+            place = self.places.phrase(k, "at", i, record_unknown=False)
+            self._take(scan, i, place.end if place is not None else s.phrase_end(k))
+            return True
+        if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
+            scan.c.evacuate = scan.c.evacuate or w != "clearing"
+            return self._add_place(scan, self.places.phrase(i + 2, "obj:start", i), i)
+        if w == "to" and nxt == "be" and i + 2 < s.n and verb_lemma(s.low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
+            return False  # "the hall has to be emptied": the zone's evacuation, read by emptied_zones
+        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and not self.places.names_place(i + 1):
+            return self._purpose(scan, i, i, i + 2)
+        if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
+            return self._purpose(scan, i, i + 2, i + 4)
+        prep = s.preposition(i)
+        if prep is not None:
+            name, width = prep
+            if name == "from" and self._after_transaction(i, scan.own):
+                name = "at"  # "buy tickets from the machines": where they stand, not where they start
+            # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
+            place = self.places.phrase(i + width, name, i, record_unknown=name != "off")
+            if place is not None:
+                # "check in counter a": the "in" inside a name is not a new phrase
+                return self._add_place(scan, place, i)
+            return False
+        return self._verb_object(scan, i, nxt)
+
+    def _take(self, scan: _Scan, first: int, end: int) -> None:
+        scan.used.update(range(first, end))
+        scan.pos = self.s.advance(scan.own, end)
+
+    def _add_place(self, scan: _Scan, place: Place | None, first: int) -> bool:
+        if place is None:
+            return False
+        scan.c.places.append(place)
+        self._take(scan, first, place.end)
+        return True
+
+    def _for(self, scan: _Scan, i: int, nxt: str) -> bool:
+        """"for five minutes" (a wait), "head for the exit" (a destination), "for coffee" (a purpose)."""
+        s = self.s
+        dur = duration_at(s, i + 1)
+        if dur is not None:
+            scan.c.wait_seconds = dur[0]
+            self._take(scan, i, dur[1])
+            return True
+        # "head for the exit", "make a beeline for gate B2", "queue for the coffee machine": a place by
+        # its whole name after a determiner; "for coffee", "for their prescriptions", "head out the back
+        # for a cigarette" are purposes, whatever they match.
+        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS
+        if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
+            place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
+            if place is not None:
+                scan.c.places.append(place)
+                scan.used.update(range(i, place.end))
+                scan.pos += 1
+                return True
+        end = s.phrase_end(i + 1)
+        if end > i + 1 and not any(s.low[x] in lx.ROBOT_WORDS for x in range(i + 1, end)) and \
+                not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
+            scan.c.purpose = scan.c.purpose or s.span(i, end - 1)
+            self._take(scan, i, end)
+            return True
+        return False
+
+    def _purpose(self, scan: _Scan, first: int, said_from: int, verb_at: int) -> bool:
+        """"to register", "in order to catch the bus": a purpose, not a place."""
+        s = self.s
+        end = s.phrase_end(verb_at, allow_objects=True)
+        scan.c.purpose = scan.c.purpose or s.span(said_from, max(end - 1, said_from + 1))
+        self._take(scan, first, end)
+        return True
+
+    def _verb_object(self, scan: _Scan, i: int, nxt: str) -> bool:
+        """A place as a verb's object: "leave the ward", "skip the ICU", "clear the platform", "mops
+        the corridor" (a verb the lexicon lacks, with a whole place name for its object)."""
+        s = self.s
+        c = scan.c
+        v = s.verb(i)
+        if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1)):
+            # "skip the critical care and go to ...": a place they do not go to
+            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False)
+            self._take(scan, i, place.end if place is not None else i + 1)
+            return True
+        if v in lx.ZONE_EMPTYING_VERBS and s.w[i].pos == "VERB" and not s.after_determiner(i) and \
+                nxt in lx.DETERMINERS | {"out"}:
+            # "clear the platform", "empty out the ward": the zone everybody leaves
+            place = self.places.phrase(s.skip(i + 1, {"out"}), "obj:start", i, record_unknown=False)
+            if place is not None and place.match is not None and place.match.kind == "zone":
+                c.places.append(place)
+                c.evacuate = True
+                scan.used.update(range(i + 1, place.end))
+                scan.pos = s.advance(scan.own, place.end)
+                return True
+        if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
+                and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1))
+                and not s.after_determiner(i) and self.places.names_place(s.skip(i + 1, lx.DETERMINERS))):
+            # "a cleaner sweeps platform 2", "mops the corridor": the object of a verb the lexicon lacks
+            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False)
+            if place is not None:
+                c.places.append(place)
+                c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
+                scan.used.update(range(i, place.end))
+        elif not s.after_determiner(i) and v in lx.OBJECT_VERBS:
+            if nxt in lx.DETERMINERS or (nxt and s.index.knows(lemma(nxt))):
+                role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
+                        else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
+                place = self.places.phrase(i + 1, role, i)
+                if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
+                    c.places.append(place)
+        return False
+
+    def _after_transaction(self, i: int, own: Sequence[int]) -> bool:
+        """Whether a verb of getting something governs the preposition at i ("buy tickets from")."""
+        return any(verb_lemma(self.s.low[k]) in lx.TRANSACTION_VERBS for k in own if i - 4 <= k < i)
+
+    def _verb_just_before(self, i: int) -> str | None:
+        """The verb (or "beeline") right before i, past adverbs ("head straight for the exit")."""
+        s = self.s
+        j = i - 1
+        while j >= 0 and (s.w[j].pos == "ADV" or s.low[j] in ("straight", "directly", "off", "back")):
+            j -= 1
+        if j < 0:
+            return None
+        word = s.low[j]
+        return word if word in lx.FOR_DESTINATION_VERBS else verb_lemma(word)
+
+    # ---- a sentence's scene ----------------------------------------------------------------------
+
+    def _scene(self, scan: _Scan) -> None:
+        """What a sentence's words before its first group say for all of its groups."""
+        s = self.s
+        c, own = scan.c, scan.own
+        if any(s.low[i] in lx.ROBOT_WORDS for i in own):
+            first_robot = min(i for i in own if s.low[i] in lx.ROBOT_WORDS)
+            c.places = [p for p in c.places if p.index < first_robot]  # the robot's places are not the people's
+        # "Gate B1 clears out when the alarm sounds; its passengers ...": where they all leave
+        for place in self.places.emptied_zones(own):
+            c.places.insert(0, place)
+            c.evacuate = True
+        if not own:
+            return
+        # "The cafeteria is empty except for ...": a place as the subject of "to be" is where the
+        # sentence's people are. So is a place that heads the sentence before a colon ("Gate A1: 25
+        # people seated") or names the event the people come from ("the boardroom meeting of twelve
+        # people"); the subject of a passive takes the role the verb gives its object ("Ward B is
+        # visited by").
+        subject = self.places.phrase(own[0], "at", own[0], record_unknown=False)
+        if subject is None:
+            return
+        after = s.low[subject.end] if subject.end < s.n else ""
+        if subject.match is not None and self.places.passive_emptying(subject.end):
+            # "Platform 1 must be cleared: ...", "the ward has to be emptied": where everybody leaves
+            c.places.append(replace(subject, prep="obj:start"))
+            c.evacuate = True
+            scan.used.update(range(own[0], subject.end))
+        elif verb_lemma(after) in ("be", "stay", "remain", "get") or after in (":", "of"):
+            passive = subject.end + 1 < s.n and s.w[subject.end + 1].tag == "VBN"
+            verb = verb_lemma(s.low[subject.end + 1]) if passive else ""
+            if verb in lx.START_OBJECT_VERBS:
+                subject = replace(subject, prep="obj:start")
+            elif verb in lx.DESTINATION_OBJECT_VERBS:
+                subject = replace(subject, prep="obj:dest")
+            c.places.append(subject)
+            scan.used.update(range(own[0], subject.end))
+
+    # ---- what they do ----------------------------------------------------------------------------
+
+    def _intent(self, scan: _Scan) -> None:
+        """The intent from the verbs: phrasal verbs first, then single verbs; a verb inside a place
+        phrase or a relative clause ("who are waiting") is not one."""
+        s = self.s
+        c, own, used = scan.c, scan.own, scan.used
+        candidates: list[tuple[int, str, str]] = []
+        for i in own:
+            if i in used and s.low[i] not in _VERBS_INSIDE_NAMES:
+                continue
+            phrasal = next(((phrase, intent) for phrase, intent in lx.PHRASAL_INTENTS.items()
+                            if tuple(verb_lemma(x) if t == 0 else x for t, x in enumerate(s.low[i:i + len(phrase)]))
+                            == phrase), None)
+            if phrasal is not None:
+                candidates.append((i, phrasal[1], phrasal[0][0]))
+                continue
+            if i in used or s.after_determiner(i) or any(p.index < i < p.end for p in c.places):
+                continue
+            v = s.verb(i)
+            if v in lx.INTENT_VERBS and not (v == "line" and s.w[i].pos != "VERB"):
+                if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
+                                                                                  "way", "to")):
+                    continue
+                candidates.append((i, lx.INTENT_VERBS[v], v))
+        if any(s.w[i].pos == "VERB" and s.w[i].lemma not in ("be", "have") and i not in used for i in own):
+            c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
+        if any(i not in s.relative for i, _, _ in candidates):
+            candidates = [c_ for c_ in candidates if c_[0] not in s.relative]
+        if len(candidates) > 1 and own and candidates[0][0] == own[0] and s.w[own[0]].tag == "VBG":
+            candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
+        if candidates:
+            c.has_action = True
+            c.moves = any(kind in ("walk", "evacuate") for _, kind, _ in candidates)
+            c.intent, c.verb, c.verb_index = self._main_intent(candidates, c)
+
+    def _main_intent(self, candidates: list[tuple[int, str, str]], c: Clause) -> tuple[str, str, int]:
+        s = self.s
+        kinds = [k for _, k, _ in candidates]
+        has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places
+                              if p.match is not None)
+        for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
+            if wanted in kinds:
+                i, _, verb = candidates[kinds.index(wanted)]
+                if wanted == "wander" and has_destination and "walk" not in kinds[:kinds.index(wanted)] \
+                        and not s.around_follows(i):
+                    return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
+                return wanted, verb, i
+        i, kind, verb = candidates[0]
+        if kind == "walk" and s.around_follows(i) and not has_destination:
+            return "wander", verb, i
+        return kind, verb, i
+
+    def _evacuation(self, c: Clause, own: Sequence[int]) -> None:
+        s = self.s
+        if any(verb_lemma(s.low[i]) in ("evacuate", "flee", "escape") or s.low[i] in ("evacuation",) for i in own):
+            c.evacuate = True
+        for i in own:
+            pair = (s.verb(i), s.low[i + 1] if i + 1 < s.n else "")
+            if pair in lx.EVACUATION_PHRASES or (pair in lx.URGENT_EXIT_PHRASES and self.urgent(own)):
+                c.evacuate = True  # "empty out through the back door", "must get out via the east exit"
+                if c.intent is None or c.intent in lx.STATIONARY_INTENTS:
+                    c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", pair[0], i, True, True
+                break
+        if any(s.verb(i) in lx.DEPARTURE_VERBS for i in own) and any(s.low[i] in lx.IMMEDIACY_WORDS for i in own):
+            c.evacuate = True  # "everyone must leave immediately through the customs exit"
+
+    def _followed(self, c: Clause) -> None:
+        """Whom a follower follows: the person after the verb ("follow the charge nurse"), the group
+        before ("a porter follows close behind"), or nobody ("follow the signs": walking)."""
+        s = self.s
+        assert c.verb_index is not None
+        k0 = s.skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
+        k1 = s.skip(k0, {"behind", "after"})
+        k = s.skip(k1, lx.DETERMINERS)
+        if k + 1 < s.n and s.w[k].pos in ("NOUN", "ADJ", "PROPN") and self.people.is_person_noun(k + 1):
+            k += 1  # "follow the charge nurse"
+        if k < s.n and (self.people.is_person_noun(k) or s.low[k] in ("them", "him", "her", "others", "leader",
+                                                                      "guide", "us", "everyone")):
+            c.follows = s.span(c.verb_index + 1, k)
+        elif k1 > k0 or k0 >= s.n or s.is_punct(k0) or s.low[k0] in lx.CLAUSE_STARTERS:
+            c.follows = "the group before"
+        else:
+            c.intent = "walk"
+
+    def _manner(self, c: Clause, own: Sequence[int]) -> None:
+        s = self.s
+        lemmas = {verb_lemma(s.low[i]) for i in own} | {s.low[i] for i in own}
+        trigrams = s.trigrams(own)
+        if lemmas & lx.FAST_WORDS or ("in", "a", "hurry") in trigrams:
+            c.pace = "fast"
+        elif lemmas & lx.SLOW_WORDS or ("take", "their", "time") in {(verb_lemma(t[0]), *t[1:]) for t in trigrams}:
+            c.pace = "slow"
+        if {s.low[i] for i in own} & lx.TOGETHER_WORDS or any(i in s.together_phrases for i in own):
+            c.together = True
+
+    # ---- sentence-wide cues ----------------------------------------------------------------------
+
+    def hazard(self, i: int) -> bool:
+        """A hazard named on its own ("Fire!", "a bomb scare", "smoke in the kitchen"), not as the
+        first word of a thing's name ("the fire exit", "the smoke detector")."""
+        s = self.s
+        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN"):
+            return False
+        return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")
+
+    def urgent(self, own: Sequence[int]) -> bool:
+        """Whether the clause says leaving cannot wait ("must get out", "get out now") or the prompt
+        names a hazard ("Fire! ... get out")."""
+        return any(self.s.low[i] in lx.URGENCY_WORDS for i in own) or any(self.hazard(i) for i in range(self.s.n))
+
+    def evacuation(self) -> bool:
+        """Whether the prompt speaks of an evacuation anywhere (a cue word or a hazard)."""
+        s = self.s
+        return any(s.low[i] in lx.EVACUATION_CUES or verb_lemma(s.low[i]) in lx.EVACUATION_CUES or self.hazard(i)
+                   for i in range(s.n))
+
+    def negated_tokens(self) -> set[int]:
+        """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers
+        are waiting on platform 1, but ..."): its places are where nobody is, so they set no scene.
+        Not when the clause names an exception ("nobody is in the kitchen except the cleaner")."""
+        s = self.s
+        out: set[int] = set()
+        for i in range(s.n):
+            nobody = s.low[i] in lx.NOBODY_WORDS or (s.low[i] == "no" and i + 1 < s.n and (
+                s.low[i + 1] in ("one", "body") or self.people.is_person_noun(i + 1)))
+            if not nobody:
+                continue
+            end = i + 1
+            while end < s.n and s.w[end].sentence == s.w[i].sentence and s.low[end] not in (";", ":") \
+                    and not (s.low[end] in lx.CLAUSE_STARTERS | {"instead"} and end > i + 2):
+                end += 1
+            clause = range(i, end)
+            if any(s.low[k] in lx.EXCEPT_WORDS or s.low[k] in ("apart", "only", "than") for k in clause) or \
+                    (end < s.n and s.low[end] in lx.EXCEPT_WORDS - {"but"}):  # "..., but a cleaner"
+                continue
+            out.update(clause)
+        return out
+
+    def fronted_start(self, previous_last: int, first: int) -> int:
+        """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
+        no verb, opened by a preposition and closed by a comma; else the mention itself."""
+        s = self.s
+        b = first - 1
+        if b <= previous_last or s.low[b] != ",":
+            return first
+        j = b - 1
+        while j > previous_last and (not s.is_punct(j) or s.hyphen_inside(j)) and s.low[j] not in lx.CLAUSE_STARTERS:
+            j -= 1
+        fronted = range(j + 1, b)
+        if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
+            return first
+        if any(s.w[x].pos == "VERB" and verb_lemma(s.low[x]) in lx.INTENT_VERBS
+               and not s.index.knows(lemma(s.low[x])) for x in fronted):
+            return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)
+        return j + 1

@@ -1,0 +1,189 @@
+"""Numbers and quantities as people write them: digits and words ("twenty five", "a dozen", "10
+million"), approximations ("about 20", "fifteen or so", "twenty-odd"), ranges ("two or three",
+"between 5 and 8"), vague words ("a few", "lots of"), durations ("half an hour"), and the counts
+they make (language/model.py `Count`, ranges documented in language/lexicon.py)."""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import NamedTuple
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.model import Count
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import lemma
+
+_DECIMAL = re.compile(r"\d+\.\d+")
+
+
+class Quantifier(NamedTuple):
+    """A count expression: its value (0 for vague words), kind ("exact", "approximate", "range",
+    "vague:<word>"), the word index after it, and the top of a range."""
+
+    value: int
+    kind: str
+    end: int
+    high: int | None = None
+    low: int | None = None  # the bottom of an approximate count with its own bounds ("2.5": 2-3)
+
+
+def number_at(s: Sentence, i: int) -> tuple[int, int] | None:
+    """(value, index after) of a number written at word i: digits, words, "a dozen", "twenty five"."""
+    if i >= s.n:
+        return None
+    low = s.low
+    w = low[i].replace(",", "")
+    if w.isdigit():
+        value, j = int(w), i + 1
+        if j < s.n and low[j] in lx.SCALES:  # "10 million people": read, so it can be refused
+            value, j = value * lx.SCALES[low[j]], j + 1
+    elif w in lx.UNITS or w in lx.TENS:
+        total, current, j = 0, 0, i
+        while j < s.n:
+            x = low[j]
+            if x in lx.UNITS:
+                current += lx.UNITS[x]
+            elif x in lx.TENS:
+                current += lx.TENS[x]
+            elif x == "-" and j + 1 < s.n and low[j + 1] in lx.UNITS and current % 10 == 0 and current:
+                pass  # "twenty-five"
+            elif x in lx.SCALES and (current or total):
+                current = max(current, 1) * lx.SCALES[x]
+                if x in lx.BIG_SCALES:
+                    total, current = total + current, 0
+            elif x == "and" and j + 1 < s.n and low[j + 1] in lx.UNITS and current >= 100:
+                pass
+            else:
+                break
+            j += 1
+        value = total + current
+    elif w == "dozen":
+        value, j = 12, i + 1
+    elif w in ("a", "an") and i + 1 < s.n and (low[i + 1] == "dozen" or low[i + 1] in lx.SCALES):
+        # "a thousand", "a billion people": read as numbers, so check_population refuses them.
+        value, j = (12 if low[i + 1] == "dozen" else lx.SCALES[low[i + 1]]), i + 2
+    elif w == "half" and tuple(low[i + 1:i + 3]) == ("a", "dozen"):
+        value, j = 6, i + 3  # "half a dozen"
+    else:
+        return None
+    if j < s.n and low[j] == "dozen" and w != "dozen":
+        value, j = value * 12, j + 1
+    return value, j
+
+
+def decimal_at(s: Sentence, i: int) -> tuple[float, int] | None:
+    """(value, index after) of a number with a fraction ("2.5"): people come whole, so it is read
+    as an approximate count between the whole numbers around it."""
+    if i < s.n and _DECIMAL.fullmatch(s.low[i]):
+        return float(s.low[i]), i + 1
+    return None
+
+
+def quantifier(s: Sentence, j: int) -> Quantifier | None:
+    """The count expression at word j, if one starts there."""
+    low = s.low
+    if j >= s.n:
+        return None
+    approx = False
+    k = j
+    if low[k] in lx.APPROXIMATE_WORDS and k + 1 < s.n and (number_at(s, k + 1) is not None
+                                                           or decimal_at(s, k + 1) is not None):
+        approx, k = True, k + 1
+    else:
+        for phrase in lx.APPROXIMATE_PHRASES:
+            if tuple(low[k:k + len(phrase)]) == phrase and number_at(s, k + len(phrase)) is not None:
+                approx, k = True, k + len(phrase)
+                break
+    if low[k] == "between" and number_at(s, k + 1):
+        a = number_at(s, k + 1)
+        if a is not None and a[1] < s.n and low[a[1]] == "and":
+            b = number_at(s, a[1] + 1)
+            if b is not None:
+                return Quantifier(a[0], "range", b[1], b[0])
+    fraction = decimal_at(s, k)
+    if fraction is not None and fraction[0] > 0:
+        value, after = fraction
+        return Quantifier(max(1, math.floor(value + 0.5)), "approximate", after, max(1, math.ceil(value)),
+                          max(1, math.floor(value)))
+    num = number_at(s, k)
+    if num is not None:
+        return _number_quantifier(s, num, approx)
+    if low[k] in ("a", "an") and k + 1 < s.n:
+        nxt = low[k + 1]
+        if nxt == "couple" and tuple(low[k + 2:k + 4]) == ("of", "dozen"):
+            return Quantifier(24, "approximate", k + 4)  # "a couple of dozen tourists": about 24
+        if nxt in ("couple", "pair") and k + 2 < s.n and low[k + 2] == "of":
+            return Quantifier(2, "exact", k + 3)
+        if nxt in ("few", "handful", "number", "lot"):
+            after = k + 2
+            if after < s.n and low[after] == "of":
+                after += 1
+            return Quantifier(0, f"vague:{nxt}", after)
+        return None
+    if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous", "scores",
+                  "hundreds"):
+        after = k + 1
+        if after < s.n and low[after] == "of" and low[k] in ("lots", "dozens", "scores", "hundreds"):
+            after += 1
+        return Quantifier(0, f"vague:{low[k]}", after)
+    return None
+
+
+def _number_quantifier(s: Sentence, num: tuple[int, int], approx: bool) -> Quantifier:
+    low = s.low
+    value, after = num
+    if tuple(low[after:after + 2]) == ("or", "so"):
+        return Quantifier(value, "approximate", after + 2)  # "fifteen or so women"
+    if after < s.n and low[after] == "odd":
+        return Quantifier(value, "approximate", after + 1)  # "twenty-odd customers"
+    if tuple(low[after:after + 2]) == ("-", "odd"):
+        return Quantifier(value, "approximate", after + 2)
+    if after + 1 < s.n and low[after] in ("to", "-", "or"):
+        b = number_at(s, after + 1)
+        if b is not None and b[0] > value:
+            return Quantifier(value, "range", b[1], b[0])
+    return Quantifier(value, "approximate" if approx else "exact", after)
+
+
+def count_of(s: Sentence, q: Quantifier, key: str, default: tuple[int, int] = lx.BARE_PLURAL_RANGE) -> Count:
+    """The Count a quantifier makes; vague and ranged ones take a seeded value inside their range."""
+    if q.kind == "exact":
+        return Count("exact", q.value, q.value, q.value)
+    if q.kind == "approximate" and q.low is not None and q.high is not None:
+        return Count("approximate", q.value, q.low, q.high)  # "2.5 people": 3, between 2 and 3
+    if q.kind == "approximate":
+        spread = max(1, round(q.value * lx.APPROXIMATE_SPREAD))
+        return Count("approximate", q.value, max(1, q.value - spread), q.value + spread)
+    if q.kind == "range":
+        high = q.high or q.value
+        return Count("vague", s.choose(q.value, high, key), q.value, high)
+    word = q.kind.split(":", 1)[1]
+    low_, high_ = lx.VAGUE_RANGES.get(word, default)
+    return Count("vague", s.choose(low_, high_, key), low_, high_)
+
+
+def duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
+    """(seconds, index after) of "five minutes", "a minute", "half an hour", "a few minutes"."""
+    low = s.low
+    if k >= s.n:
+        return None
+    if low[k] == "half" and k + 2 < s.n and low[k + 1] in ("a", "an") and lemma(low[k + 2]) in lx.DURATION_UNITS:
+        return lx.DURATION_UNITS[lemma(low[k + 2])] / 2, k + 3
+    j = k + 1 if low[k] in ("a", "one") else k
+    if (j + 3 < s.n and low[j] == "quarter" and low[j + 1] == "of" and low[j + 2] in ("a", "an")
+            and lemma(low[j + 3]) in lx.DURATION_UNITS):
+        return lx.DURATION_UNITS[lemma(low[j + 3])] / 4, j + 4  # "a quarter of an hour"
+    q = quantifier(s, k)
+    if q is not None and q.end < s.n and lemma(low[q.end]) in lx.DURATION_UNITS:
+        unit = lx.DURATION_UNITS[lemma(low[q.end])]
+        value = float(q.value)
+        if q.kind.startswith("vague"):
+            low_, high_ = lx.VAGUE_RANGES.get(q.kind.split(":")[1], (2, 4))
+            value = (low_ + high_) / 2
+        elif q.kind == "range":
+            value = (q.value + (q.high or q.value)) / 2
+        return value * unit, q.end + 1
+    if low[k] in ("a", "an", "one") and k + 1 < s.n and lemma(low[k + 1]) in lx.DURATION_UNITS:
+        return lx.DURATION_UNITS[lemma(low[k + 1])], k + 2
+    return None

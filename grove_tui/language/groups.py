@@ -1,0 +1,302 @@
+"""Pass 5: the groups of a prompt (language/model.py `GroupReading`), from its mentions and clauses.
+
+Each group owns its words up to the next mention; a sentence's words before its first mention are
+its scene, read for every group of that sentence, and a sentence with no people ("Evacuate the
+pharmacy.") sets the scene of the sentences after it. A group whose own words state no action
+shares the next group's ("ten patients and two nurses walk out"); everybody "except" someone takes
+the verb between them; a led group follows its leader. Then per group: the intent, the places by
+role (roles.py), the count settled (group_counts.py) and how sure the reader is of each field.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.clauses import Clause, Clauses
+from grove_tui.language.group_counts import count_confidence, settle_count
+from grove_tui.language.mentions import Mention, Mentions
+from grove_tui.language.model import FieldConfidence, GroupReading
+from grove_tui.language.place_phrases import PlacePhrases, place_confidences
+from grove_tui.language.robot import RobotClause, RobotClauses
+from grove_tui.language.roles import Roles, assign_roles
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+_FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
+
+
+@dataclass
+class _GroupWords:
+    """One group's mention, its clause, its sentence's scene and its words."""
+
+    mention: Mention
+    clause: Clause
+    scene: Clause | None
+    span: tuple[int, int]
+
+
+class Groups:
+    def __init__(self, s: Sentence, places: PlacePhrases, mentions: Mentions, clauses: Clauses,
+                 robot: RobotClauses) -> None:
+        self.s = s
+        self.places = places
+        self.mentions = mentions
+        self.clauses = clauses
+        self.robot = robot
+        self.notes: list[str] = []
+
+    def read(self, mentions: list[Mention], robot_clauses: Sequence[RobotClause]) -> list[GroupReading]:
+        s = self.s
+        robot_tokens = {i for rc in robot_clauses for i in rc.tokens}
+        spans = self._spans(mentions)
+        # The robot's own clauses belong to no group: a group's places never come from them.
+        excluded = {i for m in mentions for i in range(m.first, m.last + 1)} | robot_tokens
+        scenes = self._scenes(mentions, spans, excluded, robot_tokens)
+        clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
+                                     owner=m.label) for m, (a, b) in zip(mentions, spans)]
+        for k, m in enumerate(mentions):
+            if m.zone_place is not None:  # "half the open office goes ...": where they are
+                clauses[k].places.insert(0, m.zone_place)
+        self._share(mentions, clauses)
+        evacuation = self.clauses.evacuation()
+        groups: list[GroupReading] = []
+        for k, (m, clause) in enumerate(zip(mentions, clauses)):
+            words = _GroupWords(m, clause, scenes.get(s.w[m.first].sentence), self._own_span(spans[k], m, robot_tokens))
+            groups.append(self.group(words, evacuation, groups))
+        # "everyone has gone home (except ...)", "after everyone has left": people no longer there
+        gone = [k for k, m in enumerate(mentions) if m.whole_zone and m.relation is None
+                and self._already_gone(spans[k]) and len(mentions) > 1]
+        if gone and not any(g.relation for g in groups):
+            for k in gone:
+                self.notes = [n for n in self.notes if not n.startswith(f"'{groups[k].who}': ")]
+                self.notes.append(f"'{groups[k].who}' have already left: they are not in the scenario")
+            groups = [g for k, g in enumerate(groups) if k not in gone]
+        return groups
+
+    # ---- words to groups -------------------------------------------------------------------------
+
+    def _spans(self, mentions: list[Mention]) -> list[tuple[int, int]]:
+        """Each group's words: from its mention (or a fronted phrase before it: "..., and from the
+        office, eight people walk ...") to the next group's, within its sentence."""
+        s = self.s
+        starts = [mentions[0].first] + [self.clauses.fronted_start(mentions[k - 1].last, mentions[k].first)
+                                        for k in range(1, len(mentions))]
+        spans: list[tuple[int, int]] = []
+        for k, m in enumerate(mentions):
+            end = starts[k + 1] if k + 1 < len(mentions) else s.n
+            sentence_end = next((i for i in range(m.last + 1, end) if s.w[i].sentence != s.w[m.first].sentence), end)
+            spans.append((starts[k], sentence_end))
+        return spans
+
+    def _scenes(self, mentions: list[Mention], spans: list[tuple[int, int]], excluded: set[int],
+                robot_tokens: set[int]) -> dict[int, Clause]:
+        """Sentence -> the clause of its words before its first group (and of a sentence with no
+        people before it)."""
+        s = self.s
+        claimed = {i for a, b in spans for i in range(a, b)}
+        negated = self.clauses.negated_tokens()
+        preamble_of: dict[int, list[int]] = {}
+        for i in range(s.n):
+            if i not in claimed and i not in negated and i not in robot_tokens:
+                preamble_of.setdefault(s.w[i].sentence, []).append(i)
+        scenes: dict[int, Clause] = {}
+        for sentence, toks in preamble_of.items():
+            # a clause about animals or things ("two goldfish swim in a tank") names no place to refuse
+            first = next((i for i in toks if s.w[i].pos not in ("DET", "NUM") and s.low[i] not in lx.NP_MODIFIERS),
+                         None)
+            self.places.quiet = first is not None and s.lemma(first) in lx.NON_PEOPLE
+            scenes[sentence] = self.clauses.read(toks, excluded, scene=True)
+            self.places.quiet = False
+        with_people = {s.w[m.first].sentence for m in mentions}
+        carried: Clause | None = None
+        for sentence in range(s.w[-1].sentence + 1):
+            own = scenes.get(sentence)
+            if carried is not None:
+                scenes[sentence] = carried if own is None else replace(
+                    own, places=carried.places + own.places, evacuate=own.evacuate or carried.evacuate,
+                    intent=own.intent or carried.intent)
+            if sentence not in with_people and own is not None:
+                carried = scenes[sentence]
+        return scenes
+
+    def _share(self, mentions: list[Mention], clauses: list[Clause]) -> None:
+        """Clauses that take another group's verb: "ten patients and two nurses walk out", "everybody
+        except the receptionist leaves", "a guide leads twelve tourists to the gate"."""
+        s = self.s
+        for k in range(len(clauses) - 2, -1, -1):
+            between = range(mentions[k].last + 1, mentions[k + 1].first)
+            in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
+            leftover = [x for x in between if x not in in_places and not s.is_punct(x)
+                        and s.low[x] not in ("and", "as", "well", "plus", "with")]
+            if not clauses[k].has_action and clauses[k + 1].has_action and mentions[k + 1].relation is None and \
+                    not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
+                    not any(s.low[x] in (";", ".", ":") for x in between):
+                clauses[k] = replace(clauses[k + 1], places=clauses[k].places + clauses[k + 1].places)
+        for k, m in enumerate(mentions):
+            if k == 0 or m.exception_of != k - 1:
+                continue
+            in_places = {x for p in clauses[k - 1].places for x in range(p.index, p.end)}
+            words_between = [x for x in range(mentions[k - 1].last + 1, m.first) if x not in in_places]
+            if all(s.low[x] in lx.EXCEPT_WORDS | {"apart", "from", "for", "other", "than", ","} for x in words_between) \
+                    and not clauses[k - 1].has_action and clauses[k].has_action:
+                # "Everybody except the receptionist leaves": the verb is the everybody's; the
+                # exception does not do it, so stays where it is
+                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
+                clauses[k] = Clause()
+        for k, m in enumerate(mentions):
+            if k > 0 and self.mentions.led_by(m.first) and mentions[k - 1].last == m.first - 2:
+                # the leader takes the route the led group is said to take
+                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
+                                         intent=clauses[k].intent or "walk", has_action=True)
+
+    def _own_span(self, span: tuple[int, int], m: Mention, robot_tokens: set[int]) -> tuple[int, int]:
+        """A group's span without a robot clause that ends it ("..., while a robot crosses the hall")."""
+        s = self.s
+        end = next((i for i in range(m.last + 1, span[1]) if i in robot_tokens), span[1])
+        while end > m.last + 1 and (s.is_punct(end - 1) or s.low[end - 1] in lx.CLAUSE_STARTERS):
+            end -= 1
+        return span[0], end
+
+    def _already_gone(self, span: tuple[int, int]) -> bool:
+        """Whether a clause says its people have left already: a verb of leaving in the perfect
+        ("has gone home", "have left")."""
+        s = self.s
+        return any(verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | {"go"} and s.w[i].tag == "VBN"
+                   and s.low[i - 1] in ("has", "have", "had", "'s", "'ve", "already")
+                   for i in range(max(span[0], 1), span[1]))
+
+    # ---- one group -------------------------------------------------------------------------------
+
+    def group(self, g: _GroupWords, evacuation: bool, earlier: list[GroupReading]) -> GroupReading:
+        s = self.s
+        m, c, scene, span = g.mention, g.clause, g.scene, g.span
+        text = s.span(span[0], span[1] - 1) if span[1] > span[0] else m.who
+        intent = self._default_intent(c, scene)
+        followed_by = m.first >= 2 and s.low[m.first - 1] == "by" and s.low[m.first - 2] in _FOLLOWED_BY and earlier
+        if followed_by:
+            # "..., followed by two assistants": they go where the group before goes, behind it
+            leader = earlier[-1]
+            intent = "follow" if s.low[m.first - 2] in ("followed", "trailed") else intent
+            c = replace(c, follows=leader.who)
+            if not c.places:
+                return replace(leader, who=m.who, label=m.label, count=m.count or leader.count,
+                               intent=intent if intent == "follow" else leader.intent, relation=None,
+                               follows=leader.who if intent == "follow" else None, robot_interaction=None,
+                               robot_reaction=None, together=m.together, text=text, confidence=())
+        if self.mentions.led_by(m.first) and earlier and c.robot is None:
+            intent = "follow"  # "leads twelve tourists": they follow the one who leads
+            c = replace(c, follows=earlier[-1].who)
+        robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
+        if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
+            intent = "queue"  # "a queue of eight people forms at the ticket office", "a line of five waiting"
+        if robot is not None:
+            intent = "robot"  # also "Startled by the robot, a woman ...", "The robot is followed by ..."
+        if (evacuation or c.evacuate or (scene is not None and scene.evacuate)) and intent in ("walk", "evacuate"):
+            intent = "evacuate"
+        # Someone who looks at the robot or blocks it, with no verb of motion, stays where they are.
+        stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and (
+            c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
+        roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
+                             verb_index=c.verb_index, stationary=stationary, intent=intent)
+        self._settle_places(roles, intent, stationary, c.moves)
+        self._inherit_places(m, roles, earlier, stationary)
+        start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
+        count = settle_count(s, m, span, start or location or destination, earlier, self.notes)
+        wait = c.wait_seconds
+        if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
+            wait = scene.wait_seconds
+        confidence = count_confidence(s, m, count) + place_confidences(
+            {"start": start, "destination": destination, "location": location}, via, roles.read_from)
+        if robot is not None and c.robot is None:
+            confidence.append(FieldConfidence("robot_interaction", 0.7, "read from the sentence's words about the "
+                                                                      "robot, not from this group's own"))
+        return GroupReading(
+            who=m.who, label=m.label, count=count, intent=intent,
+            robot_interaction=robot, robot_reaction=lx.ROBOT_REACTIONS.get(robot) if robot else None,
+            start=start, destination=destination, location=location, via=tuple(via),
+            purpose=c.purpose or (scene.purpose if scene is not None else None), wait_seconds=wait,
+            together=m.together or c.together or count.kind == "structured",
+            pace=c.pace if c.pace != "normal" or scene is None else scene.pace, relation=m.relation,
+            follows=c.follows, text=text, confidence=tuple(confidence))
+
+    @staticmethod
+    def _default_intent(c: Clause, scene: Clause | None) -> str:
+        intent = c.intent or (scene.intent if scene is not None and scene.intent else None)
+        if intent is not None:
+            return intent
+        # No verb of action ("a cleaner is in the cafeteria"): people who are somewhere stay there;
+        # only a place they are sent to ("... to the exit") makes them walk. A way taken ("push a bed
+        # along the corridor") is walking too. So is being the doer of a passive whose subject is a
+        # destination ("the desk is approached by").
+        sends = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS or p.prep == "obj:dest"
+                    for p in c.places) or (scene is not None and any(p.prep == "obj:dest" for p in scene.places))
+        return "walk" if sends or c.robot else "wait"
+
+    @staticmethod
+    def _settle_places(roles: Roles, intent: str, stationary: bool, moves: bool) -> None:
+        if intent == "evacuate" and roles.start is None and roles.location is not None:
+            roles.start, roles.location = roles.location, None
+        if intent == "queue" and roles.location is None and roles.start is not None and roles.destination is None:
+            # "a queue snakes back from the check-in counter": a queue stands where its head is
+            roles.start, roles.location = None, roles.start
+        if stationary and roles.location is None and roles.destination is not None and intent != "robot":
+            # "walk to the cafeteria and wait there": they go there, then stay; without a verb of
+            # motion ("queue to the desk") the place is only where they are.
+            roles.location = roles.destination
+            if not moves:
+                roles.destination = None
+
+    @staticmethod
+    def _inherit_places(m: Mention, roles: Roles, earlier: list[GroupReading], stationary: bool) -> None:
+        """A member of a group keeps its route unless told otherwise ("one of them stares at the
+        robot"); an exception stays where the rest were ("... except three patients")."""
+        unplaced = roles.start is None and roles.destination is None and roles.location is None
+        kind, _, parent_index = (m.relation or "").partition(":")
+        if kind == "subset_of" and parent_index.isdigit() and int(parent_index) < len(earlier):
+            parent = earlier[int(parent_index)]
+            if unplaced:
+                roles.start, roles.destination = parent.start, parent.destination
+                roles.location = parent.location if stationary else None
+                roles.via = list(parent.via)
+            elif roles.start is None and not stationary:
+                roles.start = parent.start or parent.location  # "a few of them leave": from where the group is
+        if m.exception_of is not None and m.exception_of < len(earlier) and unplaced:
+            parent = earlier[m.exception_of]
+            roles.location = parent.start or parent.location  # "... except three patients, who stay seated"
+
+    # ---- nobody named ----------------------------------------------------------------------------
+
+    def evacuees_of_an_emptied_zone(self) -> GroupReading | None:
+        """"The entire concourse is evacuated through the side entrance", "Evacuate the pharmacy.":
+        a zone is emptied and nobody is named, so everyone in it leaves (a whole-zone group), marked
+        as assumed."""
+        s = self.s
+        clause = self.clauses.read(range(s.n), set(), scene=True)
+        for i in range(2, s.n):  # the subject of a passive evacuation: "<the X> is evacuated"
+            aux = i - 2 if s.low[i - 1] in ("being", "been") else i - 1
+            if verb_lemma(s.low[i]) == "evacuate" and s.w[i].tag == "VBN" and aux >= 1 and \
+                    verb_lemma(s.low[aux]) in ("be", "get"):
+                first = aux - 1
+                while first > 0 and s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM") and \
+                        not s.is_punct(first - 1):
+                    first -= 1
+                place = self.places.phrase(first, "obj:start", first, record_unknown=False)
+                if place is not None:
+                    clause.places.append(place)
+        for place in self.places.emptied_zones(range(s.n)):
+            clause.places.insert(0, place)
+            clause.evacuate = True
+            clause.intent = clause.intent or "evacuate"
+        emptied = [p for p in clause.places if p.prep in ("obj:start", "from") and p.match is not None]
+        if not emptied or not (clause.evacuate or clause.intent == "evacuate"):
+            return None
+        match = emptied[0].match
+        assert match is not None
+        mention = Mention(emptied[0].index, emptied[0].end - 1, f"everyone in {match.name}", "person", None,
+                          whole_zone=True)
+        group = self.group(_GroupWords(mention, clause, None, (0, s.n)), True, [])
+        self.notes.append(f"no people are named: everyone in {match.zone} is evacuated")
+        return replace(group, who="everyone", text=s.prompt, confidence=group.confidence + (
+            FieldConfidence("group", 0.45, f"no people are named: everyone in {match.zone} is assumed"),))

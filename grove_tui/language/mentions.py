@@ -1,0 +1,528 @@
+"""Pass 2, part 2: the mentions of people, each with its count.
+
+A group of people starts at a person phrase in subject position: at the start of a sentence or
+clause ("..., while", "and", "as", "then", "except"), after "there are" or an imperative scene verb
+("Simulate ten nurses"), or where the parser finds the subject ("At six the staff head out"). Its
+count is read from the phrase: a number, approximate ("about twenty"), vague ("a few"), implied by a
+collective ("a family" 3-4), structured ("two families of three"), whole-zone ("everyone in the
+cafeteria", settled once places are known) or exclusive ("nobody ... except one guard").
+Relations: "one of them" is part of the group before (subset_of), "the others" are other people
+than that group (others_of; after a subset, the rest of its parent), "a few more" adds to it
+(more_of).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
+from grove_tui.language.model import Count
+from grove_tui.language.people import People
+from grove_tui.language.place_phrases import Place, PlacePhrases
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+_POSSESSIVES = ("their", "his", "her", "our", "my")
+
+
+@dataclass
+class Mention:
+    """A person phrase that starts a group."""
+
+    first: int  # word span of the person phrase
+    last: int
+    who: str
+    label: str
+    count: Count | None  # None for whole-zone and rest-of-parent counts, settled once places are known
+    relation: str | None = None
+    together: bool = False
+    whole_zone: bool = False
+    exclusive: bool = False
+    rest_of_parent: bool = False
+    collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
+    exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
+    fraction: float = 1.0  # "half the office": the share of the zone's people
+    zone_place: Place | None = None  # the zone named inside the mention ("half the open office")
+    escorted_by: int | None = None  # "an orderly wheels a patient": the mention of who takes them along
+
+
+class Mentions:
+    """Finds the mentions of people of one sentence, in order."""
+
+    def __init__(self, s: Sentence, people: People, places: PlacePhrases) -> None:
+        self.s = s
+        self.people = people
+        self.places = places
+
+    def find(self) -> list[Mention]:
+        s = self.s
+        found: list[Mention] = []
+        i = 0
+        while i < s.n:
+            if i in s.together_phrases or not self.subject_position(i):
+                i += 1
+                continue
+            m = self.mention_at(i, found)
+            if m is None:
+                i += 1
+                continue
+            if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
+                    self.after_except(m.first):
+                m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
+            found.append(m)
+            i = m.last + 1
+        return found
+
+    # ---- where a group can start -------------------------------------------------------------
+
+    def subject_position(self, at: int) -> bool:
+        s = self.s
+        if at == 0:
+            return True
+        p = at - 1
+        prev = s.low[p]
+        if s.is_punct(p) or s.w[p].sentence != s.w[at].sentence:
+            return True
+        if prev == "with" and self._conversation_partner(p, at):
+            return False
+        if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my"):
+            return False  # "families wait at the gate with their children": the families' own members
+        if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
+            return True
+        if self.led_by(at):
+            return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
+        if prev == "instead" and s.low[at] != "of":
+            return True  # "nobody waits there; instead eight patients queue ..."
+        if prev == "for" and p > 0 and s.low[p - 1] in lx.EXCEPT_WORDS:
+            return True  # "empty except for two cleaners"
+        if prev == "from" and p > 0 and s.low[p - 1] == "apart":
+            return True  # "apart from one guard"
+        if prev == "by" and p > 0 and s.low[p - 1] in ("followed", "trailed", "accompanied", "joined"):
+            return True  # "the manager walks to the boardroom, followed by two assistants"
+        if prev in ("are", "is") and self._only_people_before(p):
+            return True  # "the only people in the ward are two men"
+        if prev in ("are", "is", "were", "was", "be", "'s", "’s", "'re", "’re") and p > 0 and s.low[p - 1] == "there":
+            return True
+        if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or s.is_punct(p - 1) or s.low[p - 1] in
+                                                   lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
+            return True
+        if prev == "by" and s.w[p].dep == "agent":
+            return True  # "the balcony is used by a smoker": the passive's doer
+        if prev == "of" and self._event_before(p):
+            return True  # "the boardroom meeting of twelve people breaks up"
+        return self._parser_subject(at)
+
+    def _parser_subject(self, at: int) -> bool:
+        """Whether the phrase at `at` is the subject the parser found ("At six the staff head out"):
+        determiners, numbers and adjectives, then a person noun the parser calls the subject."""
+        s = self.s
+        if at > 0 and s.w[at - 1].pos in ("DET", "ADJ", "NUM") and not (
+                s.w[at - 1].pos == "NUM" and s.w[at - 1].head < at - 1 and s.low[at] in lx.DETERMINERS):
+            return False  # inside a noun phrase that starts earlier ("the only people"); not "At 8:15 the ..."
+        if at > 0 and s.w[at - 1].pos == "SCONJ" and s.low[at - 1] not in lx.CLAUSE_STARTERS:
+            return False  # "... until someone collects them", "if anyone asks": nobody who is there
+        for k in range(at, min(at + 5, s.n)):
+            if s.low[k] in lx.NOBODY_WORDS:
+                return False
+            if self.people.is_person_noun(k):
+                head = s.w[k].head
+                # the small model may tag the verb a noun ("the commuters on platform 1 walk to ...")
+                return s.w[k].dep in ("nsubj", "nsubjpass") and (s.w[head].pos in ("VERB", "AUX") or (
+                    head > k and verb_lemma(s.low[head]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(head))))
+            if s.w[k].pos not in ("DET", "NUM", "ADJ") and s.low[k] not in lx.NP_MODIFIERS:
+                return False
+        return False
+
+    def _event_before(self, of: int) -> bool:
+        """Whether "of" closes a subject noun phrase of no people ("the boardroom meeting of ..."):
+        nouns and adjectives back to a determiner at a subject position."""
+        s = self.s
+        k = of - 1
+        if k < 0 or s.w[k].pos not in ("NOUN", "PROPN") or self.people.is_person_noun(k) or \
+                s.lemma(k) in lx.IMPLIED_RANGES or number_at(s, k) is not None:
+            return False
+        while k > 0 and s.w[k - 1].pos in ("NOUN", "PROPN", "ADJ") and not s.is_punct(k - 1):
+            k -= 1
+        if k > 0 and s.low[k - 1] in ("the", "a", "an", "this", "that"):
+            k -= 1
+        return self.subject_position(k) if s.low[k - 1:k] != ["of"] else False
+
+    def led_by(self, at: int) -> bool:
+        """Whether the phrase at `at` is the counted object of a verb of leading right after a person
+        ("a tour guide leads twelve tourists", "two nurses escort five patients")."""
+        s = self.s
+        p = at - 1
+        number = number_at(s, at)
+        return p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS and self.people.is_person_noun(p - 1) and \
+            number is not None and number[0] > 1
+
+    def _conversation_partner(self, p: int, at: int) -> bool:
+        """Whether the phrase at `at`, after "with" at p, is who a person talks or walks with, not a
+        group of its own: one person with no number ("chats with the driver"); "with two friends"
+        still names a group."""
+        s = self.s
+        if p < 1 or verb_lemma(s.low[p - 1]) not in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
+            return False
+        k = s.skip(at, {"the", "a", "an", "his", "her", "their", "its", "my", "our", "your"})
+        if k == at:
+            return False
+        while k < s.n and (s.w[k].pos == "ADJ" or s.low[k] in lx.NP_MODIFIERS) and not self.people.is_person_noun(k):
+            k += 1
+        if k + 1 < s.n and s.w[k].pos in ("NOUN", "PROPN") and self.people.is_person_noun(k + 1):
+            k += 1  # "the train driver"
+        return k < s.n and self.people.is_person_noun(k) and s.lemma(k) == s.low[k] and \
+            s.lemma(k) not in lx.IMPLIED_RANGES
+
+    def after_except(self, at: int) -> bool:
+        """Whether the phrase at `at` follows a word of exception ("except", "apart from", "other than")."""
+        low = self.s.low
+        prev = low[at - 1] if at > 0 else ""
+        before = low[at - 2] if at > 1 else ""
+        return prev in lx.EXCEPT_WORDS - {"but"} or (prev == "from" and before == "apart") or \
+            (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
+
+    def _only_people_before(self, p: int) -> bool:
+        s = self.s
+        sentence = s.w[p].sentence
+        return any(s.low[k] == "only" and k + 1 < s.n and s.low[k + 1] in ("people", "person", "ones", "one")
+                   for k in range(p) if s.w[k].sentence == sentence)
+
+    def _exclusive_context(self, at: int) -> bool:
+        """Whether the phrase at `at` is the exception to "nobody" in its sentence ("nobody ... except
+        one guard", "apart from two pilots, nobody is ...", "the only people in X are two men")."""
+        s = self.s
+        sentence = s.w[at].sentence
+        words = [k for k in range(s.n) if s.w[k].sentence == sentence]
+        saw_nobody = any(s.low[k] in lx.NOBODY_WORDS or (s.low[k] == "no" and k + 1 < s.n and
+                                                         s.low[k + 1] in ("one", "people", "person", "body"))
+                         or s.low[k] in ("empty", "deserted") for k in words)
+        near = [s.low[k] for k in words if k < at][-2:]
+        if near[-1:] in (["are"], ["is"]) and self._only_people_before(at - 1):
+            return True
+        return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"]
+                               or near == ["apart", "from"])
+
+    @staticmethod
+    def parent(found: list[Mention], *, plain: bool = False) -> int | None:
+        """The group a relation refers to: the last one that is not itself a subset ("one of them"),
+        or with `plain` the last one with no relation at all ("the others", "a few more")."""
+        for k in range(len(found) - 1, -1, -1):
+            relation = found[k].relation or ""
+            if not relation.startswith("subset_of") and not (plain and relation):
+                return k
+        return None
+
+    # ---- one mention -------------------------------------------------------------------------
+
+    def mention_at(self, at: int, found: list[Mention]) -> Mention | None:
+        s = self.s
+        low = s.low
+        if low[at] in ("the", "these", "those", "all", "its", "their", "our", "his", "her", "my", "your") and \
+                at + 1 < s.n and number_at(s, at + 1) is not None:
+            inner = self.mention_at(at + 1, found)  # "the four people in the living room"
+            if inner is not None:
+                inner.first = at
+                inner.who = s.span(at, inner.last)
+            return inner
+        num = quantifier(s, at)
+        for reader in (self._part_of, self._rest_of):
+            m = reader(at, num, found)
+            if m is not None:
+                return m
+        if low[at] == "the" and at + 1 < s.n and low[at + 1] == "only":
+            return None  # "the only people in the ward are two men": the men are the group
+        whole = self._whole_zone(at, num)
+        if whole is not None:
+            return whole
+        if low[at] in ("everyone", "everybody", "all", "half", "every") and not (num and num.value > 0):
+            return None
+        exclusive = self._exclusive_context(at)
+        if low[at] in ("someone", "somebody", "anyone", "anybody"):
+            return Mention(at, at, s.w[at].text, "person", Count("exclusive" if exclusive else "exact", 1, 1, 1),
+                           exclusive=exclusive)
+        if low[at] == "another":
+            return self._another(at, found)
+        if num is not None:
+            return self._counted_or_more(at, num, found, exclusive)
+        return self._bare(at, found, exclusive)
+
+    def _part_of(self, at: int, num: Quantifier | None, found: list[Mention]) -> Mention | None:
+        """"one of them", "two of the patients", "some of them": part of the group before."""
+        s = self.s
+        low = s.low
+        if num is None:
+            return None
+        # "a few of" is read with its "of" by the quantifier; "two of" leaves it
+        of_at = num.end if num.end < s.n and low[num.end] == "of" else (
+            num.end - 1 if low[num.end - 1] == "of" else None)
+        if of_at is None or of_at + 1 >= s.n:
+            return None
+        k = of_at + 1
+        if not (low[k] in ("them", "those", "these", "us", "whom") or (
+                low[k] == "the" and k + 1 < s.n and self.people.is_person_noun(k + 1))):
+            return None
+        last = k if low[k] != "the" else k + 1
+        parent = self.parent(found)
+        label = found[parent].label if parent is not None else s.lemma(last)
+        count = count_of(s, num, f"{at}", lx.OTHERS_RANGE)
+        return Mention(at, last, s.span(at, last), label, count,
+                       relation=f"subset_of:{parent}" if parent is not None else None)
+
+    def _rest_of(self, at: int, num: Quantifier | None, found: list[Mention]) -> Mention | None:
+        """"the others", "the rest", "everyone else": other people than the group before."""
+        s = self.s
+        low = s.low
+        j = s.skip(at, {"the"})
+        if j < s.n and low[j] in ("others", "rest") and (j == at or low[at] == "the"):
+            last = j + 2 if j + 2 < s.n and low[j + 1] == "of" and low[j + 2] in ("them", "us", "the") else j
+            parent = self.parent(found, plain=True)
+            label = found[parent].label if parent is not None else "person"
+            if low[at] == "the" and parent is not None and any(m.relation == f"subset_of:{parent}" for m in found):
+                return Mention(at, last, s.span(at, last), label, None, relation=f"others_of:{parent}",
+                               rest_of_parent=True)
+            low_, high_ = lx.OTHERS_RANGE
+            count = Count("vague", s.choose(low_, high_, f"{at}:others"), low_, high_)
+            return Mention(at, last, s.span(at, last), label, count,
+                           relation=f"others_of:{parent}" if parent is not None else None)
+        if low[at] in ("everyone", "everybody") and at + 1 < s.n and low[at + 1] == "else":
+            parent = self.parent(found)
+            label = found[parent].label if parent is not None else "person"
+            return Mention(at, at + 1, s.span(at, at + 1), label, None,
+                           relation=f"others_of:{parent}" if parent is not None else None, rest_of_parent=True)
+        return None
+
+    def _whole_zone(self, at: int, num: Quantifier | None) -> Mention | None:
+        """"everyone", "all the patients", "every visitor in the lounge", "half the open office":
+        everyone in a zone (the zone settled once places are read)."""
+        s = self.s
+        low = s.low
+        if low[at] == "every" and at + 1 < s.n:
+            head = self.people.person_head(at + 1, counted=False)
+            if head is not None:  # "every visitor in the lounge": everyone there
+                return Mention(at, head, s.span(at, head), self.people.label(head), None, whole_zone=True)
+        if low[at] == "half" and at + 1 < s.n:
+            half = self._half_of(at)
+            if half is not None:
+                return half
+        if not (low[at] in ("everyone", "everybody") or (low[at] == "all" and not (num and num.value > 0))):
+            return None
+        last, label = at, "person"
+        if low[at] == "all":
+            k = s.skip(at + 1, {"the", "of"})
+            n_after = number_at(s, k)
+            if n_after is not None:  # "all ten patients": a plain count
+                head = self.people.person_head(n_after[1], counted=True)
+                if head is not None:
+                    return Mention(at, head, s.span(at, head), self.people.label(head),
+                                   Count("exact", n_after[0], n_after[0], n_after[0]))
+            head = self.people.person_head(k, counted=False)
+            if head is None:
+                return None
+            last, label = head, self.people.label(head)
+        return Mention(at, last, s.span(at, last), label, None, whole_zone=True)
+
+    def _half_of(self, at: int) -> Mention | None:
+        """"half the open office", "half of the patients in the lobby": half of everyone in a zone
+        (the zone named right there, or by the clause)."""
+        s = self.s
+        k = s.skip(at + 1, {"of"})
+        k = s.skip(k, {"the", "all"})
+        if k == at + 1 or k >= s.n:
+            return None  # "half an hour", "half a dozen" are read elsewhere
+        head = self.people.person_head(k, counted=False)
+        if head is not None:
+            return Mention(at, head, s.span(at, head), self.people.label(head), None, whole_zone=True, fraction=0.5)
+        place = self.places.phrase(k, "in", at, record_unknown=False)
+        if place is None or place.match is None or place.match.kind != "zone":
+            return None
+        return Mention(at, place.end - 1, s.span(at, place.end - 1), "person", None, whole_zone=True,
+                       fraction=0.5, zone_place=place)
+
+    def _another(self, at: int, found: list[Mention]) -> Mention:
+        """"another nurse", "another group": one more, or a group's size more."""
+        s = self.s
+        head = self.people.person_head(at + 1, counted=False)
+        parent = self.parent(found, plain=True)
+        relation = f"more_of:{parent}" if parent is not None else None
+        if head is not None and s.lemma(head) in lx.IMPLIED_RANGES:
+            collective = self._collective(head, None, at)  # "another group": a group's size, not one
+            if collective is not None:
+                collective.relation = relation
+                return collective
+        last = head if head is not None else at
+        label = self.people.label(head) if head is not None else (found[parent].label if parent is not None
+                                                                  else "person")
+        return Mention(at, last, s.span(at, last), label, Count("exact", 1, 1, 1), relation=relation)
+
+    def _counted_or_more(self, at: int, num: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
+        """"a few more", "two more patients", "a few others", or a plain counted phrase."""
+        s = self.s
+        low = s.low
+        after = num.end
+        if after < s.n and low[after] == "more":
+            parent = self.parent(found, plain=True)
+            head = self.people.person_head(after + 1, counted=True)
+            last = head if head is not None else after
+            label = self.people.label(head) if head is not None else (found[parent].label if parent is not None
+                                                                      else "person")
+            return Mention(at, last, s.span(at, last), label, count_of(s, num, f"{at}:more"),
+                           relation=f"more_of:{parent}" if parent is not None else None)
+        if after < s.n and low[after] in ("others", "other"):
+            parent = self.parent(found, plain=True)
+            head = self.people.person_head(after + 1, counted=False) if low[after] == "other" else None
+            if low[after] == "other" and head is None:
+                return None
+            last = head if head is not None else after
+            label = self.people.label(head) if head is not None else (found[parent].label if parent is not None
+                                                                      else "person")
+            return Mention(at, last, s.span(at, last), label, count_of(s, num, f"{at}:others", lx.OTHERS_RANGE),
+                           relation=f"others_of:{parent}" if parent is not None else None)
+        return self._counted(at, num, found, exclusive)
+
+    def _bare(self, at: int, found: list[Mention], exclusive: bool) -> Mention | None:
+        """Phrases with no count: "visitors", "the nurses", "a nurse", "other visitors", "people"."""
+        s = self.s
+        low = s.low
+        k = s.skip(at, {"the", "a", "an", "other", "their", "his", "her", "our", "its"})
+        det = low[at] if k > at else ""
+        other = "other" in low[at:k]
+        head = self.people.person_head(k, counted=False)
+        if head is None:
+            return None  # "ten in the pharmacy": a bare number borrowing the last group's noun is a count
+        singular = s.lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
+        label = self.people.label(head)
+        if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
+            return None  # "... one person; the person wanders around": the same people again
+        noun = s.lemma(head)
+        collective = self._collective(head)
+        if collective is not None:
+            return collective
+        if det in ("a", "an") or (singular and det == "the"):
+            kind = "exclusive" if exclusive else "exact"
+            return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
+        if singular and noun not in lx.GENERIC_PEOPLE and not other:
+            if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)) \
+                    and noun not in lx.PRONOUN_PEOPLE \
+                    and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
+                return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
+                               exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
+            return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
+        low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
+        parent = self.parent(found)
+        relation = f"others_of:{parent}" if other and parent is not None else None
+        if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[at] in _POSSESSIVES):
+            low_, high_ = lx.FAMILY_PLURALS[noun]  # "the parents": the two of one family
+            return Mention(at, head, s.span(at, head), label,
+                           Count("implied", s.choose(low_, high_, f"{at}:family"), low_, high_))
+        return Mention(at, head, s.span(at, head), label,
+                       Count("vague", s.choose(low_, high_, f"{at}:bare"), low_, high_), relation=relation)
+
+    def _coordinated_person(self, head: int) -> bool:
+        """Whether a person word is joined by "and" to another person phrase ("Mum and two kids
+        walk", "Mum and Dad chat"): the first of two subjects, though no verb follows it."""
+        s = self.s
+        if head + 2 >= s.n or s.low[head + 1] != "and":
+            return False
+        q = quantifier(s, head + 2)
+        start = q.end if q is not None else s.skip(head + 2, lx.DETERMINERS)
+        return start < s.n and self.people.person_head(start, counted=q is not None) is not None
+
+    # ---- counted phrases and collectives -------------------------------------------------------
+
+    def _counted(self, at: int, q: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
+        """A phrase that starts with a count: "ten patients", "about 20 people", "two families of three"."""
+        s = self.s
+        after = q.end
+        if after < s.n and s.low[after] == "of":
+            after = s.skip(after + 1, {"the", "their", "our"})
+        head = self.people.person_head(after, counted=True)
+        if head is None:
+            # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
+            if (found and q.value > 0 and after < s.n and (s.low[after] in lx.PLACE_PREPOSITIONS
+                                                           or verb_lemma(s.low[after]) in lx.INTENT_VERBS)
+                    and at > 0 and s.low[at - 1] not in ("at", "until", "till", "after", "before", "since")):
+                return Mention(at, after - 1, s.span(at, after - 1), found[-1].label, count_of(s, q, f"{at}:ellipsis"))
+            return None
+        collective = self._collective(head, q, at)
+        if collective is not None:
+            return collective
+        count = count_of(s, q, f"{at}:count")
+        if exclusive:
+            count = replace(count, kind="exclusive")
+        return Mention(at, head, s.span(at, head), self.people.label(head), count, exclusive=exclusive)
+
+    def _collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
+        """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
+        s = self.s
+        noun = s.lemma(head)
+        if noun not in lx.IMPLIED_RANGES or self.people.multiword_end(head):
+            return None  # "the au pair" is no pair
+        low = s.low
+        at = first if first is not None else head
+        while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
+                                            or (s.w[at - 1].pos == "ADJ" and at > 1 and s.w[at - 2].pos == "DET")):
+            at -= 1  # "a long queue of ...": the adjective is the collective's
+        parties, exact_parties = 1, True
+        if number is not None:
+            if number.kind in ("exact", "approximate") and number.value > 1:
+                parties = number.value
+            elif number.kind.startswith("vague") or number.kind == "range":
+                parties, exact_parties = count_of(s, number, f"{head}:parties").value, False
+        together = noun in lx.TOGETHER_COLLECTIVES
+        last, size, label = head, None, noun
+        if head + 2 < s.n and low[head + 1] == "of":
+            loose = quantifier(s, head + 2)
+            if loose is not None and loose.kind in ("approximate", "range") and parties == 1 and exact_parties:
+                return self._loosely_counted(noun, at, head, loose, together)
+            inner = number_at(s, head + 2)
+            if inner is not None:
+                size = inner[0]
+                last = inner[1] - 1
+                member = self.people.person_head(inner[1], counted=True)
+                if member is not None and member <= inner[1] + 2:
+                    last = member
+                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
+                        label = self.people.label(member)
+            else:
+                member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
+                if member is not None:
+                    last = member
+                    if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
+                                "couple", "pair", "handful"):
+                        label = self.people.label(member)
+        mention = Mention(at, last, s.span(at, last), label,
+                          self._collective_count(noun, label, size, parties, exact_parties, together, head),
+                          together=together, collective=noun)
+        return mention
+
+    def _loosely_counted(self, noun: str, at: int, head: int, loose: Quantifier, together: bool) -> Mention:
+        """"a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside the
+        collective, counted loosely."""
+        s = self.s
+        member = self.people.person_head(loose.end, counted=True)
+        last = member if member is not None and member <= loose.end + 2 else loose.end - 1
+        label = noun
+        if member is not None and (noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES or
+                                   noun in ("group", "crowd", "bunch", "party", "team", "queue", "line")):
+            label = self.people.label(member)
+        return Mention(at, last, s.span(at, last), label, count_of(s, loose, f"{head}:inside"), together=together,
+                       collective=noun)
+
+    def _collective_count(self, noun: str, label: str, size: int | None, parties: int, exact_parties: bool,
+                          together: bool, head: int) -> Count:
+        s = self.s
+        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
+            # "a crowd of visitors": the collective only says how many, vaguely
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            return Count("vague", s.choose(low_, high_, f"{head}:{noun}"), low_, high_)
+        if size is None:
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            party = s.choose(low_, high_, f"{head}:{noun}")
+            if parties == 1:
+                return Count("implied", party, low_, high_, *((1, party) if together else (None, None)))
+            return Count("structured", parties * party, parties * low_, parties * high_, parties, party)
+        if parties == 1 and exact_parties:
+            return Count("exact", size, size, size, 1, size)
+        value = parties * size
+        return Count("structured", value, value, value, parties, size)

@@ -1,0 +1,234 @@
+"""Pass 2, part 1: which words are people ("nurses", "a sommelier", "the au pair", "ten zombies"),
+where a person phrase's head noun is, and the short label a group is known by."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.parser import known_word
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.spelling import near_person_noun
+from grove_tui.language.tokens import verb_lemma
+
+_MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
+
+
+class People:
+    """Who is a person in one sentence (a noun of the lexicon's list, a misspelling of one that is no
+    English word, the subject of a verb only people do, or a counted noun that does more than things
+    do), and the head and label of person phrases."""
+
+    def __init__(self, s: Sentence) -> None:
+        self.s = s
+
+    def is_person_noun(self, i: int) -> bool:
+        s = self.s
+        lem = s.lemma(i)
+        if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
+            return False
+        if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
+            return True
+        if self._subject_of_a_human_verb(i) or self._agent_subject(i):
+            return True
+        # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
+        # enough that the edit cannot turn one real word into another, no name of the world, and no
+        # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).
+        # The parser may call such a word a verb after a number ("Five colleages stroll"): a count
+        # is followed by what it counts.
+        counted = i > 0 and s.w[i - 1].pos == "NUM"
+        if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
+            return False  # "the robot glides": the robot's verb, however close to "guides"
+        return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
+                and not known_word(s.low[i]) and near_person_noun(s.low[i]) is not None)
+
+    def multiword_end(self, i: int) -> bool:
+        """Whether word i ends a person named by two words ("au pair", "station master")."""
+        low = self.s.low
+        if low[i] not in _MULTIWORD_LAST:
+            return False  # asked for every word the reader looks at: the common answer first
+        return any(i - len(p) + 1 >= 0 and tuple(low[i - len(p) + 1:i + 1]) == p for p in lx.MULTIWORD_PEOPLE)
+
+    def multiword_start(self, i: int) -> int | None:
+        """The last word of a person named by two words starting at i, else None."""
+        for p in lx.MULTIWORD_PEOPLE:
+            if tuple(self.s.low[i:i + len(p)]) == p:
+                return i + len(p) - 1
+        return None
+
+    def _agent_subject(self, i: int) -> bool:
+        """A noun for someone who does something ("a busker strums", "the florist arranges"), in no
+        list: the parser's subject of a verb that things do not do, ending like an agent noun, and
+        no place, robot, thing or time word."""
+        s = self.s
+        word = s.w[i]
+        if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i:
+            return False
+        lem = s.lemma(i)
+        head = s.w[word.head]
+        verb = s.verb(word.head)
+        # Not after a verb things do as well ("the sprinklers go off", "the heater stays on").
+        return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
+                and verb not in lx.THING_VERBS and verb not in lx.INTENT_VERBS and verb not in ("be", "go", "start")
+                and not s.index.knows(lem)
+                and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
+                and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
+
+    def _subject_of_a_human_verb(self, i: int) -> bool:
+        """A noun no list names, the parser's subject of a verb only people do ("a sommelier
+        chats", "two botanists stroll"): a person, unless it names a place, the robot, a group
+        word, a time or a hazard."""
+        s = self.s
+        word = s.w[i]
+        parsed = word.pos in ("NOUN", "PROPN") and word.dep == "nsubj" and word.head != i and \
+            s.w[word.head].pos == "VERB" and s.verb(word.head) in lx.HUMAN_SUBJECT_VERBS
+        # The parser may also take the noun for an adjective and the verb for a plural noun ("a
+        # sommelier chats"): a determiner or number, the word, then a human verb's "-s" form.
+        nxt = i + 1
+        mistagged = (0 < i and nxt < s.n and word.pos in ("NOUN", "PROPN", "ADJ")
+                     and s.w[i - 1].pos in ("DET", "NUM") and verb_lemma(s.low[nxt]) in lx.HUMAN_SUBJECT_VERBS
+                     and s.low[nxt] != verb_lemma(s.low[nxt]) and s.low[nxt].endswith("s"))
+        if not (parsed or mistagged):
+            return False
+        lem = s.lemma(i)
+        return (lem.isalpha() and not s.index.knows(lem) and lem not in lx.ROBOT_WORDS
+                and lem not in lx.NON_PLACES and lem not in lx.IMPLIED_RANGES and lem not in lx.HAZARD_NOUNS
+                and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS)
+
+    def person_head(self, j: int, *, counted: bool) -> int | None:
+        """Index of the person noun of a phrase starting at j ("tired old patients"), or None.
+
+        With a count before it, any plural noun counts ("ten zombies"), unless it names a place,
+        a time or a thing of the world."""
+        s = self.s
+        k = j
+        while k < s.n and k < j + 4:
+            if s.low[k] in lx.ROBOT_WORDS:
+                return None  # "the robot glides": whatever follows, the robot is nobody's kind
+            end = self.multiword_start(k)
+            if end is not None:
+                return end  # "the au pair": one person
+            person = self.is_person_noun(k)
+            if person and self._does_only_what_things_do(k):
+                return None  # "two fans whir in the server room"
+            if person and s.w[k].pos == "ADJ" and k + 1 < s.n and \
+                    s.w[k + 1].pos in ("NOUN", "PROPN") and s.w[k + 1].dep != "ROOT" and \
+                    (self.is_person_noun(k + 1) or s.lemma(k + 1) in lx.IMPLIED_RANGES):
+                k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
+                continue
+            if person and self._modifies_next_noun(k):
+                return None  # "the outpatient clinic", "security alert": a thing named after people
+            if person or (s.lemma(k) in lx.IMPLIED_RANGES and k + 1 < s.n and s.low[k + 1] == "of"):
+                # ("a queue of eight people": the collective heads the phrase)
+                while k + 1 < s.n and self.is_person_noun(k + 1) and s.lemma(k + 1) not in lx.IMPLIED_RANGES \
+                        and not s.w[k + 1].tag.startswith("VB") and not (
+                            not counted and k + 2 < s.n and s.w[k + 2].pos in ("ADP", "DET", "PUNCT")):
+                    # "staff members", "security guards": the last noun heads the phrase; but in "Mum
+                    # cooks in the kitchen" the second word is the verb
+                    k += 1
+                return k
+            if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ":
+                k += 1
+                continue
+            if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and self.is_person_noun(k + 1):
+                k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
+                continue
+            if (counted and s.w[k].tag in ("NNS", "NNPS") and s.lemma(k) not in lx.NON_PLACES
+                    and s.lemma(k) not in lx.NON_PEOPLE
+                    and s.lemma(k) not in lx.DURATION_UNITS and not s.index.knows(s.lemma(k))
+                    and verb_lemma(s.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
+                return k
+            return None
+        return None
+
+    def _does_what_people_do(self, k: int) -> bool:
+        """Whether a counted noun no list names is the subject of something people do ("ten zombies
+        shamble to the exit", "five volunteers hand out leaflets"), not a thing that only is or
+        hangs somewhere ("two posters hang in the lobby", "three clocks tick")."""
+        s = self.s
+        head = s.w[k].head
+        if s.w[k].dep not in ("nsubj", "nsubjpass") or head == k:
+            return True  # the parser gives no verb to judge by: keep the count's reading
+        return s.verb(head) not in lx.THING_VERBS
+
+    def _does_only_what_things_do(self, k: int) -> bool:
+        """Whether a person word is the parser's subject of a verb only things do, with no object
+        ("two fans whir", not "two nurses hang the posters")."""
+        s = self.s
+        word = s.w[k]
+        if word.dep not in ("nsubj", "nsubjpass") or word.head == k or s.w[word.head].pos != "VERB":
+            return False
+        has_object = any(w.head == word.head and w.dep in ("dobj", "obj") for w in s.w)
+        verb = s.verb(word.head)
+        return verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+
+    def _modifies_next_noun(self, k: int) -> bool:
+        """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
+        that noun is no person, no collective and no verb the lexicon knows, and the parser does not
+        make it the sentence's verb ("Mum cooks dinner")."""
+        s = self.s
+        if k + 1 >= s.n:
+            return False
+        nxt, word = s.w[k + 1], s.low[k + 1]
+        if word in ("'s", "’s", "'") or nxt.tag == "POS":
+            return True  # "the manager's office"
+        if k > 0 and s.w[k - 1].pos == "NUM" and s.lemma(k) != s.low[k] and \
+                not s.index.knows(s.lemma(k + 1)) and k + 2 < s.n and \
+                s.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):
+            return False  # "two interns lug boxes from ...": after a count, the next word is the verb
+        # The parser may make the noun after a singular person word the sentence's verb: "Mum cooks"
+        # is one, "Security alert:" is not.
+        verb_like = (nxt.dep == "ROOT" and (word.endswith("s") or s.lemma(k) != s.low[k])) or \
+            self.third_person_verb(k + 1)
+        gerund_noun = nxt.tag == "NN" and word.endswith("ing")  # "the team meeting", not "nurses meeting"
+        return (nxt.pos == "NOUN" and not verb_like and not nxt.tag.startswith("VB")
+                and not self.is_person_noun(k + 1) and s.lemma(k + 1) not in lx.IMPLIED_RANGES
+                and (gerund_noun or (verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS))
+                and s.lemma(k + 1) not in lx.DURATION_UNITS)
+
+    def third_person_verb(self, i: int) -> bool:
+        """Whether the word at i, which the parser may tag a plural noun, is the verb of the singular
+        person noun before it: "a cleaner mops the corridor", "a cleaner mops near the toilets"
+        (an "-s" word between a singular person and a determiner, preposition or the end)."""
+        s = self.s
+        if i < 1 or i >= s.n or not s.low[i].endswith("s") or s.low[i].endswith("ss"):
+            return False
+        before = i - 1
+        if not self.is_person_noun(before) or s.lemma(before) != s.low[before] or \
+                s.index.knows(s.lemma(i)) or self.is_person_noun(i):
+            return False
+        after = s.w[i + 1] if i + 1 < s.n else None
+        return after is None or after.pos in ("DET", "ADP", "ADV", "PUNCT") or s.low[i + 1] in lx.DETERMINERS
+
+    def verb_after(self, k: int) -> bool:
+        """Whether the word after k is a verb (so the word at k is the subject of a clause)."""
+        s = self.s
+        if k + 1 >= s.n:
+            return False
+        nxt = s.low[k + 1]
+        # the small model tags "cooks" in "Mum cooks in the kitchen" as a plural noun, but as the root
+        return (s.w[k + 1].tag in ("VBZ", "VBP", "VBD") or s.w[k + 1].dep == "ROOT" or self.third_person_verb(k + 1)
+                or (verb_lemma(nxt) in lx.INTENT_VERBS and nxt != verb_lemma(nxt)) or nxt in ("is", "are", "was", "were"))
+
+    def label(self, head: int | None) -> str:
+        """The short label of the people a phrase names ("nurse", "au pair"); "person" for words that
+        name nobody in particular ("people", "someone", "three of them")."""
+        s = self.s
+        if head is None:
+            return "person"
+        noun = s.lemma(head)
+        if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
+            noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays
+        if self.multiword_end(head):
+            return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if tuple(s.low[head - len(p) + 1:head + 1]) == p)
+        if noun in ("member", "person") and head > 0 and self.is_person_noun(head - 1):
+            noun = s.lemma(head - 1)  # "staff members", "family members"
+        if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
+            return "person"
+        return noun
+
+    def is_person_phrase(self, lemmas: Sequence[str]) -> bool:
+        """Whether a place-role phrase names people, not a place ("to the nurses")."""
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        return bool(content) and (content[-1] in lx.PERSON_NOUNS or content[-1] in lx.PRONOUN_PEOPLE) and \
+            not self.s.index.knows(content[-1])

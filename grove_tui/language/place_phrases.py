@@ -1,0 +1,448 @@
+"""Pass 4, in the sentence: the noun phrases in a place role ("to the pharmacy", "leave the ward",
+"on platform 2") and the world's place each names, with how sure that is.
+
+The phrase's words are matched by the world's one place index (language/places.py), by words first
+and by meaning when words do not decide; a zone the sentence named before decides between fixtures
+alike ("On platform 2 ... the bench"); a phrase in a place role that names nothing of the world is an
+unknown place, unless it names a time, a person, a manner or the building itself.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.model import UNSURE_BELOW, FieldConfidence
+from grove_tui.language.people import People
+from grove_tui.language.places import PlaceMatch
+from grove_tui.language.sentence import IDENTIFIER, Sentence
+from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
+
+
+@dataclass
+class Place:
+    """A place phrase of the sentence and the world's place it names."""
+
+    prep: str  # the preposition or "obj:start" / "obj:dest" / "obj:via" / "obj:at" for verb objects
+    index: int  # word index of the preposition
+    words: tuple[str, ...]
+    match: PlaceMatch | None
+    end: int = 0  # word index after the phrase
+    score: float = 1.0  # how sure the match is (1.0: the phrase holds the place's whole name or an alias)
+    reason: str = ""
+    alternatives: tuple[str, ...] = ()  # other places the phrase fits as well
+
+
+def place_confidences(roles: dict[str, str | None], via: Sequence[str],
+                      read_from: dict[str, Place]) -> list[FieldConfidence]:
+    """The confidence of each place field (start, destination, location, via) whose phrase was
+    matched less than surely: a field not listed was read outright."""
+    out: list[FieldConfidence] = []
+    for name, value in [*roles.items(), *(("via", v) for v in via)]:
+        place = read_from.get(value) if value else None
+        if place is not None and place.score < 1.0:
+            out.append(FieldConfidence(name, place.score, place.reason, place.alternatives))
+    return out
+
+
+# A place matched by meaning alone: at least this similar to one of its names, and this much nearer
+# than any place of another zone (measured on synonyms and absent places of every shipped world,
+# none of them from the understanding sets: tests/language/test_meaning.py).
+MEANING_ACCEPT = 0.75
+MEANING_MARGIN = 0.03
+_Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
+
+
+class PlacePhrases:
+    """Place phrases of one sentence, read in order: it remembers the zones named so far, which
+    decide later ties, and the phrases in a place role the world does not have."""
+
+    def __init__(self, s: Sentence, people: People) -> None:
+        self.s = s
+        self.people = people
+        self.unknown: list[str] = []
+        self.context_zones: list[str] = []  # zones of the places read so far, in reading order
+        self.frame_zones: list[str] = []  # zones named as where people are ("on platform 2"), in order
+        self.quiet = False  # True while reading a clause whose places nobody goes to
+        self.owner: str | None = None  # the kind of people whose clause is read ("her office" is theirs)
+
+    def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True) -> Place | None:
+        """The noun phrase from word k, after the place preposition (or verb) at `at`."""
+        s = self.s
+        low = s.low
+        j = k
+        if tuple(low[j:j + 2]) in (("one", "of"), ("each", "of"), ("any", "of"), ("some", "of")):
+            j += 2  # "sits on one of the concourse benches": the benches
+        while j < s.n and (low[j] in lx.DETERMINERS or low[j] in ("'s", "’s")):
+            j += 1
+        j = self.past_part(j)
+        if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
+                not s.index.knows(lemma(low[j])):
+            return None  # "in line", "at once", "on time": no determiner and no place word
+        phrase, j = self._words(j)
+        if not phrase:
+            return None
+        lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
+        if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas):
+            return None
+        if lemmas and lemmas[-1] in lx.DURATION_UNITS:
+            return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
+        match = None
+        if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
+            door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
+            match = door if door is not None and door.kind == "door" else None
+        match = match or self._in_context(s.index.match(lemmas), lemmas)
+        possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its")
+        owned = self._owned(lemmas, match) if possessive and self.owner else None
+        if owned is not None:
+            match = owned[0]
+        if match is None and possessive:
+            return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
+        if at >= 1 and k < s.n and low[k] in ("a", "an") and self.people.is_person_noun(at - 1) and \
+                (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
+            # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person
+            # has or wears, not where they are ("a man on a bench" is still the bench)
+            return None
+        if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
+            return None  # "off the train": a word that names no place, though an alias shares it
+        numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
+        if match is not None and not self._identifiers_agree(lemmas, match):
+            match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
+        meant = None
+        if match is None and not numbered and not s.index.is_nameless(lemmas):
+            meant = self._by_meaning(phrase, lemmas)  # "the eating area": no word of it names a place
+            match = meant[0] if meant is not None else None
+        if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):
+            self.unknown.append(" ".join(phrase))
+        if match is None:
+            return None
+        sure = owned[1:] if owned is not None else meant[1:] if meant is not None else None
+        score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
+        if not numbered and owned is None and ((alternatives and score < UNSURE_BELOW) or
+                                               self._headed_elsewhere(lemmas, match)):
+            # Words do not decide: two places alike ("the main meeting room": the boardroom and both
+            # meeting rooms share "meeting room"), or a thing's name inside a phrase headed by a room
+            # word ("the mummy gallery" is no mummy): the one nearest in meaning, if one is clearly nearer.
+            chosen = self._nearest_of(phrase, lemmas, match, alternatives)
+            if chosen is not None:
+                match, (score, reason, alternatives) = chosen[0], chosen[1:]
+        self.context_zones.append(match.zone)
+        if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
+            self.frame_zones.append(match.zone)
+        return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives)
+
+    # ---- by meaning, and by owner ----------------------------------------------------------------
+
+    def _by_meaning(self, phrase: Sequence[str], lemmas: Sequence[str]) -> _Decided | None:
+        """The place a phrase no word of which names one means, when one is clearly nearest: similar
+        enough to one of its names, and clearly nearer than any place of another zone."""
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        head = content[-1] if content else ""
+        speaks_of_door = bool(set(content) & lx.DOOR_WORDS)
+        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase))
+                  if (r.entry.kind != "door" or speaks_of_door)
+                  and (r.entry.kind == "zone" or head not in lx.GENERIC_PLACE_HEADS)]
+        if not ranked or ranked[0].similarity < MEANING_ACCEPT:
+            return None
+        best = ranked[0]
+        other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
+        margin = best.similarity - (other.similarity if other is not None else 0.0)
+        if margin < MEANING_MARGIN:
+            return None
+        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
+        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
+            best = zone  # "the x-ray room": the room, though the machine's name is as near
+        said = " ".join(phrase)
+        score = 0.7 if best.similarity >= 0.85 and margin >= 0.08 else 0.55
+        alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
+        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
+                f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
+
+    def _headed_elsewhere(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
+        """Whether a fixture or door matched by its whole name sits inside a phrase whose head is a
+        word for rooms it lacks ("the mummy gallery", "the coffee area")."""
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        entry = self.s.index.entry(match.name)
+        return bool(content) and match.kind != "zone" and match.exact and entry is not None and \
+            content[-1] not in entry.tokens and content[-1] in self.s.index.zone_words
+
+    def _nearest_of(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch,
+                    alternatives: Sequence[str]) -> _Decided | None:
+        """Of the places the phrase's words point at (the match, the places alike and any place
+        sharing one of its words), the one nearest in meaning, when it is clearly nearer; a room
+        when the phrase's head is a word for rooms."""
+        index = self.s.index
+        said = " ".join(phrase)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        rooms_only = bool(content) and (content[-1] in lx.GENERIC_PLACE_HEADS or self._headed_elsewhere(lemmas, match))
+        among = {match.name, *alternatives, *index.sharing(content)}
+        ranked = [r for r in index.by_meaning(said, among=among) if r.entry.kind == "zone" or not rooms_only]
+        if len(ranked) < 2:
+            return None
+        best, margin = ranked[0], ranked[0].similarity - ranked[1].similarity
+        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
+        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
+            best = zone  # "the whale gallery": the room, though its whale is as near
+            margin = best.similarity - max(r.similarity for r in ranked if r.entry.zone != best.entry.zone)
+        elif margin < MEANING_MARGIN:
+            return None
+        score = 0.7 if margin >= 0.08 else 0.55
+        rest = tuple(r.entry.name for r in ranked[:4] if r.entry.name != best.entry.name)
+        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, match.score, False), score,
+                f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
+                f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
+
+    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None) -> _Decided | None:
+        """"her office", "their room": of the places named like the phrase, the one that belongs to the
+        kind of person whose clause it is ("the director ... her office": the director's office)."""
+        assert self.owner is not None
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if not content:
+            return None
+        head = content[-1]
+        owned = [e for e in self.s.index.owned_by(self.owner) if head in e.tokens or
+                 (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
+        mine = [e for e in owned if match is not None and e.name == match.name]
+        if len(owned) != 1 and not mine:
+            return None
+        e = (mine or owned)[0]  # the words may already name it: then the owner decides a tie
+        return (PlaceMatch(e.name, e.kind, e.zone, match.score if match is not None else 1.0, False), 0.8,
+                f"'{' '.join(lemmas)}' of a {self.owner}: {e.name}", ())
+
+    def _words(self, j: int) -> tuple[list[str], int]:
+        """The words of a place phrase from j, and the index after them."""
+        s = self.s
+        low = s.low
+        phrase: list[str] = []
+        joined = False  # the word follows a hyphen inside the phrase ("check-in")
+        while j < s.n and len(phrase) < 6:
+            w = low[j]
+            if w == "-" and phrase and j + 1 < s.n and low[j + 1][:1].isalnum():
+                joined = True
+                j += 1
+                continue
+            if phrase and not joined and self._extends_name(phrase, j):
+                phrase.append(w)  # "check in counter a": a preposition inside a name the world has
+                j += 1
+                continue
+            if s.is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
+                    w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
+                break
+            if w in ("'s", "’s"):
+                j += 1
+                continue
+            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
+                break
+            after_hyphen, joined = joined, False
+            if phrase and self._verb_ends_name(phrase, j):
+                break
+            if phrase and w in lx.DETERMINERS and j + 1 < s.n and s.w[j + 1].pos in ("NOUN", "PROPN", "ADJ", "NUM") \
+                    and not self._extends_name(phrase, j) and not self.whole_name([*phrase, w]):
+                break  # "on platform 2 a man sits": the place ends where a new noun phrase starts
+            if w.isdigit() or w in lx.UNITS:
+                if not phrase:
+                    break
+                phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
+                j += 1
+                continue
+            if s.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not s.index.knows(lemma(w)) \
+                    and not after_hyphen:
+                break
+            phrase.append(w)
+            j += 1
+            if s.w[j - 1].text.endswith(".") and len(s.w[j - 1].text) > 1:
+                break  # "room b." at a sentence end: the full stop closes the phrase
+        return phrase, j
+
+    def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
+        s = self.s
+        w = s.low[j]
+        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)):
+            return True
+        if verb_lemma(w) in lx.INTENT_VERBS and s.index.knows(lemma(w)) and \
+                not w.endswith("ing") and self.whole_name(phrase) and \
+                not any(self.whole_name([*phrase, *s.low[j:end]]) for end in range(j + 1, min(j + 3, s.n) + 1)) \
+                and (j + 1 >= s.n or not self.people.is_person_noun(j + 1)):
+            # "at gate B2 boards the plane", "the check-in hall queue at": a whole name, then a verb
+            # that only happens to be a place word too ("departures board", the tag "queue"); but
+            # "the pharmacy waiting chairs" and "the boardroom meeting" are names and nouns
+            return True
+        # "in the cafeteria evacuate", "across the hospital evacuate": the verb after the place or the
+        # building ("gift shop" is a noun)
+        return verb_lemma(w) in lx.INTENT_VERBS and not s.index.knows(lemma(w)) and (
+            s.w[j].tag.startswith("VB") or s.index.match([lemma(x) for x in phrase]) is not None
+            or s.index.is_nameless([lemma(x) for x in phrase]))
+
+    def _confidence(self, phrase: Sequence[str], lemmas: Sequence[str],
+                    match: PlaceMatch) -> tuple[float, str, tuple[str, ...]]:
+        """How sure a place match is, why, and the places that fit the phrase as well: a whole name or
+        alias found and no other place like it is sure; a place only sharing words with the phrase
+        is less so; two places scoring alike are unsure, unless a zone the prompt named before
+        decides between them."""
+        said = " ".join(phrase)
+        tied = [m for m in self.s.index.candidates(lemmas)
+                if m.name != match.name and m.score >= match.score - 1e-9
+                and not (match.kind == "zone" and m.zone == match.name)
+                and not (m.kind == "zone" and match.zone == m.name)]
+        alternatives = tuple(dict.fromkeys(m.name for m in tied))[:4]
+        if alternatives and match.zone in self.context_zones:  # (this phrase's zone is not in it yet)
+            return (0.7, f"'{said}' fits {len(alternatives) + 1} places; {match.name} is in {match.zone}, "
+                         f"named before", alternatives)
+        if alternatives:
+            return 0.4, f"'{said}' fits {match.name} and {', '.join(alternatives)} alike", alternatives
+        if not match.exact:
+            return 0.75, f"'{said}' shares words with {match.name} but is not its name", ()
+        return 1.0, "", ()
+
+    def whole_name(self, phrase: Sequence[str]) -> bool:
+        """Whether the words are exactly a name or alias of a place (determiners aside)."""
+        lemmas = tuple(t for t in phrase_lemmas(list(phrase)) if t not in lx.PLACE_MODIFIERS)
+        return bool(lemmas) and any(lemmas == p for e in self.s.index.entries for p in e.phrases)
+
+    def _identifiers_agree(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
+        """Whether every identifier of a place phrase ("c4", "2", the "b" of "ward b") belongs to the
+        place matched or to one of the places it ties with: a number or letter names one place of a
+        series, so a place whose series lacks it is not that place."""
+        index = self.s.index
+        ids = [t for k, t in enumerate(lemmas) if IDENTIFIER.fullmatch(t) and (k > 0 or not t.isalpha())]
+        if not ids:
+            return True
+        entry = index.entry(match.name)
+        return entry is None or all(t in entry.tokens for t in ids) or any(
+            all(t in (index.entry(m.name) or entry).tokens for t in ids) for m in index.candidates(lemmas)[:8])
+
+    def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
+        """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
+        has already named ("Gate A1: ... staff at the desk")."""
+        index = self.s.index
+        if match is None or not self.context_zones or match.zone in self.context_zones:
+            return match
+        candidates = index.candidates(lemmas)
+        tied = [m for m in candidates if m.score >= match.score - 1e-9]
+        for zone in reversed(self.context_zones):
+            for m in tied:
+                if m.zone == zone:
+                    return m
+        if match.kind != "entity":
+            return match  # a room or door named outright is that one, wherever the sentence was before
+        # "On platform 2 a man sits on the bench": a fixture of the zone named before, called by the
+        # phrase's own words, though another zone's fixture has them as its whole name (only a zone
+        # the people are in, "on platform 2", "in the pharmacy", not one they leave)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        for zone in reversed(self.frame_zones):
+            for m in candidates:
+                entry = index.entry(m.name)
+                if m.zone == zone and m.kind == "entity" and entry is not None and set(content) <= entry.tokens:
+                    return m
+        return match
+
+    def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
+        """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
+        s = self.s
+        if s.low[j] not in ("in", "of", "and", "on", "up", "out"):
+            return False  # "to", "from", "through" ... always mark a new place: never inside a name
+        here = s.index.match(phrase_lemmas(list(phrase)))
+        for end in range(j + 2, min(j + 4, s.n) + 1):
+            extended = phrase_lemmas(list(phrase) + s.low[j:end])
+            longer = s.index.match(extended)
+            if longer is None or not longer.exact or (here is not None and here.exact and longer.name == here.name):
+                continue
+            # every word of the longer phrase must be the one place's: "check in counter a", not
+            # "ward c to the nurses" (two places either side of a preposition)
+            entry = s.index.entry(longer.name)
+            if entry is not None and all(t in entry.tokens for t in extended):
+                return True
+        return False
+
+    def past_part(self, k: int) -> int:
+        """Past "the corner of", "the far end of" at k: a part of a place is the place."""
+        s = self.s
+        j = k
+        while j < s.n and j < k + 3 and (s.low[j] in lx.PLACE_MODIFIERS or lemma(s.low[j]) in lx.PLACE_PARTS):
+            j += 1
+        if j > k and j < s.n and s.low[j] == "of" and lemma(s.low[j - 1]) in lx.PLACE_PARTS:
+            return s.skip(j + 1, lx.DETERMINERS)
+        return k
+
+    def names_place(self, k: int) -> bool:
+        """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
+        s = self.s
+        k = self.past_part(k)
+        words: list[str] = []
+        for j in range(k, min(k + 4, s.n)):
+            if s.is_punct(j) or (words and s.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}):
+                break  # "queue at the copier": the name ends where another place phrase starts
+            words.append(s.low[j])
+        for n in range(len(words), 0, -1):
+            match = s.index.match(phrase_lemmas(words[:n]))
+            if match is not None and match.exact:
+                # the name starts here: "to pick up wheelchairs" is a purpose, though "wheelchairs" is a name
+                entry = s.index.entry(match.name)
+                first = next((lemma(w) for w in words[:n] if w not in lx.DETERMINERS), "")
+                return entry is None or first in entry.tokens
+        return False
+
+    def scan_unknown(self, tokens: Sequence[int]) -> None:
+        """Read every place phrase of these words, for the unknown places among them."""
+        for i in tokens:
+            prep = self.s.preposition(i)
+            if prep is not None:
+                self.phrase(i + prep[1], prep[0], i)
+
+    # ---- zones that empty ------------------------------------------------------------------------
+
+    def passive_emptying(self, k: int) -> bool:
+        """Whether the words from k say the subject before them is emptied: "(must|has to|is being)
+        (be) cleared / emptied / vacated / evacuated"."""
+        s = self.s
+        j = k
+        while j < s.n and j < k + 4 and (s.w[j].pos in ("AUX", "PART") or s.low[j] in ("to", "being", "be")
+                                            or s.w[j].tag == "MD" or verb_lemma(s.low[j]) in ("have", "need")):
+            j += 1
+        return j > k and j < s.n and s.w[j].tag == "VBN" and verb_lemma(s.low[j]) in lx.ZONE_EMPTYING_VERBS
+
+    def emptied_zones(self, tokens: Sequence[int]) -> list[Place]:
+        """Zones that are the subject of an emptying verb used without an object: "the cafeteria
+        clears out", "the whole boardroom empties into the corridor", "the kitchen empties in
+        seconds". Everybody in them leaves (their start), as in an evacuation. "clear the tables"
+        has an object and "the kitchen is clear" no verb: neither is one."""
+        s = self.s
+        out: list[Place] = []
+        for i in tokens:
+            end = self._emptied_subject_end(i)
+            if end is None:
+                continue
+            first = end
+            while first > 0 and not s.is_punct(first - 1) and (
+                    s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ", "DET", "NUM")
+                    or s.low[first - 1] in lx.PLACE_MODIFIERS) and s.low[first - 1] not in lx.CLAUSE_STARTERS:
+                first -= 1
+            words = tuple(s.low[first:end])
+            lemmas = [t for t in phrase_lemmas(list(words)) if t not in lx.PLACE_MODIFIERS]
+            match = s.index.match(lemmas) if lemmas else None
+            if match is None or match.kind != "zone" or self.people.is_person_phrase(lemmas):
+                continue
+            self.context_zones.append(match.zone)
+            out.append(Place("obj:start", first, words, match, end))
+        return out
+
+    def _emptied_subject_end(self, i: int) -> int | None:
+        """The end of the subject an emptying verb at i empties, or None when it empties nothing."""
+        s = self.s
+        if i < 1 or verb_lemma(s.low[i]) not in lx.ZONE_EMPTYING_VERBS or s.low[i] == verb_lemma(s.low[i]):
+            return None  # the base form is an imperative or infinitive ("clear the ward"), read elsewhere
+        if s.w[i].tag == "VBN":
+            # the passive, wherever it stands: "..., so the ticket hall has to be emptied"
+            j = i - 1
+            while j > 0 and (s.low[j] in ("be", "been", "being", "is", "are", "was", "were", "to", "has",
+                                          "have", "had", "needs", "need", "got", "gets", "get")
+                             or s.w[j].tag == "MD"):
+                j -= 1
+            return None if j == i - 1 else j + 1  # no auxiliary: "the emptied room"
+        if s.w[i].pos == "VERB" or s.w[i].tag in ("VBZ", "VBD", "VBP", "NNS"):
+            nxt = s.low[i + 1] if i + 1 < s.n else ""
+            if nxt in lx.DETERMINERS or (nxt and s.index.knows(lemma(nxt)) and nxt != "out"):
+                return None  # an object follows: "empties the bins"
+            return i
+        return None

@@ -1,0 +1,88 @@
+"""Pass 3, part 1: how a group reacts to the robot, from its own clause ("stares at the robot",
+"keep their distance from it", "run after it", "curious about the robot"): look, approach, follow,
+avoid or block (HuNavSim's Surprised, Curious, Curious, Scared, Threatening; language/lexicon.py)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+
+def robot_positions(s: Sentence, own: Sequence[int], robot_after: int | None) -> list[int]:
+    """Where a clause names the robot: its word, or "it"/"its" once the robot was named before; and
+    the first word of a robot clause the group's clause leads into ("step aside as it passes")."""
+    found = [i for i in own if s.low[i] in lx.ROBOT_WORDS or (
+        s.low[i] in ("it", "its") and any(s.low[k] in lx.ROBOT_WORDS for k in range(i)))]
+    if robot_after is not None:
+        found.append(robot_after)
+    return found
+
+
+def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) -> str | None:
+    """The interaction a clause's words give the robot it names: phrases, then verbs, then nouns,
+    then feelings ("scared of the robot"), then anything aimed "at" it ("gawk at the robot")."""
+    if not robot_at:
+        return None
+    ownset = set(own)
+    for n_mention, r in enumerate(robot_at):
+        # The verb closest before the robot governs it ("stop and stare at the robot": look); with
+        # two mentions, the words since the one before ("curious about the robot and follow it").
+        since = robot_at[n_mention - 1] if n_mention else -1
+        found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r) or _noun_after(s, ownset, r)
+                 or _passive(s, r))
+        if found is not None:
+            return found
+    for i in own:
+        if s.low[i] in lx.ROBOT_FEELINGS:
+            return lx.ROBOT_FEELINGS[s.low[i]]
+    if any(s.low[r - 1] == "at" or (s.low[r - 1] == "the" and s.low[r - 2] == "at") for r in robot_at if r >= 2):
+        return "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
+    return None
+
+
+def _after_robot(s: Sentence, r: int) -> str | None:
+    """Words right after the robot: "stands in the robot's way", "blocks its path"."""
+    for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
+        if tuple(s.low[r + 1:r + 1 + len(phrase)]) == phrase or (
+                s.low[r] == "its" and tuple(s.low[r:r + len(phrase)]) == ("its", *phrase[1:])):
+            return interaction
+    return None
+
+
+def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int, r: int) -> str | None:
+    for i in sorted((x for x in own if since < x < r), reverse=True):
+        for phrase, interaction in lx.ROBOT_PHRASES.items():
+            if s.phrase_words(i, len(phrase), ownset) == phrase:
+                return interaction
+        # any verb of walking, known or only tagged a verb by the parser ("waddle over to it")
+        v = s.verb(i)
+        if lx.INTENT_VERBS.get(v) == "walk" or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
+            for tail in lx.ROBOT_APPROACH_TAILS:
+                if s.phrase_words(i + 1, len(tail), ownset) == tail:
+                    return "approach"  # "the twins toddle up to the robot"
+        if v in lx.ROBOT_VERBS and not s.after_determiner(i):
+            return lx.ROBOT_VERBS[v]
+        if s.lemma(i) in lx.ROBOT_NOUNS:
+            return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"
+    return None
+
+
+def _noun_after(s: Sentence, ownset: set[int], r: int) -> str | None:
+    """"give the robot a wide berth": a noun just after the robot names it."""
+    for i in range(r + 1, min(r + 5, s.n)):
+        if i not in ownset or s.is_punct(i):
+            break
+        if s.lemma(i) in lx.ROBOT_NOUNS:
+            return lx.ROBOT_NOUNS[s.lemma(i)]
+    return None
+
+
+def _passive(s: Sentence, r: int) -> str | None:
+    """"the robot is followed by ...": the doers react as the verb says."""
+    if r + 3 < s.n and verb_lemma(s.low[r + 1]) == "be" and verb_lemma(s.low[r + 2]) in lx.ROBOT_VERBS \
+            and s.low[r + 3] == "by":
+        return lx.ROBOT_VERBS[verb_lemma(s.low[r + 2])]
+    return None

@@ -1,0 +1,259 @@
+"""Pass 3, part 2: what the sentence asks of the robot itself (language/model.py `RobotReading`).
+
+A clause whose subject is the robot ("a (delivery) robot crosses the hall to the lifts", "it" once
+the robot is named: "as it passes the lobby") or that sends it ("send the robot to ward A", "have the
+robot wait by the door") gives the robot a task from its verb (cross, wait, patrol, follow) and its
+places by role. These clauses belong to no group: a group's places never come from them. A passive
+("the robot is followed by two children") is the people's clause, and a reaction to the robot
+("two children follow the robot") asks nothing of the robot itself.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.clauses import Clause, Clauses
+from grove_tui.language.counts import quantifier
+from grove_tui.language.mentions import Mention
+from grove_tui.language.model import FieldConfidence, RobotReading
+from grove_tui.language.people import People
+from grove_tui.language.place_phrases import Place, place_confidences
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+_TASK_VERBS = lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS
+_PEOPLE_PRONOUNS = ("they", "he", "she", "we", "people", "everyone", "everybody", "someone", "somebody",
+                    "nobody", "visitors", "staff")
+
+
+@dataclass
+class RobotClause:
+    """The words of one clause about the robot, and the index of its verb."""
+
+    tokens: list[int]
+    verb: int | None
+    command: bool = False  # "send the robot to ...": the verb is the sender's
+
+
+class RobotClauses:
+    def __init__(self, s: Sentence, people: People, clauses: Clauses) -> None:
+        self.s = s
+        self.people = people
+        self.clauses = clauses
+
+    def find(self, mentions: Sequence[Mention]) -> list[RobotClause]:
+        """The clauses whose subject is the robot, each running to the next group's mention, the
+        next clause about someone else, or the end of its sentence."""
+        s = self.s
+        starts = {m.first for m in mentions}
+        taken = {i for m in mentions for i in range(m.first, m.last + 1)}
+        out: list[RobotClause] = []
+        i = 0
+        while i < s.n:
+            found = self._subject(i, taken)
+            if found is None:
+                i += 1
+                continue
+            first, verb, command = found
+            end = self._end(verb if verb is not None else i + 1, starts)
+            out.append(RobotClause(list(range(first, end)), verb, command))
+            i = max(end, i + 1)
+        return out
+
+    def leads_into(self, a: int, b: int, found: Sequence[RobotClause]) -> int | None:
+        """The first word of a robot clause that a group's clause (words a..b) leads into with a
+        word of time ("two patients step aside as it passes"): the group reacts to the robot there."""
+        for rc in found:
+            r = rc.tokens[0]
+            if a < r <= b and r > 0 and self.s.low[r - 1] in ("as", "when", "whenever", "while", "once", "until"):
+                return r
+        return None
+
+    # ---- finding them ----------------------------------------------------------------------------
+
+    def _subject(self, i: int, taken: set[int]) -> tuple[int, int | None, bool] | None:
+        """(first word, verb index, command) when the robot (or "it" for it) is the subject at i."""
+        s = self.s
+        low = s.low
+        is_robot = low[i] in lx.ROBOT_WORDS
+        is_it = low[i] == "it" and any(x in lx.ROBOT_WORDS for x in low[:i]) and s.w[i].dep in ("nsubj", "")
+        if not (is_robot or is_it) or i in taken:
+            return None
+        first = self._phrase_start(i, taken) if is_robot else i
+        before = first - 1
+        command = before >= 0 and verb_lemma(low[before]) in lx.ROBOT_COMMAND_VERBS and (
+            before == 0 or s.is_punct(before - 1) or low[before - 1] in lx.CLAUSE_STARTERS | {"please"})
+        subject = (first == 0 or s.is_punct(before) or low[before] in lx.CLAUSE_STARTERS
+                   or s.w[before].sentence != s.w[first].sentence
+                   or (s.w[before].pos == "NUM" and before > 0 and low[before - 1] == "at"))  # "At 9 the robot ..."
+        if command:
+            first = before
+        elif not subject:
+            return None
+        j = i + 1
+        while j < s.n and (s.w[j].pos == "ADV" or s.w[j].tag == "MD" or low[j] in ("then", "also", "now", "first")) \
+                and not s.is_punct(j):
+            j += 1
+        if j >= s.n or s.is_punct(j):
+            return None
+        if command:
+            if low[j] == "to" and j + 1 < s.n and s.verb_follows(j + 1):
+                return first, j + 1, True  # "tell the robot to wait by the door"
+            if s.w[j].pos == "VERB" or s.w[j].tag == "VB":
+                return first, j, True  # "have the robot patrol the lobby"
+            return first, None, True  # "send the robot to ward A": the sender's verb moves it
+        if verb_lemma(low[j]) == "be":
+            return self._after_be(first, j)
+        if s.w[j].pos in ("VERB", "AUX") or s.w[j].tag.startswith("VB") or self._verb_tagged_noun(j):
+            return first, j, False
+        return None
+
+    def _phrase_start(self, i: int, taken: set[int]) -> int:
+        """The first word of the robot's noun phrase: "a delivery robot", "the small cleaning robot"."""
+        s = self.s
+        first = i
+        while first > 0 and not s.is_punct(first - 1) and (
+                s.w[first - 1].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or s.low[first - 1] in lx.NP_MODIFIERS
+                or (s.low[first - 1] == "-" and first > 1)) and s.low[first - 1] not in lx.CLAUSE_STARTERS \
+                and s.low[first - 1] not in lx.PLACE_PREPOSITIONS and (first - 1) not in taken:
+            first -= 1
+        return first
+
+    def _after_be(self, first: int, j: int) -> tuple[int, int | None, bool] | None:
+        s = self.s
+        k = j + 1
+        while k < s.n and s.w[k].pos == "ADV":
+            k += 1
+        if k < s.n and s.w[k].tag == "VBN":
+            return None  # "the robot is followed by two children": the people's clause
+        if k < s.n and s.w[k].tag == "VBG":
+            return first, k, False  # "the robot is crossing the hall"
+        if k < s.n and s.preposition(k) is not None:
+            return first, j, False  # "the robot is in the lobby": it stays there
+        return None
+
+    def _verb_tagged_noun(self, j: int) -> bool:
+        """The small parser may tag the robot's verb a plural noun ("the robot rolls", "the robot
+        patrols"): an "-s" word the lexicon knows as a verb, right after the robot."""
+        word = self.s.low[j]
+        base = verb_lemma(word)
+        return word.endswith("s") and base != word and (base in lx.INTENT_VERBS or base in _TASK_VERBS)
+
+    def _end(self, k: int, starts: set[int]) -> int:
+        """Where a robot clause from k ends: the next group's mention (less the words joining it),
+        a new subject after a clause word ("... as a family buys tickets"), a semicolon or colon, or
+        the end of the sentence."""
+        s = self.s
+        sentence = s.w[k].sentence if k < s.n else -1
+        j = k
+        while j < s.n and s.w[j].sentence == sentence and s.low[j] not in (";", ":"):
+            if j in starts:
+                break
+            if s.low[j] in lx.CLAUSE_STARTERS - {"and", "then", "with"} and j > k and self._new_subject_after(j + 1):
+                break
+            if s.low[j] in ("and", ",") and j > k and self._new_subject_after(j + 1) and \
+                    not (j + 1 < s.n and s.low[j + 1] in lx.ROBOT_WORDS):
+                break
+            j += 1
+        while j > k and (s.low[j - 1] in lx.CLAUSE_STARTERS or s.is_punct(j - 1)
+                         or verb_lemma(s.low[j - 1]) in lx.SCENE_VERBS):
+            j -= 1  # "send the robot to the kitchen and have ...": not the robot's words
+        return j
+
+    def _new_subject_after(self, k: int) -> bool:
+        """Whether a new subject starts at k: a person phrase, a pronoun for people, or a starter."""
+        s = self.s
+        k = s.skip(k, {","} | (lx.CLAUSE_STARTERS - {"with"}))
+        if k >= s.n:
+            return False
+        if s.low[k] in _PEOPLE_PRONOUNS:
+            return True
+        q = quantifier(s, k)
+        start = q.end if q is not None else s.skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
+        return start < s.n and self.people.person_head(start, counted=q is not None) is not None
+
+    # ---- reading them ----------------------------------------------------------------------------
+
+    def reading(self, found: Sequence[RobotClause]) -> RobotReading | None:
+        """What the robot's clauses ask of it: a task from their verbs and the places by role."""
+        s = self.s
+        task: str | None = None
+        task_confidence: FieldConfidence | None = None
+        roles: dict[str, str | None] = {"start": None, "destination": None, "location": None}
+        via: list[str] = []
+        follows: str | None = None
+        read_from: dict[str, Place] = {}
+        texts: list[str] = []
+        for rc in found:
+            clause = self.clauses.read(rc.tokens, set())
+            verb = s.verb(rc.verb) if rc.verb is not None else ""
+            kind = self._task(verb, clause, rc.command)
+            if kind is None:
+                if not any(p.match is not None for p in clause.places):
+                    continue
+                kind = "cross"
+                task_confidence = FieldConfidence("task", 0.6, f"'{verb}' is read as the robot going somewhere")
+            task = task or kind
+            if kind == "follow" and rc.verb is not None and follows is None:
+                follows = self._followed(rc.verb)
+            for place in clause.places:
+                if place.match is None:
+                    continue
+                name = place.match.name
+                read_from.setdefault(name, place)
+                role = self._role(place, rc.verb, kind in ("wait", "patrol"))
+                if role == "via":
+                    via += [] if name in via else [name]
+                elif role == "destination" or roles[role] is None:
+                    roles[role] = name  # the last destination said, the first start and location
+            texts.append(s.span(rc.tokens[0], rc.tokens[-1]))
+        start, destination, location = roles["start"], roles["destination"], roles["location"]
+        if task is None or (task == "cross" and not (start or destination or via)):
+            return None  # "when the robot comes near": it moves, but the sentence sets no route
+        if task in ("wait", "patrol") and location is None:
+            location = destination or (via[0] if via and task == "patrol" else None)
+            destination = None if location == destination else destination
+            via = [v for v in via if v != location]
+        confidence = place_confidences({"start": start, "destination": destination, "location": location}, via,
+                                       read_from)
+        if task_confidence is not None:
+            confidence.insert(0, task_confidence)
+        return RobotReading(task, start, destination, location, tuple(via), " ... ".join(texts), tuple(confidence),
+                            follows)
+
+    def _followed(self, verb: int) -> str | None:
+        s = self.s
+        k = s.skip(verb + 1, {"close", "closely", "right", "just", "along", "behind", "after"})
+        end = s.skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
+        if end < s.n and (self.people.is_person_noun(end) or s.low[end] in ("him", "her", "them", "us")):
+            return s.span(k, end)
+        return None
+
+    @staticmethod
+    def _task(verb: str, clause: Clause, command: bool) -> str | None:
+        if verb in lx.ROBOT_FOLLOW_VERBS:
+            return "follow"
+        if verb in lx.ROBOT_PATROL_VERBS or lx.INTENT_VERBS.get(verb) == "wander" or clause.intent == "wander":
+            return "patrol"
+        if verb in lx.ROBOT_WAIT_VERBS or (verb and lx.INTENT_VERBS.get(verb) == "wait"):
+            return "wait"
+        if verb in lx.ROBOT_CROSS_VERBS or lx.INTENT_VERBS.get(verb) in ("walk", "evacuate") or (command and not verb):
+            return "cross"
+        return None
+
+    @staticmethod
+    def _role(p: Place, verb_index: int | None, stationary: bool) -> str:
+        prep = p.prep
+        if prep in ("from", "obj:start", "out"):
+            return "start"
+        if stationary:
+            return "location"
+        if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for"):
+            return "destination"
+        if prep in lx.VIA_PREPOSITIONS or prep in ("obj:via", "obj:at"):
+            return "via"
+        if verb_index is not None and p.index < verb_index:
+            return "start"  # "the robot in the lobby drives to ward A"
+        return "via"  # "drives to ward A, stopping at the nurse station"

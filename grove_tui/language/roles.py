@@ -1,0 +1,98 @@
+"""Pass 5, part 1: the role each place phrase plays for a group (start, destination, location, via),
+from its preposition or verb, the group's intent and where the phrase stands against the verb:
+"from X": start; "to X": destination; "at X" for people who stay: location, for movers the start
+("the patients in ward A walk to ..."), or the destination of a verb of arrival ("arrive at X");
+"through X": via, or the destination when X is an exit they leave by."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.place_phrases import Place
+from grove_tui.language.places import PlaceIndex
+
+
+@dataclass
+class Roles:
+    """A group's places by role, and the phrase each place was read from."""
+
+    start: str | None = None
+    destination: str | None = None
+    location: str | None = None
+    via: list[str] = field(default_factory=list)
+    read_from: dict[str, Place] = field(default_factory=dict)
+
+
+def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
+                 verb_index: int | None, stationary: bool, intent: str) -> Roles:
+    """The group's places by role: a narrower place (a fixture of the zone already read) replaces
+    the zone; a destination said with "to" is not replaced by a later "at"."""
+    roles = Roles()
+    said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
+    for p in [*places, *scene_places]:
+        if p.match is None:
+            continue
+        name = p.match.name
+        roles.read_from.setdefault(name, p)
+        role = role_of(index, p, verb, verb_index, stationary, intent, p in scene_places)
+        marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
+        if role == "start" and (roles.start is None or narrower(index, name, roles.start)):
+            roles.start = name
+        elif role == "destination" and (roles.destination is None or narrower(index, name, roles.destination)
+                                        or (marked and not said_to)):
+            # "drops her bags off at the lockers and heads to the café": the café
+            roles.destination, said_to = name, said_to or marked
+        elif role == "location" and (roles.location is None or narrower(index, name, roles.location)):
+            roles.location = name
+        elif role == "via" and name not in roles.via:
+            roles.via.append(name)
+    return roles
+
+
+def narrower(index: PlaceIndex, name: str, than: str) -> bool:
+    """Whether `name` is a door or thing inside the zone `than` ("the coffee machine in the kitchen")."""
+    entry = index.entry(name)
+    return entry is not None and entry.kind != "zone" and entry.zone == than
+
+
+def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stationary: bool, intent: str,
+            from_scene: bool) -> str:
+    prep = p.prep
+    is_door = p.match is not None and p.match.kind == "door"
+    if prep == "out":
+        return "destination" if is_door else "start"
+    if prep in ("from", "obj:start"):
+        return "start"
+    if prep == "for":
+        return "location" if stationary else "destination"
+    if prep in ("to", "into", "towards", "toward", "onto", "obj:dest"):
+        return "destination"
+    if prep == "obj:via":
+        return "via"
+    if prep in lx.VIA_PREPOSITIONS:
+        return _through(index, p, verb, stationary, intent, is_door)
+    if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS or intent == "evacuate"):
+        return "destination"
+    if prep == "obj:at":
+        return "location" if stationary else "via"
+    # at / in / on / near / around ...
+    if stationary:
+        return "location"
+    if from_scene or verb_index is None or p.index < verb_index:
+        return "start"
+    return "destination" if verb in lx.ARRIVAL_VERBS else "start"
+
+
+def _through(index: PlaceIndex, p: Place, verb: str, stationary: bool, intent: str, is_door: bool) -> str:
+    if stationary and not is_door:
+        return "location"  # "pace up and down the corridor", "wander through the concourse"
+    if is_door and (verb in lx.DEPARTURE_VERBS | {"evacuate"} or intent == "evacuate"):
+        return "destination"
+    entry = index.entry(p.match.name) if is_door and p.match is not None else None
+    if entry is not None and entry.exit and verb not in lx.ARRIVAL_VERBS:
+        return "destination"  # "go home through the back door": out of an exit is where they end
+    if is_door and verb in lx.ARRIVAL_VERBS:
+        return "start"
+    return "via"

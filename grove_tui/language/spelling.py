@@ -1,0 +1,121 @@
+"""Misspellings the reader puts right: place words against the world's own names, and words for
+people against the lexicon's (both one edit away, never a real English word turned into another)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from functools import lru_cache
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.parser import Word, known_word
+from grove_tui.language.places import PlaceIndex
+from grove_tui.language.text import plain
+from grove_tui.language.tokens import lemma, verb_lemma
+
+
+@lru_cache(maxsize=2048)
+def near_person_noun(word: str) -> str | None:
+    """The person noun a word is one insertion, deletion, substitution or swap of two neighbours
+    away from, in its singular or plural (Damerau-Levenshtein distance 1); None if none is."""
+    forms = _person_forms()
+    for n in (len(word) - 1, len(word), len(word) + 1):
+        for form, noun in sorted(forms.get(n, {}).items()):
+            if one_edit(word, form):
+                return noun
+    return None
+
+
+@lru_cache(maxsize=1)
+def _person_forms() -> dict[int, dict[str, str]]:
+    """Length -> {written form: person noun}, for the typo check."""
+    by_length: dict[int, dict[str, str]] = {}
+    irregular = {"children": "child", "people": "person", "women": "woman", "men": "man"}
+    for noun in lx.PERSON_NOUNS:
+        plural = noun[:-1] + "ies" if noun.endswith("y") else noun + "s"
+        for form in (noun, plural, noun + "es"):
+            if len(form) >= 5:
+                by_length.setdefault(len(form), {}).setdefault(form, noun)
+    for form, noun in irregular.items():
+        by_length.setdefault(len(form), {})[form] = noun
+    return by_length
+
+
+def one_edit(a: str, b: str) -> bool:
+    """Whether a and b are one insertion, deletion, substitution or swap of neighbours apart."""
+    if a == b:
+        return False
+    if len(a) == len(b):
+        diff = [k for k in range(len(a)) if a[k] != b[k]]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]]
+                                  and a[diff[1]] == b[diff[0]])
+    if len(a) > len(b):
+        a, b = b, a
+    return any(b[:k] + b[k + 1:] == a for k in range(len(b)))
+
+
+def correct_places(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple[str, list[str]]:
+    """The prompt with misspelt place words put right, and what was put right ("read 'kitchn' as
+    'kitchen'"). Conservative, so a real word is never turned into a place: a word is corrected only
+    when the world has no place word like it, it is no word for people and no verb the lexicon knows,
+    and exactly one word of the world's place names is one edit away (an insertion, deletion,
+    substitution or swap of neighbours). Short words (3-4 letters) and real English words ("sever") are
+    corrected only when the correction completes a name with the word next to them ("sever room" ->
+    "server room"), never alone ("left" is not "lift"). Two words of a name run together are split
+    ("livingroom" -> "living room")."""
+    edits: list[tuple[int, int, str, str]] = []
+    for k, w in enumerate(words):
+        replacement = _correction(words, k, index)
+        if replacement is None:
+            continue
+        if w.text[:1].isupper():
+            replacement = replacement[:1].upper() + replacement[1:]
+        edits.append((w.start, w.end, replacement, w.text))
+    if not edits:
+        return text, []
+    out = text
+    for start, end, replacement, _ in reversed(edits):
+        out = out[:start] + replacement + out[end:]
+    return out, [f"read '{original}' as '{replacement}'" for _, _, replacement, original in edits]
+
+
+def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
+    low = plain(words[k].lower)
+    if not low.isalpha() or len(low) < 3:
+        return None
+    base = lemma(low)
+    if base in index.vocabulary or low in index.vocabulary or base in lx.PERSON_NOUNS or \
+            low in lx.STOPWORDS or low in lx.NUMBER_WORDS or low in lx.ROBOT_WORDS or \
+            verb_lemma(low) in lx.INTENT_VERBS or verb_lemma(low) in lx.ROBOT_VERBS:
+        return None
+    person = near_person_noun(low)
+    if person is not None and person not in index.vocabulary:
+        return None  # "docters": a person, read by the people rule ("securty" is both: a place here)
+    joined = index.joined_pairs.get(low)
+    if joined is not None:
+        return None if known_word(low) else " ".join(joined)
+    as_written = {v for v in index.name_words if abs(len(v) - len(low)) <= 1 and one_edit(low, v)}
+    as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1 and one_edit(base, v)}
+    found = sorted(as_written | as_plural)
+    if len(found) != 1:
+        return None  # nothing near, or two names equally near: no guess
+    replacement = found[0]
+    if replacement not in as_written:
+        replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
+    before, after = _content_neighbours(words, k)
+    completes = (before, found[0]) in index.name_pairs or (found[0], after) in index.name_pairs
+    if (len(low) < 5 or known_word(low)) and not completes:
+        return None  # "ticket hal" is the ticket hall; "hal" alone is nothing
+    return replacement
+
+
+def _content_neighbours(words: Sequence[Word], k: int) -> tuple[str, str]:
+    """The lemmas of the nearest content words before and after word k ("chek-in hall": "hall")."""
+    def near(indices: range) -> str:
+        for j in indices:
+            low = plain(words[j].lower)
+            if low.isalnum() and low not in lx.STOPWORDS:
+                return lemma(low)
+            if low.isalnum() and low not in ("in", "of", "-"):
+                return ""
+        return ""
+    return near(range(k - 1, max(-1, k - 3), -1)), near(range(k + 1, min(len(words), k + 3)))

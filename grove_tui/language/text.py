@@ -1,0 +1,51 @@
+"""The prompt as text, before it is parsed: what a keyboard, a phone or a chat window adds to English.
+
+`normalise` gives the text the reader parses: Unicode compatibility forms folded (full-width
+letters "Ｔｅｎ" are "Ten", ligatures are letters), symbols and emoji that are no words dropped
+("👨‍👩‍👧‍👦 a family" is "a family"; a lone surrogate no longer reaches the parser), chat
+abbreviations written out ("ppl" is "people", "&" is "and"), and runs of spaces collapsed. Letters
+with accents stay ("café"); `plain` strips them where world names are compared.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+from grove_tui.language.lexicon import CHAT_WORDS
+
+# Unicode categories that never carry a word: other symbols (emoji, pictographs), modifier symbols
+# (skin tones), format characters (zero-width joiners, variation selectors), private use and
+# surrogates. Punctuation, maths signs ("+") and currency stay.
+_DROPPED_CATEGORIES = frozenset({"So", "Sk", "Cf", "Co", "Cs", "Cn"})
+_CHAT_WORD = re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in sorted(CHAT_WORDS, key=len, reverse=True))
+                        + r")(?![\w'])", re.IGNORECASE)
+_JOINING_SIGN = re.compile(r"(?<=\w)\s*(?:&|\+)\s*(?=\w)")  # "3 kids & their mum", "2 nurses + 1 porter"
+
+
+def normalise(text: str) -> str:
+    """The prompt as the reader parses it (see the module doc); "" when nothing readable is left."""
+    folded = unicodedata.normalize("NFKC", text or "")
+    kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
+                   for ch in folded)
+    kept = _JOINING_SIGN.sub(" and ", kept)
+    kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
+    return " ".join(kept.split())
+
+
+def _variation_selector(ch: str) -> bool:
+    """Emoji presentation selectors ("⚕️" is U+2695 U+FE0F), marks of no letter."""
+    code = ord(ch)
+    return 0xFE00 <= code <= 0xFE0F or 0xE0100 <= code <= 0xE01EF
+
+
+def _spelled_out(word: str) -> str:
+    full = CHAT_WORDS[word.lower()]
+    return full[:1].upper() + full[1:] if word[:1].isupper() else full
+
+
+def plain(word: str) -> str:
+    """The word without accents ("café" -> "cafe"), as world names are written."""
+    if word.isascii():
+        return word
+    return unicodedata.normalize("NFKD", word).encode("ascii", "ignore").decode() or word

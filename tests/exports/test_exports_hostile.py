@@ -1,0 +1,128 @@
+"""`grove metrics` and the exports under hostile input and failing storage (issue 35): run files that are links
+to /dev/zero or named pipes, outputs on device nodes, read-only file systems and full disks. Each is one
+`error:` line with exit 2, nothing half-written, and no hang.
+
+A full disk is made with RLIMIT_FSIZE in a child process (writes past the limit fail as a full disk's do,
+with EFBIG instead of ENOSPC): the same code path, without needing a small file system.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from helpers.handmade import build_hospital_bundle
+
+from grove_tui.cli import main
+from grove_tui.services.session import GroveSession
+
+EXIT_BAD_INPUT = 2
+REPO = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="module")
+def simulated(tmp_path_factory) -> Path:
+    bundle = build_hospital_bundle(tmp_path_factory.mktemp("hostile") / "bundle")
+    GroveSession().simulate(bundle, 3.0)
+    return bundle
+
+
+@pytest.fixture
+def bundle(simulated, tmp_path) -> Path:
+    copy = tmp_path / "bundle"
+    shutil.copytree(simulated, copy)
+    return copy
+
+
+def one_error(run, contains: str) -> str:
+    assert run.exit_code == EXIT_BAD_INPUT, run.output
+    lines = run.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), run.stderr[:800]
+    assert contains in lines[0], lines[0]
+    return lines[0]
+
+
+def invoke_with_deadline(args: list[str], seconds: float = 60.0):
+    """Run the CLI in a thread; a command blocked on a pipe fails the test instead of hanging the suite."""
+    result: list = []
+    worker = threading.Thread(target=lambda: result.append(CliRunner().invoke(main, [str(a) for a in args])))
+    worker.start()
+    worker.join(seconds)
+    if worker.is_alive():
+        pytest.fail(f"grove {' '.join(map(str, args))} blocked for {seconds:.0f} s")
+    return result[0]
+
+
+@pytest.mark.parametrize("name", ["trajectories.csv", "events.jsonl"])
+def test_metrics_refuses_run_files_linked_to_dev_zero(bundle, name):
+    (bundle / name).unlink()
+    (bundle / name).symlink_to("/dev/zero")
+    run = invoke_with_deadline(["metrics", bundle])
+    one_error(run, f"{name} points outside the bundle folder")
+
+
+@pytest.mark.parametrize("name", ["trajectories.csv", "events.jsonl"])
+def test_metrics_refuses_run_files_that_are_pipes(bundle, name):
+    (bundle / name).unlink()
+    os.mkfifo(bundle / name)
+    try:
+        run = invoke_with_deadline(["metrics", bundle])
+    finally:
+        # Unblock any reader left behind, so a failing run does not keep a thread stuck.
+        fd = os.open(bundle / name, os.O_RDWR | os.O_NONBLOCK)
+        os.close(fd)
+    one_error(run, "is a pipe, not a file")
+
+
+@pytest.mark.parametrize("kind", ["rosbag", "foxglove"])
+def test_stream_exports_refuse_pipes_too(bundle, tmp_path, kind):
+    pytest.importorskip("rosbags" if kind == "rosbag" else "foxglove")
+    (bundle / "events.jsonl").unlink()
+    os.mkfifo(bundle / "events.jsonl")
+    out = tmp_path / ("x.mcap" if kind == "foxglove" else "bag")
+    try:
+        run = invoke_with_deadline(["export", kind, bundle, "--out", out])
+    finally:
+        os.close(os.open(bundle / "events.jsonl", os.O_RDWR | os.O_NONBLOCK))
+    one_error(run, "is a pipe, not a file")
+    assert not os.path.lexists(out)
+
+
+def test_export_trajectories_refuses_a_device_node_and_a_read_only_file_system(bundle):
+    one_error(CliRunner().invoke(main, ["export", "trajectories", str(bundle), "--out", "/dev/full"]),
+              "/dev/full: is a device node, not a folder")
+    one_error(CliRunner().invoke(main, ["export", "trajectories", str(bundle), "--out", "/proc/grove-out"]),
+              "/proc/grove-out: cannot write there")
+    one_error(CliRunner().invoke(main, ["export", "foxglove", str(bundle), "--out", "/proc/grove.mcap"]),
+              "/proc/grove.mcap: cannot write there")
+
+
+def _on_a_full_disk(args: list[str], limit_bytes: int) -> subprocess.CompletedProcess:
+    code = ("import resource, signal, sys\n"
+            "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
+            f"resource.setrlimit(resource.RLIMIT_FSIZE, ({limit_bytes}, {limit_bytes}))\n"
+            "from grove_tui.cli import main\n"
+            "sys.argv = ['grove'] + sys.argv[1:]\n"
+            "main()\n")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")]))
+    return subprocess.run([sys.executable, "-c", code, *map(str, args)], capture_output=True, text=True,
+                          timeout=300, env=env, cwd=REPO)
+
+
+@pytest.mark.parametrize("kind, out_name, limit", [("trajectories", "traj", 40_000), ("foxglove", "run.mcap", 40_000)])
+def test_a_full_disk_is_one_line_and_leaves_nothing(bundle, tmp_path, kind, out_name, limit):
+    if kind == "foxglove":
+        pytest.importorskip("foxglove")
+    out = tmp_path / "deep" / out_name  # its parent folder is made for it, and removed again
+    done = _on_a_full_disk(["export", kind, bundle, "--out", out], limit)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == EXIT_BAD_INPUT, done.stderr[-2000:]
+    assert len(lines) == 1 and lines[0].startswith(f"error: {out}: cannot write"), done.stderr[-2000:]
+    assert any(reason in lines[0] for reason in ("File too large", "disk is full", "I/O error")), lines[0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bundle"]
