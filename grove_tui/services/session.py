@@ -455,13 +455,13 @@ class GroveSession:
     def open_bundle(self, bundle_dir: str | Path) -> GeneratedScenario:
         """A saved bundle as a generation's result (no draft: its counts re-plan through `refine`)."""
         from grove_tui.generation.pipeline import GenerationResult
-        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report, world_source
 
         bundle_dir = Path(bundle_dir)
         scenario, trees, fields, grid = load_bundle(bundle_dir)
         # A bundle copied without its report still opens; only the timings and groups are missing.
         report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
-        world = self.load_world(_world_name(scenario.world, bundle_dir))
+        world = self.load_world(str(world_source(bundle_dir, scenario)))
         result = GenerationResult(scenario, trees, fields, grid, report)
         return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
                                  bundle_dir)
