@@ -254,6 +254,13 @@ class GenerationPipeline:
             self._grid = build_grid(self.world, resolution=self.resolution, inflation=self.preset.planner.inflation)
         return self._grid
 
+    def adopt_grid(self, grid: OccupancyGrid | None, resolution: float) -> None:
+        """Plan on a scenario's own grid (a re-plan or refinement of it), when this pipeline has built
+        none yet and the scenario was planned at this pipeline's resolution: the same world and preset
+        give the same grid, so it is not built again."""
+        if self._grid is None and grid is not None and resolution == self.resolution:
+            self._grid = grid
+
     @property
     def planner(self) -> ThetaStarPlanner:
         if self._planner is None:
@@ -360,8 +367,7 @@ class GenerationPipeline:
         groups = list(result.report.get("groups", ()))
         edits = self._check_counts(groups, counts)
         seed = int(result.scenario.seed if seed is None else seed)
-        if self._grid is None and result.grid is not None and result.scenario.resolution == self.resolution:
-            self._grid = result.grid  # the same world and preset: the grid the run built
+        self.adopt_grid(result.grid, result.scenario.resolution)  # the same world and preset: the run's grid
         edited = inputs.with_counts(counts)
         check_population(self.world, self.grid, self.preset, edited.selection, edited.quantities)
 

@@ -37,7 +37,8 @@ from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations
 from grove_tui.generation.pipeline import (Event, GenerationPipeline, GenerationResult, StageClock, group_records,
                                            world_reference)
-from grove_tui.generation.planning import RobotRequest, plan_operational, plan_robot, resolve_robot_point
+from grove_tui.generation.planning import (CachedPlanner, RobotRequest, plan_operational, plan_robot,
+                                           resolve_robot_point)
 from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed, place_groups, plan_groups
 from grove_tui.generation.reconcile import grounding_report
 from grove_tui.generation.rois import select_rois
@@ -294,8 +295,7 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     if scenario.preset != pipeline.preset.name or scenario.world != world_reference(pipeline.world):
         raise GenerationError(f"this pipeline is for world '{world_reference(pipeline.world)}' with preset "
                               f"'{pipeline.preset.name}', but the scenario is '{scenario.world}' with '{scenario.preset}'")
-    if pipeline._grid is None and scene.result.grid is not None and scenario.resolution == pipeline.resolution:
-        pipeline._grid = scene.result.grid  # the grid the scenario was planned on
+    pipeline.adopt_grid(scene.result.grid, scenario.resolution)  # the grid the scenario was planned on
     world, preset = pipeline.world, pipeline.preset
     seed = step_seed(int(scenario.seed), refinement.step)
     stages: dict[str, dict[str, Any]] = {}
@@ -492,27 +492,19 @@ def _robot(pipeline: GenerationPipeline, scene: Scene, refinement: Refinement, p
             goal: Any = task.destination or (current.goal if current is not None else None)
             request = RobotRequest(start, goal)
     try:
-        return plan_robot(world, grid, _CachedPlanner(pipeline), everyone, request, seed, notes)
+        return plan_robot(world, grid, CachedPlanner(world.name, pipeline.planner, pipeline.plan_cache), everyone,
+                          request, seed, notes)
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot be planned as asked: {exc}") from None
-
-
-class _CachedPlanner:
-    def __init__(self, pipeline: GenerationPipeline) -> None:
-        self.pipeline = pipeline
-
-    def plan(self, start: Any, goal: Any, start_label: str = "start", goal_label: str = "goal") -> Any:
-        p = self.pipeline
-        return p.plan_cache.plan(p.world.name, p.planner, start, goal, start_label=start_label, goal_label=goal_label)
 
 
 def _far_point(pipeline: GenerationPipeline, zone_name: str, start: tuple[float, float]) -> tuple[float, float]:
     """The free point of a zone farthest from `start`: the other end of a patrol."""
     from grove_tui.generation.postprocess import FreeSpace
 
-    cells = FreeSpace(pipeline.world, pipeline.grid).cells(pipeline.world.find(zone_name).zone
-                                                           if hasattr(pipeline.world.find(zone_name), "zone")
-                                                           else zone_name)
+    place = pipeline.world.find(zone_name)
+    zone = place.zone if isinstance(getattr(place, "zone", None), str) else place.name  # a door or thing: its zone
+    cells = FreeSpace(pipeline.world, pipeline.grid).cells(zone)
     if len(cells) == 0:
         return start
     d = (cells[:, 0] - start[0]) ** 2 + (cells[:, 1] - start[1]) ** 2

@@ -134,6 +134,14 @@ def test_the_robot(hospital, base, tmp_path):
     assert records(gone) == records(waits)
     _, back = refine(hospital, gone, "add a robot", tmp_path / "back")
     assert load_bundle(back)[0].robot is not None
+    _, patrol = refine(hospital, back, "the robot patrols the main corridor", tmp_path / "patrol")
+    robot = load_bundle(patrol)[0].robot
+    assert {hospital.zone_at(*robot.start).name, hospital.zone_at(*robot.goal).name} == {"main_corridor"}
+    assert len(robot.path) >= 2 and robot.start != robot.goal
+    _, crosses = refine(hospital, patrol, "now the robot crosses the lobby to the lifts", tmp_path / "crosses")
+    robot = load_bundle(crosses)[0].robot
+    assert hospital.zone_at(*robot.goal).name == "elevator_hall"
+    assert records(crosses) == records(base)  # the robot's edits left every group as it was
 
 
 def test_a_name_two_groups_share_is_asked_about(hospital, base, tmp_path):
