@@ -308,11 +308,14 @@ class GenerationPipeline:
         return self._assemble(inputs, seed, models, post, plan, report)
 
     def draft(self, prompt: str, seed: int, clock: StageClock, on_event: Callable[[Event], None] | None,
-              cancel: threading.Event | None, reading: PromptReading | None = None) -> Drafted:
+              cancel: threading.Event | None, reading: PromptReading | None = None,
+              query: str | None = None, documents: int | None = None) -> Drafted:
         """The model's draft for a sentence: the rois (with the reading), retrieval and synthesis stages.
 
         `run` asks it for the whole sentence, read here; a refinement (generation/refine.py) for the
-        groups a follow-up adds or changes, giving their `reading` alone, so the model writes only those."""
+        groups a follow-up adds or changes, giving their `reading` alone, so the model writes only those,
+        with its own retrieval `query` and at most `documents` node documents (fewer groups need fewer,
+        and every card is prompt the model must read)."""
         preset, world = self.preset, self.world
         emit = on_event or _no_event
         t0 = clock.begin("rois")
@@ -329,8 +332,9 @@ class GenerationPipeline:
         clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 
         t0 = clock.begin("retrieval")
-        if preset.retrieval_filter is not None and preset.retrieval_k > 0:
-            retrieved = self.retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
+        k = preset.retrieval_k if documents is None else min(preset.retrieval_k, documents)
+        if preset.retrieval_filter is not None and k > 0:
+            retrieved = self.retriever.retrieve(query or prompt, preset.retrieval_filter, k=k)
         else:
             retrieved = []
         request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,

@@ -43,6 +43,7 @@ from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed
 from grove_tui.generation.reconcile import grounding_report
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.scene import Scene, SceneGroup, placed_scene
+from grove_tui.generation.synthesis import describe_reading_groups
 from grove_tui.language.edits import EditReading, GroupEdit
 from grove_tui.language.followup import edited_reading
 from grove_tui.language.model import GroupReading, PromptReading, RobotReading
@@ -53,6 +54,8 @@ from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
 
 # Fields whose change the group's tree cannot absorb: the model writes it again.
 REGENERATING_FIELDS = ("intent", "destination", "location", "via")
+# Node documents retrieved per group the model writes in a refinement (a whole sentence gets the preset's).
+DOCUMENTS_PER_GROUP = 3
 # Fields reconciliation sets on the tree the group had (no model call).
 KEPT_TREE_FIELDS = ("count", "start", "pace", "together", "wait_seconds", "robot_interaction")
 KEPT, CHANGED_STATUS, ADDED_STATUS = "kept", "changed", "added"
@@ -314,7 +317,11 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     selection = None
     if regenerated:
         partial = PromptReading(text, tuple(p.reading for p in regenerated))
-        drafted = pipeline.draft(text, seed, clock, on_event, cancel, reading=partial)
+        # Retrieval asks for what the groups do ("cleaner x1: wander, location main_corridor"), not only
+        # the follow-up's words ("add a cleaner mopping ..."), and for a few cards per group.
+        query = f"{text}; {describe_reading_groups(partial)}"
+        drafted = pipeline.draft(text, seed, clock, on_event, cancel, reading=partial, query=query,
+                                 documents=DOCUMENTS_PER_GROUP * len(regenerated))
         selection = drafted.selection
         tokens = (drafted.synthesis.prompt_tokens, drafted.synthesis.completion_tokens)
         made = plan_groups(world, preset, drafted.synthesis.draft, drafted.quantities, selection, text,
