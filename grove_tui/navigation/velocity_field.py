@@ -15,9 +15,13 @@ an occupied cell (the property tests integrate it from sampled cells of every sh
 
 from __future__ import annotations
 
+import hashlib
 import math
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numba
 import numpy as np
@@ -350,6 +354,36 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     return VelocityField(origin=(float(ox), float(oy)), resolution=res, vectors=vectors, exit=(ex, ey), path=path.copy())
 
 
+# Walking distances from an exit over a grid (one any-angle Dijkstra, ~0.4 s on the hospital's grid) are
+# the same for every scenario of one world and preset: kept for the process, the newest first, up to
+# this many bytes (a refinement that adds evacuees, a batch of variations, a re-plan ask them again).
+MAX_CACHED_DISTANCE_BYTES = 64 * 1024 * 1024
+_distances: OrderedDict[tuple[Any, ...], np.ndarray] = OrderedDict()
+_distances_lock = threading.Lock()
+
+
+def _grid_key(planner: ThetaStarPlanner) -> tuple[Any, ...]:
+    occupied = planner.occupied
+    digest = hashlib.blake2b(np.packbits(occupied).tobytes(), digest_size=16).hexdigest()
+    return (occupied.shape, planner.resolution, planner.centre_x, planner.centre_y, digest)
+
+
+def _exit_distances(planner: ThetaStarPlanner, grid_key: tuple[Any, ...], row: int, col: int) -> np.ndarray:
+    key = (*grid_key, row, col)
+    with _distances_lock:
+        found = _distances.get(key)
+        if found is not None:
+            _distances.move_to_end(key)
+            return found
+    distance, _parent = any_angle_distances(planner.sight_rows, planner.sight_cols, row, col)
+    distance.setflags(write=False)
+    with _distances_lock:
+        _distances[key] = distance
+        while sum(d.nbytes for d in _distances.values()) > MAX_CACHED_DISTANCE_BYTES and len(_distances) > 1:
+            _distances.popitem(last=False)
+    return distance
+
+
 def exit_walks(planner: ThetaStarPlanner, exits: dict[str, tuple[float, float]],
                starts: list[tuple[float, float]]) -> tuple[list[str], np.ndarray]:
     """Exit names (sorted) and the (exits, starts) matrix of walking distances in metres from each start.
@@ -365,10 +399,10 @@ def exit_walks(planner: ThetaStarPlanner, exits: dict[str, tuple[float, float]],
         row, col = planner.snap(float(x), float(y), f"({x:.2f}, {y:.2f})", "start")
         start_cells.append(row * width + col)
     flat = np.asarray(start_cells, dtype=np.int64)
+    grid_key = _grid_key(planner)
     for k, name in enumerate(names):
         er, ec = planner.snap(*exits[name], name, "exit")
-        distance, _parent = any_angle_distances(planner.sight_rows, planner.sight_cols, er, ec)
-        walks[k] = distance[flat] * planner.resolution  # cells to metres
+        walks[k] = _exit_distances(planner, grid_key, er, ec)[flat] * planner.resolution  # cells to metres
     if len(starts) and not np.isfinite(walks.min(axis=0)).all():
         stuck = int(np.flatnonzero(~np.isfinite(walks.min(axis=0)))[0])
         raise PlanningError(f"start ({starts[stuck][0]:.2f}, {starts[stuck][1]:.2f}) reaches none of the exits "
