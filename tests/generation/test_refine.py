@@ -174,3 +174,16 @@ def test_a_tree_read_back_from_its_xml(base):
     tree = draft_from_document(read_tree((base / "trees/agent_1.xml").read_text(), "agent_1"))
     assert [n.node for n in tree.walk()] == ["Sequence", "GoTo", "Queue"]
     assert tree.children[1].ports["service_point"] == "pharmacy"
+
+
+def test_counts_edited_on_a_saved_bundle_are_a_refinement(base, tmp_path):
+    from grove_tui.services.session import GroveSession
+
+    with GroveSession() as session:  # no model loads: a count edit calls none
+        opened_bundle = session.open_bundle(base)
+        edited = session.replan(opened_bundle, {0: 12}, tmp_path / "edited")
+        assert session.loaded_models() == []
+    report = load_report(edited.bundle_dir)
+    assert report["history"][0]["sentence"] == "counts: patient 12"
+    assert [g["count"] for g in report["groups"]] == [12, 2, 1]
+    assert report["groups"][1:] == records(base)[1:]
