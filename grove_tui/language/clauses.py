@@ -23,6 +23,8 @@ from grove_tui.language.reactions import robot_interaction, robot_positions
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
+# Prepositions of the place where a purpose is done ("to catch the train at platform 1").
+_PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
 # Words that keep a word inside a place phrase available as a verb ("wait in the waiting room").
 _VERBS_INSIDE_NAMES = ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang")
 
@@ -175,10 +177,18 @@ class Clauses:
         return False
 
     def _purpose(self, scan: _Scan, first: int, said_from: int, verb_at: int) -> bool:
-        """"to register", "in order to catch the bus": a purpose, not a place."""
+        """"to register", "in order to catch the bus": a purpose, not a place. A place right after it
+        is where the purpose is done ("to catch the train at platform 1"): where they go, not where
+        they start."""
         s = self.s
         end = s.phrase_end(verb_at, allow_objects=True)
         scan.c.purpose = scan.c.purpose or s.span(said_from, max(end - 1, said_from + 1))
+        prep = s.preposition(end) if end < s.n else None
+        if prep is not None and prep[0] in _PURPOSE_PLACE_PREPOSITIONS:
+            place = self.places.phrase(end + prep[1], "purpose", end)
+            if place is not None:
+                scan.c.places.append(place)
+                end = place.end
         self._take(scan, first, end)
         return True
 
@@ -265,7 +275,7 @@ class Clauses:
             c.places.append(replace(subject, prep="obj:start"))
             c.evacuate = True
             scan.used.update(range(own[0], subject.end))
-        elif verb_lemma(after) in ("be", "stay", "remain", "get") or after in (":", "of"):
+        elif verb_lemma(after) in ("be", "stay", "remain", "get", "have") or after in (":", "of"):
             passive = subject.end + 1 < s.n and s.w[subject.end + 1].tag == "VBN"
             verb = verb_lemma(s.low[subject.end + 1]) if passive else ""
             if verb in lx.START_OBJECT_VERBS:

@@ -109,6 +109,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
     num = number_at(s, k)
     if num is not None:
         return _number_quantifier(s, num, approx)
+    if low[k] == "both" and k + 1 < s.n and not s.is_punct(k + 1):
+        return Quantifier(2, "exact", k + 1)  # "both guards", "both of them"
     if low[k] in ("a", "an") and k + 1 < s.n:
         nxt = low[k + 1]
         if nxt == "couple" and tuple(low[k + 2:k + 4]) == ("of", "dozen"):

@@ -8,7 +8,7 @@ from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import Quantifier, count_of, quantifier
-from grove_tui.language.mentions import Mention
+from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.sentence import Sentence
 
@@ -74,6 +74,9 @@ def count_confidence(s: Sentence, m: Mention, count: Count) -> list[FieldConfide
     """How sure a count is: said outright (not listed), approximate, a vague word's range, a
     collective's usual size, a share of a zone's floor, or no number at all (a guess)."""
     said = f"'{m.who}'"
+    if count.kind == "structured" and count.low != count.high:
+        return [FieldConfidence("count", 0.7, f"{said}: how many parties or how many in each is not said: "
+                                              f"{count.value} chosen in {count.low}-{count.high}")]
     if count.kind in ("exact", "structured", "exclusive"):
         return []
     if count.kind == "approximate":

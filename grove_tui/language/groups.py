@@ -16,7 +16,8 @@ from dataclasses import dataclass, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.group_counts import count_confidence, settle_count
-from grove_tui.language.mentions import Mention, Mentions
+from grove_tui.language.mention import Mention
+from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import FieldConfidence, GroupReading
 from grove_tui.language.place_phrases import PlacePhrases, place_confidences
 from grove_tui.language.robot import RobotClause, RobotClauses
@@ -52,7 +53,8 @@ class Groups:
         robot_tokens = {i for rc in robot_clauses for i in rc.tokens}
         spans = self._spans(mentions)
         # The robot's own clauses belong to no group: a group's places never come from them.
-        excluded = {i for m in mentions for i in range(m.first, m.last + 1)} | robot_tokens
+        excluded = {i for m in mentions for i in range(m.first, m.last + 1)} | robot_tokens | \
+            {i for m in mentions if m.apposition for i in range(m.apposition[0], m.apposition[1] + 1)}
         scenes = self._scenes(mentions, spans, excluded, robot_tokens)
         clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
                                      owner=m.label) for m, (a, b) in zip(mentions, spans)]

@@ -226,7 +226,13 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 }
 # Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
 # the subject walks the route, the object follows.
-LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show".split())
+# So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
+LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel carry help assist "
+                          "support transport walk".split())
+# "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
+# which is one pair.
+PLURAL_PARTIES_RANGE = (2, 5)
+ONE_SET_PLURALS = frozenset({"twin"})
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
@@ -367,6 +373,10 @@ LOCATION_PREPOSITIONS = frozenset({"at", "in", "on", "near", "by", "beside", "wi
 VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down", "throughout"})
 PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
 
+# Adverbs of place after a person noun ("the guests inside", "the pupils downstairs"): no place
+# phrase, no noun the person word would name.
+LOCATION_ADVERBS = frozenset("inside outside indoors outdoors downstairs upstairs nearby here there below above "
+                             "outdoor indoor".split())
 DETERMINERS = frozenset("the a an their our its his her my your this that these those some each every any".split())
 # Parts of a place, said with "of" before it ("the corner of the lobby"): the place itself.
 PLACE_PARTS = frozenset("corner end middle centre center side edge floor back front rear far part area half "

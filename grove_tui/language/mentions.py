@@ -8,43 +8,22 @@ collective ("a family" 3-4), structured ("two families of three"), whole-zone ("
 cafeteria", settled once places are known) or exclusive ("nobody ... except one guard").
 Relations: "one of them" is part of the group before (subset_of), "the others" are other people
 than that group (others_of; after a subset, the rest of its parent), "a few more" adds to it
-(more_of).
+(more_of). Counted phrases and collectives are read in collectives.py.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-
 from grove_tui.language import lexicon as lx
+from grove_tui.language.collectives import Collectives
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
+from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
-from grove_tui.language.place_phrases import Place, PlacePhrases
+from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
-
-
-@dataclass
-class Mention:
-    """A person phrase that starts a group."""
-
-    first: int  # word span of the person phrase
-    last: int
-    who: str
-    label: str
-    count: Count | None  # None for whole-zone and rest-of-parent counts, settled once places are known
-    relation: str | None = None
-    together: bool = False
-    whole_zone: bool = False
-    exclusive: bool = False
-    rest_of_parent: bool = False
-    collective: str | None = None  # the collective noun of "a queue of eight people", "a family"
-    exception_of: int | None = None  # "everyone ... except two guards": the mention they are excepted from
-    fraction: float = 1.0  # "half the office": the share of the zone's people
-    zone_place: Place | None = None  # the zone named inside the mention ("half the open office")
-    escorted_by: int | None = None  # "an orderly wheels a patient": the mention of who takes them along
 
 
 class Mentions:
@@ -54,6 +33,7 @@ class Mentions:
         self.s = s
         self.people = people
         self.places = places
+        self.collectives = Collectives(s, people)
 
     def find(self) -> list[Mention]:
         s = self.s
@@ -67,12 +47,37 @@ class Mentions:
             if m is None:
                 i += 1
                 continue
+            if found and self._apposition(found[-1], m, len(found) - 1):
+                # "All the diners in the canteen, some thirty of them, leave": how many the group before is
+                count = m.count
+                assert count is not None
+                found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
+                i = m.last + 1
+                continue
             if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
             found.append(m)
             i = m.last + 1
         return found
+
+    def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
+        """Whether m only says how many the mention before is, set off by commas, with no verb
+        between them: "everyone in the auditorium, roughly sixty people, evacuates", "the commuters
+        on platform 1, some forty of them, walk"."""
+        s = self.s
+        if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or \
+                m.count.kind not in ("exact", "approximate") or m.last + 1 >= s.n:
+            return False
+        if m.relation not in (None, f"subset_of:{index}") or m.label not in ("person", before.label):
+            return False
+        if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
+            return False  # "Ten nurses, two of them students, ...": part of a group said in full
+        between = range(before.last + 1, m.first - 1)
+        if any(s.w[x].pos in ("VERB", "AUX") or s.low[x] in (",", ";", ":") for x in between):
+            return False
+        after = m.last + 1
+        return s.low[after] == "," or s.w[after].pos in ("VERB", "AUX") or self.people.third_person_verb(after)
 
     # ---- where a group can start -------------------------------------------------------------
 
@@ -109,9 +114,22 @@ class Mentions:
             return True
         if prev == "by" and s.w[p].dep == "agent":
             return True  # "the balcony is used by a smoker": the passive's doer
+        if verb_lemma(prev) == "have" and self._place_before(p):
+            return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
             return True  # "the boardroom meeting of twelve people breaks up"
         return self._parser_subject(at)
+
+    def _place_before(self, p: int) -> bool:
+        """Whether the words of p's clause before it name a place and no person ("the café has")."""
+        s = self.s
+        k = p - 1
+        words: list[int] = []
+        while k >= 0 and not s.is_punct(k) and s.low[k] not in lx.CLAUSE_STARTERS and s.w[k].sentence == s.w[p].sentence:
+            words.append(k)
+            k -= 1
+        return bool(words) and not any(self.people.is_person_noun(x) for x in words) and \
+            any(s.index.knows(s.lemma(x)) for x in words)
 
     def _parser_subject(self, at: int) -> bool:
         """Whether the phrase at `at` is the subject the parser found ("At six the staff head out"):
@@ -149,13 +167,17 @@ class Mentions:
         return self.subject_position(k) if s.low[k - 1:k] != ["of"] else False
 
     def led_by(self, at: int) -> bool:
-        """Whether the phrase at `at` is the counted object of a verb of leading right after a person
-        ("a tour guide leads twelve tourists", "two nurses escort five patients")."""
+        """Whether the phrase at `at` names people a person right before takes along: the object of a
+        verb of leading, escorting, pushing or helping ("a tour guide leads twelve tourists", "an
+        orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
-        number = number_at(s, at)
-        return p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS and self.people.is_person_noun(p - 1) and \
-            number is not None and number[0] > 1
+        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not self.people.is_person_noun(p - 1):
+            return False
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        start = s.skip(start, {"of", "the"})
+        return self.people.person_head(start, counted=q is not None) is not None
 
     def _conversation_partner(self, p: int, at: int) -> bool:
         """Whether the phrase at `at`, after "with" at p, is who a person talks or walks with, not a
@@ -346,7 +368,7 @@ class Mentions:
         parent = self.parent(found, plain=True)
         relation = f"more_of:{parent}" if parent is not None else None
         if head is not None and s.lemma(head) in lx.IMPLIED_RANGES:
-            collective = self._collective(head, None, at)  # "another group": a group's size, not one
+            collective = self.collectives.collective(head, None, at)  # "another group": a group's size, not one
             if collective is not None:
                 collective.relation = relation
                 return collective
@@ -378,7 +400,7 @@ class Mentions:
                                                                       else "person")
             return Mention(at, last, s.span(at, last), label, count_of(s, num, f"{at}:others", lx.OTHERS_RANGE),
                            relation=f"others_of:{parent}" if parent is not None else None)
-        return self._counted(at, num, found, exclusive)
+        return self.collectives.counted(at, num, found, exclusive)
 
     def _bare(self, at: int, found: list[Mention], exclusive: bool) -> Mention | None:
         """Phrases with no count: "visitors", "the nurses", "a nurse", "other visitors", "people"."""
@@ -395,7 +417,7 @@ class Mentions:
         if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
             return None  # "... one person; the person wanders around": the same people again
         noun = s.lemma(head)
-        collective = self._collective(head)
+        collective = self.collectives.collective(head)
         if collective is not None:
             return collective
         if det in ("a", "an") or (singular and det == "the"):
@@ -427,102 +449,3 @@ class Mentions:
         q = quantifier(s, head + 2)
         start = q.end if q is not None else s.skip(head + 2, lx.DETERMINERS)
         return start < s.n and self.people.person_head(start, counted=q is not None) is not None
-
-    # ---- counted phrases and collectives -------------------------------------------------------
-
-    def _counted(self, at: int, q: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
-        """A phrase that starts with a count: "ten patients", "about 20 people", "two families of three"."""
-        s = self.s
-        after = q.end
-        if after < s.n and s.low[after] == "of":
-            after = s.skip(after + 1, {"the", "their", "our"})
-        head = self.people.person_head(after, counted=True)
-        if head is None:
-            # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
-            if (found and q.value > 0 and after < s.n and (s.low[after] in lx.PLACE_PREPOSITIONS
-                                                           or verb_lemma(s.low[after]) in lx.INTENT_VERBS)
-                    and at > 0 and s.low[at - 1] not in ("at", "until", "till", "after", "before", "since")):
-                return Mention(at, after - 1, s.span(at, after - 1), found[-1].label, count_of(s, q, f"{at}:ellipsis"))
-            return None
-        collective = self._collective(head, q, at)
-        if collective is not None:
-            return collective
-        count = count_of(s, q, f"{at}:count")
-        if exclusive:
-            count = replace(count, kind="exclusive")
-        return Mention(at, head, s.span(at, head), self.people.label(head), count, exclusive=exclusive)
-
-    def _collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
-        """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
-        s = self.s
-        noun = s.lemma(head)
-        if noun not in lx.IMPLIED_RANGES or self.people.multiword_end(head):
-            return None  # "the au pair" is no pair
-        low = s.low
-        at = first if first is not None else head
-        while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
-                                            or (s.w[at - 1].pos == "ADJ" and at > 1 and s.w[at - 2].pos == "DET")):
-            at -= 1  # "a long queue of ...": the adjective is the collective's
-        parties, exact_parties = 1, True
-        if number is not None:
-            if number.kind in ("exact", "approximate") and number.value > 1:
-                parties = number.value
-            elif number.kind.startswith("vague") or number.kind == "range":
-                parties, exact_parties = count_of(s, number, f"{head}:parties").value, False
-        together = noun in lx.TOGETHER_COLLECTIVES
-        last, size, label = head, None, noun
-        if head + 2 < s.n and low[head + 1] == "of":
-            loose = quantifier(s, head + 2)
-            if loose is not None and loose.kind in ("approximate", "range") and parties == 1 and exact_parties:
-                return self._loosely_counted(noun, at, head, loose, together)
-            inner = number_at(s, head + 2)
-            if inner is not None:
-                size = inner[0]
-                last = inner[1] - 1
-                member = self.people.person_head(inner[1], counted=True)
-                if member is not None and member <= inner[1] + 2:
-                    last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
-                        label = self.people.label(member)
-            else:
-                member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
-                if member is not None:
-                    last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
-                                "couple", "pair", "handful"):
-                        label = self.people.label(member)
-        mention = Mention(at, last, s.span(at, last), label,
-                          self._collective_count(noun, label, size, parties, exact_parties, together, head),
-                          together=together, collective=noun)
-        return mention
-
-    def _loosely_counted(self, noun: str, at: int, head: int, loose: Quantifier, together: bool) -> Mention:
-        """"a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside the
-        collective, counted loosely."""
-        s = self.s
-        member = self.people.person_head(loose.end, counted=True)
-        last = member if member is not None and member <= loose.end + 2 else loose.end - 1
-        label = noun
-        if member is not None and (noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES or
-                                   noun in ("group", "crowd", "bunch", "party", "team", "queue", "line")):
-            label = self.people.label(member)
-        return Mention(at, last, s.span(at, last), label, count_of(s, loose, f"{head}:inside"), together=together,
-                       collective=noun)
-
-    def _collective_count(self, noun: str, label: str, size: int | None, parties: int, exact_parties: bool,
-                          together: bool, head: int) -> Count:
-        s = self.s
-        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
-            # "a crowd of visitors": the collective only says how many, vaguely
-            low_, high_ = lx.IMPLIED_RANGES[noun]
-            return Count("vague", s.choose(low_, high_, f"{head}:{noun}"), low_, high_)
-        if size is None:
-            low_, high_ = lx.IMPLIED_RANGES[noun]
-            party = s.choose(low_, high_, f"{head}:{noun}")
-            if parties == 1:
-                return Count("implied", party, low_, high_, *((1, party) if together else (None, None)))
-            return Count("structured", parties * party, parties * low_, parties * high_, parties, party)
-        if parties == 1 and exact_parties:
-            return Count("exact", size, size, size, 1, size)
-        value = parties * size
-        return Count("structured", value, value, value, parties, size)

@@ -127,8 +127,8 @@ class People:
                     # cooks in the kitchen" the second word is the verb
                     k += 1
                 return k
-            if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ":
-                k += 1
+            if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
+                k += 1  # "tired old patients", "two lost children", "waiting visitors"
                 continue
             if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and self.is_person_noun(k + 1):
                 k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
@@ -172,6 +172,8 @@ class People:
         nxt, word = s.w[k + 1], s.low[k + 1]
         if word in ("'s", "’s", "'") or nxt.tag == "POS":
             return True  # "the manager's office"
+        if word in lx.LOCATION_ADVERBS:
+            return False  # "the pupils downstairs", "the guests inside": where they are, no noun
         if k > 0 and s.w[k - 1].pos == "NUM" and s.lemma(k) != s.low[k] and \
                 not s.index.knows(s.lemma(k + 1)) and k + 2 < s.n and \
                 s.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):
@@ -198,7 +200,8 @@ class People:
                 s.index.knows(s.lemma(i)) or self.is_person_noun(i):
             return False
         after = s.w[i + 1] if i + 1 < s.n else None
-        return after is None or after.pos in ("DET", "ADP", "ADV", "PUNCT") or s.low[i + 1] in lx.DETERMINERS
+        return after is None or after.pos in ("DET", "ADP", "ADV", "PUNCT") or s.low[i + 1] in lx.DETERMINERS or (
+            after.pos in ("NOUN", "PRON", "ADJ", "NUM") and s.verbless(i))  # "a visitor sips coffee"
 
     def verb_after(self, k: int) -> bool:
         """Whether the word after k is a verb (so the word at k is the subject of a clause)."""
@@ -207,8 +210,10 @@ class People:
             return False
         nxt = s.low[k + 1]
         # the small model tags "cooks" in "Mum cooks in the kitchen" as a plural noun, but as the root
+        known_verb = verb_lemma(nxt) in lx.INTENT_VERBS or verb_lemma(nxt) in lx.HUMAN_SUBJECT_VERBS
         return (s.w[k + 1].tag in ("VBZ", "VBP", "VBD") or s.w[k + 1].dep == "ROOT" or self.third_person_verb(k + 1)
-                or (verb_lemma(nxt) in lx.INTENT_VERBS and nxt != verb_lemma(nxt)) or nxt in ("is", "are", "was", "were"))
+                or (known_verb and (nxt != verb_lemma(nxt) or s.verbless(k)))  # "Mum and Dad nap"
+                or nxt in ("is", "are", "was", "were"))
 
     def label(self, head: int | None) -> str:
         """The short label of the people a phrase names ("nurse", "au pair"); "person" for words that

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.counts import quantifier
-from grove_tui.language.mentions import Mention
+from grove_tui.language.mention import Mention
 from grove_tui.language.model import FieldConfidence, RobotReading
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
@@ -250,7 +250,7 @@ class RobotClauses:
             return "start"
         if stationary:
             return "location"
-        if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for"):
+        if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for", "purpose"):
             return "destination"
         if prep in lx.VIA_PREPOSITIONS or prep in ("obj:via", "obj:at"):
             return "via"

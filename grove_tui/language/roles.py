@@ -65,7 +65,7 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return "destination" if is_door else "start"
     if prep in ("from", "obj:start"):
         return "start"
-    if prep == "for":
+    if prep in ("for", "purpose"):  # "head for the exit"; "to catch the train at platform 1"
         return "location" if stationary else "destination"
     if prep in ("to", "into", "towards", "toward", "onto", "obj:dest"):
         return "destination"
@@ -75,6 +75,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return _through(index, p, verb, stationary, intent, is_door)
     if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS or intent == "evacuate"):
         return "destination"
+    if prep == "by" and is_door and verb in lx.ARRIVAL_VERBS and _is_exit(index, p):
+        return "start"  # "arrive by the side entrance": in from outside
     if prep == "obj:at":
         return "location" if stationary else "via"
     # at / in / on / near / around ...
@@ -96,3 +98,8 @@ def _through(index: PlaceIndex, p: Place, verb: str, stationary: bool, intent: s
     if is_door and verb in lx.ARRIVAL_VERBS:
         return "start"
     return "via"
+
+
+def _is_exit(index: PlaceIndex, p: Place) -> bool:
+    entry = index.entry(p.match.name) if p.match is not None else None
+    return entry is not None and entry.exit

@@ -77,6 +77,12 @@ class Sentence:
     def sentence_of(self, i: int) -> int:
         return self.w[i].sentence
 
+    def verbless(self, i: int) -> bool:
+        """Whether the parser found no verb in word i's sentence: the small model tags some verbs as
+        nouns when nothing else in the sentence is one ("a visitor sips coffee", "Mum and Dad nap")."""
+        sentence = self.w[i].sentence
+        return not any(w.pos in ("VERB", "AUX") for w in self.w if w.sentence == sentence)
+
     def after_determiner(self, i: int) -> bool:
         return i > 0 and self.low[i - 1] in ("the", "a", "an", "their", "its", "his", "her", "our", "my", "this", "that")
 
@@ -113,9 +119,13 @@ class Sentence:
     # ---- phrases -----------------------------------------------------------------------------
 
     def preposition(self, i: int) -> tuple[str, int] | None:
-        """(role preposition, width) for a place preposition at i, multi-word ones included."""
+        """(role preposition, width) for a place preposition at i, multi-word ones included; none
+        before a verb ("the people inside leave": an adverb there)."""
         low = self.low
         w = low[i]
+        if i + 1 < self.n and (self.w[i + 1].pos in ("VERB", "AUX") or verb_lemma(low[i + 1]) in lx.INTENT_VERBS) \
+                and not self.index.knows(lemma(low[i + 1])) and low[i + 1] not in lx.DETERMINERS:
+            return None
         two = tuple(low[i:i + 2])
         three = tuple(low[i:i + 3])
         if three in (("in", "front", "of"),):

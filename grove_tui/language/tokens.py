@@ -14,8 +14,9 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from grove_tui.language.lexicon import (EVACUATION_PHRASES, INTENT_VERBS, NUMBER_WORDS, PERSON_NOUNS, ROBOT_PHRASES,
-                                        ROBOT_VERBS, STOPWORDS, UNITS, URGENT_EXIT_PHRASES, ZONE_EMPTYING_VERBS)
+from grove_tui.language.lexicon import (EVACUATION_PHRASES, HUMAN_SUBJECT_VERBS, INTENT_VERBS, LEADING_VERBS,
+                                        NUMBER_WORDS, PERSON_NOUNS, ROBOT_PHRASES, ROBOT_VERBS, STOPWORDS, UNITS,
+                                        URGENT_EXIT_PHRASES, ZONE_EMPTYING_VERBS)
 
 _IRREGULAR_NOUNS = {
     "people": "person", "persons": "person", "children": "child", "men": "man", "women": "woman",
@@ -35,7 +36,8 @@ _KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
 _KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
     "look keep stay step back shy steer move get stand line form hang catch have sit mill take lead see "
     "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help tag "
-    "clean guard patrol deliver carry push wheel bring drive fill sign book".split()) | ZONE_EMPTYING_VERBS | frozenset(
+    "clean guard patrol deliver carry push wheel bring drive fill sign book".split()) | ZONE_EMPTYING_VERBS | \
+    LEADING_VERBS | HUMAN_SUBJECT_VERBS | frozenset(
     # the verbs that open the lexicon's multi-word phrases ("shrink back", "empty out", "get out")
     phrase[0] for phrase in (*ROBOT_PHRASES, *EVACUATION_PHRASES, *URGENT_EXIT_PHRASES) if phrase[0].isalpha()
     and phrase[0] not in ("in", "at", "the", "a"))

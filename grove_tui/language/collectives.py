@@ -1,0 +1,130 @@
+"""Pass 2, part 3: counted phrases and the collectives people are counted in ("ten patients", "a
+family", "two families of three", "a queue of about thirty passengers", "groups of three or four",
+"pairs of tourists", "a crowd of visitors"), with the count each gives (ranges in language/lexicon.py)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
+from grove_tui.language.mention import Mention
+from grove_tui.language.model import Count
+from grove_tui.language.people import People
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+
+class Collectives:
+    def __init__(self, s: Sentence, people: People) -> None:
+        self.s = s
+        self.people = people
+
+    def counted(self, at: int, q: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
+        """A phrase that starts with a count: "ten patients", "about 20 people", "two families of three"."""
+        s = self.s
+        after = q.end
+        if after < s.n and s.low[after] == "of":
+            after = s.skip(after + 1, {"the", "their", "our"})
+        head = self.people.person_head(after, counted=True)
+        if head is None:
+            # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
+            if (found and q.value > 0 and after < s.n and (s.low[after] in lx.PLACE_PREPOSITIONS
+                                                           or verb_lemma(s.low[after]) in lx.INTENT_VERBS)
+                    and at > 0 and s.low[at - 1] not in ("at", "until", "till", "after", "before", "since")):
+                return Mention(at, after - 1, s.span(at, after - 1), found[-1].label, count_of(s, q, f"{at}:ellipsis"))
+            return None
+        collective = self.collective(head, q, at)
+        if collective is not None:
+            return collective
+        count = count_of(s, q, f"{at}:count")
+        if exclusive:
+            count = replace(count, kind="exclusive")
+        return Mention(at, head, s.span(at, head), self.people.label(head), count, exclusive=exclusive)
+
+    def collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
+        """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
+        s = self.s
+        noun = s.lemma(head)
+        if noun not in lx.IMPLIED_RANGES or self.people.multiword_end(head):
+            return None  # "the au pair" is no pair
+        low = s.low
+        at = first if first is not None else head
+        while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
+                                            or (s.w[at - 1].pos == "ADJ" and at > 1 and s.w[at - 2].pos == "DET")):
+            at -= 1  # "a long queue of ...": the adjective is the collective's
+        parties, exact_parties = 1, True
+        if number is not None:
+            if number.kind in ("exact", "approximate") and number.value > 1:
+                parties = number.value
+            elif number.kind.startswith("vague") or number.kind == "range":
+                parties, exact_parties = count_of(s, number, f"{head}:parties").value, False
+        elif low[head] != noun and first is None and noun not in lx.ONE_SET_PLURALS:
+            # "groups of three or four", "pairs of tourists": several, however many is not said
+            parties, exact_parties = s.choose(*lx.PLURAL_PARTIES_RANGE, f"{head}:groups"), False
+        together = noun in lx.TOGETHER_COLLECTIVES
+        last, size, label = head, None, noun
+        loose: Quantifier | None = None
+        if head + 2 < s.n and low[head + 1] == "of":
+            loose = quantifier(s, head + 2)
+            if loose is not None and loose.kind in ("approximate", "range") and parties == 1 and exact_parties:
+                return self._loosely_counted(noun, at, head, loose, together)
+            inner = number_at(s, head + 2)
+            if loose is not None and loose.kind == "range" and loose.high is not None:
+                # "groups of two or three": each party a size in the range
+                size, inner = s.choose(loose.value, loose.high, f"{head}:party"), (loose.value, loose.end)
+            if inner is not None:
+                size = size or inner[0]
+                last = inner[1] - 1
+                member = self.people.person_head(inner[1], counted=True)
+                if member is not None and member <= inner[1] + 2:
+                    last = member
+                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
+                        label = self.people.label(member)
+            else:
+                member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
+                if member is not None:
+                    last = member
+                    if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
+                                "couple", "pair", "handful"):
+                        label = self.people.label(member)
+        count = self._collective_count(noun, label, size, parties, exact_parties, together, head)
+        if not exact_parties and count.parties:
+            # the number of parties is a seeded guess: the range runs over every number it could be
+            low_size, high_size = (loose.value, loose.high) if loose is not None and loose.kind == "range" and \
+                loose.high is not None else (count.low // max(1, count.parties), count.high // max(1, count.parties))
+            parties_range = lx.PLURAL_PARTIES_RANGE if number is None else (count_of(s, number, "").low,
+                                                                            count_of(s, number, "").high)
+            count = replace(count, low=parties_range[0] * low_size, high=parties_range[1] * high_size)
+        return Mention(at, last, s.span(at, last), label, count, together=together, collective=noun)
+
+    def _loosely_counted(self, noun: str, at: int, head: int, loose: Quantifier, together: bool) -> Mention:
+        """"a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside the
+        collective, counted loosely."""
+        s = self.s
+        member = self.people.person_head(loose.end, counted=True)
+        last = member if member is not None and member <= loose.end + 2 else loose.end - 1
+        label = noun
+        if member is not None and (noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES or
+                                   noun in ("group", "crowd", "bunch", "party", "team", "queue", "line")):
+            label = self.people.label(member)
+        return Mention(at, last, s.span(at, last), label, count_of(s, loose, f"{head}:inside"), together=together,
+                       collective=noun)
+
+    def _collective_count(self, noun: str, label: str, size: int | None, parties: int, exact_parties: bool,
+                          together: bool, head: int) -> Count:
+        s = self.s
+        if size is None and noun in lx.QUANTIFYING_COLLECTIVES and label != noun:
+            # "a crowd of visitors": the collective only says how many, vaguely
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            return Count("vague", s.choose(low_, high_, f"{head}:{noun}"), low_, high_)
+        if size is None:
+            low_, high_ = lx.IMPLIED_RANGES[noun]
+            party = s.choose(low_, high_, f"{head}:{noun}")
+            if parties == 1:
+                return Count("implied", party, low_, high_, *((1, party) if together else (None, None)))
+            return Count("structured", parties * party, parties * low_, parties * high_, parties, party)
+        if parties == 1 and exact_parties:
+            return Count("exact", size, size, size, 1, size)
+        value = parties * size
+        return Count("structured", value, value, value, parties, size)

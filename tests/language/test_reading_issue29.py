@@ -1,0 +1,117 @@
+"""The phrasing classes issue 29 found read wrongly, each with sentences of its own (none from the
+understanding sets): appositive counts, a second clause's group, people taken along, ranges of
+small groups, a purpose's place, plain sentences with a verb the small parser misses, "both",
+"X has a queue of N", adverbs of place taken for places, arrival through an entrance."""
+
+from __future__ import annotations
+
+import pytest
+
+from grove_tui.language.reading import read_prompt
+from grove_tui.world import load_world
+
+
+@pytest.fixture(scope="module")
+def worlds():
+    return {name: load_world(name) for name in ("hospital", "office", "station", "airport", "residential", "museum")}
+
+
+def read(worlds, world, prompt):
+    reading = read_prompt(prompt, worlds[world])
+    assert reading.unknown_places == (), reading.unknown_places
+    return reading.groups
+
+
+@pytest.mark.parametrize("world,prompt,low,high,start", [
+    ("hospital", "Everyone in the pharmacy, about fifteen people, walks to the main entrance.", 12, 18, "pharmacy"),
+    ("office", "All the staff in the open office, some twenty of them, go to the kitchen.", 16, 24, "open_plan_office"),
+    ("station", "The commuters on platform 1, roughly forty of them, walk to the gateline.", 32, 48, "platform_1"),
+    ("airport", "The travellers at gate B1, eleven people, walk to the café.", 11, 11, "gate_b1"),
+])
+def test_an_appositive_count_is_the_count_of_the_group_before(worlds, world, prompt, low, high, start):
+    groups = read(worlds, world, prompt)
+    assert len(groups) == 1, [g.who for g in groups]
+    g = groups[0]
+    assert (g.count.low, g.count.high) == (low, high) and g.start == start and g.intent == "walk"
+
+
+@pytest.mark.parametrize("world,prompt,second", [
+    ("hospital", "Five visitors go from the lobby to ward B, two others stay at the reception desk.",
+     ("wait", "reception_desk", 2)),
+    ("airport", "Eight travellers walk from check-in to security, three more wait at the info desk.",
+     ("wait", "information_desk", 3)),
+    ("office", "Six engineers go to the boardroom, four others remain in the kitchen.", ("wait", "kitchen", 4)),
+])
+def test_a_second_clause_keeps_its_group(worlds, world, prompt, second):
+    groups = read(worlds, world, prompt)
+    assert len(groups) == 2
+    assert (groups[1].intent, groups[1].location, groups[1].count.value) == second
+
+
+@pytest.mark.parametrize("world,prompt,route", [
+    ("hospital", "A porter pushes a patient in a wheelchair from ward A to radiology.", ("ward_a", "radiology")),
+    ("station", "A nurse helps an old man from the waiting room to platform 2.", ("waiting_room", "platform_2")),
+    ("airport", "A steward guides a blind passenger to gate A2.", (None, "gate_a2")),
+    ("museum", "A guard escorts two lost children from the café to the entrance hall.", ("cafe", "entrance_hall")),
+])
+def test_people_taken_along_are_a_group_that_follows(worlds, world, prompt, route):
+    leader, taken = read(worlds, world, prompt)
+    assert (leader.start, leader.destination) == route and leader.intent == "walk"
+    assert taken.intent == "follow" and taken.follows == leader.who and taken.count.value >= 1
+
+
+@pytest.mark.parametrize("world,prompt,low,high", [
+    ("office", "Small groups of two or three colleagues chat in the kitchen.", 4, 15),
+    ("station", "Groups of four tourists wander the concourse.", 8, 20),
+    ("hospital", "Pairs of nurses walk to the ward corridor.", 4, 10),
+])
+def test_groups_of_n_are_several_parties_of_n(worlds, world, prompt, low, high):
+    g = read(worlds, world, prompt)[0]
+    assert g.count.kind == "structured" and (g.count.low, g.count.high) == (low, high)
+    assert g.count.low <= g.count.value <= g.count.high and g.together
+    assert g.confidence_of("count") is not None
+
+
+@pytest.mark.parametrize("world,prompt,via,destination", [
+    ("hospital", "A visitor hurries along the main corridor to buy coffee at the vending machine.", ("main_corridor",),
+     "vending_machine"),
+    ("office", "An intern runs down the hallway to meet a client in the boardroom.", ("main_corridor",), "boardroom"),
+    ("station", "Two students dash across the concourse to catch their train on platform 2.", ("concourse",),
+     "platform_2"),
+])
+def test_a_purpose_s_place_is_where_they_go(worlds, world, prompt, via, destination):
+    g = read(worlds, world, prompt)[0]
+    assert g.start is None and g.via == via and g.destination == destination and g.purpose
+
+
+@pytest.mark.parametrize("world,prompt,count,location", [
+    ("hospital", "A visitor sips coffee in the cafeteria for ten minutes.", 1, "cafeteria"),
+    ("residential", "Mum and dad nap on the sofa.", 1, "sofa"),
+    ("residential", "Both children are asleep in the kids room.", 2, "child_bedroom"),
+    ("hospital", "Both doctors are chatting in the doctors office.", 2, "doctors_office"),
+    ("station", "The café has a queue of five people.", 5, "cafe"),
+    ("hospital", "Ward C has two visitors.", 2, "ward_c"),
+])
+def test_plain_sentences_give_their_groups(worlds, world, prompt, count, location):
+    groups = read(worlds, world, prompt)
+    assert groups and all(g.location == location for g in groups) and groups[0].count.value == count
+
+
+def test_a_queue_a_place_has_is_a_queue(worlds):
+    g = read(worlds, "hospital", "The cafeteria has a long queue of eight people.")[0]
+    assert (g.intent, g.location, g.count.value) == ("queue", "cafeteria", 8)
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("hospital", "The visitors inside leave by the west exit.", "west_emergency_exit"),
+    ("airport", "The pilots upstairs leave through the side entrance.", "east_entrance"),
+    ("museum", "The pupils downstairs run to the café.", "cafe"),
+])
+def test_an_adverb_of_place_is_neither_a_place_nor_a_noun(worlds, world, prompt, destination):
+    g = read(worlds, world, prompt)[0]
+    assert g.destination == destination and g.count.kind == "vague"
+
+
+def test_arriving_by_an_entrance_is_coming_in_there(worlds):
+    g = read(worlds, "airport", "At dawn twelve cleaners arrive by the side entrance and go to the toilets.")[0]
+    assert (g.start, g.destination) == ("east_entrance", "toilets")
