@@ -174,8 +174,11 @@ def read_followup(sentence: str, world: Any, groups: Sequence[GroupReading], *, 
         edits.extend(found)
         if robot_edit is not None:
             robot = robot_edit
-        ctx.added.extend(e.group for e in found if e.kind == "add" and e.group is not None)
+        first_new = len(ctx.groups) + len(ctx.added)
+        new = [e.group for e in found if e.kind == "add" and e.group is not None]
+        ctx.added.extend(new)
         touched = tuple(t for e in found if e.kind != "add" and e.target is not None for t in e.target.targets)
+        touched += tuple(range(first_new, first_new + len(new)))  # "add a cleaner, then make it walk slowly"
         if touched:
             ctx.last = touched
     if not edits and robot is None and text and not ctx.notes:

@@ -182,3 +182,8 @@ def test_words_that_change_nothing_are_said(scenes):
 def test_other_worlds(scenes, world, sentence, target, field):
     edit = one(follow(scenes, world, sentence))
     assert edit.kind == "change" and edit.target.targets == (target,) and field in edit.fields
+
+
+def test_a_pronoun_after_an_addition_names_the_new_group(scenes):
+    add, change = follow(scenes, "hospital", "add a cleaner in the lobby and make it walk slowly").edits
+    assert add.kind == "add" and change.kind == "change" and change.target.targets == (3,)  # after the three there
