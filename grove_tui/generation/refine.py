@@ -420,7 +420,7 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     history.append(HistoryStep(refinement.step, text, refinement.edit.to_dict(), refinement.diff, seed,
                                stages_seconds, stages).to_dict())
     report["history"] = history
-    report["grounding"] = _grounding(scene, refinement, records, agents, step_notes, world)
+    report["grounding"] = _grounding(scene, refinement, records, agents, post.agents, step_notes, world)
     return GenerationResult(refined, trees, fields, scene.result.grid, report, None)
 
 
@@ -539,6 +539,7 @@ def _everyone(scene: Scene, kept: Sequence[SceneGroup], post: PostProcessed) -> 
 class _Grounded:
     """A group as the grounding report reads it (post-processing's GroupPlan fields it uses)."""
 
+    index: int
     reading_index: int
     label: str
     count: int
@@ -547,21 +548,45 @@ class _Grounded:
     behavior: str
     member_ids: list[int]
     spawn_zones: dict[str, int]
+    added: tuple[str, ...] = ()
+
+
+@dataclass
+class _GroundedAgent:
+    """An agent as the grounding report reads it (post-processing's AgentPlan fields it uses)."""
+
+    id: int
+    group_index: int
+    label: str
+    start: tuple[float, float]
+    targets: list[tuple[str, tuple[float, float]]]
+    zone: str
+    max_vel: float
+    behavior: str
 
 
 def _grounding(scene: Scene, refinement: Refinement, records: Sequence[dict[str, Any]], agents: Sequence[AgentSpec],
-               repairs: Sequence[str], world: Any) -> dict[str, Any]:
-    from grove_tui.generation.scene import node_from_dict
+               new_agents: Sequence[AgentPlan], repairs: Sequence[str], world: Any) -> dict[str, Any]:
+    """The grounding report of the refined scenario: every group against the reading it realises now
+    (its sentence's, or a follow-up's), which sentence asked for it and which changed it."""
+    from grove_tui.generation.scene import node_from_dict, targets_of
 
     sentences = scene.sentences + [refinement.edit.sentence]
     readings = tuple(p.reading for p in refinement.groups)
     combined = PromptReading(" / ".join(sentences), readings)
-    grounded = [_Grounded(i, str(r["label"]), int(r["count"]), str(r.get("spawn", "")),
+    grounded = [_Grounded(i, i, str(r["label"]), int(r["count"]), str(r.get("spawn", "")),
                           node_from_dict(r["tree"]) if r.get("tree") else p.source.tree if p.source else DraftNode("Wait"),
                           str(r.get("behavior", "Regular")), [int(m) for m in r.get("members", ())],
-                          dict(r.get("spawn_zones") or {}))
+                          dict(r.get("spawn_zones") or {}), tuple(str(a) for a in r.get("added", ())))
                 for i, (r, p) in enumerate(zip(records, refinement.groups))]
-    report = grounding_report(combined, grounded, agents, world, repairs)
+    group_of = {m: g.index for g in grounded for m in g.member_ids}
+    placed = {a.id: a for a in new_agents}
+    people = []
+    for a in agents:
+        targets = list(placed[a.id].targets) if a.id in placed else targets_of(scene.document(a))
+        people.append(_GroundedAgent(a.id, group_of.get(a.id, -1), a.label, a.start, targets, a.zone, a.max_vel,
+                                     a.behavior))
+    report = grounding_report(combined, grounded, people, world, repairs)
     asked = {tuple(g.member_ids): p for g, p in zip(grounded, refinement.groups)}
     groups = tuple(replace(g, asked_by=asked[g.members].asked_by, changed_by=asked[g.members].changed_by)
                    if g.members in asked else g for g in report.groups)

@@ -200,7 +200,7 @@ def placed_scene(scene: Scene, kept: Iterable[SceneGroup], changed: Mapping[int,
     starts_by_zone: dict[str, int] = {}
     ends_by_zone: dict[str, int] = {}
     for agent in agents:
-        for name, point in _targets(scene.document(agent)):
+        for name, point in targets_of(scene.document(agent)):
             targets.setdefault(name, []).append(point)
         zone = world.zone_at(*agent.start)
         if zone is not None:
@@ -209,7 +209,7 @@ def placed_scene(scene: Scene, kept: Iterable[SceneGroup], changed: Mapping[int,
             ends_by_zone[agent.zone] = ends_by_zone.get(agent.zone, 0) + 1
     by_id = {a.id: a for a in everyone}
     kept_members = {index: KeptMembers(g.members, tuple(by_id[m].start for m in g.members), g.spawn,
-                                       tuple(tuple(_targets(scene.document(by_id[m]))) for m in g.members),
+                                       tuple(tuple(targets_of(scene.document(by_id[m]))) for m in g.members),
                                        tuple(sorted({by_id[m].group for m in g.members if by_id[m].group >= 0})))
                     for index, g in changed.items()}
     goals = tuple((float(p[0]), float(p[1])) for p in scene.report.get("goals", ()))
@@ -220,7 +220,7 @@ def placed_scene(scene: Scene, kept: Iterable[SceneGroup], changed: Mapping[int,
         starts_by_zone=starts_by_zone, ends_by_zone=ends_by_zone, kept=kept_members)
 
 
-def _targets(document: TreeDocument) -> list[tuple[str, Point]]:
+def targets_of(document: TreeDocument) -> list[tuple[str, Point]]:
     """(RoI name, point) of every node of a tree that sends its agent somewhere, in tick order (the
     nodes post-processing resolves: postprocess.navigation_targets)."""
     out = []

@@ -197,6 +197,8 @@ def edited_reading(old: GroupReading, edit: GroupEdit) -> GroupReading:
         value = edit.count.apply(old.count.value)
         values["count"] = Count("exact", value, value, value)
     if new is not None:
+        if "intent" in fields and new.intent == "walk" and old.intent == "evacuate":
+            fields.discard("intent")  # "the patients leave through the east exit": they still evacuate, there
         if "intent" in fields and new.intent != old.intent:
             values["intent"] = new.intent
             stationary = new.intent in lx.STATIONARY_INTENTS
