@@ -93,6 +93,14 @@ def scene_of(result: GenerationResult, world: Any) -> Scene:
     if not records:
         raise BundleError("this scenario has no group records in generation.json, so its groups cannot be "
                           "edited; regenerate it with this version of GROVE")
+    try:
+        return _scene(result, world, records)
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:  # a record edited by hand into nonsense
+        raise BundleError(f"generation.json \"groups\" cannot be read as the scenario's groups: {exc!r}",
+                          hint="regenerate the scenario, or restore its generation.json") from None
+
+
+def _scene(result: GenerationResult, world: Any, records: list[Any]) -> Scene:
     fallback = _readings_by_position(result.report, records)
     by_id = {a.id: a for a in result.scenario.agents}
     groups = []

@@ -83,3 +83,16 @@ def test_a_name_two_groups_share_exits_2_with_the_choices_and_group_picks(bundle
     assert picked.exit_code == EXIT_OK, picked.stderr
     groups = load_report(tmp_path / "b")["groups"]
     assert [g.get("changed_by", []) for g in groups] == [[], [1]]
+
+
+def test_a_bundle_whose_group_records_are_broken_is_refused_in_one_line(bundles, tmp_path):
+    import shutil
+
+    bundle = tmp_path / "broken"
+    shutil.copytree(bundles["base"], bundle)
+    report = json.loads((bundle / "generation.json").read_text())
+    report["groups"][0]["reading"] = {"who": 1}
+    (bundle / "generation.json").write_text(json.dumps(report))
+    result = invoke(str(bundle), "--prompt", "no robot", "--out", str(tmp_path / "out"))
+    assert result.exit_code == EXIT_BAD_INPUT and "cannot be read as the scenario's groups" in result.stderr
+    assert not (tmp_path / "out").exists()
