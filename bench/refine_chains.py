@@ -31,16 +31,20 @@ def main() -> int:
     parser.add_argument("--out", default=None, help="where the bundles go (default: a temporary folder)")
     parser.add_argument("--results", default=str(ROOT / "eval" / "refine"), help="folder for RESULTS.md/results.csv")
     parser.add_argument("--bt-model", default=None)
+    parser.add_argument("--score", default=None, metavar="DIR",
+                        help="score the bundles an earlier run left in DIR (its --out) again, generating nothing")
     args = parser.parse_args()
 
     from grove_tui.analysis.refine_chains import StepResult, load_chains, read_bundle, score_step, summarize
-    from grove_tui.errors import GroveError
+    from grove_tui.errors import BundleError, GroveError
     from grove_tui.services.session import GroveSession, ScenarioRequest
 
     chains = load_chains(args.file)
     wanted = {c.strip() for c in args.chains.split(",") if c.strip()}
     if wanted:
         chains = [c for c in chains if c.id in wanted]
+    if args.score:
+        args.out = args.score
     out = Path(args.out) if args.out else Path(tempfile.mkdtemp(prefix="grove-chains-"))
     results: list[StepResult] = []
     started = time.perf_counter()
@@ -53,7 +57,10 @@ def main() -> int:
                 target = out / chain.id / f"step{number}"
                 t0 = time.perf_counter()
                 try:
-                    if number == 0:
+                    if args.score:
+                        if not (target / "scenario.yaml").is_file():
+                            raise BundleError(f"{target}: no bundle (the run stopped before this step)")
+                    elif number == 0:
                         generated = session.generate(ScenarioRequest(chain.world, chain.preset, step.say, chain.seed),
                                                      target, overwrite=True)
                     else:

@@ -6,9 +6,10 @@ its bundle alone:
 - every expected group is matched to one group of generation.json's "groups" (in order, the first
   unmatched group that agrees on every field), and no group is left over;
 - label and head count (the group's members in scenario.yaml); what its tree does (the draft-form
-  tree of its record: evacuate when it follows a velocity field, else queue / converse / wander, else
-  walk or wait by whichever of GoTo and Wait comes last) and where (the zone of the place that
-  activity names; "exit" is any exit door; an evacuation's place is every member's exit);
+  tree of its record: queue or converse when it has those nodes; walking to a place and staying there
+  is both walking there and waiting or wandering there; following the evacuation field is evacuating
+  and walking out) and where (the zone of the place that activity names; "exit" is any exit door; an
+  evacuation's place is every member's exit);
   its pace (the members' speed against the preset's) and robot reaction (the members' HuNavSim
   behavior);
 - the robot: none, placed, waiting in a zone, or headed for one.
@@ -120,14 +121,17 @@ class ActualGroup:
     index: int  # position in generation.json's "groups"
     label: str
     count: int
-    does: str
-    at: frozenset[str]  # zones (and exit door names) of where it does it
+    activities: Mapping[str, frozenset[str]]  # what it does -> zones (and exit door names) where; main first
     pace: str
     reaction: str
     members: tuple[int, ...]
 
+    @property
+    def does(self) -> str:
+        return next(iter(self.activities), "idle")
+
     def describe(self) -> str:
-        where = "/".join(sorted(self.at)) or "-"
+        where = "/".join(sorted(self.activities.get(self.does, ()))) or "-"
         return f"{self.label} x{self.count} {self.does} at {where} {self.pace} {self.reaction}"
 
 
@@ -148,41 +152,53 @@ def read_bundle(path: str | Path, world: Any, preset_max_vel: float) -> Bundle:
     for index, record in enumerate(report.get("groups", ())):
         members = tuple(int(m) for m in record.get("members", ()))
         agents = [by_id[m] for m in members if m in by_id]
-        does, at = _activity(record.get("tree") or {}, world)
-        if does == "evacuate":
-            exits = {_exit_of(path, a) for a in agents} - {None}
-            at = frozenset(str(e) for e in exits) | frozenset(_zone(world, str(e)) or str(e) for e in exits)
+        activities = _activities(record.get("tree") or {}, world)
+        if "evacuate" in activities:
+            exits = {str(e) for e in {_exit_of(path, a) for a in agents} - {None}}
+            out = frozenset(exits) | frozenset(_zone(world, e) or e for e in exits)
+            activities = {"evacuate": out, "walk": out | {"exit"}}
         speeds = [a.max_vel / preset_max_vel for a in agents] or [1.0]
         speed = sum(speeds) / len(speeds)
         pace = "slow" if speed < SLOW_BELOW else "fast" if speed > FAST_ABOVE else "normal"
         reactions = {a.behavior for a in agents} or {"Regular"}
-        groups.append(ActualGroup(index, str(record.get("label", "")), len(agents), does, at, pace,
+        groups.append(ActualGroup(index, str(record.get("label", "")), len(agents), activities, pace,
                                   "/".join(sorted(reactions)), members))
     return Bundle(path, scenario, report, groups)
 
 
-def _activity(tree: Mapping[str, Any], world: Any) -> tuple[str, frozenset[str]]:
-    """What a draft-form tree makes its people do, and the zones where."""
+def _activities(tree: Mapping[str, Any], world: Any) -> dict[str, frozenset[str]]:
+    """What a draft-form tree makes its people do, each activity with the zones where; first the main one.
+
+    Queueing and conversing are what a tree with those nodes does, nothing else. Arriving is walking:
+    a tree that walks to a place and then stays there (waits, wanders in that zone) both walks there
+    and waits or wanders there. Following the evacuation field is evacuating, and walking out through
+    the exits it leads to (the members' exits are filled in by `read_bundle`)."""
     nodes = list(_walk(tree))
     names = [n.get("node") for n in nodes]
     if "FollowVelocityField" in names:
-        return "evacuate", frozenset()
-    for node_name, does in (("Queue", "queue"), ("Converse", "converse"), ("ConversationFormation", "converse"),
-                            ("Wander", "wander")):
+        return {"evacuate": frozenset(), "walk": frozenset({"exit"})}
+    for node_name, does in (("Queue", "queue"), ("Converse", "converse"), ("ConversationFormation", "converse")):
         if node_name in names:
-            node = nodes[names.index(node_name)]
-            return does, _zones(world, [_place(node)])
+            return {does: _zones(world, [_place(nodes[names.index(node_name)])])}
     last_go = max((k for k, n in enumerate(names) if n == "GoTo"), default=-1)
+    arrived = _walked_to(_place(nodes[last_go]), world) if last_go >= 0 else frozenset()
+    if "Wander" in names:
+        wander = _zones(world, [_place(nodes[names.index("Wander")])])
+        return {"wander": wander, **({"walk": arrived} if arrived and wander <= arrived else {})}
     last_wait = max((k for k, n in enumerate(names) if n in ("Wait", "StopAndWaitTimerAction")), default=-1)
     if last_wait > last_go:
-        return "wait", _zones(world, [_place(nodes[last_go])] if last_go >= 0 else [])
+        return {"wait": arrived - {"exit"}, **({"walk": arrived} if arrived else {})}
     if last_go >= 0:
-        place = _place(nodes[last_go])
-        exits = {d.name for d in world.exits()}
-        if place is not None and place in exits:
-            return "walk", frozenset({place, "exit"}) | _zones(world, [place])
-        return "walk", _zones(world, [place])
-    return "idle", frozenset()
+        return {"walk": arrived}
+    return {"idle": frozenset()}
+
+
+def _walked_to(place: str | None, world: Any) -> frozenset[str]:
+    """The zone of a place walked to, and "exit" with the door's name when it is an exit door."""
+    zones = _zones(world, [place])
+    if place is not None and place in {d.name for d in world.exits()}:
+        return zones | {place, "exit"}
+    return zones
 
 
 def _walk(node: Mapping[str, Any]) -> list[Mapping[str, Any]]:
@@ -238,17 +254,18 @@ def _matches(expected: ExpectedGroup, actual: ActualGroup, world: Any) -> list[s
         problems.append(f"label {actual.label}")
     if expected.count is not None and expected.count != actual.count:
         problems.append(f"count {actual.count}")
-    if expected.does != actual.does:
+    at = actual.activities.get(expected.does)
+    if at is None:
         problems.append(f"does {actual.does}")
-    if expected.at:
+    elif expected.at:
         if expected.does == "evacuate":  # every member through that exit
-            ok = expected.at in actual.at and actual.at <= {expected.at, _zone(world, expected.at)}
+            ok = expected.at in at and at <= {expected.at, _zone(world, expected.at)}
         elif expected.at == "exit":
-            ok = "exit" in actual.at
+            ok = "exit" in at
         else:
-            ok = (_zone(world, expected.at) or expected.at) in actual.at
+            ok = (_zone(world, expected.at) or expected.at) in at
         if not ok:
-            problems.append(f"at {'/'.join(sorted(actual.at)) or '-'}")
+            problems.append(f"at {'/'.join(sorted(at)) or '-'}")
     if expected.pace != actual.pace:
         problems.append(f"pace {actual.pace}")
     if expected.reaction != actual.reaction:

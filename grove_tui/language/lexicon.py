@@ -201,7 +201,7 @@ for _intent, _verbs in {
             "snooze",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy",
+              "mop sweep vacuum hoover scrub tidy clean",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
