@@ -77,7 +77,8 @@ def build_request(world, preset, prompt, retriever):
     retrieved = (retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
                  if preset.retrieval_filter is not None and preset.retrieval_k > 0 else [])
     return prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
+                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for,
+                           documents_named=retriever.documents_named)
 
 
 def fixed_tokens(llm, messages) -> int:

@@ -7,7 +7,7 @@ Every GROVE_* variable is read in this module and nowhere else:
     GROVE_DATA_DIR         user data directory (models/, runs/, exports/, prompt history, last choices)
     GROVE_CACHE_DIR        user cache directory (retrieval index, compiled kernels)
     GROVE_MODEL            GGUF for both roles; GROVE_ROI_MODEL / GROVE_BT_MODEL for one role
-    GROVE_LLM_THREADS      llama.cpp threads (default: the cores idle when the model starts)
+    GROVE_LLM_THREADS      llama.cpp threads (default: the cores idle at each request)
     GROVE_<SECTION>__<KEY> any key of the file, e.g. GROVE_SIMULATION__FPS=30
 
 The file is YAML with the sections below (`ui`, `generation`, `simulation`, `export`, `keymap`,
@@ -80,6 +80,10 @@ class UISettings(_Section):
     """Animation level; 'none' keeps SSH sessions responsive."""
     preload_models: bool = True
     """Load the GGUF models in the background as soon as the app opens."""
+    ask_when_unsure: bool = True
+    """Before generating, ask about what the reader is unsure of in the sentence (two places that fit
+    alike, a guessed count, an implied group); false generates the reader's best guess straight away
+    (the grounding report still lists the questions)."""
 
 
 class GenerationSettings(_Section):
@@ -134,7 +138,7 @@ class GroveSettings(BaseSettings):
     """Binding id -> comma-separated keys, applied with App.set_keymap."""
     models: ModelFiles = Field(default_factory=ModelFiles)
     llm_threads: int | None = Field(default=None, ge=1)
-    """llama.cpp threads (GROVE_LLM_THREADS); None uses the cores idle when the model starts."""
+    """llama.cpp threads (GROVE_LLM_THREADS); None uses the cores idle at each request (cpu.py)."""
     model: str | None = None
     """GROVE_MODEL: GGUF for both roles."""
     roi_model: str | None = None

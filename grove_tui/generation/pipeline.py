@@ -31,7 +31,7 @@ from grove_tui.generation.draft import Draft, node_to_dict
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
-from grove_tui.generation.reconcile import grounding_report
+from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.quantities import Quantity, extract_quantities
 from grove_tui.language.reading import Count, GroupReading, PromptReading, effective_counts, read_prompt
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
@@ -93,6 +93,7 @@ class PlanInputs:
     selection: Any  # rois.RoISelection
     node_names: tuple[str, ...]
     reading: PromptReading | None = None  # the prompt's groups; when it has any, they are the result's groups
+    sentence: PromptReading | None = None  # the reading before the user's count edits (None: no edit yet)
 
     def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
         if self.reading is not None and self.reading.groups:
@@ -105,7 +106,8 @@ class PlanInputs:
                 value = int(n) + inside  # a parent's count includes its subsets ("one of them")
                 groups[r] = replace(groups[r], count=Count("exact", value, value, value))
             reading = replace(self.reading, groups=tuple(groups))
-            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)))
+            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)),
+                           sentence=self.sentence or self.reading)
         if self.quantities:
             # An edited count is stated by the user now, even where the prompt only implied the group.
             quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
@@ -321,7 +323,7 @@ class GenerationPipeline:
         t0 = clock.begin("rois")
         if reading is None:
             check_stated_counts(prompt, extract_quantities(prompt))  # no words, negative or zero counts: refused
-            reading = read_prompt(prompt, world, seed=seed)
+            reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
         roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
@@ -338,7 +340,8 @@ class GenerationPipeline:
         else:
             retrieved = []
         request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
-                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None))
+                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None),
+                                  documents_named=getattr(self.retriever, "documents_named", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")
@@ -429,7 +432,7 @@ class GenerationPipeline:
 
         t0 = clock.begin("planning")
         plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
-                                cache=self.plan_cache, cancel=cancel)
+                                cache=self.plan_cache, cancel=cancel, reading=inputs.reading)
         for rel, xml in plan.trees.items():
             try:
                 parse_tree_text(xml, rel)
@@ -453,6 +456,8 @@ class GenerationPipeline:
         report["notes"] = post.notes + plan.notes
         if inputs.reading is not None:
             report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
-                                                   post.notes).to_dict()
+                                                   post.notes + plan.notes, robot=plan.robot,
+                                                   sentence=inputs.sentence or inputs.reading,
+                                                   walking_speed=self.preset.max_vel).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

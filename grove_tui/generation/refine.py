@@ -10,7 +10,7 @@ How an edit is applied:
 - Untouched groups keep everything: their agents' entries in scenario.yaml, their tree files, their
   velocity fields and their generation.json records are copied as they are, byte for byte.
 - Added groups, and changed groups whose behavior or places change, are generated: the model is asked
-  for those groups alone (their reading is the request's "Groups to write"), then reconciled.
+  for those groups alone (their reading is the request's numbered "Groups"), then reconciled.
 - Changed groups whose count, pace, start, togetherness, wait or robot reaction change keep their tree
   (no model call): reconciliation sets what changed.
 - Every new or changed group is post-processed beside the kept ones (ids, social groups, goal ids and
@@ -37,8 +37,7 @@ from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations
 from grove_tui.generation.pipeline import (Event, GenerationPipeline, GenerationResult, StageClock, group_records,
                                            world_reference)
-from grove_tui.generation.planning import (CachedPlanner, RobotRequest, plan_operational, plan_robot,
-                                           resolve_robot_point)
+from grove_tui.generation.planning import CachedPlanner, RobotRequest, plan_operational, plan_robot
 from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed, place_groups, plan_groups
 from grove_tui.generation.reconcile import grounding_report
 from grove_tui.generation.rois import select_rois
@@ -51,6 +50,7 @@ from grove_tui.navigation.theta_star import PlanningError
 from grove_tui.scenario.history import (ADDED, CHANGED, REMOVED, GroupChange, GroupSummary, HistoryStep, RefineDiff,
                                         RobotChange)
 from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
+from grove_tui.scenario.report import GroundingReport
 
 # Fields whose change the group's tree cannot absorb: the model writes it again.
 REGENERATING_FIELDS = ("intent", "destination", "location", "via")
@@ -420,7 +420,8 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     history.append(HistoryStep(refinement.step, text, refinement.edit.to_dict(), refinement.diff, seed,
                                stages_seconds, stages).to_dict())
     report["history"] = history
-    report["grounding"] = _grounding(scene, refinement, records, agents, post.agents, step_notes, world)
+    report["grounding"] = _grounding(scene, refinement, records, agents, post.agents, step_notes, world, robot,
+                                     preset.max_vel)
     return GenerationResult(refined, trees, fields, scene.result.grid, report, None)
 
 
@@ -469,7 +470,10 @@ def _robot(pipeline: GenerationPipeline, scene: Scene, refinement: Refinement, p
         return None
     world, grid = pipeline.world, pipeline.grid
     everyone = _everyone(scene, kept, post)
+    reading: PromptReading | None = None
     if plan.kind == "keep" and current is not None:
+        if current.task != "cross":
+            return current  # it waits, patrols or follows where it did: nothing of its path to move
         formations = predict_formations(world, grid, [a.document for a in post.agents if a.document is not None],
                                         post.goals)
         clearance = current.radius + PASSING_MARGIN
@@ -481,42 +485,22 @@ def _robot(pipeline: GenerationPipeline, scene: Scene, refinement: Refinement, p
         request = RobotRequest()
     else:
         task = plan.task
-        if task.task == "wait":
-            where = task.location or task.start
-            point = resolve_robot_point(world, grid, where, "place") if where else (current.start if current else None)
-            if point is None:
-                request = RobotRequest()
-            else:
-                return RobotSpec(start=point, goal=point, path=(point,))
-        elif task.task == "patrol" and task.location:
-            first = resolve_robot_point(world, grid, task.location, "place")
-            request = RobotRequest(first, _far_point(pipeline, task.location, first))
-        elif task.task == "follow":
-            notes.append("a robot that follows someone is not planned yet: the robot keeps its path")
-            return current
-        else:
-            start: Any = task.start or (task.via[0] if task.via else None) or (current.start if current else None)
-            goal: Any = task.destination or (current.goal if current is not None else None)
-            request = RobotRequest(start, goal)
+        if task.task == "wait" and not (task.location or task.destination or task.start) and current is not None:
+            return RobotSpec(start=current.start, goal=current.start, path=(current.start,), task="wait")
+        # The follow-up's robot clause, planned as a sentence's is; a crossing that names only one end
+        # keeps the other where the robot had it.
+        request = RobotRequest()
+        if task.task == "cross" and current is not None:
+            if task.destination and not (task.start or task.via):
+                request = RobotRequest(start=current.start)
+            elif (task.start or task.via) and not task.destination:
+                request = RobotRequest(goal=current.goal)
+        reading = PromptReading(refinement.edit.sentence, (), robot=task)
     try:
         return plan_robot(world, grid, CachedPlanner(world.name, pipeline.planner, pipeline.plan_cache), everyone,
-                          request, seed, notes)
+                          request, seed, notes, reading=reading)
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot be planned as asked: {exc}") from None
-
-
-def _far_point(pipeline: GenerationPipeline, zone_name: str, start: tuple[float, float]) -> tuple[float, float]:
-    """The free point of a zone farthest from `start`: the other end of a patrol."""
-    from grove_tui.generation.postprocess import FreeSpace
-
-    place = pipeline.world.find(zone_name)
-    zone = place.zone if isinstance(getattr(place, "zone", None), str) else place.name  # a door or thing: its zone
-    cells = FreeSpace(pipeline.world, pipeline.grid).cells(zone)
-    if len(cells) == 0:
-        return start
-    d = (cells[:, 0] - start[0]) ** 2 + (cells[:, 1] - start[1]) ** 2
-    best = cells[int(d.argmax())]
-    return (round(float(best[0]), 3), round(float(best[1]), 3))
 
 
 def _everyone(scene: Scene, kept: Sequence[SceneGroup], post: PostProcessed) -> PostProcessed:
@@ -566,14 +550,16 @@ class _GroundedAgent:
 
 
 def _grounding(scene: Scene, refinement: Refinement, records: Sequence[dict[str, Any]], agents: Sequence[AgentSpec],
-               new_agents: Sequence[AgentPlan], repairs: Sequence[str], world: Any) -> dict[str, Any]:
+               new_agents: Sequence[AgentPlan], repairs: Sequence[str], world: Any, robot: RobotSpec | None,
+               walking_speed: float) -> dict[str, Any]:
     """The grounding report of the refined scenario: every group against the reading it realises now
     (its sentence's, or a follow-up's), which sentence asked for it and which changed it."""
     from grove_tui.generation.scene import node_from_dict, targets_of
 
     sentences = scene.sentences + [refinement.edit.sentence]
     readings = tuple(p.reading for p in refinement.groups)
-    combined = PromptReading(" / ".join(sentences), readings)
+    asked_robot = refinement.robot.task if refinement.robot.kind == "task" else None
+    combined = PromptReading(" / ".join(sentences), readings, robot=asked_robot)
     grounded = [_Grounded(i, i, str(r["label"]), int(r["count"]), str(r.get("spawn", "")),
                           node_from_dict(r["tree"]) if r.get("tree") else p.source.tree if p.source else DraftNode("Wait"),
                           str(r.get("behavior", "Regular")), [int(m) for m in r.get("members", ())],
@@ -586,8 +572,13 @@ def _grounding(scene: Scene, refinement: Refinement, records: Sequence[dict[str,
         targets = list(placed[a.id].targets) if a.id in placed else targets_of(scene.document(a))
         people.append(_GroundedAgent(a.id, group_of.get(a.id, -1), a.label, a.start, targets, a.zone, a.max_vel,
                                      a.behavior))
-    report = grounding_report(combined, grounded, people, world, repairs)
+    report = grounding_report(combined, grounded, people, world, repairs, robot=robot, walking_speed=walking_speed)
     asked = {tuple(g.member_ids): p for g, p in zip(grounded, refinement.groups)}
     groups = tuple(replace(g, asked_by=asked[g.members].asked_by, changed_by=asked[g.members].changed_by)
                    if g.members in asked else g for g in report.groups)
-    return replace(report, groups=groups, sentences=tuple(sentences)).to_dict()
+    robot_row = report.robot
+    if refinement.robot.kind == "keep" and robot is not None:
+        before = scene.report.get("grounding")
+        robot_row = GroundingReport.from_dict(before).robot if isinstance(before, dict) else robot_row
+    return replace(report, groups=groups, robot=robot_row, sentences=tuple(sentences),
+                   unsure=report.unsure).to_dict()

@@ -8,17 +8,11 @@ import pytest
 from lxml import etree
 
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
-from grove_tui.navigation.grid import build_grid
 from grove_tui.generation.postprocess import GOAL_SPACING, SPAWN_SPACING, postprocess
 from grove_tui.errors import PromptError
 from grove_tui.generation.presets import load_preset
 from grove_tui.language.quantities import extract_quantities
 from grove_tui.generation.rois import select_rois
-
-
-@pytest.fixture(scope="module")
-def grid(clinic):
-    return build_grid(clinic)
 
 
 def queue_tree(place="pharmacy_counter"):

@@ -89,7 +89,8 @@ def test_an_addition_asks_the_model_for_the_new_group_alone(hospital, base, tmp_
     refinement, out = refine(hospital, base, "add two guards standing at the main entrance", tmp_path / "b", llm)
     assert refinement.calls_model and len(llm.asked) == 1
     user = llm.asked[0][-1]["content"]
-    groups_line = next(line for line in user.splitlines() if line.startswith("Groups to write"))
+    lines = user.splitlines()
+    groups_line = " ".join(lines[lines.index("Groups:") + 1:])  # the lean draft's numbered groups
     assert "guard x2" in groups_line and "patient" not in groups_line and "nurse" not in groups_line
     before, after = records(base), records(out)
     assert after[:3] == before and after[3]["label"] == "guard" and after[3]["count"] == 2

@@ -18,6 +18,7 @@ def roi_llm():
     model.close()
 
 
+@pytest.mark.slow
 def test_the_model_resolves_a_tie_and_leaves_the_rest_alone(roi_llm):
     world = load_world("hospital")
     prompt = "Three patients sit in the main waiting room and one goes to the restroom"
