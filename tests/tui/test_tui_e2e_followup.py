@@ -1,15 +1,18 @@
 """End to end in a real 80x24 terminal: tmux runs the installed `grove`, a scenario is generated with the
 embedded model, then edited by follow-ups typed in the inspect screen's box: add a group (the model
 writes it), change one (no model), remove one, and undo. Needs tmux and the installed `grove` command,
-like tests/tui/test_tui_e2e.py, whose terminal driver this reuses."""
+like tests/tui/test_tui_e2e.py, and its terminal driver (tests/helpers/terminal.py)."""
 
 from __future__ import annotations
 
 import re
 import shlex
+import shutil
 
 import pytest
-from test_tui_e2e import GROVE, TMUX, Terminal, grove_env
+from helpers.terminal import TMUX, Terminal, grove_env
+
+GROVE = shutil.which("grove")
 
 pytestmark = [
     pytest.mark.slow,
