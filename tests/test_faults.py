@@ -24,7 +24,8 @@ SIMULATED_SECONDS = 2.0  # the `simulated` fixture's run (tests/conftest.py)
 
 
 def test_import_killed_after_the_swap_leaves_the_new_bundle_and_the_next_run_no_staging(tmp_path):
-    from grove_tui.exports.hunav_import import import_hunav
+    from grove_tui.services.session import GroveSession
+    import_hunav = GroveSession().import_hunav
 
     older = params()
     older["agent1"]["max_vel"] = 0.9

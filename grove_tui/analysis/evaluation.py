@@ -425,32 +425,14 @@ def decoupled(scenario: Scenario, trees: Mapping[str, str], world: World, grid: 
     return dataclasses.replace(scenario, agents=tuple(agents), fields={}), planned
 
 
-def write_variant(base_bundle: Path, target: Path, scenario: Scenario, trees: Mapping[str, str]) -> Path:
-    import shutil
-
-    from grove_tui.files import atomic_directory
-    from grove_tui.scenario.bundle import WHAT, is_bundle
-
-    with atomic_directory(target, owned=is_bundle, what=WHAT) as staging:
-        for name in ("grid.npz", "generation.json"):
-            if (base_bundle / name).exists():
-                shutil.copy2(base_bundle / name, staging / name)
-        if scenario.fields and (base_bundle / "fields").exists():
-            shutil.copytree(base_bundle / "fields", staging / "fields")
-        for rel, xml in trees.items():
-            (staging / rel).parent.mkdir(parents=True, exist_ok=True)
-            (staging / rel).write_text(xml, encoding="utf-8")
-        scenario.save(staging / "scenario.yaml")
-    return target
-
-
 def read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
     return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
 
 
-def baseline_variant(method: str, world: World, scenario: Scenario, trees: Mapping[str, str], base_bundle: Path,
-                     target: Path) -> tuple[Scenario, dict[str, str], Path]:
-    """The `no-planner` or `decoupled` rewrite of GROVE's bundle, written to `target`."""
+def baseline_variant(method: str, world: World, scenario: Scenario,
+                     trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
+    """The `no-planner` or `decoupled` rewrite of GROVE's scenario and trees (the services layer writes
+    it as a bundle derived from GROVE's: `scenario.bundle.derive_bundle`)."""
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import ThetaStarPlanner
 
@@ -461,7 +443,7 @@ def baseline_variant(method: str, world: World, scenario: Scenario, trees: Mappi
         variant, new_trees = decoupled(scenario, trees, world, grid, ThetaStarPlanner(grid))
     else:
         raise EvalError(f"{method!r} is not a baseline rewrite of GROVE's bundle (no-planner, decoupled)")
-    return variant, dict(new_trees), write_variant(base_bundle, target, variant, new_trees)
+    return variant, dict(new_trees)
 
 
 # --- tables --------------------------------------------------------------------------------------

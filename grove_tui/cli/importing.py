@@ -27,7 +27,7 @@ def import_hunav_command(agents_yaml: Path, out_dir: Path, world: str | None, tr
     """A HuNavSim scenario (1.0 or 2.0 layout: agents, goals, behavior trees) as a bundle GROVE simulates.
 
     Nothing HuNavSim's loader reads is lost: `grove export hunav` on the bundle writes the same file back."""
-    from grove_tui.exports.hunav_import import import_hunav
+    from grove_tui.services.session import GroveSession
 
-    bundle = import_hunav(agents_yaml, out_dir, world=world, trees_dir=trees_dir, overwrite=overwrite)
+    bundle = GroveSession().import_hunav(agents_yaml, out_dir, world=world, trees_dir=trees_dir, overwrite=overwrite)
     click.echo(str(bundle))

@@ -40,7 +40,7 @@ import re
 from collections import Counter
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import yaml
 
@@ -57,6 +57,9 @@ from grove_tui.scenario.bundle import HUNAV_FOLDER, WORLD_FOLDER
 from grove_tui.scenario.model import (BEHAVIOR_TYPES, MAX_AGENTS, MAX_VEL_RANGE, RADIUS_RANGE, AgentSpec, HunavAgent,
                                       HunavBehavior, HunavSource, RobotSpec, Scenario)
 from grove_tui.world.model import World
+
+if TYPE_CHECKING:
+    from grove_tui.generation.pipeline import GenerationResult
 
 # A mapping of the agents YAML as parsed: its values are the file's own until each is checked.
 YamlMapping = dict[str, Any]
@@ -341,12 +344,12 @@ def _robot(data: object, source: Path) -> RobotSpec | None:
     return probe.robot
 
 
-def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | None = None,
-                 trees_dir: str | Path | None = None, overwrite: bool = False) -> Path:
-    """Write a GROVE bundle for a HuNavSim agents YAML and its trees; returns the bundle folder."""
+def read_hunav(agents_yaml: str | Path, *, world: str | None = None,
+               trees_dir: str | Path | None = None) -> GenerationResult:
+    """A HuNavSim agents YAML and its trees as what a GROVE bundle is written from (the services layer
+    writes it: `GroveSession.import_hunav`)."""
     from grove_tui.generation.pipeline import GenerationResult
     from grove_tui.navigation.grid import build_grid
-    from grove_tui.scenario.bundle import write_bundle
 
     source = Path(agents_yaml)
     text, params = _read_document(source)
@@ -421,4 +424,4 @@ def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | N
     report = {"stages": {}, "notes": notes}
     if world_text is not None:
         files[world_ref] = world_text  # written in the same atomic step as the trees
-    return write_bundle(GenerationResult(scenario, files, {}, grid, report), out_dir, overwrite=overwrite)
+    return GenerationResult(scenario, files, {}, grid, report)

@@ -24,12 +24,11 @@ from typing import Any
 
 import numpy as np
 
-from grove_tui.analysis.bundle_metrics import bundle_metrics
-from grove_tui.files import absolute_path, atomic_directory, link_or_copy
-from grove_tui.scenario.bundle import RUN_FILES, SCENARIO_FILE, WHAT, is_bundle
-from grove_tui.scenario.events import write_events
+from grove_tui.scenario.bundle import EPISODE_FILE
+from grove_tui.services.session import GroveSession
 
-EPISODE_FILE = "episode.json"
+__all__ = ["EPISODE_FILE", "PATH_SPACING", "driven_path", "record_episode"]
+
 # The driven path keeps a point every this many metres (plus the last): `grove simulate` walks it
 # at the robot's top speed, so more points would only slow the follower's waypoint switching.
 PATH_SPACING = 0.25
@@ -65,17 +64,5 @@ def record_episode(env: Any, out_dir: str | os.PathLike[str], overwrite: bool = 
         "return": env.episode_return,
         "actions": [list(a) for a in env.episode_actions],
     }
-    target = absolute_path(out_dir)
-    with atomic_directory(target, owned=is_bundle, what=WHAT, overwrite=overwrite) as stage:
-        for path in sorted(source.rglob("*")):
-            rel = path.relative_to(source)
-            if str(rel) in RUN_FILES or str(rel) in (SCENARIO_FILE, EPISODE_FILE) or path.is_symlink() \
-                    or not path.is_file():
-                continue
-            link_or_copy(path, stage / rel)
-        (stage / SCENARIO_FILE).write_text(scenario.dump_yaml(), encoding="utf-8")
-        (stage / EPISODE_FILE).write_text(json.dumps(episode, indent=1) + "\n", encoding="utf-8")
-        sim.recorder.write_csv(stage / "trajectories.csv")
-        write_events(stage / "events.jsonl", sim.events)
-        bundle_metrics(stage)
-    return target
+    # The services layer writes it, as every bundle (scenario.bundle.derive_bundle: atomic, guarded).
+    return GroveSession().record_episode(source, out_dir, scenario, episode, sim, overwrite=overwrite)

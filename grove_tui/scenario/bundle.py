@@ -36,16 +36,18 @@ RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json", "grounding.json
 # trajectories.csv is read a block at a time, so its size costs time, not memory: a 500-person hour is
 # about 2 GB. The bound refuses what no run writes, such as a link to a huge unrelated file.
 MAX_TRAJECTORY_BYTES = 64 * 1024**3
+# What a recorded Gym episode adds (gym.recording): the policy's commands, enough to replay them.
+EPISODE_FILE = "episode.json"
 # Where a bundle keeps a world file of its own (an imported HuNavSim scenario's open floor).
 WORLD_FOLDER = "world"
 # Where an imported bundle keeps HuNavSim's tree files (and what they include), verbatim.
 HUNAV_FOLDER = "hunav"
 # Every name a bundle's own writers use: no other output may take one (`--out BUNDLE/trees`, an
 # imported world called scenario.yaml). episode.json is a recorded Gym episode's.
-OWN_NAMES = (SCENARIO_FILE, "trees", "fields", GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json", WORLD_FOLDER,
+OWN_NAMES = (SCENARIO_FILE, "trees", "fields", GRID_FILE, REPORT_FILE, *RUN_FILES, EPISODE_FILE, WORLD_FOLDER,
              HUNAV_FOLDER)
 # Files at fixed places: a tree, field or world file named like one of them would overwrite it.
-FIXED_FILES = frozenset({SCENARIO_FILE, GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json"})
+FIXED_FILES = frozenset({SCENARIO_FILE, GRID_FILE, REPORT_FILE, *RUN_FILES, EPISODE_FILE})
 WHAT = "scenario bundle"
 
 
@@ -122,6 +124,37 @@ def write_bundle_files(files: Mapping[str, bytes], out_dir: str | Path, overwrit
     if SCENARIO_FILE not in files:
         raise BundleError(f"{out_dir}: the files sent as a bundle have no {SCENARIO_FILE}")
     return write_files_atomic(absolute_path(out_dir), files, owned=is_bundle, what=WHAT, overwrite=overwrite)
+
+
+def derive_bundle(source: str | Path, out_dir: str | Path, scenario: Scenario, *,
+                  keep: Callable[[PurePosixPath], bool], files: Mapping[str, str] | None = None,
+                  write: Callable[[Path], None] | None = None, overwrite: bool = False) -> Path:
+    """Write a bundle made from another one, with `write_bundle`'s guarantees (atomic, guarded).
+
+    The source's regular files (never a link) whose relative path `keep` accepts are hard-linked (or
+    copied); then `scenario` becomes scenario.yaml, `files` (relative path -> text) are written over
+    them, and `write(stage)` writes the rest (a run's files). How an evaluation baseline rewrites
+    GROVE's trees, and how a Gym episode becomes a bundle.
+    """
+    root = Path(source)
+    members = [(relative_file(rel), text) for rel, text in sorted((files or {}).items())]
+    # Never link what is written next: writing into a hard link would change the source bundle too.
+    written = {SCENARIO_FILE, *RUN_FILES, *(str(rel) for rel, _text in members)}
+    target = absolute_path(out_dir)
+    with atomic_directory(target, owned=is_bundle, what=WHAT, overwrite=overwrite) as stage:
+        for path in sorted(root.rglob("*")):
+            rel = PurePosixPath(path.relative_to(root).as_posix())
+            if str(rel) in written or path.is_symlink() or not path.is_file() or not keep(rel):
+                continue
+            link_or_copy(path, stage / rel)
+        for member_path, text in members:
+            member = stage.joinpath(*member_path.parts)
+            member.parent.mkdir(parents=True, exist_ok=True)
+            member.write_text(text, encoding="utf-8")
+        (stage / SCENARIO_FILE).write_text(scenario.dump_yaml(), encoding="utf-8")
+        if write is not None:
+            write(stage)
+    return target
 
 
 def replace_run_outputs(bundle_dir: str | Path, write: Callable[[Path], None]) -> Path:

@@ -17,9 +17,9 @@ from __future__ import annotations
 import json
 import threading
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field, is_dataclass
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any
 
 from grove_tui.errors import (
@@ -42,6 +42,7 @@ if TYPE_CHECKING:
     from grove_tui.generation.refine import Refinement
     from grove_tui.generation.presets import Preset
     from grove_tui.llm.registry import ModelChoice
+    from grove_tui.scenario.model import Scenario
     from grove_tui.services.jobs import BatchJob, JobProblem, Variation
     from grove_tui.simulation.simulation import Simulation
     from grove_tui.world import World
@@ -742,6 +743,48 @@ class GroveSession:
             return export_foxglove(bundle, out, **options)
         raise BadInputError(f"unknown export format {kind!r}; formats: {', '.join(EXPORT_FORMATS)}")
 
+    # bundles derived from bundles ----------------------------------------------------------------------------
+    def write_variant(self, base_bundle: str | Path, target: str | Path, scenario: Scenario,
+                      trees: Mapping[str, str]) -> Path:
+        """A rewrite of a bundle's scenario and trees (an evaluation baseline) as a bundle at `target`: the
+        base's grid and report (and its fields, when the rewrite keeps any), the new trees and scenario."""
+        from grove_tui.scenario.bundle import GRID_FILE, REPORT_FILE, derive_bundle
+
+        def keep(rel: PurePosixPath) -> bool:
+            return str(rel) in (GRID_FILE, REPORT_FILE) or (bool(scenario.fields) and rel.parts[0] == "fields")
+
+        derive_bundle(base_bundle, target, scenario, keep=keep, files=trees)
+        return Path(target)
+
+    def record_episode(self, source: str | Path, out_dir: str | Path, scenario: Scenario, episode: Mapping[str, Any],
+                       simulation: Simulation, *, overwrite: bool = False) -> Path:
+        """A robot policy's episode (gym.recording) as a bundle at `out_dir`: the source bundle's files, the
+        scenario with the driven path, `episode` as episode.json, and the run the simulation made."""
+        from grove_tui.analysis.bundle_metrics import bundle_metrics
+        from grove_tui.scenario.bundle import EPISODE_FILE, derive_bundle
+        from grove_tui.scenario.events import write_events
+
+        recorder = simulation.recorder
+        if recorder is None:
+            raise RuntimeFailure(f"{source}: the episode's simulation has no trajectory recorder")
+
+        def write_run(stage: Path) -> None:
+            (stage / EPISODE_FILE).write_text(json.dumps(dict(episode), indent=1) + "\n", encoding="utf-8")
+            recorder.write_csv(stage / "trajectories.csv")
+            write_events(stage / "events.jsonl", simulation.events)
+            bundle_metrics(stage)
+
+        return derive_bundle(source, out_dir, scenario, keep=lambda rel: str(rel) != EPISODE_FILE, write=write_run,
+                             overwrite=overwrite)
+
+    def import_hunav(self, agents_yaml: str | Path, out_dir: str | Path, *, world: str | None = None,
+                     trees_dir: str | Path | None = None, overwrite: bool = False) -> Path:
+        """A HuNavSim scenario (agents YAML and its trees, exports.hunav_import) as a bundle at `out_dir`."""
+        from grove_tui.exports.hunav_import import read_hunav
+
+        result = read_hunav(agents_yaml, world=world, trees_dir=trees_dir)
+        return self.write_bundle(result, out_dir, overwrite=overwrite)
+
     # batch ------------------------------------------------------------------------------------------------
     def check_jobs(self, jobs: Sequence[BatchJob], out_dir: Path,
                    overwrite: bool) -> tuple[list[BatchJob], list[JobProblem]]:
@@ -850,8 +893,11 @@ class GroveSession:
                     else:
                         if "grove" not in generated:
                             generated["grove"] = generate_method("grove")
-                        generated[method] = baseline_variant(method, world, *generated["grove"],
-                                                             out / "bundles" / case.id / method)
+                        grove_scenario, grove_trees, grove_bundle = generated["grove"]
+                        variant, variant_trees = baseline_variant(method, world, grove_scenario, grove_trees)
+                        generated[method] = (variant, variant_trees,
+                                             self.write_variant(grove_bundle, out / "bundles" / case.id / method,
+                                                                variant, variant_trees))
                     scenario, trees, bundle = generated[method]
                     self.simulate(bundle, sim_seconds, runtime_planning=method != "no-planner")
                     traj = Trajectories.from_csv(bundle / "trajectories.csv")

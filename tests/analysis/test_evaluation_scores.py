@@ -135,7 +135,7 @@ def test_a_failed_generation_scores_zero_not_missing():
 def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
     """GROVE's planned patient (agent 2) reaches the pharmacy counter through the door; without waypoints
     and without run-time planning (HuNavSim's straight goals) the wall between lobby and pharmacy stops them."""
-    from grove_tui.analysis.evaluation import read_trees, without_planner, write_variant
+    from grove_tui.analysis.evaluation import read_trees, without_planner
     from grove_tui.analysis.metrics import Trajectories
     from grove_tui.services.session import GroveSession
 
@@ -154,7 +154,7 @@ def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
 
     grove_traj = simulate_for_scores(bundle, 40.0)
     straight_scenario, straight_trees = without_planner(scenario, read_trees(bundle, scenario))
-    straight = write_variant(bundle, bundle.parent / "straight", straight_scenario, straight_trees)
+    straight = GroveSession().write_variant(bundle, bundle.parent / "straight", straight_scenario, straight_trees)
     straight_traj = simulate_for_scores(straight, 40.0, runtime_planning=False)
     assert final_distance(grove_traj) < 2.5
     assert final_distance(straight_traj) > 4.0

@@ -19,10 +19,12 @@ from helpers.handmade import build_evacuation_bundle, build_hospital_bundle
 from helpers.paths import REPO
 
 from grove_tui.exports.hunav import export_hunav
-from grove_tui.exports.hunav_import import import_hunav
+from grove_tui.services.session import GroveSession
 from grove_tui.exports.hunav_loader_check import check_hunav_export, ignored_keys, loader_parameters
 from grove_tui.scenario.model import Scenario
 from grove_tui.simulation.simulation import Simulation
+
+import_hunav = GroveSession().import_hunav  # the services layer writes every bundle
 
 pytest.importorskip("behaviortreepy")
 

@@ -13,10 +13,12 @@ from click.testing import CliRunner
 from grove_tui.cli import main
 from grove_tui.errors import HunavImportError
 from grove_tui.exports.hunav import export_hunav
-from grove_tui.exports.hunav_import import import_hunav
+from grove_tui.services.session import GroveSession
 from grove_tui.scenario.bundle import load_bundle
 from grove_tui.scenario.model import Scenario
 from grove_tui.simulation.simulation import Simulation
+
+import_hunav = GroveSession().import_hunav  # the services layer writes every bundle
 
 pytest.importorskip("behaviortreepy")
 

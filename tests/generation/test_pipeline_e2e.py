@@ -226,7 +226,8 @@ def test_generated_bundle_round_trips_through_hunavsim_field_by_field(generated,
     import yaml
 
     from grove_tui.exports.hunav import export_hunav
-    from grove_tui.exports.hunav_import import import_hunav
+    from grove_tui.services.session import GroveSession
+    import_hunav = GroveSession().import_hunav
     from grove_tui.exports.hunav_loader_check import loader_parameters
     from grove_tui.scenario.model import Scenario
 

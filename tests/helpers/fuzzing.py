@@ -260,7 +260,8 @@ def fuzz_hunav_import(data: Any) -> None:
     """Import a HuNavSim scenario (parameters, or raw text); what imports must load as simulate loads it."""
     from helpers.hunav_files import document, write_scenario
 
-    from grove_tui.exports.hunav_import import import_hunav
+    from grove_tui.services.session import GroveSession
+    import_hunav = GroveSession().import_hunav
     from grove_tui.scenario.bundle import load_bundle
 
     with tempfile.TemporaryDirectory(prefix="grove-fuzz-") as folder:
