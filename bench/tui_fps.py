@@ -64,7 +64,7 @@ sys.path.insert(0, str(_tree_from_argv()))
 
 
 def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
-    from grove_tui.services.backend import GeneratedScenario
+    from grove_tui.services.session import GeneratedScenario
     from grove_tui.scenario.bundle import load_bundle  # noqa: F401  (the bundle layout this writes)
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
@@ -127,7 +127,7 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
 
 async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) -> dict:
     from grove_tui.tui.app import GroveApp
-    from grove_tui.services.backend import EngineBackend
+    from grove_tui.services.session import GroveSession
     from grove_tui.settings import GroveSettings, SimulationSettings, UISettings
     from grove_tui.tui.screens.simulation import SimulationScreen
 
@@ -157,7 +157,7 @@ async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) ->
             super()._display(screen, renderable)
 
     settings = GroveSettings(ui=UISettings(preload_models=False), simulation=SimulationSettings(fps=fps, speed=1.0))
-    app = BenchApp(EngineBackend(), settings)
+    app = BenchApp(GroveSession.for_app(), settings)
     async with app.run_test(size=size) as pilot:
         await app.push_screen(SimulationScreen(generated))
         screen = app.screen
@@ -305,12 +305,12 @@ async def key_latency(prompt: str, presses: int, size: tuple[int, int], model_ni
     a user sees. Pilot's press() is not used to time: it adds two waits for the process to go idle
     (20 ms each at least, up to 1 s while the pipeline thread works), which is test pacing, not
     response. Only presses made while a model stage (RoIs or tree synthesis) was running count.
-    `model_niceness` is EngineBackend's (None: the app's default; 0: the model processes keep the
+    `model_niceness` is GroveSession.for_app's (None: the app's default; 0: the model processes keep the
     app's priority). Full garbage collections during the presses are reported too (they stop the UI).
     """
     from textual import events
 
-    from grove_tui.services.backend import EngineBackend
+    from grove_tui.services.session import GroveSession
     from grove_tui.settings import ExportSettings, GenerationSettings, GroveSettings, UISettings
     from grove_tui.tui.app import GroveApp
     from grove_tui.tui.screens.generation import MODEL_STAGES, GenerationScreen
@@ -355,7 +355,7 @@ async def key_latency(prompt: str, presses: int, size: tuple[int, int], model_ni
                                  generation=GenerationSettings(world="hospital", preset="queuing"),
                                  export=ExportSettings(directory=Path(tmp) / "exports"))
         extra = {} if model_niceness is None else {"model_niceness": model_niceness}
-        app = TimedApp(EngineBackend(runs_dir=Path(tmp) / "runs", **extra), settings)
+        app = TimedApp(GroveSession.for_app(runs_dir=Path(tmp) / "runs", **extra), settings)
         latencies: list[float] = []
         async with app.run_test(size=size) as pilot:
             await until(pilot, lambda: isinstance(app.screen, SetupScreen))

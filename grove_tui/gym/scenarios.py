@@ -10,11 +10,10 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-import shutil
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -27,6 +26,9 @@ from grove_tui.settings import cache_dir
 from grove_tui.scenario.bundle import is_bundle, load_bundle, load_bundle_world
 from grove_tui.scenario.model import Scenario
 from grove_tui.simulation.simulation import Simulation
+
+if TYPE_CHECKING:
+    from grove_tui.services.session import GroveSession
 
 
 @dataclass
@@ -105,35 +107,30 @@ def generation_key(world: str, preset: str, prompt: str, seed: int, models: Sequ
 
 
 def generated_scenarios(world: str, preset: str, prompt: str, seeds: Iterable[int], *,
-                        cache: str | os.PathLike[str] | None = None, backend: Any = None) -> list[Path]:
+                        cache: str | os.PathLike[str] | None = None,
+                        session: GroveSession | None = None) -> list[Path]:
     """Bundles of `prompt` in `world` under `preset`, one per seed, generated through the services layer
     the first time and read from the cache after that.
 
     Call it once in the parent process before starting vectorised environments, so N workers do not
-    generate the same scenarios N times; then give the workers the returned bundles.
+    generate the same scenarios N times; then give the workers the returned bundles. `session`: the
+    services session to generate with (default a new one).
     """
-    from grove_tui.services.backend import EngineBackend
+    from grove_tui.services.session import GroveSession, ScenarioRequest
 
     seeds = [int(s) for s in seeds]
     if not seeds:
         raise GymError("no seeds given", hint="pass seeds=[0, 1, ...]: one scenario is generated per seed")
     root = Path(cache) if cache is not None else cache_dir() / "gym"
-    staging = root / ".staging"
-    engine = backend if backend is not None else EngineBackend(runs_dir=staging)
+    engine = session if session is not None else GroveSession()
     models = [status.file for status in engine.model_status()]
     out: list[Path] = []
     for seed in seeds:
         target = root / generation_key(world, preset, prompt, seed, models)
         if not is_bundle(target):
-            # A failure keeps its own error (bad prompt 2, generation 3, model 4) and hint.
-            generated = engine.generate(world, preset, prompt, seed)
-            target.parent.mkdir(parents=True, exist_ok=True)
-            try:
-                os.replace(generated.bundle_dir, target)
-            except OSError:
-                # Another process cached the same scenario first; theirs is identical, keep it.
-                if not is_bundle(target):
-                    raise
-                shutil.rmtree(generated.bundle_dir, ignore_errors=True)
+            # Written by the services layer in one atomic swap: a process that cached the same scenario
+            # meanwhile wrote an identical bundle, which this one replaces. A failure keeps its own error
+            # (bad prompt 2, generation 3, model 4) and hint.
+            engine.generate(ScenarioRequest(world, preset, prompt, seed), target)
         out.append(target)
     return out

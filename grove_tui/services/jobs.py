@@ -27,6 +27,7 @@ from typing import Any
 
 from grove_tui.errors import JobFileError
 from grove_tui.services.dataset import INDEX_FILE, PARQUET_FILE, STATE_FILE
+from grove_tui.services.exporting import EXPORT_FORMATS, EXPORT_SUFFIXES, NEEDS_RUN
 
 MAX_JOB_FILE_BYTES = 64 * 1024 * 1024
 MAX_SEED = 2**32 - 1
@@ -37,12 +38,11 @@ OPTIONAL = ("seed", "name", "simulate", "export", "variations", "refine")
 MAX_FOLLOWUPS = 20
 # A generous bound that still refuses a typo like 1e9 before it expands into a billion jobs.
 MAX_VARIATIONS = 10_000
-# What `export` may list: the `grove export` formats. All but hunav read the simulated run.
-EXPORT_KINDS = ("hunav", "trajectories", "rosbag", "foxglove")
-NEEDS_RUN = frozenset({"trajectories", "rosbag", "foxglove"})
+# What `export` may list: the `grove export` formats (services.exporting, the one list). All but hunav
+# read the simulated run.
+EXPORT_KINDS = EXPORT_FORMATS
 # What a batch writes into its --out beside the bundles: no job's bundle may take one of these names.
 BATCH_FILES = (STATE_FILE, INDEX_FILE, PARQUET_FILE)
-EXPORT_SUFFIXES = (".hunav", ".trajectories", ".rosbag", ".mcap", ".layout.json")
 
 
 @dataclass(frozen=True)

@@ -1,6 +1,12 @@
-"""The one application layer: every front end (the app, `grove generate|batch|simulate|export|eval`) goes
-through a `GroveSession`, so the same world, preset, prompt, seed and models give the same bundle
-whichever way it was asked for.
+"""The one application layer: every front end (the app, every `grove` subcommand, batch, evaluation and
+the Gym environment) goes through a `GroveSession`, so the same world, preset, prompt, seed and models give
+the same bundle whichever way it was asked for.
+
+What only the app needs is arguments of the same API, not another class: progress (`on_event`,
+`on_status`, `on_progress` callbacks), cancellation (`cancel` events), a generation with no output folder
+(a fresh run folder under `runs_dir`), the stage "loading" (`show_loading`), the warm-up ETAs kept in the
+data dir and the model processes' niceness (`GroveSession.for_app`). The app's Textual workers call these
+methods from their threads; the session never touches a widget.
 
 (`grove understanding` generates its scenario sample through it too.) A session holds what is expensive and shared: the models, loaded once per role (roles naming the
 same file share one instance), the retriever, worlds and presets, and one generation pipeline per
@@ -36,6 +42,8 @@ from grove_tui.errors import (
 
 if TYPE_CHECKING:
     from grove_tui.analysis.evaluation import CaseResult, EvalCase
+    from grove_tui.analysis.live_metrics import LiveMetrics
+    from grove_tui.analysis.outcomes import OutcomeChecker
     from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
@@ -43,7 +51,9 @@ if TYPE_CHECKING:
     from grove_tui.generation.presets import Preset
     from grove_tui.llm.registry import ModelChoice
     from grove_tui.scenario.model import Scenario
+    from grove_tui.services.exporting import ExportedFile, Exporter
     from grove_tui.services.jobs import BatchJob, JobProblem, Variation
+    from grove_tui.services.runs import RunInfo
     from grove_tui.simulation.simulation import Simulation
     from grove_tui.world import World
 
@@ -182,16 +192,31 @@ class JobOutcome:
     error: GroveError | None = None
 
 
-# The `grove export` formats, also what a batch job's "export" key may list. Each writes beside
-# nothing it does not own: `out` is the folder (or .mcap file) the format's exporter writes.
-EXPORT_FORMATS = ("hunav", "trajectories", "rosbag", "foxglove")
+# How far below the app's priority the model processes run while the app is open (see
+# GroveSession.yield_cpu_to_the_app); 0 leaves them alone.
+MODEL_NICENESS = 10
+LOWEST_PRIORITY = 19  # the largest niceness POSIX allows
+
+
+@dataclass(frozen=True)
+class PresetInfo:
+    name: str
+    description: str
 
 
 class GroveSession:
     """Models loaded once per role; generate, re-plan, simulate, export, evaluate and batch."""
 
     def __init__(self, *, model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
-                 llm_factory: LLMFactory | None = None, retriever_factory: RetrieverFactory | None = None) -> None:
+                 llm_factory: LLMFactory | None = None, retriever_factory: RetrieverFactory | None = None,
+                 runs_dir: Path | None = None, model_niceness: int = 0, remember_step_seconds: bool = False,
+                 exporters: list[tuple[str, Exporter]] | None = None) -> None:
+        """`runs_dir`: where a generation asked for without an output folder writes (default the data
+        dir's runs/); `model_niceness`: how far below this process `yield_cpu_to_the_app` puts the model
+        processes; `remember_step_seconds`: keep what each warm-up step took in the data dir (the ETAs);
+        `exporters`: the steps of `export_all` (default every format's, services.exporting)."""
+        from grove_tui.services.exporting import APP_EXPORTERS
+
         self._cli_model = model
         self._cli_roi = roi_model
         self._cli_bt = bt_model
@@ -210,6 +235,49 @@ class GroveSession:
         self._pipelines: dict[tuple[str, str, Any], GenerationPipeline] = {}
         self._warm = False
         self._stop_warm_up = threading.Event()  # set by close(): a warm-up still running loads nothing more
+        self._runs_dir = runs_dir
+        self.model_niceness = model_niceness
+        self.exporters = list(APP_EXPORTERS if exporters is None else exporters)
+        self._remember_step_seconds = remember_step_seconds
+        self._embedder_warm = False
+        if remember_step_seconds:  # what each warm-up step took on this machine last time: the app's ETAs
+            from grove_tui.services.runs import load_step_seconds
+
+            self.step_seconds.update(load_step_seconds())
+
+    @classmethod
+    def for_app(cls, **options: Any) -> GroveSession:
+        """A session as the app holds one: model processes below the app's priority, warm-up ETAs kept."""
+        options.setdefault("model_niceness", MODEL_NICENESS)
+        options.setdefault("remember_step_seconds", True)
+        return cls(**options)
+
+    @property
+    def runs_dir(self) -> Path:
+        """Where `generate`, `replan` and `refine` write when given no output folder (the app's runs)."""
+        if self._runs_dir is None:
+            from grove_tui.settings import data_dir
+
+            self._runs_dir = data_dir() / "runs"
+        return self._runs_dir
+
+    def new_run_dir(self, name: str) -> Path:
+        """A folder under `runs_dir` named `name` (with -2, -3... when taken), not created yet."""
+        from grove_tui.services.runs import free_folder
+
+        return free_folder(self.runs_dir, name)
+
+    def recent_runs(self, limit: int = 50) -> list[RunInfo]:
+        """Bundles under the runs folder, newest first; a broken one is listed with what is wrong."""
+        from grove_tui.services.runs import list_runs
+
+        return list_runs(self.runs_dir, limit)
+
+    def _save_step_seconds(self) -> None:
+        if self._remember_step_seconds:
+            from grove_tui.services.runs import save_step_seconds
+
+            save_step_seconds(self.step_seconds)
 
     # inputs -------------------------------------------------------------------------------------------
     def list_worlds(self) -> list[str]:
@@ -233,6 +301,18 @@ class GroveSession:
         from grove_tui.generation.presets import load_preset
 
         return load_preset(name)
+
+    def presets(self) -> list[PresetInfo]:
+        """Every shipped preset with its description (a broken one says why)."""
+        from grove_tui.generation.presets import list_presets
+
+        infos = []
+        for name in list_presets():
+            try:
+                infos.append(PresetInfo(name, self.load_preset(name).description))
+            except GroveError as exc:
+                infos.append(PresetInfo(name, f"(broken: {exc})"))
+        return infos
 
     def check_request(self, request: ScenarioRequest) -> tuple[World, Preset]:
         """World and preset of a request, and a non-empty prompt, before any model loads."""
@@ -394,6 +474,7 @@ class GroveSession:
                 on_status(status)
         with self._lock:
             self._warm = all(status.state == "done" for status in statuses)
+        self._save_step_seconds()
         if on_status is not None:
             on_status(WarmUpStatus("ready", "done" if self._warm else "failed", "ready to generate"))
         return statuses
@@ -447,6 +528,39 @@ class GroveSession:
 
         retriever.ensure_index()
         embed_query("people walk to the exit")  # imports torch, loads the model and its traced query encoder
+        self._embedder_warm = True
+
+    def embedder_ready(self) -> bool:
+        """Whether retrieval runs without first loading the embedding model (warmed, or used once)."""
+        return self._embedder_warm or self._retriever_factory is not None
+
+    def yield_cpu_to_the_app(self) -> list[int]:
+        """Run the model processes `model_niceness` steps below this process's priority; the pids changed.
+
+        llama.cpp sizes its threads to the cores free when its process starts and spins at its
+        barriers, so while it writes it holds every core and the app's key handling waits for a time
+        slice (0.4-0.8 s per key in issue 21). One step of niceness is ~1.25x less CPU weight, so at +10
+        the app's thread takes a core within the scheduler's latency whenever it has work, and the
+        model loses only the little CPU the app uses. Niceness cannot be lowered again without
+        privileges, so this is only done for the session's own model processes, and is idempotent.
+        """
+        import os
+
+        if self.model_niceness <= 0 or not hasattr(os, "setpriority"):
+            return []
+        target = min(os.getpriority(os.PRIO_PROCESS, 0) + self.model_niceness, LOWEST_PRIORITY)
+        changed = []
+        for llm in self.loaded_models():
+            pid = getattr(llm, "worker_pid", None)
+            if not isinstance(pid, int):
+                continue
+            try:
+                if os.getpriority(os.PRIO_PROCESS, pid) < target:
+                    os.setpriority(os.PRIO_PROCESS, pid, target)
+                    changed.append(pid)
+            except OSError:  # the process ended (cancelled, crashed) between the lookup and the call
+                continue
+        return changed
 
     def _warm_planner(self, world: str, preset: str) -> None:
         from grove_tui.errors import PlanningError
@@ -529,17 +643,33 @@ class GroveSession:
                 pipeline = self._pipelines.setdefault(key, pipeline)
         return pipeline
 
-    def generate(self, request: ScenarioRequest, out_dir: str | Path, *, overwrite: bool = False,
-                 on_event: EventSink | None = None, cancel: threading.Event | None = None) -> GeneratedScenario:
-        """Generate the request's scenario and write its bundle to `out_dir` (an old bundle there is replaced)."""
+    def generate(self, request: ScenarioRequest, out_dir: str | Path | None = None, *, overwrite: bool = False,
+                 on_event: EventSink | None = None, cancel: threading.Event | None = None,
+                 show_loading: bool = False) -> GeneratedScenario:
+        """Generate the request's scenario and write its bundle to `out_dir` (an old bundle there is replaced);
+        without `out_dir`, to a new folder under `runs_dir` named by time, prompt and seed.
+
+        `show_loading`: first load what is not loaded yet as the stage "loading" with an ETA (`prepare`),
+        so a generation asked before the warm-up is done is never silent (the app); the command line
+        loads as it goes."""
         from grove_tui.files import check_output_dir
         from grove_tui.scenario.bundle import WHAT, is_bundle
+        from grove_tui.services.runs import slug
 
-        world, _preset = self.check_request(request)
-        # Before the model runs: a refused or unwritable folder must not cost a generation.
-        check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
-        pipeline = self.pipeline(request.world, request.preset, request.robot)
-        result = pipeline.run(request.prompt, seed=request.seed, on_event=on_event, cancel=cancel)
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        try:
+            world, _preset = self.check_request(request)
+            if show_loading:
+                self.prepare(request.world, request.preset, on_event=on_event, cancel=cancel)
+            if out_dir is None:
+                out_dir = self.new_run_dir(f"{stamp}-{slug(request.prompt)}-{request.seed}")
+            # Before the model runs: a refused or unwritable folder must not cost a generation.
+            check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
+            pipeline = self.pipeline(request.world, request.preset, request.robot)
+            result = pipeline.run(request.prompt, seed=request.seed, on_event=on_event, cancel=cancel)
+        finally:
+            self._save_step_seconds()
+        self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
         if request.variation is not None:
             result.report["variation"] = request.variation.to_dict(request.prompt)
         bundle = self.write_bundle(result, out_dir, overwrite=overwrite)
@@ -550,13 +680,33 @@ class GroveSession:
 
         return Path(write_bundle(result, Path(out_dir), overwrite=overwrite))
 
-    def replan(self, generated: GeneratedScenario, counts: dict[int, int], out_dir: str | Path, *,
+    def replan(self, generated: GeneratedScenario, counts: dict[int, int], out_dir: str | Path | None = None, *,
                seed: int | None = None, on_event: EventSink | None = None,
                cancel: threading.Event | None = None) -> GeneratedScenario:
-        """The same draft with new head counts (group index -> count), re-planned without a model call.
+        """The same draft with new head counts (group index -> count), re-planned without a model call,
+        written to `out_dir` (without it, a new folder under `runs_dir`); `generated` is left as it was.
 
         A scenario that keeps no draft (opened from a bundle, or refined) changes its counts as a
-        refinement: the other groups stay byte for byte, and the edit is a step of its history."""
+        refinement: the other groups stay byte for byte, and the edit is a step of its history.
+        An error's hint is about the counts, which are what changed here."""
+        from grove_tui.errors import GenerationError
+        from grove_tui.services.runs import slug
+
+        if out_dir is None:
+            stamp = time.strftime("%Y%m%d-%H%M%S")
+            out_dir = self.new_run_dir(f"{stamp}-{slug(generated.prompt)}-"
+                                       f"{generated.seed if seed is None else seed}-counts")
+        try:
+            return self._replan(generated, counts, out_dir, seed=seed, on_event=on_event, cancel=cancel)
+        except PromptError as exc:
+            exc.hint = "Lower the counts of the groups in that zone, or regenerate with a roomier place."
+            raise
+        except GenerationError as exc:
+            exc.hint = "Change the counts and press Enter again, or Escape to keep the scenario as it is."
+            raise
+
+    def _replan(self, generated: GeneratedScenario, counts: dict[int, int], out_dir: str | Path, *,
+                seed: int | None, on_event: EventSink | None, cancel: threading.Event | None) -> GeneratedScenario:
         from grove_tui.generation.pipeline import GenerationPipeline
 
         if generated.result.inputs is None and generated.result.report.get("groups"):
@@ -616,19 +766,24 @@ class GroveSession:
             edit = edit.choose(index, choice)
         return plan_refinement(scene, edit)
 
-    def refine(self, generated: GeneratedScenario, followup: str | Refinement, out_dir: str | Path, *,
+    def refine(self, generated: GeneratedScenario, followup: str | Refinement, out_dir: str | Path | None = None, *,
                overwrite: bool = False, choices: Sequence[int] = (), on_event: EventSink | None = None,
                cancel: threading.Event | None = None) -> GeneratedScenario:
         """The scenario edited by a follow-up sentence (or a refinement read before), written as a bundle
-        at `out_dir` (the scenario's own folder edits it in place, atomically). Only the groups the
+        at `out_dir` (the scenario's own folder edits it in place, atomically; without `out_dir`, a new
+        folder under `runs_dir`, leaving `generated`'s bundle for the app's undo). Only the groups the
         follow-up adds or changes are generated; the others are kept byte for byte (generation/refine.py)."""
         from grove_tui.files import check_output_dir
         from grove_tui.generation.refine import apply_refinement
         from grove_tui.generation.scene import scene_of
         from grove_tui.scenario.bundle import WHAT, is_bundle
+        from grove_tui.services.runs import slug
 
+        stamp = time.strftime("%Y%m%d-%H%M%S")
         refinement = followup if not isinstance(followup, str) else \
             self.read_refinement(generated, followup, choices=choices)
+        if out_dir is None:
+            out_dir = self.new_run_dir(f"{stamp}-{slug(generated.prompt)}-{generated.seed}-edit{refinement.step}")
         # Before the model runs: a refused or unwritable folder must not cost a generation.
         check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
         scene = scene_of(generated.result, generated.world)
@@ -676,6 +831,39 @@ class GroveSession:
         return pipeline
 
     # simulation -----------------------------------------------------------------------------------------
+    def live_metrics(self, generated: GeneratedScenario) -> LiveMetrics:
+        """metrics.json's numbers for a run while it runs (analysis.live_metrics.LiveMetrics): fed the
+        recorder's new rows, rounded as trajectories.csv stores them, through the accumulators
+        `grove metrics` streams the file through, so the app's counters equal the exported metrics.json."""
+        from grove_tui.analysis.live_metrics import LiveMetrics
+
+        return LiveMetrics(generated.scenario, generated.world)
+
+    def outcome_checker(self, generated: GeneratedScenario) -> OutcomeChecker | None:
+        """A checker of the scenario's planned grounding report for a run as it plays (None without a
+        report); feed it with `check_run_rows` from one thread at a time."""
+        from grove_tui.analysis.outcomes import OutcomeChecker, planned_report
+
+        planned = planned_report(generated.result.report)
+        if planned is None:
+            return None
+        return OutcomeChecker(planned, generated.scenario, generated.world)
+
+    def check_run_rows(self, checker: OutcomeChecker, rows: Any, events: list[Any], partial: bool = True) -> Any:
+        """The report checked on the run so far: the recorder's new rows (whole frames, taken between
+        steps) go into the checker, rounded as trajectories.csv stores them, so the live report equals
+        the grounding.json the same run writes."""
+        import numpy as np
+
+        from grove_tui.crowd.recording import CSV_COLUMNS
+
+        if len(rows):
+            table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
+            table[:, 1] = np.round(table[:, 1], 4)
+            table[:, 3:8] = np.round(table[:, 3:8], 4)
+            checker.add_rows(table)
+        return checker.result(events, partial=partial)
+
     def simulation(self, generated: GeneratedScenario) -> Simulation:
         """A runnable simulation of a generated scenario, for a front end that steps it itself."""
         from grove_tui.simulation.simulation import Simulation
@@ -723,25 +911,38 @@ class GroveSession:
 
     # exports ----------------------------------------------------------------------------------------------
     def export(self, kind: str, bundle: str | Path, out: str | Path, **options: Any) -> Any:
-        """Write one export format of a bundle (see EXPORT_FORMATS); returns that exporter's result."""
-        bundle, out = Path(bundle), Path(out)
-        if kind == "hunav":
-            from grove_tui.exports.hunav import export_hunav
+        """Write one export format of a bundle (services.exporting.EXPORT_FORMATS); returns that exporter's result."""
+        from grove_tui.services.exporting import BY_KIND, EXPORT_FORMATS
 
-            return export_hunav(bundle, out, **options)
-        if kind == "trajectories":
-            from grove_tui.exports.trajectories import export_trajectories
+        form = BY_KIND.get(kind)
+        if form is None or form.write is None:
+            raise BadInputError(f"unknown export format {kind!r}; formats: {', '.join(EXPORT_FORMATS)}")
+        return form.write(Path(bundle), Path(out), **options)
 
-            return export_trajectories(bundle, out, **options)
-        if kind == "rosbag":
-            from grove_tui.exports.rosbag import export_rosbag
+    def export_all(self, generated: GeneratedScenario, simulation: Simulation | None, root: str | Path, *,
+                   on_progress: Callable[[str, int, int], None] | None = None) -> list[ExportedFile]:
+        """Every format (`exporters`) into a new folder under `root`, named by time and prompt: a copy of the
+        bundle with the run `simulation` made (None before playing), and each format beside it.
+        `on_progress(kind, index, total)` comes before each one; a format that fails is listed with why,
+        and the others are still written."""
+        from grove_tui.errors import describe_error
+        from grove_tui.services.exporting import ExportContext
+        from grove_tui.services.runs import free_folder, slug
 
-            return export_rosbag(bundle, out, **options)
-        if kind == "foxglove":
-            from grove_tui.exports.foxglove import export_foxglove
-
-            return export_foxglove(bundle, out, **options)
-        raise BadInputError(f"unknown export format {kind!r}; formats: {', '.join(EXPORT_FORMATS)}")
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        out_dir = free_folder(Path(root), f"{stamp}-{slug(generated.prompt)}")
+        out_dir.mkdir(parents=True)
+        ctx = ExportContext(generated, simulation, out_dir, self)
+        for index, (kind, exporter) in enumerate(self.exporters):
+            if on_progress is not None:
+                on_progress(kind, index, len(self.exporters))
+            try:
+                exporter(ctx)
+            except Exception as exc:  # one failing format must not lose the others; the dialog shows why
+                if kind == "bundle":
+                    raise
+                ctx.add(kind, out_dir, f"failed: {describe_error(exc).text}")
+        return ctx.files
 
     # bundles derived from bundles ----------------------------------------------------------------------------
     def write_variant(self, base_bundle: str | Path, target: str | Path, scenario: Scenario,

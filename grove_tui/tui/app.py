@@ -16,7 +16,7 @@ from textual.app import App
 from textual.binding import Binding
 from textual.screen import ModalScreen
 
-from grove_tui.services.backend import EngineBackend, GeneratedScenario
+from grove_tui.services.session import GeneratedScenario, GroveSession
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
 from grove_tui.tui.commands import GroveCommands
 from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
@@ -94,7 +94,7 @@ class GroveApp(App[int]):
 
     def _load_bundle(self, bundle_dir: Path) -> None:
         try:
-            generated = self.backend.open_run(bundle_dir)
+            generated = self.backend.open_bundle(bundle_dir)
         except Exception as exc:  # a broken bundle must say why, not close the app
             self.post_message(RunOpenFailed(bundle_dir, f"{type(exc).__name__}: {exc}"))
             return
@@ -180,7 +180,7 @@ class GroveApp(App[int]):
 
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
             world: str | None = None, preset: str | None = None, open_bundle: Path | None = None,
-            backend: EngineBackend | None = None) -> int:
+            backend: GroveSession | None = None) -> int:
     """Entry point of the `grove` command with no subcommand; returns the exit code.
 
     `backend` replaces the one built from the model options (the terminal tests of the UI pass one
@@ -193,7 +193,7 @@ def run_app(model: str | None = None, roi_model: str | None = None, bt_model: st
     except SettingsError as exc:
         return print_error(exc)
     if backend is None:
-        backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
+        backend = GroveSession.for_app(model=model, roi_model=roi_model, bt_model=bt_model)
     app = GroveApp(backend, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True,
                    open_bundle=open_bundle, last_choices=load_last_choices(), remember_choices=True)

@@ -300,7 +300,8 @@ def test_exports_refuse_a_bundle_never_simulated(tmp_path):
 
 
 def test_a_missing_optional_dependency_names_the_extra(simulated, tmp_path, monkeypatch):
-    from grove_tui.services import backend
+    from grove_tui.services import exporting
+    from grove_tui.services.session import GroveSession
 
     for name in [m for m in sys.modules if m == "rosbags" or m.startswith("rosbags.")
                  or m == "foxglove" or m.startswith("foxglove.")]:
@@ -321,10 +322,10 @@ def test_a_missing_optional_dependency_names_the_extra(simulated, tmp_path, monk
     class Run:  # what the app's export step holds after simulating
         pass
 
-    ctx = backend.ExportContext(generated=None, simulation=Run(), out_dir=tmp_path / "app")
+    ctx = exporting.ExportContext(generated=None, simulation=Run(), out_dir=tmp_path / "app", session=GroveSession())
     shutil.copytree(simulated, ctx.bundle)
-    backend.export_rosbag_files(ctx)
-    backend.export_foxglove_files(ctx)
+    exporting.export_rosbag_files(ctx)
+    exporting.export_foxglove_files(ctx)
     assert [(f.kind, f.note) for f in ctx.files] == [
         ("rosbag", "not written: " + rosbag.missing_dependency()),
         ("foxglove", "not written: " + fox.missing_dependency())]

@@ -12,7 +12,7 @@ from typing import Any
 
 import pytest
 
-from grove_tui.services.backend import EngineBackend, ModelStatus
+from grove_tui.services.session import MODEL_NICENESS, GroveSession, ModelStatus
 from grove_tui.settings import ExportSettings, GenerationSettings, GroveSettings, SimulationSettings, UISettings
 
 
@@ -53,10 +53,12 @@ FIXED_SCRIPT: list[Any] = [
 ]
 
 
-class ScriptedBackend(EngineBackend):
+class ScriptedBackend(GroveSession):
     """Real worlds and presets; generation replays a fixed event script, then blocks, fails or returns."""
 
     def __init__(self, script: list[Any], outcome: Any = "block", block_seconds: float = 30.0, **kwargs: Any) -> None:
+        kwargs.setdefault("model_niceness", MODEL_NICENESS)  # as the app's session (GroveSession.for_app)
+        kwargs.setdefault("remember_step_seconds", True)
         super().__init__(**kwargs)
         self.block_seconds = block_seconds
         self.script = script
@@ -67,11 +69,11 @@ class ScriptedBackend(EngineBackend):
     def model_status(self) -> list[ModelStatus]:
         return [ModelStatus("roi", "scripted.gguf", True), ModelStatus("bt", "scripted.gguf", True)]
 
-    def load_models(self) -> dict[str, Any]:
-        return {}
+    def load_models(self) -> Any:
+        return None
 
-    def generate(self, world_name: str, preset_name: str, prompt: str, seed: int,
-                 on_event: Callable[[Any], None] | None = None, cancel: threading.Event | None = None) -> Any:
+    def generate(self, request: Any, out_dir: Any = None, *, on_event: Callable[[Any], None] | None = None,
+                 cancel: threading.Event | None = None, **_: Any) -> Any:
         assert on_event is not None and cancel is not None
         for event in self.script:
             on_event(event)
@@ -171,9 +173,10 @@ def lexical_retriever() -> Any:
     return LexicalRetriever()
 
 
-def fake_llm_backend(runs_dir: Path, llm: FakeLLM | None = None) -> EngineBackend:
+def fake_llm_backend(runs_dir: Path, llm: FakeLLM | None = None) -> GroveSession:
     model = llm or FakeLLM()
-    return EngineBackend(llm_factory=lambda role, info: model, retriever_factory=lexical_retriever, runs_dir=runs_dir)
+    return GroveSession.for_app(llm_factory=lambda role, info: model, retriever_factory=lexical_retriever,
+                                runs_dir=runs_dir)
 
 
 # ---- walks to a screen (shared by the flow, map, counters, export, runs, replan and snapshot tests)

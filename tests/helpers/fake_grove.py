@@ -21,7 +21,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/, for help
 
 from helpers.app import QUEUE_DRAFT, FakeLLM, lexical_retriever  # noqa: E402
 
-from grove_tui.services.backend import EngineBackend  # noqa: E402
+from grove_tui.services.session import GroveSession  # noqa: E402
 from grove_tui.tui.app import run_app  # noqa: E402
 
 
@@ -58,12 +58,13 @@ def main() -> int:
         time.sleep(args.load_seconds)
         return model
 
-    class Backend(EngineBackend):
+    class Backend(GroveSession):
         def list_worlds(self) -> list[str]:
             time.sleep(args.list_seconds)
             return super().list_worlds()
 
-    backend = Backend(llm_factory=load, retriever_factory=lexical_retriever)
+    backend = Backend(llm_factory=load, retriever_factory=lexical_retriever, model_niceness=10,
+                      remember_step_seconds=True)  # as GroveSession.for_app
     return run_app(world=args.world, preset=args.preset, backend=backend)
 
 

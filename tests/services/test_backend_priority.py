@@ -9,14 +9,14 @@ import pytest
 
 from grove_tui.llm.grammar import schema_to_gbnf
 from grove_tui.llm.local import LocalLLM
-from grove_tui.services.backend import LOWEST_PRIORITY, MODEL_NICENESS, EngineBackend
+from grove_tui.services.session import LOWEST_PRIORITY, MODEL_NICENESS, GroveSession
 
 pytestmark = [pytest.mark.skipif(not hasattr(os, "setpriority"), reason="no process priorities on this platform"),
               pytest.mark.slow]  # the model workers are real llama.cpp processes
 
 
 def backend_with(tiny_path, tmp_path, **kwargs):
-    return EngineBackend(llm_factory=lambda role, choice: LocalLLM(tiny_path, role=role, n_ctx=256, n_threads=1),
+    return GroveSession.for_app(llm_factory=lambda role, choice: LocalLLM(tiny_path, role=role, n_ctx=256, n_threads=1),
                          runs_dir=tmp_path / "runs", **kwargs)
 
 
@@ -24,7 +24,8 @@ def test_model_processes_run_below_the_app_and_only_once(tiny_path, tmp_path):
     backend = backend_with(tiny_path, tmp_path)
     try:
         assert backend.yield_cpu_to_the_app() == [], "nothing loaded: nothing to change, nothing loaded for it"
-        models = backend.load_models()
+        loaded = backend.load_models()
+        models = {"roi": loaded.roi, "bt": loaded.bt}
         for llm in {id(m): m for m in models.values()}.values():
             llm.start()
         pids = sorted({m.worker_pid for m in models.values()})
@@ -41,7 +42,8 @@ def test_model_processes_run_below_the_app_and_only_once(tiny_path, tmp_path):
 def test_niceness_zero_leaves_the_model_processes_alone(tiny_path, tmp_path):
     backend = backend_with(tiny_path, tmp_path, model_niceness=0)
     try:
-        models = backend.load_models()
+        loaded = backend.load_models()
+        models = {"roi": loaded.roi, "bt": loaded.bt}
         models["bt"].start()
         assert backend.yield_cpu_to_the_app() == []
         assert os.getpriority(os.PRIO_PROCESS, models["bt"].worker_pid) == os.getpriority(os.PRIO_PROCESS, 0)

@@ -11,7 +11,8 @@ import yaml
 from click.testing import CliRunner
 
 from grove_tui.cli import main
-from grove_tui.services.backend import EngineBackend
+from grove_tui.services.session import GroveSession, ScenarioRequest
+
 
 WORLD, PRESET, SEED = "hospital", "emergency", 3
 PROMPT = "fire alarm: six people in the cafeteria and two in the pharmacy evacuate through the nearest exit"
@@ -34,9 +35,9 @@ def _invoke(args: list[str]) -> None:
 
 @pytest.mark.slow
 def test_app_generate_batch_and_eval_write_byte_identical_bundles(tmp_path):
-    backend = EngineBackend(runs_dir=tmp_path / "runs")
+    backend = GroveSession.for_app(runs_dir=tmp_path / "runs")
     try:
-        app_bundle = backend.generate(WORLD, PRESET, PROMPT, SEED).bundle_dir
+        app_bundle = backend.generate(ScenarioRequest(WORLD, PRESET, PROMPT, SEED), show_loading=True).bundle_dir
     finally:
         backend.close()
 

@@ -13,7 +13,7 @@ from helpers.app import (
 )
 from textual.widgets import ProgressBar, Static
 
-from grove_tui.services.backend import EXPORTERS
+from grove_tui.services.exporting import APP_EXPORTERS as EXPORTERS
 from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.export import ExportProgressScreen, ExportResultScreen
 from grove_tui.tui.screens.inspect import InspectScreen

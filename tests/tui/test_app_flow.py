@@ -21,7 +21,7 @@ from helpers.app import (
 from textual.widgets import Static, TextArea
 
 from grove_tui.tui.app import GroveApp
-from grove_tui.services.backend import EngineBackend
+from grove_tui.services.session import GroveSession
 from grove_tui.tui.screens.export import ExportResultScreen
 from grove_tui.tui.screens.generation import GenerationScreen
 from grove_tui.tui.screens.inspect import InspectScreen
@@ -189,7 +189,7 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
         monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
     else:
         monkeypatch.delenv("GROVE_CACHE_DIR", raising=False)
-    backend = EngineBackend(runs_dir=tmp_path / "runs")
+    backend = GroveSession.for_app(runs_dir=tmp_path / "runs")
     app = GroveApp(backend, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app, "ten patients queue at the pharmacy counter", timeout=400)

@@ -15,7 +15,7 @@ from helpers.app import (
 )
 from textual.widgets import DataTable, Static
 
-from grove_tui.services.backend import ModelStatus
+from grove_tui.services.session import ModelStatus
 from grove_tui.settings import UISettings
 from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.generation import GenerationScreen, StageProgress

@@ -15,7 +15,7 @@ from helpers.app import (
 from textual.widgets import DataTable, OptionList, Static
 
 from grove_tui.tui.app import GroveApp
-from grove_tui.services.backend import EngineBackend
+from grove_tui.services.session import GroveSession
 from grove_tui.settings import load_history, load_settings
 from grove_tui.tui.screens.generation import GenerationScreen
 from grove_tui.tui.screens.help import HelpPage, HelpScreen
@@ -27,7 +27,7 @@ from grove_tui.tui.widgets.prompt_input import PromptInput
 pytestmark = pytest.mark.anyio
 
 
-def make_app(tmp_path: Path, backend: EngineBackend | None = None, **kwargs) -> GroveApp:
+def make_app(tmp_path: Path, backend: GroveSession | None = None, **kwargs) -> GroveApp:
     return GroveApp(backend or ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path), **kwargs)
 
 

@@ -19,6 +19,7 @@ from helpers.app import (
 )
 from textual.widgets import DataTable, Static
 
+from grove_tui.services.session import ScenarioRequest
 from grove_tui.tui.app import GroveApp
 from grove_tui.tui.screens.generation import GenerationScreen
 from grove_tui.tui.screens.help import HelpScreen
@@ -153,7 +154,7 @@ class TestRecentRunsScreen:
         time.tzset()
         backend = fake_llm_backend(tmp_path / "runs")
         for index, seed in enumerate((3, 4)):
-            generated = backend.generate("hospital", "queuing", PROMPT, seed)
+            generated = backend.generate(ScenarioRequest("hospital", "queuing", PROMPT, seed), show_loading=True)
             stamp = 1_790_000_000 + 600 * index
             os.utime(generated.bundle_dir / "scenario.yaml", (stamp, stamp))
 

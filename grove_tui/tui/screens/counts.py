@@ -15,7 +15,7 @@ from textual.screen import ModalScreen
 from textual.widgets import Button, Input, Label, Static
 from textual.worker import get_current_worker
 
-from grove_tui.services.backend import GeneratedScenario
+from grove_tui.services.session import GeneratedScenario
 from grove_tui.tui.screens.generation import describe_failure
 
 if TYPE_CHECKING:

@@ -20,6 +20,7 @@ from textual.widgets import DataTable, Static
 from textual.worker import get_current_worker
 
 from grove_tui.errors import describe_error
+from grove_tui.services.session import ScenarioRequest
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.footer import Footer
 
@@ -327,7 +328,8 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         note = ""
         try:
             generated = self.grove.backend.generate(
-                request.world, request.preset, request.prompt, request.seed, on_event=on_event, cancel=cancel)
+                ScenarioRequest(request.world, request.preset, request.prompt, request.seed), on_event=on_event,
+                cancel=cancel, show_loading=True)
             if request.counts and not cancel.is_set():
                 edits, missing = counts_by_index(list(generated.result.report.get("groups", ())), dict(request.counts))
                 if edits:

@@ -18,7 +18,7 @@ from textual.widgets import Static, TextArea, Tree
 from grove_tui.bt.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
-from grove_tui.services.backend import GeneratedScenario
+from grove_tui.services.session import GeneratedScenario
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
 from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summary
 from grove_tui.tui.widgets.map_raster import Overlay
@@ -506,7 +506,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
             self.post_message(msg.ExportProgress(kind, index, total))
 
         try:
-            files = self.grove.backend.export(self.generated, None, root, on_progress=progress)
+            files = self.grove.backend.export_all(self.generated, None, root, on_progress=progress)
         except Exception as exc:
             self.post_message(msg.ExportFailed(describe_error(exc).text))
             return

@@ -23,7 +23,7 @@ from textual.widgets import Button, Static
 from textual.worker import get_current_worker
 
 from grove_tui.errors import AmbiguousEditError
-from grove_tui.services.backend import GeneratedScenario
+from grove_tui.services.session import GeneratedScenario
 from grove_tui.tui.screens.generation import STAGES, describe_failure
 
 if TYPE_CHECKING:
@@ -138,7 +138,7 @@ several groups, press the number of the one you mean.
     @work(thread=True, exclusive=True, group="refine-read", exit_on_error=False, description="reading the follow-up")
     def read(self, choices: tuple[int, ...]) -> None:
         try:
-            refinement = self.grove.backend.read_refinement(self.generated, self.sentence, choices)
+            refinement = self.grove.backend.read_refinement(self.generated, self.sentence, choices=choices)
         except AmbiguousEditError as exc:
             phrase, options = exc.choices[0]
             self.post_message(self.Asked(phrase, options))

@@ -15,6 +15,7 @@ from textual.widgets import Button, Input, Label, OptionList, Static
 from textual.widgets.option_list import Option
 
 from grove_tui.errors import describe_error
+from grove_tui.services.session import ScenarioRequest
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.map_view import MapView
 from grove_tui.tui.widgets.clipped import ClippedText
@@ -24,7 +25,7 @@ from grove_tui.tui.heap import freeze_heap
 from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
-    from grove_tui.services.backend import WarmUpStatus
+    from grove_tui.services.session import WarmUpStatus
     from grove_tui.tui.app import GroveApp
 
 SEED_DIGITS = 9  # any seed a user types fits numpy's 32-bit seeds
@@ -405,7 +406,8 @@ shows its world, preset, prompt and seed.
     @work(thread=True, exclusive=True, group="reading", exit_on_error=False, description="reading the sentence")
     def check_reading(self, request: Any) -> None:
         try:
-            questions = list(self.grove.backend.unsure(request.world, request.preset, request.prompt, request.seed))
+            questions = list(self.grove.backend.unsure(ScenarioRequest(request.world, request.preset, request.prompt,
+                                                                        request.seed)))
         except Exception:  # a sentence that cannot be read fails in the generation, with its reason shown there
             questions = []
         self.post_message(msg.ReadingChecked(request, questions))

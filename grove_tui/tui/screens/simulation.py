@@ -18,7 +18,7 @@ from textual.worker import get_current_worker
 
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
-from grove_tui.services.backend import GeneratedScenario
+from grove_tui.services.session import GeneratedScenario
 from grove_tui.tui.screens.inspect import base_overlay, busiest_goal
 from grove_tui.tui.screens.counters import CountersScreen
 from grove_tui.tui.screens.sim_controller import MAX_SPEED, SPEEDS, Counters, RunEnd, Snapshot, SimulationController
@@ -598,7 +598,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
         def export(simulation: Any) -> Any:
             # In the simulation thread, which is paused: the run cannot change while it is written.
-            return backend.export(generated, simulation, root, on_progress=progress)
+            return backend.export_all(generated, simulation, root, on_progress=progress)
 
         def reply(result: Any) -> None:
             if isinstance(result, Exception):
