@@ -11,6 +11,11 @@ the app pays for a new sentence. CPU and wall seconds; issue 32 asks under 1 s. 
 times the same planning with another checkout's code (a subprocess importing its grove_tui), in the
 same run, on the worlds both have.
 
+Issue 32, 2026-11-28 11:31, load average 7.5-8.6, `--plan --agents 40 --baseline <checkout of main at
+2047930>` at crowd d373350: a new sentence's planning (warm, the worst world) 1.60 s CPU before, 0.22 s
+after (airport; hospital 1.09-1.10 -> 0.18 s, wall 2.85-3.19 -> 0.37-0.39 s); the first in a process,
+which also loads the kernels and the door graph, 2.06 -> 0.95 s CPU (3.2 s wall at that load).
+
 Spreads --agents people over the hospital's zones (by free area, at least 0.6 m apart, never within
 1.2 m of an exit), sends each zone's people to its nearest exit along that exit's velocity field
 (the emergency preset's FollowVelocityField), and simulates. Every simulated second it checks the

@@ -10,6 +10,20 @@ agent-steps per second and simulated seconds per wall second are printed.
 
 Run by hand (not a test):  python bench/sfm.py [--sizes 100 1000 10000] [--repeat 1]
 Needs `pip install pysocialforce==1.1.2 jupedsim==1.4.2`; a missing peer is reported and skipped.
+
+Issue 32, before and after in one session (2026-11-28 11:15-11:21, 2 cores, load average 11 from other
+engineers' work): `python bench/sfm.py --sizes 1000 10000` in a checkout of main at 2047930 (before, its
+own copy of this bench) between two runs at crowd d17ffad (after). Agent-steps per wall second / per
+CPU-second; JuPedSim 1.4.2 ran in each run and moved by under 10 %:
+
+    N       GROVE before     GROVE after              JuPedSim            after / JuPedSim per CPU-s
+    1,000   141k / 553k      279k-353k / 1.32M-1.40M   92k-97k / 390k-399k  3.3x-3.6x (before 1.4x)
+    10,000  176k / 901k      481k-551k / 1.91M-2.19M   112k-119k / 496k-517k 3.8x-4.2x (before 1.8x)
+
+Top three costs after (share of GROVE's CPU time, one thread): the pair search 27-31 %, the pair terms
+and sums 20-21 %, the per-agent pass (drive, walls, groups, move) 19 %. The wall-clock goals (2M
+agent-steps/s at 10,000 on 2 quiet cores, 1M with one other process busy) could not be measured: the
+load average never fell below 6 in the session.
 """
 
 from __future__ import annotations
