@@ -82,13 +82,11 @@ def _format(value: float) -> str:
 def metrics(bundle: Path, as_json: bool) -> None:
     """Robot (HuNavSim evaluator) and crowd metrics of a simulated bundle, and the sentence's grounding
     report checked on its run; writes metrics.json and grounding.json."""
-    from grove_tui.analysis.bundle_metrics import bundle_metrics
-    from grove_tui.analysis.outcomes import GROUNDING_FILE
     from grove_tui.scenario.report import GroundingReport
 
-    report, path = bundle_metrics(bundle, outcomes=True)
-    grounding_path = bundle / GROUNDING_FILE
-    checked = json.loads(grounding_path.read_text(encoding="utf-8")) if grounding_path.is_file() else None
+    written = GroveSession().metrics(bundle)
+    report, path, checked, grounding_path = written.metrics, written.metrics_file, written.grounding, \
+        written.grounding_file
     if as_json:
         data = report.to_dict()
         if checked is not None:
@@ -121,18 +119,11 @@ def metrics(bundle: Path, as_json: bool) -> None:
 @click.option("--overwrite", is_flag=True, help="Replace --out even when it is a file GROVE did not draw.")
 def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None, overwrite: bool) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
-    from grove_tui.exports.pictures import draw_scenario, render_scenario_text
-    from grove_tui.scenario.bundle import load_bundle_world, load_scenario
-
-    scenario = load_scenario(bundle)
-    world = load_bundle_world(bundle, scenario)
     if out_path is None:
         console = Console()
-        console.print(render_scenario_text(world, scenario, width or console.width))
+        console.print(GroveSession().picture(bundle, width=width or console.width))
         return
-    csv = bundle / "trajectories.csv"
-    written = draw_scenario(world, scenario, bundle, out_path,
-                            trajectories=csv if trajectories and csv.exists() else None, overwrite=overwrite)
+    written = GroveSession().picture(bundle, out_path, trajectories=trajectories, overwrite=overwrite)
     click.echo(str(written))
 
 

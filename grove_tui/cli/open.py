@@ -13,11 +13,11 @@ import click
 @click.pass_context
 def open_command(ctx: click.Context, bundle: Path) -> None:
     """Open a saved scenario bundle (e.g. one under the runs folder) in the app's inspect screen."""
-    from grove_tui.scenario.bundle import load_bundle
+    from grove_tui.services.session import GroveSession
 
-    # Check the bundle before the app takes the terminal: a wrong path is the usual one-line error
-    # (BundleError, exit 2, printed by the `grove` group), not a failure inside the app.
-    load_bundle(bundle)
+    # Check the bundle (and its world) before the app takes the terminal: a wrong path is the usual
+    # one-line error (BundleError, exit 2, printed by the `grove` group), not a failure inside the app.
+    GroveSession().open_bundle(bundle)
     from grove_tui.cli import open_app
 
     options = ctx.obj or {}

@@ -42,7 +42,10 @@ from grove_tui.errors import (
 
 if TYPE_CHECKING:
     from grove_tui.analysis.evaluation import CaseResult, EvalCase
+    from rich.text import Text
+
     from grove_tui.analysis.live_metrics import LiveMetrics
+    from grove_tui.analysis.metrics import MetricsReport
     from grove_tui.analysis.outcomes import OutcomeChecker
     from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
@@ -178,6 +181,16 @@ class SimulationSummary:
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
+
+
+@dataclass(frozen=True)
+class BundleMetrics:
+    """What `GroveSession.metrics` wrote: metrics.json, and grounding.json when the bundle has a report."""
+
+    metrics: MetricsReport
+    metrics_file: Path
+    grounding: dict[str, Any] | None = None  # grounding.json as written (JSON; scenario.report.GroundingReport)
+    grounding_file: Path | None = None
 
 
 @dataclass(frozen=True)
@@ -908,6 +921,35 @@ class GroveSession:
         counters = asdict(frame.counters) if is_dataclass(frame.counters) else {"value": str(frame.counters)}
         return SimulationSummary(round(float(frame.t), 3), round(wall, 3), counters,
                                  int(crowd.get("wall_penetrations", 0)), crowd.get("goal_reach_rate"))
+
+    def metrics(self, bundle: str | Path) -> BundleMetrics:
+        """A simulated bundle's robot and crowd metrics and its grounding report checked on the run, written
+        as metrics.json and grounding.json (`grove metrics`)."""
+        from grove_tui.analysis.bundle_metrics import bundle_metrics
+        from grove_tui.analysis.outcomes import GROUNDING_FILE
+
+        report, path = bundle_metrics(Path(bundle), outcomes=True)
+        grounding = Path(bundle) / GROUNDING_FILE
+        if not grounding.is_file():  # a bundle without a planned report (generated before it, or imported)
+            return BundleMetrics(report, Path(path))
+        return BundleMetrics(report, Path(path), json.loads(grounding.read_text(encoding="utf-8")), grounding)
+
+    def picture(self, bundle: str | Path, out: str | Path | None = None, *, trajectories: bool = True,
+                width: int = 80, overwrite: bool = False) -> Path | Text:
+        """A picture of a bundle's scenario (map, zones, spawns, goals, waypoints, fields, and the run's
+        trajectories when it has them and `trajectories`): a PNG, SVG or PDF at `out` (its path), or
+        without `out` a drawing `width` columns wide for the terminal."""
+        from grove_tui.exports.pictures import draw_scenario, render_scenario_text
+        from grove_tui.scenario.bundle import load_bundle_world, load_scenario
+
+        bundle = Path(bundle)
+        scenario = load_scenario(bundle)
+        world = load_bundle_world(bundle, scenario)
+        if out is None:
+            return render_scenario_text(world, scenario, width)
+        csv = bundle / "trajectories.csv"
+        return draw_scenario(world, scenario, bundle, out, trajectories=csv if trajectories and csv.exists() else None,
+                             overwrite=overwrite)
 
     # exports ----------------------------------------------------------------------------------------------
     def export(self, kind: str, bundle: str | Path, out: str | Path, **options: Any) -> Any:
