@@ -3,13 +3,18 @@
 from __future__ import annotations
 
 import sys
+from typing import TYPE_CHECKING
 
 import click
 from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
-from grove_tui.world import World, WorldError, list_worlds, load_world, parse_world, read_world_file
+from grove_tui.errors import WorldError
+from grove_tui.services.session import GroveSession
+
+if TYPE_CHECKING:
+    from grove_tui.services.session import World  # the type the session's load_world returns
 
 
 def _console() -> Console:
@@ -35,9 +40,10 @@ def list_command() -> None:
     for column in ("name", "size", "zones", "doors", "exits", "entities", "description"):
         table.add_column(column, overflow="fold", no_wrap=column != "description")
     failures = []
-    for name in list_worlds():
+    session = GroveSession()
+    for name in session.list_worlds():
         try:
-            world = load_world(name)
+            world = session.load_world(name)
         except WorldError as error:
             failures.append(str(error))
             table.add_row(name, "", "", "", "", "", Text("does not load; run `grove worlds check`", style="red"))
@@ -56,18 +62,17 @@ def list_command() -> None:
 @click.option("--rois/--no-rois", default=False, help="Also list every zone, door and entity by name.")
 def show_command(name: str, width: int | None, height: int | None, rois: bool) -> None:
     """Draw a world (a shipped NAME or a path): walls, doors, exits, zone labels, entities."""
-    from grove_tui.world.render import legend, render_world_text
-
     console = _console()
-    world = load_world(name)
-    columns = width or console.width
+    session = GroveSession()
+    world = session.load_world(name)
+    drawing, legend = session.world_map(world, width or console.width, height)
     console.print(Text.assemble((world.name, "bold"), f"  {_size(world)}, {len(world.zones)} zones, "
                                 f"{len(world.doors())} doors ({len(world.exits())} exits), "
                                 f"{len(world.entities())} entities"))
     if world.description:
         console.print(Text(world.description, style="dim"))
-    console.print(render_world_text(world, columns, height), crop=True)
-    console.print(legend(world))
+    console.print(drawing, crop=True)
+    console.print(legend)
     if rois:
         console.print(_roi_table(world))
 
@@ -95,21 +100,19 @@ def check_command(files: tuple[str, ...]) -> None:
     regular file, over the size limit, not UTF-8). Every file is still checked; the highest status wins.
     """
     from grove_tui.errors import EXIT_BAD_INPUT, print_error
-    from grove_tui.world.loader import MAX_WORLD_FILE_BYTES
 
     console = _console()
+    session = GroveSession()
     total = unreadable = 0
     for item in files:
         try:
-            path, text = read_world_file(item)
+            # One parse reports every problem (a 20,000-zone world parsed twice took twice as long).
+            path, world, problems = session.check_world_file(item)
         except WorldError as error:
             # Nothing to lint: one `error:` line naming the file, and the others are still checked.
             unreadable += 1
-            print_error(WorldError(error.message, hint="give readable world YAML files (regular, UTF-8, at most "
-                                   f"{MAX_WORLD_FILE_BYTES >> 20} MB) or shipped names (grove worlds list)"))
+            print_error(error)
             continue
-        # One parse: parse_world reports every problem (a 20,000-zone world parsed twice took twice as long).
-        world, problems = parse_world(text, str(path))
         if world is not None:  # parse_world returns a world only when it found no problem
             console.print(Text.assemble(("ok ", "bold green"), f"{path}: {len(world.zones)} zones, "
                                         f"{len(world.doors())} doors, {len(world.entities())} entities"))

@@ -42,6 +42,7 @@ from grove_tui.errors import (
 
 if TYPE_CHECKING:
     from grove_tui.analysis.evaluation import CaseResult, EvalCase
+    from rich.table import Table
     from rich.text import Text
 
     from grove_tui.analysis.live_metrics import LiveMetrics
@@ -59,6 +60,7 @@ if TYPE_CHECKING:
     from grove_tui.services.runs import RunInfo
     from grove_tui.simulation.simulation import Simulation
     from grove_tui.world import World
+    from grove_tui.world.loader import WorldProblem
 
 LLMFactory = Callable[[str, Any], Any]  # (role, ModelChoice) -> a LocalLLM-like object
 RetrieverFactory = Callable[[], Any]
@@ -309,6 +311,29 @@ class GroveSession:
             with self._lock:
                 self._worlds[name] = world
         return world
+
+    def check_world_file(self, name_or_path: str) -> tuple[Path, World | None, list[WorldProblem]]:
+        """A world YAML (or a shipped name) checked in one parse: (its path, the World when it has no
+        problem, every problem with its line). A file that cannot be read at all (missing, not a regular
+        file, over the size limit, not UTF-8) raises WorldError, whose hint says what a world file must be."""
+        from grove_tui.errors import WorldError
+        from grove_tui.world import parse_world, read_world_file
+        from grove_tui.world.loader import MAX_WORLD_FILE_BYTES
+
+        try:
+            path, text = read_world_file(name_or_path)
+        except WorldError as error:
+            raise WorldError(error.message, hint="give readable world YAML files (regular, UTF-8, at most "
+                             f"{MAX_WORLD_FILE_BYTES >> 20} MB) or shipped names (grove worlds list)") from None
+        world, problems = parse_world(text, str(path))
+        return path, world, problems
+
+    def world_map(self, world: World, width: int, height: int | None = None) -> tuple[Text, Table]:
+        """A world drawn for the terminal `width` columns wide (walls, doors, exits, zone labels,
+        entities), and its legend."""
+        from grove_tui.world.render import legend, render_world_text
+
+        return render_world_text(world, width, height), legend(world)
 
     def load_preset(self, name: str) -> Preset:
         from grove_tui.generation.presets import load_preset
