@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import click
 
-from grove_tui.crowd.sfm import SFM_MODELS
+from grove_tui.services.session import GroveSession
+from grove_tui.settings import PEDESTRIAN_MODELS as SFM_MODELS
 
 
 @click.group()
@@ -21,15 +22,7 @@ def validate() -> None:
               help="Run the building tests (9-12) in JuPedSim too, beside GROVE, when JuPedSim is installed.")
 def rimea(model: str, tests: tuple[int, ...], jupedsim: bool) -> None:
     """Run RiMEA tests 1, 4, 5, 6, 7, 9, 10, 11, 12 and print the table; exit 1 when one of GROVE's fails."""
-    from grove_tui.analysis.rimea import TESTS, jupedsim_version, run_rimea
-    from grove_tui.errors import BadInputError
-
-    unknown = [t for t in tests if t not in TESTS]
-    if unknown:
-        raise BadInputError(f"RiMEA test {unknown[0]} is not implemented",
-                            hint=f"implemented: {', '.join(map(str, TESTS))}")
-    version = jupedsim_version() if jupedsim else None
-    rows = run_rimea(model, tests or tuple(TESTS), jupedsim=version is not None)
+    rows, version = GroveSession().validate_rimea(model, tests, jupedsim=jupedsim)
     click.echo(f"RiMEA tests, model {model}, dt 0.05 s"
                + (f"; JuPedSim {version} SocialForceModel at dt 0.01 s beside the building tests" if version
                   else "; no JuPedSim column (--no-jupedsim)" if not jupedsim
@@ -59,17 +52,15 @@ def empirical(models: tuple[str, ...], checks: tuple[str, ...]) -> None:
     Every model reports; the command exits 1 only when the default model ("grove") fails a check.
     The published values and their sources: grove_tui/analysis/data/empirical.yaml.
     """
-    from grove_tui.analysis.empirical import CHECKS, run_empirical
-
+    session = GroveSession()
     chosen = models or SFM_MODELS
-    names = checks or tuple(CHECKS)
     failed_default = False
     for model in chosen:
         required = model == SFM_MODELS[0]
         click.echo(f"Empirical checks, model {model}, dt 0.05 s"
                    + (" (the default model: it must pass)" if required else " (reported, not required)"))
         click.echo(f"{'check':<11} {'what':<38} {'result':<6} measured   [criterion]")
-        for r in run_empirical(model, names):
+        for r in session.validate_empirical(model, checks):
             click.echo(f"{r.check:<11} {r.name:<38} {'pass' if r.passed else 'FAIL':<6} {r.measured}   [{r.criterion}]")
             failed_default |= required and not r.passed
         click.echo("")

@@ -41,6 +41,7 @@ from grove_tui.errors import (
 )
 
 if TYPE_CHECKING:
+    from grove_tui.analysis.empirical import EmpiricalResult
     from grove_tui.analysis.evaluation import CaseResult, EvalCase
     from rich.table import Table
     from rich.text import Text
@@ -48,6 +49,7 @@ if TYPE_CHECKING:
     from grove_tui.analysis.live_metrics import LiveMetrics
     from grove_tui.analysis.metrics import MetricsReport
     from grove_tui.analysis.outcomes import OutcomeChecker
+    from grove_tui.analysis.rimea import RimeaResult
     from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
@@ -975,6 +977,27 @@ class GroveSession:
         csv = bundle / "trajectories.csv"
         return draw_scenario(world, scenario, bundle, out, trajectories=csv if trajectories and csv.exists() else None,
                              overwrite=overwrite)
+
+    # validation of the crowd ------------------------------------------------------------------------------
+    def validate_rimea(self, model: str, tests: Sequence[int] = (), *,
+                       jupedsim: bool = True) -> tuple[list[tuple[RimeaResult, RimeaResult | None]], str | None]:
+        """The RiMEA verification tests (all when `tests` is empty) on the pedestrian `model`: each GROVE
+        result with JuPedSim's beside it for the building tests, and JuPedSim's version (None when it is
+        not asked for or not installed)."""
+        from grove_tui.analysis.rimea import TESTS, jupedsim_version, run_rimea
+
+        unknown = [t for t in tests if t not in TESTS]
+        if unknown:
+            raise BadInputError(f"RiMEA test {unknown[0]} is not implemented",
+                                hint=f"implemented: {', '.join(map(str, TESTS))}")
+        version = jupedsim_version() if jupedsim else None
+        return run_rimea(model, tuple(tests) or tuple(TESTS), jupedsim=version is not None), version
+
+    def validate_empirical(self, model: str, checks: Sequence[str] = ()) -> list[EmpiricalResult]:
+        """The crowd of pedestrian `model` against measured crowds (all checks when `checks` is empty)."""
+        from grove_tui.analysis.empirical import CHECKS, run_empirical
+
+        return run_empirical(model, tuple(checks) or tuple(CHECKS))
 
     # exports ----------------------------------------------------------------------------------------------
     def export(self, kind: str, bundle: str | Path, out: str | Path, **options: Any) -> Any:
