@@ -8,8 +8,6 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from grove_tui.errors import BadInputError, ModelError
-
 
 def _console() -> Console:
     # click.testing.CliRunner swaps sys.stdout; bind to the current one each call.
@@ -29,11 +27,13 @@ def models() -> None:
 @click.pass_context
 def list_command(ctx: click.Context) -> None:
     """Show every model found (models dir, embedded, chosen paths) and the role using it."""
+    from grove_tui.services.session import GroveSession
     from grove_tui.settings import models_dir
-    from grove_tui.llm.registry import list_models
 
     options = (ctx.find_root().obj or {}) if ctx.find_root().obj is not None else {}
-    found, choices = list_models(options.get("roi_model"), options.get("bt_model"), options.get("model"))
+    session = GroveSession(model=options.get("model"), roi_model=options.get("roi_model"),
+                           bt_model=options.get("bt_model"))
+    found, choices = session.list_models()
     table = Table(title=f"GGUF models (models dir: {models_dir()})")
     for column in ("roles", "file", "architecture", "quantization", "size", "context", "found via"):
         table.add_column(column)
@@ -60,14 +60,13 @@ def list_command(ctx: click.Context) -> None:
 @click.option("--force", is_flag=True, help="Download again even if the file is already there.")
 def pull_command(name: str, endpoint: str | None, force: bool) -> None:
     """Download an official Qwen3 GGUF (qwen3-0.6b, qwen3-1.7b, qwen3-4b) into the models directory."""
-    from grove_tui.llm.pull import CATALOG, download_url, pull_model
+    from grove_tui.services.session import GroveSession
 
-    entry = CATALOG.get(name)
-    if entry is None:
-        raise BadInputError(f"unknown model {name!r}; available: {', '.join(CATALOG)}")
     console = _console()
-    console.print(f"downloading {download_url(entry, endpoint)} ({_size(entry.size)}) ...")
     last_shown = [-1]
+
+    def start(url: str, size: int) -> None:
+        console.print(f"downloading {url} ({_size(size)}) ...")
 
     def progress(received: int, total: int) -> None:
         percent = received * 100 // max(total, 1)
@@ -75,5 +74,5 @@ def pull_command(name: str, endpoint: str | None, force: bool) -> None:
             last_shown[0] = percent
             console.print(f"  {percent}%")
 
-    path = pull_model(name, endpoint=endpoint, force=force, on_progress=progress)
+    path = GroveSession().pull_model(name, endpoint=endpoint, force=force, on_start=start, on_progress=progress)
     console.print(f"verified (size, sha256, GGUF header) and saved: {path}")

@@ -55,7 +55,7 @@ if TYPE_CHECKING:
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.refine import Refinement
     from grove_tui.generation.presets import Preset
-    from grove_tui.llm.registry import ModelChoice
+    from grove_tui.llm.registry import FoundModel, ModelChoice
     from grove_tui.scenario.model import Scenario
     from grove_tui.services.exporting import ExportedFile, Exporter
     from grove_tui.services.jobs import BatchJob, JobProblem, Variation
@@ -389,6 +389,27 @@ class GroveSession:
         from grove_tui.llm.registry import resolve_models
 
         return dict(resolve_models(self._cli_roi, self._cli_bt, self._cli_model))
+
+    def list_models(self) -> tuple[list[FoundModel], dict[str, ModelChoice] | str]:
+        """Every model in sight (models dir, embedded, this session's chosen paths) with its metadata and
+        the roles using it; the role resolution, or the text of the error that stopped it (`grove models list`)."""
+        from grove_tui.llm.registry import list_models
+
+        return list_models(self._cli_roi, self._cli_bt, self._cli_model)
+
+    def pull_model(self, name: str, *, endpoint: str | None = None, force: bool = False,
+                   on_start: Callable[[str, int], None] | None = None,
+                   on_progress: Callable[[int, int], None] | None = None) -> Path:
+        """Download an official catalog GGUF into the models dir, verified (size, sha256, GGUF header);
+        `on_start(url, bytes)` before the download, `on_progress(received, total)` during it."""
+        from grove_tui.llm.pull import CATALOG, download_url, pull_model
+
+        entry = CATALOG.get(name)
+        if entry is None:
+            raise BadInputError(f"unknown model {name!r}; available: {', '.join(CATALOG)}")
+        if on_start is not None:
+            on_start(download_url(entry, endpoint), entry.size)
+        return pull_model(name, endpoint=endpoint, force=force, on_progress=on_progress)
 
     def model_status(self) -> list[ModelStatus]:
         """Each role's file and whether it is loaded; a role that cannot be resolved shows its error."""
