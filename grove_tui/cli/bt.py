@@ -18,13 +18,12 @@ def bt() -> None:
 @click.option("--preset", default=None, help="Only the nodes the model may use in this preset.")
 def manifest(as_list: bool, preset: str | None) -> None:
     """Print every node as a Groot2/BehaviorTree.CPP v4 TreeNodesModel."""
-    from grove_tui.bt.manifest import NODES, nodes_for_preset, treenodes_model_xml
+    from grove_tui.services.session import GroveSession
 
     if not as_list and preset is None:
-        click.echo(treenodes_model_xml(), nl=False)
+        click.echo(GroveSession().node_manifest_xml(), nl=False)
         return
-    specs = nodes_for_preset(preset) if preset else list(NODES.values())
-    for spec in specs:
+    for spec in GroveSession().node_manifest(preset):
         ports = ", ".join(f"{p.name}{'*' if p.auto else ''}:{p.type}" for p in spec.ports)
         nav = " navigates" if spec.navigates else ""
         click.echo(f"{spec.name:24} {spec.category:9} {spec.origin:8}{nav}  ({ports})")
@@ -39,20 +38,19 @@ def validate(files: tuple[str, ...]) -> None:
     file could not be read at all (missing, a folder, device or pipe, over the size limit). Every file
     is still checked; the highest status wins.
     """
-    from grove_tui.bt.xml import MAX_BYTES, check_tree_bytes, read_file_bytes
     from grove_tui.errors import EXIT_BAD_INPUT, BTError, print_error
+    from grove_tui.services.session import GroveSession
 
+    session = GroveSession()
     bad = unreadable = 0
     for path in files:
         try:
-            data = read_file_bytes(path)
+            problems = session.check_tree_file(path)
         except BTError as error:
             # Nothing to check: one `error:` line naming the file ("PATH: does not exist").
             unreadable += 1
-            print_error(BTError(error.message,
-                                hint=f"give readable tree XML files (regular files of at most {MAX_BYTES:,} bytes)"))
+            print_error(error)
             continue
-        problems = check_tree_bytes(path, data)
         if problems:
             bad += 1
             for problem in problems:

@@ -51,6 +51,8 @@ if TYPE_CHECKING:
     from grove_tui.analysis.outcomes import OutcomeChecker
     from grove_tui.analysis.rimea import RimeaResult
     from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
+    from grove_tui.bt.manifest import NodeSpec
+    from grove_tui.bt.xml import BTProblem
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.refine import Refinement
@@ -998,6 +1000,32 @@ class GroveSession:
         csv = bundle / "trajectories.csv"
         return draw_scenario(world, scenario, bundle, out, trajectories=csv if trajectories and csv.exists() else None,
                              overwrite=overwrite)
+
+    # behavior trees -----------------------------------------------------------------------------------------
+    def node_manifest(self, preset: str | None = None) -> list[NodeSpec]:
+        """Every behavior-tree node GROVE knows, or only those the model may use under `preset`."""
+        from grove_tui.bt.manifest import NODES, nodes_for_preset
+
+        return nodes_for_preset(preset) if preset else list(NODES.values())
+
+    def node_manifest_xml(self) -> str:
+        """Every node as a Groot2 / BehaviorTree.CPP v4 TreeNodesModel document."""
+        from grove_tui.bt.manifest import treenodes_model_xml
+
+        return treenodes_model_xml()
+
+    def check_tree_file(self, path: str | Path) -> list[BTProblem]:
+        """The problems of a behavior-tree XML file against the manifest, each with its line ([] when it
+        is fine). A file that cannot be read at all raises BTError, whose hint says what a tree file must be."""
+        from grove_tui.bt.xml import MAX_BYTES, check_tree_bytes, read_file_bytes
+        from grove_tui.errors import BTError
+
+        try:
+            data = read_file_bytes(path)
+        except BTError as error:
+            raise BTError(error.message,
+                          hint=f"give readable tree XML files (regular files of at most {MAX_BYTES:,} bytes)") from None
+        return check_tree_bytes(path, data)
 
     # validation of the crowd ------------------------------------------------------------------------------
     def validate_rimea(self, model: str, tests: Sequence[int] = (), *,
