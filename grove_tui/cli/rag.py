@@ -23,18 +23,14 @@ def rag() -> None:
 @click.option("--check", is_flag=True, help="Only report documents that are missing or stale; exit 1 if any.")
 def sync(node_db: Path | None, check: bool) -> None:
     """Generate node_db/nodes/<Name>.md from the node manifest (and node_db/notes.yaml)."""
-    from grove_tui import paths
-    from grove_tui.generation.node_docs import check_node_documents, sync_node_documents
+    from grove_tui.services.session import GroveSession
 
-    root = node_db or paths.node_db_dir()
+    written, removed, problems = GroveSession().sync_node_documents(node_db, check_only=check)
     if check:
-        problems = check_node_documents(root)
         for problem in problems:
             click.echo(problem)
         click.echo(f"{len(problems)} problem(s)" if problems else "node database matches the manifest")
         sys.exit(1 if problems else 0)
-    written, removed = sync_node_documents(root)
-    problems = check_node_documents(root)
     click.echo(f"wrote {len(written)} document(s){': ' + ', '.join(written) if written else ''}")
     if removed:
         click.echo(f"removed {len(removed)} document(s) of nodes no longer in the manifest: {', '.join(removed)}")
@@ -49,9 +45,9 @@ def sync(node_db: Path | None, check: bool) -> None:
 @click.option("--force", is_flag=True, help="Rebuild even when the index is up to date.")
 def build(node_db: Path | None, index_dir: Path | None, force: bool) -> None:
     """Build (or confirm) the retrieval index."""
-    from grove_tui.generation.retrieval import NodeRetriever
+    from grove_tui.services.session import GroveSession
 
-    retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
+    retriever = GroveSession().node_retriever(node_db, index_dir)
     state = retriever.ensure_index(force=force)
     verb = "built" if state.built else "up to date"
     click.echo(f"{verb}: {retriever.index_dir} ({state.documents} documents, {state.vectors} vectors, "
@@ -67,9 +63,9 @@ def build(node_db: Path | None, index_dir: Path | None, force: bool) -> None:
 @_INDEX_OPTION
 def query(prompt: str, preset: str | None, k: int, show: bool, node_db: Path | None, index_dir: Path | None) -> None:
     """Show the documents retrieved for PROMPT."""
-    from grove_tui.generation.retrieval import NodeRetriever
+    from grove_tui.services.session import GroveSession
 
-    retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
+    retriever = GroveSession().node_retriever(node_db, index_dir)
     results = retriever.retrieve(prompt, preset, k)
     for rank, item in enumerate(results, 1):
         uses = f"  uses {', '.join(item.nodes)}" if item.kind == "template" else ""
@@ -87,11 +83,10 @@ def query(prompt: str, preset: str | None, k: int, show: bool, node_db: Path | N
 @_INDEX_OPTION
 def evaluate_command(k: int, cases: Path | None, verbose: bool, node_db: Path | None, index_dir: Path | None) -> None:
     """Recall@k of retrieval on the labelled set, per preset and overall."""
-    from grove_tui.generation.retrieval import NodeRetriever, evaluate, load_eval_set
+    from grove_tui.services.session import GroveSession
 
-    retriever = NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
-    labelled = load_eval_set(cases if cases is not None else retriever.node_db_dir / "eval.yaml")
-    result = evaluate(retriever, labelled, k)
+    session = GroveSession()
+    result = session.evaluate_retrieval(session.node_retriever(node_db, index_dir), k, cases)
     for preset in result.presets():
         count = sum(1 for case, _, _ in result.per_case if case.preset == preset)
         click.echo(f"{preset:10s} recall@{k} = {result.recall(preset):.3f}  ({count} prompts)")

@@ -56,6 +56,8 @@ if TYPE_CHECKING:
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.refine import Refinement
+    from grove_tui.generation.retrieval import EvalResult as RetrievalEval
+    from grove_tui.generation.retrieval import NodeRetriever
     from grove_tui.generation.presets import Preset
     from grove_tui.llm.registry import FoundModel, ModelChoice
     from grove_tui.scenario.model import Scenario
@@ -663,6 +665,34 @@ class GroveSession:
 
                     self._retriever = NodeRetriever()
             return self._retriever
+
+    def node_retriever(self, node_db: Path | None = None, index_dir: Path | None = None) -> NodeRetriever:
+        """A retriever over a node database and its index (default: the shipped node_db, the cache's
+        index), built anew: `grove rag build|query|eval` point it at other folders."""
+        from grove_tui.generation.retrieval import NodeRetriever
+
+        return NodeRetriever(node_db_dir=node_db, index_dir=index_dir)
+
+    def sync_node_documents(self, node_db: Path | None = None, *,
+                            check_only: bool = False) -> tuple[list[str], list[str], list[str]]:
+        """node_db/nodes/<Name>.md written from the node manifest (nothing written with `check_only`):
+        (documents written, documents removed, problems left)."""
+        from grove_tui import paths
+        from grove_tui.generation.node_docs import check_node_documents, sync_node_documents
+
+        root = node_db or paths.node_db_dir()
+        if check_only:
+            return [], [], check_node_documents(root)
+        written, removed = sync_node_documents(root)
+        return written, removed, check_node_documents(root)
+
+    def evaluate_retrieval(self, retriever: NodeRetriever, k: int = 8,
+                           cases: Path | None = None) -> RetrievalEval:
+        """Recall@k of `retriever` on a labelled set (default: its node_db's eval.yaml)."""
+        from grove_tui.generation.retrieval import evaluate, load_eval_set
+
+        labelled = load_eval_set(cases if cases is not None else retriever.node_db_dir / "eval.yaml")
+        return evaluate(retriever, labelled, k)
 
     def loaded_models(self) -> list[Any]:
         """The model instances loaded so far (each once), without loading any."""
