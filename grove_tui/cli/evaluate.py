@@ -25,16 +25,11 @@ from rich.table import Table
 def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_ids: str | None,
              seconds: float) -> None:
     """Prompt alignment, plausibility and cost of every case, for GROVE and the baselines."""
-    from grove_tui.analysis.evaluation import (
-        grounding_score,
-        load_suite,
-        plausibility_score,
-        summarize,
-        write_results,
-    )
+    from grove_tui.files import absolute_path
+    from grove_tui.services.session import GroveSession
 
     err = Console(stderr=True, highlight=False)
-    cases = load_suite(suite)
+    cases = GroveSession().load_eval_suite(suite)
     if case_ids:
         wanted = [c.strip() for c in case_ids.split(",") if c.strip()]
         unknown = sorted(set(wanted) - {c.id for c in cases})
@@ -46,20 +41,20 @@ def evaluate(suite: Path, out_dir: Path, model: str | None, methods: str, case_i
         status = f"[red]failed: {result.error}[/]" if result.error else "ok"
         err.print(f"[{index}/{total}] {result.case.id} {result.method}: {status}")
 
-    from grove_tui.services.session import GroveSession
-
+    args = sys.argv[sys.argv.index("eval") + 1:] if "eval" in sys.argv else [str(suite), "--out", str(out_dir)]
+    command = "grove eval " + " ".join(shlex.quote(a) for a in args)
     with GroveSession(bt_model=model) as session:
         results = session.evaluate(cases, out_dir, methods=[m.strip() for m in methods.split(",") if m.strip()],
-                                   sim_seconds=seconds, on_progress=progress)
-    args = sys.argv[sys.argv.index("eval") + 1:] if "eval" in sys.argv else [str(suite), "--out", str(out_dir)]
-    paths = write_results(results, out_dir, command="grove eval " + " ".join(shlex.quote(a) for a in args))
+                                   sim_seconds=seconds, command=command, on_progress=progress)
+        summary = session.evaluation_summary(results)
     table = Table(title="GROVE vs baselines (means per preset)")
     for col in ("preset", "method", "grounding", "plausibility", "wall pen.", "prompt tokens", "failed"):
         table.add_column(col)
-    for (preset, method), row in sorted(summarize(results).items()):
-        table.add_row(preset, method, f"{grounding_score(row):.2f}", f"{plausibility_score(row):.2f}",
+    for line in summary:
+        row = line.means
+        table.add_row(line.preset, line.method, f"{line.grounding:.2f}", f"{line.plausibility:.2f}",
                       f"{row.get('wall_penetrations', float('nan')):.1f}", f"{row.get('prompt_tokens', 0):.0f}",
                       f"{row.get('failed', 0):.2f}")
     Console().print(table)
-    for path in paths:
-        click.echo(str(path))
+    for name in ("results.csv", "RESULTS.md"):  # what evaluate wrote
+        click.echo(str(absolute_path(Path(out_dir) / name)))

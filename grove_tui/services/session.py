@@ -202,6 +202,17 @@ class BundleMetrics:
 
 
 @dataclass(frozen=True)
+class EvaluationRow:
+    """One (preset, method) line of an evaluation's summary."""
+
+    preset: str
+    method: str
+    grounding: float
+    plausibility: float
+    means: dict[str, float]  # every score column's mean (analysis.evaluation.summarize)
+
+
+@dataclass(frozen=True)
 class JobOutcome:
     """One batch job: its bundle, or the error that stopped it (the batch goes on)."""
 
@@ -1220,10 +1231,24 @@ class GroveSession:
         return outcomes
 
     # evaluation -------------------------------------------------------------------------------------------
+    def load_eval_suite(self, path: str | Path) -> list[EvalCase]:
+        """The cases of an evaluation suite (YAML: world, preset, prompt, seed, what to expect)."""
+        from grove_tui.analysis.evaluation import load_suite
+
+        return load_suite(path)
+
+    def evaluation_summary(self, results: Sequence[CaseResult]) -> list[EvaluationRow]:
+        """Per (preset, method), sorted: the grounding and plausibility scores and the mean of every column."""
+        from grove_tui.analysis.evaluation import grounding_score, plausibility_score, summarize
+
+        return [EvaluationRow(preset, method, grounding_score(row), plausibility_score(row), row)
+                for (preset, method), row in sorted(summarize(results).items())]
+
     def evaluate(self, cases: Sequence[EvalCase], out_dir: str | Path, *, methods: Iterable[str] | None = None,
-                 sim_seconds: float = 30.0,
+                 sim_seconds: float = 30.0, command: str = "",
                  on_progress: Callable[[int, int, CaseResult], None] | None = None) -> list[CaseResult]:
-        """Generate, simulate and score every case with every method; bundles are kept under out_dir.
+        """Generate, simulate and score every case with every method; bundles are kept under out_dir, with
+        results.csv and RESULTS.md (`command`: how the run was asked for, recorded in RESULTS.md).
 
         `grove` and `vanilla` generate through `generate` (so their bundles are those of `grove generate`
         for the same request); `no-planner` and `decoupled` rewrite GROVE's bundle (analysis.evaluation).
@@ -1290,7 +1315,7 @@ class GroveSession:
                 results.append(scored)
                 if on_progress is not None:
                     on_progress(index, len(cases), scored)
-        write_results(results, out)
+        write_results(results, out, command=command)
         return results
 
 
