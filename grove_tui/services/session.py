@@ -50,7 +50,7 @@ if TYPE_CHECKING:
     from grove_tui.analysis.metrics import MetricsReport
     from grove_tui.analysis.outcomes import OutcomeChecker
     from grove_tui.analysis.rimea import RimeaResult
-    from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
+    from grove_tui.analysis.understanding import ReadingScore, ScenarioScore, UnderstandingCase
     from grove_tui.bt.manifest import NodeSpec
     from grove_tui.bt.xml import BTProblem
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
@@ -210,6 +210,16 @@ class EvaluationRow:
     grounding: float
     plausibility: float
     means: dict[str, float]  # every score column's mean (analysis.evaluation.summarize)
+
+
+@dataclass(frozen=True)
+class UnderstandingReport:
+    """What `GroveSession.understanding_report` wrote and its tables: field -> (passed, scored)."""
+
+    paths: list[Path]
+    reading: dict[str, tuple[int, int]]
+    scenarios: dict[str, tuple[int, int]]
+    below_the_bar: list[str]  # the must-show fields that miss their bar, as readable lines
 
 
 @dataclass(frozen=True)
@@ -1318,6 +1328,39 @@ class GroveSession:
         write_results(results, out, command=command)
         return results
 
+
+    def load_understanding_cases(self, path: str | Path) -> list[UnderstandingCase]:
+        """The labelled prompts of an understanding suite (what each sentence asks, field by field)."""
+        from grove_tui.analysis.understanding import load_cases
+
+        return load_cases(path)
+
+    def read_cases(self, cases: Sequence[UnderstandingCase]) -> list[ReadingScore]:
+        """Every case's prompt read by the reader (no model) and scored field by field."""
+        from grove_tui.analysis.understanding import run_reading
+
+        return run_reading(cases)
+
+    def understanding_sample(self, cases: Sequence[UnderstandingCase], count: int) -> list[UnderstandingCase]:
+        """`count` cases spread over the suite's classes and worlds, to generate and score with the model."""
+        from grove_tui.analysis.understanding import sample_cases
+
+        return sample_cases(cases, count)
+
+    def understanding_report(self, reading: Sequence[ReadingScore], scenarios: Sequence[ScenarioScore],
+                             out_dir: str | Path, command: str = "") -> UnderstandingReport:
+        """The results of an understanding run written under `out_dir`, and their summary tables."""
+        from grove_tui.analysis.understanding import (
+            below_threshold,
+            summarize_reading,
+            summarize_scenarios,
+            write_results,
+        )
+
+        paths = write_results(reading, scenarios, out_dir, command=command)
+        by_field = summarize_reading(reading)
+        return UnderstandingReport(paths, by_field, summarize_scenarios(scenarios) if scenarios else {},
+                                   below_threshold(by_field))
 
     def understand(self, cases: Sequence[UnderstandingCase], out_dir: str | Path, *,
                    on_progress: Callable[[int, int, ScenarioScore], None] | None = None) -> list[ScenarioScore]:
