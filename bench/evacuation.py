@@ -32,8 +32,8 @@ import shapely
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.bt.leaves.grove import EXIT_RADIUS  # noqa: E402
-from grove_tui.bt.xml import parse_tree_text  # noqa: E402
+from grove_tui.crowd.leaves.grove import EXIT_RADIUS  # noqa: E402
+from grove_tui.bt.format.xml import parse_tree_text  # noqa: E402
 from grove_tui.generation.postprocess import FreeSpace  # noqa: E402
 from grove_tui.navigation.grid import build_grid  # noqa: E402
 from grove_tui.navigation.theta_star import ThetaStarPlanner  # noqa: E402

@@ -92,7 +92,7 @@ def _names_a_module(dotted: str) -> bool:
 
 
 def test_every_module_path_named_in_code_and_docs_exists():
-    """Docstrings, generated node documents and docs name modules by path (grove_tui/bt/manifest.py) or
+    """Docstrings, generated node documents and docs name modules by path (grove_tui/bt/format/manifest.py) or
     dotted name (grove_tui.generation.draft); after a move, a stale name sends a newcomer nowhere."""
     import re
 

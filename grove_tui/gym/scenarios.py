@@ -18,7 +18,8 @@ from typing import Any
 
 import numpy as np
 
-from grove_tui.bt.xml import TreeDocument, load_tree_file
+from grove_tui.bt.format.document import TreeDocument
+from grove_tui.bt.format.xml import load_tree_file
 from grove_tui.errors import GroveError, GymError
 from grove_tui.gym.observation import wall_boxes
 from grove_tui.navigation.grid import OccupancyGrid, build_grid

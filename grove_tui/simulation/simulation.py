@@ -31,14 +31,15 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.bt.context import AgentContext, SimContext
-from grove_tui.bt.registry import tree_factory
-from grove_tui.bt.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
-from grove_tui.bt.blackboard import Blackboard
-from grove_tui.bt.document import TreeDocument, node, subtree_call
-from grove_tui.bt.factory import BehaviorTree
-from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.crowd.context import AgentContext, SimContext
+from grove_tui.crowd.leaves.registry import tree_factory
+from grove_tui.crowd.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
+from grove_tui.bt.runtime.blackboard import Blackboard
+from grove_tui.bt.format.document import TreeDocument, node, subtree_call
+from grove_tui.bt.runtime.factory import BehaviorTree
+from grove_tui.bt.runtime.tree_node import FAILURE, SUCCESS, SimClock
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
 from grove_tui.simulation.robot import RobotDriver

@@ -172,7 +172,7 @@ def fuzz_world_file(data: str) -> None:
 
 
 def fuzz_tree(text: str) -> None:
-    from grove_tui.bt.xml import check_tree_text, parse_tree_text
+    from grove_tui.bt.format.xml import check_tree_text, parse_tree_text
 
     check_tree_text(text, "fuzz.xml")
     parse_tree_text(text, "fuzz.xml")

@@ -1,7 +1,7 @@
 """The behavior-tree document every stage passes on: BT.CPP v4 trees as plain, editable Python objects.
 
 Post-processing builds one, waypoint injection and the exports edit one, the runtime instantiates
-one and the app shows one; only `bt/xml.py` turns text into a document and back, so the hardened
+one and the app shows one; only `bt/format/xml.py` turns text into a document and back, so the hardened
 parser is on every path and every tree file is written the same way.
 
     TreeDocument                      <root BTCPP_format="4" main_tree_to_execute=...>
@@ -21,7 +21,7 @@ import copy
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from grove_tui.bt.manifest import SUBTREE
+from grove_tui.bt.format.manifest import SUBTREE
 
 EXPLICIT_TAGS = {"Action": "action", "Condition": "condition", "Control": "control", "Decorator": "decorator"}
 BEHAVIOR_TREE = "BehaviorTree"

@@ -8,8 +8,8 @@ parallel_node.cpp), including the details trees depend on:
 
 from __future__ import annotations
 
-from grove_tui.bt.blackboard import BlackboardRef
-from grove_tui.bt.tree_node import FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ControlNode, is_active
+from grove_tui.bt.runtime.blackboard import BlackboardRef
+from grove_tui.bt.runtime.tree_node import FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ControlNode, is_active
 from grove_tui.errors import BTError
 
 class _OrderedControl(ControlNode):

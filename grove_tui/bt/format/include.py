@@ -9,7 +9,7 @@ users and other tools, it also refuses what BT.CPP would follow blindly:
   an absolute path or a symbolic link;
 - include chains deeper than MAX_INCLUDE_DEPTH, and cycles;
 - `ros_pkg` includes (a ROS package path needs a ROS installation to resolve);
-- more than MAX_INCLUDED_FILES files, or files over bt/xml.py's MAX_BYTES (read_file_bytes).
+- more than MAX_INCLUDED_FILES files, or files over bt/format/source.py's MAX_BYTES (read_file_bytes).
 
 A file included twice (two trees including the same helper) is inlined once. The result is one
 document whose <BehaviorTree> elements are the including file's followed by the included ones.
@@ -23,7 +23,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from grove_tui.bt.xml import read_file_bytes
+from grove_tui.bt.format.source import read_file_bytes
 from grove_tui.errors import BTError
 
 MAX_INCLUDE_DEPTH = 8
@@ -38,7 +38,7 @@ def _parser() -> etree.XMLParser:
 def _read(path: Path) -> etree._Element:
     if not path.exists():
         raise BTError(f"{path}: no such behavior-tree file")
-    data = read_file_bytes(path)  # regular files only, size-limited (bt/xml.py)
+    data = read_file_bytes(path)  # regular files only, size-limited (bt/format/source.py)
     try:
         return etree.fromstring(data, _parser())
     except etree.XMLSyntaxError as exc:

@@ -2,7 +2,7 @@
 becomes nodes bound to a blackboard, a simulation clock and the agent's context.
 
 BehaviorTree.tick is Tree::tickExactlyOnce: the root is reset to IDLE after it completes. The
-differential test (tests/bt/test_bt_differential.py) compares this runtime with BT.CPP itself through
+differential test (tests/bt/runtime/test_bt_differential.py) compares this runtime with BT.CPP itself through
 `behaviortreepy`.
 """
 
@@ -11,23 +11,23 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from grove_tui.bt.blackboard import Blackboard, BlackboardRef
-from grove_tui.bt.controls import (
+from grove_tui.bt.runtime.blackboard import Blackboard, BlackboardRef
+from grove_tui.bt.runtime.controls import (
     CONTROL_CLASSES, Fallback, Parallel, ReactiveFallback, ReactiveSequence, Sequence, SequenceWithMemory,
 )
-from grove_tui.bt.decorators import (
+from grove_tui.bt.runtime.decorators import (
     CLOCKED_DECORATORS, DECORATOR_CLASSES, ForceFailure, ForceSuccess, Inverter, KeepRunningUntilFailure,
     Repeat, RetryUntilSuccessful, RunOnce, SubTreeNode,
 )
-from grove_tui.bt.document import TreeDocument, TreeElement
-from grove_tui.bt.hunav_compat import checked_port, satisfied_by_goal_id
-from grove_tui.bt.leaves.btcpp import BTCPP_LEAVES
-from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec
-from grove_tui.bt.ports import blackboard_pointer, convert_literal
-from grove_tui.bt.tree_node import (
+from grove_tui.bt.format.document import TreeDocument, TreeElement
+from grove_tui.bt.format.ports import checked_port, satisfied_by_goal_id
+from grove_tui.bt.runtime.leaves import BTCPP_LEAVES
+from grove_tui.bt.format.manifest import NODES, SUBTREE, NodeSpec
+from grove_tui.bt.format.ports import blackboard_pointer, convert_literal
+from grove_tui.bt.runtime.tree_node import (
     FAILURE, IDLE, RUNNING, STATUS_NAMES, SUCCESS, ConditionNode, DecoratorNode, LeafNode, SimClock, TreeNode,
 )
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.errors import BTError
 
 # Nodes that, while their (one) running child stays RUNNING, return RUNNING and change nothing else.

@@ -10,8 +10,8 @@ from __future__ import annotations
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from grove_tui.bt.registry import tree_factory
-from grove_tui.bt.xml import check_tree_text, parse_tree_text, read_tree, write_tree
+from grove_tui.crowd.leaves.registry import tree_factory
+from grove_tui.bt.format.xml import check_tree_text, parse_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError
 
 SEEDS = (

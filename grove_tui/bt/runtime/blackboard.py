@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from grove_tui.bt.manifest import PortSpec
-from grove_tui.bt.ports import convert_literal
+from grove_tui.bt.format.manifest import PortSpec
+from grove_tui.bt.format.ports import convert_literal
 from grove_tui.errors import BTError
 
 _MISSING = object()

@@ -16,7 +16,7 @@ Accepted format (BT.CPP v4):
     </root>
 Nodes are written compactly (<GoTo .../>) or explicitly (<Action ID="GoTo" .../>). A port value is a
 literal or a blackboard pointer "{key}". <SubTree ID="X" port="{key}" _autoremap="true"/> calls tree X.
-Files: <include path="..."/> is inlined by load_tree_file/check_tree_file (bt/include.py: relative to the
+Files: <include path="..."/> is inlined by load_tree_file/check_tree_file (bt/format/include.py: relative to the
 including file, depth-limited, never outside its folder); in text it is rejected with a clear message.
 Not supported (rejected with a clear message): scripting attributes (_skipIf, _while...).
 """
@@ -33,18 +33,15 @@ from pathlib import Path
 
 from lxml import etree
 
-from grove_tui.bt.document import (
+from grove_tui.bt.format.document import (
     BEHAVIOR_TREE, EXPLICIT_TAGS, TREE_NODES_MODEL, TreeDocument, TreeElement,
 )
-from grove_tui.bt.hunav_compat import checked_port, satisfied_by_goal_id
-from grove_tui.bt.manifest import NODES, SUBTREE, NodeSpec
-from grove_tui.bt.ports import (  # noqa: F401  (re-exported: the codec's historical home)
-    blackboard_pointer, convert_literal, format_point_list, parse_agent_list, parse_point_list,
-)
+from grove_tui.bt.format.manifest import NODES, SUBTREE, NodeSpec
+from grove_tui.bt.format.include import has_includes, resolve_includes
+from grove_tui.bt.format.ports import blackboard_pointer, checked_port, convert_literal, satisfied_by_goal_id
+from grove_tui.bt.format.source import MAX_BYTES, located_error, read_file_bytes
 from grove_tui.errors import BTError
-from grove_tui.limits import InputLimitError, read_bytes_bounded
 
-MAX_BYTES = 1_000_000
 MAX_DEPTH = 64  # element nesting inside one file
 MAX_NODES = 5_000  # elements in one file
 # A SubTree call puts the called tree below the caller: nesting and node count after expanding every
@@ -61,15 +58,6 @@ MAX_PROBLEMS = 200
 _SCRIPTING_ATTRIBUTES = {"_skipIf", "_successIf", "_failureIf", "_while", "_onSuccess", "_onFailure", "_onHalted",
                          "_post"}
 _FORMAT = "4"
-
-
-def _fatal(source: str, line: int | None, detail: str) -> BTError:
-    """A BTError about one place of a file; it also carries the place apart (`line`, `detail`), so
-    `check_tree_text` can list it like any other problem."""
-    where = f"{source}:{line}" if line else source
-    error = BTError(f"{where}: {detail}")
-    error.line, error.detail = line, detail
-    return error
 
 
 @dataclass(frozen=True)
@@ -99,30 +87,30 @@ def _as_bytes(text: str | bytes, source: str) -> bytes:
     try:
         return text.encode("utf-8")
     except UnicodeEncodeError as exc:  # a lone surrogate, e.g. from a JSON "\ud800" escape
-        raise _fatal(source, None, f"not valid Unicode text ({exc.reason} at character {exc.start})") from None
+        raise located_error(source, None, f"not valid Unicode text ({exc.reason} at character {exc.start})") from None
 
 
 def _parse_lxml(data: bytes, source: str) -> etree._Element:
     if len(data) > MAX_BYTES:
-        raise _fatal(source, None, f"file is {len(data)} bytes; behavior trees are limited to {MAX_BYTES} bytes")
+        raise located_error(source, None, f"file is {len(data)} bytes; behavior trees are limited to {MAX_BYTES} bytes")
     if not data.strip():
-        raise _fatal(source, None, 'empty file; a behavior tree is <root BTCPP_format="4"><BehaviorTree ID=...>')
+        raise located_error(source, None, 'empty file; a behavior tree is <root BTCPP_format="4"><BehaviorTree ID=...>')
     lowered = data.lower()
     # DTDs are how entity bombs and external entities get in; BT.CPP never needs one.
     found = [i for i in (lowered.find(b"<!doctype"), lowered.find(b"<!entity")) if i >= 0]
     if found:
         line = data[: min(found)].count(b"\n") + 1
-        raise _fatal(source, line, "DOCTYPE/ENTITY declarations are not allowed in behavior trees "
+        raise located_error(source, line, "DOCTYPE/ENTITY declarations are not allowed in behavior trees "
                                    "(no DTDs, no entities)")
     try:
         root = etree.fromstring(data, _hardened_parser())
     except etree.XMLSyntaxError as exc:
         line = exc.lineno if exc.lineno else None
         msg = (exc.msg if getattr(exc, "msg", None) else str(exc)).splitlines()[0]
-        raise _fatal(source, line, f"not well-formed XML: {msg}") from None
+        raise located_error(source, line, f"not well-formed XML: {msg}") from None
     docinfo = root.getroottree().docinfo
     if docinfo.internalDTD is not None or docinfo.externalDTD is not None or docinfo.doctype:
-        raise _fatal(source, None, "DOCTYPE declarations are not allowed in behavior trees")
+        raise located_error(source, None, "DOCTYPE declarations are not allowed in behavior trees")
     return root
 
 
@@ -135,12 +123,12 @@ def _to_elements(root: etree._Element, source: str) -> TreeElement:
         el, converted, depth = stack.pop()
         count += 1
         if depth > MAX_DEPTH:
-            raise _fatal(source, el.sourceline, f"tree nesting is deeper than {MAX_DEPTH} levels")
+            raise located_error(source, el.sourceline, f"tree nesting is deeper than {MAX_DEPTH} levels")
         if count > MAX_NODES:
-            raise _fatal(source, None, f"more than {MAX_NODES} XML elements")
+            raise located_error(source, None, f"more than {MAX_NODES} XML elements")
         for child in el:
             if isinstance(child, etree._Entity):
-                raise _fatal(source, child.sourceline, "entity references are not allowed in behavior trees")
+                raise located_error(source, child.sourceline, "entity references are not allowed in behavior trees")
             if not isinstance(child.tag, str):
                 continue
             kid = TreeElement(child.tag, dict(child.attrib), [], child.sourceline, (child.text or "").strip())
@@ -151,20 +139,6 @@ def _to_elements(root: etree._Element, source: str) -> TreeElement:
 
 def _read_elements(text: str | bytes, source: str) -> TreeElement:
     return _to_elements(_parse_lxml(_as_bytes(text, source), source), source)
-
-
-def read_file_bytes(path: str | os.PathLike[str], limit: int = MAX_BYTES) -> bytes:
-    """The bytes of a tree file through the one bounded reader (grove_tui.limits): regular files only
-    (links followed, so a link to /dev/zero is refused as what it points at), at most `limit` bytes."""
-    what = "behavior-tree file"
-    try:
-        return read_bytes_bounded(path, limit, what)
-    except InputLimitError as exc:
-        # "behavior-tree file PATH is a device, not a file" -> "PATH: is a device, not a file"
-        message = str(exc)
-        prefix = f"{what} {path}"
-        detail = message[len(prefix):].lstrip(":").strip() if message.startswith(prefix) else message
-        raise _fatal(str(path), None, detail) from None
 
 
 def _document(root: TreeElement, source: str) -> TreeDocument:
@@ -538,7 +512,5 @@ def check_tree_bytes(path: str | os.PathLike[str], data: bytes,
 
 
 def _with_includes(path: str | os.PathLike[str], data: bytes) -> bytes:
-    """A tree file's `<include>`s inlined, within its folder (bt/include.py)."""
-    from grove_tui.bt.include import has_includes, resolve_includes
-
+    """A tree file's `<include>`s inlined, within its folder (bt/format/include.py)."""
     return resolve_includes(path) if has_includes(data) else data

@@ -8,12 +8,46 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from typing import TYPE_CHECKING, Any
+from collections.abc import Sequence
+from typing import Any, Protocol
 
-if TYPE_CHECKING:
-    from grove_tui.bt.context import SimContext
+import numpy as np
+
+from grove_tui.bt.runtime.tree_node import SimClock
 
 Point = tuple[float, float]
+
+
+class FreeSpace(Protocol):
+    """Floor a line or a circle may stand on: the simulation's context offers it, and so does the
+    formation plan generation draws before any simulation exists (generation/formations.py)."""
+
+    def is_free(self, x: float, y: float) -> bool: ...
+    def nearest_free(self, x: float, y: float) -> Point: ...
+
+
+class Bodies(Protocol):
+    """The crowd's per-agent arrays the registries read (rows as in grove_tui.crowd.crowd.Crowd)."""
+
+    @property
+    def pos(self) -> np.ndarray: ...
+    @property
+    def radius(self) -> np.ndarray: ...
+    @property
+    def active(self) -> np.ndarray: ...
+
+
+class Shared(FreeSpace, Protocol):
+    """What the registries read of a running simulation; grove_tui.crowd.context.SimContext provides it
+    (a protocol, so the context can own the registries without an import circle)."""
+
+    @property
+    def crowd(self) -> Bodies: ...
+    @property
+    def clock(self) -> SimClock: ...
+    @property
+    def ids(self) -> Sequence[int]: ...
+    def event(self, kind: str, row: int, detail: str = "") -> None: ...
 
 _DIRECTIONS = 48  # candidate headings for a queue line
 ARRIVAL_TOLERANCE = 0.3  # metres: an agent within this of its slot/spot has arrived
@@ -24,7 +58,7 @@ class ServiceQueue:
     """One line of people at a service point. members[0] is the head (being served)."""
 
     def __init__(self, name: str, service_point: Point, direction: Point, spacing: float, service_time: float,
-                 free_length: float, sim: SimContext):
+                 free_length: float, sim: FreeSpace):
         self.name = name
         self.service_point = service_point
         self.direction = direction
@@ -83,7 +117,7 @@ class ServiceQueue:
 
 
 class QueueRegistry:
-    def __init__(self, sim: SimContext):
+    def __init__(self, sim: Shared):
         self._sim = sim
         self.queues: dict[str, ServiceQueue] = {}
 
@@ -196,7 +230,7 @@ class ConversationRegistry:
     # stuck behind an obstacle cannot freeze everyone else forever.
     PATIENCE = 60.0
 
-    def __init__(self, sim: SimContext):
+    def __init__(self, sim: Shared):
         self._sim = sim
         self.conversations: dict[tuple, Conversation] = {}
 

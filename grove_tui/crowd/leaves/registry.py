@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from grove_tui.bt.manifest import NODES
-from grove_tui.bt.leaves.grove import GROVE_LEAVES
-from grove_tui.bt.leaves.hunav import HUNAV_LEAVES
-from grove_tui.bt.controls import CONTROL_CLASSES
-from grove_tui.bt.decorators import DECORATOR_CLASSES
-from grove_tui.bt.factory import TreeFactory
-from grove_tui.bt.leaves.btcpp import BTCPP_LEAVES
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.crowd.leaves.grove import GROVE_LEAVES
+from grove_tui.crowd.leaves.hunav import HUNAV_LEAVES
+from grove_tui.bt.runtime.controls import CONTROL_CLASSES
+from grove_tui.bt.runtime.decorators import DECORATOR_CLASSES
+from grove_tui.bt.runtime.factory import TreeFactory
+from grove_tui.bt.runtime.leaves import BTCPP_LEAVES
 
 LEAF_CLASSES = {**HUNAV_LEAVES, **GROVE_LEAVES}
 

@@ -1,6 +1,6 @@
 """THE node manifest: every behavior-tree node GROVE-TUI knows, with its ports and meaning.
 
-Everything else derives from this one table: XML validation (bt/xml.py), the runtime's port
+Everything else derives from this one table: XML validation (bt/format/xml.py), the runtime's port
 parsing, the retrieval documents (retrieval.py), the draft grammar (draft.py), the planner's
 choice of navigation nodes (`navigates`), and the Groot2 TreeNodesModel (`grove bt manifest`).
 

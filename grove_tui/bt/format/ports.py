@@ -7,11 +7,12 @@ precision and read by one parser everywhere.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from collections.abc import Iterable
 
-from grove_tui.bt.manifest import PortSpec
+from grove_tui.bt.format.manifest import PortSpec
 
 # Centimetres: finer than the planner's 0.1 m grid and the SFM's 0.35 m body radius, and short
 # enough that a tree with hundreds of waypoints stays readable.
@@ -122,3 +123,25 @@ def convert_literal(port: PortSpec, text: str):
     if port.choices is not None and value not in port.choices:
         raise ValueError(f"{value!r} is not one of {', '.join(port.choices)}")
     return value
+
+
+def checked_port(spec, port):
+    """The port as GROVE checks a literal for it: HuNavSim's own nodes get no bounds.
+
+    HuNavSim declares its ports without limits (BT::InputPort<double>(...) in bt_node.cpp and the node
+    headers), and its shipped trees use values such as ThreateningNav goal_dist="20"; a tree HuNavSim
+    runs must not be refused here. The manifest's bounds still shape what the language model may write.
+    """
+    if spec.origin != "hunavsim" or (port.min is None and port.max is None):
+        return port
+    return dataclasses.replace(port, min=None, max=None)
+
+
+def satisfied_by_goal_id(port, given_ports) -> bool:
+    """A navigation `target` given instead as HuNavSim's `goal_id` (a global goal of the scenario).
+
+    HuNavSim 2.0's GoTo names its destination only by goal_id (go_to_node.hpp); GROVE's GoTo accepts
+    that form too (the runtime resolves the id in the scenario's global goals), so a HuNavSim tree and
+    an exported GROVE tree validate without a `target`.
+    """
+    return port.type == "target" and ("goal_id" in given_ports or "target_x" in given_ports)

@@ -1,6 +1,6 @@
-"""bt/ is the only owner of behavior-tree XML: no other module parses XML or writes tree markup.
+"""bt/format/ is the only owner of behavior-tree XML: no other module parses XML or writes tree markup.
 
-Everything else goes through bt/xml.py (hardened reader, one writer) and bt/document.py, so the
+Everything else (the runtime included) goes through bt/format/xml.py (hardened reader, one writer) and bt/format/document.py, so the
 hardening (no DTDs, entities, XInclude; size, depth and SubTree limits) is on every path.
 """
 
@@ -11,7 +11,7 @@ import ast
 
 ROOT = REPO
 PACKAGE = ROOT / "grove_tui"
-OWNER = PACKAGE / "bt"
+OWNER = PACKAGE / "bt" / "format"
 XML_MODULES = ("xml", "lxml", "defusedxml")
 TREE_MARKUP = ("<BehaviorTree", "<root", "<SubTree", "<TreeNodesModel")
 
@@ -37,13 +37,13 @@ def xml_ownership_offences(source: str, filename: str) -> list[str]:
     return sorted(offences, key=lambda offence: int(offence.split(":")[1].split(" ")[0]))
 
 
-def test_no_module_outside_bt_parses_xml_or_writes_tree_markup():
+def test_no_module_outside_bt_format_parses_xml_or_writes_tree_markup():
     offences = []
     for path in sorted(PACKAGE.rglob("*.py")):
         if OWNER in path.parents:
             continue
         offences += xml_ownership_offences(path.read_text(encoding="utf-8"), str(path.relative_to(ROOT)))
-    assert not offences, "behavior-tree XML belongs to grove_tui/bt/:\n" + "\n".join(offences)
+    assert not offences, "behavior-tree XML belongs to grove_tui/bt/format/:\n" + "\n".join(offences)
 
 
 def test_the_search_finds_each_kind_of_offence():
@@ -59,10 +59,10 @@ other = "<BehaviorTree ID='a'>"
 '''
     offences = xml_ownership_offences(source, "sample.py")
     assert [o.split(" ", 1)[0] for o in offences] == [f"sample.py:{n}" for n in (2, 3, 4, 5, 6, 7, 8)]
-    assert xml_ownership_offences("print('a tree is written by bt/xml.py')\n", "ok.py") == []
+    assert xml_ownership_offences("print('a tree is written by bt/format/xml.py')\n", "ok.py") == []
 
 
 def test_bt_is_where_the_xml_library_is_used():
-    # the other half of ownership: the reader and writer live in bt/xml.py
-    offences = xml_ownership_offences((OWNER / "xml.py").read_text(encoding="utf-8"), "bt/xml.py")
+    # the other half of ownership: the reader and writer live in bt/format/xml.py
+    offences = xml_ownership_offences((OWNER / "xml.py").read_text(encoding="utf-8"), "bt/format/xml.py")
     assert any("imports from lxml" in o for o in offences)

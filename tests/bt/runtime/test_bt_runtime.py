@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.bt.manifest import NODES, NodeSpec, PortSpec
-from grove_tui.bt.blackboard import Blackboard
-from grove_tui.bt.factory import TreeFactory
-from grove_tui.bt.tree_node import (
+from grove_tui.bt.format.manifest import NODES, NodeSpec, PortSpec
+from grove_tui.bt.runtime.blackboard import Blackboard
+from grove_tui.bt.runtime.factory import TreeFactory
+from grove_tui.bt.runtime.tree_node import (
     FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ConditionNode, SimClock, StatefulActionNode, SyncActionNode,
 )
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import parse_tree_text
 
 R, S, F, K = RUNNING, SUCCESS, FAILURE, SKIPPED
 NAMES = {IDLE: "IDLE", R: "RUNNING", S: "SUCCESS", F: "FAILURE", K: "SKIPPED"}

@@ -13,9 +13,9 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from grove_tui.bt.coordination import ConversationRegistry, QueueRegistry, SpeechLog
-from grove_tui.bt.tree_node import SimClock
-from grove_tui.bt.xml import BTError
+from grove_tui.crowd.coordination import ConversationRegistry, QueueRegistry, SpeechLog
+from grove_tui.bt.runtime.tree_node import SimClock
+from grove_tui.errors import BTError
 
 Point = tuple[float, float]
 

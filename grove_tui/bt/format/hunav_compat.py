@@ -1,6 +1,6 @@
 """HuNavSim 2.0's own node set: the node IDs its agent manager registers and the ports each declares.
 
-GROVE's manifest (bt/manifest.py) is a superset: it adds GROVE nodes, keeps 1.0 and 2.0 port variants,
+GROVE's manifest (bt/format/manifest.py) is a superset: it adds GROVE nodes, keeps 1.0 and 2.0 port variants,
 and documents ports HuNavSim's TreeNodesModel.xml lists but the C++ code no longer declares. BT.CPP 4
 rejects a port the registered node did not declare, so what GROVE hands to HuNavSim must use exactly
 this table. Sources (robotics-upo/hunav_sim, the 2.0 code under `namespace hunav`, as stored in the
@@ -26,10 +26,11 @@ reactions accumulate the tree's `dt` (simulation time). `CLOCKS` records it per 
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.document import node
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.bt.format.xml import read_tree
 
 # BT.CPP 4 built-ins a HuNavSim tree may use (BehaviorTree.CPP registers them in every factory).
 BTCPP_BUILTINS = frozenset(name for name, spec in NODES.items() if spec.origin == "btcpp") | {"SubTree"}
@@ -115,8 +116,6 @@ REACTION_NODES = frozenset({"SurprisedNav", "CuriousNav", "ScaredNav", "Threaten
 
 
 def _read(xml: str | bytes):
-    from grove_tui.bt.xml import read_tree  # bt.xml imports this module: import at call time
-
     return read_tree(xml, "<hunav tree>")
 
 
@@ -129,11 +128,11 @@ def restrict_to_hunav_ports(document):
     built-in values for those, so dropping them is what HuNavSim itself would run.
     """
     for element in document.nodes():
-        node = HUNAV_NODES.get(element.id)
-        if node is None:
+        declared = HUNAV_NODES.get(element.id)
+        if declared is None:
             continue
         for attribute in list(element.attributes):
-            if attribute not in node.ports and attribute not in _ANY_NODE_ATTRIBUTES:
+            if attribute not in declared.ports and attribute not in _ANY_NODE_ATTRIBUTES:
                 del element.attributes[attribute]
     return document
 
@@ -154,14 +153,14 @@ def hunav_loading_problems(xml: str | bytes) -> list[str]:
             continue
         if element.id in BTCPP_BUILTINS:
             continue
-        node = HUNAV_NODES.get(element.id)
-        if node is None:
+        declared = HUNAV_NODES.get(element.id)
+        if declared is None:
             problems.append(f"{where} is not a node HuNavSim 2.0 registers")
             continue
         for attribute in element.attributes:
-            if attribute not in node.ports and attribute not in _ANY_NODE_ATTRIBUTES:
+            if attribute not in declared.ports and attribute not in _ANY_NODE_ATTRIBUTES:
                 problems.append(f"{where} has port {attribute!r}, which HuNavSim's {element.id} does not "
-                                f"declare (it declares {', '.join(node.inputs + node.outputs)})")
+                                f"declare (it declares {', '.join(declared.inputs + declared.outputs)})")
     return problems
 
 
@@ -172,8 +171,6 @@ def hold_forever(wait_seconds: float):
     or FAILURE, so a tree that simply ends is started again (bt_node.cpp `tree_tick`, every
     ComputeAgents call). KeepRunningUntilFailure turns each completed wait into RUNNING and restarts it.
     """
-    from grove_tui.bt.document import node
-
     hold = node("KeepRunningUntilFailure", [node("StopAndWaitTimerAction", agent_id="{id}",
                                                  wait_duration=f"{wait_seconds:g}")])
     hold.set("name", HOLD_NAME)
@@ -194,8 +191,6 @@ def wrap_for_hunav(document, *, reaction: tuple[str, float, float, bool] | None,
       used: ReactiveFallback[Sequence[IsRobotVisible, ForceFailure(<Reaction>Nav)], routine]. HuNavSim
       2.0 reacts to the robot only through the tree (no built-in reaction), so the tree must carry it.
     """
-    from grove_tui.bt.document import node
-
     used = {element.id for element in document.nodes()}
     wrapped = any(element.get("name") == HOLD_NAME for element in document.nodes())
     if used & looping or wrapped:
@@ -229,28 +224,6 @@ def prefix_node_ids(document, names: frozenset[str], prefix: str):
             if element.tag in ("Action", "Condition", "Decorator", "Control") and element.get("ID") in names:
                 element.set("ID", prefix + element.get("ID"))
     return document
-
-
-def checked_port(spec, port):
-    """The port as GROVE checks a literal for it: HuNavSim's own nodes get no bounds.
-
-    HuNavSim declares its ports without limits (BT::InputPort<double>(...) in bt_node.cpp and the node
-    headers), and its shipped trees use values such as ThreateningNav goal_dist="20"; a tree HuNavSim
-    runs must not be refused here. The manifest's bounds still shape what the language model may write.
-    """
-    if spec.origin != "hunavsim" or (port.min is None and port.max is None):
-        return port
-    return dataclasses.replace(port, min=None, max=None)
-
-
-def satisfied_by_goal_id(port, given_ports) -> bool:
-    """A navigation `target` given instead as HuNavSim's `goal_id` (a global goal of the scenario).
-
-    HuNavSim 2.0's GoTo names its destination only by goal_id (go_to_node.hpp); GROVE's GoTo accepts
-    that form too (the runtime resolves the id in the scenario's global goals), so a HuNavSim tree and
-    an exported GROVE tree validate without a `target`.
-    """
-    return port.type == "target" and ("goal_id" in given_ports or "target_x" in given_ports)
 
 
 def label_clocks(document):

@@ -13,8 +13,9 @@ from pathlib import Path
 
 import pytest
 
-from grove_tui.bt.include import MAX_INCLUDE_DEPTH, resolve_includes
-from grove_tui.bt.xml import BTError, check_tree_file, load_tree_file
+from grove_tui.bt.format.include import MAX_INCLUDE_DEPTH, resolve_includes
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import check_tree_file, load_tree_file
 from helpers.hall import agent, simulate
 
 REGULAR = '''<?xml version='1.0' encoding='UTF-8'?>
@@ -182,7 +183,7 @@ def test_older_hunavsim_point_ports_validate_and_run(hall):
     body = ('<Sequence><GoTo agent_id="{id}" target_x="10" target_y="6" time_step="{dt}" temporary="false" '
             'stop_duration="5.0"/><LookAtPoint agent_id="{id}" target_x="12" target_y="6"/></Sequence>')
     xml = ('<root BTCPP_format="4" main_tree_to_execute="T"><BehaviorTree ID="T">' + body + '</BehaviorTree></root>')
-    from grove_tui.bt.xml import check_tree_text
+    from grove_tui.bt.format.xml import check_tree_text
 
     assert check_tree_text(xml) == []
     sim = simulate(hall, [agent(1, (5.0, 6.0))], [body])

@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from grove_tui.bt.blackboard import BlackboardRef
-from grove_tui.bt.tree_node import FAILURE, RUNNING, SUCCESS, ConditionNode, StatefulActionNode, SyncActionNode
-from grove_tui.bt.xml import BTError
+from grove_tui.bt.runtime.blackboard import BlackboardRef
+from grove_tui.bt.runtime.tree_node import FAILURE, RUNNING, SUCCESS, ConditionNode, StatefulActionNode, SyncActionNode
+from grove_tui.errors import BTError
 
 __all__ = ["AgentCondition", "AgentSyncAction", "AgentStatefulAction", "FAILURE", "RUNNING", "SUCCESS",
            "bind_agent", "angle_diff"]

@@ -8,9 +8,9 @@ same at any speed.
 
 from __future__ import annotations
 
-from grove_tui.bt.blackboard import BlackboardRef
-from grove_tui.bt.manifest import SUBTREE
-from grove_tui.bt.tree_node import (
+from grove_tui.bt.runtime.blackboard import BlackboardRef
+from grove_tui.bt.format.manifest import SUBTREE
+from grove_tui.bt.runtime.tree_node import (
     FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, DecoratorNode, SimClock, is_completed,
 )
 from grove_tui.errors import BTError

@@ -6,12 +6,11 @@ import pytest
 from click.testing import CliRunner
 from lxml import etree
 
-from grove_tui.bt.manifest import NODES, treenodes_model_xml
-from grove_tui.bt.ports import format_point_list, parse_point_list
-from grove_tui.bt.xml import (
-    MAX_BYTES, MAX_DEPTH, MAX_EXPANDED_DEPTH, MAX_EXPANDED_NODES, MAX_PROBLEMS, MAX_SUGGESTIONS, BTError,
-    check_tree_file, check_tree_text, load_tree_file, parse_tree_text,
-)
+from grove_tui.bt.format.manifest import NODES, treenodes_model_xml
+from grove_tui.bt.format.ports import format_point_list, parse_point_list
+from grove_tui.bt.format.source import MAX_BYTES
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import MAX_DEPTH, MAX_EXPANDED_DEPTH, MAX_EXPANDED_NODES, MAX_PROBLEMS, MAX_SUGGESTIONS, check_tree_file, check_tree_text, load_tree_file, parse_tree_text
 from grove_tui.errors import GroveError
 
 
@@ -290,8 +289,8 @@ def test_a_chain_of_2400_subtrees_is_a_bt_error_not_a_recursion_error():
                                       f"{MAX_EXPANDED_DEPTH}"):
         parse_tree_text(_chain(2400), "chain.xml")
     # a chain within the limit builds and runs
-    from grove_tui.bt.registry import tree_factory
-    from grove_tui.bt.tree_node import SUCCESS
+    from grove_tui.crowd.leaves.registry import tree_factory
+    from grove_tui.bt.runtime.tree_node import SUCCESS
 
     tree = tree_factory().create(parse_tree_text(_chain(MAX_EXPANDED_DEPTH - 2, "<AlwaysSuccess/>")))
     assert tree.tick() == SUCCESS

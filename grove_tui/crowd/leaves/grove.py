@@ -10,9 +10,9 @@ import math
 
 import shapely
 
-from grove_tui.bt.coordination import ARRIVAL_TOLERANCE, Conversation, ServiceQueue
-from grove_tui.bt.leaves.base import RUNNING, SUCCESS, AgentStatefulAction, AgentSyncAction
-from grove_tui.bt.xml import BTError
+from grove_tui.crowd.coordination import ARRIVAL_TOLERANCE, Conversation, ServiceQueue
+from grove_tui.crowd.leaves.base import RUNNING, SUCCESS, AgentStatefulAction, AgentSyncAction
+from grove_tui.errors import BTError
 from grove_tui.crowd.sfm import MODE_FACE, MODE_FIELD, MODE_GOALS, MODE_STOP
 
 EXIT_RADIUS = 0.6  # metres from the exit point at which an evacuee turns to walk out through the door

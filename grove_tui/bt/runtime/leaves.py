@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from grove_tui.bt.tree_node import FAILURE, SUCCESS, LeafNode, SyncActionNode
+from grove_tui.bt.runtime.tree_node import FAILURE, SUCCESS, LeafNode, SyncActionNode
 
 
 class AlwaysSuccess(SyncActionNode):

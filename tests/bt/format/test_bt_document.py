@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.bt.document import TreeDocument, TreeElement, node, subtree_call
+from grove_tui.bt.format.document import TreeDocument, TreeElement, node, subtree_call
 from xml.sax.saxutils import escape
 
-from grove_tui.bt.manifest import NODES, treenodes_model_xml
-from grove_tui.bt.xml import MAX_DEPTH, BTError, parse_tree_text, read_tree, validate_document, write_tree
+from grove_tui.bt.format.manifest import NODES, treenodes_model_xml
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import MAX_DEPTH, parse_tree_text, read_tree, validate_document, write_tree
 
 
 def test_the_writer_writes_the_one_documented_layout():

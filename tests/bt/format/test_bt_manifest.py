@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.bt.manifest import (
+from grove_tui.bt.format.manifest import (
     CATEGORIES, NODES, PORT_TYPES, PRESETS, navigation_nodes, nodes_for_preset,
 )
-from grove_tui.bt.registry import LEAF_CLASSES, unimplemented_nodes
-from grove_tui.bt.ports import blackboard_pointer, convert_literal
+from grove_tui.crowd.leaves.registry import LEAF_CLASSES, unimplemented_nodes
+from grove_tui.bt.format.ports import blackboard_pointer, convert_literal
 
 # hunav_agent_manager/behavior_trees/TreeNodesModel.xml (d5b716b) plus the reference's TimeExpiredCondition,
 # AvoidRobot and TimeDelay; GoTo is GROVE's (HuNavSim's ports kept, see below)

@@ -13,10 +13,10 @@ from dataclasses import dataclass
 
 import pytest
 
-from grove_tui.bt.manifest import NODES, NodeSpec
-from grove_tui.bt.factory import TreeFactory
-from grove_tui.bt.tree_node import FAILURE, RUNNING, SKIPPED, SUCCESS, ConditionNode, StatefulActionNode
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.manifest import NODES, NodeSpec
+from grove_tui.bt.runtime.factory import TreeFactory
+from grove_tui.bt.runtime.tree_node import FAILURE, RUNNING, SKIPPED, SUCCESS, ConditionNode, StatefulActionNode
+from grove_tui.bt.format.xml import parse_tree_text
 
 bt = pytest.importorskip("behaviortreepy")
 

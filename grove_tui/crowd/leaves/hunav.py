@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import math
 
-from grove_tui.bt.leaves.base import (
+from grove_tui.crowd.leaves.base import (
     FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, angle_diff,
 )
-from grove_tui.bt.xml import BTError
+from grove_tui.errors import BTError
 from grove_tui.crowd.sfm import (
     MODE_FACE, MODE_GOALS, MODE_STOP, ROBOT_AS_AGENT, ROBOT_FEARED, ROBOT_IGNORED,
 )

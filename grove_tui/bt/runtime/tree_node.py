@@ -10,7 +10,7 @@ from __future__ import annotations
 from enum import IntEnum
 from typing import Any
 
-from grove_tui.bt.blackboard import Blackboard, BlackboardRef
+from grove_tui.bt.runtime.blackboard import Blackboard, BlackboardRef
 from grove_tui.errors import BTError
 
 # BT.CPP's NodeStatus values; plain ints keep the hot path fast
