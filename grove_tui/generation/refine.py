@@ -31,7 +31,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.errors import AmbiguousEditError, EditError, GenerationError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations

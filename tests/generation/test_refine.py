@@ -170,7 +170,7 @@ def test_a_follow_up_that_changes_nothing_is_refused(hospital, base):
 
 
 def test_a_tree_read_back_from_its_xml(base):
-    from grove_tui.bt.xml import read_tree
+    from grove_tui.bt.format.xml import read_tree
 
     tree = draft_from_document(read_tree((base / "trees/agent_1.xml").read_text(), "agent_1"))
     assert [n.node for n in tree.walk()] == ["Sequence", "GoTo", "Queue"]
