@@ -9,60 +9,21 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any, Protocol
 
 import numpy as np
 
-from grove_tui.crowd.coordination import ConversationRegistry, QueueRegistry, SpeechLog
 from grove_tui.bt.runtime.tree_node import SimClock
+from grove_tui.crowd.coordination import ConversationRegistry, QueueRegistry, SpeechLog
+from grove_tui.crowd.crowd import Crowd
+from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.navigation.theta_star import ThetaStarPlanner
+from grove_tui.world.model import World
 from grove_tui.errors import BTError
 
 Point = tuple[float, float]
-
-
-class CrowdLike(Protocol):
-    """The part of grove_tui.crowd.crowd.Crowd the leaves use."""
-
-    n: int
-    pos: np.ndarray
-    vel: np.ndarray
-    yaw: np.ndarray
-    radius: np.ndarray
-    desired_speed: np.ndarray
-    group: np.ndarray
-    factors: np.ndarray
-    mode: np.ndarray
-    active: np.ndarray
-    robot_interaction: np.ndarray
-
-    def set_goals(self, i: int, points, goal_radius: float | None = None, cyclic: bool | None = None) -> None: ...
-    def append_goal(self, i: int, point) -> None: ...
-    def goals(self, i: int) -> list[Point]: ...
-    def current_goal(self, i: int) -> Point | None: ...
-    def goals_left(self, i: int) -> int: ...
-    def goal_reached(self, i: int) -> bool: ...
-    def advance_goal(self, i: int) -> None: ...
-    def set_mode(self, i: int, mode: int) -> None: ...
-    def set_field(self, i: int, field_id: int) -> None: ...
-    def set_face_target(self, i: int, target) -> None: ...
-    def set_speed(self, i: int, v: float) -> None: ...
-    def restore_speed(self, i: int) -> None: ...
-    def set_factors(self, i: int, goal=None, obstacle=None, social=None, other=None) -> None: ...
-    def restore_factors(self, i: int) -> None: ...
-    def set_active(self, i: int, active: bool) -> None: ...
-    def set_group(self, i: int, group: int) -> None: ...
-    def set_robot_interaction(self, i: int, interaction: int) -> None: ...
-
-    @property
-    def has_robot(self) -> bool: ...
-    @property
-    def robot_pos(self) -> np.ndarray | None: ...
-    @property
-    def robot_vel(self) -> np.ndarray | None: ...
-    @property
-    def robot_yaw(self) -> float | None: ...
-    @property
-    def robot_radius(self) -> float | None: ...
+# The intents a temporary behavior replaces and gives back (SimContext.snapshot): goals, SFM mode,
+# desired speed, force factors, robot interaction.
+Snapshot = tuple[list[Point], int, float, tuple[float, ...], int]
 
 
 class Counters:
@@ -84,8 +45,9 @@ class Counters:
 class SimContext:
     """Shared by every leaf of every agent in one simulation."""
 
-    def __init__(self, crowd: CrowdLike, clock: SimClock, *, ids: Sequence[int], seed: int = 0, world: Any = None,
-                 grid: Any = None, planner: Any = None, walls: np.ndarray | None = None,
+    def __init__(self, crowd: Crowd, clock: SimClock, *, ids: Sequence[int], seed: int = 0, world: World | None = None,
+                 grid: OccupancyGrid | None = None, planner: ThetaStarPlanner | None = None,
+                 walls: np.ndarray | None = None,
                  fields: dict[str, int] | None = None, goal_table: dict[int, Point] | None = None,
                  groups: dict[int, tuple[int, ...]] | None = None, base_speed: Sequence[float] | None = None):
         self.crowd = crowd
@@ -129,10 +91,9 @@ class SimContext:
         self.py = pos[:, 1].tolist()
         self.yaw = crowd.yaw[:n].tolist()
         self.active = crowd.active[:n].tolist()
-        if crowd.has_robot:
-            rp = crowd.robot_pos
-            rv = crowd.robot_vel
-            self.robot = (float(rp[0]), float(rp[1]), float(crowd.robot_yaw))
+        rp, rv, yaw = crowd.robot_pos, crowd.robot_vel, crowd.robot_yaw  # all None without a robot
+        if rp is not None and rv is not None and yaw is not None:
+            self.robot = (float(rp[0]), float(rp[1]), yaw)
             self.robot_speed = math.hypot(float(rv[0]), float(rv[1]))
         else:
             self.robot = None
@@ -144,12 +105,12 @@ class SimContext:
 
     # ---- intents that a temporary behavior replaces and gives back ------------------------------
 
-    def snapshot(self, row: int) -> tuple:
+    def snapshot(self, row: int) -> Snapshot:
         crowd = self.crowd
         return (crowd.goals(row), int(crowd.mode[row]), float(crowd.desired_speed[row]),
                 tuple(float(f) for f in crowd.factors[row]), int(crowd.robot_interaction[row]))
 
-    def restore(self, row: int, snap: tuple) -> None:
+    def restore(self, row: int, snap: Snapshot) -> None:
         crowd = self.crowd
         goals, mode, speed, factors, interaction = snap
         crowd.set_goals(row, goals)
@@ -249,12 +210,18 @@ class SimContext:
         best = int(np.argmin(d2))
         return None if not np.isfinite(d2[best]) else best
 
-    def row(self, agent_id: Any, what: str = "agent_id") -> int:
-        try:
-            return self.row_of[int(agent_id)]
-        except (KeyError, TypeError, ValueError):
+    def row(self, agent_id: object, what: str = "agent_id") -> int:
+        """The crowd row of an agent id read from a port (an int, or text from a blackboard entry)."""
+        row = None
+        if isinstance(agent_id, (int, float, str)):
+            try:
+                row = self.row_of.get(int(agent_id))
+            except (ValueError, OverflowError):
+                pass
+        if row is None:
             raise BTError(f"{what}={agent_id!r} is not an agent of this scenario "
-                          f"(ids {min(self.ids, default=0)}..{max(self.ids, default=0)})") from None
+                          f"(ids {min(self.ids, default=0)}..{max(self.ids, default=0)})")
+        return row
 
 
 class _Points:

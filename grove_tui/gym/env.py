@@ -153,11 +153,12 @@ class SocialNavEnv(gymnasium.Env):
         max_speed = max(float(s.robot.max_vel) for s in self.scenarios)
         self.max_speed = max_speed
         if kinematics == "unicycle":
-            self.action_space = spaces.Box(low=np.array([0.0, -self.max_angular_speed], dtype=np.float32),
-                                           high=np.array([max_speed, self.max_angular_speed], dtype=np.float32),
-                                           dtype=np.float32)
+            self._action_box = spaces.Box(low=np.array([0.0, -self.max_angular_speed], dtype=np.float32),
+                                          high=np.array([max_speed, self.max_angular_speed], dtype=np.float32),
+                                          dtype=np.float32)
         else:
-            self.action_space = spaces.Box(low=-max_speed, high=max_speed, shape=(2,), dtype=np.float32)
+            self._action_box = spaces.Box(low=-max_speed, high=max_speed, shape=(2,), dtype=np.float32)
+        self.action_space = self._action_box
         k, cells = self.obs_config.pedestrians, self.obs_config.patch_cells
         big = np.float32(POSITION_LIMIT)
         self.observation_space = spaces.Dict({
@@ -168,11 +169,18 @@ class SocialNavEnv(gymnasium.Env):
             "occupancy": spaces.Box(0, 1, shape=(cells, cells), dtype=np.uint8),
         })
         self._cursor = 0
-        self.current: LoadedScenario | None = None
+        self.current: LoadedScenario | None = None  # the episode's scenario, from reset() on
         self.sim: Any = None
         self.episode_actions: list[tuple[float, float]] = []
 
     # ---- episode -------------------------------------------------------------------------------
+
+    @property
+    def loaded(self) -> LoadedScenario:
+        """The running episode's scenario; GymResetNeeded before the first reset()."""
+        if self.current is None:
+            raise GymResetNeeded("no episode before reset()", hint="call reset() first")
+        return self.current
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[dict, dict]:
         """Load the next scenario (options={"scenario": i} picks one), place the robot at its start."""
@@ -282,7 +290,7 @@ class SocialNavEnv(gymnasium.Env):
             raise GymActionError(f"{wanted}, got {_short(action)}") from None
         if not np.all(np.isfinite(command)):
             raise GymActionError(f"{wanted}, got {_short(action)}")
-        return np.clip(command, self.action_space.low, self.action_space.high)
+        return np.clip(command, self._action_box.low, self._action_box.high)
 
     def close(self) -> None:
         self._release()
@@ -304,10 +312,10 @@ class SocialNavEnv(gymnasium.Env):
         angle = self.np_random.uniform(-math.pi, math.pi)
         x = robot.start[0] + radius * math.cos(angle)
         y = robot.start[1] + radius * math.sin(angle)
-        free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
+        free = self.loaded.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
         # a free cell behind a wall (another room) is no start nearby: keep the scenario's
         if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
-                                             self.current.walls, float(robot.radius), self.current.boxes):
+                                             self.loaded.walls, float(robot.radius), self.loaded.boxes):
             return robot
         start = (float(free[0]), float(free[1]))
         path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
@@ -337,7 +345,7 @@ class SocialNavEnv(gymnasium.Env):
             gap = float(gaps[active].min())
         if gap < COLLISION_GAP:
             return gap, "person"
-        if wall_distance(pos, self.current.walls, self.robot_radius, self.current.boxes) < self.robot_radius:
+        if wall_distance(pos, self.loaded.walls, self.robot_radius, self.loaded.boxes) < self.robot_radius:
             return gap, "obstacle"
         return gap, ""
 
@@ -371,7 +379,7 @@ class SocialNavEnv(gymnasium.Env):
         people = nearest_pedestrians(pos, self.robot_radius, frame, crowd.pos, crowd.vel, crowd.radius,
                                      np.asarray(crowd.active, dtype=bool), self._one_hot[self.scenario_index],
                                      cfg.pedestrians, cfg.sensor_range)
-        patch = occupancy_patch(self.current.patch_grid, pos, frame, cfg.patch_cells, cfg.patch_resolution)
+        patch = occupancy_patch(self.loaded.patch_grid, pos, frame, cfg.patch_cells, cfg.patch_resolution)
         limit = np.float32(POSITION_LIMIT)
         return {"robot": np.clip(robot, -limit, limit), "goal": np.clip(goal, -limit, limit),
                 "waypoint": np.clip(waypoint, -limit, limit),
@@ -381,7 +389,7 @@ class SocialNavEnv(gymnasium.Env):
         """Advance along the planned path (see the module docstring), then the subgoal and the distance
         to go: straight to the subgoal, then along the path to the goal."""
         pos = self.sim.crowd.robot_pos
-        path, walls, boxes = self.path, self.current.walls, self.current.boxes
+        path, walls, boxes = self.path, self.loaded.walls, self.loaded.boxes
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
                 math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
@@ -401,7 +409,7 @@ class SocialNavEnv(gymnasium.Env):
         if done or (self.metrics_every and self.episode_steps % self.metrics_every == 0):
             self._metrics = self.episode_metrics()
         return {
-            "scenario": str(self.current.bundle_dir),
+            "scenario": str(self.loaded.bundle_dir),
             "time": float(self.sim.time),
             "distance_to_goal": float(self.distance_to_goal),
             "distance_to_go": float(self.distance_to_go),
@@ -416,7 +424,7 @@ class SocialNavEnv(gymnasium.Env):
 
     def episode_metrics(self) -> dict[str, float]:
         """HuNavSim evaluator's robot metrics of the episode so far, one sample per control period."""
-        scenario = self.current.scenario
+        scenario = self.loaded.scenario
         traj = self.history.trajectories([a.id for a in sorted(scenario.agents, key=lambda a: a.id)])
         radii = [a.radius for a in scenario.agents]
         return robot_metrics(traj, robot_radius=self.robot_radius,

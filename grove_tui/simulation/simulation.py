@@ -103,7 +103,7 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 
 class Simulation:
-    def __init__(self, crowd: Crowd, context: SimContext, trees: list[BehaviorTree | None], *, dt: float,
+    def __init__(self, crowd: Crowd, context: SimContext, trees: list[BehaviorTree], *, dt: float,
                  bt_rate: float, loops: list[bool] | None = None, scenario: Any = None, world: Any = None,
                  recorder: TrajectoryRecorder | None = None):
         self.crowd = crowd
@@ -115,7 +115,7 @@ class Simulation:
         self.bt_every = max(1, int(round(1.0 / (self.bt_rate * self.dt))))
         self.bt_dt = self.bt_every * self.dt
         self.loops = loops if loops is not None else [False] * len(trees)
-        self.finished = [tree is None for tree in trees]
+        self.finished = [False] * len(trees)
         self._finished_mask = np.array(self.finished, dtype=bool)
         n = len(trees)
         # quiescence specs (see tick_behaviors): far from (x, y) by more than sqrt(r2), before t,
@@ -204,7 +204,7 @@ class Simulation:
             context.field_exits[field_id] = (float(field.exit[0]), float(field.exit[1]))
         factory = tree_factory()
         bt_dt = max(1, int(round(1.0 / (bt_rate * dt)))) * dt
-        trees: list[BehaviorTree | None] = []
+        trees: list[BehaviorTree] = []
         loops: list[bool] = []
         for row, (agent, document) in enumerate(zip(agents, documents)):
             document = with_robot_reaction(document, agent.behavior)
@@ -425,19 +425,16 @@ class Simulation:
         idx = np.flatnonzero(active)
         ids = np.asarray(self.context.ids, dtype=np.int64)[idx]
         robot = None
-        if crowd.has_robot:
-            rp = crowd.robot_pos
-            robot = (float(rp[0]), float(rp[1]), float(crowd.robot_yaw))
+        rp, yaw = crowd.robot_pos, crowd.robot_yaw  # None without a robot
+        if rp is not None and yaw is not None:
+            robot = (float(rp[0]), float(rp[1]), yaw)
         status = tuple(self.context.status[i] for i in idx)
         return Frame(float(crowd.time), self.step_count, _frozen(ids), _frozen(crowd.pos[idx]), _frozen(crowd.vel[idx]),
                      _frozen(crowd.yaw[idx]), _frozen(crowd.group[idx]), status, robot, self.counters())
 
     def tree_status(self, agent_id: int) -> list[tuple[str, str, str]]:
         row = self.context.row(agent_id)
-        tree = self.trees[row]
-        if tree is None:
-            raise BTError(f"agent {agent_id} has no behavior tree")
-        return tree.status_list()
+        return self.trees[row].status_list()
 
     def agent_status(self, agent_id: int) -> str:
         return self.context.status[self.context.row(agent_id)]
@@ -453,9 +450,9 @@ class Simulation:
         pos = crowd.pos[:n]
         radius = crowd.radius[:n]
         c = ctx.counters
-        if crowd.has_robot:
-            rp = crowd.robot_pos
-            gap = np.hypot(pos[:, 0] - rp[0], pos[:, 1] - rp[1]) - radius - crowd.robot_radius
+        rp, robot_radius = crowd.robot_pos, crowd.robot_radius  # None without a robot
+        if rp is not None and robot_radius is not None:
+            gap = np.hypot(pos[:, 0] - rp[0], pos[:, 1] - rp[1]) - radius - robot_radius
             gap[~active] = np.inf
             if np.any(active):
                 c.closest_robot_approach = min(c.closest_robot_approach, max(0.0, float(gap.min())))

@@ -67,14 +67,14 @@ def _resolve(first: Path, allowed_roots: Sequence[str | Path] | None,
     return document, order
 
 
-def resolve_includes(path: str | Path, allowed_roots: Sequence[str | Path] | None = None,
+def resolve_includes(path: str | os.PathLike[str], allowed_roots: Sequence[str | Path] | None = None,
                      max_depth: int = MAX_INCLUDE_DEPTH) -> bytes:
     """The tree file with every <include> inlined (see the module docstring); BTError says why not."""
     document, _files = _resolve(Path(path), allowed_roots, max_depth)
     return etree.tostring(document, encoding="utf-8")
 
 
-def included_files(path: str | Path, allowed_roots: Sequence[str | Path] | None = None,
+def included_files(path: str | os.PathLike[str], allowed_roots: Sequence[str | Path] | None = None,
                    max_depth: int = MAX_INCLUDE_DEPTH) -> list[Path]:
     """The files `resolve_includes` reads for `path` besides it, in the order it reads them (each once)."""
     return _resolve(Path(path), allowed_roots, max_depth)[1]

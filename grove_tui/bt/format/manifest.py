@@ -51,7 +51,7 @@ _BTCPP_TYPE = {
 class PortSpec:
     name: str
     type: str
-    default: Any = None  # None: no default; a "{key}" string: blackboard pointer (BT.CPP v4 semantics)
+    default: int | float | bool | str | None = None  # None: no default; a "{key}" string: blackboard pointer (BT.CPP v4 semantics)
     min: float | None = None
     max: float | None = None
     choices: tuple[str, ...] | None = None

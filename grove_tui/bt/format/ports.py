@@ -14,6 +14,11 @@ from collections.abc import Iterable
 
 from grove_tui.bt.format.manifest import PortSpec
 
+Point = tuple[float, float]
+# A port's value once read (convert_literal), by port type: int/agent, float, bool, string/target,
+# agents (ids), point_list.
+PortValue = int | float | bool | str | tuple[int, ...] | tuple[Point, ...]
+
 # Centimetres: finer than the planner's 0.1 m grid and the SFM's 0.35 m body radius, and short
 # enough that a tree with hundreds of waypoints stays readable.
 POINT_DECIMALS = 2
@@ -83,10 +88,11 @@ def parse_agent_list(text: str) -> tuple[int, ...]:
         raise ValueError(f"expected comma-separated agent ids like '2,3', got {text!r}") from None
 
 
-def convert_literal(port: PortSpec, text: str):
+def convert_literal(port: PortSpec, text: str) -> PortValue:
     """Convert a port literal to its Python value; ValueError says what is expected."""
     t = port.type
     s = text.strip()
+    value: PortValue
     if t in ("int", "agent"):
         try:
             value = int(s)

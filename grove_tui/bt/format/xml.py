@@ -105,9 +105,8 @@ def _parse_lxml(data: bytes, source: str) -> etree._Element:
     try:
         root = etree.fromstring(data, _hardened_parser())
     except etree.XMLSyntaxError as exc:
-        line = exc.lineno if exc.lineno else None
         msg = (exc.msg if getattr(exc, "msg", None) else str(exc)).splitlines()[0]
-        raise located_error(source, line, f"not well-formed XML: {msg}") from None
+        raise located_error(source, exc.lineno or None, f"not well-formed XML: {msg}") from None
     docinfo = root.getroottree().docinfo
     if docinfo.internalDTD is not None or docinfo.externalDTD is not None or docinfo.doctype:
         raise located_error(source, None, "DOCTYPE declarations are not allowed in behavior trees")
@@ -468,7 +467,7 @@ def check_tree_text(text: str | bytes, source: str = "<string>",
     try:
         root = _read_elements(text, source)
     except BTError as exc:
-        return [BTProblem(source, getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
+        return [BTProblem(source, exc.line, exc.detail or str(exc))]
     return _validate(root, source, nodes)[1].finish()
 
 
@@ -494,7 +493,7 @@ def check_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] 
     try:
         data = read_file_bytes(path)
     except BTError as exc:
-        return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
+        return [BTProblem(str(path), exc.line, exc.detail or str(exc))]
     return check_tree_bytes(path, data, nodes)
 
 
@@ -507,7 +506,7 @@ def check_tree_bytes(path: str | os.PathLike[str], data: bytes,
     try:
         data = _with_includes(path, data)
     except BTError as exc:
-        return [BTProblem(str(path), getattr(exc, "line", None), getattr(exc, "detail", None) or str(exc))]
+        return [BTProblem(str(path), exc.line, exc.detail or str(exc))]
     return check_tree_text(data, str(path), nodes)
 
 

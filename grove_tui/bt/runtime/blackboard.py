@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from grove_tui.bt.format.manifest import PortSpec
-from grove_tui.bt.format.ports import convert_literal
+from grove_tui.bt.format.ports import PortValue, convert_literal
 from grove_tui.errors import BTError
 
 _MISSING = object()
@@ -24,8 +24,9 @@ class Blackboard:
 
     __slots__ = ("_values", "_types", "_remap", "_parent", "_autoremap")
 
-    def __init__(self, parent: Blackboard | None = None, autoremap: bool = False, values: Mapping | None = None):
-        self._values: dict[str, Any] = dict(values or {})
+    def __init__(self, parent: Blackboard | None = None, autoremap: bool = False,
+                 values: Mapping[str, PortValue] | None = None):
+        self._values: dict[str, PortValue] = dict(values or {})
         self._types: dict[str, str] = {}
         self._remap: dict[str, str] = {}
         self._parent = parent
@@ -37,15 +38,17 @@ class Blackboard:
     def _owner(self, key: str) -> tuple[Blackboard, str]:
         bb = self
         while True:
-            if key in bb._remap:
+            parent = bb._parent
+            if key in bb._remap and parent is not None:
                 key = bb._remap[key]
-                bb = bb._parent
+                bb = parent
                 continue
-            if key in bb._values or bb._parent is None or not bb._autoremap or key.startswith("_"):
+            if key in bb._values or parent is None or not bb._autoremap or key.startswith("_"):
                 return bb, key
-            bb = bb._parent
+            bb = parent
 
-    def get(self, key: str, default: Any = _MISSING) -> Any:
+    def get(self, key: str, default: object = _MISSING) -> object:
+        """The entry's value; `default` when it is not set, KeyError without a default."""
         bb, k = self._owner(key)
         value = bb._values.get(k, _MISSING)
         if value is _MISSING:
@@ -54,7 +57,7 @@ class Blackboard:
             return default
         return value
 
-    def set(self, key: str, value: Any) -> None:
+    def set(self, key: str, value: PortValue) -> None:
         bb, k = self._owner(key)
         bb._values[k] = value
 
@@ -87,7 +90,7 @@ class BlackboardRef:
         self.port = port
         self.where = where
 
-    def get(self) -> Any:
+    def get(self) -> Any:  # Any: the port's type is the manifest's, known at run time (convert_literal)
         value = self.blackboard.get(self.key, _ABSENT)
         if value is _ABSENT:
             raise BTError(f"{self.where}: port {self.port.name!r} reads blackboard entry {{{self.key}}}, "

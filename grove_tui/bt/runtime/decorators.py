@@ -8,6 +8,8 @@ same at any speed.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from grove_tui.bt.runtime.blackboard import BlackboardRef
 from grove_tui.bt.format.manifest import SUBTREE
 from grove_tui.bt.runtime.tree_node import (
@@ -290,7 +292,9 @@ class SubTreeNode(DecoratorNode):
         return child_status
 
 
-DECORATOR_CLASSES: dict[str, type[DecoratorNode]] = {
+# Callable[..., DecoratorNode]: each decorator takes its own ports positionally after (name, child), and
+# the clocked ones the clock; the factory passes them in manifest order.
+DECORATOR_CLASSES: dict[str, Callable[..., DecoratorNode]] = {
     "Inverter": Inverter, "ForceSuccess": ForceSuccess, "ForceFailure": ForceFailure, "RunOnce": RunOnce,
     "Repeat": Repeat, "RetryUntilSuccessful": RetryUntilSuccessful,
     "KeepRunningUntilFailure": KeepRunningUntilFailure, "Timeout": Timeout, "Delay": Delay,

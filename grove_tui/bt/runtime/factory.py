@@ -9,7 +9,6 @@ differential test (tests/bt/runtime/test_bt_differential.py) compares this runti
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
 
 from grove_tui.bt.runtime.blackboard import Blackboard, BlackboardRef
 from grove_tui.bt.runtime.controls import (
@@ -23,7 +22,7 @@ from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.bt.format.ports import checked_port, satisfied_by_goal_id
 from grove_tui.bt.runtime.leaves import BTCPP_LEAVES
 from grove_tui.bt.format.manifest import NODES, SUBTREE, NodeSpec
-from grove_tui.bt.format.ports import blackboard_pointer, convert_literal
+from grove_tui.bt.format.ports import PortValue, blackboard_pointer, convert_literal
 from grove_tui.bt.runtime.tree_node import (
     FAILURE, IDLE, RUNNING, STATUS_NAMES, SUCCESS, ConditionNode, DecoratorNode, LeafNode, SimClock, TreeNode,
 )
@@ -84,7 +83,7 @@ class BehaviorTree:
             if node.status != RUNNING:
                 return None
             if isinstance(node, LeafNode):
-                return (node, tuple(guards)) if getattr(node, "poll", None) is not None else None
+                return (node, tuple(guards)) if node.polls() else None
             if isinstance(node, _PASS_THROUGH):
                 if isinstance(node, DecoratorNode):
                     node = node.child
@@ -149,16 +148,17 @@ class TreeFactory:
         self.leaf_classes.update(leaf_classes)
         self.nodes = nodes
 
-    def create(self, document: TreeDocument, blackboard: Blackboard | None = None, ctx: Any = None,
+    def create(self, document: TreeDocument, blackboard: Blackboard | None = None, ctx: object = None,
                clock: SimClock | None = None) -> BehaviorTree:
         blackboard = blackboard if blackboard is not None else Blackboard()
         clock = clock if clock is not None else SimClock()
-        nodes: list[TreeNode] = []
-        root = self._build(document, document.main, blackboard, ctx, clock, nodes, "0", (document.main_tree_id,))
+        slots: list[TreeNode | None] = []
+        root = self._build(document, document.main, blackboard, ctx, clock, slots, "0", (document.main_tree_id,))
+        nodes = [node for node in slots if node is not None]  # every slot is filled once its subtree is built
         return BehaviorTree(root, blackboard, nodes, document.source, clock)
 
     def _inputs(self, spec: NodeSpec, element: TreeElement, blackboard: Blackboard, where: str):
-        inputs: dict[str, Any] = {}
+        inputs: dict[str, PortValue | BlackboardRef] = {}
         outputs: dict[str, str] = {}
         written = element.ports
         for port in spec.ports:
@@ -192,8 +192,8 @@ class TreeFactory:
                     raise BTError(f"{where}: port {port.name!r}: {exc}") from None
         return inputs, outputs
 
-    def _build(self, document: TreeDocument, element: TreeElement, blackboard: Blackboard, ctx, clock,
-               nodes: list[TreeNode], path: str, call_chain: tuple[str, ...]) -> TreeNode:
+    def _build(self, document: TreeDocument, element: TreeElement, blackboard: Blackboard, ctx: object,
+               clock: SimClock, nodes: list[TreeNode | None], path: str, call_chain: tuple[str, ...]) -> TreeNode:
         where = f"{document.source}:{element.line}" if element.line else document.source
         index = len(nodes)
         nodes.append(None)  # reserve the depth-first slot before the children
@@ -221,31 +221,31 @@ class TreeFactory:
             if spec.category == "control":
                 kids = [self._build(document, c, blackboard, ctx, clock, nodes, f"{path}/{i}", call_chain)
                         for i, c in enumerate(element.children)]
-                cls = CONTROL_CLASSES.get(element.id)
-                if cls is None:
+                control = CONTROL_CLASSES.get(element.id)
+                if control is None:
                     raise BTError(f"{where}: no implementation for control node {element.id!r}")
-                if cls is Parallel:
+                if control is Parallel:
                     node = Parallel(element.name, kids, inputs.get("success_count", -1), inputs.get("failure_count", 1))
                 else:
-                    node = cls(element.name, kids)
+                    node = control(element.name, kids)
             elif spec.category == "decorator":
                 if len(element.children) != 1:
                     raise BTError(f"{where}: {element.id} needs exactly one child")
                 child = self._build(document, element.children[0], blackboard, ctx, clock, nodes, path + "/0",
                                     call_chain)
-                cls = DECORATOR_CLASSES.get(element.id)
-                if cls is None:
+                decorator = DECORATOR_CLASSES.get(element.id)
+                if decorator is None:
                     raise BTError(f"{where}: no implementation for decorator {element.id!r}")
                 args = [inputs[p.name] for p in spec.ports if p.name in inputs]
                 if element.id in CLOCKED_DECORATORS:
-                    node = cls(element.name, child, *args, clock=clock)
+                    node = decorator(element.name, child, *args, clock=clock)
                 else:
-                    node = cls(element.name, child, *args)
+                    node = decorator(element.name, child, *args)
             else:
-                cls = self.leaf_classes.get(element.id)
-                if cls is None:
+                leaf = self.leaf_classes.get(element.id)
+                if leaf is None:
                     raise BTError(f"{where}: no implementation for node {element.id!r} in this runtime")
-                node = cls(element.name, inputs, outputs, blackboard, ctx, element.id)
+                node = leaf(element.name, inputs, outputs, blackboard, ctx, element.id)
             node.node_id = element.id
         node.path = path
         node.line = element.line
@@ -254,7 +254,7 @@ class TreeFactory:
 
 
 def build_tree_from_text(text: str, leaf_classes: LeafClasses, *, nodes: Mapping[str, NodeSpec] = NODES,
-                         blackboard: Blackboard | None = None, ctx: Any = None, clock: SimClock | None = None,
+                         blackboard: Blackboard | None = None, ctx: object = None, clock: SimClock | None = None,
                          source: str = "<string>") -> BehaviorTree:
     document = parse_tree_text(text, source, nodes)
     return TreeFactory(leaf_classes, nodes).create(document, blackboard, ctx, clock)

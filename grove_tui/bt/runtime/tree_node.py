@@ -10,6 +10,7 @@ from __future__ import annotations
 from enum import IntEnum
 from typing import Any
 
+from grove_tui.bt.format.ports import PortValue
 from grove_tui.bt.runtime.blackboard import Blackboard, BlackboardRef
 from grove_tui.errors import BTError
 
@@ -91,7 +92,7 @@ class ControlNode(TreeNode):
         super().__init__(name, node_id)
         self.kids = list(children)
 
-    def children(self):
+    def children(self) -> tuple[TreeNode, ...]:
         return tuple(self.kids)
 
     def halt_child(self, index: int) -> None:
@@ -119,7 +120,7 @@ class DecoratorNode(TreeNode):
         super().__init__(name, node_id)
         self.child = child
 
-    def children(self):
+    def children(self) -> tuple[TreeNode, ...]:
         return (self.child,)
 
     def reset_child(self) -> None:
@@ -137,8 +138,8 @@ class LeafNode(TreeNode):
 
     __slots__ = ("inputs", "outputs", "blackboard", "ctx")
 
-    def __init__(self, name: str, inputs: dict[str, Any], outputs: dict[str, str], blackboard: Blackboard,
-                 ctx: Any = None, node_id: str | None = None):
+    def __init__(self, name: str, inputs: dict[str, PortValue | BlackboardRef], outputs: dict[str, str], blackboard: Blackboard,
+                 ctx: object = None, node_id: str | None = None):
         super().__init__(name, node_id)
         self.inputs = inputs
         self.outputs = outputs
@@ -147,9 +148,21 @@ class LeafNode(TreeNode):
         self.setup()
 
     def setup(self) -> None:
-        """Hook for subclasses to cache literal inputs."""
+        """Hook for subclasses to cache literal inputs (and to take what they need from `ctx`, the
+        application's per-agent context, which the runtime only passes along)."""
 
-    def get_input(self, name: str, default: Any = None) -> Any:
+    def poll(self) -> bool:
+        """Side-effect-free: would on_running just return RUNNING now? A leaf that can tell overrides
+        this, and only below such a leaf does BehaviorTree.tick skip quiescent ticks (`polls`)."""
+        return False
+
+    @classmethod
+    def polls(cls) -> bool:
+        return cls.poll is not LeafNode.poll
+
+    def get_input(self, name: str, default: PortValue | None = None) -> Any:
+        """The port's value, read through the blackboard for a {key} port. Any: each port has the type the
+        manifest gives it (PortSpec.type), known at run time, so a leaf reads it as that type."""
         value = self.inputs.get(name, default)
         if type(value) is BlackboardRef:
             return value.get()
@@ -158,7 +171,7 @@ class LeafNode(TreeNode):
     def is_literal(self, name: str) -> bool:
         return name in self.inputs and type(self.inputs[name]) is not BlackboardRef
 
-    def set_output(self, name: str, value: Any) -> None:
+    def set_output(self, name: str, value: PortValue) -> None:
         key = self.outputs.get(name)
         if key is not None:
             self.blackboard.set(key, value)

@@ -8,30 +8,34 @@ the whole tree.
 from __future__ import annotations
 
 import math
-from typing import Any
 
 from grove_tui.bt.runtime.blackboard import BlackboardRef
 from grove_tui.bt.runtime.tree_node import FAILURE, RUNNING, SUCCESS, ConditionNode, StatefulActionNode, SyncActionNode
+from grove_tui.crowd.context import AgentContext, SimContext, Snapshot
 from grove_tui.errors import BTError
 
 __all__ = ["AgentCondition", "AgentSyncAction", "AgentStatefulAction", "FAILURE", "RUNNING", "SUCCESS",
            "bind_agent", "angle_diff"]
 
 
-def bind_agent(node: Any, port: str) -> None:
-    """Resolve the node's own agent (crowd row) once: its id never changes during a run."""
+def bind_agent(node: AgentCondition | AgentSyncAction | AgentStatefulAction, port: str) -> None:
+    """Resolve the node's own agent (crowd row) once: its id never changes during a run.
+
+    A tree built without a simulation (validation, fuzzing) has no context: its leaves stay unbound
+    (row -1, no `sim`) and are never ticked."""
     ctx = node.ctx
-    node.sim = ctx.sim if ctx is not None else None
-    node.row = ctx.row if ctx is not None else -1
-    if ctx is None:
+    node.row = -1
+    if not isinstance(ctx, AgentContext):
         return
+    node.sim = ctx.sim
+    node.row = ctx.row
     value = node.inputs.get(port)
     if type(value) is BlackboardRef:
         try:
             value = value.get()
         except BTError:
             value = None
-    if value is not None and int(value) != ctx.agent_id:
+    if value is not None and value != ctx.agent_id:
         node.row = ctx.sim.row(value, f"{node.node_id}.{port}")
 
 
@@ -42,6 +46,8 @@ def angle_diff(a: float, b: float) -> float:
 
 class AgentCondition(ConditionNode):
     __slots__ = ("sim", "row")
+    sim: SimContext
+    row: int
     AGENT_PORT = "agent_id"
 
     def setup(self) -> None:
@@ -50,6 +56,8 @@ class AgentCondition(ConditionNode):
 
 class AgentSyncAction(SyncActionNode):
     __slots__ = ("sim", "row")
+    sim: SimContext
+    row: int
     AGENT_PORT = "agent_id"
 
     def setup(self) -> None:
@@ -61,6 +69,10 @@ class AgentStatefulAction(StatefulActionNode):
     replaced (restored when it ends or is halted)."""
 
     __slots__ = ("sim", "row", "started_at", "saved")
+    sim: SimContext
+    row: int
+    started_at: float
+    saved: Snapshot | None
     AGENT_PORT = "agent_id"
 
     def setup(self) -> None:

@@ -10,10 +10,18 @@ import math
 
 import shapely
 
-from grove_tui.crowd.coordination import ARRIVAL_TOLERANCE, Conversation, ServiceQueue
+from collections.abc import Sequence
+
+from grove_tui.crowd.context import Point, SimContext
+from grove_tui.crowd.coordination import ARRIVAL_TOLERANCE, Conversation, FreeSpace, ServiceQueue
 from grove_tui.crowd.leaves.base import RUNNING, SUCCESS, AgentStatefulAction, AgentSyncAction
-from grove_tui.errors import BTError
 from grove_tui.crowd.sfm import MODE_FACE, MODE_FIELD, MODE_GOALS, MODE_STOP
+from grove_tui.errors import BTError
+from grove_tui.world.model import Door, World, Zone
+
+# What the simulation checks all quiet agents by at once (Simulation._update_quiet_spec): the leaf
+# stays RUNNING while the agent is farther than sqrt(r2) from (x, y) and the clock is before t_end.
+QuietSpec = tuple[float, float, float, float]
 
 EXIT_RADIUS = 0.6  # metres from the exit point at which an evacuee turns to walk out through the door
 DOOR_PASS = 1.5  # metres beyond the door line an evacuee walks to; it is counted out on crossing the line
@@ -23,21 +31,21 @@ ASIDE_SPACING = 0.8  # metres between the spots served people step to
 GROUP_ID_BASE = 100000  # SFM group ids derived from agent ids, far from the scenario's own
 
 
-def _go(sim, row: int, route, goal_radius: float) -> None:
+def _go(sim: SimContext, row: int, route: Sequence[Point], goal_radius: float) -> None:
     crowd = sim.crowd
     crowd.set_goals(row, route, goal_radius=goal_radius)
     if crowd.mode[row] != MODE_GOALS:
         crowd.set_mode(row, MODE_GOALS)
 
 
-def _stand(sim, row: int) -> None:
+def _stand(sim: SimContext, row: int) -> None:
     crowd = sim.crowd
     crowd.set_goals(row, [])
     if crowd.mode[row] != MODE_GOALS:
         crowd.set_mode(row, MODE_GOALS)
 
 
-def _face(sim, row: int, point) -> None:
+def _face(sim: SimContext, row: int, point: Sequence[float]) -> None:
     sim.crowd.set_face_target(row, (float(point[0]), float(point[1])))
     sim.crowd.set_mode(row, MODE_FACE)
 
@@ -50,10 +58,12 @@ class GoTo(AgentStatefulAction):
     """
 
     __slots__ = ("target_point", "interrupted", "reach2")
+    target_point: Point  # set by on_start
+    interrupted: bool
+    reach2: float
 
     def setup(self) -> None:
         super().setup()
-        self.target_point = None
         self.interrupted = False
         self.reach2 = 0.0
 
@@ -95,7 +105,7 @@ class GoTo(AgentStatefulAction):
         self.interrupted = True
         _stand(self.sim, self.row)
 
-    def quiet_spec(self):
+    def quiet_spec(self) -> QuietSpec | None:
         """(x, y, r2, t_end): poll() holds while the agent is farther than sqrt(r2) from (x, y) and
         the clock is before t_end; lets the simulation check all quiet agents at once in numpy."""
         return (self.target_point[0], self.target_point[1], self.reach2, math.inf)
@@ -114,7 +124,7 @@ class Wait(AgentStatefulAction):
     def poll(self) -> bool:
         return self.on_running() == RUNNING  # on_running only reads the clock
 
-    def quiet_spec(self):
+    def quiet_spec(self) -> QuietSpec | None:
         return (0.0, 0.0, -1.0, self.started_at + self.get_input("duration") - 1e-9)
 
     def on_start(self) -> int:
@@ -133,10 +143,13 @@ class Queue(AgentStatefulAction):
     """Joins the line at a service point, advances slot by slot, is served at the head, steps aside."""
 
     __slots__ = ("queue", "slot", "arrived", "slot_point")
+    queue: ServiceQueue  # joined by on_start
+    slot: int
+    arrived: bool
+    slot_point: Point
 
     def setup(self) -> None:
         super().setup()
-        self.queue: ServiceQueue | None = None
         self.slot = -1
         self.arrived = False
         self.slot_point = (0.0, 0.0)
@@ -187,8 +200,7 @@ class Queue(AgentStatefulAction):
         return RUNNING
 
     def on_halted(self) -> None:
-        if self.queue is not None:
-            self.queue.step_out(self.row, self.sim.clock.now)
+        self.queue.step_out(self.row, self.sim.clock.now)  # halted while RUNNING: on_start joined it
         _stand(self.sim, self.row)
 
     def poll(self) -> bool:
@@ -202,14 +214,14 @@ class Queue(AgentStatefulAction):
         return self.arrived or math.hypot(sim.px[row] - slot[0], sim.py[row] - slot[1]) > ARRIVAL_TOLERANCE
 
 
-def aside_spot(sim, queue: ServiceQueue):
+def aside_spot(sim: FreeSpace, queue: ServiceQueue) -> Point:
     """A free spot beside the line, away from where earlier served people stand: everyone stepping
     to one spot would pile up next to the head of the line for the rest of the run.
 
     `sim` needs only is_free and nearest_free, so generation can predict the spots on its grid."""
     sx, sy = queue.service_point
     dx, dy = queue.direction
-    first = None
+    first: Point | None = None
     for ring in range(6):
         out = STEP_ASIDE + ASIDE_SPACING * ring
         for back in (0.0, ASIDE_SPACING):  # beside the head, or half a step back along the line
@@ -239,6 +251,9 @@ class FollowVelocityField(AgentStatefulAction):
     """
 
     __slots__ = ("exit_point", "door", "passing")
+    exit_point: Point
+    door: Door | None  # None without a world: the exit point is where the agent leaves
+    passing: bool
 
     def setup(self) -> None:
         super().setup()
@@ -294,7 +309,7 @@ class FollowVelocityField(AgentStatefulAction):
         self.passing = False
         self.sim.crowd.set_mode(self.row, MODE_STOP)
 
-    def quiet_spec(self):
+    def quiet_spec(self) -> QuietSpec | None:
         if self.passing:
             return (0.0, 0.0, -1.0, math.inf)  # nothing left to decide: the outline check counts it
         return (self.exit_point[0], self.exit_point[1], EXIT_RADIUS * EXIT_RADIUS, math.inf)
@@ -306,11 +321,12 @@ class FollowVelocityField(AgentStatefulAction):
         return math.hypot(sim.px[row] - e[0], sim.py[row] - e[1]) > EXIT_RADIUS
 
 
-def exit_door_near(world, point) -> object | None:
+def exit_door_near(world: World | None, point: Point) -> Door | None:
     """The exit door whose opening is within reach of `point` (the exit RoI may be its centre or just inside)."""
-    if world is None or not hasattr(world, "exits"):
+    if world is None:
         return None
-    best, best_distance = None, math.inf
+    best: Door | None = None
+    best_distance = math.inf
     for door in world.exits():
         distance = math.dist(door.position, point)
         if distance <= door.width / 2.0 + EXIT_RADIUS + 0.5 and distance < best_distance:
@@ -322,11 +338,12 @@ class Wander(AgentStatefulAction):
     """Random reachable spots inside a zone, one after another with short pauses, for `duration`."""
 
     __slots__ = ("zone", "goal", "pause_until")
+    zone: Zone  # set by on_start
+    goal: Point  # set by on_start (_next_goal)
+    pause_until: float
 
     def setup(self) -> None:
         super().setup()
-        self.zone = None
-        self.goal = None
         self.pause_until = -1.0
 
     def on_start(self) -> int:
@@ -338,7 +355,12 @@ class Wander(AgentStatefulAction):
             found = sim.world.find(name)
         except Exception as exc:
             raise BTError(f"{self.path} Wander: {exc}") from None
-        zone = found if hasattr(found, "boundary") else sim.world.zone(found.zone)
+        if isinstance(found, Zone):
+            zone = found
+        elif found.zone is not None:
+            zone = sim.world.zone(found.zone)
+        else:
+            raise BTError(f"{self.path} Wander: {name!r} is in no zone to wander in")
         self.zone = zone
         self.started_at = sim.clock.now
         self.pause_until = -1.0
@@ -351,7 +373,7 @@ class Wander(AgentStatefulAction):
         polygon = self.zone.polygon
         xmin, ymin, xmax, ymax = polygon.bounds
         p = sim.pos[self.row]
-        hidden = None  # a reachable spot out of sight, used only if no spot in sight turns up
+        hidden: Point | None = None  # a reachable spot out of sight, used only if no spot in sight turns up
         for _ in range(8):
             xs = sim.rng.uniform(xmin, xmax, 32)
             ys = sim.rng.uniform(ymin, ymax, 32)
@@ -387,7 +409,7 @@ class Wander(AgentStatefulAction):
     def on_halted(self) -> None:
         _stand(self.sim, self.row)
 
-    def quiet_spec(self):
+    def quiet_spec(self) -> QuietSpec | None:
         duration = self.get_input("duration")
         end = self.started_at + duration - 1e-9 if duration > 0 else math.inf
         if self.pause_until >= 0:
@@ -429,10 +451,14 @@ class Converse(AgentStatefulAction):
     """Conversation circle at the target: walk to the assigned spot, face the centre, talk once all arrived."""
 
     __slots__ = ("conv", "spot", "ready", "interrupted", "group")
+    conv: Conversation  # joined by on_start
+    spot: Point
+    ready: bool
+    interrupted: bool
+    group: int
 
     def setup(self) -> None:
         super().setup()
-        self.conv: Conversation | None = None
         self.spot = (0.0, 0.0)
         self.ready = False
         self.interrupted = False
@@ -490,12 +516,11 @@ class Converse(AgentStatefulAction):
 
     def on_halted(self) -> None:
         self.interrupted = True
-        if self.conv is not None:
-            self.sim.conversations.leave(self.conv, self.row)
+        self.sim.conversations.leave(self.conv, self.row)  # halted while RUNNING: on_start joined it
         self.sim.crowd.set_group(self.row, self.group)
         _stand(self.sim, self.row)
 
-    def quiet_spec(self):
+    def quiet_spec(self) -> QuietSpec | None:
         if self.ready:
             return None
         return (self.spot[0], self.spot[1], ARRIVAL_TOLERANCE * ARRIVAL_TOLERANCE, math.inf)

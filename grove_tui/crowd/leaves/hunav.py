@@ -11,7 +11,11 @@ Port names and defaults are HuNavSim's (see manifest.py). Differences, all delib
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
+from typing import Literal
 
+from grove_tui.crowd.context import Point, Snapshot
+from grove_tui.crowd.coordination import Conversation
 from grove_tui.crowd.leaves.base import (
     FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, angle_diff,
 )
@@ -19,6 +23,9 @@ from grove_tui.errors import BTError
 from grove_tui.crowd.sfm import (
     MODE_FACE, MODE_GOALS, MODE_STOP, ROBOT_AS_AGENT, ROBOT_FEARED, ROBOT_IGNORED,
 )
+
+# What an agent turns to (Crowd.set_face_target): a point, another agent's row, or the robot.
+FaceTarget = Point | int | Literal["robot"]
 
 VISIBLE_HALF_ANGLE = math.pi / 2 + 0.17  # HuNavSim IsRobotVisible field of view (each side)
 FACING_TOLERANCE = 0.3  # rad, IsRobotFacingAgent
@@ -37,6 +44,7 @@ class IsGoalReached(AgentCondition):
 
 class IsRobotVisible(AgentCondition):
     __slots__ = ("distance",)
+    distance: float | None  # its literal range; None when read from the blackboard
     PURE = True
 
     def robot_guard_distance(self) -> float | None:
@@ -93,9 +101,9 @@ class TimeExpiredCondition(AgentCondition):
     """Adds `ts` per tick; FAILURE until `seconds` accumulate, then SUCCESS (and restarts unless only_once)."""
 
     __slots__ = ("total",)
+    total: float
 
-    def setup(self) -> None:
-        self.sim = None
+    def setup(self) -> None:  # counts its own `ts`: bound to no agent
         self.row = -1
         self.total = 0.0
 
@@ -115,7 +123,7 @@ class RandomChanceCondition(AgentCondition):
         return SUCCESS if self.sim.rng.random() < self.get_input("probability") else FAILURE
 
 
-def _other_row(node, port: str) -> int | None:
+def _other_row(node: AgentCondition | AgentSyncAction | AgentStatefulAction, port: str) -> int | None:
     value = node.get_input(port)
     if value is None:
         return node.sim.partner_of(node.row)
@@ -313,7 +321,8 @@ class SetGroupId(AgentSyncAction):
         return SUCCESS
 
 
-def goal_point(node, x_port: str = "target_x", y_port: str = "target_y"):
+def goal_point(node: AgentSyncAction | AgentStatefulAction, x_port: str = "target_x",
+               y_port: str = "target_y") -> Point | None:
     """A node's point: its global goal (goal_id), else the literal x/y ports older HuNavSim 2.0 trees
     wrote (manifest._legacy_point); None when it names neither."""
     goal_id = node.get_input("goal_id")
@@ -358,6 +367,10 @@ class _Timed(AgentStatefulAction):
     """Save intents, run `step()` each tick for `duration` seconds (0 = until halted), restore."""
 
     __slots__ = ("last_goal", "last_speed", "facing", "routed_to")
+    last_goal: Point | None
+    last_speed: float | None
+    facing: FaceTarget | None
+    routed_to: Point | None
     DURATION_PORT = "duration"
     LABEL = ""
     REGOAL = 0.2  # metres a moving target must shift before the goal intent is rewritten
@@ -413,7 +426,7 @@ class _Timed(AgentStatefulAction):
         """Update intents from the current positions."""
 
     # shared moves
-    def walk_to(self, point, speed: float | None = None, goal_radius: float = 0.15) -> None:
+    def walk_to(self, point: Point, speed: float | None = None, goal_radius: float = 0.15) -> None:
         # the target (robot, another agent) moves a few centimetres per tick: rewriting the intents
         # only when it shifted REGOAL or the speed changed by 5 % keeps the behaviour and the cost low
         crowd = self.sim.crowd
@@ -438,7 +451,7 @@ class _Timed(AgentStatefulAction):
                 crowd.set_speed(self.row, speed)
                 self.last_speed = speed
 
-    def face(self, target) -> None:
+    def face(self, target: FaceTarget) -> None:
         if self.facing == target:
             return
         crowd = self.sim.crowd
@@ -471,6 +484,7 @@ class _Reaction(_Timed):
     """HuNavSim reaction to the robot, see agent_manager.cpp (2.0 behaviours, section 3 of the reference)."""
 
     __slots__ = ("used",)
+    used: bool
     DURATION_PORT = "beh_duration"
     INTERACTION = ROBOT_IGNORED
     ROBOT_EVENT = True
@@ -554,6 +568,8 @@ class ThreateningNav(_Reaction):
 
     def step(self) -> None:
         sim = self.sim
+        if sim.robot is None:
+            return  # the robot left; the reaction ends with its duration
         rx, ry, ryaw = sim.robot
         g = self.get_input("goal_dist")
         g = g if g > 0.5 else 1.5
@@ -674,6 +690,7 @@ class SetGroupWalk(_Timed):
     """The main agent's group id and goals are given to the listed agents for `duration`."""
 
     __slots__ = ("followers",)
+    followers: list[tuple[int, Snapshot, int]]  # (row, intents, group) of each follower, to give back
     AGENT_PORT = "main_agent_id"
     LABEL = "leading a group"
 
@@ -686,15 +703,15 @@ class SetGroupWalk(_Timed):
         ids = self.get_input("non_main_agent_ids") or ()
         if not ids:
             ids = tuple(i for i in sim.members_of(sim.ids[self.row]) if i != sim.ids[self.row])
-        self.followers = [(sim.row(i, "non_main_agent_ids"), None) for i in ids]
+        rows = [sim.row(i, "non_main_agent_ids") for i in ids]
         crowd = sim.crowd
         group = int(crowd.group[self.row])
         if group < 0:
             group = 100000 + sim.ids[self.row]
             crowd.set_group(self.row, group)
         goals = crowd.goals(self.row)
-        saved = []
-        for row, _ in self.followers:
+        saved: list[tuple[int, Snapshot, int]] = []
+        for row in rows:
             saved.append((row, sim.snapshot(row), int(crowd.group[row])))
             crowd.set_group(row, group)
             crowd.set_goals(row, goals)
@@ -712,7 +729,7 @@ class SetGroupWalk(_Timed):
         super().on_halted()
 
     def _release(self) -> None:
-        for row, snap, group in self.followers or ():
+        for row, snap, group in self.followers:
             self.sim.restore(row, snap)
             self.sim.crowd.set_group(row, group)
         self.followers = []
@@ -724,7 +741,7 @@ class _LookAt(AgentStatefulAction):
     def poll(self) -> bool:
         return self.on_running() == RUNNING  # on_running only reads positions
 
-    def target(self):
+    def target(self) -> FaceTarget | None:
         """Where the approach goes; each subclass says (the robot, an agent)."""
         raise NotImplementedError(f"{type(self).__name__} must define target()")
 
@@ -740,7 +757,10 @@ class _LookAt(AgentStatefulAction):
         target = self.target()
         if target is None:
             return FAILURE
+        point: Sequence[float]
         if isinstance(target, str):
+            if self.sim.robot is None:
+                return FAILURE
             point = self.sim.robot
         elif isinstance(target, int):
             point = self.sim.pos[target]
@@ -755,7 +775,7 @@ class _LookAt(AgentStatefulAction):
 class LookAtRobot(_LookAt):
     __slots__ = ()
 
-    def target(self):
+    def target(self) -> FaceTarget | None:
         return "robot" if self.sim.robot is not None else None
 
     def on_start(self) -> int:
@@ -768,14 +788,14 @@ class LookAtAgent(_LookAt):
     __slots__ = ()
     AGENT_PORT = "observer_id"
 
-    def target(self):
+    def target(self) -> FaceTarget | None:
         return _other_row(self, "target_id")
 
 
 class LookAtPoint(_LookAt):
     __slots__ = ()
 
-    def target(self):
+    def target(self) -> FaceTarget | None:
         return goal_point(self)
 
 
@@ -783,11 +803,13 @@ class ConversationFormation(AgentStatefulAction):
     """HuNavSim's conversation: the main agent's node drives every participant (spots, facing, timer)."""
 
     __slots__ = ("conv", "rows", "snaps")
+    conv: Conversation  # joined by on_start
+    rows: list[int]
+    snaps: list[tuple[int, Snapshot]]  # (row, intents to give back) of every participant
     AGENT_PORT = "main_agent_id"
 
     def setup(self) -> None:
         super().setup()
-        self.conv = None
         self.rows = []
         self.snaps = []
 
