@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from collections.abc import Sequence
-from typing import Any, Protocol
+from collections.abc import Iterator, Sequence
+from typing import Protocol
 
 import numpy as np
 
 from grove_tui.bt.runtime.tree_node import SimClock
+from grove_tui.world.model import Door, Entity, World, Zone
 
 Point = tuple[float, float]
 
@@ -24,6 +25,13 @@ class FreeSpace(Protocol):
 
     def is_free(self, x: float, y: float) -> bool: ...
     def nearest_free(self, x: float, y: float) -> Point: ...
+
+
+class Floor(FreeSpace, Protocol):
+    """Free floor and the world it belongs to (None: no world, only walls): where a queue line heads."""
+
+    @property
+    def world(self) -> World | None: ...
 
 
 class Bodies(Protocol):
@@ -37,7 +45,7 @@ class Bodies(Protocol):
     def active(self) -> np.ndarray: ...
 
 
-class Shared(FreeSpace, Protocol):
+class Shared(Floor, Protocol):
     """What the registries read of a running simulation; grove_tui.crowd.context.SimContext provides it
     (a protocol, so the context can own the registries without an import circle)."""
 
@@ -154,12 +162,12 @@ class QueueRegistry:
         return queue_line_direction(self._sim, name, service_point, spacing)
 
 
-def queue_spacing(spacing: float, radii: Any) -> float:
+def queue_spacing(spacing: float, radii: Sequence[float] | np.ndarray) -> float:
     """People do not stand inside each other: a spacing below two radii would only be pushed apart."""
     return max(spacing, 2.0 * float(max(radii)) + 0.1) if len(radii) else spacing
 
 
-def queue_line_direction(space: Any, name: str, service_point: Point, spacing: float) -> tuple[Point, float]:
+def queue_line_direction(space: Floor, name: str, service_point: Point, spacing: float) -> tuple[Point, float]:
     """Heading of the line: the direction with the most free floor, preferring straight away from the
     served object (a counter's queue extends from its front, not along it).
 
@@ -170,7 +178,7 @@ def queue_line_direction(space: Any, name: str, service_point: Point, spacing: f
     preferred = None
     if space.world is not None:
         try:
-            found: Any = space.world.find(name)
+            found: Zone | Door | Entity | None = space.world.find(name)
         except Exception:
             found = None
         footprint = getattr(found, "footprint", None)
@@ -306,7 +314,7 @@ class SpeechLog:
     def say(self, t: float, row: int, message: str) -> None:
         self.entries.append((t, row, message))
 
-    def since(self, t: float):
+    def since(self, t: float) -> Iterator[tuple[float, int, str]]:
         for entry in reversed(self.entries):
             if entry[0] < t:
                 break

@@ -59,7 +59,9 @@ import numpy as np
 import yaml
 
 from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap, safe_file_name
-from grove_tui.bt.format.hunav_compat import hunav_loading_problems, label_clocks, prefix_node_ids, restrict_to_hunav_ports, wrap_for_hunav
+from grove_tui.bt.format.hunav_compat import (
+    hunav_loading_problems, label_clocks, prefix_node_ids, restrict_to_hunav_ports, wrap_for_hunav,
+)
 from grove_tui.bt.format.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.format.document import TreeDocument, TreeElement, node
 from grove_tui.bt.format.ports import parse_point_list

@@ -52,6 +52,8 @@ from grove_tui.gym.config import (BEHAVIORS, ENV_BOUNDS, Bound, KINEMATICS, MAX_
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
+from grove_tui.scenario.model import RobotSpec
+from grove_tui.simulation.simulation import Simulation
 
 ENV_ID = "grove/SocialNav-v0"
 # HuNavSim evaluator's completion rule: within goal radius (0.3 m) + 0.3 m of the goal.
@@ -87,7 +89,7 @@ class SocialNavEnv(gymnasium.Env):
                  goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
                  reward: RewardWeights | dict | None = None,
                  observation: ObservationConfig | dict | None = None, metrics_every: int = 1,
-                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: Any) -> None:
+                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: Any) -> None:  # unknown: refused
         super().__init__()
         if unknown:
             names = ", ".join(sorted(map(str, unknown))[:5])
@@ -170,7 +172,7 @@ class SocialNavEnv(gymnasium.Env):
         })
         self._cursor = 0
         self.current: LoadedScenario | None = None  # the episode's scenario, from reset() on
-        self.sim: Any = None
+        self.sim: Simulation | None = None
         self.episode_actions: list[tuple[float, float]] = []
 
     # ---- episode -------------------------------------------------------------------------------
@@ -182,6 +184,7 @@ class SocialNavEnv(gymnasium.Env):
             raise GymResetNeeded("no episode before reset()", hint="call reset() first")
         return self.current
 
+    # Any: Gymnasium's API (options and info are free-form dicts; an action is whatever the policy gives)
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[dict, dict]:
         """Load the next scenario (options={"scenario": i} picks one), place the robot at its start."""
         super().reset(seed=seed)  # gymnasium's own error for a seed that is not a whole number >= 0
@@ -256,7 +259,7 @@ class SocialNavEnv(gymnasium.Env):
             if collision:
                 break
         if self.kinematics == "holonomic":
-            self.heading = float(crowd.robot_yaw)
+            self.heading = float(crowd.robot_yaw or 0.0)  # holonomic: the crowd turns the robot's body
         self.episode_steps += 1
         previous = self.distance_to_go
         self.distance_to_goal = self._goal_distance()
@@ -304,7 +307,7 @@ class SocialNavEnv(gymnasium.Env):
 
     # ---- parts ---------------------------------------------------------------------------------
 
-    def _jittered(self, robot: Any) -> Any:
+    def _jittered(self, robot: RobotSpec) -> RobotSpec:
         """The scenario's robot with its start moved up to start_jitter metres (uniform in the disc, drawn
         from the env's seeded np_random) to a free cell of the planning grid; the planned path then
         starts there, so the subgoal logic leads the robot back onto it."""
@@ -321,13 +324,27 @@ class SocialNavEnv(gymnasium.Env):
         path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
         return dataclasses.replace(robot, start=start, path=path)
 
-    def _robot_pose(self) -> tuple[float, float, float, float, float]:
-        crowd = self.sim.crowd
+    @property
+    def running(self) -> Simulation:
+        """The episode's simulation; GymResetNeeded before the first reset()."""
+        if self.sim is None:
+            raise GymResetNeeded("no episode before reset()", hint="call reset() first")
+        return self.sim
+
+    def _robot_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """The robot's position and velocity (x, y): every scenario the env loads has a robot."""
+        crowd = self.running.crowd
         pos, vel = crowd.robot_pos, crowd.robot_vel
+        if pos is None or vel is None:
+            raise GymError(f"{self.loaded.bundle_dir}: the simulation has no robot")
+        return pos, vel
+
+    def _robot_pose(self) -> tuple[float, float, float, float, float]:
+        pos, vel = self._robot_state()
         return float(pos[0]), float(pos[1]), float(self.heading), float(vel[0]), float(vel[1])
 
     def _goal_distance(self) -> float:
-        pos = self.sim.crowd.robot_pos
+        pos, _ = self._robot_state()
         return float(math.hypot(self.goal[0] - pos[0], self.goal[1] - pos[1]))
 
     def observation_frame(self) -> np.ndarray:
@@ -335,8 +352,8 @@ class SocialNavEnv(gymnasium.Env):
 
     def _contact(self) -> tuple[float, str]:
         """(smallest gap to a person, "person" | "obstacle" | "") right now."""
-        crowd = self.sim.crowd
-        pos = crowd.robot_pos
+        crowd = self.running.crowd
+        pos, _ = self._robot_state()
         people = crowd.pos
         active = np.asarray(crowd.active, dtype=bool)
         gap = math.inf
@@ -364,12 +381,13 @@ class SocialNavEnv(gymnasium.Env):
         }
 
     def _observation(self) -> dict[str, np.ndarray]:
-        crowd = self.sim.crowd
+        sim = self.running
+        crowd = sim.crowd
         frame = self.observation_frame()
-        pos = crowd.robot_pos
-        vel = frame @ crowd.robot_vel
+        pos, robot_vel = self._robot_state()
+        vel = frame @ robot_vel
         robot = np.array([vel[0], vel[1], math.cos(self.heading), math.sin(self.heading), self.robot_radius,
-                          self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
+                          self.robot_max_speed, max(0.0, 1.0 - sim.time / self.time_limit)], dtype=np.float32)
         goal_xy = frame @ (self.goal - pos)
         goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
         offset = self.path[self.subgoal_index] - pos
@@ -388,7 +406,7 @@ class SocialNavEnv(gymnasium.Env):
     def _refresh_subgoal(self) -> None:
         """Advance along the planned path (see the module docstring), then the subgoal and the distance
         to go: straight to the subgoal, then along the path to the goal."""
-        pos = self.sim.crowd.robot_pos
+        pos, _ = self._robot_state()
         path, walls, boxes = self.path, self.loaded.walls, self.loaded.boxes
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
@@ -410,7 +428,7 @@ class SocialNavEnv(gymnasium.Env):
             self._metrics = self.episode_metrics()
         return {
             "scenario": str(self.loaded.bundle_dir),
-            "time": float(self.sim.time),
+            "time": float(self.running.time),
             "distance_to_goal": float(self.distance_to_goal),
             "distance_to_go": float(self.distance_to_go),
             "collision": collision,
@@ -440,7 +458,7 @@ class SocialNavEnv(gymnasium.Env):
         return record_episode(self, out_dir, overwrite=overwrite)
 
 
-def _short(value: Any) -> str:
+def _short(value: Any) -> str:  # Any: whatever a policy passed, shown in an error
     try:
         text = repr(value)
     except ValueError:  # an int too long to print
@@ -472,7 +490,7 @@ class _History:
         self.groups = np.full(people, -1, dtype=np.int64)
         self.size = 0
 
-    def append(self, sim: Any, pose: tuple[float, float, float, float, float]) -> None:
+    def append(self, sim: Simulation, pose: tuple[float, float, float, float, float]) -> None:
         if self.size == self.t.shape[0]:
             self._grow()
         k = self.size

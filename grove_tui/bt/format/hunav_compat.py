@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from grove_tui.bt.format.document import node
+from grove_tui.bt.format.document import TreeDocument, TreeElement, node
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.xml import read_tree
 
@@ -115,11 +115,11 @@ HOLD_NAME = "hold_final_state"
 REACTION_NODES = frozenset({"SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav"})
 
 
-def _read(xml: str | bytes):
+def _read(xml: str | bytes) -> TreeDocument:
     return read_tree(xml, "<hunav tree>")
 
 
-def restrict_to_hunav_ports(document):
+def restrict_to_hunav_ports(document: TreeDocument) -> TreeDocument:
     """Drop, in place, every attribute of a HuNavSim node that HuNavSim does not declare (BT.CPP 4 would
     refuse it); returns the document.
 
@@ -164,7 +164,7 @@ def hunav_loading_problems(xml: str | bytes) -> list[str]:
     return problems
 
 
-def hold_forever(wait_seconds: float):
+def hold_forever(wait_seconds: float) -> TreeElement:
     """A subtree that stands still and never completes.
 
     HuNavSim ticks every agent's root on every step and BT.CPP 4 resets a root that returned SUCCESS
@@ -177,8 +177,8 @@ def hold_forever(wait_seconds: float):
     return hold
 
 
-def wrap_for_hunav(document, *, reaction: tuple[str, float, float, bool] | None, hold_seconds: float,
-                   looping: frozenset[str]):
+def wrap_for_hunav(document: TreeDocument, *, reaction: tuple[str, float, float, bool] | None, hold_seconds: float,
+                   looping: frozenset[str]) -> TreeDocument:
     """Make a GROVE tree behave in HuNavSim as it does in GROVE (in place; returns the document).
 
     - The main tree's body runs once (ForceSuccess: a failing step ends the routine, as in GROVE, where
@@ -214,19 +214,21 @@ def wrap_for_hunav(document, *, reaction: tuple[str, float, float, bool] | None,
     return document
 
 
-def prefix_node_ids(document, names: frozenset[str], prefix: str):
+def prefix_node_ids(document: TreeDocument, names: frozenset[str], prefix: str) -> TreeDocument:
     """Rename nodes `names` to `prefix + name`, in place, in trees and TreeNodesModels (ID attributes)."""
     for element in document.nodes():
         if element.tag in names:
             element.tag = prefix + element.tag
     for model in document.models:
         for element in model.walk():
-            if element.tag in ("Action", "Condition", "Decorator", "Control") and element.get("ID") in names:
-                element.set("ID", prefix + element.get("ID"))
+            model_id = element.get("ID")
+            if element.tag in ("Action", "Condition", "Decorator", "Control") and model_id is not None \
+                    and model_id in names:
+                element.set("ID", prefix + model_id)
     return document
 
 
-def label_clocks(document):
+def label_clocks(document: TreeDocument) -> TreeDocument:
     """Name every unnamed timed node after the clock HuNavSim runs it on (`CLOCKS`), in place, e.g.
     `StopAndWaitTimerAction name="StopAndWaitTimerAction (wall clock)"`: GROVE counts simulation
     seconds everywhere, HuNavSim counts wall-clock seconds in these, and the file should say so where

@@ -24,8 +24,9 @@ Conventions
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any
+
 from lxml import etree
 
 from grove_tui.limits import MAX_COORDINATE
@@ -109,35 +110,37 @@ NONE: frozenset[str] = frozenset()
 
 # ---- port helpers (keep the table below readable) -------------------------------------------
 
-def _in(name, type_, default=None, description="", *, min=None, max=None, choices=None, auto=False) -> PortSpec:
+def _in(name: str, type_: str, default: int | float | bool | str | None = None, description: str = "", *,
+        min: float | None = None, max: float | None = None, choices: tuple[str, ...] | None = None,
+        auto: bool = False) -> PortSpec:
     return PortSpec(name, type_, default, min, max, choices, description, "in", auto)
 
 
-def _out(name, type_, description="") -> PortSpec:
+def _out(name: str, type_: str, description: str = "") -> PortSpec:
     return PortSpec(name, type_, None, None, None, None, description, "out", False)
 
 
-def _agent_id(name="agent_id") -> PortSpec:
+def _agent_id(name: str = "agent_id") -> PortSpec:
     return _in(name, "agent", "{id}", "Id of the agent running this tree (filled by post-processing).", auto=True)
 
 
-def _time_step(name="time_step") -> PortSpec:
+def _time_step(name: str = "time_step") -> PortSpec:
     return _in(name, "float", "{dt}", "Simulation time step in seconds, read from the blackboard key dt.", auto=True,
                min=0.0, max=10.0)
 
 
-def _other_agent(name="target_agent_id", what="the other agent") -> PortSpec:
+def _other_agent(name: str = "target_agent_id", what: str = "the other agent") -> PortSpec:
     return _in(name, "agent", None,
                f"Id of {what}. Filled by post-processing; when absent the runtime binds the first other member "
                "of the agent's group, else the nearest agent.", auto=True)
 
 
-def _duration(default=5.0, name="duration", what="the behavior") -> PortSpec:
+def _duration(default: float = 5.0, name: str = "duration", what: str = "the behavior") -> PortSpec:
     return _in(name, "float", default, f"How long {what} lasts, in simulation seconds (0 = until halted).",
                min=0.0, max=3600.0)
 
 
-def _target(name="target", what="Region of interest to go to") -> PortSpec:
+def _target(name: str = "target", what: str = "Region of interest to go to") -> PortSpec:
     return _in(name, "target", None, f"{what}: the name of a zone, door or entity of the world.")
 
 
@@ -178,7 +181,8 @@ def _reaction_ports(extra: tuple[PortSpec, ...]) -> tuple[PortSpec, ...]:
 _specs: list[NodeSpec] = []
 
 
-def _node(name, category, ports, description, origin, *, navigates=False, presets=NONE, llm=False, synonyms=()):
+def _node(name: str, category: str, ports: Iterable[PortSpec], description: str, origin: str, *, navigates: bool = False,
+          presets: Iterable[str] = NONE, llm: bool = False, synonyms: Iterable[str] = ()) -> None:
     _specs.append(NodeSpec(name, category, tuple(ports), " ".join(description.split()), origin, navigates,
                            frozenset(presets), llm, tuple(synonyms)))
 

@@ -10,9 +10,9 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Container, Iterable, Sequence
 
-from grove_tui.bt.format.manifest import PortSpec
+from grove_tui.bt.format.manifest import NodeSpec, PortSpec
 
 Point = tuple[float, float]
 # A port's value once read (convert_literal), by port type: int/agent, float, bool, string/target,
@@ -40,7 +40,7 @@ def format_number(value: float) -> str:
     return text if text not in ("", "-0") else "0"
 
 
-def format_port_value(value) -> str:
+def format_port_value(value: PortValue) -> str:
     """Any Python port value as BT.CPP text (booleans as true/false, floats by `format_number`)."""
     if isinstance(value, bool):
         return "true" if value else "false"
@@ -55,7 +55,7 @@ def _coordinate(value: float) -> str:
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text
 
 
-def format_point_list(points: Iterable) -> str:
+def format_point_list(points: Iterable[Sequence[float]]) -> str:
     """'x1,y1;x2,y2' with POINT_DECIMALS decimals; no points give ''."""
     return ";".join(f"{_coordinate(x)},{_coordinate(y)}" for x, y in points)
 
@@ -131,7 +131,7 @@ def convert_literal(port: PortSpec, text: str) -> PortValue:
     return value
 
 
-def checked_port(spec, port):
+def checked_port(spec: NodeSpec, port: PortSpec) -> PortSpec:
     """The port as GROVE checks a literal for it: HuNavSim's own nodes get no bounds.
 
     HuNavSim declares its ports without limits (BT::InputPort<double>(...) in bt_node.cpp and the node
@@ -143,7 +143,7 @@ def checked_port(spec, port):
     return dataclasses.replace(port, min=None, max=None)
 
 
-def satisfied_by_goal_id(port, given_ports) -> bool:
+def satisfied_by_goal_id(port: PortSpec, given_ports: Container[str]) -> bool:
     """A navigation `target` given instead as HuNavSim's `goal_id` (a global goal of the scenario).
 
     HuNavSim 2.0's GoTo names its destination only by goal_id (go_to_node.hpp); GROVE's GoTo accepts

@@ -229,7 +229,7 @@ class _Collector:
         self.dropped = 0
         self.suggestions_left = MAX_SUGGESTIONS
 
-    def add(self, line, message):
+    def add(self, line: int | None, message: str) -> None:
         if len(self.problems) < MAX_PROBLEMS:
             self.problems.append(BTProblem(self.source, line, message))
         else:

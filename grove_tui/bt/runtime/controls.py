@@ -9,7 +9,9 @@ parallel_node.cpp), including the details trees depend on:
 from __future__ import annotations
 
 from grove_tui.bt.runtime.blackboard import BlackboardRef
-from grove_tui.bt.runtime.tree_node import FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ControlNode, is_active
+from grove_tui.bt.runtime.tree_node import (
+    FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, ControlNode, TreeNode, is_active,
+)
 from grove_tui.errors import BTError
 
 class _OrderedControl(ControlNode):
@@ -21,7 +23,7 @@ class _OrderedControl(ControlNode):
     STOP_ON = FAILURE
     CONTINUE_ON = SUCCESS
 
-    def __init__(self, name, children, node_id=None):
+    def __init__(self, name: str, children: list[TreeNode], node_id: str | None = None):
         super().__init__(name, children, node_id)
         self.current = 0
         self.skipped = 0
@@ -68,7 +70,7 @@ class Sequence(_OrderedControl):
 class SequenceWithMemory(ControlNode):
     __slots__ = ("current", "skipped")
 
-    def __init__(self, name, children, node_id=None):
+    def __init__(self, name: str, children: list[TreeNode], node_id: str | None = None):
         super().__init__(name, children, node_id)
         self.current = 0
         self.skipped = 0
@@ -121,7 +123,7 @@ class Fallback(_OrderedControl):
 class ReactiveSequence(ControlNode):
     __slots__ = ("running_child",)
 
-    def __init__(self, name, children, node_id=None):
+    def __init__(self, name: str, children: list[TreeNode], node_id: str | None = None):
         super().__init__(name, children, node_id)
         self.running_child = -1
 
@@ -159,7 +161,7 @@ class ReactiveSequence(ControlNode):
 class ReactiveFallback(ControlNode):
     __slots__ = ("running_child",)
 
-    def __init__(self, name, children, node_id=None):
+    def __init__(self, name: str, children: list[TreeNode], node_id: str | None = None):
         super().__init__(name, children, node_id)
         self.running_child = -1
 
@@ -198,7 +200,8 @@ class Parallel(ControlNode):
     __slots__ = ("success_threshold", "failure_threshold", "completed", "success_count", "failure_count",
                  "threshold_refs")
 
-    def __init__(self, name, children, success_count=-1, failure_count=1, node_id=None):
+    def __init__(self, name: str, children: list[TreeNode], success_count: int | BlackboardRef = -1,
+                 failure_count: int | BlackboardRef = 1, node_id: str | None = None):
         super().__init__(name, children, node_id)
         self.threshold_refs = (success_count, failure_count)
         self.success_threshold = success_count if isinstance(success_count, int) else -1
@@ -213,9 +216,9 @@ class Parallel(ControlNode):
 
     def tick(self) -> int:
         s_ref, f_ref = self.threshold_refs
-        if type(s_ref) is BlackboardRef:
+        if isinstance(s_ref, BlackboardRef):
             self.success_threshold = int(s_ref.get())
-        if type(f_ref) is BlackboardRef:
+        if isinstance(f_ref, BlackboardRef):
             self.failure_threshold = int(f_ref.get())
         n = len(self.kids)
         required_success = self._threshold(self.success_threshold)

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from grove_tui.bt.runtime.blackboard import BlackboardRef
 from grove_tui.bt.format.manifest import SUBTREE
 from grove_tui.bt.runtime.tree_node import (
-    FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, DecoratorNode, SimClock, is_completed,
+    FAILURE, IDLE, RUNNING, SKIPPED, SUCCESS, DecoratorNode, SimClock, TreeNode, is_completed,
 )
 from grove_tui.errors import BTError
 
@@ -61,14 +61,14 @@ class ForceFailure(DecoratorNode):
 class RunOnce(DecoratorNode):
     __slots__ = ("then_skip", "already_ticked", "returned")
 
-    def __init__(self, name, child, then_skip=True, node_id=None):
+    def __init__(self, name: str, child: TreeNode, then_skip: bool | BlackboardRef = True, node_id: str | None = None):
         super().__init__(name, child, node_id)
         self.then_skip = then_skip
         self.already_ticked = False
         self.returned = IDLE
 
     def tick(self) -> int:
-        skip = self.then_skip.get() if type(self.then_skip) is BlackboardRef else self.then_skip
+        skip = self.then_skip.get() if isinstance(self.then_skip, BlackboardRef) else self.then_skip
         if self.already_ticked:
             return SKIPPED if skip else self.returned
         self.status = RUNNING
@@ -83,13 +83,13 @@ class RunOnce(DecoratorNode):
 class Repeat(DecoratorNode):
     __slots__ = ("num_cycles", "repeat_count")
 
-    def __init__(self, name, child, num_cycles, node_id=None):
+    def __init__(self, name: str, child: TreeNode, num_cycles: int | BlackboardRef, node_id: str | None = None):
         super().__init__(name, child, node_id)
         self.num_cycles = num_cycles
         self.repeat_count = 0
 
     def tick(self) -> int:
-        cycles = self.num_cycles.get() if type(self.num_cycles) is BlackboardRef else self.num_cycles
+        cycles = self.num_cycles.get() if isinstance(self.num_cycles, BlackboardRef) else self.num_cycles
         do_loop = self.repeat_count < cycles or cycles == -1
         self.status = RUNNING
         while do_loop:
@@ -123,14 +123,14 @@ class Repeat(DecoratorNode):
 class RetryUntilSuccessful(DecoratorNode):
     __slots__ = ("num_attempts", "try_count", "all_skipped")
 
-    def __init__(self, name, child, num_attempts, node_id=None):
+    def __init__(self, name: str, child: TreeNode, num_attempts: int | BlackboardRef, node_id: str | None = None):
         super().__init__(name, child, node_id)
         self.num_attempts = num_attempts
         self.try_count = 0
         self.all_skipped = True
 
     def tick(self) -> int:
-        attempts = self.num_attempts.get() if type(self.num_attempts) is BlackboardRef else self.num_attempts
+        attempts = self.num_attempts.get() if isinstance(self.num_attempts, BlackboardRef) else self.num_attempts
         do_loop = self.try_count < attempts or attempts == -1
         if self.status == IDLE:
             self.all_skipped = True
@@ -184,7 +184,8 @@ class Timeout(DecoratorNode):
 
     __slots__ = ("msec", "clock", "started_at", "child_halted")
 
-    def __init__(self, name, child, msec, clock: SimClock, node_id=None):
+    def __init__(self, name: str, child: TreeNode, msec: int | BlackboardRef, clock: SimClock,
+                 node_id: str | None = None):
         super().__init__(name, child, node_id)
         self.msec = msec
         self.clock = clock
@@ -192,7 +193,7 @@ class Timeout(DecoratorNode):
         self.child_halted = False
 
     def tick(self) -> int:
-        msec = self.msec.get() if type(self.msec) is BlackboardRef else self.msec
+        msec = self.msec.get() if isinstance(self.msec, BlackboardRef) else self.msec
         now = self.clock.now
         if self.started_at is None:
             self.started_at = now
@@ -221,14 +222,15 @@ class Delay(DecoratorNode):
 
     __slots__ = ("delay_msec", "clock", "started_at")
 
-    def __init__(self, name, child, delay_msec, clock: SimClock, node_id=None):
+    def __init__(self, name: str, child: TreeNode, delay_msec: int | BlackboardRef, clock: SimClock,
+                 node_id: str | None = None):
         super().__init__(name, child, node_id)
         self.delay_msec = delay_msec
         self.clock = clock
         self.started_at: float | None = None
 
     def tick(self) -> int:
-        delay = self.delay_msec.get() if type(self.delay_msec) is BlackboardRef else self.delay_msec
+        delay = self.delay_msec.get() if isinstance(self.delay_msec, BlackboardRef) else self.delay_msec
         now = self.clock.now
         if self.started_at is None:
             self.started_at = now
@@ -251,14 +253,15 @@ class TimeDelay(DecoratorNode):
 
     __slots__ = ("delay", "clock", "started_at")
 
-    def __init__(self, name, child, delay, clock: SimClock, node_id=None):
+    def __init__(self, name: str, child: TreeNode, delay: float | BlackboardRef, clock: SimClock,
+                 node_id: str | None = None):
         super().__init__(name, child, node_id)
         self.delay = delay
         self.clock = clock
         self.started_at: float | None = None
 
     def tick(self) -> int:
-        delay = self.delay.get() if type(self.delay) is BlackboardRef else self.delay
+        delay = self.delay.get() if isinstance(self.delay, BlackboardRef) else self.delay
         now = self.clock.now
         if self.started_at is None:
             self.started_at = now
@@ -279,7 +282,7 @@ class TimeDelay(DecoratorNode):
 class SubTreeNode(DecoratorNode):
     __slots__ = ("tree_id",)
 
-    def __init__(self, name, child, tree_id: str):
+    def __init__(self, name: str, child: TreeNode, tree_id: str):
         super().__init__(name, child, SUBTREE)
         self.tree_id = tree_id
 

@@ -76,7 +76,7 @@ class BehaviorTree:
             self.quiet = None
         return status
 
-    def _quiescent_path(self):
+    def _quiescent_path(self) -> tuple[LeafNode, tuple[tuple[TreeNode, int], ...]] | None:
         node = self.root
         guards: list[tuple[TreeNode, int]] = []
         while True:
@@ -157,7 +157,8 @@ class TreeFactory:
         nodes = [node for node in slots if node is not None]  # every slot is filled once its subtree is built
         return BehaviorTree(root, blackboard, nodes, document.source, clock)
 
-    def _inputs(self, spec: NodeSpec, element: TreeElement, blackboard: Blackboard, where: str):
+    def _inputs(self, spec: NodeSpec, element: TreeElement, blackboard: Blackboard,
+                where: str) -> tuple[dict[str, PortValue | BlackboardRef], dict[str, str]]:
         inputs: dict[str, PortValue | BlackboardRef] = {}
         outputs: dict[str, str] = {}
         written = element.ports
@@ -225,7 +226,10 @@ class TreeFactory:
                 if control is None:
                     raise BTError(f"{where}: no implementation for control node {element.id!r}")
                 if control is Parallel:
-                    node = Parallel(element.name, kids, inputs.get("success_count", -1), inputs.get("failure_count", 1))
+                    success, failure = inputs.get("success_count", -1), inputs.get("failure_count", 1)
+                    if not isinstance(success, (int, BlackboardRef)) or not isinstance(failure, (int, BlackboardRef)):
+                        raise BTError(f"{where}: Parallel's success_count and failure_count are whole numbers")
+                    node = Parallel(element.name, kids, success, failure)
                 else:
                     node = control(element.name, kids)
             elif spec.category == "decorator":

@@ -138,8 +138,8 @@ class LeafNode(TreeNode):
 
     __slots__ = ("inputs", "outputs", "blackboard", "ctx")
 
-    def __init__(self, name: str, inputs: dict[str, PortValue | BlackboardRef], outputs: dict[str, str], blackboard: Blackboard,
-                 ctx: object = None, node_id: str | None = None):
+    def __init__(self, name: str, inputs: dict[str, PortValue | BlackboardRef], outputs: dict[str, str],
+                 blackboard: Blackboard, ctx: object = None, node_id: str | None = None):
         super().__init__(name, node_id)
         self.inputs = inputs
         self.outputs = outputs

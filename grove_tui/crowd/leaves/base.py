@@ -15,7 +15,11 @@ from grove_tui.crowd.context import AgentContext, SimContext, Snapshot
 from grove_tui.errors import BTError
 
 __all__ = ["AgentCondition", "AgentSyncAction", "AgentStatefulAction", "FAILURE", "RUNNING", "SUCCESS",
-           "bind_agent", "angle_diff"]
+           "QuietSpec", "bind_agent", "angle_diff"]
+
+# What the simulation checks all quiet agents by at once (Simulation._update_quiet_spec): the leaf
+# stays RUNNING while the agent is farther than sqrt(r2) from (x, y) and the clock is before t_end.
+QuietSpec = tuple[float, float, float, float]
 
 
 def bind_agent(node: AgentCondition | AgentSyncAction | AgentStatefulAction, port: str) -> None:

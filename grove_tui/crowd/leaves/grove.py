@@ -14,14 +14,10 @@ from collections.abc import Sequence
 
 from grove_tui.crowd.context import Point, SimContext
 from grove_tui.crowd.coordination import ARRIVAL_TOLERANCE, Conversation, FreeSpace, ServiceQueue
-from grove_tui.crowd.leaves.base import RUNNING, SUCCESS, AgentStatefulAction, AgentSyncAction
+from grove_tui.crowd.leaves.base import RUNNING, SUCCESS, AgentStatefulAction, AgentSyncAction, QuietSpec
 from grove_tui.crowd.sfm import MODE_FACE, MODE_FIELD, MODE_GOALS, MODE_STOP
 from grove_tui.errors import BTError
 from grove_tui.world.model import Door, World, Zone
-
-# What the simulation checks all quiet agents by at once (Simulation._update_quiet_spec): the leaf
-# stays RUNNING while the agent is farther than sqrt(r2) from (x, y) and the clock is before t_end.
-QuietSpec = tuple[float, float, float, float]
 
 EXIT_RADIUS = 0.6  # metres from the exit point at which an evacuee turns to walk out through the door
 DOOR_PASS = 1.5  # metres beyond the door line an evacuee walks to; it is counted out on crossing the line

@@ -14,10 +14,10 @@ import math
 from collections.abc import Sequence
 from typing import Literal
 
-from grove_tui.crowd.context import Point, Snapshot
+from grove_tui.crowd.context import Point, SimContext, Snapshot
 from grove_tui.crowd.coordination import Conversation
 from grove_tui.crowd.leaves.base import (
-    FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, angle_diff,
+    FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, QuietSpec, angle_diff,
 )
 from grove_tui.errors import BTError
 from grove_tui.crowd.sfm import (
@@ -231,7 +231,7 @@ class IsSpeaking(_Watch):
         return None
 
 
-def _looks_at(sim, observer: int, row: int, angle_threshold: float, distance: float) -> bool:
+def _looks_at(sim: SimContext, observer: int, row: int, angle_threshold: float, distance: float) -> bool:
     if not sim.active[observer]:
         return False
     p, q = sim.pos[row], sim.pos[observer]
@@ -413,7 +413,7 @@ class _Timed(AgentStatefulAction):
         duration = self.get_input(self.DURATION_PORT)
         return duration <= 0 or self.elapsed() + 1e-9 < duration
 
-    def quiet_spec(self):
+    def quiet_spec(self) -> QuietSpec | None:
         if type(self).step is not _Timed.step:
             return None
         duration = self.get_input(self.DURATION_PORT)
@@ -470,7 +470,7 @@ class StopAndWaitTimerAction(_Timed):
         self.sim.crowd.set_mode(self.row, MODE_STOP)
 
 
-def _toward(p, q, keep: float):
+def _toward(p: Sequence[float], q: Sequence[float], keep: float) -> tuple[Point, float]:
     """The point `keep` metres short of q on the way from p."""
     dx, dy = q[0] - p[0], q[1] - p[1]
     d = math.hypot(dx, dy)
@@ -521,6 +521,8 @@ class CuriousNav(_Reaction):
 
     def step(self) -> None:
         robot = self.sim.robot
+        if robot is None:
+            return  # the robot left; the reaction ends with its duration
         p = self.sim.pos[self.row]
         stop = self.get_input("stop_distance")
         bodies = (self.sim.crowd.robot_radius or 0.3) + float(self.sim.crowd.radius[self.row])
@@ -547,9 +549,11 @@ class ScaredNav(_Reaction):
         _flee(self, self.SAFE_DISTANCE, self.get_input("runaway_vel"))
 
 
-def _flee(node, safe_distance: float, speed: float) -> None:
+def _flee(node: _Timed, safe_distance: float, speed: float) -> None:
     sim = node.sim
     robot = sim.robot
+    if robot is None:
+        return  # the robot left; the reaction ends with its duration
     p = sim.pos[node.row]
     dx, dy = p[0] - robot[0], p[1] - robot[1]
     d = math.hypot(dx, dy)

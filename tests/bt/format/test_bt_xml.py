@@ -10,7 +10,10 @@ from grove_tui.bt.format.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.format.ports import format_point_list, parse_point_list
 from grove_tui.bt.format.source import MAX_BYTES
 from grove_tui.errors import BTError
-from grove_tui.bt.format.xml import MAX_DEPTH, MAX_EXPANDED_DEPTH, MAX_EXPANDED_NODES, MAX_PROBLEMS, MAX_SUGGESTIONS, check_tree_file, check_tree_text, load_tree_file, parse_tree_text
+from grove_tui.bt.format.xml import (
+    MAX_DEPTH, MAX_EXPANDED_DEPTH, MAX_EXPANDED_NODES, MAX_PROBLEMS, MAX_SUGGESTIONS, check_tree_file, check_tree_text,
+    load_tree_file, parse_tree_text,
+)
 from grove_tui.errors import GroveError
 
 
