@@ -34,6 +34,7 @@ from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.quantities import Quantity, extract_quantities
 from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
+from grove_tui.language.text import normalise
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
@@ -232,8 +233,9 @@ class GenerationPipeline:
         started = time.perf_counter()
 
         t0 = clock.begin("rois")
-        quantities = extract_quantities(prompt)
-        check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
+        # Checked on the text the reader reads: full-width letters are words, "－５" is negative.
+        typed = normalise(prompt)
+        check_stated_counts(typed, extract_quantities(typed))  # no words, negative or zero counts: refused
         reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
