@@ -9,7 +9,8 @@ picture, metrics.json, the dataset index), goes through `atomic_directory` or `a
 - what may be replaced is decided by the caller's `owned` test (a folder holding `scenario.yaml` is
   a bundle, one holding an export marker is an export, an .mcap carrying GROVE's metadata is a
   GROVE export): anything else is refused unless the user said `--overwrite`; an empty folder is
-  used as is, and device nodes, pipes and sockets are never touched;
+  used as is, and device nodes, pipes, sockets and mount points (which no rename can replace) are never
+  touched;
 - a symbolic link is never followed: writing through one could replace a file anywhere;
 - a name that is one of a protected folder's own files (`protect_folders`: a bundle's scenario.yaml,
   trees/, grid.npz...) is refused to every writer but that folder's own;
