@@ -188,3 +188,24 @@ def test_counts_edited_on_a_saved_bundle_are_a_refinement(base, tmp_path):
     assert report["history"][0]["sentence"] == "counts: patient 12"
     assert [g["count"] for g in report["groups"]] == [12, 2, 1]
     assert report["groups"][1:] == records(base)[1:]
+
+
+def test_evacuees_added_under_the_emergency_preset_need_no_model(hospital, tmp_path):
+    """Under a preset that evacuates along fields an evacuating group's tree is the field to its exit,
+    whatever a model writes, so adding one asks no model; the groups already there stay as they were."""
+    draft = "10 people from cafeteria: FollowVelocityField(main_entrance)\n3 guards from entrance_lobby: Wait"
+    base = build_base_bundle(tmp_path / "base", hospital, preset="emergency",
+                             prompt="ten people evacuate from the cafeteria while three guards wait in the lobby",
+                             draft=draft)
+    llm = ScriptedLLM()  # asked for anything, it fails the test
+    refinement, out = refine(hospital, base, "also six visitors evacuate from ward a", tmp_path / "b", llm,
+                             preset="emergency")
+    assert not refinement.calls_model and llm.asked == []
+    before, after = records(base), records(out)
+    assert after[:2] == before and after[2]["label"] == "visitor" and after[2]["count"] == 6
+    visitors = [a for a in load_bundle(out)[0].agents if a.label == "visitor"]
+    assert len(visitors) == 6 and all(hospital.zone_at(*a.start).name == "ward_a" for a in visitors)
+    xml = (out / visitors[0].tree).read_text(encoding="utf-8")
+    assert "FollowVelocityField" in xml
+    for group in before:
+        assert files_of(out, group["members"]) == files_of(base, group["members"])
