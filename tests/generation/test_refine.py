@@ -107,6 +107,13 @@ def test_history_and_grounding_cover_every_sentence(hospital, base, tmp_path):
     nurse = next(g for g in grounding.groups if g.label == "nurse")
     assert (nurse.asked_by, nurse.changed_by) == (0, (1,))
     assert "changed by 2" in "\n".join(grounding.lines())
+    # checked on a run (here one with no frames yet), the report still says who asked for what
+    from grove_tui.analysis.outcomes import OutcomeChecker
+
+    checked = OutcomeChecker(grounding, load_bundle(second)[0], hospital).result([], partial=True)
+    assert checked.checked and checked.sentences == grounding.sentences
+    assert [(g.asked_by, g.changed_by) for g in checked.groups] == [(g.asked_by, g.changed_by) for g in grounding.groups]
+    assert GroundingReport.from_dict(checked.to_dict()).sentences == grounding.sentences
     assert [g["label"] for g in report["groups"]] == ["patient", "nurse"]
     slow = [a.max_vel for a in load_bundle(second)[0].agents if a.label == "nurse"]
     assert slow and all(v < load_preset("queuing").max_vel for v in slow)
