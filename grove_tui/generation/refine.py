@@ -528,6 +528,8 @@ def _robot(pipeline: GenerationPipeline, scene: Scene, refinement: Refinement, p
             elif (task.start or task.via) and not task.destination:
                 request = RobotRequest(goal=current.goal)
         reading = PromptReading(refinement.edit.sentence, (), robot=task)
+        if task.task == "follow":  # whom it follows is a group of the scenario, kept or new
+            reading, everyone = _whole_view(scene, refinement, everyone, task)
     try:
         return plan_robot(world, grid, CachedPlanner(world.name, pipeline.planner, pipeline.plan_cache), everyone,
                           request, seed, notes, reading=reading)
@@ -547,6 +549,24 @@ def _everyone(scene: Scene, kept: Sequence[SceneGroup], post: PostProcessed) -> 
                                     document=scene.document(a)))
     agents += post.agents
     return PostProcessed(agents, list(post.groups), post.exit, list(post.goals), [], list(post.exits))
+
+
+def _whole_view(scene: Scene, refinement: Refinement, everyone: PostProcessed,
+                robot: RobotReading) -> tuple[PromptReading, PostProcessed]:
+    """The refined scenario as one sentence's reading and groups (reading_index into it), for the
+    robot's planner to find the group its clause names among kept and new groups alike."""
+    readings = tuple(p.reading for p in refinement.groups)
+    new_groups = iter(everyone.groups)  # in the order of the groups placed (added and changed)
+    groups: list[GroupPlan] = []
+    for i, p in enumerate(refinement.groups):
+        if p.status == KEPT and p.source is not None:
+            g = p.source
+            groups.append(GroupPlan(-1000 - i, g.label, len(g.members), g.spawn, g.tree, None,
+                                    member_ids=list(g.members), reading_index=i))
+        else:
+            groups.append(replace(next(new_groups), reading_index=i))
+    view = PostProcessed(everyone.agents, groups, everyone.exit, list(everyone.goals), [], list(everyone.exits))
+    return PromptReading(refinement.edit.sentence, readings, robot=robot), view
 
 
 # ---- the grounding report --------------------------------------------------------------------------------

@@ -144,6 +144,12 @@ def test_the_robot(hospital, base, tmp_path):
     robot = load_bundle(crosses)[0].robot
     assert hospital.zone_at(*robot.goal).name == "elevator_hall"
     assert records(crosses) == records(base)  # the robot's edits left every group as it was
+    _, follows = refine(hospital, crosses, "the robot follows the nurses", tmp_path / "follows")
+    robot = load_bundle(follows)[0].robot
+    nurses = next(g["members"] for g in records(base) if g["label"] == "nurse")
+    assert robot.task == "follow" and list(robot.follows) == nurses
+    claim = GroundingReport.from_dict(load_report(follows)["grounding"]).robot.claims[0]
+    assert claim.kind == "robot_follow_person" and list(claim.partners) == nurses
 
 
 def test_a_name_two_groups_share_is_asked_about(hospital, base, tmp_path):
