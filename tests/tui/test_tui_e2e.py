@@ -100,7 +100,7 @@ def test_quit_takes_under_a_second_while_the_index_loads_and_once_everything_is_
     """Issue 21 item 14 and issue 31 item 4: ctrl+q to the shell prompt in under a second, while the
     embedder and node index load (the app's thread workers used to hold the exit for 11-13 s), and with
     both models and the embedder warm. What the terminal and a bare Textual app take of that second is
-    measured just before and left out (helpers.terminal.assert_quits_quickly): it grows with load."""
+    measured right after and left out (helpers.terminal.assert_quits_quickly): it grows with load."""
     env = grove_env(tmp_path, "generation:\n  world: hospital\n  preset: queuing\n")
     # "~12s loading the node index…", cut to the panel's width
     for state in ("loading the node", "ready to generate"):
