@@ -21,13 +21,7 @@ from grove_tui.language.followup import read_followup
 from grove_tui.scenario.bundle import load_bundle, load_report, write_bundle
 from grove_tui.scenario.history import History
 from grove_tui.scenario.report import GroundingReport
-from grove_tui.world import load_world
 from helpers.refining import PROMPT, NoRetrieval, ScriptedLLM, build_base_bundle
-
-
-@pytest.fixture(scope="module")
-def hospital():
-    return load_world("hospital")
 
 
 @pytest.fixture(scope="module")

@@ -12,19 +12,15 @@ from grove_tui.analysis.refine_chains import load_chains, read_bundle, score_ste
 from grove_tui.services.session import GroveSession, ScenarioRequest
 from helpers.paths import REPO
 
+# The retrieval index is built once per machine; reuse the suite's when it has one.
+pytestmark = pytest.mark.usefixtures("shared_index")
+
 CHAINS = REPO / "eval" / "refine" / "chains.yaml"
 # One chain in the suite's budget (a generation, then a change and a removal without the model); the
 # `long` run adds chains whose follow-ups call the model, over three worlds and presets.
 SAMPLE = ("hospital-normal-slow-family",)
 LONG_SAMPLE = ("hospital-normal-visitors", "office-queuing-coffee", "station-queuing-tickets",
                "residential-emergency-smoke")
-
-
-@pytest.fixture(autouse=True)
-def shared_index(monkeypatch):
-    # The retrieval index is built once per machine; reuse the suite's when it has one.
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
 
 
 def run_chains(ids, tmp_path):
