@@ -51,8 +51,8 @@ if TYPE_CHECKING:
     from grove_tui.analysis.outcomes import OutcomeChecker
     from grove_tui.analysis.rimea import RimeaResult
     from grove_tui.analysis.understanding import ReadingScore, ScenarioScore, UnderstandingCase
-    from grove_tui.bt.manifest import NodeSpec
-    from grove_tui.bt.xml import BTProblem
+    from grove_tui.bt.format.manifest import NodeSpec
+    from grove_tui.bt.format.xml import BTProblem
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.refine import Refinement
@@ -1055,20 +1055,21 @@ class GroveSession:
     # behavior trees -----------------------------------------------------------------------------------------
     def node_manifest(self, preset: str | None = None) -> list[NodeSpec]:
         """Every behavior-tree node GROVE knows, or only those the model may use under `preset`."""
-        from grove_tui.bt.manifest import NODES, nodes_for_preset
+        from grove_tui.bt.format.manifest import NODES, nodes_for_preset
 
         return nodes_for_preset(preset) if preset else list(NODES.values())
 
     def node_manifest_xml(self) -> str:
         """Every node as a Groot2 / BehaviorTree.CPP v4 TreeNodesModel document."""
-        from grove_tui.bt.manifest import treenodes_model_xml
+        from grove_tui.bt.format.manifest import treenodes_model_xml
 
         return treenodes_model_xml()
 
     def check_tree_file(self, path: str | Path) -> list[BTProblem]:
         """The problems of a behavior-tree XML file against the manifest, each with its line ([] when it
         is fine). A file that cannot be read at all raises BTError, whose hint says what a tree file must be."""
-        from grove_tui.bt.xml import MAX_BYTES, check_tree_bytes, read_file_bytes
+        from grove_tui.bt.format.source import MAX_BYTES, read_file_bytes
+        from grove_tui.bt.format.xml import check_tree_bytes
         from grove_tui.errors import BTError
 
         try:
@@ -1367,7 +1368,7 @@ class GroveSession:
         """Generate each understanding case through `generate` and score its scenario; bundles are kept
         under out_dir/bundles. A case that fails is scored as failed on every field."""
         from grove_tui.analysis.understanding import SCENARIO_FIELDS, ScenarioScore, score_scenario
-        from grove_tui.bt.manifest import NODES
+        from grove_tui.bt.format.manifest import NODES
 
         action_names = frozenset(name for name, spec in NODES.items() if spec.category == "action")
         scores: list[ScenarioScore] = []
