@@ -126,7 +126,7 @@ def write_bundle_files(files: Mapping[str, bytes], out_dir: str | Path, overwrit
     return write_files_atomic(absolute_path(out_dir), files, owned=is_bundle, what=WHAT, overwrite=overwrite)
 
 
-def derive_bundle(source: str | Path, out_dir: str | Path, scenario: Scenario, *,
+def derive_bundle(source: str | Path, out_dir: str | os.PathLike[str], scenario: Scenario, *,
                   keep: Callable[[PurePosixPath], bool], files: Mapping[str, str] | None = None,
                   write: Callable[[Path], None] | None = None, overwrite: bool = False) -> Path:
     """Write a bundle made from another one, with `write_bundle`'s guarantees (atomic, guarded).

@@ -21,6 +21,7 @@ that need them, so a front end opens before they load.
 from __future__ import annotations
 
 import json
+import os
 import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -630,8 +631,6 @@ class GroveSession:
         model loses only the little CPU the app uses. Niceness cannot be lowered again without
         privileges, so this is only done for the session's own model processes, and is idempotent.
         """
-        import os
-
         if self.model_niceness <= 0 or not hasattr(os, "setpriority"):
             return []
         target = min(os.getpriority(os.PRIO_PROCESS, 0) + self.model_niceness, LOWEST_PRIORITY)
@@ -1148,7 +1147,8 @@ class GroveSession:
         derive_bundle(base_bundle, target, scenario, keep=keep, files=trees)
         return Path(target)
 
-    def record_episode(self, source: str | Path, out_dir: str | Path, scenario: Scenario, episode: Mapping[str, Any],
+    def record_episode(self, source: str | Path, out_dir: str | os.PathLike[str], scenario: Scenario,
+                       episode: Mapping[str, Any],
                        simulation: Simulation, *, overwrite: bool = False) -> Path:
         """A robot policy's episode (gym.recording) as a bundle at `out_dir`: the source bundle's files, the
         scenario with the driven path, `episode` as episode.json, and the run the simulation made."""
