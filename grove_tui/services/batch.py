@@ -67,57 +67,66 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
         require_ray()  # likewise a missing Ray: one error line, nothing read or written
     made_out_dir = not os.path.lexists(out_dir)
     sweep_stale(out_dir)  # staging folders and files a killed earlier run left behind
+    warming = None
     if jobs and ray_address is None:
         # Models, embedder and reader load while the inputs are hashed and checked for resume (the
         # model files are read whole for the hash); the first job waits only for what is left.
-        session.start_warm_up(jobs[0].world, jobs[0].preset)
-    identity = model_identity(session.model_choices())
-    hashes = {job.name: job_inputs_hash(job, identity) for job in jobs}
-    done = completed_jobs(jobs, out_dir, hashes) if resume else set()
-    skipped = [job for job in jobs if job.name in done]
-    to_run = [job for job in jobs if job.name not in done]
-    if on_start is not None:
-        on_start(to_run, skipped)
-    records: list[JobRecord] = []
-
-    def finished(record: JobRecord) -> None:
-        append_record(out_dir, record)
-        records.append(record)
-        if on_record is not None:
-            on_record(record)
-
+        warming = session.start_warm_up(jobs[0].world, jobs[0].preset)
+    interrupted = False
     try:
-        if not to_run:
-            pass
-        elif ray_address is not None:
-            from grove_tui.services.cluster import run_on_ray
+        identity = model_identity(session.model_choices())
+        hashes = {job.name: job_inputs_hash(job, identity) for job in jobs}
+        done = completed_jobs(jobs, out_dir, hashes) if resume else set()
+        skipped = [job for job in jobs if job.name in done]
+        to_run = [job for job in jobs if job.name not in done]
+        if on_start is not None:
+            on_start(to_run, skipped)
+        records: list[JobRecord] = []
 
-            run_on_ray(to_run, out_dir, hashes, address=ray_address, workers=workers, overwrite=overwrite,
-                       models=session.model_options, on_record=finished, return_files=True if ray_return else None)
-        else:
-            def outcome_done(_index: int, outcome: Any) -> None:
-                finished(record_outcome(outcome, hashes[outcome.job.name]))
+        def finished(record: JobRecord) -> None:
+            append_record(out_dir, record)
+            records.append(record)
+            if on_record is not None:
+                on_record(record)
 
-            session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)
-    except BaseException:
-        # Also after a model error or Ctrl+C the index shows what is done, failed and still pending; if it
-        # cannot be written either (the disk that stopped the batch is full), the batch's own error is the
-        # one reported, and a --out this run made and never wrote into is removed. A batch stopped before
-        # its folder existed has nothing to index (and sqlite's "unable to open" would hide why it stopped).
-        if out_dir.is_dir():
-            with contextlib.suppress(GroveError):
+        try:
+            if not to_run:
+                pass
+            elif ray_address is not None:
+                from grove_tui.services.cluster import run_on_ray
+
+                run_on_ray(to_run, out_dir, hashes, address=ray_address, workers=workers, overwrite=overwrite,
+                           models=session.model_options, on_record=finished, return_files=True if ray_return else None)
+            else:
+                def outcome_done(_index: int, outcome: Any) -> None:
+                    finished(record_outcome(outcome, hashes[outcome.job.name]))
+
+                session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)
+        except BaseException:
+            # Also after a model error or Ctrl+C the index shows what is done, failed and still pending; if it
+            # cannot be written either (the disk that stopped the batch is full), the batch's own error is the
+            # one reported, and a --out this run made and never wrote into is removed. A batch stopped before
+            # its folder existed has nothing to index (and sqlite's "unable to open" would hide why it stopped).
+            if out_dir.is_dir():
+                with contextlib.suppress(GroveError):
+                    write_index(out_dir, jobs, index_format)
+            if made_out_dir:
+                _remove_if_empty(out_dir)
+            raise
+        try:
+            if out_dir.is_dir():
                 write_index(out_dir, jobs, index_format)
-        if made_out_dir:
-            _remove_if_empty(out_dir)
+        except BaseException:
+            if made_out_dir:
+                _remove_if_empty(out_dir)
+            raise
+        return BatchResult(records, skipped, index_path(out_dir, index_format))
+    except KeyboardInterrupt:
+        interrupted = True
         raise
-    try:
-        if out_dir.is_dir():
-            write_index(out_dir, jobs, index_format)
-    except BaseException:
-        if made_out_dir:
-            _remove_if_empty(out_dir)
-        raise
-    return BatchResult(records, skipped, index_path(out_dir, index_format))
+    finally:
+        if warming is not None:  # a batch that ends early leaves nothing loading behind it; Ctrl+C waits for none
+            session.stop_warm_up(warming, wait=not interrupted)
 
 
 def _remove_if_empty(folder: Path) -> None:

@@ -65,7 +65,7 @@ class BatchWorker:
 
         self.session = GroveSession(model=model, roi_model=roi_model, bt_model=bt_model)
         # Loading starts with the actor, not with its first job: the driver is still placing the others.
-        self.session.start_warm_up()
+        self.warming = self.session.start_warm_up()
 
     def package(self) -> tuple[str, str]:
         """Where this worker imports grove_tui from, and the digest of that code (`package_fingerprint`)."""

@@ -600,6 +600,13 @@ class GroveSession:
         thread.start()
         return thread
 
+    def stop_warm_up(self, thread: threading.Thread, *, wait: bool = True) -> None:
+        """Stop a background warm-up after the step it is in (and wait for that step): nothing this session
+        started keeps loading once its caller is done (a batch with nothing left to run, a failed one)."""
+        self._stop_warm_up.set()
+        if wait:
+            thread.join()
+
     @property
     def warm(self) -> bool:
         """Whether a warm-up finished with every step done."""

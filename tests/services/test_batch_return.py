@@ -102,13 +102,18 @@ def test_write_files_atomic_refuses_a_name_used_as_file_and_folder(tmp_path):
     assert not (tmp_path / "t").exists() and list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow  # the actor body starts loading its models at once (a real llama.cpp worker)
 def test_a_worker_sees_the_drivers_folder_only_by_the_probe_token(tmp_path):
-    worker = BatchWorker(None, None, None)  # the session loads nothing until a job runs
-    probe = tmp_path / ".grove-ray-probe-1"
-    probe.write_text("token-1", encoding="ascii")
-    assert worker.sees(str(probe), "token-1")
-    assert not worker.sees(str(probe), "token-2"), "another driver's probe"
-    assert not worker.sees(str(tmp_path / "elsewhere" / probe.name), "token-1"), "a folder it does not have"
+    worker = BatchWorker(None, None, None)  # an actor starts warming up its session at once
+    try:
+        probe = tmp_path / ".grove-ray-probe-1"
+        probe.write_text("token-1", encoding="ascii")
+        assert worker.sees(str(probe), "token-1")
+        assert not worker.sees(str(probe), "token-2"), "another driver's probe"
+        assert not worker.sees(str(tmp_path / "elsewhere" / probe.name), "token-1"), "a folder it does not have"
+    finally:  # a warm-up left running would load models into the tests after this one
+        worker.session.stop_warm_up(worker.warming)
+        worker.session.close()
 
 
 def test_ray_return_without_ray_is_a_usage_error(tmp_path):
