@@ -56,6 +56,7 @@ def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(ho
     assert req.max_groups == 1 and req.grammar.startswith("root ::= group\n")  # one stated quantity, one group
 
 
+@pytest.mark.slow
 def test_vanilla_prompt_has_the_whole_world_and_every_node(hospital, retriever):
     prompt = "Ten patients queue at the pharmacy counter"
     _, _, guided = request(hospital, retriever, "queuing", prompt)

@@ -70,6 +70,7 @@ def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, prese
     assert not re.search(r"\(-?\d+(\.\d+)?,-?\d", user), "coordinates in a guided prompt"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", CASES)
 def test_every_offered_node_has_its_card_and_the_sentence_comes_last(world_name, preset_name, retriever):
     world = load_world(world_name)
@@ -145,6 +146,7 @@ def tokenize():
     return lambda text: len(llm.tokenize(text.encode("utf-8"), add_bos=False, special=True))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", [(w, p) for w in list_worlds() for p in ONE_GROUP])
 def test_a_one_group_sentence_writes_one_tree_and_prefills_a_short_tail(world_name, preset_name, retriever, tokenize):
     """Issue 33: the reading fixes label, count and start, so the grammar asks for exactly one tree; the
@@ -160,6 +162,7 @@ def test_a_one_group_sentence_writes_one_tree_and_prefills_a_short_tail(world_na
     assert tokenize(user) + 12 <= 150, (tokenize(user), user)
 
 
+@pytest.mark.slow
 def test_the_lean_draft_parses_into_the_reading_groups(retriever):
     from grove_tui.generation.draft import parse_trees
 
