@@ -34,7 +34,6 @@ PROMPT = ("Ten patients queue at the pharmacy counter", "hospital", "queuing")
 
 
 def synthesis_request():
-    from grove_tui.generation.pipeline import quantities_from_reading
     from grove_tui.generation.presets import load_preset
     from grove_tui.generation.retrieval import NodeRetriever
     from grove_tui.generation.rois import select_rois
@@ -45,10 +44,10 @@ def synthesis_request():
     prompt, world_name, preset_name = PROMPT
     world, preset, retriever = load_world(world_name), load_preset(preset_name), NodeRetriever()
     reading = read_prompt(prompt, world, seed=0)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
-    return prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
+    return prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                           cards_for=retriever.cards_for)
 
 
 def run(llm, tokens, grammar_text, sampling, mode: str, n_tokens: int, seed: int) -> tuple[float, int, int, str]:

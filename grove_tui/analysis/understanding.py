@@ -33,6 +33,12 @@ import yaml
 
 from grove_tui.bt.xml import read_tree
 from grove_tui.errors import GroveError, UnderstandingError
+from grove_tui.scenario.model import Scenario
+from grove_tui.world.model import World
+from grove_tui.language.lexicon import SCALES, TENS, UNITS
+
+# A label is never a number: the lexicon's number words (not "couple" or "pair", which name people).
+NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES)
 
 PLACE_ROLES = ("start", "destination", "location", "via")
 GROUP_FIELDS = ("count", "intent", *PLACE_ROLES, "places", "robot_interaction", "robot_reaction", "together",
@@ -43,8 +49,6 @@ THRESHOLD_FIELDS = ("groups", "count", "intent", "places", "robot_reaction")
 THRESHOLD = 0.95
 SCENARIO_FIELDS = ("agent_count", "start_zones", "destination_zones", "location_zones", "behavior_types",
                    "no_idle_agents")
-NUMBER_WORDS = frozenset("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen "
-                         "fifteen sixteen seventeen eighteen nineteen twenty thirty forty fifty hundred".split())
 
 
 @dataclass(frozen=True)
@@ -237,21 +241,21 @@ def _score_robot(score: ReadingScore, expected: Mapping[str, Any] | None, got: M
         score.add("robot_places", not wrong, "; ".join(wrong))
 
 
-def default_reader() -> Callable[[str, Any, int], Mapping[str, Any]]:
+def default_reader() -> Callable[[str, World, int], Mapping[str, Any]]:
     from grove_tui.language.reading import read_prompt
 
     return lambda prompt, world, seed: read_prompt(prompt, world, seed=seed).to_dict()
 
 
 def run_reading(cases: Sequence[UnderstandingCase],
-                reader: Callable[[str, Any, int], Mapping[str, Any]] | None = None) -> list[ReadingScore]:
+                reader: Callable[[str, World, int], Mapping[str, Any]] | None = None) -> list[ReadingScore]:
     """Read every case's prompt and score it; a reader exception is a failed case, not a crash."""
     from grove_tui.bt.manifest import NODES
     from grove_tui.world import load_world
 
     reader = reader or default_reader()
     node_names = frozenset(NODES)
-    worlds: dict[str, Any] = {}
+    worlds: dict[str, World] = {}
     scores = []
     for case in cases:
         if case.world not in worlds:
@@ -329,7 +333,7 @@ def expected_total(groups: Sequence[Mapping]) -> tuple[int, int]:
     return low, high
 
 
-def _zone_of(world: Any, name: str) -> str | None:
+def _zone_of(world: World, name: str) -> str | None:
     try:
         place = world.find(name)
     except GroveError:
@@ -343,7 +347,7 @@ def idle_tree(xml: str, action_names: frozenset[str]) -> bool:
     return not (node_types & action_names)
 
 
-def score_scenario(case: UnderstandingCase, world: Any, scenario: Any, trees: Mapping[str, str],
+def score_scenario(case: UnderstandingCase, world: World, scenario: Scenario, trees: Mapping[str, str],
                    action_names: frozenset[str]) -> ScenarioScore:
     """Score a generated scenario (Scenario plus its trees by relative path) against the case."""
     score = ScenarioScore(case, agents=len(scenario.agents))

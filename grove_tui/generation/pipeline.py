@@ -29,16 +29,17 @@ from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
-from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
+from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import grounding_report
-from grove_tui.language.quantities import Quantity, extract_quantities
-from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
-from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
+from grove_tui.language.model import Count, PromptReading, effective_counts
+from grove_tui.language.reading import read_prompt
+from grove_tui.generation.rois import RoISelection, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.errors import Cancelled
+from grove_tui.world.model import World
 
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
 MAX_PROMPT_CHARS = 2000
@@ -83,36 +84,31 @@ Event = StageStarted | StageFinished | TokenStreamed | AttemptStarted
 class PlanInputs:
     """What post-processing and planning consume, kept on the result so counts can be re-planned.
 
-    Group i of the result (report["groups"][i]) is the i-th stated quantity when the prompt states
-    counts, else the i-th draft group: that is how post-processing reconciles them.
+    Group i of the result (report["groups"][i]) is the i-th group of the reading that has people of
+    its own (effective_counts): that is how post-processing reconciles the draft with the reading.
     """
 
-    prompt: str
     draft: Draft
-    quantities: tuple[Quantity, ...]
-    selection: Any  # rois.RoISelection
+    selection: RoISelection
     node_names: tuple[str, ...]
-    reading: PromptReading | None = None  # the prompt's groups; when it has any, they are the result's groups
+    reading: PromptReading  # the sentence as read: its groups are the result's groups
+
+    @property
+    def prompt(self) -> str:
+        return self.reading.prompt
 
     def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
-        if self.reading is not None and self.reading.groups:
-            # Result group i is the i-th reading group that has people of its own (effective_counts).
-            order = sorted(effective_counts(self.reading))
-            groups = list(self.reading.groups)
-            for i, n in counts.items():
-                r = order[i]
-                inside = sum(g.count.value for g in groups if g.relation == f"subset_of:{r}")
-                value = int(n) + inside  # a parent's count includes its subsets ("one of them")
-                groups[r] = replace(groups[r], count=Count("exact", value, value, value))
-            reading = replace(self.reading, groups=tuple(groups))
-            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)))
-        if self.quantities:
-            # An edited count is stated by the user now, even where the prompt only implied the group.
-            quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
-                               for i, q in enumerate(self.quantities))
-            return replace(self, quantities=quantities)
-        drafted = tuple(replace(g, count=counts[i]) if i in counts else g for i, g in enumerate(self.draft.groups))
-        return replace(self, draft=Draft(drafted))
+        # Result group i is the i-th reading group that has people of its own (effective_counts).
+        order = sorted(effective_counts(self.reading))
+        groups = list(self.reading.groups)
+        for i, n in counts.items():
+            r = order[i]
+            inside = sum(g.count.value for g in groups if g.relation == f"subset_of:{r}")
+            value = int(n) + inside  # a parent's count includes its subsets ("one of them")
+            # an edited count is stated by the user now: sure, whatever the sentence said
+            groups[r] = replace(groups[r], count=Count("exact", value, value, value),
+                                confidence=tuple(c for c in groups[r].confidence if c.field != "count"))
+        return replace(self, reading=replace(self.reading, groups=tuple(groups)))
 
 
 @dataclass
@@ -124,25 +120,6 @@ class GenerationResult:
     report: dict[str, Any] = field(default_factory=dict)
     # The draft and prompt analysis the trees came from; None for results rebuilt from a bundle.
     inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
-
-
-def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
-    """The head counts of a reading in the older Quantity form (population checks, the report's
-    "quantities"): one per group with people of its own, spans located in the prompt."""
-    out: list[Quantity] = []
-    counts = effective_counts(reading)
-    cursor = 0
-    for i, g in enumerate(reading.groups):
-        at = reading.prompt.find(g.who, cursor)
-        start = at if at >= 0 else cursor
-        end = start + len(g.who)
-        cursor = end if at >= 0 else cursor
-        if counts.get(i, 0) <= 0:
-            continue
-        out.append(Quantity(count=counts[i], noun=g.label, phrase=g.who, start=start, end=end,
-                            exact=g.count.kind in ("exact", "structured", "exclusive"),
-                            implied=g.count.kind in ("vague", "implied")))
-    return out
 
 
 class _StageClock:
@@ -165,7 +142,7 @@ class _StageClock:
         self.emit(StageFinished(stage, seconds, prompt_tokens, completion_tokens, detail))
 
 
-def world_reference(world: Any) -> str:
+def world_reference(world: World) -> str:
     """How a scenario names its world: the shipped name, or the path of a user's world file."""
     source = getattr(world, "source", None)
     if source is None:
@@ -187,10 +164,9 @@ def _model_name(llm: Any) -> str:
 class GenerationPipeline:
     """One world and preset, models loaded once; `run` many prompts."""
 
-    def __init__(self, world: Any, preset: Preset, llm_roi: Any | None, llm_bt: Any, retriever: Any,
+    def __init__(self, world: World, preset: Preset, llm_roi: Any | None, llm_bt: Any, retriever: Any,
                  resolution: float | None = None, robot: RobotRequest | None = None,
-                 plan_cache: PlanCache | None = None, embed: Callable[[list[str]], Any] | None = None,
-                 max_tokens: int = 512) -> None:
+                 plan_cache: PlanCache | None = None, max_tokens: int = 512) -> None:
         self.world = world
         self.preset = preset
         self.llm_roi = llm_roi
@@ -199,7 +175,6 @@ class GenerationPipeline:
         self.resolution = float(resolution or preset.planner.resolution)
         self.robot = robot
         self.plan_cache = plan_cache or PlanCache()
-        self.matcher = RoIMatcher(world, embed)
         self.max_tokens = max_tokens
         self._grid: OccupancyGrid | None = None
         self._planner: ThetaStarPlanner | None = None
@@ -230,16 +205,18 @@ class GenerationPipeline:
         started = time.perf_counter()
 
         t0 = clock.begin("rois")
-        quantities = extract_quantities(prompt)
-        check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
+        # The sentence is read once, here: everything below takes the reading, and the raw text goes
+        # only to the embedder (retrieval) and the models.
         reading = read_prompt(prompt, world, seed=seed)
-        quantities = quantities_from_reading(reading)
-        selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
-        roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
+        if reading.problems:  # no words, a negative or zero count, nobody: refused before anything runs
+            raise PromptError(reading.problems[0])
+        selection = select_rois(world, preset, reading)
+        roi_tokens = (0, 0)  # prompt and completion tokens of the roi model
         if self.llm_roi is not None and preset.guided:
-            selection, *spent = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
-            roi_tokens = tuple(spent)
-        check_population(world, self.grid, preset, selection, quantities)
+            selection, reading, *spent = refine_with_model(world, preset, reading, selection, self.llm_roi, seed,
+                                                           cancel)
+            roi_tokens = (spent[0], spent[1])
+        check_population(world, self.grid, preset, selection, reading)
         clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 
         t0 = clock.begin("retrieval")
@@ -247,8 +224,8 @@ class GenerationPipeline:
             retrieved = self.retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
         else:
             retrieved = []
-        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
-                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None))
+        request = prepare_request(preset, selection, retrieved, reading, self.retriever.documents_for, world=world,
+                                  cards_for=getattr(self.retriever, "cards_for", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")
@@ -259,7 +236,7 @@ class GenerationPipeline:
         clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
                   synthesis.prompt_tokens, synthesis.completion_tokens)
 
-        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names), reading)
+        inputs = PlanInputs(synthesis.draft, selection, tuple(request.node_names), reading)
         post, plan = self._plan_stages(inputs, seed, clock, cancel)
 
         models = {"bt": _model_name(self.llm_bt)}
@@ -270,7 +247,6 @@ class GenerationPipeline:
             "models": models, "stages": stages,
             "total_seconds": round(time.perf_counter() - started, 4),
             "prompt_tokens": synthesis.prompt_tokens, "completion_tokens": synthesis.completion_tokens,
-            "quantities": [{"phrase": q.phrase, "count": q.count, "noun": q.noun, "exact": q.exact} for q in quantities],
             "reading": reading.to_dict(),
             "selected_rois": describe_selection(selection), "zones": selection.zones, "named_zones": selection.named_zones,
             "retrieved": [{"name": r.name, "kind": r.kind, "score": r.score, "nodes": list(r.nodes)} for r in retrieved],
@@ -307,7 +283,7 @@ class GenerationPipeline:
         if self._grid is None and result.grid is not None and result.scenario.resolution == self.resolution:
             self._grid = result.grid  # the same world and preset: the grid the run built
         edited = inputs.with_counts(counts)
-        check_population(self.world, self.grid, self.preset, edited.selection, edited.quantities)
+        check_population(self.world, self.grid, self.preset, edited.selection, edited.reading)
 
         stages = {k: dict(v) for k, v in result.report.get("stages", {}).items()}
         previous = sum(stages.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
@@ -357,8 +333,8 @@ class GenerationPipeline:
         """The post-processing and planning stages, shared by `run` and `replan`."""
         world, preset, grid = self.world, self.preset, self.grid
         t0 = clock.begin("postprocess")
-        post = postprocess(world, grid, preset, inputs.draft, list(inputs.quantities), inputs.selection, seed,
-                           inputs.prompt, list(inputs.node_names), reading=inputs.reading)
+        post = postprocess(world, grid, preset, inputs.draft, inputs.selection, seed, inputs.reading,
+                           list(inputs.node_names))
         clock.end("postprocess", t0, f"{len(post.agents)} agents")
 
         t0 = clock.begin("planning")
@@ -387,8 +363,7 @@ class GenerationPipeline:
         report["exit"] = post.exit
         report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes
-        if inputs.reading is not None:
-            report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
-                                                   post.notes).to_dict()
+        report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
+                                               post.notes).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

@@ -36,6 +36,8 @@ from grove_tui.generation.presets import GenerationError, Preset
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.waypoints import plan_waypoints
+from grove_tui.world.model import Door, Entity, World
+from grove_tui.navigation.grid import OccupancyGrid
 
 Point = tuple[float, float]
 
@@ -91,7 +93,7 @@ def goals_from_tree(document: TreeDocument) -> list[Point]:
     return goals
 
 
-def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed, seed: int,
+def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: PostProcessed, seed: int,
                      robot: RobotRequest | None = None, planner: ThetaStarPlanner | None = None,
                      cache: PlanCache | None = None, cancel: threading.Event | None = None) -> OperationalPlan:
     planner = planner or ThetaStarPlanner(grid)
@@ -113,6 +115,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
             g = labels[members[0].group_index]
             exit_name = members[0].exit or post.exit
             exit_door = world.find(exit_name)
+            assert isinstance(exit_door, Door), exit_name  # fields lead to exits, which are doors
             centroid = _free_centroid(grid, [a.start for a in members], g.spawn)
             try:
                 built = cached.cache.field(world.name, planner, centroid, exit_door.position,
@@ -154,7 +157,7 @@ def _check_cancel(cancel: threading.Event | None) -> None:
         raise Cancelled("generation cancelled during planning")
 
 
-def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
+def _free_centroid(grid: OccupancyGrid, points: Sequence[Point], zone: str) -> Point:
     if not points:
         # A group with no members has no centre; the prompt checks refuse "zero people" before this.
         raise GenerationError(f"a group in {zone} has no people to lead to the exit")
@@ -168,15 +171,15 @@ def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
     return (float(q[0]), float(q[1])) if math.dist(q, (cx, cy)) < 1.0 else nearest
 
 
-def _resolve_point(world: Any, grid: Any, value: Point | str, what: str) -> Point:
+def _resolve_point(world: World, grid: OccupancyGrid, value: Point | str, what: str) -> Point:
     if isinstance(value, str):
         try:
             obj = world.find(value)
         except Exception as exc:
             raise GenerationError(f"robot {what} {value!r}: {exc}") from None
-        if hasattr(obj, "interaction_point"):
+        if isinstance(obj, Entity):
             p = obj.interaction_point
-        elif hasattr(obj, "leads_to"):
+        elif isinstance(obj, Door):
             p = obj.inward_point(0.8)
         else:
             p = obj.anchor
@@ -188,7 +191,7 @@ def _resolve_point(world: Any, grid: Any, value: Point | str, what: str) -> Poin
     return (round(float(q[0]), 3), round(float(q[1]), 3))
 
 
-def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
+def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
                notes: list[str]) -> RobotSpec:
     """The robot crosses the scene: from one side of the crowd to the other, through where people are.
 
@@ -267,7 +270,7 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
     return RobotSpec(start=start, goal=goal, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
 
 
-def _robot_candidates(world: Any, grid: Any, post: PostProcessed, starts: Sequence[Point], seed: int) -> list[Point]:
+def _robot_candidates(world: World, grid: OccupancyGrid, post: PostProcessed, starts: Sequence[Point], seed: int) -> list[Point]:
     zones: list[str] = []
     for a in post.agents:
         for z in (a.spawn_zone, a.zone):

@@ -31,6 +31,7 @@ from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
 from grove_tui.language.tokens import lemma, words
 from grove_tui.scenario.report import GroundingCheck, GroundingReport, GroupGrounding
+from grove_tui.world.model import Door, Entity, World
 
 # Nodes that make a person do something on their own: a tree with none of them leaves its agent
 # standing where it spawned (conditions, bookkeeping and robot reactions only fire on cue).
@@ -60,7 +61,7 @@ class ReconciledGroup:
     speed_factor: float = 1.0
 
 
-def reconcile(draft: Draft, reading: PromptReading, world: Any, default_spawn: str,
+def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn: str,
               notes: list[str], *, evacuation_field: bool = False) -> list[ReconciledGroup]:
     """Reading groups with the draft's trees, repaired where they contradict the reading (module doc).
 
@@ -103,7 +104,7 @@ def reconcile(draft: Draft, reading: PromptReading, world: Any, default_spawn: s
 
 # ---- matching -------------------------------------------------------------------------------
 
-def _pick_draft(group: GroupReading, drafts: Sequence[DraftGroup], unused: Sequence[int], world: Any) -> int | None:
+def _pick_draft(group: GroupReading, drafts: Sequence[DraftGroup], unused: Sequence[int], world: World) -> int | None:
     if not unused:
         return None
     wanted = {group.label, lemma(group.label)} | {lemma(w) for w in words(group.who)}
@@ -130,7 +131,7 @@ def is_idle(tree: DraftNode) -> bool:
     return not any(node.node in ROUTINE_NODES for node in tree.walk())
 
 
-def _repair(tree: DraftNode, group: GroupReading, world: Any, notes: list[str], label: str,
+def _repair(tree: DraftNode, group: GroupReading, world: World, notes: list[str], label: str,
             evacuation_field: bool = False) -> DraftNode:
     if is_idle(tree):
         fixed = tree_for(group, world, evacuation_field)
@@ -175,7 +176,7 @@ def _base_intent(group: GroupReading) -> str:
     return "wait"
 
 
-def tree_for(group: GroupReading, world: Any, evacuation_field: bool = False) -> DraftNode:
+def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) -> DraftNode:
     """The plain tree for a reading: where it says, what it says, nothing more."""
     base = _base_intent(group)
     if base == "evacuate" and evacuation_field:
@@ -269,7 +270,7 @@ def _tree_places(tree: DraftNode) -> list[str]:
     return [p for node in tree.walk() for p in [_node_place(node)] if p]
 
 
-def _zone_of(world: Any, name: str) -> str | None:
+def _zone_of(world: World, name: str) -> str | None:
     if not name:
         return None
     try:
@@ -280,7 +281,7 @@ def _zone_of(world: Any, name: str) -> str | None:
     return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
 
 
-def _reaches(world: Any, goal: str, places: Sequence[str]) -> bool:
+def _reaches(world: World, goal: str, places: Sequence[str]) -> bool:
     """Whether a tree visiting `places` goes where the reading sends the group: anywhere in a named
     zone, but to a named door or thing itself."""
     if goal in places:
@@ -288,7 +289,7 @@ def _reaches(world: Any, goal: str, places: Sequence[str]) -> bool:
     return _zone_of(world, goal) == goal and any(_zone_of(world, p) == goal for p in places)
 
 
-def _same_place(world: Any, have: str | None, want: str, intent: str) -> bool:
+def _same_place(world: World, have: str | None, want: str, intent: str) -> bool:
     if have is None:
         return False
     if have == want:
@@ -298,7 +299,7 @@ def _same_place(world: Any, have: str | None, want: str, intent: str) -> bool:
     return _zone_of(world, have) == _zone_of(world, want)
 
 
-def _stationary_place(group: GroupReading, world: Any, intent: str) -> str | None:
+def _stationary_place(group: GroupReading, world: World, intent: str) -> str | None:
     place = group.location or (group.destination if intent in STATIONARY_NODES else None)
     if place is None:
         return None
@@ -307,15 +308,15 @@ def _stationary_place(group: GroupReading, world: Any, intent: str) -> str | Non
     return place
 
 
-def _service_in(world: Any, name: str) -> str | None:
+def _service_in(world: World, name: str) -> str | None:
     """The service point a place stands for: the entity itself, or its zone's counter or desk."""
     try:
         obj = world.find(name)
     except Exception:
         return None
-    if hasattr(obj, "interaction_point"):
+    if isinstance(obj, Entity):
         return obj.name
-    zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
+    zone = world.zone(obj.zone) if isinstance(obj, Door) else obj
     for wanted in SERVICE_TYPES:
         for e in getattr(zone, "entities", ()):
             if wanted in e.type or wanted in e.name:
@@ -323,11 +324,11 @@ def _service_in(world: Any, name: str) -> str | None:
     return None
 
 
-def _is_exit(world: Any, name: str | None) -> bool:
+def _is_exit(world: World, name: str | None) -> bool:
     return bool(name) and any(d.name == name for d in world.exits())
 
 
-def _nearest_exit(world: Any, start: str | None) -> str:
+def _nearest_exit(world: World, start: str | None) -> str:
     exits = world.exits()
     if not exits:
         return world.zones[0].name
@@ -338,7 +339,7 @@ def _nearest_exit(world: Any, start: str | None) -> str:
     return min(exits, key=lambda d: (math.hypot(d.position[0] - cx, d.position[1] - cy), d.name)).name
 
 
-def _spawn(group: GroupReading, d: DraftGroup | None, world: Any, default: str, tree: DraftNode) -> str:
+def _spawn(group: GroupReading, d: DraftGroup | None, world: World, default: str, tree: DraftNode) -> str:
     """Where the group starts: the reading's start; for stationary groups the place they are; else the
     model's spawn unless it is where they are sent, then the largest room next to it."""
     for name in (group.start, group.location if _base_intent(group) in STATIONARY_NODES else None):
@@ -366,7 +367,7 @@ _INTENT_NODES = {"queue": {"Queue"}, "converse": {"Converse", "ConversationForma
 # A walk with a destination must walk there; wandering is a walk only when no destination is named.
 
 
-def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: Any,
+def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: World,
                      repairs: Sequence[str] = ()) -> GroundingReport:
     """What the sentence asked beside what the scenario does, per reading group.
 
@@ -427,7 +428,7 @@ def _check_count(r: GroupReading, wanted: int, g: Any) -> GroundingCheck:
     return GroundingCheck("count", asked, str(g.count), ok, "" if ok else "the group's size differs")
 
 
-def _check_place(field: str, asked: str | None, does: str, world: Any, zone_level: bool) -> GroundingCheck:
+def _check_place(field: str, asked: str | None, does: str, world: World, zone_level: bool) -> GroundingCheck:
     if not asked:
         return GroundingCheck(field, "-", does, True, "the sentence names none")
     want = _zone_of(world, asked) if zone_level else asked
@@ -435,7 +436,7 @@ def _check_place(field: str, asked: str | None, does: str, world: Any, zone_leve
     return GroundingCheck(field, asked, does, ok, "" if ok else f"they start in {does}")
 
 
-def _check_behavior(r: GroupReading, g: Any, world: Any) -> GroundingCheck:
+def _check_behavior(r: GroupReading, g: Any, world: World) -> GroundingCheck:
     base = _base_intent(r)
     nodes = {n.node for n in g.tree.walk()}
     asked = r.intent + (f" ({r.robot_interaction} the robot)" if r.robot_interaction else "")

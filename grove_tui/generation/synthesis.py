@@ -25,8 +25,9 @@ from typing import Any
 from grove_tui.bt.manifest import NODES
 from grove_tui.generation.draft import Draft, DraftError, draft_grammar, parse_draft
 from grove_tui.generation.presets import GenerationError, Preset
-from grove_tui.language.quantities import Quantity
-from grove_tui.language.reading import PromptReading
+from grove_tui.generation.rois import RoISelection
+from grove_tui.language.model import PromptReading, effective_counts
+from grove_tui.world.model import World
 
 MAX_ATTEMPTS = 3
 # Bump when the prompt's wording or layout changes: persisted KV caches of the fixed prefix are keyed by it.
@@ -147,7 +148,7 @@ def describe_reading_groups(reading: PromptReading) -> str:
     return "; ".join(parts)
 
 
-def fixed_system_message(preset: Preset, world: Any | None = None) -> str:
+def fixed_system_message(preset: Preset, world: World | None = None) -> str:
     """The system message: everything fixed for a world and preset, so its KV state can be cached."""
     if not preset.guided:
         return preset.template  # the baseline: no scenario-specific guidance
@@ -158,7 +159,7 @@ def fixed_system_message(preset: Preset, world: Any | None = None) -> str:
     return system
 
 
-def prefix_label(preset: Preset, world: Any | None) -> str:
+def prefix_label(preset: Preset, world: World | None) -> str:
     """What the fixed system message's cached KV state is for: world (and its file's hash), preset, template version.
 
     The prefix's tokens are part of the cache key as well, so this only has to name the file and to
@@ -182,10 +183,10 @@ def _file_digest(path: str, size: int, mtime_ns: int) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()[:12]
 
 
-def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], prompt: str,
-                   quantities: Sequence[Quantity], roi_names: Sequence[str], reading: PromptReading | None = None,
-                   world: Any | None = None) -> list[dict[str, str]]:
+def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], reading: PromptReading,
+                   roi_names: Sequence[str], world: World | None = None) -> list[dict[str, str]]:
     """System text fixed per world and preset first; the variable parts (places, nodes, the sentence) last."""
+    prompt = reading.prompt
     system = fixed_system_message(preset, world)
     if not preset.guided:
         parts = ["Places:", places, "", "Behavior nodes:"]
@@ -196,26 +197,23 @@ def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc
     parts = ["Places:", places, "Nodes:"]
     parts += [(d.card or d.text).strip() for d in documents]
     parts.append(f"Scenario: {prompt.strip()}")
-    if reading is not None and reading.groups:
+    if reading.groups:
         parts.append("Groups to write: " + describe_reading_groups(reading))
-    elif quantities:
-        parts.append("Groups to write: " + "; ".join(f"{q.phrase} ({q.count})" for q in quantities))
     return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
 
 
-def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], prompt: str,
-                    quantities: Sequence[Quantity], documents_for: Callable[[list[str]], list[str]],
-                    reading: PromptReading | None = None, world: Any | None = None,
+def prepare_request(preset: Preset, selection: RoISelection, retrieved: Sequence[Any], reading: PromptReading,
+                    documents_for: Callable[[list[str]], list[str]], world: World | None = None,
                     cards_for: Callable[[list[str]], list[str]] | None = None) -> SynthesisRequest:
     retrieved_nodes = [n for r in retrieved for n in r.nodes]
     offered = offered_nodes(preset, retrieved_nodes)
     documents = choose_documents(preset, retrieved, offered, documents_for, cards_for)
-    # Post-processing keeps one group per stated quantity, so asking for more only costs tokens.
-    max_groups = min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities else preset.limits.max_groups
+    # Post-processing keeps one group per group of the reading, so asking for more only costs tokens.
+    groups = len(effective_counts(reading))
+    max_groups = min(preset.limits.max_groups, groups) if preset.guided and groups else preset.limits.max_groups
     grammar = draft_grammar(offered, selection.roi_names, max_groups=max_groups,
                             max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
-    messages = build_messages(preset, selection.summary, documents, prompt, quantities, selection.roi_names, reading,
-                              world)
+    messages = build_messages(preset, selection.summary, documents, reading, selection.roi_names, world)
     return SynthesisRequest(messages, list(offered), list(selection.roi_names), grammar, max_groups, documents,
                             prefix_label(preset, world))
 
@@ -318,7 +316,7 @@ def describe_documents(documents: Sequence[RetrievedDoc]) -> list[dict[str, Any]
 
 
 
-def warm_prefix(llm: Any, preset: Preset, world: Any | None) -> dict[str, Any] | None:
+def warm_prefix(llm: Any, preset: Preset, world: World | None) -> dict[str, Any] | None:
     """Evaluate the fixed system message of this world and preset once, before the first request.
 
     The worker keeps its KV state live and persists it (keyed as prefix_label says), so the first

@@ -113,7 +113,7 @@ class Clauses:
         if negated is not None:
             # "go to the imaging instead of the waiting room": a place nobody goes to
             k = i + len(negated)
-            place = self.places.phrase(k, "at", i, record_unknown=False)
+            place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else s.phrase_end(k))
             return True
         if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
@@ -200,10 +200,10 @@ class Clauses:
         v = s.verb(i)
         if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1)):
             # "skip the critical care and go to ...": a place they do not go to
-            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False)
+            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else i + 1)
             return True
-        if v in lx.ZONE_EMPTYING_VERBS and s.w[i].pos == "VERB" and not s.after_determiner(i) and \
+        if v in lx.ZONE_EMPTYING_VERBS and s.is_verb(i) and not s.after_determiner(i) and \
                 nxt in lx.DETERMINERS | {"out"}:
             # "clear the platform", "empty out the ward": the zone everybody leaves
             place = self.places.phrase(s.skip(i + 1, {"out"}), "obj:start", i, record_unknown=False)

@@ -18,7 +18,7 @@ from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
-from grove_tui.language.model import FieldConfidence, GroupReading
+from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.place_phrases import PlacePhrases, place_confidences
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
@@ -302,3 +302,20 @@ class Groups:
         self.notes.append(f"no people are named: everyone in {match.zone} is evacuated")
         return replace(group, who="everyone", text=s.prompt, confidence=group.confidence + (
             FieldConfidence("group", 0.45, f"no people are named: everyone in {match.zone} is assumed"),))
+
+    def unnamed(self, robot_tokens: set[int]) -> GroupReading:
+        """The one group of a sentence that names no people ("a busy afternoon in the café", "the robot
+        crosses the lobby"): the people the model is asked to fill in, with the places and the verb
+        the sentence has for them, marked as assumed."""
+        s = self.s
+        clause = self.clauses.read(range(s.n), robot_tokens, scene=True)
+        low, high = lx.BARE_PLURAL_RANGE
+        mention = Mention(0, 0, "people", "person", Count("vague", s.choose(low, high, "unnamed"), low, high))
+        if clause.intent is None:
+            clause = replace(clause, intent="walk")  # no verb: the model's tree is kept as it writes it
+        group = self.group(_GroupWords(mention, clause, None, (0, s.n)), self.clauses.evacuation(), [])
+        self.notes.append("no people are named: one group of people is left to the model")
+        count = group.count
+        return replace(group, text=s.prompt, confidence=tuple(c for c in group.confidence if c.field != "count") + (
+            FieldConfidence("group", 0.3, "no people are named: the model is asked to fill in who is there"),
+            FieldConfidence("count", 0.5, f"no people are named: {count.value} guessed in {count.low}-{count.high}")))

@@ -1,9 +1,8 @@
 """The one lexicon of English the product reads: data only, no logic beyond lookups.
 
 Every word table the reader needs lives here so that there is one answer to "is this a verb of
-walking", "does this word mark a place", "how many is a few". Modules that read English
-(language/reading.py, generation/rois.py, generation/postprocess.py) import these tables instead
-of keeping their own.
+walking", "does this word mark a place", "how many is a few". Only language/ reads English; the
+stages below it take the reading.
 
 Vague and implied counts have documented ranges; the reader picks a value inside the range from
 the seed, so one prompt and one seed always give the same crowd:
@@ -400,18 +399,6 @@ BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment p
 # Heads that say "a part of" without naming which: matching rests on the words before them.
 GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
-# Words after which a place may be named, verbs included ("reach the ward"): the RoI matcher's breaks.
-LOCATIVE_WORDS = ("in", "at", "to", "into", "near", "inside", "from", "toward", "towards", "by", "through", "across",
-                  "around", "outside", "beside", "behind", "past", "onto", "via", "within", "reach", "visit", "enter",
-                  "leave", "exit", "use")
-# Words that say what people do, not where; they select a place only through its name or aliases
-# ("waiting room"), never through a tag ("queue" on a counter, "fire" on an exit).
-BEHAVIOR_WORDS = frozenset(
-    """queue line wait walk go come leave enter chat talk converse meet sit stand rest eat drink buy pay evacuate
-    evacuation escape flee run rush alarm fire emergency panic wander roam stroll browse look watch follow visit
-    work help serve crowd gather hurry waiting queuing""".split()
-)
-
 # Groups of words people use for the same kind of place; matching one counts, at a discount, as
 # matching the others (the literal word still wins).
 PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
@@ -442,28 +429,6 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "printer copier print",
     )
 )
-
-# ---- clause rules without a reading ---------------------------------------------------------
-# generation/postprocess.py's older rules, applied only when the reader finds no group in a prompt.
-CLAUSE_SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
-CLAUSE_GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
-CLAUSE_QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
-# What a group's own words say it does. Stricter than CLAUSE_QUEUE_WORDS: "wait" alone is not a queue.
-CLAUSE_INTENT_WORDS = {
-    "queue": frozenset("queue queuing queueing queued lining line turn served".split()),
-    "converse": frozenset("chat chatting chatted talk talking talked converse conversing conversation gossip "
-                          "gossiping discuss discussing socialise socialize socialising socializing".split()),
-    "wander": frozenset("wander wandering wandered stroll strolling strolled roam roaming browse browsing "
-                        "meander meandering mill milling".split()),
-    "walk": frozenset("walk walking walked go going goe gone head heading move moving come coming leave leaving "
-                      "hurry hurrying run running rush rushing return returning visit visiting enter entering "
-                      "cross crossing arrive arriving proceed proceeding".split()),
-}
-
-
-CLAUSE_ARRIVAL_VERBS = frozenset("come comes coming came enter enters entering entered arrive arrives arriving arrived".split())
-CLAUSE_DEPARTURE_VERBS = frozenset("leave leaves leaving left exit exits exiting exited go goes going went walk walks "
-                             "walking walked head heads heading headed".split())
 
 # Words that never name anything: skipped when matching places and labels.
 STOPWORDS = frozenset(

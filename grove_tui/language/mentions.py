@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.collectives import Collectives
-from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
+from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
@@ -34,12 +34,17 @@ class Mentions:
         self.people = people
         self.places = places
         self.collectives = Collectives(s, people)
+        self.problems: list[str] = []  # counts no scenario can have ("-5 people", "zero nurses")
 
     def find(self) -> list[Mention]:
         s = self.s
         found: list[Mention] = []
         i = 0
         while i < s.n:
+            if negative_at(s, i):
+                end = next((k for k in range(i + 1, min(i + 5, s.n)) if self.people.is_person_noun(k)), i)
+                self.problems.append(f"'{s.span(i, end)}' is a negative number of people; give a whole number of "
+                                     f"at least 1")
             if i in s.together_phrases or not self.subject_position(i):
                 i += 1
                 continue
@@ -54,6 +59,9 @@ class Mentions:
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
                 i = m.last + 1
                 continue
+            if m.count is not None and m.count.value == 0 and m.count.kind == "exact":
+                self.problems.append(f"'{m.who}' asks for nobody; give a number of people of at least 1 "
+                                     f"(or leave that group out)")
             if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"

@@ -9,6 +9,7 @@ unknown place, unless it names a time, a person, a manner or the building itself
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -66,9 +67,12 @@ class PlacePhrases:
         self.frame_zones: list[str] = []  # zones named as where people are ("on platform 2"), in order
         self.quiet = False  # True while reading a clause whose places nobody goes to
         self.owner: str | None = None  # the kind of people whose clause is read ("her office" is theirs)
+        self.named: list[str] = []  # every place a phrase names, in reading order (not those nobody goes to)
+        self.covered: set[int] = set()  # the words of every place phrase read
 
-    def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True) -> Place | None:
-        """The noun phrase from word k, after the place preposition (or verb) at `at`."""
+    def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
+        """The noun phrase from word k, after the place preposition (or verb) at `at`; `mentioned`
+        False for a place said to be where nobody goes ("instead of the lobby")."""
         s = self.s
         low = s.low
         j = k
@@ -130,6 +134,9 @@ class PlacePhrases:
         self.context_zones.append(match.zone)
         if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
             self.frame_zones.append(match.zone)
+        if mentioned:
+            self.named.append(match.name)
+        self.covered.update(range(k, j))
         return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives)
 
     # ---- by meaning, and by owner ----------------------------------------------------------------
@@ -175,6 +182,8 @@ class PlacePhrases:
         index = self.s.index
         said = " ".join(phrase)
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if (entry := index.entry(match.name)) is not None and entry.exit and "exit" in content:
+            return None  # "the exit": any exit is one; the nearest to the scene was chosen, meaning adds nothing
         rooms_only = bool(content) and (content[-1] in lx.GENERIC_PLACE_HEADS or self._headed_elsewhere(lemmas, match))
         among = {match.name, *alternatives, *index.sharing(content)}
         ranked = [r for r in index.by_meaning(said, among=among) if r.entry.kind == "zone" or not rooms_only]
@@ -281,9 +290,10 @@ class PlacePhrases:
         is less so; two places scoring alike are unsure, unless a zone the prompt named before
         decides between them."""
         said = " ".join(phrase)
-        tied = [m for m in self.s.index.candidates(lemmas)
-                if m.name != match.name and m.score >= match.score - 1e-9
-                and not (match.kind == "zone" and m.zone == match.name)
+        alike = [m for m in self.s.index.candidates(lemmas) if m.score >= match.score - 1e-9]
+        zones = {m.name for m in alike if m.kind == "zone"}
+        tied = [m for m in alike if m.name != match.name
+                and not (m.kind != "zone" and m.zone in zones)  # a fixture of a room alike is that room
                 and not (m.kind == "zone" and match.zone == m.name)]
         alternatives = tuple(dict.fromkeys(m.name for m in tied))[:4]
         if alternatives and match.zone in self.context_zones:  # (this phrase's zone is not in it yet)
@@ -316,10 +326,21 @@ class PlacePhrases:
         """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
         has already named ("Gate A1: ... staff at the desk")."""
         index = self.s.index
-        if match is None or not self.context_zones or match.zone in self.context_zones:
+        if match is None:
+            return match
+        if not self.context_zones or match.zone in self.context_zones:
+            tied = [m for m in index.candidates(lemmas) if m.score >= match.score - 1e-9]
+            exits = [m for m in tied if (e := index.entry(m.name)) is not None and e.exit]
+            if match.kind == "door" and exits and match not in exits and "exit" in lemmas:
+                return exits[0]  # "the exit" is an exit door, whichever named "..._exit" ties with it
             return match
         candidates = index.candidates(lemmas)
         tied = [m for m in candidates if m.score >= match.score - 1e-9]
+        exits = [m for m in tied if (e := index.entry(m.name)) is not None and e.exit]
+        if exits and (len(exits) == len(tied) or "exit" in lemmas):
+            # "the exit": an exit door (not a door only named "..._exit" inside the building), the one
+            # nearest the places the sentence is about
+            return self._nearest_exit(exits)
         for zone in reversed(self.context_zones):
             for m in tied:
                 if m.zone == zone:
@@ -336,6 +357,19 @@ class PlacePhrases:
                 if m.zone == zone and m.kind == "entity" and entry is not None and set(content) <= entry.tokens:
                     return m
         return match
+
+    def _nearest_exit(self, exits: Sequence[PlaceMatch]) -> PlaceMatch:
+        world = self.s.index.world
+        centres = [world.zone(z).centroid for z in dict.fromkeys(self.context_zones)]
+        cx = sum(c[0] for c in centres) / len(centres)
+        cy = sum(c[1] for c in centres) / len(centres)
+
+        def distance(m: PlaceMatch) -> float:
+            door = world.find(m.name)
+            x, y = getattr(door, "position", (cx, cy))
+            return math.hypot(x - cx, y - cy)
+
+        return min(exits, key=lambda m: (distance(m), m.name))
 
     def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
         """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
@@ -382,6 +416,22 @@ class PlacePhrases:
                 first = next((lemma(w) for w in words[:n] if w not in lx.DETERMINERS), "")
                 return entry is None or first in entry.tokens
         return False
+
+    def scan_names(self, skip: set[int]) -> None:
+        """Places the sentence names in no place role ("a fire alarm empties the pharmacy", "the
+        lobby is busy"): a whole name or alias starting a noun phrase, for the places the scenario
+        is about; never an unknown place."""
+        s = self.s
+        k = 0
+        while k < s.n:
+            starts = k not in self.covered and k not in skip and (
+                k == 0 or s.low[k - 1] in lx.DETERMINERS or s.is_punct(k - 1)) and not s.is_punct(k)
+            if starts and self.names_place(k):
+                place = self.phrase(k, "named", k, record_unknown=False)
+                if place is not None:
+                    k = max(place.end, k + 1)
+                    continue
+            k += 1
 
     def scan_unknown(self, tokens: Sequence[int]) -> None:
         """Read every place phrase of these words, for the unknown places among them."""

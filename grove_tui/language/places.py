@@ -24,7 +24,7 @@ from functools import lru_cache
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
-from grove_tui.language.tokens import lemma, name_tokens
+from grove_tui.language.tokens import name_tokens
 from grove_tui.world.model import World
 
 SYNONYM_DISCOUNT = 0.6
@@ -315,7 +315,3 @@ def place_index(world: World) -> PlaceIndex:
         cached = (world, PlaceIndex(world))
         _INDEXES[key] = cached
     return cached[1]
-
-
-def lemmas(words: Sequence[str]) -> list[str]:
-    return [lemma(w) for w in words]

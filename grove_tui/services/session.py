@@ -118,10 +118,14 @@ class WarmUpStatus:
         return self.doing if self.step == "ready" else f"{self.doing}: done"
 
 
-def _warm_reader() -> None:
+def _warm_reader(world: World | None = None) -> None:
+    """spaCy, and with a world the meaning model and the world's place vectors (language/meaning.py)."""
     from grove_tui.language import parser
+    from grove_tui.language.places import place_index
 
     parser.load()
+    if world is not None:
+        place_index(world).warm_meaning()
 
 
 @dataclass(frozen=True)
@@ -278,7 +282,8 @@ class GroveSession:
         steps: list[tuple[str, str, Callable[[], Any]]] = [
             ("models", "loading the models", self.load_models),
             ("retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
-            ("reader", "loading the English reader", _warm_reader),
+            ("reader", "loading the English reader",
+             lambda: _warm_reader(self.load_world(world) if world is not None else None)),
         ]
         if world is not None and preset is not None:
             steps.append(("planner", f"preparing {world}'s map and planner", lambda: self._warm_planner(world, preset)))

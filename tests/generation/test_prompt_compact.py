@@ -15,7 +15,6 @@ import pytest
 from grove_tui.bt.manifest import NODES
 from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
-from grove_tui.generation.pipeline import quantities_from_reading
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.generation.rois import select_rois
@@ -48,10 +47,10 @@ def _places(world):
 def build(world, preset_name, retriever, prompt):
     preset = load_preset(preset_name)
     reading = read_prompt(prompt, world, seed=0)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
-    request = prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                              retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for)
+    request = prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                              cards_for=retriever.cards_for)
     return preset, selection, request
 
 
