@@ -1,12 +1,20 @@
-"""Reproduce issue 17's table of hostile inputs: each case -> exit code and first line of the message.
+"""Reproduce the tables of hostile inputs (issues 17 and 35): each case -> exit code and first line of the message.
 
-    PYTHONPATH=. python bench/hostile.py [--only substring] [--skip-model]
+    PYTHONPATH=. python bench/hostile.py [--only substring] [--section name] [--skip-model]
+    PYTHONPATH=. python bench/hostile.py --faults [--only command] [--skip-model]
 
-Every case runs the real `grove` command line in a subprocess, in a fresh temporary folder with its
-own GROVE_CONFIG_DIR / GROVE_DATA_DIR / GROVE_CACHE_DIR, and checks that the folder holds the same
-files (same bytes) afterwards unless the case is meant to write. Cases that need the model (generate)
-load the embedded one; --skip-model leaves them out. The output is a Markdown table (docs/HOSTILE.md
-holds a run of it); the last line is key=value totals.
+Every case runs the real `grove` command line in a subprocess (the Gym cases: a short Python script, as
+a user's training script would call the environment), in a fresh temporary folder with its own
+GROVE_CONFIG_DIR / GROVE_DATA_DIR / GROVE_CACHE_DIR, and checks that the folder holds the same files
+(same bytes) afterwards unless the case is meant to write. A full disk is a child process with
+RLIMIT_FSIZE (writes past it fail with EFBIG, the code path of ENOSPC). Cases that need the model
+(generate, batch) load the embedded one; --skip-model leaves them out. The output is a Markdown table
+(docs/HOSTILE.md holds a run of it); the last line is key=value totals.
+
+--faults kills each command (generate, batch, import hunav, simulate, metrics, the four exports) with
+kill -9 at every write point in turn (tests/helpers/faults.py), and after each kill runs it again: the
+table says whether the folders held the old state or the new one (never a torn file), and whether the
+next run succeeded and left no staging entry.
 """
 
 from __future__ import annotations
@@ -16,7 +24,9 @@ import hashlib
 import json
 import os
 import re
+import resource
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -31,6 +41,7 @@ import yaml
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
+sys.path.insert(0, str(REPO / "tests"))  # `helpers.` as the suite imports it
 
 GROVE = [sys.executable, "-c", "import sys; from grove_tui.cli import main; sys.argv[0] = 'grove'; main()"]
 
@@ -45,6 +56,9 @@ class Case:
     stdout_to: str | None = None  # a path for stdout (e.g. /dev/full); default: captured
     writes: bool = False  # the case is expected to write (only refusals must leave the folder as it was)
     model: bool = False  # loads the model
+    python: str | None = None  # run this Python code (with the setup's list as sys.argv[1:]) instead of grove
+    fsize: int | None = None  # a full disk: RLIMIT_FSIZE of the child, in bytes
+    verify: Callable[[Path], str] | None = None  # after a case that writes: what it wrote, checked
 
 
 # ---- inputs ------------------------------------------------------------------------------------
@@ -147,6 +161,131 @@ def truncated_model_dir(root: Path) -> None:
 
 GENERATE = ["generate", "--no-ui", "--world", "hospital", "--preset", "emergency"]
 
+
+# ---- issue 35 inputs ------------------------------------------------------------------------------
+
+
+def hunav(root: Path, change: Callable[[dict], None] | None = None, text: str | bytes | None = None) -> str:
+    """A small HuNavSim scenario (tests/helpers/hunav_files.py) with one change; the agents YAML's path."""
+    from helpers.hunav_files import document, params, write_scenario
+
+    values = params()
+    if change is not None:
+        change(values)
+    return str(write_scenario(root / "scenario", text=text if text is not None else document(values)))
+
+
+def agent(key: str, value) -> Callable[[dict], None]:
+    def change(values: dict) -> None:
+        node = values["agent1"]
+        *parents, last = key.split(".")
+        for part in parents:
+            node = node[part]
+        node[last] = value
+    return change
+
+
+def top(key: str, value) -> Callable[[dict], None]:
+    return lambda values: values.__setitem__(key, value)
+
+
+def one_group(count: int) -> Callable[[dict], None]:
+    def change(values: dict) -> None:
+        values["agents"] = [f"agent{i}" for i in range(1, count + 1)]
+        for i in range(1, count + 1):
+            values[f"agent{i}"] = dict(values["agent2"], id=i, group_id=7)
+    return change
+
+
+HUNAV_ALIAS_BOMB = ("hunav_loader:\n  ros__parameters:\n    yaml_base_name: agents_lab\n    map: lab\n"
+                    "    a0: &a0 [agent1, agent1, agent1, agent1, agent1, agent1, agent1, agent1, agent1]\n"
+                    + "".join(f"    a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * 9) + "]\n" for i in range(1, 9))
+                    + "    agents: *a8\n")
+
+
+def import_into(root: Path, yaml_path: str) -> list[str]:
+    return ["import", "hunav", yaml_path, "--out", str(root / "out")]
+
+
+def fifo(path: Path) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if path.exists() or path.is_symlink():
+        path.unlink()
+    os.mkfifo(path)
+    return path
+
+
+def relink(path: Path, target: str | Path) -> Path:
+    if path.exists() or path.is_symlink():
+        path.unlink()
+    path.symlink_to(target)
+    return path
+
+
+def jobs(root: Path, *lines: str) -> str:
+    return str(write(root, "jobs.jsonl", "\n".join(lines) + "\n"))
+
+
+def job_line(**extra) -> str:
+    return json.dumps({"world": "hospital", "preset": "normal", "prompt": "ten visitors walk to the cafeteria",
+                       **extra})
+
+
+def zigzag_world(points: int) -> str:
+    edge = ", ".join(f"[{20 * i / points:.5f}, {0.01 * (i % 2)}]" for i in range(points))
+    return ("name: w\nzones:\n  - {name: z, type: room, boundary: [" + edge + ", [20, 10], [0, 10]], "
+            "doors: [{name: d, position: [0, 5], width: 1, leads_to: outside}]}\n")
+
+
+def scenario_is_the_bundles(root: Path) -> str:
+    text = (root / "out" / "scenario.yaml").read_text()
+    world = (root / "out" / "world" / "scenario.yaml").is_file()
+    return ("out/scenario.yaml is the bundle's (agents:), the world is out/world/scenario.yaml"
+            if "agents:" in text and world else "LOST: scenario.yaml was replaced")
+
+
+def torn_state_then_resume(root: Path) -> list[str]:
+    """Two jobs ran; the record of the second was torn by a kill; a resumed batch adds a third job."""
+    out = root / "out"
+    out.mkdir()
+    write(out, "batch-state.jsonl", '{"name": "a", "line": 1, "inputs": "x", "status": "ok"}\n{"name": "b", "inp')
+    return ["batch", jobs(root, job_line(name="c", prompt="two visitors wait in the lobby")), "--out", str(out),
+            "--resume"]
+
+
+def resumed_records(root: Path) -> str:
+    lines = (root / "out" / "batch-state.jsonl").read_bytes().splitlines()
+    last = json.loads(lines[-1])
+    return f"{len(lines)} lines; the new record stands on its own line: name={last['name']} status={last['status']}"
+
+
+GYM = """
+import sys
+from grove_tui.errors import GroveError, print_error
+import grove_tui.gym
+from grove_tui.gym import SocialNavEnv
+bundle, what = sys.argv[1], sys.argv[2]
+try:
+    if what.startswith("action:"):
+        env = SocialNavEnv(bundle)
+        env.reset(seed=0)
+        env.step(eval(what[len("action:"):]))
+    elif what.startswith("reset:"):
+        env = SocialNavEnv(bundle)
+        env.reset(options=eval(what[len("reset:"):]))
+    elif what.startswith("bundles:"):
+        SocialNavEnv(eval(what[len("bundles:"):]))
+    else:
+        SocialNavEnv(bundle, **eval(what))
+except GroveError as exc:
+    sys.exit(print_error(exc))
+print("accepted")
+"""
+
+
+def gym(what: str) -> Case:
+    return Case("35 gym", what, lambda r: [str(bundle(r, simulated=False)), what], python=GYM)
+
 CASES: list[Case] = [
     # world files
     Case("world file", "500-byte YAML alias bomb", lambda r: ["worlds", "check", str(write(r, "w.yaml", ALIAS_BOMB + "name: w\nzones: *i\n"))]),
@@ -154,8 +293,8 @@ CASES: list[Case] = [
     Case("world file", "recursive alias", lambda r: ["worlds", "check", str(write(r, "w.yaml", "name: w\nzones: &x [*x]\n"))]),
     Case("world file", "5,000-digit integer", lambda r: ["worlds", "check", str(write(r, "w.yaml", room("[[0,0],[" + "9" * 5000 + ",0],[4,4]]")))]),
     Case("world file", "400-digit coordinate", lambda r: ["worlds", "check", str(write(r, "w.yaml", room("[[0,0],[" + "9" * 400 + ".5,0],[4,4]]")))]),
-    Case("world file", "20 km x 20 km world (check)", lambda r: ["worlds", "check", str(write(r, "w.yaml", room("[[0,0],[20000,0],[20000,20000],[0,20000]]")))]),
-    Case("world file", "20 km x 20 km world (generate)", lambda r: GENERATE[:2] + ["--world", str(write(r, "w.yaml", room("[[0,0],[20000,0],[20000,20000],[0,20000]]"))), "--preset", "normal", "--prompt", "ten people walk", "--out", str(r / "out")], model=True),
+    Case("world file", "18 km x 18 km world (check)", lambda r: ["worlds", "check", str(write(r, "w.yaml", room("[[-9000,-9000],[9000,-9000],[9000,9000],[-9000,9000]]")))]),
+    Case("world file", "18 km x 18 km world (generate)", lambda r: GENERATE[:2] + ["--world", str(write(r, "w.yaml", room("[[-9000,-9000],[9000,-9000],[9000,9000],[-9000,9000]]"))), "--preset", "normal", "--prompt", "ten people walk", "--out", str(r / "out")], model=True),
     Case("world file", "valid world of 20,000 zones", lambda r: ["worlds", "check", str(write(r, "w.yaml", big_world(100, 200)))]),
     Case("world file", "world file is /dev/zero", lambda r: ["worlds", "check", "/dev/zero"]),
     # bundles
@@ -225,6 +364,58 @@ CASES: list[Case] = [
     Case("data loss", "--out . (the working folder)", lambda r: (write(r, "notes.txt", "keep me"), GENERATE + ["--prompt", "ten people evacuate", "--out", "."])[1]),
     Case("data loss", "--out is a device node", lambda r: GENERATE + ["--prompt", "ten people evacuate", "--out", "/dev/full"]),
     Case("data loss", "export --base-name ../../x", lambda r: ["export", "hunav", str(bundle(r)), "--out", str(r / "x"), "--base-name", "../../x"]),
+    # ---- issue 35 ----
+    # data loss
+    Case("35 data loss", "metrics: metrics.json links to a user's file", lambda r: (write(r, "thesis.tex", "keep me"), relink(bundle(r) / "metrics.json", r / "thesis.tex"), ["metrics", str(r / "bundle")])[2]),
+    Case("35 data loss", "export trajectories into a user's folder", lambda r: (write(r, "mine/trajectories.csv", "my own data"), ["export", "trajectories", str(bundle(r)), "--out", str(r / "mine")])[1]),
+    Case("35 data loss", "export foxglove over a file that is not MCAP", lambda r: (write(r, "mine.mcap", "a recording"), ["export", "foxglove", str(bundle(r)), "--out", str(r / "mine.mcap")])[1]),
+    Case("35 data loss", "export foxglove beside a user's layout", lambda r: (write(r, "mine.layout.json", '{"my": "layout"}'), ["export", "foxglove", str(bundle(r)), "--out", str(r / "mine.mcap")])[1]),
+    Case("35 data loss", "import hunav with map: scenario", lambda r: import_into(r, hunav(r, top("map", "scenario"))), writes=True, verify=scenario_is_the_bundles),
+    # import hunav
+    Case("35 import hunav", "init_pose as a list", lambda r: import_into(r, hunav(r, agent("init_pose", [0.5, 4.0])))),
+    Case("35 import hunav", "behavior: Scared as a string", lambda r: import_into(r, hunav(r, agent("behavior", "Scared")))),
+    Case("35 import hunav", "20,000 nested brackets", lambda r: import_into(r, hunav(r, text="hunav_loader: " + "[" * 20000 + "]" * 20000 + "\n"))),
+    Case("35 import hunav", ".inf pose, unknown map", lambda r: import_into(r, hunav(r, agent("init_pose.x", float("inf"))))),
+    Case("35 import hunav", ".nan goal, unknown map", lambda r: import_into(r, hunav(r, lambda v: v["global_goals"].__setitem__(2, {"x": float("nan"), "y": 1.5})))),
+    Case("35 import hunav", "5,000-character map", lambda r: import_into(r, hunav(r, top("map", "m" * 5000)))),
+    Case("35 import hunav", "file not UTF-8", lambda r: import_into(r, hunav(r, text=b"hunav_loader:\n  ros__parameters:\n    map: caf\xe9\n"))),
+    Case("35 import hunav", "link to /dev/zero", lambda r: import_into(r, str(relink(r / "zero.yaml", "/dev/zero")))),
+    Case("35 import hunav", "alias bomb in the agents list (hang)", lambda r: import_into(r, hunav(r, text=HUNAV_ALIAS_BOMB))),
+    Case("35 import hunav", "named pipe (hang)", lambda r: import_into(r, str(fifo(r / "pipe.yaml")))),
+    Case("35 import hunav", "NaN start pose", lambda r: import_into(r, hunav(r, agent("init_pose.y", float("nan"))))),
+    Case("35 import hunav", "max_vel inf", lambda r: import_into(r, hunav(r, agent("max_vel", float("inf"))))),
+    Case("35 import hunav", "max_vel -3", lambda r: import_into(r, hunav(r, agent("max_vel", -3.0)))),
+    Case("35 import hunav", "behavior Berserk", lambda r: import_into(r, hunav(r, agent("behavior.type", "Berserk")))),
+    Case("35 import hunav", "a group of 10^30", lambda r: import_into(r, hunav(r, agent("group_id", 10**30)))),
+    Case("35 import hunav", "501 agents in one group", lambda r: import_into(r, hunav(r, one_group(501)))),
+    Case("35 import hunav", "50,000 agents in one group", lambda r: import_into(r, hunav(r, one_group(50_000)))),
+    Case("35 import hunav", "1,000,000 names in the agents list", lambda r: import_into(r, hunav(r, text="hunav_loader:\n  ros__parameters:\n    map: lab\n    agents: [" + ", ".join(["x"] * 1_000_000) + "]\n"))),
+    Case("35 import hunav", "imported bundle simulated from another folder", lambda r: (subprocess.run(GROVE + import_into(r, hunav(r)), env=_environment(r), capture_output=True, cwd=r), write(r, "elsewhere/world/lab.yaml", "name: decoy\nzones: []\n"), ["simulate", str(r / "out"), "--seconds", "1"])[2], writes=True),
+    # batch
+    Case("35 batch", "a prompt with a lone surrogate", lambda r: ["batch", jobs(r, job_line(prompt="visitors \ud800 walk")), "--out", str(r / "out")]),
+    Case("35 batch", "a job named dataset.sqlite", lambda r: ["batch", jobs(r, job_line(name="dataset.sqlite")), "--out", str(r / "out")]),
+    Case("35 batch", "a 5,000-digit variations", lambda r: ["batch", jobs(r, '{"world": "hospital", "preset": "normal", "prompt": "x", "variations": ' + "9" * 5000 + "}"), "--out", str(r / "out")]),
+    Case("35 batch", "a torn last record, then --resume", torn_state_then_resume, writes=True, model=True, verify=resumed_records),
+    Case("35 batch", "stale staging and .dataset.sqlite.tmp, then --resume", lambda r: (write(r, "out/.dataset.sqlite.tmp", "half"), (r / "out" / ".a.0a7c9cdf-999999.abcdefgh.staging").mkdir(), ["batch", jobs(r, job_line(name="a", prompt="two visitors wait in the lobby")), "--out", str(r / "out"), "--resume"])[2], writes=True, model=True, verify=lambda r: "left: " + (", ".join(sorted(p.name for p in (r / "out").iterdir() if p.name.startswith("."))) or "nothing")),
+    # worlds
+    Case("35 world file", "one 200,000-point boundary (check)", lambda r: ["worlds", "check", str(write(r, "w.yaml", zigzag_world(200_000)))]),
+    Case("35 world file", "one 200,000-point boundary (generate)", lambda r: ["generate", "--no-ui", "--world", str(write(r, "w.yaml", zigzag_world(200_000))), "--preset", "normal", "--prompt", "two people walk", "--out", str(r / "out")], model=True),
+    Case("35 world file", "a world near 99,999 m (check)", lambda r: ["worlds", "check", str(write(r, "w.yaml", room("[[99990,0],[99999,0],[99999,9],[99990,9]]")))]),
+    Case("35 world file", "link to a private file (check)", lambda r: ["worlds", "check", str(relink(r / "w.yaml", write(r, "shadow", "root:$6$SECRET:19000:0:99999:7:::\ndaemon:*:19000:0:99999:7:::\n")))]),
+    # exports and metrics
+    Case("35 exports", "export trajectories onto a device node", lambda r: ["export", "trajectories", str(bundle(r)), "--out", "/dev/full"]),
+    Case("35 exports", "export trajectories onto a read-only file system", lambda r: ["export", "trajectories", str(bundle(r)), "--out", "/proc/grove-out"]),
+    Case("35 exports", "export trajectories on a full disk", lambda r: ["export", "trajectories", str(bundle(r)), "--out", str(r / "new" / "traj")], fsize=40_000),
+    Case("35 exports", "export foxglove on a full disk", lambda r: ["export", "foxglove", str(bundle(r)), "--out", str(r / "new" / "run.mcap")], fsize=40_000),
+    Case("35 metrics", "trajectories.csv links to /dev/zero", lambda r: (relink(bundle(r) / "trajectories.csv", "/dev/zero"), ["metrics", str(r / "bundle")])[1]),
+    Case("35 metrics", "events.jsonl links to /dev/zero", lambda r: (relink(bundle(r) / "events.jsonl", "/dev/zero"), ["metrics", str(r / "bundle")])[1]),
+    Case("35 metrics", "trajectories.csv is a named pipe (hang)", lambda r: (fifo(bundle(r) / "trajectories.csv"), ["metrics", str(r / "bundle")])[1]),
+    Case("35 metrics", "events.jsonl is a named pipe (hang)", lambda r: (fifo(bundle(r) / "events.jsonl"), ["metrics", str(r / "bundle")])[1]),
+    # the Gym environment
+    gym("action:'fast'"), gym("action:{'v': 1}"), gym("action:complex(1, 2)"), gym("action:10**400"),
+    gym("{'control_period': float('inf')}"), gym("{'control_period': '0.2'}"), gym("reset:{'scenario': float('nan')}"),
+    gym("bundles:5"), gym("{'observation': {'pedestrians': 10**9}}"), gym("{'observation': {'patch_cells': 10**6}}"),
+    gym("{'time_limit': 1e300}"), gym("{'time_limit': 1e6}"), gym("{'speed': 2.0}"), gym("{'sim_dt': 1e-300}"),
 ]
 
 
@@ -259,6 +450,13 @@ def snapshot(root: Path) -> dict[str, str]:
     return state
 
 
+def _full_disk(limit: int) -> Callable[[], None]:
+    def limit_writes() -> None:
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+    return limit_writes
+
+
 def run(case: Case) -> tuple[int, str, float, bool]:
     with tempfile.TemporaryDirectory(prefix="grove-hostile-") as folder:
         root = Path(folder)
@@ -269,9 +467,12 @@ def run(case: Case) -> tuple[int, str, float, bool]:
         before = snapshot(root)
         started = time.perf_counter()
         stdout = open(case.stdout_to, "w") if case.stdout_to else subprocess.PIPE  # noqa: SIM115
+        command = [sys.executable, "-c", case.python] if case.python else GROVE
+        cwd = root / "elsewhere" if (root / "elsewhere").is_dir() else root
         try:
-            done = subprocess.run(GROVE + argv, stdout=stdout, stderr=subprocess.PIPE, text=True,
-                                  env=_environment(root, case.env), timeout=600, cwd=root)
+            done = subprocess.run(command + argv, stdout=stdout, stderr=subprocess.PIPE, text=True,
+                                  env=_environment(root, case.env), timeout=600, cwd=cwd,
+                                  preexec_fn=_full_disk(case.fsize) if case.fsize else None)
         finally:
             if case.stdout_to:
                 stdout.close()
@@ -293,15 +494,73 @@ def run(case: Case) -> tuple[int, str, float, bool]:
             if damaged:  # models list: the reason given in the damaged model's row
                 first = "cut.gguf: " + damaged.group(0)
         unchanged = snapshot(root) == before
-        return done.returncode, first, seconds, unchanged
+        if case.verify is not None and done.returncode == 0:
+            first = f"{first} -> {case.verify(root)}" if first else case.verify(root)
+        return done.returncode, first.replace(str(root), "TMP"), seconds, unchanged
+
+
+def faults(only: str, skip_model: bool, limit: int | None) -> None:
+    """kill -9 at every write point of each command, then run it again (tests/helpers/faults.py)."""
+    from helpers.faults import sweep
+    from helpers.hunav_files import write_scenario
+
+    with tempfile.TemporaryDirectory(prefix="grove-faults-") as folder:
+        root = Path(folder)
+        os.environ.update({key: value for key, value in _environment(root).items()
+                           if key.startswith("GROVE_")})
+        simulated = bundle(root)
+        yaml_path = write_scenario(root / "scenario")
+        out = root / "out"
+        batch_jobs = jobs(root, job_line(name="visitors", prompt="two visitors walk to the cafeteria", simulate=2,
+                                         export=["hunav"]))
+        commands = {
+            "generate": (["generate", "--no-ui", "--world", "hospital", "--preset", "normal", "--prompt",
+                          "two visitors walk to the cafeteria", "--seed", "1", "--out", out / "generated"],
+                         [out / "generated"], True),
+            "batch": (["batch", batch_jobs, "--out", out / "batch"], [out / "batch"], True),
+            "import hunav": (["import", "hunav", yaml_path, "--out", out / "imported"], [out / "imported"], False),
+            "simulate": (["simulate", simulated, "--seconds", "1"], [simulated], False),
+            "metrics": (["metrics", simulated], [simulated], False),
+            "export trajectories": (["export", "trajectories", simulated, "--out", out / "traj"], [out / "traj"], False),
+            "export hunav": (["export", "hunav", simulated, "--out", out / "hunav"], [out / "hunav"], False),
+            "export rosbag": (["export", "rosbag", simulated, "--out", out / "bag"], [out / "bag"], False),
+            "export foxglove": (["export", "foxglove", simulated, "--out", out / "run.mcap"], [out], False),
+        }
+        print("| command | write points | killed | old or new state | next run ok, no staging left |")
+        print("|---|---|---|---|---|")
+        totals = {"points": 0, "torn": 0, "unclean": 0}
+        for name, (args, watched, needs_model) in commands.items():
+            if only.lower() not in name or (skip_model and needs_model):
+                continue
+            started = time.perf_counter()
+            results = sweep(args, watched, limit=limit)
+            torn = [r for r in results if r["state"] != "old or new"]
+            unclean = [r for r in results if not r["next_run_clean"]]
+            totals["points"] += len(results)
+            totals["torn"] += len(torn)
+            totals["unclean"] += len(unclean)
+            labels = sorted({r["label"].split(":")[0] + ":" + r["label"].split(":")[-1] for r in results})
+            print(f"| {name} | {len(results)} ({', '.join(labels)}) | {sum(r['killed'] for r in results)} | "
+                  f"{len(results) - len(torn)}/{len(results)} | {len(results) - len(unclean)}/{len(results)} "
+                  f"({time.perf_counter() - started:.0f} s) |", flush=True)
+            for bad in torn + unclean:
+                print(f"|   | {bad['label']} #{bad['n']} | | {bad['state']} | {bad['next_run_clean']} |", flush=True)
+        print(f"\nfault_points={totals['points']} torn={totals['torn']} unclean_next_runs={totals['unclean']}")
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--only", default="", help="run the cases whose name contains this text")
+    parser.add_argument("--only", default="", help="run the cases (or --faults commands) whose name contains this text")
+    parser.add_argument("--section", default="", help="run the cases whose section contains this text")
     parser.add_argument("--skip-model", action="store_true", help="leave out the cases that load the model")
+    parser.add_argument("--faults", action="store_true", help="kill -9 at every write point instead")
+    parser.add_argument("--limit", type=int, default=None, help="--faults: at most this many points per command")
     args = parser.parse_args()
-    cases = [c for c in CASES if args.only.lower() in c.name.lower() and not (args.skip_model and c.model)]
+    if args.faults:
+        faults(args.only, args.skip_model, args.limit)
+        return
+    cases = [c for c in CASES if args.only.lower() in c.name.lower() and args.section.lower() in c.section.lower()
+             and not (args.skip_model and c.model)]
     print("| section | case | exit | s | files unchanged | first line of the message |")
     print("|---|---|---|---|---|---|")
     tracebacks = bad_input = 0

@@ -128,13 +128,16 @@ def naive_rosbags(bundle_dir: Path, sample_frames: int) -> tuple[float, int]:
                 orientation=T["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=np.sin(frame.yaw[k] / 2),
                                                               w=np.cos(frame.yaw[k] / 2)))
             V = T["geometry_msgs/msg/Vector3"]
+            behavior = T["hunav_msgs/msg/AgentBehavior"](  # hunav_msgs 2.0, the export's default
+                type=1, state=0, configuration=0, duration=40.0, once=True, vel=1.0, dist=0.0,
+                social_force_factor=5.0, goal_force_factor=2.0, obstacle_force_factor=10.0, other_force_factor=20.0)
             people.append(T["hunav_msgs/msg/Agent"](
-                id=i, type=1, skin=i % 5, behavior=1, name=f"agent{i}", behavior_state=0, group_id=spec.group,
+                id=i, type=1, skin=i % 5, name=f"agent{i}", group_id=spec.group,
                 position=pose, yaw=frame.yaw[k],
                 velocity=T["geometry_msgs/msg/Twist"](linear=V(x=frame.vx[k], y=frame.vy[k], z=0.0),
                                                       angular=V(x=0.0, y=0.0, z=0.0)),
-                desired_velocity=spec.max_vel, radius=spec.radius, linear_vel=0.0, angular_vel=0.0, goals=[],
-                cyclic_goals=False, goal_radius=0.3, closest_obs=[]))
+                desired_velocity=spec.max_vel, radius=spec.radius, linear_vel=0.0, angular_vel=0.0,
+                behavior=behavior, goals=[], cyclic_goals=True, goal_radius=spec.goal_radius, closest_obs=[]))
             markers.append(T["visualization_msgs/msg/Marker"](
                 header=header, ns="people", id=i, type=3, action=0, pose=pose,
                 scale=V(x=0.7, y=0.7, z=PERSON_HEIGHT), color=T["std_msgs/msg/ColorRGBA"](r=0.3, g=0.3, b=0.3, a=1.0),

@@ -126,6 +126,23 @@ def run_grove(sc: Scenario, steps: int) -> Result:
     return Result("grove", sc.n, steps, agent_steps, wall, steps * crowd.dt, cpu)
 
 
+def profile_grove(sc: Scenario, steps: int) -> dict[str, float]:
+    """CPU seconds per phase of GROVE's step (Crowd.profile) over the same window as run_grove."""
+    crowd = Crowd(sc.walls(), dt=0.05)
+    goals = sc.goals()
+    for p, g in zip(sc.positions, goals):
+        crowd.add_agent(p, radius=RADIUS, desired_speed=SPEED, goals=[tuple(g)], goal_radius=1.0)
+    spent: dict[str, float] = {}
+    done = 0
+    while done < steps:
+        k = min(20, steps - done)
+        for phase, seconds in crowd.profile(k).items():
+            spent[phase] = spent.get(phase, 0.0) + seconds
+        done += k
+        crowd.active[np.hypot(*(crowd.pos - goals).T) <= 1.1] = False
+    return spent
+
+
 def warm_up_grove() -> None:
     small = make_scenario(64)
     run_grove(small, 2)
@@ -133,6 +150,7 @@ def warm_up_grove() -> None:
     big.parallel_threshold = 0
     big.add_agent((5.0, 5.0))
     big.step(1)
+    big.profile(1)
 
 
 @contextlib.contextmanager
@@ -240,6 +258,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=int, nargs="+", default=[100, 1000, 10000])
     parser.add_argument("--repeat", type=int, default=1, help="runs per measurement; the best is kept")
+    parser.add_argument("--no-profile", action="store_true", help="skip naming GROVE's top three costs")
     args = parser.parse_args(argv)
 
     import numba
@@ -282,15 +301,25 @@ def main(argv: list[str] | None = None) -> int:
         for peer in ("jupedsim", "pysocialforce"):
             if (peer, n) in table:
                 other = table[(peer, n)]
-                print(f"  grove / {peer} at N={n}: {grove.rate / other.rate:.1f}x agent-steps/s, "
+                print(f"  grove / {peer} at N={n}: {grove.cpu_rate / other.cpu_rate:.1f}x agent-steps per CPU-second, "
+                      f"{grove.rate / other.rate:.1f}x agent-steps per wall second, "
                       f"{grove.realtime / other.realtime:.1f}x simulated time")
+        if not args.no_profile:
+            spent = profile_grove(sc, round(window / 0.05))
+            total = sum(spent.values()) or 1.0
+            top = sorted(spent.items(), key=lambda kv: -kv[1])[:3]
+            print(f"  grove's top three costs at N={n} (share of its CPU time, one thread): "
+                  + "; ".join(f"{name} {100 * seconds / total:.0f}%" for name, seconds in top))
 
     headline = {}
     for (name, n), result in sorted(table.items(), key=lambda kv: (kv[0][1], kv[0][0])):
         headline[f"{name}_{n}_agent_steps_per_s"] = f"{result.rate:.0f}"
         headline[f"{name}_{n}_sim_s_per_wall_s"] = f"{result.realtime:.2f}"
+        headline[f"{name}_{n}_agent_steps_per_cpu_s"] = f"{result.cpu_rate:.0f}"
         if name != "grove" and ("grove", n) in table:
             headline[f"ratio_vs_{name}_{n}"] = f"{table[('grove', n)].rate / result.rate:.2f}"
+            headline[f"cpu_ratio_vs_{name}_{n}"] = f"{table[('grove', n)].cpu_rate / result.cpu_rate:.2f}"
+    headline["load_average"] = f"{os.getloadavg()[0]:.1f}"
     print(" ".join(f"{k}={v}" for k, v in headline.items()))
     return 0
 

@@ -56,11 +56,13 @@ def draw(shown: dict[str, object], out: Path, title: str) -> None:
         if update is None:
             continue
         for entity in update.entities:
-            for cube in entity.cubes:  # walls
+            for cube in entity.cubes:  # walls, furniture, obstacles: their footprints, seen from above
                 p, a = cube.pose.position, yaw(cube.pose.orientation)
-                dx, dy = math.cos(a) * cube.size.x / 2, math.sin(a) * cube.size.x / 2
-                ax.plot([p.x - dx, p.x + dx], [p.y - dy, p.y + dy], color=rgba(cube.color), linewidth=1.6, zorder=3)
-            for tri in entity.triangles:  # furniture tops
+                c, s = math.cos(a), math.sin(a)
+                hx, hy = cube.size.x / 2, cube.size.y / 2
+                corners = [(p.x + u * c - v * s, p.y + u * s + v * c) for u, v in ((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy))]
+                ax.add_collection(PolyCollection([corners], facecolors=[rgba(cube.color)], edgecolors="none", zorder=3))
+            for tri in entity.triangles:  # filled tops, if a file has them
                 pts = np.array([[q.x, q.y] for q in tri.points]).reshape(-1, 3, 2)
                 ax.add_collection(PolyCollection(pts, facecolors=[rgba(tri.color)], edgecolors="none", zorder=2))
             for line in entity.lines:

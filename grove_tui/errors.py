@@ -12,7 +12,9 @@ one base class each; every domain error derives from exactly one of them:
 
 Modelled on harlequin's `exception.py`: an error carries its own title, and one printer formats it.
 The domain errors live here, not beside the code raising them, so the whole vocabulary (and its
-exit codes, documented in the README's table) is one file; their modules re-export them.
+exit codes, documented in the README's table) is one file; their modules re-export them. The one
+exception: a class that is both an error of this file and an optional library's own (GymError and
+gymnasium's InvalidAction, in grove_tui/gym/config.py) lives where that library is imported.
 """
 
 from __future__ import annotations

@@ -24,9 +24,11 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import errno
+import hashlib
 import os
 import re
 import shutil
+import socket
 import stat
 import tempfile
 import time
@@ -42,12 +44,16 @@ OwnedTest = Callable[[Path], bool]
 NPZ_TIMESTAMP = (1980, 1, 1, 0, 0, 0)
 # Failures of the storage itself while writing: reported as an OutputError naming the target.
 WRITE_FAILURE_ERRNOS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EIO})
-# Staging entries: ".<target name, cut>.<pid>.<random>.<kind>" beside the target.
+# Staging entries: ".<target name, cut>.<host>-<pid>.<random>.<kind>" beside the target. The host tag
+# keeps a writer on another machine of a shared file system (a Ray worker) from being judged by this
+# machine's process table.
 STAGING_KINDS = ("staging", "tmp", "old")
-_STAGING_NAME = re.compile(r"^\.(?P<name>.+)\.(?P<pid>\d+)\.(?P<rand>[a-z0-9_]{8})\.(?P<kind>staging|tmp|old)$")
-# Staging entries of versions that did not record their process: removed once this old.
+_STAGING_NAME = re.compile(r"^\.(?P<name>.+)\.(?P<host>[0-9a-f]{8})-(?P<pid>\d+)\.(?P<rand>[a-z0-9_]{8})"
+                           r"\.(?P<kind>staging|tmp|old)$")
+# Entries of versions that did not record their process, and other machines' entries: stale once this old.
 _LEGACY_STAGING = re.compile(r"^\.(?P<name>.+)\.(?P<rand>[a-z0-9_]{8})\.(?P<kind>staging|tmp|old)$")
 LEGACY_STALE_SECONDS = 3600.0
+_HOST = hashlib.sha1(socket.gethostname().encode("utf-8", "replace")).hexdigest()[:8]
 _NAME_IN_STAGING = 80  # characters of the target's name kept in a staging name (file names stop at 255 bytes)
 
 
@@ -108,7 +114,7 @@ def _alive(pid: int) -> bool:
 
 
 def _staging_prefix(target: Path) -> str:
-    return f".{target.name[:_NAME_IN_STAGING]}.{os.getpid()}."
+    return f".{target.name[:_NAME_IN_STAGING]}.{_HOST}-{os.getpid()}."
 
 
 def sweep_stale(folder: str | os.PathLike[str], name: str | None = None) -> list[Path]:
@@ -128,11 +134,11 @@ def sweep_stale(folder: str | os.PathLike[str], name: str | None = None) -> list
     now = time.time()
     for entry in entries:
         match = _STAGING_NAME.match(entry.name)
-        if match is not None:
+        if match is not None and match["host"] == _HOST:
             if _alive(int(match["pid"])):
                 continue
         else:
-            match = _LEGACY_STAGING.match(entry.name)
+            match = match or _LEGACY_STAGING.match(entry.name)
             if match is None:
                 continue
             try:
@@ -271,15 +277,19 @@ def append_line(path: str | os.PathLike[str], line: str) -> Path:
 
     The line is written with one write() on an O_APPEND descriptor. A last line torn by an earlier
     crash (no newline at its end) is ended first, so the new record starts a line of its own instead
-    of being glued to the torn one (and lost with it).
+    of being glued to the torn one (and lost with it). A write that fails part-way (a full disk) is
+    cut back off, and a log (and folders) this call created and could not fill is removed.
     """
     target = check_output_file(path)
     text = line if line.endswith("\n") else line + "\n"
+    created = _make_parents(target)
+    new_file = not os.path.lexists(target)
     try:
-        target.parent.mkdir(parents=True, exist_ok=True)
         fd = os.open(target, os.O_WRONLY | os.O_APPEND | os.O_CREAT | os.O_NOFOLLOW, 0o666)
     except OSError as exc:
+        _remove_created(created)
         raise OutputError(f"{target}: cannot write it: {exc.strerror}") from None
+    size = 0
     try:
         size = os.fstat(fd).st_size
         if size:
@@ -294,9 +304,15 @@ def append_line(path: str | os.PathLike[str], line: str) -> Path:
             written += os.write(fd, data[written:])
         write_point(f"append:{target.name}:after")
     except OSError as exc:
-        raise OutputError(f"{target}: cannot write it: {exc.strerror}") from None
-    finally:
+        with contextlib.suppress(OSError):
+            os.ftruncate(fd, size)  # no half line
         os.close(fd)
+        if new_file and os.path.getsize(target) == 0:  # nothing written: leave no empty log (or folder) behind
+            with contextlib.suppress(OSError):
+                target.unlink()
+            _remove_created(created)
+        raise OutputError(f"{target}: cannot write it: {exc.strerror}") from None
+    os.close(fd)
     return target
 
 
@@ -381,7 +397,7 @@ def _writable_ancestor(path: Path) -> Path:
     # access() says yes to root on a read-only mount and on /proc: create and remove a probe folder,
     # so an unwritable --out fails now, not after a whole generation.
     try:
-        os.rmdir(tempfile.mkdtemp(prefix=f".grove-probe.{os.getpid()}.", suffix=".tmp", dir=probe))
+        os.rmdir(tempfile.mkdtemp(prefix=f".grove-probe.{_HOST}-{os.getpid()}.", suffix=".tmp", dir=probe))
     except OSError as exc:
         raise OutputError(f"{path}: cannot write there ({probe}: {exc.strerror})") from None
     return probe

@@ -4,7 +4,7 @@ Every GROVE_* variable is read in this module and nowhere else:
 
     GROVE_CONFIG_FILE      the config file (default: GROVE_CONFIG_DIR/config.yaml)
     GROVE_CONFIG_DIR       user config directory (user presets in presets/); default platformdirs'
-    GROVE_DATA_DIR         user data directory (models/, runs/, exports/, prompt history)
+    GROVE_DATA_DIR         user data directory (models/, runs/, exports/, prompt history, last choices)
     GROVE_CACHE_DIR        user cache directory (retrieval index, compiled kernels)
     GROVE_MODEL            GGUF for both roles; GROVE_ROI_MODEL / GROVE_BT_MODEL for one role
     GROVE_LLM_THREADS      llama.cpp threads (default: the cores idle when the model starts)
@@ -84,9 +84,10 @@ class UISettings(_Section):
 
 class GenerationSettings(_Section):
     world: str | None = None
-    """World selected at start (a shipped name or a path); None picks the first shipped world."""
+    """World selected at the app's first start (a shipped name or a path); None picks the first shipped
+    world. Later starts open the world, preset and seed of the last generation (data dir)."""
     preset: str = "normal"
-    """Preset selected at start."""
+    """Preset selected at the app's first start."""
     seed: int = 0
     """Seed for generation and simulation, so a prompt reproduces the same scenario."""
     history_size: int = Field(default=200, ge=0)
@@ -269,3 +270,35 @@ def save_history(history: list[str], limit: int) -> None:
     path = history_file()
     path.parent.mkdir(parents=True, exist_ok=True)
     write_text_atomic(path, "\n".join(history[-limit:]) + "\n")
+
+
+def last_choices_file() -> Path:
+    return data_dir() / "last_choices.json"
+
+
+def load_last_choices() -> dict[str, Any]:
+    """The world, preset and seed of the app's last generation ({} the first time, or from a file that
+    is not ours: the app then starts on the config file's choices)."""
+    import json
+
+    try:
+        data = json.loads(last_choices_file().read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(data, dict):
+        return {}
+    choices: dict[str, Any] = {key: data[key] for key in ("world", "preset") if isinstance(data.get(key), str)}
+    if isinstance(data.get("seed"), int) and not isinstance(data.get("seed"), bool) and data["seed"] >= 0:
+        choices["seed"] = data["seed"]
+    return choices
+
+
+def save_last_choices(world: str, preset: str, seed: int) -> None:
+    """Remember the choices of a generation; the next start of the app opens on them."""
+    import json
+
+    from grove_tui.files import write_text_atomic
+
+    path = last_choices_file()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_text_atomic(path, json.dumps({"world": world, "preset": preset, "seed": int(seed)}, indent=2) + "\n")

@@ -53,23 +53,36 @@ def has_includes(data: bytes) -> bool:
     return b"<include" in data
 
 
-def resolve_includes(path: str | Path, allowed_roots: Sequence[str | Path] | None = None,
-                     max_depth: int = MAX_INCLUDE_DEPTH) -> bytes:
-    """The tree file with every <include> inlined (see the module docstring); BTError says why not."""
-    first = Path(path)
+def _resolve(first: Path, allowed_roots: Sequence[str | Path] | None,
+             max_depth: int) -> tuple[etree._Element, list[Path]]:
     roots = [Path(os.path.realpath(r)) for r in (allowed_roots or [first.parent])]
     seen: set[Path] = set()
     document = _read(first)
     seen.add(Path(os.path.realpath(first)))
     collected: list[etree._Element] = []
-    _inline(document, first, roots, seen, collected, depth=0, max_depth=max_depth, chain=(first,))
+    order: list[Path] = []
+    _inline(document, first, roots, seen, collected, depth=0, max_depth=max_depth, chain=(first,), order=order)
     for tree in collected:
         document.append(tree)
+    return document, order
+
+
+def resolve_includes(path: str | Path, allowed_roots: Sequence[str | Path] | None = None,
+                     max_depth: int = MAX_INCLUDE_DEPTH) -> bytes:
+    """The tree file with every <include> inlined (see the module docstring); BTError says why not."""
+    document, _files = _resolve(Path(path), allowed_roots, max_depth)
     return etree.tostring(document, encoding="utf-8")
 
 
+def included_files(path: str | Path, allowed_roots: Sequence[str | Path] | None = None,
+                   max_depth: int = MAX_INCLUDE_DEPTH) -> list[Path]:
+    """The files `resolve_includes` reads for `path` besides it, in the order it reads them (each once)."""
+    return _resolve(Path(path), allowed_roots, max_depth)[1]
+
+
 def _inline(root: etree._Element, source: Path, roots: Sequence[Path], seen: set[Path],
-            collected: list[etree._Element], *, depth: int, max_depth: int, chain: tuple[Path, ...]) -> None:
+            collected: list[etree._Element], *, depth: int, max_depth: int, chain: tuple[Path, ...],
+            order: list[Path]) -> None:
     for include in [el for el in root if el.tag == "include"]:
         where = f"{source}:{include.sourceline}"
         root.remove(include)
@@ -93,7 +106,8 @@ def _inline(root: etree._Element, source: Path, roots: Sequence[Path], seen: set
         if len(seen) >= MAX_INCLUDED_FILES:
             raise BTError(f"{where}: more than {MAX_INCLUDED_FILES} included files")
         seen.add(resolved)
+        order.append(source.parent / target)
         included = _read(resolved)
         _inline(included, resolved, roots, seen, collected, depth=depth + 1, max_depth=max_depth,
-                chain=chain + (resolved,))
+                chain=chain + (resolved,), order=order)
         collected.extend(el for el in included if el.tag == "BehaviorTree")

@@ -29,13 +29,16 @@ def export() -> None:
 @click.option("--keep-grove-nodes", is_flag=True,
               help="Keep GROVE-only nodes (Queue, FollowVelocityField...) and write their TreeNodesModel, "
                    "instead of lowering them to HuNavSim nodes.")
-@click.option("--simulator", default="Gazebo Classic", show_default=True,
+@click.option("--simulator", default=None,
               type=click.Choice(["Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots"]),
-              help="HuNavSim wrapper the files are for.")
-@click.option("--base-name", default=None, help="yaml_base_name (default agents_<world>).")
+              help="HuNavSim wrapper the files are for (default: an imported scenario's own, else Gazebo Classic).")
+@click.option("--base-name", default=None,
+              help="yaml_base_name (default: an imported scenario's own, else agents_<world>).")
 def export_hunav_command(bundle: Path, out_dir: Path, overwrite: bool, keep_grove_nodes: bool, simulator: str,
                          base_name: str | None) -> None:
-    """HuNavSim 2.0 agents yaml and one BehaviorTree.CPP v4 file per agent."""
+    """HuNavSim agents yaml and one BehaviorTree.CPP v4 file per agent (2.0), with the world and map.
+
+    A bundle imported from HuNavSim gets its own file back: its layout (1.0 or 2.0), parameters and trees."""
     result = GroveSession().export("hunav", bundle, out_dir, lower=not keep_grove_nodes, simulator=simulator,
                                    base_name=base_name, overwrite=overwrite, trajectories=True)
     copied = result.trajectories
@@ -100,7 +103,8 @@ def metrics(bundle: Path, as_json: bool) -> None:
 @click.option("--trajectories/--no-trajectories", default=True, show_default=True,
               help="Draw the simulated trajectories when the bundle has them.")
 @click.option("--width", default=None, type=int, help="Terminal drawing width in columns.")
-def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None) -> None:
+@click.option("--overwrite", is_flag=True, help="Replace --out even when it is a file GROVE did not draw.")
+def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int | None, overwrite: bool) -> None:
     """Picture of a scenario: map, zones, spawns, goals, waypoints, velocity fields, trajectories."""
     from grove_tui.exports.pictures import draw_scenario, render_scenario_text
     from grove_tui.scenario.bundle import load_bundle_world, load_scenario
@@ -113,7 +117,7 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
         return
     csv = bundle / "trajectories.csv"
     written = draw_scenario(world, scenario, bundle, out_path,
-                            trajectories=csv if trajectories and csv.exists() else None)
+                            trajectories=csv if trajectories and csv.exists() else None, overwrite=overwrite)
     click.echo(str(written))
 
 
@@ -125,9 +129,13 @@ def picture(bundle: Path, out_path: Path | None, trajectories: bool, width: int 
 @click.option("--storage", type=click.Choice(["mcap", "sqlite3"]), default="mcap", show_default=True,
               help="rosbag2 storage plugin.")
 @click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bag export.")
-def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: bool) -> None:
+@click.option("--hunav-msgs", "hunav_msgs", type=click.Choice(["2.0", "1.0"]), default="2.0", show_default=True,
+              help="HuNavSim's message version for /human_states and /robot_states: 2.0 (Agent with a nested "
+                   "AgentBehavior) or 1.0 (uint8 behavior, behavior_state).")
+def export_rosbag_command(bundle: Path, out_dir: Path, storage: str, overwrite: bool, hunav_msgs: str) -> None:
     """ROS 2 bag of a simulated bundle: hunav_msgs/Agents on /human_states, markers, /map, /plan, /tf, events."""
-    result = GroveSession().export("rosbag", bundle, out_dir, storage=storage, overwrite=overwrite)
+    result = GroveSession().export("rosbag", bundle, out_dir, storage=storage, overwrite=overwrite,
+                                   hunav_msgs_version=hunav_msgs)
     click.echo(str(result.directory))
     for topic, count in result.counts.items():
         click.echo(f"  {topic}: {count}", err=True)

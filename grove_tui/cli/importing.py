@@ -24,7 +24,9 @@ def import_group() -> None:
 @click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bundle.")
 def import_hunav_command(agents_yaml: Path, out_dir: Path, world: str | None, trees_dir: Path | None,
                          overwrite: bool) -> None:
-    """A HuNavSim 2.0 scenario (agents, global_goals, behavior trees) as a bundle GROVE simulates."""
+    """A HuNavSim scenario (1.0 or 2.0 layout: agents, goals, behavior trees) as a bundle GROVE simulates.
+
+    Nothing HuNavSim's loader reads is lost: `grove export hunav` on the bundle writes the same file back."""
     from grove_tui.exports.hunav_import import import_hunav
 
     bundle = import_hunav(agents_yaml, out_dir, world=world, trees_dir=trees_dir, overwrite=overwrite)

@@ -1,4 +1,5 @@
-"""`grove validate rimea`: the RiMEA verification tests on GROVE's crowd, as a pass/fail table."""
+"""`grove validate rimea` (the RiMEA verification tests) and `grove validate empirical` (measured crowds),
+on GROVE's crowd, as pass/fail tables."""
 
 from __future__ import annotations
 
@@ -43,4 +44,33 @@ def rimea(model: str, tests: tuple[int, ...], jupedsim: bool) -> None:
                      else f"    {'-':<50} -")
         click.echo(line)
     if not all(r.passed for r, _ in rows):
+        raise SystemExit(1)
+
+
+@validate.command("empirical")
+@click.option("--model", "models", type=click.Choice(SFM_MODELS), multiple=True,
+              help="Pedestrian model(s) to check (repeatable); default: every model, the default one first.")
+@click.option("--check", "checks", type=click.Choice(("fd", "bottleneck", "lanes")), multiple=True,
+              help="Run only these checks (repeatable): fd (speed-density), bottleneck (flow vs width), lanes.")
+def empirical(models: tuple[str, ...], checks: tuple[str, ...]) -> None:
+    """Compare the crowd with measured crowds (Weidmann 1993; Seyfried 2009, Kretz 2006; Zhang 2012).
+
+    Every model reports; the command exits 1 only when the default model ("grove") fails a check.
+    The published values and their sources: grove_tui/analysis/data/empirical.yaml.
+    """
+    from grove_tui.analysis.empirical import CHECKS, run_empirical
+
+    chosen = models or SFM_MODELS
+    names = checks or tuple(CHECKS)
+    failed_default = False
+    for model in chosen:
+        required = model == SFM_MODELS[0]
+        click.echo(f"Empirical checks, model {model}, dt 0.05 s"
+                   + (" (the default model: it must pass)" if required else " (reported, not required)"))
+        click.echo(f"{'check':<11} {'what':<38} {'result':<6} measured   [criterion]")
+        for r in run_empirical(model, names):
+            click.echo(f"{r.check:<11} {r.name:<38} {'pass' if r.passed else 'FAIL':<6} {r.measured}   [{r.criterion}]")
+            failed_default |= required and not r.passed
+        click.echo("")
+    if failed_default:
         raise SystemExit(1)

@@ -564,12 +564,8 @@ class Crowd:
         if n <= 0:
             return
         self._refresh_groups()
+        self._check_finite()
         k = self.n
-        state = np.concatenate([self._pos[:k], self._vel[:k]], axis=1)
-        if not np.isfinite(state).all():
-            # Values written into pos/vel from outside; the kernel's cell indexing needs finite input.
-            bad = np.flatnonzero(~np.isfinite(state).all(axis=1))
-            raise CrowdError(f"agents {bad[:10].tolist()} have a non-finite position or velocity")
         if k >= self.parallel_threshold and self.periodic_x is None:
             # Work handed out one block (or band) at a time: when another process holds one core,
             # the thread that runs takes more blocks instead of waiting for its static half.
@@ -580,9 +576,31 @@ class Crowd:
         self.step_count += n
         self.time = self.step_count * self.dt
 
-    def _advance(self, kernel: Any, n: int) -> None:
+    def profile(self, n: int = 1) -> dict[str, float]:
+        """Advance n steps like step(n) on one thread, timing each pass: {phase: CPU seconds}
+        (sfm.PROFILE_PHASES). For benchmarks: the passes are called from Python one by one."""
+        n = int(n)
+        spent = dict.fromkeys(sfm.PROFILE_PHASES, 0.0)
+        if n <= 0:
+            return spent
+        self._refresh_groups()
+        self._check_finite()
+        spent = self._advance(sfm.profile_steps, n)
+        self.step_count += n
+        self.time = self.step_count * self.dt
+        return spent
+
+    def _check_finite(self) -> None:
         k = self.n
-        kernel(
+        state = np.concatenate([self._pos[:k], self._vel[:k]], axis=1)
+        if not np.isfinite(state).all():
+            # Values written into pos/vel from outside; the kernel's cell indexing needs finite input.
+            bad = np.flatnonzero(~np.isfinite(state).all(axis=1))
+            raise CrowdError(f"agents {bad[:10].tolist()} have a non-finite position or velocity")
+
+    def _advance(self, kernel: Any, n: int) -> Any:
+        k = self.n
+        return kernel(
             n, self.dt, self._params_array,
             self._pos[:k], self._vel[:k], self._yaw[:k], self._radius[:k], self._desired_speed[:k],
             self._factors[:k], self._mode[:k], self._active[:k],

@@ -3,19 +3,23 @@ Foxglove layout written beside it, so opening the file in Foxglove shows the sce
 
 Topics (frame `map`, log times = simulation time):
 
-    /people   foxglove.SceneUpdate     every frame: a body and a heading arrow per person (group colour);
-                                       people who left are deleted
-    /robot    foxglove.SceneUpdate     every frame the robot was recorded: its body and heading
-    /tf       foxglove.FrameTransforms every frame the robot was recorded: map -> base_link
-    /world    foxglove.SceneUpdate     once: walls, furniture and obstacles (raised footprints), zones
-                                       with their names, doors (green) and exits (red)
-    /map      foxglove.Grid            once: the planner's occupancy grid (1 occupied, 0 free)
-    /paths    foxglove.SceneUpdate     once: the robot's planned path, each person's route, waypoints and goal
-    /fields   foxglove.SceneUpdate     once: velocity fields as arrows (LinePrimitive line lists)
-    /events   foxglove.Log             one per event of events.jsonl
+    /people               foxglove.SceneUpdate     every frame: a body and a heading arrow per person (group
+                                                   colour); people who left are deleted
+    /robot                foxglove.SceneUpdate     every frame the robot was recorded: its body and heading
+    /tf                   foxglove.FrameTransforms every frame the robot was recorded: map -> base_link
+    /world                foxglove.SceneUpdate     once: the Gazebo world's boxes (walls, furniture, obstacles,
+                                                   exports/scene.py), zones with their names, doors and exits
+    /map                  foxglove.Grid            once: the scene's static map (1 occupied, 0 free), the nav2
+                                                   map and the bag's /map: not inflated, covering every goal
+    /grove/planning_grid  foxglove.Grid            once: GROVE's planning grid (the building, inflated), hidden
+    /paths                foxglove.SceneUpdate     once: the robot's planned path, each person's route, waypoints
+                                                   and goals (spheres of the goal radius)
+    /fields               foxglove.SceneUpdate     once, when the scenario has velocity fields: arrows
+    /events               foxglove.Log             one per event of events.jsonl, when there are any
 
 What is published once is logged at the start; Foxglove shows the latest message of each topic at
-the playback time, so they stay visible through the run.
+the playback time, so they stay visible through the run. The layout written beside the file lists the
+topics this file has, and the event log only when it has events.
 
 The file carries a metadata record `grove-tui` (written first, so it sits in the file's first bytes):
 that is how a later export knows an existing .mcap is its own to replace. Any other file at `--out`,
@@ -36,20 +40,20 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import shapely
 
 from grove_tui.errors import FoxgloveExportError, OutputError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
+from grove_tui.exports.scene import goal_radius
 from grove_tui.files import atomic_file, check_output_file
 
 LAYOUT_FILE = Path(__file__).with_name("foxglove_layout.json")
 FRAME_ID = "map"
 ROBOT_FRAME = "base_link"
+PLANNING_GRID_TOPIC = "/grove/planning_grid"
 PERSON_HEIGHT = 1.7
 ROBOT_HEIGHT = 0.4
-WALL_HEIGHT = 1.0
-FURNITURE_HEIGHT = 0.75
+BOX_RGBA = {"wall": (0.25, 0.25, 0.27, 0.9), "furniture": (0.85, 0.81, 0.75, 1.0), "obstacle": (0.69, 0.66, 0.6, 1.0)}
 MCAP_MAGIC = b"\x89MCAP0\r\n"
 METADATA_NAME = "grove-tui"  # the metadata record that marks GROVE's own export
 _OWN_MARK_WINDOW = 64 * 1024  # the record is written first: it lies within the file's first bytes
@@ -96,13 +100,21 @@ def is_grove_mcap(path: Path) -> bool:
 
 
 def is_grove_layout(path: Path) -> bool:
-    """The layout GROVE writes, unchanged (one the user edited in Foxglove is theirs)."""
-    expected = shipped_layout().encode("utf-8")
+    """A layout GROVE writes, unchanged (one the user edited in Foxglove is theirs): the shipped layout
+    for exactly the topics it lists (`layout_for`)."""
+    limit = len(shipped_layout().encode("utf-8")) + 1  # no layout GROVE writes is longer than the shipped one
     try:
         with open(path, "rb") as handle:
-            return handle.read(len(expected) + 1) == expected
-    except OSError:
+            data = handle.read(limit)
+        layout = json.loads(data)
+        content = layout["content"]
+        panels = [item["content"] for item in content["items"]] if content.get("type") == "split" else [content]
+        topics = set(panels[0]["config"]["topics"])
+        if any(panel.get("config", {}).get("topicToRender") == "/events" for panel in panels[1:]):
+            topics.add("/events")
+    except (OSError, ValueError, KeyError, TypeError, IndexError, AttributeError):
         return False
+    return data == layout_for(topics).encode("utf-8")
 
 
 def build_layout() -> str:
@@ -121,6 +133,10 @@ def build_layout() -> str:
                                                     gradient=("#f4f1eaff", "#6b6357ff"), min_value=0.0,
                                                     max_value=1.0, draw_behind=True,
                                                     interpolation_method="nearestNeighbor"),
+        PLANNING_GRID_TOPIC: fl.BaseRendererGridTopicSettings(visible=False, color_mode="gradient",
+                                                              gradient=("#ffffff00", "#c0392b80"), min_value=0.0,
+                                                              max_value=1.0, draw_behind=True,
+                                                              interpolation_method="nearestNeighbor"),
             "/world": scene(visible=True),
             "/paths": scene(visible=True),
             "/fields": scene(visible=True),
@@ -137,6 +153,19 @@ def build_layout() -> str:
 
 def shipped_layout() -> str:
     return LAYOUT_FILE.read_text(encoding="utf-8")
+
+
+def layout_for(topics: set[str]) -> str:
+    """The shipped layout with only the 3D topics this file has, and without the event log panel
+    when it has no /events: Foxglove shows an empty panel, or a topic that never comes, otherwise."""
+    layout = json.loads(shipped_layout())
+    items = layout["content"]["items"]
+    three_d = items[0]["content"]
+    three_d["config"]["topics"] = {topic: settings for topic, settings in three_d["config"]["topics"].items()
+                                   if topic in topics}
+    if "/events" not in topics:
+        layout["content"] = three_d
+    return json.dumps(layout, indent=2) + "\n"
 
 
 def _ns(t: float) -> int:
@@ -212,40 +241,23 @@ class _Scene:
         return self.colour(rgba), self.size(2 * radius, 2 * radius, height), radius
 
 
-def _prism_top(scene: _Scene, footprint: Any, height: float, rgba: tuple[float, float, float, float]) -> Any:
-    """The footprint's polygon as triangles at `height` (constrained Delaunay, so concave shapes work)."""
-    m = scene.m
-    polygon = shapely.Polygon(footprint)
-    if not polygon.is_valid or polygon.area <= 0:
-        polygon = polygon.buffer(0)
-    triangles = shapely.get_parts(shapely.constrained_delaunay_triangles(polygon))
-    points = [m.Point3(x=float(x), y=float(y), z=height)
-              for tri in triangles for x, y in list(tri.exterior.coords)[:3]]
-    return m.TriangleListPrimitive(pose=scene.pose(0.0, 0.0), points=points, color=scene.colour(rgba))
-
-
 def _world_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+    """The Gazebo world's boxes (walls, furniture, obstacles: the same sizes and heights as the SDF),
+    zones with their names, doors and exits."""
     m = scene.m
     world = bundle.world
     entities = []
-    walls = world.walls()
-    if walls.size:
-        cubes = []
-        for x0, y0, x1, y1 in walls.tolist():
-            length = math.hypot(x1 - x0, y1 - y0)
-            if length <= 1e-6:
-                continue
-            cubes.append(m.CubePrimitive(pose=scene.pose((x0 + x1) / 2, (y0 + y1) / 2, WALL_HEIGHT / 2,
-                                                         math.atan2(y1 - y0, x1 - x0)),
-                                         size=scene.size(length, 0.1, WALL_HEIGHT),
-                                         color=scene.colour((0.25, 0.25, 0.27, 0.9))))
-        entities.append(scene.entity(ns, "walls", cubes=cubes))
-    for thing, kind, rgba in ([(e, "furniture", (0.85, 0.81, 0.75, 1.0)) for e in world.entities()]
-                              + [(o, "obstacles", (0.69, 0.66, 0.6, 1.0)) for o in world.obstacles]):
-        outline = scene.line("LineLoop", thing.footprint, (0.66, 0.6, 0.5, 1.0), 0.03, z=FURNITURE_HEIGHT)
-        entities.append(scene.entity(
-            ns, f"{kind}/{thing.name}", triangles=[_prism_top(scene, thing.footprint, FURNITURE_HEIGHT, rgba)],
-            lines=[outline], metadata=[m.KeyValuePair(key="type", value=thing.type)]))
+    walls = []
+    for box in bundle.scene.boxes:
+        cube = m.CubePrimitive(pose=scene.pose(box.x, box.y, box.height / 2, box.yaw),
+                               size=scene.size(box.length, box.width, box.height),
+                               color=scene.colour(BOX_RGBA[box.kind]))
+        if box.kind == "wall":
+            walls.append(cube)
+        else:
+            entities.append(scene.entity(ns, f"{box.kind}/{box.name.split('_', 1)[1]}", cubes=[cube]))
+    if walls:
+        entities.insert(0, scene.entity(ns, "walls", cubes=walls))
     for zone in world.zones:
         cx, cy = zone.centroid
         entities.append(scene.entity(
@@ -268,11 +280,9 @@ def _paths_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
             continue
         rgba = group_rgba(agent.group)
         colour = scene.colour(rgba)
-        spheres = [m.SpherePrimitive(pose=scene.pose(x, y, 0.1), size=scene.size(0.15, 0.15, 0.15), color=colour)
-                   for x, y in agent.goals[:-1]]
-        gx, gy = agent.goals[-1]
-        spheres.append(m.SpherePrimitive(pose=scene.pose(gx, gy, 0.15), size=scene.size(0.3, 0.3, 0.3),
-                                         color=colour))
+        size = 2 * goal_radius(agent)  # each goal's disc, as agents YAML and hunav_msgs/Agent say
+        spheres = [m.SpherePrimitive(pose=scene.pose(x, y, size / 2), size=scene.size(size, size, size), color=colour)
+                   for x, y in agent.goals]
         entities.append(scene.entity(
             ns, f"routes/agent{agent.id}", spheres=spheres,
             lines=[scene.line("LineStrip", [agent.start, *agent.goals], group_rgba(agent.group, 0.6), 0.04)],
@@ -297,9 +307,9 @@ def _fields_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
     return scene.m.SceneUpdate(entities=entities)
 
 
-def _grid(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+def _grid(grid: Any, scene: _Scene, ns: int) -> Any:
+    """foxglove.Grid of an occupancy grid, one uint8 per cell (1 occupied), row 0 the smallest y."""
     m = scene.m
-    grid = bundle.grid
     return m.Grid(timestamp=scene.stamp(ns), frame_id=FRAME_ID, pose=scene.pose(*grid.origin),
                   column_count=grid.width, cell_size=m.Vector2(x=grid.resolution, y=grid.resolution),
                   row_stride=grid.width, cell_stride=1,
@@ -326,7 +336,7 @@ def export_foxglove(bundle_dir: str | Path, out_path: str | Path, *, overwrite: 
     bundle = open_simulated_bundle(bundle_dir)
     with atomic_file(out, **mcap_guard) as tmp_mcap, atomic_file(layout, **layout_guard) as tmp_layout:  # type: ignore[arg-type]
         frames, counts = _write_mcap(foxglove, bundle, tmp_mcap, out)
-        tmp_layout.write_text(shipped_layout(), encoding="utf-8")
+        tmp_layout.write_text(layout_for(set(counts)), encoding="utf-8")
     return FoxgloveExport(out, layout, frames, counts)
 
 
@@ -428,7 +438,8 @@ def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
                             message=f"agent {event.agent_id}: {event.kind} {event.detail}".strip()), ns)
 
         channel(ch.SceneUpdateChannel, "/world")(_world_update(bundle, scene, start), start)
-        channel(ch.GridChannel, "/map")(_grid(bundle, scene, start), start)
+        channel(ch.GridChannel, "/map")(_grid(bundle.scene.static_map, scene, start), start)
+        channel(ch.GridChannel, PLANNING_GRID_TOPIC)(_grid(bundle.grid, scene, start), start)
         channel(ch.SceneUpdateChannel, "/paths")(_paths_update(bundle, scene, start), start)
         if bundle.fields:
             channel(ch.SceneUpdateChannel, "/fields")(_fields_update(bundle, scene, start), start)

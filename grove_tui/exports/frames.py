@@ -19,6 +19,8 @@ from grove_tui.crowd.recording import CSV_COLUMNS, ROBOT_ID
 from grove_tui.errors import StreamExportError
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.bt.xml import read_tree
+from grove_tui.exports.scene import Scene, scene_of
 from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle, load_bundle_world
 from grove_tui.scenario.events import EVENTS_FILE, MAX_EVENTS_BYTES, SimEvent, read_events
 from grove_tui.scenario.model import Scenario
@@ -50,10 +52,11 @@ class SimulatedBundle:
     path: Path
     scenario: Scenario
     world: World
-    grid: OccupancyGrid
+    grid: OccupancyGrid  # GROVE's planning grid (grid.npz), inflated
     fields: dict[str, VelocityField]
     events: list[SimEvent]
     trajectories: Path
+    scene: Scene  # what every export says about the scene: extent, static map, boxes (exports/scene.py)
 
     def frames(self) -> Iterator[Frame]:
         return iter_frames(self.trajectories)
@@ -62,7 +65,7 @@ class SimulatedBundle:
 def open_simulated_bundle(bundle_dir: str | Path) -> SimulatedBundle:
     """The parts of a simulated bundle an export needs; a bundle never simulated is refused up front."""
     root = Path(bundle_dir)
-    scenario, _trees, fields, grid = load_bundle(root)
+    scenario, trees, fields, grid = load_bundle(root)
     csv = root / TRAJECTORIES_FILE
     if not os.path.lexists(csv):
         raise StreamExportError(f"{csv}: no trajectories yet; simulate first: grove simulate {root}")
@@ -75,7 +78,8 @@ def open_simulated_bundle(bundle_dir: str | Path) -> SimulatedBundle:
         events = sorted(read_events(bundle_member(root, EVENTS_FILE, "event log", MAX_EVENTS_BYTES)),
                         key=lambda e: e.t)
     _check_header(csv)
-    return SimulatedBundle(root, scenario, world, grid, fields, events, csv)
+    documents = {agent.id: read_tree(trees[agent.tree], str(root / agent.tree)) for agent in scenario.agents}
+    return SimulatedBundle(root, scenario, world, grid, fields, events, csv, scene_of(world, scenario, documents))
 
 
 def _check_header(path: Path) -> None:

@@ -46,6 +46,7 @@ or by file and function where it gives none:
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 import os
 import shutil
@@ -67,6 +68,7 @@ from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
+from grove_tui.exports.scene import Scene, agent_radius, behavior_block, goal_radius, scene_of, skin
 from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
 
@@ -76,7 +78,6 @@ if TYPE_CHECKING:
 
 Point = tuple[float, float]
 
-BEHAVIOR_TYPES = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
 GROVE_ONLY = frozenset(name for name, spec in NODES.items() if spec.origin == "grove")
 _HUNAV_GOTO_PORTS = ("agent_id", "time_step", "goal_id", "tolerance")
 # What a lowered tree may contain: BT.CPP built-ins, HuNavSim's nodes, and HuNavSim's own GoTo(goal_id).
@@ -90,10 +91,15 @@ HUNAV_NODES = {name: spec for name, spec in NODES.items() if spec.origin != "gro
 }
 EXPORT_MARKER = ".grove-hunav-export"
 SPAWN_HEIGHT = 1.25  # HuNavSim's Gazebo actors stand on z = 1.25
-# go_to_node.cpp (2.0) sets the temporary goal radius to 0.1 and finishes on AgentManager::goalReached,
-# which adds 0.1 m: 0.2 m whatever `tolerance` says. Written as is so the file says what HuNavSim does.
-GOAL_TOLERANCE = 0.2
-GOAL_RADIUS = 0.1  # the agent's own goals (RegularNav); reach = radius + 0.1 m, as GoTo's
+# GROVE's own line at the top of an agents YAML it writes: what HuNavSim has no parameter for (prompt,
+# preset, seed, robot, labels), as JSON in a comment the loader skips; `grove import hunav` reads it back.
+GROVE_LINE_PREFIX = "# grove: "
+DEFAULT_SIMULATOR = "Gazebo Classic"
+# HuNavSim's loader defaults (hunav_loader.cpp): a value GROVE holds that a file left out is written
+# only when it differs from what the loader would take anyway.
+LOADER_AGENT_DEFAULTS: dict[str, object] = {"skin": -1, "group_id": -1, "max_vel": 1.0, "radius": 0.35,
+                                            "goal_radius": 0.0, "cyclic_goals": True, "init_pose.x": 0.0,
+                                            "init_pose.y": 0.0, "init_pose.z": 0.0, "init_pose.h": 0.0}
 # Simulators as HuNavSim 2.0's agent manager names them (bt_node.cpp: the wrapper package it loads
 # trees from depends on the loader's `simulator` parameter).
 SIMULATOR_PACKAGES = {
@@ -102,11 +108,6 @@ SIMULATOR_PACKAGES = {
     "Isaac Sim": "hunav_isaac_wrapper",
     "Webots": "hunav_webots_wrapper",
 }
-# Evacuees' points outside their exit: rows across the door, this far apart (more than two bodies
-# plus HuNavSim's 0.2 m reach, so nobody stands on anybody's goal), first row this far out.
-EXIT_SPREAD_SPACING = 1.0
-EXIT_SPREAD_FIRST_ROW = 2.0
-EXIT_SPREAD_PER_ROW = 5
 HOLD_WAIT_SECONDS = 60.0
 CONVERSATION_PATIENCE = 60.0  # GROVE's ConversationRegistry.PATIENCE: start anyway after this long
 KEPT_NODE_PREFIX = "Grove"
@@ -116,13 +117,25 @@ WANDER_LEG_SECONDS = 12.0
 
 @dataclass
 class GoalTable:
-    """HuNavSim's `global_goals`: each distinct point once, ids consecutive from 1."""
+    """HuNavSim's `global_goals`: each distinct point once, ids consecutive from 1, at full precision
+    (an imported file's 3.360 comes back as 3.36, the same double). An imported file's table comes
+    first with its own ids (`keep`), duplicates included."""
 
     points: list[Point] = field(default_factory=list)
     _ids: dict[tuple[float, float], int] = field(default_factory=dict)
 
+    def keep(self, table: dict[int, Point]) -> None:
+        """Start from an imported file's global_goals: ids 1..n as they were."""
+        for goal_id in sorted(table):
+            if goal_id != len(self.points) + 1:
+                raise ExportError(f"global_goals must be numbered 1, 2, ...: goal {goal_id} follows "
+                                  f"{len(self.points)}")
+            point = (float(table[goal_id][0]), float(table[goal_id][1]))
+            self.points.append(point)
+            self._ids.setdefault(point, goal_id)
+
     def id_of(self, point: Sequence[float]) -> int:
-        key = (round(float(point[0]), 2), round(float(point[1]), 2))
+        key = (float(point[0]), float(point[1]))
         if key not in self._ids:
             self.points.append(key)
             self._ids[key] = len(self.points)
@@ -143,6 +156,7 @@ class HunavExport:
     readme: Path | None = None
     world_file: Path | None = None  # Gazebo SDF (exports/gazebo_world.py)
     map_yaml: Path | None = None  # nav2 map description beside its .pgm (exports/nav2_map.py)
+    layout: str = "2.0"  # the agents YAML's layout: "2.0", or "1.0" for a bundle imported from one
 
 
 @dataclass
@@ -155,7 +169,7 @@ class _AgentContext:
     grid: OccupancyGrid | None
     planner: ThetaStarPlanner | None
     seed: int
-    exit_rank: dict[tuple[int, str], int] = field(default_factory=dict)
+    muster: dict[tuple[int, str], Point] = field(default_factory=dict)
     world: object | None = None
     conversations: dict[tuple, dict[int, Point]] = field(default_factory=dict)
 
@@ -172,7 +186,7 @@ def _attr_float(el: TreeElement, name: str, where: str) -> float:
 
 
 def _hunav_goto(goal_id: int, tolerance: float) -> TreeElement:
-    return node("GoTo", agent_id="{id}", time_step="{dt}", goal_id=str(goal_id), tolerance=f"{tolerance:g}")
+    return node("GoTo", agent_id="{id}", time_step="{dt}", goal_id=str(goal_id), tolerance=repr(float(tolerance)))
 
 
 def _wait(seconds: float) -> TreeElement:
@@ -185,8 +199,10 @@ def _sequence(children: Sequence[TreeElement], name: str) -> TreeElement:
     return TreeElement("SequenceWithMemory", {"name": name}, list(children))
 
 
-def _route(points: Sequence[Point], ctx: _AgentContext, tolerance: float = GOAL_TOLERANCE) -> list[TreeElement]:
-    return [_hunav_goto(ctx.goals.id_of(p), tolerance) for p in points]
+def _route(points: Sequence[Point], ctx: _AgentContext) -> list[TreeElement]:
+    """HuNavSim GoTo nodes over `points`, each with the agent's goal radius as tolerance (scene.goal_radius:
+    the agents YAML and the bag say the same; HuNavSim 2.0's GoTo itself always uses 0.1)."""
+    return [_hunav_goto(ctx.goals.id_of(p), goal_radius(ctx.agent)) for p in points]
 
 
 def _free_heading(origin: Point, ctx: _AgentContext, reach: float) -> float:
@@ -331,37 +347,18 @@ def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
 
 
 def _beyond_exit(door_name: str, ctx: _AgentContext) -> list[Point]:
-    """Through the door and on to this evacuee's own point outside, apart from everyone else's.
+    """Through the door and on to this evacuee's own point outside, apart from everyone else's
+    (scene.muster_points: the Gazebo world and the map cover it).
 
     GROVE removes an evacuee at the door; HuNavSim never removes agents and a GoTo goal holds only
     0.2 m, so without this every evacuee would end on the same point in the doorway.
     """
     world = ctx.world
-    if world is None or not door_name:
+    point = ctx.muster.get((ctx.agent.id, door_name))
+    if world is None or point is None:
         return []
-    try:
-        door = world.find(door_name)
-    except GroveError:
-        return []
-    if not hasattr(door, "outward_point"):
-        return []
-    rank = ctx.exit_rank.get((ctx.agent.id, door_name), 0)
-    slot = 0
-    nx, ny = -door.normal[0], -door.normal[1]
-    ax, ay = door.along
-    # Walk the slots in order and skip any that land inside a zone (another building part).
-    for _ in range(10000):
-        row, column = divmod(slot, EXIT_SPREAD_PER_ROW)
-        lateral = (column - (EXIT_SPREAD_PER_ROW - 1) / 2.0) * EXIT_SPREAD_SPACING
-        out = EXIT_SPREAD_FIRST_ROW + row * EXIT_SPREAD_SPACING
-        point = (door.position[0] + nx * out + ax * lateral, door.position[1] + ny * out + ay * lateral)
-        slot += 1
-        if world.zone_at(*point) is not None:
-            continue
-        if rank == 0:
-            return [door.outward_point(1.0), (round(point[0], 2), round(point[1], 2))]
-        rank -= 1
-    return [door.outward_point(1.0)]
+    door = world.find(door_name)
+    return [door.outward_point(1.0), point]
 
 
 def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement:
@@ -535,32 +532,6 @@ def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument], tag: str = 
     return {(a, name): rank for name, ids in members.items() for rank, a in enumerate(ids)}
 
 
-def _initial_heading(start: Point, first_goal: Point) -> float:
-    """Facing the first goal the agents YAML lists (0 when that goal is where it stands)."""
-    dx, dy = first_goal[0] - start[0], first_goal[1] - start[1]
-    return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-9 else 0.0
-
-
-def _behavior_block(agent: AgentSpec) -> dict[str, object]:
-    from grove_tui.simulation.simulation import REACTION_DEFAULTS
-
-    kind = agent.behavior if agent.behavior in BEHAVIOR_TYPES else "Regular"
-    # The tree carries the reaction (wrap_for_hunav); these mirror its values for tools that read them.
-    _, distance, duration, once = REACTION_DEFAULTS.get(kind, ("", 0.0, 40.0, True))
-    return {
-        "type": kind,
-        "configuration": 0,
-        "duration": float(duration),
-        "once": bool(once),
-        "vel": round(min(max(agent.max_vel, 0.0), 1.8), 3),
-        "dist": float(distance),
-        "goal_force_factor": 2.0,
-        "obstacle_force_factor": 10.0,
-        "social_force_factor": 5.0,
-        "other_force_factor": 20.0,
-    }
-
-
 def _renumber_goal_ids(document: TreeDocument, goals: GoalTable) -> TreeDocument:
     """Point every node's `goal_id` at this export's global_goals entry for its (x, y), in place."""
     for el in document.nodes():
@@ -590,15 +561,20 @@ def is_hunav_export(path: Path) -> bool:
 
 
 def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = True,
-                 simulator: str = "Gazebo Classic", base_name: str | None = None,
+                 simulator: str | None = None, base_name: str | None = None,
                  overwrite: bool = False, trajectories: bool = False) -> HunavExport:
-    """Write `<base>.yaml` and `<base>__agent_<id>_bt.xml` files for HuNavSim 2.0 into `out_dir`.
+    """Write `<base>.yaml` and `<base>__agent_<id>_bt.xml` files for HuNavSim into `out_dir`.
 
-    With `trajectories`, a simulated bundle's trajectory files are copied beside them, in the same
-    atomic step. `out_dir` may be new, empty or an earlier export; another folder only with `overwrite`.
+    A generated bundle gives HuNavSim 2.0's layout. A bundle imported from HuNavSim gives its file
+    back: the same layout (1.0 while every tree is the one import made, since 1.0 loads no tree files),
+    every key in its place with its value, and each tree file verbatim while GROVE's tree made from it
+    is unchanged. `simulator` and `base_name` default to the imported file's, else Gazebo Classic and
+    agents_<world>. With `trajectories`, a simulated bundle's trajectory files are copied beside them,
+    in the same atomic step. `out_dir` may be new, empty or an earlier export; another folder only with
+    `overwrite`.
     """
     bundle = Path(bundle_dir)
-    if simulator not in SIMULATOR_PACKAGES:
+    if simulator is not None and simulator not in SIMULATOR_PACKAGES:
         raise ExportError(f"--simulator {simulator!r}: HuNavSim 2.0 knows " + ", ".join(map(repr, SIMULATOR_PACKAGES))
                           + " (the names its agent manager compares the loader's `simulator` parameter with)",
                           hint="Pass --simulator \"Gazebo Classic\", \"Gazebo Fortress\", \"Isaac Sim\" or \"Webots\".")
@@ -606,22 +582,36 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
     scenario = load_scenario(bundle)
+    source = scenario.hunav
     world_name = Path(scenario.world).stem
-    base = base_name or f"agents_{world_name}"
+    simulator = simulator or (source.simulator if source is not None else None) or DEFAULT_SIMULATOR
+    if simulator not in SIMULATOR_PACKAGES:  # an imported file's own name for its wrapper
+        simulator = DEFAULT_SIMULATOR
+    base = base_name or (source.base_name or Path(source.file).stem if source is not None else f"agents_{world_name}")
+    safe_file_name(base, "yaml_base_name")
+    map_name = source.map if source is not None and source.map else world_name
 
+    texts: dict[int, str] = {}
     trees: dict[int, TreeDocument] = {}
     for agent in scenario.agents:
         # Inside the bundle, a regular file, bounded: a tree linked to /dev/zero once read 7.5 GB here.
-        text = read_bundle_text(bundle, agent.tree, f"tree file of agent {agent.id}")
+        texts[agent.id] = read_bundle_text(bundle, agent.tree, f"tree file of agent {agent.id}")
         try:
-            trees[agent.id] = read_tree(text, str(bundle / agent.tree))
+            trees[agent.id] = read_tree(texts[agent.id], str(bundle / agent.tree))
         except BTError as exc:
             raise ExportError(f"tree of agent {agent.id}: {exc}") from None
+    from grove_tui.exports.hunav_import import tree_digest
+
+    # What import made of HuNavSim's file, untouched since: written back as it came.
+    kept = {a.id for a in scenario.agents
+            if a.hunav is not None and a.hunav.tree_digest and tree_digest(texts[a.id]) == a.hunav.tree_digest}
+    layout = "1.0" if source is not None and source.layout == "1.0" and len(kept) == len(scenario.agents) else "2.0"
+    as_given = source is not None and source.layout == layout
 
     from grove_tui.navigation.grid import build_grid
 
-    # a world file inside the bundle (an imported HuNavSim scenario's open floor) or a shipped name/path
     world = load_bundle_world(bundle, scenario)
+    scene = scene_of(world, scenario, trees)
     grid = planner = None
     if lower:
         from grove_tui.navigation.theta_star import ThetaStarPlanner
@@ -634,63 +624,58 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
 
     goals = GoalTable()
     # An imported HuNavSim scenario's trees name goals by id: keep those ids (1..n) as they were.
-    for goal_id in sorted(scenario.global_goals):
-        if goals.id_of(scenario.global_goals[goal_id]) != goal_id:
-            raise ExportError(f"{bundle / 'scenario.yaml'}: global_goals must be numbered 1, 2, ... with distinct "
-                              f"points (goal {goal_id} repeats an earlier point or skips an id)")
+    try:
+        goals.keep(scenario.global_goals)
+    except ExportError as exc:
+        raise ExportError(f"{bundle / 'scenario.yaml'}: {exc}") from None
     ranks = _queue_ranks(scenario, trees) if lower else {}
-    exit_ranks = _queue_ranks(scenario, trees, "FollowVelocityField", "exit") if lower else {}
     conversations = _conversation_spots(scenario, trees, grid) if lower else {}
     written: dict[str, str] = {}
     agent_entries: dict[str, dict[str, object]] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         where = str(bundle / agent.tree)
-        ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
-                            exit_rank=exit_ranks, world=world if lower else None, conversations=conversations)
+        name = agent.hunav.name if agent.hunav is not None else f"agent{agent.id}"
+        tree_name = f"{base}__agent_{agent.id}_bt.xml"
         goal_ids = [goals.id_of(g) for g in agent.goals]
-        tree = lower_tree(trees[agent.id], ctx, where, world) if lower else _renumber_goal_ids(trees[agent.id], goals)
-        tree = _rename_main_tree(tree, "DefaultTree")
-        problems = check_tree_text(write_tree(tree), source=where, nodes=HUNAV_NODES if lower else NODES)
-        if problems:
-            raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))
-        wrap_for_hunav(tree, reaction=REACTION_DEFAULTS.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS,
-                       looping=HUNAV_LOOPING_NODES)
-        if not lower:
-            # Kept GROVE nodes get their own IDs, so GROVE's GoTo(target, x, y) never clashes with
-            # HuNavSim's registered GoTo(goal_id); a C++ plugin must register them under these names.
-            prefix_node_ids(tree, GROVE_ONLY, KEPT_NODE_PREFIX)
-        xml = write_tree(label_clocks(restrict_to_hunav_ports(tree)))
-        if lower:
-            problems = hunav_loading_problems(xml)
-            if problems:
-                raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems),
-                                  hint="Export with --keep-grove-nodes to see the tree as GROVE wrote it.")
-        if not goal_ids:
-            # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
-            goal_ids = _tree_goal_ids(tree) or [goals.id_of(agent.start)]
-        written[f"{base}__agent_{agent.id}_bt.xml"] = xml
-        agent_entries[f"agent{agent.id}"] = {
-            "id": agent.id,
-            "skin": agent.id % 5,
-            "group_id": agent.group,
-            "max_vel": round(float(agent.max_vel), 3),
-            "radius": round(float(agent.radius), 3),
-            "goal_radius": GOAL_RADIUS,
-            "cyclic_goals": False,
-            "init_pose": {"x": round(float(agent.start[0]), 3), "y": round(float(agent.start[1]), 3),
-                          "z": SPAWN_HEIGHT, "h": round(_initial_heading(agent.start, goals.points[goal_ids[0] - 1]), 3)},
-            "behavior": _behavior_block(agent),
-            "goals": goal_ids,
-        }
+        verbatim = agent.hunav.tree_file if agent.id in kept and agent.hunav is not None else ""
+        if agent.id in kept and layout == "1.0":
+            pass  # HuNavSim 1.0 loads no tree file: it runs its own tree for the agent's behavior
+        elif verbatim:
+            written[tree_name] = read_bundle_text(bundle, verbatim, f"HuNavSim tree of agent {agent.id}")
+        else:
+            xml, tree = _hunav_tree(agent, trees[agent.id], scenario, bundle, goals, ranks, grid, planner, scene,
+                                    world, conversations, lower, where, REACTION_DEFAULTS, HUNAV_LOOPING_NODES)
+            written[tree_name] = xml
+            if not goal_ids:
+                # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
+                goal_ids = _tree_goal_ids(tree) or [goals.id_of(agent.start)]
+        if as_given and agent.hunav is not None:
+            agent_entries[name] = _entry_as_given(agent, layout, goal_ids, source.behavior_type == "number")
+        else:
+            agent_entries[name] = _entry(agent, goal_ids or [goals.id_of(agent.start)])
+    includes: dict[str, str] = {}
+    if source is not None and layout == "2.0" and any(a.hunav is not None and a.hunav.tree_file
+                                                      for a in scenario.agents if a.id in kept):
+        for rel in source.includes:
+            includes[rel] = read_bundle_text(bundle, f"hunav/{rel}", "HuNavSim tree a tree includes")
+    if source is not None:  # the file's own order of agents
+        order = {n: k for k, n in enumerate(source.agents)}
+        agent_entries = dict(sorted(agent_entries.items(), key=lambda item: order.get(item[0], len(order))))
 
-    params: dict[str, object] = {
-        "yaml_base_name": base,
-        "simulator": simulator,
-        "map": world_name,
-        "publish_people": True,
-        "global_goals": goals.to_yaml(),
-        "agents": list(agent_entries),
-    }
+    top: dict[str, object] = {"yaml_base_name": base, "simulator": simulator, "map": map_name,
+                              "publish_people": source.publish_people if source is not None and
+                              source.publish_people is not None else True,
+                              "global_goals": goals.to_yaml(), "agents": list(agent_entries)}
+    if layout == "1.0":
+        del top["global_goals"]
+    keys = list(top)
+    if as_given and source is not None:
+        # the file's keys in its order, what it left out only where GROVE needs it (its agents, goals)
+        keys = [k for k in source.keys if k in top] + [k for k in ("global_goals", "agents")
+                                                        if k in top and k not in source.keys]
+        if source.publish_people is None:
+            keys = [k for k in keys if k != "publish_people"]
+    params: dict[str, object] = {key: top[key] for key in keys}
     params.update(agent_entries)
     document = {"hunav_loader": {"ros__parameters": params}}
     from grove_tui.exports.hunav_loader_check import check_loader_parameters
@@ -698,25 +683,33 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
     loader_problems = check_loader_parameters(yaml.safe_load(yaml.safe_dump(document)), f"{base}.yaml")
     if loader_problems:
         raise ExportError("HuNavSim's loader would refuse the export: " + "; ".join(loader_problems))
-    nodes_model = None if lower else treenodes_model_xml(
+    nodes_model = None if lower or not written else treenodes_model_xml(
         renamed={name: KEPT_NODE_PREFIX + name for name in GROVE_ONLY})
-    readme = export_readme(scenario, base, world_name, simulator, sorted(written), lower)
+    readme = export_readme(scenario, base, map_name, simulator, sorted(written), lower, layout)
+    agents_text = yaml.safe_dump(document, sort_keys=False, width=120)
+    if source is None or source.grove_comment:
+        agents_text = grove_line(scenario) + agents_text
+    # The world file and the map cover every goal the export names (scene.extent).
+    scene = scene.with_points(goals.points)
 
     copied: list[str] = []
     with atomic_directory(out, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite) as staging:
         if trajectories:
             copied = copy_trajectories(bundle, staging)
         (staging / EXPORT_MARKER).write_text("written by grove export hunav\n", encoding="utf-8")
-        (staging / f"{base}.yaml").write_text(yaml.safe_dump(document, sort_keys=False, width=120), encoding="utf-8")
-        for name, xml in written.items():
-            (staging / name).write_text(xml, encoding="utf-8")
+        (staging / f"{base}.yaml").write_text(agents_text, encoding="utf-8")
+        for tree_name, xml in written.items():
+            (staging / tree_name).write_text(xml, encoding="utf-8")
+        for rel, text in includes.items():  # what HuNavSim's own trees <include>, beside them as they were
+            (staging / rel).parent.mkdir(parents=True, exist_ok=True)
+            (staging / rel).write_text(text, encoding="utf-8")
         if nodes_model is not None:
             (staging / "grove_nodes_model.xml").write_text(nodes_model, encoding="utf-8")
         (staging / "README.md").write_text(readme, encoding="utf-8")
         # hunav_gazebo_wrapper's layout: worlds/<environment_name>.world, maps/<environment_name>.yaml
         (staging / "worlds").mkdir()
-        (staging / "worlds" / f"{world_name}.world").write_text(world_sdf(world), encoding="utf-8")
-        write_nav2_map(build_grid(world, scenario.resolution, inflation=0.0), staging / "maps", world_name)
+        (staging / "worlds" / f"{map_name}.world").write_text(world_sdf(scene), encoding="utf-8")
+        write_nav2_map(scene.static_map, staging / "maps", map_name)
     return HunavExport(
         directory=out,
         agents_yaml=out / f"{base}.yaml",
@@ -725,9 +718,116 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
         lowered=lower,
         trajectories=tuple(out / name for name in copied),
         readme=out / "README.md",
-        world_file=out / "worlds" / f"{world_name}.world",
-        map_yaml=out / "maps" / f"{world_name}.yaml",
+        world_file=out / "worlds" / f"{map_name}.world",
+        map_yaml=out / "maps" / f"{map_name}.yaml",
+        layout=layout,
     )
+
+
+def _hunav_tree(agent: AgentSpec, document: TreeDocument, scenario: Scenario, bundle: Path, goals: GoalTable,
+                ranks: dict[tuple[int, str], int], grid: OccupancyGrid | None, planner: ThetaStarPlanner | None,
+                scene: Scene, world: object, conversations: dict[tuple, dict[int, Point]], lower: bool, where: str,
+                reactions: dict, looping: frozenset[str]) -> tuple[str, TreeDocument]:
+    """An agent's GROVE tree as HuNavSim 2.0 loads it: GROVE-only nodes lowered (or kept as Grove<Node>),
+    run once then hold, the robot reaction inside; the XML and the tree it was written from."""
+    ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
+                        muster=scene.muster, world=world if lower else None, conversations=conversations)
+    tree = lower_tree(document, ctx, where, world) if lower else _renumber_goal_ids(document, goals)
+    tree = _rename_main_tree(tree, "DefaultTree")
+    problems = check_tree_text(write_tree(tree), source=where, nodes=HUNAV_NODES if lower else NODES)
+    if problems:
+        raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))
+    wrap_for_hunav(tree, reaction=reactions.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS, looping=looping)
+    if not lower:
+        # Kept GROVE nodes get their own IDs, so GROVE's GoTo(target, x, y) never clashes with
+        # HuNavSim's registered GoTo(goal_id); a C++ plugin must register them under these names.
+        prefix_node_ids(tree, GROVE_ONLY, KEPT_NODE_PREFIX)
+    xml = write_tree(label_clocks(restrict_to_hunav_ports(tree)))
+    if lower:
+        problems = hunav_loading_problems(xml)
+        if problems:
+            raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems),
+                              hint="Export with --keep-grove-nodes to see the tree as GROVE wrote it.")
+    return xml, tree
+
+
+def _entry(agent: AgentSpec, goal_ids: list[int]) -> dict[str, object]:
+    """An agent in HuNavSim 2.0's layout, every key the loader reads (exports/scene.py gives the values)."""
+    z = agent.hunav.z if agent.hunav is not None and agent.hunav.z is not None else SPAWN_HEIGHT
+    return {
+        "id": agent.id,
+        "skin": skin(agent),
+        "group_id": agent.group,
+        "max_vel": float(agent.max_vel),
+        "radius": agent_radius(agent),
+        "goal_radius": goal_radius(agent),
+        "cyclic_goals": bool(agent.cyclic_goals),
+        "init_pose": {"x": float(agent.start[0]), "y": float(agent.start[1]), "z": z, "h": agent.initial_heading()},
+        "behavior": behavior_block(agent),
+        "goals": goal_ids,
+    }
+
+
+def _set(entry: dict[str, object], dotted: str, value: object) -> None:
+    node = entry
+    *parents, last = dotted.split(".")
+    for part in parents:
+        child = node.setdefault(part, {})
+        if not isinstance(child, dict):
+            raise ExportError(f"agents yaml: {dotted} sits under a value, not a mapping")
+        node = child
+    node[last] = value
+
+
+def _entry_as_given(agent: AgentSpec, layout: str, goal_ids: list[int], numbers: bool) -> dict[str, object]:
+    """An imported agent as its file had it: its keys in their order with GROVE's values (so an edit in
+    GROVE shows), a value GROVE holds that the file left out only when the loader would read another."""
+    given = agent.hunav
+    assert given is not None
+    values: dict[str, object] = {
+        "id": agent.id, "skin": given.skin, "group_id": agent.group, "max_vel": float(agent.max_vel),
+        "radius": agent_radius(agent), "goal_radius": goal_radius(agent), "cyclic_goals": bool(agent.cyclic_goals),
+        "init_pose.x": float(agent.start[0]), "init_pose.y": float(agent.start[1]), "init_pose.z": given.z,
+        "init_pose.h": agent.initial_heading(),
+    }
+    block = behavior_block(agent, numbers=numbers)
+    if given.behavior is None:
+        values["behavior"] = block["type"]  # HuNavSim 1.0's flat `behavior: <number>`
+    else:
+        values.update({f"behavior.{key}": value for key, value in block.items()})
+    if layout == "2.0":
+        same = len(given.goal_ids) == len(goal_ids) and all(a == b for a, b in zip(given.goal_ids, goal_ids))
+        values["goals"] = list(given.goal_ids) if same or not goal_ids else goal_ids
+    else:
+        names = list(given.goal_names) if len(given.goal_names) == len(agent.goals) else \
+            [f"g{k}" for k in range(len(agent.goals))]
+        headings = list(given.goal_headings) if len(given.goal_headings) == len(agent.goals) else [None] * len(names)
+        values["goals"] = names
+        for goal_name, (x, y), h in zip(names, agent.goals, headings):
+            values[f"{goal_name}.x"], values[f"{goal_name}.y"] = float(x), float(y)
+            if h is not None:
+                values[f"{goal_name}.h"] = h
+    order = [key for key in given.keys if key in values] + [key for key in values if key not in given.keys]
+    entry: dict[str, object] = {}
+    for key in order:
+        value = values[key]
+        if value is None:
+            continue
+        if key not in given.keys and LOADER_AGENT_DEFAULTS.get(key, object()) == value:
+            continue
+        _set(entry, key, value)
+    return entry
+
+
+def grove_line(scenario: Scenario) -> str:
+    """The comment lines an agents YAML starts with: GROVE's own data, as `grove import hunav` reads it."""
+    data: dict[str, object] = {"prompt": scenario.prompt, "preset": scenario.preset, "seed": scenario.seed,
+                               "world": scenario.world, "resolution": scenario.resolution}
+    if scenario.robot is not None:
+        data["robot"] = scenario.to_dict()["robot"]
+    data["agents"] = {str(a.id): {"label": a.label, "zone": a.zone} for a in scenario.agents}
+    return ("# Written by GROVE (grove export hunav); `grove import hunav` reads the next line back. HuNavSim's\n"
+            "# loader skips comments.\n" + GROVE_LINE_PREFIX + json.dumps(data, separators=(",", ":")) + "\n")
 
 
 def _tree_goal_ids(document: TreeDocument) -> list[int]:
@@ -755,33 +855,53 @@ def robot_launch_arguments(scenario: Scenario) -> dict[str, str]:
 
 
 def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str, tree_files: list[str],
-                  lowered: bool) -> str:
+                  lowered: bool, layout: str = "2.0") -> str:
     """Where each exported file goes and how to start the scenario, for the README beside them."""
     package = SIMULATOR_PACKAGES[simulator]
     launch = robot_launch_arguments(scenario)
     args = " ".join([f"configuration_file:={base}.yaml", f"environment_name:={world_name}"]
                     + [f"{k}:={v}" for k, v in launch.items()])
+    if layout == "1.0":
+        version = ("For HuNavSim 1.0, the layout this scenario was imported in (goals named per agent with "
+                   "x, y, h; the behavior a number). HuNavSim 1.0 runs a fixed tree per behavior, so there are no "
+                   "tree files. ROS 2 bags of a run (`grove export rosbag --hunav-msgs 1.0`) carry 1.0's "
+                   "`hunav_msgs/Agent` (`uint8 behavior`).")
+        trees = ["- No tree files: HuNavSim 1.0's agent manager picks BT<Behavior>Nav.xml by each agent's behavior."]
+    else:
+        version = ("For HuNavSim 2.0 (robotics-upo/hunav_sim master: behavior trees in BehaviorTree.CPP 4, "
+                   "`global_goals`, `hunav_msgs/Agent` with a nested `AgentBehavior`). ROS 2 bags of the same run "
+                   "(`grove export rosbag`) carry hunav_msgs 2.0 by default; `--hunav-msgs 1.0` writes HuNavSim "
+                   "1.0's messages.")
+        trees = [f"- `{base}__agent_<id>_bt.xml` ({len(tree_files)} files) -> `<ws>/src/{package}/behavior_trees/`: "
+                 "the agent manager loads `<yaml_base_name>__agent_<id>_bt.xml` from the *source* folder of the "
+                 "wrapper (bt_node.cpp `share_to_src_path`), not from `install/`. A tree that `<include>`s "
+                 "HuNavSim's own files (BTRegularNav.xml) needs them beside it, as in HuNavSim's folder."]
     lines = [
-        f"# HuNavSim 2.0 scenario exported by GROVE ({simulator})",
+        f"# HuNavSim {layout} scenario exported by GROVE ({simulator})",
         "",
         f"World `{world_name}`, {len(scenario.agents)} agents, prompt: {scenario.prompt!r}.",
+        "",
+        version,
         "",
         "## Where the files go",
         "",
         f"- `{base}.yaml` -> `<ws>/src/{package}/scenarios/` (read by `hunav_loader`; the launch file takes it "
         "as `configuration_file`).",
-        f"- `{base}__agent_<id>_bt.xml` ({len(tree_files)} files) -> `<ws>/src/{package}/behavior_trees/`: the "
-        "agent manager loads `<yaml_base_name>__agent_<id>_bt.xml` from the *source* folder of the wrapper "
-        "(bt_node.cpp `share_to_src_path`), not from `install/`.",
-        f"- `worlds/{world_name}.world` (Gazebo SDF: walls with the door gaps, furniture as boxes) -> "
-        f"`<ws>/src/{package}/worlds/`, and `maps/{world_name}.yaml` + `maps/{world_name}.pgm` (nav2 map, not "
-        f"inflated) -> `<ws>/src/{package}/maps/`: the launch loads `worlds/<environment_name>.world` and "
+        *trees,
+        f"- `worlds/{world_name}.world` (Gazebo SDF: walls with the door gaps, furniture as boxes, a ground plane "
+        f"under every goal) -> `<ws>/src/{package}/worlds/`, and `maps/{world_name}.yaml` + "
+        f"`maps/{world_name}.pgm` (nav2 map of the same walls and boxes over the same extent, not inflated) -> "
+        f"`<ws>/src/{package}/maps/`: the launch loads `worlds/<environment_name>.world` and "
         "`maps/<environment_name>.yaml`. (Isaac Sim and Webots build their scenes from USD/Webots files; the SDF "
         "is for Gazebo.)",
         "",
-        "## Run",
+        "## Build, then run",
+        "",
+        f"The launch file finds the scenario, the world and the map in the *installed* share folder of "
+        f"`{package}` (`FindPackageShare`), so rebuild the workspace after copying the files:",
         "",
         "```bash",
+        f"cd <ws> && colcon build --packages-select {package} && source install/setup.bash",
         f"ros2 launch {package} simulation.launch.py {args}",
         "```",
         "",
@@ -803,7 +923,8 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         "",
         "- Each tree runs once, then the agent holds where it ended (HuNavSim ticks every root each step and "
         "BehaviorTree.CPP restarts a finished root).",
-        "- Every GoTo reaches its goal within 0.2 m: HuNavSim 2.0's GoTo reads `tolerance` but does not apply it.",
+        "- Every GoTo's `tolerance` is its agent's `goal_radius` (GROVE's agents: 0.1 m, the radius HuNavSim 2.0's "
+        "GoTo applies whatever `tolerance` says); a goal counts as reached within goal_radius + 0.1 m.",
         "- Timed nodes: StopAndWaitTimerAction, ConversationFormation, TimeDelay, Delay, Timeout and the `duration` "
         "of HuNavSim's stateful nodes count wall-clock seconds in HuNavSim (GROVE counts simulation seconds); "
         "TimeExpiredCondition and the *Nav reactions count simulation time. Run Gazebo at real time factor 1 "

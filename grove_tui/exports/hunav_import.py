@@ -1,43 +1,61 @@
-"""`grove import hunav AGENTS.yaml`: a HuNavSim 2.0 scenario (agents, global_goals, trees) as a GROVE bundle.
+"""`grove import hunav AGENTS.yaml`: a HuNavSim scenario (agents, goals, trees) as a GROVE bundle.
 
-The agents YAML is checked as HuNavSim's loader reads it (exports/hunav_loader_check.py); each agent's
-tree is the file HuNavSim's agent manager would load, `<yaml_base_name>__agent_<id>_bt.xml` (bt_node.cpp,
-`initializeBehaviorTree`), looked up beside the YAML, in `--trees`, or in the wrapper layout's
-`../behavior_trees/`. Its `<include>`s are inlined (bt/include.py) so the bundle is self-contained.
-Trees keep HuNavSim's `goal_id`s; the bundle's scenario carries `global_goals`, which GROVE's runtime
-resolves them with. Nodes an export kept as `Grove<Node>` get their GROVE names back.
+Both agents-YAML layouts HuNavSim has shipped are read (exports/hunav_loader_check.hunav_layout):
+- 2.0: `global_goals` {id: {x, y}}, each agent's `goals` a list of ids, `behavior.type` a name, and
+  one tree per agent, `<yaml_base_name>__agent_<id>_bt.xml` (bt_node.cpp, `initializeBehaviorTree`),
+  looked up beside the YAML, in `--trees`, or in the wrapper layout's `../behavior_trees/`; its
+  `<include>`s are inlined (bt/include.py) for GROVE to run it;
+- 1.0: each agent's `goals` a list of names, each name a block {x, y, h}, `behavior` a type number
+  (or a block whose `type` is one). HuNavSim 1.0 runs a fixed tree per behavior; GROVE gives each agent
+  HuNavSim's regular navigation tree, and its simulation wraps the behavior's robot reaction around it.
 
-The world: `--world`, else the YAML's `map` when it is a GROVE world (what `grove export hunav` writes),
-else an open floor around every pose and goal (HuNavSim's worlds are Gazebo files GROVE cannot read),
-written into the bundle as `world/<map>.yaml` (the bundle's own world file, read from the bundle
-wherever it is used; never a name that could replace scenario.yaml).
+Nothing HuNavSim's loader reads is lost (the export writes it back, exports/hunav.py): every agent key
+keeps its value and its place (AgentSpec's own fields, and `HunavAgent` for the rest: the key in the
+file, skin, spawn height, the behavior block with configuration and force factors, goal names and
+headings, goal ids); the file's top level (layout, yaml_base_name, simulator, map, publish_people, key
+order) is `Scenario.hunav`; each 2.0 tree file is kept verbatim under `hunav/` and written back while
+GROVE's tree made from it is unchanged. Numbers keep full precision (3.360 reads as the double 3.36).
+
+The world: `--world` (a shipped name, or a world file copied into the bundle), else the YAML's `map`
+when it is a shipped GROVE world, else an open floor around every pose and goal (HuNavSim's worlds are
+Gazebo files GROVE cannot read) written into the bundle. Either way the bundle names a world it
+carries or GROVE ships, never a path relative to the current folder: it runs from anywhere.
+
+A file `grove export hunav` wrote carries GROVE's line (`# grove: {...}`: prompt, preset, seed, robot,
+labels); importing it gives those back, so GROVE -> HuNavSim -> GROVE keeps the prompt and the robot.
 
 The file is read as every user file is (a bounded regular file, UTF-8, YAML without alias bombs or
 deep nesting) and checked against the limits generation keeps: finite poses and goals within the
 coordinates scenarios use, speeds and radii as a bundle allows them, HuNavSim's behavior types, at most
 MAX_GROUP_COUNT people per group and MAX_SCENARIO_AGENTS in all. What it writes, `simulate` reads.
-
-Export, then import, then export again gives the same agents YAML and the same trees.
 """
 
 from __future__ import annotations
 
-import dataclasses
+import hashlib
+import json
 import math
+import os
 import re
 from collections import Counter
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import yaml
 
-from grove_tui.bt.include import resolve_includes
+from grove_tui.bt.include import included_files, resolve_includes
+from grove_tui.bt.document import TreeDocument, TreeElement, node
 from grove_tui.bt.xml import BTError, check_tree_text, read_tree, write_tree
 from grove_tui.errors import GroveError, HunavImportError
-from grove_tui.exports.hunav import KEPT_NODE_PREFIX
-from grove_tui.exports.hunav_loader_check import check_loader_parameters
+from grove_tui.exports.hunav import GROVE_LINE_PREFIX, KEPT_NODE_PREFIX
+from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout, ignored_keys
+from grove_tui.exports.scene import BEHAVIOR_NUMBERS
 from grove_tui.limits import (MAX_COORDINATE, MAX_GROUP_COUNT, MAX_SCENARIO_AGENTS, InputLimitError, load_yaml_bounded,
                               read_text_bounded)
+from grove_tui.scenario.bundle import HUNAV_FOLDER, WORLD_FOLDER
+from grove_tui.scenario.model import (BEHAVIOR_TYPES, MAX_AGENTS, MAX_VEL_RANGE, RADIUS_RANGE, AgentSpec, HunavAgent,
+                                      HunavBehavior, HunavSource, RobotSpec, Scenario)
 
 OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a synthesized world
 # A HuNavSim scenario of MAX_SCENARIO_AGENTS agents is well under a megabyte of YAML.
@@ -45,6 +63,24 @@ MAX_AGENTS_YAML_BYTES = 8 * 1024 * 1024
 # `map` and `yaml_base_name` become file names (world/<map>.yaml, <base>__agent_<id>_bt.xml).
 PLAIN_NAME = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}$")
 SHOWN_PROBLEMS = 3  # problems printed in the one-line error; the count of the rest follows
+GOAL_RADIUS_RANGE = (0.0, 100.0)  # metres, as a bundle takes it
+BEHAVIOR_NAMES = {number: name for name, number in BEHAVIOR_NUMBERS.items()}
+
+
+def regular_nav_tree() -> str:
+    """HuNavSim's regular navigation (hunav_agent_manager/behavior_trees/BTRegularNav.xml), what a 1.0
+    agent runs: walk to the front goal, and on reaching it take the next (round and round if cyclic)."""
+    walk = TreeElement("Sequence", {"name": "RegularNavigation"}, [
+        node("Inverter", [node("IsGoalReached", agent_id="{id}")]),
+        node("RegularNav", agent_id="{id}", time_step="{dt}")])
+    root = TreeElement("Fallback", {"name": "RegularNavFallback"}, [walk, node("UpdateGoal", agent_id="{id}")])
+    tree = TreeElement("BehaviorTree", {"ID": "RegularNavTree"}, [root])
+    return write_tree(TreeDocument("RegularNavTree", {"RegularNavTree": tree}, "BTRegularNav.xml"))
+
+
+def tree_digest(text: str) -> str:
+    """What `HunavAgent.tree_digest` records of a GROVE tree: the SHA-256 of its text."""
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 def _open_floor_world(name: str, points: list[tuple[float, float]]) -> str:
@@ -83,6 +119,20 @@ def _grove_names(xml: bytes, source: str) -> str:
     return write_tree(document)
 
 
+def _grove_line(text: str) -> dict[str, Any]:
+    """GROVE's own line in an agents YAML it exported (prompt, preset, seed, robot, labels), or {}."""
+    for line in text.splitlines():
+        if line.startswith(GROVE_LINE_PREFIX):
+            try:
+                data = json.loads(line[len(GROVE_LINE_PREFIX):])
+            except json.JSONDecodeError:
+                return {}
+            return data if isinstance(data, dict) else {}
+        if line.strip() and not line.startswith("#"):
+            break
+    return {}
+
+
 def _one_line(problems: list[str], source: Path) -> str:
     """The file once, its first problems, then how many more: a million-agent file gave a 128 MB line."""
     prefix = f"{source}: "
@@ -99,8 +149,8 @@ def _short(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def _read_document(source: Path) -> dict[str, Any]:
-    """The agents YAML's `ros__parameters`, read as every user file is and checked before any use."""
+def _read_document(source: Path) -> tuple[str, dict[str, Any]]:
+    """The agents YAML's text and its `ros__parameters`, read as every user file is and checked before any use."""
     try:
         text = read_text_bounded(source, MAX_AGENTS_YAML_BYTES, "agents YAML")
         document = load_yaml_bounded(text, str(source))
@@ -117,7 +167,7 @@ def _read_document(source: Path) -> dict[str, Any]:
     if problems:
         raise HunavImportError(_one_line(problems, source), hint="HuNavSim's own loader would stop on this file too.")
     assert isinstance(params, dict)  # check_loader_parameters refuses a file without it
-    return params
+    return text, params
 
 
 def _plain_name(params: dict[str, Any], key: str, default: str, source: Path) -> str:
@@ -147,34 +197,8 @@ def _point(mapping: Any, where: str) -> tuple[float, float]:
             _number(mapping.get("y", 0.0), f"{where}.y", -MAX_COORDINATE, MAX_COORDINATE))
 
 
-def _agent_fields(name: str, entry: dict[str, Any], global_goals: dict[int, tuple[float, float]],
-                  source: Path) -> dict[str, Any]:
-    """One agent's values, each checked against what a bundle accepts (so `simulate` reads the result)."""
-    from grove_tui.scenario.model import BEHAVIOR_TYPES, MAX_AGENTS, MAX_VEL_RANGE, RADIUS_RANGE
-
-    where = f"{source}: {name}"
-    behavior = entry.get("behavior", {})
-    if behavior is None:
-        behavior = {}
-    if not isinstance(behavior, dict):
-        raise HunavImportError(f"{where}.behavior is {_short(behavior)}; HuNavSim's loader reads a mapping "
-                               f"(behavior: {{type: Scared, ...}})")
-    kind = behavior.get("type", "Regular")
-    if kind not in BEHAVIOR_TYPES:
-        raise HunavImportError(f"{where}.behavior.type is {_short(kind)}; HuNavSim's behaviors are "
-                               f"{', '.join(BEHAVIOR_TYPES)}")
-    group = entry.get("group_id", -1)
-    if isinstance(group, bool) or not isinstance(group, int) or not -1 <= group <= 10 * MAX_AGENTS:
-        raise HunavImportError(f"{where}.group_id is {_short(group)}; expected -1 (no group) or a group id "
-                               f"0..{10 * MAX_AGENTS}")
-    return {
-        "group": group,
-        "start": _point(entry.get("init_pose", {}), f"{where}.init_pose"),
-        "goals": tuple(global_goals[g] for g in entry.get("goals") or []),
-        "radius": _number(entry.get("radius", 0.35), f"{where}.radius", *RADIUS_RANGE),
-        "max_vel": _number(entry.get("max_vel", 1.0), f"{where}.max_vel", *MAX_VEL_RANGE),
-        "behavior": kind,
-    }
+def _optional_number(mapping: dict[str, Any], key: str, where: str, low: float, high: float) -> float | None:
+    return None if mapping.get(key) is None else _number(mapping[key], f"{where}.{key}", low, high)
 
 
 def _check_groups(groups: list[int], source: Path) -> None:
@@ -187,79 +211,210 @@ def _check_groups(groups: list[int], source: Path) -> None:
                                f"{MAX_GROUP_COUNT} (as generation allows)")
 
 
+def _keys(mapping: dict[str, Any], prefix: str = "") -> tuple[str, ...]:
+    """The keys of an agent's block in file order, nested ones dotted ("init_pose.x", "g0.h")."""
+    out: list[str] = []
+    for key, value in mapping.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out += _keys(value, f"{name}.") or [name]
+        else:
+            out.append(name)
+    return tuple(out)
+
+
+def _behavior(entry: dict[str, Any], layout: str, where: str) -> tuple[str, HunavBehavior | None]:
+    """(GROVE behavior name, the block as given, or None for 1.0's flat `behavior: <number>`)."""
+    given = entry.get("behavior")
+    if given is not None and not isinstance(given, dict) and layout == "2.0":
+        raise HunavImportError(f"{where}.behavior is {_short(given)}; HuNavSim's loader reads a mapping "
+                               f"(behavior: {{type: Scared, ...}})")
+    block = given if isinstance(given, dict) else None
+    kind = block.get("type") if block is not None else given
+    if kind is None:
+        name = "Regular"  # the loader's default type
+    elif isinstance(kind, int) and not isinstance(kind, bool) and kind in BEHAVIOR_NAMES:
+        name = BEHAVIOR_NAMES[kind]  # 1.0 numbers its behaviors
+    else:
+        name = kind if isinstance(kind, str) else ""
+    if name not in BEHAVIOR_TYPES:
+        numbers = ", ".join(f"{number} {label}" for number, label in BEHAVIOR_NAMES.items())
+        raise HunavImportError(f"{where}.behavior.type is {_short(kind)}; HuNavSim's behaviors are "
+                               f"{', '.join(BEHAVIOR_TYPES)} (1.0 numbers them: {numbers})")
+    if block is None:
+        return name, None
+    values: dict[str, Any] = {}
+    for key in HunavBehavior.__dataclass_fields__:
+        value = block.get(key)
+        if value is not None and key not in ("configuration", "once"):
+            value = _number(value, f"{where}.behavior.{key}", -1e6, 1e6)
+        values[key] = value
+    return name, HunavBehavior(**values)
+
+
+def _type_is_number(entry: dict[str, Any]) -> bool:
+    """Whether the agent's behavior type is written as a number (1.0) rather than a name (2.0)."""
+    given = entry.get("behavior")
+    kind = given.get("type") if isinstance(given, dict) else given
+    return isinstance(kind, int) and not isinstance(kind, bool)
+
+
+def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int, tuple[float, float]],
+           source: Path) -> tuple[AgentSpec, HunavAgent]:
+    """The agent as GROVE runs it and what else its file says (tree fields set by the caller), each value
+    checked against what a bundle accepts (so `simulate` reads the result)."""
+    where = f"{source}: {name}"
+    agent_id = entry.get("id", -1)
+    if isinstance(agent_id, bool) or not isinstance(agent_id, int) or not 1 <= agent_id <= 10 * MAX_SCENARIO_AGENTS:
+        raise HunavImportError(f"{where}.id is {_short(agent_id)}; GROVE numbers agents from 1 "
+                               f"(0 is the robot) up to {10 * MAX_SCENARIO_AGENTS}")
+    group = entry.get("group_id", -1)
+    if isinstance(group, bool) or not isinstance(group, int) or not -1 <= group <= 10 * MAX_AGENTS:
+        raise HunavImportError(f"{where}.group_id is {_short(group)}; expected -1 (no group) or a group id "
+                               f"0..{10 * MAX_AGENTS}")
+    pose = entry.get("init_pose", {})
+    start = _point(pose, f"{where}.init_pose")
+    kind, behavior = _behavior(entry, layout, where)
+    listed = list(entry.get("goals") or [])
+    if layout == "2.0":
+        goals = tuple(global_goals[g] for g in listed)
+        names: tuple[str, ...] = ()
+        headings: tuple[float | None, ...] = ()
+        ids = tuple(int(g) for g in listed)
+    else:
+        goals = tuple(_point(entry.get(g), f"{where}.{g}") for g in listed)
+        names = tuple(str(g) for g in listed)
+        headings = tuple(_optional_number(entry[g], "h", f"{where}.{g}", -1e3, 1e3) for g in listed)
+        ids = ()
+    skin = entry.get("skin")
+    if skin is not None and (isinstance(skin, bool) or not isinstance(skin, int) or not -1 <= skin <= 1000):
+        raise HunavImportError(f"{where}.skin is {_short(skin)}; expected a mesh number")
+    spec = AgentSpec(
+        id=agent_id, group=group, start=start, goals=goals, zone="", tree=f"trees/agent_{agent_id}.xml",
+        radius=_number(entry.get("radius", 0.35), f"{where}.radius", *RADIUS_RANGE),
+        max_vel=_number(entry.get("max_vel", 1.0), f"{where}.max_vel", *MAX_VEL_RANGE), label=name, behavior=kind,
+        # HuNavSim's loader defaults where the file is silent: the agent moves as HuNavSim moves it
+        goal_radius=_number(entry.get("goal_radius", 0.0), f"{where}.goal_radius", *GOAL_RADIUS_RANGE),
+        cyclic_goals=bool(entry.get("cyclic_goals", True)),
+        heading=_number(pose.get("h", 0.0), f"{where}.init_pose.h", -1e3, 1e3))
+    extra = HunavAgent(name=name, skin=skin, z=_optional_number(pose, "z", f"{where}.init_pose", -MAX_COORDINATE,
+                                                                 MAX_COORDINATE),
+                       behavior=behavior, goal_names=names, goal_headings=headings, goal_ids=ids, keys=_keys(entry))
+    return spec, extra
+
+
+def _world(world: str | None, map_name: str, grove: dict[str, Any], points: list[tuple[float, float]],
+           source: Path) -> tuple[str, str | None, Any]:
+    """(the scenario's world reference, the world file text to write into the bundle or None, World)."""
+    from grove_tui.world import list_worlds, load_world, parse_world, read_world_file
+
+    if world is not None:
+        if world in list_worlds():
+            return world, None, load_world(world)
+        path, text = read_world_file(world)  # a user's world file: the bundle carries a copy
+        return f"{WORLD_FOLDER}/{path.stem}.yaml", text, load_world(path)
+    for candidate in (map_name, str(grove.get("world", ""))):
+        if candidate in list_worlds():
+            return candidate, None, load_world(candidate)
+    reference = f"{WORLD_FOLDER}/{map_name}.yaml"
+    text = _open_floor_world(map_name, points)
+    parsed, problems = parse_world(text, reference)
+    if problems or parsed is None:
+        problem = problems[0].message if problems else "no world"
+        raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r} around the agents' "
+                               f"poses and goals: {problem}")
+    return reference, text, parsed
+
+
+def _robot(data: Any, source: Path) -> RobotSpec | None:
+    if data is None:
+        return None
+    try:
+        probe = Scenario.from_dict({"world": "w", "preset": "p", "prompt": "", "seed": 0, "agents": [],
+                                    "robot": data}, f"{source}: grove line")
+    except GroveError as exc:
+        raise HunavImportError(str(exc)) from None
+    return probe.robot
+
+
 def import_hunav(agents_yaml: str | Path, out_dir: str | Path, *, world: str | None = None,
                  trees_dir: str | Path | None = None, overwrite: bool = False) -> Path:
     """Write a GROVE bundle for a HuNavSim agents YAML and its trees; returns the bundle folder."""
-    from grove_tui.generation.pipeline import GenerationResult, world_reference
+    from grove_tui.generation.pipeline import GenerationResult
     from grove_tui.navigation.grid import build_grid
-    from grove_tui.scenario.bundle import WORLD_FOLDER, write_bundle
-    from grove_tui.scenario.model import AgentSpec, Scenario, ScenarioError
-    from grove_tui.world import list_worlds, load_world, parse_world
+    from grove_tui.scenario.bundle import write_bundle
 
     source = Path(agents_yaml)
-    params = _read_document(source)
-    base = _plain_name(params, "yaml_base_name", "warehouse_agents", source)
-    map_name = _plain_name(params, "map", "warehouse", source)
+    text, params = _read_document(source)
+    layout = hunav_layout(params)
+    grove = _grove_line(text)
+    base = _plain_name(params, "yaml_base_name", source.stem, source)
+    map_name = _plain_name(params, "map", source.stem, source)
     global_goals = {int(k): _point(v, f"{source}: global_goals.{k}")
                     for k, v in (params.get("global_goals") or {}).items()}
-
-    folders = [Path(trees_dir)] if trees_dir is not None else [source.parent, source.parent.parent / "behavior_trees"]
     # Every agent's values first (cheap), then the trees (parsed one by one): a bad value is refused
     # before any tree is read.
-    checked: list[tuple[str, int, dict[str, Any]]] = []
-    for name in params.get("agents") or []:
-        entry = params[name]
-        agent_id = entry.get("id", -1)
-        if not 1 <= agent_id <= 10 * MAX_SCENARIO_AGENTS:
-            raise HunavImportError(f"{source}: {name}.id is {_short(agent_id)}; GROVE numbers agents from 1 "
-                                   f"(0 is the robot) up to {10 * MAX_SCENARIO_AGENTS}")
-        checked.append((name, agent_id, _agent_fields(name, entry, global_goals, source)))
-    _check_groups([fields["group"] for _name, _id, fields in checked], source)
-    agents: list[AgentSpec] = []
-    trees: dict[str, str] = {}
-    points: list[tuple[float, float]] = list(global_goals.values())
-    for name, agent_id, fields in checked:
-        path = _tree_file(folders, base, agent_id)
-        try:
-            xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
-        except BTError as exc:
-            raise HunavImportError(str(exc), hint="Fix the tree, or pass --trees with the folder it includes from.") \
-                from None
-        tree_problems = check_tree_text(xml, str(path))
-        if tree_problems:
-            raise HunavImportError(f"{path}: " + "; ".join(str(p) for p in tree_problems))
-        points.append(fields["start"])
-        rel = f"trees/agent_{agent_id}.xml"
-        trees[rel] = xml
-        agents.append(AgentSpec(id=agent_id, zone="", tree=rel, label=name, **fields))
+    checked = [(name, *_agent(name, params[name], layout, global_goals, source)) for name in params.get("agents") or []]
+    _check_groups([spec.group for _name, spec, _extra in checked], source)
 
-    world_text = None
-    if world is not None:
-        world_obj = load_world(world)
-        world_ref = world_reference(world_obj)  # a shipped name or an absolute path, as generation records it
-    elif map_name in list_worlds():
-        world_ref = map_name
-        world_obj = load_world(map_name)
-    else:
-        world_ref = f"{WORLD_FOLDER}/{map_name}.yaml"
-        world_text = _open_floor_world(map_name, points)
-        parsed, world_problems = parse_world(world_text, world_ref)
-        if world_problems or parsed is None:
-            problem = world_problems[0].message if world_problems else "no world"
-            raise HunavImportError(f"{source}: cannot build an open floor for map {map_name!r} around the agents' "
-                                   f"poses and goals: {problem}")
-        world_obj = parsed
-    agents = [dataclasses.replace(a, zone=getattr(world_obj.zone_at(*a.start), "name", "")) for a in agents]
-    scenario = Scenario(world=world_ref, preset="normal", prompt=f"imported from HuNavSim {source.name}", seed=0,
-                        models={}, agents=tuple(sorted(agents, key=lambda a: a.id)), robot=None,
-                        global_goals=global_goals)
+    folders = [Path(trees_dir)] if trees_dir is not None else [source.parent, source.parent.parent / "behavior_trees"]
+    agents: list[AgentSpec] = []
+    files: dict[str, str] = {}
+    points: list[tuple[float, float]] = list(global_goals.values())
+    includes: list[str] = []
+    numbered = False
+    for name, spec, extra in checked:
+        numbered = numbered or _type_is_number(params[name])
+        if layout == "2.0":
+            path = _tree_file(folders, base, spec.id)
+            try:
+                xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
+            except BTError as exc:
+                raise HunavImportError(str(exc), hint="Fix the tree, or pass --trees with the folder it includes "
+                                                      "from.") from None
+            tree_problems = check_tree_text(xml, str(path))
+            if tree_problems:
+                raise HunavImportError(f"{path}: " + "; ".join(str(p) for p in tree_problems))
+            kept = f"{HUNAV_FOLDER}/{path.name}"
+            files[kept] = path.read_text(encoding="utf-8")  # verbatim, for a byte-exact export
+            extra = replace(extra, tree_file=kept)
+            for included in included_files(path, allowed_roots=[path.parent]):
+                rel = Path(os.path.relpath(included, path.parent)).as_posix()
+                if rel not in includes:
+                    includes.append(rel)
+                    files[f"{HUNAV_FOLDER}/{rel}"] = included.read_text(encoding="utf-8")
+        else:
+            xml = regular_nav_tree()
+        files[spec.tree] = xml
+        labels = grove.get("agents", {}).get(str(spec.id), {}) if isinstance(grove.get("agents"), dict) else {}
+        agents.append(replace(spec, hunav=replace(extra, tree_digest=tree_digest(xml)),
+                              label=str(labels.get("label", spec.label)), zone=str(labels.get("zone", ""))))
+        points += [spec.start, *spec.goals]
+
+    world_ref, world_text, world_obj = _world(world, map_name, grove, points, source)
+    agents = [a if a.zone else replace(a, zone=getattr(world_obj.zone_at(*a.start), "name", "")) for a in agents]
+    hunav = HunavSource(layout=layout, file=source.name, agents=tuple(params.get("agents") or []),
+                        behavior_type="number" if numbered else "name",
+                        base_name=params.get("yaml_base_name"), simulator=params.get("simulator"),
+                        map=params.get("map"), publish_people=params.get("publish_people"), keys=tuple(params),
+                        grove_comment=bool(grove), includes=tuple(includes))
+    scenario = Scenario(world=world_ref, preset=str(grove.get("preset", "normal")),
+                        prompt=str(grove.get("prompt", f"imported from HuNavSim {source.name}")),
+                        seed=int(grove.get("seed", 0)), models={}, agents=tuple(sorted(agents, key=lambda a: a.id)),
+                        robot=_robot(grove.get("robot"), source), global_goals=global_goals, hunav=hunav,
+                        resolution=float(grove.get("resolution", 0.1)))
     try:  # the checks `simulate` makes when it reads the bundle back: what is written, loads
-        Scenario.from_dict(scenario.to_dict(), f"{source} (as a bundle)")
+        scenario = Scenario.from_dict(yaml.safe_load(scenario.dump_yaml()), f"{source} (as a bundle)")
         grid = build_grid(world_obj, scenario.resolution, scenario.grid_inflation)
-    except (ScenarioError, GroveError) as exc:
+    except GroveError as exc:
         raise HunavImportError(str(exc)) from None
-    report = {"stages": {}, "notes": [f"imported from {source} (HuNavSim map {map_name!r}, {len(agents)} agents)"]}
-    files = dict(trees)
+    notes = [f"imported from {source} (HuNavSim {layout} layout, map {map_name!r}, {len(agents)} agents)"]
+    ignored = ignored_keys({"hunav_loader": {"ros__parameters": params}})
+    if ignored:
+        notes.append("HuNavSim's loader never reads " + ", ".join(ignored[:SHOWN_PROBLEMS])
+                     + (f" and {len(ignored) - SHOWN_PROBLEMS} more" if len(ignored) > SHOWN_PROBLEMS else "")
+                     + ": not kept")
+    report = {"stages": {}, "notes": notes}
     if world_text is not None:
         files[world_ref] = world_text  # written in the same atomic step as the trees
     return write_bundle(GenerationResult(scenario, files, {}, grid, report), out_dir, overwrite=overwrite)

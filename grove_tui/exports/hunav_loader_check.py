@@ -1,4 +1,9 @@
-"""What HuNavSim 2.0's `hunav_loader` and agent manager would do with an exported scenario, without ROS.
+"""What HuNavSim's `hunav_loader` and agent manager would do with an agents YAML, without ROS.
+
+Two layouts (`hunav_layout`): 2.0 (`global_goals`, integer goal ids, `behavior.type` a name) and 1.0
+(goals named per agent with x, y, h; `behavior` a type number, or a block whose `type` is one, as
+hunav_loader.cpp@03330520 and the wrapper's scenarios@3e5219e have it). What follows is 2.0's loader;
+1.0's declares `<agent>.goals` a PARAMETER_STRING_ARRAY and `<agent>.<goal>.x/y/h` doubles instead.
 
 Emulates robotics-upo/hunav_sim 2.0 `hunav_agent_manager/src/hunav_loader.cpp` (`namespace hunav`,
 as stored in the public code index): every parameter it declares, with the type it declares it with.
@@ -19,6 +24,8 @@ from typing import Any
 import yaml
 
 from grove_tui.bt.hunav_compat import hunav_loading_problems
+from grove_tui.bt.include import resolve_includes
+from grove_tui.errors import BTError
 
 # hunav_loader.cpp: name -> declared type ("double" accepts only floats: rclcpp does not convert)
 TOP_LEVEL = {"yaml_base_name": "string", "simulator": "string", "map": "string", "publish_people": "bool",
@@ -32,8 +39,26 @@ AGENT = {
     "init_pose.x": "double", "init_pose.y": "double", "init_pose.z": "double", "init_pose.h": "double",
     "goal_radius": "double", "cyclic_goals": "bool", "goals": "int_array",
 }
+# HuNavSim 1.0's loader (hunav_loader.cpp, humble@afa9743 and 03330520): goals are names, each a block.
+AGENT_1 = {key: kind for key, kind in AGENT.items() if not key.startswith("behavior.")} | {"goals": "string_array"}
+BEHAVIOR_BLOCK_1 = {key: kind for key, kind in AGENT.items() if key.startswith("behavior.")} | {"behavior.type": "int"}
+GOAL_1 = {"x": "double", "y": "double", "h": "double"}
 # Declared without a default (declare_parameter(name, ParameterType)): absent means the node aborts.
 REQUIRED_AGENT = frozenset({"goals"})
+
+
+def hunav_layout(params: Any) -> str:
+    """"2.0" for a file with global_goals or integer goal ids, else "1.0" (goals named per agent)."""
+    if not isinstance(params, dict):
+        return "2.0"
+    if "global_goals" in params or "yaml_base_name" in params:
+        return "2.0"
+    for name in params.get("agents") or []:
+        entry = params.get(name) if isinstance(name, str) else None
+        goals = entry.get("goals") if isinstance(entry, dict) else None
+        if isinstance(goals, list) and goals:
+            return "1.0" if all(isinstance(g, str) for g in goals) else "2.0"
+    return "2.0"
 SIMULATORS = ("Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots")
 
 
@@ -108,6 +133,7 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
             if not found or not _type_ok(value, "double"):
                 problems.append(f"{source}: global_goals.{key}.{axis} is {value!r}; the loader declares "
                                 f"{_describe('double')}")
+    layout = hunav_layout(params)
     agents = params.get("agents") or []
     seen_ids: dict[int, str] = {}
     for name in agents if isinstance(agents, list) else []:
@@ -115,7 +141,22 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
         if not isinstance(entry, dict):
             problems.append(f"{source}: agent {name!r} is listed in `agents` but has no `{name}:` block")
             continue
-        for key, kind in AGENT.items():
+        declared = AGENT
+        if layout == "1.0":
+            behavior = entry.get("behavior")
+            declared = AGENT_1 | (BEHAVIOR_BLOCK_1 if isinstance(behavior, dict) else {"behavior": "int"})
+            for goal in entry.get("goals") or []:
+                block = entry.get(goal) if isinstance(goal, str) else None
+                if not isinstance(block, dict):
+                    problems.append(f"{source}: {name}.goals names goal {goal!r}, which has no `{goal}:` block "
+                                    "(the loader would put it at 0, 0)")
+                    continue
+                for axis, kind in GOAL_1.items():
+                    found, value = _lookup(block, axis)
+                    if found and not _type_ok(value, kind):
+                        problems.append(f"{source}: {name}.{goal}.{axis} is {value!r}; the loader declares "
+                                        f"{_describe(kind)}")
+        for key, kind in declared.items():
             found, value = _lookup(entry, key)
             if not found:
                 if key in REQUIRED_AGENT:
@@ -143,7 +184,9 @@ def check_hunav_export(agents_yaml: str | Path, trees_dir: str | Path | None = N
     if problems:
         return problems
     params = document["hunav_loader"]["ros__parameters"]
-    base = params.get("yaml_base_name", "warehouse_agents")
+    if hunav_layout(params) == "1.0":
+        return problems  # HuNavSim 1.0 runs its own tree per behavior: there is no tree file to load
+    base = params.get("yaml_base_name", path.stem)
     folder = Path(trees_dir) if trees_dir is not None else path.parent
     for name in params.get("agents") or []:
         agent_id = params[name].get("id", -1)
@@ -151,5 +194,78 @@ def check_hunav_export(agents_yaml: str | Path, trees_dir: str | Path | None = N
         if not tree.is_file():
             problems.append(f"{tree}: missing; bt_node.cpp loads <yaml_base_name>__agent_<id>_bt.xml for {name}")
             continue
-        problems += [f"{tree}: {p}" for p in hunav_loading_problems(tree.read_text(encoding="utf-8"))]
+        text = tree.read_text(encoding="utf-8")
+        if "<include" in text:  # BT.CPP reads included files relative to the tree's folder; so does this
+            try:
+                text = resolve_includes(tree, allowed_roots=[folder]).decode("utf-8")
+            except BTError as exc:
+                problems.append(f"{tree}: {exc}")
+                continue
+        problems += [f"{tree}: {p}" for p in hunav_loading_problems(text)]
     return problems
+
+
+# What HuNavSim's loader takes when a key is left out (hunav_loader.cpp, both versions).
+TOP_DEFAULTS: dict[str, object] = {"yaml_base_name": None, "simulator": None, "map": "map.yaml",
+                                   "publish_people": True}
+AGENT_DEFAULTS: dict[str, object] = {"id": -1, "skin": -1, "group_id": -1, "max_vel": 1.0, "radius": 0.35,
+                                     "init_pose.x": 0.0, "init_pose.y": 0.0, "init_pose.z": 0.0, "init_pose.h": 0.0,
+                                     "goal_radius": 0.0, "cyclic_goals": True}
+BEHAVIOR_DEFAULTS: dict[str, object] = {"behavior.type": None, "behavior.configuration": 0, "behavior.duration": 40.0,
+                                        "behavior.once": True, "behavior.vel": 1.0, "behavior.dist": 0.0,
+                                        "behavior.goal_force_factor": 2.0, "behavior.obstacle_force_factor": 10.0,
+                                        "behavior.social_force_factor": 5.0, "behavior.other_force_factor": 20.0}
+
+
+def loader_parameters(document: Any) -> dict[str, object]:
+    """Every parameter HuNavSim's loader declares for this file, by its dotted name, with the value it
+    reads: the file's, else the loader's default. Two files the loader reads alike give equal dicts;
+    keys it never declares (a typo such as `H:` for `h:`) are not in it (see `ignored_keys`)."""
+    params = document["hunav_loader"]["ros__parameters"]
+    layout = hunav_layout(params)
+    out: dict[str, object] = {}
+    for key, default in TOP_DEFAULTS.items():
+        found, value = _lookup(params, key)
+        out[key] = value if found else default
+    names = list(params.get("agents") or [])
+    out["agents"] = names
+    if layout == "2.0":
+        goals = params.get("global_goals") or {}
+        n = 1
+        while n in goals:  # the loader reads ids 1, 2, ... and stops at the first gap
+            for axis in ("x", "y"):
+                out[f"global_goals.{n}.{axis}"] = goals[n].get(axis, 0.0)
+            n += 1
+    for name in names:
+        entry = params[name]
+        for key, default in AGENT_DEFAULTS.items():
+            found, value = _lookup(entry, key)
+            out[f"{name}.{key}"] = value if found else default
+        behavior = entry.get("behavior")
+        if layout == "1.0" and not isinstance(behavior, dict):
+            out[f"{name}.behavior"] = -1 if behavior is None else behavior
+        else:
+            for key, default in BEHAVIOR_DEFAULTS.items():
+                found, value = _lookup(entry, key)
+                out[f"{name}.{key}"] = value if found else default
+        out[f"{name}.goals"] = list(entry.get("goals") or [])
+        if layout == "1.0":
+            for goal in entry.get("goals") or []:
+                block = entry.get(goal) if isinstance(entry.get(goal), dict) else {}
+                for axis in ("x", "y", "h"):
+                    out[f"{name}.{goal}.{axis}"] = block.get(axis, 0.0)
+    return out
+
+
+def ignored_keys(document: Any) -> list[str]:
+    """Keys of the file HuNavSim's loader never declares, so never reads (dotted names)."""
+    read = loader_parameters(document)
+
+    def leaves(mapping: dict, prefix: str) -> list[str]:
+        out = []
+        for key, value in mapping.items():
+            dotted = f"{prefix}{key}"
+            out += leaves(value, dotted + ".") if isinstance(value, dict) else [dotted]
+        return out
+
+    return [key for key in leaves(document["hunav_loader"]["ros__parameters"], "") if key not in read]

@@ -8,15 +8,21 @@ bundle was simulated, the trajectories. matplotlib is an optional extra (`grove-
 from __future__ import annotations
 
 import io
+import os
 from pathlib import Path
 
 import numpy as np
 from rich.text import Text
 
-from grove_tui.files import write_bytes_atomic
+from grove_tui.files import check_output_file, write_bytes_atomic
 from grove_tui.errors import PictureError
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import World
+
+# Written into every picture's metadata (PNG Software, SVG/PDF Creator): how a later `grove picture --out`
+# knows the file there is its own to replace; any other file is kept unless the user passes --overwrite.
+PICTURE_MARK = "grove-tui"
+_MARK_WINDOW = 64 * 1024
 
 # Colour-blind-safe cycle (Okabe-Ito) for groups; solo agents share a neutral grey.
 GROUP_COLOURS = ("#0072B2", "#E69F00", "#009E73", "#CC79A7", "#56B4E9", "#D55E00", "#F0E442", "#000000")
@@ -34,9 +40,28 @@ def _load_fields(scenario: Scenario, bundle_dir: Path):
     return {fid: load_field(bundle_dir, fid, rel) for fid, rel in scenario.fields.items()}
 
 
+def is_grove_picture(path: Path) -> bool:
+    """A picture `grove picture` wrote: its metadata names GROVE (PNG text chunks and SVG metadata sit at the
+    start of the file, a PDF's information dictionary at its end)."""
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(_MARK_WINDOW)
+            handle.seek(max(0, os.fstat(handle.fileno()).st_size - _MARK_WINDOW))
+            tail = handle.read(_MARK_WINDOW)
+    except OSError:
+        return False
+    mark = PICTURE_MARK.encode()
+    return mark in head or mark in tail
+
+
 def draw_scenario(world: World, scenario: Scenario, bundle_dir: str | Path, out_path: str | Path, *,
-                  trajectories: str | Path | None = None, title: str | None = None, dpi: int = 150) -> Path:
-    """Write a PNG or SVG (by suffix) of the scenario, with trajectories if a CSV is given."""
+                  trajectories: str | Path | None = None, title: str | None = None, dpi: int = 150,
+                  overwrite: bool = False) -> Path:
+    """Write a PNG, SVG or PDF (by suffix) of the scenario, with trajectories if a CSV is given.
+
+    An existing file at `out_path` is replaced only when GROVE drew it (`is_grove_picture`) or with
+    `overwrite`; never through a link, never a folder or a special file.
+    """
     try:
         import matplotlib
 
@@ -51,6 +76,8 @@ def draw_scenario(world: World, scenario: Scenario, bundle_dir: str | Path, out_
     fmt = out.suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
         raise PictureError(f"{out}: picture format must be .png, .svg or .pdf")
+    guard = dict(owned=is_grove_picture, what="picture GROVE drew", overwrite=overwrite)
+    check_output_file(out, **guard)  # type: ignore[arg-type]  # before the drawing, not after it
     bundle = Path(bundle_dir)
 
     xmin, ymin, xmax, ymax = world.bounds()
@@ -130,11 +157,13 @@ def draw_scenario(world: World, scenario: Scenario, bundle_dir: str | Path, out_
         ax.text(0.0, -0.08, f"“{scenario.prompt}”", transform=ax.transAxes, fontsize=7, va="top", style="italic")
         fig.tight_layout()
         buffer = io.BytesIO()
-        metadata = {"Date": None} if fmt == "svg" else None
+        metadata = {"Software": PICTURE_MARK} if fmt == "png" else {"Creator": PICTURE_MARK}
+        if fmt == "svg":
+            metadata["Date"] = None  # type: ignore[assignment]  # reproducible: no time stamp
         fig.savefig(buffer, format=fmt, dpi=dpi, metadata=metadata)
     finally:
         plt.close(fig)
-    return write_bytes_atomic(out, buffer.getvalue())
+    return write_bytes_atomic(out, buffer.getvalue(), **guard)
 
 
 def render_scenario_text(world: World, scenario: Scenario, width: int, height: int | None = None) -> Text:

@@ -2,22 +2,31 @@
 
 Topics (frame `map`, stamps = simulation time, message log times equal to the header stamps):
 
-    /human_states      hunav_msgs/msg/Agents          every frame: the people, as HuNavSim's agent manager
-    /robot_states      hunav_msgs/msg/Agent           every frame the robot was recorded
-    /agent_markers     visualization_msgs/MarkerArray every frame: DELETEALL, then a body per person and the robot
-    /tf                tf2_msgs/msg/TFMessage         every frame: map -> base_link (the robot)
-    /events            std_msgs/msg/String            one per event of events.jsonl, as a JSON object
-    /map               nav_msgs/msg/OccupancyGrid     once, latched: the planner's grid (100 occupied, 0 free)
-    /scenario_markers  visualization_msgs/MarkerArray once, latched: goals, routes, waypoints, fields, robot goal
-    /plan              nav_msgs/msg/Path              once, latched: the robot's planned path
-    /goal_pose         geometry_msgs/msg/PoseStamped  once: the robot's goal (HuNavSim's evaluator listens to it)
+    /human_states         hunav_msgs/msg/Agents          every frame: the people, as HuNavSim's agent manager
+    /robot_states         hunav_msgs/msg/Agent           every frame the robot was recorded
+    /agent_markers        visualization_msgs/MarkerArray every frame: DELETEALL, then a body per person and the robot
+    /tf                   tf2_msgs/msg/TFMessage         every frame: map -> base_link (the robot)
+    /events               std_msgs/msg/String            one per event of events.jsonl, as a JSON object
+    /map                  nav_msgs/msg/OccupancyGrid     once, latched: the scene's static map (exports/scene.py),
+                                                         the nav2 map of `grove export hunav`: walls and furniture,
+                                                         not inflated, over the extent that covers every goal
+    /grove/planning_grid  nav_msgs/msg/OccupancyGrid     once, latched: GROVE's planning grid (the building only,
+                                                         inflated by the largest body radius); not a robot's map
+    /scenario_markers     visualization_msgs/MarkerArray once, latched: goals, routes, waypoints, fields, robot goal
+    /plan                 nav_msgs/msg/Path              once, latched: the robot's planned path
+    /goal_pose            geometry_msgs/PoseStamped      once: the robot's goal (HuNavSim's evaluator listens to it)
 
 "Latched" topics are offered with a transient-local QoS profile in the bag's metadata, so `ros2 bag play`
 republishes them the way a map server does and late subscribers (RViz) still get them.
 
-`hunav_msgs` is HuNavSim's own package: Agent.msg and Agents.msg are shipped verbatim in
-`grove_tui/exports/msg/hunav_msgs/` (robotics-upo/hunav_sim at HUNAV_COMMIT, MIT licence) and registered
-by name, and the bag's connection carries their text, so HuNavSim's evaluator can replay it.
+`hunav_msgs` is HuNavSim's own package, in the version asked for (HUNAV_MSGS): 2.0 by default (Agent
+with a nested AgentBehavior: type, configuration, duration, force factors...), 1.0 on request (Agent with
+`uint8 behavior` and `behavior_state`). The .msg files of both are shipped verbatim in
+`grove_tui/exports/msg/hunav_msgs/<version>/` and registered by name; each bag connection stores their
+text (rosbag2's message definition), and the bag's metadata names the version and its source, so a
+reader without hunav_msgs decodes it and a HuNavSim installation of that version replays it to its
+evaluator. Every agent quantity (skin, behavior, goal radius, cyclic goals, radius) comes from
+exports/scene.py, as in the agents YAML.
 
 Speed: the per-frame messages of a crowd (Agents, MarkerArray) are byte templates. The layout of a
 frame's message depends only on which people it lists, so it is built once per set of ids and each
@@ -32,7 +41,7 @@ import math
 import os
 import struct
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -41,27 +50,59 @@ import numpy as np
 from grove_tui.errors import RosbagExportError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
+from grove_tui.exports.scene import agent_radius, behavior_values, goal_radius, skin
 from grove_tui.files import atomic_directory, check_output_dir
 from grove_tui.scenario.model import AgentSpec
 
-# robotics-upo/hunav_sim, branch humble (HuNavSim 1.0), commit of 2023-10-10; the .msg files last changed
-# in 2b4a780 (2022-07-06). Git blob ids of the shipped copies, so a test can prove they are verbatim.
-HUNAV_COMMIT = "afa974340901e244ce15a97e8ebc37c0699a3e6f"
-HUNAV_MSG_BLOBS = {
-    "Agent.msg": "8b5c7944e5ced2ea05ed10a1bef9787a1be62e4d",
-    "Agents.msg": "e029b25d84c4eb1bbe0bef856a8ec10b37653da5",
+MSG_ROOT = Path(__file__).with_name("msg") / "hunav_msgs"
+
+
+@dataclass(frozen=True)
+class HunavMsgs:
+    """One version of HuNavSim's hunav_msgs as shipped here: its .msg files and where they come from."""
+
+    version: str
+    source: str
+    blobs: dict[str, str]  # file name -> git blob id of the shipped copy (tests prove it verbatim)
+
+    @property
+    def folder(self) -> Path:
+        return MSG_ROOT / self.version
+
+    def text(self, name: str) -> str:
+        """The text of one shipped definition ("Agent.msg", ...)."""
+        return (self.folder / name).read_text(encoding="utf-8")
+
+    def types(self) -> dict[str, str]:
+        """hunav_msgs/msg/<Type> -> its .msg text."""
+        return {f"hunav_msgs/msg/{Path(name).stem}": self.text(name) for name in self.blobs}
+
+
+HUNAV_MSGS = {
+    # robotics-upo/hunav_sim, branch humble (HuNavSim 1.0), commit of 2023-10-10; the .msg files last
+    # changed in 2b4a780 (2022-07-06).
+    "1.0": HunavMsgs("1.0", "robotics-upo/hunav_sim@afa974340901e244ce15a97e8ebc37c0699a3e6f (humble, HuNavSim 1.0)",
+                     {"Agent.msg": "8b5c7944e5ced2ea05ed10a1bef9787a1be62e4d",
+                      "Agents.msg": "e029b25d84c4eb1bbe0bef856a8ec10b37653da5"}),
+    # HuNavSim 2.0 (robotics-upo/hunav_sim master: hunav_msgs/CMakeLists.txt@1576ef2 generates Agent, Agents
+    # and AgentBehavior; hunav_gazebo_wrapper WorldGenerator.cpp@4e0ac91 fills every AgentBehavior field).
+    # The files as the public code index holds them, vendored unchanged in Lady-Lex/arena-evaluation@b1afa1a.
+    "2.0": HunavMsgs("2.0", "robotics-upo/hunav_sim 2.0 (master; hunav_msgs/CMakeLists.txt@1576ef2), "
+                     "files as vendored in Lady-Lex/arena-evaluation@b1afa1a2701b345c98e0e708e597c5b880daa8c9",
+                     {"Agent.msg": "d4685d22c960fabc66e728a52b5fc44a83212105",
+                      "AgentBehavior.msg": "a38b55415cf98ec06994b40487ebe23efcd5248c",
+                      "Agents.msg": "49500db5a3ae79f24ebbcad54a7ce7499ca49f49"}),
 }
-MSG_DIR = Path(__file__).with_name("msg") / "hunav_msgs"
+DEFAULT_HUNAV_MSGS = "2.0"
 EXPORT_MARKER = ".grove-rosbag-export"
 STORAGES = ("mcap", "sqlite3")
 BAG_VERSION = 8  # rosbag2 metadata version 8: QoS as Humble writes it; Jazzy reads it too
 FRAME_ID = "map"
 ROBOT_FRAME = "base_link"
+PLANNING_GRID_TOPIC = "/grove/planning_grid"
 PERSON_HEIGHT = 1.7
 ROBOT_HEIGHT = 0.4
 PERSON, ROBOT = 1, 2  # hunav_msgs/Agent type constants
-BEHAVIORS = {"Regular": 1, "Impassive": 2, "Surprised": 3, "Scared": 4, "Curious": 5, "Threatening": 6}
-GOAL_RADIUS = 0.3
 SEPARATOR = "=" * 80
 
 
@@ -71,11 +112,7 @@ class RosbagExport:
     storage: str
     frames: int
     counts: dict[str, int]  # messages per topic
-
-
-def hunav_msg_text(name: str) -> str:
-    """The text of a shipped HuNavSim message definition ("Agent.msg", "Agents.msg")."""
-    return (MSG_DIR / name).read_text(encoding="utf-8")
+    hunav_msgs: str = DEFAULT_HUNAV_MSGS  # the hunav_msgs version of /human_states and /robot_states
 
 
 ROSBAGS_MODULES = ("rosbags.rosbag2", "rosbags.typesys", "rosbags.interfaces")
@@ -92,15 +129,24 @@ def _rosbags() -> None:
     require_extra("the ROS 2 bag export", "rosbags", ROSBAGS_MODULES, ROS_EXTRA)
 
 
-def ros_typestore() -> Any:
-    """ROS 2 Humble's message types plus HuNavSim's hunav_msgs, registered from the shipped .msg text."""
+def hunav_msgs(version: str) -> HunavMsgs:
+    """The shipped hunav_msgs of `version`; RosbagExportError (exit 2) for one GROVE does not ship."""
+    try:
+        return HUNAV_MSGS[version]
+    except KeyError:
+        raise RosbagExportError(f"hunav_msgs version {version!r}: GROVE ships {', '.join(HUNAV_MSGS)}",
+                                hint="Use --hunav-msgs 2.0 (HuNavSim 2.0, the default) or 1.0.") from None
+
+
+def ros_typestore(version: str = DEFAULT_HUNAV_MSGS) -> Any:
+    """ROS 2 Humble's message types plus HuNavSim's hunav_msgs of `version`, registered from the shipped .msg text."""
     _rosbags()
     from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
     store = get_typestore(Stores.ROS2_HUMBLE)
     types: dict[str, Any] = {}
-    for name in HUNAV_MSG_BLOBS:
-        types.update(get_types_from_msg(hunav_msg_text(name), f"hunav_msgs/msg/{Path(name).stem}"))
+    for msgtype, text in hunav_msgs(version).types().items():
+        types.update(get_types_from_msg(text, msgtype))
     store.register(types)
     return store
 
@@ -115,15 +161,17 @@ def _sections(msgdef: str) -> list[tuple[str, str]]:
     return out
 
 
-def hunav_msgdef(store: Any, msgtype: str) -> str:
+def hunav_msgdef(store: Any, msgtype: str, version: str = DEFAULT_HUNAV_MSGS) -> str:
     """The definition a bag records for a hunav_msgs type: HuNavSim's .msg text verbatim for hunav_msgs
     parts (comments and constants included, as rosbag2 stores it), the generated text for the rest."""
     generated, _ = store.generate_msgdef(msgtype, ros_version=2)
-    own = {"hunav_msgs/" + Path(name).stem: hunav_msg_text(name) for name in HUNAV_MSG_BLOBS}
+    own = {name.replace("/msg/", "/"): text for name, text in hunav_msgs(version).types().items()}
     main = msgtype.replace("/msg/", "/")
     pieces = []
     for name, text in _sections(generated):
         verbatim = own.get(name or main, text)
+        if verbatim and not verbatim.endswith("\n"):
+            verbatim += "\n"  # the next part's separator starts on a line of its own
         pieces.append(verbatim if not name else f"{SEPARATOR}\nMSG: {name}\n{verbatim}")
     return "".join(pieces)
 
@@ -188,16 +236,19 @@ class _Cdr:
 
 @dataclass(frozen=True)
 class _Static:
-    """What a body keeps from frame to frame: from the scenario, not the trajectories."""
+    """What a body keeps from frame to frame: from the scenario (exports/scene.py), not the trajectories."""
 
     id: int
     kind: int
     name: str
-    behavior: int
     group: int
     radius: float
     max_vel: float
     goal: tuple[float, float] | None
+    skin: int = 0
+    goal_radius: float = 0.0
+    cyclic_goals: bool = False
+    behavior: dict[str, Any] = field(default_factory=dict)  # hunav_msgs/AgentBehavior's fields (scene.behavior_values)
 
 
 _SLOTS_U32 = frozenset({"sec", "nanosec"})  # stamps; every other slot is a float
@@ -233,14 +284,18 @@ class _Template:
         return buf
 
 
-def _agent_fields(cdr: _Cdr, body: _Static, slots: dict[str, list[int]]) -> None:
-    """hunav_msgs/Agent in the field order of HuNavSim's Agent.msg, zeros where each frame writes."""
+def _agent_fields(cdr: _Cdr, body: _Static, slots: dict[str, list[int]], version: str) -> None:
+    """hunav_msgs/Agent in the field order of HuNavSim's Agent.msg of `version`, zeros where each frame writes."""
+    behavior = body.behavior
     cdr.i32(body.id)
     cdr.u8(body.kind)
-    cdr.u8(body.id % 5 if body.kind == PERSON else 0)  # skin, as the HuNavSim export assigns it
-    cdr.u8(body.behavior)
-    cdr.string(body.name)
-    cdr.u8(0)  # behavior_state: BEH_NO_ACTIVE (reactions are not recorded in trajectories)
+    cdr.u8(body.skin)
+    if version == "1.0":
+        cdr.u8(int(behavior.get("type", 0)))
+        cdr.string(body.name)
+        cdr.u8(0)  # behavior_state: BEH_NO_ACTIVE (reactions are not recorded in trajectories)
+    else:
+        cdr.string(body.name)
     cdr.i8(body.group)
     for key, offset in zip(("x", "y", "qz", "qw"), cdr.pose(0.0, 0.0, 0.0, 0.0)):
         slots[key].append(offset)
@@ -255,12 +310,21 @@ def _agent_fields(cdr: _Cdr, body: _Static, slots: dict[str, list[int]]) -> None
     cdr.f32(body.radius)
     slots["linear_vel"].append(cdr.f32(0.0))
     slots["angular_vel"].append(cdr.f32(0.0))
+    if version != "1.0":  # hunav_msgs/AgentBehavior behavior
+        cdr.u8(int(behavior.get("type", 0)))
+        cdr.u8(0)  # state: BEH_NO_ACTIVE (reactions are not recorded in trajectories)
+        cdr.u8(int(behavior.get("configuration", 0)))
+        cdr.f32(float(behavior.get("duration", 0.0)))
+        cdr.u8(1 if behavior.get("once") else 0)
+        for key in ("vel", "dist", "social_force_factor", "goal_force_factor", "obstacle_force_factor",
+                    "other_force_factor"):
+            cdr.f32(float(behavior.get(key, 0.0)))
     goals = [] if body.goal is None else [body.goal]
     cdr.u32(len(goals))
     for gx, gy in goals:
         cdr.pose(gx, gy, 0.0, 0.0)
-    cdr.u8(0)  # cyclic_goals: GROVE's agents do not loop
-    cdr.f32(GOAL_RADIUS)
+    cdr.u8(1 if body.cyclic_goals else 0)
+    cdr.f32(body.goal_radius)
     cdr.u32(0)  # closest_obs: not recorded
 
 
@@ -271,7 +335,7 @@ def _slots(*names: str) -> dict[str, list[int]]:
 _AGENT_SLOTS = ("x", "y", "qz", "qw", "yaw", "vx", "vy", "wz", "linear_vel", "angular_vel")
 
 
-def agents_template(bodies: Sequence[_Static]) -> _Template:
+def agents_template(bodies: Sequence[_Static], version: str = DEFAULT_HUNAV_MSGS) -> _Template:
     cdr = _Cdr()
     slots = _slots("sec", "nanosec", *_AGENT_SLOTS)
     sec = cdr.header(FRAME_ID)
@@ -279,14 +343,14 @@ def agents_template(bodies: Sequence[_Static]) -> _Template:
     slots["nanosec"].append(sec + 4)
     cdr.u32(len(bodies))
     for body in bodies:
-        _agent_fields(cdr, body, slots)
+        _agent_fields(cdr, body, slots, version)
     return _Template(cdr, slots)
 
 
-def agent_template(body: _Static) -> _Template:
+def agent_template(body: _Static, version: str = DEFAULT_HUNAV_MSGS) -> _Template:
     cdr = _Cdr()
     slots = _slots(*_AGENT_SLOTS)
-    _agent_fields(cdr, body, slots)
+    _agent_fields(cdr, body, slots, version)
     return _Template(cdr, slots)
 
 
@@ -407,10 +471,11 @@ def _bodies(bundle: SimulatedBundle) -> tuple[dict[int, _Static], _Static | None
         if not -128 <= agent.group <= 127:
             raise RosbagExportError(f"{bundle.path / 'scenario.yaml'}: agent {agent.id} is in group {agent.group}; "
                                     "hunav_msgs/Agent's group_id is an int8 (-128..127)")
-        people[agent.id] = _Static(agent.id, PERSON, f"agent{agent.id}", BEHAVIORS.get(agent.behavior, 1),
-                                   agent.group, agent.radius, agent.max_vel, _final_goal(agent))
+        people[agent.id] = _Static(agent.id, PERSON, f"agent{agent.id}", agent.group, agent_radius(agent),
+                                   agent.max_vel, _final_goal(agent), skin=skin(agent), goal_radius=goal_radius(agent),
+                                   cyclic_goals=agent.cyclic_goals, behavior=behavior_values(agent))
     robot = bundle.scenario.robot
-    body = None if robot is None else _Static(0, ROBOT, "robot", 0, -1, robot.radius, robot.max_vel, robot.goal)
+    body = None if robot is None else _Static(0, ROBOT, "robot", -1, robot.radius, robot.max_vel, robot.goal)
     return people, body
 
 
@@ -424,24 +489,26 @@ def is_rosbag_export(path: Path) -> bool:
 
 
 def export_rosbag(bundle_dir: str | Path, out_dir: str | Path, *, storage: str = "mcap",
-                  overwrite: bool = False) -> RosbagExport:
-    """Write the simulated bundle as a ROS 2 bag folder `out_dir` (complete, or not at all)."""
+                  overwrite: bool = False, hunav_msgs_version: str = DEFAULT_HUNAV_MSGS) -> RosbagExport:
+    """Write the simulated bundle as a ROS 2 bag folder `out_dir` (complete, or not at all), its people
+    as hunav_msgs of `hunav_msgs_version` ("2.0", HuNavSim 2.0, or "1.0")."""
     if storage not in STORAGES:
         raise RosbagExportError(f"storage must be one of {', '.join(STORAGES)}, got {storage!r}")
+    hunav_msgs(hunav_msgs_version)
     _rosbags()
     out = check_output_dir(out_dir, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite)
     bundle = open_simulated_bundle(bundle_dir)
-    store = ros_typestore()
+    store = ros_typestore(hunav_msgs_version)
     with atomic_directory(out, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite) as stage:
         # rosbags names the storage file after the bag folder: write it in a sub-folder of the final
         # name, then lift its files into the staging folder that takes the output's place.
         inner = stage / out.name
-        frames, counts = _write_bag(bundle, store, inner, storage)
+        frames, counts = _write_bag(bundle, store, inner, storage, hunav_msgs_version)
         for entry in os.listdir(inner):
             os.replace(inner / entry, stage / entry)
         os.rmdir(inner)
         (stage / EXPORT_MARKER).write_text("written by grove export rosbag\n", encoding="utf-8")
-    return RosbagExport(out, storage, frames, counts)
+    return RosbagExport(out, storage, frames, counts, hunav_msgs_version)
 
 
 def _qos(latched: bool) -> Any:
@@ -454,7 +521,8 @@ def _qos(latched: bool) -> Any:
                liveliness_lease_duration=default, avoid_ros_namespace_conventions=False)
 
 
-def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str) -> tuple[int, dict[str, int]]:
+def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str,
+               version: str = DEFAULT_HUNAV_MSGS) -> tuple[int, dict[str, int]]:
     from rosbags.rosbag2 import CompressionFormat, CompressionMode, StoragePlugin, Writer
 
     people, robot_body = _bodies(bundle)
@@ -466,10 +534,10 @@ def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str) ->
             raise RosbagExportError(f"{bundle.trajectories}: person {i} is not an agent of "
                                     f"{bundle.path / 'scenario.yaml'}; simulate the bundle again") from None
 
-    agents = _Cached(lambda ids, _robot: agents_template([person(i) for i in ids]))
+    agents = _Cached(lambda ids, _robot: agents_template([person(i) for i in ids], version))
     bodies = _Cached(lambda ids, robot: bodies_template([person(i) for i in ids]
                                                         + ([robot_body] if robot and robot_body else [])))
-    robot_agent = None if robot_body is None else agent_template(robot_body)
+    robot_agent = None if robot_body is None else agent_template(robot_body, version)
     people_turn, robot_turn = _Turn(), _Turn()
 
     frames = bundle.frames()
@@ -486,14 +554,18 @@ def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str) ->
     scenario = bundle.scenario
     for key, value in (("grove.world", scenario.world), ("grove.preset", scenario.preset),
                        ("grove.prompt", scenario.prompt), ("grove.seed", str(scenario.seed)),
-                       ("hunav_msgs.source", f"robotics-upo/hunav_sim@{HUNAV_COMMIT}")):
+                       ("grove.map", "/map: the scene's static map (walls, furniture), not inflated; the nav2 map "
+                                     "of grove export hunav"),
+                       ("grove.planning_grid", f"{PLANNING_GRID_TOPIC}: GROVE's planning grid, the building only, "
+                                               f"inflated by {bundle.grid.inflation:g} m"),
+                       ("hunav_msgs.version", version), ("hunav_msgs.source", hunav_msgs(version).source)):
         writer.set_custom_data(key, value)
 
     with writer:
         def connect(topic: str, msgtype: str, latched: bool = False) -> Any:
             qos = [_qos(latched)]
             if msgtype.startswith("hunav_msgs/"):
-                return writer.add_connection(topic, msgtype, msgdef=hunav_msgdef(store, msgtype),
+                return writer.add_connection(topic, msgtype, msgdef=hunav_msgdef(store, msgtype, version),
                                              rihs01=store.hash_rihs01(msgtype), offered_qos_profiles=qos)
             return writer.add_connection(topic, msgtype, typestore=store, offered_qos_profiles=qos)
 
@@ -576,9 +648,9 @@ def _event_message(store: Any, event: Any) -> bytes:
     return store.serialize_cdr(store.types["std_msgs/msg/String"](data=text), "std_msgs/msg/String")
 
 
-def _map_message(bundle: SimulatedBundle, store: Any, ns: int) -> bytes:
+def _map_message(grid: Any, store: Any, ns: int) -> bytes:
+    """nav_msgs/OccupancyGrid of `grid` (100 occupied, 0 free)."""
     T = store.types
-    grid = bundle.grid
     sec, nanosec = _stamp(ns)
     info = T["nav_msgs/msg/MapMetaData"](
         map_load_time=T["builtin_interfaces/msg/Time"](sec=sec, nanosec=nanosec), resolution=float(grid.resolution),
@@ -616,13 +688,15 @@ def _scene_markers(bundle: SimulatedBundle, store: Any, ns: int) -> bytes:
     markers = []
     for agent in bundle.scenario.agents:
         rgba = group_rgba(agent.group)
+        size = 2 * goal_radius(agent)  # the goal's disc, as agents YAML and hunav_msgs/Agent say
         if agent.goals:
             gx, gy = agent.goals[-1]
-            markers.append(marker("goals", agent.id, SPHERE, rgba, (0.3, 0.3, 0.3), pose=_pose(store, gx, gy, 0.15)))
+            markers.append(marker("goals", agent.id, SPHERE, rgba, (size, size, size),
+                                  pose=_pose(store, gx, gy, size / 2)))
             markers.append(marker("routes", agent.id, LINE_STRIP, group_rgba(agent.group, 0.6), (0.04, 0, 0),
                                   points=[agent.start, *agent.goals]))
         if len(agent.goals) > 1:
-            markers.append(marker("waypoints", agent.id, SPHERE_LIST, rgba, (0.12, 0.12, 0.12),
+            markers.append(marker("waypoints", agent.id, SPHERE_LIST, rgba, (size, size, size),
                                   points=agent.goals[:-1]))
     for k, (field_id, field) in enumerate(sorted(bundle.fields.items())):
         segments = arrow_segments(field_arrows(field)).reshape(-1, 2)
@@ -639,7 +713,8 @@ def _scene_markers(bundle: SimulatedBundle, store: Any, ns: int) -> bytes:
 def _static_messages(bundle: SimulatedBundle, store: Any, ns: int) -> list[tuple[str, str, bool, bytes]]:
     """(topic, type, latched, data) of what is published once, at the start."""
     T = store.types
-    out = [("/map", "nav_msgs/msg/OccupancyGrid", True, _map_message(bundle, store, ns)),
+    out = [("/map", "nav_msgs/msg/OccupancyGrid", True, _map_message(bundle.scene.static_map, store, ns)),
+           (PLANNING_GRID_TOPIC, "nav_msgs/msg/OccupancyGrid", True, _map_message(bundle.grid, store, ns)),
            ("/scenario_markers", "visualization_msgs/msg/MarkerArray", True, _scene_markers(bundle, store, ns))]
     robot = bundle.scenario.robot
     if robot is not None:

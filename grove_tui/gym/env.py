@@ -25,6 +25,10 @@ norm clipped to max speed by the simulator.
 
 terminated: the robot reached its goal (within goal_tolerance) or collided (a gap to a person below
 the HuNavSim evaluator's 2 cm, or its body overlapping a wall); truncated: the time limit passed.
+
+Every argument, reset option and action is checked against the bounds of gym/config.py (documented in
+docs/training.md) before it is used: GymError otherwise, also gymnasium's InvalidAction for an action
+and ResetNeeded for a step outside an episode.
 """
 
 from __future__ import annotations
@@ -42,7 +46,9 @@ from gymnasium import spaces
 
 from grove_tui.analysis.metrics import COLLISION_GAP, Trajectories, robot_metrics
 from grove_tui.errors import GroveError, GymError
-from grove_tui.gym.config import BEHAVIORS, KINEMATICS, ObservationConfig, RewardWeights, coerce
+from grove_tui.gym.config import (BEHAVIORS, ENV_BOUNDS, Bound, KINEMATICS, MAX_SUBSTEPS, GymActionError, GymResetNeeded,
+                                  ObservationConfig, RewardWeights, checked_number, checked_paths, checked_seeds,
+                                  checked_text, coerce)
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
@@ -57,6 +63,7 @@ TIME_LIMIT_SLACK = 10.0
 TIME_LIMIT_FLOOR = 20.0
 WAYPOINT_REACHED = 0.5  # metres: a path point this close counts as passed
 POSITION_LIMIT = 1.0e4  # metres; observation bounds, far beyond any world
+HISTORY_START = 1024  # control steps the episode history holds before it first grows
 
 
 class SocialNavEnv(gymnasium.Env):
@@ -80,26 +87,37 @@ class SocialNavEnv(gymnasium.Env):
                  goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
                  reward: RewardWeights | dict | None = None,
                  observation: ObservationConfig | dict | None = None, metrics_every: int = 1,
-                 pedestrian_model: str | None = None) -> None:
+                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: Any) -> None:
         super().__init__()
-        if kinematics not in KINEMATICS:
+        if unknown:
+            names = ", ".join(sorted(map(str, unknown))[:5])
+            raise GymError(f"unknown argument(s) {names} for {ENV_ID}",
+                           hint="known: bundles, world, preset, prompt, seeds, cache, kinematics, control_period, "
+                                "sim_dt, time_limit, max_angular_speed, goal_tolerance, start_jitter, reward, "
+                                "observation, metrics_every, pedestrian_model (docs/training.md)")
+        if render_mode is not None:
+            raise GymError(f"render_mode {render_mode!r}: this environment does not render",
+                           hint="record an episode (env.unwrapped.record_episode) and draw it with grove picture")
+        if not isinstance(kinematics, str) or kinematics not in KINEMATICS:
             raise GymError(f"unknown kinematics {kinematics!r}", hint=f"use one of {', '.join(KINEMATICS)}")
-        if not (sim_dt > 0 and math.isfinite(sim_dt)):
-            raise GymError(f"sim_dt must be a positive number of seconds, got {sim_dt!r}")
-        substeps = round(control_period / sim_dt) if control_period > 0 else 0
+        sim_dt = checked_number(sim_dt, "sim_dt", ENV_BOUNDS["sim_dt"])
+        control_period = checked_number(control_period, "control_period", ENV_BOUNDS["control_period"])
+        substeps = round(control_period / sim_dt)
         if substeps < 1 or abs(substeps * sim_dt - control_period) > 1e-9:
             raise GymError(f"control_period {control_period!r} s must be a positive multiple of sim_dt {sim_dt} s")
-        if time_limit is not None and not (time_limit > 0 and math.isfinite(time_limit)):
-            raise GymError(f"time_limit must be a positive number of seconds or None, got {time_limit!r}")
-        if not (max_angular_speed > 0 and math.isfinite(max_angular_speed)):
-            raise GymError(f"max_angular_speed must be a positive number, got {max_angular_speed!r}")
-        if not goal_tolerance > 0:
-            raise GymError(f"goal_tolerance must be positive, got {goal_tolerance!r}")
-        if not (start_jitter >= 0 and math.isfinite(start_jitter)):
-            raise GymError(f"start_jitter must be a number of metres >= 0, got {start_jitter!r}")
-        if isinstance(metrics_every, bool) or not isinstance(metrics_every, int) or metrics_every < 0:
-            raise GymError(f"metrics_every must be a whole number >= 0 (0: only at the episode's end), "
-                           f"got {metrics_every!r}")
+        if substeps > MAX_SUBSTEPS:
+            raise GymError(f"control_period / sim_dt is {substeps:,} simulation steps per step; at most "
+                           f"{MAX_SUBSTEPS:,}")
+        if time_limit is not None:
+            time_limit = checked_number(time_limit, "time_limit", ENV_BOUNDS["time_limit"])
+        max_angular_speed = checked_number(max_angular_speed, "max_angular_speed", ENV_BOUNDS["max_angular_speed"])
+        goal_tolerance = checked_number(goal_tolerance, "goal_tolerance", ENV_BOUNDS["goal_tolerance"])
+        start_jitter = checked_number(start_jitter, "start_jitter", ENV_BOUNDS["start_jitter"])
+        metrics_every = checked_number(metrics_every, "metrics_every", ENV_BOUNDS["metrics_every"])
+        if pedestrian_model is not None and not isinstance(pedestrian_model, str):
+            raise GymError(f"pedestrian_model must be a model's name, got {pedestrian_model!r}"[:200])
+        if cache is not None and not isinstance(cache, (str, os.PathLike)):
+            raise GymError(f"cache must be a folder path, got {type(cache).__name__}")
         self.kinematics = kinematics
         self.sim_dt = float(sim_dt)
         self.substeps = int(substeps)
@@ -123,11 +141,12 @@ class SocialNavEnv(gymnasium.Env):
         if bundles is not None:
             if world is not None or prompt is not None:
                 raise GymError("give either bundles or world/preset/prompt, not both")
-            paths = bundle_list(bundles)
+            paths = bundle_list(checked_paths(bundles))
         else:
             if world is None or preset is None or prompt is None:
                 raise GymError("no scenarios", hint="pass bundles=..., or world=, preset=, prompt= and seeds=")
-            paths = generated_scenarios(world, preset, prompt, seeds, cache=cache)
+            paths = generated_scenarios(checked_text(world, "world"), checked_text(preset, "preset"),
+                                        checked_text(prompt, "prompt"), checked_seeds(seeds), cache=cache)
         self.scenarios: list[LoadedScenario] = [load_scenario(p, self.obs_config.patch_resolution) for p in paths]
         self._one_hot = [behavior_one_hot(s.behaviors) for s in self.scenarios]
 
@@ -157,15 +176,19 @@ class SocialNavEnv(gymnasium.Env):
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[dict, dict]:
         """Load the next scenario (options={"scenario": i} picks one), place the robot at its start."""
-        super().reset(seed=seed)
+        super().reset(seed=seed)  # gymnasium's own error for a seed that is not a whole number >= 0
         if seed is not None:
             self._cursor = int(seed) % len(self.scenarios)
         index = self._cursor
-        if options and "scenario" in options:
-            index = int(options["scenario"])
-            if not 0 <= index < len(self.scenarios):
-                raise GymError(f"options['scenario'] = {index} is out of range",
-                               hint=f"this environment has {len(self.scenarios)} scenarios")
+        if options is not None:
+            if not isinstance(options, dict):
+                raise GymError(f"reset options must be a dict such as {{'scenario': 0}}, got {type(options).__name__}")
+            unknown = [str(key) for key in options if key != "scenario"]
+            if unknown:
+                raise GymError(f"unknown reset option(s) {', '.join(unknown[:5])}", hint="the one option is 'scenario'")
+            if "scenario" in options:
+                last = len(self.scenarios) - 1
+                index = checked_number(options["scenario"], "options['scenario']", Bound(0, last, whole=True))
         self._cursor = (index + 1) % len(self.scenarios)
         self.scenario_index = index
         self.current = self.scenarios[index]
@@ -196,21 +219,19 @@ class SocialNavEnv(gymnasium.Env):
         self.episode_return = 0.0
         self.outcome = ""
         self.episode_actions = []
-        self.history = _History(capacity=int(math.ceil(self.time_limit / self.control_period)) + 2,
-                                 people=len(self.current.scenario.agents))
+        # Grown as the episode runs (doubling), never sized for the whole time limit up front.
+        self.history = _History(capacity=min(HISTORY_START, int(math.ceil(self.time_limit / self.control_period)) + 2),
+                                people=len(self.current.scenario.agents))
         self.history.append(self.sim, self._robot_pose())
         self._metrics: dict[str, float] = {}
         return self._observation(), self._info({})
 
     def step(self, action: Any) -> tuple[dict, float, bool, bool, dict]:
         if self.sim is None:
-            raise GymError("step() before reset()", hint="call reset() first")
+            raise GymResetNeeded("step() before reset()", hint="call reset() first")
         if self.outcome:
-            raise GymError(f"step() after the episode ended ({self.outcome})", hint="call reset() first")
-        command = np.asarray(action, dtype=np.float64).reshape(-1)
-        if command.shape != (2,) or not np.all(np.isfinite(command)):
-            raise GymError(f"action must be two finite numbers, got {action!r}")
-        command = np.clip(command, self.action_space.low, self.action_space.high)
+            raise GymResetNeeded(f"step() after the episode ended ({self.outcome})", hint="call reset() first")
+        command = self._command(action)
         self.episode_actions.append((float(command[0]), float(command[1])))
         crowd = self.sim.crowd
         collision = ""
@@ -243,6 +264,25 @@ class SocialNavEnv(gymnasium.Env):
         self.history.append(self.sim, self._robot_pose())
         info = self._info(terms, collision=collision)
         return self._observation(), reward, terminated, truncated, info
+
+    def _command(self, action: Any) -> np.ndarray:
+        """The action as two float64s, clipped to the action space; GymActionError for anything else
+        (a string, a dict, complex or boolean values, an int too large for a float, NaN or infinity)."""
+        wanted = "an action must be two finite numbers (an array, list or tuple)"
+        if isinstance(action, (str, bytes, dict, set)):
+            raise GymActionError(f"{wanted}, got {type(action).__name__}")
+        try:
+            values = np.asarray(action)
+            if values.dtype.kind not in "iuf" or values.size != 2:
+                raise GymActionError(f"{wanted}, got {_short(action)}")
+            command = values.astype(np.float64).reshape(-1)
+        except GymActionError:
+            raise
+        except (TypeError, ValueError, OverflowError):
+            raise GymActionError(f"{wanted}, got {_short(action)}") from None
+        if not np.all(np.isfinite(command)):
+            raise GymActionError(f"{wanted}, got {_short(action)}")
+        return np.clip(command, self.action_space.low, self.action_space.high)
 
     def close(self) -> None:
         self._release()
@@ -390,6 +430,14 @@ class SocialNavEnv(gymnasium.Env):
         if self.sim is None:
             raise GymError("nothing to record before reset()", hint="run an episode first")
         return record_episode(self, out_dir, overwrite=overwrite)
+
+
+def _short(value: Any) -> str:
+    try:
+        text = repr(value)
+    except ValueError:  # an int too long to print
+        return f"<{type(value).__name__}>"
+    return " ".join(text.split())[:80]
 
 
 def _wrap(angle: float) -> float:

@@ -27,32 +27,65 @@ request gives the same tokens cold, warm or restored (tests/llm/test_kv_cache.py
 from __future__ import annotations
 
 import codecs
+import faulthandler
 import os
 import sys
 import time
+import traceback
 from multiprocessing.connection import Connection
 from multiprocessing.synchronize import Event
 from pathlib import Path
 from typing import Any
 
 
-def _redirect_stderr(log_path: str) -> None:
-    """llama.cpp writes to fd 2; in a terminal app that would paint over the screen, so it goes to a log."""
-    Path(log_path).parent.mkdir(parents=True, exist_ok=True)
-    log_fd = os.open(log_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
+# A log past this size is moved to <log>.1 when a worker starts (one older log kept), so it never grows
+# without bound; below it, each worker appends, so a crash's reason survives the restart that follows.
+MAX_LOG_BYTES = 4 * 1024 * 1024
+
+
+def _redirect_stderr(log_path: str, model_path: str = "") -> None:
+    """llama.cpp writes to fd 2; in a terminal app that would paint over the screen, so it goes to a log.
+
+    The log is appended to, one section per worker, each opened by a line naming the process and the
+    model: a worker that died and the one started after it (the run "passed when repeated") both keep
+    their lines. Python-level faults (a segfault or abort in llama.cpp) print their traceback there too.
+    """
+    path = Path(log_path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        if path.stat().st_size > MAX_LOG_BYTES:
+            os.replace(path, path.with_name(path.name + ".1"))
+    except OSError:
+        pass
+    log_fd = os.open(log_path, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
     os.dup2(log_fd, 2)
     os.dup2(log_fd, 1)
     os.close(log_fd)
     sys.stderr = open(2, "w", buffering=1, closefd=False)  # noqa: SIM115 - lives as long as the process
     sys.stdout = open(1, "w", buffering=1, closefd=False)  # noqa: SIM115
+    stamp = time.strftime("%Y-%m-%d %H:%M:%S")
+    print(f"--- model worker {os.getpid()} started {stamp} for {model_path or '?'} ---", file=sys.stderr, flush=True)
+    faulthandler.enable(file=sys.stderr, all_threads=True)
+
+
+def _log_crash(error: BaseException) -> None:
+    """The reason a worker stops unexpectedly, in its log (the parent only sees an exit code)."""
+    try:
+        print(f"--- model worker {os.getpid()} stopped: {type(error).__name__}: {error} ---", file=sys.stderr)
+        traceback.print_exception(error, file=sys.stderr)
+        sys.stderr.flush()
+    except Exception:  # noqa: BLE001 - the log itself may be the problem; the exit code still tells
+        pass
 
 
 def _log_tail(log_path: str, lines: int = 6) -> str:
+    """The last lines this worker wrote (its section of the log, after its start line)."""
     try:
         text = Path(log_path).read_text(encoding="utf-8", errors="replace")
     except OSError:
         return ""
-    useful = [line for line in text.splitlines() if line.strip()]
+    mine = text.rsplit(f"--- model worker {os.getpid()} started", 1)[-1]
+    useful = [line for line in mine.splitlines()[1:] if line.strip()]
     return "\n".join(useful[-lines:])
 
 
@@ -71,8 +104,17 @@ def tune_openmp_for_llama() -> None:
 
 def serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threads: int, architecture: str,
           log_path: str, kv_cache_dir: str | None = None) -> None:
-    """Entry point of the worker process (multiprocessing spawn target)."""
-    _redirect_stderr(log_path)
+    """Entry point of the worker process (multiprocessing spawn target); any error that ends it is logged."""
+    _redirect_stderr(log_path, model_path)
+    try:
+        _serve(conn, cancel, model_path, n_ctx, n_threads, architecture, log_path, kv_cache_dir)
+    except BaseException as error:
+        _log_crash(error)
+        raise
+
+
+def _serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threads: int, architecture: str,
+           log_path: str, kv_cache_dir: str | None) -> None:
     tune_openmp_for_llama()
     try:
         from llama_cpp import Llama

@@ -33,9 +33,12 @@ RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
 MAX_TRAJECTORY_BYTES = 64 * 1024**3
 # Where a bundle keeps a world file of its own (an imported HuNavSim scenario's open floor).
 WORLD_FOLDER = "world"
+# Where an imported bundle keeps HuNavSim's tree files (and what they include), verbatim.
+HUNAV_FOLDER = "hunav"
 # Every name a bundle's own writers use: no other output may take one (`--out BUNDLE/trees`, an
 # imported world called scenario.yaml). episode.json is a recorded Gym episode's.
-OWN_NAMES = (SCENARIO_FILE, "trees", "fields", GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json", WORLD_FOLDER)
+OWN_NAMES = (SCENARIO_FILE, "trees", "fields", GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json", WORLD_FOLDER,
+             HUNAV_FOLDER)
 # Files at fixed places: a tree, field or world file named like one of them would overwrite it.
 FIXED_FILES = frozenset({SCENARIO_FILE, GRID_FILE, REPORT_FILE, *RUN_FILES, "episode.json"})
 WHAT = "scenario bundle"

@@ -39,6 +39,65 @@ MAX_AGENTS = 100_000
 # bodies that no longer overlap, 0.35 (a 0.7 m disc) wedged in 1 m doors: 0.4-0.8 persons/s where
 # people pass 1.3-1.9 (RiMEA 12, analysis/rimea.py).
 DEFAULT_AGENT_RADIUS = 0.25
+# The radius of an agent's goals, one value in every file that names it (agents YAML, exported tree
+# tolerances, ROS 2 bag, MCAP): HuNavSim 2.0's GoTo gives every goal it walks to this radius
+# (go_to_node.cpp), and a goal counts as reached within radius + 0.1 m (AgentManager::goalReached, and
+# GROVE's GoTo). An imported agent keeps its file's `goal_radius`.
+DEFAULT_GOAL_RADIUS = 0.1
+HUNAV_LAYOUTS = ("1.0", "2.0")  # agents YAML layouts: goals named per agent / global_goals ids
+HUNAV_BEHAVIOR_TYPES = ("name", "number")  # behavior.type written as "Regular"... / as 1..6
+
+
+@dataclass(frozen=True)
+class HunavBehavior:
+    """An agent's `behavior` block as a HuNavSim agents YAML gave it (hunav_msgs/AgentBehavior's
+    parameters). None: the file left the key out, HuNavSim's loader default applies, and the export
+    leaves it out again."""
+
+    configuration: int | None = None  # 0 default, 1 custom, 2 random normal, 3 random uniform
+    duration: float | None = None
+    once: bool | None = None
+    vel: float | None = None
+    dist: float | None = None
+    goal_force_factor: float | None = None
+    obstacle_force_factor: float | None = None
+    social_force_factor: float | None = None
+    other_force_factor: float | None = None
+
+
+@dataclass(frozen=True)
+class HunavAgent:
+    """What a HuNavSim agents YAML says of an agent beyond GROVE's own fields, kept by `grove import
+    hunav` so `grove export hunav` writes it back; None (or empty) where the file had nothing."""
+
+    name: str  # the agent's key in the file (`agent7` may have id 3)
+    skin: int | None = None
+    z: float | None = None  # init_pose.z (Gazebo's actors stand at 1.25)
+    behavior: HunavBehavior | None = None  # None: HuNavSim 1.0's `behavior: <type number>`, no block
+    goal_names: tuple[str, ...] = ()  # 1.0 layout: the key of each goal (g0, g1, ...)
+    goal_headings: tuple[float | None, ...] = ()  # 1.0 layout: each goal's h
+    goal_ids: tuple[int, ...] = ()  # 2.0 layout: the global_goals ids, as listed
+    tree_file: str = ""  # 2.0 layout: HuNavSim's tree file, kept verbatim in the bundle
+    tree_digest: str = ""  # SHA-256 of the GROVE tree import made; while equal, the export writes tree_file
+    keys: tuple[str, ...] = ()  # the agent's keys in the file, in order ("init_pose.x", "g0.h", ...)
+
+
+@dataclass(frozen=True)
+class HunavSource:
+    """The HuNavSim agents YAML a bundle was imported from: its layout and top-level parameters
+    (None where the file had none), so the export writes the same file back."""
+
+    layout: str  # "1.0" or "2.0" (HUNAV_LAYOUTS)
+    file: str  # the agents YAML's file name
+    agents: tuple[str, ...]  # its `agents` list, in its order
+    behavior_type: str = "name"  # HUNAV_BEHAVIOR_TYPES
+    base_name: str | None = None  # yaml_base_name
+    simulator: str | None = None
+    map: str | None = None
+    publish_people: bool | None = None
+    keys: tuple[str, ...] = ()  # the top-level keys of `ros__parameters`, in order
+    grove_comment: bool = False  # the file carried GROVE's own line (an earlier `grove export hunav`)
+    includes: tuple[str, ...] = ()  # files its trees <include>, kept verbatim under hunav/ (relative paths)
 
 
 @dataclass(frozen=True)
@@ -53,6 +112,21 @@ class AgentSpec:
     max_vel: float = 1.0  # SFM desired speed (HuNavSim `max_vel`)
     label: str = ""  # the draft group label the agent came from ("patients", "family")
     behavior: str = "Regular"  # HuNavSim reaction to the robot: Regular, Impassive, Surprised, Scared, Curious, Threatening
+    goal_radius: float = DEFAULT_GOAL_RADIUS  # metres; reached within goal_radius + 0.1 (HuNavSim's rule)
+    cyclic_goals: bool = True  # HuNavSim trees (RegularNav, UpdateGoal) walk `goals` round and round (the loader's default)
+    heading: float | None = None  # initial yaw in radians; None: facing the first goal
+    hunav: HunavAgent | None = None  # set by `grove import hunav`
+
+    def initial_heading(self) -> float:
+        """The yaw it starts with, in the simulation and every export: `heading`, else facing its first
+        goal (0 without one, or when that goal is where it stands)."""
+        if self.heading is not None:
+            return float(self.heading)
+        if self.goals:
+            dx, dy = self.goals[0][0] - self.start[0], self.goals[0][1] - self.start[1]
+            if math.hypot(dx, dy) > 1e-9:
+                return math.atan2(dy, dx)
+        return 0.0
 
 
 @dataclass(frozen=True)
@@ -78,6 +152,7 @@ class Scenario:
     # HuNavSim global goals (id -> point) that trees name by `goal_id` alone: set when a scenario is
     # imported from HuNavSim (`grove import hunav`); generated scenarios write x/y beside every goal_id.
     global_goals: dict[int, Point] = field(default_factory=dict)
+    hunav: HunavSource | None = None  # the HuNavSim file an imported scenario came from
 
     @property
     def grid_inflation(self) -> float:
@@ -92,6 +167,10 @@ class Scenario:
             data["global_goals"] = {int(k): [float(v[0]), float(v[1])] for k, v in self.global_goals.items()}
         else:
             del data["global_goals"]  # generated bundles stay as they were
+        if self.hunav is None:
+            del data["hunav"]
+        else:
+            data["hunav"] = _present(asdict(self.hunav))
         return data
 
     def dump_yaml(self) -> str:
@@ -141,6 +220,7 @@ class Scenario:
                 resolution=_number(data.get("resolution", 0.1), f"{source}: resolution", 0.01, 2.0),
                 global_goals={int(k): _point(v, f"{source}: global_goals[{k}]")
                               for k, v in (data.get("global_goals") or {}).items()},
+                hunav=None if data.get("hunav") is None else _hunav_source(data["hunav"], f"{source}: hunav"),
             )
         except KeyError as exc:
             raise ScenarioError(f"{source}: missing key {exc.args[0]!r}") from None
@@ -213,11 +293,120 @@ def _check_unique_ids(agents: tuple[AgentSpec, ...], source: str) -> None:
         seen.add(agent.id)
 
 
+def _present(data: dict[str, Any]) -> dict[str, Any]:
+    """`data` without its None values and empty sequences, nested mappings likewise."""
+    out: dict[str, Any] = {}
+    for key, value in data.items():
+        if isinstance(value, dict):
+            value = _present(value)
+        if value is None or value == () or value == [] or value == "":
+            continue
+        out[key] = list(value) if isinstance(value, tuple) else value
+    return out
+
+
 def _agent_to_dict(agent: AgentSpec) -> dict[str, Any]:
     data = asdict(agent)
     data["start"] = list(agent.start)
     data["goals"] = [list(g) for g in agent.goals]
+    # What HuNavSim's files carry: written only when it differs from a generated agent's, so generated
+    # bundles stay as they were.
+    if agent.goal_radius == DEFAULT_GOAL_RADIUS:
+        del data["goal_radius"]
+    if agent.cyclic_goals:
+        del data["cyclic_goals"]
+    if agent.heading is None:
+        del data["heading"]
+    if agent.hunav is None:
+        del data["hunav"]
+    else:
+        data["hunav"] = _present(data["hunav"])
     return data
+
+
+def _optional(data: dict[str, Any], key: str, kind: type, where: str) -> Any:
+    """`data[key]` checked to be of `kind` (a float also takes an int), or None when absent."""
+    value = data.get(key)
+    if value is None:
+        return None
+    if kind is float:
+        return _number(value, f"{where}.{key}", -MAX_COORDINATE, MAX_COORDINATE)
+    if kind is int:
+        return _integer(value, f"{where}.{key}", -(2**31), 2**31 - 1)
+    if kind is bool and not isinstance(value, bool):
+        raise ScenarioError(f"{where}.{key}: expected true or false, got {_short(value)}")
+    if kind is str and not isinstance(value, str):
+        raise ScenarioError(f"{where}.{key}: expected a string, got {_short(value)}")
+    return value
+
+
+def _mapping(data: Any, where: str) -> dict[str, Any]:
+    if not isinstance(data, dict):
+        raise ScenarioError(f"{where}: expected a mapping")
+    return data
+
+
+def _hunav_behavior(data: Any, where: str) -> HunavBehavior:
+    data = _mapping(data, where)
+    kinds = {"configuration": int, "once": bool}
+    return HunavBehavior(**{name: _optional(data, name, kinds.get(name, float), where)
+                            for name in HunavBehavior.__dataclass_fields__})
+
+
+def _hunav_agent(data: Any, where: str) -> HunavAgent:
+    data = _mapping(data, where)
+    name = _optional(data, "name", str, where)
+    if not name:
+        raise ScenarioError(f"{where}.name: the agent's key in the HuNavSim file is missing")
+    headings = data.get("goal_headings") or []
+    names = data.get("goal_names") or []
+    ids = data.get("goal_ids") or []
+    if not all(isinstance(v, list) for v in (headings, names, ids)):
+        raise ScenarioError(f"{where}: goal_names, goal_headings and goal_ids must be lists")
+    return HunavAgent(
+        name=name,
+        skin=_optional(data, "skin", int, where),
+        z=_optional(data, "z", float, where),
+        behavior=None if data.get("behavior") is None else _hunav_behavior(data["behavior"], f"{where}.behavior"),
+        goal_names=tuple(_text(n, f"{where}.goal_names[{j}]") for j, n in enumerate(names)),
+        goal_headings=tuple(None if h is None else _number(h, f"{where}.goal_headings[{j}]", -1e3, 1e3)
+                            for j, h in enumerate(headings)),
+        goal_ids=tuple(_integer(g, f"{where}.goal_ids[{j}]", -(2**31), 2**31 - 1) for j, g in enumerate(ids)),
+        tree_file="" if not data.get("tree_file") else bundle_relative(data["tree_file"], f"{where}.tree_file"),
+        tree_digest=str(data.get("tree_digest", "")),
+        keys=_texts(data.get("keys"), f"{where}.keys"),
+    )
+
+
+def _texts(value: Any, where: str) -> tuple[str, ...]:
+    if value is None:
+        return ()
+    if not isinstance(value, list):
+        raise ScenarioError(f"{where}: expected a list of names")
+    return tuple(_text(v, f"{where}[{j}]") for j, v in enumerate(value))
+
+
+def _hunav_source(data: Any, where: str) -> HunavSource:
+    data = _mapping(data, where)
+    layout = data.get("layout")
+    if layout not in HUNAV_LAYOUTS:
+        raise ScenarioError(f"{where}.layout: {_short(layout)} is not a HuNavSim layout ({', '.join(HUNAV_LAYOUTS)})")
+    behavior_type = data.get("behavior_type", "name")
+    if behavior_type not in HUNAV_BEHAVIOR_TYPES:
+        raise ScenarioError(f"{where}.behavior_type: {_short(behavior_type)} is not one of "
+                            f"{', '.join(HUNAV_BEHAVIOR_TYPES)}")
+    agents = data.get("agents") or []
+    if not isinstance(agents, list):
+        raise ScenarioError(f"{where}.agents: expected the list of agent names")
+    return HunavSource(layout=layout, file=_text(data.get("file"), f"{where}.file"),
+                       agents=tuple(_text(a, f"{where}.agents[{j}]") for j, a in enumerate(agents)),
+                       behavior_type=behavior_type, base_name=_optional(data, "base_name", str, where),
+                       simulator=_optional(data, "simulator", str, where), map=_optional(data, "map", str, where),
+                       publish_people=_optional(data, "publish_people", bool, where),
+                       keys=_texts(data.get("keys"), f"{where}.keys"),
+                       grove_comment=_optional(data, "grove_comment", bool, where) or False,
+                       includes=tuple(bundle_relative(v, f"{where}.includes") for v in _texts(data.get("includes"),
+                                                                                                  f"{where}.includes")))
 
 
 def _agent_from_dict(data: Any, where: str) -> AgentSpec:
@@ -242,6 +431,10 @@ def _agent_from_dict(data: Any, where: str) -> AgentSpec:
             max_vel=_number(data.get("max_vel", 1.0), f"{where}.max_vel", *MAX_VEL_RANGE),
             label=str(data.get("label", "")),
             behavior=behavior,
+            goal_radius=_number(data.get("goal_radius", DEFAULT_GOAL_RADIUS), f"{where}.goal_radius", 0.0, 100.0),
+            cyclic_goals=_optional(data, "cyclic_goals", bool, where) is not False,
+            heading=_optional(data, "heading", float, where),
+            hunav=None if data.get("hunav") is None else _hunav_agent(data["hunav"], f"{where}.hunav"),
         )
     except KeyError as exc:
         raise ScenarioError(f"{where}: missing key {exc.args[0]!r}") from None

@@ -3,14 +3,25 @@
 `run_batch` is what `grove batch` calls. Both ways run each job through `GroveSession.run_job`, skip
 the same completed jobs, append the same records to batch-state.jsonl and rebuild the same
 dataset index (services.dataset), so `--ray` changes where jobs run and nothing they produce.
+
+A batch killed at any point leaves whole bundles, whole record lines and a whole index: every write
+goes through grove_tui.files, and the next run into the same folder first removes the staging entries
+a killed process left (`sweep_stale`). A batch that stops on an error (a full disk, a broken model)
+still rewrites the index when it can, keeps its own error when it cannot, and removes the --out folder
+it made if nothing was written into it.
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+from grove_tui.errors import GroveError
+from grove_tui.files import sweep_stale
 
 from grove_tui.services.dataset import (
     JobRecord,
@@ -54,6 +65,8 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
         from grove_tui.services.cluster import require_ray
 
         require_ray()  # likewise a missing Ray: one error line, nothing read or written
+    made_out_dir = not os.path.lexists(out_dir)
+    sweep_stale(out_dir)  # staging folders and files a killed earlier run left behind
     if jobs and ray_address is None:
         # Models, embedder and reader load while the inputs are hashed and checked for resume (the
         # model files are read whole for the hash); the first job waits only for what is left.
@@ -86,10 +99,28 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
                 finished(record_outcome(outcome, hashes[outcome.job.name]))
 
             session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)
-    finally:
-        # Also after a model error or Ctrl+C: the index shows what is done, failed and still pending. A
-        # batch stopped before its folder existed has nothing to index (and sqlite's "unable to open"
-        # would hide why it stopped).
+    except BaseException:
+        # Also after a model error or Ctrl+C the index shows what is done, failed and still pending; if it
+        # cannot be written either (the disk that stopped the batch is full), the batch's own error is the
+        # one reported, and a --out this run made and never wrote into is removed. A batch stopped before
+        # its folder existed has nothing to index (and sqlite's "unable to open" would hide why it stopped).
+        if out_dir.is_dir():
+            with contextlib.suppress(GroveError):
+                write_index(out_dir, jobs, index_format)
+        if made_out_dir:
+            _remove_if_empty(out_dir)
+        raise
+    try:
         if out_dir.is_dir():
             write_index(out_dir, jobs, index_format)
+    except BaseException:
+        if made_out_dir:
+            _remove_if_empty(out_dir)
+        raise
     return BatchResult(records, skipped, index_path(out_dir, index_format))
+
+
+def _remove_if_empty(folder: Path) -> None:
+    sweep_stale(folder)
+    with contextlib.suppress(OSError):
+        folder.rmdir()

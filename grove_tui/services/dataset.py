@@ -23,8 +23,8 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from grove_tui.errors import DatasetError, describe_error, require_extra
-from grove_tui.files import atomic_file
+from grove_tui.errors import DatasetError, OutputError, describe_error, require_extra
+from grove_tui.files import append_line, atomic_file, protect_folders
 
 if TYPE_CHECKING:
     from grove_tui.services.jobs import BatchJob
@@ -34,6 +34,17 @@ STATE_FILE = "batch-state.jsonl"
 INDEX_FILE = "dataset.sqlite"
 PARQUET_FILE = "dataset.parquet"
 INDEX_FORMATS = ("sqlite", "parquet")
+# What the index writer of earlier versions staged under a fixed name (now a staging name with its pid).
+LEGACY_INDEX_STAGE = f".{INDEX_FILE}.tmp"
+
+
+def is_batch_folder(path: Path) -> bool:
+    """The --out of a `grove batch` run (it holds the batch's record of its jobs)."""
+    return (path / STATE_FILE).is_file()
+
+
+# No other output may take the batch's own file names inside its folder (`generate --out OUT/dataset.sqlite`).
+protect_folders(is_batch_folder, (STATE_FILE, INDEX_FILE, PARQUET_FILE), "batch folder")
 
 
 @dataclass(frozen=True)
@@ -88,23 +99,26 @@ def record_outcome(outcome: JobOutcome, inputs: str) -> JobRecord:
 
 
 def append_record(out_dir: Path, record: JobRecord) -> None:
-    """One line per finished job; a line is written in one call so a crash leaves whole lines."""
-    out_dir.mkdir(parents=True, exist_ok=True)
-    line = json.dumps({k: v for k, v in asdict(record).items() if k != "exports"}) + "\n"
-    with open(out_dir / STATE_FILE, "a", encoding="utf-8") as state:
-        state.write(line)
+    """One line per finished job, appended whole (files.append_line): a line torn by a crash stays a
+    line of its own, so the next record is never glued onto it and lost."""
+    line = json.dumps({k: v for k, v in asdict(record).items() if k != "exports"}, ensure_ascii=True)
+    append_line(out_dir / STATE_FILE, line)
 
 
 def read_records(out_dir: Path) -> dict[str, dict[str, Any]]:
-    """The last record of each job name; a torn last line (a killed batch) is ignored."""
+    """The last record of each job name; a torn line (a killed batch, even mid-character) is ignored."""
     records: dict[str, dict[str, Any]] = {}
     path = out_dir / STATE_FILE
     if not path.is_file():
         return records
-    for line in path.read_text(encoding="utf-8").splitlines():
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise DatasetError(f"{path}: cannot read it: {exc.strerror}") from None
+    for raw in data.splitlines():
         try:
-            entry = json.loads(line)
-        except json.JSONDecodeError:
+            entry = json.loads(raw.decode("utf-8"))
+        except (UnicodeDecodeError, ValueError, RecursionError):
             continue
         if isinstance(entry, dict) and isinstance(entry.get("name"), str):
             records[entry["name"]] = entry
@@ -206,15 +220,24 @@ def write_index(out_dir: Path, jobs: Iterable[BatchJob], index_format: str = "sq
     if index_format == "parquet":
         return _write_parquet(out_dir / PARQUET_FILE, rows)
     target = out_dir / INDEX_FILE
-    stage = out_dir / f".{INDEX_FILE}.tmp"
-    stage.unlink(missing_ok=True)
-    with sqlite3.connect(stage) as db:
-        db.execute(f"CREATE TABLE scenarios ({', '.join(f'{name} {kind}' for name, kind in COLUMNS)})")
-        names = [name for name, _ in COLUMNS]
-        db.executemany(f"INSERT INTO scenarios ({', '.join(names)}) VALUES ({', '.join('?' * len(names))})",
-                       [tuple(row[name] for name in names) for row in rows])
-    db.close()
-    stage.replace(target)
+    (out_dir / LEGACY_INDEX_STAGE).unlink(missing_ok=True)
+    try:
+        with atomic_file(target) as stage:
+            db = sqlite3.connect(stage)
+            try:
+                with db:
+                    db.execute(f"CREATE TABLE scenarios ({', '.join(f'{name} {kind}' for name, kind in COLUMNS)})")
+                    names = [name for name, _ in COLUMNS]
+                    db.executemany(f"INSERT INTO scenarios ({', '.join(names)}) VALUES "
+                                   f"({', '.join('?' * len(names))})",
+                                   [tuple(row[name] for name in names) for row in rows])
+            finally:
+                db.close()
+    except sqlite3.Error as exc:  # a full disk, mostly ("database or disk is full")
+        raise OutputError(f"{target}: cannot write the dataset index: {exc}") from None
+    except OutputError as exc:
+        raise OutputError(f"{exc} (the dataset index; a job named {INDEX_FILE} in an earlier version made a "
+                          "folder there: move it away)" if target.is_dir() else str(exc)) from None
     return target
 
 

@@ -6,8 +6,9 @@
 A job with "variations": N stands for N jobs (bundles NAME-v000 .. NAME-v{N-1}) whose seeds derive
 from its seed (`variation_seed`); variation 0 keeps the job's own seed, so it is the plain job's bundle.
 
-A bad line (not JSON, a missing or misspelled key, a value of the wrong type or out of range, a name
-another line already uses) is reported with its line number and skipped; the good lines still run.
+A bad line (not JSON, a missing or misspelled key, a value of the wrong type or out of range, text that
+is not Unicode, a name another line already uses or that the batch's own files use) is reported with
+its line number and skipped; the good lines still run.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.errors import JobFileError
+from grove_tui.services.dataset import INDEX_FILE, PARQUET_FILE, STATE_FILE
 
 MAX_JOB_FILE_BYTES = 64 * 1024 * 1024
 MAX_SEED = 2**32 - 1
@@ -34,6 +36,9 @@ MAX_VARIATIONS = 10_000
 # What `export` may list: the `grove export` formats. All but hunav read the simulated run.
 EXPORT_KINDS = ("hunav", "trajectories", "rosbag", "foxglove")
 NEEDS_RUN = frozenset({"trajectories", "rosbag", "foxglove"})
+# What a batch writes into its --out beside the bundles: no job's bundle may take one of these names.
+BATCH_FILES = (STATE_FILE, INDEX_FILE, PARQUET_FILE)
+EXPORT_SUFFIXES = (".hunav", ".trajectories", ".rosbag", ".mcap", ".layout.json")
 
 
 @dataclass(frozen=True)
@@ -101,6 +106,28 @@ def folder_name(text: str) -> str:
     return cleaned[:120] or "scenario"
 
 
+def check_folder_name(name: str) -> str:
+    """A bundle name that none of the batch's own files, nor any job's exports, use."""
+    lowered = name.lower()
+    if lowered in BATCH_FILES:
+        raise ValueError(f"name {name!r} is a file the batch writes itself ({', '.join(BATCH_FILES)}); "
+                         "choose another name")
+    if lowered.endswith(EXPORT_SUFFIXES):
+        raise ValueError(f"name {name!r} ends like a job's export ({', '.join(EXPORT_SUFFIXES)}), which another "
+                         "job's bundle would collide with; choose another name")
+    return name
+
+
+def check_text(value: str, key: str) -> str:
+    """Text that is Unicode: JSON's \\ud800 escape (a lone surrogate) decodes to a string no encoder takes."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError as exc:
+        raise ValueError(f"{key} is not Unicode text: character {exc.start + 1} is a lone surrogate "
+                         f"(\\u{ord(value[exc.start]):04x}); JSON \\u escapes must come in valid pairs") from None
+    return value
+
+
 def check_seed(value: Any) -> int:
     """A seed is an integer in 0..2**32-1 (what numpy's generators and llama.cpp take)."""
     if isinstance(value, bool) or not isinstance(value, int):
@@ -154,6 +181,7 @@ def _check_job(number: int, job: Any, index: int) -> list[BatchJob]:
         value = job[key]
         if not isinstance(value, str) or not value.strip():
             raise ValueError(f"{key} must be a non-empty string, got {value!r}")
+        check_text(value, key)
     if len(job["prompt"]) > MAX_PROMPT_CHARS:
         raise ValueError(f"prompt is {len(job['prompt'])} characters; the limit is {MAX_PROMPT_CHARS}")
     seed = check_seed(job.get("seed", 0))
@@ -163,7 +191,8 @@ def _check_job(number: int, job: Any, index: int) -> list[BatchJob]:
     if name is not None and (not isinstance(name, str) or not name.strip()):
         raise ValueError(f"name must be a non-empty string, got {name!r}")
     exports = check_exports(job["export"], seconds) if "export" in job else ()
-    folder = folder_name(name if name is not None else f"{index:03d}-{Path(job['world']).stem}-{job['preset']}")
+    folder = check_folder_name(folder_name(name if name is not None
+                                           else f"{index:03d}-{Path(job['world']).stem}-{job['preset']}"))
     plain = BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds, exports)
     if "variations" not in job:
         return [plain]
@@ -194,10 +223,18 @@ def read_jobs(path: str | Path) -> tuple[list[BatchJob], list[JobProblem]]:
             continue
         index += 1
         try:
-            expanded = _check_job(number, json.loads(line), index)
+            data = json.loads(line)
         except json.JSONDecodeError as exc:
             problems.append(JobProblem(number, f"not valid JSON: {exc.msg} (column {exc.colno})"))
             continue
+        except ValueError:  # Python's own limit on the digits of an integer
+            problems.append(JobProblem(number, "a number has more than 4,300 digits; no value of a job is that long"))
+            continue
+        except RecursionError:
+            problems.append(JobProblem(number, "the JSON nests too deeply to be a job"))
+            continue
+        try:
+            expanded = _check_job(number, data, index)
         except (ValueError, RecursionError) as exc:
             problems.append(JobProblem(number, str(exc) or "not a valid job"))
             continue

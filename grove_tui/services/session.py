@@ -211,6 +211,14 @@ class GroveSession:
         """World and preset of a request, and a non-empty prompt, before any model loads."""
         if not request.prompt or not request.prompt.strip():
             raise PromptError("the prompt is empty: describe the people and what they do")
+        try:
+            request.prompt.encode("utf-8")
+        except UnicodeEncodeError as exc:
+            # A lone surrogate (JSON's "\ud800", or bytes that are not UTF-8 on the command line) reaches
+            # no parser: spaCy, the model and the dataset index all refuse to encode it.
+            raise PromptError(f"the prompt is not Unicode text: character {exc.start + 1} is a lone surrogate "
+                              f"(\\u{ord(request.prompt[exc.start]):04x})",
+                              hint="Give the prompt as UTF-8 text.") from None
         return self.load_world(request.world), self.load_preset(request.preset)
 
     # models ---------------------------------------------------------------------------------------------

@@ -180,12 +180,8 @@ class Simulation:
             raise BTError(f"{len(agents)} agents but {len(documents)} behavior trees")
         crowd = Crowd(walls, params=params, dt=dt, seed=seed, grid=grid)
         for agent in agents:
-            heading = 0.0
-            if agent.goals:
-                gx, gy = agent.goals[0]
-                heading = math.atan2(gy - agent.start[1], gx - agent.start[0])
             crowd.add_agent(agent.start, radius=agent.radius, desired_speed=agent.max_vel, group=agent.group,
-                            goal_radius=0.3, yaw=heading,
+                            goal_radius=agent.goal_radius, yaw=agent.initial_heading(),
                             robot_interaction=ROBOT_AS_OBSTACLE if agent.behavior == "Impassive" else 0)
         if robot is not None:
             path = list(robot.path) if robot.path else [robot.start, robot.goal]
@@ -211,8 +207,8 @@ class Simulation:
             hunav_style = any(e.id in HUNAV_LOOPING_NODES for e in document.nodes())
             loops.append(hunav_style)
             if hunav_style and agent.goals:
-                # HuNavSim trees walk the agent's own goal list (agents YAML `goals`, cyclic by default)
-                crowd.set_goals(row, agent.goals, cyclic=True)
+                # HuNavSim trees walk the agent's own goal list (agents YAML `goals` and `cyclic_goals`)
+                crowd.set_goals(row, agent.goals, cyclic=agent.cyclic_goals)
         recorder = _make_recorder(dt, ids)
         return cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
                    recorder=recorder)

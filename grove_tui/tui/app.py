@@ -18,7 +18,8 @@ from grove_tui.services.backend import EngineBackend, GeneratedScenario
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
 from grove_tui.tui.commands import GroveCommands
 from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
-from grove_tui.settings import GroveSettings, load_history, load_settings, save_history
+from grove_tui.settings import (GroveSettings, load_history, load_last_choices, load_settings, save_history,
+                                save_last_choices)
 
 
 class GroveApp(App[int]):
@@ -42,12 +43,18 @@ class GroveApp(App[int]):
         history: list[str] | None = None,
         persist_history: bool = False,
         open_bundle: Path | None = None,
+        last_choices: dict[str, Any] | None = None,
+        remember_choices: bool = False,
     ) -> None:
         super().__init__()
         self.backend = backend
         self.settings = settings if settings is not None else GroveSettings()
-        self.initial_world = world if world is not None else self.settings.generation.world
-        self.initial_preset = preset if preset is not None else self.settings.generation.preset
+        # The command line's choice, else the last generation's (data dir), else the config file's.
+        last = dict(last_choices or {})
+        self.initial_world = world if world is not None else last.get("world", self.settings.generation.world)
+        self.initial_preset = preset if preset is not None else last.get("preset", self.settings.generation.preset)
+        self.initial_seed = int(last.get("seed", self.settings.generation.seed))
+        self.remember_choices = remember_choices
         self.history: list[str] = list(history or [])
         self.persist_history = persist_history
         self.generated: GeneratedScenario | None = None
@@ -132,6 +139,15 @@ class GroveApp(App[int]):
         if self.persist_history:
             save_history(self.history, limit)
 
+    def remember(self, world: str, preset: str, seed: int) -> None:
+        """The choices of a generation, for the next start of the app (when this app remembers them)."""
+        if not self.remember_choices:
+            return
+        try:
+            save_last_choices(world, preset, seed)
+        except OSError as exc:  # an unwritable data dir must not stop a generation
+            self.notify(f"Cannot remember the choices: {exc}", title="Settings", severity="warning", timeout=5)
+
     @property
     def export_root(self) -> Path:
         return Path(self.settings.export.directory)
@@ -168,7 +184,7 @@ def run_app(model: str | None = None, roi_model: str | None = None, bt_model: st
         backend = EngineBackend(model=model, roi_model=roi_model, bt_model=bt_model)
     app = GroveApp(backend, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True,
-                   open_bundle=open_bundle)
+                   open_bundle=open_bundle, last_choices=load_last_choices(), remember_choices=True)
     result = app.run()
     code = int(result or 0) if app.return_code in (None, 0) else int(app.return_code or 1)
     exit_now(code)

@@ -202,7 +202,7 @@ def test_corner_is_felt_once_not_once_per_edge():
     i = crowd.add_agent((2.5, 2.5), radius=0.3)
     crowd.step(1)
     distance = math.hypot(0.5, 0.5)
-    single = 10.0 * math.exp(-(distance - 0.3) / 0.2)
+    single = 10.0 * math.exp(-(distance - 0.3) / params.obstacle_sigma)
     assert math.hypot(*crowd.vel[i]) == pytest.approx(min(single * crowd.dt, 1.0), rel=1e-9)
 
 
@@ -262,3 +262,20 @@ def test_a_slide_never_leaves_a_chord_through_another_wall_tip():
         c, d = w[:2], w[2:]
         assert not (orient(c, d, a) * orient(c, d, b) <= 0 and orient(a, b, c) * orient(a, b, d) <= 0
                     and not np.array_equal(a, b)), f"chord {a} -> {b} crosses wall {w}"
+
+
+def test_the_profiler_steps_the_crowd_exactly_like_step():
+    """bench/sfm.py names the costs from Crowd.profile: it must run the same physics as step()."""
+    def busy(seed: int) -> Crowd:
+        rng = np.random.default_rng(seed)
+        crowd = Crowd(np.array([[0.0, 0.0, 10.0, 0.0], [10.0, 0.0, 10.0, 8.0], [0.0, 8.0, 10.0, 8.0]]))
+        for _ in range(80):
+            crowd.add_agent(rng.uniform((0.5, 0.5), (9.5, 7.5)), goals=[(12.0, 4.0)], desired_speed=1.3)
+        return crowd
+
+    stepped, profiled = busy(1), busy(1)
+    stepped.step(30)
+    spent = profiled.profile(30)
+    assert set(spent) == set(sfm.PROFILE_PHASES) and all(v >= 0.0 for v in spent.values())
+    assert np.array_equal(stepped.pos, profiled.pos) and np.array_equal(stepped.vel, profiled.vel)
+    assert profiled.time == stepped.time

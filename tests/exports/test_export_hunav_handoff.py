@@ -17,7 +17,8 @@ from lxml import etree
 
 from grove_tui.bt.hunav_compat import HUNAV_NODES, hunav_loading_problems, restrict_to_hunav_ports
 from grove_tui.bt.xml import read_tree, write_tree
-from grove_tui.exports.hunav import GOAL_TOLERANCE, ExportError, export_hunav
+from grove_tui.exports.hunav import ExportError, export_hunav
+from grove_tui.scenario.model import DEFAULT_GOAL_RADIUS
 from grove_tui.exports.hunav_loader_check import check_hunav_export, check_loader_parameters
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.pipeline import GenerationResult
@@ -130,11 +131,13 @@ def test_surprised_agent_carries_its_reaction_and_goals_are_never_empty(hospital
         assert params[name]["goals"] and all(isinstance(g, int) for g in params[name]["goals"])
 
 
-def test_every_goto_says_the_tolerance_hunavsim_applies(hospital_export):
+def test_every_goto_says_the_agents_goal_radius_which_is_the_radius_hunavsim_applies(hospital_export):
     _, export = hospital_export
-    for path in export.trees:
-        for el in etree.fromstring(path.read_bytes()).iter("GoTo"):
-            assert float(el.get("tolerance")) == GOAL_TOLERANCE == 0.2
+    params = yaml.safe_load(export.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]
+    for name in params["agents"]:
+        tree = export.directory / f"agents_hospital__agent_{params[name]['id']}_bt.xml"
+        tolerances = {float(el.get("tolerance")) for el in etree.fromstring(tree.read_bytes()).iter("GoTo")}
+        assert tolerances <= {params[name]["goal_radius"]} and params[name]["goal_radius"] == DEFAULT_GOAL_RADIUS == 0.1
 
 
 def test_robot_start_and_goal_go_into_the_launch_arguments_and_readme(hospital_export):

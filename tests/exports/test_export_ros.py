@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import yaml
 from click.testing import CliRunner
 from helpers.handmade import build_hospital_bundle
 
@@ -32,10 +33,12 @@ from rosbags.rosbag2 import Reader  # noqa: E402
 
 from grove_tui.cli import main  # noqa: E402
 from grove_tui.services.session import GroveSession  # noqa: E402
-from grove_tui.errors import GroveError  # noqa: E402
+from grove_tui.errors import GroveError, MissingExtraError  # noqa: E402
 from grove_tui.exports import foxglove as fox  # noqa: E402
 from grove_tui.exports import rosbag  # noqa: E402
-from grove_tui.exports.rosbag import HUNAV_MSG_BLOBS, MSG_DIR, export_rosbag, ros_typestore  # noqa: E402
+from grove_tui.exports.hunav import export_hunav  # noqa: E402
+from grove_tui.exports.nav2_map import read_pgm  # noqa: E402
+from grove_tui.exports.rosbag import HUNAV_MSGS, export_rosbag, ros_typestore  # noqa: E402
 from grove_tui.navigation.grid import OccupancyGrid  # noqa: E402
 from grove_tui.scenario.model import Scenario  # noqa: E402
 from grove_tui.services.jobs import read_jobs  # noqa: E402
@@ -110,10 +113,41 @@ def read_bag(path: Path) -> tuple[dict[str, list], dict[str, list[int]], list]:
     return messages, times, connections
 
 
-def test_shipped_hunav_msgs_are_huNavSims_files_at_the_cited_commit():
-    for name, blob in HUNAV_MSG_BLOBS.items():
-        assert git_blob_id((MSG_DIR / name).read_bytes()) == blob, name
-    assert rosbag.HUNAV_COMMIT == "afa974340901e244ce15a97e8ebc37c0699a3e6f"
+def test_shipped_hunav_msgs_are_huNavSims_files_of_both_versions():
+    assert set(HUNAV_MSGS) == {"1.0", "2.0"} and rosbag.DEFAULT_HUNAV_MSGS == "2.0"
+    for msgs in HUNAV_MSGS.values():
+        assert sorted(p.name for p in msgs.folder.iterdir()) == sorted(msgs.blobs)
+        for name, blob in msgs.blobs.items():
+            assert git_blob_id((msgs.folder / name).read_bytes()) == blob, (msgs.version, name)
+    assert "afa974340901e244ce15a97e8ebc37c0699a3e6f" in HUNAV_MSGS["1.0"].source
+    # 1.0: the behavior is a number on the agent; 2.0: a nested AgentBehavior with HuNavSim's parameters
+    assert "uint8 behavior\n" in HUNAV_MSGS["1.0"].text("Agent.msg")
+    assert "hunav_msgs/AgentBehavior behavior" in HUNAV_MSGS["2.0"].text("Agent.msg")
+    for key in ("configuration", "duration", "once", "vel", "dist", "social_force_factor", "goal_force_factor",
+                "obstacle_force_factor", "other_force_factor"):
+        assert f" {key}" in HUNAV_MSGS["2.0"].text("AgentBehavior.msg"), key
+
+
+def stored_definitions(connection) -> dict[str, str]:
+    """The hunav_msgs parts of a bag connection's stored definition, by type (main type first)."""
+    parts = sections(connection.msgdef.data)
+    main = connection.msgtype.replace("/msg/", "/")
+    return {main if not name else name: text for name, text in parts.items()
+            if (name or main).startswith("hunav_msgs/")}
+
+
+def assert_definitions_are_the_msg_files(connection, version: str) -> None:
+    shipped = {f"hunav_msgs/{Path(name).stem}": HUNAV_MSGS[version].text(name) for name in HUNAV_MSGS[version].blobs}
+    stored = stored_definitions(connection)
+    assert stored, connection.topic
+    for name, text in stored.items():
+        assert text.rstrip("\n") == shipped[name].rstrip("\n"), (version, name)
+    # and the reader's types, built from what the bag stores, have exactly the .msg files' fields
+    from rosbags.typesys import get_types_from_msg
+    for name, text in stored.items():
+        mine = get_types_from_msg(text, name.replace("/", "/msg/"))
+        theirs = get_types_from_msg(shipped[name], name.replace("/", "/msg/"))
+        assert mine == theirs, name
 
 
 @pytest.mark.parametrize("storage", ["mcap", "sqlite3"])
@@ -125,8 +159,8 @@ def test_rosbag_reads_back_with_the_run_in_it(simulated, tmp_path, storage):
     counts = {topic: len(items) for topic, items in messages.items()}
     assert counts == result.counts == {
         "/human_states": len(frames), "/agent_markers": len(frames), "/robot_states": with_robot,
-        "/tf": with_robot, "/events": event_count(simulated), "/map": 1, "/scenario_markers": 1, "/plan": 1,
-        "/goal_pose": 1}
+        "/tf": with_robot, "/events": event_count(simulated), "/map": 1, "/grove/planning_grid": 1,
+        "/scenario_markers": 1, "/plan": 1, "/goal_pose": 1}
     for topic in ("/human_states", "/agent_markers", "/robot_states", "/tf"):
         assert all(b > a for a, b in zip(times[topic], times[topic][1:])), topic
 
@@ -146,7 +180,7 @@ def test_rosbag_reads_back_with_the_run_in_it(simulated, tmp_path, storage):
 
     scenario = Scenario.load(simulated / "scenario.yaml")
     agent1 = messages["/human_states"][0].agents[0]
-    assert agent1.behavior == 3  # the hand-built agent 1 is Surprised: BEH_SURPRISED
+    assert agent1.behavior.type == 3  # the hand-built agent 1 is Surprised: BEH_SURPRISED (hunav_msgs 2.0)
     goal = scenario.agents[0].goals[-1]
     assert [(g.position.x, g.position.y) for g in agent1.goals] == [goal]
 
@@ -167,10 +201,10 @@ def test_rosbag_reads_back_with_the_run_in_it(simulated, tmp_path, storage):
         assert np.array_equal([[m.pose.position.x, m.pose.position.y] for m in people], frame["xy"])
 
     grid = OccupancyGrid.load(simulated / "grid.npz")
-    [occupancy] = messages["/map"]
-    assert (occupancy.info.width, occupancy.info.height) == (grid.width, grid.height)
-    assert math.isclose(occupancy.info.resolution, grid.resolution, rel_tol=1e-6)
-    assert np.array_equal(occupancy.data.reshape(grid.height, grid.width) == 100, grid.occupied)
+    [planning] = messages["/grove/planning_grid"]  # GROVE's own grid, under its own name
+    assert (planning.info.width, planning.info.height) == (grid.width, grid.height)
+    assert math.isclose(planning.info.resolution, grid.resolution, rel_tol=1e-6)
+    assert np.array_equal(planning.data.reshape(grid.height, grid.width) == 100, grid.occupied)
     [plan] = messages["/plan"]
     assert [(p.pose.position.x, p.pose.position.y) for p in plan.poses] == list(scenario.robot.path)
     scene = messages["/scenario_markers"][0].markers
@@ -179,21 +213,23 @@ def test_rosbag_reads_back_with_the_run_in_it(simulated, tmp_path, storage):
         [json.loads(line)["kind"] for line in (simulated / "events.jsonl").read_text().splitlines() if line]
 
     by_topic = {c.topic: c for c in connections}
-    parts = sections(by_topic["/human_states"].msgdef.data)
-    assert parts[""] == (MSG_DIR / "Agents.msg").read_text()
-    assert parts["hunav_msgs/Agent"] == (MSG_DIR / "Agent.msg").read_text()
-    assert sections(by_topic["/robot_states"].msgdef.data)[""] == (MSG_DIR / "Agent.msg").read_text()
+    assert set(stored_definitions(by_topic["/human_states"])) == {
+        "hunav_msgs/Agents", "hunav_msgs/Agent", "hunav_msgs/AgentBehavior"}
+    assert_definitions_are_the_msg_files(by_topic["/human_states"], "2.0")
+    assert_definitions_are_the_msg_files(by_topic["/robot_states"], "2.0")
     durability = {topic: c.ext.offered_qos_profiles[0].durability for topic, c in by_topic.items()}
     assert durability["/map"] == durability["/scenario_markers"] == durability["/plan"] == \
         QosDurability.TRANSIENT_LOCAL
     assert durability["/human_states"] == QosDurability.VOLATILE
 
 
-def test_bag_bytes_are_what_rosbags_serializes(simulated, leaving, tmp_path):
-    """The crowd topics are written from byte templates: they must equal rosbags' own serialization."""
-    store = ros_typestore()
+@pytest.mark.parametrize("version", ["2.0", "1.0"])
+def test_bag_bytes_are_what_rosbags_serializes(simulated, leaving, tmp_path, version):
+    """The crowd topics are written from byte templates: they must equal rosbags' own serialization
+    under the hunav_msgs of the bag's version."""
+    store = ros_typestore(version)
     for bundle in (simulated, leaving):
-        result = export_rosbag(bundle, tmp_path / bundle.parent.name)
+        result = export_rosbag(bundle, tmp_path / bundle.parent.name, hunav_msgs_version=version)
         checked = 0
         with Reader(result.directory) as reader:
             for connection, _timestamp, raw in reader.messages():
@@ -201,6 +237,24 @@ def test_bag_bytes_are_what_rosbags_serializes(simulated, leaving, tmp_path):
                 assert bytes(store.serialize_cdr(message, connection.msgtype)) == bytes(raw), connection.topic
                 checked += 1
         assert checked == sum(result.counts.values())
+
+
+def test_hunav_msgs_1_0_is_an_option_and_its_definitions_are_stored(simulated, tmp_path):
+    result = CliRunner().invoke(main, ["export", "rosbag", str(simulated), "--out", str(tmp_path / "bag"),
+                                       "--hunav-msgs", "1.0"])
+    assert result.exit_code == 0, result.output
+    messages, _, connections = read_bag(tmp_path / "bag")
+    by_topic = {c.topic: c for c in connections}
+    assert set(stored_definitions(by_topic["/human_states"])) == {"hunav_msgs/Agents", "hunav_msgs/Agent"}
+    assert_definitions_are_the_msg_files(by_topic["/human_states"], "1.0")
+    assert_definitions_are_the_msg_files(by_topic["/robot_states"], "1.0")
+    agent1 = messages["/human_states"][0].agents[0]
+    assert (agent1.behavior, agent1.behavior_state) == (3, 0)  # Surprised, as a 1.0 number
+    custom = yaml.safe_load((tmp_path / "bag" / "metadata.yaml").read_text())["rosbag2_bagfile_information"]["custom_data"]
+    assert custom["hunav_msgs.version"] == "1.0" and "afa97434" in custom["hunav_msgs.source"]
+    bad = CliRunner().invoke(main, ["export", "rosbag", str(simulated), "--out", str(tmp_path / "b2"),
+                                    "--hunav-msgs", "3.0"])
+    assert bad.exit_code == 2 and not (tmp_path / "b2").exists()
 
 
 def test_rosbag_follows_people_who_leave(leaving, tmp_path):
@@ -262,10 +316,12 @@ def test_a_missing_optional_dependency_names_the_extra(simulated, tmp_path, monk
     monkeypatch.setitem(sys.modules, "foxglove", None)
     assert "pip install 'grove-tui[ros]'" in rosbag.missing_dependency()
     assert "pip install 'grove-tui[ros]'" in fox.missing_dependency()
-    with pytest.raises(GroveError, match=r"pip install 'grove-tui\[ros\]'"):
+    with pytest.raises(MissingExtraError, match="needs rosbags") as caught:
         export_rosbag(simulated, tmp_path / "bag")
-    with pytest.raises(GroveError, match=r"pip install 'grove-tui\[ros\]'"):
+    assert caught.value.hint == "pip install 'grove-tui[ros]'" and caught.value.exit_code == 2
+    with pytest.raises(MissingExtraError, match="needs foxglove-sdk") as caught:
         fox.export_foxglove(simulated, tmp_path / "scene.mcap")
+    assert caught.value.hint == "pip install 'grove-tui[ros]'"
     result = CliRunner().invoke(main, ["export", "rosbag", str(simulated), "--out", str(tmp_path / "b")])
     assert result.exit_code == 2 and "grove-tui[ros]" in result.output
 
@@ -299,16 +355,17 @@ def read_mcap(path: Path) -> tuple[dict[str, list], dict[str, list[int]], dict[s
 def test_foxglove_mcap_reads_back_with_the_run_in_it(simulated, tmp_path):
     result = fox.export_foxglove(simulated, tmp_path / "scene.mcap")
     assert result.layout == tmp_path / "scene.layout.json"
-    assert result.layout.read_text() == fox.shipped_layout()
+    assert result.layout.read_text() == fox.layout_for(set(result.counts))
     frames = csv_frames(simulated)
     messages, times, schemas = read_mcap(result.mcap)
     with_robot = sum(f["robot"] is not None for f in frames)
     assert {t: len(m) for t, m in messages.items()} == result.counts == {
         "/people": len(frames), "/robot": with_robot, "/tf": with_robot, "/events": event_count(simulated),
-        "/world": 1, "/map": 1, "/paths": 1}
+        "/world": 1, "/map": 1, "/grove/planning_grid": 1, "/paths": 1}
     assert schemas == {"/people": "foxglove.SceneUpdate", "/robot": "foxglove.SceneUpdate",
                        "/tf": "foxglove.FrameTransforms", "/events": "foxglove.Log", "/world": "foxglove.SceneUpdate",
-                       "/map": "foxglove.Grid", "/paths": "foxglove.SceneUpdate"}
+                       "/map": "foxglove.Grid", "/grove/planning_grid": "foxglove.Grid",
+                       "/paths": "foxglove.SceneUpdate"}
     everything = [t for ts in times.values() for t in ts]
     assert min(everything) == min(times["/world"]) == min(times["/map"])  # the scene is there from the start
     for topic in ("/people", "/robot", "/tf"):
@@ -333,21 +390,21 @@ def test_foxglove_mcap_reads_back_with_the_run_in_it(simulated, tmp_path):
         assert (transform.translation.x, transform.translation.y) == tuple(frame["robot"][:2])
 
     grid = OccupancyGrid.load(simulated / "grid.npz")
-    [occupancy] = messages["/map"]
-    assert (occupancy.column_count, occupancy.row_stride, occupancy.cell_stride) == (grid.width, grid.width, 1)
-    cells = np.frombuffer(occupancy.data, dtype=np.uint8).reshape(grid.height, grid.width)
+    [planning] = messages["/grove/planning_grid"]
+    assert (planning.column_count, planning.row_stride, planning.cell_stride) == (grid.width, grid.width, 1)
+    cells = np.frombuffer(planning.data, dtype=np.uint8).reshape(grid.height, grid.width)
     assert np.array_equal(cells.astype(bool), grid.occupied)
-    assert (occupancy.pose.position.x, occupancy.pose.position.y) == grid.origin
+    assert (planning.pose.position.x, planning.pose.position.y) == grid.origin
 
     world = load_world("hospital")
     [scene] = messages["/world"]
     ids = [e.id for e in scene.entities]
-    walls = world.walls()
+    walls = world.room_walls()
     lengths = np.hypot(walls[:, 2] - walls[:, 0], walls[:, 3] - walls[:, 1])
-    assert len(scene.entities[ids.index("walls")].cubes) == int((lengths > 1e-6).sum())
-    furniture = [e for e in scene.entities if e.id.startswith(("furniture/", "obstacles/"))]
+    assert len(scene.entities[ids.index("walls")].cubes) == int((lengths > 1e-9).sum())
+    furniture = [e for e in scene.entities if e.id.startswith(("furniture/", "obstacle/"))]
     assert len(furniture) == len(world.entities()) + len(world.obstacles)
-    assert all(len(e.triangles[0].points) % 3 == 0 and e.triangles[0].points for e in furniture)
+    assert all(len(e.cubes) == 1 for e in furniture)
     assert sum(i.startswith("zones/") for i in ids) == len(world.zones)
     [paths] = messages["/paths"]
     robot_path = next(e for e in paths.entities if e.id == "robot_path").lines[0].points
@@ -377,11 +434,12 @@ def test_a_scenario_without_robot_has_no_robot_topics(simulated, tmp_path):
     frames = len(csv_frames(bundle))
     bag = export_rosbag(bundle, tmp_path / "bag")
     assert bag.counts == {"/human_states": frames, "/agent_markers": frames, "/events": event_count(bundle),
-                          "/map": 1, "/scenario_markers": 1}
+                          "/map": 1, "/grove/planning_grid": 1, "/scenario_markers": 1}
     messages, _, _ = read_bag(bag.directory)
     assert all(m.ns == "people" for array in messages["/agent_markers"] for m in array.markers[1:])
     mcap = fox.export_foxglove(bundle, tmp_path / "scene.mcap")
-    assert mcap.counts == {"/people": frames, "/events": event_count(bundle), "/world": 1, "/map": 1, "/paths": 1}
+    assert mcap.counts == {"/people": frames, "/events": event_count(bundle), "/world": 1, "/map": 1,
+                           "/grove/planning_grid": 1, "/paths": 1}
 
 
 def test_velocity_fields_are_drawn_as_arrows(simulated, tmp_path):
@@ -410,7 +468,27 @@ def test_the_shipped_layout_is_foxglove_sdks_layout_model():
     assert fox.shipped_layout() == fox.build_layout()
     panel = layout["content"]["items"][0]["content"]
     assert panel["panelType"] == "ThreeDee"
-    assert set(panel["config"]["topics"]) == {"/map", "/world", "/paths", "/fields", "/people", "/robot"}
+    assert set(panel["config"]["topics"]) == {"/map", "/grove/planning_grid", "/world", "/paths", "/fields",
+                                              "/people", "/robot"}
+    assert panel["config"]["topics"]["/map"]["visible"] and not panel["config"]["topics"]["/grove/planning_grid"]["visible"]
+
+
+def test_each_layout_lists_only_the_topics_its_file_has(simulated, tmp_path):
+    """Issue 30: the hospital run has no velocity fields, so its layout has no /fields; a file without
+    events has no event log panel."""
+    result = fox.export_foxglove(simulated, tmp_path / "scene.mcap")
+    layout = json.loads(result.layout.read_text())
+    panel = layout["content"]["items"][0]["content"]
+    assert "/fields" not in result.counts and set(panel["config"]["topics"]) <= set(result.counts)
+    assert layout["content"]["items"][1]["content"]["config"]["topicToRender"] == "/events" in result.counts
+    quiet = tmp_path / "quiet"
+    shutil.copytree(simulated, quiet)
+    (quiet / "events.jsonl").write_text("")
+    result = fox.export_foxglove(quiet, tmp_path / "quiet.mcap")
+    layout = json.loads(result.layout.read_text())
+    assert "/events" not in result.counts
+    assert layout["content"]["panelType"] == "ThreeDee"  # the 3D view alone, no empty log panel
+    assert set(layout["content"]["config"]["topics"]) <= set(result.counts)
 
 
 def test_foxglove_output_must_be_an_mcap_file_and_is_all_or_nothing(simulated, tmp_path):

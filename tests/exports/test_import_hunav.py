@@ -4,6 +4,7 @@ export again give the same agents, goals and trees."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 import yaml
@@ -103,6 +104,38 @@ def test_broken_scenarios_are_refused_with_the_reason(exported, tmp_path):
                                        "--out", str(tmp_path / "out2")])
     assert result.exit_code == 2 and "agents_hospital__agent_1_bt.xml: not found" in result.output
     assert not (tmp_path / "out").exists() and not (tmp_path / "out2").exists()
+
+
+@pytest.mark.parametrize("absolute_out", [False, True], ids=["relative-out", "absolute-out"])
+def test_an_imported_bundle_stands_alone_from_any_folder(absolute_out, tmp_path, monkeypatch):
+    """Issue 30: import in one folder (HuNavSim's house, whose map GROVE does not know, and a GROVE world
+    given by a relative path), then simulate, picture, measure and export from another one."""
+    from helpers.paths import REPO
+
+    data = REPO / "tests" / "data" / "hunavsim" / "2.0" / "scenarios" / "agents_house.yaml"
+    here, elsewhere = tmp_path / "here", tmp_path / "elsewhere"
+    here.mkdir()
+    elsewhere.mkdir()
+    (here / "my_world.yaml").write_text((REPO / "worlds" / "office.yaml").read_text())
+    monkeypatch.chdir(here)
+    runner = CliRunner()
+    bundles = {}
+    for name, extra in (("house", []), ("mine", ["--world", "my_world.yaml"])):
+        out = (here / name) if absolute_out else Path(name)
+        result = runner.invoke(main, ["import", "hunav", str(data), "--out", str(out), *extra])
+        assert result.exit_code == 0, result.output
+        bundles[name] = here / name
+    assert Scenario.load(bundles["mine"] / "scenario.yaml").world == "world/my_world.yaml"
+    (here / "my_world.yaml").unlink()  # the bundle carries its own copy
+    monkeypatch.chdir(elsewhere)
+    for name, bundle in bundles.items():
+        for args in (["simulate", str(bundle), "--seconds", "5"], ["picture", str(bundle), "--width", "60"],
+                     ["picture", str(bundle), "--out", str(elsewhere / f"{name}.svg")],
+                     ["metrics", str(bundle), "--json"],
+                     ["export", "hunav", str(bundle), "--out", str(elsewhere / f"{name}_hunav")],
+                     ["export", "trajectories", str(bundle), "--out", str(elsewhere / f"{name}_traj")]):
+            result = runner.invoke(main, args)
+            assert result.exit_code == 0, (name, args, result.output)
 
 
 def test_cli_export_then_import_prints_the_files(exported, tmp_path):

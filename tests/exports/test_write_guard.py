@@ -170,3 +170,16 @@ def test_a_bundle_file_named_like_the_bundles_own_is_refused(tmp_path):
     with pytest.raises(OutputError, match="trees is the scenario bundle .* own"):
         GroveSession().export("hunav", bundle, bundle / "trees", overwrite=True)
     assert listing(bundle) == before
+
+
+def test_picture_keeps_a_users_image_and_replaces_its_own(bundle, tmp_path):
+    pytest.importorskip("matplotlib")
+    photo = tmp_path / "figure.png"
+    photo.write_bytes(b"\x89PNG\r\n\x1a\n a photo of the lab")
+    run = invoke(["picture", bundle, "--out", photo])
+    assert run.exit_code == EXIT_BAD_INPUT and "is not a picture GROVE drew" in run.stderr
+    assert photo.read_bytes() == b"\x89PNG\r\n\x1a\n a photo of the lab"
+    own = tmp_path / "own.svg"
+    assert invoke(["picture", bundle, "--out", own]).exit_code == 0
+    assert invoke(["picture", bundle, "--out", own]).exit_code == 0
+    assert invoke(["picture", bundle, "--out", photo, "--overwrite"]).exit_code == 0

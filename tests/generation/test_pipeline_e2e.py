@@ -2,7 +2,7 @@
 simulates without anyone crossing a wall, and sends people to the places the sentence names.
 
 One loaded model and one retriever serve the whole module. Every preset is
-covered in every shipped world (nine prompts).
+covered in every shipped world (nine prompts), plus a robot reaction.
 """
 
 from __future__ import annotations
@@ -43,6 +43,8 @@ CASES = {
     "office-normal": ("office", "normal", "Four colleagues chat in the kitchen", {"kitchen"}),
     "residential-normal": ("residential", "normal", "Two children walk from the living room to the kitchen",
                            {"living_room", "kitchen"}),
+    "hospital-reaction": ("hospital", "normal", "Three visitors in the entrance lobby are scared of the robot",
+                          {"entrance_lobby"}),
 }
 EMERGENCY = [k for k, case in CASES.items() if case[1] == "emergency"]
 
@@ -219,12 +221,48 @@ def test_generated_bundle_exports_to_hunavsim_and_loads_in_btcpp(generated, key,
         assert (entry["init_pose"]["x"], entry["init_pose"]["y"]) == pytest.approx(agent.start, abs=1e-3)
         # HuNavSim's loader needs a non-empty integer list: a goal-less agent lists its tree's goals or start
         assert entry["goals"] and all(isinstance(g, int) for g in entry["goals"])
-        if agent.goals:
-            assert [(goals[g]["x"], goals[g]["y"]) for g in entry["goals"]] == pytest.approx(
-                [(round(x, 2), round(y, 2)) for x, y in agent.goals], abs=1e-6)
+        if agent.goals:  # at full precision (issue 30: nothing rounded)
+            assert [(goals[g]["x"], goals[g]["y"]) for g in entry["goals"]] == list(agent.goals)
     for path in out.trees:
         root = etree.fromstring(path.read_bytes())
         leftovers = [el.tag for el in root.iter() if isinstance(el.tag, str) and el.tag in GROVE_ONLY
                      and not (el.tag == "GoTo" and el.get("goal_id") and el.get("x") is None)]
         assert leftovers == [], f"{path.name} keeps GROVE-only nodes {leftovers}"
         load_in_btcpp(path.read_text())
+
+
+# Issue 30: one per preset, one with a robot reaction, one more evacuation (another world, two exits).
+ROUND_TRIP = ["hospital-queuing", "hospital-normal", "hospital-emergency", "hospital-reaction", "office-emergency"]
+
+
+@pytest.mark.parametrize("key", ROUND_TRIP)
+def test_generated_bundle_round_trips_through_hunavsim_field_by_field(generated, key, tmp_path):
+    """GROVE -> HuNavSim -> GROVE keeps the prompt, the robot and every agent field; exporting the
+    imported bundle again gives the first export back, parameter by parameter and tree by tree."""
+    import yaml
+
+    from grove_tui.exports.hunav import export_hunav
+    from grove_tui.exports.hunav_import import import_hunav
+    from grove_tui.exports.hunav_loader_check import loader_parameters
+    from grove_tui.scenario.model import Scenario
+
+    _, result, bundle, _, _ = generated[key]
+    first = export_hunav(bundle, tmp_path / "first")
+    back = import_hunav(first.agents_yaml, tmp_path / "back")
+    second = export_hunav(back, tmp_path / "second")
+    original, imported = result.scenario, Scenario.load(back / "scenario.yaml")
+    assert (imported.prompt, imported.preset, imported.seed, imported.robot) == \
+        (original.prompt, original.preset, original.seed, original.robot)
+    fields = ("id", "group", "start", "goals", "radius", "max_vel", "behavior", "label", "zone", "goal_radius",
+              "cyclic_goals")
+    for theirs, mine in zip(original.agents, imported.agents, strict=True):
+        assert {f: getattr(mine, f) for f in fields} == {f: getattr(theirs, f) for f in fields}, theirs.id
+        assert mine.initial_heading() == theirs.initial_heading()
+    if key == "hospital-reaction":
+        assert {a.behavior for a in imported.agents} == {"Scared"}
+    documents = [yaml.safe_load(e.agents_yaml.read_text()) for e in (first, second)]
+    assert loader_parameters(documents[0]) == loader_parameters(documents[1])
+    assert documents[0] == documents[1] and first.agents_yaml.read_text() == second.agents_yaml.read_text()
+    assert [p.name for p in first.trees] == [p.name for p in second.trees]
+    for a, b in zip(first.trees, second.trees):
+        assert a.read_bytes() == b.read_bytes(), a.name

@@ -175,7 +175,7 @@ def fake_llm_backend(runs_dir: Path, llm: FakeLLM | None = None) -> EngineBacken
 
 
 # ---- walks to a screen (shared by the flow, map, counters, export, runs, replan and snapshot tests)
-from textual.widgets import Input, Static  # noqa: E402
+from textual.widgets import Input, Static, TextArea  # noqa: E402
 
 from grove_tui.tui.app import GroveApp  # noqa: E402
 from grove_tui.tui.screens.generation import GenerationScreen  # noqa: E402
@@ -224,7 +224,7 @@ async def generate_to_simulation(pilot, app: GroveApp) -> SimulationScreen:
 
 
 def no_blink(app: GroveApp) -> None:
-    for widget in app.screen.query(Input):
+    for widget in [*app.screen.query(Input), *app.screen.query(TextArea)]:
         widget.cursor_blink = False
 
 
@@ -236,7 +236,7 @@ async def setup_ready(pilot) -> None:
     await wait_until(pilot, lambda: screen.query_one("#preview", MapView).raster is not None, what="preview")
     await wait_until(pilot, lambda: "loaded" in str(screen.query_one("#models", Static).render())
                      or "demand" in str(screen.query_one("#models", Static).render()), what="model status")
-    await wait_until(pilot, lambda: str(screen.query_one("#preset-description", Static).render()).strip() != "",
+    await wait_until(pilot, lambda: screen.query_one("#preset-description").text.strip() != "",
                      what="preset description")
     no_blink(app)
 

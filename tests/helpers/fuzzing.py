@@ -1,8 +1,10 @@
-"""Hypothesis strategies and targets for fuzzing every parser GROVE exposes to user files.
+"""Hypothesis strategies and targets for fuzzing every parser GROVE exposes to user files, and the Gym
+environment's config and actions.
 
 Shared by tests/test_fuzz.py (a bounded run in CI) and bench/fuzz.py (minutes per parser, by hand).
 A target takes one generated input and exercises the parser the way the product does; the only
-acceptable failure is a GroveError (the message a user sees). Anything else is a bug.
+acceptable failure is a GroveError (the message a user sees), or for the Gym targets gymnasium's own
+error class where gymnasium has one (EXPECTED). Anything else is a bug.
 
 Inputs are mutations of valid seeds (so they get past the first checks and reach deep code) plus
 structured values of the wrong shapes (so type checks are exercised): the tokens inserted are the
@@ -102,6 +104,14 @@ simulation:
 models:
   bt: /models/qwen.gguf
 """
+
+def _hunav_text_seed() -> str:
+    from helpers.hunav_files import document, params
+
+    return document(params())
+
+
+HUNAV_TEXT_SEED = _hunav_text_seed()
 
 BATCH_SEED = "\n".join(json.dumps(job) for job in (
     {"world": "hospital", "preset": "normal", "prompt": "ten visitors walk to the cafeteria", "seed": 1, "name": "a"},
@@ -212,6 +222,135 @@ def fuzz_batch_lines(lines: list[Any]) -> None:
     fuzz_batch("\n".join(json.dumps(line) if not isinstance(line, str) else line for line in lines))
 
 
+# -- `grove import hunav` ------------------------------------------------------------------------------
+
+
+def _hunav_variants() -> st.SearchStrategy[Any]:
+    """The valid parameters with one value (top level, an agent's, a goal's) replaced by anything."""
+    from helpers.hunav_files import params
+
+    top = st.sampled_from(sorted(params()))
+    agent_key = st.sampled_from(sorted(params()["agent1"]) + ["init_pose.x", "init_pose.y", "behavior.type"])
+
+    def replace_top(key_value):
+        key, value = key_value
+        data = params()
+        data[key] = value
+        return data
+
+    def replace_agent(key_value):
+        key, value = key_value
+        data = params()
+        node = data["agent1"]
+        *parents, last = key.split(".")
+        for part in parents:
+            node = node[part]
+        node[last] = value
+        return data
+
+    hostile = st.sampled_from([float("nan"), float("inf"), -float("inf"), 1e300, -3.0, 10**30, 0, -1, 5e4,
+                               "Scared", "Berserk", [0.5, 4.0], {"x": float("nan")}, "m" * 300, "../x", None])
+    value = hostile | json_values
+    # Agent values are what the hostile review broke the import with: weight them.
+    return (st.tuples(agent_key, value).map(replace_agent) | st.tuples(agent_key, hostile).map(replace_agent)
+            | st.tuples(top, value).map(replace_top))
+
+
+def fuzz_hunav_import(data: Any) -> None:
+    """Import a HuNavSim scenario (parameters, or raw text); what imports must load as simulate loads it."""
+    from helpers.hunav_files import document, write_scenario
+
+    from grove_tui.exports.hunav_import import import_hunav
+    from grove_tui.scenario.bundle import load_bundle
+
+    with tempfile.TemporaryDirectory(prefix="grove-fuzz-") as folder:
+        if isinstance(data, dict):
+            try:
+                text = document(data)
+            except (ValueError, TypeError, OverflowError, RecursionError):  # YAML cannot write the value
+                return
+        else:
+            text = data
+        path = write_scenario(Path(folder) / "scenario", text=text)
+        bundle = import_hunav(path, Path(folder) / "bundle")
+        load_bundle(bundle)
+
+
+# -- the Gym environment ---------------------------------------------------------------------------------
+
+_GYM: dict[str, Any] = {}
+
+
+def _gym_bundle() -> Path:
+    """One hand-built bundle with a robot, made once per process."""
+    if "bundle" not in _GYM:
+        from helpers.handmade import build_hospital_bundle
+
+        _GYM["bundle"] = build_hospital_bundle(Path(tempfile.mkdtemp(prefix="grove-fuzz-gym-")) / "bundle")
+    return _GYM["bundle"]
+
+
+_GYM_NUMBERS = (st.floats(allow_nan=True, allow_infinity=True) | st.integers(min_value=-(10**400), max_value=10**400)
+                | st.sampled_from([0, 1, 2, 0.05, 0.2, 1e-300, 1e300, 10**9, "0.2", True, None, complex(1, 1), [], {}]))
+_GYM_ARGS = ("control_period", "sim_dt", "time_limit", "max_angular_speed", "goal_tolerance", "start_jitter",
+             "metrics_every", "kinematics", "pedestrian_model", "render_mode", "seeds")
+_SUB_FIELDS = {"observation": ("pedestrians", "sensor_range", "patch_cells", "patch_resolution"),
+               "reward": ("success", "collision", "progress", "intimate", "personal", "timeout", "intimate_distance",
+                          "personal_distance")}
+
+
+def _gym_configs() -> st.SearchStrategy[dict[str, Any]]:
+    value = _GYM_NUMBERS | json_values | st.sampled_from(["unicycle", "holonomic", "grove", "lightsfm"])
+    sub = {name: st.dictionaries(st.sampled_from(keys) | st.text(max_size=4), _GYM_NUMBERS | json_values, max_size=3)
+           | json_values for name, keys in _SUB_FIELDS.items()}
+    return st.fixed_dictionaries({}, optional={**{name: value for name in _GYM_ARGS}, **sub,
+                                               "unknown_keyword": value, "bundles": json_values,
+                                               "reset_options": json_values | st.fixed_dictionaries(
+                                                   {"scenario": _GYM_NUMBERS})})
+
+
+def fuzz_gym_config(config: dict[str, Any]) -> None:
+    """Make the env with fuzzed arguments; when it is made, reset (fuzzed options) and take two steps."""
+    from grove_tui.gym import SocialNavEnv
+
+    kwargs = dict(config)
+    bundles = kwargs.pop("bundles", None)
+    options = kwargs.pop("reset_options", None)
+    if "seeds" in kwargs and bundles is None:
+        kwargs.pop("seeds")  # seeds with bundles is refused; without bundles it would generate with the model
+    env = SocialNavEnv(bundles if bundles is not None else _gym_bundle(), **kwargs)
+    try:
+        env.reset(seed=0, options=options)
+        for _ in range(2):
+            _obs, _reward, terminated, truncated, _info = env.step(env.action_space.sample())
+            if terminated or truncated:
+                break
+    finally:
+        env.close()
+
+
+def _gym_actions() -> st.SearchStrategy[Any]:
+    numbers = _GYM_NUMBERS | st.floats(min_value=-2, max_value=2)
+    return (st.lists(numbers, max_size=4) | st.tuples(numbers, numbers) | json_values | numbers
+            | st.builds(lambda a, b: __import__("numpy").array([a, b]), st.floats(), st.floats()))
+
+
+def fuzz_gym_action(action: Any) -> None:
+    """One env, stepped with a fuzzed action (reset when its episode ended); reset with fuzzed options too."""
+    from grove_tui.gym import SocialNavEnv
+
+    if "env" not in _GYM:
+        _GYM["env"] = SocialNavEnv(_gym_bundle())
+        _GYM["env"].reset(seed=0)
+    env = _GYM["env"]
+    if env.outcome:
+        env.reset()
+    if isinstance(action, dict) and action:
+        env.reset(seed=None, options=action)  # options of any shape
+        return
+    env.step(action)
+
+
 TARGETS: dict[str, tuple[st.SearchStrategy[Any], Callable[[Any], None]]] = {
     "world_text": (mutations_of(WORLD_SEED), fuzz_world),
     "world_structured": (_world_variants(), fuzz_world),
@@ -224,14 +363,32 @@ TARGETS: dict[str, tuple[st.SearchStrategy[Any], Callable[[Any], None]]] = {
     "batch_lines": (st.lists(json_values | st.dictionaries(
         st.sampled_from(["world", "preset", "prompt", "seed", "name", "simulate", "export", "seeed"]), json_values,
         max_size=6), min_size=1, max_size=5), fuzz_batch_lines),
+    "hunav_import": (_hunav_variants(), fuzz_hunav_import),
+    "hunav_import_text": (mutations_of(HUNAV_TEXT_SEED), fuzz_hunav_import),
 }
+try:
+    import gymnasium  # noqa: F401  (the Gym targets need the optional extra)
+except ImportError:
+    pass
+else:
+    TARGETS["gym_config"] = (_gym_configs(), fuzz_gym_config)
+    TARGETS["gym_action"] = (_gym_actions(), fuzz_gym_action)
+
+
+def expected_errors() -> tuple[type[BaseException], ...]:
+    """What a target may raise: GroveError, and gymnasium's own errors (a bad reset seed) when installed."""
+    from grove_tui.errors import GroveError
+
+    try:
+        import gymnasium.error
+    except ImportError:
+        return (GroveError,)
+    return (GroveError, gymnasium.error.Error)
 
 
 def run_target(name: str, value: Any) -> None:
     """Run one input; a GroveError is the expected way to refuse it, anything else propagates."""
-    from grove_tui.errors import GroveError
-
     try:
         TARGETS[name][1](value)
-    except GroveError:
+    except expected_errors():
         pass

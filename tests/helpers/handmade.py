@@ -59,3 +59,44 @@ def build_hospital_bundle(bundle: Path) -> Path:
              robot=RobotSpec(start=(28.0, 4.0), goal=(45.0, 5.0), path=robot_path)).save(bundle / "scenario.yaml")
     grid.save(bundle / "grid.npz")
     return bundle
+
+
+def build_evacuation_bundle(bundle: Path, world_name: str = "office", zone: str = "reception",
+                            exit_name: str = "main_entrance", people: int = 8) -> Path:
+    """`people` in `zone` evacuating through `exit_name` along one velocity field, written the way
+    post-processing writes an emergency bundle (FollowVelocityField with the exit point, the field's
+    .npz, the planned route as goals); a robot crosses the zone."""
+    from grove_tui.navigation.velocity_field import build_velocity_field
+
+    world = load_world(world_name)
+    grid = build_grid(world, 0.1)
+    planner = ThetaStarPlanner(grid)
+    exit_point = tuple(map(float, world.roi(exit_name).point))
+    x0, y0, x1, y1 = world.zone(zone).polygon.bounds
+    starts = []
+    k = 0
+    while len(starts) < people:
+        k += 1
+        x = x0 + 1.0 + (k * 0.754877666) % 1.0 * (x1 - x0 - 2.0)  # a low-discrepancy spread over the zone
+        y = y0 + 1.0 + (k * 0.569840291) % 1.0 * (y1 - y0 - 2.0)
+        if grid.is_free(x, y) and all((x - a) ** 2 + (y - b) ** 2 > 0.8 for a, b in starts):
+            starts.append((round(x, 2), round(y, 2)))
+    route = planner.plan(starts[0], exit_point)
+    field = build_velocity_field(grid, route, exit_point, planner=planner)
+    (bundle / "trees").mkdir(parents=True, exist_ok=True)
+    (bundle / "fields").mkdir(parents=True, exist_ok=True)
+    field.save(bundle / "fields" / "group_0.npz")
+    specs = []
+    for agent_id, start in enumerate(starts, start=1):
+        body = (f'<FollowVelocityField exit="{exit_name}" field="group_0" x="{exit_point[0]}" y="{exit_point[1]}"/>')
+        (bundle / "trees" / f"agent_{agent_id}.xml").write_text(_tree(agent_id, body))
+        goals = tuple(tuple(map(float, p)) for p in planner.plan(start, exit_point)[1:])
+        specs.append(AgentSpec(id=agent_id, group=0, start=start, goals=goals, zone=zone,
+                               tree=f"trees/agent_{agent_id}.xml", max_vel=1.3))
+    robot_start, robot_goal = world.zone(zone).anchor, world.zone("main_corridor").anchor
+    robot_path = tuple(tuple(map(float, p)) for p in planner.plan(robot_start, robot_goal))
+    Scenario(world=world_name, preset="emergency", prompt=f"hand-built: {people} people leave {zone}", seed=5,
+             models={}, agents=tuple(specs), robot=RobotSpec(start=robot_start, goal=robot_goal, path=robot_path),
+             fields={"group_0": "fields/group_0.npz"}).save(bundle / "scenario.yaml")
+    grid.save(bundle / "grid.npz")
+    return bundle

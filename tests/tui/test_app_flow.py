@@ -89,6 +89,7 @@ async def test_generate_inspect_play_and_export(tmp_path):
         frame = sim.controller.latest.frame
         assert not np.allclose(np.asarray(frame.pos), np.asarray(first.pos)), "agents did not move"
         assert sim.frames_drawn > 0
+        await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial, what="the paused frame drawn")
         status = str(sim.query_one("#sim-status", Static).render())
         assert "paused" in status and "t =" in status
         await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step, what="counters")

@@ -31,14 +31,16 @@ def test_every_screen_binding_has_an_id_a_description_and_an_ssh_safe_key():
     from grove_tui.tui.widgets.prompt_input import PromptInput
 
     safe_names = {"escape", "enter", "space", "up", "down", "left", "right", "plus", "minus", "equals_sign",
-                  "left_square_bracket", "right_square_bracket", "f1"}
+                  "left_square_bracket", "right_square_bracket", "f1", "f2"}
     ids = []
     for owner in (GroveApp, GenerationScreen, MapView, SimMapView, PromptInput, *SCREENS):
         for binding in owner.BINDINGS:
             assert binding.id, f"{owner.__name__}: {binding.key} has no id"
             assert binding.description, f"{owner.__name__}: {binding.id} has no description"
             for key in binding.key.split(","):
-                ok = len(key) == 1 or key in safe_names or (key.startswith("ctrl+") and len(key) == 6)
+                # alt+letter: readline's word keys, sent over SSH as ESC and the letter
+                ok = (len(key) == 1 or key in safe_names or (key.startswith("ctrl+") and len(key) == 6)
+                      or (key.startswith("alt+") and len(key) == 5))
                 assert ok, f"{binding.id}: {key!r} may not reach the app over SSH"
             ids.append(binding.id)
     assert len(ids) == len(set(ids)), "binding ids must be unique so a keymap can address each"

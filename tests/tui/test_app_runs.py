@@ -133,11 +133,13 @@ async def test_seed_field_sets_the_seed_and_g_regenerates_with_the_next_one(tmp_
         await pilot.press("backspace", *"41", "ctrl+l")
         inspect = await generate_to_inspect(pilot, app)
         assert inspect.generated.seed == 41 and inspect.generated.scenario.seed == 41
+        first = inspect.generated
         await pilot.press("g")  # no count edits: no question
-        await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen) and app.screen is not inspect,
+        # The regenerated scenario replaces the one shown, in the same inspect screen.
+        await wait_until(pilot, lambda: app.screen is inspect and inspect.generated is not first,
                          timeout=60, what="regenerated")
         assert app.screen.generated.seed == 42
-        assert app.screen.generated.bundle_dir != inspect.generated.bundle_dir
+        assert app.screen.generated.bundle_dir != first.bundle_dir
 
 
 async def test_g_keeps_count_edits_when_asked_and_drops_them_otherwise(tmp_path):
@@ -153,16 +155,18 @@ async def test_g_keeps_count_edits_when_asked_and_drops_them_otherwise(tmp_path)
         await pilot.press("g")
         await wait_until(pilot, lambda: isinstance(app.screen, ChoiceScreen), what="keep counts question")
         assert f"{label} 4" in app.screen.text
+        edited = inspect.generated
         await pilot.press("y")
-        await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen) and app.screen is not inspect,
+        await wait_until(pilot, lambda: app.screen is inspect and inspect.generated is not edited,
                          timeout=60, what="regenerated with counts")
         kept = app.screen
         assert kept.generated.seed == 1 and len(kept.generated.scenario.agents) == 4
         assert kept.count_edits == {label: 4}
         await pilot.press("g")
         await wait_until(pilot, lambda: isinstance(app.screen, ChoiceScreen), what="question again")
+        with_counts = kept.generated
         await pilot.press("n")
-        await wait_until(pilot, lambda: isinstance(app.screen, InspectScreen) and app.screen is not kept,
+        await wait_until(pilot, lambda: app.screen is kept and kept.generated is not with_counts,
                          timeout=60, what="regenerated with the model's counts")
         assert app.screen.generated.seed == 2 and len(app.screen.generated.scenario.agents) == 6
         assert app.screen.count_edits == {}

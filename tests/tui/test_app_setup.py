@@ -36,7 +36,7 @@ async def setup_ready(pilot) -> SetupScreen:
     screen = pilot.app.screen
     await wait_until(pilot, lambda: screen.query_one("#preview", MapView).raster is not None, what="map preview")
     # presets and model status arrive from background workers too; under load they can come last
-    await wait_until(pilot, lambda: str(screen.query_one("#preset-description", Static).render()).strip() != "",
+    await wait_until(pilot, lambda: screen.query_one("#preset-description").text.strip() != "",
                      what="preset description")
     await wait_until(pilot, lambda: "loaded" in str(screen.query_one("#models", Static).render())
                      or "demand" in str(screen.query_one("#models", Static).render()), what="model status")
@@ -51,7 +51,7 @@ async def test_setup_lists_worlds_presets_and_previews_the_map(tmp_path):
         assert "hospital" in [worlds.get_option_at_index(i).id for i in range(worlds.option_count)]
         assert screen.selected_world == "hospital"
         assert screen.selected_preset == "queuing"
-        description = str(screen.query_one("#preset-description", Static).render())
+        description = screen.query_one("#preset-description").text
         assert "queue" in description.lower()
         preview = screen.query_one("#preview", MapView)
         assert preview.world.name == "hospital"
@@ -93,10 +93,10 @@ async def test_choosing_another_preset_updates_its_description(tmp_path):
         screen = await setup_ready(pilot)
         await pilot.press("ctrl+r")
         assert screen.focused is screen.query_one("#presets")
-        before = str(screen.query_one("#preset-description", Static).render())
+        before = screen.query_one("#preset-description").text
         await pilot.press("up")
         await pilot.pause()
-        after = str(screen.query_one("#preset-description", Static).render())
+        after = screen.query_one("#preset-description").text
         assert screen.selected_preset != "queuing"
         assert after != before and after.strip()
 
@@ -221,19 +221,25 @@ async def test_history_is_saved_between_sessions(tmp_path):
     assert load_history(10) == ["people wait in the lobby"]
 
 
-async def test_ctrl_w_opens_worlds_from_the_prompt_without_deleting_a_word(tmp_path):
+async def test_the_prompt_keeps_readline_keys_and_f2_opens_the_worlds(tmp_path):
     app = make_app(tmp_path)
     async with app.run_test(size=(80, 24)) as pilot:
         screen = await setup_ready(pilot)
         prompt = screen.query_one(PromptInput)
         prompt.focus()
-        await pilot.press(*"six nurses walk")
-        # the footer keeps the screen's keys while the prompt (an Input) has focus
+        await pilot.press(*"six nurses walk fast")
+        # the footer keeps the screen's keys while the prompt has focus
         footer_keys = {entry.binding.id for entry in screen.active_bindings.values() if entry.binding.show}
         assert {"setup.worlds", "setup.presets", "setup.generate"} <= footer_keys
         await pilot.press("ctrl+w")
+        assert prompt.value == "six nurses walk "
+        await pilot.press("ctrl+a", *"ten ", "ctrl+e", *"slowly")
+        assert prompt.value == "ten six nurses walk slowly"
+        await pilot.press("left", "left", "ctrl+u")
+        assert prompt.value == "ly"
+        await pilot.press("f2")
         await wait_until(pilot, lambda: screen.focused is screen.query_one("#worlds"), what="worlds focused")
-        assert prompt.value == "six nurses walk"
+        assert prompt.value == "ly"
 
 
 async def test_help_scrolls_by_keyboard_at_80x24_and_lists_the_screen_keys_first(tmp_path):

@@ -164,7 +164,8 @@ class GenerationScreen(Screen[None]):
 The pipeline's stages run one after another: **RoIs** (the model picks the places the prompt
 talks about), **Retrieval** (behavior nodes that fit), **Tree synthesis** (the model writes the
 groups and their trees, streamed below), **Post-processing** (trees become BT.CPP XML per agent)
-and **Planning** (Theta* waypoints). **Escape** cancels; after an error **r** retries. The
+and **Planning** (Theta* waypoints). **Escape** cancels (back to setup, or to the scenario you had
+when this is a regenerate); after an error **r** retries. The
 running stage shows its elapsed time, tokens, tokens/s and an ETA; **←/→** scroll the table
 sideways when a stage's detail is longer than the screen. When the model is asked again (its
 answer was cut off or failed the draft check), the output starts afresh under "attempt N (why)".
@@ -175,9 +176,12 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         Binding("r", "retry", "Retry", id="generation.retry", tooltip="Run the generation again"),
     ]
 
-    def __init__(self, request: GenerationRequest) -> None:
+    def __init__(self, request: GenerationRequest, *, back_to: Any = None) -> None:
         super().__init__()
         self.request = request
+        # The inspect screen this generation was asked from (a regenerate): it shows the new scenario,
+        # and Escape comes back to it as it was.
+        self.back_to = back_to
         self._cancel = threading.Event()
         self._stage = ""
         self._generating = False
@@ -367,7 +371,12 @@ answer was cut off or failed the draft check), the output starts afresh under "a
 
         self._generating = False
         self.grove.generated = message.generated
-        self.app.switch_screen(InspectScreen(message.generated, count_edits=dict(self.request.counts)))
+        back_to = self.back_to
+        if back_to is not None and back_to in self.app.screen_stack:
+            self.app.pop_screen()
+            back_to.show_scenario(message.generated, dict(self.request.counts))
+        else:
+            self.app.switch_screen(InspectScreen(message.generated, count_edits=dict(self.request.counts)))
         if message.note:
             self.app.notify(message.note, title="Counts", timeout=6)
 
@@ -384,7 +393,10 @@ answer was cut off or failed the draft check), the output starts afresh under "a
     def on_generation_stopped(self, message: msg.GenerationStopped) -> None:
         self._generating = False
         self.app.pop_screen()
-        self.notify("Generation cancelled.", title="Generation")
+        if self.back_to is not None:
+            self.notify("Generation cancelled: back to the scenario you had.", title="Generation")
+        else:
+            self.notify("Generation cancelled.", title="Generation")
 
     def on_unmount(self) -> None:
         # Leaving the screen (or quitting) stops the pipeline instead of letting it run unseen.

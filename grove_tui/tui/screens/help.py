@@ -59,7 +59,9 @@ def _screen_first(screen: Screen[object]) -> list[Binding]:
 
     def rank(binding: Binding) -> int:
         identity = (binding.id or "", binding.action)
-        return 0 if identity in own else 2 if identity in app_wide else 1
+        if identity in own:
+            return 0 if binding.id else 1  # the screen's own keys, then Textual's (tab: focus next)
+        return 3 if identity in app_wide else 2
 
     return sorted((entry.binding for entry in screen.active_bindings.values()), key=rank)
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections import defaultdict
 from typing import TYPE_CHECKING, Any
 
@@ -82,6 +83,29 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
                 return replace(overlay, highlight_points=point)
     path = np.array([agent.start, *agent.goals], dtype=np.float64)
     return replace(overlay, highlight_path=path, highlight_points=path[:1])
+
+
+DESTINATION_REACH = 0.75  # metres: a final goal this close to an entity's interaction point is at that entity
+
+
+def destination(agent: Any, world: Any) -> str:
+    """Where an agent is going: the entity its last goal serves (a counter, a bed), else the zone that
+    holds it, else the door nearest to it (an exit), else its coordinates; "" with no goal."""
+    if not agent.goals:
+        return ""
+    x, y = (float(v) for v in agent.goals[-1])
+    if world is None:
+        return f"({x:.1f}, {y:.1f})"
+    near = [(math.dist(e.interaction_point, (x, y)), e.name) for e in world.entities()]
+    if near and min(near)[0] <= DESTINATION_REACH:
+        return min(near)[1]
+    zone = world.zone_at(x, y)
+    if zone is not None:
+        return str(zone.name)
+    doors = [(math.dist(d.position, (x, y)), d.name) for d in world.doors()]
+    if doors and min(doors)[0] <= 2 * DESTINATION_REACH:
+        return min(doors)[1]
+    return f"({x:.1f}, {y:.1f})"
 
 
 def busiest_goal(scenario: Any) -> tuple[float, float] | None:
@@ -169,8 +193,10 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                 world_map.border_title = f"{scenario.world} · {scenario.preset}"
                 world_map.border_subtitle = self.generated.prompt[:70]
                 world_map.zoom_target = self._zoom_target
+                legend = MapLegend("", id="inspect-legend")
+                world_map.legend = legend
                 yield world_map
-                yield MapLegend("", id="inspect-legend")
+                yield legend
         yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
@@ -195,7 +221,7 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         tree.border_title = f"Trees · {len(self.generated.scenario.agents)} agents"
         # The verdict shows on the trees' border, so a ✗ is seen without opening the report.
         counted = summary(read_grounding(self.generated.result.report))
-        tree.border_subtitle = f"{counted} · a" if counted else ""
+        tree.border_subtitle = f"{counted} · a: report" if counted else ""
         self.query_one("#grounding", GroundingPanel).show(self.generated.result.report)
         self.query_one("#node-detail", Static).update("")
         self._show_side("tree")
@@ -232,7 +258,8 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
             group_label.append(f" ×{len(agents)}", style="dim")
             group_node = tree.root.add(group_label, BTNode("group", agents[0].id, label), expand=index == 0)
             for agent_index, agent in enumerate(agents):
-                tree.add_agent(group_node, agent, agent_xml(self.generated, agent), expand=index == 0 and agent_index == 0)
+                tree.add_agent(group_node, agent, agent_xml(self.generated, agent), expand=index == 0 and agent_index == 0,
+                               destination=destination(agent, self.generated.world))
         if scenario.robot is not None:
             robot = scenario.robot
             tree.root.add_leaf(
@@ -279,8 +306,9 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
             return ""
         start = f"({agent.start[0]:.1f}, {agent.start[1]:.1f})"
         prefix = f"group {data.name}: first agent\n" if data.kind == "group" else ""
+        going = destination(agent, self.generated.world)
         return (f"{prefix}agent {agent.id} · {agent.label or 'no label'} · {agent.behavior}\n"
-                f"start {start} → {agent.zone} · {len(agent.goals)} goals · {agent.max_vel} m/s")
+                f"from {start}" + (f" → {going}" if going else "") + f"\n{len(agent.goals)} goals · {agent.max_vel} m/s")
 
     def _show_xml(self) -> None:
         agents = {a.id: a for a in self.generated.scenario.agents}
@@ -342,7 +370,18 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
 
         g = self.generated
         counts = tuple(self.count_edits.items()) if keep_counts else ()
-        self.app.switch_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, seed, counts)))
+        # Over this screen, not instead of it: Escape (or a failure) during the generation comes back to
+        # the scenario you had; a new one replaces it here (show_scenario).
+        self.app.push_screen(GenerationScreen(GenerationRequest(g.prompt, g.world_name, g.preset, seed, counts),
+                                              back_to=self))
+
+    def show_scenario(self, generated: GeneratedScenario, count_edits: dict[str, int]) -> None:
+        """A regenerated scenario in place of the one shown (it is new, so Escape asks before leaving it)."""
+        self.generated = generated
+        self.grove.generated = generated
+        self.count_edits = dict(count_edits)
+        self.unsaved = True
+        self._show_generated()
 
     def action_edit_counts(self) -> None:
         from grove_tui.tui.screens.counts import CountsScreen

@@ -16,7 +16,9 @@ from textual.widgets.option_list import Option
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.map_view import MapView
-from grove_tui.tui.widgets.prompt_input import PromptInput
+from grove_tui.tui.widgets.clipped import ClippedText
+from grove_tui.tui.widgets.map_legend import WORLD_SYMBOLS, MapLegend
+from grove_tui.tui.widgets.prompt_input import PromptInput, ReadlineInput
 from grove_tui.tui.heap import freeze_heap
 from grove_tui.tui.widgets.footer import Footer
 
@@ -31,20 +33,24 @@ class SetupScreen(Screen[None]):
     HELP = """\
 ## Setup
 
-Choose a **world** (the map on the right previews it) and a **preset** (what kind of scenario the
-model writes), type a prompt and press **Enter** or **ctrl+g** to generate. The **seed** beside the
-prompt makes a run reproducible (same world, preset, prompt, seed and model give the same
-scenario); **ctrl+s** jumps to it. **ctrl+o** lists the recent runs saved under the runs folder and
-reopens one in the inspect screen. The models panel shows which GGUF file serves each role and
-whether it is loaded yet.
+Choose a **world** (**F2**; the map on the right previews it) and a **preset** (**ctrl+r**: what
+kind of scenario the model writes); **Enter** picks one and takes you back to the prompt, as you
+left it. Type a prompt and press **Enter** or **ctrl+g** to generate: pressed before the lists have
+loaded, it generates as soon as they have. The **seed** beside the prompt makes a run reproducible
+(same world, preset, prompt, seed and model give the same scenario); **ctrl+s** jumps to it.
+**ctrl+o** lists the recent runs saved under the runs folder and reopens one in the inspect screen.
+The models panel shows which GGUF file serves each role and whether it is loaded yet. The app
+opens on the world, preset and seed of your last generation; coming back from a scenario, setup
+shows its world, preset, prompt and seed.
 """
 
-    # priority: the prompt (an Input) has focus by default and binds ctrl+w to "delete word"; the
-    # screen's keys must win there too, and stay in the footer while the prompt is focused.
+    # priority: the prompt has focus by default; the screen's keys must work there too, and stay in the
+    # footer while it is focused. None of them is a readline editing key (the text fields keep those:
+    # ctrl+w deletes a word, so the worlds list is on F2).
     BINDINGS = [
         Binding("ctrl+g", "generate", "Generate", id="setup.generate", tooltip="Generate a scenario from the prompt",
                 priority=True),
-        Binding("ctrl+w", "focus('worlds')", "Worlds", id="setup.worlds", tooltip="Choose the world", priority=True),
+        Binding("f2", "focus('worlds')", "Worlds", id="setup.worlds", tooltip="Choose the world", priority=True),
         Binding("ctrl+r", "focus('presets')", "Presets", id="setup.presets", tooltip="Choose the preset",
                 priority=True),
         Binding("ctrl+o", "recent_runs", "Recent", id="setup.recent", tooltip="Reopen a saved run", priority=True),
@@ -67,28 +73,70 @@ whether it is loaded yet.
                 presets = OptionList(id="presets")
                 presets.border_title = "Preset"
                 yield presets
-                yield Static("", id="preset-description", markup=False)
+                yield ClippedText("", id="preset-description", max_lines=4)
                 models = Static("models: looking…", id="models", markup=False)
                 models.border_title = "Models"
                 yield models
                 problems = Static("", id="model-problems", markup=False)
                 problems.display = False
                 yield problems
-            preview = MapView(id="preview")
-            preview.border_title = "Map"
-            yield preview
+            with Vertical(id="preview-column"):
+                preview = MapView(id="preview")
+                preview.border_title = "Map"
+                legend = MapLegend("", id="preview-legend")
+                preview.legend = legend
+                yield preview
+                yield legend
         with Horizontal(id="prompt-row"):
             yield PromptInput(self.grove.history, placeholder="Describe the crowd… (Enter to generate)", id="prompt")
             yield Label("seed", id="seed-label")
-            yield Input(str(self.grove.settings.generation.seed), id="seed", restrict=r"[0-9]*", max_length=SEED_DIGITS,
-                        tooltip="Seed of the generation and the simulation (ctrl+s)")
+            yield ReadlineInput(str(self.grove.initial_seed), id="seed", restrict=r"[0-9]*", max_length=SEED_DIGITS,
+                                tooltip="Seed of the generation and the simulation (ctrl+s)")
             yield Button("Generate", id="generate", variant="primary")
         yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
+        self._worlds_listed = False
+        self._presets_listed = False
+        self._queued = False  # Enter came before the lists: generate once they are in
+        self._adopted: object = None  # the scenario whose choices the screen shows (on_screen_resume)
         self.query_one("#prompt", PromptInput).focus()
         # Paint the screen first; the catalogue worker's imports would otherwise delay the first frame.
         self.call_after_refresh(self.load_catalogue)
+
+    def on_screen_resume(self) -> None:
+        """Back from a scenario (generated, regenerated or reopened): show its world, preset, prompt and seed."""
+        generated = self.grove.generated
+        if generated is None or generated is self._adopted:
+            return
+        self._adopted = generated
+        self.select_world(generated.world_name)
+        self.select_preset(generated.preset)
+        prompt = self.query_one("#prompt", PromptInput)
+        if prompt.value != generated.prompt:
+            prompt.value = generated.prompt
+        self.query_one("#seed", Input).value = str(generated.seed)
+
+    def select_world(self, name: str) -> None:
+        worlds = self.query_one("#worlds", OptionList)
+        ids = [worlds.get_option_at_index(i).id for i in range(worlds.option_count)]
+        if name not in ids:
+            if not self._worlds_listed:
+                self.grove.initial_world = name  # the list is still on its way: it selects this one
+                return
+            worlds.add_option(Option(name, id=name))  # a world file given by path
+            ids.append(name)
+        if worlds.highlighted != ids.index(name):
+            worlds.highlighted = ids.index(name)
+
+    def select_preset(self, name: str) -> None:
+        presets = self.query_one("#presets", OptionList)
+        ids = [presets.get_option_at_index(i).id for i in range(presets.option_count)]
+        if name in ids:
+            if presets.highlighted != ids.index(name):
+                presets.highlighted = ids.index(name)
+        elif not self._presets_listed:
+            self.grove.initial_preset = name
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
         return [
@@ -174,6 +222,7 @@ whether it is loaded yet.
         if message.error:
             self.query_one("#preview", MapView).border_subtitle = "cannot list worlds"
             self.notify(message.error, title="Worlds", severity="error", timeout=10)
+            self._queued = False
             return
         initial = self.grove.initial_world
         names = list(message.names)
@@ -182,6 +231,8 @@ whether it is loaded yet.
         worlds.add_options([Option(name, id=name) for name in names])
         if names:
             worlds.highlighted = names.index(initial) if initial in names else 0
+        self._worlds_listed = True
+        self._generate_if_queued()
 
     def on_presets_listed(self, message: msg.PresetsListed) -> None:
         presets = self.query_one("#presets", OptionList)
@@ -192,6 +243,13 @@ whether it is loaded yet.
         if names:
             initial = self.grove.initial_preset
             presets.highlighted = names.index(initial) if initial in names else 0
+        self._presets_listed = True
+        self._generate_if_queued()
+
+    def _generate_if_queued(self) -> None:
+        if self._queued and self._worlds_listed and self._presets_listed:
+            self._queued = False
+            self.action_generate()
 
     def on_models_changed(self, message: msg.ModelsChanged) -> None:
         self.model_statuses = list(message.statuses)
@@ -237,19 +295,23 @@ whether it is loaded yet.
     @on(OptionList.OptionHighlighted, "#presets")
     def preset_highlighted(self, event: OptionList.OptionHighlighted) -> None:
         descriptions = getattr(self, "_preset_descriptions", {})
-        self.query_one("#preset-description", Static).update(descriptions.get(event.option.id or "", ""))
+        self.query_one("#preset-description", ClippedText).update(descriptions.get(event.option.id or "", ""))
 
     @on(OptionList.OptionSelected)
     def option_selected(self) -> None:
-        self.query_one("#prompt", PromptInput).focus()
+        """Back to the prompt as the user left it, the cursor at its end (nothing selected, nothing lost)."""
+        prompt = self.query_one("#prompt", PromptInput)
+        prompt.focus()
+        prompt.action_text_end()
 
     def on_world_loaded(self, message: msg.WorldLoaded) -> None:
         if message.name != self.selected_world:
             return
         preview = self.query_one("#preview", MapView)
+        self.query_one("#preview-legend", MapLegend).show_symbols(preview, WORLD_SYMBOLS)
         preview.set_world(message.world)
         preview.border_title = f"Map: {message.world.name}"
-        preview.border_subtitle = (message.world.description or "")[:60]
+        preview.border_subtitle = message.world.description or ""  # cut with "…" by the border when long
 
     def on_world_failed(self, message: msg.WorldFailed) -> None:
         preview = self.query_one("#preview", MapView)
@@ -286,6 +348,11 @@ whether it is loaded yet.
             prompt_box.focus()
             return
         if world is None or preset is None:
+            if not (self._worlds_listed and self._presets_listed):
+                # Too early: the lists are on their way. Generate as soon as they are in.
+                self._queued = True
+                self.notify("Generating as soon as the worlds and presets are listed…", title="Setup", timeout=3)
+                return
             self.notify("Choose a world and a preset first.", title="Setup", severity="warning")
             return
         problems = self.model_problems()
@@ -302,4 +369,5 @@ whether it is loaded yet.
             self.query_one("#seed", Input).focus()
             return
         request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
+        self.grove.remember(world, preset, seed)
         self.app.push_screen(GenerationScreen(request))

@@ -184,8 +184,10 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
                 world_map = SimMapView(id="sim-map")
                 world_map.border_title = f"{scenario.world} · {len(scenario.agents)} agents"
                 world_map.zoom_target = self._zoom_target
+                legend = MapLegend("", id="sim-legend")
+                world_map.legend = legend
                 yield world_map
-                yield MapLegend("", id="sim-legend")
+                yield legend
             with Vertical(id="sim-side"):
                 status = Static("loading simulation…", id="sim-status")
                 status.border_title = "Simulation"

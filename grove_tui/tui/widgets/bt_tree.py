@@ -5,9 +5,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from rich.segment import Segment
 from rich.style import Style
 from rich.text import Text
 from textual.binding import Binding
+from textual.strip import Strip
 from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
@@ -121,9 +123,11 @@ running, success, failure.
         if path:
             self._nodes_by_path[(agent_id, path_key(path))] = node
 
-    def add_agent(self, parent: TreeNode[BTNode], agent: Any, xml_text: str, expand: bool = False) -> TreeNode[BTNode]:
+    def add_agent(self, parent: TreeNode[BTNode], agent: Any, xml_text: str, expand: bool = False,
+                  destination: str = "") -> TreeNode[BTNode]:
+        """An agent's row ("agent 3 Regular → pharmacy_counter": where it is going) and its tree."""
         label = Text(f"agent {agent.id}", style="bold")
-        label.append(f" {agent.behavior} → {agent.zone}" if agent.zone else f" {agent.behavior}", style="dim")
+        label.append(f" {agent.behavior} → {destination}" if destination else f" {agent.behavior}", style="dim")
         node = parent.add(label, BTNode("agent", agent.id, f"agent {agent.id}"), expand=expand)
         self.agent_nodes[agent.id] = node
         self.add_agent_tree(node, agent.id, xml_text, expand=expand)
@@ -148,6 +152,20 @@ running, success, failure.
         self._nodes_by_path.clear()
         self.agent_nodes.clear()
         self._status.clear()
+
+    # rows cut by the panel's edge ---------------------------------------------------------------------
+    def _render_line(self, y: int, x1: int, x2: int, base_style: Style) -> Strip:
+        """A row longer than the panel ends with "…" at its right edge (←/→ scroll to read the rest)."""
+        strip = super()._render_line(y, x1, x2, base_style)
+        lines = self._tree_lines
+        if y >= len(lines) or x2 - x1 < 2:
+            return strip
+        line = lines[y]
+        if line._get_guide_width(self.guide_depth, self.show_root) + self.get_label_width(line.node) <= x2:
+            return strip
+        last = list(strip.crop(x2 - x1 - 1, x2 - x1))
+        style = last[-1].style if last else None
+        return Strip.join([strip.crop(0, x2 - x1 - 1), Strip([Segment("…", style)], 1)])
 
     # live status -------------------------------------------------------------------------------------
     def set_status(self, agent_id: int, statuses: list[tuple[Any, str, str]]) -> None:

@@ -15,31 +15,57 @@ INSPECT_SYMBOLS = (
     ("○", ms.SPAWN, "spawn"),
     ("◎", ms.GOAL, "goal"),
     ("·", ms.WAYPOINT, "waypoint"),
-    ("◆", ms.SELECTED, "selected"),
     ("▒", ms.DOOR, "door"),
+    ("◆", ms.SELECTED, "selected"),
 )
+WORLD_SYMBOLS = (("▒", ms.DOOR, "door"),)
 ROBOT_PATH = ("⣀", ms.ROBOT_PATH, "robot path")
 FIELD = ("→", ms.FIELD, "field")
 
 
+ABBREVIATED = ("ab.", ms.ZONE_LABEL, "=shortened")  # zone names cut to fit, by map_raster.abbreviate's rule
+
+
 class MapLegend(Static):
-    """Rebuilt by its screen with `show_symbols` / `show_colours`; it takes the map's styles."""
+    """Rebuilt by its screen with `show_symbols` / `show_colours`; it takes the map's styles. The map
+    tells it when it is drawn again (`map_changed`): the zone-name rule shows only while a name is cut."""
 
     DEFAULT_CSS = """
     MapLegend { height: 1; padding: 0 1; text-wrap: nowrap; text-overflow: ellipsis; }
     """
 
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+        self._shown: tuple[str, tuple[object, ...]] | None = None
+
+    def map_changed(self, world_map: MapView) -> None:
+        if self._shown is None:
+            return
+        kind, args = self._shown
+        if kind == "symbols":
+            self.show_symbols(world_map, *args)  # type: ignore[arg-type]
+        else:
+            self.show_colours(world_map, *args)  # type: ignore[arg-type]
+
     def show_symbols(self, world_map: MapView, symbols: Sequence[tuple[str, int, str]]) -> None:
+        self._shown = ("symbols", (symbols,))
+        entries = list(symbols)
+        if world_map.labels_abbreviated:
+            # After the markers a scenario draws, before those of a selection or the robot.
+            at = next((i for i, (_g, style, _m) in enumerate(entries) if style in (ms.SELECTED, ms.ROBOT_PATH, ms.FIELD)),
+                      len(entries))
+            entries.insert(at, ABBREVIATED)
         legend = Text(no_wrap=True, overflow="ellipsis")
-        for glyph, style, meaning in symbols:
+        for glyph, style, meaning in entries:
             legend.append(glyph, world_map.get_component_rich_style(STYLE_CLASSES[style]))
-            legend.append(f"{meaning}  ")
+            legend.append(f"{meaning} ")
         self.update(legend.rstrip() or legend)
-        self.tooltip = "  ".join(f"{glyph} {meaning}" for glyph, _style, meaning in symbols)
+        self.tooltip = "  ".join(f"{glyph}{meaning}" for glyph, _style, meaning in entries)
 
     def show_colours(self, world_map: MapView, mode: str, names: Sequence[str],
                      symbols: Sequence[tuple[str, int, str]] = ()) -> None:
         """People coloured by `mode` (group or behavior): one coloured dot per name, then the symbols."""
+        self._shown = ("colours", (mode, names, symbols))
         legend = Text(no_wrap=True, overflow="ellipsis")
         legend.append(f"{mode}: ")
         for index, name in enumerate(names):
@@ -48,8 +74,12 @@ class MapLegend(Static):
             style = STYLE_CLASSES[ms.GROUP_BASE + index % ms.GROUP_COLOURS]
             legend.append("⣿", world_map.get_component_rich_style(style))
             legend.append(f"{name} ")
-        for glyph, style, meaning in symbols:
-            legend.append(f" {glyph}", world_map.get_component_rich_style(STYLE_CLASSES[style]))
+        if world_map.labels_abbreviated:
+            glyph, style_index, meaning = ABBREVIATED
+            legend.append(f" {glyph}", world_map.get_component_rich_style(STYLE_CLASSES[style_index]))
+            legend.append(meaning)
+        for glyph, style_index, meaning in symbols:
+            legend.append(f" {glyph}", world_map.get_component_rich_style(STYLE_CLASSES[style_index]))
             legend.append(meaning)
         self.update(legend)
         self.tooltip = f"people coloured by {mode}: " + ", ".join(names)

@@ -69,6 +69,7 @@ class MapRaster:
         # Walls, entities and doors; zone labels go on last, into the cells the overlays leave empty.
         self._plain_chars, self._plain_styles = self._draw_world()
         self.base_chars, self.base_styles = self._plain_chars.copy(), self._plain_styles.copy()
+        self.labels_abbreviated = False  # whether the last labels painted shortened a name (the legend says how)
         self._paint_labels(self.base_chars, self.base_styles)
 
     @staticmethod
@@ -132,8 +133,12 @@ class MapRaster:
         chars[rows[keep], cols[keep]] = ord(glyph)
         styles[rows[keep], cols[keep]] = style
 
-    def _paint_label(self, chars: np.ndarray, styles: np.ndarray, row: int, col: int, text: str, style: int) -> None:
-        """Write `text` centred on (row, col) in a run of empty cells, trying nearby rows, truncating if tight."""
+    def _paint_label(self, chars: np.ndarray, styles: np.ndarray, row: int, col: int, name: str, style: int) -> bool:
+        """Write a zone's name centred on (row, col) in a run of empty cells, trying nearby rows; where
+        the whole name does not fit, its words are shortened by `abbreviate` (the legend says how).
+        Returns whether the name was shortened."""
+        full = label_words(name)
+        limit = max(MIN_LABEL_ROOM, self.width // 3)  # a label never takes more than a third of the map's width
         best: tuple[int, int, int] | None = None
         for candidate in (row, row - 1, row + 1, row - 2, row + 2):
             if not (0 <= candidate < self.height and 0 <= col < self.width) or chars[candidate, col] != SPACE:
@@ -145,18 +150,21 @@ class MapRaster:
                 end += 1
             # keep one blank on each side so the label does not touch a wall
             start, end = start + 1, end - 1
-            if end - start >= min(len(text), 4) and (best is None or end - start > best[2] - best[1]):
+            if end - start >= MIN_LABEL_CELLS and (best is None or end - start > best[2] - best[1]):
                 best = (candidate, start, end)
-                if end - start >= len(text):
+                if end - start >= min(len(full), limit):
                     break
         if best is None:
-            return
+            return False
         candidate, start, end = best
-        label = text[: end - start]
+        label = abbreviate(name, min(end - start, limit))
+        if not label:
+            return False
         left = min(max(start, col - len(label) // 2), end - len(label))
         for offset, char in enumerate(label):
             chars[candidate, left + offset] = ord(char)
             styles[candidate, left + offset] = style
+        return label != full
 
     @staticmethod
     def _polygon_segments(points: Any) -> np.ndarray:
@@ -178,11 +186,14 @@ class MapRaster:
         return chars, styles
 
     def _paint_labels(self, chars: np.ndarray, styles: np.ndarray) -> None:
-        """Zone names into empty cells near each zone's centre: markers move a label, never cut it."""
+        """Zone names into empty cells near each zone's centre: markers move a label, never cut it, and
+        a name with no room for all of it is shortened by `abbreviate` (`labels_abbreviated` says so)."""
+        shortened = False
         for zone in self.world.zones:
             cx, cy = _centroid_xy(zone)
             rows, cols = self.to_cells(np.array([[cx, cy]]))
-            self._paint_label(chars, styles, int(rows[0]), int(cols[0]), _zone_label(zone.name, self.width), ZONE_LABEL)
+            shortened |= self._paint_label(chars, styles, int(rows[0]), int(cols[0]), zone.name, ZONE_LABEL)
+        self.labels_abbreviated = shortened
 
     def compose(self, overlay: Overlay | None) -> tuple[np.ndarray, np.ndarray]:
         """The static map with scenario overlays; what the simulation draws agents on."""
@@ -347,6 +358,36 @@ def _centroid_xy(zone: Any) -> tuple[float, float]:
     return float(centroid[0]), float(centroid[1])
 
 
-def _zone_label(name: str, width: int) -> str:
-    label = name.replace("_", " ")
-    return label[: max(1, min(len(label), width // 3))]
+MIN_LABEL_ROOM = 8  # cells a label may always take, however narrow the map
+MIN_LABEL_CELLS = 4  # a gap narrower than this gets no label: "w." would tell nobody anything
+ABBREVIATION_MARK = "."  # ends every word the map shortens
+
+
+def label_words(name: str) -> str:
+    return " ".join(name.replace("_", " ").split())
+
+
+def abbreviate(name: str, room: int) -> str:
+    """A zone name in `room` cells, by one rule the map legend explains ("ab. = shortened name"): whole
+    if it fits, else shortened with every cut marked by a "." at its end. Each word longer than k
+    letters keeps its first k ("intensive care" -> "inten. care", "int. car."), k the largest that fits;
+    words shorter than three letters only when nothing else fits; last words go first when even that is
+    too long ("main waiting" -> "main."). "" when not even one letter and its mark fit.
+    """
+    words = label_words(name).split(" ")
+    if not words or not words[0]:
+        return ""
+    full = " ".join(words)
+    if len(full) <= room:
+        return full
+    for shortest in (3, 1):
+        for kept in range(len(words), 0, -1):
+            head = words[:kept]
+            for k in range(max(len(w) for w in head), shortest - 1, -1):
+                cut = [w if len(w) <= k else w[:k] + ABBREVIATION_MARK for w in head]
+                if kept < len(words) and not cut[-1].endswith(ABBREVIATION_MARK):
+                    cut[-1] += ABBREVIATION_MARK  # the words after it were dropped
+                label = " ".join(cut)
+                if len(label) <= room:
+                    return label
+    return ""

@@ -46,7 +46,10 @@ class MapView(ScrollView, can_focus=True):
     HELP = """\
 ## Map
 
-Walls and entity outlines are drawn with braille dots, zones are labelled, doors are `▒`.
+Walls and entity outlines are drawn with braille dots, zones are labelled, doors are `▒`. A zone name
+with no room for all of it is shortened, and every cut ends with a dot: each long word keeps its first
+letters (`int. care` for intensive care), and the last words go when even that is too long (`main.`
+for main waiting); the legend then shows `ab.=shortened`. Zoom in (**+**) to read them whole.
 Scenario overlays: spawns `○`, goals `◎`, injected waypoints `·`, velocity-field arrows, the robot's
 path, and the selection highlighted with `◆`.
 
@@ -111,6 +114,9 @@ path, and the selection highlighted with `◆`.
         self._fit_for: tuple[int, int] | None = None
         # The world point zoom centres on (the screen's selection or queue); None: the view's middle.
         self.zoom_target: Callable[[], tuple[float, float] | None] | None = None
+        # The MapLegend under the map: told when the map is drawn again (zoom, size), since whether a zone
+        # name had to be shortened (and the legend says how) depends on the scale.
+        self.legend: Any = None
 
     # public API --------------------------------------------------------------------------------------
     @property
@@ -219,6 +225,13 @@ path, and the selection highlighted with `◆`.
         self._agent_strips.clear()
         self.virtual_size = Size(self._raster.width, self._raster.height)
         self.refresh()
+        if self.legend is not None:
+            self.legend.map_changed(self)
+
+    @property
+    def labels_abbreviated(self) -> bool:
+        """Whether a zone name on the map is shortened (the legend then explains the rule)."""
+        return self._raster is not None and self._raster.labels_abbreviated
 
     def _styles_palette(self) -> list[Style]:
         if self._palette is None:
