@@ -23,14 +23,14 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.bt.xml import parse_tree_text
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
-from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import grounding_report
 from grove_tui.language.model import Count, PromptReading, effective_counts
 from grove_tui.language.reading import read_prompt
@@ -38,7 +38,7 @@ from grove_tui.generation.rois import RoISelection, describe_selection, refine_w
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.errors import Cancelled
+from grove_tui.errors import BTError, Cancelled, GenerationError, PromptError
 from grove_tui.world.model import World
 
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
@@ -144,9 +144,9 @@ class _StageClock:
 
 def world_reference(world: World) -> str:
     """How a scenario names its world: the shipped name, or the path of a user's world file."""
-    source = getattr(world, "source", None)
+    source = world.source
     if source is None:
-        return world.name
+        return str(world.name)
     source = Path(source)
     try:
         if source.resolve().parent == worlds_dir().resolve():

@@ -23,7 +23,7 @@ from grove_tui.bt.manifest import NODES
 from grove_tui.bt.ports import parse_point_list
 from grove_tui.bt.xml import write_tree
 from grove_tui.errors import Cancelled
-from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
+from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
     block_formations,
@@ -32,7 +32,8 @@ from grove_tui.generation.formations import (
     predict_formations,
 )
 from grove_tui.generation.postprocess import FreeSpace, PostProcessed
-from grove_tui.generation.presets import GenerationError, Preset
+from grove_tui.errors import GenerationError, PlanningError
+from grove_tui.generation.presets import Preset
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.waypoints import plan_waypoints
@@ -71,8 +72,10 @@ class CachedPlanner:
         self.planner = planner
         self.cache = cache or PlanCache()
 
-    def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
-        return self.cache.plan(self.world_name, self.planner, start, goal, start_label=start_label, goal_label=goal_label)
+    def plan(self, start: Point, goal: Point, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+        path: np.ndarray = self.cache.plan(self.world_name, self.planner, start, goal, start_label=start_label,
+                                           goal_label=goal_label)
+        return path
 
 
 def goals_from_tree(document: TreeDocument) -> list[Point]:
@@ -220,7 +223,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProces
             except PlanningError:
                 if not may_cross:
                     raise
-        path = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
+        path: np.ndarray = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
         if robot_planner is not None:
             crossed = [f.describe() for f in formations
                        if nearest_formation_gap([f], [tuple(p) for p in path]) < clearance]

@@ -23,12 +23,13 @@ from grove_tui.bt.manifest import NODES, NodeSpec
 from grove_tui.bt.ports import format_port_value
 from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftNode
-from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.errors import GenerationError, PlanningError, PromptError
+from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import reconcile
 from grove_tui.generation.rois import RoISelection
 from grove_tui.language.model import PromptReading, effective_counts
 from grove_tui.navigation.grid import OccupancyGrid
-from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
+from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.navigation.velocity_field import least_congested_exits, nearest_exits
 from grove_tui.world.model import Door, Entity, World
 
@@ -292,7 +293,7 @@ def _components(free: np.ndarray) -> np.ndarray:
     from scipy import ndimage
 
     labels, _ = ndimage.label(free, structure=np.ones((3, 3), dtype=int))
-    return labels
+    return np.asarray(labels)
 
 
 # ---- targets --------------------------------------------------------------------------------

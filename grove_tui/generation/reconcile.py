@@ -320,7 +320,7 @@ def _service_in(world: World, name: str) -> str | None:
     for wanted in SERVICE_TYPES:
         for e in getattr(zone, "entities", ()):
             if wanted in e.type or wanted in e.name:
-                return e.name
+                return str(e.name)
     return None
 
 
@@ -331,7 +331,7 @@ def _is_exit(world: World, name: str | None) -> bool:
 def _nearest_exit(world: World, start: str | None) -> str:
     exits = world.exits()
     if not exits:
-        return world.zones[0].name
+        return str(world.zones[0].name)
     zone = _zone_of(world, start or "")
     if zone is None:
         return exits[0].name

@@ -18,7 +18,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import TypeVar
 
-from grove_tui.generation.presets import Preset, PromptError
+from grove_tui.errors import PromptError
+from grove_tui.generation.presets import Preset
 from grove_tui.language.model import FieldConfidence, GroupReading, PromptReading, RobotReading
 from grove_tui.llm.grammar import schema_to_gbnf
 from grove_tui.llm.local import LocalLLM

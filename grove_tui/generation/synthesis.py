@@ -23,8 +23,9 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.bt.manifest import NODES
-from grove_tui.generation.draft import Draft, DraftError, draft_grammar, parse_draft
-from grove_tui.generation.presets import GenerationError, Preset
+from grove_tui.generation.draft import Draft, draft_grammar, parse_draft
+from grove_tui.errors import DraftError, GenerationError
+from grove_tui.generation.presets import Preset
 from grove_tui.generation.rois import RoISelection
 from grove_tui.language.model import PromptReading, effective_counts
 from grove_tui.world.model import World
