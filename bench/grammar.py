@@ -8,7 +8,9 @@ on one model, the same prompt (a real synthesis request) and the draft grammar o
 
 - `free`: no grammar (what decoding alone costs);
 - `grammar_first`: llama-cpp-python's chain (what GROVE runs today);
-- `sample_first`: the upstream scheme, as the model worker runs it (`worker.SampleFirst`).
+- `sample_first`: the upstream scheme, the worker's fallback when llguidance is missing (`worker.SampleFirst`);
+- `mask_first`: llguidance's token mask, then the chain over the allowed tokens only (`worker.MaskFirst`,
+  what the worker runs; bench/grammar_engines.py compares the mask engines without a model).
 
 Per-token times exclude the prompt's evaluation. Run by hand (loads a model; the figures scale with
 the machine's load, printed with them):
@@ -47,7 +49,10 @@ def synthesis_request():
     selection = select_rois(world, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
     return prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
-                           cards_for=retriever.cards_for)
+                           cards_for=retriever.cards_for, documents_named=retriever.documents_named)
+
+
+_MASKS = None
 
 
 def run(llm, tokens, grammar_text, sampling, mode: str, n_tokens: int, seed: int) -> tuple[float, int, int, str]:
@@ -64,11 +69,17 @@ def run(llm, tokens, grammar_text, sampling, mode: str, n_tokens: int, seed: int
     decoded: list[int] = []
     rejections = 0
     started = time.perf_counter()
-    if mode == "sample_first":
-        from grove_tui.llm.worker import SampleFirst
+    if mode in ("sample_first", "mask_first"):
+        from grove_tui.llm.worker import SampleFirst, TokenMasks, make_sampler
 
-        sampler = SampleFirst(llm, grammar_text, top_k=sampling.top_k, top_p=sampling.top_p, min_p=sampling.min_p,
-                              temperature=sampling.temperature, presence_penalty=sampling.presence_penalty, seed=seed)
+        options = dict(top_k=sampling.top_k, top_p=sampling.top_p, min_p=sampling.min_p,
+                       temperature=sampling.temperature, presence_penalty=sampling.presence_penalty, seed=seed)
+        if mode == "mask_first":
+            global _MASKS
+            _MASKS = _MASKS or TokenMasks(llm)
+            sampler = make_sampler(llm, grammar_text, _MASKS, **options)
+        else:
+            sampler = SampleFirst(llm, grammar_text, **options)
         llm.eval(tokens[-1:])
         for _ in range(n_tokens):
             token = sampler.sample()
@@ -127,15 +138,17 @@ def main() -> int:
     print(f"model {path.name}: vocabulary {llm.n_vocab()}, prompt {len(tokens)} tokens, {threads} threads, "
           f"load average {load:.2f}")
     figures: dict[str, float] = {}
-    for mode in ("free", "grammar_first", "sample_first") * args.rounds:
+    for mode in ("free", "grammar_first", "sample_first", "mask_first") * args.rounds:
         per_token, count, rejected, output = run(llm, tokens, grammar_text, sampling, mode, args.tokens, seed=3)
         figures[mode] = min(figures.get(mode, float("inf")), per_token)  # best of two: the machine is shared
         print(f"{mode:14s} {per_token * 1000:8.1f} ms/token  {count:4d} tokens  {rejected:3d} rejected  {output[:70]!r}")
     grammar_ms = (figures["grammar_first"] - figures["free"]) * 1000
     sample_first_ms = (figures["sample_first"] - figures["free"]) * 1000
+    mask_first_ms = (figures["mask_first"] - figures["free"]) * 1000
     print(f"vocab={llm.n_vocab()} free_ms={figures['free'] * 1000:.1f} grammar_first_ms={figures['grammar_first'] * 1000:.1f} "
           f"sample_first_ms={figures['sample_first'] * 1000:.1f} grammar_cost_ms={grammar_ms:.1f} "
-          f"sample_first_cost_ms={sample_first_ms:.1f} load={os.getloadavg()[0]:.2f}")
+          f"sample_first_cost_ms={sample_first_ms:.1f} mask_first_ms={figures['mask_first'] * 1000:.1f} "
+          f"mask_first_cost_ms={mask_first_ms:.1f} load={os.getloadavg()[0]:.2f}")
     return 0
 
 

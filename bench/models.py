@@ -51,11 +51,17 @@ from pathlib import Path
 from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "bench"))
 sys.path.insert(0, str(ROOT / "tests"))
+sys.path.insert(0, str(ROOT / "bench"))
+# --baseline runs each row in a child whose grove_tui is another checkout's (the code "before").
+CODE = Path(os.environ.get("GROVE_BENCH_CODE") or ROOT)
+sys.path.insert(0, str(CODE))
 
 from tokens import PROMPTS  # noqa: E402  (the same prompts as the token table and bench/pipeline.py)
+
+# tokens.py put this checkout first on the path: the code measured comes first again.
+sys.path.remove(str(CODE))
+sys.path.insert(0, str(CODE))
 
 SIZES = ("0.6b", "1.7b", "4b")
 DEFAULT_QUANT = {"0.6b": "Q8_0", "1.7b": "Q8_0", "4b": "Q4_0"}
@@ -81,7 +87,7 @@ def model_path(size: str) -> Path:
     return path
 
 
-def recording_factory(threads: int, calls: list[dict[str, Any]]) -> Any:
+def recording_factory(threads: int | None, calls: list[dict[str, Any]]) -> Any:
     """The session's LocalLLMs, each recording its calls (messages, grammar, the Generation)."""
     from grove_tui.llm.local import LocalLLM
 
@@ -103,8 +109,9 @@ def recording_factory(threads: int, calls: list[dict[str, Any]]) -> Any:
 @dataclass
 class Row:
     model: str
-    threads: int
+    threads: int  # 0: the product's default (the idle cores at each request, llm/local.py)
     preset: str
+    code: str = "this"  # "before" for --baseline's checkout
     load: float = 0.0
     first: float = 0.0
     warm: float = 0.0
@@ -114,6 +121,8 @@ class Row:
     prefill_tps: float = float("nan")
     decode_tps: float = float("nan")
     grammar_ms: float = float("nan")
+    uncached_tokens: int = 0  # warm synthesis prompt tokens not served from a live or disk cache
+    load_average: str = ""  # at the start and the end of the row
     failures: int = 0
 
 
@@ -125,37 +134,45 @@ def synthesis_call(calls: list[dict[str, Any]], report: dict[str, Any]) -> dict[
     return None
 
 
-GRAMMAR_PROBE_TOKENS = 48
+GRAMMAR_PROBE_TOKENS = 24
 
 
 def grammar_cost_ms(call: dict[str, Any]) -> float:
     """Milliseconds per token the grammar adds: the same prompt (in the KV cache, so both runs are
-    decode) decoded for up to GRAMMAR_PROBE_TOKENS tokens with and without it, same seed."""
+    decode) decoded for up to GRAMMAR_PROBE_TOKENS tokens with and without it, same seed, timed from
+    the first streamed token to the last (a request's fixed costs, spread over a short constrained
+    answer, would otherwise count as the grammar's)."""
     from grove_tui.errors import ModelError
 
     llm, messages = call["llm"], call["messages"]
     per_token = []
     for grammar in (call["grammar"], None):
-        started = time.perf_counter()
+        stamps: list[float] = []
         try:
-            run = llm.generate(messages, grammar, max_tokens=GRAMMAR_PROBE_TOKENS, seed=11, length_retries=0)
-            tokens, seconds = max(1, run.completion_tokens), run.seconds
+            run = llm.generate(messages, grammar, max_tokens=GRAMMAR_PROBE_TOKENS, seed=11, length_retries=0,
+                               on_token=lambda _piece: stamps.append(time.perf_counter()))
+            tokens = run.completion_tokens
         except ModelError:  # ran to the budget (a cut-off answer is an error to the product, data here)
-            tokens, seconds = GRAMMAR_PROBE_TOKENS, time.perf_counter() - started
-        per_token.append(seconds / tokens)
+            tokens = GRAMMAR_PROBE_TOKENS
+        # Forced tokens arrive in bursts with the sampled one: count tokens, not pieces.
+        per_token.append((stamps[-1] - stamps[0]) / max(1, tokens - 1) if len(stamps) > 1 else float("nan"))
     return 1000 * (per_token[0] - per_token[1])
 
 
 def measure(model: str, path: Path | None, threads: int, preset: str, out: Path) -> Row:
+    """One row: load (models up, then the app's warm-up of the first prompt's world and preset), first, warm."""
     from grove_tui.services.session import GroveSession, ScenarioRequest
 
-    row = Row(model, threads, preset)
+    row = Row(model, threads, preset, load_average=_load_text())
     calls: list[dict[str, Any]] = []
-    session = GroveSession(bt_model=str(path) if path else None, llm_factory=recording_factory(threads, calls))
+    session = GroveSession(bt_model=str(path) if path else None,
+                           llm_factory=recording_factory(threads or None, calls))
     cases = PROMPTS[preset][:2]
     try:
         started = time.perf_counter()
         session.load_models()
+        # As the app starts: the world and preset's fixed prompt prefix evaluated (or restored from disk).
+        session.warm_up(cases[0][0], preset)
         row.load = time.perf_counter() - started
         for index, (world, prompt) in enumerate(cases):
             started = time.perf_counter()
@@ -183,10 +200,35 @@ def measure(model: str, path: Path | None, threads: int, preset: str, out: Path)
                 row.prefill_tps = (generation.prompt_tokens - generation.cached_tokens) / first_token
                 # completion_tokens counts every attempt; time after the first token is the accepted attempt's.
                 row.decode_tps = max(1, generation.completion_tokens // generation.attempts - 1) / max(1e-6, generation.seconds - first_token)
+                row.uncached_tokens = generation.prompt_tokens - generation.cached_tokens
                 row.grammar_ms = grammar_cost_ms(call)
     finally:
         session.close()
+    row.load_average += " -> " + _load_text()
     return row
+
+
+def _load_text() -> str:
+    one, five, _ = os.getloadavg()
+    return f"{one:.1f}/{five:.1f}"
+
+
+def measure_in_child(code: Path, label: str, model: str, path: Path | None, threads: int, preset: str) -> Row:
+    """measure() in a fresh process whose grove_tui is `code`'s (this checkout or --baseline's)."""
+    import dataclasses
+
+    command = [sys.executable, __file__, "--child-measure", model, "--threads", str(threads), "--presets", preset]
+    if path is not None:
+        command += ["--child-model-path", str(path)]
+    env = {**os.environ, "GROVE_BENCH_CODE": str(code), "PYTHONPATH": str(code)}
+    done = subprocess.run(command, capture_output=True, text=True, check=False, env=env)
+    sys.stderr.write(done.stderr[-3000:])
+    try:
+        data = json.loads(done.stdout.strip().splitlines()[-1])
+    except (IndexError, ValueError):
+        return Row(model, threads, preset, code=label, failures=1)
+    fields = {f.name for f in dataclasses.fields(Row)}
+    return Row(**{k: v for k, v in data.items() if k in fields} | {"code": label})
 
 
 RATE_TOKENS = 24
@@ -282,23 +324,38 @@ def main() -> int:
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", default=",".join(SIZES), help="Qwen3 shapes, of " + ", ".join(SIZES))
-    parser.add_argument("--threads", default=None, help="llama.cpp thread counts (default: 1 and this machine's budget)")
+    parser.add_argument("--threads", default="default",
+                        help="llama.cpp thread counts, 'default' for the product's (the idle cores at each request)")
+    parser.add_argument("--baseline", default=None, metavar="CHECKOUT",
+                        help="also measure another checkout's code (e.g. a worktree of main), each row of both in a "
+                             "fresh process, interleaved, so before and after share the minutes and the load")
     parser.add_argument("--presets", default="normal,queuing")
     parser.add_argument("--first-scenario", action="store_true",
                         help="also time the first scenario of a fresh process, cold and after GroveSession.warm_up")
     parser.add_argument("--rates", action="store_true",
                         help="only load, prefill, decode and grammar rates on a short request (no pipeline)")
     parser.add_argument("--child-first-scenario", default=None, help=argparse.SUPPRESS)
+    parser.add_argument("--child-measure", default=None, help=argparse.SUPPRESS)
     parser.add_argument("--child-model-path", default=None, help=argparse.SUPPRESS)
     parser.add_argument("--child-warm-up", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     presets = [p.strip() for p in args.presets.split(",") if p.strip()]
     budget = core_budget().cores
-    threads = sorted({int(t) for t in args.threads.split(",")}) if args.threads else sorted({1, budget})
+    threads = sorted({0 if t.strip() == "default" else int(t) for t in args.threads.split(",") if t.strip()})
+
+    if args.child_measure:
+        import dataclasses
+
+        path = Path(args.child_model_path) if args.child_model_path else None
+        with tempfile.TemporaryDirectory(prefix="grove-bench-models-") as tmp:
+            row = measure(args.child_measure, path, threads[0], presets[0], Path(tmp))
+        print(json.dumps(dataclasses.asdict(row)))
+        return 0
 
     if args.child_first_scenario:
         path = Path(args.child_model_path) if args.child_model_path else None
-        print(json.dumps(first_scenario(args.child_first_scenario, path, threads[-1], presets[0], args.child_warm_up)))
+        print(json.dumps(first_scenario(args.child_first_scenario, path, max(1, threads[-1]), presets[0],
+                                        args.child_warm_up)))
         return 0
 
     sizes = [s.strip() for s in args.sizes.split(",") if s.strip()]
@@ -323,12 +380,17 @@ def main() -> int:
         print(" ".join(headline + [f"load_average={os.getloadavg()[0]:.2f}"]))
         return 0
     rows: list[Row] = []
-    with tempfile.TemporaryDirectory(prefix="grove-bench-models-") as tmp:
-        for name, path in models:
-            for count in threads:
-                for preset in presets:
-                    rows.append(measure(name, path, count, preset, Path(tmp)))
+    started_load = _load_text()
+    codes = [("this", ROOT)] + ([("before", Path(args.baseline).resolve())] if args.baseline else [])
+    turn = 0
+    for name, path in models:
+        for count in threads:
+            for preset in presets:
+                # Alternate which code goes first, so neither always runs on the cooler machine.
+                for label, code in (codes if turn % 2 else codes[::-1]):
+                    rows.append(measure_in_child(code, label, name, path, count, preset))
                     print(f"  row: {rows[-1]}", file=sys.stderr, flush=True)  # kept if the run is stopped early
+                turn += 1
     first_runs: dict[tuple[str, bool], dict[str, float]] = {}
     if args.first_scenario:
         # The app's start with the default (embedded) model: a fresh process each, cold then warmed.
@@ -338,20 +400,31 @@ def main() -> int:
 
     load = os.getloadavg()
     print(f"\nPrompt -> bundle through GroveSession, seconds ({os.cpu_count()} cores, llama.cpp budget {budget}, "
-          f"load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f})")
-    print("| model (bt role) | threads | preset | load | first | warm | prompt tok | output tok | prefill tok/s "
-          "| decode tok/s | grammar ms/tok | warm stages: rois/retrieval/synthesis/post+plan |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+          f"load average {started_load} at the start, {load[0]:.1f} {load[1]:.1f} {load[2]:.1f} at the end)")
+    print("| model (bt role) | code | threads | preset | load s | first | warm | prompt tok | uncached tok | output tok "
+          "| prefill tok/s | decode tok/s | grammar ms/tok | warm stages: rois/retrieval/synthesis/post+plan "
+          "| load average (1/5 min) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         stages = r.stages or {s: float("nan") for s in STAGES}
-        print(f"| {r.model} | {r.threads} | {r.preset} | {r.load:.1f} | {r.first:.1f} | {r.warm:.1f} | {r.prompt_tokens} "
+        print(f"| {r.model} | {r.code} | {r.threads or 'default'} | {r.preset} | {r.load:.1f} | {r.first:.1f} "
+              f"| {r.warm:.1f} | {r.prompt_tokens} | {r.uncached_tokens} "
               f"| {r.output_tokens} | {r.prefill_tps:.0f} | {r.decode_tps:.1f} | {r.grammar_ms:.1f} | "
               f"{stages['rois']:.1f}/{stages['retrieval']:.1f}/{stages['synthesis']:.1f}/"
-              f"{stages['postprocess'] + stages['planning']:.1f} |")
+              f"{stages['postprocess'] + stages['planning']:.1f} | {r.load_average} |")
     headline = []
     for name, _ in models:
         for preset in presets:
-            by_threads = {r.threads: r for r in rows if r.model == name and r.preset == preset and r.warm}
+            pair = {r.code: r for r in rows if r.model == name and r.preset == preset and r.warm}
+            if len(pair) == 2:
+                b, a = pair["before"], pair["this"]
+                print(f"before -> after, {name} {preset}: first {b.first:.1f} -> {a.first:.1f} s, "
+                      f"warm {b.warm:.1f} -> {a.warm:.1f} s (x{b.warm / a.warm:.2f}), "
+                      f"uncached prompt {b.uncached_tokens} -> {a.uncached_tokens} tok, "
+                      f"output {b.output_tokens} -> {a.output_tokens} tok")
+                headline.append(f"{name}_{preset}_before_warm_s={b.warm:.1f}")
+            by_threads = {r.threads: r for r in rows if r.model == name and r.preset == preset and r.warm
+                          and r.code == "this"}
             if len(by_threads) > 1:
                 low, high = min(by_threads), max(by_threads)
                 print(f"scaling {name} {preset}: warm {by_threads[low].warm:.1f} s at {low} thread(s) -> "

@@ -76,7 +76,7 @@ def build_request(world, preset, prompt, retriever):
     retrieved = (retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
                  if preset.retrieval_filter is not None and preset.retrieval_k > 0 else [])
     return prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
-                           cards_for=retriever.cards_for)
+                           cards_for=retriever.cards_for, documents_named=retriever.documents_named)
 
 
 def fixed_tokens(llm, messages) -> int:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 import time
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -101,19 +102,40 @@ class CoreBudget:
         return max(1, limit)
 
 
-def llm_thread_count(budget: int, idle: int) -> int:
+def llm_thread_count(budget: int, idle: int, ui_core: bool = False) -> int:
     """llama.cpp threads for a machine with `budget` usable cores of which `idle` are idle now.
 
-    Small machine (up to SMALL_MACHINE_CORES): one core stays with the UI and the SFM, and the
-    others are used only when idle, because a spin-waiting llama.cpp thread on a busy core costs far
-    more than it brings (cpu.py's docstring). A workstation: a sampled busy core or two (the app
-    itself, a compile) must not cut it to two threads, so it takes the idle cores but at least half
-    its budget; with that many cores the UI and the SFM find one anyway.
+    Small machine (up to SMALL_MACHINE_CORES): the idle cores only, because a spin-waiting llama.cpp
+    thread on a busy core costs far more than it brings (cpu.py's docstring); and while the app
+    plays a run (`ui_core`), one core stays with the UI and the SFM. A headless command, or the app
+    while it only waits for the model, gives the model every idle core. A workstation: a sampled
+    busy core or two (the app itself, a compile) must not cut it to two threads, so it takes the
+    idle cores but at least half its budget; with that many cores the UI and the SFM find one anyway.
     """
     budget, idle = max(1, budget), max(1, min(idle, budget))
     if budget <= SMALL_MACHINE_CORES:
-        return max(1, min(idle, budget - 1))
+        return max(1, min(idle, budget - 1 if ui_core else budget))
     return max(budget // 2, idle)
+
+
+# Who holds a core for the UI now (the app's simulation controllers while they play).
+_UI_CORE_HOLDERS: set[int] = set()
+_UI_CORE_LOCK = threading.Lock()
+
+
+def hold_ui_core(holder: object, held: bool) -> None:
+    """`holder` (a playing run) keeps one core for the UI and the simulation, or lets it go."""
+    with _UI_CORE_LOCK:
+        if held:
+            _UI_CORE_HOLDERS.add(id(holder))
+        else:
+            _UI_CORE_HOLDERS.discard(id(holder))
+
+
+def ui_core_held() -> bool:
+    """Whether a run plays in the app now: llama.cpp then leaves it one core (llm_thread_count)."""
+    with _UI_CORE_LOCK:
+        return bool(_UI_CORE_HOLDERS)
 
 
 def physical_cores(cpus: Iterable[int], topology: Path = Path("/sys/devices/system/cpu")) -> int:
@@ -200,6 +222,7 @@ def core_budget() -> CoreBudget:
 
 
 def default_llm_threads() -> int:
-    """llama.cpp's threads on this machine now: llm_thread_count over the budget and the idle cores."""
+    """llama.cpp's threads on this machine now: llm_thread_count over the budget, the idle cores and
+    whether a run plays in the app. Asked per request (llm/local.py), so the count follows the machine."""
     budget = core_budget().cores
-    return llm_thread_count(budget, free_cores())
+    return llm_thread_count(budget, free_cores(), ui_core_held())

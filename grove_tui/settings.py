@@ -7,7 +7,7 @@ Every GROVE_* variable is read in this module and nowhere else:
     GROVE_DATA_DIR         user data directory (models/, runs/, exports/, prompt history, last choices)
     GROVE_CACHE_DIR        user cache directory (retrieval index, compiled kernels)
     GROVE_MODEL            GGUF for both roles; GROVE_ROI_MODEL / GROVE_BT_MODEL for one role
-    GROVE_LLM_THREADS      llama.cpp threads (default: the cores idle when the model starts)
+    GROVE_LLM_THREADS      llama.cpp threads (default: the cores idle at each request)
     GROVE_<SECTION>__<KEY> any key of the file, e.g. GROVE_SIMULATION__FPS=30
 
 The file is YAML with the sections below (`ui`, `generation`, `simulation`, `export`, `keymap`,
@@ -134,7 +134,7 @@ class GroveSettings(BaseSettings):
     """Binding id -> comma-separated keys, applied with App.set_keymap."""
     models: ModelFiles = Field(default_factory=ModelFiles)
     llm_threads: int | None = Field(default=None, ge=1)
-    """llama.cpp threads (GROVE_LLM_THREADS); None uses the cores idle when the model starts."""
+    """llama.cpp threads (GROVE_LLM_THREADS); None uses the cores idle at each request (cpu.py)."""
     model: str | None = None
     """GROVE_MODEL: GGUF for both roles."""
     roi_model: str | None = None

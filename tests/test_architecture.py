@@ -101,8 +101,8 @@ def test_every_module_path_named_in_code_and_docs_exists():
     stale = []
     for path in files:
         text = path.read_text(encoding="utf-8")
-        for match in re.finditer(r"grove_tui/[A-Za-z0-9_/]+(?:\.py)?", text):
-            name = match.group(0).rstrip("/")
+        for match in re.finditer(r"grove_tui/[A-Za-z0-9_/.-]*[A-Za-z0-9_]", text):
+            name = match.group(0)
             if not (ROOT / name).exists() and not (ROOT / f"{name}.py").exists():
                 stale.append(f"{path.relative_to(ROOT)}: {name}")
         for match in re.finditer(r"\bgrove_tui(?:\.[A-Za-z_0-9]+)+", text):

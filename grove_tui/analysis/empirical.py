@@ -231,7 +231,8 @@ def lane_formation(params: SFMParams, seconds: float = LANE_SECONDS, seed: int =
     rng.shuffle(direction)
     free = float(published()["weidmann_1993"]["v_free"])
     for p, d in zip(places, direction):
-        crowd.add_agent(p, radius=RADIUS, desired_speed=float(rng.normal(free, 0.1)), goals=[(1e6 * d, p[1])],
+        crowd.add_agent((float(p[0]), float(p[1])), radius=RADIUS, desired_speed=float(rng.normal(free, 0.1)),
+                        goals=[(1e6 * d, p[1])],
                         goal_radius=0.3)
     start = lane_order(crowd.pos, direction, CORRIDOR_LENGTH)
     late: list[float] = []

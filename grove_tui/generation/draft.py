@@ -6,6 +6,12 @@ optional port=value, children)`:
     10 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter, spacing=0.6))
     3 visitors from lobby: Sequence(GoTo(cafe), Wait(duration=30))
 
+When the reading has groups, the model writes the lean draft instead: one line per reading group,
+only its tree (`tree_grammar`, `parse_trees`), and each group's label, count and spawn come from the
+reading (`GroupHead`), so the Draft that comes back has the same types either way:
+
+    Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter))
+
 The line starts with the count because a chat model's first words are otherwise chat ("Here is a
 sample of a ..." filled the label when it came first, with SmolLM2): a digit first puts it straight
 into the scenario, and "3 visitors from lobby" is how English says it.
@@ -37,13 +43,13 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from grove_tui.errors import DraftError
 from grove_tui.limits import MAX_GROUP_COUNT, MAX_GROUPS
-from grove_tui.llm.grammar import GbnfRules, gbnf_literal
+from grove_tui.llm.grammar import GbnfRules, bounded_repeat, gbnf_literal
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
@@ -197,12 +203,8 @@ def number_text(value: float) -> str:
 # ---- the grammar -------------------------------------------------------------------------------
 
 def _bounded(item: str, low: int, high: int, separator: str = "") -> str:
-    """`item` low..high times (low >= 1); the optional tail nests so every length parses one way and ends."""
-    tail = ""
-    for _ in range(high - low):
-        tail = f"({separator}{item}{(' ' + tail) if tail else ''})?"
-    mandatory = " ".join([item] + [f"{separator}{item}"] * (low - 1))
-    return f"{mandatory} {tail}".strip()
+    """`item` low..high times (low >= 1): llm.grammar.bounded_repeat, so every length parses one way and ends."""
+    return bounded_repeat(item, low, high, separator)
 
 
 def _alternatives(literals: Iterable[str]) -> str:
@@ -276,6 +278,10 @@ class _GrammarBuilder:
         options = [rule for spec in self.specs.values() if (rule := self.node(spec, level)) is not None]
         return self.rules.add(f"level-{level}", " | ".join(options))
 
+    def trees(self, groups: int) -> str:
+        """Exactly `groups` lines, each one tree: the lean draft, whose headers the reading fills in."""
+        return self.rules.text(_bounded(self.level(1), groups, groups, '"\\n" '))
+
     def grammar(self, max_groups: int) -> str:
         label_char = self.rules.add("label-char", f"[{LABEL_CHARS}]")
         label = self.rules.add("label", f"[{LABEL_FIRST_CHARS}] ({_bounded(label_char, 1, LABEL_MAX_LENGTH - 1)})?")
@@ -289,6 +295,13 @@ def draft_grammar(node_names: Iterable[str], roi_names: Iterable[str], max_group
     """The GBNF (root rule `root`) of every draft this request allows; recursion is unrolled into one rule per tree level."""
     specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
     return _GrammarBuilder(specs, rois, max_count, max_depth, max_children).grammar(max_groups)
+
+
+def tree_grammar(node_names: Iterable[str], roi_names: Iterable[str], groups: int, max_depth: int = 3,
+                 max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> str:
+    """The GBNF of a lean draft: exactly `groups` lines, each the tree of one group (GroupHead gives the rest)."""
+    specs, rois = _check_request(node_names, roi_names, max(1, groups), 1, max_depth, max_children, nodes)
+    return _GrammarBuilder(specs, rois, 1, max_depth, max_children).trees(groups)
 
 
 # ---- the parser --------------------------------------------------------------------------------
@@ -350,6 +363,27 @@ class _Parser:
         for index, (number, line) in enumerate(lines):
             self.line = number
             groups.append(self.group(line, f"groups[{index}]"))
+        return Draft(tuple(groups))
+
+    def trees(self, text: str, heads: Sequence[GroupHead]) -> Draft:
+        lines = [(number, line) for number, line in enumerate(text.splitlines(), 1) if line.strip()]
+        if len(lines) != len(heads):
+            self.line = lines[-1][0] if lines else 0
+            raise self.fail("groups", f"{len(lines)} line(s), expected one tree per group: {len(heads)}")
+        groups = []
+        for index, ((number, line), head) in enumerate(zip(lines, heads)):
+            self.line = number
+            path = f"groups[{index}].tree"
+            offset = 0
+            header, colon, _ = line.partition(":")
+            if colon and _HEADER.match(header.strip()):
+                # A full draft's line (an unconstrained or scripted answer): the reading's head wins over it.
+                offset = len(header) + 1
+            self.tokens, self.at = _tokens(line[offset:], offset), 0
+            node = self.node(path, 1)
+            if self.peek().kind != "end":
+                raise self.fail(path, f"unexpected {_shown(self.peek())} after the tree", self.peek())
+            groups.append(DraftGroup(head.label, head.count, head.spawn, node))
         return Draft(tuple(groups))
 
     def group(self, line: str, path: str) -> DraftGroup:
@@ -485,6 +519,25 @@ def parse_draft(text: str, node_names: Iterable[str], roi_names: Iterable[str], 
     """Strictly parse and validate the model's draft; DraftError names the line, column and the draft path."""
     specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
     return _Parser(specs, rois, max_groups, max_count, max_depth, max_children).draft(text)
+
+
+@dataclass(frozen=True)
+class GroupHead:
+    """What the reading fixes for a group of a lean draft: the model writes only its tree."""
+
+    label: str
+    count: int
+    spawn: str
+
+
+def parse_trees(text: str, heads: Sequence[GroupHead], node_names: Iterable[str], roi_names: Iterable[str],
+                max_depth: int = 3, max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> Draft:
+    """Strictly parse a lean draft (one tree per line, in the order of `heads`) into a Draft.
+
+    A line that still carries the full draft's `COUNT LABEL from SPAWN:` (an answer written without the
+    lean grammar) is read for its tree; its head comes from `heads` all the same."""
+    specs, rois = _check_request(node_names, roi_names, max(1, len(heads)), 1, max_depth, max_children, nodes)
+    return _Parser(specs, rois, len(heads), MAX_GROUP_COUNT, max_depth, max_children).trees(text, heads)
 
 
 # ---- writing drafts ----------------------------------------------------------------------------

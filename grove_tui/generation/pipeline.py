@@ -225,7 +225,8 @@ class GenerationPipeline:
         else:
             retrieved = []
         request = prepare_request(preset, selection, retrieved, reading, self.retriever.documents_for, world=world,
-                                  cards_for=getattr(self.retriever, "cards_for", None))
+                                  cards_for=getattr(self.retriever, "cards_for", None),
+                                  documents_named=getattr(self.retriever, "documents_named", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")

@@ -68,6 +68,10 @@ class Preset:
     source: Path | None = None
     agent_radius: float = DEFAULT_AGENT_RADIUS  # every generated person's body radius (agent.radius)
     exit_choice: str = "nearest"  # EXIT_CHOICE: how evacuees pick among the exits they may use
+    # Node documents always in the bt model's prompt, in this order, inside the system message whose KV
+    # state is cached per world and preset (synthesis.py): the preset's everyday vocabulary, so most
+    # sentences need no card of their own. Retrieval adds the others after them.
+    pinned_documents: tuple[str, ...] = ()
 
     @property
     def guided(self) -> bool:
@@ -211,6 +215,7 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         source=source,
         agent_radius=agent_radius,
         exit_choice=exit_choice,
+        pinned_documents=names(retrieval, "pinned", "retrieval.pinned"),
     )
 
 

@@ -511,6 +511,17 @@ class NodeRetriever:
             texts.append(doc.text)
         return texts
 
+    def documents_named(self, names: Iterable[str]) -> list[RetrievedNode]:
+        """These documents as retrieval returns them (score 0), in the order given: a preset's pinned cards."""
+        found = []
+        for name in names:
+            doc = self._documents.get(name)
+            if doc is None:
+                raise RetrievalError(f"node database {self.node_db_dir} has no document {name!r}")
+            found.append(RetrievedNode(name=name, kind=doc.kind, score=0.0, document=doc.text, nodes=doc.nodes,
+                                       card=doc.card))
+        return found
+
     def cards_for(self, names: Iterable[str]) -> list[str]:
         """The one-line cards of these documents, in order (the full document where a node has no card)."""
         names = list(names)

@@ -65,6 +65,29 @@ def gbnf_literal(text: str) -> str:
     return "".join(out)
 
 
+# Optional tails nest up to this depth; a longer bound is written as a counted repetition `x{0,n}`.
+# Both engines take both forms (llama.cpp unrolls the count itself), but llguidance refuses grammars
+# nested much deeper than this (a 48-character text was "too deeply nested").
+MAX_NESTED_TAIL = 8
+
+
+def bounded_repeat(item: str, low: int, high: int, separator: str = "") -> str:
+    """`item` low..high times (low >= 1), `separator` before each one after the first.
+
+    Short tails nest, `a (s a (s a)?)?`, so every length parses one way and ends; longer ones are
+    counted, `a (s a){0,n}`, which both llama.cpp and llguidance read the same way.
+    """
+    extra = high - low
+    mandatory = " ".join([item] + [f"{separator}{item}"] * (low - 1))
+    if extra > MAX_NESTED_TAIL:
+        repeated = f"({separator}{item})" if separator else item
+        return f"{mandatory} {repeated}{{0,{extra}}}"
+    tail = ""
+    for _ in range(extra):
+        tail = f"({separator}{item}{(' ' + tail) if tail else ''})?"
+    return f"{mandatory} {tail}".strip()
+
+
 def json_literal(value: Any) -> str:
     """The compact JSON text of a scalar, as the model must write it."""
     if isinstance(value, float) and value.is_integer():
@@ -237,12 +260,8 @@ class _Converter:
 
     @staticmethod
     def _bounded_list(item: str, low: int, high: int, separator: str) -> str:
-        """`item` repeated low..high times, separated; optional tails nest so each length parses one way."""
-        tail = ""
-        for _ in range(high - max(low, 1)):
-            tail = f"({separator}{item}{(' ' + tail) if tail else ''})?"
-        mandatory = " ".join([item] + [f"{separator}{item}"] * (max(low, 1) - 1))
-        sequence = f"{mandatory} {tail}".strip()
+        """`item` repeated low..high times, separated (bounded_repeat), optional as a whole when low is 0."""
+        sequence = bounded_repeat(item, max(low, 1), high, separator)
         return sequence if low >= 1 else f"({sequence})?"
 
     def string(self, schema: dict[str, Any], keys: set[str], hint: str) -> str:

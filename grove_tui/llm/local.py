@@ -48,9 +48,9 @@ __all__ = ["Generation", "Cancelled", "LocalLLM", "ModelError"]
 
 
 def default_threads() -> int:
-    """llama.cpp's threads: GROVE_LLM_THREADS, else cpu.default_llm_threads (the machine's budget and
-    its idle cores now; cpu.py says why not the load average). The one thread policy: the session,
-    batch workers and a LocalLLM made without `n_threads` all come here."""
+    """llama.cpp's threads: GROVE_LLM_THREADS, else cpu.default_llm_threads (the machine's budget, its
+    idle cores now and whether a run plays in the app; cpu.py says why not the load average). The one
+    thread policy: a LocalLLM made without `n_threads` asks it again for every request."""
     override = load_settings().llm_threads
     return override if override is not None else default_llm_threads()
 
@@ -66,6 +66,8 @@ class Generation:
     attempts: int = 1
     cached_tokens: int = 0  # prompt tokens not evaluated by this request: live KV or the prefix restored from disk
     cache_source: str = "cold"  # where they came from: "live", "disk" or "cold" (none)
+    grammar_engine: str = ""  # what kept the answer to its grammar: "llguidance" (token masks), "gbnf" or "" (none)
+    forced_tokens: int = 0  # output tokens the grammar forced: evaluated in a batch, not sampled
 
 
 def _start_resource_tracker() -> None:
@@ -104,7 +106,8 @@ class LocalLLM:
         if self.info.context_length and n_ctx > self.info.context_length:
             n_ctx = self.info.context_length
         self.n_ctx = n_ctx
-        self.n_threads = n_threads or default_threads()
+        self.fixed_threads = n_threads  # None: follow the machine, request by request (threads_now)
+        self.n_threads = n_threads or default_threads()  # the count the model is loaded with
         check_loadable(self.info, n_ctx)
         self.sampling = sampling or default_sampling(self.info.architecture, self.info.size_bytes)
         self.log_path = cache_dir() / "logs" / f"llm-{role}.log"
@@ -221,6 +224,10 @@ class LocalLLM:
         except Exception:
             pass
 
+    def threads_now(self) -> int:
+        """llama.cpp's threads for the next request: the fixed count, else what the machine has idle now."""
+        return self.fixed_threads or default_threads()
+
     # ---- requests --------------------------------------------------------------------------------
 
     @staticmethod
@@ -245,7 +252,8 @@ class LocalLLM:
         """
         with self._lock:
             self._ensure_worker()
-            self._conn.send({"op": "evaluate", "prefix_label": prefix_label, **self._request_body(messages_or_prompt)})
+            self._conn.send({"op": "evaluate", "prefix_label": prefix_label, "n_threads": self.threads_now(),
+                             **self._request_body(messages_or_prompt)})
             result, _, _ = self._collect(None, None, None)
             return dict(result)
 
@@ -290,7 +298,8 @@ class LocalLLM:
                 self._cancel_flag.clear()
                 sent = time.monotonic()
                 self._conn.send({"op": "generate", **body, "grammar": grammar, "max_tokens": budget,
-                                 "seed": seed + attempt - 1, "prefix_label": prefix_label, **sampling})
+                                 "seed": seed + attempt - 1, "prefix_label": prefix_label,
+                                 "n_threads": self.threads_now(), **sampling})
                 result, first_token_at, _ = self._collect(on_token, cancel, deadline)
                 spent_tokens += int(result["completion_tokens"])
                 if result["finish_reason"] == "cancelled":
@@ -301,7 +310,9 @@ class LocalLLM:
                         completion_tokens=spent_tokens, seconds=time.monotonic() - started,
                         first_token_seconds=None if first_token_at is None else first_token_at - sent,
                         attempts=attempt, cached_tokens=int(result.get("cached_tokens", 0)),
-                        cache_source=str(result.get("cache_source", "cold")))
+                        cache_source=str(result.get("cache_source", "cold")),
+                        grammar_engine=str(result.get("grammar_engine", "")),
+                        forced_tokens=int(result.get("forced_tokens", 0)))
                 room = self._ready_info.get("n_ctx", self.n_ctx) - int(result["prompt_tokens"])
                 budget = max(1, min(budget * 2, room))
         raise ModelError(f"the {self.role} model did not finish its answer within {budget} tokens "

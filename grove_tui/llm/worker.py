@@ -137,8 +137,9 @@ def _serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threa
         "n_ctx": llm.n_ctx(),
     }
     conn.send(("ready", info))
-    server = _Server(llm, conn, cancel, info, PrefixStore(kv_cache_dir, model_path, n_ctx, llm.n_batch, n_threads)
-                     if kv_cache_dir else None)
+    server = _Server(llm, conn, cancel, info, PrefixStore(kv_cache_dir, model_path, n_ctx, llm.n_batch)
+                     if kv_cache_dir else None, masks=TokenMasks(llm))
+    server.threads = n_threads
     while True:
         try:
             request = conn.recv()
@@ -166,21 +167,21 @@ class _RequestError(Exception):
 class PrefixStore:
     """The fixed prefix's KV state (sequence 0) on disk: one file per model, settings, label and prefix."""
 
-    MAGIC = b"GROVE-KV1\n"
+    MAGIC = b"GROVE-KV2\n"
     KEEP_FILES = 32  # the most recently used prefixes kept; a Qwen3-4B prefix of 320 tokens is ~46 MB
     MIN_TOKENS = 32  # shorter prefixes cost less to evaluate than to read back
 
-    def __init__(self, folder: str, model_path: str, n_ctx: int, n_batch: int, n_threads: int) -> None:
+    def __init__(self, folder: str, model_path: str, n_ctx: int, n_batch: int) -> None:
         import llama_cpp
 
         stat = os.stat(model_path)
         self.folder = Path(folder)
         # What the state depends on besides the tokens: the model's bytes (size and mtime stand in for
-        # a hash of gigabytes), the library that wrote it, and the context layout. The thread count too:
-        # llama.cpp's CPU results are not known to depend on it, but a wrong restore would be silent.
+        # a hash of gigabytes), the library that wrote it, and the context layout. Not the thread count:
+        # it changes per request (cpu.py), and llama.cpp's CPU results do not depend on it
+        # (tests/llm/test_kv_cache.py checks the logits at one and two threads).
         self.identity = {"model": os.path.abspath(model_path), "size": stat.st_size, "mtime_ns": stat.st_mtime_ns,
-                         "llama_cpp": llama_cpp.__version__, "n_ctx": n_ctx, "n_batch": n_batch,
-                         "n_threads": n_threads}
+                         "llama_cpp": llama_cpp.__version__, "n_ctx": n_ctx, "n_batch": n_batch}
 
     def path(self, label: str, tokens: list[int]) -> Path:
         import hashlib
@@ -269,8 +270,10 @@ def segment_starts(fixed: int, total: int, n_batch: int) -> list[int]:
 
 class _Server:
     def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any],
-                 store: PrefixStore | None = None) -> None:
+                 store: PrefixStore | None = None, masks: TokenMasks | None = None) -> None:
         self.llm, self.conn, self.cancel, self.info, self.store = llm, conn, cancel, info, store
+        self.masks = masks
+        self.threads = 0  # llama.cpp's threads now (0: as loaded); a request may ask for others
         self.live_prompt = 0  # leading live KV tokens that came from prompt evaluation (not decoding)
         self.live_bounds: list[int] = []  # where that evaluation's batches started, and its end
 
@@ -351,6 +354,7 @@ class _Server:
         if request["op"] == "count":
             self.conn.send(("done", {"prompt": text, "prompt_tokens": len(tokens)}))
             return
+        self.use_threads(int(request.get("n_threads") or 0))
         n_ctx = self.info["n_ctx"]
         room = n_ctx - len(tokens)
         if room < MIN_ANSWER_TOKENS:
@@ -361,6 +365,14 @@ class _Server:
             return
         # A budget beyond the context is clamped: if the answer really needs more it ends as "length".
         self.generate(tokens, {**request, "max_tokens": min(int(request["max_tokens"]), room)})
+
+    def use_threads(self, threads: int) -> None:
+        """Run this request on `threads` llama.cpp threads (cpu.py decides per request; results do not depend on it)."""
+        if threads > 0 and threads != self.threads:
+            import llama_cpp
+
+            llama_cpp.llama_set_n_threads(self.llm._ctx.ctx, threads, threads)
+            self.threads = threads
 
     def evaluate(self, tokens: list[int], request: dict[str, Any]) -> None:
         """Evaluate the prompt as generate does and report a digest of the next-token logits.
@@ -392,14 +404,15 @@ class _Server:
         finish_reason = "length"
         started = time.monotonic()
         max_tokens = int(request["max_tokens"])
-        rejections = 0
+        rejections = forced_tokens = 0
+        engine = ""
         if self.cancel.is_set():
             finish_reason = "cancelled"
         else:
-            sampler = SampleFirst(llm, request.get("grammar") or None, top_k=int(request["top_k"]),
-                                  top_p=float(request["top_p"]), min_p=float(request["min_p"]),
-                                  temperature=float(request["temperature"]),
-                                  presence_penalty=float(request["presence_penalty"]), seed=int(request["seed"]))
+            sampler = make_sampler(llm, request.get("grammar") or None, self.masks, top_k=int(request["top_k"]),
+                                   top_p=float(request["top_p"]), min_p=float(request["min_p"]),
+                                   temperature=float(request["temperature"]),
+                                   presence_penalty=float(request["presence_penalty"]), seed=int(request["seed"]))
             try:
                 llm.eval(tokens[llm.n_tokens:])  # the rest of the prompt, in batches from its own start
                 self.live_prompt = len(tokens)  # what follows is decoded one token at a time: never reused
@@ -408,19 +421,25 @@ class _Server:
                     if llama_vocab_is_eog(llm._model.vocab, token):
                         finish_reason = "stop"
                         break
-                    completion_tokens += 1
-                    piece = decoder.decode(llm.detokenize([token], special=False))
-                    if piece:
-                        pieces.append(piece)
-                        self.conn.send(("token", piece))
+                    # Tokens the grammar forces next (a node's name after its first letters, "(" ...) are
+                    # not sampled: they go into the same evaluation as the sampled one, one batch.
+                    step = [token] + sampler.forced(max_tokens - completion_tokens - 1)
+                    for each in step:
+                        piece = decoder.decode(llm.detokenize([each], special=False))
+                        if piece:
+                            pieces.append(piece)
+                            self.conn.send(("token", piece))
+                    completion_tokens += len(step)
+                    forced_tokens += len(step) - 1
                     if self.cancel.is_set():
                         finish_reason = "cancelled"
                         break
                     if completion_tokens >= max_tokens:
                         break
-                    llm.eval([token])
+                    llm.eval(step)
             finally:
                 rejections = sampler.rejections
+                engine = sampler.engine if request.get("grammar") else ""
                 sampler.close()
         tail = decoder.decode(b"", final=True)
         if tail:
@@ -429,7 +448,8 @@ class _Server:
         self.conn.send(("done", {"text": "".join(pieces), "finish_reason": finish_reason,
                                  "prompt_tokens": len(tokens), "completion_tokens": completion_tokens,
                                  "cached_tokens": reused, "cache_source": source,
-                                 "grammar_rejections": rejections,
+                                 "grammar_rejections": rejections, "forced_tokens": forced_tokens,
+                                 "grammar_engine": engine,
                                  "worker_seconds": time.monotonic() - started}))
 
 
@@ -450,6 +470,7 @@ class SampleFirst:
     """
 
     SWITCH_AFTER = 8
+    engine = "gbnf"
 
     def __init__(self, llm: Any, grammar: str | None, *, top_k: int, top_p: float, min_p: float, temperature: float,
                  presence_penalty: float, seed: int) -> None:
@@ -533,6 +554,10 @@ class SampleFirst:
                 token = self._draw(self.constrained)
         return token
 
+    def forced(self, most: int) -> list[int]:
+        """llama.cpp's grammar cannot say what it forces next: every token is sampled."""
+        return []
+
     def close(self) -> None:
         if self.grammar is not None:
             self._lc.llama_sampler_free(self.grammar)
@@ -540,3 +565,142 @@ class SampleFirst:
         for sampler in (self.free, self.constrained):
             if sampler is not None:
                 sampler.close()
+
+
+class TokenMasks:
+    """The model's vocabulary as llguidance sees it, built once per worker, in a thread after the load.
+
+    llguidance precompiles a grammar against the vocabulary (a token trie), so the mask of allowed
+    tokens costs about half a millisecond over Qwen3's 151,936 tokens where llama.cpp's GBNF sampler
+    takes tens (bench/grammar_engines.py). Reading the vocabulary out of llama.cpp takes a second or
+    two for that size, so it runs while the app does its other stages; the first grammar waits for it.
+    Without llguidance (or a grammar it refuses) the worker samples with llama.cpp's GBNF (SampleFirst).
+    """
+
+    def __init__(self, llm: Any) -> None:
+        import threading
+
+        self._tokenizer: Any = None
+        self._thread = threading.Thread(target=self._build, args=(llm,), name="grove-token-masks", daemon=True)
+        self._thread.start()
+
+    def _build(self, llm: Any) -> None:
+        try:
+            import llguidance.llamacpp
+
+            self._tokenizer = llguidance.llamacpp.lltokenizer_from_vocab(llm._model.vocab)
+        except Exception as error:  # not installed, or a vocabulary it cannot read: GBNF it is
+            print(f"grove: token masks unavailable, sampling with llama.cpp's grammar: {error}", file=sys.stderr)
+
+    def matcher(self, grammar: str) -> Any | None:
+        """An LLMatcher for the GBNF `grammar`, or None when llguidance cannot take it."""
+        self._thread.join()
+        if self._tokenizer is None:
+            return None
+        import llguidance
+        from llguidance.gbnf_to_lark import gbnf_to_lark
+
+        try:
+            matcher = llguidance.LLMatcher(self._tokenizer, llguidance.LLMatcher.grammar_from_lark(gbnf_to_lark(grammar)),
+                                           log_level=0)
+        except Exception as error:
+            print(f"grove: llguidance refused the grammar, sampling with llama.cpp's: {error}", file=sys.stderr)
+            return None
+        if matcher.is_error():
+            print(f"grove: llguidance refused the grammar, sampling with llama.cpp's: {matcher.get_error()}",
+                  file=sys.stderr)
+            return None
+        return matcher
+
+
+def make_sampler(llm: Any, grammar: str | None, masks: TokenMasks | None, **options: Any) -> Any:
+    """MaskFirst when llguidance takes the grammar, else SampleFirst (llama.cpp's GBNF); both draw the same way."""
+    matcher = masks.matcher(grammar) if grammar and masks is not None else None
+    if matcher is not None:
+        return MaskFirst(llm, matcher, **options)
+    return SampleFirst(llm, grammar, **options)
+
+
+class MaskFirst:
+    """Sample from the tokens the grammar allows: llguidance's mask, then the sampler chain over those only.
+
+    The chain (presence penalty, top-k, top-p, min-p, temperature, seeded draw) is SampleFirst's, run
+    on the allowed candidates instead of the whole vocabulary, so it costs less than free sampling
+    (top-k over 152k logits) and every token is valid by construction. `forced` hands the caller
+    the tokens the grammar allows no choice about (llguidance's fast-forward), which are then
+    evaluated with the sampled token in one batch rather than decoded one by one.
+    """
+
+    def __init__(self, llm: Any, matcher: Any, *, top_k: int, top_p: float, min_p: float, temperature: float,
+                 presence_penalty: float, seed: int) -> None:
+        import ctypes
+
+        import llama_cpp
+        import numpy as np
+        from llama_cpp import _internals
+
+        self._lc, self._ctypes, self._np, self.llm, self.matcher = llama_cpp, ctypes, np, llm, matcher
+        self.n_vocab = llm.n_vocab()
+        chain = _internals.LlamaSampler()
+        chain.add_penalties(n_vocab=self.n_vocab, penalty_last_n=llm.last_n_tokens_size, penalty_repeat=1.0,
+                            penalty_freq=0.0, penalty_present=presence_penalty)
+        if temperature <= 0.0:
+            chain.add_greedy()
+        else:
+            chain.add_top_k(top_k)
+            chain.add_top_p(top_p, 1)
+            chain.add_min_p(min_p, 1)
+            chain.add_temp(temperature)
+            chain.add_dist(seed)
+        self.chain = chain
+        self.mask = np.zeros((self.n_vocab + 31) // 32, dtype=np.int32)
+        self.cells = np.zeros(self.n_vocab, dtype=np.dtype([("id", np.intc), ("logit", np.single), ("p", np.single)],
+                                                          align=True))
+        self.eos = llm.token_eos()
+        self.rejections = 0  # nothing is ever refused: only allowed tokens are drawn
+        self.engine = "llguidance"
+
+    def sample(self) -> int:
+        lc, np = self._lc, self._np
+        if self.matcher.is_stopped():
+            token = self.eos
+        else:
+            self.matcher.unsafe_compute_mask_ptr(self.mask.ctypes.data, self.mask.nbytes)
+            bits = np.unpackbits(self.mask.view(np.uint8), bitorder="little")[:self.n_vocab]
+            allowed = np.flatnonzero(bits).astype(np.intc)
+            if len(allowed) == 0:
+                raise RuntimeError(f"the grammar allows no token: {self.matcher.get_error()}")
+            if len(allowed) == 1:
+                token = int(allowed[0])
+            else:
+                logits = np.ctypeslib.as_array(self.llm._ctx.get_logits_ith(-1), shape=(self.n_vocab,))
+                cells = self.cells[:len(allowed)]
+                cells["id"] = allowed
+                cells["logit"] = logits[allowed]
+                cells["p"] = 0.0
+                array = lc.llama_token_data_array(
+                    data=cells.ctypes.data_as(self._ctypes.POINTER(lc.llama_token_data)), size=len(allowed),
+                    selected=-1, sorted=False)
+                lc.llama_sampler_apply(self.chain.sampler, self._ctypes.byref(array))
+                if array.selected < 0:
+                    raise RuntimeError("the sampler chain selected no token")
+                token = int(cells["id"][array.selected])
+        self._accept(token)
+        return token
+
+    def _accept(self, token: int) -> None:
+        self._lc.llama_sampler_accept(self.chain.sampler, token)
+        if not self.matcher.is_stopped() and not self.matcher.consume_token(token):
+            raise RuntimeError(f"the grammar refused token {token}: {self.matcher.get_error()}")
+
+    def forced(self, most: int) -> list[int]:
+        """Up to `most` tokens the grammar forces next (already accepted): evaluate them, do not sample them."""
+        if most <= 0 or self.matcher.is_stopped():
+            return []
+        tokens = [t for t in self.matcher.compute_ff_tokens() if t != self.eos][:most]
+        for token in tokens:
+            self._accept(token)
+        return tokens
+
+    def close(self) -> None:
+        self.chain.close()

@@ -271,9 +271,10 @@ class GroveSession:
     def _make_llm(self, role: str, choice: ModelChoice) -> Any:
         if self._llm_factory is not None:
             return self._llm_factory(role, choice)
-        from grove_tui.llm.local import LocalLLM, default_threads
+        from grove_tui.llm.local import LocalLLM
 
-        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx, n_threads=default_threads())
+        # No fixed thread count: every request takes the idle cores of that moment (cpu.py).
+        llm = LocalLLM(choice.path, role=role, n_ctx=choice.n_ctx)
         llm.start()  # loads the weights in the model's worker process now, not at the first prompt
         return llm
 
@@ -370,7 +371,8 @@ class GroveSession:
                 return
         pipeline = self.pipeline(world, preset)
         if pipeline.llm_bt is not None:
-            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world)
+            warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world,
+                        getattr(pipeline.retriever, "documents_named", None))
 
     def retriever(self) -> Any:
         with self._lock:

@@ -78,8 +78,9 @@ def test_numbers_and_strings_are_bounded_for_the_grammar():
     rules = _rules(draft_grammar(NODE_SET, ROIS))
     repeat = [int(v.strip('"')) for v in rules["repeat-num-cycles"].split(" | ")]
     assert -1 in repeat and max(repeat) <= 10000 and len(repeat) < 30
-    assert rules["text"].count("text-char") == 48
-    assert rules["label"].count("label-char") == LABEL_MAX_LENGTH - 1
+    # Long bounds are counted repetitions (llguidance refuses optionals nested 48 deep), still bounded.
+    assert re.search(r"text-char \(?text-char\)?\{0,47\}", rules["text"]), rules["text"]
+    assert re.search(rf"label-char\{{0,{LABEL_MAX_LENGTH - 2}\}}", rules["label"]), rules["label"]
     assert "*" not in "".join(rules.values()) and "+" not in "".join(rules.values())  # every repetition bounded
 
 

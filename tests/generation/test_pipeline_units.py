@@ -60,10 +60,11 @@ def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(ho
     _, _, other = request(hospital, retriever, "queuing", "Eight visitors line up at the reception desk")
     assert other.messages[0] == system  # identical prefix across prompts: the KV cache is reused
     assert user["content"].index("Places:") < user["content"].index("Nodes:") < user["content"].index(prompt)
-    assert "Groups to write: patient x10: queue, location pharmacy_counter" in user["content"]
+    assert "Groups:\n1. patient x10: queue, location pharmacy_counter" in user["content"]
     assert "- pharmacy (" in user["content"] and "cafeteria" not in user["content"]
     assert req.roi_names == selection.roi_names
-    assert req.max_groups == 1 and req.grammar.startswith("root ::= group\n")  # one stated quantity, one group
+    # one group read, one tree to write (the lean draft: the reading gives its label, count and start)
+    assert req.max_groups == 1 and req.grammar.startswith("root ::= level-1\n")
 
 
 def test_vanilla_prompt_has_the_whole_world_and_every_node(hospital, retriever):

@@ -86,16 +86,33 @@ def test_a_workstation_uses_the_idle_cores_it_has():
     assert llm_thread_count(8, 3) == 4  # half its budget at least
 
 
-@pytest.mark.parametrize(("budget", "idle", "threads"), [
-    (1, 1, 1),  # one core: the one thread
-    (2, 2, 1),  # an idle 2-core machine: one core stays with the UI and the SFM
-    (2, 1, 1),
-    (4, 4, 3),
-    (4, 2, 2),  # busy cores are left alone
-    (4, 1, 1),
+@pytest.mark.parametrize(("budget", "idle", "ui_core", "threads"), [
+    (1, 1, False, 1),  # one core: the one thread
+    (1, 1, True, 1),
+    (2, 2, False, 2),  # an idle 2-core machine, headless or the app waiting for the model: both cores
+    (2, 2, True, 1),  # while a run plays, one core stays with the UI and the SFM
+    (2, 1, False, 1),
+    (4, 4, False, 4),
+    (4, 4, True, 3),
+    (4, 2, False, 2),  # busy cores are left alone
+    (4, 2, True, 2),
+    (4, 1, False, 1),
 ])
-def test_a_small_machine_leaves_a_core_and_takes_only_idle_ones(budget, idle, threads):
-    assert llm_thread_count(budget, idle) == threads
+def test_a_small_machine_takes_only_idle_cores_and_leaves_one_while_a_run_plays(budget, idle, ui_core, threads):
+    assert llm_thread_count(budget, idle, ui_core) == threads
+
+
+def test_a_playing_run_holds_a_core_until_it_stops():
+    from grove_tui.cpu import hold_ui_core, ui_core_held
+
+    first, second = object(), object()
+    assert not ui_core_held()
+    hold_ui_core(first, True)
+    hold_ui_core(second, True)
+    hold_ui_core(first, False)
+    assert ui_core_held()
+    hold_ui_core(second, False)
+    assert not ui_core_held()
 
 
 def test_the_budget_counts_physical_cores_and_the_cgroup_quota():

@@ -122,6 +122,7 @@ def test_unit_grammars_compile_and_produce_strict_json(tiny_llm, index):
     for seed in range(4):
         result = tiny_llm.generate("<|im_start|>assistant\n", grammar=grammar, max_tokens=400, seed=seed, temperature=1.0)
         json.loads(result.text)
+        assert result.grammar_engine == "llguidance"  # token masks took the grammar (no GBNF fallback)
 
 
 def _preset_node_sets():
@@ -155,6 +156,7 @@ def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
             draft = parse_draft(result.text, nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                 max_depth=limits.max_depth)
             assert draft.node_types() <= set(nodes) and draft.places() <= set(rois), (world_name, preset)
+            assert result.grammar_engine == "llguidance", (world_name, preset)  # token masks, not the GBNF fallback
 
 
 def test_a_malformed_grammar_costs_one_worker_not_the_app(tiny_llm):
@@ -162,3 +164,14 @@ def test_a_malformed_grammar_costs_one_worker_not_the_app(tiny_llm):
     with pytest.raises(ModelError):
         tiny_llm.generate("x", grammar="root ::= [a-", max_tokens=4)
     assert json.loads(tiny_llm.generate("x", grammar=schema_to_gbnf({"const": 7}), max_tokens=4).text) == 7
+
+
+def test_forced_tokens_are_evaluated_not_sampled_and_the_answer_repeats(tiny_llm):
+    """Token masks (issue 33): the tokens the grammar forces (a node name's rest, its bracket) are taken
+    without sampling and evaluated in one batch with the sampled token; the same seed gives the same text."""
+    grammar = draft_grammar(["Sequence", "GoTo", "Queue"], ["pharmacy_counter", "pharmacy"], max_groups=2)
+    runs = [tiny_llm.generate([{"role": "user", "content": "queue"}], grammar=grammar, max_tokens=600, seed=4,
+                              temperature=1.0) for _ in range(2)]
+    assert runs[0].text == runs[1].text
+    assert runs[0].grammar_engine == "llguidance" and 0 < runs[0].forced_tokens < runs[0].completion_tokens
+    parse_draft(runs[0].text, ["Sequence", "GoTo", "Queue"], ["pharmacy_counter", "pharmacy"], max_groups=2)

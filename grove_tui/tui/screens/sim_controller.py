@@ -99,12 +99,23 @@ class SimulationController:
 
     # the worker thread -----------------------------------------------------------------------------
     def run(self, cancelled: Callable[[], bool]) -> None:
+        from grove_tui.cpu import hold_ui_core
+
         period = 1.0 / self.fps
         self._measure()
         self._publish()
+        try:
+            self._run(cancelled, period, hold_ui_core)
+        finally:
+            hold_ui_core(self, False)
+
+    def _run(self, cancelled: Callable[[], bool], period: float, hold_ui_core: Callable[[object, bool], None]) -> None:
         while not cancelled():
             tick_start = time.monotonic()
             changed = self._drain()
+            # While the run plays, a model working meanwhile (a new scenario, a replan) leaves one core
+            # to the UI and the simulation; while it is paused the model gets every idle core (cpu.py).
+            hold_ui_core(self, self.playing)
             if self.playing:
                 changed |= self._advance(tick_start, period)
             if self._driving and time.monotonic() > self._drive_until:
