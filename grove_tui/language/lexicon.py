@@ -427,6 +427,7 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "garden yard patio terrace balcony",
         "study library",
         "printer copier print",
+        "child kid",  # "the kids room" is the children's room
     )
 )
 

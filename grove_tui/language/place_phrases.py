@@ -52,6 +52,10 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
 # none of them from the understanding sets: tests/language/test_meaning.py).
 MEANING_ACCEPT = 0.75
 MEANING_MARGIN = 0.03
+# A word match that only shares some words with the phrase gives way to a place of another name
+# nearer in meaning: at least this similar, and this much nearer than the word match itself.
+MEANING_STRONG = 0.8
+MEANING_CLEARER = 0.05
 _Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
 
@@ -123,12 +127,8 @@ class PlacePhrases:
             return None
         sure = owned[1:] if owned is not None else meant[1:] if meant is not None else None
         score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
-        if not numbered and owned is None and ((alternatives and score < UNSURE_BELOW) or
-                                               self._headed_elsewhere(lemmas, match)):
-            # Words do not decide: two places alike ("the main meeting room": the boardroom and both
-            # meeting rooms share "meeting room"), or a thing's name inside a phrase headed by a room
-            # word ("the mummy gallery" is no mummy): the one nearest in meaning, if one is clearly nearer.
-            chosen = self._nearest_of(phrase, lemmas, match, alternatives)
+        if not numbered and owned is None and meant is None and not self._context_decided(match, alternatives):
+            chosen = self._words_do_not_decide(phrase, lemmas, match, score, alternatives)
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
         self.context_zones.append(match.zone)
@@ -145,11 +145,8 @@ class PlacePhrases:
         """The place a phrase no word of which names one means, when one is clearly nearest: similar
         enough to one of its names, and clearly nearer than any place of another zone."""
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        head = content[-1] if content else ""
         speaks_of_door = bool(set(content) & lx.DOOR_WORDS)
-        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase))
-                  if (r.entry.kind != "door" or speaks_of_door)
-                  and (r.entry.kind == "zone" or head not in lx.GENERIC_PLACE_HEADS)]
+        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase)) if r.entry.kind != "door" or speaks_of_door]
         if not ranked or ranked[0].similarity < MEANING_ACCEPT:
             return None
         best = ranked[0]
@@ -165,6 +162,36 @@ class PlacePhrases:
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
+
+    def _context_decided(self, match: PlaceMatch, alternatives: Sequence[str]) -> bool:
+        """Whether a zone the sentence named before chose between places alike (see _in_context)."""
+        return bool(alternatives) and match.zone in self.context_zones
+
+    def _words_do_not_decide(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch, score: float,
+                             alternatives: Sequence[str]) -> _Decided | None:
+        """Meaning, where words do not decide: places alike ("the main meeting room": the boardroom
+        and both meeting rooms share "meeting room"), a thing's name inside a phrase headed by a room
+        word ("the mummy gallery" is no mummy), a phrase that shares only a word for rooms with its
+        match ("the snack area": only "area"), or only some of its words ("the drug store" shares
+        "store" with the store room, and means the drugstore)."""
+        if (alternatives and score < UNSURE_BELOW) or self._headed_elsewhere(lemmas, match):
+            return self._nearest_of(phrase, lemmas, match, alternatives)
+        if match.exact:
+            return None
+        entry = self.s.index.entry(match.name)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        shared = set(content) & (entry.tokens if entry is not None else set())
+        meant = self._by_meaning(phrase, lemmas)
+        if shared <= lx.GENERIC_PLACE_HEADS:
+            # only "area" or "room" in common: the word match says nothing
+            return meant or (match, 0.5, f"'{' '.join(phrase)}' shares only '{' '.join(sorted(shared))}' with "
+                                         f"{match.name}", ())
+        if meant is None or meant[0].name == match.name or meant[0].score < MEANING_STRONG:
+            return None
+        own = self.s.index.by_meaning(" ".join(phrase), among={match.name})
+        if own and meant[0].score - own[0].similarity < MEANING_CLEARER:
+            return None
+        return meant
 
     def _headed_elsewhere(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
         """Whether a fixture or door matched by its whole name sits inside a phrase whose head is a
@@ -184,8 +211,9 @@ class PlacePhrases:
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
         if (entry := index.entry(match.name)) is not None and entry.exit and "exit" in content:
             return None  # "the exit": any exit is one; the nearest to the scene was chosen, meaning adds nothing
-        rooms_only = bool(content) and (content[-1] in lx.GENERIC_PLACE_HEADS or self._headed_elsewhere(lemmas, match))
-        among = {match.name, *alternatives, *index.sharing(content)}
+        rooms_only = self._headed_elsewhere(lemmas, match)
+        strong = [r.entry.name for r in index.by_meaning(said)[:3] if r.similarity >= MEANING_ACCEPT]
+        among = {match.name, *alternatives, *index.sharing(content), *strong}
         ranked = [r for r in index.by_meaning(said, among=among) if r.entry.kind == "zone" or not rooms_only]
         if len(ranked) < 2:
             return None

@@ -43,6 +43,7 @@ class PlaceEntry:
     exit: bool = False
     area: float = 0.0
     said: tuple[str, ...] = ()  # the name (as words), the type and each alias, as people write them
+    types: frozenset[str] = frozenset()  # the type as written in `said`
     owners: frozenset[str] = frozenset()  # kinds of people it belongs to ("child" for "kids room")
 
 
@@ -98,7 +99,14 @@ class PlaceIndex:
         self.name_words = frozenset(t for e in self.entries for t in e.tokens if t.isalpha() and len(t) >= 4)
         self.name_pairs = frozenset(pair for e in self.entries for p in e.phrases for pair in zip(p, p[1:]))
         self.joined_pairs = {a + b: (a, b) for a, b in self.name_pairs if a.isalpha() and b.isalpha()}
-        self._said = [(i, text) for i, e in enumerate(self.entries) for text in e.said]
+        # A type many places share ("gallery", "office") says nothing about which: meaning compares
+        # names, aliases and the types only one place has.
+        said_by: dict[str, int] = {}
+        for e in self.entries:
+            for text in e.said:
+                said_by[text] = said_by.get(text, 0) + 1
+        self._said = [(i, text) for i, e in enumerate(self.entries) for k, text in enumerate(e.said)
+                      if k == 0 or text not in e.types or said_by[text] == 1]
         self._vectors = PhraseVectors([text for _, text in self._said])
         self._order_cache = {e.name: i for i, e in enumerate(self.entries)}
         self._by_name = {e.name: e for e in self.entries}
@@ -282,6 +290,7 @@ def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], ali
     owners = {t for phrase in phrases for t in phrase if t in PERSON_NOUNS and t not in ("person", "people")}
     return PlaceEntry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens),
                       tuple(p for p in phrases if p), exit, area, tuple(dict.fromkeys(said)),
+                      frozenset({type_.replace("_", " ")} if type_ and kind != "door" else set()),
                       frozenset(k for t in owners for k in owner_kinds(t)))
 
 
