@@ -61,6 +61,8 @@ class Groups:
         for k, m in enumerate(mentions):
             if m.zone_place is not None:  # "half the open office goes ...": where they are
                 clauses[k].places.insert(0, m.zone_place)
+            if m.robot_object is not None:
+                clauses[k] = self._with_robot(m, robot_clauses, excluded)
         self._share(mentions, clauses)
         evacuation = self.clauses.evacuation()
         groups: list[GroupReading] = []
@@ -153,6 +155,23 @@ class Groups:
                 clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
                                          intent=clauses[k].intent or "walk", has_action=True)
 
+    def _with_robot(self, m: Mention, robot_clauses: Sequence[RobotClause], excluded: set[int]) -> Clause:
+        """The clause of people the robot escorts or follows: the robot's route after them is theirs
+        too ("the robot escorts a lost child from baggage reclaim to the info desk"); the escorted
+        follow the robot, the followed walk it."""
+        rc = next((rc for rc in robot_clauses if m.first in rc.tokens), None)
+        if rc is None:
+            return Clause()
+        after = [i for i in rc.tokens if i > m.last]
+        clause = self.clauses.read(after, excluded - set(after))
+        if m.robot_object == "led":
+            return replace(clause, robot="follow", intent=clause.intent or "walk", has_action=True)
+        if m.robot_object == "met":  # people the robot passes, serves or squeezes by stay where they are
+            return replace(clause, intent=clause.intent or "wait", has_action=True)
+        sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "from" for p in clause.places)
+        return replace(clause, intent=clause.intent or ("walk" if sends or not clause.places else "wander"),
+                       has_action=True)
+
     def _own_span(self, span: tuple[int, int], m: Mention, robot_tokens: set[int]) -> tuple[int, int]:
         """A group's span without a robot clause that ends it ("..., while a robot crosses the hall")."""
         s = self.s
@@ -201,7 +220,8 @@ class Groups:
         stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and (
             c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
-                             verb_index=c.verb_index, stationary=stationary, intent=intent)
+                             verb_index=c.verb_index, stationary=stationary, intent=intent,
+                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via

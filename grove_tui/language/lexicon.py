@@ -53,6 +53,10 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
     "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
+# Words that put what follows after what came before ("..., then waits in the waiting room").
+SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
+# Collectives that also name the kind of a collective after them ("a tour group", "a family party").
+MODIFYING_COLLECTIVES = frozenset({"tour", "family", "class", "delegation"})
 # Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
 FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4)}
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
@@ -214,7 +218,8 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("form", "a", "line"): "queue", ("form", "a", "queue"): "queue", ("get", "in", "line"): "queue",
     ("mill", "around"): "wander", ("mill", "about"): "wander", ("walk", "around"): "wander",
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
-    ("hang", "out"): "converse", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
+    ("hang", "out"): "converse", ("hang", "around"): "wait", ("hang", "about"): "wait",
+    ("hang", "round"): "wait", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
     ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
     ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
@@ -258,6 +263,9 @@ ROBOT_WAIT_VERBS = frozenset("wait stand stay park idle remain sit rest stop pau
                              "dock be".split())
 ROBOT_PATROL_VERBS = frozenset("patrol roam wander circle sweep clean mop vacuum guard scan explore monitor tour "
                                "survey inspect cruise prowl loop".split())
+# Words between the robot's verb and people it meets on its way ("drives past two nurses").
+ROBOT_PREPOSITIONS = frozenset("past by between among around round behind beside near to with through towards "
+                               "toward alongside for".split())
 ROBOT_FOLLOW_VERBS = frozenset("follow trail accompany shadow tail chase pursue".split())
 ROBOT_CROSS_VERBS = frozenset("cross pass traverse drive roll glide move navigate travel deliver carry bring fetch "
                               "transport head go leave enter return zoom trundle come reach visit proceed rush hurry "

@@ -160,7 +160,14 @@ class People:
             return False
         has_object = any(w.head == word.head and w.dep in ("dobj", "obj") for w in s.w)
         verb = s.verb(word.head)
-        return verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+        return (verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+                and not self._phrasal_after(word.head))
+
+    def _phrasal_after(self, v: int) -> bool:
+        """Whether a verb begins a phrase only people do ("hang around", "hang out", "line up")."""
+        s = self.s
+        return any(tuple([s.verb(v), *s.low[v + 1:v + len(phrase)]]) == phrase
+                   for phrase in lx.PHRASAL_INTENTS if phrase[0] == s.verb(v))
 
     def _modifies_next_noun(self, k: int) -> bool:
         """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):

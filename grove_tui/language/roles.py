@@ -26,9 +26,11 @@ class Roles:
 
 
 def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
-                 verb_index: int | None, stationary: bool, intent: str) -> Roles:
+                 verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = ()) -> Roles:
     """The group's places by role: a narrower place (a fixture of the zone already read) replaces
-    the zone; a destination said with "to" is not replaced by a later "at"."""
+    the zone; a destination said with "to" is not replaced by a later "at"; a place they stay at
+    after "then" is where they stay, the one before it where they start ("buys a paper at the
+    newsagent, then waits in the waiting room")."""
     roles = Roles()
     said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
     for p in [*places, *scene_places]:
@@ -46,6 +48,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             roles.destination, said_to = name, said_to or marked
         elif role == "location" and (roles.location is None or narrower(index, name, roles.location)):
             roles.location = name
+        elif role == "location" and roles.start is None and roles.location is not None and name != roles.location and \
+                any(roles.read_from[roles.location].index < t < p.index for t in then_at):
+            roles.start, roles.location = roles.location, name
         elif role == "via" and name not in roles.via:
             roles.via.append(name)
     return roles

@@ -115,3 +115,36 @@ def test_an_adverb_of_place_is_neither_a_place_nor_a_noun(worlds, world, prompt,
 def test_arriving_by_an_entrance_is_coming_in_there(worlds):
     g = read(worlds, "airport", "At dawn twelve cleaners arrive by the side entrance and go to the toilets.")[0]
     assert (g.start, g.destination) == ("east_entrance", "toilets")
+
+
+@pytest.mark.parametrize("world,prompt,who,intent,route", [
+    ("hospital", "The robot escorts an elderly visitor from the lobby to ward B.", "an elderly visitor", "robot",
+     ("entrance_lobby", "ward_b")),
+    ("hospital", "The robot follows a nurse from the pharmacy to radiology.", "a nurse", "walk",
+     ("pharmacy", "radiology")),
+])
+def test_people_the_robot_takes_along_or_follows_are_a_group_on_its_route(worlds, world, prompt, who, intent, route):
+    g, = read(worlds, world, prompt)
+    assert (g.who, g.intent, (g.start, g.destination)) == (who, intent, route) and g.count.value == 1
+
+
+def test_people_the_robot_passes_are_a_group_where_they_are(worlds):
+    g, = read(worlds, "hospital", "A robot drives past three doctors chatting in the main corridor.")
+    assert (g.count.value, g.intent, g.location) == (3, "converse", "main_corridor")
+
+
+def test_a_collective_before_a_collective_is_one_group_of_its_kind(worlds):
+    g, = read(worlds, "station", "A tour group walks from the ticket hall to platform 1.")
+    assert g.count.kind == "implied" and (g.start, g.destination) == ("ticket_hall", "platform_1")
+    second = read(worlds, "hospital", "Ten patients walk to the pharmacy while a family queues at the reception desk.")
+    assert second[1].intent == "queue" and second[1].count.kind == "implied"
+
+
+def test_a_place_after_then_is_where_they_stay_and_the_one_before_where_they_start(worlds):
+    g, = read(worlds, "hospital", "A visitor gets a coffee at the cafeteria, then waits in the main waiting room.")
+    assert (g.intent, g.start, g.location) == ("wait", "cafeteria", "main_waiting_room")
+
+
+def test_hanging_around_is_waiting_there(worlds):
+    g, = read(worlds, "hospital", "Two teenagers hang around near the pharmacy.")
+    assert (g.count.value, g.intent, g.location) == (2, "wait", "pharmacy")
