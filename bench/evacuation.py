@@ -1,6 +1,13 @@
 """A dense evacuation of the hospital: is everyone either inside or counted? (run by hand, not a test)
 
     PYTHONPATH=. python bench/evacuation.py [--agents 500] [--seconds 600] [--out DIR]
+    PYTHONPATH=. python bench/evacuation.py --plan [--agents 40]
+
+--plan times only the planning of an evacuation of --agents people spread over each shipped world
+(the emergency preset's post-processing, with each person's exit, and its planning stage, with the
+groups' velocity fields and the robot), three times in one process: the first pays for loading the
+compiled kernels and the world's door graph (from the data dir, or building it), the others are what
+the app pays for a new sentence. CPU and wall seconds; issue 32 asks under 1 s.
 
 Spreads --agents people over the hospital's zones (by free area, at least 0.6 m apart, never within
 1.2 m of an exit), sends each zone's people to its nearest exit along that exit's velocity field
@@ -80,13 +87,57 @@ def build(agents: int, seed: int) -> tuple[Simulation, list[AgentSpec], list[tup
     return sim, specs, exit_points
 
 
+def plan_evacuation(world_name: str, agents: int, seed: int) -> tuple[float, float, int]:
+    """(CPU s, wall s, fields) of post-processing and planning an evacuation of `agents` people."""
+    from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+    from grove_tui.generation.planning import plan_operational
+    from grove_tui.generation.postprocess import postprocess
+    from grove_tui.generation.presets import load_preset
+    from grove_tui.generation.rois import select_rois
+    from grove_tui.language.reading import read_prompt
+
+    world = load_world(world_name)
+    preset = load_preset("emergency")
+    prompt = f"{agents} people evacuate the building"
+    grid = build_grid(world, resolution=preset.planner.resolution, inflation=preset.planner.inflation)
+    reading = read_prompt(prompt, world)
+    selection = select_rois(world, preset, reading)
+    leave = DraftNode("Sequence", {}, (DraftNode("FollowVelocityField", {"exit": world.exits()[0].name}),))
+    draft = Draft((DraftGroup("people", agents, None, leave),))
+    wall, cpu = time.perf_counter(), time.process_time()
+    post = postprocess(world, grid, preset, draft, selection, seed, reading,
+                       ("Sequence", "FollowVelocityField", "JoinGroup", "Wait"))
+    plan = plan_operational(world, grid, preset, post, seed, planner=ThetaStarPlanner(grid))
+    return time.process_time() - cpu, time.perf_counter() - wall, len(plan.fields)
+
+
+def plan_only(agents: int) -> None:
+    from grove_tui.world import list_worlds
+
+    import os
+
+    print(f"# load average {os.getloadavg()[0]:.1f}; {agents} people spread over each world, emergency preset")
+    worst_warm = 0.0
+    for name in list_worlds():
+        runs = [plan_evacuation(name, agents, seed) for seed in range(3)]
+        worst_warm = max(worst_warm, *(cpu for cpu, _wall, _f in runs[1:]))
+        print(f"{name:<12} fields {runs[0][2]}  first {runs[0][0]:.2f} s CPU / {runs[0][1]:.2f} s wall   "
+              + "   ".join(f"then {cpu:.2f} s CPU / {wall:.2f} s wall" for cpu, wall, _f in runs[1:]), flush=True)
+    print(f"agents={agents} worst_warm_cpu_s={worst_warm:.2f} load_average={os.getloadavg()[0]:.1f}")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--agents", type=int, default=500)
+    parser.add_argument("--plan", action="store_true", help="time the planning of an evacuation only")
+    parser.add_argument("--agents", type=int, default=None, help="people (default 500, or 40 with --plan)")
     parser.add_argument("--seconds", type=float, default=600.0)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--out", type=Path, default=None, help="folder for trajectories.csv; then measure metrics")
     args = parser.parse_args()
+    if args.plan:
+        plan_only(args.agents or 40)
+        return
+    args.agents = args.agents or 500
     started = time.perf_counter()
     sim, specs, exit_points = build(args.agents, args.seed)
     n = len(specs)

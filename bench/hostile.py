@@ -511,8 +511,10 @@ def faults(only: str, skip_model: bool, limit: int | None) -> None:
         simulated = bundle(root)
         yaml_path = write_scenario(root / "scenario")
         out = root / "out"
-        batch_jobs = jobs(root, job_line(name="visitors", prompt="two visitors walk to the cafeteria", simulate=2,
-                                         export=["hunav"]))
+        # The batch's own writes: its bundles, its records and its index (a job's simulation and exports
+        # are the simulate and export commands' writes, swept below on their own).
+        batch_jobs = jobs(root, job_line(name="visitors", prompt="two visitors walk to the cafeteria"),
+                          job_line(name="waiting", prompt="three patients wait in the lobby"))
         commands = {
             "generate": (["generate", "--no-ui", "--world", "hospital", "--preset", "normal", "--prompt",
                           "two visitors walk to the cafeteria", "--seed", "1", "--out", out / "generated"],

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import statistics
 import sys
 import time
@@ -115,6 +116,14 @@ def run_pathfinding(occupied, queries, planner):
     return build, walls, cpus, raw_lengths, smooth_lengths, clipping
 
 
+def exact_lengths(grid, queries):
+    """Path lengths of the exact search (ALT landmarks, no block guide): the planner before issue 32."""
+    import dataclasses
+
+    exact = ThetaStarPlanner(dataclasses.replace(grid, world=None), landmarks=16)
+    return [cells_length(exact.plan_cells(a, b), exact.resolution) for a, b in queries]
+
+
 def bench(name, grid, queries_count, repeats, min_cells, seed, fixed_queries=None):
     t0 = time.perf_counter()
     planner = ThetaStarPlanner(grid)
@@ -122,11 +131,12 @@ def bench(name, grid, queries_count, repeats, min_cells, seed, fixed_queries=Non
     prepare = time.perf_counter() - t0
     queries = fixed_queries(planner) if fixed_queries else long_queries(planner, queries_count, min_cells, seed)
     ours_wall, ours_t, ours_len = run_ours(planner, queries, repeats)
+    exact_len = exact_lengths(grid, queries)
     pf_build, pf_wall, pf_t, pf_raw, pf_smooth, clipping = run_pathfinding(grid.occupied, queries, planner)
     h, w = grid.occupied.shape
     print(f"\n== {name}: {h} x {w} cells, {grid.occupied.mean():.1%} occupied, {len(queries)} queries")
-    print(f"grid preparation (wall): ours {prepare * 1000:.0f} ms (clearance, components, {planner.landmark_count} landmark maps), "
-          f"pathfinding {pf_build * 1000:.0f} ms (Grid from the matrix)")
+    print(f"grid preparation (wall): ours {prepare * 1000:.0f} ms (clearance, components"
+          f"{', block guide' if planner.guide_block else ''}), pathfinding {pf_build * 1000:.0f} ms (Grid from the matrix)")
     print(f"{'query':>5} {'ours cpu ms':>11} {'ours wall ms':>12} {'pf cpu ms':>9} {'pf wall ms':>10} {'speedup':>8} "
           f"{'ours m':>8} {'A* m':>8} {'A*+smooth m':>12} {'len ratio':>9}")
     for i, row in enumerate(zip(ours_t, ours_wall, pf_t, pf_wall, ours_len, pf_raw, pf_smooth)):
@@ -142,6 +152,8 @@ def bench(name, grid, queries_count, repeats, min_cells, seed, fixed_queries=Non
         "pathfinding_ms_median": statistics.median(pf_t) * 1000,
         "speedup_median": statistics.median(p / o for p, o in zip(pf_t, ours_t)),
         "length_ratio_vs_smoothed": sum(ours_len) / sum(pf_smooth),
+        "length_ratio_vs_exact": sum(ours_len) / sum(exact_len),
+        "worst_length_ratio_vs_exact": max(o / e for o, e in zip(ours_len, exact_len)),
         "length_ratio_vs_astar": sum(ours_len) / sum(pf_raw),
         "baseline_clipping_segments": clipping,
     }
@@ -165,6 +177,39 @@ def hospital_queries(world, count):
     return make
 
 
+def bench_door_graph(world, grid, queries_fn, repeats):
+    """World planner (door graph) on the hospital's entity-to-entity queries: CPU ms and lengths against exact."""
+    import dataclasses
+    import tempfile
+
+    from grove_tui.navigation.theta_star import path_length
+
+    with tempfile.TemporaryDirectory() as cache:
+        t0 = time.perf_counter()
+        planner = ThetaStarPlanner(grid, world=world, door_graph_dir=Path(cache))
+        planner.door_graph
+        build = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        ThetaStarPlanner(dataclasses.replace(grid), world=world, door_graph_dir=Path(cache)).door_graph
+        load = time.perf_counter() - t0
+    exact = ThetaStarPlanner(dataclasses.replace(grid, world=None), landmarks=16)
+    points = [(planner.cell_centre(*a), planner.cell_centre(*b)) for a, b in queries_fn(planner)]
+    planner.plan(*points[0])
+    cpus, ratios = [], []
+    for a, b in points:
+        runs = [timed(planner.plan, a, b) for _ in range(repeats)]
+        path, _wall, cpu = min(runs, key=lambda run: run[2])
+        cpus.append(cpu)
+        ratios.append(path_length(path) / path_length(exact.plan(a, b)))
+    summary = {"door_graph_build_s": build, "door_graph_load_s": load,
+               "door_graph_ms_median": statistics.median(cpus) * 1000,
+               "door_graph_ms_p90": float(np.percentile(cpus, 90)) * 1000,
+               "door_graph_length_ratio": float(np.mean(ratios)), "door_graph_worst_length_ratio": max(ratios)}
+    print(f"\n== hospital at 0.05 m through its door graph: {len(points)} queries")
+    print("  ".join(f"{k}={v:.3g}" for k, v in summary.items()))
+    return summary
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--queries", type=int, default=20)
@@ -174,8 +219,13 @@ def main() -> None:
                                 world_name="random_1000")
     grid_1000 = bench("random rectangles 1000 x 1000", random_grid, args.queries, args.repeats, 700, 1)
     world = load_world("hospital")
-    hospital = bench("hospital at 0.05 m", build_grid(world, resolution=0.05), args.queries, args.repeats, 0, 0,
-                     fixed_queries=hospital_queries(world, args.queries))
+    import dataclasses
+
+    hospital_grid = build_grid(world, resolution=0.05)
+    # the generic planner (no world): the grid alone, as for the random grid
+    hospital = bench("hospital at 0.05 m", dataclasses.replace(hospital_grid, world=None), args.queries, args.repeats,
+                     0, 0, fixed_queries=hospital_queries(world, args.queries))
+    doors = bench_door_graph(world, hospital_grid, hospital_queries(world, args.queries), args.repeats)
     # times are CPU ms per query; speedup = baseline CPU / ours; length ratio = ours / baseline
     headline = {
         "grid1000_ours_ms_median": grid_1000["ours_ms_median"],
@@ -186,6 +236,8 @@ def main() -> None:
         "grid1000_pathfinding_ms_median": grid_1000["pathfinding_ms_median"],
         "grid1000_speedup": grid_1000["speedup_median"],
         "grid1000_length_ratio": grid_1000["length_ratio_vs_smoothed"],
+        "grid1000_length_ratio_vs_exact": grid_1000["length_ratio_vs_exact"],
+        "grid1000_worst_length_ratio_vs_exact": grid_1000["worst_length_ratio_vs_exact"],
         "hospital005_ours_ms_median": hospital["ours_ms_median"],
         "hospital005_ours_ms_p90": hospital["ours_ms_p90"],
         "hospital005_ours_ms_max": hospital["ours_ms_max"],
@@ -193,6 +245,11 @@ def main() -> None:
         "hospital005_pathfinding_ms_median": hospital["pathfinding_ms_median"],
         "hospital005_speedup": hospital["speedup_median"],
         "hospital005_length_ratio": hospital["length_ratio_vs_smoothed"],
+        "hospital005_length_ratio_vs_exact": hospital["length_ratio_vs_exact"],
+        "hospital005_worst_length_ratio_vs_exact": hospital["worst_length_ratio_vs_exact"],
+        "hospital005_door_graph_ms_p90": doors["door_graph_ms_p90"],
+        "hospital005_door_graph_length_ratio_vs_exact": doors["door_graph_length_ratio"],
+        "load_average": os.getloadavg()[0],
     }
     print()
     print(" ".join(f"{k}={v:.3g}" for k, v in headline.items()))

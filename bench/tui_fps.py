@@ -170,6 +170,9 @@ async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) ->
             await pilot.pause(0.1)
         draw = screen.draw_latest
         draw_cost = []
+        # (wall time, simulated time drawn, simulated time of the counters shown) at every drawn frame:
+        # the counters' delay is how long ago, in wall time, the run was at the time they are for.
+        timeline: list[tuple[float, float, float | None]] = []
 
         def timed_draw() -> None:
             started = time.perf_counter()
@@ -177,6 +180,11 @@ async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) ->
             draw()
             if screen.frames_drawn > before:
                 draw_cost.append(time.perf_counter() - started)
+                snapshot = screen.controller.latest if screen.controller is not None else None
+                if snapshot is not None:
+                    counters = getattr(snapshot, "counters", None)  # a peer checkout may have none
+                    timeline.append((time.perf_counter(), float(snapshot.frame.t),
+                                     None if counters is None else float(counters.t)))
 
         screen.draw_latest = timed_draw  # the interval timer looks the method up on each tick
         for timer in screen._timers:
@@ -202,32 +210,63 @@ async def measure(generated, seconds: float, fps: int, size: tuple[int, int]) ->
                 raise SystemExit("the simulation did not play: " + str(screen.query_one("#sim-status").render()))
             await pilot.pause(0.2)
         await pilot.pause(1.0)  # first BT ticks, caches
-        frames0, updates0, encode0 = screen.frames_drawn, painted["updates"], painted["encode_seconds"]
-        render0 = painted["render_seconds"]
-        repainted.clear()
-        step0, t0 = screen.controller.latest.frame.step, screen.controller.latest.frame.t
-        draw_cost.clear()
-        started = time.perf_counter()
-        await pilot.pause(seconds)
-        elapsed = time.perf_counter() - started
-        frames = screen.frames_drawn - frames0
-        latest = screen.controller.latest.frame
-        updates = painted["updates"] - updates0
-        return {
-            "agents": len(generated.scenario.agents),
-            "terminal": f"{size[0]}x{size[1]}",
-            "target_fps": fps,
-            "fps": round(frames / elapsed, 2),
-            "screen_updates_per_second": round(updates / elapsed, 2),
-            "mean_draw_ms": round(1000 * float(np.mean(draw_cost)), 2) if draw_cost else None,
-            "mean_render_ms": round(1000 * (painted["render_seconds"] - render0) / max(1, updates), 2),
-            "mean_encode_ms": round(1000 * (painted["encode_seconds"] - encode0) / max(1, updates), 2),
-            "map_rows_repainted_per_frame": round(float(np.mean(repainted)), 1) if repainted else None,
-            "sim_steps_per_second": round((latest.step - step0) / elapsed, 1),
-            "real_time_factor": round((latest.t - t0) / elapsed, 2),
-            "measured_seconds": round(elapsed, 2),
-            "load_average": round(os.getloadavg()[0], 2),
-        }
+
+        async def window(speed_label: str) -> dict:
+            frames0, updates0, encode0 = screen.frames_drawn, painted["updates"], painted["encode_seconds"]
+            render0 = painted["render_seconds"]
+            repainted.clear()
+            timeline.clear()
+            step0, t0 = screen.controller.latest.frame.step, screen.controller.latest.frame.t
+            draw_cost.clear()
+            started = time.perf_counter()
+            await pilot.pause(seconds)
+            elapsed = time.perf_counter() - started
+            frames = screen.frames_drawn - frames0
+            latest = screen.controller.latest.frame
+            updates = painted["updates"] - updates0
+            delays = counters_delays(timeline)
+            return {
+                "speed": speed_label,
+                "fps": round(frames / elapsed, 2),
+                "screen_updates_per_second": round(updates / elapsed, 2),
+                "mean_draw_ms": round(1000 * float(np.mean(draw_cost)), 2) if draw_cost else None,
+                "mean_render_ms": round(1000 * (painted["render_seconds"] - render0) / max(1, updates), 2),
+                "mean_encode_ms": round(1000 * (painted["encode_seconds"] - encode0) / max(1, updates), 2),
+                "map_rows_repainted_per_frame": round(float(np.mean(repainted)), 1) if repainted else None,
+                "sim_steps_per_second": round((latest.step - step0) / elapsed, 1),
+                "real_time_factor": round((latest.t - t0) / elapsed, 2),
+                "counters_delay_max_s": round(max(delays), 2) if delays else None,
+                "counters_delay_p95_s": round(float(np.percentile(delays, 95)), 2) if delays else None,
+                "measured_seconds": round(elapsed, 2),
+                "load_average": round(os.getloadavg()[0], 2),
+            }
+
+        at_1x = await window("1x")
+        # 8x: ] three times (1x -> 2x -> 4x -> 8x), as a user speeds the run up.
+        await pilot.press("right_square_bracket", "right_square_bracket", "right_square_bracket")
+        await pilot.pause(1.0)
+        at_8x = await window("8x")
+        result = {"agents": len(generated.scenario.agents), "terminal": f"{size[0]}x{size[1]}", "target_fps": fps,
+                  **{key: value for key, value in at_1x.items() if key != "speed"}}
+        for key in ("fps", "real_time_factor", "counters_delay_max_s", "counters_delay_p95_s", "load_average"):
+            result[f"{key}_8x"] = at_8x[key]
+        return result
+
+
+def counters_delays(timeline: list[tuple[float, float, float | None]]) -> list[float]:
+    """For each drawn frame, the wall seconds since the run was at the simulated time its counters are for."""
+    delays = []
+    reached: list[tuple[float, float]] = []  # (simulated time, wall time first drawn at or past it)
+    for wall, t, counters_t in timeline:
+        if not reached or t > reached[-1][0]:
+            reached.append((t, wall))
+        if counters_t is None:
+            continue
+        # The first drawn frame at or after the counters' time: when the run got there (as drawn).
+        index = int(np.searchsorted([r[0] for r in reached], counters_t - 1e-9))
+        if index < len(reached):
+            delays.append(max(0.0, wall - reached[index][1]))
+    return delays
 
 
 class GcPauses:
@@ -423,8 +462,13 @@ def main() -> int:
         verdict = "meets" if result["fps"] >= 15 else "MISSES"
         print(f"{verdict} the 15 fps goal with {result['agents']} agents (ratio fps/goal {result['fps'] / 15:.2f}; "
               f"--peer CHECKOUT compares with another checkout in the same run)")
+        delays = (result["counters_delay_max_s"], result["counters_delay_max_s_8x"])
+        met = all(d is not None and d <= 1.0 for d in delays)
+        print(f"{'meets' if met else 'MISSES'} the counters' 1 s goal (max delay {delays[0]} s at 1x, {delays[1]} s at 8x)")
     print(f"fps={result['fps']} agents={result['agents']} terminal={result['terminal']} "
-          f"real_time_factor={result['real_time_factor']} load={round(os.getloadavg()[0], 2)}")
+          f"real_time_factor={result['real_time_factor']} counters_delay_1x={result['counters_delay_max_s']} "
+          f"counters_delay_8x={result['counters_delay_max_s_8x']} fps_8x={result['fps_8x']} "
+          f"real_time_factor_8x={result['real_time_factor_8x']} load={round(os.getloadavg()[0], 2)}")
     return 0
 
 

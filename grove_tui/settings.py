@@ -80,6 +80,10 @@ class UISettings(_Section):
     """Animation level; 'none' keeps SSH sessions responsive."""
     preload_models: bool = True
     """Load the GGUF models in the background as soon as the app opens."""
+    ask_when_unsure: bool = True
+    """Before generating, ask about what the reader is unsure of in the sentence (two places that fit
+    alike, a guessed count, an implied group); false generates the reader's best guess straight away
+    (the grounding report still lists the questions)."""
 
 
 class GenerationSettings(_Section):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import os
 import socket
 import tempfile
@@ -70,6 +71,52 @@ def block_network():
     socket.getaddrinfo = _real_getaddrinfo
 
 
+# ---- `slow` marks every test that runs a real model ------------------------------------------------
+# `python -m pytest -m "not slow"` is the fast run for daily work. It stays fast only if no test in it
+# starts a llama.cpp worker (the embedded model, a tiny Qwen3, any GGUF), the sentence-transformers
+# embedder or the ChromaDB node index; so the ways in are watched here and such a test without the mark
+# fails, saying so. (A model loaded by a child process, `grove ...` run as a subprocess or a Ray worker,
+# is not seen here: `--durations` shows those tests.)
+
+_MODELS_USED: list[str] = []
+
+
+def _watch(owner: object, name: str, what: str) -> None:
+    original = getattr(owner, name)
+
+    @functools.wraps(original)
+    def watched(*args, **kwargs):  # type: ignore[no-untyped-def]
+        _MODELS_USED.append(what)
+        return original(*args, **kwargs)
+
+    setattr(owner, name, watched)
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    from grove_tui.generation import retrieval
+    from grove_tui.llm.local import LocalLLM
+
+    _watch(LocalLLM, "_ensure_worker", "a llama.cpp model (LocalLLM)")
+    _watch(retrieval, "embedding_model", "the sentence-transformers embedder")
+    _watch(retrieval.NodeRetriever, "ensure_index", "the ChromaDB node index")
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_setup(item: pytest.Item):  # type: ignore[no-untyped-def]
+    _MODELS_USED.clear()  # a module's model fixture is set up in its first test's setup: that test uses it
+    return (yield)
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_call(item: pytest.Item):  # type: ignore[no-untyped-def]
+    result = yield
+    used = sorted(set(_MODELS_USED))
+    if used and item.get_closest_marker("slow") is None:
+        pytest.fail(f"{item.nodeid} uses {', '.join(used)} but is not marked `slow`: add @pytest.mark.slow "
+                    "(or pytestmark = pytest.mark.slow for a module of such tests)", pytrace=False)
+    return result
+
+
 # ---- shared worlds: one fixture each, used across tiers ------------------------------------------
 
 
@@ -100,3 +147,103 @@ def hall():
     assert not problems
     grid = build_grid(world)
     return world, grid, ThetaStarPlanner(grid)
+
+
+@pytest.fixture(scope="session")
+def hospital():
+    """The shipped hospital world (load_world caches it: every caller gets the same object)."""
+    from grove_tui.world import load_world
+
+    return load_world("hospital")
+
+
+# ---- hand-built bundles: the hospital scenario of tests/helpers/handmade.py ----------------------
+
+
+@pytest.fixture(scope="module")
+def bundle(tmp_path_factory):
+    """The hand-built hospital bundle (queue, conversation, a Surprised agent, a robot), not simulated."""
+    from helpers.handmade import build_hospital_bundle
+
+    return build_hospital_bundle(tmp_path_factory.mktemp("bundle") / "bundle")
+
+
+@pytest.fixture(scope="session")
+def _hospital_runs(tmp_path_factory):
+    """Simulated hand-built hospital bundles by duration, each simulated once per session (read-only)."""
+    from helpers.handmade import build_hospital_bundle
+
+    from grove_tui.services.session import GroveSession
+
+    runs: dict[float, object] = {}
+
+    def run(seconds: float):
+        if seconds not in runs:
+            bundle = build_hospital_bundle(tmp_path_factory.mktemp(f"run_{seconds:g}s") / "bundle")
+            GroveSession().simulate(bundle, seconds)
+            runs[seconds] = bundle
+        return runs[seconds]
+
+    return run
+
+
+@pytest.fixture(scope="module")
+def simulated(request, tmp_path_factory, _hospital_runs):
+    """The hand-built hospital bundle after a real simulation of the module's SIMULATED_SECONDS (3 s if it
+    names none): one run per duration per session, copied so that each module owns what it writes."""
+    import shutil
+
+    seconds = float(getattr(request.module, "SIMULATED_SECONDS", 3.0))
+    copy = tmp_path_factory.mktemp("simulated") / "bundle"
+    shutil.copytree(_hospital_runs(seconds), copy, symlinks=True)
+    return copy
+
+
+@pytest.fixture()
+def simulated_copy(simulated, tmp_path):
+    """A copy of `simulated` that one test may damage."""
+    import shutil
+
+    copy = tmp_path / "bundle"
+    shutil.copytree(simulated, copy, symlinks=True)
+    return copy
+
+
+# ---- real models: the embedded SmolLM2, a tiny random Qwen3, the node index ----------------------
+
+
+@pytest.fixture(scope="module")
+def llm():
+    """The embedded model (SmolLM2-135M) for behavior trees, one worker per module."""
+    from grove_tui.llm.embedded import embedded_model_path
+    from grove_tui.llm.local import LocalLLM
+
+    model = LocalLLM(embedded_model_path(), role="bt")
+    yield model
+    model.close()
+
+
+@pytest.fixture(scope="module")
+def tiny_path(tmp_path_factory):
+    """A two-layer Qwen3-architecture GGUF with random weights (tests/helpers/tiny_qwen3.py)."""
+    from helpers.tiny_qwen3 import build_tiny_qwen3
+
+    return build_tiny_qwen3(tmp_path_factory.mktemp("qwen3") / "tiny-qwen3.gguf")
+
+
+@pytest.fixture(scope="module")
+def tiny_llm(tiny_path):
+    """The tiny Qwen3 served as the behavior-tree model, one thread, 1024 tokens of context."""
+    from grove_tui.llm.local import LocalLLM
+
+    model = LocalLLM(tiny_path, role="bt", n_ctx=1024, n_threads=1)
+    yield model
+    model.close()
+
+
+@pytest.fixture(scope="module")
+def retriever():
+    """The node retriever on the suite's index (built once in the sandboxed cache, then reused)."""
+    from grove_tui.generation.retrieval import NodeRetriever
+
+    return NodeRetriever()

@@ -16,17 +16,11 @@ from pathlib import Path
 
 import pytest
 from helpers.faults import killed, run_grove, snapshot, staging_left, sweep, whole_json_lines
-from helpers.handmade import build_hospital_bundle
 from helpers.hunav_files import params, write_scenario
 
 from grove_tui.services.session import GroveSession
 
-
-@pytest.fixture(scope="module")
-def simulated(tmp_path_factory) -> Path:
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("faults") / "bundle")
-    GroveSession().simulate(bundle, 2.0)
-    return bundle
+SIMULATED_SECONDS = 2.0  # the `simulated` fixture's run (tests/conftest.py)
 
 
 def test_import_killed_after_the_swap_leaves_the_new_bundle_and_the_next_run_no_staging(tmp_path):

@@ -79,10 +79,11 @@ class EmpiricalResult:
 # --------------------------------------------------------------------------- the corridor with no ends
 
 
-def _corridor(params: SFMParams, length: float = CORRIDOR_LENGTH, width: float = CORRIDOR_WIDTH) -> Crowd:
+def _corridor(params: SFMParams, precision: str = "float64", length: float = CORRIDOR_LENGTH,
+              width: float = CORRIDOR_WIDTH) -> Crowd:
     # the walls run a little past both ends: people step across the seam before they wrap back
     walls = np.array([[-5.0, 0.0, length + 5.0, 0.0], [-5.0, width, length + 5.0, width]])
-    return Crowd(walls, params=params, dt=DT, periodic_x=(0.0, length))
+    return Crowd(walls, params=params, dt=DT, periodic_x=(0.0, length), precision=precision)
 
 
 def _lattice(density: float, length: float, width: float) -> list[tuple[float, float]]:
@@ -96,10 +97,11 @@ def _lattice(density: float, length: float, width: float) -> list[tuple[float, f
     return places[:count]
 
 
-def corridor_speed(density: float, params: SFMParams, *, transient: float = 20.0, measure: float = 20.0) -> float:
+def corridor_speed(density: float, params: SFMParams, *, transient: float = 20.0, measure: float = 20.0,
+                   precision: str = "float64") -> float:
     """Mean walking speed along a 30 x 4 m corridor with no ends at `density` persons/m^2, once the
     start has been forgotten (`transient` seconds), averaged over `measure` seconds."""
-    crowd = _corridor(params)
+    crowd = _corridor(params, precision)
     free = float(published()["weidmann_1993"]["v_free"])
     for x, y in _lattice(density, CORRIDOR_LENGTH, CORRIDOR_WIDTH):
         crowd.add_agent((x, y), radius=RADIUS, desired_speed=free, goals=[(1e6, y)], goal_radius=0.3)
@@ -232,8 +234,7 @@ def lane_formation(params: SFMParams, seconds: float = LANE_SECONDS, seed: int =
     free = float(published()["weidmann_1993"]["v_free"])
     for p, d in zip(places, direction):
         crowd.add_agent((float(p[0]), float(p[1])), radius=RADIUS, desired_speed=float(rng.normal(free, 0.1)),
-                        goals=[(1e6 * d, p[1])],
-                        goal_radius=0.3)
+                        goals=[(1e6 * float(d), float(p[1]))], goal_radius=0.3)
     start = lane_order(crowd.pos, direction, CORRIDOR_LENGTH)
     late: list[float] = []
     shuffled: list[float] = []

@@ -24,7 +24,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import yaml
@@ -37,6 +37,14 @@ from grove_tui.errors import BTError, EvalError, GroveError
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, Scenario
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.grid import OccupancyGrid
+    from grove_tui.navigation.theta_star import ThetaStarPlanner
+    from grove_tui.world.model import World
+
+# generation.json as read back: JSON written by generation, read here key by key with defaults.
+GenerationReport = Mapping[str, Any]
 
 METHODS = ("grove", "vanilla", "no-planner", "decoupled")
 NEAR_POINT = 1.5  # an agent "targets" a door or entity when its final goal is this close to it
@@ -119,7 +127,7 @@ def load_suite(path: str | Path) -> list[EvalCase]:
 # --- alignment ---------------------------------------------------------------------------------
 
 
-def _matches_roi(world: Any, point: Sequence[float], names: Sequence[str]) -> bool:
+def _matches_roi(world: World, point: Sequence[float], names: Sequence[str]) -> bool:
     """Does `point` lie in one of the named zones, or near one of the named doors/entities?"""
     import shapely
 
@@ -142,7 +150,7 @@ def _matches_roi(world: Any, point: Sequence[float], names: Sequence[str]) -> bo
     return False
 
 
-def _zone_matches(world: Any, zone_name: str, names: Sequence[str]) -> bool:
+def _zone_matches(world: World, zone_name: str, names: Sequence[str]) -> bool:
     """A zone matches when it is named, or holds a named door or entity."""
     for name in names:
         if name == zone_name:
@@ -165,7 +173,7 @@ def _roaming_zone(tree_xml: str | None) -> str | None:
     return None
 
 
-def grounding(world: Any, agents: Sequence[AgentSpec], expect: Expectation,
+def grounding(world: World, agents: Sequence[AgentSpec], expect: Expectation,
               trees: Mapping[int, str] | None = None) -> dict[str, float]:
     """Shares of agents whose target / spawn lie where the case says. An agent's target is its last
     goal; an agent with no fixed goal (roaming) targets the zone it roams, else its scenario zone."""
@@ -205,7 +213,7 @@ def behavior_match(trees: Mapping[int, str], expect: Expectation) -> float | Non
     return sum(b in present for b in expect.behaviors) / len(expect.behaviors)
 
 
-def validity(world: Any, trees: Mapping[int, str]) -> dict[str, float]:
+def validity(world: World, trees: Mapping[int, str]) -> dict[str, float]:
     """Trees that validate against the manifest, and names the model invented."""
     valid = 0
     hallucinated_nodes: set[str] = set()
@@ -266,7 +274,7 @@ def stop_and_go_share(traj: Trajectories) -> float:
     return count / traj.ids.size
 
 
-def plausibility(traj: Trajectories, world: Any, agents: Sequence[AgentSpec],
+def plausibility(traj: Trajectories, world: World, agents: Sequence[AgentSpec],
                  events: Sequence[SimEvent]) -> dict[str, float]:
     crowd = crowd_metrics(traj, walls=world.walls(), final_goals={a.id: a.goals[-1] for a in agents if a.goals},
                           events=events, walkable_area=float(world.walkable().area),
@@ -284,7 +292,7 @@ def plausibility(traj: Trajectories, world: Any, agents: Sequence[AgentSpec],
 # --- baselines -----------------------------------------------------------------------------------
 
 
-def decoupled_agents(world: Any, agents: Sequence[AgentSpec], seed: int, grid: Any) -> list[AgentSpec]:
+def decoupled_agents(world: World, agents: Sequence[AgentSpec], seed: int, grid: OccupancyGrid) -> list[AgentSpec]:
     """Text-Crowd-style sampling: each agent starts and ends at zone centres drawn independently of
     the prompt (nearest free point to a random zone's centroid), keeping count and trees."""
     rng = np.random.default_rng(seed)
@@ -297,7 +305,7 @@ def decoupled_agents(world: Any, agents: Sequence[AgentSpec], seed: int, grid: A
         jitter = rng.normal(0.0, 0.4, size=2)
         start = grid.nearest_free(start[0] + jitter[0], start[1] + jitter[1]) or start
         goal = grid.nearest_free(*goal_zone.centroid) or (agent.goals[-1] if agent.goals else start)
-        out.append(AgentSpec(id=agent.id, group=agent.group, start=tuple(start), goals=(tuple(goal),),
+        out.append(AgentSpec(id=agent.id, group=agent.group, start=start, goals=(goal,),
                              zone=goal_zone.name, tree=agent.tree, radius=agent.radius, max_vel=agent.max_vel,
                              label=agent.label, behavior=agent.behavior))
     return out
@@ -311,9 +319,9 @@ class CaseResult:
     error: str = ""
 
 
-def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, trees: Mapping[int, str],
+def score_scenario(case: EvalCase, method: str, world: World, scenario: Scenario, trees: Mapping[int, str],
                    traj: Trajectories | None, events: Sequence[SimEvent],
-                   report: Mapping[str, Any] | None = None) -> CaseResult:
+                   report: GenerationReport | None = None) -> CaseResult:
     scores: dict[str, float] = {"agents": float(len(scenario.agents))}
     scores.update(grounding(world, scenario.agents, case.expect, trees))
     count = count_accuracy(scenario.agents, case.expect)
@@ -335,9 +343,9 @@ def score_scenario(case: EvalCase, method: str, world: Any, scenario: Scenario, 
 
 
 def grounding_report_scores(report: Mapping[str, Any] | None) -> dict[str, float]:
-    """What the bundle's own grounding report says (generation.json `grounding`): the share of the
-    sentence's groups whose count, places, behavior and robot reaction all hold (✓), and how many
-    parts of the sentence it says it could not honour. The suite's expectations score the same
+    """What the bundle's own grounding report says, checked on its run (grounding.json, else the
+    planned report of generation.json, where nothing is ✓ yet): the share of the sentence's groups
+    whose every claim held in the run (✓), and how many parts of the sentence it says it could not honour. The suite's expectations score the same
     scenario from outside; this is the product's account of itself, so the two can be compared."""
     grounding_entry = (report or {}).get("grounding")
     if not isinstance(grounding_entry, Mapping):
@@ -388,8 +396,8 @@ def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scena
     return dataclasses.replace(scenario, agents=agents, fields={}), new_trees
 
 
-def decoupled(scenario: Scenario, trees: Mapping[str, str], world: Any, grid: Any,
-              planner: Any) -> tuple[Scenario, dict[str, str]]:
+def decoupled(scenario: Scenario, trees: Mapping[str, str], world: World, grid: OccupancyGrid,
+              planner: ThetaStarPlanner) -> tuple[Scenario, dict[str, str]]:
     """The `decoupled` baseline: same population and behaviors, but starts and goals drawn from zone
     centres independently of the prompt; paths are still planned (Text-Crowd plans its roadmap too)."""
     from grove_tui.generation.waypoints import inject_waypoints
@@ -440,7 +448,7 @@ def read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
     return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
 
 
-def baseline_variant(method: str, world: Any, scenario: Scenario, trees: Mapping[str, str], base_bundle: Path,
+def baseline_variant(method: str, world: World, scenario: Scenario, trees: Mapping[str, str], base_bundle: Path,
                      target: Path) -> tuple[Scenario, dict[str, str], Path]:
     """The `no-planner` or `decoupled` rewrite of GROVE's bundle, written to `target`."""
     from grove_tui.navigation.grid import build_grid

@@ -14,14 +14,19 @@ recomputing the run each time (which grew with the run: 4.8 s of CPU at t = 21 s
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
 
 from grove_tui.analysis.bundle_metrics import _hunav2_accumulator, metrics_options
 from grove_tui.analysis.metrics import ROBOT_ID, CrowdAccumulator, MetricsReport, RobotAccumulator, Trajectories
 from grove_tui.crowd.recording import CSV_COLUMNS
+from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import Scenario
+
+if TYPE_CHECKING:
+    from grove_tui.analysis.hunav2_metrics import Hunav2Accumulator
+    from grove_tui.world.model import World
 
 
 class RowSource(Protocol):
@@ -45,14 +50,14 @@ def rows_table(rows: np.ndarray) -> np.ndarray:
 class LiveMetrics:
     """The run's metrics, fed whole frames in order (every call reads the rows recorded since the last)."""
 
-    def __init__(self, scenario: Scenario, world: Any) -> None:
+    def __init__(self, scenario: Scenario, world: World) -> None:
         self.scenario = scenario
         self.world = world
         self._options = metrics_options(scenario, world, ())
         self._ids: np.ndarray | None = None
         self._robot: RobotAccumulator | None = None
         self._crowd: CrowdAccumulator | None = None
-        self._hunav2: Any = None
+        self._hunav2: Hunav2Accumulator | None = None
         self.rows = 0  # recorder rows consumed
         self.t: float | None = None  # time of the last frame consumed
         self.frames = 0
@@ -80,7 +85,7 @@ class LiveMetrics:
             # Someone appeared after the first frame: the axis changes, so measure the whole run again.
             self._start(np.union1d(self._ids, people))
             table = rows_table(recorder.rows_from(0))
-        assert self._ids is not None and self._robot is not None and self._crowd is not None
+        assert self._ids is not None and self._robot is not None and self._crowd is not None and self._hunav2 is not None
         chunk = Trajectories.from_rows_on(table, self._ids, np.full(self._ids.size, -1, dtype=np.int64))
         self._robot.add(chunk)
         self._crowd.add(chunk)
@@ -90,16 +95,16 @@ class LiveMetrics:
         self.frames += chunk.frames
         return True
 
-    def report(self, events: Sequence[Any]) -> MetricsReport | None:
+    def report(self, events: Sequence[SimEvent]) -> MetricsReport | None:
         """metrics.json's report of the rows consumed so far (None before the first frame)."""
-        if self._robot is None or self._crowd is None or self.frames == 0:
+        if self._robot is None or self._crowd is None or self._hunav2 is None or self.frames == 0:
             return None
         self._crowd.events = list(events)
         report = MetricsReport(robot=self._robot.result(), crowd=self._crowd.result())
         report.robot.update(self._hunav2.result())
         return report
 
-    def values(self, events: Sequence[Any]) -> dict[str, float]:
+    def values(self, events: Sequence[SimEvent]) -> dict[str, float]:
         """The report flat, as the app lists it ({} before the first frame)."""
         report = self.report(events)
         flat: dict[str, float] = {}

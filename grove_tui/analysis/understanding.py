@@ -27,18 +27,25 @@ import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import yaml
 
 from grove_tui.bt.xml import read_tree
 from grove_tui.errors import GroveError, UnderstandingError
-from grove_tui.scenario.model import Scenario
-from grove_tui.world.model import World
 from grove_tui.language.lexicon import SCALES, TENS, UNITS
 
 # A label is never a number: the lexicon's number words (not "couple" or "pair", which name people).
 NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES)
+
+if TYPE_CHECKING:
+    from grove_tui.scenario.model import Scenario
+    from grove_tui.world.model import World
+
+# A PromptReading's to_dict(): JSON, compared field by field with what the suite's YAML states.
+ReadingDict = Mapping[str, Any]
+# Reads a prompt in a world with a seed: the reader under test (language.reading.read_prompt by default).
+Reader = Callable[[str, "World", int], ReadingDict]
 
 PLACE_ROLES = ("start", "destination", "location", "via")
 GROUP_FIELDS = ("count", "intent", *PLACE_ROLES, "places", "robot_interaction", "robot_reaction", "together",
@@ -133,7 +140,7 @@ def _count_ok(expected: Mapping, got: Mapping | None) -> tuple[bool, str]:
     return not problems, "; ".join(problems)
 
 
-def _label_ok(label: Any, node_names: frozenset[str]) -> bool:
+def _label_ok(label: object, node_names: frozenset[str]) -> bool:
     if not isinstance(label, str) or not label.strip():
         return False
     words = label.lower().replace("-", " ").split()
@@ -144,7 +151,7 @@ def _group_checks(expected: Mapping, got: Mapping | None, node_names: frozenset[
     """(field, ok, detail) for every field the expected group states, and for its places together."""
     checks: list[tuple[str, bool, str]] = []
 
-    def check(name: str, ok: bool, want: Any, have: Any) -> None:
+    def check(name: str, ok: bool, want: object, have: object) -> None:
         checks.append((name, ok, f"expected {want!r}, read {have!r}"))
 
     if got is None:
@@ -204,7 +211,7 @@ def _align(expected: Sequence[Mapping], got: Sequence[Mapping], node_names: froz
     return best[1]
 
 
-def score_reading(case: UnderstandingCase, reading: Mapping[str, Any], node_names: frozenset[str] = frozenset()
+def score_reading(case: UnderstandingCase, reading: ReadingDict, node_names: frozenset[str] = frozenset()
                   ) -> ReadingScore:
     """Score one reading (the `to_dict()` of a PromptReading) against the case's expectation."""
     score = ReadingScore(case)
@@ -226,7 +233,7 @@ def score_reading(case: UnderstandingCase, reading: Mapping[str, Any], node_name
     return score
 
 
-def _score_robot(score: ReadingScore, expected: Mapping[str, Any] | None, got: Mapping[str, Any] | None) -> None:
+def _score_robot(score: ReadingScore, expected: ReadingDict | None, got: ReadingDict | None) -> None:
     """The robot's own clause: its task, and its places by role (those the case states)."""
     if expected is None:
         score.add("robot_task", got is None, f"expected no robot task, read {got!r}")
@@ -241,14 +248,14 @@ def _score_robot(score: ReadingScore, expected: Mapping[str, Any] | None, got: M
         score.add("robot_places", not wrong, "; ".join(wrong))
 
 
-def default_reader() -> Callable[[str, World, int], Mapping[str, Any]]:
+def default_reader() -> Reader:
     from grove_tui.language.reading import read_prompt
 
     return lambda prompt, world, seed: read_prompt(prompt, world, seed=seed).to_dict()
 
 
 def run_reading(cases: Sequence[UnderstandingCase],
-                reader: Callable[[str, World, int], Mapping[str, Any]] | None = None) -> list[ReadingScore]:
+                reader: Reader | None = None) -> list[ReadingScore]:
     """Read every case's prompt and score it; a reader exception is a failed case, not a crash."""
     from grove_tui.bt.manifest import NODES
     from grove_tui.world import load_world

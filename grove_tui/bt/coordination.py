@@ -211,15 +211,26 @@ class ConversationRegistry:
         return conv
 
     def mark_ready(self, conv: Conversation, row: int) -> None:
+        joining = row not in conv.ready
         conv.ready.add(row)
+        if conv.started_at is not None and joining:
+            # a late arrival joins a circle already talking
+            self._sim.event("conversation_start", row, ",".join(str(self._sim.ids[m]) for m in sorted(conv.ready)))
         if conv.started_at is None:
             active = self._sim.crowd.active
             present = [m for m in conv.members if active[m] and m not in conv.left]
             waited = self._sim.clock.now - conv.created_at
             if all(m in conv.ready for m in present) or (waited >= self.PATIENCE and 2 * len(conv.ready) >= len(present)):
                 conv.started_at = self._sim.clock.now
+                # Who talks with whom, for the outcome checks: every member in the circle now.
+                talking = sorted(conv.ready)
+                ids = ",".join(str(self._sim.ids[m]) for m in talking)
+                for m in talking:
+                    self._sim.event("conversation_start", m, ids)
 
     def leave(self, conv: Conversation, row: int) -> None:
+        if conv.started_at is not None and row not in conv.left:
+            self._sim.event("conversation_end", row, "")
         conv.left.add(row)
         conv.ready.discard(row)
         if all(m in conv.left for m in conv.members):

@@ -25,7 +25,7 @@ def summary(directory: str) -> None:
         f"scenarios: {totals.scenarios} (ok {totals.ok}, failed {totals.failed}, pending {totals.pending})",
         f"prompts: {totals.prompts}",
         f"agents: {totals.agents}",
-        f"grounded as asked: {totals.grounded}/{totals.ok}",
+        f"grounded as asked (checked on their run): {totals.grounded}/{totals.ok}",
         f"simulated: {totals.simulated}/{totals.ok}",
         f"generation seconds: {totals.generation_seconds:.2f}",
         "worlds: " + ", ".join(f"{name} {count}" for name, count in totals.worlds.items()),

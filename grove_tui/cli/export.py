@@ -76,14 +76,24 @@ def _format(value: float) -> str:
 
 @click.command()
 @_bundle_argument
-@click.option("--json", "as_json", is_flag=True, help="Print the metrics as JSON instead of tables.")
+@click.option("--json", "as_json", is_flag=True,
+              help="Print the metrics as JSON instead of tables (with the checked grounding report under "
+                   "\"grounding\" when the bundle has one).")
 def metrics(bundle: Path, as_json: bool) -> None:
-    """Robot (HuNavSim evaluator) and crowd metrics of a simulated bundle; also writes metrics.json."""
+    """Robot (HuNavSim evaluator) and crowd metrics of a simulated bundle, and the sentence's grounding
+    report checked on its run; writes metrics.json and grounding.json."""
     from grove_tui.analysis.bundle_metrics import bundle_metrics
+    from grove_tui.analysis.outcomes import GROUNDING_FILE
+    from grove_tui.scenario.report import GroundingReport
 
-    report, path = bundle_metrics(bundle)
+    report, path = bundle_metrics(bundle, outcomes=True)
+    grounding_path = bundle / GROUNDING_FILE
+    checked = json.loads(grounding_path.read_text(encoding="utf-8")) if grounding_path.is_file() else None
     if as_json:
-        click.echo(json.dumps(report.to_dict(), indent=2, sort_keys=True, allow_nan=True))
+        data = report.to_dict()
+        if checked is not None:
+            data["grounding"] = checked
+        click.echo(json.dumps(data, indent=2, sort_keys=True, allow_nan=True, ensure_ascii=False))
         return
     console = Console()
     for title, values in (("Robot", report.robot), ("Crowd", report.crowd)):
@@ -93,7 +103,12 @@ def metrics(bundle: Path, as_json: bool) -> None:
         for key in sorted(values):
             table.add_row(key.replace("_", " "), _format(values[key]))
         console.print(table)
-    console.print(f"[dim]written to {path}[/]", highlight=False)
+    if checked is not None:
+        console.print("[bold]Grounding[/] (the sentence's claims checked on this run)", highlight=False)
+        for line in GroundingReport.from_dict(checked).lines():
+            console.print("  " + line, markup=False, highlight=False)
+    console.print(f"[dim]written to {path}" + (f" and {grounding_path}" if checked is not None else "") + "[/]",
+                  highlight=False)
 
 
 @click.command()

@@ -102,7 +102,7 @@ class Progress:
             self._status = None
 
 
-def summary_lines(result: Any, bundle: Path) -> list[str]:
+def summary_lines(result: Any, bundle: Path, checked: dict[str, Any] | None = None) -> list[str]:
     scenario, report = result.scenario, result.report
     stages = " ".join(f"{k}={v['seconds']:.2f}s" for k, v in report["stages"].items())
     groups = ", ".join(f"{g['count']} {g['label']} " + (f"across {len(g['spawn_zones'])} zones" if g.get("spawn_zones")
@@ -121,13 +121,13 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
     if scenario.robot is not None:
         r = scenario.robot
         lines.append(f"robot: ({r.start[0]:.2f}, {r.start[1]:.2f}) -> ({r.goal[0]:.2f}, {r.goal[1]:.2f})")
-    if report.get("grounding"):
+    if report.get("grounding") or checked:
         from grove_tui.scenario.report import GroundingReport
 
-        # What the sentence asked beside what the scenario does, so nothing is dropped silently.
-        grounding = GroundingReport.from_dict(report["grounding"])
-        lines.append("grounding: " + ("every group as asked" if grounding.ok else "NOT everything as asked"))
-        lines += ["  " + line for line in grounding.lines()]
+        # What the sentence asked, what the scenario plans, and after a run what the people did.
+        grounding = GroundingReport.from_dict(checked or report["grounding"])
+        lines.append("grounding: " + grounding.summary())
+        lines += ["  " + line for line in grounding.lines()[1:]]
     return lines
 
 
@@ -152,17 +152,30 @@ def summary_lines(result: Any, bundle: Path) -> list[str]:
 @click.option("--json", "as_json", is_flag=True, help="Print the result as one JSON object on stdout.")
 @click.option("--variations", type=click.IntRange(1, 10_000), default=1, show_default=True,
               help="Write N scenarios of the prompt into --out/v000 .. (seeds derived from --seed; v000 uses it).")
+@click.option("--strict", is_flag=True,
+              help="Refuse (exit 2, with the question) a sentence the reader is unsure of: two places that fit "
+                   "alike, a guessed count, an implied group.")
 @click.pass_context
 def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str, prompt: str, seed: int,
              simulate_seconds: float | None, out_dir: str, overwrite: bool, roi_model: str | None, bt_model: str | None,
-             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool, variations: int) -> None:
+             robot_start: str | None, robot_goal: str | None, no_robot: bool, as_json: bool, variations: int,
+             strict: bool) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
+    from grove_tui.errors import PromptError
     from grove_tui.generation.planning import RobotRequest
     from grove_tui.services.jobs import variation_suffix
     from grove_tui.services.session import ScenarioRequest, variation_requests
 
     robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
     request = ScenarioRequest(world_name, preset_name, prompt, seed, robot)
+    if strict:
+        from grove_tui.services.session import GroveSession
+
+        questions = GroveSession().unsure(request)  # the reader only: no model loads for this
+        if questions:
+            raise PromptError("the reading of the sentence is unsure: " + "; ".join(questions),
+                              hint="say it plainly (name the place as the world does, give the number), "
+                                   "or run without --strict to take the reader's best guess")
     if variations == 1:
         targets = [(request, Path(out_dir))]
     else:
@@ -194,11 +207,17 @@ def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite:
         click.echo(json.dumps(payload))
         return
     out = _out()
-    for line in summary_lines(result, bundle):
+    for line in summary_lines(result, bundle, checked=_checked_report(bundle) if sim is not None else None):
         out.print(line, markup=False)
     if sim is not None:
         out.print(f"simulated: {sim['sim_seconds']:.1f} s in {sim['wall_seconds']:.2f} s wall -> "
                   f"{bundle / 'trajectories.csv'}", markup=False)
+
+
+def _checked_report(bundle: Path) -> dict[str, Any] | None:
+    """The grounding report the run checked (grounding.json), when the bundle has one."""
+    path = bundle / "grounding.json"
+    return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else None
 
 
 @click.command("batch")
@@ -356,3 +375,11 @@ def simulate(ctx: click.Context, bundle: str, seconds: float, model: str | None)
               f"{Path(bundle) / 'trajectories.csv'}", markup=False)
     for key, value in sim["counters"].items():
         out.print(f"{key}: {value}", markup=False)
+    checked = _checked_report(Path(bundle))
+    if checked is not None:
+        from grove_tui.scenario.report import GroundingReport
+
+        grounding = GroundingReport.from_dict(checked)
+        out.print("grounding: " + grounding.summary(), markup=False)
+        for line in grounding.lines()[1:]:
+            out.print("  " + line, markup=False)

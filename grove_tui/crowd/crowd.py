@@ -72,10 +72,13 @@ class Crowd:
 
     def __init__(self, walls: np.ndarray | Sequence[Sequence[float]] | None = None,
                  params: SFMParams | None = None, dt: float = 0.05, seed: int = 0,
-                 grid: Any = None, periodic_x: tuple[float, float] | None = None) -> None:
+                 grid: Any = None, periodic_x: tuple[float, float] | None = None,
+                 precision: str = "float64") -> None:
         """`periodic_x` = (x0, x1): x wraps from x1 back to x0 and people interact across that seam,
         as in a corridor with no ends (the fundamental diagram is measured in one). Walls along the
-        corridor should reach a little past both ends; a periodic crowd always steps on one thread."""
+        corridor should reach a little past both ends; a periodic crowd always steps on one thread.
+        `precision` "float32" computes the pairwise terms in single precision (positions, velocities and
+        every sum stay float64): faster, and within SINGLE_PRECISION_TOLERANCE of "float64" (tests/crowd)."""
         if dt <= 0 or not math.isfinite(dt):
             raise CrowdError(f"Crowd dt must be a positive number of seconds, got {dt!r}")
         wall_array = np.zeros((0, 4)) if walls is None else np.asarray(walls, dtype=np.float64)
@@ -85,6 +88,10 @@ class Crowd:
             raise CrowdError(f"Crowd walls must be an (M, 4) array of x1, y1, x2, y2, got shape {wall_array.shape}")
         if not np.all(np.isfinite(wall_array)):
             raise CrowdError("Crowd walls contain NaN or infinite coordinates")
+        if precision not in ("float64", "float32"):
+            raise CrowdError(f"Crowd precision must be 'float64' or 'float32', got {precision!r}")
+        self.precision = precision
+        self._precision = np.empty(0, dtype=np.float32 if precision == "float32" else np.float64)
         self.params = params if params is not None else SFMParams()
         self.dt = float(dt)
         self.seed = int(seed)
@@ -151,10 +158,13 @@ class Crowd:
         self._robot_interaction = np.zeros(capacity, dtype=np.int8)
         # Where a standing agent stopped (NaN while it walks); the kernel sets and clears it.
         self._anchor = np.full((capacity, 2), np.nan)
+        # The narrowest gap to any other body at the start of the last step (the kernel's pair pass).
+        self._min_gap = np.full(capacity, np.inf)
 
     _PER_AGENT = ("_pos", "_vel", "_yaw", "_radius", "_desired_speed", "_base_speed", "_group", "_factors",
                   "_base_factors", "_mode", "_active", "_goal_len", "_goal_front", "_goal_radius", "_cyclic",
-                  "_field_slot", "_face_kind", "_face_ref", "_face_point", "_robot_interaction", "_anchor")
+                  "_field_slot", "_face_kind", "_face_ref", "_face_point", "_robot_interaction", "_anchor",
+                  "_min_gap")
 
     def _grow(self, capacity: int) -> None:
         old = {name: getattr(self, name) for name in self._PER_AGENT}
@@ -206,6 +216,13 @@ class Crowd:
     @property
     def active(self) -> np.ndarray:
         return self._active[: self.n]
+
+    @property
+    def min_gap(self) -> np.ndarray:
+        """Per agent, the narrowest gap (m) between its body and any other within the cutoff at the start
+        of the last step (negative: overlapping; a lower bound when nobody is that near; inf if inactive).
+        Contact counters use it to look only at people who may touch."""
+        return self._min_gap[: self.n]
 
     @property
     def goal_radius(self) -> np.ndarray:
@@ -511,6 +528,21 @@ class Crowd:
         self._robot[sfm.R_CMD_VY] = 0.0
 
     @property
+    def robot_commanded(self) -> bool:
+        """A velocity command drives the robot (a user, a policy), not its scripted path."""
+        return bool(self._robot[sfm.R_COMMANDED])
+
+    def set_robot_speed_limit(self, speed: float) -> None:
+        """The most the robot may drive at (a scripted robot slows or stops for someone in its way)."""
+        if not (math.isfinite(speed) and speed >= 0):
+            raise CrowdError(f"robot speed limit must be >= 0, got {speed!r}")
+        self._robot[sfm.R_MAX_SPEED] = float(speed)
+
+    @property
+    def robot_speed_limit(self) -> float:
+        return float(self._robot[sfm.R_MAX_SPEED])
+
+    @property
     def has_robot(self) -> bool:
         return bool(self._robot[sfm.R_PRESENT])
 
@@ -610,7 +642,7 @@ class Crowd:
             self._face_kind[:k], self._face_ref[:k], self._face_point[:k], self._anchor[:k],
             self._robot_interaction[:k], self._robot, self._robot_path,
             self.walls, self._wall_owner, self._wall_meta, self._wall_start, self._wall_items,
-            self._free_meta, self._wall_free, _block_size(k),
+            self._free_meta, self._wall_free, _block_size(k), self._min_gap[:k], self._precision,
         )
 
 

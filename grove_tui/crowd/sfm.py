@@ -1187,6 +1187,113 @@ def _pair_terms(count, params, dxs, dys, tinys, dvxs, dvys, rsums, exis, eyis, e
         osy[p] = f_v * iy + f_a * ix
 
 
+# The same pair terms in single precision (Crowd(precision="float32")): every constant is a
+# float32 global, so no operand widens the lanes to float64 and a 512-bit register holds 16 pairs.
+_F32 = np.float32
+_POW2_32 = np.array([2.0 ** -k for k in range(0, 150)], dtype=np.float32)
+_H0, _H1, _H2, _H6, _H24 = _F32(0.0), _F32(1.0), _F32(0.5), _F32(1.0 / 6.0), _F32(1.0 / 24.0)
+_H120, _H720, _LN2, _LOG2E = _F32(1.0 / 120.0), _F32(1.0 / 720.0), _F32(0.6931471805599453), _F32(1.4426950408889634)
+_LOW32 = _F32(-87.0)
+_A1, _A3, _A5, _A7 = _F32(0.99997726), _F32(-0.33262347), _F32(0.19354346), _F32(-0.11643287)
+_A9, _A11 = _F32(0.05265332), _F32(-0.01172120)
+_HALF_PI32, _PI32, _TINY32, _EPS32 = _F32(math.pi / 2), _F32(math.pi), _F32(1e-12), _F32(1e-30)
+
+
+@nb.njit(cache=True, fastmath=_FASTMATH, error_model="numpy", inline="always")
+def _exp_nonpositive32(x):
+    """exp(x), x <= 0, in float32 (relative error ~2e-7): 2^-k times a degree-6 series on |r| <= ln2 / 2."""
+    x = max(x, _LOW32)
+    k = int(-x * _LOG2E + _H2)
+    r = x + _F32(k) * _LN2
+    p = _H1 + r * (_H1 + r * (_H2 + r * (_H6 + r * (_H24 + r * (_H120 + r * _H720)))))
+    return p * _POW2_32[k]
+
+
+@nb.njit(cache=True, fastmath=_FASTMATH, error_model="numpy", inline="always")
+def _atan2_branchless32(y, x):
+    """atan2 in float32 (error ~1e-5 rad): an odd degree-11 fit on [0, 1] and selects for the octants."""
+    ax = abs(x)
+    ay = abs(y)
+    a = min(ax, ay) / max(max(ax, ay), _EPS32)
+    s = a * a
+    r = a * (_A1 + s * (_A3 + s * (_A5 + s * (_A7 + s * (_A9 + s * _A11)))))
+    r = _HALF_PI32 - r if ay > ax else r
+    r = _PI32 - r if x < _H0 else r
+    return math.copysign(r, y)
+
+
+@nb.njit(cache=True, fastmath=_FASTMATH, error_model="numpy")
+def _pair_terms32(count, params, dxs, dys, tinys, dvxs, dvys, rsums, exis, eyis, exjs, eyjs,
+                  osx, osy, ocx, ocy, oai, oaj, ogap):
+    """_pair_terms on float32 columns, computed in float32 (see _F32)."""
+    lam = _F32(params[P_LAMBDA])
+    gamma = _F32(params[P_GAMMA])
+    inv_gamma = _H1 / gamma
+    epsilon = _F32(params[P_EPSILON])
+    n_angle = _F32(params[P_N])
+    n_vel = _F32(params[P_NPRIME])
+    body = _F32(params[P_BODY])
+    friction = _F32(params[P_FRICTION])
+    density_radius = _F32(params[P_DENSITY_RADIUS])
+    skip_exponent = _F32(min(params[P_SKIP], 1e30))
+    for p in range(count):
+        dx = dxs[p]
+        dy = dys[p]
+        norm = math.sqrt(dx * dx + dy * dy)
+        inv = _H1 / norm
+        ux = dx * inv
+        uy = dy * inv
+        dist = norm * (_H1 - tinys[p])
+        near = dist < density_radius
+        oai[p] = _H1 if (near and ux * exis[p] + uy * eyis[p] > _H0) else _H0
+        oaj[p] = _H1 if (near and ux * exjs[p] + uy * eyjs[p] < _H0) else _H0
+        gap = dist - rsums[p]
+        ogap[p] = gap
+        overlap = max(-gap, _H0)
+        dvx = dvxs[p]
+        dvy = dvys[p]
+        slide = dvx * uy - dvy * ux
+        ocx[p] = -body * overlap * ux - friction * overlap * slide * uy
+        ocy[p] = -body * overlap * uy + friction * overlap * slide * ux
+        ix = lam * dvx + ux
+        iy = lam * dvy + uy
+        ilen = math.sqrt(ix * ix + iy * iy)
+        degenerate = ilen <= _TINY32
+        ix = ux if degenerate else ix
+        iy = uy if degenerate else iy
+        ilen = _H1 if degenerate else ilen
+        inv_ilen = _H1 / ilen
+        b = gamma * ilen
+        q = dist * inv_ilen * inv_gamma
+        ix *= inv_ilen
+        iy *= inv_ilen
+        theta = _atan2_branchless32(ix * uy - iy * ux, ix * ux + iy * uy) + epsilon * b
+        ta = n_angle * b * theta
+        tv = n_vel * b * theta
+        ta2 = ta * ta
+        tv2 = tv * tv
+        keep = _H1 if (q <= skip_exponent and q + min(ta2, tv2) <= skip_exponent) else _H0
+        f_v = -_exp_nonpositive32(-q - tv2) * keep
+        sign = _H1 if theta > _H0 else (-_H1 if theta < _H0 else _H0)
+        f_a = -sign * _exp_nonpositive32(-q - ta2) * keep
+        osx[p] = f_v * ix - f_a * iy
+        osy[p] = f_v * iy + f_a * ix
+
+
+from numba.extending import overload as _overload  # noqa: E402
+
+
+def _terms_for(precision):
+    """The pair-terms kernel for the precision array's dtype (resolved when numba compiles the caller)."""
+    return _pair_terms32 if precision.dtype == np.float32 else _pair_terms
+
+
+@_overload(_terms_for)
+def _terms_for_overload(precision):
+    chosen = _pair_terms32 if precision.dtype == nb.float32 else _pair_terms
+    return lambda precision: chosen
+
+
 @nb.njit(cache=True)
 def _add_pair_terms(count, first, second, pout, acc):
     """Each pair's terms onto both agents' accumulators, in pair order."""
@@ -1211,10 +1318,12 @@ def _add_pair_terms(count, first, second, pout, acc):
 
 
 @nb.njit(cache=True)
-def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc, search_only=False):
+def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc, precision, search_only=False):
     """Every pair within the cutoff whose first agent lies in `band` (span major rows), once.
 
-    `search_only` finds the pairs and stops there (the profiler times the search apart)."""
+    `search_only` finds the pairs and stops there (the profiler times the search apart). The pair
+    columns take `precision`'s dtype (float32 halves what the search writes and doubles the SIMD
+    lanes that read it; the sums stay float64)."""
     cutoff = params[P_CUTOFF]
     cutoff2 = cutoff * cutoff
     period = params[P_PERIOD]
@@ -1227,8 +1336,8 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc,
     capacity = 0
     first = np.empty(capacity, dtype=np.int32)
     second = np.empty(capacity, dtype=np.int32)
-    pin = np.empty((Q_IN, capacity))
-    pout = np.empty((O_OUT, capacity))
+    pin = np.empty((Q_IN, capacity), dtype=precision.dtype)
+    pout = np.empty((O_OUT, capacity), dtype=precision.dtype)
     count = 0
     for c in range(M0 * n_minor, M1 * n_minor):
         if starts[c] == starts[c + 1]:
@@ -1256,7 +1365,7 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc,
         most = (starts[c + 1] - starts[c]) * reach
         if count + most > capacity:
             if count > 0 and not search_only:
-                _pair_terms(count, params, pin[Q_DX], pin[Q_DY], pin[Q_TINY], pin[Q_DVX], pin[Q_DVY], pin[Q_RSUM],
+                _terms_for(precision)(count, params, pin[Q_DX], pin[Q_DY], pin[Q_TINY], pin[Q_DVX], pin[Q_DVY], pin[Q_RSUM],
                             pin[Q_EXI], pin[Q_EYI], pin[Q_EXJ], pin[Q_EYJ], pout[O_SX], pout[O_SY], pout[O_CX],
                             pout[O_CY], pout[O_AHEAD_I], pout[O_AHEAD_J], pout[O_GAP])
                 _add_pair_terms(count, first, second, pout, acc)
@@ -1265,8 +1374,8 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc,
                 capacity = max(most, _PAIR_CHUNK)
                 first = np.empty(capacity, dtype=np.int32)
                 second = np.empty(capacity, dtype=np.int32)
-                pin = np.empty((Q_IN, capacity))
-                pout = np.empty((O_OUT, capacity))
+                pin = np.empty((Q_IN, capacity), dtype=precision.dtype)
+                pout = np.empty((O_OUT, capacity), dtype=precision.dtype)
         for k in range(starts[c], starts[c + 1]):
             xi = nstate[k, S_X]
             yi = nstate[k, S_Y]
@@ -1302,7 +1411,7 @@ def _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc,
                     pin[Q_EYJ, count] = nstate[kk, S_EY]
                     count += 1
     if count > 0 and not search_only:
-        _pair_terms(count, params, pin[Q_DX], pin[Q_DY], pin[Q_TINY], pin[Q_DVX], pin[Q_DVY], pin[Q_RSUM],
+        _terms_for(precision)(count, params, pin[Q_DX], pin[Q_DY], pin[Q_TINY], pin[Q_DVX], pin[Q_DVY], pin[Q_RSUM],
                     pin[Q_EXI], pin[Q_EYI], pin[Q_EXJ], pin[Q_EYJ], pout[O_SX], pout[O_SY], pout[O_CX],
                     pout[O_CY], pout[O_AHEAD_I], pout[O_AHEAD_J], pout[O_GAP])
         _add_pair_terms(count, first, second, pout, acc)
@@ -1730,14 +1839,17 @@ def _apply_separation(k0, k1, params, nstate, where, push, out,
 
 
 @nb.njit(cache=True)
-def _commit(i0, i1, params, rank, pos, vel, yaw, npos, nvel, nyaw):
-    """The new state back in agent order; on a periodic crowd x wraps into the period."""
+def _commit(i0, i1, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap):
+    """The new state back in agent order; on a periodic crowd x wraps into the period. min_gap[i]: the
+    narrowest gap between i's body and any other at the start of the step (inf when inactive)."""
     period = params[P_PERIOD]
     x0 = params[P_PERIOD_X0]
     for i in range(i0, i1):
         k = rank[i]
         if k < 0:
+            min_gap[i] = np.inf
             continue
+        min_gap[i] = acc[k, A_GAP]
         x = npos[k, 0]
         if period > 0.0:
             x = x0 + (x - x0) % period
@@ -1754,11 +1866,11 @@ SEPARATION_PASSES = 4
 
 
 @nb.njit(cache=True)
-def _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc, search_only=False):
+def _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc, precision, search_only=False):
     """The pair pass on one thread, in the parallel pass's band order (even bands, then odd)."""
     for parity in range(2):
         for band in range(parity, n_bands, 2):
-            _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc, search_only)
+            _pair_band(band, params, order, starts, n_major, n_minor, span, nstate, acc, precision, search_only)
 
 
 @nb.njit(cache=True)
@@ -1800,7 +1912,7 @@ def advance_serial(n_steps, dt, params,
                    field_slot, field_vectors, field_meta,
                    face_kind, face_ref, face_point, anchor,
                    robot_interaction, robot, robot_path,
-                   walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block):
+                   walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block, min_gap, precision):
     """Run n_steps of the crowd on one thread; every array is updated in place."""
     n = pos.shape[0]
     n_groups = group_start.shape[0] - 1
@@ -1823,7 +1935,7 @@ def advance_serial(n_steps, dt, params,
         n_active = order.shape[0]
         _gather(0, n, params, rank, pos, vel, radius, mode, goals, goal_len, goal_front, goal_radius,
                 field_slot, field_vectors, field_meta, nstate, acc, rmax)
-        _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc)
+        _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc, precision)
         _integrate(0, n, dt, params, rank, pos, vel, yaw, radius, desired_speed, factors, mode, active,
                    group_slot, group_start, group_members, group_cx, group_cy, group_n,
                    goals, goal_len, goal_front, goal_radius, cyclic, face_kind, face_ref, face_point, anchor,
@@ -1832,7 +1944,7 @@ def advance_serial(n_steps, dt, params,
         if params[P_BODY] > 0.0:
             _separation_serial(params, n_active, order, starts, n_major, n_minor, span, n_bands, nstate, acc,
                                npos, spare, push, slack, walls, wall_meta, wall_start, wall_items, free_meta, wall_free)
-        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw)
+        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap)
 
 
 @nb.njit(cache=True, parallel=True)
@@ -1843,7 +1955,7 @@ def advance_parallel(n_steps, dt, params,
                      field_slot, field_vectors, field_meta,
                      face_kind, face_ref, face_point, anchor,
                      robot_interaction, robot, robot_path,
-                     walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block):
+                     walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block, min_gap, precision):
     """advance_serial with agent blocks of `block` rows and bands spread over threads.
 
     Per-agent passes write only their own rows; pair passes run the even bands together, then
@@ -1876,7 +1988,7 @@ def advance_parallel(n_steps, dt, params,
                     goal_len, goal_front, goal_radius, field_slot, field_vectors, field_meta, nstate, acc, rmax)
         for parity in range(2):
             for t in nb.prange((n_bands - parity + 1) // 2):
-                _pair_band(2 * t + parity, params, order, starts, n_major, n_minor, span, nstate, acc)
+                _pair_band(2 * t + parity, params, order, starts, n_major, n_minor, span, nstate, acc, precision)
         for b in nb.prange(n_agent_blocks):
             _integrate(b * block, min((b + 1) * block, n), dt, params, rank, pos, vel, yaw, radius,
                        desired_speed, factors, mode, active,
@@ -1911,7 +2023,7 @@ def advance_parallel(n_steps, dt, params,
                 if moved == 0:
                     break
         # A serial copy costs less than another thread barrier.
-        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw)
+        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap)
 
 
 # --------------------------------------------------------------------------- profiling
@@ -1929,7 +2041,7 @@ def profile_steps(n_steps, dt, params,
                   field_slot, field_vectors, field_meta,
                   face_kind, face_ref, face_point, anchor,
                   robot_interaction, robot, robot_path,
-                  walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block):
+                  walls, wall_owner, wall_meta, wall_start, wall_items, free_meta, wall_free, block, min_gap, precision):
     """advance_serial's steps with every pass timed in process CPU seconds: {phase: seconds}.
 
     The passes are the compiled ones, called from Python one by one (a few microseconds of call
@@ -1966,10 +2078,10 @@ def profile_steps(n_steps, dt, params,
                 field_slot, field_vectors, field_meta, nstate, acc, rmax)
         spent["gather state"] += cpu() - t
         t = cpu()
-        _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc, True)
+        _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc, precision, True)
         search = cpu() - t
         t = cpu()
-        _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc)
+        _pairs_serial(params, order, starts, n_major, n_minor, span, n_bands, nstate, acc, precision)
         full = cpu() - t
         spent["pair search (cells, distances)"] += min(search, full)
         spent["pair terms (Moussaid, contacts, density) and sums"] += max(full - search, 0.0)
@@ -1986,6 +2098,6 @@ def profile_steps(n_steps, dt, params,
                                npos, spare, push, slack, walls, wall_meta, wall_start, wall_items, free_meta, wall_free)
         spent["separation passes"] += cpu() - t
         t = cpu()
-        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw)
+        _commit(0, n, params, rank, pos, vel, yaw, npos, nvel, nyaw, acc, min_gap)
         spent["commit"] += cpu() - t
     return spent

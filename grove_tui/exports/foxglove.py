@@ -34,10 +34,10 @@ import logging
 import math
 import os
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -46,6 +46,13 @@ from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_se
     open_simulated_bundle
 from grove_tui.exports.scene import goal_radius
 from grove_tui.files import atomic_file, check_output_file
+
+if TYPE_CHECKING:  # foxglove-sdk is the `ros` extra; the export imports it when it runs
+    from foxglove.messages import (ArrowPrimitive, Color, CylinderPrimitive, Grid, LinePrimitive, Pose, SceneEntity,
+                                   SceneUpdate, Timestamp, Vector3)
+
+    from grove_tui.navigation.grid import OccupancyGrid
+    from grove_tui.scenario.events import SimEvent
 
 LAYOUT_FILE = Path(__file__).with_name("foxglove_layout.json")
 FRAME_ID = "map"
@@ -77,11 +84,9 @@ def missing_dependency() -> str | None:
     return f"the Foxglove export needs foxglove-sdk: {ROS_EXTRA}"
 
 
-def _foxglove() -> Any:
+def _foxglove() -> None:
+    """foxglove-sdk can be imported, or MissingExtraError names the extra that installs it."""
     require_extra("the Foxglove MCAP export", "foxglove-sdk", FOXGLOVE_MODULES, ROS_EXTRA)
-    import foxglove
-
-    return foxglove
 
 
 def layout_path_for(mcap: Path) -> Path:
@@ -176,46 +181,48 @@ class _Scene:
     """Builders for foxglove.messages values, with the constant parts made once."""
 
     def __init__(self) -> None:
-        m = _foxglove().messages
+        _foxglove()
+        from foxglove import messages as m
+
         self.m = m
         self.identity = m.Quaternion(x=0.0, y=0.0, z=0.0, w=1.0)
-        self._colours: dict[tuple[float, ...], Any] = {}
-        self._sizes: dict[tuple[float, ...], Any] = {}
+        self._colours: dict[tuple[float, ...], Color] = {}
+        self._sizes: dict[tuple[float, ...], Vector3] = {}
 
-    def colour(self, rgba: tuple[float, float, float, float]) -> Any:
+    def colour(self, rgba: tuple[float, float, float, float]) -> Color:
         key = tuple(round(c, 4) for c in rgba)
         if key not in self._colours:
             self._colours[key] = self.m.Color(r=key[0], g=key[1], b=key[2], a=key[3])
         return self._colours[key]
 
-    def size(self, x: float, y: float, z: float) -> Any:
+    def size(self, x: float, y: float, z: float) -> Vector3:
         key = (x, y, z)
         if key not in self._sizes:
             self._sizes[key] = self.m.Vector3(x=x, y=y, z=z)
         return self._sizes[key]
 
-    def pose(self, x: float, y: float, z: float = 0.0, yaw: float = 0.0) -> Any:
+    def pose(self, x: float, y: float, z: float = 0.0, yaw: float = 0.0) -> Pose:
         m = self.m
         orientation = self.identity if yaw == 0.0 else m.Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2),
                                                                     w=math.cos(yaw / 2))
         return m.Pose(position=m.Vector3(x=x, y=y, z=z), orientation=orientation)
 
-    def stamp(self, ns: int) -> Any:
+    def stamp(self, ns: int) -> Timestamp:
         return self.m.Timestamp(ns // 1_000_000_000, ns % 1_000_000_000)
 
-    def line(self, kind: str, points: Any, rgba: tuple[float, float, float, float], thickness: float,
-             z: float = 0.02) -> Any:
+    def line(self, kind: str, points: Sequence[Sequence[float]] | np.ndarray, rgba: tuple[float, float, float, float],
+             thickness: float, z: float = 0.02) -> LinePrimitive:
         m = self.m
         return m.LinePrimitive(type=getattr(m.LinePrimitiveLineType, kind), pose=self.pose(0.0, 0.0),
                                thickness=thickness, scale_invariant=False,
                                points=[m.Point3(x=float(p[0]), y=float(p[1]), z=z) for p in points],
                                color=self.colour(rgba))
 
-    def entity(self, ns: int, entity_id: str, **primitives: Any) -> Any:
+    def entity(self, ns: int, entity_id: str, **primitives: Any) -> SceneEntity:  # cubes=[CubePrimitive], lines=...: each its own type
         return self.m.SceneEntity(timestamp=self.stamp(ns), frame_id=FRAME_ID, id=entity_id, **primitives)
 
-    def bodies(self, x: list[float], y: list[float], yaw: np.ndarray, looks: list[tuple[Any, Any, float]],
-               height: float) -> list[tuple[Any, Any]]:
+    def bodies(self, x: list[float], y: list[float], yaw: np.ndarray, looks: list[tuple[Color, Vector3, float]],
+               height: float) -> list[tuple[CylinderPrimitive, ArrowPrimitive]]:
         """A standing cylinder and an arrow on the ground showing where it faces, per body.
 
         `looks` holds each body's (colour, size, radius), made once; this runs for every person in every
@@ -237,11 +244,11 @@ class _Scene:
             out.append((cylinder, arrow))
         return out
 
-    def look(self, rgba: tuple[float, float, float, float], radius: float, height: float) -> tuple[Any, Any, float]:
+    def look(self, rgba: tuple[float, float, float, float], radius: float, height: float) -> tuple[Color, Vector3, float]:
         return self.colour(rgba), self.size(2 * radius, 2 * radius, height), radius
 
 
-def _world_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+def _world_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> SceneUpdate:
     """The Gazebo world's boxes (walls, furniture, obstacles: the same sizes and heights as the SDF),
     zones with their names, doors and exits."""
     m = scene.m
@@ -272,7 +279,7 @@ def _world_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
     return m.SceneUpdate(entities=entities)
 
 
-def _paths_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+def _paths_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> SceneUpdate:
     m = scene.m
     entities = []
     for agent in bundle.scenario.agents:
@@ -298,7 +305,7 @@ def _paths_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
     return m.SceneUpdate(entities=entities)
 
 
-def _fields_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
+def _fields_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> SceneUpdate:
     entities = []
     for field_id, field in sorted(bundle.fields.items()):
         segments = arrow_segments(field_arrows(field)).reshape(-1, 2)
@@ -307,7 +314,7 @@ def _fields_update(bundle: SimulatedBundle, scene: _Scene, ns: int) -> Any:
     return scene.m.SceneUpdate(entities=entities)
 
 
-def _grid(grid: Any, scene: _Scene, ns: int) -> Any:
+def _grid(grid: OccupancyGrid, scene: _Scene, ns: int) -> Grid:
     """foxglove.Grid of an occupancy grid, one uint8 per cell (1 occupied), row 0 the smallest y."""
     m = scene.m
     return m.Grid(timestamp=scene.stamp(ns), frame_id=FRAME_ID, pose=scene.pose(*grid.origin),
@@ -332,10 +339,10 @@ def export_foxglove(bundle_dir: str | Path, out_path: str | Path, *, overwrite: 
     # Both checked before anything is written: a refused layout must not cost the user's .mcap either.
     out = check_output_file(out, **mcap_guard)  # type: ignore[arg-type]
     layout = check_output_file(layout, **layout_guard)  # type: ignore[arg-type]
-    foxglove = _foxglove()
+    _foxglove()
     bundle = open_simulated_bundle(bundle_dir)
     with atomic_file(out, **mcap_guard) as tmp_mcap, atomic_file(layout, **layout_guard) as tmp_layout:  # type: ignore[arg-type]
-        frames, counts = _write_mcap(foxglove, bundle, tmp_mcap, out)
+        frames, counts = _write_mcap(bundle, tmp_mcap, out)
         tmp_layout.write_text(layout_for(set(counts)), encoding="utf-8")
     return FoxgloveExport(out, layout, frames, counts)
 
@@ -389,18 +396,18 @@ def _write_failure(out: Path, watch: _WriteFailures, raised: str = "") -> Output
     return OutputError(f"{out}: cannot write it: {reason}")
 
 
-def _write_mcap(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path) -> tuple[int, dict[str, int]]:
+def _write_mcap(bundle: SimulatedBundle, path: Path, out: Path) -> tuple[int, dict[str, int]]:
     with _watch_writes() as watch:
         try:
-            return _write_frames(foxglove, bundle, path, out, watch)
+            return _write_frames(bundle, path, out, watch)
         except RuntimeError as exc:  # foxglove-sdk's FoxgloveError, raised when closing a failed file
             if watch.first is None and "FoxgloveError" not in str(exc):
                 raise
             raise _write_failure(out, watch, str(exc)) from None
 
 
-def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
-                  watch: _WriteFailures) -> tuple[int, dict[str, int]]:
+def _write_frames(bundle: SimulatedBundle, path: Path, out: Path, watch: _WriteFailures) -> tuple[int, dict[str, int]]:
+    import foxglove
     from foxglove import channels as ch
 
     scene = _Scene()
@@ -417,7 +424,8 @@ def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
     writer = foxglove.open_mcap(path, allow_overwrite=True, context=context)
     writer.write_metadata(METADATA_NAME, {"writer": "grove export foxglove", "bundle": bundle.path.name})
     try:
-        def channel(kind: Any, topic: str) -> Any:
+        # Each foxglove channel class logs its own message type (SceneUpdate, Grid, Log...), hence Any.
+        def channel(kind: Callable[..., Any], topic: str) -> Callable[[Any, int], None]:
             made = kind(topic, context=context)
             counts[topic] = 0
 
@@ -432,7 +440,7 @@ def _write_frames(foxglove: Any, bundle: SimulatedBundle, path: Path, out: Path,
             tf_log = channel(ch.FrameTransformsChannel, "/tf")
         event_log = channel(ch.LogChannel, "/events")
 
-        def log_event(event: Any) -> None:
+        def log_event(event: SimEvent) -> None:
             ns = max(_ns(event.t), start)
             event_log(m.Log(timestamp=scene.stamp(ns), level=m.LogLevel.Info, name=event.kind,
                             message=f"agent {event.agent_id}: {event.kind} {event.detail}".strip()), ns)

@@ -58,7 +58,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import yaml
 
-from grove_tui.files import atomic_directory, check_output_dir, safe_file_name
+from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap, safe_file_name
 from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, prefix_node_ids,
                                        restrict_to_hunav_ports, wrap_for_hunav)
 from grove_tui.bt.manifest import NODES, treenodes_model_xml
@@ -71,12 +71,20 @@ from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.exports.scene import Scene, agent_radius, behavior_block, goal_radius, scene_of, skin
 from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
+from grove_tui.world.model import Door, World
 
 if TYPE_CHECKING:
+    import shapely
+
     from grove_tui.navigation.grid import OccupancyGrid
     from grove_tui.navigation.theta_star import ThetaStarPlanner
+    from grove_tui.navigation.velocity_field import VelocityField
 
 Point = tuple[float, float]
+# A conversation: its centre rounded to the centimetre and its members' ids, as every member's tree names it.
+ConversationKey = tuple[float, float, tuple[int, ...]]
+# A robot reaction as the simulation wraps it: (reaction node, trigger distance m, duration s, only once).
+Reaction = tuple[str, float, float, bool]
 
 GROVE_ONLY = frozenset(name for name, spec in NODES.items() if spec.origin == "grove")
 _HUNAV_GOTO_PORTS = ("agent_id", "time_step", "goal_id", "tolerance")
@@ -170,8 +178,14 @@ class _AgentContext:
     planner: ThetaStarPlanner | None
     seed: int
     muster: dict[tuple[int, str], Point] = field(default_factory=dict)
-    world: object | None = None
-    conversations: dict[tuple, dict[int, Point]] = field(default_factory=dict)
+    world: World | None = None
+    conversations: dict[ConversationKey, dict[int, Point]] = field(default_factory=dict)
+
+
+def _attr(el: TreeElement, name: str, default: str) -> str:
+    """The element's `name` attribute, or `default` when the tree does not set it."""
+    value = el.get(name)
+    return default if value is None else value
 
 
 def _attr_float(el: TreeElement, name: str, where: str) -> float:
@@ -268,9 +282,9 @@ def _lower_queue(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
     ahead of it (the agent one rank before) has moved on, then is served and steps aside, as GROVE's
     Queue does. Waiting on the person ahead instead of on a timer keeps two people off one slot."""
     service = (_attr_float(el, "x", where), _attr_float(el, "y", where))
-    spacing = float(el.get("spacing", "0.6"))
-    service_time = float(el.get("service_time", "10"))
-    name = el.get("service_point", "service point")
+    spacing = float(_attr(el, "spacing", "0.6"))
+    service_time = float(_attr(el, "service_time", "10"))
+    name = _attr(el, "service_point", "service point")
     rank = ctx.queue_rank.get((ctx.agent.id, name), 0)
     heading = _free_heading(service, ctx, reach=spacing * (rank + 2))
     slots = [(service[0] + math.cos(heading) * spacing * (k + 1), service[1] + math.sin(heading) * spacing * (k + 1))
@@ -290,7 +304,7 @@ def _lower_queue(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
     return _sequence(steps, f"Queue_{name}")
 
 
-def _streamline(vf, start: Point, exit_point: Point, ctx: _AgentContext) -> list[Point]:
+def _streamline(vf: VelocityField, start: Point, exit_point: Point, ctx: _AgentContext) -> list[Point]:
     from grove_tui.navigation.velocity_field import sample_field
 
     ox, oy = float(vf.origin[0]), float(vf.origin[1])
@@ -342,7 +356,7 @@ def _lower_field(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElement
         raise ExportError(f"{where}: FollowVelocityField on line {el.line} names field {field_id!r}, "
                           f"which the scenario does not list (fields: {sorted(ctx.scenario.fields)})")
     points = _streamline(load_field(ctx.bundle, field_id or "", rel), ctx.agent.start, exit_point, ctx)
-    points += _beyond_exit(el.get("exit", ""), ctx)
+    points += _beyond_exit(_attr(el, "exit", ""), ctx)
     return _sequence(_route(points, ctx), f"FollowVelocityField_{el.get('exit', 'exit')}")
 
 
@@ -358,12 +372,14 @@ def _beyond_exit(door_name: str, ctx: _AgentContext) -> list[Point]:
     if world is None or point is None:
         return []
     door = world.find(door_name)
+    if not isinstance(door, Door):  # the muster lists doors only: find() also knows zones and entities
+        return []
     return [door.outward_point(1.0), point]
 
 
-def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement:
-    zone_name = el.get("zone", "")
-    duration = float(el.get("duration", "30"))
+def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world: World | None) -> TreeElement:
+    zone_name = _attr(el, "zone", "")
+    duration = float(_attr(el, "duration", "30"))
     if world is None:
         raise ExportError(f"{where}: Wander on line {el.line} needs the world to sample points")
     zone = world.zone(zone_name) if zone_name in {z.name for z in world.zones} else world.zone_at(*ctx.agent.start)
@@ -387,7 +403,7 @@ def _lower_wander(el: TreeElement, ctx: _AgentContext, where: str, world) -> Tre
     return _sequence(_route(route, ctx), f"Wander_{zone.name}")
 
 
-def _shapely_point(p: Point):
+def _shapely_point(p: Point) -> shapely.Point:
     import shapely
 
     return shapely.Point(p)
@@ -400,15 +416,15 @@ def _planned(a: Point, b: Point, ctx: _AgentContext) -> list[Point]:
     return [(float(q[0]), float(q[1])) for q in path[1:]]
 
 
-def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world) -> TreeElement | None:
+def _lower_element(el: TreeElement, ctx: _AgentContext, where: str, world: World | None) -> TreeElement | None:
     """Replacement for a GROVE-only element, or None to keep it."""
     tag = el.id
     if tag == "GoTo" and el.get("x") is not None:  # GROVE's GoTo; HuNavSim's own names only a goal_id
         target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
-        waypoints = list(parse_point_list(el.get("waypoints", "")))
+        waypoints = list(parse_point_list(_attr(el, "waypoints", "")))
         return _sequence(_route(waypoints + [target], ctx), f"GoTo_{el.get('target', 'target')}")
     if tag == "Wait":
-        return _wait(float(el.get("duration", "5")))
+        return _wait(float(_attr(el, "duration", "5")))
     if tag == "Queue":
         return _lower_queue(el, ctx, where)
     if tag == "FollowVelocityField":
@@ -430,28 +446,30 @@ def _members(el: TreeElement, agent_id: int) -> tuple[int, ...]:
 
 def _approach(el: TreeElement, start: Point) -> Point:
     """Where an agent comes from when it reaches a conversation: its last waypoint, else its start."""
-    waypoints = list(parse_point_list(el.get("waypoints", "")))
+    waypoints = list(parse_point_list(_attr(el, "waypoints", "")))
     return waypoints[-1] if waypoints else start
 
 
-def _conversation_spots(scenario: Scenario, trees: dict[int, TreeDocument], grid) -> dict[tuple, dict[int, Point]]:
+def _conversation_spots(scenario: Scenario, trees: dict[int, TreeDocument],
+                        grid: OccupancyGrid | None) -> dict[ConversationKey, dict[int, Point]]:
     """Each conversation's spots, as GROVE's ConversationRegistry gives them (bt/coordination.py):
     evenly around a circle of radius 0.5 + 0.2 per extra member, starting toward the first member,
     each member taking the closest free spot, closest pair first. Computed once for all members, from
     where each arrives, so every member's tree names the same circle."""
     from grove_tui.bt.coordination import conversation_radius
 
-    arrivals: dict[tuple, dict[int, Point]] = {}
-    centres: dict[tuple, Point] = {}
+    arrivals: dict[ConversationKey, dict[int, Point]] = {}
+    centres: dict[ConversationKey, Point] = {}
     for agent in sorted(scenario.agents, key=lambda a: a.id):
         for el in trees[agent.id].nodes():
-            if el.id != "Converse" or el.get("x") is None or el.get("y") is None:
+            x_attr, y_attr = el.get("x"), el.get("y")
+            if el.id != "Converse" or x_attr is None or y_attr is None:
                 continue
-            centre = (float(el.get("x")), float(el.get("y")))
+            centre = (float(x_attr), float(y_attr))
             key = (round(centre[0], 2), round(centre[1], 2), _members(el, agent.id))
             centres[key] = centre
             arrivals.setdefault(key, {})[agent.id] = _approach(el, agent.start)
-    plans: dict[tuple, dict[int, Point]] = {}
+    plans: dict[ConversationKey, dict[int, Point]] = {}
     for key, arriving in arrivals.items():
         members = key[2]
         cx, cy = centres[key]
@@ -487,9 +505,9 @@ def _lower_converse(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElem
     spot and the conversation never starts.
     """
     target = (_attr_float(el, "x", where), _attr_float(el, "y", where))
-    waypoints = list(parse_point_list(el.get("waypoints", "")))
+    waypoints = list(parse_point_list(_attr(el, "waypoints", "")))
     members = _members(el, ctx.agent.id)
-    duration = float(el.get("duration", "20"))
+    duration = float(_attr(el, "duration", "20"))
     key = (round(target[0], 2), round(target[1], 2), members)
     spots = ctx.conversations.get(key, {})
     mine = spots.get(ctx.agent.id, target)
@@ -504,7 +522,7 @@ def _lower_converse(el: TreeElement, ctx: _AgentContext, where: str) -> TreeElem
     return _sequence(steps, f"Converse_{el.get('target', 'spot')}")
 
 
-def lower_tree(document: TreeDocument, ctx: _AgentContext, where: str, world=None) -> TreeDocument:
+def lower_tree(document: TreeDocument, ctx: _AgentContext, where: str, world: World | None = None) -> TreeDocument:
     """Rewrite one agent's tree, in place, so it uses only HuNavSim-registered and BT.CPP built-in nodes."""
     for tree in document.trees.values():
         # Depth-first over a snapshot, so goal ids are allocated in tick order and replacements
@@ -526,7 +544,7 @@ def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument], tag: str = 
         for el in trees[agent.id].nodes():
             if el.id != tag:
                 continue
-            name = el.get(key, "service point")
+            name = _attr(el, key, "service point")
             if agent.id not in members.setdefault(name, []):
                 members[name].append(agent.id)
     return {(a, name): rank for name, ids in members.items() for rank, a in enumerate(ids)}
@@ -535,8 +553,9 @@ def _queue_ranks(scenario: Scenario, trees: dict[int, TreeDocument], tag: str = 
 def _renumber_goal_ids(document: TreeDocument, goals: GoalTable) -> TreeDocument:
     """Point every node's `goal_id` at this export's global_goals entry for its (x, y), in place."""
     for el in document.nodes():
-        if el.get("goal_id") is not None and el.get("x") and el.get("y"):
-            el.set("goal_id", str(goals.id_of((float(el.get("x")), float(el.get("y"))))))
+        x, y = el.get("x"), el.get("y")
+        if el.get("goal_id") is not None and x and y:
+            el.set("goal_id", str(goals.id_of((float(x), float(y)))))
     return document
 
 
@@ -579,6 +598,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
                           + " (the names its agent manager compares the loader's `simulator` parameter with)",
                           hint="Pass --simulator \"Gazebo Classic\", \"Gazebo Fortress\", \"Isaac Sim\" or \"Webots\".")
     out = check_output_dir(out_dir, owned=is_hunav_export, what="GROVE HuNavSim export", overwrite=overwrite)
+    refuse_overlap(out, bundle_dir, "the bundle being exported")
     if base_name is not None:
         safe_file_name(base_name, "--base-name")
     scenario = load_scenario(bundle)
@@ -649,7 +669,7 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             if not goal_ids:
                 # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
                 goal_ids = _tree_goal_ids(tree) or [goals.id_of(agent.start)]
-        if as_given and agent.hunav is not None:
+        if as_given and source is not None and agent.hunav is not None:
             agent_entries[name] = _entry_as_given(agent, layout, goal_ids, source.behavior_type == "number")
         else:
             agent_entries[name] = _entry(agent, goal_ids or [goals.id_of(agent.start)])
@@ -726,8 +746,8 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
 
 def _hunav_tree(agent: AgentSpec, document: TreeDocument, scenario: Scenario, bundle: Path, goals: GoalTable,
                 ranks: dict[tuple[int, str], int], grid: OccupancyGrid | None, planner: ThetaStarPlanner | None,
-                scene: Scene, world: object, conversations: dict[tuple, dict[int, Point]], lower: bool, where: str,
-                reactions: dict, looping: frozenset[str]) -> tuple[str, TreeDocument]:
+                scene: Scene, world: World | None, conversations: dict[ConversationKey, dict[int, Point]], lower: bool,
+                where: str, reactions: dict[str, Reaction], looping: frozenset[str]) -> tuple[str, TreeDocument]:
     """An agent's GROVE tree as HuNavSim 2.0 loads it: GROVE-only nodes lowered (or kept as Grove<Node>),
     run once then hold, the robot reaction inside; the XML and the tree it was written from."""
     ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
@@ -744,9 +764,9 @@ def _hunav_tree(agent: AgentSpec, document: TreeDocument, scenario: Scenario, bu
         prefix_node_ids(tree, GROVE_ONLY, KEPT_NODE_PREFIX)
     xml = write_tree(label_clocks(restrict_to_hunav_ports(tree)))
     if lower:
-        problems = hunav_loading_problems(xml)
-        if problems:
-            raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(problems),
+        refusals = hunav_loading_problems(xml)
+        if refusals:
+            raise ExportError(f"{where}: HuNavSim 2.0 would refuse the exported tree: " + "; ".join(refusals),
                               hint="Export with --keep-grove-nodes to see the tree as GROVE wrote it.")
     return xml, tree
 

@@ -56,6 +56,10 @@ from grove_tui.limits import (MAX_COORDINATE, MAX_GROUP_COUNT, MAX_SCENARIO_AGEN
 from grove_tui.scenario.bundle import HUNAV_FOLDER, WORLD_FOLDER
 from grove_tui.scenario.model import (BEHAVIOR_TYPES, MAX_AGENTS, MAX_VEL_RANGE, RADIUS_RANGE, AgentSpec, HunavAgent,
                                       HunavBehavior, HunavSource, RobotSpec, Scenario)
+from grove_tui.world.model import World
+
+# A mapping of the agents YAML as parsed: its values are the file's own until each is checked.
+YamlMapping = dict[str, Any]
 
 OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a synthesized world
 # A HuNavSim scenario of MAX_SCENARIO_AGENTS agents is well under a megabyte of YAML.
@@ -119,7 +123,7 @@ def _grove_names(xml: bytes, source: str) -> str:
     return write_tree(document)
 
 
-def _grove_line(text: str) -> dict[str, Any]:
+def _grove_line(text: str) -> YamlMapping:
     """GROVE's own line in an agents YAML it exported (prompt, preset, seed, robot, labels), or {}."""
     for line in text.splitlines():
         if line.startswith(GROVE_LINE_PREFIX):
@@ -141,7 +145,7 @@ def _one_line(problems: list[str], source: Path) -> str:
     return prefix + shown + (f" (and {more:,} more problems)" if more > 0 else "")
 
 
-def _short(value: Any) -> str:
+def _short(value: object) -> str:
     try:
         text = repr(value)
     except ValueError:  # an int too long to print
@@ -149,7 +153,7 @@ def _short(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def _read_document(source: Path) -> tuple[str, dict[str, Any]]:
+def _read_document(source: Path) -> tuple[str, YamlMapping]:
     """The agents YAML's text and its `ros__parameters`, read as every user file is and checked before any use."""
     try:
         text = read_text_bounded(source, MAX_AGENTS_YAML_BYTES, "agents YAML")
@@ -170,7 +174,7 @@ def _read_document(source: Path) -> tuple[str, dict[str, Any]]:
     return text, params
 
 
-def _plain_name(params: dict[str, Any], key: str, default: str, source: Path) -> str:
+def _plain_name(params: YamlMapping, key: str, default: str, source: Path) -> str:
     value = params.get(key, default)
     if not isinstance(value, str) or not PLAIN_NAME.match(value):
         raise HunavImportError(f"{source}: `{key}` is {_short(value)}; it names files, so it must be 1 to 100 "
@@ -178,7 +182,7 @@ def _plain_name(params: dict[str, Any], key: str, default: str, source: Path) ->
     return value
 
 
-def _number(value: Any, where: str, low: float, high: float) -> float:
+def _number(value: object, where: str, low: float, high: float) -> float:
     """A finite number in [low, high], as a bundle's own checks take it (scenario/model.py)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise HunavImportError(f"{where} is {_short(value)}; expected a number")
@@ -190,14 +194,14 @@ def _number(value: Any, where: str, low: float, high: float) -> float:
     return number
 
 
-def _point(mapping: Any, where: str) -> tuple[float, float]:
+def _point(mapping: object, where: str) -> tuple[float, float]:
     if not isinstance(mapping, dict):
         raise HunavImportError(f"{where} is {_short(mapping)}; expected a mapping with x and y (metres)")
     return (_number(mapping.get("x", 0.0), f"{where}.x", -MAX_COORDINATE, MAX_COORDINATE),
             _number(mapping.get("y", 0.0), f"{where}.y", -MAX_COORDINATE, MAX_COORDINATE))
 
 
-def _optional_number(mapping: dict[str, Any], key: str, where: str, low: float, high: float) -> float | None:
+def _optional_number(mapping: YamlMapping, key: str, where: str, low: float, high: float) -> float | None:
     return None if mapping.get(key) is None else _number(mapping[key], f"{where}.{key}", low, high)
 
 
@@ -211,7 +215,7 @@ def _check_groups(groups: list[int], source: Path) -> None:
                                f"{MAX_GROUP_COUNT} (as generation allows)")
 
 
-def _keys(mapping: dict[str, Any], prefix: str = "") -> tuple[str, ...]:
+def _keys(mapping: YamlMapping, prefix: str = "") -> tuple[str, ...]:
     """The keys of an agent's block in file order, nested ones dotted ("init_pose.x", "g0.h")."""
     out: list[str] = []
     for key, value in mapping.items():
@@ -223,7 +227,7 @@ def _keys(mapping: dict[str, Any], prefix: str = "") -> tuple[str, ...]:
     return tuple(out)
 
 
-def _behavior(entry: dict[str, Any], layout: str, where: str) -> tuple[str, HunavBehavior | None]:
+def _behavior(entry: YamlMapping, layout: str, where: str) -> tuple[str, HunavBehavior | None]:
     """(GROVE behavior name, the block as given, or None for 1.0's flat `behavior: <number>`)."""
     given = entry.get("behavior")
     if given is not None and not isinstance(given, dict) and layout == "2.0":
@@ -243,7 +247,7 @@ def _behavior(entry: dict[str, Any], layout: str, where: str) -> tuple[str, Huna
                                f"{', '.join(BEHAVIOR_TYPES)} (1.0 numbers them: {numbers})")
     if block is None:
         return name, None
-    values: dict[str, Any] = {}
+    values: dict[str, Any] = {}  # HunavBehavior's keyword arguments, each checked below
     for key in HunavBehavior.__dataclass_fields__:
         value = block.get(key)
         if value is not None and key not in ("configuration", "once"):
@@ -252,14 +256,14 @@ def _behavior(entry: dict[str, Any], layout: str, where: str) -> tuple[str, Huna
     return name, HunavBehavior(**values)
 
 
-def _type_is_number(entry: dict[str, Any]) -> bool:
+def _type_is_number(entry: YamlMapping) -> bool:
     """Whether the agent's behavior type is written as a number (1.0) rather than a name (2.0)."""
     given = entry.get("behavior")
     kind = given.get("type") if isinstance(given, dict) else given
     return isinstance(kind, int) and not isinstance(kind, bool)
 
 
-def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int, tuple[float, float]],
+def _agent(name: str, entry: YamlMapping, layout: str, global_goals: dict[int, tuple[float, float]],
            source: Path) -> tuple[AgentSpec, HunavAgent]:
     """The agent as GROVE runs it and what else its file says (tree fields set by the caller), each value
     checked against what a bundle accepts (so `simulate` reads the result)."""
@@ -303,8 +307,8 @@ def _agent(name: str, entry: dict[str, Any], layout: str, global_goals: dict[int
     return spec, extra
 
 
-def _world(world: str | None, map_name: str, grove: dict[str, Any], points: list[tuple[float, float]],
-           source: Path) -> tuple[str, str | None, Any]:
+def _world(world: str | None, map_name: str, grove: YamlMapping, points: list[tuple[float, float]],
+           source: Path) -> tuple[str, str | None, World]:
     """(the scenario's world reference, the world file text to write into the bundle or None, World)."""
     from grove_tui.world import list_worlds, load_world, parse_world, read_world_file
 
@@ -326,7 +330,7 @@ def _world(world: str | None, map_name: str, grove: dict[str, Any], points: list
     return reference, text, parsed
 
 
-def _robot(data: Any, source: Path) -> RobotSpec | None:
+def _robot(data: object, source: Path) -> RobotSpec | None:
     if data is None:
         return None
     try:

@@ -47,7 +47,7 @@ GOAL_1 = {"x": "double", "y": "double", "h": "double"}
 REQUIRED_AGENT = frozenset({"goals"})
 
 
-def hunav_layout(params: Any) -> str:
+def hunav_layout(params: object) -> str:
     """"2.0" for a file with global_goals or integer goal ids, else "1.0" (goals named per agent)."""
     if not isinstance(params, dict):
         return "2.0"
@@ -59,10 +59,14 @@ def hunav_layout(params: Any) -> str:
         if isinstance(goals, list) and goals:
             return "1.0" if all(isinstance(g, str) for g in goals) else "2.0"
     return "2.0"
+
+
+# An agents YAML as parsed, after check_loader_parameters has passed it: its values are still the file's own.
+LoaderDocument = dict[str, Any]
 SIMULATORS = ("Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots")
 
 
-def _type_ok(value: Any, kind: str) -> bool:
+def _type_ok(value: object, kind: str) -> bool:
     if kind == "string":
         return isinstance(value, str)
     if kind == "bool":
@@ -79,8 +83,8 @@ def _type_ok(value: Any, kind: str) -> bool:
     raise ValueError(kind)
 
 
-def _lookup(mapping: dict, dotted: str) -> tuple[bool, Any]:
-    node: Any = mapping
+def _lookup(mapping: dict, dotted: str) -> tuple[bool, object]:
+    node: object = mapping
     for part in dotted.split("."):
         if not isinstance(node, dict) or part not in node:
             return False, None
@@ -94,7 +98,20 @@ def _describe(kind: str) -> str:
             "int_array": "a non-empty list of integers (an empty list has no type)"}[kind]
 
 
-def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[str]:
+def _listed(value: object) -> list[object]:
+    """A list as it is, anything else as no entries (its type is reported by the declared-type check)."""
+    return value if isinstance(value, list) else []
+
+
+def _short(value: object) -> str:
+    try:
+        text = repr(value)
+    except ValueError:  # an int too long to print
+        return f"<{type(value).__name__}>"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def check_loader_parameters(document: object, source: str = "agents yaml") -> list[str]:
     """Every problem HuNavSim 2.0's loader would hit with this parameters file (empty: it loads)."""
     problems: list[str] = []
     if not isinstance(document, dict) or not isinstance(document.get("hunav_loader"), dict):
@@ -115,9 +132,10 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
     if not isinstance(goals, dict):
         problems.append(f"{source}: `global_goals` must map ids 1, 2, ... to {{x, y}}")
         goals = {}
-    def order(k: Any) -> tuple[bool, int, str]:
-        numeric = isinstance(k, int) and not isinstance(k, bool)
-        return (not numeric, k if numeric else 0, str(k))
+    def order(k: object) -> tuple[bool, int, str]:
+        if isinstance(k, int) and not isinstance(k, bool):
+            return (False, k, str(k))
+        return (True, 0, str(k))
 
     for expected, key in enumerate(sorted(goals, key=order), start=1):
         if not isinstance(key, int) or isinstance(key, bool):
@@ -137,6 +155,9 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
     agents = params.get("agents") or []
     seen_ids: dict[int, str] = {}
     for name in agents if isinstance(agents, list) else []:
+        if not isinstance(name, str):  # `agents` names blocks; a number or a mapping names none
+            problems.append(f"{source}: `agents` lists {_short(name)}, which is not an agent's name")
+            continue
         entry = params.get(name)
         if not isinstance(entry, dict):
             problems.append(f"{source}: agent {name!r} is listed in `agents` but has no `{name}:` block")
@@ -145,7 +166,7 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
         if layout == "1.0":
             behavior = entry.get("behavior")
             declared = AGENT_1 | (BEHAVIOR_BLOCK_1 if isinstance(behavior, dict) else {"behavior": "int"})
-            for goal in entry.get("goals") or []:
+            for goal in _listed(entry.get("goals")):
                 block = entry.get(goal) if isinstance(goal, str) else None
                 if not isinstance(block, dict):
                     problems.append(f"{source}: {name}.goals names goal {goal!r}, which has no `{goal}:` block "
@@ -164,7 +185,7 @@ def check_loader_parameters(document: Any, source: str = "agents yaml") -> list[
                 continue
             if not _type_ok(value, kind):
                 problems.append(f"{source}: {name}.{key} is {value!r}; the loader declares it as {_describe(kind)}")
-        for goal in entry.get("goals") or []:
+        for goal in _listed(entry.get("goals")):
             if isinstance(goal, int) and goal not in goal_ids:
                 problems.append(f"{source}: {name}.goals names goal {goal}, which global_goals does not define "
                                 "(the loader would put it at 0, 0)")
@@ -217,7 +238,7 @@ BEHAVIOR_DEFAULTS: dict[str, object] = {"behavior.type": None, "behavior.configu
                                         "behavior.social_force_factor": 5.0, "behavior.other_force_factor": 20.0}
 
 
-def loader_parameters(document: Any) -> dict[str, object]:
+def loader_parameters(document: LoaderDocument) -> dict[str, object]:
     """Every parameter HuNavSim's loader declares for this file, by its dotted name, with the value it
     reads: the file's, else the loader's default. Two files the loader reads alike give equal dicts;
     keys it never declares (a typo such as `H:` for `h:`) are not in it (see `ignored_keys`)."""
@@ -257,7 +278,7 @@ def loader_parameters(document: Any) -> dict[str, object]:
     return out
 
 
-def ignored_keys(document: Any) -> list[str]:
+def ignored_keys(document: LoaderDocument) -> list[str]:
     """Keys of the file HuNavSim's loader never declares, so never reads (dotted names)."""
     read = loader_parameters(document)
 

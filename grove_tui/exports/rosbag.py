@@ -43,7 +43,7 @@ import struct
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, Final
 
 import numpy as np
 
@@ -51,8 +51,18 @@ from grove_tui.errors import RosbagExportError, missing_extra, require_extra
 from grove_tui.exports.frames import ROS_EXTRA, Frame, SimulatedBundle, arrow_segments, field_arrows, group_rgba, \
     open_simulated_bundle
 from grove_tui.exports.scene import agent_radius, behavior_values, goal_radius, skin
-from grove_tui.files import atomic_directory, check_output_dir
+from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap
 from grove_tui.scenario.model import AgentSpec
+
+if TYPE_CHECKING:  # rosbags is the `ros` extra; the export imports it when it runs
+    from rosbags.interfaces import Connection, Qos
+    from rosbags.typesys.store import Typestore
+
+    from grove_tui.navigation.grid import OccupancyGrid
+    from grove_tui.scenario.events import SimEvent
+
+# A ROS message instance: rosbags builds its classes at run time from message definitions, so no static type names it.
+Message = Any
 
 MSG_ROOT = Path(__file__).with_name("msg") / "hunav_msgs"
 
@@ -96,7 +106,7 @@ HUNAV_MSGS = {
 DEFAULT_HUNAV_MSGS = "2.0"
 EXPORT_MARKER = ".grove-rosbag-export"
 STORAGES = ("mcap", "sqlite3")
-BAG_VERSION = 8  # rosbag2 metadata version 8: QoS as Humble writes it; Jazzy reads it too
+BAG_VERSION: Final = 8  # rosbag2 metadata version 8: QoS as Humble writes it; Jazzy reads it too
 FRAME_ID = "map"
 ROBOT_FRAME = "base_link"
 PLANNING_GRID_TOPIC = "/grove/planning_grid"
@@ -138,13 +148,13 @@ def hunav_msgs(version: str) -> HunavMsgs:
                                 hint="Use --hunav-msgs 2.0 (HuNavSim 2.0, the default) or 1.0.") from None
 
 
-def ros_typestore(version: str = DEFAULT_HUNAV_MSGS) -> Any:
+def ros_typestore(version: str = DEFAULT_HUNAV_MSGS) -> Typestore:
     """ROS 2 Humble's message types plus HuNavSim's hunav_msgs of `version`, registered from the shipped .msg text."""
     _rosbags()
     from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
     store = get_typestore(Stores.ROS2_HUMBLE)
-    types: dict[str, Any] = {}
+    types: dict[str, Any] = {}  # rosbags' Typesdict: message name -> parsed field definitions
     for msgtype, text in hunav_msgs(version).types().items():
         types.update(get_types_from_msg(text, msgtype))
     store.register(types)
@@ -161,7 +171,7 @@ def _sections(msgdef: str) -> list[tuple[str, str]]:
     return out
 
 
-def hunav_msgdef(store: Any, msgtype: str, version: str = DEFAULT_HUNAV_MSGS) -> str:
+def hunav_msgdef(store: Typestore, msgtype: str, version: str = DEFAULT_HUNAV_MSGS) -> str:
     """The definition a bag records for a hunav_msgs type: HuNavSim's .msg text verbatim for hunav_msgs
     parts (comments and constants included, as rosbag2 stores it), the generated text for the rest."""
     generated, _ = store.generate_msgdef(msgtype, ros_version=2)
@@ -248,7 +258,7 @@ class _Static:
     skin: int = 0
     goal_radius: float = 0.0
     cyclic_goals: bool = False
-    behavior: dict[str, Any] = field(default_factory=dict)  # hunav_msgs/AgentBehavior's fields (scene.behavior_values)
+    behavior: dict[str, float | int | bool] = field(default_factory=dict)  # hunav_msgs/AgentBehavior's fields (scene.behavior_values)
 
 
 _SLOTS_U32 = frozenset({"sec", "nanosec"})  # stamps; every other slot is a float
@@ -267,7 +277,7 @@ class _Template:
                 raise AssertionError(f"CDR slot {name} is not aligned")  # a bug in the layout code, never input
             self.slots[name] = offsets // size
 
-    def fill(self, values: dict[str, np.ndarray | float | int]) -> bytearray:
+    def fill(self, values: dict[str, np.ndarray | float | int]) -> memoryview:
         buf = bytearray(self.data)
         words = (len(buf) - 4) // 4
         f64 = np.frombuffer(buf, dtype="<f8", count=words // 2, offset=4)
@@ -281,7 +291,7 @@ class _Template:
                 f32[index] = value
             else:
                 f64[index] = value
-        return buf
+        return memoryview(buf)
 
 
 def _agent_fields(cdr: _Cdr, body: _Static, slots: dict[str, list[int]], version: str) -> None:
@@ -497,6 +507,7 @@ def export_rosbag(bundle_dir: str | Path, out_dir: str | Path, *, storage: str =
     hunav_msgs(hunav_msgs_version)
     _rosbags()
     out = check_output_dir(out_dir, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite)
+    refuse_overlap(out, bundle_dir, "the bundle being exported")
     bundle = open_simulated_bundle(bundle_dir)
     store = ros_typestore(hunav_msgs_version)
     with atomic_directory(out, owned=is_rosbag_export, what="GROVE ROS 2 bag export", overwrite=overwrite) as stage:
@@ -511,7 +522,7 @@ def export_rosbag(bundle_dir: str | Path, out_dir: str | Path, *, storage: str =
     return RosbagExport(out, storage, frames, counts, hunav_msgs_version)
 
 
-def _qos(latched: bool) -> Any:
+def _qos(latched: bool) -> Qos:
     from rosbags.interfaces import Qos, QosDurability, QosHistory, QosLiveliness, QosReliability, QosTime
 
     default = QosTime(sec=0, nsec=0)
@@ -521,7 +532,7 @@ def _qos(latched: bool) -> Any:
                liveliness_lease_duration=default, avoid_ros_namespace_conventions=False)
 
 
-def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str,
+def _write_bag(bundle: SimulatedBundle, store: Typestore, path: Path, storage: str,
                version: str = DEFAULT_HUNAV_MSGS) -> tuple[int, dict[str, int]]:
     from rosbags.rosbag2 import CompressionFormat, CompressionMode, StoragePlugin, Writer
 
@@ -562,7 +573,7 @@ def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str,
         writer.set_custom_data(key, value)
 
     with writer:
-        def connect(topic: str, msgtype: str, latched: bool = False) -> Any:
+        def connect(topic: str, msgtype: str, latched: bool = False) -> Connection:
             qos = [_qos(latched)]
             if msgtype.startswith("hunav_msgs/"):
                 return writer.add_connection(topic, msgtype, msgdef=hunav_msgdef(store, msgtype, version),
@@ -596,7 +607,7 @@ def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str,
                 "angular_vel": rate}))
             x, y = frame.x, frame.y
             robot = frame.robot is not None and robot_agent is not None
-            if robot:
+            if frame.robot is not None and robot_agent is not None:
                 rx, ry, rvx, rvy, ryaw = (float(v) for v in frame.robot)
                 rrate = float(robot_turn.rate(frame.t, _ROBOT_IDS, np.array([ryaw]))[0])
                 writer.write(robot_states, ns, robot_agent.fill({
@@ -619,21 +630,21 @@ def _write_bag(bundle: SimulatedBundle, store: Any, path: Path, storage: str,
 _ROBOT_IDS = np.zeros(1, dtype=np.int64)
 
 
-def _header(store: Any, ns: int, frame_id: str = FRAME_ID) -> Any:
+def _header(store: Typestore, ns: int, frame_id: str = FRAME_ID) -> Message:
     T = store.types
     sec, nanosec = _stamp(ns)
     return T["std_msgs/msg/Header"](stamp=T["builtin_interfaces/msg/Time"](sec=sec, nanosec=nanosec),
                                     frame_id=frame_id)
 
 
-def _pose(store: Any, x: float, y: float, z: float = 0.0, yaw: float = 0.0) -> Any:
+def _pose(store: Typestore, x: float, y: float, z: float = 0.0, yaw: float = 0.0) -> Message:
     T = store.types
     return T["geometry_msgs/msg/Pose"](
         position=T["geometry_msgs/msg/Point"](x=float(x), y=float(y), z=float(z)),
         orientation=T["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2)))
 
 
-def _transform(store: Any, sec: int, nanosec: int, x: float, y: float, yaw: float) -> bytes:
+def _transform(store: Typestore, sec: int, nanosec: int, x: float, y: float, yaw: float) -> memoryview:
     T = store.types
     stamped = T["geometry_msgs/msg/TransformStamped"](
         header=_header(store, sec * 1_000_000_000 + nanosec), child_frame_id=ROBOT_FRAME,
@@ -643,12 +654,12 @@ def _transform(store: Any, sec: int, nanosec: int, x: float, y: float, yaw: floa
     return store.serialize_cdr(T["tf2_msgs/msg/TFMessage"](transforms=[stamped]), "tf2_msgs/msg/TFMessage")
 
 
-def _event_message(store: Any, event: Any) -> bytes:
+def _event_message(store: Typestore, event: SimEvent) -> memoryview:
     text = json.dumps({"t": event.t, "agent_id": event.agent_id, "kind": event.kind, "detail": event.detail})
     return store.serialize_cdr(store.types["std_msgs/msg/String"](data=text), "std_msgs/msg/String")
 
 
-def _map_message(grid: Any, store: Any, ns: int) -> bytes:
+def _map_message(grid: OccupancyGrid, store: Typestore, ns: int) -> memoryview:
     """nav_msgs/OccupancyGrid of `grid` (100 occupied, 0 free)."""
     T = store.types
     sec, nanosec = _stamp(ns)
@@ -661,7 +672,7 @@ def _map_message(grid: Any, store: Any, ns: int) -> bytes:
                                "nav_msgs/msg/OccupancyGrid")
 
 
-def _scene_markers(bundle: SimulatedBundle, store: Any, ns: int) -> bytes:
+def _scene_markers(bundle: SimulatedBundle, store: Typestore, ns: int) -> memoryview:
     """Goals (spheres), routes with their waypoints, velocity fields (arrows) and the robot's goal."""
     T = store.types
     Marker, Point, Color = (T["visualization_msgs/msg/Marker"], T["geometry_msgs/msg/Point"],
@@ -669,7 +680,7 @@ def _scene_markers(bundle: SimulatedBundle, store: Any, ns: int) -> bytes:
     Vector3 = T["geometry_msgs/msg/Vector3"]
 
     def marker(ns_name: str, marker_id: int, kind: int, rgba: Sequence[float], scale: Sequence[float],
-               points: Sequence[Sequence[float]] = (), pose: Any = None) -> Any:
+               points: Sequence[Sequence[float]] | np.ndarray = (), pose: Message = None) -> Message:
         return Marker(
             header=_header(store, ns), ns=ns_name, id=marker_id, type=kind, action=ADD,
             pose=pose if pose is not None else _pose(store, 0.0, 0.0),
@@ -710,7 +721,7 @@ def _scene_markers(bundle: SimulatedBundle, store: Any, ns: int) -> bytes:
                                "visualization_msgs/msg/MarkerArray")
 
 
-def _static_messages(bundle: SimulatedBundle, store: Any, ns: int) -> list[tuple[str, str, bool, bytes]]:
+def _static_messages(bundle: SimulatedBundle, store: Typestore, ns: int) -> list[tuple[str, str, bool, memoryview]]:
     """(topic, type, latched, data) of what is published once, at the start."""
     T = store.types
     out = [("/map", "nav_msgs/msg/OccupancyGrid", True, _map_message(bundle.scene.static_map, store, ns)),

@@ -26,7 +26,7 @@ import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -35,6 +35,9 @@ from grove_tui.errors import ExportError, GroveError
 from grove_tui.navigation.grid import OccupancyGrid, check_grid_shape
 from grove_tui.scenario.model import AgentSpec, HunavBehavior, Scenario
 from grove_tui.world import Door, World
+
+if TYPE_CHECKING:
+    from shapely.geometry import Polygon
 
 Point = tuple[float, float]
 
@@ -174,7 +177,7 @@ class SceneBox:
     height: float
 
 
-def _rectangle(polygon: Any) -> tuple[float, float, float, float, float]:
+def _rectangle(polygon: Polygon) -> tuple[float, float, float, float, float]:
     """(centre x, centre y, yaw, side along yaw, side across) of a footprint's minimum rotated rectangle."""
     rectangle = polygon.minimum_rotated_rectangle
     (ax, ay), (bx, by), (cx, cy) = list(rectangle.exterior.coords)[:3]

@@ -31,7 +31,7 @@ from grove_tui.generation.draft import Draft
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
 from grove_tui.generation.presets import Preset
-from grove_tui.generation.reconcile import grounding_report
+from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.model import Count, PromptReading, effective_counts
 from grove_tui.language.reading import read_prompt
 from grove_tui.generation.rois import RoISelection, describe_selection, refine_with_model, select_rois
@@ -92,6 +92,7 @@ class PlanInputs:
     selection: RoISelection
     node_names: tuple[str, ...]
     reading: PromptReading  # the sentence as read: its groups are the result's groups
+    sentence: PromptReading | None = None  # the reading before the user's count edits (None: no edit yet)
 
     @property
     def prompt(self) -> str:
@@ -108,7 +109,7 @@ class PlanInputs:
             # an edited count is stated by the user now: sure, whatever the sentence said
             groups[r] = replace(groups[r], count=Count("exact", value, value, value),
                                 confidence=tuple(c for c in groups[r].confidence if c.field != "count"))
-        return replace(self, reading=replace(self.reading, groups=tuple(groups)))
+        return replace(self, reading=replace(self.reading, groups=tuple(groups)), sentence=self.sentence or self.reading)
 
 
 @dataclass
@@ -210,6 +211,7 @@ class GenerationPipeline:
         reading = read_prompt(prompt, world, seed=seed)
         if reading.problems:  # no words, a negative or zero count, nobody: refused before anything runs
             raise PromptError(reading.problems[0])
+        reading = with_followed_person(reading, world)
         selection = select_rois(world, preset, reading)
         roi_tokens = (0, 0)  # prompt and completion tokens of the roi model
         if self.llm_roi is not None and preset.guided:
@@ -340,7 +342,7 @@ class GenerationPipeline:
 
         t0 = clock.begin("planning")
         plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
-                                cache=self.plan_cache, cancel=cancel)
+                                cache=self.plan_cache, cancel=cancel, reading=inputs.reading)
         for rel, xml in plan.trees.items():
             try:
                 parse_tree_text(xml, rel)
@@ -365,6 +367,8 @@ class GenerationPipeline:
         report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes
         report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
-                                               post.notes).to_dict()
+                                               post.notes + plan.notes, robot=plan.robot,
+                                               sentence=inputs.sentence or inputs.reading,
+                                               walking_speed=self.preset.max_vel).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

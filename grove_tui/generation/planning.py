@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import shapely
 
 from grove_tui.bt.document import TreeDocument
 from grove_tui.bt.manifest import NODES
@@ -39,6 +40,8 @@ from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.waypoints import plan_waypoints
 from grove_tui.world.model import Door, Entity, World
 from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.language.model import PromptReading
+from grove_tui.language.tokens import lemma, words
 
 Point = tuple[float, float]
 
@@ -98,10 +101,18 @@ def goals_from_tree(document: TreeDocument) -> list[Point]:
 
 def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: PostProcessed, seed: int,
                      robot: RobotRequest | None = None, planner: ThetaStarPlanner | None = None,
-                     cache: PlanCache | None = None, cancel: threading.Event | None = None) -> OperationalPlan:
+                     cache: PlanCache | None = None, cancel: threading.Event | None = None,
+                     reading: PromptReading | None = None) -> OperationalPlan:
+    """Waypoints, fields and the robot. `reading`: the sentence's reading, whose robot clause sets the
+    robot's task and places (a user's --robot-start/--robot-goal win over it)."""
     planner = planner or ThetaStarPlanner(grid)
     cached = CachedPlanner(world.name, planner, cache)
     notes: list[str] = []
+    robot_spec = None
+    if robot is None or robot.enabled:
+        # The robot first: people whose whole activity is reacting to it start where it passes.
+        robot_spec = plan_robot(world, grid, cached, post, robot or RobotRequest(), seed, notes, reading=reading)
+        place_robot_reactors(world, grid, post, robot_spec, seed, notes)
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
     if preset.velocity == "field":
@@ -149,9 +160,6 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             id=a.id, group=a.sfm_group, start=a.start, goals=tuple((round(x, 3), round(y, 3)) for x, y in goals),
             zone=a.zone, tree=rel, radius=preset.agent_radius, max_vel=a.max_vel, label=a.label,
             behavior=a.behavior))
-    robot_spec = None
-    if robot is None or robot.enabled:
-        robot_spec = plan_robot(world, grid, cached, post, robot or RobotRequest(), seed, notes)
     return OperationalPlan(agents, trees, fields, robot_spec, notes)
 
 
@@ -195,26 +203,43 @@ def _resolve_point(world: World, grid: OccupancyGrid, value: Point | str, what: 
 
 
 def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
-               notes: list[str]) -> RobotSpec:
-    """The robot crosses the scene: from one side of the crowd to the other, through where people are.
+               notes: list[str], reading: PromptReading | None = None) -> RobotSpec:
+    """The robot's start, goal, path and task.
 
-    Candidates are free points of the zones people start in or head for and of the zones next to
-    them, at least ROBOT_CLEARANCE from every spawn. The pair chosen maximises its straight-line
-    length minus three times its distance from the crowd's centre, so the robot has to pass the crowd.
+    The user's --robot-start/--robot-goal come first, then the sentence's robot clause (its start,
+    destination, the places it passes, where it waits, whom it follows); what neither fixes is chosen
+    so the robot crosses the scene: from one side of the crowd to the other, through where people are
+    (or past the people who react to it). Every start is on free floor at least ROBOT_CLEARANCE from
+    every person and outside the zones being evacuated, unless the user or the sentence puts it there.
     Queues and conversation circles the trees will form are obstacles for the robot's planner
     (`formations.py`): it passes them with PASSING_MARGIN to spare, or through them only when there
     is no other way (a note says so).
     """
-    starts = [a.start for a in post.agents]
+    asked = reading.robot if reading is not None else None
+    task = asked.task if asked is not None else "cross"
+    reactors = _reactor_ids(post)
+    people = [a.start for a in post.agents if a.id not in reactors]
     robot_radius = RobotSpec((0.0, 0.0), (0.0, 0.0)).radius
     clearance = robot_radius + PASSING_MARGIN
     formations = predict_formations(world, grid, [a.document for a in post.agents if a.document is not None],
                                     post.goals)
+    named = [p for p in (request.start, request.goal) if p is not None]
     fixed = [_resolve_point(world, grid, p, what) for p, what in ((request.start, "start"), (request.goal, "goal"))
-             if p is not None]
+             if p is not None and not isinstance(p, str)]
     # A start or goal the user put inside a formation (the robot delivers to the counter): that one is not an obstacle.
     formations = [f for f in formations if not any(f in formations_at(formations, q, clearance) for q in fixed)]
+    named_places = {_zone_name(world, p) for p in named if isinstance(p, str)}
+    if asked is not None:
+        named_places |= {_zone_name(world, p) for p in (asked.start, asked.location, asked.destination) if p}
+    for place in [p for p in named if isinstance(p, str)] + ([asked.destination, asked.location] if asked else []):
+        if place:
+            point = _place_point(world, grid, place)
+            if point is not None:
+                formations = [f for f in formations if f not in formations_at(formations, point, clearance)]
     robot_planner = ThetaStarPlanner(block_formations(grid, formations, clearance)) if formations else None
+    space = FreeSpace(world, grid)
+    evacuated = _evacuated_zones(post) - named_places
+    picker = _StartPicker(world, grid, space, people, robot_planner, evacuated, notes)
 
     def plan_path(a: Point, b: Point, may_cross: bool = True) -> np.ndarray:
         if robot_planner is not None:
@@ -227,53 +252,379 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProces
         if robot_planner is not None:
             crossed = [f.describe() for f in formations
                        if nearest_formation_gap([f], [tuple(p) for p in path]) < clearance]
-            if crossed:
-                notes.append(f"the robot's path passes close to {', '.join(crossed)}: there is no way around")
+            note = f"the robot's path passes close to {', '.join(crossed)}: there is no way around"
+            if crossed and note not in notes:
+                notes.append(note)
         return path
 
-    if request.start is not None and request.goal is not None:
-        start, goal = fixed
-    else:
-        fixed_start = fixed[0] if request.start is not None else None
-        fixed_goal = fixed[-1] if request.goal is not None else None
-        candidates = _robot_candidates(world, grid, post, starts, seed)
-        if robot_planner is not None:
-            # Not inside a queue or circle, unless nothing else is left.
-            candidates = [c for c in candidates if robot_planner.grid.is_free(*c)] or candidates
-        centre = (sum(p[0] for p in starts) / len(starts), sum(p[1] for p in starts) / len(starts))
-        pairs = []
-        firsts = [fixed_start] if fixed_start else candidates
-        seconds = [fixed_goal] if fixed_goal else candidates
-        for a in firsts:
-            for b in seconds:
-                if a == b:
-                    continue
-                length = math.dist(a, b)
-                if length < 4.0:
-                    continue
-                # Crossing the crowd matters more than length; beyond 20 m a longer walk adds nothing.
-                pairs.append((min(length, 20.0) - 3.0 * _point_segment_distance(centre, a, b), a, b))
-        pairs.sort(key=lambda t: (-t[0], t[1], t[2]))
-        if not pairs:
-            raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
-        # Every pair around the formations first; through one only when no pair can go around.
-        for may_cross in (False, True) if robot_planner is not None else (True,):
-            for _, a, b in pairs[:20]:
-                try:
-                    path = plan_path(a, b, may_cross)
-                    return RobotSpec(start=a, goal=b,
-                                     path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
-                except PlanningError:
-                    continue
-        raise GenerationError("no reachable start/goal pair for the robot near the scene")
+    follows: tuple[int, ...] = ()
+    if task == "follow":
+        follows = _followed(reading, post)
+    # Where the sentence or the user puts the robot's goal.
+    goal: Point | None = None
+    if request.goal is not None:
+        goal = _request_point(world, grid, request.goal, "goal", picker)
+    elif asked is not None and asked.destination and task in ("cross", "patrol"):
+        goal = _place_point(world, grid, asked.destination)
+    start: Point | None = None
+    if request.start is not None:
+        start = _request_point(world, grid, request.start, "start", picker)
+        picker.check(start, "the start you gave")
+    elif asked is not None and asked.start:
+        start = picker.pick(asked.start, towards=None, away_from=goal)
+    elif asked is not None and task == "wait" and (asked.location or asked.destination):
+        start = picker.pick(asked.location or asked.destination or "", towards=None)
+    elif asked is not None and asked.via and task in ("cross", "patrol"):
+        # "crosses the ticket hall to the platforms": from the far side of the hall
+        start = picker.pick(asked.via[0], towards=None, away_from=goal)
+    elif task == "follow" and follows:
+        rows = [a.start for a in post.agents if a.id in follows]
+        centre = (sum(p[0] for p in rows) / len(rows), sum(p[1] for p in rows) / len(rows))
+        start = picker.nearest(centre)
+    elif asked is not None and task == "patrol" and asked.location:
+        start = picker.pick(asked.location, towards=None)
+        goal = goal or picker.pick(asked.location, towards=None, away_from=start)
+
+    if task in ("wait", "follow"):
+        if start is None:
+            start = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0]
+        return RobotSpec(start=start, goal=start, path=(start,), task=task, follows=follows)
+
+    via_zones = [z for z in (_zone_name(world, v) for v in (asked.via if asked is not None else ())) if z]
+    if start is None or goal is None:
+        start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
+        if not via_zones:
+            return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
     try:
         path = plan_path(start, goal)
+        for zone in via_zones:
+            if _passes(world, path, zone):
+                continue
+            # through the zone it names: by its free point nearest to the way from start to goal
+            point = picker.via_point(zone, start, goal)
+            path = np.concatenate([plan_path(start, point), plan_path(point, goal)[1:]])
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
-    return RobotSpec(start=start, goal=goal, path=tuple((round(float(x), 3), round(float(y), 3)) for x, y in path))
+    return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
 
 
-def _robot_candidates(world: World, grid: OccupancyGrid, post: PostProcessed, starts: Sequence[Point], seed: int) -> list[Point]:
+def _passes(world: World, path: Any, zone: str) -> bool:
+    """Whether a path goes through a zone (its vertices, or points every half metre along it)."""
+    points, _ = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
+    polygon = world.zone(zone).polygon
+    return bool(shapely.contains_xy(polygon, points[:, 0], points[:, 1]).any())
+
+
+def _rounded(path: Any) -> tuple[Point, ...]:
+    return tuple((round(float(x), 3), round(float(y), 3)) for x, y in path)
+
+
+def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people: Sequence[Point], seed: int, picker: _StartPicker,
+                 reactors: set[int], plan_path: Any, fixed_start: Point | None,
+                 fixed_goal: Point | None) -> tuple[Point, Point, np.ndarray]:
+    """A start/goal pair across the scene: longest (up to 20 m) and passing closest to the crowd's
+    centre, or to the people who react to the robot when some do."""
+    candidates = [c for c in _robot_candidates(world, grid, post, people, seed) if picker.acceptable(c)]
+    if not candidates:
+        candidates = [c for c in _robot_candidates(world, grid, post, people, seed, evacuated=set()) if
+                      picker.free(c)] or _robot_candidates(world, grid, post, people, seed, evacuated=set())
+    # past the people who react to it where the sentence puts them, else through the crowd
+    placed = {g.index for g in post.groups if getattr(g, "reactor_zone", None)}
+    focus = [a.start for a in post.agents if a.id in reactors and a.group_index in placed] or list(people) or \
+        [a.start for a in post.agents]
+    centre = (sum(p[0] for p in focus) / len(focus), sum(p[1] for p in focus) / len(focus))
+    pairs = []
+    firsts = [fixed_start] if fixed_start else candidates
+    seconds = [fixed_goal] if fixed_goal else candidates
+    for a in firsts:
+        for b in seconds:
+            if a == b:
+                continue
+            length = math.dist(a, b)
+            if length < 4.0:
+                continue
+            # Crossing the crowd matters more than length; beyond 20 m a longer walk adds nothing.
+            pairs.append((min(length, 20.0) - 3.0 * _point_segment_distance(centre, a, b), a, b))
+    pairs.sort(key=lambda t: (-t[0], t[1], t[2]))
+    if not pairs:
+        raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
+    # Every pair around the formations first; through one only when no pair can go around.
+    for may_cross in (False, True):
+        for _, a, b in pairs[:20]:
+            try:
+                return a, b, plan_path(a, b, may_cross)
+            except PlanningError:
+                continue
+    raise GenerationError("no reachable start/goal pair for the robot near the scene")
+
+
+class _StartPicker:
+    """Free points for the robot: on free floor, ROBOT_CLEARANCE from every person, off queues and
+    circles, outside the zones being evacuated."""
+
+    def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, people: Sequence[Point], robot_planner: Any,
+                 evacuated: set[str], notes: list[str]) -> None:
+        self.world, self.grid, self.space, self.notes = world, grid, space, notes
+        self.people = np.asarray(people, dtype=float).reshape(-1, 2)
+        self.robot_planner = robot_planner
+        self.evacuated = evacuated
+
+    def clearance(self, points: np.ndarray) -> np.ndarray:
+        if not len(self.people):
+            return np.full(len(points), np.inf)
+        nearest: np.ndarray = np.min(np.hypot(points[:, None, 0] - self.people[None, :, 0],
+                                              points[:, None, 1] - self.people[None, :, 1]), axis=1)
+        return nearest
+
+    def free(self, p: Point) -> bool:
+        return self.robot_planner is None or bool(self.robot_planner.grid.is_free(*p))
+
+    def acceptable(self, p: Point) -> bool:
+        zone = self.world.zone_at(p[0], p[1])
+        if zone is not None and zone.name in self.evacuated:
+            return False
+        return self.free(p) and float(self.clearance(np.asarray([p]))[0]) >= ROBOT_CLEARANCE
+
+    def pick(self, place: str, towards: Point | None, away_from: Point | None = None) -> Point:
+        """A point of `place` (a zone, or the zone of a door or thing) for the robot to start at."""
+        zone = _zone_name(self.world, place)
+        if zone is None:
+            raise GenerationError(f"robot place {place!r} is not a place of world '{self.world.name}'")
+        pts = self.space.cells(zone)
+        if not len(pts):
+            raise GenerationError(f"zone '{zone}' has no free floor for the robot")
+        room = self.clearance(pts)
+        ok = room >= ROBOT_CLEARANCE
+        if self.robot_planner is not None:
+            ok &= np.array([self.robot_planner.grid.is_free(x, y) for x, y in pts], dtype=bool)
+        if not ok.any():
+            best = int(np.argmax(room))
+            self.notes.append(f"the robot starts {room[best]:.1f} m from the nearest person: {zone} has no free floor "
+                              f"{ROBOT_CLEARANCE:g} m from everyone")
+            return (round(float(pts[best, 0]), 3), round(float(pts[best, 1]), 3))
+        pts = pts[ok]
+        if away_from is not None:
+            # the far side of the place from `away_from`, but not wedged in a corner: of the points at
+            # least 80 % as far as the farthest, the one nearest the place's anchor
+            d = np.hypot(pts[:, 0] - away_from[0], pts[:, 1] - away_from[1])
+            anchor = self.world.zone(zone).anchor
+            far = np.flatnonzero(d >= 0.8 * d.max())
+            k = int(far[np.argmin(np.hypot(pts[far, 0] - anchor[0], pts[far, 1] - anchor[1]))])
+        else:
+            anchor = towards or _place_point(self.world, self.grid, place) or self.world.zone(zone).anchor
+            d = np.hypot(pts[:, 0] - anchor[0], pts[:, 1] - anchor[1])
+            k = int(np.argmin(d))
+        return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
+
+    def via_point(self, zone: str, a: Point, b: Point) -> Point:
+        """A free point of `zone` (off queues and circles) nearest to the segment a-b."""
+        pts = self.space.cells(zone)
+        if self.robot_planner is not None and len(pts):
+            keep = np.array([self.robot_planner.grid.is_free(x, y) for x, y in pts], dtype=bool)
+            pts = pts[keep] if keep.any() else pts
+        if not len(pts):
+            raise GenerationError(f"zone '{zone}' has no free floor for the robot to pass through")
+        d = [_point_segment_distance((float(x), float(y)), a, b) for x, y in pts]
+        k = int(np.argmin(d))
+        return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
+
+    def nearest(self, centre: Point) -> Point:
+        """The acceptable free point nearest to `centre` (the robot starts beside the people it follows)."""
+        zone = self.world.zone_at(centre[0], centre[1])
+        zones = [zone.name] if zone is not None else [z.name for z in self.world.zones]
+        for name in zones + [z.name for z in self.world.zones if z.name not in zones]:
+            pts = self.space.cells(name)
+            if not len(pts):
+                continue
+            ok = self.clearance(pts) >= ROBOT_CLEARANCE
+            if ok.any():
+                pts = pts[ok]
+                k = int(np.argmin(np.hypot(pts[:, 0] - centre[0], pts[:, 1] - centre[1])))
+                return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
+        raise GenerationError("no free floor for the robot 2 m from everyone")
+
+    def check(self, p: Point, what: str) -> None:
+        room = float(self.clearance(np.asarray([p]))[0])
+        if room < ROBOT_CLEARANCE:
+            self.notes.append(f"{what} for the robot is {room:.1f} m from the nearest person "
+                              f"(a robot placed by GROVE keeps {ROBOT_CLEARANCE:g} m)")
+
+
+def _request_point(world: World, grid: OccupancyGrid, value: Point | str, what: str, picker: _StartPicker) -> Point:
+    """A user's --robot-start/--robot-goal: a point as given, a place name as a free point there."""
+    if isinstance(value, str) and what == "start":
+        try:
+            obj = world.find(value)
+        except Exception as exc:
+            raise GenerationError(f"robot {what} {value!r}: {exc}") from None
+        if not hasattr(obj, "interaction_point") and not hasattr(obj, "leads_to"):
+            return picker.pick(value, towards=None)
+    return _resolve_point(world, grid, value, what)
+
+
+def _zone_name(world: World, name: str | None) -> str | None:
+    if not name:
+        return None
+    try:
+        obj = world.find(name)
+    except Exception:
+        return None
+    zone = getattr(obj, "zone", None)
+    return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
+
+
+def _place_point(world: World, grid: OccupancyGrid, name: str) -> Point | None:
+    """Where the robot goes for a place: a thing's interaction point, a point inside a door, a zone's anchor."""
+    try:
+        return _resolve_point(world, grid, name, "place")
+    except GenerationError:
+        return None
+
+
+def _evacuated_zones(post: PostProcessed) -> set[str]:
+    """Zones people are evacuated from: the robot does not start there."""
+    zones: set[str] = set()
+    for g in post.groups:
+        if any(n.node == "FollowVelocityField" for n in g.tree.walk()):
+            zones |= set(g.spawn_zones) or {g.spawn}
+    return zones
+
+
+def _reactor_ids(post: PostProcessed) -> set[int]:
+    by_index = {g.index: g for g in post.groups}
+    return {a.id for a in post.agents if getattr(by_index.get(a.group_index), "reacts_only", False)}
+
+
+def _followed(reading: PromptReading | None, post: PostProcessed) -> tuple[int, ...]:
+    """The agents the robot follows: the group its clause names ("the robot follows the nurse"), else
+    the first group of the sentence."""
+    if reading is None or reading.robot is None or not post.groups:
+        return ()
+    text = {lemma(w) for w in words(reading.robot.follows or reading.robot.text)}
+    best = None
+    for g in post.groups:
+        if g.reading_index is None or g.reading_index >= len(reading.groups):
+            continue
+        r = reading.groups[g.reading_index]
+        names = {lemma(w) for w in words(r.who)} | {r.label, lemma(r.label)}
+        if names & text - {"the", "a", "robot"}:
+            best = g
+            break
+    if best is None and reading.robot.follows:
+        return ()  # whom it follows is no group of the sentence: nobody to follow (the report says so)
+    best = best or post.groups[0]
+    return tuple(best.member_ids)
+
+
+# ---- people who react to the robot start where it passes -----------------------------------------
+
+# (closest, farthest) metres from the robot's route, per reaction node: close enough for the
+# reaction to show (an avoider must be inside its safe distance), not in the robot's way.
+REACTOR_BAND = {"ApproachRobot": (3.0, 6.0), "BlockRobot": (3.0, 6.0), "AvoidRobot": (1.5, 2.5),
+                "LookAtRobot": (2.0, 5.0)}
+
+
+def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed, robot: RobotSpec | None, seed: int,
+                         notes: list[str]) -> None:
+    """Groups whose whole activity is reacting to the robot, and whom the sentence places nowhere, start
+    beside its route, a third of the way along (so the robot reaches them early in a run), in sight of
+    it: a reaction gated on the robot showing up must not depend on where a model happened to spawn them."""
+    groups = [g for g in post.groups if g.reacts_only]
+    if not groups or robot is None:
+        return
+    path = np.asarray(robot.path if robot.path else (robot.start, robot.goal), dtype=float).reshape(-1, 2)
+    samples, arcs = _along(path, 0.5)
+    total = float(arcs[-1]) if len(arcs) else 0.0
+    rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x5BE0CD19])
+    space = FreeSpace(world, grid)
+    sight = ThetaStarPlanner(grid, landmarks=0)
+    taken = [a.start for a in post.agents if a.group_index not in {g.index for g in groups}]
+    for g in groups:
+        node = next((n.node for n in g.tree.walk() if n.node in REACTOR_BAND), "ApproachRobot")
+        near, far = REACTOR_BAND[node]
+        order = np.argsort(np.abs(arcs - min(max(0.3 * total, 4.0), total)), kind="stable") if total else np.arange(1)
+        if g.reactor_zone is not None:
+            # the sentence puts them in a zone: the route's points nearest to it first
+            polygon = world.zone(g.reactor_zone).polygon
+            gap = shapely.distance(polygon, shapely.points(samples))
+            order = np.lexsort((np.abs(arcs - min(max(0.3 * total, 4.0), total)), np.round(gap, 0)))
+        placed = None
+        # the band the reaction needs first; in the sentence's zone, further off when the route passes by
+        for widen in (0.0, 4.0) if g.reactor_zone is not None else (0.0,):
+            for k in order[:300]:
+                anchor = samples[k]
+                found = _spots(world, space, sight, anchor, near, far + widen, robot.start, taken, g.count, rng,
+                               g.reactor_zone)
+                if found is not None:
+                    placed = (found, float(arcs[k]) if total else 0.0)
+                    break
+            if placed is not None:
+                break
+        if placed is None:
+            notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
+            continue
+        spots, along = placed
+        members = [a for a in post.agents if a.group_index == g.index]
+        for agent, spot in zip(members, spots):
+            agent.start = spot
+            zone = world.zone_at(spot[0], spot[1])
+            agent.spawn_zone = agent.zone = zone.name if zone is not None else agent.spawn_zone
+        taken += spots
+        g.spawn = members[0].spawn_zone if members else g.spawn
+        notes.append(f"group '{g.label}': starts in {g.spawn} beside the robot's route ({along:.0f} m along it), "
+                     f"where it sees the robot come")
+
+
+def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
+    """Points every `step` metres along a polyline, and their distance along it."""
+    if len(path) < 2:
+        return path[:1].copy(), np.zeros(1)
+    points, arcs, s = [path[0]], [0.0], 0.0
+    for a, b in zip(path, path[1:]):
+        length = float(np.hypot(*(b - a)))
+        n = max(1, int(length // step))
+        for i in range(1, n + 1):
+            points.append(a + (b - a) * i / n)
+            arcs.append(s + length * i / n)
+        s += length
+    return np.asarray(points), np.asarray(arcs)
+
+
+def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
+           robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator,
+           zone_name: str | None = None) -> list[Point] | None:
+    if zone_name is None:
+        zone = world.zone_at(float(anchor[0]), float(anchor[1]))
+        if zone is None:
+            return None
+        zone_name = zone.name
+    pts = space.cells(zone_name)
+    if not len(pts):
+        return None
+    d = np.hypot(pts[:, 0] - anchor[0], pts[:, 1] - anchor[1])
+    robot = np.hypot(pts[:, 0] - robot_start[0], pts[:, 1] - robot_start[1])
+    ok = (d >= near) & (d <= far) & (robot >= ROBOT_CLEARANCE + 0.5)
+    if len(taken):
+        others = np.asarray(taken, dtype=float)
+        ok &= np.min(np.hypot(pts[:, None, 0] - others[None, :, 0], pts[:, None, 1] - others[None, :, 1]),
+                     axis=1) >= 0.7
+    idx = np.flatnonzero(ok)
+    if idx.size < count:
+        return None
+    idx = idx[np.argsort(d[idx] + rng.uniform(0.0, 0.2, idx.size), kind="stable")]
+    chosen: list[Point] = []
+    for i in idx:
+        p = (round(float(pts[i, 0]), 3), round(float(pts[i, 1]), 3))
+        if all(math.dist(p, q) >= 0.7 for q in chosen) and sight.segment_is_free(p[0], p[1], float(anchor[0]),
+                                                                                  float(anchor[1])):
+            chosen.append(p)
+            if len(chosen) == count:
+                return chosen
+    return None
+
+
+def _robot_candidates(world: World, grid: OccupancyGrid, post: PostProcessed, starts: Sequence[Point], seed: int,
+                      evacuated: set[str] | None = None) -> list[Point]:
     zones: list[str] = []
     for a in post.agents:
         for z in (a.spawn_zone, a.zone):
@@ -284,6 +635,9 @@ def _robot_candidates(world: World, grid: OccupancyGrid, post: PostProcessed, st
             other = d.leads_to if d.zone == z else d.zone
             if other in [zz.name for zz in world.zones] and other not in zones:
                 zones.append(other)
+    if evacuated is None:
+        evacuated = _evacuated_zones(post)
+    zones = [z for z in zones if z not in evacuated] or zones
     rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x3C6EF372])
     space = FreeSpace(world, grid)
     found: list[Point] = []
@@ -293,8 +647,10 @@ def _robot_candidates(world: World, grid: OccupancyGrid, post: PostProcessed, st
         pts = space.cells(z)
         if len(pts) == 0:
             continue
-        d = np.min(np.hypot(pts[:, None, 0] - spawn_arr[None, :, 0], pts[:, None, 1] - spawn_arr[None, :, 1]), axis=1)
-        pts = pts[d >= ROBOT_CLEARANCE]
+        if len(spawn_arr):
+            d = np.min(np.hypot(pts[:, None, 0] - spawn_arr[None, :, 0], pts[:, None, 1] - spawn_arr[None, :, 1]),
+                       axis=1)
+            pts = pts[d >= ROBOT_CLEARANCE]
         if len(pts) == 0:
             continue
         pick = rng.choice(len(pts), size=min(per_zone, len(pts)), replace=False)

@@ -20,6 +20,7 @@ import shapely
 
 from grove_tui.bt.document import TreeDocument, TreeElement
 from grove_tui.bt.manifest import NODES, NodeSpec
+from grove_tui.bt.coordination import conversation_radius, queue_line_direction
 from grove_tui.bt.ports import format_port_value
 from grove_tui.bt.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftNode
@@ -27,7 +28,7 @@ from grove_tui.errors import GenerationError, PlanningError, PromptError
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import reconcile
 from grove_tui.generation.rois import RoISelection
-from grove_tui.language.model import PromptReading, effective_counts
+from grove_tui.language.model import GroupReading, PromptReading, effective_counts
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.navigation.velocity_field import least_congested_exits, nearest_exits
@@ -91,6 +92,12 @@ class GroupPlan:
     # zone -> people, when an evacuation group the sentence places nowhere is too large for one zone
     # and starts spread over the building (_spread_unplaced_evacuees); empty: everyone in `spawn`.
     spawn_zones: dict[str, int] = field(default_factory=dict)
+    added: list[str] = field(default_factory=list)  # what its tree does beyond the reading, in words
+    # Its whole activity is reacting to the robot and the sentence places it nowhere: planning starts
+    # it where the robot passes (generation/planning.py, place_robot_reactors).
+    reacts_only: bool = False
+    reactor_zone: str | None = None  # where the sentence puts such a group: it starts there, by the robot's route
+    exit_asked: str | None = None  # the exit its sentence sends it through ("leave through the back door")
 
 
 @dataclass
@@ -187,6 +194,7 @@ class FreeSpace:
         self._labels = _components(free)
         self._main = self._main_component()
         self._taken: dict[str, list[Point]] = {}
+        self._clearance: np.ndarray | None = None  # metres to the nearest occupied cell, built on first use
         exits = [door.position for door in world.exits()] if hasattr(world, "exits") else []
         self._exit_points = np.asarray(exits, dtype=float).reshape(-1, 2)
 
@@ -216,6 +224,19 @@ class FreeSpace:
         pts = np.stack([xs[inside], ys[inside]], axis=1) if np.any(inside) else np.zeros((0, 2))
         self._cells[zone_name] = pts
         return pts
+
+    def clearance(self, pts: np.ndarray) -> np.ndarray:
+        """Metres from each point to the nearest occupied cell of the grid (walls, furniture, inflated)."""
+        if self._clearance is None:
+            from scipy import ndimage
+
+            free = ~np.asarray(self.grid.occupied, dtype=bool)
+            self._clearance = ndimage.distance_transform_edt(free) * self.grid.resolution
+        g = self.grid
+        cols = np.clip(((pts[:, 0] - g.origin[0]) / g.resolution).astype(int), 0, self._clearance.shape[1] - 1)
+        rows = np.clip(((pts[:, 1] - g.origin[1]) / g.resolution).astype(int), 0, self._clearance.shape[0] - 1)
+        clearance: np.ndarray = self._clearance[rows, cols] + float(getattr(g, "inflation", 0.0))
+        return clearance
 
     def free_area(self, zone_name: str) -> float:
         return len(self.cells(zone_name)) * self.grid.resolution ** 2
@@ -286,6 +307,11 @@ class FreeSpace:
 # Spawns keep this far from every exit door's centre: twice the distance at which an evacuee
 # counts as gone (bt.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
 SPAWN_EXIT_CLEARANCE = 1.2
+# A conversation circle's centre keeps its radius plus this from walls and furniture (a body and a step
+# round it), and this much more from the zone's doors.
+CIRCLE_CLEARANCE = 0.6
+CIRCLE_DOOR_MARGIN = 1.0
+CIRCLE_NEAR_THING = 5.0  # metres: a circle "by" a thing or door stands within this of it
 
 
 def _components(free: np.ndarray) -> np.ndarray:
@@ -304,6 +330,7 @@ class TargetResolver:
     def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, preset: Preset, rng: np.random.Generator) -> None:
         self.world, self.grid, self.space, self.preset, self.rng = world, grid, space, preset, rng
         self.group_points: dict[tuple[int, str], Point] = {}
+        self._lines: dict[str, Point] = {}  # service point -> heading of its queue line
 
     def snap(self, p: Point, label: str) -> Point:
         if self.grid.is_free(p[0], p[1]):
@@ -339,6 +366,39 @@ class TargetResolver:
         (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}")
         return p
 
+    def circle_centre(self, name: str, radius: float) -> Point:
+        """Where a conversation circle of `radius` stands in a zone: a free point at least the circle and a
+        body from walls and furniture, and a body further from the zone's doors (people come in through
+        them); a door or thing keeps its own point. Falls back to the roomiest point of the zone."""
+        obj = self.world.find(name)
+        near: Point | None = None
+        if isinstance(obj, (Entity, Door)):
+            # "chat by the fountain": a free circle beside it, as close to it as room allows
+            near = self.resolve(name, node="Converse")
+            zone_name = obj.zone
+        else:
+            zone_name = obj.name
+        pts = self.space.cells(zone_name)
+        if near is not None and len(pts):
+            pts = pts[np.hypot(pts[:, 0] - near[0], pts[:, 1] - near[1]) <= CIRCLE_NEAR_THING]
+        if not len(pts):
+            return near if near is not None else self.resolve(name, node="Converse")
+        room = self.space.clearance(pts)
+        doors = np.asarray([d.position for d in self.world.doors_of(zone_name)], dtype=float).reshape(-1, 2)
+        if len(doors):
+            to_door = np.min(np.hypot(pts[:, None, 0] - doors[None, :, 0], pts[:, None, 1] - doors[None, :, 1]), axis=1)
+            room = np.minimum(room, to_door - CIRCLE_DOOR_MARGIN)
+        need = radius + CIRCLE_CLEARANCE
+        ok = np.flatnonzero(room >= need)
+        if not len(ok):
+            best = int(np.argmax(room))
+            return (round(float(pts[best, 0]), 3), round(float(pts[best, 1]), 3))
+        if near is not None:
+            k = int(ok[np.argmin(np.hypot(pts[ok, 0] - near[0], pts[ok, 1] - near[1]))])
+        else:
+            k = int(ok[self.rng.integers(len(ok))])
+        return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
+
     def _beside(self, name: str, zone: str, base: Point, slot: int | None) -> Point:
         """The k-th person sent to one door or thing stands next to the ones before, not on top of them:
         people sharing one goal point would jostle for it for the rest of the run."""
@@ -350,13 +410,19 @@ class TargetResolver:
     def _queue_slot(self, entity: Any, base: Point, k: int) -> Point:
         """Sequential allocation: the k-th person sent to a service point walks to the k-th place of its line.
 
-        The line leaves the service point away from the entity; where it would leave the zone or hit
-        an obstacle the person is sent to the nearest free spot of the zone instead.
+        The line is the one the simulation's queue will form (bt.coordination.queue_line_direction, the
+        heading with the most free floor, preferring straight out from the counter), so nobody is sent
+        behind shelves the line never crosses; where it would leave the zone or hit an obstacle the
+        person is sent to the nearest free spot of the zone instead.
         """
         if k == 0:
             return base
-        cx, cy = entity.polygon.centroid.x, entity.polygon.centroid.y
-        dx, dy = base[0] - cx, base[1] - cy
+        if entity.name not in self._lines:
+            from grove_tui.generation.formations import GridSpace
+
+            direction, _ = queue_line_direction(GridSpace(self.world, self.grid), entity.name, base, QUEUE_SPACING)
+            self._lines[entity.name] = direction
+        dx, dy = self._lines[entity.name]
         norm = math.hypot(dx, dy) or 1.0
         p = (base[0] + dx / norm * QUEUE_SPACING * k, base[1] + dy / norm * QUEUE_SPACING * k)
         zone = self.world.zone(entity.zone)
@@ -475,13 +541,19 @@ def postprocess(world: World, grid: OccupancyGrid, preset: Preset, draft: Draft,
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
     groups = [GroupPlan(i, r.label, r.count, r.spawn, r.tree, reading.groups[r.reading_index].who
                         if r.reading_index is not None else "", behavior=r.behavior, reading_index=r.reading_index,
-                        party_size=r.party_size, speed_factor=r.speed_factor)
+                        party_size=r.party_size, speed_factor=r.speed_factor, added=list(r.added),
+                        reacts_only=r.reacts_only,
+                        reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
+                        else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]))
               for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
                                               evacuation_field=preset.velocity == "field"))]
     if not groups:
         raise GenerationError("the prompt's groups leave nobody in the scenario")
     for g in groups:
-        g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
+        # The preset's evacuation is for those the sentence evacuates: a guard who waits by the
+        # door during a drill waits (nothing unasked).
+        if g.reading_index is not None and reading.groups[g.reading_index].intent == "evacuate":
+            g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
     space = FreeSpace(world, grid)
     if preset.velocity == "field":
         _spread_unplaced_evacuees(groups, reading, space, world, notes)
@@ -514,7 +586,7 @@ def postprocess(world: World, grid: OccupancyGrid, preset: Preset, draft: Draft,
                 sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
                 notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
             sfm_groups += len(parties)
-        if preset.velocity == "field":
+        if preset.velocity == "field" and "FollowVelocityField" in node_types:
             g.field_id = f"group_{g.index + 1}"  # the group's first field; per exit below when it splits
         first = 0
         for zone, size, k in _spawn_chunks(g, parties):
@@ -563,10 +635,34 @@ def postprocess(world: World, grid: OccupancyGrid, preset: Preset, draft: Draft,
     return PostProcessed(agents, groups, exit_name, goals, notes, exit_names)
 
 
+def _exit_asked(world: World, group: GroupReading) -> str | None:
+    """The exit a group's sentence names; None when it names none or the reader was unsure which
+    ("the nearest exit": each person then takes their own nearest)."""
+    exits = {d.name for d in world.exits()}
+    unsure = group.confidence_of("destination")
+    if unsure is not None and unsure.unsure:
+        return None
+    return group.destination if group.destination in exits else None
+
+
+def _reactor_zone(world: World, group: GroupReading) -> str | None:
+    """The zone a group that reacts to the robot is put in by its sentence: where they are, or where
+    they follow it through."""
+    for name in (group.start, group.location, *group.via, group.destination):
+        if name:
+            zone = _zone_of(world, name, "")
+            if zone:
+                return zone
+    return None
+
+
 def _group_point(resolver: TargetResolver, group: GroupPlan, name: str) -> Point:
     key = (group.index, name)
     if key not in resolver.group_points:
-        resolver.group_points[key] = resolver.resolve(name, node="Converse")
+        # A circle of the group's talkers (each social party its own): its spots must all be free floor,
+        # clear of walls and doorways, or the last to arrive cannot reach theirs.
+        talkers = max((len(m) for m in group.parties.values()), default=group.count) if group.parties else group.count
+        resolver.group_points[key] = resolver.circle_centre(name, conversation_radius(max(talkers, 2)))
     return resolver.group_points[key]
 
 
@@ -679,6 +775,9 @@ def _assign_exits(world: World, grid: OccupancyGrid, groups: Sequence[GroupPlan]
             choice = nearest_exits(planner, {n: d.position for n, d in doors.items()}, starts)
     except PlanningError as exc:
         raise GenerationError(f"an evacuee cannot reach any exit: {exc}") from None
+    # A group the sentence sends through a named exit leaves through it, whatever is nearer.
+    asked = {g.index: g.exit_asked for g in groups if g.exit_asked in doors}
+    choice = [asked.get(a.group_index, name) for a, name in zip(evacuees, choice)]
     # A social party (family, friends) leaves together: through its first member's nearest exit.
     party_exit: dict[int, str] = {}
     for agent, name in zip(evacuees, choice):

@@ -1,50 +1,82 @@
-"""The model's draft checked against the prompt's reading, repaired only where it contradicts it.
+"""The model's draft held to the prompt's reading, and the planned grounding report.
 
 The reading (language/reading.py) says which groups the sentence describes: how many people, what
 they do, where. The model writes a draft. Each reading group takes the draft group that fits it
-best (by label, then by the places and nodes of its tree); then, and only where they disagree:
+best (by label, then by the places and nodes of its tree), and its tree does what the reading says,
+nothing the sentence does not ask:
 
-- a missing group gets the plain tree for its reading;
-- a wrong count is set to the reading's (subsets such as "one of them" are taken out of their parent);
-- an idle tree (one with no routine action: only conditions, or only a robot reaction) is replaced;
-- a tree that does another thing than the reading's stationary intent (queue, wait, converse,
-  wander), or does it elsewhere, is replaced by the plain tree for the reading;
-- a destination the tree never reaches is appended as a GoTo step, keeping what the model wrote;
-- a group that should move together gets a JoinGroup step;
-- a stated robot reaction sets the group's HuNavSim `behavior` and wraps its tree in HuNavSim's
-  reaction pattern (ReactiveFallback[IsRobotVisible -> ForceFailure(<Reaction>Nav)], routine).
+- the tree's core is the plain tree for the reading (`tree_for`): the via places, the destination,
+  the queue at its service point, the conversation, the wandering, the wait, the evacuation;
+- what the model wrote beyond it is dropped where it changes what the group does (a Queue for a
+  walker, a minute of Converse before a walk, people following each other, a detour to a place the
+  sentence does not name, a place of the robot's clause); only a pause, a look around or wandering
+  at the destination after the core may stay, and it is listed as *added* in the report;
+- a stated robot interaction is done for real: a group whose only activity is reacting to the robot
+  does it from the start (walks up to it, follows it, steps into its way, keeps away, turns to look),
+  not gated on a visibility that may never come; a group with a routine of its own gets HuNavSim's
+  reaction pattern around it (ReactiveFallback[IsRobotVisible -> ForceFailure(<Reaction>Nav)], routine),
+  and the robot's route is planned past it (generation/planning.py);
+- a group that should move together gets a JoinGroup step.
 
-Each repair is a note. What the model wrote beyond the reading (an extra Wait, a detour) stays.
-`grounding_report` then sets what the sentence asked beside what the scenario does.
+Each change is a note. `grounding_report` then writes what the sentence asked as claims a run can
+check (scenario/report.py): places, points, partners, paces, each with how long a run needs to show it.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from grove_tui.bt.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
 from grove_tui.bt.manifest import NODES
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
 from grove_tui.language.tokens import lemma, words
-from grove_tui.scenario.report import GroundingCheck, GroundingReport, GroupGrounding
+from grove_tui.scenario.report import (
+    FAILS,
+    PLANNED,
+    Claim,
+    GroundingReport,
+    GroupGrounding,
+    RobotGrounding,
+)
 from grove_tui.world.model import Door, Entity, World
 
 # Nodes that make a person do something on their own: a tree with none of them leaves its agent
 # standing where it spawned (conditions, bookkeeping and robot reactions only fire on cue).
 ROUTINE_NODES = frozenset({"GoTo", "Wait", "Queue", "Wander", "Converse", "FollowVelocityField", "FollowAgent",
                            "ConversationFormation", "StopAndWaitTimerAction", "SetGroupWalk", "ApproachAgent",
-                           "RegularNav", "LookAtPoint"})
+                           "RegularNav", "LookAtPoint", "ApproachRobot", "BlockRobot", "AvoidRobot",
+                           "LookAtRobot"})
 STATIONARY_NODES = {"queue": {"Queue"}, "converse": {"Converse", "ConversationFormation"}, "wander": {"Wander"},
-                    "wait": {"Wait", "StopAndWaitTimerAction", "Queue"}}
+                    "wait": {"Wait", "StopAndWaitTimerAction"}}
 PACE_FACTORS = {"slow": 0.7, "normal": 1.0, "fast": 1.4}
 MOVING_INTENTS = frozenset({"walk", "evacuate", "follow"})
 WALKING_NODES = frozenset({"GoTo", "FollowVelocityField", "FollowAgent"})
 DEFAULT_WAIT_SECONDS = 60.0  # "a man waits on the bench": long enough to be seen waiting
+CONVERSATION_SECONDS = 60.0
 SERVICE_TYPES = ("counter", "desk", "reception", "booth", "kiosk", "vending_machine", "machine")
+# What the model may leave after the tree's core, listed as "added": a pause, a look, wandering where they arrived.
+TRAILING_EXTRAS = frozenset({"Wait", "StopAndWaitTimerAction", "LookAtPoint", "Wander"})
+MAX_TRAILING_WAIT = 120.0
+
+# The robot interaction a group does as its whole activity, ungated: (node, ports).
+ROBOT_ACTIVITIES: dict[str, tuple[str, dict[str, Any]]] = {
+    "follow": ("ApproachRobot", {"closest_dist": 1.0, "max_vel": 1.5, "duration": 0.0}),
+    "approach": ("ApproachRobot", {"closest_dist": 0.8, "max_vel": 1.3, "duration": 0.0}),
+    "block": ("BlockRobot", {"front_dist": 0.8, "duration": 0.0}),
+    "avoid": ("AvoidRobot", {"safe_distance": 3.0, "runaway_vel": 1.2, "duration": 0.0}),
+    "look": ("LookAtRobot", {"yaw_tolerance": 0.1}),
+}
+# Trigger distances for reactions around a routine: far enough that a robot passing the group sets
+# them off (HuNavSim's 3-4 m for Scared/Surprised/Threatening would let it slip by unseen).
+REACTION_TRIGGER = {"Surprised": 8.0, "Curious": 10.0, "Scared": 5.0, "Threatening": 6.0}
+# Distances the outcome checks measure reactions against (metres between centres).
+# (centre to centre: room for a few people around the robot when a group comes up to it)
+REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0}
 
 
 @dataclass
@@ -59,17 +91,52 @@ class ReconciledGroup:
     behavior: str = "Regular"  # HuNavSim reaction to the robot
     party_size: int | None = None  # "two families of three": social groups of 3
     speed_factor: float = 1.0
+    added: list[str] = field(default_factory=list)  # what the tree does beyond the reading, in words
+    reacts_only: bool = False  # its whole activity is reacting to the robot: it starts where the robot passes
+
+
+def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
+    """The person a robot's clause follows, as a group of the sentence when the reading has none for
+    them: "the robot follows a guide from the entrance hall to the auditorium" asks for a guide who
+    walks from the entrance hall to the auditorium, with the robot behind."""
+    robot = reading.robot
+    if robot is None or robot.task != "follow" or not robot.follows:
+        return reading
+    wanted = {lemma(w) for w in words(robot.follows)} - {"a", "an", "the", "one", "him", "her", "them", "someone"}
+    if not wanted or any(wanted & ({lemma(w) for w in words(g.who)} | {g.label, lemma(g.label)})
+                         for g in reading.groups):
+        return reading
+    label = lemma(words(robot.follows)[-1])
+    count = Count("exact", 1, 1, 1)
+    where = [p for p in (robot.start, robot.destination) if p]
+    followed = GroupReading(robot.follows, label, count, "walk" if robot.destination else "wait",
+                            start=robot.start, destination=robot.destination,
+                            location=None if robot.destination else (robot.location or robot.start),
+                            via=tuple(robot.via), text=robot.text)
+    if not where and not followed.location:
+        followed = replace(followed, intent="wander")
+    return replace(reading, groups=reading.groups + (followed,))
+
+
+def robot_places(reading: PromptReading, world: World) -> set[str]:
+    """Zones the robot's clause names: a group's place is never taken from them unless its own words say so."""
+    robot = reading.robot
+    if robot is None:
+        return set()
+    names = [robot.start, robot.destination, robot.location, *robot.via]
+    return {z for z in (_zone_of(world, n) for n in names if n) if z}
 
 
 def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn: str,
               notes: list[str], *, evacuation_field: bool = False) -> list[ReconciledGroup]:
-    """Reading groups with the draft's trees, repaired where they contradict the reading (module doc).
+    """Reading groups with honest trees (module doc).
 
     `evacuation_field`: the preset evacuates along velocity fields, so an evacuating group's plain
     tree follows the field instead of walking to the exit."""
     counts = effective_counts(reading)
     drafts = list(draft.groups)
     unused = list(range(len(drafts)))
+    robot_zones = robot_places(reading, world)
     out: list[ReconciledGroup] = []
     for index, group in enumerate(reading.groups):
         count = counts.get(index, 0)
@@ -77,29 +144,44 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
             continue
         pick = _pick_draft(group, drafts, unused, world)
         label = group.label
+        added: list[str] = []
         if pick is None:
             tree = tree_for(group, world, evacuation_field)
             notes.append(f"group '{label}': added for '{group.who}' (the model wrote no group for it)")
-            spawn = _spawn(group, None, world, default_spawn, tree)
+            spawn = _spawn(group, None, world, default_spawn, tree, robot_zones)
         else:
             unused.remove(pick)
             d = drafts[pick]
             if d.count != count:
                 notes.append(f"group '{label}': count {d.count} -> {count} ('{group.who}')")
-            tree = _repair(d.tree, group, world, notes, label, evacuation_field)
-            spawn = _spawn(group, d, world, default_spawn, tree)
+            if _model_fills(group) and not is_idle(d.tree):
+                tree = d.tree  # a sentence that names nobody: the model says what the people do
+            else:
+                tree, added = honest_tree(d.tree, group, world, notes, label, evacuation_field, robot_zones)
+            spawn = _spawn(group, d, world, default_spawn, tree, robot_zones)
+        onward = onward_note(group, tree, world)
+        if onward is not None:
+            added.append(onward)
         behavior = group.robot_reaction or "Regular"
-        if group.robot_reaction:
-            tree = with_reaction(tree, group.robot_reaction)
+        reacts_only = False
+        if group.robot_interaction:
+            tree, reacts_only = with_robot_interaction(tree, group)
         if group.together and count > 1 and not any(n.node in ("JoinGroup", "Converse") for n in tree.walk()):
             tree = _prepend(DraftNode("JoinGroup", {}), tree)
             notes.append(f"group '{label}': walks together as the prompt says")
         party = group.count.party_size if group.count.parties and (group.count.party_size or 0) > 1 else None
         out.append(ReconciledGroup(index, label, count, spawn, tree, behavior, party,
-                                   PACE_FACTORS.get(group.pace, 1.0)))
+                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
     return out
+
+
+def _model_fills(group: GroupReading) -> bool:
+    """Whether the group is the one a sentence that names nobody is read as ("the cafeteria gets busy"):
+    the reader is unsure anyone is there, and the model is asked who is and what they do."""
+    named = group.confidence_of("group")
+    return named is not None and named.unsure
 
 
 # ---- matching -------------------------------------------------------------------------------
@@ -124,47 +206,117 @@ def _pick_draft(group: GroupReading, drafts: Sequence[DraftGroup], unused: Seque
     return best if score(best) > 0 else unused[0]
 
 
-# ---- repairs --------------------------------------------------------------------------------
+# ---- the honest tree -------------------------------------------------------------------------
 
 def is_idle(tree: DraftNode) -> bool:
     """A tree with no routine action: its agent would stand still unless the robot comes by."""
     return not any(node.node in ROUTINE_NODES for node in tree.walk())
 
 
-def _repair(tree: DraftNode, group: GroupReading, world: World, notes: list[str], label: str,
-            evacuation_field: bool = False) -> DraftNode:
+def honest_tree(tree: DraftNode, group: GroupReading, world: World, notes: list[str], label: str,
+                evacuation_field: bool = False, robot_zones: set[str] | None = None) -> tuple[DraftNode, list[str]]:
+    """The plain tree for the reading, with what the model wrote after doing it kept only when it is a
+    pause, a look or wandering where they arrived (returned in words, as "added"). Everything else the
+    model wrote that the sentence does not ask for is dropped, with a note."""
+    core = tree_for(group, world, evacuation_field)
     if is_idle(tree):
-        fixed = tree_for(group, world, evacuation_field)
         notes.append(f"group '{label}': the model's tree had no action ({_kinds(tree)}); {group.intent} "
                      f"as the prompt says")
-        return fixed
-    base = _base_intent(group)
-    if base in STATIONARY_NODES:
-        place = _stationary_place(group, world, base)
-        nodes = [n for n in tree.walk() if n.node in STATIONARY_NODES[base]]
-        right_place = place is None or any(_same_place(world, _node_place(n), place, base) for n in nodes)
-        if not nodes or not right_place:
-            fixed = tree_for(group, world)
-            where = f" at {place}" if place else ""
-            notes.append(f"group '{label}': {base}{where} as the prompt says, instead of the model's {_kinds(tree)}")
-            return fixed
-        if base == "wait" and group.wait_seconds:
-            tree = _set_wait(tree, group.wait_seconds)
-    destination = group.destination
-    if destination and not _reaches(world, destination, _tree_places(tree)):
-        notes.append(f"group '{label}': goes to {destination} (named in the prompt)")
-        tree = _append(tree, DraftNode("GoTo", {"target": destination}))
-    elif destination and base in MOVING_INTENTS and not _reaches(world, destination, _walked_places(tree)):
-        # "walk from the lobby to ward a" drafted as wandering in ward a: they walk there first, then
-        # do what the model added
-        notes.append(f"group '{label}': walks to {destination} before the model's {_kinds(tree)}")
-        tree = _prepend(DraftNode("GoTo", {"target": destination}), tree)
-    return tree
+        return core, []
+    steps = _steps(tree)
+    core_steps = _steps(core)
+    last = core_steps[-1] if core_steps else None
+    # The model's last step that does what the core's last step does (same node kind, same place).
+    done_at = -1
+    for i, step in enumerate(steps):
+        if last is not None and _same_step(world, step, last, group):
+            done_at = i
+    final_zone = _zone_of(world, _node_place(last) or "") if last is not None else None
+    if done_at >= 0:
+        before, after = steps[:done_at], steps[done_at + 1:]
+    else:
+        # The model never does the core itself: what it does where the core ends (wandering in the
+        # ward they are sent to) may follow the core; the rest is dropped.
+        after = [s for s in steps if s.node in TRAILING_EXTRAS and _node_place(s) is not None
+                 and _trailing_ok(world, s, final_zone, robot_zones or set())]
+        before = [s for s in steps if s not in after]
+    kept: list[DraftNode] = []
+    added: list[str] = []
+    dropped = [s for s in before if not any(_same_step(world, s, c, group) for c in core_steps)]
+    for step in after:
+        if step.node in TRAILING_EXTRAS and _trailing_ok(world, step, final_zone, robot_zones or set()):
+            step = _capped(step)
+            kept.append(step)
+            added.append(_describe(step, final_zone))
+        else:
+            dropped.append(step)
+    dropped = [s for s in dropped if s.node in ROUTINE_NODES]
+    if dropped:
+        notes.append(f"group '{label}': removed what the sentence does not ask for: "
+                     f"{', '.join(_describe(s, None, after=False) for s in dropped)}")
+    if done_at < 0 and not dropped:
+        notes.append(f"group '{label}': {group.intent} as the prompt says, instead of the model's {_kinds(tree)}")
+    if not kept:
+        return core, []
+    return _append_all(core, kept), added
 
 
-def _walked_places(tree: DraftNode) -> list[str]:
-    """Places a tree walks to (GoTo, the evacuation field), not those it only stays in."""
-    return [p for node in tree.walk() if node.node in WALKING_NODES for p in [_node_place(node)] if p]
+def _steps(tree: DraftNode) -> list[DraftNode]:
+    """The routine leaves of a tree in tick order (control nodes and conditions left out)."""
+    return [n for n in tree.walk() if not n.children and NODES.get(n.node) is not None
+            and NODES[n.node].category == "action"]
+
+
+def _same_step(world: World, have: DraftNode, want: DraftNode, group: GroupReading) -> bool:
+    if have.node != want.node:
+        if not ({have.node, want.node} <= {"Wait", "StopAndWaitTimerAction"}):
+            return False
+    a, b = _node_place(have), _node_place(want)
+    if b is None:
+        return a is None or want.node == "FollowVelocityField"
+    if a is None:
+        return False
+    if want.node == "Queue":
+        return a == b or _service_in(world, a) == b
+    if want.node in ("GoTo", "FollowVelocityField"):
+        return _reaches(world, b, [a]) if _zone_of(world, b) == b else a == b
+    return _zone_of(world, a) == _zone_of(world, b)
+
+
+def _trailing_ok(world: World, step: DraftNode, final_zone: str | None, robot_zones: set[str]) -> bool:
+    place = _node_place(step)
+    if place is None:
+        return True
+    zone = _zone_of(world, place)
+    return zone is not None and zone == final_zone and zone not in robot_zones
+
+
+def _capped(step: DraftNode) -> DraftNode:
+    ports = dict(step.ports)
+    for name in ("duration", "wait_duration"):
+        if name in ports:
+            try:
+                ports[name] = min(float(ports[name]), MAX_TRAILING_WAIT) or MAX_TRAILING_WAIT
+            except (TypeError, ValueError):
+                ports[name] = MAX_TRAILING_WAIT
+    return DraftNode(step.node, ports, step.children)
+
+
+def _describe(step: DraftNode, zone: str | None, after: bool = True) -> str:
+    """A step in words: "waits for 30 s afterwards" (kept after the core), "Wait 30 s" (dropped)."""
+    place = _node_place(step)
+    value = step.ports.get("duration", step.ports.get("wait_duration"))
+    seconds = float(value) if isinstance(value, (int, float)) else 0.0
+    duration = f" for {seconds:g} s" if seconds else ""
+    if not after:
+        return f"{step.node}" + (f"({place})" if place else "") + (f" {seconds:g} s" if seconds else "")
+    if step.node in ("Wait", "StopAndWaitTimerAction"):
+        return f"waits{duration} afterwards"
+    if step.node == "Wander":
+        return f"wanders in {place or zone}{duration} afterwards"
+    if step.node == "LookAtPoint":
+        return "looks around afterwards"
+    return f"{step.node}" + (f"({place})" if place else "")
 
 
 def _base_intent(group: GroupReading) -> str:
@@ -174,6 +326,15 @@ def _base_intent(group: GroupReading) -> str:
     if group.destination:
         return "walk"
     return "wait"
+
+
+def reacts_only(group: GroupReading) -> bool:
+    """The group's whole activity is its robot interaction: nowhere to go ("two visitors stare at the
+    robot in the lobby" are in the lobby, and what they do there is look at the robot). Followers go
+    where the robot goes: "follow the robot through the concourse" names the robot's way, not theirs."""
+    if not group.robot_interaction or group.intent != "robot":
+        return False
+    return group.robot_interaction == "follow" or (not group.destination and not group.via)
 
 
 def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) -> DraftNode:
@@ -193,30 +354,83 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     if base == "converse":
         spot = group.location or group.start or group.destination
         if spot is not None:
-            return DraftNode("Converse", {"target": spot, "duration": 60.0})
+            seconds = float(group.wait_seconds or CONVERSATION_SECONDS)
+            return _sequence(via + [DraftNode("Converse", {"target": spot, "duration": seconds})])
         base = "wait"
     if base == "wander":
-        zone = _zone_of(world, group.location or group.start or group.destination or "")
+        zone = _zone_of(world, group.location or group.destination or group.start or "")
         if zone:
-            return DraftNode("Wander", {"zone": zone, "duration": 120.0})
+            return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": float(group.wait_seconds or 0.0)})])
         base = "wait"
     if base == "wait":
+        if reacts_only(group):
+            return DraftNode("Wait", {"duration": float(group.wait_seconds or DEFAULT_WAIT_SECONDS)})
         place = group.location or group.destination
         if place is not None:
             steps.append(DraftNode("GoTo", {"target": place}))
         steps.append(DraftNode("Wait", {"duration": float(group.wait_seconds or DEFAULT_WAIT_SECONDS)}))
-        return DraftNode("Sequence", {}, tuple(via) + tuple(steps)) if len(steps) + len(via) > 1 else steps[0]
+        return _sequence(via + steps)
     # walk, evacuate, follow
     destination = group.destination
+    if base in ("walk", "evacuate") and _is_exit(world, destination):
+        # "leave through the back door", "walk to the exit": out of the building through that door (the
+        # field in an emergency, else the planned way to the door and through it)
+        return _sequence(via + [DraftNode("FollowVelocityField", {"exit": destination})])
     if destination is None and base == "evacuate":
         destination = _nearest_exit(world, group.start)
     if destination is None:
+        if evacuation_field:
+            # "get out", "leave" in an emergency: out along the field to the nearest exit
+            return _sequence(via + [DraftNode("FollowVelocityField", {"exit": _nearest_exit(world, group.start)})])
+        start = _zone_of(world, group.start or "")
+        onward = _largest_neighbour(world, start) if start and base == "walk" else None
+        if onward is not None:
+            # "people leave the big meeting room": out of it, into the largest room next to it
+            return _sequence(via + [DraftNode("GoTo", {"target": onward})])
         zone = _zone_of(world, group.start or group.location or "")
         if zone:
-            return DraftNode("Wander", {"zone": zone, "duration": 120.0})
+            return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": 0.0})])
         destination = _nearest_exit(world, None)
-    steps = via + [DraftNode("GoTo", {"target": destination})]
+    return _sequence(via + [DraftNode("GoTo", {"target": destination})])
+
+
+def _largest_neighbour(world: World, zone: str) -> str | None:
+    neighbours = sorted({door.leads_to if door.zone == zone else door.zone for door in world.doors_of(zone)}
+                        - {zone, "outside"})
+    return max(neighbours, key=lambda z: (world.zone(z).area, z)) if neighbours else None
+
+
+def onward_note(group: GroupReading, tree: DraftNode, world: World) -> str | None:
+    """What a group the sentence sends out of a place, but nowhere, is given to do: said as added."""
+    start = _zone_of(world, group.start or "")
+    if group.destination or not start or _base_intent(group) != "walk":
+        return None
+    onward = _largest_neighbour(world, start)
+    if onward is not None and any(n.node == "GoTo" and n.ports.get("target") == onward for n in tree.walk()):
+        return f"walks on to {onward} (the sentence says where they leave, not where they go)"
+    return None
+
+
+def _sequence(steps: list[DraftNode]) -> DraftNode:
     return steps[0] if len(steps) == 1 else DraftNode("Sequence", {}, tuple(steps))
+
+
+def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftNode, bool]:
+    """(tree, reacts_only): the group's robot interaction done for real (module doc)."""
+    interaction = group.robot_interaction or ""
+    if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
+        node, ports = ROBOT_ACTIVITIES[interaction]
+        ports = dict(ports)
+        for speed in ("max_vel", "runaway_vel"):  # "run up to the robot": at the group's pace
+            if speed in ports:
+                ports[speed] = round(ports[speed] * PACE_FACTORS.get(group.pace, 1.0), 2)
+        activity = DraftNode(node, ports)
+        if group.together:
+            return DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), activity)), True
+        return activity, True
+    if group.robot_reaction:
+        return with_reaction(tree, group.robot_reaction), False
+    return tree, False
 
 
 def with_reaction(tree: DraftNode, behavior: str) -> DraftNode:
@@ -226,17 +440,16 @@ def with_reaction(tree: DraftNode, behavior: str) -> DraftNode:
         return tree
     node, distance, duration, once = spec
     reaction = DraftNode("Sequence", {}, (
-        DraftNode("IsRobotVisible", {"distance": distance}),
+        DraftNode("IsRobotVisible", {"distance": max(distance, REACTION_TRIGGER.get(behavior, distance))}),
         DraftNode("ForceFailure", {}, (DraftNode(node, {"beh_duration": duration, "only_once": once}),)),
     ))
     return DraftNode("ReactiveFallback", {}, (reaction, tree))
 
 
-def _set_wait(tree: DraftNode, seconds: float) -> DraftNode:
-    ports = dict(tree.ports)
-    if tree.node == "Wait":
-        ports["duration"] = float(seconds)
-    return DraftNode(tree.node, ports, tuple(_set_wait(c, seconds) for c in tree.children))
+def _append_all(tree: DraftNode, steps: Sequence[DraftNode]) -> DraftNode:
+    for step in steps:
+        tree = _append(tree, step)
+    return tree
 
 
 def _append(tree: DraftNode, step: DraftNode) -> DraftNode:
@@ -262,7 +475,9 @@ def _target_ports(node: DraftNode) -> list[str]:
     return [p.name for p in spec.ports if p.type == "target"] if spec is not None else []
 
 
-def _node_place(node: DraftNode) -> str | None:
+def _node_place(node: DraftNode | None) -> str | None:
+    if node is None:
+        return None
     return next((node.ports[p] for p in _target_ports(node) if p in node.ports), None)
 
 
@@ -287,16 +502,6 @@ def _reaches(world: World, goal: str, places: Sequence[str]) -> bool:
     if goal in places:
         return True
     return _zone_of(world, goal) == goal and any(_zone_of(world, p) == goal for p in places)
-
-
-def _same_place(world: World, have: str | None, want: str, intent: str) -> bool:
-    if have is None:
-        return False
-    if have == want:
-        return True
-    if intent == "queue":
-        return _service_in(world, want) == have or _service_in(world, have) == want
-    return _zone_of(world, have) == _zone_of(world, want)
 
 
 def _stationary_place(group: GroupReading, world: World, intent: str) -> str | None:
@@ -339,119 +544,388 @@ def _nearest_exit(world: World, start: str | None) -> str:
     return min(exits, key=lambda d: (math.hypot(d.position[0] - cx, d.position[1] - cy), d.name)).name
 
 
-def _spawn(group: GroupReading, d: DraftGroup | None, world: World, default: str, tree: DraftNode) -> str:
+def _spawn(group: GroupReading, d: DraftGroup | None, world: World, default: str, tree: DraftNode,
+           robot_zones: set[str] | None = None) -> str:
     """Where the group starts: the reading's start; for stationary groups the place they are; else the
-    model's spawn unless it is where they are sent, then the largest room next to it."""
+    model's spawn unless it is where they are sent or a place of the robot's clause only, then the
+    largest room next to where they go."""
+    robot_zones = robot_zones or set()
     for name in (group.start, group.location if _base_intent(group) in STATIONARY_NODES else None):
         zone = _zone_of(world, name or "")
         if zone:
             return zone
+    own = {_zone_of(world, p) for p in (group.destination, group.location, *group.via) if p}
     spawn = _zone_of(world, d.spawn) if d is not None else None
-    spawn = spawn or default
+    if spawn in robot_zones and spawn not in own:
+        spawn = None  # the robot's clause is not where this group is
+    spawn = spawn or (default if default not in robot_zones or default in own else None)
     first = next((p for p in _tree_places(tree)), None)
+    if spawn is None:
+        spawn = _zone_of(world, first or "") or default
     if first is not None and _zone_of(world, first) == spawn and _base_intent(group) not in STATIONARY_NODES:
         neighbours = sorted({door.leads_to if door.zone == spawn else door.zone for door in world.doors_of(spawn)}
-                            - {spawn, "outside"})
+                            - {spawn, "outside"} - (robot_zones - own))
         if neighbours:
             return max(neighbours, key=lambda z: (world.zone(z).area, z))
     return spawn
 
 
-# ---- the grounding report -------------------------------------------------------------------
-
-_INTENT_NODES = {"queue": {"Queue"}, "converse": {"Converse", "ConversationFormation"}, "wander": {"Wander"},
-                 "wait": {"Wait", "StopAndWaitTimerAction", "Queue"},
-                 # with no destination named, walking along the evacuation field (to the nearest exit) is walking
-                 "walk": {"GoTo", "Wander", "FollowVelocityField"},
-                 "follow": {"GoTo", "FollowAgent", "Wander"}, "evacuate": {"GoTo", "FollowVelocityField"}}
-# A walk with a destination must walk there; wandering is a walk only when no destination is named.
-
+# ---- the planned grounding report -------------------------------------------------------------
 
 def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: World,
-                     repairs: Sequence[str] = ()) -> GroundingReport:
-    """What the sentence asked beside what the scenario does, per reading group.
+                     repairs: Sequence[str] = (), *, robot: Any = None, sentence: PromptReading | None = None,
+                     walking_speed: float = 1.0) -> GroundingReport:
+    """What the sentence asked, as claims a run can check, per reading group and for the robot.
 
     `groups` are post-processing's GroupPlans (reading_index, label, count, spawn, tree, behavior,
-    member_ids); `agents` its AgentPlans."""
+    member_ids, added); `agents` its AgentPlans (start, targets, max_vel). `robot` is the planned
+    RobotSpec; `sentence` the reading before a user's count edits (default `reading`);
+    `walking_speed` the preset's normal pace, for slow and fast."""
+    sentence = sentence or reading
     by_reading = {g.reading_index: g for g in groups if getattr(g, "reading_index", None) is not None}
     counts = effective_counts(reading)
+    asked_counts = effective_counts(sentence)
+    members_of = {g.index: [a for a in agents if a.group_index == g.index] for g in groups}
+    robot_seconds = _robot_seconds(robot)
     out: list[GroupGrounding] = []
     unhonoured: list[str] = [f"'{p}' is not a place of world '{world.name}'" for p in reading.unknown_places]
     unhonoured += list(reading.notes)
     if not reading.groups and groups:
-        # The older word rules placed the model's groups: say that nothing here was read from the
-        # sentence rather than let the report look clean.
         guessed = ", ".join(f"{g.label} x{g.count}" for g in groups)
         unhonoured.append(f"no group of people was read from the sentence: the scenario's groups ({guessed}) are "
                           f"the model's guess, placed by word rules")
+    questions: list[str] = []
     for index, r in enumerate(reading.groups):
         g = by_reading.get(index)
+        unsure = tuple(question(r.who, r, c) for c in r.confidence if c.unsure)
+        questions += unsure
         if g is None:
             if counts.get(index, 0) > 0:
                 unhonoured.append(f"'{r.who}' has no group in the scenario")
             continue
-        checks = [_check_count(r, counts.get(index, 0), g)]
-        spread = getattr(g, "spawn_zones", None)  # a crowd the sentence places nowhere, spread over the building
-        checks.append(_check_place("start", r.start, f"across the building ({len(spread)} zones)" if spread else g.spawn,
-                                   world, zone_level=True))
-        places = _tree_places(g.tree)
-        if r.destination:
-            does = r.destination if _reaches(world, r.destination, places) else (places[-1] if places else "nowhere")
-            checks.append(GroundingCheck("destination", r.destination, does, does == r.destination,
-                                         "" if does == r.destination else "the trees never go there"))
-        else:
-            checks.append(GroundingCheck("destination", "-", places[-1] if places else "-", True,
-                                         "the sentence names none"))
-        checks.append(_check_behavior(r, g, world))
-        asked = r.robot_reaction or "-"
-        does = getattr(g, "behavior", "Regular")
-        reacts = any(n.node in ROBOT_REACTIONS for n in g.tree.walk())
-        if r.robot_reaction:
-            ok = does == r.robot_reaction and reacts
-            checks.append(GroundingCheck("robot reaction", asked, does + (" (in tree)" if reacts else ""), ok,
-                                         "" if ok else "the reaction is not in the agents' trees"))
-        else:
-            checks.append(GroundingCheck("robot reaction", asked, does, True, "the sentence asks for none"))
-        out.append(GroupGrounding(r.who, g.label, tuple(checks), tuple(g.member_ids)))
+        agents_here = members_of.get(g.index, [])
+        original = sentence.groups[index] if index < len(sentence.groups) else r
+        claims = [_count_claim(original, asked_counts.get(index, 0), counts.get(index, 0), g)]
+        edit = ""
+        if counts.get(index, 0) != asked_counts.get(index, 0):
+            edit = (f"the sentence asked {asked_counts.get(index, 0)} ('{original.who}'); "
+                    f"you changed it to {counts.get(index, 0)}")
+        claims += _group_claims(r, g, agents_here, world, reading, by_reading, walking_speed, robot_seconds)
+        out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
+                                  tuple(getattr(g, "added", ()) or ()), unsure, edit))
+    robot_row = _robot_row(reading.robot, robot, world, agents)
+    if robot_row is not None:
+        questions += robot_row.unsure
     return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),
-                           tuple(reading.corrections))
+                           tuple(reading.corrections), robot_row, tuple(dict.fromkeys(questions)))
 
 
-def _check_count(r: GroupReading, wanted: int, g: Any) -> GroundingCheck:
-    c = r.count
-    asked = str(c.value) if c.kind == "exact" else f"{c.value} ({c.kind} {c.low}-{c.high})"
+def reading_questions(reading: PromptReading) -> list[str]:
+    """Every question about the fields the reader was unsure of, groups first, then the robot."""
+    out = [question(g.who, g, c) for g in reading.groups for c in g.confidence if c.unsure]
+    if reading.robot is not None:
+        out += [question("the robot", reading.robot, c) for c in reading.robot.confidence if c.unsure]
+    return list(dict.fromkeys(out))
+
+
+def question(who: str, subject: GroupReading | RobotReading, confidence: FieldConfidence) -> str:
+    """The question the app asks (and `--strict` refuses with) for an unsure field."""
+    value = getattr(subject, confidence.field, None) if confidence.field != "group" else who
+    if hasattr(value, "value"):
+        value = getattr(value, "value")
+    choices = list(dict.fromkeys([str(v) for v in (value,) if v not in (None, "")]
+                                 + [str(a) for a in confidence.alternatives]))
+    what = f"'{who}' {confidence.field}" if confidence.field != "group" else f"'{who}'"
+    text = f"{what}: {' or '.join(choices)}?" if choices else f"{what}?"
+    return text + (f" ({confidence.reason})" if confidence.reason else "")
+
+
+def _count_claim(original: GroupReading, asked: int, wanted: int, g: Any) -> Claim:
+    c = original.count
+    text = str(c.value) if c.kind == "exact" else f"{c.value} ({c.kind} {c.low}-{c.high})"
     if c.parties:
-        asked += f", {c.parties} x {c.party_size}"
-    if wanted != c.value:
-        asked += f"; {wanted} of its own"
-    ok = g.count == wanted
-    return GroundingCheck("count", asked, str(g.count), ok, "" if ok else "the group's size differs")
+        text += f", {c.parties} x {c.party_size}"
+    if asked != c.value:
+        text += f"; {asked} of its own"
+    plan = f"{g.count} {'person' if g.count == 1 else 'people'}"
+    if wanted != asked:
+        plan += f" (edited from {asked})"
+    if g.count != wanted:
+        return Claim("count", text, plan, FAILS, f"the scenario has {g.count}, not {wanted}")
+    return Claim("count", text, plan)
 
 
-def _check_place(field: str, asked: str | None, does: str, world: World, zone_level: bool) -> GroundingCheck:
-    if not asked:
-        return GroundingCheck(field, "-", does, True, "the sentence names none")
-    want = _zone_of(world, asked) if zone_level else asked
-    ok = want == does
-    return GroundingCheck(field, asked, does, ok, "" if ok else f"they start in {does}")
-
-
-def _check_behavior(r: GroupReading, g: Any, world: World) -> GroundingCheck:
+def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, reading: PromptReading,
+                  by_reading: dict[Any, Any], walking_speed: float, robot_seconds: float) -> list[Claim]:
+    claims: list[Claim] = []
+    n = max(1, g.count)
+    speed = min((a.max_vel for a in agents), default=walking_speed) or walking_speed
+    if r.start:
+        zone = _zone_of(world, r.start)
+        spread = getattr(g, "spawn_zones", None)
+        plan = f"across the building ({len(spread)} zones)" if spread else f"start in {g.spawn}"
+        ok = not spread and zone == g.spawn
+        claims.append(Claim("start", r.start, plan, PLANNED if ok else FAILS,
+                            "" if ok else f"they start in {g.spawn if not spread else 'several zones'}", zone=zone,
+                            place=r.start, share=1.0))
+    tree_nodes = {node.node for node in g.tree.walk()}
     base = _base_intent(r)
-    nodes = {n.node for n in g.tree.walk()}
-    asked = r.intent + (f" ({r.robot_interaction} the robot)" if r.robot_interaction else "")
-    if r.wait_seconds:
-        asked += f" {r.wait_seconds:g} s"
-    if is_idle(g.tree):
-        return GroundingCheck("behavior", asked, "nothing (idle tree)", False, "the tree has no action")
-    wanted = _INTENT_NODES.get(base, set())
-    if base in MOVING_INTENTS and r.destination:
-        wanted = set(WALKING_NODES)
-    does = ", ".join(sorted(nodes & ROUTINE_NODES)) or "nothing"
-    ok = bool(nodes & wanted)
-    reason = ""
-    if not ok:
-        reason = f"no {'/'.join(sorted(wanted))} node"
-    if base == "follow" and "FollowAgent" not in nodes:
-        reason = "following one person is played as walking to the same place"
-    return GroundingCheck("behavior", asked, does, ok, reason)
+    for v in () if reacts_only(r) else r.via:
+        claims.append(_place_claim("reach", v, f"walk through {v}", world, n, _eta(agents, v, world, speed)))
+    if r.robot_interaction:
+        claims.append(_reaction_claim(r, g, robot_seconds))
+        if reacts_only(r):
+            base = "none"
+            zone = _zone_of(world, r.location or "")
+            if zone and not r.start:
+                # "a cleaner stands in the robot's way in the corridor": that is where they are at first
+                claims.append(Claim("start", r.location or zone, f"start in {g.spawn}", PLANNED if zone == g.spawn
+                                    else FAILS, "" if zone == g.spawn else f"they start in {g.spawn}", zone=zone,
+                                    place=r.location, share=1.0))
+    if base == "walk" and _is_exit(world, r.destination):
+        base = "evacuate"  # walking out through an exit door is leaving the building through it
+    if base == "walk" or base == "follow":
+        if r.destination:
+            claim = _place_claim("reach", r.destination, f"walk to {r.destination}", world, n,
+                                 _eta(agents, r.destination, world, speed))
+            if not _reaches(world, r.destination, _tree_places(g.tree)):
+                claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there", zone=claim.zone,
+                              place=claim.place, point=claim.point, radius=claim.radius)
+            claims.append(claim)
+        elif "FollowVelocityField" in tree_nodes:
+            claims.append(Claim("evacuate", "walk out (no destination named)", "follow the evacuation field to "
+                                "the nearest exit", needs_seconds=_evacuation_eta(agents, world, speed, n)))
+        elif r.start and _zone_of(world, r.start):
+            # "people leave the big meeting room": out of it, wherever to
+            zone = _zone_of(world, r.start)
+            claims.append(Claim("leave", r.start, "walk out" if "Wander" not in tree_nodes else f"wander in {zone}",
+                                zone=zone, place=r.start, needs_seconds=_eta(agents, None, world, speed) + 20.0))
+        else:
+            claims.append(Claim("move", "walk (no destination named)",
+                                "wander where they are" if "Wander" in tree_nodes else "walk",
+                                needs_seconds=20.0))
+        if base == "follow" and r.follows:
+            leader = _leader(reading, r, by_reading)
+            if leader is not None:
+                claims.append(Claim("follow_person", f"follow {r.follows}", f"walk with {leader.label}",
+                                    partners=tuple(leader.member_ids), distance=3.0, share=0.9))
+    elif base == "evacuate":
+        exits: tuple[str, ...] = (r.destination,) if r.destination and _is_exit(world, r.destination) else ()
+        unsure = r.confidence_of("destination")
+        if exits and unsure is not None and unsure.unsure:
+            # the reader could not tell which exit ("the nearest exit"): any it weighed
+            exits = tuple(dict.fromkeys(e for e in (*exits, *unsure.alternatives) if _is_exit(world, e)))
+        if r.destination and not exits:
+            claims.append(_place_claim("reach", r.destination, f"evacuate to {r.destination}", world, n,
+                                       _eta(agents, r.destination, world, speed)))
+        else:
+            claims.append(Claim("evacuate", r.destination or "any exit",
+                                "follow the evacuation field" if "FollowVelocityField" in tree_nodes else "walk out",
+                                exits=exits, needs_seconds=_evacuation_eta(agents, world, speed, n)))
+    elif base == "queue":
+        service = next((node.ports.get("service_point") for node in g.tree.walk() if node.node == "Queue"), None)
+        place = r.location or r.destination or service
+        if service is None:
+            claims.append(Claim("queue", place or "-", "no queue in the trees", FAILS, "the trees never queue"))
+        else:
+            service_time = next((float(node.ports.get("service_time", 10.0)) for node in g.tree.walk()
+                                 if node.node == "Queue"), 10.0)
+            claims.append(Claim("queue", place or service, f"queue at {service}", place=service,
+                                zone=_zone_of(world, service),
+                                needs_seconds=_eta(agents, service, world, speed) + service_time + 15.0))
+    elif base == "wait":
+        place = r.location or r.destination
+        seconds = float(r.wait_seconds) if r.wait_seconds else None
+        if place:
+            claim = _place_claim("stay", place, f"wait at {place}" + (f" {seconds:g} s" if seconds else ""), world,
+                                 n, _eta(agents, place, world, speed) + (seconds or 0.0), stay=True)
+        else:
+            claim = Claim("stay", "where they are", f"wait in {g.spawn}", zone=g.spawn, place=g.spawn,
+                          needs_seconds=(seconds or 10.0) + 5.0)
+        claims.append(replace_seconds(claim, seconds))
+    elif base == "wander":
+        zone = _zone_of(world, r.location or r.destination or r.start or "") or g.spawn
+        claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
+                            needs_seconds=_eta(agents, zone, world, speed) + 20.0))
+    elif base == "converse":
+        spot = r.location or r.start or r.destination
+        zone = _zone_of(world, spot or "") or g.spawn
+        partners = tuple(g.member_ids)
+        if "Converse" not in tree_nodes and "ConversationFormation" not in tree_nodes:
+            claims.append(Claim("converse", "talk together", "no conversation in the trees", FAILS,
+                                "the trees never talk"))
+        elif g.count < 2:
+            claims.append(Claim("converse", "talk", "one person alone", FAILS, "a conversation needs two people"))
+        else:
+            claims.append(Claim("converse", "talk together" + (f" in {zone}" if zone else ""),
+                                f"a conversation circle in {zone}", zone=zone, place=spot, partners=partners,
+                                needs_seconds=_eta(agents, spot or zone, world, speed) + 15.0))
+    if r.pace in ("slow", "fast"):
+        normal = walking_speed
+        low, high = (0.2, round(0.85 * normal, 2)) if r.pace == "slow" else (round(1.15 * normal, 2), 3.0)
+        # "run up to the robot": the pace on the way to it (once there they keep the robot's)
+        reach = REACTION_DISTANCE[r.robot_interaction] + 0.5 if r.robot_interaction in ("approach", "follow") \
+            else None
+        claims.append(Claim("pace", r.pace, f"desired speed {speed:.2f} m/s" + (" on the way to the robot" if reach
+                                                                                 else ""),
+                            low=low, high=high, distance=reach, needs_seconds=15.0))
+    return claims
+
+
+def replace_seconds(claim: Claim, seconds: float | None) -> Claim:
+    if seconds is None:
+        return claim
+    return Claim(claim.kind, claim.asked + f" for {seconds:g} s", claim.plan, claim.status, claim.evidence,
+                 claim.needs_seconds, claim.zone, claim.place, claim.point, claim.radius, seconds=seconds,
+                 share=claim.share)
+
+
+def _reaction_claim(r: GroupReading, g: Any, robot_seconds: float) -> Claim:
+    interaction = r.robot_interaction or ""
+    kind = f"robot_{interaction}"
+    nodes = [node.node for node in g.tree.walk() if node.node in ROBOT_ACTIVITY_NODES or node.node in ROBOT_REACTIONS]
+    plan = ", ".join(dict.fromkeys(nodes)) or "no reaction in the trees"
+    asked = f"{interaction} the robot"
+    if not nodes:
+        return Claim(kind, asked, plan, FAILS, "the trees never react to the robot")
+    share = 0.5 if interaction == "block" else 0.9
+    return Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
+                 needs_seconds=robot_seconds + 10.0)
+
+
+ROBOT_ACTIVITY_NODES = frozenset(node for node, _ in ROBOT_ACTIVITIES.values())
+
+
+def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: float, stay: bool = False) -> Claim:
+    """A claim about being at a place: a zone's polygon, or near a door's or thing's point."""
+    try:
+        obj = world.find(place)
+    except Exception:
+        return Claim(kind, place, plan, FAILS, f"'{place}' is not a place of the world")
+    if isinstance(obj, Entity):
+        point = obj.interaction_point
+    elif isinstance(obj, Door):
+        point = obj.inward_point(0.6)
+    else:
+        return Claim(kind, place, plan, zone=obj.name, place=place, needs_seconds=round(eta, 1))
+    # people sent to one point stand beside each other: the more of them, the wider the spot
+    radius = (2.0 if stay else 1.0) + 0.5 * math.sqrt(n)
+    return Claim(kind, place, plan, place=place, point=(round(float(point[0]), 3), round(float(point[1]), 3)),
+                 radius=round(radius, 2), needs_seconds=round(eta, 1))
+
+
+def _route_length(agent: Any, upto: str | None, world: World) -> float:
+    """Straight-line legs from the agent's start through its targets, up to the first at `upto`."""
+    length, here = 0.0, agent.start
+    zone = _zone_of(world, upto or "") if upto else None
+    for name, point in getattr(agent, "targets", ()):
+        length += math.dist(here, point)
+        here = point
+        if upto is not None and (name == upto or (zone is not None and _zone_of(world, name) == zone
+                                                  and _zone_of(world, upto) == upto)):
+            return length
+    if upto is not None and zone is not None:
+        # not among the targets: as the crow flies to the zone's centre
+        try:
+            return length + math.dist(here, world.zone(zone).centroid)
+        except Exception:
+            return length
+    return length
+
+
+def _eta(agents: Sequence[Any], place: str | None, world: World, speed: float) -> float:
+    """Seconds the slowest member needs to get to `place` (detours 1.5 times the straight legs), plus slack."""
+    if not agents:
+        return 30.0
+    longest = max(_route_length(a, place, world) for a in agents)
+    return round(1.5 * longest / max(speed, 0.1) + 10.0, 1)
+
+
+def _evacuation_eta(agents: Sequence[Any], world: World, speed: float, n: int) -> float:
+    exits = world.exits()
+    if not agents or not exits:
+        return 60.0
+    longest = max(min(math.dist(a.start, d.position) for d in exits) for a in agents)
+    # the last of n people through a door about 1 person/s/m wide
+    flow = sum(d.width for d in exits) or 1.0
+    return round(1.8 * longest / max(speed, 0.1) + n / flow + 10.0, 1)
+
+
+def _robot_seconds(robot: Any) -> float:
+    """How long the robot takes along its planned path (the time a reaction to it needs at most)."""
+    if robot is None or not getattr(robot, "path", None):
+        return 30.0
+    path = list(robot.path)
+    length = sum(math.dist(a, b) for a, b in zip(path, path[1:]))
+    return round(length / max(float(robot.max_vel), 0.1), 1)
+
+
+def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[Any, Any]) -> Any:
+    follows = {lemma(w) for w in words(r.follows or "")}
+    for i, other in enumerate(reading.groups):
+        if other is r:
+            continue
+        if follows & ({lemma(w) for w in words(other.who)} | {other.label, lemma(other.label)}):
+            return by_reading.get(i)
+    return None
+
+
+# ---- the robot's row --------------------------------------------------------------------------
+
+def _robot_row(asked: RobotReading | None, robot: Any, world: World, agents: Sequence[Any]) -> RobotGrounding | None:
+    if robot is None:
+        if asked is None:
+            return None
+        return RobotGrounding(asked.task, asked.text, (Claim(f"robot_{asked.task}", asked.task, "no robot",
+                                                             FAILS, "the scenario has no robot"),))
+    path = list(getattr(robot, "path", ()) or (robot.start, robot.goal))
+    length = sum(math.dist(a, b) for a, b in zip(path, path[1:]))
+    seconds = length / max(float(robot.max_vel), 0.1)
+    task = getattr(robot, "task", "cross")
+    plan = (f"{task} from ({robot.start[0]:.1f}, {robot.start[1]:.1f}) to ({robot.goal[0]:.1f}, "
+            f"{robot.goal[1]:.1f}), {length:.0f} m" if task != "wait" else
+            f"wait at ({robot.start[0]:.1f}, {robot.start[1]:.1f})")
+    if asked is None:
+        return RobotGrounding("pass", "", (), plan + " (the sentence asks nothing of it)")
+    unsure = tuple(question("the robot", asked, c) for c in asked.confidence if c.unsure)
+    claims: list[Claim] = []
+    if asked.task in ("cross", "patrol"):
+        if asked.start:
+            claims.append(_robot_start_claim(asked.start, robot, world))
+        for v in asked.via:
+            claim = _place_claim("robot_via", v, f"drive through {v}", world, 1, seconds * 1.3 + 10.0)
+            claims.append(claim)
+        if asked.destination:
+            kind = "robot_patrol" if asked.task == "patrol" else "robot_reach"
+            plan_text = f"{'patrol to' if kind == 'robot_patrol' else 'drive to'} {asked.destination}"
+            claim = _place_claim(kind, asked.destination, plan_text, world, 1,
+                                 (2.6 if kind == "robot_patrol" else 1.3) * seconds + 10.0)
+            claims.append(claim)
+        elif asked.task == "patrol":
+            claims.append(Claim("robot_patrol", asked.location or "its round", "drive its round and back",
+                                point=(round(robot.goal[0], 3), round(robot.goal[1], 3)), radius=1.0,
+                                needs_seconds=round(2.6 * seconds + 10.0, 1)))
+    elif asked.task == "wait":
+        where = asked.location or asked.destination or asked.start
+        claims.append(Claim("robot_stay", where or "where it is", f"wait at ({robot.start[0]:.1f}, "
+                            f"{robot.start[1]:.1f})", point=(round(robot.start[0], 3), round(robot.start[1], 3)),
+                            radius=1.0, place=where, needs_seconds=10.0))
+    elif asked.task == "follow":
+        follows = tuple(getattr(robot, "follows", ()) or ())
+        if follows:
+            claims.append(Claim("robot_follow_person", "follow " + (asked.text or "someone"),
+                                f"follow agents {', '.join(map(str, follows))}", partners=follows, distance=3.0,
+                                needs_seconds=30.0))
+        else:
+            claims.append(Claim("robot_follow_person", "follow someone", "nobody to follow", FAILS,
+                                "no group of the sentence is the one the robot follows"))
+    return RobotGrounding(asked.task, asked.text, tuple(claims), plan, unsure)
+
+
+def _robot_start_claim(start: str, robot: Any, world: World) -> Claim:
+    zone = _zone_of(world, start)
+    actual = world.zone_at(robot.start[0], robot.start[1])
+    ok = zone is not None and actual is not None and actual.name == zone
+    return Claim("robot_reach", f"start in {start}", f"start at ({robot.start[0]:.1f}, {robot.start[1]:.1f})",
+                 PLANNED if ok else FAILS, "" if ok else f"it starts in {actual.name if actual else 'no zone'}",
+                 zone=zone, place=start, needs_seconds=0.0)

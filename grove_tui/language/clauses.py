@@ -125,6 +125,10 @@ class Clauses:
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
             return self._purpose(scan, i, i + 2, i + 4)
+        if w in lx.PLACE_SEQUELS and scan.c.places and scan.c.places[-1].end == i:
+            sequel = self._sequel(scan, i)
+            if sequel is not None:
+                return self._add_place(scan, sequel, i)
         prep = s.preposition(i)
         if prep is not None:
             name, width = prep
@@ -137,6 +141,21 @@ class Clauses:
                 return self._add_place(scan, place, i)
             return False
         return self._verb_object(scan, i, nxt)
+
+    def _sequel(self, scan: _Scan, i: int) -> Place | None:
+        """A place said right after another with no preposition of its own, in the same role: the
+        next stop of a route ("walk to the café and then the pharmacy", "from ward A, then ward B")."""
+        s = self.s
+        before = scan.c.places[-1]
+        if before.prep in ("for", "purpose") or before.match is None:
+            return None
+        k = s.skip(i, lx.PLACE_SEQUELS)
+        if k >= s.n or k not in scan.own or s.preposition(k) is not None or s.verb_follows(k):
+            return None
+        place = self.places.phrase(k, before.prep, i, record_unknown=False)
+        if place is None or place.match is None or place.match.name == before.match.name:
+            return None
+        return replace(place, sequel=True)
 
     def _take(self, scan: _Scan, first: int, end: int) -> None:
         scan.used.update(range(first, end))
@@ -351,6 +370,15 @@ class Clauses:
                 break
         if any(s.verb(i) in lx.DEPARTURE_VERBS for i in own) and any(s.low[i] in lx.IMMEDIACY_WORDS for i in own):
             c.evacuate = True  # "everyone must leave immediately through the customs exit"
+        for i in own:
+            if s.verb(i) in lx.PERCEPTION_VERBS and any(
+                    s.low[k] in lx.EVACUATION_CUES or self.hazard(k) for k in range(i + 1, min(i + 5, s.n))
+                    if not s.is_punct(k)):
+                # "hear the alarm", "smell smoke": people who notice a hazard and do nothing else leave
+                c.evacuate = True
+                if c.intent is None or c.intent in lx.STATIONARY_INTENTS and c.verb_index == i:
+                    c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", s.verb(i), i, True, True
+                break
 
     def _followed(self, c: Clause) -> None:
         """Whom a follower follows: the person after the verb ("follow the charge nurse"), the group

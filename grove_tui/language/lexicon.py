@@ -55,6 +55,8 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
 }
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
+# Words between two places of one route, the second with no preposition ("to the café and then the pharmacy").
+PLACE_SEQUELS = frozenset({"and", "then", ",", "afterwards", "finally"})
 # Collectives that also name the kind of a collective after them ("a tour group", "a family party").
 MODIFYING_COLLECTIVES = frozenset({"tour", "family", "class", "delegation"})
 # Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
@@ -352,6 +354,8 @@ TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "fam
 EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates evacuated alarm flee escape drill alert".split())
 # Hazards that, named on their own ("Fire!", "Smoke in the kitchen!", "a gas leak"), make leaving an
 # evacuation; as the first word of a compound ("fire exit", "smoke detector") they only name a thing.
+# Verbs of noticing: noticing an alarm or a hazard, and nothing else said, is leaving ("hear the alarm").
+PERCEPTION_VERBS = frozenset("hear smell see notice spot sense detect".split())
 HAZARD_NOUNS = frozenset("fire smoke blaze flames bomb scare leak flood flooding explosion threat "
                          "emergency".split())
 # Phrasal verbs of getting everybody out: an evacuation in any building ("get out", "empty out").

@@ -33,6 +33,7 @@ class Place:
     score: float = 1.0  # how sure the match is (1.0: the phrase holds the place's whole name or an alias)
     reason: str = ""
     alternatives: tuple[str, ...] = ()  # other places the phrase fits as well
+    sequel: bool = False  # said after the place before, in its role ("to the café and then the pharmacy")
 
 
 def place_confidences(roles: dict[str, str | None], via: Sequence[str],

@@ -40,7 +40,11 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         roles.read_from.setdefault(name, p)
         role = role_of(index, p, verb, verb_index, stationary, intent, p in scene_places)
         marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
-        if role == "start" and (roles.start is None or narrower(index, name, roles.start)):
+        if p.sequel and role == "destination" and roles.destination is not None and name not in roles.via:
+            # "to the café and then the pharmacy": the café on the way, the pharmacy where they end
+            roles.via.append(roles.destination)
+            roles.destination = name
+        elif role == "start" and (roles.start is None or narrower(index, name, roles.start)):
             roles.start = name
         elif role == "destination" and (roles.destination is None or narrower(index, name, roles.destination)
                                         or (marked and not said_to)):

@@ -7,6 +7,8 @@ segments are exact, so the grid does not depend on how finely walls were rasteri
 
 from __future__ import annotations
 
+from typing import Any
+
 import math
 import os
 from collections import OrderedDict
@@ -50,6 +52,9 @@ class OccupancyGrid:
     inflation: float                     # radius the free space was shrunk by
     world_name: str = ""
     _nearest: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)
+    # The World build_grid rasterised (None for a grid read from a file): planners of the grid use its
+    # zones and doors (navigation/door_graph.py). Not saved.
+    world: Any = field(default=None, repr=False)
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -230,7 +235,7 @@ def _rasterize(world: World, resolution: float, inflation: float) -> OccupancyGr
     _mark_near_segments(occupied, world.walls(), origin, resolution, radius)
     occupied.flags.writeable = False
     return OccupancyGrid(origin=origin, resolution=resolution, occupied=occupied, inflation=inflation,
-                         world_name=world.name)
+                         world_name=world.name, world=world)
 
 
 _GRIDS: OrderedDict[tuple[str, float, float], OccupancyGrid] = OrderedDict()

@@ -28,7 +28,7 @@ from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
 from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
 from grove_tui.limits import MAX_PADDED_COORDINATE as MAX_COORDINATE
-from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, any_angle_distances, line_of_sight
+from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, line_of_sight
 
 _DR = np.array([0, 0, 1, -1, 1, 1, -1, -1], dtype=np.int64)
 _DC = np.array([1, -1, 0, 0, 1, -1, 1, -1], dtype=np.int64)
@@ -320,7 +320,8 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     height, width = occupied.shape
     ex, ey = float(exit_point[0]), float(exit_point[1])
     er, ec = planner.snap(ex, ey, exit_label, "exit")
-    _distance, parent = any_angle_distances(planner.sight_rows, planner.sight_cols, er, ec)
+    # the exit's shortest-path tree, shared with the exit choice and every other field to this exit
+    _distance, parent = planner.geodesic(er, ec)
     parent = parent.reshape(height, width)
     res = planner.resolution
     exit_cx = (ex - planner.centre_x) / res
@@ -335,11 +336,21 @@ def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
     if len(path) >= 2:
         path_cells = np.column_stack(((path[:, 0] - planner.centre_x) / res, (path[:, 1] - planner.centre_y) / res))
         samples = _resample(path_cells, spacing)
-        rows, cols = np.nonzero(parent >= 0)
+        # only cells within the capture radius of the path pursue it: look for nearest samples there
+        capture = CAPTURE_RADIUS / res
+        c0 = max(int(math.floor(samples[:, 0].min() - capture)), 0)
+        c1 = min(int(math.ceil(samples[:, 0].max() + capture)) + 1, width)
+        r0 = max(int(math.floor(samples[:, 1].min() - capture)), 0)
+        r1 = min(int(math.ceil(samples[:, 1].max() + capture)) + 1, height)
+        rows, cols = np.nonzero(parent[r0:r1, c0:c1] >= 0)
+        rows += r0
+        cols += c0
         if len(rows):
-            distances, indices = cKDTree(samples).query(np.column_stack((cols, rows)).astype(np.float64))
-            nearest[rows, cols] = indices
-            nearest_distance[rows, cols] = distances
+            distances, indices = cKDTree(samples).query(np.column_stack((cols, rows)).astype(np.float64),
+                                                        distance_upper_bound=capture)
+            near = np.isfinite(distances)
+            nearest[rows[near], cols[near]] = indices[near]
+            nearest_distance[rows[near], cols[near]] = distances[near]
     else:
         samples = np.array([[exit_cx, exit_cy]], dtype=np.float64)
     vectors = np.zeros((height, width, 2), dtype=np.float32)
@@ -354,21 +365,26 @@ def exit_walks(planner: ThetaStarPlanner, exits: dict[str, tuple[float, float]],
                starts: list[tuple[float, float]]) -> tuple[list[str], np.ndarray]:
     """Exit names (sorted) and the (exits, starts) matrix of walking distances in metres from each start.
 
-    One any-angle Dijkstra per exit covers every start, so this costs the same for 10 people or
-    10,000. A start that reaches no exit raises PlanningError; an unreachable pair is inf.
+    With the planner's door graph (a world planner, every exit one of its doors) a walk is the leg to
+    a door of the start's zone plus the graph's door-to-exit distance: milliseconds for any crowd.
+    Otherwise one any-angle Dijkstra per exit covers every start (shared with the fields to that
+    exit). A start that reaches no exit raises PlanningError; an unreachable pair is inf.
     """
     names = sorted(exits)
     height, width = planner.occupied.shape
     walks = np.full((len(names), len(starts)), np.inf)
     start_cells = []
     for x, y in starts:
-        row, col = planner.snap(float(x), float(y), f"({x:.2f}, {y:.2f})", "start")
-        start_cells.append(row * width + col)
-    flat = np.asarray(start_cells, dtype=np.int64)
-    for k, name in enumerate(names):
-        er, ec = planner.snap(*exits[name], name, "exit")
-        distance, _parent = any_angle_distances(planner.sight_rows, planner.sight_cols, er, ec)
-        walks[k] = distance[flat] * planner.resolution  # cells to metres
+        start_cells.append(planner.snap(float(x), float(y), f"({x:.2f}, {y:.2f})", "start"))
+    graph = planner.door_graph
+    if graph is not None and all(name in graph.door_names for name in names):
+        walks = graph.walks(start_cells, [graph.door_names.index(name) for name in names])
+    else:
+        flat = np.asarray([r * width + c for r, c in start_cells], dtype=np.int64)
+        for k, name in enumerate(names):
+            er, ec = planner.snap(*exits[name], name, "exit")
+            distance, _parent = planner.geodesic(er, ec)
+            walks[k] = distance[flat] * planner.resolution  # cells to metres
     if len(starts) and not np.isfinite(walks.min(axis=0)).all():
         stuck = int(np.flatnonzero(~np.isfinite(walks.min(axis=0)))[0])
         raise PlanningError(f"start ({starts[stuck][0]:.2f}, {starts[stuck][1]:.2f}) reaches none of the exits "

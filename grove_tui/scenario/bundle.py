@@ -4,7 +4,9 @@
     trees/*.xml        one BehaviorTree.CPP v4 file per agent
     fields/*.npz       velocity fields (emergency preset)
     grid.npz           the occupancy grid planning used
-    generation.json    per-stage seconds and tokens, selected RoIs, retrieved nodes, the draft
+    generation.json    per-stage seconds and tokens, selected RoIs, retrieved nodes, the draft, the
+                       planned grounding report
+    after a run: trajectories.csv, events.jsonl, metrics.json, grounding.json (the report checked on the run)
 """
 
 from __future__ import annotations
@@ -13,7 +15,7 @@ import json
 import os
 from collections.abc import Callable, Mapping
 from pathlib import Path, PurePosixPath
-from typing import Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from grove_tui.files import (absolute_path, atomic_directory, link_or_copy, protect_folders, relative_file,
                              write_files_atomic)
@@ -23,11 +25,14 @@ from grove_tui.navigation.grid import MAX_GRID_FILE_BYTES, OccupancyGrid
 from grove_tui.scenario.model import Scenario, ScenarioError
 from grove_tui.navigation.velocity_field import MAX_FIELD_UNPACKED_BYTES, VelocityField
 
+if TYPE_CHECKING:
+    from grove_tui.world.model import World
+
 SCENARIO_FILE = "scenario.yaml"
 GRID_FILE = "grid.npz"
 REPORT_FILE = "generation.json"
 # What a simulation adds to a bundle; replaced together, never one without the others.
-RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json")
+RUN_FILES = ("trajectories.csv", "events.jsonl", "metrics.json", "grounding.json")
 # trajectories.csv is read a block at a time, so its size costs time, not memory: a 500-person hour is
 # about 2 GB. The bound refuses what no run writes, such as a link to a huge unrelated file.
 MAX_TRAJECTORY_BYTES = 64 * 1024**3
@@ -52,7 +57,27 @@ def is_bundle(path: Path) -> bool:
 protect_folders(is_bundle, OWN_NAMES, WHAT)
 
 
-def _member_files(result: Any) -> list[tuple[PurePosixPath, str]]:
+class BundleContents(Protocol):
+    """What a bundle is written from: generation's GenerationResult (scenario is below generation, so it
+    names the result by what it holds)."""
+
+    @property
+    def scenario(self) -> Scenario: ...
+
+    @property
+    def trees(self) -> Mapping[str, str]: ...  # bundle-relative path ("trees/agent_1.xml") -> BT XML
+
+    @property
+    def fields(self) -> Mapping[str, VelocityField]: ...
+
+    @property
+    def grid(self) -> OccupancyGrid: ...
+
+    @property
+    def report(self) -> Mapping[str, Any]: ...  # generation.json: JSON, written as it is
+
+
+def _member_files(result: BundleContents) -> list[tuple[PurePosixPath, str]]:
     """The trees (and any other text files) of a GenerationResult, each checked to be a plain relative
     path that names none of the bundle's fixed files."""
     checked = []
@@ -67,12 +92,12 @@ def _member_files(result: Any) -> list[tuple[PurePosixPath, str]]:
     return checked
 
 
-def write_bundle(result: Any, out_dir: str | Path, overwrite: bool = False) -> Path:
+def write_bundle(result: BundleContents, out_dir: str | Path, overwrite: bool = False) -> Path:
     """Write a GenerationResult as a bundle; a reader sees the old bundle or the complete new one.
 
     An existing bundle at `out_dir` is replaced; any other non-empty folder only with `overwrite`.
     """
-    scenario: Scenario = result.scenario
+    scenario = result.scenario
     members = _member_files(result)
     # Absolute first: after `--out .` the process's own folder is replaced, so "." names the old one.
     target = absolute_path(out_dir)
@@ -201,14 +226,14 @@ def world_source(bundle_dir: str | Path, scenario: Scenario) -> str | Path:
     return reference
 
 
-def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> Any:
+def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> World:
     """The World a bundle plays in (see `world_source`)."""
     from grove_tui.world import load_world
 
     return load_world(world_source(bundle_dir, scenario))
 
 
-def load_report(bundle_dir: str | Path) -> dict[str, Any]:
+def load_report(bundle_dir: str | Path) -> dict[str, Any]:  # generation.json: JSON, read key by key by its users
     path = Path(bundle_dir) / REPORT_FILE
     try:
         return json.loads(path.read_text(encoding="utf-8"))

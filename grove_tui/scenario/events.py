@@ -22,8 +22,11 @@ class SimEvent:
 
     t: float
     agent_id: int
-    kind: str  # "queue_join", "queue_served", "evacuated", "left_building" (pushed outside, not evacuating), "goal_reached"
-    detail: str = ""  # queue name for queue events
+    # "queue_join", "queue_advance", "queue_served", "evacuated", "left_building" (pushed outside, not
+    # evacuating), "goal_reached", "conversation_start" (detail: the ids in the circle, "3,4,5"),
+    # "conversation_end", "robot_reaction" (detail: the reaction node), "tree_error"
+    kind: str
+    detail: str = ""  # queue name for queue events, exit for evacuations
 
 
 def write_events(path: str | Path, events: Sequence[SimEvent]) -> Path:

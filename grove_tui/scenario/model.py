@@ -22,6 +22,8 @@ from grove_tui.files import write_text_atomic
 from grove_tui.limits import MAX_COORDINATE, InputLimitError, load_yaml_bounded, read_text_bounded
 
 Point = tuple[float, float]
+# A mapping as scenario.yaml holds it: what to_dict writes and from_dict reads, its values checked one by one.
+YamlDict = dict[str, Any]
 
 
 # HuNavSim's behavior types (hunav_msgs/Agent): what a bundle's `behavior` may name.
@@ -136,6 +138,11 @@ class RobotSpec:
     radius: float = 0.3
     max_vel: float = 0.8
     path: tuple[Point, ...] = ()  # planned path start..goal (empty when not planned)
+    # What the robot does with its path (ROBOT_TASKS): "cross" drives it once (the default), "wait"
+    # stays at start, "patrol" drives it there and back again and again, "follow" keeps behind the
+    # people in `follows` (agent ids).
+    task: str = "cross"
+    follows: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -159,7 +166,7 @@ class Scenario:
         """How far the planner's grid keeps centres off walls: the largest body radius of its people."""
         return max((a.radius for a in self.agents), default=DEFAULT_AGENT_RADIUS)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> YamlDict:
         data = asdict(self)
         data["agents"] = [_agent_to_dict(a) for a in self.agents]
         data["robot"] = None if self.robot is None else _robot_to_dict(self.robot)
@@ -192,7 +199,7 @@ class Scenario:
         return cls.from_dict(data, source=str(path))
 
     @classmethod
-    def from_dict(cls, data: Any, source: str = "<scenario>") -> Scenario:
+    def from_dict(cls, data: object, source: str = "<scenario>") -> Scenario:
         if not isinstance(data, dict):
             raise ScenarioError(f"{source}: expected a mapping at the top level")
         try:
@@ -230,7 +237,7 @@ class Scenario:
             raise ScenarioError(f"{source}: {exc}") from None
 
 
-def _short(value: Any) -> str:
+def _short(value: object) -> str:
     try:
         text = repr(value)
     except ValueError:  # an int too long to print
@@ -238,7 +245,7 @@ def _short(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def _number(value: Any, where: str, low: float, high: float) -> float:
+def _number(value: object, where: str, low: float, high: float) -> float:
     """A finite float in [low, high]; bools and strings are refused (YAML 'yes' is not a number)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ScenarioError(f"{where}: expected a number, got {_short(value)}")
@@ -250,7 +257,7 @@ def _number(value: Any, where: str, low: float, high: float) -> float:
     return number
 
 
-def _integer(value: Any, where: str, low: int, high: int) -> int:
+def _integer(value: object, where: str, low: int, high: int) -> int:
     if isinstance(value, bool) or not isinstance(value, int):
         raise ScenarioError(f"{where}: expected a whole number, got {_short(value)}")
     if not (low <= value <= high):
@@ -258,13 +265,13 @@ def _integer(value: Any, where: str, low: int, high: int) -> int:
     return value
 
 
-def _text(value: Any, where: str) -> str:
+def _text(value: object, where: str) -> str:
     if not isinstance(value, str) or not value.strip():
         raise ScenarioError(f"{where}: expected a non-empty string, got {_short(value)}")
     return value
 
 
-def bundle_relative(value: Any, where: str) -> str:
+def bundle_relative(value: object, where: str) -> str:
     """A path inside the bundle: relative, no '..' parts, no backslashes or drive letters.
 
     Symbolic links are checked where the file is opened (scenario.bundle.open_member): the text alone
@@ -277,7 +284,7 @@ def bundle_relative(value: Any, where: str) -> str:
     return text
 
 
-def _point(value: Any, where: str) -> Point:
+def _point(value: object, where: str) -> Point:
     if not (isinstance(value, (list, tuple)) and len(value) == 2):
         raise ScenarioError(f"{where}: expected [x, y], got {_short(value)}")
     return (_number(value[0], where, -MAX_COORDINATE, MAX_COORDINATE),
@@ -293,9 +300,9 @@ def _check_unique_ids(agents: tuple[AgentSpec, ...], source: str) -> None:
         seen.add(agent.id)
 
 
-def _present(data: dict[str, Any]) -> dict[str, Any]:
+def _present(data: YamlDict) -> YamlDict:
     """`data` without its None values and empty sequences, nested mappings likewise."""
-    out: dict[str, Any] = {}
+    out: YamlDict = {}
     for key, value in data.items():
         if isinstance(value, dict):
             value = _present(value)
@@ -305,7 +312,7 @@ def _present(data: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
-def _agent_to_dict(agent: AgentSpec) -> dict[str, Any]:
+def _agent_to_dict(agent: AgentSpec) -> YamlDict:
     data = asdict(agent)
     data["start"] = list(agent.start)
     data["goals"] = [list(g) for g in agent.goals]
@@ -324,7 +331,7 @@ def _agent_to_dict(agent: AgentSpec) -> dict[str, Any]:
     return data
 
 
-def _optional(data: dict[str, Any], key: str, kind: type, where: str) -> Any:
+def _optional(data: YamlDict, key: str, kind: type, where: str) -> Any:  # of `kind`, which the caller names
     """`data[key]` checked to be of `kind` (a float also takes an int), or None when absent."""
     value = data.get(key)
     if value is None:
@@ -340,20 +347,20 @@ def _optional(data: dict[str, Any], key: str, kind: type, where: str) -> Any:
     return value
 
 
-def _mapping(data: Any, where: str) -> dict[str, Any]:
+def _mapping(data: object, where: str) -> YamlDict:
     if not isinstance(data, dict):
         raise ScenarioError(f"{where}: expected a mapping")
     return data
 
 
-def _hunav_behavior(data: Any, where: str) -> HunavBehavior:
+def _hunav_behavior(data: object, where: str) -> HunavBehavior:
     data = _mapping(data, where)
     kinds = {"configuration": int, "once": bool}
     return HunavBehavior(**{name: _optional(data, name, kinds.get(name, float), where)
                             for name in HunavBehavior.__dataclass_fields__})
 
 
-def _hunav_agent(data: Any, where: str) -> HunavAgent:
+def _hunav_agent(data: object, where: str) -> HunavAgent:
     data = _mapping(data, where)
     name = _optional(data, "name", str, where)
     if not name:
@@ -378,7 +385,7 @@ def _hunav_agent(data: Any, where: str) -> HunavAgent:
     )
 
 
-def _texts(value: Any, where: str) -> tuple[str, ...]:
+def _texts(value: object, where: str) -> tuple[str, ...]:
     if value is None:
         return ()
     if not isinstance(value, list):
@@ -386,7 +393,7 @@ def _texts(value: Any, where: str) -> tuple[str, ...]:
     return tuple(_text(v, f"{where}[{j}]") for j, v in enumerate(value))
 
 
-def _hunav_source(data: Any, where: str) -> HunavSource:
+def _hunav_source(data: object, where: str) -> HunavSource:
     data = _mapping(data, where)
     layout = data.get("layout")
     if layout not in HUNAV_LAYOUTS:
@@ -409,7 +416,7 @@ def _hunav_source(data: Any, where: str) -> HunavSource:
                                                                                                   f"{where}.includes")))
 
 
-def _agent_from_dict(data: Any, where: str) -> AgentSpec:
+def _agent_from_dict(data: object, where: str) -> AgentSpec:
     if not isinstance(data, dict):
         raise ScenarioError(f"{where}: expected a mapping")
     try:
@@ -440,15 +447,22 @@ def _agent_from_dict(data: Any, where: str) -> AgentSpec:
         raise ScenarioError(f"{where}: missing key {exc.args[0]!r}") from None
 
 
-def _robot_to_dict(robot: RobotSpec) -> dict[str, Any]:
+def _robot_to_dict(robot: RobotSpec) -> YamlDict:
     data = asdict(robot)
     data["start"] = list(robot.start)
     data["goal"] = list(robot.goal)
     data["path"] = [list(p) for p in robot.path]
+    # A robot that just crosses is written as before, so earlier bundles stay byte for byte the same.
+    if robot.task == "cross":
+        del data["task"]
+    if not robot.follows:
+        del data["follows"]
+    else:
+        data["follows"] = list(robot.follows)
     return data
 
 
-def _robot_from_dict(data: Any, where: str) -> RobotSpec:
+def _robot_from_dict(data: object, where: str) -> RobotSpec:
     if not isinstance(data, dict):
         raise ScenarioError(f"{where}: expected a mapping")
     try:
@@ -461,6 +475,18 @@ def _robot_from_dict(data: Any, where: str) -> RobotSpec:
             radius=_number(data.get("radius", 0.3), f"{where}.radius", *RADIUS_RANGE),
             max_vel=_number(data.get("max_vel", 0.8), f"{where}.max_vel", *MAX_VEL_RANGE),
             path=tuple(_point(p, f"{where}.path[{j}]") for j, p in enumerate(path)),
+            task=_robot_task(data.get("task", "cross"), f"{where}.task"),
+            follows=tuple(_integer(i, f"{where}.follows[{j}]", 1, 10 * MAX_AGENTS)
+                          for j, i in enumerate(data.get("follows") or [])),
         )
     except KeyError as exc:
         raise ScenarioError(f"{where}: missing key {exc.args[0]!r}") from None
+
+
+ROBOT_TASKS = ("cross", "wait", "patrol", "follow")
+
+
+def _robot_task(value: Any, where: str) -> str:
+    if value not in ROBOT_TASKS:
+        raise ScenarioError(f"{where}: {_short(value)} is not a robot task; use one of {', '.join(ROBOT_TASKS)}")
+    return str(value)

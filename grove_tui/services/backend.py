@@ -198,6 +198,37 @@ EXPORTERS: list[tuple[str, Exporter]] = [
 ]
 
 
+STEP_SECONDS_FILE = "warm_up_seconds.json"
+
+
+def load_step_seconds() -> dict[str, float]:
+    """Seconds each warm-up step took last time on this machine (data dir); {} before the first warm-up."""
+    import json
+
+    try:
+        data = json.loads((data_dir() / STEP_SECONDS_FILE).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(data, dict):
+        return {}
+    return {str(k): float(v) for k, v in data.items() if isinstance(v, (int, float)) and 0 <= v < 3600}
+
+
+def save_step_seconds(seconds: dict[str, float]) -> None:
+    import json
+
+    from grove_tui.files import write_text_atomic
+
+    if not seconds:
+        return
+    path = data_dir() / STEP_SECONDS_FILE
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_text_atomic(path, json.dumps(dict(sorted(seconds.items())), indent=2) + "\n")
+    except OSError:
+        pass  # an ETA is a nicety: a read-only data dir must not fail a generation
+
+
 def _slug(text: str, limit: int = 40) -> str:
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")[:limit] or "scenario"
 
@@ -221,6 +252,8 @@ class EngineBackend:
                                     retriever_factory=retriever_factory)
         self.runs_dir = runs_dir if runs_dir is not None else data_dir() / "runs"
         self.exporters = list(EXPORTERS if exporters is None else exporters)
+        # What each warm-up step took on this machine last time: the ETA of the loading the app shows.
+        self.session.step_seconds.update(load_step_seconds())
         self._retriever_factory = retriever_factory
         self._embedder_warm = False
 
@@ -261,7 +294,10 @@ class EngineBackend:
             if on_status is not None:
                 on_status(status)
 
-        return self.session.warm_up(world, preset, on_status=relay)
+        try:
+            return self.session.warm_up(world, preset, on_status=relay)
+        finally:
+            save_step_seconds(self.session.step_seconds)
 
     def yield_cpu_to_the_app(self) -> list[int]:
         """Run the model processes `model_niceness` steps below the app's priority; the pids changed.
@@ -302,6 +338,10 @@ class EngineBackend:
         self.session.close()
 
     # generation ------------------------------------------------------------------------------------
+    def unsure(self, world_name: str, preset_name: str, prompt: str, seed: int) -> list[str]:
+        """Questions about the fields the reader is unsure of in the sentence (asked before generating)."""
+        return self.session.unsure(ScenarioRequest(world_name, preset_name, prompt, seed))
+
     def generate(
         self,
         world_name: str,
@@ -313,8 +353,15 @@ class EngineBackend:
     ) -> GeneratedScenario:
         stamp = time.strftime("%Y%m%d-%H%M%S")
         request = ScenarioRequest(world_name, preset_name, prompt, seed)
-        generated = self.session.generate(request, self._free_run_dir(f"{stamp}-{_slug(prompt)}-{seed}"),
-                                          on_event=on_event, cancel=cancel)
+        try:
+            # The app shows a stage "loading" for what its warm-up has not loaded yet (with an ETA), so
+            # a generation asked early is never silent; the command line loads as it goes.
+            self.session.check_request(request)
+            self.session.prepare(world_name, preset_name, on_event=on_event, cancel=cancel)
+            generated = self.session.generate(request, self._free_run_dir(f"{stamp}-{_slug(prompt)}-{seed}"),
+                                              on_event=on_event, cancel=cancel)
+        finally:
+            save_step_seconds(self.session.step_seconds)
         self._embedder_warm = True  # retrieval ran: the embedding model is loaded for the next run
         return generated
 
@@ -360,6 +407,31 @@ class EngineBackend:
         from grove_tui.analysis.live_metrics import LiveMetrics
 
         return LiveMetrics(generated.scenario, generated.world)
+
+    def outcome_checker(self, generated: GeneratedScenario) -> Any:
+        """A checker of the scenario's planned grounding report for a run as it plays (None without a
+        report); feed it with `check_run_rows` from one thread at a time."""
+        from grove_tui.analysis.outcomes import OutcomeChecker, planned_report
+
+        planned = planned_report(generated.result.report)
+        if planned is None:
+            return None
+        return OutcomeChecker(planned, generated.scenario, generated.world)
+
+    def check_run_rows(self, checker: Any, rows: Any, events: list[Any], partial: bool = True) -> Any:
+        """The report checked on the run so far: the recorder's new rows (whole frames, taken between
+        steps) go into the checker, rounded as trajectories.csv stores them, so the live report equals
+        the grounding.json the same run writes."""
+        import numpy as np
+
+        from grove_tui.crowd.recording import CSV_COLUMNS
+
+        if len(rows):
+            table = np.column_stack([np.asarray(rows[name], dtype=np.float64) for name in CSV_COLUMNS])
+            table[:, 1] = np.round(table[:, 1], 4)
+            table[:, 3:8] = np.round(table[:, 3:8], 4)
+            checker.add_rows(table)
+        return checker.result(events, partial=partial)
 
     # export ----------------------------------------------------------------------------------------
     def export(self, generated: GeneratedScenario, simulation: Any | None, root: Path,

@@ -26,6 +26,7 @@ from grove_tui.errors import (
     EXIT_CANCELLED,
     EXIT_MODEL_ERROR,
     BadInputError,
+    Cancelled,
     ContextTooSmallError,
     EvalError,
     GroveError,
@@ -100,14 +101,21 @@ class ModelStatus:
     error: str = ""
 
 
+# How long each warm-up step takes on a machine that never ran one (2 cores, embedded model): the ETA of
+# the first warm-up; later ones expect what the step took last time (GroveSession.step_seconds).
+FIRST_STEP_SECONDS = {"models": 5.0, "retrieval": 15.0, "reader": 3.0, "planner": 3.0, "prompt": 5.0}
+
+
 @dataclass(frozen=True)
 class WarmUpStatus:
     """One step of GroveSession.warm_up, for a status line: "loading the models…", "ready to generate"."""
 
-    step: str  # "models" | "retrieval" | "reader" | "planner", then "ready" once all have run
+    step: str  # "models" | "retrieval" | "reader" | "planner" | "prompt", then "ready" once all have run
     state: str  # "running" | "done" | "failed"
     doing: str  # what the step does, in words
     error: str = ""
+    expected_seconds: float = 0.0  # running: how long the step took last time (or on a first run)
+    seconds: float = 0.0  # done or failed: how long it took
 
     @property
     def text(self) -> str:
@@ -116,6 +124,21 @@ class WarmUpStatus:
         if self.state == "failed":
             return f"{self.doing}: failed: {self.error}" if self.error else "not ready: a warm-up step failed"
         return self.doing if self.step == "ready" else f"{self.doing}: done"
+
+
+@dataclass(frozen=True)
+class LoadingProgress:
+    """An event of the stage "loading" that `generate` runs first when the session is not warm yet: part
+    `index` of `parts` starts (the models, the node index and its embedder, the English reader, the
+    world's planner, the world and preset's fixed prompt). `expected_seconds` is what it took last time,
+    `later_seconds` what the parts after it took: the stage's ETA."""
+
+    part: str
+    doing: str
+    index: int
+    parts: int
+    expected_seconds: float
+    later_seconds: float
 
 
 def _warm_reader(world: World | None = None) -> None:
@@ -175,7 +198,12 @@ class GroveSession:
         self._cli_bt = bt_model
         self._llm_factory = llm_factory
         self._retriever_factory = retriever_factory
-        self._lock = threading.RLock()
+        self._lock = threading.RLock()  # held only to read or swap state, never while something loads
+        self._models_lock = threading.Lock()  # one model load at a time
+        self._closes = 0  # how many times close() ran: a load it overtook keeps nothing
+        self._warmed: set[str] = set()  # warm-up steps done (keys of _warm_steps)
+        # Seconds each warm-up step took last (its ETA next time); the app seeds it from its data dir.
+        self.step_seconds: dict[str, float] = {}
         self._models: Models | None = None
         self._model_errors: dict[str, str] = {}
         self._retriever: Any = None
@@ -221,6 +249,17 @@ class GroveSession:
                               hint="Give the prompt as UTF-8 text.") from None
         return self.load_world(request.world), self.load_preset(request.preset)
 
+    def unsure(self, request: ScenarioRequest) -> list[str]:
+        """Questions about what the reader is unsure of in the request's sentence ("'the big meeting
+        room' start: boardroom or meeting_room?"), before any model loads; [] when it is sure of all.
+
+        The app asks them before generating; `grove generate --strict` refuses with them."""
+        from grove_tui.generation.reconcile import reading_questions
+        from grove_tui.language.reading import read_prompt
+
+        world, _preset = self.check_request(request)
+        return reading_questions(read_prompt(" ".join(request.prompt.split()), world, seed=request.seed))
+
     # models ---------------------------------------------------------------------------------------------
     @property
     def model_options(self) -> tuple[str | None, str | None, str | None]:
@@ -247,10 +286,20 @@ class GroveSession:
                     for role, choice in choices.items()]
 
     def load_models(self) -> Models:
-        """Load each role's model once; roles naming the same file share the instance."""
+        """Load each role's model once; roles naming the same file share the instance.
+
+        Loading takes seconds, under its own lock: the session's lock is only taken to look at what is
+        loaded, so the worlds, the model status and `close` never wait for a model to load. A load that
+        `close` overtook closes what it loaded and raises Cancelled.
+        """
         with self._lock:
             if self._models is not None:
                 return self._models
+        with self._models_lock:
+            with self._lock:
+                if self._models is not None:
+                    return self._models
+                closes = self._closes
             by_path: dict[Path, Any] = {}
             loaded: dict[str, Any] = {}
             for role, choice in self.model_choices().items():
@@ -259,14 +308,21 @@ class GroveSession:
                     if key not in by_path:
                         by_path[key] = self._make_llm(role, choice)
                 except GroveError as exc:
-                    self._model_errors[role] = str(exc)
+                    with self._lock:
+                        self._model_errors[role] = str(exc)
                     for llm in by_path.values():
                         _close(llm)
                     raise
                 loaded[role] = by_path[key]
-                self._model_errors.pop(role, None)
-            self._models = Models(roi=loaded["roi"], bt=loaded["bt"])
-            return self._models
+                with self._lock:
+                    self._model_errors.pop(role, None)
+            with self._lock:
+                if self._closes == closes:
+                    self._models = Models(roi=loaded["roi"], bt=loaded["bt"])
+                    return self._models
+            for llm in by_path.values():  # the session was closed meanwhile: keep nothing running
+                _close(llm)
+            raise Cancelled("the session was closed while its models loaded")
 
     def _make_llm(self, role: str, choice: ModelChoice) -> Any:
         if self._llm_factory is not None:
@@ -279,39 +335,62 @@ class GroveSession:
         return llm
 
     # warm start -----------------------------------------------------------------------------------------
+    def _warm_steps(self, world: str | None, preset: str | None) -> list[tuple[str, str, str, Callable[[], Any]]]:
+        """(key, step, what it does, how) of everything a first generation would otherwise load itself."""
+        steps: list[tuple[str, str, str, Callable[[], Any]]] = [
+            ("models", "models", "loading the models", self.load_models),
+            ("retrieval", "retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
+            (f"reader:{world}" if world is not None else "reader", "reader", "loading the English reader",
+             lambda: _warm_reader(self.load_world(world) if world is not None else None)),
+        ]
+        if world is not None and preset is not None:
+            steps.append((f"planner:{world}:{preset}", "planner", f"preparing {world}'s map and planner",
+                          lambda: self._warm_planner(world, preset)))
+            steps.append((f"prompt:{world}:{preset}", "prompt", f"reading {world}/{preset}'s fixed prompt into the model",
+                          lambda: self._warm_prefix(world, preset)))
+        return steps
+
+    def expected_seconds(self, step: str) -> float:
+        """How long a warm-up step took last time (this session, or `step_seconds` as the caller seeded it)."""
+        with self._lock:
+            return self.step_seconds.get(step, FIRST_STEP_SECONDS.get(step, 2.0))
+
+    def _run_step(self, key: str, step: str, run: Callable[[], Any]) -> float:
+        started = time.perf_counter()
+        run()
+        seconds = time.perf_counter() - started
+        with self._lock:
+            self.step_seconds[step] = round(seconds, 2)
+            self._warmed.add(key)
+        return seconds
+
     def warm_up(self, world: str | None = None, preset: str | None = None, *,
                 on_status: Callable[[WarmUpStatus], None] | None = None) -> list[WarmUpStatus]:
         """Load now what the first generation would otherwise load: the models, the node index and its
         embedder, the English reader, and (given a world and preset) their pipeline's grid and planner.
 
-        Each step reports a WarmUpStatus (`running`, then `done` or `failed` with the error) through
-        `on_status`; a step that fails does not stop the next ones (the generation reports it again).
-        Safe to run beside a generation: each part loads under its own lock, once.
+        Each step reports a WarmUpStatus (`running` with the seconds it is expected to take, then `done`
+        or `failed` with the error) through `on_status`; a step that fails does not stop the next ones
+        (the generation reports it again). Safe to run beside a generation: each part loads under its
+        own lock, once (a generation that starts before the warm-up is done loads what is missing as
+        its stage "loading", `prepare`).
         """
-        steps: list[tuple[str, str, Callable[[], Any]]] = [
-            ("models", "loading the models", self.load_models),
-            ("retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
-            ("reader", "loading the English reader",
-             lambda: _warm_reader(self.load_world(world) if world is not None else None)),
-        ]
-        if world is not None and preset is not None:
-            steps.append(("planner", f"preparing {world}'s map and planner", lambda: self._warm_planner(world, preset)))
-            steps.append(("prompt", f"reading {world}/{preset}'s fixed prompt into the model",
-                          lambda: self._warm_prefix(world, preset)))
         statuses: list[WarmUpStatus] = []
-        for step, doing, run in steps:
+        for key, step, doing, run in self._warm_steps(world, preset):
             if self._stop_warm_up.is_set():
                 return statuses
             if on_status is not None:
-                on_status(WarmUpStatus(step, "running", doing))
+                on_status(WarmUpStatus(step, "running", doing, expected_seconds=self.expected_seconds(step)))
+            started = time.perf_counter()
             try:
-                run()
+                seconds = self._run_step(key, step, run)
             except GroveError as exc:
-                status = WarmUpStatus(step, "failed", doing, str(exc))
+                status = WarmUpStatus(step, "failed", doing, str(exc), seconds=time.perf_counter() - started)
             except Exception as exc:  # noqa: BLE001 - any engine failure is reported on the status line, not raised
-                status = WarmUpStatus(step, "failed", doing, f"{type(exc).__name__}: {exc}")
+                status = WarmUpStatus(step, "failed", doing, f"{type(exc).__name__}: {exc}",
+                                      seconds=time.perf_counter() - started)
             else:
-                status = WarmUpStatus(step, "done", doing)
+                status = WarmUpStatus(step, "done", doing, seconds=seconds)
             statuses.append(status)
             if on_status is not None:
                 on_status(status)
@@ -320,6 +399,31 @@ class GroveSession:
         if on_status is not None:
             on_status(WarmUpStatus("ready", "done" if self._warm else "failed", "ready to generate"))
         return statuses
+
+    def prepare(self, world: str, preset: str, *, on_event: EventSink | None = None,
+                cancel: threading.Event | None = None) -> None:
+        """Load what a generation in `world` with `preset` needs and is not loaded yet, as the stage
+        "loading" (StageStarted, a LoadingProgress per part, StageFinished); nothing when all is warm.
+
+        A part the warm-up is loading at the same moment is waited for under its lock, not loaded twice.
+        """
+        from grove_tui.generation.pipeline import StageFinished, StageStarted
+
+        with self._lock:
+            missing = [step for step in self._warm_steps(world, preset) if step[0] not in self._warmed]
+        if not missing:
+            return
+        emit = on_event or (lambda event: None)
+        emit(StageStarted("loading"))
+        started = time.perf_counter()
+        expected = [self.expected_seconds(step) for _key, step, _doing, _run in missing]
+        for index, (key, step, doing, run) in enumerate(missing):
+            if cancel is not None and cancel.is_set():
+                raise Cancelled("generation cancelled while loading")
+            emit(LoadingProgress(step, doing, index + 1, len(missing), expected[index], sum(expected[index + 1:])))
+            self._run_step(key, step, run)
+        parts = ", ".join(step for _key, step, _doing, _run in missing)
+        emit(StageFinished("loading", time.perf_counter() - started, 0, 0, f"loaded {parts}"))
 
     def start_warm_up(self, world: str | None = None, preset: str | None = None, *,
                       on_status: Callable[[WarmUpStatus], None] | None = None) -> threading.Thread:
@@ -393,14 +497,17 @@ class GroveSession:
             return list({id(m): m for m in (self._models.roi, self._models.bt)}.values())
 
     def close(self) -> None:
-        """Stop the model processes (and a background warm-up); the session loads them again if used after."""
+        """Stop the model processes (and a background warm-up); the session loads them again if used after.
+
+        Never waits for a model still loading (that load closes its own when it ends)."""
         self._stop_warm_up.set()
         with self._lock:
-            if self._models is not None:
-                for llm in {id(m): m for m in (self._models.roi, self._models.bt)}.values():
-                    _close(llm)
-            self._models = None
+            models, self._models = self._models, None
+            self._closes += 1
             self._pipelines.clear()
+        if models is not None:
+            for llm in {id(m): m for m in (models.roi, models.bt)}.values():
+                _close(llm)
 
     def __enter__(self) -> GroveSession:
         return self
@@ -495,7 +602,8 @@ class GroveSession:
         def write_run(stage: Path) -> None:
             recorder.write_csv(stage / "trajectories.csv")
             write_events(stage / "events.jsonl", sim.events)
-            reports.append(bundle_metrics(stage)[0])
+            # metrics.json and grounding.json (the sentence's claims checked on this run) in one pass
+            reports.append(bundle_metrics(stage, outcomes=True)[0])
 
         replace_run_outputs(bundle, write_run)
         crowd = reports[0].crowd
@@ -638,6 +746,9 @@ class GroveSession:
                     events = read_events(bundle / "events.jsonl")
                     report_path = bundle / "generation.json"
                     report = json.loads(report_path.read_text(encoding="utf-8")) if report_path.exists() else {}
+                    checked_path = bundle / "grounding.json"
+                    if checked_path.is_file():  # the report checked on this run: its ✓ is earned there
+                        report = dict(report, grounding=json.loads(checked_path.read_text(encoding="utf-8")))
                     by_id = {a.id: trees[a.tree] for a in scenario.agents}
                     scored = score_scenario(case, method, world, scenario, by_id, traj, events,
                                             report if method in ("grove", "vanilla") else None)

@@ -33,7 +33,7 @@ import shapely
 
 from grove_tui.bt.context import AgentContext, SimContext
 from grove_tui.bt.registry import tree_factory
-from grove_tui.bt.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
+from grove_tui.bt.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.blackboard import Blackboard
 from grove_tui.bt.document import TreeDocument, node, subtree_call
 from grove_tui.bt.factory import BehaviorTree
@@ -41,6 +41,7 @@ from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
 from grove_tui.bt.xml import BTError, parse_tree_text
 from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
+from grove_tui.simulation.robot import RobotDriver
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
 REACTION_DEFAULTS = ROBOT_REACTION_DEFAULTS
@@ -135,6 +136,7 @@ class Simulation:
         self._robot_contacts: set[int] = set()
         self._agent_contacts: set[tuple[int, int]] = set()
         self._lock = threading.Lock()
+        self.robot_driver: RobotDriver | None = None  # the scripted robot's task and collision monitor
         for row in range(len(trees)):
             tree = trees[row]
             if tree is not None:
@@ -185,7 +187,10 @@ class Simulation:
                             robot_interaction=ROBOT_AS_OBSTACLE if agent.behavior == "Impassive" else 0)
         if robot is not None:
             path = list(robot.path) if robot.path else [robot.start, robot.goal]
-            crowd.set_robot(robot.start, radius=robot.radius, max_speed=robot.max_vel, path=np.asarray(path, float))
+            heading = next((math.atan2(q[1] - robot.start[1], q[0] - robot.start[0]) for q in path
+                            if math.dist(q, robot.start) > 1e-6), 0.0)
+            crowd.set_robot(robot.start, radius=robot.radius, max_speed=robot.max_vel, path=np.asarray(path, float),
+                            yaw=heading)
         ids = [a.id for a in agents]
         groups = _draft_groups(agents)
         clock = SimClock(0.0)
@@ -210,8 +215,12 @@ class Simulation:
                 # HuNavSim trees walk the agent's own goal list (agents YAML `goals` and `cyclic_goals`)
                 crowd.set_goals(row, agent.goals, cyclic=agent.cyclic_goals)
         recorder = _make_recorder(dt, ids)
-        return cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
-                   recorder=recorder)
+        simulation = cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
+                         recorder=recorder)
+        if robot is not None:
+            simulation.robot_driver = RobotDriver(robot, crowd, context)
+            crowd.set_robot_path(simulation.robot_driver.initial_path())
+        return simulation
 
     # ---- running --------------------------------------------------------------------------------
 
@@ -248,6 +257,8 @@ class Simulation:
         # After the ticks, so an evacuee's tree has already set its field mode on the first tick.
         self._count_people_outside()
         self._measure_contacts()
+        if self.robot_driver is not None:
+            self.robot_driver.update()
 
     def _count_people_outside(self) -> None:
         """Anyone the crowd pushed out of the building (through an exit: walls hold everywhere else)
@@ -451,8 +462,14 @@ class Simulation:
             c.robot_collisions += len(touching - self._robot_contacts)
             still = set(np.flatnonzero(gap < ROBOT_CONTACT_GAP + CONTACT_RELEASE).tolist())
             self._robot_contacts = touching | (self._robot_contacts & still)
-        rows = np.flatnonzero(active)
-        if len(rows) > 1:
+        # Only people who were near someone at the start of the last step can touch now: bodies close
+        # in by at most two steps, so a gap over CONTACT_RELEASE plus that rules a person out.
+        reach = CONTACT_RELEASE + 2.0 * float(crowd.desired_speed[:n].max(initial=0.0)) * crowd.dt
+        near_someone = crowd.min_gap[:n] < reach if crowd.step_count else np.ones(n, dtype=bool)
+        rows = np.flatnonzero(active & near_someone)
+        if len(rows) <= 1:
+            self._agent_contacts = set()
+        else:
             from scipy.spatial import cKDTree
 
             p = pos[rows]
@@ -504,7 +521,7 @@ def with_robot_reaction(document: TreeDocument, behavior: str) -> TreeDocument:
     spec = REACTION_DEFAULTS.get(behavior)
     if spec is None:
         return document
-    if any(e.id in ROBOT_REACTIONS for e in document.nodes()):
+    if any(e.id in ROBOT_REACTIONS or e.id in ROBOT_ACTIVITIES for e in document.nodes()):
         return document
     reaction_node, distance, duration, once = spec
     wrapper_id = "GroveRobotReaction"

@@ -7,6 +7,8 @@ runs in thread workers started after the first screen is on.
 
 from __future__ import annotations
 
+import asyncio
+import threading
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +22,9 @@ from grove_tui.tui.commands import GroveCommands
 from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
 from grove_tui.settings import (GroveSettings, load_history, load_last_choices, load_settings, save_history,
                                 save_last_choices)
+
+
+QUIT_WAIT_SECONDS = 0.05  # a moment for the model processes to stop by themselves when the app closes
 
 
 class GroveApp(App[int]):
@@ -62,6 +67,8 @@ class GroveApp(App[int]):
         self.open_bundle_at_start = open_bundle
         # Completion tokens of each model stage's last run: the generation screen's ETA expects as many.
         self.stage_tokens: dict[str, int] = {}
+        # Seconds each model stage read its prompt before the first token last time: the ETA till then.
+        self.stage_first_token: dict[str, float] = {}
         # Freeze the heap once the warm-up has loaded the models, embedder and reader (tui/heap.py);
         # what that freeze did, for the bench and the tests.
         self.freeze_heap_when_warm = True
@@ -161,9 +168,14 @@ class GroveApp(App[int]):
         self.push_screen(HelpScreen(self.focused, self.screen))
 
     def on_unmount(self) -> None:
+        # Closing stops the model processes; it may wait for one that is busy. Quit must take under a
+        # second in every state (issue 31), so it waits that long at most: what is still running then
+        # is ended by exit_now (run_app), which terminates the app's child processes.
         close = getattr(self.backend, "close", None)
         if callable(close):
-            close()
+            closer = threading.Thread(target=close, name="grove-close", daemon=True)
+            closer.start()
+            closer.join(QUIT_WAIT_SECONDS)
 
 
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
@@ -185,7 +197,10 @@ def run_app(model: str | None = None, roi_model: str | None = None, bt_model: st
     app = GroveApp(backend, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True,
                    open_bundle=open_bundle, last_choices=load_last_choices(), remember_choices=True)
-    result = app.run()
+    # A loop of our own, never closed: asyncio.run's teardown waits for the default executor, where the
+    # app's thread workers run, so a quit while the node index loaded waited 7-13 s for the load to end.
+    # exit_now ends the process (those threads with it) once the app has restored the terminal.
+    result = app.run(loop=asyncio.new_event_loop())
     code = int(result or 0) if app.return_code in (None, 0) else int(app.return_code or 1)
     exit_now(code)
     return code  # not reached: exit_now ends the process
@@ -198,9 +213,17 @@ def exit_now(code: int) -> None:
     written, recorder spill files are unlinked temporary files. What is left is freeing torch,
     ChromaDB and numba objects one by one, which took 2.8 s of a 3.4 s quit (issue 21 item 14).
     """
+    import multiprocessing
     import os
     import sys
 
+    # A model process still loading or evaluating when the app closed (on_unmount waits QUIT_WAIT_SECONDS
+    # for them): end it now rather than leave it to notice its closed pipe when it is done.
+    for child in multiprocessing.active_children():
+        try:
+            child.terminate()
+        except OSError:
+            pass
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()

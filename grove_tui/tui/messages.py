@@ -38,6 +38,7 @@ class ModelsChanged(Message):
     loading: bool = False
     embedder: str = ""  # the node retriever's embedding model: "", "loading", "ready" or its error
     warm_up: str = ""  # the backend's warm-up status line ("loading the models…"), "" when none runs
+    expected_seconds: float = 0.0  # a running step: how long it took last time (the line counts down from it)
 
 
 @dataclass
@@ -65,6 +66,17 @@ class TokensFlushed(Message):
 
     def can_replace(self, message: Message) -> bool:
         return isinstance(message, TokensFlushed) and (message.stage, message.attempt) == (self.stage, self.attempt)
+
+
+@dataclass
+class LoadingPartStarted(Message):
+    """The stage "loading" starts part `index` of `parts` (services.session.LoadingProgress)."""
+
+    doing: str
+    index: int
+    parts: int
+    expected_seconds: float
+    later_seconds: float
 
 
 @dataclass
@@ -147,3 +159,20 @@ class ExportProgress(Message):
     kind: str
     index: int
     total: int
+
+
+@dataclass
+class ReadingChecked(Message):
+    """The sentence was read before generating: the questions about what the reader is unsure of."""
+
+    request: Any  # screens.generation.GenerationRequest
+    questions: list[str]
+
+
+@dataclass
+class GroundingChecked(Message):
+    """The sentence's claims checked on the run so far (analysis/outcomes.py), or why they could not be."""
+
+    report: Any  # scenario.report.GroundingReport, None on error
+    error: str = ""
+    final: bool = False  # checked on the whole run, once it ended

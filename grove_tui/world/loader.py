@@ -523,10 +523,11 @@ def _validate(zones: list[_DraftZone], obstacles: list[_DraftObstacle], problems
     if len(placed) > 1:
         # Candidate pairs from a k-d tree within the widest half-width, then the exact per-pair test.
         positions = np.array([door.position for door in placed], dtype=np.float64)
-        widest = max(door.width for door in placed)  # type: ignore[type-var]
+        width = {id(door): door.width or 0.0 for door in placed}  # a placed door has passed its checks: it has one
+        widest = max(width.values())
         for i, j in sorted(cKDTree(positions).query_pairs(widest / 2)):
             first, second = placed[i], placed[j]
-            if math.dist(first.position, second.position) < max(first.width, second.width) / 2:  # type: ignore[arg-type]
+            if math.dist(first.position, second.position) < max(width[id(first)], width[id(second)]) / 2:
                 problems.add(second.path + ("position",),
                              f"door {second.name!r} overlaps door {first.name!r} ({format_path(first.path)}); "
                              f"declare a door between two zones once, in one of them")
@@ -686,6 +687,7 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
 
     built_zones = []
     for zone in zones:
+        assert zone.boundary is not None  # a zone without one is a problem, and problems returned above
         doors = tuple(Door(d.name, zone.name, d.position, d.width, d.leads_to, d.exit, d.description,  # type: ignore[arg-type]
                            d.aliases, d.tags, *door_frames[id(d)]) for d in zone.doors)
         entities = tuple(Entity(e.name, zone.name, e.type, e.footprint, e.interaction_point, e.tags,  # type: ignore[arg-type]

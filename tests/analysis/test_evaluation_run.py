@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import csv
 
+import pytest
 from click.testing import CliRunner
 
 from grove_tui.cli import main
+
+pytestmark = pytest.mark.slow  # every test here runs a real model
 
 
 def test_eval_runs_grove_and_baselines_on_a_case(tmp_path):

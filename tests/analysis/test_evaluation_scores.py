@@ -6,7 +6,6 @@ import dataclasses
 
 import numpy as np
 import pytest
-from helpers.handmade import build_hospital_bundle
 
 from grove_tui.analysis.evaluation import (
     EvalCase,
@@ -24,16 +23,6 @@ from grove_tui.navigation.grid import build_grid
 from grove_tui.analysis.metrics import Trajectories
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import load_world
-
-
-@pytest.fixture(scope="module")
-def bundle(tmp_path_factory):
-    return build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-
-
-@pytest.fixture(scope="module")
-def hospital():
-    return load_world("hospital")
 
 
 def _trees(bundle, scenario):

@@ -8,24 +8,14 @@ import tracemalloc
 
 import numpy as np
 import pytest
-from click.testing import CliRunner
 
 from grove_tui.analysis.metrics import Trajectories, compute_metrics, compute_metrics_csv, iter_trajectory_chunks
-from grove_tui.cli import main
 from grove_tui.errors import MetricsError
 from grove_tui.scenario.bundle import load_scenario
 from grove_tui.scenario.events import read_events
 from grove_tui.world import load_world
-from helpers.handmade import build_hospital_bundle
 
-
-@pytest.fixture(scope="module")
-def simulated(tmp_path_factory):
-    bundle = tmp_path_factory.mktemp("streaming") / "bundle"
-    build_hospital_bundle(bundle)
-    result = CliRunner().invoke(main, ["simulate", str(bundle), "--seconds", "20"])
-    assert result.exit_code == 0, result.output
-    return bundle
+SIMULATED_SECONDS = 20.0  # the `simulated` fixture's run (tests/conftest.py)
 
 
 def options(bundle):

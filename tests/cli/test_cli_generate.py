@@ -19,7 +19,7 @@ from grove_tui.llm.embedded import embedded_model_path
 
 
 @pytest.fixture(scope="module")
-def model() -> str:
+def embedded_path() -> str:
     return str(embedded_model_path())
 
 
@@ -27,33 +27,37 @@ def invoke(args: list[str]):
     return CliRunner().invoke(main, args, catch_exceptions=False)
 
 
-def generate_args(out, model, world="hospital", preset="queuing", prompt="Six patients queue at the pharmacy counter",
+def generate_args(out, embedded_path, world="hospital", preset="queuing", prompt="Six patients queue at the pharmacy counter",
                   extra=()):
     return ["generate", "--no-ui", "--world", world, "--preset", preset, "--prompt", prompt, "--out", str(out),
-            "--bt-model", model, *extra]
+            "--bt-model", embedded_path, *extra]
 
 
 @pytest.mark.parametrize("world, preset, prompt, message", [
     ("moonbase", "queuing", "Six patients queue", "no shipped world"),
     ("hospital", "panic", "Six patients queue", "unknown preset 'panic'"),
     ("hospital", "queuing", "   ", "the prompt is empty"),
-    ("hospital", "normal", "Ten patients swim in the swimming pool", "does not have: 'swimming pool'"),
-    ("hospital", "normal", "10,000 people crowd into the bathroom", "10000 people do not fit"),
+    # These two start the model before the sentence is refused.
+    pytest.param("hospital", "normal", "Ten patients swim in the swimming pool", "does not have: 'swimming pool'",
+                 marks=pytest.mark.slow),
+    pytest.param("hospital", "normal", "10,000 people crowd into the bathroom", "10000 people do not fit",
+                 marks=pytest.mark.slow),
 ])
-def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, model, world, preset, prompt, message):
+def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, embedded_path, world, preset, prompt, message):
     out = tmp_path / "bundle"
-    result = invoke(generate_args(out, model, world, preset, prompt))
+    result = invoke(generate_args(out, embedded_path, world, preset, prompt))
     assert result.exit_code == EXIT_BAD_INPUT
     assert message in result.stderr
     assert result.stdout == ""
     assert not out.exists() and list(tmp_path.iterdir()) == []
 
 
-def test_world_by_path(tmp_path, model):
+@pytest.mark.slow
+def test_world_by_path(tmp_path, embedded_path):
     from grove_tui.paths import worlds_dir
 
     out = tmp_path / "bundle"
-    result = invoke(generate_args(out, model, world=str(worlds_dir() / "office.yaml"), preset="normal",
+    result = invoke(generate_args(out, embedded_path, world=str(worlds_dir() / "office.yaml"), preset="normal",
                                   prompt="Ten people swim in the swimming pool"))
     # the world loaded from its path: the error is about the prompt, not the world
     assert result.exit_code == EXIT_BAD_INPUT and "world 'office' does not have" in result.stderr
@@ -68,6 +72,16 @@ def test_model_that_is_not_a_gguf_exits_4(tmp_path):
     assert not (tmp_path / "bundle").exists()
 
 
+def test_strict_refuses_an_unsure_reading_with_the_question_and_writes_nothing(tmp_path, model):
+    # "the counter": the hospital has the pharmacy's and the cafeteria's; no model loads to say so
+    out = tmp_path / "bundle"
+    result = invoke(generate_args(out, model, prompt="Ten people queue at the counter", extra=["--strict"]))
+    assert result.exit_code == EXIT_BAD_INPUT
+    assert "unsure" in result.stderr and "pharmacy" in result.stderr and "food_counter" in result.stderr
+    assert "without --strict" in result.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
 def test_robot_points_parse():
     assert parse_robot_point("3.5, -2") == (3.5, -2.0)
     assert parse_robot_point("main_entrance") == "main_entrance"
@@ -75,14 +89,17 @@ def test_robot_points_parse():
 
 
 @pytest.mark.slow
-def test_generate_simulate_and_resimulate(tmp_path, model):
+def test_generate_simulate_and_resimulate(tmp_path, embedded_path):
     out = tmp_path / "pharmacy"
-    result = invoke(generate_args(out, model, extra=["--simulate", "5", "--seed", "2", "--robot-start", "main_entrance"]))
+    result = invoke(generate_args(out, embedded_path, extra=["--simulate", "5", "--seed", "2", "--robot-start", "main_entrance"]))
     assert result.exit_code == EXIT_OK, result.stderr
     lines = result.stdout.splitlines()
     assert lines[0] == f"bundle: {out}"
     assert any(line.startswith("agents: 6 ") for line in lines)
     assert any(line.startswith("simulated: 5.0 s") for line in lines)
+    # after a run the report is the checked one, with the run it was checked on
+    assert any(line.startswith("grounding: ") and "(run of 5 s)" in line for line in lines), lines
+    assert (out / "grounding.json").is_file()
     assert "synthesis" in result.stderr  # progress went to stderr
     scenario, trees, _, _ = load_bundle(out)
     assert len(scenario.agents) == 6 and scenario.seed == 2 and len(trees) == 6
@@ -95,7 +112,7 @@ def test_generate_simulate_and_resimulate(tmp_path, model):
 
 
 @pytest.mark.slow
-def test_batch_loads_once_and_reports_each_line(tmp_path, model):
+def test_batch_loads_once_and_reports_each_line(tmp_path, embedded_path):
     jobs = tmp_path / "jobs.jsonl"
     jobs.write_text("\n".join([
         json.dumps({"world": "residential", "preset": "normal", "prompt": "Two children walk to the kitchen",
@@ -104,7 +121,7 @@ def test_batch_loads_once_and_reports_each_line(tmp_path, model):
                     "name": "pool"}),
     ]) + "\n")
     out = tmp_path / "out"
-    result = invoke(["batch", str(jobs), "--out", str(out), "--bt-model", model])
+    result = invoke(["batch", str(jobs), "--out", str(out), "--bt-model", embedded_path])
     assert result.exit_code == EXIT_GENERATION_FAILED  # one line failed, the other was generated
     assert f"ok {out / 'kids'} agents=2" in result.stdout
     assert f"failed {out / 'pool'}" in result.stdout and "swimming pool" in result.stdout
@@ -112,13 +129,13 @@ def test_batch_loads_once_and_reports_each_line(tmp_path, model):
     assert "1/2 scenarios generated" in result.stderr
 
 
-def test_batch_file_errors_exit_2(tmp_path, model):
+def test_batch_file_errors_exit_2(tmp_path, embedded_path):
     jobs = tmp_path / "jobs.jsonl"
     jobs.write_text('{"world": "hospital", "preset": "normal"}\n')
-    result = invoke(["batch", str(jobs), "--out", str(tmp_path / "out"), "--bt-model", model])
+    result = invoke(["batch", str(jobs), "--out", str(tmp_path / "out"), "--bt-model", embedded_path])
     assert result.exit_code == EXIT_BAD_INPUT and "missing prompt" in result.stderr
     jobs.write_text("{not json\n")
-    result = invoke(["batch", str(jobs), "--out", str(tmp_path / "out"), "--bt-model", model])
+    result = invoke(["batch", str(jobs), "--out", str(tmp_path / "out"), "--bt-model", embedded_path])
     assert result.exit_code == EXIT_BAD_INPUT and "not valid JSON" in result.stderr
 
 

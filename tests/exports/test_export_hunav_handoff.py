@@ -11,7 +11,6 @@ import math
 
 import pytest
 import yaml
-from helpers.handmade import build_hospital_bundle
 from helpers.hunavsim_factory import HunavSimFactory
 from lxml import etree
 
@@ -34,12 +33,6 @@ from grove_tui.scenario.model import Scenario
 pytest.importorskip("behaviortreepy")
 
 
-@pytest.fixture(scope="module")
-def hospital_export(tmp_path_factory):
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-    return bundle, export_hunav(bundle, tmp_path_factory.mktemp("out") / "hunav")
-
-
 def _bundle(world, preset_name, prompt, groups, out, seed=0):
     preset = load_preset(preset_name)
     grid = build_grid(world)
@@ -60,7 +53,7 @@ def _params(export):
 
 
 def test_every_tree_loads_with_hunavsims_ids_and_declared_ports(hospital_export):
-    _, export = hospital_export
+    export = hospital_export
     factory = HunavSimFactory()
     for path in export.trees:
         xml = path.read_text()
@@ -99,7 +92,7 @@ def _tick_like_hunavsim(xml, steps=60):
 
 
 def test_every_tree_reaches_a_final_state_that_ticking_on_does_not_undo(hospital_export):
-    _, export = hospital_export
+    export = hospital_export
     for path in export.trees:
         statuses, moves = _tick_like_hunavsim(path.read_text())
         # The root never completes, so BT.CPP never resets it; after the routine, nothing but the hold runs.
@@ -116,7 +109,7 @@ def test_the_check_fails_for_a_tree_that_just_ends():
 
 
 def test_surprised_agent_carries_its_reaction_and_goals_are_never_empty(hospital_export):
-    _, export = hospital_export
+    export = hospital_export
     params = _params(export)
     lead = etree.fromstring((export.directory / "agents_hospital__agent_1_bt.xml").read_bytes())
     assert params["agent1"]["behavior"]["type"] == "Surprised"
@@ -132,7 +125,7 @@ def test_surprised_agent_carries_its_reaction_and_goals_are_never_empty(hospital
 
 
 def test_every_goto_says_the_agents_goal_radius_which_is_the_radius_hunavsim_applies(hospital_export):
-    _, export = hospital_export
+    export = hospital_export
     params = yaml.safe_load(export.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]
     for name in params["agents"]:
         tree = export.directory / f"agents_hospital__agent_{params[name]['id']}_bt.xml"
@@ -140,8 +133,8 @@ def test_every_goto_says_the_agents_goal_radius_which_is_the_radius_hunavsim_app
         assert tolerances <= {params[name]["goal_radius"]} and params[name]["goal_radius"] == DEFAULT_GOAL_RADIUS == 0.1
 
 
-def test_robot_start_and_goal_go_into_the_launch_arguments_and_readme(hospital_export):
-    bundle, export = hospital_export
+def test_robot_start_and_goal_go_into_the_launch_arguments_and_readme(bundle, hospital_export):
+    export = hospital_export
     scenario = Scenario.load(bundle / "scenario.yaml")
     readme = export.readme.read_text()
     x, y = scenario.robot.start
@@ -151,14 +144,12 @@ def test_robot_start_and_goal_go_into_the_launch_arguments_and_readme(hospital_e
     assert "hunav_gazebo_wrapper/scenarios/" in readme and "hunav_gazebo_wrapper/behavior_trees/" in readme
 
 
-def test_unknown_simulator_is_refused(hospital_export, tmp_path):
-    bundle, _ = hospital_export
+def test_unknown_simulator_is_refused(bundle, tmp_path):
     with pytest.raises(ExportError, match="Gazebo Classic"):
         export_hunav(bundle, tmp_path / "x", simulator="gazebo")
 
 
-def test_kept_grove_nodes_never_clash_with_hunavsims(hospital_export, tmp_path):
-    bundle, _ = hospital_export
+def test_kept_grove_nodes_never_clash_with_hunavsims(bundle, tmp_path):
     kept = export_hunav(bundle, tmp_path / "keep", lower=False)
     model = etree.fromstring(kept.nodes_model.read_bytes())
     declared = {el.get("ID") for el in model.iter() if el.get("ID")}
@@ -200,7 +191,7 @@ def test_hunav_node_table_covers_the_manifests_hunavsim_nodes():
 
 
 def test_loader_emulation_passes_the_export_and_catches_what_aborts_hunavsim(hospital_export):
-    _, export = hospital_export
+    export = hospital_export
     assert check_hunav_export(export.agents_yaml) == []
     document = yaml.safe_load(export.agents_yaml.read_text())
     params = document["hunav_loader"]["ros__parameters"]
@@ -220,7 +211,7 @@ def test_loader_emulation_passes_the_export_and_catches_what_aborts_hunavsim(hos
 def test_loader_emulation_names_a_missing_tree(hospital_export, tmp_path):
     import shutil
 
-    _, export = hospital_export
+    export = hospital_export
     copy = tmp_path / "copy"
     shutil.copytree(export.directory, copy)
     (copy / "agents_hospital__agent_2_bt.xml").unlink()
@@ -229,7 +220,7 @@ def test_loader_emulation_names_a_missing_tree(hospital_export, tmp_path):
 
 
 def test_timed_nodes_say_which_clock_hunavsim_runs_them_on(hospital_export):
-    _, export = hospital_export
+    export = hospital_export
     seen = set()
     for path in export.trees:
         for el in etree.fromstring(path.read_bytes()).iter("StopAndWaitTimerAction", "Timeout", "Delay"):

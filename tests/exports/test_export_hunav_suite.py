@@ -27,9 +27,6 @@ from grove_tui.exports.nav2_map import read_pgm
 from grove_tui.exports.trajectories import export_trajectories
 from grove_tui.generation.pipeline import GenerationPipeline
 from grove_tui.generation.presets import load_preset
-from grove_tui.generation.retrieval import NodeRetriever
-from grove_tui.llm.embedded import embedded_model_path
-from grove_tui.llm.local import LocalLLM
 from grove_tui.scenario.bundle import write_bundle
 from grove_tui.services.session import GroveSession
 from grove_tui.world import load_world
@@ -39,18 +36,6 @@ pytest.importorskip("behaviortreepy")
 
 SUITE = REPO / "eval" / "suite.yaml"
 CASES = load_suite(SUITE)
-
-
-@pytest.fixture(scope="module")
-def llm():
-    model = LocalLLM(embedded_model_path(), role="bt")
-    yield model
-    model.close()
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
 
 
 def _spread(cases):

@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 import yaml
-from helpers.handmade import build_evacuation_bundle, build_hospital_bundle
+from helpers.handmade import build_evacuation_bundle
 from lxml import etree
 import shapely
 from shapely.geometry import LineString, Point, Polygon
@@ -22,13 +22,7 @@ GROUND = "ground_plane"
 
 
 @pytest.fixture(scope="module")
-def exported(tmp_path_factory):
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-    return export_hunav(bundle, tmp_path_factory.mktemp("out") / "hunav")
-
-
-@pytest.fixture(scope="module")
-def evacuation(tmp_path_factory):
+def evacuation_export(tmp_path_factory):
     """Office evacuees through the main entrance: their muster points lie outside the building."""
     bundle = build_evacuation_bundle(tmp_path_factory.mktemp("evac") / "bundle")
     return export_hunav(bundle, tmp_path_factory.mktemp("out") / "hunav")
@@ -40,13 +34,13 @@ def _floats(text, n):
     return values
 
 
-def _models(exported):
-    data = exported.world_file.read_bytes()
+def _models(hospital_export):
+    data = hospital_export.world_file.read_bytes()
     assert b"<!--" not in data  # HuNavSim's WorldGenerator (tinyxml2) refuses worlds with comments
     root = etree.fromstring(data)
     assert root.tag == "sdf" and root.get("version") == "1.6"
     worlds = root.findall("world")
-    assert len(worlds) == 1 and worlds[0].get("name") == exported.world_file.stem
+    assert len(worlds) == 1 and worlds[0].get("name") == hospital_export.world_file.stem
     models = {}
     for model in worlds[0].findall("model"):
         if model.get("name") == GROUND:
@@ -62,9 +56,9 @@ def _models(exported):
     return models
 
 
-def test_sdf_walls_are_the_world_files_walls(exported):
+def test_sdf_walls_are_the_world_files_walls(hospital_export):
     world = load_world("hospital")
-    models = _models(exported)
+    models = _models(hospital_export)
     walls = [v for k, v in models.items() if k.startswith("wall_")]
     expected = np.asarray(world.room_walls(), dtype=float)
     assert len(walls) == len(expected)
@@ -79,9 +73,9 @@ def test_sdf_walls_are_the_world_files_walls(exported):
         assert min(s.distance(Point(door.position)) for s in segments) >= door.width / 2 - 0.03, door.name
 
 
-def test_sdf_furniture_and_obstacles_are_boxes_on_their_footprints(exported):
+def test_sdf_furniture_and_obstacles_are_boxes_on_their_footprints(hospital_export):
     world = load_world("hospital")
-    models = _models(exported)
+    models = _models(hospital_export)
     for entity in world.entities():
         pose, size = models[f"furniture_{entity.name}"]
         assert Point(pose[0], pose[1]).distance(entity.polygon.centroid) < 0.05
@@ -89,9 +83,9 @@ def test_sdf_furniture_and_obstacles_are_boxes_on_their_footprints(exported):
     assert sum(1 for k in models if k.startswith("obstacle_")) == len(world.obstacles)
 
 
-def _ground(exported):
+def _ground(hospital_export):
     """(xmin, ymin, xmax, ymax) the SDF's ground plane spans."""
-    root = etree.fromstring(exported.world_file.read_bytes())
+    root = etree.fromstring(hospital_export.world_file.read_bytes())
     [model] = [m for m in root.find("world").findall("model") if m.get("name") == GROUND]
     x, y = _floats(model.findtext("pose"), 6)[:2]
     sizes = [_floats(model.find(f"link/{kind}/geometry/plane/size").text, 2) for kind in ("collision", "visual")]
@@ -100,11 +94,11 @@ def _ground(exported):
     return x - sx / 2, y - sy / 2, x + sx / 2, y + sy / 2
 
 
-def _map(exported):
-    description = yaml.safe_load(exported.map_yaml.read_text())
+def _map(hospital_export):
+    description = yaml.safe_load(hospital_export.map_yaml.read_text())
     assert description["mode"] == "trinary" and description["negate"] == 0
     assert description["origin"][2] == 0.0
-    image = read_pgm((exported.map_yaml.parent / description["image"]).read_bytes())
+    image = read_pgm((hospital_export.map_yaml.parent / description["image"]).read_bytes())
     return description, image[::-1] == 0  # row 0 the smallest y, as the world
 
 
@@ -170,8 +164,8 @@ def test_world_and_map_span_one_extent_that_covers_every_goal_and_pose(which, re
         assert not occupied[int((y - y0) // r), int((x - x0) // r)], (x, y)
 
 
-def test_evacuees_muster_points_outside_are_goals_inside_the_scene(evacuation):
-    params = yaml.safe_load(evacuation.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]
+def test_evacuees_muster_points_outside_are_goals_inside_the_scene(evacuation_export):
+    params = yaml.safe_load(evacuation_export.agents_yaml.read_text())["hunav_loader"]["ros__parameters"]
     world = load_world("office")
     building = world.outline()
     outside = [(g["x"], g["y"]) for g in params["global_goals"].values()
@@ -179,11 +173,11 @@ def test_evacuees_muster_points_outside_are_goals_inside_the_scene(evacuation):
     # one point of its own outside per evacuee, 2 m and more beyond the door
     assert len({params[a]["goals"][-1] for a in params["agents"]}) <= len(params["agents"])
     assert len(outside) >= len(params["agents"])
-    ground = _ground(evacuation)
+    ground = _ground(evacuation_export)
     assert all(ground[0] < x < ground[2] and ground[1] < y < ground[3] for x, y in outside)
 
 
-def test_readme_says_where_the_world_and_map_go(exported):
-    readme = exported.readme.read_text()
+def test_readme_says_where_the_world_and_map_go(hospital_export):
+    readme = hospital_export.readme.read_text()
     assert "worlds/hospital.world" in readme and "maps/hospital.yaml" in readme
     assert "environment_name:=hospital" in readme

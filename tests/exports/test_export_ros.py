@@ -32,7 +32,6 @@ from rosbags.interfaces import QosDurability  # noqa: E402
 from rosbags.rosbag2 import Reader  # noqa: E402
 
 from grove_tui.cli import main  # noqa: E402
-from grove_tui.services.session import GroveSession  # noqa: E402
 from grove_tui.errors import GroveError, MissingExtraError  # noqa: E402
 from grove_tui.exports import foxglove as fox  # noqa: E402
 from grove_tui.exports import rosbag  # noqa: E402
@@ -44,14 +43,8 @@ from grove_tui.scenario.model import Scenario  # noqa: E402
 from grove_tui.services.jobs import read_jobs  # noqa: E402
 from grove_tui.world import load_world  # noqa: E402
 
+SIMULATED_SECONDS = 8.0  # the `simulated` fixture's run (tests/conftest.py)
 LEAVERS = (2, 5)  # people who leave the derived bundle half-way
-
-
-@pytest.fixture(scope="module")
-def simulated(tmp_path_factory) -> Path:
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("ros") / "bundle")
-    GroveSession().simulate(bundle, 8.0)
-    return bundle
 
 
 @pytest.fixture(scope="module")

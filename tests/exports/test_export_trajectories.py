@@ -9,17 +9,10 @@ from click.testing import CliRunner
 from helpers.handmade import build_hospital_bundle
 
 from grove_tui.cli import main
-from grove_tui.services.session import GroveSession
 from grove_tui.exports.trajectories import TrajectoryExportError, export_trajectories
 
 pedpy = pytest.importorskip("pedpy")
-
-
-@pytest.fixture(scope="module")
-def simulated(tmp_path_factory):
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-    GroveSession().simulate(bundle, 20.0)
-    return bundle
+SIMULATED_SECONDS = 20.0  # the `simulated` fixture's run (tests/conftest.py)
 
 
 def test_pedpy_loads_our_trajectories_and_computes_density_and_speed(simulated, tmp_path):

@@ -9,7 +9,6 @@ with EFBIG instead of ENOSPC): the same code path, without needing a small file 
 from __future__ import annotations
 
 import os
-import shutil
 import subprocess
 import sys
 import threading
@@ -17,27 +16,11 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from helpers.handmade import build_hospital_bundle
 
 from grove_tui.cli import main
-from grove_tui.services.session import GroveSession
 
 EXIT_BAD_INPUT = 2
 REPO = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(scope="module")
-def simulated(tmp_path_factory) -> Path:
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("hostile") / "bundle")
-    GroveSession().simulate(bundle, 3.0)
-    return bundle
-
-
-@pytest.fixture
-def bundle(simulated, tmp_path) -> Path:
-    copy = tmp_path / "bundle"
-    shutil.copytree(simulated, copy)
-    return copy
 
 
 def one_error(run, contains: str) -> str:
@@ -60,46 +43,46 @@ def invoke_with_deadline(args: list[str], seconds: float = 60.0):
 
 
 @pytest.mark.parametrize("name", ["trajectories.csv", "events.jsonl"])
-def test_metrics_refuses_run_files_linked_to_dev_zero(bundle, name):
-    (bundle / name).unlink()
-    (bundle / name).symlink_to("/dev/zero")
-    run = invoke_with_deadline(["metrics", bundle])
+def test_metrics_refuses_run_files_linked_to_dev_zero(simulated_copy, name):
+    (simulated_copy / name).unlink()
+    (simulated_copy / name).symlink_to("/dev/zero")
+    run = invoke_with_deadline(["metrics", simulated_copy])
     one_error(run, f"{name} points outside the bundle folder")
 
 
 @pytest.mark.parametrize("name", ["trajectories.csv", "events.jsonl"])
-def test_metrics_refuses_run_files_that_are_pipes(bundle, name):
-    (bundle / name).unlink()
-    os.mkfifo(bundle / name)
+def test_metrics_refuses_run_files_that_are_pipes(simulated_copy, name):
+    (simulated_copy / name).unlink()
+    os.mkfifo(simulated_copy / name)
     try:
-        run = invoke_with_deadline(["metrics", bundle])
+        run = invoke_with_deadline(["metrics", simulated_copy])
     finally:
         # Unblock any reader left behind, so a failing run does not keep a thread stuck.
-        fd = os.open(bundle / name, os.O_RDWR | os.O_NONBLOCK)
+        fd = os.open(simulated_copy / name, os.O_RDWR | os.O_NONBLOCK)
         os.close(fd)
     one_error(run, "is a pipe, not a file")
 
 
 @pytest.mark.parametrize("kind", ["rosbag", "foxglove"])
-def test_stream_exports_refuse_pipes_too(bundle, tmp_path, kind):
+def test_stream_exports_refuse_pipes_too(simulated_copy, tmp_path, kind):
     pytest.importorskip("rosbags" if kind == "rosbag" else "foxglove")
-    (bundle / "events.jsonl").unlink()
-    os.mkfifo(bundle / "events.jsonl")
+    (simulated_copy / "events.jsonl").unlink()
+    os.mkfifo(simulated_copy / "events.jsonl")
     out = tmp_path / ("x.mcap" if kind == "foxglove" else "bag")
     try:
-        run = invoke_with_deadline(["export", kind, bundle, "--out", out])
+        run = invoke_with_deadline(["export", kind, simulated_copy, "--out", out])
     finally:
-        os.close(os.open(bundle / "events.jsonl", os.O_RDWR | os.O_NONBLOCK))
+        os.close(os.open(simulated_copy / "events.jsonl", os.O_RDWR | os.O_NONBLOCK))
     one_error(run, "is a pipe, not a file")
     assert not os.path.lexists(out)
 
 
-def test_export_trajectories_refuses_a_device_node_and_a_read_only_file_system(bundle):
-    one_error(CliRunner().invoke(main, ["export", "trajectories", str(bundle), "--out", "/dev/full"]),
+def test_export_trajectories_refuses_a_device_node_and_a_read_only_file_system(simulated_copy):
+    one_error(CliRunner().invoke(main, ["export", "trajectories", str(simulated_copy), "--out", "/dev/full"]),
               "/dev/full: is a device node, not a folder")
-    one_error(CliRunner().invoke(main, ["export", "trajectories", str(bundle), "--out", "/proc/grove-out"]),
+    one_error(CliRunner().invoke(main, ["export", "trajectories", str(simulated_copy), "--out", "/proc/grove-out"]),
               "/proc/grove-out: cannot write there")
-    one_error(CliRunner().invoke(main, ["export", "foxglove", str(bundle), "--out", "/proc/grove.mcap"]),
+    one_error(CliRunner().invoke(main, ["export", "foxglove", str(simulated_copy), "--out", "/proc/grove.mcap"]),
               "/proc/grove.mcap: cannot write there")
 
 
@@ -116,11 +99,11 @@ def _on_a_full_disk(args: list[str], limit_bytes: int) -> subprocess.CompletedPr
 
 
 @pytest.mark.parametrize("kind, out_name, limit", [("trajectories", "traj", 40_000), ("foxglove", "run.mcap", 40_000)])
-def test_a_full_disk_is_one_line_and_leaves_nothing(bundle, tmp_path, kind, out_name, limit):
+def test_a_full_disk_is_one_line_and_leaves_nothing(simulated_copy, tmp_path, kind, out_name, limit):
     if kind == "foxglove":
         pytest.importorskip("foxglove")
     out = tmp_path / "deep" / out_name  # its parent folder is made for it, and removed again
-    done = _on_a_full_disk(["export", kind, bundle, "--out", out], limit)
+    done = _on_a_full_disk(["export", kind, simulated_copy, "--out", out], limit)
     lines = done.stderr.strip().splitlines()
     assert done.returncode == EXIT_BAD_INPUT, done.stderr[-2000:]
     assert len(lines) == 1 and lines[0].startswith(f"error: {out}: cannot write"), done.stderr[-2000:]

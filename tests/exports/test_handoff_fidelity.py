@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
-from helpers.handmade import build_evacuation_bundle, build_hospital_bundle
+from helpers.handmade import build_evacuation_bundle
 from lxml import etree
 
 from grove_tui.exports.hunav import export_hunav
@@ -55,21 +55,22 @@ def _exports(bundle: Path, out: Path) -> dict:
             "custom": metadata["custom_data"]}
 
 
-@pytest.fixture(scope="module")
-def hospital(tmp_path_factory) -> dict:
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("hospital") / "bundle")
-    GroveSession().simulate(bundle, 8.0)
-    return _exports(bundle, tmp_path_factory.mktemp("hospital_out"))
+SIMULATED_SECONDS = 8.0  # the `simulated` fixture's run of the hand-built hospital (tests/conftest.py)
 
 
 @pytest.fixture(scope="module")
-def evacuation(tmp_path_factory) -> dict:
+def hospital_run(simulated, tmp_path_factory) -> dict:
+    return _exports(simulated, tmp_path_factory.mktemp("hospital_out"))
+
+
+@pytest.fixture(scope="module")
+def evacuation_run(tmp_path_factory) -> dict:
     bundle = build_evacuation_bundle(tmp_path_factory.mktemp("evacuation") / "bundle")
     GroveSession().simulate(bundle, 25.0)
     return _exports(bundle, tmp_path_factory.mktemp("evacuation_out"))
 
 
-RUNS = ["hospital", "evacuation"]
+RUNS = [pytest.param("hospital_run", id="hospital"), pytest.param("evacuation_run", id="evacuation")]
 
 
 def _agents(run) -> dict[int, dict]:
@@ -161,17 +162,17 @@ def test_the_planning_grid_is_published_under_its_own_name_and_says_what_it_is(w
     assert (static.data == 100).sum() < (planning.data == 100).sum()
 
 
-def test_evacuation_trajectories_validate_in_pedpy_and_every_goal_is_inside_world_and_map(evacuation, tmp_path):
+def test_evacuation_trajectories_validate_in_pedpy_and_every_goal_is_inside_world_and_map(evacuation_run, tmp_path):
     pedpy = pytest.importorskip("pedpy")
-    paths = export_trajectories(evacuation["bundle"], tmp_path)
+    paths = export_trajectories(evacuation_run["bundle"], tmp_path)
     sqlite = next(p for p in paths if p.suffix == ".sqlite")
     traj = pedpy.load_trajectory_from_jupedsim_sqlite(trajectory_file=sqlite)
     walkable = pedpy.load_walkable_area_from_jupedsim_sqlite(trajectory_file=sqlite)
-    events = [line for line in (evacuation["bundle"] / "events.jsonl").read_text().splitlines() if '"evacuated"' in line]
+    events = [line for line in (evacuation_run["bundle"] / "events.jsonl").read_text().splitlines() if '"evacuated"' in line]
     assert events, "nobody got out: the check would prove nothing"
     assert pedpy.is_trajectory_valid(traj_data=traj, walkable_area=walkable)
-    [bag_map] = evacuation["bag"]["/map"]
+    [bag_map] = evacuation_run["bag"]["/map"]
     x0, y0, r = bag_map.info.origin.position.x, bag_map.info.origin.position.y, bag_map.info.resolution
     x1, y1 = x0 + bag_map.info.width * r, y0 + bag_map.info.height * r
-    goals = evacuation["params"]["global_goals"].values()
+    goals = evacuation_run["params"]["global_goals"].values()
     assert all(x0 < g["x"] < x1 and y0 < g["y"] < y1 for g in goals)

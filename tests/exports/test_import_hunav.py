@@ -9,7 +9,6 @@ from pathlib import Path
 import pytest
 import yaml
 from click.testing import CliRunner
-from helpers.handmade import build_hospital_bundle
 
 from grove_tui.cli import main
 from grove_tui.errors import HunavImportError
@@ -22,18 +21,12 @@ from grove_tui.simulation.simulation import Simulation
 pytest.importorskip("behaviortreepy")
 
 
-@pytest.fixture(scope="module")
-def exported(tmp_path_factory):
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
-    return bundle, export_hunav(bundle, tmp_path_factory.mktemp("e1") / "hunav")
-
-
 def _params(path):
     return yaml.safe_load(path.read_text())["hunav_loader"]["ros__parameters"]
 
 
-def test_export_import_export_gives_the_same_agents_goals_and_trees(exported, tmp_path):
-    _, first = exported
+def test_export_import_export_gives_the_same_agents_goals_and_trees(hospital_export, tmp_path):
+    first = hospital_export
     bundle = import_hunav(first.agents_yaml, tmp_path / "imported")
     second = export_hunav(bundle, tmp_path / "again")
     assert _params(second.agents_yaml) == _params(first.agents_yaml)
@@ -42,8 +35,9 @@ def test_export_import_export_gives_the_same_agents_goals_and_trees(exported, tm
         assert a.read_text() == b.read_text(), a.name
 
 
-def test_imported_bundle_has_the_exported_agents_and_global_goals(exported, tmp_path):
-    original, first = exported
+def test_imported_bundle_has_the_exported_agents_and_global_goals(bundle, hospital_export, tmp_path):
+    original = bundle
+    first = hospital_export
     params = _params(first.agents_yaml)
     bundle = import_hunav(first.agents_yaml, tmp_path / "imported")
     scenario, trees, _, _ = load_bundle(bundle)
@@ -58,8 +52,8 @@ def test_imported_bundle_has_the_exported_agents_and_global_goals(exported, tmp_
     assert trees["trees/agent_1.xml"] == (first.directory / "agents_hospital__agent_1_bt.xml").read_text()
 
 
-def test_imported_bundle_plays_in_grove(exported, tmp_path):
-    _, first = exported
+def test_imported_bundle_plays_in_grove(hospital_export, tmp_path):
+    first = hospital_export
     bundle = import_hunav(first.agents_yaml, tmp_path / "imported")
     scenario = Scenario.load(bundle / "scenario.yaml")
     sim = Simulation.from_scenario(scenario, bundle)
@@ -71,8 +65,8 @@ def test_imported_bundle_plays_in_grove(exported, tmp_path):
     assert all(status != "failed" for status in sim.tree_result)
 
 
-def test_foreign_map_gets_an_open_floor_and_plays(exported, tmp_path):
-    _, first = exported
+def test_foreign_map_gets_an_open_floor_and_plays(hospital_export, tmp_path):
+    first = hospital_export
     params = yaml.safe_load(first.agents_yaml.read_text())
     params["hunav_loader"]["ros__parameters"]["map"] = "cafe"
     folder = tmp_path / "cafe"
@@ -90,8 +84,8 @@ def test_foreign_map_gets_an_open_floor_and_plays(exported, tmp_path):
     assert sim.tree_errors == {}
 
 
-def test_broken_scenarios_are_refused_with_the_reason(exported, tmp_path):
-    _, first = exported
+def test_broken_scenarios_are_refused_with_the_reason(hospital_export, tmp_path):
+    first = hospital_export
     params = yaml.safe_load(first.agents_yaml.read_text())
     params["hunav_loader"]["ros__parameters"]["agent1"]["goals"] = []
     (tmp_path / "bad.yaml").write_text(yaml.safe_dump(params))
@@ -138,8 +132,7 @@ def test_an_imported_bundle_stands_alone_from_any_folder(absolute_out, tmp_path,
             assert result.exit_code == 0, (name, args, result.output)
 
 
-def test_cli_export_then_import_prints_the_files(exported, tmp_path):
-    bundle, _ = exported
+def test_cli_export_then_import_prints_the_files(bundle, tmp_path):
     result = CliRunner().invoke(main, ["export", "hunav", str(bundle), "--out", str(tmp_path / "e")])
     assert result.exit_code == 0, result.output
     printed = result.output.split()

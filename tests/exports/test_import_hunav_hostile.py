@@ -57,6 +57,18 @@ def test_values_simulate_would_refuse_are_refused_at_import(tmp_path, values, co
     refuse(write_scenario(tmp_path / "s", values), tmp_path / "out", contains)
 
 
+@pytest.mark.parametrize("change, contains", [
+    (lambda v: v.__setitem__("agents", ["agent1", {"N": 1}]), "`agents` lists {'N': 1}, which is not an agent's name"),
+    (lambda v: v.__setitem__("agents", [-70157]), "`agents` lists -70157, which is not an agent's name"),
+    (lambda v: v["agent1"].__setitem__("goals", 2.5), "agent1.goals is 2.5"),
+], ids=["a mapping as a name", "a number as a name", "goals a number"])
+def test_shapes_the_fuzzer_found_are_refused(tmp_path, change, contains):
+    """bench/fuzz.py found these (TypeError in the loader check) after the hand-off's layouts were merged."""
+    values = params()
+    change(values)
+    refuse(write_scenario(tmp_path / "s", values), tmp_path / "out", contains)
+
+
 def test_non_finite_goals_are_refused(tmp_path):
     values = params()
     values["global_goals"][2] = {"x": float("nan"), "y": 1.5}

@@ -3,18 +3,12 @@
 from __future__ import annotations
 
 import pytest
-from helpers.handmade import build_hospital_bundle
 
 from grove_tui.exports.pictures import PictureError, draw_scenario, render_scenario_text
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import load_world
 
 pytest.importorskip("matplotlib")
-
-
-@pytest.fixture(scope="module")
-def bundle(tmp_path_factory):
-    return build_hospital_bundle(tmp_path_factory.mktemp("bundle"))
 
 
 def test_png_and_svg_pictures_are_written(bundle, tmp_path):

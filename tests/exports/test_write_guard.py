@@ -8,7 +8,6 @@ Each case runs the real command on a really simulated bundle and checks the user
 from __future__ import annotations
 
 import os
-import shutil
 from pathlib import Path
 
 import pytest
@@ -36,73 +35,62 @@ def listing(root: Path) -> dict[str, bytes | str]:
     return out
 
 
-@pytest.fixture(scope="module")
-def simulated(tmp_path_factory) -> Path:
-    bundle = build_hospital_bundle(tmp_path_factory.mktemp("guard") / "bundle")
-    GroveSession().simulate(bundle, 3.0)
-    return bundle
-
-
-@pytest.fixture
-def bundle(simulated, tmp_path) -> Path:
-    copy = tmp_path / "bundle"
-    shutil.copytree(simulated, copy)
-    return copy
-
-
 # 1. `grove metrics` and a metrics.json link -------------------------------------------------------------------
-def test_metrics_never_writes_through_a_metrics_json_link(bundle, tmp_path):
+def test_metrics_never_writes_through_a_metrics_json_link(simulated_copy, tmp_path):
     precious = tmp_path / "thesis.tex"
     precious.write_text("\\chapter{Results}")
-    (bundle / "metrics.json").unlink()
-    (bundle / "metrics.json").symlink_to(precious)
-    run = invoke(["metrics", bundle])
+    (simulated_copy / "metrics.json").unlink()
+    (simulated_copy / "metrics.json").symlink_to(precious)
+    run = invoke(["metrics", simulated_copy])
     assert run.exit_code == EXIT_BAD_INPUT, run.output
     assert "metrics.json: is a symbolic link" in run.stderr and run.stderr.count("\n") == 1
     assert precious.read_text() == "\\chapter{Results}"
-    assert (bundle / "metrics.json").is_symlink()
+    assert (simulated_copy / "metrics.json").is_symlink()
     # Simulating again gives the bundle its own metrics.json back (run files never keep a link).
-    GroveSession().simulate(bundle, 1.0)
-    assert not (bundle / "metrics.json").is_symlink() and invoke(["metrics", bundle]).exit_code == 0
+    GroveSession().simulate(simulated_copy, 1.0)
+    assert not (simulated_copy / "metrics.json").is_symlink() and invoke(["metrics", simulated_copy]).exit_code == 0
     assert precious.read_text() == "\\chapter{Results}"
 
 
 # 2. `grove export trajectories` into a folder that is not its own ----------------------------------------------
-def test_export_trajectories_keeps_a_users_folder(bundle, tmp_path):
+def test_export_trajectories_keeps_a_users_folder(simulated_copy, tmp_path):
     mine = tmp_path / "analysis"
     mine.mkdir()
     (mine / "trajectories.csv").write_text("my own measurements\n")
     (mine / "notes.md").write_text("keep")
     before = listing(mine)
-    run = invoke(["export", "trajectories", bundle, "--out", mine])
+    run = invoke(["export", "trajectories", simulated_copy, "--out", mine])
     assert run.exit_code == EXIT_BAD_INPUT, run.output
     assert "is not a GROVE trajectories export" in run.stderr and "--overwrite" in run.stderr
     assert listing(mine) == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["analysis", "bundle"]  # nothing staged left behind
     # Its own earlier export is replaced; --overwrite replaces the user's folder when asked.
     out = tmp_path / "export"
-    assert invoke(["export", "trajectories", bundle, "--out", out]).exit_code == 0
-    assert invoke(["export", "trajectories", bundle, "--out", out]).exit_code == 0
+    assert invoke(["export", "trajectories", simulated_copy, "--out", out]).exit_code == 0
+    assert invoke(["export", "trajectories", simulated_copy, "--out", out]).exit_code == 0
     assert sorted(p.name for p in out.iterdir()) == [".grove-trajectories-export", "trajectories.csv",
                                                      "trajectories.sqlite", "trajectories.txt"]
-    assert invoke(["export", "trajectories", bundle, "--out", mine, "--overwrite"]).exit_code == 0
+    assert invoke(["export", "trajectories", simulated_copy, "--out", mine, "--overwrite"]).exit_code == 0
     assert not (mine / "notes.md").exists()
 
 
-def test_export_trajectories_never_replaces_the_bundle_it_reads(bundle):
-    before = listing(bundle)
-    for extra in ([], ["--overwrite"]):
-        run = invoke(["export", "trajectories", bundle, "--out", bundle, *extra])
-        assert run.exit_code == EXIT_BAD_INPUT, run.output
-    assert listing(bundle) == before
+@pytest.mark.parametrize("kind", ["trajectories", "hunav", "rosbag"])
+def test_an_export_never_replaces_the_bundle_it_reads(simulated_copy, kind):
+    if kind == "rosbag":
+        pytest.importorskip("rosbags")
+    before = listing(simulated_copy)
+    for out in (simulated_copy, simulated_copy.parent):
+        run = invoke(["export", kind, simulated_copy, "--out", out, "--overwrite"])
+        assert run.exit_code == EXIT_BAD_INPUT and "the bundle being exported" in run.stderr, run.output
+    assert listing(simulated_copy) == before
 
 
 # 3. `grove export foxglove` over a file that is not its own ------------------------------------------------------
-def test_export_foxglove_keeps_a_file_that_is_not_its_mcap_and_a_users_layout(bundle, tmp_path):
+def test_export_foxglove_keeps_a_file_that_is_not_its_mcap_and_a_users_layout(simulated_copy, tmp_path):
     pytest.importorskip("foxglove")
     mine = tmp_path / "mine.mcap"
     mine.write_text("a recording from the real robot")
-    run = invoke(["export", "foxglove", bundle, "--out", mine])
+    run = invoke(["export", "foxglove", simulated_copy, "--out", mine])
     assert run.exit_code == EXIT_BAD_INPUT and "is not a GROVE Foxglove export" in run.stderr
     assert mine.read_text() == "a recording from the real robot"
     assert not (tmp_path / "mine.layout.json").exists()
@@ -111,25 +99,25 @@ def test_export_foxglove_keeps_a_file_that_is_not_its_mcap_and_a_users_layout(bu
     other = tmp_path / "other.mcap"
     layout = tmp_path / "other.layout.json"
     layout.write_text('{"my": "layout"}')
-    run = invoke(["export", "foxglove", bundle, "--out", other])
+    run = invoke(["export", "foxglove", simulated_copy, "--out", other])
     assert run.exit_code == EXIT_BAD_INPUT and "is not a GROVE Foxglove layout" in run.stderr
     assert layout.read_text() == '{"my": "layout"}' and not other.exists()
 
     # Its own export (and its unchanged layout) are replaced; --overwrite replaces the user's files.
     own = tmp_path / "own.mcap"
-    assert invoke(["export", "foxglove", bundle, "--out", own]).exit_code == 0
-    assert invoke(["export", "foxglove", bundle, "--out", own]).exit_code == 0
-    assert invoke(["export", "foxglove", bundle, "--out", mine, "--overwrite"]).exit_code == 0
+    assert invoke(["export", "foxglove", simulated_copy, "--out", own]).exit_code == 0
+    assert invoke(["export", "foxglove", simulated_copy, "--out", own]).exit_code == 0
+    assert invoke(["export", "foxglove", simulated_copy, "--out", mine, "--overwrite"]).exit_code == 0
     assert mine.read_bytes().startswith(b"\x89MCAP0\r\n")
     assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".")) == []
 
 
-def test_export_foxglove_never_writes_through_a_link(bundle, tmp_path):
+def test_export_foxglove_never_writes_through_a_link(simulated_copy, tmp_path):
     pytest.importorskip("foxglove")
     precious = tmp_path / "precious.bin"
     precious.write_bytes(b"\x89MCAP0\r\n grove-tui but a link")
     (tmp_path / "x.mcap").symlink_to(precious)
-    run = invoke(["export", "foxglove", bundle, "--out", tmp_path / "x.mcap", "--overwrite"])
+    run = invoke(["export", "foxglove", simulated_copy, "--out", tmp_path / "x.mcap", "--overwrite"])
     assert run.exit_code == EXIT_BAD_INPUT and "symbolic link" in run.stderr
     assert precious.read_bytes() == b"\x89MCAP0\r\n grove-tui but a link"
 
@@ -172,14 +160,14 @@ def test_a_bundle_file_named_like_the_bundles_own_is_refused(tmp_path):
     assert listing(bundle) == before
 
 
-def test_picture_keeps_a_users_image_and_replaces_its_own(bundle, tmp_path):
+def test_picture_keeps_a_users_image_and_replaces_its_own(simulated_copy, tmp_path):
     pytest.importorskip("matplotlib")
     photo = tmp_path / "figure.png"
     photo.write_bytes(b"\x89PNG\r\n\x1a\n a photo of the lab")
-    run = invoke(["picture", bundle, "--out", photo])
+    run = invoke(["picture", simulated_copy, "--out", photo])
     assert run.exit_code == EXIT_BAD_INPUT and "is not a picture GROVE drew" in run.stderr
     assert photo.read_bytes() == b"\x89PNG\r\n\x1a\n a photo of the lab"
     own = tmp_path / "own.svg"
-    assert invoke(["picture", bundle, "--out", own]).exit_code == 0
-    assert invoke(["picture", bundle, "--out", own]).exit_code == 0
-    assert invoke(["picture", bundle, "--out", photo, "--overwrite"]).exit_code == 0
+    assert invoke(["picture", simulated_copy, "--out", own]).exit_code == 0
+    assert invoke(["picture", simulated_copy, "--out", own]).exit_code == 0
+    assert invoke(["picture", simulated_copy, "--out", photo, "--overwrite"]).exit_code == 0

@@ -16,12 +16,9 @@ from grove_tui.bt.xml import check_tree_file
 from grove_tui.scenario.bundle import load_bundle, load_report, write_bundle
 from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
 from grove_tui.generation.presets import PromptError, load_preset
-from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.language.model import PromptReading
 from grove_tui.simulation.simulation import Simulation
 from grove_tui.world import load_world
-from grove_tui.llm.embedded import embedded_model_path
-from grove_tui.llm.local import LocalLLM
 
 pytestmark = pytest.mark.slow
 
@@ -47,18 +44,6 @@ CASES = {
                           {"entrance_lobby"}),
 }
 EMERGENCY = [k for k, case in CASES.items() if case[1] == "emergency"]
-
-
-@pytest.fixture(scope="module")
-def llm():
-    model = LocalLLM(embedded_model_path(), role="bt")
-    yield model
-    model.close()
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
 
 
 @pytest.fixture(scope="module")

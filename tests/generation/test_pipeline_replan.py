@@ -45,18 +45,18 @@ class NoRetrieval(NodeRetriever):
 
 
 @pytest.fixture(scope="module")
-def retriever():
+def no_retrieval():
     return NoRetrieval()
 
 
-def make_pipeline(clinic, retriever, llm=None, preset="queuing"):
-    return GenerationPipeline(clinic, load_preset(preset), None, llm or CountingLLM(DRAFT), retriever)
+def make_pipeline(clinic, no_retrieval, llm=None, preset="queuing"):
+    return GenerationPipeline(clinic, load_preset(preset), None, llm or CountingLLM(DRAFT), no_retrieval)
 
 
 @pytest.fixture(scope="module")
-def generated(clinic, retriever):
+def planned(clinic, no_retrieval):
     llm = CountingLLM(DRAFT)
-    pipeline = make_pipeline(clinic, retriever, llm)
+    pipeline = make_pipeline(clinic, no_retrieval, llm)
     result = pipeline.run(PROMPT, seed=3)
     assert llm.calls == 1
     return pipeline, llm, result
@@ -66,8 +66,8 @@ def labels_and_counts(result):
     return [(g["label"], g["count"]) for g in result.report["groups"]]
 
 
-def test_counts_change_the_population_exactly_without_calling_the_model(generated):
-    pipeline, llm, result = generated
+def test_counts_change_the_population_exactly_without_calling_the_model(planned):
+    pipeline, llm, result = planned
     assert labels_and_counts(result) == [("patient", 10), ("nurse", 2)]
     events = []
     edited = pipeline.replan(result, {0: 14, 1: 3}, on_event=events.append)
@@ -84,8 +84,26 @@ def test_counts_change_the_population_exactly_without_calling_the_model(generate
     assert all(isinstance(e, (StageStarted, StageFinished)) for e in events)
 
 
-def test_every_tree_validates_and_has_planned_waypoints(generated):
-    pipeline, _, result = generated
+def test_the_report_says_what_the_sentence_asked_and_what_the_user_changed(planned):
+    # issue 28: after 10 -> 20 the count is not "✓ ten patients x20 / ✓ count 20"
+    from grove_tui.scenario.report import GroundingReport
+
+    pipeline, _, result = planned
+    edited = pipeline.replan(result, {0: 14})
+    report = GroundingReport.from_dict(edited.report["grounding"])
+    patients = report.groups[0]
+    (count,) = [c for c in patients.claims if c.kind == "count"]
+    assert count.asked == "10" and count.plan == "14 people (edited from 10)" and count.status == "planned"
+    assert patients.edit == "the sentence asked 10 ('Ten patients'); you changed it to 14"
+    assert not report.groups[1].edit
+    # a second edit still says what the sentence asked
+    again = GroundingReport.from_dict(pipeline.replan(edited, {0: 20}).report["grounding"])
+    assert again.groups[0].edit.startswith("the sentence asked 10 ") and again.groups[0].edit.endswith("to 20")
+    assert any(line.strip().startswith("! the sentence asked 10") for line in again.lines())
+
+
+def test_every_tree_validates_and_has_planned_waypoints(planned):
+    pipeline, _, result = planned
     edited = pipeline.replan(result, {0: 7})
     assert len(edited.trees) == len(edited.scenario.agents) == 9
     planner = ThetaStarPlanner(edited.grid)
@@ -103,8 +121,8 @@ def test_every_tree_validates_and_has_planned_waypoints(generated):
     assert edited.scenario.robot is not None and len(edited.scenario.robot.path) >= 2
 
 
-def test_report_keeps_earlier_stages_and_records_the_edit(generated):
-    pipeline, _, result = generated
+def test_report_keeps_earlier_stages_and_records_the_edit(planned):
+    pipeline, _, result = planned
     edited = pipeline.replan(result, {0: 12})
     old, new = result.report, edited.report
     for stage in ("rois", "retrieval", "synthesis"):
@@ -122,8 +140,8 @@ def test_report_keeps_earlier_stages_and_records_the_edit(generated):
         "counts edited: patient 10 -> 12", "counts edited: nurse 2 -> 4"]
 
 
-def test_same_result_counts_and_seed_give_the_same_bundle(generated, tmp_path):
-    pipeline, _, result = generated
+def test_same_result_counts_and_seed_give_the_same_bundle(planned, tmp_path):
+    pipeline, _, result = planned
     first = pipeline.replan(result, {0: 11, 1: 3})
     second = make_pipeline(pipeline.world, pipeline.retriever).replan(result, {0: 11, 1: 3})
     assert first.scenario == second.scenario
@@ -138,8 +156,8 @@ def test_same_result_counts_and_seed_give_the_same_bundle(generated, tmp_path):
     assert "re-planned with seed 4" in other.report["notes"][1]
 
 
-def test_same_counts_reproduce_the_original_run(generated):
-    pipeline, _, result = generated
+def test_same_counts_reproduce_the_original_run(planned):
+    pipeline, _, result = planned
     same = pipeline.replan(result, {0: 10, 1: 2})
     assert same.scenario == result.scenario and same.trees == result.trees
 
@@ -151,15 +169,15 @@ def test_same_counts_reproduce_the_original_run(generated):
     ({0: "7"}, "is not a whole number"),
     ({}, "no counts to change"),
 ])
-def test_counts_out_of_range_are_refused(generated, counts, message):
-    pipeline, _, result = generated
+def test_counts_out_of_range_are_refused(planned, counts, message):
+    pipeline, _, result = planned
     with pytest.raises(GenerationError, match=message.replace("(", r"\(")):
         pipeline.replan(result, counts)
 
 
-def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(clinic, retriever):
+def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(clinic, no_retrieval):
     draft = "2 nurses from restroom: GoTo(lobby)"
-    pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
+    pipeline = make_pipeline(clinic, no_retrieval, CountingLLM(draft), preset="normal")
     result = pipeline.run("two nurses walk from the restroom to the lobby", seed=0)
     assert labels_and_counts(result) == [("nurse", 2)]
     before_report = copy.deepcopy(result.report)
@@ -174,23 +192,23 @@ def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(cl
     assert labels_and_counts(pipeline.replan(result, {0: 3})) == [("nurse", 3)]
 
 
-def test_a_result_without_its_draft_cannot_be_replanned(generated):
-    pipeline, _, result = generated
+def test_a_result_without_its_draft_cannot_be_replanned(planned):
+    pipeline, _, result = planned
     from dataclasses import replace
 
     with pytest.raises(GenerationError, match="keeps no draft"):
         pipeline.replan(replace(result, inputs=None), {0: 5})
 
 
-def test_another_preset_pipeline_refuses_the_result(generated, clinic, retriever):
-    _, _, result = generated
+def test_another_preset_pipeline_refuses_the_result(planned, clinic, no_retrieval):
+    _, _, result = planned
     with pytest.raises(GenerationError, match="preset 'normal'"):
-        make_pipeline(clinic, retriever, preset="normal").replan(result, {0: 5})
+        make_pipeline(clinic, no_retrieval, preset="normal").replan(result, {0: 5})
 
 
-def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retriever):
+def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, no_retrieval):
     draft = "3 visitors from cafeteria: GoTo(coffee_counter)"
-    pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="normal")
+    pipeline = make_pipeline(clinic, no_retrieval, CountingLLM(draft), preset="normal")
     result = pipeline.run("visitors walk to the coffee counter", seed=0)
     # "visitors" with no number: the reading's vague count (a seeded choice in its documented range)
     vague = result.inputs.reading.groups[0].count
@@ -200,17 +218,17 @@ def test_without_a_number_the_vague_group_of_the_reading_is_edited(clinic, retri
     assert [a.id for a in edited.scenario.agents] == list(range(1, 7))
 
 
-def test_emergency_replan_rebuilds_the_group_fields(clinic, retriever):
+def test_emergency_replan_rebuilds_the_group_fields(clinic, no_retrieval):
     draft = "5 visitors from cafeteria: FollowVelocityField(back_exit)"
-    pipeline = make_pipeline(clinic, retriever, CountingLLM(draft), preset="emergency")
+    pipeline = make_pipeline(clinic, no_retrieval, CountingLLM(draft), preset="emergency")
     result = pipeline.run("five visitors evacuate the cafeteria", seed=0)
     edited = pipeline.replan(result, {0: 9})
     assert len(edited.scenario.agents) == 9 and set(edited.fields) == set(result.fields) == {"group_1"}
     assert all(len(a.goals) >= 1 for a in edited.scenario.agents)
 
 
-def test_cancel_stops_the_replan(generated):
-    pipeline, _, result = generated
+def test_cancel_stops_the_replan(planned):
+    pipeline, _, result = planned
     cancel = threading.Event()
     cancel.set()
     with pytest.raises(Cancelled):

@@ -8,20 +8,10 @@ from grove_tui.bt.manifest import NODES
 from grove_tui.generation.pipeline import STAGES, world_reference
 from grove_tui.generation.presets import load_preset
 from grove_tui.language.reading import read_prompt
-from grove_tui.generation.retrieval import NodeRetriever, RetrievedNode
+from grove_tui.generation.retrieval import RetrievedNode
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import offered_nodes, prepare_request
 from grove_tui.world import load_world
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
-
-
-@pytest.fixture(scope="module")
-def hospital():
-    return load_world("hospital")
 
 
 def request(hospital, retriever, preset_name, prompt):
@@ -52,6 +42,7 @@ def test_vanilla_offers_every_node_a_model_may_write():
     assert writable <= offered
 
 
+@pytest.mark.slow
 def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(hospital, retriever):
     prompt = "Ten patients queue at the pharmacy counter"
     preset, selection, req = request(hospital, retriever, "queuing", prompt)
@@ -67,6 +58,7 @@ def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(ho
     assert req.max_groups == 1 and req.grammar.startswith("root ::= level-1\n")
 
 
+@pytest.mark.slow
 def test_vanilla_prompt_has_the_whole_world_and_every_node(hospital, retriever):
     prompt = "Ten patients queue at the pharmacy counter"
     _, _, guided = request(hospital, retriever, "queuing", prompt)

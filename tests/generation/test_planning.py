@@ -8,7 +8,6 @@ import pytest
 from lxml import etree
 
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
-from grove_tui.navigation.grid import build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.bt.xml import read_tree
 from grove_tui.generation.planning import RobotRequest, goals_from_tree, plan_operational
@@ -16,11 +15,6 @@ from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import GenerationError, load_preset
 from grove_tui.language.reading import read_prompt
 from grove_tui.generation.rois import select_rois
-
-
-@pytest.fixture(scope="module")
-def grid(clinic):
-    return build_grid(clinic)
 
 
 def plan(clinic, grid, preset_name, prompt, groups, robot=None, seed=0):

@@ -8,17 +8,11 @@ import pytest
 from lxml import etree
 
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
-from grove_tui.navigation.grid import build_grid
 from grove_tui.generation.postprocess import GOAL_SPACING, SPAWN_SPACING, postprocess
 from grove_tui.errors import PromptError
 from grove_tui.generation.presets import load_preset
 from grove_tui.language.reading import read_prompt
 from grove_tui.generation.rois import select_rois
-
-
-@pytest.fixture(scope="module")
-def grid(clinic):
-    return build_grid(clinic)
 
 
 def queue_tree(place="pharmacy_counter"):
@@ -36,7 +30,9 @@ PROMPT = "Ten patients queue at the pharmacy counter while two nurses chat in th
 
 
 def goto_targets(tree):
-    return [n.ports["target"] for n in tree.walk() if n.node == "GoTo"]
+    """Where a tree walks to, in order: GoTo targets, and the exit a walk out of the building goes through."""
+    return [n.ports["target"] if n.node == "GoTo" else n.ports["exit"] for n in tree.walk()
+            if n.node == "GoTo" or (n.node == "FollowVelocityField" and n.ports.get("exit"))]
 
 
 def test_counts_follow_the_reading_and_missing_groups_are_added_where_their_words_say(clinic, grid):
@@ -103,8 +99,6 @@ def test_xml_is_btcpp_v4_with_ids_members_and_resolved_points(clinic, grid):
     for agent, root in zip(out.agents, roots):
         assert root.get("BTCPP_format") == "4"
         assert root.get("main_tree_to_execute") == f"agent_{agent.id}"
-        join = root.find(".//JoinGroup")
-        assert join.get("members") == "1,2,3,4" and join.get("agent_id") == "{id}" and join.get("group_id") == "0"
         converse = root.find(".//Converse")
         assert converse.get("members") == "1,2,3,4"
     centres = {(r.find(".//Converse").get("x"), r.find(".//Converse").get("y")) for r in roots}
@@ -113,6 +107,15 @@ def test_xml_is_btcpp_v4_with_ids_members_and_resolved_points(clinic, grid):
     # a group that talks starts together
     starts = [a.start for a in out.agents]
     assert max(math.dist(p, q) for p in starts for q in starts) < 4.0
+
+
+def test_join_group_names_the_members_and_the_group(clinic, grid):
+    tree = DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), DraftNode("GoTo", {"target": "cafeteria"})))
+    out = run(clinic, grid, "normal", "a family of four walks together to the cafeteria",
+              [DraftGroup("family", 4, "lobby", tree)])
+    for agent in out.agents:
+        join = etree.fromstring(agent.xml.encode()).find(".//JoinGroup")
+        assert join.get("members") == "1,2,3,4" and join.get("agent_id") == "{id}" and join.get("group_id") == "0"
 
 
 def test_same_seed_same_result_other_seed_other_spawns(clinic, grid):
@@ -261,7 +264,8 @@ def test_people_who_come_in_through_a_door_start_there_and_leavers_go_there(clin
 
 def test_people_sent_to_one_door_or_thing_get_goal_points_of_their_own(clinic, grid):
     """Four people on one goal point jostle for it for the rest of the run; they stand side by side instead."""
-    for target in ("main_entrance", "vending_machine"):
+    # (an exit is not among them: people sent to it leave through it, out of the scene)
+    for target in ("lobby_corridor_door", "vending_machine"):
         out = run(clinic, grid, "normal", f"four visitors walk to the {target.replace('_', ' ')}",
                   [DraftGroup("visitors", 4, "pharmacy", DraftNode("GoTo", {"target": target}))])
         goals = [a.targets[-1][1] for a in out.agents]

@@ -16,7 +16,6 @@ from grove_tui.bt.manifest import NODES
 from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
 from grove_tui.generation.presets import load_preset
-from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import fixed_system_message, pinned_cards, prepare_request
 from grove_tui.language.reading import read_prompt
@@ -29,11 +28,6 @@ SENTENCES = {
     "normal": "Three visitors walk from the {zone} to the {other}",
     "emergency": "A fire alarm: ten people in the {zone} evacuate",
 }
-
-
-@pytest.fixture(scope="module")
-def retriever():
-    return NodeRetriever()
 
 
 def _places(world):
@@ -57,6 +51,7 @@ def build(world, preset_name, retriever, prompt):
 CASES = [(w, p) for w in list_worlds() for p in SENTENCES]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", CASES)
 def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, preset_name, retriever):
     world = load_world(world_name)
@@ -73,6 +68,7 @@ def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, prese
     assert not re.search(r"\(-?\d+(\.\d+)?,-?\d", user), "coordinates in a guided prompt"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", CASES)
 def test_every_offered_node_has_its_card_and_the_sentence_comes_last(world_name, preset_name, retriever):
     world = load_world(world_name)
@@ -110,6 +106,7 @@ def test_a_card_is_one_line_with_every_writable_port_and_no_automatic_one():
         assert card.endswith("Always. Never alone.")
 
 
+@pytest.mark.slow
 def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_them(retriever):
     hospital, office = load_world("hospital"), load_world("office")
     _, _, a = build(hospital, "queuing", retriever, "Ten patients queue at the pharmacy counter")
@@ -120,6 +117,7 @@ def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_th
     assert fixed_system_message(load_preset("normal"), hospital, queuing) != a.messages[0]["content"]
 
 
+@pytest.mark.slow
 def test_vanilla_keeps_the_full_documents_and_world(retriever):
     hospital = load_world("hospital")
     _, _, request = build(hospital, "vanilla", retriever, "Ten patients queue at the pharmacy counter")
@@ -147,6 +145,7 @@ def tokenize():
     return lambda text: len(llm.tokenize(text.encode("utf-8"), add_bos=False, special=True))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", [(w, p) for w in list_worlds() for p in ONE_GROUP])
 def test_a_one_group_sentence_writes_one_tree_and_prefills_a_short_tail(world_name, preset_name, retriever, tokenize):
     """Issue 33: the reading fixes label, count and start, so the grammar asks for exactly one tree; the
@@ -162,6 +161,7 @@ def test_a_one_group_sentence_writes_one_tree_and_prefills_a_short_tail(world_na
     assert tokenize(user) + 12 <= 150, (tokenize(user), user)
 
 
+@pytest.mark.slow
 def test_the_lean_draft_parses_into_the_reading_groups(retriever):
     from grove_tui.generation.draft import parse_trees
 

@@ -30,7 +30,7 @@ SOCIAL_NODES = {"Converse", "Wander", "FollowAgent", "ApproachAgent", "GoTo", "Q
 
 
 @pytest.fixture(scope="module")
-def retriever(tmp_path_factory: pytest.TempPathFactory) -> NodeRetriever:
+def fresh_retriever(tmp_path_factory: pytest.TempPathFactory) -> NodeRetriever:
     return NodeRetriever(index_dir=tmp_path_factory.mktemp("chroma"))
 
 
@@ -47,29 +47,30 @@ def small_node_db(tmp_path: Path) -> Path:
     return root
 
 
-def test_recall_at_8_on_the_labelled_set_is_at_least_095(retriever: NodeRetriever):
-    result = evaluate(retriever, load_eval_set(), k=8)
+@pytest.mark.slow
+def test_recall_at_8_on_the_labelled_set_is_at_least_095(fresh_retriever: NodeRetriever):
+    result = evaluate(fresh_retriever, load_eval_set(), k=8)
     misses = [(case.prompt, missing) for case, _, missing in result.per_case if missing]
     assert result.recall() >= 0.95, misses
     for preset in result.presets():
         assert result.recall(preset) >= 0.9, (preset, misses)
 
 
-def test_labelled_set_is_broad_and_its_labels_are_retrievable(retriever: NodeRetriever):
+def test_labelled_set_is_broad_and_its_labels_are_retrievable(fresh_retriever: NodeRetriever):
     cases = load_eval_set()
     assert len(cases) >= 40
     assert {c.world for c in cases} >= {"hospital", "office", "residential"}
     assert {c.preset for c in cases} >= {"emergency", "queuing", "normal", "vanilla"}
     for case in cases:
-        allowed = {node for name in retriever.document_names(case.preset)
-                   for node in retriever.database.by_name()[name].nodes}
+        allowed = {node for name in fresh_retriever.document_names(case.preset)
+                   for node in fresh_retriever.database.by_name()[name].nodes}
         for need in case.needs:
             assert need <= set(NODES), (case.prompt, need)
             assert need & allowed, f"{case.prompt!r}: {sorted(need)} cannot be retrieved under {case.preset}"
 
 
-def test_results_are_sorted_and_typed(retriever: NodeRetriever):
-    results = retriever.retrieve("ten patients queue at the pharmacy", "queuing", k=8)
+def test_results_are_sorted_and_typed(fresh_retriever: NodeRetriever):
+    results = fresh_retriever.retrieve("ten patients queue at the pharmacy", "queuing", k=8)
     assert len(results) == 8
     assert [r.score for r in results] == sorted((r.score for r in results), reverse=True)
     assert len({r.name for r in results}) == 8
@@ -83,62 +84,67 @@ def test_results_are_sorted_and_typed(retriever: NodeRetriever):
     assert {"Queue", "GoTo"} <= {n for r in results for n in r.nodes}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("preset", ["emergency", "queuing", "normal", "vanilla"])
-def test_every_result_is_allowed_for_its_preset(retriever: NodeRetriever, preset: str):
-    documents = retriever.database.by_name()
+def test_every_result_is_allowed_for_its_preset(fresh_retriever: NodeRetriever, preset: str):
+    documents = fresh_retriever.database.by_name()
     for prompt in ("people chat and wander around the lobby, then queue at the counter",
                    "fire alarm, everyone runs to the exit", "a child follows her father to the garden"):
-        for item in retriever.retrieve(prompt, preset, k=12):
+        for item in fresh_retriever.retrieve(prompt, preset, k=12):
             assert preset in documents[item.name].presets, (preset, item.name)
 
 
-def test_emergency_offers_only_velocity_field_navigation(retriever: NodeRetriever):
-    results = retriever.retrieve("visitors chat, wander around and follow the guide to the cafeteria", "emergency", k=20)
+@pytest.mark.slow
+def test_emergency_offers_only_velocity_field_navigation(fresh_retriever: NodeRetriever):
+    results = fresh_retriever.retrieve("visitors chat, wander around and follow the guide to the cafeteria", "emergency", k=20)
     used = {n for r in results for n in r.nodes}
     assert not used & SOCIAL_NODES, used & SOCIAL_NODES
     assert "FollowVelocityField" in used
 
 
-def test_queuing_prioritises_the_queue_subtree(retriever: NodeRetriever):
+@pytest.mark.slow
+def test_queuing_prioritises_the_queue_subtree(fresh_retriever: NodeRetriever):
     neutral = "people in the hospital"
-    queuing = [r.name for r in retriever.retrieve(neutral, "queuing", k=3)]
+    queuing = [r.name for r in fresh_retriever.retrieve(neutral, "queuing", k=3)]
     assert "queue_at_counter" in queuing and "Queue" in queuing
-    normal = [r.name for r in retriever.retrieve(neutral, "normal", k=3)]
+    normal = [r.name for r in fresh_retriever.retrieve(neutral, "normal", k=3)]
     assert "queue_at_counter" not in normal
 
 
-def test_a_preset_object_is_read_through_its_retrieval_filter(retriever: NodeRetriever):
+@pytest.mark.slow
+def test_a_preset_object_is_read_through_its_retrieval_filter(fresh_retriever: NodeRetriever):
     class PresetLike:
         name = "my-evacuation"
         retrieval_filter = "emergency"
 
-    names = [r.name for r in retriever.retrieve("everyone leaves", PresetLike(), k=20)]
-    assert names == [r.name for r in retriever.retrieve("everyone leaves", "emergency", k=20)]
+    names = [r.name for r in fresh_retriever.retrieve("everyone leaves", PresetLike(), k=20)]
+    assert names == [r.name for r in fresh_retriever.retrieve("everyone leaves", "emergency", k=20)]
 
 
-def test_unknown_preset_is_a_clear_error(retriever: NodeRetriever):
+def test_unknown_preset_is_a_clear_error(fresh_retriever: NodeRetriever):
     with pytest.raises(RetrievalError, match="no preset filter 'home'.*emergency, queuing, normal, vanilla"):
-        retriever.retrieve("anything", "home")
+        fresh_retriever.retrieve("anything", "home")
 
 
-def test_no_preset_searches_everything(retriever: NodeRetriever):
-    names = {r.name for r in retriever.retrieve("evacuate and queue and chat", None, k=100)}
-    assert names == set(retriever.document_names(None))
+@pytest.mark.slow
+def test_no_preset_searches_everything(fresh_retriever: NodeRetriever):
+    names = {r.name for r in fresh_retriever.retrieve("evacuate and queue and chat", None, k=100)}
+    assert names == set(fresh_retriever.document_names(None))
 
 
-def test_documents_for_returns_the_model_facing_text_in_order(retriever: NodeRetriever):
-    texts = retriever.documents_for(["Queue", "queue_at_counter", "Sequence"])
+def test_documents_for_returns_the_model_facing_text_in_order(fresh_retriever: NodeRetriever):
+    texts = fresh_retriever.documents_for(["Queue", "queue_at_counter", "Sequence"])
     assert texts[0].startswith("# Queue (action)") and "---" not in texts[0].splitlines()[0]
     assert texts[1].startswith("# Template: queue at a service point")
     assert '"node": "Queue"' in texts[1]
     assert texts[2].startswith("# Sequence (control)")  # documented although never retrieved
     with pytest.raises(RetrievalError, match="no document 'Teleport'"):
-        retriever.documents_for(["Teleport"])
+        fresh_retriever.documents_for(["Teleport"])
 
 
-def test_index_uses_our_registered_embedding_function(retriever: NodeRetriever):
-    retriever.ensure_index()
-    configuration = retriever._collection.configuration
+def test_index_uses_our_registered_embedding_function(fresh_retriever: NodeRetriever):
+    fresh_retriever.ensure_index()
+    configuration = fresh_retriever._collection.configuration
     assert configuration["embedding_function"].name() == EMBEDDING_FUNCTION_NAME
     assert configuration["hnsw"]["space"] == "cosine"
     assert not configuration["embedding_function"].is_legacy()
@@ -150,6 +156,7 @@ def test_model_comes_from_the_installed_package():
     assert "site-packages" in str(model_dir) or "dist-packages" in str(model_dir)
 
 
+@pytest.mark.slow
 def test_index_is_reused_until_the_node_database_changes(small_node_db: Path, tmp_path: Path):
     index = tmp_path / "index"
     first = NodeRetriever(small_node_db, index).ensure_index()
@@ -163,6 +170,7 @@ def test_index_is_reused_until_the_node_database_changes(small_node_db: Path, tm
     assert changed.retrieve("people line up at the counter", "queuing", k=1)[0].name in ("Queue", "queue_at_counter")
 
 
+@pytest.mark.slow
 def test_a_corrupt_index_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path: Path):
     index = tmp_path / "index"
     index.mkdir()
@@ -173,22 +181,24 @@ def test_a_corrupt_index_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path
     assert {r.name for r in results} == {"FollowVelocityField", "evacuation_group"}
 
 
+@pytest.mark.slow
 def test_rebuilding_a_corrupt_index_leaves_other_retrievers_working(small_node_db: Path, tmp_path: Path,
-                                                                   retriever: NodeRetriever):
-    before = [r.name for r in retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)]
+                                                                   fresh_retriever: NodeRetriever):
+    before = [r.name for r in fresh_retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)]
     index = tmp_path / "index"
     index.mkdir()
     (index / "chroma.sqlite3").write_bytes(b"\0garbage" * 512)
     with pytest.warns(UserWarning, match="unusable"):
         NodeRetriever(small_node_db, index).ensure_index()
-    assert [r.name for r in retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)] == before
+    assert [r.name for r in fresh_retriever.retrieve("patients queue at the pharmacy", "queuing", k=3)] == before
     # Chroma keeps one System per directory; a second client on the same directory must share it,
     # never open the same sqlite file twice.
     from chromadb.api.shared_system_client import SharedSystemClient
 
-    assert str(retriever.index_dir) in SharedSystemClient._identifier_to_system
+    assert str(fresh_retriever.index_dir) in SharedSystemClient._identifier_to_system
 
 
+@pytest.mark.slow
 def test_a_foreign_collection_is_rebuilt_with_a_warning(small_node_db: Path, tmp_path: Path):
     import chromadb
     from chromadb.config import Settings
@@ -233,6 +243,7 @@ def test_lexical_matching_is_stemmed_and_order_free():
     assert phrase_in_prompt(content_tokens("FollowVelocityField"), frozenset(content_tokens("use follow velocity fields")))
 
 
+@pytest.mark.slow
 def test_query_embeddings_match_document_embeddings():
     from grove_tui.generation.retrieval import embed_query, embed_texts
 
@@ -245,6 +256,7 @@ def test_query_embeddings_match_document_embeddings():
         assert float(np.abs(query - embed_texts([text])).max()) < 1e-4, text
 
 
+@pytest.mark.slow
 def test_two_processes_building_one_index_both_succeed(small_node_db: Path, tmp_path: Path):
     import subprocess
     import sys

@@ -8,7 +8,6 @@ that the predicted queue is where the simulated people really stand.
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from helpers.clinic import QUEUE, make_result
 
 from grove_tui.bt.xml import read_tree
@@ -36,11 +35,6 @@ CHAT_PROMPT = "four friends chat in the cafeteria"
 CLEARANCE = RobotSpec((0.0, 0.0), (0.0, 0.0)).radius + PASSING_MARGIN - 0.1
 
 
-@pytest.fixture(scope="module")
-def grid(clinic):
-    return build_grid(clinic)
-
-
 def post_processed(clinic, grid, preset_name, prompt, group):
     preset = load_preset(preset_name)
     reading = read_prompt(prompt, clinic)
@@ -65,7 +59,7 @@ def test_the_robots_path_goes_around_the_queue_not_through_it(clinic, grid):
     assert nearest_formation_gap(formations, path) >= CLEARANCE
     planner = ThetaStarPlanner(grid)
     assert all(planner.segment_is_free(a[0], a[1], b[0], b[1]) for a, b in zip(path, path[1:]))
-    assert not op.notes
+    assert not [note for note in op.notes if "passes close" in note]
 
 
 def test_the_robot_chosen_across_the_crowd_keeps_clear_of_the_queue_and_the_served(clinic, grid):
@@ -133,5 +127,5 @@ def test_with_no_way_around_the_robot_passes_the_queue_and_the_report_says_so(tm
                                   DraftGroup("people", 5, "corridor", queue))
     op = plan_operational(narrow, grid, preset, post, 0, RobotRequest(start=(0.8, 0.9), goal=(15.2, 0.9)))
     assert op.robot.path[-1] == (15.2, 0.9), "the robot still gets to its goal"
-    assert op.notes == ["the robot's path passes close to the queue at ticket_counter (5 places): "
-                        "there is no way around"]
+    assert [note for note in op.notes if "passes close" in note] == [
+        "the robot's path passes close to the queue at ticket_counter (5 places): there is no way around"]

@@ -7,13 +7,13 @@ small draft, so how many tokens an answer needs is known without trusting what t
 from __future__ import annotations
 
 import pytest
-from helpers.tiny_qwen3 import build_tiny_qwen3
 
 from grove_tui.errors import ModelError
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.synthesis import SynthesisRequest, is_cut_off, synthesize
 from grove_tui.llm.grammar import gbnf_literal
-from grove_tui.llm.local import LocalLLM
+
+pytestmark = pytest.mark.slow  # every test here runs a real model
 
 # A grammar that allows exactly one draft of two groups, 79 characters. The vocabulary is single bytes
 # plus four two-byte merges ("Ġt", "ou", "ro", "es"), of which the answer can use at most four, so it
@@ -21,14 +21,6 @@ from grove_tui.llm.local import LocalLLM
 DRAFT = "2 people from lobby: Wait(duration=30)\n3 visitors from lobby: Wait(duration=60)"
 GRAMMAR = f"root ::= {gbnf_literal(DRAFT)}\n"
 MESSAGES = [{"role": "user", "content": "Two people wait in the lobby."}]
-
-
-@pytest.fixture(scope="module")
-def tiny_llm(tmp_path_factory):
-    llm = LocalLLM(build_tiny_qwen3(tmp_path_factory.mktemp("qwen3") / "tiny-qwen3.gguf"), role="bt", n_ctx=1024,
-                   n_threads=1)
-    yield llm
-    llm.close()
 
 
 def request() -> SynthesisRequest:

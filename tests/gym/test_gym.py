@@ -15,7 +15,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from helpers.handmade import build_hospital_bundle
 
 gymnasium = pytest.importorskip("gymnasium")
 
@@ -28,11 +27,6 @@ from grove_tui.gym.baseline import PathFollowingVOPolicy  # noqa: E402
 from grove_tui.gym.observation import PEDESTRIAN_COLUMNS, segment_clear, wall_distance  # noqa: E402
 from grove_tui.scenario.bundle import load_bundle  # noqa: E402
 from grove_tui.scenario.model import Scenario  # noqa: E402
-
-
-@pytest.fixture(scope="module")
-def bundle(tmp_path_factory) -> Path:
-    return build_hospital_bundle(tmp_path_factory.mktemp("gym") / "bundle")
 
 
 def with_robot(source: Path, out: Path, start, goal, via=()) -> Path:

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from helpers.handmade import build_hospital_bundle
 
 gymnasium = pytest.importorskip("gymnasium")
 
@@ -19,11 +18,6 @@ import grove_tui.gym  # noqa: E402,F401  (registers grove/SocialNav-v0)
 from grove_tui.errors import GroveError  # noqa: E402
 from grove_tui.gym import ENV_ID, GymError, SocialNavEnv  # noqa: E402
 from grove_tui.gym.config import ENV_BOUNDS, OBSERVATION_BOUNDS  # noqa: E402
-
-
-@pytest.fixture(scope="module")
-def bundle(tmp_path_factory) -> Path:
-    return build_hospital_bundle(tmp_path_factory.mktemp("gym-hostile") / "bundle")
 
 
 @pytest.fixture(scope="module")

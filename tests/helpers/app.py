@@ -18,7 +18,9 @@ from grove_tui.settings import ExportSettings, GenerationSettings, GroveSettings
 
 def test_settings(tmp_path: Path, **overrides: Any) -> GroveSettings:
     return GroveSettings(
-        ui=UISettings(preload_models=False),
+        # Asking about unsure readings has its own tests (test_app_unsure.py); the flows here type
+        # sentences with guessed counts and generate them as read.
+        ui=UISettings(preload_models=False, ask_when_unsure=overrides.pop("ask_when_unsure", False)),
         generation=GenerationSettings(world="hospital", preset=overrides.pop("preset", "queuing"), seed=0),
         simulation=SimulationSettings(fps=overrides.pop("fps", 20), speed=overrides.pop("speed", 1.0)),
         export=ExportSettings(directory=tmp_path / "exports"),

@@ -6,7 +6,8 @@ and the embedder, so a test about the UI does not wait for a model.
                                                      [--load-seconds S] [--token-seconds S]
 
 `--load-seconds` makes loading the model take that long (the app's warm-up shows it); `--token-seconds`
-spaces the streamed tokens (a generation long enough to press a key during it).
+spaces the streamed tokens (a generation long enough to press a key during it); `--list-seconds` delays
+the list of worlds (a key pressed before the lists are in).
 """
 
 from __future__ import annotations
@@ -48,6 +49,8 @@ def main() -> int:
     parser.add_argument("--draft", default=QUEUE_DRAFT)
     parser.add_argument("--load-seconds", type=float, default=0.0)
     parser.add_argument("--token-seconds", type=float, default=0.0)
+    parser.add_argument("--list-seconds", type=float, default=0.0,
+                        help="listing the worlds takes this long (a loaded machine's first second)")
     args = parser.parse_args()
     model = PacedLLM(args.draft, args.token_seconds)
 
@@ -55,7 +58,12 @@ def main() -> int:
         time.sleep(args.load_seconds)
         return model
 
-    backend = EngineBackend(llm_factory=load, retriever_factory=lexical_retriever)
+    class Backend(EngineBackend):
+        def list_worlds(self) -> list[str]:
+            time.sleep(args.list_seconds)
+            return super().list_worlds()
+
+    backend = Backend(llm_factory=load, retriever_factory=lexical_retriever)
     return run_app(world=args.world, preset=args.preset, backend=backend)
 
 

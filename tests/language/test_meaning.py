@@ -17,11 +17,6 @@ from grove_tui.world import load_world
 from helpers.paths import REPO
 
 
-@pytest.fixture(scope="module")
-def worlds():
-    return {name: load_world(name) for name in ("hospital", "office", "station", "airport", "residential", "museum")}
-
-
 @pytest.mark.slow
 def test_the_numpy_encoder_gives_sentence_transformers_vectors():
     from sentence_transformers import SentenceTransformer

@@ -12,18 +12,6 @@ import pytest
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.reading import Count, GroupReading, PromptReading, effective_counts, read_prompt
-from grove_tui.paths import worlds_dir
-from grove_tui.world.loader import load_world
-
-
-@pytest.fixture(scope="module")
-def worlds():
-    return {name: load_world(worlds_dir() / f"{name}.yaml") for name in ("hospital", "office", "residential")}
-
-
-@pytest.fixture(scope="module")
-def hospital(worlds):
-    return worlds["hospital"]
 
 
 def one(reading: PromptReading) -> GroupReading:

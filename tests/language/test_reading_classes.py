@@ -8,14 +8,6 @@ from __future__ import annotations
 import pytest
 
 from grove_tui.language.reading import GroupReading, PromptReading, read_prompt
-from grove_tui.paths import worlds_dir
-from grove_tui.world.loader import load_world
-
-
-@pytest.fixture(scope="module")
-def worlds():
-    return {name: load_world(worlds_dir() / f"{name}.yaml")
-            for name in ("hospital", "office", "residential", "airport", "station")}
 
 
 def one(reading: PromptReading) -> GroupReading:

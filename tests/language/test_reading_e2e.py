@@ -17,10 +17,7 @@ from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS
 from grove_tui.generation.pipeline import GenerationPipeline
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.reconcile import ROUTINE_NODES
-from grove_tui.generation.retrieval import NodeRetriever
 from grove_tui.language.reading import effective_counts
-from grove_tui.llm.embedded import embedded_model_path
-from grove_tui.llm.local import LocalLLM
 from grove_tui.scenario.bundle import load_bundle, write_bundle
 from grove_tui.scenario.report import GroundingReport
 from grove_tui.simulation.simulation import Simulation
@@ -41,15 +38,7 @@ PROMPTS = {
 
 
 @pytest.fixture(scope="module")
-def llm():
-    model = LocalLLM(embedded_model_path(), role="bt")
-    yield model
-    model.close()
-
-
-@pytest.fixture(scope="module")
-def generated(llm, tmp_path_factory):
-    retriever = NodeRetriever()
+def read_and_generated(llm, retriever, tmp_path_factory):
     out = {}
     for key, (world_name, prompt) in PROMPTS.items():
         world = load_world(world_name)
@@ -60,8 +49,8 @@ def generated(llm, tmp_path_factory):
 
 
 @pytest.mark.parametrize("key", list(PROMPTS))
-def test_every_group_of_the_sentence_is_in_the_scenario(generated, key):
-    _, result, bundle = generated[key]
+def test_every_group_of_the_sentence_is_in_the_scenario(read_and_generated, key):
+    _, result, bundle = read_and_generated[key]
     reading = result.inputs.reading
     counts = effective_counts(reading)
     groups = result.report["groups"]
@@ -73,8 +62,8 @@ def test_every_group_of_the_sentence_is_in_the_scenario(generated, key):
 
 
 @pytest.mark.parametrize("key", list(PROMPTS))
-def test_no_agent_has_an_idle_tree(generated, key):
-    _, result, _ = generated[key]
+def test_no_agent_has_an_idle_tree(read_and_generated, key):
+    _, result, _ = read_and_generated[key]
     for rel, xml in result.trees.items():
         tags = {el.tag for el in etree.fromstring(xml.encode()).iter()}
         assert tags & ROUTINE_NODES, f"{rel} has no action: {sorted(tags)}"
@@ -82,8 +71,8 @@ def test_no_agent_has_an_idle_tree(generated, key):
 
 @pytest.mark.parametrize("key,behavior", [("robot-subset", "Surprised"), ("families", "Scared"),
                                           ("evacuate", "Curious")])
-def test_robot_reactions_reach_behavior_trees_and_the_simulation(generated, key, behavior):
-    world, result, bundle = generated[key]
+def test_robot_reactions_reach_behavior_trees_and_the_simulation(read_and_generated, key, behavior):
+    world, result, bundle = read_and_generated[key]
     reacting = [a for a in result.scenario.agents if a.behavior == behavior]
     assert len(reacting) == 1 and all(a.behavior == "Regular" for a in result.scenario.agents if a not in reacting)
     xml = result.trees[reacting[0].tree]
@@ -93,8 +82,8 @@ def test_robot_reactions_reach_behavior_trees_and_the_simulation(generated, key,
     sim.run(5.0)  # the reaction pattern parses and ticks in the simulation
 
 
-def test_labels_come_from_the_sentence(generated):
-    _, result, _ = generated["families"]
+def test_labels_come_from_the_sentence(read_and_generated):
+    _, result, _ = read_and_generated["families"]
     assert [g["label"] for g in result.report["groups"]] == ["family", "person"]
-    _, result, _ = generated["office-wait"]
+    _, result, _ = read_and_generated["office-wait"]
     assert [g["label"] for g in result.report["groups"]] == ["colleague", "visitor"]

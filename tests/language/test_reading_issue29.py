@@ -8,12 +8,6 @@ from __future__ import annotations
 import pytest
 
 from grove_tui.language.reading import read_prompt
-from grove_tui.world import load_world
-
-
-@pytest.fixture(scope="module")
-def worlds():
-    return {name: load_world(name) for name in ("hospital", "office", "station", "airport", "residential", "museum")}
 
 
 def read(worlds, world, prompt):
@@ -148,3 +142,29 @@ def test_a_place_after_then_is_where_they_stay_and_the_one_before_where_they_sta
 def test_hanging_around_is_waiting_there(worlds):
     g, = read(worlds, "hospital", "Two teenagers hang around near the pharmacy.")
     assert (g.count.value, g.intent, g.location) == (2, "wait", "pharmacy")
+
+
+@pytest.mark.parametrize("world,prompt,via,destination", [
+    ("hospital", "Two visitors go to the pharmacy, then the cafeteria, and finally the main entrance.",
+     ("pharmacy", "cafeteria"), "main_entrance"),
+    ("hospital", "A nurse walks to ward A and then radiology.", ("ward_a",), "radiology"),
+    ("office", "An intern walks to the kitchen and then the boardroom.", ("kitchen",), "boardroom"),
+])
+def test_places_said_one_after_another_are_a_route(worlds, world, prompt, via, destination):
+    g, = read(worlds, world, prompt)
+    assert (g.via, g.destination) == (via, destination)
+
+
+def test_a_second_group_after_and_is_not_a_stop_of_the_first(worlds):
+    first, second = read(worlds, "hospital", "Five visitors walk to the cafeteria and the nurses wait in the pharmacy.")
+    assert (first.destination, first.via, second.location) == ("cafeteria", (), "pharmacy")
+
+
+@pytest.mark.parametrize("world,prompt,intent", [
+    ("hospital", "Four nurses smell smoke in ward A.", "evacuate"),
+    ("office", "The interns in the kitchen hear the fire alarm.", "evacuate"),
+    ("hospital", "Two guards hear the alarm and wait at the reception desk.", "wait"),
+])
+def test_noticing_an_alarm_and_doing_nothing_else_is_leaving(worlds, world, prompt, intent):
+    g, = read(worlds, world, prompt)
+    assert g.intent == intent

@@ -8,12 +8,6 @@ import pytest
 
 from grove_tui.language.model import UNSURE_BELOW, PromptReading
 from grove_tui.language.reading import read_prompt
-from grove_tui.world import load_world
-
-
-@pytest.fixture(scope="module")
-def worlds():
-    return {name: load_world(name) for name in ("hospital", "office", "station", "airport", "residential", "museum")}
 
 
 @pytest.mark.parametrize("world,prompt,task,places", [

@@ -8,12 +8,6 @@ import pytest
 
 from grove_tui.language.reading import read_prompt
 from grove_tui.language.text import normalise
-from grove_tui.world import load_world
-
-
-@pytest.fixture(scope="module")
-def hospital():
-    return load_world("hospital")
 
 
 @pytest.mark.parametrize("typed,read", [

@@ -7,7 +7,6 @@ from __future__ import annotations
 import json
 
 import pytest
-from helpers.tiny_qwen3 import build_tiny_qwen3
 
 from grove_tui.generation.draft import draft_grammar, parse_draft
 from grove_tui.generation.presets import list_presets, load_preset
@@ -97,9 +96,9 @@ def test_literals_are_escaped():
 # ---- compiled and sampled by llama.cpp ---------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def tiny_llm(tmp_path_factory):
-    path = build_tiny_qwen3(tmp_path_factory.mktemp("tiny") / "tiny-qwen3.gguf")
-    llm = LocalLLM(path, role="grammar-test", n_ctx=2048, n_threads=1)
+def grammar_llm(tiny_path):
+    """The tiny Qwen3 with room for the longest preset grammar's drafts."""
+    llm = LocalLLM(tiny_path, role="grammar-test", n_ctx=2048, n_threads=1)
     yield llm
     llm.close()
 
@@ -116,11 +115,12 @@ UNIT_SCHEMAS = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("index", range(len(UNIT_SCHEMAS)))
-def test_unit_grammars_compile_and_produce_strict_json(tiny_llm, index):
+def test_unit_grammars_compile_and_produce_strict_json(grammar_llm, index):
     grammar = schema_to_gbnf(UNIT_SCHEMAS[index])
     for seed in range(4):
-        result = tiny_llm.generate("<|im_start|>assistant\n", grammar=grammar, max_tokens=400, seed=seed, temperature=1.0)
+        result = grammar_llm.generate("<|im_start|>assistant\n", grammar=grammar, max_tokens=400, seed=seed, temperature=1.0)
         json.loads(result.text)
         assert result.grammar_engine == "llguidance"  # token masks took the grammar (no GBNF fallback)
 
@@ -141,7 +141,8 @@ def _preset_node_sets():
     return sets
 
 
-def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
+@pytest.mark.slow
+def test_every_preset_draft_grammar_compiles_and_parses(grammar_llm):
     """The grammar of every preset's full node set over every shipped world: llama.cpp compiles and samples it
     (random weights write long, varied drafts), and parse_draft accepts what it wrote."""
     worlds = list_worlds()
@@ -151,7 +152,7 @@ def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
         for preset, (nodes, limits) in _preset_node_sets().items():
             grammar = draft_grammar(nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                     max_depth=limits.max_depth)
-            result = tiny_llm.generate([{"role": "user", "content": f"{preset} scenario"}], grammar=grammar,
+            result = grammar_llm.generate([{"role": "user", "content": f"{preset} scenario"}], grammar=grammar,
                                        max_tokens=1800, seed=index, temperature=1.0)
             draft = parse_draft(result.text, nodes, rois, max_groups=limits.max_groups, max_count=limits.max_count,
                                 max_depth=limits.max_depth)
@@ -159,18 +160,20 @@ def test_every_preset_draft_grammar_compiles_and_parses(tiny_llm):
             assert result.grammar_engine == "llguidance", (world_name, preset)  # token masks, not the GBNF fallback
 
 
-def test_a_malformed_grammar_costs_one_worker_not_the_app(tiny_llm):
+@pytest.mark.slow
+def test_a_malformed_grammar_costs_one_worker_not_the_app(grammar_llm):
     """The reason only our own grammars are compiled: llama.cpp may die on a bad one, and only the worker goes."""
     with pytest.raises(ModelError):
-        tiny_llm.generate("x", grammar="root ::= [a-", max_tokens=4)
-    assert json.loads(tiny_llm.generate("x", grammar=schema_to_gbnf({"const": 7}), max_tokens=4).text) == 7
+        grammar_llm.generate("x", grammar="root ::= [a-", max_tokens=4)
+    assert json.loads(grammar_llm.generate("x", grammar=schema_to_gbnf({"const": 7}), max_tokens=4).text) == 7
 
 
-def test_forced_tokens_are_evaluated_not_sampled_and_the_answer_repeats(tiny_llm):
+@pytest.mark.slow
+def test_forced_tokens_are_evaluated_not_sampled_and_the_answer_repeats(grammar_llm):
     """Token masks (issue 33): the tokens the grammar forces (a node name's rest, its bracket) are taken
     without sampling and evaluated in one batch with the sampled token; the same seed gives the same text."""
     grammar = draft_grammar(["Sequence", "GoTo", "Queue"], ["pharmacy_counter", "pharmacy"], max_groups=2)
-    runs = [tiny_llm.generate([{"role": "user", "content": "queue"}], grammar=grammar, max_tokens=600, seed=4,
+    runs = [grammar_llm.generate([{"role": "user", "content": "queue"}], grammar=grammar, max_tokens=600, seed=4,
                               temperature=1.0) for _ in range(2)]
     assert runs[0].text == runs[1].text
     assert runs[0].grammar_engine == "llguidance" and 0 < runs[0].forced_tokens < runs[0].completion_tokens

@@ -27,18 +27,6 @@ MESSAGES = [{"role": "system", "content": "Write a pedestrian scenario as JSON."
 
 
 @pytest.fixture(scope="module")
-def tiny_path(tmp_path_factory):
-    return build_tiny_qwen3(tmp_path_factory.mktemp("qwen3") / "tiny-qwen3.gguf")
-
-
-@pytest.fixture(scope="module")
-def tiny_llm(tiny_path):
-    llm = LocalLLM(tiny_path, role="bt", n_ctx=1024, n_threads=1)
-    yield llm
-    llm.close()
-
-
-@pytest.fixture(scope="module")
 def embedded_llm():
     llm = LocalLLM(embedded_model_path(), role="bt", n_ctx=1024, n_threads=1)
     yield llm
@@ -54,6 +42,7 @@ def test_tiny_qwen3_metadata(tiny_path):
     assert "enable_thinking" in info.chat_template
 
 
+@pytest.mark.slow
 def test_qwen3_prompt_ends_with_the_exact_empty_think_block(tiny_llm):
     prompt = tiny_llm.render(MESSAGES)
     assert prompt.endswith("<|im_start|>assistant\n<think>\n\n</think>\n\n")
@@ -82,6 +71,7 @@ def test_qwen3_template_that_ignores_the_flag_still_gets_the_think_block():
     assert prompt.endswith("<|im_start|>assistant\n" + QWEN3_EMPTY_THINK)
 
 
+@pytest.mark.slow
 def test_tiny_qwen3_generates_grammar_valid_drafts(tiny_llm):
     grammar = draft_grammar(NODES, ROIS, max_groups=3, max_count=30, max_depth=3)
     for seed in range(5):
@@ -94,6 +84,7 @@ def test_tiny_qwen3_generates_grammar_valid_drafts(tiny_llm):
         assert 0 < result.completion_tokens <= 900
 
 
+@pytest.mark.slow
 def test_shared_system_prefix_is_reused_from_the_kv_cache(tiny_llm):
     grammar = schema_to_gbnf({"const": 1})
     system = {"role": "system", "content": "You write pedestrian scenarios. " * 8}
@@ -108,6 +99,7 @@ def test_shared_system_prefix_is_reused_from_the_kv_cache(tiny_llm):
     assert other.cached_tokens < 10
 
 
+@pytest.mark.slow
 def test_same_seed_same_output(tiny_llm):
     grammar = draft_grammar(NODES, ROIS, max_groups=2, max_depth=2)
     first = tiny_llm.generate(MESSAGES, grammar=grammar, max_tokens=600, seed=11, temperature=1.0).text
@@ -115,6 +107,7 @@ def test_same_seed_same_output(tiny_llm):
     assert first == second
 
 
+@pytest.mark.slow
 def test_cut_off_answer_is_retried_with_a_larger_budget(tiny_llm):
     grammar = schema_to_gbnf({"const": "abcdefghij"})  # 12 characters of JSON, about 12 byte tokens
     result = tiny_llm.generate("go", grammar=grammar, max_tokens=8, length_retries=1)
@@ -124,6 +117,7 @@ def test_cut_off_answer_is_retried_with_a_larger_budget(tiny_llm):
         tiny_llm.generate("go", grammar=grammar, max_tokens=2, length_retries=1)
 
 
+@pytest.mark.slow
 def test_context_too_small_for_the_prompt(tiny_path):
     with LocalLLM(tiny_path, role="roi", n_ctx=64, n_threads=1) as llm:
         with pytest.raises(ModelError, match="context too small for the prompt"):
@@ -180,6 +174,7 @@ def test_not_enough_memory(tiny_path):
 
 # ---- crash isolation, cancel, timeout (the embedded model, for real) ---------------------------------
 
+@pytest.mark.slow
 def test_a_killed_worker_is_reported_and_the_next_call_works(embedded_llm):
     embedded_llm.start()
     pid = embedded_llm.worker_pid
@@ -194,6 +189,7 @@ def test_a_killed_worker_is_reported_and_the_next_call_works(embedded_llm):
     assert embedded_llm.worker_pid not in (None, pid)
 
 
+@pytest.mark.slow
 def test_cancel_stops_a_generation_within_a_second(embedded_llm):
     cancel = threading.Event()
     cancelled_at: list[float] = []
@@ -210,6 +206,7 @@ def test_cancel_stops_a_generation_within_a_second(embedded_llm):
     assert embedded_llm.generate("Hi", grammar=schema_to_gbnf({"const": True}), max_tokens=4).text == "true"
 
 
+@pytest.mark.slow
 def test_cancel_before_the_first_token_stops_a_stuck_worker(embedded_llm):
     """A prefill cannot be interrupted between tokens: the worker is terminated and restarted lazily."""
     embedded_llm.start()
@@ -222,12 +219,14 @@ def test_cancel_before_the_first_token_stops_a_stuck_worker(embedded_llm):
     assert embedded_llm.generate("Hi", grammar=schema_to_gbnf({"const": 1}), max_tokens=4).text == "1"
 
 
+@pytest.mark.slow
 def test_timeout_is_a_model_error(embedded_llm):
     with pytest.raises(ModelError, match="did not answer in time"):
         embedded_llm.generate(MESSAGES, max_tokens=900, length_retries=0, timeout=0.3)
     assert embedded_llm.generate("Hi", grammar=schema_to_gbnf({"const": 2}), max_tokens=4).text == "2"
 
 
+@pytest.mark.slow
 def test_close_during_a_generation_ends_it_with_a_model_error(embedded_llm):
     embedded_llm.start()
     outcome: list[BaseException] = []

@@ -6,6 +6,10 @@ import subprocess
 import sys
 import textwrap
 
+import pytest
+
+pytestmark = pytest.mark.slow  # every test here runs a real model
+
 
 def test_worker_starts_when_stderr_has_no_file_descriptor():
     # A fresh interpreter, so the resource tracker has not been started by earlier tests.

@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 import gguf
+import pytest
 from helpers.tiny_qwen3 import QWEN3_VOCAB_SIZE, TINY, english_bpe_vocabulary, write_qwen3_gguf
 
 from grove_tui.llm.embedded import embedded_model_path
+
+pytestmark = pytest.mark.slow  # every test here runs a real model
 
 SENTENCE = "Ten patients walk from the main waiting room to the pharmacy counter and queue there."
 

@@ -16,8 +16,9 @@ from click.testing import CliRunner
 from grove_tui.cli import main
 from grove_tui.scenario.bundle import load_bundle
 from grove_tui.scenario.model import Scenario, ScenarioError
-from helpers.handmade import build_hospital_bundle
 
+# The `simulated` fixture's run (tests/conftest.py): metrics and exports need trajectories to read.
+SIMULATED_SECONDS = 2.0
 COMMANDS = {
     "metrics": lambda b, tmp: ["metrics", str(b)],
     "export hunav": lambda b, tmp: ["export", "hunav", str(b), "--out", str(tmp / "hunav_out")],
@@ -25,23 +26,6 @@ COMMANDS = {
     "picture": lambda b, tmp: ["picture", str(b), "--out", str(tmp / "picture.png")],
     "simulate": lambda b, tmp: ["simulate", str(b), "--seconds", "1"],
 }
-
-
-@pytest.fixture(scope="module")
-def pristine(tmp_path_factory) -> Path:
-    bundle = tmp_path_factory.mktemp("pristine") / "bundle"
-    build_hospital_bundle(bundle)
-    # A simulated bundle, so metrics and exports have trajectories to read.
-    result = CliRunner().invoke(main, ["simulate", str(bundle), "--seconds", "2"])
-    assert result.exit_code == 0, result.output
-    return bundle
-
-
-@pytest.fixture()
-def bundle(pristine, tmp_path) -> Path:
-    copy = tmp_path / "bundle"
-    shutil.copytree(pristine, copy, symlinks=True)
-    return copy
 
 
 def snapshot(root: Path) -> dict[str, str]:
@@ -58,17 +42,17 @@ def snapshot(root: Path) -> dict[str, str]:
     return state
 
 
-def edit_scenario(bundle: Path, change) -> None:
-    path = bundle / "scenario.yaml"
+def edit_scenario(simulated_copy: Path, change) -> None:
+    path = simulated_copy / "scenario.yaml"
     data = yaml.safe_load(path.read_text())
     change(data)
     path.write_text(yaml.safe_dump(data, sort_keys=False))
 
 
-def run_all(bundle: Path, tmp_path: Path, expected: str, commands=tuple(COMMANDS)) -> None:
+def run_all(simulated_copy: Path, tmp_path: Path, expected: str, commands=tuple(COMMANDS)) -> None:
     before = snapshot(tmp_path)
     for name in commands:
-        result = CliRunner().invoke(main, COMMANDS[name](bundle, tmp_path))
+        result = CliRunner().invoke(main, COMMANDS[name](simulated_copy, tmp_path))
         assert result.exit_code == 2, f"{name}: exit {result.exit_code}\n{result.output}\n{result.exception!r}"
         assert not isinstance(result.exception, Exception) or isinstance(result.exception, SystemExit), name
         message = result.output.strip()
@@ -78,21 +62,21 @@ def run_all(bundle: Path, tmp_path: Path, expected: str, commands=tuple(COMMANDS
         assert snapshot(tmp_path) == before, f"{name} changed the file system"
 
 
-def test_missing_scenario_yaml(bundle, tmp_path):
-    (bundle / "scenario.yaml").unlink()
-    run_all(bundle, tmp_path, "no such scenario file")
+def test_missing_scenario_yaml(simulated_copy, tmp_path):
+    (simulated_copy / "scenario.yaml").unlink()
+    run_all(simulated_copy, tmp_path, "no such scenario file")
 
 
-def test_broken_scenario_yaml(bundle, tmp_path):
-    (bundle / "scenario.yaml").write_text("world: [unclosed\n")
-    run_all(bundle, tmp_path, "not valid YAML")
+def test_broken_scenario_yaml(simulated_copy, tmp_path):
+    (simulated_copy / "scenario.yaml").write_text("world: [unclosed\n")
+    run_all(simulated_copy, tmp_path, "not valid YAML")
 
 
-def test_scenario_yaml_alias_bomb(bundle, tmp_path):
+def test_scenario_yaml_alias_bomb(simulated_copy, tmp_path):
     levels = "a: &a [x,x,x,x,x,x,x,x,x]\n" + "".join(
         f"{chr(98 + i)}: &{chr(98 + i)} [" + ",".join(["*" + chr(97 + i)] * 9) + "]\n" for i in range(8))
-    (bundle / "scenario.yaml").write_text(levels + "agents: *i\n")
-    run_all(bundle, tmp_path, "expands to more than")
+    (simulated_copy / "scenario.yaml").write_text(levels + "agents: *i\n")
+    run_all(simulated_copy, tmp_path, "expands to more than")
 
 
 @pytest.mark.parametrize("key, value, expected", [
@@ -100,9 +84,9 @@ def test_scenario_yaml_alias_bomb(bundle, tmp_path):
     ("seed", "abc", "seed: expected a whole number"),
     ("resolution", 0, "resolution: 0 is out of range"),
 ])
-def test_bad_scenario_values(bundle, tmp_path, key, value, expected):
-    edit_scenario(bundle, lambda data: data.__setitem__(key, value))
-    run_all(bundle, tmp_path, expected)
+def test_bad_scenario_values(simulated_copy, tmp_path, key, value, expected):
+    edit_scenario(simulated_copy, lambda data: data.__setitem__(key, value))
+    run_all(simulated_copy, tmp_path, expected)
 
 
 @pytest.mark.parametrize("field, value, expected", [
@@ -114,53 +98,53 @@ def test_bad_scenario_values(bundle, tmp_path, key, value, expected):
     ("tree", "/etc/passwd", "must be a relative path inside the bundle"),
     ("start", [float("nan"), 1.0], "start: nan is out of range"),
 ])
-def test_silently_accepted_agents_are_refused(bundle, tmp_path, field, value, expected):
+def test_silently_accepted_agents_are_refused(simulated_copy, tmp_path, field, value, expected):
     def change(data):
         for agent in data["agents"]:
             agent[field] = value
-    edit_scenario(bundle, change)
-    run_all(bundle, tmp_path, expected)
+    edit_scenario(simulated_copy, change)
+    run_all(simulated_copy, tmp_path, expected)
 
 
-def test_tree_linked_to_a_device_is_refused(bundle, tmp_path):
-    tree = bundle / "trees" / "agent_1.xml"
+def test_tree_linked_to_a_device_is_refused(simulated_copy, tmp_path):
+    tree = simulated_copy / "trees" / "agent_1.xml"
     tree.unlink()
     tree.symlink_to("/dev/zero")
-    run_all(bundle, tmp_path, "points outside the bundle folder", commands=("export hunav", "simulate"))
+    run_all(simulated_copy, tmp_path, "points outside the bundle folder", commands=("export hunav", "simulate"))
 
 
-def test_tree_that_is_a_pipe_inside_the_bundle_is_refused_without_blocking(bundle, tmp_path):
-    tree = bundle / "trees" / "agent_1.xml"
+def test_tree_that_is_a_pipe_inside_the_bundle_is_refused_without_blocking(simulated_copy, tmp_path):
+    tree = simulated_copy / "trees" / "agent_1.xml"
     tree.unlink()
     os.mkfifo(tree)
-    run_all(bundle, tmp_path, "is a pipe, not a file", commands=("export hunav", "simulate"))
+    run_all(simulated_copy, tmp_path, "is a pipe, not a file", commands=("export hunav", "simulate"))
 
 
-def test_tree_linked_outside_the_bundle_is_refused(bundle, tmp_path):
+def test_tree_linked_outside_the_bundle_is_refused(simulated_copy, tmp_path):
     outside = tmp_path / "elsewhere.xml"
-    shutil.copy(bundle / "trees" / "agent_1.xml", outside)
-    tree = bundle / "trees" / "agent_1.xml"
+    shutil.copy(simulated_copy / "trees" / "agent_1.xml", outside)
+    tree = simulated_copy / "trees" / "agent_1.xml"
     tree.unlink()
     tree.symlink_to(outside)
-    run_all(bundle, tmp_path, "points outside the bundle folder", commands=("export hunav", "simulate"))
+    run_all(simulated_copy, tmp_path, "points outside the bundle folder", commands=("export hunav", "simulate"))
 
 
-def test_truncated_grid(bundle, tmp_path):
-    grid = bundle / "grid.npz"
+def test_truncated_grid(simulated_copy, tmp_path):
+    grid = simulated_copy / "grid.npz"
     grid.write_bytes(grid.read_bytes()[:100])
-    run_all(bundle, tmp_path, "not a readable .npz file", commands=("export hunav", "simulate"))
+    run_all(simulated_copy, tmp_path, "not a readable .npz file", commands=("export hunav", "simulate"))
 
 
-def test_grid_with_zero_resolution(bundle, tmp_path):
-    with np.load(bundle / "grid.npz") as data:
+def test_grid_with_zero_resolution(simulated_copy, tmp_path):
+    with np.load(simulated_copy / "grid.npz") as data:
         arrays = dict(data)
     arrays["resolution"] = np.float64(0.0)
-    np.savez_compressed(bundle / "grid.npz", **arrays)
-    run_all(bundle, tmp_path, "resolution must be", commands=("export hunav", "simulate"))
+    np.savez_compressed(simulated_copy / "grid.npz", **arrays)
+    run_all(simulated_copy, tmp_path, "resolution must be", commands=("export hunav", "simulate"))
 
 
-def test_a_good_bundle_still_loads(bundle):
-    scenario, trees, fields, grid = load_bundle(bundle)
+def test_a_good_bundle_still_loads(simulated_copy):
+    scenario, trees, fields, grid = load_bundle(simulated_copy)
     assert len(scenario.agents) == 5 and len(trees) == 5 and grid.resolution == 0.1
     # And what the model writes is what it reads back.
     assert Scenario.from_dict(scenario.to_dict()) == scenario

@@ -6,18 +6,13 @@ from __future__ import annotations
 import os
 
 import pytest
-from helpers.tiny_qwen3 import build_tiny_qwen3
 
 from grove_tui.llm.grammar import schema_to_gbnf
 from grove_tui.llm.local import LocalLLM
 from grove_tui.services.backend import LOWEST_PRIORITY, MODEL_NICENESS, EngineBackend
 
-pytestmark = pytest.mark.skipif(not hasattr(os, "setpriority"), reason="no process priorities on this platform")
-
-
-@pytest.fixture(scope="module")
-def tiny_path(tmp_path_factory):
-    return build_tiny_qwen3(tmp_path_factory.mktemp("qwen3") / "tiny-qwen3.gguf")
+pytestmark = [pytest.mark.skipif(not hasattr(os, "setpriority"), reason="no process priorities on this platform"),
+              pytest.mark.slow]  # the model workers are real llama.cpp processes
 
 
 def backend_with(tiny_path, tmp_path, **kwargs):

@@ -42,10 +42,7 @@ JOBS = [
 GOOD = ["visitors-v000", "visitors-v001", "visitors-v002", "visitors-v003", "nurses-v000", "nurses-v001"]
 
 
-@pytest.fixture(autouse=True)
-def shared_index(monkeypatch):
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
 
 
 def _files(bundle: Path) -> dict[str, bytes]:

@@ -48,6 +48,9 @@ def batch_out(tmp_path) -> tuple[Path, list]:
                   "prompt_tokens": 1700, "completion_tokens": 90, "models": {"roi": "none", "bt": "smollm2"},
                   "grounding": {"groups": [{"ok": index == 0}], "unhonoured": []}}
         (bundle / "generation.json").write_text(json.dumps(report), encoding="utf-8")
+        # the report checked on the run: every claim held for the first, not for the second
+        (bundle / "grounding.json").write_text(json.dumps({"status": "holds" if index == 0 else "fails",
+                                                           "groups": []}), encoding="utf-8")
         append_record(out, JobRecord(bundle.name, 1, f"hash{index}", "ok", agents=agents))
     (out / "visitors-v001" / "metrics.json").write_text(json.dumps({"crowd": {"goal_reach_rate": 1.0}}),
                                                         encoding="utf-8")

@@ -13,7 +13,6 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from helpers.handmade import build_hospital_bundle
 
 from grove_tui.cli import main
 from grove_tui.errors import EXIT_BAD_INPUT
@@ -21,11 +20,6 @@ from grove_tui.exports.foxglove import FOXGLOVE_MODULES
 from grove_tui.exports.rosbag import ROSBAGS_MODULES
 
 JOB = {"world": "hospital", "preset": "normal", "prompt": "two visitors walk to ward a", "seed": 0}
-
-
-@pytest.fixture(scope="module")
-def bundle(tmp_path_factory) -> Path:
-    return build_hospital_bundle(tmp_path_factory.mktemp("extras") / "bundle")
 
 
 def _hide(monkeypatch, modules) -> None:

@@ -4,7 +4,6 @@ same bundle, byte for byte, for the same world, preset, prompt, seed and (embedd
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 
 import pytest
@@ -18,11 +17,7 @@ WORLD, PRESET, SEED = "hospital", "emergency", 3
 PROMPT = "fire alarm: six people in the cafeteria and two in the pharmacy evacuate through the nearest exit"
 
 
-@pytest.fixture(autouse=True)
-def shared_index(monkeypatch):
-    # The retrieval index is built once per machine; reuse the suite's when it has one.
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
 
 
 def _files(bundle: Path) -> dict[str, bytes]:

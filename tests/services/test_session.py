@@ -8,6 +8,7 @@ from grove_tui.errors import BadInputError, OutputError, PromptError, WorldError
 from grove_tui.services.session import GroveSession, ScenarioRequest
 
 
+@pytest.mark.slow
 def test_roles_naming_the_same_file_share_one_loaded_model():
     with GroveSession() as session:  # both roles default to the embedded model
         choices = session.model_choices()

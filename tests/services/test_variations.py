@@ -4,7 +4,6 @@ the same N for the same inputs, each recording its index and parent prompt."""
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 
 import pytest
@@ -14,10 +13,7 @@ from grove_tui.cli import main
 from grove_tui.services.jobs import MAX_VARIATIONS, read_jobs, variation_seed
 
 
-@pytest.fixture(autouse=True)
-def shared_index(monkeypatch):
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
 
 
 def _write_jobs(path: Path, *jobs: dict) -> Path:

@@ -2,19 +2,13 @@
 
 from __future__ import annotations
 
-import os
-
 import pytest
 
 from grove_tui.generation import retrieval
 from grove_tui.services.session import GroveSession, WarmUpStatus
 
 
-@pytest.fixture(autouse=True)
-def shared_index(monkeypatch):
-    # The retrieval index is built once per machine; reuse the suite's when it has one.
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+pytestmark = [pytest.mark.usefixtures("shared_index"), pytest.mark.slow]
 
 
 @pytest.fixture
@@ -81,3 +75,82 @@ def test_a_failing_step_is_reported_and_the_others_still_run(unloaded_embedder):
     assert states["models"].state == "failed" and "not a GGUF file" in states["models"].text
     assert states["retrieval"].state == "done" and states["reader"].state == "done"
     assert states["ready"].state == "failed" and not session.warm
+
+
+def test_a_generation_before_the_warm_up_loads_what_is_missing_as_its_loading_stage_with_an_eta():
+    """Issue 31: progress from the first second. A generation asked while the warm-up still loads shows
+    a stage "loading" part by part, each with the seconds it took last time, then the pipeline's stages."""
+    import threading
+    import time
+
+    from helpers.app import FakeLLM, lexical_retriever
+
+    from grove_tui.generation.pipeline import StageFinished, StageStarted
+    from grove_tui.services.session import LoadingProgress
+
+    loading = threading.Event()
+
+    def slow_model(role, choice):
+        loading.set()
+        time.sleep(1.0)
+        return FakeLLM()
+
+    session = GroveSession(llm_factory=slow_model, retriever_factory=lexical_retriever)
+    session.step_seconds.update({"models": 4.0, "reader": 2.0})
+    warm = session.start_warm_up("hospital", "queuing")
+    assert loading.wait(30)
+    # While the model loads: the world and the model status answer at once, not after the load.
+    started = time.perf_counter()
+    session.load_world("museum")
+    assert all(not status.loaded for status in session.model_status())
+    assert time.perf_counter() - started < 0.5
+    events: list[object] = []
+    session.prepare("hospital", "queuing", on_event=events.append)
+    warm.join(60)
+    assert isinstance(events[0], StageStarted) and events[0].stage == "loading"
+    parts = [e for e in events if isinstance(e, LoadingProgress)]
+    assert parts and parts[0].part == "models" and parts[0].expected_seconds == 4.0
+    assert [p.index for p in parts] == list(range(1, len(parts) + 1)) and parts[-1].later_seconds == 0
+    assert isinstance(events[-1], StageFinished) and events[-1].stage == "loading"
+    assert session.step_seconds["models"] >= 0.9, "what the load took is the next ETA"
+    # Everything warm now: the next generation has no loading stage.
+    again: list[object] = []
+    session.prepare("hospital", "queuing", on_event=again.append)
+    assert again == []
+
+
+def test_close_does_not_wait_for_a_model_still_loading_and_the_load_keeps_nothing():
+    import threading
+    import time
+
+    from helpers.app import FakeLLM
+
+    from grove_tui.errors import Cancelled
+
+    loading, closed = threading.Event(), []
+    model = FakeLLM()
+
+    def slow_model(role, choice):
+        loading.set()
+        time.sleep(1.5)
+        return model
+
+    session = GroveSession(llm_factory=slow_model)
+    errors: list[BaseException] = []
+    loader = threading.Thread(target=lambda: _catch(session.load_models, errors))
+    loader.start()
+    assert loading.wait(30)
+    started = time.perf_counter()
+    session.close()
+    closed.append(time.perf_counter() - started)
+    loader.join(30)
+    assert closed[0] < 0.5, f"close waited {closed[0]:.2f} s for the load"
+    assert errors and isinstance(errors[0], Cancelled)
+    assert not model.running and session.loaded_models() == []
+
+
+def _catch(call, errors):
+    try:
+        call()
+    except BaseException as exc:  # noqa: BLE001 - the test inspects it
+        errors.append(exc)

@@ -1,72 +1,71 @@
-"""The inspect screen's grounding report: reading generation.json's `grounding` entry and drawing it."""
+"""The grounding panel (inspect and simulation screens): planned and checked reports, drawn."""
 
 from __future__ import annotations
 
+from grove_tui.scenario.report import Claim, GroundingReport, GroupGrounding, RobotGrounding, RunCheck
 from grove_tui.tui.widgets.grounding import grounding_text, read_grounding, summary
 
-# The shape the language layer's GroundingReport.to_dict() writes.
-REPORT = {"grounding": {
-    "prompt": "ten patients queue at the pharmacy while a family walks to the exit",
-    "ok": False,
-    "groups": [
-        {"who": "ten patients", "label": "patient", "ok": True, "members": list(range(1, 11)), "checks": [
-            {"field": "count", "asked": "10", "does": "10", "ok": True, "reason": ""},
-            {"field": "destination", "asked": "pharmacy_counter", "does": "pharmacy_counter", "ok": True,
-             "reason": ""},
-            {"field": "behavior", "asked": "queue", "does": "queue", "ok": True, "reason": ""}]},
-        {"who": "a family", "label": "family", "ok": False, "members": [11, 12, 13], "checks": [
-            {"field": "count", "asked": "2-6", "does": "3", "ok": True, "reason": ""},
-            {"field": "destination", "asked": "main_entrance", "does": "cafeteria", "ok": False,
-             "reason": "no path to main_entrance from the spawn"}]},
-    ],
-    "unhonoured": ["'by the window': the world has no window"],
-    "repairs": [],
-}}
+PATIENTS = GroupGrounding("ten patients", "patient", (
+    Claim("count", "10", "10 people"),
+    Claim("queue", "pharmacy", "queue at pharmacy_counter", place="pharmacy_counter"),
+), tuple(range(1, 11)))
+FAMILY = GroupGrounding("a family", "family", (
+    Claim("count", "3", "3 people"),
+    Claim("reach", "main_entrance", "walk to main_entrance", point=(5.0, 0.6), radius=1.9),
+), (11, 12, 13), added=("waits for 10 s afterwards",), unsure=("'a family' count: 3 or 4? (guessed)",),
+    edit="the sentence asked 3 ('a family'); you changed it to 4")
+PLANNED = GroundingReport("ten patients queue at the pharmacy while a family walks to the exit", (PATIENTS, FAMILY),
+                          unhonoured=("'by the window': the world has no window",),
+                          robot=RobotGrounding("cross", "a robot crosses the lobby", (
+                              Claim("robot_reach", "lobby", "drive to lobby", zone="lobby"),)))
 
 
-def test_reads_the_language_layers_report():
-    groups, notes = read_grounding(REPORT)
-    assert [g.label for g in groups] == ["ten patients", "a family"]
-    assert [g.ok for g in groups] == [True, False]
-    assert groups[0].agents == 10
-    failed = [c for c in groups[1].checks if not c.ok]
-    assert [(c.field, c.asked, c.done, c.reason) for c in failed] == [
-        ("destination", "main_entrance", "cafeteria", "no path to main_entrance from the spawn")]
-    assert notes == ["'by the window': the world has no window"]
-    assert summary((groups, notes)) == "1/2 groups ✓"
+def checked() -> GroundingReport:
+    patients = GroupGrounding(PATIENTS.who, PATIENTS.label, (
+        PATIENTS.claims[0].checked("holds", "10 in the run from its first frame"),
+        PATIENTS.claims[1].checked("holds", "joined 10/10 at pharmacy_counter, advanced 9, served 4")),
+        PATIENTS.members)
+    family = GroupGrounding(FAMILY.who, FAMILY.label, (
+        FAMILY.claims[0].checked("holds", "3 in the run"),
+        FAMILY.claims[1].checked("fails", "1/3 reached main_entrance (last at t = 40.0 s)")),
+        FAMILY.members, FAMILY.added)
+    robot = RobotGrounding("cross", "a robot crosses the lobby",
+                           (PLANNED.robot.claims[0].checked("unchecked", "never reached lobby; needs about 80 s"),))
+    return GroundingReport(PLANNED.prompt, (patients, family), robot=robot, run=RunCheck(60.0, 1200))
 
 
-def test_renders_asked_beside_done_with_marks_and_reasons():
-    text = grounding_text(read_grounding(REPORT), width=60)
-    assert "✓ ten patients ×10" in text
-    assert " ✓ count       10" in text  # agreement shows the value once
-    assert " ✗ destination main_entrance → cafeteria" in text
-    assert "no path to main_entrance from the spawn" in text
-    assert " ✓ count       2-6 → 3" in text
+def test_a_planned_report_shows_no_tick():
+    report = read_grounding({"grounding": PLANNED.to_dict()})
+    text = grounding_text(report, width=70)
+    assert "✓" not in text.replace("Nothing is ✓ before a run", "")
+    assert "· ten patients ×10" in text and "planned: queue at pharmacy_counter" in text
+    assert "+ added  waits for 10 s afterwards" in text
+    assert "? unsure" in text and "! edited" in text
     assert "! 'by the window': the world has no window" in text
+    assert summary(report) == "planned: 2 groups and the robot"
 
 
-def test_values_wrap_inside_their_column_at_80x24_widths():
-    lines = grounding_text(read_grounding(REPORT), width=30).splitlines()
-    reason = [i for i, line in enumerate(lines) if "no path" in line][0]
-    # the reason starts under the value column, not under the mark
-    assert lines[reason].index("no path") == lines[reason - 1].index("cafeteria") > 10
-    assert max(len(line.rstrip()) for line in lines) <= 30
+def test_a_checked_report_shows_the_measured_figures():
+    report = read_grounding(checked().to_dict())  # grounding.json is the report itself
+    text = grounding_text(report, width=70)
+    assert "✓ ten patients ×10" in text and "served 4" in text
+    assert "✗ a family ×3" in text and "1/3 reached main_entrance" in text
+    assert "? robot: cross" in text and "needs about 80 s" in text
+    assert summary(report) == "1/2 groups ✓, 1 ✗; robot ? (run of 60 s)"
 
 
-def test_other_shapes_and_missing_reports():
-    # asked/done mappings with per-field verdicts, and checks without a verdict (agreement decides)
-    parsed = read_grounding({"grounding": [
-        {"label": "visitors", "asked": {"count": 4, "start": "lobby"}, "done": {"count": 4, "start": "corridor"},
-         "reasons": {"start": "lobby is full"}},
-        {"name": "nurse", "checks": [{"name": "behavior", "expected": "wait", "actual": "wait"}]},
-    ]})
-    groups, notes = parsed
-    assert [(c.field, c.ok, c.reason) for c in groups[0].checks] == [("count", True, ""),
-                                                                     ("start", False, "lobby is full")]
-    assert groups[1].label == "nurse" and groups[1].ok and notes == []
-    assert read_grounding({"grounding": {"groups": [{"who": "someone", "label": "visitor", "checks": []}]}}
-                          )[0][0].label == "someone → visitor"
+def test_text_wraps_inside_its_column_at_80x24_widths():
+    lines = grounding_text(read_grounding(checked().to_dict()), width=34).splitlines()
+    assert max(len(line.rstrip()) for line in lines) <= 34
+    evidence = [i for i, line in enumerate(lines) if "1/3 reached" in line][0]
+    assert lines[evidence].index("1/3") > 5  # under the value column, not under the mark
+
+
+def test_missing_reports():
     assert read_grounding({"stages": {}}) is None and read_grounding(None) is None
     assert "No grounding report" in grounding_text(None)
     assert summary(None) == ""
+    # a report written before claims existed: its agreeing checks are only planned, never ✓
+    old = read_grounding({"grounding": {"prompt": "p", "groups": [{"who": "visitors", "label": "visitor", "checks": [
+        {"field": "count", "asked": "4", "does": "4", "ok": True}]}]}})
+    assert old.groups[0].claims[0].status == "planned"

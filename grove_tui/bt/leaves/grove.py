@@ -159,6 +159,8 @@ class Queue(AgentStatefulAction):
             return RUNNING  # joined this tick; the registry orders same-tick arrivals at the end of the tick
         p = sim.pos[row]
         if k != self.slot:
+            if 0 <= k < self.slot:
+                sim.event("queue_advance", row, queue.name)  # moved up the line: the queue advances
             self.slot = k
             self.arrived = False
             self.slot_point = queue.slot_point(k)

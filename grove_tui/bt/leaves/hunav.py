@@ -357,24 +357,29 @@ class ResumeMovement(AgentSyncAction):
 class _Timed(AgentStatefulAction):
     """Save intents, run `step()` each tick for `duration` seconds (0 = until halted), restore."""
 
-    __slots__ = ("last_goal", "last_speed", "facing")
+    __slots__ = ("last_goal", "last_speed", "facing", "routed_to")
     DURATION_PORT = "duration"
     LABEL = ""
     REGOAL = 0.2  # metres a moving target must shift before the goal intent is rewritten
+    REROUTE = 2.0  # metres a target out of sight must shift before the route to it is planned again
+    ROBOT_EVENT = False  # log a "robot_reaction" event when it starts (reactions to the robot)
 
     def setup(self) -> None:
         super().setup()
         self.last_goal = None
         self.last_speed = None
         self.facing = None
+        self.routed_to = None
 
     def on_start(self) -> int:
         self.started_at = self.sim.clock.now
-        self.last_goal = self.last_speed = self.facing = None
+        self.last_goal = self.last_speed = self.facing = self.routed_to = None
         self.save_intents()
         self.begin()
         if self.LABEL:
             self.sim.status[self.row] = self.LABEL
+        if self.ROBOT_EVENT:
+            self.sim.event("robot_reaction", self.row, type(self).__name__)
         return self.on_running()
 
     def on_running(self) -> int:
@@ -414,7 +419,15 @@ class _Timed(AgentStatefulAction):
         crowd = self.sim.crowd
         last = self.last_goal
         if self.facing is not None or last is None or math.dist(last, point) > self.REGOAL:
-            crowd.set_goals(self.row, [point], goal_radius=goal_radius)
+            sim = self.sim
+            here = sim.pos[self.row]
+            if sim.sees(here, point):
+                crowd.set_goals(self.row, [point], goal_radius=goal_radius)
+                self.routed_to = None
+            elif self.routed_to is None or math.dist(self.routed_to, point) > self.REROUTE or self.facing is not None:
+                # out of sight (another room): walk the planned way there, not into the wall between
+                crowd.set_goals(self.row, sim.plan(here, point), goal_radius=goal_radius)
+                self.routed_to = (float(point[0]), float(point[1]))
             self.last_goal = (float(point[0]), float(point[1]))
             if crowd.mode[self.row] != MODE_GOALS:
                 crowd.set_mode(self.row, MODE_GOALS)
@@ -460,6 +473,7 @@ class _Reaction(_Timed):
     __slots__ = ("used",)
     DURATION_PORT = "beh_duration"
     INTERACTION = ROBOT_IGNORED
+    ROBOT_EVENT = True
 
     def setup(self) -> None:
         super().setup()
@@ -553,6 +567,7 @@ class ThreateningNav(_Reaction):
 
 class ApproachRobot(_Timed):
     __slots__ = ()
+    ROBOT_EVENT = True
     LABEL = "approaching the robot"
 
     def begin(self) -> None:
@@ -590,6 +605,7 @@ class ApproachAgent(_Timed):
 
 class BlockRobot(_Timed):
     __slots__ = ()
+    ROBOT_EVENT = True
     LABEL = "blocking the robot"
 
     def begin(self) -> None:
@@ -626,6 +642,7 @@ class BlockAgent(_Timed):
 
 class AvoidRobot(_Timed):
     __slots__ = ()
+    ROBOT_EVENT = True
     LABEL = "keeping away from the robot"
 
     def begin(self) -> None:
@@ -741,6 +758,11 @@ class LookAtRobot(_LookAt):
     def target(self):
         return "robot" if self.sim.robot is not None else None
 
+    def on_start(self) -> int:
+        if self.sim.robot is not None:
+            self.sim.event("robot_reaction", self.row, "LookAtRobot")
+        return super().on_start()
+
 
 class LookAtAgent(_LookAt):
     __slots__ = ()
@@ -825,6 +847,9 @@ HUNAV_LEAVES = {
     )
 }
 ROBOT_REACTIONS = ("SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav")
+# Nodes through which a tree deals with the robot on purpose (not HuNavSim's cued reactions): a tree
+# with one of them already reacts to the robot and is not wrapped in a reaction pattern.
+ROBOT_ACTIVITIES = ("ApproachRobot", "BlockRobot", "AvoidRobot", "LookAtRobot")
 # HuNavSim behavior type -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0
 # values. The simulation wraps a tree in this pattern at run time; generation writes it into the tree.
 ROBOT_REACTION_DEFAULTS = {
@@ -833,4 +858,4 @@ ROBOT_REACTION_DEFAULTS = {
     "Curious": ("CuriousNav", 10.0, 30.0, True),
     "Threatening": ("ThreateningNav", 4.0, 40.0, True),
 }
-__all__ = ["HUNAV_LEAVES", "ROBOT_REACTIONS", "ROBOT_REACTION_DEFAULTS", "ROBOT_AS_AGENT"]
+__all__ = ["HUNAV_LEAVES", "ROBOT_ACTIVITIES", "ROBOT_REACTIONS", "ROBOT_REACTION_DEFAULTS", "ROBOT_AS_AGENT"]

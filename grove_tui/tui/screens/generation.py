@@ -14,6 +14,8 @@ from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.screen import Screen
+from rich.segment import Segment
+from textual.strip import Strip
 from textual.widgets import DataTable, Static
 from textual.worker import get_current_worker
 
@@ -25,6 +27,7 @@ if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
 
 STAGES = {
+    "loading": "Loading",
     "rois": "RoIs",
     "retrieval": "Retrieval",
     "synthesis": "Tree synthesis",
@@ -124,6 +127,18 @@ class TokenBuffer:
 
 
 @dataclass
+class LoadingPart:
+    """The part of the stage "loading" loading now (services.session.LoadingProgress, timed here)."""
+
+    doing: str
+    index: int
+    parts: int
+    started: float  # time.monotonic()
+    expected: float  # seconds it took last time
+    later: float  # seconds the parts after it took
+
+
+@dataclass
 class StageProgress:
     """The running stage, as the table shows it while it runs: elapsed time, tokens, rate and ETA."""
 
@@ -132,14 +147,23 @@ class StageProgress:
     tokens: int = 0
     first_token: float | None = None  # when the first token arrived (before it the model reads the prompt)
     attempt: int = 1  # the model call running now; tokens, rate and ETA are this attempt's
+    part: LoadingPart | None = None  # the stage "loading": what it loads now
 
-    def describe(self, now: float, expected_tokens: int | None, bound: bool) -> tuple[str, str, str]:
-        """(time, tokens, detail) cells; `bound` marks an ETA from the token cap, not from experience."""
+    def describe(self, now: float, expected_tokens: int | None, bound: bool,
+                 expected_first_token: float | None = None) -> tuple[str, str, str]:
+        """(time, tokens, detail) cells; `bound` marks an ETA from the token cap, not from experience;
+        `expected_first_token` is how long the model read the prompt last time (its ETA till the first token)."""
         elapsed = now - self.started
         time_cell = f"{elapsed:.1f}s"
         retry = f"attempt {self.attempt} · " if self.attempt > 1 else ""
+        if self.part is not None:
+            part = self.part
+            remaining = max(part.expected - (now - part.started), 0.0) + part.later
+            return time_cell, "", f"ETA ~{remaining:.0f}s · {part.index}/{part.parts} {part.doing}…"
         if self.tokens == 0 or self.first_token is None:
             if self.stage in MODEL_STAGES:
+                if expected_first_token:
+                    return time_cell, "", f"{retry}ETA ~{max(expected_first_token - elapsed, 0):.0f}s · reading the prompt…"
                 return time_cell, "", retry + "reading the prompt…"
             return time_cell, "", retry.removesuffix(" · ")
         writing = max(now - self.first_token, 1e-3)
@@ -149,6 +173,20 @@ class StageProgress:
             remaining = max(expected_tokens - self.tokens, 0) / rate
             detail += f" · ETA {'≤' if bound else '~'}{remaining:.0f}s"
         return time_cell, f"{self.tokens} tok", detail
+
+
+class StagesTable(DataTable[str]):
+    """The stages table: a row cut by the right edge ends with "…" there (←/→ scroll to read the rest)."""
+
+    def render_line(self, y: int) -> Strip:
+        strip = super().render_line(y)
+        width = self.scrollable_content_region.width
+        if width < 2 or self.virtual_size.width <= self.scroll_offset.x + width or strip.cell_length < width:
+            return strip
+        edge = list(strip.crop(width - 1, width))
+        if not edge or not "".join(segment.text for segment in edge).strip():
+            return strip  # this row's text ends before the edge
+        return Strip.join([strip.crop(0, width - 1), Strip([Segment("…", edge[-1].style)], 1)])
 
 
 def describe_failure(exc: BaseException) -> tuple[str, str]:
@@ -161,7 +199,9 @@ class GenerationScreen(Screen[None]):
     HELP = """\
 ## Generation
 
-The pipeline's stages run one after another: **RoIs** (the model picks the places the prompt
+The pipeline's stages run one after another: **Loading** (what the app's warm-up had not loaded
+yet: the models, the node index and its embedder, the English reader, the world's planner and fixed
+prompt, each with an ETA from the last time it loaded), **RoIs** (the model picks the places the prompt
 talks about), **Retrieval** (behavior nodes that fit), **Tree synthesis** (the model writes the
 groups and their trees, streamed below), **Post-processing** (trees become BT.CPP XML per agent)
 and **Planning** (Theta* waypoints). **Escape** cancels (back to setup, or to the scenario you had
@@ -198,7 +238,7 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         r = self.request
         yield Static(f"[b]{r.prompt}[/b]\nworld [i]{r.world}[/i] · preset [i]{r.preset}[/i] · seed {r.seed}",
                      id="gen-title", markup=True)
-        table: DataTable[str] = DataTable(id="stages", cursor_type="none", zebra_stripes=False)
+        table = StagesTable(id="stages", cursor_type="none", zebra_stripes=False)
         table.border_title = "Stages"
         yield table
         stream = Static("", id="stream", markup=False)
@@ -243,6 +283,8 @@ answer was cut off or failed the draft check), the output starts afresh under "a
                 table.update_cell(key, column, value)
         self._attempt_header = ""
         self.query_one("#stream", Static).update("")
+        r = self.request
+        self.grove.remember(r.world, r.preset, r.seed)  # the next start of the app opens on these
         self.run_generation(self.request, self._cancel)
 
     @work(thread=True, exclusive=True, group="generation", exit_on_error=False, description="generating")
@@ -264,6 +306,9 @@ answer was cut off or failed the draft check), the output starts afresh under "a
                 buffer.add(event.stage, event.text)
             elif kind == "AttemptStarted":
                 buffer.restart(event.stage, int(event.attempt), str(event.reason))
+            elif kind == "LoadingProgress":
+                self.post_message(msg.LoadingPartStarted(event.doing, int(event.index), int(event.parts),
+                                                         float(event.expected_seconds), float(event.later_seconds)))
             elif kind == "StageStarted":
                 buffer.flush()
                 if event.stage in MODEL_STAGES:
@@ -305,6 +350,11 @@ answer was cut off or failed the draft check), the output starts afresh under "a
 
     # messages -------------------------------------------------------------------------------------
     def on_stage_started(self, message: msg.StageStarted) -> None:
+        table = self.query_one("#stages", DataTable)
+        if message.stage != "loading" and table.get_cell("loading", "state") == "·":
+            # The session had everything loaded (the warm-up did it): nothing to wait for.
+            table.update_cell("loading", "state", "done")
+            table.update_cell("loading", "detail", "all loaded already", update_width=True)
         self._stage = message.stage
         self._attempt_header = ""
         self._progress = StageProgress(message.stage, monotonic())
@@ -329,6 +379,16 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         table.update_cell(message.stage, "tokens", f"{message.prompt_tokens}+{message.completion_tokens}" if tokens else "")
         table.update_cell(message.stage, "detail", message.detail, update_width=True)
 
+    def on_loading_part_started(self, message: msg.LoadingPartStarted) -> None:
+        progress = self._progress
+        if progress is None or progress.stage != "loading":
+            return
+        progress.part = LoadingPart(message.doing, message.index, message.parts, monotonic(), message.expected_seconds,
+                                    message.later_seconds)
+        self.query_one("#stream", Static).update(f"{message.doing}… (the app's warm-up does this at start; "
+                                                 "a generation asked before it is done waits for it)")
+        self.show_progress()
+
     def on_attempt_started(self, message: msg.AttemptStarted) -> None:
         """A retry: the output panel starts a fresh section headed by why, the table counts the attempt."""
         self._attempt_header = f"── attempt {message.attempt} ({shorten(message.reason, ATTEMPT_REASON_CHARS)}) ──\n"
@@ -352,6 +412,8 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         if progress is not None and progress.stage == message.stage and message.tokens:
             if progress.first_token is None:
                 progress.first_token = monotonic()
+                # How long the model read the prompt: the next run's ETA until its first token.
+                self.grove.stage_first_token[message.stage] = progress.first_token - progress.started
             progress.tokens = message.tokens
 
     def show_progress(self) -> None:
@@ -360,7 +422,8 @@ answer was cut off or failed the draft check), the output starts afresh under "a
             return
         learned = self.grove.stage_tokens.get(progress.stage)
         expected = learned if learned else STAGE_TOKEN_BUDGET.get(progress.stage)
-        time_cell, tokens, detail = progress.describe(monotonic(), expected, bound=not learned)
+        time_cell, tokens, detail = progress.describe(monotonic(), expected, bound=not learned,
+                                                      expected_first_token=self.grove.stage_first_token.get(progress.stage))
         table = self.query_one("#stages", DataTable)
         table.update_cell(progress.stage, "time", time_cell)
         table.update_cell(progress.stage, "tokens", tokens)

@@ -308,7 +308,7 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         prefix = f"group {data.name}: first agent\n" if data.kind == "group" else ""
         going = destination(agent, self.generated.world)
         return (f"{prefix}agent {agent.id} · {agent.label or 'no label'} · {agent.behavior}\n"
-                f"from {start}" + (f" → {going}" if going else "") + f"\n{len(agent.goals)} goals · {agent.max_vel} m/s")
+                f"from {start}" + (f"\n→ {going}" if going else "") + f"\n{len(agent.goals)} goals · {agent.max_vel} m/s")
 
     def _show_xml(self) -> None:
         agents = {a.id: a for a in self.generated.scenario.agents}

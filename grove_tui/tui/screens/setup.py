@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -100,7 +101,9 @@ shows its world, preset, prompt and seed.
         self._presets_listed = False
         self._queued = False  # Enter came before the lists: generate once they are in
         self._adopted: object = None  # the scenario whose choices the screen shows (on_screen_resume)
+        self._warm_step: tuple[str, float, float] | None = None  # (text, started, expected seconds)
         self.query_one("#prompt", PromptInput).focus()
+        self.set_interval(1.0, self._tick_warm_up, name="warm-up-eta")
         # Paint the screen first; the catalogue worker's imports would otherwise delay the first frame.
         self.call_after_refresh(self.load_catalogue)
 
@@ -168,8 +171,13 @@ shows its world, preset, prompt and seed.
     @work(thread=True, exclusive=True, group="catalogue", exit_on_error=False, description="listing worlds")
     def load_catalogue(self) -> None:
         backend = self.grove.backend
+        preload = self.grove.settings.ui.preload_models
+        initial = self.grove.initial_world
+        if preload and initial:
+            # The world is known: warm up at once, beside the listing (progress from the first second).
+            self.preload_models(initial, self.grove.initial_preset)
         # Presets before worlds: the map preview's title is what a user (and the tmux test) waits
-        # for before typing, and Enter with no preset highlighted yet would refuse the prompt.
+        # for before typing.
         self.post_message(msg.PresetsListed(backend.presets()))
         names: list[str] = []
         try:
@@ -178,9 +186,11 @@ shows its world, preset, prompt and seed.
             self.post_message(msg.WorldsListed([], describe_error(exc).text))
         else:
             self.post_message(msg.WorldsListed(names))
-        self.post_message(msg.ModelsChanged(backend.model_status(), loading=self.grove.settings.ui.preload_models))
-        if self.grove.settings.ui.preload_models:
-            self.preload_models(self.grove.initial_world or (names[0] if names else None), self.grove.initial_preset)
+        if preload and not initial:
+            self.post_message(msg.ModelsChanged(backend.model_status(), loading=True))
+            self.preload_models(names[0] if names else None, self.grove.initial_preset)
+        elif not preload:
+            self.post_message(msg.ModelsChanged(backend.model_status()))
 
     @work(thread=True, exclusive=True, group="models", exit_on_error=False, description="loading models")
     def preload_models(self, world: str | None, preset: str | None) -> None:
@@ -197,8 +207,10 @@ shows its world, preset, prompt and seed.
                 # Everything long-lived is loaded now: freeze it before the user starts typing, so
                 # no later collection pauses the UI thread to walk it (tui/heap.py).
                 self.grove.frozen_heap = freeze_heap()
-            self.post_message(msg.ModelsChanged(backend.model_status(), loading=loading, embedder=embedder,
-                                                warm_up="" if status.step == "ready" and status.state == "done" else status.text))
+            self.post_message(msg.ModelsChanged(
+                backend.model_status(), loading=loading, embedder=embedder,
+                warm_up="" if status.step == "ready" and status.state == "done" else status.text,
+                expected_seconds=status.expected_seconds if status.state == "running" else 0.0))
 
         try:
             backend.warm_up(world, preset, on_status=report)
@@ -263,18 +275,34 @@ shows its world, preset, prompt and seed.
         problems = self.model_problems()
         if message.embedder not in ("", "loading", "ready"):
             problems.append(f"embedder: {message.embedder}")
+        # A running warm-up step counts down from what it took last time: progress from the first second.
+        self._warm_step = ((message.warm_up, time.monotonic(), message.expected_seconds)
+                           if message.warm_up and message.expected_seconds else None)
         if message.warm_up:
             lines.append(message.warm_up)  # a warm-up step still running (or failed)
         elif not problems and all(status.loaded for status in message.statuses) and message.embedder == "ready":
             lines.append("ready to generate")
+        self._model_lines = lines
         panel = self.query_one("#models", Static)
-        panel.update("\n".join(lines) or "no models found")
+        panel.update(self._models_text())
         panel.set_class(bool(problems), "-broken")
         panel.tooltip = "\n".join([f"{s.role}: {s.file}" for s in message.statuses] + problems)
         # The whole message, wrapped, under the status lines: "error: ?" alone does not say what to fix.
         shown = self.query_one("#model-problems", Static)
         shown.update("\n".join(problems))
         shown.display = bool(problems)
+
+    def _models_text(self) -> str:
+        lines = list(getattr(self, "_model_lines", []))
+        step = getattr(self, "_warm_step", None)
+        if step is not None and lines:
+            text, started, expected = step
+            lines[-1] = f"~{max(expected - (time.monotonic() - started), 0):.0f}s {text}"
+        return "\n".join(lines) or "no models found"
+
+    def _tick_warm_up(self) -> None:
+        if getattr(self, "_warm_step", None) is not None:
+            self.query_one("#models", Static).update(self._models_text(), layout=False)
 
     def model_problems(self) -> list[str]:
         """One line per role whose model is known to be broken, with the error's own message."""
@@ -369,5 +397,34 @@ shows its world, preset, prompt and seed.
             self.query_one("#seed", Input).focus()
             return
         request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
-        self.grove.remember(world, preset, seed)
-        self.app.push_screen(GenerationScreen(request))
+        if not self.grove.settings.ui.ask_when_unsure or getattr(self.grove.backend, "unsure", None) is None:
+            self.app.push_screen(GenerationScreen(request))
+            return
+        self.check_reading(request)  # unsure readings are asked about first (on_reading_checked)
+
+    @work(thread=True, exclusive=True, group="reading", exit_on_error=False, description="reading the sentence")
+    def check_reading(self, request: Any) -> None:
+        try:
+            questions = list(self.grove.backend.unsure(request.world, request.preset, request.prompt, request.seed))
+        except Exception:  # a sentence that cannot be read fails in the generation, with its reason shown there
+            questions = []
+        self.post_message(msg.ReadingChecked(request, questions))
+
+    def on_reading_checked(self, message: msg.ReadingChecked) -> None:
+        from grove_tui.tui.screens.choice import Choice, ChoiceScreen
+        from grove_tui.tui.screens.generation import GenerationScreen
+
+        if not message.questions:
+            self.app.push_screen(GenerationScreen(message.request))
+            return
+
+        def answered(value: str | None) -> None:
+            if value == "generate":
+                self.app.push_screen(GenerationScreen(message.request))
+            else:
+                self.query_one("#prompt", PromptInput).focus()
+
+        text = "\n".join(f"• {q}" for q in message.questions)
+        self.app.push_screen(ChoiceScreen("The reader is unsure", text + "\n\nGenerate as read, or edit the sentence?",
+                                          [Choice("enter", "Generate as read", "generate"),
+                                           Choice("e", "Edit the sentence", "edit")]), answered)

@@ -28,6 +28,7 @@ from grove_tui.tui.widgets.map_legend import MapLegend
 from grove_tui.tui.widgets.map_raster import rasterise_agents
 from grove_tui.tui.widgets.map_view import MapView
 from grove_tui.tui.widgets.footer import Footer
+from grove_tui.tui.widgets.grounding import GroundingPanel
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
@@ -50,6 +51,8 @@ LIVE_METRICS = (
 )
 TREE_MIN_ROWS = 8  # the live tree's panel: six rows of nodes and its border, whatever else the column shows
 COUNTERS_KEY = "m"
+GROUNDING_INTERVAL = 2.0  # seconds between checks of the grounding report on the run so far
+GROUNDING_ROWS_TIMEOUT = 10.0  # seconds to wait for the simulation thread to hand over the new rows
 
 
 def speed_label(speed: float) -> str:
@@ -122,7 +125,8 @@ The Social Force crowd runs off the UI thread; the map shows every agent and the
 **space** play/pause, **n** one step, **[ ]** slower/faster (0.25x to 8x), **f** as fast as
 possible, **a**/**A** select the next/previous agent (its tree shows the live status of every
 node), arrows drive the robot, **r** back to its path, **c** colour by group or behavior,
-**e** exports bundle, trajectories and metrics.
+**e** exports bundle, trajectories and metrics, **g** shows the grounding report checked on the
+run so far (every few seconds; it opens by itself when the run ends or every claim is decided).
 
 The **Counters** are metrics.json's numbers for the run so far (what `grove metrics` gives for the
 exported run), under metrics.json's names; their title says the simulated time they are for (a
@@ -144,6 +148,8 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         Binding("e", "export", "Export", id="sim.export", tooltip="Export bundle, trajectories and metrics"),
         Binding(COUNTERS_KEY, "counters", "Counters", show=False, id="sim.counters",
                 tooltip="Every counter of the run so far, with the time it is for"),
+        Binding("g", "toggle_grounding", "Grounding", show=False, id="sim.grounding",
+                tooltip="The sentence's claims checked on the run so far"),
         Binding("escape", "back", "Back", id="sim.back", tooltip="Back to inspect"),
     ]
 
@@ -172,6 +178,13 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         self._counters: Counters | None = None
         self._counters_folded = False
         self.run_end: RunEnd | None = None  # set once the run is over (RunEnded posted)
+        # The grounding report checked on the run as it plays: one checker fed the new rows each time.
+        self._checker: Any = None
+        self._checker_rows = 0  # recorder rows the checker has seen
+        self._grounding_busy = False
+        self._grounding_shown_once = False
+        self._grounding_step = -1
+        self.grounding: Any = None  # the latest checked report (scenario.report.GroundingReport)
 
     @property
     def grove(self) -> GroveApp:
@@ -192,13 +205,16 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
                 status = Static("loading simulation…", id="sim-status")
                 status.border_title = "Simulation"
                 yield status
-                counters = Static("", id="counters", markup=False)
+                counters = Static("counted once the run plays", id="counters", markup=False)
                 counters.border_title = "Counters"
                 counters.border_subtitle = "metrics.json"
                 yield counters
                 tree = BTTree("agent", id="sim-tree")
                 tree.border_title = "Agent tree (a: select)"
                 yield tree
+                grounding = GroundingPanel(self.generated.result.report, id="sim-grounding")
+                grounding.display = False
+                yield grounding
         yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
@@ -218,6 +234,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         sys.setswitchinterval(UI_SWITCH_INTERVAL)
         self.start_simulation()
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
+        self.set_interval(GROUNDING_INTERVAL, self.refresh_grounding, name="sim-grounding")
 
     def command_entries(self) -> list[tuple[str, str, Any]]:
         return [
@@ -228,6 +245,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             ("Robot follows its path", "Stop driving the robot by hand", self.action_follow_path),
             ("Export", "Bundle, trajectories and metrics", self.action_export),
             ("Counters", "Every counter of the run so far", self.action_counters),
+            ("Grounding report", "The sentence's claims checked on the run so far", self.action_toggle_grounding),
         ]
 
     # the simulation worker --------------------------------------------------------------------------
@@ -417,8 +435,84 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         self.app.push_screen(CountersScreen(self._counters))
 
     def on_run_ended(self, message: msg.RunEnded) -> None:
-        """Everyone is out or done: the run paused itself; say so (the grounding report can hook here)."""
+        """Everyone is out or done: the run paused itself; say so, and show the grounding report checked
+        on the whole run."""
         self.notify(f"{message.text}. Space plays on; e exports the run.", title="Run over", timeout=8)
+        self._grounding_shown_once = False  # the run's last check opens the report
+        self._grounding_step = -1
+        self.refresh_grounding(final=True)
+
+    # the grounding report checked on the run so far, off the UI thread -----------------------------
+    def refresh_grounding(self, final: bool = False) -> None:
+        controller = self.controller
+        if controller is None or controller.latest is None or self._grounding_busy or self.exporting:
+            return
+        step = controller.latest.frame.step
+        if step == self._grounding_step:
+            return  # paused: nothing new to check
+        self._grounding_step = step
+        self._grounding_busy = True
+        self.check_grounding(controller, final)
+
+    @work(thread=True, exclusive=True, group="grounding", exit_on_error=False, description="checking the claims")
+    def check_grounding(self, controller: SimulationController, final: bool = False) -> None:
+        import threading
+
+        taken: dict[str, Any] = {}
+        done = threading.Event()
+
+        def take(simulation: Any) -> None:
+            # In the simulation thread, between steps: the new rows and the events belong to one instant.
+            taken["rows"] = simulation.recorder.rows_from(self._checker_rows)
+            taken["events"] = list(simulation.events)
+
+        def reply(result: Any) -> None:
+            taken["error"] = result if isinstance(result, Exception) else None
+            done.set()
+
+        try:
+            if self._checker is None:
+                self._checker = self.grove.backend.outcome_checker(self.generated)
+            if self._checker is None:
+                self.post_message(msg.GroundingChecked(None))
+                return
+            controller.send("call", take, reply)
+            if not done.wait(GROUNDING_ROWS_TIMEOUT) or taken.get("error") is not None:
+                raise RuntimeError(f"cannot read the run: {taken.get('error') or 'the simulation did not answer'}")
+            self._checker_rows += len(taken["rows"])
+            report = self.grove.backend.check_run_rows(self._checker, taken["rows"], taken["events"],
+                                                       partial=not final)
+        except Exception as exc:  # a check bug must show in the panel, not stop the simulation
+            self.post_message(msg.GroundingChecked(None, f"{type(exc).__name__}: {exc}"))
+            return
+        self.post_message(msg.GroundingChecked(report, final=final))
+
+    def on_grounding_checked(self, message: msg.GroundingChecked) -> None:
+        self._grounding_busy = False
+        panel = self.query_one("#sim-grounding", GroundingPanel)
+        if message.report is None:
+            if message.error:
+                panel.border_title = f"Grounding ✗ {message.error}"
+            return
+        self.grounding = message.report
+        panel.show(message.report)
+        decided = all(c.status in ("holds", "fails") for g in message.report.groups for c in g.claims)
+        if (message.final or (decided and message.report.groups)) and not self._grounding_shown_once:
+            # the run is over, or every claim is decided: the checked report is the run's result
+            self._grounding_shown_once = True
+            if not panel.display:
+                self.action_toggle_grounding()
+            self.notify(message.report.summary(), title="Grounding checked", timeout=6)
+
+    def action_toggle_grounding(self) -> None:
+        panel = self.query_one("#sim-grounding", GroundingPanel)
+        show = not panel.display
+        panel.display = show
+        self.query_one("#sim-tree", BTTree).display = not show
+        self.query_one("#sim-side").set_class(show, "-grounding")
+        if show:
+            self._grounding_step = -1
+            self.refresh_grounding()
 
     # actions ---------------------------------------------------------------------------------------
     def _send(self, *command: Any) -> None:

@@ -1,17 +1,20 @@
-"""The grounding report on the inspect screen: for each group, what the sentence asked beside what the
-scenario does, each marked ✓ or ✗ with the reason.
+"""The grounding report in the app: for each group (and the robot), what the sentence asked, what the
+scenario plans, and after a run whether the people did it.
 
-It reads the `grounding` entry of the bundle's generation.json as plain data. The report is written
-by the language layer (its GroundingReport's `to_dict()`), and bundles made before it existed have no
-such entry, so the reader here accepts the shapes a report of groups and checks can take (a list of
-checks per group, or `asked`/`done` mappings) and says plainly when there is no report.
+Before a run every claim is *planned* (·): the scenario's own reading is no evidence. After a run
+(and while it plays) each claim shows ✓ with the measured figure, ✗ with the figure, or ? when the
+run is still too short to tell. What the scenario adds beyond the sentence is listed with +, never
+counted as ✓; readings the reader was unsure of with ?; a user's count edit with !.
+
+It reads a report as plain data (`GroundingReport.to_dict()`: generation.json's `grounding` entry
+for the planned report, grounding.json or the live check for the checked one); bundles made before
+reports existed have none, and the panel says so.
 """
 
 from __future__ import annotations
 
 import io
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Mapping
 from typing import Any
 
 from rich.console import Console, Group
@@ -20,177 +23,109 @@ from rich.text import Text
 from textual.containers import VerticalScroll
 from textual.widgets import Static
 
-# Alternative key names, most likely first: the report is data from another layer, read defensively.
-FIELD_KEYS = ("field", "name", "what", "aspect", "key")
-ASKED_KEYS = ("asked", "expected", "wanted", "requested", "prompt")
-DONE_KEYS = ("does", "done", "actual", "got", "scenario", "result")
-OK_KEYS = ("ok", "honoured", "honored", "passed", "match", "matches", "satisfied")
-REASON_KEYS = ("reason", "why", "note", "detail", "message")
-WHO_KEYS = ("who", "phrase", "text")
-LABEL_KEYS = ("label", "group", "name")
-CHECK_LIST_KEYS = ("checks", "items", "fields", "rows")
-NOTE_KEYS = ("unhonoured", "not_honoured", "notes", "warnings")
-OK_MARK, FAIL_MARK = "✓", "✗"
+from grove_tui.scenario.report import FAILS, HOLDS, MARKS, PLANNED, UNCHECKED, Claim, GroundingReport
+
+STYLES = {HOLDS: "green", FAILS: "red", UNCHECKED: "yellow", PLANNED: "dim"}
 
 
-@dataclass(frozen=True)
-class GroundingCheck:
-    field: str
-    asked: Any
-    done: Any
-    ok: bool
-    reason: str = ""
-
-
-@dataclass(frozen=True)
-class GroundingGroup:
-    label: str  # the group as the sentence says it, and its label in the scenario when that differs
-    checks: tuple[GroundingCheck, ...]
-    reason: str = ""
-    agents: int | None = None  # how many agents the scenario gives it
-
-    @property
-    def ok(self) -> bool:
-        return all(check.ok for check in self.checks)
-
-
-def _first(data: Mapping[str, Any], keys: Sequence[str], default: Any = None) -> Any:
-    for key in keys:
-        if key in data and data[key] is not None:
-            return data[key]
-    return default
-
-
-def _check(field: str, data: Any, ok_hint: Any = None, reason_hint: Any = None) -> GroundingCheck:
-    if not isinstance(data, Mapping):  # {"count": true}
-        return GroundingCheck(field, None, None, bool(data), str(reason_hint or ""))
-    asked, done = _first(data, ASKED_KEYS), _first(data, DONE_KEYS)
-    ok = _first(data, OK_KEYS, ok_hint)
-    if ok is None:
-        ok = asked == done  # no verdict given: agreement is the verdict
-    return GroundingCheck(str(_first(data, FIELD_KEYS, field)), asked, done, bool(ok),
-                          str(_first(data, REASON_KEYS, reason_hint) or ""))
-
-
-def _group(index: int, data: Any) -> GroundingGroup:
-    if not isinstance(data, Mapping):
-        return GroundingGroup(f"group {index + 1}", ())
-    who, label = _first(data, WHO_KEYS), _first(data, LABEL_KEYS)
-    if who and label and str(label).lower() not in str(who).lower():
-        label = f"{who} → {label}"  # "someone → visitor": the sentence's words, then the scenario's label
-    elif who:
-        label = who  # "ten patients" already says "patient"
-    label = str(label or f"group {index + 1}")
-    members = data.get("members")
-    agents = len(members) if isinstance(members, Sequence) and not isinstance(members, str) else None
-    checks: list[GroundingCheck] = []
-    listed = _first(data, CHECK_LIST_KEYS)
-    if isinstance(listed, Sequence) and not isinstance(listed, str):
-        checks = [_check(f"check {i + 1}", item) for i, item in enumerate(listed)]
-    elif isinstance(listed, Mapping):
-        checks = [_check(str(name), item) for name, item in listed.items()]
-    else:
-        asked, done = data.get("asked"), data.get("done")
-        if isinstance(asked, Mapping):
-            done = done if isinstance(done, Mapping) else {}
-            oks = data.get("ok") if isinstance(data.get("ok"), Mapping) else {}
-            reasons = data.get("reasons") if isinstance(data.get("reasons"), Mapping) else {}
-            for name, value in asked.items():
-                checks.append(_check(str(name), {"asked": value, "done": done.get(name)}, oks.get(name),
-                                     reasons.get(name)))
-    return GroundingGroup(label, tuple(checks), str(_first(data, REASON_KEYS, "") or ""), agents)
-
-
-def read_grounding(report: Mapping[str, Any] | None) -> tuple[list[GroundingGroup], list[str]] | None:
-    """(groups, notes) from a generation report, or None when it holds no grounding report."""
+def read_grounding(report: Mapping[str, Any] | None) -> GroundingReport | None:
+    """The report of a generation.json (its `grounding` entry) or of a grounding.json (the report
+    itself); None when there is none."""
     if not isinstance(report, Mapping):
         return None
-    grounding = report.get("grounding")
-    if grounding is None:
+    data = report.get("grounding") if "grounding" in report else (report if "groups" in report else None)
+    if not isinstance(data, Mapping):
         return None
-    if isinstance(grounding, Sequence) and not isinstance(grounding, str):
-        groups_data, notes = grounding, []
-    elif isinstance(grounding, Mapping):
-        groups_data = grounding.get("groups") or []
-        notes = _first(grounding, NOTE_KEYS, [])
-    else:
+    try:
+        return GroundingReport.from_dict(dict(data))
+    except (KeyError, TypeError, ValueError):
         return None
-    notes = [str(n) for n in notes] if isinstance(notes, Sequence) and not isinstance(notes, str) else [str(notes)]
-    corrections = grounding.get("corrections") if isinstance(grounding, Mapping) else None
-    if isinstance(corrections, Sequence) and not isinstance(corrections, str):
-        notes += [f"correction: {c}" for c in corrections]  # a misspelt place the reading put right
-    return [_group(i, g) for i, g in enumerate(groups_data)], notes
 
 
-def _value(value: Any) -> str:
-    if value is None or value in ("", "-") or value == []:
-        return "—"
-    if isinstance(value, float) and value.is_integer():
-        return str(int(value))
-    if isinstance(value, (list, tuple)):
-        return ", ".join(_value(v) for v in value)
-    if isinstance(value, Mapping):  # a count record: show what a person would say
-        if "value" in value:
-            return _value(value["value"])
-        return ", ".join(f"{k} {_value(v)}" for k, v in value.items())
-    return str(value)
+def _claim_row(claim: Claim) -> tuple[Text, Text, Text]:
+    style = STYLES.get(claim.status, "")
+    mark = Text(f" {claim.mark}", style=style)
+    name = Text(claim.kind.replace("robot_", "robot ").replace("_", " "), style="bold" if claim.status == FAILS else "")
+    value = Text(claim.asked)
+    if claim.status == PLANNED:
+        value.append(f"  planned: {claim.plan}" if claim.plan else "  planned", style="dim")
+    elif claim.evidence:
+        value.append(f"\n{claim.evidence}", style="" if claim.status == HOLDS else "italic")
+    return mark, name, value
 
 
-def render_grounding(parsed: tuple[list[GroundingGroup], list[str]] | None) -> Group:
-    """One block per group: its verdict and label, then a grid of checks (mark, field, value), the
-    value wrapping inside its own column so a narrow panel (80x24) stays readable. A value the
-    sentence did not state shows dim (the scenario chose it); one that differs shows asked → done."""
-    if parsed is None:
+def render_grounding(report: GroundingReport | None) -> Group:
+    """One block per group: its verdict and label, then a grid of claims (mark, claim, asked and the
+    evidence), the text wrapping inside its own column so a narrow panel (80x24) stays readable."""
+    if report is None:
         return Group(Text("No grounding report in this bundle: it was generated before the sentence was read "
                           "into groups. Regenerate (g) to get one.", style="dim"))
-    groups, notes = parsed
-    parts: list[Any] = []
-    if not groups:
+    parts: list[Any] = [Text(report.summary(), style="bold")]
+    if not report.checked:
+        parts.append(Text("Nothing is ✓ before a run: play it (p) to check what the people do.", style="dim"))
+    if not report.groups:
         parts.append(Text("The sentence was read as no group of people.", style="dim"))
-    for group in groups:
+    for group in report.groups:
         header = Text()
-        header.append(f"{OK_MARK if group.ok else FAIL_MARK} ", style="bold green" if group.ok else "bold red")
-        header.append(group.label, style="bold")
-        if group.agents is not None:
-            header.append(f" ×{group.agents}", style="dim")
-        if group.reason and not group.ok:
-            header.append(f"  {group.reason}", style="dim")
+        header.append(f"{MARKS[group.status]} ", style=f"bold {STYLES.get(group.status, '')}")
+        label = group.who if group.label.lower() in group.who.lower() else f"{group.who} → {group.label}"
+        header.append(label, style="bold")
+        header.append(f" ×{len(group.members)}", style="dim")
         parts.append(header)
-        grid = Table.grid(padding=(0, 1, 0, 0))
-        grid.add_column(no_wrap=True)
-        grid.add_column(no_wrap=True)
-        grid.add_column(overflow="fold", ratio=1)
-        for check in group.checks:
-            mark = Text(f" {OK_MARK if check.ok else FAIL_MARK}", style="green" if check.ok else "red")
-            asked, done = _value(check.asked), _value(check.done)
-            if asked == "—":
-                value = Text(done, style="dim")
-            elif asked == done:
-                value = Text(done)
-            else:
-                value = Text(f"{asked} → {done}")
-            if check.reason and not check.ok:
-                value.append(f"\n{check.reason}", style="italic")
-            grid.add_row(mark, Text(check.field, style="" if check.ok else "bold"), value)
+        grid = _grid()
+        for claim in group.claims:
+            grid.add_row(*_claim_row(claim))
+        for added in group.added:
+            grid.add_row(Text(" +", style="cyan"), Text("added", style="cyan"), Text(added, style="cyan"))
+        for question in group.unsure:
+            grid.add_row(Text(" ?", style="yellow"), Text("unsure", style="yellow"), Text(question))
+        if group.edit:
+            grid.add_row(Text(" !", style="yellow"), Text("edited", style="yellow"), Text(group.edit))
         parts.append(grid)
-    for note in notes:
+    robot = report.robot
+    if robot is not None:
+        header = Text()
+        if robot.claims:
+            header.append(f"{MARKS[robot.status]} ", style=f"bold {STYLES.get(robot.status, '')}")
+            header.append(f"robot: {robot.task}", style="bold")
+            header.append(f"  '{robot.text}'", style="dim")
+        else:
+            header.append("- robot", style="bold")
+            header.append(f"  {robot.plan}", style="dim")
+        parts.append(header)
+        grid = _grid()
+        for claim in robot.claims:
+            grid.add_row(*_claim_row(claim))
+        for question in robot.unsure:
+            grid.add_row(Text(" ?", style="yellow"), Text("unsure", style="yellow"), Text(question))
+        parts.append(grid)
+    for correction in report.corrections:
+        parts.append(Text(f"~ correction: {correction}", style="dim"))
+    for note in report.unhonoured:
         parts.append(Text(f"! {note}", style="yellow"))
     return Group(*parts)
 
 
-def grounding_text(parsed: tuple[list[GroundingGroup], list[str]] | None, width: int = 60) -> str:
+def _grid() -> Table:
+    grid = Table.grid(padding=(0, 1, 0, 0))
+    grid.add_column(no_wrap=True)
+    grid.add_column(no_wrap=True)
+    grid.add_column(overflow="fold", ratio=1)
+    return grid
+
+
+def grounding_text(report: GroundingReport | None, width: int = 60) -> str:
     """The report as plain text at a given width (what the panel shows, without colours)."""
     console = Console(width=width, record=True, color_system=None, file=io.StringIO())
-    console.print(render_grounding(parsed))
+    console.print(render_grounding(report))
     return console.export_text()
 
 
-def summary(parsed: tuple[list[GroundingGroup], list[str]] | None) -> str:
-    """'3/4 groups ✓' for a title, or '' without a report."""
-    if parsed is None or not parsed[0]:
+def summary(report: GroundingReport | None) -> str:
+    """'planned: 3 groups' or '2/3 groups ✓, 1 ✗ (run of 60 s)' for a title, or '' without a report."""
+    if report is None or not report.groups:
         return ""
-    groups = parsed[0]
-    return f"{sum(g.ok for g in groups)}/{len(groups)} groups {OK_MARK}"
+    return report.summary()
 
 
 class GroundingPanel(VerticalScroll, can_focus=True):
@@ -199,9 +134,11 @@ class GroundingPanel(VerticalScroll, can_focus=True):
     HELP = """\
 ## Grounding
 
-For each group of people the sentence describes: what it asked (count, start, destination,
-behavior, robot reaction) beside what the scenario does, ✓ when they agree and ✗ with the
-reason when they do not. Lines marked `!` are parts of the sentence that could not be honoured.
+For each group of people the sentence describes (and the robot): what it asked, what the scenario
+plans, and after a run whether the people did it. Before a run everything is *planned* (·); after,
+✓ comes with the measured figure, ✗ with the figure, ? when the run was too short to tell (with
+how long it needs). `+` lines are what the scenario adds beyond the sentence (never ✓), `?` unsure
+readings, `!` count edits and parts of the sentence that could not be honoured.
 """
 
     def __init__(self, report: Mapping[str, Any] | None, **kwargs: Any) -> None:
@@ -211,8 +148,8 @@ reason when they do not. Lines marked `!` are parts of the sentence that could n
     def compose(self):
         yield Static(render_grounding(self._parsed), id="grounding-text")
 
-    def show(self, report: Mapping[str, Any] | None) -> None:
-        self._parsed = read_grounding(report)
+    def show(self, report: Mapping[str, Any] | GroundingReport | None) -> None:
+        self._parsed = report if isinstance(report, GroundingReport) else read_grounding(report)
         self.query_one("#grounding-text", Static).update(render_grounding(self._parsed))
         self.border_title = self.title()
 

@@ -276,6 +276,10 @@ path, and the selection highlighted with `◆`.
         cols, chars, styles = agents
         chars_row = self._chars[row].copy()
         styles_row = self._styles[row].copy()
+        if len(cols) and int(cols.max()) >= len(chars_row):
+            # agents placed on the raster before a resize (a side panel opened): drawn again next frame
+            inside = cols < len(chars_row)
+            cols, chars, styles = cols[inside], chars[inside], styles[inside]
         chars_row[cols] = chars
         styles_row[cols] = styles
         strip = self._strip_for(chars_row, styles_row)

@@ -1,0 +1,1003 @@
+"""Outcome checks: every claim of a planned grounding report checked against what happened in a run.
+
+The planned report (generation.json `grounding`, built by generation/reconcile.py) says per group
+what the sentence asks and where: reach a zone, stay, queue at a counter, talk with the others,
+leave through a named exit, follow or block the robot, walk slowly. This module measures each claim
+on the run's trajectories and event log and gives it ✓ with the measured figure, ✗ with the figure,
+or "not checked" when the run ended before the outcome could show (saying how long it needs).
+
+One function for every path: `grove metrics`, `grove simulate`, `grove generate --simulate`,
+`grove batch` and the app all call `check_bundle` or feed an `OutcomeChecker`, so a report means the
+same thing everywhere. The trajectories are streamed a block of frames at a time (as metrics.py
+does) and sampled every SAMPLE_DT seconds: memory is set by the crowd, not by the run's length.
+
+    report, path = check_bundle("out/pharmacy")          # writes out/pharmacy/grounding.json
+    for line in report.lines():
+        print(line)
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import shapely
+
+from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
+from grove_tui.errors import MetricsError
+from grove_tui.files import write_text_atomic
+from grove_tui.scenario.events import SimEvent
+from grove_tui.scenario.report import (
+    FAILS,
+    HOLDS,
+    UNCHECKED,
+    Claim,
+    GroundingReport,
+    GroupGrounding,
+    RobotGrounding,
+    RunCheck,
+)
+from grove_tui.scenario.model import Scenario
+
+GROUNDING_FILE = "grounding.json"
+SAMPLE_DT = 0.2  # seconds between the frames the checks look at
+ZONE_MARGIN = 0.3  # a person's centre this far outside a zone's boundary still counts as in it (doorways)
+MOVING = 0.3  # m/s: faster than this is walking, for pace
+PACE_QUANTILE = 0.75  # the pace is this quantile of the moving speeds
+ROBOT_MOVING = 0.1  # m/s
+FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep within reach
+LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
+LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
+LOOK_SHARE = 0.5
+AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
+AVOID_MOVED = 0.5  # metres moved away while it was near
+BLOCK_AHEAD = 2.5  # metres ahead of the robot's front
+BLOCK_SIDE = 0.8  # metres to either side of its heading
+BLOCK_SECONDS = 2.0
+BLOCK_SLOWED = 0.5  # the robot's speed while blocked, as a share of its own speed
+STAY_SHARE = 0.9  # share of the time after arriving spent there
+WANDER_WALKED = 3.0  # metres walked inside the zone
+MOVE_WALKED = 3.0
+PATROL_RADIUS = 1.0
+
+
+# ---- the public functions -------------------------------------------------------------------------
+
+def check_bundle(bundle_dir: str | Path, write: bool = True) -> tuple[GroundingReport, Path]:
+    """The bundle's planned report checked on its run (trajectories.csv, events.jsonl); with `write`,
+    saved as grounding.json beside metrics.json. A bundle without a planned report or a run is refused."""
+    from grove_tui.scenario.bundle import REPORT_FILE, load_report, load_scenario
+    from grove_tui.scenario.events import read_events
+    from grove_tui.world import load_world
+
+    bundle = Path(bundle_dir)
+    scenario = load_scenario(bundle)
+    planned = planned_report(load_report(bundle) if (bundle / REPORT_FILE).is_file() else {})
+    if planned is None:
+        raise MetricsError(f"{bundle}: {REPORT_FILE} has no grounding report to check (generated before the "
+                           f"sentence was read into groups); regenerate the bundle")
+    world = load_world(_world_reference(scenario.world, bundle))
+    events_path = bundle / "events.jsonl"
+    events = read_events(events_path) if events_path.exists() else []
+    checker = OutcomeChecker(planned, scenario, world)
+    ids, _groups, chunks = iter_trajectory_chunks(bundle / "trajectories.csv")
+    checker.set_ids(ids)
+    for chunk in chunks:
+        checker.add(chunk)
+    report = checker.result(events)
+    path = bundle / GROUNDING_FILE
+    if write:
+        write_text_atomic(path, json.dumps(report.to_dict(), indent=2, ensure_ascii=False) + "\n")
+    return report, path
+
+
+def planned_report(generation: dict[str, Any]) -> GroundingReport | None:
+    """The planned report of a generation.json (None when it has none)."""
+    data = generation.get("grounding") if isinstance(generation, dict) else None
+    if not isinstance(data, dict):
+        return None
+    report = GroundingReport.from_dict(data)
+    return replace(report, run=None)
+
+
+def check_run(planned: GroundingReport, scenario: Scenario, world: Any, traj: Trajectories,
+              events: Sequence[SimEvent], partial: bool = False) -> GroundingReport:
+    """A run held in memory checked in one go (tests, evaluation)."""
+    checker = OutcomeChecker(planned, scenario, world)
+    checker.set_ids(traj.ids)
+    checker.add(traj)
+    return checker.result(events, partial=partial)
+
+
+def _world_reference(reference: str, bundle: Path) -> str:
+    candidate = bundle / reference
+    return str(candidate) if candidate.suffix in (".yaml", ".yml") and candidate.exists() else reference
+
+
+# ---- the checker ----------------------------------------------------------------------------------
+
+class OutcomeChecker:
+    """Feed it frames (whole frames, in time order, any block size) and the event log; `result` gives
+    the checked report. The app keeps one for a run and feeds it the new frames as they come."""
+
+    def __init__(self, planned: GroundingReport, scenario: Scenario, world: Any, sample_dt: float = SAMPLE_DT):
+        self.planned = planned
+        self.scenario = scenario
+        self.world = world
+        self.sample_dt = float(sample_dt)
+        self.ids = np.array(sorted(a.id for a in scenario.agents), dtype=np.int64)
+        self._bucket = -1  # the last sampled time bucket
+        self.t_end = 0.0
+        self.frames = 0
+        self._zones: dict[str, Any] = {}
+        self._probes: list[tuple[tuple[int, int], _Probe]] = []  # ((group index or -1 for the robot, claim index), probe)
+        self.robot_max_vel = scenario.robot.max_vel if scenario.robot is not None else 0.8
+        self._build()
+
+    def set_ids(self, ids: np.ndarray) -> None:
+        """The id axis the frames come on (a CSV's people); before the first `add`."""
+        self.ids = np.asarray(ids, dtype=np.int64)
+        self._build()
+
+    def _cols(self, members: Iterable[int]) -> np.ndarray:
+        wanted = np.asarray(sorted(set(int(m) for m in members)), dtype=np.int64)
+        if wanted.size == 0 or self.ids.size == 0:
+            return np.zeros(0, dtype=np.int64)
+        cols = np.searchsorted(self.ids, wanted)
+        cols = np.clip(cols, 0, self.ids.size - 1)
+        return cols[self.ids[cols] == wanted]
+
+    def zone_shape(self, name: str) -> Any:
+        if name not in self._zones:
+            polygon = self.world.zone(name).polygon.buffer(ZONE_MARGIN)
+            shapely.prepare(polygon)
+            self._zones[name] = polygon
+        return self._zones[name]
+
+    def _build(self) -> None:
+        self._probes = []
+        for gi, group in enumerate(self.planned.groups):
+            cols = self._cols(group.members)
+            for ci, claim in enumerate(group.claims):
+                probe = _make_probe(claim, self, cols, len(group.members))
+                if probe is not None:
+                    self._probes.append(((gi, ci), probe))
+        if self.planned.robot is not None:
+            for ci, claim in enumerate(self.planned.robot.claims):
+                probe = _make_probe(claim, self, np.zeros(0, dtype=np.int64), 0)
+                if probe is not None:
+                    self._probes.append(((-1, ci), probe))
+
+    def add(self, traj: Trajectories) -> None:
+        """Frames of the run (a chunk from iter_trajectory_chunks, or a run held in memory)."""
+        if traj.frames == 0:
+            return
+        if traj.ids.shape != self.ids.shape or not np.array_equal(traj.ids, self.ids):
+            raise MetricsError("outcome checks: frames on another id axis than the first ones")
+        buckets = np.floor(traj.t / self.sample_dt + 1e-6).astype(np.int64)
+        keep = np.flatnonzero(np.diff(buckets, prepend=self._bucket) > 0)
+        self.t_end = max(self.t_end, float(traj.t[-1]))
+        self.frames += traj.frames
+        if keep.size == 0:
+            return
+        self._bucket = int(buckets[keep[-1]])
+        frames = _Frames(traj.t[keep], traj.people[keep], traj.people_vel[keep], traj.people_yaw[keep],
+                         None if traj.robot is None else traj.robot[keep],
+                         None if traj.robot_vel is None else traj.robot_vel[keep])
+        for _, probe in self._probes:
+            probe.add(frames)
+
+    def add_rows(self, rows: np.ndarray) -> None:
+        """Rows as the recorder keeps them ((R, 9): frame, t, id, x, y, vx, vy, yaw, group), whole frames."""
+        if len(rows) == 0:
+            return
+        self.add(Trajectories.from_rows_on(np.asarray(rows, dtype=np.float64), self.ids,
+                                           np.full(self.ids.size, -1, dtype=np.int64)))
+
+    def result(self, events: Sequence[SimEvent], partial: bool = False) -> GroundingReport:
+        """The report with every claim checked on the frames so far and the events."""
+        by_agent: dict[int, list[SimEvent]] = {}
+        for event in events:
+            by_agent.setdefault(int(event.agent_id), []).append(event)
+        checked: dict[tuple[int, int], Claim] = {}
+        for key, probe in self._probes:
+            status, evidence = probe.verdict(self, by_agent)
+            claim = probe.claim
+            if status != HOLDS and status != FAILS:
+                status = UNCHECKED
+            if status == FAILS and claim.needs_seconds is not None and self.t_end + 1e-6 < claim.needs_seconds \
+                    and not probe.final:
+                status = UNCHECKED
+                evidence = f"{evidence}; needs about {claim.needs_seconds:.0f} s, the run has {self.t_end:.0f} s"
+            checked[key] = claim.checked(status, evidence)
+        groups = []
+        for gi, group in enumerate(self.planned.groups):
+            claims = tuple(checked.get((gi, ci), _unprobed(c)) for ci, c in enumerate(group.claims))
+            groups.append(GroupGrounding(group.who, group.label, claims, group.members, group.added, group.unsure,
+                                         group.edit))
+        robot = self.planned.robot
+        if robot is not None:
+            robot = RobotGrounding(robot.task, robot.text,
+                                   tuple(checked.get((-1, ci), _unprobed(c)) for ci, c in enumerate(robot.claims)),
+                                   robot.plan, robot.unsure)
+        return replace(self.planned, groups=tuple(groups), robot=robot,
+                       run=RunCheck(round(self.t_end, 3), self.frames, partial))
+
+
+def _unprobed(claim: Claim) -> Claim:
+    """A claim no probe measures (a kind this version does not know): said, never ✓."""
+    if claim.status == FAILS:
+        return claim
+    return claim.checked(UNCHECKED, claim.evidence or f"no outcome check for '{claim.kind}'")
+
+
+class _Frames:
+    __slots__ = ("t", "pos", "vel", "yaw", "robot", "robot_vel")
+
+    def __init__(self, t: np.ndarray, pos: np.ndarray, vel: np.ndarray, yaw: np.ndarray, robot: np.ndarray | None,
+                 robot_vel: np.ndarray | None) -> None:
+        self.t, self.pos, self.vel, self.yaw, self.robot, self.robot_vel = t, pos, vel, yaw, robot, robot_vel
+
+
+# ---- probes: one per claim ------------------------------------------------------------------------
+
+def _need(claim: Claim, n: int) -> int:
+    return max(1, math.ceil(claim.share * n - 1e-9)) if n else 0
+
+
+def _when(t: float) -> str:
+    return f"t = {t:.1f} s"
+
+
+class _Probe:
+    """Accumulates what one claim needs from the frames; `verdict` says holds/fails and the figure."""
+
+    final = False  # a verdict that a longer run cannot change (a count, a start)
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        self.claim = claim
+        self.cols = cols
+        self.members = members  # how many the group has in the scenario (some may be absent from the run)
+        self.checker = checker
+
+    def add(self, f: _Frames) -> None:
+        pass
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        raise NotImplementedError
+
+    # helpers
+    def inside(self, f: _Frames, cols: np.ndarray | None = None) -> np.ndarray:
+        """(F, M) whether each member is at the claim's place (its zone, or within radius of its point)."""
+        cols = self.cols if cols is None else cols
+        pos = f.pos[:, cols]
+        return self.at_place(pos)
+
+    def at_place(self, pos: np.ndarray) -> np.ndarray:
+        claim = self.claim
+        shape = pos.shape[:-1]
+        finite = np.isfinite(pos[..., 0])
+        out = np.zeros(shape, dtype=bool)
+        if claim.point is not None:
+            d = np.hypot(pos[..., 0] - claim.point[0], pos[..., 1] - claim.point[1])
+            out = finite & (d <= claim.radius)
+            if claim.zone is None:
+                return out
+        if claim.zone is not None:
+            polygon = self.checker.zone_shape(claim.zone)
+            flat = pos.reshape(-1, 2)
+            ok = finite.reshape(-1)
+            hit = np.zeros(flat.shape[0], dtype=bool)
+            if ok.any():
+                hit[ok] = shapely.contains_xy(polygon, flat[ok, 0], flat[ok, 1])
+            out = out | hit.reshape(shape)
+        return out
+
+    def where(self) -> str:
+        c = self.claim
+        return c.place or c.zone or (f"({c.point[0]:.1f}, {c.point[1]:.1f})" if c.point else "the place")
+
+
+class _CountProbe(_Probe):
+    final = True
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.present: int | None = None
+
+    def add(self, f: _Frames) -> None:
+        if self.present is None and f.t.size:
+            self.present = int(np.isfinite(f.pos[0, self.cols, 0]).sum()) if self.cols.size else 0
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        present = self.present or 0
+        if present == self.members:
+            return HOLDS, f"{present} in the run from its first frame"
+        return FAILS, f"{present} in the run, {self.members} planned"
+
+
+class _StartProbe(_Probe):
+    final = True
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.first = np.full((self.cols.size, 2), np.nan)
+
+    def add(self, f: _Frames) -> None:
+        missing = ~np.isfinite(self.first[:, 0])
+        if not missing.any():
+            return
+        pos = f.pos[:, self.cols]
+        seen = np.isfinite(pos[..., 0])
+        for j in np.flatnonzero(missing):
+            rows = np.flatnonzero(seen[:, j])
+            if rows.size:
+                self.first[j] = pos[rows[0], j]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        ok = self.at_place(self.first[None])[0] if self.cols.size else np.zeros(0, bool)
+        n, hits = self.members, int(ok.sum())
+        status = HOLDS if hits >= _need(replace(self.claim, share=1.0), n) else FAILS
+        return status, f"{hits}/{n} started in {self.where()}"
+
+
+class _ReachProbe(_Probe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.first = np.full(self.cols.size, np.inf)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size or not np.isinf(self.first).any():
+            return
+        inside = self.inside(f)
+        hit = inside.any(axis=0)
+        for j in np.flatnonzero(hit & np.isinf(self.first)):
+            self.first[j] = f.t[np.argmax(inside[:, j])]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        reached = self.first[np.isfinite(self.first)]
+        k = int(reached.size)
+        text = f"{k}/{n} reached {self.where()}"
+        if k:
+            text += f" by {_when(float(reached.max()))}" if k == n else f" (last at {_when(float(reached.max()))})"
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+class _StayProbe(_Probe):
+    """Arrive, then stay: the share of the time after arriving spent at the place."""
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        m = self.cols.size
+        self.arrived = np.full(m, np.inf)
+        self.after = np.zeros(m)
+        self.inside_after = np.zeros(m)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size:
+            return
+        inside = self.inside(f)
+        present = np.isfinite(f.pos[:, self.cols, 0])
+        for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
+            self.arrived[j] = f.t[np.argmax(inside[:, j])]
+        since = f.t[:, None] >= self.arrived[None, :]
+        self.after += (since & present).sum(axis=0)
+        self.inside_after += (since & inside).sum(axis=0)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        arrived = np.isfinite(self.arrived)
+        share = np.divide(self.inside_after, self.after, out=np.zeros_like(self.after), where=self.after > 0)
+        stayed_for = (self.inside_after * checker.sample_dt)
+        ok = arrived & (share >= STAY_SHARE)
+        asked = self.claim.seconds
+        if asked and ok.any():
+            # "waits for five minutes": the run must cover the wait (else a longer run is needed)
+            long_enough = stayed_for + checker.sample_dt >= asked
+            ok = ok & long_enough
+        k = int(ok.sum())
+        mean_share = float(share[arrived].mean()) if arrived.any() else 0.0
+        text = f"{k}/{n} stayed at {self.where()}"
+        if arrived.any():
+            text += f" ({mean_share:.0%} of the time after arriving"
+            text += f", {float(stayed_for[arrived].min()):.0f} s at least)" if asked else ")"
+        else:
+            text = f"0/{n} got to {self.where()}"
+        if asked and arrived.any() and (share[arrived] >= STAY_SHARE).all() and not ok.all():
+            return UNCHECKED, text + f"; asked {asked:.0f} s"
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+class _WanderProbe(_Probe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        m = self.cols.size
+        self.present = np.zeros(m)
+        self.inside_n = np.zeros(m)
+        self.walked = np.zeros(m)
+        self.last = np.full((m, 2), np.nan)
+        self.last_inside = np.zeros(m, dtype=bool)
+        self.arrived = np.zeros(m, dtype=bool)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size:
+            return
+        pos = f.pos[:, self.cols]
+        inside = self.inside(f)
+        present = np.isfinite(pos[..., 0])
+        seq = np.concatenate([self.last[None], pos], axis=0)
+        ins = np.concatenate([self.last_inside[None], inside], axis=0)
+        step = np.hypot(*(np.diff(seq, axis=0).transpose(2, 0, 1)))
+        step = np.where(np.isfinite(step) & ins[1:] & ins[:-1], step, 0.0)
+        self.walked += step.sum(axis=0)
+        # the share inside counts from arrival: walking there from elsewhere is not wandering outside
+        arrived_before = self.arrived.copy()
+        cum = np.maximum.accumulate(inside, axis=0) | arrived_before[None, :]
+        self.present += (present & cum).sum(axis=0)
+        self.inside_n += (inside & cum).sum(axis=0)
+        self.arrived |= inside.any(axis=0)
+        self.last = np.where(present[-1][:, None], pos[-1], self.last)
+        self.last_inside = np.where(present[-1], inside[-1], self.last_inside)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        share = np.divide(self.inside_n, self.present, out=np.zeros_like(self.present), where=self.present > 0)
+        ok = self.arrived & (share >= STAY_SHARE) & (self.walked >= WANDER_WALKED)
+        k = int(ok.sum())
+        text = f"{k}/{n} wandered in {self.where()}"
+        if self.arrived.any():
+            text += (f" ({float(share[self.arrived].mean()):.0%} of the time inside, "
+                     f"{float(self.walked[self.arrived].mean()):.0f} m walked there on average)")
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+class _LeaveProbe(_Probe):
+    """They leave a place: each member is somewhere else than `zone` at some time of the run."""
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.left = np.full(self.cols.size, np.inf)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size or not np.isinf(self.left).any():
+            return
+        outside = ~self.inside(f) & np.isfinite(f.pos[:, self.cols, 0])
+        for j in np.flatnonzero(np.isinf(self.left) & outside.any(axis=0)):
+            self.left[j] = f.t[np.argmax(outside[:, j])]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        gone = self.left[np.isfinite(self.left)]
+        k = int(gone.size) + sum(1 for a in self._evacuated(events))
+        k = min(k, n)
+        text = f"{k}/{n} left {self.where()}" + (f" (last at {_when(float(gone.max()))})" if gone.size else "")
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+    def _evacuated(self, events: dict[int, list[SimEvent]]) -> list[int]:
+        """Members out of the building without a frame outside the zone first (left through its own exit)."""
+        ids = [int(i) for i in self.checker.ids[self.cols]] if self.cols.size else []
+        return [i for j, i in enumerate(ids) if np.isinf(self.left[j])
+                and any(e.kind in ("evacuated", "left_building") for e in events.get(i, ()))]
+
+
+class _MoveProbe(_Probe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.walked = np.zeros(self.cols.size)
+        self.last = np.full((self.cols.size, 2), np.nan)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size:
+            return
+        pos = f.pos[:, self.cols]
+        seq = np.concatenate([self.last[None], pos], axis=0)
+        step = np.hypot(*(np.diff(seq, axis=0).transpose(2, 0, 1)))
+        self.walked += np.where(np.isfinite(step), step, 0.0).sum(axis=0)
+        present = np.isfinite(pos[-1, :, 0])
+        self.last = np.where(present[:, None], pos[-1], self.last)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        k = int((self.walked >= MOVE_WALKED).sum())
+        mean = float(self.walked.mean()) if self.walked.size else 0.0
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), f"{k}/{n} walked (on average {mean:.0f} m)"
+
+
+class _PaceProbe(_Probe):
+    BINS = np.linspace(0.0, 3.0, 151)
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.histogram = np.zeros(self.BINS.size - 1)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size:
+            return
+        v = f.vel[:, self.cols]
+        speed = np.hypot(v[..., 0], v[..., 1])
+        if self.claim.distance is not None and f.robot is not None:
+            # a pace on the way to the robot: only while farther than `distance` from it
+            pos = f.pos[:, self.cols]
+            away = np.hypot(pos[..., 0] - f.robot[:, 0:1], pos[..., 1] - f.robot[:, 1:2]) > self.claim.distance
+            speed = np.where(away, speed, np.nan)
+        speed = speed.ravel()
+        speed = speed[np.isfinite(speed) & (speed > MOVING)]
+        if speed.size:
+            self.histogram += np.histogram(np.clip(speed, 0.0, 2.999), self.BINS)[0]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        total = self.histogram.sum()
+        if total * checker.sample_dt < 2.0:
+            return UNCHECKED, "too little walking to measure a pace"
+        # The pace people keep while under way: the upper quartile of their moving speeds (slowing to
+        # arrive, to go through a door, to stop beside someone is not their pace).
+        cumulative = np.cumsum(self.histogram)
+        k = int(np.searchsorted(cumulative, PACE_QUANTILE * total))
+        pace = float((self.BINS[k] + self.BINS[k + 1]) / 2.0)
+        low, high = self.claim.low or 0.0, self.claim.high or 9.9
+        ok = low <= pace <= high
+        band = f"{low:.2f}-{high:.2f}" if self.claim.low and self.claim.high and high < 9 else (
+            f"at most {high:.2f}" if high < 9 else f"at least {low:.2f}")
+        return (HOLDS if ok else FAILS), f"walking pace {pace:.2f} m/s (asked {self.claim.asked}: {band} m/s)"
+
+
+class _EventsProbe(_Probe):
+    """Claims told by the event log (queues, conversations, evacuations)."""
+
+    def member_ids(self) -> list[int]:
+        return [int(i) for i in self.checker.ids[self.cols]] if self.cols.size else []
+
+
+class _QueueProbe(_EventsProbe):
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        place = self.claim.place
+        joined = advanced = served = 0
+        first_served = math.inf
+        elsewhere: set[str] = set()
+        for agent in self.member_ids():
+            mine = [e for e in events.get(agent, ()) if e.kind.startswith("queue_")]
+            here = [e for e in mine if self._here(e.detail)]
+            elsewhere |= {e.detail for e in mine if e.kind == "queue_join" and not self._here(e.detail)}
+            joined += any(e.kind == "queue_join" for e in here)
+            advanced += any(e.kind == "queue_advance" for e in here)
+            got = [e.t for e in here if e.kind == "queue_served"]
+            served += bool(got)
+            if got:
+                first_served = min(first_served, min(got))
+        n = self.members
+        text = f"joined {joined}/{n} at {place or self.claim.zone or 'a queue'}, advanced {advanced}, served {served}"
+        if served:
+            text += f" (first at {_when(first_served)})"
+        if elsewhere:
+            text += f"; queued elsewhere: {', '.join(sorted(elsewhere))}"
+        ok = joined >= _need(self.claim, n) and served >= 1 and (n < 2 or advanced + served >= 2 or served >= 1)
+        return (HOLDS if ok else FAILS), text
+
+
+    def _here(self, service: str) -> bool:
+        """A queue at the claim's service point, or (a claim about a zone) at any service point in it."""
+        claim = self.claim
+        if claim.place is not None:
+            return service == claim.place
+        if claim.zone is None:
+            return True
+        try:
+            found = self.checker.world.find(service)
+        except Exception:
+            return False
+        return getattr(found, "zone", getattr(found, "name", None)) == claim.zone
+
+
+class _ConverseProbe(_EventsProbe):
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        partners = set(self.claim.partners) or set(self.member_ids())
+        talked = 0
+        first = math.inf
+        for agent in self.member_ids():
+            for e in events.get(agent, ()):
+                if e.kind != "conversation_start":
+                    continue
+                with_ids = {int(x) for x in e.detail.split(",") if x.strip().isdigit()}
+                # everyone named (but the member itself) is in the circle it talked in
+                if (partners - {agent}) <= with_ids:
+                    talked += 1
+                    first = min(first, e.t)
+                    break
+        n = self.members
+        text = f"{talked}/{n} talked with " + ("each other" if not self.claim.partners else
+                                               f"agents {', '.join(map(str, sorted(partners)))}")
+        if talked:
+            text += f" (from {_when(first)})"
+        return (HOLDS if talked >= _need(self.claim, n) else FAILS), text
+
+
+class _EvacuateProbe(_EventsProbe):
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        exits = set(self.claim.exits)
+        out = through = 0
+        last = 0.0
+        used: dict[str, int] = {}
+        for agent in self.member_ids():
+            done = [e for e in events.get(agent, ()) if e.kind == "evacuated"]
+            if not done:
+                continue
+            out += 1
+            last = max(last, done[0].t)
+            used[done[0].detail] = used.get(done[0].detail, 0) + 1
+            through += (not exits) or done[0].detail in exits
+        n = self.members
+        text = f"{out}/{n} out of the building"
+        if out:
+            text += f" by {_when(last)} (" + ", ".join(f"{k or 'an exit'} {v}" for k, v in sorted(used.items())) + ")"
+        if exits:
+            text += f"; {through} through {', '.join(sorted(exits))}"
+        ok = through >= _need(self.claim, n)
+        return (HOLDS if ok else FAILS), text
+
+
+class _RobotProbe(_Probe):
+    """Reactions to the robot: distances and bearings between each member and the robot."""
+
+    def robot_xy(self, f: _Frames) -> tuple[np.ndarray, np.ndarray] | None:
+        if f.robot is None:
+            return None
+        return f.robot[:, 0], f.robot[:, 1]
+
+    def no_robot(self) -> tuple[str, str]:
+        return FAILS, "the scenario has no robot"
+
+
+class _RobotFollowProbe(_RobotProbe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        m = self.cols.size
+        self.since = np.full(m, np.inf)  # first time within reach
+        self.moving = np.zeros(m)  # robot-moving frames since then
+        self.near = np.zeros(m)
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        xy = self.robot_xy(f)
+        if xy is None or not self.cols.size:
+            return
+        self.seen_robot = True
+        rx, ry = xy
+        pos = f.pos[:, self.cols]
+        d = np.hypot(pos[..., 0] - rx[:, None], pos[..., 1] - ry[:, None])
+        within = np.isfinite(d) & (d <= (self.claim.distance or 3.0))
+        for j in np.flatnonzero(np.isinf(self.since) & within.any(axis=0)):
+            self.since[j] = f.t[np.argmax(within[:, j])]
+        speed = np.hypot(f.robot_vel[:, 0], f.robot_vel[:, 1]) if f.robot_vel is not None else np.zeros(f.t.size)
+        counted = (f.t[:, None] >= self.since[None, :]) & (speed[:, None] > ROBOT_MOVING) & np.isfinite(d)
+        self.moving += counted.sum(axis=0)
+        self.near += (counted & within).sum(axis=0)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return self.no_robot()
+        n = self.members
+        reached = np.isfinite(self.since)
+        share = np.divide(self.near, self.moving, out=np.zeros_like(self.near), where=self.moving > 0)
+        enough = self.moving * checker.sample_dt >= 3.0
+        ok = reached & enough & (share >= FOLLOW_SHARE)
+        d = self.claim.distance or 3.0
+        text = f"{int(ok.sum())}/{n} followed it within {d:g} m"
+        if reached.any():
+            text += f" ({float(share[reached].mean()):.0%} of its moving time since reaching it, first at " \
+                    f"{_when(float(self.since[reached].min()))})"
+        else:
+            text = f"0/{n} came within {d:g} m of the robot"
+        if reached.any() and not enough[reached].any():
+            return UNCHECKED, text + "; the robot hardly moved after they reached it"
+        return (HOLDS if int(ok.sum()) >= _need(self.claim, n) else FAILS), text
+
+
+class _RobotApproachProbe(_RobotProbe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.closest = np.full(self.cols.size, np.inf)
+        self.when = np.full(self.cols.size, np.nan)
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        xy = self.robot_xy(f)
+        if xy is None or not self.cols.size:
+            return
+        self.seen_robot = True
+        rx, ry = xy
+        pos = f.pos[:, self.cols]
+        d = np.hypot(pos[..., 0] - rx[:, None], pos[..., 1] - ry[:, None])
+        d = np.where(np.isfinite(d), d, np.inf)
+        k = np.argmin(d, axis=0)
+        best = d[k, np.arange(d.shape[1])]
+        better = best < self.closest
+        self.closest[better] = best[better]
+        self.when[better] = f.t[k[better]]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return self.no_robot()
+        n = self.members
+        d = self.claim.distance or 2.0
+        ok = self.closest <= d
+        k = int(ok.sum())
+        finite = np.isfinite(self.closest)
+        text = f"{k}/{n} came within {d:g} m of the robot"
+        if finite.any():
+            j = int(np.nanargmin(np.where(finite, self.closest, np.nan)))
+            text += f" (closest {float(self.closest[j]):.1f} m at {_when(float(self.when[j]))})"
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+class _RobotBlockProbe(_RobotProbe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        m = self.cols.size
+        self.blocked = np.zeros(m)  # frames standing in its path
+        self.speed_sum = np.zeros(m)  # the robot's speed summed over those frames
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.cols.size:
+            return
+        self.seen_robot = True
+        rx, ry, ryaw = f.robot[:, 0], f.robot[:, 1], f.robot[:, 2]
+        hx, hy = np.cos(ryaw), np.sin(ryaw)
+        pos = f.pos[:, self.cols]
+        dx, dy = pos[..., 0] - rx[:, None], pos[..., 1] - ry[:, None]
+        ahead = dx * hx[:, None] + dy * hy[:, None]
+        side = np.abs(-dx * hy[:, None] + dy * hx[:, None])
+        in_path = np.isfinite(ahead) & (ahead > 0.0) & (ahead <= BLOCK_AHEAD) & (side <= BLOCK_SIDE)
+        speed = np.hypot(f.robot_vel[:, 0], f.robot_vel[:, 1]) if f.robot_vel is not None else np.zeros(f.t.size)
+        self.blocked += in_path.sum(axis=0)
+        self.speed_sum += (in_path * speed[:, None]).sum(axis=0)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return self.no_robot()
+        n = self.members
+        seconds = self.blocked * checker.sample_dt
+        speed = np.divide(self.speed_sum, self.blocked, out=np.zeros_like(self.speed_sum), where=self.blocked > 0)
+        slowed = speed <= BLOCK_SLOWED * checker.robot_max_vel
+        ok = (seconds >= BLOCK_SECONDS) & slowed
+        k = int(ok.sum())
+        if not (self.blocked > 0).any():
+            return FAILS, f"0/{n} stood in the robot's path"
+        j = int(np.argmax(seconds))
+        text = (f"{k}/{n} stood in its path and slowed it ({float(seconds[j]):.0f} s in its path; its speed "
+                f"there {float(speed[j]):.2f} m/s against {checker.robot_max_vel:.2f})")
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+class _RobotAvoidProbe(_RobotProbe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        m = self.cols.size
+        self.away = np.zeros(m)  # net metres moved away from the robot while it was near, so far
+        self.best = np.zeros(m)  # the most that net ever was: stepping away and coming back is avoiding it
+        self.near = np.zeros(m)
+        self.closest = np.full(m, np.inf)
+        self.last = np.full((m, 2), np.nan)
+        self.last_robot = np.full(2, np.nan)
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.cols.size:
+            return
+        self.seen_robot = True
+        pos = f.pos[:, self.cols]
+        robot = f.robot[:, :2]
+        prev = np.concatenate([self.last[None], pos[:-1]], axis=0)
+        prev_robot = np.concatenate([self.last_robot[None], robot[:-1]], axis=0)
+        rel = prev - prev_robot[:, None, :]
+        dist = np.hypot(rel[..., 0], rel[..., 1])
+        near = np.isfinite(dist) & (dist <= (self.claim.distance or AVOID_NEAR)) & (dist > 1e-6)
+        move = pos - prev
+        radial = np.where(near, (move[..., 0] * rel[..., 0] + move[..., 1] * rel[..., 1]) / np.where(near, dist, 1.0), 0.0)
+        running = self.away[None, :] + np.cumsum(np.where(np.isfinite(radial), radial, 0.0), axis=0)
+        self.best = np.maximum(self.best, running.max(axis=0))
+        self.away = running[-1]
+        self.near += near.sum(axis=0)
+        now = np.hypot(pos[..., 0] - robot[:, 0:1], pos[..., 1] - robot[:, 1:2])
+        self.closest = np.fmin(self.closest, np.nanmin(np.where(np.isfinite(now), now, np.inf), axis=0))
+        present = np.isfinite(pos[-1, :, 0])
+        self.last = np.where(present[:, None], pos[-1], self.last)
+        self.last_robot = robot[-1]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return self.no_robot()
+        n = self.members
+        came = self.near > 0
+        ok = came & (self.best >= AVOID_MOVED)
+        k = int(ok.sum())
+        if not came.any():
+            closest = float(self.closest.min()) if self.closest.size else math.inf
+            return FAILS, f"the robot never came within {self.claim.distance or AVOID_NEAR:g} m of them " \
+                          f"(closest {closest:.1f} m)"
+        text = (f"{k}/{int(came.sum())} moved away when it came within {self.claim.distance or AVOID_NEAR:g} m "
+                f"({float(self.best[came].mean()):.1f} m on average; closest {float(self.closest[came].min()):.1f} m)")
+        return (HOLDS if k >= _need(self.claim, int(came.sum())) else FAILS), text
+
+
+class _RobotLookProbe(_RobotProbe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        m = self.cols.size
+        self.in_sight = np.zeros(m)
+        self.facing = np.zeros(m)
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.cols.size:
+            return
+        self.seen_robot = True
+        pos = f.pos[:, self.cols]
+        dx, dy = f.robot[:, 0:1] - pos[..., 0], f.robot[:, 1:2] - pos[..., 1]
+        d = np.hypot(dx, dy)
+        sight = np.isfinite(d) & (d <= LOOK_RANGE)
+        bearing = np.arctan2(dy, dx)
+        off = np.abs((bearing - f.yaw[:, self.cols] + np.pi) % (2 * np.pi) - np.pi)
+        self.in_sight += sight.sum(axis=0)
+        self.facing += (sight & (off <= LOOK_ANGLE)).sum(axis=0)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return self.no_robot()
+        n = self.members
+        seen = self.in_sight * checker.sample_dt >= 1.0
+        share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
+        ok = seen & (share >= LOOK_SHARE)
+        k = int(ok.sum())
+        if not seen.any():
+            return FAILS, f"the robot never came within {LOOK_RANGE:g} m of them"
+        text = (f"{k}/{n} looked at it ({float(share[seen].mean()):.0%} of the "
+                f"{float(self.in_sight[seen].mean() * checker.sample_dt):.0f} s it was within {LOOK_RANGE:g} m)")
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+class _FollowPersonProbe(_Probe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.partner_cols = self.checker._cols(self.claim.partners)
+        m = self.cols.size
+        self.present = np.zeros(m)
+        self.near = np.zeros(m)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size or not self.partner_cols.size:
+            return
+        pos = f.pos[:, self.cols]
+        partners = f.pos[:, self.partner_cols]
+        d = np.hypot(pos[:, :, None, 0] - partners[:, None, :, 0], pos[:, :, None, 1] - partners[:, None, :, 1])
+        d = np.where(np.isfinite(d), d, np.inf).min(axis=2)
+        present = np.isfinite(pos[..., 0]) & np.isfinite(partners[..., 0]).any(axis=1)[:, None]
+        self.present += present.sum(axis=0)
+        self.near += (present & (d <= (self.claim.distance or 3.0))).sum(axis=0)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        share = np.divide(self.near, self.present, out=np.zeros_like(self.near), where=self.present > 0)
+        ok = share >= 0.6
+        k = int(ok.sum())
+        text = f"{k}/{n} kept within {self.claim.distance or 3.0:g} m of them"
+        if share.size:
+            text += f" ({float(share.mean()):.0%} of the time)"
+        return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+
+# the robot's own claims ---------------------------------------------------------------------------
+
+class _RobotPlaceProbe(_Probe):
+    """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time."""
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.first = math.inf
+        self.frames = 0
+        self.there = 0
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None:
+            return
+        self.seen_robot = True
+        inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        if inside.any() and math.isinf(self.first):
+            self.first = float(f.t[np.argmax(inside)])
+        self.frames += int(inside.size)
+        self.there += int(inside.sum())
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if self.claim.kind == "robot_stay":
+            share = self.there / self.frames if self.frames else 0.0
+            return (HOLDS if share >= STAY_SHARE else FAILS), f"at {self.where()} {share:.0%} of the run"
+        verb = "passed through" if self.claim.kind == "robot_via" else "reached"
+        if math.isinf(self.first):
+            return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
+                f"never passed through {self.where()}"
+        return HOLDS, f"{verb} {self.where()} at {_when(self.first)}"
+
+
+class _RobotPatrolProbe(_Probe):
+    """The robot goes to the far end of its round and comes back to where it started."""
+
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.start: np.ndarray | None = None
+        self.far_at = math.inf
+        self.back_at = math.inf
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None:
+            return
+        xy = f.robot[:, :2]
+        if self.start is None:
+            self.start = xy[0].copy()
+        far = self.at_place(xy[:, None, :])[:, 0]
+        if math.isinf(self.far_at) and far.any():
+            self.far_at = float(f.t[np.argmax(far)])
+        if not math.isinf(self.far_at) and math.isinf(self.back_at):
+            home = (np.hypot(xy[:, 0] - self.start[0], xy[:, 1] - self.start[1]) <= PATROL_RADIUS) & (f.t > self.far_at)
+            if home.any():
+                self.back_at = float(f.t[np.argmax(home)])
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if self.start is None:
+            return FAILS, "no robot in the run"
+        if math.isinf(self.far_at):
+            return FAILS, f"never reached the far end of its round ({self.where()})"
+        if math.isinf(self.back_at):
+            return FAILS, f"reached {self.where()} at {_when(self.far_at)} but did not come back"
+        return HOLDS, f"went to {self.where()} ({_when(self.far_at)}) and back ({_when(self.back_at)})"
+
+
+class _RobotFollowPersonProbe(_Probe):
+    def __init__(self, *args: Any) -> None:
+        super().__init__(*args)
+        self.partner_cols = self.checker._cols(self.claim.partners)
+        self.frames = 0
+        self.near = 0
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.partner_cols.size:
+            return
+        partners = f.pos[:, self.partner_cols]
+        d = np.hypot(partners[..., 0] - f.robot[:, 0:1], partners[..., 1] - f.robot[:, 1:2])
+        d = np.where(np.isfinite(d), d, np.inf).min(axis=1)
+        present = np.isfinite(d)
+        self.frames += int(present.sum())
+        self.near += int((present & (d <= (self.claim.distance or 3.0))).sum())
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        share = self.near / self.frames if self.frames else 0.0
+        return (HOLDS if share >= FOLLOW_SHARE else FAILS), \
+            f"within {self.claim.distance or 3.0:g} m of them {share:.0%} of the time"
+
+
+_PROBES: dict[str, type[_Probe]] = {
+    "count": _CountProbe, "start": _StartProbe, "reach": _ReachProbe, "stay": _StayProbe, "wander": _WanderProbe,
+    "move": _MoveProbe, "leave": _LeaveProbe, "pace": _PaceProbe, "queue": _QueueProbe, "converse": _ConverseProbe,
+    "evacuate": _EvacuateProbe, "follow_person": _FollowPersonProbe, "robot_follow": _RobotFollowProbe,
+    "robot_approach": _RobotApproachProbe, "robot_block": _RobotBlockProbe, "robot_avoid": _RobotAvoidProbe,
+    "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,
+    "robot_stay": _RobotPlaceProbe, "robot_patrol": _RobotPatrolProbe,
+    "robot_follow_person": _RobotFollowPersonProbe,
+}
+
+
+def _make_probe(claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> _Probe | None:
+    kind = _PROBES.get(claim.kind)
+    if kind is None:
+        return None
+    if claim.status == FAILS and claim.kind != "count":
+        return None  # the plan already contradicts it: ✗ stays, with its reason
+    return kind(claim, checker, cols, members)

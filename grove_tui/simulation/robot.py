@@ -1,0 +1,123 @@
+"""The scripted robot: what it does with its planned path, and how it stops for people in its way.
+
+The crowd moves the robot along a path at its top speed (crowd/sfm.py); this driver decides the
+path and the speed limit once per behavior-tree tick, as a simple navigation stack would:
+
+- task "cross" drives the path once, "wait" stays at the start, "patrol" drives it there and back
+  again, "follow" keeps a short distance behind the people it follows (replanned every second);
+- a person standing in the corridor just ahead of the robot stops it (a collision monitor, as Nav2's
+  stops a real base): it holds still for HOLD_SECONDS, then creeps on at CREEP_SPEED so people can
+  make way, and drives at full speed again once the corridor is clear. Someone who keeps stepping in
+  front of it (blocking the robot) therefore slows it, as a researcher expects.
+
+A robot driven by a velocity command (the app's arrow keys, a Gymnasium policy) is left alone.
+Stops and resumes are logged as events (agent id 0, the robot): "robot_stopped" with the ids in the
+way, "robot_resumed".
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+STOP_GAP = 0.6  # metres between bodies ahead of the robot at which it stops
+SIDE_MARGIN = 0.05  # metres added to both bodies' radii for the corridor's half width
+HOLD_SECONDS = 2.0  # standing still before creeping on
+CREEP_SPEED = 0.15  # m/s while someone stays in the way
+FOLLOW_BEHIND = 1.2  # metres the following robot keeps from the person it follows
+FOLLOW_REPLAN = 1.0  # seconds between the follower's new paths
+ROBOT_ID = 0
+
+
+class RobotDriver:
+    def __init__(self, spec: Any, crowd: Any, context: Any) -> None:
+        self.spec = spec
+        self.crowd = crowd
+        self.context = context
+        self.task = getattr(spec, "task", "cross")
+        self.path = np.asarray(spec.path if spec.path else [spec.start, spec.goal], dtype=np.float64).reshape(-1, 2)
+        self.max_vel = float(spec.max_vel)
+        self.blocked_since: float | None = None
+        self.follows = tuple(getattr(spec, "follows", ()) or ())
+        self._next_follow = 0.0
+        self._outbound = True
+
+    def initial_path(self) -> np.ndarray:
+        if self.task == "wait" or self.task == "follow":
+            return self.path[:1]
+        return self.path
+
+    def update(self) -> None:
+        crowd = self.crowd
+        if not crowd.has_robot:
+            return
+        if crowd.robot_commanded:
+            # Someone else drives: its full speed is theirs to use.
+            self.blocked_since = None
+            if crowd.robot_speed_limit != self.max_vel:
+                crowd.set_robot_speed_limit(self.max_vel)
+            return
+        now = self.context.clock.now
+        if self.task == "patrol" and crowd.robot_path_done and len(self.path) > 1:
+            self._outbound = not self._outbound
+            crowd.set_robot_path(self.path if self._outbound else self.path[::-1])
+        elif self.task == "follow" and now >= self._next_follow:
+            self._next_follow = now + FOLLOW_REPLAN
+            self._follow()
+        self._collision_monitor(now)
+
+    def _follow(self) -> None:
+        ctx, crowd = self.context, self.crowd
+        rows = [ctx.row_of[i] for i in self.follows if i in ctx.row_of and crowd.active[ctx.row_of[i]]]
+        robot = crowd.robot_pos
+        if not rows or robot is None:
+            crowd.set_robot_path([robot] if robot is not None else None)
+            return
+        target = min((crowd.pos[r] for r in rows), key=lambda p: math.dist(p, robot))
+        d = math.dist(target, robot)
+        if d <= FOLLOW_BEHIND:
+            crowd.set_robot_path([robot])
+            return
+        f = (d - FOLLOW_BEHIND) / d
+        goal = (robot[0] + (target[0] - robot[0]) * f, robot[1] + (target[1] - robot[1]) * f)
+        route = [goal] if ctx.sees(robot, goal) else ctx.plan(robot, goal)
+        crowd.set_robot_path([tuple(robot)] + [tuple(p) for p in route])
+
+    def _collision_monitor(self, now: float) -> None:
+        crowd, ctx = self.crowd, self.context
+        n = len(ctx.ids)
+        robot = crowd.robot_pos
+        blockers: list[int] = []
+        if n and robot is not None:
+            yaw = float(crowd.robot_yaw or 0.0)
+            hx, hy = math.cos(yaw), math.sin(yaw)
+            pos = crowd.pos[:n]
+            radius = crowd.radius[:n]
+            rr = float(crowd.robot_radius or 0.3)
+            dx, dy = pos[:, 0] - robot[0], pos[:, 1] - robot[1]
+            ahead = dx * hx + dy * hy
+            side = np.abs(-dx * hy + dy * hx)
+            reach = rr + radius + STOP_GAP
+            way = (np.asarray(crowd.active[:n], dtype=bool) & (ahead > 0.0) & (ahead <= reach)
+                   & (side <= rr + radius + SIDE_MARGIN))
+            blockers = np.flatnonzero(way).tolist() if self._moving_on() else []
+        if blockers:
+            if self.blocked_since is None:
+                self.blocked_since = now
+                ctx.events.append((now, ROBOT_ID, "robot_stopped", ",".join(str(ctx.ids[r]) for r in blockers)))
+            limit = 0.0 if now - self.blocked_since < HOLD_SECONDS else min(CREEP_SPEED, self.max_vel)
+        else:
+            if self.blocked_since is not None:
+                ctx.events.append((now, ROBOT_ID, "robot_resumed", ""))
+            self.blocked_since = None
+            limit = self.max_vel
+        if crowd.robot_speed_limit != limit:
+            crowd.set_robot_speed_limit(limit)
+
+    def _moving_on(self) -> bool:
+        """Whether the robot still has somewhere to drive (a robot standing at its goal blocks nobody)."""
+        if self.task == "wait":
+            return False
+        return not self.crowd.robot_path_done
