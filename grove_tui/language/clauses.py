@@ -136,6 +136,9 @@ class Clauses:
                 name = "at"  # "buy tickets from the machines": where they stand, not where they start
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
             place = self.places.phrase(i + width, name, i, record_unknown=name != "off")
+            if place is not None and name in lx.VIA_PREPOSITIONS | {"by"} and i > 0 and s.low[i - 1] == "in" and \
+                    place.match is not None and place.match.kind == "door":
+                place = replace(place, prep="from")  # "pour in through the main doors": in from there
             if place is not None:
                 # "check in counter a": the "in" inside a name is not a new phrase
                 return self._add_place(scan, place, i)

@@ -117,6 +117,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
         return Quantifier(max(1, math.floor(value + 0.5)), "approximate", after, max(1, math.ceil(value)),
                           max(1, math.floor(value)))
     num = number_at(s, k)
+    if num is not None and num[1] < s.n and low[num[1]] in lx.DETERMINERS and not approx:
+        return None  # "At nine the porters come in": a time, then the phrase; a number counts no "the ..."
     if num is not None:
         return _number_quantifier(s, num, approx)
     if low[k] == "both" and k + 1 < s.n and not s.is_punct(k + 1):

@@ -59,6 +59,9 @@ SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
 PLACE_SEQUELS = frozenset({"and", "then", ",", "afterwards", "finally"})
 # Collectives that also name the kind of a collective after them ("a tour group", "a family party").
 MODIFYING_COLLECTIVES = frozenset({"tour", "family", "class", "delegation"})
+# Family words said as names, with no determiner ("mum cooks", "grandpa naps"): what follows is their verb.
+KIN_NAMES = frozenset("mum mom mummy mommy mama dad daddy papa grandma grandpa granny gran nan nana grandad "
+                      "granddad".split())
 # Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
 FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4)}
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").

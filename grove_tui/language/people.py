@@ -113,7 +113,8 @@ class People:
                 return None  # "two fans whir in the server room"
             if person and s.w[k].pos == "ADJ" and k + 1 < s.n and \
                     s.w[k + 1].pos in ("NOUN", "PROPN") and s.w[k + 1].dep != "ROOT" and \
-                    (self.is_person_noun(k + 1) or s.lemma(k + 1) in lx.IMPLIED_RANGES):
+                    (self.is_person_noun(k + 1) or s.lemma(k + 1) in lx.IMPLIED_RANGES) and \
+                    not self.third_person_verb(k + 1):
                 k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
                 continue
             if person and self._modifies_next_noun(k):
@@ -203,9 +204,10 @@ class People:
         if i < 1 or i >= s.n or not s.low[i].endswith("s") or s.low[i].endswith("ss"):
             return False
         before = i - 1
+        named_kin = s.low[before] in lx.KIN_NAMES and (before == 0 or s.low[before - 1] not in lx.DETERMINERS)
         if not self.is_person_noun(before) or s.lemma(before) != s.low[before] or \
-                s.index.knows(s.lemma(i)) or self.is_person_noun(i):
-            return False
+                s.index.knows(s.lemma(i)) or (self.is_person_noun(i) and not named_kin):
+            return False  # "mum cooks": a name, then its verb, though "cooks" are people too
         after = s.w[i + 1] if i + 1 < s.n else None
         return after is None or after.pos in ("DET", "ADP", "ADV", "PUNCT") or s.low[i + 1] in lx.DETERMINERS or (
             after.pos in ("NOUN", "PRON", "ADJ", "NUM") and s.verbless(i))  # "a visitor sips coffee"

@@ -168,3 +168,22 @@ def test_a_second_group_after_and_is_not_a_stop_of_the_first(worlds):
 def test_noticing_an_alarm_and_doing_nothing_else_is_leaving(worlds, world, prompt, intent):
     g, = read(worlds, world, prompt)
     assert g.intent == intent
+
+
+@pytest.mark.parametrize("world,prompt,who,location", [
+    ("residential", "Dad reads in the living room while mum cooks in the kitchen.", "mum", "kitchen"),
+    ("residential", "Grandma knits on the sofa while grandpa cooks in the kitchen.", "grandpa", "kitchen"),
+])
+def test_a_family_name_then_an_s_word_is_one_person_and_a_verb(worlds, world, prompt, who, location):
+    groups = read(worlds, world, prompt)
+    assert (groups[-1].who, groups[-1].count.value, groups[-1].location) == (who, 1, location)
+
+
+def test_a_number_before_the_is_a_time_not_a_count(worlds):
+    g, = read(worlds, "hospital", "At nine the porters come in through the main entrance and go to ward B.")
+    assert g.count.kind == "vague" and (g.start, g.destination) == ("main_entrance", "ward_b")
+
+
+def test_coming_in_through_a_door_starts_there(worlds):
+    g, = read(worlds, "hospital", "Two porters walk in through the main entrance and go to ward A.")
+    assert (g.start, g.destination) == ("main_entrance", "ward_a")
