@@ -9,7 +9,8 @@ Three figures, each with the load average (the machines are shared):
   made them before), timed from the interpreter's start; median of `--fresh` processes, wall and
   CPU seconds. Target <= 2 s.
 - warm reading: the median over a set of compound prompts (two and three groups, every count form,
-  robot clauses and reactions, places matched by meaning), spaCy loaded. Target <= 20 ms.
+  robot clauses and reactions, places matched by meaning), spaCy loaded, in wall and in this thread's
+  CPU milliseconds (the CPU figure is what a reading costs whatever the load). Target <= 20 ms.
 - the peer measured in the same run: spaCy parsing the same prompts alone, the floor the reader's
   own passes add to (`ratio` = reading / parse).
 
@@ -94,28 +95,33 @@ def main() -> None:
     for prompt in PROMPTS:
         read_prompt(prompt, world)  # warm: the place index, its vectors, first-call caches
     reading_ms: list[float] = []
+    reading_cpu_ms: list[float] = []  # this thread's CPU time: what the reading costs, whatever the load
     parse_ms: list[float] = []
     for _ in range(args.repeats):
         for k, prompt in enumerate(PROMPTS):
-            t = time.perf_counter()
+            t, c = time.perf_counter(), time.thread_time()
             read_prompt(prompt, world, seed=k + 1)  # a new seed: the reading's own caches do not help
             reading_ms.append((time.perf_counter() - t) * 1000)
+            reading_cpu_ms.append((time.thread_time() - c) * 1000)
             t = time.perf_counter()
             parser.parse(prompt)
             parse_ms.append((time.perf_counter() - t) * 1000)
     median, worst, floor = statistics.median(reading_ms), max(reading_ms), statistics.median(parse_ms)
+    median_cpu = statistics.median(reading_cpu_ms)
     load = os.getloadavg()
     print(f"prompts={len(PROMPTS)} repeats={args.repeats} world={args.world} fresh processes={args.fresh}")
     print(f"first reading in a fresh process: {first_wall:.2f} s wall, {first_cpu:.2f} s CPU "
           f"(target <= 2 s; torch imported: {torch})")
     print(f"first reading that needs meaning in a fresh process: {meaning_wall:.2f} s wall, {meaning_cpu:.2f} s CPU")
-    print(f"read_prompt warm: median {median:.1f} ms, max {worst:.1f} ms (target <= 20 ms)")
+    print(f"read_prompt warm: median {median:.1f} ms wall, {median_cpu:.1f} ms CPU, max {worst:.1f} ms wall "
+          f"(target <= 20 ms)")
     print(f"peer: spaCy parse alone: median {floor:.1f} ms")
     print(f"load average: before {load_before[0]:.2f}, after {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")
-    print(f"reading_ms={median:.2f} reading_max_ms={worst:.2f} parse_ms={floor:.2f} "
+    print(f"reading_ms={median:.2f} reading_cpu_ms={median_cpu:.2f} reading_max_ms={worst:.2f} parse_ms={floor:.2f} "
           f"ratio={median / floor if floor else float('inf'):.2f} first_s={first_wall:.2f} first_cpu_s={first_cpu:.2f} "
           f"meaning_first_s={meaning_wall:.2f} torch={torch} loadavg={load[0]:.2f} "
-          f"within_target={median <= 20.0 and first_wall <= 2.0}")
+          f"within_target={median <= 20.0 and first_wall <= 2.0} "
+          f"within_target_cpu={median_cpu <= 20.0 and first_cpu <= 2.0}")
 
 
 if __name__ == "__main__":
