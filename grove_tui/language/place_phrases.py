@@ -242,6 +242,8 @@ class PlacePhrases:
         owned = [e for e in self.s.index.owned_by(self.owner) if head in e.tokens or
                  (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
         mine = [e for e in owned if match is not None and e.name == match.name]
+        if len(owned) > 1 and not mine:
+            owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door
         if len(owned) != 1 and not mine:
             return None
         e = (mine or owned)[0]  # the words may already name it: then the owner decides a tie

@@ -81,7 +81,9 @@ class Sentence:
         """Whether the parser found no verb in word i's sentence: the small model tags some verbs as
         nouns when nothing else in the sentence is one ("a visitor sips coffee", "Mum and Dad nap")."""
         sentence = self.w[i].sentence
-        return not any(w.pos in ("VERB", "AUX") for w in self.w if w.sentence == sentence)
+        # a person word the parser took for the verb is no verb ("Grandma and grandpa nap": "grandpa")
+        return not any(w.pos in ("VERB", "AUX") and lemma(self.low[k]) not in lx.PERSON_NOUNS
+                       for k, w in enumerate(self.w) if w.sentence == sentence)
 
     def is_verb(self, i: int) -> bool:
         """A verb by the parser's tag, or, in a sentence where the parser found none, a form of a

@@ -187,3 +187,18 @@ def test_a_number_before_the_is_a_time_not_a_count(worlds):
 def test_coming_in_through_a_door_starts_there(worlds):
     g, = read(worlds, "hospital", "Two porters walk in through the main entrance and go to ward A.")
     assert (g.start, g.destination) == ("main_entrance", "ward_a")
+
+
+@pytest.mark.parametrize("prompt,start,location", [
+    ("The director hurries from her office to the café.", "director_office", None),
+    ("The curator chats with a guard in his office.", None, "curator_office"),
+])
+def test_a_person_s_own_room_is_the_one_named_after_their_kind(worlds, prompt, start, location):
+    g = read(worlds, "museum", prompt)[0]
+    assert (g.start, g.location) == (start, location)
+
+
+def test_two_family_names_joined_by_and_are_two_people_though_the_parser_calls_one_a_verb(worlds):
+    groups = read(worlds, "residential", "Grandpa and grandma read in the living room.")
+    assert [(g.who.lower(), g.count.value, g.location) for g in groups] == [
+        ("grandpa", 1, "living_room"), ("grandma", 1, "living_room")]
