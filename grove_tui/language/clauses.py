@@ -247,6 +247,7 @@ class Clauses:
         elif not s.after_determiner(i) and v in lx.OBJECT_VERBS:
             if nxt in lx.DETERMINERS or (nxt and s.index.knows(lemma(nxt))):
                 role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
+                        else "obj:seen" if v in lx.SEEN_OBJECT_VERBS
                         else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
                 place = self.places.phrase(i + 1, role, i)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):

@@ -33,9 +33,10 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
     newsagent, then waits in the waiting room")."""
     roles = Roles()
     said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
+    said = [p for p in places if p.match is not None and p.prep != "obj:seen"]
     for p in [*places, *scene_places]:
-        if p.match is None:
-            continue
+        if p.match is None or (p.prep == "obj:seen" and said):
+            continue  # "watch TV in the lounge": they are in the lounge
         name = p.match.name
         roles.read_from.setdefault(name, p)
         role = role_of(index, p, verb, verb_index, stationary, intent, p in scene_places)
@@ -88,6 +89,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return "start"  # "arrive by the side entrance": in from outside
     if prep == "obj:at":
         return "location" if stationary else "via"
+    if prep == "obj:seen":
+        return "location"
     # at / in / on / near / around ...
     if stationary:
         return "location"

@@ -202,3 +202,17 @@ def test_two_family_names_joined_by_and_are_two_people_though_the_parser_calls_o
     groups = read(worlds, "residential", "Grandpa and grandma read in the living room.")
     assert [(g.who.lower(), g.count.value, g.location) for g in groups] == [
         ("grandpa", 1, "living_room"), ("grandma", 1, "living_room")]
+
+
+@pytest.mark.parametrize("prompt,intent,location", [
+    ("Dad watches the television.", "wait", "tv"),
+    ("Two kids watch the robot in the hallway.", "robot", "hallway"),
+])
+def test_what_people_watch_is_where_they_are_unless_it_is_the_robot(worlds, prompt, intent, location):
+    g, = read(worlds, "residential", prompt)
+    assert (g.intent, g.location) == (intent, location)
+
+
+def test_what_people_watch_gives_way_to_the_room_they_are_in(worlds):
+    g, = read(worlds, "residential", "Three kids watch the telly in the living room.")
+    assert g.location == "living_room"
