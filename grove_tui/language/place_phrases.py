@@ -103,7 +103,14 @@ class PlacePhrases:
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas)
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its")
-        owned = self._owned(lemmas, match) if possessive and self.owner else None
+        # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
+        named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")
+                            and self.people.is_person_noun(x)), None)
+        named_entry = s.index.entry(match.name) if named_owner and match is not None else None
+        if named_entry is not None and named_owner in named_entry.tokens and lemmas and lemmas[-1] in named_entry.tokens:
+            named_owner = None  # "the women's toilet": the owner is part of the place's own name
+        owner = named_owner or (self.owner if possessive else None)
+        owned = self._owned(lemmas, match, owner) if owner else None
         if owned is not None:
             match = owned[0]
         if match is None and possessive:
@@ -231,16 +238,21 @@ class PlacePhrases:
                 f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
                 f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
 
-    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None) -> _Decided | None:
-        """"her office", "their room": of the places named like the phrase, the one that belongs to the
-        kind of person whose clause it is ("the director ... her office": the director's office)."""
-        assert self.owner is not None
+    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None, owner: str) -> _Decided | None:
+        """"her office", "their room", "the kids' bed": of the places named like the phrase, the one that
+        belongs to the kind of person whose clause it is ("the director ... her office": the director's
+        office), or a thing of that kind in a room of theirs ("mum ... her bed": the bed of the parents'
+        bedroom)."""
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
         if not content:
             return None
         head = content[-1]
-        owned = [e for e in self.s.index.owned_by(self.owner) if head in e.tokens or
-                 (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
+        theirs = self.s.index.owned_by(owner)
+        rooms = {e.name for e in theirs if e.kind == "zone"}
+        # a thing in a room of theirs first ("the parents' bed": the bed of their bedroom, not the bedroom)
+        owned = [e for e in self.s.index.entries if e.kind not in ("zone", "door") and e.zone in rooms
+                 and head in e.tokens and head not in lx.GENERIC_PLACE_HEADS]
+        owned = owned or [e for e in theirs if head in e.tokens or (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
         mine = [e for e in owned if match is not None and e.name == match.name]
         if len(owned) > 1 and not mine:
             owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door
@@ -248,7 +260,7 @@ class PlacePhrases:
             return None
         e = (mine or owned)[0]  # the words may already name it: then the owner decides a tie
         return (PlaceMatch(e.name, e.kind, e.zone, match.score if match is not None else 1.0, False), 0.8,
-                f"'{' '.join(lemmas)}' of a {self.owner}: {e.name}", ())
+                f"'{' '.join(lemmas)}' of a {owner}: {e.name}", ())
 
     def _words(self, j: int) -> tuple[list[str], int]:
         """The words of a place phrase from j, and the index after them."""
@@ -266,12 +278,13 @@ class PlacePhrases:
                 phrase.append(w)  # "check in counter a": a preposition inside a name the world has
                 j += 1
                 continue
+            if w in ("'s", "’s") or (w in ("'", "’") and phrase and phrase[-1].endswith("s") and
+                                     s.w[j].tag == "POS"):
+                j += 1  # "the parents' bed": the owner, then the thing
+                continue
             if s.is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
                     w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
-            if w in ("'s", "’s"):
-                j += 1
-                continue
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False

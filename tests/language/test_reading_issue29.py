@@ -216,3 +216,13 @@ def test_what_people_watch_is_where_they_are_unless_it_is_the_robot(worlds, prom
 def test_what_people_watch_gives_way_to_the_room_they_are_in(worlds):
     g, = read(worlds, "residential", "Three kids watch the telly in the living room.")
     assert g.location == "living_room"
+
+
+@pytest.mark.parametrize("prompt,location", [
+    ("The nanny sits on the parents' bed.", "double_bed"),
+    ("A toddler naps on the kids' bed.", "single_bed"),
+    ("Mum rests on her bed.", "double_bed"),
+])
+def test_a_thing_of_someone_s_is_the_one_in_their_room(worlds, prompt, location):
+    g, = read(worlds, "residential", prompt)
+    assert g.location == location
