@@ -23,7 +23,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
