@@ -15,7 +15,6 @@ import pytest
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
-from grove_tui.generation.pipeline import quantities_from_reading
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import fixed_system_message, pinned_cards, prepare_request
@@ -42,11 +41,10 @@ def _places(world):
 def build(world, preset_name, retriever, prompt):
     preset = load_preset(preset_name)
     reading = read_prompt(prompt, world, seed=0)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
-    request = prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                              retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for,
-                              documents_named=retriever.documents_named)
+    request = prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                              cards_for=retriever.cards_for, documents_named=retriever.documents_named)
     return preset, selection, request
 
 
@@ -119,6 +117,7 @@ def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_th
     assert fixed_system_message(load_preset("normal"), hospital, queuing) != a.messages[0]["content"]
 
 
+@pytest.mark.slow
 def test_vanilla_keeps_the_full_documents_and_world(retriever):
     hospital = load_world("hospital")
     _, _, request = build(hospital, "vanilla", retriever, "Ten patients queue at the pharmacy counter")
