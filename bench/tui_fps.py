@@ -76,7 +76,7 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
     from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
-    from grove_tui.bt.ports import parse_point_list
+    from grove_tui.bt.format.ports import parse_point_list
     from grove_tui.generation.waypoints import inject_waypoints
     from grove_tui.world import load_world
 
