@@ -123,6 +123,17 @@ def test_conversation_of_four_forms_a_circle_facing_the_centre(hall):
     assert sim.time - started == pytest.approx(10.0, abs=0.3)
     assert all(result == "done" for result in sim.tree_result)
 
+def test_friends_walking_together_to_a_circle_each_take_their_own_spot(hall):
+    # Three friends arrive as one walking group (group forces hold them together), along waypoints
+    # planned to the circle, at spots on every side of it: the circle must start, not stall with
+    # everyone jostling for the last waypoint and pulling each other back from their spots.
+    for waypoint in ("8.0,7.0", "10,4.2"):
+        for starts in ([(3, 2.0), (3.6, 2.5), (3, 3.0)], [(17, 10.0), (16.4, 10.5), (17, 9.5)],
+                       [(10, 1.5), (10.6, 1.8), (9.4, 1.8)]):
+            agents = [agent(i + 1, starts[i], group=2) for i in range(3)]
+            body = f'<Converse target="hall" waypoints="{waypoint}" duration="10"/>'  # centre (10, 6)
+            sim = simulate(hall, agents, [body] * 3)
+            assert run_until(sim, lambda: all(s == "talking" for s in sim.frame().status), 40.0), (waypoint, starts)
 
 # ---- group -------------------------------------------------------------------------------------
 

@@ -20,6 +20,7 @@ DOOR_PASS = 1.5  # metres beyond the door line an evacuee walks to; it is counte
 HUNAV_GOAL_TOLERANCE = 0.1  # IsGoalReached: goal radius + 0.1
 STEP_ASIDE = 1.2  # metres a served person steps sideways out of the line
 ASIDE_SPACING = 0.8  # metres between the spots served people step to
+CIRCLE_APPROACH = 2.0  # metres outside a conversation circle's rim at which its members leave their walking group
 GROUP_ID_BASE = 100000  # SFM group ids derived from agent ids, far from the scenario's own
 
 
@@ -428,7 +429,7 @@ class JoinGroup(AgentSyncAction):
 class Converse(AgentStatefulAction):
     """Conversation circle at the target: walk to the assigned spot, face the centre, talk once all arrived."""
 
-    __slots__ = ("conv", "spot", "ready", "interrupted", "group")
+    __slots__ = ("conv", "spot", "ready", "interrupted", "group", "near")
 
     def setup(self) -> None:
         super().setup()
@@ -437,6 +438,7 @@ class Converse(AgentStatefulAction):
         self.ready = False
         self.interrupted = False
         self.group = -1
+        self.near = False
 
     def on_start(self) -> int:
         sim, row = self.sim, self.row
@@ -448,6 +450,7 @@ class Converse(AgentStatefulAction):
         self.conv = sim.conversations.join(centre, tuple(sorted(rows)), row)
         self.spot = self.conv.spots[row]
         self.ready = False
+        self.near = False
         self.group = int(sim.crowd.group[row])
         waypoints = self.get_input("waypoints") or ()
         p = sim.pos[row]
@@ -456,8 +459,21 @@ class Converse(AgentStatefulAction):
         sim.status[row] = f"meeting at {self.get_input('target')}"
         return self.on_running()
 
+    def _approach(self) -> float:
+        """Within this of the centre the circle is the formation: friends walk there as a group, then each
+        takes their own spot (coherence would hold members bound for opposite sides of the circle back,
+        each pulling the others, and the circle would never start)."""
+        return self.conv.radius + CIRCLE_APPROACH
+
     def on_running(self) -> int:
         sim, row, conv = self.sim, self.row, self.conv
+        if not self.near and math.dist(sim.pos[row], conv.centre) <= self._approach():
+            # The waypoints lead to the circle, not to this member's spot: three friends each trying to
+            # touch the same last waypoint jostle for it; from here each walks to their own spot.
+            self.near = True
+            sim.crowd.set_group(row, -1)
+            if not self.ready:
+                _go(sim, row, sim.plan(sim.pos[row], self.spot), 0.1)
         if not self.ready and math.dist(sim.pos[row], self.spot) <= ARRIVAL_TOLERANCE:
             self.ready = True
             # group coherence would pull a standing circle into its centre; the circle is the formation
@@ -498,6 +514,9 @@ class Converse(AgentStatefulAction):
     def quiet_spec(self):
         if self.ready:
             return None
+        if not self.near:
+            centre, reach = self.conv.centre, self._approach()
+            return (centre[0], centre[1], reach * reach, math.inf)
         return (self.spot[0], self.spot[1], ARRIVAL_TOLERANCE * ARRIVAL_TOLERANCE, math.inf)
 
     def poll(self) -> bool:
@@ -506,6 +525,9 @@ class Converse(AgentStatefulAction):
         sim, row, spot = self.sim, self.row, self.spot
         off = math.hypot(sim.px[row] - spot[0], sim.py[row] - spot[1])
         if not self.ready:
+            if not self.near:
+                centre = self.conv.centre
+                return math.hypot(sim.px[row] - centre[0], sim.py[row] - centre[1]) > self._approach()
             return off > ARRIVAL_TOLERANCE
         mode = sim.crowd.mode[row]
         if (off > 0.2 and mode == MODE_FACE) or (off <= 0.1 and mode == MODE_GOALS):
