@@ -161,6 +161,21 @@ def test_group_walks_together_to_the_door(hall):
     assert np.all(np.hypot(*(sim.crowd.pos[:4] - door).T) < 1.6)
 
 
+def test_a_walker_stuck_behind_an_obstacle_walks_round_it(hall):
+    # A stale route straight through the fountain (as after being pushed off the planned line): the
+    # social forces hold the walker against it for ever unless it replans from where it stands.
+    sim = simulate(hall, [agent(1, (10, 7.5))], ['<GoTo target="hall" x="10" y="11.5" waypoints="10,11.5" tolerance="0.3"/>'])
+    assert run_until(sim, lambda: sim.tree_result[0] == "done", 40.0), sim.crowd.pos[0]
+
+
+def test_a_walking_group_with_a_member_stuck_behind_an_obstacle_arrives(hall):
+    bodies = [f'<Sequence><JoinGroup/><GoTo target="hall" x="{x}" y="11" waypoints="{wp}" tolerance="0.3"/></Sequence>'
+              for x, wp in ((17.5, "10,11.5"), (18, "18,11"), (18.5, "18.5,11"))]
+    group = [agent(1, (10, 7.5), group=4), agent(2, (8.2, 11.3), group=4), agent(3, (7.4, 11.3), group=4)]
+    sim = simulate(hall, group, bodies)
+    assert run_until(sim, lambda: all(r == "done" for r in sim.tree_result), 60.0), sim.crowd.pos[:3]
+
+
 # ---- reactions to the robot --------------------------------------------------------------------
 
 @pytest.mark.parametrize("behavior", ["Surprised", "Scared", "Curious", "Threatening"])
