@@ -1,13 +1,20 @@
 """A dense evacuation of the hospital: is everyone either inside or counted? (run by hand, not a test)
 
     PYTHONPATH=. python bench/evacuation.py [--agents 500] [--seconds 600] [--out DIR]
-    PYTHONPATH=. python bench/evacuation.py --plan [--agents 40]
+    PYTHONPATH=. python bench/evacuation.py --plan [--agents 40] [--baseline CHECKOUT]
 
 --plan times only the planning of an evacuation of --agents people spread over each shipped world
 (the emergency preset's post-processing, with each person's exit, and its planning stage, with the
 groups' velocity fields and the robot), three times in one process: the first pays for loading the
 compiled kernels and the world's door graph (from the data dir, or building it), the others are what
-the app pays for a new sentence. CPU and wall seconds; issue 32 asks under 1 s.
+the app pays for a new sentence. CPU and wall seconds; issue 32 asks under 1 s. --baseline CHECKOUT
+times the same planning with another checkout's code (a subprocess importing its grove_tui), in the
+same run, on the worlds both have.
+
+Issue 32, 2026-11-28 11:31, load average 7.5-8.6, `--plan --agents 40 --baseline <checkout of main at
+2047930>` at crowd d373350: a new sentence's planning (warm, the worst world) 1.60 s CPU before, 0.22 s
+after (airport; hospital 1.09-1.10 -> 0.18 s, wall 2.85-3.19 -> 0.37-0.39 s); the first in a process,
+which also loads the kernels and the door graph, 2.06 -> 0.95 s CPU (3.2 s wall at that load).
 
 Spreads --agents people over the hospital's zones (by free area, at least 0.6 m apart, never within
 1.2 m of an exit), sends each zone's people to its nearest exit along that exit's velocity field
@@ -26,21 +33,29 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.bt.leaves.grove import EXIT_RADIUS  # noqa: E402
-from grove_tui.bt.xml import parse_tree_text  # noqa: E402
-from grove_tui.generation.postprocess import FreeSpace  # noqa: E402
+
+def _code_root() -> str:
+    """The checkout whose grove_tui this run imports: this one, or --code DIR (how --baseline runs another)."""
+    if "--code" in sys.argv[:-1]:
+        return str(Path(sys.argv[sys.argv.index("--code") + 1]).resolve())
+    return str(Path(__file__).resolve().parents[1])
+
+
+sys.path.insert(0, _code_root())
+
 from grove_tui.navigation.grid import build_grid  # noqa: E402
 from grove_tui.navigation.theta_star import ThetaStarPlanner  # noqa: E402
-from grove_tui.navigation.velocity_field import build_velocity_field  # noqa: E402
-from grove_tui.scenario.model import AgentSpec  # noqa: E402
-from grove_tui.simulation.simulation import Simulation  # noqa: E402
 from grove_tui.world import load_world  # noqa: E402
+
+if TYPE_CHECKING:
+    from grove_tui.scenario.model import AgentSpec
+    from grove_tui.simulation.simulation import Simulation
 
 MEASURE_METRICS = """
 import resource, sys
@@ -53,6 +68,13 @@ print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024, report.crowd["a
 
 
 def build(agents: int, seed: int) -> tuple[Simulation, list[AgentSpec], list[tuple[float, float]]]:
+    # imported here, not at the top: --plan (and its --baseline) needs none of these modules
+    from grove_tui.bt.xml import parse_tree_text
+    from grove_tui.generation.postprocess import FreeSpace
+    from grove_tui.navigation.velocity_field import build_velocity_field
+    from grove_tui.scenario.model import AgentSpec
+    from grove_tui.simulation.simulation import Simulation
+
     world = load_world("hospital")
     grid = build_grid(world, 0.1)
     planner = ThetaStarPlanner(grid)
@@ -112,14 +134,15 @@ def plan_evacuation(world_name: str, agents: int, seed: int) -> tuple[float, flo
     return time.process_time() - cpu, time.perf_counter() - wall, len(plan.fields)
 
 
-def plan_only(agents: int) -> None:
+def plan_only(agents: int, worlds: list[str] | None = None) -> None:
     from grove_tui.world import list_worlds
 
     import os
 
-    print(f"# load average {os.getloadavg()[0]:.1f}; {agents} people spread over each world, emergency preset")
+    print(f"# {_code_root()}: load average {os.getloadavg()[0]:.1f}; {agents} people spread over each world, "
+          f"emergency preset", flush=True)
     worst_warm = 0.0
-    for name in list_worlds():
+    for name in worlds or list_worlds():
         runs = [plan_evacuation(name, agents, seed) for seed in range(3)]
         worst_warm = max(worst_warm, *(cpu for cpu, _wall, _f in runs[1:]))
         print(f"{name:<12} fields {runs[0][2]}  first {runs[0][0]:.2f} s CPU / {runs[0][1]:.2f} s wall   "
@@ -134,10 +157,25 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=600.0)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--out", type=Path, default=None, help="folder for trajectories.csv; then measure metrics")
+    parser.add_argument("--baseline", type=Path, default=None,
+                        help="with --plan: another checkout whose code plans the same evacuations, in the same run")
+    parser.add_argument("--code", type=Path, default=None, help=argparse.SUPPRESS)  # read by _code_root
+    parser.add_argument("--worlds", nargs="+", default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.plan:
-        plan_only(args.agents or 40)
+        worlds = args.worlds
+        if args.baseline is not None:
+            from grove_tui.world import list_worlds
+
+            theirs = subprocess.run([sys.executable, "-c", "import sys; sys.path.insert(0, sys.argv[1]); "
+                                     "from grove_tui.world import list_worlds; print(' '.join(list_worlds()))",
+                                     str(args.baseline)], capture_output=True, text=True, check=True).stdout.split()
+            worlds = [name for name in list_worlds() if name in theirs]
+            subprocess.run([sys.executable, __file__, "--plan", "--agents", str(args.agents or 40),
+                            "--code", str(args.baseline), "--worlds", *worlds], check=True)
+        plan_only(args.agents or 40, worlds)
         return
+    from grove_tui.bt.leaves.grove import EXIT_RADIUS
     args.agents = args.agents or 500
     started = time.perf_counter()
     sim, specs, exit_points = build(args.agents, args.seed)

@@ -15,6 +15,19 @@ occupied cell under our conservative line-of-sight rule. Note: pathfinding 1.0.2
 keeps a point whenever the line from the anchor to the next point is clear, so it removes almost
 nothing and "A*+smooth" is about as long as the raw 8-connected A* path.
 The last line holds the headline figures as key=value pairs.
+
+Issue 32, before and after in one session (2026-11-28 11:10-11:28, 2 cores, load average 6-11): this
+bench at crowd d17ffad (after), then a checkout of main at 2047930 running its own copy (before, ALT
+landmarks). Per query, CPU ms (wall ms is 2-4x at that load):
+
+    grid                 median        p90           max           under 20 ms   preparation (wall)
+    1000 x 1000          12.5 -> 5.0   31.2 -> 10.2  49.9 -> 25.8  75 -> 95 %    41.3 s -> 0.87 s
+    hospital at 0.05 m   17.4 -> 7.6   35.7 -> 17.0  65.6 -> 24.4  70 -> 90 %    25.8 s -> 0.24 s
+
+Wall p90 108.9 -> 44.3 ms and 110.8 -> 65.3 ms. Lengths, same queries: after / before per query mean
++0.46 % (grid) and +0.31 % (hospital), worst +1.3 % and +2.5 % (one hospital query of 20: the block
+guide's slack is not a lower bound); against the exact search worst 1.01 and 1.02. Through the
+hospital's door graph: p90 3.6 ms, mean 1.01 of the exact search, worst 1.04.
 """
 
 from __future__ import annotations

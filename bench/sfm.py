@@ -8,8 +8,29 @@ agents times steps. Each simulator runs at its own step: GROVE 0.05 s, JuPedSim 
 default), PySocialForce 0.4 s (the step it really uses: its [scene] config is ignored), so both
 agent-steps per second and simulated seconds per wall second are printed.
 
-Run by hand (not a test):  python bench/sfm.py [--sizes 100 1000 10000] [--repeat 1]
+Run by hand (not a test):  python bench/sfm.py [--sizes 100 1000 10000] [--repeat 1] [--baseline CHECKOUT]
+--baseline runs GROVE's crowd from another checkout (a subprocess importing its grove_tui) on the same
+scenario right after this one's, size by size: before and after in the same run.
 Needs `pip install pysocialforce==1.1.2 jupedsim==1.4.2`; a missing peer is reported and skipped.
+
+Issue 32, before and after in one session (2026-11-28 11:15-11:21, 2 cores, load average 11 from other
+engineers' work): `python bench/sfm.py --sizes 1000 10000` in a checkout of main at 2047930 (before, its
+own copy of this bench) between two runs at crowd d17ffad (after). Agent-steps per wall second / per
+CPU-second; JuPedSim 1.4.2 ran in each run and moved by under 10 %:
+
+    N       GROVE before     GROVE after              JuPedSim            after / JuPedSim per CPU-s
+    1,000   141k / 553k      279k-353k / 1.32M-1.40M   92k-97k / 390k-399k  3.3x-3.6x (before 1.4x)
+    10,000  176k / 901k      481k-551k / 1.91M-2.19M   112k-119k / 496k-517k 3.8x-4.2x (before 1.8x)
+
+In one run, 11:44-11:46 at load average 7.5-9.1, `python bench/sfm.py --sizes 1000 10000 --no-profile
+--baseline <checkout of 2047930>` (crowd at dbaecd8): 1,000 agents 465k / 1.40M after, 203k / 556k before,
+JuPedSim 118k / 403k (after 3.5x JuPedSim per CPU-second, before 1.4x); 10,000 agents 614k / 1.98M after,
+236k / 920k before, JuPedSim 119k / 489k (4.1x, before 1.9x).
+
+Top three costs after (share of GROVE's CPU time, one thread): the pair search 27-31 %, the pair terms
+and sums 20-21 %, the per-agent pass (drive, walls, groups, move) 19 %. The wall-clock goals (2M
+agent-steps/s at 10,000 on 2 quiet cores, 1M with one other process busy) could not be measured: the
+load average never fell below 6 in the session.
 """
 
 from __future__ import annotations
@@ -29,7 +50,16 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+
+def _code_root() -> str:
+    """The checkout whose grove_tui this run imports: this one, or --code DIR (how --baseline runs another)."""
+    if "--code" in sys.argv[:-1]:
+        return str(Path(sys.argv[sys.argv.index("--code") + 1]).resolve())
+    return str(Path(__file__).resolve().parents[1])
+
+
+sys.path.insert(0, _code_root())
 
 from grove_tui.crowd.crowd import Crowd  # noqa: E402
 
@@ -150,7 +180,8 @@ def warm_up_grove() -> None:
     big.parallel_threshold = 0
     big.add_agent((5.0, 5.0))
     big.step(1)
-    big.profile(1)
+    if hasattr(big, "profile"):  # a --baseline checkout may predate Crowd.profile
+        big.profile(1)
 
 
 @contextlib.contextmanager
@@ -249,6 +280,19 @@ def available(module: str) -> bool:
         return False
 
 
+def run_baseline(checkout: Path, n: int, steps: int, repeat: int) -> Result:
+    """GROVE's crowd from another checkout on the same scenario, in a subprocess importing its grove_tui."""
+    import subprocess
+
+    done = subprocess.run([sys.executable, __file__, "--code", str(checkout), "--grove-only", str(n), str(steps),
+                           "--repeat", str(repeat)], capture_output=True, text=True)
+    if done.returncode != 0:
+        raise SystemExit(f"the baseline {checkout} failed at N={n}:\n{done.stderr[-2000:]}")
+    values = dict(item.split("=") for item in done.stdout.split()[-5:])
+    return Result("baseline", n, int(values["steps"]), int(values["agent_steps"]), float(values["wall_s"]),
+                  float(values["sim_s"]), float(values["cpu_s"]))
+
+
 def best_of(repeat: int, fn, *args) -> Result:
     results = [fn(*args) for _ in range(repeat)]
     return max(results, key=lambda r: r.rate)
@@ -259,13 +303,25 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--sizes", type=int, nargs="+", default=[100, 1000, 10000])
     parser.add_argument("--repeat", type=int, default=1, help="runs per measurement; the best is kept")
     parser.add_argument("--no-profile", action="store_true", help="skip naming GROVE's top three costs")
+    parser.add_argument("--baseline", type=Path, default=None,
+                        help="another checkout whose crowd runs the same scenarios in the same run (before/after)")
+    parser.add_argument("--code", type=Path, default=None, help=argparse.SUPPRESS)  # read by _code_root
+    parser.add_argument("--grove-only", type=int, nargs=2, default=None, help=argparse.SUPPRESS)  # N steps
     args = parser.parse_args(argv)
+    if args.grove_only:
+        warm_up_grove()
+        n, steps = args.grove_only
+        r = best_of(args.repeat, run_grove, make_scenario(n), steps)
+        print(f"steps={r.steps} agent_steps={r.agent_steps} wall_s={r.wall_s} sim_s={r.sim_s} cpu_s={r.cpu_s}")
+        return 0
 
     import numba
 
     print(f"# {platform.processor() or platform.machine()}, {os.cpu_count()} cpus, Python {platform.python_version()}, "
           f"numba {numba.__version__} ({numba.config.NUMBA_NUM_THREADS} threads), numpy {np.__version__}")
     print(f"# load average before the run: {os.getloadavg()[0]:.1f} (other jobs on these cores lower every wall figure)")
+    if args.baseline is not None:
+        print(f"# baseline: GROVE's crowd from {args.baseline.resolve()}, right after this checkout's at each size")
     print(f"# scenario: square room, 4 doors of {DOOR_WIDTH} m, {DENSITY} agents/m^2, v0 {SPEED} m/s, r {RADIUS} m; "
           f"GROVE and JuPedSim simulate the same window (10 s, 4 s above 2,000 agents)")
     have_psf = available("pysocialforce")
@@ -292,13 +348,16 @@ def main(argv: list[str] | None = None) -> int:
             # PySocialForce takes seconds per step at 1,000 agents: as many steps as fit the window or ~4 s.
             psf_steps = max(2, min(round(window / 0.4), 4_000 // max(n, 1)))
             runs.append(("pysocialforce", run_pysocialforce, psf_steps, 0.4))
+        if args.baseline is not None:
+            runs.insert(1, ("baseline", None, round(window / 0.05), 0.05))
         for name, fn, steps, dt in runs:
-            result = best_of(args.repeat, fn, sc, steps)
+            result = (run_baseline(args.baseline, n, steps, args.repeat) if fn is None
+                      else best_of(args.repeat, fn, sc, steps))
             table[(name, n)] = result
             print(f"{name:<14}{n:>7}{dt:>6}{result.steps:>7}{result.wall_s:>9.2f}{result.rate:>15,.0f}"
                   f"{result.realtime:>14.1f}{result.cpu_rate:>13,.0f}", flush=True)
         grove = table[("grove", n)]
-        for peer in ("jupedsim", "pysocialforce"):
+        for peer in ("baseline", "jupedsim", "pysocialforce"):
             if (peer, n) in table:
                 other = table[(peer, n)]
                 print(f"  grove / {peer} at N={n}: {grove.cpu_rate / other.cpu_rate:.1f}x agent-steps per CPU-second, "

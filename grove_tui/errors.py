@@ -124,6 +124,27 @@ class PromptError(BadInputError):
     hint = "Rephrase the prompt with places of this world and fewer people."
 
 
+class EditError(BadInputError):
+    """A follow-up sentence asks for no change the scenario can make, or for one it cannot (nobody left)."""
+
+    title = "Follow-up not applied"
+    hint = ('Say what to add, change or remove: "add two guards at the entrance", "the visitors walk '
+            'slowly", "remove the cleaner", "the robot waits at reception", "no robot".')
+
+
+class AmbiguousEditError(EditError):
+    """A follow-up names a group that could be several ("the nurse" with two nurse groups).
+
+    `choices`: per ambiguous phrase, the candidate groups as (group index, description)."""
+
+    title = "Which group?"
+
+    def __init__(self, message: str = "", *, choices: tuple[tuple[str, tuple[tuple[int, str], ...]], ...] = (),
+                 hint: str | None = None) -> None:
+        super().__init__(message, hint=hint)
+        self.choices = choices
+
+
 class ScenarioError(BadInputError):
     """A scenario file is malformed; the message names the file and the key."""
 

@@ -247,3 +247,22 @@ def retriever():
     from grove_tui.generation.retrieval import NodeRetriever
 
     return NodeRetriever()
+
+
+# ---- services ------------------------------------------------------------------------------------
+
+
+@pytest.fixture()
+def shared_index(monkeypatch):
+    """The retrieval index is built once per machine: reuse the suite's (GROVE_TEST_CACHE_DIR) when it has one."""
+    if os.environ.get("GROVE_TEST_CACHE_DIR"):
+        monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
+
+
+@pytest.fixture(scope="module")
+def session():
+    """A GroveSession for a module's tests, closed after them."""
+    from grove_tui.services.session import GroveSession
+
+    with GroveSession() as s:
+        yield s

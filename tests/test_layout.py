@@ -39,7 +39,8 @@ def fixture_definitions(root: Path = TESTS) -> dict[str, list[str]]:
         for node in ast.walk(tree):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and any(
                     _is_fixture(d) for d in node.decorator_list):
-                found[_fixture_name(node)].append(f"{path.relative_to(REPO)}:{node.lineno}")
+                where = path.relative_to(REPO if path.is_relative_to(REPO) else root)
+                found[_fixture_name(node)].append(f"{where}:{node.lineno}")
     return dict(found)
 
 

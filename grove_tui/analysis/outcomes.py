@@ -38,7 +38,6 @@ from grove_tui.scenario.report import (
     UNCHECKED,
     Claim,
     GroundingReport,
-    GroupGrounding,
     RobotGrounding,
     RunCheck,
 )
@@ -218,8 +217,7 @@ class OutcomeChecker:
         groups = []
         for gi, group in enumerate(self.planned.groups):
             claims = tuple(checked.get((gi, ci), _unprobed(c)) for ci, c in enumerate(group.claims))
-            groups.append(GroupGrounding(group.who, group.label, claims, group.members, group.added, group.unsure,
-                                         group.edit))
+            groups.append(replace(group, claims=claims))
         robot = self.planned.robot
         if robot is not None:
             robot = RobotGrounding(robot.task, robot.text,

@@ -21,6 +21,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "rag": ("grove_tui.cli.rag:rag", "Node database: build the index, query it, measure recall."),
     "models": ("grove_tui.cli.models:models", "Local GGUF models: list what is found, pull Qwen3."),
     "generate": ("grove_tui.cli.generate:generate", "Generate a scenario bundle from a prompt (--no-ui)."),
+    "refine": ("grove_tui.cli.refine:refine", "Edit a bundle by a follow-up sentence (--out NEW or --in-place)."),
     "batch": ("grove_tui.cli.generate:batch", "Generate many scenarios from a JSONL file, loading models once."),
     "dataset": ("grove_tui.cli.dataset:dataset", "Datasets written by `grove batch`: print an index's totals."),
     "simulate": ("grove_tui.cli.generate:simulate", "Simulate a bundle and write its trajectories."),

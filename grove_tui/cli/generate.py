@@ -244,7 +244,7 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
     """Generate many scenarios from a JSONL file, loading the models once (per Ray worker with --ray).
 
     Each line: {"world": ..., "preset": ..., "prompt": ..., "seed": 0, "name": "optional-dir-name",
-    "simulate": optional seconds, "variations": optional N}. Every line is checked before any job runs:
+    "simulate": optional seconds, "variations": optional N, "refine": optional ["follow-up", ...]}. Every line is checked before any job runs:
     bad lines (and lines whose name another line already uses) are reported with their line numbers and
     skipped, the good ones run. A failed job is recorded (batch-state.jsonl: message and exit code) and
     the batch goes on; --out/dataset.sqlite (or .parquet) indexes every scenario. A progress bar shows

@@ -32,6 +32,7 @@ def rimea(model: str, tests: tuple[int, ...], jupedsim: bool) -> None:
     rows = run_rimea(model, tests or tuple(TESTS), jupedsim=version is not None)
     click.echo(f"RiMEA tests, model {model}, dt 0.05 s"
                + (f"; JuPedSim {version} SocialForceModel at dt 0.01 s beside the building tests" if version
+                  else "; no JuPedSim column (--no-jupedsim)" if not jupedsim
                   else "; JuPedSim not installed (./install.sh bench adds it for a column beside GROVE)"))
     header = f"{'test':<5} {'what':<40} {'measured':<50} {'criterion':<58} result"
     if version:

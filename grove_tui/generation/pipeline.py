@@ -27,13 +27,13 @@ from grove_tui.bt.xml import BTError, parse_tree_text
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
-from grove_tui.generation.draft import Draft
+from grove_tui.generation.draft import Draft, node_to_dict
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.quantities import Quantity, extract_quantities
-from grove_tui.language.reading import Count, PromptReading, effective_counts, read_prompt
+from grove_tui.language.reading import Count, GroupReading, PromptReading, effective_counts, read_prompt
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
@@ -128,6 +128,22 @@ class GenerationResult:
     inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
 
 
+@dataclass(frozen=True)
+class Drafted:
+    """What the rois, retrieval and synthesis stages give post-processing (GenerationPipeline.draft)."""
+
+    reading: PromptReading
+    quantities: tuple[Quantity, ...]
+    selection: Any  # rois.RoISelection
+    retrieved: tuple[Any, ...]
+    request: Any  # synthesis.SynthesisRequest
+    synthesis: Any  # synthesis.SynthesisResult
+
+
+def _no_event(event: Event) -> None:
+    """The event sink of a caller that listens to nothing."""
+
+
 def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
     """The head counts of a reading in the older Quantity form (population checks, the report's
     "quantities"): one per group with people of its own, spans located in the prompt."""
@@ -147,7 +163,35 @@ def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
     return out
 
 
-class _StageClock:
+def group_records(groups: Sequence[Any], reading: PromptReading | None, asked_by: int = 0) -> list[dict[str, Any]]:
+    """generation.json's "groups": per post-processed group its label, count, spawn, members and field,
+    and what a refinement needs to edit it without the model (generation/refine.py): the reading it
+    realises (its count the group's own people), its tree before ids and points (draft form), and the
+    sentence that asked for it (0: the first)."""
+    records = []
+    for g in groups:
+        record: dict[str, Any] = {"label": g.label, "count": g.count, "spawn": g.spawn, "members": list(g.member_ids),
+                                  "field": g.field_id, "behavior": g.behavior}
+        if g.spawn_zones:
+            record["spawn_zones"] = dict(g.spawn_zones)
+        index = getattr(g, "reading_index", None)
+        if reading is not None and index is not None and 0 <= index < len(reading.groups):
+            record["reading"] = own_reading(reading.groups[index], g.count).to_dict()
+        record["tree"] = node_to_dict(g.tree)
+        record["asked_by"] = asked_by
+        records.append(record)
+    return records
+
+
+def own_reading(group: GroupReading, count: int) -> GroupReading:
+    """A reading group as the scenario's group realises it: its own people ("one of them" taken out of
+    its parent), no relation to the other groups of its sentence."""
+    c = group.count
+    own = c if c.value == count else Count("exact", count, count, count)
+    return replace(group, count=own, relation=None)
+
+
+class StageClock:
     """Times stages into `stages`, emits their events and checks `cancel` before each one starts."""
 
     def __init__(self, emit: Callable[[Event], None], cancel: threading.Event | None,
@@ -212,6 +256,13 @@ class GenerationPipeline:
             self._grid = build_grid(self.world, resolution=self.resolution, inflation=self.preset.planner.inflation)
         return self._grid
 
+    def adopt_grid(self, grid: OccupancyGrid | None, resolution: float) -> None:
+        """Plan on a scenario's own grid (a re-plan or refinement of it), when this pipeline has built
+        none yet and the scenario was planned at this pipeline's resolution: the same world and preset
+        give the same grid, so it is not built again."""
+        if self._grid is None and grid is not None and resolution == self.resolution:
+            self._grid = grid
+
     @property
     def planner(self) -> ThetaStarPlanner:
         if self._planner is None:
@@ -220,7 +271,7 @@ class GenerationPipeline:
 
     def run(self, prompt: str, seed: int = 0, on_event: Callable[[Event], None] | None = None,
             cancel: threading.Event | None = None) -> GenerationResult:
-        emit = on_event or (lambda event: None)
+        emit = on_event or _no_event
         prompt = " ".join((prompt or "").split())
         if not prompt:
             raise PromptError("the prompt is empty: describe the people and what they do")
@@ -228,40 +279,12 @@ class GenerationPipeline:
             raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
         preset, world = self.preset, self.world
         stages: dict[str, dict[str, Any]] = {}
-        clock = _StageClock(emit, cancel, stages)
+        clock = StageClock(emit, cancel, stages)
         started = time.perf_counter()
 
-        t0 = clock.begin("rois")
-        quantities = extract_quantities(prompt)
-        check_stated_counts(prompt, quantities)  # no words, negative or zero counts: refused before reading
-        reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
-        quantities = quantities_from_reading(reading)
-        selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
-        roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
-        if self.llm_roi is not None and preset.guided:
-            selection, *spent = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
-            roi_tokens = tuple(spent)
-        check_population(world, self.grid, preset, selection, quantities)
-        clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
-
-        t0 = clock.begin("retrieval")
-        if preset.retrieval_filter is not None and preset.retrieval_k > 0:
-            retrieved = self.retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
-        else:
-            retrieved = []
-        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
-                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None),
-                                  documents_named=getattr(self.retriever, "documents_named", None))
-        clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
-
-        t0 = clock.begin("synthesis")
-        on_token = (lambda text: emit(TokenStreamed("synthesis", text))) if on_event else None
-        on_attempt = (lambda attempt, reason: emit(AttemptStarted("synthesis", attempt, reason))) if on_event else None
-        synthesis = synthesize(self.llm_bt, request, preset, seed, on_token=on_token, cancel=cancel,
-                               max_tokens=self.max_tokens, on_attempt=on_attempt)
-        clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
-                  synthesis.prompt_tokens, synthesis.completion_tokens)
-
+        drafted = self.draft(prompt, seed, clock, on_event, cancel)
+        reading, selection, retrieved = drafted.reading, drafted.selection, drafted.retrieved
+        request, synthesis, quantities = drafted.request, drafted.synthesis, list(drafted.quantities)
         inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names), reading)
         post, plan = self._plan_stages(inputs, seed, clock, cancel)
 
@@ -286,6 +309,50 @@ class GenerationPipeline:
         }
         return self._assemble(inputs, seed, models, post, plan, report)
 
+    def draft(self, prompt: str, seed: int, clock: StageClock, on_event: Callable[[Event], None] | None,
+              cancel: threading.Event | None, reading: PromptReading | None = None,
+              query: str | None = None, documents: int | None = None) -> Drafted:
+        """The model's draft for a sentence: the rois (with the reading), retrieval and synthesis stages.
+
+        `run` asks it for the whole sentence, read here; a refinement (generation/refine.py) for the
+        groups a follow-up adds or changes, giving their `reading` alone, so the model writes only those,
+        with its own retrieval `query` and at most `documents` node documents (fewer groups need fewer,
+        and every card is prompt the model must read)."""
+        preset, world = self.preset, self.world
+        emit = on_event or _no_event
+        t0 = clock.begin("rois")
+        if reading is None:
+            check_stated_counts(prompt, extract_quantities(prompt))  # no words, negative or zero counts: refused
+            reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
+        quantities = quantities_from_reading(reading)
+        selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
+        roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
+        if self.llm_roi is not None and preset.guided:
+            selection, *spent = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
+            roi_tokens = tuple(spent)
+        check_population(world, self.grid, preset, selection, quantities)
+        clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
+
+        t0 = clock.begin("retrieval")
+        k = preset.retrieval_k if documents is None else min(preset.retrieval_k, documents)
+        if preset.retrieval_filter is not None and k > 0:
+            retrieved = self.retriever.retrieve(query or prompt, preset.retrieval_filter, k=k)
+        else:
+            retrieved = []
+        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
+                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None),
+                                  documents_named=getattr(self.retriever, "documents_named", None))
+        clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
+
+        t0 = clock.begin("synthesis")
+        on_token = (lambda text: emit(TokenStreamed("synthesis", text))) if on_event else None
+        on_attempt = (lambda attempt, reason: emit(AttemptStarted("synthesis", attempt, reason))) if on_event else None
+        synthesis = synthesize(self.llm_bt, request, preset, seed, on_token=on_token, cancel=cancel,
+                               max_tokens=self.max_tokens, on_attempt=on_attempt)
+        clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
+                  synthesis.prompt_tokens, synthesis.completion_tokens)
+        return Drafted(reading, tuple(quantities), selection, tuple(retrieved), request, synthesis)
+
     def replan(self, result: GenerationResult, counts: Mapping[int, int], seed: int | None = None,
                on_event: Callable[[Event], None] | None = None,
                cancel: threading.Event | None = None) -> GenerationResult:
@@ -307,14 +374,13 @@ class GenerationPipeline:
         groups = list(result.report.get("groups", ()))
         edits = self._check_counts(groups, counts)
         seed = int(result.scenario.seed if seed is None else seed)
-        if self._grid is None and result.grid is not None and result.scenario.resolution == self.resolution:
-            self._grid = result.grid  # the same world and preset: the grid the run built
+        self.adopt_grid(result.grid, result.scenario.resolution)  # the same world and preset: the run's grid
         edited = inputs.with_counts(counts)
         check_population(self.world, self.grid, self.preset, edited.selection, edited.quantities)
 
         stages = {k: dict(v) for k, v in result.report.get("stages", {}).items()}
         previous = sum(stages.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
-        clock = _StageClock(on_event or (lambda event: None), cancel, stages)
+        clock = StageClock(on_event or (lambda event: None), cancel, stages)
         post, plan = self._plan_stages(edited, seed, clock, cancel)
         for i, count in counts.items():
             if post.groups[i].count != count:  # reconciliation must keep group order; refuse silently wrong counts
@@ -355,7 +421,7 @@ class GenerationPipeline:
             edits.append((index, label, int(groups[index]["count"]), count))
         return [edit[1:] for edit in sorted(edits)]
 
-    def _plan_stages(self, inputs: PlanInputs, seed: int, clock: _StageClock,
+    def _plan_stages(self, inputs: PlanInputs, seed: int, clock: StageClock,
                      cancel: threading.Event | None) -> tuple[PostProcessed, OperationalPlan]:
         """The post-processing and planning stages, shared by `run` and `replan`."""
         world, preset, grid = self.world, self.preset, self.grid
@@ -384,9 +450,7 @@ class GenerationPipeline:
             models=models, agents=tuple(plan.agents), robot=plan.robot,
             fields={fid: f"fields/{fid}.npz" for fid in sorted(plan.fields)}, resolution=self.resolution)
         report = dict(report)
-        report["groups"] = [{"label": g.label, "count": g.count, "spawn": g.spawn, "members": g.member_ids,
-                             "field": g.field_id, "behavior": g.behavior}
-                            | ({"spawn_zones": dict(g.spawn_zones)} if g.spawn_zones else {}) for g in post.groups]
+        report["groups"] = group_records(post.groups, inputs.reading)
         report["exit"] = post.exit
         report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes

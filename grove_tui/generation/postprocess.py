@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -567,6 +567,11 @@ class FreeSpace:
         self._cells[zone_name] = pts
         return pts
 
+    def reserve(self, key: str, points: Sequence[Point]) -> None:
+        """Points later samples with `key` keep their spacing from, as if sampled before (people a
+        refinement keeps)."""
+        self._taken.setdefault(key, []).extend((float(p[0]), float(p[1])) for p in points)
+
     def clearance(self, pts: np.ndarray) -> np.ndarray:
         """Metres from each point to the nearest occupied cell of the grid (walls, furniture, inflated)."""
         if self._clearance is None:
@@ -595,6 +600,8 @@ class FreeSpace:
         Without `cluster` the points are spread over the zone (random order, greedy acceptance);
         with it they are the acceptable points nearest to `cluster`, so a family starts together.
         """
+        if n <= 0:
+            return []
         pts = self.cells(zone_name)
         if len(pts) == 0:
             raise GenerationError(f"zone '{zone_name}' has no free floor to place anyone on")
@@ -681,6 +688,16 @@ class TargetResolver:
         if q is None:
             raise GenerationError(f"'{label}' has no free floor within 3 m of {p[0]:.1f}, {p[1]:.1f}")
         return (round(float(q[0]), 3), round(float(q[1]), 3))
+
+    def reserve(self, name: str, points: Sequence[Point]) -> None:
+        """Points people a refinement keeps were sent to for RoI `name`: new people sent there stand
+        apart from them (the queue slots themselves continue through the served counts)."""
+        try:
+            obj = self.world.find(name)
+        except Exception:
+            return
+        for key in (f"beside:{name}", f"goal:{obj.name}", f"queue:{name}"):
+            self.space.reserve(key, points)
 
     def zone_of(self, name: str) -> str:
         obj = self.world.find(name)
@@ -798,12 +815,15 @@ def _target_ports(spec: NodeSpec) -> list[str]:
     return [p.name for p in spec.ports if p.type == "target"]
 
 
+NAVIGATING_EXTRA = frozenset({"Queue", "FollowVelocityField"})  # resolved to a point, though they do not walk
+
+
 def navigation_targets(tree: DraftNode) -> list[tuple[DraftNode, str]]:
     """(node, target port) pairs in tick order for every node that moves the agent to a place."""
     out = []
     for node in tree.walk():
         spec = NODES[node.node]
-        if spec.navigates or node.node in ("Queue", "FollowVelocityField"):
+        if spec.navigates or node.node in NAVIGATING_EXTRA:
             for port in _target_ports(spec):
                 if port in node.ports:
                     out.append((node, port))
@@ -890,11 +910,21 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
     With a `reading` that found groups, the groups are the reading's and the draft is repaired
     only where it contradicts it (generation/reconcile.py); without one, the older word rules of
     this module reconcile the draft with the stated quantities."""
-    rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
     notes: list[str] = []
+    groups = plan_groups(world, preset, draft, quantities, selection, prompt, allowed_nodes, reading, notes)
+    return place_groups(world, grid, preset, groups, selection, seed, reading, notes)
+
+
+def plan_groups(world: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity], selection: Any,
+                prompt: str = "", allowed_nodes: Sequence[str] = (), reading: PromptReading | None = None,
+                notes: list[str] | None = None, first_index: int = 0) -> list[GroupPlan]:
+    """The scenario's groups with their final trees (before ids, spawns and points): the reading's
+    groups with the draft reconciled to them, or the older word rules' groups. Repairs go to `notes`.
+    `first_index` numbers the groups from there (a refinement's new groups follow the kept ones)."""
+    notes = [] if notes is None else notes
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
     if reading is not None and reading.groups:
-        groups = [GroupPlan(i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
+        groups = [GroupPlan(first_index + i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
                             reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor,
                             added=list(r.added), reacts_only=r.reacts_only,
                             reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
@@ -908,36 +938,86 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
             # door during a drill waits (nothing unasked).
             if g.reading_index is not None and reading.groups[g.reading_index].intent == "evacuate":
                 g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
-    else:
-        # The older clause rules run only here, where no reading or no group of it exists; where the
-        # reader found groups (above) nothing of them second-guesses it.
-        if reading is not None:
-            notes.append("the reader found no group of people in the sentence: the model's groups are kept "
-                         "and placed by word rules")
-        groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
-                                  allowed_nodes)
-        if not groups:
-            raise GenerationError("the draft has no groups of people")
-        # Trees first: where a group starts depends on where its final tree sends it.
-        for g in groups:
-            g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes,
-                                   g.label, allowed_nodes)
-        _ground_spawns(groups, quantities, prompt, selection, notes, world)
+        return groups
+    # The older clause rules run only here, where no reading or no group of it exists; where the
+    # reader found groups (above) nothing of them second-guesses it.
+    if reading is not None:
+        notes.append("the reader found no group of people in the sentence: the model's groups are kept "
+                     "and placed by word rules")
+    groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
+                              allowed_nodes)
+    if not groups:
+        raise GenerationError("the draft has no groups of people")
+    # Trees first: where a group starts depends on where its final tree sends it.
+    for g in groups:
+        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes,
+                               g.label, allowed_nodes)
+    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+    return groups
+
+
+@dataclass(frozen=True)
+class KeptMembers:
+    """The members a changed group keeps in a refinement: their ids, and where they stand when the
+    group still starts in `zone` (else they are placed again)."""
+
+    ids: tuple[int, ...]
+    starts: tuple[Point, ...]
+    zone: str
+    # per member, (RoI name, point) of each place its tree sent it to: a member whose tree still goes
+    # to the same places in the same order goes to the same points
+    targets: tuple[tuple[tuple[str, Point], ...], ...] = ()
+    sfm_groups: tuple[int, ...] = ()  # the social groups its members formed, reused while they fit
+
+
+@dataclass(frozen=True)
+class PlacedScene:
+    """What a refinement keeps of a scenario, which the groups placed next must not collide with.
+
+    `starts`: everyone kept (new people start at least SPAWN_SPACING from them); `targets`: the points
+    kept people are sent to, by RoI name (new people queue behind them, stand beside them);
+    `goals`: the goal table (goal_id - 1 -> point); `starts_by_zone` / `ends_by_zone`: kept people per
+    zone, for the capacity check; `kept`: by GroupPlan index, the members a changed group keeps."""
+
+    next_id: int
+    next_sfm_group: int
+    starts: tuple[Point, ...] = ()
+    targets: Mapping[str, tuple[Point, ...]] = field(default_factory=dict)
+    goals: tuple[Point, ...] = ()
+    starts_by_zone: Mapping[str, int] = field(default_factory=dict)
+    ends_by_zone: Mapping[str, int] = field(default_factory=dict)
+    kept: Mapping[int, KeptMembers] = field(default_factory=dict)
+
+
+def place_groups(world: Any, grid: Any, preset: Preset, groups: list[GroupPlan], selection: Any, seed: int,
+                 reading: PromptReading | None = None, notes: list[str] | None = None,
+                 scene: PlacedScene | None = None) -> PostProcessed:
+    """Planned groups -> agents: ids, spawns in free space, targets resolved to points, one tree
+    document per agent. With a `scene` (a refinement), ids and social groups continue after the kept
+    ones, nobody starts on a kept person and people sent to a kept queue line up behind it."""
+    rng = np.random.default_rng([int(seed) & 0xFFFFFFFF, 0x6A09E667])
+    notes = [] if notes is None else notes
     space = FreeSpace(world, grid)
+    if scene is not None:
+        space.reserve("spawn", list(scene.starts) + [p for kept in scene.kept.values() for p in kept.starts])
     if preset.velocity == "field" and reading is not None:
         _spread_unplaced_evacuees(groups, reading, space, world, notes)
-    _check_capacity(groups, space, world)
+    _check_capacity(groups, space, world, scene)
     _check_limits(groups, preset)
     resolver = TargetResolver(world, grid, space, preset, rng)
     exit_names = _evacuation_exits(world, selection, notes) if preset.velocity == "field" else []
     exit_name = exit_names[0] if exit_names else None
 
     agents: list[AgentPlan] = []
-    next_id = 1
-    sfm_groups = 0
+    next_id = scene.next_id if scene is not None else 1
+    sfm_groups = scene.next_sfm_group if scene is not None else 0
     for g in groups:
-        g.member_ids = list(range(next_id, next_id + g.count))
-        next_id += g.count
+        kept = scene.kept.get(g.index) if scene is not None else None
+        kept_ids = list(kept.ids[:g.count]) if kept is not None else []
+        g.member_ids = kept_ids + list(range(next_id, next_id + g.count - len(kept_ids)))
+        next_id += g.count - len(kept_ids)
+        kept_starts = list(kept.starts[:g.count]) if kept is not None and kept.zone == g.spawn and \
+            not g.spawn_zones else []
         node_types = {n.node for n in g.tree.walk()}
         # Who walks as one social group: the whole group for a conversation, and walking groups of at
         # most MAX_WALKING_GROUP ("25 staff walk together" are colleagues in small groups, not one
@@ -954,16 +1034,22 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
                 parties = [g.count // n + (1 if i < g.count % n else 0) for i in range(n)]
                 sizes = f"{min(parties)}-{max(parties)}" if min(parties) != max(parties) else str(parties[0])
                 notes.append(f"group '{g.label}': {g.count} people walk together as {n} groups of {sizes}")
-            sfm_groups += len(parties)
+            own = kept.sfm_groups if kept is not None else ()
+            if own and len(parties) <= len(own) and own == tuple(range(own[0], own[0] + len(own))):
+                g.sfm_group = own[0]  # a changed group keeps its social groups' ids
+            else:
+                sfm_groups += len(parties)
         if preset.velocity == "field" and "FollowVelocityField" in node_types:
             g.field_id = f"group_{g.index + 1}"  # the group's first field; per exit below when it splits
         first = 0
         for zone, size, k in _spawn_chunks(g, parties):
             party = g.sfm_group + k if g.sfm_group >= 0 else -1
+            fixed = kept_starts[first:first + size]
             cluster = None
-            if party >= 0:
+            if party >= 0 and len(fixed) < size:
                 (cluster,) = space.sample(zone, 1, rng, 0.1, key=f"anchor:{zone}:{g.index}:{k}")
-            starts = space.sample(zone, size, rng, SPAWN_SPACING, key="spawn", cluster=cluster)
+            starts = fixed + (space.sample(zone, size - len(fixed), rng, SPAWN_SPACING, key="spawn",
+                                           cluster=cluster) if len(fixed) < size else [])
             if party >= 0:
                 g.parties.setdefault(party, []).extend(g.member_ids[first:first + size])
             for agent_id, start in zip(g.member_ids[first:first + size], starts):
@@ -976,21 +1062,33 @@ def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities:
         _assign_exits(world, grid, groups, agents, exit_names, notes, preset.exit_choice)
 
     writer = TreeWriter(resolver)
-    by_index = {g.index: g for g in groups}
     served: dict[str, int] = {}
+    if scene is not None:
+        writer.goal_ids.update({p: i + 1 for i, p in enumerate(scene.goals)})
+        for name, points in scene.targets.items():
+            served[name] = len(points)
+            resolver.reserve(name, points)
+    by_index = {g.index: g for g in groups}
+    kept_targets = {m: t for kept in (scene.kept.values() if scene is not None else ())
+                    for m, t in zip(kept.ids, kept.targets)}
     for agent in agents:
         g = by_index[agent.group_index]
         tree = _with_exit(agent.tree, agent.exit) if agent.exit else agent.tree
         agent.tree = tree
         targets: dict[int, Point] = {}
         slots: dict[str, int] = {}
-        for node, port in navigation_targets(tree):
+        before = kept_targets.get(agent.id, ())
+        for k, (node, port) in enumerate(navigation_targets(tree)):
             name = node.ports[port]
             if name not in slots:
                 # This agent's place in the line of everyone sent to `name` (sequential goal allocation).
                 slots[name] = served.get(name, 0)
                 served[name] = slots[name] + 1
-            if node.node == "Converse":
+            if k < len(before) and before[k][0] == name and node.node != "FollowVelocityField":
+                point = before[k][1]  # a kept member goes where it went
+                if node.node == "Converse":
+                    resolver.group_points.setdefault((g.index, name), point)  # newcomers join its circle
+            elif node.node == "Converse":
                 # One circle per group: everyone resolves the same centre.
                 point = _group_point(resolver, g, name)
             else:
@@ -1088,10 +1186,11 @@ def _spawn_chunks(group: GroupPlan, parties: Sequence[int]) -> list[tuple[str, i
     return chunks
 
 
-def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any) -> None:
-    """Everyone must fit, at a plausible density, both where they start and where they end up."""
-    ends: dict[str, int] = {}
-    starts: dict[str, int] = {}
+def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any, scene: PlacedScene | None = None) -> None:
+    """Everyone must fit, at a plausible density, both where they start and where they end up
+    (with the people a refinement keeps)."""
+    ends: dict[str, int] = dict(scene.ends_by_zone) if scene is not None else {}
+    starts: dict[str, int] = dict(scene.starts_by_zone) if scene is not None else {}
     for g in groups:
         for zone, n in (g.spawn_zones or {g.spawn: g.count}).items():
             starts[zone] = starts.get(zone, 0) + n

@@ -200,7 +200,8 @@ for _intent, _verbs in {
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
             "snooze",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
-    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter",
+    "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
+              "mop sweep vacuum hoover scrub tidy clean",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
@@ -235,7 +236,8 @@ ONE_SET_PLURALS = frozenset({"twin"})
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
-LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour".split())
+LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum "
+                                  "hoover scrub tidy".split())
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
 VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
 OBJECT_VERBS = START_OBJECT_VERBS | DESTINATION_OBJECT_VERBS | LOCATION_OBJECT_VERBS | VIA_OBJECT_VERBS

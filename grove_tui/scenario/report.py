@@ -157,6 +157,8 @@ class GroupGrounding:
     added: tuple[str, ...] = ()  # what the scenario does beyond the reading ("waits 10 s at the end")
     unsure: tuple[str, ...] = ()  # questions about fields the reader was unsure of
     edit: str = ""  # a user's count edit, said beside what the sentence asked
+    asked_by: int = 0  # the sentence that asked for the group: 0 the first, k the k-th follow-up
+    changed_by: tuple[int, ...] = ()  # the follow-ups that changed it
 
     @property
     def status(self) -> str:
@@ -167,6 +169,13 @@ class GroupGrounding:
         """Checked, and every claim holds in the run."""
         return self.status == HOLDS
 
+    def asked(self) -> str:
+        """Which sentence asked for the group, and which changed it: "sentence 1, changed by 3"."""
+        text = f"sentence {self.asked_by + 1}"
+        if self.changed_by:
+            text += ", changed by " + ", ".join(str(c + 1) for c in self.changed_by)
+        return text
+
     def to_dict(self) -> JsonDict:
         data: JsonDict = {"who": self.who, "label": self.label, "status": self.status, "ok": self.ok,
                                 "members": list(self.members), "claims": [c.to_dict() for c in self.claims]}
@@ -176,6 +185,10 @@ class GroupGrounding:
             data["unsure"] = list(self.unsure)
         if self.edit:
             data["edit"] = self.edit
+        if self.asked_by:
+            data["asked_by"] = self.asked_by
+        if self.changed_by:
+            data["changed_by"] = list(self.changed_by)
         return data
 
     @classmethod
@@ -185,7 +198,8 @@ class GroupGrounding:
             claims = tuple(_legacy_claim(c) for c in data["checks"])
         return cls(str(data.get("who", "")), str(data.get("label", "")), claims,
                    tuple(int(m) for m in data.get("members", ())), tuple(str(a) for a in data.get("added", ())),
-                   tuple(str(u) for u in data.get("unsure", ())), str(data.get("edit", "")))
+                   tuple(str(u) for u in data.get("unsure", ())), str(data.get("edit", "")),
+                   int(data.get("asked_by", 0)), tuple(int(c) for c in data.get("changed_by", ())))
 
 
 def _legacy_claim(check: JsonDict) -> Claim:
@@ -256,6 +270,9 @@ class GroundingReport:
     robot: RobotGrounding | None = None
     unsure: tuple[str, ...] = ()  # every question about the reading ("'the big meeting room': the boardroom?")
     run: RunCheck | None = None  # None: planned (before any run); else the run the claims were checked on
+    # Every sentence the scenario was made from: the prompt, then each follow-up that refined it
+    # (generation/refine.py); empty for a scenario of one sentence.
+    sentences: tuple[str, ...] = ()
 
     @property
     def checked(self) -> bool:
@@ -288,6 +305,8 @@ class GroundingReport:
                                 "robot": self.robot.to_dict() if self.robot is not None else None,
                                 "unsure": list(self.unsure)}
         data["run"] = self.run.to_dict() if self.run is not None else None
+        if self.sentences:
+            data["sentences"] = list(self.sentences)
         return data
 
     @classmethod
@@ -298,7 +317,7 @@ class GroundingReport:
                    tuple(str(u) for u in data.get("unhonoured", ())), tuple(str(r) for r in data.get("repairs", ())),
                    tuple(str(c) for c in data.get("corrections", ())),
                    RobotGrounding.from_dict(robot) if robot else None, tuple(str(u) for u in data.get("unsure", ())),
-                   RunCheck.from_dict(run) if run else None)
+                   RunCheck.from_dict(run) if run else None, tuple(str(s) for s in data.get("sentences", ())))
 
     def counts(self) -> dict[str, int]:
         """Groups (and the robot) per verdict: {"holds": 3, "fails": 1, ...}."""
@@ -327,8 +346,11 @@ class GroundingReport:
     def lines(self) -> list[str]:
         """Plain-text rendering, one line per group and one per claim (for the CLI and logs)."""
         out: list[str] = [self.summary()]
+        for number, sentence in enumerate(self.sentences, start=1):
+            out.append(f"sentence {number}: {sentence}")
         for g in self.groups:
-            out.append(f"{MARKS[g.status]} {g.who} -> {g.label} ({len(g.members)} agents)")
+            asked = f", {g.asked()}" if self.sentences else ""
+            out.append(f"{MARKS[g.status]} {g.who} -> {g.label} ({len(g.members)} agents{asked})")
             if g.edit:
                 out.append(f"    ! {g.edit}")
             for c in g.claims:

@@ -389,6 +389,18 @@ class EngineBackend:
             exc.hint = "Change the counts and press Enter again, or Escape to keep the scenario as it is."
             raise
 
+    def read_refinement(self, generated: GeneratedScenario, sentence: str, choices: tuple[int, ...] = ()) -> Any:
+        """What a follow-up would change, as a diff (no model; AmbiguousEditError asks which group)."""
+        return self.session.read_refinement(generated, sentence, choices=choices)
+
+    def refine(self, generated: GeneratedScenario, refinement: Any, on_event: Callable[[Any], None] | None = None,
+               cancel: threading.Event | None = None) -> GeneratedScenario:
+        """The scenario edited by a refinement read before, in its own bundle next to the first one;
+        `generated` and its bundle are left as they were (the app's undo goes back to them)."""
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        out = self._free_run_dir(f"{stamp}-{_slug(generated.prompt)}-{generated.seed}-edit{refinement.step}")
+        return self.session.refine(generated, refinement, out, on_event=on_event, cancel=cancel)
+
     def _free_run_dir(self, name: str) -> Path:
         out, suffix = self.runs_dir / name, 1
         while out.exists():

@@ -72,6 +72,8 @@ def job_inputs_hash(job: BatchJob, models: dict[str, str]) -> str:
     variation = None if job.variation is None else [job.variation.index, job.variation.count, job.variation.parent_seed]
     inputs = {"world": job.world, "preset": job.preset, "prompt": job.prompt, "seed": job.seed, "name": job.name,
               "simulate": job.simulate, "exports": list(job.exports), "variation": variation, "models": models}
+    if job.refine:
+        inputs["refine"] = list(job.refine)
     return hashlib.sha256(json.dumps(inputs, sort_keys=True).encode()).hexdigest()[:20]
 
 

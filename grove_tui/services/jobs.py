@@ -1,7 +1,10 @@
 """Batch job files: one JSON object per line, every line checked before any job runs.
 
     {"world": "hospital", "preset": "queuing", "prompt": "...", "seed": 1, "name": "pharmacy", "simulate": 60,
-     "export": ["rosbag", "foxglove"], "variations": 4}
+     "export": ["rosbag", "foxglove"], "variations": 4, "refine": ["add a cleaner mopping the corridor"]}
+
+A job with "refine": [...] edits its scenario by each follow-up in turn (`GroveSession.refine`) before
+it is simulated and exported; its bundle is the last step's, with every step in its history.
 
 A job with "variations": N stands for N jobs (bundles NAME-v000 .. NAME-v{N-1}) whose seeds derive
 from its seed (`variation_seed`); variation 0 keeps the job's own seed, so it is the plain job's bundle.
@@ -30,7 +33,8 @@ MAX_SEED = 2**32 - 1
 MAX_SIMULATE_SECONDS = 24 * 3600.0
 MAX_PROMPT_CHARS = 2000
 REQUIRED = ("world", "preset", "prompt")
-OPTIONAL = ("seed", "name", "simulate", "export", "variations")
+OPTIONAL = ("seed", "name", "simulate", "export", "variations", "refine")
+MAX_FOLLOWUPS = 20
 # A generous bound that still refuses a typo like 1e9 before it expands into a billion jobs.
 MAX_VARIATIONS = 10_000
 # What `export` may list: the `grove export` formats. All but hunav read the simulated run.
@@ -52,6 +56,7 @@ class BatchJob:
     simulate: float | None
     exports: tuple[str, ...] = ()  # formats to write after the job, in the order given
     variation: Variation | None = None  # set when the line asked for variations
+    refine: tuple[str, ...] = ()  # follow-ups applied in turn after generating
 
 
 @dataclass(frozen=True)
@@ -168,6 +173,20 @@ def check_exports(value: Any, simulate: float | None) -> tuple[str, ...]:
     return tuple(value)
 
 
+def check_followups(value: Any) -> tuple[str, ...]:
+    """`refine` is a list of follow-up sentences, each non-empty and as long as a prompt may be."""
+    if not isinstance(value, list) or not all(isinstance(f, str) for f in value):
+        raise ValueError(f"refine must be a list of follow-up sentences like [\"make the queue longer\"], got {value!r}")
+    if len(value) > MAX_FOLLOWUPS:
+        raise ValueError(f"refine lists {len(value)} follow-ups; at most {MAX_FOLLOWUPS}")
+    for k, followup in enumerate(value):
+        if not followup.strip():
+            raise ValueError(f"refine[{k}] is empty")
+        if len(followup) > MAX_PROMPT_CHARS:
+            raise ValueError(f"refine[{k}] is {len(followup)} characters; the limit is {MAX_PROMPT_CHARS}")
+    return tuple(value)
+
+
 def _check_job(number: int, job: Any, index: int) -> list[BatchJob]:
     if not isinstance(job, dict):
         raise ValueError("a job must be a JSON object like {\"world\": ..., \"preset\": ..., \"prompt\": ...}")
@@ -193,7 +212,9 @@ def _check_job(number: int, job: Any, index: int) -> list[BatchJob]:
     exports = check_exports(job["export"], seconds) if "export" in job else ()
     folder = check_folder_name(folder_name(name if name is not None
                                            else f"{index:03d}-{Path(job['world']).stem}-{job['preset']}"))
-    plain = BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds, exports)
+    followups = check_followups(job["refine"]) if "refine" in job else ()
+    plain = BatchJob(number, job["world"].strip(), job["preset"].strip(), job["prompt"], seed, folder, seconds, exports,
+                     refine=followups)
     if "variations" not in job:
         return [plain]
     count = check_variations(job["variations"])

@@ -39,6 +39,7 @@ if TYPE_CHECKING:
     from grove_tui.analysis.understanding import ScenarioScore, UnderstandingCase
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
     from grove_tui.generation.planning import RobotRequest
+    from grove_tui.generation.refine import Refinement
     from grove_tui.generation.presets import Preset
     from grove_tui.llm.registry import ModelChoice
     from grove_tui.services.jobs import BatchJob, JobProblem, Variation
@@ -48,6 +49,7 @@ if TYPE_CHECKING:
 LLMFactory = Callable[[str, Any], Any]  # (role, ModelChoice) -> a LocalLLM-like object
 RetrieverFactory = Callable[[], Any]
 EventSink = Callable[[Any], None]  # receives the pipeline's StageStarted / StageFinished / TokenStreamed
+MAX_FOLLOWUP_CHARS = 500
 
 
 @dataclass(frozen=True)
@@ -550,15 +552,127 @@ class GroveSession:
     def replan(self, generated: GeneratedScenario, counts: dict[int, int], out_dir: str | Path, *,
                seed: int | None = None, on_event: EventSink | None = None,
                cancel: threading.Event | None = None) -> GeneratedScenario:
-        """The same draft with new head counts (group index -> count), re-planned without a model call."""
+        """The same draft with new head counts (group index -> count), re-planned without a model call.
+
+        A scenario that keeps no draft (opened from a bundle, or refined) changes its counts as a
+        refinement: the other groups stay byte for byte, and the edit is a step of its history."""
         from grove_tui.generation.pipeline import GenerationPipeline
 
+        if generated.result.inputs is None and generated.result.report.get("groups"):
+            return self.refine(generated, self._count_refinement(generated, counts), out_dir, on_event=on_event,
+                               cancel=cancel)
         preset = self.load_preset(generated.preset)
         pipeline = GenerationPipeline(generated.world, preset, None, None, None)
         result = pipeline.replan(generated.result, counts, seed=seed, on_event=on_event, cancel=cancel)
         bundle = self.write_bundle(result, out_dir)
         return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, result.scenario.seed,
                                  generated.world, result, bundle)
+
+    # refinement -----------------------------------------------------------------------------------------
+    def open_bundle(self, bundle_dir: str | Path) -> GeneratedScenario:
+        """A saved bundle as a generation's result (no draft: its counts re-plan through `refine`)."""
+        from grove_tui.generation.pipeline import GenerationResult
+        from grove_tui.scenario.bundle import REPORT_FILE, load_bundle, load_report, world_source
+
+        bundle_dir = Path(bundle_dir)
+        scenario, trees, fields, grid = load_bundle(bundle_dir)
+        # A bundle copied without its report still opens; only the timings and groups are missing.
+        report = load_report(bundle_dir) if (bundle_dir / REPORT_FILE).is_file() else {}
+        world = self.load_world(str(world_source(bundle_dir, scenario)))
+        result = GenerationResult(scenario, trees, fields, grid, report)
+        return GeneratedScenario(scenario.prompt, scenario.world, scenario.preset, int(scenario.seed), world, result,
+                                 bundle_dir)
+
+    def read_refinement(self, generated: GeneratedScenario, sentence: str, *,
+                        choices: Sequence[int] = ()) -> Refinement:
+        """What a follow-up would do to a scenario, as a diff, before anything runs (no model).
+
+        `choices` settle ambiguous group names in order ("the nurse" with two nurse groups), each the
+        index of the group meant. Raises AmbiguousEditError (with the choices) while one is unsettled,
+        EditError when the follow-up changes nothing."""
+        from grove_tui.generation.refine import plan_refinement
+        from grove_tui.generation.scene import scene_of
+        from grove_tui.language.followup import read_followup
+
+        sentence = " ".join((sentence or "").split())
+        if not sentence:
+            raise PromptError("the follow-up is empty: say what to add, change or remove")
+        if len(sentence) > MAX_FOLLOWUP_CHARS:
+            raise PromptError(f"the follow-up is {len(sentence)} characters long; keep it under {MAX_FOLLOWUP_CHARS}")
+        scene = scene_of(generated.result, generated.world)
+        last = [g.index for g in scene.groups if scene.steps and (g.asked_by == scene.steps or
+                                                                  scene.steps in g.changed_by)]
+        edit = read_followup(sentence, generated.world, [g.reading for g in scene.groups],
+                             has_robot=generated.scenario.robot is not None, seed=int(generated.seed), last=last)
+        for choice in choices:
+            pending = edit.ambiguities()
+            if not pending:
+                break
+            index, ref = pending[0]
+            if choice not in ref.candidates:
+                raise BadInputError(f"group {choice + 1} is not one '{ref.phrase}' can mean",
+                                    hint="choose one of " + ", ".join(str(c + 1) for c in ref.candidates))
+            edit = edit.choose(index, choice)
+        return plan_refinement(scene, edit)
+
+    def refine(self, generated: GeneratedScenario, followup: str | Refinement, out_dir: str | Path, *,
+               overwrite: bool = False, choices: Sequence[int] = (), on_event: EventSink | None = None,
+               cancel: threading.Event | None = None) -> GeneratedScenario:
+        """The scenario edited by a follow-up sentence (or a refinement read before), written as a bundle
+        at `out_dir` (the scenario's own folder edits it in place, atomically). Only the groups the
+        follow-up adds or changes are generated; the others are kept byte for byte (generation/refine.py)."""
+        from grove_tui.files import check_output_dir
+        from grove_tui.generation.refine import apply_refinement
+        from grove_tui.generation.scene import scene_of
+        from grove_tui.scenario.bundle import WHAT, is_bundle
+
+        refinement = followup if not isinstance(followup, str) else \
+            self.read_refinement(generated, followup, choices=choices)
+        # Before the model runs: a refused or unwritable folder must not cost a generation.
+        check_output_dir(out_dir, owned=is_bundle, what=WHAT, overwrite=overwrite)
+        scene = scene_of(generated.result, generated.world)
+        if refinement.step != scene.steps + 1:
+            raise BadInputError("this refinement was read for another version of the scenario; read it again")
+        pipeline = self.pipeline(generated.world_name, generated.preset) if refinement.calls_model else \
+            self._planning_pipeline(generated)
+        result = apply_refinement(pipeline, scene, refinement, on_event=on_event, cancel=cancel)
+        bundle = self.write_bundle(result, out_dir, overwrite=overwrite)
+        return GeneratedScenario(generated.prompt, generated.world_name, generated.preset, generated.seed,
+                                 generated.world, result, bundle)
+
+    def _count_refinement(self, generated: GeneratedScenario, counts: dict[int, int]) -> Refinement:
+        """Head counts typed per group (the app's count dialog) as a refinement of their groups."""
+        from grove_tui.generation.refine import plan_refinement
+        from grove_tui.generation.scene import scene_of
+        from grove_tui.language.edits import CountChange, EditReading, GroupEdit, GroupRef
+
+        scene = scene_of(generated.result, generated.world)
+        most = self.load_preset(generated.preset).limits.max_count
+        edits = []
+        for index, count in sorted(counts.items()):
+            if not 0 <= index < len(scene.groups):
+                raise BadInputError(f"there is no group {index + 1}: this scenario has {len(scene.groups)}")
+            if not 1 <= int(count) <= most:
+                raise PromptError(f"group '{scene.groups[index].label}': {count} people is out of range; preset "
+                                  f"'{generated.preset}' allows 1 to {most} per group")
+            label = scene.groups[index].label
+            edits.append(GroupEdit("change", f"{label} {count}", GroupRef(label, (index,)), None, ("count",),
+                                   CountChange("set", float(count))))
+        sentence = "counts: " + ", ".join(e.text for e in edits)
+        return plan_refinement(scene, EditReading(sentence, tuple(edits)))
+
+    def _planning_pipeline(self, generated: GeneratedScenario) -> GenerationPipeline:
+        """A pipeline for post-processing and planning only (no model loads): count, pace and robot edits."""
+        from grove_tui.generation.pipeline import GenerationPipeline
+
+        key = (generated.world_name, generated.preset, "planning-only")
+        with self._lock:
+            pipeline = self._pipelines.get(key)
+        if pipeline is None:
+            pipeline = GenerationPipeline(generated.world, self.load_preset(generated.preset), None, None, None)
+            with self._lock:
+                pipeline = self._pipelines.setdefault(key, pipeline)
+        return pipeline
 
     # simulation -----------------------------------------------------------------------------------------
     def simulation(self, generated: GeneratedScenario) -> Simulation:
@@ -657,6 +771,9 @@ class GroveSession:
             generated = self.generate(ScenarioRequest(job.world, job.preset, job.prompt, job.seed,
                                                       variation=job.variation), target,
                                       overwrite=overwrite, on_event=on_event, cancel=cancel)
+            for followup in job.refine:  # each step replaces the job's bundle, atomically
+                generated = self.refine(generated, followup, target, overwrite=True, on_event=on_event,
+                                        cancel=cancel)
             summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
             exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name, overwrite)
                        for kind in job.exports}

@@ -19,7 +19,6 @@ from grove_tui.analysis.grounding_eval import (
     load_suite,
     score_bundle,
 )
-from grove_tui.services.session import GroveSession
 
 SUITE = REPO / "eval" / "grounding" / "suite.yaml"
 
@@ -46,12 +45,6 @@ def test_a_broken_suite_names_the_case(tmp_path):
 CASE = GroundingCase("home-back-door", "residential", "emergency",
                      "five people in the kitchen get out through the back door", 0, 40.0,
                      (ExpectedGroup("people", (("start", "kitchen"), ("evacuate", ["back_door"])), 5),))
-
-
-@pytest.fixture(scope="module")
-def session():
-    with GroveSession() as s:
-        yield s
 
 
 def test_a_scenario_that_does_what_was_asked_scores_its_outcome_and_its_tick(tmp_path, session):

@@ -18,17 +18,8 @@ from grove_tui.analysis.outcomes import OutcomeChecker, check_run
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
 from grove_tui.scenario.report import FAILS, HOLDS, UNCHECKED, Claim, GroundingReport, GroupGrounding, RobotGrounding
-from grove_tui.world.loader import load_world
-from helpers.clinic import CLINIC
 
 DT = 0.05
-
-
-@pytest.fixture(scope="module")
-def clinic(tmp_path_factory):
-    path = tmp_path_factory.mktemp("clinic") / "clinic.yaml"
-    path.write_text(CLINIC, encoding="utf-8")
-    return load_world(path)
 
 
 def scenario(n: int, robot: bool = True) -> Scenario:

@@ -26,6 +26,7 @@ def test_the_command_prints_the_table_and_exits_1_on_a_failure():
     ok = runner.invoke(validate, ["rimea", "--test", "1", "--no-jupedsim"])
     assert ok.exit_code == 0, ok.output
     assert "corridor 40 m at 1.33 m/s" in ok.output and ok.output.rstrip().endswith("pass")
+    assert "no JuPedSim column (--no-jupedsim)" in ok.output  # asked off, not "not installed"
     failing = runner.invoke(validate, ["rimea", "--model", "lightsfm", "--test", "5", "--no-jupedsim"])
     assert failing.exit_code == 1 and "FAIL" in failing.output
     unknown = runner.invoke(validate, ["rimea", "--test", "2"])

@@ -42,7 +42,7 @@ JOBS = [
 GOOD = ["visitors-v000", "visitors-v001", "visitors-v002", "visitors-v003", "nurses-v000", "nurses-v001"]
 
 
-pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
+pytestmark = pytest.mark.usefixtures("shared_index")  # tests/conftest.py
 
 
 def _files(bundle: Path) -> dict[str, bytes]:

@@ -14,7 +14,6 @@ import pytest
 from helpers.hand_bundle import group, hand_bundle, hand_result, node
 
 from grove_tui.scenario.report import GroundingReport
-from grove_tui.services.session import GroveSession
 
 
 def checked(bundle) -> GroundingReport:
@@ -24,12 +23,6 @@ def checked(bundle) -> GroundingReport:
 def claims(report: GroundingReport, who: str) -> dict[str, object]:
     (found,) = [g for g in report.groups if who in g.who]
     return {c.kind: c for c in found.claims}
-
-
-@pytest.fixture(scope="module")
-def session():
-    with GroveSession() as s:
-        yield s
 
 
 def test_a_walker_the_model_sent_to_queue_walks_and_the_run_shows_it(tmp_path, session):

@@ -17,7 +17,7 @@ WORLD, PRESET, SEED = "hospital", "emergency", 3
 PROMPT = "fire alarm: six people in the cafeteria and two in the pharmacy evacuate through the nearest exit"
 
 
-pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
+pytestmark = pytest.mark.usefixtures("shared_index")  # tests/conftest.py
 
 
 def _files(bundle: Path) -> dict[str, bytes]:

@@ -13,7 +13,7 @@ from grove_tui.cli import main
 from grove_tui.services.jobs import MAX_VARIATIONS, read_jobs, variation_seed
 
 
-pytestmark = pytest.mark.usefixtures("shared_index")  # tests/services/conftest.py
+pytestmark = pytest.mark.usefixtures("shared_index")  # tests/conftest.py
 
 
 def _write_jobs(path: Path, *jobs: dict) -> Path:

@@ -101,6 +101,11 @@ class TestInspectGrounding:
         assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
 
 
+# The first steps of a fresh checkout compile the crowd's numba kernels (no on-disk cache yet): over
+# three minutes at load 11 on 2 cores. The waits end as soon as the frames are there.
+FIRST_STEPS_SECONDS = 400
+
+
 class TestSimulationScreen:
     @pytest.mark.parametrize("size", SIZES)
     def test_simulation_after_ten_steps(self, snap_compare, tmp_path, size):
@@ -111,9 +116,10 @@ class TestSimulationScreen:
             await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation")
             sim = app.screen
             await wait_until(pilot, lambda: sim.controller is not None and sim.controller.latest is not None,
-                             what="first frame")
+                             timeout=FIRST_STEPS_SECONDS, what="first frame")
             await pilot.press(*["n"] * 10)
-            await wait_until(pilot, lambda: sim.controller.latest.frame.step == 10, what="ten steps")
+            await wait_until(pilot, lambda: sim.controller.latest.frame.step == 10, timeout=FIRST_STEPS_SECONDS,
+                             what="ten steps")
             tree = sim.query_one("#sim-tree", BTTree)
             await wait_until(pilot, lambda: sim._shown_serial == sim.controller.latest.serial and bool(tree._status),
                              what="last frame drawn")

@@ -24,6 +24,7 @@ from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summ
 from grove_tui.tui.widgets.map_raster import Overlay
 from grove_tui.tui.widgets.map_legend import FIELD, INSPECT_SYMBOLS, ROBOT_PATH, MapLegend
 from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.tui.widgets.followup import FollowupBox, FollowupInput
 from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
@@ -136,8 +137,11 @@ the tree to highlight an agent's route or a node's target on the map. **x** show
 agent's XML, **a** shows the grounding report (per group: what the sentence asked beside what
 the scenario does, ✓ or ✗ with the reason), **p** plays the simulation, **g** regenerates with the next seed (asking whether to
 keep your count edits), **c** edits each group's head count and re-plans (same trees, no model
-call), **e** exports the bundle. **Escape** goes back to setup; it asks first when the scenario
-has not been exported (it stays in the recent runs, **ctrl+o** on setup).
+call), **e** exports the bundle. **f** types a follow-up that edits the scenario ("add a cleaner
+mopping the corridor", "make the queue twice as long", "remove the cleaner", "no robot"): what it
+would change is shown first, and only the groups it names change. **ctrl+z** undoes an edit (a
+follow-up or counts), **ctrl+y** redoes it. **Escape** goes back to setup; it asks first when the
+scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup).
 """
 
     BINDINGS = [
@@ -151,6 +155,12 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         Binding("c", "edit_counts", "Counts", id="inspect.counts",
                 tooltip="Edit each group's head count and re-plan, without the model"),
         Binding("e", "export", "Export", id="inspect.export", tooltip="Export the bundle"),
+        Binding("f", "followup", "Follow-up", id="inspect.followup",
+                tooltip="Type a sentence that edits the scenario (add, change, remove a group; the robot)",
+                show=False),  # not in the footer at 80 columns: the box itself says "f: follow-up"
+        Binding("ctrl+z", "undo", "Undo", id="inspect.undo", tooltip="Undo the last edit (follow-up or counts)",
+                show=False),
+        Binding("ctrl+y", "redo", "Redo", id="inspect.redo", tooltip="Redo the edit undone last", show=False),
         Binding("m", "focus_map", "Map", id="inspect.map", tooltip="Focus the map to zoom and pan"),
         Binding("t", "focus_tree", "Trees", id="inspect.tree", tooltip="Focus the behavior trees", show=False),
         Binding("escape", "back", "Back", id="inspect.back", tooltip="Back to setup"),
@@ -166,6 +176,9 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         self.count_edits: dict[str, int] = dict(count_edits or {})
         self._overlay = base_overlay(generated)
         self._selected_node: BTNode | None = None
+        # Scenarios before each edit (follow-ups, counts) and after each undo: every one keeps its bundle.
+        self.undo_stack: list[GeneratedScenario] = []
+        self.redo_stack: list[GeneratedScenario] = []
 
     @property
     def grove(self) -> GroveApp:
@@ -197,6 +210,7 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
                 world_map.legend = legend
                 yield world_map
                 yield legend
+        yield FollowupBox(id="followup")
         yield Footer(compact=True, show_command_palette=False)
 
     def on_mount(self) -> None:
@@ -396,13 +410,67 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
         for old, new in zip(before, after):
             if int(old.get("count", 0)) != int(new.get("count", 0)):
                 self.count_edits[str(new.get("label", ""))] = int(new.get("count", 0))
+        self._replace(generated)
+        history = generated.result.report.get("history") or []
+        note = (history[-1]["sentence"] if history and generated.result.inputs is None
+                else generated.result.report.get("notes", [""])[0])
+        self.notify(f"{note}\n{len(generated.scenario.agents)} agents · bundle {generated.bundle_dir.name}",
+                    title="Re-planned", timeout=6)
+
+    # follow-ups, undo and redo ----------------------------------------------------------------------------
+    def _replace(self, generated: GeneratedScenario, *, undoable: bool = True) -> None:
+        """Show an edited scenario; the one shown before goes on the undo stack."""
+        if undoable:
+            self.undo_stack.append(self.generated)
+            self.redo_stack.clear()
         self.unsaved = True
         self.generated = generated
         self.grove.generated = generated
         self._show_generated()
-        note = generated.result.report.get("notes", [""])[0]
-        self.notify(f"{note}\n{len(generated.scenario.agents)} agents · bundle {generated.bundle_dir.name}",
-                    title="Re-planned", timeout=6)
+
+    def action_followup(self) -> None:
+        self.query_one(FollowupBox).focus_input()
+
+    @on(FollowupInput.Left)
+    def followup_left(self) -> None:
+        self.query_one("#bt-tree", BTTree).focus()
+
+    @on(FollowupBox.Submitted)
+    def followup_submitted(self, message: FollowupBox.Submitted) -> None:
+        from grove_tui.tui.screens.refine import RefineScreen
+
+        self.app.push_screen(RefineScreen(self.generated, message.sentence), self._refined)
+
+    def _refined(self, generated: GeneratedScenario | None) -> None:
+        if generated is None:
+            return
+        box = self.query_one(FollowupBox)
+        box.clear()
+        self._replace(generated)
+        self.call_after_refresh(box.focus_input)  # ready for the next follow-up; ctrl+z still reaches the screen
+        step = (generated.result.report.get("history") or [{}])[-1]
+        diff = step.get("diff") or {}
+        lines = [line for line in _diff_lines(diff) if not line.startswith("=")]
+        self.notify("\n".join(lines[:4]) or step.get("sentence", ""), title=f"Follow-up {step.get('number', '')} applied"
+                    " · ctrl+z undoes", timeout=6)
+
+    def action_undo(self) -> None:
+        if not self.undo_stack:
+            self.notify("Nothing to undo.", title="Undo", timeout=3)
+            return
+        self.redo_stack.append(self.generated)
+        undone = _last_sentence(self.generated)
+        self._replace(self.undo_stack.pop(), undoable=False)
+        self.notify(f"Undid: {undone}" if undone else "Undid the last edit.", title="Undo · ctrl+y redoes", timeout=5)
+
+    def action_redo(self) -> None:
+        if not self.redo_stack:
+            self.notify("Nothing to redo.", title="Redo", timeout=3)
+            return
+        self.undo_stack.append(self.generated)
+        self._replace(self.redo_stack.pop(), undoable=False)
+        redone = _last_sentence(self.generated)
+        self.notify(f"Redid: {redone}" if redone else "Redid the edit.", title="Redo", timeout=5)
 
     def action_back(self) -> None:
         from grove_tui.tui.screens.choice import Choice, ChoiceScreen
@@ -465,3 +533,14 @@ has not been exported (it stays in the recent runs, **ctrl+o** on setup).
     def on_export_failed(self, message: msg.ExportFailed) -> None:
         self._close_export_progress()
         self.notify(message.error, title="Export failed", severity="error", timeout=15)
+
+
+def _last_sentence(generated: GeneratedScenario) -> str:
+    history = generated.result.report.get("history") or []
+    return str(history[-1].get("sentence", "")) if history else ""
+
+
+def _diff_lines(diff: dict[str, Any]) -> list[str]:
+    from grove_tui.scenario.history import RefineDiff
+
+    return RefineDiff.from_dict(diff).lines() if diff else []
