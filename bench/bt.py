@@ -35,8 +35,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from grove_tui.bt.ports import format_point_list  # noqa: E402
-from grove_tui.bt.xml import parse_tree_text  # noqa: E402
+from grove_tui.bt.format.ports import format_point_list  # noqa: E402
+from grove_tui.bt.format.xml import parse_tree_text  # noqa: E402
 from grove_tui.navigation.grid import build_grid  # noqa: E402
 from grove_tui.navigation.theta_star import ThetaStarPlanner  # noqa: E402
 from grove_tui.scenario.model import AgentSpec, RobotSpec  # noqa: E402

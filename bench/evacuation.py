@@ -69,7 +69,7 @@ print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024, report.crowd["a
 
 def build(agents: int, seed: int) -> tuple[Simulation, list[AgentSpec], list[tuple[float, float]]]:
     # imported here, not at the top: --plan (and its --baseline) needs none of these modules
-    from grove_tui.bt.xml import parse_tree_text
+    from grove_tui.bt.format.xml import parse_tree_text
     from grove_tui.generation.postprocess import FreeSpace
     from grove_tui.navigation.velocity_field import build_velocity_field
     from grove_tui.scenario.model import AgentSpec
@@ -175,7 +175,7 @@ def main() -> None:
                             "--code", str(args.baseline), "--worlds", *worlds], check=True)
         plan_only(args.agents or 40, worlds)
         return
-    from grove_tui.bt.leaves.grove import EXIT_RADIUS
+    from grove_tui.crowd.leaves.grove import EXIT_RADIUS
     args.agents = args.agents or 500
     started = time.perf_counter()
     sim, specs, exit_points = build(args.agents, args.seed)

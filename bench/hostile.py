@@ -20,6 +20,7 @@ next run succeeded and left no staging entry.
 from __future__ import annotations
 
 import argparse
+import atexit
 import hashlib
 import json
 import os
@@ -59,6 +60,8 @@ class Case:
     python: str | None = None  # run this Python code (with the setup's list as sys.argv[1:]) instead of grove
     fsize: int | None = None  # a full disk: RLIMIT_FSIZE of the child, in bytes
     verify: Callable[[Path], str] | None = None  # after a case that writes: what it wrote, checked
+    # A command prefix ("{root}" is the case's folder), e.g. unshare -m with a mount made for the child.
+    wrap: list[str] | None = None
 
 
 # ---- inputs ------------------------------------------------------------------------------------
@@ -99,7 +102,9 @@ def _pristine_bundle(simulated: bool) -> Path:
     if simulated not in _PRISTINE:
         from tests.helpers.handmade import build_hospital_bundle
 
-        folder = Path(tempfile.mkdtemp(prefix="grove-hostile-pristine-")) / "bundle"
+        root = tempfile.mkdtemp(prefix="grove-hostile-pristine-")
+        atexit.register(shutil.rmtree, root, True)
+        folder = Path(root) / "bundle"
         build_hospital_bundle(folder)
         if simulated:
             subprocess.run(GROVE + ["simulate", str(folder), "--seconds", "2"], check=True, capture_output=True,
@@ -259,6 +264,23 @@ def resumed_records(root: Path) -> str:
     return f"{len(lines)} lines; the new record stands on its own line: name={last['name']} status={last['status']}"
 
 
+def agents_written(root: Path) -> str:
+    scenario = yaml.safe_load((root / "out" / "scenario.yaml").read_text())
+    return f"{len(scenario['agents'])} agents written"
+
+
+# A mount namespace of the child's own (unshare -m, as root): an empty read-only file system at {root}/ro
+# (a real EROFS, where /proc fails with ENOENT), or the bundle bound over itself (a mount point, which no
+# rename can replace: EBUSY).
+READ_ONLY_MOUNT = ["unshare", "-m", "sh", "-c", 'mount -t tmpfs -o ro grove-ro "$0" && exec "$@"', "{root}/ro"]
+BUNDLE_MOUNT_POINT = ["unshare", "-m", "sh", "-c", 'mount --bind "$0" "$0" && exec "$@"', "{root}/bundle"]
+
+
+def mount_point(root: Path, name: str) -> Path:
+    (root / name).mkdir(exist_ok=True)
+    return root / name
+
+
 GYM = """
 import sys
 from grove_tui.errors import GroveError, print_error
@@ -350,7 +372,7 @@ CASES: list[Case] = [
     Case("prompt", "-5 people", lambda r: GENERATE + ["--prompt", "-5 people evacuate the cafeteria", "--out", str(r / "out")], model=True),
     Case("prompt", "a billion people", lambda r: GENERATE + ["--prompt", "a billion people evacuate the cafeteria", "--out", str(r / "out")], model=True),
     Case("prompt", "501 people evacuate the hospital (limit 500)", lambda r: GENERATE + ["--prompt", "501 people evacuate the hospital", "--out", str(r / "out")], model=True),
-    Case("prompt", "500 people across the hospital evacuate", lambda r: GENERATE + ["--prompt", "500 people across the hospital evacuate", "--out", str(r / "out")], model=True),
+    Case("prompt", "500 people across the hospital evacuate", lambda r: GENERATE + ["--prompt", "500 people across the hospital evacuate", "--out", str(r / "out")], model=True, writes=True, verify=lambda r: agents_written(r)),
     Case("prompt", "emoji only", lambda r: GENERATE + ["--prompt", "🔥🔥🔥", "--out", str(r / "out")], model=True),
     # arguments
     Case("arguments", "--seed -1", lambda r: GENERATE + ["--prompt", "ten people evacuate", "--seed", "-1", "--out", str(r / "out")]),
@@ -398,6 +420,7 @@ CASES: list[Case] = [
     Case("35 batch", "a torn last record, then --resume", torn_state_then_resume, writes=True, model=True, verify=resumed_records),
     Case("35 batch", "stale staging and .dataset.sqlite.tmp, then --resume", lambda r: (write(r, "out/.dataset.sqlite.tmp", "half"), (r / "out" / ".a.0a7c9cdf-999999.abcdefgh.staging").mkdir(), ["batch", jobs(r, job_line(name="a", prompt="two visitors wait in the lobby")), "--out", str(r / "out"), "--resume"])[2], writes=True, model=True, verify=lambda r: "left: " + (", ".join(sorted(p.name for p in (r / "out").iterdir() if p.name.startswith("."))) or "nothing")),
     # worlds
+    Case("35 world file", "one 200,000-point boundary (batch)", lambda r: ["batch", jobs(r, json.dumps({"world": str(write(r, "w.yaml", zigzag_world(200_000))), "preset": "normal", "prompt": "two people walk", "name": "zigzag"})), "--out", str(r / "out")], model=True),
     Case("35 world file", "one 200,000-point boundary (check)", lambda r: ["worlds", "check", str(write(r, "w.yaml", zigzag_world(200_000)))]),
     Case("35 world file", "one 200,000-point boundary (generate)", lambda r: ["generate", "--no-ui", "--world", str(write(r, "w.yaml", zigzag_world(200_000))), "--preset", "normal", "--prompt", "two people walk", "--out", str(r / "out")], model=True),
     Case("35 world file", "a world near 99,999 m (check)", lambda r: ["worlds", "check", str(write(r, "w.yaml", room("[[99990,0],[99999,0],[99999,9],[99990,9]]")))]),
@@ -405,12 +428,20 @@ CASES: list[Case] = [
     # exports and metrics
     Case("35 exports", "export trajectories onto a device node", lambda r: ["export", "trajectories", str(bundle(r)), "--out", "/dev/full"]),
     Case("35 exports", "export trajectories onto a read-only file system", lambda r: ["export", "trajectories", str(bundle(r)), "--out", "/proc/grove-out"]),
+    Case("35 exports", "export trajectories onto a real read-only mount (EROFS)", lambda r: ["export", "trajectories", str(bundle(r)), "--out", str(mount_point(r, "ro") / "traj")], wrap=READ_ONLY_MOUNT),
+    Case("35 exports", "export foxglove onto a real read-only mount (EROFS)", lambda r: ["export", "foxglove", str(bundle(r)), "--out", str(mount_point(r, "ro") / "run.mcap")], wrap=READ_ONLY_MOUNT),
+    Case("35 exports", "simulate a bundle that is a mount point (EBUSY)", lambda r: ["simulate", str(bundle(r)), "--seconds", "1"], wrap=BUNDLE_MOUNT_POINT),
     Case("35 exports", "export trajectories on a full disk", lambda r: ["export", "trajectories", str(bundle(r)), "--out", str(r / "new" / "traj")], fsize=40_000),
     Case("35 exports", "export foxglove on a full disk", lambda r: ["export", "foxglove", str(bundle(r)), "--out", str(r / "new" / "run.mcap")], fsize=40_000),
     Case("35 metrics", "trajectories.csv links to /dev/zero", lambda r: (relink(bundle(r) / "trajectories.csv", "/dev/zero"), ["metrics", str(r / "bundle")])[1]),
     Case("35 metrics", "events.jsonl links to /dev/zero", lambda r: (relink(bundle(r) / "events.jsonl", "/dev/zero"), ["metrics", str(r / "bundle")])[1]),
     Case("35 metrics", "trajectories.csv is a named pipe (hang)", lambda r: (fifo(bundle(r) / "trajectories.csv"), ["metrics", str(r / "bundle")])[1]),
     Case("35 metrics", "events.jsonl is a named pipe (hang)", lambda r: (fifo(bundle(r) / "events.jsonl"), ["metrics", str(r / "bundle")])[1]),
+    # odd numbers and letters in prompts (the counts written, through generation)
+    Case("35 prompt", "2.5 people (was 112)", lambda r: GENERATE[:4] + ["--preset", "normal", "--prompt", "2.5 people walk to the cafeteria", "--out", str(r / "out")], model=True, writes=True, verify=agents_written),
+    Case("35 prompt", "an emoji family (was 60)", lambda r: GENERATE[:4] + ["--preset", "normal", "--prompt", "\U0001F468\u200d\U0001F469\u200d\U0001F467\u200d\U0001F466 a family walks to the cafeteria", "--out", str(r / "out")], model=True, writes=True, verify=agents_written),
+    Case("35 prompt", "full-width letters (was 'only symbols or emoji')", lambda r: GENERATE[:4] + ["--preset", "normal", "--prompt", "\uff54\uff57\uff4f \uff4e\uff55\uff52\uff53\uff45\uff53 \uff57\uff41\uff4c\uff4b \uff54\uff4f \uff54\uff48\uff45 \uff43\uff41\uff46\uff45\uff54\uff45\uff52\uff49\uff41", "--out", str(r / "out")], model=True, writes=True, verify=agents_written),
+    Case("35 prompt", "a full-width minus (-5)", lambda r: GENERATE[:4] + ["--preset", "normal", "--prompt", "\uff0d\uff15 people walk to the cafeteria", "--out", str(r / "out")], model=True),
     # the Gym environment
     gym("action:'fast'"), gym("action:{'v': 1}"), gym("action:complex(1, 2)"), gym("action:10**400"),
     gym("{'control_period': float('inf')}"), gym("{'control_period': '0.2'}"), gym("reset:{'scenario': float('nan')}"),
@@ -468,6 +499,8 @@ def run(case: Case) -> tuple[int, str, float, bool]:
         started = time.perf_counter()
         stdout = open(case.stdout_to, "w") if case.stdout_to else subprocess.PIPE  # noqa: SIM115
         command = [sys.executable, "-c", case.python] if case.python else GROVE
+        if case.wrap:
+            command = [part.replace("{root}", str(root)) for part in case.wrap] + command
         cwd = root / "elsewhere" if (root / "elsewhere").is_dir() else root
         try:
             done = subprocess.run(command + argv, stdout=stdout, stderr=subprocess.PIPE, text=True,

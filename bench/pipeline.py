@@ -10,7 +10,8 @@ synthesis spent evaluating the prompt before the first token (prefill), bundle w
 
 `--edits` times follow-ups instead (issue 34): per preset, scenarios of three groups are generated
 through `GroveSession.generate`, then edited through `GroveSession.refine` by follow-ups that touch
-one group and call the model (one adds a group, one changes what a group does); each edit is timed
+one group (one adds a group, one changes what a group does; the model writes the group, except
+under the emergency preset, where an evacuating group's tree is the field's); each edit is timed
 from the sentence to the written bundle, against the whole scenario's generation with the same model
 in the same run. The target: an edit at most half the time of a generation.
 

@@ -28,6 +28,11 @@ Figures (2 shared cores, 500 agents, 120x40, --fps 30):
 - 2026-11-25 19:03, blank cells merged into the run before them, counters paced: 14.6 fps at load 6.5;
   --peer (the map before), 2 rounds at load 6-7: 15.0 against 15.9 (machine-bound at that load).
 
+- 2026-11-28 (issue 31), counters on, 1x then 8x, load 9.2-10.1: 14.5 fps at 120x40 and 15.8 at 80x24;
+  at 8x 8.2-8.9 fps at 3.0-3.4x real time (main before: 0.9 fps at 8x, the picture held while a
+  400-step backlog ran); counters at most 0.27 s behind at 1x and 0.26 s at 8x. Details in
+  docs/BENCHMARKS.md, issue 31.
+
 Key latency (--key-latency, 120x40; timed from the Key event to the first painted update of its
 screen, and main measured with `--tree` in the same hour):
 - load 0.7: median 17 / p90 29 ms while the model writes, idle p90 22 ms (main: 29 / 53 ms, idle p90 73 ms).
@@ -69,7 +74,7 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
     from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
-    from grove_tui.bt.ports import parse_point_list
+    from grove_tui.bt.format.ports import parse_point_list
     from grove_tui.generation.waypoints import inject_waypoints
     from grove_tui.world import load_world
 

@@ -178,6 +178,9 @@ class BTError(BadInputError):
 
     title = "Behavior tree error"
     hint = "`grove bt validate FILE` lists every problem; `grove bt manifest` shows the nodes and ports."
+    # the place apart, when the problem is at one (grove_tui.bt.format.source.located_error)
+    line: int | None = None
+    detail: str | None = None
 
 
 class InputLimitError(BadInputError):

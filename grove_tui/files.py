@@ -9,7 +9,8 @@ picture, metrics.json, the dataset index), goes through `atomic_directory` or `a
 - what may be replaced is decided by the caller's `owned` test (a folder holding `scenario.yaml` is
   a bundle, one holding an export marker is an export, an .mcap carrying GROVE's metadata is a
   GROVE export): anything else is refused unless the user said `--overwrite`; an empty folder is
-  used as is, and device nodes, pipes and sockets are never touched;
+  used as is, and device nodes, pipes, sockets and mount points (which no rename can replace) are never
+  touched;
 - a symbolic link is never followed: writing through one could replace a file anywhere;
 - a name that is one of a protected folder's own files (`protect_folders`: a bundle's scenario.yaml,
   trees/, grid.npz...) is refused to every writer but that folder's own;
@@ -227,6 +228,8 @@ def check_output_file(path: str | os.PathLike[str], *, owned: OwnedTest | None =
     if not stat.S_ISREG(mode):
         raise OutputError(f"{target}: is {'a folder' if stat.S_ISDIR(mode) else _kind(mode)}, not a file; "
                           f"choose a file path for the {what}")
+    if _is_mount_point(target):  # a file bound over another: a rename onto it fails (EBUSY)
+        raise OutputError(f"{target}: is a mount point, which cannot be replaced in one step; choose another path")
     if owned is None or overwrite or owned(target):
         return target
     raise OutputError(f"{target}: exists and is not a {what}; choose another path, or pass {flag} to replace it")
@@ -353,6 +356,23 @@ def _kind(mode: int) -> str:
     return "not a folder"
 
 
+def _is_mount_point(path: Path) -> bool:
+    """Whether `path` is a mount point, bind mounts on the same file system included (os.path.ismount
+    compares devices and misses those; the kernel's mount table does not)."""
+    if os.path.ismount(path):
+        return True
+    try:
+        with open("/proc/self/mountinfo", "rb") as table:
+            points = {line.split(b" ")[4] for line in table if line.count(b" ") >= 5}
+    except OSError:
+        return False
+    # The table escapes space, tab, newline and backslash in octal.
+    real = os.fsencode(os.path.realpath(path))
+    for char in (b"\\", b" ", b"\t", b"\n"):
+        real = real.replace(char, b"\\%03o" % ord(char))
+    return real in points
+
+
 def _make_parents(target: Path) -> list[Path]:
     """Create the missing folders above `target`; the ones created, outermost first (to undo on failure)."""
     missing: list[Path] = []
@@ -431,6 +451,10 @@ def check_output_dir(path: str | os.PathLike[str], *, owned: OwnedTest, what: st
         raise OutputError(f"{target}: cannot inspect it: {exc.strerror}") from None
     if not stat.S_ISDIR(mode):
         raise OutputError(f"{target}: is {_kind(mode)}, not a folder; choose a folder path for the {what}")
+    if _is_mount_point(target):
+        # An output folder is replaced in one rename, which the kernel refuses for a mount point (EBUSY).
+        raise OutputError(f"{target}: is a mount point, which cannot be replaced in one step; choose a new "
+                          f"folder inside it for the {what}")
     if not os.access(target.parent, os.W_OK | os.X_OK):
         raise OutputError(f"{target}: cannot replace it ({target.parent} is not writable)")
     try:
@@ -577,7 +601,7 @@ def _swap_in(staging: Path, target: Path) -> None:
             os.replace(staging, target)
         write_point(f"dir:{target.name}:swapped")
     except OSError as exc:
-        if exc.errno in (errno.EACCES, errno.EPERM, errno.EROFS):
+        if exc.errno in (errno.EACCES, errno.EPERM, errno.EROFS, errno.EBUSY, errno.EXDEV):
             raise OutputError(f"{target}: cannot write there: {exc.strerror}") from None
         raise
 

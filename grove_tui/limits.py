@@ -37,7 +37,7 @@ MAX_GROUPS = 16
 MAX_SCENARIO_AGENTS = MAX_GROUPS * MAX_GROUP_COUNT
 
 # Coordinates in metres a scenario can use: the bound of the behavior-tree ports that carry points
-# (GoTo x/y, bt/manifest.py). A world, an imported scenario or a bundle beyond it would load and then
+# (GoTo x/y, bt/format/manifest.py). A world, an imported scenario or a bundle beyond it would load and then
 # fail at generation ("GoTo port x above maximum 10000"), so every reader refuses it up front.
 MAX_COORDINATE = 10_000.0
 # Grids and velocity fields pad the world by a few cells: their stored origins may lie this far out.

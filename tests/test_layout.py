@@ -64,9 +64,13 @@ def test_no_fixture_is_defined_twice():
 
 
 def test_test_folders_mirror_the_packages():
-    """tests/<package>/ holds the tests of grove_tui/<package>/; tests of top-level modules sit in tests/."""
-    packages = {path.parent.name for path in (REPO / "grove_tui").glob("*/__init__.py")}
-    folders = {path.name for path in TESTS.iterdir() if path.is_dir() and path.name not in NOT_PACKAGES}
+    """tests/<package>/[<subpackage>/] holds the tests of grove_tui/<package>/[<subpackage>/] (tests/bt/format
+    for grove_tui/bt/format); tests of top-level modules sit in tests/."""
+    packages = {path.parent.relative_to(REPO / "grove_tui").as_posix()
+                for path in (REPO / "grove_tui").rglob("__init__.py") if path.parent != REPO / "grove_tui"}
+    folders = {path.relative_to(TESTS).as_posix() for path in TESTS.rglob("*")
+               if path.is_dir() and not NOT_PACKAGES.intersection(path.relative_to(TESTS).parts)}
+    assert "bt/format" in packages and "bt" in folders  # the scan sees nested packages and folders
     assert folders <= packages, f"test folders with no package of that name: {sorted(folders - packages)}"
 
 

@@ -29,10 +29,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import yaml
 
-from grove_tui.bt.document import TreeDocument, TreeElement
-from grove_tui.bt.manifest import NODES, SUBTREE
-from grove_tui.bt.ports import format_point_list
-from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
+from grove_tui.bt.format.document import TreeDocument, TreeElement
+from grove_tui.bt.format.manifest import NODES, SUBTREE
+from grove_tui.bt.format.ports import format_point_list
+from grove_tui.bt.format.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, EvalError, GroveError
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent

@@ -28,8 +28,8 @@ from typing import Any
 
 import yaml
 
-from grove_tui.bt.manifest import NODES
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import EvalError
 from grove_tui.scenario.bundle import load_report, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario

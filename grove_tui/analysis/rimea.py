@@ -214,8 +214,8 @@ def evacuate(world, starts: list[tuple[float, float]], exit_of: list[str], param
     """
     if isinstance(params, JuPedSimModel):
         return _evacuate_jupedsim(world, starts, exit_of, radius=radius, speed=speed, limit=limit, line_x=line_x)
-    from grove_tui.bt.document import TreeDocument, node
-    from grove_tui.bt.xml import validate_document
+    from grove_tui.bt.format.document import TreeDocument, node
+    from grove_tui.bt.format.xml import validate_document
     from grove_tui.navigation.grid import build_grid
     from grove_tui.navigation.theta_star import ThetaStarPlanner
     from grove_tui.navigation.velocity_field import build_velocity_field

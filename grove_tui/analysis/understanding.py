@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import GroveError, UnderstandingError
 
 if TYPE_CHECKING:
@@ -255,7 +255,7 @@ def default_reader() -> Reader:
 def run_reading(cases: Sequence[UnderstandingCase],
                 reader: Reader | None = None) -> list[ReadingScore]:
     """Read every case's prompt and score it; a reader exception is a failed case, not a crash."""
-    from grove_tui.bt.manifest import NODES
+    from grove_tui.bt.format.manifest import NODES
     from grove_tui.world import load_world
 
     reader = reader or default_reader()

@@ -1,8 +1,10 @@
-"""Behavior trees: the node manifest (manifest.py), the tree document stages pass between them
-(document.py), the one hardened reader and writer of BT.CPP v4 XML (xml.py) and port-text codec
-(ports.py), and the v4 runtime in simulation time: tree_node.py, blackboard.py, controls.py,
-decorators.py, factory.py, with the BT.CPP, HuNavSim and GROVE leaves in leaves/."""
+"""Behavior trees, in two layers (BehaviorTree.CPP's and py_trees' split):
 
-from grove_tui.bt.xml import BTError
+- `format/`: trees as documents: the node manifest, the `TreeDocument` stages pass between them, the one
+  hardened reader and writer of BT.CPP v4 XML, `<include>`, the port-text codec and HuNavSim's node set.
+- `runtime/`: trees that tick in simulation time: tree nodes, blackboard, controls, decorators, the
+  factory that builds a runnable tree from a document, and BT.CPP's own leaves.
 
-__all__ = ["BTError"]
+The runtime reads the format, never the other way round. The leaves that act on pedestrians (GROVE's
+and HuNavSim's) sit with the crowd they move, in grove_tui/crowd/leaves/.
+"""

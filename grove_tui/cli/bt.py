@@ -18,7 +18,7 @@ def bt() -> None:
 @click.option("--preset", default=None, help="Only the nodes the model may use in this preset.")
 def manifest(as_list: bool, preset: str | None) -> None:
     """Print every node as a Groot2/BehaviorTree.CPP v4 TreeNodesModel."""
-    from grove_tui.bt.manifest import NODES, nodes_for_preset, treenodes_model_xml
+    from grove_tui.bt.format.manifest import NODES, nodes_for_preset, treenodes_model_xml
 
     if not as_list and preset is None:
         click.echo(treenodes_model_xml(), nl=False)
@@ -39,7 +39,8 @@ def validate(files: tuple[str, ...]) -> None:
     file could not be read at all (missing, a folder, device or pipe, over the size limit). Every file
     is still checked; the highest status wins.
     """
-    from grove_tui.bt.xml import MAX_BYTES, check_tree_bytes, read_file_bytes
+    from grove_tui.bt.format.source import MAX_BYTES, read_file_bytes
+    from grove_tui.bt.format.xml import check_tree_bytes
     from grove_tui.errors import EXIT_BAD_INPUT, BTError, print_error
 
     bad = unreadable = 0

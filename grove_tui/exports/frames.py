@@ -19,7 +19,7 @@ from grove_tui.crowd.recording import CSV_COLUMNS, ROBOT_ID
 from grove_tui.errors import StreamExportError
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.exports.scene import Scene, scene_of
 from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle, load_bundle_world
 from grove_tui.scenario.events import EVENTS_FILE, MAX_EVENTS_BYTES, SimEvent, read_events

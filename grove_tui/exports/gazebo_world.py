@@ -24,7 +24,7 @@ _ATTRIBUTE_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"':
 
 def quoteattr(value: str) -> str:
     """An SDF attribute value in double quotes (names come from the world file; escape what XML needs).
-    Not xml.sax.saxutils: XML libraries belong to grove_tui/bt/ (tests/bt/test_bt_ownership.py)."""
+    Not xml.sax.saxutils: XML libraries belong to grove_tui/bt/format/ (tests/bt/format/test_bt_ownership.py)."""
     return '"' + str(value).translate(_ATTRIBUTE_ESCAPES) + '"'
 
 

@@ -27,7 +27,7 @@ or by file and function where it gives none:
   declared PARAMETER_INTEGER_ARRAY; an empty YAML list has no type and aborts the loader, so every agent
   lists at least one goal (its tree's goals, else its start). exports/hunav_loader_check.py emulates it.
 - bt_node.cpp (2.0, `tree_tick`) ticks every root on each ComputeAgents call and BT.CPP 4 resets a
-  completed root, so each tree runs once and then holds its final state (bt/hunav_compat.wrap_for_hunav).
+  completed root, so each tree runs once and then holds its final state (bt/format/hunav_compat.wrap_for_hunav).
 - go_to_node.cpp@306ec99c4451165c9322ab057ad00a0b6fabdbf8:49 sets the temporary goal's radius to 0.1 and
   :71 finishes on `goalReached` (radius + 0.1 m), whatever `tolerance` says: every GoTo is written with
   the 0.2 m HuNavSim applies.
@@ -59,12 +59,13 @@ import numpy as np
 import yaml
 
 from grove_tui.files import atomic_directory, check_output_dir, refuse_overlap, safe_file_name
-from grove_tui.bt.hunav_compat import (hunav_loading_problems, label_clocks, prefix_node_ids,
-                                       restrict_to_hunav_ports, wrap_for_hunav)
-from grove_tui.bt.manifest import NODES, treenodes_model_xml
-from grove_tui.bt.document import TreeDocument, TreeElement, node
-from grove_tui.bt.ports import parse_point_list
-from grove_tui.bt.xml import check_tree_text, read_tree, write_tree
+from grove_tui.bt.format.hunav_compat import (
+    hunav_loading_problems, label_clocks, prefix_node_ids, restrict_to_hunav_ports, wrap_for_hunav,
+)
+from grove_tui.bt.format.manifest import NODES, treenodes_model_xml
+from grove_tui.bt.format.document import TreeDocument, TreeElement, node
+from grove_tui.bt.format.ports import parse_point_list
+from grove_tui.bt.format.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
@@ -259,8 +260,8 @@ def _far_from(other: int, threshold: float) -> TreeElement:
 
 
 def _aside_spot(service: Point, heading: float, rank: int, ctx: _AgentContext) -> Point:
-    """Where the rank-th served person steps to: GROVE's rule (bt/leaves/grove.py `_aside`), one spot each."""
-    from grove_tui.bt.leaves.grove import ASIDE_SPACING, STEP_ASIDE
+    """Where the rank-th served person steps to: GROVE's rule (crowd/leaves/grove.py `_aside`), one spot each."""
+    from grove_tui.crowd.leaves.grove import ASIDE_SPACING, STEP_ASIDE
 
     dx, dy = math.cos(heading), math.sin(heading)
     spots: list[Point] = []
@@ -452,11 +453,11 @@ def _approach(el: TreeElement, start: Point) -> Point:
 
 def _conversation_spots(scenario: Scenario, trees: dict[int, TreeDocument],
                         grid: OccupancyGrid | None) -> dict[ConversationKey, dict[int, Point]]:
-    """Each conversation's spots, as GROVE's ConversationRegistry gives them (bt/coordination.py):
+    """Each conversation's spots, as GROVE's ConversationRegistry gives them (crowd/coordination.py):
     evenly around a circle of radius 0.5 + 0.2 per extra member, starting toward the first member,
     each member taking the closest free spot, closest pair first. Computed once for all members, from
     where each arrives, so every member's tree names the same circle."""
-    from grove_tui.bt.coordination import conversation_radius
+    from grove_tui.crowd.coordination import conversation_radius
 
     arrivals: dict[ConversationKey, dict[int, Point]] = {}
     centres: dict[ConversationKey, Point] = {}

@@ -4,7 +4,7 @@ Both agents-YAML layouts HuNavSim has shipped are read (exports/hunav_loader_che
 - 2.0: `global_goals` {id: {x, y}}, each agent's `goals` a list of ids, `behavior.type` a name, and
   one tree per agent, `<yaml_base_name>__agent_<id>_bt.xml` (bt_node.cpp, `initializeBehaviorTree`),
   looked up beside the YAML, in `--trees`, or in the wrapper layout's `../behavior_trees/`; its
-  `<include>`s are inlined (bt/include.py) for GROVE to run it;
+  `<include>`s are inlined (bt/format/include.py) for GROVE to run it;
 - 1.0: each agent's `goals` a list of names, each name a block {x, y, h}, `behavior` a type number
   (or a block whose `type` is one). HuNavSim 1.0 runs a fixed tree per behavior; GROVE gives each agent
   HuNavSim's regular navigation tree, and its simulation wraps the behavior's robot reaction around it.
@@ -44,9 +44,10 @@ from typing import Any
 
 import yaml
 
-from grove_tui.bt.include import included_files, resolve_includes
-from grove_tui.bt.document import TreeDocument, TreeElement, node
-from grove_tui.bt.xml import BTError, check_tree_text, read_tree, write_tree
+from grove_tui.bt.format.include import included_files, resolve_includes
+from grove_tui.bt.format.document import TreeDocument, TreeElement, node
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import check_tree_text, read_tree, write_tree
 from grove_tui.errors import GroveError, HunavImportError
 from grove_tui.exports.hunav import GROVE_LINE_PREFIX, KEPT_NODE_PREFIX
 from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout, ignored_keys
@@ -112,7 +113,7 @@ def _tree_file(folder_candidates: list[Path], base: str, agent_id: int) -> Path:
 
 def _grove_names(xml: bytes, source: str) -> str:
     """Trees an export wrote with --keep-grove-nodes name GROVE nodes Grove<Node>: give them back."""
-    from grove_tui.bt.manifest import NODES
+    from grove_tui.bt.format.manifest import NODES
 
     document = read_tree(xml, source)
     for element in document.nodes():

@@ -13,7 +13,7 @@ so `<agent>.goals` (declared PARAMETER_INTEGER_ARRAY) must be a non-empty list o
 reads `global_goals.<n>.x/y` for n = 1, 2, ... and stops at the first gap, and declares a goal id it
 did not find with the default (0.0, 0.0): ids must be consecutive from 1 and every referenced id must
 exist. bt_node.cpp then loads `<yaml_base_name>__agent_<id>_bt.xml` per agent; those trees are
-checked against HuNavSim's registered nodes (bt/hunav_compat.hunav_loading_problems).
+checked against HuNavSim's registered nodes (bt/format/hunav_compat.hunav_loading_problems).
 """
 
 from __future__ import annotations
@@ -23,8 +23,8 @@ from typing import Any
 
 import yaml
 
-from grove_tui.bt.hunav_compat import hunav_loading_problems
-from grove_tui.bt.include import resolve_includes
+from grove_tui.bt.format.hunav_compat import hunav_loading_problems
+from grove_tui.bt.format.include import resolve_includes
 from grove_tui.errors import BTError
 
 # hunav_loader.cpp: name -> declared type ("double" accepts only floats: rclcpp does not convert)

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from grove_tui.bt.document import TreeDocument
+from grove_tui.bt.format.document import TreeDocument
 from grove_tui.errors import ExportError, GroveError
 from grove_tui.navigation.grid import OccupancyGrid, check_grid_shape
 from grove_tui.scenario.model import AgentSpec, HunavBehavior, Scenario

@@ -117,7 +117,7 @@ class Draft:
 
 
 def _manifest() -> Mapping[str, Any]:
-    from grove_tui.bt.manifest import NODES
+    from grove_tui.bt.format.manifest import NODES
 
     return NODES
 

@@ -2,8 +2,8 @@
 
 The robot's planner treats these as obstacles (issue 21 item 13): a path that runs through a queue
 or a circle of talking people is planned around it. The geometry is the runtime's own: the queue's
-heading, slots and the spots served people step to come from `bt.coordination` and
-`bt.leaves.grove` evaluated on the occupancy grid (the simulation asks the same grid), and a circle's
+heading, slots and the spots served people step to come from `crowd.coordination` and
+`crowd.leaves.grove` evaluated on the occupancy grid (the simulation asks the same grid), and a circle's
 radius is HuNavSim's `conversation_radius`.
 """
 
@@ -17,10 +17,10 @@ from typing import Any
 
 import numpy as np
 
-from grove_tui.bt.coordination import ServiceQueue, conversation_radius, queue_line_direction, queue_spacing
-from grove_tui.bt.document import TreeDocument
-from grove_tui.bt.leaves.grove import aside_spot
-from grove_tui.bt.manifest import NODES
+from grove_tui.crowd.coordination import ServiceQueue, conversation_radius, queue_line_direction, queue_spacing
+from grove_tui.bt.format.document import TreeDocument
+from grove_tui.crowd.leaves.grove import aside_spot
+from grove_tui.bt.format.manifest import NODES
 
 Point = tuple[float, float]
 
@@ -111,7 +111,7 @@ def predict_formations(world: Any, grid: Any, trees: Iterable[TreeDocument], goa
     for (name, point), entry in queues.items():
         spacing = queue_spacing(entry["spacing"], [PERSON_RADIUS])
         direction, free_length = queue_line_direction(space, name, point, spacing)
-        queue = ServiceQueue(name, point, direction, spacing, 0.0, free_length, space)  # type: ignore[arg-type]
+        queue = ServiceQueue(name, point, direction, spacing, 0.0, free_length, space)
         slots = tuple(queue.slot_point(k) for k in range(entry["people"]))
         spots = tuple(aside_spot(space, queue) for _ in range(entry["staying"]))
         formations.append(Formation("queue", name, slots, spots))  # slot 0 is the service point

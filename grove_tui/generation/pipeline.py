@@ -23,7 +23,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
@@ -34,6 +35,7 @@ from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.quantities import Quantity, extract_quantities
 from grove_tui.language.reading import Count, GroupReading, PromptReading, effective_counts, read_prompt
+from grove_tui.language.text import normalise
 from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
@@ -322,7 +324,9 @@ class GenerationPipeline:
         emit = on_event or _no_event
         t0 = clock.begin("rois")
         if reading is None:
-            check_stated_counts(prompt, extract_quantities(prompt))  # no words, negative or zero counts: refused
+            # Checked on the text the reader reads: full-width letters are words, "－５" is negative.
+            typed = normalise(prompt)
+            check_stated_counts(typed, extract_quantities(typed))  # no words, negative or zero counts: refused
             reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
         quantities = quantities_from_reading(reading)
         selection = select_rois(world, preset, prompt, self.matcher, reading=reading)

@@ -19,10 +19,10 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.bt.document import TreeDocument
-from grove_tui.bt.manifest import NODES
-from grove_tui.bt.ports import parse_point_list
-from grove_tui.bt.xml import write_tree
+from grove_tui.bt.format.document import TreeDocument
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.bt.format.ports import parse_point_list
+from grove_tui.bt.format.xml import write_tree
 from grove_tui.errors import Cancelled
 from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
 from grove_tui.generation.formations import (

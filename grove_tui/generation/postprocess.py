@@ -18,11 +18,11 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.bt.document import TreeDocument, TreeElement
-from grove_tui.bt.manifest import NODES, NodeSpec
-from grove_tui.bt.coordination import conversation_radius, queue_line_direction
-from grove_tui.bt.ports import format_port_value
-from grove_tui.bt.xml import write_tree
+from grove_tui.bt.format.document import TreeDocument, TreeElement
+from grove_tui.bt.format.manifest import NODES, NodeSpec
+from grove_tui.crowd.coordination import conversation_radius, queue_line_direction
+from grove_tui.bt.format.ports import format_port_value
+from grove_tui.bt.format.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.presets import GenerationError, Preset, PromptError
 from grove_tui.generation.reconcile import reconcile
@@ -653,7 +653,7 @@ class FreeSpace:
 
 
 # Spawns keep this far from every exit door's centre: twice the distance at which an evacuee
-# counts as gone (bt.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
+# counts as gone (crowd.leaves.grove.EXIT_RADIUS, 0.6 m), so no one is born evacuated or in the doorway.
 SPAWN_EXIT_CLEARANCE = 1.2
 # A conversation circle's centre keeps its radius plus this from walls and furniture (a body and a step
 # round it), and this much more from the zone's doors.
@@ -779,7 +779,7 @@ class TargetResolver:
     def _queue_slot(self, entity: Any, base: Point, k: int) -> Point:
         """Sequential allocation: the k-th person sent to a service point walks to the k-th place of its line.
 
-        The line is the one the simulation's queue will form (bt.coordination.queue_line_direction, the
+        The line is the one the simulation's queue will form (crowd.coordination.queue_line_direction, the
         heading with the most free floor, preferring straight out from the counter), so nobody is sent
         behind shelves the line never crosses; where it would leave the zone or hit an obstacle the
         person is sent to the nearest free spot of the zone instead.

@@ -29,8 +29,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from grove_tui.bt.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
-from grove_tui.bt.manifest import NODES
+from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts

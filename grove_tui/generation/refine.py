@@ -31,15 +31,16 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from grove_tui.bt.xml import BTError, parse_tree_text
-from grove_tui.errors import AmbiguousEditError, EditError, GenerationError
+from grove_tui.bt.format.xml import parse_tree_text
+from grove_tui.errors import AmbiguousEditError, BTError, EditError, GenerationError, GroveError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations
 from grove_tui.generation.pipeline import (Event, GenerationPipeline, GenerationResult, StageClock, group_records,
                                            world_reference)
 from grove_tui.generation.planning import CachedPlanner, RobotRequest, plan_operational, plan_robot
 from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed, place_groups, plan_groups
-from grove_tui.generation.reconcile import grounding_report
+from grove_tui.generation.presets import load_preset
+from grove_tui.generation.reconcile import grounding_report, tree_for
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.scene import Scene, SceneGroup, placed_scene
 from grove_tui.generation.synthesis import describe_reading_groups
@@ -108,9 +109,14 @@ def step_seed(seed: int, step: int) -> int:
 
 # ---- planning the edit (no model, no geometry) -------------------------------------------------------------
 
-def plan_refinement(scene: Scene, edit: EditReading) -> Refinement:
+def plan_refinement(scene: Scene, edit: EditReading, evacuation_field: bool | None = None) -> Refinement:
     """What the follow-up does to the scene's groups and robot, as a diff; EditError when it changes
-    nothing or leaves nobody, AmbiguousEditError when it names a group that could be several."""
+    nothing or leaves nobody, AmbiguousEditError when it names a group that could be several.
+
+    `evacuation_field`: the scenario's preset evacuates along velocity fields (default: read from
+    its preset), so an evacuating group's tree is the field to its exit and needs no model."""
+    if evacuation_field is None:
+        evacuation_field = _evacuates_by_field(scene.scenario.preset)
     if edit.ambiguities():
         raise ambiguity_error(scene, edit)
     step = scene.steps + 1
@@ -145,10 +151,12 @@ def plan_refinement(scene: Scene, edit: EditReading) -> Refinement:
         if not fields:
             planned.append(PlannedGroup(g.reading, KEPT, g, False, g.asked_by, g.changed_by))
             continue
-        regenerate = any(f in REGENERATING_FIELDS for f in fields)
+        regenerate = any(f in REGENERATING_FIELDS for f in fields) and \
+            not _fixed_by_reading(current[g.index], evacuation_field)
         planned.append(PlannedGroup(current[g.index], CHANGED_STATUS, g, regenerate, g.asked_by,
                                     g.changed_by + (step,), tuple(fields)))
-    planned += [PlannedGroup(r, ADDED_STATUS, None, True, step) for r in added]
+    planned += [PlannedGroup(r, ADDED_STATUS, None, not _fixed_by_reading(r, evacuation_field), step)
+                for r in added]
     robot = _robot_plan(scene, edit)
     if not planned:
         raise EditError(f"'{edit.sentence}' would leave nobody in the scenario", hint="Keep at least one group.")
@@ -179,6 +187,20 @@ def describe_group(scene: Scene, index: int) -> str:
         return "a group this sentence adds"
     g = scene.groups[index]
     return summary_of(g.reading, g.count).text()
+
+
+def _evacuates_by_field(preset_name: str) -> bool:
+    try:
+        return load_preset(preset_name).velocity == "field"
+    except GroveError:  # a preset this installation does not have: the model writes every tree
+        return False
+
+
+def _fixed_by_reading(reading: GroupReading, evacuation_field: bool) -> bool:
+    """Whether the reading alone gives the group's tree, so asking the model would only cost time:
+    evacuees under a preset that evacuates along fields follow the field to their exit (reconciliation
+    keeps nothing else of a model's evacuation tree)."""
+    return evacuation_field and reading.intent == "evacuate"
 
 
 def _changed_fields(old: GroupReading, new: GroupReading) -> list[str]:
@@ -312,6 +334,8 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     first_index = _first_free_index(scene)
     regenerated = [p for p in refinement.groups if p.regenerate]
     reused = [p for p in refinement.groups if p.status == CHANGED_STATUS and not p.regenerate]
+    # Added groups the model does not write: their tree is the reading's own (`_fixed_by_reading`).
+    fixed = [p for p in refinement.groups if p.status == ADDED_STATUS and not p.regenerate]
     plans: dict[int, GroupPlan] = {}  # id(PlannedGroup) -> its GroupPlan
     tokens = (0, 0)
     selection = None
@@ -335,7 +359,15 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     t0 = clock.begin("postprocess")
     if selection is None:
         selection = select_rois(world, preset, text, pipeline.matcher,
-                                reading=PromptReading(text, tuple(p.reading for p in reused)))
+                                reading=PromptReading(text, tuple(p.reading for p in reused + fixed)))
+    for p in fixed:
+        tree = tree_for(p.reading, world, evacuation_field=preset.velocity == "field")
+        spawn = p.reading.start or (selection.zones[0] if selection.zones else world.zones[0].name)
+        draft = Draft((DraftGroup(p.reading.label, p.reading.count.value, spawn, tree),))
+        (made_one,) = plan_groups(world, preset, draft, [], selection, text, (), PromptReading(text, (p.reading,)),
+                                  notes, first_index=first_index)
+        plans[id(p)] = made_one
+        first_index += 1
     for p in reused:
         assert p.source is not None
         tree = _routine(p.source.tree)
@@ -496,6 +528,8 @@ def _robot(pipeline: GenerationPipeline, scene: Scene, refinement: Refinement, p
             elif (task.start or task.via) and not task.destination:
                 request = RobotRequest(goal=current.goal)
         reading = PromptReading(refinement.edit.sentence, (), robot=task)
+        if task.task == "follow":  # whom it follows is a group of the scenario, kept or new
+            reading, everyone = _whole_view(scene, refinement, everyone, task)
     try:
         return plan_robot(world, grid, CachedPlanner(world.name, pipeline.planner, pipeline.plan_cache), everyone,
                           request, seed, notes, reading=reading)
@@ -515,6 +549,24 @@ def _everyone(scene: Scene, kept: Sequence[SceneGroup], post: PostProcessed) -> 
                                     document=scene.document(a)))
     agents += post.agents
     return PostProcessed(agents, list(post.groups), post.exit, list(post.goals), [], list(post.exits))
+
+
+def _whole_view(scene: Scene, refinement: Refinement, everyone: PostProcessed,
+                robot: RobotReading) -> tuple[PromptReading, PostProcessed]:
+    """The refined scenario as one sentence's reading and groups (reading_index into it), for the
+    robot's planner to find the group its clause names among kept and new groups alike."""
+    readings = tuple(p.reading for p in refinement.groups)
+    new_groups = iter(everyone.groups)  # in the order of the groups placed (added and changed)
+    groups: list[GroupPlan] = []
+    for i, p in enumerate(refinement.groups):
+        if p.status == KEPT and p.source is not None:
+            g = p.source
+            groups.append(GroupPlan(-1000 - i, g.label, len(g.members), g.spawn, g.tree, None,
+                                    member_ids=list(g.members), reading_index=i))
+        else:
+            groups.append(replace(next(new_groups), reading_index=i))
+    view = PostProcessed(everyone.agents, groups, everyone.exit, list(everyone.goals), [], list(everyone.exits))
+    return PromptReading(refinement.edit.sentence, readings, robot=robot), view
 
 
 # ---- the grounding report --------------------------------------------------------------------------------

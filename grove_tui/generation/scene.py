@@ -19,9 +19,9 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from grove_tui.bt.document import TreeDocument, TreeElement
-from grove_tui.bt.manifest import NODES
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.document import TreeDocument, TreeElement
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import BundleError
 from grove_tui.generation.draft import DraftNode, written_ports
 from grove_tui.generation.pipeline import GenerationResult, own_reading

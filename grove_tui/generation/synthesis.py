@@ -28,7 +28,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import (
     Draft,
     DraftError,

@@ -12,10 +12,10 @@ nothing.
 
 from __future__ import annotations
 
-from grove_tui.bt.document import TreeDocument, TreeElement
-from grove_tui.bt.manifest import NODES
-from grove_tui.bt.ports import format_point_list
-from grove_tui.bt.xml import read_tree, write_tree
+from grove_tui.bt.format.document import TreeDocument, TreeElement
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.bt.format.ports import format_point_list
+from grove_tui.bt.format.xml import read_tree, write_tree
 from grove_tui.navigation.theta_star import PlanningError
 
 WAYPOINTS_PORT = "waypoints"

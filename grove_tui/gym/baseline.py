@@ -39,7 +39,7 @@ FACING_WEIGHT = 0.2  # unicycle: cost (m/s) per radian left between the heading 
 class PathFollowingVOPolicy:
     """Call `act(observation)` once per step of the environment it was made for (reset first)."""
 
-    def __init__(self, env: Any) -> None:
+    def __init__(self, env: Any) -> None:  # Any: a SocialNavEnv or a Gymnasium wrapper around one
         self.env = env.unwrapped if hasattr(env, "unwrapped") else env
 
     def act(self, observation: dict[str, np.ndarray]) -> np.ndarray:

@@ -82,7 +82,7 @@ REWARD_WEIGHT_BOUND = Bound(-1000.0, 1000.0)
 REWARD_DISTANCE_BOUND = Bound(0.0, 10.0, "m", low_open=True)
 
 
-def _short(value: Any) -> str:
+def _short(value: Any) -> str:  # Any: whatever a caller passed, shown in an error
     try:
         text = repr(value)
     except ValueError:  # an int too long to print
@@ -90,7 +90,7 @@ def _short(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def checked_number(value: Any, name: str, bound: Bound) -> Any:
+def checked_number(value: Any, name: str, bound: Bound) -> Any:  # Any: user input in, int or float (bound.whole) out
     """`value` as a float (int when `bound.whole`) inside `bound`; GymError naming `name` otherwise."""
     wanted = f"{name} must be {bound.describe()}"
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
@@ -113,13 +113,13 @@ def checked_number(value: Any, name: str, bound: Bound) -> Any:
     return number
 
 
-def checked_text(value: Any, name: str) -> str:
+def checked_text(value: Any, name: str) -> str:  # Any: user input before validation
     if not isinstance(value, str) or not value.strip():
         raise GymError(f"{name} must be a non-empty string, got {_short(value)}")
     return value
 
 
-def checked_seeds(seeds: Any) -> list[int]:
+def checked_seeds(seeds: Any) -> list[int]:  # Any: user input before validation
     """Seeds for generated scenarios: an iterable of whole numbers in 0..2**32-1, at most MAX_SCENARIOS."""
     if isinstance(seeds, (str, bytes, dict)) or not isinstance(seeds, Iterable):
         raise GymError(f"seeds must be a list of whole numbers (one scenario each), got {_short(seeds)}")
@@ -131,7 +131,7 @@ def checked_seeds(seeds: Any) -> list[int]:
     return out
 
 
-def checked_paths(bundles: Any) -> list[str | os.PathLike[str]]:
+def checked_paths(bundles: Any) -> list[str | os.PathLike[str]]:  # Any: user input before validation
     """One bundle folder or an iterable of them (strings or paths), at most MAX_SCENARIOS."""
     if isinstance(bundles, (str, os.PathLike)):
         return [bundles]

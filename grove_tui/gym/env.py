@@ -52,6 +52,8 @@ from grove_tui.gym.config import (BEHAVIORS, ENV_BOUNDS, Bound, KINEMATICS, MAX_
 from grove_tui.gym.observation import (PEDESTRIAN_COLUMNS, behavior_one_hot, nearest_pedestrians,
                                        occupancy_patch, rotation, segment_clear, wall_distance)
 from grove_tui.gym.scenarios import LoadedScenario, bundle_list, generated_scenarios, load_scenario
+from grove_tui.scenario.model import RobotSpec
+from grove_tui.simulation.simulation import Simulation
 
 ENV_ID = "grove/SocialNav-v0"
 # HuNavSim evaluator's completion rule: within goal radius (0.3 m) + 0.3 m of the goal.
@@ -87,7 +89,7 @@ class SocialNavEnv(gymnasium.Env):
                  goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
                  reward: RewardWeights | dict | None = None,
                  observation: ObservationConfig | dict | None = None, metrics_every: int = 1,
-                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: Any) -> None:
+                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: Any) -> None:  # unknown: refused
         super().__init__()
         if unknown:
             names = ", ".join(sorted(map(str, unknown))[:5])
@@ -153,11 +155,12 @@ class SocialNavEnv(gymnasium.Env):
         max_speed = max(float(s.robot.max_vel) for s in self.scenarios)
         self.max_speed = max_speed
         if kinematics == "unicycle":
-            self.action_space = spaces.Box(low=np.array([0.0, -self.max_angular_speed], dtype=np.float32),
-                                           high=np.array([max_speed, self.max_angular_speed], dtype=np.float32),
-                                           dtype=np.float32)
+            self._action_box = spaces.Box(low=np.array([0.0, -self.max_angular_speed], dtype=np.float32),
+                                          high=np.array([max_speed, self.max_angular_speed], dtype=np.float32),
+                                          dtype=np.float32)
         else:
-            self.action_space = spaces.Box(low=-max_speed, high=max_speed, shape=(2,), dtype=np.float32)
+            self._action_box = spaces.Box(low=-max_speed, high=max_speed, shape=(2,), dtype=np.float32)
+        self.action_space = self._action_box
         k, cells = self.obs_config.pedestrians, self.obs_config.patch_cells
         big = np.float32(POSITION_LIMIT)
         self.observation_space = spaces.Dict({
@@ -168,12 +171,20 @@ class SocialNavEnv(gymnasium.Env):
             "occupancy": spaces.Box(0, 1, shape=(cells, cells), dtype=np.uint8),
         })
         self._cursor = 0
-        self.current: LoadedScenario | None = None
-        self.sim: Any = None
+        self.current: LoadedScenario | None = None  # the episode's scenario, from reset() on
+        self.sim: Simulation | None = None
         self.episode_actions: list[tuple[float, float]] = []
 
     # ---- episode -------------------------------------------------------------------------------
 
+    @property
+    def loaded(self) -> LoadedScenario:
+        """The running episode's scenario; GymResetNeeded before the first reset()."""
+        if self.current is None:
+            raise GymResetNeeded("no episode before reset()", hint="call reset() first")
+        return self.current
+
+    # Any: Gymnasium's API (options and info are free-form dicts; an action is whatever the policy gives)
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[dict, dict]:
         """Load the next scenario (options={"scenario": i} picks one), place the robot at its start."""
         super().reset(seed=seed)  # gymnasium's own error for a seed that is not a whole number >= 0
@@ -248,7 +259,7 @@ class SocialNavEnv(gymnasium.Env):
             if collision:
                 break
         if self.kinematics == "holonomic":
-            self.heading = float(crowd.robot_yaw)
+            self.heading = float(crowd.robot_yaw or 0.0)  # holonomic: the crowd turns the robot's body
         self.episode_steps += 1
         previous = self.distance_to_go
         self.distance_to_goal = self._goal_distance()
@@ -282,7 +293,7 @@ class SocialNavEnv(gymnasium.Env):
             raise GymActionError(f"{wanted}, got {_short(action)}") from None
         if not np.all(np.isfinite(command)):
             raise GymActionError(f"{wanted}, got {_short(action)}")
-        return np.clip(command, self.action_space.low, self.action_space.high)
+        return np.clip(command, self._action_box.low, self._action_box.high)
 
     def close(self) -> None:
         self._release()
@@ -296,7 +307,7 @@ class SocialNavEnv(gymnasium.Env):
 
     # ---- parts ---------------------------------------------------------------------------------
 
-    def _jittered(self, robot: Any) -> Any:
+    def _jittered(self, robot: RobotSpec) -> RobotSpec:
         """The scenario's robot with its start moved up to start_jitter metres (uniform in the disc, drawn
         from the env's seeded np_random) to a free cell of the planning grid; the planned path then
         starts there, so the subgoal logic leads the robot back onto it."""
@@ -304,22 +315,36 @@ class SocialNavEnv(gymnasium.Env):
         angle = self.np_random.uniform(-math.pi, math.pi)
         x = robot.start[0] + radius * math.cos(angle)
         y = robot.start[1] + radius * math.sin(angle)
-        free = self.current.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
+        free = self.loaded.grid.nearest_free(x, y, max_dist=self.start_jitter + 1.0)
         # a free cell behind a wall (another room) is no start nearby: keep the scenario's
         if free is None or not segment_clear(np.asarray(robot.start, float), np.asarray(free, float),
-                                             self.current.walls, float(robot.radius), self.current.boxes):
+                                             self.loaded.walls, float(robot.radius), self.loaded.boxes):
             return robot
         start = (float(free[0]), float(free[1]))
         path = (start, *robot.path[1:]) if len(robot.path) > 1 else (start, robot.goal)
         return dataclasses.replace(robot, start=start, path=path)
 
-    def _robot_pose(self) -> tuple[float, float, float, float, float]:
-        crowd = self.sim.crowd
+    @property
+    def running(self) -> Simulation:
+        """The episode's simulation; GymResetNeeded before the first reset()."""
+        if self.sim is None:
+            raise GymResetNeeded("no episode before reset()", hint="call reset() first")
+        return self.sim
+
+    def _robot_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """The robot's position and velocity (x, y): every scenario the env loads has a robot."""
+        crowd = self.running.crowd
         pos, vel = crowd.robot_pos, crowd.robot_vel
+        if pos is None or vel is None:
+            raise GymError(f"{self.loaded.bundle_dir}: the simulation has no robot")
+        return pos, vel
+
+    def _robot_pose(self) -> tuple[float, float, float, float, float]:
+        pos, vel = self._robot_state()
         return float(pos[0]), float(pos[1]), float(self.heading), float(vel[0]), float(vel[1])
 
     def _goal_distance(self) -> float:
-        pos = self.sim.crowd.robot_pos
+        pos, _ = self._robot_state()
         return float(math.hypot(self.goal[0] - pos[0], self.goal[1] - pos[1]))
 
     def observation_frame(self) -> np.ndarray:
@@ -327,8 +352,8 @@ class SocialNavEnv(gymnasium.Env):
 
     def _contact(self) -> tuple[float, str]:
         """(smallest gap to a person, "person" | "obstacle" | "") right now."""
-        crowd = self.sim.crowd
-        pos = crowd.robot_pos
+        crowd = self.running.crowd
+        pos, _ = self._robot_state()
         people = crowd.pos
         active = np.asarray(crowd.active, dtype=bool)
         gap = math.inf
@@ -337,7 +362,7 @@ class SocialNavEnv(gymnasium.Env):
             gap = float(gaps[active].min())
         if gap < COLLISION_GAP:
             return gap, "person"
-        if wall_distance(pos, self.current.walls, self.robot_radius, self.current.boxes) < self.robot_radius:
+        if wall_distance(pos, self.loaded.walls, self.robot_radius, self.loaded.boxes) < self.robot_radius:
             return gap, "obstacle"
         return gap, ""
 
@@ -356,12 +381,13 @@ class SocialNavEnv(gymnasium.Env):
         }
 
     def _observation(self) -> dict[str, np.ndarray]:
-        crowd = self.sim.crowd
+        sim = self.running
+        crowd = sim.crowd
         frame = self.observation_frame()
-        pos = crowd.robot_pos
-        vel = frame @ crowd.robot_vel
+        pos, robot_vel = self._robot_state()
+        vel = frame @ robot_vel
         robot = np.array([vel[0], vel[1], math.cos(self.heading), math.sin(self.heading), self.robot_radius,
-                          self.robot_max_speed, max(0.0, 1.0 - self.sim.time / self.time_limit)], dtype=np.float32)
+                          self.robot_max_speed, max(0.0, 1.0 - sim.time / self.time_limit)], dtype=np.float32)
         goal_xy = frame @ (self.goal - pos)
         goal = np.array([goal_xy[0], goal_xy[1], self.distance_to_goal], dtype=np.float32)
         offset = self.path[self.subgoal_index] - pos
@@ -371,7 +397,7 @@ class SocialNavEnv(gymnasium.Env):
         people = nearest_pedestrians(pos, self.robot_radius, frame, crowd.pos, crowd.vel, crowd.radius,
                                      np.asarray(crowd.active, dtype=bool), self._one_hot[self.scenario_index],
                                      cfg.pedestrians, cfg.sensor_range)
-        patch = occupancy_patch(self.current.patch_grid, pos, frame, cfg.patch_cells, cfg.patch_resolution)
+        patch = occupancy_patch(self.loaded.patch_grid, pos, frame, cfg.patch_cells, cfg.patch_resolution)
         limit = np.float32(POSITION_LIMIT)
         return {"robot": np.clip(robot, -limit, limit), "goal": np.clip(goal, -limit, limit),
                 "waypoint": np.clip(waypoint, -limit, limit),
@@ -380,8 +406,8 @@ class SocialNavEnv(gymnasium.Env):
     def _refresh_subgoal(self) -> None:
         """Advance along the planned path (see the module docstring), then the subgoal and the distance
         to go: straight to the subgoal, then along the path to the goal."""
-        pos = self.sim.crowd.robot_pos
-        path, walls, boxes = self.path, self.current.walls, self.current.boxes
+        pos, _ = self._robot_state()
+        path, walls, boxes = self.path, self.loaded.walls, self.loaded.boxes
         clearance = self.robot_radius
         while self.waypoint_index < len(path) - 1 and (
                 math.hypot(*(path[self.waypoint_index] - pos)) <= WAYPOINT_REACHED
@@ -401,8 +427,8 @@ class SocialNavEnv(gymnasium.Env):
         if done or (self.metrics_every and self.episode_steps % self.metrics_every == 0):
             self._metrics = self.episode_metrics()
         return {
-            "scenario": str(self.current.bundle_dir),
-            "time": float(self.sim.time),
+            "scenario": str(self.loaded.bundle_dir),
+            "time": float(self.running.time),
             "distance_to_goal": float(self.distance_to_goal),
             "distance_to_go": float(self.distance_to_go),
             "collision": collision,
@@ -416,7 +442,7 @@ class SocialNavEnv(gymnasium.Env):
 
     def episode_metrics(self) -> dict[str, float]:
         """HuNavSim evaluator's robot metrics of the episode so far, one sample per control period."""
-        scenario = self.current.scenario
+        scenario = self.loaded.scenario
         traj = self.history.trajectories([a.id for a in sorted(scenario.agents, key=lambda a: a.id)])
         radii = [a.radius for a in scenario.agents]
         return robot_metrics(traj, robot_radius=self.robot_radius,
@@ -432,7 +458,7 @@ class SocialNavEnv(gymnasium.Env):
         return record_episode(self, out_dir, overwrite=overwrite)
 
 
-def _short(value: Any) -> str:
+def _short(value: Any) -> str:  # Any: whatever a policy passed, shown in an error
     try:
         text = repr(value)
     except ValueError:  # an int too long to print
@@ -464,7 +490,7 @@ class _History:
         self.groups = np.full(people, -1, dtype=np.int64)
         self.size = 0
 
-    def append(self, sim: Any, pose: tuple[float, float, float, float, float]) -> None:
+    def append(self, sim: Simulation, pose: tuple[float, float, float, float, float]) -> None:
         if self.size == self.t.shape[0]:
             self._grow()
         k = self.size

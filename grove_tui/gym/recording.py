@@ -46,6 +46,7 @@ def driven_path(xy: np.ndarray, spacing: float = PATH_SPACING) -> tuple[tuple[fl
     return tuple((round(float(p[0]), 4), round(float(p[1]), 4)) for p in points)
 
 
+# env: Any, the SocialNavEnv (env.py imports this module, lazily)
 def record_episode(env: Any, out_dir: str | os.PathLike[str], overwrite: bool = False) -> Path:
     """Write `env`'s current episode (a SocialNavEnv after reset) as a bundle at `out_dir`, atomically."""
     source: Path = env.current.bundle_dir

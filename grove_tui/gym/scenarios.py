@@ -18,15 +18,19 @@ from typing import Any
 
 import numpy as np
 
-from grove_tui.bt.xml import TreeDocument, load_tree_file
+from grove_tui.bt.format.document import TreeDocument
+from grove_tui.bt.format.xml import load_tree_file
 from grove_tui.errors import GroveError, GymError
 from grove_tui.gym.observation import wall_boxes
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.settings import cache_dir
 from grove_tui.scenario.bundle import is_bundle, load_bundle, load_bundle_world
-from grove_tui.scenario.model import Scenario
+from grove_tui.crowd.sfm import SFMParams
+from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.scenario.model import RobotSpec, Scenario
 from grove_tui.simulation.simulation import Simulation
+from grove_tui.world.model import World
 
 
 @dataclass
@@ -36,20 +40,23 @@ class LoadedScenario:
     bundle_dir: Path
     scenario: Scenario
     documents: list[TreeDocument]  # agents' trees, in agent id order (as Simulation.build wants them)
-    world: Any
+    world: World
     grid: OccupancyGrid  # the planner's grid, from the bundle
     planner: ThetaStarPlanner
-    fields: dict[str, Any]
+    fields: dict[str, VelocityField]
     walls: np.ndarray  # (M, 4) the world's wall segments
     boxes: np.ndarray  # (M, 4) their bounding boxes (observation.wall_boxes)
     patch_grid: OccupancyGrid  # uninflated, at the observation patch's resolution
     behaviors: tuple[str, ...]  # per agent, in agent id order
 
     @property
-    def robot(self) -> Any:
-        return self.scenario.robot
+    def robot(self) -> RobotSpec:
+        robot = self.scenario.robot
+        if robot is None:  # load_scenario refuses such bundles
+            raise GymError(f"{self.bundle_dir}: the scenario has no robot")
+        return robot
 
-    def simulation(self, dt: float, robot: Any = None, params: Any = None) -> Simulation:
+    def simulation(self, dt: float, robot: RobotSpec | None = None, params: SFMParams | None = None) -> Simulation:
         """A fresh Simulation of this scenario, as Simulation.from_scenario builds it (`robot`: another
         RobotSpec in place of the scenario's; `params`: the pedestrian model's SFMParams)."""
         return Simulation.build(self.scenario.agents, self.documents, world=self.world, grid=self.grid,
@@ -104,6 +111,7 @@ def generation_key(world: str, preset: str, prompt: str, seed: int, models: Sequ
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:20]
 
 
+# backend: Any, the app's engine backend or a stand-in with its model_status() and generate()
 def generated_scenarios(world: str, preset: str, prompt: str, seeds: Iterable[int], *,
                         cache: str | os.PathLike[str] | None = None, backend: Any = None) -> list[Path]:
     """Bundles of `prompt` in `world` under `preset`, one per seed, generated through the services layer

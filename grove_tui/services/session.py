@@ -883,7 +883,7 @@ class GroveSession:
         """Generate each understanding case through `generate` and score its scenario; bundles are kept
         under out_dir/bundles. A case that fails is scored as failed on every field."""
         from grove_tui.analysis.understanding import SCENARIO_FIELDS, ScenarioScore, score_scenario
-        from grove_tui.bt.manifest import NODES
+        from grove_tui.bt.format.manifest import NODES
 
         action_names = frozenset(name for name, spec in NODES.items() if spec.category == "action")
         scores: list[ScenarioScore] = []

@@ -18,9 +18,12 @@ way, "robot_resumed".
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import numpy as np
+
+from grove_tui.crowd.context import SimContext
+from grove_tui.crowd.crowd import Crowd
+from grove_tui.scenario.model import RobotSpec
 
 STOP_GAP = 0.6  # metres between bodies ahead of the robot at which it stops
 SIDE_MARGIN = 0.05  # metres added to both bodies' radii for the corridor's half width
@@ -32,7 +35,7 @@ ROBOT_ID = 0
 
 
 class RobotDriver:
-    def __init__(self, spec: Any, crowd: Any, context: Any) -> None:
+    def __init__(self, spec: RobotSpec, crowd: Crowd, context: SimContext) -> None:
         self.spec = spec
         self.crowd = crowd
         self.context = context
@@ -71,11 +74,13 @@ class RobotDriver:
     def _follow(self) -> None:
         ctx, crowd = self.context, self.crowd
         rows = [ctx.row_of[i] for i in self.follows if i in ctx.row_of and crowd.active[ctx.row_of[i]]]
-        robot = crowd.robot_pos
-        if not rows or robot is None:
-            crowd.set_robot_path([robot] if robot is not None else None)
+        robot_pos = crowd.robot_pos
+        if not rows or robot_pos is None:
+            crowd.set_robot_path([(float(robot_pos[0]), float(robot_pos[1]))] if robot_pos is not None else None)
             return
-        target = min((crowd.pos[r] for r in rows), key=lambda p: math.dist(p, robot))
+        robot = (float(robot_pos[0]), float(robot_pos[1]))
+        target = min(((float(crowd.pos[r, 0]), float(crowd.pos[r, 1])) for r in rows),
+                     key=lambda p: math.dist(p, robot))
         d = math.dist(target, robot)
         if d <= FOLLOW_BEHIND:
             crowd.set_robot_path([robot])
@@ -83,7 +88,7 @@ class RobotDriver:
         f = (d - FOLLOW_BEHIND) / d
         goal = (robot[0] + (target[0] - robot[0]) * f, robot[1] + (target[1] - robot[1]) * f)
         route = [goal] if ctx.sees(robot, goal) else ctx.plan(robot, goal)
-        crowd.set_robot_path([tuple(robot)] + [tuple(p) for p in route])
+        crowd.set_robot_path([robot, *route])
 
     def _collision_monitor(self, now: float) -> None:
         crowd, ctx = self.crowd, self.context

@@ -23,25 +23,33 @@ from __future__ import annotations
 import math
 import os
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import shapely
+from shapely.geometry.base import BaseGeometry
 
-from grove_tui.bt.context import AgentContext, SimContext
-from grove_tui.bt.registry import tree_factory
-from grove_tui.bt.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
-from grove_tui.bt.blackboard import Blackboard
-from grove_tui.bt.document import TreeDocument, node, subtree_call
-from grove_tui.bt.factory import BehaviorTree
-from grove_tui.bt.tree_node import FAILURE, SUCCESS, SimClock
-from grove_tui.bt.xml import BTError, parse_tree_text
+from grove_tui.crowd.context import AgentContext, SimContext
+from grove_tui.crowd.leaves.registry import tree_factory
+from grove_tui.crowd.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
+from grove_tui.bt.runtime.blackboard import Blackboard
+from grove_tui.bt.format.document import TreeDocument, node, subtree_call
+from grove_tui.bt.runtime.factory import BehaviorTree
+from grove_tui.bt.runtime.tree_node import FAILURE, SUCCESS, SimClock
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.crowd.crowd import MODE_FIELD, MODE_STOP, ROBOT_AS_OBSTACLE, Crowd
 from grove_tui.crowd.recording import TrajectoryRecorder
+from grove_tui.crowd.sfm import SFMParams
+from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.navigation.theta_star import ThetaStarPlanner
+from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.scenario.events import SimEvent
+from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
 from grove_tui.simulation.robot import RobotDriver
+from grove_tui.world.model import World
 
 # behavior -> (reaction node, trigger distance m, duration s, only once): HuNavSim 1.0 values
 REACTION_DEFAULTS = ROBOT_REACTION_DEFAULTS
@@ -102,8 +110,9 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 
 class Simulation:
-    def __init__(self, crowd: Crowd, context: SimContext, trees: list[BehaviorTree | None], *, dt: float,
-                 bt_rate: float, loops: list[bool] | None = None, scenario: Any = None, world: Any = None,
+    def __init__(self, crowd: Crowd, context: SimContext, trees: list[BehaviorTree], *, dt: float,
+                 bt_rate: float, loops: list[bool] | None = None, scenario: Scenario | None = None,
+                 world: World | None = None,
                  recorder: TrajectoryRecorder | None = None):
         self.crowd = crowd
         self.context = context
@@ -114,7 +123,7 @@ class Simulation:
         self.bt_every = max(1, int(round(1.0 / (self.bt_rate * self.dt))))
         self.bt_dt = self.bt_every * self.dt
         self.loops = loops if loops is not None else [False] * len(trees)
-        self.finished = [tree is None for tree in trees]
+        self.finished = [False] * len(trees)
         self._finished_mask = np.array(self.finished, dtype=bool)
         n = len(trees)
         # quiescence specs (see tick_behaviors): far from (x, y) by more than sqrt(r2), before t,
@@ -127,7 +136,7 @@ class Simulation:
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
         self.tree_errors: dict[int, str] = {}  # agent id -> why its tree stopped (e.g. an unset blackboard entry)
-        self._building: Any = None  # the zones' union, prepared on first use (see _count_people_outside)
+        self._building: BaseGeometry | None = None  # the zones' union, prepared on first use (see _count_people_outside)
         self._exits: list[tuple[str, tuple[float, float]]] = []
         self.scenario = scenario
         self.world = world
@@ -145,8 +154,9 @@ class Simulation:
     # ---- construction -------------------------------------------------------------------------
 
     @classmethod
-    def from_scenario(cls, scenario: Any, bundle_dir: str | Path, world: Any = None, dt: float = 0.05,
-                      bt_rate: float = 10.0, runtime_planning: bool = True, params: Any = None) -> Simulation:
+    def from_scenario(cls, scenario: Scenario, bundle_dir: str | Path, world: World | None = None, dt: float = 0.05,
+                      bt_rate: float = 10.0, runtime_planning: bool = True,
+                      params: SFMParams | None = None) -> Simulation:
         """`runtime_planning=False` walks every dynamic goal straight (HuNavSim's behavior, the
         no-planner baseline); by default goals set while running are planned with Theta*.
         `params`: the pedestrian model's SFMParams (default: the "grove" model)."""
@@ -173,9 +183,11 @@ class Simulation:
                          bt_rate=bt_rate, scenario=scenario, params=params)
 
     @classmethod
-    def build(cls, agents, documents: list[TreeDocument], *, world: Any = None, grid: Any = None, planner: Any = None,
-              walls: np.ndarray | None = None, robot: Any = None, fields: dict[str, Any] | None = None, seed: int = 0,
-              dt: float = 0.05, bt_rate: float = 10.0, scenario: Any = None, params: Any = None) -> Simulation:
+    def build(cls, agents: Sequence[AgentSpec], documents: list[TreeDocument], *, world: World | None = None,
+              grid: OccupancyGrid | None = None, planner: ThetaStarPlanner | None = None,
+              walls: np.ndarray | None = None, robot: RobotSpec | None = None,
+              fields: Mapping[str, VelocityField] | None = None, seed: int = 0, dt: float = 0.05,
+              bt_rate: float = 10.0, scenario: Scenario | None = None, params: SFMParams | None = None) -> Simulation:
         """Build from agent specs (sorted by id, as in Scenario.agents) and their parsed trees."""
         agents = sorted(agents, key=lambda a: a.id)
         if len(documents) != len(agents):
@@ -203,7 +215,7 @@ class Simulation:
             context.field_exits[field_id] = (float(field.exit[0]), float(field.exit[1]))
         factory = tree_factory()
         bt_dt = max(1, int(round(1.0 / (bt_rate * dt)))) * dt
-        trees: list[BehaviorTree | None] = []
+        trees: list[BehaviorTree] = []
         loops: list[bool] = []
         for row, (agent, document) in enumerate(zip(agents, documents)):
             document = with_robot_reaction(document, agent.behavior)
@@ -233,9 +245,7 @@ class Simulation:
         return self.context.ids
 
     @property
-    def events(self) -> list[Any]:
-        from grove_tui.scenario.events import SimEvent
-
+    def events(self) -> list[SimEvent]:
         return [SimEvent(t, agent_id, kind, detail) for t, agent_id, kind, detail in self.context.events]
 
     def step(self) -> None:
@@ -393,7 +403,7 @@ class Simulation:
             ok[guarded] = far | (np.abs(turn) > VISIBLE_HALF_ANGLE + 1e-6)
         return ok
 
-    def run(self, seconds: float, on_frame: Callable[[Frame], Any] | None = None,
+    def run(self, seconds: float, on_frame: Callable[[Frame], object] | None = None,
             cancel: threading.Event | Callable[[], bool] | None = None) -> Frame:
         """Advance `seconds` of simulation time; on_frame gets a Frame after every BT period."""
         steps = int(round(seconds / self.dt))
@@ -424,19 +434,16 @@ class Simulation:
         idx = np.flatnonzero(active)
         ids = np.asarray(self.context.ids, dtype=np.int64)[idx]
         robot = None
-        if crowd.has_robot:
-            rp = crowd.robot_pos
-            robot = (float(rp[0]), float(rp[1]), float(crowd.robot_yaw))
+        rp, yaw = crowd.robot_pos, crowd.robot_yaw  # None without a robot
+        if rp is not None and yaw is not None:
+            robot = (float(rp[0]), float(rp[1]), yaw)
         status = tuple(self.context.status[i] for i in idx)
         return Frame(float(crowd.time), self.step_count, _frozen(ids), _frozen(crowd.pos[idx]), _frozen(crowd.vel[idx]),
                      _frozen(crowd.yaw[idx]), _frozen(crowd.group[idx]), status, robot, self.counters())
 
     def tree_status(self, agent_id: int) -> list[tuple[str, str, str]]:
         row = self.context.row(agent_id)
-        tree = self.trees[row]
-        if tree is None:
-            raise BTError(f"agent {agent_id} has no behavior tree")
-        return tree.status_list()
+        return self.trees[row].status_list()
 
     def agent_status(self, agent_id: int) -> str:
         return self.context.status[self.context.row(agent_id)]
@@ -452,9 +459,9 @@ class Simulation:
         pos = crowd.pos[:n]
         radius = crowd.radius[:n]
         c = ctx.counters
-        if crowd.has_robot:
-            rp = crowd.robot_pos
-            gap = np.hypot(pos[:, 0] - rp[0], pos[:, 1] - rp[1]) - radius - crowd.robot_radius
+        rp, robot_radius = crowd.robot_pos, crowd.robot_radius  # None without a robot
+        if rp is not None and robot_radius is not None:
+            gap = np.hypot(pos[:, 0] - rp[0], pos[:, 1] - rp[1]) - radius - robot_radius
             gap[~active] = np.inf
             if np.any(active):
                 c.closest_robot_approach = min(c.closest_robot_approach, max(0.0, float(gap.min())))
@@ -493,7 +500,7 @@ def _make_recorder(dt: float, ids: list[int]) -> TrajectoryRecorder:
     return TrajectoryRecorder(fps=1.0 / dt, id_map=ids)
 
 
-def _draft_groups(agents) -> dict[int, tuple[int, ...]]:
+def _draft_groups(agents: Sequence[AgentSpec]) -> dict[int, tuple[int, ...]]:
     """agent id -> ids of its social group (same SFM group id >= 0); alone otherwise."""
     by_group: dict[int, list[int]] = {}
     for a in agents:

@@ -24,7 +24,7 @@ from grove_tui.analysis.understanding import (
     score_reading,
     summarize_reading,
 )
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.world import list_worlds, load_world
 
 ROOT = REPO

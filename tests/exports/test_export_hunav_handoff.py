@@ -14,8 +14,8 @@ import yaml
 from helpers.hunavsim_factory import HunavSimFactory
 from lxml import etree
 
-from grove_tui.bt.hunav_compat import HUNAV_NODES, hunav_loading_problems, restrict_to_hunav_ports
-from grove_tui.bt.xml import read_tree, write_tree
+from grove_tui.bt.format.hunav_compat import HUNAV_NODES, hunav_loading_problems, restrict_to_hunav_ports
+from grove_tui.bt.format.xml import read_tree, write_tree
 from grove_tui.exports.hunav import ExportError, export_hunav
 from grove_tui.scenario.model import DEFAULT_GOAL_RADIUS
 from grove_tui.exports.hunav_loader_check import check_hunav_export, check_loader_parameters
@@ -183,7 +183,7 @@ def test_evacuees_end_apart_outside_their_exit(clinic, tmp_path):
 
 
 def test_hunav_node_table_covers_the_manifests_hunavsim_nodes():
-    from grove_tui.bt.manifest import NODES
+    from grove_tui.bt.format.manifest import NODES
 
     grove_side = {name for name, spec in NODES.items() if spec.origin == "hunavsim"}
     assert grove_side <= set(HUNAV_NODES)

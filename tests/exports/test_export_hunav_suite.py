@@ -20,7 +20,7 @@ from helpers.hunavsim_factory import HunavSimFactory
 from lxml import etree
 
 from grove_tui.analysis.evaluation import load_suite
-from grove_tui.bt.hunav_compat import HUNAV_NODES
+from grove_tui.bt.format.hunav_compat import HUNAV_NODES
 from grove_tui.exports.hunav import export_hunav
 from grove_tui.exports.hunav_loader_check import check_hunav_export
 from grove_tui.exports.nav2_map import read_pgm

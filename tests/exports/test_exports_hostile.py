@@ -109,3 +109,59 @@ def test_a_full_disk_is_one_line_and_leaves_nothing(simulated_copy, tmp_path, ki
     assert len(lines) == 1 and lines[0].startswith(f"error: {out}: cannot write"), done.stderr[-2000:]
     assert any(reason in lines[0] for reason in ("File too large", "disk is full", "I/O error")), lines[0]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bundle"]
+
+
+
+# Runs in its own mount namespace: the bundle's folder bound read-only over itself (a real EROFS for every
+# write in it or beside it), then the bundle bound read-write over itself (a mount point as an output).
+_MOUNTS_CHILD = """
+import json, subprocess, sys
+from click.testing import CliRunner
+from grove_tui.cli import main
+folder, bundle = sys.argv[1], sys.argv[2]
+def mount(*args):
+    subprocess.run(["mount", *args], check=True)
+def run(args):
+    done = CliRunner().invoke(main, args)
+    return [done.exit_code, done.stderr, repr(done.exception) if done.exit_code not in (0, 2) else ""]
+mount("--bind", folder, folder)
+mount("-o", "remount,bind,ro", folder)
+runs = {name: run(args) for name, args in (
+    ("trajectories", ["export", "trajectories", bundle, "--out", folder + "/traj"]),
+    ("foxglove", ["export", "foxglove", bundle, "--out", folder + "/run.mcap"]),
+    ("hunav", ["export", "hunav", bundle, "--out", folder + "/hunav"]),
+    ("rosbag", ["export", "rosbag", bundle, "--out", folder + "/bag"]),
+    ("picture", ["picture", bundle, "--out", folder + "/p.png"]),
+    ("metrics", ["metrics", bundle]),
+    ("simulate", ["simulate", bundle, "--seconds", "1"]))}
+mount("-o", "remount,bind,rw", folder)
+mount("--bind", bundle, bundle)
+runs["simulate a mount point"] = run(["simulate", bundle, "--seconds", "1"])
+runs["export into a mount point"] = run(["export", "trajectories", bundle, "--out", bundle + "/../bundle"])
+print(json.dumps(runs))
+"""
+
+
+def test_a_read_only_file_system_and_a_mount_point_are_one_line_for_every_writer(simulated_copy):
+    """A real read-only mount (EROFS, the issue's traceback; /proc above fails otherwise) under each export's
+    --out, metrics' and simulate's bundle; and a bundle that is a mount point (a volume mounted there), which
+    no rename can replace (EBUSY was a traceback). Needs a mount namespace (unshare -m): skipped without."""
+    import json
+    import shutil
+
+    if shutil.which("unshare") is None or subprocess.run(["unshare", "-m", "true"], capture_output=True).returncode:
+        pytest.skip("no mount namespace here (unshare -m)")
+    folder = simulated_copy.parent
+    before = sorted((str(p.relative_to(folder)), p.stat().st_size) for p in folder.rglob("*"))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")]))
+    done = subprocess.run(["unshare", "-m", sys.executable, "-c", _MOUNTS_CHILD, str(folder), str(simulated_copy)],
+                          capture_output=True, text=True, timeout=600, env=env, cwd=REPO)
+    assert done.returncode == 0, done.stderr[-2000:]
+    runs = json.loads(done.stdout.strip().splitlines()[-1])
+    for name, (code, stderr, exception) in runs.items():
+        lines = stderr.strip().splitlines()
+        assert code == EXIT_BAD_INPUT and len(lines) == 1 and lines[0].startswith("error: "), \
+            (name, code, stderr[-1500:], exception)
+        expected = "is a mount point" if "mount point" in name else "not writable"
+        assert expected in lines[0], (name, lines[0])
+    assert sorted((str(p.relative_to(folder)), p.stat().st_size) for p in folder.rglob("*")) == before

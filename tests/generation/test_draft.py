@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import (
     BRANCH_CATEGORIES,
     LABEL_MAX_LENGTH,

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.node_docs import (
     check_node_documents,
     load_node_database,

@@ -12,7 +12,7 @@ import pytest
 from lxml import etree
 from shapely.geometry import LineString, MultiLineString
 
-from grove_tui.bt.xml import check_tree_file
+from grove_tui.bt.format.xml import check_tree_file
 from grove_tui.scenario.bundle import load_bundle, load_report, write_bundle
 from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
 from grove_tui.generation.presets import PromptError, load_preset

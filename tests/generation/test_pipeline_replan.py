@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.scenario.bundle import write_bundle
 from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted
 from grove_tui.navigation.theta_star import ThetaStarPlanner

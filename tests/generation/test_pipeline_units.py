@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.pipeline import STAGES, world_reference
 from grove_tui.generation.presets import load_preset
 from grove_tui.language.quantities import extract_quantities

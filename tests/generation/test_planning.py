@@ -9,7 +9,7 @@ from lxml import etree
 
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.navigation.theta_star import ThetaStarPlanner
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.generation.planning import RobotRequest, goals_from_tree, plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import GenerationError, load_preset

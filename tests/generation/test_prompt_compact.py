@@ -12,7 +12,7 @@ import re
 
 import pytest
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
 from grove_tui.generation.pipeline import quantities_from_reading

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from grove_tui.bt.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTIONS
+from grove_tui.crowd.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTIONS
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import load_preset

@@ -107,6 +107,13 @@ def test_history_and_grounding_cover_every_sentence(hospital, base, tmp_path):
     nurse = next(g for g in grounding.groups if g.label == "nurse")
     assert (nurse.asked_by, nurse.changed_by) == (0, (1,))
     assert "changed by 2" in "\n".join(grounding.lines())
+    # checked on a run (here one with no frames yet), the report still says who asked for what
+    from grove_tui.analysis.outcomes import OutcomeChecker
+
+    checked = OutcomeChecker(grounding, load_bundle(second)[0], hospital).result([], partial=True)
+    assert checked.checked and checked.sentences == grounding.sentences
+    assert [(g.asked_by, g.changed_by) for g in checked.groups] == [(g.asked_by, g.changed_by) for g in grounding.groups]
+    assert GroundingReport.from_dict(checked.to_dict()).sentences == grounding.sentences
     assert [g["label"] for g in report["groups"]] == ["patient", "nurse"]
     slow = [a.max_vel for a in load_bundle(second)[0].agents if a.label == "nurse"]
     assert slow and all(v < load_preset("queuing").max_vel for v in slow)
@@ -137,6 +144,12 @@ def test_the_robot(hospital, base, tmp_path):
     robot = load_bundle(crosses)[0].robot
     assert hospital.zone_at(*robot.goal).name == "elevator_hall"
     assert records(crosses) == records(base)  # the robot's edits left every group as it was
+    _, follows = refine(hospital, crosses, "the robot follows the nurses", tmp_path / "follows")
+    robot = load_bundle(follows)[0].robot
+    nurses = next(g["members"] for g in records(base) if g["label"] == "nurse")
+    assert robot.task == "follow" and list(robot.follows) == nurses
+    claim = GroundingReport.from_dict(load_report(follows)["grounding"]).robot.claims[0]
+    assert claim.kind == "robot_follow_person" and list(claim.partners) == nurses
 
 
 def test_a_name_two_groups_share_is_asked_about(hospital, base, tmp_path):
@@ -164,7 +177,7 @@ def test_a_follow_up_that_changes_nothing_is_refused(hospital, base):
 
 
 def test_a_tree_read_back_from_its_xml(base):
-    from grove_tui.bt.xml import read_tree
+    from grove_tui.bt.format.xml import read_tree
 
     tree = draft_from_document(read_tree((base / "trees/agent_1.xml").read_text(), "agent_1"))
     assert [n.node for n in tree.walk()] == ["Sequence", "GoTo", "Queue"]
@@ -182,3 +195,24 @@ def test_counts_edited_on_a_saved_bundle_are_a_refinement(base, tmp_path):
     assert report["history"][0]["sentence"] == "counts: patient 12"
     assert [g["count"] for g in report["groups"]] == [12, 2, 1]
     assert report["groups"][1:] == records(base)[1:]
+
+
+def test_evacuees_added_under_the_emergency_preset_need_no_model(hospital, tmp_path):
+    """Under a preset that evacuates along fields an evacuating group's tree is the field to its exit,
+    whatever a model writes, so adding one asks no model; the groups already there stay as they were."""
+    draft = "10 people from cafeteria: FollowVelocityField(main_entrance)\n3 guards from entrance_lobby: Wait"
+    base = build_base_bundle(tmp_path / "base", hospital, preset="emergency",
+                             prompt="ten people evacuate from the cafeteria while three guards wait in the lobby",
+                             draft=draft)
+    llm = ScriptedLLM()  # asked for anything, it fails the test
+    refinement, out = refine(hospital, base, "also six visitors evacuate from ward a", tmp_path / "b", llm,
+                             preset="emergency")
+    assert not refinement.calls_model and llm.asked == []
+    before, after = records(base), records(out)
+    assert after[:2] == before and after[2]["label"] == "visitor" and after[2]["count"] == 6
+    visitors = [a for a in load_bundle(out)[0].agents if a.label == "visitor"]
+    assert len(visitors) == 6 and all(hospital.zone_at(*a.start).name == "ward_a" for a in visitors)
+    xml = (out / visitors[0].tree).read_text(encoding="utf-8")
+    assert "FollowVelocityField" in xml
+    for group in before:
+        assert files_of(out, group["members"]) == files_of(base, group["members"])

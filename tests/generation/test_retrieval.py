@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.paths import node_db_dir
 from grove_tui.generation.retrieval import (
     EMBEDDING_FUNCTION_NAME,

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 from helpers.clinic import QUEUE, make_result
 
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import (
     PASSING_MARGIN,

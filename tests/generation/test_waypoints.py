@@ -8,8 +8,9 @@ from lxml import etree
 
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
-from grove_tui.bt.ports import format_point_list, parse_point_list
-from grove_tui.bt.xml import BTError, read_tree, write_tree
+from grove_tui.bt.format.ports import format_point_list, parse_point_list
+from grove_tui.errors import BTError
+from grove_tui.bt.format.xml import read_tree, write_tree
 from grove_tui.generation.waypoints import inject_waypoints, plan_waypoints
 from grove_tui.world import load_world
 

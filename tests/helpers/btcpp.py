@@ -5,7 +5,7 @@ from __future__ import annotations
 import behaviortreepy as bt
 from lxml import etree
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 
 
 def load_in_btcpp(xml: str) -> list[str]:

@@ -14,8 +14,10 @@ Python tags, entities, paths that escape, NUL bytes).
 
 from __future__ import annotations
 
+import atexit
 import json
 import os
+import shutil
 import tempfile
 from collections.abc import Callable
 from contextlib import contextmanager
@@ -172,7 +174,7 @@ def fuzz_world_file(data: str) -> None:
 
 
 def fuzz_tree(text: str) -> None:
-    from grove_tui.bt.xml import check_tree_text, parse_tree_text
+    from grove_tui.bt.format.xml import check_tree_text, parse_tree_text
 
     check_tree_text(text, "fuzz.xml")
     parse_tree_text(text, "fuzz.xml")
@@ -286,7 +288,9 @@ def _gym_bundle() -> Path:
     if "bundle" not in _GYM:
         from helpers.handmade import build_hospital_bundle
 
-        _GYM["bundle"] = build_hospital_bundle(Path(tempfile.mkdtemp(prefix="grove-fuzz-gym-")) / "bundle")
+        folder = tempfile.mkdtemp(prefix="grove-fuzz-gym-")
+        atexit.register(shutil.rmtree, folder, True)  # one per process, gone when it ends
+        _GYM["bundle"] = build_hospital_bundle(Path(folder) / "bundle")
     return _GYM["bundle"]
 
 

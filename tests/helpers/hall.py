@@ -4,7 +4,7 @@ The `hall` fixture (world, grid, planner) is in tests/conftest.py."""
 
 from __future__ import annotations
 
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.scenario.model import AgentSpec
 from grove_tui.simulation.simulation import Simulation
 

@@ -1,7 +1,7 @@
 """BehaviorTree.CPP 4 (behaviortreepy) with exactly HuNavSim 2.0's node IDs registered, as stubs.
 
 behaviortreepy 0.1.4 registers Python leaves without a port list, so the ports of HuNavSim's nodes are
-checked by grove_tui.bt.hunav_compat.hunav_loading_problems (the same check BT.CPP makes against a
+checked by grove_tui.bt.format.hunav_compat.hunav_loading_problems (the same check BT.CPP makes against a
 registered manifest) and stripped for the load itself; BT.CPP built-ins keep theirs and BT.CPP checks them.
 
 The stubs behave like HuNavSim's nodes as far as control flow goes: stateful actions run one tick
@@ -15,7 +15,7 @@ from collections import Counter
 import behaviortreepy as bt
 from lxml import etree
 
-from grove_tui.bt.hunav_compat import HUNAV_NODES, hunav_loading_problems
+from grove_tui.bt.format.hunav_compat import HUNAV_NODES, hunav_loading_problems
 
 STATEFUL = {"GoTo", "StopAndWaitTimerAction", "ConversationFormation", "ApproachAgent", "FollowAgent",
             "ApproachRobot", "BlockRobot", "AvoidRobot", "BlockAgent", "SetGroupWalk", "LookAtPoint",

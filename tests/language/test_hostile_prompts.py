@@ -119,3 +119,42 @@ def test_an_empty_config_key_is_a_settings_error(tmp_path, monkeypatch):
     monkeypatch.setenv("GROVE_CONFIG_FILE", str(config))
     with pytest.raises(SettingsError, match="key None is not a setting name"):
         load_settings()
+
+
+class _DraftLLM:
+    """Answers every call with one fixed draft (the checks under test run before any model call)."""
+
+    path = None
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+
+    def generate(self, messages, grammar=None, **_):
+        from grove_tui.llm.local import Generation
+
+        return Generation(self.text, "stop", 100, 40, 0.01, 0.001)
+
+
+def _pipeline(clinic, draft: str = "2 nurses from restroom: GoTo(lobby)"):
+    from grove_tui.generation.pipeline import GenerationPipeline
+    from grove_tui.generation.retrieval import NodeRetriever
+
+    class NoRetrieval(NodeRetriever):
+        def retrieve(self, prompt, preset=None, k=8):
+            return []
+
+    return GenerationPipeline(clinic, load_preset("normal"), None, _DraftLLM(draft), NoRetrieval())
+
+
+def test_full_width_letters_are_words_to_the_generation_checks(clinic):
+    """Issue 35: a prompt typed in full-width letters was refused as "only symbols or emoji" (the reader
+    reads it; the check before it did not), and a full-width minus sign or number word slipped past the
+    negative and zero checks."""
+    result = _pipeline(clinic).run("ｔｗｏ ｎｕｒｓｅｓ ｗａｌｋ ｆｒｏｍ ｔｈｅ ｒｅｓｔｒｏｏｍ ｔｏ ｔｈｅ ｌｏｂｂｙ", seed=0)
+    assert sum(1 for agent in result.scenario.agents) == 2
+    for prompt, message in (("－５ nurses walk from the restroom to the lobby", "is a negative number of people"),
+                            ("ｍｉｎｕｓ ３ nurses walk to the lobby", "is a negative number of people"),
+                            ("ｚｅｒｏ nurses walk to the lobby", "asks for nobody"),
+                            ("🔥 🚶 ⚕️", "no words to read")):
+        with pytest.raises(PromptError, match=message):
+            _pipeline(clinic).run(prompt, seed=0)

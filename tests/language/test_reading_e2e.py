@@ -13,7 +13,7 @@ import json
 import pytest
 from lxml import etree
 
-from grove_tui.bt.leaves.hunav import ROBOT_REACTIONS
+from grove_tui.crowd.leaves.hunav import ROBOT_REACTIONS
 from grove_tui.generation.pipeline import GenerationPipeline
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.reconcile import ROUTINE_NODES

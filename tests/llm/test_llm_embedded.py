@@ -10,7 +10,7 @@ import random
 
 import pytest
 
-from grove_tui.bt.manifest import NODES
+from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import draft_grammar, parse_draft
 from grove_tui.world import load_world
 from grove_tui.llm.embedded import embedded_model_path

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from grove_tui.bt.ports import format_point_list, parse_point_list
+from grove_tui.bt.format.ports import format_point_list, parse_point_list
 from grove_tui.navigation import theta_star
 from grove_tui.navigation.grid import build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner, path_length

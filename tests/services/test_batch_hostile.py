@@ -136,3 +136,23 @@ def test_a_full_disk_leaves_no_empty_output_folder(tmp_path):
 
     run_batch(GroveSession(), [], out)
     assert not (tmp_path / "new").exists()
+
+
+def test_a_world_generation_cannot_use_is_a_refused_job_not_a_crashed_batch(tmp_path):
+    """A 200,000-point boundary passed the checks, then segfaulted in shapely and took the whole batch down
+    (exit 139). The job naming it is now a refused line; the others run. bench/hostile.py runs 200,000."""
+    from grove_tui.world.loader import MAX_POLYGON_POINTS
+
+    count = MAX_POLYGON_POINTS + 1
+    edge = ", ".join(f"[{20 * i / count:.5f}, {0.01 * (i % 2)}]" for i in range(count))
+    world = tmp_path / "zigzag.yaml"
+    world.write_text("name: zigzag\nzones:\n  - {name: z, type: room, boundary: [" + edge + ", [20, 10], [0, 10]], "
+                     "doors: [{name: d, position: [0, 5], width: 1, leads_to: outside}]}\n")
+    jobs_file = tmp_path / "jobs.jsonl"
+    jobs_file.write_text(job(world=str(world), name="zigzag") + "\n" + job(name="fine") + "\n")
+    jobs, problems = read_jobs(jobs_file)
+    assert not problems
+    good, refused = GroveSession().check_jobs(jobs, tmp_path / "out", overwrite=False)  # the batch's check
+    assert [j.name for j in good] == ["fine"] and [p.line for p in refused] == [1]
+    assert f"{count + 2:,} points; at most {MAX_POLYGON_POINTS:,} per polygon" in refused[0].message
+    assert not (tmp_path / "out").exists()

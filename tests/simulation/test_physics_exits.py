@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from lxml import etree
 
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.planning import plan_operational
 from grove_tui.generation.postprocess import postprocess

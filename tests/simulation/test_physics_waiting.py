@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.crowd.sfm import SFMParams
 from grove_tui.simulation.simulation import Simulation
 from helpers.hall import agent, tree_xml

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from grove_tui.bt.xml import parse_tree_text
+from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.navigation.grid import build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.scenario.model import AgentSpec, RobotSpec

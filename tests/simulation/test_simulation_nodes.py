@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from grove_tui.bt.manifest import NODES
-from grove_tui.bt.registry import LEAF_CLASSES
+from grove_tui.bt.format.manifest import NODES
+from grove_tui.crowd.leaves.registry import LEAF_CLASSES
 from grove_tui.scenario.model import RobotSpec
 from helpers.hall import agent, running, simulate
 

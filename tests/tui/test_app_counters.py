@@ -95,3 +95,61 @@ def test_the_controller_reads_only_the_frames_recorded_since_its_last_measure(tm
     assert len(reads) >= 4
     # Each look starts where the previous one stopped: no frame is read twice.
     assert all(later[0] == earlier[1] for earlier, later in zip(reads, reads[1:]))
+
+
+class _SlowSimulation:
+    """A simulation a machine cannot run at 8x: each 0.05 s step takes 10 ms of wall time (8x asks 160
+    steps a second, 100 fit)."""
+
+    dt = 0.05
+
+    def __init__(self) -> None:
+        self.step_count = 0
+
+    @property
+    def time(self) -> float:
+        return self.step_count * self.dt
+
+    def step(self) -> None:
+        import time
+
+        time.sleep(0.01)
+        self.step_count += 1
+
+    def frame(self):
+        from types import SimpleNamespace
+
+        return SimpleNamespace(t=self.time, step=self.step_count)
+
+
+def test_a_run_behind_its_speed_keeps_publishing_frames():
+    """Issue 31: at 8x on a machine that cannot keep up, the picture keeps moving (the backlog used to
+    grow to 400 steps done in one go, holding the picture for seconds) and the run still goes faster
+    than 1x."""
+    import threading
+    import time
+
+    from grove_tui.tui.screens.sim_controller import SimulationController
+
+    sim = _SlowSimulation()
+    controller = SimulationController(sim, fps=20, speed=8.0)
+    stop = threading.Event()
+    thread = threading.Thread(target=controller.run, args=(stop.is_set,))
+    thread.start()
+    published: list[float] = []
+    try:
+        controller.send("play", True)
+        serial = -1
+        started = time.monotonic()
+        while time.monotonic() - started < 4.0:
+            latest = controller.latest
+            if latest is not None and latest.serial != serial:
+                serial = latest.serial
+                published.append(time.monotonic())
+            time.sleep(0.005)
+    finally:
+        stop.set()
+        thread.join()
+    gaps = [later - earlier for earlier, later in zip(published, published[1:])]
+    assert len(published) > 10 and max(gaps) < 1.0, f"longest wait for a new frame {max(gaps):.2f} s"
+    assert sim.time > 4.0 * 1.5, f"{sim.time:.1f} simulated seconds in 4 wall seconds"

@@ -13,6 +13,7 @@ from grove_tui.tui.screens.inspect import InspectScreen
 from grove_tui.tui.screens.refine import RefineScreen
 from grove_tui.tui.widgets.bt_tree import BTTree
 from grove_tui.tui.widgets.followup import FollowupInput
+from grove_tui.tui.widgets.grounding import grounding_text, read_grounding
 
 pytestmark = pytest.mark.anyio
 GUARDS = "2 guards from main_entrance: GoTo(main_entrance)"
@@ -95,6 +96,10 @@ async def test_follow_ups_on_the_inspect_screen(tmp_path):
         assert [g["label"] for g in third.result.report["groups"]] == ["patient", "guard"]
         kept = [a for a in third.scenario.agents if a.label == "patient"]
         assert kept == [a for a in second.scenario.agents]  # the queue as it was
+        # the grounding report names every sentence and which one asked for each group
+        report = grounding_text(read_grounding(third.result.report), width=200)
+        assert "3. add two guards standing at the main entrance" in report
+        assert "sentence 1, changed by 2" in report and "sentence 3" in report
 
         # a sentence that changes nothing says why and applies nothing
         dialog = await follow_up(pilot, app, "remove the janitor")

@@ -260,3 +260,24 @@ async def test_help_scrolls_by_keyboard_at_80x24_and_lists_the_screen_keys_first
             await pilot.pause()
             assert (scroll.scroll_y > 0) is moved, key
         assert scroll.scroll_y == scroll.max_scroll_y
+
+
+async def test_typing_right_after_picking_a_preset_goes_on_at_the_prompt(tmp_path):
+    """Issue 31 item 2: a person picks a preset with Enter and goes on typing at once; the keys reach the
+    app before the focus is back on the prompt (all queued here at once, as a loaded machine gets them)."""
+    from textual import events
+
+    app = make_app(tmp_path)
+    async with app.run_test(size=(80, 24)) as pilot:
+        screen = await setup_ready(pilot)
+        prompt = screen.query_one(PromptInput)
+        prompt.focus()
+        await pilot.press(*"ten patients queue at")
+        await pilot.press("ctrl+r", "down")
+        assert screen.focused is screen.query_one("#presets")
+        for key, character in [("enter", "\r"), ("space", " "), *[(c, c) for c in "the pharmacy"]]:
+            app.post_message(events.Key(key, character))
+        await wait_until(pilot, lambda: screen.focused is prompt and prompt.value.endswith("y"), timeout=10,
+                         what="the typing at the prompt")
+        assert prompt.value == "ten patients queue at the pharmacy"
+        assert prompt.cursor_location == prompt.end_location

@@ -186,7 +186,7 @@ def test_a_boundary_of_more_points_than_generation_can_use_fails_the_check(tmp_p
 
 def test_a_world_beyond_the_coordinates_trees_can_carry_fails_the_check():
     """A world near 99,999 m passed the check, then failed generation at 'GoTo port x above maximum 10000'."""
-    from grove_tui.bt.manifest import NODES
+    from grove_tui.bt.format.manifest import NODES
 
     text = HEADER + ("  - {name: z, type: r, boundary: [[99990,0],[99999,0],[99999,9],[99990,9]], "
                      "doors: [{name: d, position: [99995,0], width: 1, leads_to: outside}]}\n")

@@ -17,6 +17,7 @@ from textual.worker import get_current_worker
 
 from grove_tui.services.backend import GeneratedScenario
 from grove_tui.tui.screens.generation import describe_failure
+from grove_tui.tui.widgets.prompt_input import ReadlineInput
 
 if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
@@ -87,7 +88,7 @@ and planning run again, the model does not. **Tab** moves between the counts, **
                     with Horizontal(classes="counts-row"):
                         yield Label(f"{group['label']}", classes="counts-label", markup=False)
                         yield Label(f"in {group['spawn']}", classes="counts-spawn", markup=False)
-                        field = Input(str(group["count"]), id=f"count-{index}", restrict=r"[0-9]*",
+                        field = ReadlineInput(str(group["count"]), id=f"count-{index}", restrict=r"[0-9]*",
                                       max_length=COUNT_DIGITS, classes="counts-input",
                                       tooltip=f"People in group '{group['label']}'")
                         yield field

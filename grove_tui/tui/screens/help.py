@@ -37,12 +37,21 @@ def help_text(node: DOMNode | None) -> str:
 
 
 def help_markdown(focused: DOMNode | None, screen: DOMNode) -> str:
-    """The page's prose: the focused widget's help (when it has its own), then the screen's."""
+    """The page's prose: the focused widget's help (when it has its own), then the screen's. A text field's
+    help always says its editing keys (every field keeps readline's; the keys table names only one key of
+    each binding: not alt+backspace, nor ctrl+a beside home)."""
+    from textual.widgets import Input, TextArea
+
+    from grove_tui.tui.widgets.prompt_input import READLINE_HELP
+
     parts = []
     widget_help = help_text(focused)
     screen_help = help_text(screen)
     if widget_help and widget_help != screen_help:
         parts.append(widget_help)
+    editable = isinstance(focused, Input) or (isinstance(focused, TextArea) and not focused.read_only)
+    if editable and READLINE_HELP not in widget_help:
+        parts.append(READLINE_HELP)
     if screen_help:
         parts.append(screen_help)
     return "\n\n".join(parts)

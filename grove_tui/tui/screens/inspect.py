@@ -15,7 +15,7 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Static, TextArea, Tree
 
-from grove_tui.bt.ports import parse_point_list
+from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.backend import GeneratedScenario

@@ -17,6 +17,7 @@ from textual.widgets.option_list import Option
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.map_view import MapView
+from grove_tui.tui.widgets.choice_list import ChoiceList
 from grove_tui.tui.widgets.clipped import ClippedText
 from grove_tui.tui.widgets.map_legend import WORLD_SYMBOLS, MapLegend
 from grove_tui.tui.widgets.prompt_input import PromptInput, ReadlineInput
@@ -36,7 +37,7 @@ class SetupScreen(Screen[None]):
 
 Choose a **world** (**F2**; the map on the right previews it) and a **preset** (**ctrl+r**: what
 kind of scenario the model writes); **Enter** picks one and takes you back to the prompt, as you
-left it. Type a prompt and press **Enter** or **ctrl+g** to generate: pressed before the lists have
+left it (typing in a list goes on at the prompt's end). Type a prompt and press **Enter** or **ctrl+g** to generate: pressed before the lists have
 loaded, it generates as soon as they have. The **seed** beside the prompt makes a run reproducible
 (same world, preset, prompt, seed and model give the same scenario); **ctrl+s** jumps to it.
 **ctrl+o** lists the recent runs saved under the runs folder and reopens one in the inspect screen.
@@ -68,10 +69,10 @@ shows its world, preset, prompt and seed.
     def compose(self) -> ComposeResult:
         with Horizontal(id="setup-body"):
             with Vertical(id="setup-side"):
-                worlds = OptionList(id="worlds")
+                worlds = ChoiceList(id="worlds", typing_target="prompt")
                 worlds.border_title = "World"
                 yield worlds
-                presets = OptionList(id="presets")
+                presets = ChoiceList(id="presets", typing_target="prompt")
                 presets.border_title = "Preset"
                 yield presets
                 yield ClippedText("", id="preset-description", max_lines=4)

@@ -25,6 +25,11 @@ MAX_CATCH_UP_STEPS = 400
 # Wall seconds between two measures of the counters while playing (each reads only the frames since
 # the last one); paused, stepped or over, they are measured at once.
 METRICS_SECONDS = 0.25
+METRICS_FEED_STEPS = 5  # between two measures the live metrics are fed every this many steps
+# Behind the asked speed, wall seconds of stepping between two snapshots: the picture keeps moving (at
+# least ~10 frames a second) and the run still gets most of the CPU (each drawn frame costs the UI
+# thread tens of milliseconds of the GIL at 500 people).
+CATCH_UP_SECONDS = 0.1
 
 
 @dataclass(frozen=True)
@@ -91,6 +96,8 @@ class SimulationController:
         self._steps = 0
         self._measured_steps = -1  # the step count the counters were last measured at
         self._metrics_due = 0.0
+        self._fed_steps = 0  # the step count the live metrics were last fed at
+        self._metrics_failed = ""
 
     # commands from the UI thread (thread-safe) ------------------------------------------------------
     def send(self, *command: Any) -> None:
@@ -140,18 +147,25 @@ class SimulationController:
             while time.monotonic() < deadline:
                 sim.step()
                 self._steps += 1
+                self._measure_frames()
         else:
             t = self._time()
             if self._anchor is None:
                 self._anchor = (now, t)
             target = self._anchor[1] + self.speed * (now - self._anchor[0])
-            steps = int((target - t) / self.dt + 1e-9)
-            if steps > MAX_CATCH_UP_STEPS:  # the machine cannot keep up: drop the backlog, stay responsive
-                steps = MAX_CATCH_UP_STEPS
-                self._anchor = None
-            for _ in range(steps):
+            steps = min(int((target - t) / self.dt + 1e-9), MAX_CATCH_UP_STEPS)
+            # At most CATCH_UP_SECONDS of stepping between two snapshots: a machine that cannot keep up
+            # with the speed runs as fast as it can and the picture keeps moving (400 steps of 500 people
+            # in one go held it for a second or two at 8x).
+            deadline = now + max(period, CATCH_UP_SECONDS)
+            done = 0
+            while done < steps and (done == 0 or time.monotonic() < deadline):
                 sim.step()
                 self._steps += 1
+                done += 1
+                self._measure_frames()
+            if done < steps:
+                self._anchor = None  # behind: drop the backlog, the status shows the real speed
         done = self._steps - before
         if done:
             self._step_times.append((time.monotonic(), done))
@@ -181,8 +195,21 @@ class SimulationController:
         # Paused (after a step, or at the end): measure now; playing: every METRICS_SECONDS.
         return not self.playing or time.monotonic() >= self._metrics_due
 
+    def _measure_frames(self) -> None:
+        """Feed the live metrics the frames recorded since the last feed, a few steps at a time (each step
+        costs the same then, instead of a quarter second's worth of frames landing on one tick)."""
+        live = self.metrics
+        if live is None or self._metrics_failed or self._steps - self._fed_steps < METRICS_FEED_STEPS:
+            return
+        self._fed_steps = self._steps
+        try:
+            live.update(self.simulation.recorder)
+        except Exception as exc:  # a metrics bug must show in the panel, not stop the simulation
+            self._metrics_failed = f"{type(exc).__name__}: {exc}"
+
     def _measure(self) -> None:
-        """The counters up to now: the live metrics read the frames recorded since their last read."""
+        """The counters up to now: the live metrics read what is left of the frames since their last read,
+        then give metrics.json's numbers."""
         self._measured_steps = self._steps
         self._metrics_due = time.monotonic() + METRICS_SECONDS
         live = self.metrics
@@ -191,10 +218,14 @@ class SimulationController:
         sim = self.simulation
         step = int(getattr(sim, "step_count", self._steps))
         try:
+            if self._metrics_failed:
+                raise RuntimeError(self._metrics_failed)
             live.update(sim.recorder)
+            self._fed_steps = self._steps
             values = live.values(sim.events)
         except Exception as exc:  # a metrics bug must show in the panel, not stop the simulation
-            self.counters = Counters(self._time(), step, {}, f"{type(exc).__name__}: {exc}")
+            self.counters = Counters(self._time(), step, {}, str(exc) if self._metrics_failed else
+                                     f"{type(exc).__name__}: {exc}")
             return
         if live.t is not None:
             self.counters = Counters(float(live.t), step, values)

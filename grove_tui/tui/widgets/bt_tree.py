@@ -13,8 +13,8 @@ from textual.strip import Strip
 from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
-from grove_tui.bt.document import TreeElement
-from grove_tui.bt.xml import read_tree
+from grove_tui.bt.format.document import TreeElement
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import BTError
 
 STATUS_CLASSES = {

@@ -17,10 +17,12 @@ from textual.containers import Horizontal
 from textual.message import Message
 from textual.widgets import Input, Label
 
+from grove_tui.tui.widgets.prompt_input import ReadlineInput
+
 PLACEHOLDER = "f: follow-up, e.g. add two guards at the entrance"
 
 
-class FollowupInput(Input):
+class FollowupInput(ReadlineInput):  # readline's keys, as every text field of the app
     HELP = """\
 ## Follow-up
 

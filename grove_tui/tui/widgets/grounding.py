@@ -65,12 +65,16 @@ def render_grounding(report: GroundingReport | None) -> Group:
         parts.append(Text("Nothing is ✓ before a run: play it (p) to check what the people do.", style="dim"))
     if not report.groups:
         parts.append(Text("The sentence was read as no group of people.", style="dim"))
+    for number, sentence in enumerate(report.sentences, start=1):  # a refined scenario: every sentence
+        parts.append(Text(f"{number}. {sentence}", style="dim"))
     for group in report.groups:
         header = Text()
         header.append(f"{MARKS[group.status]} ", style=f"bold {STYLES.get(group.status, '')}")
         label = group.who if group.label.lower() in group.who.lower() else f"{group.who} → {group.label}"
         header.append(label, style="bold")
         header.append(f" ×{len(group.members)}", style="dim")
+        if report.sentences:
+            header.append(f"  {group.asked()}", style="dim")
         parts.append(header)
         grid = _grid()
         for claim in group.claims:
