@@ -337,6 +337,7 @@ class TargetResolver:
     def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, preset: Preset, rng: np.random.Generator) -> None:
         self.world, self.grid, self.space, self.preset, self.rng = world, grid, space, preset, rng
         self.group_points: dict[tuple[int, str], Point] = {}
+        self.party_points: dict[tuple[int, str], Point] = {}  # (SFM group, zone) -> its first member's point
         self._lines: dict[str, Point] = {}  # service point -> heading of its queue line
 
     def snap(self, p: Point, label: str) -> Point:
@@ -362,7 +363,9 @@ class TargetResolver:
         # Doors and entities name their zone; a zone is its own.
         return str(getattr(obj, "zone")) if hasattr(obj, "interaction_point") or hasattr(obj, "leads_to") else obj.name
 
-    def resolve(self, name: str, *, node: str, slot: int | None = None) -> Point:
+    def resolve(self, name: str, *, node: str, slot: int | None = None, party: int = -1) -> Point:
+        """The point `node` sends one person to at `name`. `party`: the walking group (SFM group) the
+        person walks in, whose members' points in a zone are next to each other."""
         obj = self.world.find(name)
         if isinstance(obj, Entity):
             base = self.snap(obj.interaction_point, name)
@@ -380,6 +383,14 @@ class TargetResolver:
             service = _service_entity(obj)
             if service is not None:
                 return self.resolve(service.name, node=node, slot=slot)
+        if party >= 0 and node == "GoTo":
+            # A group walking together arrives together: points spread over the zone would have its
+            # members pulled apart by their goals and held together by the group's forces, and they
+            # stall short of every point.
+            anchor = self.party_points.get((party, obj.name))
+            (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}", cluster=anchor)
+            self.party_points.setdefault((party, obj.name), p)
+            return p
         (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}")
         return p
 
@@ -723,7 +734,7 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
                 # One circle per group: everyone resolves the same centre.
                 point = _group_point(resolver, g, name)
             else:
-                point = resolver.resolve(name, node=node.node, slot=slots[name])
+                point = resolver.resolve(name, node=node.node, slot=slots[name], party=agent.sfm_group)
             targets[id(node)] = point
             agent.targets.append((name, point))
         if agent.targets:

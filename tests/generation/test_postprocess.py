@@ -288,6 +288,11 @@ def test_a_big_walking_group_walks_as_small_social_groups(clinic, grid):
     for members in parties.values():  # each party starts together
         assert max(math.dist(a.start, b.start) for a in members for b in members) < 3.0
     assert any("12 people walk together as 3 groups of 4" in n for n in out.notes)
+    for members in parties.values():  # ... and arrives together: goal points next to each other, not
+        goals = [a.targets[-1][1] for a in members]  # spread over the zone, pulling the group apart
+        assert max(math.dist(g, h) for g in goals for h in goals) < 3.0
+    spread = {a.targets[-1][1] for a in out.agents}
+    assert len(spread) == 12 and min(math.dist(g, h) for g in spread for h in spread if g != h) >= GOAL_SPACING - 1e-9
     family = run(clinic, grid, "normal", "a family walks from the lobby to the cafeteria",
                  [DraftGroup("family", 4, "lobby", together)])
     assert len({a.sfm_group for a in family.agents}) == 1  # a family stays one group
