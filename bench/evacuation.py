@@ -116,7 +116,6 @@ def plan_evacuation(world_name: str, agents: int, seed: int) -> tuple[float, flo
     from grove_tui.generation.postprocess import postprocess
     from grove_tui.generation.presets import load_preset
     from grove_tui.generation.rois import select_rois
-    from grove_tui.language.quantities import extract_quantities
     from grove_tui.language.reading import read_prompt
 
     world = load_world(world_name)
@@ -124,12 +123,12 @@ def plan_evacuation(world_name: str, agents: int, seed: int) -> tuple[float, flo
     prompt = f"{agents} people evacuate the building"
     grid = build_grid(world, resolution=preset.planner.resolution, inflation=preset.planner.inflation)
     reading = read_prompt(prompt, world)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     leave = DraftNode("Sequence", {}, (DraftNode("FollowVelocityField", {"exit": world.exits()[0].name}),))
     draft = Draft((DraftGroup("people", agents, None, leave),))
     wall, cpu = time.perf_counter(), time.process_time()
-    post = postprocess(world, grid, preset, draft, extract_quantities(prompt), selection, seed, prompt,
-                       ("Sequence", "FollowVelocityField", "JoinGroup", "Wait"), reading=reading)
+    post = postprocess(world, grid, preset, draft, selection, seed, reading,
+                       ("Sequence", "FollowVelocityField", "JoinGroup", "Wait"))
     plan = plan_operational(world, grid, preset, post, seed, planner=ThetaStarPlanner(grid))
     return time.process_time() - cpu, time.perf_counter() - wall, len(plan.fields)
 

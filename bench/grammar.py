@@ -36,7 +36,6 @@ PROMPT = ("Ten patients queue at the pharmacy counter", "hospital", "queuing")
 
 
 def synthesis_request():
-    from grove_tui.generation.pipeline import quantities_from_reading
     from grove_tui.generation.presets import load_preset
     from grove_tui.generation.retrieval import NodeRetriever
     from grove_tui.generation.rois import select_rois
@@ -47,11 +46,10 @@ def synthesis_request():
     prompt, world_name, preset_name = PROMPT
     world, preset, retriever = load_world(world_name), load_preset(preset_name), NodeRetriever()
     reading = read_prompt(prompt, world, seed=0)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
-    return prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for,
-                           documents_named=retriever.documents_named)
+    return prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                           cards_for=retriever.cards_for, documents_named=retriever.documents_named)
 
 
 _MASKS = None

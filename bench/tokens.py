@@ -67,18 +67,16 @@ PRESETS = ("emergency", "normal", "queuing")
 
 def build_request(world, preset, prompt, retriever):
     """The bt model's request exactly as GenerationPipeline.run builds it (without the optional RoI model)."""
-    from grove_tui.generation.pipeline import quantities_from_reading
     from grove_tui.generation.rois import select_rois
     from grove_tui.generation.synthesis import prepare_request
     from grove_tui.language.reading import read_prompt
 
     reading = read_prompt(prompt, world, seed=0)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     retrieved = (retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
                  if preset.retrieval_filter is not None and preset.retrieval_k > 0 else [])
-    return prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                           retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for,
-                           documents_named=retriever.documents_named)
+    return prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                           cards_for=retriever.cards_for, documents_named=retriever.documents_named)
 
 
 def fixed_tokens(llm, messages) -> int:

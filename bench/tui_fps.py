@@ -28,10 +28,12 @@ Figures (2 shared cores, 500 agents, 120x40, --fps 30):
 - 2026-11-25 19:03, blank cells merged into the run before them, counters paced: 14.6 fps at load 6.5;
   --peer (the map before), 2 rounds at load 6-7: 15.0 against 15.9 (machine-bound at that load).
 
-- 2026-11-28 (issue 31), counters on, 1x then 8x, load 9.2-10.1: 14.5 fps at 120x40 and 15.8 at 80x24;
+- 2026-11-28 (issue 31), counters on, 1x then 8x, load 9.2-10.1 (metrics then fed every 5 steps): 14.5 fps
+  at 120x40 and 15.8 at 80x24;
   at 8x 8.2-8.9 fps at 3.0-3.4x real time (main before: 0.9 fps at 8x, the picture held while a
   400-step backlog ran); counters at most 0.27 s behind at 1x and 0.26 s at 8x. Details in
-  docs/BENCHMARKS.md, issue 31.
+  docs/BENCHMARKS.md, issue 31. Final (fed every 40 steps), load 5.2-5.3: 16.9 fps at 120x40, 18.3 at 80x24;
+  at 8x 11.9-13.4 fps at 5.9x real time; counters at most 0.64 s behind.
 
 Key latency (--key-latency, 120x40; timed from the Key event to the first painted update of its
 screen, and main measured with `--tree` in the same hour):

@@ -117,6 +117,13 @@ class PresetError(BadInputError):
     hint = "Fix the preset file named above, or choose another preset (presets/*.yaml)."
 
 
+class SuiteError(BadInputError):
+    """A grounding suite file (eval/grounding/suite.yaml or the user's) is malformed; the message names the case."""
+
+    title = "Grounding suite"
+    hint = "Fix the case named above (the format: eval/grounding/suite.yaml and grove_tui/analysis/grounding_eval.py)."
+
+
 class PromptError(BadInputError):
     """The prompt itself asks for something impossible: empty, a place the world lacks, too many people."""
 

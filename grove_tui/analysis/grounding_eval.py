@@ -41,7 +41,7 @@ from typing import Any
 
 from grove_tui.analysis.metrics import iter_trajectory_chunks
 from grove_tui.analysis.outcomes import OutcomeChecker
-from grove_tui.errors import BadInputError
+from grove_tui.errors import SuiteError
 from grove_tui.scenario.events import read_events
 from grove_tui.scenario.report import FAILS, HOLDS, Claim, GroundingReport, GroupGrounding, RobotGrounding
 
@@ -52,10 +52,6 @@ REACTIONS = ("follow", "approach", "block", "avoid", "look")
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
 REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0}
 PACE_BANDS = {"slow": (0.2, 0.85), "fast": (1.15, 3.0)}  # times the preset's normal walking speed
-
-
-class SuiteError(BadInputError):
-    title = "Grounding suite"
 
 
 @dataclass(frozen=True)

@@ -595,24 +595,37 @@ class _QueueProbe(_EventsProbe):
 class _ConverseProbe(_EventsProbe):
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         partners = set(self.claim.partners) or set(self.member_ids())
+        starts = [(agent, e.t, frozenset(int(x) for x in e.detail.split(",") if x.strip().isdigit()))
+                  for agent in self.member_ids() for e in events.get(agent, ()) if e.kind == "conversation_start"]
+        circles = _circles([ids for _, _, ids in starts])
         talked = 0
         first = math.inf
-        for agent in self.member_ids():
-            for e in events.get(agent, ()):
-                if e.kind != "conversation_start":
-                    continue
-                with_ids = {int(x) for x in e.detail.split(",") if x.strip().isdigit()}
-                # everyone named (but the member itself) is in the circle it talked in
-                if (partners - {agent}) <= with_ids:
-                    talked += 1
-                    first = min(first, e.t)
-                    break
+        seen: set[int] = set()
+        for agent, t, ids in starts:
+            # everyone named (but the member itself) is in the circle it talked in: the people in it
+            # when it started and those who joined it later (a circle that started without its last
+            # arrivals, as the simulation's patience allows, is still one circle)
+            if agent not in seen and (partners - {agent}) <= circles[ids]:
+                seen.add(agent)
+                talked += 1
+                first = min(first, t)
         n = self.members
         text = f"{talked}/{n} talked with " + ("each other" if not self.claim.partners else
                                                f"agents {', '.join(map(str, sorted(partners)))}")
         if talked:
             text += f" (from {_when(first)})"
         return (HOLDS if talked >= _need(self.claim, n) else FAILS), text
+
+
+def _circles(sets: list[frozenset[int]]) -> dict[frozenset[int], frozenset[int]]:
+    """Each conversation_start's people -> everyone in its circle: the starts that share someone merged
+    (a late arrival's start names the people already talking)."""
+    merged: list[set[int]] = []
+    for ids in sets:
+        hit = [m for m in merged if m & ids]
+        union = set(ids).union(*hit) if hit else set(ids)
+        merged = [m for m in merged if not (m & ids)] + [union]
+    return {ids: frozenset(next(m for m in merged if ids <= m)) for ids in sets}
 
 
 class _EvacuateProbe(_EventsProbe):

@@ -33,6 +33,10 @@ import yaml
 
 from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import GroveError, UnderstandingError
+from grove_tui.language.lexicon import SCALES, TENS, UNITS
+
+# A label is never a number: the lexicon's number words (not "couple" or "pair", which name people).
+NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES)
 
 if TYPE_CHECKING:
     from grove_tui.scenario.model import Scenario
@@ -52,8 +56,6 @@ THRESHOLD_FIELDS = ("groups", "count", "intent", "places", "robot_reaction")
 THRESHOLD = 0.95
 SCENARIO_FIELDS = ("agent_count", "start_zones", "destination_zones", "location_zones", "behavior_types",
                    "no_idle_agents")
-NUMBER_WORDS = frozenset("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen "
-                         "fifteen sixteen seventeen eighteen nineteen twenty thirty forty fifty hundred".split())
 
 
 @dataclass(frozen=True)

@@ -21,6 +21,8 @@ from grove_tui.crowd.coordination import ServiceQueue, conversation_radius, queu
 from grove_tui.bt.format.document import TreeDocument
 from grove_tui.crowd.leaves.grove import aside_spot
 from grove_tui.bt.format.manifest import NODES
+from grove_tui.world.model import World
+from grove_tui.navigation.grid import OccupancyGrid
 
 Point = tuple[float, float]
 
@@ -49,7 +51,7 @@ class Formation:
 class GridSpace:
     """The occupancy grid answering what the runtime's coordination code asks of the simulation."""
 
-    def __init__(self, world: Any, grid: Any) -> None:
+    def __init__(self, world: World, grid: OccupancyGrid) -> None:
         self.world = world
         self.grid = grid
 
@@ -69,7 +71,7 @@ def _number(element: Any, port: str) -> float:
     return float(text)
 
 
-def _point(world: Any, element: Any, name: str | None, x_port: str = "x", y_port: str = "y") -> Point | None:
+def _point(world: World, element: Any, name: str | None, x_port: str = "x", y_port: str = "y") -> Point | None:
     x, y = element.get(x_port), element.get(y_port)
     if x is not None and y is not None:
         return (float(x), float(y))
@@ -82,7 +84,7 @@ def _point(world: Any, element: Any, name: str | None, x_port: str = "x", y_port
     return None
 
 
-def predict_formations(world: Any, grid: Any, trees: Iterable[TreeDocument], goals: Sequence[Point] = ()) -> list[Formation]:
+def predict_formations(world: World, grid: OccupancyGrid, trees: Iterable[TreeDocument], goals: Sequence[Point] = ()) -> list[Formation]:
     """Every queue and conversation circle the agents' trees will form, in the order they first appear."""
     space = GridSpace(world, grid)
     queues: dict[tuple[str, Point], dict[str, Any]] = {}
@@ -121,7 +123,7 @@ def predict_formations(world: Any, grid: Any, trees: Iterable[TreeDocument], goa
     return formations
 
 
-def _conversation_centre(world: Any, element: Any, goals: Sequence[Point]) -> Point | None:
+def _conversation_centre(world: World, element: Any, goals: Sequence[Point]) -> Point | None:
     if element.id == "Converse":
         return _point(world, element, element.get("target"))
     centre = _point(world, element, None, "center_x", "center_y")
@@ -147,7 +149,7 @@ def formation_distance(formation: Formation, points: np.ndarray) -> np.ndarray:
     return np.maximum(best - formation.radius, 0.0)
 
 
-def block_formations(grid: Any, formations: Sequence[Formation], clearance: float) -> Any:
+def block_formations(grid: OccupancyGrid, formations: Sequence[Formation], clearance: float) -> Any:
     """A copy of the grid with every cell closer than `clearance` to a formation's bodies occupied."""
     occupied = grid.occupied.copy()
     res = float(grid.resolution)

@@ -233,7 +233,7 @@ def _card_kind(port: Any) -> str:
         return "|".join(str(c) for c in port.choices)
     if port.type in ("int", "float") and port.min is not None and port.max is not None:
         return f"{_card_number(port.min)}..{_card_number(port.max)}"
-    return _CARD_TYPE_WORDS.get(port.type, port.type)
+    return str(_CARD_TYPE_WORDS.get(port.type, port.type))
 
 
 def node_signature(spec: Any) -> str:

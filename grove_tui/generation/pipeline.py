@@ -23,24 +23,23 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from grove_tui.errors import BTError
 from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft, node_to_dict
 from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
-from grove_tui.generation.postprocess import PostProcessed, check_population, check_stated_counts, postprocess
-from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
+from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
-from grove_tui.language.quantities import Quantity, extract_quantities
-from grove_tui.language.reading import Count, GroupReading, PromptReading, effective_counts, read_prompt
-from grove_tui.language.text import normalise
-from grove_tui.generation.rois import RoIMatcher, describe_selection, refine_with_model, select_rois
+from grove_tui.language.model import Count, GroupReading, PromptReading, effective_counts
+from grove_tui.language.reading import read_prompt
+from grove_tui.generation.rois import RoISelection, describe_selection, refine_with_model, select_rois
 from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.errors import Cancelled
+from grove_tui.errors import BTError, Cancelled, GenerationError, PromptError
+from grove_tui.world.model import World
 
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
 MAX_PROMPT_CHARS = 2000
@@ -85,38 +84,32 @@ Event = StageStarted | StageFinished | TokenStreamed | AttemptStarted
 class PlanInputs:
     """What post-processing and planning consume, kept on the result so counts can be re-planned.
 
-    Group i of the result (report["groups"][i]) is the i-th stated quantity when the prompt states
-    counts, else the i-th draft group: that is how post-processing reconciles them.
+    Group i of the result (report["groups"][i]) is the i-th group of the reading that has people of
+    its own (effective_counts): that is how post-processing reconciles the draft with the reading.
     """
 
-    prompt: str
     draft: Draft
-    quantities: tuple[Quantity, ...]
-    selection: Any  # rois.RoISelection
+    selection: RoISelection
     node_names: tuple[str, ...]
-    reading: PromptReading | None = None  # the prompt's groups; when it has any, they are the result's groups
+    reading: PromptReading  # the sentence as read: its groups are the result's groups
     sentence: PromptReading | None = None  # the reading before the user's count edits (None: no edit yet)
 
+    @property
+    def prompt(self) -> str:
+        return self.reading.prompt
+
     def with_counts(self, counts: Mapping[int, int]) -> PlanInputs:
-        if self.reading is not None and self.reading.groups:
-            # Result group i is the i-th reading group that has people of its own (effective_counts).
-            order = sorted(effective_counts(self.reading))
-            groups = list(self.reading.groups)
-            for i, n in counts.items():
-                r = order[i]
-                inside = sum(g.count.value for g in groups if g.relation == f"subset_of:{r}")
-                value = int(n) + inside  # a parent's count includes its subsets ("one of them")
-                groups[r] = replace(groups[r], count=Count("exact", value, value, value))
-            reading = replace(self.reading, groups=tuple(groups))
-            return replace(self, reading=reading, quantities=tuple(quantities_from_reading(reading)),
-                           sentence=self.sentence or self.reading)
-        if self.quantities:
-            # An edited count is stated by the user now, even where the prompt only implied the group.
-            quantities = tuple(replace(q, count=counts[i], implied=False) if i in counts else q
-                               for i, q in enumerate(self.quantities))
-            return replace(self, quantities=quantities)
-        drafted = tuple(replace(g, count=counts[i]) if i in counts else g for i, g in enumerate(self.draft.groups))
-        return replace(self, draft=Draft(drafted))
+        # Result group i is the i-th reading group that has people of its own (effective_counts).
+        order = sorted(effective_counts(self.reading))
+        groups = list(self.reading.groups)
+        for i, n in counts.items():
+            r = order[i]
+            inside = sum(g.count.value for g in groups if g.relation == f"subset_of:{r}")
+            value = int(n) + inside  # a parent's count includes its subsets ("one of them")
+            # an edited count is stated by the user now: sure, whatever the sentence said
+            groups[r] = replace(groups[r], count=Count("exact", value, value, value),
+                                confidence=tuple(c for c in groups[r].confidence if c.field != "count"))
+        return replace(self, reading=replace(self.reading, groups=tuple(groups)), sentence=self.sentence or self.reading)
 
 
 @dataclass
@@ -135,8 +128,7 @@ class Drafted:
     """What the rois, retrieval and synthesis stages give post-processing (GenerationPipeline.draft)."""
 
     reading: PromptReading
-    quantities: tuple[Quantity, ...]
-    selection: Any  # rois.RoISelection
+    selection: RoISelection
     retrieved: tuple[Any, ...]
     request: Any  # synthesis.SynthesisRequest
     synthesis: Any  # synthesis.SynthesisResult
@@ -144,25 +136,6 @@ class Drafted:
 
 def _no_event(event: Event) -> None:
     """The event sink of a caller that listens to nothing."""
-
-
-def quantities_from_reading(reading: PromptReading) -> list[Quantity]:
-    """The head counts of a reading in the older Quantity form (population checks, the report's
-    "quantities"): one per group with people of its own, spans located in the prompt."""
-    out: list[Quantity] = []
-    counts = effective_counts(reading)
-    cursor = 0
-    for i, g in enumerate(reading.groups):
-        at = reading.prompt.find(g.who, cursor)
-        start = at if at >= 0 else cursor
-        end = start + len(g.who)
-        cursor = end if at >= 0 else cursor
-        if counts.get(i, 0) <= 0:
-            continue
-        out.append(Quantity(count=counts[i], noun=g.label, phrase=g.who, start=start, end=end,
-                            exact=g.count.kind in ("exact", "structured", "exclusive"),
-                            implied=g.count.kind in ("vague", "implied")))
-    return out
 
 
 def group_records(groups: Sequence[Any], reading: PromptReading | None, asked_by: int = 0) -> list[dict[str, Any]]:
@@ -213,11 +186,11 @@ class StageClock:
         self.emit(StageFinished(stage, seconds, prompt_tokens, completion_tokens, detail))
 
 
-def world_reference(world: Any) -> str:
+def world_reference(world: World) -> str:
     """How a scenario names its world: the shipped name, or the path of a user's world file."""
-    source = getattr(world, "source", None)
+    source = world.source
     if source is None:
-        return world.name
+        return str(world.name)
     source = Path(source)
     try:
         if source.resolve().parent == worlds_dir().resolve():
@@ -235,10 +208,9 @@ def _model_name(llm: Any) -> str:
 class GenerationPipeline:
     """One world and preset, models loaded once; `run` many prompts."""
 
-    def __init__(self, world: Any, preset: Preset, llm_roi: Any | None, llm_bt: Any, retriever: Any,
+    def __init__(self, world: World, preset: Preset, llm_roi: Any | None, llm_bt: Any, retriever: Any,
                  resolution: float | None = None, robot: RobotRequest | None = None,
-                 plan_cache: PlanCache | None = None, embed: Callable[[list[str]], Any] | None = None,
-                 max_tokens: int = 512) -> None:
+                 plan_cache: PlanCache | None = None, max_tokens: int = 512) -> None:
         self.world = world
         self.preset = preset
         self.llm_roi = llm_roi
@@ -247,7 +219,6 @@ class GenerationPipeline:
         self.resolution = float(resolution or preset.planner.resolution)
         self.robot = robot
         self.plan_cache = plan_cache or PlanCache()
-        self.matcher = RoIMatcher(world, embed)
         self.max_tokens = max_tokens
         self._grid: OccupancyGrid | None = None
         self._planner: ThetaStarPlanner | None = None
@@ -286,8 +257,8 @@ class GenerationPipeline:
 
         drafted = self.draft(prompt, seed, clock, on_event, cancel)
         reading, selection, retrieved = drafted.reading, drafted.selection, drafted.retrieved
-        request, synthesis, quantities = drafted.request, drafted.synthesis, list(drafted.quantities)
-        inputs = PlanInputs(prompt, synthesis.draft, tuple(quantities), selection, tuple(request.node_names), reading)
+        request, synthesis = drafted.request, drafted.synthesis
+        inputs = PlanInputs(synthesis.draft, selection, tuple(request.node_names), reading)
         post, plan = self._plan_stages(inputs, seed, clock, cancel)
 
         models = {"bt": _model_name(self.llm_bt)}
@@ -298,7 +269,6 @@ class GenerationPipeline:
             "models": models, "stages": stages,
             "total_seconds": round(time.perf_counter() - started, 4),
             "prompt_tokens": synthesis.prompt_tokens, "completion_tokens": synthesis.completion_tokens,
-            "quantities": [{"phrase": q.phrase, "count": q.count, "noun": q.noun, "exact": q.exact} for q in quantities],
             "reading": reading.to_dict(),
             "selected_rois": describe_selection(selection), "zones": selection.zones, "named_zones": selection.named_zones,
             "retrieved": [{"name": r.name, "kind": r.kind, "score": r.score, "nodes": list(r.nodes)} for r in retrieved],
@@ -324,17 +294,19 @@ class GenerationPipeline:
         emit = on_event or _no_event
         t0 = clock.begin("rois")
         if reading is None:
-            # Checked on the text the reader reads: full-width letters are words, "－５" is negative.
-            typed = normalise(prompt)
-            check_stated_counts(typed, extract_quantities(typed))  # no words, negative or zero counts: refused
-            reading = with_followed_person(read_prompt(prompt, world, seed=seed), world)
-        quantities = quantities_from_reading(reading)
-        selection = select_rois(world, preset, prompt, self.matcher, reading=reading)
-        roi_tokens: tuple[int, ...] = (0, 0)  # prompt and completion tokens of the roi model
+            # The sentence is read once, here: everything below takes the reading, and the raw text goes
+            # only to the embedder (retrieval) and the models.
+            reading = read_prompt(prompt, world, seed=seed)
+            if reading.problems:  # no words, a negative or zero count, nobody: refused before anything runs
+                raise PromptError(reading.problems[0])
+            reading = with_followed_person(reading, world)
+        selection = select_rois(world, preset, reading)
+        roi_tokens = (0, 0)  # prompt and completion tokens of the roi model
         if self.llm_roi is not None and preset.guided:
-            selection, *spent = refine_with_model(world, preset, prompt, selection, self.llm_roi, seed, cancel)
-            roi_tokens = tuple(spent)
-        check_population(world, self.grid, preset, selection, quantities)
+            selection, reading, *spent = refine_with_model(world, preset, reading, selection, self.llm_roi, seed,
+                                                           cancel)
+            roi_tokens = (spent[0], spent[1])
+        check_population(world, self.grid, preset, selection, reading)
         clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 
         t0 = clock.begin("retrieval")
@@ -343,8 +315,8 @@ class GenerationPipeline:
             retrieved = self.retriever.retrieve(query or prompt, preset.retrieval_filter, k=k)
         else:
             retrieved = []
-        request = prepare_request(preset, selection, retrieved, prompt, quantities, self.retriever.documents_for,
-                                  reading=reading, world=world, cards_for=getattr(self.retriever, "cards_for", None),
+        request = prepare_request(preset, selection, retrieved, reading, self.retriever.documents_for, world=world,
+                                  cards_for=getattr(self.retriever, "cards_for", None),
                                   documents_named=getattr(self.retriever, "documents_named", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
@@ -355,7 +327,7 @@ class GenerationPipeline:
                                max_tokens=self.max_tokens, on_attempt=on_attempt)
         clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
                   synthesis.prompt_tokens, synthesis.completion_tokens)
-        return Drafted(reading, tuple(quantities), selection, tuple(retrieved), request, synthesis)
+        return Drafted(reading, selection, tuple(retrieved), request, synthesis)
 
     def replan(self, result: GenerationResult, counts: Mapping[int, int], seed: int | None = None,
                on_event: Callable[[Event], None] | None = None,
@@ -380,7 +352,7 @@ class GenerationPipeline:
         seed = int(result.scenario.seed if seed is None else seed)
         self.adopt_grid(result.grid, result.scenario.resolution)  # the same world and preset: the run's grid
         edited = inputs.with_counts(counts)
-        check_population(self.world, self.grid, self.preset, edited.selection, edited.quantities)
+        check_population(self.world, self.grid, self.preset, edited.selection, edited.reading)
 
         stages = {k: dict(v) for k, v in result.report.get("stages", {}).items()}
         previous = sum(stages.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
@@ -430,8 +402,8 @@ class GenerationPipeline:
         """The post-processing and planning stages, shared by `run` and `replan`."""
         world, preset, grid = self.world, self.preset, self.grid
         t0 = clock.begin("postprocess")
-        post = postprocess(world, grid, preset, inputs.draft, list(inputs.quantities), inputs.selection, seed,
-                           inputs.prompt, list(inputs.node_names), reading=inputs.reading)
+        post = postprocess(world, grid, preset, inputs.draft, inputs.selection, seed, inputs.reading,
+                           list(inputs.node_names))
         clock.end("postprocess", t0, f"{len(post.agents)} agents")
 
         t0 = clock.begin("planning")
@@ -458,10 +430,9 @@ class GenerationPipeline:
         report["exit"] = post.exit
         report["exits"] = list(post.exits)  # every exit evacuees use, each person its nearest
         report["notes"] = post.notes + plan.notes
-        if inputs.reading is not None:
-            report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
-                                                   post.notes + plan.notes, robot=plan.robot,
-                                                   sentence=inputs.sentence or inputs.reading,
-                                                   walking_speed=self.preset.max_vel).to_dict()
+        report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
+                                               post.notes + plan.notes, robot=plan.robot,
+                                               sentence=inputs.sentence or inputs.reading,
+                                               walking_speed=self.preset.max_vel).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

@@ -24,7 +24,7 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.bt.format.xml import write_tree
 from grove_tui.errors import Cancelled
-from grove_tui.navigation.theta_star import PlanCache, PlanningError, ThetaStarPlanner
+from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
     block_formations,
@@ -33,10 +33,13 @@ from grove_tui.generation.formations import (
     predict_formations,
 )
 from grove_tui.generation.postprocess import FreeSpace, PostProcessed
-from grove_tui.generation.presets import GenerationError, Preset
+from grove_tui.errors import GenerationError, PlanningError
+from grove_tui.generation.presets import Preset
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.waypoints import plan_waypoints
+from grove_tui.world.model import Door, Entity, World
+from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.language.model import PromptReading
 from grove_tui.language.tokens import lemma, words
 
@@ -72,8 +75,10 @@ class CachedPlanner:
         self.planner = planner
         self.cache = cache or PlanCache()
 
-    def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
-        return self.cache.plan(self.world_name, self.planner, start, goal, start_label=start_label, goal_label=goal_label)
+    def plan(self, start: Point, goal: Point, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+        path: np.ndarray = self.cache.plan(self.world_name, self.planner, start, goal, start_label=start_label,
+                                           goal_label=goal_label)
+        return path
 
 
 def goals_from_tree(document: TreeDocument) -> list[Point]:
@@ -94,7 +99,7 @@ def goals_from_tree(document: TreeDocument) -> list[Point]:
     return goals
 
 
-def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed, seed: int,
+def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: PostProcessed, seed: int,
                      robot: RobotRequest | None = None, planner: ThetaStarPlanner | None = None,
                      cache: PlanCache | None = None, cancel: threading.Event | None = None,
                      reading: PromptReading | None = None) -> OperationalPlan:
@@ -124,6 +129,7 @@ def plan_operational(world: Any, grid: Any, preset: Preset, post: PostProcessed,
             g = labels[members[0].group_index]
             exit_name = members[0].exit or post.exit
             exit_door = world.find(exit_name)
+            assert isinstance(exit_door, Door), exit_name  # fields lead to exits, which are doors
             centroid = _free_centroid(grid, [a.start for a in members], g.spawn)
             try:
                 built = cached.cache.field(world.name, planner, centroid, exit_door.position,
@@ -162,7 +168,7 @@ def _check_cancel(cancel: threading.Event | None) -> None:
         raise Cancelled("generation cancelled during planning")
 
 
-def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
+def _free_centroid(grid: OccupancyGrid, points: Sequence[Point], zone: str) -> Point:
     if not points:
         # A group with no members has no centre; the prompt checks refuse "zero people" before this.
         raise GenerationError(f"a group in {zone} has no people to lead to the exit")
@@ -176,15 +182,15 @@ def _free_centroid(grid: Any, points: Sequence[Point], zone: str) -> Point:
     return (float(q[0]), float(q[1])) if math.dist(q, (cx, cy)) < 1.0 else nearest
 
 
-def _resolve_point(world: Any, grid: Any, value: Point | str, what: str) -> Point:
+def _resolve_point(world: World, grid: OccupancyGrid, value: Point | str, what: str) -> Point:
     if isinstance(value, str):
         try:
             obj = world.find(value)
         except Exception as exc:
             raise GenerationError(f"robot {what} {value!r}: {exc}") from None
-        if hasattr(obj, "interaction_point"):
+        if isinstance(obj, Entity):
             p = obj.interaction_point
-        elif hasattr(obj, "leads_to"):
+        elif isinstance(obj, Door):
             p = obj.inward_point(0.8)
         else:
             p = obj.anchor
@@ -196,7 +202,7 @@ def _resolve_point(world: Any, grid: Any, value: Point | str, what: str) -> Poin
     return (round(float(q[0]), 3), round(float(q[1]), 3))
 
 
-def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
+def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
                notes: list[str], reading: PromptReading | None = None) -> RobotSpec:
     """The robot's start, goal, path and task.
 
@@ -242,7 +248,7 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
             except PlanningError:
                 if not may_cross:
                     raise
-        path = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
+        path: np.ndarray = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
         if robot_planner is not None:
             crossed = [f.describe() for f in formations
                        if nearest_formation_gap([f], [tuple(p) for p in path]) < clearance]
@@ -302,7 +308,7 @@ def plan_robot(world: Any, grid: Any, planner: Any, post: PostProcessed, request
     return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
 
 
-def _passes(world: Any, path: Any, zone: str) -> bool:
+def _passes(world: World, path: Any, zone: str) -> bool:
     """Whether a path goes through a zone (its vertices, or points every half metre along it)."""
     points, _ = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
     polygon = world.zone(zone).polygon
@@ -313,7 +319,7 @@ def _rounded(path: Any) -> tuple[Point, ...]:
     return tuple((round(float(x), 3), round(float(y), 3)) for x, y in path)
 
 
-def _chosen_pair(world: Any, grid: Any, post: PostProcessed, people: Sequence[Point], seed: int, picker: _StartPicker,
+def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people: Sequence[Point], seed: int, picker: _StartPicker,
                  reactors: set[int], plan_path: Any, fixed_start: Point | None,
                  fixed_goal: Point | None) -> tuple[Point, Point, np.ndarray]:
     """A start/goal pair across the scene: longest (up to 20 m) and passing closest to the crowd's
@@ -356,7 +362,7 @@ class _StartPicker:
     """Free points for the robot: on free floor, ROBOT_CLEARANCE from every person, off queues and
     circles, outside the zones being evacuated."""
 
-    def __init__(self, world: Any, grid: Any, space: FreeSpace, people: Sequence[Point], robot_planner: Any,
+    def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, people: Sequence[Point], robot_planner: Any,
                  evacuated: set[str], notes: list[str]) -> None:
         self.world, self.grid, self.space, self.notes = world, grid, space, notes
         self.people = np.asarray(people, dtype=float).reshape(-1, 2)
@@ -366,8 +372,9 @@ class _StartPicker:
     def clearance(self, points: np.ndarray) -> np.ndarray:
         if not len(self.people):
             return np.full(len(points), np.inf)
-        return np.min(np.hypot(points[:, None, 0] - self.people[None, :, 0],
-                               points[:, None, 1] - self.people[None, :, 1]), axis=1)
+        nearest: np.ndarray = np.min(np.hypot(points[:, None, 0] - self.people[None, :, 0],
+                                              points[:, None, 1] - self.people[None, :, 1]), axis=1)
+        return nearest
 
     def free(self, p: Point) -> bool:
         return self.robot_planner is None or bool(self.robot_planner.grid.is_free(*p))
@@ -443,7 +450,7 @@ class _StartPicker:
                               f"(a robot placed by GROVE keeps {ROBOT_CLEARANCE:g} m)")
 
 
-def _request_point(world: Any, grid: Any, value: Point | str, what: str, picker: _StartPicker) -> Point:
+def _request_point(world: World, grid: OccupancyGrid, value: Point | str, what: str, picker: _StartPicker) -> Point:
     """A user's --robot-start/--robot-goal: a point as given, a place name as a free point there."""
     if isinstance(value, str) and what == "start":
         try:
@@ -455,7 +462,7 @@ def _request_point(world: Any, grid: Any, value: Point | str, what: str, picker:
     return _resolve_point(world, grid, value, what)
 
 
-def _zone_name(world: Any, name: str | None) -> str | None:
+def _zone_name(world: World, name: str | None) -> str | None:
     if not name:
         return None
     try:
@@ -466,7 +473,7 @@ def _zone_name(world: Any, name: str | None) -> str | None:
     return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
 
 
-def _place_point(world: Any, grid: Any, name: str) -> Point | None:
+def _place_point(world: World, grid: OccupancyGrid, name: str) -> Point | None:
     """Where the robot goes for a place: a thing's interaction point, a point inside a door, a zone's anchor."""
     try:
         return _resolve_point(world, grid, name, "place")
@@ -517,7 +524,7 @@ REACTOR_BAND = {"ApproachRobot": (3.0, 6.0), "BlockRobot": (3.0, 6.0), "AvoidRob
                 "LookAtRobot": (2.0, 5.0)}
 
 
-def place_robot_reactors(world: Any, grid: Any, post: PostProcessed, robot: RobotSpec | None, seed: int,
+def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed, robot: RobotSpec | None, seed: int,
                          notes: list[str]) -> None:
     """Groups whose whole activity is reacting to the robot, and whom the sentence places nowhere, start
     beside its route, a third of the way along (so the robot reaches them early in a run), in sight of
@@ -583,7 +590,7 @@ def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(points), np.asarray(arcs)
 
 
-def _spots(world: Any, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
+def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
            robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator,
            zone_name: str | None = None) -> list[Point] | None:
     if zone_name is None:
@@ -616,7 +623,7 @@ def _spots(world: Any, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.nda
     return None
 
 
-def _robot_candidates(world: Any, grid: Any, post: PostProcessed, starts: Sequence[Point], seed: int,
+def _robot_candidates(world: World, grid: OccupancyGrid, post: PostProcessed, starts: Sequence[Point], seed: int,
                       evacuated: set[str] | None = None) -> list[Point]:
     zones: list[str] = []
     for a in post.agents:

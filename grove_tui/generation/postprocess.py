@@ -1,17 +1,17 @@
 """Post-processing: the model's draft becomes one BehaviorTree.CPP v4 file per agent.
 
 The model only names node types, places and counts. Everything a model tracks badly is done here,
-deterministically from the seed: the population is made to match the counts the prompt states,
-agents get ids 1..N, groups get ids, leaders and member lists, every `target` name is resolved to a
-point by the preset's goal sampling, spawn points are sampled in free space of the spawn zone at
-least two radii apart, and auto ports are filled so each file is self-contained.
+deterministically from the seed: the groups are the reading's, the draft repaired only where it
+contradicts them (generation/reconcile.py); agents get ids 1..N, groups get ids, leaders and member
+lists, every `target` name is resolved to a point by the preset's goal sampling, spawn points are
+sampled in free space of the spawn zone at least two radii apart, and auto ports are filled so each
+file is self-contained. Nothing here reads the sentence: the reading (language/) is the only ear.
 """
 
 from __future__ import annotations
 
 import math
-import re
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -23,14 +23,16 @@ from grove_tui.bt.format.manifest import NODES, NodeSpec
 from grove_tui.crowd.coordination import conversation_radius, queue_line_direction
 from grove_tui.bt.format.ports import format_port_value
 from grove_tui.bt.format.xml import write_tree
-from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
-from grove_tui.generation.presets import GenerationError, Preset, PromptError
+from grove_tui.generation.draft import Draft, DraftNode
+from grove_tui.errors import GenerationError, PlanningError, PromptError
+from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import reconcile
-from grove_tui.language import lexicon as lx
-from grove_tui.language.quantities import Quantity, lemma, semantic_tokens, words
-from grove_tui.language.reading import PromptReading
-from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
+from grove_tui.generation.rois import RoISelection
+from grove_tui.language.model import GroupReading, PromptReading, effective_counts
+from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.navigation.velocity_field import least_congested_exits, nearest_exits
+from grove_tui.world.model import Door, Entity, World
 
 Point = tuple[float, float]
 
@@ -78,7 +80,7 @@ class GroupPlan:
     count: int
     spawn: str
     tree: DraftNode
-    quantity: Quantity | None
+    who: str = ""  # the reading's words for them ("ten patients"), for messages
     member_ids: list[int] = field(default_factory=list)
     sfm_group: int = -1
     field_id: str | None = None
@@ -110,283 +112,32 @@ class PostProcessed:
 
 # ---- populations ----------------------------------------------------------------------------
 
-def _label_score(group: DraftGroup, quantity: Quantity) -> float:
-    label = set(semantic_tokens(group.label)) | {lemma(w) for w in group.label.lower().split()}
-    score = 0.0
-    if quantity.noun in label:
-        score += 2.0
-    score += len(label & quantity.label_tokens)
-    return score
-
-
-def reconcile_groups(draft: Draft, quantities: Sequence[Quantity], preset: Preset, world: Any,
-                     default_spawn: str, notes: list[str], prompt: str = "", selection: Any = None,
-                     allowed_nodes: Sequence[str] = ()) -> list[GroupPlan]:
-    """Groups whose counts are the counts the prompt states.
-
-    With stated quantities the population is exactly their sum: each quantity takes the draft group
-    whose label names its noun (else the next unused group in order); groups left over are dropped and
-    missing ones are added, so a model that merged "ten patients and two nurses" into one group still
-    yields two groups of ten and two. An added group starts in the place its own words name ("two
-    nurses chat in the lobby" -> lobby) and does what the closest draft group does there, or simply
-    walks to that place.
-    """
-    groups = list(draft.groups)
-    if not quantities:
-        return [GroupPlan(i, g.label, g.count, _zone_of(world, g.spawn, default_spawn), g.tree, None)
-                for i, g in enumerate(groups)]
-    unused = list(range(len(groups)))
-    plans: list[GroupPlan] = []
-    for qi, q in enumerate(quantities):
-        pick = None
-        if unused:
-            best = max(unused, key=lambda i: (_label_score(groups[i], q), -i))
-            pick = best if _label_score(groups[best], q) > 0 else unused[0]
-        if pick is not None:
-            unused.remove(pick)
-            g = groups[pick]
-            count = g.count if q.implied else q.count  # "visitors walk in": how many is the model's choice
-            if g.count != count:
-                notes.append(f"group '{g.label}': count {g.count} -> {count} ('{q.phrase}')")
-            # The prompt's word names the group when the model's label does not ("visitors", not "staff_room")
-            label = g.label if _label_score(g, q) > 0 else q.phrase.split()[-1].lower()
-            plans.append(GroupPlan(len(plans), label, count, _zone_of(world, g.spawn, default_spawn), g.tree, q))
-            continue
-        if not groups:
-            raise GenerationError(f"the model wrote no group of people for '{q.phrase}'; rephrase the prompt or try another seed")
-        end = quantities[qi + 1].start if qi + 1 < len(quantities) else len(prompt)
-        place = _place_in(prompt[q.end:end], selection)
-        template = max(groups, key=lambda g: _label_score(g, q))
-        label = "people" if q.noun == "person" else q.noun
-        if place is None:
-            spawn, tree, how = _zone_of(world, template.spawn, default_spawn), template.tree, f"tree copied from '{template.label}'"
-        else:
-            spawn = _zone_of(world, place, default_spawn)
-            tree = template.tree if place in _tree_places(template.tree) else _walk_to(place, template.tree, allowed_nodes)
-            how = f"at {place}"
-        notes.append(f"added group '{label}' of {q.count} for '{q.phrase}' ({how})")
-        plans.append(GroupPlan(len(plans), label, q.count, spawn, tree, q))
-    if all(q.implied for q in quantities):
-        # No number anywhere: the prompt does not fix the population, so the model's other groups stand.
-        for i in unused:
-            g = groups[i]
-            plans.append(GroupPlan(len(plans), g.label, g.count, _zone_of(world, g.spawn, default_spawn), g.tree, None))
-        return plans
-    for i in unused:
-        notes.append(f"dropped group '{groups[i].label}' ({groups[i].count}): the prompt states no such people")
-    return plans
-
-
-def _preset_overlay(tree: DraftNode, preset: Preset, selection: Any, notes: list[str], label: str) -> DraftNode:
+def _preset_overlay(tree: DraftNode, preset: Preset, selection: RoISelection, notes: list[str],
+                    label: str) -> DraftNode:
     """What the preset itself requires of every tree: under the emergency preset, following the
     evacuation field to the exit."""
     kinds = {n.node for n in tree.walk()}
     if preset.velocity == "field" and "FollowVelocityField" not in kinds:
-        exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
+        exit_name = next(iter(selection.exits), None)
         if exit_name is not None:
             notes.append(f"group '{label}': follows the evacuation field (emergency preset)")
             return DraftNode("Sequence", {}, (tree, DraftNode("FollowVelocityField", {"exit": exit_name})))
     return tree
 
 
-def _group_text(group: GroupPlan, quantities: Sequence[Quantity], prompt: str) -> str:
-    """The prompt words about this group: from its quantity to the next one (the whole prompt if unstated)."""
-    if group.quantity is None:
-        return prompt
-    later = [q.start for q in quantities if q.start > group.quantity.start]
-    return prompt[group.quantity.start:min(later) if later else len(prompt)]
-
-
-def _ground_spawns(groups: Sequence[GroupPlan], quantities: Sequence[Quantity], prompt: str, selection: Any,
-                   notes: list[str], world: Any) -> None:
-    """People start where the prompt puts them; otherwise where the model put them, unless that is
-    the very place they are sent to, in which case they come from the largest room next to it."""
-    for g in groups:
-        named = spawn_named(_group_text(g, quantities, prompt), selection)
-        if named is None and len(groups) == 1:
-            named = spawn_named(prompt, selection)
-        if named is not None:
-            if named != g.spawn:
-                notes.append(f"group '{g.label}': spawn {g.spawn} -> {named} (the prompt puts them there)")
-                g.spawn = named
-            continue
-        first = _first_goto(g.tree)
-        if first is not None and _zone_of(world, first, g.spawn) == g.spawn:
-            neighbours = sorted({d.leads_to if d.zone == g.spawn else d.zone for d in world.doors_of(g.spawn)}
-                                - {g.spawn, "outside"})
-            if neighbours:
-                best = max(neighbours, key=lambda z: (world.zone(z).area, z))
-                notes.append(f"group '{g.label}': spawn {g.spawn} -> {best} (they walk to {first})")
-                g.spawn = best
-
-
-def _first_goto(tree: DraftNode) -> str | None:
-    for node in tree.walk():
-        if node.node in ("Wander", "Converse", "Queue", "FollowVelocityField", "Wait"):
-            return None
-        if node.node == "GoTo":
-            return node.ports.get("target")
-    return None
-
-
-def apply_overlay(tree: DraftNode, preset: Preset, world: Any, selection: Any, text: str, notes: list[str],
-                  label: str, allowed: Sequence[str] = ("GoTo",)) -> DraftNode:
-    """The preset's deterministic overlay on a group's tree.
-
-    queuing: a group whose words speak of queueing, lining up or being served gets the Queue
-    subtree at its service point when the model left it out. emergency: every tree ends by
-    following the velocity field to the exit. Every preset with waypoints: places the prompt
-    sends the group to ("to the kitchen") that its tree never reaches are appended as GoTo steps.
-    """
-    if preset.velocity != "field":
-        tree = _follow_stated_intent(tree, text, world, selection, allowed, notes, label)
-    kinds = {n.node for n in tree.walk()}
-    if preset.name == "queuing" or (preset.goal_sampling == "sequential" and "Queue" in preset.required_nodes):
-        words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
-        if "Queue" not in kinds and words & QUEUE_WORDS:
-            service = _service_point(tree, world, selection)
-            if service is not None:
-                notes.append(f"group '{label}': queue at {service} (queuing preset)")
-                return DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": service}),
-                                                  DraftNode("Queue", {"service_point": service})))
-    if preset.velocity != "field" and "GoTo" in allowed:
-        # Destinations the prompt states must be in the tree, whatever the model wrote.
-        have = _tree_places(tree)
-        missing = [g for g in goals_named(text, selection) if not _reaches(world, g, have)]
-        if missing:
-            notes.append(f"group '{label}': goes to {', '.join(missing)} (named in the prompt)")
-            steps = tuple(DraftNode("GoTo", {"target": g}) for g in missing)
-            if tree.node == "Sequence":
-                return DraftNode("Sequence", dict(tree.ports), tree.children + steps)
-            return DraftNode("Sequence", {}, (tree,) + steps)
-    if preset.velocity == "field" and "FollowVelocityField" not in kinds:
-        exit_name = next(iter(getattr(selection, "exits", ()) or ()), None)
-        if exit_name is not None:
-            notes.append(f"group '{label}': follows the evacuation field (emergency preset)")
-            follow = DraftNode("FollowVelocityField", {"exit": exit_name})
-            return DraftNode("Sequence", {}, (tree, follow)) if tree.children or tree.node != "Sequence" else follow
-    return tree
-
-
-def _stated_intent(text: str) -> str | None:
-    """The behavior a group's own words state, if they state one clearly."""
-    words = {lemma(w) for w in re.findall(r"[a-z]+", text.lower())}
-    for kind in ("queue", "converse", "wander"):
-        if words & _INTENT_WORDS[kind]:
-            return kind
-    if words & _INTENT_WORDS["walk"]:
-        return "walk"
-    return None
-
-
-def _entity_service(name: str, world: Any) -> str | None:
-    """The service point a place name stands for: the entity itself, or its zone's counter/desk."""
-    try:
-        obj = world.find(name)
-    except Exception:
-        return None
-    if hasattr(obj, "interaction_point"):
-        return obj.name
-    zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
-    service = _service_entity(zone) if hasattr(zone, "entities") else None
-    return None if service is None else service.name
-
-
-def _follow_stated_intent(tree: DraftNode, text: str, world: Any, selection: Any, allowed: Sequence[str],
-                          notes: list[str], label: str) -> DraftNode:
-    """When a group's words say plainly what it does and where ("ten patients queue at the pharmacy
-    counter", "a family walks to the exit"), a tree that does something else, or elsewhere, is replaced
-    by the plain tree for those words. Vague words leave the model's tree alone."""
-    text = _CLAUSE_BREAK.split(text, maxsplit=1)[0]  # "...chat in the staff room while visitors walk...": own clause only
-    intent = _stated_intent(text)
-    if intent is None or selection is None:
-        return tree
-    places = places_named(text, selection)
-    located = [name for prep, name in places if prep in _SPAWN_PREPOSITIONS] or [name for _, name in places]
-    kinds = {n.node for n in tree.walk()}
-    have = _tree_places(tree)
-    have_zones = {_zone_of(world, p, p) for p in have}
-    replacement: DraftNode | None = None
-    if intent == "queue" and "Queue" in allowed:
-        service = next((s for s in (_entity_service(name, world) for _, name in places) if s), None)
-        queued_at = {n.ports.get("service_point") for n in tree.walk() if n.node == "Queue"}
-        if service is not None and queued_at != {service}:
-            steps = (DraftNode("GoTo", {"target": service}),) if "GoTo" in allowed else ()
-            replacement = DraftNode("Sequence", {}, steps + (DraftNode("Queue", {"service_point": service}),))
-    elif intent == "converse" and "Converse" in allowed and places:
-        spot = located[0]
-        if not any(n.node == "Converse" and _zone_of(world, n.ports.get("target", ""), "") == _zone_of(world, spot, spot)
-                   for n in tree.walk()):
-            replacement = DraftNode("Converse", {"target": spot})
-    elif intent == "wander" and "Wander" in allowed and places:
-        zone = _zone_of(world, located[0], located[0])
-        if not any(n.node == "Wander" and _zone_of(world, n.ports.get("zone", ""), "") == zone for n in tree.walk()):
-            replacement = DraftNode("Wander", {"zone": zone})
-    elif intent == "walk" and "GoTo" in allowed:
-        goals = [name for prep, name in places if prep in _GOAL_PREPOSITIONS]
-        stray = kinds & {"Queue", "Converse", "Wander"}
-        wrong = [p for p in have if not any(_reaches(world, g, {p}) for g in goals)]
-        if goals and (stray or wrong):  # only missing the destination: the append rule below keeps the tree
-            joins = "JoinGroup" in kinds and "JoinGroup" in allowed
-            walk = ((DraftNode("JoinGroup", {}),) if joins else ()) + tuple(DraftNode("GoTo", {"target": g})
-                                                                             for g in goals)
-            replacement = walk[0] if len(walk) == 1 else DraftNode("Sequence", {}, walk)
-    if replacement is None:
-        return tree
-    notes.append(f"group '{label}': {intent} as the prompt says ({', '.join(sorted(_tree_places(replacement)))}) "
-                 f"instead of the model's {', '.join(sorted(kinds))}")
-    return replacement
-
-
-def _service_point(tree: DraftNode, world: Any, selection: Any) -> str | None:
-    """Where a group is served: an entity its tree or the prompt names, else its zone's counter."""
-    candidates = [n for n in _tree_places(tree)]
-    candidates += [m.name for m in getattr(selection, "matches", ()) if m.reason == "prompt"]
-    for name in candidates:
-        try:
-            obj = world.find(name)
-        except Exception:
-            continue
-        if hasattr(obj, "interaction_point"):
-            return obj.name
-    for name in candidates + list(getattr(selection, "zones", ())):
-        try:
-            obj = world.find(name)
-        except Exception:
-            continue
-        zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
-        if hasattr(zone, "entities"):
-            service = _service_entity(zone)
-            if service is not None:
-                return service.name
-    return None
-
-
-# A minus sign right before the number (not a range like "3-5"), or the words minus / negative.
-_NEGATIVE_BEFORE = re.compile(r"(?:(?:^|[\s(])[-\u2212]|\bminus\s+|\bnegative\s+)$", re.IGNORECASE)
-
-
-def check_stated_counts(prompt: str, quantities: Sequence[Quantity]) -> None:
-    """Refuse prompts whose head counts cannot be a crowd, before any model runs: no readable words
-    at all (emoji only), a negative count ("-5 people") or zero people. Said to the user, not guessed
-    around: the model would otherwise invent a crowd of its own size."""
-    if not words(prompt):
-        raise PromptError("the prompt has no words to read (only symbols or emoji): describe in English who "
-                          "is there and what they do, e.g. 'ten patients queue at the pharmacy'")
-    for q in quantities:
-        if _NEGATIVE_BEFORE.search(prompt[:q.start]):
-            raise PromptError(f"'{prompt[max(0, q.start - 1):q.end].strip()}' is a negative number of people; "
-                              f"give a whole number of at least 1")
-        if q.count == 0:
-            raise PromptError(f"'{q.phrase}' asks for nobody; give a number of people of at least 1 "
-                              f"(or leave that group out)")
-
-
-def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quantities: Sequence[Quantity]) -> None:
-    """Refuse, before any model runs, head counts no selected zone could hold or the preset allows."""
-    total = sum(q.count for q in quantities)
-    zones = list(getattr(selection, "named_zones", ()) or getattr(selection, "zones", ()))
-    placed = [m for m in getattr(selection, "matches", ()) if m.reason not in ("default", "preset", "world")]
+def check_population(world: World, grid: OccupancyGrid, preset: Preset, selection: RoISelection,
+                     reading: PromptReading) -> None:
+    """Refuse, before any model runs, what the sentence asks that no scenario can be (a negative or
+    zero count, no words at all, nobody), head counts no selected zone could hold, and groups larger
+    than the preset allows."""
+    if reading.problems:
+        raise PromptError(reading.problems[0])
+    counts = effective_counts(reading)
+    if not counts:
+        raise PromptError("the sentence leaves nobody in the scenario: say who is there and what they do")
+    total = sum(counts.values())
+    zones = list(selection.named_zones or selection.zones)
+    placed = [m for m in selection.matches if m.reason not in ("default", "preset", "world")]
     if preset.velocity == "field" and not placed:
         # An evacuation the prompt places nowhere may start anywhere in the building (postprocess
         # spreads a group too large for one zone), so the building's floor is what must hold it.
@@ -398,93 +149,17 @@ def check_population(world: Any, grid: Any, preset: Preset, selection: Any, quan
             area = sum(space.free_area(z) for z in zones)
             raise PromptError(f"{total} people do not fit in {', '.join(zones)}: about {area:.0f} m^2 of free floor "
                               f"holds at most {capacity} at a plausible density ({MAX_DENSITY:g}/m^2)")
-    for q in quantities:
-        if q.count > preset.limits.max_count:
-            raise PromptError(f"'{q.phrase}' asks for {q.count} people in one group; preset '{preset.name}' "
-                              f"allows at most {preset.limits.max_count} per group")
+    for index, count in counts.items():
+        if count > preset.limits.max_count:
+            raise PromptError(f"'{reading.groups[index].who}' asks for {count} people in one group; preset "
+                              f"'{preset.name}' allows at most {preset.limits.max_count} per group")
 
 
 def _check_limits(groups: Sequence[GroupPlan], preset: Preset) -> None:
     for g in groups:
         if g.count > preset.limits.max_count:
-            raise PromptError(f"'{g.quantity.phrase if g.quantity else g.label}' asks for {g.count} people in one "
-                                  f"group; preset '{preset.name}' allows at most {preset.limits.max_count} per group")
-
-
-# The older clause rules' word tables live in the one lexicon (language/lexicon.py, "Clause rules
-# without a reading"): this module only applies them when the reader found no group.
-_SPAWN_PREPOSITIONS = lx.CLAUSE_SPAWN_PREPOSITIONS
-_GOAL_PREPOSITIONS = lx.CLAUSE_GOAL_PREPOSITIONS
-QUEUE_WORDS = lx.CLAUSE_QUEUE_WORDS
-_CLAUSE_BREAK = re.compile(r"\b(?:while|whilst|whereas|meanwhile|but)\b|[;.]", re.IGNORECASE)
-_INTENT_WORDS = lx.CLAUSE_INTENT_WORDS
-_ARRIVAL_VERBS = lx.CLAUSE_ARRIVAL_VERBS
-_DEPARTURE_VERBS = lx.CLAUSE_DEPARTURE_VERBS
-
-
-def _words_with_prepositions(text: str) -> Iterator[tuple[str, str]]:
-    """Each word that is not a preposition, with the preposition in force ("" before any).
-
-    "through" is where people come from after an arrival verb ("come in through the front door",
-    "enter through the garage") and where they go otherwise ("leave through the back door").
-    """
-    preposition = ""
-    arriving = False
-    for w in re.findall(r"[a-z0-9]+", text.lower()):
-        if w in _ARRIVAL_VERBS:
-            arriving = True
-        elif w in _DEPARTURE_VERBS:
-            arriving = False
-        if w in _SPAWN_PREPOSITIONS or w in _GOAL_PREPOSITIONS:
-            preposition = "from" if w == "through" and arriving else w
-            continue
-        yield w, preposition
-
-
-def places_named(text: str, selection: Any) -> list[tuple[str, str]]:
-    """(preposition, RoI name) for every selected RoI the words mention, in order."""
-    if selection is None:
-        return []
-    found: list[tuple[str, str]] = []
-    for w, preposition in _words_with_prepositions(text):
-        t = lemma(w)
-        for m in getattr(selection, "matches", ()):
-            if m.reason == "prompt" and t in m.matched:
-                # One word, one place: the first (best-ranked) RoI it selected.
-                if not found or found[-1][1] != m.name:
-                    found.append((preposition, m.name))
-                break
-    return found
-
-
-def goals_named(text: str, selection: Any) -> list[str]:
-    """Places the words send people to ("to the kitchen", "into the cafe")."""
-    return list(dict.fromkeys(name for prep, name in places_named(text, selection) if prep in _GOAL_PREPOSITIONS))
-
-
-def spawn_named(text: str, selection: Any) -> str | None:
-    """The place the words put people in ("in the lobby", "from the ward"), not where they go ("to the cafe")."""
-    if selection is None:
-        return None
-    for w, preposition in _words_with_prepositions(text):
-        t = lemma(w)
-        for m in getattr(selection, "matches", ()):
-            if m.reason == "prompt" and t in m.matched:
-                if preposition in _SPAWN_PREPOSITIONS:
-                    return m.zone
-                break
-    return None
-
-
-def _place_in(text: str, selection: Any) -> str | None:
-    """The first selected RoI the text names (the words after a quantity, up to the next one)."""
-    if selection is None or not text.strip():
-        return None
-    tokens = set(semantic_tokens(text))
-    for m in getattr(selection, "matches", ()):
-        if m.reason == "prompt" and tokens & set(m.matched):
-            return m.name
-    return None
+            raise PromptError(f"'{g.who or g.label}' asks for {g.count} people in one group; preset "
+                              f"'{preset.name}' allows at most {preset.limits.max_count} per group")
 
 
 def _tree_places(tree: DraftNode) -> set[str]:
@@ -496,24 +171,7 @@ def _tree_places(tree: DraftNode) -> set[str]:
     return places
 
 
-def _walk_to(place: str, template: DraftNode, allowed_nodes: Sequence[str]) -> DraftNode:
-    """The simplest tree that takes a person to `place` with the nodes this request allows."""
-    if "GoTo" in allowed_nodes:
-        return DraftNode("GoTo", {"target": place})
-    if "FollowVelocityField" in allowed_nodes:
-        return DraftNode("FollowVelocityField", {"exit": place})
-    return template
-
-
-def _reaches(world: Any, goal: str, places: set[str]) -> bool:
-    """Whether a tree visiting `places` goes where the words send the group: anywhere in a named
-    zone, but to a named door or thing itself ("walks to the exit" is not "walks to the lobby")."""
-    if goal in places:
-        return True
-    return _zone_of(world, goal, "") == goal and any(_zone_of(world, p, p) == goal for p in places)
-
-
-def _zone_of(world: Any, name: str, default: str) -> str:
+def _zone_of(world: World, name: str, default: str) -> str:
     """Spawns are zones; a door or entity as spawn means the zone it belongs to."""
     try:
         obj = world.find(name)
@@ -528,7 +186,7 @@ def _zone_of(world: Any, name: str, default: str) -> str:
 class FreeSpace:
     """Free cells of the inflated grid per zone, restricted to the part connected to the zone's doors."""
 
-    def __init__(self, world: Any, grid: Any) -> None:
+    def __init__(self, world: World, grid: OccupancyGrid) -> None:
         self.world = world
         self.grid = grid
         self._cells: dict[str, np.ndarray] = {}
@@ -582,7 +240,8 @@ class FreeSpace:
         g = self.grid
         cols = np.clip(((pts[:, 0] - g.origin[0]) / g.resolution).astype(int), 0, self._clearance.shape[1] - 1)
         rows = np.clip(((pts[:, 1] - g.origin[1]) / g.resolution).astype(int), 0, self._clearance.shape[0] - 1)
-        return self._clearance[rows, cols] + float(getattr(g, "inflation", 0.0))
+        clearance: np.ndarray = self._clearance[rows, cols] + float(getattr(g, "inflation", 0.0))
+        return clearance
 
     def free_area(self, zone_name: str) -> float:
         return len(self.cells(zone_name)) * self.grid.resolution ** 2
@@ -667,7 +326,7 @@ def _components(free: np.ndarray) -> np.ndarray:
     from scipy import ndimage
 
     labels, _ = ndimage.label(free, structure=np.ones((3, 3), dtype=int))
-    return labels
+    return np.asarray(labels)
 
 
 # ---- targets --------------------------------------------------------------------------------
@@ -675,9 +334,10 @@ def _components(free: np.ndarray) -> np.ndarray:
 class TargetResolver:
     """Turns RoI names into points by the preset's goal sampling; seeded, spread, reproducible."""
 
-    def __init__(self, world: Any, grid: Any, space: FreeSpace, preset: Preset, rng: np.random.Generator) -> None:
+    def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, preset: Preset, rng: np.random.Generator) -> None:
         self.world, self.grid, self.space, self.preset, self.rng = world, grid, space, preset, rng
         self.group_points: dict[tuple[int, str], Point] = {}
+        self.party_points: dict[tuple[int, str], Point] = {}  # (SFM group, zone) -> its first member's point
         self._lines: dict[str, Point] = {}  # service point -> heading of its queue line
 
     def snap(self, p: Point, label: str) -> Point:
@@ -703,16 +363,18 @@ class TargetResolver:
         # Doors and entities name their zone; a zone is its own.
         return str(getattr(obj, "zone")) if hasattr(obj, "interaction_point") or hasattr(obj, "leads_to") else obj.name
 
-    def resolve(self, name: str, *, node: str, slot: int | None = None) -> Point:
+    def resolve(self, name: str, *, node: str, slot: int | None = None, party: int = -1) -> Point:
+        """The point `node` sends one person to at `name`. `party`: the walking group (SFM group) the
+        person walks in, whose members' points in a zone are next to each other."""
         obj = self.world.find(name)
-        if hasattr(obj, "interaction_point"):  # entity
+        if isinstance(obj, Entity):
             base = self.snap(obj.interaction_point, name)
             if self.preset.goal_sampling == "sequential" and slot is not None and node != "Queue":
                 return self._queue_slot(obj, base, slot)
             if node == "Queue":
                 return base
             return self._beside(name, obj.zone, base, slot)
-        if hasattr(obj, "leads_to"):  # door
+        if isinstance(obj, Door):
             if node == "FollowVelocityField":
                 return (round(obj.position[0], 3), round(obj.position[1], 3))
             return self._beside(name, obj.zone, self.snap(obj.inward_point(0.6), name), slot)
@@ -721,6 +383,14 @@ class TargetResolver:
             service = _service_entity(obj)
             if service is not None:
                 return self.resolve(service.name, node=node, slot=slot)
+        if party >= 0 and node == "GoTo":
+            # A group walking together arrives together: points spread over the zone would have its
+            # members pulled apart by their goals and held together by the group's forces, and they
+            # stall short of every point.
+            anchor = self.party_points.get((party, obj.name))
+            (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}", cluster=anchor)
+            self.party_points.setdefault((party, obj.name), p)
+            return p
         (p,) = self.space.sample(obj.name, 1, self.rng, GOAL_SPACING, key=f"goal:{obj.name}")
         return p
 
@@ -730,7 +400,7 @@ class TargetResolver:
         them); a door or thing keeps its own point. Falls back to the roomiest point of the zone."""
         obj = self.world.find(name)
         near: Point | None = None
-        if hasattr(obj, "interaction_point") or hasattr(obj, "leads_to"):
+        if isinstance(obj, (Entity, Door)):
             # "chat by the fountain": a free circle beside it, as close to it as room allows
             near = self.resolve(name, node="Converse")
             zone_name = obj.zone
@@ -891,57 +561,39 @@ class TreeWriter:
 
 # ---- the stage ------------------------------------------------------------------------------
 
-def postprocess(world: Any, grid: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity],
-                selection: Any, seed: int, prompt: str = "", allowed_nodes: Sequence[str] = (),
-                reading: PromptReading | None = None) -> PostProcessed:
+def postprocess(world: World, grid: OccupancyGrid, preset: Preset, draft: Draft, selection: RoISelection, seed: int,
+                reading: PromptReading, allowed_nodes: Sequence[str] = ()) -> PostProcessed:
     """Draft -> agents with ids, spawns, resolved targets and per-agent trees (waypoints still empty).
 
-    With a `reading` that found groups, the groups are the reading's and the draft is repaired
-    only where it contradicts it (generation/reconcile.py); without one, the older word rules of
-    this module reconcile the draft with the stated quantities."""
+    The groups are the reading's; the draft is repaired only where it contradicts it
+    (generation/reconcile.py). `allowed_nodes`: the nodes this request offered the model."""
     notes: list[str] = []
-    groups = plan_groups(world, preset, draft, quantities, selection, prompt, allowed_nodes, reading, notes)
+    groups = plan_groups(world, preset, draft, selection, reading, notes)
     return place_groups(world, grid, preset, groups, selection, seed, reading, notes)
 
 
-def plan_groups(world: Any, preset: Preset, draft: Draft, quantities: Sequence[Quantity], selection: Any,
-                prompt: str = "", allowed_nodes: Sequence[str] = (), reading: PromptReading | None = None,
+def plan_groups(world: World, preset: Preset, draft: Draft, selection: RoISelection, reading: PromptReading,
                 notes: list[str] | None = None, first_index: int = 0) -> list[GroupPlan]:
     """The scenario's groups with their final trees (before ids, spawns and points): the reading's
-    groups with the draft reconciled to them, or the older word rules' groups. Repairs go to `notes`.
-    `first_index` numbers the groups from there (a refinement's new groups follow the kept ones)."""
+    groups with the draft reconciled to them. Repairs go to `notes`. `first_index` numbers the groups
+    from there (a refinement's new groups follow the kept ones)."""
     notes = [] if notes is None else notes
     default_spawn = selection.zones[0] if selection.zones else world.zones[0].name
-    if reading is not None and reading.groups:
-        groups = [GroupPlan(first_index + i, r.label, r.count, r.spawn, r.tree, None, behavior=r.behavior,
-                            reading_index=r.reading_index, party_size=r.party_size, speed_factor=r.speed_factor,
-                            added=list(r.added), reacts_only=r.reacts_only,
-                            reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
-                            else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]))
-                  for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
-                                                  evacuation_field=preset.velocity == "field"))]
-        if not groups:
-            raise GenerationError("the prompt's groups leave nobody in the scenario")
-        for g in groups:
-            # The preset's evacuation is for those the sentence evacuates: a guard who waits by the
-            # door during a drill waits (nothing unasked).
-            if g.reading_index is not None and reading.groups[g.reading_index].intent == "evacuate":
-                g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
-        return groups
-    # The older clause rules run only here, where no reading or no group of it exists; where the
-    # reader found groups (above) nothing of them second-guesses it.
-    if reading is not None:
-        notes.append("the reader found no group of people in the sentence: the model's groups are kept "
-                     "and placed by word rules")
-    groups = reconcile_groups(draft, quantities, preset, world, default_spawn, notes, prompt, selection,
-                              allowed_nodes)
+    groups = [GroupPlan(first_index + i, r.label, r.count, r.spawn, r.tree, reading.groups[r.reading_index].who
+                        if r.reading_index is not None else "", behavior=r.behavior, reading_index=r.reading_index,
+                        party_size=r.party_size, speed_factor=r.speed_factor, added=list(r.added),
+                        reacts_only=r.reacts_only,
+                        reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
+                        else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]))
+              for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
+                                              evacuation_field=preset.velocity == "field"))]
     if not groups:
-        raise GenerationError("the draft has no groups of people")
-    # Trees first: where a group starts depends on where its final tree sends it.
+        raise GenerationError("the prompt's groups leave nobody in the scenario")
     for g in groups:
-        g.tree = apply_overlay(g.tree, preset, world, selection, _group_text(g, quantities, prompt), notes,
-                               g.label, allowed_nodes)
-    _ground_spawns(groups, quantities, prompt, selection, notes, world)
+        # The preset's evacuation is for those the sentence evacuates: a guard who waits by the
+        # door during a drill waits (nothing unasked).
+        if g.reading_index is not None and reading.groups[g.reading_index].intent == "evacuate":
+            g.tree = _preset_overlay(g.tree, preset, selection, notes, g.label)
     return groups
 
 
@@ -978,7 +630,8 @@ class PlacedScene:
     kept: Mapping[int, KeptMembers] = field(default_factory=dict)
 
 
-def place_groups(world: Any, grid: Any, preset: Preset, groups: list[GroupPlan], selection: Any, seed: int,
+def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list[GroupPlan], selection: RoISelection,
+                 seed: int,
                  reading: PromptReading | None = None, notes: list[str] | None = None,
                  scene: PlacedScene | None = None) -> PostProcessed:
     """Planned groups -> agents: ids, spawns in free space, targets resolved to points, one tree
@@ -1081,7 +734,7 @@ def place_groups(world: Any, grid: Any, preset: Preset, groups: list[GroupPlan],
                 # One circle per group: everyone resolves the same centre.
                 point = _group_point(resolver, g, name)
             else:
-                point = resolver.resolve(name, node=node.node, slot=slots[name])
+                point = resolver.resolve(name, node=node.node, slot=slots[name], party=agent.sfm_group)
             targets[id(node)] = point
             agent.targets.append((name, point))
         if agent.targets:
@@ -1091,17 +744,17 @@ def place_groups(world: Any, grid: Any, preset: Preset, groups: list[GroupPlan],
     return PostProcessed(agents, groups, exit_name, goals, notes, exit_names)
 
 
-def _exit_asked(world: Any, group: Any) -> str | None:
+def _exit_asked(world: World, group: GroupReading) -> str | None:
     """The exit a group's sentence names; None when it names none or the reader was unsure which
     ("the nearest exit": each person then takes their own nearest)."""
-    exits = {d.name for d in world.exits()} if hasattr(world, "exits") else set()
+    exits = {d.name for d in world.exits()}
     unsure = group.confidence_of("destination")
     if unsure is not None and unsure.unsure:
         return None
     return group.destination if group.destination in exits else None
 
 
-def _reactor_zone(world: Any, group: Any) -> str | None:
+def _reactor_zone(world: World, group: GroupReading) -> str | None:
     """The zone a group that reacts to the robot is put in by its sentence: where they are, or where
     they follow it through."""
     for name in (group.start, group.location, *group.via, group.destination):
@@ -1130,7 +783,7 @@ def _with_exit(tree: DraftNode, exit_name: str) -> DraftNode:
     return DraftNode(tree.node, ports, tuple(_with_exit(c, exit_name) for c in tree.children))
 
 
-def _spread_unplaced_evacuees(groups: Sequence[GroupPlan], reading: PromptReading, space: FreeSpace, world: Any,
+def _spread_unplaced_evacuees(groups: Sequence[GroupPlan], reading: PromptReading, space: FreeSpace, world: World,
                               notes: list[str]) -> None:
     """An evacuation group that the sentence places nowhere ("500 people evacuate") and that is too
     large for the zone the draft starts it in, starts spread over the building instead: every zone
@@ -1175,7 +828,7 @@ def _spawn_chunks(group: GroupPlan, parties: Sequence[int]) -> list[tuple[str, i
     return chunks
 
 
-def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any, scene: PlacedScene | None = None) -> None:
+def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: World, scene: PlacedScene | None = None) -> None:
     """Everyone must fit, at a plausible density, both where they start and where they end up
     (with the people a refinement keeps)."""
     ends: dict[str, int] = dict(scene.ends_by_zone) if scene is not None else {}
@@ -1196,7 +849,7 @@ def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: Any, s
                     f"{space.free_area(zone):.0f} m^2 holds at most {cap} at a plausible density ({MAX_DENSITY:g}/m^2)")
 
 
-def _evacuation_exits(world: Any, selection: Any, notes: list[str]) -> list[str]:
+def _evacuation_exits(world: World, selection: RoISelection, notes: list[str]) -> list[str]:
     """The exits evacuees may use: those the prompt names, else every exit of the world.
 
     Each person then leaves through the nearest of them (_assign_exits): "the nearest exit"
@@ -1205,7 +858,7 @@ def _evacuation_exits(world: Any, selection: Any, notes: list[str]) -> list[str]
     exits = {d.name: d for d in world.exits()}
     if not exits:
         raise GenerationError(f"world '{world.name}' has no exit door to evacuate through")
-    named = [m.name for m in getattr(selection, "matches", ()) if m.reason == "prompt" and m.name in exits]
+    named = [m.name for m in selection.matches if m.reason == "prompt" and m.name in exits]
     if named:
         return list(dict.fromkeys(named))
     # The prompt allows every exit: a small model's tree naming one does not restrict the crowd to it.
@@ -1213,14 +866,15 @@ def _evacuation_exits(world: Any, selection: Any, notes: list[str]) -> list[str]
     return sorted(exits)
 
 
-def _assign_exits(world: Any, grid: Any, groups: Sequence[GroupPlan], agents: Sequence[AgentPlan],
+def _assign_exits(world: World, grid: OccupancyGrid, groups: Sequence[GroupPlan], agents: Sequence[AgentPlan],
                   exit_names: Sequence[str], notes: list[str], how: str = "nearest") -> None:
     """Each evacuee's exit: the nearest by walking distance, or with `how` "least_congested" the one it
     expects to be out of soonest (preset exit_choice); a group split over exits gets one field per exit."""
     evacuees = [a for a in agents if a.field_id is not None]
     if not evacuees:
         return
-    doors = {name: world.find(name) for name in exit_names}
+    exits = {d.name: d for d in world.exits()}
+    doors = {name: exits[name] for name in exit_names}
     starts = [a.start for a in evacuees]
     try:
         planner = ThetaStarPlanner(grid, landmarks=0)

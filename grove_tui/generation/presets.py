@@ -132,7 +132,7 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         return value
 
     def choice(key: str, options: tuple[str, ...]) -> str:
-        value = need(key, str)
+        value = str(need(key, str))
         if value not in options:
             raise PresetError(f"{where}: {key} must be one of {', '.join(options)}, got {value!r}")
         return value
@@ -149,13 +149,13 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         if not isinstance(block, dict):
             raise PresetError(f"{where}: {key} must be a mapping")
 
-    def names(block: dict, key: str, path: str) -> tuple[str, ...]:
+    def names(block: dict[str, Any], key: str, path: str) -> tuple[str, ...]:
         value = block.get(key) or []
         if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
             raise PresetError(f"{where}: {path} must be a list of node names")
         return tuple(value)
 
-    def positive(block: dict, key: str, path: str, default: float, kind: type = int) -> Any:
+    def positive(block: dict[str, Any], key: str, path: str, default: float, kind: type = int) -> Any:
         value = block.get(key, default)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
             raise PresetError(f"{where}: {path} must be a positive number, got {value!r}")

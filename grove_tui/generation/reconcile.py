@@ -43,6 +43,7 @@ from grove_tui.scenario.report import (
     GroupGrounding,
     RobotGrounding,
 )
+from grove_tui.world.model import Door, Entity, World
 
 # Nodes that make a person do something on their own: a tree with none of them leaves its agent
 # standing where it spawned (conditions, bookkeeping and robot reactions only fire on cue).
@@ -94,7 +95,7 @@ class ReconciledGroup:
     reacts_only: bool = False  # its whole activity is reacting to the robot: it starts where the robot passes
 
 
-def with_followed_person(reading: PromptReading, world: Any) -> PromptReading:
+def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
     """The person a robot's clause follows, as a group of the sentence when the reading has none for
     them: "the robot follows a guide from the entrance hall to the auditorium" asks for a guide who
     walks from the entrance hall to the auditorium, with the robot behind."""
@@ -117,7 +118,7 @@ def with_followed_person(reading: PromptReading, world: Any) -> PromptReading:
     return replace(reading, groups=reading.groups + (followed,))
 
 
-def robot_places(reading: PromptReading, world: Any) -> set[str]:
+def robot_places(reading: PromptReading, world: World) -> set[str]:
     """Zones the robot's clause names: a group's place is never taken from them unless its own words say so."""
     robot = reading.robot
     if robot is None:
@@ -126,7 +127,7 @@ def robot_places(reading: PromptReading, world: Any) -> set[str]:
     return {z for z in (_zone_of(world, n) for n in names if n) if z}
 
 
-def reconcile(draft: Draft, reading: PromptReading, world: Any, default_spawn: str,
+def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn: str,
               notes: list[str], *, evacuation_field: bool = False) -> list[ReconciledGroup]:
     """Reading groups with honest trees (module doc).
 
@@ -153,7 +154,10 @@ def reconcile(draft: Draft, reading: PromptReading, world: Any, default_spawn: s
             d = drafts[pick]
             if d.count != count:
                 notes.append(f"group '{label}': count {d.count} -> {count} ('{group.who}')")
-            tree, added = honest_tree(d.tree, group, world, notes, label, evacuation_field, robot_zones)
+            if _model_fills(group) and not is_idle(d.tree):
+                tree = d.tree  # a sentence that names nobody: the model says what the people do
+            else:
+                tree, added = honest_tree(d.tree, group, world, notes, label, evacuation_field, robot_zones)
             spawn = _spawn(group, d, world, default_spawn, tree, robot_zones)
         onward = onward_note(group, tree, world)
         if onward is not None:
@@ -173,9 +177,16 @@ def reconcile(draft: Draft, reading: PromptReading, world: Any, default_spawn: s
     return out
 
 
+def _model_fills(group: GroupReading) -> bool:
+    """Whether the group is the one a sentence that names nobody is read as ("the cafeteria gets busy"):
+    the reader is unsure anyone is there, and the model is asked who is and what they do."""
+    named = group.confidence_of("group")
+    return named is not None and named.unsure
+
+
 # ---- matching -------------------------------------------------------------------------------
 
-def _pick_draft(group: GroupReading, drafts: Sequence[DraftGroup], unused: Sequence[int], world: Any) -> int | None:
+def _pick_draft(group: GroupReading, drafts: Sequence[DraftGroup], unused: Sequence[int], world: World) -> int | None:
     if not unused:
         return None
     wanted = {group.label, lemma(group.label)} | {lemma(w) for w in words(group.who)}
@@ -202,7 +213,7 @@ def is_idle(tree: DraftNode) -> bool:
     return not any(node.node in ROUTINE_NODES for node in tree.walk())
 
 
-def honest_tree(tree: DraftNode, group: GroupReading, world: Any, notes: list[str], label: str,
+def honest_tree(tree: DraftNode, group: GroupReading, world: World, notes: list[str], label: str,
                 evacuation_field: bool = False, robot_zones: set[str] | None = None) -> tuple[DraftNode, list[str]]:
     """The plain tree for the reading, with what the model wrote after doing it kept only when it is a
     pause, a look or wandering where they arrived (returned in words, as "added"). Everything else the
@@ -256,7 +267,7 @@ def _steps(tree: DraftNode) -> list[DraftNode]:
             and NODES[n.node].category == "action"]
 
 
-def _same_step(world: Any, have: DraftNode, want: DraftNode, group: GroupReading) -> bool:
+def _same_step(world: World, have: DraftNode, want: DraftNode, group: GroupReading) -> bool:
     if have.node != want.node:
         if not ({have.node, want.node} <= {"Wait", "StopAndWaitTimerAction"}):
             return False
@@ -272,7 +283,7 @@ def _same_step(world: Any, have: DraftNode, want: DraftNode, group: GroupReading
     return _zone_of(world, a) == _zone_of(world, b)
 
 
-def _trailing_ok(world: Any, step: DraftNode, final_zone: str | None, robot_zones: set[str]) -> bool:
+def _trailing_ok(world: World, step: DraftNode, final_zone: str | None, robot_zones: set[str]) -> bool:
     place = _node_place(step)
     if place is None:
         return True
@@ -326,7 +337,7 @@ def reacts_only(group: GroupReading) -> bool:
     return group.robot_interaction == "follow" or (not group.destination and not group.via)
 
 
-def tree_for(group: GroupReading, world: Any, evacuation_field: bool = False) -> DraftNode:
+def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) -> DraftNode:
     """The plain tree for a reading: where it says, what it says, nothing more."""
     base = _base_intent(group)
     if base == "evacuate" and evacuation_field:
@@ -383,13 +394,13 @@ def tree_for(group: GroupReading, world: Any, evacuation_field: bool = False) ->
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
 
 
-def _largest_neighbour(world: Any, zone: str) -> str | None:
+def _largest_neighbour(world: World, zone: str) -> str | None:
     neighbours = sorted({door.leads_to if door.zone == zone else door.zone for door in world.doors_of(zone)}
                         - {zone, "outside"})
     return max(neighbours, key=lambda z: (world.zone(z).area, z)) if neighbours else None
 
 
-def onward_note(group: GroupReading, tree: DraftNode, world: Any) -> str | None:
+def onward_note(group: GroupReading, tree: DraftNode, world: World) -> str | None:
     """What a group the sentence sends out of a place, but nowhere, is given to do: said as added."""
     start = _zone_of(world, group.start or "")
     if group.destination or not start or _base_intent(group) != "walk":
@@ -474,7 +485,7 @@ def _tree_places(tree: DraftNode) -> list[str]:
     return [p for node in tree.walk() for p in [_node_place(node)] if p]
 
 
-def _zone_of(world: Any, name: str) -> str | None:
+def _zone_of(world: World, name: str) -> str | None:
     if not name:
         return None
     try:
@@ -485,7 +496,7 @@ def _zone_of(world: Any, name: str) -> str | None:
     return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
 
 
-def _reaches(world: Any, goal: str, places: Sequence[str]) -> bool:
+def _reaches(world: World, goal: str, places: Sequence[str]) -> bool:
     """Whether a tree visiting `places` goes where the reading sends the group: anywhere in a named
     zone, but to a named door or thing itself."""
     if goal in places:
@@ -493,7 +504,7 @@ def _reaches(world: Any, goal: str, places: Sequence[str]) -> bool:
     return _zone_of(world, goal) == goal and any(_zone_of(world, p) == goal for p in places)
 
 
-def _stationary_place(group: GroupReading, world: Any, intent: str) -> str | None:
+def _stationary_place(group: GroupReading, world: World, intent: str) -> str | None:
     place = group.location or (group.destination if intent in STATIONARY_NODES else None)
     if place is None:
         return None
@@ -502,30 +513,30 @@ def _stationary_place(group: GroupReading, world: Any, intent: str) -> str | Non
     return place
 
 
-def _service_in(world: Any, name: str) -> str | None:
+def _service_in(world: World, name: str) -> str | None:
     """The service point a place stands for: the entity itself, or its zone's counter or desk."""
     try:
         obj = world.find(name)
     except Exception:
         return None
-    if hasattr(obj, "interaction_point"):
+    if isinstance(obj, Entity):
         return obj.name
-    zone = world.zone(obj.zone) if hasattr(obj, "leads_to") else obj
+    zone = world.zone(obj.zone) if isinstance(obj, Door) else obj
     for wanted in SERVICE_TYPES:
         for e in getattr(zone, "entities", ()):
             if wanted in e.type or wanted in e.name:
-                return e.name
+                return str(e.name)
     return None
 
 
-def _is_exit(world: Any, name: str | None) -> bool:
+def _is_exit(world: World, name: str | None) -> bool:
     return bool(name) and any(d.name == name for d in world.exits())
 
 
-def _nearest_exit(world: Any, start: str | None) -> str:
+def _nearest_exit(world: World, start: str | None) -> str:
     exits = world.exits()
     if not exits:
-        return world.zones[0].name
+        return str(world.zones[0].name)
     zone = _zone_of(world, start or "")
     if zone is None:
         return exits[0].name
@@ -533,7 +544,7 @@ def _nearest_exit(world: Any, start: str | None) -> str:
     return min(exits, key=lambda d: (math.hypot(d.position[0] - cx, d.position[1] - cy), d.name)).name
 
 
-def _spawn(group: GroupReading, d: DraftGroup | None, world: Any, default: str, tree: DraftNode,
+def _spawn(group: GroupReading, d: DraftGroup | None, world: World, default: str, tree: DraftNode,
            robot_zones: set[str] | None = None) -> str:
     """Where the group starts: the reading's start; for stationary groups the place they are; else the
     model's spawn unless it is where they are sent or a place of the robot's clause only, then the
@@ -561,7 +572,7 @@ def _spawn(group: GroupReading, d: DraftGroup | None, world: Any, default: str, 
 
 # ---- the planned grounding report -------------------------------------------------------------
 
-def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: Any,
+def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: World,
                      repairs: Sequence[str] = (), *, robot: Any = None, sentence: PromptReading | None = None,
                      walking_speed: float = 1.0) -> GroundingReport:
     """What the sentence asked, as claims a run can check, per reading group and for the robot.
@@ -644,7 +655,7 @@ def _count_claim(original: GroupReading, asked: int, wanted: int, g: Any) -> Cla
     return Claim("count", text, plan)
 
 
-def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: Any, reading: PromptReading,
+def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, reading: PromptReading,
                   by_reading: dict[Any, Any], walking_speed: float, robot_seconds: float) -> list[Claim]:
     claims: list[Claim] = []
     n = max(1, g.count)
@@ -785,15 +796,15 @@ def _reaction_claim(r: GroupReading, g: Any, robot_seconds: float) -> Claim:
 ROBOT_ACTIVITY_NODES = frozenset(node for node, _ in ROBOT_ACTIVITIES.values())
 
 
-def _place_claim(kind: str, place: str, plan: str, world: Any, n: int, eta: float, stay: bool = False) -> Claim:
+def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: float, stay: bool = False) -> Claim:
     """A claim about being at a place: a zone's polygon, or near a door's or thing's point."""
     try:
         obj = world.find(place)
     except Exception:
         return Claim(kind, place, plan, FAILS, f"'{place}' is not a place of the world")
-    if hasattr(obj, "interaction_point"):
+    if isinstance(obj, Entity):
         point = obj.interaction_point
-    elif hasattr(obj, "leads_to"):
+    elif isinstance(obj, Door):
         point = obj.inward_point(0.6)
     else:
         return Claim(kind, place, plan, zone=obj.name, place=place, needs_seconds=round(eta, 1))
@@ -803,7 +814,7 @@ def _place_claim(kind: str, place: str, plan: str, world: Any, n: int, eta: floa
                  radius=round(radius, 2), needs_seconds=round(eta, 1))
 
 
-def _route_length(agent: Any, upto: str | None, world: Any) -> float:
+def _route_length(agent: Any, upto: str | None, world: World) -> float:
     """Straight-line legs from the agent's start through its targets, up to the first at `upto`."""
     length, here = 0.0, agent.start
     zone = _zone_of(world, upto or "") if upto else None
@@ -822,7 +833,7 @@ def _route_length(agent: Any, upto: str | None, world: Any) -> float:
     return length
 
 
-def _eta(agents: Sequence[Any], place: str | None, world: Any, speed: float) -> float:
+def _eta(agents: Sequence[Any], place: str | None, world: World, speed: float) -> float:
     """Seconds the slowest member needs to get to `place` (detours 1.5 times the straight legs), plus slack."""
     if not agents:
         return 30.0
@@ -830,7 +841,7 @@ def _eta(agents: Sequence[Any], place: str | None, world: Any, speed: float) -> 
     return round(1.5 * longest / max(speed, 0.1) + 10.0, 1)
 
 
-def _evacuation_eta(agents: Sequence[Any], world: Any, speed: float, n: int) -> float:
+def _evacuation_eta(agents: Sequence[Any], world: World, speed: float, n: int) -> float:
     exits = world.exits()
     if not agents or not exits:
         return 60.0
@@ -861,7 +872,7 @@ def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[Any, Any])
 
 # ---- the robot's row --------------------------------------------------------------------------
 
-def _robot_row(asked: RobotReading | None, robot: Any, world: Any, agents: Sequence[Any]) -> RobotGrounding | None:
+def _robot_row(asked: RobotReading | None, robot: Any, world: World, agents: Sequence[Any]) -> RobotGrounding | None:
     if robot is None:
         if asked is None:
             return None
@@ -911,7 +922,7 @@ def _robot_row(asked: RobotReading | None, robot: Any, world: Any, agents: Seque
     return RobotGrounding(asked.task, asked.text, tuple(claims), plan, unsure)
 
 
-def _robot_start_claim(start: str, robot: Any, world: Any) -> Claim:
+def _robot_start_claim(start: str, robot: Any, world: World) -> Claim:
     zone = _zone_of(world, start)
     actual = world.zone_at(robot.start[0], robot.start[1])
     ok = zone is not None and actual is not None and actual.name == zone

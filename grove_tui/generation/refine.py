@@ -272,7 +272,7 @@ def _diff(scene: Scene, edit: EditReading, planned: Sequence[PlannedGroup], remo
             changes.append(GroupChange(ADDED, None, summary_of(p.reading), (), True))
     changes += [GroupChange(REMOVED, summary_of(g.reading, g.count), None) for g in removed]
     robot_change = None
-    current = scene.scenario.robot
+    current: RobotSpec | None = scene.scenario.robot
     if robot.kind == "remove":
         robot_change = RobotChange(REMOVED, describe_robot(current), "none")
     elif robot.kind == "default":
@@ -348,8 +348,7 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
                                  documents=DOCUMENTS_PER_GROUP * len(regenerated))
         selection = drafted.selection
         tokens = (drafted.synthesis.prompt_tokens, drafted.synthesis.completion_tokens)
-        made = plan_groups(world, preset, drafted.synthesis.draft, drafted.quantities, selection, text,
-                           drafted.request.node_names, partial, notes, first_index=first_index)
+        made = plan_groups(world, preset, drafted.synthesis.draft, selection, partial, notes, first_index=first_index)
         by_reading = {g.reading_index: g for g in made}
         for i, p in enumerate(regenerated):
             if i not in by_reading:
@@ -358,14 +357,13 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
         first_index += len(made)
     t0 = clock.begin("postprocess")
     if selection is None:
-        selection = select_rois(world, preset, text, pipeline.matcher,
-                                reading=PromptReading(text, tuple(p.reading for p in reused + fixed)))
+        selection = select_rois(world, preset, PromptReading(text, tuple(p.reading for p in reused + fixed)))
     for p in fixed:
         tree = tree_for(p.reading, world, evacuation_field=preset.velocity == "field")
         spawn = p.reading.start or (selection.zones[0] if selection.zones else world.zones[0].name)
         draft = Draft((DraftGroup(p.reading.label, p.reading.count.value, spawn, tree),))
-        (made_one,) = plan_groups(world, preset, draft, [], selection, text, (), PromptReading(text, (p.reading,)),
-                                  notes, first_index=first_index)
+        (made_one,) = plan_groups(world, preset, draft, selection, PromptReading(text, (p.reading,)), notes,
+                                  first_index=first_index)
         plans[id(p)] = made_one
         first_index += 1
     for p in reused:
@@ -374,8 +372,8 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
         if not p.reading.together:
             tree = _without(tree, "JoinGroup")
         draft = Draft((DraftGroup(p.source.label, p.reading.count.value, p.source.spawn, tree),))
-        (made_one,) = plan_groups(world, preset, draft, [], selection, text, (), PromptReading(text, (p.reading,)),
-                                  notes, first_index=first_index)
+        (made_one,) = plan_groups(world, preset, draft, selection, PromptReading(text, (p.reading,)), notes,
+                                  first_index=first_index)
         plans[id(p)] = made_one
         first_index += 1
 
@@ -494,7 +492,7 @@ def _without(tree: DraftNode, node: str) -> DraftNode:
 
 def _robot(pipeline: GenerationPipeline, scene: Scene, refinement: Refinement, post: PostProcessed,
            kept: Sequence[SceneGroup], seed: int, notes: list[str]) -> RobotSpec | None:
-    current = scene.scenario.robot
+    current: RobotSpec | None = scene.scenario.robot
     plan = refinement.robot
     if plan.kind == "remove":
         return None
@@ -561,7 +559,7 @@ def _whole_view(scene: Scene, refinement: Refinement, everyone: PostProcessed,
     for i, p in enumerate(refinement.groups):
         if p.status == KEPT and p.source is not None:
             g = p.source
-            groups.append(GroupPlan(-1000 - i, g.label, len(g.members), g.spawn, g.tree, None,
+            groups.append(GroupPlan(-1000 - i, g.label, len(g.members), g.spawn, g.tree, p.reading.who,
                                     member_ids=list(g.members), reading_index=i))
         else:
             groups.append(replace(next(new_groups), reading_index=i))

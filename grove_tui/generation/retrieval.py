@@ -102,7 +102,7 @@ def embedding_model() -> Any:
             from transformers.utils import logging as transformers_logging
 
             # The weight-loading progress bar would scribble over the TUI and CLI output.
-            transformers_logging.disable_progress_bar()
+            transformers_logging.disable_progress_bar()  # type: ignore[no-untyped-call]
             try:
                 _model = SentenceTransformer(str(model_dir), device="cpu", local_files_only=True)
             except Exception as exc:  # a broken package shows up as many different exception types
@@ -182,12 +182,12 @@ def _traced_query_encoder(model: Any) -> Any:
     from transformers.utils import logging as transformers_logging
 
     verbosity = transformers_logging.get_verbosity()
-    transformers_logging.set_verbosity_error()  # tracing reads config fields that log harmless notices
+    transformers_logging.set_verbosity_error()  # type: ignore[no-untyped-call]  # config fields log harmless notices
     try:
         with torch.no_grad(), warnings.catch_warnings():
             warnings.simplefilter("ignore")  # TracerWarnings about shape-derived Python booleans, constant for us
-            traced = torch.jit.trace(MeanPooledEncoder().eval(), (probes[0]["input_ids"], probes[0]["attention_mask"]),
-                                     strict=False)
+            traced = torch.jit.trace(  # type: ignore[no-untyped-call]
+                MeanPooledEncoder().eval(), (probes[0]["input_ids"], probes[0]["attention_mask"]), strict=False)
             frozen = torch.jit.optimize_for_inference(torch.jit.freeze(traced))
             for probe in probes:
                 if not torch.allclose(frozen(probe["input_ids"], probe["attention_mask"]), eager(probe), atol=1e-5):
@@ -225,7 +225,7 @@ def _embed_query_cached(text: str) -> bytes:
         encode = _query_encoder_for(model)
         preprocess = getattr(model, "preprocess", None) or model.tokenize
         vector = encode(preprocess([text]))
-    return vector.numpy().astype(np.float32).tobytes()
+    return bytes(vector.numpy().astype(np.float32).tobytes())
 
 
 def embed_query(text: str) -> np.ndarray:
@@ -270,7 +270,7 @@ def embedding_function_class() -> type:
 
     if EMBEDDING_FUNCTION_NAME in known_embedding_functions:
         return known_embedding_functions[EMBEDDING_FUNCTION_NAME]
-    register_embedding_function(PackagedMiniLMEmbedding)
+    register_embedding_function(PackagedMiniLMEmbedding)  # type: ignore[no-untyped-call]
     return PackagedMiniLMEmbedding
 
 
@@ -310,7 +310,7 @@ def _normalise_preset(preset: Any) -> str | None:
         return None
     if preset not in RETRIEVAL_PRESETS:
         raise RetrievalError(f"retrieval has no preset filter {preset!r}; known: {', '.join(RETRIEVAL_PRESETS)}")
-    return preset
+    return str(preset)
 
 
 _UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}$")

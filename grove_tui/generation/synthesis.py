@@ -29,18 +29,12 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.bt.format.manifest import NODES
-from grove_tui.generation.draft import (
-    Draft,
-    DraftError,
-    GroupHead,
-    draft_grammar,
-    parse_draft,
-    parse_trees,
-    tree_grammar,
-)
-from grove_tui.generation.presets import GenerationError, Preset
-from grove_tui.language.quantities import Quantity
-from grove_tui.language.reading import PromptReading, effective_counts
+from grove_tui.errors import DraftError, GenerationError
+from grove_tui.generation.draft import Draft, GroupHead, draft_grammar, parse_draft, parse_trees, tree_grammar
+from grove_tui.generation.presets import Preset
+from grove_tui.generation.rois import RoISelection
+from grove_tui.language.model import PromptReading, effective_counts
+from grove_tui.world.model import World
 
 MAX_ATTEMPTS = 3
 # With pinned cards, a retrieved card outside them is shown (and offered) when it scores at least this
@@ -181,7 +175,7 @@ def describe_reading_groups(reading: PromptReading, indices: Sequence[int] | Non
     return "; ".join(parts)
 
 
-def fixed_system_message(preset: Preset, world: Any | None = None, cards: Sequence[str] = (),
+def fixed_system_message(preset: Preset, world: World | None = None, cards: Sequence[str] = (),
                          lean: bool = True) -> str:
     """The system message: everything fixed for a world and preset, so its KV state can be cached.
 
@@ -216,7 +210,8 @@ def pinned_cards(preset: Preset, documents_named: Callable[[list[str]], list[Any
     return [(getattr(d, "card", "") or d.document).strip() for d in pinned_documents(preset, documents_named)]
 
 
-def group_heads(reading: PromptReading | None, selection: Any, max_groups: int) -> tuple[list[GroupHead], list[int]]:
+def group_heads(reading: PromptReading | None, selection: RoISelection,
+                max_groups: int) -> tuple[list[GroupHead], list[int]]:
     """The lean draft's groups: each reading group with people of its own, its label, count and start.
 
     The start is the reading's (where they start, else where they stay); a group the sentence starts
@@ -225,7 +220,7 @@ def group_heads(reading: PromptReading | None, selection: Any, max_groups: int) 
     if reading is None or not reading.groups:
         return [], []
     counts = effective_counts(reading)
-    default = selection.zones[0] if getattr(selection, "zones", None) else selection.roi_names[0]
+    default = selection.zones[0] if selection.zones else selection.roi_names[0]
     heads, indices = [], []
     for index, g in enumerate(reading.groups):
         if counts.get(index, 0) <= 0:
@@ -235,7 +230,7 @@ def group_heads(reading: PromptReading | None, selection: Any, max_groups: int) 
     return heads[:max_groups], indices[:max_groups]
 
 
-def prefix_label(preset: Preset, world: Any | None) -> str:
+def prefix_label(preset: Preset, world: World | None) -> str:
     """What the fixed system message's cached KV state is for: world (and its file's hash), preset, template version.
 
     The prefix's tokens are part of the cache key as well, so this only has to name the file and to
@@ -259,7 +254,8 @@ def _file_digest(path: str, size: int, mtime_ns: int) -> str:
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()[:12]
 
 
-def lean_places(world: Any | None, selection: Any, reading: PromptReading, indices: Sequence[int]) -> list[str]:
+def lean_places(world: World | None, selection: RoISelection, reading: PromptReading,
+                indices: Sequence[int]) -> list[str]:
     """The places a lean draft may name: where the groups are, go and pass (location, destination, via),
     the zones those lie in and the selected exits, in the selection's order. The reading has already
     fixed where each group is and goes, so the model is not offered every place the selection holds
@@ -267,7 +263,7 @@ def lean_places(world: Any | None, selection: Any, reading: PromptReading, indic
     there first: "GoTo(kitchen)" for people who start in the kitchen). A sentence that names no such
     place keeps the whole selection."""
     selected = list(selection.roi_names)
-    wanted: set[str] = set(getattr(selection, "exits", ()) or ())
+    wanted: set[str] = set(selection.exits)
     named = {p for i in indices for g in (reading.groups[i],)
              for p in (g.location, g.destination, *g.via) if p}
     if not named & set(selected) or world is None:
@@ -283,7 +279,7 @@ def lean_places(world: Any | None, selection: Any, reading: PromptReading, indic
     return [name for name in selected if name in wanted]
 
 
-def describe_places(world: Any | None, names: Sequence[str]) -> str:
+def describe_places(world: World | None, names: Sequence[str]) -> str:
     """One line per place: `- pharmacy_counter (counter in pharmacy)`, `- pharmacy (pharmacy)`."""
     lines = []
     for name in names:
@@ -306,15 +302,15 @@ def _stable(documents: Sequence[RetrievedDoc]) -> list[RetrievedDoc]:
     return sorted(documents, key=lambda d: (d.kind != "node", d.name))
 
 
-def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], prompt: str,
-                   quantities: Sequence[Quantity], roi_names: Sequence[str], reading: PromptReading | None = None,
-                   world: Any | None = None, pinned: Sequence[RetrievedDoc] = (),
+def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc], reading: PromptReading,
+                   roi_names: Sequence[str], world: World | None = None, pinned: Sequence[RetrievedDoc] = (),
                    group_indices: Sequence[int] | None = None) -> list[dict[str, str]]:
     """The system message fixed per world and preset first (pinned cards included); the variable parts
     (places, the other cards, the sentence and its groups) last.
 
     `group_indices`: the reading groups of a lean draft (one tree each, numbered in this order); None
     asks for the full draft."""
+    prompt = reading.prompt
     lean = group_indices is not None
     system = fixed_system_message(preset, world, [(d.card or d.text).strip() for d in pinned], lean=lean)
     if not preset.guided:
@@ -329,20 +325,17 @@ def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc
     if others:
         parts += ["Nodes:"] + [(d.card or d.text).strip() for d in others]
     parts.append(f"Scenario: {prompt.strip()}")
-    if lean and reading is not None:
+    if lean:
         parts.append("Groups:")
         parts += [f"{number}. {describe_reading_groups(reading, [index])}"
                   for number, index in enumerate(group_indices or (), 1)]
-    elif reading is not None and reading.groups:
+    elif reading.groups:
         parts.append("Groups to write: " + describe_reading_groups(reading))
-    elif quantities:
-        parts.append("Groups to write: " + "; ".join(f"{q.phrase} ({q.count})" for q in quantities))
     return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
 
 
-def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], prompt: str,
-                    quantities: Sequence[Quantity], documents_for: Callable[[list[str]], list[str]],
-                    reading: PromptReading | None = None, world: Any | None = None,
+def prepare_request(preset: Preset, selection: RoISelection, retrieved: Sequence[Any], reading: PromptReading,
+                    documents_for: Callable[[list[str]], list[str]], world: World | None = None,
                     cards_for: Callable[[list[str]], list[str]] | None = None,
                     documents_named: Callable[[list[str]], list[Any]] | None = None) -> SynthesisRequest:
     """The bt model's request: offered nodes, the prompt, and the grammar of every draft it may write.
@@ -364,19 +357,19 @@ def prepare_request(preset: Preset, selection: Any, retrieved: Sequence[Any], pr
     pinned = [d for d in documents if d.name in pinned_names]
     heads, indices = group_heads(reading, selection, preset.limits.max_groups) if preset.guided else ([], [])
     roi_names, places = list(selection.roi_names), selection.summary
-    if heads and reading is not None:
+    if heads:
         roi_names = lean_places(world, selection, reading, indices)
         places = describe_places(world, roi_names)
         grammar = tree_grammar(offered, roi_names, len(heads), max_depth=preset.limits.max_depth)
         max_groups = len(heads)
     else:
-        # Post-processing keeps one group per stated quantity, so asking for more only costs tokens.
-        max_groups = (min(preset.limits.max_groups, len(quantities)) if preset.guided and quantities
-                      else preset.limits.max_groups)
+        # Post-processing keeps one group per group of the reading, so asking for more only costs tokens.
+        groups = len(effective_counts(reading))
+        max_groups = min(preset.limits.max_groups, groups) if preset.guided and groups else preset.limits.max_groups
         grammar = draft_grammar(offered, selection.roi_names, max_groups=max_groups,
                                 max_count=preset.limits.max_count, max_depth=preset.limits.max_depth)
-    messages = build_messages(preset, places, documents, prompt, quantities, roi_names, reading,
-                              world, pinned, indices if heads else None)
+    messages = build_messages(preset, places, documents, reading, roi_names, world, pinned,
+                              indices if heads else None)
     return SynthesisRequest(messages, list(offered), roi_names, grammar, max_groups, documents,
                             prefix_label(preset, world), heads)
 
@@ -483,7 +476,7 @@ def describe_documents(documents: Sequence[RetrievedDoc]) -> list[dict[str, Any]
 
 
 
-def warm_prefix(llm: Any, preset: Preset, world: Any | None,
+def warm_prefix(llm: Any, preset: Preset, world: World | None,
                 documents_named: Callable[[list[str]], list[Any]] | None = None) -> dict[str, Any] | None:
     """Evaluate the fixed system message of this world and preset once, before the first request.
 

@@ -12,11 +12,23 @@ nothing.
 
 from __future__ import annotations
 
+from typing import Protocol
+
+import numpy as np
+
 from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import format_point_list
 from grove_tui.bt.format.xml import read_tree, write_tree
-from grove_tui.navigation.theta_star import PlanningError
+from grove_tui.errors import PlanningError
+
+Point = tuple[float, float]
+
+
+class _Planner(Protocol):
+    """What plans a leg: Theta* or a cache in front of it (generation/planning.py's CachedPlanner)."""
+
+    def plan(self, start: Point, goal: Point, start_label: str = ..., goal_label: str = ...) -> np.ndarray: ...
 
 WAYPOINTS_PORT = "waypoints"
 
@@ -54,7 +66,7 @@ def _target_label(element: TreeElement) -> str:
     return element.id
 
 
-def plan_waypoints(document: TreeDocument, start, planner, start_label: str = "start") -> TreeDocument:
+def plan_waypoints(document: TreeDocument, start: Point, planner: _Planner, start_label: str = "start") -> TreeDocument:
     """Fill the `waypoints` port of every navigation node of every BehaviorTree of `document`, in place.
 
     `planner` is anything with `plan(start, goal, start_label=..., goal_label=...) -> (K, 2)` (a
@@ -83,6 +95,6 @@ def plan_waypoints(document: TreeDocument, start, planner, start_label: str = "s
     return document
 
 
-def inject_waypoints(xml: str, start, planner, start_label: str = "start") -> str:
+def inject_waypoints(xml: str, start: Point, planner: _Planner, start_label: str = "start") -> str:
     """`plan_waypoints` on tree text: read with the hardened reader (BTError if it is not a tree), written back."""
     return write_tree(plan_waypoints(read_tree(xml), start, planner, start_label))

@@ -113,7 +113,7 @@ class Clauses:
         if negated is not None:
             # "go to the imaging instead of the waiting room": a place nobody goes to
             k = i + len(negated)
-            place = self.places.phrase(k, "at", i, record_unknown=False)
+            place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else s.phrase_end(k))
             return True
         if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
@@ -125,6 +125,10 @@ class Clauses:
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
             return self._purpose(scan, i, i + 2, i + 4)
+        if w in lx.PLACE_SEQUELS and scan.c.places and scan.c.places[-1].end == i:
+            sequel = self._sequel(scan, i)
+            if sequel is not None:
+                return self._add_place(scan, sequel, i)
         prep = s.preposition(i)
         if prep is not None:
             name, width = prep
@@ -132,11 +136,29 @@ class Clauses:
                 name = "at"  # "buy tickets from the machines": where they stand, not where they start
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
             place = self.places.phrase(i + width, name, i, record_unknown=name != "off")
+            if place is not None and name in lx.VIA_PREPOSITIONS | {"by"} and i > 0 and s.low[i - 1] == "in" and \
+                    place.match is not None and place.match.kind == "door":
+                place = replace(place, prep="from")  # "pour in through the main doors": in from there
             if place is not None:
                 # "check in counter a": the "in" inside a name is not a new phrase
                 return self._add_place(scan, place, i)
             return False
         return self._verb_object(scan, i, nxt)
+
+    def _sequel(self, scan: _Scan, i: int) -> Place | None:
+        """A place said right after another with no preposition of its own, in the same role: the
+        next stop of a route ("walk to the café and then the pharmacy", "from ward A, then ward B")."""
+        s = self.s
+        before = scan.c.places[-1]
+        if before.prep in ("for", "purpose") or before.match is None:
+            return None
+        k = s.skip(i, lx.PLACE_SEQUELS)
+        if k >= s.n or k not in scan.own or s.preposition(k) is not None or s.verb_follows(k):
+            return None
+        place = self.places.phrase(k, before.prep, i, record_unknown=False)
+        if place is None or place.match is None or place.match.name == before.match.name:
+            return None
+        return replace(place, sequel=True)
 
     def _take(self, scan: _Scan, first: int, end: int) -> None:
         scan.used.update(range(first, end))
@@ -200,10 +222,10 @@ class Clauses:
         v = s.verb(i)
         if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1)):
             # "skip the critical care and go to ...": a place they do not go to
-            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False)
+            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else i + 1)
             return True
-        if v in lx.ZONE_EMPTYING_VERBS and s.w[i].pos == "VERB" and not s.after_determiner(i) and \
+        if v in lx.ZONE_EMPTYING_VERBS and s.is_verb(i) and not s.after_determiner(i) and \
                 nxt in lx.DETERMINERS | {"out"}:
             # "clear the platform", "empty out the ward": the zone everybody leaves
             place = self.places.phrase(s.skip(i + 1, {"out"}), "obj:start", i, record_unknown=False)
@@ -225,6 +247,7 @@ class Clauses:
         elif not s.after_determiner(i) and v in lx.OBJECT_VERBS:
             if nxt in lx.DETERMINERS or (nxt and s.index.knows(lemma(nxt))):
                 role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
+                        else "obj:seen" if v in lx.SEEN_OBJECT_VERBS
                         else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
                 place = self.places.phrase(i + 1, role, i)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
@@ -351,6 +374,15 @@ class Clauses:
                 break
         if any(s.verb(i) in lx.DEPARTURE_VERBS for i in own) and any(s.low[i] in lx.IMMEDIACY_WORDS for i in own):
             c.evacuate = True  # "everyone must leave immediately through the customs exit"
+        for i in own:
+            if s.verb(i) in lx.PERCEPTION_VERBS and any(
+                    s.low[k] in lx.EVACUATION_CUES or self.hazard(k) for k in range(i + 1, min(i + 5, s.n))
+                    if not s.is_punct(k)):
+                # "hear the alarm", "smell smoke": people who notice a hazard and do nothing else leave
+                c.evacuate = True
+                if c.intent is None or c.intent in lx.STATIONARY_INTENTS and c.verb_index == i:
+                    c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", s.verb(i), i, True, True
+                break
 
     def _followed(self, c: Clause) -> None:
         """Whom a follower follows: the person after the verb ("follow the charge nurse"), the group

@@ -53,13 +53,18 @@ class Collectives:
         while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
                                             or (s.w[at - 1].pos == "ADJ" and at > 1 and s.w[at - 2].pos == "DET")):
             at -= 1  # "a long queue of ...": the adjective is the collective's
+        if noun in lx.MODIFYING_COLLECTIVES and head + 1 < s.n and s.lemma(head + 1) in lx.IMPLIED_RANGES \
+                and s.lemma(head + 1) not in lx.MODIFYING_COLLECTIVES | lx.INTENT_VERBS.keys() \
+                and s.w[head + 1].pos in ("NOUN", "PROPN"):  # "a family queues": the verb, however tagged
+            head += 1  # "a tour group", "a family party": one group, as big as the first word says
+        plural = s.low[head] != s.lemma(head)
         parties, exact_parties = 1, True
         if number is not None:
             if number.kind in ("exact", "approximate") and number.value > 1:
                 parties = number.value
             elif number.kind.startswith("vague") or number.kind == "range":
                 parties, exact_parties = count_of(s, number, f"{head}:parties").value, False
-        elif low[head] != noun and first is None and noun not in lx.ONE_SET_PLURALS:
+        elif plural and first is None and noun not in lx.ONE_SET_PLURALS:
             # "groups of three or four", "pairs of tourists": several, however many is not said
             parties, exact_parties = s.choose(*lx.PLURAL_PARTIES_RANGE, f"{head}:groups"), False
         together = noun in lx.TOGETHER_COLLECTIVES

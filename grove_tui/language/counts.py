@@ -80,6 +80,16 @@ def decimal_at(s: Sentence, i: int) -> tuple[float, int] | None:
     return None
 
 
+def negative_at(s: Sentence, i: int) -> bool:
+    """Whether a negative number starts at word i ("-5 people", "minus 3 nurses"), not a range ("3-5")."""
+    word = s.low[i]
+    if word[:1] in ("-", "\u2212") and word[1:].replace(",", "").isdigit():
+        return True
+    if word in ("minus", "negative") and number_at(s, i + 1) is not None:
+        return True
+    return word in ("-", "\u2212") and number_at(s, i + 1) is not None and (i == 0 or number_at(s, i - 1) is None)
+
+
 def quantifier(s: Sentence, j: int) -> Quantifier | None:
     """The count expression at word j, if one starts there."""
     low = s.low
@@ -107,6 +117,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
         return Quantifier(max(1, math.floor(value + 0.5)), "approximate", after, max(1, math.ceil(value)),
                           max(1, math.floor(value)))
     num = number_at(s, k)
+    if num is not None and num[1] < s.n and low[num[1]] in lx.DETERMINERS and not approx:
+        return None  # "At nine the porters come in": a time, then the phrase; a number counts no "the ..."
     if num is not None:
         return _number_quantifier(s, num, approx)
     if low[k] == "both" and k + 1 < s.n and not s.is_punct(k + 1):

@@ -44,9 +44,9 @@ from typing import Any
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.edits import (CountChange, EditReading, GroupEdit, GroupRef, RobotEdit)
-from grove_tui.language.model import Count, GroupReading, RobotReading
+from grove_tui.language.model import Count, GroupReading, PromptReading, RobotReading
 from grove_tui.language.places import place_index
-from grove_tui.language.reading import read_prompt
+from grove_tui.language.reading import read_prompt as _read_sentence
 from grove_tui.language.tokens import lemma, verb_lemma, words
 
 # ---- word tables of edits (the reader's own tables are in lexicon.py) ------------------------------
@@ -155,6 +155,14 @@ class _Context:
     # groups that exist only once this sentence is applied ("add a cleaner, then make it mop the hall"):
     # a pronoun may name them, by their index after the scenario's groups
     added: list[GroupReading]
+
+
+def _read(text: str, world: Any, *, seed: int) -> PromptReading:
+    """The reader's reading of a clause, without the unsure group a sentence that names nobody is read
+    as ("the lights are off"): a follow-up that names nobody adds nobody."""
+    reading = _read_sentence(text, world, seed=seed)
+    named = tuple(g for g in reading.groups if not ((c := g.confidence_of("group")) is not None and c.unsure))
+    return reading if len(named) == len(reading.groups) else replace(reading, groups=named)
 
 
 # ---- entry point ----------------------------------------------------------------------------------------
@@ -318,12 +326,12 @@ def _robot_task(predicate: str, ctx: _Context) -> RobotReading | None:
             return None
         return RobotReading("cross", start=place if start is not None else None,
                             destination=place if end is not None else None, text=predicate)
-    said = read_prompt(f"the robot {predicate}", ctx.world, seed=ctx.seed)
+    said = _read(f"the robot {predicate}", ctx.world, seed=ctx.seed)
     if said.robot is not None and not said.groups and not any(c.unsure for c in said.robot.confidence):
         _note_unknown(said.unknown_places, ctx)
         return replace(said.robot, text=predicate)
     # the same words said of a person, read as the reader reads people
-    reading = read_prompt(f"a person {predicate}", ctx.world, seed=ctx.seed)
+    reading = _read(f"a person {predicate}", ctx.world, seed=ctx.seed)
     _note_unknown(reading.unknown_places, ctx)
     if not reading.groups:
         ctx.notes.append(f"'{predicate}': nothing the robot can do was read")
@@ -421,7 +429,7 @@ def _count_edit(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit] | N
         return _count_change(text, m.group(1), CountChange("set", float(_number(m.group(2)) or 1)), ctx)
     m = _SET_COUNT.match(text)
     if m is not None:
-        reading = read_prompt(m.group(1), ctx.world, seed=ctx.seed)
+        reading = _read(m.group(1), ctx.world, seed=ctx.seed)
         if reading.groups:
             g = reading.groups[0]
             ref = _resolve(g.who, ctx, label=g.label)
@@ -458,7 +466,7 @@ def _addition(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit] | Non
 def _additions(phrase: str, ctx: _Context, *, copy: GroupRef | None = None, text: str = "") -> list[GroupEdit]:
     """New groups read from `phrase`; one that says nothing of what it does copies `copy`, or the
     group it is more of ("two more nurses")."""
-    reading = read_prompt(phrase, ctx.world, seed=ctx.seed)
+    reading = _read(phrase, ctx.world, seed=ctx.seed)
     _note_unknown(reading.unknown_places, ctx)
     if not reading.groups:
         ctx.notes.append(f"'{phrase}': no people to add were read (say who and how many: \"two guards at the "
@@ -493,7 +501,7 @@ def _change_or_add(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit]:
     subject, predicate = _subject(body)
     ref = _resolve(subject, ctx) if subject else GroupRef("", ())
     if not ref.found:
-        reading = read_prompt(body, ctx.world, seed=ctx.seed)
+        reading = _read(body, ctx.world, seed=ctx.seed)
         if reading.groups and not _definite(reading.groups[0].who):
             return _additions(body, ctx, text=text)
         if reading.groups:
@@ -503,7 +511,7 @@ def _change_or_add(text: str, cues: set[str], ctx: _Context) -> list[GroupEdit]:
             return _additions(body, ctx, text=text)
         ctx.notes.append(f"'{text}' names no group of the scenario and no new people{_known_groups(ctx)}")
         return []
-    stated = read_prompt(f"{NEUTRAL_SUBJECT} {predicate}", ctx.world, seed=ctx.seed) if predicate else None
+    stated = _read(f"{NEUTRAL_SUBJECT} {predicate}", ctx.world, seed=ctx.seed) if predicate else None
     if stated is not None:
         _note_unknown(stated.unknown_places, ctx)
     group = stated.groups[0] if stated is not None and stated.groups else None
@@ -711,7 +719,7 @@ def _count_in(phrase: str, ctx: _Context) -> int | None:
     ws = words(phrase)
     if not any(w.isdigit() or w in lx.NUMBER_WORDS or w in lx.VAGUE_RANGES for w in ws):
         return None
-    reading = read_prompt(phrase + " wait", ctx.world, seed=ctx.seed)
+    reading = _read(phrase + " wait", ctx.world, seed=ctx.seed)
     return reading.groups[0].count.value if reading.groups else None
 
 
@@ -744,7 +752,7 @@ def _phrases(text: str) -> list[str]:
 
 
 def _has_people(text: str, ctx: _Context) -> bool:
-    return bool(read_prompt(text, ctx.world, seed=ctx.seed).groups)
+    return bool(_read(text, ctx.world, seed=ctx.seed).groups)
 
 
 def _note_unknown(places: Sequence[str], ctx: _Context) -> None:

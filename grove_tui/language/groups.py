@@ -18,7 +18,7 @@ from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
-from grove_tui.language.model import FieldConfidence, GroupReading
+from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.place_phrases import PlacePhrases, place_confidences
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
@@ -61,6 +61,8 @@ class Groups:
         for k, m in enumerate(mentions):
             if m.zone_place is not None:  # "half the open office goes ...": where they are
                 clauses[k].places.insert(0, m.zone_place)
+            if m.robot_object is not None:
+                clauses[k] = self._with_robot(m, robot_clauses, excluded)
         self._share(mentions, clauses)
         evacuation = self.clauses.evacuation()
         groups: list[GroupReading] = []
@@ -153,6 +155,23 @@ class Groups:
                 clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
                                          intent=clauses[k].intent or "walk", has_action=True)
 
+    def _with_robot(self, m: Mention, robot_clauses: Sequence[RobotClause], excluded: set[int]) -> Clause:
+        """The clause of people the robot escorts or follows: the robot's route after them is theirs
+        too ("the robot escorts a lost child from baggage reclaim to the info desk"); the escorted
+        follow the robot, the followed walk it."""
+        rc = next((rc for rc in robot_clauses if m.first in rc.tokens), None)
+        if rc is None:
+            return Clause()
+        after = [i for i in rc.tokens if i > m.last]
+        clause = self.clauses.read(after, excluded - set(after))
+        if m.robot_object == "led":
+            return replace(clause, robot="follow", intent=clause.intent or "walk", has_action=True)
+        if m.robot_object == "met":  # people the robot passes, serves or squeezes by stay where they are
+            return replace(clause, intent=clause.intent or "wait", has_action=True)
+        sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "from" for p in clause.places)
+        return replace(clause, intent=clause.intent or ("walk" if sends or not clause.places else "wander"),
+                       has_action=True)
+
     def _own_span(self, span: tuple[int, int], m: Mention, robot_tokens: set[int]) -> tuple[int, int]:
         """A group's span without a robot clause that ends it ("..., while a robot crosses the hall")."""
         s = self.s
@@ -201,7 +220,8 @@ class Groups:
         stationary = intent in lx.STATIONARY_INTENTS or (intent == "robot" and (
             c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
-                             verb_index=c.verb_index, stationary=stationary, intent=intent)
+                             verb_index=c.verb_index, stationary=stationary, intent=intent,
+                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
@@ -302,3 +322,20 @@ class Groups:
         self.notes.append(f"no people are named: everyone in {match.zone} is evacuated")
         return replace(group, who="everyone", text=s.prompt, confidence=group.confidence + (
             FieldConfidence("group", 0.45, f"no people are named: everyone in {match.zone} is assumed"),))
+
+    def unnamed(self, robot_tokens: set[int]) -> GroupReading:
+        """The one group of a sentence that names no people ("a busy afternoon in the café", "the robot
+        crosses the lobby"): the people the model is asked to fill in, with the places and the verb
+        the sentence has for them, marked as assumed."""
+        s = self.s
+        clause = self.clauses.read(range(s.n), robot_tokens, scene=True)
+        low, high = lx.BARE_PLURAL_RANGE
+        mention = Mention(0, 0, "people", "person", Count("vague", s.choose(low, high, "unnamed"), low, high))
+        if clause.intent is None:
+            clause = replace(clause, intent="walk")  # no verb: the model's tree is kept as it writes it
+        group = self.group(_GroupWords(mention, clause, None, (0, s.n)), self.clauses.evacuation(), [])
+        self.notes.append("no people are named: one group of people is left to the model")
+        count = group.count
+        return replace(group, text=s.prompt, confidence=tuple(c for c in group.confidence if c.field != "count") + (
+            FieldConfidence("group", 0.3, "no people are named: the model is asked to fill in who is there"),
+            FieldConfidence("count", 0.5, f"no people are named: {count.value} guessed in {count.low}-{count.high}")))

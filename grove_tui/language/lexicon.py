@@ -1,9 +1,8 @@
 """The one lexicon of English the product reads: data only, no logic beyond lookups.
 
 Every word table the reader needs lives here so that there is one answer to "is this a verb of
-walking", "does this word mark a place", "how many is a few". Modules that read English
-(language/reading.py, generation/rois.py, generation/postprocess.py) import these tables instead
-of keeping their own.
+walking", "does this word mark a place", "how many is a few". Only language/ reads English; the
+stages below it take the reading.
 
 Vague and implied counts have documented ranges; the reader picks a value inside the range from
 the seed, so one prompt and one seed always give the same crowd:
@@ -54,6 +53,15 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
     "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
+# Words that put what follows after what came before ("..., then waits in the waiting room").
+SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
+# Words between two places of one route, the second with no preposition ("to the café and then the pharmacy").
+PLACE_SEQUELS = frozenset({"and", "then", ",", "afterwards", "finally"})
+# Collectives that also name the kind of a collective after them ("a tour group", "a family party").
+MODIFYING_COLLECTIVES = frozenset({"tour", "family", "class", "delegation"})
+# Family words said as names, with no determiner ("mum cooks", "grandpa naps"): what follows is their verb.
+KIN_NAMES = frozenset("mum mom mummy mommy mama dad daddy papa grandma grandpa granny gran nan nana grandad "
+                      "granddad".split())
 # Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
 FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4)}
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
@@ -216,7 +224,8 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("form", "a", "line"): "queue", ("form", "a", "queue"): "queue", ("get", "in", "line"): "queue",
     ("mill", "around"): "wander", ("mill", "about"): "wander", ("walk", "around"): "wander",
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
-    ("hang", "out"): "converse", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
+    ("hang", "out"): "converse", ("hang", "around"): "wait", ("hang", "about"): "wait",
+    ("hang", "round"): "wait", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
     ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
     ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
@@ -236,8 +245,10 @@ ONE_SET_PLURALS = frozenset({"twin"})
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
-LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum "
+LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum watch "
                                   "hoover scrub tidy".split())
+# Verbs whose object is what people look at ("watch TV"): where they are, unless a place is named too.
+SEEN_OBJECT_VERBS = frozenset({"watch"})
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
 VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
 OBJECT_VERBS = START_OBJECT_VERBS | DESTINATION_OBJECT_VERBS | LOCATION_OBJECT_VERBS | VIA_OBJECT_VERBS
@@ -261,6 +272,9 @@ ROBOT_WAIT_VERBS = frozenset("wait stand stay park idle remain sit rest stop pau
                              "dock be".split())
 ROBOT_PATROL_VERBS = frozenset("patrol roam wander circle sweep clean mop vacuum guard scan explore monitor tour "
                                "survey inspect cruise prowl loop".split())
+# Words between the robot's verb and people it meets on its way ("drives past two nurses").
+ROBOT_PREPOSITIONS = frozenset("past by between among around round behind beside near to with through towards "
+                               "toward alongside for".split())
 ROBOT_FOLLOW_VERBS = frozenset("follow trail accompany shadow tail chase pursue".split())
 ROBOT_CROSS_VERBS = frozenset("cross pass traverse drive roll glide move navigate travel deliver carry bring fetch "
                               "transport head go leave enter return zoom trundle come reach visit proceed rush hurry "
@@ -347,6 +361,8 @@ TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "fam
 EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates evacuated alarm flee escape drill alert".split())
 # Hazards that, named on their own ("Fire!", "Smoke in the kitchen!", "a gas leak"), make leaving an
 # evacuation; as the first word of a compound ("fire exit", "smoke detector") they only name a thing.
+# Verbs of noticing: noticing an alarm or a hazard, and nothing else said, is leaving ("hear the alarm").
+PERCEPTION_VERBS = frozenset("hear smell see notice spot sense detect".split())
 HAZARD_NOUNS = frozenset("fire smoke blaze flames bomb scare leak flood flooding explosion threat "
                          "emergency".split())
 # Phrasal verbs of getting everybody out: an evacuation in any building ("get out", "empty out").
@@ -402,18 +418,6 @@ BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment p
 # Heads that say "a part of" without naming which: matching rests on the words before them.
 GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
-# Words after which a place may be named, verbs included ("reach the ward"): the RoI matcher's breaks.
-LOCATIVE_WORDS = ("in", "at", "to", "into", "near", "inside", "from", "toward", "towards", "by", "through", "across",
-                  "around", "outside", "beside", "behind", "past", "onto", "via", "within", "reach", "visit", "enter",
-                  "leave", "exit", "use")
-# Words that say what people do, not where; they select a place only through its name or aliases
-# ("waiting room"), never through a tag ("queue" on a counter, "fire" on an exit).
-BEHAVIOR_WORDS = frozenset(
-    """queue line wait walk go come leave enter chat talk converse meet sit stand rest eat drink buy pay evacuate
-    evacuation escape flee run rush alarm fire emergency panic wander roam stroll browse look watch follow visit
-    work help serve crowd gather hurry waiting queuing""".split()
-)
-
 # Groups of words people use for the same kind of place; matching one counts, at a discount, as
 # matching the others (the literal word still wins).
 PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
@@ -442,30 +446,9 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "garden yard patio terrace balcony",
         "study library",
         "printer copier print",
+        "child kid",  # "the kids room" is the children's room
     )
 )
-
-# ---- clause rules without a reading ---------------------------------------------------------
-# generation/postprocess.py's older rules, applied only when the reader finds no group in a prompt.
-CLAUSE_SPAWN_PREPOSITIONS = frozenset("from in at inside near by within around on beside outside".split())
-CLAUSE_GOAL_PREPOSITIONS = frozenset("to into towards toward through for".split())
-CLAUSE_QUEUE_WORDS = frozenset("queue queuing line wait waiting turn served serve counter desk ticket checkout".split())
-# What a group's own words say it does. Stricter than CLAUSE_QUEUE_WORDS: "wait" alone is not a queue.
-CLAUSE_INTENT_WORDS = {
-    "queue": frozenset("queue queuing queueing queued lining line turn served".split()),
-    "converse": frozenset("chat chatting chatted talk talking talked converse conversing conversation gossip "
-                          "gossiping discuss discussing socialise socialize socialising socializing".split()),
-    "wander": frozenset("wander wandering wandered stroll strolling strolled roam roaming browse browsing "
-                        "meander meandering mill milling".split()),
-    "walk": frozenset("walk walking walked go going goe gone head heading move moving come coming leave leaving "
-                      "hurry hurrying run running rush rushing return returning visit visiting enter entering "
-                      "cross crossing arrive arriving proceed proceeding".split()),
-}
-
-
-CLAUSE_ARRIVAL_VERBS = frozenset("come comes coming came enter enters entering entered arrive arrives arriving arrived".split())
-CLAUSE_DEPARTURE_VERBS = frozenset("leave leaves leaving left exit exits exiting exited go goes going went walk walks "
-                             "walking walked head heads heading headed".split())
 
 # Words that never name anything: skipped when matching places and labels.
 STOPWORDS = frozenset(

@@ -28,3 +28,4 @@ class Mention:
     fraction: float = 1.0  # "half the office": the share of the zone's people
     zone_place: Place | None = None  # the zone named inside the mention ("half the open office")
     apposition: tuple[int, int] | None = None  # "everyone in the café, some thirty of them,": the count's words
+    robot_object: str | None = None  # "led": the robot escorts them; "followed": the robot follows them

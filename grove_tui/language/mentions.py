@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.collectives import Collectives
-from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
+from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
@@ -34,12 +34,17 @@ class Mentions:
         self.people = people
         self.places = places
         self.collectives = Collectives(s, people)
+        self.problems: list[str] = []  # counts no scenario can have ("-5 people", "zero nurses")
 
     def find(self) -> list[Mention]:
         s = self.s
         found: list[Mention] = []
         i = 0
         while i < s.n:
+            if negative_at(s, i):
+                end = next((k for k in range(i + 1, min(i + 5, s.n)) if self.people.is_person_noun(k)), i)
+                self.problems.append(f"'{s.span(i, end)}' is a negative number of people; give a whole number of "
+                                     f"at least 1")
             if i in s.together_phrases or not self.subject_position(i):
                 i += 1
                 continue
@@ -54,9 +59,13 @@ class Mentions:
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
                 i = m.last + 1
                 continue
+            if m.count is not None and m.count.value == 0 and m.count.kind == "exact":
+                self.problems.append(f"'{m.who}' asks for nobody; give a number of people of at least 1 "
+                                     f"(or leave that group out)")
             if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
+            m.robot_object = self.robot_object(m.first)
             found.append(m)
             i = m.last + 1
         return found
@@ -95,7 +104,7 @@ class Mentions:
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
-        if self.led_by(at):
+        if self.led_by(at) or self.robot_object(at) is not None:
             return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
         if prev == "instead" and s.low[at] != "of":
             return True  # "nobody waits there; instead eight patients queue ..."
@@ -178,6 +187,48 @@ class Mentions:
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
         return self.people.person_head(start, counted=q is not None) is not None
+
+    def robot_object(self, at: int) -> str | None:
+        """Whether the phrase at `at` names people inside the robot's own clause, after its verb:
+        people it takes along ("the robot escorts a lost child to ...": "led"), follows ("the robot
+        follows grandpa from ...": "followed") or meets on its way ("the robot passes two nurses
+        chatting in the corridor", "delivers coffee to the manager": "met"). They are people of the
+        scene all the same."""
+        s = self.s
+        noun = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        if noun >= s.n or (self.people.person_head(self._phrase_head(at), counted=quantifier(s, at) is not None)
+                           is None and not self.people.is_person_noun(noun)):
+            return None
+        p = at - 1
+        direct = True
+        while p > 0 and p >= at - 6 and not s.is_punct(p) and s.low[p] not in lx.CLAUSE_STARTERS and \
+                (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or (
+                    s.w[p].pos in ("NOUN", "NUM") and not self.people.is_person_noun(p)
+                    and not s.index.knows(s.lemma(p)))):
+            direct = False
+            p -= 1  # "hands out leaflets to passengers", "drives past a group of visitors"
+        if p < 1 or not (s.w[p].pos in ("VERB", "AUX") or s.w[p].tag.startswith("VB") or
+                         verb_lemma(s.low[p]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS):
+            return None
+        if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
+            return None  # "the robot is followed by two children": a passive, the people's own clause
+        k = p - 1
+        while k > 0 and s.w[k].pos == "ADV":
+            k -= 1  # "the robot slowly escorts"
+        robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \
+            or (s.low[k] == "to" and k > 0 and s.low[k - 1] in lx.ROBOT_WORDS)  # "ask the robot to escort ..."
+        if not robot:
+            return None
+        verb = verb_lemma(s.low[p])
+        if direct and verb in lx.ROBOT_FOLLOW_VERBS and verb not in lx.LEADING_VERBS:
+            return "followed"
+        return "led" if direct and verb in lx.LEADING_VERBS else "met"
+
+    def _phrase_head(self, at: int) -> int:
+        s = self.s
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        return s.skip(start, {"of", "the"})
 
     def _conversation_partner(self, p: int, at: int) -> bool:
         """Whether the phrase at `at`, after "with" at p, is who a person talks or walks with, not a
@@ -424,7 +475,8 @@ class Mentions:
             kind = "exclusive" if exclusive else "exact"
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
-            if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)) \
+            if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
+                    or self.robot_object(at) is not None) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),

@@ -154,19 +154,23 @@ class PromptReading:
     notes: tuple[str, ...] = ()  # what could not be honoured, said plainly
     corrections: tuple[str, ...] = ()  # misspelt place words read as the world's ("read 'kitchn' as 'kitchen'")
     robot: RobotReading | None = None  # what the sentence asks of the robot itself; None when it asks nothing
+    places: tuple[str, ...] = ()  # every place of the world the sentence names, in reading order
+    problems: tuple[str, ...] = ()  # what the sentence asks that no scenario can be ("-5 people"), said plainly
 
     def to_dict(self) -> dict[str, Any]:
         return {"prompt": self.prompt, "groups": [g.to_dict() for g in self.groups],
                 "unknown_places": list(self.unknown_places), "notes": list(self.notes),
                 "corrections": list(self.corrections),
-                "robot": self.robot.to_dict() if self.robot is not None else None}
+                "robot": self.robot.to_dict() if self.robot is not None else None,
+                "places": list(self.places), "problems": list(self.problems)}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> PromptReading:
         return cls(str(data.get("prompt", "")), tuple(GroupReading.from_dict(g) for g in data.get("groups", ())),
                    tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())),
                    tuple(data.get("corrections", ())),
-                   RobotReading.from_dict(data["robot"]) if data.get("robot") else None)
+                   RobotReading.from_dict(data["robot"]) if data.get("robot") else None,
+                   tuple(data.get("places", ())), tuple(data.get("problems", ())))
 
     def unsure(self) -> list[tuple[int | None, FieldConfidence]]:
         """(group index, or None for the robot; the field) for every field read with low confidence."""

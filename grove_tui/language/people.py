@@ -113,7 +113,8 @@ class People:
                 return None  # "two fans whir in the server room"
             if person and s.w[k].pos == "ADJ" and k + 1 < s.n and \
                     s.w[k + 1].pos in ("NOUN", "PROPN") and s.w[k + 1].dep != "ROOT" and \
-                    (self.is_person_noun(k + 1) or s.lemma(k + 1) in lx.IMPLIED_RANGES):
+                    (self.is_person_noun(k + 1) or s.lemma(k + 1) in lx.IMPLIED_RANGES) and \
+                    not self.third_person_verb(k + 1):
                 k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
                 continue
             if person and self._modifies_next_noun(k):
@@ -160,7 +161,14 @@ class People:
             return False
         has_object = any(w.head == word.head and w.dep in ("dobj", "obj") for w in s.w)
         verb = s.verb(word.head)
-        return verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+        return (verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
+                and not self._phrasal_after(word.head))
+
+    def _phrasal_after(self, v: int) -> bool:
+        """Whether a verb begins a phrase only people do ("hang around", "hang out", "line up")."""
+        s = self.s
+        return any(tuple([s.verb(v), *s.low[v + 1:v + len(phrase)]]) == phrase
+                   for phrase in lx.PHRASAL_INTENTS if phrase[0] == s.verb(v))
 
     def _modifies_next_noun(self, k: int) -> bool:
         """Whether a person noun only modifies the noun after it ("outpatient clinic", "staff room"):
@@ -196,9 +204,10 @@ class People:
         if i < 1 or i >= s.n or not s.low[i].endswith("s") or s.low[i].endswith("ss"):
             return False
         before = i - 1
+        named_kin = s.low[before] in lx.KIN_NAMES and (before == 0 or s.low[before - 1] not in lx.DETERMINERS)
         if not self.is_person_noun(before) or s.lemma(before) != s.low[before] or \
-                s.index.knows(s.lemma(i)) or self.is_person_noun(i):
-            return False
+                s.index.knows(s.lemma(i)) or (self.is_person_noun(i) and not named_kin):
+            return False  # "mum cooks": a name, then its verb, though "cooks" are people too
         after = s.w[i + 1] if i + 1 < s.n else None
         return after is None or after.pos in ("DET", "ADP", "ADV", "PUNCT") or s.low[i + 1] in lx.DETERMINERS or (
             after.pos in ("NOUN", "PRON", "ADJ", "NUM") and s.verbless(i))  # "a visitor sips coffee"

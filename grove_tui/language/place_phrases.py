@@ -9,6 +9,7 @@ unknown place, unless it names a time, a person, a manner or the building itself
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -32,6 +33,7 @@ class Place:
     score: float = 1.0  # how sure the match is (1.0: the phrase holds the place's whole name or an alias)
     reason: str = ""
     alternatives: tuple[str, ...] = ()  # other places the phrase fits as well
+    sequel: bool = False  # said after the place before, in its role ("to the café and then the pharmacy")
 
 
 def place_confidences(roles: dict[str, str | None], via: Sequence[str],
@@ -51,6 +53,10 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
 # none of them from the understanding sets: tests/language/test_meaning.py).
 MEANING_ACCEPT = 0.75
 MEANING_MARGIN = 0.03
+# A word match that only shares some words with the phrase gives way to a place of another name
+# nearer in meaning: at least this similar, and this much nearer than the word match itself.
+MEANING_STRONG = 0.8
+MEANING_CLEARER = 0.05
 _Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
 
@@ -66,9 +72,12 @@ class PlacePhrases:
         self.frame_zones: list[str] = []  # zones named as where people are ("on platform 2"), in order
         self.quiet = False  # True while reading a clause whose places nobody goes to
         self.owner: str | None = None  # the kind of people whose clause is read ("her office" is theirs)
+        self.named: list[str] = []  # every place a phrase names, in reading order (not those nobody goes to)
+        self.covered: set[int] = set()  # the words of every place phrase read
 
-    def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True) -> Place | None:
-        """The noun phrase from word k, after the place preposition (or verb) at `at`."""
+    def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
+        """The noun phrase from word k, after the place preposition (or verb) at `at`; `mentioned`
+        False for a place said to be where nobody goes ("instead of the lobby")."""
         s = self.s
         low = s.low
         j = k
@@ -94,7 +103,14 @@ class PlacePhrases:
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas)
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its")
-        owned = self._owned(lemmas, match) if possessive and self.owner else None
+        # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
+        named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")
+                            and self.people.is_person_noun(x)), None)
+        named_entry = s.index.entry(match.name) if named_owner and match is not None else None
+        if named_entry is not None and named_owner in named_entry.tokens and lemmas and lemmas[-1] in named_entry.tokens:
+            named_owner = None  # "the women's toilet": the owner is part of the place's own name
+        owner = named_owner or (self.owner if possessive else None)
+        owned = self._owned(lemmas, match, owner) if owner else None
         if owned is not None:
             match = owned[0]
         if match is None and possessive:
@@ -119,17 +135,16 @@ class PlacePhrases:
             return None
         sure = owned[1:] if owned is not None else meant[1:] if meant is not None else None
         score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
-        if not numbered and owned is None and ((alternatives and score < UNSURE_BELOW) or
-                                               self._headed_elsewhere(lemmas, match)):
-            # Words do not decide: two places alike ("the main meeting room": the boardroom and both
-            # meeting rooms share "meeting room"), or a thing's name inside a phrase headed by a room
-            # word ("the mummy gallery" is no mummy): the one nearest in meaning, if one is clearly nearer.
-            chosen = self._nearest_of(phrase, lemmas, match, alternatives)
+        if not numbered and owned is None and meant is None and not self._context_decided(match, alternatives):
+            chosen = self._words_do_not_decide(phrase, lemmas, match, score, alternatives)
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
         self.context_zones.append(match.zone)
         if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
             self.frame_zones.append(match.zone)
+        if mentioned:
+            self.named.append(match.name)
+        self.covered.update(range(k, j))
         return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives)
 
     # ---- by meaning, and by owner ----------------------------------------------------------------
@@ -138,11 +153,8 @@ class PlacePhrases:
         """The place a phrase no word of which names one means, when one is clearly nearest: similar
         enough to one of its names, and clearly nearer than any place of another zone."""
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        head = content[-1] if content else ""
         speaks_of_door = bool(set(content) & lx.DOOR_WORDS)
-        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase))
-                  if (r.entry.kind != "door" or speaks_of_door)
-                  and (r.entry.kind == "zone" or head not in lx.GENERIC_PLACE_HEADS)]
+        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase)) if r.entry.kind != "door" or speaks_of_door]
         if not ranked or ranked[0].similarity < MEANING_ACCEPT:
             return None
         best = ranked[0]
@@ -158,6 +170,36 @@ class PlacePhrases:
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
+
+    def _context_decided(self, match: PlaceMatch, alternatives: Sequence[str]) -> bool:
+        """Whether a zone the sentence named before chose between places alike (see _in_context)."""
+        return bool(alternatives) and match.zone in self.context_zones
+
+    def _words_do_not_decide(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch, score: float,
+                             alternatives: Sequence[str]) -> _Decided | None:
+        """Meaning, where words do not decide: places alike ("the main meeting room": the boardroom
+        and both meeting rooms share "meeting room"), a thing's name inside a phrase headed by a room
+        word ("the mummy gallery" is no mummy), a phrase that shares only a word for rooms with its
+        match ("the snack area": only "area"), or only some of its words ("the drug store" shares
+        "store" with the store room, and means the drugstore)."""
+        if (alternatives and score < UNSURE_BELOW) or self._headed_elsewhere(lemmas, match):
+            return self._nearest_of(phrase, lemmas, match, alternatives)
+        if match.exact:
+            return None
+        entry = self.s.index.entry(match.name)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        shared = set(content) & (entry.tokens if entry is not None else set())
+        meant = self._by_meaning(phrase, lemmas)
+        if shared <= lx.GENERIC_PLACE_HEADS:
+            # only "area" or "room" in common: the word match says nothing
+            return meant or (match, 0.5, f"'{' '.join(phrase)}' shares only '{' '.join(sorted(shared))}' with "
+                                         f"{match.name}", ())
+        if meant is None or meant[0].name == match.name or meant[0].score < MEANING_STRONG:
+            return None
+        own = self.s.index.by_meaning(" ".join(phrase), among={match.name})
+        if own and meant[0].score - own[0].similarity < MEANING_CLEARER:
+            return None
+        return meant
 
     def _headed_elsewhere(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
         """Whether a fixture or door matched by its whole name sits inside a phrase whose head is a
@@ -175,8 +217,11 @@ class PlacePhrases:
         index = self.s.index
         said = " ".join(phrase)
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        rooms_only = bool(content) and (content[-1] in lx.GENERIC_PLACE_HEADS or self._headed_elsewhere(lemmas, match))
-        among = {match.name, *alternatives, *index.sharing(content)}
+        if (entry := index.entry(match.name)) is not None and entry.exit and "exit" in content:
+            return None  # "the exit": any exit is one; the nearest to the scene was chosen, meaning adds nothing
+        rooms_only = self._headed_elsewhere(lemmas, match)
+        strong = [r.entry.name for r in index.by_meaning(said)[:3] if r.similarity >= MEANING_ACCEPT]
+        among = {match.name, *alternatives, *index.sharing(content), *strong}
         ranked = [r for r in index.by_meaning(said, among=among) if r.entry.kind == "zone" or not rooms_only]
         if len(ranked) < 2:
             return None
@@ -193,22 +238,29 @@ class PlacePhrases:
                 f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
                 f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
 
-    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None) -> _Decided | None:
-        """"her office", "their room": of the places named like the phrase, the one that belongs to the
-        kind of person whose clause it is ("the director ... her office": the director's office)."""
-        assert self.owner is not None
+    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None, owner: str) -> _Decided | None:
+        """"her office", "their room", "the kids' bed": of the places named like the phrase, the one that
+        belongs to the kind of person whose clause it is ("the director ... her office": the director's
+        office), or a thing of that kind in a room of theirs ("mum ... her bed": the bed of the parents'
+        bedroom)."""
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
         if not content:
             return None
         head = content[-1]
-        owned = [e for e in self.s.index.owned_by(self.owner) if head in e.tokens or
-                 (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
+        theirs = self.s.index.owned_by(owner)
+        rooms = {e.name for e in theirs if e.kind == "zone"}
+        # a thing in a room of theirs first ("the parents' bed": the bed of their bedroom, not the bedroom)
+        owned = [e for e in self.s.index.entries if e.kind not in ("zone", "door") and e.zone in rooms
+                 and head in e.tokens and head not in lx.GENERIC_PLACE_HEADS]
+        owned = owned or [e for e in theirs if head in e.tokens or (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
         mine = [e for e in owned if match is not None and e.name == match.name]
+        if len(owned) > 1 and not mine:
+            owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door
         if len(owned) != 1 and not mine:
             return None
         e = (mine or owned)[0]  # the words may already name it: then the owner decides a tie
         return (PlaceMatch(e.name, e.kind, e.zone, match.score if match is not None else 1.0, False), 0.8,
-                f"'{' '.join(lemmas)}' of a {self.owner}: {e.name}", ())
+                f"'{' '.join(lemmas)}' of a {owner}: {e.name}", ())
 
     def _words(self, j: int) -> tuple[list[str], int]:
         """The words of a place phrase from j, and the index after them."""
@@ -226,12 +278,13 @@ class PlacePhrases:
                 phrase.append(w)  # "check in counter a": a preposition inside a name the world has
                 j += 1
                 continue
+            if w in ("'s", "’s") or (w in ("'", "’") and phrase and phrase[-1].endswith("s") and
+                                     s.w[j].tag == "POS"):
+                j += 1  # "the parents' bed": the owner, then the thing
+                continue
             if s.is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
                     w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
-            if w in ("'s", "’s"):
-                j += 1
-                continue
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False
@@ -281,9 +334,10 @@ class PlacePhrases:
         is less so; two places scoring alike are unsure, unless a zone the prompt named before
         decides between them."""
         said = " ".join(phrase)
-        tied = [m for m in self.s.index.candidates(lemmas)
-                if m.name != match.name and m.score >= match.score - 1e-9
-                and not (match.kind == "zone" and m.zone == match.name)
+        alike = [m for m in self.s.index.candidates(lemmas) if m.score >= match.score - 1e-9]
+        zones = {m.name for m in alike if m.kind == "zone"}
+        tied = [m for m in alike if m.name != match.name
+                and not (m.kind != "zone" and m.zone in zones)  # a fixture of a room alike is that room
                 and not (m.kind == "zone" and match.zone == m.name)]
         alternatives = tuple(dict.fromkeys(m.name for m in tied))[:4]
         if alternatives and match.zone in self.context_zones:  # (this phrase's zone is not in it yet)
@@ -316,10 +370,21 @@ class PlacePhrases:
         """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
         has already named ("Gate A1: ... staff at the desk")."""
         index = self.s.index
-        if match is None or not self.context_zones or match.zone in self.context_zones:
+        if match is None:
+            return match
+        if not self.context_zones or match.zone in self.context_zones:
+            tied = [m for m in index.candidates(lemmas) if m.score >= match.score - 1e-9]
+            exits = [m for m in tied if (e := index.entry(m.name)) is not None and e.exit]
+            if match.kind == "door" and exits and match not in exits and "exit" in lemmas:
+                return exits[0]  # "the exit" is an exit door, whichever named "..._exit" ties with it
             return match
         candidates = index.candidates(lemmas)
         tied = [m for m in candidates if m.score >= match.score - 1e-9]
+        exits = [m for m in tied if (e := index.entry(m.name)) is not None and e.exit]
+        if exits and (len(exits) == len(tied) or "exit" in lemmas):
+            # "the exit": an exit door (not a door only named "..._exit" inside the building), the one
+            # nearest the places the sentence is about
+            return self._nearest_exit(exits)
         for zone in reversed(self.context_zones):
             for m in tied:
                 if m.zone == zone:
@@ -336,6 +401,19 @@ class PlacePhrases:
                 if m.zone == zone and m.kind == "entity" and entry is not None and set(content) <= entry.tokens:
                     return m
         return match
+
+    def _nearest_exit(self, exits: Sequence[PlaceMatch]) -> PlaceMatch:
+        world = self.s.index.world
+        centres = [world.zone(z).centroid for z in dict.fromkeys(self.context_zones)]
+        cx = sum(c[0] for c in centres) / len(centres)
+        cy = sum(c[1] for c in centres) / len(centres)
+
+        def distance(m: PlaceMatch) -> float:
+            door = world.find(m.name)
+            x, y = getattr(door, "position", (cx, cy))
+            return math.hypot(x - cx, y - cy)
+
+        return min(exits, key=lambda m: (distance(m), m.name))
 
     def _extends_name(self, phrase: Sequence[str], j: int) -> bool:
         """Whether the words from j on continue `phrase` into a longer whole name or alias of the world."""
@@ -382,6 +460,22 @@ class PlacePhrases:
                 first = next((lemma(w) for w in words[:n] if w not in lx.DETERMINERS), "")
                 return entry is None or first in entry.tokens
         return False
+
+    def scan_names(self, skip: set[int]) -> None:
+        """Places the sentence names in no place role ("a fire alarm empties the pharmacy", "the
+        lobby is busy"): a whole name or alias starting a noun phrase, for the places the scenario
+        is about; never an unknown place."""
+        s = self.s
+        k = 0
+        while k < s.n:
+            starts = k not in self.covered and k not in skip and (
+                k == 0 or s.low[k - 1] in lx.DETERMINERS or s.is_punct(k - 1)) and not s.is_punct(k)
+            if starts and self.names_place(k):
+                place = self.phrase(k, "named", k, record_unknown=False)
+                if place is not None:
+                    k = max(place.end, k + 1)
+                    continue
+            k += 1
 
     def scan_unknown(self, tokens: Sequence[int]) -> None:
         """Read every place phrase of these words, for the unknown places among them."""

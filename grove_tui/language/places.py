@@ -24,7 +24,7 @@ from functools import lru_cache
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
-from grove_tui.language.tokens import lemma, name_tokens
+from grove_tui.language.tokens import name_tokens
 from grove_tui.world.model import World
 
 SYNONYM_DISCOUNT = 0.6
@@ -43,6 +43,7 @@ class PlaceEntry:
     exit: bool = False
     area: float = 0.0
     said: tuple[str, ...] = ()  # the name (as words), the type and each alias, as people write them
+    types: frozenset[str] = frozenset()  # the type as written in `said`
     owners: frozenset[str] = frozenset()  # kinds of people it belongs to ("child" for "kids room")
 
 
@@ -98,7 +99,14 @@ class PlaceIndex:
         self.name_words = frozenset(t for e in self.entries for t in e.tokens if t.isalpha() and len(t) >= 4)
         self.name_pairs = frozenset(pair for e in self.entries for p in e.phrases for pair in zip(p, p[1:]))
         self.joined_pairs = {a + b: (a, b) for a, b in self.name_pairs if a.isalpha() and b.isalpha()}
-        self._said = [(i, text) for i, e in enumerate(self.entries) for text in e.said]
+        # A type many places share ("gallery", "office") says nothing about which: meaning compares
+        # names, aliases and the types only one place has.
+        said_by: dict[str, int] = {}
+        for e in self.entries:
+            for text in e.said:
+                said_by[text] = said_by.get(text, 0) + 1
+        self._said = [(i, text) for i, e in enumerate(self.entries) for k, text in enumerate(e.said)
+                      if k == 0 or text not in e.types or said_by[text] == 1]
         self._vectors = PhraseVectors([text for _, text in self._said])
         self._order_cache = {e.name: i for i, e in enumerate(self.entries)}
         self._by_name = {e.name: e for e in self.entries}
@@ -140,7 +148,8 @@ class PlaceIndex:
         """The places that belong to a kind of person: "director" owns "director's office", "child"
         owns "kids room", "guard" owns "guards' room"."""
         kinds = owner_kinds(person)
-        return [e for e in self.entries if e.owners & kinds]
+        # a person word the lexicon lacks still owns the places named after it ("the curator's office")
+        return [e for e in self.entries if e.owners & kinds or person in e.tokens]
 
     def knows(self, token: str) -> bool:
         """Whether some place of the world is called by this word or a synonym of it."""
@@ -282,6 +291,7 @@ def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], ali
     owners = {t for phrase in phrases for t in phrase if t in PERSON_NOUNS and t not in ("person", "people")}
     return PlaceEntry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens),
                       tuple(p for p in phrases if p), exit, area, tuple(dict.fromkeys(said)),
+                      frozenset({type_.replace("_", " ")} if type_ and kind != "door" else set()),
                       frozenset(k for t in owners for k in owner_kinds(t)))
 
 
@@ -315,7 +325,3 @@ def place_index(world: World) -> PlaceIndex:
         cached = (world, PlaceIndex(world))
         _INDEXES[key] = cached
     return cached[1]
-
-
-def lemmas(words: Sequence[str]) -> list[str]:
-    return [lemma(w) for w in words]

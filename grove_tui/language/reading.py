@@ -42,6 +42,10 @@ from grove_tui.language.spelling import correct_places
 from grove_tui.language.text import normalise
 from grove_tui.world.model import World
 
+NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
+            "they do, e.g. 'ten patients queue at the pharmacy'")
+NOBODY = "the sentence says nobody is there: a scenario needs at least one person; say who is there and what they do"
+
 __all__ = ["COUNT_KINDS", "INTENTS", "ROBOT_INTERACTIONS", "Count", "FieldConfidence", "GroupReading",
            "PromptReading", "RobotReading", "effective_counts", "read_prompt"]
 
@@ -52,7 +56,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     typed = " ".join((prompt or "").split())
     text = normalise(typed)
     if not text:
-        return PromptReading(typed, ())
+        return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     words = parse(text)
     corrected, corrections = correct_places(text, words, index)
@@ -73,13 +77,20 @@ def _read(s: Sentence) -> PromptReading:
     mentions = finder.find()
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
+    robot_tokens = {i for rc in found for i in rc.tokens}
+    problems = list(finder.problems)
+    read: tuple[GroupReading, ...] = ()
     if mentions:
         read = tuple(groups.read(mentions, found))
+    elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
+        read = (assumed,)
+    elif clauses.negated_tokens():
+        # "Nobody is in the ward": a sentence about nobody sets no scene; nobody to simulate
+        places.scan_unknown([i for i in range(s.n) if i not in robot_tokens])
+        groups.notes.append("no group of people found in the prompt")
+        problems.append(NOBODY)
     else:
-        assumed = groups.evacuees_of_an_emptied_zone()
-        read = (assumed,) if assumed is not None else ()
-        if assumed is None:
-            robot_tokens = {i for rc in found for i in rc.tokens}
-            places.scan_unknown([i for i in range(s.n) if i not in robot_tokens])
-            groups.notes.append("no group of people found in the prompt")
-    return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot)
+        read = (groups.unnamed(robot_tokens),)
+    places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
+    return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
+                         places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))

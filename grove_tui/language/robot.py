@@ -47,7 +47,8 @@ class RobotClauses:
         """The clauses whose subject is the robot, each running to the next group's mention, the
         next clause about someone else, or the end of its sentence."""
         s = self.s
-        starts = {m.first for m in mentions}
+        # the people the robot escorts or follows are inside its clause ("the robot escorts a lost child to ...")
+        starts = {m.first for m in mentions if m.robot_object is None}
         taken = {i for m in mentions for i in range(m.first, m.last + 1)}
         out: list[RobotClause] = []
         i = 0

@@ -26,19 +26,26 @@ class Roles:
 
 
 def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
-                 verb_index: int | None, stationary: bool, intent: str) -> Roles:
+                 verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = ()) -> Roles:
     """The group's places by role: a narrower place (a fixture of the zone already read) replaces
-    the zone; a destination said with "to" is not replaced by a later "at"."""
+    the zone; a destination said with "to" is not replaced by a later "at"; a place they stay at
+    after "then" is where they stay, the one before it where they start ("buys a paper at the
+    newsagent, then waits in the waiting room")."""
     roles = Roles()
     said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
+    said = [p for p in places if p.match is not None and p.prep != "obj:seen"]
     for p in [*places, *scene_places]:
-        if p.match is None:
-            continue
+        if p.match is None or (p.prep == "obj:seen" and said):
+            continue  # "watch TV in the lounge": they are in the lounge
         name = p.match.name
         roles.read_from.setdefault(name, p)
         role = role_of(index, p, verb, verb_index, stationary, intent, p in scene_places)
         marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
-        if role == "start" and (roles.start is None or narrower(index, name, roles.start)):
+        if p.sequel and role == "destination" and roles.destination is not None and name not in roles.via:
+            # "to the café and then the pharmacy": the café on the way, the pharmacy where they end
+            roles.via.append(roles.destination)
+            roles.destination = name
+        elif role == "start" and (roles.start is None or narrower(index, name, roles.start)):
             roles.start = name
         elif role == "destination" and (roles.destination is None or narrower(index, name, roles.destination)
                                         or (marked and not said_to)):
@@ -46,6 +53,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             roles.destination, said_to = name, said_to or marked
         elif role == "location" and (roles.location is None or narrower(index, name, roles.location)):
             roles.location = name
+        elif role == "location" and roles.start is None and roles.location is not None and name != roles.location and \
+                any(roles.read_from[roles.location].index < t < p.index for t in then_at):
+            roles.start, roles.location = roles.location, name
         elif role == "via" and name not in roles.via:
             roles.via.append(name)
     return roles
@@ -79,6 +89,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return "start"  # "arrive by the side entrance": in from outside
     if prep == "obj:at":
         return "location" if stationary else "via"
+    if prep == "obj:seen":
+        return "location"
     # at / in / on / near / around ...
     if stationary:
         return "location"

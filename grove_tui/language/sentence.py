@@ -81,7 +81,14 @@ class Sentence:
         """Whether the parser found no verb in word i's sentence: the small model tags some verbs as
         nouns when nothing else in the sentence is one ("a visitor sips coffee", "Mum and Dad nap")."""
         sentence = self.w[i].sentence
-        return not any(w.pos in ("VERB", "AUX") for w in self.w if w.sentence == sentence)
+        # a person word the parser took for the verb is no verb ("Grandma and grandpa nap": "grandpa")
+        return not any(w.pos in ("VERB", "AUX") and lemma(self.low[k]) not in lx.PERSON_NOUNS
+                       for k, w in enumerate(self.w) if w.sentence == sentence)
+
+    def is_verb(self, i: int) -> bool:
+        """A verb by the parser's tag, or, in a sentence where the parser found none, a form of a
+        verb the lexicon knows ("a fire alarm empties the pharmacy": the small model's noun)."""
+        return self.w[i].pos in ("VERB", "AUX") or (verb_lemma(self.low[i]) != self.low[i] and self.verbless(i))
 
     def after_determiner(self, i: int) -> bool:
         return i > 0 and self.low[i - 1] in ("the", "a", "an", "their", "its", "his", "her", "our", "my", "this", "that")

@@ -6,7 +6,7 @@
 resolved against the lexicon's verbs, so a suffix rule never invents a word the lexicon does not
 know ("waiting" stays "waiting" when asked as a noun for a place name, "wait" as a verb).
 Sentence parsing (spaCy) is in language/parser.py; this module is plain Python so the world index
-and the older callers need no model.
+needs no model.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import re
 from functools import lru_cache
 
 from grove_tui.language.lexicon import (EVACUATION_PHRASES, HUMAN_SUBJECT_VERBS, INTENT_VERBS, LEADING_VERBS,
-                                        NUMBER_WORDS, PERSON_NOUNS, ROBOT_PHRASES, ROBOT_VERBS, STOPWORDS, UNITS,
+                                        PERSON_NOUNS, ROBOT_PHRASES, ROBOT_VERBS, STOPWORDS, UNITS,
                                         URGENT_EXIT_PHRASES, ZONE_EMPTYING_VERBS)
 
 _IRREGULAR_NOUNS = {
@@ -102,16 +102,6 @@ _WORD = re.compile(r"[a-z0-9]+(?:[,'][0-9]{3})*")
 def words(text: str) -> list[str]:
     """Lowercased words and numbers of a text; hyphens split ("check-in" -> "check", "in")."""
     return _WORD.findall(text.lower().replace("-", " "))
-
-
-def semantic_tokens(text: str) -> list[str]:
-    """Lowercased, lemmatised content words, in order, without stopwords or numbers."""
-    out: list[str] = []
-    for w in words(text):
-        if w in STOPWORDS or w.isdigit() or w in NUMBER_WORDS or "," in w:
-            continue
-        out.append(lemma(w))
-    return out
 
 
 def name_tokens(text: str) -> list[str]:

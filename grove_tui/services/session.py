@@ -166,10 +166,14 @@ class LoadingProgress:
     later_seconds: float
 
 
-def _warm_reader() -> None:
+def _warm_reader(world: World | None = None) -> None:
+    """spaCy, and with a world the meaning model and the world's place vectors (language/meaning.py)."""
     from grove_tui.language import parser
+    from grove_tui.language.places import place_index
 
     parser.load()
+    if world is not None:
+        place_index(world).warm_meaning()
 
 
 @dataclass(frozen=True)
@@ -506,7 +510,8 @@ class GroveSession:
         steps: list[tuple[str, str, str, Callable[[], Any]]] = [
             ("models", "models", "loading the models", self.load_models),
             ("retrieval", "retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
-            ("reader", "reader", "loading the English reader", _warm_reader),
+            (f"reader:{world}" if world is not None else "reader", "reader", "loading the English reader",
+             lambda: _warm_reader(self.load_world(world) if world is not None else None)),
         ]
         if world is not None and preset is not None:
             steps.append((f"planner:{world}:{preset}", "planner", f"preparing {world}'s map and planner",

@@ -177,6 +177,15 @@ def test_converse_needs_a_conversation_event_with_the_partners(clinic):
     assert check(clinic, claim, still(), talked).status == HOLDS
     with_strangers = [SimEvent(8.0, 1, "conversation_start", "1,5"), SimEvent(8.0, 2, "conversation_start", "2,6")]
     assert check(clinic, claim, still(), with_strangers).status == FAILS
+    # a circle that started without its last arrival (the simulation's patience) is one circle once
+    # it joins: everyone talked with everyone
+    three = Claim("converse", "talk together", "circle", partners=(1, 2, 3))
+    late = [SimEvent(60.0, 1, "conversation_start", "1,2"), SimEvent(60.0, 2, "conversation_start", "1,2"),
+            SimEvent(75.0, 3, "conversation_start", "1,2,3")]
+    held = check(clinic, three, still(3), late, members=(1, 2, 3))
+    assert held.status == HOLDS and "3/3 talked" in held.evidence
+    never = late[:2]
+    assert check(clinic, three, still(3), never, members=(1, 2, 3)).status == FAILS
 
 
 def test_evacuate_counts_who_is_out_and_through_which_exit(clinic):

@@ -70,6 +70,8 @@ CASES = [
     ("eval", ["eval", "SUITE", "--out", "OUT"], 2),
     ("open", ["open", "MISSING"], 2),
     ("open", ["open", "BUNDLE"], 2),
+    ("refine", ["refine", "MISSING", "--prompt", "add a cleaner", "--out", "OUT"], 2),
+    ("refine", ["refine", "BUNDLE", "--prompt", "add a cleaner", "--out", "OUT"], 2),
     ("understanding", ["understanding", "MISSING", "--out", "OUT"], 2),
     ("understanding", ["understanding", "CASES", "--out", "OUT"], 2),
     ("import", ["import", "hunav", "MISSING", "--out", "OUT"], 2),

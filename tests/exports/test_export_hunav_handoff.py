@@ -25,7 +25,7 @@ from grove_tui.generation.planning import plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
-from grove_tui.language.quantities import extract_quantities
+from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
 from grove_tui.scenario.bundle import write_bundle
 from grove_tui.scenario.model import Scenario
@@ -36,8 +36,9 @@ pytest.importorskip("behaviortreepy")
 def _bundle(world, preset_name, prompt, groups, out, seed=0):
     preset = load_preset(preset_name)
     grid = build_grid(world)
-    selection = select_rois(world, preset, prompt)
-    post = postprocess(world, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed, prompt,
+    reading = read_prompt(prompt, world, seed=seed)
+    selection = select_rois(world, preset, reading)
+    post = postprocess(world, grid, preset, Draft(tuple(groups)), selection, seed, reading,
                        ("Sequence", "GoTo", "Queue", "FollowVelocityField", "Wander", "Wait"))
     op = plan_operational(world, grid, preset, post, seed)
     scenario = Scenario(world=str(world.source), preset=preset.name, prompt=prompt, seed=seed, models={"bt": "hand"},

@@ -110,7 +110,7 @@ def _box_polygon(pose, size, grow=0.0, grow_along=0.0):
                     for a, b in ((-half_l, -half_w), (half_l, -half_w), (half_l, half_w), (-half_l, half_w))])
 
 
-@pytest.mark.parametrize("which", ["exported", "evacuation"])
+@pytest.mark.parametrize("which", ["hospital_export", "evacuation_export"])
 def test_nav2_map_cells_are_the_worlds_boxes_not_inflated(which, request):
     exported = request.getfixturevalue(which)
     description, occupied = _map(exported)
@@ -147,7 +147,7 @@ def test_nav2_map_cells_are_the_worlds_boxes_not_inflated(which, request):
         assert not occupied[row, col], door.name
 
 
-@pytest.mark.parametrize("which", ["exported", "evacuation"])
+@pytest.mark.parametrize("which", ["hospital_export", "evacuation_export"])
 def test_world_and_map_span_one_extent_that_covers_every_goal_and_pose(which, request):
     exported = request.getfixturevalue(which)
     description, occupied = _map(exported)

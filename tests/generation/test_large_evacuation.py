@@ -13,7 +13,6 @@ from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.postprocess import SPAWN_SPACING, FreeSpace, check_population, postprocess
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
-from grove_tui.language.quantities import extract_quantities
 from grove_tui.language.reading import read_prompt
 from grove_tui.limits import MAX_GROUP_COUNT
 from grove_tui.navigation.grid import build_grid
@@ -31,12 +30,11 @@ def generate(hospital, hospital_grid, prompt, count, spawn="entrance_lobby"):
     """The post-processing stage as the pipeline runs it: the reading, the RoI selection, a draft."""
     preset = load_preset("emergency")
     reading = read_prompt(prompt, hospital)
-    selection = select_rois(hospital, preset, prompt, reading=reading)
-    quantities = extract_quantities(prompt)
-    check_population(hospital, hospital_grid, preset, selection, quantities)
+    selection = select_rois(hospital, preset, reading)
+    check_population(hospital, hospital_grid, preset, selection, reading)
     draft = Draft((DraftGroup("people", count, spawn, LEAVE),))
-    return postprocess(hospital, hospital_grid, preset, draft, quantities, selection, 0, prompt,
-                       ("Sequence", "FollowVelocityField", "JoinGroup", "Wait"), reading=reading)
+    return postprocess(hospital, hospital_grid, preset, draft, selection, 0, reading,
+                       ("Sequence", "FollowVelocityField", "JoinGroup", "Wait"))
 
 
 def test_the_emergency_preset_allows_the_documented_limit():

@@ -16,6 +16,7 @@ from grove_tui.bt.format.xml import check_tree_file
 from grove_tui.scenario.bundle import load_bundle, load_report, write_bundle
 from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
 from grove_tui.generation.presets import PromptError, load_preset
+from grove_tui.language.model import PromptReading
 from grove_tui.simulation.simulation import Simulation
 from grove_tui.world import load_world
 
@@ -82,8 +83,8 @@ def test_bundle_validates_and_reports_every_stage(generated, key):
 @pytest.mark.parametrize("key", list(CASES))
 def test_population_matches_the_stated_count(generated, key):
     _, result, _, _, _ = generated[key]
-    stated = sum(q["count"] for q in result.report["quantities"])
-    assert len(result.scenario.agents) == stated
+    assert len(result.scenario.agents) == result.inputs.reading.total
+    assert PromptReading.from_dict(result.report["reading"]) == result.inputs.reading
 
 
 @pytest.mark.parametrize("key", list(CASES))

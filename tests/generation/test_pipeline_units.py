@@ -7,7 +7,7 @@ import pytest
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.pipeline import STAGES, world_reference
 from grove_tui.generation.presets import load_preset
-from grove_tui.language.quantities import extract_quantities
+from grove_tui.language.reading import read_prompt
 from grove_tui.generation.retrieval import RetrievedNode
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import offered_nodes, prepare_request
@@ -16,10 +16,11 @@ from grove_tui.world import load_world
 
 def request(hospital, retriever, preset_name, prompt):
     preset = load_preset(preset_name)
-    selection = select_rois(hospital, preset, prompt)
+    reading = read_prompt(prompt, hospital)
+    selection = select_rois(hospital, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k) if preset.retrieval_filter else []
-    return preset, selection, prepare_request(preset, selection, retrieved, prompt, extract_quantities(prompt),
-                                              retriever.documents_for, world=hospital, cards_for=retriever.cards_for)
+    return preset, selection, prepare_request(preset, selection, retrieved, reading, retriever.documents_for,
+                                              world=hospital, cards_for=retriever.cards_for)
 
 
 def test_emergency_offers_only_field_following_and_no_social_nodes():
@@ -50,12 +51,14 @@ def test_guided_prompt_puts_the_fixed_system_text_first_and_the_sentence_last(ho
     _, _, other = request(hospital, retriever, "queuing", "Eight visitors line up at the reception desk")
     assert other.messages[0] == system  # identical prefix across prompts: the KV cache is reused
     assert user["content"].index("Places:") < user["content"].index("Nodes:") < user["content"].index(prompt)
-    assert "Groups to write: Ten patients (10)" in user["content"]
+    assert "Groups:\n1. patient x10: queue, location pharmacy_counter" in user["content"]
     assert "- pharmacy (" in user["content"] and "cafeteria" not in user["content"]
     assert req.roi_names == selection.roi_names
-    assert req.max_groups == 1 and req.grammar.startswith("root ::= group\n")  # one stated quantity, one group
+    # one group read, one tree to write (the lean draft: the reading gives its label, count and start)
+    assert req.max_groups == 1 and req.grammar.startswith("root ::= level-1\n")
 
 
+@pytest.mark.slow
 def test_vanilla_prompt_has_the_whole_world_and_every_node(hospital, retriever):
     prompt = "Ten patients queue at the pharmacy counter"
     _, _, guided = request(hospital, retriever, "queuing", prompt)

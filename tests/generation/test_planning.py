@@ -13,14 +13,15 @@ from grove_tui.bt.format.xml import read_tree
 from grove_tui.generation.planning import RobotRequest, goals_from_tree, plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import GenerationError, load_preset
-from grove_tui.language.quantities import extract_quantities
+from grove_tui.language.reading import read_prompt
 from grove_tui.generation.rois import select_rois
 
 
 def plan(clinic, grid, preset_name, prompt, groups, robot=None, seed=0):
     preset = load_preset(preset_name)
-    selection = select_rois(clinic, preset, prompt)
-    post = postprocess(clinic, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed, prompt,
+    reading = read_prompt(prompt, clinic, seed=seed)
+    selection = select_rois(clinic, preset, reading)
+    post = postprocess(clinic, grid, preset, Draft(tuple(groups)), selection, seed, reading,
                        ("Sequence", "GoTo", "Queue", "FollowVelocityField", "Wait", "JoinGroup"))
     return post, plan_operational(clinic, grid, preset, post, seed, robot)
 

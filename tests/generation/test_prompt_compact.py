@@ -15,7 +15,6 @@ import pytest
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import written_ports
 from grove_tui.generation.node_docs import node_card, node_signature
-from grove_tui.generation.pipeline import quantities_from_reading
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.synthesis import fixed_system_message, pinned_cards, prepare_request
@@ -42,11 +41,10 @@ def _places(world):
 def build(world, preset_name, retriever, prompt):
     preset = load_preset(preset_name)
     reading = read_prompt(prompt, world, seed=0)
-    selection = select_rois(world, preset, prompt, reading=reading)
+    selection = select_rois(world, preset, reading)
     retrieved = retriever.retrieve(prompt, preset.retrieval_filter, k=preset.retrieval_k)
-    request = prepare_request(preset, selection, retrieved, prompt, quantities_from_reading(reading),
-                              retriever.documents_for, reading=reading, world=world, cards_for=retriever.cards_for,
-                              documents_named=retriever.documents_named)
+    request = prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                              cards_for=retriever.cards_for, documents_named=retriever.documents_named)
     return preset, selection, request
 
 
@@ -70,6 +68,7 @@ def test_the_places_block_names_exactly_what_the_draft_may_use(world_name, prese
     assert not re.search(r"\(-?\d+(\.\d+)?,-?\d", user), "coordinates in a guided prompt"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", CASES)
 def test_every_offered_node_has_its_card_and_the_sentence_comes_last(world_name, preset_name, retriever):
     world = load_world(world_name)
@@ -118,6 +117,7 @@ def test_the_system_message_is_fixed_per_world_and_preset_and_differs_between_th
     assert fixed_system_message(load_preset("normal"), hospital, queuing) != a.messages[0]["content"]
 
 
+@pytest.mark.slow
 def test_vanilla_keeps_the_full_documents_and_world(retriever):
     hospital = load_world("hospital")
     _, _, request = build(hospital, "vanilla", retriever, "Ten patients queue at the pharmacy counter")
@@ -145,6 +145,7 @@ def tokenize():
     return lambda text: len(llm.tokenize(text.encode("utf-8"), add_bos=False, special=True))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("world_name,preset_name", [(w, p) for w in list_worlds() for p in ONE_GROUP])
 def test_a_one_group_sentence_writes_one_tree_and_prefills_a_short_tail(world_name, preset_name, retriever, tokenize):
     """Issue 33: the reading fixes label, count and start, so the grammar asks for exactly one tree; the
@@ -160,6 +161,7 @@ def test_a_one_group_sentence_writes_one_tree_and_prefills_a_short_tail(world_na
     assert tokenize(user) + 12 <= 150, (tokenize(user), user)
 
 
+@pytest.mark.slow
 def test_the_lean_draft_parses_into_the_reading_groups(retriever):
     from grove_tui.generation.draft import parse_trees
 

@@ -152,10 +152,10 @@ def test_structured_counts_become_parties(hospital):
 def test_postprocessed_scenario_grounds_every_group(hospital, coarse_grid, prompt):
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
-    selection = select_rois(hospital, preset, prompt, reading=reading)
+    selection = select_rois(hospital, preset, reading)
     # The weakest draft: one idle group with a node name for a label.
     draft = Draft((DraftGroup("FollowAgent", 1, "entrance_lobby", DraftNode("IsRobotVisible", {})),))
-    post = postprocess(hospital, coarse_grid, preset, draft, [], selection, 0, prompt, ("GoTo", "Queue"), reading=reading)
+    post = postprocess(hospital, coarse_grid, preset, draft, selection, 0, reading, ("GoTo", "Queue"))
     assert all(not is_idle(g.tree) for g in post.groups)
     assert all(g.label not in ("FollowAgent",) for g in post.groups)
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
@@ -174,9 +174,9 @@ def test_the_report_says_what_was_not_honoured(hospital, coarse_grid):
     prompt = "Six visitors walk to the cafeteria."
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
-    selection = select_rois(hospital, preset, prompt, reading=reading)
+    selection = select_rois(hospital, preset, reading)
     post = postprocess(hospital, coarse_grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
-                       [], selection, 0, prompt, ("GoTo",), reading=reading)
+                       selection, 0, reading, ("GoTo",))
     post.groups[0].tree = goto("pharmacy")  # as if something downstream had sent them elsewhere
     post.groups[0].count = 4
     report = grounding_report(reading, post.groups, post.agents, hospital)
@@ -194,18 +194,18 @@ def test_wandering_at_the_destination_is_kept_after_walking_there(hospital):
     assert groups[0].added == ["wanders in ward_a for 120 s afterwards"]
 
 
-def test_without_a_group_read_from_the_sentence_the_report_says_the_groups_are_guessed(hospital, coarse_grid):
+def test_a_sentence_that_names_nobody_is_one_group_the_model_fills(hospital, coarse_grid):
     prompt = "The cafeteria gets busy around noon."
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
-    assert reading.groups == ()
-    selection = select_rois(hospital, preset, prompt, reading=reading)
+    assert len(reading.groups) == 1 and reading.groups[0].confidence_of("group").unsure
+    selection = select_rois(hospital, preset, reading)
     draft = Draft((DraftGroup("diners", 5, "cafeteria", goto("cafeteria")),))
-    post = postprocess(hospital, coarse_grid, preset, draft, [], selection, 0, prompt, ("GoTo",), reading=reading)
-    assert any("no group of people" in note for note in post.notes)
+    post = postprocess(hospital, coarse_grid, preset, draft, selection, 0, reading, ("GoTo",))
+    assert [g.tree for g in post.groups] == [goto("cafeteria")]  # the model's tree: nothing contradicts it
+    assert post.groups[0].count == reading.groups[0].count.value
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
-    assert report.groups == () and not report.ok
-    assert any("the model's guess" in line for line in report.unhonoured)
+    assert len(report.groups) == 1
 
 
 def test_the_report_carries_the_place_spelling_corrections(hospital, coarse_grid):
@@ -213,9 +213,9 @@ def test_the_report_carries_the_place_spelling_corrections(hospital, coarse_grid
     preset = load_preset("normal")
     reading = read_prompt(prompt, hospital)
     assert reading.groups[0].destination == "cafeteria" and reading.corrections
-    selection = select_rois(hospital, preset, prompt, reading=reading)
+    selection = select_rois(hospital, preset, reading)
     post = postprocess(hospital, coarse_grid, preset, Draft((DraftGroup("visitors", 6, "entrance_lobby", goto("cafeteria")),)),
-                       [], selection, 0, prompt, ("GoTo",), reading=reading)
+                       selection, 0, reading, ("GoTo",))
     report = grounding_report(reading, post.groups, post.agents, hospital)
     assert report.corrections == reading.corrections and report.status == "planned", report.lines()
     assert any(line.startswith("~ correction: read 'cafetaria'") for line in report.lines())
@@ -229,27 +229,25 @@ def test_walking_out_with_no_destination_is_honoured_by_the_evacuation_field(hos
     preset = load_preset("emergency")
     reading = read_prompt(prompt, hospital)
     assert reading.groups[0].intent == "walk" and not reading.groups[0].destination
-    selection = select_rois(hospital, preset, prompt, reading=reading)
+    selection = select_rois(hospital, preset, reading)
     draft = Draft((DraftGroup("visitors", 4, "cafeteria", DraftNode("FollowVelocityField", {})),))
-    post = postprocess(hospital, coarse_grid, preset, draft, [], selection, 0, prompt, ("FollowVelocityField",),
-                       reading=reading)
+    post = postprocess(hospital, coarse_grid, preset, draft, selection, 0, reading, ("FollowVelocityField",))
     assert any(n.node == "FollowVelocityField" for n in post.groups[0].tree.walk())
     report = grounding_report(reading, post.groups, post.agents, hospital, post.notes)
     (evacuate,) = [c for c in report.groups[0].claims if c.kind == "evacuate"]
     assert evacuate.status == "planned", report.lines()
 
 
-def test_the_emergency_field_is_for_those_the_sentence_evacuates(hospital, grid):
+def test_the_emergency_field_is_for_those_the_sentence_evacuates(hospital, coarse_grid):
     # A guard who waits by the reception desk during the drill waits: the preset does not evacuate him.
     prompt = "Twenty people in the cafeteria evacuate while a guard waits by the reception desk."
     preset = load_preset("emergency")
     reading = read_prompt(prompt, hospital)
     assert [g.intent for g in reading.groups] == ["evacuate", "wait"]
-    selection = select_rois(hospital, preset, prompt, reading=reading)
+    selection = select_rois(hospital, preset, reading)
     draft = Draft((DraftGroup("people", 20, "cafeteria", DraftNode("FollowVelocityField", {})),
                    DraftGroup("guard", 1, "cafeteria", DraftNode("FollowVelocityField", {}))))
-    post = postprocess(hospital, grid, preset, draft, [], selection, 0, prompt, ("FollowVelocityField", "Wait"),
-                       reading=reading)
+    post = postprocess(hospital, coarse_grid, preset, draft, selection, 0, reading, ("FollowVelocityField", "Wait"))
     guard = post.groups[1]
     assert "FollowVelocityField" not in {n.node for n in guard.tree.walk()} and guard.field_id is None
     assert all(a.field_id is None for a in post.agents if a.group_index == guard.index)

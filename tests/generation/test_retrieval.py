@@ -69,6 +69,7 @@ def test_labelled_set_is_broad_and_its_labels_are_retrievable(fresh_retriever: N
             assert need & allowed, f"{case.prompt!r}: {sorted(need)} cannot be retrieved under {case.preset}"
 
 
+@pytest.mark.slow
 def test_results_are_sorted_and_typed(fresh_retriever: NodeRetriever):
     results = fresh_retriever.retrieve("ten patients queue at the pharmacy", "queuing", k=8)
     assert len(results) == 8
@@ -142,6 +143,7 @@ def test_documents_for_returns_the_model_facing_text_in_order(fresh_retriever: N
         fresh_retriever.documents_for(["Teleport"])
 
 
+@pytest.mark.slow
 def test_index_uses_our_registered_embedding_function(fresh_retriever: NodeRetriever):
     fresh_retriever.ensure_index()
     configuration = fresh_retriever._collection.configuration
@@ -216,6 +218,7 @@ def test_a_foreign_collection_is_rebuilt_with_a_warning(small_node_db: Path, tmp
     assert retriever.retrieve("patients queue", "queuing", k=1)[0].name in ("Queue", "queue_at_counter")
 
 
+@pytest.mark.slow
 def test_an_index_dir_holding_other_files_is_never_deleted(small_node_db: Path, tmp_path: Path):
     index = tmp_path / "not_an_index"
     index.mkdir()

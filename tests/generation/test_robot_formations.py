@@ -22,7 +22,7 @@ from grove_tui.generation.planning import RobotRequest, plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
-from grove_tui.language.quantities import extract_quantities
+from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.scenario.bundle import load_bundle, write_bundle
@@ -37,8 +37,9 @@ CLEARANCE = RobotSpec((0.0, 0.0), (0.0, 0.0)).radius + PASSING_MARGIN - 0.1
 
 def post_processed(clinic, grid, preset_name, prompt, group):
     preset = load_preset(preset_name)
-    selection = select_rois(clinic, preset, prompt)
-    return preset, postprocess(clinic, grid, preset, Draft((group,)), extract_quantities(prompt), selection, 0, prompt,
+    reading = read_prompt(prompt, clinic)
+    selection = select_rois(clinic, preset, reading)
+    return preset, postprocess(clinic, grid, preset, Draft((group,)), selection, 0, reading,
                                ("Sequence", "GoTo", "Queue", "Converse"))
 
 

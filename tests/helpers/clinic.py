@@ -53,7 +53,7 @@ from grove_tui.generation.planning import plan_operational  # noqa: E402
 from grove_tui.generation.postprocess import postprocess  # noqa: E402
 from grove_tui.generation.presets import load_preset  # noqa: E402
 from grove_tui.generation.rois import select_rois  # noqa: E402
-from grove_tui.language.quantities import extract_quantities  # noqa: E402
+from grove_tui.language.reading import read_prompt  # noqa: E402
 from grove_tui.navigation.grid import build_grid  # noqa: E402
 from grove_tui.scenario.model import Scenario  # noqa: E402
 
@@ -61,8 +61,9 @@ from grove_tui.scenario.model import Scenario  # noqa: E402
 def make_result(world, preset_name, prompt, groups, seed=0):
     preset = load_preset(preset_name)
     grid = build_grid(world)
-    selection = select_rois(world, preset, prompt)
-    post = postprocess(world, grid, preset, Draft(tuple(groups)), extract_quantities(prompt), selection, seed, prompt,
+    reading = read_prompt(prompt, world, seed=seed)
+    selection = select_rois(world, preset, reading)
+    post = postprocess(world, grid, preset, Draft(tuple(groups)), selection, seed, reading,
                        ("Sequence", "GoTo", "Queue", "FollowVelocityField"))
     op = plan_operational(world, grid, preset, post, seed)
     scenario = Scenario(world=str(world.source), preset=preset.name, prompt=prompt, seed=seed, models={"bt": "hand"},

@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
-from grove_tui.generation.pipeline import GenerationPipeline, PlanInputs, StageClock, quantities_from_reading
+from grove_tui.generation.pipeline import GenerationPipeline, PlanInputs, StageClock
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
 from grove_tui.language.reading import read_prompt
@@ -34,9 +34,8 @@ def hand_result(world: Any, preset_name: str, prompt: str, groups: list[DraftGro
     preset = load_preset(preset_name)
     pipeline = GenerationPipeline(world, preset, None, None, None)
     reading = reading or read_prompt(prompt, world, seed=seed)
-    selection = select_rois(world, preset, prompt, pipeline.matcher, reading=reading)
-    inputs = PlanInputs(prompt, Draft(tuple(groups)), tuple(quantities_from_reading(reading)), selection, NODES,
-                        reading)
+    selection = select_rois(world, preset, reading)
+    inputs = PlanInputs(Draft(tuple(groups)), selection, NODES, reading)
     post, plan = pipeline._plan_stages(inputs, seed, StageClock(lambda event: None, None, {}), None)
     return pipeline._assemble(inputs, seed, {"bt": "hand"}, post, plan, {"stages": {}, "prompt": prompt})
 

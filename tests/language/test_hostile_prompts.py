@@ -9,26 +9,24 @@ import sys
 import pytest
 
 from grove_tui.errors import PromptError
-from grove_tui.generation.postprocess import check_population, check_stated_counts
+from grove_tui.generation.postprocess import check_population
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
-from grove_tui.language.quantities import extract_quantities
+from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
 from grove_tui.world import load_world
 
 
 def refuse(prompt: str, preset: str = "emergency") -> str:
-    """The checks GenerationPipeline.run makes before any model runs, in its order."""
-    from grove_tui.generation.pipeline import quantities_from_reading
-    from grove_tui.language.reading import read_prompt
-
+    """The checks GenerationPipeline.run makes before any model runs, in its order: the reading's
+    problems, then the population against the selected places and the preset."""
     world = load_world("hospital")
     with pytest.raises(PromptError) as caught:
-        check_stated_counts(prompt, extract_quantities(prompt))
         reading = read_prompt(prompt, world)
+        if reading.problems:
+            raise PromptError(reading.problems[0])
         check_population(world, build_grid(world, 0.1), load_preset(preset),
-                         select_rois(world, load_preset(preset), prompt, reading=reading),
-                         quantities_from_reading(reading))
+                         select_rois(world, load_preset(preset), reading), reading)
     assert caught.value.exit_code == 2
     return str(caught.value)
 
@@ -40,16 +38,27 @@ def refuse(prompt: str, preset: str = "emergency") -> str:
     ("10 million people evacuate the cafeteria", "10000000 people"),
     ("🔥🔥🔥", "no words to read"),
     ("zero people evacuate the cafeteria", "'zero people' asks for nobody"),
+    ("Nobody is in the cafeteria.", "nobody is there"),
 ])
 def test_refused_with_a_reason(prompt, expected):
     assert expected in refuse(prompt)
 
 
-@pytest.mark.parametrize("prompt, count", [("3-5 people walk to the pharmacy", 3),
-                                           ("twenty-five patients queue at the pharmacy", 25),
-                                           ("ten million visitors walk in", 10_000_000)])
+@pytest.mark.parametrize("prompt, count", [("3-5 people walk to the pharmacy", (3, 5)),
+                                           ("twenty-five patients queue at the pharmacy", (25, 25)),
+                                           ("ten million visitors walk in", (10_000_000, 10_000_000))])
 def test_ranges_hyphens_and_large_scales_are_read(prompt, count):
-    assert extract_quantities(prompt)[0].count == count
+    g = read_prompt(prompt, load_world("hospital")).groups[0]
+    assert (g.count.low, g.count.high) == count
+
+
+@pytest.mark.parametrize("prompt", ["Ｔｅｎ ｐａｔｉｅｎｔｓ ｗａｌｋ ｔｏ ｔｈｅ ｐｈａｒｍａｃｙ", "👨‍👩‍👧‍👦 a family walks to the pharmacy",
+                                    "2.5 people walk to the pharmacy"])
+def test_full_width_letters_emoji_and_fractions_are_read_not_refused(prompt):
+    world = load_world("hospital")
+    reading = read_prompt(prompt, world)
+    assert not reading.problems and reading.groups[0].destination == "pharmacy"
+    assert 2 <= reading.groups[0].count.value <= 10
 
 
 def test_stdout_on_dev_full_is_one_line_not_a_traceback():

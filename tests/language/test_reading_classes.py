@@ -255,8 +255,15 @@ def test_the_subject_of_a_verb_only_people_do_is_a_person(worlds, world, prompt,
     assert one(read(worlds, world, prompt)).label == label
 
 
+def nobody_named(reading):
+    """A sentence that names no people is one group the model fills, marked as assumed."""
+    (group,) = reading.groups
+    conf = group.confidence_of("group")
+    return conf is not None and conf.unsure and group.label == "person"
+
+
 def test_a_thing_doing_a_thing_is_nobody(worlds):
-    assert read(worlds, "office", "The new printer whirs in the open office.").groups == ()
+    assert nobody_named(read(worlds, "office", "The new printer whirs in the open office."))
 
 
 @pytest.mark.parametrize("prompt, counts", [
@@ -334,7 +341,8 @@ def test_a_zone_that_empties_is_where_everyone_leaves_from(worlds, world, prompt
 def test_clearing_an_object_or_a_clear_room_is_no_evacuation(worlds):
     group = one(read(worlds, "office", "A cleaner clears the tables in the kitchen."))
     assert group.intent != "evacuate"
-    assert read(worlds, "office", "The kitchen is clear and quiet.").groups == ()
+    reading = read(worlds, "office", "The kitchen is clear and quiet.")
+    assert nobody_named(reading) and reading.groups[0].intent != "evacuate"
 
 
 @pytest.mark.parametrize("world, prompt, rest, exception", [

@@ -109,3 +109,120 @@ def test_an_adverb_of_place_is_neither_a_place_nor_a_noun(worlds, world, prompt,
 def test_arriving_by_an_entrance_is_coming_in_there(worlds):
     g = read(worlds, "airport", "At dawn twelve cleaners arrive by the side entrance and go to the toilets.")[0]
     assert (g.start, g.destination) == ("east_entrance", "toilets")
+
+
+@pytest.mark.parametrize("world,prompt,who,intent,route", [
+    ("hospital", "The robot escorts an elderly visitor from the lobby to ward B.", "an elderly visitor", "robot",
+     ("entrance_lobby", "ward_b")),
+    ("hospital", "The robot follows a nurse from the pharmacy to radiology.", "a nurse", "walk",
+     ("pharmacy", "radiology")),
+])
+def test_people_the_robot_takes_along_or_follows_are_a_group_on_its_route(worlds, world, prompt, who, intent, route):
+    g, = read(worlds, world, prompt)
+    assert (g.who, g.intent, (g.start, g.destination)) == (who, intent, route) and g.count.value == 1
+
+
+def test_people_the_robot_passes_are_a_group_where_they_are(worlds):
+    g, = read(worlds, "hospital", "A robot drives past three doctors chatting in the main corridor.")
+    assert (g.count.value, g.intent, g.location) == (3, "converse", "main_corridor")
+
+
+def test_a_collective_before_a_collective_is_one_group_of_its_kind(worlds):
+    g, = read(worlds, "station", "A tour group walks from the ticket hall to platform 1.")
+    assert g.count.kind == "implied" and (g.start, g.destination) == ("ticket_hall", "platform_1")
+    second = read(worlds, "hospital", "Ten patients walk to the pharmacy while a family queues at the reception desk.")
+    assert second[1].intent == "queue" and second[1].count.kind == "implied"
+
+
+def test_a_place_after_then_is_where_they_stay_and_the_one_before_where_they_start(worlds):
+    g, = read(worlds, "hospital", "A visitor gets a coffee at the cafeteria, then waits in the main waiting room.")
+    assert (g.intent, g.start, g.location) == ("wait", "cafeteria", "main_waiting_room")
+
+
+def test_hanging_around_is_waiting_there(worlds):
+    g, = read(worlds, "hospital", "Two teenagers hang around near the pharmacy.")
+    assert (g.count.value, g.intent, g.location) == (2, "wait", "pharmacy")
+
+
+@pytest.mark.parametrize("world,prompt,via,destination", [
+    ("hospital", "Two visitors go to the pharmacy, then the cafeteria, and finally the main entrance.",
+     ("pharmacy", "cafeteria"), "main_entrance"),
+    ("hospital", "A nurse walks to ward A and then radiology.", ("ward_a",), "radiology"),
+    ("office", "An intern walks to the kitchen and then the boardroom.", ("kitchen",), "boardroom"),
+])
+def test_places_said_one_after_another_are_a_route(worlds, world, prompt, via, destination):
+    g, = read(worlds, world, prompt)
+    assert (g.via, g.destination) == (via, destination)
+
+
+def test_a_second_group_after_and_is_not_a_stop_of_the_first(worlds):
+    first, second = read(worlds, "hospital", "Five visitors walk to the cafeteria and the nurses wait in the pharmacy.")
+    assert (first.destination, first.via, second.location) == ("cafeteria", (), "pharmacy")
+
+
+@pytest.mark.parametrize("world,prompt,intent", [
+    ("hospital", "Four nurses smell smoke in ward A.", "evacuate"),
+    ("office", "The interns in the kitchen hear the fire alarm.", "evacuate"),
+    ("hospital", "Two guards hear the alarm and wait at the reception desk.", "wait"),
+])
+def test_noticing_an_alarm_and_doing_nothing_else_is_leaving(worlds, world, prompt, intent):
+    g, = read(worlds, world, prompt)
+    assert g.intent == intent
+
+
+@pytest.mark.parametrize("world,prompt,who,location", [
+    ("residential", "Dad reads in the living room while mum cooks in the kitchen.", "mum", "kitchen"),
+    ("residential", "Grandma knits on the sofa while grandpa cooks in the kitchen.", "grandpa", "kitchen"),
+])
+def test_a_family_name_then_an_s_word_is_one_person_and_a_verb(worlds, world, prompt, who, location):
+    groups = read(worlds, world, prompt)
+    assert (groups[-1].who, groups[-1].count.value, groups[-1].location) == (who, 1, location)
+
+
+def test_a_number_before_the_is_a_time_not_a_count(worlds):
+    g, = read(worlds, "hospital", "At nine the porters come in through the main entrance and go to ward B.")
+    assert g.count.kind == "vague" and (g.start, g.destination) == ("main_entrance", "ward_b")
+
+
+def test_coming_in_through_a_door_starts_there(worlds):
+    g, = read(worlds, "hospital", "Two porters walk in through the main entrance and go to ward A.")
+    assert (g.start, g.destination) == ("main_entrance", "ward_a")
+
+
+@pytest.mark.parametrize("prompt,start,location", [
+    ("The director hurries from her office to the café.", "director_office", None),
+    ("The curator chats with a guard in his office.", None, "curator_office"),
+])
+def test_a_person_s_own_room_is_the_one_named_after_their_kind(worlds, prompt, start, location):
+    g = read(worlds, "museum", prompt)[0]
+    assert (g.start, g.location) == (start, location)
+
+
+def test_two_family_names_joined_by_and_are_two_people_though_the_parser_calls_one_a_verb(worlds):
+    groups = read(worlds, "residential", "Grandpa and grandma read in the living room.")
+    assert [(g.who.lower(), g.count.value, g.location) for g in groups] == [
+        ("grandpa", 1, "living_room"), ("grandma", 1, "living_room")]
+
+
+@pytest.mark.parametrize("prompt,intent,location", [
+    ("Dad watches the television.", "wait", "tv"),
+    ("Two kids watch the robot in the hallway.", "robot", "hallway"),
+])
+def test_what_people_watch_is_where_they_are_unless_it_is_the_robot(worlds, prompt, intent, location):
+    g, = read(worlds, "residential", prompt)
+    assert (g.intent, g.location) == (intent, location)
+
+
+def test_what_people_watch_gives_way_to_the_room_they_are_in(worlds):
+    g, = read(worlds, "residential", "Three kids watch the telly in the living room.")
+    assert g.location == "living_room"
+
+
+@pytest.mark.parametrize("prompt,location", [
+    ("The nanny sits on the parents' bed.", "double_bed"),
+    ("A toddler naps on the kids' bed.", "single_bed"),
+    ("Mum rests on her bed.", "double_bed"),
+])
+def test_a_thing_of_someone_s_is_the_one_in_their_room(worlds, prompt, location):
+    g, = read(worlds, "residential", prompt)
+    assert g.location == location

@@ -25,6 +25,7 @@ def claims(report: GroundingReport, who: str) -> dict[str, object]:
     return {c.kind: c for c in found.claims}
 
 
+@pytest.mark.slow
 def test_a_walker_the_model_sent_to_queue_walks_and_the_run_shows_it(tmp_path, session):
     # "✓ behavior walk -> GoTo, Queue": the nurse first queued at the pharmacy counter, then walked.
     queue = node("Sequence", node("GoTo", target="pharmacy_counter"), node("Queue", service_point="pharmacy_counter"))

@@ -10,7 +10,7 @@ from grove_tui.generation.planning import plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.rois import select_rois
-from grove_tui.language.quantities import extract_quantities
+from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.simulation.simulation import Simulation
@@ -37,8 +37,9 @@ def evacuation(prompt: str, count: int):
     preset = load_preset("emergency")
     # The small model names one exit for everyone; the prompt allows both.
     draft = Draft((DraftGroup("people", count, "hall", DraftNode("FollowVelocityField", {"exit": "east_exit"})),))
-    post = postprocess(world, grid, preset, draft, extract_quantities(prompt), select_rois(world, preset, prompt), 0,
-                       prompt, ("Sequence", "FollowVelocityField"))
+    reading = read_prompt(prompt, world)
+    post = postprocess(world, grid, preset, draft, select_rois(world, preset, reading), 0, reading,
+                       ("Sequence", "FollowVelocityField"))
     op = plan_operational(world, grid, preset, post, 0)
     return world, grid, post, op
 

@@ -123,6 +123,17 @@ def test_conversation_of_four_forms_a_circle_facing_the_centre(hall):
     assert sim.time - started == pytest.approx(10.0, abs=0.3)
     assert all(result == "done" for result in sim.tree_result)
 
+def test_friends_walking_together_to_a_circle_each_take_their_own_spot(hall):
+    # Three friends arrive as one walking group (group forces hold them together), along waypoints
+    # planned to the circle, at spots on every side of it: the circle must start, not stall with
+    # everyone jostling for the last waypoint and pulling each other back from their spots.
+    for waypoint in ("8.0,7.0", "10,4.2"):
+        for starts in ([(3, 2.0), (3.6, 2.5), (3, 3.0)], [(17, 10.0), (16.4, 10.5), (17, 9.5)],
+                       [(10, 1.5), (10.6, 1.8), (9.4, 1.8)]):
+            agents = [agent(i + 1, starts[i], group=2) for i in range(3)]
+            body = f'<Converse target="hall" waypoints="{waypoint}" duration="10"/>'  # centre (10, 6)
+            sim = simulate(hall, agents, [body] * 3)
+            assert run_until(sim, lambda: all(s == "talking" for s in sim.frame().status), 40.0), (waypoint, starts)
 
 # ---- group -------------------------------------------------------------------------------------
 
@@ -148,6 +159,21 @@ def test_group_walks_together_to_the_door(hall):
     assert max(arrival.values()) - min(arrival.values()) < 4.0
     door = np.array([20.0, 6.0])
     assert np.all(np.hypot(*(sim.crowd.pos[:4] - door).T) < 1.6)
+
+
+def test_a_walker_stuck_behind_an_obstacle_walks_round_it(hall):
+    # A stale route straight through the fountain (as after being pushed off the planned line): the
+    # social forces hold the walker against it for ever unless it replans from where it stands.
+    sim = simulate(hall, [agent(1, (10, 7.5))], ['<GoTo target="hall" x="10" y="11.5" waypoints="10,11.5" tolerance="0.3"/>'])
+    assert run_until(sim, lambda: sim.tree_result[0] == "done", 40.0), sim.crowd.pos[0]
+
+
+def test_a_walking_group_with_a_member_stuck_behind_an_obstacle_arrives(hall):
+    bodies = [f'<Sequence><JoinGroup/><GoTo target="hall" x="{x}" y="11" waypoints="{wp}" tolerance="0.3"/></Sequence>'
+              for x, wp in ((17.5, "10,11.5"), (18, "18,11"), (18.5, "18.5,11"))]
+    group = [agent(1, (10, 7.5), group=4), agent(2, (8.2, 11.3), group=4), agent(3, (7.4, 11.3), group=4)]
+    sim = simulate(hall, group, bodies)
+    assert run_until(sim, lambda: all(r == "done" for r in sim.tree_result), 60.0), sim.crowd.pos[:3]
 
 
 # ---- reactions to the robot --------------------------------------------------------------------

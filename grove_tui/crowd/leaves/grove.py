@@ -24,6 +24,10 @@ DOOR_PASS = 1.5  # metres beyond the door line an evacuee walks to; it is counte
 HUNAV_GOAL_TOLERANCE = 0.1  # IsGoalReached: goal radius + 0.1
 STEP_ASIDE = 1.2  # metres a served person steps sideways out of the line
 ASIDE_SPACING = 0.8  # metres between the spots served people step to
+STUCK_AFTER = 5.0  # seconds without STUCK_HEADWAY metres of progress before a walker replans from where it stands
+STUCK_AFTER_MAX = 40.0
+STUCK_HEADWAY = 0.5
+CIRCLE_APPROACH = 2.0  # metres outside a conversation circle's rim at which its members leave their walking group
 GROUP_ID_BASE = 100000  # SFM group ids derived from agent ids, far from the scenario's own
 
 
@@ -50,18 +54,31 @@ class GoTo(AgentStatefulAction):
     """Walks [waypoints..., target]; SUCCESS within tolerance + 0.1 m of the target (HuNavSim's rule).
 
     The injected waypoints were planned from where the previous navigation ended; after an
-    interruption (halt) the agent is somewhere else, so it replans from where it stands.
+    interruption (halt) the agent is somewhere else, so it replans from where it stands. So does an
+    agent that has made no headway for a while: pushed off its line by a crowd or its walking
+    group, it can stand against a wall with its next waypoint straight behind it (social forces have
+    local minima); the checks back off (STUCK_AFTER, doubling) so a jam costs few replans. A member of
+    a walking group that makes no headway walks on alone until it arrives: the group's coherence pulls
+    it straight at the others, through the wall it is stuck behind, and holds them back for it.
     """
 
-    __slots__ = ("target_point", "interrupted", "reach2")
+    __slots__ = ("target_point", "interrupted", "reach2", "check_at", "check_pos", "patience", "left_group")
     target_point: Point  # set by on_start
     interrupted: bool
     reach2: float
+    check_at: float  # when on_running next checks its headway
+    check_pos: Point  # where it stood at the last check
+    patience: float
+    left_group: int  # the SFM group it walked in before it got stuck and walked on alone, else -1
 
     def setup(self) -> None:
         super().setup()
         self.interrupted = False
         self.reach2 = 0.0
+        self.check_at = math.inf
+        self.check_pos = (0.0, 0.0)
+        self.patience = STUCK_AFTER
+        self.left_group = -1
 
     def on_start(self) -> int:
         sim = self.sim
@@ -85,33 +102,60 @@ class GoTo(AgentStatefulAction):
         else:
             route = sim.rejoin(p, waypoints, point)
         _go(sim, self.row, route, tolerance)
+        self.patience = STUCK_AFTER
+        self._watch(p)
         return RUNNING
 
+    def _watch(self, p: Sequence[float]) -> None:
+        self.check_pos = (float(p[0]), float(p[1]))
+        self.check_at = self.sim.clock.now + self.patience
+
     def on_running(self) -> int:
-        p = self.sim.pos[self.row]
+        sim = self.sim
+        p = sim.pos[self.row]
         t = self.target_point
         if (p[0] - t[0]) ** 2 + (p[1] - t[1]) ** 2 <= self.reach2:
             self.interrupted = False
-            self.sim.counters.reached_goals += 1
-            self.sim.event("goal_reached", self.row, str(self.get_input("target") or ""))
+            self._rejoin_group()
+            sim.counters.reached_goals += 1
+            sim.event("goal_reached", self.row, str(self.get_input("target") or ""))
             return SUCCESS
+        if sim.clock.now + 1e-9 >= self.check_at:
+            if math.dist(p, self.check_pos) < STUCK_HEADWAY:
+                # no headway: walk on from where it stands, back onto the route it can see, else a new plan
+                group = int(sim.crowd.group[self.row])
+                if group >= 0:
+                    self.left_group = group
+                    sim.crowd.set_group(self.row, -1)
+                goals = sim.crowd.goals(self.row)
+                _go(sim, self.row, sim.rejoin(p, goals[:-1], t), self.get_input("tolerance"))
+                self.patience = min(2.0 * self.patience, STUCK_AFTER_MAX)
+            else:
+                self.patience = STUCK_AFTER
+            self._watch(p)
         return RUNNING
+
+    def _rejoin_group(self) -> None:
+        if self.left_group >= 0:
+            self.sim.crowd.set_group(self.row, self.left_group)
+            self.left_group = -1
 
     def on_halted(self) -> None:
         self.interrupted = True
+        self._rejoin_group()
         _stand(self.sim, self.row)
 
     def quiet_spec(self) -> QuietSpec | None:
         """(x, y, r2, t_end): poll() holds while the agent is farther than sqrt(r2) from (x, y) and
         the clock is before t_end; lets the simulation check all quiet agents at once in numpy."""
-        return (self.target_point[0], self.target_point[1], self.reach2, math.inf)
+        return (self.target_point[0], self.target_point[1], self.reach2, self.check_at)
 
     def poll(self) -> bool:
-        """Side-effect-free: would on_running return RUNNING (not arrived yet)?"""
+        """Side-effect-free: would on_running return RUNNING and change nothing (not arrived, no check due)?"""
         sim, row, t = self.sim, self.row, self.target_point
         dx = sim.px[row] - t[0]
         dy = sim.py[row] - t[1]
-        return dx * dx + dy * dy > self.reach2
+        return dx * dx + dy * dy > self.reach2 and sim.clock.now + 1e-9 < self.check_at
 
 
 class Wait(AgentStatefulAction):
@@ -446,12 +490,13 @@ class JoinGroup(AgentSyncAction):
 class Converse(AgentStatefulAction):
     """Conversation circle at the target: walk to the assigned spot, face the centre, talk once all arrived."""
 
-    __slots__ = ("conv", "spot", "ready", "interrupted", "group")
+    __slots__ = ("conv", "spot", "ready", "interrupted", "group", "near")
     conv: Conversation  # joined by on_start
     spot: Point
     ready: bool
     interrupted: bool
     group: int
+    near: bool  # within CIRCLE_APPROACH of the circle's rim: out of its walking group, bound for its spot
 
     def setup(self) -> None:
         super().setup()
@@ -459,6 +504,7 @@ class Converse(AgentStatefulAction):
         self.ready = False
         self.interrupted = False
         self.group = -1
+        self.near = False
 
     def on_start(self) -> int:
         sim, row = self.sim, self.row
@@ -470,6 +516,7 @@ class Converse(AgentStatefulAction):
         self.conv = sim.conversations.join(centre, tuple(sorted(rows)), row)
         self.spot = self.conv.spots[row]
         self.ready = False
+        self.near = False
         self.group = int(sim.crowd.group[row])
         waypoints = self.get_input("waypoints") or ()
         p = sim.pos[row]
@@ -478,8 +525,21 @@ class Converse(AgentStatefulAction):
         sim.status[row] = f"meeting at {self.get_input('target')}"
         return self.on_running()
 
+    def _approach(self) -> float:
+        """Within this of the centre the circle is the formation: friends walk there as a group, then each
+        takes their own spot (coherence would hold members bound for opposite sides of the circle back,
+        each pulling the others, and the circle would never start)."""
+        return self.conv.radius + CIRCLE_APPROACH
+
     def on_running(self) -> int:
         sim, row, conv = self.sim, self.row, self.conv
+        if not self.near and math.dist(sim.pos[row], conv.centre) <= self._approach():
+            # The waypoints lead to the circle, not to this member's spot: three friends each trying to
+            # touch the same last waypoint jostle for it; from here each walks to their own spot.
+            self.near = True
+            sim.crowd.set_group(row, -1)
+            if not self.ready:
+                _go(sim, row, sim.plan(sim.pos[row], self.spot), 0.1)
         if not self.ready and math.dist(sim.pos[row], self.spot) <= ARRIVAL_TOLERANCE:
             self.ready = True
             # group coherence would pull a standing circle into its centre; the circle is the formation
@@ -519,6 +579,9 @@ class Converse(AgentStatefulAction):
     def quiet_spec(self) -> QuietSpec | None:
         if self.ready:
             return None
+        if not self.near:
+            centre, reach = self.conv.centre, self._approach()
+            return (centre[0], centre[1], reach * reach, math.inf)
         return (self.spot[0], self.spot[1], ARRIVAL_TOLERANCE * ARRIVAL_TOLERANCE, math.inf)
 
     def poll(self) -> bool:
@@ -527,6 +590,9 @@ class Converse(AgentStatefulAction):
         sim, row, spot = self.sim, self.row, self.spot
         off = math.hypot(sim.px[row] - spot[0], sim.py[row] - spot[1])
         if not self.ready:
+            if not self.near:
+                centre = self.conv.centre
+                return math.hypot(sim.px[row] - centre[0], sim.py[row] - centre[1]) > self._approach()
             return off > ARRIVAL_TOLERANCE
         mode = sim.crowd.mode[row]
         if (off > 0.2 and mode == MODE_FACE) or (off <= 0.1 and mode == MODE_GOALS):
