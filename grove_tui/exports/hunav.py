@@ -670,10 +670,13 @@ def export_hunav(bundle_dir: str | Path, out_dir: str | Path, *, lower: bool = T
             if not goal_ids:
                 # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type.
                 goal_ids = _tree_goal_ids(tree) or [goals.id_of(agent.start)]
+        # hunav_loader.cpp: `goals` is an INTEGER_ARRAY parameter, and an empty list has no type: an agent
+        # that stays where it is lists its start (the import reads that back as no goals).
+        goal_ids = goal_ids or [goals.id_of(agent.start)]
         if as_given and source is not None and agent.hunav is not None:
             agent_entries[name] = _entry_as_given(agent, layout, goal_ids, source.behavior_type == "number")
         else:
-            agent_entries[name] = _entry(agent, goal_ids or [goals.id_of(agent.start)])
+            agent_entries[name] = _entry(agent, goal_ids)
     includes: dict[str, str] = {}
     if source is not None and layout == "2.0" and any(a.hunav is not None and a.hunav.tree_file
                                                       for a in scenario.agents if a.id in kept):

@@ -294,6 +294,10 @@ def _agent(name: str, entry: YamlMapping, layout: str, global_goals: dict[int, t
         names = tuple(str(g) for g in listed)
         headings = tuple(_optional_number(entry[g], "h", f"{where}.{g}", -1e3, 1e3) for g in listed)
         ids = ()
+    if goals == (start,):
+        # What the export writes for an agent that stays where it is (HuNavSim's loader needs one goal):
+        # GROVE says that with no goals, so the round trip gives the agent back as it was.
+        goals, names, headings, ids = (), (), (), ()
     skin = entry.get("skin")
     if skin is not None and (isinstance(skin, bool) or not isinstance(skin, int) or not -1 <= skin <= 1000):
         raise HunavImportError(f"{where}.skin is {_short(skin)}; expected a mesh number")

@@ -14,6 +14,7 @@ import re
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -614,11 +615,13 @@ def _check_connectivity(zones: list[_DraftZone], doors: list[_DraftDoor], by_nam
             problems.add(zone.path + ("doors",), f"zone {name!r} cannot be reached from zone {start!r} through doors")
 
 
-def _free_anchor(zone: _DraftZone, clearance: float = 0.4) -> Point2:
-    """A point inside the zone and clear of its entities, as close to the centroid as possible."""
+def _free_anchor(zone: _DraftZone, obstacles: Sequence[Polygon] = (), clearance: float = 0.4) -> Point2:
+    """A point inside the zone and clear of its entities and of the world's obstacles, as close to the
+    centroid as possible (plans and fields start from it: a rack over the centre must not hold it)."""
     polygon = zone.polygon
     assert polygon is not None
     footprints = [e.polygon for e in zone.entities if e.polygon is not None]
+    footprints += [o for o in obstacles if o.intersects(polygon)]
     centroid = polygon.centroid
     clear_of_walls = polygon.contains(centroid) and polygon.exterior.distance(centroid) >= clearance
     if clear_of_walls and all(f.distance(centroid) >= clearance for f in footprints):
@@ -685,6 +688,7 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
     if problems.items:
         return None, sorted(problems.items, key=lambda problem: problem.line or 0)
 
+    obstacle_footprints = [Polygon(o.footprint) for o in obstacles]
     built_zones = []
     for zone in zones:
         assert zone.boundary is not None  # a zone without one is a problem, and problems returned above
@@ -693,7 +697,7 @@ def parse_world(text: str, source: str = "<string>") -> tuple[World | None, list
         entities = tuple(Entity(e.name, zone.name, e.type, e.footprint, e.interaction_point, e.tags,  # type: ignore[arg-type]
                                 e.description, e.aliases) for e in zone.entities)
         built_zones.append(Zone(zone.name, zone.type, zone.description, zone.aliases, zone.tags,  # type: ignore[arg-type]
-                                zone.boundary, doors, entities, _free_anchor(zone)))
+                                zone.boundary, doors, entities, _free_anchor(zone, obstacle_footprints)))
     zone_tree = shapely.STRtree([zone.polygon for zone in zones])
     built_obstacles = []
     for obstacle in obstacles:

@@ -440,3 +440,15 @@ def test_a_door_spanning_a_whole_wall_edge_leaves_clean_jambs():
     # ...and the opening itself stays open for the length of the door.
     lengths = np.hypot(walls[:, 2] - walls[:, 0], walls[:, 3] - walls[:, 1])
     assert lengths.sum() == pytest.approx(2 * 10 + 2 + 4 * 10 - 2)
+
+
+@pytest.mark.parametrize("name", list_worlds())
+def test_every_zone_anchor_is_walkable(name):
+    """Plans, fields and labels start from a zone's anchor: it lies on a free cell of the planning grid,
+    clear of the zone's entities and of the world's obstacles (the mall's racks sit on a shop's centre)."""
+    world = load_world(name)
+    grid = build_grid(world, resolution=0.1)
+    for zone in world.zones:
+        assert not grid.occupied[grid.world_to_cell(*zone.anchor)], (name, zone.name, zone.anchor)
+        for obstacle in world.obstacles:
+            assert not obstacle.polygon.contains(Point(zone.anchor)), (name, zone.name, obstacle.name)
