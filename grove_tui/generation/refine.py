@@ -44,8 +44,7 @@ from grove_tui.generation.reconcile import grounding_report, tree_for
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.scene import Scene, SceneGroup, placed_scene
 from grove_tui.generation.synthesis import describe_reading_groups
-from grove_tui.language.edits import EditReading, GroupEdit
-from grove_tui.language.followup import edited_reading
+from grove_tui.language.edits import EditReading, GroupEdit, edited_reading
 from grove_tui.language.model import GroupReading, PromptReading, RobotReading
 from grove_tui.navigation.theta_star import PlanningError
 from grove_tui.scenario.history import (ADDED, CHANGED, REMOVED, GroupChange, GroupSummary, HistoryStep, RefineDiff,

@@ -12,6 +12,7 @@ with several candidates and `ambiguous` set: the app asks which, the CLI exits 2
 and `EditReading.choose` records the answer.
 
 Plain data: `to_dict()` / `from_dict()` round-trip it through the bundle's history.
+`edited_reading(old, edit)` is what a change does to a group's reading.
 """
 
 from __future__ import annotations
@@ -19,7 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any
 
-from grove_tui.language.model import GroupReading, RobotReading
+from grove_tui.language import lexicon as lx
+from grove_tui.language.model import Count, GroupReading, RobotReading
 
 EDIT_KINDS = ("add", "change", "remove")
 ROBOT_EDIT_KINDS = ("add", "set", "remove")
@@ -176,3 +178,45 @@ class EditReading:
         return cls(str(data.get("sentence", "")), tuple(GroupEdit.from_dict(e) for e in data.get("edits", ())),
                    RobotEdit.from_dict(data["robot"]) if data.get("robot") else None,
                    tuple(str(n) for n in data.get("notes", ())))
+
+
+def edited_reading(old: GroupReading, edit: GroupEdit) -> GroupReading:
+    """A group's reading after a change: the fields the follow-up states replace the old ones, and
+    places that belonged to what the group no longer does go with it ("the visitors walk to the
+    cafeteria instead": no longer queueing at the pharmacy)."""
+    new = edit.group
+    values: dict[str, Any] = {}
+    fields = set(edit.fields)
+    if edit.count is not None:
+        value = edit.count.apply(old.count.value)
+        values["count"] = Count("exact", value, value, value)
+    if new is not None:
+        if "intent" in fields and new.intent == "walk" and old.intent == "evacuate":
+            fields.discard("intent")  # "the patients leave through the east exit": they still evacuate, there
+        if "intent" in fields and new.intent != old.intent:
+            values["intent"] = new.intent
+            stationary = new.intent in lx.STATIONARY_INTENTS
+            if stationary and "location" not in fields:
+                # what they now do, they do where they were (waiting instead of queueing at the desk)
+                values["location"] = old.location or (old.destination if old.intent not in lx.STATIONARY_INTENTS
+                                                      else None)
+            if stationary and "destination" not in fields:
+                values["destination"] = None
+            if not stationary and new.intent != "robot" and "location" not in fields:
+                values["location"] = None
+            if not stationary and new.intent != "robot" and "destination" not in fields and \
+                    old.intent in lx.STATIONARY_INTENTS:
+                values["destination"] = None
+        for name in ("start", "destination", "location", "via", "pace", "together", "wait_seconds"):
+            if name in fields:
+                values[name] = getattr(new, name)
+        if "robot_interaction" in fields:
+            values["robot_interaction"] = new.robot_interaction
+            values["robot_reaction"] = new.robot_reaction
+            if new.robot_interaction is None and old.intent == "robot":
+                values["intent"] = "walk" if (values.get("destination", old.destination)) else "wait"
+        if "destination" in fields and "location" not in fields and old.intent in lx.STATIONARY_INTENTS and \
+                values.get("intent", old.intent) not in lx.STATIONARY_INTENTS:
+            values["location"] = None
+    text = f"{old.text} / {edit.text}" if old.text else edit.text
+    return replace(old, **values, text=text, relation=None, confidence=())

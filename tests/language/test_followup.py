@@ -1,12 +1,13 @@
-"""Follow-up sentences read against a scenario's groups (language/followup.py): what kind of edit,
-which group, which fields, what count. Real spaCy, shipped worlds, no model."""
+"""Follow-up sentences read against a scenario's groups (language/followup.py and the followup_*.py
+modules it runs; edited_reading in language/edits.py): what kind of edit, which group, which fields,
+what count. Real spaCy, shipped worlds, no model."""
 
 from __future__ import annotations
 
 import pytest
 
-from grove_tui.language.edits import EditReading
-from grove_tui.language.followup import edited_reading, read_followup
+from grove_tui.language.edits import EditReading, edited_reading
+from grove_tui.language.followup import read_followup
 from grove_tui.language.reading import read_prompt
 from grove_tui.paths import worlds_dir
 from grove_tui.world.loader import load_world
