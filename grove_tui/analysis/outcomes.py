@@ -655,13 +655,17 @@ class _EvacuateProbe(_EventsProbe):
 class _RobotProbe(_Probe):
     """Reactions to the robot: distances and bearings between each member and the robot."""
 
-    def robot_xy(self, f: _Frames) -> tuple[np.ndarray, np.ndarray] | None:
-        if f.robot is None:
-            return None
-        return f.robot[:, 0], f.robot[:, 1]
-
     def no_robot(self) -> tuple[str, str]:
         return FAILS, "the scenario has no robot"
+
+    def robot_distances(self, f: _Frames) -> np.ndarray | None:
+        """Each member's distance to the robot in each frame (frames x members; NaN where a member is
+        absent), or None for frames without a robot or a group without members."""
+        if f.robot is None or not self.cols.size:
+            return None
+        self.seen_robot = True
+        pos = f.pos[:, self.cols]
+        return np.hypot(pos[..., 0] - f.robot[:, 0:1], pos[..., 1] - f.robot[:, 1:2])
 
 
 class _RobotFollowProbe(_RobotProbe):
@@ -674,13 +678,9 @@ class _RobotFollowProbe(_RobotProbe):
         self.seen_robot = False
 
     def add(self, f: _Frames) -> None:
-        xy = self.robot_xy(f)
-        if xy is None or not self.cols.size:
+        d = self.robot_distances(f)
+        if d is None:
             return
-        self.seen_robot = True
-        rx, ry = xy
-        pos = f.pos[:, self.cols]
-        d = np.hypot(pos[..., 0] - rx[:, None], pos[..., 1] - ry[:, None])
         within = np.isfinite(d) & (d <= (self.claim.distance or 3.0))
         for j in np.flatnonzero(np.isinf(self.since) & within.any(axis=0)):
             self.since[j] = f.t[np.argmax(within[:, j])]
@@ -717,13 +717,9 @@ class _RobotApproachProbe(_RobotProbe):
         self.seen_robot = False
 
     def add(self, f: _Frames) -> None:
-        xy = self.robot_xy(f)
-        if xy is None or not self.cols.size:
+        d = self.robot_distances(f)
+        if d is None:
             return
-        self.seen_robot = True
-        rx, ry = xy
-        pos = f.pos[:, self.cols]
-        d = np.hypot(pos[..., 0] - rx[:, None], pos[..., 1] - ry[:, None])
         d = np.where(np.isfinite(d), d, np.inf)
         k = np.argmin(d, axis=0)
         best = d[k, np.arange(d.shape[1])]

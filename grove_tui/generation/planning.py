@@ -228,9 +228,9 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProces
              if p is not None and not isinstance(p, str)]
     # A start or goal the user put inside a formation (the robot delivers to the counter): that one is not an obstacle.
     formations = [f for f in formations if not any(f in formations_at(formations, q, clearance) for q in fixed)]
-    named_places = {_zone_name(world, p) for p in named if isinstance(p, str)}
+    named_places = {world.zone_of_place(p) for p in named if isinstance(p, str)}
     if asked is not None:
-        named_places |= {_zone_name(world, p) for p in (asked.start, asked.location, asked.destination) if p}
+        named_places |= {world.zone_of_place(p) for p in (asked.start, asked.location, asked.destination) if p}
     for place in [p for p in named if isinstance(p, str)] + ([asked.destination, asked.location] if asked else []):
         if place:
             point = _place_point(world, grid, place)
@@ -290,7 +290,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProces
             start = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0]
         return RobotSpec(start=start, goal=start, path=(start,), task=task, follows=follows)
 
-    via_zones = [z for z in (_zone_name(world, v) for v in (asked.via if asked is not None else ())) if z]
+    via_zones = [z for z in (world.zone_of_place(v) for v in (asked.via if asked is not None else ())) if z]
     if start is None or goal is None:
         start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
         if not via_zones:
@@ -387,7 +387,7 @@ class _StartPicker:
 
     def pick(self, place: str, towards: Point | None, away_from: Point | None = None) -> Point:
         """A point of `place` (a zone, or the zone of a door or thing) for the robot to start at."""
-        zone = _zone_name(self.world, place)
+        zone = self.world.zone_of_place(place)
         if zone is None:
             raise GenerationError(f"robot place {place!r} is not a place of world '{self.world.name}'")
         pts = self.space.cells(zone)
@@ -460,17 +460,6 @@ def _request_point(world: World, grid: OccupancyGrid, value: Point | str, what: 
         if not hasattr(obj, "interaction_point") and not hasattr(obj, "leads_to"):
             return picker.pick(value, towards=None)
     return _resolve_point(world, grid, value, what)
-
-
-def _zone_name(world: World, name: str | None) -> str | None:
-    if not name:
-        return None
-    try:
-        obj = world.find(name)
-    except Exception:
-        return None
-    zone = getattr(obj, "zone", None)
-    return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
 
 
 def _place_point(world: World, grid: OccupancyGrid, name: str) -> Point | None:

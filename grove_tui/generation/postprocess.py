@@ -171,16 +171,6 @@ def _tree_places(tree: DraftNode) -> set[str]:
     return places
 
 
-def _zone_of(world: World, name: str, default: str) -> str:
-    """Spawns are zones; a door or entity as spawn means the zone it belongs to."""
-    try:
-        obj = world.find(name)
-    except Exception:
-        return default
-    zone = getattr(obj, "zone", None)
-    return zone if isinstance(zone, str) and zone else getattr(obj, "name", default)
-
-
 # ---- free-space sampling --------------------------------------------------------------------
 
 class FreeSpace:
@@ -759,7 +749,7 @@ def _reactor_zone(world: World, group: GroupReading) -> str | None:
     they follow it through."""
     for name in (group.start, group.location, *group.via, group.destination):
         if name:
-            zone = _zone_of(world, name, "")
+            zone = world.zone_of_place(name) or ""
             if zone:
                 return zone
     return None
@@ -838,7 +828,7 @@ def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: World,
             starts[zone] = starts.get(zone, 0) + n
         places = [node.ports[port] for node, port in navigation_targets(g.tree) if node.node != "FollowVelocityField"]
         if places:
-            zone = _zone_of(world, places[-1], g.spawn)
+            zone = world.zone_of_place(places[-1]) or g.spawn  # a door or entity means its zone
             ends[zone] = ends.get(zone, 0) + g.count
     for counts in (ends, starts):
         for zone, n in counts.items():

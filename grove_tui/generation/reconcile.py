@@ -124,7 +124,7 @@ def robot_places(reading: PromptReading, world: World) -> set[str]:
     if robot is None:
         return set()
     names = [robot.start, robot.destination, robot.location, *robot.via]
-    return {z for z in (_zone_of(world, n) for n in names if n) if z}
+    return {z for z in (world.zone_of_place(n) for n in names if n) if z}
 
 
 def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn: str,
@@ -190,13 +190,13 @@ def _pick_draft(group: GroupReading, drafts: Sequence[DraftGroup], unused: Seque
     if not unused:
         return None
     wanted = {group.label, lemma(group.label)} | {lemma(w) for w in words(group.who)}
-    places = {_zone_of(world, p) for p in (group.start, group.destination, group.location) if p}
+    places = {world.zone_of_place(p) for p in (group.start, group.destination, group.location) if p}
 
     def score(i: int) -> float:
         d = drafts[i]
         label = {lemma(w) for w in words(d.label.replace("_", " "))}
         s = 3.0 * len(label & wanted)
-        s += sum(1.0 for p in _tree_places(d.tree) if _zone_of(world, p) in places)
+        s += sum(1.0 for p in _tree_places(d.tree) if world.zone_of_place(p) in places)
         nodes = {n.node for n in d.tree.walk()}
         if nodes & STATIONARY_NODES.get(group.intent, set()):
             s += 1.0
@@ -231,7 +231,7 @@ def honest_tree(tree: DraftNode, group: GroupReading, world: World, notes: list[
     for i, step in enumerate(steps):
         if last is not None and _same_step(world, step, last, group):
             done_at = i
-    final_zone = _zone_of(world, _node_place(last) or "") if last is not None else None
+    final_zone = world.zone_of_place(_node_place(last) or "") if last is not None else None
     if done_at >= 0:
         before, after = steps[:done_at], steps[done_at + 1:]
     else:
@@ -279,15 +279,15 @@ def _same_step(world: World, have: DraftNode, want: DraftNode, group: GroupReadi
     if want.node == "Queue":
         return a == b or _service_in(world, a) == b
     if want.node in ("GoTo", "FollowVelocityField"):
-        return _reaches(world, b, [a]) if _zone_of(world, b) == b else a == b
-    return _zone_of(world, a) == _zone_of(world, b)
+        return _reaches(world, b, [a]) if world.zone_of_place(b) == b else a == b
+    return world.zone_of_place(a) == world.zone_of_place(b)
 
 
 def _trailing_ok(world: World, step: DraftNode, final_zone: str | None, robot_zones: set[str]) -> bool:
     place = _node_place(step)
     if place is None:
         return True
-    zone = _zone_of(world, place)
+    zone = world.zone_of_place(place)
     return zone is not None and zone == final_zone and zone not in robot_zones
 
 
@@ -358,7 +358,7 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
             return _sequence(via + [DraftNode("Converse", {"target": spot, "duration": seconds})])
         base = "wait"
     if base == "wander":
-        zone = _zone_of(world, group.location or group.destination or group.start or "")
+        zone = world.zone_of_place(group.location or group.destination or group.start or "")
         if zone:
             return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": float(group.wait_seconds or 0.0)})])
         base = "wait"
@@ -382,12 +382,12 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         if evacuation_field:
             # "get out", "leave" in an emergency: out along the field to the nearest exit
             return _sequence(via + [DraftNode("FollowVelocityField", {"exit": _nearest_exit(world, group.start)})])
-        start = _zone_of(world, group.start or "")
+        start = world.zone_of_place(group.start or "")
         onward = _largest_neighbour(world, start) if start and base == "walk" else None
         if onward is not None:
             # "people leave the big meeting room": out of it, into the largest room next to it
             return _sequence(via + [DraftNode("GoTo", {"target": onward})])
-        zone = _zone_of(world, group.start or group.location or "")
+        zone = world.zone_of_place(group.start or group.location or "")
         if zone:
             return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": 0.0})])
         destination = _nearest_exit(world, None)
@@ -402,7 +402,7 @@ def _largest_neighbour(world: World, zone: str) -> str | None:
 
 def onward_note(group: GroupReading, tree: DraftNode, world: World) -> str | None:
     """What a group the sentence sends out of a place, but nowhere, is given to do: said as added."""
-    start = _zone_of(world, group.start or "")
+    start = world.zone_of_place(group.start or "")
     if group.destination or not start or _base_intent(group) != "walk":
         return None
     onward = _largest_neighbour(world, start)
@@ -485,23 +485,12 @@ def _tree_places(tree: DraftNode) -> list[str]:
     return [p for node in tree.walk() for p in [_node_place(node)] if p]
 
 
-def _zone_of(world: World, name: str) -> str | None:
-    if not name:
-        return None
-    try:
-        obj = world.find(name)
-    except Exception:
-        return None
-    zone = getattr(obj, "zone", None)
-    return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
-
-
 def _reaches(world: World, goal: str, places: Sequence[str]) -> bool:
     """Whether a tree visiting `places` goes where the reading sends the group: anywhere in a named
     zone, but to a named door or thing itself."""
     if goal in places:
         return True
-    return _zone_of(world, goal) == goal and any(_zone_of(world, p) == goal for p in places)
+    return world.zone_of_place(goal) == goal and any(world.zone_of_place(p) == goal for p in places)
 
 
 def _stationary_place(group: GroupReading, world: World, intent: str) -> str | None:
@@ -537,7 +526,7 @@ def _nearest_exit(world: World, start: str | None) -> str:
     exits = world.exits()
     if not exits:
         return str(world.zones[0].name)
-    zone = _zone_of(world, start or "")
+    zone = world.zone_of_place(start or "")
     if zone is None:
         return exits[0].name
     cx, cy = world.zone(zone).centroid
@@ -551,18 +540,18 @@ def _spawn(group: GroupReading, d: DraftGroup | None, world: World, default: str
     largest room next to where they go."""
     robot_zones = robot_zones or set()
     for name in (group.start, group.location if _base_intent(group) in STATIONARY_NODES else None):
-        zone = _zone_of(world, name or "")
+        zone = world.zone_of_place(name or "")
         if zone:
             return zone
-    own = {_zone_of(world, p) for p in (group.destination, group.location, *group.via) if p}
-    spawn = _zone_of(world, d.spawn) if d is not None else None
+    own = {world.zone_of_place(p) for p in (group.destination, group.location, *group.via) if p}
+    spawn = world.zone_of_place(d.spawn) if d is not None else None
     if spawn in robot_zones and spawn not in own:
         spawn = None  # the robot's clause is not where this group is
     spawn = spawn or (default if default not in robot_zones or default in own else None)
     first = next((p for p in _tree_places(tree)), None)
     if spawn is None:
-        spawn = _zone_of(world, first or "") or default
-    if first is not None and _zone_of(world, first) == spawn and _base_intent(group) not in STATIONARY_NODES:
+        spawn = world.zone_of_place(first or "") or default
+    if first is not None and world.zone_of_place(first) == spawn and _base_intent(group) not in STATIONARY_NODES:
         neighbours = sorted({door.leads_to if door.zone == spawn else door.zone for door in world.doors_of(spawn)}
                             - {spawn, "outside"} - (robot_zones - own))
         if neighbours:
@@ -661,7 +650,7 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
     n = max(1, g.count)
     speed = min((a.max_vel for a in agents), default=walking_speed) or walking_speed
     if r.start:
-        zone = _zone_of(world, r.start)
+        zone = world.zone_of_place(r.start)
         spread = getattr(g, "spawn_zones", None)
         plan = f"across the building ({len(spread)} zones)" if spread else f"start in {g.spawn}"
         ok = not spread and zone == g.spawn
@@ -676,7 +665,7 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
         claims.append(_reaction_claim(r, g, robot_seconds))
         if reacts_only(r):
             base = "none"
-            zone = _zone_of(world, r.location or "")
+            zone = world.zone_of_place(r.location or "")
             if zone and not r.start:
                 # "a cleaner stands in the robot's way in the corridor": that is where they are at first
                 claims.append(Claim("start", r.location or zone, f"start in {g.spawn}", PLANNED if zone == g.spawn
@@ -695,9 +684,9 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
         elif "FollowVelocityField" in tree_nodes:
             claims.append(Claim("evacuate", "walk out (no destination named)", "follow the evacuation field to "
                                 "the nearest exit", needs_seconds=_evacuation_eta(agents, world, speed, n)))
-        elif r.start and _zone_of(world, r.start):
+        elif r.start and world.zone_of_place(r.start):
             # "people leave the big meeting room": out of it, wherever to
-            zone = _zone_of(world, r.start)
+            zone = world.zone_of_place(r.start)
             claims.append(Claim("leave", r.start, "walk out" if "Wander" not in tree_nodes else f"wander in {zone}",
                                 zone=zone, place=r.start, needs_seconds=_eta(agents, None, world, speed) + 20.0))
         else:
@@ -731,7 +720,7 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
             service_time = next((float(node.ports.get("service_time", 10.0)) for node in g.tree.walk()
                                  if node.node == "Queue"), 10.0)
             claims.append(Claim("queue", place or service, f"queue at {service}", place=service,
-                                zone=_zone_of(world, service),
+                                zone=world.zone_of_place(service),
                                 needs_seconds=_eta(agents, service, world, speed) + service_time + 15.0))
     elif base == "wait":
         place = r.location or r.destination
@@ -744,12 +733,12 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
                           needs_seconds=(seconds or 10.0) + 5.0)
         claims.append(replace_seconds(claim, seconds))
     elif base == "wander":
-        zone = _zone_of(world, r.location or r.destination or r.start or "") or g.spawn
+        zone = world.zone_of_place(r.location or r.destination or r.start or "") or g.spawn
         claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
                             needs_seconds=_eta(agents, zone, world, speed) + 20.0))
     elif base == "converse":
         spot = r.location or r.start or r.destination
-        zone = _zone_of(world, spot or "") or g.spawn
+        zone = world.zone_of_place(spot or "") or g.spawn
         partners = tuple(g.member_ids)
         if "Converse" not in tree_nodes and "ConversationFormation" not in tree_nodes:
             claims.append(Claim("converse", "talk together", "no conversation in the trees", FAILS,
@@ -817,12 +806,12 @@ def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: fl
 def _route_length(agent: Any, upto: str | None, world: World) -> float:
     """Straight-line legs from the agent's start through its targets, up to the first at `upto`."""
     length, here = 0.0, agent.start
-    zone = _zone_of(world, upto or "") if upto else None
+    zone = world.zone_of_place(upto or "") if upto else None
     for name, point in getattr(agent, "targets", ()):
         length += math.dist(here, point)
         here = point
-        if upto is not None and (name == upto or (zone is not None and _zone_of(world, name) == zone
-                                                  and _zone_of(world, upto) == upto)):
+        if upto is not None and (name == upto or (zone is not None and world.zone_of_place(name) == zone
+                                                  and world.zone_of_place(upto) == upto)):
             return length
     if upto is not None and zone is not None:
         # not among the targets: as the crow flies to the zone's centre
@@ -923,7 +912,7 @@ def _robot_row(asked: RobotReading | None, robot: Any, world: World, agents: Seq
 
 
 def _robot_start_claim(start: str, robot: Any, world: World) -> Claim:
-    zone = _zone_of(world, start)
+    zone = world.zone_of_place(start)
     actual = world.zone_at(robot.start[0], robot.start[1])
     ok = zone is not None and actual is not None and actual.name == zone
     return Claim("robot_reach", f"start in {start}", f"start at ({robot.start[0]:.1f}, {robot.start[1]:.1f})",

@@ -235,6 +235,17 @@ class World:
             raise WorldError(f"world {self._name!r}: {name!r} is an alias of several places ({names}); use one of those names")
         raise WorldError(_unknown_name_message(f"world {self._name!r} has no zone, door or entity", name, list(index)))
 
+    def zone_of_place(self, name: str | None) -> str | None:
+        """The zone a place lies in: a zone's own name, a door's or entity's zone; None for an empty or
+        unknown name (or an alias several places share), so callers can fall back."""
+        if not name:
+            return None
+        try:
+            place = self.find(name)
+        except WorldError:
+            return None
+        return place.zone if isinstance(place, (Door, Entity)) and place.zone else place.name
+
     @cached_property
     def _named(self) -> dict[str, Zone | Door | Entity]:
         named: dict[str, Zone | Door | Entity] = {}
