@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import Any
 
 from grove_tui.language.edits import EditReading, GroupEdit, RobotEdit
 from grove_tui.language.followup_context import FollowupContext
@@ -38,6 +37,7 @@ from grove_tui.language.followup_groups import (read_addition, read_change_or_ad
 from grove_tui.language.followup_phrases import DETERMINER_PATTERN, ROBOT_PATTERN
 from grove_tui.language.followup_robot import read_robot_edit
 from grove_tui.language.model import GroupReading
+from grove_tui.world.model import World
 
 _LEADING = re.compile(
     r"^(?:(?:no|nope|ok|okay|actually|now|then|and|but|so|well|oh|please|right|hmm|wait|sorry|instead|also|next|"
@@ -52,7 +52,7 @@ _SPLIT_EDITS = re.compile(r"\s*(?:,\s*(?:and\s+(?:then\s+)?|then\s+)?|\s+and\s+(
                           r"(?=" + _EDIT_START + ")")
 
 
-def read_followup(sentence: str, world: Any, groups: Sequence[GroupReading], *, has_robot: bool = True,
+def read_followup(sentence: str, world: World, groups: Sequence[GroupReading], *, has_robot: bool = True,
                   seed: int = 0, last: Sequence[int] = ()) -> EditReading:
     """What a follow-up sentence asks to change in a scenario of `groups` (see the module doc).
 

@@ -9,15 +9,15 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Any
 
 from grove_tui.language.model import GroupReading, PromptReading
 from grove_tui.language.reading import read_prompt
+from grove_tui.world.model import World
 
 
 @dataclass
 class FollowupContext:
-    world: Any
+    world: World
     groups: Sequence[GroupReading]
     seed: int
     last: tuple[int, ...]
