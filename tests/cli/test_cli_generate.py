@@ -72,10 +72,10 @@ def test_model_that_is_not_a_gguf_exits_4(tmp_path):
     assert not (tmp_path / "bundle").exists()
 
 
-def test_strict_refuses_an_unsure_reading_with_the_question_and_writes_nothing(tmp_path, model):
+def test_strict_refuses_an_unsure_reading_with_the_question_and_writes_nothing(tmp_path, embedded_path):
     # "the counter": the hospital has the pharmacy's and the cafeteria's; no model loads to say so
     out = tmp_path / "bundle"
-    result = invoke(generate_args(out, model, prompt="Ten people queue at the counter", extra=["--strict"]))
+    result = invoke(generate_args(out, embedded_path, prompt="Ten people queue at the counter", extra=["--strict"]))
     assert result.exit_code == EXIT_BAD_INPUT
     assert "unsure" in result.stderr and "pharmacy" in result.stderr and "food_counter" in result.stderr
     assert "without --strict" in result.stderr

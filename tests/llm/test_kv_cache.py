@@ -155,11 +155,11 @@ def test_warming_the_prefix_serves_the_first_request_from_it(tiny_path_2k, kv_di
     assert first["logits_sha256"] == cold["logits_sha256"]  # and the model sees the same thing
 
 
-def test_the_thread_count_changes_no_logits(model, kv_dir):
+def test_the_thread_count_changes_no_logits(tiny_path_2k, kv_dir):
     """A request runs on the cores idle at that moment (cpu.py), and a prefix saved at one count is restored at
     another, so the logits must not depend on it."""
     digests = []
     for threads in (1, 2):
-        with LocalLLM(model, role="kv-test", n_ctx=2048, n_threads=threads) as llm:
+        with LocalLLM(tiny_path_2k, role="kv-test", n_ctx=2048, n_threads=threads) as llm:
             digests.append(llm.evaluate(messages(USERS[0]), "threads")["logits_sha256"])
     assert digests[0] == digests[1]
