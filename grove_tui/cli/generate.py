@@ -69,7 +69,7 @@ class Progress:
         self._status: Any = None
 
     def __call__(self, event: Any) -> None:
-        from grove_tui.generation.pipeline import AttemptStarted, StageFinished, StageStarted, TokenStreamed
+        from grove_tui.services.session import AttemptStarted, StageFinished, StageStarted, TokenStreamed
 
         if isinstance(event, AttemptStarted):
             self.tokens = 0  # the count is the running attempt's, as the app shows it
@@ -162,9 +162,8 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
              strict: bool) -> None:
     """Turn a sentence into a scenario bundle (scenario.yaml, trees, grid, generation.json)."""
     from grove_tui.errors import PromptError
-    from grove_tui.generation.planning import RobotRequest
     from grove_tui.services.jobs import variation_suffix
-    from grove_tui.services.session import ScenarioRequest, variation_requests
+    from grove_tui.services.session import RobotRequest, ScenarioRequest, variation_requests
 
     robot = RobotRequest(parse_robot_point(robot_start), parse_robot_point(robot_goal), enabled=not no_robot)
     request = ScenarioRequest(world_name, preset_name, prompt, seed, robot)

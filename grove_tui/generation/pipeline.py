@@ -28,9 +28,11 @@ from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft, node_to_dict
-from grove_tui.generation.planning import OperationalPlan, RobotRequest, plan_operational
+from grove_tui.generation.events import AttemptStarted, Event, StageFinished, StageStarted, TokenStreamed
+from grove_tui.generation.planning import OperationalPlan, plan_operational
 from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
 from grove_tui.generation.presets import Preset
+from grove_tui.generation.requests import RobotRequest
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.model import Count, GroupReading, PromptReading, effective_counts
 from grove_tui.language.reading import read_prompt
@@ -46,38 +48,6 @@ MAX_PROMPT_CHARS = 2000
 
 __all__ = ["AttemptStarted", "Cancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs",
            "STAGES", "StageFinished", "StageStarted", "TokenStreamed"]
-
-
-@dataclass(frozen=True)
-class StageStarted:
-    stage: str
-
-
-@dataclass(frozen=True)
-class StageFinished:
-    stage: str
-    seconds: float
-    prompt_tokens: int = 0
-    completion_tokens: int = 0
-    detail: str = ""
-
-
-@dataclass(frozen=True)
-class TokenStreamed:
-    stage: str
-    text: str
-
-
-@dataclass(frozen=True)
-class AttemptStarted:
-    """The model is asked again within a stage: the tokens streamed so far belong to a discarded attempt."""
-
-    stage: str
-    attempt: int  # 2 for the first retry
-    reason: str  # why the previous attempt was discarded ("cut off at 512 tokens", "invalid draft: ...")
-
-
-Event = StageStarted | StageFinished | TokenStreamed | AttemptStarted
 
 
 @dataclass(frozen=True)

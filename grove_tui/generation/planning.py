@@ -35,6 +35,7 @@ from grove_tui.generation.formations import (
 from grove_tui.generation.postprocess import FreeSpace, PostProcessed
 from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
+from grove_tui.generation.requests import Point, RobotRequest
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.waypoints import plan_waypoints
@@ -43,19 +44,8 @@ from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.language.model import PromptReading
 from grove_tui.language.tokens import lemma, words
 
-Point = tuple[float, float]
-
 ROBOT_CLEARANCE = 2.0  # metres between the robot's start/goal and anybody's spawn
 ROBOT_CANDIDATES = 48
-
-
-@dataclass(frozen=True)
-class RobotRequest:
-    """What the user asked of the robot; None parts are chosen by the pipeline. Strings are RoI names."""
-
-    start: Point | str | None = None
-    goal: Point | str | None = None
-    enabled: bool = True
 
 
 @dataclass

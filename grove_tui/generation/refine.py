@@ -35,11 +35,12 @@ from grove_tui.bt.format.xml import parse_tree_text
 from grove_tui.errors import AmbiguousEditError, BTError, EditError, GenerationError, GroveError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations
-from grove_tui.generation.pipeline import (Event, GenerationPipeline, GenerationResult, StageClock, group_records,
-                                           world_reference)
-from grove_tui.generation.planning import CachedPlanner, RobotRequest, plan_operational, plan_robot
+from grove_tui.generation.events import Event
+from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult, StageClock, group_records, world_reference
+from grove_tui.generation.planning import CachedPlanner, plan_operational, plan_robot
 from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed, place_groups, plan_groups
 from grove_tui.generation.presets import load_preset
+from grove_tui.generation.requests import RobotRequest
 from grove_tui.generation.reconcile import grounding_report, tree_for
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.scene import Scene, SceneGroup, placed_scene

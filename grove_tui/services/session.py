@@ -40,6 +40,15 @@ from grove_tui.errors import (
     PromptError,
     RuntimeFailure,
 )
+# The values the façade's callers build and receive, handed out here so a front end needs no pipeline
+# import: the robot request of a ScenarioRequest and the progress events `on_event` gets. Both modules are
+# plain dataclasses, cheap to import.
+from grove_tui.generation.events import AttemptStarted as AttemptStarted
+from grove_tui.generation.events import Event as Event
+from grove_tui.generation.events import StageFinished as StageFinished
+from grove_tui.generation.events import StageStarted as StageStarted
+from grove_tui.generation.events import TokenStreamed as TokenStreamed
+from grove_tui.generation.requests import RobotRequest as RobotRequest
 
 if TYPE_CHECKING:
     from grove_tui.analysis.empirical import EmpiricalResult
@@ -55,7 +64,6 @@ if TYPE_CHECKING:
     from grove_tui.bt.format.manifest import NodeSpec
     from grove_tui.bt.format.xml import BTProblem
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
-    from grove_tui.generation.planning import RobotRequest
     from grove_tui.generation.refine import Refinement
     from grove_tui.generation.retrieval import EvalResult as RetrievalEval
     from grove_tui.generation.retrieval import NodeRetriever
@@ -71,7 +79,7 @@ if TYPE_CHECKING:
 
 LLMFactory = Callable[[str, Any], Any]  # (role, ModelChoice) -> a LocalLLM-like object
 RetrieverFactory = Callable[[], Any]
-EventSink = Callable[[Any], None]  # receives the pipeline's StageStarted / StageFinished / TokenStreamed
+EventSink = Callable[[Any], None]  # receives an Event (StageStarted, TokenStreamed, ...) or a LoadingProgress
 MAX_FOLLOWUP_CHARS = 500
 
 
@@ -578,8 +586,6 @@ class GroveSession:
 
         A part the warm-up is loading at the same moment is waited for under its lock, not loaded twice.
         """
-        from grove_tui.generation.pipeline import StageFinished, StageStarted
-
         with self._lock:
             missing = [step for step in self._warm_steps(world, preset) if step[0] not in self._warmed]
         if not missing:

@@ -15,10 +15,10 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import Screen
 from textual.widgets import Static, TextArea, Tree
 
-from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.session import GeneratedScenario
+from grove_tui.services.trees import parse_point_list
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
 from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summary
 from grove_tui.tui.widgets.map_raster import Overlay

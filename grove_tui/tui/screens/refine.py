@@ -205,7 +205,7 @@ several groups, press the number of the one you mean.
 
     def _event(self, event: Any) -> None:
         """Pipeline events, in the worker's thread: a line of progress for the UI thread."""
-        from grove_tui.generation.pipeline import StageStarted, TokenStreamed
+        from grove_tui.services.session import StageStarted, TokenStreamed
 
         if isinstance(event, StageStarted):
             self._tokens = 0

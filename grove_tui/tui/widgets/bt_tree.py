@@ -13,9 +13,8 @@ from textual.strip import Strip
 from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
-from grove_tui.bt.format.document import TreeElement
-from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import BTError
+from grove_tui.services.trees import TreeElement, behavior_trees
 
 STATUS_CLASSES = {
     "RUNNING": "bt--running",
@@ -51,11 +50,6 @@ def node_label(name: str, ports: dict[str, str]) -> Text:
         label.append(" ")
         label.append(" ".join(f"{k}={short_port(v)}" for k, v in shown), style="dim")
     return label
-
-
-def behavior_trees(xml_text: str) -> list[TreeElement]:
-    """The BehaviorTree elements of a BT.CPP v4 document, main tree first (hardened reader: BTError)."""
-    return read_tree(xml_text, "tree").ordered_trees()
 
 
 def path_key(path: tuple[int, ...] | str) -> str:

@@ -1,0 +1,19 @@
+"""What a generation is asked for beyond the sentence: the robot's start and goal. A plain value with no
+dependencies, so a front end can build it without loading the planner (services hands it out)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Point", "RobotRequest"]
+
+Point = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class RobotRequest:
+    """What the user asked of the robot; None parts are chosen by the pipeline. Strings are RoI names."""
+
+    start: Point | str | None = None
+    goal: Point | str | None = None
+    enabled: bool = True
