@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import json
 import math
+from abc import ABC, abstractmethod
 from collections.abc import Iterable, Sequence
 from dataclasses import replace
 from pathlib import Path
@@ -252,7 +253,7 @@ def _when(t: float) -> str:
     return f"t = {t:.1f} s"
 
 
-class _Probe:
+class _Probe(ABC):
     """Accumulates what one claim needs from the frames; `verdict` says holds/fails and the figure."""
 
     final = False  # a verdict that a longer run cannot change (a count, a start)
@@ -264,10 +265,11 @@ class _Probe:
         self.checker = checker
 
     def add(self, f: _Frames) -> None:
-        pass
+        """Take in a chunk of frames (probes that judge only from events keep nothing)."""
 
+    @abstractmethod
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
-        raise NotImplementedError
+        """The claim's status and the evidence for it, from what add() gathered and the run's events."""
 
     # helpers
     def inside(self, f: _Frames, cols: np.ndarray | None = None) -> np.ndarray:
