@@ -126,34 +126,34 @@ def export_picture(ctx: ExportContext) -> None:
     ctx.add("picture", Path(path))
 
 
+def _ros_export(ctx: ExportContext, kind: str, out: Path, missing: Callable[[], str | None]) -> Any:
+    """One export of the run that needs the `ros` extra: its result, or None after noting why it was not
+    written (no run; the extra missing)."""
+    if ctx.simulation is None or not ctx.trajectories.exists():
+        return None
+    why = missing()
+    if why is not None:
+        ctx.add(kind, out, f"not written: {why}")
+        return None
+    return ctx.session.export(kind, ctx.bundle, out)
+
+
 def export_rosbag_files(ctx: ExportContext) -> None:
     """A ROS 2 bag of the run; a note instead when the `ros` extra is missing."""
-    if ctx.simulation is None or not ctx.trajectories.exists():
-        return
     from grove_tui.exports.rosbag import missing_dependency
 
-    out = ctx.out_dir / "rosbag"
-    missing = missing_dependency()
-    if missing is not None:
-        ctx.add("rosbag", out, f"not written: {missing}")
-        return
-    result = ctx.session.export("rosbag", ctx.bundle, out)
-    ctx.add("rosbag", result.directory, f"{result.frames} frames")
+    result = _ros_export(ctx, "rosbag", ctx.out_dir / "rosbag", missing_dependency)
+    if result is not None:
+        ctx.add("rosbag", result.directory, f"{result.frames} frames")
 
 
 def export_foxglove_files(ctx: ExportContext) -> None:
     """A Foxglove MCAP of the run and its layout; a note instead when the `ros` extra is missing."""
-    if ctx.simulation is None or not ctx.trajectories.exists():
-        return
     from grove_tui.exports.foxglove import missing_dependency
 
-    out = ctx.out_dir / "scenario.mcap"
-    missing = missing_dependency()
-    if missing is not None:
-        ctx.add("foxglove", out, f"not written: {missing}")
-        return
-    result = ctx.session.export("foxglove", ctx.bundle, out)
-    ctx.add("foxglove", result.mcap, f"+ layout {result.layout.name}")
+    result = _ros_export(ctx, "foxglove", ctx.out_dir / "scenario.mcap", missing_dependency)
+    if result is not None:
+        ctx.add("foxglove", result.mcap, f"+ layout {result.layout.name}")
 
 
 @dataclass(frozen=True)
