@@ -241,6 +241,11 @@ def load_yaml_bounded(text: str, what: str) -> Any:
         mark = exc.problem_mark or exc.context_mark
         where = f" (line {mark.line + 1})" if mark is not None else ""
         detail = " ".join(part for part in (exc.context, exc.problem) if part)
+        if "maximum nesting depth" in detail:
+            # PyYAML 6.0.4 and later stop deep nesting in the parser, before our own depth check sees it:
+            # the same refusal, in the same words, whichever version is installed.
+            raise InputLimitError(f"{what}{where}: the YAML nests more than its parser allows ({detail})",
+                                  mark.line + 1 if mark is not None else None) from None
         raise InputLimitError(f"{what}{where}: not valid YAML: {detail}") from None
     except yaml.YAMLError as exc:
         raise InputLimitError(f"{what}: not valid YAML: {exc}") from None
