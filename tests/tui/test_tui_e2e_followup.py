@@ -49,8 +49,10 @@ def test_add_change_remove_and_undo_by_follow_ups_at_80x24(tmp_path):
         assert not re.search(r"[▶▼] cleaner ×1", terminal.screen())  # no cleaner group in the trees
 
         terminal.keys("C-z")
+        # The notice first: it shows for a few seconds while the tree count stays, so on a loaded machine
+        # waiting for the count first can miss the notice's whole life.
+        terminal.wait_for(r"Undid: remove the cleaner", 30, "the undo notice")
         terminal.wait_for(r"Trees · 21 agents", 30, "the cleaner back after ctrl+z")
-        terminal.wait_for(r"Undid: remove the cleaner", 10, "the undo notice")
         runs = sorted((tmp_path / "data" / "runs").iterdir())
         assert len(runs) == 4  # the generation and one bundle per follow-up: undo goes back to one of them
 

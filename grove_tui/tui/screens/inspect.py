@@ -461,7 +461,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
         self.redo_stack.append(self.generated)
         undone = _last_sentence(self.generated)
         self._replace(self.undo_stack.pop(), undoable=False)
-        self.notify(f"Undid: {undone}" if undone else "Undid the last edit.", title="Undo · ctrl+y redoes", timeout=5)
+        self.notify(f"Undid: {undone}" if undone else "Undid the last edit.", title="Undo · ctrl+y redoes", timeout=8)
 
     def action_redo(self) -> None:
         if not self.redo_stack:
@@ -470,7 +470,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
         self.undo_stack.append(self.generated)
         self._replace(self.redo_stack.pop(), undoable=False)
         redone = _last_sentence(self.generated)
-        self.notify(f"Redid: {redone}" if redone else "Redid the edit.", title="Redo", timeout=5)
+        self.notify(f"Redid: {redone}" if redone else "Redid the edit.", title="Redo", timeout=8)
 
     def action_back(self) -> None:
         from grove_tui.tui.screens.choice import Choice, ChoiceScreen
