@@ -125,7 +125,7 @@ class OccupancyGrid:
         return self._nearest
 
     def save(self, path: str | os.PathLike[str]) -> Path:
-        arrays = {
+        arrays: dict[str, np.ndarray | np.generic] = {
             "origin": np.asarray(self.origin, dtype=np.float64),
             "resolution": np.float64(self.resolution),
             "inflation": np.float64(self.inflation),
