@@ -80,6 +80,8 @@ class People:
         word, a time or a hazard."""
         s = self.s
         word = s.w[i]
+        if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
+            return False  # "the robot hums while ...": the robot's verb, tagged a noun
         parsed = word.pos in ("NOUN", "PROPN") and word.dep == "nsubj" and word.head != i and \
             s.w[word.head].pos == "VERB" and s.verb(word.head) in lx.HUMAN_SUBJECT_VERBS
         # The parser may also take the noun for an adjective and the verb for a plural noun ("a

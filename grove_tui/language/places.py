@@ -149,7 +149,7 @@ class PlaceIndex:
         owns "kids room", "guard" owns "guards' room"."""
         kinds = owner_kinds(person)
         # a person word the lexicon lacks still owns the places named after it ("the curator's office")
-        return [e for e in self.entries if e.owners & kinds or person in e.tokens]
+        return [e for e in self.entries if e.owners & kinds or set(person.split()) <= e.tokens]
 
     def knows(self, token: str) -> bool:
         """Whether some place of the world is called by this word or a synonym of it."""
