@@ -87,6 +87,10 @@ CHAT_WORDS: dict[str, str] = {
     "w/": "with", "w/o": "without", "abt": "about", "approx": "approximately", "approx.": "approximately",
     "ca.": "about", "nr": "near", "btw": "", "pls": "please", "plz": "please", "mins": "minutes",
     "hrs": "hours", "secs": "seconds", "sec": "second", "min": "minute", "ppl's": "people's",
+    # people by their short names ("2 devs grab coffee", "a few execs")
+    "dev": "developer", "devs": "developers", "exec": "executive", "execs": "executives", "prof": "professor",
+    "profs": "professors", "techs": "technicians", "reps": "representatives", "admins": "administrators",
+    "grads": "graduates", "mgr": "manager", "mgrs": "managers", "hubby": "husband", "kiddos": "kids",
 }
 
 # ---- people ---------------------------------------------------------------------------------

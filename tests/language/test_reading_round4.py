@@ -132,3 +132,37 @@ def test_a_thing_cleaned_or_watched_in_a_place_is_no_unknown_place(worlds, world
 
 def test_cleaning_a_room_the_world_lacks_is_still_refused(worlds):
     assert read_prompt("A cleaner cleans the attic.", worlds["residential"]).unknown_places == ("attic",)
+
+
+@pytest.mark.parametrize("world,prompt,second", [
+    ("museum", "Two boys and their gran line up at the ticket desk.", "their gran"),
+    ("museum", "4 kids & their mum queue at the shop till.", "their mum"),
+    ("airport", "Two toddlers and their mum queue at the café counter.", "their mum"),
+    ("station", "Three pupils + their teacher wait on platform 2.", "their teacher"),
+])
+def test_a_family_word_joined_by_and_before_a_plural_verb_is_a_group(worlds, world, prompt, second):
+    groups = read(worlds, world, prompt).groups
+    assert [g.who for g in groups][1:] == [second] and groups[1].count.value == 1
+    assert groups[0].intent == groups[1].intent and groups[0].location == groups[1].location
+
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("office", "2 devs grab coffee at the coffee machine.", "developer", 2),
+    ("office", "A few execs chat in the boardroom.", "executive", None),
+    ("museum", "Five profs stroll through the great hall.", "professor", 5),
+    ("station", "Three sales reps wait in the café.", "representative", 3),
+])
+def test_short_names_of_people_are_people(worlds, world, prompt, label, value):
+    g, = read(worlds, world, prompt).groups
+    assert g.label == label and (value is None or g.count.value == value)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "Two nurses chat at the nurses' desk.", "nurse_desk"),
+    ("hospital", "A porter walks to the nurses' station.", "nurse_station"),
+    ("airport", "Three travellers queue at the information desk.", "information_desk"),
+    ("office", "Five visitors wait at the reception desk.", "reception_desk"),
+])
+def test_a_rooms_fixture_named_by_its_own_kind_is_the_fixture(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert (g.location or g.destination) == place
