@@ -1561,6 +1561,9 @@ def _integrate(i0, i1, dt, params,
 
         # the robot, as HuNavSim's behaviours perceive it
         if robot_present:
+            # people keep their whole radius from the robot, not only the body: the robot's contact
+            # metrics (HuNavSim's robot-on-person collisions) count at the radius
+            rr = radius[i]
             ri_mode = robot_interaction[i]
             rdx = rx - px
             rdy = ry - py
@@ -1571,18 +1574,18 @@ def _integrate(i0, i1, dt, params,
                     sfx += ax_
                     sfy += ay_
                     rd = math.sqrt(rd2)
-                    overlap = ri + rrad - rd
+                    overlap = rr + rrad - rd
                     if overlap > 0.0 and rd > _TINY:
                         fx -= body * overlap * rdx / rd
                         fy -= body * overlap * rdy / rd
             elif ri_mode == ROBOT_AS_OBSTACLE:
-                if rd2 <= (robot_range + ri) * (robot_range + ri):
-                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, robot_sigma, i)
+                if rd2 <= (robot_range + rr) * (robot_range + rr):
+                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, rr, w_obs, robot_sigma, i)
                     fx += ax_
                     fy += ay_
             elif ri_mode == ROBOT_FEARED:
                 rd = math.sqrt(rd2)
-                gap = rd - ri
+                gap = rd - rr
                 if gap < 0.05:
                     gap = 0.05
                 mag = w_other * robot_sigma / gap
