@@ -87,6 +87,10 @@ CHAT_WORDS: dict[str, str] = {
     "w/": "with", "w/o": "without", "abt": "about", "approx": "approximately", "approx.": "approximately",
     "ca.": "about", "nr": "near", "btw": "", "pls": "please", "plz": "please", "mins": "minutes",
     "hrs": "hours", "secs": "seconds", "sec": "second", "min": "minute", "ppl's": "people's",
+    # people by their short names ("2 devs grab coffee", "a few execs")
+    "dev": "developer", "devs": "developers", "exec": "executive", "execs": "executives", "prof": "professor",
+    "profs": "professors", "techs": "technicians", "reps": "representatives", "admins": "administrators",
+    "grads": "graduates", "mgr": "manager", "mgrs": "managers", "hubby": "husband", "kiddos": "kids",
 }
 
 # ---- people ---------------------------------------------------------------------------------
@@ -247,6 +251,12 @@ START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum watch "
                                   "hoover scrub tidy".split())
+# Verbs of a purpose ("to reach the ICU", "to get to the pharmacy") whose object, or the place after
+# their "to", is where people go; PURPOSE_OBJECT_VERBS take it as an object ("to use the toilets").
+PURPOSE_OBJECT_VERBS = frozenset("use board".split())
+PURPOSE_PLACE_VERBS = DESTINATION_OBJECT_VERBS | PURPOSE_OBJECT_VERBS | frozenset("get go head make return run hurry".split())
+# Verbs whose object is a place or a thing in it ("mop the corridor", "clean the windows in the hall").
+THING_OR_PLACE_VERBS = frozenset("clean mop sweep vacuum hoover scrub tidy search fill wipe polish dust".split())
 # Verbs whose object is what people look at ("watch TV"): where they are, unless a place is named too.
 SEEN_OBJECT_VERBS = frozenset({"watch"})
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
@@ -256,6 +266,8 @@ ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end delive
 # "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.
 TRANSACTION_VERBS = frozenset("buy purchase get collect pick fetch order borrow take grab withdraw".split())
 DEPARTURE_VERBS = frozenset("leave exit evacuate flee escape vacate depart".split())
+# Getting on a plane or train: a door they board through or by is where they end (no evacuation).
+BOARDING_VERBS = frozenset("board embark".split())
 # "head for the exit": `for` marks a destination only after these; otherwise it is a purpose.
 FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race beeline".split())
 STATIONARY_INTENTS = frozenset({"queue", "wait", "converse", "wander"})

@@ -63,11 +63,35 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
             for tail in lx.ROBOT_APPROACH_TAILS:
                 if s.phrase_words(i + 1, len(tail), ownset) == tail:
                     return "approach"  # "the twins toddle up to the robot"
-        if v in lx.ROBOT_VERBS and not s.after_determiner(i):
+            if _sent_to_robot(s, ownset, i, r):
+                return "approach"  # "hurries to the robot", "runs from the lobby to it"
+        if v in lx.ROBOT_VERBS and not s.after_determiner(i) and not _object_elsewhere(s, i, r):
             return lx.ROBOT_VERBS[v]
         if s.lemma(i) in lx.ROBOT_NOUNS:
             return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"
     return None
+
+
+def _sent_to_robot(s: Sentence, ownset: set[int], i: int, r: int) -> bool:
+    """Whether the robot at r is where the verb of walking at i goes: "to the robot" in the same
+    clause, though a place may come between ("hurries from the boardroom to the robot"); not the
+    robot's things ("to the robot's dock")."""
+    back = r - 1
+    while back > i and s.low[back] in lx.DETERMINERS:
+        back -= 1
+    if back <= i or s.low[back] not in ("to", "towards", "toward") or s.low[r] in ("its",):
+        return False
+    if r + 1 < s.n and s.low[r + 1] in ("'s", "’s", "'"):
+        return False
+    return all(k in ownset and not s.is_punct(k) and s.low[k] not in lx.CLAUSE_STARTERS for k in range(i + 1, back))
+
+
+def _object_elsewhere(s: Sentence, i: int, r: int) -> bool:
+    """Whether the verb at i has an object of its own before the robot at r: "the kids watch TV while
+    the robot vacuums", "two guards check their phones as it passes" look at something else."""
+    k = s.skip(i + 1, lx.DETERMINERS | lx.NP_MODIFIERS)
+    return k < r and s.w[k].pos in ("NOUN", "PROPN") and s.low[k] not in lx.ROBOT_WORDS and \
+        s.low[i + 1] not in ("it", "its")
 
 
 def _noun_after(s: Sentence, ownset: set[int], r: int) -> str | None:

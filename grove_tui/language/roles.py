@@ -83,7 +83,7 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return "via"
     if prep in lx.VIA_PREPOSITIONS:
         return _through(index, p, verb, stationary, intent, is_door)
-    if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS or intent == "evacuate"):
+    if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS | lx.BOARDING_VERBS or intent == "evacuate"):
         return "destination"
     if prep == "by" and is_door and verb in lx.ARRIVAL_VERBS and _is_exit(index, p):
         return "start"  # "arrive by the side entrance": in from outside
@@ -94,6 +94,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
     # at / in / on / near / around ...
     if stationary:
         return "location"
+    if intent == "robot" and not from_scene and (verb_index is None or p.index > verb_index):
+        return "location"  # "runs up to the robot beside the kiosk": where they meet it
     if from_scene or verb_index is None or p.index < verb_index:
         return "start"
     return "destination" if verb in lx.ARRIVAL_VERBS else "start"
@@ -102,7 +104,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
 def _through(index: PlaceIndex, p: Place, verb: str, stationary: bool, intent: str, is_door: bool) -> str:
     if stationary and not is_door:
         return "location"  # "pace up and down the corridor", "wander through the concourse"
-    if is_door and (verb in lx.DEPARTURE_VERBS | {"evacuate"} or intent == "evacuate"):
+    if is_door and (verb in lx.DEPARTURE_VERBS | lx.BOARDING_VERBS | {"evacuate"} or intent == "evacuate"):
+        # "leave through the side door", "board through the jet bridge": out of the scene there
         return "destination"
     entry = index.entry(p.match.name) if is_door and p.match is not None else None
     if entry is not None and entry.exit and verb not in lx.ARRIVAL_VERBS:
