@@ -25,6 +25,7 @@ import math
 import os
 import threading
 from collections import OrderedDict
+from collections.abc import Sequence
 import hashlib
 import weakref
 from concurrent.futures import ThreadPoolExecutor
@@ -42,6 +43,10 @@ from grove_tui.world import World
 
 if TYPE_CHECKING:
     from grove_tui.navigation.door_graph import DoorGraph
+    from grove_tui.navigation.velocity_field import VelocityField
+
+# PlanCache's key: world, resolution, inflation, kind, then the points (or a grid's shape) it is for
+CacheKey = tuple[str, float, float, str, tuple[float, ...] | tuple[int, ...]]
 
 
 SQRT2 = math.sqrt(2.0)
@@ -672,7 +677,7 @@ class ThetaStarPlanner:
             shared.geodesics.move_to_end(key)
             return found
 
-    def path_in_tree(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+    def path_in_tree(self, start: Sequence[float], goal: Sequence[float], start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
         """`plan(start, goal)` read off the goal's shortest-path tree (`geodesic`): no search of its own, so
         every agent heading to one goal costs one Dijkstra in all. The tree's corners are pulled tight."""
         sx, sy = (float(v) for v in start)
@@ -822,7 +827,8 @@ class ThetaStarPlanner:
     def _block_cols(self) -> int:
         return (self.occupied.shape[1] + self.guide_block - 1) // self.guide_block
 
-    def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+    def plan(self, start: Sequence[float], goal: Sequence[float], start_label: str = "start",
+             goal_label: str = "goal") -> np.ndarray:
         """(K, 2) float64 world points from `start` to `goal` inclusive, every segment collision-free.
 
         An endpoint inside an obstacle (or on the border of one) but within one cell of free space is
@@ -868,7 +874,9 @@ class ThetaStarPlanner:
                 shared.door_graphs[key] = graph
             return graph
 
-    def _with_endpoints(self, start_cell, goal_cell, corners, sx, sy, gx, gy) -> np.ndarray:
+    def _with_endpoints(self, start_cell: tuple[int, int], goal_cell: tuple[int, int],
+                        corners: list[tuple[float, float]], sx: float, sy: float, gx: float,
+                        gy: float) -> np.ndarray:
         """The exact endpoints joined to a path of cell centres (`corners`, from the start's cell to the goal's)."""
         points = [(sx, sy)]
         interior = corners[1:-1]
@@ -937,19 +945,20 @@ class PlanCache:
     Bounded LRU; the TUI keeps one per session so re-generating a scenario does not re-plan what it has.
     """
 
-    def __init__(self, max_entries: int = 4096):
+    def __init__(self, max_entries: int = 4096) -> None:
         self.max_entries = max_entries
-        self._entries: OrderedDict = OrderedDict()
+        # a planner, a path (np.ndarray) or a VelocityField, by a key whose fourth part names the kind
+        self._entries: OrderedDict[CacheKey, object] = OrderedDict()
         self._lock = threading.Lock()
         self.hits = 0
         self.misses = 0
 
     @staticmethod
-    def key(world_name: str, resolution: float, inflation: float, kind: str, *points) -> tuple:
+    def key(world_name: str, resolution: float, inflation: float, kind: str, *points: Sequence[float]) -> CacheKey:
         rounded = tuple(round(float(v), 2) + 0.0 for p in points for v in p)
         return (str(world_name), round(float(resolution), 6), round(float(inflation), 6), kind, rounded)
 
-    def get(self, key):
+    def get(self, key: CacheKey) -> object | None:
         with self._lock:
             if key in self._entries:
                 self._entries.move_to_end(key)
@@ -958,7 +967,7 @@ class PlanCache:
             self.misses += 1
             return None
 
-    def put(self, key, value) -> None:
+    def put(self, key: CacheKey, value: object) -> None:
         with self._lock:
             self._entries[key] = value
             self._entries.move_to_end(key)
@@ -968,36 +977,36 @@ class PlanCache:
     def __len__(self) -> int:
         return len(self._entries)
 
-    def planner(self, grid, landmarks: int | None = None) -> ThetaStarPlanner:
+    def planner(self, grid: OccupancyGrid, landmarks: int | None = None) -> ThetaStarPlanner:
         """One planner per (world, resolution, inflation): its landmark maps cost seconds on big grids."""
         key = (str(getattr(grid, "world_name", "")), round(float(grid.resolution), 6),
                round(float(getattr(grid, "inflation", 0.0)), 6), "planner", grid.occupied.shape)
         planner = self.get(key)
-        if planner is None or planner.grid is not grid and not np.array_equal(planner.occupied, grid.occupied):
+        if not isinstance(planner, ThetaStarPlanner) or planner.grid is not grid and not np.array_equal(planner.occupied, grid.occupied):
             planner = ThetaStarPlanner(grid, landmarks=landmarks)
             self.put(key, planner)
         return planner
 
-    def plan(self, world_name: str, planner: ThetaStarPlanner, start, goal,
+    def plan(self, world_name: str, planner: ThetaStarPlanner, start: Sequence[float], goal: Sequence[float],
              start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
         """`planner.plan` through the cache (errors are not cached: they are cheap to reproduce)."""
         key = self.key(world_name, planner.resolution, getattr(planner.grid, "inflation", 0.0), "path", start, goal)
         path = self.get(key)
-        if path is None:
+        if not isinstance(path, np.ndarray):
             path = planner.plan(start, goal, start_label=start_label, goal_label=goal_label)
             path.setflags(write=False)
             self.put(key, path)
         return path
 
-    def field(self, world_name: str, planner: ThetaStarPlanner, start, exit_point,
-              start_label: str = "group", exit_label: str = "exit"):
+    def field(self, world_name: str, planner: ThetaStarPlanner, start: Sequence[float], exit_point: Sequence[float],
+              start_label: str = "group", exit_label: str = "exit") -> VelocityField:
         """Velocity field from a group centroid to an exit, planned and built once per key."""
-        from grove_tui.navigation.velocity_field import build_velocity_field
+        from grove_tui.navigation.velocity_field import VelocityField, build_velocity_field
 
         key = self.key(world_name, planner.resolution, getattr(planner.grid, "inflation", 0.0), "field",
                        start, exit_point)
         field = self.get(key)
-        if field is None:
+        if not isinstance(field, VelocityField):
             # the group's path is read off the exit's shortest-path tree, which the field is built on
             # too: one Dijkstra per exit serves the exit choice, every group's path and every field
             path = planner.path_in_tree(start, exit_point, start_label=start_label, goal_label=exit_label)

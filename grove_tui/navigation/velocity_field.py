@@ -16,6 +16,8 @@ an occupied cell (the property tests integrate it from sampled cells of every sh
 from __future__ import annotations
 
 import math
+import os
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -26,7 +28,7 @@ from scipy.spatial import cKDTree
 from grove_tui.errors import FieldFileError
 from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
-from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
+from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION, OccupancyGrid
 from grove_tui.limits import MAX_PADDED_COORDINATE as MAX_COORDINATE
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, line_of_sight
 
@@ -60,7 +62,7 @@ class VelocityField:
     def reachable(self) -> np.ndarray:
         return np.any(self.vectors != 0.0, axis=2)
 
-    def save(self, path) -> Path:
+    def save(self, path: str | os.PathLike[str]) -> Path:
         arrays: dict[str, np.ndarray | np.generic] = {
             "origin": np.asarray(self.origin, dtype=np.float64),
             "resolution": np.float64(self.resolution),
@@ -71,7 +73,7 @@ class VelocityField:
         return write_bytes_atomic(path, npz_bytes(arrays))
 
     @classmethod
-    def load(cls, path) -> VelocityField:
+    def load(cls, path: str | os.PathLike[str]) -> VelocityField:
         """Read a field saved by `save`. The unpacked size is checked from the zip headers first (a
         3 MB zip bomb would otherwise unpack to gigabytes), then every value is checked."""
         try:
@@ -308,7 +310,7 @@ def _resample(points_cells: np.ndarray, spacing: float) -> np.ndarray:
     return np.asarray(samples, dtype=np.float64)
 
 
-def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
+def build_velocity_field(grid: OccupancyGrid, path: np.ndarray, exit_point: Sequence[float], exit_label: str = "exit",
                          planner: ThetaStarPlanner | None = None) -> VelocityField:
     """Field over `grid` following `path` (a planned (K, 2) world path ending at the exit) to `exit_point`.
 
