@@ -63,7 +63,7 @@ LANDMARK_UNREACHABLE = 65535  # uint16 landmark entry of a cell the landmark can
 
 
 @numba.njit(cache=True, nogil=True)
-def line_of_sight(sight_rows, sight_cols, r0, c0, r1, c1):
+def line_of_sight(sight_rows: np.ndarray, sight_cols: np.ndarray, r0: int, c0: int, r1: int, c1: int) -> bool:
     """True when the segment between the centres of cells (r0, c0) and (r1, c1) touches no occupied cell.
 
     Walks the segment one column (or row, for steep segments) at a time; in column i of D the
@@ -125,7 +125,7 @@ def line_of_sight(sight_rows, sight_cols, r0, c0, r1, c1):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _step_allowed(sight_rows, r, c, nr, nc):
+def _step_allowed(sight_rows: np.ndarray, r: int, c: int, nr: int, nc: int) -> bool:
     height, width = sight_rows.shape
     if nr < 0 or nr >= height or nc < 0 or nc >= width or sight_rows[nr, nc] == 0:
         return False
@@ -135,7 +135,7 @@ def _step_allowed(sight_rows, r, c, nr, nc):
 
 
 @numba.njit(cache=True, nogil=True)
-def connected_components(occupied):
+def connected_components(occupied: np.ndarray) -> np.ndarray:
     """Label 8-connected free regions (diagonal steps need both orthogonal neighbours free); -1 = occupied."""
     height, width = occupied.shape
     labels = np.full((height, width), -1, dtype=np.int32)
@@ -175,7 +175,7 @@ def connected_components(occupied):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heap_push(heap, size, f, g, node):
+def _heap_push(heap: np.ndarray, size: int, f: float, g: float, node: int) -> int:
     i = size
     while i > 0:
         up = (i - 1) >> 1
@@ -193,7 +193,7 @@ def _heap_push(heap, size, f, g, node):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heap_pop(heap, size):
+def _heap_pop(heap: np.ndarray, size: int) -> int:
     size -= 1
     f = heap[size, 0]
     g = heap[size, 1]
@@ -222,7 +222,7 @@ def _heap_pop(heap, size):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heap_room(heap, size):
+def _heap_room(heap: np.ndarray, size: int) -> np.ndarray:
     if size < heap.shape[0]:
         return heap
     bigger = np.empty((2 * heap.shape[0], 3), dtype=np.float64)
@@ -231,7 +231,7 @@ def _heap_room(heap, size):
 
 
 @numba.njit(cache=True, nogil=True)
-def any_angle_distances(sight_rows, sight_cols, sr, sc):
+def any_angle_distances(sight_rows: np.ndarray, sight_cols: np.ndarray, sr: int, sc: int) -> tuple[np.ndarray, np.ndarray]:
     """Theta*-style Dijkstra from cell (sr, sc) over its whole free region.
 
     Returns flat (H * W) distances in cells (inf where unreachable) and parents (-1 there): every
@@ -285,7 +285,7 @@ def any_angle_distances(sight_rows, sight_cols, sr, sc):
 
 
 @numba.njit(cache=True, nogil=True)
-def hop_distances(sight_rows, sr, sc):
+def hop_distances(sight_rows: np.ndarray, sr: int, sc: int) -> np.ndarray:
     """Breadth-first 8-connected step counts from (sr, sc), flat; -1 where unreachable (cheap, for placing landmarks)."""
     height, width = sight_rows.shape
     hops = np.full(height * width, -1, dtype=np.int32)
@@ -314,7 +314,7 @@ def hop_distances(sight_rows, sr, sc):
 
 
 @numba.njit(cache=True, nogil=True)
-def _store_landmark(table, column, distance, scale):
+def _store_landmark(table: np.ndarray, column: int, distance: np.ndarray, scale: float) -> None:
     # Rounded to 1/scale cell; the heuristic takes one unit off the difference, so the bound stays
     # below the true distance difference. Clamping keeps it a lower bound (|clamp a - clamp b| <= |a - b|).
     for i in range(distance.shape[0]):
@@ -326,8 +326,9 @@ def _store_landmark(table, column, distance, scale):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heuristic(landmarks, goal_row, use_landmarks, inv_scale, node, nr, nc, gr, gc, guide, guide_block, guide_cols,
-               guide_slack):
+def _heuristic(landmarks: np.ndarray, goal_row: np.ndarray, use_landmarks: bool, inv_scale: float, node: int,
+               nr: int, nc: int, gr: int, gc: int, guide: np.ndarray, guide_block: int, guide_cols: int,
+               guide_slack: float) -> float:
     # Euclidean, raised by the landmark (ALT) bound. Both are lower bounds of the 8-connected grid
     # distance to the goal (the landmark maps are edge-consistent), which is all the "never longer
     # than A*" argument needs; being any-angle distances they also stay nearly consistent with
@@ -336,7 +337,7 @@ def _heuristic(landmarks, goal_row, use_landmarks, inv_scale, node, nr, nc, gr, 
     h = math.sqrt((gr - nr) * (gr - nr) + (gc - nc) * (gc - nc))
     if use_landmarks:
         row = landmarks[node]
-        widest = 0
+        widest: int | np.int64 = 0
         for l in range(row.shape[0]):
             gap = np.int64(goal_row[l]) - np.int64(row[l])
             if gap < 0:
@@ -354,8 +355,9 @@ def _heuristic(landmarks, goal_row, use_landmarks, inv_scale, node, nr, nc, gr, 
 
 
 @numba.njit(cache=True, nogil=True)
-def theta_star_cells(sight_rows, sight_cols, landmarks, inv_scale, sr, sc, gr, gc, g_cost, parent, touched,
-                     guide, guide_block, guide_cols, guide_slack):
+def theta_star_cells(sight_rows: np.ndarray, sight_cols: np.ndarray, landmarks: np.ndarray, inv_scale: float,
+                     sr: int, sc: int, gr: int, gc: int, g_cost: np.ndarray, parent: np.ndarray, touched: np.ndarray,
+                     guide: np.ndarray, guide_block: int, guide_cols: int, guide_slack: float) -> np.ndarray:
     """Theta* from cell (sr, sc) to (gr, gc); returns the (K, 2) int64 array of path cells, empty if none.
 
     `landmarks` is the (H * W, L) uint16 table in units of 1 / `inv_scale` cells (L may be 0);
@@ -455,7 +457,7 @@ def theta_star_cells(sight_rows, sight_cols, landmarks, inv_scale, sr, sc, gr, g
 
 
 @numba.njit(cache=True, nogil=True)
-def block_graph(occupied, block):
+def block_graph(occupied: np.ndarray, block: int) -> np.ndarray:
     """(rows, cols, 8) bool: whether each block of `block` x `block` cells reaches its neighbour in
     direction k (the order of _NEIGHBOUR_DR/_DC) through a step the grid allows."""
     height, width = occupied.shape
@@ -493,7 +495,7 @@ def block_graph(occupied, block):
 
 
 @numba.njit(cache=True, nogil=True)
-def block_distances(joined, goal_row, goal_col, block):
+def block_distances(joined: np.ndarray, goal_row: int, goal_col: int, block: int) -> np.ndarray:
     """Flat octile distances in cells from the goal's block to every block (inf where unjoined)."""
     rows, cols = joined.shape[0], joined.shape[1]
     distance = np.full(rows * cols, np.inf)
@@ -900,7 +902,8 @@ class ThetaStarPlanner:
 
 
 @numba.njit(cache=True, nogil=True)
-def segment_is_free(occupied, centre_x, centre_y, resolution, x0, y0, x1, y1):
+def segment_is_free(occupied: np.ndarray, centre_x: float, centre_y: float, resolution: float, x0: float, y0: float, x1: float,
+                    y1: float) -> bool:
     """Exact test of a world-space segment against occupied cell squares (touching counts as a hit)."""
     height, width = occupied.shape
     # cell units with integer cell centres; a cell (r, c) covers [c - 1/2, c + 1/2] x [r - 1/2, r + 1/2]
