@@ -476,11 +476,11 @@ class Mentions:
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
-                    or self.robot_object(at) is not None) \
+                    or self.robot_object(at) is not None or self.led_by(at)) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
-                               exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
+                               exclusive=exclusive)  # "Mum cooks in the kitchen", "a carer helps grandpa": one person, by a role
             return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
         low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
         parent = self.parent(found)

@@ -45,13 +45,13 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             # "to the café and then the pharmacy": the café on the way, the pharmacy where they end
             roles.via.append(roles.destination)
             roles.destination = name
-        elif role == "start" and (roles.start is None or narrower(index, name, roles.start)):
+        elif role == "start" and (roles.start is None or _narrows(index, name, roles.start, roles)):
             roles.start = name
-        elif role == "destination" and (roles.destination is None or narrower(index, name, roles.destination)
+        elif role == "destination" and (roles.destination is None or _narrows(index, name, roles.destination, roles)
                                         or (marked and not said_to)):
             # "drops her bags off at the lockers and heads to the café": the café
             roles.destination, said_to = name, said_to or marked
-        elif role == "location" and (roles.location is None or narrower(index, name, roles.location)):
+        elif role == "location" and (roles.location is None or _narrows(index, name, roles.location, roles)):
             roles.location = name
         elif role == "location" and roles.start is None and roles.location is not None and name != roles.location and \
                 any(roles.read_from[roles.location].index < t < p.index for t in then_at):
@@ -65,6 +65,18 @@ def narrower(index: PlaceIndex, name: str, than: str) -> bool:
     """Whether `name` is a door or thing inside the zone `than` ("the coffee machine in the kitchen")."""
     entry = index.entry(name)
     return entry is not None and entry.kind != "zone" and entry.zone == than
+
+
+def _narrows(index: PlaceIndex, name: str, than: str, roles: Roles) -> bool:
+    """Whether `name` is a fixture inside the place `than` was read as, or inside one of the places
+    its phrase fitted as well: "in the vast hall under the departures board" is the hall with the
+    board, whichever hall the words alone chose."""
+    if narrower(index, name, than):
+        return True
+    entry = index.entry(name)
+    said = roles.read_from.get(than)
+    return entry is not None and entry.kind != "zone" and said is not None and said.score < 1.0 and \
+        entry.zone in said.alternatives
 
 
 def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stationary: bool, intent: str,

@@ -166,3 +166,51 @@ def test_short_names_of_people_are_people(worlds, world, prompt, label, value):
 def test_a_rooms_fixture_named_by_its_own_kind_is_the_fixture(worlds, world, prompt, place):
     g, = read(worlds, world, prompt).groups
     assert (g.location or g.destination) == place
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("station", "A crowd gathers in the vast hall under the departures board.", "departure_board"),
+    ("station", "Two friends meet in the big hall by the travel centre.", "travel_centre"),
+    ("hospital", "Visitors sit in the waiting area near the TV.", "waiting_room_tv"),
+    ("museum", "A school group waits in the hall beside the whale.", "whale_skeleton"),
+])
+def test_a_fixture_said_after_a_room_words_leave_unsure_decides_it(worlds, world, prompt, location):
+    g, = read(worlds, world, prompt).groups
+    assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("station", "Eight commuters leave the waiting room for the café; the others stay on the benches.", "waiting_benches"),
+    ("hospital", "Four visitors go from the waiting room to the pharmacy and three others remain in the chairs.",
+     "waiting_chairs_row_1"),
+    ("museum", "Twelve pupils walk from the great hall to the café, four others remain on the benches.",
+     "great_hall_benches"),
+])
+def test_the_others_stay_at_the_fixture_where_the_group_was(worlds, world, prompt, location):
+    walkers, others = read(worlds, world, prompt).groups
+    assert others.relation == "others_of:0" and others.location == location and walkers.intent == "walk"
+
+
+def test_the_others_at_a_fixture_named_in_full_keep_it(worlds):
+    _, others = read(worlds, "station", "Ten passengers go from the waiting room to platform 1, three others "
+                                        "remain on the platform 1 bench.").groups
+    assert others.location == "platform_1_bench"
+
+
+@pytest.mark.parametrize("world,prompt,route", [
+    ("residential", "A carer helps grandpa from the bathroom to the sofa.", ("bathroom", "sofa")),
+    ("hospital", "A porter wheels grandma from ward A to radiology.", ("ward_a", "radiology")),
+    ("residential", "Dad carries baby from the kitchen to the bedroom.", ("kitchen", "master_bedroom")),
+])
+def test_a_family_name_taken_along_is_a_group_that_follows(worlds, world, prompt, route):
+    leader, taken = read(worlds, world, prompt).groups
+    assert (leader.start, leader.destination) == route and taken.intent == "follow" and taken.count.value == 1
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("residential", "A nurse helps two kids in the kitchen.", "kitchen"),
+    ("museum", "A guide helps three pupils at the craft tables.", "craft_tables"),
+])
+def test_helping_with_no_route_is_staying_there(worlds, world, prompt, location):
+    helper, helped = read(worlds, world, prompt).groups
+    assert (helper.intent, helper.location) == ("wait", location) and helped.location == location
