@@ -63,7 +63,7 @@ if TYPE_CHECKING:
     from grove_tui.generation.pipeline import GenerationResult
 
 # A mapping of the agents YAML as parsed: its values are the file's own until each is checked.
-YamlMapping = dict[str, Any]
+YamlMapping = dict[str, Any]  # Any: YAML values, each checked where it is read
 
 OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a synthesized world
 # A HuNavSim scenario of MAX_SCENARIO_AGENTS agents is well under a megabyte of YAML.
@@ -251,7 +251,7 @@ def _behavior(entry: YamlMapping, layout: str, where: str) -> tuple[str, HunavBe
                                f"{', '.join(BEHAVIOR_TYPES)} (1.0 numbers them: {numbers})")
     if block is None:
         return name, None
-    values: dict[str, Any] = {}  # HunavBehavior's keyword arguments, each checked below
+    values: dict[str, Any] = {}  # Any: HunavBehavior's keyword arguments, the numbers checked below, the rest by the loader check
     for key in HunavBehavior.__dataclass_fields__:
         value = block.get(key)
         if value is not None and key not in ("configuration", "once"):

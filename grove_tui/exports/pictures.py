@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 from rich.text import Text
 
-from grove_tui.files import check_output_file, write_bytes_atomic
+from grove_tui.files import FileGuard, check_output_file, write_bytes_atomic
 from grove_tui.errors import PictureError
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import World
@@ -76,8 +76,8 @@ def draw_scenario(world: World, scenario: Scenario, bundle_dir: str | Path, out_
     fmt = out.suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
         raise PictureError(f"{out}: picture format must be .png, .svg or .pdf")
-    guard = dict(owned=is_grove_picture, what="picture GROVE drew", overwrite=overwrite)
-    check_output_file(out, **guard)  # type: ignore[arg-type]  # before the drawing, not after it
+    guard = FileGuard(owned=is_grove_picture, what="picture GROVE drew", overwrite=overwrite)
+    check_output_file(out, **guard)  # before the drawing, not after it
     bundle = Path(bundle_dir)
 
     xmin, ymin, xmax, ymax = world.bounds()

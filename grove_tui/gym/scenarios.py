@@ -113,7 +113,6 @@ def generation_key(world: str, preset: str, prompt: str, seed: int, models: Sequ
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:20]
 
 
-# backend: Any, the app's engine backend or a stand-in with its model_status() and generate()
 def generated_scenarios(world: str, preset: str, prompt: str, seeds: Iterable[int], *,
                         cache: str | os.PathLike[str] | None = None,
                         session: GroveSession | None = None) -> list[Path]:

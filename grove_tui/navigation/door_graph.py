@@ -18,12 +18,12 @@ import math
 import threading
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import shapely
 
 from grove_tui.files import npz_bytes, write_bytes_atomic
+from grove_tui.world import World, Zone
 from grove_tui.navigation.theta_star import (
     ThetaStarPlanner,
     any_angle_distances,
@@ -59,7 +59,7 @@ class ZoneCells:
         return 0 <= r < self.occupied.shape[0] and 0 <= c < self.occupied.shape[1] and not self.occupied[r, c]
 
 
-def _zone_cells(zone: Any, planner: ThetaStarPlanner) -> tuple[int, int, np.ndarray]:
+def _zone_cells(zone: Zone, planner: ThetaStarPlanner) -> tuple[int, int, np.ndarray]:
     """(r0, c0, occupied crop) of the cells within ZONE_MARGIN_CELLS of the zone's polygon."""
     res = planner.resolution
     margin = ZONE_MARGIN_CELLS * res
@@ -83,7 +83,7 @@ def _zone_cells(zone: Any, planner: ThetaStarPlanner) -> tuple[int, int, np.ndar
 class DoorGraph:
     """Zones and doors of `world` on `planner`'s grid (see the module docstring)."""
 
-    def __init__(self, world: Any, planner: ThetaStarPlanner, cache_dir: Path | None = None) -> None:
+    def __init__(self, world: World, planner: ThetaStarPlanner, cache_dir: Path | None = None) -> None:
         self.world = world
         self.planner = planner
         self.zones: list[ZoneCells] = []

@@ -30,13 +30,18 @@ import weakref
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numba
 import numpy as np
 from scipy.ndimage import distance_transform_edt
 
 from grove_tui.errors import PlanningError
+from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.world import World
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.door_graph import DoorGraph
 
 
 SQRT2 = math.sqrt(2.0)
@@ -573,7 +578,7 @@ class _SharedMaps:
     sight_rows: np.ndarray
     sight_cols: np.ndarray
     components: np.ndarray
-    lock: Any = field(default_factory=threading.RLock)
+    lock: threading.RLock = field(default_factory=threading.RLock)
     block_graph: np.ndarray | None = None
     guides: OrderedDict = field(default_factory=OrderedDict)
     geodesics: OrderedDict = field(default_factory=OrderedDict)
@@ -585,7 +590,7 @@ _SHARED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _SHARED_LOCK = threading.Lock()
 
 
-def _shared_maps(grid: Any, occupied: np.ndarray) -> _SharedMaps:
+def _shared_maps(grid: OccupancyGrid, occupied: np.ndarray) -> _SharedMaps:
     """The grid's shared maps, rebuilt when its cells changed since (a grid object is not always read-only)."""
     fingerprint = hashlib.blake2b(np.packbits(occupied).tobytes() + str(occupied.shape).encode(),
                                   digest_size=16).digest()
@@ -619,7 +624,8 @@ class ThetaStarPlanner:
     (the kernels release the GIL).
     """
 
-    def __init__(self, grid, landmarks: int | None = None, world: Any = None, door_graph_dir: Path | None = None):
+    def __init__(self, grid: OccupancyGrid, landmarks: int | None = None, world: World | None = None,
+                 door_graph_dir: Path | None = None):
         self.grid = grid
         # With the grid's world (given, or the one build_grid made the grid from), plans between
         # zones go through its door graph (door_graph.py), built on first use or read from the data dir.
@@ -847,7 +853,7 @@ class ThetaStarPlanner:
         return self._with_endpoints(start_cell, goal_cell, corners, sx, sy, gx, gy)
 
     @property
-    def door_graph(self) -> Any:
+    def door_graph(self) -> DoorGraph | None:
         """The world's DoorGraph on this grid (None without a world), built or loaded on first use."""
         if self.world is None or not getattr(self.world, "zones", None) or self.landmark_count:
             return None  # landmarks ask for exact Theta* paths: the door graph's are pulled tight, not exact

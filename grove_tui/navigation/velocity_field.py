@@ -61,7 +61,7 @@ class VelocityField:
         return np.any(self.vectors != 0.0, axis=2)
 
     def save(self, path) -> Path:
-        arrays = {
+        arrays: dict[str, np.ndarray | np.generic] = {
             "origin": np.asarray(self.origin, dtype=np.float64),
             "resolution": np.float64(self.resolution),
             "vectors": self.vectors.astype(np.float32),

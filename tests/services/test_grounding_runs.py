@@ -59,6 +59,10 @@ def test_reactions_to_the_robot_happen_and_blocking_slows_it(tmp_path, session):
     assert follow.status == "holds", follow.evidence
     assert block.status == "holds" and "slowed it" in block.evidence, block.evidence
     assert any(json.loads(line)["kind"] == "robot_stopped" for line in (bundle / "events.jsonl").read_text().splitlines())
+    # Blocking is standing in the way, not in the robot's body: the blocker's forces keep the robot as an
+    # obstacle (it had ignored it and stood inside it, 19 robot-on-person contacts in a 40 s mall run).
+    robot = json.loads((bundle / "metrics.json").read_text())["robot"]
+    assert robot["robot_on_person_collision"] == 0, robot
 
 
 def test_the_robot_is_a_subject_and_groups_never_take_its_places(tmp_path, session):

@@ -21,7 +21,7 @@ from grove_tui.crowd.leaves.base import (
 )
 from grove_tui.errors import BTError
 from grove_tui.crowd.sfm import (
-    MODE_FACE, MODE_GOALS, MODE_STOP, ROBOT_AS_AGENT, ROBOT_FEARED, ROBOT_IGNORED,
+    MODE_FACE, MODE_GOALS, MODE_STOP, ROBOT_AS_AGENT, ROBOT_AS_OBSTACLE, ROBOT_FEARED, ROBOT_IGNORED,
 )
 
 # What an agent turns to (Crowd.set_face_target): a point, another agent's row, or the robot.
@@ -629,7 +629,7 @@ class BlockRobot(_Timed):
     LABEL = "blocking the robot"
 
     def begin(self) -> None:
-        self.sim.crowd.set_robot_interaction(self.row, ROBOT_IGNORED)
+        self.sim.crowd.set_robot_interaction(self.row, ROBOT_AS_OBSTACLE)
 
     def step(self) -> None:
         robot = self.sim.robot
