@@ -216,7 +216,8 @@ class Sentence:
             for phrase in lx.TOGETHER_PHRASES:
                 end = i + len(phrase)
                 if tuple(self.low[i:end]) == phrase:
-                    if end < self.n and verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
-                        continue  # "as a family talks": the family is who the clause is about
+                    if end < self.n and (verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys()
+                                         or self.w[end].tag in ("VBZ", "VBD", "VBP", "MD")):
+                        continue  # "as a family talks", "as a family buys tickets": who the clause is about
                     out.update(range(i, end))
         return frozenset(out)

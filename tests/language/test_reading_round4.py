@@ -214,3 +214,23 @@ def test_a_family_name_taken_along_is_a_group_that_follows(worlds, world, prompt
 def test_helping_with_no_route_is_staying_there(worlds, world, prompt, location):
     helper, helped = read(worlds, world, prompt).groups
     assert (helper.intent, helper.location) == ("wait", location) and helped.location == location
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("mall", "Four teens queue at the burger conter.", "burger_counter"),
+    ("mall", "A man sits on the atrium bech.", "atrium_benches"),
+    ("hospital", "Two porters push a trolley to the food cort.", "cafeteria"),
+])
+def test_a_misspelling_near_two_names_is_the_one_that_completes_a_name(worlds, world, prompt, place):
+    reading = read(worlds, world, prompt)
+    g, = reading.groups
+    assert reading.corrections and (g.location or g.destination) == place
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("station", "The robot waits by the ticket machines as a family buys tickets.", "family"),
+    ("museum", "The robot idles in the foyer while a couple buys a guidebook.", "couple"),
+])
+def test_a_collective_that_is_a_subject_is_no_manner_phrase(worlds, world, prompt, label):
+    g, = read(worlds, world, prompt).groups
+    assert g.label == label and g.count.kind == "implied"
