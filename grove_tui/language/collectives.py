@@ -93,6 +93,11 @@ class Collectives:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self.people.label(member)
+        if label == noun and head > 0 and self.people.is_person_noun(head - 1) and self.people.collective_after(head - 1):
+            at = min(at, head - 1)
+            while at > 0 and (low[at - 1] in ("a", "an", "the", "their", "our", "his", "her") or low[at - 1] in lx.NP_MODIFIERS):
+                at -= 1
+            label = self.people.label(head - 1)  # "the security team": security staff, as many as a team
         count = self._collective_count(noun, label, size, parties, exact_parties, together, head)
         if not exact_parties and count.parties:
             # the number of parties is a seeded guess: the range runs over every number it could be

@@ -50,8 +50,8 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 # Collective nouns: a size when the prompt gives none, and whether the members move together.
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
-    "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
-    "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
+    "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3),
+    "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})

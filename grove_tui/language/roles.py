@@ -7,11 +7,12 @@ from its preposition or verb, the group's intent and where the phrase stands aga
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_phrases import Place
-from grove_tui.language.places import PlaceIndex
+from grove_tui.language.places import PlaceIndex, PlaceMatch
+from grove_tui.language.tokens import phrase_lemmas
 
 
 @dataclass
@@ -53,6 +54,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             roles.destination, said_to = name, said_to or marked
         elif role == "location" and (roles.location is None or _narrows(index, name, roles.location, roles)):
             roles.location = name
+        elif role in ("location", "destination", "start") and getattr(roles, role) is not None and \
+                p not in scene_places and (inside := _fixture_inside(index, getattr(roles, role), p, roles)) is not None:
+            setattr(roles, role, inside)  # "on a bench in the modern art gallery": that gallery's bench
         elif role == "location" and roles.start is None and roles.location is not None and name != roles.location and \
                 any(roles.read_from[roles.location].index < t < p.index for t in then_at):
             roles.start, roles.location = roles.location, name
@@ -77,6 +81,26 @@ def _narrows(index: PlaceIndex, name: str, than: str, roles: Roles) -> bool:
     said = roles.read_from.get(than)
     return entry is not None and entry.kind != "zone" and said is not None and said.score < 1.0 and \
         entry.zone in said.alternatives
+
+
+def _fixture_inside(index: PlaceIndex, current: str, room: Place, roles: Roles) -> str | None:
+    """A fixture said, then the room it is in ("a bench in the modern art gallery"): the fixture of
+    that room its words name, when the words chose one in another room; the room itself when none
+    there fits and the words were not sure. None when nothing changes."""
+    zone = room.match.name if room.match is not None else ""
+    here, there = index.entry(current), index.entry(zone)
+    said = roles.read_from.get(current)
+    if here is None or there is None or said is None or here.kind == "zone" or there.kind != "zone" or \
+            here.zone == there.name or room.index < said.index:
+        return None
+    content = {t for t in phrase_lemmas(list(said.words)) if t not in lx.DETERMINERS}
+    fits = [e for e in index.entries if e.kind == here.kind and e.zone == there.name and content and content <= e.tokens]
+    if fits:
+        e = fits[0]
+        roles.read_from[e.name] = replace(said, match=PlaceMatch(e.name, e.kind, e.zone, 1.0, False), score=0.8,
+                                          alternatives=(), reason=f"'{' '.join(said.words)}' in {zone}: {e.name}")
+        return e.name
+    return zone if said.score < 1.0 else None
 
 
 def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stationary: bool, intent: str,

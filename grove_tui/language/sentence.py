@@ -144,6 +144,8 @@ class Sentence:
             return ("at" if two[0] in ("next", "close") else "to"), 2
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
+        if w == "round" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "around", 1  # "gather round the whiteboard"
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:

@@ -234,3 +234,61 @@ def test_a_misspelling_near_two_names_is_the_one_that_completes_a_name(worlds, w
 def test_a_collective_that_is_a_subject_is_no_manner_phrase(worlds, world, prompt, label):
     g, = read(worlds, world, prompt).groups
     assert g.label == label and g.count.kind == "implied"
+
+
+@pytest.mark.parametrize("world,prompt,route", [
+    ("airport", "Two pilots stroll from the lounge to reach gate A2.", ("airline_lounge", "gate_a2")),
+    ("museum", "A couple ambles from the café to get to the gift shop.", ("cafe", "gift_shop")),
+])
+def test_a_slow_walk_with_a_purposes_place_is_walking_there(worlds, world, prompt, route):
+    g, = read(worlds, world, prompt).groups
+    assert (g.intent, g.start, g.destination) == ("walk", *route)
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Interns gather round the whiteboard to brainstorm.", "whiteboard"),
+    ("museum", "Kids crowd round the T-Rex.", "t_rex_skeleton"),
+])
+def test_round_before_a_place_is_around_it(worlds, world, prompt, location):
+    g, = read(worlds, world, prompt).groups
+    assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,label,location", [
+    ("museum", "The security team monitors the cameras in their room.", "security", "security_office"),
+    ("museum", "A student group waits in the foyer.", "student", "entrance_hall"),
+    ("hospital", "A nurse team rests in the staff room.", "nurse", "staff_room"),
+    ("office", "The staff team meets in the kitchen.", "staff", "kitchen"),
+])
+def test_a_collective_named_after_its_members_is_one_group(worlds, world, prompt, label, location):
+    g, = read(worlds, world, prompt).groups
+    assert g.label == label and g.count.kind == "implied" and g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "The porters group together in the lobby.", "porter"),
+    ("airport", "3 teams of four make their way to security.", "team"),
+])
+def test_a_plural_subject_then_a_collective_word_is_not_one(worlds, world, prompt, label):
+    g, = read(worlds, world, prompt).groups
+    assert g.label == label
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("museum", "An elderly couple rests on a bench in the modern art gallery.", "gallery_bench"),
+    ("museum", "A guard sits at the desk in the curator's office.", "curator_desk"),
+    ("hospital", "A nurse waits at the desk in exam room 2.", "exam_desk_2"),
+    ("hospital", "Two patients sit on the chairs in the pharmacy.", "pharmacy_waiting_chairs"),
+    ("station", "A man waits at the counter in the café.", "cafe_counter"),
+])
+def test_a_fixture_then_the_room_it_is_in_is_that_rooms_fixture(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert g.location == place
+    sure = g.confidence_of("location")
+    assert sure is None or place in sure.reason
+
+
+def test_a_room_named_before_the_people_never_moves_their_own_fixture(worlds):
+    groups = read(worlds, "museum", "Fire in the great hall! Twenty visitors flee through the fire exit while two "
+                                    "guards wait by the main doors.").groups
+    assert groups[1].location == "main_entrance"
