@@ -96,7 +96,7 @@ CHAT_WORDS: dict[str, str] = {
 # ---- people ---------------------------------------------------------------------------------
 
 PERSON_NOUNS = frozenset(
-    """person people individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
+    """person people folk individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
     colleague coworker manager receptionist clerk cashier pharmacist guard security officer cleaner janitor
     porter student teacher child kid baby toddler teenager teen adult parent mother father mom mum dad grandparent
     grandmother grandfather grandma grandpa family friend couple guest resident neighbour neighbor roommate tenant
@@ -187,7 +187,7 @@ THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whi
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})
 GENERIC_PEOPLE = frozenset({"person", "people", "individual", "pedestrian", "someone", "somebody", "anyone",
-                            "anybody", "one", "human", "occupant"})
+                            "anybody", "one", "human", "occupant", "folk"})
 
 # ---- clause structure -----------------------------------------------------------------------
 

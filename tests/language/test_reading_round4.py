@@ -292,3 +292,34 @@ def test_a_room_named_before_the_people_never_moves_their_own_fixture(worlds):
     groups = read(worlds, "museum", "Fire in the great hall! Twenty visitors flee through the fire exit while two "
                                     "guards wait by the main doors.").groups
     assert groups[1].location == "main_entrance"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("airport", "Some travellers look at the flight board while a robot guides a family to gate A1."),
+    ("hospital", "A visitor stands in front of the vending machine as the robot passes."),
+    ("hospital", "Two nurses glance at their watches as the robot rolls by."),
+    ("station", "Commuters stare at the departures board while the robot crosses the concourse."),
+])
+def test_looking_at_or_standing_by_something_else_is_no_reaction(worlds, world, prompt):
+    g = read(worlds, world, prompt).groups[0]
+    assert g.robot_interaction is None
+
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("hospital", "A child hides behind the bench as the robot passes.", "avoid"),
+    ("office", "A nervous intern steps aside every time the robot comes down the corridor.", "avoid"),
+    ("hospital", "A patient stares every time the robot passes.", "look"),
+    ("airport", "A boy stares at it as the robot passes.", "look"),
+])
+def test_reactions_around_the_robot_still_read(worlds, world, prompt, interaction):
+    g, = read(worlds, world, prompt).groups
+    assert g.robot_interaction == interaction
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Folks queue for the coffee machine."),
+    ("station", "Some folks chat in the café."),
+])
+def test_folks_are_people(worlds, world, prompt):
+    g, = read(worlds, world, prompt).groups
+    assert g.label == "person" and not g.confidence_of("group")
