@@ -154,10 +154,12 @@ class Groups:
             if k > 0 and self.mentions.led_by(m.first) and mentions[k - 1].last == m.first - 2:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are
+                places = clauses[k - 1].places + clauses[k].places
                 routed = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS | {"from", "obj:dest", "out"}
-                             for p in clauses[k - 1].places + clauses[k].places)
-                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
-                                         intent=clauses[k].intent or ("walk" if routed else "wait"), has_action=True)
+                             for p in places)
+                around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
+                clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
+                    "walk" if routed else "wander" if around else "wait"))
 
     def _with_robot(self, m: Mention, robot_clauses: Sequence[RobotClause], excluded: set[int]) -> Clause:
         """The clause of people the robot escorts or follows: the robot's route after them is theirs
@@ -211,7 +213,7 @@ class Groups:
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together, text=text, confidence=())
         if self.mentions.led_by(m.first) and earlier and c.robot is None and \
-                earlier[-1].intent not in lx.STATIONARY_INTENTS:
+                earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads
             c = replace(c, follows=earlier[-1].who)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)

@@ -323,3 +323,22 @@ def test_reactions_around_the_robot_still_read(worlds, world, prompt, interactio
 def test_folks_are_people(worlds, world, prompt):
     g, = read(worlds, world, prompt).groups
     assert g.label == "person" and not g.confidence_of("group")
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("museum", "A guide shows ten tourists around the Egyptian room.", "egyptian_gallery"),
+    ("hospital", "A nurse shows two new interns around the ward corridor.", "ward_corridor"),
+])
+def test_showing_people_around_a_place_is_wandering_there_with_them(worlds, world, prompt, location):
+    guide, shown = read(worlds, world, prompt).groups
+    assert (guide.intent, guide.location) == ("wander", location) and shown.intent == "follow"
+
+
+@pytest.mark.parametrize("world,prompt,who", [
+    ("museum", "A guide leads a school class through the great hall.", "a school class"),
+    ("airport", "A steward escorts a tour party to gate B1.", "a tour party"),
+    ("station", "A school party waits on platform 2.", "A school party"),
+])
+def test_a_collective_keeps_the_noun_before_it(worlds, world, prompt, who):
+    groups = read(worlds, world, prompt).groups
+    assert groups[-1].who == who and groups[-1].count.kind == "implied"
