@@ -241,7 +241,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel carry help assist "
-                          "support transport walk".split())
+                          "support transport walk drag pull haul hurry rush".split())
 # "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
 # which is one pair.
 PLURAL_PARTIES_RANGE = (2, 5)

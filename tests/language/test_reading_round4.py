@@ -342,3 +342,14 @@ def test_showing_people_around_a_place_is_wandering_there_with_them(worlds, worl
 def test_a_collective_keeps_the_noun_before_it(worlds, world, prompt, who):
     groups = read(worlds, world, prompt).groups
     assert groups[-1].who == who and groups[-1].count.kind == "implied"
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("mall", "A mother drags her toddler out of the toy shop.", "toy_store", None),
+    ("hospital", "A nurse hurries a patient to the pharmacy.", None, "pharmacy"),
+    ("station", "A dad pulls two kids away from the platform 1 bench.", "platform_1_bench", None),
+])
+def test_people_dragged_or_hurried_along_follow(worlds, world, prompt, start, destination):
+    leader, taken = read(worlds, world, prompt).groups
+    assert (leader.intent, leader.start, leader.destination) == ("walk", start, destination)
+    assert taken.intent == "follow" and taken.follows == leader.who
