@@ -135,7 +135,9 @@ class Groups:
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
             leftover = [x for x in between if x not in in_places and not s.is_punct(x)
                         and s.low[x] not in ("and", "as", "well", "plus", "with")]
-            if not clauses[k].has_action and clauses[k + 1].has_action and mentions[k + 1].relation is None and \
+            # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
+            aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
+            if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
                     not any(s.low[x] in (";", ".", ":") for x in between):
                 clauses[k] = replace(clauses[k + 1], places=clauses[k].places + clauses[k + 1].places)
@@ -212,6 +214,10 @@ class Groups:
                                intent=intent if intent == "follow" else leader.intent, relation=None,
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together, text=text, confidence=())
+        kind, _, parent = (m.relation or "").partition(":")
+        if kind == "subset_of" and parent.isdigit() and int(parent) < len(earlier) and c.intent is None and \
+                c.robot is None and not c.has_action and not c.places:
+            intent = earlier[int(parent)].intent  # "..., two of them students": part of the group, doing as it does
         if self.mentions.led_by(m.first) and earlier and c.robot is None and \
                 earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads

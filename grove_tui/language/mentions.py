@@ -75,8 +75,12 @@ class Mentions:
         between them: "everyone in the auditorium, roughly sixty people, evacuates", "the commuters
         on platform 1, some forty of them, walk"."""
         s = self.s
-        if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or \
-                m.count.kind not in ("exact", "approximate") or m.last + 1 >= s.n:
+        if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or m.count.kind not in ("exact", "approximate"):
+            return False
+        if (m.last + 1 >= s.n or s.low[m.last + 1] in (".", "!", ";")) and m.relation == f"subset_of:{index}" and \
+                before.count is not None and before.count.kind in ("vague", "implied") and not before.whole_zone:
+            return True  # "Travellers queue at security, maybe forty of them.": how many, said last
+        if m.last + 1 >= s.n:
             return False
         if m.relation not in (None, f"subset_of:{index}") or m.label not in ("person", before.label):
             return False

@@ -353,3 +353,31 @@ def test_people_dragged_or_hurried_along_follow(worlds, world, prompt, start, de
     leader, taken = read(worlds, world, prompt).groups
     assert (leader.intent, leader.start, leader.destination) == ("walk", start, destination)
     assert taken.intent == "follow" and taken.follows == leader.who
+
+
+@pytest.mark.parametrize("world,prompt,low,high,location", [
+    ("airport", "Travellers stand in line at security, maybe forty of them.", 32, 48, "security_checkpoint"),
+    ("station", "Commuters wait on platform 2, about thirty of them.", 24, 36, "platform_2"),
+    ("mall", "Some teens hang around the fountain, six of them.", 6, 6, "fountain"),
+])
+def test_a_count_said_last_is_the_count_of_the_group(worlds, world, prompt, low, high, location):
+    g, = read(worlds, world, prompt).groups
+    assert (g.count.low, g.count.high, g.location) == (low, high, location)
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "Ten patients, three of them on crutches, wait in the clinic waiting area.", "outpatient_waiting"),
+    ("station", "Twelve commuters, two of them with bikes, wait on platform 2.", "platform_2"),
+])
+def test_a_part_set_off_by_commas_leaves_the_verb_to_the_whole(worlds, world, prompt, location):
+    whole, part = read(worlds, world, prompt).groups
+    assert whole.location == part.location == location and part.relation == "subset_of:0"
+
+
+@pytest.mark.parametrize("world,prompt,intent,destination", [
+    ("hospital", "Ten nurses walk to the pharmacy, two of them students.", "walk", "pharmacy"),
+    ("museum", "Eight visitors head to the café, three of them children.", "walk", "cafe"),
+])
+def test_a_part_with_no_verb_does_as_its_group(worlds, world, prompt, intent, destination):
+    whole, part = read(worlds, world, prompt).groups
+    assert (part.intent, part.destination) == (intent, destination) == (whole.intent, whole.destination)
