@@ -234,7 +234,9 @@ class Groups:
             c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
                              verb_index=c.verb_index, stationary=stationary, intent=intent,
-                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS])
+                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS],
+                             verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
+                                       and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         self._fixture_where_the_rest_were(m, roles, earlier, stationary)

@@ -27,7 +27,8 @@ class Roles:
 
 
 def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
-                 verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = ()) -> Roles:
+                 verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = (),
+                 verbs_at: Sequence[tuple[int, str]] = ()) -> Roles:
     """The group's places by role: a narrower place (a fixture of the zone already read) replaces
     the zone; a destination said with "to" is not replaced by a later "at"; a place they stay at
     after "then" is where they stay, the one before it where they start ("buys a paper at the
@@ -40,9 +41,15 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             continue  # "watch TV in the lounge": they are in the lounge
         name = p.match.name
         roles.read_from.setdefault(name, p)
-        role = role_of(index, p, verb, verb_index, stationary, intent, p in scene_places)
+        # a door's role follows the verb that governs it ("drops a parcel at reception and leaves by the
+        # main door": leaving, though the clause's verb is dropping off)
+        own_verb = next((v for i, v in reversed(verbs_at) if i < p.index), verb) if p.match.kind == "door" else verb
+        role = role_of(index, p, own_verb, verb_index, stationary, intent, p in scene_places)
         marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
-        if p.sequel and role == "destination" and roles.destination is not None and name not in roles.via:
+        leaving = role == "destination" and own_verb in lx.DEPARTURE_VERBS and p.match.kind == "door"
+        if (p.sequel or leaving) and role == "destination" and roles.destination is not None and name not in roles.via \
+                and roles.destination != name:
+            # "drops a parcel at reception and leaves by the main door": reception on the way out
             # "to the café and then the pharmacy": the café on the way, the pharmacy where they end
             roles.via.append(roles.destination)
             roles.destination = name

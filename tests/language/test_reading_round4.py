@@ -381,3 +381,15 @@ def test_a_part_set_off_by_commas_leaves_the_verb_to_the_whole(worlds, world, pr
 def test_a_part_with_no_verb_does_as_its_group(worlds, world, prompt, intent, destination):
     whole, part = read(worlds, world, prompt).groups
     assert (part.intent, part.destination) == (intent, destination) == (whole.intent, whole.destination)
+
+
+@pytest.mark.parametrize("world,prompt,via,destination", [
+    ("office", "A courier drops a parcel at reception and leaves by the main door.", ("reception",), "main_entrance"),
+    ("hospital", "A visitor buys a coffee in the canteen and leaves through the terrace door.", (),
+     "cafeteria_terrace_door"),
+    ("museum", "A courier drops a parcel at the ticket desk and leaves by the back door.", ("ticket_desk",),
+     "staff_entrance"),
+])
+def test_a_door_left_by_is_where_they_end_whatever_they_did_first(worlds, world, prompt, via, destination):
+    g, = read(worlds, world, prompt).groups
+    assert g.destination == destination and g.via == via and g.start != destination
