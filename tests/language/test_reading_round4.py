@@ -393,3 +393,12 @@ def test_a_part_with_no_verb_does_as_its_group(worlds, world, prompt, intent, de
 def test_a_door_left_by_is_where_they_end_whatever_they_did_first(worlds, world, prompt, via, destination):
     g, = read(worlds, world, prompt).groups
     assert g.destination == destination and g.via == via and g.start != destination
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("museum", "A courier drops off a box at the ticket desk and leaves by the back door.", "ticket_desk"),
+    ("mall", "A girl drops a book at the info desk.", "information_desk"),
+])
+def test_a_thing_named_only_by_the_first_word_of_a_name_is_no_place(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert place in (g.via + (g.destination, g.location)) and g.confidence_of("via") is None
