@@ -402,3 +402,13 @@ def test_a_door_left_by_is_where_they_end_whatever_they_did_first(worlds, world,
 def test_a_thing_named_only_by_the_first_word_of_a_name_is_no_place(worlds, world, prompt, place):
     g, = read(worlds, world, prompt).groups
     assert place in (g.via + (g.destination, g.location)) and g.confidence_of("via") is None
+
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("mall", "A kid tugs at the robot's arm near the toy store.", "approach"),
+    ("museum", "A toddler pats the robot in the great hall.", "approach"),
+    ("station", "A drunk man kicks the robot on the concourse.", "block"),
+])
+def test_touching_or_kicking_the_robot_is_a_reaction(worlds, world, prompt, interaction):
+    g, = read(worlds, world, prompt).groups
+    assert g.robot_interaction == interaction and g.intent == "robot"
