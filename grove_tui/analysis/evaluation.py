@@ -24,7 +24,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
@@ -34,6 +34,7 @@ from grove_tui.bt.format.manifest import NODES, SUBTREE
 from grove_tui.bt.format.ports import format_point_list
 from grove_tui.bt.format.xml import check_document
 from grove_tui.errors import EvalError, GroveError
+from grove_tui.jsontypes import Parsed
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, Scenario
@@ -44,7 +45,7 @@ if TYPE_CHECKING:
     from grove_tui.world.model import World
 
 # generation.json as read back: JSON written by generation, read here key by key with defaults.
-GenerationReport = Mapping[str, Any]
+GenerationReport = Parsed
 
 METHODS = ("grove", "vanilla", "no-planner", "decoupled")
 NEAR_POINT = 1.5  # an agent "targets" a door or entity when its final goal is this close to it
@@ -338,7 +339,7 @@ def score_scenario(case: EvalCase, method: str, world: World, scenario: Scenario
     return CaseResult(case=case, method=method, scores=scores)
 
 
-def grounding_report_scores(report: Mapping[str, Any] | None) -> dict[str, float]:
+def grounding_report_scores(report: Mapping[str, object] | None) -> dict[str, float]:
     """What the bundle's own grounding report says, checked on its run (grounding.json, else the
     planned report of generation.json, where nothing is ✓ yet): the share of the sentence's groups
     whose every claim held in the run (✓), and how many parts of the sentence it says it could not honour. The suite's expectations score the same

@@ -43,7 +43,7 @@ if TYPE_CHECKING:
     from grove_tui.world.model import World
 
 # A PromptReading's to_dict(): JSON, compared field by field with what the suite's YAML states.
-ReadingDict = Mapping[str, Any]
+ReadingDict = Mapping[str, Any]  # Any: to_dict()'s JSON or the suite's YAML, compared key by key
 # Reads a prompt in a world with a seed: the reader under test (language.reading.read_prompt by default).
 Reader = Callable[[str, "World", int], ReadingDict]
 

@@ -374,8 +374,8 @@ class Clauses:
     def _main_intent(self, candidates: list[tuple[int, str, str]], c: Clause) -> tuple[str, str, int]:
         s = self.s
         kinds = [k for _, k, _ in candidates]
-        has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places
-                              if p.match is not None)
+        has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep in ("obj:dest", "purpose")
+                              for p in c.places if p.match is not None)  # "stroll ... to reach gate A2" too
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]

@@ -50,8 +50,8 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 # Collective nouns: a size when the prompt gives none, and whether the members move together.
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
-    "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
-    "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
+    "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3),
+    "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
@@ -96,7 +96,7 @@ CHAT_WORDS: dict[str, str] = {
 # ---- people ---------------------------------------------------------------------------------
 
 PERSON_NOUNS = frozenset(
-    """person people individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
+    """person people folk individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
     colleague coworker manager receptionist clerk cashier pharmacist guard security officer cleaner janitor
     porter student teacher child kid baby toddler teenager teen adult parent mother father mom mum dad grandparent
     grandmother grandfather grandma grandpa family friend couple guest resident neighbour neighbor roommate tenant
@@ -187,7 +187,7 @@ THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whi
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})
 GENERIC_PEOPLE = frozenset({"person", "people", "individual", "pedestrian", "someone", "somebody", "anyone",
-                            "anybody", "one", "human", "occupant"})
+                            "anybody", "one", "human", "occupant", "folk"})
 
 # ---- clause structure -----------------------------------------------------------------------
 
@@ -241,7 +241,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel carry help assist "
-                          "support transport walk".split())
+                          "support transport walk drag pull haul hurry rush".split())
 # "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
 # which is one pair.
 PLURAL_PARTIES_RANGE = (2, 5)
@@ -298,11 +298,12 @@ ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct pr
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph",
-    "approach": "approach greet inspect investigate touch examine check poke gather",
+    "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap",
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
-    "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade",
+    "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
+             "hit punch",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)

@@ -119,6 +119,8 @@ class People:
                     not self.third_person_verb(k + 1) and not self._verb_of_joined(k):
                 k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
                 continue
+            if person and self.collective_after(k):
+                return k + 1  # "the security team", "a student group": the collective heads the phrase
             if person and self._modifies_next_noun(k):
                 return None  # "the outpatient clinic", "security alert": a thing named after people
             if person or (s.lemma(k) in lx.IMPLIED_RANGES and k + 1 < s.n and s.low[k + 1] == "of"):
@@ -199,6 +201,18 @@ class People:
                 and not self.is_person_noun(k + 1) and s.lemma(k + 1) not in lx.IMPLIED_RANGES
                 and (gerund_noun or (verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS))
                 and s.lemma(k + 1) not in lx.DURATION_UNITS)
+
+    def collective_after(self, k: int) -> bool:
+        """Whether the person word at k names the members of a collective noun right after it ("the
+        security team", "a staff party"), not a verb ("the nurses group together")."""
+        s = self.s
+        if k + 1 >= s.n or s.w[k + 1].pos not in ("NOUN", "PROPN") or s.w[k + 1].tag.startswith("VB"):
+            return False
+        noun = s.lemma(k + 1)
+        if s.lemma(k) != s.low[k] and s.low[k] not in ("staff", "police"):
+            return False  # "the porters group together": a plural subject, then its verb
+        return noun in lx.IMPLIED_RANGES and noun not in lx.QUEUE_COLLECTIVES and s.lemma(k) not in lx.IMPLIED_RANGES \
+            and verb_lemma(s.low[k + 1]) not in lx.INTENT_VERBS and not self.multiword_end(k + 1)
 
     def _verb_of_joined(self, k: int) -> bool:
         """Whether the word after the person word at k is the plural verb of people joined by "and"

@@ -509,7 +509,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
             self.post_message(msg.ExportProgress(kind, index, total))
 
         try:
-            files = self.grove.backend.export_all(self.generated, None, root, on_progress=progress)
+            files = self.grove.session.export_all(self.generated, None, root, on_progress=progress)
         except Exception as exc:
             self.post_message(msg.ExportFailed(describe_error(exc).text))
             return
