@@ -87,7 +87,7 @@ class PlacePhrases:
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])):
+                not s.index.knows(lemma(low[j])) and "&" not in low[j]:  # "in A&E" names a place
             return None  # "in line", "at once", "on time": no determiner and no place word
         phrase, j = self._words(j)
         if not phrase:

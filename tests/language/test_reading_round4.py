@@ -412,3 +412,22 @@ def test_a_thing_named_only_by_the_first_word_of_a_name_is_no_place(worlds, worl
 def test_touching_or_kicking_the_robot_is_a_reaction(worlds, world, prompt, interaction):
     g, = read(worlds, world, prompt).groups
     assert g.robot_interaction == interaction and g.intent == "robot"
+
+
+def test_an_ampersand_abbreviation_is_one_place_word(worlds, tmp_path):
+    from grove_tui.world import load_world
+    from grove_tui.world.loader import resolve_world_path
+
+    text = resolve_world_path("hospital").read_text(encoding="utf-8")
+    text = text.replace("aliases: [icu, intensive care unit, critical care]",
+                        "aliases: [icu, intensive care unit, critical care, A&E]")
+    assert "A&E" in text
+    (tmp_path / "hospital_ae.yaml").write_text(text, encoding="utf-8")
+    world = load_world(tmp_path / "hospital_ae.yaml")
+    for prompt in ("Two paramedics rush to A&E.", "Relatives wait in A&E."):
+        reading = read_prompt(prompt, world)
+        g, = reading.groups
+        assert reading.unknown_places == () and "intensive_care" in (g.destination, g.location), prompt
+    # a world without it refuses it, rather than reading 'A and E'
+    assert read_prompt("Relatives wait in A&E.", worlds["hospital"]).unknown_places == ("a&e",)
+    assert read_prompt("3 kids & their mum queue at the shop till.", worlds["museum"]).groups[1].who == "their mum"
