@@ -217,9 +217,9 @@ class PlaceIndex:
                 total += WHOLE_PHRASE_BONUS + sum(self.idf.get(t, 0.0) for t in max(matched, key=len))
             elif head not in GENERIC_PLACE_HEADS and head not in self.building_words and weights[-1] <= 0:
                 continue  # "the coffee machine": a phrase whose head names nothing of this entry is not it
-            elif len(content) == 1 and head in e.tokens and not any(p[-1] == head for p in e.phrases) and \
-                    head not in e.types and not any(head in t.split() for t in e.types) and \
-                    all(p[0] == head for p in e.phrases if head in p):
+            elif len(content) == 1 and any(head in p for p in e.phrases) and \
+                    all(p[0] == head and len(p) > 1 for p in e.phrases if head in p) and \
+                    not any(head in t.split() for t in e.types):
                 continue  # "a box": only the first word of "box office", which names an office
             own_words = e.tokens - self._zone_words
             if e.kind == "door" and not exact and not speaks_of_door and not set(content) <= own_words:
