@@ -31,6 +31,23 @@ Top three costs after (share of GROVE's CPU time, one thread): the pair search 2
 and sums 20-21 %, the per-agent pass (drive, walls, groups, move) 19 %. The wall-clock goals (2M
 agent-steps/s at 10,000 on 2 quiet cores, 1M with one other process busy) could not be measured: the
 load average never fell below 6 in the session.
+
+Quiet machine (measured by the lead, 2026-11-28 14:18-14:19 UTC, main at aa7eb2a, load average 0.4-0.7,
+`python bench/sfm.py --sizes 1000 10000 --no-profile`): 1,000 agents 1.45M agent-steps/s wall (3.5x
+JuPedSim 1.4.2's 416k); 10,000 agents 3.42M wall / 2.09M per CPU-second (6.5x JuPedSim wall, 4.0x per
+CPU-second). With one other process busy (a `while True: pass` Python loop), 14:20, load 1.0-1.3: 10,000
+agents 2.22M wall (4.4x JuPedSim). Both wall-clock goals hold.
+
+Bodies as wide as the shoulders and the density ahead counting oneself as half a person (issue 32's
+0.8 m bottleneck; docs/BENCHMARKS.md), before and after in one run, 14:57-14:58 at load average 4.6,
+`python bench/sfm.py --sizes 1000 10000 --no-profile --baseline /work/main` (crowd2 395712f against main
+aa7eb2a): per CPU-second 1.42M -> 1.43M at 1,000 agents (3.5x JuPedSim's 412k), 2.13M -> 2.18M at 10,000
+(4.2x JuPedSim's 519k). (Wall at that load: 1.21M -> 610k at 1,000, where the other jobs took a core
+during the after run, and 1.12M -> 970k at 10,000.) A second such run with --repeat 3 (14:59-15:00, load
+3.3-3.4) gave 1.45M -> 1.47M and 2.23M -> 2.01M, so the two were alternated three times each,
+`python bench/sfm.py --code CHECKOUT --grove-only N STEPS --repeat 3` (15:01-15:02, load 2.9-3.4), per
+CPU-second: 10,000 agents 2.11 / 2.19 / 2.26M after against 2.11 / 2.15 / 2.16M before (+2 % on the mean),
+1,000 agents 1.47 / 1.45 / 1.38M against 1.44 / 1.40 / 1.28M (+4 %). No cost: the kernels do the same work.
 """
 
 from __future__ import annotations

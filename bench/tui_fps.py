@@ -77,7 +77,8 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
     from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
     from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
     from grove_tui.bt.format.ports import parse_point_list
-    from grove_tui.generation.waypoints import inject_waypoints
+    from grove_tui.bt.format.xml import read_tree, write_tree
+    from grove_tui.generation.waypoints import plan_waypoints
     from grove_tui.world import load_world
 
     world = load_world("hospital")
@@ -105,7 +106,7 @@ def build_scenario(n_agents: int, out_dir: Path, seed: int = 0):
             'time_step="{{dt}}" goal_id="{id}"/></Sequence></BehaviorTree></root>'
         ).format(id=agent_id, name=name, x=goal[0], y=goal[1])
         try:
-            xml = inject_waypoints(xml, start, planner)
+            xml = write_tree(plan_waypoints(read_tree(xml), start, planner))
         except PlanningError:
             continue
         waypoints = []

@@ -22,7 +22,7 @@ from __future__ import annotations
 import sys
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import IO, Any
+from typing import IO, Protocol
 
 EXIT_OK = 0
 EXIT_BAD_INPUT = 2
@@ -98,16 +98,28 @@ class SettingsError(BadInputError):
     hint = "Fix the key named above in the config file (or the GROVE_* variable), or unset GROVE_CONFIG_FILE."
 
 
+class LocatedProblem(Protocol):
+    """One problem in an input file, located (world.model.WorldProblem; errors sits below the world layer)."""
+
+    @property
+    def file(self) -> str: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def line(self) -> int | None: ...
+    @property
+    def message(self) -> str: ...
+
+
 class WorldError(BadInputError):
     """A world could not be loaded or a name is unknown; `problems` lists every issue found."""
 
     title = "World error"
     hint = "Fix the world file (worlds/README.md explains the format; `grove worlds check FILE` lists every problem)."
 
-    def __init__(self, message: str, problems: Iterable[Any] = (), *, hint: str | None = None) -> None:
+    def __init__(self, message: str, problems: Iterable[LocatedProblem] = (), *, hint: str | None = None) -> None:
         super().__init__(message, hint=hint)
-        # world.model.WorldProblem records; typed loosely because errors sits below the world layer.
-        self.problems: tuple[Any, ...] = tuple(problems)
+        self.problems: tuple[LocatedProblem, ...] = tuple(problems)
 
 
 class PresetError(BadInputError):

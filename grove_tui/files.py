@@ -35,11 +35,34 @@ import tempfile
 import time
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from pathlib import Path, PurePosixPath
-from typing import Any
+from typing import TYPE_CHECKING, Required, TypedDict, Unpack
 
 from grove_tui.errors import OutputError
 
 OwnedTest = Callable[[Path], bool]
+
+if TYPE_CHECKING:
+    from numpy.typing import ArrayLike
+
+
+class FileGuard(TypedDict, total=False):
+    """check_output_file's keyword arguments, as the atomic writers pass them on."""
+
+    owned: OwnedTest | None
+    what: str
+    overwrite: bool
+    flag: str
+    own_folder: str | os.PathLike[str] | None
+
+
+class DirGuard(TypedDict, total=False):
+    """check_output_dir's keyword arguments: a folder GROVE replaces must always be recognisable as its own."""
+
+    owned: Required[OwnedTest]
+    what: str
+    overwrite: bool
+    flag: str
+    own_folder: str | os.PathLike[str] | None
 # Zip entries of .npz files get this timestamp (the zip format's earliest), not the time of writing,
 # so the same arrays always give the same bytes and bundles compare byte for byte.
 NPZ_TIMESTAMP = (1980, 1, 1, 0, 0, 0)
@@ -171,7 +194,7 @@ def sweep_stale(folder: str | os.PathLike[str], name: str | None = None) -> list
 # -- single files --------------------------------------------------------------------------------------------
 
 
-def npz_bytes(arrays: Mapping[str, Any]) -> bytes:
+def npz_bytes(arrays: Mapping[str, ArrayLike]) -> bytes:
     """A compressed .npz (what np.load reads) whose bytes depend only on the arrays, in the given order."""
     import io
     import zipfile
@@ -189,11 +212,11 @@ def npz_bytes(arrays: Mapping[str, Any]) -> bytes:
     return buffer.getvalue()
 
 
-def write_text_atomic(path: str | os.PathLike[str], text: str, encoding: str = "utf-8", **guard: Any) -> Path:
+def write_text_atomic(path: str | os.PathLike[str], text: str, encoding: str = "utf-8", **guard: Unpack[FileGuard]) -> Path:
     return write_bytes_atomic(path, text.encode(encoding), **guard)
 
 
-def write_bytes_atomic(path: str | os.PathLike[str], data: bytes, **guard: Any) -> Path:
+def write_bytes_atomic(path: str | os.PathLike[str], data: bytes, **guard: Unpack[FileGuard]) -> Path:
     """Replace the file at `path` in one rename; `guard` as `atomic_file` takes it."""
     with atomic_file(path, **guard) as tmp:
         tmp.write_bytes(data)
@@ -246,8 +269,8 @@ def atomic_file(path: str | os.PathLike[str], *, owned: OwnedTest | None = None,
     disk, read-only file system) is an OutputError naming `path`. For writers that stream (CSV,
     sqlite); `write_bytes_atomic` for data already in memory.
     """
-    guard = dict(owned=owned, what=what, overwrite=overwrite, flag=flag, own_folder=own_folder)
-    target = check_output_file(path, **guard)  # type: ignore[arg-type]
+    guard = FileGuard(owned=owned, what=what, overwrite=overwrite, flag=flag, own_folder=own_folder)
+    target = check_output_file(path, **guard)
     created = _make_parents(target)
     sweep_stale(target.parent, target.name)
     try:
@@ -263,7 +286,7 @@ def atomic_file(path: str | os.PathLike[str], *, owned: OwnedTest | None = None,
         with open(tmp_path, "rb") as handle:
             os.fsync(handle.fileno())
         write_point(f"file:{target.name}:written")
-        check_output_file(target, **guard)  # type: ignore[arg-type]
+        check_output_file(target, **guard)
         os.replace(tmp_path, target)
         write_point(f"file:{target.name}:replaced")
     except BaseException as exc:
@@ -488,8 +511,8 @@ def atomic_directory(path: str | os.PathLike[str], *, owned: OwnedTest, what: st
     file system) is an OutputError naming `path`. A staging folder a killed process left is removed
     by the next write beside it.
     """
-    guard = dict(owned=owned, what=what, overwrite=overwrite, flag=flag, own_folder=own_folder)
-    target = check_output_dir(path, **guard)  # type: ignore[arg-type]
+    guard = DirGuard(owned=owned, what=what, overwrite=overwrite, flag=flag, own_folder=own_folder)
+    target = check_output_dir(path, **guard)
     created = _make_parents(target)
     sweep_stale(target.parent, target.name)
     try:
@@ -502,7 +525,7 @@ def atomic_directory(path: str | os.PathLike[str], *, owned: OwnedTest, what: st
         write_point(f"dir:{target.name}:created")
         yield staging
         write_point(f"dir:{target.name}:staged")
-        check_output_dir(target, **guard)  # type: ignore[arg-type]
+        check_output_dir(target, **guard)
         _swap_in(staging, target)
     except BaseException as exc:
         shutil.rmtree(staging, ignore_errors=True)
@@ -550,7 +573,7 @@ _RENAME_EXCHANGE = 2
 _NO_EXCHANGE = frozenset({errno.EINVAL, errno.ENOSYS, errno.EOPNOTSUPP, errno.ENOTSUP})
 
 
-def _libc_renameat2() -> Any:
+def _libc_renameat2() -> Callable[..., int] | None:
     try:
         libc = ctypes.CDLL(None, use_errno=True)
     except OSError:

@@ -113,7 +113,7 @@ def _human(size: int) -> str:
 # YAML
 
 
-def compose_yaml(text: str, locate: bool = True) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:
+def compose_yaml(text: str, locate: bool = True) -> tuple[Any, dict[YamlPath, int], list[YamlPath]]:  # Any: YAML before validation
     """Parse YAML with safe semantics, checking the node graph against the limits first.
 
     Returns (data, line of every node by its path, paths of repeated mapping keys, each ending in
@@ -230,7 +230,7 @@ def _walk_nodes(root: yaml.Node) -> tuple[dict[YamlPath, int], list[YamlPath]]:
     return lines, repeated
 
 
-def load_yaml_bounded(text: str, what: str) -> Any:
+def load_yaml_bounded(text: str, what: str) -> Any:  # Any: YAML before the caller validates it
     """The data of a YAML text under the limits; any problem is one InputLimitError naming `what`."""
     try:
         return compose_yaml(text, locate=False)[0]

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any, Literal, TypedDict
 
 import platformdirs
 import yaml
@@ -167,7 +167,7 @@ class GroveSettings(BaseSettings):
         return path if path.is_absolute() else config_file().parent / path
 
 
-def read_config_file(path: Path) -> dict[str, Any]:
+def read_config_file(path: Path) -> dict[str, Any]:  # Any: YAML values before pydantic validates them
     """The file's mapping ({} when there is no file); SettingsError when it is not a safe YAML mapping."""
     try:
         if not path.exists():
@@ -211,9 +211,9 @@ def read_config_file(path: Path) -> dict[str, Any]:
 _NO_KEY = object()  # a key can be None (`: value` in YAML), so "no such key" needs its own marker
 
 
-def _non_text_key(value: Any) -> Any:
+def _non_text_key(value: object) -> object:
     """The first mapping key anywhere in `value` that is not a string, else _NO_KEY (found by fuzzing)."""
-    stack = [value]
+    stack: list[object] = [value]
     while stack:
         current = stack.pop()
         if isinstance(current, dict):
@@ -276,11 +276,19 @@ def save_history(history: list[str], limit: int) -> None:
     write_text_atomic(path, "\n".join(history[-limit:]) + "\n")
 
 
+class LastChoices(TypedDict, total=False):
+    """last_choices.json as load_last_choices reads it: each key only when the file holds a good value."""
+
+    world: str
+    preset: str
+    seed: int
+
+
 def last_choices_file() -> Path:
     return data_dir() / "last_choices.json"
 
 
-def load_last_choices() -> dict[str, Any]:
+def load_last_choices() -> LastChoices:
     """The world, preset and seed of the app's last generation ({} the first time, or from a file that
     is not ours: the app then starts on the config file's choices)."""
     import json
@@ -291,7 +299,11 @@ def load_last_choices() -> dict[str, Any]:
         return {}
     if not isinstance(data, dict):
         return {}
-    choices: dict[str, Any] = {key: data[key] for key in ("world", "preset") if isinstance(data.get(key), str)}
+    choices = LastChoices()
+    if isinstance(data.get("world"), str):
+        choices["world"] = data["world"]
+    if isinstance(data.get("preset"), str):
+        choices["preset"] = data["preset"]
     if isinstance(data.get("seed"), int) and not isinstance(data.get("seed"), bool) and data["seed"] >= 0:
         choices["seed"] = data["seed"]
     return choices

@@ -21,19 +21,20 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
 
-from grove_tui.bt.format.document import TreeDocument, TreeElement
+from grove_tui.bt.format.document import TreeDocument, TreeElement, TreeFiles
 from grove_tui.bt.format.manifest import NODES, SUBTREE
 from grove_tui.bt.format.ports import format_point_list
-from grove_tui.bt.format.xml import check_tree_text, read_tree, write_tree
-from grove_tui.errors import BTError, EvalError, GroveError
+from grove_tui.bt.format.xml import check_document
+from grove_tui.errors import EvalError, GroveError
+from grove_tui.jsontypes import Parsed
 from grove_tui.analysis.metrics import Trajectories, crowd_metrics
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, Scenario
@@ -44,7 +45,7 @@ if TYPE_CHECKING:
     from grove_tui.world.model import World
 
 # generation.json as read back: JSON written by generation, read here key by key with defaults.
-GenerationReport = Mapping[str, Any]
+GenerationReport = Parsed
 
 METHODS = ("grove", "vanilla", "no-planner", "decoupled")
 NEAR_POINT = 1.5  # an agent "targets" a door or entity when its final goal is this close to it
@@ -164,17 +165,17 @@ def _zone_matches(world: World, zone_name: str, names: Sequence[str]) -> bool:
     return False
 
 
-def _roaming_zone(tree_xml: str | None) -> str | None:
-    if not tree_xml:
+def _roaming_zone(tree: TreeDocument | None) -> str | None:
+    if tree is None:
         return None
-    for el in read_tree(tree_xml).nodes():
+    for el in tree.nodes():
         if el.id == "Wander" and el.get("zone"):
             return el.get("zone")
     return None
 
 
 def grounding(world: World, agents: Sequence[AgentSpec], expect: Expectation,
-              trees: Mapping[int, str] | None = None) -> dict[str, float]:
+              trees: Mapping[int, TreeDocument] | None = None) -> dict[str, float]:
     """Shares of agents whose target / spawn lie where the case says. An agent's target is its last
     goal; an agent with no fixed goal (roaming) targets the zone it roams, else its scenario zone."""
     out: dict[str, float] = {}
@@ -199,33 +200,29 @@ def count_accuracy(agents: Sequence[AgentSpec], expect: Expectation) -> float | 
     return max(0.0, 1.0 - abs(len(agents) - expect.count) / expect.count)
 
 
-def tree_node_types(trees: Mapping[int, str]) -> set[str]:
+def tree_node_types(trees: Mapping[int, TreeDocument]) -> set[str]:
     types: set[str] = set()
-    for xml in trees.values():
-        types |= {el.id for el in read_tree(xml).nodes()}
+    for document in trees.values():
+        types |= {el.id for el in document.nodes()}
     return types
 
 
-def behavior_match(trees: Mapping[int, str], expect: Expectation) -> float | None:
+def behavior_match(trees: Mapping[int, TreeDocument], expect: Expectation) -> float | None:
     if not expect.behaviors:
         return None
     present = tree_node_types(trees)
     return sum(b in present for b in expect.behaviors) / len(expect.behaviors)
 
 
-def validity(world: World, trees: Mapping[int, str]) -> dict[str, float]:
+def validity(world: World, trees: Mapping[int, TreeDocument]) -> dict[str, float]:
     """Trees that validate against the manifest, and names the model invented."""
     valid = 0
     hallucinated_nodes: set[str] = set()
     hallucinated_places: set[str] = set()
     known_places = {roi.name for roi in world.roi_index()}
-    for agent_id, xml in trees.items():
-        if not check_tree_text(xml, source=f"agent {agent_id}"):
+    for document in trees.values():
+        if not check_document(document):
             valid += 1
-        try:
-            document = read_tree(xml, f"agent {agent_id}")
-        except BTError:
-            continue  # not even a tree: counted as invalid above, and it names no nodes to judge
         for el in document.nodes():
             if el.id == SUBTREE:
                 continue
@@ -319,7 +316,7 @@ class CaseResult:
     error: str = ""
 
 
-def score_scenario(case: EvalCase, method: str, world: World, scenario: Scenario, trees: Mapping[int, str],
+def score_scenario(case: EvalCase, method: str, world: World, scenario: Scenario, trees: Mapping[int, TreeDocument],
                    traj: Trajectories | None, events: Sequence[SimEvent],
                    report: GenerationReport | None = None) -> CaseResult:
     scores: dict[str, float] = {"agents": float(len(scenario.agents))}
@@ -342,7 +339,7 @@ def score_scenario(case: EvalCase, method: str, world: World, scenario: Scenario
     return CaseResult(case=case, method=method, scores=scores)
 
 
-def grounding_report_scores(report: Mapping[str, Any] | None) -> dict[str, float]:
+def grounding_report_scores(report: Mapping[str, object] | None) -> dict[str, float]:
     """What the bundle's own grounding report says, checked on its run (grounding.json, else the
     planned report of generation.json, where nothing is ✓ yet): the share of the sentence's groups
     whose every claim held in the run (✓), and how many parts of the sentence it says it could not honour. The suite's expectations score the same
@@ -359,16 +356,17 @@ def grounding_report_scores(report: Mapping[str, Any] | None) -> dict[str, float
 
 # --- running a suite -----------------------------------------------------------------------------
 
-def _rewrite_trees(trees: Mapping[str, str], agents: Sequence[AgentSpec], edit) -> dict[str, str]:
-    """Apply `edit(agent, document)` to each agent's tree; returns relative path -> new XML."""
+def _rewrite_trees(trees: Mapping[str, TreeDocument], agents: Sequence[AgentSpec],
+                   edit: Callable[[AgentSpec, TreeDocument], None]) -> TreeFiles:
+    """Apply `edit(agent, document)` to a copy of each agent's tree (GROVE's own stay as they are)."""
     by_path = {a.tree: a for a in agents}
     out = {}
-    for rel, xml in trees.items():
-        document = read_tree(xml, rel)
+    for rel, original in trees.items():
+        document = original.copy()
         agent = by_path.get(rel)
         if agent is not None:
             edit(agent, document)
-        out[rel] = write_tree(document)
+        out[rel] = document
     return out
 
 
@@ -376,7 +374,7 @@ def _navigation_tags() -> frozenset[str]:
     return frozenset(name for name, spec in NODES.items() if spec.navigates)
 
 
-def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
+def without_planner(scenario: Scenario, trees: Mapping[str, TreeDocument]) -> tuple[Scenario, TreeFiles]:
     """The `no-planner` baseline: straight SFM goals, as HuNavSim runs behavior trees. Injected
     waypoints are dropped, velocity fields are replaced by a straight walk to the exit, and the
     simulation plans nothing at run time either (see simulate)."""
@@ -396,11 +394,11 @@ def without_planner(scenario: Scenario, trees: Mapping[str, str]) -> tuple[Scena
     return dataclasses.replace(scenario, agents=agents, fields={}), new_trees
 
 
-def decoupled(scenario: Scenario, trees: Mapping[str, str], world: World, grid: OccupancyGrid,
-              planner: ThetaStarPlanner) -> tuple[Scenario, dict[str, str]]:
+def decoupled(scenario: Scenario, trees: Mapping[str, TreeDocument], world: World, grid: OccupancyGrid,
+              planner: ThetaStarPlanner) -> tuple[Scenario, TreeFiles]:
     """The `decoupled` baseline: same population and behaviors, but starts and goals drawn from zone
     centres independently of the prompt; paths are still planned (Text-Crowd plans its roadmap too)."""
-    from grove_tui.generation.waypoints import inject_waypoints
+    from grove_tui.generation.waypoints import plan_waypoints
 
     agents = decoupled_agents(world, scenario.agents, scenario.seed, grid)
     by_id = {a.id: a for a in agents}
@@ -420,17 +418,13 @@ def decoupled(scenario: Scenario, trees: Mapping[str, str], world: World, grid: 
 
     new_trees = _rewrite_trees(trees, scenario.agents, edit)
     start_of = {a.tree: by_id[a.id].start for a in scenario.agents}
-    planned = {rel: inject_waypoints(xml, start_of[rel], planner) if rel in start_of else xml
-               for rel, xml in new_trees.items()}
+    planned = {rel: plan_waypoints(document, start_of[rel], planner) if rel in start_of else document
+               for rel, document in new_trees.items()}
     return dataclasses.replace(scenario, agents=tuple(agents), fields={}), planned
 
 
-def read_trees(bundle: Path, scenario: Scenario) -> dict[str, str]:
-    return {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
-
-
 def baseline_variant(method: str, world: World, scenario: Scenario,
-                     trees: Mapping[str, str]) -> tuple[Scenario, dict[str, str]]:
+                     trees: Mapping[str, TreeDocument]) -> tuple[Scenario, TreeFiles]:
     """The `no-planner` or `decoupled` rewrite of GROVE's scenario and trees (the services layer writes
     it as a bundle derived from GROVE's: `scenario.bundle.derive_bundle`)."""
     from grove_tui.navigation.grid import build_grid

@@ -83,7 +83,8 @@ class ForceSeries:
 
 
 @nb.njit(cache=True)
-def _nearest_wall_point(x, y, search_range, walls, wall_meta, wall_start, wall_items):
+def _nearest_wall_point(x: float, y: float, search_range: float, walls: np.ndarray, wall_meta: np.ndarray,
+                        wall_start: np.ndarray, wall_items: np.ndarray) -> tuple[bool, float, float]:
     """Closest point of any wall within `search_range` of (x, y): (found, px, py)."""
     cell = _wall_cell(x, y, wall_meta)
     if cell < 0:
@@ -105,8 +106,9 @@ def _nearest_wall_point(x, y, search_range, walls, wall_meta, wall_start, wall_i
 
 
 @nb.njit(cache=True)
-def _obstacle_force_modulus(x, y, radius, body_id, params, obstacle_weight, search_range,
-                            walls, wall_meta, wall_start, wall_items):
+def _obstacle_force_modulus(x: float, y: float, radius: float, body_id: int, params: np.ndarray,
+                            obstacle_weight: float, search_range: float, walls: np.ndarray, wall_meta: np.ndarray,
+                            wall_start: np.ndarray, wall_items: np.ndarray) -> float:
     found, ox, oy = _nearest_wall_point(x, y, search_range, walls, wall_meta, wall_start, wall_items)
     if not found:
         return 0.0
@@ -115,9 +117,11 @@ def _obstacle_force_modulus(x, y, radius, body_id, params, obstacle_weight, sear
 
 
 @nb.njit(cache=True)
-def _force_table(robot, robot_vel, robot_radius, people, people_vel, people_radius, people_ids,
-                 params, social_weight, obstacle_weight, with_obstacles, search_range,
-                 walls, wall_meta, wall_start, wall_items):
+def _force_table(robot: np.ndarray, robot_vel: np.ndarray, robot_radius: float, people: np.ndarray,
+                 people_vel: np.ndarray, people_radius: np.ndarray, people_ids: np.ndarray, params: np.ndarray,
+                 social_weight: float, obstacle_weight: float, with_obstacles: bool, search_range: float,
+                 walls: np.ndarray, wall_meta: np.ndarray, wall_start: np.ndarray,
+                 wall_items: np.ndarray) -> np.ndarray:
     frames = robot.shape[0]
     out = np.zeros((frames, _COLUMNS))
     for f in range(frames):

@@ -37,13 +37,19 @@ import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from grove_tui.analysis.metrics import iter_trajectory_chunks
 from grove_tui.analysis.outcomes import OutcomeChecker
 from grove_tui.errors import SuiteError
+from grove_tui.jsontypes import JSONObject
 from grove_tui.scenario.events import read_events
 from grove_tui.scenario.report import FAILS, HOLDS, Claim, GroundingReport, GroupGrounding, RobotGrounding
+
+from grove_tui.world import Door, Entity, World, Zone
+
+if TYPE_CHECKING:
+    from grove_tui.scenario.model import Scenario
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
                   "robot")
@@ -57,7 +63,7 @@ PACE_BANDS = {"slow": (0.2, 0.85), "fast": (1.15, 3.0)}  # times the preset's no
 @dataclass(frozen=True)
 class ExpectedGroup:
     who: str
-    expect: tuple[tuple[str, Any], ...]  # (kind, value) in the suite's order
+    expect: tuple[tuple[str, object], ...]  # (kind, value as the suite gives it) in the suite's order
     count: int | None = None
 
 
@@ -70,7 +76,7 @@ class GroundingCase:
     seed: int
     seconds: float
     groups: tuple[ExpectedGroup, ...]
-    robot: tuple[tuple[str, Any], ...] = ()
+    robot: tuple[tuple[str, object], ...] = ()
     tags: tuple[str, ...] = ()
 
 
@@ -113,7 +119,7 @@ def load_suite(path: str | Path) -> list[GroundingCase]:
     return cases
 
 
-def _expected_group(data: Any, where: str) -> ExpectedGroup:
+def _expected_group(data: object, where: str) -> ExpectedGroup:
     if not isinstance(data, Mapping) or "who" not in data:
         raise SuiteError(f"{where}: expected a mapping with 'who' and 'expect'")
     count = data.get("count")
@@ -121,7 +127,7 @@ def _expected_group(data: Any, where: str) -> ExpectedGroup:
                          None if count is None else int(count))
 
 
-def _outcomes(data: Any, kinds: Sequence[str], where: str) -> tuple[tuple[str, Any], ...]:
+def _outcomes(data: object, kinds: Sequence[str], where: str) -> tuple[tuple[str, object], ...]:
     if not isinstance(data, Mapping):
         raise SuiteError(f"{where}: expected a mapping of outcomes ({', '.join(kinds)})")
     unknown = [k for k in data if k not in kinds]
@@ -159,7 +165,7 @@ class CaseScore:
     error: str = ""
     seconds: float = 0.0  # wall time of generate + simulate + score
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"id": self.case.id, "world": self.case.world, "preset": self.case.preset, "error": self.error,
                 "seconds": round(self.seconds, 2), "extra_ticks": self.extra_ticks,
                 "groups": [{"who": g.who, "matched": g.matched, "report": g.report, "outcome": g.outcome,
@@ -237,7 +243,7 @@ def match_groups(expected: Sequence[ExpectedGroup],
     return [(e, found[chosen[i]] if i in chosen else None) for i, e in enumerate(expected)]
 
 
-def _walking_speed(scenario: Any) -> float:
+def _walking_speed(scenario: Scenario) -> float:
     from grove_tui.generation.presets import load_preset
 
     try:
@@ -246,15 +252,15 @@ def _walking_speed(scenario: Any) -> float:
         return 1.0
 
 
-def _names(value: Any) -> list[str]:
+def _names(value: object) -> list[str]:
     return [str(v) for v in value] if isinstance(value, (list, tuple)) else [str(value)]
 
 
-def _place(kind: str, name: str, world: Any, n: int, stay: bool = False) -> Claim:
+def _place(kind: str, name: str, world: World, n: int, stay: bool = False) -> Claim:
     obj = world.find(name)  # a WorldError for a suite naming no place of the world
-    if hasattr(obj, "interaction_point"):
+    if isinstance(obj, Entity):
         point = obj.interaction_point
-    elif hasattr(obj, "leads_to"):
+    elif isinstance(obj, Door):
         point = obj.inward_point(0.6)
     else:
         return Claim(kind, name, "expected", zone=obj.name, place=name)
@@ -262,8 +268,14 @@ def _place(kind: str, name: str, world: Any, n: int, stay: bool = False) -> Clai
     return Claim(kind, name, "expected", place=name, point=(float(point[0]), float(point[1])), radius=radius)
 
 
+def _zone_of(world: World, name: str) -> str:
+    """The zone a place is in (a zone is its own)."""
+    obj = world.find(name)
+    return (obj.zone if not isinstance(obj, Zone) else None) or obj.name
+
+
 # Each hand outcome becomes one or more claims; a list of places gives alternatives (any of them).
-def _hand_claims(expected: ExpectedGroup, world: Any, speed: float) -> list[Claim]:
+def _hand_claims(expected: ExpectedGroup, world: World, speed: float) -> list[Claim]:
     n = expected.count or 1
     claims: list[Claim] = []
     if expected.count is not None:
@@ -274,18 +286,18 @@ def _hand_claims(expected: ExpectedGroup, world: Any, speed: float) -> list[Clai
             for name in _names(value):
                 claim = _place(kind, name, world, n, stay=kind == "stay")
                 if kind in ("wander", "leave") and claim.zone is None:
-                    claim = Claim(kind, name, "expected", zone=world.find(name).zone)
+                    claim = Claim(kind, name, "expected", zone=_zone_of(world, name))
                 if kind == "start":
-                    claim = Claim("start", name, "expected", zone=claim.zone or world.find(name).zone, share=1.0)
+                    claim = Claim("start", name, "expected", zone=claim.zone or _zone_of(world, name), share=1.0)
                 claims.append(Claim(claim.kind, tag + claim.asked, claim.plan, zone=claim.zone, place=claim.place,
                                     point=claim.point, radius=claim.radius, share=claim.share))
         elif kind == "queue":
             for name in _names(value):
                 obj = world.find(name)
-                if hasattr(obj, "interaction_point"):
+                if isinstance(obj, Entity):
                     claims.append(Claim("queue", tag + name, "expected", place=name, zone=obj.zone))
                 else:
-                    claims.append(Claim("queue", tag + name, "expected", zone=getattr(obj, "zone", None) or obj.name))
+                    claims.append(Claim("queue", tag + name, "expected", zone=_zone_of(world, name)))
         elif kind == "converse":
             claims.append(Claim("converse", tag + "talk", "expected"))
         elif kind == "evacuate":
@@ -305,7 +317,7 @@ def _hand_claims(expected: ExpectedGroup, world: Any, speed: float) -> list[Clai
     return claims
 
 
-def _robot_claims(robot: Iterable[tuple[str, Any]], world: Any, scenario: Any, report: GroundingReport,
+def _robot_claims(robot: Iterable[tuple[str, object]], world: World, scenario: Scenario, report: GroundingReport,
                   pairs: Sequence[tuple[ExpectedGroup, GroupGrounding | None]]) -> list[Claim]:
     claims: list[Claim] = []
     for kind, value in robot:

@@ -33,6 +33,7 @@ import numba as nb
 import numpy as np
 
 from grove_tui.analysis.metrics import Trajectories
+from grove_tui.navigation.grid import OccupancyGrid
 
 FOV_DEG = 120.0
 D_PROXEMICS = 0.45
@@ -134,7 +135,7 @@ class Hunav2Accumulator:
     """The five costs over a run read a block of frames at a time (metrics.iter_trajectory_chunks):
     what carries over between blocks is each person's time in sight of the robot and the last stamp."""
 
-    def __init__(self, people: int, grid, *, robot_radius: float = 0.3, person_radius: float | np.ndarray = 0.35):
+    def __init__(self, people: int, grid: OccupancyGrid, *, robot_radius: float = 0.3, person_radius: float | np.ndarray = 0.35):
         self.radii = np.broadcast_to(np.asarray(person_radius, dtype=float), (people,))
         self.robot_radius = robot_radius
         self.occupied = np.asarray(grid.occupied, dtype=bool)
@@ -188,7 +189,7 @@ class Hunav2Accumulator:
         return dict(self.totals) if self.saw_robot else {}
 
 
-def hunav2_costs(traj: Trajectories, grid, *, robot_radius: float = 0.3,
+def hunav2_costs(traj: Trajectories, grid: OccupancyGrid, *, robot_radius: float = 0.3,
                  person_radius: float | np.ndarray = 0.35) -> dict[str, float]:
     """The five HuNavSim 2.0 costs of a run held in memory (empty without a robot)."""
     accumulator = Hunav2Accumulator(traj.ids.size, grid, robot_radius=robot_radius, person_radius=person_radius)

@@ -13,6 +13,7 @@ import math
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TypedDict, Unpack
 
 import numpy as np
 
@@ -811,7 +812,21 @@ def compute_metrics_chunks(
     return MetricsReport(robot=robot.result(), crowd=crowd.result())
 
 
-def compute_metrics_csv(path: str | Path, *, rows_per_block: int = ROWS_PER_BLOCK, **options) -> MetricsReport:
+class ChunkOptions(TypedDict, total=False):
+    """compute_metrics_chunks' keyword arguments, as compute_metrics_csv passes them on."""
+
+    walls: np.ndarray | None
+    robot_goal: Sequence[float] | None
+    robot_radius: float
+    person_radius: float
+    final_goals: Mapping[int, Sequence[float]] | None
+    events: Sequence[SimEvent]
+    walkable_area: float | None
+    groups: Mapping[int, int] | None
+
+
+def compute_metrics_csv(path: str | Path, *, rows_per_block: int = ROWS_PER_BLOCK,
+                        **options: Unpack[ChunkOptions]) -> MetricsReport:
     """`compute_metrics` streamed over a trajectories.csv: memory is set by the block size and the
     crowd, not by the run's length (a one-hour, 500-person run reads 324 MB of CSV)."""
     ids, _groups, chunks = iter_trajectory_chunks(path, rows_per_block)

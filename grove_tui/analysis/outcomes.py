@@ -21,10 +21,10 @@ from __future__ import annotations
 import json
 import math
 from abc import ABC, abstractmethod
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
@@ -43,6 +43,11 @@ from grove_tui.scenario.report import (
     RunCheck,
 )
 from grove_tui.scenario.model import Scenario
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
+
+    from grove_tui.world import World
 
 GROUNDING_FILE = "grounding.json"
 SAMPLE_DT = 0.2  # seconds between the frames the checks look at
@@ -96,7 +101,7 @@ def check_bundle(bundle_dir: str | Path, write: bool = True) -> tuple[GroundingR
     return report, path
 
 
-def planned_report(generation: dict[str, Any]) -> GroundingReport | None:
+def planned_report(generation: Mapping[str, object]) -> GroundingReport | None:
     """The planned report of a generation.json (None when it has none)."""
     data = generation.get("grounding") if isinstance(generation, dict) else None
     if not isinstance(data, dict):
@@ -105,7 +110,7 @@ def planned_report(generation: dict[str, Any]) -> GroundingReport | None:
     return replace(report, run=None)
 
 
-def check_run(planned: GroundingReport, scenario: Scenario, world: Any, traj: Trajectories,
+def check_run(planned: GroundingReport, scenario: Scenario, world: World, traj: Trajectories,
               events: Sequence[SimEvent], partial: bool = False) -> GroundingReport:
     """A run held in memory checked in one go (tests, evaluation)."""
     checker = OutcomeChecker(planned, scenario, world)
@@ -125,7 +130,7 @@ class OutcomeChecker:
     """Feed it frames (whole frames, in time order, any block size) and the event log; `result` gives
     the checked report. The app keeps one for a run and feeds it the new frames as they come."""
 
-    def __init__(self, planned: GroundingReport, scenario: Scenario, world: Any, sample_dt: float = SAMPLE_DT):
+    def __init__(self, planned: GroundingReport, scenario: Scenario, world: World, sample_dt: float = SAMPLE_DT):
         self.planned = planned
         self.scenario = scenario
         self.world = world
@@ -134,7 +139,7 @@ class OutcomeChecker:
         self._bucket = -1  # the last sampled time bucket
         self.t_end = 0.0
         self.frames = 0
-        self._zones: dict[str, Any] = {}
+        self._zones: dict[str, BaseGeometry] = {}
         self._probes: list[tuple[tuple[int, int], _Probe]] = []  # ((group index or -1 for the robot, claim index), probe)
         self.robot_max_vel = scenario.robot.max_vel if scenario.robot is not None else 0.8
         self._build()
@@ -152,7 +157,7 @@ class OutcomeChecker:
         cols = np.clip(cols, 0, self.ids.size - 1)
         return cols[self.ids[cols] == wanted]
 
-    def zone_shape(self, name: str) -> Any:
+    def zone_shape(self, name: str) -> BaseGeometry:
         if name not in self._zones:
             polygon = self.world.zone(name).polygon.buffer(ZONE_MARGIN)
             shapely.prepare(polygon)
@@ -306,8 +311,8 @@ class _Probe(ABC):
 class _CountProbe(_Probe):
     final = True
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.present: int | None = None
 
     def add(self, f: _Frames) -> None:
@@ -324,8 +329,8 @@ class _CountProbe(_Probe):
 class _StartProbe(_Probe):
     final = True
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.first = np.full((self.cols.size, 2), np.nan)
 
     def add(self, f: _Frames) -> None:
@@ -347,8 +352,8 @@ class _StartProbe(_Probe):
 
 
 class _ReachProbe(_Probe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.first = np.full(self.cols.size, np.inf)
 
     def add(self, f: _Frames) -> None:
@@ -372,8 +377,8 @@ class _ReachProbe(_Probe):
 class _StayProbe(_Probe):
     """Arrive, then stay: the share of the time after arriving spent at the place."""
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.arrived = np.full(m, np.inf)
         self.after = np.zeros(m)
@@ -415,8 +420,8 @@ class _StayProbe(_Probe):
 
 
 class _WanderProbe(_Probe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.present = np.zeros(m)
         self.inside_n = np.zeros(m)
@@ -460,8 +465,8 @@ class _WanderProbe(_Probe):
 class _LeaveProbe(_Probe):
     """They leave a place: each member is somewhere else than `zone` at some time of the run."""
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.left = np.full(self.cols.size, np.inf)
 
     def add(self, f: _Frames) -> None:
@@ -487,8 +492,8 @@ class _LeaveProbe(_Probe):
 
 
 class _MoveProbe(_Probe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.walked = np.zeros(self.cols.size)
         self.last = np.full((self.cols.size, 2), np.nan)
 
@@ -512,8 +517,8 @@ class _MoveProbe(_Probe):
 class _PaceProbe(_Probe):
     BINS = np.linspace(0.0, 3.0, 151)
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.histogram = np.zeros(self.BINS.size - 1)
 
     def add(self, f: _Frames) -> None:
@@ -671,8 +676,8 @@ class _RobotProbe(_Probe):
 
 
 class _RobotFollowProbe(_RobotProbe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.since = np.full(m, np.inf)  # first time within reach
         self.moving = np.zeros(m)  # robot-moving frames since then
@@ -712,8 +717,8 @@ class _RobotFollowProbe(_RobotProbe):
 
 
 class _RobotApproachProbe(_RobotProbe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.closest = np.full(self.cols.size, np.inf)
         self.when = np.full(self.cols.size, np.nan)
         self.seen_robot = False
@@ -745,8 +750,8 @@ class _RobotApproachProbe(_RobotProbe):
 
 
 class _RobotBlockProbe(_RobotProbe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.blocked = np.zeros(m)  # frames standing in its path
         self.speed_sum = np.zeros(m)  # the robot's speed summed over those frames
@@ -785,8 +790,8 @@ class _RobotBlockProbe(_RobotProbe):
 
 
 class _RobotAvoidProbe(_RobotProbe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.away = np.zeros(m)  # net metres moved away from the robot while it was near, so far
         self.best = np.zeros(m)  # the most that net ever was: stepping away and coming back is avoiding it
@@ -836,8 +841,8 @@ class _RobotAvoidProbe(_RobotProbe):
 
 
 class _RobotLookProbe(_RobotProbe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.in_sight = np.zeros(m)
         self.facing = np.zeros(m)
@@ -872,8 +877,8 @@ class _RobotLookProbe(_RobotProbe):
 
 
 class _FollowPersonProbe(_Probe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.partner_cols = self.checker._cols(self.claim.partners)
         m = self.cols.size
         self.present = np.zeros(m)
@@ -906,8 +911,8 @@ class _FollowPersonProbe(_Probe):
 class _RobotPlaceProbe(_Probe):
     """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time."""
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.first = math.inf
         self.frames = 0
         self.there = 0
@@ -939,8 +944,8 @@ class _RobotPlaceProbe(_Probe):
 class _RobotPatrolProbe(_Probe):
     """The robot goes to the far end of its round and comes back to where it started."""
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.start: np.ndarray | None = None
         self.far_at = math.inf
         self.back_at = math.inf
@@ -970,8 +975,8 @@ class _RobotPatrolProbe(_Probe):
 
 
 class _RobotFollowPersonProbe(_Probe):
-    def __init__(self, *args: Any) -> None:
-        super().__init__(*args)
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
         self.partner_cols = self.checker._cols(self.claim.partners)
         self.frames = 0
         self.near = 0

@@ -24,15 +24,15 @@ import json
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
-
 import yaml
 
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import EvalError
+from grove_tui.jsontypes import Parsed
 from grove_tui.scenario.bundle import load_report, load_scenario, read_bundle_text
 from grove_tui.scenario.model import AgentSpec, Scenario
+from grove_tui.world import World
 
 DOES = ("queue", "wait", "wander", "converse", "walk", "evacuate")
 GROUP_KEYS = ("label", "count", "does", "at", "pace", "reaction")
@@ -99,7 +99,7 @@ def load_chains(path: str | Path) -> list[Chain]:
     return chains
 
 
-def _step(raw: Mapping[str, Any], where: str) -> ExpectedStep:
+def _step(raw: Parsed, where: str) -> ExpectedStep:
     groups = []
     for k, g in enumerate(raw["groups"]):
         unknown = set(g) - set(GROUP_KEYS)
@@ -139,11 +139,11 @@ class ActualGroup:
 class Bundle:
     path: Path
     scenario: Scenario
-    report: dict[str, Any]
+    report: Parsed  # generation.json
     groups: list[ActualGroup]
 
 
-def read_bundle(path: str | Path, world: Any, preset_max_vel: float) -> Bundle:
+def read_bundle(path: str | Path, world: World, preset_max_vel: float) -> Bundle:
     path = Path(path)
     scenario = load_scenario(path)
     report = load_report(path)
@@ -166,7 +166,7 @@ def read_bundle(path: str | Path, world: Any, preset_max_vel: float) -> Bundle:
     return Bundle(path, scenario, report, groups)
 
 
-def _activities(tree: Mapping[str, Any], world: Any) -> dict[str, frozenset[str]]:
+def _activities(tree: Parsed, world: World) -> dict[str, frozenset[str]]:
     """What a draft-form tree makes its people do, each activity with the zones where; first the main one.
 
     Queueing and conversing are what a tree with those nodes does, nothing else. Arriving is walking:
@@ -193,7 +193,7 @@ def _activities(tree: Mapping[str, Any], world: Any) -> dict[str, frozenset[str]
     return {"idle": frozenset()}
 
 
-def _walked_to(place: str | None, world: Any) -> frozenset[str]:
+def _walked_to(place: str | None, world: World) -> frozenset[str]:
     """The zone of a place walked to, and "exit" with the door's name when it is an exit door."""
     zones = _zones(world, [place])
     if place is not None and place in {d.name for d in world.exits()}:
@@ -201,7 +201,7 @@ def _walked_to(place: str | None, world: Any) -> frozenset[str]:
     return zones
 
 
-def _walk(node: Mapping[str, Any]) -> list[Mapping[str, Any]]:
+def _walk(node: Parsed) -> list[Parsed]:
     out = [node]
     # a robot reaction's branch (IsRobotVisible -> reaction) is how they react, not what they do
     children = list(node.get("children") or ())
@@ -213,11 +213,11 @@ def _walk(node: Mapping[str, Any]) -> list[Mapping[str, Any]]:
     return out
 
 
-def _flat(node: Mapping[str, Any]) -> list[Mapping[str, Any]]:
+def _flat(node: Parsed) -> list[Parsed]:
     return [node] + [n for c in node.get("children") or () for n in _flat(c)]
 
 
-def _place(node: Mapping[str, Any]) -> str | None:
+def _place(node: Parsed) -> str | None:
     spec = NODES.get(str(node.get("node")))
     for port in spec.ports if spec is not None else ():
         if port.type == "target" and node.get(port.name):
@@ -225,7 +225,7 @@ def _place(node: Mapping[str, Any]) -> str | None:
     return None
 
 
-def _zone(world: Any, name: str | None) -> str | None:
+def _zone(world: World, name: str | None) -> str | None:
     if not name:
         return None
     try:
@@ -236,7 +236,7 @@ def _zone(world: Any, name: str | None) -> str | None:
     return zone if isinstance(zone, str) and zone else getattr(obj, "name", None)
 
 
-def _zones(world: Any, names: Sequence[str | None]) -> frozenset[str]:
+def _zones(world: World, names: Sequence[str | None]) -> frozenset[str]:
     return frozenset(z for z in (_zone(world, n) for n in names) if z)
 
 
@@ -247,7 +247,7 @@ def _exit_of(path: Path, agent: AgentSpec) -> str | None:
 
 # ---- scoring ----------------------------------------------------------------------------------------------
 
-def _matches(expected: ExpectedGroup, actual: ActualGroup, world: Any) -> list[str]:
+def _matches(expected: ExpectedGroup, actual: ActualGroup, world: World) -> list[str]:
     """Why an actual group is not the expected one (empty: it is)."""
     problems = []
     if expected.label != actual.label:
@@ -274,7 +274,7 @@ def _matches(expected: ExpectedGroup, actual: ActualGroup, world: Any) -> list[s
 
 
 def match_groups(expected: Sequence[ExpectedGroup], actual: Sequence[ActualGroup],
-                 world: Any) -> tuple[dict[int, ActualGroup], list[str]]:
+                 world: World) -> tuple[dict[int, ActualGroup], list[str]]:
     """Expected index -> the actual group it is, and the problems (missing, wrong, left over)."""
     used: set[int] = set()
     found: dict[int, ActualGroup] = {}
@@ -295,7 +295,7 @@ def match_groups(expected: Sequence[ExpectedGroup], actual: Sequence[ActualGroup
     return found, problems
 
 
-def robot_problems(expected: str | Mapping[str, str], scenario: Scenario, world: Any) -> list[str]:
+def robot_problems(expected: str | Mapping[str, str], scenario: Scenario, world: World) -> list[str]:
     robot = scenario.robot
     if expected == "none":
         return [] if robot is None else ["a robot is there, none was expected"]
@@ -331,7 +331,7 @@ class StepResult:
         return not self.problems and not self.error
 
 
-def score_step(chain: Chain, number: int, bundle: Bundle, world: Any, previous: Bundle | None = None,
+def score_step(chain: Chain, number: int, bundle: Bundle, world: World, previous: Bundle | None = None,
                matched_before: Mapping[int, ActualGroup] | None = None) -> tuple[StepResult, dict[int, ActualGroup]]:
     """One step of a chain against its bundle (and the untouched groups against the bundle before)."""
     step = chain.steps[number]
@@ -396,7 +396,7 @@ def byte_differences(before: Bundle, old: ActualGroup, after: Bundle, new: Actua
     return out
 
 
-def _canonical(record: Any) -> str:
+def _canonical(record: object) -> str:
     return json.dumps(record, sort_keys=True)
 
 

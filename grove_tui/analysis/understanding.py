@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Any
 
 import yaml
 
-from grove_tui.bt.format.xml import read_tree
+from grove_tui.bt.format.document import TreeDocument
 from grove_tui.errors import GroveError, UnderstandingError
 from grove_tui.language.lexicon import SCALES, TENS, UNITS
 
@@ -43,7 +43,7 @@ if TYPE_CHECKING:
     from grove_tui.world.model import World
 
 # A PromptReading's to_dict(): JSON, compared field by field with what the suite's YAML states.
-ReadingDict = Mapping[str, Any]
+ReadingDict = Mapping[str, Any]  # Any: to_dict()'s JSON or the suite's YAML, compared key by key
 # Reads a prompt in a world with a seed: the reader under test (language.reading.read_prompt by default).
 Reader = Callable[[str, "World", int], ReadingDict]
 
@@ -348,13 +348,13 @@ def _zone_of(world: World, name: str) -> str | None:
     return name if hasattr(place, "boundary") else getattr(place, "zone", None)
 
 
-def idle_tree(xml: str, action_names: frozenset[str]) -> bool:
+def idle_tree(document: TreeDocument, action_names: frozenset[str]) -> bool:
     """A tree whose nodes include no action: it can only check conditions, so nobody moves."""
-    node_types = {el.id for el in read_tree(xml).nodes()}  # compact <GoTo/> and explicit <Action ID="GoTo"/>
+    node_types = {el.id for el in document.nodes()}  # compact <GoTo/> and explicit <Action ID="GoTo"/>
     return not (node_types & action_names)
 
 
-def score_scenario(case: UnderstandingCase, world: World, scenario: Scenario, trees: Mapping[str, str],
+def score_scenario(case: UnderstandingCase, world: World, scenario: Scenario, trees: Mapping[str, TreeDocument],
                    action_names: frozenset[str]) -> ScenarioScore:
     """Score a generated scenario (Scenario plus its trees by relative path) against the case."""
     score = ScenarioScore(case, agents=len(scenario.agents))

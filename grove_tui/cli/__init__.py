@@ -10,6 +10,8 @@ import errno
 import importlib
 import os
 import sys
+from collections.abc import Sequence
+from pathlib import Path
 from typing import Any
 
 import click
@@ -49,8 +51,10 @@ class LazyGroup(click.Group):
     README's exit-code table). No subcommand ends in a traceback on bad input.
     """
 
-    def main(self, args: Any = None, prog_name: str | None = None, complete_var: str | None = None,
-             standalone_mode: bool = True, **extra: Any) -> Any:
+    def main(self, args: Sequence[str] | None = None, prog_name: str | None = None, complete_var: str | None = None,
+             standalone_mode: bool = True,
+             **extra: Any,  # Any: click.Command.main's own signature (make_context's keyword arguments)
+             ) -> Any:  # Any: click.Command.main's own return type
         from grove_tui.errors import EXIT_BAD_INPUT, BadInputError, Cancelled, GroveError, RuntimeFailure, print_error
 
         try:
@@ -119,8 +123,10 @@ def main(ctx: click.Context, model: str | None, roi_model: str | None, bt_model:
         sys.exit(open_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset))
 
 
-def open_app(**options: Any) -> int:
+def open_app(*, model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
+             world: str | None = None, preset: str | None = None, open_bundle: Path | None = None) -> int:
     """Run the terminal app (the one way from the command line into the TUI); returns its exit code."""
     from grove_tui.tui.app import run_app
 
-    return run_app(**options)
+    return run_app(model=model, roi_model=roi_model, bt_model=bt_model, world=world, preset=preset,
+                   open_bundle=open_bundle)

@@ -10,9 +10,9 @@ from __future__ import annotations
 import json
 import re
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 import click
 from rich.console import Console
@@ -21,7 +21,22 @@ from grove_tui.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUNTIME_FAILURE
 from grove_tui.settings import PEDESTRIAN_MODELS
 
 if TYPE_CHECKING:
-    from grove_tui.services.session import GroveSession
+    from rich.progress import TaskID
+    from rich.status import Status
+
+    from grove_tui.scenario.model import Scenario
+    from grove_tui.services.dataset import JobRecord
+    from grove_tui.services.jobs import BatchJob
+    from grove_tui.services.session import GroveSession, ScenarioRequest
+
+
+class Generated(Protocol):
+    """What a summary reads of a generation's result (generation.pipeline.GenerationResult)."""
+
+    @property
+    def scenario(self) -> Scenario: ...
+    @property
+    def report(self) -> Mapping[str, Any]: ...  # Any: generation.json's report, as the pipeline builds it
 
 
 def _err() -> Console:
@@ -32,7 +47,7 @@ def _out() -> Console:
     return Console(file=sys.stdout, highlight=False, soft_wrap=True)
 
 
-def _root_options(ctx: click.Context) -> dict[str, Any]:
+def _root_options(ctx: click.Context) -> dict[str, str | None]:
     root = ctx.find_root()
     return dict(root.obj or {}) if root.obj is not None else {}
 
@@ -66,9 +81,9 @@ class Progress:
         # a spinner: rich shows one live display at a time.
         self.show = show
         self.tokens = 0
-        self._status: Any = None
+        self._status: Status | None = None
 
-    def __call__(self, event: Any) -> None:
+    def __call__(self, event: object) -> None:
         from grove_tui.services.session import AttemptStarted, StageFinished, StageStarted, TokenStreamed
 
         if isinstance(event, AttemptStarted):
@@ -102,7 +117,9 @@ class Progress:
             self._status = None
 
 
-def summary_lines(result: Any, bundle: Path, checked: dict[str, Any] | None = None) -> list[str]:
+def summary_lines(result: Generated, bundle: Path,
+                  checked: dict[str, Any] | None = None,  # Any: grounding.json as read; GroundingReport checks it
+                  ) -> list[str]:
     scenario, report = result.scenario, result.report
     stages = " ".join(f"{k}={v['seconds']:.2f}s" for k, v in report["stages"].items())
     groups = ", ".join(f"{g['count']} {g['label']} " + (f"across {len(g['spawn_zones'])} zones" if g.get("spawn_zones")
@@ -187,7 +204,7 @@ def generate(ctx: click.Context, no_ui: bool, world_name: str, preset_name: str,
             _generate_one(session, varied, target, overwrite, simulate_seconds, as_json, prefix)
 
 
-def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite: bool,
+def _generate_one(session: GroveSession, request: ScenarioRequest, out_dir: Path, overwrite: bool,
                   simulate_seconds: float | None, as_json: bool, prefix: str) -> None:
     progress = Progress(_err(), prefix=prefix)
     try:
@@ -213,7 +230,7 @@ def _generate_one(session: GroveSession, request: Any, out_dir: Path, overwrite:
                   f"{bundle / 'trajectories.csv'}", markup=False)
 
 
-def _checked_report(bundle: Path) -> dict[str, Any] | None:
+def _checked_report(bundle: Path) -> dict[str, Any] | None:  # Any: JSON as read; GroundingReport checks it
     """The grounding report the run checked (grounding.json), when the bundle has one."""
     path = bundle / "grounding.json"
     return json.loads(path.read_text(encoding="utf-8")) if path.is_file() else None
@@ -275,17 +292,17 @@ def batch(ctx: click.Context, jobs_file: str, out_dir: str, overwrite: bool, res
     progresses: list[Progress] = []
     bar = _BatchBar(err)
 
-    def events_for(index: int, job: Any) -> Progress:
+    def events_for(index: int, job: BatchJob) -> Progress:
         # Stage lines print above the bar; a Ray batch's stages run in the workers and print nothing here.
         progresses.append(Progress(err, prefix=f"[{index}/{len(jobs)}] ", show=bar.show))
         return progresses[-1]
 
-    def started(to_run: list[Any], skipped: list[Any]) -> None:
+    def started(to_run: list[BatchJob], skipped: list[BatchJob]) -> None:
         if skipped:
             err.print(f"resume: {len(skipped)} completed job(s) skipped, {len(to_run)} to run", markup=False)
         bar.start(len(to_run))
 
-    def report(record: Any) -> None:
+    def report(record: JobRecord) -> None:
         if progresses:
             progresses[-1].stop()
         bar.advance()
@@ -324,7 +341,7 @@ class _BatchBar:
                                       TextColumn("{task.fields[rate]}"), TimeElapsedColumn(), TextColumn("ETA"),
                                       TimeRemainingColumn(), TextColumn("{task.fields[now]}"), console=console,
                                       transient=False)
-        self._task: Any = None
+        self._task: TaskID | None = None
 
     def start(self, total: int) -> None:
         self._task = self._progress.add_task("batch", total=total, rate="", now="")

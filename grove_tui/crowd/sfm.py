@@ -66,7 +66,8 @@ P_DENSITY_RADIUS = 19
 P_PERIOD = 20
 P_PERIOD_X0 = 21
 P_ROBOT_SIGMA = 22
-P_COUNT = 23
+P_BODY_FRACTION = 23
+P_COUNT = 24
 
 # Layout of the robot state vector.
 R_X = 0
@@ -150,6 +151,9 @@ class SFMParams:
     yaw_hold_speed: float = 0.07
     # Agents end every step at least this fraction of their radius away from any wall: 0.9 keeps a
     # body at most 3.5 cm (radius 0.35) into a wall; at 0.5 a dense crowd pressed bodies 12 cm in.
+    # A fraction of the radius, not of the body (body_fraction): as a fraction of the 0.23 m body,
+    # people stood 2 cm deeper in the planner's margin along walls, where the exit fields point
+    # away from the wall, and RiMEA 9's corner doors drained 1-3 s later.
     wall_clearance: float = 0.9
     # HuNavSim 2.0 turns 0.2*pi per behaviour tick; at a 10 Hz tick that is 2*pi rad/s.
     face_turn_rate: float = 2.0 * math.pi
@@ -171,6 +175,13 @@ class SFMParams:
     # Social terms exp(-x) with x above this (below 3.4e-4 of their peak at 8) are skipped
     # before the atan2 and exp; math.inf evaluates every pair within the cutoff.
     social_skip_exponent: float = 8.0
+    # The body that touches others and walls (contact compression and friction, the wall force) has
+    # this fraction of the agent's radius. The radius (product default 0.25 m) is the envelope the
+    # planner keeps clear of walls; the body is as wide as the shoulders, 0.46 m (Weidmann 1993),
+    # so 0.23 m at the default. With 0.25 m bodies, people reaching a 0.8 m door mouth side by side
+    # both touched its jambs and blocked each other for 1-2 s every few people: 0.8 m passed
+    # 1.30 persons/(m s), under the laboratory band (analysis/empirical.py; docs/BENCHMARKS.md).
+    body_fraction: float = 0.92
     # Seconds in which a waiting person (MODE_STOP, MODE_FACE; queueing people are pulled back to
     # their slot by the goal force; walkers who arrived give way as before) would walk back to the spot where it stopped (spring stiffness w_goal / (tau hold_time));
     # 0 turns holding off (lightsfm: standing agents are
@@ -180,7 +191,7 @@ class SFMParams:
     @classmethod
     def lightsfm(cls, **overrides: float) -> SFMParams:
         """lightsfm's (HuNavSim's) forces exactly, as Gazebo runs them: soft bodies, no holding."""
-        values = dict(epsilon=0.0, body_weight=0.0, friction_weight=0.0, hold_time=0.0, density_radius=0.0,
+        values = dict(epsilon=0.0, body_weight=0.0, body_fraction=1.0, friction_weight=0.0, hold_time=0.0, density_radius=0.0,
                       social_skip_exponent=math.inf, wall_clearance=0.5, obstacle_sigma=0.2, wall_range=2.0)
         values.update(overrides)
         return cls(**values)
@@ -196,6 +207,8 @@ class SFMParams:
         for name in ("obstacle_sigma", "robot_sigma", "gamma", "tau", "cutoff", "wall_range"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"SFMParams.{name} must be > 0, got {getattr(self, name)!r}")
+        if not 0.0 < self.body_fraction <= 1.0:
+            raise ValueError(f"SFMParams.body_fraction must be in (0, 1], got {self.body_fraction!r}")
 
     def factors(self) -> tuple[float, float, float, float]:
         return (self.goal_weight, self.obstacle_weight, self.social_weight, self.other_weight)
@@ -223,6 +236,7 @@ class SFMParams:
         out[P_HOLD] = self.hold_time
         out[P_FRICTION] = self.friction_weight
         out[P_DENSITY_RADIUS] = self.density_radius
+        out[P_BODY_FRACTION] = self.body_fraction
         return out
 
 
@@ -1013,6 +1027,7 @@ def _gather(i0, i1, params, rank, pos, vel, radius, mode, goals, goal_len, goal_
     arrays are read in order and only one row is written out of order.
     """
     gap0 = params[P_CUTOFF] - rmax
+    body = params[P_BODY_FRACTION]
     for i in range(i0, i1):
         k = rank[i]
         if k < 0:
@@ -1025,7 +1040,7 @@ def _gather(i0, i1, params, rank, pos, vel, radius, mode, goals, goal_len, goal_
         nstate[k, S_Y] = py
         nstate[k, S_VX] = vel[i, 0]
         nstate[k, S_VY] = vel[i, 1]
-        nstate[k, S_R] = radius[i]
+        nstate[k, S_R] = radius[i] * body  # the body, not the envelope (SFMParams.body_fraction)
         nstate[k, S_EX] = ex
         nstate[k, S_EY] = ey
         nstate[k, S_DIR] = 1.0 if has_dir else 0.0
@@ -1034,7 +1049,7 @@ def _gather(i0, i1, params, rank, pos, vel, radius, mode, goals, goal_len, goal_
         acc[k, A_CX] = 0.0
         acc[k, A_CY] = 0.0
         acc[k, A_AHEAD] = 0.0
-        acc[k, A_GAP] = gap0 - radius[i]
+        acc[k, A_GAP] = gap0 - radius[i] * body
 
 
 @nb.njit(cache=True, inline="always")
@@ -1546,6 +1561,9 @@ def _integrate(i0, i1, dt, params,
 
         # the robot, as HuNavSim's behaviours perceive it
         if robot_present:
+            # people keep their whole radius from the robot, not only the body: the robot's contact
+            # metrics (HuNavSim's robot-on-person collisions) count at the radius
+            rr = radius[i]
             ri_mode = robot_interaction[i]
             rdx = rx - px
             rdy = ry - py
@@ -1556,18 +1574,18 @@ def _integrate(i0, i1, dt, params,
                     sfx += ax_
                     sfy += ay_
                     rd = math.sqrt(rd2)
-                    overlap = ri + rrad - rd
+                    overlap = rr + rrad - rd
                     if overlap > 0.0 and rd > _TINY:
                         fx -= body * overlap * rdx / rd
                         fy -= body * overlap * rdy / rd
             elif ri_mode == ROBOT_AS_OBSTACLE:
-                if rd2 <= (robot_range + ri) * (robot_range + ri):
-                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, ri, w_obs, robot_sigma, i)
+                if rd2 <= (robot_range + rr) * (robot_range + rr):
+                    ax_, ay_ = _point_obstacle_force(px, py, rx, ry, rr, w_obs, robot_sigma, i)
                     fx += ax_
                     fy += ay_
             elif ri_mode == ROBOT_FEARED:
                 rd = math.sqrt(rd2)
-                gap = rd - ri
+                gap = rd - rr
                 if gap < 0.05:
                     gap = 0.05
                 mag = w_other * robot_sigma / gap
@@ -1584,12 +1602,15 @@ def _integrate(i0, i1, dt, params,
         if has_dir and ahead > 0.0 and density_radius > 0.0:
             # Weidmann's fundamental diagram, normalised to 1 at free flow: the drive aims at the
             # slower speed (lowering v0 in w_goal (v0 e - v) / tau)
-            # the people counted stand in the part of the half disc no wall hides, outside one's
-            # own body plus theirs (that disc holds no neighbour's centre)
+            # the people counted stand in the part of the half disc no wall hides. One counts oneself
+            # as half a person: in a crowd each person holds about 1/rho of the floor, and half of
+            # one's own share lies in the half disc ahead, where nobody else's centre can be; the
+            # count of the others alone is rho A - 1/2 (without the half, the corridor's crowd
+            # walked 11-16 % faster than Weidmann at 2-4 per m^2; with it, within 4 % at 0.5-4)
             share = 1.0
             if clear < density_radius:
                 share = _visible_share(px, py, ex, ey, density_radius, walls, wall_meta, wall_start, wall_items)
-            rho = ahead / max(share * density_area, 0.05 * density_area)
+            rho = (ahead + 0.5) / max(share * density_area, 0.05 * density_area)
             slow = 0.0
             if rho < 5.4:
                 # _fast_exp, not math.exp: the same bits in the serial and the parallel kernel
@@ -1659,7 +1680,7 @@ def _integrate(i0, i1, dt, params,
                     continue
                 dx = px - pos[j, 0]
                 dy = py - pos[j, 1]
-                if math.sqrt(dx * dx + dy * dy) < ri + radius[j]:
+                if math.sqrt(dx * dx + dy * dy) < ri + radius[j] * params[P_BODY_FRACTION]:
                     rep_x += dx
                     rep_y += dy
             fx += params[P_REPULSION] * rep_x
@@ -1679,13 +1700,14 @@ def _integrate(i0, i1, dt, params,
         if not (math.isfinite(nvx) and math.isfinite(nvy)):
             nvx = 0.0
             nvy = 0.0
-        if clear > (abs(nvx) + abs(nvy)) * dt + params[P_CLEARANCE] * ri + 1e-9:
+        # the clearance is a share of the radius (the envelope), not of the body
+        if clear > (abs(nvx) + abs(nvy)) * dt + params[P_CLEARANCE] * radius[i] + 1e-9:
             # no wall within reach of this step: resolve_motion would return the straight move
             qx = px + nvx * dt
             qy = py + nvy * dt
         else:
             qx, qy, nvx, nvy = resolve_motion(px, py, px + nvx * dt, py + nvy * dt, nvx, nvy,
-                                              params[P_CLEARANCE] * ri,
+                                              params[P_CLEARANCE] * radius[i],
                                               walls, wall_meta, wall_start, wall_items)
         npos[k, 0] = qx
         npos[k, 1] = qy
@@ -1820,7 +1842,7 @@ def _apply_separation(k0, k1, params, nstate, where, push, out,
         sx = push[k, 0]
         sy = push[k, 1]
         if sx != 0.0 or sy != 0.0:
-            clearance = params[P_CLEARANCE] * nstate[k, S_R]
+            clearance = params[P_CLEARANCE] * nstate[k, S_R] / params[P_BODY_FRACTION]  # of the radius
             if _wall_free(px, py, free_meta, wall_free) > abs(sx) + abs(sy) + clearance + 1e-9:
                 qx = px + sx
                 qy = py + sy

@@ -37,7 +37,7 @@ import re
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Generic, Protocol, TypedDict, TypeVar, Unpack
 
 import numpy as np
 
@@ -48,11 +48,32 @@ from grove_tui.exports.scene import goal_radius
 from grove_tui.files import atomic_file, check_output_file
 
 if TYPE_CHECKING:  # foxglove-sdk is the `ros` extra; the export imports it when it runs
-    from foxglove.messages import (ArrowPrimitive, Color, CylinderPrimitive, Grid, LinePrimitive, Pose, SceneEntity,
-                                   SceneUpdate, Timestamp, Vector3)
+    from foxglove import Context
+    from foxglove.messages import (ArrowPrimitive, Color, CubePrimitive, CylinderPrimitive, Grid, KeyValuePair,
+                                   LinePrimitive, Pose, SceneEntity, SceneUpdate, SpherePrimitive, TextPrimitive,
+                                   Timestamp, Vector3)
+
+    class _Primitives(TypedDict, total=False):
+        """What a SceneEntity is drawn with (foxglove.messages.SceneEntity's keyword arguments)."""
+
+        metadata: list[KeyValuePair]
+        arrows: list[ArrowPrimitive]
+        cubes: list[CubePrimitive]
+        spheres: list[SpherePrimitive]
+        cylinders: list[CylinderPrimitive]
+        lines: list[LinePrimitive]
+        texts: list[TextPrimitive]
 
     from grove_tui.navigation.grid import OccupancyGrid
     from grove_tui.scenario.events import SimEvent
+
+Message = TypeVar("Message", contravariant=True)
+
+
+class _Channel(Protocol, Generic[Message]):
+    """A foxglove channel of one message type (SceneUpdateChannel logs SceneUpdate, GridChannel Grid...)."""
+
+    def log(self, message: Message, *, log_time: int | None = None, sink_id: int | None = None) -> None: ...
 
 LAYOUT_FILE = Path(__file__).with_name("foxglove_layout.json")
 FRAME_ID = "map"
@@ -218,7 +239,7 @@ class _Scene:
                                points=[m.Point3(x=float(p[0]), y=float(p[1]), z=z) for p in points],
                                color=self.colour(rgba))
 
-    def entity(self, ns: int, entity_id: str, **primitives: Any) -> SceneEntity:  # cubes=[CubePrimitive], lines=...: each its own type
+    def entity(self, ns: int, entity_id: str, **primitives: Unpack[_Primitives]) -> SceneEntity:
         return self.m.SceneEntity(timestamp=self.stamp(ns), frame_id=FRAME_ID, id=entity_id, **primitives)
 
     def bodies(self, x: list[float], y: list[float], yaw: np.ndarray, looks: list[tuple[Color, Vector3, float]],
@@ -424,12 +445,12 @@ def _write_frames(bundle: SimulatedBundle, path: Path, out: Path, watch: _WriteF
     writer = foxglove.open_mcap(path, allow_overwrite=True, context=context)
     writer.write_metadata(METADATA_NAME, {"writer": "grove export foxglove", "bundle": bundle.path.name})
     try:
-        # Each foxglove channel class logs its own message type (SceneUpdate, Grid, Log...), hence Any.
-        def channel(kind: Callable[..., Any], topic: str) -> Callable[[Any, int], None]:
+        # Each foxglove channel class logs its own message type (SceneUpdate, Grid, Log...).
+        def channel(kind: Callable[..., _Channel[Message]], topic: str) -> Callable[[Message, int], None]:
             made = kind(topic, context=context)
             counts[topic] = 0
 
-            def log(message: Any, ns: int) -> None:
+            def log(message: Message, ns: int) -> None:
                 made.log(message, log_time=ns)
                 counts[topic] += 1
             return log

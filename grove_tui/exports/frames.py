@@ -19,7 +19,6 @@ from grove_tui.crowd.recording import CSV_COLUMNS, ROBOT_ID
 from grove_tui.errors import StreamExportError
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.bt.format.xml import read_tree
 from grove_tui.exports.scene import Scene, scene_of
 from grove_tui.scenario.bundle import MAX_TRAJECTORY_BYTES, bundle_member, load_bundle, load_bundle_world
 from grove_tui.scenario.events import EVENTS_FILE, MAX_EVENTS_BYTES, SimEvent, read_events
@@ -78,7 +77,7 @@ def open_simulated_bundle(bundle_dir: str | Path) -> SimulatedBundle:
         events = sorted(read_events(bundle_member(root, EVENTS_FILE, "event log", MAX_EVENTS_BYTES)),
                         key=lambda e: e.t)
     _check_header(csv)
-    documents = {agent.id: read_tree(trees[agent.tree], str(root / agent.tree)) for agent in scenario.agents}
+    documents = {agent.id: trees[agent.tree] for agent in scenario.agents}
     return SimulatedBundle(root, scenario, world, grid, fields, events, csv, scene_of(world, scenario, documents))
 
 

@@ -65,7 +65,7 @@ from grove_tui.bt.format.hunav_compat import (
 from grove_tui.bt.format.manifest import NODES, treenodes_model_xml
 from grove_tui.bt.format.document import TreeDocument, TreeElement, node
 from grove_tui.bt.format.ports import parse_point_list
-from grove_tui.bt.format.xml import check_tree_text, read_tree, write_tree
+from grove_tui.bt.format.xml import check_document, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
 from grove_tui.exports.nav2_map import write_nav2_map
@@ -758,7 +758,7 @@ def _hunav_tree(agent: AgentSpec, document: TreeDocument, scenario: Scenario, bu
                         muster=scene.muster, world=world if lower else None, conversations=conversations)
     tree = lower_tree(document, ctx, where, world) if lower else _renumber_goal_ids(document, goals)
     tree = _rename_main_tree(tree, "DefaultTree")
-    problems = check_tree_text(write_tree(tree), source=where, nodes=HUNAV_NODES if lower else NODES)
+    problems = check_document(tree, HUNAV_NODES if lower else NODES, source=where)
     if problems:
         raise ExportError(f"{where}: exported tree does not validate: " + "; ".join(str(p) for p in problems))
     wrap_for_hunav(tree, reaction=reactions.get(agent.behavior), hold_seconds=HOLD_WAIT_SECONDS, looping=looping)

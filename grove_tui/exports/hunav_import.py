@@ -45,9 +45,9 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from grove_tui.bt.format.include import included_files, resolve_includes
-from grove_tui.bt.format.document import TreeDocument, TreeElement, node
+from grove_tui.bt.format.document import TreeDocument, TreeElement, TreeFiles, node
 from grove_tui.errors import BTError
-from grove_tui.bt.format.xml import check_tree_text, read_tree, write_tree
+from grove_tui.bt.format.xml import check_document, read_tree, write_tree
 from grove_tui.errors import GroveError, HunavImportError
 from grove_tui.exports.hunav import GROVE_LINE_PREFIX, KEPT_NODE_PREFIX
 from grove_tui.exports.hunav_loader_check import check_loader_parameters, hunav_layout, ignored_keys
@@ -63,7 +63,7 @@ if TYPE_CHECKING:
     from grove_tui.generation.pipeline import GenerationResult
 
 # A mapping of the agents YAML as parsed: its values are the file's own until each is checked.
-YamlMapping = dict[str, Any]
+YamlMapping = dict[str, Any]  # Any: YAML values, each checked where it is read
 
 OPEN_FLOOR_MARGIN = 4.0  # metres of floor around the farthest pose or goal of a synthesized world
 # A HuNavSim scenario of MAX_SCENARIO_AGENTS agents is well under a megabyte of YAML.
@@ -75,7 +75,7 @@ GOAL_RADIUS_RANGE = (0.0, 100.0)  # metres, as a bundle takes it
 BEHAVIOR_NAMES = {number: name for name, number in BEHAVIOR_NUMBERS.items()}
 
 
-def regular_nav_tree() -> str:
+def regular_nav_tree() -> TreeDocument:
     """HuNavSim's regular navigation (hunav_agent_manager/behavior_trees/BTRegularNav.xml), what a 1.0
     agent runs: walk to the front goal, and on reaching it take the next (round and round if cyclic)."""
     walk = TreeElement("Sequence", {"name": "RegularNavigation"}, [
@@ -83,7 +83,7 @@ def regular_nav_tree() -> str:
         node("RegularNav", agent_id="{id}", time_step="{dt}")])
     root = TreeElement("Fallback", {"name": "RegularNavFallback"}, [walk, node("UpdateGoal", agent_id="{id}")])
     tree = TreeElement("BehaviorTree", {"ID": "RegularNavTree"}, [root])
-    return write_tree(TreeDocument("RegularNavTree", {"RegularNavTree": tree}, "BTRegularNav.xml"))
+    return TreeDocument("RegularNavTree", {"RegularNavTree": tree}, "BTRegularNav.xml")
 
 
 def tree_digest(text: str) -> str:
@@ -114,8 +114,9 @@ def _tree_file(folder_candidates: list[Path], base: str, agent_id: int) -> Path:
                            hint="Pass --trees DIR, the folder holding the agents' tree files.")
 
 
-def _grove_names(xml: bytes, source: str) -> str:
-    """Trees an export wrote with --keep-grove-nodes name GROVE nodes Grove<Node>: give them back."""
+def _grove_names(xml: bytes, source: str) -> TreeDocument:
+    """The tree file read (once, here); trees an export wrote with --keep-grove-nodes name GROVE nodes
+    Grove<Node>: give them back."""
     from grove_tui.bt.format.manifest import NODES
 
     document = read_tree(xml, source)
@@ -124,7 +125,7 @@ def _grove_names(xml: bytes, source: str) -> str:
             name = element.tag[len(KEPT_NODE_PREFIX):]
             if name in NODES and NODES[name].origin == "grove":
                 element.tag = name
-    return write_tree(document)
+    return document
 
 
 def _grove_line(text: str) -> YamlMapping:
@@ -251,7 +252,7 @@ def _behavior(entry: YamlMapping, layout: str, where: str) -> tuple[str, HunavBe
                                f"{', '.join(BEHAVIOR_TYPES)} (1.0 numbers them: {numbers})")
     if block is None:
         return name, None
-    values: dict[str, Any] = {}  # HunavBehavior's keyword arguments, each checked below
+    values: dict[str, Any] = {}  # Any: HunavBehavior's keyword arguments, the numbers checked below, the rest by the loader check
     for key in HunavBehavior.__dataclass_fields__:
         value = block.get(key)
         if value is not None and key not in ("configuration", "once"):
@@ -371,7 +372,8 @@ def read_hunav(agents_yaml: str | Path, *, world: str | None = None,
 
     folders = [Path(trees_dir)] if trees_dir is not None else [source.parent, source.parent.parent / "behavior_trees"]
     agents: list[AgentSpec] = []
-    files: dict[str, str] = {}
+    trees: TreeFiles = {}
+    files: dict[str, str] = {}  # HuNavSim's own files and the world, kept verbatim
     points: list[tuple[float, float]] = list(global_goals.values())
     includes: list[str] = []
     numbered = False
@@ -380,11 +382,11 @@ def read_hunav(agents_yaml: str | Path, *, world: str | None = None,
         if layout == "2.0":
             path = _tree_file(folders, base, spec.id)
             try:
-                xml = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
+                document = _grove_names(resolve_includes(path, allowed_roots=[path.parent]), str(path))
             except BTError as exc:
                 raise HunavImportError(str(exc), hint="Fix the tree, or pass --trees with the folder it includes "
                                                       "from.") from None
-            tree_problems = check_tree_text(xml, str(path))
+            tree_problems = check_document(document)
             if tree_problems:
                 raise HunavImportError(f"{path}: " + "; ".join(str(p) for p in tree_problems))
             kept = f"{HUNAV_FOLDER}/{path.name}"
@@ -396,8 +398,9 @@ def read_hunav(agents_yaml: str | Path, *, world: str | None = None,
                     includes.append(rel)
                     files[f"{HUNAV_FOLDER}/{rel}"] = included.read_text(encoding="utf-8")
         else:
-            xml = regular_nav_tree()
-        files[spec.tree] = xml
+            document = regular_nav_tree()
+        trees[spec.tree] = document
+        xml = write_tree(document)  # the bytes the bundle will hold: what the digest is of
         labels = grove.get("agents", {}).get(str(spec.id), {}) if isinstance(grove.get("agents"), dict) else {}
         agents.append(replace(spec, hunav=replace(extra, tree_digest=tree_digest(xml)),
                               label=str(labels.get("label", spec.label)), zone=str(labels.get("zone", ""))))
@@ -429,4 +432,4 @@ def read_hunav(agents_yaml: str | Path, *, world: str | None = None,
     report = {"stages": {}, "notes": notes}
     if world_text is not None:
         files[world_ref] = world_text  # written in the same atomic step as the trees
-    return GenerationResult(scenario, files, {}, grid, report)
+    return GenerationResult(scenario, trees, {}, grid, report, files=files)

@@ -62,7 +62,7 @@ def hunav_layout(params: object) -> str:
 
 
 # An agents YAML as parsed, after check_loader_parameters has passed it: its values are still the file's own.
-LoaderDocument = dict[str, Any]
+LoaderDocument = dict[str, Any]  # Any: YAML values, of the types the loader check has confirmed
 SIMULATORS = ("Gazebo Classic", "Gazebo Fortress", "Isaac Sim", "Webots")
 
 

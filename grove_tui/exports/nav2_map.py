@@ -14,9 +14,13 @@ inflates obstacles itself with the robot's footprint (its costmap inflation laye
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.grid import OccupancyGrid
 
 OCCUPIED_PIXEL = 0
 FREE_PIXEL = 254
@@ -64,7 +68,7 @@ def map_yaml(image_name: str, resolution: float, origin: tuple[float, float]) ->
     return yaml.safe_dump(document, sort_keys=False)
 
 
-def write_nav2_map(grid, folder: Path, name: str) -> tuple[Path, Path]:
+def write_nav2_map(grid: OccupancyGrid, folder: Path, name: str) -> tuple[Path, Path]:
     """Write `<name>.pgm` and `<name>.yaml` for `grid` into `folder`; returns both paths."""
     folder.mkdir(parents=True, exist_ok=True)
     pgm = folder / f"{name}.pgm"

@@ -10,14 +10,18 @@ from __future__ import annotations
 import io
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from rich.text import Text
 
-from grove_tui.files import check_output_file, write_bytes_atomic
+from grove_tui.files import FileGuard, check_output_file, write_bytes_atomic
 from grove_tui.errors import PictureError
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import World
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.velocity_field import VelocityField
 
 # Written into every picture's metadata (PNG Software, SVG/PDF Creator): how a later `grove picture --out`
 # knows the file there is its own to replace; any other file is kept unless the user passes --overwrite.
@@ -34,7 +38,7 @@ def _group_colour(group: int) -> str:
     return SOLO_COLOUR if group < 0 else GROUP_COLOURS[group % len(GROUP_COLOURS)]
 
 
-def _load_fields(scenario: Scenario, bundle_dir: Path):
+def _load_fields(scenario: Scenario, bundle_dir: Path) -> dict[str, VelocityField]:
     from grove_tui.scenario.bundle import load_field
 
     return {fid: load_field(bundle_dir, fid, rel) for fid, rel in scenario.fields.items()}
@@ -76,8 +80,8 @@ def draw_scenario(world: World, scenario: Scenario, bundle_dir: str | Path, out_
     fmt = out.suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
         raise PictureError(f"{out}: picture format must be .png, .svg or .pdf")
-    guard = dict(owned=is_grove_picture, what="picture GROVE drew", overwrite=overwrite)
-    check_output_file(out, **guard)  # type: ignore[arg-type]  # before the drawing, not after it
+    guard = FileGuard(owned=is_grove_picture, what="picture GROVE drew", overwrite=overwrite)
+    check_output_file(out, **guard)  # before the drawing, not after it
     bundle = Path(bundle_dir)
 
     xmin, ymin, xmax, ymax = world.bounds()

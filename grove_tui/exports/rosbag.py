@@ -56,13 +56,14 @@ from grove_tui.scenario.model import AgentSpec
 
 if TYPE_CHECKING:  # rosbags is the `ros` extra; the export imports it when it runs
     from rosbags.interfaces import Connection, Qos
+    from rosbags.interfaces.typing import Typesdict
     from rosbags.typesys.store import Typestore
 
     from grove_tui.navigation.grid import OccupancyGrid
     from grove_tui.scenario.events import SimEvent
 
 # A ROS message instance: rosbags builds its classes at run time from message definitions, so no static type names it.
-Message = Any
+Message = Any  # Any: rosbags generates message classes at run time
 
 MSG_ROOT = Path(__file__).with_name("msg") / "hunav_msgs"
 
@@ -154,7 +155,7 @@ def ros_typestore(version: str = DEFAULT_HUNAV_MSGS) -> Typestore:
     from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
     store = get_typestore(Stores.ROS2_HUMBLE)
-    types: dict[str, Any] = {}  # rosbags' Typesdict: message name -> parsed field definitions
+    types: Typesdict = {}  # message name -> parsed field definitions
     for msgtype, text in hunav_msgs(version).types().items():
         types.update(get_types_from_msg(text, msgtype))
     store.register(types)

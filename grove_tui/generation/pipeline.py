@@ -23,7 +23,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from grove_tui.bt.format.xml import parse_tree_text
+from grove_tui.bt.format.document import TreeFiles
+from grove_tui.bt.format.xml import validate_document
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
@@ -85,12 +86,15 @@ class PlanInputs:
 @dataclass
 class GenerationResult:
     scenario: Scenario
-    trees: dict[str, str]  # relative path ("trees/agent_1.xml") -> BT XML
+    trees: TreeFiles  # relative path ("trees/agent_1.xml") -> the agent's tree, written as XML only into files
     fields: dict[str, VelocityField]
     grid: OccupancyGrid
     report: dict[str, Any] = field(default_factory=dict)
     # The draft and prompt analysis the trees came from; None for results rebuilt from a bundle.
     inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
+    # Other text files of the bundle, written verbatim beside the trees (an imported HuNavSim scenario's
+    # own tree files and world): relative path -> text.
+    files: dict[str, str] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -154,6 +158,16 @@ class StageClock:
         self.stages[stage] = {"seconds": round(seconds, 4), "prompt_tokens": prompt_tokens,
                               "completion_tokens": completion_tokens}
         self.emit(StageFinished(stage, seconds, prompt_tokens, completion_tokens, detail))
+
+
+def check_trees(trees: TreeFiles) -> None:
+    """GenerationError unless every planned tree is valid against the node manifest (checked as documents:
+    nothing is written and read back)."""
+    for document in trees.values():
+        try:
+            validate_document(document)
+        except BTError as exc:
+            raise GenerationError(f"generated tree failed validation against the node manifest: {exc}") from None
 
 
 def world_reference(world: World) -> str:
@@ -379,11 +393,7 @@ class GenerationPipeline:
         t0 = clock.begin("planning")
         plan = plan_operational(world, grid, preset, post, seed, self.robot, planner=self.planner,
                                 cache=self.plan_cache, cancel=cancel, reading=inputs.reading)
-        for rel, xml in plan.trees.items():
-            try:
-                parse_tree_text(xml, rel)
-            except BTError as exc:
-                raise GenerationError(f"generated tree failed validation against the node manifest: {exc}") from None
+        check_trees(plan.trees)
         clock.end("planning", t0, f"{len(plan.fields)} field(s)" if plan.fields else "waypoints injected"
                   if preset.planner.enabled else "no planner")
         return post, plan

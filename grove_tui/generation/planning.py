@@ -19,10 +19,9 @@ from typing import Any
 import numpy as np
 import shapely
 
-from grove_tui.bt.format.document import TreeDocument
+from grove_tui.bt.format.document import TreeDocument, TreeFiles
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
-from grove_tui.bt.format.xml import write_tree
 from grove_tui.errors import Cancelled
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.formations import (
@@ -51,7 +50,7 @@ ROBOT_CANDIDATES = 48
 @dataclass
 class OperationalPlan:
     agents: list[AgentSpec]
-    trees: dict[str, str]  # relative path -> XML with waypoints
+    trees: TreeFiles  # relative path -> the agent's tree, waypoints injected
     fields: dict[str, VelocityField]  # field id -> field
     robot: RobotSpec | None
     notes: list[str] = field(default_factory=list)
@@ -130,7 +129,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             group_paths[field_id] = built.path
 
     agents: list[AgentSpec] = []
-    trees: dict[str, str] = {}
+    trees: TreeFiles = {}
     for a in post.agents:
         _check_cancel(cancel)
         assert a.document is not None  # post-processing gives every agent its tree document
@@ -145,7 +144,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             # Field followers head along their group's path: record it as their goals.
             goals = [(float(p[0]), float(p[1])) for p in group_paths[a.field_id][1:]]
         rel = f"trees/agent_{a.id}.xml"
-        trees[rel] = write_tree(document)
+        document.source = rel  # what messages about it name
+        trees[rel] = document
         agents.append(AgentSpec(
             id=a.id, group=a.sfm_group, start=a.start, goals=tuple((round(x, 3), round(y, 3)) for x, y in goals),
             zone=a.zone, tree=rel, radius=preset.agent_radius, max_vel=a.max_vel, label=a.label,

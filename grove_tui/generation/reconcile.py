@@ -708,7 +708,8 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
             claims.append(_place_claim("reach", r.destination, f"evacuate to {r.destination}", world, n,
                                        _eta(agents, r.destination, world, speed)))
         else:
-            claims.append(Claim("evacuate", r.destination or "any exit",
+            asked = "any of " + ", ".join(exits) if len(exits) > 1 else r.destination or "any exit"
+            claims.append(Claim("evacuate", asked,
                                 "follow the evacuation field" if "FollowVelocityField" in tree_nodes else "walk out",
                                 exits=exits, needs_seconds=_evacuation_eta(agents, world, speed, n)))
     elif base == "queue":

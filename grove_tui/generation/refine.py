@@ -31,12 +31,13 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from grove_tui.bt.format.xml import parse_tree_text
-from grove_tui.errors import AmbiguousEditError, BTError, EditError, GenerationError, GroveError
+from grove_tui.bt.format.document import TreeFiles
+from grove_tui.errors import AmbiguousEditError, EditError, GenerationError, GroveError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations
 from grove_tui.generation.events import Event
-from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult, StageClock, group_records, world_reference
+from grove_tui.generation.pipeline import (GenerationPipeline, GenerationResult, StageClock, check_trees, group_records,
+                                           world_reference)
 from grove_tui.generation.planning import CachedPlanner, plan_operational, plan_robot
 from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed, place_groups, plan_groups
 from grove_tui.generation.presets import load_preset
@@ -392,18 +393,14 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     t0 = clock.begin("planning")
     plan = plan_operational(world, pipeline.grid, preset, post, seed, RobotRequest(enabled=False),
                             planner=pipeline.planner, cache=pipeline.plan_cache, cancel=cancel)
-    for rel, xml in plan.trees.items():
-        try:
-            parse_tree_text(xml, rel)
-        except BTError as exc:
-            raise GenerationError(f"generated tree failed validation against the node manifest: {exc}") from None
+    check_trees(plan.trees)
     robot = _robot(pipeline, scene, refinement, post, kept, seed, notes)
     clock.end("planning", t0, f"{len(plan.agents)} agents planned")
 
     # 3. The scenario: kept agents and fields as they were, the new ones, in group order.
     new_agents = {a.id: a for a in plan.agents}
     agents: list[AgentSpec] = []
-    trees: dict[str, str] = {}
+    trees: TreeFiles = {}  # the kept groups' documents as they were: written again, byte for byte
     fields = {}
     for p in refinement.groups:
         if p.status == KEPT and p.source is not None:

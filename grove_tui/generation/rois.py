@@ -115,6 +115,16 @@ def ambiguities(reading: PromptReading) -> list[Ambiguity]:
     return out
 
 
+def _any_exit_will_do(world: World, reading: PromptReading, ambiguity: Ambiguity) -> bool:
+    """Evacuees unsure of which exit ("the nearest exit", weighed against exits and doors named "..._exit"):
+    the evacuation sends each person to the exit nearest to them, so a model's pick of one would be a promise the run does not keep. The field
+    stays unsure, and the grounding report accepts any exit the reader weighed."""
+    if ambiguity.group is None or ambiguity.field != "destination":
+        return False
+    exits = {d.name for d in world.exits()}
+    return reading.groups[ambiguity.group].intent == "evacuate" and bool(exits & set(ambiguity.options))
+
+
 def _match(world: World, name: str, score: float, matched: Sequence[str], reason: str) -> RoIMatch:
     place = world.find(name)
     kind = "zone" if hasattr(place, "entities") else "door" if hasattr(place, "leads_to") else "entity"
@@ -133,7 +143,7 @@ def select_rois(world: World, preset: Preset, reading: PromptReading, max_defaul
     unsure = {f"{'robot' if i is None else i}.{c.field}": c.score for i, c in reading.unsure()}
     matches = [_match(world, name, min((unsure.get(f, 1.0) for f in fields.get(name, ())), default=1.0),
                       fields.get(name, ()), "prompt") for name in reading_places(reading)]
-    ambiguous = ambiguities(reading)
+    ambiguous = [a for a in ambiguities(reading) if not _any_exit_will_do(world, reading, a)]
     have = {m.name for m in matches}
     for ambiguity in ambiguous:
         for name in ambiguity.options:

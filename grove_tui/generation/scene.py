@@ -16,12 +16,11 @@ social groups, start points, the points they are sent to, the goal table and peo
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.bt.format.manifest import NODES
-from grove_tui.bt.format.xml import read_tree
 from grove_tui.errors import BundleError
 from grove_tui.generation.draft import DraftNode, written_ports
 from grove_tui.generation.pipeline import GenerationResult, own_reading
@@ -56,7 +55,6 @@ class Scene:
     result: GenerationResult
     world: Any
     groups: tuple[SceneGroup, ...]
-    documents: dict[int, TreeDocument] = field(default_factory=dict)  # agent id -> its parsed tree
 
     @property
     def scenario(self) -> Any:
@@ -82,9 +80,8 @@ class Scene:
         return [a for a in self.scenario.agents if a.id in members]
 
     def document(self, agent: AgentSpec) -> TreeDocument:
-        if agent.id not in self.documents:
-            self.documents[agent.id] = read_tree(self.result.trees[agent.tree], agent.tree)
-        return self.documents[agent.id]
+        """The agent's tree, as the result holds it (read it; planning edits a copy)."""
+        return self.result.trees[agent.tree]
 
 
 def scene_of(result: GenerationResult, world: Any) -> Scene:
@@ -157,7 +154,7 @@ def _tree_of(record: Mapping[str, Any], result: GenerationResult, agents: Sequen
     if not agents:
         raise BundleError(f"generation.json group '{record.get('label')}' has no members and no tree")
     first = agents[0]
-    return draft_from_document(read_tree(result.trees[first.tree], first.tree))
+    return draft_from_document(result.trees[first.tree])
 
 
 def node_from_dict(data: Mapping[str, Any]) -> DraftNode:

@@ -19,7 +19,6 @@ import numpy as np
 from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import format_point_list
-from grove_tui.bt.format.xml import read_tree, write_tree
 from grove_tui.errors import PlanningError
 
 Point = tuple[float, float]
@@ -94,7 +93,3 @@ def plan_waypoints(document: TreeDocument, start: Point, planner: _Planner, star
             position, position_label = target, label
     return document
 
-
-def inject_waypoints(xml: str, start: Point, planner: _Planner, start_label: str = "start") -> str:
-    """`plan_waypoints` on tree text: read with the hardened reader (BTError if it is not a tree), written back."""
-    return write_tree(plan_waypoints(read_tree(xml), start, planner, start_label))

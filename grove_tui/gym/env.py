@@ -68,6 +68,10 @@ POSITION_LIMIT = 1.0e4  # metres; observation bounds, far beyond any world
 HISTORY_START = 1024  # control steps the episode history holds before it first grows
 
 
+Observation = dict[str, np.ndarray]  # the Dict space's arrays by key (observation.py)
+Info = dict[str, Any]  # Any: Gymnasium's info is a free-form dict (its step() and reset() return types)
+
+
 class SocialNavEnv(gymnasium.Env):
     """A Gymnasium environment over GROVE scenarios (see the module docstring for spaces and ends).
 
@@ -89,7 +93,7 @@ class SocialNavEnv(gymnasium.Env):
                  goal_tolerance: float = GOAL_TOLERANCE, start_jitter: float = 0.0,
                  reward: RewardWeights | dict | None = None,
                  observation: ObservationConfig | dict | None = None, metrics_every: int = 1,
-                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: Any) -> None:  # unknown: refused
+                 pedestrian_model: str | None = None, render_mode: str | None = None, **unknown: object) -> None:  # unknown: refused
         super().__init__()
         if unknown:
             names = ", ".join(sorted(map(str, unknown))[:5])
@@ -184,8 +188,10 @@ class SocialNavEnv(gymnasium.Env):
             raise GymResetNeeded("no episode before reset()", hint="call reset() first")
         return self.current
 
-    # Any: Gymnasium's API (options and info are free-form dicts; an action is whatever the policy gives)
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[dict, dict]:
+    # Gymnasium's API: options and info are free-form dicts; an action is whatever the policy gives (checked).
+    def reset(self, *, seed: int | None = None,
+              options: dict[str, Any] | None = None,  # Any: Gymnasium's free-form reset options
+              ) -> tuple[Observation, Info]:
         """Load the next scenario (options={"scenario": i} picks one), place the robot at its start."""
         super().reset(seed=seed)  # gymnasium's own error for a seed that is not a whole number >= 0
         if seed is not None:
@@ -237,7 +243,7 @@ class SocialNavEnv(gymnasium.Env):
         self._metrics: dict[str, float] = {}
         return self._observation(), self._info({})
 
-    def step(self, action: Any) -> tuple[dict, float, bool, bool, dict]:
+    def step(self, action: object) -> tuple[Observation, float, bool, bool, Info]:
         if self.sim is None:
             raise GymResetNeeded("step() before reset()", hint="call reset() first")
         if self.outcome:
@@ -276,7 +282,7 @@ class SocialNavEnv(gymnasium.Env):
         info = self._info(terms, collision=collision)
         return self._observation(), reward, terminated, truncated, info
 
-    def _command(self, action: Any) -> np.ndarray:
+    def _command(self, action: object) -> np.ndarray:
         """The action as two float64s, clipped to the action space; GymActionError for anything else
         (a string, a dict, complex or boolean values, an int too large for a float, NaN or infinity)."""
         wanted = "an action must be two finite numbers (an array, list or tuple)"
@@ -380,7 +386,7 @@ class SocialNavEnv(gymnasium.Env):
             "timeout": w.timeout if timed_out else 0.0,
         }
 
-    def _observation(self) -> dict[str, np.ndarray]:
+    def _observation(self) -> Observation:
         sim = self.running
         crowd = sim.crowd
         frame = self.observation_frame()
@@ -422,7 +428,7 @@ class SocialNavEnv(gymnasium.Env):
         self.subgoal_index = index
         self.distance_to_go = float(math.hypot(*(path[index] - pos)) + self._length_after[index])
 
-    def _info(self, terms: dict[str, float], collision: str = "") -> dict[str, Any]:
+    def _info(self, terms: dict[str, float], collision: str = "") -> Info:
         done = bool(self.outcome)
         if done or (self.metrics_every and self.episode_steps % self.metrics_every == 0):
             self._metrics = self.episode_metrics()
@@ -458,7 +464,7 @@ class SocialNavEnv(gymnasium.Env):
         return record_episode(self, out_dir, overwrite=overwrite)
 
 
-def _short(value: Any) -> str:  # Any: whatever a policy passed, shown in an error
+def _short(value: object) -> str:  # whatever a policy passed, shown in an error
     try:
         text = repr(value)
     except ValueError:  # an int too long to print

@@ -20,12 +20,15 @@ import dataclasses
 import json
 import os
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from grove_tui.scenario.bundle import EPISODE_FILE
 from grove_tui.services.session import GroveSession
+
+if TYPE_CHECKING:
+    from grove_tui.gym.env import SocialNavEnv  # env.py imports this module lazily
 
 __all__ = ["EPISODE_FILE", "PATH_SPACING", "driven_path", "record_episode"]
 
@@ -45,15 +48,15 @@ def driven_path(xy: np.ndarray, spacing: float = PATH_SPACING) -> tuple[tuple[fl
     return tuple((round(float(p[0]), 4), round(float(p[1]), 4)) for p in points)
 
 
-# env: Any, the SocialNavEnv (env.py imports this module, lazily)
-def record_episode(env: Any, out_dir: str | os.PathLike[str], overwrite: bool = False) -> Path:
+def record_episode(env: SocialNavEnv, out_dir: str | os.PathLike[str], overwrite: bool = False) -> Path:
     """Write `env`'s current episode (a SocialNavEnv after reset) as a bundle at `out_dir`, atomically."""
-    source: Path = env.current.bundle_dir
-    sim = env.sim
+    loaded = env.loaded
+    source: Path = loaded.bundle_dir
+    sim = env.running
     history = env.history
     xy = history.robot[: history.size, :2]
-    robot = dataclasses.replace(env.current.scenario.robot, path=driven_path(xy))
-    scenario = dataclasses.replace(env.current.scenario, robot=robot)
+    robot = dataclasses.replace(loaded.robot, path=driven_path(xy))
+    scenario = dataclasses.replace(loaded.scenario, robot=robot)
     episode = {
         "source_bundle": str(source),
         "kinematics": env.kinematics,

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from grove_tui.bt.format.document import TreeDocument
-from grove_tui.bt.format.xml import load_tree_file
+from grove_tui.bt.format.xml import validate_document
 from grove_tui.errors import GroveError, GymError
 from grove_tui.gym.observation import wall_boxes
 from grove_tui.navigation.grid import OccupancyGrid, build_grid
@@ -72,9 +72,9 @@ def load_scenario(bundle_dir: str | os.PathLike[str], patch_resolution: float) -
     """Read a bundle for the environment; GymError when it cannot hold a robot episode."""
     root = Path(bundle_dir)
     try:
-        scenario, _trees, fields, grid = load_bundle(root)
+        scenario, trees, fields, grid = load_bundle(root)  # the trees read once, there
         world = load_bundle_world(root, scenario)
-        documents = [load_tree_file(root / agent.tree) for agent in sorted(scenario.agents, key=lambda a: a.id)]
+        documents = [validate_document(trees[agent.tree]) for agent in sorted(scenario.agents, key=lambda a: a.id)]
     except GroveError as exc:
         raise GymError(f"{root}: cannot load the bundle: {exc}",
                        hint="pass a folder `grove generate` wrote") from None
@@ -113,7 +113,6 @@ def generation_key(world: str, preset: str, prompt: str, seed: int, models: Sequ
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:20]
 
 
-# backend: Any, the app's engine backend or a stand-in with its model_status() and generate()
 def generated_scenarios(world: str, preset: str, prompt: str, seeds: Iterable[int], *,
                         cache: str | os.PathLike[str] | None = None,
                         session: GroveSession | None = None) -> list[Path]:

@@ -205,6 +205,12 @@ class Clauses:
         s = self.s
         end = s.phrase_end(verb_at, allow_objects=True)
         scan.c.purpose = scan.c.purpose or s.span(said_from, max(end - 1, said_from + 1))
+        goal = self._purpose_object(verb_at - 1)
+        if goal is not None:
+            # "to reach the ICU", "to get to the pharmacy", "to use the toilets": the purpose's place is
+            # where they go
+            scan.c.places.append(goal)
+            end = max(end, goal.end)
         prep = s.preposition(end) if end < s.n else None
         if prep is not None and prep[0] in _PURPOSE_PLACE_PREPOSITIONS:
             place = self.places.phrase(end + prep[1], "purpose", end)
@@ -213,6 +219,22 @@ class Clauses:
                 end = place.end
         self._take(scan, first, end)
         return True
+
+    def _purpose_object(self, verb: int) -> Place | None:
+        """The place a purpose's verb names as where they are going: its object ("to reach the ICU",
+        "to visit the gift shop") or the place after its "to" ("to get to the pharmacy", "to make
+        it back to the ward"); None when the object is a thing ("to reach the top shelf")."""
+        s = self.s
+        if verb >= s.n or s.verb(verb) not in lx.PURPOSE_PLACE_VERBS:
+            return None
+        k = s.skip(verb + 1, {"it", "back", "over", "up", "down"})
+        if k < s.n and s.low[k] in ("to", "into", "onto"):
+            k += 1
+        elif s.verb(verb) not in lx.DESTINATION_OBJECT_VERBS | lx.PURPOSE_OBJECT_VERBS:
+            return None  # "to get a coffee": "get" sends somewhere only with "to"
+        if k >= s.n or not (s.low[k] in lx.DETERMINERS or s.index.knows(lemma(s.low[k]))):
+            return None
+        return self.places.phrase(k, "purpose", verb, record_unknown=False)
 
     def _verb_object(self, scan: _Scan, i: int, nxt: str) -> bool:
         """A place as a verb's object: "leave the ward", "skip the ICU", "clear the platform", "mops
@@ -249,7 +271,12 @@ class Clauses:
                 role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
                         else "obj:seen" if v in lx.SEEN_OBJECT_VERBS
                         else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
-                place = self.places.phrase(i + 1, role, i)
+                # What people watch is mostly a thing ("the news"), and so is what they clean where a
+                # place follows ("cleans the windows in the hallway"): a place only when the world has it.
+                end = s.phrase_end(i + 1)
+                thing = role == "obj:seen" or (v in lx.THING_OR_PLACE_VERBS and end < s.n
+                                               and s.preposition(end) is not None)
+                place = self.places.phrase(i + 1, role, i, record_unknown=not thing)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                     c.places.append(place)
         return False
@@ -347,8 +374,8 @@ class Clauses:
     def _main_intent(self, candidates: list[tuple[int, str, str]], c: Clause) -> tuple[str, str, int]:
         s = self.s
         kinds = [k for _, k, _ in candidates]
-        has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest" for p in c.places
-                              if p.match is not None)
+        has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep in ("obj:dest", "purpose")
+                              for p in c.places if p.match is not None)  # "stroll ... to reach gate A2" too
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]

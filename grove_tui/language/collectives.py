@@ -51,8 +51,9 @@ class Collectives:
         low = s.low
         at = first if first is not None else head
         while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
-                                            or (s.w[at - 1].pos == "ADJ" and at > 1 and s.w[at - 2].pos == "DET")):
-            at -= 1  # "a long queue of ...": the adjective is the collective's
+                                            or (s.w[at - 1].pos in ("ADJ", "NOUN") and at > 1 and s.w[at - 2].pos == "DET"
+                                                and (s.w[at - 1].pos == "ADJ" or s.w[at - 1].dep == "compound"))):
+            at -= 1  # "a long queue of ...", "a school class": the modifier is the collective's
         if noun in lx.MODIFYING_COLLECTIVES and head + 1 < s.n and s.lemma(head + 1) in lx.IMPLIED_RANGES \
                 and s.lemma(head + 1) not in lx.MODIFYING_COLLECTIVES | lx.INTENT_VERBS.keys() \
                 and s.w[head + 1].pos in ("NOUN", "PROPN"):  # "a family queues": the verb, however tagged
@@ -93,6 +94,11 @@ class Collectives:
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
                                 "couple", "pair", "handful"):
                         label = self.people.label(member)
+        if label == noun and head > 0 and self.people.is_person_noun(head - 1) and self.people.collective_after(head - 1):
+            at = min(at, head - 1)
+            while at > 0 and (low[at - 1] in ("a", "an", "the", "their", "our", "his", "her") or low[at - 1] in lx.NP_MODIFIERS):
+                at -= 1
+            label = self.people.label(head - 1)  # "the security team": security staff, as many as a team
         count = self._collective_count(noun, label, size, parties, exact_parties, together, head)
         if not exact_parties and count.parties:
             # the number of parties is a seeded guess: the range runs over every number it could be

@@ -20,10 +20,11 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.place_phrases import PlacePhrases, place_confidences
+from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
 
@@ -134,7 +135,9 @@ class Groups:
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
             leftover = [x for x in between if x not in in_places and not s.is_punct(x)
                         and s.low[x] not in ("and", "as", "well", "plus", "with")]
-            if not clauses[k].has_action and clauses[k + 1].has_action and mentions[k + 1].relation is None and \
+            # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
+            aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
+            if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
                     not any(s.low[x] in (";", ".", ":") for x in between):
                 clauses[k] = replace(clauses[k + 1], places=clauses[k].places + clauses[k + 1].places)
@@ -151,9 +154,14 @@ class Groups:
                 clauses[k] = Clause()
         for k, m in enumerate(mentions):
             if k > 0 and self.mentions.led_by(m.first) and mentions[k - 1].last == m.first - 2:
-                # the leader takes the route the led group is said to take
-                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places,
-                                         intent=clauses[k].intent or "walk", has_action=True)
+                # the leader takes the route the led group is said to take; with no route ("a nurse
+                # helps two kids in the kitchen") both stay where they are
+                places = clauses[k - 1].places + clauses[k].places
+                routed = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS | {"from", "obj:dest", "out"}
+                             for p in places)
+                around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
+                clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
+                    "walk" if routed else "wander" if around else "wait"))
 
     def _with_robot(self, m: Mention, robot_clauses: Sequence[RobotClause], excluded: set[int]) -> Clause:
         """The clause of people the robot escorts or follows: the robot's route after them is theirs
@@ -206,7 +214,12 @@ class Groups:
                                intent=intent if intent == "follow" else leader.intent, relation=None,
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together, text=text, confidence=())
-        if self.mentions.led_by(m.first) and earlier and c.robot is None:
+        kind, _, parent = (m.relation or "").partition(":")
+        if kind == "subset_of" and parent.isdigit() and int(parent) < len(earlier) and c.intent is None and \
+                c.robot is None and not c.has_action and not c.places:
+            intent = earlier[int(parent)].intent  # "..., two of them students": part of the group, doing as it does
+        if self.mentions.led_by(m.first) and earlier and c.robot is None and \
+                earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads
             c = replace(c, follows=earlier[-1].who)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
@@ -221,9 +234,12 @@ class Groups:
             c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
                              verb_index=c.verb_index, stationary=stationary, intent=intent,
-                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS])
+                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS],
+                             verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
+                                       and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
+        self._fixture_where_the_rest_were(m, roles, earlier, stationary)
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
         count = settle_count(s, m, span, start or location or destination, earlier, self.notes)
         wait = c.wait_seconds
@@ -287,6 +303,30 @@ class Groups:
         if m.exception_of is not None and m.exception_of < len(earlier) and unplaced:
             parent = earlier[m.exception_of]
             roles.location = parent.start or parent.location  # "... except three patients, who stay seated"
+
+    def _fixture_where_the_rest_were(self, m: Mention, roles: Roles, earlier: list[GroupReading],
+                                     stationary: bool) -> None:
+        """"Ten passengers go from the waiting room to platform 1, five others remain on the benches":
+        the others stay where the group was, so a fixture named only by its kind is the one there."""
+        kind, _, parent = (m.relation or "").partition(":")
+        if kind != "others_of" or not stationary or roles.location is None or not parent.isdigit() or \
+                int(parent) >= len(earlier):
+            return
+        index = self.s.index
+        home = earlier[int(parent)].start or earlier[int(parent)].location
+        here, there = index.entry(roles.location), index.entry(home) if home else None
+        said = roles.read_from.get(roles.location)
+        if here is None or there is None or said is None or here.kind != "entity" or here.zone == there.zone:
+            return
+        content = {t for t in phrase_lemmas(list(said.words)) if t not in lx.PLACE_MODIFIERS}
+        same = [e for e in index.entries if e.kind == "entity" and e.zone == there.zone and content <= e.tokens]
+        if same:  # the first of several alike ("the chairs": a row of them)
+            e = same[0]
+            roles.read_from[e.name] = replace(
+                said, match=PlaceMatch(e.name, e.kind, e.zone, said.match.score if said.match else 1.0, False),
+                score=0.7, alternatives=(roles.location,),
+                reason=f"'{' '.join(said.words)}' of the others: {e.name}, in {e.zone} where the rest were")
+            roles.location = e.name
 
     # ---- nobody named ----------------------------------------------------------------------------
 

@@ -50,8 +50,8 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 # Collective nouns: a size when the prompt gives none, and whether the members move together.
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
-    "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "duo": (2, 2),
-    "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
+    "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3),
+    "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
 }
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
@@ -87,12 +87,16 @@ CHAT_WORDS: dict[str, str] = {
     "w/": "with", "w/o": "without", "abt": "about", "approx": "approximately", "approx.": "approximately",
     "ca.": "about", "nr": "near", "btw": "", "pls": "please", "plz": "please", "mins": "minutes",
     "hrs": "hours", "secs": "seconds", "sec": "second", "min": "minute", "ppl's": "people's",
+    # people by their short names ("2 devs grab coffee", "a few execs")
+    "dev": "developer", "devs": "developers", "exec": "executive", "execs": "executives", "prof": "professor",
+    "profs": "professors", "techs": "technicians", "reps": "representatives", "admins": "administrators",
+    "grads": "graduates", "mgr": "manager", "mgrs": "managers", "hubby": "husband", "kiddos": "kids",
 }
 
 # ---- people ---------------------------------------------------------------------------------
 
 PERSON_NOUNS = frozenset(
-    """person people individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
+    """person people folk individual pedestrian visitor patient nurse doctor physician surgeon staff employee worker
     colleague coworker manager receptionist clerk cashier pharmacist guard security officer cleaner janitor
     porter student teacher child kid baby toddler teenager teen adult parent mother father mom mum dad grandparent
     grandmother grandfather grandma grandpa family friend couple guest resident neighbour neighbor roommate tenant
@@ -183,7 +187,7 @@ THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whi
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})
 GENERIC_PEOPLE = frozenset({"person", "people", "individual", "pedestrian", "someone", "somebody", "anyone",
-                            "anybody", "one", "human", "occupant"})
+                            "anybody", "one", "human", "occupant", "folk"})
 
 # ---- clause structure -----------------------------------------------------------------------
 
@@ -237,7 +241,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel carry help assist "
-                          "support transport walk".split())
+                          "support transport walk drag pull haul hurry rush".split())
 # "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
 # which is one pair.
 PLURAL_PARTIES_RANGE = (2, 5)
@@ -247,6 +251,12 @@ START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum watch "
                                   "hoover scrub tidy".split())
+# Verbs of a purpose ("to reach the ICU", "to get to the pharmacy") whose object, or the place after
+# their "to", is where people go; PURPOSE_OBJECT_VERBS take it as an object ("to use the toilets").
+PURPOSE_OBJECT_VERBS = frozenset("use board".split())
+PURPOSE_PLACE_VERBS = DESTINATION_OBJECT_VERBS | PURPOSE_OBJECT_VERBS | frozenset("get go head make return run hurry".split())
+# Verbs whose object is a place or a thing in it ("mop the corridor", "clean the windows in the hall").
+THING_OR_PLACE_VERBS = frozenset("clean mop sweep vacuum hoover scrub tidy search fill wipe polish dust".split())
 # Verbs whose object is what people look at ("watch TV"): where they are, unless a place is named too.
 SEEN_OBJECT_VERBS = frozenset({"watch"})
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
@@ -256,6 +266,8 @@ ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end delive
 # "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.
 TRANSACTION_VERBS = frozenset("buy purchase get collect pick fetch order borrow take grab withdraw".split())
 DEPARTURE_VERBS = frozenset("leave exit evacuate flee escape vacate depart".split())
+# Getting on a plane or train: a door they board through or by is where they end (no evacuation).
+BOARDING_VERBS = frozenset("board embark".split())
 # "head for the exit": `for` marks a destination only after these; otherwise it is a purpose.
 FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race beeline".split())
 STATIONARY_INTENTS = frozenset({"queue", "wait", "converse", "wander"})
@@ -286,11 +298,12 @@ ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct pr
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph",
-    "approach": "approach greet inspect investigate touch examine check poke gather",
+    "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap",
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
-    "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade",
+    "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
+             "hit punch",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)

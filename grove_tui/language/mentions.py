@@ -75,8 +75,12 @@ class Mentions:
         between them: "everyone in the auditorium, roughly sixty people, evacuates", "the commuters
         on platform 1, some forty of them, walk"."""
         s = self.s
-        if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or \
-                m.count.kind not in ("exact", "approximate") or m.last + 1 >= s.n:
+        if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or m.count.kind not in ("exact", "approximate"):
+            return False
+        if (m.last + 1 >= s.n or s.low[m.last + 1] in (".", "!", ";")) and m.relation == f"subset_of:{index}" and \
+                before.count is not None and before.count.kind in ("vague", "implied") and not before.whole_zone:
+            return True  # "Travellers queue at security, maybe forty of them.": how many, said last
+        if m.last + 1 >= s.n:
             return False
         if m.relation not in (None, f"subset_of:{index}") or m.label not in ("person", before.label):
             return False
@@ -476,11 +480,11 @@ class Mentions:
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
-                    or self.robot_object(at) is not None) \
+                    or self.robot_object(at) is not None or self.led_by(at)) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),
-                               exclusive=exclusive)  # "Mum cooks in the kitchen": one person, named by a role
+                               exclusive=exclusive)  # "Mum cooks in the kitchen", "a carer helps grandpa": one person, by a role
             return None  # "staff" as a verb-less word, or a singular without determiner: not a subject
         low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
         parent = self.parent(found)

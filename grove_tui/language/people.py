@@ -80,6 +80,8 @@ class People:
         word, a time or a hazard."""
         s = self.s
         word = s.w[i]
+        if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
+            return False  # "the robot hums while ...": the robot's verb, tagged a noun
         parsed = word.pos in ("NOUN", "PROPN") and word.dep == "nsubj" and word.head != i and \
             s.w[word.head].pos == "VERB" and s.verb(word.head) in lx.HUMAN_SUBJECT_VERBS
         # The parser may also take the noun for an adjective and the verb for a plural noun ("a
@@ -114,9 +116,11 @@ class People:
             if person and s.w[k].pos == "ADJ" and k + 1 < s.n and \
                     s.w[k + 1].pos in ("NOUN", "PROPN") and s.w[k + 1].dep != "ROOT" and \
                     (self.is_person_noun(k + 1) or s.lemma(k + 1) in lx.IMPLIED_RANGES) and \
-                    not self.third_person_verb(k + 1):
+                    not self.third_person_verb(k + 1) and not self._verb_of_joined(k):
                 k += 1  # "an elderly couple", "a young nurse": the word is an adjective here
                 continue
+            if person and self.collective_after(k):
+                return k + 1  # "the security team", "a student group": the collective heads the phrase
             if person and self._modifies_next_noun(k):
                 return None  # "the outpatient clinic", "security alert": a thing named after people
             if person or (s.lemma(k) in lx.IMPLIED_RANGES and k + 1 < s.n and s.low[k + 1] == "of"):
@@ -182,6 +186,8 @@ class People:
             return True  # "the manager's office"
         if word in lx.LOCATION_ADVERBS:
             return False  # "the pupils downstairs", "the guests inside": where they are, no noun
+        if self._verb_of_joined(k):
+            return False  # "three kids and their mum queue": the last of joined people, then their verb
         if k > 0 and s.w[k - 1].pos == "NUM" and s.lemma(k) != s.low[k] and \
                 not s.index.knows(s.lemma(k + 1)) and k + 2 < s.n and \
                 s.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):
@@ -195,6 +201,37 @@ class People:
                 and not self.is_person_noun(k + 1) and s.lemma(k + 1) not in lx.IMPLIED_RANGES
                 and (gerund_noun or (verb_lemma(word) not in lx.INTENT_VERBS and verb_lemma(word) not in lx.ROBOT_VERBS))
                 and s.lemma(k + 1) not in lx.DURATION_UNITS)
+
+    def collective_after(self, k: int) -> bool:
+        """Whether the person word at k names the members of a collective noun right after it ("the
+        security team", "a staff party"), not a verb ("the nurses group together")."""
+        s = self.s
+        if k + 1 >= s.n or s.w[k + 1].pos not in ("NOUN", "PROPN") or s.w[k + 1].tag.startswith("VB"):
+            return False
+        noun = s.lemma(k + 1)
+        if s.lemma(k) != s.low[k] and s.low[k] not in ("staff", "police"):
+            return False  # "the porters group together": a plural subject, then its verb
+        return noun in lx.IMPLIED_RANGES and noun not in lx.QUEUE_COLLECTIVES and s.lemma(k) not in lx.IMPLIED_RANGES \
+            and verb_lemma(s.low[k + 1]) not in lx.INTENT_VERBS and not self.multiword_end(k + 1)
+
+    def _verb_of_joined(self, k: int) -> bool:
+        """Whether the word after the person word at k is the plural verb of people joined by "and"
+        ("three kids and their mum queue", "two porters and a nurse wait")."""
+        s = self.s
+        if k + 1 >= s.n:
+            return False
+        word = s.low[k + 1]
+        return word == verb_lemma(word) and (verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS) \
+            and self._joined_subject(k)
+
+    def _joined_subject(self, k: int) -> bool:
+        """Whether the person word at k ends a phrase joined by "and" to people before it ("three
+        kids and their mum", "the nurses and a porter")."""
+        s = self.s
+        j = k - 1
+        while j >= 0 and (s.low[j] in lx.DETERMINERS or s.low[j] in lx.NP_MODIFIERS or s.w[j].pos in ("ADJ", "NUM")):
+            j -= 1
+        return j >= 1 and s.low[j] == "and" and self.is_person_noun(j - 1)
 
     def third_person_verb(self, i: int) -> bool:
         """Whether the word at i, which the parser may tag a plural noun, is the verb of the singular

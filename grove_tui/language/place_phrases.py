@@ -87,7 +87,7 @@ class PlacePhrases:
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])):
+                not s.index.knows(lemma(low[j])) and "&" not in low[j]:  # "in A&E" names a place
             return None  # "in line", "at once", "on time": no determiner and no place word
         phrase, j = self._words(j)
         if not phrase:
@@ -139,6 +139,8 @@ class PlacePhrases:
             chosen = self._words_do_not_decide(phrase, lemmas, match, score, alternatives)
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
+        if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
+            return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
         self.context_zones.append(match.zone)
         if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
             self.frame_zones.append(match.zone)
@@ -170,6 +172,16 @@ class PlacePhrases:
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
+
+    def _names_kind(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
+        """Whether the phrase's head is the kind of place matched ("ward" of ward_a) or a word for rooms."""
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        entry = self.s.index.entry(match.name)
+        if not content or entry is None:
+            return False
+        kinds = {w for kind in entry.types for w in kind.split()} | (
+            {w for kind in (self.s.index.entry(entry.zone) or entry).types for w in kind.split()})
+        return content[-1] in kinds or content[-1] in lx.GENERIC_PLACE_HEADS
 
     def _context_decided(self, match: PlaceMatch, alternatives: Sequence[str]) -> bool:
         """Whether a zone the sentence named before chose between places alike (see _in_context)."""
@@ -252,7 +264,8 @@ class PlacePhrases:
         # a thing in a room of theirs first ("the parents' bed": the bed of their bedroom, not the bedroom)
         owned = [e for e in self.s.index.entries if e.kind not in ("zone", "door") and e.zone in rooms
                  and head in e.tokens and head not in lx.GENERIC_PLACE_HEADS]
-        owned = owned or [e for e in theirs if head in e.tokens or (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone")]
+        owned = owned or [e for e in theirs if (head in e.tokens or (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone"))
+                          and (e.kind != "door" or head in lx.DOOR_WORDS)]  # "her ward" is no door of her station
         mine = [e for e in owned if match is not None and e.name == match.name]
         if len(owned) > 1 and not mine:
             owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door

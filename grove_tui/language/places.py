@@ -149,7 +149,7 @@ class PlaceIndex:
         owns "kids room", "guard" owns "guards' room"."""
         kinds = owner_kinds(person)
         # a person word the lexicon lacks still owns the places named after it ("the curator's office")
-        return [e for e in self.entries if e.owners & kinds or person in e.tokens]
+        return [e for e in self.entries if e.owners & kinds or set(person.split()) <= e.tokens]
 
     def knows(self, token: str) -> bool:
         """Whether some place of the world is called by this word or a synonym of it."""
@@ -217,6 +217,10 @@ class PlaceIndex:
                 total += WHOLE_PHRASE_BONUS + sum(self.idf.get(t, 0.0) for t in max(matched, key=len))
             elif head not in GENERIC_PLACE_HEADS and head not in self.building_words and weights[-1] <= 0:
                 continue  # "the coffee machine": a phrase whose head names nothing of this entry is not it
+            elif len(content) == 1 and any(head in p for p in e.phrases) and \
+                    all(p[0] == head and len(p) > 1 for p in e.phrases if head in p) and \
+                    not any(head in t.split() for t in e.types):
+                continue  # "a box": only the first word of "box office", which names an office
             own_words = e.tokens - self._zone_words
             if e.kind == "door" and not exact and not speaks_of_door and not set(content) <= own_words:
                 continue  # the rooms a door joins are not the door; "the jet bridge" is the door's own name
@@ -236,6 +240,18 @@ class PlaceIndex:
         if not found:
             return None
         best = found[0]
+        if best.kind == "zone":
+            # "the nurses' desk": the room and its desk both answer to the whole phrase; the head
+            # word is the desk's own kind and not the room's, so the desk
+            head = next((t for t in reversed(phrase) if t and t not in PLACE_MODIFIERS), "")
+            zone = self._by_name.get(best.name)
+            for m in found[1:]:
+                if m.score < best.score - 1e-9:
+                    break
+                entry = self._by_name.get(m.name)
+                if m.kind == "entity" and m.zone == best.name and m.exact and entry is not None and \
+                        zone is not None and head in _kind_words(entry) and head not in _kind_words(zone):
+                    return m
         if best.kind != "zone":
             for m in found[1:]:
                 if m.score < best.score - 1e-9:
@@ -293,6 +309,11 @@ def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], ali
                       tuple(p for p in phrases if p), exit, area, tuple(dict.fromkeys(said)),
                       frozenset({type_.replace("_", " ")} if type_ and kind != "door" else set()),
                       frozenset(k for t in owners for k in owner_kinds(t)))
+
+
+def _kind_words(entry: PlaceEntry) -> set[str]:
+    """The words of a place's type ("desk", "nurse station")."""
+    return {w for kind in entry.types for w in kind.split()}
 
 
 def owner_kinds(person: str) -> frozenset[str]:

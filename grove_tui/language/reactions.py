@@ -55,19 +55,56 @@ def _after_robot(s: Sentence, r: int) -> str | None:
 def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int, r: int) -> str | None:
     for i in sorted((x for x in own if since < x < r), reverse=True):
         for phrase, interaction in lx.ROBOT_PHRASES.items():
-            if s.phrase_words(i, len(phrase), ownset) == phrase:
-                return interaction
+            last = i + len(phrase) - 1
+            if s.phrase_words(i, len(phrase), ownset) == phrase and not (
+                    s.w[last].pos == "ADP" and _object_elsewhere(s, last, r)):
+                return interaction  # not "look at the flight board while the robot ..."
         # any verb of walking, known or only tagged a verb by the parser ("waddle over to it")
         v = s.verb(i)
         if lx.INTENT_VERBS.get(v) == "walk" or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
             for tail in lx.ROBOT_APPROACH_TAILS:
                 if s.phrase_words(i + 1, len(tail), ownset) == tail:
                     return "approach"  # "the twins toddle up to the robot"
-        if v in lx.ROBOT_VERBS and not s.after_determiner(i):
+            if _sent_to_robot(s, ownset, i, r):
+                return "approach"  # "hurries to the robot", "runs from the lobby to it"
+        if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
+                not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] == "look"):
             return lx.ROBOT_VERBS[v]
         if s.lemma(i) in lx.ROBOT_NOUNS:
             return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"
     return None
+
+
+def _sent_to_robot(s: Sentence, ownset: set[int], i: int, r: int) -> bool:
+    """Whether the robot at r is where the verb of walking at i goes: "to the robot" in the same
+    clause, though a place may come between ("hurries from the boardroom to the robot"); not the
+    robot's things ("to the robot's dock")."""
+    back = r - 1
+    while back > i and s.low[back] in lx.DETERMINERS:
+        back -= 1
+    if back <= i or s.low[back] not in ("to", "towards", "toward") or s.low[r] in ("its",):
+        return False
+    if r + 1 < s.n and s.low[r + 1] in ("'s", "’s", "'"):
+        return False
+    return all(k in ownset and not s.is_punct(k) and s.low[k] not in lx.CLAUSE_STARTERS for k in range(i + 1, back))
+
+
+def _object_elsewhere(s: Sentence, i: int, r: int, through_preposition: bool = False) -> bool:
+    """Whether the words after i name something else before the robot at r: "the kids watch TV while
+    the robot vacuums", "check their phones as it passes", "stand in front of the vending machine";
+    with `through_preposition`, after a preposition too ("look at the flight board while ...")."""
+    k = i + 1
+    if through_preposition and k < r and s.w[k].pos == "ADP":
+        k += 1
+    while k < r and not s.is_punct(k) and s.low[k] not in lx.CLAUSE_STARTERS:
+        if s.low[k] in lx.ROBOT_WORDS or s.low[k] in ("it", "its"):
+            return False
+        if s.w[k].pos in ("NOUN", "PROPN") and s.low[k] not in lx.DETERMINERS:
+            return s.lemma(k) not in lx.DURATION_UNITS and s.lemma(k) != "time"  # not "every time the robot ..."
+        if s.w[k].pos not in ("DET", "ADJ", "NUM", "VERB", "PRON") and s.low[k] not in lx.NP_MODIFIERS:
+            return False
+        k += 1
+    return False
 
 
 def _noun_after(s: Sentence, ownset: set[int], r: int) -> str | None:

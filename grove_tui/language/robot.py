@@ -112,12 +112,14 @@ class RobotClauses:
         return None
 
     def _phrase_start(self, i: int, taken: set[int]) -> int:
-        """The first word of the robot's noun phrase: "a delivery robot", "the small cleaning robot"."""
+        """The first word of the robot's noun phrase: "a delivery robot", "the small cleaning robot" (the
+        parser may tag "cleaning" a verb modifying the robot)."""
         s = self.s
         first = i
         while first > 0 and not s.is_punct(first - 1) and (
                 s.w[first - 1].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or s.low[first - 1] in lx.NP_MODIFIERS
-                or (s.low[first - 1] == "-" and first > 1)) and s.low[first - 1] not in lx.CLAUSE_STARTERS \
+                or (s.low[first - 1] == "-" and first > 1)
+                or (s.w[first - 1].tag == "VBG" and s.w[first - 1].dep in ("amod", "compound"))) and s.low[first - 1] not in lx.CLAUSE_STARTERS \
                 and s.low[first - 1] not in lx.PLACE_PREPOSITIONS and (first - 1) not in taken:
             first -= 1
         return first
@@ -137,10 +139,16 @@ class RobotClauses:
 
     def _verb_tagged_noun(self, j: int) -> bool:
         """The small parser may tag the robot's verb a plural noun ("the robot rolls", "the robot
-        patrols"): an "-s" word the lexicon knows as a verb, right after the robot."""
-        word = self.s.low[j]
+        patrols"): an "-s" word the lexicon knows as a verb, right after the robot, or any "-s" word right
+        after the robot with a place phrase after it ("the robot hums along the corridor")."""
+        s = self.s
+        word = s.low[j]
         base = verb_lemma(word)
-        return word.endswith("s") and base != word and (base in lx.INTENT_VERBS or base in _TASK_VERBS)
+        if not word.endswith("s") or word.endswith("ss"):
+            return False
+        if base != word and (base in lx.INTENT_VERBS or base in _TASK_VERBS):
+            return True
+        return s.low[j - 1] in lx.ROBOT_WORDS and j + 1 < s.n and s.preposition(j + 1) is not None
 
     def _end(self, k: int, starts: set[int]) -> int:
         """Where a robot clause from k ends: the next group's mention (less the words joining it),

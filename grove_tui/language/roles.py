@@ -7,11 +7,12 @@ from its preposition or verb, the group's intent and where the phrase stands aga
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_phrases import Place
-from grove_tui.language.places import PlaceIndex
+from grove_tui.language.places import PlaceIndex, PlaceMatch
+from grove_tui.language.tokens import phrase_lemmas
 
 
 @dataclass
@@ -26,7 +27,8 @@ class Roles:
 
 
 def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
-                 verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = ()) -> Roles:
+                 verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = (),
+                 verbs_at: Sequence[tuple[int, str]] = ()) -> Roles:
     """The group's places by role: a narrower place (a fixture of the zone already read) replaces
     the zone; a destination said with "to" is not replaced by a later "at"; a place they stay at
     after "then" is where they stay, the one before it where they start ("buys a paper at the
@@ -39,20 +41,29 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             continue  # "watch TV in the lounge": they are in the lounge
         name = p.match.name
         roles.read_from.setdefault(name, p)
-        role = role_of(index, p, verb, verb_index, stationary, intent, p in scene_places)
+        # a door's role follows the verb that governs it ("drops a parcel at reception and leaves by the
+        # main door": leaving, though the clause's verb is dropping off)
+        own_verb = next((v for i, v in reversed(verbs_at) if i < p.index), verb) if p.match.kind == "door" else verb
+        role = role_of(index, p, own_verb, verb_index, stationary, intent, p in scene_places)
         marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
-        if p.sequel and role == "destination" and roles.destination is not None and name not in roles.via:
+        leaving = role == "destination" and own_verb in lx.DEPARTURE_VERBS and p.match.kind == "door"
+        if (p.sequel or leaving) and role == "destination" and roles.destination is not None and name not in roles.via \
+                and roles.destination != name:
+            # "drops a parcel at reception and leaves by the main door": reception on the way out
             # "to the café and then the pharmacy": the café on the way, the pharmacy where they end
             roles.via.append(roles.destination)
             roles.destination = name
-        elif role == "start" and (roles.start is None or narrower(index, name, roles.start)):
+        elif role == "start" and (roles.start is None or _narrows(index, name, roles.start, roles)):
             roles.start = name
-        elif role == "destination" and (roles.destination is None or narrower(index, name, roles.destination)
+        elif role == "destination" and (roles.destination is None or _narrows(index, name, roles.destination, roles)
                                         or (marked and not said_to)):
             # "drops her bags off at the lockers and heads to the café": the café
             roles.destination, said_to = name, said_to or marked
-        elif role == "location" and (roles.location is None or narrower(index, name, roles.location)):
+        elif role == "location" and (roles.location is None or _narrows(index, name, roles.location, roles)):
             roles.location = name
+        elif role in ("location", "destination", "start") and getattr(roles, role) is not None and \
+                p not in scene_places and (inside := _fixture_inside(index, getattr(roles, role), p, roles)) is not None:
+            setattr(roles, role, inside)  # "on a bench in the modern art gallery": that gallery's bench
         elif role == "location" and roles.start is None and roles.location is not None and name != roles.location and \
                 any(roles.read_from[roles.location].index < t < p.index for t in then_at):
             roles.start, roles.location = roles.location, name
@@ -65,6 +76,38 @@ def narrower(index: PlaceIndex, name: str, than: str) -> bool:
     """Whether `name` is a door or thing inside the zone `than` ("the coffee machine in the kitchen")."""
     entry = index.entry(name)
     return entry is not None and entry.kind != "zone" and entry.zone == than
+
+
+def _narrows(index: PlaceIndex, name: str, than: str, roles: Roles) -> bool:
+    """Whether `name` is a fixture inside the place `than` was read as, or inside one of the places
+    its phrase fitted as well: "in the vast hall under the departures board" is the hall with the
+    board, whichever hall the words alone chose."""
+    if narrower(index, name, than):
+        return True
+    entry = index.entry(name)
+    said = roles.read_from.get(than)
+    return entry is not None and entry.kind != "zone" and said is not None and said.score < 1.0 and \
+        entry.zone in said.alternatives
+
+
+def _fixture_inside(index: PlaceIndex, current: str, room: Place, roles: Roles) -> str | None:
+    """A fixture said, then the room it is in ("a bench in the modern art gallery"): the fixture of
+    that room its words name, when the words chose one in another room; the room itself when none
+    there fits and the words were not sure. None when nothing changes."""
+    zone = room.match.name if room.match is not None else ""
+    here, there = index.entry(current), index.entry(zone)
+    said = roles.read_from.get(current)
+    if here is None or there is None or said is None or here.kind == "zone" or there.kind != "zone" or \
+            here.zone == there.name or room.index < said.index:
+        return None
+    content = {t for t in phrase_lemmas(list(said.words)) if t not in lx.DETERMINERS}
+    fits = [e for e in index.entries if e.kind == here.kind and e.zone == there.name and content and content <= e.tokens]
+    if fits:
+        e = fits[0]
+        roles.read_from[e.name] = replace(said, match=PlaceMatch(e.name, e.kind, e.zone, 1.0, False), score=0.8,
+                                          alternatives=(), reason=f"'{' '.join(said.words)}' in {zone}: {e.name}")
+        return e.name
+    return zone if said.score < 1.0 else None
 
 
 def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stationary: bool, intent: str,
@@ -83,7 +126,7 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return "via"
     if prep in lx.VIA_PREPOSITIONS:
         return _through(index, p, verb, stationary, intent, is_door)
-    if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS or intent == "evacuate"):
+    if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS | lx.BOARDING_VERBS or intent == "evacuate"):
         return "destination"
     if prep == "by" and is_door and verb in lx.ARRIVAL_VERBS and _is_exit(index, p):
         return "start"  # "arrive by the side entrance": in from outside
@@ -94,6 +137,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
     # at / in / on / near / around ...
     if stationary:
         return "location"
+    if intent == "robot" and not from_scene and (verb_index is None or p.index > verb_index):
+        return "location"  # "runs up to the robot beside the kiosk": where they meet it
     if from_scene or verb_index is None or p.index < verb_index:
         return "start"
     return "destination" if verb in lx.ARRIVAL_VERBS else "start"
@@ -102,7 +147,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
 def _through(index: PlaceIndex, p: Place, verb: str, stationary: bool, intent: str, is_door: bool) -> str:
     if stationary and not is_door:
         return "location"  # "pace up and down the corridor", "wander through the concourse"
-    if is_door and (verb in lx.DEPARTURE_VERBS | {"evacuate"} or intent == "evacuate"):
+    if is_door and (verb in lx.DEPARTURE_VERBS | lx.BOARDING_VERBS | {"evacuate"} or intent == "evacuate"):
+        # "leave through the side door", "board through the jet bridge": out of the scene there
         return "destination"
     entry = index.entry(p.match.name) if is_door and p.match is not None else None
     if entry is not None and entry.exit and verb not in lx.ARRIVAL_VERBS:

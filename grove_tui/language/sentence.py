@@ -144,6 +144,8 @@ class Sentence:
             return ("at" if two[0] in ("next", "close") else "to"), 2
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
+        if w == "round" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "around", 1  # "gather round the whiteboard"
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
@@ -216,7 +218,8 @@ class Sentence:
             for phrase in lx.TOGETHER_PHRASES:
                 end = i + len(phrase)
                 if tuple(self.low[i:end]) == phrase:
-                    if end < self.n and verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys():
-                        continue  # "as a family talks": the family is who the clause is about
+                    if end < self.n and (verb_lemma(self.low[end]) in lx.INTENT_VERBS | lx.ROBOT_VERBS.keys()
+                                         or self.w[end].tag in ("VBZ", "VBD", "VBP", "MD")):
+                        continue  # "as a family talks", "as a family buys tickets": who the clause is about
                     out.update(range(i, end))
         return frozenset(out)

@@ -58,7 +58,8 @@ def correct_places(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple
     'kitchen'"). Conservative, so a real word is never turned into a place: a word is corrected only
     when the world has no place word like it, it is no word for people and no verb the lexicon knows,
     and exactly one word of the world's place names is one edit away (an insertion, deletion,
-    substitution or swap of neighbours). Short words (3-4 letters) and real English words ("sever") are
+    substitution or swap of neighbours), or, of several, exactly one completes a name with the word
+    next to it ("intensive cair": care, not chair). Short words (3-4 letters) and real English words ("sever") are
     corrected only when the correction completes a name with the word next to them ("sever room" ->
     "server room"), never alone ("left" is not "lift"). Two words of a name run together are split
     ("livingroom" -> "living room")."""
@@ -96,12 +97,15 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     as_written = {v for v in index.name_words if abs(len(v) - len(low)) <= 1 and one_edit(low, v)}
     as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1 and one_edit(base, v)}
     found = sorted(as_written | as_plural)
+    before, after = _content_neighbours(words, k)
+    if len(found) > 1:
+        # "intensive cair": "care" and "chair" are both one edit away; only "care" completes a name
+        found = [v for v in found if (before, v) in index.name_pairs or (v, after) in index.name_pairs]
     if len(found) != 1:
         return None  # nothing near, or two names equally near: no guess
     replacement = found[0]
     if replacement not in as_written:
         replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
-    before, after = _content_neighbours(words, k)
     completes = (before, found[0]) in index.name_pairs or (found[0], after) in index.name_pairs
     if (len(low) < 5 or known_word(low)) and not completes:
         return None  # "ticket hal" is the ticket hall; "hal" alone is nothing

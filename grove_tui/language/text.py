@@ -20,7 +20,9 @@ from grove_tui.language.lexicon import CHAT_WORDS
 _DROPPED_CATEGORIES = frozenset({"So", "Sk", "Cf", "Co", "Cs", "Cn"})
 _CHAT_WORD = re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in sorted(CHAT_WORDS, key=len, reverse=True))
                         + r")(?![\w'])", re.IGNORECASE)
-_JOINING_SIGN = re.compile(r"(?<=\w)\s*(?:&|\+)\s*(?=\w)")  # "3 kids & their mum", "2 nurses + 1 porter"
+# "3 kids & their mum", "2 nurses + 1 porter"; not the "&" of an abbreviation ("A&E", "R&D")
+_JOINING_SIGN = re.compile(r"(?<!\b[A-Za-z])(?<=\w)\s*(?:&|\+)\s*(?=\w)|(?<=\b[A-Za-z])\s+(?:&|\+)\s*(?=\w)"
+                           r"|(?<=\b[A-Za-z])(?:&|\+)\s+(?=\w)")
 
 
 def normalise(text: str) -> str:

@@ -96,7 +96,7 @@ def verb_lemma(word: str) -> str:
     return w
 
 
-_WORD = re.compile(r"[a-z0-9]+(?:[,'][0-9]{3})*")
+_WORD = re.compile(r"[a-z]&[a-z]\b|[a-z0-9]+(?:[,'][0-9]{3})*")  # "a&e" is one word, as the parser keeps it
 
 
 def words(text: str) -> list[str]:

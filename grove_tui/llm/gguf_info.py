@@ -13,7 +13,6 @@ import os
 import struct
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 
 import gguf
 
@@ -30,6 +29,7 @@ QWEN3_ARCHITECTURES = frozenset({"qwen3", "qwen3moe"})
 # llama.cpp's own buffers (compute graph, scratch) on top of weights and KV, measured roughly on CPU.
 RUNTIME_OVERHEAD_BYTES = 256 * 1024 * 1024
 
+GGUFScalar = int | float | bool | str  # a metadata value (arrays are read as their length only)
 _SCALAR_FORMATS = {
     gguf.GGUFValueType.UINT8: "<B", gguf.GGUFValueType.INT8: "<b", gguf.GGUFValueType.UINT16: "<H",
     gguf.GGUFValueType.INT16: "<h", gguf.GGUFValueType.UINT32: "<I", gguf.GGUFValueType.INT32: "<i",
@@ -54,7 +54,7 @@ class GGUFInfo:
     value_length: int | None
     vocab_size: int | None
     chat_template: str | None
-    metadata: dict[str, Any] = field(repr=False, default_factory=dict)  # scalar keys only
+    metadata: dict[str, GGUFScalar] = field(repr=False, default_factory=dict)  # scalar keys only
 
     @property
     def is_qwen3(self) -> bool:
@@ -88,26 +88,31 @@ class _Scanner:
         self.offset = end
         return chunk
 
-    def scalar(self, value_type: gguf.GGUFValueType) -> Any:
+    def scalar(self, value_type: gguf.GGUFValueType) -> int | float | bool:
         fmt = _SCALAR_FORMATS[value_type]
-        return struct.unpack(fmt, self.take(struct.calcsize(fmt)))[0]
+        value: int | float | bool = struct.unpack(fmt, self.take(struct.calcsize(fmt)))[0]
+        return value
+
+    def whole(self, value_type: gguf.GGUFValueType = gguf.GGUFValueType.UINT64) -> int:
+        """An integer field of the header (a length, a count, a type code): UINT32 or UINT64."""
+        return int(self.scalar(value_type))
 
     def string(self) -> str:
-        length = self.scalar(gguf.GGUFValueType.UINT64)
+        length = self.whole()
         return self.take(length).decode("utf-8", errors="replace")
 
     def skip_string(self) -> None:
-        length = self.scalar(gguf.GGUFValueType.UINT64)
+        length = self.whole()
         self.offset += length
         if self.offset > len(self.buffer):
             raise ModelError(f"{self.path}: the GGUF header is truncated (the download may be incomplete)")
 
-    def value(self, value_type: gguf.GGUFValueType) -> Any:
+    def value(self, value_type: gguf.GGUFValueType) -> GGUFScalar | _ArrayLength:
         if value_type == gguf.GGUFValueType.STRING:
             return self.string()
         if value_type == gguf.GGUFValueType.ARRAY:
-            item_type = gguf.GGUFValueType(self.scalar(gguf.GGUFValueType.UINT32))
-            count = self.scalar(gguf.GGUFValueType.UINT64)
+            item_type = gguf.GGUFValueType(self.whole(gguf.GGUFValueType.UINT32))
+            count = self.whole()
             # Arrays are vocabularies and merges: we need their length, never their content.
             if item_type == gguf.GGUFValueType.STRING:
                 for _ in range(count):
@@ -147,17 +152,17 @@ def read_gguf_info(path: str | os.PathLike[str]) -> GGUFInfo:
     with file.open("rb") as handle, mmap.mmap(handle.fileno(), 0, access=mmap.ACCESS_READ) as buffer:
         scanner = _Scanner(buffer, file)
         scanner.take(4)
-        version = scanner.scalar(gguf.GGUFValueType.UINT32)
+        version = scanner.whole(gguf.GGUFValueType.UINT32)
         if version not in (2, 3):
             raise ModelError(f"{file}: GGUF version {version} is not supported (expected 2 or 3)")
-        tensor_count = scanner.scalar(gguf.GGUFValueType.UINT64)
-        kv_count = scanner.scalar(gguf.GGUFValueType.UINT64)
-        metadata: dict[str, Any] = {}
+        tensor_count = scanner.whole()
+        kv_count = scanner.whole()
+        metadata: dict[str, GGUFScalar] = {}
         array_lengths: dict[str, int] = {}
         try:
             for _ in range(kv_count):
                 key = scanner.string()
-                value = scanner.value(gguf.GGUFValueType(scanner.scalar(gguf.GGUFValueType.UINT32)))
+                value = scanner.value(gguf.GGUFValueType(scanner.whole(gguf.GGUFValueType.UINT32)))
                 if isinstance(value, _ArrayLength):
                     array_lengths[key] = value.count
                 else:
@@ -178,11 +183,17 @@ def read_gguf_info(path: str | os.PathLike[str]) -> GGUFInfo:
         return int(value) if isinstance(value, (int, float)) and not isinstance(value, bool) else None
 
     file_type = metadata.get("general.file_type")
-    try:
-        quantization = gguf.LlamaFileType(file_type).name.removeprefix("MOSTLY_").removeprefix("ALL_") if file_type is not None else "unknown"
-    except ValueError:
-        quantization = f"type {file_type}"
+    if file_type is None:
+        quantization = "unknown"
+    else:
+        try:
+            if not isinstance(file_type, int):  # the key is a UINT32 in every file llama.cpp writes
+                raise ValueError(file_type)
+            quantization = gguf.LlamaFileType(file_type).name.removeprefix("MOSTLY_").removeprefix("ALL_")
+        except ValueError:
+            quantization = f"type {file_type}"
     vocab = arch_int("vocab_size") or array_lengths.get("tokenizer.ggml.tokens")
+    template = metadata.get("tokenizer.chat_template")
     return GGUFInfo(
         path=file, size_bytes=size, architecture=architecture,
         name=str(metadata.get("general.name", file.stem)), quantization=quantization,
@@ -190,11 +201,11 @@ def read_gguf_info(path: str | os.PathLike[str]) -> GGUFInfo:
         embedding_length=arch_int("embedding_length"), head_count=arch_int("attention.head_count"),
         head_count_kv=arch_int("attention.head_count_kv") or arch_int("attention.head_count"),
         key_length=arch_int("attention.key_length"), value_length=arch_int("attention.value_length"),
-        vocab_size=vocab, chat_template=metadata.get("tokenizer.chat_template"), metadata=metadata,
+        vocab_size=vocab, chat_template=template if isinstance(template, str) else None, metadata=metadata,
     )
 
 
-def _tensor_data_end(scanner: _Scanner, tensor_count: int, metadata: dict[str, Any]) -> int:
+def _tensor_data_end(scanner: _Scanner, tensor_count: int, metadata: dict[str, GGUFScalar]) -> int:
     """Where the last tensor's data ends, from the tensor infos after the metadata (GGUF v2/v3:
     name, n_dims, dims, type, offset relative to the aligned start of the data section)."""
     alignment = metadata.get("general.alignment", 32)
@@ -204,14 +215,14 @@ def _tensor_data_end(scanner: _Scanner, tensor_count: int, metadata: dict[str, A
     try:
         for _ in range(tensor_count):
             scanner.skip_string()
-            n_dims = scanner.scalar(gguf.GGUFValueType.UINT32)
+            n_dims = scanner.whole(gguf.GGUFValueType.UINT32)
             if n_dims > 8:
                 raise ValueError(f"a tensor has {n_dims} dimensions")
             elements = 1
             for _ in range(n_dims):
-                elements *= scanner.scalar(gguf.GGUFValueType.UINT64)
-            tensor_type = gguf.GGMLQuantizationType(scanner.scalar(gguf.GGUFValueType.UINT32))
-            offset = scanner.scalar(gguf.GGUFValueType.UINT64)
+                elements *= scanner.whole()
+            tensor_type = gguf.GGMLQuantizationType(scanner.whole(gguf.GGUFValueType.UINT32))
+            offset = scanner.whole()
             block_size, type_size = gguf.GGML_QUANT_SIZES[tensor_type]
             end_of_data = max(end_of_data, offset + elements // block_size * type_size)
     except (ValueError, KeyError, struct.error) as error:

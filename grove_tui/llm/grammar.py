@@ -23,8 +23,6 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Iterable, Mapping
-from typing import Any
-
 from grove_tui.errors import GrammarError
 
 # The characters a free-text value may use: no quotes, backslashes or control characters, so strict
@@ -37,9 +35,11 @@ MAX_STRING_LENGTH = 256
 
 _IGNORED_KEYS = frozenset({"description", "title", "$comment", "default", "examples", "$schema"})
 _REF_PREFIX = "#/$defs/"
+# A JSON schema as the caller built it: its values are checked as it is converted (hence object).
+Schema = Mapping[str, object]
 
 
-def schema_to_gbnf(schema: dict[str, Any]) -> str:
+def schema_to_gbnf(schema: Schema) -> str:
     """Return a GBNF grammar (root rule `root`) accepting exactly the compact JSON documents of `schema`."""
     return _Converter(schema).convert()
 
@@ -88,7 +88,7 @@ def bounded_repeat(item: str, low: int, high: int, separator: str = "") -> str:
     return f"{mandatory} {tail}".strip()
 
 
-def json_literal(value: Any) -> str:
+def json_literal(value: object) -> str:
     """The compact JSON text of a scalar, as the model must write it."""
     if isinstance(value, float) and value.is_integer():
         # 2.0 and 2 are the same number; the short form is what tokenizers see most often.
@@ -128,11 +128,14 @@ class GbnfRules:
 
 
 class _Converter:
-    def __init__(self, schema: dict[str, Any]) -> None:
+    def __init__(self, schema: Schema) -> None:
         if not isinstance(schema, dict):
             raise GrammarError(f"schema must be a JSON object, got {type(schema).__name__}")
         self.schema = schema
-        self.defs: dict[str, Any] = schema.get("$defs", {})
+        defs = schema.get("$defs", {})
+        if not isinstance(defs, dict):
+            raise GrammarError(f"$defs must be an object of named schemas, got {type(defs).__name__}")
+        self.defs: dict[str, object] = defs
         self.named = GbnfRules(reserved=("root", "ws"))
         self.def_rules: dict[str, str] = {}
         self.resolving: list[str] = []
@@ -146,7 +149,7 @@ class _Converter:
         """Name `body` as a rule, sharing one rule between identical bodies."""
         return self.named.add(hint, body)
 
-    def expression(self, schema: Any, hint: str) -> str:
+    def expression(self, schema: object, hint: str) -> str:
         """A GBNF expression matching `schema`; composite parts become named rules."""
         if not isinstance(schema, dict):
             raise GrammarError(f"{hint}: schema must be an object, got {schema!r}")
@@ -192,12 +195,12 @@ class _Converter:
         raise GrammarError(f"{hint}: unsupported schema {sorted(keys)} with type {kind!r}")
 
     @staticmethod
-    def _only(schema: dict[str, Any], keys: set[str], allowed: set[str], hint: str) -> None:
+    def _only(schema: Schema, keys: set[str], allowed: set[str], hint: str) -> None:
         extra = keys - allowed
         if extra:
             raise GrammarError(f"{hint}: unsupported keyword(s) {sorted(extra)} next to {sorted(allowed & keys)}")
 
-    def reference(self, ref: Any) -> str:
+    def reference(self, ref: object) -> str:
         if not isinstance(ref, str) or not ref.startswith(_REF_PREFIX):
             raise GrammarError(f"$ref {ref!r} must point into #/$defs/")
         name = ref[len(_REF_PREFIX):]
@@ -217,12 +220,14 @@ class _Converter:
         self.def_rules[name] = rule
         return rule
 
-    def object(self, schema: dict[str, Any], keys: set[str], hint: str) -> str:
+    def object(self, schema: Schema, keys: set[str], hint: str) -> str:
         self._only(schema, keys, {"type", "properties", "required", "additionalProperties"}, hint)
         if schema.get("additionalProperties", False) is not False:
             raise GrammarError(f"{hint}: objects must set additionalProperties to false")
-        properties: dict[str, Any] = schema.get("properties", {})
+        properties = schema.get("properties", {})
         required = schema.get("required", [])
+        if not isinstance(properties, dict) or not isinstance(required, list):
+            raise GrammarError(f"{hint}: properties must be an object and required a list")
         unknown = set(required) - set(properties)
         if unknown:
             raise GrammarError(f"{hint}: required names unknown properties {sorted(unknown)}")
@@ -243,7 +248,7 @@ class _Converter:
                 parts.append(f'("," ws {pair})?')
         return self.add_rule(hint, '"{" ' + " ".join(parts) + ' "}"')
 
-    def array(self, schema: dict[str, Any], keys: set[str], hint: str) -> str:
+    def array(self, schema: Schema, keys: set[str], hint: str) -> str:
         self._only(schema, keys, {"type", "items", "minItems", "maxItems"}, hint)
         if "items" not in schema:
             raise GrammarError(f"{hint}: arrays need an items schema")
@@ -264,7 +269,7 @@ class _Converter:
         sequence = bounded_repeat(item, max(low, 1), high, separator)
         return sequence if low >= 1 else f"({sequence})?"
 
-    def string(self, schema: dict[str, Any], keys: set[str], hint: str) -> str:
+    def string(self, schema: Schema, keys: set[str], hint: str) -> str:
         self._only(schema, keys, {"type", "maxLength", "minLength", "pattern"}, hint)
         if schema.get("pattern", SAFE_STRING_PATTERN) != SAFE_STRING_PATTERN:
             raise GrammarError(f"{hint}: the only supported string pattern is {SAFE_STRING_PATTERN!r}")
@@ -279,7 +284,7 @@ class _Converter:
         chars = self._bounded_list(char, low, high, "")
         return self.add_rule(f"string-{low}-{high}", f'"\\"" {chars} "\\""')
 
-    def integer(self, schema: dict[str, Any], keys: set[str], hint: str) -> str:
+    def integer(self, schema: Schema, keys: set[str], hint: str) -> str:
         self._only(schema, keys, {"type", "minimum", "maximum"}, hint)
         low, high = schema.get("minimum"), schema.get("maximum")
         if not (isinstance(low, int) and isinstance(high, int)) or isinstance(low, bool) or isinstance(high, bool):

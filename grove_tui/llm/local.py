@@ -29,14 +29,19 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from multiprocessing.connection import Connection
+from multiprocessing.process import BaseProcess
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Literal
 
 from grove_tui.cpu import default_llm_threads
 from grove_tui.settings import cache_dir, load_settings
 from grove_tui.llm.chat_template import Sampling, default_sampling
 from grove_tui.errors import Cancelled, ContextTooSmallError, ModelError
 from grove_tui.llm.gguf_info import GGUFInfo, check_loadable, read_gguf_info
+
+if TYPE_CHECKING:
+    from grove_tui.llm.worker import ReadyInfo, Request, Result
 
 CANCEL_GRACE_SECONDS = 0.5
 LOAD_TIMEOUT_SECONDS = 300.0
@@ -114,9 +119,9 @@ class LocalLLM:
         self._context = multiprocessing.get_context("spawn")
         _start_resource_tracker()  # before the first Event/Lock: they register with the tracker
         self._cancel_flag = self._context.Event()
-        self._process: Any = None
-        self._conn: Any = None
-        self._ready_info: dict[str, Any] = {}
+        self._process: BaseProcess | None = None
+        self._conn: Connection | None = None
+        self._ready_info: ReadyInfo | None = None
         self._lock = threading.Lock()
 
     # ---- lifecycle -------------------------------------------------------------------------------
@@ -127,21 +132,23 @@ class LocalLLM:
 
     @property
     def worker_pid(self) -> int | None:
-        return self._process.pid if self.running else None
+        process = self._process
+        return process.pid if process is not None and process.is_alive() else None
 
     @property
     def context_size(self) -> int:
         """The context llama.cpp actually allocated (it rounds small requests up); n_ctx until loaded."""
-        return int(self._ready_info.get("n_ctx", self.n_ctx))
+        return self._ready_info["n_ctx"] if self._ready_info is not None else self.n_ctx
 
     def start(self) -> None:
         """Start the worker and load the model now (otherwise the first generate does it)."""
         with self._lock:
             self._ensure_worker()
 
-    def _ensure_worker(self) -> None:
+    def _ensure_worker(self) -> Connection:
+        """The running worker's pipe, starting the worker (and loading the model) when there is none."""
         if self.running and self._conn is not None:
-            return
+            return self._conn
         self._discard_worker()
         from grove_tui.llm import worker
 
@@ -169,6 +176,7 @@ class LocalLLM:
             self._discard_worker()
             raise ModelError(f"{self.path}: {message[2]}")
         self._ready_info = message[1]
+        return parent_conn
 
     def _discard_worker(self) -> None:
         process, conn = self._process, self._conn
@@ -231,37 +239,34 @@ class LocalLLM:
     # ---- requests --------------------------------------------------------------------------------
 
     @staticmethod
-    def _request_body(messages_or_prompt: Messages | str) -> dict[str, Any]:
+    def _request_body(op: Literal["generate", "count", "evaluate"], messages_or_prompt: Messages | str) -> Request:
         if isinstance(messages_or_prompt, str):
-            return {"prompt": messages_or_prompt, "messages": None}
-        return {"prompt": None, "messages": [dict(message) for message in messages_or_prompt]}
+            return {"op": op, "prompt": messages_or_prompt, "messages": None}
+        return {"op": op, "prompt": None, "messages": [dict(message) for message in messages_or_prompt]}
 
     def count_tokens(self, messages_or_prompt: Messages | str) -> int:
         """Tokens the rendered prompt takes (chat template applied), without generating."""
         with self._lock:
-            self._ensure_worker()
-            self._conn.send({"op": "count", **self._request_body(messages_or_prompt)})
+            self._ensure_worker().send(self._request_body("count", messages_or_prompt))
             result, _, _ = self._collect(None, None, None)
             return int(result["prompt_tokens"])
 
-    def evaluate(self, messages_or_prompt: Messages | str, prefix_label: str = "") -> dict[str, Any]:
+    def evaluate(self, messages_or_prompt: Messages | str, prefix_label: str = "") -> Result:
         """Evaluate the prompt exactly as `generate` would, without sampling.
 
         Returns {"prompt_tokens", "cached_tokens", "cache_source", "logits_sha256"}: the digest of the
         next-token logits, so callers can check that caches never change what the model sees.
         """
         with self._lock:
-            self._ensure_worker()
-            self._conn.send({"op": "evaluate", "prefix_label": prefix_label, "n_threads": self.threads_now(),
-                             **self._request_body(messages_or_prompt)})
+            self._ensure_worker().send({**self._request_body("evaluate", messages_or_prompt),
+                                        "prefix_label": prefix_label, "n_threads": self.threads_now()})
             result, _, _ = self._collect(None, None, None)
-            return dict(result)
+            return result.copy()
 
     def render(self, messages: Messages) -> str:
         """The exact prompt text the chat template produces (Qwen3: ends with the empty think block)."""
         with self._lock:
-            self._ensure_worker()
-            self._conn.send({"op": "count", **self._request_body(messages)})
+            self._ensure_worker().send(self._request_body("count", messages))
             result, _, _ = self._collect(None, None, None)
             return str(result["prompt"])
 
@@ -287,17 +292,17 @@ class LocalLLM:
             "min_p": self.sampling.min_p if min_p is None else min_p,
             "presence_penalty": self.sampling.presence_penalty if presence_penalty is None else presence_penalty,
         }
-        body = self._request_body(messages_or_prompt)
+        body = self._request_body("generate", messages_or_prompt)
         started = time.monotonic()
         deadline = None if timeout is None else started + timeout
         spent_tokens = 0
         budget = max_tokens
         with self._lock:
             for attempt in range(1, length_retries + 2):
-                self._ensure_worker()
+                conn = self._ensure_worker()
                 self._cancel_flag.clear()
                 sent = time.monotonic()
-                self._conn.send({"op": "generate", **body, "grammar": grammar, "max_tokens": budget,
+                conn.send({**body, "grammar": grammar, "max_tokens": budget,
                                  "seed": seed + attempt - 1, "prefix_label": prefix_label,
                                  "n_threads": self.threads_now(), **sampling})
                 result, first_token_at, _ = self._collect(on_token, cancel, deadline)
@@ -313,15 +318,16 @@ class LocalLLM:
                         cache_source=str(result.get("cache_source", "cold")),
                         grammar_engine=str(result.get("grammar_engine", "")),
                         forced_tokens=int(result.get("forced_tokens", 0)))
-                room = self._ready_info.get("n_ctx", self.n_ctx) - int(result["prompt_tokens"])
+                room = self.context_size - int(result["prompt_tokens"])
                 budget = max(1, min(budget * 2, room))
         raise ModelError(f"the {self.role} model did not finish its answer within {budget} tokens "
                          f"({length_retries + 1} attempts); the output was cut off, so it was not used")
 
     def _collect(self, on_token: Callable[[str], None] | None, cancel: threading.Event | None,
-                 deadline: float | None) -> tuple[dict[str, Any], float | None, int]:
+                 deadline: float | None) -> tuple[Result, float | None, int]:
         """Relay worker events until the request is done; enforce cancel and timeout."""
-        conn = self._conn
+        conn, process = self._conn, self._process
+        assert conn is not None and process is not None  # the caller started the worker
         first_token_at: float | None = None
         prompt_tokens = 0
         stop_requested_at: float | None = None
@@ -342,7 +348,7 @@ class LocalLLM:
                 raise ModelError(f"the {self.role} model did not answer in time; the model process was stopped")
             try:
                 if not conn.poll(_POLL_SECONDS):
-                    if not self._process.is_alive():
+                    if not process.is_alive():
                         raise self._crashed("during generation")
                     continue
                 message = conn.recv()
@@ -357,7 +363,7 @@ class LocalLLM:
             elif kind == "started":
                 prompt_tokens = int(message[1])
             elif kind == "done":
-                result = message[1]
+                result: Result = message[1]
                 if stop_reason == "timeout":
                     raise ModelError(f"the {self.role} model did not answer in time (generation stopped)")
                 if stop_reason == "cancel":

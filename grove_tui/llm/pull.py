@@ -14,6 +14,7 @@ the target and is renamed only after every check passed; on any failure nothing 
 
 from __future__ import annotations
 
+import email.message
 import hashlib
 import os
 import re
@@ -23,7 +24,7 @@ import urllib.request
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import IO
 
 from grove_tui.settings import models_dir
 from grove_tui.errors import ModelError
@@ -56,7 +57,8 @@ CATALOG: dict[str, CatalogEntry] = {
 
 
 class _NoRedirect(urllib.request.HTTPRedirectHandler):
-    def redirect_request(self, *args: Any, **kwargs: Any) -> None:
+    def redirect_request(self, req: urllib.request.Request, fp: IO[bytes], code: int, msg: str,
+                         headers: email.message.Message, newurl: str) -> None:
         return None
 
 

@@ -19,7 +19,6 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 from grove_tui.settings import GroveSettings, config_file, load_settings, models_dir
 from grove_tui.llm.embedded import EMBEDDED_MODEL, embedded_model_path
@@ -133,7 +132,7 @@ def list_models(cli_roi: str | None = None, cli_bt: str | None = None, cli_model
     for path, origin in candidates.items():
         roles = tuple(role for role, choice in (choices.items() if isinstance(choices, dict) else [])
                       if choice.path.resolve() == path)
-        info: Any = None
+        info: GGUFInfo | None = None
         problem = ""
         try:
             info = read_gguf_info(path)

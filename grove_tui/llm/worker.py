@@ -35,7 +35,69 @@ import traceback
 from multiprocessing.connection import Connection
 from multiprocessing.synchronize import Event
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Literal, Required, TypedDict, Unpack
+
+if TYPE_CHECKING:
+    import llguidance
+    from llama_cpp import Llama, _internals
+
+
+class Request(TypedDict, total=False):
+    """What the parent sends: an operation, its prompt (text or chat messages), and for "generate" the
+    grammar, budget and sampling values."""
+
+    op: Required[Literal["generate", "count", "evaluate", "stop"]]
+    prompt: str | None
+    messages: list[dict[str, str]] | None
+    prefix_label: str
+    n_threads: int
+    grammar: str | None
+    max_tokens: int
+    seed: int
+    temperature: float
+    top_p: float
+    top_k: int
+    min_p: float
+    presence_penalty: float
+
+
+class ReadyInfo(TypedDict):
+    """The "ready" event's payload: what the parent needs of the loaded model."""
+
+    bos_token: str
+    eos_token: str
+    chat_template: str | None
+    architecture: str
+    n_ctx: int
+
+
+class Result(TypedDict, total=False):
+    """The "done" event's payload. count: prompt, prompt_tokens. evaluate: prompt_tokens, cached_tokens,
+    cache_source, logits_sha256. generate: text, finish_reason and the token counts and timings."""
+
+    prompt: str
+    prompt_tokens: int
+    text: str
+    finish_reason: str  # "stop" | "length" | "cancelled"
+    completion_tokens: int
+    cached_tokens: int
+    cache_source: str  # "live" | "disk" | "cold"
+    logits_sha256: str
+    grammar_rejections: int
+    forced_tokens: int
+    grammar_engine: str
+    worker_seconds: float
+
+
+class SamplerOptions(TypedDict):
+    """The sampler chain's values (SampleFirst's and MaskFirst's keyword arguments)."""
+
+    top_k: int
+    top_p: float
+    min_p: float
+    temperature: float
+    presence_penalty: float
+    seed: int
 
 
 # A log past this size is moved to <log>.1 when a worker starts (one older log kept), so it never grows
@@ -129,7 +191,7 @@ def _serve(conn: Connection, cancel: Event, model_path: str, n_ctx: int, n_threa
         conn.send(("error", "load", f"llama.cpp could not load {model_path}: {error}\n{_log_tail(log_path)}"))
         return
     bos_id, eos_id = llm.token_bos(), llm.token_eos()
-    info = {
+    info: ReadyInfo = {
         "bos_token": llm._model.token_get_text(bos_id) if bos_id != -1 else "",
         "eos_token": llm._model.token_get_text(eos_id) if eos_id != -1 else "",
         "chat_template": llm.metadata.get("tokenizer.chat_template"),
@@ -192,7 +254,7 @@ class PrefixStore:
         name = re.sub(r"[^A-Za-z0-9_.-]+", "-", label)[:80].strip("-") or "prefix"
         return self.folder / f"{name}-{key[:24]}.kv"
 
-    def load(self, llm: Any, label: str, tokens: list[int]) -> bool:
+    def load(self, llm: Llama, label: str, tokens: list[int]) -> bool:
         """Restore the prefix into sequence 0 of an emptied context; False when no usable file exists."""
         import ctypes
         import json
@@ -228,7 +290,7 @@ class PrefixStore:
             pass
         return True
 
-    def save(self, llm: Any, label: str, tokens: list[int]) -> None:
+    def save(self, llm: Llama, label: str, tokens: list[int]) -> None:
         import ctypes
         import json
 
@@ -269,7 +331,7 @@ def segment_starts(fixed: int, total: int, n_batch: int) -> list[int]:
 
 
 class _Server:
-    def __init__(self, llm: Any, conn: Connection, cancel: Event, info: dict[str, Any],
+    def __init__(self, llm: Llama, conn: Connection, cancel: Event, info: ReadyInfo,
                  store: PrefixStore | None = None, masks: TokenMasks | None = None) -> None:
         self.llm, self.conn, self.cancel, self.info, self.store = llm, conn, cancel, info, store
         self.masks = masks
@@ -277,11 +339,12 @@ class _Server:
         self.live_prompt = 0  # leading live KV tokens that came from prompt evaluation (not decoding)
         self.live_bounds: list[int] = []  # where that evaluation's batches started, and its end
 
-    def prompt_text(self, request: dict[str, Any]) -> str:
-        if request.get("messages") is not None:
+    def prompt_text(self, request: Request) -> str:
+        messages = request.get("messages")
+        if messages is not None:
             from grove_tui.llm.chat_template import render_chat
 
-            return render_chat(self.info["chat_template"], request["messages"], bos_token=self.info["bos_token"],
+            return render_chat(self.info["chat_template"], messages, bos_token=self.info["bos_token"],
                                eos_token=self.info["eos_token"], architecture=self.info["architecture"])
         return str(request["prompt"])
 
@@ -291,7 +354,7 @@ class _Server:
         add_bos = not (bos and text.startswith(bos))
         return self.llm.tokenize(text.encode("utf-8"), add_bos=add_bos, special=True)
 
-    def fixed_length(self, request: dict[str, Any], tokens: list[int]) -> int:
+    def fixed_length(self, request: Request, tokens: list[int]) -> int:
         """Tokens before the last message's content: shared by every request with the same earlier messages."""
         messages = request.get("messages")
         if not messages or len(messages) < 2:
@@ -343,7 +406,7 @@ class _Server:
                 self.store.save(llm, label, tokens[:fixed])
         return reused, source
 
-    def handle(self, request: dict[str, Any]) -> None:
+    def handle(self, request: Request) -> None:
         from grove_tui.errors import ModelError
 
         try:
@@ -374,7 +437,7 @@ class _Server:
             llama_cpp.llama_set_n_threads(self.llm._ctx.ctx, threads, threads)
             self.threads = threads
 
-    def evaluate(self, tokens: list[int], request: dict[str, Any]) -> None:
+    def evaluate(self, tokens: list[int], request: Request) -> None:
         """Evaluate the prompt as generate does and report a digest of the next-token logits.
 
         The logits are what sampling draws from, so equal digests mean every sampler sees the same
@@ -392,7 +455,7 @@ class _Server:
         self.conn.send(("done", {"prompt_tokens": len(tokens), "cached_tokens": reused, "cache_source": source,
                                  "logits_sha256": hashlib.sha256(logits).hexdigest()}))
 
-    def generate(self, tokens: list[int], request: dict[str, Any]) -> None:
+    def generate(self, tokens: list[int], request: Request) -> None:
         from llama_cpp import llama_vocab_is_eog
 
         llm = self.llm
@@ -472,7 +535,7 @@ class SampleFirst:
     SWITCH_AFTER = 8
     engine = "gbnf"
 
-    def __init__(self, llm: Any, grammar: str | None, *, top_k: int, top_p: float, min_p: float, temperature: float,
+    def __init__(self, llm: Llama, grammar: str | None, *, top_k: int, top_p: float, min_p: float, temperature: float,
                  presence_penalty: float, seed: int) -> None:
         import ctypes
 
@@ -483,7 +546,7 @@ class SampleFirst:
         self._lc, self._ctypes, self._np, self.llm = llama_cpp, ctypes, np, llm
         self.n_vocab = llm.n_vocab()
 
-        def chain(grammar_first: str | None) -> Any:
+        def chain(grammar_first: str | None) -> _internals.LlamaSampler:
             sampler = _internals.LlamaSampler()
             sampler.add_penalties(n_vocab=self.n_vocab, penalty_last_n=llm.last_n_tokens_size, penalty_repeat=1.0,
                                   penalty_freq=0.0, penalty_present=presence_penalty)
@@ -511,7 +574,7 @@ class SampleFirst:
         self.drawn = 0
         self.grammar_first = False
 
-    def _draw(self, sampler: Any) -> int:
+    def _draw(self, sampler: _internals.LlamaSampler) -> int:
         lc, np = self._lc, self._np
         self.cells["id"] = self.ids
         self.cells["logit"] = np.ctypeslib.as_array(self.llm._ctx.get_logits_ith(-1), shape=(self.n_vocab,))
@@ -530,7 +593,7 @@ class SampleFirst:
         if (self.constrained is not None and self.drawn > self.SWITCH_AFTER
                 and 2 * self.rejections > self.drawn - 1):
             self.grammar_first = True  # for the rest of the answer: the model keeps missing the grammar
-        if self.grammar_first:
+        if self.grammar_first and self.constrained is not None:  # only ever set with a grammar
             token = self._draw(self.constrained)
         else:
             token = self._sample_first()
@@ -550,6 +613,7 @@ class SampleFirst:
             single = lc.llama_token_data_array(data=self.one, size=1, selected=-1, sorted=False)
             lc.llama_sampler_apply(self.grammar, self._ctypes.byref(single))
             if not self._np.isfinite(cell.logit):
+                assert self.constrained is not None  # made with the grammar
                 self.rejections += 1
                 token = self._draw(self.constrained)
         return token
@@ -577,14 +641,14 @@ class TokenMasks:
     Without llguidance (or a grammar it refuses) the worker samples with llama.cpp's GBNF (SampleFirst).
     """
 
-    def __init__(self, llm: Any) -> None:
+    def __init__(self, llm: Llama) -> None:
         import threading
 
-        self._tokenizer: Any = None
+        self._tokenizer: llguidance.LLTokenizer | None = None
         self._thread = threading.Thread(target=self._build, args=(llm,), name="grove-token-masks", daemon=True)
         self._thread.start()
 
-    def _build(self, llm: Any) -> None:
+    def _build(self, llm: Llama) -> None:
         try:
             import llguidance.llamacpp
 
@@ -592,7 +656,7 @@ class TokenMasks:
         except Exception as error:  # not installed, or a vocabulary it cannot read: GBNF it is
             print(f"grove: token masks unavailable, sampling with llama.cpp's grammar: {error}", file=sys.stderr)
 
-    def matcher(self, grammar: str) -> Any | None:
+    def matcher(self, grammar: str) -> llguidance.LLMatcher | None:
         """An LLMatcher for the GBNF `grammar`, or None when llguidance cannot take it."""
         self._thread.join()
         if self._tokenizer is None:
@@ -613,7 +677,8 @@ class TokenMasks:
         return matcher
 
 
-def make_sampler(llm: Any, grammar: str | None, masks: TokenMasks | None, **options: Any) -> Any:
+def make_sampler(llm: Llama, grammar: str | None, masks: TokenMasks | None,
+                 **options: Unpack[SamplerOptions]) -> MaskFirst | SampleFirst:
     """MaskFirst when llguidance takes the grammar, else SampleFirst (llama.cpp's GBNF); both draw the same way."""
     matcher = masks.matcher(grammar) if grammar and masks is not None else None
     if matcher is not None:
@@ -631,7 +696,7 @@ class MaskFirst:
     evaluated with the sampled token in one batch rather than decoded one by one.
     """
 
-    def __init__(self, llm: Any, matcher: Any, *, top_k: int, top_p: float, min_p: float, temperature: float,
+    def __init__(self, llm: Llama, matcher: llguidance.LLMatcher, *, top_k: int, top_p: float, min_p: float, temperature: float,
                  presence_penalty: float, seed: int) -> None:
         import ctypes
 

@@ -18,12 +18,12 @@ import math
 import threading
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import shapely
 
 from grove_tui.files import npz_bytes, write_bytes_atomic
+from grove_tui.world import World, Zone
 from grove_tui.navigation.theta_star import (
     ThetaStarPlanner,
     any_angle_distances,
@@ -35,6 +35,8 @@ from grove_tui.navigation.theta_star import (
 )
 
 CACHE_FOLDER = "door_graphs"
+# A door-to-door leg inside one zone: (door, door) -> (the zone, its (K, 2) points).
+Legs = dict[tuple[int, int], tuple[int, np.ndarray]]
 CACHE_VERSION = 2
 # A cell belongs to a zone when its centre lies within this many cells of the zone's polygon: the
 # cells of a door opening then belong to both zones it joins.
@@ -59,7 +61,7 @@ class ZoneCells:
         return 0 <= r < self.occupied.shape[0] and 0 <= c < self.occupied.shape[1] and not self.occupied[r, c]
 
 
-def _zone_cells(zone: Any, planner: ThetaStarPlanner) -> tuple[int, int, np.ndarray]:
+def _zone_cells(zone: Zone, planner: ThetaStarPlanner) -> tuple[int, int, np.ndarray]:
     """(r0, c0, occupied crop) of the cells within ZONE_MARGIN_CELLS of the zone's polygon."""
     res = planner.resolution
     margin = ZONE_MARGIN_CELLS * res
@@ -83,7 +85,7 @@ def _zone_cells(zone: Any, planner: ThetaStarPlanner) -> tuple[int, int, np.ndar
 class DoorGraph:
     """Zones and doors of `world` on `planner`'s grid (see the module docstring)."""
 
-    def __init__(self, world: Any, planner: ThetaStarPlanner, cache_dir: Path | None = None) -> None:
+    def __init__(self, world: World, planner: ThetaStarPlanner, cache_dir: Path | None = None) -> None:
         self.world = world
         self.planner = planner
         self.zones: list[ZoneCells] = []
@@ -151,13 +153,13 @@ class DoorGraph:
         name = "".join(ch if ch.isalnum() or ch in "-_" else "_" for ch in str(getattr(self.world, "name", "world")))
         return Path(cache_dir) / f"{name}_{self.key}.npz"
 
-    def _load_or_build(self, cache_dir: Path | None):
+    def _load_or_build(self, cache_dir: Path | None) -> tuple[np.ndarray, np.ndarray, Legs]:
         path = self._cache_file(cache_dir)
         if path is not None and path.is_file():
             try:
                 with np.load(path, allow_pickle=False) as data:
                     if str(data["key"]) == self.key:
-                        legs = {}
+                        legs: Legs = {}
                         starts = data["leg_start"]
                         for (a, b, z), s0, s1 in zip(data["leg_ends"], starts[:-1], starts[1:]):
                             legs[(int(a), int(b))] = (int(z), np.array(data["leg_points"][s0:s1]))
@@ -193,12 +195,12 @@ class DoorGraph:
                 pass  # a read-only data dir costs the next run the build, nothing else
         return distance, hop, legs
 
-    def _build(self):
+    def _build(self) -> tuple[np.ndarray, np.ndarray, Legs]:
         """Door-to-door legs inside every zone, then all-pairs distances over the door graph."""
         n = len(self.door_names)
         edge = np.full((n, n), np.inf)
         np.fill_diagonal(edge, 0.0)
-        legs: dict[tuple[int, int], tuple[int, np.ndarray]] = {}
+        legs: Legs = {}
         res = self.planner.resolution
         for z, zone in enumerate(self.zones):
             width = zone.occupied.shape[1]
@@ -278,7 +280,8 @@ class DoorGraph:
         r, c = cell[0] - zone.r0, cell[1] - zone.c0
         return float(field[r * zone.occupied.shape[1] + c])
 
-    def _plan(self, start_cell, goal_cell, zs, zg) -> np.ndarray | None:
+    def _plan(self, start_cell: tuple[int, int], goal_cell: tuple[int, int], zs: list[int],
+              zg: list[int]) -> np.ndarray | None:
         ends_s = [(z, d) for z in zs for d in self.zones[z].doors if (z, d) in self.fields]
         ends_g = [(z, d) for z in zg for d in self.zones[z].doors if (z, d) in self.fields]
         best, choice = math.inf, None

@@ -7,8 +7,6 @@ segments are exact, so the grid does not depend on how finely walls were rasteri
 
 from __future__ import annotations
 
-from typing import Any
-
 import math
 import os
 from collections import OrderedDict
@@ -54,7 +52,7 @@ class OccupancyGrid:
     _nearest: tuple[np.ndarray, np.ndarray] | None = field(default=None, repr=False)
     # The World build_grid rasterised (None for a grid read from a file): planners of the grid use its
     # zones and doors (navigation/door_graph.py). Not saved.
-    world: Any = field(default=None, repr=False)
+    world: World | None = field(default=None, repr=False)
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -125,7 +123,7 @@ class OccupancyGrid:
         return self._nearest
 
     def save(self, path: str | os.PathLike[str]) -> Path:
-        arrays = {
+        arrays: dict[str, np.ndarray | np.generic] = {
             "origin": np.asarray(self.origin, dtype=np.float64),
             "resolution": np.float64(self.resolution),
             "inflation": np.float64(self.inflation),

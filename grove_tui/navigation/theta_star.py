@@ -25,18 +25,28 @@ import math
 import os
 import threading
 from collections import OrderedDict
+from collections.abc import Sequence
 import hashlib
 import weakref
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numba
 import numpy as np
 from scipy.ndimage import distance_transform_edt
 
 from grove_tui.errors import PlanningError
+from grove_tui.navigation.grid import OccupancyGrid
+from grove_tui.world import World
+
+if TYPE_CHECKING:
+    from grove_tui.navigation.door_graph import DoorGraph
+    from grove_tui.navigation.velocity_field import VelocityField
+
+# PlanCache's key: world, resolution, inflation, kind, then the points (or a grid's shape) it is for
+CacheKey = tuple[str, float, float, str, tuple[float, ...] | tuple[int, ...]]
 
 
 SQRT2 = math.sqrt(2.0)
@@ -53,7 +63,7 @@ LANDMARK_UNREACHABLE = 65535  # uint16 landmark entry of a cell the landmark can
 
 
 @numba.njit(cache=True, nogil=True)
-def line_of_sight(sight_rows, sight_cols, r0, c0, r1, c1):
+def line_of_sight(sight_rows: np.ndarray, sight_cols: np.ndarray, r0: int, c0: int, r1: int, c1: int) -> bool:
     """True when the segment between the centres of cells (r0, c0) and (r1, c1) touches no occupied cell.
 
     Walks the segment one column (or row, for steep segments) at a time; in column i of D the
@@ -115,7 +125,7 @@ def line_of_sight(sight_rows, sight_cols, r0, c0, r1, c1):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _step_allowed(sight_rows, r, c, nr, nc):
+def _step_allowed(sight_rows: np.ndarray, r: int, c: int, nr: int, nc: int) -> bool:
     height, width = sight_rows.shape
     if nr < 0 or nr >= height or nc < 0 or nc >= width or sight_rows[nr, nc] == 0:
         return False
@@ -125,7 +135,7 @@ def _step_allowed(sight_rows, r, c, nr, nc):
 
 
 @numba.njit(cache=True, nogil=True)
-def connected_components(occupied):
+def connected_components(occupied: np.ndarray) -> np.ndarray:
     """Label 8-connected free regions (diagonal steps need both orthogonal neighbours free); -1 = occupied."""
     height, width = occupied.shape
     labels = np.full((height, width), -1, dtype=np.int32)
@@ -165,7 +175,7 @@ def connected_components(occupied):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heap_push(heap, size, f, g, node):
+def _heap_push(heap: np.ndarray, size: int, f: float, g: float, node: int) -> int:
     i = size
     while i > 0:
         up = (i - 1) >> 1
@@ -183,7 +193,7 @@ def _heap_push(heap, size, f, g, node):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heap_pop(heap, size):
+def _heap_pop(heap: np.ndarray, size: int) -> int:
     size -= 1
     f = heap[size, 0]
     g = heap[size, 1]
@@ -212,7 +222,7 @@ def _heap_pop(heap, size):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heap_room(heap, size):
+def _heap_room(heap: np.ndarray, size: int) -> np.ndarray:
     if size < heap.shape[0]:
         return heap
     bigger = np.empty((2 * heap.shape[0], 3), dtype=np.float64)
@@ -221,7 +231,7 @@ def _heap_room(heap, size):
 
 
 @numba.njit(cache=True, nogil=True)
-def any_angle_distances(sight_rows, sight_cols, sr, sc):
+def any_angle_distances(sight_rows: np.ndarray, sight_cols: np.ndarray, sr: int, sc: int) -> tuple[np.ndarray, np.ndarray]:
     """Theta*-style Dijkstra from cell (sr, sc) over its whole free region.
 
     Returns flat (H * W) distances in cells (inf where unreachable) and parents (-1 there): every
@@ -275,7 +285,7 @@ def any_angle_distances(sight_rows, sight_cols, sr, sc):
 
 
 @numba.njit(cache=True, nogil=True)
-def hop_distances(sight_rows, sr, sc):
+def hop_distances(sight_rows: np.ndarray, sr: int, sc: int) -> np.ndarray:
     """Breadth-first 8-connected step counts from (sr, sc), flat; -1 where unreachable (cheap, for placing landmarks)."""
     height, width = sight_rows.shape
     hops = np.full(height * width, -1, dtype=np.int32)
@@ -304,7 +314,7 @@ def hop_distances(sight_rows, sr, sc):
 
 
 @numba.njit(cache=True, nogil=True)
-def _store_landmark(table, column, distance, scale):
+def _store_landmark(table: np.ndarray, column: int, distance: np.ndarray, scale: float) -> None:
     # Rounded to 1/scale cell; the heuristic takes one unit off the difference, so the bound stays
     # below the true distance difference. Clamping keeps it a lower bound (|clamp a - clamp b| <= |a - b|).
     for i in range(distance.shape[0]):
@@ -316,8 +326,9 @@ def _store_landmark(table, column, distance, scale):
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _heuristic(landmarks, goal_row, use_landmarks, inv_scale, node, nr, nc, gr, gc, guide, guide_block, guide_cols,
-               guide_slack):
+def _heuristic(landmarks: np.ndarray, goal_row: np.ndarray, use_landmarks: bool, inv_scale: float, node: int,
+               nr: int, nc: int, gr: int, gc: int, guide: np.ndarray, guide_block: int, guide_cols: int,
+               guide_slack: float) -> float:
     # Euclidean, raised by the landmark (ALT) bound. Both are lower bounds of the 8-connected grid
     # distance to the goal (the landmark maps are edge-consistent), which is all the "never longer
     # than A*" argument needs; being any-angle distances they also stay nearly consistent with
@@ -326,7 +337,7 @@ def _heuristic(landmarks, goal_row, use_landmarks, inv_scale, node, nr, nc, gr, 
     h = math.sqrt((gr - nr) * (gr - nr) + (gc - nc) * (gc - nc))
     if use_landmarks:
         row = landmarks[node]
-        widest = 0
+        widest: int | np.int64 = 0
         for l in range(row.shape[0]):
             gap = np.int64(goal_row[l]) - np.int64(row[l])
             if gap < 0:
@@ -344,8 +355,9 @@ def _heuristic(landmarks, goal_row, use_landmarks, inv_scale, node, nr, nc, gr, 
 
 
 @numba.njit(cache=True, nogil=True)
-def theta_star_cells(sight_rows, sight_cols, landmarks, inv_scale, sr, sc, gr, gc, g_cost, parent, touched,
-                     guide, guide_block, guide_cols, guide_slack):
+def theta_star_cells(sight_rows: np.ndarray, sight_cols: np.ndarray, landmarks: np.ndarray, inv_scale: float,
+                     sr: int, sc: int, gr: int, gc: int, g_cost: np.ndarray, parent: np.ndarray, touched: np.ndarray,
+                     guide: np.ndarray, guide_block: int, guide_cols: int, guide_slack: float) -> np.ndarray:
     """Theta* from cell (sr, sc) to (gr, gc); returns the (K, 2) int64 array of path cells, empty if none.
 
     `landmarks` is the (H * W, L) uint16 table in units of 1 / `inv_scale` cells (L may be 0);
@@ -445,7 +457,7 @@ def theta_star_cells(sight_rows, sight_cols, landmarks, inv_scale, sr, sc, gr, g
 
 
 @numba.njit(cache=True, nogil=True)
-def block_graph(occupied, block):
+def block_graph(occupied: np.ndarray, block: int) -> np.ndarray:
     """(rows, cols, 8) bool: whether each block of `block` x `block` cells reaches its neighbour in
     direction k (the order of _NEIGHBOUR_DR/_DC) through a step the grid allows."""
     height, width = occupied.shape
@@ -483,7 +495,7 @@ def block_graph(occupied, block):
 
 
 @numba.njit(cache=True, nogil=True)
-def block_distances(joined, goal_row, goal_col, block):
+def block_distances(joined: np.ndarray, goal_row: int, goal_col: int, block: int) -> np.ndarray:
     """Flat octile distances in cells from the goal's block to every block (inf where unjoined)."""
     rows, cols = joined.shape[0], joined.shape[1]
     distance = np.full(rows * cols, np.inf)
@@ -573,7 +585,7 @@ class _SharedMaps:
     sight_rows: np.ndarray
     sight_cols: np.ndarray
     components: np.ndarray
-    lock: Any = field(default_factory=threading.RLock)
+    lock: threading.RLock = field(default_factory=threading.RLock)
     block_graph: np.ndarray | None = None
     guides: OrderedDict = field(default_factory=OrderedDict)
     geodesics: OrderedDict = field(default_factory=OrderedDict)
@@ -585,7 +597,7 @@ _SHARED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _SHARED_LOCK = threading.Lock()
 
 
-def _shared_maps(grid: Any, occupied: np.ndarray) -> _SharedMaps:
+def _shared_maps(grid: OccupancyGrid, occupied: np.ndarray) -> _SharedMaps:
     """The grid's shared maps, rebuilt when its cells changed since (a grid object is not always read-only)."""
     fingerprint = hashlib.blake2b(np.packbits(occupied).tobytes() + str(occupied.shape).encode(),
                                   digest_size=16).digest()
@@ -619,7 +631,8 @@ class ThetaStarPlanner:
     (the kernels release the GIL).
     """
 
-    def __init__(self, grid, landmarks: int | None = None, world: Any = None, door_graph_dir: Path | None = None):
+    def __init__(self, grid: OccupancyGrid, landmarks: int | None = None, world: World | None = None,
+                 door_graph_dir: Path | None = None):
         self.grid = grid
         # With the grid's world (given, or the one build_grid made the grid from), plans between
         # zones go through its door graph (door_graph.py), built on first use or read from the data dir.
@@ -666,7 +679,7 @@ class ThetaStarPlanner:
             shared.geodesics.move_to_end(key)
             return found
 
-    def path_in_tree(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+    def path_in_tree(self, start: Sequence[float], goal: Sequence[float], start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
         """`plan(start, goal)` read off the goal's shortest-path tree (`geodesic`): no search of its own, so
         every agent heading to one goal costs one Dijkstra in all. The tree's corners are pulled tight."""
         sx, sy = (float(v) for v in start)
@@ -816,7 +829,8 @@ class ThetaStarPlanner:
     def _block_cols(self) -> int:
         return (self.occupied.shape[1] + self.guide_block - 1) // self.guide_block
 
-    def plan(self, start, goal, start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
+    def plan(self, start: Sequence[float], goal: Sequence[float], start_label: str = "start",
+             goal_label: str = "goal") -> np.ndarray:
         """(K, 2) float64 world points from `start` to `goal` inclusive, every segment collision-free.
 
         An endpoint inside an obstacle (or on the border of one) but within one cell of free space is
@@ -847,7 +861,7 @@ class ThetaStarPlanner:
         return self._with_endpoints(start_cell, goal_cell, corners, sx, sy, gx, gy)
 
     @property
-    def door_graph(self) -> Any:
+    def door_graph(self) -> DoorGraph | None:
         """The world's DoorGraph on this grid (None without a world), built or loaded on first use."""
         if self.world is None or not getattr(self.world, "zones", None) or self.landmark_count:
             return None  # landmarks ask for exact Theta* paths: the door graph's are pulled tight, not exact
@@ -862,7 +876,9 @@ class ThetaStarPlanner:
                 shared.door_graphs[key] = graph
             return graph
 
-    def _with_endpoints(self, start_cell, goal_cell, corners, sx, sy, gx, gy) -> np.ndarray:
+    def _with_endpoints(self, start_cell: tuple[int, int], goal_cell: tuple[int, int],
+                        corners: list[tuple[float, float]], sx: float, sy: float, gx: float,
+                        gy: float) -> np.ndarray:
         """The exact endpoints joined to a path of cell centres (`corners`, from the start's cell to the goal's)."""
         points = [(sx, sy)]
         interior = corners[1:-1]
@@ -886,7 +902,8 @@ class ThetaStarPlanner:
 
 
 @numba.njit(cache=True, nogil=True)
-def segment_is_free(occupied, centre_x, centre_y, resolution, x0, y0, x1, y1):
+def segment_is_free(occupied: np.ndarray, centre_x: float, centre_y: float, resolution: float, x0: float, y0: float, x1: float,
+                    y1: float) -> bool:
     """Exact test of a world-space segment against occupied cell squares (touching counts as a hit)."""
     height, width = occupied.shape
     # cell units with integer cell centres; a cell (r, c) covers [c - 1/2, c + 1/2] x [r - 1/2, r + 1/2]
@@ -931,19 +948,20 @@ class PlanCache:
     Bounded LRU; the TUI keeps one per session so re-generating a scenario does not re-plan what it has.
     """
 
-    def __init__(self, max_entries: int = 4096):
+    def __init__(self, max_entries: int = 4096) -> None:
         self.max_entries = max_entries
-        self._entries: OrderedDict = OrderedDict()
+        # a planner, a path (np.ndarray) or a VelocityField, by a key whose fourth part names the kind
+        self._entries: OrderedDict[CacheKey, object] = OrderedDict()
         self._lock = threading.Lock()
         self.hits = 0
         self.misses = 0
 
     @staticmethod
-    def key(world_name: str, resolution: float, inflation: float, kind: str, *points) -> tuple:
+    def key(world_name: str, resolution: float, inflation: float, kind: str, *points: Sequence[float]) -> CacheKey:
         rounded = tuple(round(float(v), 2) + 0.0 for p in points for v in p)
         return (str(world_name), round(float(resolution), 6), round(float(inflation), 6), kind, rounded)
 
-    def get(self, key):
+    def get(self, key: CacheKey) -> object | None:
         with self._lock:
             if key in self._entries:
                 self._entries.move_to_end(key)
@@ -952,7 +970,7 @@ class PlanCache:
             self.misses += 1
             return None
 
-    def put(self, key, value) -> None:
+    def put(self, key: CacheKey, value: object) -> None:
         with self._lock:
             self._entries[key] = value
             self._entries.move_to_end(key)
@@ -962,36 +980,36 @@ class PlanCache:
     def __len__(self) -> int:
         return len(self._entries)
 
-    def planner(self, grid, landmarks: int | None = None) -> ThetaStarPlanner:
+    def planner(self, grid: OccupancyGrid, landmarks: int | None = None) -> ThetaStarPlanner:
         """One planner per (world, resolution, inflation): its landmark maps cost seconds on big grids."""
         key = (str(getattr(grid, "world_name", "")), round(float(grid.resolution), 6),
                round(float(getattr(grid, "inflation", 0.0)), 6), "planner", grid.occupied.shape)
         planner = self.get(key)
-        if planner is None or planner.grid is not grid and not np.array_equal(planner.occupied, grid.occupied):
+        if not isinstance(planner, ThetaStarPlanner) or planner.grid is not grid and not np.array_equal(planner.occupied, grid.occupied):
             planner = ThetaStarPlanner(grid, landmarks=landmarks)
             self.put(key, planner)
         return planner
 
-    def plan(self, world_name: str, planner: ThetaStarPlanner, start, goal,
+    def plan(self, world_name: str, planner: ThetaStarPlanner, start: Sequence[float], goal: Sequence[float],
              start_label: str = "start", goal_label: str = "goal") -> np.ndarray:
         """`planner.plan` through the cache (errors are not cached: they are cheap to reproduce)."""
         key = self.key(world_name, planner.resolution, getattr(planner.grid, "inflation", 0.0), "path", start, goal)
         path = self.get(key)
-        if path is None:
+        if not isinstance(path, np.ndarray):
             path = planner.plan(start, goal, start_label=start_label, goal_label=goal_label)
             path.setflags(write=False)
             self.put(key, path)
         return path
 
-    def field(self, world_name: str, planner: ThetaStarPlanner, start, exit_point,
-              start_label: str = "group", exit_label: str = "exit"):
+    def field(self, world_name: str, planner: ThetaStarPlanner, start: Sequence[float], exit_point: Sequence[float],
+              start_label: str = "group", exit_label: str = "exit") -> VelocityField:
         """Velocity field from a group centroid to an exit, planned and built once per key."""
-        from grove_tui.navigation.velocity_field import build_velocity_field
+        from grove_tui.navigation.velocity_field import VelocityField, build_velocity_field
 
         key = self.key(world_name, planner.resolution, getattr(planner.grid, "inflation", 0.0), "field",
                        start, exit_point)
         field = self.get(key)
-        if field is None:
+        if not isinstance(field, VelocityField):
             # the group's path is read off the exit's shortest-path tree, which the field is built on
             # too: one Dijkstra per exit serves the exit choice, every group's path and every field
             path = planner.path_in_tree(start, exit_point, start_label=start_label, goal_label=exit_label)

@@ -16,6 +16,8 @@ an occupied cell (the property tests integrate it from sampled cells of every sh
 from __future__ import annotations
 
 import math
+import os
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -26,7 +28,7 @@ from scipy.spatial import cKDTree
 from grove_tui.errors import FieldFileError
 from grove_tui.files import npz_bytes, write_bytes_atomic
 from grove_tui.limits import NPZ_READ_ERRORS, InputLimitError, check_npz
-from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION
+from grove_tui.navigation.grid import MAX_RESOLUTION, MIN_RESOLUTION, OccupancyGrid
 from grove_tui.limits import MAX_PADDED_COORDINATE as MAX_COORDINATE
 from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner, line_of_sight
 
@@ -60,8 +62,8 @@ class VelocityField:
     def reachable(self) -> np.ndarray:
         return np.any(self.vectors != 0.0, axis=2)
 
-    def save(self, path) -> Path:
-        arrays = {
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        arrays: dict[str, np.ndarray | np.generic] = {
             "origin": np.asarray(self.origin, dtype=np.float64),
             "resolution": np.float64(self.resolution),
             "vectors": self.vectors.astype(np.float32),
@@ -71,7 +73,7 @@ class VelocityField:
         return write_bytes_atomic(path, npz_bytes(arrays))
 
     @classmethod
-    def load(cls, path) -> VelocityField:
+    def load(cls, path: str | os.PathLike[str]) -> VelocityField:
         """Read a field saved by `save`. The unpacked size is checked from the zip headers first (a
         3 MB zip bomb would otherwise unpack to gigabytes), then every value is checked."""
         try:
@@ -106,7 +108,7 @@ class VelocityField:
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _usable(vectors, r, c):
+def _usable(vectors: np.ndarray, r: int, c: int) -> bool:
     height, width = vectors.shape[0], vectors.shape[1]
     if r < 0 or r >= height or c < 0 or c >= width:
         return False
@@ -114,7 +116,8 @@ def _usable(vectors, r, c):
 
 
 @numba.njit(cache=True, nogil=True)
-def _keep_off_walls(usable_e, usable_w, usable_n, usable_s, usable_ne, usable_nw, usable_se, usable_sw, vx, vy):
+def _keep_off_walls(usable_e: bool, usable_w: bool, usable_n: bool, usable_s: bool, usable_ne: bool, usable_nw: bool,
+                    usable_se: bool, usable_sw: bool, vx: float, vy: float) -> tuple[float, float]:
     """Drop velocity components that point into blocked neighbouring cells."""
     if not usable_e and vx > 0.0:
         vx = 0.0
@@ -135,14 +138,14 @@ def _keep_off_walls(usable_e, usable_w, usable_n, usable_s, usable_ne, usable_nw
 
 
 @numba.njit(cache=True, nogil=True, inline="always")
-def _clamp_at(vectors, r, c, vx, vy):
+def _clamp_at(vectors: np.ndarray, r: int, c: int, vx: float, vy: float) -> tuple[float, float]:
     return _keep_off_walls(_usable(vectors, r, c + 1), _usable(vectors, r, c - 1), _usable(vectors, r + 1, c),
                            _usable(vectors, r - 1, c), _usable(vectors, r + 1, c + 1), _usable(vectors, r + 1, c - 1),
                            _usable(vectors, r - 1, c + 1), _usable(vectors, r - 1, c - 1), vx, vy)
 
 
 @numba.njit(cache=True, nogil=True)
-def sample_field(vectors, origin_x, origin_y, resolution, x, y):
+def sample_field(vectors: np.ndarray, origin_x: float, origin_y: float, resolution: float, x: float, y: float) -> tuple[float, float]:
     """Direction of the field at world point (x, y): a unit vector, or (0, 0) far from any usable cell.
 
     Bilinear over the usable cells among the four nearest cell centres, then stripped of components
@@ -213,8 +216,10 @@ def sample_field(vectors, origin_x, origin_y, resolution, x, y):
 
 
 @numba.njit(cache=True, nogil=True)
-def _blend_with_path(occupied, clearance, sight_rows, sight_cols, parent, exit_cx, exit_cy, samples, nearest,
-                     nearest_distance, capture_cells, lookahead_samples, fade_lo, fade_hi, vectors):
+def _blend_with_path(occupied: np.ndarray, clearance: np.ndarray, sight_rows: np.ndarray, sight_cols: np.ndarray,
+                     parent: np.ndarray, exit_cx: float, exit_cy: float, samples: np.ndarray, nearest: np.ndarray,
+                     nearest_distance: np.ndarray, capture_cells: float, lookahead_samples: int, fade_lo: float,
+                     fade_hi: float, vectors: np.ndarray) -> None:
     """Fill `vectors` for every reachable cell: path pursuit blended with the geodesic direction."""
     height, width = occupied.shape
     last = samples.shape[0] - 1
@@ -308,7 +313,7 @@ def _resample(points_cells: np.ndarray, spacing: float) -> np.ndarray:
     return np.asarray(samples, dtype=np.float64)
 
 
-def build_velocity_field(grid, path, exit_point, exit_label: str = "exit",
+def build_velocity_field(grid: OccupancyGrid, path: np.ndarray, exit_point: Sequence[float], exit_label: str = "exit",
                          planner: ThetaStarPlanner | None = None) -> VelocityField:
     """Field over `grid` following `path` (a planned (K, 2) world path ending at the exit) to `exit_point`.
 

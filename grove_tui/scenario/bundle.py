@@ -17,6 +17,8 @@ from collections.abc import Callable, Mapping
 from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, Protocol
 
+from grove_tui.bt.format.document import TreeDocument, TreeFiles
+from grove_tui.bt.format.xml import read_tree, write_tree
 from grove_tui.files import (absolute_path, atomic_directory, link_or_copy, protect_folders, relative_file,
                              write_files_atomic)
 from grove_tui.errors import BundleError, GroveError
@@ -67,7 +69,10 @@ class BundleContents(Protocol):
     def scenario(self) -> Scenario: ...
 
     @property
-    def trees(self) -> Mapping[str, str]: ...  # bundle-relative path ("trees/agent_1.xml") -> BT XML
+    def trees(self) -> Mapping[str, TreeDocument]: ...  # bundle-relative path ("trees/agent_1.xml") -> tree
+
+    @property
+    def files(self) -> Mapping[str, str]: ...  # other text files, written verbatim: relative path -> text
 
     @property
     def fields(self) -> Mapping[str, VelocityField]: ...
@@ -79,11 +84,17 @@ class BundleContents(Protocol):
     def report(self) -> Mapping[str, Any]: ...  # generation.json: JSON, written as it is
 
 
+def tree_texts(trees: Mapping[str, TreeDocument]) -> dict[str, str]:
+    """The trees as the files a bundle holds: relative path -> BT.CPP v4 XML (the codec's one writer)."""
+    return {rel: write_tree(document) for rel, document in trees.items()}
+
+
 def _member_files(result: BundleContents) -> list[tuple[PurePosixPath, str]]:
-    """The trees (and any other text files) of a GenerationResult, each checked to be a plain relative
-    path that names none of the bundle's fixed files."""
+    """The trees (written as XML here, where their bytes are) and any other text files of a
+    GenerationResult, each checked to be a plain relative path that names none of the bundle's fixed files."""
+    texts = {**result.files, **tree_texts(result.trees)}
     checked = []
-    for rel, text in sorted(result.trees.items()):
+    for rel, text in sorted(texts.items()):
         try:
             path = relative_file(rel)
         except GroveError as exc:
@@ -127,17 +138,17 @@ def write_bundle_files(files: Mapping[str, bytes], out_dir: str | Path, overwrit
 
 
 def derive_bundle(source: str | Path, out_dir: str | os.PathLike[str], scenario: Scenario, *,
-                  keep: Callable[[PurePosixPath], bool], files: Mapping[str, str] | None = None,
+                  keep: Callable[[PurePosixPath], bool], trees: Mapping[str, TreeDocument] | None = None,
                   write: Callable[[Path], None] | None = None, overwrite: bool = False) -> Path:
     """Write a bundle made from another one, with `write_bundle`'s guarantees (atomic, guarded).
 
     The source's regular files (never a link) whose relative path `keep` accepts are hard-linked (or
-    copied); then `scenario` becomes scenario.yaml, `files` (relative path -> text) are written over
+    copied); then `scenario` becomes scenario.yaml, `trees` (relative path -> document) are written over
     them, and `write(stage)` writes the rest (a run's files). How an evaluation baseline rewrites
     GROVE's trees, and how a Gym episode becomes a bundle.
     """
     root = Path(source)
-    members = [(relative_file(rel), text) for rel, text in sorted((files or {}).items())]
+    members = [(relative_file(rel), text) for rel, text in sorted(tree_texts(trees or {}).items())]
     # Never link what is written next: writing into a hard link would change the source bundle too.
     written = {SCENARIO_FILE, *RUN_FILES, *(str(rel) for rel, _text in members)}
     target = absolute_path(out_dir)
@@ -233,14 +244,24 @@ def load_grid(bundle_dir: str | Path) -> OccupancyGrid:
         raise BundleError(str(exc)) from None
 
 
-def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, dict[str, str], dict[str, VelocityField], OccupancyGrid]:
+def load_trees(bundle_dir: str | Path, scenario: Scenario) -> TreeFiles:
+    """The agents' trees of a bundle by relative path, each file read (bounded, inside the bundle) and parsed
+    once, here: BundleError for a file that is missing or too large, BTError (file and line) for one that
+    is not a behavior tree."""
+    root = Path(bundle_dir)
+    trees: TreeFiles = {}
+    for agent in scenario.agents:
+        if agent.tree not in trees:
+            text = read_bundle_text(root, agent.tree, f"agent {agent.id}'s tree")
+            trees[agent.tree] = read_tree(text, str(root / agent.tree))
+    return trees
+
+
+def load_bundle(bundle_dir: str | Path) -> tuple[Scenario, TreeFiles, dict[str, VelocityField], OccupancyGrid]:
     """(Scenario, trees by relative path, fields by id, grid) of a bundle directory."""
     root = Path(bundle_dir)
     scenario = load_scenario(root)
-    trees: dict[str, str] = {}
-    for agent in scenario.agents:
-        if agent.tree not in trees:
-            trees[agent.tree] = read_bundle_text(root, agent.tree, f"agent {agent.id}'s tree")
+    trees = load_trees(root, scenario)
     fields = {field_id: load_field(root, field_id, rel) for field_id, rel in scenario.fields.items()}
     return scenario, trees, fields, load_grid(root)
 

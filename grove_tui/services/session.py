@@ -61,6 +61,7 @@ if TYPE_CHECKING:
     from grove_tui.analysis.outcomes import OutcomeChecker
     from grove_tui.analysis.rimea import RimeaResult
     from grove_tui.analysis.understanding import ReadingScore, ScenarioScore, UnderstandingCase
+    from grove_tui.bt.format.document import TreeDocument, TreeFiles
     from grove_tui.bt.format.manifest import NodeSpec
     from grove_tui.bt.format.xml import BTProblem
     from grove_tui.generation.pipeline import GenerationPipeline, GenerationResult
@@ -1154,7 +1155,7 @@ class GroveSession:
 
     # bundles derived from bundles ----------------------------------------------------------------------------
     def write_variant(self, base_bundle: str | Path, target: str | Path, scenario: Scenario,
-                      trees: Mapping[str, str]) -> Path:
+                      trees: Mapping[str, TreeDocument]) -> Path:
         """A rewrite of a bundle's scenario and trees (an evaluation baseline) as a bundle at `target`: the
         base's grid and report (and its fields, when the rewrite keeps any), the new trees and scenario."""
         from grove_tui.scenario.bundle import GRID_FILE, REPORT_FILE, derive_bundle
@@ -1162,7 +1163,7 @@ class GroveSession:
         def keep(rel: PurePosixPath) -> bool:
             return str(rel) in (GRID_FILE, REPORT_FILE) or (bool(scenario.fields) and rel.parts[0] == "fields")
 
-        derive_bundle(base_bundle, target, scenario, keep=keep, files=trees)
+        derive_bundle(base_bundle, target, scenario, keep=keep, trees=trees)
         return Path(target)
 
     def record_episode(self, source: str | Path, out_dir: str | os.PathLike[str], scenario: Scenario,
@@ -1286,7 +1287,6 @@ class GroveSession:
             METHODS,
             CaseResult,
             baseline_variant,
-            read_trees,
             score_scenario,
             write_results,
         )
@@ -1301,13 +1301,13 @@ class GroveSession:
         results: list[CaseResult] = []
         for index, case in enumerate(cases, start=1):
             world = self.load_world(case.world)
-            generated: dict[str, tuple[Any, dict[str, str], Path]] = {}
+            generated: dict[str, tuple[Any, TreeFiles, Path]] = {}
 
-            def generate_method(method: str) -> tuple[Any, dict[str, str], Path]:
+            def generate_method(method: str) -> tuple[Any, TreeFiles, Path]:
                 preset = case.preset if method == "grove" else "vanilla"
                 made = self.generate(ScenarioRequest(case.world, preset, case.prompt, case.seed),
                                      out / "bundles" / case.id / method)
-                return made.scenario, read_trees(made.bundle_dir, made.scenario), made.bundle_dir
+                return made.scenario, made.result.trees, made.bundle_dir  # the documents it wrote, not read back
 
             for method in chosen:
                 started = time.perf_counter()
@@ -1395,8 +1395,7 @@ class GroveSession:
             try:
                 made = self.generate(ScenarioRequest(case.world, case.preset, case.prompt, case.seed),
                                      Path(out_dir) / "bundles" / case.id)
-                trees = {a.tree: (made.bundle_dir / a.tree).read_text(encoding="utf-8") for a in made.scenario.agents}
-                score = score_scenario(case, made.world, made.scenario, trees, action_names)
+                score = score_scenario(case, made.world, made.scenario, made.result.trees, action_names)
             except GroveError as exc:
                 if exc.exit_code in (EXIT_MODEL_ERROR, EXIT_CANCELLED):
                     raise  # a broken model or a cancellation stops the run, not one case

@@ -484,7 +484,9 @@ class Simulation:
             pairs = cKDTree(p).query_pairs(reach, output_type="ndarray")
             if len(pairs):
                 i, j = rows[pairs[:, 0]], rows[pairs[:, 1]]
-                gap = np.hypot(pos[i, 0] - pos[j, 0], pos[i, 1] - pos[j, 1]) - radius[i] - radius[j]
+                # bodies touch at the shoulders (SFMParams.body_fraction of the radius), as in the forces
+                body = crowd.params.body_fraction
+                gap = np.hypot(pos[i, 0] - pos[j, 0], pos[i, 1] - pos[j, 1]) - body * (radius[i] + radius[j])
                 now = set(zip(i[gap < 0.0].tolist(), j[gap < 0.0].tolist()))
                 near = set(zip(i[gap < CONTACT_RELEASE].tolist(), j[gap < CONTACT_RELEASE].tolist()))
             else:

@@ -1,6 +1,6 @@
 """GROVE-TUI's Textual app: setup -> generation -> inspect -> simulation -> export.
 
-`App.__init__` does no I/O: the engine facade (`backend`) and the settings come in as arguments so
+`App.__init__` does no I/O: the engine facade (`session`) and the settings come in as arguments so
 tests inject fakes, and everything slow (world loading, model loading, generation, simulation)
 runs in thread workers started after the first screen is on.
 """
@@ -40,7 +40,7 @@ class GroveApp(App[int]):
 
     def __init__(
         self,
-        backend: Any,
+        session: GroveSession,
         settings: GroveSettings | None = None,
         *,
         world: str | None = None,
@@ -52,7 +52,7 @@ class GroveApp(App[int]):
         remember_choices: bool = False,
     ) -> None:
         super().__init__()
-        self.backend = backend
+        self.session = session
         self.settings = settings if settings is not None else GroveSettings()
         # The command line's choice, else the last generation's (data dir), else the config file's.
         last = dict(last_choices or {})
@@ -94,7 +94,7 @@ class GroveApp(App[int]):
 
     def _load_bundle(self, bundle_dir: Path) -> None:
         try:
-            generated = self.backend.open_bundle(bundle_dir)
+            generated = self.session.open_bundle(bundle_dir)
         except Exception as exc:  # a broken bundle must say why, not close the app
             self.post_message(RunOpenFailed(bundle_dir, f"{type(exc).__name__}: {exc}"))
             return
@@ -171,7 +171,7 @@ class GroveApp(App[int]):
         # Closing stops the model processes; it may wait for one that is busy. Quit must take under a
         # second in every state (issue 31), so it waits that long at most: what is still running then
         # is ended by exit_now (run_app), which terminates the app's child processes.
-        close = getattr(self.backend, "close", None)
+        close = getattr(self.session, "close", None)
         if callable(close):
             closer = threading.Thread(target=close, name="grove-close", daemon=True)
             closer.start()
@@ -180,10 +180,10 @@ class GroveApp(App[int]):
 
 def run_app(model: str | None = None, roi_model: str | None = None, bt_model: str | None = None,
             world: str | None = None, preset: str | None = None, open_bundle: Path | None = None,
-            backend: GroveSession | None = None) -> int:
+            session: GroveSession | None = None) -> int:
     """Entry point of the `grove` command with no subcommand; returns the exit code.
 
-    `backend` replaces the one built from the model options (the terminal tests of the UI pass one
+    `session` replaces the one built from the model options (the terminal tests of the UI pass one
     with a scripted model, tests/helpers/fake_grove.py).
     """
     from grove_tui.errors import SettingsError, print_error
@@ -192,9 +192,9 @@ def run_app(model: str | None = None, roi_model: str | None = None, bt_model: st
         settings = load_settings()
     except SettingsError as exc:
         return print_error(exc)
-    if backend is None:
-        backend = GroveSession.for_app(model=model, roi_model=roi_model, bt_model=bt_model)
-    app = GroveApp(backend, settings, world=world, preset=preset,
+    if session is None:
+        session = GroveSession.for_app(model=model, roi_model=roi_model, bt_model=bt_model)
+    app = GroveApp(session, settings, world=world, preset=preset,
                    history=load_history(settings.generation.history_size), persist_history=True,
                    open_bundle=open_bundle, last_choices=load_last_choices(), remember_choices=True)
     # A loop of our own, never closed: asyncio.run's teardown waits for the default executor, where the

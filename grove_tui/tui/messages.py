@@ -4,9 +4,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from textual.message import Message
+
+if TYPE_CHECKING:
+    from grove_tui.scenario.report import GroundingReport
+    from grove_tui.services.exporting import ExportedFile
+    from grove_tui.services.session import GeneratedScenario, ModelStatus, PresetInfo
+    from grove_tui.tui.screens.generation import GenerationRequest
 
 
 @dataclass
@@ -18,7 +24,7 @@ class WorldsListed(Message):
 @dataclass
 class WorldLoaded(Message):
     name: str
-    world: Any
+    world: Any  # Any: a world.World (the app reaches the world only through services, by contract)
 
 
 @dataclass
@@ -29,15 +35,15 @@ class WorldFailed(Message):
 
 @dataclass
 class PresetsListed(Message):
-    presets: list[Any]  # backend.PresetInfo
+    presets: list[PresetInfo]
 
 
 @dataclass
 class ModelsChanged(Message):
-    statuses: list[Any]  # backend.ModelStatus
+    statuses: list[ModelStatus]
     loading: bool = False
     embedder: str = ""  # the node retriever's embedding model: "", "loading", "ready" or its error
-    warm_up: str = ""  # the backend's warm-up status line ("loading the models…"), "" when none runs
+    warm_up: str = ""  # the session's warm-up status line ("loading the models…"), "" when none runs
     expected_seconds: float = 0.0  # a running step: how long it took last time (the line counts down from it)
 
 
@@ -90,7 +96,7 @@ class AttemptStarted(Message):
 
 @dataclass
 class GenerationSucceeded(Message):
-    generated: Any  # backend.GeneratedScenario
+    generated: GeneratedScenario
     note: str = ""  # what happened to count edits carried over from the previous scenario
 
 
@@ -110,7 +116,7 @@ class GenerationStopped(Message):
 
 @dataclass
 class SimulationReady(Message):
-    simulation: Any
+    simulation: Any  # Any: a simulation.Simulation (the app reaches it only through services, by contract)
 
 
 @dataclass
@@ -120,7 +126,7 @@ class SimulationFailed(Message):
 
 @dataclass
 class ExportFinished(Message):
-    files: list[Any]  # backend.ExportedFile
+    files: list[ExportedFile]
     out_dir: Path
 
 
@@ -131,7 +137,7 @@ class ExportFailed(Message):
 
 @dataclass
 class RunOpened(Message):
-    generated: Any  # backend.GeneratedScenario loaded from a saved bundle
+    generated: GeneratedScenario  # loaded from a saved bundle
 
 
 @dataclass
@@ -165,7 +171,7 @@ class ExportProgress(Message):
 class ReadingChecked(Message):
     """The sentence was read before generating: the questions about what the reader is unsure of."""
 
-    request: Any  # screens.generation.GenerationRequest
+    request: GenerationRequest
     questions: list[str]
 
 
@@ -173,6 +179,6 @@ class ReadingChecked(Message):
 class GroundingChecked(Message):
     """The sentence's claims checked on the run so far (analysis/outcomes.py), or why they could not be."""
 
-    report: Any  # scenario.report.GroundingReport, None on error
+    report: GroundingReport | None  # None on error
     error: str = ""
     final: bool = False  # checked on the whole run, once it ended

@@ -15,7 +15,6 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 from collections.abc import Sequence
-from typing import Any
 
 import numpy as np
 import shapely
@@ -86,7 +85,7 @@ class _Problems:
 # Field readers: each returns None (and records a problem) when the value is unusable.
 
 
-def _is_number(value: Any) -> bool:
+def _is_number(value: object) -> bool:
     """A finite number within +-MAX_COORDINATE (huge ints would overflow float conversion)."""
     if not isinstance(value, (int, float)) or isinstance(value, bool):
         return False
@@ -95,7 +94,7 @@ def _is_number(value: Any) -> bool:
     return math.isfinite(value) and -MAX_COORDINATE <= value <= MAX_COORDINATE
 
 
-def _short_repr(value: Any, limit: int = 60) -> str:
+def _short_repr(value: object, limit: int = 60) -> str:
     """repr() cut to `limit` characters: a message quoting a 5,000-digit number helps nobody
     (and repr of such an int raises ValueError)."""
     try:
@@ -158,7 +157,7 @@ def _read_str_list(data: dict, key: str, path: YamlPath, problems: _Problems) ->
     return tuple(items)
 
 
-def _read_point(value: Any, path: YamlPath, problems: _Problems, what: str) -> Point2 | None:
+def _read_point(value: object, path: YamlPath, problems: _Problems, what: str) -> Point2 | None:
     if (not isinstance(value, list) or len(value) != 2 or not all(_is_number(v) for v in value)):
         problems.add(path, f"{what} must be a point [x, y] of two numbers within +-{MAX_COORDINATE:g} m, "
                            f"got {_short_repr(value)}")
@@ -293,7 +292,7 @@ class _DraftObstacle:
         return Polygon(self.footprint) if self.footprint else None
 
 
-def _read_door(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -> _DraftDoor | None:
+def _read_door(data: object, path: YamlPath, zone_name: str, problems: _Problems) -> _DraftDoor | None:
     if not isinstance(data, dict):
         problems.add(path, f"a door must be a mapping with name, position, width, leads_to; got {_short_repr(data)}")
         return None
@@ -313,7 +312,7 @@ def _read_door(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -
                       _read_str_list(data, "aliases", path, problems), _read_str_list(data, "tags", path, problems))
 
 
-def _read_entity(data: Any, path: YamlPath, zone_name: str, problems: _Problems) -> _DraftEntity | None:
+def _read_entity(data: object, path: YamlPath, zone_name: str, problems: _Problems) -> _DraftEntity | None:
     if not isinstance(data, dict):
         problems.add(path, f"an entity must be a mapping with name, type, footprint, interaction_point; got {_short_repr(data)}")
         return None
@@ -332,7 +331,7 @@ def _read_entity(data: Any, path: YamlPath, zone_name: str, problems: _Problems)
                         _read_str_list(data, "aliases", path, problems))
 
 
-def _read_zone(data: Any, path: YamlPath, problems: _Problems) -> _DraftZone | None:
+def _read_zone(data: object, path: YamlPath, problems: _Problems) -> _DraftZone | None:
     if not isinstance(data, dict):
         problems.add(path, f"a zone must be a mapping with name, type, boundary; got {_short_repr(data)}")
         return None
@@ -354,7 +353,7 @@ def _read_zone(data: Any, path: YamlPath, problems: _Problems) -> _DraftZone | N
     return zone
 
 
-def _read_obstacle(data: Any, path: YamlPath, problems: _Problems) -> _DraftObstacle | None:
+def _read_obstacle(data: object, path: YamlPath, problems: _Problems) -> _DraftObstacle | None:
     if not isinstance(data, dict):
         problems.add(path, f"an obstacle must be a mapping with name and footprint; got {_short_repr(data)}")
         return None

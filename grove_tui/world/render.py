@@ -17,7 +17,7 @@ import shapely
 from rich.table import Table
 from rich.text import Text
 
-from grove_tui.world.model import World
+from grove_tui.world.model import World, Zone
 
 CHAR_ASPECT = 2.0  # terminal cell height / width
 
@@ -223,7 +223,7 @@ class WorldCanvas:
                 self.chars[row, centre + offset] = character
                 self.kinds[row, centre + offset] = LABEL
 
-    def _free_run(self, zone, row: int, col: int) -> tuple[int, int]:
+    def _free_run(self, zone: Zone, row: int, col: int) -> tuple[int, int]:
         """Columns [start, stop) of empty floor inside the zone on this row, around col."""
         p = self.projection
         polygon = zone.polygon

@@ -33,6 +33,15 @@ def test_a_one_metre_twenty_bottleneck_passes_a_laboratory_flow():
     assert not unfinished and low <= flow / 1.2 <= high, flow
 
 
+def test_a_zero_point_eight_metre_bottleneck_is_not_narrower_than_its_width():
+    """The narrowest width asked: people reaching its mouth abreast used to block each other at the
+    jambs (1.30 per m s, under the band); laboratory crowds pass it at least as fast per metre as
+    wider ones (Kretz et al. 2006)."""
+    flow, unfinished = empirical.bottleneck_flow(0.8, SFMParams.named("grove"))
+    low, high = empirical.published()["bottleneck"]["band"]
+    assert not unfinished and low + 0.1 <= flow / 0.8 <= high, flow
+
+
 def test_linearity_is_a_straight_line_fit():
     slope, intercept, r2 = empirical.linear_fit([0.8, 1.6, 2.4], [1.6, 3.2, 4.8])
     assert (slope, intercept, r2) == pytest.approx((2.0, 0.0, 1.0), abs=1e-9)

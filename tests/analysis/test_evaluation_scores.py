@@ -19,14 +19,17 @@ from grove_tui.analysis.evaluation import (
     stop_and_go_share,
     validity,
 )
+from grove_tui.bt.format.xml import read_tree, write_tree
 from grove_tui.navigation.grid import build_grid
+from grove_tui.scenario.bundle import load_trees
 from grove_tui.analysis.metrics import Trajectories
 from grove_tui.scenario.model import Scenario
 from grove_tui.world import load_world
 
 
 def _trees(bundle, scenario):
-    return {a.id: (bundle / a.tree).read_text() for a in scenario.agents}
+    trees = load_trees(bundle, scenario)
+    return {a.id: trees[a.tree] for a in scenario.agents}
 
 
 def test_grounding_counts_targets_in_named_zones_and_entities(bundle, hospital):
@@ -57,7 +60,8 @@ def test_behavior_match_and_validity_catch_invented_nodes_and_places(bundle, hos
     clean = validity(hospital, trees)
     assert clean == {"valid_trees": 1.0, "hallucinated_node_types": 0.0, "hallucinated_places": 0.0}
     broken = dict(trees)
-    broken[1] = trees[1].replace("<Wait ", "<Teleport ").replace('target="pharmacy_counter"', 'target="helipad"')
+    broken[1] = read_tree(write_tree(trees[1]).replace("<Wait ", "<Teleport ")
+                          .replace('target="pharmacy_counter"', 'target="helipad"'))
     dirty = validity(hospital, broken)
     assert dirty["valid_trees"] == pytest.approx(4 / 5)
     assert dirty["hallucinated_node_types"] == 1.0
@@ -115,6 +119,7 @@ def test_roaming_agents_are_grounded_by_the_zone_they_roam(hospital):
     agent = AgentSpec(id=1, group=-1, start=(30.0, 5.0), goals=(), zone="entrance_lobby", tree="trees/agent_1.xml")
     tree = ('<root BTCPP_format="4" main_tree_to_execute="a"><BehaviorTree ID="a">'
             '<Wander zone="cafeteria" duration="30"/></BehaviorTree></root>')
+    tree = read_tree(tree)
     assert grounding(hospital, [agent], Expectation(targets=("cafeteria",)), {1: tree})["target_grounding"] == 1.0
     assert grounding(hospital, [agent], Expectation(targets=("food_counter",)), {1: tree})["target_grounding"] == 1.0
     assert grounding(hospital, [agent], Expectation(targets=("pharmacy",)), {1: tree})["target_grounding"] == 0.0
@@ -135,7 +140,7 @@ def test_a_failed_generation_scores_zero_not_missing():
 def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
     """GROVE's planned patient (agent 2) reaches the pharmacy counter through the door; without waypoints
     and without run-time planning (HuNavSim's straight goals) the wall between lobby and pharmacy stops them."""
-    from grove_tui.analysis.evaluation import read_trees, without_planner
+    from grove_tui.analysis.evaluation import without_planner
     from grove_tui.analysis.metrics import Trajectories
     from grove_tui.services.session import GroveSession
 
@@ -153,7 +158,7 @@ def test_the_no_planner_baseline_walks_straight_into_walls(bundle, hospital):
         return float(np.hypot(x - counter[0], y - counter[1]))
 
     grove_traj = simulate_for_scores(bundle, 40.0)
-    straight_scenario, straight_trees = without_planner(scenario, read_trees(bundle, scenario))
+    straight_scenario, straight_trees = without_planner(scenario, load_trees(bundle, scenario))
     straight = GroveSession().write_variant(bundle, bundle.parent / "straight", straight_scenario, straight_trees)
     straight_traj = simulate_for_scores(straight, 40.0, runtime_planning=False)
     assert final_distance(grove_traj) < 2.5

@@ -25,6 +25,7 @@ from grove_tui.analysis.understanding import (
     summarize_reading,
 )
 from grove_tui.bt.format.manifest import NODES
+from grove_tui.bt.format.xml import read_tree
 from grove_tui.world import list_worlds, load_world
 
 ROOT = REPO
@@ -166,7 +167,7 @@ def test_scenario_helpers():
     moving = ('<root BTCPP_format="4"><BehaviorTree ID="a"><Sequence><IsRobotVisible/>'
               '<Action ID="GoTo" target="kitchen"/></Sequence></BehaviorTree></root>')
     assert "IsRobotVisible" in NODES and NODES["IsRobotVisible"].category == "condition"
-    assert idle_tree(idle, ACTIONS) and not idle_tree(moving, ACTIONS)
+    assert idle_tree(read_tree(idle), ACTIONS) and not idle_tree(read_tree(moving), ACTIONS)
     cases = load_cases(CASES)
     sample = sample_cases(cases, 20)
     assert len(sample) == 20 and len({c.world for c in sample}) == 4 and not any(c.unknown_places for c in sample)
@@ -179,11 +180,12 @@ def test_scenario_checks_on_a_hand_built_bundle(tmp_path):
     from helpers.handmade import build_hospital_bundle
 
     from grove_tui.analysis.understanding import score_scenario
+    from grove_tui.scenario.bundle import load_trees
     from grove_tui.scenario.model import Scenario
 
     bundle = build_hospital_bundle(tmp_path / "bundle")
     scenario = Scenario.load(bundle / "scenario.yaml")
-    trees = {a.tree: (bundle / a.tree).read_text(encoding="utf-8") for a in scenario.agents}
+    trees = load_trees(bundle, scenario)
     world = load_world("hospital")
     # Five people from the lobby: one surprised by the robot, two queueing at the pharmacy, two talking.
     right = _case([
@@ -201,8 +203,8 @@ def test_scenario_checks_on_a_hand_built_bundle(tmp_path):
     assert {name for name, ok in score.checks.items() if ok is False} == {
         "agent_count", "destination_zones", "behavior_types"}
     idle = dict(trees)
-    idle[scenario.agents[0].tree] = ('<root BTCPP_format="4"><BehaviorTree ID="a"><Sequence><IsRobotVisible/>'
-                                     '</Sequence></BehaviorTree></root>')
+    idle[scenario.agents[0].tree] = read_tree('<root BTCPP_format="4"><BehaviorTree ID="a"><Sequence>'
+                                              '<IsRobotVisible/></Sequence></BehaviorTree></root>')
     assert score_scenario(right, world, scenario, idle, ACTIONS).idle_agents == 1
 
 

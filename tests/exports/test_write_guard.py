@@ -151,7 +151,11 @@ def test_a_bundle_file_named_like_the_bundles_own_is_refused(tmp_path):
     scenario, trees, fields, grid = load_bundle(bundle)
     for name in ("scenario.yaml", "grid.npz", "metrics.json", "../outside.yaml"):
         with pytest.raises(BundleError):
-            write_bundle(GenerationResult(scenario, {**trees, name: "zones: []\n"}, fields, grid, {}), tmp_path / "o")
+            write_bundle(GenerationResult(scenario, trees, fields, grid, {}, files={name: "zones: []\n"}),
+                         tmp_path / "o")
+        with pytest.raises(BundleError):  # a tree under such a name too
+            write_bundle(GenerationResult(scenario, {**trees, name: trees[scenario.agents[0].tree]}, fields, grid, {}),
+                         tmp_path / "o")
     assert not (tmp_path / "o").exists() and not (tmp_path / "outside.yaml").exists()
     # No export may take a bundle's own name inside it either.
     before = listing(bundle)

@@ -12,6 +12,7 @@ import pytest
 from lxml import etree
 from shapely.geometry import LineString, MultiLineString
 
+from grove_tui.bt.format.document import TreeDocument
 from grove_tui.bt.format.xml import check_tree_file
 from grove_tui.scenario.bundle import load_bundle, load_report, write_bundle
 from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted, TokenStreamed
@@ -100,11 +101,10 @@ def test_simulation_never_crosses_a_wall(generated, key):
             assert not LineString(points).intersects(walls), f"agent {agent_id} crossed a wall"
 
 
-def _targets(xml: str) -> list[tuple[str, str, float, float]]:
-    root = etree.fromstring(xml.encode())
+def _targets(document: TreeDocument) -> list[tuple[str, str, float, float]]:
     found = []
-    for el in root.iter():
-        if isinstance(el.tag, str) and el.get("x") is not None and el.get("y") is not None:
+    for el in document.nodes():
+        if el.get("x") is not None and el.get("y") is not None:
             name = el.get("target") or el.get("service_point") or el.get("exit") or ""
             found.append((el.tag, name, float(el.get("x")), float(el.get("y"))))
     return found

@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from grove_tui.bt.format.xml import parse_tree_text
+from grove_tui.bt.format.xml import validate_document, write_tree
 from grove_tui.scenario.bundle import write_bundle
 from grove_tui.generation.pipeline import GenerationPipeline, StageFinished, StageStarted
 from grove_tui.navigation.theta_star import ThetaStarPlanner
@@ -108,16 +108,17 @@ def test_every_tree_validates_and_has_planned_waypoints(planned):
     assert len(edited.trees) == len(edited.scenario.agents) == 9
     planner = ThetaStarPlanner(edited.grid)
     for agent in edited.scenario.agents:
-        xml = edited.trees[agent.tree]
-        document = parse_tree_text(xml, agent.tree)
-        assert f'ID="agent_{agent.id}"' in xml
+        document = edited.trees[agent.tree]
+        assert validate_document(document) is document
+        assert list(document.trees) == [f"agent_{agent.id}"]
         assert agent.goals == tuple(goals_from_tree(document))
         route = [agent.start, *agent.goals]
         assert all(planner.segment_is_free(a[0], a[1], b[0], b[1]) for a, b in zip(route, route[1:])), agent.id
     # lobby -> cafeteria is no straight line: the nurses' GoTo carries injected waypoints
     nurses = [a for a in edited.scenario.agents if a.label == "nurse"]
     assert len(nurses) == 2
-    assert all('waypoints=""' not in edited.trees[a.tree] and "waypoints=" in edited.trees[a.tree] for a in nurses)
+    legs = [el for a in nurses for el in edited.trees[a.tree].nodes() if "waypoints" in el.attributes]
+    assert legs and all(el.get("waypoints") for el in legs)
     assert edited.scenario.robot is not None and len(edited.scenario.robot.path) >= 2
 
 
@@ -148,8 +149,8 @@ def test_same_result_counts_and_seed_give_the_same_bundle(planned, tmp_path):
     assert first.trees == second.trees
     a, b = write_bundle(first, tmp_path / "a"), write_bundle(second, tmp_path / "b")
     assert (Path(a) / "scenario.yaml").read_text() == (Path(b) / "scenario.yaml").read_text()
-    for rel, xml in first.trees.items():
-        assert (Path(b) / rel).read_text() == xml
+    for rel, document in first.trees.items():
+        assert (Path(b) / rel).read_text() == write_tree(document)
     other = pipeline.replan(result, {0: 11, 1: 3}, seed=4)
     assert other.scenario.seed == 4
     assert [a.start for a in other.scenario.agents] != [a.start for a in first.scenario.agents]
@@ -181,7 +182,7 @@ def test_too_many_people_for_the_zone_are_refused_and_the_result_is_unchanged(cl
     result = pipeline.run("two nurses walk from the restroom to the lobby", seed=0)
     assert labels_and_counts(result) == [("nurse", 2)]
     before_report = copy.deepcopy(result.report)
-    before = (result.scenario, dict(result.trees))
+    before = (result.scenario, {rel: document.copy() for rel, document in result.trees.items()})
     # The restroom (3 x 2 m) holds a handful of people at a plausible density, not twenty.
     with pytest.raises(PromptError, match="do not fit in") as info:
         pipeline.replan(result, {0: 20})

@@ -9,7 +9,7 @@ from lxml import etree
 
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.navigation.theta_star import ThetaStarPlanner
-from grove_tui.bt.format.xml import read_tree
+from grove_tui.bt.format.xml import write_tree
 from grove_tui.generation.planning import RobotRequest, goals_from_tree, plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import GenerationError, load_preset
@@ -36,11 +36,11 @@ def test_waypoints_make_every_leg_collision_free(clinic, grid):
     post, op = plan(clinic, grid, "normal", "Five visitors walk from the lobby to the cafeteria and then the pharmacy",
                     [DraftGroup("visitors", 5, "lobby", tree)])
     for agent in op.agents:
-        xml = op.trees[agent.tree]
+        xml = write_tree(op.trees[agent.tree])
         gotos = etree.fromstring(xml.encode()).findall(".//GoTo")
         assert all(g.get("waypoints") for g in gotos)  # lobby -> cafeteria cannot be a straight line
         assert free_path(grid, [agent.start, *agent.goals])
-        assert agent.goals == tuple(goals_from_tree(read_tree(xml)))
+        assert agent.goals == tuple(goals_from_tree(op.trees[agent.tree]))
         assert clinic.zone("pharmacy").polygon.contains(__import__("shapely").Point(agent.goals[-1]))
         assert agent.zone == "pharmacy"
 
@@ -52,9 +52,9 @@ def test_emergency_builds_one_field_per_group_toward_its_exit(clinic, grid):
                     groups)
     assert set(op.fields) == {"group_1", "group_2"}
     for fid, field in op.fields.items():
-        members = [a for a in op.agents if etree.fromstring(op.trees[a.tree].encode()).find(".//FollowVelocityField").get("field") == fid]
+        members = [a for a in op.agents if etree.fromstring(write_tree(op.trees[a.tree]).encode()).find(".//FollowVelocityField").get("field") == fid]
         assert members
-        exits = {etree.fromstring(op.trees[a.tree].encode()).find(".//FollowVelocityField").get("exit") for a in members}
+        exits = {etree.fromstring(write_tree(op.trees[a.tree]).encode()).find(".//FollowVelocityField").get("exit") for a in members}
         assert len(exits) == 1 and field.exit == clinic.find(exits.pop()).position
         for a in members:
             vx, vy = field.sample(*a.start)

@@ -10,7 +10,6 @@ from __future__ import annotations
 import numpy as np
 from helpers.clinic import QUEUE, make_result
 
-from grove_tui.bt.format.xml import read_tree
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
@@ -92,7 +91,7 @@ def test_the_predicted_queue_is_where_the_simulated_people_stand(clinic, tmp_pat
     result = make_result(clinic, "queuing", QUEUE_PROMPT, [DraftGroup("patients", 6, "pharmacy", QUEUE)])
     bundle = write_bundle(result, tmp_path / "bundle")
     scenario, *_ = load_bundle(bundle)
-    formations = predict_formations(clinic, result.grid, [read_tree(text) for text in result.trees.values()])
+    formations = predict_formations(clinic, result.grid, list(result.trees.values()))
     sim = Simulation.from_scenario(scenario, bundle, world=clinic)
     sim.run(40.0)
     frame = sim.frame()

@@ -44,3 +44,19 @@ def test_nothing_to_refine_costs_no_tokens(roi_llm):
     refined, settled, prompt_tokens, completion_tokens = refine_with_model(world, load_preset("queuing"), reading,
                                                                            selection, roi_llm)
     assert refined is selection and settled is reading and prompt_tokens == completion_tokens == 0
+
+
+@pytest.mark.parametrize("world_name, prompt", [
+    ("airport", "twelve people at gate b2 evacuate through the nearest exit"),
+    ("office", "the staff in the open office leave by the closest exit when the alarm sounds"),
+    ("hospital", "everyone in the cafeteria evacuates through the nearest exit"),
+])
+def test_evacuees_unsure_of_the_exit_are_not_narrowed_to_one(world_name, prompt):
+    # The evacuation sends each person to the exit nearest to them: a model's pick of one exit would
+    # be a promise the run does not keep (the report said ✗ for people who all got out).
+    world = load_world(world_name)
+    reading = read_prompt(prompt, world)
+    evacuees = [i for i, g in enumerate(reading.groups) if g.intent == "evacuate"]
+    assert evacuees, reading
+    selection = select_rois(world, load_preset("emergency"), reading)
+    assert not [a for a in selection.ambiguous if a.group in evacuees and a.field == "destination"]

@@ -11,8 +11,13 @@ from grove_tui.navigation.theta_star import PlanningError, ThetaStarPlanner
 from grove_tui.bt.format.ports import format_point_list, parse_point_list
 from grove_tui.errors import BTError
 from grove_tui.bt.format.xml import read_tree, write_tree
-from grove_tui.generation.waypoints import inject_waypoints, plan_waypoints
+from grove_tui.generation.waypoints import plan_waypoints
 from grove_tui.world import load_world
+
+
+def inject_waypoints(xml: str, start, planner, start_label: str = "start") -> str:
+    """`plan_waypoints` on a tree written as text: read and written back by the codec."""
+    return write_tree(plan_waypoints(read_tree(xml), start, planner, start_label))
 
 
 def two_rooms() -> OccupancyGrid:

@@ -1,4 +1,4 @@
-"""Helpers of the app tests: settings, a scripted backend, a fake LLM, waits, and the walks to a screen.
+"""Helpers of the app tests: settings, a scripted session, a fake LLM, waits, and the walks to a screen.
 
 Fixtures live in tests/tui/conftest.py."""
 
@@ -31,7 +31,7 @@ def test_settings(tmp_path: Path, **overrides: Any) -> GroveSettings:
 test_settings.__test__ = False  # type: ignore[attr-defined]  # a helper, not a test
 
 
-# The engine's own pipeline events: the fake backend emits exactly what the real pipeline emits.
+# The engine's own pipeline events: the fake session emits exactly what the real pipeline emits.
 from grove_tui.generation.pipeline import StageFinished, StageStarted, TokenStreamed  # noqa: E402,F401
 
 
@@ -53,7 +53,7 @@ FIXED_SCRIPT: list[Any] = [
 ]
 
 
-class ScriptedBackend(GroveSession):
+class ScriptedSession(GroveSession):
     """Real worlds and presets; generation replays a fixed event script, then blocks, fails or returns."""
 
     def __init__(self, script: list[Any], outcome: Any = "block", block_seconds: float = 30.0, **kwargs: Any) -> None:
@@ -173,7 +173,7 @@ def lexical_retriever() -> Any:
     return LexicalRetriever()
 
 
-def fake_llm_backend(runs_dir: Path, llm: FakeLLM | None = None) -> GroveSession:
+def fake_llm_session(runs_dir: Path, llm: FakeLLM | None = None) -> GroveSession:
     model = llm or FakeLLM()
     return GroveSession.for_app(llm_factory=lambda role, info: model, retriever_factory=lexical_retriever,
                                 runs_dir=runs_dir)

@@ -58,14 +58,14 @@ def main() -> int:
         time.sleep(args.load_seconds)
         return model
 
-    class Backend(GroveSession):
+    class PacedSession(GroveSession):
         def list_worlds(self) -> list[str]:
             time.sleep(args.list_seconds)
             return super().list_worlds()
 
-    backend = Backend(llm_factory=load, retriever_factory=lexical_retriever, model_niceness=10,
+    session = PacedSession(llm_factory=load, retriever_factory=lexical_retriever, model_niceness=10,
                       remember_step_seconds=True)  # as GroveSession.for_app
-    return run_app(world=args.world, preset=args.preset, backend=backend)
+    return run_app(world=args.world, preset=args.preset, session=session)
 
 
 if __name__ == "__main__":

@@ -10,8 +10,14 @@ from lxml import etree
 from grove_tui.navigation.grid import build_grid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
-from grove_tui.generation.waypoints import inject_waypoints
+from grove_tui.bt.format.xml import read_tree, write_tree
+from grove_tui.generation.waypoints import plan_waypoints
 from grove_tui.world import load_world
+
+
+def inject_waypoints(xml: str, start, planner, start_label: str = "start") -> str:
+    """`plan_waypoints` on a tree written as text: read and written back by the codec."""
+    return write_tree(plan_waypoints(read_tree(xml), start, planner, start_label))
 
 
 def _tree(agent_id: int, body: str) -> str:

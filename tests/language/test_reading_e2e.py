@@ -11,7 +11,6 @@ from __future__ import annotations
 import json
 
 import pytest
-from lxml import etree
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTIONS
 from grove_tui.generation.pipeline import GenerationPipeline
@@ -65,8 +64,8 @@ def test_every_group_of_the_sentence_is_in_the_scenario(read_and_generated, key)
 @pytest.mark.parametrize("key", list(PROMPTS))
 def test_no_agent_has_an_idle_tree(read_and_generated, key):
     _, result, _ = read_and_generated[key]
-    for rel, xml in result.trees.items():
-        tags = {el.tag for el in etree.fromstring(xml.encode()).iter()}
+    for rel, document in result.trees.items():
+        tags = {el.tag for el in document.nodes()}
         assert tags & ROUTINE_NODES, f"{rel} has no action: {sorted(tags)}"
 
 
@@ -76,10 +75,10 @@ def test_robot_reactions_reach_behavior_trees_and_the_simulation(read_and_genera
     world, result, bundle = read_and_generated[key]
     reacting = [a for a in result.scenario.agents if a.behavior == behavior]
     assert len(reacting) == 1 and all(a.behavior == "Regular" for a in result.scenario.agents if a not in reacting)
-    xml = result.trees[reacting[0].tree]
+    document = result.trees[reacting[0].tree]
     # the reaction wraps their routine, or, when reacting is all they do, is their activity
     reactions = set(ROBOT_REACTIONS) | {node for node, _ in ROBOT_ACTIVITIES.values()}
-    assert any(el.tag in reactions for el in etree.fromstring(xml.encode()).iter())
+    assert any(el.tag in reactions for el in document.nodes())
     scenario, *_ = load_bundle(bundle)
     sim = Simulation.from_scenario(scenario, bundle, world=world)
     sim.run(5.0)  # the reaction pattern parses and ticks in the simulation

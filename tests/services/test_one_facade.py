@@ -9,6 +9,8 @@ from pathlib import Path
 import pytest
 from helpers.paths import REPO
 
+from grove_tui.bt.format.document import TreeDocument, node
+from grove_tui.bt.format.xml import write_tree
 from grove_tui.errors import GroveError
 from grove_tui.scenario.bundle import derive_bundle, is_bundle, load_scenario
 
@@ -87,9 +89,10 @@ def test_a_derived_bundle_never_writes_through_a_link_into_its_source(source, tm
     scenario = load_scenario(source)
     tree = scenario.agents[0].tree
     before = (source / tree).read_bytes()
+    document = TreeDocument.single("Other", node("Wait", duration="1"))
     out = derive_bundle(source, tmp_path / "derived", scenario, keep=lambda rel: True,
-                        files={tree: "<root/>"}, write=lambda stage: (stage / "events.jsonl").write_text(""))
-    assert (out / tree).read_text(encoding="utf-8") == "<root/>"
+                        trees={tree: document}, write=lambda stage: (stage / "events.jsonl").write_text(""))
+    assert (out / tree).read_text(encoding="utf-8") == write_tree(document)
     assert (source / tree).read_bytes() == before
     assert not (out / "trajectories.csv").exists()  # a run belongs to the bundle it ran in
     assert (out / "events.jsonl").exists() and is_bundle(out)

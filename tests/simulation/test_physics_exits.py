@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from lxml import etree
 
-from grove_tui.bt.format.xml import parse_tree_text
+from grove_tui.bt.format.xml import validate_document
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.planning import plan_operational
 from grove_tui.generation.postprocess import postprocess
@@ -55,9 +54,9 @@ def test_each_person_takes_their_nearest_exit_and_both_exits_are_used():
     assert set(exits.values()) == {"east_exit", "west_exit"}
     # one field per exit the group uses, each leading to its own door
     assert {f.exit for f in op.fields.values()} == {world.find("west_exit").position, world.find("east_exit").position}
-    documents = [parse_tree_text(op.trees[a.tree], a.tree) for a in op.agents]
+    documents = [validate_document(op.trees[a.tree]) for a in op.agents]
     for spec, document in zip(op.agents, documents):
-        node = etree.fromstring(op.trees[spec.tree].encode()).find(".//FollowVelocityField")
+        node = next(el for el in document.nodes() if el.id == "FollowVelocityField")
         assert node.get("exit") == exits[spec.id]
     sim = Simulation.build(op.agents, documents, world=world, grid=grid, planner=ThetaStarPlanner(grid),
                            walls=world.walls(), fields=op.fields, seed=0)

@@ -85,9 +85,11 @@ def test_served_people_step_aside_to_spots_of_their_own(hall):
 def test_a_contact_counts_once_until_the_two_move_apart(hall):
     sim = simulate(hall, [agent(1, (5, 6)), agent(2, (7, 6))], ['<Wait duration="100"/>'] * 2)
 
+    touching = 0.7 * sim.crowd.params.body_fraction  # two bodies of radius 0.35 touch at the shoulders
+
     def place(gap: float) -> int:
         sim.crowd.pos[0] = (5.0, 6.0)
-        sim.crowd.pos[1] = (5.0 + 0.7 + gap, 6.0)
+        sim.crowd.pos[1] = (5.0 + touching + gap, 6.0)
         sim.tick_trees()
         return sim.frame().counters.collisions
 

@@ -8,7 +8,7 @@ import json
 import pytest
 from helpers.app import generate_to_simulation
 from helpers.app import (
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -22,7 +22,7 @@ pytestmark = pytest.mark.anyio
 
 
 async def test_counters_shown_equal_the_exported_metrics_json_of_the_same_run(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(120, 40)) as pilot:
         sim = await generate_to_simulation(pilot, app)
         await pilot.press("f", "space")  # as fast as possible: queues form, people get served, the run ends

@@ -7,7 +7,7 @@ import threading
 import pytest
 from helpers.app import generate_to_inspect, generate_to_simulation
 from helpers.app import (
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -21,22 +21,22 @@ from grove_tui.tui.screens.inspect import InspectScreen
 pytestmark = pytest.mark.anyio
 
 
-def gated_backend(runs, gate: threading.Event, started: threading.Event):
+def gated_session(runs, gate: threading.Event, started: threading.Event):
     """The real exporters, with the picture held until the test has looked at the paused screen."""
-    backend = fake_llm_backend(runs)
+    session = fake_llm_session(runs)
 
     def held_picture(ctx):
         started.set()
         gate.wait(60)
         dict(EXPORTERS)["picture"](ctx)
 
-    backend.exporters = [(kind, held_picture if kind == "picture" else exporter) for kind, exporter in EXPORTERS]
-    return backend
+    session.exporters = [(kind, held_picture if kind == "picture" else exporter) for kind, exporter in EXPORTERS]
+    return session
 
 
 async def test_export_while_playing_pauses_visibly_shows_progress_and_resumes(tmp_path):
     gate, started = threading.Event(), threading.Event()
-    app = GroveApp(gated_backend(tmp_path / "runs", gate, started), test_settings(tmp_path))
+    app = GroveApp(gated_session(tmp_path / "runs", gate, started), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         sim = await generate_to_simulation(pilot, app)
         await pilot.press("space")
@@ -71,7 +71,7 @@ async def test_export_while_playing_pauses_visibly_shows_progress_and_resumes(tm
 
 async def test_export_from_inspect_shows_progress_then_the_files(tmp_path):
     gate, started = threading.Event(), threading.Event()
-    app = GroveApp(gated_backend(tmp_path / "runs", gate, started), test_settings(tmp_path))
+    app = GroveApp(gated_session(tmp_path / "runs", gate, started), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         await pilot.press("e")

@@ -13,7 +13,7 @@ from helpers.app import (
     generate_to_simulation,
     PROMPT,
     FakeLLM,
-    fake_llm_backend,
+    fake_llm_session,
     map_laid_out,
     test_settings,
     wait_until,
@@ -36,7 +36,7 @@ pytestmark = pytest.mark.anyio
 
 async def test_generate_inspect_play_and_export(tmp_path):
     llm = FakeLLM()
-    app = GroveApp(fake_llm_backend(tmp_path / "runs", llm), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs", llm), test_settings(tmp_path))
     async with app.run_test(size=(100, 30)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         assert llm.requests >= 1
@@ -126,7 +126,7 @@ async def test_generate_inspect_play_and_export(tmp_path):
 
 
 async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         sim = await generate_to_simulation(pilot, app)
         step0 = sim.controller.latest.frame.step
@@ -160,7 +160,7 @@ async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_pat
 async def test_a_planning_error_from_the_model_answer_is_shown_with_a_hint(tmp_path):
     # The draft names a spawn that does not exist in this world: the pipeline must refuse it.
     bad = FakeLLM("2 ghosts from nowhere: GoTo(nowhere)")
-    app = GroveApp(fake_llm_backend(tmp_path / "runs", bad), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs", bad), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         await pilot.press(*PROMPT, "enter")
@@ -189,8 +189,8 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
         monkeypatch.setenv("GROVE_CACHE_DIR", os.environ["GROVE_TEST_CACHE_DIR"])
     else:
         monkeypatch.delenv("GROVE_CACHE_DIR", raising=False)
-    backend = GroveSession.for_app(runs_dir=tmp_path / "runs")
-    app = GroveApp(backend, test_settings(tmp_path))
+    session = GroveSession.for_app(runs_dir=tmp_path / "runs")
+    app = GroveApp(session, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app, "ten patients queue at the pharmacy counter", timeout=400)
         scenario = inspect.generated.scenario
@@ -209,7 +209,7 @@ async def test_emergency_scenarios_show_velocity_field_arrows_on_the_inspect_map
     from grove_tui.tui.widgets import map_raster as mr
 
     draft = "8 visitors from entrance_lobby: Sequence(FollowVelocityField(main_entrance))"
-    app = GroveApp(fake_llm_backend(tmp_path / "runs", FakeLLM(draft)), test_settings(tmp_path, preset="emergency"))
+    app = GroveApp(fake_llm_session(tmp_path / "runs", FakeLLM(draft)), test_settings(tmp_path, preset="emergency"))
     async with app.run_test(size=(120, 40)) as pilot:
         inspect = await generate_to_inspect(pilot, app, "eight visitors evacuate the lobby")
         assert inspect.generated.result.fields, "the emergency preset planned no velocity field"

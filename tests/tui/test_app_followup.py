@@ -4,7 +4,7 @@ asking which group, undo and redo, and the keys in F1. The model is the UI tests
 from __future__ import annotations
 
 import pytest
-from helpers.app import FakeLLM, fake_llm_backend, generate_to_inspect, test_settings, wait_until
+from helpers.app import FakeLLM, fake_llm_session, generate_to_inspect, test_settings, wait_until
 from textual.widgets import Static
 
 from grove_tui.tui.app import GroveApp
@@ -51,7 +51,7 @@ def diff_text(dialog: RefineScreen) -> str:
 async def test_follow_ups_on_the_inspect_screen(tmp_path):
     """One app session (a generation costs seconds): count, cancel, add, refusal, ambiguity, undo, redo, keys."""
     llm = FollowUpLLM(GUARDS, "4 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter))")
-    app = GroveApp(fake_llm_backend(tmp_path / "runs", llm), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs", llm), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         first = inspect.generated

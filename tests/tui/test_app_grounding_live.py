@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from helpers.app import fake_llm_backend, generate_to_simulation, test_settings, wait_until
+from helpers.app import fake_llm_session, generate_to_simulation, test_settings, wait_until
 
 from grove_tui.tui.app import GroveApp
 from grove_tui.tui.widgets.grounding import GroundingPanel
@@ -12,7 +12,7 @@ pytestmark = pytest.mark.anyio
 
 
 async def test_the_checked_report_updates_during_the_run_and_opens_when_decided(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         sim = await generate_to_simulation(pilot, app)
         panel = sim.query_one("#sim-grounding", GroundingPanel)

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 from helpers.app import (
     FIXED_SCRIPT,
-    ScriptedBackend,
-    fake_llm_backend,
+    ScriptedSession,
+    fake_llm_session,
     map_laid_out,
     test_settings,
     wait_until,
@@ -57,7 +57,7 @@ async def inspect_ready(pilot, app: GroveApp) -> InspectScreen:
 
 
 async def test_command_palette_runs_the_screens_main_action(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(100, 30)) as pilot:
         await inspect_ready(pilot, app)
         await pilot.press("ctrl+p")
@@ -69,7 +69,7 @@ async def test_command_palette_runs_the_screens_main_action(tmp_path):
 
 
 async def test_map_zooms_pans_and_fits_with_keys(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         screen = await inspect_ready(pilot, app)
         await pilot.press("m")
@@ -89,12 +89,12 @@ async def test_map_zooms_pans_and_fits_with_keys(tmp_path):
 
 
 async def test_narrow_terminals_fold_the_side_panels(tmp_path):
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         assert app.screen.has_class("-narrow")
         narrow = app.screen.query_one("#setup-side").size.width
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(120, 40)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         assert app.screen.has_class("-wide")

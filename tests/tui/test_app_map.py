@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from helpers.app import generate_to_inspect, generate_to_simulation
 from helpers.app import (
-    fake_llm_backend,
+    fake_llm_session,
     map_laid_out,
     test_settings,
     wait_until,
@@ -26,7 +26,7 @@ def cell_in_view(world_map: MapView, x: float, y: float) -> tuple[int, int]:
 
 
 async def test_zoom_centres_on_the_selected_agent_and_the_legend_names_the_symbols(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         await wait_until(pilot, lambda: inspect._selected_node is not None, what="agent selected")
@@ -47,7 +47,7 @@ async def test_zoom_centres_on_the_selected_agent_and_the_legend_names_the_symbo
 
 
 async def test_simulation_legend_names_the_colours_of_each_mode(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         sim = await generate_to_simulation(pilot, app)
         legend = sim.query_one("#sim-legend", MapLegend)

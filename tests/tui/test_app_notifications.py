@@ -6,8 +6,8 @@ import pytest
 from helpers.app import first_frame, generate_to_inspect
 from helpers.app import (
     FIXED_SCRIPT,
-    ScriptedBackend,
-    fake_llm_backend,
+    ScriptedSession,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -26,7 +26,7 @@ def messages(app: GroveApp) -> list[str]:
 
 
 async def test_notifications_are_cleared_when_the_screen_changes_but_not_for_a_dialog(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         app.notify("about the inspect screen", timeout=60)
@@ -48,7 +48,7 @@ async def test_notifications_are_cleared_when_the_screen_changes_but_not_for_a_d
 
 
 async def test_a_notification_raised_after_the_switch_stays(tmp_path):
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=20), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT, outcome="block", block_seconds=20), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         await pilot.press("enter")  # no prompt: a warning on setup

@@ -7,9 +7,9 @@ from __future__ import annotations
 import pytest
 from helpers.app import (
     FIXED_SCRIPT,
-    ScriptedBackend,
+    ScriptedSession,
     StageStarted,
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -35,8 +35,8 @@ async def start_generation(pilot, app: GroveApp) -> GenerationScreen:
 
 
 async def test_the_running_stage_shows_elapsed_time_tokens_rate_and_eta(tmp_path):
-    backend = ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=20)
-    app = GroveApp(backend, test_settings(tmp_path))
+    session = ScriptedSession(FIXED_SCRIPT, outcome="block", block_seconds=20)
+    app = GroveApp(session, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         screen = await start_generation(pilot, app)
         table = screen.query_one("#stages", DataTable)
@@ -55,8 +55,8 @@ async def test_the_running_stage_shows_elapsed_time_tokens_rate_and_eta(tmp_path
 
 
 async def test_before_the_first_token_the_stage_says_the_model_reads_the_prompt(tmp_path):
-    backend = ScriptedBackend([StageStarted("rois")], outcome="block", block_seconds=20)
-    app = GroveApp(backend, test_settings(tmp_path))
+    session = ScriptedSession([StageStarted("rois")], outcome="block", block_seconds=20)
+    app = GroveApp(session, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         screen = await start_generation(pilot, app)
         table = screen.query_one("#stages", DataTable)
@@ -76,18 +76,18 @@ def test_eta_comes_from_the_last_run_of_the_stage_when_known():
 
 async def test_models_and_embedder_are_warmed_at_start_and_the_panel_says_ready(tmp_path):
     settings = test_settings(tmp_path).model_copy(update={"ui": UISettings(preload_models=True)})
-    backend = fake_llm_backend(tmp_path / "runs")
-    app = GroveApp(backend, settings)
+    session = fake_llm_session(tmp_path / "runs")
+    app = GroveApp(session, settings)
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         models = app.screen.query_one("#models", Static)
         await wait_until(pilot, lambda: "ready to generate" in str(models.render()), timeout=60, what="ready")
         text = str(models.render())
         assert "roi loaded" in text and "bt  loaded" in text and "emb ready" in text
-        assert backend.embedder_ready()
+        assert session.embedder_ready()
 
 
-class BrokenModelBackend(ScriptedBackend):
+class BrokenModelSession(ScriptedSession):
     PROBLEM = "ModelError: /models/roi.gguf: not a GGUF file (bad magic bytes), re-download it"
 
     def model_status(self) -> list[ModelStatus]:
@@ -95,8 +95,8 @@ class BrokenModelBackend(ScriptedBackend):
 
 
 async def test_a_broken_model_is_shown_in_full_and_enter_refuses_with_the_reason(tmp_path):
-    backend = BrokenModelBackend(FIXED_SCRIPT)
-    app = GroveApp(backend, test_settings(tmp_path))
+    session = BrokenModelSession(FIXED_SCRIPT)
+    app = GroveApp(session, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         setup = app.screen
@@ -110,5 +110,5 @@ async def test_a_broken_model_is_shown_in_full_and_enter_refuses_with_the_reason
         await pilot.press(*PROMPT, "enter")
         await pilot.pause(0.3)
         assert app.screen is setup, "generation started with a model known to be broken"
-        assert not backend.blocking.is_set()
+        assert not session.blocking.is_set()
         assert any("re-download it" in str(n.message) and n.severity == "error" for n in app._notifications)

@@ -7,7 +7,7 @@ on inspect, a head count in the counts dialog."""
 from __future__ import annotations
 
 import pytest
-from helpers.app import fake_llm_backend, generate_to_inspect, open_counts, test_settings, wait_until
+from helpers.app import fake_llm_session, generate_to_inspect, open_counts, test_settings, wait_until
 from textual.widgets import Input, TextArea
 
 from grove_tui.tui.app import GroveApp
@@ -71,7 +71,7 @@ async def edit_digits_like_a_shell_user(pilot, field: Input) -> None:
 
 
 async def test_every_text_field_keeps_readline_keys(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         await pilot.press("f")

@@ -6,7 +6,7 @@ import pytest
 from helpers.app import CLEAR, generate_to_inspect, open_counts
 from helpers.app import (
     FakeLLM,
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -22,7 +22,7 @@ pytestmark = pytest.mark.anyio
 
 async def test_edit_a_count_and_replan_without_the_model(tmp_path):
     llm = FakeLLM()
-    app = GroveApp(fake_llm_backend(tmp_path / "runs", llm), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs", llm), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         first = inspect.generated
@@ -64,7 +64,7 @@ async def test_edit_a_count_and_replan_without_the_model(tmp_path):
 
 
 async def test_impossible_counts_show_the_error_in_the_dialog(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         first = inspect.generated
@@ -96,7 +96,7 @@ async def test_impossible_counts_show_the_error_in_the_dialog(tmp_path):
 
 
 async def test_inspect_help_lists_the_counts_binding(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await generate_to_inspect(pilot, app)
         await pilot.press("f1")

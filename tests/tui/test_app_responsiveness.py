@@ -10,7 +10,7 @@ from __future__ import annotations
 import gc
 
 import pytest
-from helpers.app import FIXED_SCRIPT, ScriptedBackend, fake_llm_backend, setup_ready, test_settings, wait_until
+from helpers.app import FIXED_SCRIPT, ScriptedSession, fake_llm_session, setup_ready, test_settings, wait_until
 from textual._styles_cache import StylesCache
 from textual.widget import Widget
 from textual.widgets import Static
@@ -34,7 +34,7 @@ async def open_and_close_help(pilot, app: GroveApp, times: int) -> None:
 
 
 async def test_the_footer_keeps_only_the_keys_it_shows(tmp_path):
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         await open_and_close_help(pilot, app, 5)
@@ -47,7 +47,7 @@ async def test_the_footer_keeps_only_the_keys_it_shows(tmp_path):
 
 
 async def test_closed_screens_leave_no_render_caches_behind(tmp_path):
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         await open_and_close_help(pilot, app, 5)
@@ -58,7 +58,7 @@ async def test_closed_screens_leave_no_render_caches_behind(tmp_path):
 
 
 async def test_help_is_rendered_once_per_screen_and_width(tmp_path):
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         pages = []
@@ -76,7 +76,7 @@ async def test_help_is_rendered_once_per_screen_and_width(tmp_path):
 
 async def test_the_heap_is_frozen_once_the_warm_up_is_done(tmp_path):
     settings = test_settings(tmp_path).model_copy(update={"ui": UISettings(preload_models=True)})
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), settings)
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), settings)
     try:
         async with app.run_test(size=(80, 24)) as pilot:
             await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")

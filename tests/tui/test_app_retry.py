@@ -12,7 +12,7 @@ import threading
 from typing import Any
 
 import pytest
-from helpers.app import PROMPT, QUEUE_DRAFT, FakeLLM, fake_llm_backend, test_settings, wait_until
+from helpers.app import PROMPT, QUEUE_DRAFT, FakeLLM, fake_llm_session, test_settings, wait_until
 from textual.widgets import DataTable, Static
 
 from grove_tui.errors import ModelError
@@ -61,9 +61,9 @@ class RetryingLLM(FakeLLM):
 @pytest.mark.parametrize(("first", "reason"), [("invalid", "invalid draft"), ("cut off", "cut off at 512 tokens")])
 async def test_a_retry_starts_a_fresh_section_and_the_attempt_count_is_real(tmp_path, first, reason):
     llm = RetryingLLM(first)
-    backend = fake_llm_backend(tmp_path / "runs", llm)
+    session = fake_llm_session(tmp_path / "runs", llm)
     events: list[Any] = []
-    generate = backend.generate
+    generate = session.generate
 
     def recording_generate(*args: Any, on_event: Any = None, **kwargs: Any) -> Any:
         def record(event: Any) -> None:
@@ -71,8 +71,8 @@ async def test_a_retry_starts_a_fresh_section_and_the_attempt_count_is_real(tmp_
             on_event(event)
         return generate(*args, on_event=record, **kwargs)
 
-    backend.generate = recording_generate  # type: ignore[method-assign]
-    app = GroveApp(backend, test_settings(tmp_path))
+    session.generate = recording_generate  # type: ignore[method-assign]
+    app = GroveApp(session, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen)
                          and app.screen.selected_world is not None and app.screen.selected_preset is not None,

@@ -7,7 +7,7 @@ from click.testing import CliRunner
 from helpers.app import generate_to_inspect
 from helpers.app import CLEAR, open_counts
 from helpers.app import (
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -27,7 +27,7 @@ pytestmark = pytest.mark.anyio
 
 
 async def test_escape_on_a_new_scenario_asks_and_stay_keeps_it(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         await pilot.press("escape")
@@ -42,7 +42,7 @@ async def test_escape_on_a_new_scenario_asks_and_stay_keeps_it(tmp_path):
 
 
 async def test_export_first_then_escape_leaves_without_asking(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         await pilot.press("escape")
@@ -57,7 +57,7 @@ async def test_export_first_then_escape_leaves_without_asking(tmp_path):
 
 
 async def test_recent_runs_reopen_a_saved_bundle_in_inspect(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         first = (await generate_to_inspect(pilot, app)).generated
         await pilot.press("escape", "y")
@@ -90,7 +90,7 @@ async def test_recent_runs_list_says_when_there_are_none_and_marks_broken_bundle
     broken = runs / "20260101-000000-broken-0"
     broken.mkdir(parents=True)
     (broken / "scenario.yaml").write_text("world: [unclosed\n", encoding="utf-8")
-    app = GroveApp(fake_llm_backend(runs), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(runs), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         await pilot.press("ctrl+o")
@@ -104,11 +104,11 @@ async def test_recent_runs_list_says_when_there_are_none_and_marks_broken_bundle
 
 
 async def test_the_app_opens_a_bundle_given_at_start(tmp_path):
-    backend = fake_llm_backend(tmp_path / "runs")
-    app = GroveApp(backend, test_settings(tmp_path))
+    session = fake_llm_session(tmp_path / "runs")
+    app = GroveApp(session, test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         bundle = (await generate_to_inspect(pilot, app)).generated.bundle_dir
-    reopened_app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path), open_bundle=bundle)
+    reopened_app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path), open_bundle=bundle)
     async with reopened_app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(reopened_app.screen, InspectScreen), timeout=30, what="inspect")
         assert reopened_app.screen.generated.bundle_dir == bundle
@@ -123,7 +123,7 @@ def test_grove_open_refuses_a_folder_that_is_not_a_bundle(tmp_path):
 
 
 async def test_seed_field_sets_the_seed_and_g_regenerates_with_the_next_one(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         seed = app.screen.query_one("#seed", Input)
@@ -143,7 +143,7 @@ async def test_seed_field_sets_the_seed_and_g_regenerates_with_the_next_one(tmp_
 
 
 async def test_g_keeps_count_edits_when_asked_and_drops_them_otherwise(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         await open_counts(pilot, app)

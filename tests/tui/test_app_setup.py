@@ -8,7 +8,7 @@ import pytest
 from grove_tui.errors import ModelError
 from helpers.app import (
     FIXED_SCRIPT,
-    ScriptedBackend,
+    ScriptedSession,
     test_settings,
     wait_until,
 )
@@ -27,8 +27,8 @@ from grove_tui.tui.widgets.prompt_input import PromptInput
 pytestmark = pytest.mark.anyio
 
 
-def make_app(tmp_path: Path, backend: GroveSession | None = None, **kwargs) -> GroveApp:
-    return GroveApp(backend or ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path), **kwargs)
+def make_app(tmp_path: Path, session: GroveSession | None = None, **kwargs) -> GroveApp:
+    return GroveApp(session or ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path), **kwargs)
 
 
 async def setup_ready(pilot) -> SetupScreen:
@@ -63,7 +63,7 @@ async def test_setup_lists_worlds_presets_and_previews_the_map(tmp_path):
         assert "scripted.gguf" in models and "loaded" in models
 
 
-class SlowPresetsBackend(ScriptedBackend):
+class SlowPresetsSession(ScriptedSession):
     """Presets that take a while to read, as on a loaded machine (the CI failure of stop 26)."""
 
     def presets(self):
@@ -76,7 +76,7 @@ class SlowPresetsBackend(ScriptedBackend):
 async def test_a_preset_is_chosen_by_the_time_the_map_preview_names_its_world(tmp_path):
     # A user (and the tmux test) types as soon as the map is named; Enter must then generate, not
     # warn "Choose a world and a preset first" because the preset list had not arrived yet.
-    app = make_app(tmp_path, SlowPresetsBackend(FIXED_SCRIPT))
+    app = make_app(tmp_path, SlowPresetsSession(FIXED_SCRIPT))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(pilot.app.screen, SetupScreen), what="setup screen")
         screen = pilot.app.screen
@@ -125,14 +125,14 @@ async def test_empty_prompt_does_not_generate(tmp_path):
 
 
 async def test_escape_cancels_a_running_generation(tmp_path):
-    backend = ScriptedBackend(FIXED_SCRIPT, outcome="block")
-    app = make_app(tmp_path, backend)
+    session = ScriptedSession(FIXED_SCRIPT, outcome="block")
+    app = make_app(tmp_path, session)
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         await pilot.press(*"ten patients queue at the pharmacy", "enter")
         await wait_until(pilot, lambda: isinstance(app.screen, GenerationScreen), what="generation screen")
         screen = app.screen
-        await wait_until(pilot, backend.blocking.is_set, what="the backend to block")
+        await wait_until(pilot, session.blocking.is_set, what="the session to block")
         table = screen.query_one("#stages", DataTable)
         await wait_until(pilot, lambda: table.get_cell("rois", "time") == "0.42s", what="rois timing")
         assert table.get_cell("rois", "tokens") == "310+12"
@@ -141,13 +141,13 @@ async def test_escape_cancels_a_running_generation(tmp_path):
                          what="streamed tokens")
         await pilot.press("escape")
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="back to setup")
-        assert backend.cancel_seen.is_set()
+        assert session.cancel_seen.is_set()
         assert app.history[-1] == "ten patients queue at the pharmacy"
 
 
 async def test_generation_error_is_shown_in_place_with_a_hint_and_retry(tmp_path):
-    backend = ScriptedBackend(FIXED_SCRIPT[:4], outcome=ModelError("qwen.gguf: not a GGUF file"))
-    app = make_app(tmp_path, backend)
+    session = ScriptedSession(FIXED_SCRIPT[:4], outcome=ModelError("qwen.gguf: not a GGUF file"))
+    app = make_app(tmp_path, session)
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         await pilot.press(*"a crowd", "enter")
@@ -158,7 +158,7 @@ async def test_generation_error_is_shown_in_place_with_a_hint_and_retry(tmp_path
         text = str(error.render())
         assert "not a GGUF file" in text and "--model" in text
         assert screen.query_one("#stages", DataTable).get_cell("rois", "state") == "done"
-        backend.outcome = ModelError("second failure")
+        session.outcome = ModelError("second failure")
         await pilot.press("r")
         await wait_until(pilot, lambda: "second failure" in str(error.render()), what="retry error")
         await pilot.press("escape")
@@ -186,7 +186,7 @@ async def test_keymap_from_config_remaps_a_binding(tmp_path, monkeypatch):
     config.write_text("keymap:\n  setup.presets: ctrl+t\n", encoding="utf-8")
     settings = load_settings()
     assert settings.keymap == {"setup.presets": "ctrl+t"}
-    app = GroveApp(ScriptedBackend(FIXED_SCRIPT), settings.model_copy(update={"ui": test_settings(tmp_path).ui}))
+    app = GroveApp(ScriptedSession(FIXED_SCRIPT), settings.model_copy(update={"ui": test_settings(tmp_path).ui}))
     async with app.run_test(size=(80, 24)) as pilot:
         screen = await setup_ready(pilot)
         await pilot.press("ctrl+t")
@@ -210,12 +210,12 @@ def test_a_broken_config_value_names_the_key(tmp_path):
 
 
 async def test_history_is_saved_between_sessions(tmp_path):
-    backend = ScriptedBackend(FIXED_SCRIPT, outcome="block")
-    app = GroveApp(backend, test_settings(tmp_path), persist_history=True)
+    session = ScriptedSession(FIXED_SCRIPT, outcome="block")
+    app = GroveApp(session, test_settings(tmp_path), persist_history=True)
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         await pilot.press(*"people wait in the lobby", "enter")
-        await wait_until(pilot, backend.blocking.is_set, what="generation to start")
+        await wait_until(pilot, session.blocking.is_set, what="generation to start")
         await pilot.press("escape")
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="back to setup")
     assert load_history(10) == ["people wait in the lobby"]

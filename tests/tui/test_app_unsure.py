@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from helpers.app import fake_llm_backend, setup_ready, test_settings, wait_until
+from helpers.app import fake_llm_session, setup_ready, test_settings, wait_until
 from textual.widgets import Static
 
 from grove_tui.tui.app import GroveApp
@@ -17,7 +17,7 @@ pytestmark = pytest.mark.anyio
 
 
 async def test_an_unsure_reading_is_asked_about_before_generating(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path, ask_when_unsure=True))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path, ask_when_unsure=True))
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         setup = app.screen
@@ -36,7 +36,7 @@ async def test_an_unsure_reading_is_asked_about_before_generating(tmp_path):
 
 
 async def test_a_plain_sentence_generates_without_a_question(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path, ask_when_unsure=True))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path, ask_when_unsure=True))
     async with app.run_test(size=(80, 24)) as pilot:
         await setup_ready(pilot)
         await pilot.press(*"six patients queue at the pharmacy counter", "enter")

@@ -5,10 +5,10 @@ from __future__ import annotations
 import pytest
 from helpers.app import generate_to_inspect
 from helpers.app import (
-    ScriptedBackend,
+    ScriptedSession,
     StageFinished,
     StageStarted,
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -26,7 +26,7 @@ LONG_DETAIL = "pharmacy, pharmacy_counter, main_entrance, waiting_area, cafeteri
 
 async def test_a_long_stage_detail_scrolls_into_view(tmp_path):
     script = [StageStarted("rois"), StageFinished("rois", 0.4, 300, 12, LONG_DETAIL), StageStarted("retrieval")]
-    app = GroveApp(ScriptedBackend(script, outcome="block", block_seconds=20), test_settings(tmp_path))
+    app = GroveApp(ScriptedSession(script, outcome="block", block_seconds=20), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
         await wait_until(pilot, lambda: app.screen.selected_world is not None and app.screen.selected_preset is not None,
@@ -45,7 +45,7 @@ async def test_a_long_stage_detail_scrolls_into_view(tmp_path):
 
 
 async def test_inspect_wraps_the_xml_and_shows_every_port_of_a_node(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
         inspect = await generate_to_inspect(pilot, app)
         tree = inspect.query_one("#bt-tree", BTTree)

@@ -94,9 +94,12 @@ def test_a_user_path_at_80x24(tmp_path):
         counters = panel(screen, "Counters · t =")
         assert len(counters) == 1 and counters[0].endswith("…"), counters
         lags = []
-        deadline = time.monotonic() + 8
+        # Four wall seconds at 8x (about 32 simulated): the six patients are all served by about t = 70 s, and
+        # the pause below needs a run still playing.
+        deadline = time.monotonic() + 4
         while time.monotonic() < deadline:
             screen = terminal.screen()
+            assert "done at t" not in screen and "out at t" not in screen, "the run ended before the pause"
             clock, measured = simulated_time(screen), counters_time(screen)
             if clock > 0 and measured >= 0:
                 lags.append(clock - measured)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 from helpers.app import (
-    fake_llm_backend,
+    fake_llm_session,
     test_settings,
     wait_until,
 )
@@ -33,7 +33,7 @@ async def visible_footer_actions(pilot) -> set[str]:
 
 
 async def test_quit_and_help_stay_visible_on_every_screen_at_80x24(tmp_path):
-    app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+    app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(WIDTH, HEIGHT)) as pilot:
         await setup_ready(pilot)
         seen = {"setup": await visible_footer_actions(pilot)}

@@ -11,8 +11,8 @@ import pytest
 from helpers.app import (
     FIXED_SCRIPT,
     PROMPT,
-    ScriptedBackend,
-    fake_llm_backend,
+    ScriptedSession,
+    fake_llm_session,
     setup_ready,
     test_settings,
     wait_until,
@@ -44,7 +44,7 @@ async def to_inspect(pilot) -> InspectScreen:
 class TestSetupScreen:
     @pytest.mark.parametrize("size", SIZES)
     def test_setup(self, snap_compare, tmp_path, size):
-        app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+        app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=setup_ready)
 
 
@@ -55,7 +55,7 @@ class TestGenerationScreen:
 
         # A stopped progress clock: elapsed 0.0 s and a fixed rate, whatever the machine's speed.
         monkeypatch.setattr(generation, "monotonic", lambda: 100.0)
-        backend = ScriptedBackend(FIXED_SCRIPT, outcome="block", block_seconds=10)
+        session = ScriptedSession(FIXED_SCRIPT, outcome="block", block_seconds=10)
 
         async def run_before(pilot) -> None:
             await setup_ready(pilot)
@@ -63,7 +63,7 @@ class TestGenerationScreen:
             app = pilot.app
             await wait_until(pilot, lambda: isinstance(app.screen, GenerationScreen), what="generation")
             screen = app.screen
-            await wait_until(pilot, backend.blocking.is_set, what="script played")
+            await wait_until(pilot, session.blocking.is_set, what="script played")
             table = screen.query_one("#stages", DataTable)
             await wait_until(pilot, lambda: table.get_cell("synthesis", "state") == "running", what="synthesis")
             await wait_until(pilot, lambda: "patients" in str(screen.query_one("#stream", Static).render()),
@@ -77,14 +77,14 @@ class TestGenerationScreen:
                              what="the table laid out for its widest detail")
             await pilot.pause()
 
-        app = GroveApp(backend, test_settings(tmp_path))
+        app = GroveApp(session, test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
 
 
 class TestInspectScreen:
     @pytest.mark.parametrize("size", SIZES)
     def test_inspect(self, snap_compare, tmp_path, size):
-        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=to_inspect)
 
 
@@ -98,7 +98,7 @@ class TestInspectGrounding:
             await wait_until(pilot, lambda: screen.query_one("#grounding").display, what="grounding panel")
             await pilot.pause()
 
-        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
 
 
@@ -127,7 +127,7 @@ class TestSimulationScreen:
             await wait_until(pilot, lambda: sim.metrics_step == sim.controller.latest.frame.step,
                              what="counters of the last frame")
 
-        app = GroveApp(fake_llm_backend(tmp_path / "runs"), test_settings(tmp_path))
+        app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
 
 
@@ -139,7 +139,7 @@ class TestHelpScreen:
             await pilot.press("f1")
             await wait_until(pilot, lambda: isinstance(pilot.app.screen, HelpScreen), what="help")
 
-        app = GroveApp(ScriptedBackend(FIXED_SCRIPT), test_settings(tmp_path))
+        app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
         assert snap_compare(app, terminal_size=size, run_before=run_before)
 
 
@@ -152,9 +152,9 @@ class TestRecentRunsScreen:
         monkeypatch.setenv("HOME", str(tmp_path))
         monkeypatch.setenv("TZ", "UTC")
         time.tzset()
-        backend = fake_llm_backend(tmp_path / "runs")
+        session = fake_llm_session(tmp_path / "runs")
         for index, seed in enumerate((3, 4)):
-            generated = backend.generate(ScenarioRequest("hospital", "queuing", PROMPT, seed), show_loading=True)
+            generated = session.generate(ScenarioRequest("hospital", "queuing", PROMPT, seed), show_loading=True)
             stamp = 1_790_000_000 + 600 * index
             os.utime(generated.bundle_dir / "scenario.yaml", (stamp, stamp))
 
@@ -165,7 +165,7 @@ class TestRecentRunsScreen:
             await wait_until(pilot, lambda: isinstance(app.screen, RecentRunsScreen) and len(app.screen.runs) == 2,
                              what="recent runs")
 
-        app = GroveApp(backend, test_settings(tmp_path))
+        app = GroveApp(session, test_settings(tmp_path))
         try:
             assert snap_compare(app, terminal_size=(80, 24), run_before=run_before)
         finally:

@@ -170,3 +170,9 @@ class TreeDocument:
         for tree in self.trees.values():
             for child in tree.children:
                 yield from child.walk()
+
+
+# A scenario's trees as generation hands them on: bundle-relative path ("trees/agent_1.xml") -> document.
+# Planning, refinement, analysis, the exports and the app take these; the text is written only where a
+# file is (the bundle writer, an export, the app's XML view) and read only where one is read.
+TreeFiles = dict[str, TreeDocument]

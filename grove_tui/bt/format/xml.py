@@ -113,8 +113,18 @@ def _parse_lxml(data: bytes, source: str) -> etree._Element:
     return root
 
 
+def _refuse_namespaces(element: etree._Element, source: str) -> None:
+    """BT.CPP files use no XML namespaces; a namespaced name (<xi:include>) could not be written back as read."""
+    names = [str(element.tag), *(str(name) for name in element.attrib)]
+    if any(name.startswith("{") for name in names):
+        raise located_error(source, element.sourceline, f"<{element.prefix}:{etree.QName(element).localname}>: XML "
+                                                       "namespaces are not used in behavior trees"
+                            if element.prefix else "XML namespaces are not used in behavior trees")
+
+
 def _to_elements(root: etree._Element, source: str) -> TreeElement:
-    """lxml tree -> TreeElement tree, iteratively, refusing entities, depth and size beyond the limits."""
+    """lxml tree -> TreeElement tree, iteratively, refusing entities, namespaces, depth and size beyond the limits."""
+    _refuse_namespaces(root, source)
     top = TreeElement(str(root.tag), dict(root.attrib), [], root.sourceline, (root.text or "").strip())
     stack = [(root, top, 1)]
     count = 0
@@ -130,6 +140,7 @@ def _to_elements(root: etree._Element, source: str) -> TreeElement:
                 raise located_error(source, child.sourceline, "entity references are not allowed in behavior trees")
             if not isinstance(child.tag, str):
                 continue
+            _refuse_namespaces(child, source)
             kid = TreeElement(child.tag, dict(child.attrib), [], child.sourceline, (child.text or "").strip())
             converted.children.append(kid)
             stack.append((child, kid, depth + 1))
@@ -174,12 +185,19 @@ _ATTRIBUTE_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"':
 _TEXT_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;"})
 
 
-def _check_writable(element: TreeElement, source: str) -> None:
+def _unwritable(element: TreeElement) -> str | None:
+    """Why `element` cannot be written as XML (a character XML cannot carry), or None."""
     for name, value in [("<tag>", element.tag), ("<text>", element.text), *element.attributes.items()]:
         bad = _NOT_XML.search(str(name) + str(value))
         if bad:
-            raise BTError(f"{source}: <{element.tag}> {name}: character U+{ord(bad.group()):04X} cannot be written "
-                          "in XML")
+            return f"<{element.tag}> {name}: character U+{ord(bad.group()):04X} cannot be written in XML"
+    return None
+
+
+def _check_writable(element: TreeElement, source: str) -> None:
+    problem = _unwritable(element)
+    if problem is not None:
+        raise BTError(f"{source}: {problem}")
 
 
 def _write_element(element: TreeElement, depth: int, lines: list[str], source: str) -> None:
@@ -480,9 +498,52 @@ def parse_tree_text(text: str | bytes, source: str = "<string>",
     return document
 
 
+def _as_root(document: TreeDocument, out: _Collector) -> TreeElement:
+    """The <root> element a document is written as, its elements checked as reading checks a file's: every
+    value writable in XML, nesting and size within the limits. Problems go to `out`."""
+    root = TreeElement("root", {"BTCPP_format": _FORMAT, "main_tree_to_execute": document.main_tree_id},
+                       [*document.trees.values(), *document.models])
+    count = 0
+    stack = [(root, 1)]
+    while stack:
+        element, depth = stack.pop()
+        count += 1
+        if depth > MAX_DEPTH:
+            out.add(element.line, f"tree nesting is deeper than {MAX_DEPTH} levels")
+            break
+        if count > MAX_NODES:
+            out.add(None, f"more than {MAX_NODES} XML elements")
+            break
+        problem = _unwritable(element)
+        if problem is not None:
+            out.add(element.line, problem)
+        stack.extend((child, depth + 1) for child in element.children)
+    return root
+
+
+def check_document(document: TreeDocument, nodes: Mapping[str, NodeSpec] = NODES,
+                   source: str | None = None) -> list[BTProblem]:
+    """Every problem of a document built or edited in code (empty when valid): what `check_tree_text`
+    would report of it written out, without writing and reading it back. `source` names it in the
+    problems (default: the document's own source)."""
+    where = document.source if source is None else source
+    out = _Collector(where)
+    root = _as_root(document, out)
+    if out.problems:
+        return out.finish()
+    return _validate(root, where, nodes)[1].finish()
+
+
 def validate_document(document: TreeDocument, nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:
-    """Validate a document built or edited in code, as if it had been written and read back."""
-    return parse_tree_text(write_tree(document), document.source, nodes)
+    """`document` itself when it is valid against the manifest (as `parse_tree_text` would find it written
+    out); BTError listing every problem otherwise."""
+    out = _Collector(document.source)
+    root = _as_root(document, out)
+    if not out.problems:
+        out = _validate(root, document.source, nodes)[1]
+    if out.problems:
+        raise out.error()
+    return document
 
 
 def load_tree_file(path: str | os.PathLike[str], nodes: Mapping[str, NodeSpec] = NODES) -> TreeDocument:

@@ -164,7 +164,7 @@ and planning run again, the model does not. **Tab** moves between the counts, **
     def run_replan(self, generated: GeneratedScenario, counts: dict[int, int], cancel: threading.Event) -> None:
         worker = get_current_worker()
         try:
-            result = self.grove.backend.replan(generated, counts, cancel=cancel)
+            result = self.grove.session.replan(generated, counts, cancel=cancel)
         except Exception as exc:
             if not (cancel.is_set() or worker.is_cancelled):
                 self.post_message(self.ReplanFailed(self, *describe_failure(exc)))

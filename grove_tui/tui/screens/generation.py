@@ -303,7 +303,7 @@ answer was cut off or failed the draft check), the output starts afresh under "a
                     # The model process surely exists once it writes (it restarts lazily after a
                     # cancel): from now on it gives way to this process, so keys answer while it writes.
                     writing.add(event.stage)
-                    self.grove.backend.yield_cpu_to_the_app()
+                    self.grove.session.yield_cpu_to_the_app()
                 buffer.add(event.stage, event.text)
             elif kind == "AttemptStarted":
                 buffer.restart(event.stage, int(event.attempt), str(event.reason))
@@ -313,7 +313,7 @@ answer was cut off or failed the draft check), the output starts afresh under "a
             elif kind == "StageStarted":
                 buffer.flush()
                 if event.stage in MODEL_STAGES:
-                    self.grove.backend.yield_cpu_to_the_app()
+                    self.grove.session.yield_cpu_to_the_app()
                 current["stage"] = event.stage
                 self.post_message(msg.StageStarted(event.stage))
             elif kind == "StageFinished":
@@ -327,13 +327,13 @@ answer was cut off or failed the draft check), the output starts afresh under "a
 
         note = ""
         try:
-            generated = self.grove.backend.generate(
+            generated = self.grove.session.generate(
                 ScenarioRequest(request.world, request.preset, request.prompt, request.seed), on_event=on_event,
                 cancel=cancel, show_loading=True)
             if request.counts and not cancel.is_set():
                 edits, missing = counts_by_index(list(generated.result.report.get("groups", ())), dict(request.counts))
                 if edits:
-                    generated = self.grove.backend.replan(generated, edits, on_event=on_event, cancel=cancel)
+                    generated = self.grove.session.replan(generated, edits, on_event=on_event, cancel=cancel)
                 kept = ", ".join(f"{label} {count}" for label, count in request.counts if label not in missing)
                 note = (f"kept counts: {kept}" if kept else "") + (
                     f"{'; ' if kept else ''}no group named {', '.join(missing)} this time" if missing else "")
@@ -360,7 +360,7 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         self._stage = message.stage
         self._attempt_header = ""
         self._progress = StageProgress(message.stage, monotonic())
-        if message.stage == "retrieval" and not self.grove.backend.embedder_ready():
+        if message.stage == "retrieval" and not self.grove.session.embedder_ready():
             self.query_one("#stream", Static).update("loading the embedding model (first generation only)…")
         if message.stage in STAGES:
             self.query_one("#stages", DataTable).update_cell(message.stage, "state", "running")

@@ -18,7 +18,7 @@ from textual.widgets import Static, TextArea, Tree
 from grove_tui.errors import describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.session import GeneratedScenario
-from grove_tui.services.trees import parse_point_list
+from grove_tui.services.trees import TreeDocument, parse_point_list, tree_text
 from grove_tui.tui.widgets.bt_tree import BTNode, BTTree
 from grove_tui.tui.widgets.grounding import GroundingPanel, read_grounding, summary
 from grove_tui.tui.widgets.map_raster import Overlay
@@ -31,13 +31,16 @@ if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
 
 
+def agent_tree(generated: GeneratedScenario, agent: Any) -> TreeDocument | None:
+    """The agent's tree document as generation (or the bundle reader) gave it; None if it has none."""
+    tree: TreeDocument | None = generated.result.trees.get(agent.tree)
+    return tree
+
+
 def agent_xml(generated: GeneratedScenario, agent: Any) -> str:
-    trees = generated.result.trees
-    for key in (agent.tree, str(agent.id), agent.id, f"agent_{agent.id}"):
-        if key in trees:
-            return trees[key]
-    path = generated.bundle_dir / agent.tree
-    return path.read_text(encoding="utf-8") if path.is_file() else ""
+    """The agent's tree as the XML its bundle file holds, for the XML view."""
+    document = agent_tree(generated, agent)
+    return tree_text(document) if document is not None else ""
 
 
 def group_key(agent: Any) -> tuple[int, str]:
@@ -272,7 +275,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
             group_label.append(f" ×{len(agents)}", style="dim")
             group_node = tree.root.add(group_label, BTNode("group", agents[0].id, label), expand=index == 0)
             for agent_index, agent in enumerate(agents):
-                tree.add_agent(group_node, agent, agent_xml(self.generated, agent), expand=index == 0 and agent_index == 0,
+                tree.add_agent(group_node, agent, agent_tree(self.generated, agent), expand=index == 0 and agent_index == 0,
                                destination=destination(agent, self.generated.world))
         if scenario.robot is not None:
             robot = scenario.robot
@@ -506,7 +509,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
             self.post_message(msg.ExportProgress(kind, index, total))
 
         try:
-            files = self.grove.backend.export_all(self.generated, None, root, on_progress=progress)
+            files = self.grove.session.export_all(self.generated, None, root, on_progress=progress)
         except Exception as exc:
             self.post_message(msg.ExportFailed(describe_error(exc).text))
             return

@@ -76,7 +76,7 @@ first; **Enter** opens one in the inspect screen (trees, map, play, export) as i
 
     def compose(self) -> ComposeResult:
         with Vertical(id="recent-dialog"):
-            yield Static(f"Recent runs · {shown_path(self.grove.backend.runs_dir)}", id="recent-title", markup=False)
+            yield Static(f"Recent runs · {shown_path(self.grove.session.runs_dir)}", id="recent-title", markup=False)
             runs = OptionList(id="recent-runs")
             runs.border_title = "Enter opens · Esc closes"
             yield runs
@@ -89,7 +89,7 @@ first; **Enter** opens one in the inspect screen (trees, map, play, export) as i
     @work(thread=True, exclusive=True, group="recent", exit_on_error=False, description="listing runs")
     def list_runs(self) -> None:
         try:
-            runs = self.grove.backend.recent_runs()
+            runs = self.grove.session.recent_runs()
         except Exception as exc:  # an unreadable runs folder must say so in the list, not kill the app
             self.post_message(self.Listed([], f"cannot list runs: {type(exc).__name__}: {exc}"))
             return

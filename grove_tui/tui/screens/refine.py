@@ -1,9 +1,9 @@
 """The follow-up dialog: what a sentence would change (a diff of groups and the robot), then applying it.
 
 Opened by the inspect screen's follow-up box. A worker reads the sentence against the scenario
-(`backend.read_refinement`, no model); a name that could mean several groups ("the nurse" with two
+(`session.read_refinement`, no model); a name that could mean several groups ("the nurse" with two
 nurse groups) is asked about first, one numbered line per group. The diff is shown before anything
-runs: **Enter** applies it (a worker runs `backend.refine`: the model for new and changed groups only,
+runs: **Enter** applies it (a worker runs `session.refine`: the model for new and changed groups only,
 stage by stage on the status line), **Escape** cancels. The dialog returns the refined scenario.
 """
 
@@ -138,7 +138,7 @@ several groups, press the number of the one you mean.
     @work(thread=True, exclusive=True, group="refine-read", exit_on_error=False, description="reading the follow-up")
     def read(self, choices: tuple[int, ...]) -> None:
         try:
-            refinement = self.grove.backend.read_refinement(self.generated, self.sentence, choices=choices)
+            refinement = self.grove.session.read_refinement(self.generated, self.sentence, choices=choices)
         except AmbiguousEditError as exc:
             phrase, options = exc.choices[0]
             self.post_message(self.Asked(phrase, options))
@@ -195,7 +195,7 @@ several groups, press the number of the one you mean.
     def apply(self, refinement: Any, cancel: threading.Event) -> None:
         worker = get_current_worker()
         try:
-            generated = self.grove.backend.refine(self.generated, refinement, on_event=self._event, cancel=cancel)
+            generated = self.grove.session.refine(self.generated, refinement, on_event=self._event, cancel=cancel)
         except Exception as exc:  # noqa: BLE001 - shown in the dialog with its hint
             if not (cancel.is_set() or worker.is_cancelled):
                 self.post_message(self.Failed(*describe_failure(exc)))

@@ -172,7 +172,7 @@ shows its world, preset, prompt and seed.
     # workers -----------------------------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="catalogue", exit_on_error=False, description="listing worlds")
     def load_catalogue(self) -> None:
-        backend = self.grove.backend
+        session = self.grove.session
         preload = self.grove.settings.ui.preload_models
         initial = self.grove.initial_world
         if preload and initial:
@@ -180,24 +180,24 @@ shows its world, preset, prompt and seed.
             self.preload_models(initial, self.grove.initial_preset)
         # Presets before worlds: the map preview's title is what a user (and the tmux test) waits
         # for before typing.
-        self.post_message(msg.PresetsListed(backend.presets()))
+        self.post_message(msg.PresetsListed(session.presets()))
         names: list[str] = []
         try:
-            names = backend.list_worlds()
+            names = session.list_worlds()
         except Exception as exc:  # an engine bug must show, not kill the app
             self.post_message(msg.WorldsListed([], describe_error(exc).text))
         else:
             self.post_message(msg.WorldsListed(names))
         if preload and not initial:
-            self.post_message(msg.ModelsChanged(backend.model_status(), loading=True))
+            self.post_message(msg.ModelsChanged(session.model_status(), loading=True))
             self.preload_models(names[0] if names else None, self.grove.initial_preset)
         elif not preload:
-            self.post_message(msg.ModelsChanged(backend.model_status()))
+            self.post_message(msg.ModelsChanged(session.model_status()))
 
     @work(thread=True, exclusive=True, group="models", exit_on_error=False, description="loading models")
     def preload_models(self, world: str | None, preset: str | None) -> None:
-        """Warm everything the first generation needs (backend.warm_up); the panel shows each step."""
-        backend = self.grove.backend
+        """Warm everything the first generation needs (session.warm_up); the panel shows each step."""
+        session = self.grove.session
         embedder = ""
 
         def report(status: WarmUpStatus) -> None:
@@ -210,20 +210,20 @@ shows its world, preset, prompt and seed.
                 # no later collection pauses the UI thread to walk it (tui/heap.py).
                 self.grove.frozen_heap = freeze_heap()
             self.post_message(msg.ModelsChanged(
-                backend.model_status(), loading=loading, embedder=embedder,
+                session.model_status(), loading=loading, embedder=embedder,
                 warm_up="" if status.step == "ready" and status.state == "done" else status.text,
                 expected_seconds=status.expected_seconds if status.state == "running" else 0.0))
 
         try:
-            backend.warm_up(world, preset, on_status=report)
+            session.warm_up(world, preset, on_status=report)
         except Exception as exc:  # an engine bug must show on the panel, not kill the app
-            self.post_message(msg.ModelsChanged(backend.model_status(), embedder=embedder,
+            self.post_message(msg.ModelsChanged(session.model_status(), embedder=embedder,
                                                 warm_up=f"warm-up failed: {describe_error(exc).text}"))
 
     @work(thread=True, exclusive=True, group="world", exit_on_error=False, description="loading world")
     def load_world(self, name: str) -> None:
         try:
-            world = self.grove.backend.load_world(name)
+            world = self.grove.session.load_world(name)
         except Exception as exc:
             self.post_message(msg.WorldFailed(name, describe_error(exc).text))
             return
@@ -399,7 +399,7 @@ shows its world, preset, prompt and seed.
             self.query_one("#seed", Input).focus()
             return
         request = GenerationRequest(prompt=prompt, world=world, preset=preset, seed=seed)
-        if not self.grove.settings.ui.ask_when_unsure or getattr(self.grove.backend, "unsure", None) is None:
+        if not self.grove.settings.ui.ask_when_unsure or getattr(self.grove.session, "unsure", None) is None:
             self.app.push_screen(GenerationScreen(request))
             return
         self.check_reading(request)  # unsure readings are asked about first (on_reading_checked)
@@ -407,7 +407,7 @@ shows its world, preset, prompt and seed.
     @work(thread=True, exclusive=True, group="reading", exit_on_error=False, description="reading the sentence")
     def check_reading(self, request: Any) -> None:
         try:
-            questions = list(self.grove.backend.unsure(ScenarioRequest(request.world, request.preset, request.prompt,
+            questions = list(self.grove.session.unsure(ScenarioRequest(request.world, request.preset, request.prompt,
                                                                         request.seed)))
         except Exception:  # a sentence that cannot be read fails in the generation, with its reason shown there
             questions = []

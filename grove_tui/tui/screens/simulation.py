@@ -253,8 +253,8 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
     def start_simulation(self) -> None:
         worker = get_current_worker()
         try:
-            simulation = self.grove.backend.simulation(self.generated)
-            metrics = self.grove.backend.live_metrics(self.generated)
+            simulation = self.grove.session.simulation(self.generated)
+            metrics = self.grove.session.live_metrics(self.generated)
         except Exception as exc:
             self.post_message(msg.SimulationFailed(describe_error(exc).text))
             return
@@ -472,7 +472,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
         try:
             if self._checker is None:
-                self._checker = self.grove.backend.outcome_checker(self.generated)
+                self._checker = self.grove.session.outcome_checker(self.generated)
             if self._checker is None:
                 self.post_message(msg.GroundingChecked(None))
                 return
@@ -480,7 +480,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             if not done.wait(GROUNDING_ROWS_TIMEOUT) or taken.get("error") is not None:
                 raise RuntimeError(f"cannot read the run: {taken.get('error') or 'the simulation did not answer'}")
             self._checker_rows += len(taken["rows"])
-            report = self.grove.backend.check_run_rows(self._checker, taken["rows"], taken["events"],
+            report = self.grove.session.check_run_rows(self._checker, taken["rows"], taken["events"],
                                                        partial=not final)
         except Exception as exc:  # a check bug must show in the panel, not stop the simulation
             self.post_message(msg.GroundingChecked(None, f"{type(exc).__name__}: {exc}"))
@@ -589,7 +589,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             return
         if self.exporting:
             return
-        backend = self.grove.backend
+        session = self.grove.session
         generated = self.generated
         root = self.grove.export_root
 
@@ -598,7 +598,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
         def export(simulation: Any) -> Any:
             # In the simulation thread, which is paused: the run cannot change while it is written.
-            return backend.export_all(generated, simulation, root, on_progress=progress)
+            return session.export_all(generated, simulation, root, on_progress=progress)
 
         def reply(result: Any) -> None:
             if isinstance(result, Exception):

@@ -13,8 +13,7 @@ from textual.strip import Strip
 from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
-from grove_tui.errors import BTError
-from grove_tui.services.trees import TreeElement, behavior_trees
+from grove_tui.services.trees import TreeDocument, TreeElement, behavior_trees
 
 STATUS_CLASSES = {
     "RUNNING": "bt--running",
@@ -90,12 +89,12 @@ running, success, failure.
         self.agent_nodes: dict[int, TreeNode[BTNode]] = {}
 
     # building ----------------------------------------------------------------------------------------
-    def add_agent_tree(self, parent: TreeNode[BTNode], agent_id: int, xml_text: str, expand: bool = False) -> None:
-        try:
-            trees = behavior_trees(xml_text)
-        except BTError as exc:
-            parent.add_leaf(Text(f"unreadable tree: {exc}", style="italic"), BTNode("node", agent_id, "error"))
+    def add_agent_tree(self, parent: TreeNode[BTNode], agent_id: int, document: TreeDocument | None,
+                       expand: bool = False) -> None:
+        if document is None:
+            parent.add_leaf(Text("no tree", style="italic"), BTNode("node", agent_id, "error"))
             return
+        trees = behavior_trees(document)
         for tree_index, tree in enumerate(trees):
             container = parent if tree_index == 0 else parent.add(
                 Text(f"SubTree {tree.get('ID', '')}", style="italic"), BTNode("node", agent_id, tree.get("ID", "")))
@@ -117,14 +116,14 @@ running, success, failure.
         if path:
             self._nodes_by_path[(agent_id, path_key(path))] = node
 
-    def add_agent(self, parent: TreeNode[BTNode], agent: Any, xml_text: str, expand: bool = False,
+    def add_agent(self, parent: TreeNode[BTNode], agent: Any, document: TreeDocument | None, expand: bool = False,
                   destination: str = "") -> TreeNode[BTNode]:
         """An agent's row ("agent 3 Regular → pharmacy_counter": where it is going) and its tree."""
         label = Text(f"agent {agent.id}", style="bold")
         label.append(f" {agent.behavior} → {destination}" if destination else f" {agent.behavior}", style="dim")
         node = parent.add(label, BTNode("agent", agent.id, f"agent {agent.id}"), expand=expand)
         self.agent_nodes[agent.id] = node
-        self.add_agent_tree(node, agent.id, xml_text, expand=expand)
+        self.add_agent_tree(node, agent.id, document, expand=expand)
         return node
 
     def add_runtime_tree(self, parent: TreeNode[BTNode], agent_id: int,
