@@ -233,6 +233,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
     ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
+    ("in", "line"): "queue", ("in", "a", "line"): "queue", ("in", "a", "queue"): "queue", ("in", "the", "queue"): "queue",
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
