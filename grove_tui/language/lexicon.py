@@ -429,6 +429,9 @@ NON_PLACES = frozenset(
 BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment premises site facility floor "
                            "place area scene venue property complex centre center interior indoors outdoors "
                            "inside outside".split())
+# Outdoors beyond the building's doors: "out to the street" is out through an exit, when the world
+# names no such place itself.
+OUTDOOR_WORDS = frozenset("street road pavement sidewalk carpark car_park parking forecourt outdoors".split())
 # Heads that say "a part of" without naming which: matching rests on the words before them.
 GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
@@ -460,6 +463,7 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "garden yard patio terrace balcony",
         "study library",
         "printer copier print",
+        "storage stockroom storeroom",
         "child kid",  # "the kids room" is the children's room
     )
 )

@@ -49,3 +49,55 @@ def test_people_in_line_with_no_verb_queue(worlds, world, prompt, location, valu
 def test_more_of_a_group_with_no_verb_do_as_it_does(worlds, world, prompt, first, second):
     a, b = read(worlds, world, prompt).groups
     assert b.relation == "more_of:0" and b.intent == a.intent and (a.location, b.location) == (first, second)
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("hospital", "A porter pushes a trolley from the stockroom to the ICU.", "start", "supply_room"),
+    ("hospital", "Two nurses gossip at the nurses' post.", "location", "nurse_station"),
+    ("hospital", "A cleaner heads to the storeroom.", "destination", "supply_room"),
+    ("station", "A porter carries two suitcases from the stockroom to platform 1.", "start", "left_luggage"),
+])
+def test_a_place_under_another_word_is_read_not_refused(worlds, world, prompt, field, place):
+    g, = read(worlds, world, prompt).groups
+    assert getattr(g, field) == place
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("residential", "Two kids play in the bowling alley."),
+    ("mall", "Three teenagers wait at the bowling alley."),
+    ("hospital", "A nurse walks to the helipad."),
+])
+def test_a_place_far_from_every_name_is_still_refused(worlds, world, prompt):
+    assert read_prompt(prompt, worlds[world]).unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("station", "Twelve commuters leave the waiting room and go out to the street.", "waiting_room"),
+    ("hospital", "Five visitors walk out of the cafeteria to the car park.", "cafeteria"),
+    ("office", "Two engineers leave the kitchen and head out to the street.", "kitchen"),
+])
+def test_the_street_is_out_through_an_exit(worlds, world, prompt, start):
+    g, = read(worlds, world, prompt).groups
+    index_exits = {d.name for z in worlds[world].zones for d in z.doors if d.exit}
+    assert g.start == start and g.destination in index_exits, (g.start, g.destination)
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Three analysts talk through the budget in the boardroom.", "boardroom"),
+    ("hospital", "Two doctors chat over the test results at the nurses' station.", "nurse_station"),
+])
+def test_a_topic_is_no_place(worlds, world, prompt, location):
+    g, = read(worlds, world, prompt).groups
+    assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("station", "Four backpackers wait by the office where you can store your suitcases.", "location", "left_luggage"),
+    ("airport", "Two porters walk to the hall where you collect your bags.", "destination", "baggage_claim"),
+    ("hospital", "Nine patients queue at the counter where you pick up prescriptions.", "location", "pharmacy_counter"),
+    ("residential", "The twins nap in the room where the children sleep.", "location", "child_bedroom"),
+    ("office", "Two managers hurry to the room where the board meets.", "destination", "boardroom"),
+])
+def test_a_place_described_by_what_happens_there(worlds, world, prompt, field, place):
+    g, = read(worlds, world, prompt).groups
+    assert getattr(g, field) == place
