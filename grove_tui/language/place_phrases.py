@@ -114,6 +114,7 @@ class PlacePhrases(EmptiedZones):
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas)
+        match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
         named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")
@@ -203,6 +204,32 @@ class PlacePhrases(EmptiedZones):
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
+
+    def _fixture_of_room(self, k: int, j: int) -> PlaceMatch | None:
+        """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the
+        room's name, a possessive, then the fixture's words, read among that room's fixtures."""
+        s = self.s
+        mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
+        if mark is None:
+            return None
+        room = s.index.match(phrase_lemmas(s.low[k:mark]))
+        thing = phrase_lemmas(s.low[mark + 1:j])
+        if room is None or room.kind != "zone" or not thing:
+            return None
+        inside = [m for m in s.index.candidates(thing) if m.kind == "entity" and m.zone == room.name]
+        return inside[0] if inside else None
+
+    def _fixtures_as_room(self, k: int, j: int, lemmas: Sequence[str], match: PlaceMatch | None) -> PlaceMatch | None:
+        """"the luggage carousels", "the ticket gates": several fixtures alike of one room, named in the
+        plural, are that room (not "one of the benches", which is one of them; the caller keeps "sit on
+        the benches" on them)."""
+        s = self.s
+        if match is None or match.kind != "entity" or j <= k or s.w[j - 1].tag != "NNS" or \
+                (k >= 2 and s.low[k - 1] == "of" and s.low[k - 2] in ("one", "each", "any", "some")):
+            return match
+        alike = [m for m in s.index.candidates(lemmas) if m.kind == "entity" and m.zone == match.zone
+                 and m.score >= match.score - 1e-9]
+        return PlaceMatch(match.zone, "zone", match.zone, match.score, False) if len(alike) >= 2 else match
 
     def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int) -> tuple[_Decided, int] | None:
         """The place a phrase followed by "where ..." means, by the meaning of the phrase and its

@@ -101,3 +101,25 @@ def test_a_topic_is_no_place(worlds, world, prompt, location):
 def test_a_place_described_by_what_happens_there(worlds, world, prompt, field, place):
     g, = read(worlds, world, prompt).groups
     assert getattr(g, field) == place
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("airport", "A porter wheels a trolley from gate A2 to the baggage carousels.", "destination", "baggage_claim"),
+    ("hospital", "Two nurses restock the supply shelves.", "location", "supply_room"),
+    ("office", "Five developers type at the desks in silence.", "location", "open_plan_office"),
+    ("airport", "Forty travellers queue at the check-in desks.", "location", "check_in_hall"),
+])
+def test_several_fixtures_alike_in_the_plural_are_their_room(worlds, world, prompt, field, place):
+    g, = read(worlds, world, prompt).groups
+    assert getattr(g, field) == place
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("mall", "Three teens wait by the toy shop's counter.", "toy_till"),
+    ("station", "A barista waits behind the café's counter.", "cafe_counter"),
+    ("hospital", "Four visitors queue at the pharmacy's counter.", "pharmacy_counter"),
+    ("hospital", "A man waits at the cafeteria's counter.", "food_counter"),
+])
+def test_a_fixture_named_through_its_room(worlds, world, prompt, location):
+    g, = read(worlds, world, prompt).groups
+    assert g.location == location
