@@ -19,9 +19,9 @@ from grove_tui.language.counts import Quantifier, count_of, negative_at, number_
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
-from grove_tui.language.place_phrases import PlacePhrases
+from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
 
@@ -66,6 +66,8 @@ class Mentions:
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
             m.robot_object = self.robot_object(m.first)
+            if m.zone_place is None and not m.whole_zone:
+                m.zone_place = self.possessor_place(m.first)
             found.append(m)
             i = m.last + 1
         return found
@@ -90,6 +92,12 @@ class Mentions:
         if any(s.w[x].pos in ("VERB", "AUX") or s.low[x] in (",", ";", ":") for x in between):
             return False
         after = m.last + 1
+        if tuple(s.low[after:after + 2]) in (("in", "all"), ("in", "total"), ("all", "told")):
+            after += 2  # "ward A's patients, six in all, make their way out"
+        elif s.low[after] == "altogether":
+            after += 1
+        if after >= s.n:
+            return False
         return s.low[after] == "," or s.w[after].pos in ("VERB", "AUX") or self.people.third_person_verb(after)
 
     # ---- where a group can start -------------------------------------------------------------
@@ -131,7 +139,27 @@ class Mentions:
             return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
             return True  # "the boardroom meeting of twelve people breaks up"
+        if prev in ("'s", "’s") and self.possessor_place(at) is not None:
+            return True  # "ward A's patients", "the café's 8 customers": the people of a place
         return self._parser_subject(at)
+
+    def possessor_place(self, at: int) -> Place | None:
+        """The zone whose people the mention at `at` is ("ward A's patients": ward_a), or None."""
+        s = self.s
+        p = at - 1
+        if p < 1 or s.low[p] not in ("'s", "’s"):
+            return None
+        k = p
+        while k > 0 and not s.is_punct(k - 1) and s.low[k - 1] not in lx.CLAUSE_STARTERS and p - k < 4:
+            k -= 1
+        k = s.skip(k, lx.DETERMINERS)
+        words = tuple(s.low[k:p])
+        if not words or any(self.people.is_person_noun(x) for x in range(k, p)):
+            return None
+        match = s.index.match(phrase_lemmas(list(words)))
+        if match is None or match.kind != "zone" or not match.exact:
+            return None
+        return Place("in", k, words, match, p)
 
     def _place_before(self, p: int) -> bool:
         """Whether the words of p's clause before it name a place and no person ("the café has")."""

@@ -35,6 +35,7 @@ class Place:
     reason: str = ""
     alternatives: tuple[str, ...] = ()  # other places the phrase fits as well
     sequel: bool = False  # said after the place before, in its role ("to the café and then the pharmacy")
+    out_of: bool = False  # "out of the north doors": the "from" of "out of"
 
 
 def place_confidences(roles: dict[str, str | None], via: Sequence[str],
@@ -174,7 +175,8 @@ class PlacePhrases(EmptiedZones):
         if mentioned:
             self.named.append(match.name)
         self.covered.update(range(k, j))
-        return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives)
+        return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
+                     out_of=prep == "from" and s.low[at] == "out")
 
     # ---- by meaning, and by owner ----------------------------------------------------------------
 

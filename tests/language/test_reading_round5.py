@@ -123,3 +123,24 @@ def test_several_fixtures_alike_in_the_plural_are_their_room(worlds, world, prom
 def test_a_fixture_named_through_its_room(worlds, world, prompt, location):
     g, = read(worlds, world, prompt).groups
     assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,start,destination,value", [
+    ("mall", "Smoke! The shoppers, twenty in total, pour out of the north doors.", None, "north_exit", 20),
+    ("hospital", "Fire alarm: the visitors, nine in all, hurry out of the main entrance.", None, "main_entrance", 9),
+    ("station", "Evacuation: the commuters, thirty in all, leave through the main doors.", None, "main_entrance", 30),
+])
+def test_a_count_in_apposition_and_out_of_an_exit(worlds, world, prompt, start, destination, value):
+    g, = read(worlds, world, prompt).groups
+    assert (g.start, g.destination, g.count.value) == (start, destination, value)
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("hospital", "Ward B's patients shuffle to the cafeteria.", "start", "ward_b"),
+    ("mall", "Alarm! The food court's diners hurry to the east entrance.", "start", "food_court"),
+    ("station", "The waiting room's twelve passengers walk to platform 2.", "start", "waiting_room"),
+    ("office", "The kitchen's two baristas chat.", "location", "kitchen"),
+])
+def test_the_people_of_a_place_are_in_it(worlds, world, prompt, field, place):
+    g, = read(worlds, world, prompt).groups
+    assert getattr(g, field) == place
