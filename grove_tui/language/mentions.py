@@ -49,6 +49,10 @@ class Mentions:
                 i += 1
                 continue
             m = self.mention_at(i, found)
+            if m is not None and m.collective is not None and m.first == m.last and 0 < m.first and \
+                    s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \
+                    not self.people.third_person_verb(m.last + 1):
+                m = None  # "the first-class lounge", "a first-team pitch": a collective inside a compound modifier
             if m is None:
                 i += 1
                 continue
@@ -57,6 +61,8 @@ class Mentions:
                 count = m.count
                 assert count is not None
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
+                if found[-1].label == "person":
+                    found[-1].label = m.label
                 i = m.last + 1
                 continue
             if m.count is not None and m.count.value == 0 and m.count.kind == "exact":
@@ -84,8 +90,9 @@ class Mentions:
             return True  # "Travellers queue at security, maybe forty of them.": how many, said last
         if m.last + 1 >= s.n:
             return False
-        if m.relation not in (None, f"subset_of:{index}") or m.label not in ("person", before.label):
-            return False
+        if m.relation not in (None, f"subset_of:{index}") or \
+                m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person"):
+            return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full
         between = range(before.last + 1, m.first - 1)

@@ -144,3 +144,23 @@ def test_a_count_in_apposition_and_out_of_an_exit(worlds, world, prompt, start, 
 def test_the_people_of_a_place_are_in_it(worlds, world, prompt, field, place):
     g, = read(worlds, world, prompt).groups
     assert getattr(g, field) == place
+
+
+@pytest.mark.parametrize("world,prompt,label,value,start", [
+    ("office", "Everyone in the kitchen, four interns, walks to the boardroom.", "intern", 4, "kitchen"),
+    ("hospital", "Alarm! Everybody in the cafeteria, a dozen or so visitors, leaves by the main entrance.", "visitor",
+     12, "cafeteria"),
+    ("mall", "Everyone in the cinema lobby, thirty-odd teenagers, walks to the food court.", "teenager", 30,
+     "cinema_lobby"),
+])
+def test_everyone_somewhere_then_who_and_how_many_is_one_group(worlds, world, prompt, label, value, start):
+    g, = read(worlds, world, prompt).groups
+    assert (g.label, g.count.value, g.start) == (label, value, start)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("airport", "Five travellers leave the first-class lounge for gate A1."),
+    ("hospital", "A nurse wheels a first-class patient to the lifts."),
+])
+def test_half_of_a_compound_before_a_noun_is_no_group(worlds, world, prompt):
+    assert len(read_prompt(prompt, worlds[world]).groups) == 1
