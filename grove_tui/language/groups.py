@@ -225,6 +225,7 @@ class Groups:
             intent = "follow"  # "leads twelve tourists": they follow the one who leads
             c = replace(c, follows=earlier[-1].who)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
+        robot = robot or c.unaimed  # "... and their grandparents shrink back": from the robot named before
         if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
             intent = "queue"  # "a queue of eight people forms at the ticket office", "a line of five waiting"
         if robot is not None:

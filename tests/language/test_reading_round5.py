@@ -164,3 +164,22 @@ def test_everyone_somewhere_then_who_and_how_many_is_one_group(worlds, world, pr
 ])
 def test_half_of_a_compound_before_a_noun_is_no_group(worlds, world, prompt):
     assert len(read_prompt(prompt, worlds[world]).groups) == 1
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "When the robot enters the lobby, the kids run to it and their parents shrink back."),
+    ("mall", "As the robot passes the fountain, the teens cheer and their parents recoil."),
+    ("office", "When the robot arrives, the interns wave at it and their boss steps back."),
+])
+def test_shrinking_back_once_the_robot_is_named_is_fear_of_it(worlds, world, prompt):
+    g = read(worlds, world, prompt).groups[-1]
+    assert (g.intent, g.robot_interaction, g.robot_reaction) == ("robot", "avoid", "Scared")
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Two interns step back from the printer."),
+    ("station", "The robot crosses the concourse; a few commuters go back to the ticket hall."),
+])
+def test_stepping_back_from_something_else_is_no_reaction(worlds, world, prompt):
+    g = read(worlds, world, prompt).groups[-1]
+    assert g.robot_interaction is None
