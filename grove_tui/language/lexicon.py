@@ -218,7 +218,7 @@ for _intent, _verbs in {
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
-            "file troop toddle deliver drop bring fetch collect slip sneak nip pop board",
+            "file troop stream flood trickle surge toddle deliver drop bring fetch collect slip sneak nip pop board",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)

@@ -36,6 +36,7 @@ class Place:
     alternatives: tuple[str, ...] = ()  # other places the phrase fits as well
     sequel: bool = False  # said after the place before, in its role ("to the café and then the pharmacy")
     out_of: bool = False  # "out of the north doors": the "from" of "out of"
+    written: str = ""  # the preposition as written ("from"), whatever role word it was read as
 
 
 def place_confidences(roles: dict[str, str | None], via: Sequence[str],
@@ -176,7 +177,7 @@ class PlacePhrases(EmptiedZones):
             self.named.append(match.name)
         self.covered.update(range(k, j))
         return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
-                     out_of=prep == "from" and s.low[at] == "out")
+                     out_of=prep == "from" and s.low[at] == "out", written=s.low[at])
 
     # ---- by meaning, and by owner ----------------------------------------------------------------
 

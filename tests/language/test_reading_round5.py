@@ -183,3 +183,27 @@ def test_shrinking_back_once_the_robot_is_named_is_fear_of_it(worlds, world, pro
 def test_stepping_back_from_something_else_is_no_reaction(worlds, world, prompt):
     g = read(worlds, world, prompt).groups[-1]
     assert g.robot_interaction is None
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("mall", "Two kids queue at the express till while a guard watches them from the supermarket doors.",
+     "supermarket_exit"),
+    ("hospital", "A nurse watches the patients from the nurses' station.", "nurse_station"),
+    ("office", "The boss watches the interns from the boardroom door.", "boardroom_door"),
+])
+def test_watching_from_a_place_is_being_there(worlds, world, prompt, location):
+    g = read(worlds, world, prompt).groups[-1]
+    assert (g.location, g.start) == (location, None)
+
+
+@pytest.mark.parametrize("world,prompt,label,start", [
+    ("station", "The robot waits by the gateline as dozens of commuters stream out of the ticket hall.", "commuter",
+     "ticket_hall"),
+    ("mall", "The robot stands by the fountain while hundreds of fans flood in from the east entrance.", "fan",
+     "east_entrance"),
+])
+def test_dozens_of_people_after_a_robot_clause_are_their_own_group(worlds, world, prompt, label, start):
+    reading = read(worlds, world, prompt)
+    g, = reading.groups
+    assert (g.label, g.intent, g.start) == (label, "walk", start) and g.count.value >= 12
+    assert reading.robot is not None and "as" not in reading.robot.text.split() and "while" not in reading.robot.text.split()
