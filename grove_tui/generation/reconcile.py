@@ -31,7 +31,7 @@ from typing import Any
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
 from grove_tui.bt.format.manifest import NODES
-from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
 from grove_tui.language.tokens import lemma, words
@@ -341,7 +341,8 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     """The plain tree for a reading: where it says, what it says, nothing more."""
     base = _base_intent(group)
     if base == "evacuate" and evacuation_field:
-        exit_name = group.destination if _is_exit(world, group.destination) else _nearest_exit(world, group.start)
+        destination = group.destination
+        exit_name = destination if destination and _is_exit(world, destination) else _nearest_exit(world, group.start)
         return DraftNode("FollowVelocityField", {"exit": exit_name})
     steps: list[DraftNode] = []
     via = [DraftNode("GoTo", {"target": v}) for v in group.via]
@@ -372,7 +373,7 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         return _sequence(via + steps)
     # walk, evacuate, follow
     destination = group.destination
-    if base in ("walk", "evacuate") and _is_exit(world, destination):
+    if base in ("walk", "evacuate") and destination and _is_exit(world, destination):
         # "leave through the back door", "walk to the exit": out of the building through that door (the
         # field in an emergency, else the planned way to the door and through it)
         return _sequence(via + [DraftNode("FollowVelocityField", {"exit": destination})])
@@ -478,7 +479,7 @@ def _target_ports(node: DraftNode) -> list[str]:
 def _node_place(node: DraftNode | None) -> str | None:
     if node is None:
         return None
-    return next((node.ports[p] for p in _target_ports(node) if p in node.ports), None)
+    return next((place_at(node, p) for p in _target_ports(node) if p in node.ports), None)
 
 
 def _tree_places(tree: DraftNode) -> list[str]:
