@@ -101,6 +101,12 @@ def place_at(node: DraftNode, port: str) -> str:
     return str(node.ports[port])
 
 
+def place_of(node: DraftNode, port: str) -> str | None:
+    """The value of a target port when the node has it, else None."""
+    value = node.ports.get(port)
+    return None if value is None else str(value)
+
+
 @dataclass(frozen=True)
 class DraftGroup:
     label: str
