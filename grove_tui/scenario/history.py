@@ -14,7 +14,9 @@ the bundle keeps it.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import TypedDict
 
 from grove_tui.jsontypes import JSONMapping, JSONObject, Parsed
 
@@ -147,6 +149,14 @@ class RefineDiff:
                    tuple(str(n) for n in data.get("notes", ())))
 
 
+class StageTiming(TypedDict):
+    """One stage's entry in generation.json's "stages" (and a history step's): its time and tokens."""
+
+    seconds: float
+    prompt_tokens: int
+    completion_tokens: int
+
+
 @dataclass(frozen=True)
 class HistoryStep:
     """One follow-up applied: its number (the first sentence is 0), words, reading and diff."""
@@ -157,9 +167,9 @@ class HistoryStep:
     diff: RefineDiff
     seed: int = 0
     seconds: float = 0.0
-    stages: JSONMapping = field(default_factory=dict)
+    stages: Mapping[str, StageTiming] = field(default_factory=dict)
 
-    def to_dict(self) -> JSONObject:
+    def to_dict(self) -> dict[str, object]:  # JSON; object, because JSONValue cannot name StageTiming
         return {"number": self.number, "sentence": self.sentence, "reading": self.reading,
                 "diff": self.diff.to_dict(), "seed": self.seed, "seconds": self.seconds, "stages": self.stages}
 
