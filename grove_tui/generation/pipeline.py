@@ -149,6 +149,8 @@ def group_records(groups: Sequence[GroupPlan], reading: PromptReading | None, as
                                "field": g.field_id, "behavior": g.behavior}
         if g.spawn_zones:
             record["spawn_zones"] = dict(g.spawn_zones)
+        if g.added:
+            record["added"] = list(g.added)  # what the tree does beyond the reading: a follow-up's report lists it again
         index = getattr(g, "reading_index", None)
         if reading is not None and index is not None and 0 <= index < len(reading.groups):
             record["reading"] = own_reading(reading.groups[index], g.count).to_dict()
