@@ -211,7 +211,7 @@ for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
             "snooze",
-    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
+    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
               "mop sweep vacuum hoover scrub tidy clean",
     "follow": "follow accompany escort trail shadow",

@@ -70,11 +70,15 @@ def unaimed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
 
 
 def _after_robot(s: Sentence, r: int) -> str | None:
-    """Words right after the robot: "stands in the robot's way", "blocks its path"."""
+    """Words right after the robot: "stands in the robot's way", "blocks its path"; but out of its
+    way is making way ("steps out of its way", "out of the robot's path")."""
     for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
         if tuple(s.low[r + 1:r + 1 + len(phrase)]) == phrase or (
                 s.low[r] == "its" and tuple(s.low[r:r + len(phrase)]) == ("its", *phrase[1:])):
-            return interaction
+            before = r - 1
+            while before > 0 and s.low[before] in lx.DETERMINERS:
+                before -= 1
+            return "avoid" if before >= 1 and tuple(s.low[before - 1:before + 1]) == ("out", "of") else interaction
     return None
 
 

@@ -207,3 +207,23 @@ def test_dozens_of_people_after_a_robot_clause_are_their_own_group(worlds, world
     g, = reading.groups
     assert (g.label, g.intent, g.start) == (label, "walk", start) and g.count.value >= 12
     assert reading.robot is not None and "as" not in reading.robot.text.split() and "while" not in reading.robot.text.split()
+
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("office", "When the robot rolls in, a porter jumps out of the robot's way.", "avoid"),
+    ("mall", "When the robot comes, two teens move out of its path.", "avoid"),
+    ("hospital", "A nurse stands in the robot's way.", "block"),
+])
+def test_out_of_the_robots_way_is_making_way(worlds, world, prompt, interaction):
+    g = read(worlds, world, prompt).groups[-1]
+    assert g.robot_interaction == interaction
+
+
+@pytest.mark.parametrize("world,prompt,intent,seconds", [
+    ("residential", "Two neighbours natter on the balcony for a whole hour.", "converse", 3600),
+    ("office", "Two interns wait in the kitchen for a full minute.", "wait", 60),
+    ("hospital", "Three aunties chatter in the lobby for an entire hour.", "converse", 3600),
+])
+def test_a_whole_hour_and_chattering(worlds, world, prompt, intent, seconds):
+    g, = read(worlds, world, prompt).groups
+    assert (g.intent, g.wait_seconds) == (intent, seconds)
