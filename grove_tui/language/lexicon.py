@@ -241,7 +241,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
-LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel carry help assist "
+LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel roll carry help assist "
                           "support transport walk drag pull haul hurry rush".split())
 # "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
 # which is one pair.

@@ -130,6 +130,9 @@ class PlacePhrases(EmptiedZones):
             match = owned[0]
         if match is None and possessive:
             return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
+        if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
+                any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)):
+            return None  # "porters roll a patient in her bed": what carries the person moved, not a place
         if at >= 1 and k < s.n and low[k] in ("a", "an") and self.people.is_person_noun(at - 1) and \
                 (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
             # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person

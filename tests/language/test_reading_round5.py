@@ -227,3 +227,16 @@ def test_out_of_the_robots_way_is_making_way(worlds, world, prompt, interaction)
 def test_a_whole_hour_and_chattering(worlds, world, prompt, intent, seconds):
     g, = read(worlds, world, prompt).groups
     assert (g.intent, g.wait_seconds) == (intent, seconds)
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hospital", "Two nurses roll an old man in his bed from ward C to the ICU.", "ward_c", "intensive_care"),
+    ("residential", "Dad carries the baby in her cot from the kids room to the living room.", "child_bedroom",
+     "living_room"),
+    ("airport", "An agent rolls a passenger in his wheelchair from gate A1 to the baggage claim.", "gate_a1",
+     "baggage_claim"),
+])
+def test_a_person_rolled_or_carried_in_their_bed_is_a_second_group(worlds, world, prompt, start, destination):
+    mover, moved = read(worlds, world, prompt).groups
+    assert (mover.start, mover.destination, moved.start, moved.destination) == (start, destination, start, destination)
+    assert moved.intent == "follow" and moved.count.value == 1
