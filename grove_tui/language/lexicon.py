@@ -319,6 +319,8 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("stand", "in", "front", "of"): "block", ("get", "in", "the", "way"): "block", ("stand", "in", "the", "way"): "block",
     ("step", "in", "front", "of"): "block", ("walk", "behind"): "follow", ("look", "at"): "look",
     ("tag", "along"): "follow", ("turn", "to", "look"): "look", ("stop", "and", "stare"): "look",
+    ("turn", "their", "head"): "look", ("turn", "his", "head"): "look", ("turn", "her", "head"): "look",
+    ("crane", "their", "neck"): "look", ("crane", "his", "neck"): "look", ("crane", "her", "neck"): "look",
     ("keep", "clear"): "avoid", ("stay", "clear"): "avoid", ("give", "a", "wide", "berth"): "avoid",
     ("at", "the", "sight", "of"): "look", ("take", "a", "photo"): "look", ("take", "photo"): "look",
     ("take", "picture"): "look", ("take", "a", "picture"): "look", ("take", "a", "selfie"): "look",

@@ -91,6 +91,16 @@ class PlacePhrases(EmptiedZones):
         False for a place said to be where nobody goes ("instead of the lobby")."""
         s = self.s
         low = s.low
+        elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
+            k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
+        if elided and self.owner and \
+                (owned := self._owned(("room",), None, self.owner)) is not None:
+            # "the guards drink tea in their room while the director works in hers": her own room
+            self.context_zones.append(owned[0].zone)
+            if mentioned:
+                self.named.append(owned[0].name)
+            self.covered.add(k)
+            return Place(prep, at, (low[k],), owned[0], k + 1, *owned[1:], written=low[at])
         j = k
         if tuple(low[j:j + 2]) in (("one", "of"), ("each", "of"), ("any", "of"), ("some", "of")):
             j += 2  # "sits on one of the concourse benches": the benches

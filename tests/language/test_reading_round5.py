@@ -240,3 +240,23 @@ def test_a_person_rolled_or_carried_in_their_bed_is_a_second_group(worlds, world
     mover, moved = read(worlds, world, prompt).groups
     assert (mover.start, mover.destination, moved.start, moved.destination) == (start, destination, start, destination)
     assert moved.intent == "follow" and moved.count.value == 1
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("residential", "The parents sleep in their room while the kids play in theirs.", "child_bedroom"),
+    ("office", "Two interns chat in the kitchen while the manager waits in his.", "manager_office"),
+    ("museum", "Two guards drink tea in the café while the director reads in hers.", "director_office"),
+])
+def test_an_elided_possessive_is_the_persons_own_room(worlds, world, prompt, location):
+    g = read(worlds, world, prompt).groups[-1]
+    assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Four interns at their desks turn their heads as the robot goes by."),
+    ("hospital", "Two nurses turn their heads as the robot passes."),
+    ("mall", "Three shoppers crane their necks as the robot glides past."),
+])
+def test_turning_heads_at_the_robot_is_looking(worlds, world, prompt):
+    g = read(worlds, world, prompt).groups[-1]
+    assert (g.robot_interaction, g.robot_reaction) == ("look", "Surprised")
