@@ -53,6 +53,11 @@ class Mentions:
                     s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \
                     not self.people.third_person_verb(m.last + 1):
                 m = None  # "the first-class lounge", "a first-team pitch": a collective inside a compound modifier
+            if m is not None and found and m.collective is not None and m.first == m.last and m.first > 0 and \
+                    s.w[m.first - 1].pos in ("NOUN", "PROPN") and m.last + 1 < s.n and \
+                    s.low[m.last + 1] in lx.PLACE_PREPOSITIONS | {"round"} and \
+                    verb_lemma(s.low[m.first]) in ("crowd", "cluster", "huddle", "swarm", "throng", "mob", "flock"):
+                m = None  # "4-5 kids w/ notebooks crowd round the t-rex": the collective is their verb
             if m is None:
                 i += 1
                 continue

@@ -260,3 +260,13 @@ def test_an_elided_possessive_is_the_persons_own_room(worlds, world, prompt, loc
 def test_turning_heads_at_the_robot_is_looking(worlds, world, prompt):
     g = read(worlds, world, prompt).groups[-1]
     assert (g.robot_interaction, g.robot_reaction) == ("look", "Surprised")
+
+
+@pytest.mark.parametrize("world,prompt,label,location", [
+    ("hospital", "Six students with clipboards crowd around the nurses' station.", "student", "nurse_station"),
+    ("station", "Ten fans with scarves huddle by the departure board.", "fan", "departure_board"),
+    ("museum", "A dozen kids with worksheets cluster round the t-rex.", "kid", "t_rex_skeleton"),
+])
+def test_a_gathering_verb_after_what_people_carry_is_no_second_group(worlds, world, prompt, label, location):
+    g, = read(worlds, world, prompt).groups
+    assert (g.label, g.location) == (label, location)
