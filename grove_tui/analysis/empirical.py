@@ -48,10 +48,10 @@ LANE_SECONDS = 60.0
 
 
 @lru_cache(maxsize=1)
-def published() -> dict[str, Any]:
+def published() -> dict[str, Any]:  # Any: the package's own YAML of published figures, read as written
     """The published values (data/empirical.yaml)."""
     with open(DATA_FILE, encoding="utf-8") as handle:
-        data: dict[str, Any] = yaml.safe_load(handle)
+        data: dict[str, Any] = yaml.safe_load(handle)  # Any: YAML as loaded
     return data
 
 

@@ -10,6 +10,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from grove_tui.jsontypes import JSONObject
 from grove_tui.services.session import GroveSession
 
 _bundle_argument = click.argument("bundle", type=click.Path(exists=True, file_okay=False, path_type=Path))
@@ -88,7 +89,7 @@ def metrics(bundle: Path, as_json: bool) -> None:
     report, path, checked, grounding_path = written.metrics, written.metrics_file, written.grounding, \
         written.grounding_file
     if as_json:
-        data = report.to_dict()
+        data: JSONObject = dict(report.to_dict())
         if checked is not None:
             data["grounding"] = checked
         click.echo(json.dumps(data, indent=2, sort_keys=True, allow_nan=True, ensure_ascii=False))

@@ -9,14 +9,17 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Iterable, Sequence
-from typing import Any
+from collections.abc import Callable, Iterable, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numba
 import numpy as np
 
 from grove_tui.crowd import sfm
 from grove_tui.errors import CrowdError
+if TYPE_CHECKING:
+    from grove_tui.navigation.grid import OccupancyGrid
+    from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.crowd.sfm import (
     FACE_AGENT,
     FACE_POINT,
@@ -51,7 +54,10 @@ _ROBOT_INTERACTIONS = (ROBOT_AS_AGENT, ROBOT_AS_OBSTACLE, ROBOT_IGNORED, ROBOT_F
 _FACTOR_NAMES = ("goal", "obstacle", "social", "other")
 
 
-def _point(value: Any, what: str) -> tuple[float, float]:
+def _point(value: object, what: str) -> tuple[float, float]:
+    """`value` as a finite (x, y) pair; it is whatever the caller was handed, checked here."""
+    if not isinstance(value, Iterable):
+        raise CrowdError(f"{what} must be an (x, y) pair of numbers, got {value!r}")
     try:
         x, y = (float(v) for v in value)
     except (TypeError, ValueError) as exc:
@@ -72,7 +78,7 @@ class Crowd:
 
     def __init__(self, walls: np.ndarray | Sequence[Sequence[float]] | None = None,
                  params: SFMParams | None = None, dt: float = 0.05, seed: int = 0,
-                 grid: Any = None, periodic_x: tuple[float, float] | None = None,
+                 grid: OccupancyGrid | None = None, periodic_x: tuple[float, float] | None = None,
                  precision: str = "float64") -> None:
         """`periodic_x` = (x0, x1): x wraps from x1 back to x0 and people interact across that seam,
         as in a corridor with no ends (the fundamental diagram is measured in one). Walls along the
@@ -120,7 +126,7 @@ class Crowd:
         self._allocate(16, 4)
         self._robot = np.zeros(sfm.R_COUNT, dtype=np.float64)
         self._robot_path = np.zeros((0, 2), dtype=np.float64)
-        self._fields: list[Any] = []
+        self._fields: list[VelocityField] = []
         self._field_vectors = np.zeros((1, 1, 1, 2), dtype=np.float32)
         self._field_meta = np.zeros((1, sfm.F_COUNT), dtype=np.float64)
         self._field_meta[0, sfm.F_RES] = 1.0
@@ -413,7 +419,7 @@ class Crowd:
             self._anchor[i] = np.nan
         self._mode[i] = mode
 
-    def register_field(self, field: Any) -> int:
+    def register_field(self, field: VelocityField) -> int:
         """Register a VelocityField (origin, resolution, vectors (H, W, 2), exit); returns its id."""
         vectors = np.asarray(field.vectors, dtype=np.float32)
         if vectors.ndim != 3 or vectors.shape[2] != 2:
@@ -630,7 +636,7 @@ class Crowd:
             bad = np.flatnonzero(~np.isfinite(state).all(axis=1))
             raise CrowdError(f"agents {bad[:10].tolist()} have a non-finite position or velocity")
 
-    def _advance(self, kernel: Any, n: int) -> Any:
+    def _advance(self, kernel: Callable[..., Any], n: int) -> Any:  # Any: a numba kernel (no stubs), returning what that kernel returns
         k = self.n
         return kernel(
             n, self.dt, self._params_array,

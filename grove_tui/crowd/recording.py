@@ -15,12 +15,16 @@ import sqlite3
 import tempfile
 from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
-from typing import IO, Any
+from typing import IO, TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from grove_tui.files import atomic_file
 from grove_tui.errors import RecordingError
+
+if TYPE_CHECKING:
+    from grove_tui.crowd.crowd import Crowd
 
 ROW_DTYPE = np.dtype([
     ("frame", np.int64), ("t", np.float64), ("id", np.int64), ("x", np.float64), ("y", np.float64),
@@ -76,7 +80,7 @@ class TrajectoryRecorder:
             ids[mapped] = self._id_lookup[indices[mapped]]
         return ids
 
-    def record(self, crowd: Any) -> int:
+    def record(self, crowd: Crowd) -> int:
         """Append the crowd's current state (active agents, then the robot) as one frame; returns the frame."""
         active = np.flatnonzero(crowd.active)
         ids = self._agent_ids(active)
@@ -86,9 +90,9 @@ class TrajectoryRecorder:
         vy = crowd.vel[active, 1]
         yaw = crowd.yaw[active]
         group = crowd.group[active].astype(np.int64)
-        if self.include_robot and crowd.has_robot:
-            rp = crowd.robot_pos
-            rv = crowd.robot_vel
+        rp = crowd.robot_pos if self.include_robot else None  # None without a robot too
+        rv = crowd.robot_vel if self.include_robot else None
+        if rp is not None and rv is not None:
             ids = np.concatenate([[ROBOT_ID], ids])
             x = np.concatenate([[rp[0]], x])
             y = np.concatenate([[rp[1]], y])
@@ -98,7 +102,8 @@ class TrajectoryRecorder:
             group = np.concatenate([[-1], group])
         return self.record_frame(crowd.time, ids, x, y, vx, vy, yaw, group)
 
-    def record_frame(self, t: float, ids: Any, x: Any, y: Any, vx: Any, vy: Any, yaw: Any, group: Any) -> int:
+    def record_frame(self, t: float, ids: ArrayLike, x: ArrayLike, y: ArrayLike, vx: ArrayLike, vy: ArrayLike,
+                     yaw: ArrayLike, group: ArrayLike) -> int:
         """Append one frame of equally long per-person columns; returns its frame number."""
         columns = [np.asarray(c) for c in (ids, x, y, vx, vy, yaw, group)]
         n = columns[0].shape[0]

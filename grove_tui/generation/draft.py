@@ -45,11 +45,15 @@ import math
 import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, TypeAlias
 
 from grove_tui.errors import DraftError
 from grove_tui.limits import MAX_GROUP_COUNT, MAX_GROUPS
+from grove_tui.jsontypes import JSONObject, Parsed
 from grove_tui.llm.grammar import GbnfRules, bounded_repeat, gbnf_literal
+
+if TYPE_CHECKING:
+    from grove_tui.bt.format.manifest import NodeSpec, PortSpec
 
 LABEL_MAX_LENGTH = 24
 STRING_PORT_MAX_LENGTH = 48
@@ -76,16 +80,31 @@ _SENSIBLE_INTS = (-1, 0, 1, 2, 3, 4, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 3
 _ENUMERATE_ALL_INTS_UP_TO = 24
 
 
+# A port value as a draft writes it: a place or text, a number, true or false.
+DraftValue: TypeAlias = str | int | float | bool
+
+
 @dataclass(frozen=True)
 class DraftNode:
     node: str
-    ports: dict[str, Any] = field(default_factory=dict)  # only the ports the model wrote
+    ports: dict[str, DraftValue] = field(default_factory=dict)  # only the ports the model wrote
     children: tuple[DraftNode, ...] = ()
 
     def walk(self) -> Iterable[DraftNode]:
         yield self
         for child in self.children:
             yield from child.walk()
+
+
+def place_at(node: DraftNode, port: str) -> str:
+    """The value of a target port: always a place name (the parser takes only the selected places there)."""
+    return str(node.ports[port])
+
+
+def place_of(node: DraftNode, port: str) -> str | None:
+    """The value of a target port when the node has it, else None."""
+    value = node.ports.get(port)
+    return None if value is None else str(value)
 
 
 @dataclass(frozen=True)
@@ -103,7 +122,7 @@ class Draft:
     def node_types(self) -> set[str]:
         return {node.node for group in self.groups for node in group.tree.walk()}
 
-    def places(self, nodes: Mapping[str, Any] | None = None) -> set[str]:
+    def places(self, nodes: Mapping[str, NodeSpec] | None = None) -> set[str]:
         """Every RoI name the draft uses: spawns and the values of target-typed ports."""
         table = _manifest() if nodes is None else nodes
         names = {group.spawn for group in self.groups}
@@ -112,17 +131,17 @@ class Draft:
                 spec = table.get(node.node)
                 for port in spec.ports if spec is not None else ():
                     if port.type == "target" and port.name in node.ports:
-                        names.add(node.ports[port.name])
+                        names.add(place_at(node, port.name))
         return names
 
 
-def _manifest() -> Mapping[str, Any]:
+def _manifest() -> Mapping[str, NodeSpec]:
     from grove_tui.bt.format.manifest import NODES
 
     return NODES
 
 
-def _specs(node_names: Iterable[str], nodes: Mapping[str, Any] | None) -> dict[str, Any]:
+def _specs(node_names: Iterable[str], nodes: Mapping[str, NodeSpec] | None) -> dict[str, NodeSpec]:
     table = _manifest() if nodes is None else nodes
     names = list(dict.fromkeys(node_names))
     unknown = [name for name in names if name not in table]
@@ -133,13 +152,13 @@ def _specs(node_names: Iterable[str], nodes: Mapping[str, Any] | None) -> dict[s
     return {name: table[name] for name in names}
 
 
-def written_ports(spec: Any) -> tuple[Any, ...]:
+def written_ports(spec: NodeSpec) -> tuple[PortSpec, ...]:
     """The ports of a node the model writes in a draft, in manifest order."""
     return tuple(port for port in spec.ports
                  if port.direction == "in" and not port.auto and port.type in WRITTEN_TYPES)
 
 
-def _sensible_ints(port: Any) -> list[int]:
+def _sensible_ints(port: PortSpec) -> list[int]:
     low = int(port.min) if port.min is not None else 0
     high = int(port.max) if port.max is not None else 100
     if high - low <= _ENUMERATE_ALL_INTS_UP_TO:
@@ -150,7 +169,7 @@ def _sensible_ints(port: Any) -> list[int]:
     return sorted(values)
 
 
-def _sensible_floats(port: Any) -> list[float]:
+def _sensible_floats(port: PortSpec) -> list[float]:
     low = float(port.min) if port.min is not None else 0.0
     high = float(port.max) if port.max is not None else 3600.0
     values = {round(low, 4), round(high, 4)} | {value for value in _SENSIBLE_FLOATS if low <= value <= high}
@@ -160,7 +179,8 @@ def _sensible_floats(port: Any) -> list[float]:
 
 
 def _check_request(node_names: Iterable[str], roi_names: Iterable[str], max_groups: int, max_count: int,
-                   max_depth: int, max_children: int, nodes: Mapping[str, Any] | None) -> tuple[dict[str, Any], list[str]]:
+                   max_depth: int, max_children: int,
+                   nodes: Mapping[str, NodeSpec] | None) -> tuple[dict[str, NodeSpec], list[str]]:
     """The node specs and place names of one request, refused when no bounded draft could be written."""
     specs = _specs(node_names, nodes)
     rois = list(dict.fromkeys(roi_names))
@@ -185,11 +205,11 @@ def _check_request(node_names: Iterable[str], roi_names: Iterable[str], max_grou
     return specs, rois
 
 
-def _required(spec: Any) -> tuple[Any, ...]:
+def _required(spec: NodeSpec) -> tuple[PortSpec, ...]:
     return tuple(port for port in written_ports(spec) if port.default is None)
 
 
-def _optional(spec: Any) -> tuple[Any, ...]:
+def _optional(spec: NodeSpec) -> tuple[PortSpec, ...]:
     return tuple(port for port in written_ports(spec) if port.default is not None)
 
 
@@ -212,14 +232,14 @@ def _alternatives(literals: Iterable[str]) -> str:
 
 
 class _GrammarBuilder:
-    def __init__(self, specs: dict[str, Any], rois: list[str], max_count: int, max_depth: int, max_children: int):
+    def __init__(self, specs: dict[str, NodeSpec], rois: list[str], max_count: int, max_depth: int, max_children: int):
         self.specs, self.rois = specs, rois
         self.max_count, self.max_depth, self.max_children = max_count, max_depth, max_children
         self.rules = GbnfRules()
         self.sep = self.rules.add("sep", '"," " "?')
         self.place = self.rules.add("place", _alternatives(rois))
 
-    def value(self, spec: Any, port: Any) -> str:
+    def value(self, spec: NodeSpec, port: PortSpec) -> str:
         if port.choices:
             return self.rules.add(f"{spec.name}-{port.name}", _alternatives(map(str, port.choices)))
         if port.type == "target":
@@ -235,10 +255,10 @@ class _GrammarBuilder:
             return self.rules.add("text", f'"\\"" ({_bounded(char, 1, STRING_PORT_MAX_LENGTH)})? "\\""')
         raise DraftError(f"port {port.name!r} has type {port.type!r}, which a draft never writes")
 
-    def keyed(self, spec: Any, port: Any) -> str:
+    def keyed(self, spec: NodeSpec, port: PortSpec) -> str:
         return f"{gbnf_literal(port.name + '=')} {self.value(spec, port)}"
 
-    def optional_ports(self, spec: Any) -> str | None:
+    def optional_ports(self, spec: NodeSpec) -> str | None:
         """One or more optional ports in manifest order, comma-separated: one alternative per first port written."""
         ports = _optional(spec)
         if not ports:
@@ -249,7 +269,7 @@ class _GrammarBuilder:
             options.append(f"{self.keyed(spec, port)} {rest}".strip())
         return self.rules.add(f"{spec.name}-options", " | ".join(f"({option})" for option in options))
 
-    def node(self, spec: Any, level: int) -> str | None:
+    def node(self, spec: NodeSpec, level: int) -> str | None:
         """The rule of `spec` at tree level `level`; None for a branch that has no room for children there."""
         branch = spec.category in BRANCH_CATEGORIES
         if branch and level >= self.max_depth:
@@ -291,14 +311,15 @@ class _GrammarBuilder:
 
 
 def draft_grammar(node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6, max_count: int = 60,
-                  max_depth: int = 3, max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> str:
+                  max_depth: int = 3, max_children: int = MAX_CHILDREN,
+                  nodes: Mapping[str, NodeSpec] | None = None) -> str:
     """The GBNF (root rule `root`) of every draft this request allows; recursion is unrolled into one rule per tree level."""
     specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
     return _GrammarBuilder(specs, rois, max_count, max_depth, max_children).grammar(max_groups)
 
 
 def tree_grammar(node_names: Iterable[str], roi_names: Iterable[str], groups: int, max_depth: int = 3,
-                 max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> str:
+                 max_children: int = MAX_CHILDREN, nodes: Mapping[str, NodeSpec] | None = None) -> str:
     """The GBNF of a lean draft: exactly `groups` lines, each the tree of one group (GroupHead gives the rest)."""
     specs, rois = _check_request(node_names, roi_names, max(1, groups), 1, max_depth, max_children, nodes)
     return _GrammarBuilder(specs, rois, 1, max_depth, max_children).trees(groups)
@@ -338,7 +359,7 @@ def _shown(token: _Token) -> str:
 
 
 class _Parser:
-    def __init__(self, specs: dict[str, Any], rois: list[str], max_groups: int, max_count: int, max_depth: int,
+    def __init__(self, specs: dict[str, NodeSpec], rois: list[str], max_groups: int, max_count: int, max_depth: int,
                  max_children: int):
         self.specs, self.rois = specs, rois
         self.roi_set = set(rois)
@@ -432,7 +453,7 @@ class _Parser:
         if branch and level >= self.max_depth:
             raise self.fail(path, f"{kind} needs children, but the tree may only be {self.max_depth} levels deep", token)
         required, ports = _required(spec), {port.name: port for port in written_ports(spec)}
-        values: dict[str, Any] = {}
+        values: dict[str, DraftValue] = {}
         children: list[DraftNode] = []
         if self.peek().value == "(" and self.peek().kind == "punct":
             self.take()
@@ -478,7 +499,7 @@ class _Parser:
         ordered = {port.name: values[port.name] for port in written_ports(spec) if port.name in values}
         return DraftNode(kind, ordered, tuple(children))
 
-    def value(self, port: Any, path: str) -> Any:
+    def value(self, port: PortSpec, path: str) -> DraftValue:
         token = self.take()
         if port.choices:
             if token.value not in port.choices:
@@ -509,13 +530,15 @@ class _Parser:
         if not math.isfinite(value):
             raise self.fail(path, f"expected a finite number, found {token.value}", token)
         if (port.min is not None and value < port.min) or (port.max is not None and value > port.max):
-            raise self.fail(path, f"{token.value} is outside {number_text(port.min)}..{number_text(port.max)}", token)
+            low = number_text(port.min) if port.min is not None else ""
+            high = number_text(port.max) if port.max is not None else ""
+            raise self.fail(path, f"{token.value} is outside {low}..{high}", token)
         return int(token.value) if port.type == "int" else value
 
 
 def parse_draft(text: str, node_names: Iterable[str], roi_names: Iterable[str], max_groups: int = 6,
                 max_count: int = 60, max_depth: int = 3, max_children: int = MAX_CHILDREN,
-                nodes: Mapping[str, Any] | None = None) -> Draft:
+                nodes: Mapping[str, NodeSpec] | None = None) -> Draft:
     """Strictly parse and validate the model's draft; DraftError names the line, column and the draft path."""
     specs, rois = _check_request(node_names, roi_names, max_groups, max_count, max_depth, max_children, nodes)
     return _Parser(specs, rois, max_groups, max_count, max_depth, max_children).draft(text)
@@ -531,7 +554,8 @@ class GroupHead:
 
 
 def parse_trees(text: str, heads: Sequence[GroupHead], node_names: Iterable[str], roi_names: Iterable[str],
-                max_depth: int = 3, max_children: int = MAX_CHILDREN, nodes: Mapping[str, Any] | None = None) -> Draft:
+                max_depth: int = 3, max_children: int = MAX_CHILDREN,
+                nodes: Mapping[str, NodeSpec] | None = None) -> Draft:
     """Strictly parse a lean draft (one tree per line, in the order of `heads`) into a Draft.
 
     A line that still carries the full draft's `COUNT LABEL from SPAWN:` (an answer written without the
@@ -542,7 +566,7 @@ def parse_trees(text: str, heads: Sequence[GroupHead], node_names: Iterable[str]
 
 # ---- writing drafts ----------------------------------------------------------------------------
 
-def _value_text(port: Any, value: Any) -> str:
+def _value_text(port: PortSpec | None, value: object) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, (int, float)):
@@ -552,7 +576,7 @@ def _value_text(port: Any, value: Any) -> str:
     return str(value)
 
 
-def tree_text(node: Mapping[str, Any], nodes: Mapping[str, Any] | None = None) -> str:
+def tree_text(node: Parsed, nodes: Mapping[str, NodeSpec] | None = None) -> str:
     """A draft node given as a mapping ({"node": ..., ports..., "children": [...]}: node_db templates) in draft syntax.
 
     Written as the model must write it, without checking the values: templates hold placeholders
@@ -573,12 +597,12 @@ def tree_text(node: Mapping[str, Any], nodes: Mapping[str, Any] | None = None) -
     return f"{name}({', '.join(items)})" if items else name
 
 
-def node_to_text(node: DraftNode, nodes: Mapping[str, Any] | None = None) -> str:
+def node_to_text(node: DraftNode, nodes: Mapping[str, NodeSpec] | None = None) -> str:
     """One draft node (and its subtree) as the model writes it."""
     return tree_text(node_to_dict(node), nodes)
 
 
-def draft_to_text(draft: Draft, nodes: Mapping[str, Any] | None = None) -> str:
+def draft_to_text(draft: Draft, nodes: Mapping[str, NodeSpec] | None = None) -> str:
     """The draft as the model writes it, one line per group (parse_draft(draft_to_text(d)) == d)."""
     unwritable = [group.label for group in draft.groups if not _LABEL.match(group.label)]
     if unwritable:
@@ -588,8 +612,8 @@ def draft_to_text(draft: Draft, nodes: Mapping[str, Any] | None = None) -> str:
                      for group in draft.groups)
 
 
-def node_to_dict(node: DraftNode) -> dict[str, Any]:
-    result: dict[str, Any] = {"node": node.node, **node.ports}
+def node_to_dict(node: DraftNode) -> JSONObject:
+    result: JSONObject = {"node": node.node, **node.ports}
     if node.children:
         result["children"] = [node_to_dict(child) for child in node.children]
     return result

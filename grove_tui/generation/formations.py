@@ -13,12 +13,12 @@ import dataclasses
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TypedDict
 
 import numpy as np
 
 from grove_tui.crowd.coordination import ServiceQueue, conversation_radius, queue_line_direction, queue_spacing
-from grove_tui.bt.format.document import TreeDocument
+from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.crowd.leaves.grove import aside_spot
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.world.model import World
@@ -63,7 +63,7 @@ class GridSpace:
         return (float(found[0]), float(found[1])) if found is not None else (float(x), float(y))
 
 
-def _number(element: Any, port: str) -> float:
+def _number(element: TreeElement, port: str) -> float:
     text = element.get(port)
     if text is None:
         spec = NODES[element.id].port(port)
@@ -71,7 +71,7 @@ def _number(element: Any, port: str) -> float:
     return float(text)
 
 
-def _point(world: World, element: Any, name: str | None, x_port: str = "x", y_port: str = "y") -> Point | None:
+def _point(world: World, element: TreeElement, name: str | None, x_port: str = "x", y_port: str = "y") -> Point | None:
     x, y = element.get(x_port), element.get(y_port)
     if x is not None and y is not None:
         return (float(x), float(y))
@@ -84,11 +84,22 @@ def _point(world: World, element: Any, name: str | None, x_port: str = "x", y_po
     return None
 
 
+class _QueueTally(TypedDict):
+    spacing: float
+    people: int
+    staying: int  # people whose tree ends in the queue: served, they stand aside
+
+
+class _CircleTally(TypedDict):
+    name: str
+    people: int
+
+
 def predict_formations(world: World, grid: OccupancyGrid, trees: Iterable[TreeDocument], goals: Sequence[Point] = ()) -> list[Formation]:
     """Every queue and conversation circle the agents' trees will form, in the order they first appear."""
     space = GridSpace(world, grid)
-    queues: dict[tuple[str, Point], dict[str, Any]] = {}
-    circles: dict[Point, dict[str, Any]] = {}
+    queues: dict[tuple[str, Point], _QueueTally] = {}
+    circles: dict[Point, _CircleTally] = {}
     for document in trees:
         elements = list(document.nodes())
         last_leaf = next((e for e in reversed(elements) if not e.children), None)
@@ -107,8 +118,8 @@ def predict_formations(world: World, grid: OccupancyGrid, trees: Iterable[TreeDo
                 centre = _conversation_centre(world, element, goals)
                 if centre is None:
                     continue
-                entry = circles.setdefault(centre, {"name": element.get("target") or "a spot", "people": 0})
-                entry["people"] += 1
+                circle = circles.setdefault(centre, {"name": element.get("target") or "a spot", "people": 0})
+                circle["people"] += 1
     formations = []
     for (name, point), entry in queues.items():
         spacing = queue_spacing(entry["spacing"], [PERSON_RADIUS])
@@ -117,13 +128,13 @@ def predict_formations(world: World, grid: OccupancyGrid, trees: Iterable[TreeDo
         slots = tuple(queue.slot_point(k) for k in range(entry["people"]))
         spots = tuple(aside_spot(space, queue) for _ in range(entry["staying"]))
         formations.append(Formation("queue", name, slots, spots))  # slot 0 is the service point
-    for centre, entry in circles.items():
-        radius = conversation_radius(entry["people"]) + PERSON_RADIUS
-        formations.append(Formation("conversation", entry["name"], (centre,), radius=radius))
+    for centre, circle in circles.items():
+        radius = conversation_radius(circle["people"]) + PERSON_RADIUS
+        formations.append(Formation("conversation", circle["name"], (centre,), radius=radius))
     return formations
 
 
-def _conversation_centre(world: World, element: Any, goals: Sequence[Point]) -> Point | None:
+def _conversation_centre(world: World, element: TreeElement, goals: Sequence[Point]) -> Point | None:
     if element.id == "Converse":
         return _point(world, element, element.get("target"))
     centre = _point(world, element, None, "center_x", "center_y")
@@ -149,7 +160,7 @@ def formation_distance(formation: Formation, points: np.ndarray) -> np.ndarray:
     return np.maximum(best - formation.radius, 0.0)
 
 
-def block_formations(grid: OccupancyGrid, formations: Sequence[Formation], clearance: float) -> Any:
+def block_formations(grid: OccupancyGrid, formations: Sequence[Formation], clearance: float) -> OccupancyGrid:
     """A copy of the grid with every cell closer than `clearance` to a formation's bodies occupied."""
     occupied = grid.occupied.copy()
     res = float(grid.resolution)

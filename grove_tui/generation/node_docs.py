@@ -19,12 +19,16 @@ import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import yaml
 
 from grove_tui.errors import NodeDbError
 from grove_tui.generation.draft import tree_text, written_ports
+from grove_tui.jsontypes import JSONObject, Parsed
+
+if TYPE_CHECKING:
+    from grove_tui.bt.format.manifest import NodeSpec, PortSpec
 
 RETRIEVAL_PRESETS = ("emergency", "queuing", "normal", "vanilla")
 # Control nodes come from the preset (`nodes.control`), never from retrieval, so they get documents
@@ -54,7 +58,7 @@ class Template:
     description: str
     keywords: tuple[str, ...]
     presets: frozenset[str]
-    tree: dict[str, Any]
+    tree: Parsed  # the template's draft tree as YAML holds it, checked by template_problems
     nodes: tuple[str, ...]
     source: Path
 
@@ -82,7 +86,7 @@ def split_camel(name: str) -> str:
 # --------------------------------------------------------------------------- node documents
 
 
-def _load_yaml(path: Path) -> Any:
+def _load_yaml(path: Path) -> object:
     try:
         return yaml.safe_load(path.read_text(encoding="utf-8"))
     except yaml.YAMLError as exc:
@@ -91,7 +95,7 @@ def _load_yaml(path: Path) -> Any:
         raise NodeDbError(f"{path}: cannot read: {exc}") from exc
 
 
-def load_notes(node_db_dir: Path) -> dict[str, dict[str, Any]]:
+def load_notes(node_db_dir: Path) -> dict[str, Parsed]:
     path = node_db_dir / "notes.yaml"
     if not path.exists():
         return {}
@@ -107,9 +111,9 @@ def load_notes(node_db_dir: Path) -> dict[str, dict[str, Any]]:
     return data
 
 
-def _range_text(port: Any) -> str:
+def _range_text(port: PortSpec) -> str:
     parts = []
-    if getattr(port, "choices", None):
+    if port.choices:
         parts.append("one of " + ", ".join(str(c) for c in port.choices))
     lo, hi = getattr(port, "min", None), getattr(port, "max", None)
     if lo is not None and hi is not None:
@@ -131,7 +135,7 @@ _TYPE_WORDS = {
 }
 
 
-def _example_value(port: Any) -> Any:
+def _example_value(port: PortSpec) -> int | float | bool | str:
     if port.default is not None:
         return port.default
     if port.type == "target":
@@ -145,9 +149,9 @@ def _example_value(port: Any) -> Any:
     return f"<{port.name}>"
 
 
-def default_example(spec: Any) -> dict[str, Any]:
+def default_example(spec: NodeSpec) -> JSONObject:
     """The smallest draft node that uses this node: every required port, nothing automatic."""
-    example: dict[str, Any] = {"node": spec.name}
+    example: JSONObject = {"node": spec.name}
     for port in spec.ports:
         if port.auto or getattr(port, "direction", "in") == "out":
             continue
@@ -158,7 +162,7 @@ def default_example(spec: Any) -> dict[str, Any]:
     return example
 
 
-def _category_constraints(spec: Any) -> list[str]:
+def _category_constraints(spec: NodeSpec) -> list[str]:
     rules = {
         "decorator": "Decorator: exactly one child in `children`.",
         "control": "Control node: one or more children in `children`, ticked in order.",
@@ -172,7 +176,7 @@ def _category_constraints(spec: Any) -> list[str]:
     return [rule for rule in found if rule]
 
 
-def render_node_document(spec: Any, note: Mapping[str, Any] | None = None) -> str:
+def render_node_document(spec: NodeSpec, note: Parsed | None = None) -> str:
     """The generated markdown for one manifest node: front matter for retrieval, body for the model."""
     note = note or {}
     synonyms = list(dict.fromkeys([*getattr(spec, "synonyms", ()), *note.get("synonyms", [])]))
@@ -222,13 +226,13 @@ _CARD_TYPE_WORDS = {"target": "place", "agent": "group label", "agents": "group 
                     "bool": "true|false"}
 
 
-def _card_number(value: Any) -> str:
+def _card_number(value: object) -> str:
     if isinstance(value, float) and value.is_integer():
         return str(int(value))
     return json.dumps(value)
 
 
-def _card_kind(port: Any) -> str:
+def _card_kind(port: PortSpec) -> str:
     if port.choices:
         return "|".join(str(c) for c in port.choices)
     if port.type in ("int", "float") and port.min is not None and port.max is not None:
@@ -236,7 +240,7 @@ def _card_kind(port: Any) -> str:
     return str(_CARD_TYPE_WORDS.get(port.type, port.type))
 
 
-def node_signature(spec: Any) -> str:
+def node_signature(spec: NodeSpec) -> str:
     """The node as the draft writes it (generation/draft.py), required values and children in place, then
     its optional ports: `GoTo(<place>) optional tolerance=0.05..5 (default 0.3)`.
 
@@ -267,7 +271,7 @@ def _first_sentence(text: str) -> str:
     return text if end < 0 else text[: end + 1]
 
 
-def node_card(spec: Any, note: Mapping[str, Any] | None = None) -> str:
+def node_card(spec: NodeSpec, note: Parsed | None = None) -> str:
     """One line for the bt model: signature, when to use it, the notes' constraints."""
     note = note or {}
     use = " ".join(str(note["use_when"]).split()) if note.get("use_when") else _first_sentence(spec.description)
@@ -282,13 +286,13 @@ def template_card(template: Template) -> str:
     return f"Template '{template.title}': {tree_text(template.tree)}"
 
 
-def _manifest_nodes() -> Mapping[str, Any]:
+def _manifest_nodes() -> Mapping[str, NodeSpec]:
     from grove_tui.bt.format.manifest import NODES
 
     return NODES
 
 
-def expected_node_documents(node_db_dir: Path, nodes: Mapping[str, Any] | None = None) -> dict[str, str]:
+def expected_node_documents(node_db_dir: Path, nodes: Mapping[str, NodeSpec] | None = None) -> dict[str, str]:
     nodes = _manifest_nodes() if nodes is None else nodes
     notes = load_notes(node_db_dir)
     unknown = sorted(set(notes) - set(nodes))
@@ -297,7 +301,7 @@ def expected_node_documents(node_db_dir: Path, nodes: Mapping[str, Any] | None =
     return {name: render_node_document(spec, notes.get(name)) for name, spec in sorted(nodes.items())}
 
 
-def sync_node_documents(node_db_dir: Path, nodes: Mapping[str, Any] | None = None) -> tuple[list[str], list[str]]:
+def sync_node_documents(node_db_dir: Path, nodes: Mapping[str, NodeSpec] | None = None) -> tuple[list[str], list[str]]:
     """Write nodes/<Name>.md for every manifest node, remove documents of nodes that no longer exist.
 
     Returns (written, removed) names; unchanged documents are not rewritten.
@@ -321,7 +325,7 @@ def sync_node_documents(node_db_dir: Path, nodes: Mapping[str, Any] | None = Non
     return written, removed
 
 
-def check_node_documents(node_db_dir: Path, nodes: Mapping[str, Any] | None = None) -> list[str]:
+def check_node_documents(node_db_dir: Path, nodes: Mapping[str, NodeSpec] | None = None) -> list[str]:
     """Every problem that makes the node documents disagree with the manifest, one line each."""
     nodes = _manifest_nodes() if nodes is None else nodes
     problems = []
@@ -377,14 +381,14 @@ def load_templates(node_db_dir: Path) -> list[Template]:
     return templates
 
 
-def tree_nodes(tree: Mapping[str, Any]) -> list[Mapping[str, Any]]:
+def tree_nodes(tree: Parsed) -> list[Parsed]:
     found = [tree]
     for child in tree.get("children", ()):
         found += tree_nodes(child)
     return found
 
 
-def template_problems(template: Template, nodes: Mapping[str, Any]) -> list[str]:
+def template_problems(template: Template, nodes: Mapping[str, NodeSpec]) -> list[str]:
     """Names or ports the template uses that the manifest does not have, and other inconsistencies."""
     problems = []
     where = template.source
@@ -484,6 +488,8 @@ def load_priorities(node_db_dir: Path) -> dict[str, frozenset[str]]:
     if not path.exists():
         return {}
     data = _load_yaml(path) or {}
+    if not isinstance(data, dict):
+        raise NodeDbError(f"{path}: expected a mapping of preset -> prioritise")
     priorities = {}
     for preset, entry in data.items():
         if preset not in RETRIEVAL_PRESETS:

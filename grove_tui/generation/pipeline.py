@@ -21,7 +21,7 @@ import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, NotRequired, TypedDict, cast
 
 from grove_tui.bt.format.document import TreeFiles
 from grove_tui.bt.format.xml import validate_document
@@ -29,20 +29,27 @@ from grove_tui.navigation.grid import OccupancyGrid, build_grid
 from grove_tui.paths import worlds_dir
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.draft import Draft, node_to_dict
+from grove_tui.jsontypes import JSONObject
 from grove_tui.generation.events import AttemptStarted, Event, StageFinished, StageStarted, TokenStreamed
 from grove_tui.generation.planning import OperationalPlan, plan_operational
-from grove_tui.generation.postprocess import PostProcessed, check_population, postprocess
+from grove_tui.generation.postprocess import GroupPlan, PostProcessed, check_population, postprocess
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import RobotRequest
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.language.model import Count, GroupReading, PromptReading, effective_counts
 from grove_tui.language.reading import read_prompt
 from grove_tui.generation.rois import RoISelection, describe_selection, refine_with_model, select_rois
+from grove_tui.scenario.history import StageTiming
 from grove_tui.scenario.model import Scenario
-from grove_tui.generation.synthesis import describe_documents, draft_summary, prepare_request, synthesize
+from grove_tui.generation.synthesis import (SynthesisRequest, SynthesisResult, describe_documents, draft_summary,
+                                           prepare_request, synthesize)
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.errors import BTError, Cancelled, GenerationError, PromptError
 from grove_tui.world.model import World
+
+if TYPE_CHECKING:
+    from grove_tui.generation.retrieval import NodeRetriever, RetrievedNode
+    from grove_tui.llm.local import LocalLLM
 
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
 MAX_PROMPT_CHARS = 2000
@@ -89,7 +96,7 @@ class GenerationResult:
     trees: TreeFiles  # relative path ("trees/agent_1.xml") -> the agent's tree, written as XML only into files
     fields: dict[str, VelocityField]
     grid: OccupancyGrid
-    report: dict[str, Any] = field(default_factory=dict)
+    report: dict[str, Any] = field(default_factory=dict)  # Any: generation.json, built and read back key by key
     # The draft and prompt analysis the trees came from; None for results rebuilt from a bundle.
     inputs: PlanInputs | None = field(default=None, repr=False, compare=False)
     # Other text files of the bundle, written verbatim beside the trees (an imported HuNavSim scenario's
@@ -103,26 +110,47 @@ class Drafted:
 
     reading: PromptReading
     selection: RoISelection
-    retrieved: tuple[Any, ...]
-    request: Any  # synthesis.SynthesisRequest
-    synthesis: Any  # synthesis.SynthesisResult
+    retrieved: tuple[RetrievedNode, ...]
+    request: SynthesisRequest
+    synthesis: SynthesisResult
 
 
 def _no_event(event: Event) -> None:
     """The event sink of a caller that listens to nothing."""
 
 
-def group_records(groups: Sequence[Any], reading: PromptReading | None, asked_by: int = 0) -> list[dict[str, Any]]:
+class GroupRecord(TypedDict):
+    """One entry of generation.json's "groups" (group_records writes it, generation/scene.py reads it back)."""
+
+    label: str
+    count: int
+    spawn: str
+    members: list[int]
+    field: str | None  # the velocity field the group follows
+    behavior: str  # HuNavSim reaction to the robot
+    spawn_zones: NotRequired[dict[str, int]]  # an evacuation spread over several zones: zone -> people
+    reading: NotRequired[JSONObject]  # the GroupReading it realises (to_dict), its count the group's people
+    # Always written; NotRequired because older bundles' records lack them (their readers default them).
+    tree: NotRequired[JSONObject]  # its tree before ids and points (draft.node_to_dict)
+    asked_by: NotRequired[int]  # the sentence that asked for it: 0 the first, k the k-th follow-up
+    changed_by: NotRequired[list[int]]  # the follow-ups that changed it
+    # Read by refine's grounding, never written here: a kept group's extras are in the grounding report only.
+    added: NotRequired[list[str]]
+
+
+def group_records(groups: Sequence[GroupPlan], reading: PromptReading | None, asked_by: int = 0) -> list[GroupRecord]:
     """generation.json's "groups": per post-processed group its label, count, spawn, members and field,
     and what a refinement needs to edit it without the model (generation/refine.py): the reading it
     realises (its count the group's own people), its tree before ids and points (draft form), and the
     sentence that asked for it (0: the first)."""
     records = []
     for g in groups:
-        record: dict[str, Any] = {"label": g.label, "count": g.count, "spawn": g.spawn, "members": list(g.member_ids),
-                                  "field": g.field_id, "behavior": g.behavior}
+        record: GroupRecord = {"label": g.label, "count": g.count, "spawn": g.spawn, "members": list(g.member_ids),
+                               "field": g.field_id, "behavior": g.behavior}
         if g.spawn_zones:
             record["spawn_zones"] = dict(g.spawn_zones)
+        if g.added:
+            record["added"] = list(g.added)  # what the tree does beyond the reading: a follow-up's report lists it again
         index = getattr(g, "reading_index", None)
         if reading is not None and index is not None and 0 <= index < len(reading.groups):
             record["reading"] = own_reading(reading.groups[index], g.count).to_dict()
@@ -144,7 +172,7 @@ class StageClock:
     """Times stages into `stages`, emits their events and checks `cancel` before each one starts."""
 
     def __init__(self, emit: Callable[[Event], None], cancel: threading.Event | None,
-                 stages: dict[str, dict[str, Any]]) -> None:
+                 stages: dict[str, StageTiming]) -> None:
         self.emit, self.cancel, self.stages = emit, cancel, stages
 
     def begin(self, stage: str) -> float:
@@ -184,7 +212,7 @@ def world_reference(world: World) -> str:
     return str(source)
 
 
-def _model_name(llm: Any) -> str:
+def _model_name(llm: object) -> str:
     path = getattr(llm, "path", None)
     return Path(path).name if path is not None else type(llm).__name__
 
@@ -192,8 +220,8 @@ def _model_name(llm: Any) -> str:
 class GenerationPipeline:
     """One world and preset, models loaded once; `run` many prompts."""
 
-    def __init__(self, world: World, preset: Preset, llm_roi: Any | None, llm_bt: Any, retriever: Any,
-                 resolution: float | None = None, robot: RobotRequest | None = None,
+    def __init__(self, world: World, preset: Preset, llm_roi: LocalLLM | None, llm_bt: LocalLLM | None,
+                 retriever: NodeRetriever | None, resolution: float | None = None, robot: RobotRequest | None = None,
                  plan_cache: PlanCache | None = None, max_tokens: int = 512) -> None:
         self.world = world
         self.preset = preset
@@ -235,7 +263,7 @@ class GenerationPipeline:
         if len(prompt) > MAX_PROMPT_CHARS:
             raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
         preset, world = self.preset, self.world
-        stages: dict[str, dict[str, Any]] = {}
+        stages: dict[str, StageTiming] = {}
         clock = StageClock(emit, cancel, stages)
         started = time.perf_counter()
 
@@ -293,21 +321,24 @@ class GenerationPipeline:
         check_population(world, self.grid, preset, selection, reading)
         clock.end("rois", t0, ", ".join(selection.zones), *roi_tokens)
 
+        retriever, llm_bt = self.retriever, self.llm_bt
+        if retriever is None or llm_bt is None:
+            raise GenerationError("this pipeline was built to re-plan only: it has no bt model or node index to draft")
         t0 = clock.begin("retrieval")
         k = preset.retrieval_k if documents is None else min(preset.retrieval_k, documents)
         if preset.retrieval_filter is not None and k > 0:
-            retrieved = self.retriever.retrieve(query or prompt, preset.retrieval_filter, k=k)
+            retrieved = retriever.retrieve(query or prompt, preset.retrieval_filter, k=k)
         else:
             retrieved = []
-        request = prepare_request(preset, selection, retrieved, reading, self.retriever.documents_for, world=world,
-                                  cards_for=getattr(self.retriever, "cards_for", None),
-                                  documents_named=getattr(self.retriever, "documents_named", None))
+        request = prepare_request(preset, selection, retrieved, reading, retriever.documents_for, world=world,
+                                  cards_for=getattr(retriever, "cards_for", None),
+                                  documents_named=getattr(retriever, "documents_named", None))
         clock.end("retrieval", t0, ", ".join(d.name for d in request.documents))
 
         t0 = clock.begin("synthesis")
         on_token = (lambda text: emit(TokenStreamed("synthesis", text))) if on_event else None
         on_attempt = (lambda attempt, reason: emit(AttemptStarted("synthesis", attempt, reason))) if on_event else None
-        synthesis = synthesize(self.llm_bt, request, preset, seed, on_token=on_token, cancel=cancel,
+        synthesis = synthesize(llm_bt, request, preset, seed, on_token=on_token, cancel=cancel,
                                max_tokens=self.max_tokens, on_attempt=on_attempt)
         clock.end("synthesis", t0, f"{len(synthesis.draft.groups)} group(s), {synthesis.attempts} attempt(s)",
                   synthesis.prompt_tokens, synthesis.completion_tokens)
@@ -338,8 +369,9 @@ class GenerationPipeline:
         edited = inputs.with_counts(counts)
         check_population(self.world, self.grid, self.preset, edited.selection, edited.reading)
 
-        stages = {k: dict(v) for k, v in result.report.get("stages", {}).items()}
-        previous = sum(stages.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
+        written = result.report.get("stages", {})
+        stages = {k: cast(StageTiming, dict(v)) for k, v in written.items()}  # as the run wrote them
+        previous = sum(written.get(s, {}).get("seconds", 0.0) for s in ("postprocess", "planning"))
         clock = StageClock(on_event or (lambda event: None), cancel, stages)
         post, plan = self._plan_stages(edited, seed, clock, cancel)
         for i, count in counts.items():
@@ -362,7 +394,7 @@ class GenerationPipeline:
             new.report["notes"].insert(1, f"re-planned with seed {seed} (the draft came from seed {result.scenario.seed})")
         return new
 
-    def _check_counts(self, groups: Sequence[Mapping[str, Any]], counts: Mapping[int, int]) -> list[tuple[str, int, int]]:
+    def _check_counts(self, groups: Sequence[GroupRecord], counts: Mapping[int, int]) -> list[tuple[str, int, int]]:
         """(label, old, new) for each edited group; GenerationError for unknown groups or counts out of range."""
         if not counts:
             raise GenerationError("no counts to change: give at least one group a new number of people")
@@ -399,7 +431,7 @@ class GenerationPipeline:
         return post, plan
 
     def _assemble(self, inputs: PlanInputs, seed: int, models: dict[str, str], post: PostProcessed,
-                  plan: OperationalPlan, report: dict[str, Any]) -> GenerationResult:
+                  plan: OperationalPlan, report: dict[str, Any]) -> GenerationResult:  # Any: generation.json
         """The Scenario and the planned part of the report (groups, exit, notes, goals)."""
         scenario = Scenario(
             world=world_reference(self.world), preset=self.preset.name, prompt=inputs.prompt, seed=int(seed),

@@ -12,9 +12,8 @@ from __future__ import annotations
 
 import math
 import threading
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
 import shapely
@@ -31,7 +30,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
-from grove_tui.generation.postprocess import FreeSpace, PostProcessed
+from grove_tui.generation.postprocess import AgentPlan, FreeSpace, PostProcessed
 from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
@@ -108,7 +107,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         if post.exit is None:
             raise GenerationError("the preset follows velocity fields to an exit, but the world has no exit")
         # One field per group and exit: a group whose members' nearest exits differ gets one per exit.
-        followers: dict[str, list[Any]] = {}
+        followers: dict[str, list[AgentPlan]] = {}
         for a in post.agents:
             if a.field_id is not None:
                 followers.setdefault(a.field_id, []).append(a)
@@ -192,8 +191,8 @@ def _resolve_point(world: World, grid: OccupancyGrid, value: Point | str, what: 
     return (round(float(q[0]), 3), round(float(q[1]), 3))
 
 
-def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProcessed, request: RobotRequest, seed: int,
-               notes: list[str], reading: PromptReading | None = None) -> RobotSpec:
+def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: PostProcessed, request: RobotRequest,
+               seed: int, notes: list[str], reading: PromptReading | None = None) -> RobotSpec:
     """The robot's start, goal, path and task.
 
     The user's --robot-start/--robot-goal come first, then the sentence's robot clause (its start,
@@ -298,19 +297,19 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: Any, post: PostProces
     return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
 
 
-def _passes(world: World, path: Any, zone: str) -> bool:
+def _passes(world: World, path: np.ndarray, zone: str) -> bool:
     """Whether a path goes through a zone (its vertices, or points every half metre along it)."""
     points, _ = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
     polygon = world.zone(zone).polygon
     return bool(shapely.contains_xy(polygon, points[:, 0], points[:, 1]).any())
 
 
-def _rounded(path: Any) -> tuple[Point, ...]:
+def _rounded(path: np.ndarray) -> tuple[Point, ...]:
     return tuple((round(float(x), 3), round(float(y), 3)) for x, y in path)
 
 
 def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people: Sequence[Point], seed: int, picker: _StartPicker,
-                 reactors: set[int], plan_path: Any, fixed_start: Point | None,
+                 reactors: set[int], plan_path: Callable[[Point, Point, bool], np.ndarray], fixed_start: Point | None,
                  fixed_goal: Point | None) -> tuple[Point, Point, np.ndarray]:
     """A start/goal pair across the scene: longest (up to 20 m) and passing closest to the crowd's
     centre, or to the people who react to the robot when some do."""
@@ -352,8 +351,8 @@ class _StartPicker:
     """Free points for the robot: on free floor, ROBOT_CLEARANCE from every person, off queues and
     circles, outside the zones being evacuated."""
 
-    def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, people: Sequence[Point], robot_planner: Any,
-                 evacuated: set[str], notes: list[str]) -> None:
+    def __init__(self, world: World, grid: OccupancyGrid, space: FreeSpace, people: Sequence[Point],
+                 robot_planner: ThetaStarPlanner | None, evacuated: set[str], notes: list[str]) -> None:
         self.world, self.grid, self.space, self.notes = world, grid, space, notes
         self.people = np.asarray(people, dtype=float).reshape(-1, 2)
         self.robot_planner = robot_planner

@@ -13,17 +13,16 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any
 
 import numpy as np
 import shapely
 
 from grove_tui.bt.format.document import TreeDocument, TreeElement
-from grove_tui.bt.format.manifest import NODES, NodeSpec
+from grove_tui.bt.format.manifest import NODES, NodeSpec, PortSpec
 from grove_tui.crowd.coordination import conversation_radius, queue_line_direction
 from grove_tui.bt.format.ports import format_port_value
 from grove_tui.bt.format.xml import write_tree
-from grove_tui.generation.draft import Draft, DraftNode
+from grove_tui.generation.draft import Draft, DraftNode, place_at
 from grove_tui.errors import GenerationError, PlanningError, PromptError
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import reconcile
@@ -32,7 +31,7 @@ from grove_tui.language.model import GroupReading, PromptReading, effective_coun
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.navigation.velocity_field import least_congested_exits, nearest_exits
-from grove_tui.world.model import Door, Entity, World
+from grove_tui.world.model import Door, Entity, World, Zone
 
 Point = tuple[float, float]
 
@@ -167,7 +166,7 @@ def _tree_places(tree: DraftNode) -> set[str]:
     for node in tree.walk():
         for port in _target_ports(NODES[node.node]):
             if port in node.ports:
-                places.add(node.ports[port])
+                places.add(place_at(node, port))
     return places
 
 
@@ -425,7 +424,7 @@ class TargetResolver:
         (p,) = self.space.sample(zone, 1, self.rng, GOAL_SPACING, key=f"beside:{name}", cluster=base, avoid=(base,))
         return p
 
-    def _queue_slot(self, entity: Any, base: Point, k: int) -> Point:
+    def _queue_slot(self, entity: Entity, base: Point, k: int) -> Point:
         """Sequential allocation: the k-th person sent to a service point walks to the k-th place of its line.
 
         The line is the one the simulation's queue will form (crowd.coordination.queue_line_direction, the
@@ -450,7 +449,7 @@ class TargetResolver:
         return q
 
 
-def _service_entity(zone: Any) -> Any:
+def _service_entity(zone: Zone) -> Entity | None:
     for wanted in ("counter", "desk", "reception", "booth", "vending_machine", "machine", "kiosk"):
         for e in zone.entities:
             if wanted in e.type or wanted in e.name:
@@ -518,7 +517,7 @@ class TreeWriter:
         children = [self._node(c, agent, group, targets) for c in node.children]
         return TreeElement(node.node, attrs, children)
 
-    def _auto_value(self, spec: NodeSpec, port: Any, agent: AgentPlan, group: GroupPlan, others: list[int],
+    def _auto_value(self, spec: NodeSpec, port: PortSpec, agent: AgentPlan, group: GroupPlan, others: list[int],
                     point: Point | None) -> str | None:
         name, kind = port.name, port.type
         if kind == "agent" and isinstance(port.default, str) and port.default.startswith("{"):
@@ -711,7 +710,7 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
         slots: dict[str, int] = {}
         before = kept_targets.get(agent.id, ())
         for k, (node, port) in enumerate(navigation_targets(tree)):
-            name = node.ports[port]
+            name = place_at(node, port)
             if name not in slots:
                 # This agent's place in the line of everyone sent to `name` (sequential goal allocation).
                 slots[name] = served.get(name, 0)
@@ -826,7 +825,8 @@ def _check_capacity(groups: Sequence[GroupPlan], space: FreeSpace, world: World,
     for g in groups:
         for zone, n in (g.spawn_zones or {g.spawn: g.count}).items():
             starts[zone] = starts.get(zone, 0) + n
-        places = [node.ports[port] for node, port in navigation_targets(g.tree) if node.node != "FollowVelocityField"]
+        places = [place_at(node, port) for node, port in navigation_targets(g.tree)
+                  if node.node != "FollowVelocityField"]
         if places:
             zone = world.zone_of_place(places[-1]) or g.spawn  # a door or entity means its zone
             ends[zone] = ends.get(zone, 0) + g.count

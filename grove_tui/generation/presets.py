@@ -15,6 +15,7 @@ from typing import Any
 import yaml
 
 from grove_tui.errors import GenerationError, PresetError, PromptError
+from grove_tui.jsontypes import Parsed
 from grove_tui.limits import MAX_GROUP_COUNT
 from grove_tui.paths import presets_dir
 from grove_tui.scenario.model import DEFAULT_AGENT_RADIUS, RADIUS_RANGE
@@ -118,12 +119,12 @@ def _load_file(path: Path) -> Preset:
     return preset_from_dict(data, source=path)
 
 
-def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
+def preset_from_dict(data: object, source: Path | None = None) -> Preset:
     where = str(source) if source else "<preset>"
     if not isinstance(data, dict):
         raise PresetError(f"{where}: expected a mapping at the top level")
 
-    def need(key: str, kind: type | tuple[type, ...]) -> Any:
+    def need(key: str, kind: type | tuple[type, ...]) -> Any:  # Any: of `kind`, which the caller names
         if key not in data:
             raise PresetError(f"{where}: missing key {key!r}")
         value = data[key]
@@ -149,13 +150,13 @@ def preset_from_dict(data: Any, source: Path | None = None) -> Preset:
         if not isinstance(block, dict):
             raise PresetError(f"{where}: {key} must be a mapping")
 
-    def names(block: dict[str, Any], key: str, path: str) -> tuple[str, ...]:
+    def names(block: Parsed, key: str, path: str) -> tuple[str, ...]:
         value = block.get(key) or []
         if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
             raise PresetError(f"{where}: {path} must be a list of node names")
         return tuple(value)
 
-    def positive(block: dict[str, Any], key: str, path: str, default: float, kind: type = int) -> Any:
+    def positive(block: Parsed, key: str, path: str, default: float, kind: type = int) -> Any:  # Any: of `kind`
         value = block.get(key, default)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
             raise PresetError(f"{where}: {path} must be a positive number, got {value!r}")

@@ -27,11 +27,11 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
 from grove_tui.bt.format.manifest import NODES
-from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
+from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
 from grove_tui.language.tokens import lemma, words
@@ -43,6 +43,7 @@ from grove_tui.scenario.report import (
     GroupGrounding,
     RobotGrounding,
 )
+from grove_tui.scenario.model import RobotSpec
 from grove_tui.world.model import Door, Entity, World
 
 # Nodes that make a person do something on their own: a tree with none of them leaves its agent
@@ -64,7 +65,7 @@ TRAILING_EXTRAS = frozenset({"Wait", "StopAndWaitTimerAction", "LookAtPoint", "W
 MAX_TRAILING_WAIT = 120.0
 
 # The robot interaction a group does as its whole activity, ungated: (node, ports).
-ROBOT_ACTIVITIES: dict[str, tuple[str, dict[str, Any]]] = {
+ROBOT_ACTIVITIES: dict[str, tuple[str, dict[str, float]]] = {
     "follow": ("ApproachRobot", {"closest_dist": 1.0, "max_vel": 1.5, "duration": 0.0}),
     "approach": ("ApproachRobot", {"closest_dist": 0.8, "max_vel": 1.3, "duration": 0.0}),
     "block": ("BlockRobot", {"front_dist": 0.8, "duration": 0.0}),
@@ -341,7 +342,8 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     """The plain tree for a reading: where it says, what it says, nothing more."""
     base = _base_intent(group)
     if base == "evacuate" and evacuation_field:
-        exit_name = group.destination if _is_exit(world, group.destination) else _nearest_exit(world, group.start)
+        destination = group.destination
+        exit_name = destination if destination and _is_exit(world, destination) else _nearest_exit(world, group.start)
         return DraftNode("FollowVelocityField", {"exit": exit_name})
     steps: list[DraftNode] = []
     via = [DraftNode("GoTo", {"target": v}) for v in group.via]
@@ -372,7 +374,7 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         return _sequence(via + steps)
     # walk, evacuate, follow
     destination = group.destination
-    if base in ("walk", "evacuate") and _is_exit(world, destination):
+    if base in ("walk", "evacuate") and destination and _is_exit(world, destination):
         # "leave through the back door", "walk to the exit": out of the building through that door (the
         # field in an emergency, else the planned way to the door and through it)
         return _sequence(via + [DraftNode("FollowVelocityField", {"exit": destination})])
@@ -424,7 +426,7 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         for speed in ("max_vel", "runaway_vel"):  # "run up to the robot": at the group's pace
             if speed in ports:
                 ports[speed] = round(ports[speed] * PACE_FACTORS.get(group.pace, 1.0), 2)
-        activity = DraftNode(node, ports)
+        activity = DraftNode(node, {**ports})
         if group.together:
             return DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), activity)), True
         return activity, True
@@ -478,7 +480,7 @@ def _target_ports(node: DraftNode) -> list[str]:
 def _node_place(node: DraftNode | None) -> str | None:
     if node is None:
         return None
-    return next((node.ports[p] for p in _target_ports(node) if p in node.ports), None)
+    return next((place_at(node, p) for p in _target_ports(node) if p in node.ports), None)
 
 
 def _tree_places(tree: DraftNode) -> list[str]:
@@ -561,8 +563,41 @@ def _spawn(group: GroupReading, d: DraftGroup | None, world: World, default: str
 
 # ---- the planned grounding report -------------------------------------------------------------
 
-def grounding_report(reading: PromptReading, groups: Sequence[Any], agents: Sequence[Any], world: World,
-                     repairs: Sequence[str] = (), *, robot: Any = None, sentence: PromptReading | None = None,
+class PlannedGroup(Protocol):
+    """A group as the grounding report reads it: post-processing's GroupPlan, or refine's view of a record."""
+
+    @property
+    def index(self) -> int: ...
+    @property
+    def reading_index(self) -> int | None: ...
+    @property
+    def label(self) -> str: ...
+    @property
+    def count(self) -> int: ...
+    @property
+    def spawn(self) -> str: ...
+    @property
+    def tree(self) -> DraftNode: ...
+    @property
+    def member_ids(self) -> Sequence[int]: ...
+
+
+class PlannedAgent(Protocol):
+    """An agent as the grounding report reads it: post-processing's AgentPlan, or refine's view of one."""
+
+    @property
+    def group_index(self) -> int: ...
+    @property
+    def start(self) -> tuple[float, float]: ...
+    @property
+    def targets(self) -> Sequence[tuple[str, tuple[float, float]]]: ...
+    @property
+    def max_vel(self) -> float: ...
+
+
+def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], agents: Sequence[PlannedAgent],
+                     world: World, repairs: Sequence[str] = (), *, robot: RobotSpec | None = None,
+                     sentence: PromptReading | None = None,
                      walking_speed: float = 1.0) -> GroundingReport:
     """What the sentence asked, as claims a run can check, per reading group and for the robot.
 
@@ -629,7 +664,7 @@ def question(who: str, subject: GroupReading | RobotReading, confidence: FieldCo
     return text + (f" ({confidence.reason})" if confidence.reason else "")
 
 
-def _count_claim(original: GroupReading, asked: int, wanted: int, g: Any) -> Claim:
+def _count_claim(original: GroupReading, asked: int, wanted: int, g: PlannedGroup) -> Claim:
     c = original.count
     text = str(c.value) if c.kind == "exact" else f"{c.value} ({c.kind} {c.low}-{c.high})"
     if c.parties:
@@ -644,8 +679,9 @@ def _count_claim(original: GroupReading, asked: int, wanted: int, g: Any) -> Cla
     return Claim("count", text, plan)
 
 
-def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, reading: PromptReading,
-                  by_reading: dict[Any, Any], walking_speed: float, robot_seconds: float) -> list[Claim]:
+def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgent], world: World,
+                  reading: PromptReading, by_reading: dict[int | None, PlannedGroup], walking_speed: float,
+                  robot_seconds: float) -> list[Claim]:
     claims: list[Claim] = []
     n = max(1, g.count)
     speed = min((a.max_vel for a in agents), default=walking_speed) or walking_speed
@@ -713,7 +749,7 @@ def _group_claims(r: GroupReading, g: Any, agents: Sequence[Any], world: World, 
                                 "follow the evacuation field" if "FollowVelocityField" in tree_nodes else "walk out",
                                 exits=exits, needs_seconds=_evacuation_eta(agents, world, speed, n)))
     elif base == "queue":
-        service = next((node.ports.get("service_point") for node in g.tree.walk() if node.node == "Queue"), None)
+        service = next((place_of(node, "service_point") for node in g.tree.walk() if node.node == "Queue"), None)
         place = r.location or r.destination or service
         if service is None:
             claims.append(Claim("queue", place or "-", "no queue in the trees", FAILS, "the trees never queue"))
@@ -770,7 +806,7 @@ def replace_seconds(claim: Claim, seconds: float | None) -> Claim:
                  share=claim.share)
 
 
-def _reaction_claim(r: GroupReading, g: Any, robot_seconds: float) -> Claim:
+def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float) -> Claim:
     interaction = r.robot_interaction or ""
     kind = f"robot_{interaction}"
     nodes = [node.node for node in g.tree.walk() if node.node in ROBOT_ACTIVITY_NODES or node.node in ROBOT_REACTIONS]
@@ -804,7 +840,7 @@ def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: fl
                  radius=round(radius, 2), needs_seconds=round(eta, 1))
 
 
-def _route_length(agent: Any, upto: str | None, world: World) -> float:
+def _route_length(agent: PlannedAgent, upto: str | None, world: World) -> float:
     """Straight-line legs from the agent's start through its targets, up to the first at `upto`."""
     length, here = 0.0, agent.start
     zone = world.zone_of_place(upto or "") if upto else None
@@ -823,7 +859,7 @@ def _route_length(agent: Any, upto: str | None, world: World) -> float:
     return length
 
 
-def _eta(agents: Sequence[Any], place: str | None, world: World, speed: float) -> float:
+def _eta(agents: Sequence[PlannedAgent], place: str | None, world: World, speed: float) -> float:
     """Seconds the slowest member needs to get to `place` (detours 1.5 times the straight legs), plus slack."""
     if not agents:
         return 30.0
@@ -831,7 +867,7 @@ def _eta(agents: Sequence[Any], place: str | None, world: World, speed: float) -
     return round(1.5 * longest / max(speed, 0.1) + 10.0, 1)
 
 
-def _evacuation_eta(agents: Sequence[Any], world: World, speed: float, n: int) -> float:
+def _evacuation_eta(agents: Sequence[PlannedAgent], world: World, speed: float, n: int) -> float:
     exits = world.exits()
     if not agents or not exits:
         return 60.0
@@ -841,7 +877,7 @@ def _evacuation_eta(agents: Sequence[Any], world: World, speed: float, n: int) -
     return round(1.8 * longest / max(speed, 0.1) + n / flow + 10.0, 1)
 
 
-def _robot_seconds(robot: Any) -> float:
+def _robot_seconds(robot: RobotSpec | None) -> float:
     """How long the robot takes along its planned path (the time a reaction to it needs at most)."""
     if robot is None or not getattr(robot, "path", None):
         return 30.0
@@ -850,7 +886,7 @@ def _robot_seconds(robot: Any) -> float:
     return round(length / max(float(robot.max_vel), 0.1), 1)
 
 
-def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[Any, Any]) -> Any:
+def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[int | None, PlannedGroup]) -> PlannedGroup | None:
     follows = {lemma(w) for w in words(r.follows or "")}
     for i, other in enumerate(reading.groups):
         if other is r:
@@ -862,7 +898,8 @@ def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[Any, Any])
 
 # ---- the robot's row --------------------------------------------------------------------------
 
-def _robot_row(asked: RobotReading | None, robot: Any, world: World, agents: Sequence[Any]) -> RobotGrounding | None:
+def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World,
+               agents: Sequence[PlannedAgent]) -> RobotGrounding | None:
     if robot is None:
         if asked is None:
             return None
@@ -912,7 +949,7 @@ def _robot_row(asked: RobotReading | None, robot: Any, world: World, agents: Seq
     return RobotGrounding(asked.task, asked.text, tuple(claims), plan, unsure)
 
 
-def _robot_start_claim(start: str, robot: Any, world: World) -> Claim:
+def _robot_start_claim(start: str, robot: RobotSpec, world: World) -> Claim:
     zone = world.zone_of_place(start)
     actual = world.zone_at(robot.start[0], robot.start[1])
     ok = zone is not None and actual is not None and actual.name == zone

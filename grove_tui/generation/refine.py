@@ -29,15 +29,14 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
-from typing import Any
 
 from grove_tui.bt.format.document import TreeFiles
 from grove_tui.errors import AmbiguousEditError, EditError, GenerationError, GroveError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode
 from grove_tui.generation.formations import PASSING_MARGIN, nearest_formation_gap, predict_formations
 from grove_tui.generation.events import Event
-from grove_tui.generation.pipeline import (GenerationPipeline, GenerationResult, StageClock, check_trees, group_records,
-                                           world_reference)
+from grove_tui.generation.pipeline import (GenerationPipeline, GenerationResult, GroupRecord, StageClock, check_trees,
+                                           group_records, world_reference)
 from grove_tui.generation.planning import CachedPlanner, plan_operational, plan_robot
 from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed, place_groups, plan_groups
 from grove_tui.generation.presets import load_preset
@@ -50,9 +49,11 @@ from grove_tui.language.edits import EditReading, GroupEdit, edited_reading
 from grove_tui.language.model import GroupReading, PromptReading, RobotReading
 from grove_tui.navigation.theta_star import PlanningError
 from grove_tui.scenario.history import (ADDED, CHANGED, REMOVED, GroupChange, GroupSummary, HistoryStep, RefineDiff,
-                                        RobotChange)
+                                        RobotChange, StageTiming)
 from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
 from grove_tui.scenario.report import GroundingReport
+from grove_tui.jsontypes import JSONObject
+from grove_tui.world.model import World
 
 # Fields whose change the group's tree cannot absorb: the model writes it again.
 REGENERATING_FIELDS = ("intent", "destination", "location", "via")
@@ -324,7 +325,7 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     pipeline.adopt_grid(scene.result.grid, scenario.resolution)  # the grid the scenario was planned on
     world, preset = pipeline.world, pipeline.preset
     seed = step_seed(int(scenario.seed), refinement.step)
-    stages: dict[str, dict[str, Any]] = {}
+    stages: dict[str, StageTiming] = {}
     clock = StageClock(on_event or (lambda event: None), cancel, stages)
     started = time.perf_counter()
     text = refinement.edit.sentence
@@ -423,7 +424,7 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     # 4. The report: kept records as they were, the new ones, the history step, the grounding of all.
     stages_seconds = round(time.perf_counter() - started, 4)
     report = {k: v for k, v in scene.report.items()}
-    records = []
+    records: list[GroupRecord] = []
     new_records = iter(group_records(post.groups, placing_reading, refinement.step))
     for p in refinement.groups:
         if p.status == KEPT and p.source is not None:
@@ -596,9 +597,9 @@ class _GroundedAgent:
     behavior: str
 
 
-def _grounding(scene: Scene, refinement: Refinement, records: Sequence[dict[str, Any]], agents: Sequence[AgentSpec],
-               new_agents: Sequence[AgentPlan], repairs: Sequence[str], world: Any, robot: RobotSpec | None,
-               walking_speed: float) -> dict[str, Any]:
+def _grounding(scene: Scene, refinement: Refinement, records: Sequence[GroupRecord], agents: Sequence[AgentSpec],
+               new_agents: Sequence[AgentPlan], repairs: Sequence[str], world: World, robot: RobotSpec | None,
+               walking_speed: float) -> JSONObject:
     """The grounding report of the refined scenario: every group against the reading it realises now
     (its sentence's, or a follow-up's), which sentence asked for it and which changed it."""
     from grove_tui.generation.scene import node_from_dict, targets_of

@@ -21,12 +21,12 @@ import shutil
 import threading
 import time
 import warnings
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import yaml
@@ -43,6 +43,17 @@ from grove_tui.generation.node_docs import (
     split_camel,
 )
 from grove_tui.language.tokens import match_tokens
+
+if TYPE_CHECKING:
+    import torch
+    from chromadb.api import ClientAPI
+    from chromadb.api.types import Metadata
+    from sentence_transformers import SentenceTransformer
+
+    from grove_tui.generation.presets import Preset
+
+    # The tokenizer's features of one batch -> unit-length embeddings, one row per text.
+    QueryEncoder = Callable[[dict[str, torch.Tensor]], torch.Tensor]
 
 log = logging.getLogger(__name__)
 
@@ -89,10 +100,10 @@ def model_identity() -> str:
 
 
 _model_lock = threading.Lock()
-_model: Any = None
+_model: SentenceTransformer | None = None
 
 
-def embedding_model() -> Any:
+def embedding_model() -> SentenceTransformer:
     """The SentenceTransformer, loaded once per process (importing torch takes seconds)."""
     global _model
     with _model_lock:
@@ -141,37 +152,38 @@ def embed_texts(texts: Sequence[str]) -> np.ndarray:
 
 
 _query_encoder_lock = threading.Lock()
-_query_encoder: Any = None
+_query_encoder: QueryEncoder | None = None
 
 
-def _eager_query_encoder(model: Any) -> Any:
+def _eager_query_encoder(model: SentenceTransformer) -> QueryEncoder:
     import torch
 
-    def encode(features: dict[str, Any]) -> Any:
+    def encode(features: dict[str, torch.Tensor]) -> torch.Tensor:
         return torch.nn.functional.normalize(model(features)["sentence_embedding"], dim=1)
 
     return encode
 
 
-def _traced_query_encoder(model: Any) -> Any:
+def _traced_query_encoder(model: SentenceTransformer) -> QueryEncoder | None:
     """The transformer plus mean pooling, traced and frozen by TorchScript: about 30 % less CPU per
     query than the eager module stack (measured 9.7 vs 13.7 ms). Checked against the eager model on
     two probe sentences of different lengths; any difference means the eager path is used."""
     import torch
 
-    modules = [type(module).__name__ for module in model]
-    pooling = model[1].get_config_dict() if len(model) > 1 and hasattr(model[1], "get_config_dict") else {}
+    parts: list[Any] = list(model)  # Any: its modules, whose own attributes nn.Module's stubs call Tensors
+    modules = [type(module).__name__ for module in parts]
+    pooling = parts[1].get_config_dict() if len(parts) > 1 and hasattr(parts[1], "get_config_dict") else {}
     mean_pooling = pooling.get("pooling_mode") == "mean" or pooling.get("pooling_mode_mean_tokens") is True
     if modules[:2] != ["Transformer", "Pooling"] or not mean_pooling:
         return None
-    transformer = model[0].auto_model
+    transformer = parts[0].auto_model
 
     class MeanPooledEncoder(torch.nn.Module):
         def __init__(self) -> None:
             super().__init__()
             self.transformer = transformer
 
-        def forward(self, input_ids: Any, attention_mask: Any) -> Any:
+        def forward(self, input_ids: torch.Tensor, attention_mask: torch.Tensor) -> torch.Tensor:
             hidden = self.transformer(input_ids=input_ids, attention_mask=attention_mask).last_hidden_state
             mask = attention_mask.unsqueeze(-1).to(hidden.dtype)
             return torch.nn.functional.normalize((hidden * mask).sum(1) / mask.sum(1).clamp(min=1e-9), dim=1)
@@ -195,13 +207,14 @@ def _traced_query_encoder(model: Any) -> Any:
     finally:
         transformers_logging.set_verbosity(verbosity)
 
-    def encode(features: dict[str, Any]) -> Any:
-        return frozen(features["input_ids"], features["attention_mask"])
+    def encode(features: dict[str, torch.Tensor]) -> torch.Tensor:
+        vectors: torch.Tensor = frozen(features["input_ids"], features["attention_mask"])
+        return vectors
 
     return encode
 
 
-def _query_encoder_for(model: Any) -> Any:
+def _query_encoder_for(model: SentenceTransformer) -> QueryEncoder:
     global _query_encoder
     with _query_encoder_lock:
         if _query_encoder is None:
@@ -261,11 +274,11 @@ def embedding_function_class() -> type:
         def supported_spaces(self) -> list[str]:  # type: ignore[override]
             return ["cosine"]
 
-        def get_config(self) -> dict[str, Any]:
+        def get_config(self) -> dict[str, Any]:  # Any: chromadb's EmbeddingFunction signature
             return {"package": MODEL_PACKAGE}
 
         @staticmethod
-        def build_from_config(config: dict[str, Any]) -> PackagedMiniLMEmbedding:
+        def build_from_config(config: dict[str, Any]) -> PackagedMiniLMEmbedding:  # Any: as get_config
             return PackagedMiniLMEmbedding()
 
     if EMBEDDING_FUNCTION_NAME in known_embedding_functions:
@@ -302,7 +315,7 @@ def _preset_key(preset: str) -> str:
     return f"preset_{preset}"
 
 
-def _normalise_preset(preset: Any) -> str | None:
+def _normalise_preset(preset: str | Preset | None) -> str | None:
     """A preset name, a Preset object (its retrieval_filter), or None for no filter at all."""
     if preset is not None and not isinstance(preset, str):
         preset = getattr(preset, "retrieval_filter", getattr(preset, "name", None))
@@ -367,8 +380,8 @@ class NodeRetriever:
         self._documents = self.database.by_name()
         self._phrase_tokens = {doc.name: [content_tokens(p) for p in doc.phrases] for doc in self.database.documents}
         self._lock = threading.RLock()
-        self._client: Any = None
-        self._collection: Any = None
+        self._client: Any = None  # Any: chromadb's ClientAPI (its Where and Metadata unions would need a cast per call)
+        self._collection: Any = None  # Any: chromadb's Collection, as above
         self._vector_count = 0
         self.last_index_state: IndexState | None = None
 
@@ -378,7 +391,7 @@ class NodeRetriever:
     def index_hash(self) -> str:
         return f"{self.database.content_hash}:{model_identity()}:{INDEX_FORMAT}"
 
-    def _open_client(self) -> Any:
+    def _open_client(self) -> ClientAPI:
         import chromadb
         from chromadb.config import Settings
 
@@ -445,7 +458,9 @@ class NodeRetriever:
         if COLLECTION in existing:
             client.delete_collection(COLLECTION)
         documents = [doc for doc in self.database.documents if doc.indexed]
-        ids, texts, metadatas = [], [], []
+        ids: list[str] = []
+        texts: list[str] = []
+        metadatas: list[Metadata] = []
         for doc in documents:
             flags = {_preset_key(p): p in doc.presets for p in RETRIEVAL_PRESETS}
             for number, text in enumerate(_vector_texts(doc)):
@@ -467,7 +482,7 @@ class NodeRetriever:
 
     # ---- queries
 
-    def retrieve(self, prompt: str, preset: Any = None, k: int = 8) -> list[RetrievedNode]:
+    def retrieve(self, prompt: str, preset: str | Preset | None = None, k: int = 8) -> list[RetrievedNode]:
         """The `k` best documents for `prompt` among those `preset` may retrieve, best first."""
         if k <= 0:
             return []
@@ -527,7 +542,7 @@ class NodeRetriever:
         names = list(names)
         return [self._documents[name].card or text for name, text in zip(names, self.documents_for(names))]
 
-    def document_names(self, preset: Any = None, kind: str | None = None) -> list[str]:
+    def document_names(self, preset: str | Preset | None = None, kind: str | None = None) -> list[str]:
         """Names of the indexed documents `preset` may retrieve (all of them for vanilla/None)."""
         preset_name = _normalise_preset(preset)
         return [doc.name for doc in self.database.documents

@@ -17,16 +17,18 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import BundleError
-from grove_tui.generation.draft import DraftNode, written_ports
-from grove_tui.generation.pipeline import GenerationResult, own_reading
+from grove_tui.generation.draft import DraftNode, DraftValue, written_ports
+from grove_tui.generation.pipeline import GenerationResult, GroupRecord, own_reading
+from grove_tui.jsontypes import Parsed
 from grove_tui.generation.postprocess import NAVIGATING_EXTRA, KeptMembers, PlacedScene
 from grove_tui.language.model import Count, GroupReading, PromptReading, effective_counts
-from grove_tui.scenario.model import AgentSpec
+from grove_tui.scenario.model import AgentSpec, Scenario
+from grove_tui.world.model import World
 
 Point = tuple[float, float]
 
@@ -45,7 +47,7 @@ class SceneGroup:
     spawn: str
     tree: DraftNode
     behavior: str
-    record: dict[str, Any]  # its generation.json record, kept as it is while the group is untouched
+    record: GroupRecord  # its generation.json record, kept as it is while the group is untouched
     asked_by: int = 0  # the sentence that asked for it: 0 the first, k the k-th follow-up
     changed_by: tuple[int, ...] = ()  # the follow-ups that changed it
 
@@ -53,15 +55,15 @@ class SceneGroup:
 @dataclass
 class Scene:
     result: GenerationResult
-    world: Any
+    world: World
     groups: tuple[SceneGroup, ...]
 
     @property
-    def scenario(self) -> Any:
+    def scenario(self) -> Scenario:
         return self.result.scenario
 
     @property
-    def report(self) -> dict[str, Any]:
+    def report(self) -> dict[str, Any]:  # Any: generation.json (GenerationResult.report)
         return self.result.report
 
     @property
@@ -84,7 +86,7 @@ class Scene:
         return self.result.trees[agent.tree]
 
 
-def scene_of(result: GenerationResult, world: Any) -> Scene:
+def scene_of(result: GenerationResult, world: World) -> Scene:
     """The scenario's groups as refinement reads them (module doc); BundleError when it has none."""
     records = list(result.report.get("groups") or ())
     if not records:
@@ -97,7 +99,7 @@ def scene_of(result: GenerationResult, world: Any) -> Scene:
                           hint="regenerate the scenario, or restore its generation.json") from None
 
 
-def _scene(result: GenerationResult, world: Any, records: list[Any]) -> Scene:
+def _scene(result: GenerationResult, world: World, records: list[GroupRecord]) -> Scene:
     fallback = _readings_by_position(result.report, records)
     by_id = {a.id: a for a in result.scenario.agents}
     groups = []
@@ -112,12 +114,12 @@ def _scene(result: GenerationResult, world: Any, records: list[Any]) -> Scene:
             _reading_of_tree(record, tree)
         groups.append(SceneGroup(index, str(record["label"]), int(record["count"]), reading, members,
                                  str(record.get("spawn", "")), tree, str(record.get("behavior", "Regular")),
-                                 dict(record), int(record.get("asked_by", 0)),
+                                 cast(GroupRecord, dict(record)), int(record.get("asked_by", 0)),
                                  tuple(int(c) for c in record.get("changed_by", ()))))
     return Scene(result, world, tuple(groups))
 
 
-def _readings_by_position(report: Mapping[str, Any], records: Sequence[Mapping[str, Any]]) -> dict[int, GroupReading]:
+def _readings_by_position(report: Parsed, records: Sequence[GroupRecord]) -> dict[int, GroupReading]:
     """Record index -> reading, for records that do not carry theirs: result group i realises the i-th
     reading group with people of its own (PlanInputs.with_counts holds the same order)."""
     data = report.get("reading")
@@ -129,7 +131,7 @@ def _readings_by_position(report: Mapping[str, Any], records: Sequence[Mapping[s
             if i < len(records)}
 
 
-def _reading_of_tree(record: Mapping[str, Any], tree: DraftNode) -> GroupReading:
+def _reading_of_tree(record: GroupRecord, tree: DraftNode) -> GroupReading:
     """A reading for a group no sentence was read for: its label, count and what its tree does."""
     label, count = str(record["label"]), int(record["count"])
     intent = next((_NODE_INTENTS[n.node] for n in tree.walk() if n.node in _NODE_INTENTS), "walk")
@@ -148,7 +150,7 @@ def _first_place(node: DraftNode) -> str | None:
     return None
 
 
-def _tree_of(record: Mapping[str, Any], result: GenerationResult, agents: Sequence[AgentSpec]) -> DraftNode:
+def _tree_of(record: GroupRecord, result: GenerationResult, agents: Sequence[AgentSpec]) -> DraftNode:
     if record.get("tree"):
         return node_from_dict(record["tree"])
     if not agents:
@@ -157,7 +159,7 @@ def _tree_of(record: Mapping[str, Any], result: GenerationResult, agents: Sequen
     return draft_from_document(result.trees[first.tree])
 
 
-def node_from_dict(data: Mapping[str, Any]) -> DraftNode:
+def node_from_dict(data: Parsed) -> DraftNode:
     """The inverse of draft.node_to_dict."""
     ports = {k: v for k, v in data.items() if k not in ("node", "children")}
     return DraftNode(str(data["node"]), ports, tuple(node_from_dict(c) for c in data.get("children") or ()))
@@ -171,7 +173,7 @@ def draft_from_document(document: TreeDocument) -> DraftNode:
 
 def _draft_node(element: TreeElement) -> DraftNode:
     spec = NODES.get(element.id)
-    ports: dict[str, Any] = {}
+    ports: dict[str, DraftValue] = {}
     for port in written_ports(spec) if spec is not None else ():
         text = element.get(port.name)
         if text is not None:
@@ -179,7 +181,7 @@ def _draft_node(element: TreeElement) -> DraftNode:
     return DraftNode(element.id, ports, tuple(_draft_node(c) for c in element.children))
 
 
-def _value(kind: str, text: str) -> Any:
+def _value(kind: str, text: str) -> DraftValue:
     try:
         if kind == "int":
             return int(float(text))

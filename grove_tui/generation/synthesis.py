@@ -26,7 +26,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import DraftError, GenerationError
@@ -34,7 +34,12 @@ from grove_tui.generation.draft import Draft, GroupHead, draft_grammar, parse_dr
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.rois import RoISelection
 from grove_tui.language.model import PromptReading, effective_counts
+from grove_tui.jsontypes import JSONObject
 from grove_tui.world.model import World
+
+if TYPE_CHECKING:
+    from grove_tui.generation.retrieval import RetrievedNode
+    from grove_tui.llm.local import LocalLLM
 
 MAX_ATTEMPTS = 3
 # With pinned cards, a retrieved card outside them is shown (and offered) when it scores at least this
@@ -133,7 +138,7 @@ def offered_nodes(preset: Preset, retrieved_nodes: Sequence[str]) -> list[str]:
     return controls + leaves
 
 
-def choose_documents(preset: Preset, retrieved: Sequence[Any], offered: Sequence[str],
+def choose_documents(preset: Preset, retrieved: Sequence[RetrievedNode], offered: Sequence[str],
                      documents_for: Callable[[list[str]], list[str]],
                      cards_for: Callable[[list[str]], list[str]] | None = None) -> list[RetrievedDoc]:
     """Retrieved documents about offered nodes, plus the documents of required nodes not retrieved."""
@@ -195,7 +200,8 @@ def fixed_system_message(preset: Preset, world: World | None = None, cards: Sequ
     return system
 
 
-def pinned_documents(preset: Preset, documents_named: Callable[[list[str]], list[Any]] | None) -> list[Any]:
+def pinned_documents(preset: Preset,
+                     documents_named: Callable[[list[str]], list[RetrievedNode]] | None) -> list[RetrievedNode]:
     """The preset's pinned documents the model may use (their nodes offered whatever the sentence), in order.
 
     Fixed per preset, so the system message that shows them is fixed per world and preset."""
@@ -206,7 +212,7 @@ def pinned_documents(preset: Preset, documents_named: Callable[[list[str]], list
     return [d for d in docs if set(d.nodes) <= offered]
 
 
-def pinned_cards(preset: Preset, documents_named: Callable[[list[str]], list[Any]] | None) -> list[str]:
+def pinned_cards(preset: Preset, documents_named: Callable[[list[str]], list[RetrievedNode]] | None) -> list[str]:
     return [(getattr(d, "card", "") or d.document).strip() for d in pinned_documents(preset, documents_named)]
 
 
@@ -334,10 +340,10 @@ def build_messages(preset: Preset, places: str, documents: Sequence[RetrievedDoc
     return [{"role": "system", "content": system}, {"role": "user", "content": "\n".join(parts)}]
 
 
-def prepare_request(preset: Preset, selection: RoISelection, retrieved: Sequence[Any], reading: PromptReading,
+def prepare_request(preset: Preset, selection: RoISelection, retrieved: Sequence[RetrievedNode], reading: PromptReading,
                     documents_for: Callable[[list[str]], list[str]], world: World | None = None,
                     cards_for: Callable[[list[str]], list[str]] | None = None,
-                    documents_named: Callable[[list[str]], list[Any]] | None = None) -> SynthesisRequest:
+                    documents_named: Callable[[list[str]], list[RetrievedNode]] | None = None) -> SynthesisRequest:
     """The bt model's request: offered nodes, the prompt, and the grammar of every draft it may write.
 
     `documents_named` looks documents up by name (NodeRetriever.documents_named): the preset's pinned
@@ -389,7 +395,7 @@ def is_cut_off(exc: BaseException) -> bool:
     return isinstance(exc, ModelError) and not isinstance(exc, ContextTooSmallError) and CUT_OFF_PHRASE in str(exc)
 
 
-def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
+def synthesize(llm: LocalLLM, request: SynthesisRequest, preset: Preset, seed: int,
                on_token: Callable[[str], None] | None = None, cancel: threading.Event | None = None,
                max_tokens: int = 512, on_attempt: Callable[[int, str], None] | None = None) -> SynthesisResult:
     """Generate and parse the draft; retry with the next seed when the answer does not validate.
@@ -465,19 +471,19 @@ def synthesize(llm: Any, request: SynthesisRequest, preset: Preset, seed: int,
     raise GenerationError(f"the bt model wrote no valid draft in {attempt} attempts: " + "; ".join(errors))
 
 
-def draft_summary(draft: Draft) -> list[dict[str, Any]]:
+def draft_summary(draft: Draft) -> list[JSONObject]:
     from grove_tui.generation.draft import node_to_dict
 
     return [{"label": g.label, "count": g.count, "spawn": g.spawn, "tree": node_to_dict(g.tree)} for g in draft.groups]
 
 
-def describe_documents(documents: Sequence[RetrievedDoc]) -> list[dict[str, Any]]:
+def describe_documents(documents: Sequence[RetrievedDoc]) -> list[JSONObject]:
     return [{"name": d.name, "kind": d.kind, "score": d.score, "nodes": list(d.nodes)} for d in documents]
 
 
 
-def warm_prefix(llm: Any, preset: Preset, world: World | None,
-                documents_named: Callable[[list[str]], list[Any]] | None = None) -> dict[str, Any] | None:
+def warm_prefix(llm: LocalLLM, preset: Preset, world: World | None,
+                documents_named: Callable[[list[str]], list[RetrievedNode]] | None = None) -> dict[str, object] | None:
     """Evaluate the fixed system message of this world and preset once, before the first request.
 
     The worker keeps its KV state live and persists it (keyed as prefix_label says), so the first

@@ -19,7 +19,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
-from grove_tui.language.reactions import robot_interaction, robot_positions
+from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -35,6 +35,7 @@ class Clause:
     verb: str | None = None
     verb_index: int | None = None
     robot: str | None = None
+    unaimed: str | None = None  # "shrink back" once the robot was named: theirs unless the scene says how
     places: list[Place] = field(default_factory=list)
     purpose: str | None = None
     wait_seconds: float | None = None
@@ -80,6 +81,7 @@ class Clauses:
         scan = _Scan(Clause(), own)
         c = scan.c
         c.robot = robot_interaction(s, own, robot_positions(s, own, robot_after))
+        c.unaimed = unaimed_reaction(s, own) if c.robot is None else None
         c.has_action = c.robot is not None
         while scan.pos < len(own):
             if not self._phrase(scan):

@@ -20,6 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any
 
+from grove_tui.jsontypes import JSONObject, Parsed
+
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import Count, GroupReading, RobotReading
 
@@ -58,11 +60,11 @@ class CountChange:
             return f"x{self.value:g}"
         return f"{int(self.value):+d}"
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"kind": self.kind, "value": self.value}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> CountChange:
+    def from_dict(cls, data: Parsed) -> CountChange:
         return cls(str(data["kind"]), float(data["value"]))
 
 
@@ -88,11 +90,11 @@ class GroupRef:
         """The groups meant; empty while the phrase is ambiguous or names no group."""
         return () if self.ambiguous else self.candidates
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"phrase": self.phrase, "candidates": list(self.candidates), "every": self.every}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupRef:
+    def from_dict(cls, data: Parsed) -> GroupRef:
         return cls(str(data["phrase"]), tuple(int(c) for c in data.get("candidates", ())), bool(data.get("every")))
 
 
@@ -112,14 +114,14 @@ class GroupEdit:
     fields: tuple[str, ...] = ()  # the fields a change states (EDITABLE_FIELDS)
     count: CountChange | None = None
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"kind": self.kind, "text": self.text,
                 "target": self.target.to_dict() if self.target is not None else None,
                 "group": self.group.to_dict() if self.group is not None else None,
                 "fields": list(self.fields), "count": self.count.to_dict() if self.count is not None else None}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupEdit:
+    def from_dict(cls, data: Parsed) -> GroupEdit:
         return cls(str(data["kind"]), str(data.get("text", "")),
                    GroupRef.from_dict(data["target"]) if data.get("target") else None,
                    GroupReading.from_dict(data["group"]) if data.get("group") else None,
@@ -136,11 +138,11 @@ class RobotEdit:
     text: str
     robot: RobotReading | None = None
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"kind": self.kind, "text": self.text, "robot": self.robot.to_dict() if self.robot else None}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> RobotEdit:
+    def from_dict(cls, data: Parsed) -> RobotEdit:
         return cls(str(data["kind"]), str(data.get("text", "")),
                    RobotReading.from_dict(data["robot"]) if data.get("robot") else None)
 
@@ -169,12 +171,12 @@ class EditReading:
         edits[edit] = replace(edits[edit], target=replace(target, candidates=(group,), every=False))
         return replace(self, edits=tuple(edits))
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"sentence": self.sentence, "edits": [e.to_dict() for e in self.edits],
                 "robot": self.robot.to_dict() if self.robot is not None else None, "notes": list(self.notes)}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> EditReading:
+    def from_dict(cls, data: Parsed) -> EditReading:
         return cls(str(data.get("sentence", "")), tuple(GroupEdit.from_dict(e) for e in data.get("edits", ())),
                    RobotEdit.from_dict(data["robot"]) if data.get("robot") else None,
                    tuple(str(n) for n in data.get("notes", ())))
@@ -185,7 +187,7 @@ def edited_reading(old: GroupReading, edit: GroupEdit) -> GroupReading:
     places that belonged to what the group no longer does go with it ("the visitors walk to the
     cafeteria instead": no longer queueing at the pharmacy)."""
     new = edit.group
-    values: dict[str, Any] = {}
+    values: dict[str, Any] = {}  # Any: field values of several types, handed to dataclasses.replace
     fields = set(edit.fields)
     if edit.count is not None:
         value = edit.count.apply(old.count.value)

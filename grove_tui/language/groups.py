@@ -215,14 +215,17 @@ class Groups:
                                follows=leader.who if intent == "follow" else None, robot_interaction=None,
                                robot_reaction=None, together=m.together, text=text, confidence=())
         kind, _, parent = (m.relation or "").partition(":")
-        if kind == "subset_of" and parent.isdigit() and int(parent) < len(earlier) and c.intent is None and \
-                c.robot is None and not c.has_action and not c.places:
-            intent = earlier[int(parent)].intent  # "..., two of them students": part of the group, doing as it does
+        if kind in ("subset_of", "more_of") and parent.isdigit() and int(parent) < len(earlier) and c.intent is None and \
+                c.robot is None and not c.has_action and (kind == "more_of" or not c.places):
+            # "..., two of them students": part of the group, doing as it does; "..., 4 more at lane 1":
+            # more of it somewhere else, with no verb of their own, doing the same there
+            intent = earlier[int(parent)].intent
         if self.mentions.led_by(m.first) and earlier and c.robot is None and \
                 earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads
             c = replace(c, follows=earlier[-1].who)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
+        robot = robot or c.unaimed  # "... and their grandparents shrink back": from the robot named before
         if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
             intent = "queue"  # "a queue of eight people forms at the ticket office", "a line of five waiting"
         if robot is not None:

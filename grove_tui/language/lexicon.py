@@ -211,14 +211,14 @@ for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
             "snooze",
-    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate",
+    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
               "mop sweep vacuum hoover scrub tidy clean",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
-            "file troop toddle deliver drop bring fetch collect slip sneak nip pop board",
+            "file troop stream flood trickle surge toddle deliver drop bring fetch collect slip sneak nip pop board",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -233,6 +233,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
     ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
+    ("in", "line"): "queue", ("in", "a", "line"): "queue", ("in", "a", "queue"): "queue", ("in", "the", "queue"): "queue",
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
@@ -240,7 +241,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
-LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel carry help assist "
+LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel roll carry help assist "
                           "support transport walk drag pull haul hurry rush".split())
 # "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
 # which is one pair.
@@ -318,6 +319,8 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("stand", "in", "front", "of"): "block", ("get", "in", "the", "way"): "block", ("stand", "in", "the", "way"): "block",
     ("step", "in", "front", "of"): "block", ("walk", "behind"): "follow", ("look", "at"): "look",
     ("tag", "along"): "follow", ("turn", "to", "look"): "look", ("stop", "and", "stare"): "look",
+    ("turn", "their", "head"): "look", ("turn", "his", "head"): "look", ("turn", "her", "head"): "look",
+    ("crane", "their", "neck"): "look", ("crane", "his", "neck"): "look", ("crane", "her", "neck"): "look",
     ("keep", "clear"): "avoid", ("stay", "clear"): "avoid", ("give", "a", "wide", "berth"): "avoid",
     ("at", "the", "sight", "of"): "look", ("take", "a", "photo"): "look", ("take", "photo"): "look",
     ("take", "picture"): "look", ("take", "a", "picture"): "look", ("take", "a", "selfie"): "look",
@@ -428,6 +431,9 @@ NON_PLACES = frozenset(
 BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment premises site facility floor "
                            "place area scene venue property complex centre center interior indoors outdoors "
                            "inside outside".split())
+# Outdoors beyond the building's doors: "out to the street" is out through an exit, when the world
+# names no such place itself.
+OUTDOOR_WORDS = frozenset("street road pavement sidewalk carpark car_park parking forecourt outdoors".split())
 # Heads that say "a part of" without naming which: matching rests on the words before them.
 GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
@@ -459,6 +465,7 @@ PLACE_SYNONYMS: tuple[frozenset[str], ...] = tuple(
         "garden yard patio terrace balcony",
         "study library",
         "printer copier print",
+        "storage stockroom storeroom",
         "child kid",  # "the kids room" is the children's room
     )
 )

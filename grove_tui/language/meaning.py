@@ -24,7 +24,6 @@ import threading
 from collections.abc import Sequence
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -185,7 +184,7 @@ class PhraseVectors:
 
     def _load(self) -> Vectors | None:
         try:
-            loaded: Any = np.load(self.path, allow_pickle=False)
+            loaded: object = np.load(self.path, allow_pickle=False)
         except (OSError, ValueError):
             return None  # a torn or foreign file: computed again and written over
         if not isinstance(loaded, np.ndarray) or loaded.ndim != 2 or loaded.shape[0] != len(self.phrases):

@@ -19,9 +19,9 @@ from grove_tui.language.counts import Quantifier, count_of, negative_at, number_
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
-from grove_tui.language.place_phrases import PlacePhrases
+from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
 
@@ -49,6 +49,15 @@ class Mentions:
                 i += 1
                 continue
             m = self.mention_at(i, found)
+            if m is not None and m.collective is not None and m.first == m.last and 0 < m.first and \
+                    s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \
+                    not self.people.third_person_verb(m.last + 1):
+                m = None  # "the first-class lounge", "a first-team pitch": a collective inside a compound modifier
+            if m is not None and found and m.collective is not None and m.first == m.last and m.first > 0 and \
+                    s.w[m.first - 1].pos in ("NOUN", "PROPN") and m.last + 1 < s.n and \
+                    s.low[m.last + 1] in lx.PLACE_PREPOSITIONS | {"round"} and \
+                    verb_lemma(s.low[m.first]) in ("crowd", "cluster", "huddle", "swarm", "throng", "mob", "flock"):
+                m = None  # "4-5 kids w/ notebooks crowd round the t-rex": the collective is their verb
             if m is None:
                 i += 1
                 continue
@@ -57,6 +66,8 @@ class Mentions:
                 count = m.count
                 assert count is not None
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
+                if found[-1].label == "person":
+                    found[-1].label = m.label
                 i = m.last + 1
                 continue
             if m.count is not None and m.count.value == 0 and m.count.kind == "exact":
@@ -66,6 +77,8 @@ class Mentions:
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
             m.robot_object = self.robot_object(m.first)
+            if m.zone_place is None and not m.whole_zone:
+                m.zone_place = self.possessor_place(m.first)
             found.append(m)
             i = m.last + 1
         return found
@@ -82,14 +95,21 @@ class Mentions:
             return True  # "Travellers queue at security, maybe forty of them.": how many, said last
         if m.last + 1 >= s.n:
             return False
-        if m.relation not in (None, f"subset_of:{index}") or m.label not in ("person", before.label):
-            return False
+        if m.relation not in (None, f"subset_of:{index}") or \
+                m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person"):
+            return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full
         between = range(before.last + 1, m.first - 1)
         if any(s.w[x].pos in ("VERB", "AUX") or s.low[x] in (",", ";", ":") for x in between):
             return False
         after = m.last + 1
+        if tuple(s.low[after:after + 2]) in (("in", "all"), ("in", "total"), ("all", "told")):
+            after += 2  # "ward A's patients, six in all, make their way out"
+        elif s.low[after] == "altogether":
+            after += 1
+        if after >= s.n:
+            return False
         return s.low[after] == "," or s.w[after].pos in ("VERB", "AUX") or self.people.third_person_verb(after)
 
     # ---- where a group can start -------------------------------------------------------------
@@ -131,7 +151,27 @@ class Mentions:
             return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
             return True  # "the boardroom meeting of twelve people breaks up"
+        if prev in ("'s", "’s") and self.possessor_place(at) is not None:
+            return True  # "ward A's patients", "the café's 8 customers": the people of a place
         return self._parser_subject(at)
+
+    def possessor_place(self, at: int) -> Place | None:
+        """The zone whose people the mention at `at` is ("ward A's patients": ward_a), or None."""
+        s = self.s
+        p = at - 1
+        if p < 1 or s.low[p] not in ("'s", "’s"):
+            return None
+        k = p
+        while k > 0 and not s.is_punct(k - 1) and s.low[k - 1] not in lx.CLAUSE_STARTERS and p - k < 4:
+            k -= 1
+        k = s.skip(k, lx.DETERMINERS)
+        words = tuple(s.low[k:p])
+        if not words or any(self.people.is_person_noun(x) for x in range(k, p)):
+            return None
+        match = s.index.match(phrase_lemmas(list(words)))
+        if match is None or match.kind != "zone" or not match.exact:
+            return None
+        return Place("in", k, words, match, p)
 
     def _place_before(self, p: int) -> bool:
         """Whether the words of p's clause before it name a place and no person ("the café has")."""

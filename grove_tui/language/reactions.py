@@ -43,12 +43,42 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
     return None
 
 
+# Reactions said with no object: "their grandparents shrink back", "a cleaner recoils".
+_UNAIMED_TAILS = frozenset({"back", "away", "aside", "off"})
+_UNAIMED_VERBS = frozenset({"recoil", "flinch", "cower", "retreat"})
+_UNAIMED_PHRASES = (("step", "back"), ("move", "back"), ("stand", "back"), ("hang", "back"))
+
+
+def unaimed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
+    """A shrinking back with no object, in a sentence that has named the robot before it: a reaction
+    to the robot ("When the robot rolls in, the kids run to it and their grandparents shrink back")."""
+    if not own or not any(s.low[k] in lx.ROBOT_WORDS for k in range(own[0])):
+        return None
+    ownset = set(own)
+    for i in own:
+        end = None
+        aimed = [p for p, interaction in lx.ROBOT_PHRASES.items() if interaction == "avoid" and p[-1] in _UNAIMED_TAILS]
+        for phrase in (*aimed, *_UNAIMED_PHRASES):
+            if s.phrase_words(i, len(phrase), ownset) == phrase:
+                end = i + len(phrase)
+                break
+        if end is None and s.verb(i) in _UNAIMED_VERBS and not s.after_determiner(i):
+            end = i + 1
+        if end is not None and (end >= s.n or s.is_punct(end) or s.low[end] in lx.CLAUSE_STARTERS):
+            return "avoid"
+    return None
+
+
 def _after_robot(s: Sentence, r: int) -> str | None:
-    """Words right after the robot: "stands in the robot's way", "blocks its path"."""
+    """Words right after the robot: "stands in the robot's way", "blocks its path"; but out of its
+    way is making way ("steps out of its way", "out of the robot's path")."""
     for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
         if tuple(s.low[r + 1:r + 1 + len(phrase)]) == phrase or (
                 s.low[r] == "its" and tuple(s.low[r:r + len(phrase)]) == ("its", *phrase[1:])):
-            return interaction
+            before = r - 1
+            while before > 0 and s.low[before] in lx.DETERMINERS:
+                before -= 1
+            return "avoid" if before >= 1 and tuple(s.low[before - 1:before + 1]) == ("out", "of") else interaction
     return None
 
 

@@ -181,6 +181,8 @@ class RobotClauses:
             return True
         q = quantifier(s, k)
         start = q.end if q is not None else s.skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
+        if q is not None and start < s.n and s.low[start] == "of":
+            start = s.skip(start + 1, lx.DETERMINERS)  # "as dozens of shoppers stream in"
         return start < s.n and self.people.person_head(start, counted=q is not None) is not None
 
     # ---- reading them ----------------------------------------------------------------------------

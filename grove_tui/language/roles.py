@@ -116,6 +116,11 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
     is_door = p.match is not None and p.match.kind == "door"
     if prep == "out":
         return "destination" if is_door else "start"
+    if prep == "from" and p.out_of and is_door and _is_exit(index, p) and verb not in lx.ARRIVAL_VERBS:
+        return "destination"  # "run out of the north doors": out of the building through them
+    if prep == "from" and p.written == "from" and stationary and intent in lx.STATIONARY_INTENTS and \
+            (verb_index is None or p.index > verb_index):  # not a fronted "From the pharmacy, two wait"
+        return "location"  # "a guard watches them from the supermarket doors": where the watcher stands
     if prep in ("from", "obj:start"):
         return "start"
     if prep in ("for", "purpose"):  # "head for the exit"; "to catch the train at platform 1"

@@ -3,7 +3,8 @@
 `normalise` gives the text the reader parses: Unicode compatibility forms folded (full-width
 letters "Ｔｅｎ" are "Ten", ligatures are letters), symbols and emoji that are no words dropped
 ("👨‍👩‍👧‍👦 a family" is "a family"; a lone surrogate no longer reaches the parser), chat
-abbreviations written out ("ppl" is "people", "&" is "and"), and runs of spaces collapsed. Letters
+abbreviations written out ("ppl" is "people", "&" is "and", "@ the desk" is "at the desk", "~30" is
+"about 30"), and runs of spaces collapsed. Letters
 with accents stay ("café"); `plain` strips them where world names are compared.
 """
 
@@ -23,6 +24,10 @@ _CHAT_WORD = re.compile(r"(?<![\w'])(" + "|".join(re.escape(w) for w in sorted(C
 # "3 kids & their mum", "2 nurses + 1 porter"; not the "&" of an abbreviation ("A&E", "R&D")
 _JOINING_SIGN = re.compile(r"(?<!\b[A-Za-z])(?<=\w)\s*(?:&|\+)\s*(?=\w)|(?<=\b[A-Za-z])\s+(?:&|\+)\s*(?=\w)"
                            r"|(?<=\b[A-Za-z])(?:&|\+)\s+(?=\w)")
+# "@ the counter", "@gate 3": "at" in chat, but never inside an address ("bob@example.org")
+_AT_SIGN = re.compile(r"(?<![\w.])@\s*(?=\w)")
+# "~30 pax", "~ 10 people": about so many
+_TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
 
 
 def normalise(text: str) -> str:
@@ -31,6 +36,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
+    kept = _TILDE.sub("about ", _AT_SIGN.sub("at ", kept))
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     return " ".join(kept.split())
 

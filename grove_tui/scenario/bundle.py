@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from grove_tui.bt.format.document import TreeDocument, TreeFiles
 from grove_tui.bt.format.xml import read_tree, write_tree
+from grove_tui.jsontypes import JSONMapping
 from grove_tui.files import (absolute_path, atomic_directory, link_or_copy, protect_folders, relative_file,
                              write_files_atomic)
 from grove_tui.errors import BundleError, GroveError
@@ -81,7 +82,7 @@ class BundleContents(Protocol):
     def grid(self) -> OccupancyGrid: ...
 
     @property
-    def report(self) -> Mapping[str, Any]: ...  # generation.json: JSON, written as it is
+    def report(self) -> JSONMapping: ...  # generation.json: JSON, written as it is
 
 
 def tree_texts(trees: Mapping[str, TreeDocument]) -> dict[str, str]:
@@ -287,7 +288,7 @@ def load_bundle_world(bundle_dir: str | Path, scenario: Scenario) -> World:
     return load_world(world_source(bundle_dir, scenario))
 
 
-def load_report(bundle_dir: str | Path) -> dict[str, Any]:  # generation.json: JSON, read key by key by its users
+def load_report(bundle_dir: str | Path) -> dict[str, Any]:  # Any: generation.json as parsed, read key by key by its users
     path = Path(bundle_dir) / REPORT_FILE
     try:
         return json.loads(path.read_text(encoding="utf-8"))

@@ -14,8 +14,11 @@ the bundle keeps it.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TypedDict
+
+from grove_tui.jsontypes import JSONMapping, JSONObject, Parsed
 
 ADDED, CHANGED, REMOVED = "added", "changed", "removed"
 MARKS = {ADDED: "+", CHANGED: "~", REMOVED: "-"}
@@ -42,12 +45,12 @@ class GroupSummary:
             out += f", {self.reaction} with the robot"
         return out
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"label": self.label, "count": self.count, "behavior": self.behavior, "start": self.start,
                 "pace": self.pace, "reaction": self.reaction}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupSummary:
+    def from_dict(cls, data: Parsed) -> GroupSummary:
         return cls(str(data["label"]), int(data["count"]), str(data.get("behavior", "")), str(data.get("start", "")),
                    str(data.get("pace", "normal")), str(data.get("reaction", "")))
 
@@ -85,13 +88,13 @@ class GroupChange:
             parts.append(f"robot: {b.reaction or 'no reaction'} → {a.reaction or 'no reaction'}")
         return f"~ {a.label}: " + ("; ".join(parts) if parts else "unchanged")
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"kind": self.kind, "before": self.before.to_dict() if self.before else None,
                 "after": self.after.to_dict() if self.after else None, "fields": list(self.fields),
                 "regenerated": self.regenerated}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> GroupChange:
+    def from_dict(cls, data: Parsed) -> GroupChange:
         return cls(str(data["kind"]), GroupSummary.from_dict(data["before"]) if data.get("before") else None,
                    GroupSummary.from_dict(data["after"]) if data.get("after") else None,
                    tuple(str(f) for f in data.get("fields", ())), bool(data.get("regenerated", False)))
@@ -106,11 +109,11 @@ class RobotChange:
     def line(self) -> str:
         return f"{MARKS.get(self.kind, '~')} robot: {self.before} → {self.after}"
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"kind": self.kind, "before": self.before, "after": self.after}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> RobotChange:
+    def from_dict(cls, data: Parsed) -> RobotChange:
         return cls(str(data["kind"]), str(data.get("before", "")), str(data.get("after", "")))
 
 
@@ -134,16 +137,24 @@ class RefineDiff:
         out += [f"! {note}" for note in self.notes]
         return out
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> JSONObject:
         return {"sentence": self.sentence, "groups": [g.to_dict() for g in self.groups],
                 "robot": self.robot.to_dict() if self.robot is not None else None, "kept": self.kept,
                 "notes": list(self.notes)}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> RefineDiff:
+    def from_dict(cls, data: Parsed) -> RefineDiff:
         return cls(str(data.get("sentence", "")), tuple(GroupChange.from_dict(g) for g in data.get("groups", ())),
                    RobotChange.from_dict(data["robot"]) if data.get("robot") else None, int(data.get("kept", 0)),
                    tuple(str(n) for n in data.get("notes", ())))
+
+
+class StageTiming(TypedDict):
+    """One stage's entry in generation.json's "stages" (and a history step's): its time and tokens."""
+
+    seconds: float
+    prompt_tokens: int
+    completion_tokens: int
 
 
 @dataclass(frozen=True)
@@ -152,18 +163,18 @@ class HistoryStep:
 
     number: int
     sentence: str
-    reading: dict[str, Any]  # the EditReading's to_dict() (language/edits.py)
+    reading: JSONMapping  # the EditReading's to_dict() (language/edits.py)
     diff: RefineDiff
     seed: int = 0
     seconds: float = 0.0
-    stages: dict[str, Any] = field(default_factory=dict)
+    stages: Mapping[str, StageTiming] = field(default_factory=dict)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> dict[str, object]:  # JSON; object, because JSONValue cannot name StageTiming
         return {"number": self.number, "sentence": self.sentence, "reading": self.reading,
                 "diff": self.diff.to_dict(), "seed": self.seed, "seconds": self.seconds, "stages": self.stages}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> HistoryStep:
+    def from_dict(cls, data: Parsed) -> HistoryStep:
         return cls(int(data["number"]), str(data["sentence"]), dict(data.get("reading") or {}),
                    RefineDiff.from_dict(data.get("diff") or {}), int(data.get("seed", 0)),
                    float(data.get("seconds", 0.0)), dict(data.get("stages") or {}))
@@ -179,5 +190,5 @@ class History:
         return [self.prompt] + [step.sentence for step in self.steps]
 
     @classmethod
-    def from_report(cls, report: dict[str, Any]) -> History:
+    def from_report(cls, report: Parsed) -> History:
         return cls(str(report.get("prompt", "")), tuple(HistoryStep.from_dict(s) for s in report.get("history", ())))

@@ -23,7 +23,7 @@ from grove_tui.limits import MAX_COORDINATE, InputLimitError, load_yaml_bounded,
 
 Point = tuple[float, float]
 # A mapping as scenario.yaml holds it: what to_dict writes and from_dict reads, its values checked one by one.
-YamlDict = dict[str, Any]
+YamlDict = dict[str, Any]  # Any: YAML values, each checked (or written) where its key is read
 
 
 # HuNavSim's behavior types (hunav_msgs/Agent): what a bundle's `behavior` may name.
@@ -331,7 +331,7 @@ def _agent_to_dict(agent: AgentSpec) -> YamlDict:
     return data
 
 
-def _optional(data: YamlDict, key: str, kind: type, where: str) -> Any:  # of `kind`, which the caller names
+def _optional(data: YamlDict, key: str, kind: type, where: str) -> Any:  # Any: of `kind`, which the caller names
     """`data[key]` checked to be of `kind` (a float also takes an int), or None when absent."""
     value = data.get(key)
     if value is None:
@@ -486,7 +486,7 @@ def _robot_from_dict(data: object, where: str) -> RobotSpec:
 ROBOT_TASKS = ("cross", "wait", "patrol", "follow")
 
 
-def _robot_task(value: Any, where: str) -> str:
+def _robot_task(value: object, where: str) -> str:
     if value not in ROBOT_TASKS:
         raise ScenarioError(f"{where}: {_short(value)} is not a robot task; use one of {', '.join(ROBOT_TASKS)}")
     return str(value)

@@ -25,10 +25,9 @@ reading and the post-processed groups.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Any
 
-# generation.json's "grounding" entry and its parts as JSON holds them: to_dict writes them, from_dict reads them.
-JsonDict = dict[str, Any]
+from grove_tui.jsontypes import JSONObject, Parsed
+
 OK_MARK = "✓"
 FAIL_MARK = "✗"
 PLANNED_MARK = "·"
@@ -97,9 +96,9 @@ class Claim:
     def checked(self, status: str, evidence: str) -> Claim:
         return replace(self, status=status, evidence=evidence)
 
-    def to_dict(self) -> JsonDict:
-        data: JsonDict = {"kind": self.kind, "asked": self.asked, "plan": self.plan, "status": self.status,
-                                "evidence": self.evidence}
+    def to_dict(self) -> JSONObject:
+        data: JSONObject = {"kind": self.kind, "asked": self.asked, "plan": self.plan, "status": self.status,
+                            "evidence": self.evidence}
         for name in ("needs_seconds", "zone", "place", "seconds", "distance", "low", "high"):
             value = getattr(self, name)
             if value is not None:
@@ -116,7 +115,7 @@ class Claim:
         return data
 
     @classmethod
-    def from_dict(cls, data: JsonDict) -> Claim:
+    def from_dict(cls, data: Parsed) -> Claim:
         point = data.get("point")
         return cls(str(data["kind"]), str(data.get("asked", "")), str(data.get("plan", "")),
                    str(data.get("status", PLANNED)), str(data.get("evidence", "")),
@@ -127,11 +126,11 @@ class Claim:
                    _float(data.get("high")), float(data.get("share", 0.9)))
 
 
-def _float(value: Any) -> float | None:
+def _float(value: float | str | None) -> float | None:
     return None if value is None else float(value)
 
 
-def _str(value: Any) -> str | None:
+def _str(value: object) -> str | None:
     return None if value is None else str(value)
 
 
@@ -176,9 +175,9 @@ class GroupGrounding:
             text += ", changed by " + ", ".join(str(c + 1) for c in self.changed_by)
         return text
 
-    def to_dict(self) -> JsonDict:
-        data: JsonDict = {"who": self.who, "label": self.label, "status": self.status, "ok": self.ok,
-                                "members": list(self.members), "claims": [c.to_dict() for c in self.claims]}
+    def to_dict(self) -> JSONObject:
+        data: JSONObject = {"who": self.who, "label": self.label, "status": self.status, "ok": self.ok,
+                            "members": list(self.members), "claims": [c.to_dict() for c in self.claims]}
         if self.added:
             data["added"] = list(self.added)
         if self.unsure:
@@ -192,7 +191,7 @@ class GroupGrounding:
         return data
 
     @classmethod
-    def from_dict(cls, data: JsonDict) -> GroupGrounding:
+    def from_dict(cls, data: Parsed) -> GroupGrounding:
         claims = tuple(Claim.from_dict(c) for c in data.get("claims", ()))
         if not claims and data.get("checks"):
             claims = tuple(_legacy_claim(c) for c in data["checks"])
@@ -202,7 +201,7 @@ class GroupGrounding:
                    int(data.get("asked_by", 0)), tuple(int(c) for c in data.get("changed_by", ())))
 
 
-def _legacy_claim(check: JsonDict) -> Claim:
+def _legacy_claim(check: Parsed) -> Claim:
     """A check of a report written before outcomes were checked: it agreed with the reading at most,
     so it is only planned (or ✗ where it already disagreed)."""
     ok = bool(check.get("ok", False))
@@ -228,15 +227,15 @@ class RobotGrounding:
     def ok(self) -> bool:
         return self.status == HOLDS
 
-    def to_dict(self) -> JsonDict:
-        data: JsonDict = {"task": self.task, "text": self.text, "plan": self.plan, "status": self.status,
-                                "ok": self.ok, "claims": [c.to_dict() for c in self.claims]}
+    def to_dict(self) -> JSONObject:
+        data: JSONObject = {"task": self.task, "text": self.text, "plan": self.plan, "status": self.status,
+                            "ok": self.ok, "claims": [c.to_dict() for c in self.claims]}
         if self.unsure:
             data["unsure"] = list(self.unsure)
         return data
 
     @classmethod
-    def from_dict(cls, data: JsonDict) -> RobotGrounding:
+    def from_dict(cls, data: Parsed) -> RobotGrounding:
         return cls(str(data.get("task", "pass")), str(data.get("text", "")),
                    tuple(Claim.from_dict(c) for c in data.get("claims", ())), str(data.get("plan", "")),
                    tuple(str(u) for u in data.get("unsure", ())))
@@ -250,11 +249,11 @@ class RunCheck:
     frames: int = 0
     partial: bool = False  # checked while the run goes on (the app's live report)
 
-    def to_dict(self) -> JsonDict:
+    def to_dict(self) -> JSONObject:
         return {"seconds": self.seconds, "frames": self.frames, "partial": self.partial}
 
     @classmethod
-    def from_dict(cls, data: JsonDict) -> RunCheck:
+    def from_dict(cls, data: Parsed) -> RunCheck:
         return cls(float(data.get("seconds", 0.0)), int(data.get("frames", 0)), bool(data.get("partial", False)))
 
 
@@ -297,20 +296,20 @@ class GroundingReport:
         """Checked on a run, every group and the robot hold, nothing unhonoured."""
         return self.status == HOLDS
 
-    def to_dict(self) -> JsonDict:
-        data: JsonDict = {"prompt": self.prompt, "status": self.status, "ok": self.ok,
-                                "groups": [g.to_dict() for g in self.groups],
-                                "unhonoured": list(self.unhonoured), "repairs": list(self.repairs),
-                                "corrections": list(self.corrections),
-                                "robot": self.robot.to_dict() if self.robot is not None else None,
-                                "unsure": list(self.unsure)}
+    def to_dict(self) -> JSONObject:
+        data: JSONObject = {"prompt": self.prompt, "status": self.status, "ok": self.ok,
+                            "groups": [g.to_dict() for g in self.groups],
+                            "unhonoured": list(self.unhonoured), "repairs": list(self.repairs),
+                            "corrections": list(self.corrections),
+                            "robot": self.robot.to_dict() if self.robot is not None else None,
+                            "unsure": list(self.unsure)}
         data["run"] = self.run.to_dict() if self.run is not None else None
         if self.sentences:
             data["sentences"] = list(self.sentences)
         return data
 
     @classmethod
-    def from_dict(cls, data: JsonDict) -> GroundingReport:
+    def from_dict(cls, data: Parsed) -> GroundingReport:
         robot = data.get("robot")
         run = data.get("run")
         return cls(str(data.get("prompt", "")), tuple(GroupGrounding.from_dict(g) for g in data.get("groups", ())),

@@ -18,7 +18,6 @@ import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
 
 from grove_tui.errors import GroveError
 from grove_tui.files import sweep_stale
@@ -35,7 +34,7 @@ from grove_tui.services.dataset import (
     write_index,
 )
 from grove_tui.services.jobs import BatchJob
-from grove_tui.services.session import EventSink, GroveSession
+from grove_tui.services.session import EventSink, GroveSession, JobOutcome
 
 
 @dataclass(frozen=True)
@@ -98,7 +97,7 @@ def run_batch(session: GroveSession, jobs: Sequence[BatchJob], out_dir: Path, *,
                 run_on_ray(to_run, out_dir, hashes, address=ray_address, workers=workers, overwrite=overwrite,
                            models=session.model_options, on_record=finished, return_files=True if ray_return else None)
             else:
-                def outcome_done(_index: int, outcome: Any) -> None:
+                def outcome_done(_index: int, outcome: JobOutcome) -> None:
                     finished(record_outcome(outcome, hashes[outcome.job.name]))
 
                 session.batch(to_run, out_dir, overwrite=overwrite, events_for=events_for, on_outcome=outcome_done)

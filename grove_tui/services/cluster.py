@@ -48,6 +48,12 @@ PROBE_PREFIX = ".grove-ray-probe-"
 # A job's files relative to the batch's --out ("NAME/scenario.yaml", "NAME.mcap", ...), and their bytes.
 JobFiles = tuple[tuple[str, bytes], ...]
 
+# Ray's own objects, by what they are here. Ray is an optional extra that mypy cannot see (not installed
+# where the core is checked), so they have no type but their name.
+RayModule = Any  # Any: the `ray` module (optional extra, not visible to mypy)
+ActorHandle = Any  # Any: a Ray actor handle of BatchWorker (its methods are called through .remote)
+ObjectRef = Any  # Any: a Ray object reference to a job's (record, files)
+
 
 RAY_INSTALL = "Install the cluster extra: ./install.sh cluster (or pip install 'grove-tui[cluster]')."
 
@@ -200,20 +206,20 @@ def export_owner(suffix: str) -> tuple[Callable[[Path], bool], str]:
     return owners[suffix]
 
 
-def _import_ray() -> Any:
+def _import_ray() -> RayModule:
     require_ray()
     import ray
 
     return ray
 
 
-def _connect(ray: Any, address: str, workers: int | None) -> None:
+def _connect(ray: RayModule, address: str, workers: int | None) -> None:
     """`local`: a private Ray on this machine; `auto`, `host:port` (its GCS) or `ray://host:port`: an
     existing cluster."""
     # The workers read the same GROVE_* settings (cache folder, model folder, threads) as the driver,
     # so a job gives the bundle it gives in one process.
     env = {key: value for key, value in os.environ.items() if key.startswith("GROVE_")}
-    options: dict[str, Any] = {"runtime_env": {"env_vars": env}, "log_to_driver": False,
+    options: dict[str, object] = {"runtime_env": {"env_vars": env}, "log_to_driver": False,
                                "include_dashboard": False, "logging_level": "warning"}
     # Workers on this machine, of a private Ray or of a cluster started beforehand with `ray start`,
     # import the driver's own grove_tui, not whichever the folder they start in or the environment's
@@ -258,7 +264,7 @@ def run_on_ray(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str], 
     token = secrets.token_hex(16)
     write_text_atomic(probe, token)
     started_here = not ray.is_initialized()
-    actors: list[Any] = []
+    actors: list[ActorHandle] = []
     try:
         if started_here:
             _connect(ray, address, workers)
@@ -266,9 +272,9 @@ def run_on_ray(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str], 
         count = max(1, min(count, len(jobs)))
         worker_class = ray.remote(num_cpus=1)(BatchWorker)
         actors = [worker_class.remote(*models) for _ in range(count)]
-        sends_back: dict[Any, bool] = {}
+        sends_back: dict[ActorHandle, bool] = {}
 
-        def check_workers(new: list[Any]) -> None:
+        def check_workers(new: list[ActorHandle]) -> None:
             """New actors must run the driver's code; then: does each see --out, or send files back?"""
             try:
                 packages = ray.get([actor.package.remote() for actor in new])
@@ -288,9 +294,9 @@ def run_on_ray(jobs: Sequence[BatchJob], out_dir: Path, hashes: dict[str, str], 
         check_workers(actors)
         idle = list(actors)
         queue = list(jobs)
-        running: dict[Any, tuple[Any, BatchJob]] = {}
+        running: dict[ObjectRef, tuple[ActorHandle, BatchJob]] = {}
         records: list[JobRecord] = []
-        last_prompt: dict[Any, tuple[str, str, str]] = {}
+        last_prompt: dict[ActorHandle, tuple[str, str, str]] = {}
         while queue or running:
             # Hand each idle actor a job as soon as it is free (a slow job never holds up the others),
             # preferably another variation of the prompt it ran last: its model then reuses the prompt's

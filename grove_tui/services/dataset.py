@@ -21,13 +21,16 @@ import sqlite3
 from collections.abc import Iterable, Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from types import ModuleType
+from typing import TYPE_CHECKING, Literal, TypedDict, cast
 
 from grove_tui.errors import DatasetError, OutputError, describe_error, require_extra
 from grove_tui.files import append_line, atomic_file, protect_folders
+from grove_tui.jsontypes import Parsed
 
 if TYPE_CHECKING:
     from grove_tui.services.jobs import BatchJob
+    from grove_tui.llm.registry import ModelChoice
     from grove_tui.services.session import JobOutcome
 
 STATE_FILE = "batch-state.jsonl"
@@ -77,7 +80,7 @@ def job_inputs_hash(job: BatchJob, models: dict[str, str]) -> str:
     return hashlib.sha256(json.dumps(inputs, sort_keys=True).encode()).hexdigest()[:20]
 
 
-def model_identity(choices: dict[str, Any]) -> dict[str, str]:
+def model_identity(choices: dict[str, ModelChoice]) -> dict[str, str]:
     """Each role's model file by name and size: a swapped GGUF changes the inputs hash."""
     identity = {}
     for role, choice in sorted(choices.items()):
@@ -107,9 +110,9 @@ def append_record(out_dir: Path, record: JobRecord) -> None:
     append_line(out_dir / STATE_FILE, line)
 
 
-def read_records(out_dir: Path) -> dict[str, dict[str, Any]]:
+def read_records(out_dir: Path) -> dict[str, Parsed]:
     """The last record of each job name; a torn line (a killed batch, even mid-character) is ignored."""
-    records: dict[str, dict[str, Any]] = {}
+    records: dict[str, Parsed] = {}
     path = out_dir / STATE_FILE
     if not path.is_file():
         return records
@@ -153,7 +156,35 @@ COLUMNS = (
 )
 
 
-def _read_json(path: Path) -> dict[str, Any]:
+class IndexRow(TypedDict):
+    """One scenario of the dataset index, as COLUMNS stores it (JSON columns are text)."""
+
+    name: str
+    status: str  # "ok", "failed" or "pending"
+    exit_code: int | None
+    message: str
+    world: str
+    preset: str
+    prompt: str
+    variation: int | None
+    variations: int | None
+    parent_seed: int
+    seed: int
+    model_roi: str | None
+    model_bt: str | None
+    agents: int | None
+    group_counts: str | None
+    grounding_ok: int | None
+    grounding: str | None
+    generation_seconds: float | None
+    prompt_tokens: int | None
+    completion_tokens: int | None
+    simulated: int | None
+    metrics: str | None
+    inputs: str | None
+
+
+def _read_json(path: Path) -> Parsed:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
@@ -161,7 +192,7 @@ def _read_json(path: Path) -> dict[str, Any]:
     return data if isinstance(data, dict) else {}
 
 
-def _row(job: BatchJob, out_dir: Path, record: dict[str, Any] | None) -> dict[str, Any]:
+def _row(job: BatchJob, out_dir: Path, record: Parsed | None) -> IndexRow:
     bundle = out_dir / job.name
     report = _read_json(bundle / "generation.json") if record and record.get("status") == "ok" else {}
     metrics = _read_json(bundle / "metrics.json") if report else {}
@@ -203,7 +234,7 @@ def check_index_format(index_format: str) -> None:
 PYARROW_INSTALL = "pip install 'grove-tui[parquet]', or keep the default --index sqlite."
 
 
-def _pyarrow() -> tuple[Any, Any]:
+def _pyarrow() -> tuple[ModuleType, ModuleType]:
     require_extra("dataset.parquet", "pyarrow", ["pyarrow", "pyarrow.parquet"], PYARROW_INSTALL)
     import pyarrow
     import pyarrow.parquet
@@ -233,7 +264,7 @@ def write_index(out_dir: Path, jobs: Iterable[BatchJob], index_format: str = "sq
                     names = [name for name, _ in COLUMNS]
                     db.executemany(f"INSERT INTO scenarios ({', '.join(names)}) VALUES "
                                    f"({', '.join('?' * len(names))})",
-                                   [tuple(row[name] for name in names) for row in rows])
+                                   [tuple(row.get(name) for name in names) for row in rows])
             finally:
                 db.close()
     except sqlite3.Error as exc:  # a full disk, mostly ("database or disk is full")
@@ -244,7 +275,7 @@ def write_index(out_dir: Path, jobs: Iterable[BatchJob], index_format: str = "sq
     return target
 
 
-def _write_parquet(target: Path, rows: list[dict[str, Any]]) -> Path:
+def _write_parquet(target: Path, rows: list[IndexRow]) -> Path:
     pa, pq = _pyarrow()
     # The sqlite table's columns and types, so both indexes read the same.
     types = {"TEXT": pa.string(), "INTEGER": pa.int64(), "REAL": pa.float64()}
@@ -255,7 +286,7 @@ def _write_parquet(target: Path, rows: list[dict[str, Any]]) -> Path:
     return target
 
 
-def _read_index(out_dir: Path) -> list[dict[str, Any]]:
+def _read_index(out_dir: Path) -> list[IndexRow]:
     """The rows of DIR's dataset index: the newer of dataset.sqlite and dataset.parquet."""
     present = [path for path in (out_dir / INDEX_FILE, out_dir / PARQUET_FILE) if path.is_file()]
     if not present:
@@ -271,13 +302,14 @@ def _read_index(out_dir: Path) -> list[dict[str, Any]]:
         missing = [name for name, _ in COLUMNS if name not in table.column_names]
         if missing:
             raise DatasetError(f"{path}: not a GROVE dataset index (no column {', '.join(missing)})")
-        return sorted(table.to_pylist(), key=lambda row: str(row["name"]))
+        rows = cast(list[IndexRow], table.to_pylist())  # COLUMNS, checked above
+        return sorted(rows, key=lambda row: str(row["name"]))
     try:
         db = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
         try:
             cursor = db.execute("SELECT * FROM scenarios ORDER BY name")
             names = [column[0] for column in cursor.description]
-            return [dict(zip(names, values)) for values in cursor]
+            return [cast(IndexRow, dict(zip(names, values))) for values in cursor]  # the table write_index made
         finally:
             db.close()
     except sqlite3.Error as exc:
@@ -303,7 +335,7 @@ class DatasetSummary:
 def summarize(out_dir: str | Path) -> DatasetSummary:
     rows = _read_index(Path(out_dir))
 
-    def count_by(key: str) -> dict[str, int]:
+    def count_by(key: Literal["world", "preset"]) -> dict[str, int]:
         counts: dict[str, int] = {}
         for row in rows:
             counts[row[key]] = counts.get(row[key], 0) + 1

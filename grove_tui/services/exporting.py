@@ -20,6 +20,9 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from grove_tui.services.session import GeneratedScenario, GroveSession
     from grove_tui.simulation.simulation import Simulation
+    from grove_tui.exports.foxglove import FoxgloveExport
+    from grove_tui.exports.hunav import HunavExport
+    from grove_tui.exports.rosbag import RosbagExport
 
 
 @dataclass(frozen=True)
@@ -53,29 +56,29 @@ class ExportContext:
 
 
 Exporter = Callable[[ExportContext], None]
-BundleExporter = Callable[..., Any]  # (bundle, out, **options) -> the exporter's result
+BundleExporter = Callable[..., object]  # (bundle, out, **options) -> the exporter's result
 
 
 # --- one format of a bundle (`grove export`, batch jobs) --------------------------------------------------
-def _write_hunav(bundle: Path, out: Path, **options: Any) -> Any:
+def _write_hunav(bundle: Path, out: Path, **options: Any) -> HunavExport:  # Any: export_hunav's options
     from grove_tui.exports.hunav import export_hunav
 
     return export_hunav(bundle, out, **options)
 
 
-def _write_trajectories(bundle: Path, out: Path, **options: Any) -> Any:
+def _write_trajectories(bundle: Path, out: Path, **options: Any) -> list[Path]:  # Any: its writer's options
     from grove_tui.exports.trajectories import export_trajectories
 
     return export_trajectories(bundle, out, **options)
 
 
-def _write_rosbag(bundle: Path, out: Path, **options: Any) -> Any:
+def _write_rosbag(bundle: Path, out: Path, **options: Any) -> RosbagExport:  # Any: export_rosbag's options
     from grove_tui.exports.rosbag import export_rosbag
 
     return export_rosbag(bundle, out, **options)
 
 
-def _write_foxglove(bundle: Path, out: Path, **options: Any) -> Any:
+def _write_foxglove(bundle: Path, out: Path, **options: Any) -> FoxgloveExport:  # Any: its writer's options
     from grove_tui.exports.foxglove import export_foxglove
 
     return export_foxglove(bundle, out, **options)
@@ -126,24 +129,25 @@ def export_picture(ctx: ExportContext) -> None:
     ctx.add("picture", Path(path))
 
 
-def _ros_export(ctx: ExportContext, kind: str, out: Path, missing: Callable[[], str | None]) -> Any:
-    """One export of the run that needs the `ros` extra: its result, or None after noting why it was not
-    written (no run; the extra missing)."""
+def _ros_export_possible(ctx: ExportContext, kind: str, out: Path, missing: Callable[[], str | None]) -> bool:
+    """Whether an export of the run that needs the `ros` extra can be written; False after noting why
+    not (no run; the extra missing)."""
     if ctx.simulation is None or not ctx.trajectories.exists():
-        return None
+        return False
     why = missing()
     if why is not None:
         ctx.add(kind, out, f"not written: {why}")
-        return None
-    return ctx.session.export(kind, ctx.bundle, out)
+        return False
+    return True
 
 
 def export_rosbag_files(ctx: ExportContext) -> None:
     """A ROS 2 bag of the run; a note instead when the `ros` extra is missing."""
     from grove_tui.exports.rosbag import missing_dependency
 
-    result = _ros_export(ctx, "rosbag", ctx.out_dir / "rosbag", missing_dependency)
-    if result is not None:
+    out = ctx.out_dir / "rosbag"
+    if _ros_export_possible(ctx, "rosbag", out, missing_dependency):
+        result: RosbagExport = ctx.session.export("rosbag", ctx.bundle, out)
         ctx.add("rosbag", result.directory, f"{result.frames} frames")
 
 
@@ -151,8 +155,9 @@ def export_foxglove_files(ctx: ExportContext) -> None:
     """A Foxglove MCAP of the run and its layout; a note instead when the `ros` extra is missing."""
     from grove_tui.exports.foxglove import missing_dependency
 
-    result = _ros_export(ctx, "foxglove", ctx.out_dir / "scenario.mcap", missing_dependency)
-    if result is not None:
+    out = ctx.out_dir / "scenario.mcap"
+    if _ros_export_possible(ctx, "foxglove", out, missing_dependency):
+        result: FoxgloveExport = ctx.session.export("foxglove", ctx.bundle, out)
         ctx.add("foxglove", result.mcap, f"+ layout {result.layout.name}")
 
 

@@ -23,9 +23,9 @@ import math
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
 
 from grove_tui.errors import JobFileError
+from grove_tui.jsontypes import JSONObject
 from grove_tui.services.dataset import INDEX_FILE, PARQUET_FILE, STATE_FILE
 from grove_tui.services.exporting import EXPORT_FORMATS, EXPORT_SUFFIXES, NEEDS_RUN
 
@@ -67,7 +67,7 @@ class Variation:
     count: int
     parent_seed: int  # the seed the line (or `grove generate --seed`) gave; index 0 uses it as is
 
-    def to_dict(self, prompt: str) -> dict[str, Any]:
+    def to_dict(self, prompt: str) -> JSONObject:
         return {"index": self.index, "count": self.count, "parent_prompt": prompt, "parent_seed": self.parent_seed}
 
 
@@ -88,7 +88,7 @@ def variation_suffix(index: int, count: int) -> str:
     return f"-v{index:0{max(3, len(str(count - 1)))}d}"
 
 
-def check_variations(value: Any) -> int:
+def check_variations(value: object) -> int:
     if isinstance(value, bool) or not isinstance(value, int):
         raise ValueError(f"variations must be a whole number, got {value!r}")
     if not 1 <= value <= MAX_VARIATIONS:
@@ -133,7 +133,7 @@ def check_text(value: str, key: str) -> str:
     return value
 
 
-def check_seed(value: Any) -> int:
+def check_seed(value: object) -> int:
     """A seed is an integer in 0..2**32-1 (what numpy's generators and llama.cpp take)."""
     if isinstance(value, bool) or not isinstance(value, int):
         raise ValueError(f"seed must be a whole number, got {value!r}")
@@ -142,7 +142,7 @@ def check_seed(value: Any) -> int:
     return value
 
 
-def check_simulate_seconds(value: Any) -> float:
+def check_simulate_seconds(value: object) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ValueError(f"simulate must be a number of seconds, got {value!r}")
     seconds = float(value)
@@ -156,7 +156,7 @@ def _did_you_mean(key: str, choices: tuple[str, ...] = REQUIRED + OPTIONAL) -> s
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 
-def check_exports(value: Any, simulate: float | None) -> tuple[str, ...]:
+def check_exports(value: object, simulate: float | None) -> tuple[str, ...]:
     """`export` is a list of distinct format names; those that read the run need `simulate`."""
     if not isinstance(value, list) or not all(isinstance(kind, str) for kind in value):
         raise ValueError(f"export must be a list of format names like [\"rosbag\"], got {value!r}")
@@ -173,7 +173,7 @@ def check_exports(value: Any, simulate: float | None) -> tuple[str, ...]:
     return tuple(value)
 
 
-def check_followups(value: Any) -> tuple[str, ...]:
+def check_followups(value: object) -> tuple[str, ...]:
     """`refine` is a list of follow-up sentences, each non-empty and as long as a prompt may be."""
     if not isinstance(value, list) or not all(isinstance(f, str) for f in value):
         raise ValueError(f"refine must be a list of follow-up sentences like [\"make the queue longer\"], got {value!r}")
@@ -187,7 +187,7 @@ def check_followups(value: Any) -> tuple[str, ...]:
     return tuple(value)
 
 
-def _check_job(number: int, job: Any, index: int) -> list[BatchJob]:
+def _check_job(number: int, job: object, index: int) -> list[BatchJob]:
     if not isinstance(job, dict):
         raise ValueError("a job must be a JSON object like {\"world\": ..., \"preset\": ..., \"prompt\": ...}")
     unknown = [k for k in job if k not in REQUIRED + OPTIONAL]

@@ -27,7 +27,7 @@ import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field, is_dataclass
 from pathlib import Path, PurePosixPath
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypedDict
 
 from grove_tui.errors import (
     EXIT_CANCELLED,
@@ -77,10 +77,17 @@ if TYPE_CHECKING:
     from grove_tui.simulation.simulation import Simulation
     from grove_tui.world import World
     from grove_tui.world.loader import WorldProblem
+    import numpy as np
 
-LLMFactory = Callable[[str, Any], Any]  # (role, ModelChoice) -> a LocalLLM-like object
-RetrieverFactory = Callable[[], Any]
-EventSink = Callable[[Any], None]  # receives an Event (StageStarted, TokenStreamed, ...) or a LoadingProgress
+    from grove_tui.crowd.sfm import SFMParams
+    from grove_tui.jsontypes import JSONObject
+    from grove_tui.llm.local import LocalLLM
+    from grove_tui.scenario.report import GroundingReport
+    from grove_tui.scenario.events import SimEvent
+
+LLMFactory = Callable[[str, "ModelChoice"], "LocalLLM"]  # (role, choice) -> the model of that role
+RetrieverFactory = Callable[[], "NodeRetriever"]
+EventSink = Callable[["Event | LoadingProgress"], None]  # a stage Event (StageStarted, TokenStreamed, ...) or loading
 MAX_FOLLOWUP_CHARS = 500
 
 
@@ -118,12 +125,12 @@ class GeneratedScenario:
     world_name: str
     preset: str
     seed: int
-    world: Any
-    result: Any  # GenerationResult: scenario, trees, fields, grid, report
+    world: World
+    result: GenerationResult  # scenario, trees, fields, grid, report
     bundle_dir: Path
 
     @property
-    def scenario(self) -> Any:
+    def scenario(self) -> Scenario:
         return self.result.scenario
 
 
@@ -189,20 +196,31 @@ def _warm_reader(world: World | None = None) -> None:
 class Models:
     """The model of each role; one object when both roles name the same file."""
 
-    roi: Any
-    bt: Any
+    roi: LocalLLM
+    bt: LocalLLM
+
+
+class SimulationSummaryDict(TypedDict):
+    """SimulationSummary as JSON holds it (`grove simulate --json`, the batch's records)."""
+
+    sim_seconds: float
+    wall_seconds: float
+    counters: JSONObject
+    wall_penetrations: int
+    goal_reach_rate: float | None
 
 
 @dataclass(frozen=True)
 class SimulationSummary:
     sim_seconds: float
     wall_seconds: float
-    counters: dict[str, Any]
+    counters: JSONObject
     wall_penetrations: int
     goal_reach_rate: float | None
 
-    def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
+    def to_dict(self) -> SimulationSummaryDict:
+        return {"sim_seconds": self.sim_seconds, "wall_seconds": self.wall_seconds, "counters": dict(self.counters),
+                "wall_penetrations": self.wall_penetrations, "goal_reach_rate": self.goal_reach_rate}
 
 
 @dataclass(frozen=True)
@@ -211,7 +229,7 @@ class BundleMetrics:
 
     metrics: MetricsReport
     metrics_file: Path
-    grounding: dict[str, Any] | None = None  # grounding.json as written (JSON; scenario.report.GroundingReport)
+    grounding: JSONObject | None = None  # grounding.json as written (JSON; scenario.report.GroundingReport)
     grounding_file: Path | None = None
 
 
@@ -286,9 +304,10 @@ class GroveSession:
         self.step_seconds: dict[str, float] = {}
         self._models: Models | None = None
         self._model_errors: dict[str, str] = {}
-        self._retriever: Any = None
+        self._retriever: NodeRetriever | None = None
         self._worlds: dict[str, World] = {}
-        self._pipelines: dict[tuple[str, str, Any], GenerationPipeline] = {}
+        # by (world, preset, robot request or "planning-only")
+        self._pipelines: dict[tuple[str, str, RobotRequest | str | None], GenerationPipeline] = {}
         self._warm = False
         self._stop_warm_up = threading.Event()  # set by close(): a warm-up still running loads nothing more
         self._runs_dir = runs_dir
@@ -302,7 +321,7 @@ class GroveSession:
             self.step_seconds.update(load_step_seconds())
 
     @classmethod
-    def for_app(cls, **options: Any) -> GroveSession:
+    def for_app(cls, **options: Any) -> GroveSession:  # Any: GroveSession's own keyword arguments, passed on
         """A session as the app holds one: model processes below the app's priority, warm-up ETAs kept."""
         options.setdefault("model_niceness", MODEL_NICENESS)
         options.setdefault("remember_step_seconds", True)
@@ -479,8 +498,8 @@ class GroveSession:
                 if self._models is not None:
                     return self._models
                 closes = self._closes
-            by_path: dict[Path, Any] = {}
-            loaded: dict[str, Any] = {}
+            by_path: dict[Path, LocalLLM] = {}
+            loaded: dict[str, LocalLLM] = {}
             for role, choice in self.model_choices().items():
                 key = choice.path.resolve()
                 try:
@@ -503,7 +522,7 @@ class GroveSession:
                 _close(llm)
             raise Cancelled("the session was closed while its models loaded")
 
-    def _make_llm(self, role: str, choice: ModelChoice) -> Any:
+    def _make_llm(self, role: str, choice: ModelChoice) -> LocalLLM:
         if self._llm_factory is not None:
             return self._llm_factory(role, choice)
         from grove_tui.llm.local import LocalLLM
@@ -514,9 +533,9 @@ class GroveSession:
         return llm
 
     # warm start -----------------------------------------------------------------------------------------
-    def _warm_steps(self, world: str | None, preset: str | None) -> list[tuple[str, str, str, Callable[[], Any]]]:
+    def _warm_steps(self, world: str | None, preset: str | None) -> list[tuple[str, str, str, Callable[[], object]]]:
         """(key, step, what it does, how) of everything a first generation would otherwise load itself."""
-        steps: list[tuple[str, str, str, Callable[[], Any]]] = [
+        steps: list[tuple[str, str, str, Callable[[], object]]] = [
             ("models", "models", "loading the models", self.load_models),
             ("retrieval", "retrieval", "loading the node index and its embedder", self.warm_up_retrieval),
             (f"reader:{world}" if world is not None else "reader", "reader", "loading the English reader",
@@ -534,7 +553,7 @@ class GroveSession:
         with self._lock:
             return self.step_seconds.get(step, FIRST_STEP_SECONDS.get(step, 2.0))
 
-    def _run_step(self, key: str, step: str, run: Callable[[], Any]) -> float:
+    def _run_step(self, key: str, step: str, run: Callable[[], object]) -> float:
         started = time.perf_counter()
         run()
         seconds = time.perf_counter() - started
@@ -694,7 +713,7 @@ class GroveSession:
             warm_prefix(pipeline.llm_bt, pipeline.preset, pipeline.world,
                         getattr(pipeline.retriever, "documents_named", None))
 
-    def retriever(self) -> Any:
+    def retriever(self) -> NodeRetriever:
         with self._lock:
             if self._retriever is None:
                 if self._retriever_factory is not None:
@@ -733,7 +752,7 @@ class GroveSession:
         labelled = load_eval_set(cases if cases is not None else retriever.node_db_dir / "eval.yaml")
         return evaluate(retriever, labelled, k)
 
-    def loaded_models(self) -> list[Any]:
+    def loaded_models(self) -> list[LocalLLM]:
         """The model instances loaded so far (each once), without loading any."""
         with self._lock:
             if self._models is None:
@@ -981,7 +1000,8 @@ class GroveSession:
             return None
         return OutcomeChecker(planned, generated.scenario, generated.world)
 
-    def check_run_rows(self, checker: OutcomeChecker, rows: Any, events: list[Any], partial: bool = True) -> Any:
+    def check_run_rows(self, checker: OutcomeChecker, rows: np.ndarray, events: Sequence[SimEvent],
+                       partial: bool = True) -> GroundingReport:
         """The report checked on the run so far: the recorder's new rows (whole frames, taken between
         steps) go into the checker, rounded as trajectories.csv stores them, so the live report equals
         the grounding.json the same run writes."""
@@ -1119,7 +1139,7 @@ class GroveSession:
         return run_empirical(model, tuple(checks) or tuple(CHECKS))
 
     # exports ----------------------------------------------------------------------------------------------
-    def export(self, kind: str, bundle: str | Path, out: str | Path, **options: Any) -> Any:
+    def export(self, kind: str, bundle: str | Path, out: str | Path, **options: Any) -> Any:  # Any: per format (BY_KIND)
         """Write one export format of a bundle (services.exporting.EXPORT_FORMATS); returns that exporter's result."""
         from grove_tui.services.exporting import BY_KIND, EXPORT_FORMATS
 
@@ -1167,7 +1187,7 @@ class GroveSession:
         return Path(target)
 
     def record_episode(self, source: str | Path, out_dir: str | os.PathLike[str], scenario: Scenario,
-                       episode: Mapping[str, Any],
+                       episode: Mapping[str, object],
                        simulation: Simulation, *, overwrite: bool = False) -> Path:
         """A robot policy's episode (gym.recording) as a bundle at `out_dir`: the source bundle's files, the
         scenario with the driven path, `episode` as episode.json, and the run the simulation made."""
@@ -1301,9 +1321,9 @@ class GroveSession:
         results: list[CaseResult] = []
         for index, case in enumerate(cases, start=1):
             world = self.load_world(case.world)
-            generated: dict[str, tuple[Any, TreeFiles, Path]] = {}
+            generated: dict[str, tuple[Scenario, TreeFiles, Path]] = {}
 
-            def generate_method(method: str) -> tuple[Any, TreeFiles, Path]:
+            def generate_method(method: str) -> tuple[Scenario, TreeFiles, Path]:
                 preset = case.preset if method == "grove" else "vanilla"
                 made = self.generate(ScenarioRequest(case.world, preset, case.prompt, case.seed),
                                      out / "bundles" / case.id / method)
@@ -1409,20 +1429,20 @@ class GroveSession:
         return scores
 
 
-def _close(llm: Any) -> None:
+def _close(llm: object) -> None:
     closer = getattr(llm, "close", None)
     if callable(closer):
         closer()
 
 
-def _is_running(llm: Any) -> bool:
+def _is_running(llm: object) -> bool:
     if llm is None:
         return False
     running = getattr(llm, "running", None)
     return True if running is None else bool(running)
 
 
-def pedestrian_params(model: str | None = None) -> Any:
+def pedestrian_params(model: str | None = None) -> SFMParams:
     """SFMParams of a pedestrian model by name, or of the settings' simulation.pedestrian_model."""
     from grove_tui.crowd.sfm import SFMParams
     from grove_tui.settings import PEDESTRIAN_MODELS, load_settings

@@ -235,3 +235,14 @@ def test_parse_accepts_in_bounds_numbers_outside_the_grammar_menu():
     """The grammar offers a short menu of values; a hand-written draft is held to the manifest bounds only."""
     text = _line(EXAMPLE, "spacing=0.6", "spacing=0.65")
     assert parse_draft(text, NODE_SET, ROIS).groups[0].tree.children[1].ports["spacing"] == 0.65
+
+
+def test_a_value_outside_a_port_with_one_bound_is_refused_with_that_bound():
+    """A port bounded on one side only: the parser names the bound it has (it used to fail on the other)."""
+    from grove_tui.bt.format.manifest import NodeSpec, PortSpec
+
+    nodes = {"Pause": NodeSpec("Pause", "action", (PortSpec("seconds", "float", min=1.0),), "Wait a while.", "grove")}
+    assert parse_draft("2 people from pharmacy: Pause(3)", ["Pause"], ROIS, nodes=nodes).groups[0].tree.ports == {
+        "seconds": 3.0}
+    with pytest.raises(DraftError, match=r"0\.5 is outside 1\.\."):
+        parse_draft("2 people from pharmacy: Pause(0.5)", ["Pause"], ROIS, nodes=nodes)

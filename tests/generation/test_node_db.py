@@ -144,3 +144,12 @@ def test_split_camel_reads_node_names_as_words():
     assert split_camel("FollowVelocityField") == "follow velocity field"
     assert split_camel("IsRobotVisible") == "is robot visible"
     assert split_camel("GoTo") == "go to"
+
+
+def test_a_presets_file_that_is_not_a_mapping_is_named(node_db_copy: Path) -> None:
+    """presets.yaml must map each preset to what it prioritises; a list is refused with the file's name."""
+    from grove_tui.errors import NodeDbError
+
+    (node_db_copy / "presets.yaml").write_text("- emergency\n- queuing\n", encoding="utf-8")
+    with pytest.raises(NodeDbError, match=r"presets\.yaml: expected a mapping"):
+        load_node_database(node_db_copy)

@@ -160,7 +160,7 @@ class LeafNode(TreeNode):
     def polls(cls) -> bool:
         return cls.poll is not LeafNode.poll
 
-    def get_input(self, name: str, default: PortValue | None = None) -> Any:
+    def get_input(self, name: str, default: PortValue | None = None) -> Any:  # Any: the port's type is the manifest's, known at run time
         """The port's value, read through the blackboard for a {key} port. Any: each port has the type the
         manifest gives it (PortSpec.type), known at run time, so a leaf reads it as that type."""
         value = self.inputs.get(name, default)
