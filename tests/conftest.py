@@ -71,7 +71,7 @@ def block_network():
     socket.getaddrinfo = _real_getaddrinfo
 
 
-# ---- `slow` marks every test that runs a real model ------------------------------------------------
+# ---- `slow` marks every test that runs a real model (and any test that takes more than a second or so) -
 # `python -m pytest -m "not slow"` is the fast run for daily work. It stays fast only if no test in it
 # starts a llama.cpp worker (the embedded model, a tiny Qwen3, any GGUF), the sentence-transformers
 # embedder or the ChromaDB node index; so the ways in are watched here and such a test without the mark

@@ -32,6 +32,7 @@ def _imports(path: Path) -> list[tuple[int, str]]:
     return found
 
 
+@pytest.mark.slow
 def test_core_sources_never_import_textual():
     offenders = []
     for package in CORE:
@@ -66,6 +67,7 @@ def test_import_linter_contract_holds():
     assert out.returncode == 0, out.stdout + out.stderr
 
 
+@pytest.mark.slow
 def test_mypy_is_clean_on_the_headless_core():
     """The typed core ([tool.mypy] in pyproject.toml lists what is checked and what is not yet)."""
     pytest.importorskip("mypy")

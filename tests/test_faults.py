@@ -23,6 +23,7 @@ from grove_tui.services.session import GroveSession
 SIMULATED_SECONDS = 2.0  # the `simulated` fixture's run (tests/conftest.py)
 
 
+@pytest.mark.slow
 def test_import_killed_after_the_swap_leaves_the_new_bundle_and_the_next_run_no_staging(tmp_path):
     from grove_tui.services.session import GroveSession
     import_hunav = GroveSession().import_hunav
@@ -45,6 +46,7 @@ def test_import_killed_after_the_swap_leaves_the_new_bundle_and_the_next_run_no_
         assert snapshot(out) == old and staging_left(out.parent) == [], point
 
 
+@pytest.mark.slow
 def test_simulate_killed_before_the_swap_keeps_the_old_run(simulated, tmp_path):
     bundle = tmp_path / "bundle"
     shutil.copytree(simulated, bundle)
@@ -56,6 +58,7 @@ def test_simulate_killed_before_the_swap_keeps_the_old_run(simulated, tmp_path):
     assert staging_left(tmp_path) == [] and snapshot(bundle) != old
 
 
+@pytest.mark.slow
 def test_metrics_killed_before_the_rename_keeps_the_old_file(simulated, tmp_path):
     bundle = tmp_path / "bundle"
     shutil.copytree(simulated, bundle)
@@ -113,6 +116,7 @@ def test_the_index_write_killed_keeps_the_old_index_and_the_next_run_cleans_up(t
     assert staging_left(out) == [] and sorted(p.name for p in out.iterdir()) == [INDEX_FILE]
 
 
+@pytest.mark.slow
 @pytest.mark.long
 @pytest.mark.parametrize("command", ["import", "simulate", "metrics", "trajectories", "hunav", "rosbag", "foxglove"])
 def test_every_write_point_of_the_commands_without_a_model(simulated, tmp_path, command):

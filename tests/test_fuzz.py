@@ -19,6 +19,7 @@ EXAMPLES = {"world_text": 60, "world_structured": 80, "world_file": 40, "tree": 
             "hunav_import_text": 40, "gym_config": 40, "gym_action": 60}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(TARGETS))
 def test_only_grove_errors(name):
     strategy, _ = TARGETS[name]

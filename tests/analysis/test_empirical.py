@@ -59,6 +59,7 @@ def test_counterflow_sorts_itself_into_lanes():
     assert empirical.lane_order(mixed, np.array([1, -1, 1, -1]), 30.0) == pytest.approx(1 / 9)
 
 
+@pytest.mark.slow
 def test_the_command_reports_both_models_and_fails_only_for_the_default():
     runner = CliRunner()
     both = runner.invoke(validate, ["empirical", "--check", "lanes"])

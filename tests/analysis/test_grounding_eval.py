@@ -47,6 +47,7 @@ CASE = GroundingCase("home-back-door", "residential", "emergency",
                      (ExpectedGroup("people", (("start", "kitchen"), ("evacuate", ["back_door"])), 5),))
 
 
+@pytest.mark.slow
 def test_a_scenario_that_does_what_was_asked_scores_its_outcome_and_its_tick(tmp_path, session):
     _, bundle = hand_bundle(tmp_path / "b", CASE.world, CASE.preset, CASE.prompt,
                             [group("people", 5, "kitchen", node("FollowVelocityField"))])

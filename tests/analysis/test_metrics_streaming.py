@@ -66,6 +66,7 @@ def peak_bytes(path) -> int:
     return peak
 
 
+@pytest.mark.slow
 def test_memory_is_flat_in_run_length(tmp_path):
     short, long = tmp_path / "short.csv", tmp_path / "long.csv"
     write_run(short, 600)

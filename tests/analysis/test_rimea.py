@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from click.testing import CliRunner
 
 from grove_tui.analysis.rimea import run_rimea, test_11_exit_choice as rimea_11, test_9_exits as rimea_9
@@ -40,6 +42,7 @@ def test_assigned_routes_and_the_bottleneck_pass_at_product_defaults():
     assert results[12].passed, results[12]
 
 
+@pytest.mark.slow
 def test_four_exits_drain_a_room_about_twice_as_fast_as_two():
     """RiMEA 9 scaled down from 1000 to 240 people (the command runs 1000): doors, not walking, set the time."""
     result = rimea_9(SFMParams.named("grove"), people=240)

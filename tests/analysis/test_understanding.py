@@ -50,6 +50,7 @@ def test_cases_file_is_what_the_generator_builds():
         "cases.yaml is stale: python eval/understanding/build.py"
 
 
+@pytest.mark.slow
 def test_suite_covers_every_world_and_class_the_issue_names():
     cases = load_cases(CASES)
     assert len(cases) >= 300
@@ -71,6 +72,7 @@ def test_suite_covers_every_world_and_class_the_issue_names():
     assert len({c.prompt for c in cases}) == len(cases)
 
 
+@pytest.mark.slow
 def test_expected_places_are_the_worlds_own_names_and_are_said_in_the_prompt():
     build = _build_module()
     for case in load_cases(CASES):
@@ -229,6 +231,7 @@ def test_cli_writes_the_tables(tmp_path):
 
 
 # No model, about 20 s for the whole suite: it runs with the other unit tests in CI.
+@pytest.mark.slow
 def test_reader_meets_the_issue_thresholds_on_the_whole_suite():
     pytest.importorskip("grove_tui.language.reading")
     table = summarize_reading(run_reading(load_cases(CASES)))

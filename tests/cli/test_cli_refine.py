@@ -31,6 +31,7 @@ def invoke(*args: str):
     return CliRunner().invoke(main, ["refine", *args], catch_exceptions=False)
 
 
+@pytest.mark.slow
 def test_refine_into_a_new_bundle_prints_the_diff_first(bundles, tmp_path):
     out = tmp_path / "refined"
     result = invoke(str(bundles["base"]), "--prompt", "make the queue twice as long", "--out", str(out))

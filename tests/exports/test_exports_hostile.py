@@ -98,6 +98,7 @@ def _on_a_full_disk(args: list[str], limit_bytes: int) -> subprocess.CompletedPr
                           timeout=300, env=env, cwd=REPO)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind, out_name, limit", [("trajectories", "traj", 40_000), ("foxglove", "run.mcap", 40_000)])
 def test_a_full_disk_is_one_line_and_leaves_nothing(simulated_copy, tmp_path, kind, out_name, limit):
     if kind == "foxglove":
@@ -142,6 +143,7 @@ print(json.dumps(runs))
 """
 
 
+@pytest.mark.slow
 def test_a_read_only_file_system_and_a_mount_point_are_one_line_for_every_writer(simulated_copy):
     """A real read-only mount (EROFS, the issue's traceback; /proc above fails otherwise) under each export's
     --out, metrics' and simulate's bundle; and a bundle that is a mount point (a volume mounted there), which

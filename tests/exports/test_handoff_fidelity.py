@@ -78,6 +78,7 @@ def _agents(run) -> dict[int, dict]:
     return {params[name]["id"]: params[name] for name in params["agents"]}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("which", RUNS)
 def test_goal_radius_is_one_value_in_agents_yaml_trees_bag_and_mcap(which, request):
     run = request.getfixturevalue(which)

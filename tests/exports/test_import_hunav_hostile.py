@@ -115,6 +115,7 @@ def test_many_problems_are_counted_not_listed(tmp_path):
     (ALIAS_BOMB, "expands to more than"),
     (b"hunav_loader:\n  ros__parameters:\n    map: caf\xe9\n", "is not UTF-8 text"),
 ], ids=["20,000 brackets", "alias bomb in agents", "not UTF-8"])
+@pytest.mark.slow
 def test_hostile_yaml_is_refused_before_it_is_used(tmp_path, text, contains):
     refuse(write_scenario(tmp_path / "s", text=text), tmp_path / "out", contains)
 

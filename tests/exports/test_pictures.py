@@ -11,6 +11,7 @@ from grove_tui.world import load_world
 pytest.importorskip("matplotlib")
 
 
+@pytest.mark.slow
 def test_png_and_svg_pictures_are_written(bundle, tmp_path):
     world = load_world("hospital")
     scenario = Scenario.load(bundle / "scenario.yaml")

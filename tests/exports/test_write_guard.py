@@ -164,6 +164,7 @@ def test_a_bundle_file_named_like_the_bundles_own_is_refused(tmp_path):
     assert listing(bundle) == before
 
 
+@pytest.mark.slow
 def test_picture_keeps_a_users_image_and_replaces_its_own(simulated_copy, tmp_path):
     pytest.importorskip("matplotlib")
     photo = tmp_path / "figure.png"

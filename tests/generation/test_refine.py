@@ -197,6 +197,7 @@ def test_counts_edited_on_a_saved_bundle_are_a_refinement(base, tmp_path):
     assert report["groups"][1:] == records(base)[1:]
 
 
+@pytest.mark.slow
 def test_evacuees_added_under_the_emergency_preset_need_no_model(hospital, tmp_path):
     """Under a preset that evacuates along fields an evacuating group's tree is the field to its exit,
     whatever a model writes, so adding one asks no model; the groups already there stay as they were."""

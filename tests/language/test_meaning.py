@@ -86,6 +86,7 @@ def test_a_world_s_name_vectors_are_kept_on_disk_and_a_torn_file_is_recomputed(t
     assert PhraseVectors(["another", "world"]).path != first.path
 
 
+@pytest.mark.slow
 def test_reading_by_meaning_never_imports_torch():
     code = ("import sys\nfrom grove_tui.language.reading import read_prompt\nfrom grove_tui.world import load_world\n"
             "r = read_prompt('Four engineers chat in the big meeting room.', load_world('office'))\n"

@@ -282,6 +282,7 @@ def world_planner(request):
     return grid, ThetaStarPlanner(grid, landmarks=8), np.argwhere(~grid.occupied)
 
 
+@pytest.mark.slow
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_world_paths_are_collision_free_and_no_longer_than_astar(world_planner, data):

@@ -168,6 +168,7 @@ def test_plan_cache_builds_a_field_once(rooms_field):
 # ---- every shipped world and every exit ---------------------------------------------------------
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list_worlds())
 def test_world_fields_lead_every_cell_to_each_exit(name):
     world = load_world(name)

@@ -65,6 +65,7 @@ def test_reactions_to_the_robot_happen_and_blocking_slows_it(tmp_path, session):
     assert robot["robot_on_person_collision"] == 0, robot
 
 
+@pytest.mark.slow
 def test_the_robot_is_a_subject_and_groups_never_take_its_places(tmp_path, session):
     prompt = "twelve travellers queue at the ticket office while a robot crosses the ticket hall to the platforms"
     queue = node("Sequence", node("GoTo", target="ticket_office"), node("Queue", service_point="ticket_office"),

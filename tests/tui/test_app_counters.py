@@ -21,6 +21,7 @@ from grove_tui.tui.screens.simulation import LIVE_METRICS, metric_text
 pytestmark = pytest.mark.anyio
 
 
+@pytest.mark.slow
 async def test_counters_shown_equal_the_exported_metrics_json_of_the_same_run(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(120, 40)) as pilot:
@@ -49,6 +50,7 @@ async def test_counters_shown_equal_the_exported_metrics_json_of_the_same_run(tm
         assert flat["queue_served"] > 0, "the run is too short to test the queue counters"
 
 
+@pytest.mark.slow
 def test_the_controller_reads_only_the_frames_recorded_since_its_last_measure(tmp_path):
     """The counters' cost follows the frames since the last look, not the run's length."""
     import threading
@@ -122,6 +124,7 @@ class _SlowSimulation:
         return SimpleNamespace(t=self.time, step=self.step_count)
 
 
+@pytest.mark.slow
 def test_a_run_behind_its_speed_keeps_publishing_frames():
     """Issue 31: at 8x on a machine that cannot keep up, the picture keeps moving (the backlog used to
     grow to 400 steps done in one go, holding the picture for seconds) and the run still goes faster

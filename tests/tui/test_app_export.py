@@ -34,6 +34,7 @@ def gated_session(runs, gate: threading.Event, started: threading.Event):
     return session
 
 
+@pytest.mark.slow
 async def test_export_while_playing_pauses_visibly_shows_progress_and_resumes(tmp_path):
     gate, started = threading.Event(), threading.Event()
     app = GroveApp(gated_session(tmp_path / "runs", gate, started), test_settings(tmp_path))
@@ -69,6 +70,7 @@ async def test_export_while_playing_pauses_visibly_shows_progress_and_resumes(tm
         assert "paused for export" not in str(sim.query_one("#sim-status", Static).render())
 
 
+@pytest.mark.slow
 async def test_export_from_inspect_shows_progress_then_the_files(tmp_path):
     gate, started = threading.Event(), threading.Event()
     app = GroveApp(gated_session(tmp_path / "runs", gate, started), test_settings(tmp_path))

@@ -34,6 +34,7 @@ pytestmark = pytest.mark.anyio
 
 
 
+@pytest.mark.slow
 async def test_generate_inspect_play_and_export(tmp_path):
     llm = FakeLLM()
     app = GroveApp(fake_llm_session(tmp_path / "runs", llm), test_settings(tmp_path))
@@ -125,6 +126,7 @@ async def test_generate_inspect_play_and_export(tmp_path):
         assert isinstance(app.screen, InspectScreen)
 
 
+@pytest.mark.slow
 async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -157,6 +159,7 @@ async def test_simulation_controls_step_speed_select_and_drive_the_robot(tmp_pat
             await wait_until(pilot, lambda: not sim.controller.latest.manual_robot, what="robot back on its path")
 
 
+@pytest.mark.slow
 async def test_a_planning_error_from_the_model_answer_is_shown_with_a_hint(tmp_path):
     # The draft names a spawn that does not exist in this world: the pipeline must refuse it.
     bad = FakeLLM("2 ghosts from nowhere: GoTo(nowhere)")
@@ -205,6 +208,7 @@ async def test_generate_with_the_embedded_model_through_the_real_pipeline(tmp_pa
         await wait_until(pilot, lambda: sim.controller.latest.frame.t >= 2.0, timeout=60, what="2 simulated seconds")
 
 
+@pytest.mark.slow
 async def test_emergency_scenarios_show_velocity_field_arrows_on_the_inspect_map(tmp_path):
     from grove_tui.tui.widgets import map_raster as mr
 

@@ -48,6 +48,7 @@ def diff_text(dialog: RefineScreen) -> str:
     return str(dialog.query_one("#refine-diff", Static).render())
 
 
+@pytest.mark.slow
 async def test_follow_ups_on_the_inspect_screen(tmp_path):
     """One app session (a generation costs seconds): count, cancel, add, refusal, ambiguity, undo, redo, keys."""
     llm = FollowUpLLM(GUARDS, "4 patients from pharmacy: Sequence(GoTo(pharmacy_counter), Queue(pharmacy_counter))")

@@ -11,6 +11,7 @@ from grove_tui.tui.widgets.grounding import GroundingPanel
 pytestmark = pytest.mark.anyio
 
 
+@pytest.mark.slow
 async def test_the_checked_report_updates_during_the_run_and_opens_when_decided(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

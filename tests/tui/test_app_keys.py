@@ -56,6 +56,7 @@ async def inspect_ready(pilot, app: GroveApp) -> InspectScreen:
     return screen
 
 
+@pytest.mark.slow
 async def test_command_palette_runs_the_screens_main_action(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(100, 30)) as pilot:
@@ -68,6 +69,7 @@ async def test_command_palette_runs_the_screens_main_action(tmp_path):
         await wait_until(pilot, lambda: isinstance(app.screen, SimulationScreen), what="simulation from the palette")
 
 
+@pytest.mark.slow
 async def test_map_zooms_pans_and_fits_with_keys(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

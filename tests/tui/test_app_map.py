@@ -25,6 +25,7 @@ def cell_in_view(world_map: MapView, x: float, y: float) -> tuple[int, int]:
     return int(cols[0]) - int(world_map.scroll_offset.x), int(rows[0]) - int(world_map.scroll_offset.y)
 
 
+@pytest.mark.slow
 async def test_zoom_centres_on_the_selected_agent_and_the_legend_names_the_symbols(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -46,6 +47,7 @@ async def test_zoom_centres_on_the_selected_agent_and_the_legend_names_the_symbo
         assert world_map._zoom == 1.0
 
 
+@pytest.mark.slow
 async def test_simulation_legend_names_the_colours_of_each_mode(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

@@ -25,6 +25,7 @@ def messages(app: GroveApp) -> list[str]:
     return [str(n.message) for n in app._notifications]
 
 
+@pytest.mark.slow
 async def test_notifications_are_cleared_when_the_screen_changes_but_not_for_a_dialog(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -47,6 +48,7 @@ async def test_notifications_are_cleared_when_the_screen_changes_but_not_for_a_d
         assert not any("colour by" in m for m in messages(app))
 
 
+@pytest.mark.slow
 async def test_a_notification_raised_after_the_switch_stays(tmp_path):
     app = GroveApp(ScriptedSession(FIXED_SCRIPT, outcome="block", block_seconds=20), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

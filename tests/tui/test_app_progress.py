@@ -34,6 +34,7 @@ async def start_generation(pilot, app: GroveApp) -> GenerationScreen:
     return app.screen
 
 
+@pytest.mark.slow
 async def test_the_running_stage_shows_elapsed_time_tokens_rate_and_eta(tmp_path):
     session = ScriptedSession(FIXED_SCRIPT, outcome="block", block_seconds=20)
     app = GroveApp(session, test_settings(tmp_path))
@@ -54,6 +55,7 @@ async def test_the_running_stage_shows_elapsed_time_tokens_rate_and_eta(tmp_path
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="cancelled")
 
 
+@pytest.mark.slow
 async def test_before_the_first_token_the_stage_says_the_model_reads_the_prompt(tmp_path):
     session = ScriptedSession([StageStarted("rois")], outcome="block", block_seconds=20)
     app = GroveApp(session, test_settings(tmp_path))
@@ -94,6 +96,7 @@ class BrokenModelSession(ScriptedSession):
         return [ModelStatus("roi", "roi.gguf", False, self.PROBLEM), ModelStatus("bt", "bt.gguf", True)]
 
 
+@pytest.mark.slow
 async def test_a_broken_model_is_shown_in_full_and_enter_refuses_with_the_reason(tmp_path):
     session = BrokenModelSession(FIXED_SCRIPT)
     app = GroveApp(session, test_settings(tmp_path))

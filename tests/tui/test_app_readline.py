@@ -70,6 +70,7 @@ async def edit_digits_like_a_shell_user(pilot, field: Input) -> None:
     await help_lists_the_keys(pilot, field)
 
 
+@pytest.mark.slow
 async def test_every_text_field_keeps_readline_keys(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

@@ -20,6 +20,7 @@ from grove_tui.tui.widgets.bt_tree import BTTree
 
 pytestmark = pytest.mark.anyio
 
+@pytest.mark.slow
 async def test_edit_a_count_and_replan_without_the_model(tmp_path):
     llm = FakeLLM()
     app = GroveApp(fake_llm_session(tmp_path / "runs", llm), test_settings(tmp_path))
@@ -63,6 +64,7 @@ async def test_edit_a_count_and_replan_without_the_model(tmp_path):
         assert inspect.generated is generated
 
 
+@pytest.mark.slow
 async def test_impossible_counts_show_the_error_in_the_dialog(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -95,6 +97,7 @@ async def test_impossible_counts_show_the_error_in_the_dialog(tmp_path):
         assert inspect.generated is first and len(first.scenario.agents) == 6
 
 
+@pytest.mark.slow
 async def test_inspect_help_lists_the_counts_binding(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

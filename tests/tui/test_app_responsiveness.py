@@ -33,6 +33,7 @@ async def open_and_close_help(pilot, app: GroveApp, times: int) -> None:
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup again")
 
 
+@pytest.mark.slow
 async def test_the_footer_keeps_only_the_keys_it_shows(tmp_path):
     app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -46,6 +47,7 @@ async def test_the_footer_keeps_only_the_keys_it_shows(tmp_path):
         assert len(watched) == len(shown) and set(map(id, watched)) == set(map(id, shown))
 
 
+@pytest.mark.slow
 async def test_closed_screens_leave_no_render_caches_behind(tmp_path):
     app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -57,6 +59,7 @@ async def test_closed_screens_leave_no_render_caches_behind(tmp_path):
         assert StylesCache.get_inner_outer.cache_info().currsize <= 2 * widgets
 
 
+@pytest.mark.slow
 async def test_help_is_rendered_once_per_screen_and_width(tmp_path):
     app = GroveApp(ScriptedSession(FIXED_SCRIPT), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

@@ -58,6 +58,7 @@ class RetryingLLM(FakeLLM):
         return Generation(QUEUE_DRAFT, "stop", 120, len(QUEUE_DRAFT) // 6, 0.01, 0.001)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("first", "reason"), [("invalid", "invalid draft"), ("cut off", "cut off at 512 tokens")])
 async def test_a_retry_starts_a_fresh_section_and_the_attempt_count_is_real(tmp_path, first, reason):
     llm = RetryingLLM(first)

@@ -26,6 +26,7 @@ from grove_tui.tui.widgets.bt_tree import BTTree
 pytestmark = pytest.mark.anyio
 
 
+@pytest.mark.slow
 async def test_escape_on_a_new_scenario_asks_and_stay_keeps_it(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -41,6 +42,7 @@ async def test_escape_on_a_new_scenario_asks_and_stay_keeps_it(tmp_path):
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup")
 
 
+@pytest.mark.slow
 async def test_export_first_then_escape_leaves_without_asking(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -56,6 +58,7 @@ async def test_export_first_then_escape_leaves_without_asking(tmp_path):
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="setup without a question")
 
 
+@pytest.mark.slow
 async def test_recent_runs_reopen_a_saved_bundle_in_inspect(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -103,6 +106,7 @@ async def test_recent_runs_list_says_when_there_are_none_and_marks_broken_bundle
         await wait_until(pilot, lambda: isinstance(app.screen, SetupScreen), what="closed")
 
 
+@pytest.mark.slow
 async def test_the_app_opens_a_bundle_given_at_start(tmp_path):
     session = fake_llm_session(tmp_path / "runs")
     app = GroveApp(session, test_settings(tmp_path))
@@ -122,6 +126,7 @@ def test_grove_open_refuses_a_folder_that_is_not_a_bundle(tmp_path):
     assert result.output.startswith("error:") and "scenario.yaml" in result.output
 
 
+@pytest.mark.slow
 async def test_seed_field_sets_the_seed_and_g_regenerates_with_the_next_one(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -142,6 +147,7 @@ async def test_seed_field_sets_the_seed_and_g_regenerates_with_the_next_one(tmp_
         assert app.screen.generated.bundle_dir != first.bundle_dir
 
 
+@pytest.mark.slow
 async def test_g_keeps_count_edits_when_asked_and_drops_them_otherwise(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

@@ -73,6 +73,7 @@ class SlowPresetsSession(ScriptedSession):
         return super().presets()
 
 
+@pytest.mark.slow
 async def test_a_preset_is_chosen_by_the_time_the_map_preview_names_its_world(tmp_path):
     # A user (and the tmux test) types as soon as the map is named; Enter must then generate, not
     # warn "Choose a world and a preset first" because the preset list had not arrived yet.
@@ -124,6 +125,7 @@ async def test_empty_prompt_does_not_generate(tmp_path):
         assert isinstance(app.screen, SetupScreen)
 
 
+@pytest.mark.slow
 async def test_escape_cancels_a_running_generation(tmp_path):
     session = ScriptedSession(FIXED_SCRIPT, outcome="block")
     app = make_app(tmp_path, session)
@@ -145,6 +147,7 @@ async def test_escape_cancels_a_running_generation(tmp_path):
         assert app.history[-1] == "ten patients queue at the pharmacy"
 
 
+@pytest.mark.slow
 async def test_generation_error_is_shown_in_place_with_a_hint_and_retry(tmp_path):
     session = ScriptedSession(FIXED_SCRIPT[:4], outcome=ModelError("qwen.gguf: not a GGUF file"))
     app = make_app(tmp_path, session)
@@ -209,6 +212,7 @@ def test_a_broken_config_value_names_the_key(tmp_path):
         load_settings()
 
 
+@pytest.mark.slow
 async def test_history_is_saved_between_sessions(tmp_path):
     session = ScriptedSession(FIXED_SCRIPT, outcome="block")
     app = GroveApp(session, test_settings(tmp_path), persist_history=True)
@@ -221,6 +225,7 @@ async def test_history_is_saved_between_sessions(tmp_path):
     assert load_history(10) == ["people wait in the lobby"]
 
 
+@pytest.mark.slow
 async def test_the_prompt_keeps_readline_keys_and_f2_opens_the_worlds(tmp_path):
     app = make_app(tmp_path)
     async with app.run_test(size=(80, 24)) as pilot:
@@ -242,6 +247,7 @@ async def test_the_prompt_keeps_readline_keys_and_f2_opens_the_worlds(tmp_path):
         assert prompt.value == "ly"
 
 
+@pytest.mark.slow
 async def test_help_scrolls_by_keyboard_at_80x24_and_lists_the_screen_keys_first(tmp_path):
     from grove_tui.tui.screens.help import keys_table
 
@@ -262,6 +268,7 @@ async def test_help_scrolls_by_keyboard_at_80x24_and_lists_the_screen_keys_first
         assert scroll.scroll_y == scroll.max_scroll_y
 
 
+@pytest.mark.slow
 async def test_typing_right_after_picking_a_preset_goes_on_at_the_prompt(tmp_path):
     """Issue 31 item 2: a person picks a preset with Enter and goes on typing at once; the keys reach the
     app before the focus is back on the prompt (all queued here at once, as a loaded machine gets them)."""

@@ -16,6 +16,7 @@ from grove_tui.tui.widgets.prompt_input import PromptInput
 pytestmark = pytest.mark.anyio
 
 
+@pytest.mark.slow
 async def test_an_unsure_reading_is_asked_about_before_generating(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path, ask_when_unsure=True))
     async with app.run_test(size=(80, 24)) as pilot:
@@ -35,6 +36,7 @@ async def test_an_unsure_reading_is_asked_about_before_generating(tmp_path):
         await wait_until(pilot, lambda: isinstance(app.screen, GenerationScreen), timeout=60, what="generation")
 
 
+@pytest.mark.slow
 async def test_a_plain_sentence_generates_without_a_question(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path, ask_when_unsure=True))
     async with app.run_test(size=(80, 24)) as pilot:

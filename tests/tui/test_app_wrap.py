@@ -24,6 +24,7 @@ pytestmark = pytest.mark.anyio
 LONG_DETAIL = "pharmacy, pharmacy_counter, main_entrance, waiting_area, cafeteria, radiology_desk (6 places)"
 
 
+@pytest.mark.slow
 async def test_a_long_stage_detail_scrolls_into_view(tmp_path):
     script = [StageStarted("rois"), StageFinished("rois", 0.4, 300, 12, LONG_DETAIL), StageStarted("retrieval")]
     app = GroveApp(ScriptedSession(script, outcome="block", block_seconds=20), test_settings(tmp_path))
@@ -44,6 +45,7 @@ async def test_a_long_stage_detail_scrolls_into_view(tmp_path):
         await pilot.press("escape")
 
 
+@pytest.mark.slow
 async def test_inspect_wraps_the_xml_and_shows_every_port_of_a_node(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(80, 24)) as pilot:

@@ -43,6 +43,7 @@ def fake_grove(tmp_path, *options: str) -> Terminal:
     return Terminal(" ".join([FAKE_GROVE, *options]), grove_config(tmp_path), 80, 24)
 
 
+@pytest.mark.slow
 def test_a_user_path_at_80x24(tmp_path):
     terminal_env = grove_config(tmp_path)
     # Listing the worlds takes 2 s and loading the model 4 s, as on a loaded machine's first start;

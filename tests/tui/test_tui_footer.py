@@ -32,6 +32,7 @@ async def visible_footer_actions(pilot) -> set[str]:
             and key.region.right <= edge}
 
 
+@pytest.mark.slow
 async def test_quit_and_help_stay_visible_on_every_screen_at_80x24(tmp_path):
     app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
     async with app.run_test(size=(WIDTH, HEIGHT)) as pilot:

@@ -49,6 +49,7 @@ class TestSetupScreen:
 
 
 class TestGenerationScreen:
+    @pytest.mark.slow
     @pytest.mark.parametrize("size", SIZES)
     def test_generation_streaming(self, snap_compare, tmp_path, size, monkeypatch):
         from grove_tui.tui.screens import generation
@@ -82,6 +83,7 @@ class TestGenerationScreen:
 
 
 class TestInspectScreen:
+    @pytest.mark.slow
     @pytest.mark.parametrize("size", SIZES)
     def test_inspect(self, snap_compare, tmp_path, size):
         app = GroveApp(fake_llm_session(tmp_path / "runs"), test_settings(tmp_path))
@@ -91,6 +93,7 @@ class TestInspectScreen:
 class TestInspectGrounding:
     """The grounding report (key `a`) beside the map, read from the generated bundle's report."""
 
+    @pytest.mark.slow
     def test_grounding_report_at_80x24(self, snap_compare, tmp_path):
         async def run_before(pilot) -> None:
             screen = await to_inspect(pilot)
@@ -108,6 +111,7 @@ FIRST_STEPS_SECONDS = 400
 
 
 class TestSimulationScreen:
+    @pytest.mark.slow
     @pytest.mark.parametrize("size", SIZES)
     def test_simulation_after_ten_steps(self, snap_compare, tmp_path, size):
         async def run_before(pilot) -> None:
@@ -132,6 +136,7 @@ class TestSimulationScreen:
 
 
 class TestHelpScreen:
+    @pytest.mark.slow
     @pytest.mark.parametrize("size", SIZES)
     def test_help_for_the_prompt(self, snap_compare, tmp_path, size):
         async def run_before(pilot) -> None:
@@ -144,6 +149,7 @@ class TestHelpScreen:
 
 
 class TestRecentRunsScreen:
+    @pytest.mark.slow
     def test_recent_runs(self, snap_compare, tmp_path, monkeypatch):
         import os
         import time

@@ -88,6 +88,7 @@ def big_world(columns: int, rows: int, size: float = 2.0) -> str:
     return "\n".join(lines) + "\n"
 
 
+@pytest.mark.slow
 def test_20000_zones_load_in_seconds_not_minutes():
     # All-pairs checks took over 180 s here; the spatial indexes make it about 10 s of CPU. CPU time,
     # not wall clock: on a shared machine the wall clock says more about the neighbours than the code.
@@ -195,6 +196,7 @@ def test_a_world_beyond_the_coordinates_trees_can_carry_fails_the_check():
     assert NODES["GoTo"].port("x").max == 10_000.0  # the same bound
 
 
+@pytest.mark.slow
 def test_long_wall_lines_are_simplified_without_deep_recursion(tmp_path):
     """An 80,000-vertex zigzag wall overflowed the C stack in shapely.simplify; it runs in a child process
     so a crash fails this test instead of ending the suite."""

@@ -7,6 +7,8 @@ the runtime factory rather than dying in the first byte.
 
 from __future__ import annotations
 
+import pytest
+
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -42,6 +44,7 @@ def mutated_trees(draw) -> str:
     return text
 
 
+@pytest.mark.slow
 @settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(text=mutated_trees(), as_bytes=st.booleans())
 def test_any_input_gives_a_tree_or_a_bt_error(text, as_bytes):
