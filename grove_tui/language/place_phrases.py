@@ -15,8 +15,9 @@ from dataclasses import dataclass
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
-from grove_tui.language.model import UNSURE_BELOW, FieldConfidence
+from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
+from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -51,27 +52,9 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
     return out
 
 
-# A place matched by meaning alone: at least this similar to one of its names, and this much nearer
-# than any place of another zone (measured on synonyms and absent places of every shipped world,
-# none of them from the understanding sets: tests/language/test_meaning.py).
-MEANING_ACCEPT = 0.75
-MEANING_MARGIN = 0.03
-# A word match that only shares some words with the phrase gives way to a place of another name
-# nearer in meaning: at least this similar, and this much nearer than the word match itself.
-# A phrase about to be refused as a place the world lacks: accepted by meaning when less near
-# ("the stockroom" is 0.64 from "supply room"), but then far ahead of any other zone; the absent places
-# of the shipped worlds' tests and sets come no nearer than 0.59 ("bowling alley" to "dining area").
-MEANING_RESCUE = 0.62
-MEANING_RESCUE_MARGIN = 0.08
-# A place described by what happens there ("the counter where you leave your bags"): the phrase and
-# its clause together, this near one of the place's names.
-MEANING_DESCRIBED = 0.65
-MEANING_STRONG = 0.8
-MEANING_CLEARER = 0.05
-_Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
 
-class PlacePhrases(EmptiedZones):
+class PlacePhrases(EmptiedZones, PlaceMeaning):
     """Place phrases of one sentence, read in order: it remembers the zones named so far, which
     decide later ties, and the phrases in a place role the world does not have."""
 
@@ -194,33 +177,6 @@ class PlacePhrases(EmptiedZones):
 
     # ---- by meaning, and by owner ----------------------------------------------------------------
 
-    def _by_meaning(self, phrase: Sequence[str], lemmas: Sequence[str], accept: float = MEANING_ACCEPT,
-                    margin: float = MEANING_MARGIN) -> _Decided | None:
-        """The place a phrase no word of which names one means, when one is clearly nearest: similar
-        enough to one of its names (`accept`), and clearly nearer than any place of another zone
-        (`margin`)."""
-        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        speaks_of_door = bool(set(content) & lx.DOOR_WORDS)
-        ranked = [r for r in self.s.index.by_meaning(" ".join(phrase)) if r.entry.kind != "door" or speaks_of_door]
-        if not ranked or ranked[0].similarity < accept:
-            return None
-        best = ranked[0]
-        other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
-        ahead = best.similarity - (other.similarity if other is not None else 0.0)
-        if ahead < margin:
-            return None
-        margin = ahead
-        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
-        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
-            best = zone  # "the x-ray room": the room, though the machine's name is as near
-        said = " ".join(phrase)
-        # below MEANING_ACCEPT only to spare a refusal: unsure, so the app asks ("the stockroom: supply_room?")
-        score = 0.7 if best.similarity >= 0.85 and margin >= 0.08 else 0.55 if best.similarity >= MEANING_ACCEPT \
-            else 0.45
-        alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
-        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
-                f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
-
     def _fixture_of_room(self, k: int, j: int) -> PlaceMatch | None:
         """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the
         room's name, a possessive, then the fixture's words, read among that room's fixtures."""
@@ -247,20 +203,6 @@ class PlacePhrases(EmptiedZones):
                  and m.score >= match.score - 1e-9]
         return PlaceMatch(match.zone, "zone", match.zone, match.score, False) if len(alike) >= 2 else match
 
-    def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int) -> tuple[_Decided, int] | None:
-        """The place a phrase followed by "where ..." means, by the meaning of the phrase and its
-        relative clause together, and the index after the clause; None when no place is clearly it."""
-        s = self.s
-        if j >= s.n or s.low[j] != "where":
-            return None
-        end = j + 1
-        while end < s.n and end < j + 10 and not s.is_punct(end) and s.low[end] not in lx.CLAUSE_STARTERS:
-            end += 1
-        if end < j + 3:
-            return None  # "the room where": no clause to read
-        meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
-        return (meant, end) if meant is not None else None
-
     @staticmethod
     def _outdoors(lemmas: Sequence[str]) -> bool:
         """Whether a place phrase names the outdoors past the doors ("the street", "the car park")."""
@@ -281,70 +223,7 @@ class PlacePhrases(EmptiedZones):
         """Whether a zone the sentence named before chose between places alike (see _in_context)."""
         return bool(alternatives) and match.zone in self.context_zones
 
-    def _words_do_not_decide(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch, score: float,
-                             alternatives: Sequence[str]) -> _Decided | None:
-        """Meaning, where words do not decide: places alike ("the main meeting room": the boardroom
-        and both meeting rooms share "meeting room"), a thing's name inside a phrase headed by a room
-        word ("the mummy gallery" is no mummy), a phrase that shares only a word for rooms with its
-        match ("the snack area": only "area"), or only some of its words ("the drug store" shares
-        "store" with the store room, and means the drugstore)."""
-        if (alternatives and score < UNSURE_BELOW) or self._headed_elsewhere(lemmas, match):
-            return self._nearest_of(phrase, lemmas, match, alternatives)
-        if match.exact:
-            return None
-        entry = self.s.index.entry(match.name)
-        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        shared = set(content) & (entry.tokens if entry is not None else set())
-        meant = self._by_meaning(phrase, lemmas)
-        if shared <= lx.GENERIC_PLACE_HEADS:
-            # only "area" or "room" in common: the word match says nothing
-            return meant or (match, 0.5, f"'{' '.join(phrase)}' shares only '{' '.join(sorted(shared))}' with "
-                                         f"{match.name}", ())
-        if meant is None or meant[0].name == match.name or meant[0].score < MEANING_STRONG:
-            return None
-        own = self.s.index.by_meaning(" ".join(phrase), among={match.name})
-        if own and meant[0].score - own[0].similarity < MEANING_CLEARER:
-            return None
-        return meant
-
-    def _headed_elsewhere(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
-        """Whether a fixture or door matched by its whole name sits inside a phrase whose head is a
-        word for rooms it lacks ("the mummy gallery", "the coffee area")."""
-        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        entry = self.s.index.entry(match.name)
-        return bool(content) and match.kind != "zone" and match.exact and entry is not None and \
-            content[-1] not in entry.tokens and content[-1] in self.s.index.zone_words
-
-    def _nearest_of(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch,
-                    alternatives: Sequence[str]) -> _Decided | None:
-        """Of the places the phrase's words point at (the match, the places alike and any place
-        sharing one of its words), the one nearest in meaning, when it is clearly nearer; a room
-        when the phrase's head is a word for rooms."""
-        index = self.s.index
-        said = " ".join(phrase)
-        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        if (entry := index.entry(match.name)) is not None and entry.exit and "exit" in content:
-            return None  # "the exit": any exit is one; the nearest to the scene was chosen, meaning adds nothing
-        rooms_only = self._headed_elsewhere(lemmas, match)
-        strong = [r.entry.name for r in index.by_meaning(said)[:3] if r.similarity >= MEANING_ACCEPT]
-        among = {match.name, *alternatives, *index.sharing(content), *strong}
-        ranked = [r for r in index.by_meaning(said, among=among) if r.entry.kind == "zone" or not rooms_only]
-        if len(ranked) < 2:
-            return None
-        best, margin = ranked[0], ranked[0].similarity - ranked[1].similarity
-        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
-        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
-            best = zone  # "the whale gallery": the room, though its whale is as near
-            margin = best.similarity - max(r.similarity for r in ranked if r.entry.zone != best.entry.zone)
-        elif margin < MEANING_MARGIN:
-            return None
-        score = 0.7 if margin >= 0.08 else 0.55
-        rest = tuple(r.entry.name for r in ranked[:4] if r.entry.name != best.entry.name)
-        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, match.score, False), score,
-                f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
-                f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
-
-    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None, owner: str) -> _Decided | None:
+    def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None, owner: str) -> Decided | None:
         """"her office", "their room", "the kids' bed": of the places named like the phrase, the one that
         belongs to the kind of person whose clause it is ("the director ... her office": the director's
         office), or a thing of that kind in a room of theirs ("mum ... her bed": the bed of the parents'
