@@ -28,6 +28,10 @@ MEANING_RESCUE_MARGIN = 0.08
 # A place described by what happens there ("the counter where you leave your bags"): the phrase and
 # its clause together, this near one of the place's names.
 MEANING_DESCRIBED = 0.65
+# The clause alone ("where you hire a car") against the names of the places its head can be: the
+# activities of places the worlds have come at 0.45-0.89, those of places they lack ("where you do yoga",
+# "where you hire a car" in a station) no nearer than 0.43.
+MEANING_ACTIVITY = 0.5
 MEANING_STRONG = 0.8
 MEANING_CLEARER = 0.05
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
@@ -65,18 +69,71 @@ class PlaceMeaning:
                 f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
 
     def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int) -> tuple[Decided, int] | None:
-        """The place a phrase followed by "where ..." means, by the meaning of the phrase and its
-        relative clause together, and the index after the clause; None when no place is clearly it."""
+        """The place a phrase followed by a relative clause means ("the counter where you hire a car",
+        "the place you buy tickets", "the room they take X-rays in"), and the index after the clause;
+        None when no place is clearly it.
+
+        The clause says what is done there: it alone is compared by meaning with the names of the
+        places the phrase's head can be (a counter is a counter, desk or till; a room is a room; a
+        "place" or "spot" is anything), and the nearest is taken when near enough and clearly ahead
+        of any other zone's; failing that, the phrase and its clause together, as near as a name."""
         s = self.s
-        if j >= s.n or s.low[j] != "where":
+        clause = self._relative_clause(j)
+        if clause is None:
             return None
-        end = j + 1
-        while end < s.n and end < j + 10 and not s.is_punct(end) and s.low[end] not in lx.CLAUSE_STARTERS:
-            end += 1
-        if end < j + 3:
-            return None  # "the room where": no clause to read
-        meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
+        first, end = clause
+        activity = "where " + s.span(first, end - 1).lower()
+        meant = self._by_activity(phrase, lemmas, activity)
+        if meant is None and s.low[j] == "where":
+            meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
         return (meant, end) if meant is not None else None
+
+    def _relative_clause(self, j: int) -> tuple[int, int] | None:
+        """The words of the relative clause at j, after its marker ("where", "that", "which", or none:
+        "the place you buy tickets"), as (first, end); None when no clause starts at j."""
+        s = self.s
+        if j >= s.n:
+            return None
+        if s.low[j] in ("where", "that", "which"):
+            first = j + 1
+            if s.low[j] != "where" and not (first < s.n and (s.is_verb(first) or s.low[first] in _SUBJECTS)):
+                return None  # "the desk that morning": no clause
+        elif s.low[j] in _SUBJECTS and j + 1 < s.n and (s.is_verb(j + 1) or s.w[j + 1].tag == "MD"):
+            first = j  # "the place you buy tickets", "the spot people leave their bags"
+        else:
+            return None
+        end = first
+        while end < s.n and end < first + 9 and (not s.is_punct(end) or s.hyphen_inside(end)) and \
+                not (s.low[end] in lx.CLAUSE_STARTERS and end > first):
+            end += 1
+        if end < first + 2:
+            return None  # "the room where": no clause to read
+        return first, end
+
+    def _by_activity(self, phrase: Sequence[str], lemmas: Sequence[str], activity: str) -> Decided | None:
+        """The place where an activity is done ("where you hire a car"), among the places the phrase's
+        head can be, by the meaning of the activity alone."""
+        index = self.s.index
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        head = content[-1] if content else "place"
+        kinds = [e.name for e in index.entries if _head_fits(head, e.kind, e.tokens)]
+        ranked = index.by_meaning(activity, among=kinds)
+        if not ranked or ranked[0].similarity < MEANING_ACTIVITY:
+            return None
+        best = ranked[0]
+        other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
+        margin = best.similarity - (other.similarity if other is not None else 0.0)
+        if margin < MEANING_MARGIN:
+            return None
+        zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
+        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
+            best = zone  # "the place where you leave your luggage": the room, though its lockers are as near
+        said = " ".join(phrase)
+        score = 0.7 if best.similarity >= 0.6 and margin >= 0.08 else 0.55
+        alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
+        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
+                f"'{said} {activity}' is read by what is done there as {best.entry.name} (like '{best.nearest}')",
+                alternatives)
 
     def _words_do_not_decide(self, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch, score: float,
                              alternatives: Sequence[str]) -> Decided | None:
@@ -140,3 +197,22 @@ class PlaceMeaning:
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, match.score, False), score,
                 f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
                 f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
+
+
+# Who does what is done at a place, in a relative clause with no marker ("the place you buy tickets").
+_SUBJECTS = frozenset("you they we people one i he she staff passengers visitors patients kids children "
+                      "travellers customers shoppers".split())
+# Heads that say only "a place": what is done there decides among every room and fixture.
+_ANY_PLACE = frozenset("place spot area space zone section part region corner point bit location one".split())
+
+
+def _head_fits(head: str, kind: str, tokens: frozenset[str]) -> bool:
+    """Whether a place of this kind and these words can be what a phrase with this head calls it: "the
+    room" a room, "the counter" a counter, desk, till or booth, "the place" anything but a door."""
+    if kind == "door":
+        return head in lx.DOOR_WORDS
+    if head in _ANY_PLACE or head in lx.BUILDING_WORDS:
+        return True
+    if head in ("room", "hall"):
+        return kind == "zone"
+    return head in tokens or any(head in group and tokens & group for group in lx.PLACE_SYNONYMS)

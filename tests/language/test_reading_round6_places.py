@@ -1,0 +1,54 @@
+"""Place classes the sixth fresh set found, each with sentences of its own over at least two worlds
+(none from the understanding sets): a place described by what is done there, an informal name or
+idiom for a place, chat words after a place phrase, a place said again ("the same exit", "there"), a
+purpose whose object is the place, a modifier that rules a place out, and a fronted frame ("At gate
+B2, ... the desk") that decides which fixture."""
+
+from __future__ import annotations
+
+import pytest
+
+from grove_tui.language.reading import read_prompt
+
+
+def read(worlds, world, prompt):
+    reading = read_prompt(prompt, worlds[world])
+    assert reading.unknown_places == (), reading.unknown_places
+    return reading
+
+
+def place_of(group):
+    return group.destination or group.location or group.start
+
+
+# ---- 1. a place described by what is done there -----------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "Two women walk to the desk where you rent a car.", "car_rental_desk"),
+    ("airport", "A pilot walks to the place you buy tickets.", "check_in_hall"),
+    ("hospital", "Two patients walk to the room where they take X-rays.", "radiology"),
+    ("hospital", "A nurse goes to the place where you get your medicine.", "pharmacy"),
+    ("hospital", "A porter goes to the room they keep the supplies in.", "supply_room"),
+    ("station", "A man walks to the place you buy tickets.", "ticket_office"),
+    ("station", "A boy walks to the spot where people drop their bags.", "left_luggage"),
+    ("museum", "Two kids go to the spot where people drop their bags.", "cloakroom"),
+    ("museum", "A teacher goes to the room where children paint.", "education_room"),
+    ("mall", "A man walks to the place where you get cash.", "cash_machine"),
+    ("mall", "A couple walk to the place you try on clothes.", "clothing_store"),
+    ("office", "A woman walks to the machine that makes coffee.", "coffee_machine"),
+    ("office", "Two developers go to the room where the servers are.", "server_room"),
+])
+def test_a_place_described_by_what_is_done_there(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert place_of(g) == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "A businessman hurries to the counter where you hire a car.", "car_rental_desk"),
+    ("mall", "Two girls queue at the counter where you buy cinema tickets.", "ticket_counter"),
+    ("station", "Two women go to the counter where you leave your luggage.", "left_luggage_counter"),
+])
+def test_the_head_of_a_described_place_limits_what_it_can_be(worlds, world, prompt, place):
+    """"the counter where ...": a counter, desk or till, chosen by the clause, not by "counter"."""
+    g, = read(worlds, world, prompt).groups
+    assert place_of(g) == place
