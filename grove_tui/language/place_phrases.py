@@ -54,6 +54,14 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
 
 
 
+# Chat words for a time or a mood that end a place phrase ("@ the coat counter b4 closing", "the café 2nite").
+_CHAT_TIME_WORDS = frozenset("b4 til 2nite 2night tonite 2day 2moro 2morrow tmrw tmr l8r asap rn lol omg tbh imo "
+                             "pls plz thx eod".split())
+_TIME_WORDS = frozenset("today tonight tomorrow yesterday now later soon noon midnight closing opening".split())
+_TIME_NOUNS = frozenset("lunch lunchtime breakfast dinner supper closing opening close noon midnight morning "
+                        "afternoon evening night boarding".split())
+
+
 class PlacePhrases(EmptiedZones, PlaceMeaning):
     """Place phrases of one sentence, read in order: it remembers the zones named so far, which
     decide later ties, and the phrases in a place role the world does not have."""
@@ -271,6 +279,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if s.is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
                     w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
+            if phrase and not joined and self._time_starts(j):
+                break  # "the coat counter b4 closing", "the café till 5", "the lobby asap": a time, not the place
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False
@@ -293,6 +303,17 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if s.w[j - 1].text.endswith(".") and len(s.w[j - 1].text) > 1:
                 break  # "room b." at a sentence end: the full stop closes the phrase
         return phrase, j
+
+    def _time_starts(self, j: int) -> bool:
+        """Whether a time phrase or a chat word starts at j, after a place phrase: "b4 closing", "2nite",
+        "asap", "til 5", "till closing" (but "the book till": a till the world has, with no time after it)."""
+        s = self.s
+        w = s.low[j]
+        if w in _CHAT_TIME_WORDS or w in _TIME_WORDS:
+            return not s.index.knows(w)  # "b4" may be a room of a world ("room b4")
+        after = s.low[j + 1] if j + 1 < s.n else ""
+        return w in ("till", "til", "until", "by", "before", "after") and (
+            after[:1].isdigit() or after in _TIME_WORDS or after in _TIME_NOUNS)
 
     def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
         s = self.s

@@ -52,3 +52,23 @@ def test_the_head_of_a_described_place_limits_what_it_can_be(worlds, world, prom
     """"the counter where ...": a counter, desk or till, chosen by the clause, not by "counter"."""
     g, = read(worlds, world, prompt).groups
     assert place_of(g) == place
+
+
+# ---- 3. chat words and times after a place phrase ----------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("museum", "8 ppl queue @ the ticket desk b4 opening", "ticket_desk"),
+    ("museum", "2 guards chat in the great hall till closing time", "great_hall"),
+    ("mall", "5 teens hang out at the food court 2nite lol", "food_court"),
+    ("mall", "a man waits at the toy till til 6", "toy_till"),
+    ("hospital", "3 ppl wait @ the pharmacy counter asap", "pharmacy_counter"),
+    ("station", "10 ppl queue at the ticket office b4 the 8am train", "ticket_office"),
+])
+def test_a_place_phrase_ends_where_a_time_or_chat_word_starts(worlds, world, prompt, location):
+    g, = read(worlds, world, prompt).groups
+    assert g.location == location
+
+
+def test_a_till_the_world_has_is_still_a_place(worlds):
+    g, = read(worlds, "mall", "3 ppl queue at the book till").groups
+    assert g.location == "book_till"
