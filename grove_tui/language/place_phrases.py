@@ -17,6 +17,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
+from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -54,14 +55,6 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
 
 
 
-# Chat words for a time or a mood that end a place phrase ("@ the coat counter b4 closing", "the café 2nite").
-_CHAT_TIME_WORDS = frozenset("b4 til 2nite 2night tonite 2day 2moro 2morrow tmrw tmr l8r asap rn lol omg tbh imo "
-                             "pls plz thx eod".split())
-_TIME_WORDS = frozenset("today tonight tomorrow yesterday now later soon noon midnight closing opening".split())
-_TIME_NOUNS = frozenset("lunch lunchtime breakfast dinner supper closing opening close noon midnight morning "
-                        "afternoon evening night boarding".split())
-
-
 class PlacePhrases(EmptiedZones, PlaceMeaning):
     """Place phrases of one sentence, read in order: it remembers the zones named so far, which
     decide later ties, and the phrases in a place role the world does not have."""
@@ -76,12 +69,15 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         self.owner: str | None = None  # the kind of people whose clause is read ("her office" is theirs)
         self.named: list[str] = []  # every place a phrase names, in reading order (not those nobody goes to)
         self.covered: set[int] = set()  # the words of every place phrase read
+        self.refused: set[int] = set()  # the words of informal names refused whole ("the hole in the wall")
 
     def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
         """The noun phrase from word k, after the place preposition (or verb) at `at`; `mentioned`
         False for a place said to be where nobody goes ("instead of the lobby")."""
         s = self.s
         low = s.low
+        if k in self.refused:
+            return None  # "the wall" of "the hole in the wall", refused as one name
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
         if elided and self.owner and \
@@ -104,10 +100,15 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):
             return None  # "talk through the roadmap", "chat over the plans": what they talk about
+        start = j
         phrase, j = self._words(j)
+        informal = self._informal(start, phrase, j)
+        if informal is not None:
+            phrase, j = informal[0], informal[1]  # "the hole in the wall": one name, not "hole" and "wall"
         if not phrase:
             return None
-        lemmas = tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
+        lemmas = informal[2] if informal is not None else \
+            tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
         if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
@@ -165,6 +166,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:
+            if informal is not None:
+                self.refused.update(range(start, j))
             return None
         sure = owned[1:] if owned is not None else meant[1:] if meant is not None else None
         score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
@@ -172,6 +175,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             chosen = self._words_do_not_decide(phrase, lemmas, match, score, alternatives)
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
+        if informal is not None and score > INFORMAL_SURE:
+            score, reason = INFORMAL_SURE, f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
         self.context_zones.append(match.zone)
@@ -304,16 +309,31 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 break  # "room b." at a sentence end: the full stop closes the phrase
         return phrase, j
 
+    def _informal(self, start: int, phrase: Sequence[str], j: int) -> tuple[list[str], int, tuple[str, ...]] | None:
+        """An informal name or idiom at the start of a place phrase ("the hole in the wall", "the loo",
+        "the caff counter"): its words as written, the index after them, and the lemmas it is matched
+        by, what it means followed by the phrase's words after it ("cafe counter"). None when none
+        starts there, or when the world calls a place by the phrase's own words ("the gents", "the
+        lift lobby")."""
+        s = self.s
+        found = informal_at(s.low, start)
+        if found is None or (phrase and self.whole_name(phrase)):
+            return None
+        end, plain = found
+        written = [w for w in s.low[start:end] if w not in ("-", "'", "’")]
+        rest = [w for w in s.low[end:j] if w not in ("-", "'", "’")] if j > end else []
+        return [*written, *rest], max(end, j), tuple(phrase_lemmas([*name_tokens(plain), *rest]))
+
     def _time_starts(self, j: int) -> bool:
         """Whether a time phrase or a chat word starts at j, after a place phrase: "b4 closing", "2nite",
         "asap", "til 5", "till closing" (but "the book till": a till the world has, with no time after it)."""
         s = self.s
         w = s.low[j]
-        if w in _CHAT_TIME_WORDS or w in _TIME_WORDS:
+        if w in CHAT_TIME_WORDS or w in TIME_WORDS:
             return not s.index.knows(w)  # "b4" may be a room of a world ("room b4")
         after = s.low[j + 1] if j + 1 < s.n else ""
         return w in ("till", "til", "until", "by", "before", "after") and (
-            after[:1].isdigit() or after in _TIME_WORDS or after in _TIME_NOUNS)
+            after[:1].isdigit() or after in TIME_WORDS or after in TIME_NOUNS)
 
     def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
         s = self.s

@@ -72,3 +72,32 @@ def test_a_place_phrase_ends_where_a_time_or_chat_word_starts(worlds, world, pro
 def test_a_till_the_world_has_is_still_a_place(worlds):
     g, = read(worlds, "mall", "3 ppl queue at the book till").groups
     assert g.location == "book_till"
+
+
+# ---- 2. informal names and idioms for a place -------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("mall", "A man gets money from the hole in the wall.", "cash_machine"),
+    ("mall", "Three girls wait by the bogs.", "restrooms"),
+    ("mall", "Two dads go to the gents.", "restrooms"),
+    ("hospital", "A patient goes to the caff.", "cafeteria"),
+    ("hospital", "A man walks to the lift lobby.", "elevator_hall"),
+    ("station", "A man goes to the caff.", "cafe"),
+    ("station", "A woman buys a paper at the newsie.", "newsagent"),
+    ("office", "A woman goes to the little girls' room.", "restroom_women"),
+])
+def test_an_informal_name_is_read_as_what_it_means(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert place_of(g) == place
+
+
+def test_an_informal_name_is_read_less_than_surely(worlds):
+    g, = read(worlds, "mall", "A man gets money from the hole-in-the-wall.").groups
+    sure = {c.field: c for c in g.confidence}
+    assert g.location == "cash_machine" and 0.6 <= sure["location"].score < 1.0
+
+
+def test_an_idiom_the_world_lacks_is_refused_whole(worlds):
+    """Never as the unknown places its words would be ("hole", "wall")."""
+    reading = read_prompt("A man gets cash from the hole in the wall.", worlds["residential"])
+    assert reading.unknown_places == ("hole in the wall",)
