@@ -10,8 +10,9 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import UNSURE_BELOW
+from grove_tui.language.people import People
 from grove_tui.language.places import PlaceMatch
-from grove_tui.language.sentence import Sentence
+from grove_tui.language.sentence import IDENTIFIER, Sentence
 
 # A place matched by meaning alone: at least this similar to one of its names, and this much nearer
 # than any place of another zone (measured on synonyms and absent places of every shipped world,
@@ -32,6 +33,11 @@ MEANING_DESCRIBED = 0.65
 # activities of places the worlds have come at 0.45-0.89, those of places they lack ("where you do yoga",
 # "where you hire a car" in a station) no nearer than 0.43.
 MEANING_ACTIVITY = 0.5
+# A word before the head that names a kind of place ("ice-cream" stand, "stock" room, "cash" machine)
+# and no word of the place matched must be this near one of its names, or it rules the place out:
+# "ice cream" is 0.26 from the phone stand, "stock" 0.27 from the boardroom, "cash" 0.23 from the
+# x-ray machine; "stock" is 0.34 from the supply room, "drug" 0.63 from the pharmacy.
+MODIFIER_AGREES = 0.3
 MEANING_STRONG = 0.8
 MEANING_CLEARER = 0.05
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
@@ -40,6 +46,36 @@ class PlaceMeaning:
     """The meaning half of the place phrases: a mixin of PlacePhrases, which owns the sentence."""
 
     s: Sentence
+    people: People
+
+    def noun_modifiers(self, first: int, end: int) -> tuple[str, ...]:
+        """The words before a place phrase's head that say what kind of place it is ("ice cream" of "the
+        ice-cream stand", "stock" of "the stockroom"), not how it looks ("the vast hall"), whose it is
+        ("the nurses' post"), which of a series ("gate 2") or the building ("the station café")."""
+        s = self.s
+        index = s.index
+        at = [x for x in range(first, end) if not s.is_punct(x) and s.low[x] not in lx.DETERMINERS
+              and s.low[x] not in ("'s", "’s", "'", "’") and s.lemma(x) not in lx.PLACE_MODIFIERS
+              and not IDENTIFIER.fullmatch(s.low[x])]
+        if len(at) == 1:
+            word = s.lemma(at[0])
+            if word in index.vocabulary or len(word) < 7:
+                return ()
+            # "stockroom", "mailroom": a word the world lacks, made of a kind and a word for places it has
+            return next(((word[:n],) for n in range(3, len(word) - 3) if word[n:] in index.zone_words), ())
+        return tuple(s.lemma(x) for x in at[:-1] if s.w[x].pos in ("NOUN", "PROPN", "X")
+                     and s.lemma(x) not in index.building_words and not self.people.is_person_noun(x))
+
+    def modifiers_agree(self, modifiers: Sequence[str], name: str) -> bool:
+        """Whether the words that say what kind of place a phrase means fit the place `name`: each is
+        one of its words (or a synonym), or together they are near one of its names or its room's."""
+        index = self.s.index
+        entry = index.entry(name)
+        strange = [t for t in modifiers if entry is not None and not index.names_word(entry, t)]
+        if not strange or entry is None:
+            return True
+        near = index.by_meaning(" ".join(strange), among={entry.name, entry.zone})
+        return not near or max(r.similarity for r in near) >= MODIFIER_AGREES
 
     def _by_meaning(self, phrase: Sequence[str], lemmas: Sequence[str], accept: float = MEANING_ACCEPT,
                     margin: float = MEANING_MARGIN) -> Decided | None:

@@ -149,6 +149,10 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             # "to the street", "out to the car park": out through the exit nearest the scene
             exits = [m for e in s.index.exits() if (m := s.index.match(name_tokens(e))) is not None and m.kind == "door"]
             match = self._nearest_exit(exits) if exits and self.context_zones else exits[0] if exits else None
+        kinds = tuple(t for t in lemmas[:-1] if t not in lx.PLACE_MODIFIERS) if informal is not None else \
+            self.noun_modifiers(start, j)
+        if match is not None and not match.exact and owned is None and not self.modifiers_agree(kinds, match.name):
+            match = None  # "the ice-cream stand" is not the phone stand, though both are stands
         meant = None
         described = None if numbered or (match is not None and match.exact) else self._described(phrase, lemmas, j)
         if described is not None:
@@ -162,6 +166,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 # about to be refused: a place the world has under another word ("the stockroom", "the
                 # nurses' post") is still clearly nearest one of its names, if less near
                 meant = self._by_meaning(phrase, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
+            if meant is not None and not self.modifiers_agree(kinds, meant[0].name):
+                meant = None  # "the stockroom" is near "boardroom" by its letters, not by what it is
             match = meant[0] if meant is not None else None
         if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))

@@ -157,6 +157,10 @@ class PlaceIndex:
             return True
         return any(token in group and any(t in group for t in self.vocabulary) for group in PLACE_SYNONYMS)
 
+    def names_word(self, entry: PlaceEntry, token: str) -> bool:
+        """Whether a word is one of a place's words, a synonym of one, or one of its tags."""
+        return self._weight(entry, token) > 0
+
     def _weight(self, entry: PlaceEntry, token: str) -> float:
         if token in entry.tokens:
             return self.idf.get(token, 0.0)

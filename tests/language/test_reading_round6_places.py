@@ -101,3 +101,29 @@ def test_an_idiom_the_world_lacks_is_refused_whole(worlds):
     """Never as the unknown places its words would be ("hole", "wall")."""
     reading = read_prompt("A man gets cash from the hole in the wall.", worlds["residential"])
     assert reading.unknown_places == ("hole in the wall",)
+
+
+# ---- 6. a word that says what kind of place rules out a place of another kind -------------------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("mall", "Two kids queue at the ice-cream stand.", "ice cream stand"),
+    ("mall", "Two teens go to the sports shop.", "sports shop"),
+    ("office", "A clerk walks to the stockroom.", "stockroom"),
+    ("office", "Two interns go to the mailroom.", "mailroom"),
+    ("hospital", "Three visitors go to the maternity ward.", "maternity ward"),
+    ("hospital", "A man gets cash from the hole in the wall.", "hole in the wall"),
+])
+def test_a_place_of_another_kind_is_refused_not_taken(worlds, world, prompt, refused):
+    assert read_prompt(prompt, worlds[world]).unknown_places == (refused,)
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("office", "Four people meet in the main meeting room.", "location", "boardroom"),
+    ("office", "Two devs chat in the big meeting room.", "location", "boardroom"),
+    ("hospital", "A porter pushes a trolley from the stockroom to the ICU.", "start", "supply_room"),
+    ("mall", "Two teens wait at the phone stand.", "location", "phone_kiosk"),
+    ("airport", "Ten passengers wait in the vast hall.", "location", "check_in_hall"),
+])
+def test_synonyms_and_looks_still_find_the_place(worlds, world, prompt, field, place):
+    g, = read(worlds, world, prompt).groups
+    assert getattr(g, field) == place
