@@ -69,6 +69,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         self.owner: str | None = None  # the kind of people whose clause is read ("her office" is theirs)
         self.named: list[str] = []  # every place a phrase names, in reading order (not those nobody goes to)
         self.covered: set[int] = set()  # the words of every place phrase read
+        self.fronted: dict[int, str] = {}  # sentence -> the zone its first words put it in ("At gate B2, ...")
         self.refused: set[int] = set()  # the words of informal names refused whole ("the hole in the wall")
 
     def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
@@ -107,6 +108,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             phrase, j = informal[0], informal[1]  # "the hole in the wall": one name, not "hole" and "wall"
         if not phrase:
             return None
+        if prep == "to" and start == k and informal is None and len(phrase) == 1 and \
+                lx.INTENT_VERBS.get(verb_lemma(phrase[0])) is not None and not self.whole_name(phrase):
+            return None  # "sit waiting to board": a verb, though "board" is a word of "departures board"
         lemmas = informal[2] if informal is not None else \
             tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
         if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas):
@@ -117,7 +121,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
-        match = match or self._in_context(s.index.match(lemmas), lemmas)
+        match = match or self._in_context(s.index.match(lemmas), lemmas, k)
         match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
@@ -188,6 +192,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         self.context_zones.append(match.zone)
         if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
             self.frame_zones.append(match.zone)
+            if at == 0 or s.w[at - 1].sentence != s.w[at].sentence:
+                self.fronted.setdefault(s.w[at].sentence, match.zone)  # "At gate B2, ...": the sentence's frame
         if mentioned:
             self.named.append(match.name)
         self.covered.update(range(k, j))
@@ -301,8 +307,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                     and not self._extends_name(phrase, j) and not self.whole_name([*phrase, w]):
                 break  # "on platform 2 a man sits": the place ends where a new noun phrase starts
             if w.isdigit() or w in lx.UNITS:
-                if not phrase:
-                    break
+                if not phrase or ((not w.isdigit() or any(ch.isdigit() for ch in phrase[-1])) and j + 1 < s.n
+                                  and self.people.is_person_noun(j + 1)):
+                    break  # "at gate A1 two agents chat", "on platform 1 three commuters": a count starts
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1
                 continue
@@ -399,12 +406,18 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         return entry is None or all(t in entry.tokens for t in ids) or any(
             all(t in (index.entry(m.name) or entry).tokens for t in ids) for m in index.candidates(lemmas)[:8])
 
-    def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str]) -> PlaceMatch | None:
-        """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in a zone the prompt
-        has already named ("Gate A1: ... staff at the desk")."""
+    def _in_context(self, match: PlaceMatch | None, lemmas: Sequence[str], k: int) -> PlaceMatch | None:
+        """Of places that tie for a phrase ("the desk", "the jet bridge"), the one in the zone the
+        sentence opened in ("At gate B2, ... two agents chat behind the desk"), else in a zone the
+        prompt has already named ("Gate A1: ... staff at the desk")."""
         index = self.s.index
         if match is None:
             return match
+        frame = self.fronted.get(self.s.w[min(k, self.s.n - 1)].sentence)
+        if frame is not None and match.zone != frame:
+            inside = [m for m in index.candidates(lemmas) if m.score >= match.score - 1e-9 and m.zone == frame]
+            if inside:
+                return inside[0]
         if not self.context_zones or match.zone in self.context_zones:
             tied = [m for m in index.candidates(lemmas) if m.score >= match.score - 1e-9]
             exits = [m for m in tied if (e := index.entry(m.name)) is not None and e.exit]

@@ -127,3 +127,36 @@ def test_a_place_of_another_kind_is_refused_not_taken(worlds, world, prompt, ref
 def test_synonyms_and_looks_still_find_the_place(worlds, world, prompt, field, place):
     g, = read(worlds, world, prompt).groups
     assert getattr(g, field) == place
+
+
+# ---- 7. a fronted frame decides which fixture ---------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "At gate A1, ten passengers sit waiting to board while two agents chat behind the desk.",
+     "gate_a1_desk"),
+    ("airport", "At gate A2 two agents chat at the desk.", "gate_a2_desk"),
+    ("airport", "At gate B2, ten passengers look at the departures board while two agents chat behind the desk.",
+     "gate_b2_desk"),
+    ("hospital", "In exam room 2, a nurse checks the medication cart while a doctor sits at the desk.", "exam_desk_2"),
+    ("hospital", "In exam room 1, a nurse waits while a doctor sits at the desk.", "exam_desk_1"),
+    ("station", "On platform 2, a woman waits while a man sits on the bench.", "platform_2_bench"),
+    ("museum", "In the café, a family sits down while a barista stands at the counter.", "cafe_counter"),
+])
+def test_the_zone_a_sentence_opens_in_decides_its_fixtures(worlds, world, prompt, place):
+    groups = read(worlds, world, prompt).groups
+    assert groups[-1].location == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "At gate B1 two agents chat behind the desk.", "gate_b1"),
+    ("station", "On platform 1 a man sits on the bench.", "platform_1"),
+])
+def test_a_count_after_a_numbered_place_starts_the_people(worlds, world, prompt, place):
+    reading = read(worlds, world, prompt)
+    assert place in reading.places and reading.groups[0].location.startswith(place)
+
+
+def test_to_and_a_verb_is_no_place(worlds):
+    """"waiting to board": boarding, not the departures board."""
+    g, = read(worlds, "airport", "Forty passengers sit at gate B2 waiting to board.").groups
+    assert g.location == "gate_b2" and g.destination is None
