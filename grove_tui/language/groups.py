@@ -27,6 +27,8 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
+# Words after an existential "there" ("there are ten people"), which points at no place.
+_EXISTENTIAL = frozenset("is are was were 's be will must may might seems seem has have".split())
 
 
 @dataclass
@@ -242,6 +244,7 @@ class Groups:
                                        and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
+        self._there(span, roles, stationary)
         self._fixture_where_the_rest_were(m, roles, earlier, stationary)
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
         count = settle_count(s, m, span, start or location or destination, earlier, self.notes)
@@ -306,6 +309,25 @@ class Groups:
         if m.exception_of is not None and m.exception_of < len(earlier) and unplaced:
             parent = earlier[m.exception_of]
             roles.location = parent.start or parent.location  # "... except three patients, who stay seated"
+
+    def _there(self, span: tuple[int, int], roles: Roles, stationary: bool) -> None:
+        """"... and three more wait there", "two parents meet them there": a group that names no place
+        of its own is at (or goes to) the place said last before its "there"."""
+        s = self.s
+        if roles.start or roles.destination or roles.location:
+            return
+        at = next((x for x in range(span[0] + 1, span[1]) if s.low[x] == "there"
+                   and (x + 1 >= s.n or s.low[x + 1] not in _EXISTENTIAL)), None)
+        before = [p for p in self.places.history if at is not None and p.index < at and p.match is not None]
+        if not before:
+            return
+        said = before[-1]
+        name = said.match.name if said.match is not None else ""
+        roles.read_from[name] = replace(said, score=0.8, alternatives=(), reason=f"'there': {name}, said before")
+        if stationary:
+            roles.location = name
+        else:
+            roles.destination = name
 
     def _fixture_where_the_rest_were(self, m: Mention, roles: Roles, earlier: list[GroupReading],
                                      stationary: bool) -> None:

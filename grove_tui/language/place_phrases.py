@@ -70,6 +70,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         self.named: list[str] = []  # every place a phrase names, in reading order (not those nobody goes to)
         self.covered: set[int] = set()  # the words of every place phrase read
         self.fronted: dict[int, str] = {}  # sentence -> the zone its first words put it in ("At gate B2, ...")
+        self.history: list[Place] = []  # every place read that people are at or go to, in reading order
         self.refused: set[int] = set()  # the words of informal names refused whole ("the hole in the wall")
 
     def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
@@ -117,7 +118,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
             return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
-        match = None
+        said_before = self._said_before(k, at, lemmas)  # "the same exit", "that door": the one said before
+        match = said_before[0] if said_before is not None else None
         if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
@@ -131,7 +133,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if named_entry is not None and named_owner in named_entry.tokens and lemmas and lemmas[-1] in named_entry.tokens:
             named_owner = None  # "the women's toilet": the owner is part of the place's own name
         owner = named_owner or (self.owner if possessive else None)
-        owned = self._owned(lemmas, match, owner) if owner else None
+        owned = self._owned(lemmas, match, owner) if owner and said_before is None else None
         if owned is not None:
             match = owned[0]
         if match is None and possessive:
@@ -179,9 +181,10 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if informal is not None:
                 self.refused.update(range(start, j))
             return None
-        sure = owned[1:] if owned is not None else meant[1:] if meant is not None else None
+        sure = owned[1:] if owned is not None else meant[1:] if meant is not None else \
+            said_before[1:] if said_before is not None else None
         score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
-        if not numbered and owned is None and meant is None and not self._context_decided(match, alternatives):
+        if not numbered and sure is None and not self._context_decided(match, alternatives):
             chosen = self._words_do_not_decide(phrase, lemmas, match, score, alternatives)
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
@@ -194,11 +197,13 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             self.frame_zones.append(match.zone)
             if at == 0 or s.w[at - 1].sentence != s.w[at].sentence:
                 self.fronted.setdefault(s.w[at].sentence, match.zone)  # "At gate B2, ...": the sentence's frame
+        self.covered.update(range(k, j))
+        place = Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
+                      out_of=prep == "from" and s.low[at] == "out", written=s.low[at])
         if mentioned:
             self.named.append(match.name)
-        self.covered.update(range(k, j))
-        return Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
-                     out_of=prep == "from" and s.low[at] == "out", written=s.low[at])
+            self.history.append(place)
+        return place
 
     # ---- by meaning, and by owner ----------------------------------------------------------------
 
@@ -321,6 +326,24 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if s.w[j - 1].text.endswith(".") and len(s.w[j - 1].text) > 1:
                 break  # "room b." at a sentence end: the full stop closes the phrase
         return phrase, j
+
+    def _said_before(self, k: int, at: int, lemmas: Sequence[str]) -> Decided | None:
+        """"the same exit", "that door", "this room": the place of that kind said last before, when the
+        phrase points back at one; None otherwise."""
+        s = self.s
+        back = (s.low[k] == "the" and k + 1 < s.n and s.low[k + 1] == "same") or (
+            s.low[k] in ("that", "this") and k + 1 < s.n and not s.is_verb(k + 1))
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if not back or not content:
+            return None
+        fits = {m.name for m in s.index.candidates(lemmas)}
+        for p in reversed(self.history):
+            m = p.match
+            entry = s.index.entry(m.name) if m is not None else None
+            if m is not None and p.index < at and entry is not None and \
+                    (m.name in fits or s.index.names_word(entry, content[-1])):
+                return (m, 0.9, f"'{' '.join(s.low[k:k + 1 + len(lemmas)])}': {m.name}, said before", ())
+        return None
 
     def _informal(self, start: int, phrase: Sequence[str], j: int) -> tuple[list[str], int, tuple[str, ...]] | None:
         """An informal name or idiom at the start of a place phrase ("the hole in the wall", "the loo",

@@ -160,3 +160,35 @@ def test_to_and_a_verb_is_no_place(worlds):
     """"waiting to board": boarding, not the departures board."""
     g, = read(worlds, "airport", "Forty passengers sit at gate B2 waiting to board.").groups
     assert g.location == "gate_b2" and g.destination is None
+
+
+# ---- 4. a place said again ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "Ten passengers walk to the west fire exit and five staff follow them out through that exit.",
+     "emergency_exit_west"),
+    ("airport", "Thirty passengers hurry to the east fire exit, and the 4 people in the lounge leave by the "
+                "same exit.", "emergency_exit_east"),
+    ("hospital", "Five patients go to the east exit; the nurses follow through the same exit.", "east_emergency_exit"),
+    ("museum", "Six tourists leave by the garden door, then four more leave by the same door.", "garden_door"),
+])
+def test_the_same_place_is_the_one_said_before(worlds, world, prompt, place):
+    groups = read(worlds, world, prompt).groups
+    assert groups[-1].destination == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "Two visitors walk to the pharmacy and three more wait there.", "pharmacy"),
+    ("hospital", "Five nurses go to the ICU; two doctors are already there.", "intensive_care"),
+    ("mall", "Four shoppers queue at the cash machine while two friends wait there too.", "cash_machine"),
+    ("museum", "A teacher brings ten kids to the dinosaur gallery and two parents wait for them there.",
+     "dinosaur_gallery"),
+])
+def test_there_is_the_place_said_before(worlds, world, prompt, place):
+    groups = read(worlds, world, prompt).groups
+    assert groups[-1].location == place
+
+
+def test_an_existential_there_points_at_no_place(worlds):
+    g, = read(worlds, "station", "There are ten commuters in the waiting room.").groups
+    assert g.location == "waiting_room"
