@@ -19,7 +19,7 @@ from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
-from grove_tui.language.place_phrases import PlacePhrases, place_confidences
+from grove_tui.language.place_phrases import Place, PlacePhrases, place_confidences
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
@@ -245,6 +245,8 @@ class Groups:
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         self._there(span, roles, stationary)
+        if c.purpose and intent not in ("evacuate", "follow", "robot") and not (roles.destination or roles.location):
+            self._purpose_place(c.purpose, span, roles, stationary)
         self._fixture_where_the_rest_were(m, roles, earlier, stationary)
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
         count = settle_count(s, m, span, start or location or destination, earlier, self.notes)
@@ -328,6 +330,21 @@ class Groups:
             roles.location = name
         else:
             roles.destination = name
+
+    def _purpose_place(self, purpose: str, span: tuple[int, int], roles: Roles, stationary: bool) -> None:
+        """"walk from exam room 2 to get a cup of water": with no place to go to, the place the purpose
+        is done at, by meaning, less sure than a place said."""
+        meant = self.places.purpose_place(purpose)
+        if meant is None:
+            return
+        match, score, reason, alternatives = meant
+        roles.read_from[match.name] = Place("purpose", span[0], tuple(purpose.split()), match, span[0], score, reason,
+                                            alternatives)
+        self.places.named.append(match.name)  # a place of the scenario, as if said
+        if stationary:
+            roles.location = match.name
+        else:
+            roles.destination = match.name
 
     def _fixture_where_the_rest_were(self, m: Mention, roles: Roles, earlier: list[GroupReading],
                                      stationary: bool) -> None:

@@ -38,6 +38,11 @@ MEANING_ACTIVITY = 0.5
 # "ice cream" is 0.26 from the phone stand, "stock" 0.27 from the boardroom, "cash" 0.23 from the
 # x-ray machine; "stock" is 0.34 from the supply room, "drug" 0.63 from the pharmacy.
 MODIFIER_AGREES = 0.3
+# A purpose that names no place ("to get a cup of water", "to sketch the sarcophagus"), against the
+# places' names, when the sentence gives no place to go to: the places of the purposes people write
+# come at 0.50-0.82, those of purposes no place serves ("to get some fresh air", "to meet a friend")
+# no nearer than 0.35.
+MEANING_PURPOSE = 0.5
 MEANING_STRONG = 0.8
 MEANING_CLEARER = 0.05
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
@@ -234,6 +239,24 @@ class PlaceMeaning:
                 f"'{said}' fits {', '.join([best.entry.name, *rest])} by words; by meaning {best.entry.name} "
                 f"(like '{best.nearest}')", rest if score < UNSURE_BELOW else ())
 
+
+    def purpose_place(self, purpose: str) -> Decided | None:
+        """The place a purpose is done at ("to get a cup of water": the water dispenser, "to grab a
+        coffee": the café, "to print something": the printer), by meaning, when one is clearly
+        nearest; less sure than a place said, so the app asks when it is not near."""
+        ranked = [r for r in self.s.index.by_meaning(purpose.lower()) if r.entry.kind != "door"]
+        if not ranked or ranked[0].similarity < MEANING_PURPOSE:
+            return None
+        best = ranked[0]
+        other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
+        margin = best.similarity - (other.similarity if other is not None else 0.0)
+        if margin < MEANING_CLEARER:
+            return None
+        score = 0.65 if best.similarity >= 0.7 else 0.55
+        alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
+        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
+                f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
+                alternatives)
 
 # Who does what is done at a place, in a relative clause with no marker ("the place you buy tickets").
 _SUBJECTS = frozenset("you they we people one i he she staff passengers visitors patients kids children "

@@ -192,3 +192,39 @@ def test_there_is_the_place_said_before(worlds, world, prompt, place):
 def test_an_existential_there_points_at_no_place(worlds):
     g, = read(worlds, "station", "There are ten commuters in the waiting room.").groups
     assert g.location == "waiting_room"
+
+
+# ---- 5. a purpose whose object is the place ----------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "Two porters go to collect a prescription.", "pharmacy_counter"),
+    ("hospital", "A patient walks from ward A to get an x-ray.", "xray_machine"),
+    ("museum", "Two kids run off to buy a souvenir.", "gift_shop"),
+    ("museum", "A painter crosses the great hall to sketch the whale.", "whale_skeleton"),
+    ("office", "Two devs head off to grab a coffee.", "coffee_machine"),
+    ("station", "A woman walks over to buy a newspaper.", "magazine_racks"),
+    ("airport", "Two pilots leave the lounge to grab a coffee.", "cafe"),
+])
+def test_a_purpose_names_the_place_people_go_to(worlds, world, prompt, place):
+    reading = read(worlds, world, prompt)
+    g, = reading.groups
+    sure = {c.field: c.score for c in g.confidence}
+    assert g.destination == place and place in reading.places and sure["destination"] < 0.7
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "Two pilots walk to the lounge to grab a coffee.", "airline_lounge"),
+    ("office", "A developer walks to the kitchen to print something.", "kitchen"),
+])
+def test_a_purpose_never_overrides_a_place_said(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert g.destination == place
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "A visitor walks out to get some fresh air."),
+    ("office", "Two managers walk off to meet a friend."),
+])
+def test_a_purpose_no_place_serves_names_none(worlds, world, prompt):
+    g, = read(worlds, world, prompt).groups
+    assert g.destination is None
