@@ -13,6 +13,7 @@ from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
+from grove_tui.language.tokens import verb_lemma
 
 # A place matched by meaning alone: at least this similar to one of its names, and this much nearer
 # than any place of another zone (measured on synonyms and absent places of every shipped world,
@@ -119,7 +120,9 @@ class PlaceMeaning:
         "place" or "spot" is anything), and the nearest is taken when near enough and clearly ahead
         of any other zone's; failing that, the phrase and its clause together, as near as a name."""
         s = self.s
-        clause = self._relative_clause(j)
+        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        clause = self._relative_clause(j, bare=bool(content) and content[-1] in _ANY_PLACE | lx.BUILDING_WORDS |
+                                        lx.GENERIC_PLACE_HEADS)
         if clause is None:
             return None
         first, end = clause
@@ -129,9 +132,10 @@ class PlaceMeaning:
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
         return (meant, end) if meant is not None else None
 
-    def _relative_clause(self, j: int) -> tuple[int, int] | None:
-        """The words of the relative clause at j, after its marker ("where", "that", "which", or none:
-        "the place you buy tickets"), as (first, end); None when no clause starts at j."""
+    def _relative_clause(self, j: int, bare: bool) -> tuple[int, int] | None:
+        """The words of the relative clause at j, after its marker ("where", "that", "which", or none
+        after a word for any place, `bare`: "the place you buy tickets"), as (first, end); None when no
+        clause starts at j ("in the hall people wait" is a new clause)."""
         s = self.s
         if j >= s.n:
             return None
@@ -139,7 +143,7 @@ class PlaceMeaning:
             first = j + 1
             if s.low[j] != "where" and not (first < s.n and (s.is_verb(first) or s.low[first] in _SUBJECTS)):
                 return None  # "the desk that morning": no clause
-        elif s.low[j] in _SUBJECTS and j + 1 < s.n and (s.is_verb(j + 1) or s.w[j + 1].tag == "MD"):
+        elif bare and s.low[j] in _SUBJECTS and j + 1 < s.n and (s.is_verb(j + 1) or s.w[j + 1].tag == "MD"):
             first = j  # "the place you buy tickets", "the spot people leave their bags"
         else:
             return None
@@ -244,7 +248,15 @@ class PlaceMeaning:
         """The place a purpose is done at ("to get a cup of water": the water dispenser, "to grab a
         coffee": the café, "to print something": the printer), by meaning, when one is clearly
         nearest; less sure than a place said, so the app asks when it is not near."""
-        ranked = [r for r in self.s.index.by_meaning(purpose.lower()) if r.entry.kind != "door"]
+        words = purpose.lower().replace("-", " ").split()
+        while words and words[0] in ("to", "in", "order", "so", "as", "for"):
+            words = words[1:]
+        verb = verb_lemma(words[0]) if words else ""
+        # "to board his plane" is no departures board: a verb that is only a word of a place's name
+        # ("check in" still names the check-in hall)
+        ranked = [r for r in self.s.index.by_meaning(purpose.lower()) if r.entry.kind != "door" and
+                  (verb not in r.entry.tokens or (words[1:2] in (["in"], ["out"], ["up"], ["off"], ["on"])
+                                                   and any(p[:1] == (verb,) for p in r.entry.phrases)))]
         if not ranked or ranked[0].similarity < MEANING_PURPOSE:
             return None
         best = ranked[0]

@@ -228,3 +228,20 @@ def test_a_purpose_never_overrides_a_place_said(worlds, world, prompt, place):
 def test_a_purpose_no_place_serves_names_none(worlds, world, prompt):
     g, = read(worlds, world, prompt).groups
     assert g.destination is None
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "A pilot walks off to board his plane.", None),
+    ("airport", "Two women hurry to check in.", "check_in_hall"),
+    ("hospital", "Two patients walk off to check in.", "checkin_kiosk"),
+])
+def test_a_purpose_verb_that_is_only_a_word_of_a_name_names_no_place(worlds, world, prompt, place):
+    """"to board" is no departures board; "to check in" is the check-in hall or kiosk."""
+    g, = read(worlds, world, prompt).groups
+    assert g.destination == place
+
+
+def test_a_new_clause_after_a_place_is_no_relative_clause(worlds):
+    """"In the hall people wait": the people of a new clause, not "the hall where people wait"."""
+    g, = read(worlds, "museum", "In the great hall people wait and chat.").groups
+    assert g.location == "great_hall"
