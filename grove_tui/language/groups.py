@@ -313,23 +313,37 @@ class Groups:
             roles.location = parent.start or parent.location  # "... except three patients, who stay seated"
 
     def _there(self, span: tuple[int, int], roles: Roles, stationary: bool) -> None:
-        """"... and three more wait there", "two parents meet them there": a group that names no place
-        of its own is at (or goes to) the place said last before its "there"."""
+        """"there" for the place said last before it: "... and three more wait there" (where they are, or
+        go, when the group names no place of its own), "everyone in there is sent out" (where movers
+        start), "they come back from there" (where they start)."""
         s = self.s
-        if roles.start or roles.destination or roles.location:
+        at = next((x for x in range(span[0] + 1, span[1]) if s.low[x] == "there" and (
+            x + 1 >= s.n or s.low[x + 1] not in _EXISTENTIAL or s.low[x - 1] in lx.PLACE_PREPOSITIONS)), None)
+        if at is None:
             return
-        at = next((x for x in range(span[0] + 1, span[1]) if s.low[x] == "there"
-                   and (x + 1 >= s.n or s.low[x + 1] not in _EXISTENTIAL)), None)
-        before = [p for p in self.places.history if at is not None and p.index < at and p.match is not None]
+        before = [p for p in self.places.history if p.index < at and p.match is not None]
         if not before:
+            # a place named in no place role before ("a pipe bursts above the dinosaur gallery and everyone in there")
+            named = next((x for x in range(at - 1, -1, -1) if s.low[x - 1] in lx.DETERMINERS and self.places.names_place(x)),
+                         None)
+            place = self.places.phrase(named, "named", named, record_unknown=False) if named is not None else None
+            before = [place] if place is not None and place.match is not None else []
+        if not before:
+            return
+        prep = s.low[at - 1]
+        if prep in ("from", "of") or (prep in ("in", "inside") and not stationary):
+            role = "start"
+        elif prep in ("in", "inside") or stationary:
+            role = "location"
+        else:
+            role = "destination"
+        if getattr(roles, role) is not None or (prep not in ("from", "of", "in", "inside") and
+                                                (roles.start or roles.destination or roles.location)):
             return
         said = before[-1]
         name = said.match.name if said.match is not None else ""
-        roles.read_from[name] = replace(said, score=0.8, alternatives=(), reason=f"'there': {name}, said before")
-        if stationary:
-            roles.location = name
-        else:
-            roles.destination = name
+        roles.read_from.setdefault(name, replace(said, score=0.8, alternatives=(), reason=f"'there': {name}, said before"))
+        setattr(roles, role, name)
 
     def _purpose_place(self, purpose: str, span: tuple[int, int], roles: Roles, stationary: bool) -> None:
         """"walk from exam room 2 to get a cup of water": with no place to go to, the place the purpose

@@ -245,3 +245,13 @@ def test_a_new_clause_after_a_place_is_no_relative_clause(worlds):
     """"In the hall people wait": the people of a new clause, not "the hall where people wait"."""
     g, = read(worlds, "museum", "In the great hall people wait and chat.").groups
     assert g.location == "great_hall"
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("office", "A leak starts above the kitchen and everyone in there walks out to the corridor.", "kitchen"),
+    ("hospital", "A fire starts in the pharmacy and everyone in there runs to the main entrance.", "pharmacy"),
+    ("mall", "Smoke fills the bookshop and the people inside there hurry to the west exit.", "bookshop"),
+])
+def test_in_there_is_where_movers_start(worlds, world, prompt, start):
+    g, = read(worlds, world, prompt).groups
+    assert g.start == start
