@@ -157,8 +157,11 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             match = self._nearest_exit(exits) if exits and self.context_zones else exits[0] if exits else None
         kinds = tuple(t for t in lemmas[:-1] if t not in lx.PLACE_MODIFIERS) if informal is not None else \
             self.noun_modifiers(start, j)
-        if match is not None and not match.exact and owned is None and not self.modifiers_agree(kinds, match.name):
-            match = None  # "the ice-cream stand" is not the phone stand, though both are stands
+        if match is not None and not match.exact and owned is None and \
+                (informal is not None or not self.modifiers_agree(kinds, match.name)):
+            # "the ice-cream stand" is not the phone stand, though both are stands; an informal name is
+            # its place's whole name or near it in meaning ("the hole in the wall" is no ticket machine)
+            match = None
         meant = None
         described = None if numbered or (match is not None and match.exact) else self._described(phrase, lemmas, j)
         if described is not None:
@@ -167,11 +170,12 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             meant, j = described
             match = meant[0]
         if match is None and not numbered and not s.index.is_nameless(lemmas):
-            meant = self._by_meaning(phrase, lemmas)  # "the eating area": no word of it names a place
+            said = list(lemmas) if informal is not None else phrase  # an informal name by what it means
+            meant = self._by_meaning(said, lemmas)  # "the eating area": no word of it names a place
             if meant is None and (record_unknown or prep == "named"):
                 # about to be refused: a place the world has under another word ("the stockroom", "the
                 # nurses' post") is still clearly nearest one of its names, if less near
-                meant = self._by_meaning(phrase, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
+                meant = self._by_meaning(said, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
             if meant is not None and not self.modifiers_agree(kinds, meant[0].name):
                 meant = None  # "the stockroom" is near "boardroom" by its letters, not by what it is
             match = meant[0] if meant is not None else None

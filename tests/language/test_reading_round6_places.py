@@ -255,3 +255,12 @@ def test_a_new_clause_after_a_place_is_no_relative_clause(worlds):
 def test_in_there_is_where_movers_start(worlds, world, prompt, start):
     g, = read(worlds, world, prompt).groups
     assert g.start == start
+
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("station", "Two guards wait by the hole in the wall.", "hole in the wall"),
+    ("residential", "Grandpa naps in the caff.", "caff"),
+])
+def test_an_informal_name_only_shares_a_word_with_no_place(worlds, world, prompt, refused):
+    """"the hole in the wall" is a cash machine, not the ticket machines that share "machine"."""
+    assert read_prompt(prompt, worlds[world]).unknown_places == (refused,)
