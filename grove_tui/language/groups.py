@@ -324,8 +324,8 @@ class Groups:
         before = [p for p in self.places.history if p.index < at and p.match is not None]
         if not before:
             # a place named in no place role before ("a pipe bursts above the dinosaur gallery and everyone in there")
-            named = next((x for x in range(at - 1, -1, -1) if s.low[x - 1] in lx.DETERMINERS and self.places.names_place(x)),
-                         None)
+            named = next((x for x in range(at - 1, 0, -1)
+                          if s.low[x - 1] in lx.DETERMINERS and self.places.names_place(x)), None)
             place = self.places.phrase(named, "named", named, record_unknown=False) if named is not None else None
             before = [place] if place is not None and place.match is not None else []
         if not before:
@@ -342,7 +342,8 @@ class Groups:
             return
         said = before[-1]
         name = said.match.name if said.match is not None else ""
-        roles.read_from.setdefault(name, replace(said, score=0.8, alternatives=(), reason=f"'there': {name}, said before"))
+        roles.read_from.setdefault(name, replace(said, score=0.8, alternatives=(),
+                                                 reason=f"'there': {name}, said before"))
         setattr(roles, role, name)
 
     def _purpose_place(self, purpose: str, span: tuple[int, int], roles: Roles, stationary: bool) -> None:

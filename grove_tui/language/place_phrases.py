@@ -193,7 +193,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
         if informal is not None and score > INFORMAL_SURE:
-            score, reason = INFORMAL_SURE, f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
+            score = INFORMAL_SURE
+            reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
         self.context_zones.append(match.zone)
