@@ -34,6 +34,8 @@ MEANING_DESCRIBED = 0.65
 # activities of places the worlds have come at 0.45-0.89, those of places they lack ("where you do yoga",
 # "where you hire a car" in a station) no nearer than 0.43.
 MEANING_ACTIVITY = 0.5
+# A place of the people whose clause it is wins when this near the nearest ("the room they sleep in").
+MEANING_OWNED = 0.06
 # A word before the head that names a kind of place ("ice-cream" stand, "stock" room, "cash" machine)
 # and no word of the place matched must be this near one of its names, or it rules the place out:
 # "ice cream" is 0.26 from the phone stand, "stock" 0.27 from the boardroom, "cash" 0.23 from the
@@ -53,6 +55,7 @@ class PlaceMeaning:
 
     s: Sentence
     people: People
+    owner: str | None
 
     def noun_modifiers(self, first: int, end: int) -> tuple[str, ...]:
         """The words before a place phrase's head that say what kind of place it is ("ice cream" of "the
@@ -166,9 +169,15 @@ class PlaceMeaning:
         if not ranked or ranked[0].similarity < MEANING_ACTIVITY:
             return None
         best = ranked[0]
+        theirs = {e.name for e in index.owned_by(self.owner)} if self.owner else set()
+        own = next((r for r in ranked if r.entry.name in theirs), None)
+        if own is not None and best.similarity - own.similarity < MEANING_OWNED:
+            # "the kids run to the room they sleep in": their bedroom, though the parents' is as near
+            ranked = [own, *(r for r in ranked if r is not own)]
+            best = own
         other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
         margin = best.similarity - (other.similarity if other is not None else 0.0)
-        if margin < MEANING_MARGIN:
+        if margin < MEANING_MARGIN and best is not own:
             return None
         zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
         if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:

@@ -342,11 +342,12 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if not back or not content:
             return None
         fits = {m.name for m in s.index.candidates(lemmas)}
+        anywhere = content[-1] in lx.GENERIC_PLACE_HEADS | lx.BUILDING_WORDS | {"spot", "point", "one"}
         for p in reversed(self.history):
             m = p.match
             entry = s.index.entry(m.name) if m is not None else None
             if m is not None and p.index < at and entry is not None and \
-                    (m.name in fits or s.index.names_word(entry, content[-1])):
+                    (anywhere or m.name in fits or s.index.names_word(entry, content[-1])):
                 return (m, 0.9, f"'{' '.join(s.low[k:k + 1 + len(lemmas)])}': {m.name}, said before", ())
         return None
 

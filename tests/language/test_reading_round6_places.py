@@ -264,3 +264,25 @@ def test_in_there_is_where_movers_start(worlds, world, prompt, start):
 def test_an_informal_name_only_shares_a_word_with_no_place(worlds, world, prompt, refused):
     """"the hole in the wall" is a cash machine, not the ticket machines that share "machine"."""
     assert read_prompt(prompt, worlds[world]).unknown_places == (refused,)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("mall", "Two teens wait at the fountain and their friends meet them at the same spot.", "fountain"),
+    ("mall", "Four women shop in the bookshop and two men wait in the same place.", "bookshop"),
+])
+def test_the_same_place_of_no_kind_is_the_place_said_last(worlds, world, prompt, place):
+    assert read(worlds, world, prompt).groups[-1].location == place
+
+
+def test_the_same_time_is_no_place(worlds):
+    reading = read(worlds, "hospital", "Two nurses walk to the ICU at the same time as a doctor leaves ward B.")
+    assert [g.destination for g in reading.groups] == ["intensive_care", None]
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("residential", "The kids run to the room they sleep in.", "child_bedroom"),
+    ("residential", "Mum goes to the room where she sleeps.", "master_bedroom"),
+])
+def test_a_described_room_of_the_people_themselves(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert g.destination == place
