@@ -13,7 +13,7 @@ from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.tokens import lemma, verb_lemma
 
 # A place matched by meaning alone: at least this similar to one of its names, and this much nearer
 # than any place of another zone (measured on synonyms and absent places of every shipped world,
@@ -129,7 +129,7 @@ class PlaceMeaning:
         if clause is None:
             return None
         first, end = clause
-        activity = "where " + s.span(first, end - 1).lower()
+        activity = ("" if s.low[first] == "for" else "where ") + s.span(first, end - 1).lower()
         meant = self._by_activity(phrase, lemmas, activity)
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
@@ -146,6 +146,10 @@ class PlaceMeaning:
             first = j + 1
             if s.low[j] != "where" and not (first < s.n and (s.is_verb(first) or s.low[first] in _SUBJECTS)):
                 return None  # "the desk that morning": no clause
+        elif s.low[j] == "for" and j + 1 < s.n and not any(
+                w[:1].isdigit() or w in lx.UNITS or w in ("a", "an", "while", "ages", "long", "now", "good")
+                or lemma(w) in lx.DURATION_UNITS for w in s.low[j + 1:j + 4]):
+            first = j  # "the desk for car hire", "the room for x-rays"; not "for ten minutes", "for a while"
         elif bare and s.low[j] in _SUBJECTS and j + 1 < s.n and (s.is_verb(j + 1) or s.w[j + 1].tag == "MD"):
             first = j  # "the place you buy tickets", "the spot people leave their bags"
         else:
@@ -180,8 +184,13 @@ class PlaceMeaning:
         if margin < MEANING_MARGIN and best is not own:
             return None
         zone = next((r for r in ranked[1:] if r.entry.name == best.entry.zone), None)
-        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN:
+        if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN \
+                and head in _ANY_PLACE | lx.BUILDING_WORDS:
             best = zone  # "the place where you leave your luggage": the room, though its lockers are as near
+        fixture = next((r for r in ranked[1:] if r.entry.zone == best.entry.name and r.entry.kind == "entity"), None)
+        if best.entry.kind == "zone" and fixture is not None and head not in _ANY_PLACE | lx.BUILDING_WORDS and \
+                head not in ("room", "hall") and best.similarity - fixture.similarity < MEANING_MARGIN:
+            best = fixture  # "the counter for prescriptions": the pharmacy's counter, not the pharmacy
         said = " ".join(phrase)
         score = 0.7 if best.similarity >= 0.6 and margin >= 0.08 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()

@@ -286,3 +286,18 @@ def test_the_same_time_is_no_place(worlds):
 def test_a_described_room_of_the_people_themselves(worlds, world, prompt, place):
     g, = read(worlds, world, prompt).groups
     assert g.destination == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "A man walks to the desk for car hire.", "car_rental_desk"),
+    ("hospital", "Two patients go to the room for x-rays.", "radiology"),
+    ("hospital", "Five patients queue at the counter for their prescriptions.", "pharmacy_counter"),
+])
+def test_a_place_described_by_what_it_is_for(worlds, world, prompt, place):
+    g, = read(worlds, world, prompt).groups
+    assert place_of(g) == place
+
+
+def test_a_duration_after_a_place_describes_nothing(worlds):
+    g, = read(worlds, "station", "A woman waits at the counter for ten minutes.").groups
+    assert g.wait_seconds == 600
