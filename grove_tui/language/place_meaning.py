@@ -41,6 +41,9 @@ MEANING_OWNED = 0.06
 # "ice cream" is 0.26 from the phone stand, "stock" 0.27 from the boardroom, "cash" 0.23 from the
 # x-ray machine; "stock" is 0.34 from the supply room, "drug" 0.63 from the pharmacy.
 MODIFIER_AGREES = 0.3
+# ... unless it is a word for what the whole building is about ("train" 0.47 from "station", "flight" 0.64
+# from "airport"; "maternity" is 0.40 from "hospital", "stock" 0.28 from "office").
+MODIFIER_OF_BUILDING = 0.45
 # A purpose that names no place ("to get a cup of water", "to sketch the sarcophagus"), against the
 # places' names, when the sentence gives no place to go to: the places of the purposes people write
 # come at 0.50-0.82, those of purposes no place serves ("to get some fresh air", "to meet a friend")
@@ -84,7 +87,8 @@ class PlaceMeaning:
         if not strange or entry is None:
             return True
         near = index.by_meaning(" ".join(strange), among={entry.name, entry.zone})
-        return not near or max(r.similarity for r in near) >= MODIFIER_AGREES
+        return not near or max(r.similarity for r in near) >= MODIFIER_AGREES or \
+            index.near_building(" ".join(strange)) >= MODIFIER_OF_BUILDING  # "the train platform" of a station
 
     def _by_meaning(self, phrase: Sequence[str], lemmas: Sequence[str], accept: float = MEANING_ACCEPT,
                     margin: float = MEANING_MARGIN) -> Decided | None:

@@ -128,6 +128,15 @@ class PlaceIndex:
         ranked = sorted(best.items(), key=lambda item: (-item[1][0], self._order(self.entries[item[0]].name)))
         return [MeaningMatch(self.entries[i], round(value, 4), said) for i, (value, said) in ranked]
 
+    def near_building(self, text: str) -> float:
+        """How near `text` is in meaning to what the world is ("train" to a station: 0.47), 0 without
+        the model."""
+        model = MiniLM.shared()
+        name = str(getattr(self.world, "name", "") or "").replace("_", " ")
+        if model is None or not name:
+            return 0.0
+        return float(_query_vector(model, text) @ _query_vector(model, name))
+
     def warm_meaning(self) -> bool:
         """Load the model and this world's name vectors now (from disk when a process did before)."""
         model = MiniLM.shared()

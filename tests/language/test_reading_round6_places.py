@@ -301,3 +301,9 @@ def test_a_place_described_by_what_it_is_for(worlds, world, prompt, place):
 def test_a_duration_after_a_place_describes_nothing(worlds):
     g, = read(worlds, "station", "A woman waits at the counter for ten minutes.").groups
     assert g.wait_seconds == 600
+
+
+def test_a_word_for_what_the_building_is_about_rules_nothing_out(worlds):
+    """"the train platform" of a station is a place of the station, not a kind of place it lacks."""
+    reading = read_prompt("Ten commuters wait on the train platform.", worlds["station"])
+    assert reading.unknown_places == () and reading.groups[0].location is not None
