@@ -317,7 +317,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                     and not self._extends_name(phrase, j) and not self.whole_name([*phrase, w]):
                 break  # "on platform 2 a man sits": the place ends where a new noun phrase starts
             if w.isdigit() or w in lx.UNITS:
-                if not phrase or ((not w.isdigit() or any(ch.isdigit() for ch in phrase[-1])) and j + 1 < s.n
+                if not phrase or (any(ch.isdigit() for ch in phrase[-1]) and j + 1 < s.n
                                   and self.people.is_person_noun(j + 1)):
                     break  # "at gate A1 two agents chat", "on platform 1 three commuters": a count starts
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
