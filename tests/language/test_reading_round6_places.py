@@ -307,3 +307,8 @@ def test_a_word_for_what_the_building_is_about_rules_nothing_out(worlds):
     """"the train platform" of a station is a place of the station, not a kind of place it lacks."""
     reading = read_prompt("Ten commuters wait on the train platform.", worlds["station"])
     assert reading.unknown_places == () and reading.groups[0].location is not None
+
+
+def test_a_number_word_after_a_series_word_is_still_the_place(worlds):
+    g, = read(worlds, "station", "On platform two passengers wait.").groups
+    assert g.location == "platform_2"
