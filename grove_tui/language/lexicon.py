@@ -168,17 +168,28 @@ NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull 
     pig duck goose chicken hen rabbit hamster mouse rat fish goldfish parrot squirrel fox deer bee wasp fly ant insect
     animal pet clock lamp light bulb candle train bus car taxi van lorry truck plane aircraft jet trolley cart suitcase
     bag case luggage box parcel machine computer laptop phone monitor heater radiator speaker alarm siren bell
-    engine motor drone balloon leaf flower plant tree""".split())
+    engine motor drone balloon leaf flower plant tree elevator escalator printer scanner projector shutter conveyor
+    generator sprinkler dishwasher boiler fridge freezer kettle timer tram ferry tractor forklift mower shuttle
+    scooter trailer container dispenser""".split())
 # Endings of nouns for someone who does something ("busker", "florist", "violinist", "sommelier"):
 # the subject of a verb, such a noun is a person unless the world or a list says otherwise.
 AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")
+# Endings only people's nouns have ("radiotherapist", "librarian", "locksmith", "beekeeper",
+# "fishmonger"): the subject of any verb of going or staying is a person ("the locksmith waits at
+# reception"); the weaker endings above (and "-ant", "-ent") need a pronoun that refers to the noun
+# ("the radiographer leaves her department"), since lifts, printers and trains go and wait too.
+STRONG_AGENT_SUFFIXES = ("ist", "ian", "eur", "smith", "keeper", "monger", "wright", "man", "woman", "person")
+WEAK_AGENT_SUFFIXES = AGENT_SUFFIXES + ("ant", "ent")
+# Pronouns that refer to a person: "her", "his" said of a noun make it someone.
+PERSONAL_PRONOUNS = frozenset("he she him her his hers himself herself".split())
+PLURAL_PERSONAL_PRONOUNS = frozenset("they them their theirs themselves".split())
 # Verbs only people do: the noun that is their subject is a person even when no list names it
 # ("a sommelier chats with ...", "two botanists stroll to ..."). Not "wait", "go", "run" or "move":
 # trains, queues and lifts do those too.
 HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate socialise socialize greet "
                                 "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
                                 "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
-                                "tiptoe limp hobble shuffle".split())
+                                "tiptoe limp hobble shuffle walk march stride commute nap doze snooze".split())
 # Verbs of things, not people: a counted noun no list names that does only these is no group
 # ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
 THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "

@@ -29,7 +29,7 @@ class People:
             return False
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
             return True
-        if self._subject_of_a_human_verb(i) or self._agent_subject(i):
+        if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
@@ -73,6 +73,57 @@ class People:
                 and not s.index.knows(lem)
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
                 and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
+
+    def _agent_going(self, i: int) -> bool:
+        """A noun for someone no list names, the subject of a verb of going or staying that things
+        do as well ("the locksmith waits at reception", "after her shift the radiographer leaves
+        her department"): an ending only people's nouns have, or an agent's ending and a pronoun
+        for a person that refers to it ("her", "his"; "their" for a plural)."""
+        s = self.s
+        word = s.w[i]
+        if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i or \
+                s.w[word.head].pos not in ("VERB", "AUX"):
+            return False
+        lem = s.lemma(i)
+        verb = s.verb(word.head)
+        if not lem.isalpha() or len(lem) < 5 or verb in lx.THING_VERBS or verb == "start" or self._a_thing(lem):
+            return False
+        if verb == "be" and not (word.head + 1 < s.n and s.preposition(word.head + 1) is not None):
+            return False  # "the glazier is in the lobby", not "the bookseller is closed"
+        singular = word.tag in ("NN", "NNP")
+        if lem.endswith(lx.STRONG_AGENT_SUFFIXES) and (singular or verb != "go"):
+            return True
+        pronouns = lx.PERSONAL_PRONOUNS if singular else lx.PLURAL_PERSONAL_PRONOUNS
+        if (singular or lem.endswith(lx.WEAK_AGENT_SUFFIXES)) and any(
+                s.low[k] in pronouns and self._in_clause_of(k, word.head) for k in range(s.n)
+                if s.w[k].sentence == word.sentence):
+            return True  # "the chaplain leaves his office": "his" is someone's
+        # The one subject of a sentence that names nobody else, one of a kind ("the sommelier goes
+        # to the cellar"): a person, rather than a crowd nobody named.
+        return singular and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and s.after_determiner(i) and not any(
+            s.lemma(k) in lx.PERSON_NOUNS or s.low[k] in lx.PERSON_NOUNS for k in range(s.n) if k != i)
+
+    def _a_thing(self, lem: str) -> bool:
+        """A word of a place, the robot, an animal or thing, a building, a time or a hazard."""
+        return (self.s.index.knows(lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
+                or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
+                or lem in lx.IMPLIED_RANGES)
+
+    def _in_clause_of(self, k: int, verb: int) -> bool:
+        """Whether the word at k hangs, through the parse, under the verb at `verb` with no other
+        subject on the way ("after her shift the radiographer leaves", not "she watches as ...")."""
+        s = self.s
+        seen = 0
+        while seen < s.n:
+            if k == verb:
+                return True
+            head = s.w[k].head
+            if head == k:
+                return False
+            if any(w.head == head and w.dep in ("nsubj", "nsubjpass") and w.i != k for w in s.w) and head != verb:
+                return False
+            k, seen = head, seen + 1
+        return False
 
     def _subject_of_a_human_verb(self, i: int) -> bool:
         """A noun no list names, the parser's subject of a verb only people do ("a sommelier
