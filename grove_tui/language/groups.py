@@ -84,16 +84,32 @@ class Groups:
 
     def _spans(self, mentions: list[Mention]) -> list[tuple[int, int]]:
         """Each group's words: from its mention (or a fronted phrase before it: "..., and from the
-        office, eight people walk ...") to the next group's, within its sentence."""
+        office, eight people walk ...") to the next group's, within its sentence. A group named
+        inside a part of it ("two of the six developers at their desks follow ...") owns its own
+        phrase and the places after it, up to the verb the part does."""
         s = self.s
-        starts = [mentions[0].first] + [self.clauses.fronted_start(mentions[k - 1].last, mentions[k].first)
-                                        for k in range(1, len(mentions))]
-        spans: list[tuple[int, int]] = []
-        for k, m in enumerate(mentions):
-            end = starts[k + 1] if k + 1 < len(mentions) else s.n
+        regular = [k for k, m in enumerate(mentions) if not m.partitive]
+        spans: list[tuple[int, int]] = [(m.first, self._partitive_end(m)) for m in mentions]
+        for n, k in enumerate(regular):
+            m = mentions[k]
+            start = m.first if n == 0 else self.clauses.fronted_start(mentions[regular[n - 1]].last, m.first)
+            end = self.clauses.fronted_start(m.last, mentions[regular[n + 1]].first) if n + 1 < len(regular) else s.n
+            end = mentions[regular[n + 1]].first if n + 1 < len(regular) and end > mentions[regular[n + 1]].first \
+                else end
             sentence_end = next((i for i in range(m.last + 1, end) if s.w[i].sentence != s.w[m.first].sentence), end)
-            spans.append((starts[k], sentence_end))
+            spans[k] = (start, sentence_end)
         return spans
+
+    def _partitive_end(self, m: Mention) -> int:
+        """The end of the words of a group named inside a part of it: its phrase and the place
+        phrases after it, up to a verb, a punctuation mark or a clause word."""
+        s = self.s
+        j = m.last + 1
+        while j < s.n and not s.is_punct(j) and s.low[j] not in lx.CLAUSE_STARTERS and not (
+                s.is_verb(j) or self.mentions.people.third_person_verb(j) or s.w[j].dep == "ROOT"
+                or (verb_lemma(s.low[j]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(j)))):
+            j += 1
+        return j
 
     def _scenes(self, mentions: list[Mention], spans: list[tuple[int, int]], excluded: set[int],
                 robot_tokens: set[int]) -> dict[int, Clause]:
@@ -137,6 +153,8 @@ class Groups:
                         and s.low[x] not in ("and", "as", "well", "plus", "with")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
+            if mentions[k].partitive:
+                continue  # "two of the six developers follow it": the six do not; they stay
             if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
                     not any(s.low[x] in (";", ".", ":") for x in between):

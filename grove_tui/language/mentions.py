@@ -18,6 +18,7 @@ from grove_tui.language.collectives import Collectives
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
+from grove_tui.language.partitives import Partitives
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
@@ -34,6 +35,7 @@ class Mentions:
         self.people = people
         self.places = places
         self.collectives = Collectives(s, people)
+        self.partitives = Partitives(s, people)
         self.problems: list[str] = []  # counts no scenario can have ("-5 people", "zero nurses")
 
     def find(self) -> list[Mention]:
@@ -79,6 +81,10 @@ class Mentions:
             m.robot_object = self.robot_object(m.first)
             if m.zone_place is None and not m.whole_zone:
                 m.zone_place = self.possessor_place(m.first)
+            if m.whole is not None:
+                # "two of the six developers": the six first, the two a subset of them
+                found.append(m.whole)
+                m.relation = f"subset_of:{len(found) - 1}"
             found.append(m)
             i = m.last + 1
         return found
@@ -343,10 +349,12 @@ class Mentions:
                 inner.who = s.span(at, inner.last)
             return inner
         num = quantifier(s, at)
-        for reader in (self._part_of, self._rest_of):
-            m = reader(at, num, found)
-            if m is not None:
-                return m
+        part = self.partitives.part_of(at, num, found, self.parent(found))
+        if part is not None:
+            return part
+        rest = self._rest_of(at, num, found)
+        if rest is not None:
+            return rest
         if low[at] == "the" and at + 1 < s.n and low[at + 1] == "only":
             return None  # "the only people in the ward are two men": the men are the group
         whole = self._whole_zone(at, num)
@@ -363,28 +371,6 @@ class Mentions:
         if num is not None:
             return self._counted_or_more(at, num, found, exclusive)
         return self._bare(at, found, exclusive)
-
-    def _part_of(self, at: int, num: Quantifier | None, found: list[Mention]) -> Mention | None:
-        """"one of them", "two of the patients", "some of them": part of the group before."""
-        s = self.s
-        low = s.low
-        if num is None:
-            return None
-        # "a few of" is read with its "of" by the quantifier; "two of" leaves it
-        of_at = num.end if num.end < s.n and low[num.end] == "of" else (
-            num.end - 1 if low[num.end - 1] == "of" else None)
-        if of_at is None or of_at + 1 >= s.n:
-            return None
-        k = of_at + 1
-        if not (low[k] in ("them", "those", "these", "us", "whom") or (
-                low[k] == "the" and k + 1 < s.n and self.people.is_person_noun(k + 1))):
-            return None
-        last = k if low[k] != "the" else k + 1
-        parent = self.parent(found)
-        label = found[parent].label if parent is not None else s.lemma(last)
-        count = count_of(s, num, f"{at}", lx.OTHERS_RANGE)
-        return Mention(at, last, s.span(at, last), label, count,
-                       relation=f"subset_of:{parent}" if parent is not None else None)
 
     def _rest_of(self, at: int, num: Quantifier | None, found: list[Mention]) -> Mention | None:
         """"the others", "the rest", "everyone else": other people than the group before."""

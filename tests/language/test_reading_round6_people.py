@@ -56,3 +56,50 @@ def test_a_machine_that_goes_is_nobody(worlds, world, prompt):
 def test_a_machine_beside_people_adds_no_group(worlds):
     g, = read(worlds, "office", "Ten engineers wait in the kitchen while the printer goes quiet.").groups
     assert (g.label, g.count.value) == ("engineer", 10)
+
+
+# ---- 2. part of a group named inside the phrase -----------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,whole,part,place", [
+    ("hospital", "Three of the ten nurses in ward A walk to the pharmacy.", 10, 3, "ward_a"),
+    ("station", "Two of the eight commuters on platform 2 hurry to the exit.", 8, 2, "platform_2"),
+    ("mall", "Half of the 20 students in the food court head to the cinema.", 20, 10, "food_court"),
+])
+def test_part_of_a_group_named_inside_does_the_verb_and_the_rest_stay(worlds, world, prompt, whole, part, place):
+    reading = read(worlds, world, prompt)
+    a, b = reading.groups
+    assert (a.count.value, a.intent, a.location, a.relation) == (whole, "wait", place, None)
+    assert (b.count.value, b.intent, b.start, b.relation) == (part, "walk", place, "subset_of:0")
+    assert reading.total == whole
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("office", "As the robot rolls past, three of the nine analysts at their desks stare at it.", "open_plan_office"),
+    ("museum", "While the robot crosses the main hall, two of the five guards in the great hall follow it.",
+     "great_hall"),
+])
+def test_part_of_a_group_reacts_to_the_robot_while_the_rest_stay(worlds, world, prompt, place):
+    a, b = read(worlds, world, prompt).groups
+    assert (a.intent, a.location, a.robot_interaction) == ("wait", place, None)
+    assert b.intent == "robot" and b.robot_interaction is not None and b.relation == "subset_of:0"
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "One of the porters wheels a bed along the main corridor.", "porter"),
+    ("airport", "One of the cleaners mops the concourse.", "cleaner"),
+])
+def test_one_of_a_group_nobody_counted(worlds, world, prompt, label):
+    a, b = read(worlds, world, prompt).groups
+    assert (a.label, a.count.kind) == (label, "vague") and a.count.value >= 2
+    assert (b.count.value, b.relation) == (1, "subset_of:0")
+
+
+def test_the_rest_of_a_part_named_inside(worlds):
+    reading = read(worlds, "office", "Two of the six developers follow the robot, the rest stay at their desks.")
+    counts = [g.count.value for g in reading.groups]
+    assert counts == [6, 2, 4] and reading.groups[2].relation == "others_of:0" and reading.total == 6
+
+
+def test_part_of_a_group_said_before_is_still_its_subset(worlds):
+    a, b = read(worlds, "hospital", "Ten patients wait in the lobby; two of the patients walk to the pharmacy.").groups
+    assert (a.count.value, b.count.value, b.relation, b.destination) == (10, 2, "subset_of:0", "pharmacy")
