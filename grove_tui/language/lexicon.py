@@ -293,7 +293,10 @@ ROBOT_WORDS = frozenset({"robot", "robots", "bot", "amr", "droid"})
 # wait; "a robot crosses the hall to the lifts": cross). A verb of motion none of these lists names is a
 # crossing when the clause gives the robot somewhere to go.
 ROBOT_WAIT_VERBS = frozenset("wait stand stay park idle remain sit rest stop pause hover linger charge sleep halt "
-                             "dock be".split())
+                             "dock be recharge plug station position".split())
+# Said of the robot in the passive, where it is put to stay ("the robot is parked by the lifts", "is
+# left in the hallway"): a wait there.
+ROBOT_PLACED_VERBS = frozenset("park dock station position place leave plug charge store keep stop".split())
 ROBOT_PATROL_VERBS = frozenset("patrol roam wander circle sweep clean mop vacuum guard scan explore monitor tour "
                                "survey inspect cruise prowl loop".split())
 # Words between the robot's verb and people it meets on its way ("drives past two nurses").

@@ -103,3 +103,35 @@ def test_the_rest_of_a_part_named_inside(worlds):
 def test_part_of_a_group_said_before_is_still_its_subset(worlds):
     a, b = read(worlds, "hospital", "Ten patients wait in the lobby; two of the patients walk to the pharmacy.").groups
     assert (a.count.value, b.count.value, b.relation, b.destination) == (10, 2, "subset_of:0", "pharmacy")
+
+
+# ---- 3. what the robot's verb asks of it ---------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,task,location", [
+    ("residential", "Mum reads in the living room while the robot charges in the hallway.", "wait", "hallway"),
+    ("hospital", "The robot recharges beside the nurse station as two nurses chat.", "wait", "nurse_station"),
+    ("office", "The robot is parked in the kitchen while three engineers make coffee.", "wait", "kitchen"),
+    ("mall", "The robot docks by the food court while shoppers stroll past.", "wait", "food_court"),
+    ("station", "The robot sits idle in the waiting room while commuters hurry to platform 1.", "wait",
+     "waiting_room"),
+    ("airport", "The robot is stationed at gate A1 as passengers queue to board.", "wait", "gate_a1"),
+    ("museum", "The robot patrols the great hall while a guard waits at the entrance.", "patrol", "great_hall"),
+])
+def test_the_robots_verb_says_its_task_and_where(worlds, world, prompt, task, location):
+    robot = read(worlds, world, prompt).robot
+    assert robot is not None and (robot.task, robot.location) == (task, location)
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("residential", "The robot leaves the kitchen and is parked in the hallway.", "kitchen", "hallway"),
+    ("hospital", "The robot drives out of the pharmacy and docks in the supply room.", "pharmacy", "supply_room"),
+])
+def test_a_robot_that_goes_then_stays_ends_where_it_stays(worlds, world, prompt, start, destination):
+    robot = read_prompt(prompt, worlds[world]).robot
+    assert robot is not None and (robot.task, robot.start, robot.destination) == ("cross", start, destination)
+
+
+def test_people_who_follow_the_robot_are_not_a_placed_robot(worlds):
+    reading = read(worlds, "museum", "The robot is followed by two children through the great hall.")
+    g, = reading.groups
+    assert g.robot_interaction == "follow" and (reading.robot is None or reading.robot.task != "wait")
