@@ -27,6 +27,8 @@ from grove_tui.language.tokens import lemma, verb_lemma
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
 # Words that keep a word inside a place phrase available as a verb ("wait in the waiting room").
 _VERBS_INSIDE_NAMES = ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang")
+# Possessives before a room that is someone's own ("locks her office").
+_OWNERS = frozenset({"her", "his", "their", "my", "our"})
 
 
 @dataclass
@@ -259,11 +261,15 @@ class Clauses:
                 scan.used.update(range(i + 1, place.end))
                 scan.pos = s.advance(scan.own, place.end)
                 return True
+        obj = i + 2 if nxt in ("up", "down", "off") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
+        nxt = s.low[obj] if obj < s.n else ""
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
-                and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1))
-                and not s.after_determiner(i) and self.places.names_place(s.skip(i + 1, lx.DETERMINERS))):
-            # "a cleaner sweeps platform 2", "mops the corridor": the object of a verb the lexicon lacks
-            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False)
+                and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(obj))
+                and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))
+                                                   or nxt in _OWNERS)):
+            # "a cleaner sweeps platform 2", "mops the corridor", "locks her office", "closes up
+            # reception": the object of a verb the lexicon lacks (one's own room by its kind)
+            place = self.places.phrase(obj, "obj:at", i, record_unknown=False)
             if place is not None:
                 c.places.append(place)
                 c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's

@@ -257,7 +257,10 @@ class Groups:
                              verb_index=c.verb_index, stationary=stationary, intent=intent,
                              then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS],
                              verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
-                                       and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS])
+                                       and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS],
+                             moves_at=[i for i in range(*span) if not s.after_determiner(i)
+                                       and lx.INTENT_VERBS.get(verb_lemma(s.low[i])) in ("walk", "evacuate")
+                                       and (s.w[i].pos == "VERB" or not s.index.knows(s.lemma(i)))])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         self._fixture_where_the_rest_were(m, roles, earlier, stationary)

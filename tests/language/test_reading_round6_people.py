@@ -135,3 +135,25 @@ def test_people_who_follow_the_robot_are_not_a_placed_robot(worlds):
     reading = read(worlds, "museum", "The robot is followed by two children through the great hall.")
     g, = reading.groups
     assert g.robot_interaction == "follow" and (reading.robot is None or reading.robot.task != "wait")
+
+
+# ---- 4. a room left with a verb on it ------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("office", "At six the director locks his office and walks to the kitchen.", "manager_office", "kitchen"),
+    ("office", "The receptionist closes up reception and heads to the boardroom.", "reception", "boardroom"),
+    ("mall", "A shopkeeper shuts the bookshop and walks to the food court.", "bookshop", "food_court"),
+    ("hospital", "The pharmacist locks up the pharmacy, then goes to the cafeteria.", "pharmacy", "cafeteria"),
+])
+def test_the_room_a_verb_acts_on_before_they_set_off_is_their_start(worlds, world, prompt, start, destination):
+    g, = read(worlds, world, prompt).groups
+    assert (g.intent, g.start, g.destination) == ("walk", start, destination)
+
+
+@pytest.mark.parametrize("world,prompt,via", [
+    ("office", "Seven employees take the side corridor to the kitchen.", "east_corridor"),
+    ("station", "A cleaner walks to the café and mops the waiting room.", None),
+])
+def test_a_way_taken_or_a_room_acted_on_after_setting_off_is_no_start(worlds, world, prompt, via):
+    g, = read(worlds, world, prompt).groups
+    assert g.start is None and (via is None or via in g.via)
