@@ -401,6 +401,14 @@ EVACUATION_PHRASES: tuple[tuple[str, ...], ...] = (("clear", "out"), ("empty", "
                                                    ("pile", "out"), ("bail", "out"))
 URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"),
                                                     ("run", "out"), ("hurry", "out"), ("pour", "out"))
+# Verbs by which others make people leave, in the passive ("everyone in there is sent out", "the guests
+# are asked to leave", "the pupils are ushered out"): the people evacuate.
+SENDING_VERBS = frozenset("send order tell ask usher move clear evacuate hurry shepherd direct instruct escort "
+                          "lead guide take rush urge force call".split())
+# Verbs of telling people what to do: after them in the passive, "to <verb>" is what they do, no
+# purpose ("ten visitors are asked to wait in the café").
+TELLING_VERBS = frozenset("ask tell order instruct request direct urge advise invite allow force make call "
+                          "encourage expect".split())
 URGENCY_WORDS = frozenset("now immediately urgently quickly asap must fast instantly".split())
 # Words that make plain leaving ("leave", "exit") an evacuation: not "must" or "quickly", which a
 # normal departure can have ("the visitors must leave by six").

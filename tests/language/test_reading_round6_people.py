@@ -157,3 +157,28 @@ def test_the_room_a_verb_acts_on_before_they_set_off_is_their_start(worlds, worl
 def test_a_way_taken_or_a_room_acted_on_after_setting_off_is_no_start(worlds, world, prompt, via):
     g, = read(worlds, world, prompt).groups
     assert g.start is None and (via is None or via in g.via)
+
+
+# ---- 5. people moved by others -------------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("hospital", "The ceiling leaks over the cafeteria, so everybody in there is moved out to the entrance lobby.",
+     "cafeteria"),
+    ("museum", "Smoke is seen near the gift shop and the visitors in there are asked to leave.", "gift_shop"),
+    ("mall", "The shoppers in the bookshop are ushered out.", "bookshop"),
+    ("station", "Everyone in the waiting room is told to get out.", "waiting_room"),
+])
+def test_people_sent_out_by_others_evacuate(worlds, world, prompt, start):
+    g, = read(worlds, world, prompt).groups
+    assert (g.intent, g.start, g.purpose) == ("evacuate", start, None)
+
+
+@pytest.mark.parametrize("world,prompt,intent,field,place", [
+    ("hospital", "Patients are moved to ward B.", "walk", "destination", "ward_b"),
+    ("museum", "The pupils are ushered to the café.", "walk", "destination", "cafe"),
+    ("airport", "Ten passengers are asked to wait at gate A1.", "wait", "location", "gate_a1"),
+    ("office", "Two interns are told to go to the boardroom.", "walk", "destination", "boardroom"),
+])
+def test_what_people_are_moved_or_told_to_do_is_their_own(worlds, world, prompt, intent, field, place):
+    g, = read(worlds, world, prompt).groups
+    assert (g.intent, getattr(g, field), g.purpose) == (intent, place, None)
