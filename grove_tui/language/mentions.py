@@ -25,6 +25,10 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
+# A phrase of time before a clause's subject ("every few minutes a passenger ...", "now and then").
+_WHEN_WORDS = frozenset("every often occasionally sometimes now then suddenly later soon eventually finally "
+                        "meanwhile once regularly periodically".split())
+_TIME_WORDS = _WHEN_WORDS | frozenset("few so and in a while from time to couple of".split())
 
 
 class Mentions:
@@ -63,6 +67,12 @@ class Mentions:
             if m is None:
                 i += 1
                 continue
+            if found and self._members_of_collective(found[-1], m):
+                # "the robot leads a tour ..., with about twelve tourists trailing behind it": the tour's people
+                before = found[-1]
+                before.count, before.label, before.apposition = m.count, m.label, (m.first, m.last)
+                i = m.last + 1
+                continue
             if found and self._apposition(found[-1], m, len(found) - 1):
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
@@ -88,6 +98,16 @@ class Mentions:
             found.append(m)
             i = m.last + 1
         return found
+
+    def _members_of_collective(self, before: Mention, m: Mention) -> bool:
+        """Whether m, after "with" in the same sentence, counts the people of a collective said with
+        no number and no kind of people ("leads a tour ..., with about twelve tourists trailing behind
+        it", "guides a group ... with ten visitors in tow")."""
+        s = self.s
+        return (m.first > 0 and s.low[m.first - 1] == "with" and before.collective is not None
+                and before.label == before.collective and before.count is not None
+                and before.count.kind == "implied" and m.count is not None and m.relation is None
+                and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
         """Whether m only says how many the mention before is, set off by commas, with no verb
@@ -159,7 +179,24 @@ class Mentions:
             return True  # "the boardroom meeting of twelve people breaks up"
         if prev in ("'s", "’s") and self.possessor_place(at) is not None:
             return True  # "ward A's patients", "the café's 8 customers": the people of a place
+        if self._after_time_phrase(at):
+            return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
+
+    def _after_time_phrase(self, at: int) -> bool:
+        """Whether only a phrase of time stands between the start of a clause and `at` ("and every
+        few minutes", "and now and then", "then suddenly"), so a subject may start there."""
+        s = self.s
+        j = at - 1
+        timed = False
+        while j >= 0 and not s.is_punct(j) and (s.low[j] in _TIME_WORDS or s.lemma(j) in lx.DURATION_UNITS
+                                                or s.w[j].pos in ("ADV", "NUM")):
+            timed = timed or s.low[j] in _WHEN_WORDS or s.lemma(j) in lx.DURATION_UNITS
+            if s.low[j] in lx.CLAUSE_STARTERS and s.low[j] not in _WHEN_WORDS:
+                break
+            j -= 1
+        return timed and j < at - 1 and (j < 0 or s.is_punct(j) or s.low[j] in lx.CLAUSE_STARTERS) and \
+            s.low[at] in lx.DETERMINERS | {"someone", "somebody"}
 
     def possessor_place(self, at: int) -> Place | None:
         """The zone whose people the mention at `at` is ("ward A's patients": ward_a), or None."""

@@ -182,3 +182,36 @@ def test_people_sent_out_by_others_evacuate(worlds, world, prompt, start):
 def test_what_people_are_moved_or_told_to_do_is_their_own(worlds, world, prompt, intent, field, place):
     g, = read(worlds, world, prompt).groups
     assert (g.intent, getattr(g, field), g.purpose) == (intent, place, None)
+
+
+# ---- 6. the robot's followers and approachers ----------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,value,start,destination", [
+    ("hospital", "The robot guides a group from the entrance lobby to the cafeteria, with about ten visitors "
+                 "following behind it.", 10, "entrance_lobby", "cafeteria"),
+    ("airport", "A robot leads a party from the check-in hall to gate A1 with eight travellers trailing after it.",
+     8, "check_in_hall", "gate_a1"),
+])
+def test_the_people_of_a_collective_the_robot_leads_are_one_group(worlds, world, prompt, value, start, destination):
+    reading = read(worlds, world, prompt)
+    g, = reading.groups
+    assert (g.count.value, g.robot_interaction) == (value, "follow")
+    assert reading.robot is not None and (reading.robot.start, reading.robot.destination) == (start, destination)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "The robot waits by reception, and every so often a lost visitor wanders over to ask it the way."),
+    ("station", "The robot stands near the ticket machines; now and then a tourist comes over."),
+    ("mall", "The robot parks by the fountain and a few kids crowd round it."),
+    ("museum", "While the robot waits in the great hall, every few minutes a curious child walks up to it."),
+])
+def test_people_who_come_over_to_the_robot_approach_it(worlds, world, prompt):
+    reading = read(worlds, world, prompt)
+    g, = reading.groups
+    assert (g.intent, g.robot_interaction) == ("robot", "approach")
+    assert reading.robot is not None and reading.robot.task == "wait"
+
+
+def test_people_who_walk_over_to_a_place_do_not_approach_the_robot(worlds):
+    g, = read(worlds, "hospital", "The robot waits by reception while two nurses walk over to the pharmacy.").groups
+    assert (g.intent, g.destination, g.robot_interaction) == ("walk", "pharmacy", None)
