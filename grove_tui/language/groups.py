@@ -171,6 +171,16 @@ class Groups:
                 clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
                 clauses[k] = Clause()
         for k, m in enumerate(mentions):
+            if k > 0 and self.mentions.followed(m.first) and not m.partitive and mentions[k - 1].last < m.first and \
+                    clauses[k - 1].intent == "follow":
+                # "the pupils follow their teacher to the hall": the route is the teacher's and theirs
+                places = clauses[k - 1].places + clauses[k].places
+                routed = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS | {"from", "obj:dest", "out"}
+                             for p in places)
+                clauses[k - 1] = replace(clauses[k - 1], places=places)
+                clauses[k] = replace(clauses[k], places=places, has_action=True,
+                                     intent=clauses[k].intent or ("walk" if routed else "wander"))
+        for k, m in enumerate(mentions):
             if k > 0 and self.mentions.led_by(m.first) and mentions[k - 1].last == m.first - 2:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are

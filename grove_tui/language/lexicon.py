@@ -156,6 +156,14 @@ for _kind, _people in {
     for _person in _people.split():
         OWNER_KINDS.setdefault(_person, _kind)
 
+# Titles before a name ("Dr Jones", "Mr Li", "Mrs Patel"): one person, known by the title's kind.
+TITLES: dict[str, str] = {"mr": "man", "mrs": "woman", "ms": "woman", "miss": "woman", "mx": "person",
+                          "dr": "doctor", "doctor": "doctor", "prof": "professor", "professor": "professor",
+                          "sir": "man", "dame": "woman", "nurse": "nurse", "sister": "nurse", "father": "priest",
+                          "officer": "officer", "captain": "captain", "auntie": "aunt", "uncle": "uncle"}
+# Verbs by which people go behind someone ("the pupils follow their teacher to the hall"): the one
+# followed is a person of the scene too.
+FOLLOWING_VERBS = frozenset("follow trail shadow tail chase pursue".split())
 # People named by two words, the second of which means something else alone ("au pair" is one
 # person, not a pair; "station master" is no master of anything here).
 MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (

@@ -154,7 +154,7 @@ class Mentions:
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
-        if self.led_by(at) or self.robot_object(at) is not None:
+        if self.led_by(at) or self.robot_object(at) is not None or self.followed(at):
             return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
         if prev == "instead" and s.low[at] != "of":
             return True  # "nobody waits there; instead eight patients queue ..."
@@ -273,6 +273,23 @@ class Mentions:
         q = quantifier(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
+        return self.people.person_head(start, counted=q is not None) is not None
+
+    def followed(self, at: int) -> bool:
+        """Whether the phrase at `at` names a person people follow, brought in by the phrase: someone
+        of theirs, someone new or someone by name ("the pupils follow their teacher to the hall",
+        "trail behind a guide", "follow Dr Jones"); not the robot, signs, or one said as known
+        already ("follow the consultant": whom they follow, no group of its own)."""
+        s = self.s
+        p = at - 1
+        if p >= 1 and s.low[p] in ("behind", "after"):
+            p -= 1
+        if p < 1 or s.verb(p) not in lx.FOLLOWING_VERBS or s.after_determiner(p):
+            return False
+        if s.low[at] in ("the", "this", "that", "these", "those"):
+            return False  # "students follow the consultant": the one they go behind, said as known
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         return self.people.person_head(start, counted=q is not None) is not None
 
     def robot_object(self, at: int) -> str | None:
@@ -530,6 +547,9 @@ class Mentions:
         head = self.people.person_head(k, counted=False)
         if head is None:
             return None  # "ten in the pharmacy": a bare number borrowing the last group's noun is a count
+        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
+            return Mention(at, head, s.span(at, head), self.people.label(head),
+                           Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
         singular = s.lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
         label = self.people.label(head)
         if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
@@ -543,7 +563,7 @@ class Mentions:
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
-                    or self.robot_object(at) is not None or self.led_by(at)) \
+                    or self.robot_object(at) is not None or self.led_by(at) or self.followed(at)) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),

@@ -22,8 +22,22 @@ class People:
     def __init__(self, s: Sentence) -> None:
         self.s = s
 
+    def titled_name(self, k: int) -> int | None:
+        """The last word of a name after a title ("Dr Jones", "Mr Li Wei", "Mrs Patel"), else None."""
+        s = self.s
+        if s.low[k].rstrip(".") not in lx.TITLES:
+            return None
+        j = k + 1 if k + 1 < s.n and s.low[k + 1] != "." else k + 2  # "Dr. Jones"
+        end = None
+        while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.isalpha() and \
+                not s.index.knows(s.lemma(j)) and s.low[j] not in lx.ROBOT_WORDS:
+            end, j = j, j + 1
+        return end
+
     def is_person_noun(self, i: int) -> bool:
         s = self.s
+        if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
+            return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
@@ -158,6 +172,9 @@ class People:
         while k < s.n and k < j + 4:
             if s.low[k] in lx.ROBOT_WORDS:
                 return None  # "the robot glides": whatever follows, the robot is nobody's kind
+            named = self.titled_name(k)
+            if named is not None:
+                return named  # "Dr Jones": one person
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
@@ -318,6 +335,10 @@ class People:
         s = self.s
         if head is None:
             return "person"
+        title = next((lx.TITLES[s.low[k].rstrip(".")] for k in range(max(0, head - 3), head)
+                      if self.titled_name(k) == head), None)
+        if title is not None:
+            return title  # "Dr Jones": a doctor
         noun = s.lemma(head)
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
             noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays

@@ -215,3 +215,42 @@ def test_people_who_come_over_to_the_robot_approach_it(worlds, world, prompt):
 def test_people_who_walk_over_to_a_place_do_not_approach_the_robot(worlds):
     g, = read(worlds, "hospital", "The robot waits by reception while two nurses walk over to the pharmacy.").groups
     assert (g.intent, g.destination, g.robot_interaction) == ("walk", "pharmacy", None)
+
+
+# ---- 7. a person named only as whom a group follows or takes along -------------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,destination", [
+    ("museum", "The pupils follow their teacher to the café.", "teacher", "cafe"),
+    ("station", "Six tourists trail behind a guide to platform 2.", "guide", "platform_2"),
+    ("office", "Two interns follow Dr Okafor into the boardroom.", "doctor", "boardroom"),
+])
+def test_the_one_a_group_follows_is_a_person_of_the_scene(worlds, world, prompt, label, destination):
+    followers, leader = read(worlds, world, prompt).groups
+    assert (followers.intent, followers.destination, followers.follows is not None) == ("follow", destination, True)
+    assert (leader.label, leader.count.value, leader.intent, leader.destination) == (label, 1, "walk", destination)
+
+
+@pytest.mark.parametrize("world,prompt,label,destination", [
+    ("hospital", "A nurse pushes Mr Li's wheelchair to radiology.", "man", "radiology"),
+    ("airport", "A porter wheels Mrs Okoye from the check-in hall to gate A1.", "woman", "gate_a1"),
+])
+def test_someone_named_who_is_pushed_along_is_a_person(worlds, world, prompt, label, destination):
+    carer, carried = read(worlds, world, prompt).groups
+    assert carer.destination == destination
+    assert (carried.label, carried.count.value, carried.intent, carried.destination) == (label, 1, "follow",
+                                                                                         destination)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "Five students follow the consultant into radiology."),
+    ("mall", "Shoppers follow the signs to the food court."),
+    ("residential", "Two kids follow the robot into the kitchen."),
+])
+def test_whom_they_follow_said_as_known_is_no_group_of_its_own(worlds, world, prompt):
+    assert len(read(worlds, world, prompt).groups) == 1
+
+
+def test_a_name_after_a_title_is_one_person(worlds):
+    g, = read(worlds, "hospital", "Dr Jones walks from ward A to the pharmacy.").groups
+    assert (g.label, g.count.value, g.count.kind, g.start, g.destination) == ("doctor", 1, "exact", "ward_a",
+                                                                             "pharmacy")
