@@ -188,6 +188,10 @@ AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")
 # ("the radiographer leaves her department"), since lifts, printers and trains go and wait too.
 STRONG_AGENT_SUFFIXES = ("ist", "ian", "eur", "smith", "keeper", "monger", "wright", "man", "woman", "person")
 WEAK_AGENT_SUFFIXES = AGENT_SUFFIXES + ("ant", "ent")
+# Verbs of going and staying that machines seldom have for subject with a place after them ("an
+# interpreter waits at the desk", not "the dryer runs in the basement").
+PEOPLE_GOING_VERBS = frozenset("wait leave enter arrive head walk queue linger visit exit proceed hurry wander "
+                               "stroll loiter".split())
 # Pronouns that refer to a person: "her", "his" said of a noun make it someone.
 PERSONAL_PRONOUNS = frozenset("he she him her his hers himself herself".split())
 PLURAL_PERSONAL_PRONOUNS = frozenset("they them their theirs themselves".split())

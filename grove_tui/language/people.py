@@ -30,7 +30,9 @@ class People:
         j = k + 1 if k + 1 < s.n and s.low[k + 1] != "." else k + 2  # "Dr. Jones"
         end = None
         while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.isalpha() and \
-                not s.index.knows(s.lemma(j)) and s.low[j] not in lx.ROBOT_WORDS:
+                s.w[j].pos == "PROPN" and not s.index.knows(s.lemma(j)) and s.low[j] not in lx.ROBOT_WORDS and \
+                s.low[j] not in lx.STOPWORDS | lx.PLACE_PREPOSITIONS | lx.CLAUSE_STARTERS and \
+                verb_lemma(s.low[j]) not in lx.INTENT_VERBS:  # not "A Doctor Walks To Ward B"
             end, j = j, j + 1
         return end
 
@@ -95,27 +97,43 @@ class People:
         for a person that refers to it ("her", "his"; "their" for a plural)."""
         s = self.s
         word = s.w[i]
-        if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i or \
-                s.w[word.head].pos not in ("VERB", "AUX"):
+        if word.pos not in ("NOUN", "PROPN"):
             return False
+        # The parser may take the verb for a plural noun the word modifies ("an interpreter waits at"):
+        # a determiner, the word, then a verb's "-s" form the lexicon knows.
+        nxt = i + 1
+        mistagged = (word.dep == "compound" and 0 < i and nxt < s.n and s.w[i - 1].pos == "DET"
+                     and s.low[nxt].endswith("s") and verb_lemma(s.low[nxt]) != s.low[nxt]
+                     and verb_lemma(s.low[nxt]) in lx.INTENT_VERBS)
+        if mistagged:
+            head = nxt
+        elif word.dep != "nsubj" or word.head == i or s.w[word.head].pos not in ("VERB", "AUX"):
+            return False
+        else:
+            head = word.head
         lem = s.lemma(i)
-        verb = s.verb(word.head)
+        verb = verb_lemma(s.low[head]) if mistagged else s.verb(head)
         if not lem.isalpha() or len(lem) < 5 or verb in lx.THING_VERBS or verb == "start" or self._a_thing(lem):
             return False
-        if verb == "be" and not (word.head + 1 < s.n and s.preposition(word.head + 1) is not None):
+        if verb == "be" and not (head + 1 < s.n and s.preposition(head + 1) is not None):
             return False  # "the glazier is in the lobby", not "the bookseller is closed"
         singular = word.tag in ("NN", "NNP")
         if lem.endswith(lx.STRONG_AGENT_SUFFIXES) and (singular or verb != "go"):
             return True
         pronouns = lx.PERSONAL_PRONOUNS if singular else lx.PLURAL_PERSONAL_PRONOUNS
         if (singular or lem.endswith(lx.WEAK_AGENT_SUFFIXES)) and any(
-                s.low[k] in pronouns and self._in_clause_of(k, word.head) for k in range(s.n)
+                s.low[k] in pronouns and self._in_clause_of(k, head) for k in range(s.n)
                 if s.w[k].sentence == word.sentence):
             return True  # "the chaplain leaves his office": "his" is someone's
-        # The one subject of a sentence that names nobody else, one of a kind ("the sommelier goes
-        # to the cellar"): a person, rather than a crowd nobody named.
-        return singular and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and s.after_determiner(i) and not any(
-            s.lemma(k) in lx.PERSON_NOUNS or s.low[k] in lx.PERSON_NOUNS for k in range(s.n) if k != i)
+        if not (singular and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and s.after_determiner(i)):
+            return False
+        # One of a kind who waits, arrives or leaves somewhere ("an interpreter waits at the
+        # information desk while ..."), or the one subject of a sentence that names nobody else ("the
+        # sommelier goes to the cellar"): a person, rather than a crowd nobody named.
+        placed = verb in lx.PEOPLE_GOING_VERBS and head + 1 < s.n and (
+            s.preposition(head + 1) is not None or s.low[head + 1] in lx.DETERMINERS)
+        return placed or not any(s.lemma(k) in lx.PERSON_NOUNS or s.low[k] in lx.PERSON_NOUNS
+                                 for k in range(s.n) if k != i)
 
     def _a_thing(self, lem: str) -> bool:
         """A word of a place, the robot, an animal or thing, a building, a time or a hazard."""

@@ -53,6 +53,18 @@ def test_a_machine_that_goes_is_nobody(worlds, world, prompt):
     assert g.label == "person" and g.confidence_of("group") is not None
 
 
+@pytest.mark.parametrize("world,prompt,label,location", [
+    ("airport", "An interpreter waits at the information desk while twenty passengers queue at check-in.",
+     "interpreter", "information_desk"),
+    ("mall", "Shoppers browse the bookshop while a cartographer waits at the food court.", "cartographer",
+     "food_court"),
+])
+def test_a_job_no_list_names_beside_other_people_is_one_more_person(worlds, world, prompt, label, location):
+    groups = read(worlds, world, prompt).groups
+    one = next(g for g in groups if g.label == label)
+    assert (len(groups), one.count.value, one.location) == (2, 1, location)
+
+
 def test_a_machine_beside_people_adds_no_group(worlds):
     g, = read(worlds, "office", "Ten engineers wait in the kitchen while the printer goes quiet.").groups
     assert (g.label, g.count.value) == ("engineer", 10)
@@ -248,6 +260,11 @@ def test_someone_named_who_is_pushed_along_is_a_person(worlds, world, prompt, la
 ])
 def test_whom_they_follow_said_as_known_is_no_group_of_its_own(worlds, world, prompt):
     assert len(read(worlds, world, prompt).groups) == 1
+
+
+def test_a_capitalised_verb_after_a_title_word_is_no_name(worlds):
+    g, = read(worlds, "hospital", "A Doctor Walks To Ward B").groups
+    assert (g.label, g.count.value, g.intent, g.destination) == ("doctor", 1, "walk", "ward_b")
 
 
 def test_a_name_after_a_title_is_one_person(worlds):
