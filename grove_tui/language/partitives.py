@@ -36,7 +36,9 @@ class Partitives:
         s = self.s
         low = s.low
         fraction, of_at = self._fraction(at)
-        if fraction is None:
+        if fraction is None and low[at] in ("each", "most") and at + 1 < s.n and low[at + 1] == "of":
+            fraction, of_at = (1.0 if low[at] == "each" else 0.75), at + 1  # "each of them": all of them
+        elif fraction is None:
             if num is None:
                 return None
             # "a few of" is read with its "of" by the quantifier; "two of" leaves it
@@ -49,6 +51,8 @@ class Partitives:
             label = found[parent_index].label if parent_index is not None else s.lemma(k)
             count = self._share(found[parent_index].count if parent_index is not None else None, fraction) \
                 if fraction is not None else count_of(s, num, f"{at}", lx.OTHERS_RANGE) if num is not None else None
+            if count is not None and low[at] == "most":
+                count = replace(count, kind="implied")  # "most of them": about three in four
             return Mention(at, k, s.span(at, k), label, count,
                            relation=f"subset_of:{parent_index}" if parent_index is not None else None)
         if low[k] not in _GROUP_WORDS:
@@ -59,6 +63,11 @@ class Partitives:
         if head is None:
             return None
         label = self.people.label(head)
+        if low[at] in ("both", "each", "most"):
+            # "both of the porters", "each of the nurses": the group itself, no part of it
+            whole = self._whole(k, head, inner, label)
+            count = Count("exact", 2, 2, 2) if low[at] == "both" else whole.count
+            return Mention(at, head, s.span(at, head), label, count)
         same = next((j for j in range(len(found) - 1, -1, -1) if found[j].label == label
                      and not (found[j].relation or "").startswith("subset_of")), None)
         if same is not None or (parent_index is not None and inner is None and label == "person"):

@@ -271,3 +271,22 @@ def test_a_name_after_a_title_is_one_person(worlds):
     g, = read(worlds, "hospital", "Dr Jones walks from ward A to the pharmacy.").groups
     assert (g.label, g.count.value, g.count.kind, g.start, g.destination) == ("doctor", 1, "exact", "ward_a",
                                                                              "pharmacy")
+
+
+@pytest.mark.parametrize("world,prompt,value,kind", [
+    ("hospital", "Both of the porters wait at reception.", 2, "exact"),
+    ("station", "Each of the cleaners sweeps a platform.", None, "vague"),
+    ("mall", "Most of the shoppers in the food court head to the cinema.", None, "vague"),
+])
+def test_all_or_most_of_a_group_is_the_group_itself(worlds, world, prompt, value, kind):
+    g, = read(worlds, world, prompt).groups
+    assert g.relation is None and g.count.kind == kind and (value is None or g.count.value == value)
+
+
+@pytest.mark.parametrize("world,prompt,parent,part,kind", [
+    ("airport", "Twelve passengers wait at gate A1; each of them walks to the café.", 12, 12, "exact"),
+    ("office", "Eight engineers chat in the kitchen; most of them then walk to the boardroom.", 8, 6, "implied"),
+])
+def test_each_or_most_of_them_is_a_share_of_the_group_before(worlds, world, prompt, parent, part, kind):
+    a, b = read(worlds, world, prompt).groups
+    assert (a.count.value, b.count.value, b.count.kind, b.relation) == (parent, part, kind, "subset_of:0")
