@@ -143,6 +143,17 @@ def test_a_robot_that_goes_then_stays_ends_where_it_stays(worlds, world, prompt,
     assert robot is not None and (robot.task, robot.start, robot.destination) == ("cross", start, destination)
 
 
+@pytest.mark.parametrize("world,prompt,task,destination,location", [
+    ("residential", "The robot goes to its dock in the hallway.", "cross", "hallway", None),
+    ("office", "The robot rolls to its charging station in the kitchen.", "cross", "kitchen", None),
+    ("residential", "The robot drives to the kitchen through the hallway.", "cross", "kitchen", None),
+    ("hospital", "The robot powers down in the supply room while two porters chat.", "wait", None, "supply_room"),
+])
+def test_where_the_robots_own_things_are(worlds, world, prompt, task, destination, location):
+    robot = read_prompt(prompt, worlds[world]).robot
+    assert robot is not None and (robot.task, robot.destination, robot.location) == (task, destination, location)
+
+
 def test_people_who_follow_the_robot_are_not_a_placed_robot(worlds):
     reading = read(worlds, "museum", "The robot is followed by two children through the great hall.")
     g, = reading.groups
