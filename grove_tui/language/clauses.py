@@ -125,9 +125,9 @@ class Clauses:
             return self._add_place(scan, self.places.phrase(i + 2, "obj:start", i), i)
         if w == "to" and nxt == "be" and i + 2 < s.n and verb_lemma(s.low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
             return False  # "the hall has to be emptied": the zone's evacuation, read by emptied_zones
-        if w == "to" and i > 0 and s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS and \
-                s.verb_follows(i + 1):
-            return False  # "the guests are asked to leave", "are told to wait in the café": what they do, no purpose
+        if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
+                                    or self._told_before(i)) and s.verb_follows(i + 1):
+            return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and not self.places.names_place(i + 1):
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
@@ -410,6 +410,14 @@ class Clauses:
         if kind == "walk" and s.around_follows(i) and not has_destination:
             return "wander", verb, i
         return kind, verb, i
+
+    def _told_before(self, i: int) -> bool:
+        """Whether people told what to do stand right before "to" at i ("tells two interns to go")."""
+        s = self.s
+        k = i - 1
+        while k > 0 and s.w[k].pos in ("NOUN", "PROPN", "DET", "ADJ", "NUM") and not s.is_punct(k):
+            k -= 1
+        return k < i - 1 and s.verb(k) in lx.TELLING_VERBS and any(self.people.is_person_noun(x) for x in range(k + 1, i))
 
     def _sent_away(self, i: int) -> int | None:
         """The word after "to leave", "out", "away" or "home" when the word at i is a passive verb

@@ -171,7 +171,7 @@ class Groups:
                 clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
                 clauses[k] = Clause()
         for k, m in enumerate(mentions):
-            if k > 0 and self.mentions.followed(m.first) and not m.partitive and mentions[k - 1].last < m.first and \
+            if k > 0 and self.mentions.objects.followed(m.first) and not m.partitive and mentions[k - 1].last < m.first and \
                     clauses[k - 1].intent == "follow":
                 # "the pupils follow their teacher to the hall": the route is the teacher's and theirs
                 places = clauses[k - 1].places + clauses[k].places
@@ -181,7 +181,7 @@ class Groups:
                 clauses[k] = replace(clauses[k], places=places, has_action=True,
                                      intent=clauses[k].intent or ("walk" if routed else "wander"))
         for k, m in enumerate(mentions):
-            if k > 0 and self.mentions.led_by(m.first) and mentions[k - 1].last == m.first - 2:
+            if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last == m.first - 2:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are
                 places = clauses[k - 1].places + clauses[k].places
@@ -248,10 +248,16 @@ class Groups:
             # "..., two of them students": part of the group, doing as it does; "..., 4 more at lane 1":
             # more of it somewhere else, with no verb of their own, doing the same there
             intent = earlier[int(parent)].intent
-        if self.mentions.led_by(m.first) and earlier and c.robot is None and \
+        if self.mentions.objects.led_by(m.first) and earlier and c.robot is None and \
                 earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads
             c = replace(c, follows=earlier[-1].who)
+        if self.mentions.objects.sent_by(m.first) and c.intent is None:
+            # "a guard sends the visitors out of the café": they leave; "to the lobby": they go there
+            out = any(s.low[i] in ("out", "away", "home") for i in range(m.last + 1, min(m.last + 3, s.n))) or \
+                any(p.prep in ("out", "from", "obj:start") for p in c.places)
+            intent = "evacuate" if out else "walk" if any(p.match is not None for p in c.places) else intent
+            c = replace(c, evacuate=c.evacuate or out)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
         robot = robot or c.unaimed  # "... and their grandparents shrink back": from the robot named before
         if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):

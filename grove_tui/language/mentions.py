@@ -18,6 +18,7 @@ from grove_tui.language.collectives import Collectives
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
+from grove_tui.language.objects import PeopleObjects
 from grove_tui.language.partitives import Partitives
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -40,6 +41,7 @@ class Mentions:
         self.places = places
         self.collectives = Collectives(s, people)
         self.partitives = Partitives(s, people)
+        self.objects = PeopleObjects(s, people)
         self.problems: list[str] = []  # counts no scenario can have ("-5 people", "zero nurses")
 
     def find(self) -> list[Mention]:
@@ -88,7 +90,7 @@ class Mentions:
             if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
-            m.robot_object = self.robot_object(m.first)
+            m.robot_object = self.objects.robot_object(m.first)
             if m.zone_place is None and not m.whole_zone:
                 m.zone_place = self.possessor_place(m.first)
             if m.whole is not None:
@@ -154,7 +156,8 @@ class Mentions:
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
-        if self.led_by(at) or self.robot_object(at) is not None or self.followed(at):
+        if self.objects.led_by(at) or self.objects.robot_object(at) is not None or self.objects.followed(at) or \
+                self.objects.sent_by(at):
             return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
         if prev == "instead" and s.low[at] != "of":
             return True  # "nobody waits there; instead eight patients queue ..."
@@ -261,78 +264,6 @@ class Mentions:
         if k > 0 and s.low[k - 1] in ("the", "a", "an", "this", "that"):
             k -= 1
         return self.subject_position(k) if s.low[k - 1:k] != ["of"] else False
-
-    def led_by(self, at: int) -> bool:
-        """Whether the phrase at `at` names people a person right before takes along: the object of a
-        verb of leading, escorting, pushing or helping ("a tour guide leads twelve tourists", "an
-        orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
-        s = self.s
-        p = at - 1
-        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not self.people.is_person_noun(p - 1):
-            return False
-        q = quantifier(s, at)
-        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        start = s.skip(start, {"of", "the"})
-        return self.people.person_head(start, counted=q is not None) is not None
-
-    def followed(self, at: int) -> bool:
-        """Whether the phrase at `at` names a person people follow, brought in by the phrase: someone
-        of theirs, someone new or someone by name ("the pupils follow their teacher to the hall",
-        "trail behind a guide", "follow Dr Jones"); not the robot, signs, or one said as known
-        already ("follow the consultant": whom they follow, no group of its own)."""
-        s = self.s
-        p = at - 1
-        if p >= 1 and s.low[p] in ("behind", "after"):
-            p -= 1
-        if p < 1 or s.verb(p) not in lx.FOLLOWING_VERBS or s.after_determiner(p):
-            return False
-        if s.low[at] in ("the", "this", "that", "these", "those"):
-            return False  # "students follow the consultant": the one they go behind, said as known
-        q = quantifier(s, at)
-        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        return self.people.person_head(start, counted=q is not None) is not None
-
-    def robot_object(self, at: int) -> str | None:
-        """Whether the phrase at `at` names people inside the robot's own clause, after its verb:
-        people it takes along ("the robot escorts a lost child to ...": "led"), follows ("the robot
-        follows grandpa from ...": "followed") or meets on its way ("the robot passes two nurses
-        chatting in the corridor", "delivers coffee to the manager": "met"). They are people of the
-        scene all the same."""
-        s = self.s
-        noun = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        if noun >= s.n or (self.people.person_head(self._phrase_head(at), counted=quantifier(s, at) is not None)
-                           is None and not self.people.is_person_noun(noun)):
-            return None
-        p = at - 1
-        direct = True
-        while p > 0 and p >= at - 6 and not s.is_punct(p) and s.low[p] not in lx.CLAUSE_STARTERS and \
-                (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or (
-                    s.w[p].pos in ("NOUN", "NUM") and not self.people.is_person_noun(p)
-                    and not s.index.knows(s.lemma(p)))):
-            direct = False
-            p -= 1  # "hands out leaflets to passengers", "drives past a group of visitors"
-        if p < 1 or not (s.w[p].pos in ("VERB", "AUX") or s.w[p].tag.startswith("VB") or
-                         verb_lemma(s.low[p]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS):
-            return None
-        if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
-            return None  # "the robot is followed by two children": a passive, the people's own clause
-        k = p - 1
-        while k > 0 and s.w[k].pos == "ADV":
-            k -= 1  # "the robot slowly escorts"
-        robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \
-            or (s.low[k] == "to" and k > 0 and s.low[k - 1] in lx.ROBOT_WORDS)  # "ask the robot to escort ..."
-        if not robot:
-            return None
-        verb = verb_lemma(s.low[p])
-        if direct and verb in lx.ROBOT_FOLLOW_VERBS and verb not in lx.LEADING_VERBS:
-            return "followed"
-        return "led" if direct and verb in lx.LEADING_VERBS else "met"
-
-    def _phrase_head(self, at: int) -> int:
-        s = self.s
-        q = quantifier(s, at)
-        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        return s.skip(start, {"of", "the"})
 
     def _conversation_partner(self, p: int, at: int) -> bool:
         """Whether the phrase at `at`, after "with" at p, is who a person talks or walks with, not a
@@ -563,7 +494,8 @@ class Mentions:
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
-                    or self.robot_object(at) is not None or self.led_by(at) or self.followed(at)) \
+                    or self.objects.robot_object(at) is not None or self.objects.led_by(at) or self.objects.followed(at)
+                    or self.objects.sent_by(at)) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),

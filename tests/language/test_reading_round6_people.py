@@ -197,6 +197,27 @@ def test_people_sent_out_by_others_evacuate(worlds, world, prompt, start):
 
 
 @pytest.mark.parametrize("world,prompt,intent,field,place", [
+    ("hospital", "A guard sends the visitors out of the cafeteria.", "evacuate", "start", "cafeteria"),
+    ("museum", "A curator tells ten pupils to go to the café.", "walk", "destination", "cafe"),
+    ("airport", "An agent asks the passengers to wait at gate A1.", "wait", "location", "gate_a1"),
+])
+def test_people_someone_sends_go_while_the_sender_stays(worlds, world, prompt, intent, field, place):
+    sender, sent = read(worlds, world, prompt).groups
+    assert (sender.count.value, sender.intent) == (1, "wait")
+    assert (sent.intent, getattr(sent, field), sent.purpose) == (intent, place, None)
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hospital", "Two nurses move ten patients from ward A to ward B.", "ward_a", "ward_b"),
+    ("residential", "Dad moves the kids from the living room to the kitchen.", "living_room", "kitchen"),
+])
+def test_people_someone_moves_go_along_with_them(worlds, world, prompt, start, destination):
+    mover, moved = read(worlds, world, prompt).groups
+    assert (mover.start, mover.destination) == (moved.start, moved.destination) == (start, destination)
+    assert moved.intent == "follow"
+
+
+@pytest.mark.parametrize("world,prompt,intent,field,place", [
     ("hospital", "Patients are moved to ward B.", "walk", "destination", "ward_b"),
     ("museum", "The pupils are ushered to the café.", "walk", "destination", "cafe"),
     ("airport", "Ten passengers are asked to wait at gate A1.", "wait", "location", "gate_a1"),
