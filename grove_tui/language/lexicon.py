@@ -201,7 +201,7 @@ PLURAL_PERSONAL_PRONOUNS = frozenset("they them their theirs themselves".split()
 HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate socialise socialize greet "
                                 "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
                                 "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
-                                "tiptoe limp hobble shuffle walk march stride commute nap doze snooze".split())
+                                "tiptoe limp hobble shuffle nap doze snooze".split())
 # Verbs of things, not people: a counted noun no list names that does only these is no group
 # ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
 THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "

@@ -121,7 +121,8 @@ class People:
         if lem.endswith(lx.STRONG_AGENT_SUFFIXES) and (singular or verb != "go"):
             return True
         pronouns = lx.PERSONAL_PRONOUNS if singular else lx.PLURAL_PERSONAL_PRONOUNS
-        if (singular or lem.endswith(lx.WEAK_AGENT_SUFFIXES)) and any(
+        owned = any(w.head == i and w.dep == "poss" for w in s.w)  # "the guard's torch": someone's thing
+        if (singular and not owned or lem.endswith(lx.WEAK_AGENT_SUFFIXES)) and any(
                 s.low[k] in pronouns and self._in_clause_of(k, head) for k in range(s.n)
                 if s.w[k].sentence == word.sentence):
             return True  # "the chaplain leaves his office": "his" is someone's
@@ -152,8 +153,8 @@ class People:
             head = s.w[k].head
             if head == k:
                 return False
-            if any(w.head == head and w.dep in ("nsubj", "nsubjpass") and w.i != k for w in s.w) and head != verb:
-                return False
+            if head != verb and any(w.head == head and w.dep in ("nsubj", "nsubjpass") for w in s.w):
+                return False  # "the torch flickers as he walks": "he" is the subject of a clause of its own
             k, seen = head, seen + 1
         return False
 

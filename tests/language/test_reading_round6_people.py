@@ -65,6 +65,15 @@ def test_a_job_no_list_names_beside_other_people_is_one_more_person(worlds, worl
     assert (len(groups), one.count.value, one.location) == (2, 1, location)
 
 
+@pytest.mark.parametrize("world,prompt,label", [
+    ("museum", "The security guard's torch flickers as he walks through the great hall.", "guard"),
+    ("office", "The barrier lifts and two couriers walk to reception.", "courier"),
+])
+def test_a_thing_beside_a_person_is_nobody(worlds, world, prompt, label):
+    g, = read(worlds, world, prompt).groups
+    assert g.label == label
+
+
 def test_a_machine_beside_people_adds_no_group(worlds):
     g, = read(worlds, "office", "Ten engineers wait in the kitchen while the printer goes quiet.").groups
     assert (g.label, g.count.value) == ("engineer", 10)
