@@ -181,6 +181,14 @@ class Groups:
                 clauses[k] = replace(clauses[k], places=places, has_action=True,
                                      intent=clauses[k].intent or ("walk" if routed else "wander"))
         for k, m in enumerate(mentions):
+            if k > 0 and self.mentions.objects.sent_by(m.first) and mentions[k - 1].last == m.first - 2:
+                # the sender stays where the people it sends were ("a guard sends the visitors out of the
+                # café": the guard is in the café), or where they all are ("asks a nurse ... at reception")
+                out, sent_to = self._sent_where(m, clauses[k])
+                kept = [replace(p, prep="at") for p in clauses[k].places if p.match is not None and (
+                    not (out or sent_to) or p.prep in ("from", "out", "obj:start", "at", "in", "on"))]
+                clauses[k - 1] = replace(clauses[k - 1], places=clauses[k - 1].places + kept)
+        for k, m in enumerate(mentions):
             if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last == m.first - 2:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are
@@ -190,6 +198,15 @@ class Groups:
                 around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
                 clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
                     "walk" if routed else "wander" if around else "wait"))
+
+    def _sent_where(self, m: Mention, c: Clause) -> tuple[bool, bool]:
+        """(sent out, sent somewhere) for people someone sends: "out of the café", "to the lobby"."""
+        s = self.s
+        out = any(s.low[i] in ("out", "away", "home") for i in range(m.last + 1, min(m.last + 3, s.n))) or \
+            any(p.prep in ("out", "from", "obj:start") for p in c.places)
+        sent_to = any(p.match is not None and (p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS
+                                               or p.prep == "obj:dest") for p in c.places)
+        return out, sent_to
 
     def _with_robot(self, m: Mention, robot_clauses: Sequence[RobotClause], excluded: set[int]) -> Clause:
         """The clause of people the robot escorts or follows: the robot's route after them is theirs
@@ -254,9 +271,8 @@ class Groups:
             c = replace(c, follows=earlier[-1].who)
         if self.mentions.objects.sent_by(m.first) and c.intent is None:
             # "a guard sends the visitors out of the café": they leave; "to the lobby": they go there
-            out = any(s.low[i] in ("out", "away", "home") for i in range(m.last + 1, min(m.last + 3, s.n))) or \
-                any(p.prep in ("out", "from", "obj:start") for p in c.places)
-            intent = "evacuate" if out else "walk" if any(p.match is not None for p in c.places) else intent
+            out, sent_to = self._sent_where(m, c)
+            intent = "evacuate" if out else "walk" if sent_to else intent
             c = replace(c, evacuate=c.evacuate or out)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
         robot = robot or c.unaimed  # "... and their grandparents shrink back": from the robot named before

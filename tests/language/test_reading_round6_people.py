@@ -216,6 +216,15 @@ def test_people_someone_sends_go_while_the_sender_stays(worlds, world, prompt, i
     assert (sent.intent, getattr(sent, field), sent.purpose) == (intent, place, None)
 
 
+@pytest.mark.parametrize("world,prompt,sender_at", [
+    ("hospital", "A guard sends the visitors out of the cafeteria.", "cafeteria"),
+    ("station", "A tourist asks a porter for directions at the ticket office.", "ticket_office"),
+])
+def test_the_sender_stays_where_the_people_it_speaks_to_are(worlds, world, prompt, sender_at):
+    sender, _ = read(worlds, world, prompt).groups
+    assert (sender.intent, sender.location) == ("wait", sender_at)
+
+
 @pytest.mark.parametrize("world,prompt,start,destination", [
     ("hospital", "Two nurses move ten patients from ward A to ward B.", "ward_a", "ward_b"),
     ("residential", "Dad moves the kids from the living room to the kitchen.", "living_room", "kitchen"),
