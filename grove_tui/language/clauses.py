@@ -27,6 +27,8 @@ from grove_tui.language.tokens import lemma, verb_lemma
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
 # Words that keep a word inside a place phrase available as a verb ("wait in the waiting room").
 _VERBS_INSIDE_NAMES = ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang")
+# Possessives before a room that is someone's own ("locks her office").
+_OWNERS = frozenset({"her", "his", "their", "my", "our"})
 
 
 @dataclass
@@ -123,6 +125,9 @@ class Clauses:
             return self._add_place(scan, self.places.phrase(i + 2, "obj:start", i), i)
         if w == "to" and nxt == "be" and i + 2 < s.n and verb_lemma(s.low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
             return False  # "the hall has to be emptied": the zone's evacuation, read by emptied_zones
+        if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
+                                    or self._told_before(i)) and s.verb_follows(i + 1):
+            return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and not self.places.names_place(i + 1):
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
@@ -137,7 +142,8 @@ class Clauses:
             if name == "from" and self._after_transaction(i, scan.own):
                 name = "at"  # "buy tickets from the machines": where they stand, not where they start
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
-            place = self.places.phrase(i + width, name, i, record_unknown=name != "off")
+            place = self._there(i, width, name) if i + width < s.n and s.low[i + width] == "there" else \
+                self.places.phrase(i + width, name, i, record_unknown=name != "off")
             if place is not None and name in lx.VIA_PREPOSITIONS | {"by"} and i > 0 and s.low[i - 1] == "in" and \
                     place.match is not None and place.match.kind == "door":
                 place = replace(place, prep="from")  # "pour in through the main doors": in from there
@@ -146,6 +152,17 @@ class Clauses:
                 return self._add_place(scan, place, i)
             return False
         return self._verb_object(scan, i, nxt)
+
+    def _there(self, i: int, width: int, prep: str) -> Place | None:
+        """"in there", "out of there": the place named last before it ("a pipe bursts above the
+        dinosaur gallery and everyone in there is sent out"), in this phrase's role."""
+        s = self.s
+        for k in range(i - 1, -1, -1):
+            if s.low[k] in lx.DETERMINERS and self.places.names_place(k):
+                found = self.places.phrase(k, prep, k, record_unknown=False)
+                if found is not None and found.match is not None:
+                    return replace(found, prep=prep, index=i, end=i + width + 1, written=s.low[i])
+        return None
 
     def _sequel(self, scan: _Scan, i: int) -> Place | None:
         """A place said right after another with no preposition of its own, in the same role: the
@@ -259,11 +276,15 @@ class Clauses:
                 scan.used.update(range(i + 1, place.end))
                 scan.pos = s.advance(scan.own, place.end)
                 return True
+        obj = i + 2 if nxt in ("up", "down", "off") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
+        nxt = s.low[obj] if obj < s.n else ""
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
-                and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1))
-                and not s.after_determiner(i) and self.places.names_place(s.skip(i + 1, lx.DETERMINERS))):
-            # "a cleaner sweeps platform 2", "mops the corridor": the object of a verb the lexicon lacks
-            place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False)
+                and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(obj))
+                and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))
+                                                   or nxt in _OWNERS)):
+            # "a cleaner sweeps platform 2", "mops the corridor", "locks her office", "closes up
+            # reception": the object of a verb the lexicon lacks (one's own room by its kind)
+            place = self.places.phrase(obj, "obj:at", i, record_unknown=False)
             if place is not None:
                 c.places.append(place)
                 c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
@@ -390,8 +411,42 @@ class Clauses:
             return "wander", verb, i
         return kind, verb, i
 
+    def _told_before(self, i: int) -> bool:
+        """Whether people told what to do stand right before "to" at i ("tells two interns to go")."""
+        s = self.s
+        k = i - 1
+        while k > 0 and s.w[k].pos in ("NOUN", "PROPN", "DET", "ADJ", "NUM") and not s.is_punct(k):
+            k -= 1
+        return k < i - 1 and s.verb(k) in lx.TELLING_VERBS and any(self.people.is_person_noun(x) for x in range(k + 1, i))
+
+    def _sent_away(self, i: int) -> int | None:
+        """The word after "to leave", "out", "away" or "home" when the word at i is a passive verb
+        by which others make people leave ("is sent out", "are asked to leave", "are ushered away")."""
+        s = self.s
+        if i < 1 or s.w[i].tag != "VBN" or s.verb(i) not in lx.SENDING_VERBS:
+            return None
+        aux = i - 1
+        while aux > 0 and s.w[aux].pos == "ADV":
+            aux -= 1
+        if verb_lemma(s.low[aux]) not in ("be", "get") and s.low[aux] not in ("being", "been"):
+            return None
+        k = s.skip(i + 1, {"quickly", "calmly", "immediately", "swiftly", "gently", "all"})
+        if k < s.n and s.low[k] in ("out", "away", "home", "outside"):
+            return k + 1
+        if k + 1 < s.n and s.low[k] == "to" and s.verb(k + 1) in lx.DEPARTURE_VERBS:
+            return k + 2
+        if k + 2 < s.n and s.low[k] == "to" and s.verb(k + 1) in ("get", "go", "head", "move") and \
+                s.low[k + 2] in ("out", "away", "home", "outside"):
+            return k + 3  # "are told to get out", not "are told to go to the boardroom"
+        return None
+
     def _evacuation(self, c: Clause, own: Sequence[int]) -> None:
         s = self.s
+        sent = next((i for i in own if self._sent_away(i) is not None), None)
+        if sent is not None:  # "everyone in there is sent out", "the guests are asked to leave"
+            c.evacuate = True
+            if c.intent is None or c.intent in lx.STATIONARY_INTENTS or c.intent == "walk":
+                c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", s.verb(sent), sent, True, True
         if any(verb_lemma(s.low[i]) in ("evacuate", "flee", "escape") or s.low[i] in ("evacuation",) for i in own):
             c.evacuate = True
         for i in own:

@@ -86,16 +86,32 @@ class Groups:
 
     def _spans(self, mentions: list[Mention]) -> list[tuple[int, int]]:
         """Each group's words: from its mention (or a fronted phrase before it: "..., and from the
-        office, eight people walk ...") to the next group's, within its sentence."""
+        office, eight people walk ...") to the next group's, within its sentence. A group named
+        inside a part of it ("two of the six developers at their desks follow ...") owns its own
+        phrase and the places after it, up to the verb the part does."""
         s = self.s
-        starts = [mentions[0].first] + [self.clauses.fronted_start(mentions[k - 1].last, mentions[k].first)
-                                        for k in range(1, len(mentions))]
-        spans: list[tuple[int, int]] = []
-        for k, m in enumerate(mentions):
-            end = starts[k + 1] if k + 1 < len(mentions) else s.n
+        regular = [k for k, m in enumerate(mentions) if not m.partitive]
+        spans: list[tuple[int, int]] = [(m.first, self._partitive_end(m)) for m in mentions]
+        for n, k in enumerate(regular):
+            m = mentions[k]
+            start = m.first if n == 0 else self.clauses.fronted_start(mentions[regular[n - 1]].last, m.first)
+            end = self.clauses.fronted_start(m.last, mentions[regular[n + 1]].first) if n + 1 < len(regular) else s.n
+            end = mentions[regular[n + 1]].first if n + 1 < len(regular) and end > mentions[regular[n + 1]].first \
+                else end
             sentence_end = next((i for i in range(m.last + 1, end) if s.w[i].sentence != s.w[m.first].sentence), end)
-            spans.append((starts[k], sentence_end))
+            spans[k] = (start, sentence_end)
         return spans
+
+    def _partitive_end(self, m: Mention) -> int:
+        """The end of the words of a group named inside a part of it: its phrase and the place
+        phrases after it, up to a verb, a punctuation mark or a clause word."""
+        s = self.s
+        j = m.last + 1
+        while j < s.n and not s.is_punct(j) and s.low[j] not in lx.CLAUSE_STARTERS and not (
+                s.is_verb(j) or self.mentions.people.third_person_verb(j) or s.w[j].dep == "ROOT"
+                or (verb_lemma(s.low[j]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(j)))):
+            j += 1
+        return j
 
     def _scenes(self, mentions: list[Mention], spans: list[tuple[int, int]], excluded: set[int],
                 robot_tokens: set[int]) -> dict[int, Clause]:
@@ -139,6 +155,8 @@ class Groups:
                         and s.low[x] not in ("and", "as", "well", "plus", "with")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
+            if mentions[k].partitive:
+                continue  # "two of the six developers follow it": the six do not; they stay
             if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
                     not any(s.low[x] in (";", ".", ":") for x in between):
@@ -155,7 +173,25 @@ class Groups:
                 clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
                 clauses[k] = Clause()
         for k, m in enumerate(mentions):
-            if k > 0 and self.mentions.led_by(m.first) and mentions[k - 1].last == m.first - 2:
+            if k > 0 and self.mentions.objects.followed(m.first) and not m.partitive and mentions[k - 1].last < m.first and \
+                    clauses[k - 1].intent == "follow":
+                # "the pupils follow their teacher to the hall": the route is the teacher's and theirs
+                places = clauses[k - 1].places + clauses[k].places
+                routed = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS | {"from", "obj:dest", "out"}
+                             for p in places)
+                clauses[k - 1] = replace(clauses[k - 1], places=places)
+                clauses[k] = replace(clauses[k], places=places, has_action=True,
+                                     intent=clauses[k].intent or ("walk" if routed else "wander"))
+        for k, m in enumerate(mentions):
+            if k > 0 and self.mentions.objects.sent_by(m.first) and mentions[k - 1].last == m.first - 2:
+                # the sender stays where the people it sends were ("a guard sends the visitors out of the
+                # café": the guard is in the café), or where they all are ("asks a nurse ... at reception")
+                out, sent_to = self._sent_where(m, clauses[k])
+                kept = [replace(p, prep="at") for p in clauses[k].places if p.match is not None and (
+                    not (out or sent_to) or p.prep in ("from", "out", "obj:start", "at", "in", "on"))]
+                clauses[k - 1] = replace(clauses[k - 1], places=clauses[k - 1].places + kept)
+        for k, m in enumerate(mentions):
+            if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last == m.first - 2:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are
                 places = clauses[k - 1].places + clauses[k].places
@@ -164,6 +200,15 @@ class Groups:
                 around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
                 clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
                     "walk" if routed else "wander" if around else "wait"))
+
+    def _sent_where(self, m: Mention, c: Clause) -> tuple[bool, bool]:
+        """(sent out, sent somewhere) for people someone sends: "out of the café", "to the lobby"."""
+        s = self.s
+        out = any(s.low[i] in ("out", "away", "home") for i in range(m.last + 1, min(m.last + 3, s.n))) or \
+            any(p.prep in ("out", "from", "obj:start") for p in c.places)
+        sent_to = any(p.match is not None and (p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS
+                                               or p.prep == "obj:dest") for p in c.places)
+        return out, sent_to
 
     def _with_robot(self, m: Mention, robot_clauses: Sequence[RobotClause], excluded: set[int]) -> Clause:
         """The clause of people the robot escorts or follows: the robot's route after them is theirs
@@ -222,10 +267,15 @@ class Groups:
             # "..., two of them students": part of the group, doing as it does; "..., 4 more at lane 1":
             # more of it somewhere else, with no verb of their own, doing the same there
             intent = earlier[int(parent)].intent
-        if self.mentions.led_by(m.first) and earlier and c.robot is None and \
+        if self.mentions.objects.led_by(m.first) and earlier and c.robot is None and \
                 earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads
             c = replace(c, follows=earlier[-1].who)
+        if self.mentions.objects.sent_by(m.first) and c.intent is None:
+            # "a guard sends the visitors out of the café": they leave; "to the lobby": they go there
+            out, sent_to = self._sent_where(m, c)
+            intent = "evacuate" if out else "walk" if sent_to else intent
+            c = replace(c, evacuate=c.evacuate or out)
         robot = c.robot if c.robot is not None else (scene.robot if scene is not None else None)
         robot = robot or c.unaimed  # "... and their grandparents shrink back": from the robot named before
         if m.collective in lx.QUEUE_COLLECTIVES and c.intent in (None, "wait") and intent in ("wait", "walk"):
@@ -241,7 +291,10 @@ class Groups:
                              verb_index=c.verb_index, stationary=stationary, intent=intent,
                              then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS],
                              verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
-                                       and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS])
+                                       and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS],
+                             moves_at=[i for i in range(*span) if not s.after_determiner(i)
+                                       and lx.INTENT_VERBS.get(verb_lemma(s.low[i])) in ("walk", "evacuate")
+                                       and (s.w[i].pos == "VERB" or not s.index.knows(s.lemma(i)))])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         self._there(span, roles, stationary)

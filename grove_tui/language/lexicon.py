@@ -156,6 +156,14 @@ for _kind, _people in {
     for _person in _people.split():
         OWNER_KINDS.setdefault(_person, _kind)
 
+# Titles before a name ("Dr Jones", "Mr Li", "Mrs Patel"): one person, known by the title's kind.
+TITLES: dict[str, str] = {"mr": "man", "mrs": "woman", "ms": "woman", "miss": "woman", "mx": "person",
+                          "dr": "doctor", "doctor": "doctor", "prof": "professor", "professor": "professor",
+                          "sir": "man", "dame": "woman", "nurse": "nurse", "sister": "nurse", "father": "priest",
+                          "officer": "officer", "captain": "captain", "auntie": "aunt", "uncle": "uncle"}
+# Verbs by which people go behind someone ("the pupils follow their teacher to the hall"): the one
+# followed is a person of the scene too.
+FOLLOWING_VERBS = frozenset("follow trail shadow tail chase pursue".split())
 # People named by two words, the second of which means something else alone ("au pair" is one
 # person, not a pair; "station master" is no master of anything here).
 MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (
@@ -168,17 +176,32 @@ NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull 
     pig duck goose chicken hen rabbit hamster mouse rat fish goldfish parrot squirrel fox deer bee wasp fly ant insect
     animal pet clock lamp light bulb candle train bus car taxi van lorry truck plane aircraft jet trolley cart suitcase
     bag case luggage box parcel machine computer laptop phone monitor heater radiator speaker alarm siren bell
-    engine motor drone balloon leaf flower plant tree""".split())
+    engine motor drone balloon leaf flower plant tree elevator escalator printer scanner projector shutter conveyor
+    generator sprinkler dishwasher boiler fridge freezer kettle timer tram ferry tractor forklift mower shuttle
+    scooter trailer container dispenser""".split())
 # Endings of nouns for someone who does something ("busker", "florist", "violinist", "sommelier"):
 # the subject of a verb, such a noun is a person unless the world or a list says otherwise.
 AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")
+# Endings only people's nouns have ("radiotherapist", "librarian", "locksmith", "beekeeper",
+# "fishmonger"): the subject of any verb of going or staying is a person ("the locksmith waits at
+# reception"); the weaker endings above (and "-ant", "-ent") need a pronoun that refers to the noun
+# ("the radiographer leaves her department"), since lifts, printers and trains go and wait too.
+STRONG_AGENT_SUFFIXES = ("ist", "ian", "eur", "smith", "keeper", "monger", "wright", "man", "woman", "person")
+WEAK_AGENT_SUFFIXES = AGENT_SUFFIXES + ("ant", "ent")
+# Verbs of going and staying that machines seldom have for subject with a place after them ("an
+# interpreter waits at the desk", not "the dryer runs in the basement").
+PEOPLE_GOING_VERBS = frozenset("wait leave enter arrive head walk queue linger visit exit proceed hurry wander "
+                               "stroll loiter".split())
+# Pronouns that refer to a person: "her", "his" said of a noun make it someone.
+PERSONAL_PRONOUNS = frozenset("he she him her his hers himself herself".split())
+PLURAL_PERSONAL_PRONOUNS = frozenset("they them their theirs themselves".split())
 # Verbs only people do: the noun that is their subject is a person even when no list names it
 # ("a sommelier chats with ...", "two botanists stroll to ..."). Not "wait", "go", "run" or "move":
 # trains, queues and lifts do those too.
 HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate socialise socialize greet "
                                 "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
                                 "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
-                                "tiptoe limp hobble shuffle".split())
+                                "tiptoe limp hobble shuffle nap doze snooze".split())
 # Verbs of things, not people: a counted noun no list names that does only these is no group
 # ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
 THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "
@@ -242,7 +265,10 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel roll carry help assist "
-                          "support transport walk drag pull haul hurry rush".split())
+                          "support transport walk drag pull haul hurry rush move evacuate transfer ferry relocate".split())
+# Verbs by which someone sends people elsewhere without going along ("a guard sends the visitors out of
+# the café", "the manager tells the interns to go to the boardroom"): the people go, the sender stays.
+SENT_VERBS = frozenset("send tell order ask direct call wave shoo summon instruct urge".split())
 # "groups of three", "pairs of tourists" with no number of groups: how many groups. Not "the twins",
 # which is one pair.
 PLURAL_PARTIES_RANGE = (2, 5)
@@ -282,7 +308,10 @@ ROBOT_WORDS = frozenset({"robot", "robots", "bot", "amr", "droid"})
 # wait; "a robot crosses the hall to the lifts": cross). A verb of motion none of these lists names is a
 # crossing when the clause gives the robot somewhere to go.
 ROBOT_WAIT_VERBS = frozenset("wait stand stay park idle remain sit rest stop pause hover linger charge sleep halt "
-                             "dock be".split())
+                             "dock be recharge plug station position".split())
+# Said of the robot in the passive, where it is put to stay ("the robot is parked by the lifts", "is
+# left in the hallway"): a wait there.
+ROBOT_PLACED_VERBS = frozenset("park dock station position place leave plug charge store keep stop".split())
 ROBOT_PATROL_VERBS = frozenset("patrol roam wander circle sweep clean mop vacuum guard scan explore monitor tour "
                                "survey inspect cruise prowl loop".split())
 # Words between the robot's verb and people it meets on its way ("drives past two nurses").
@@ -387,6 +416,14 @@ EVACUATION_PHRASES: tuple[tuple[str, ...], ...] = (("clear", "out"), ("empty", "
                                                    ("pile", "out"), ("bail", "out"))
 URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"),
                                                     ("run", "out"), ("hurry", "out"), ("pour", "out"))
+# Verbs by which others make people leave, in the passive ("everyone in there is sent out", "the guests
+# are asked to leave", "the pupils are ushered out"): the people evacuate.
+SENDING_VERBS = frozenset("send order tell ask usher move clear evacuate hurry shepherd direct instruct escort "
+                          "lead guide take rush urge force call".split())
+# Verbs of telling people what to do: after them in the passive, "to <verb>" is what they do, no
+# purpose ("ten visitors are asked to wait in the café").
+TELLING_VERBS = frozenset("ask tell order instruct request direct urge advise invite allow force make call "
+                          "encourage expect".split())
 URGENCY_WORDS = frozenset("now immediately urgently quickly asap must fast instantly".split())
 # Words that make plain leaving ("leave", "exit") an evacuation: not "must" or "quickly", which a
 # normal departure can have ("the visitors must leave by six").

@@ -29,3 +29,5 @@ class Mention:
     zone_place: Place | None = None  # the zone named inside the mention ("half the open office")
     apposition: tuple[int, int] | None = None  # "everyone in the café, some thirty of them,": the count's words
     robot_object: str | None = None  # "led": the robot escorts them; "followed": the robot follows them
+    whole: Mention | None = None  # "two of the six developers": the group named inside, added before this part
+    partitive: bool = False  # the group named inside a part ("the six developers"): stays where it is said to be

@@ -18,12 +18,18 @@ from grove_tui.language.collectives import Collectives
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
+from grove_tui.language.objects import PeopleObjects
+from grove_tui.language.partitives import Partitives
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
+# A phrase of time before a clause's subject ("every few minutes a passenger ...", "now and then").
+_WHEN_WORDS = frozenset("every often occasionally sometimes now then suddenly later soon eventually finally "
+                        "meanwhile once regularly periodically".split())
+_TIME_WORDS = _WHEN_WORDS | frozenset("few so and in a while from time to couple of".split())
 
 
 class Mentions:
@@ -34,6 +40,8 @@ class Mentions:
         self.people = people
         self.places = places
         self.collectives = Collectives(s, people)
+        self.partitives = Partitives(s, people)
+        self.objects = PeopleObjects(s, people)
         self.problems: list[str] = []  # counts no scenario can have ("-5 people", "zero nurses")
 
     def find(self) -> list[Mention]:
@@ -61,6 +69,12 @@ class Mentions:
             if m is None:
                 i += 1
                 continue
+            if found and self._members_of_collective(found[-1], m):
+                # "the robot leads a tour ..., with about twelve tourists trailing behind it": the tour's people
+                before = found[-1]
+                before.count, before.label, before.apposition = m.count, m.label, (m.first, m.last)
+                i = m.last + 1
+                continue
             if found and self._apposition(found[-1], m, len(found) - 1):
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
@@ -76,12 +90,26 @@ class Mentions:
             if found and found[-1].whole_zone and found[-1].relation is None and m.relation is None and \
                     self.after_except(m.first):
                 m.exception_of = len(found) - 1  # "everyone in the hall leaves except two guards"
-            m.robot_object = self.robot_object(m.first)
+            m.robot_object = self.objects.robot_object(m.first)
             if m.zone_place is None and not m.whole_zone:
                 m.zone_place = self.possessor_place(m.first)
+            if m.whole is not None:
+                # "two of the six developers": the six first, the two a subset of them
+                found.append(m.whole)
+                m.relation = f"subset_of:{len(found) - 1}"
             found.append(m)
             i = m.last + 1
         return found
+
+    def _members_of_collective(self, before: Mention, m: Mention) -> bool:
+        """Whether m, after "with" in the same sentence, counts the people of a collective said with
+        no number and no kind of people ("leads a tour ..., with about twelve tourists trailing behind
+        it", "guides a group ... with ten visitors in tow")."""
+        s = self.s
+        return (m.first > 0 and s.low[m.first - 1] == "with" and before.collective is not None
+                and before.label == before.collective and before.count is not None
+                and before.count.kind == "implied" and m.count is not None and m.relation is None
+                and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
         """Whether m only says how many the mention before is, set off by commas, with no verb
@@ -128,7 +156,8 @@ class Mentions:
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
-        if self.led_by(at) or self.robot_object(at) is not None:
+        if self.objects.led_by(at) or self.objects.robot_object(at) is not None or self.objects.followed(at) or \
+                self.objects.sent_by(at):
             return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
         if prev == "instead" and s.low[at] != "of":
             return True  # "nobody waits there; instead eight patients queue ..."
@@ -153,7 +182,24 @@ class Mentions:
             return True  # "the boardroom meeting of twelve people breaks up"
         if prev in ("'s", "’s") and self.possessor_place(at) is not None:
             return True  # "ward A's patients", "the café's 8 customers": the people of a place
+        if self._after_time_phrase(at):
+            return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
+
+    def _after_time_phrase(self, at: int) -> bool:
+        """Whether only a phrase of time stands between the start of a clause and `at` ("and every
+        few minutes", "and now and then", "then suddenly"), so a subject may start there."""
+        s = self.s
+        j = at - 1
+        timed = False
+        while j >= 0 and not s.is_punct(j) and (s.low[j] in _TIME_WORDS or s.lemma(j) in lx.DURATION_UNITS
+                                                or s.w[j].pos in ("ADV", "NUM")):
+            timed = timed or s.low[j] in _WHEN_WORDS or s.lemma(j) in lx.DURATION_UNITS
+            if s.low[j] in lx.CLAUSE_STARTERS and s.low[j] not in _WHEN_WORDS:
+                break
+            j -= 1
+        return timed and j < at - 1 and (j < 0 or s.is_punct(j) or s.low[j] in lx.CLAUSE_STARTERS) and \
+            s.low[at] in lx.DETERMINERS | {"someone", "somebody"}
 
     def possessor_place(self, at: int) -> Place | None:
         """The zone whose people the mention at `at` is ("ward A's patients": ward_a), or None."""
@@ -218,61 +264,6 @@ class Mentions:
         if k > 0 and s.low[k - 1] in ("the", "a", "an", "this", "that"):
             k -= 1
         return self.subject_position(k) if s.low[k - 1:k] != ["of"] else False
-
-    def led_by(self, at: int) -> bool:
-        """Whether the phrase at `at` names people a person right before takes along: the object of a
-        verb of leading, escorting, pushing or helping ("a tour guide leads twelve tourists", "an
-        orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
-        s = self.s
-        p = at - 1
-        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not self.people.is_person_noun(p - 1):
-            return False
-        q = quantifier(s, at)
-        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        start = s.skip(start, {"of", "the"})
-        return self.people.person_head(start, counted=q is not None) is not None
-
-    def robot_object(self, at: int) -> str | None:
-        """Whether the phrase at `at` names people inside the robot's own clause, after its verb:
-        people it takes along ("the robot escorts a lost child to ...": "led"), follows ("the robot
-        follows grandpa from ...": "followed") or meets on its way ("the robot passes two nurses
-        chatting in the corridor", "delivers coffee to the manager": "met"). They are people of the
-        scene all the same."""
-        s = self.s
-        noun = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        if noun >= s.n or (self.people.person_head(self._phrase_head(at), counted=quantifier(s, at) is not None)
-                           is None and not self.people.is_person_noun(noun)):
-            return None
-        p = at - 1
-        direct = True
-        while p > 0 and p >= at - 6 and not s.is_punct(p) and s.low[p] not in lx.CLAUSE_STARTERS and \
-                (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or (
-                    s.w[p].pos in ("NOUN", "NUM") and not self.people.is_person_noun(p)
-                    and not s.index.knows(s.lemma(p)))):
-            direct = False
-            p -= 1  # "hands out leaflets to passengers", "drives past a group of visitors"
-        if p < 1 or not (s.w[p].pos in ("VERB", "AUX") or s.w[p].tag.startswith("VB") or
-                         verb_lemma(s.low[p]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS):
-            return None
-        if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
-            return None  # "the robot is followed by two children": a passive, the people's own clause
-        k = p - 1
-        while k > 0 and s.w[k].pos == "ADV":
-            k -= 1  # "the robot slowly escorts"
-        robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \
-            or (s.low[k] == "to" and k > 0 and s.low[k - 1] in lx.ROBOT_WORDS)  # "ask the robot to escort ..."
-        if not robot:
-            return None
-        verb = verb_lemma(s.low[p])
-        if direct and verb in lx.ROBOT_FOLLOW_VERBS and verb not in lx.LEADING_VERBS:
-            return "followed"
-        return "led" if direct and verb in lx.LEADING_VERBS else "met"
-
-    def _phrase_head(self, at: int) -> int:
-        s = self.s
-        q = quantifier(s, at)
-        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        return s.skip(start, {"of", "the"})
 
     def _conversation_partner(self, p: int, at: int) -> bool:
         """Whether the phrase at `at`, after "with" at p, is who a person talks or walks with, not a
@@ -343,10 +334,12 @@ class Mentions:
                 inner.who = s.span(at, inner.last)
             return inner
         num = quantifier(s, at)
-        for reader in (self._part_of, self._rest_of):
-            m = reader(at, num, found)
-            if m is not None:
-                return m
+        part = self.partitives.part_of(at, num, found, self.parent(found))
+        if part is not None:
+            return part
+        rest = self._rest_of(at, num, found)
+        if rest is not None:
+            return rest
         if low[at] == "the" and at + 1 < s.n and low[at + 1] == "only":
             return None  # "the only people in the ward are two men": the men are the group
         whole = self._whole_zone(at, num)
@@ -363,28 +356,6 @@ class Mentions:
         if num is not None:
             return self._counted_or_more(at, num, found, exclusive)
         return self._bare(at, found, exclusive)
-
-    def _part_of(self, at: int, num: Quantifier | None, found: list[Mention]) -> Mention | None:
-        """"one of them", "two of the patients", "some of them": part of the group before."""
-        s = self.s
-        low = s.low
-        if num is None:
-            return None
-        # "a few of" is read with its "of" by the quantifier; "two of" leaves it
-        of_at = num.end if num.end < s.n and low[num.end] == "of" else (
-            num.end - 1 if low[num.end - 1] == "of" else None)
-        if of_at is None or of_at + 1 >= s.n:
-            return None
-        k = of_at + 1
-        if not (low[k] in ("them", "those", "these", "us", "whom") or (
-                low[k] == "the" and k + 1 < s.n and self.people.is_person_noun(k + 1))):
-            return None
-        last = k if low[k] != "the" else k + 1
-        parent = self.parent(found)
-        label = found[parent].label if parent is not None else s.lemma(last)
-        count = count_of(s, num, f"{at}", lx.OTHERS_RANGE)
-        return Mention(at, last, s.span(at, last), label, count,
-                       relation=f"subset_of:{parent}" if parent is not None else None)
 
     def _rest_of(self, at: int, num: Quantifier | None, found: list[Mention]) -> Mention | None:
         """"the others", "the rest", "everyone else": other people than the group before."""
@@ -507,6 +478,9 @@ class Mentions:
         head = self.people.person_head(k, counted=False)
         if head is None:
             return None  # "ten in the pharmacy": a bare number borrowing the last group's noun is a count
+        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
+            return Mention(at, head, s.span(at, head), self.people.label(head),
+                           Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
         singular = s.lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
         label = self.people.label(head)
         if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
@@ -520,7 +494,8 @@ class Mentions:
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
-                    or self.robot_object(at) is not None or self.led_by(at)) \
+                    or self.objects.robot_object(at) is not None or self.objects.led_by(at) or self.objects.followed(at)
+                    or self.objects.sent_by(at)) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),

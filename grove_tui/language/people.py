@@ -22,14 +22,30 @@ class People:
     def __init__(self, s: Sentence) -> None:
         self.s = s
 
+    def titled_name(self, k: int) -> int | None:
+        """The last word of a name after a title ("Dr Jones", "Mr Li Wei", "Mrs Patel"), else None."""
+        s = self.s
+        if s.low[k].rstrip(".") not in lx.TITLES:
+            return None
+        j = k + 1 if k + 1 < s.n and s.low[k + 1] != "." else k + 2  # "Dr. Jones"
+        end = None
+        while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.isalpha() and \
+                s.w[j].pos == "PROPN" and not s.index.knows(s.lemma(j)) and s.low[j] not in lx.ROBOT_WORDS and \
+                s.low[j] not in lx.STOPWORDS | lx.PLACE_PREPOSITIONS | lx.CLAUSE_STARTERS and \
+                verb_lemma(s.low[j]) not in lx.INTENT_VERBS:  # not "A Doctor Walks To Ward B"
+            end, j = j, j + 1
+        return end
+
     def is_person_noun(self, i: int) -> bool:
         s = self.s
+        if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
+            return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
             return True
-        if self._subject_of_a_human_verb(i) or self._agent_subject(i):
+        if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
@@ -74,6 +90,74 @@ class People:
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
                 and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
 
+    def _agent_going(self, i: int) -> bool:
+        """A noun for someone no list names, the subject of a verb of going or staying that things
+        do as well ("the locksmith waits at reception", "after her shift the radiographer leaves
+        her department"): an ending only people's nouns have, or an agent's ending and a pronoun
+        for a person that refers to it ("her", "his"; "their" for a plural)."""
+        s = self.s
+        word = s.w[i]
+        if word.pos not in ("NOUN", "PROPN"):
+            return False
+        # The parser may take the verb for a plural noun the word modifies ("an interpreter waits at"):
+        # a determiner, the word, then a verb's "-s" form the lexicon knows.
+        nxt = i + 1
+        mistagged = (word.dep == "compound" and 0 < i and nxt < s.n and s.w[i - 1].pos == "DET"
+                     and s.low[nxt].endswith("s") and verb_lemma(s.low[nxt]) != s.low[nxt]
+                     and verb_lemma(s.low[nxt]) in lx.INTENT_VERBS)
+        if mistagged:
+            head = nxt
+        elif word.dep != "nsubj" or word.head == i or s.w[word.head].pos not in ("VERB", "AUX"):
+            return False
+        else:
+            head = word.head
+        lem = s.lemma(i)
+        verb = verb_lemma(s.low[head]) if mistagged else s.verb(head)
+        if not lem.isalpha() or len(lem) < 5 or verb in lx.THING_VERBS or verb == "start" or self._a_thing(lem):
+            return False
+        if verb == "be" and not (head + 1 < s.n and s.preposition(head + 1) is not None):
+            return False  # "the glazier is in the lobby", not "the bookseller is closed"
+        singular = word.tag in ("NN", "NNP")
+        if lem.endswith(lx.STRONG_AGENT_SUFFIXES) and (singular or verb != "go"):
+            return True
+        pronouns = lx.PERSONAL_PRONOUNS if singular else lx.PLURAL_PERSONAL_PRONOUNS
+        owned = any(w.head == i and w.dep == "poss" for w in s.w)  # "the guard's torch": someone's thing
+        if (singular and not owned or lem.endswith(lx.WEAK_AGENT_SUFFIXES)) and any(
+                s.low[k] in pronouns and self._in_clause_of(k, head) for k in range(s.n)
+                if s.w[k].sentence == word.sentence):
+            return True  # "the chaplain leaves his office": "his" is someone's
+        if not (singular and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and s.after_determiner(i)):
+            return False
+        # One of a kind who waits, arrives or leaves somewhere ("an interpreter waits at the
+        # information desk while ..."), or the one subject of a sentence that names nobody else ("the
+        # sommelier goes to the cellar"): a person, rather than a crowd nobody named.
+        placed = verb in lx.PEOPLE_GOING_VERBS and head + 1 < s.n and (
+            s.preposition(head + 1) is not None or s.low[head + 1] in lx.DETERMINERS)
+        return placed or not any(s.lemma(k) in lx.PERSON_NOUNS or s.low[k] in lx.PERSON_NOUNS
+                                 for k in range(s.n) if k != i)
+
+    def _a_thing(self, lem: str) -> bool:
+        """A word of a place, the robot, an animal or thing, a building, a time or a hazard."""
+        return (self.s.index.knows(lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
+                or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
+                or lem in lx.IMPLIED_RANGES)
+
+    def _in_clause_of(self, k: int, verb: int) -> bool:
+        """Whether the word at k hangs, through the parse, under the verb at `verb` with no other
+        subject on the way ("after her shift the radiographer leaves", not "she watches as ...")."""
+        s = self.s
+        seen = 0
+        while seen < s.n:
+            if k == verb:
+                return True
+            head = s.w[k].head
+            if head == k:
+                return False
+            if head != verb and any(w.head == head and w.dep in ("nsubj", "nsubjpass") for w in s.w):
+                return False  # "the torch flickers as he walks": "he" is the subject of a clause of its own
+            k, seen = head, seen + 1
+        return False
+
     def _subject_of_a_human_verb(self, i: int) -> bool:
         """A noun no list names, the parser's subject of a verb only people do ("a sommelier
         chats", "two botanists stroll"): a person, unless it names a place, the robot, a group
@@ -107,6 +191,9 @@ class People:
         while k < s.n and k < j + 4:
             if s.low[k] in lx.ROBOT_WORDS:
                 return None  # "the robot glides": whatever follows, the robot is nobody's kind
+            named = self.titled_name(k)
+            if named is not None:
+                return named  # "Dr Jones": one person
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
@@ -267,6 +354,10 @@ class People:
         s = self.s
         if head is None:
             return "person"
+        title = next((lx.TITLES[s.low[k].rstrip(".")] for k in range(max(0, head - 3), head)
+                      if self.titled_name(k) == head), None)
+        if title is not None:
+            return title  # "Dr Jones": a doctor
         noun = s.lemma(head)
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
             noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays

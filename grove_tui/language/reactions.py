@@ -47,11 +47,13 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
 _UNAIMED_TAILS = frozenset({"back", "away", "aside", "off"})
 _UNAIMED_VERBS = frozenset({"recoil", "flinch", "cower", "retreat"})
 _UNAIMED_PHRASES = (("step", "back"), ("move", "back"), ("stand", "back"), ("hang", "back"))
+_APPROACH_TAILS = frozenset({"over", "up", "across"})
 
 
 def unaimed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
-    """A shrinking back with no object, in a sentence that has named the robot before it: a reaction
-    to the robot ("When the robot rolls in, the kids run to it and their grandparents shrink back")."""
+    """A shrinking back (or a coming over) with no object, in a sentence that has named the robot
+    before it: a reaction to the robot ("When the robot rolls in, the kids run to it and their
+    grandparents shrink back", "..., and now and then a lost visitor wanders over")."""
     if not own or not any(s.low[k] in lx.ROBOT_WORDS for k in range(own[0])):
         return None
     ownset = set(own)
@@ -66,6 +68,14 @@ def unaimed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
             end = i + 1
         if end is not None and (end >= s.n or s.is_punct(end) or s.low[end] in lx.CLAUSE_STARTERS):
             return "avoid"
+    for i in own:
+        # "a lost visitor wanders over (to ask something)": coming over to the robot named before
+        end = i + 2
+        if lx.INTENT_VERBS.get(s.verb(i)) in ("walk", "wander") and not s.after_determiner(i) and end <= s.n and \
+                s.low[i + 1] in _APPROACH_TAILS and i + 1 in ownset and (
+                    end >= s.n or s.is_punct(end) or s.low[end] in lx.CLAUSE_STARTERS or (
+                        s.low[end] == "to" and s.verb_follows(end + 1))):
+            return "approach"
     return None
 
 

@@ -24,6 +24,8 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
 _TASK_VERBS = lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS
+# The robot switched off where it is ("the robot powers down in the kitchen"): waiting there.
+_OFF_PHRASES = frozenset({("power", "down"), ("shut", "down"), ("switch", "off"), ("turn", "off"), ("power", "off")})
 _PEOPLE_PRONOUNS = ("they", "he", "she", "we", "people", "everyone", "everybody", "someone", "somebody",
                     "nobody", "visitors", "staff")
 
@@ -129,6 +131,9 @@ class RobotClauses:
         k = j + 1
         while k < s.n and s.w[k].pos == "ADV":
             k += 1
+        if k < s.n and s.w[k].tag == "VBN" and verb_lemma(s.low[k]) in lx.ROBOT_PLACED_VERBS and \
+                not (k + 1 < s.n and s.low[k + 1] == "by" and s.w[k + 1].dep == "agent"):
+            return first, k, False  # "the robot is parked by the lifts": it stays there
         if k < s.n and s.w[k].tag == "VBN":
             return None  # "the robot is followed by two children": the people's clause
         if k < s.n and s.w[k].tag == "VBG":
@@ -200,7 +205,9 @@ class RobotClauses:
         for rc in found:
             clause = self.clauses.read(rc.tokens, set())
             verb = s.verb(rc.verb) if rc.verb is not None else ""
-            kind = self._task(verb, clause, rc.command)
+            placed = rc.verb is not None and (s.w[rc.verb].tag == "VBN" and verb in lx.ROBOT_PLACED_VERBS or (
+                verb, s.low[rc.verb + 1] if rc.verb + 1 < s.n else "") in _OFF_PHRASES)
+            kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
             if kind is None:
                 if not any(p.match is not None for p in clause.places):
                     continue
@@ -215,6 +222,8 @@ class RobotClauses:
                 name = place.match.name
                 read_from.setdefault(name, place)
                 role = self._role(place, rc.verb, kind in ("wait", "patrol"))
+                if role == "via" and kind == "cross" and (self._stops_at(rc, place) or self._after_a_thing_gone_to(place, clause)):
+                    role = "destination"  # "leaves the kitchen and is parked in the hallway", "goes to its dock in the hallway"
                 if role == "via":
                     via += [] if name in via else [name]
                 elif role == "destination" or roles[role] is None:
@@ -233,6 +242,25 @@ class RobotClauses:
             confidence.insert(0, task_confidence)
         return RobotReading(task, start, destination, location, tuple(via), " ... ".join(texts), tuple(confidence),
                             follows)
+
+    def _after_a_thing_gone_to(self, place: Place, clause: Clause) -> bool:
+        """Whether the place says where a thing the robot goes to is ("goes to its dock in the
+        hallway"), not where it goes by after a place ("to the kitchen through the hallway")."""
+        s = self.s
+        k = place.index - 1
+        while k > 0 and (s.w[k].pos in ("NOUN", "ADJ", "DET", "PRON") or s.w[k].tag == "VBG") and not s.is_punct(k):
+            k -= 1
+        return k < place.index - 1 and s.low[k] in lx.DESTINATION_PREPOSITIONS and \
+            not any(p.index == k and p.match is not None for p in clause.places)
+
+    def _stops_at(self, rc: RobotClause, place: Place) -> bool:
+        """Whether the verb that governs a place of the robot's route is one of staying ("... and
+        charges in the hallway", "... and is parked by the lifts")."""
+        s = self.s
+        verbs = [i for i in rc.tokens if i < place.index and i != rc.verb and not s.after_determiner(i) and (
+            s.is_verb(i) or s.w[i].tag == "VBN" or (s.low[i - 1] in ("and", "then") and verb_lemma(s.low[i]) != s.low[i]))]
+        return bool(verbs) and (s.verb(verbs[-1]) in lx.ROBOT_WAIT_VERBS - {"be"} or (
+            s.w[verbs[-1]].tag == "VBN" and s.verb(verbs[-1]) in lx.ROBOT_PLACED_VERBS))
 
     def _followed(self, verb: int) -> str | None:
         s = self.s

@@ -28,11 +28,13 @@ class Roles:
 
 def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
                  verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = (),
-                 verbs_at: Sequence[tuple[int, str]] = ()) -> Roles:
+                 verbs_at: Sequence[tuple[int, str]] = (), moves_at: Sequence[int] = ()) -> Roles:
     """The group's places by role: a narrower place (a fixture of the zone already read) replaces
     the zone; a destination said with "to" is not replaced by a later "at"; a place they stay at
     after "then" is where they stay, the one before it where they start ("buys a paper at the
-    newsagent, then waits in the waiting room")."""
+    newsagent, then waits in the waiting room"); a room or thing a verb acts on before they set off
+    (`moves_at`: where the clause's verbs of walking are) is where they start ("locks her office and
+    leaves by the back door")."""
     roles = Roles()
     said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
     said = [p for p in places if p.match is not None and p.prep != "obj:seen"]
@@ -45,6 +47,8 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         # main door": leaving, though the clause's verb is dropping off)
         own_verb = next((v for i, v in reversed(verbs_at) if i < p.index), verb) if p.match.kind == "door" else verb
         role = role_of(index, p, own_verb, verb_index, stationary, intent, p in scene_places)
+        if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):
+            role = "start"  # "locks her office and leaves", "tidies her desk, then walks to ...": where they set off
         marked = p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "obj:dest"
         leaving = role == "destination" and own_verb in lx.DEPARTURE_VERBS and p.match.kind == "door"
         if (p.sequel or leaving) and role == "destination" and roles.destination is not None and name not in roles.via \

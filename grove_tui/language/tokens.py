@@ -15,7 +15,8 @@ import re
 from functools import lru_cache
 
 from grove_tui.language.lexicon import (EVACUATION_PHRASES, HUMAN_SUBJECT_VERBS, INTENT_VERBS, LEADING_VERBS,
-                                        PERSON_NOUNS, ROBOT_PHRASES, ROBOT_VERBS, STOPWORDS, UNITS,
+                                        PERSON_NOUNS, ROBOT_CROSS_VERBS, ROBOT_FOLLOW_VERBS, ROBOT_PATROL_VERBS,
+                                        ROBOT_PHRASES, ROBOT_VERBS, ROBOT_WAIT_VERBS, STOPWORDS, UNITS,
                                         URGENT_EXIT_PHRASES, ZONE_EMPTYING_VERBS)
 
 _IRREGULAR_NOUNS = {
@@ -37,7 +38,7 @@ _KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
     "look keep stay step back shy steer move get stand line form hang catch have sit mill take lead see "
     "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help tag "
     "clean guard patrol deliver carry push wheel bring drive fill sign book".split()) | ZONE_EMPTYING_VERBS | \
-    LEADING_VERBS | HUMAN_SUBJECT_VERBS | frozenset(
+    ROBOT_WAIT_VERBS | ROBOT_PATROL_VERBS | ROBOT_FOLLOW_VERBS | ROBOT_CROSS_VERBS | LEADING_VERBS | HUMAN_SUBJECT_VERBS | frozenset(
     # the verbs that open the lexicon's multi-word phrases ("shrink back", "empty out", "get out")
     phrase[0] for phrase in (*ROBOT_PHRASES, *EVACUATION_PHRASES, *URGENT_EXIT_PHRASES) if phrase[0].isalpha()
     and phrase[0] not in ("in", "at", "the", "a"))

@@ -1,0 +1,101 @@
+"""Pass 2, part 5: people named as the object of someone else's verb, who are people of the scene
+all the same: those a person takes along ("a guide leads twelve tourists", "an orderly wheels a
+patient"), sends somewhere ("a guard sends the visitors out of the café"), or follows ("the pupils
+follow their teacher"), and those inside the robot's own clause ("the robot escorts a lost child")."""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.counts import quantifier
+from grove_tui.language.people import People
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+
+class PeopleObjects:
+    def __init__(self, s: Sentence, people: People) -> None:
+        self.s = s
+        self.people = people
+
+    def led_by(self, at: int) -> bool:
+        """Whether the phrase at `at` names people a person right before takes along: the object of a
+        verb of leading, escorting, pushing or helping ("a tour guide leads twelve tourists", "an
+        orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
+        s = self.s
+        p = at - 1
+        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not self.people.is_person_noun(p - 1):
+            return False
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        start = s.skip(start, {"of", "the"})
+        return self.people.person_head(start, counted=q is not None) is not None
+
+    def sent_by(self, at: int) -> bool:
+        """Whether the phrase at `at` names people a person right before sends somewhere ("a guard
+        sends the visitors out of the café", "the manager tells two interns to go to the boardroom")."""
+        s = self.s
+        p = at - 1
+        if p < 1 or s.verb(p) not in lx.SENT_VERBS or not self.people.is_person_noun(p - 1):
+            return False
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        return self.people.person_head(start, counted=q is not None) is not None
+
+    def followed(self, at: int) -> bool:
+        """Whether the phrase at `at` names a person people follow, brought in by the phrase: someone
+        of theirs, someone new or someone by name ("the pupils follow their teacher to the hall",
+        "trail behind a guide", "follow Dr Jones"); not the robot, signs, or one said as known
+        already ("follow the consultant": whom they follow, no group of its own)."""
+        s = self.s
+        p = at - 1
+        if p >= 1 and s.low[p] in ("behind", "after"):
+            p -= 1
+        if p < 1 or s.verb(p) not in lx.FOLLOWING_VERBS or s.after_determiner(p):
+            return False
+        if s.low[at] in ("the", "this", "that", "these", "those"):
+            return False  # "students follow the consultant": the one they go behind, said as known
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        return self.people.person_head(start, counted=q is not None) is not None
+
+    def robot_object(self, at: int) -> str | None:
+        """Whether the phrase at `at` names people inside the robot's own clause, after its verb:
+        people it takes along ("the robot escorts a lost child to ...": "led"), follows ("the robot
+        follows grandpa from ...": "followed") or meets on its way ("the robot passes two nurses
+        chatting in the corridor", "delivers coffee to the manager": "met"). They are people of the
+        scene all the same."""
+        s = self.s
+        noun = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        if noun >= s.n or (self.people.person_head(self._phrase_head(at), counted=quantifier(s, at) is not None)
+                           is None and not self.people.is_person_noun(noun)):
+            return None
+        p = at - 1
+        direct = True
+        while p > 0 and p >= at - 6 and not s.is_punct(p) and s.low[p] not in lx.CLAUSE_STARTERS and \
+                (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or (
+                    s.w[p].pos in ("NOUN", "NUM") and not self.people.is_person_noun(p)
+                    and not s.index.knows(s.lemma(p)))):
+            direct = False
+            p -= 1  # "hands out leaflets to passengers", "drives past a group of visitors"
+        if p < 1 or not (s.w[p].pos in ("VERB", "AUX") or s.w[p].tag.startswith("VB") or
+                         verb_lemma(s.low[p]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS):
+            return None
+        if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
+            return None  # "the robot is followed by two children": a passive, the people's own clause
+        k = p - 1
+        while k > 0 and s.w[k].pos == "ADV":
+            k -= 1  # "the robot slowly escorts"
+        robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \
+            or (s.low[k] == "to" and k > 0 and s.low[k - 1] in lx.ROBOT_WORDS)  # "ask the robot to escort ..."
+        if not robot:
+            return None
+        verb = verb_lemma(s.low[p])
+        if direct and verb in lx.ROBOT_FOLLOW_VERBS and verb not in lx.LEADING_VERBS:
+            return "followed"
+        return "led" if direct and verb in lx.LEADING_VERBS else "met"
+
+    def _phrase_head(self, at: int) -> int:
+        s = self.s
+        q = quantifier(s, at)
+        start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
+        return s.skip(start, {"of", "the"})

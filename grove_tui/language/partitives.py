@@ -1,0 +1,122 @@
+"""Pass 2, part 4: people said as part of a group ("one of them", "two of the patients", "some of
+them", "two of the six developers", "half of the 20 students", "one of the guards").
+
+Part of a group said before is a subset of it (`subset_of`). Part of a group named only inside the
+phrase ("two of the six developers at their desks follow it around") makes two mentions: the whole
+group (six developers, who stay where the phrase puts them) and the part that does the clause's
+verb, a subset of it, so the whole keeps only the rest (`model.effective_counts`)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.counts import Quantifier, count_of, quantifier
+from grove_tui.language.mention import Mention
+from grove_tui.language.model import Count
+from grove_tui.language.people import People
+from grove_tui.language.sentence import Sentence
+
+_GROUP_WORDS = ("the", "those", "these", "their", "our", "his", "her", "my")
+# "half of the students", "a third of the passengers": the share of the group
+_FRACTIONS = {("half",): 0.5, ("a", "third"): 1 / 3, ("a", "quarter"): 0.25, ("one", "third"): 1 / 3,
+              ("one", "quarter"): 0.25, ("two", "thirds"): 2 / 3, ("three", "quarters"): 0.75}
+
+
+class Partitives:
+    def __init__(self, s: Sentence, people: People) -> None:
+        self.s = s
+        self.people = people
+
+    def part_of(self, at: int, num: Quantifier | None, found: list[Mention],
+                parent_index: int | None) -> Mention | None:
+        """The part of a group the phrase at `at` names, or None; `parent_index` is the group a bare
+        "of them" refers to. A subset of a group named only inside the phrase carries that group
+        (`Mention.whole`), which the finder adds first."""
+        s = self.s
+        low = s.low
+        fraction, of_at = self._fraction(at)
+        if fraction is None and low[at] in ("each", "most") and at + 1 < s.n and low[at + 1] == "of":
+            fraction, of_at = (1.0 if low[at] == "each" else 0.75), at + 1  # "each of them": all of them
+        elif fraction is None:
+            if num is None:
+                return None
+            # "a few of" is read with its "of" by the quantifier; "two of" leaves it
+            of_at = num.end if num.end < s.n and low[num.end] == "of" else (
+                num.end - 1 if low[num.end - 1] == "of" else None)
+        if of_at is None or of_at + 1 >= s.n:
+            return None
+        k = of_at + 1
+        if low[k] in ("them", "us", "whom") or (low[k] in ("those", "these") and not self._noun_after(k + 1)):
+            label = found[parent_index].label if parent_index is not None else s.lemma(k)
+            count = self._share(found[parent_index].count if parent_index is not None else None, fraction) \
+                if fraction is not None else count_of(s, num, f"{at}", lx.OTHERS_RANGE) if num is not None else None
+            if count is not None and low[at] == "most":
+                count = replace(count, kind="implied")  # "most of them": about three in four
+            return Mention(at, k, s.span(at, k), label, count,
+                           relation=f"subset_of:{parent_index}" if parent_index is not None else None)
+        if low[k] not in _GROUP_WORDS:
+            return None
+        inner = quantifier(s, k + 1)
+        start = inner.end if inner is not None and inner.kind == "exact" else k + 1
+        head = self.people.person_head(start, counted=start > k + 1)
+        if head is None:
+            return None
+        label = self.people.label(head)
+        if low[at] in ("both", "each", "most"):
+            # "both of the porters", "each of the nurses": the group itself, no part of it
+            whole = self._whole(k, head, inner, label)
+            count = Count("exact", 2, 2, 2) if low[at] == "both" else whole.count
+            return Mention(at, head, s.span(at, head), label, count)
+        same = next((j for j in range(len(found) - 1, -1, -1) if found[j].label == label
+                     and not (found[j].relation or "").startswith("subset_of")), None)
+        if same is not None or (parent_index is not None and inner is None and label == "person"):
+            # "Ten nurses ...; two of the nurses ...": the group said before
+            parent = same if same is not None else parent_index
+            assert parent is not None
+            count = self._share(found[parent].count, fraction) if fraction is not None else \
+                count_of(s, num, f"{at}", lx.OTHERS_RANGE) if num is not None else None
+            return Mention(at, head, s.span(at, head), label, count, relation=f"subset_of:{parent}")
+        if fraction is not None and (inner is None or inner.kind != "exact"):
+            return None  # "half of the patients in the lobby": half of everyone there (a whole-zone share)
+        whole = self._whole(k, head, inner, label)
+        count = self._share(whole.count, fraction) if fraction is not None else \
+            count_of(s, num, f"{at}", lx.OTHERS_RANGE) if num is not None else None
+        if count is not None and whole.count is not None and whole.count.value <= count.value:
+            # "five of the guards": more guards than the five
+            more = count.value + 1
+            whole.count = replace(whole.count, value=more, low=max(whole.count.low, more), high=max(whole.count.high, more))
+        return Mention(at, head, s.span(at, head), label, count, whole=whole)
+
+    def _fraction(self, at: int) -> tuple[float | None, int | None]:
+        low = self.s.low
+        for words, share in _FRACTIONS.items():
+            end = at + len(words)
+            if tuple(low[at:end]) == words and end < self.s.n and low[end] == "of":
+                return share, end
+        return None, None
+
+    def _noun_after(self, k: int) -> bool:
+        """"two of those nurses": "those" is a pronoun only when no person's noun follows it."""
+        return k < self.s.n and self.s.w[k].pos in ("NOUN", "PROPN") and self.people.is_person_noun(k)
+
+    def _whole(self, k: int, head: int, inner: Quantifier | None, label: str) -> Mention:
+        """The group named inside the phrase ("the six developers", "the guards"), with its count."""
+        s = self.s
+        if inner is not None and inner.kind == "exact":
+            count = Count("exact", inner.value, inner.value, inner.value)
+        elif inner is not None:
+            count = count_of(s, inner, f"{k}:whole")
+        else:
+            low_, high_ = lx.BARE_PLURAL_RANGE
+            count = Count("vague", s.choose(low_, high_, f"{k}:whole"), low_, high_)
+        return Mention(k, head, s.span(k, head), label, count, partitive=True)
+
+    @staticmethod
+    def _share(count: Count | None, fraction: float) -> Count | None:
+        """A share of a group's count: "half of the 20 students" are 10."""
+        if count is None:
+            return None
+        value = max(1, round(count.value * fraction))
+        kind = "exact" if count.kind == "exact" else "implied"
+        return Count(kind, value, max(1, round(count.low * fraction)), max(1, round(count.high * fraction)))
