@@ -81,7 +81,7 @@ def correct_places(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple
 
 def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     low = plain(words[k].lower)
-    if not low.isalpha() or len(low) < 3:
+    if not low.isalpha() or len(low) < 2:
         return None
     base = lemma(low)
     if base in index.vocabulary or low in index.vocabulary or base in lx.PERSON_NOUNS or \
@@ -94,6 +94,11 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     joined = index.joined_pairs.get(low)
     if joined is not None:
         return None if known_word(low) else " ".join(joined)
+    short = _shortened(words, k, low, index)
+    if short is not None:
+        return short
+    if len(low) < 3:
+        return None
     as_written = {v for v in index.name_words if abs(len(v) - len(low)) <= 1 and one_edit(low, v)}
     as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1 and one_edit(base, v)}
     found = sorted(as_written | as_plural)
@@ -110,6 +115,47 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     if (len(low) < 5 or known_word(low)) and not completes:
         return None  # "ticket hal" is the ticket hall; "hal" alone is nothing
     return replacement
+
+
+_VOWELS = frozenset("aeiou")
+# Words before a shortened place word that show it starts a place phrase ("at recep", "the caf").
+_PLACE_LEADS = frozenset("the a an at to in into on from by near past towards toward this that".split())
+
+
+def shortens(short: str, word: str) -> bool:
+    """Whether `short` is a chat shortening of `word`: its first letters ("plat" of platform, "recep"
+    of reception, "caf" of cafe), or a contraction that keeps its first and last letters and drops
+    the vowels ("rm" of room, "bldg" of building) or keeps its first three ("dept" of department)."""
+    if len(word) <= len(short) or len(word) > 3 * len(short):
+        return False
+    if len(short) >= 3 and word.startswith(short):
+        return True
+    vowels = sum(ch in _VOWELS for ch in short)
+    if short[0] != word[0] or short[-1] != word[-1] or len(word) < len(short) + 2 or \
+            (vowels and not (vowels == 1 and len(short) >= 4 and word.startswith(short[:3]))):
+        return False  # a word with a vowel is a contraction only when it keeps the start ("dept"; "big" is no "booking")
+    rest = iter(word)
+    return all(ch in rest for ch in short)
+
+
+def _shortened(words: Sequence[Word], k: int, low: str, index: PlaceIndex) -> str | None:
+    """The word of the world's place names a chat shortening stands for ("plat 1": platform, "the
+    recep desk": reception, "rm 3": room), when exactly one of them fits and it completes a name with
+    the word next to it, or the shortening is not itself a word and starts a place phrase ("at recep")."""
+    found = sorted(v for v in index.name_words if shortens(low, v))
+    if not found:
+        return None
+    before, after = _content_neighbours(words, k)
+    completing = [v for v in found if (before, v) in index.name_pairs or (v, after) in index.name_pairs]
+    if len(completing) == 1:
+        return completing[0]
+    if len(low) <= 2 or low in lx.TITLES:
+        return None  # "dr" alone is a doctor, not a door
+    lead = plain(words[k - 1].lower) if k > 0 else ""
+    if len(found) == 1 and not completing and lead in _PLACE_LEADS and \
+            (not known_word(low) or len(found[0]) <= 2 * len(low)):
+        return found[0]
+    return None
 
 
 def _content_neighbours(words: Sequence[Word], k: int) -> tuple[str, str]:

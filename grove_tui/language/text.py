@@ -26,6 +26,11 @@ _JOINING_SIGN = re.compile(r"(?<!\b[A-Za-z])(?<=\w)\s*(?:&|\+)\s*(?=\w)|(?<=\b[A
                            r"|(?<=\b[A-Za-z])(?:&|\+)\s+(?=\w)")
 # "@ the counter", "@gate 3": "at" in chat, but never inside an address ("bob@example.org")
 _AT_SIGN = re.compile(r"(?<![\w.])@\s*(?=\w)")
+# "queuing 4 the printers", "goes 2 the café": chat's "for" and "to" before a determiner, after a word
+# (not "at 4 the doors open", "from 2 the queue grows": a time)
+_FOR_TO = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bby)(?<!\bfrom)(?<!\buntil)(?<!\btill)(?<!\bafter)(?<!\bbefore)"
+                     r"(?<!\bsince)(?<!\bto)(?<!\bof)(?<!\bor)(?<!\band)\s+([24])\s+(?=(?:the|his|her|their|my|our|your|its)\b)",
+                     re.IGNORECASE)
 # "~30 pax", "~ 10 people": about so many
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
 
@@ -37,6 +42,7 @@ def normalise(text: str) -> str:
                    for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
     kept = _TILDE.sub("about ", _AT_SIGN.sub("at ", kept))
+    kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     return " ".join(kept.split())
 

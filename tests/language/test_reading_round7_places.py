@@ -1,0 +1,79 @@
+"""Place classes the seventh fresh set found, each with sentences of its own over at least two worlds
+(none from the understanding sets): chat shortenings of a place word ("plat 1", "rm 2", "the recep
+desk") and of "for" and "to" ("4 the", "2 the")."""
+
+from __future__ import annotations
+
+import pytest
+
+from grove_tui.language.reading import read_prompt
+from grove_tui.language.spelling import shortens
+from grove_tui.language.text import normalise
+
+
+def read(worlds, world, prompt):
+    reading = read_prompt(prompt, worlds[world])
+    assert reading.unknown_places == (), reading.unknown_places
+    return reading
+
+
+def place_of(group):
+    return group.destination or group.location or group.start
+
+
+# ---- 1. chat shortenings of a place word, and of "for" and "to" ---------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("station", "3 kids wait on plat 2 with their gran", "platform_2"),
+    ("station", "a busker plays on the plat 1 bench", "platform_1_bench"),
+    ("hospital", "2 porters wait in exam rm 1 with a trolley", "exam_room_1"),
+    ("office", "4 devs chat in meeting rm 2", "meeting_room_2"),
+    ("office", "two interns hurry to mtg room 1", "meeting_room_1"),
+    ("airport", "5 ppl queue at check-in ctr b", "check_in_counter_b"),
+    ("hospital", "a visitor asks for directions at the pharm", "pharmacy"),
+])
+def test_a_shortened_place_word_is_the_word_it_shortens(worlds, world, prompt, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert place_of(g) == place
+
+
+@pytest.mark.parametrize("short,word,fits", [
+    ("plat", "platform", True), ("rm", "room", True), ("dept", "department", True), ("recep", "reception", True),
+    ("bldg", "building", True), ("caf", "cafe", True),
+    ("car", "cardiology", False),  # a whole word, far shorter than the name
+    ("rm", "rum", False),  # a shortening is shorter by more than a letter
+    ("room", "room", False), ("pt", "platform", False), ("big", "booking", False), ("lot", "lift", False),
+])
+def test_what_counts_as_a_shortening(short, word, fits):
+    assert shortens(short, word) is fits
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "Dr Jones walks to the pharmacy."),
+    ("museum", "A man parks his car and walks to the café."),
+])
+def test_a_title_or_a_whole_word_is_not_shortened_into_a_place(worlds, world, prompt):
+    r = read_prompt(prompt, worlds[world])
+    assert r.corrections == ()
+
+
+@pytest.mark.parametrize("text,written", [
+    ("6 ppl queuing 4 the printers", "6 people queuing for the printers"),
+    ("two kids run 2 the toilets", "two kids run to the toilets"),
+    ("a man waits 4 his wife", "a man waits for his wife"),
+    ("at 4 the doors open", "at 4 the doors open"),  # a time
+    ("from 2 the queue grows", "from 2 the queue grows"),
+    ("4 nurses and 2 porters", "4 nurses and 2 porters"),  # counts
+])
+def test_four_and_two_before_a_determiner_are_for_and_to(text, written):
+    assert normalise(text) == written
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("mall", "3 teens walk 2 the food court", "destination", "food_court"),
+    ("museum", "a guide waits 4 the group in the foyer", "location", "entrance_hall"),
+    ("station", "approx 20 ppl on plat 2 waiting 4 the 18:05", "location", "platform_2"),
+])
+def test_a_place_after_a_chat_for_or_to(worlds, world, prompt, field, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert getattr(g, field) == place
