@@ -317,6 +317,11 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                     and not self._extends_name(phrase, j) and not self.whole_name([*phrase, w]):
                 break  # "on platform 2 a man sits": the place ends where a new noun phrase starts
             if w.isdigit() or w in lx.UNITS:
+                if not phrase and w.isdigit() and j > 0 and low[j - 1] in lx.DETERMINERS and j + 1 < s.n and \
+                        s.index.knows(lemma(low[j + 1])) and not self.people.is_person_noun(j + 1):
+                    phrase.append(w)  # "the 2 platform", "the 1 exam room": the number of a name, said first
+                    j += 1
+                    continue
                 if not phrase or (any(ch.isdigit() for ch in phrase[-1]) and j + 1 < s.n
                                   and self.people.is_person_noun(j + 1)):
                     break  # "at gate A1 two agents chat", "on platform 1 three commuters": a count starts

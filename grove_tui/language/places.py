@@ -17,6 +17,7 @@ office" is read against the offices of that kind of person.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
@@ -222,7 +223,7 @@ class PlaceIndex:
             total = sum(weights)
             if total <= 0:
                 continue
-            matched = [p for p in e.phrases if _contains(content, p)]
+            matched = [p for p in e.phrases if _contains(content, p) or _reordered(content, p)]
             exact = bool(matched)
             if exact:
                 # The longest name or alias found in the phrase: "pharmacy counter" is the counter's
@@ -339,6 +340,19 @@ def owner_kinds(person: str) -> frozenset[str]:
 def _query_vector(model: MiniLM, text: str) -> Vectors:
     vector: Vectors = model.encode([text])[0]
     return vector
+
+
+def _reordered(run: Sequence[str], phrase: Sequence[str]) -> bool:
+    """Whether a name with a number or a letter in it is said with its words in another order: "the B1
+    desk" for "desk b1", "the 2 platform" for "platform 2", "the A counter" for "counter a"."""
+    n = len(phrase)
+    if n < 2 or not any(_IDENTIFIER.fullmatch(t) for t in phrase):
+        return False
+    wanted = sorted(phrase)
+    return any(sorted(run[i:i + n]) == wanted for i in range(len(run) - n + 1))
+
+
+_IDENTIFIER = re.compile(r"[a-z]?\d+[a-z]?|[a-z]")
 
 
 def _contains(run: Sequence[str], phrase: Sequence[str]) -> bool:

@@ -1,6 +1,7 @@
 """Place classes the seventh fresh set found, each with sentences of its own over at least two worlds
 (none from the understanding sets): chat shortenings of a place word ("plat 1", "rm 2", "the recep
-desk") and of "for" and "to" ("4 the", "2 the")."""
+desk") and of "for" and "to" ("4 the", "2 the"); a fixture inside a named room; a name said with its
+parts in another order ("the B1 desk", "the 2 platform")."""
 
 from __future__ import annotations
 
@@ -77,3 +78,39 @@ def test_four_and_two_before_a_determiner_are_for_and_to(text, written):
 def test_a_place_after_a_chat_for_or_to(worlds, world, prompt, field, place):
     g = read(worlds, world, prompt).groups[0]
     assert getattr(g, field) == place
+
+
+# ---- 2. a fixture inside a named room is that fixture, not the room -----------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("station", "a man sits on the bench on platform 2", "platform_2_bench"),
+    ("station", "12 ppl queuing for the ticket machines in the ticket hall", "ticket_machines"),
+    ("hospital", "a doctor naps on the sofa in the break room", "staff_sofa"),
+    ("hospital", "3 nurses queue for the coffee machine in the staff room", "staff_coffee_machine"),
+    ("museum", "a guard naps on the couch in the staff room", "staff_sofa"),
+    ("museum", "6 visitors queue 4 the lockers in the cloakroom", "lockers"),
+    ("airport", "a family sits at the tables in the café", "cafe_tables"),
+])
+def test_a_fixture_in_a_named_room_is_the_fixture(worlds, world, prompt, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert g.location == place
+
+
+# ---- 3. a name said with its parts in another order ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("airport", "two agents chat at the B1 desk", "gate_b1_desk"),
+    ("airport", "a man queues at the B check-in counter", "check_in_counter_b"),
+    ("station", "3 men wait on the 2 platform", "platform_2"),
+    ("hospital", "a nurse walks to the 1 exam room", "exam_room_1"),
+    ("hospital", "a man sits on the 2 lobby bench", "lobby_bench_2"),
+    ("office", "4 devs go to the 2 meeting room", "meeting_room_2"),
+])
+def test_a_name_with_its_number_or_letter_elsewhere_is_that_name(worlds, world, prompt, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert place_of(g) == place
+
+
+def test_a_number_before_people_is_still_their_count(worlds):
+    g, = read(worlds, "airport", "the 3 families wait at gate A1").groups
+    assert g.location == "gate_a1" and g.count.value >= 3
