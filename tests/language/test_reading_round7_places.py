@@ -114,3 +114,35 @@ def test_a_name_with_its_number_or_letter_elsewhere_is_that_name(worlds, world, 
 def test_a_number_before_people_is_still_their_count(worlds):
     g, = read(worlds, "airport", "the 3 families wait at gate A1").groups
     assert g.location == "gate_a1" and g.count.value >= 3
+
+
+# ---- 4. a place described by a passive clause --------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("office", "two devs go to the room where the servers are kept", "server_room"),
+    ("hospital", "a porter goes to the room where the linen is stored", "supply_room"),
+    ("hospital", "two men go to the counter where prescriptions are collected", "pharmacy_counter"),
+    ("airport", "a man goes to the desk where lost bags are reported", "lost_luggage_desk"),
+    ("museum", "a woman goes to the room where coats and bags are left", "cloakroom"),
+])
+def test_a_place_described_by_what_is_done_to_things_there(worlds, world, prompt, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert place_of(g) == place
+
+
+def test_a_passive_clause_is_read_as_what_people_do_there(worlds):
+    from grove_tui.language.people import People
+    from grove_tui.language.place_phrases import PlacePhrases
+    from grove_tui.language.parser import parse
+    from grove_tui.language.places import place_index
+    from grove_tui.language.sentence import Sentence
+
+    text = "the desk where books are borrowed and returned"
+    s = Sentence(text, parse(text), place_index(worlds["office"]), 0)
+    phrases = PlacePhrases(s, People(s))
+    assert phrases._active(3, s.n) == "you borrow and return books"
+
+
+def test_a_new_clause_after_a_described_place_is_its_own(worlds):
+    r = read(worlds, "office", "two devs go to the room where the servers are kept and 3 managers sit in the boardroom")
+    assert [place_of(g) for g in r.groups] == ["server_room", "boardroom"]
