@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
-from grove_tui.language.places import PlaceMatch
+from grove_tui.language.places import MeaningMatch, PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -318,18 +318,36 @@ class PlaceMeaning:
         ranked = [r for r in self.s.index.by_meaning(purpose.lower()) if r.entry.kind != "door" and
                   (verb not in r.entry.tokens or (words[1:2] in (["in"], ["out"], ["up"], ["off"], ["on"])
                                                    and any(p[:1] == (verb,) for p in r.entry.phrases)))]
-        if not ranked or ranked[0].similarity < MEANING_PURPOSE:
-            return None
-        best = ranked[0]
-        other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
-        margin = best.similarity - (other.similarity if other is not None else 0.0)
-        if margin < MEANING_CLEARER:
+        by_name = _clearly_nearest(ranked)
+        # what the world says a place is for ("Queue-number ticket dispenser.") answers "to take a queue
+        # number" where no name does: it decides when its place is clearly nearest and nearer than the
+        # name match, or no name is clearly nearest; within the name match's own room the names decide
+        by_use = _clearly_nearest([r for r in self.s.index.by_description(purpose.lower()) if
+                                   verb not in r.entry.tokens or words[1:2] in (["in"], ["out"], ["up"])])
+        if by_use is not None and (by_name is None or (by_use[0].similarity > by_name[0].similarity and
+                                                       by_use[0].entry.zone != by_name[0].entry.zone)):
+            best, other = by_use
+        elif by_name is not None:
+            best, other = by_name
+        else:
             return None
         score = 0.65 if best.similarity >= 0.7 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
+
+def _clearly_nearest(ranked: Sequence[MeaningMatch]) -> tuple[MeaningMatch, MeaningMatch | None] | None:
+    """The nearest place of a ranking and the nearest of another zone, when it is near enough for a
+    purpose and clearly ahead of that other one."""
+    if not ranked or ranked[0].similarity < MEANING_PURPOSE:
+        return None
+    best = ranked[0]
+    other = next((r for r in ranked[1:] if r.entry.zone != best.entry.zone), None)
+    if best.similarity - (other.similarity if other is not None else 0.0) < MEANING_CLEARER:
+        return None
+    return best, other
+
 
 # Who does what is done at a place, in a relative clause with no marker ("the place you buy tickets").
 _SUBJECTS = frozenset("you they we people one i he she staff passengers visitors patients kids children "

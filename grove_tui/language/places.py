@@ -46,6 +46,7 @@ class PlaceEntry:
     said: tuple[str, ...] = ()  # the name (as words), the type and each alias, as people write them
     types: frozenset[str] = frozenset()  # the type as written in `said`
     owners: frozenset[str] = frozenset()  # kinds of people it belongs to ("child" for "kids room")
+    description: str = ""  # what the world says it is and what it is for
 
 
 @dataclass(frozen=True)
@@ -74,13 +75,13 @@ class PlaceIndex:
         self.entries: list[PlaceEntry] = []
         for zone in world.zones:
             self.entries.append(_entry("zone", zone.name, zone.name, zone.type, zone.tags, zone.aliases,
-                                       area=float(zone.area)))
+                                       area=float(zone.area), description=zone.description))
             for door in zone.doors:
                 self.entries.append(_entry("door", door.name, zone.name, "exit door" if door.exit else "door",
-                                           door.tags, door.aliases, exit=door.exit))
+                                           door.tags, door.aliases, exit=door.exit, description=door.description))
             for entity in zone.entities:
                 self.entries.append(_entry("entity", entity.name, zone.name, entity.type, entity.tags,
-                                           entity.aliases))
+                                           entity.aliases, description=entity.description))
         df: dict[str, int] = {}
         for e in self.entries:
             for t in e.tokens | e.tag_tokens:
@@ -109,6 +110,10 @@ class PlaceIndex:
         self._said = [(i, text) for i, e in enumerate(self.entries) for k, text in enumerate(e.said)
                       if k == 0 or text not in e.types or said_by[text] == 1]
         self._vectors = PhraseVectors([text for _, text in self._said])
+        # What each room and fixture is for, in the world's words ("Queue-number ticket dispenser."):
+        # compared with what people go to do ("to take a queue number"), computed only when asked
+        self._described = [(i, e.description) for i, e in enumerate(self.entries) if e.description and e.kind != "door"]
+        self._description_vectors = PhraseVectors([text for _, text in self._described])
         self._order_cache = {e.name: i for i, e in enumerate(self.entries)}
         self._by_name = {e.name: e for e in self.entries}
 
@@ -128,6 +133,17 @@ class PlaceIndex:
                 best[i] = (value, said)
         ranked = sorted(best.items(), key=lambda item: (-item[1][0], self._order(self.entries[item[0]].name)))
         return [MeaningMatch(self.entries[i], round(value, 4), said) for i, (value, said) in ranked]
+
+    def by_description(self, text: str) -> list[MeaningMatch]:
+        """Places ranked by how near `text` is in meaning to what the world says they are for (their
+        description), best first; empty without the model or descriptions."""
+        model = MiniLM.shared()
+        if model is None or not self._described:
+            return []
+        similarity = self._description_vectors.vectors(model) @ _query_vector(model, text)
+        ranked = sorted(zip((i for i, _ in self._described), similarity.tolist()),
+                        key=lambda item: (-item[1], self._order(self.entries[item[0]].name)))
+        return [MeaningMatch(self.entries[i], round(value, 4), self.entries[i].description) for i, value in ranked]
 
     def near_building(self, text: str) -> float:
         """How near `text` is in meaning to what the world is ("train" to a station: 0.47), 0 without
@@ -305,7 +321,7 @@ class PlaceIndex:
 
 
 def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], aliases: Sequence[str], *,
-           exit: bool = False, area: float = 0.0) -> PlaceEntry:
+           exit: bool = False, area: float = 0.0, description: str = "") -> PlaceEntry:
     tokens: set[str] = set(name_tokens(name)) | set(name_tokens(type_ or ""))
     phrases = [tuple(name_tokens(name))]
     for alias in aliases or ():
@@ -322,7 +338,7 @@ def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], ali
     return PlaceEntry(kind, name, zone, frozenset(tokens), frozenset(tag_tokens - tokens),
                       tuple(p for p in phrases if p), exit, area, tuple(dict.fromkeys(said)),
                       frozenset({type_.replace("_", " ")} if type_ and kind != "door" else set()),
-                      frozenset(k for t in owners for k in owner_kinds(t)))
+                      frozenset(k for t in owners for k in owner_kinds(t)), " ".join((description or "").split()))
 
 
 def _kind_words(entry: PlaceEntry) -> set[str]:

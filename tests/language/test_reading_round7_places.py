@@ -146,3 +146,25 @@ def test_a_passive_clause_is_read_as_what_people_do_there(worlds):
 def test_a_new_clause_after_a_described_place_is_its_own(worlds):
     r = read(worlds, "office", "two devs go to the room where the servers are kept and 3 managers sit in the boardroom")
     assert [place_of(g) for g in r.groups] == ["server_room", "boardroom"]
+
+
+# ---- 5. a purpose that names a thing the place gives ------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "a woman walks in to take a number", "ticket_machine"),
+    ("airport", "a man hurries to get a boarding pass", "check_in_kiosks"),
+    ("hospital", "a man goes to pick up a prescription", "pharmacy_counter"),
+    ("museum", "a kid runs off to leave his coat", "cloakroom"),
+    ("mall", "a man goes to withdraw some cash", "cash_machine"),
+])
+def test_a_purpose_finds_the_place_by_what_it_is_for(worlds, world, prompt, place):
+    reading = read(worlds, world, prompt)
+    g, = reading.groups
+    assert g.destination == place
+
+
+def test_what_a_place_is_for_is_ranked_by_meaning(worlds):
+    from grove_tui.language.places import place_index
+
+    ranked = place_index(worlds["hospital"]).by_description("to take a queue number")
+    assert ranked and ranked[0].entry.name == "ticket_machine" and "dispenser" in ranked[0].nearest
