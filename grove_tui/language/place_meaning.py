@@ -48,6 +48,11 @@ MODIFIER_AGREES = 0.3
 # ... unless it is a word for what the whole building is about ("train" 0.47 from "station", "flight" 0.64
 # from "airport"; "maternity" is 0.40 from "hospital", "stock" 0.28 from "office").
 MODIFIER_OF_BUILDING = 0.45
+# A modifier only this near (0.3-0.45) leaves it to the whole phrase, when the words matched the place
+# by its head alone: the phrase must be this near one of the place's names ("chek in hall" 0.72 from the
+# check-in hall, "stock room" 0.64 from the supply room; "vending machines" 0.55 from self-checkout machines).
+MODIFIER_SURE = 0.45
+PHRASE_AGREES = 0.58
 # A purpose that names no place ("to get a cup of water", "to sketch the sarcophagus"), against the
 # places' names, when the sentence gives no place to go to: the places of the purposes people write
 # come at 0.50-0.82, those of purposes no place serves ("to get some fresh air", "to meet a friend")
@@ -64,7 +69,7 @@ class PlaceMeaning:
     people: People
     owner: str | None
 
-    def noun_modifiers(self, first: int, end: int) -> tuple[str, ...]:
+    def noun_modifiers(self, first: int, end: int, gerunds: bool = False) -> tuple[str, ...]:
         """The words before a place phrase's head that say what kind of place it is ("ice cream" of "the
         ice-cream stand", "stock" of "the stockroom"), not how it looks ("the vast hall"), whose it is
         ("the nurses' post"), which of a series ("gate 2") or the building ("the station café")."""
@@ -79,20 +84,34 @@ class PlaceMeaning:
                 return ()
             # "stockroom", "mailroom": a word the world lacks, made of a kind and a word for places it has
             return next(((word[:n],) for n in range(3, len(word) - 3) if word[n:] in index.zone_words), ())
-        return tuple(s.lemma(x) for x in at[:-1] if s.w[x].pos in ("NOUN", "PROPN", "X")
+        return tuple(s.low[x] if s.w[x].tag == "VBG" else s.lemma(x) for x in at[:-1]
+                     if (s.w[x].pos in ("NOUN", "PROPN", "X") or (gerunds and s.w[x].tag == "VBG"))  # "vending"
                      and s.lemma(x) not in index.building_words and not self.people.is_person_noun(x))
 
-    def modifiers_agree(self, modifiers: Sequence[str], name: str) -> bool:
+    def modifiers_agree(self, modifiers: Sequence[str], name: str, phrase: Sequence[str] = ()) -> bool:
         """Whether the words that say what kind of place a phrase means fit the place `name`: each is
-        one of its words (or a synonym), or together they are near one of its names or its room's."""
+        one of its words (or a synonym), or together they are near one of its names or its room's. A
+        phrase given (a place the words matched by its head alone) must then also be near the place as a
+        whole, unless the modifiers are clearly near: "vending machines" shares "machines" with the
+        self-checkout machines, and "vending" is 0.38 from them, but the phrase is only 0.55 from them."""
         index = self.s.index
         entry = index.entry(name)
-        strange = [t for t in modifiers if entry is not None and not index.names_word(entry, t)]
+        head = lemma(phrase[-1]) if phrase else ""
+        strange = [t for t in modifiers if entry is not None and (not index.names_word(entry, t) or (
+            t not in entry.tokens and _synonym_of(t, head)))]  # "vending" is a synonym of the head "machine" only
         if not strange or entry is None:
             return True
-        near = index.by_meaning(" ".join(strange), among={entry.name, entry.zone})
-        return not near or max(r.similarity for r in near) >= MODIFIER_AGREES or \
-            index.near_building(" ".join(strange)) >= MODIFIER_OF_BUILDING  # "the train platform" of a station
+        said = " ".join(strange)
+        near = index.by_meaning(said, among={entry.name, entry.zone})
+        if not near or index.near_building(said) >= MODIFIER_OF_BUILDING:  # "the train platform" of a station
+            return True
+        closest = max(r.similarity for r in near)
+        if closest < MODIFIER_AGREES:
+            return False
+        if closest >= MODIFIER_SURE or len(phrase) < 2:  # "stockroom": one word, a synonym of the place's
+            return True
+        whole = index.by_meaning(" ".join(phrase), among={entry.name})
+        return not whole or whole[0].similarity >= PHRASE_AGREES
 
     def _by_meaning(self, phrase: Sequence[str], lemmas: Sequence[str], accept: float = MEANING_ACCEPT,
                     margin: float = MEANING_MARGIN) -> Decided | None:
@@ -336,6 +355,11 @@ class PlaceMeaning:
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
+
+def _synonym_of(word: str, head: str) -> bool:
+    """Whether `word` is listed as a synonym of `head` ("vending" of "machine")."""
+    return bool(head) and any(word in group and head in group for group in lx.PLACE_SYNONYMS)
+
 
 def _clearly_nearest(ranked: Sequence[MeaningMatch]) -> tuple[MeaningMatch, MeaningMatch | None] | None:
     """The nearest place of a ranking and the nearest of another zone, when it is near enough for a

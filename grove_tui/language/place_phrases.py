@@ -158,7 +158,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         kinds = tuple(t for t in lemmas[:-1] if t not in lx.PLACE_MODIFIERS) if informal is not None else \
             self.noun_modifiers(start, j)
         if match is not None and not match.exact and owned is None and \
-                (informal is not None or not self.modifiers_agree(kinds, match.name)):
+                (informal is not None or not self.modifiers_agree(
+                    self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS),
+                    match.name, phrase)):
             # "the ice-cream stand" is not the phone stand, though both are stands; an informal name is
             # its place's whole name or near it in meaning ("the hole in the wall" is no ticket machine)
             match = None

@@ -168,3 +168,28 @@ def test_what_a_place_is_for_is_ranked_by_meaning(worlds):
 
     ranked = place_index(worlds["hospital"]).by_description("to take a queue number")
     assert ranked and ranked[0].entry.name == "ticket_machine" and "dispenser" in ranked[0].nearest
+
+
+# ---- 6. a thing the world lacks is refused, though its head is a word the world has -------------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("mall", "two teens go to the vending machines", "vending machines"),
+    ("station", "two men walk to the vending machines", "vending machines"),
+    ("airport", "two men walk to the vending machines", "vending machines"),
+    ("office", "two devs go to the vending machine", "vending machine"),
+])
+def test_a_machine_of_a_kind_the_world_lacks_is_refused(worlds, world, prompt, refused):
+    assert read_prompt(prompt, worlds[world]).unknown_places == (refused,)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "two men walk to the vending machines", "vending_machine"),
+    ("hospital", "two men walk to the snack machine", "vending_machine"),
+    ("station", "two men walk to the booking office", "ticket_office"),
+    ("mall", "a couple walks to the dining area", "food_court"),
+    ("hospital", "Ten people leave the eating area.", "cafeteria"),
+    ("airport", "5 travellers queue at the chek in hall", "check_in_hall"),
+])
+def test_a_synonym_or_the_world_s_own_kind_still_resolves(worlds, world, prompt, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert place_of(g) == place
