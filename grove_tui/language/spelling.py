@@ -103,6 +103,14 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1 and one_edit(base, v)}
     found = sorted(as_written | as_plural)
     before, after = _content_neighbours(words, k)
+    if len(low) >= 4 and not known_word(low):
+        # "intensive cair": two edits from "care", which completes a name with the word before; a word
+        # one edit from another name word ("chair") is still no guess between them
+        farther = sorted(v for v in index.name_words if abs(len(v) - len(low)) <= 2 and _edits(low, v) == 2
+                         and ((before, v) in index.name_pairs or (v, after) in index.name_pairs))
+        completing = [v for v in found if (before, v) in index.name_pairs or (v, after) in index.name_pairs]
+        if len(farther) == 1 and not completing:
+            return farther[0]
     if len(found) > 1:
         # "intensive cair": "care" and "chair" are both one edit away; only "care" completes a name
         found = [v for v in found if (before, v) in index.name_pairs or (v, after) in index.name_pairs]
@@ -156,6 +164,16 @@ def _shortened(words: Sequence[Word], k: int, low: str, index: PlaceIndex) -> st
             (not known_word(low) or len(found[0]) <= 2 * len(low)):
         return found[0]
     return None
+
+
+def _edits(a: str, b: str) -> int:
+    """The Levenshtein distance between two words (insertions, deletions and substitutions)."""
+    row = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        previous, row[0] = row[0], i
+        for j, cb in enumerate(b, 1):
+            previous, row[j] = row[j], min(row[j] + 1, row[j - 1] + 1, previous + (ca != cb))
+    return row[-1]
 
 
 def _content_neighbours(words: Sequence[Word], k: int) -> tuple[str, str]:

@@ -193,3 +193,15 @@ def test_a_machine_of_a_kind_the_world_lacks_is_refused(worlds, world, prompt, r
 def test_a_synonym_or_the_world_s_own_kind_still_resolves(worlds, world, prompt, place):
     g = read(worlds, world, prompt).groups[0]
     assert place_of(g) == place
+
+
+# ---- 7. a misspelling two edits from the word that completes a name -----------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "Three relatives hurry to intensive cair.", "intensive_care"),
+    ("airport", "a woman waits at the bagage carusel 1", "carousel_1"),
+    ("office", "two devs sit in the meating rom 1", "meeting_room_1"),
+])
+def test_a_word_two_edits_from_a_name_word_that_completes_the_name(worlds, world, prompt, place):
+    g = read(worlds, world, prompt).groups[0]
+    assert place_of(g) == place
