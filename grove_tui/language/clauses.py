@@ -551,8 +551,8 @@ class Clauses:
         while j > previous_last and (not s.is_punct(j) or s.hyphen_inside(j)) and s.low[j] not in lx.CLAUSE_STARTERS:
             j -= 1
         fronted = range(j + 1, b)
-        if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
-            return first
+        if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"} or j == previous_last:
+            return first  # right after the group before, the phrase is its ("8 ppl in line at the desk, 2 more at ...")
         if any(s.w[x].pos == "VERB" and verb_lemma(s.low[x]) in lx.INTENT_VERBS
                and not s.index.knows(lemma(s.low[x])) for x in fronted):
             return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)

@@ -205,3 +205,16 @@ def test_a_synonym_or_the_world_s_own_kind_still_resolves(worlds, world, prompt,
 def test_a_word_two_edits_from_a_name_word_that_completes_the_name(worlds, world, prompt, place):
     g = read(worlds, world, prompt).groups[0]
     assert place_of(g) == place
+
+
+# ---- 7. a verbless group's place is its own, not the next group's -------------------------------------
+
+@pytest.mark.parametrize("world,prompt,places", [
+    ("station", "6 people in line at the ticket office, 2 more at the ticket machines",
+     ["ticket_office", "ticket_machines"]),
+    ("hospital", "Ten patients in the waiting room, three more by the pharmacy", ["main_waiting_room", "pharmacy"]),
+    ("museum", "5 kids in line at the ticket desk, 3 more at the cloakroom", ["ticket_desk", "cloakroom"]),
+])
+def test_a_place_right_after_a_group_is_that_group_s(worlds, world, prompt, places):
+    r = read(worlds, world, prompt)
+    assert [g.location for g in r.groups] == places
