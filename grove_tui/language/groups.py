@@ -107,6 +107,8 @@ class Groups:
         phrases after it, up to a verb, a punctuation mark or a clause word."""
         s = self.s
         j = m.last + 1
+        if m.fronted:  # "Of the thirty people watching the fountain, five ...": up to the comma
+            return next((x for x in range(j, s.n) if s.is_punct(x)), s.n)
         while j < s.n and not s.is_punct(j) and s.low[j] not in lx.CLAUSE_STARTERS and not (
                 s.is_verb(j) or self.mentions.people.third_person_verb(j) or s.w[j].dep == "ROOT"
                 or (verb_lemma(s.low[j]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(j)))):

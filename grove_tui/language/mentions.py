@@ -47,8 +47,15 @@ class Mentions:
     def find(self) -> list[Mention]:
         s = self.s
         found: list[Mention] = []
+        fronted: int | None = None  # a whole said before its part ("Of the twelve nurses on the ward, two ...")
         i = 0
         while i < s.n:
+            whole = self.partitives.fronted_whole(i) if fronted is None else None
+            if whole is not None:
+                fronted = len(found)
+                found.append(whole)
+                i = whole.last + 1
+                continue
             if negative_at(s, i):
                 end = next((k for k in range(i + 1, min(i + 5, s.n)) if self.people.is_person_noun(k)), i)
                 self.problems.append(f"'{s.span(i, end)}' is a negative number of people; give a whole number of "
@@ -57,6 +64,8 @@ class Mentions:
                 i += 1
                 continue
             m = self.mention_at(i, found)
+            if fronted is not None and m is None:
+                m = self._bare_count(i, found[fronted])
             if m is not None and m.collective is not None and m.first == m.last and 0 < m.first and \
                     s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \
                     not self.people.third_person_verb(m.last + 1):
@@ -75,7 +84,7 @@ class Mentions:
                 before.count, before.label, before.apposition = m.count, m.label, (m.first, m.last)
                 i = m.last + 1
                 continue
-            if found and self._apposition(found[-1], m, len(found) - 1):
+            if found and not found[-1].fronted and self._apposition(found[-1], m, len(found) - 1):
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
                 assert count is not None
@@ -93,6 +102,10 @@ class Mentions:
             m.robot_object = self.objects.robot_object(m.first)
             if m.zone_place is None and not m.whole_zone:
                 m.zone_place = self.possessor_place(m.first)
+            if fronted is not None and m.relation is None and m.whole is None and m.count is not None and \
+                    m.label in ("person", found[fronted].label) and s.w[m.first].sentence == s.w[found[fronted].first].sentence:
+                self.partitives.fronted_part(m, found[fronted], fronted)
+            fronted = None
             if m.whole is not None:
                 # "two of the six developers": the six first, the two a subset of them
                 found.append(m.whole)
@@ -100,6 +113,14 @@ class Mentions:
             found.append(m)
             i = m.last + 1
         return found
+
+    def _bare_count(self, at: int, whole: Mention) -> Mention | None:
+        """A bare count right after a whole said first, before any verb ("..., three get up and ...")."""
+        s = self.s
+        num = quantifier(s, at)
+        if num is None or at == 0 or s.low[at - 1] != "," or num.end >= s.n or not s.is_verb(num.end):
+            return None
+        return Mention(at, num.end - 1, s.span(at, num.end - 1), whole.label, count_of(s, num, f"{at}:part"))
 
     def _members_of_collective(self, before: Mention, m: Mention) -> bool:
         """Whether m, after "with" in the same sentence, counts the people of a collective said with

@@ -1,0 +1,54 @@
+"""Round 7 on people and clauses, each class with sentences of its own over at least two worlds (none
+from the understanding sets): a whole said before its part ("Of the twelve nurses on the ward, two
+..."); a person carried, pushed or escorted, named through a possessive or a role; queue phrasings;
+the robot's own motion verbs; approximations kept per count; a verb that takes a place as its object."""
+
+from __future__ import annotations
+
+import pytest
+
+from grove_tui.language.reading import read_prompt
+
+
+def read(worlds, world, prompt):
+    reading = read_prompt(prompt, worlds[world])
+    assert reading.unknown_places == (), reading.unknown_places
+    return reading
+
+
+# ---- 1. a whole said before its part -----------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,whole,where,part,intent,destination", [
+    ("hospital", "Of the 12 nurses on the ward, two go to the pharmacy.", 12, "ward_a", 2, "walk", "pharmacy"),
+    ("station", "Out of forty passengers on platform 1, ten walk to the exit.", 40, "platform_1", 10, "walk",
+     "platform_1_exit"),
+    ("office", "Of the eight developers at their desks, two head to the kitchen.", 8, "open_plan_office", 2, "walk",
+     "kitchen"),
+    ("museum", "Of the 25 pupils in the Egyptian gallery, about ten drift off to the cafe.", 25, "egyptian_gallery",
+     10, "walk", "cafe"),
+    ("airport", "Out of about sixty passengers queuing at security, a dozen give up and go to the cafe.", 60,
+     "security_checkpoint", 12, "walk", "cafe"),
+])
+def test_a_whole_said_first_and_its_part(worlds, world, prompt, whole, where, part, intent, destination):
+    g0, g1 = read(worlds, world, prompt).groups
+    assert (g0.count.value, g0.location, g0.relation) == (whole, where, None)
+    assert (g1.count.value, g1.intent, g1.destination, g1.relation) == (part, intent, destination, "subset_of:0")
+    assert g1.label == g0.label
+
+
+@pytest.mark.parametrize("world,prompt,where", [
+    ("hospital", "Of the patients in the waiting room, three go to the pharmacy.", "main_waiting_room"),
+    ("residential", "Of the four kids in the living room, two go to the kitchen.", "living_room"),
+])
+def test_a_whole_with_or_without_a_number_keeps_its_place(worlds, world, prompt, where):
+    g0, g1 = read(worlds, world, prompt).groups
+    assert g0.location == where and g1.relation == "subset_of:0" and g1.count.value < g0.count.value
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Of course, two developers go to the kitchen."),
+    ("mall", "Of all days, four shoppers queue at the cinema on Monday."),
+])
+def test_of_without_people_is_no_whole(worlds, world, prompt):
+    groups = read_prompt(prompt, worlds[world]).groups
+    assert len(groups) == 1 and groups[0].relation is None
