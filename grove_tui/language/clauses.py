@@ -278,6 +278,8 @@ class Clauses:
                 return True
         obj = i + 2 if nxt in ("up", "down", "off") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
         nxt = s.low[obj] if obj < s.n else ""
+        if v in lx.LEADING_VERBS and any(s.lemma(x) in lx.CARRYING_THINGS for x in range(obj, s.phrase_end(obj))):
+            return False  # "pushes a wheelchair", "wheels his father's bed": what someone is taken in, no place
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
                 and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(obj))
                 and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))

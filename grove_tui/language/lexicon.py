@@ -265,7 +265,11 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel roll carry help assist "
-                          "support transport walk drag pull haul hurry rush move evacuate transfer ferry relocate".split())
+                          "support transport walk drag pull haul hurry rush move evacuate transfer ferry relocate "
+                          "piggyback cradle chaperone steer tow".split())
+# What a person is carried or pushed in: "pushes his father's wheelchair" takes the father along.
+CARRYING_THINGS = frozenset("wheelchair pram buggy stroller pushchair bed trolley stretcher gurney chair scooter "
+                            "cot crib".split())
 # Verbs by which someone sends people elsewhere without going along ("a guard sends the visitors out of
 # the café", "the manager tells the interns to go to the boardroom"): the people go, the sender stays.
 SENT_VERBS = frozenset("send tell order ask direct call wave shoo summon instruct urge".split())

@@ -354,6 +354,12 @@ class Mentions:
                 inner.first = at
                 inner.who = s.span(at, inner.last)
             return inner
+        carried = self.objects.carried_owner(at) if self.objects.led_by(at) else None
+        if carried is not None:  # "pushes his father's wheelchair": the father, taken along
+            person, thing = carried
+            plural = s.lemma(person) != low[person] or low[person + 1] in ("'", "s'")
+            return Mention(at, thing, s.span(at, thing), self.people.label(person),
+                           Count("vague", s.choose(2, 3, f"{at}:carried"), 2, 3) if plural else Count("exact", 1, 1, 1))
         num = quantifier(s, at)
         part = self.partitives.part_of(at, num, found, self.parent(found))
         if part is not None:

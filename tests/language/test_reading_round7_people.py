@@ -52,3 +52,34 @@ def test_a_whole_with_or_without_a_number_keeps_its_place(worlds, world, prompt,
 def test_of_without_people_is_no_whole(worlds, world, prompt):
     groups = read_prompt(prompt, worlds[world]).groups
     assert len(groups) == 1 and groups[0].relation is None
+
+
+# ---- 2. a person carried, pushed or escorted, named through a possessive or a role -------------------
+
+@pytest.mark.parametrize("world,prompt,leader,carried,start,destination", [
+    ("mall", "A mother pushes her baby's pram from the cinema to the food court.", "mother", "baby",
+     "cinema_lobby", "food_court"),
+    ("station", "A dad pushes his son's buggy from the concourse to platform 2.", "dad", "son", "concourse",
+     "platform_2"),
+    ("residential", "A friend piggybacks his little sister from the balcony to the living room.", "friend", "sister",
+     "balcony", "living_room"),
+    ("airport", "A porter wheels the old lady from the check-in hall to gate A1.", "porter", "lady",
+     "check_in_hall", "gate_a1"),
+    ("museum", "A grandfather carries his granddaughter from the cafe to the dinosaur gallery.", "grandfather",
+     "granddaughter", "cafe", "dinosaur_gallery"),
+])
+def test_the_carried_person_is_a_group_on_the_same_route(worlds, world, prompt, leader, carried, start,
+                                                         destination):
+    g0, g1 = read(worlds, world, prompt).groups
+    assert (g0.label, g0.intent, g0.start, g0.destination, g0.via) == (leader, "walk", start, destination, ())
+    assert (g1.label, g1.count.value, g1.intent, g1.start, g1.destination) == (carried, 1, "follow", start,
+                                                                               destination)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "A nurse pushes a wheelchair to radiology."),
+    ("office", "Two developers push a trolley from the kitchen to the boardroom."),
+])
+def test_an_empty_wheelchair_is_no_person_and_no_place(worlds, world, prompt):
+    g, = read(worlds, world, prompt).groups
+    assert g.via == () and g.intent == "walk"
