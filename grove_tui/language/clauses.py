@@ -555,6 +555,8 @@ class Clauses:
         fronted = range(j + 1, b)
         if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
             return first
+        if j == previous_last:
+            return first  # "8 people in line at the desk, 2 more at ...": the phrase is the group's before
         if any(s.w[x].pos == "VERB" and verb_lemma(s.low[x]) in lx.INTENT_VERBS
                and not s.index.knows(lemma(s.low[x])) for x in fronted):
             return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)

@@ -249,6 +249,8 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("line", "up"): "queue", ("wait", "in", "line"): "queue", ("stand", "in", "line"): "queue",
     ("wait", "in", "a", "line"): "queue", ("wait", "their", "turn"): "queue", ("wait", "for", "their", "turn"): "queue",
     ("form", "a", "line"): "queue", ("form", "a", "queue"): "queue", ("get", "in", "line"): "queue",
+    ("take", "turns"): "queue", ("take", "their", "turn"): "queue", ("await", "their", "turn"): "queue",
+    ("in", "the", "line"): "queue", ("queue", "up"): "queue", ("on", "the", "waiting", "list"): "queue",
     ("mill", "around"): "wander", ("mill", "about"): "wander", ("walk", "around"): "wander",
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
     ("hang", "out"): "converse", ("hang", "around"): "wait", ("hang", "about"): "wait",

@@ -83,3 +83,26 @@ def test_the_carried_person_is_a_group_on_the_same_route(worlds, world, prompt, 
 def test_an_empty_wheelchair_is_no_person_and_no_place(worlds, world, prompt):
     g, = read(worlds, world, prompt).groups
     assert g.via == () and g.intent == "walk"
+
+
+# ---- 3. queue phrasings -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "5 patients in the queue at the pharmacy, 3 more at reception", "pharmacy"),
+    ("station", "Ten commuters lined up at the ticket machines.", "ticket_machines"),
+    ("hospital", "Five patients waiting their turn at the pharmacy.", "pharmacy"),
+    ("museum", "Twelve visitors standing in line for the cloakroom.", "cloakroom"),
+    ("office", "Four developers await their turn at the coffee machine.", "coffee_machine"),
+    ("residential", "The kids take turns at the bathroom.", "bathroom"),
+    ("museum", "Nine tourists in a queue at the ticket desk.", "ticket_desk"),
+    ("mall", "Six shoppers queueing up for the cinema.", "cinema_lobby"),
+])
+def test_queue_phrasings_queue_at_their_place(worlds, world, prompt, location):
+    g = read(worlds, world, prompt).groups[0]
+    assert (g.intent, g.location) == ("queue", location)
+
+
+def test_a_place_phrase_after_a_group_is_its_own_not_the_next_groups(worlds):
+    g0, g1 = read(worlds, "hospital", "5 patients in the queue at the pharmacy, 3 more at reception").groups
+    assert (g0.count.value, g0.location) == (5, "pharmacy")
+    assert (g1.count.value, g1.location, g1.relation) == (3, "reception_desk", "more_of:0")
