@@ -326,7 +326,8 @@ ROBOT_PREPOSITIONS = frozenset("past by between among around round behind beside
 ROBOT_FOLLOW_VERBS = frozenset("follow trail accompany shadow tail chase pursue".split())
 ROBOT_CROSS_VERBS = frozenset("cross pass traverse drive roll glide move navigate travel deliver carry bring fetch "
                               "transport head go leave enter return zoom trundle come reach visit proceed rush hurry "
-                              "ride run walk lead guide escort take make get exit arrive depart".split())
+                              "ride run walk lead guide escort take make get exit arrive depart zip whizz whiz "
+                              "scoot whoosh sail slide shuffle crawl creep".split())
 # Verbs of sending the robot somewhere: "send the robot to ward A", "have the robot wait by the door".
 ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct program command dispatch "
                                 "instruct".split())

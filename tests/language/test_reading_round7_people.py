@@ -106,3 +106,27 @@ def test_a_place_phrase_after_a_group_is_its_own_not_the_next_groups(worlds):
     g0, g1 = read(worlds, "hospital", "5 patients in the queue at the pharmacy, 3 more at reception").groups
     assert (g0.count.value, g0.location) == (5, "pharmacy")
     assert (g1.count.value, g1.location, g1.relation) == (3, "reception_desk", "more_of:0")
+
+
+# ---- 4. the robot's own motion verbs ------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,via", [
+    ("mall", "Two kids wave at the robot as it glides by.", ()),
+    ("office", "A developer watches the robot as it whizzes past.", ()),
+    ("museum", "Children point at the robot as it passes.", ()),
+    ("office", "Two interns step aside as the robot scoots by.", ()),
+    ("hospital", "Three nurses step aside as the robot trundles through the main corridor.", ("main_corridor",)),
+    ("airport", "Passengers stare at the robot as it zips along the check-in hall.", ("check_in_hall",)),
+])
+def test_the_robot_going_by_crosses(worlds, world, prompt, via):
+    reading = read(worlds, world, prompt)
+    assert reading.robot is not None and (reading.robot.task, reading.robot.via) == ("cross", via)
+    assert reading.groups[0].intent == "robot"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("residential", "Grandpa waves when the robot comes near."),
+    ("hospital", "Two nurses chat while the robot comes closer."),
+])
+def test_the_robot_coming_near_sets_no_route(worlds, world, prompt):
+    assert read(worlds, world, prompt).robot is None
