@@ -35,7 +35,9 @@ NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES) | {"dozen"
 # Words before a number that make it approximate ("about twenty people"): the value stays the
 # number, the range is +-APPROXIMATE_SPREAD of it.
 APPROXIMATE_WORDS = frozenset("about around approximately roughly nearly almost circa some maybe perhaps".split())
-APPROXIMATE_PHRASES = (("close", "to"), ("more", "or", "less"), ("up", "to"), ("at", "least"), ("at", "most"))
+APPROXIMATE_PHRASES = (("close", "to"), ("more", "or", "less"), ("up", "to"), ("at", "least"), ("at", "most"),
+                       ("give", "or", "take"), ("in", "the", "region", "of"), ("something", "like"),
+                       ("upwards", "of"), ("just", "under"), ("just", "over"), ("a", "little", "over"))
 APPROXIMATE_SPREAD = 0.2
 
 # Vague quantity words -> (low, high) head counts.

@@ -28,6 +28,8 @@ _JOINING_SIGN = re.compile(r"(?<!\b[A-Za-z])(?<=\w)\s*(?:&|\+)\s*(?=\w)|(?<=\b[A
 _AT_SIGN = re.compile(r"(?<![\w.])@\s*(?=\w)")
 # "~30 pax", "~ 10 people": about so many
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
+# "30-ish visitors", "20ish ppl": about so many
+_ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 
 
 def normalise(text: str) -> str:
@@ -36,7 +38,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
-    kept = _TILDE.sub("about ", _AT_SIGN.sub("at ", kept))
+    kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     return " ".join(kept.split())
 

@@ -130,3 +130,27 @@ def test_the_robot_going_by_crosses(worlds, world, prompt, via):
 ])
 def test_the_robot_coming_near_sets_no_route(worlds, world, prompt):
     assert read(worlds, world, prompt).robot is None
+
+
+# ---- 5. approximations kept per count ----------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("hospital", "In the evening roughly thirty visitors walk to the cafeteria, while two nurses wait at reception.",
+     [("approximate", 30), ("exact", 2)]),
+    ("mall", "On Saturday some forty shoppers mill around the food court and ten teenagers wait at the cinema.",
+     [("approximate", 40), ("exact", 10)]),
+    ("airport", "approx 50 passengers queue at security while 3 guards wait at the gate.",
+     [("approximate", 50), ("exact", 3)]),
+    ("station", "At noon around 60 commuters wait on platform 2.", [("approximate", 60)]),
+    ("hospital", "After lunch approximately 12 patients queue at the pharmacy.", [("approximate", 12)]),
+    ("office", "At 9 about thirty developers arrive at the open office.", [("approximate", 30)]),
+    ("museum", "At opening time 30-ish visitors wait in the entrance hall.", [("approximate", 30)]),
+    ("office", "Give or take twenty developers head to the kitchen.", [("approximate", 20)]),
+    ("office", "Twenty developers, give or take, head to the kitchen.", [("approximate", 20)]),
+    ("hospital", "Forty visitors, or thereabouts, wait in the main waiting room.", [("approximate", 40)]),
+    ("airport", "~25 passengers wait at gate A1, and 4 staff stand at the information desk.",
+     [("approximate", 25), ("exact", 4)]),
+])
+def test_each_count_keeps_its_approximation(worlds, world, prompt, counts):
+    groups = read(worlds, world, prompt).groups
+    assert [(g.count.kind, g.count.value) for g in groups] == counts
