@@ -276,6 +276,16 @@ class Clauses:
                 scan.used.update(range(i + 1, place.end))
                 scan.pos = s.advance(scan.own, place.end)
                 return True
+        if v in lx.ROUTE_OBJECT_VERBS and not s.after_determiner(i) and \
+                any(s.low[x] in lx.PASSAGE_WORDS for x in range(i + 1, s.phrase_end(i + 1))):
+            # "take the stairs", "use the side entrance": the way they go
+            place = self.places.phrase(i + 1, "obj:via", i, record_unknown=False)
+            c.has_action, c.intent = True, c.intent or "walk"  # a way the world lacks is still a way they go
+            if place is not None and place.match is not None:
+                c.places.append(place)
+                scan.used.update(range(i, place.end))
+                scan.pos = s.advance(scan.own, place.end)
+                return True
         obj = i + 2 if nxt in ("up", "down", "off") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
         nxt = s.low[obj] if obj < s.n else ""
         if v in lx.LEADING_VERBS and any(s.lemma(x) in lx.CARRYING_THINGS for x in range(obj, s.phrase_end(obj))):

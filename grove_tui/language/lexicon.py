@@ -296,6 +296,12 @@ THING_OR_PLACE_VERBS = frozenset("clean mop sweep vacuum hoover scrub tidy searc
 SEEN_OBJECT_VERBS = frozenset({"watch"})
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
 VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
+# Verbs whose object, when it is a way through ("take the stairs", "use the side entrance"), is a place
+# passed on the way: "Three developers take the stairs to the kitchen".
+ROUTE_OBJECT_VERBS = frozenset("use take".split())
+PASSAGE_WORDS = frozenset("stair stairs staircase stairway stairwell steps lift elevator escalator travelator door "
+                          "doorway entrance exit gate ramp corridor hallway passage passageway walkway path route bridge "
+                          "footbridge tunnel underpass shortcut turnstile barrier gateline".split())
 OBJECT_VERBS = START_OBJECT_VERBS | DESTINATION_OBJECT_VERBS | LOCATION_OBJECT_VERBS | VIA_OBJECT_VERBS
 ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end deliver drop bring".split())
 # "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.

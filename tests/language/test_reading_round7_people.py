@@ -154,3 +154,28 @@ def test_the_robot_coming_near_sets_no_route(worlds, world, prompt):
 def test_each_count_keeps_its_approximation(worlds, world, prompt, counts):
     groups = read(worlds, world, prompt).groups
     assert [(g.count.kind, g.count.value) for g in groups] == counts
+
+
+# ---- 6. a verb that takes a way through as its object --------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,via,destination", [
+    ("hospital", "Three visitors take the lift to the ICU.", ("elevator_hall",), "intensive_care"),
+    ("hospital", "Two porters use the service lift to get to radiology.", ("elevator_hall",), "radiology"),
+    ("residential", "Dad uses the back door.", ("back_door",), None),
+    ("residential", "The kids use the back door to go out to the garden.", ("back_door",), "balcony"),
+    ("mall", "Four shoppers use the side entrance.", ("south_entrance_hall",), None),
+])
+def test_the_way_taken_is_passed_through(worlds, world, prompt, via, destination):
+    g, = read(worlds, world, prompt).groups
+    assert (g.intent, g.via, g.destination) == ("walk", via, destination)
+
+
+@pytest.mark.parametrize("world,prompt,intent", [
+    ("mall", "Shoppers take the escalator.", "walk"),
+    ("station", "Two commuters take the emergency stairs from platform 1.", "walk"),
+    ("office", "Two interns take a break in the kitchen.", "wait"),
+    ("hospital", "The cleaner uses the mop in the corridor.", "wait"),
+])
+def test_taking_a_way_is_walking_taking_a_thing_is_not(worlds, world, prompt, intent):
+    g, = read(worlds, world, prompt).groups
+    assert g.intent == intent
