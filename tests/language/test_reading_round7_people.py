@@ -179,3 +179,20 @@ def test_the_way_taken_is_passed_through(worlds, world, prompt, via, destination
 def test_taking_a_way_is_walking_taking_a_thing_is_not(worlds, world, prompt, intent):
     g, = read(worlds, world, prompt).groups
     assert g.intent == intent
+
+
+# ---- 7. a noun no list names that does something to itself is a person -------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,count,location", [
+    ("mall", "Two hecklers position themselves by the fountain.", "heckler", 2, "fountain"),
+    ("station", "A fiddler plants himself on the concourse.", "fiddler", 1, "concourse"),
+    ("museum", "A prankster parks herself next to the whale skeleton.", "prankster", 1, "whale_skeleton"),
+])
+def test_a_noun_that_does_something_to_itself_is_a_person(worlds, world, prompt, label, count, location):
+    g, = read(worlds, world, prompt).groups
+    assert (g.label, g.count.value, g.location) == (label, count, location)
+
+
+def test_a_thing_that_switches_itself_off_is_nobody(worlds):
+    g, = read_prompt("The heater switches itself off in the kitchen.", worlds["residential"]).groups
+    assert g.label == "person" and g.confidence_of("group") is not None
