@@ -72,6 +72,13 @@ class Groups:
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             words = _GroupWords(m, clause, scenes.get(s.w[m.first].sentence), self._own_span(spans[k], m, robot_tokens))
             groups.append(self.group(words, evacuation, groups))
+        for k, m in enumerate(mentions):
+            g = groups[k]
+            parent = int((g.relation or "").partition(":")[2]) if (g.relation or "").startswith("others_of:") else None
+            if m.rest_of_parent and parent is not None and g.intent == "wait" and groups[parent].location and \
+                    not (g.location or g.start or g.destination or g.via):
+                # "two of them go to the kitchen and the others stay": where their group is
+                groups[k] = replace(g, location=groups[parent].location)
         # "everyone has gone home (except ...)", "after everyone has left": people no longer there
         gone = [k for k, m in enumerate(mentions) if m.whole_zone and m.relation is None
                 and self._already_gone(spans[k]) and len(mentions) > 1]

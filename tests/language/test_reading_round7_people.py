@@ -196,3 +196,17 @@ def test_a_noun_that_does_something_to_itself_is_a_person(worlds, world, prompt,
 def test_a_thing_that_switches_itself_off_is_nobody(worlds):
     g, = read_prompt("The heater switches itself off in the kitchen.", worlds["residential"]).groups
     assert g.label == "person" and g.confidence_of("group") is not None
+
+
+# ---- 8. the rest of a group that stays stays where the group is ---------------------------------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "Two of the six nurses at the nurse station go to the pharmacy and the others stay.", "nurse_station"),
+    ("residential", "Of the four kids in the living room, two go to the kitchen and the others stay.", "living_room"),
+    ("office", "Of the eight developers in the open office, two head to the kitchen, while the rest keep working.",
+     "open_plan_office"),
+])
+def test_the_rest_stay_where_their_group_is(worlds, world, prompt, location):
+    g0, g1, g2 = read(worlds, world, prompt).groups
+    assert (g2.relation, g2.intent, g2.location) == ("others_of:0", "wait", location)
+    assert g1.relation == "subset_of:0" and g1.intent == "walk"
