@@ -276,8 +276,20 @@ class Clauses:
                 scan.used.update(range(i + 1, place.end))
                 scan.pos = s.advance(scan.own, place.end)
                 return True
+        if v in lx.ROUTE_OBJECT_VERBS and not s.after_determiner(i) and \
+                any(s.low[x] in lx.PASSAGE_WORDS for x in range(i + 1, s.phrase_end(i + 1))):
+            # "take the stairs", "use the side entrance": the way they go
+            place = self.places.phrase(i + 1, "obj:via", i, record_unknown=False)
+            c.has_action, c.intent = True, c.intent or "walk"  # a way the world lacks is still a way they go
+            if place is not None and place.match is not None:
+                c.places.append(place)
+                scan.used.update(range(i, place.end))
+                scan.pos = s.advance(scan.own, place.end)
+                return True
         obj = i + 2 if nxt in ("up", "down", "off") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
         nxt = s.low[obj] if obj < s.n else ""
+        if v in lx.LEADING_VERBS and any(s.lemma(x) in lx.CARRYING_THINGS for x in range(obj, s.phrase_end(obj))):
+            return False  # "pushes a wheelchair", "wheels his father's bed": what someone is taken in, no place
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
                 and v not in lx.ROBOT_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(obj))
                 and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))
@@ -551,8 +563,10 @@ class Clauses:
         while j > previous_last and (not s.is_punct(j) or s.hyphen_inside(j)) and s.low[j] not in lx.CLAUSE_STARTERS:
             j -= 1
         fronted = range(j + 1, b)
-        if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"} or j == previous_last:
-            return first  # right after the group before, the phrase is its ("8 ppl in line at the desk, 2 more at ...")
+        if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
+            return first
+        if j == previous_last:
+            return first  # "8 people in line at the desk, 2 more at ...": the phrase is the group's before
         if any(s.w[x].pos == "VERB" and verb_lemma(s.low[x]) in lx.INTENT_VERBS
                and not s.index.knows(lemma(s.low[x])) for x in fronted):
             return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)

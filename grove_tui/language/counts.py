@@ -149,6 +149,8 @@ def _number_quantifier(s: Sentence, num: tuple[int, int], approx: bool) -> Quant
     value, after = num
     if tuple(low[after:after + 2]) == ("or", "so"):
         return Quantifier(value, "approximate", after + 2)  # "fifteen or so women"
+    if tuple(low[after:after + 2]) == ("or", "thereabouts"):
+        return Quantifier(value, "approximate", after + 2)  # "forty or thereabouts"
     if after < s.n and low[after] == "odd":
         return Quantifier(value, "approximate", after + 1)  # "twenty-odd customers"
     if tuple(low[after:after + 2]) == ("-", "odd"):

@@ -72,6 +72,13 @@ class Groups:
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             words = _GroupWords(m, clause, scenes.get(s.w[m.first].sentence), self._own_span(spans[k], m, robot_tokens))
             groups.append(self.group(words, evacuation, groups))
+        for k, m in enumerate(mentions):
+            g = groups[k]
+            parent = int((g.relation or "").partition(":")[2]) if (g.relation or "").startswith("others_of:") else None
+            if m.rest_of_parent and parent is not None and g.intent == "wait" and groups[parent].location and \
+                    not (g.location or g.start or g.destination or g.via):
+                # "two of them go to the kitchen and the others stay": where their group is
+                groups[k] = replace(g, location=groups[parent].location)
         # "everyone has gone home (except ...)", "after everyone has left": people no longer there
         gone = [k for k, m in enumerate(mentions) if m.whole_zone and m.relation is None
                 and self._already_gone(spans[k]) and len(mentions) > 1]
@@ -107,6 +114,8 @@ class Groups:
         phrases after it, up to a verb, a punctuation mark or a clause word."""
         s = self.s
         j = m.last + 1
+        if m.fronted:  # "Of the thirty people watching the fountain, five ...": up to the comma
+            return next((x for x in range(j, s.n) if s.is_punct(x)), s.n)
         while j < s.n and not s.is_punct(j) and s.low[j] not in lx.CLAUSE_STARTERS and not (
                 s.is_verb(j) or self.mentions.people.third_person_verb(j) or s.w[j].dep == "ROOT"
                 or (verb_lemma(s.low[j]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(j)))):

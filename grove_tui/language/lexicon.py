@@ -35,7 +35,9 @@ NUMBER_WORDS = frozenset(UNITS) | frozenset(TENS) | frozenset(SCALES) | {"dozen"
 # Words before a number that make it approximate ("about twenty people"): the value stays the
 # number, the range is +-APPROXIMATE_SPREAD of it.
 APPROXIMATE_WORDS = frozenset("about around approximately roughly nearly almost circa some maybe perhaps".split())
-APPROXIMATE_PHRASES = (("close", "to"), ("more", "or", "less"), ("up", "to"), ("at", "least"), ("at", "most"))
+APPROXIMATE_PHRASES = (("close", "to"), ("more", "or", "less"), ("up", "to"), ("at", "least"), ("at", "most"),
+                       ("give", "or", "take"), ("in", "the", "region", "of"), ("something", "like"),
+                       ("upwards", "of"), ("just", "under"), ("just", "over"), ("a", "little", "over"))
 APPROXIMATE_SPREAD = 0.2
 
 # Vague quantity words -> (low, high) head counts.
@@ -249,6 +251,8 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("line", "up"): "queue", ("wait", "in", "line"): "queue", ("stand", "in", "line"): "queue",
     ("wait", "in", "a", "line"): "queue", ("wait", "their", "turn"): "queue", ("wait", "for", "their", "turn"): "queue",
     ("form", "a", "line"): "queue", ("form", "a", "queue"): "queue", ("get", "in", "line"): "queue",
+    ("take", "turns"): "queue", ("take", "their", "turn"): "queue", ("await", "their", "turn"): "queue",
+    ("in", "the", "line"): "queue", ("queue", "up"): "queue", ("on", "the", "waiting", "list"): "queue",
     ("mill", "around"): "wander", ("mill", "about"): "wander", ("walk", "around"): "wander",
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
     ("hang", "out"): "converse", ("hang", "around"): "wait", ("hang", "about"): "wait",
@@ -265,7 +269,11 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # the subject walks the route, the object follows.
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel roll carry help assist "
-                          "support transport walk drag pull haul hurry rush move evacuate transfer ferry relocate".split())
+                          "support transport walk drag pull haul hurry rush move evacuate transfer ferry relocate "
+                          "piggyback cradle chaperone steer tow".split())
+# What a person is carried or pushed in: "pushes his father's wheelchair" takes the father along.
+CARRYING_THINGS = frozenset("wheelchair pram buggy stroller pushchair bed trolley stretcher gurney chair scooter "
+                            "cot crib".split())
 # Verbs by which someone sends people elsewhere without going along ("a guard sends the visitors out of
 # the café", "the manager tells the interns to go to the boardroom"): the people go, the sender stays.
 SENT_VERBS = frozenset("send tell order ask direct call wave shoo summon instruct urge".split())
@@ -288,6 +296,12 @@ THING_OR_PLACE_VERBS = frozenset("clean mop sweep vacuum hoover scrub tidy searc
 SEEN_OBJECT_VERBS = frozenset({"watch"})
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
 VIA_OBJECT_VERBS = frozenset("cross pass traverse".split())
+# Verbs whose object, when it is a way through ("take the stairs", "use the side entrance"), is a place
+# passed on the way: "Three developers take the stairs to the kitchen".
+ROUTE_OBJECT_VERBS = frozenset("use take".split())
+PASSAGE_WORDS = frozenset("stair stairs staircase stairway stairwell steps lift elevator escalator travelator door "
+                          "doorway entrance exit gate ramp corridor hallway passage passageway walkway path route bridge "
+                          "footbridge tunnel underpass shortcut turnstile barrier gateline".split())
 OBJECT_VERBS = START_OBJECT_VERBS | DESTINATION_OBJECT_VERBS | LOCATION_OBJECT_VERBS | VIA_OBJECT_VERBS
 ARRIVAL_VERBS = frozenset("arrive come enter reach return gather meet end deliver drop bring".split())
 # "buy tickets from the machines": after these, `from` says where the thing is got, so where people stand.
@@ -320,7 +334,8 @@ ROBOT_PREPOSITIONS = frozenset("past by between among around round behind beside
 ROBOT_FOLLOW_VERBS = frozenset("follow trail accompany shadow tail chase pursue".split())
 ROBOT_CROSS_VERBS = frozenset("cross pass traverse drive roll glide move navigate travel deliver carry bring fetch "
                               "transport head go leave enter return zoom trundle come reach visit proceed rush hurry "
-                              "ride run walk lead guide escort take make get exit arrive depart".split())
+                              "ride run walk lead guide escort take make get exit arrive depart zip whizz whiz "
+                              "scoot whoosh sail slide shuffle crawl creep".split())
 # Verbs of sending the robot somewhere: "send the robot to ward A", "have the robot wait by the door".
 ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct program command dispatch "
                                 "instruct".split())

@@ -31,3 +31,5 @@ class Mention:
     robot_object: str | None = None  # "led": the robot escorts them; "followed": the robot follows them
     whole: Mention | None = None  # "two of the six developers": the group named inside, added before this part
     partitive: bool = False  # the group named inside a part ("the six developers"): stays where it is said to be
+    fronted: bool = False  # a whole said before its part ("Of the thirty people at the fountain, five ..."): its
+    #                        words run to the comma

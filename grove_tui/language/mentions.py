@@ -47,8 +47,15 @@ class Mentions:
     def find(self) -> list[Mention]:
         s = self.s
         found: list[Mention] = []
+        fronted: int | None = None  # a whole said before its part ("Of the twelve nurses on the ward, two ...")
         i = 0
         while i < s.n:
+            whole = self.partitives.fronted_whole(i) if fronted is None else None
+            if whole is not None:
+                fronted = len(found)
+                found.append(whole)
+                i = whole.last + 1
+                continue
             if negative_at(s, i):
                 end = next((k for k in range(i + 1, min(i + 5, s.n)) if self.people.is_person_noun(k)), i)
                 self.problems.append(f"'{s.span(i, end)}' is a negative number of people; give a whole number of "
@@ -57,6 +64,10 @@ class Mentions:
                 i += 1
                 continue
             m = self.mention_at(i, found)
+            if m is not None and m.count is not None and m.count.kind == "exact" and m.first == i:
+                m = self._approximated(m, found)
+            if fronted is not None and m is None:
+                m = self._bare_count(i, found[fronted])
             if m is not None and m.collective is not None and m.first == m.last and 0 < m.first and \
                     s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \
                     not self.people.third_person_verb(m.last + 1):
@@ -75,7 +86,7 @@ class Mentions:
                 before.count, before.label, before.apposition = m.count, m.label, (m.first, m.last)
                 i = m.last + 1
                 continue
-            if found and self._apposition(found[-1], m, len(found) - 1):
+            if found and not found[-1].fronted and self._apposition(found[-1], m, len(found) - 1):
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
                 assert count is not None
@@ -93,6 +104,10 @@ class Mentions:
             m.robot_object = self.objects.robot_object(m.first)
             if m.zone_place is None and not m.whole_zone:
                 m.zone_place = self.possessor_place(m.first)
+            if fronted is not None and m.relation is None and m.whole is None and m.count is not None and \
+                    m.label in ("person", found[fronted].label) and s.w[m.first].sentence == s.w[found[fronted].first].sentence:
+                self.partitives.fronted_part(m, found[fronted], fronted)
+            fronted = None
             if m.whole is not None:
                 # "two of the six developers": the six first, the two a subset of them
                 found.append(m.whole)
@@ -100,6 +115,36 @@ class Mentions:
             found.append(m)
             i = m.last + 1
         return found
+
+    def _approximated(self, m: Mention, found: list[Mention]) -> Mention:
+        """The mention with the approximation said right before its number ("By nine about thirty
+        developers", "at noon roughly 60 commuters"), when the phrase was found at the number, or said after
+        it ("twenty developers, give or take,")."""
+        s = self.s
+        for j in range(m.first - 1, max(-1, m.first - 5), -1):
+            if s.is_punct(j):
+                break
+            q = quantifier(s, j)
+            if q is not None and q.kind == "approximate" and number_at(s, j) is None and \
+                    any(number_at(s, k) is not None and k == m.first for k in range(j + 1, q.end)):
+                wider = self.mention_at(j, found)
+                if wider is not None and wider.last == m.last and wider.count is not None:
+                    return wider
+        after = tuple(s.low[m.last + 1:m.last + 5])
+        count = m.count
+        if count is not None and count.kind == "exact" and count.value > 1 and (
+                after == (",", "give", "or", "take") or after[:3] in ((",", "or", "thereabouts"), ("give", "or", "take"))):
+            spread = max(1, round(count.value * lx.APPROXIMATE_SPREAD))  # "twenty developers, give or take,"
+            m.count = Count("approximate", count.value, count.value - spread, count.value + spread)
+        return m
+
+    def _bare_count(self, at: int, whole: Mention) -> Mention | None:
+        """A bare count right after a whole said first, before any verb ("..., three get up and ...")."""
+        s = self.s
+        num = quantifier(s, at)
+        if num is None or at == 0 or s.low[at - 1] != "," or num.end >= s.n or not s.is_verb(num.end):
+            return None
+        return Mention(at, num.end - 1, s.span(at, num.end - 1), whole.label, count_of(s, num, f"{at}:part"))
 
     def _members_of_collective(self, before: Mention, m: Mention) -> bool:
         """Whether m, after "with" in the same sentence, counts the people of a collective said with
@@ -235,18 +280,28 @@ class Mentions:
         determiners, numbers and adjectives, then a person noun the parser calls the subject."""
         s = self.s
         if at > 0 and s.w[at - 1].pos in ("DET", "ADJ", "NUM") and not (
-                s.w[at - 1].pos == "NUM" and s.w[at - 1].head < at - 1 and s.low[at] in lx.DETERMINERS):
+                s.w[at - 1].pos == "NUM" and s.w[at - 1].head < at - 1 and s.low[at] in lx.DETERMINERS | lx.APPROXIMATE_WORDS):
             return False  # inside a noun phrase that starts earlier ("the only people"); not "At 8:15 the ..."
         if at > 0 and s.w[at - 1].pos == "SCONJ" and s.low[at - 1] not in lx.CLAUSE_STARTERS:
             return False  # "... until someone collects them", "if anyone asks": nobody who is there
-        for k in range(at, min(at + 5, s.n)):
+        q = quantifier(s, at)
+        begin = at
+        if q is not None and q.kind == "approximate" and number_at(s, at) is None:
+            # "At rush hour about 200 commuters ...", "On Saturday some forty shoppers ...": the
+            # approximation is the phrase's first word; its number and noun follow
+            begin = next((k for k in range(at + 1, q.end) if number_at(s, k) is not None), at)
+        for k in range(begin, min(begin + 5, s.n)):
             if s.low[k] in lx.NOBODY_WORDS:
                 return False
             if self.people.is_person_noun(k):
                 head = s.w[k].head
                 # the small model may tag the verb a noun ("the commuters on platform 1 walk to ...")
-                return s.w[k].dep in ("nsubj", "nsubjpass") and (s.w[head].pos in ("VERB", "AUX") or (
-                    head > k and verb_lemma(s.low[head]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(head))))
+                verb_noun = head > k and verb_lemma(s.low[head]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(head))
+                if s.w[k].dep == "compound" and head == k + 1 and s.lemma(k) != s.low[k] and \
+                        s.lemma(head) == s.low[head] and verb_lemma(s.low[head]) in lx.INTENT_VERBS and (
+                            not s.index.knows(s.lemma(head)) or (head + 1 < s.n and s.low[head + 1] in lx.PLACE_PREPOSITIONS)):
+                    return True  # "After lunch twelve patients queue at ...": the verb tagged a noun they name
+                return s.w[k].dep in ("nsubj", "nsubjpass") and (s.w[head].pos in ("VERB", "AUX") or verb_noun)
             if s.w[k].pos not in ("DET", "NUM", "ADJ") and s.low[k] not in lx.NP_MODIFIERS:
                 return False
         return False
@@ -333,6 +388,12 @@ class Mentions:
                 inner.first = at
                 inner.who = s.span(at, inner.last)
             return inner
+        carried = self.objects.carried_owner(at) if self.objects.led_by(at) else None
+        if carried is not None:  # "pushes his father's wheelchair": the father, taken along
+            person, thing = carried
+            plural = s.lemma(person) != low[person] or low[person + 1] in ("'", "s'")
+            return Mention(at, thing, s.span(at, thing), self.people.label(person),
+                           Count("vague", s.choose(2, 3, f"{at}:carried"), 2, 3) if plural else Count("exact", 1, 1, 1))
         num = quantifier(s, at)
         part = self.partitives.part_of(at, num, found, self.parent(found))
         if part is not None:

@@ -28,7 +28,21 @@ class PeopleObjects:
         q = quantifier(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
-        return self.people.person_head(start, counted=q is not None) is not None
+        return self.people.person_head(start, counted=q is not None) is not None or self.carried_owner(at) is not None
+
+    def carried_owner(self, at: int) -> tuple[int, int] | None:
+        """(the person, the thing) when the phrase at `at` names what someone is carried or pushed in,
+        by its owner: "his father's wheelchair", "the toddler's buggy", "their gran's wheelchair"."""
+        s = self.s
+        k = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS | {"his", "her", "their", "my", "our"})
+        while k < s.n and s.w[k].pos == "ADJ" and not self.people.is_person_noun(k):
+            k += 1
+        if k + 2 >= s.n or not self.people.is_person_noun(k) or s.low[k + 1] not in ("'s", "’s", "'", "s'"):
+            return None
+        thing = k + 2
+        while thing < s.n and s.w[thing].pos == "ADJ":
+            thing += 1
+        return (k, thing) if thing < s.n and s.lemma(thing) in lx.CARRYING_THINGS else None
 
     def sent_by(self, at: int) -> bool:
         """Whether the phrase at `at` names people a person right before sends somewhere ("a guard

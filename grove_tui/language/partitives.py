@@ -4,7 +4,10 @@ them", "two of the six developers", "half of the 20 students", "one of the guard
 Part of a group said before is a subset of it (`subset_of`). Part of a group named only inside the
 phrase ("two of the six developers at their desks follow it around") makes two mentions: the whole
 group (six developers, who stay where the phrase puts them) and the part that does the clause's
-verb, a subset of it, so the whole keeps only the rest (`model.effective_counts`)."""
+verb, a subset of it, so the whole keeps only the rest (`model.effective_counts`). The whole may be
+said first, before the part: "Of the thirty people watching the fountain, five wander off", "Out of
+forty passengers on the platform, ten ...": the whole is what the words before the comma say they do,
+and the first count after it is its part."""
 
 from __future__ import annotations
 
@@ -87,6 +90,39 @@ class Partitives:
             more = count.value + 1
             whole.count = replace(whole.count, value=more, low=max(whole.count.low, more), high=max(whole.count.high, more))
         return Mention(at, head, s.span(at, head), label, count, whole=whole)
+
+    def fronted_whole(self, at: int) -> Mention | None:
+        """The whole said before its part at a clause's start ("Of the 12 nurses on the ward, two go
+        ...", "Out of forty passengers, ten ..."), when a comma and a count follow in its sentence."""
+        s = self.s
+        low = s.low
+        k = at + 2 if tuple(low[at:at + 2]) == ("out", "of") else at + 1 if low[at] == "of" else None
+        if k is None or k >= s.n or (at > 0 and not s.is_punct(at - 1) and low[at - 1] not in lx.CLAUSE_STARTERS):
+            return None
+        det = k
+        k = s.skip(k, {"the", "those", "these", "all", "their", "our"})
+        inner = quantifier(s, k)
+        start = inner.end if inner is not None and inner.kind in ("exact", "approximate") else k
+        head = self.people.person_head(start, counted=start > k)
+        if head is None or (inner is not None and start == k):
+            return None
+        comma = next((j for j in range(head + 1, s.n) if s.is_punct(j) or s.w[j].sentence != s.w[at].sentence), None)
+        if comma is None or low[comma] != "," or comma + 1 >= s.n or quantifier(s, comma + 1) is None:
+            return None
+        whole = self._whole(det, head, inner if start > k else None, self.people.label(head))
+        whole.first, whole.who, whole.fronted = at, s.span(det, head), True
+        return whole
+
+    def fronted_part(self, m: Mention, whole: Mention, index: int) -> None:
+        """Makes m, the first count after a whole said first, its part: a subset, as many as said,
+        and the whole more than that."""
+        m.relation = f"subset_of:{index}"
+        if m.label == "person":
+            m.label = whole.label
+        if m.count is not None and whole.count is not None and whole.count.value <= m.count.value:
+            more = m.count.value + 1
+            whole.count = replace(whole.count, value=more, low=max(whole.count.low, more),
+                                  high=max(whole.count.high, more))
 
     def _fraction(self, at: int) -> tuple[float | None, int | None]:
         low = self.s.low

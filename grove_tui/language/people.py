@@ -45,7 +45,8 @@ class People:
             return False
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
             return True
-        if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i):
+        if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
+                self._reflexive_agent(i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
@@ -89,6 +90,17 @@ class People:
                 and not s.index.knows(lem)
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
                 and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
+
+    def _reflexive_agent(self, i: int) -> bool:
+        """A noun in no list, ending like an agent's, that does something to itself ("a prankster
+        parks himself in front of ...", "the juggler plants herself by ...", "two hecklers position
+        themselves"): a person, however the parser tagged its verb."""
+        s = self.s
+        if i + 2 >= s.n or s.low[i + 2] not in ("himself", "herself", "themselves") or \
+                s.w[i].pos not in ("NOUN", "PROPN") or not s.low[i + 1].isalpha():
+            return False
+        lem = s.lemma(i)
+        return len(lem) >= 5 and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and not self._a_thing(lem)
 
     def _agent_going(self, i: int) -> bool:
         """A noun for someone no list names, the subject of a verb of going or staying that things

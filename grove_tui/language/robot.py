@@ -26,6 +26,8 @@ from grove_tui.language.tokens import verb_lemma
 _TASK_VERBS = lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS
 # The robot switched off where it is ("the robot powers down in the kitchen"): waiting there.
 _OFF_PHRASES = frozenset({("power", "down"), ("shut", "down"), ("switch", "off"), ("turn", "off"), ("power", "off")})
+# Words after a verb of motion that say the robot goes by ("rolls past", "glides by", "zips along").
+_PASSING_WORDS = frozenset("past by through along across over".split())
 _PEOPLE_PRONOUNS = ("they", "he", "she", "we", "people", "everyone", "everybody", "someone", "somebody",
                     "nobody", "visitors", "staff")
 
@@ -209,7 +211,7 @@ class RobotClauses:
                 verb, s.low[rc.verb + 1] if rc.verb + 1 < s.n else "") in _OFF_PHRASES)
             kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
             if kind is None:
-                if not any(p.match is not None for p in clause.places):
+                if not any(p.match is not None for p in clause.places) and not self._passes_by(rc.verb):
                     continue
                 kind = "cross"
                 task_confidence = FieldConfidence("task", 0.6, f"'{verb}' is read as the robot going somewhere")
@@ -230,7 +232,8 @@ class RobotClauses:
                     roles[role] = name  # the last destination said, the first start and location
             texts.append(s.span(rc.tokens[0], rc.tokens[-1]))
         start, destination, location = roles["start"], roles["destination"], roles["location"]
-        if task is None or (task == "cross" and not (start or destination or via)):
+        if task is None or (task == "cross" and not (start or destination or via)
+                            and not any(self._passes_by(rc.verb) for rc in found)):
             return None  # "when the robot comes near": it moves, but the sentence sets no route
         if task in ("wait", "patrol") and location is None:
             location = destination or (via[0] if via and task == "patrol" else None)
@@ -242,6 +245,16 @@ class RobotClauses:
             confidence.insert(0, task_confidence)
         return RobotReading(task, start, destination, location, tuple(via), " ... ".join(texts), tuple(confidence),
                             follows)
+
+    def _passes_by(self, verb: int | None) -> bool:
+        """Whether the robot's verb says it goes by, though no place is named ("as it rolls past",
+        "glides by", "trundles through", "zips along", "as it passes"): crossing the scene."""
+        s = self.s
+        if verb is None or s.verb(verb) in lx.ROBOT_WAIT_VERBS | lx.ROBOT_FOLLOW_VERBS:
+            return False
+        nxt = s.low[verb + 1] if verb + 1 < s.n else ""
+        return nxt in _PASSING_WORDS or (s.verb(verb) in lx.VIA_OBJECT_VERBS and (not nxt or s.is_punct(verb + 1)
+                                                                                  or nxt in lx.CLAUSE_STARTERS))
 
     def _after_a_thing_gone_to(self, place: Place, clause: Clause) -> bool:
         """Whether the place says where a thing the robot goes to is ("goes to its dock in the

@@ -33,6 +33,8 @@ _FOR_TO = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bby)(?<!\bfrom)(?<!\buntil)(?<
                      re.IGNORECASE)
 # "~30 pax", "~ 10 people": about so many
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
+# "30-ish visitors", "20ish ppl": about so many
+_ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 
 
 def normalise(text: str) -> str:
@@ -41,7 +43,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
-    kept = _TILDE.sub("about ", _AT_SIGN.sub("at ", kept))
+    kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     return " ".join(kept.split())
