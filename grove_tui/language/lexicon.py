@@ -531,3 +531,8 @@ STOPWORDS = frozenset(
     other others one ones do does did have has had will would should can could may might must let lets make makes
     while during after before until still again more most many much few several""".split()
 )
+# Where a person is held or led "by": body parts and clothes, never a place of the world ("leads her by the
+# hand", "grabs him by the sleeve"); only after "by", so "the hand-wash station" or "an arm chair" still match.
+HELD_BY = frozenset(
+    """arm arms hand hands elbow elbows wrist wrists shoulder shoulders finger fingers thumb neck nose ear ears
+    hair collar sleeve sleeves scruff coat jacket hood lead leash strap belt""".split())

@@ -146,6 +146,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person
             # has or wears, not where they are ("a man on a bench" is still the bench)
             return None
+        if prep == "by" and lemmas and lemmas[-1] in lx.HELD_BY and (match is None or not match.exact):
+            return None  # "leads a pupil by the arm", "by the scruff of his collar": where one is held, no place
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
