@@ -290,9 +290,13 @@ class Mentions:
             # "At rush hour about 200 commuters ...", "On Saturday some forty shoppers ...": the
             # approximation is the phrase's first word; its number and noun follow
             begin = next((k for k in range(at + 1, q.end) if number_at(s, k) is not None), at)
+        number = number_at(s, begin)
+        count_end = number[1] if number is not None else begin  # "a dozen", "half a dozen": words of the count
         for k in range(begin, min(begin + 5, s.n)):
             if s.low[k] in lx.NOBODY_WORDS:
                 return False
+            if k < count_end:
+                continue
             if self.people.is_person_noun(k):
                 head = s.w[k].head
                 # the small model may tag the verb a noun ("the commuters on platform 1 walk to ...")
