@@ -141,8 +141,15 @@ PERSON_NOUNS = frozenset(
  spokesperson presenter host moderator panelist panellist attendee exhibitor organiser organizer
  planner coordinator volunteer helper aide assistant intern understudy deputy
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
- wheelchair-user amputee patient sufferer sitter dogsitter housesitter""".split()
+ wheelchair-user amputee patient sufferer sitter dogsitter housesitter
+ coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller""".split()
 )
+# Last parts of a compound that names a person ("lifeguard", "groundsman", "goalkeeper", "headteacher"),
+# with at least three letters before them; not the things so named ("mudguard", "ottoman").
+COMPOUND_PERSON_HEADS = ("guard", "man", "woman", "keeper", "boy", "girl", "maid", "master", "mistress", "wife",
+                         "worker", "teacher", "fighter", "minder", "person", "goer", "watcher", "seller", "leader")
+COMPOUND_THINGS = frozenset("safeguard mudguard fireguard vanguard rearguard ottoman walkman caiman dolman "
+                            "human".split())
 # Kinds of people a place can belong to, by the kind it counts as: "their room" said of teenagers
 # is the kids' room, "his office" said of the boss is the manager's office.
 OWNER_KINDS: dict[str, str] = {}
@@ -208,6 +215,12 @@ HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate 
 # ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
 THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "
                         "contain lean".split())
+# Person words that name things too ("two fans whir", "the runner lies along the hall"): only these
+# are taken for things by any verb above; any other person leans, hangs or lines up as people do
+# ("the porter leans against the wall"), and is a thing only by a verb of sound or light.
+PERSON_THINGS = frozenset("fan guide host party crew runner walker driver cook monitor sitter speaker "
+                          "conductor".split())
+SOUND_LIGHT_VERBS = frozenset("tick glow shine flash beep buzz hum whir whirr".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
                             "them", "they", "others", "other", "rest", "more"})
@@ -348,7 +361,8 @@ for _interaction, _verbs in {
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
-             "hit punch",
+             "hit punch push slap smack thump whack bash ram barge heckle taunt abuse grab tip topple vandalise "
+             "vandalize headbutt",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)
@@ -373,7 +387,18 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("shrink", "back"): "avoid", ("draw", "back"): "avoid", ("pull", "back"): "avoid", ("jump", "back"): "avoid",
     ("back", "off"): "avoid", ("get", "out", "of", "the", "way"): "avoid", ("make", "way"): "avoid",
     ("edge", "away"): "avoid", ("scuttle", "away"): "avoid",
+    ("square", "up", "to"): "block", ("barge", "into"): "block", ("push", "into"): "block",
 }
+# Hostility to the robot (reactions.py): shouting or throwing something at it ("shouts at the robot",
+# "throws a cup at the robot"), not shouting alone ("kids shout with excitement"); refusing or failing to give way ("won't let it pass", "refuses to budge for the robot",
+# "doesn't make way for it") is blocking it.
+HOSTILE_AT_VERBS = frozenset("throw hurl fling chuck toss lob aim shout yell holler swear curse jeer spit snarl "
+                              "growl bark".split())
+WAY_GIVING_VERBS = frozenset("let move budge shift give make step get".split())
+REFUSALS = frozenset("not n't never refuse refuses refused refusing won't".split())
+# Verbs of contact that are hostile only with the robot for object or after "into"/"at": "pushes past
+# the robot" is passing it.
+PASSING_AFTER = frozenset("past by around round".split())
 # Words that may stand inside a robot phrase without changing it ("keep well clear", "steer
 # completely clear", "stand right in front of").
 ROBOT_PHRASE_FILLERS = frozenset("well very far right completely quite just deliberately carefully".split())

@@ -14,6 +14,13 @@ from grove_tui.language.tokens import verb_lemma
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
 
+def compound_person(lem: str) -> bool:
+    """Whether a word is a compound naming a person ("lifeguard", "groundsman", "goalkeeper"): a
+    person's word after at least three letters, and no thing so named ("mudguard")."""
+    return lem.isalpha() and lem not in lx.COMPOUND_THINGS and lem not in lx.NON_PEOPLE and any(
+        lem.endswith(head) and len(lem) - len(head) >= 3 for head in lx.COMPOUND_PERSON_HEADS)
+
+
 class People:
     """Who is a person in one sentence (a noun of the lexicon's list, a misspelling of one that is no
     English word, the subject of a verb only people do, or a counted noun that does more than things
@@ -45,6 +52,8 @@ class People:
             return False
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
             return True
+        if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
+            return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i):
             return True
@@ -145,7 +154,10 @@ class People:
         # sommelier goes to the cellar"): a person, rather than a crowd nobody named.
         placed = verb in lx.PEOPLE_GOING_VERBS and head + 1 < s.n and (
             s.preposition(head + 1) is not None or s.low[head + 1] in lx.DETERMINERS)
-        return placed or not any(s.lemma(k) in lx.PERSON_NOUNS or s.low[k] in lx.PERSON_NOUNS
+        # Other people named only as its object do not make it one of a crowd ("the phrenologist sits
+        # with a patient"); another subject does ("the developer and two interns go ...").
+        return placed or not any((s.lemma(k) in lx.PERSON_NOUNS or s.low[k] in lx.PERSON_NOUNS)
+                                 and s.w[k].dep not in ("pobj", "dobj", "obj")
                                  for k in range(s.n) if k != i)
 
     def _a_thing(self, lem: str) -> bool:
@@ -264,6 +276,8 @@ class People:
             return False
         has_object = any(w.head == word.head and w.dep in ("dobj", "obj") for w in s.w)
         verb = s.verb(word.head)
+        if s.lemma(k) not in lx.PERSON_THINGS and verb not in lx.SOUND_LIGHT_VERBS:
+            return False  # "the porter leans against the wall": a person, whatever things do too
         return (verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
                 and not self._phrasal_after(word.head))
 

@@ -33,14 +33,32 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         since = robot_at[n_mention - 1] if n_mention else -1
         found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r) or _noun_after(s, ownset, r)
                  or _passive(s, r))
+        if found == "avoid" and _refused(s, own, r):
+            return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
         if found is not None:
             return found
+    if any(_refused(s, own, r) for r in robot_at):
+        return "block"  # "won't let it pass", "won't budge for the robot"
     for i in own:
         if s.low[i] in lx.ROBOT_FEELINGS:
             return lx.ROBOT_FEELINGS[s.low[i]]
     if any(s.low[r - 1] == "at" or (s.low[r - 1] == "the" and s.low[r - 2] == "at") for r in robot_at if r >= 2):
+        if any(s.verb(i) in lx.HOSTILE_AT_VERBS for i in own if i < robot_at[-1]):
+            return "block"  # "throws a cup at the robot"
         return "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
     return None
+
+
+def _refused(s: Sentence, own: Sequence[int], r: int) -> bool:
+    """Whether the clause refuses the robot its way before the robot at r: a negation or "refuse"
+    then, within three words, a verb of giving way ("won't let the robot through", "refuses to budge
+    for it", "doesn't move out of its way")."""
+    before = [i for i in own if i < r]
+    for n, i in enumerate(before):
+        if s.low[i] in lx.REFUSALS or s.verb(i) == "refuse":
+            if any(s.verb(k) in lx.WAY_GIVING_VERBS or s.verb(k) == "budge" for k in before[n + 1:n + 4]):
+                return True
+    return False
 
 
 # Reactions said with no object: "their grandparents shrink back", "a cleaner recoils".
@@ -107,6 +125,8 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
                     return "approach"  # "the twins toddle up to the robot"
             if _sent_to_robot(s, ownset, i, r):
                 return "approach"  # "hurries to the robot", "runs from the lobby to it"
+        if v in lx.ROBOT_VERBS and lx.ROBOT_VERBS[v] == "block" and i + 1 < s.n and s.low[i + 1] in lx.PASSING_AFTER:
+            continue  # "pushes past the robot": going by it
         if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
                 not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] == "look"):
             return lx.ROBOT_VERBS[v]

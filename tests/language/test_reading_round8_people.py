@@ -1,0 +1,84 @@
+"""Round 8 on people, counts, clauses and the robot, each class with sentences of its own over at least
+two worlds (none from the understanding sets): a single person named by a role with "the", whatever
+the world names after that role or the verb things do too; hostility to the robot (blows, shouting or
+throwing at it, refusing it the way) is blocking it."""
+
+from __future__ import annotations
+
+import pytest
+
+
+def one(reading):
+    assert reading.unknown_places == (), reading.unknown_places
+    assert len(reading.groups) == 1, reading.groups
+    return reading.groups[0]
+
+
+# ---- 1. one person named by a role ----------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,place", [
+    ("sports_centre", "The lifeguard sits in the high chair for twenty minutes", "lifeguard", "lifeguard_chair"),
+    ("sports_centre", "the lifeguard walks over to reception", "lifeguard", "reception_desk"),
+    ("sports_centre", "The coach waits by the pool until the lesson ends", "coach", "pool_hall"),
+    ("sports_centre", "the referee stands in the sports hall all evening", "referee", "sports_hall"),
+    ("library", "The bookseller reads to children in the reading room", "bookseller", "reading_room"),
+    ("hospital", "The chaplain sits with a patient on the ward", "chaplain", "ward_a"),
+    ("station", "the signalwoman waits on platform 2", "signalwoman", "platform_2"),
+    ("mall", "The doorkeeper stands by the fountain for an hour", "doorkeeper", "fountain"),
+])
+def test_a_role_with_the_is_one_person(read, world, prompt, label, place):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.kind, g.count.value) == (label, "exact", 1)
+    assert place in (g.location, g.destination)
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "the porter leans against the pharmacy counter for ten minutes", "porter"),
+    ("library", "The librarian leans on the issue desk all afternoon", "librarian"),
+    ("office", "three cleaners lean on their mops in the kitchen", "cleaner"),
+])
+def test_a_person_leaning_is_no_thing(read, world, prompt, label):
+    g = one(read(world, prompt))
+    assert g.label == label and g.intent == "wait"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Two fans whir in the server room."),
+    ("sports_centre", "A new mudguard sits by the entrance."),
+])
+def test_things_named_like_people_stay_things(read, world, prompt):
+    assert all(g.label == "person" and g.count.kind != "exact" for g in read(world, prompt).groups)
+
+
+# ---- 2. hostility to the robot is blocking it ---------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt", [
+    ("library", "a student squares up to the robot by the entry gates"),
+    ("hospital", "A drunk visitor squares up to the robot in the corridor"),
+    ("mall", "a teenager won't let the robot through"),
+    ("station", "a commuter won't budge for the robot"),
+    ("office", "an intern refuses to get out of the robot's way"),
+    ("hospital", "a porter doesn't make way for the robot"),
+    ("mall", "two lads shout at the robot"),
+    ("sports_centre", "a footballer yells at the robot"),
+    ("airport", "a passenger throws a cup at the robot"),
+    ("mall", "a kid pushes the robot"),
+    ("museum", "a toddler slaps the robot"),
+    ("station", "a man barges into the robot"),
+    ("sports_centre", "some teenagers try to tip the robot over"),
+    ("library", "a reader grabs the robot and won't let go"),
+])
+def test_hostility_to_the_robot_is_blocking_it(read, world, prompt):
+    g = one(read(world, prompt))
+    assert (g.robot_interaction, g.robot_reaction) == ("block", "Threatening")
+
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("museum", "kids shout with excitement when the robot rolls in", None),
+    ("station", "a man pushes past the robot", None),
+    ("mall", "a mother pushes a pram past the robot", None),
+    ("office", "a cleaner steps aside to let the robot through", "avoid"),
+    ("sports_centre", "a parent glares at the robot", "look"),
+])
+def test_not_every_shout_or_push_is_hostile(read, world, prompt, interaction):
+    assert one(read(world, prompt)).robot_interaction == interaction
