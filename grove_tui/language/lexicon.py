@@ -219,7 +219,10 @@ THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whi
 # are taken for things by any verb above; any other person leans, hangs or lines up as people do
 # ("the porter leans against the wall"), and is a thing only by a verb of sound or light.
 PERSON_THINGS = frozenset("fan guide host party crew runner walker driver cook monitor sitter speaker "
-                          "conductor".split())
+                          "conductor class tour".split())
+# What an event does, said of a word for people that names an event too ("once the class ends, ...",
+# "when the tour finishes,"): no group, when nothing follows the verb in its clause.
+EVENT_VERBS = frozenset("end finish conclude begin start close break".split())
 SOUND_LIGHT_VERBS = frozenset("tick glow shine flash beep buzz hum whir whirr".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",

@@ -30,6 +30,8 @@ _POSSESSIVES = ("their", "his", "her", "our", "my")
 _WHEN_WORDS = frozenset("every often occasionally sometimes now then suddenly later soon eventually finally "
                         "meanwhile once regularly periodically".split())
 _TIME_WORDS = _WHEN_WORDS | frozenset("few so and in a while from time to couple of".split())
+# Words after a number that keep it a count ("twenty or so", "twenty-odd", "forty-plus").
+_COUNT_TAILS = frozenset("- or so odd more plus ish +".split())
 
 
 class Mentions:
@@ -295,15 +297,17 @@ class Mentions:
         for k in range(begin, min(begin + 5, s.n)):
             if s.low[k] in lx.NOBODY_WORDS:
                 return False
-            if k < count_end:
-                continue
+            if k < count_end or (k >= count_end > begin and s.low[k] in _COUNT_TAILS):
+                continue  # "a dozen", "twenty or so", "twenty-odd": words of the count
             if self.people.is_person_noun(k):
                 head = s.w[k].head
                 # the small model may tag the verb a noun ("the commuters on platform 1 walk to ...")
                 verb_noun = head > k and verb_lemma(s.low[head]) in lx.INTENT_VERBS and not s.index.knows(s.lemma(head))
-                if s.w[k].dep == "compound" and head == k + 1 and s.lemma(k) != s.low[k] and \
+                plural = s.lemma(k) != s.low[k] or count_end > begin  # "fifteen staff queue"
+                if s.w[k].dep == "compound" and head == k + 1 and plural and \
                         s.lemma(head) == s.low[head] and verb_lemma(s.low[head]) in lx.INTENT_VERBS and (
-                            not s.index.knows(s.lemma(head)) or (head + 1 < s.n and s.low[head + 1] in lx.PLACE_PREPOSITIONS)):
+                            not s.index.knows(s.lemma(head)) or head + 1 == s.n or s.is_punct(head + 1)
+                            or s.low[head + 1] in lx.PLACE_PREPOSITIONS):
                     return True  # "After lunch twelve patients queue at ...": the verb tagged a noun they name
                 return s.w[k].dep in ("nsubj", "nsubjpass") and (s.w[head].pos in ("VERB", "AUX") or verb_noun)
             if s.w[k].pos not in ("DET", "NUM", "ADJ") and s.low[k] not in lx.NP_MODIFIERS:

@@ -278,6 +278,9 @@ class People:
         verb = s.verb(word.head)
         if s.lemma(k) not in lx.PERSON_THINGS and verb not in lx.SOUND_LIGHT_VERBS:
             return False  # "the porter leans against the wall": a person, whatever things do too
+        if verb in lx.EVENT_VERBS and s.lemma(k) in lx.PERSON_THINGS and not has_object and (
+                word.head + 1 == s.n or s.is_punct(word.head + 1)):
+            return True  # "Once the class ends, ...": the lesson, no people
         return (verb in lx.THING_VERBS and verb not in lx.INTENT_VERBS and not has_object  # "line up" is people
                 and not self._phrasal_after(word.head))
 

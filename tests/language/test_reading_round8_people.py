@@ -1,7 +1,8 @@
 """Round 8 on people, counts, clauses and the robot, each class with sentences of its own over at least
 two worlds (none from the understanding sets): a single person named by a role with "the", whatever
 the world names after that role or the verb things do too; hostility to the robot (blows, shouting or
-throwing at it, refusing it the way) is blocking it."""
+throwing at it, refusing it the way) is blocking it; an approximate count after a fronted phrase of time
+or place ("At noon twenty or so ...", "During the lunch rush about fifteen staff ...")."""
 
 from __future__ import annotations
 
@@ -82,3 +83,28 @@ def test_hostility_to_the_robot_is_blocking_it(read, world, prompt):
 ])
 def test_not_every_shout_or_push_is_hostile(read, world, prompt, interaction):
     assert one(read(world, prompt)).robot_interaction == interaction
+
+
+# ---- 3. an approximate count after a fronted phrase ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("hospital", "During the lunch rush about fifteen staff queue in the cafeteria", "staff", 15),
+    ("sports_centre", "Once the class ends, about fifteen staff walk to the staff room", "staff", 15),
+    ("office", "At lunchtime twenty or so developers head to the kitchen", "developer", 20),
+    ("library", "When the bell goes, twenty or so students leave through the main entrance", "student", 20),
+    ("museum", "In the afternoon twenty-odd pupils wander through the Egyptian gallery", "pupil", 20),
+    ("station", "Every evening, thirty-odd commuters wait on platform 1", "commuter", 30),
+    ("mall", "Outside the cinema around forty teenagers queue", "teenager", 40),
+    ("library", "When the tour finishes, a dozen or so visitors go to the cafe", "visitor", 12),
+])
+def test_an_approximate_count_after_a_fronted_phrase(read, world, prompt, label, value):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.kind, g.count.value) == (label, "approximate", value)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("sports_centre", "the class starts in the studio"),
+    ("museum", "a school class ends its visit in the cafe"),
+])
+def test_a_class_with_a_place_is_still_people(read, world, prompt):
+    assert one(read(world, prompt)).label == "class"
