@@ -46,8 +46,11 @@ class Collectives:
         """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
         s = self.s
         noun = s.lemma(head)
-        if noun not in lx.IMPLIED_RANGES or self.people.multiword_end(head):
-            return None  # "the au pair" is no pair
+        if noun not in lx.IMPLIED_RANGES or (self.people.multiword_end(head) and noun not in lx.MULTIWORD_COLLECTIVES):
+            return None  # "the au pair" is no pair; "the cabin crew" is a crew
+        if noun in lx.MULTIWORD_COLLECTIVES and (number is not None and s.low[head] == noun or (
+                head + 1 < s.n and s.lemma(head + 1) == "member")):
+            return None  # "three cabin crew", "2 crew", "a crew member": its members counted
         low = s.low
         at = first if first is not None else head
         while at > 0 and first is None and (low[at - 1] in ("a", "an", "the") or low[at - 1] in lx.NP_MODIFIERS
@@ -69,7 +72,7 @@ class Collectives:
             # "groups of three or four", "pairs of tourists": several, however many is not said
             parties, exact_parties = s.choose(*lx.PLURAL_PARTIES_RANGE, f"{head}:groups"), False
         together = noun in lx.TOGETHER_COLLECTIVES
-        last, size, label = head, None, noun
+        last, size, label = head, None, self.people.label(head) if self.people.multiword_end(head) else noun
         loose: Quantifier | None = None
         if head + 2 < s.n and low[head + 1] == "of":
             loose = quantifier(s, head + 2)
@@ -83,16 +86,19 @@ class Collectives:
                 size = size or inner[0]
                 last = inner[1] - 1
                 member = self.people.person_head(inner[1], counted=True)
+                if member is not None and self._verb_after_count(member):
+                    member = None  # "a queue of 12 forms at the desk": no one "forms"; the verb
                 if member is not None and member <= inner[1] + 2:
                     last = member
-                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour"):
+                    if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour") or \
+                            noun in lx.VEHICLE_LOADS:
                         label = self.people.label(member)
             else:
                 member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
                 if member is not None:
                     last = member
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
-                                "couple", "pair", "handful"):
+                                "couple", "pair", "handful") or noun in lx.VEHICLE_LOADS:
                         label = self.people.label(member)
         if label == noun and head > 0 and self.people.is_person_noun(head - 1) and self.people.collective_after(head - 1):
             at = min(at, head - 1)
@@ -108,6 +114,18 @@ class Collectives:
                                                                             count_of(s, number, "").high)
             count = replace(count, low=parties_range[0] * low_size, high=parties_range[1] * high_size)
         return Mention(at, last, s.span(at, last), label, count, together=together, collective=noun)
+
+    def _verb_after_count(self, k: int) -> bool:
+        """Whether a plural word no list names, right after "a queue of 12", is the sentence's verb:
+        the parser found no verb in the sentence, or a particle follows ("a film crew of four sets up")."""
+        s = self.s
+        if k < 1 or s.w[k - 1].pos != "NUM" or self.people.is_person_noun(k) or not s.low[k].endswith("s"):
+            return False
+        if k + 1 < s.n and s.w[k + 1].pos in ("NOUN", "VERB", "AUX"):
+            return False  # "a group of 6 zombies shambles": the next word is the verb
+        word = s.low[k]
+        verb = verb_lemma(word) != word or word[:-1] in lx.GATHERING_VERBS or word[:-2] in lx.GATHERING_VERBS
+        return verb and (s.verbless(k) or (k + 1 < s.n and s.w[k + 1].tag == "RP"))
 
     def _loosely_counted(self, noun: str, at: int, head: int, loose: Quantifier, together: bool) -> Mention:
         """"a queue of about thirty passengers", "a crowd of 80 to 100 fans": the people inside the

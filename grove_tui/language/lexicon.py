@@ -54,7 +54,15 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
     "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3),
     "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
+    # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
+    "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
+    "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8),
 }
+# Collectives that end a person named by two words and still count people ("the cabin crew", "a film
+# crew of four"), unlike "the au pair".
+MULTIWORD_COLLECTIVES = frozenset({"crew"})
+# What a vehicle holds: "a coachload of pensioners" are pensioners, as many as a coach holds.
+VEHICLE_LOADS = frozenset("coachload busload vanload carload boatload planeload minibusload trainload".split())
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
 # Words between two places of one route, the second with no preposition ("to the café and then the pharmacy").
@@ -69,7 +77,10 @@ FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
 QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
-                                  "trio", "duo", "class", "tour", "delegation", "twin"})
+                                  "trio", "duo", "class", "tour", "delegation", "twin", "coachload", "busload",
+                                  "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew"})
+# What a collective does as it comes about: "a queue of 12 forms at the desk" counts no "forms".
+GATHERING_VERBS = frozenset("form build grow snake stretch set gather assemble develop appear".split())
 # Collectives whose members stand in line: "a queue of eight people forms at the desk" is a queue.
 QUEUE_COLLECTIVES = frozenset({"queue", "line"})
 
@@ -142,7 +153,8 @@ PERSON_NOUNS = frozenset(
  planner coordinator volunteer helper aide assistant intern understudy deputy
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter
- coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller""".split()
+ coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
+ skater climber boxer rower cricketer borrower reader gymnast sprinter bodybuilder learner supporter""".split()
 )
 # Last parts of a compound that names a person ("lifeguard", "groundsman", "goalkeeper", "headteacher"),
 # with at least three letters before them; not the things so named ("mudguard", "ottoman").

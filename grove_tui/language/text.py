@@ -4,7 +4,7 @@
 letters "Ｔｅｎ" are "Ten", ligatures are letters), symbols and emoji that are no words dropped
 ("👨‍👩‍👧‍👦 a family" is "a family"; a lone surrogate no longer reaches the parser), chat
 abbreviations written out ("ppl" is "people", "&" is "and", "@ the desk" is "at the desk", "~30" is
-"about 30"), and runs of spaces collapsed. Letters
+"about 30", "swimmers x10" is "10 swimmers"), and runs of spaces collapsed. Letters
 with accents stay ("café"); `plain` strips them where world names are compared.
 """
 
@@ -36,6 +36,10 @@ _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
 # "30-ish visitors", "20ish ppl": about so many
 _ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 
+# "swimmers x10", "nurses (x3)", "shoppers ×20": so many of them; "10x shoppers": ten
+_TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(?![\w.])")
+_TIMES_BEFORE = re.compile(r"\b(\d+)\s?[x×]\s+(?=[A-Za-z]{3,})")
+
 
 def normalise(text: str) -> str:
     """The prompt as the reader parses it (see the module doc); "" when nothing readable is left."""
@@ -43,6 +47,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
+    kept = _TIMES_BEFORE.sub(r"\1 ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)

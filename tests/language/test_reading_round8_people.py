@@ -2,7 +2,10 @@
 two worlds (none from the understanding sets): a single person named by a role with "the", whatever
 the world names after that role or the verb things do too; hostility to the robot (blows, shouting or
 throwing at it, refusing it the way) is blocking it; an approximate count after a fronted phrase of time
-or place ("At noon twenty or so ...", "During the lunch rush about fifteen staff ...")."""
+or place ("At noon twenty or so ...", "During the lunch rush about fifteen staff ..."); what a vehicle
+holds ("a coachload of pensioners"); a crew is a collective ("the cabin crew", "a crew of six"), but "three
+cabin crew" are counted members; a count written "x10"; "a queue of 12 forms": no one "forms"; a
+collective with its plural verb ("a retired couple dawdle")."""
 
 from __future__ import annotations
 
@@ -108,3 +111,47 @@ def test_an_approximate_count_after_a_fronted_phrase(read, world, prompt, label,
 ])
 def test_a_class_with_a_place_is_still_people(read, world, prompt):
     assert one(read(world, prompt)).label == "class"
+
+
+# ---- 4. collectives and counts in odd places ----------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,low,high", [
+    ("library", "a coachload of pensioners arrives at the main entrance", "pensioner", 30, 50),
+    ("mall", "a busload of tourists pours in through the main entrance", "tourist", 30, 50),
+    ("airport", "the flight crew walk to gate B2", "flight crew", 3, 8),
+    ("sports_centre", "the crew of the visiting team waits at reception", "crew", 3, 8),
+])
+def test_what_a_vehicle_or_a_crew_holds(read, world, prompt, label, low, high):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.kind, g.count.low, g.count.high) == (label, "implied", low, high)
+
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("airport", "a cabin crew of eight walks to gate B2", "cabin crew", 8),
+    ("museum", "a film crew of four waits in the foyer", "crew", 4),
+    ("airport", "three cabin crew walk to gate B1", "cabin crew", 3),
+    ("sports_centre", "swimmers x10 queue at reception", "swimmer", 10),
+    ("mall", "shoppers (x20) wander around the food court", "shopper", 20),
+    ("station", "10x commuters wait on platform 2", "commuter", 10),
+])
+def test_a_count_said_after_or_inside_a_collective(read, world, prompt, label, value):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.kind, g.count.value) == (label, "exact", value)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("library", "a queue of 12 forms at the issue desk", "issue_desk"),
+    ("station", "a line of 30 stretches back from the ticket office", "ticket_office"),
+])
+def test_a_queue_of_a_number_and_its_verb(read, world, prompt, place):
+    g = one(read(world, prompt))
+    assert g.count.value in (12, 30) and g.label in ("queue", "line") and place in (g.location, g.start)
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("library", "a retired couple dawdle through the lending hall until closing", "couple"),
+    ("mall", "a young family stroll past the fountain", "family"),
+])
+def test_a_collective_with_its_plural_verb(read, world, prompt, label):
+    g = one(read(world, prompt))
+    assert g.label == label and g.count.kind == "implied"
