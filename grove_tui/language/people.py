@@ -238,7 +238,8 @@ class People:
                 # ("a queue of eight people": the collective heads the phrase)
                 while k + 1 < s.n and self.is_person_noun(k + 1) and s.lemma(k + 1) not in lx.IMPLIED_RANGES \
                         and not s.w[k + 1].tag.startswith("VB") and not (
-                            not counted and k + 2 < s.n and s.w[k + 2].pos in ("ADP", "DET", "PUNCT")):
+                            not counted and k + 2 < s.n and s.w[k + 2].pos in ("ADP", "DET", "PUNCT")
+                            and not self._compound_of_next(k)):
                     # "staff members", "security guards": the last noun heads the phrase; but in "Mum
                     # cooks in the kitchen" the second word is the verb
                     k += 1
@@ -256,6 +257,14 @@ class People:
                 return k
             return None
         return None
+
+    def _compound_of_next(self, k: int) -> bool:
+        """Whether the parser makes the person word at k a modifier of the next, itself no verb's
+        subject ("follows the security guard around ...", not "Mum cooks in the kitchen")."""
+        s = self.s
+        nxt = s.w[k + 1]
+        return s.w[k].dep == "compound" and s.w[k].head == k + 1 and nxt.dep in ("dobj", "pobj", "obj", "nsubj") \
+            and not self.third_person_verb(k + 1)
 
     def _does_what_people_do(self, k: int) -> bool:
         """Whether a counted noun no list names is the subject of something people do ("ten zombies

@@ -278,6 +278,11 @@ class RobotClauses:
     def _followed(self, verb: int) -> str | None:
         s = self.s
         k = s.skip(verb + 1, {"close", "closely", "right", "just", "along", "behind", "after"})
+        j = s.skip(k, lx.DETERMINERS)
+        counted = j + 1 < s.n and s.w[j].pos == "NUM"  # "follows two teenagers"
+        head = self.people.person_head(j + 1 if counted else j, counted=counted) if j < s.n else None
+        if head is not None:
+            return s.span(k, head)  # "the security guard", "the ticket inspector"
         end = s.skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
         if end < s.n and (self.people.is_person_noun(end) or s.low[end] in ("him", "her", "them", "us")):
             return s.span(k, end)

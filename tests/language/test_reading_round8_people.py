@@ -5,7 +5,8 @@ throwing at it, refusing it the way) is blocking it; an approximate count after 
 or place ("At noon twenty or so ...", "During the lunch rush about fifteen staff ..."); what a vehicle
 holds ("a coachload of pensioners"); a crew is a collective ("the cabin crew", "a crew of six"), but "three
 cabin crew" are counted members; a count written "x10"; "a queue of 12 forms": no one "forms"; a
-collective with its plural verb ("a retired couple dawdle")."""
+collective with its plural verb ("a retired couple dawdle"); whom the robot follows, named by two words
+or a count ("the robot follows the security guard")."""
 
 from __future__ import annotations
 
@@ -155,3 +156,17 @@ def test_a_queue_of_a_number_and_its_verb(read, world, prompt, place):
 def test_a_collective_with_its_plural_verb(read, world, prompt, label):
     g = one(read(world, prompt))
     assert g.label == label and g.count.kind == "implied"
+
+
+# ---- 5. the person the robot follows, named by two words or a count -----------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,follows", [
+    ("mall", "the robot follows the security guard around the mall", "guard", "the security guard"),
+    ("hospital", "the robot follows a security guard to the pharmacy", "guard", "a security guard"),
+    ("station", "the robot follows the ticket inspector along platform 1", "inspector", "the ticket inspector"),
+    ("library", "the robot follows two students to the cafe", "student", "two students"),
+])
+def test_whom_the_robot_follows(read, world, prompt, label, follows):
+    r = read(world, prompt)
+    assert one(r).label == label
+    assert (r.robot.task, r.robot.follows) == ("follow", follows)
