@@ -313,10 +313,11 @@ class People:
             return False  # "the pupils downstairs", "the guests inside": where they are, no noun
         if self._verb_of_joined(k):
             return False  # "three kids and their mum queue": the last of joined people, then their verb
-        if s.lemma(k) in lx.IMPLIED_RANGES and word == verb_lemma(word) and (
+        plural = s.lemma(k) in lx.IMPLIED_RANGES or s.lemma(k) != s.low[k]
+        if plural and word == verb_lemma(word) and (
                 verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS or word in lx.SLOW_WORDS) \
                 and (k + 2 >= s.n or s.w[k + 2].pos in ("ADP", "PUNCT", "ADV")):
-            return False  # "a retired couple dawdle through ...": a collective, then its plural verb
+            return False  # "a retired couple dawdle through", "a dozen shoppers dawdle past": plural verb
         if k > 0 and s.w[k - 1].pos == "NUM" and s.lemma(k) != s.low[k] and \
                 not s.index.knows(s.lemma(k + 1)) and k + 2 < s.n and \
                 s.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):

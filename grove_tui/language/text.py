@@ -36,9 +36,9 @@ _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
 # "30-ish visitors", "20ish ppl": about so many
 _ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 
-# "swimmers x10", "nurses (x3)", "shoppers ×20": so many of them; "10x shoppers": ten
+# "swimmers x10", "nurses (x3)", "shoppers ×20": so many of them; "10x shoppers", "x3 porters": so many
 _TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(?![\w.])")
-_TIMES_BEFORE = re.compile(r"\b(\d+)\s?[x×]\s+(?=[A-Za-z]{3,})")
+_TIMES_BEFORE = re.compile(r"(?<![\w.])(?:(\d+)\s?[x×]|[x×](\d+))\s+(?=[A-Za-z]{3,})")
 
 
 def normalise(text: str) -> str:
@@ -47,7 +47,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = _JOINING_SIGN.sub(" and ", kept)
-    kept = _TIMES_BEFORE.sub(r"\1 ", _TIMES_AFTER.sub(r"\2 \1", kept))
+    kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)

@@ -134,6 +134,7 @@ def test_what_a_vehicle_or_a_crew_holds(read, world, prompt, label, low, high):
     ("sports_centre", "swimmers x10 queue at reception", "swimmer", 10),
     ("mall", "shoppers (x20) wander around the food court", "shopper", 20),
     ("station", "10x commuters wait on platform 2", "commuter", 10),
+    ("hospital", "x3 porters wait at the lift", "porter", 3),
 ])
 def test_a_count_said_after_or_inside_a_collective(read, world, prompt, label, value):
     g = one(read(world, prompt))
@@ -156,6 +157,16 @@ def test_a_queue_of_a_number_and_its_verb(read, world, prompt, place):
 def test_a_collective_with_its_plural_verb(read, world, prompt, label):
     g = one(read(world, prompt))
     assert g.label == label and g.count.kind == "implied"
+
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("mall", "the robot delivers a parcel to the information desk while a dozen shoppers dawdle past the fountain",
+     "shopper", 12),
+    ("hospital", "the robot crosses the lobby while a dozen visitors dawdle past the pharmacy", "visitor", 12),
+])
+def test_counted_people_and_their_plural_verb_the_parser_calls_a_noun(read, world, prompt, label, value):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.value, g.pace) == (label, value, "slow")
 
 
 # ---- 5. the person the robot follows, named by two words or a count -----------------------------------
