@@ -56,11 +56,11 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
-    "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8),
+    "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8), "shift": (4, 10),
 }
 # Collectives that end a person named by two words and still count people ("the cabin crew", "a film
 # crew of four"), unlike "the au pair".
-MULTIWORD_COLLECTIVES = frozenset({"crew"})
+MULTIWORD_COLLECTIVES = frozenset({"crew", "shift"})
 # What a vehicle holds: "a coachload of pensioners" are pensioners, as many as a coach holds.
 VEHICLE_LOADS = frozenset("coachload busload vanload carload boatload planeload minibusload trainload".split())
 # Words that put what follows after what came before ("..., then waits in the waiting room").
@@ -78,7 +78,8 @@ FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (
 QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
                                   "trio", "duo", "class", "tour", "delegation", "twin", "coachload", "busload",
-                                  "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew"})
+                                  "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew",
+                                  "shift"})
 # What a collective does as it comes about: "a queue of 12 forms at the desk" counts no "forms".
 GATHERING_VERBS = frozenset("form build grow snake stretch set gather assemble develop appear".split())
 # Collectives whose members stand in line: "a queue of eight people forms at the desk" is a queue.
@@ -190,7 +191,8 @@ FOLLOWING_VERBS = frozenset("follow trail shadow tail chase pursue".split())
 MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p in (
     "au pair", "station master", "tour guide", "ground crew", "cabin crew", "lollipop lady",
     "night porter", "head waiter", "shop assistant", "sales assistant", "flight crew", "crossing guard",
-    "best man", "maid of honour"))
+    "best man", "maid of honour", "night shift", "day shift", "early shift", "late shift", "morning shift",
+    "evening shift", "cleaning crew"))
 # Animals and things that can be counted and do something, but are nobody a crowd simulation places
 # ("two cats sleep on the sofa", "three trolleys stand by the door").
 NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull crow horse pony donkey cow sheep goat
@@ -235,6 +237,9 @@ PERSON_THINGS = frozenset("fan guide host party crew runner walker driver cook m
 # What an event does, said of a word for people that names an event too ("once the class ends, ...",
 # "when the tour finishes,"): no group, when nothing follows the verb in its clause.
 EVENT_VERBS = frozenset("end finish conclude begin start close break".split())
+# ... and after a word of time ("After the night shift, ...", "at the end of the class"): a time.
+EVENT_COLLECTIVES = frozenset({"shift", "class", "tour"})
+EVENT_TIME_WORDS = frozenset("after before during until till since end start beginning middle".split())
 SOUND_LIGHT_VERBS = frozenset("tick glow shine flash beep buzz hum whir whirr".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",

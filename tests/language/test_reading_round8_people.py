@@ -120,7 +120,7 @@ def test_a_class_with_a_place_is_still_people(read, world, prompt):
     ("library", "a coachload of pensioners arrives at the main entrance", "pensioner", 30, 50),
     ("mall", "a busload of tourists pours in through the main entrance", "tourist", 30, 50),
     ("airport", "the flight crew walk to gate B2", "flight crew", 3, 8),
-    ("sports_centre", "the crew of the visiting team waits at reception", "crew", 3, 8),
+    ("sports_centre", "the camera crew waits at reception", "crew", 3, 8),
 ])
 def test_what_a_vehicle_or_a_crew_holds(read, world, prompt, label, low, high):
     g = one(read(world, prompt))
@@ -181,3 +181,24 @@ def test_whom_the_robot_follows(read, world, prompt, label, follows):
     r = read(world, prompt)
     assert one(r).label == label
     assert (r.robot.task, r.robot.follows) == ("follow", follows)
+
+
+# ---- 6. a shift of workers, and the shift as a time ----------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,kind", [
+    ("sports_centre", "the night shift cleans the changing rooms", "night shift", "implied"),
+    ("station", "the night shift arrives at the main entrance", "night shift", "implied"),
+    ("hospital", "the early shift of six nurses gathers at the nurse station", "nurse", "exact"),
+])
+def test_a_shift_of_workers_is_a_group(read, world, prompt, label, kind):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.kind) == (label, kind)
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "After the night shift, two nurses walk to the cafeteria", "nurse"),
+    ("sports_centre", "After the class, ten kids go to the cafe", "kid"),
+    ("library", "during the late shift a porter pushes a trolley to the lift", "porter"),
+])
+def test_a_shift_or_class_after_a_word_of_time_is_a_time(read, world, prompt, label):
+    assert one(read(world, prompt)).label == label
