@@ -20,7 +20,7 @@ from grove_tui.language.events import event_after_time_word
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
-from grove_tui.language.partitives import Partitives
+from grove_tui.language.partitives import Partitives, whole_of_a_bare_part
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
@@ -438,6 +438,8 @@ class Mentions:
             last = j + 2 if j + 2 < s.n and low[j + 1] == "of" and low[j + 2] in ("them", "us", "the") else j
             parent = self.parent(found, plain=True)
             label = found[parent].label if parent is not None else "person"
+            whole = whole_of_a_bare_part(s, found, parent) if low[at] == "the" else None  # "ten ...; the others"
+            parent = parent if whole is None else whole
             if low[at] == "the" and parent is not None and any(m.relation == f"subset_of:{parent}" for m in found):
                 return Mention(at, last, s.span(at, last), label, None, relation=f"others_of:{parent}",
                                rest_of_parent=True)

@@ -19,6 +19,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
 
 _GROUP_WORDS = ("the", "those", "these", "their", "our", "his", "her", "my")
 # "half of the students", "a third of the passengers": the share of the group
@@ -156,3 +157,21 @@ class Partitives:
         value = max(1, round(count.value * fraction))
         kind = "exact" if count.kind == "exact" else "implied"
         return Count(kind, value, max(1, round(count.low * fraction)), max(1, round(count.high * fraction)))
+
+
+def whole_of_a_bare_part(s: Sentence, found: list[Mention], part: int | None) -> int | None:
+    """The group a bare number that borrowed its noun is part of, when "the others" or "the rest"
+    follow it: "fifteen students arrive; ten head to the reading room and the others go to the cafe"
+    (the ten are fifteen's, and the others the five left). The group said just before, of the same
+    kind, counted exactly and more than the part; the part is made its subset."""
+    if part is None or part < 1:
+        return None
+    m, whole = found[part], found[part - 1]
+    nxt = m.last + 1
+    bare = m.first == m.last and quantifier(s, m.first) is not None and m.relation is None and nxt < s.n and (
+        s.is_verb(nxt) or verb_lemma(s.low[nxt]) in lx.INTENT_VERBS)  # "ten head to ...", not "ten in the pharmacy"
+    if not bare or whole.label != m.label or whole.relation is not None or m.count is None or whole.count is None \
+            or whole.count.kind != "exact" or not 0 < m.count.value < whole.count.value:
+        return None
+    m.relation = f"subset_of:{part - 1}"
+    return part - 1

@@ -44,6 +44,11 @@ _KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
     and phrase[0] not in ("in", "at", "the", "a"))
 
 
+# Nouns ending in "-ie", whose plural is no "-y" word's: "selfies", "zombies", "techies".
+_IE_NOUNS = frozenset("selfie zombie movie cookie hippie rookie goalie techie newbie foodie auntie roomie bookie "
+                      "groupie yuppie smoothie".split())
+
+
 def lemma(word: str) -> str:
     """Plural nouns to singular by rule; enough to match "nurses" to "nurse" and "pharmacies" to "pharmacy"."""
     w = word.lower()
@@ -56,7 +61,7 @@ def lemma(word: str) -> str:
     if len(w) <= 3 or not w.endswith("s") or (w.endswith(_KEEP_S) and w[:-1] not in PERSON_NOUNS):
         return w  # "physics", "bus"; but "paramedics" is more than one paramedic
     if w.endswith("ies") and len(w) > 4:
-        return w[:-3] + "y"
+        return w[:-1] if w[:-1] in _IE_NOUNS else w[:-3] + "y"  # "selfies", "zombies"; "families"
     if w.endswith(("ches", "shes", "xes", "zes", "sses")):
         return w[:-2]
     return w[:-1]

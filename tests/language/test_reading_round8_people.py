@@ -202,3 +202,32 @@ def test_a_shift_of_workers_is_a_group(read, world, prompt, label, kind):
 ])
 def test_a_shift_or_class_after_a_word_of_time_is_a_time(read, world, prompt, label):
     assert one(read(world, prompt)).label == label
+
+
+# ---- 7. a bare number, then "the others": part of the group before, and the rest of it ---------------
+
+@pytest.mark.parametrize("world,prompt,whole,part,rest", [
+    ("library", "fifteen students arrive at the foyer; ten head to the reading room and the others go to the cafe",
+     15, 10, 5),
+    ("sports_centre", "twenty kids arrive at reception; five go to the pool hall and the rest go to the sports hall",
+     20, 5, 15),
+    ("station", "forty commuters pour off the train; thirty head to the exit and the rest wait on platform 1", 40, 30, 10),
+])
+def test_a_bare_number_then_the_others_is_a_partition(read, world, prompt, whole, part, rest):
+    g0, g1, g2 = read(world, prompt).groups
+    assert (g0.count.value, g0.relation) == (whole, None)
+    assert (g1.count.value, g1.relation) == (part, "subset_of:0")
+    assert (g2.count.value, g2.relation) == (rest, "others_of:0")
+
+
+def test_a_number_with_no_verb_of_its_own_is_a_group_of_its_own(read):
+    g0, g1, g2 = read("hospital", "twenty people wait in the cafeteria and ten in the pharmacy while the others go home").groups
+    assert g1.relation is None and g1.count.value == 10
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("museum", "a pair of tourists take selfies with the robot in the great hall"),
+    ("library", "two students take selfies with the robot by the notice board"),
+])
+def test_selfies_with_the_robot_are_looking_at_it(read, world, prompt):
+    assert one(read(world, prompt)).robot_interaction == "look"
