@@ -17,3 +17,27 @@ def event_after_time_word(s: Sentence, p: int, at: int) -> bool:
         return False
     end = next((k for k in range(at, min(at + 4, s.n)) if s.lemma(k) in lx.EVENT_COLLECTIVES), None)
     return end is not None and all(s.w[k].pos in ("DET", "ADJ", "NOUN", "PRON") for k in range(at, end))
+
+
+def cause_of_a_clearing(s: Sentence, p: int, at: int) -> bool:
+    """Whether the person phrase at `at`, after the word at p, only says why a place is cleared: "The
+    pool hall is cleared after a swimmer is sick in the water; everyone ... is sent out", "the café
+    is evacuated after a visitor faints": the cause, not a group of the scene. A word of cause, then in
+    its clause a word of being taken ill, after a verb of clearing in the same sentence."""
+    if s.low[p] not in lx.CAUSE_WORDS:
+        return False
+    end = at
+    while end < s.n and not s.is_punct(end) and s.low[end] not in lx.CLAUSE_STARTERS - {"as"} and end < at + 8:
+        end += 1
+    taken_ill = any(s.low[k] in lx.ILLNESS_WORDS or _base(s.low[k]) in lx.ILLNESS_VERBS for k in range(at, end))
+    sentence = s.w[p].sentence
+    cleared = any(_base(s.low[k]) in lx.CLEARING_VERBS for k in range(p) if s.w[k].sentence == sentence)
+    return taken_ill and cleared
+
+
+def _base(word: str) -> str:
+    """A verb's base form by rule ("cleared", "faints", "evacuated", "collapses", "closed")."""
+    for ending, cut in (("ied", "y"), ("ated", "ate"), ("osed", "ose"), ("ed", ""), ("es", "e"), ("s", "")):
+        if word.endswith(ending) and len(word) >= len(ending) + 2:
+            return word[: len(word) - len(ending)] + cut
+    return word

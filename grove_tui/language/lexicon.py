@@ -155,7 +155,7 @@ PERSON_NOUNS = frozenset(
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter
  coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
- skater climber boxer rower cricketer borrower reader gymnast sprinter bodybuilder learner supporter""".split()
+ swimmer bather skater climber boxer rower cricketer borrower reader gymnast sprinter bodybuilder learner supporter""".split()
 )
 # Last parts of a compound that names a person ("lifeguard", "groundsman", "goalkeeper", "headteacher"),
 # with at least three letters before them; not the things so named ("mudguard", "ottoman").
@@ -240,6 +240,11 @@ EVENT_VERBS = frozenset("end finish conclude begin start close break".split())
 # ... and after a word of time ("After the night shift, ...", "at the end of the class"): a time.
 EVENT_COLLECTIVES = frozenset({"shift", "class", "tour"})
 EVENT_TIME_WORDS = frozenset("after before during until till since end start beginning middle".split())
+# Someone taken ill who is why a place is cleared ("cleared after a swimmer is sick"): the cause, no group.
+CAUSE_WORDS = frozenset("after because when as since once".split())
+ILLNESS_WORDS = frozenset("sick ill unwell injured hurt".split())
+ILLNESS_VERBS = frozenset("faint collapse vomit".split())
+CLEARING_VERBS = frozenset("clear evacuate empty close shut".split())
 SOUND_LIGHT_VERBS = frozenset("tick glow shine flash beep buzz hum whir whirr".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",

@@ -16,7 +16,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.collectives import Collectives
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
-from grove_tui.language.events import event_after_time_word
+from grove_tui.language.events import cause_of_a_clearing, event_after_time_word
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
@@ -198,7 +198,7 @@ class Mentions:
         prev = s.low[p]
         if s.is_punct(p) or s.w[p].sentence != s.w[at].sentence:
             return True
-        if event_after_time_word(s, p, at):
+        if event_after_time_word(s, p, at) or cause_of_a_clearing(s, p, at):
             return False  # "After the night shift, ...", "at the end of the class": a time, no people
         if prev == "with" and self._conversation_partner(p, at):
             return False

@@ -231,3 +231,26 @@ def test_a_number_with_no_verb_of_its_own_is_a_group_of_its_own(read):
 ])
 def test_selfies_with_the_robot_are_looking_at_it(read, world, prompt):
     assert one(read(world, prompt)).robot_interaction == "look"
+
+
+# ---- 8. someone taken ill who is why a place is cleared is no group of the scene ----------------------
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("sports_centre", "The sports hall is cleared after a player is injured; everyone in it, about 40 people, "
+     "leaves through the main entrance.", 40),
+    ("hospital", "The cafeteria is evacuated after a visitor faints; everyone, about 20 people, leaves through the "
+     "main entrance.", 20),
+    ("mall", "The food court is closed after a child is sick by the fountain; everyone there, about 30 shoppers, "
+     "leaves through the west entrance.", 30),
+])
+def test_the_cause_of_a_clearing_is_no_group(read, world, prompt, value):
+    g = one(read(world, prompt))
+    assert g.who == "everyone" and g.count.value == value
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "a patient is sick in the waiting room while two nurses walk to the ward", "patient"),
+    ("sports_centre", "the robot delivers towels to the changing rooms while swimmers queue at reception", "swimmer"),
+])
+def test_someone_taken_ill_with_no_clearing_is_a_group(read, world, prompt, label):
+    assert read(world, prompt).groups[0].label == label
