@@ -426,6 +426,11 @@ HOSTILE_AT_VERBS = frozenset("throw hurl fling chuck toss lob aim shout yell hol
                               "growl bark".split())
 WAY_GIVING_VERBS = frozenset("let move budge shift give make step get".split())
 REFUSALS = frozenset("not n't never refuse refuses refused refusing won't".split())
+# Paying the robot no heed ("take no notice of the robot", "pay little attention to it", "never look at
+# it"): no reaction, whatever verb of looking or coming over follows.
+IGNORING_PHRASES = (("pay", "no", "attention"), ("pay", "little", "attention"), ("take", "no", "notice"),
+                    ("take", "little", "notice"), ("pay", "no", "heed"), ("pay", "it", "no"), ("barely", "notice"))
+NEGATIONS = frozenset("not n't never".split())
 # Verbs of contact that are hostile only with the robot for object or after "into"/"at": "pushes past
 # the robot" is passing it.
 PASSING_AFTER = frozenset("past by around round".split())

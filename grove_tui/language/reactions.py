@@ -35,6 +35,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
                  or _passive(s, r))
         if found == "avoid" and _refused(s, own, r):
             return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
+        if found in ("look", "approach", "follow") and _ignored(s, own, r):
+            return None  # "take no notice of the robot", "does not notice it"
         if found is not None:
             return found
     if any(_refused(s, own, r) for r in robot_at):
@@ -47,6 +49,21 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
             return "block"  # "throws a cup at the robot"
         return "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
     return None
+
+
+def _ignored(s: Sentence, own: Sequence[int], r: int) -> bool:
+    """Whether the clause pays the robot at r no heed: a phrase of ignoring before it, or a negation
+    then, within three words, the verb of looking or coming over ("never look at the robot")."""
+    ownset = set(own)
+    before = [i for i in own if i < r]
+    for n, i in enumerate(before):
+        if any(s.phrase_words(i, len(p), ownset) == p for p in lx.IGNORING_PHRASES):
+            return True
+        near = before[n + 1:n + 4]
+        if s.low[i] in lx.NEGATIONS and any(lx.ROBOT_VERBS.get(s.verb(k)) in ("look", "approach", "follow") for k in near) \
+                and not any(s.verb(k) in ("stop", "help", "resist") for k in near):  # not "can't stop staring"
+            return True
+    return False
 
 
 def _refused(s: Sentence, own: Sequence[int], r: int) -> bool:

@@ -254,3 +254,25 @@ def test_the_cause_of_a_clearing_is_no_group(read, world, prompt, value):
 ])
 def test_someone_taken_ill_with_no_clearing_is_a_group(read, world, prompt, label):
     assert read(world, prompt).groups[0].label == label
+
+
+# ---- 9. paying the robot no heed is no reaction ---------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt", [
+    ("sports_centre", "a group of mums chat by reception and pay no attention to the robot"),
+    ("hospital", "visitors take no notice of the robot"),
+    ("mall", "shoppers pay little attention to the robot as it passes"),
+    ("office", "the developers never look at the robot"),
+    ("library", "a librarian does not notice the robot"),
+])
+def test_paying_the_robot_no_heed_is_no_reaction(read, world, prompt):
+    g = read(world, prompt).groups[0]
+    assert (g.robot_interaction, g.robot_reaction) == (None, None)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("mall", "kids cannot stop staring at the robot"),
+    ("station", "a commuter can't help staring at the robot"),
+])
+def test_not_stopping_to_look_is_still_looking(read, world, prompt):
+    assert one(read(world, prompt)).robot_interaction == "look"
