@@ -91,14 +91,14 @@ class Collectives:
                 if member is not None and member <= inner[1] + 2:
                     last = member
                     if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour") or \
-                            noun in lx.VEHICLE_LOADS | lx.MULTIWORD_COLLECTIVES:
+                            noun in lx.MEMBERS_NAME_COLLECTIVES:
                         label = self.people.label(member)
             else:
                 member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
                 if member is not None:
                     last = member
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
-                                "couple", "pair", "handful") or noun in lx.VEHICLE_LOADS | lx.MULTIWORD_COLLECTIVES:
+                                "couple", "pair", "handful") or noun in lx.MEMBERS_NAME_COLLECTIVES:
                         label = self.people.label(member)
         if label == noun and head > 0 and self.people.is_person_noun(head - 1) and self.people.collective_after(head - 1):
             at = min(at, head - 1)
@@ -132,6 +132,8 @@ class Collectives:
         collective, counted loosely."""
         s = self.s
         member = self.people.person_head(loose.end, counted=True)
+        if member is not None and self._verb_after_count(member):
+            member = None  # "a queue of about 8 forms at ..."
         last = member if member is not None and member <= loose.end + 2 else loose.end - 1
         label = noun
         if member is not None and (noun not in lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES or

@@ -129,16 +129,23 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
             return Quantifier(24, "approximate", k + 4)  # "a couple of dozen tourists": about 24
         if nxt in ("couple", "pair") and k + 2 < s.n and low[k + 2] == "of":
             return Quantifier(2, "exact", k + 3)
+        if nxt == "few" and k + 2 < s.n and low[k + 2] == "dozen":
+            return Quantifier(0, "vague:few dozen", k + 3)  # "a few dozen students": some 24 to 48
+        if tuple(low[k + 2:k + 4]) == ("or", "two") and s.w[k + 1].pos in ("NOUN", "PROPN"):
+            return Quantifier(1, "range", k + 1, 2)  # "a student or two": one or two
         if nxt in ("few", "handful", "number", "lot"):
             after = k + 2
             if after < s.n and low[after] == "of":
                 after += 1
             return Quantifier(0, f"vague:{nxt}", after)
         return None
+    if low[k] == "several" and k + 1 < s.n and low[k + 1] == "dozen":
+        return Quantifier(0, "vague:several dozen", k + 2)  # "several dozen fans"
     if low[k] in ("few", "several", "some", "many", "lots", "dozens", "various", "multiple", "numerous", "scores",
-                  "hundreds"):
+                  "hundreds", "loads", "heaps", "tons"):
         after = k + 1
-        if after < s.n and low[after] == "of" and low[k] in ("lots", "dozens", "scores", "hundreds"):
+        if after < s.n and low[after] == "of" and low[k] in ("lots", "dozens", "scores", "hundreds", "loads", "heaps",
+                                                            "tons"):
             after += 1
         return Quantifier(0, f"vague:{low[k]}", after)
     return None

@@ -57,8 +57,8 @@ def count_after_comma(s: Sentence, m: Mention, span: tuple[int, int]) -> Count |
     """A count said on its own after the group's phrase, between a comma and the clause's end:
     "a long line of people at the counter, maybe a dozen", "visitors, about twenty, wait"."""
     for i in range(m.last + 2, span[1]):
-        if s.low[i - 1] != ",":
-            continue
+        if s.low[i - 1] not in (",", "(", "-", "–"):
+            continue  # "visitors, about twenty, wait", "students (around 30) study"
         q = quantifier(s, i)
         if q is None and s.low[i] in lx.APPROXIMATE_WORDS:
             q = quantifier(s, i + 1)

@@ -45,6 +45,7 @@ VAGUE_RANGES: dict[str, tuple[int, int]] = {
     "few": (2, 4), "handful": (3, 5), "several": (3, 6), "some": (3, 6), "number": (4, 8),
     "many": (8, 15), "lots": (8, 15), "lot": (8, 15), "plenty": (8, 15), "numerous": (8, 15),
     "dozens": (24, 40), "various": (3, 6), "multiple": (3, 6), "scores": (40, 80), "hundreds": (100, 300),
+    "loads": (8, 15), "heaps": (8, 15), "tons": (8, 15), "few dozen": (24, 48), "several dozen": (36, 72),
 }
 OTHERS_RANGE = (2, 5)  # "others", "a few others" with nothing that fixes how many
 BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not none
@@ -57,12 +58,15 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
     "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8), "shift": (4, 10),
+    "club": (6, 15), "choir": (10, 25), "troop": (8, 15), "squadron": (8, 15),
 }
 # Collectives that end a person named by two words and still count people ("the cabin crew", "a film
 # crew of four"), unlike "the au pair".
 MULTIWORD_COLLECTIVES = frozenset({"crew", "shift"})
 # What a vehicle holds: "a coachload of pensioners" are pensioners, as many as a coach holds.
 VEHICLE_LOADS = frozenset("coachload busload vanload carload boatload planeload minibusload trainload".split())
+# Collectives known by their members when the members are named ("a choir of thirty children": children).
+MEMBERS_NAME_COLLECTIVES = VEHICLE_LOADS | MULTIWORD_COLLECTIVES | {"club", "choir", "troop", "squadron"}
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
 # Words between two places of one route, the second with no preposition ("to the café and then the pharmacy").
@@ -79,7 +83,7 @@ QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
                                   "trio", "duo", "class", "tour", "delegation", "twin", "coachload", "busload",
                                   "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew",
-                                  "shift"})
+                                  "shift", "club", "choir", "troop"})
 # What a collective does as it comes about: "a queue of 12 forms at the desk" counts no "forms".
 GATHERING_VERBS = frozenset("form build grow snake stretch set gather assemble develop appear".split())
 # Collectives whose members stand in line: "a queue of eight people forms at the desk" is a queue.
@@ -159,7 +163,7 @@ PERSON_NOUNS = frozenset(
  planner coordinator volunteer helper aide assistant intern understudy deputy
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter
- coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
+ club choir troop coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
  swimmer bather skater climber boxer rower cricketer borrower reader gymnast sprinter bodybuilder learner supporter""".split()
 )
 # Last parts of a compound that names a person ("lifeguard", "groundsman", "goalkeeper", "headteacher"),

@@ -436,6 +436,7 @@ class Mentions:
         j = s.skip(at, {"the"})
         if j < s.n and low[j] in ("others", "rest") and (j == at or low[at] == "the"):
             last = j + 2 if j + 2 < s.n and low[j + 1] == "of" and low[j + 2] in ("them", "us", "the") else j
+            last = (self.people.person_head(last + 1, counted=False) or last) if low[last] == "the" else last  # "of the class"
             parent = self.parent(found, plain=True)
             label = found[parent].label if parent is not None else "person"
             whole = whole_of_a_bare_part(s, found, parent) if low[at] == "the" else None  # "ten ...; the others"

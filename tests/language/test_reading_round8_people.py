@@ -276,3 +276,34 @@ def test_paying_the_robot_no_heed_is_no_reaction(read, world, prompt):
 ])
 def test_not_stopping_to_look_is_still_looking(read, world, prompt):
     assert one(read(world, prompt)).robot_interaction == "look"
+
+
+# ---- 10. more ways to say how many ----------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,kind,low,high", [
+    ("library", "a few dozen students queue at the printer", "student", "vague", 24, 48),
+    ("mall", "several dozen fans wait by the fountain", "fan", "vague", 36, 72),
+    ("library", "loads of students fill the cafe", "student", "vague", 8, 15),
+    ("library", "a student or two loiter by the bag lockers", "student", "vague", 1, 2),
+    ("hospital", "a nurse or two walk to the ward", "nurse", "vague", 1, 2),
+    ("library", "students (around 30) study in the reading room", "student", "approximate", 24, 36),
+    ("hospital", "visitors - about 20 - wait in the cafeteria", "visitor", "approximate", 16, 24),
+    ("sports_centre", "a swimming club of 20 queues at reception", "club", "exact", 20, 20),
+    ("library", "a choir of thirty children sings in the foyer", "child", "exact", 30, 30),
+    ("library", "the book club meets in the seminar room", "club", "implied", 6, 15),
+    ("library", "a queue of about 8 forms at the self checkout", "queue", "approximate", 6, 10),
+])
+def test_more_ways_to_say_how_many(read, world, prompt, label, kind, low, high):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.kind, g.count.low, g.count.high) == (label, kind, low, high)
+
+
+@pytest.mark.parametrize("world,prompt,who,label", [
+    ("sports_centre", "ten kids run to the pool hall while the rest of the class dawdle behind", "the rest of the class",
+     "kid"),
+    ("hospital", "two nurses go to the pharmacy and the rest of the nurses stay on the ward", "the rest of the nurses",
+     "nurse"),
+])
+def test_the_rest_of_a_named_group(read, world, prompt, who, label):
+    g = read(world, prompt).groups[1]
+    assert (g.who, g.label, g.relation) == (who, label, "others_of:0")
