@@ -521,6 +521,7 @@ class Clauses:
     def _manner(self, c: Clause, own: Sequence[int]) -> None:
         s = self.s
         lemmas = {verb_lemma(s.low[i]) for i in own} | {s.low[i] for i in own}
+        lemmas |= {w[:-3] + "y" if w.endswith("ies") else w[:-1] for w in lemmas if w.endswith("s")}  # "dawdles"
         trigrams = s.trigrams(own)
         if lemmas & lx.FAST_WORDS or ("in", "a", "hurry") in trigrams:
             c.pace = "fast"

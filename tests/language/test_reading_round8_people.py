@@ -307,3 +307,15 @@ def test_more_ways_to_say_how_many(read, world, prompt, label, kind, low, high):
 def test_the_rest_of_a_named_group(read, world, prompt, who, label):
     g = read(world, prompt).groups[1]
     assert (g.who, g.label, g.relation) == (who, label, "others_of:0")
+
+
+# ---- 11. a verb of pace with its "-s" ------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,pace", [
+    ("sports_centre", "a family with a pushchair dawdles from reception to the cafe", "slow"),
+    ("mall", "an old man trudges to the food court", "slow"),
+    ("hospital", "a porter moseys along the corridor", "slow"),
+    ("library", "a student scurries to the printer", "fast"),
+])
+def test_a_verb_of_pace_with_its_s(read, world, prompt, pace):
+    assert one(read(world, prompt)).pace == pace
