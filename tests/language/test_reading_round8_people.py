@@ -319,3 +319,15 @@ def test_the_rest_of_a_named_group(read, world, prompt, who, label):
 ])
 def test_a_verb_of_pace_with_its_s(read, world, prompt, pace):
     assert one(read(world, prompt)).pace == pace
+
+
+# ---- 12. what people carry or hold is no place -----------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("office", "an intern carrying coffees hurries to the boardroom", "boardroom"),
+    ("library", "a man carrying a stack of books hurries to the issue desk", "issue_desk"),
+    ("library", "a student holding a coffee walks to the printer", "printer"),
+])
+def test_what_people_carry_is_no_place(read, world, prompt, destination):
+    g = one(read(world, prompt))
+    assert (g.start, g.location, g.destination) == (None, None, destination)
