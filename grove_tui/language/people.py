@@ -147,7 +147,11 @@ class People:
                 s.low[k] in pronouns and self._in_clause_of(k, head) for k in range(s.n)
                 if s.w[k].sentence == word.sentence):
             return True  # "the chaplain leaves his office": "his" is someone's
-        if not (singular and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and s.after_determiner(i)):
+        first = i
+        while first > 0 and s.w[first - 1].dep == "compound" and s.w[first - 1].head == i and \
+                s.w[first - 1].pos in ("NOUN", "PROPN"):
+            first -= 1  # "the station announcer": a noun saying which kind, after the determiner
+        if not (singular and lem.endswith(lx.WEAK_AGENT_SUFFIXES) and s.after_determiner(first)):
             return False
         # One of a kind who waits, arrives or leaves somewhere ("an interpreter waits at the
         # information desk while ..."), or the one subject of a sentence that names nobody else ("the

@@ -331,3 +331,12 @@ def test_a_verb_of_pace_with_its_s(read, world, prompt, pace):
 def test_what_people_carry_is_no_place(read, world, prompt, destination):
     g = one(read(world, prompt))
     assert (g.start, g.location, g.destination) == (None, None, destination)
+
+
+@pytest.mark.parametrize("world,prompt,label,place", [
+    ("station", "The station announcer sits in the ticket office all afternoon", "announcer", "ticket_office"),
+    ("sports_centre", "the pool attendant stands by the high chair for an hour", "attendant", "lifeguard_chair"),
+])
+def test_a_role_named_with_a_noun_before_it_is_one_person(read, world, prompt, label, place):
+    g = one(read(world, prompt))
+    assert (g.label, g.count.value, g.location) == (label, 1, place)
