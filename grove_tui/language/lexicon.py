@@ -391,7 +391,7 @@ ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct pr
 # verb lemma -> interaction when the robot is its object ("stares at the robot").
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
-    "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph",
+    "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave",
     "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap",
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
@@ -424,6 +424,7 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("back", "off"): "avoid", ("get", "out", "of", "the", "way"): "avoid", ("make", "way"): "avoid",
     ("edge", "away"): "avoid", ("scuttle", "away"): "avoid",
     ("square", "up", "to"): "block", ("barge", "into"): "block", ("push", "into"): "block",
+    ("sneak", "up"): "approach", ("creep", "up"): "approach", ("tiptoe", "up"): "approach",
 }
 # Hostility to the robot (reactions.py): shouting or throwing something at it ("shouts at the robot",
 # "throws a cup at the robot"), not shouting alone ("kids shout with excitement"); refusing or failing to give way ("won't let it pass", "refuses to budge for the robot",

@@ -50,6 +50,8 @@ class People:
         lem = s.lemma(i)
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
+        if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
+            return False  # "the robot stands guard at the door": a duty, nobody
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
             return True
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):

@@ -340,3 +340,25 @@ def test_what_people_carry_is_no_place(read, world, prompt, destination):
 def test_a_role_named_with_a_noun_before_it_is_one_person(read, world, prompt, label, place):
     g = one(read(world, prompt))
     assert (g.label, g.count.value, g.location) == (label, 1, place)
+
+
+# ---- 13. more ways of reacting to the robot, and a duty that is nobody ---------------------------------
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("sports_centre", "two boys sneak up behind the robot", "approach"),
+    ("library", "a toddler creeps up on the robot in the foyer", "approach"),
+    ("sports_centre", "a little girl waves to the robot and then hides behind her mum", "look"),
+    ("hospital", "an old man waves to the robot from his wheelchair", "look"),
+])
+def test_more_reactions_to_the_robot(read, world, prompt, interaction):
+    assert one(read(world, prompt)).robot_interaction == interaction
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("library", "the robot stands guard at the staff entrance all night", "staff_entrance"),
+    ("museum", "the robot stands guard in the Egyptian gallery", "egyptian_gallery"),
+])
+def test_standing_guard_is_the_robots_duty_and_nobody(read, world, prompt, place):
+    r = read(world, prompt)
+    assert all(g.label == "person" and g.who == "people" for g in r.groups)
+    assert (r.robot.task, r.robot.location) == ("wait", place)
