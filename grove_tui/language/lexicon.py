@@ -485,7 +485,7 @@ BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment p
                            "inside outside".split())
 # Outdoors beyond the building's doors: "out to the street" is out through an exit, when the world
 # names no such place itself.
-OUTDOOR_WORDS = frozenset("street road pavement sidewalk carpark car_park parking forecourt outdoors".split())
+OUTDOOR_WORDS = frozenset("street road pavement sidewalk kerb curb kerbside curbside carpark car_park parking forecourt outdoors".split())
 # Heads that say "a part of" without naming which: matching rests on the words before them.
 GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())

@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
+from grove_tui.language.place_described import plain_activity, purpose_by_use, rank_described, vehicle_stop
 from grove_tui.language.places import MeaningMatch, PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -156,10 +157,26 @@ class PlaceMeaning:
         if clause is None:
             return None
         first, end = clause
-        activity = ("" if s.low[first] == "for" else "where ") + self._active(first, end)
-        meant = self._by_activity(phrase, lemmas, activity)
+        activity = plain_activity(("" if s.low[first] == "for" else "where ") + self._active(first, end))
+        meant = None if vehicle_stop(activity) else self._by_activity(phrase, lemmas, activity)
+        if meant is None:  # by names and descriptions together, among the places the head can be
+            head = content[-1] if content else "place"
+            meant = rank_described(s.index, activity, None if head in _ANY_PLACE | lx.BUILDING_WORDS else
+                                   [e.name for e in s.index.entries if _head_fits(head, e.kind, e.tokens)])
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
+        return (meant, end) if meant is not None else None
+
+    def where_clause(self, k: int) -> tuple[Decided, int] | None:
+        """A place said only by what is done there, a clause with no head ("walk to where you get your
+        bags back", "wait where the trains come in"): the place, and the index after the clause."""
+        clause = self._relative_clause(k, bare=False)
+        if clause is None or self.s.low[k] != "where":
+            return None
+        first, end = clause
+        activity = plain_activity("where " + self._active(first, end))
+        meant = (None if vehicle_stop(activity) else self._by_activity(("place",), ("place",), activity)) or \
+            rank_described(self.s.index, activity)
         return (meant, end) if meant is not None else None
 
     def _active(self, first: int, end: int) -> str:
@@ -349,7 +366,7 @@ class PlaceMeaning:
         elif by_name is not None:
             best, other = by_name
         else:
-            return None
+            return purpose_by_use(self.s.index, purpose)  # "to buy aspirin and plasters": the pharmacy
         score = 0.65 if best.similarity >= 0.7 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,

@@ -150,6 +150,8 @@ class Sentence:
             return "out", 1  # "head out the back", "walk out the front door"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
+        if w == "where" and i > 0 and any(lx.INTENT_VERBS.get(verb_lemma(low[x])) for x in range(max(0, i - 2), i)):
+            return "at", 0  # "wait where the trains come in": the place of the clause (language/place_meaning.py)
         return None
 
     def verb_follows(self, k: int) -> bool:
