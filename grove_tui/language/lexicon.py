@@ -453,7 +453,7 @@ ZONE_EMPTYING_VERBS = frozenset("clear empty vacate evacuate".split())
 START_PREPOSITIONS = frozenset({"from", "off"})
 DESTINATION_PREPOSITIONS = frozenset({"to", "into", "towards", "toward", "onto", "inside"})
 LOCATION_PREPOSITIONS = frozenset({"at", "in", "on", "near", "by", "beside", "within", "around", "outside", "next",
-                                   "behind", "about", "opposite", "against", "under", "among"})
+                                   "behind", "about", "opposite", "against", "under", "among", "between"})
 VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down", "throughout"})
 PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
 

@@ -45,3 +45,13 @@ def beside_thing(index: PlaceIndex, prep: str, match: PlaceMatch | None) -> Plac
     if entry is None or zone is None or not entry.types or entry.types != zone.types:
         return match
     return PlaceMatch(zone.name, "zone", zone.name, match.score, match.exact)
+
+
+def stairs(index: PlaceIndex, k: int) -> tuple[tuple[PlaceMatch, float, str, tuple[str, ...]], int] | None:
+    """"run upstairs", "head downstairs" (the word at k): the world's stairs, where people go up or down,
+    and the index after the word; None in a world without stairs (the floor above is no place of it)."""
+    for word in ("stairs", "staircase", "stairwell", "escalator", "escalators"):
+        found = index.match((word,))
+        if found is not None and found.exact:
+            return (found, 0.6, f"'upstairs' or 'downstairs': by the stairs, {found.name}", ()), k + 1
+    return None

@@ -17,7 +17,8 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
-from grove_tui.language.place_around import around, beside_thing
+from grove_tui.language.place_around import around, beside_thing, stairs
+from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.places import PlaceMatch
@@ -81,7 +82,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         low = s.low
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
-        if k < s.n and low[k] == "where":  # "to where you get your bags back": the place by its clause alone
+        record_unknown = record_unknown and prep != "between"  # "naps between operations": a time, maybe
+        if k < s.n and low[k] in ("where", "upstairs", "downstairs"):  # "to where you get your bags back"
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
@@ -156,6 +158,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
+        if absent_kind(s.index, lemmas) is not None:  # "the planetarium (room)": a kind the world lacks
+            numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
         if match is None and self._outdoors(lemmas) and s.index.exits():
@@ -211,7 +215,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
 
     def where_place(self, k: int, prep: str, at: int, mentioned: bool) -> Place | None:
         """"to where you get your bags back", "wait where the trains come in": the place of the clause."""
-        found = self.where_clause(k)
+        found = self.where_clause(k) if self.s.low[k] == "where" else stairs(self.s.index, k)
         if found is None:
             return None
         (match, score, reason, alternatives), end = found

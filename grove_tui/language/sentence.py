@@ -152,6 +152,10 @@ class Sentence:
             return w, 1
         if w == "where" and i > 0 and any(lx.INTENT_VERBS.get(verb_lemma(low[x])) for x in range(max(0, i - 2), i)):
             return "at", 0  # "wait where the trains come in": the place of the clause (language/place_meaning.py)
+        if w in ("upstairs", "downstairs") and i > 0 and \
+                lx.INTENT_VERBS.get(verb_lemma(low[i - 1]), "wait") not in lx.STATIONARY_INTENTS:
+            # "the kids run upstairs": up the stairs (language/place_around.py); on the way when a place follows
+            return ("via" if i + 1 < self.n and low[i + 1] in lx.DESTINATION_PREPOSITIONS else "to"), 0
         return None
 
     def verb_follows(self, k: int) -> bool:

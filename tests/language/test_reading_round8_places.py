@@ -97,3 +97,76 @@ def test_the_area_around_a_thing_is_the_room_around_it(read, world, prompt, plac
 ])
 def test_a_thing_people_are_at_stays_the_thing(read, world, prompt, place):
     assert place_of(read(world, prompt).groups[0]) == place
+
+
+# ---- d. a kind of place the world lacks is refused, not matched to a loosely similar room ---------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("museum", "a class walks to the planetarium room", "planetarium room"),
+    ("museum", "a class heads into the planetarium theatre", "planetarium theatre"),
+    ("sports_centre", "men relax in the sauna room", "sauna room"),
+    ("station", "a man walks to the barber shop", "barber shop"),
+])
+def test_a_kind_of_place_the_world_lacks_is_refused(read, world, prompt, refused):
+    r = read(world, prompt)
+    assert refused in r.unknown_places
+    assert all(place_of(g) is None for g in r.groups)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("museum", "kids watch a film in the cinema", "auditorium"),  # the world calls its auditorium a cinema
+    ("mall", "a couple queue at the cinema", "cinema_lobby"),
+])
+def test_a_kind_the_world_has_under_its_name_is_no_refusal(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert place_of(r.groups[0]) == place
+
+
+# ---- relations: between, the far end of, upstairs ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hospital", "a nurse walks between ward a and ward b", "ward_a", "ward_b"),
+    ("sports_centre", "a lifeguard walks between the pool and the first aid room", "pool_hall", "first_aid_room"),
+])
+def test_walking_between_two_places_is_from_one_to_the_other(read, world, prompt, start, destination):
+    g = read(world, prompt).groups[0]
+    assert (g.start, g.destination) == (start, destination)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("library", "two girls chat between the cafe and the toilets", "cafe"),
+    ("station", "a man waits between platform 1 and platform 2", "platform_1"),
+])
+def test_waiting_between_two_places_is_at_the_first(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert r.groups[0].location == place
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "The surgeon naps in the staff room between operations."),
+    ("office", "two devs chat in the kitchen between meetings"),
+])
+def test_between_times_is_no_place(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("station", "commuters crowd at the far end of the concourse", "concourse"),
+    ("station", "commuters wait at the far end of platform 2", "platform_2"),
+])
+def test_the_far_end_of_a_place_is_the_place(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.corrections == ()  # "far" is no misspelt "fare"
+    assert r.groups[0].location == place
+
+
+@pytest.mark.parametrize("world,prompt,destination,via", [
+    ("library", "three kids run upstairs", "lift_lobby", ()),
+    ("hospital", "two porters head downstairs with a trolley", "elevator_hall", ()),
+    ("hospital", "a nurse walks upstairs to ward b", "ward_b", ("elevator_hall",)),
+])
+def test_going_upstairs_goes_by_the_stairs(read, world, prompt, destination, via):
+    g = read(world, prompt).groups[0]
+    assert (g.destination, tuple(g.via)) == (destination, via)
