@@ -129,7 +129,8 @@ class Clauses:
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
                                     or self._told_before(i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
-        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and not self.places.names_place(i + 1):
+        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not self.places.names_place(i + 1) or (
+                s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):  # "to book a tour"
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
             return self._purpose(scan, i, i + 2, i + 4)

@@ -464,7 +464,7 @@ LOCATION_ADVERBS = frozenset("inside outside indoors outdoors downstairs upstair
 DETERMINERS = frozenset("the a an their our its his her my your this that these those some each every any".split())
 # Parts of a place, said with "of" before it ("the corner of the lobby"): the place itself.
 PLACE_PARTS = frozenset("corner end middle centre center side edge floor back front rear far part area half "
-                        "top bottom entrance".split())
+                        "top bottom entrance doorway threshold foot perimeter".split())
 # Words that qualify a place without naming one ("the nearest exit", "the other corridor").
 PLACE_MODIFIERS = frozenset(
     """nearest closest nearby near far farthest furthest other same next first last main back front side rear left

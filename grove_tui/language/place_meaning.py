@@ -352,14 +352,14 @@ class PlaceMeaning:
         # "to board his plane" is no departures board: a verb that is only a word of a place's name
         # ("check in" still names the check-in hall)
         ranked = [r for r in self.s.index.by_meaning(purpose.lower()) if r.entry.kind != "door" and
-                  (verb not in r.entry.tokens or (words[1:2] in (["in"], ["out"], ["up"], ["off"], ["on"])
+                  (not _heads(verb, r.entry.phrases) or (words[1:2] in (["in"], ["out"], ["up"], ["off"], ["on"])
                                                    and any(p[:1] == (verb,) for p in r.entry.phrases)))]
         by_name = _clearly_nearest(ranked)
         # what the world says a place is for ("Queue-number ticket dispenser.") answers "to take a queue
         # number" where no name does: it decides when its place is clearly nearest and nearer than the
         # name match, or no name is clearly nearest; within the name match's own room the names decide
         by_use = _clearly_nearest([r for r in self.s.index.by_description(purpose.lower()) if
-                                   verb not in r.entry.tokens or words[1:2] in (["in"], ["out"], ["up"])])
+                                   not _heads(verb, r.entry.phrases) or words[1:2] in (["in"], ["out"], ["up"])])
         if by_use is not None and (by_name is None or (by_use[0].similarity > by_name[0].similarity and
                                                        by_use[0].entry.zone != by_name[0].entry.zone)):
             best, other = by_use
@@ -372,6 +372,12 @@ class PlaceMeaning:
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
+
+def _heads(verb: str, phrases: Sequence[Sequence[str]]) -> bool:
+    """Whether a purpose's verb is the head noun of one of a place's names ("to board" and "departures
+    board"), not a word before it ("to print" and "print station": where printing is done)."""
+    return any(p and p[-1] == verb for p in phrases)
+
 
 def _synonym_of(word: str, head: str) -> bool:
     """Whether `word` is listed as a synonym of `head` ("vending" of "machine")."""

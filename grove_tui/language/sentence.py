@@ -167,8 +167,10 @@ class Sentence:
             return False
         if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
             return False
-        if k + 1 < self.n and IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)):
+        if k + 1 < self.n and IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)) and not (
+                self.low[k + 1] == "a" and k + 2 < self.n and self.w[k + 2].pos in ("NOUN", "ADJ")):
             return False  # "to gate C4": a place word with its number, though the parser calls "gate" a verb
+            # (but "to book a study room": a verb and its object)
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
             "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
 

@@ -170,3 +170,25 @@ def test_the_far_end_of_a_place_is_the_place(read, world, prompt, place):
 def test_going_upstairs_goes_by_the_stairs(read, world, prompt, destination, via):
     g = read(world, prompt).groups[0]
     assert (g.destination, tuple(g.via)) == (destination, via)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("museum", "visitors stand in the doorway of the egyptian gallery", "egyptian_gallery"),
+    ("library", "a student waits in the doorway of the seminar room", "seminar_room"),
+    ("hospital", "a porter waits at the foot of the stairs", "elevator_hall"),
+])
+def test_a_part_of_a_place_is_the_place(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert r.groups[0].location == place
+
+
+# ---- a verb that is also a place's word, before its object: a purpose, not a place -------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("museum", "a teacher goes to book a tour at the ticket desk", "ticket_desk"),
+    ("library", "a student heads off to book a study room", None),
+])
+def test_to_book_a_thing_is_a_purpose(read, world, prompt, place):
+    g = read(world, prompt).groups[0]
+    assert g.destination == place
