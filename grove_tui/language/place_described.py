@@ -12,7 +12,9 @@ import re
 from collections.abc import Sequence
 
 from grove_tui.language.model import UNSURE_BELOW
+from grove_tui.language.lexicon import PLACE_MODIFIERS
 from grove_tui.language.places import PlaceIndex, PlaceMatch
+from grove_tui.language.tokens import phrase_lemmas
 
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
@@ -137,3 +139,34 @@ def purpose_by_use(index: PlaceIndex, purpose: str) -> Decided | None:
     return (PlaceMatch(zone, "zone", zone, value, False), 0.45,
             f"'{purpose}' names no place; by what the world's places provide it is done at {zone} (like "
             f"'{like[:60]}')", (other,) if other else ())
+
+
+def room_with(index: PlaceIndex, words: Sequence[str], j: int) -> tuple[Decided, int] | None:
+    """"the room with the projector", "the place with all the treadmills" (`words`, "with" at j): the
+    room the thing is in, and the index after the thing's words; None when the world has no such thing."""
+    k = j + 1
+    while k < len(words) and words[k] in _THING_LEADS:
+        k += 1
+    end = k
+    while end < len(words) and end < k + 4 and words[end].isalnum() and words[end] not in _THING_ENDS:
+        end += 1
+    for stop in range(end, k, -1):
+        lemmas = [t for t in phrase_lemmas(list(words[k:stop])) if t not in PLACE_MODIFIERS]
+        found = index.match(lemmas) if lemmas else None
+        if found is None and lemmas:  # "the projector": the first word of "projector screen", a thing of one room
+            zones = {e.zone for e in index.entries if e.kind == "entity" and set(lemmas) <= e.tokens}
+            only = zones.pop() if len(zones) == 1 else None
+            found = PlaceMatch(only, "zone", only, 1.0, True) if only is not None else None
+        entry = index.entry(found.name) if found is not None else None
+        if found is not None and entry is not None and (found.exact or set(lemmas) <= entry.tokens):
+            zone = index.entry(found.zone)
+            if zone is None:
+                return None
+            said = " ".join(words[k:stop])
+            return (PlaceMatch(zone.name, "zone", zone.name, found.score, False), 0.7,
+                    f"'with {said}': the room with {found.name}, {zone.name}", ()), stop
+    return None
+
+
+_THING_LEADS = frozenset("the a an all some lots of loads big large huge long".split())
+_THING_ENDS = frozenset("and or to in on at for where who which that then while but".split())

@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
-from grove_tui.language.place_described import plain_activity, purpose_by_use, rank_described, vehicle_stop
+from grove_tui.language.place_described import plain_activity, purpose_by_use, rank_described, room_with, vehicle_stop
 from grove_tui.language.places import MeaningMatch, PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -152,6 +152,8 @@ class PlaceMeaning:
         of any other zone's; failing that, the phrase and its clause together, as near as a name."""
         s = self.s
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if content and content[-1] in _ANY_PLACE | lx.GENERIC_PLACE_HEADS | {"hall"} and j < s.n and s.low[j] == "with":
+            return room_with(s.index, s.low, j)  # "the room with the projector": the room that has it
         clause = self._relative_clause(j, bare=bool(content) and content[-1] in _ANY_PLACE | lx.BUILDING_WORDS |
                                         lx.GENERIC_PLACE_HEADS)
         if clause is None:

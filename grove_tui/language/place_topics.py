@@ -5,7 +5,10 @@ there (language/clauses.py reads the sentence's scene with it)."""
 
 from __future__ import annotations
 
-from grove_tui.language.place_names import CHAT_TIME_WORDS, TIME_WORDS
+import re
+
+from grove_tui.language.lexicon import NUMBER_WORDS
+from grove_tui.language.place_names import CHAT_TIME_WORDS, TIME_NOUNS, TIME_WORDS
 from grove_tui.language.sentence import Sentence
 
 # What closes a topic: a colon, a dash between words (not a hyphen inside one), dots, a bar.
@@ -31,12 +34,27 @@ def topic_mark_at(s: Sentence, j: int) -> bool:
             if s.low[close] != ")":
                 return close < s.n - 1  # "(rush hour):" read as one mark
             continue
-        if s.low[j] in _TIME_SINGLE or s.low[j] in CHAT_TIME_WORDS or s.low[j] in TIME_WORDS:
-            j, timed = j + 1, True
+        if s.low[j] == "," and not timed and j + 1 < s.n and _time_word(s.low[j + 1]):
+            j += 1  # "the whale hall, sat afternoon: ...", "open plan, 9am: ..."
+            continue
+        if _time_word(s.low[j]) or (s.low[j] in ("at", "on", "by") and j + 1 < s.n and _time_word(s.low[j + 1])):
+            j, timed = j + 1, True  # "rn", "9am", "at 5:30", "on sat"
             continue
         break
     while j + 1 < s.n and s.low[j] == s.low[j + 1] and s.low[j] in _TOPIC_MARKS:
         j += 1  # ">>", "--"
     mark = s.low[j] if j < s.n else ""
-    return j + 1 < s.n and (mark in _TOPIC_MARKS or mark.strip(")") in _TOPIC_MARKS or (timed and mark == ",")) \
-        and not s.hyphen_inside(j)
+    counted = j + 1 < s.n and (s.low[j + 1].isdigit() or s.low[j + 1] in NUMBER_WORDS)  # "Gate A1, 25 people"
+    return j + 1 < s.n and (mark in _TOPIC_MARKS or mark.strip(")") in _TOPIC_MARKS or
+                            (mark == "," and (timed or counted))) and not s.hyphen_inside(j)
+
+
+_DAYS = frozenset("monday tuesday wednesday thursday friday saturday sunday mon tue tues wed thu thur thurs fri sat "
+                  "sun weekday weekend morning afternoon evening night lunchtime midday rush hour peak busy quiet "
+                  "early late around about ~ am pm".split())
+
+
+def _time_word(word: str) -> bool:
+    """A word of a time said after a topic ("rn", "9am", "sat", "3:30pm", "evening rush")."""
+    return word in _TIME_SINGLE or word in CHAT_TIME_WORDS or word in TIME_WORDS or word in TIME_NOUNS or \
+        word in _DAYS or bool(re.fullmatch(r"\d{1,2}([:.]\d\d)?(am|pm)|\d{1,2}[:.]\d\d", word))

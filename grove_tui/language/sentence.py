@@ -144,13 +144,15 @@ class Sentence:
             return ("at" if two[0] in ("next", "close") else "to"), 2
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
-        if w == "round" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+        if w == "round" and i + 1 < self.n and (low[i + 1] in lx.DETERMINERS or self.index.knows(lemma(low[i + 1]))):
             return "around", 1  # "gather round the whiteboard"
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
-        if w == "where" and i > 0 and any(lx.INTENT_VERBS.get(verb_lemma(low[x])) for x in range(max(0, i - 2), i)):
+        if w == "where" and i > 0 and any((lx.INTENT_VERBS.get(verb_lemma(low[x])) or self.w[x].pos == "VERB") and
+                                          self.w[x].lemma.lower() not in _KNOWING and verb_lemma(low[x]) not in _KNOWING
+                                          for x in range(max(0, i - 2), i)):
             return "at", 0  # "wait where the trains come in": the place of the clause (language/place_meaning.py)
         if w in ("upstairs", "downstairs") and i > 0 and \
                 lx.INTENT_VERBS.get(verb_lemma(low[i - 1]), "wait") not in lx.STATIONARY_INTENTS:
@@ -231,3 +233,8 @@ class Sentence:
                         continue  # "as a family talks", "as a family buys tickets": who the clause is about
                     out.update(range(i, end))
         return frozenset(out)
+
+
+# Verbs whose "where" asks or tells a place, not a place where people are ("know where the exit is").
+_KNOWING = frozenset("know see wonder ask show tell remember forget decide find check say explain point "
+                     "guess learn understand notice hear read look".split())

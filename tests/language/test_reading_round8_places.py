@@ -192,3 +192,40 @@ def test_a_part_of_a_place_is_the_place(read, world, prompt, place):
 def test_to_book_a_thing_is_a_purpose(read, world, prompt, place):
     g = read(world, prompt).groups[0]
     assert g.destination == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("museum", "the whale hall, sat afternoon: families everywhere, about 50 people", "great_hall"),
+    ("airport", "Gate A1, 25 passengers seated and waiting", "gate_a1"),
+    ("station", "platform 2 at 5:30: 60 commuters waiting", "platform_2"),
+])
+def test_a_topic_with_its_time_or_a_count_after_a_comma(read, world, prompt, place):
+    assert all(place_of(g) == place for g in read(world, prompt).groups)
+
+
+# ---- a place by the thing it has, and a clause after a verb that is not a place --------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("sports_centre", "a man heads to the place with all the treadmills", "gym"),
+    ("library", "a tutor takes 5 students to the room with the projector", "seminar_room"),
+    ("office", "two devs go to the room with the big screen", "boardroom"),
+    ("station", "a man walks to the area with the benches", "concourse"),
+])
+def test_a_room_with_a_thing_is_the_room_it_is_in(read, world, prompt, place):
+    assert read(world, prompt).groups[-1].destination == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("mall", "teens hang out where the films are shown", "cinema_lobby"),
+    ("airport", "40 passengers wait round carousel 2", "carousel_2"),
+])
+def test_a_clause_or_round_after_a_verb_is_where_they_are(read, world, prompt, place):
+    assert read(world, prompt).groups[0].location == place
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "a visitor asks where the pharmacy is"),
+    ("station", "a tourist checks where platform 2 is"),
+])
+def test_asking_where_a_place_is_puts_nobody_there(read, world, prompt):
+    assert read(world, prompt).groups[0].location is None
