@@ -458,7 +458,7 @@ ZONE_EMPTYING_VERBS = frozenset("clear empty vacate evacuate".split())
 START_PREPOSITIONS = frozenset({"from", "off"})
 DESTINATION_PREPOSITIONS = frozenset({"to", "into", "towards", "toward", "onto", "inside"})
 LOCATION_PREPOSITIONS = frozenset({"at", "in", "on", "near", "by", "beside", "within", "around", "outside", "next",
-                                   "behind", "about", "opposite", "against", "under", "among", "between"})
+                                   "behind", "about", "opposite", "against", "under", "among", "between", "beyond"})
 VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down", "throughout"})
 PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
 
@@ -483,7 +483,8 @@ NON_PLACES = frozenset(
     future background foreground left right top bottom here there curiosity fear surprise interest anger
     conversation chat talk discussion meeting lunch breakfast dinner coffee tea break work shift appointment
     purpose reason fun sake help care each other them themselves him her it rest once all least most front
-    side half sight flight train bus plane match delay delays""".split())
+    side half sight flight train bus plane match delay delays
+    window windows windowsill wall walls pillar pillars column columns ceiling radiator skylight""".split())
 # Words for the whole building: never an unknown place, never a particular RoI.
 BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment premises site facility floor "
                            "place area scene venue property complex centre center interior indoors outdoors "

@@ -148,6 +148,10 @@ class Sentence:
             return "around", 1  # "gather round the whiteboard"
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
+        if w == "between" and not any(low[x] == "and" for x in range(i + 2, min(i + 8, self.n))):
+            return None  # "drift between shops": among them; "between X and Y" names two places
+        if w == "up" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "down", 1  # "up the stairs", "up the corridor": along it, as "down"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
         if w == "where" and i > 0 and any((lx.INTENT_VERBS.get(verb_lemma(low[x])) or self.w[x].pos == "VERB") and

@@ -229,3 +229,23 @@ def test_a_clause_or_round_after_a_verb_is_where_they_are(read, world, prompt, p
 ])
 def test_asking_where_a_place_is_puts_nobody_there(read, world, prompt):
     assert read(world, prompt).groups[0].location is None
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("mall", "shoppers drift between shops in the west mall", "west_mall"),
+    ("airport", "passengers queue along the windows at gate b2", "gate_b2"),
+    ("office", "two devs chat by the windows in the open plan", "open_plan_office"),
+])
+def test_among_shops_or_by_the_windows_is_the_room_named(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()  # a window is part of every building, no place a world lacks
+    assert r.groups[0].location == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("sports_centre", "two coaches stand beyond the bleachers", "spectator_seating"),
+    ("library", "a student walks through the foyer and up the stairs", "lift_lobby"),
+])
+def test_beyond_and_up_the_stairs(read, world, prompt, place):
+    g = read(world, prompt).groups[0]
+    assert place in (g.location, g.destination, *g.via)
