@@ -493,7 +493,7 @@ BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment p
 # names no such place itself.
 OUTDOOR_WORDS = frozenset("street road pavement sidewalk kerb curb kerbside curbside carpark car_park parking forecourt outdoors".split())
 # Heads that say "a part of" without naming which: matching rests on the words before them.
-GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
+GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner bit".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
 # Groups of words people use for the same kind of place; matching one counts, at a discount, as
 # matching the others (the literal word still wins).

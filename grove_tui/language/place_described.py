@@ -73,7 +73,8 @@ def rank_described(index: PlaceIndex, activity: str, kinds: Sequence[str] | None
     taken when near enough and clearly ahead of the next; the fixture when it is the nearest of its
     zone's and the head allows fixtures (`kinds`: the places the phrase's head can be, all when None)."""
     stop = vehicle_stop(activity)
-    stops = [e.name for e in index.entries if stop is not None and e.kind != "door" and set(stop.split()) <= set(e.phrases[0])]
+    stops = [e.name for e in index.entries
+             if stop is not None and e.kind != "door" and set(stop.split()) <= set(e.phrases[0])]
     allowed = set(kinds) & set(stops) if kinds is not None and stops else set(stops) if stops else \
         set(kinds) if kinds is not None else None
     best_of: dict[str, tuple[float, str, str]] = {}  # zone -> (similarity, place, like)

@@ -130,7 +130,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas, k)
         # "pitch-side", "by the water": the room around the thing
-        match = beside_thing(s.index, prep, match if match is not None and match.exact else around(s.index, lemmas) or match)
+        match = beside_thing(s.index, prep,
+                             match if match is not None and match.exact else around(s.index, lemmas) or match)
         match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase

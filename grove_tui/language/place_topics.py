@@ -29,7 +29,8 @@ def topic_mark_at(s: Sentence, j: int) -> bool:
         if run is not None:
             j, timed = j + len(run), True
             continue
-        if s.low[j] == "(" and (close := next((x for x in range(j + 1, min(j + 6, s.n)) if s.low[x].startswith(")")), None)):
+        close = next((x for x in range(j + 1, min(j + 6, s.n)) if s.low[x].startswith(")")), None)
+        if s.low[j] == "(" and close is not None:
             j = close + 1  # "platform 2 (rush hour): ..."
             if s.low[close] != ")":
                 return close < s.n - 1  # "(rush hour):" read as one mark

@@ -157,7 +157,10 @@ class Sentence:
         if w == "where" and i > 0 and any((lx.INTENT_VERBS.get(verb_lemma(low[x])) or self.w[x].pos == "VERB") and
                                           self.w[x].lemma.lower() not in _KNOWING and verb_lemma(low[x]) not in _KNOWING
                                           for x in range(max(0, i - 2), i)):
-            return "at", 0  # "wait where the trains come in": the place of the clause (language/place_meaning.py)
+            # "wait where the trains come in": the place of the clause (language/place_meaning.py); "go where ..." to it
+            moving = any(lx.INTENT_VERBS.get(verb_lemma(low[x])) in ("walk", "evacuate")
+                         for x in range(max(0, i - 2), i))
+            return ("to" if moving else "at"), 0
         if w in ("upstairs", "downstairs") and i > 0 and \
                 lx.INTENT_VERBS.get(verb_lemma(low[i - 1]), "wait") not in lx.STATIONARY_INTENTS:
             # "the kids run upstairs": up the stairs (language/place_around.py); on the way when a place follows

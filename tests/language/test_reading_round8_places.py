@@ -249,3 +249,19 @@ def test_among_shops_or_by_the_windows_is_the_room_named(read, world, prompt, pl
 def test_beyond_and_up_the_stairs(read, world, prompt, place):
     g = read(world, prompt).groups[0]
     assert place in (g.location, g.destination, *g.via)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("sports_centre", "two women head where you swim", "pool_hall"),
+    ("library", "students hurry where the group rooms are", "group_study_1"),
+])
+def test_going_where_a_clause_says_is_going_there(read, world, prompt, place):
+    assert read(world, prompt).groups[0].destination == place
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("station", "a woman goes to the bit where you wait for your train"),
+    ("museum", "kids run to the bit by the café"),
+])
+def test_the_bit_is_a_word_for_any_place(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
