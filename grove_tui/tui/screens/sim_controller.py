@@ -16,7 +16,10 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from grove_tui.services.domain import Frame, LiveMetrics, Simulation
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 MAX_SPEED = 0.0  # as fast as the machine steps
@@ -65,9 +68,9 @@ class Counters:
 @dataclass(frozen=True)
 class Snapshot:
     serial: int
-    frame: Any
+    frame: Frame
     selected: int  # agent id whose tree status is attached, -1 for none
-    tree_status: tuple[tuple[Any, str, str], ...]
+    tree_status: tuple[tuple[str, str, str], ...]  # (path, name, status) of the selected agent's nodes
     playing: bool
     speed: float  # MAX_SPEED for as fast as possible
     steps_per_second: float  # simulated seconds per wall second over the last two seconds (the real speed)
@@ -77,7 +80,8 @@ class Snapshot:
 
 
 class SimulationController:
-    def __init__(self, simulation: Any, fps: float = 20.0, speed: float = 1.0, metrics: Any = None) -> None:
+    def __init__(self, simulation: Simulation, fps: float = 20.0, speed: float = 1.0,
+                 metrics: LiveMetrics | None = None) -> None:
         self.simulation = simulation
         self.fps = fps
         self.dt = float(getattr(simulation, "dt", 0.05))
@@ -89,7 +93,7 @@ class SimulationController:
         self.metrics = metrics  # LiveMetrics (or None: no counters)
         self.counters: Counters | None = None
         self.ended: RunEnd | None = None
-        self._commands: queue.SimpleQueue[tuple[Any, ...]] = queue.SimpleQueue()
+        self._commands: queue.SimpleQueue[tuple[Any, ...]] = queue.SimpleQueue()  # Any: as `send`'s
         self._wake = threading.Event()
         self._serial = 0
         self._anchor: tuple[float, float] | None = None
@@ -103,7 +107,7 @@ class SimulationController:
         self._metrics_failed = ""
 
     # commands from the UI thread (thread-safe) ------------------------------------------------------
-    def send(self, *command: Any) -> None:
+    def send(self, *command: Any) -> None:  # Any: a command's arguments, whose types its name sets (_drain)
         self._commands.put(command)
         self._wake.set()
 
@@ -284,7 +288,7 @@ class SimulationController:
     def _publish(self) -> None:
         sim = self.simulation
         frame = sim.frame()
-        status: tuple[tuple[Any, str, str], ...] = ()
+        status: tuple[tuple[str, str, str], ...] = ()
         if self.selected >= 0:
             try:
                 status = tuple(sim.tree_status(self.selected))
