@@ -10,11 +10,11 @@ from __future__ import annotations
 import asyncio
 import threading
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from textual.app import App
 from textual.binding import Binding
-from textual.screen import ModalScreen
+from textual.screen import ModalScreen, Screen
 
 from grove_tui.services.session import GeneratedScenario, GroveSession
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
@@ -22,6 +22,11 @@ from grove_tui.tui.commands import GroveCommands
 from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
 from grove_tui.settings import (GroveSettings, load_history, load_last_choices, load_settings, save_history,
                                 save_last_choices)
+
+if TYPE_CHECKING:
+    from textual.await_complete import AwaitComplete
+
+    from grove_tui.settings import LastChoices
 
 
 QUIT_WAIT_SECONDS = 0.05  # a moment for the model processes to stop by themselves when the app closes
@@ -48,14 +53,14 @@ class GroveApp(App[int]):
         history: list[str] | None = None,
         persist_history: bool = False,
         open_bundle: Path | None = None,
-        last_choices: dict[str, Any] | None = None,
+        last_choices: LastChoices | None = None,
         remember_choices: bool = False,
     ) -> None:
         super().__init__()
         self.session = session
         self.settings = settings if settings is not None else GroveSettings()
         # The command line's choice, else the last generation's (data dir), else the config file's.
-        last = dict(last_choices or {})
+        last: LastChoices = last_choices or {}
         self.initial_world = world if world is not None else last.get("world", self.settings.generation.world)
         self.initial_preset = preset if preset is not None else last.get("preset", self.settings.generation.preset)
         self.initial_seed = int(last.get("seed", self.settings.generation.seed))
@@ -116,19 +121,19 @@ class GroveApp(App[int]):
     # screens: notifications belong to the screen they were raised on -------------------------------------
     # Cleared before a full screen replaces another (not for dialogs over the same screen), so toasts
     # never carry over and cover the next screen; what the caller notifies after the switch stays.
-    def push_screen(self, screen: Any, *args: Any, **kwargs: Any) -> Any:
+    def push_screen(self, screen: Any, *args: Any, **kwargs: Any) -> Any:  # Any: App.push_screen's overloads
         if not isinstance(screen, ModalScreen):
             self.clear_notifications()
         return super().push_screen(screen, *args, **kwargs)
 
-    def switch_screen(self, screen: Any) -> Any:
+    def switch_screen(self, screen: Screen | str) -> AwaitComplete:
         if not isinstance(screen, ModalScreen):
             self.clear_notifications()
         result = super().switch_screen(screen)
         drop_dead_widget_caches()
         return result
 
-    def pop_screen(self) -> Any:
+    def pop_screen(self) -> AwaitComplete:
         if not isinstance(self.screen, ModalScreen):
             self.clear_notifications()
         result = super().pop_screen()

@@ -59,7 +59,8 @@ class MapLegend(Static):
         for glyph, style, meaning in entries:
             legend.append(glyph, world_map.get_component_rich_style(STYLE_CLASSES[style]))
             legend.append(f"{meaning} ")
-        self.update(legend.rstrip() or legend)
+        legend.rstrip()  # in place (rich's Text.rstrip returns None)
+        self.update(legend)
         self.tooltip = "  ".join(f"{glyph}{meaning}" for glyph, _style, meaning in entries)
 
     def show_colours(self, world_map: MapView, mode: str, names: Sequence[str],
