@@ -10,7 +10,7 @@ from __future__ import annotations
 import asyncio
 import threading
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Literal, TypeVar, overload
 
 from textual.app import App
 from textual.binding import Binding
@@ -25,9 +25,13 @@ from grove_tui.settings import (GroveSettings, load_history, load_last_choices, 
 
 if TYPE_CHECKING:
     from textual.await_complete import AwaitComplete
+    from textual.screen import ScreenResultCallbackType
+    from textual.widget import AwaitMount
 
     from grove_tui.settings import LastChoices
 
+
+_R = TypeVar("_R")  # a screen's result
 
 QUIT_WAIT_SECONDS = 0.05  # a moment for the model processes to stop by themselves when the app closes
 
@@ -121,10 +125,23 @@ class GroveApp(App[int]):
     # screens: notifications belong to the screen they were raised on -------------------------------------
     # Cleared before a full screen replaces another (not for dialogs over the same screen), so toasts
     # never carry over and cover the next screen; what the caller notifies after the switch stays.
-    def push_screen(self, screen: Any, *args: Any, **kwargs: Any) -> Any:  # Any: App.push_screen's overloads
+    if TYPE_CHECKING:  # App.push_screen's own overloads: wait_for_dismiss=True gives a Future of the result
+
+        @overload
+        def push_screen(self, screen: Screen[_R] | str, callback: ScreenResultCallbackType[_R] | None = None,
+                        wait_for_dismiss: Literal[False] = False, *, mode: str | None = None) -> AwaitMount: ...
+
+        @overload
+        def push_screen(self, screen: Screen[_R] | str, callback: ScreenResultCallbackType[_R] | None = None,
+                        wait_for_dismiss: Literal[True] = True, *, mode: str | None = None) -> asyncio.Future[_R]: ...
+
+    def push_screen(self, screen: Screen[_R] | str, callback: ScreenResultCallbackType[_R] | None = None,
+                    wait_for_dismiss: bool = False, *, mode: str | None = None) -> AwaitMount | asyncio.Future[_R]:
         if not isinstance(screen, ModalScreen):
             self.clear_notifications()
-        return super().push_screen(screen, *args, **kwargs)
+        if wait_for_dismiss:
+            return super().push_screen(screen, callback, True, mode=mode)
+        return super().push_screen(screen, callback, False, mode=mode)
 
     def switch_screen(self, screen: Screen | str) -> AwaitComplete:
         if not isinstance(screen, ModalScreen):

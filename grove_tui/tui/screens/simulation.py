@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 from textual import on, work
@@ -38,6 +38,7 @@ if TYPE_CHECKING:
     from grove_tui.tui.app import GroveApp
     from grove_tui.tui.commands import CommandEntry
     from grove_tui.tui.screens.export import ExportProgressScreen
+    from grove_tui.tui.screens.sim_controller import Command
 
 UI_SWITCH_INTERVAL = 0.001
 BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
@@ -521,15 +522,15 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             self.refresh_grounding()
 
     # actions ---------------------------------------------------------------------------------------
-    def _send(self, *command: Any) -> None:  # Any: as SimulationController.send's
+    def _send(self, command: Command) -> None:
         if self.controller is not None:
-            self.controller.send(*command)
+            self.controller.send_command(command)
 
     def action_toggle_play(self) -> None:
-        self._send("play")
+        self._send(("play",))
 
     def action_step(self) -> None:
-        self._send("step", 1)
+        self._send(("step", 1))
 
     def action_speed(self, direction: int) -> None:
         current = self.controller.speed if self.controller is not None else 1.0
@@ -539,11 +540,11 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             index = min(range(len(SPEEDS)), key=lambda i: abs(SPEEDS[i] - current))
             index = max(0, min(len(SPEEDS) - 1, index + direction))
             speed = SPEEDS[index]
-        self._send("speed", speed)
+        self._send(("speed", speed))
         self.notify(f"speed {speed_label(speed)}", timeout=1)
 
     def action_max_speed(self) -> None:
-        self._send("speed", MAX_SPEED)
+        self._send(("speed", MAX_SPEED))
 
     def action_select(self, step: int) -> None:
         if not self._agent_ids:
@@ -556,7 +557,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
     def select_agent(self, agent_id: int) -> None:
         self._selected_agent = agent_id
-        self._send("select", agent_id)
+        self._send(("select", agent_id))
         agent = next(a for a in self.generated.scenario.agents if a.id == agent_id)
         tree = self.query_one("#sim-tree", BTTree)
         tree.clear_all()
@@ -570,10 +571,10 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
     def drive(self, dx: int, dy: int) -> None:
         speed = self.grove.settings.simulation.robot_speed
-        self._send("drive", dx * speed, dy * speed)
+        self._send(("drive", dx * speed, dy * speed))
 
     def action_follow_path(self) -> None:
-        self._send("follow_path")
+        self._send(("follow_path",))
 
     def action_colour_mode(self) -> None:
         self._colour_mode = "behavior" if self._colour_mode == "group" else "group"
@@ -616,10 +617,10 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         # over a frozen map while the export holds the simulation thread.
         self._resume_after_export = controller.playing
         self.exporting = True
-        self._send("play", False)
+        self._send(("play", False))
         self._export_progress = ExportProgressScreen("the run")
         self.app.push_screen(self._export_progress)
-        self._send("call", export, reply)
+        controller.send("call", export, reply)
         if self._last_snapshot is not None:
             self._show_status(self._last_snapshot)
 
@@ -637,7 +638,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
     def _resume(self, _result: object = None) -> None:
         self.exporting = False
         if self._resume_after_export:
-            self._send("play", True)
+            self._send(("play", True))
         self._resume_after_export = False
         if self._last_snapshot is not None:
             self._show_status(self._last_snapshot)

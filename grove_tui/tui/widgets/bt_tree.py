@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from rich.segment import Segment
 from rich.style import Style
@@ -82,8 +82,9 @@ running, success, failure.
     BTTree > .bt--idle { color: $foreground-muted; }
     """
 
-    def __init__(self, label: str = "Scenario", **kwargs: Any) -> None:  # Any: Tree's own keywords (id, classes, ...)
-        super().__init__(label, **kwargs)
+    def __init__(self, label: str = "Scenario", *, name: str | None = None, id: str | None = None,
+                 classes: str | None = None, disabled: bool = False) -> None:
+        super().__init__(label, name=name, id=id, classes=classes, disabled=disabled)
         self.show_root = False
         self.guide_depth = 2
         self._status: dict[str, str] = {}

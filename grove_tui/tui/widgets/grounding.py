@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import io
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from rich.console import Console, Group, RenderableType
 from rich.table import Table
@@ -150,8 +150,9 @@ how long it needs). `+` lines are what the scenario adds beyond the sentence (ne
 readings, `!` count edits and parts of the sentence that could not be honoured.
 """
 
-    def __init__(self, report: Parsed | None, **kwargs: Any) -> None:  # Any: VerticalScroll's keywords (id, ...)
-        super().__init__(**kwargs)
+    def __init__(self, report: Parsed | None, *, name: str | None = None, id: str | None = None,
+                 classes: str | None = None, disabled: bool = False) -> None:
+        super().__init__(name=name, id=id, classes=classes, disabled=disabled)
         self._parsed = read_grounding(report)
 
     def compose(self) -> ComposeResult:
