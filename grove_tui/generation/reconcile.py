@@ -940,7 +940,7 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
     elif asked.task == "follow":
         follows = tuple(getattr(robot, "follows", ()) or ())
         if follows:
-            claims.append(Claim("robot_follow_person", "follow " + (asked.text or "someone"),
+            claims.append(Claim("robot_follow_person", "follow " + (asked.follows or asked.text or "someone"),
                                 f"follow agents {', '.join(map(str, follows))}", partners=follows, distance=3.0,
                                 needs_seconds=30.0))
         else:

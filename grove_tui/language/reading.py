@@ -25,10 +25,12 @@ No model is asked, except the small sentence-embedding model for places words do
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import replace
 
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.groups import Groups
+from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
@@ -36,7 +38,7 @@ from grove_tui.language.parser import parse
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
-from grove_tui.language.robot import RobotClauses
+from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
 from grove_tui.language.text import normalise
@@ -92,5 +94,32 @@ def _read(s: Sentence) -> PromptReading:
     else:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
+    robot = _robot_follows_someone_said(robot, found, mentions, read)
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
+
+
+_FOLLOWED_PRONOUNS = {"them", "him", "her", "us", "the group before"}
+
+
+def _robot_follows_someone_said(robot: RobotReading | None, found: Sequence[RobotClause],
+                                mentions: Sequence[Mention], read: Sequence[GroupReading]) -> RobotReading | None:
+    """Whom "the robot follows them" follows: the group said last before the robot's clause (the one
+    the pronoun points back to), by its own words, so the plan and the report find the group it names."""
+    if robot is None or robot.task != "follow" or not read:
+        return robot
+    if robot.follows is not None and robot.follows.lower() not in _FOLLOWED_PRONOUNS:
+        return robot  # "the robot follows the nurse": named in its own words
+    said_in_clause = set(robot.text.lower().split())
+    if robot.follows is None and any((set(g.who.lower().split()) - {"a", "an", "the"}) & said_in_clause for g in read):
+        return robot  # "the robot follows the climbers": its words name the group
+    first = min((i for rc in found for i in rc.tokens), default=0)
+    singular = bool(said_in_clause & {"him", "her"})
+    said = [m.who for m in mentions if m.last < first]
+    whos = {g.who: g for g in read}
+    for who in reversed(said):
+        group = whos.get(who)
+        if group is not None and (not singular or group.count.value == 1):
+            return replace(robot, follows=group.who)
+    return replace(robot, follows=read[0].who)
+

@@ -77,8 +77,24 @@ def test_reactions_to_the_robot_ask_nothing_of_the_robot_itself(worlds, prompt):
 
 def test_the_robot_follows_someone(worlds):
     reading = read_prompt("A porter walks to the waiting room and the robot follows him.", worlds["station"])
-    assert reading.robot is not None and reading.robot.task == "follow" and reading.robot.follows == "him"
+    assert reading.robot is not None and reading.robot.task == "follow" and reading.robot.follows == "A porter"
     assert [g.destination for g in reading.groups] == ["waiting_room"]
+
+
+@pytest.mark.parametrize("world, prompt, followed", [
+    # a pronoun points back to the group said last before the robot's clause ("them", "her")
+    ("hospital", "Three visitors walk from the lobby to ward C and the robot follows them.", "Three visitors"),
+    ("museum", "A class of pupils walks to the auditorium and then the robot follows them.", "A class of pupils"),
+    ("office", "Two developers wait in the kitchen while a manager walks to the reception, and the robot follows "
+               "her.", "a manager"),
+    # "her" is one person, though a group was said after her
+    ("station", "A guard walks to the ticket hall, four commuters wait on platform 1, and the robot follows her.",
+     "A guard"),
+])
+def test_the_robot_follows_the_group_a_pronoun_points_back_to(worlds, world, prompt, followed):
+    reading = read_prompt(prompt, worlds[world])
+    assert reading.robot is not None and reading.robot.task == "follow"
+    assert reading.robot.follows == followed
 
 
 def test_the_robot_round_trips_through_plain_data(worlds):
