@@ -25,7 +25,7 @@ Suite format (one case):
           expect: {queue: ticket_office}
       robot: {reach: [platform_1, platform_2]}   # optional; a list is any one of them
 
-Outcome kinds (`expect`): reach, stay, queue, wander, leave, start (a place or a list of places);
+Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a place or a list of places);
 converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); robot (follow,
 approach, block, avoid, look). The robot's: reach, via, stay, patrol (a place), follow (words of a group).
 """
@@ -35,7 +35,7 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -52,7 +52,7 @@ if TYPE_CHECKING:
     from grove_tui.scenario.model import Scenario
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
-                  "robot")
+                  "robot", "keep_out")
 ROBOT_OUTCOMES = ("reach", "via", "stay", "patrol", "follow")
 REACTIONS = ("follow", "approach", "block", "avoid", "look")
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
@@ -282,9 +282,11 @@ def _hand_claims(expected: ExpectedGroup, world: World, speed: float) -> list[Cl
         claims.append(Claim("count", str(expected.count), "expected"))
     for kind, value in expected.expect:
         tag = f"{kind}|"
-        if kind in ("reach", "stay", "start", "leave", "wander"):
+        if kind in ("reach", "stay", "start", "leave", "wander", "keep_out"):
             for name in _names(value):
                 claim = _place(kind, name, world, n, stay=kind == "stay")
+                if kind == "keep_out":
+                    claim = replace(claim, share=1.0)
                 if kind in ("wander", "leave") and claim.zone is None:
                     claim = Claim(kind, name, "expected", zone=_zone_of(world, name))
                 if kind == "start":

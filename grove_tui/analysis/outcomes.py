@@ -491,6 +491,30 @@ class _LeaveProbe(_Probe):
                 and any(e.kind in ("evacuated", "left_building") for e in events.get(i, ()))]
 
 
+class _KeepOutProbe(_Probe):
+    """They keep out of a place all the run long: each member's first time there, if any."""
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.entered = np.full(self.cols.size, np.inf)
+
+    def add(self, f: _Frames) -> None:
+        if not self.cols.size:
+            return
+        inside = self.inside(f)
+        for j in np.flatnonzero(inside.any(axis=0) & np.isinf(self.entered)):
+            self.entered[j] = f.t[np.argmax(inside[:, j])]
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = self.members
+        went = self.entered[np.isfinite(self.entered)]
+        kept = n - int(went.size)
+        text = f"{kept}/{n} never in {self.where()}"
+        if went.size:
+            text += f" (first in at {_when(float(went.min()))})"
+        return (HOLDS if kept >= _need(self.claim, n) else FAILS), text
+
+
 class _MoveProbe(_Probe):
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
@@ -654,7 +678,7 @@ class _EvacuateProbe(_EventsProbe):
         if out:
             text += f" by {_when(last)} (" + ", ".join(f"{k or 'an exit'} {v}" for k, v in sorted(used.items())) + ")"
         if exits:
-            text += f"; {through} through {', '.join(sorted(exits))}"
+            text += f"; {through} through " + (', '.join(sorted(exits)) if len(exits) <= 3 else "the exits asked")
         ok = through >= _need(self.claim, n)
         return (HOLDS if ok else FAILS), text
 
@@ -999,7 +1023,8 @@ class _RobotFollowPersonProbe(_Probe):
 
 _PROBES: dict[str, type[_Probe]] = {
     "count": _CountProbe, "start": _StartProbe, "reach": _ReachProbe, "stay": _StayProbe, "wander": _WanderProbe,
-    "move": _MoveProbe, "leave": _LeaveProbe, "pace": _PaceProbe, "queue": _QueueProbe, "converse": _ConverseProbe,
+    "move": _MoveProbe, "leave": _LeaveProbe, "keep_out": _KeepOutProbe, "pace": _PaceProbe, "queue": _QueueProbe,
+    "converse": _ConverseProbe,
     "evacuate": _EvacuateProbe, "follow_person": _FollowPersonProbe, "robot_follow": _RobotFollowProbe,
     "robot_approach": _RobotApproachProbe, "robot_block": _RobotBlockProbe, "robot_avoid": _RobotAvoidProbe,
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,

@@ -181,6 +181,10 @@ def queue_line_direction(space: Floor, name: str, service_point: Point, spacing:
             found: Zone | Door | Entity | None = space.world.find(name)
         except Exception:
             found = None
+        if isinstance(found, Zone):
+            # "queue at security": the zone names the place, the thing served at this point is its
+            # entity (a scanner, a counter); the line extends from that thing's front
+            found = _served_thing(space.world, service_point) or found
         footprint = getattr(found, "footprint", None)
         if footprint:
             cx = sum(p[0] for p in footprint) / len(footprint)
@@ -210,6 +214,16 @@ def queue_line_direction(space: Floor, name: str, service_point: Point, spacing:
         if score > best_score + 1e-9:
             best, best_score, best_length = (ux, uy), score, length
     return best, best_length
+
+
+def _served_thing(world: World, point: Point) -> Entity | None:
+    """The entity whose interaction point is `point` (within half a metre), if any."""
+    best, best_d = None, 0.5
+    for entity in world.entities():
+        d = math.dist(entity.interaction_point, point)
+        if d <= best_d:
+            best, best_d = entity, d
+    return best
 
 
 class Conversation:

@@ -36,6 +36,7 @@ from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
+from grove_tui.generation.keep_out import keep_out_planner
 from grove_tui.generation.waypoints import plan_waypoints
 from grove_tui.world.model import Door, Entity, World
 from grove_tui.navigation.grid import OccupancyGrid
@@ -129,13 +130,27 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
 
     agents: list[AgentSpec] = []
     trees: TreeFiles = {}
+    keeping_out = _keep_out_planners(world, grid, post, cache, cached)
+    groups_by_index = {g.index: g for g in post.groups}
     for a in post.agents:
         _check_cancel(cancel)
         assert a.document is not None  # post-processing gives every agent its tree document
         document = a.document.copy()  # planning edits its own copy: a re-plan starts from the same trees
         if preset.velocity == "waypoints" and preset.planner.enabled:
+            around = keeping_out.get(a.group_index)
             try:
-                plan_waypoints(document, a.start, cached, start_label=f"agent {a.id} in {a.spawn_zone}")
+                if around is not None:
+                    try:
+                        # "..., avoiding the lifts": round them, when there is a way round
+                        plan_waypoints(document, a.start, around, start_label=f"agent {a.id} in {a.spawn_zone}")
+                    except PlanningError:
+                        document = a.document.copy()
+                        shunned = ", ".join(groups_by_index[a.group_index].places_shunned)
+                        note = f"group '{a.label}': no way round {shunned}; it goes through"
+                        notes.extend([] if note in notes else [note])
+                        around = None
+                if around is None:
+                    plan_waypoints(document, a.start, cached, start_label=f"agent {a.id} in {a.spawn_zone}")
             except PlanningError as exc:
                 raise GenerationError(f"agent {a.id} ({a.label}) cannot reach its goal: {exc}") from None
         goals = goals_from_tree(document)
@@ -150,6 +165,21 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             zone=a.zone, tree=rel, radius=preset.agent_radius, max_vel=a.max_vel, label=a.label,
             behavior=a.behavior))
     return OperationalPlan(agents, trees, fields, robot_spec, notes)
+
+
+def _keep_out_planners(world: World, grid: OccupancyGrid, post: PostProcessed, cache: PlanCache | None,
+                       cached: CachedPlanner) -> dict[int, CachedPlanner]:
+    """Per group index, a planner that goes round the places its sentence rules out (groups that rule
+    out none plan with the shared one)."""
+    planners: dict[int, CachedPlanner] = {}
+    for g in post.groups:
+        if not g.places_shunned:
+            continue
+        planner = keep_out_planner(world, grid, g.places_shunned)
+        if planner is not None:
+            name = f"{world.name}~{'~'.join(sorted(g.places_shunned))}"  # its own cache entries
+            planners[g.index] = CachedPlanner(name, planner, cache or cached.cache)
+    return planners
 
 
 def _check_cancel(cancel: threading.Event | None) -> None:

@@ -25,7 +25,7 @@ from grove_tui.bt.format.xml import write_tree
 from grove_tui.generation.draft import Draft, DraftNode, place_at
 from grove_tui.errors import GenerationError, PlanningError, PromptError
 from grove_tui.generation.presets import Preset
-from grove_tui.generation.reconcile import reconcile
+from grove_tui.generation.reconcile import places_kept_out, reconcile
 from grove_tui.generation.rois import RoISelection
 from grove_tui.language.model import GroupReading, PromptReading, effective_counts
 from grove_tui.navigation.grid import OccupancyGrid
@@ -97,6 +97,8 @@ class GroupPlan:
     reacts_only: bool = False
     reactor_zone: str | None = None  # where the sentence puts such a group: it starts there, by the robot's route
     exit_asked: str | None = None  # the exit its sentence sends it through ("leave through the back door")
+    exits_shunned: tuple[str, ...] = ()  # exits its sentence says it does not use ("not the main doors")
+    places_shunned: tuple[str, ...] = ()  # other places it keeps out of on its way ("avoiding the lifts")
 
 
 @dataclass
@@ -573,7 +575,9 @@ def plan_groups(world: World, preset: Preset, draft: Draft, selection: RoISelect
                         party_size=r.party_size, speed_factor=r.speed_factor, added=list(r.added),
                         reacts_only=r.reacts_only,
                         reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
-                        else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]))
+                        else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]),
+                        exits_shunned=_exits_shunned(world, reading.groups[r.reading_index or 0]),
+                        places_shunned=places_kept_out(world, reading.groups[r.reading_index or 0]))
               for i, r in enumerate(reconcile(draft, reading, world, default_spawn, notes,
                                               evacuation_field=preset.velocity == "field"))]
     if not groups:
@@ -743,6 +747,12 @@ def _exit_asked(world: World, group: GroupReading) -> str | None:
     return group.destination if group.destination in exits else None
 
 
+def _exits_shunned(world: World, group: GroupReading) -> tuple[str, ...]:
+    """The exits a group's sentence says it does not use ("..., not the main doors")."""
+    exits = {d.name for d in world.exits()}
+    return tuple(a for a in group.avoid if a in exits)
+
+
 def _reactor_zone(world: World, group: GroupReading) -> str | None:
     """The zone a group that reacts to the robot is put in by its sentence: where they are, or where
     they follow it through."""
@@ -878,6 +888,18 @@ def _assign_exits(world: World, grid: OccupancyGrid, groups: Sequence[GroupPlan]
     # A group the sentence sends through a named exit leaves through it, whatever is nearer.
     asked = {g.index: g.exit_asked for g in groups if g.exit_asked in doors}
     choice = [asked.get(a.group_index, name) for a, name in zip(evacuees, choice)]
+    for g in groups:
+        allowed = {n: d.position for n, d in doors.items() if n not in g.exits_shunned}
+        rows = [k for k, a in enumerate(evacuees) if a.group_index == g.index and choice[k] in g.exits_shunned]
+        if rows and allowed:
+            # "..., not the main doors": the nearest of the others
+            try:
+                others = nearest_exits(planner, allowed, [evacuees[k].start for k in rows])
+            except PlanningError as exc:
+                raise GenerationError(f"group '{g.label}' cannot reach an exit but {', '.join(g.exits_shunned)}: "
+                                      f"{exc}") from None
+            for k, name in zip(rows, others):
+                choice[k] = name
     # A social party (family, friends) leaves together: through its first member's nearest exit.
     party_exit: dict[int, str] = {}
     for agent, name in zip(evacuees, choice):

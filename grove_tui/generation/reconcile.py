@@ -44,7 +44,7 @@ from grove_tui.scenario.report import (
     RobotGrounding,
 )
 from grove_tui.scenario.model import RobotSpec
-from grove_tui.world.model import Door, Entity, World
+from grove_tui.world.model import Door, Entity, World, Zone
 
 # Nodes that make a person do something on their own: a tree with none of them leaves its agent
 # standing where it spawned (conditions, bookkeeping and robot reactions only fire on cue).
@@ -343,7 +343,8 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     base = _base_intent(group)
     if base == "evacuate" and evacuation_field:
         destination = group.destination
-        exit_name = destination if destination and _is_exit(world, destination) else _nearest_exit(world, group.start)
+        exit_name = destination if destination and _is_exit(world, destination) else \
+            _nearest_exit(world, group.start, group.avoid)
         return DraftNode("FollowVelocityField", {"exit": exit_name})
     steps: list[DraftNode] = []
     via = [DraftNode("GoTo", {"target": v}) for v in group.via]
@@ -379,11 +380,12 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         # field in an emergency, else the planned way to the door and through it)
         return _sequence(via + [DraftNode("FollowVelocityField", {"exit": destination})])
     if destination is None and base == "evacuate":
-        destination = _nearest_exit(world, group.start)
+        destination = _nearest_exit(world, group.start, group.avoid)
     if destination is None:
         if evacuation_field:
             # "get out", "leave" in an emergency: out along the field to the nearest exit
-            return _sequence(via + [DraftNode("FollowVelocityField", {"exit": _nearest_exit(world, group.start)})])
+            return _sequence(via + [DraftNode("FollowVelocityField", {"exit": _nearest_exit(world, group.start,
+                                                                                             group.avoid)})])
         start = world.zone_of_place(group.start or "")
         onward = _largest_neighbour(world, start) if start and base == "walk" else None
         if onward is not None:
@@ -392,7 +394,7 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         zone = world.zone_of_place(group.start or group.location or "")
         if zone:
             return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": 0.0})])
-        destination = _nearest_exit(world, None)
+        destination = _nearest_exit(world, None, group.avoid)
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
 
 
@@ -524,8 +526,9 @@ def _is_exit(world: World, name: str | None) -> bool:
     return bool(name) and any(d.name == name for d in world.exits())
 
 
-def _nearest_exit(world: World, start: str | None) -> str:
-    exits = world.exits()
+def _nearest_exit(world: World, start: str | None, avoid: Sequence[str] = ()) -> str:
+    """The exit nearest where they start, never one the sentence says they do not use."""
+    exits = [d for d in world.exits() if d.name not in avoid] or world.exits()
     if not exits:
         return str(world.zones[0].name)
     zone = world.zone_of_place(start or "")
@@ -718,8 +721,11 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
                               place=claim.place, point=claim.point, radius=claim.radius)
             claims.append(claim)
         elif "FollowVelocityField" in tree_nodes:
-            claims.append(Claim("evacuate", "walk out (no destination named)", "follow the evacuation field to "
-                                "the nearest exit", needs_seconds=_evacuation_eta(agents, world, speed, n)))
+            shunned = [a for a in r.avoid if _is_exit(world, a)]
+            claims.append(Claim("evacuate", "any exit but " + ", ".join(shunned) if shunned else
+                                "walk out (no destination named)", "follow the evacuation field to the nearest exit",
+                                exits=tuple(d.name for d in world.exits() if d.name not in shunned) if shunned else (),
+                                needs_seconds=_evacuation_eta(agents, world, speed, n)))
         elif r.start and world.zone_of_place(r.start):
             # "people leave the big meeting room": out of it, wherever to
             zone = world.zone_of_place(r.start)
@@ -744,7 +750,12 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claims.append(_place_claim("reach", r.destination, f"evacuate to {r.destination}", world, n,
                                        _eta(agents, r.destination, world, speed)))
         else:
-            asked = "any of " + ", ".join(exits) if len(exits) > 1 else r.destination or "any exit"
+            shunned = [a for a in r.avoid if _is_exit(world, a)]
+            if shunned and not exits:
+                # "..., not the main doors": any exit but those
+                exits = tuple(d.name for d in world.exits() if d.name not in shunned)
+            asked = "any exit but " + ", ".join(shunned) if shunned and not r.destination else \
+                "any of " + ", ".join(exits) if len(exits) > 1 else r.destination or "any exit"
             claims.append(Claim("evacuate", asked,
                                 "follow the evacuation field" if "FollowVelocityField" in tree_nodes else "walk out",
                                 exits=exits, needs_seconds=_evacuation_eta(agents, world, speed, n)))
@@ -795,7 +806,27 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         claims.append(Claim("pace", r.pace, f"desired speed {speed:.2f} m/s" + (" on the way to the robot" if reach
                                                                                  else ""),
                             low=low, high=high, distance=reach, needs_seconds=15.0))
+    for name in places_kept_out(world, r):
+        # "..., avoiding the lifts": never there, all the run long
+        claims.append(_keep_out_claim(world, name, g.count))
     return claims
+
+
+def places_kept_out(world: World, group: GroupReading) -> tuple[str, ...]:
+    """The places but exits a group's sentence says it keeps out of, when it neither starts, waits, passes
+    nor ends there ("walk to the café, avoiding the lifts"); an exit ruled out is the exit choice's."""
+    exits = {d.name for d in world.exits()}
+    own = {world.zone_of_place(p) for p in (group.start, group.destination, group.location, *group.via) if p}
+    return tuple(a for a in group.avoid if a not in exits and a not in own)
+
+
+def _keep_out_claim(world: World, name: str, members: int) -> Claim:
+    place = world.find(name)
+    if isinstance(place, Zone):
+        return Claim("keep_out", name, f"plan round {name}", zone=name, place=name, share=1.0, needs_seconds=30.0)
+    point = place.interaction_point if isinstance(place, Entity) else place.position
+    return Claim("keep_out", name, f"plan round {name}", place=name, point=(round(point[0], 3), round(point[1], 3)),
+                 radius=1.0, share=1.0, needs_seconds=30.0)
 
 
 def replace_seconds(claim: Claim, seconds: float | None) -> Claim:

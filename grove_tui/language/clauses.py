@@ -47,6 +47,7 @@ class Clause:
     evacuate: bool = False
     has_action: bool = False
     moves: bool = False  # a verb of walking is among the clause's verbs
+    avoid: list[str] = field(default_factory=list)  # places said not to be used ("not the main doors")
 
 
 @dataclass
@@ -119,7 +120,11 @@ class Clauses:
             k = i + len(negated)
             place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else s.phrase_end(k))
+            if place is not None and place.match is not None:
+                scan.c.avoid.append(place.match.name)
             return True
+        if w in lx.NOT_USING_WORDS:
+            return self._not_using(scan, i)
         if w in ("evacuation", "evacuating", "clearing") and nxt == "of":
             scan.c.evacuate = scan.c.evacuate or w != "clearing"
             return self._add_place(scan, self.places.phrase(i + 2, "obj:start", i), i)
@@ -178,6 +183,21 @@ class Clauses:
         if place is None or place.match is None or place.match.name == before.match.name:
             return None
         return replace(place, sequel=True)
+
+    def _not_using(self, scan: _Scan, i: int) -> bool:
+        """ "..., not the main doors", "but not through the lobby", "avoiding the lifts": a place the
+        group must not use, kept apart from where it goes (a place word must follow; "not moving" is no
+        place)."""
+        s = self.s
+        k = s.skip(i + 1, lx.NOT_USING_LINKS)
+        if k >= s.n or (s.low[i] in ("not", "never") and s.verb_follows(k)):
+            return False
+        place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
+        if place is None or place.match is None:
+            return False
+        scan.c.avoid.append(place.match.name)
+        self._take(scan, i, place.end)
+        return True
 
     def _take(self, scan: _Scan, first: int, end: int) -> None:
         scan.used.update(range(first, end))

@@ -327,7 +327,8 @@ class Groups:
             purpose=c.purpose or (scene.purpose if scene is not None else None), wait_seconds=wait,
             together=m.together or c.together or count.kind == "structured",
             pace=c.pace if c.pace != "normal" or scene is None else scene.pace, relation=m.relation,
-            follows=c.follows, text=text, confidence=tuple(confidence))
+            follows=c.follows, text=text, confidence=tuple(confidence),
+            avoid=tuple(dict.fromkeys(c.avoid + (scene.avoid if scene is not None else []))))
 
     @staticmethod
     def _default_intent(c: Clause, scene: Clause | None) -> str:

@@ -80,6 +80,11 @@ NOBODY_WORDS = frozenset({"nobody", "noone", "none"})  # "no one" is read as two
 EXCEPT_WORDS = frozenset({"except", "but", "save", "besides"})  # "other than", "apart from" are read as two words
 # A place after these is where people do NOT go: neither a role nor an unknown place.
 NEGATED_PLACE_PHRASES = (("instead", "of"), ("rather", "than"))
+# A place a group must not use: "..., not the main doors", "but not through the lobby", "avoiding the lifts",
+# and the words between that word and the place.
+NOT_USING_WORDS = frozenset({"not", "never", "avoiding", "bypassing"})
+NOT_USING_LINKS = frozenset({"by", "through", "thru", "via", "using", "use", "past", "into", "out", "of", "towards",
+                             "toward", "to", "at", "from", "near", "the", "a", "an", "that", "this", "their", "its"})
 
 DURATION_UNITS = {"second": 1.0, "sec": 1.0, "minute": 60.0, "min": 60.0, "hour": 3600.0, "hr": 3600.0, "moment": 10.0}
 

@@ -96,6 +96,7 @@ class GroupReading:
     follows: str | None = None  # whom a "follow" group follows, as written ("the nurse")
     text: str = ""  # the prompt words this group owns
     confidence: tuple[FieldConfidence, ...] = ()  # per field; a field not listed was read outright
+    avoid: tuple[str, ...] = ()  # places the sentence says they do not use ("not the main doors")
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
@@ -104,6 +105,7 @@ class GroupReading:
         data = asdict(self)
         data["count"] = self.count.to_dict()
         data["via"] = list(self.via)
+        data["avoid"] = list(self.avoid)
         data["confidence"] = [c.to_dict() for c in self.confidence]
         return data
 
@@ -112,6 +114,7 @@ class GroupReading:
         values = dict(data)
         values["count"] = Count.from_dict(values["count"])
         values["via"] = tuple(values.get("via", ()))
+        values["avoid"] = tuple(values.get("avoid", ()))
         values["confidence"] = _confidences(values.get("confidence"))
         known = {f for f in cls.__dataclass_fields__}
         return cls(**{k: v for k, v in values.items() if k in known})

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import os
 from collections import OrderedDict
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -238,6 +239,16 @@ def _rasterize(world: World, resolution: float, inflation: float) -> OccupancyGr
 
 _GRIDS: OrderedDict[tuple[str, float, float], OccupancyGrid] = OrderedDict()
 _GRID_CACHE_SIZE = 12
+
+
+def with_blocked(grid: OccupancyGrid, shapes: Sequence[shapely.Geometry]) -> OccupancyGrid:
+    """A copy of the grid with the cells under `shapes` occupied (places a group must keep out of). The
+    copy has no world: its planners search the grid itself, not the world's door graph, which would lead
+    through the blocked places."""
+    occupied = np.array(grid.occupied, dtype=bool, copy=True)
+    for shape in shapes:
+        _mark_polygon(occupied, shape, grid.origin, grid.resolution, True)
+    return OccupancyGrid(grid.origin, grid.resolution, occupied, grid.inflation, grid.world_name)
 
 
 def build_grid(world: World, resolution: float = 0.1, inflation: float = 0.35) -> OccupancyGrid:

@@ -56,6 +56,7 @@ GROUP_CLAIMS = (
     "robot_avoid",     # they move away when the robot comes near
     "robot_look",      # they face the robot while it is in sight
     "pace",            # their walking speed is `pace` (slow/fast), between `low` and `high` m/s
+    "keep_out",        # they never set foot in `zone` (or within `radius` of `point`): "avoiding the lifts"
 )
 ROBOT_CLAIMS = ("robot_reach", "robot_via", "robot_stay", "robot_patrol", "robot_follow_person")
 CLAIM_KINDS = GROUP_CLAIMS + ROBOT_CLAIMS

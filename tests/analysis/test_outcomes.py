@@ -145,6 +145,17 @@ def test_leave_is_being_out_of_the_place_at_some_time(clinic):
     assert check(clinic, claim, run(15, stay)).status == FAILS
 
 
+def test_keep_out_is_never_setting_foot_in_the_place(clinic):
+    claim = Claim("keep_out", "lobby", "plan round lobby", zone="lobby", share=1.0)
+    # two walk along the corridor, east of the lobby; then one of them cuts back through it
+    apart = people(line((14, 4), (18, 4)), line((16, 4), (19, 4)))
+    held = check(clinic, claim, run(15, apart))
+    assert held.status == HOLDS and "2/2 never in lobby" in held.evidence
+    through = people(line((14, 4), (18, 4)), line((16, 4), (5, 4)))
+    failed = check(clinic, claim, run(15, through))
+    assert failed.status == FAILS and "1/2 never in lobby" in failed.evidence and "first in at" in failed.evidence
+
+
 def test_pace_is_the_walking_speed_against_the_asked_band(clinic):
     slow = Claim("pace", "slow", "0.7 m/s", low=0.2, high=0.85)
     assert check(clinic, slow, run(10, people(line((1, 1), (9, 1), 0.6), line((1, 3), (9, 3), 0.6)))).status == HOLDS

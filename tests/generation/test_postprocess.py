@@ -166,6 +166,23 @@ def test_emergency_without_a_named_exit_sends_each_person_to_their_nearest(clini
         assert etree.fromstring(a.xml.encode()).find(".//FollowVelocityField").get("exit") == "back_exit"
 
 
+@pytest.mark.parametrize("preset", ["emergency", "normal"])
+def test_an_exit_the_sentence_rules_out_is_used_by_nobody(clinic, grid, preset):
+    # from the cafeteria the back exit is the nearer walk; the sentence rules it out
+    out = run(clinic, grid, preset, "Eight people evacuate the cafeteria, but not through the back exit",
+              [DraftGroup("people", 8, "cafeteria", evac("back_exit"))], nodes=("Sequence", "FollowVelocityField"))
+    assert goto_targets(out.groups[0].tree) == ["main_entrance"]
+    assert {a.exit for a in out.agents} <= {"main_entrance", None}
+    assert out.groups[0].exits_shunned == ("back_exit",)
+
+
+def test_a_place_the_sentence_rules_out_is_kept_apart_from_where_they_go(clinic, grid):
+    out = run(clinic, grid, "normal", "Four visitors walk from the lobby to the cafeteria, avoiding the pharmacy",
+              [DraftGroup("visitors", 4, "lobby", DraftNode("GoTo", {"target": "cafeteria"}))])
+    assert out.groups[0].places_shunned == ("pharmacy",)
+    assert goto_targets(out.groups[0].tree) == ["cafeteria"]
+
+
 def test_spawn_follows_the_prompts_place_words_not_the_destination(clinic, grid):
     prompt = "Four visitors in the lobby walk to the cafeteria"
     out = run(clinic, grid, "normal", prompt,
