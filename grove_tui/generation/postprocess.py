@@ -697,6 +697,7 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
                                         exit=exit_name, behavior=g.behavior))
             first += size
 
+    _leaders_among_their_followers(groups, agents, space, rng)
     if len(exit_names) > 1:
         _assign_exits(world, grid, groups, agents, exit_names, notes, preset.exit_choice)
 
@@ -740,6 +741,23 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
         agent.document = writer.write(agent, g, targets)
     goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
     return PostProcessed(agents, groups, exit_name, goals, notes, exit_names)
+
+
+def _leaders_among_their_followers(groups: Sequence[GroupPlan], agents: Sequence[AgentPlan], space: FreeSpace,
+                                   rng: np.random.Generator) -> None:
+    """The person a group follows starts among them ("ten tourists follow their guide": the guide stands
+    with the tour group, not across the hall), when they start in the same zone."""
+    for follower in groups:
+        leader = next((g for g in groups if follower.leader_index is not None and g is not follower
+                       and g.reading_index == follower.leader_index), None)
+        if leader is None or leader.spawn != follower.spawn or not leader.member_ids:
+            continue
+        behind = [a.start for a in agents if a.group_index == follower.index]
+        ahead = next((a for a in agents if a.id == leader.member_ids[0]), None)
+        if not behind or ahead is None:
+            continue
+        centre = (sum(p[0] for p in behind) / len(behind), sum(p[1] for p in behind) / len(behind))
+        (ahead.start,) = space.sample(leader.spawn, 1, rng, SPAWN_SPACING, key="spawn", cluster=centre)
 
 
 def _exit_asked(world: World, group: GroupReading) -> str | None:

@@ -290,6 +290,18 @@ def test_follow_person_counts_the_time_the_followed_walk(clinic):
     assert lagging.status == FAILS
 
 
+def test_follow_person_takes_a_column_behind_them_as_following(clinic):
+    # five walk in single file 1.5 m apart behind the nurse: the tail is 7.5 m back, yet with her
+    claim = Claim("follow_person", "follow the nurse", "walk with nurse", partners=(6,), distance=3.0)
+    nurse = line((8, 3), (18, 3))
+    column = [(lambda k: lambda t: nurse(t) - [1.5 * k, 0.0])(k) for k in range(1, 6)]
+    held = check(clinic, claim, run(10, people(*column, nurse)), members=(1, 2, 3, 4, 5))
+    assert held.status == HOLDS and "5/5" in held.evidence
+    # the same column 6 m back from her: a column, but not with her
+    apart = [(lambda k: lambda t: nurse(t) - [4.5 + 1.5 * k, 0.0])(k) for k in range(1, 6)]
+    assert check(clinic, claim, run(10, people(*apart, nurse)), members=(1, 2, 3, 4, 5)).status == FAILS
+
+
 def test_the_robots_own_claims(clinic):
     reach = Claim("robot_reach", "corridor", "drive to corridor", zone="corridor")
     via = Claim("robot_via", "lobby", "drive through lobby", zone="lobby")
