@@ -26,7 +26,8 @@ Suite format (one case):
       robot: {reach: [platform_1, platform_2]}   # optional; a list is any one of them
 
 Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a place or a list of places);
-converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); robot (follow,
+converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); follow (the `who` of another
+group: close to them while they walk); robot (follow,
 approach, block, avoid, look). The robot's: reach, via, stay, patrol (a place), follow (words of a group).
 """
 
@@ -52,7 +53,7 @@ if TYPE_CHECKING:
     from grove_tui.scenario.model import Scenario
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
-                  "robot", "keep_out")
+                  "robot", "keep_out", "follow")
 ROBOT_OUTCOMES = ("reach", "via", "stay", "patrol", "follow")
 REACTIONS = ("follow", "approach", "block", "avoid", "look")
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
@@ -189,7 +190,7 @@ def score_bundle(case: GroundingCase, bundle: str | Path) -> CaseScore:
     for expected, found in pairs:
         members = found.members if found is not None else ()
         hand_groups.append(GroupGrounding(expected.who, found.label if found else "-",
-                                          tuple(_hand_claims(expected, world, speed)), members))
+                                          tuple(_hand_claims(expected, world, speed, pairs)), members))
     robot_claims = tuple(_robot_claims(case.robot, world, scenario, report, pairs))
     hand = GroundingReport(case.prompt, tuple(hand_groups),
                            robot=RobotGrounding("expected", "", robot_claims) if robot_claims else None)
@@ -275,7 +276,8 @@ def _zone_of(world: World, name: str) -> str:
 
 
 # Each hand outcome becomes one or more claims; a list of places gives alternatives (any of them).
-def _hand_claims(expected: ExpectedGroup, world: World, speed: float) -> list[Claim]:
+def _hand_claims(expected: ExpectedGroup, world: World, speed: float,
+                 pairs: Sequence[tuple[ExpectedGroup, GroupGrounding | None]] = ()) -> list[Claim]:
     n = expected.count or 1
     claims: list[Claim] = []
     if expected.count is not None:
@@ -312,6 +314,12 @@ def _hand_claims(expected: ExpectedGroup, world: World, speed: float) -> list[Cl
             low, high = PACE_BANDS[str(value)]
             claims.append(Claim("pace", tag + str(value), "expected", low=round(low * speed, 2) if value == "fast" else low,
                                 high=round(high * speed, 2) if value == "slow" else high))
+        elif kind == "follow":
+            # they follow another group of the case (its `who`): close to them while those walk
+            partners = next((found.members for other, found in pairs if found is not None and other.who == str(value)),
+                            ())
+            claims.append(Claim("follow_person", tag + str(value), "expected", partners=tuple(partners),
+                                distance=round(3.0 + 0.5 * math.sqrt(max(n - 1, 0)), 1)))
         elif kind == "robot":
             share = 0.5 if value == "block" else 0.9
             claims.append(Claim(f"robot_{value}", tag + str(value), "expected",

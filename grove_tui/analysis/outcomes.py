@@ -55,6 +55,9 @@ ZONE_MARGIN = 0.3  # a person's centre this far outside a zone's boundary still 
 MOVING = 0.3  # m/s: faster than this is walking, for pace
 PACE_QUANTILE = 0.75  # the pace is this quantile of the moving speeds
 ROBOT_MOVING = 0.1  # m/s
+PARTNER_WALKING = 0.3  # m/s: the people followed are on their way (standing people sway slower than this)
+CHAIN_LINK = 2.0  # metres between neighbours of a column that walks behind someone
+CHAIN_MAX = 120  # followers checked as a column (the pairwise distances grow with its square)
 FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep within reach
 LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
@@ -900,13 +903,33 @@ class _RobotLookProbe(_RobotProbe):
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 
+def _along_the_chain(pos: np.ndarray, near: np.ndarray, present: np.ndarray) -> np.ndarray:
+    """(F, M) members with the one followed: near them, or within CHAIN_LINK of a member who is (a class
+    behind its teacher walks as a column, its tail as much with her as its head)."""
+    diff = pos[:, :, None, :] - pos[:, None, :, :]
+    linked = np.hypot(diff[..., 0], diff[..., 1]) <= CHAIN_LINK  # NaN (absent) compares False
+    reached = near.copy()
+    for _ in range(min(pos.shape[1], 40)):
+        grown = reached | (linked & reached[:, None, :]).any(axis=2)
+        grown &= present
+        if (grown == reached).all():
+            break
+        reached = grown
+    return reached
+
+
 class _FollowPersonProbe(_Probe):
+    """Close to the people followed while they walk ("follow their guide to the gallery": on the way;
+    once the guide stands still, anywhere); all the time when they never walk."""
+
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
         self.partner_cols = self.checker._cols(self.claim.partners)
         m = self.cols.size
         self.present = np.zeros(m)
         self.near = np.zeros(m)
+        self.moving_present = np.zeros(m)
+        self.moving_near = np.zeros(m)
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size or not self.partner_cols.size:
@@ -916,17 +939,29 @@ class _FollowPersonProbe(_Probe):
         d = np.hypot(pos[:, :, None, 0] - partners[:, None, :, 0], pos[:, :, None, 1] - partners[:, None, :, 1])
         d = np.where(np.isfinite(d), d, np.inf).min(axis=2)
         present = np.isfinite(pos[..., 0]) & np.isfinite(partners[..., 0]).any(axis=1)[:, None]
+        near = present & (d <= (self.claim.distance or 3.0))
+        if 1 < self.cols.size <= CHAIN_MAX:
+            near = _along_the_chain(pos, near, present)
         self.present += present.sum(axis=0)
-        self.near += (present & (d <= (self.claim.distance or 3.0))).sum(axis=0)
+        self.near += near.sum(axis=0)
+        speed = np.hypot(f.vel[:, self.partner_cols, 0], f.vel[:, self.partner_cols, 1])
+        walking: np.ndarray = np.asarray((np.where(np.isfinite(speed), speed, 0.0) > PARTNER_WALKING).any(axis=1))
+        walking = walking[:, None]
+        self.moving_present += (present & walking).sum(axis=0)
+        self.moving_near += (near & walking).sum(axis=0)
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         n = self.members
+        if self.moving_present.sum() > 0:
+            self.present, self.near = self.moving_present, self.moving_near
         share = np.divide(self.near, self.present, out=np.zeros_like(self.near), where=self.present > 0)
         ok = share >= 0.6
         k = int(ok.sum())
         text = f"{k}/{n} kept within {self.claim.distance or 3.0:g} m of them"
+        if 1 < self.cols.size <= CHAIN_MAX:
+            text += f" or {CHAIN_LINK:g} m of one who is"
         if share.size:
-            text += f" ({float(share.mean()):.0%} of the time)"
+            text += f" ({float(share.mean()):.0%} of the time" + (" they walked)" if self.moving_present.sum() else ")")
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 

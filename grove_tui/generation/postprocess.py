@@ -97,6 +97,7 @@ class GroupPlan:
     reacts_only: bool = False
     reactor_zone: str | None = None  # where the sentence puts such a group: it starts there, by the robot's route
     exit_asked: str | None = None  # the exit its sentence sends it through ("leave through the back door")
+    leader_index: int | None = None  # reading index of the group it follows: FollowAgent's target
     exits_shunned: tuple[str, ...] = ()  # exits its sentence says it does not use ("not the main doors")
     places_shunned: tuple[str, ...] = ()  # other places it keeps out of on its way ("avoiding the lifts")
 
@@ -486,6 +487,7 @@ class TreeWriter:
     def __init__(self, resolver: TargetResolver) -> None:
         self.resolver = resolver
         self.goal_ids: dict[Point, int] = {}
+        self.leaders: dict[int, int] = {}  # reading index -> the first member of that group (whom followers follow)
 
     def goal_id(self, p: Point) -> int:
         if p not in self.goal_ids:
@@ -526,6 +528,8 @@ class TreeWriter:
             return port.default  # the agent's own id, from the blackboard
         if kind == "float" and isinstance(port.default, str) and port.default.startswith("{"):
             return port.default  # {dt}
+        if kind == "agent" and spec.name == "FollowAgent" and group.leader_index in self.leaders:
+            return str(self.leaders[group.leader_index])  # "follow their guide": the guide
         if kind == "agent":
             # The other agent of a pair: the leader for members, the next member for the leader.
             if others:
@@ -573,7 +577,7 @@ def plan_groups(world: World, preset: Preset, draft: Draft, selection: RoISelect
     groups = [GroupPlan(first_index + i, r.label, r.count, r.spawn, r.tree, reading.groups[r.reading_index].who
                         if r.reading_index is not None else "", behavior=r.behavior, reading_index=r.reading_index,
                         party_size=r.party_size, speed_factor=r.speed_factor, added=list(r.added),
-                        reacts_only=r.reacts_only,
+                        reacts_only=r.reacts_only, leader_index=r.leader_index,
                         reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
                         else None, exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]),
                         exits_shunned=_exits_shunned(world, reading.groups[r.reading_index or 0]),
@@ -693,10 +697,12 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
                                         exit=exit_name, behavior=g.behavior))
             first += size
 
+    _leaders_among_their_followers(groups, agents, space, rng)
     if len(exit_names) > 1:
         _assign_exits(world, grid, groups, agents, exit_names, notes, preset.exit_choice)
 
     writer = TreeWriter(resolver)
+    writer.leaders = {g.reading_index: g.member_ids[0] for g in groups if g.reading_index is not None and g.member_ids}
     served: dict[str, int] = {}
     if scene is not None:
         writer.goal_ids.update({p: i + 1 for i, p in enumerate(scene.goals)})
@@ -735,6 +741,23 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
         agent.document = writer.write(agent, g, targets)
     goals = [p for p, _ in sorted(writer.goal_ids.items(), key=lambda kv: kv[1])]
     return PostProcessed(agents, groups, exit_name, goals, notes, exit_names)
+
+
+def _leaders_among_their_followers(groups: Sequence[GroupPlan], agents: Sequence[AgentPlan], space: FreeSpace,
+                                   rng: np.random.Generator) -> None:
+    """The person a group follows starts among them ("ten tourists follow their guide": the guide stands
+    with the tour group, not across the hall), when they start in the same zone."""
+    for follower in groups:
+        leader = next((g for g in groups if follower.leader_index is not None and g is not follower
+                       and g.reading_index == follower.leader_index), None)
+        if leader is None or leader.spawn != follower.spawn or not leader.member_ids:
+            continue
+        behind = [a.start for a in agents if a.group_index == follower.index]
+        ahead = next((a for a in agents if a.id == leader.member_ids[0]), None)
+        if not behind or ahead is None:
+            continue
+        centre = (sum(p[0] for p in behind) / len(behind), sum(p[1] for p in behind) / len(behind))
+        (ahead.start,) = space.sample(leader.spawn, 1, rng, SPAWN_SPACING, key="spawn", cluster=centre)
 
 
 def _exit_asked(world: World, group: GroupReading) -> str | None:

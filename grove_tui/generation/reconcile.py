@@ -31,6 +31,7 @@ from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
 from grove_tui.bt.format.manifest import NODES
+from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -94,12 +95,15 @@ class ReconciledGroup:
     speed_factor: float = 1.0
     added: list[str] = field(default_factory=list)  # what the tree does beyond the reading, in words
     reacts_only: bool = False  # its whole activity is reacting to the robot: it starts where the robot passes
+    leader_index: int | None = None  # reading index of the group it follows ("follow their guide")
 
 
 def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
     """The person a robot's clause follows, as a group of the sentence when the reading has none for
     them: "the robot follows a guide from the entrance hall to the auditorium" asks for a guide who
-    walks from the entrance hall to the auditorium, with the robot behind."""
+    walks from the entrance hall to the auditorium, with the robot behind. Likewise the person a group
+    follows: "six students follow the senior doctor to ward C" has a doctor walking there ahead of them."""
+    reading = _with_people_followed(reading)
     robot = reading.robot
     if robot is None or robot.task != "follow" or not robot.follows:
         return reading
@@ -117,6 +121,29 @@ def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
     if not where and not followed.location:
         followed = replace(followed, intent="wander")
     return replace(reading, groups=reading.groups + (followed,))
+
+
+_NOBODY_IN_PARTICULAR = {"a", "an", "the", "one", "him", "her", "them", "someone", "their", "his", "its", "group",
+                         "before", "others", "everyone", "us", "close", "closely", "behind", "right", "just"}
+
+
+def _with_people_followed(reading: PromptReading) -> PromptReading:
+    added: list[GroupReading] = []
+    for group in reading.groups:
+        if group.intent != "follow" or not group.follows:
+            continue
+        wanted = {lemma(w) for w in words(group.follows)} - _NOBODY_IN_PARTICULAR
+        if not wanted or any(wanted & ({lemma(w) for w in words(g.who)} | {g.label, lemma(g.label)})
+                             for g in (*reading.groups, *added)):
+            continue  # a pronoun, or a group the sentence has already
+        label = lemma(words(group.follows)[-1])
+        # one person ahead of them, along their way; a route-less follow stands where they are
+        added.append(GroupReading(group.follows, label, Count("exact", 1, 1, 1),
+                                  "walk" if group.destination else "wait", start=group.start,
+                                  destination=group.destination,
+                                  location=None if group.destination else (group.location or group.start),
+                                  via=group.via, text=group.follows))
+    return replace(reading, groups=reading.groups + tuple(added)) if added else reading
 
 
 def robot_places(reading: PromptReading, world: World) -> set[str]:
@@ -167,15 +194,73 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
         reacts_only = False
         if group.robot_interaction:
             tree, reacts_only = with_robot_interaction(tree, group)
+        leader = _leader_index(reading, group)
+        if leader is not None and _base_intent(group) == "follow" and not evacuation_field and \
+                not any(n.node == "FollowAgent" for n in tree.walk()):
+            # "ten tourists follow their guide to the gallery": behind the guide all the way, then there
+            tree = _prepend(DraftNode("FollowAgent", {"duration": _following_seconds(world, group),
+                                                      "closest_dist": FOLLOW_CLOSEST}), tree)
         if group.together and count > 1 and not any(n.node in ("JoinGroup", "Converse") for n in tree.walk()):
             tree = _prepend(DraftNode("JoinGroup", {}), tree)
             notes.append(f"group '{label}': walks together as the prompt says")
         party = group.count.party_size if group.count.parties and (group.count.party_size or 0) > 1 else None
         out.append(ReconciledGroup(index, label, count, spawn, tree, behavior, party,
-                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only))
+                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
+    return _at_the_followers_pace(out, reading)
+
+
+LEADER_PACE = 0.85  # a guide with a group behind walks at the group's pace, slower than alone
+
+
+def _at_the_followers_pace(groups: list[ReconciledGroup], reading: PromptReading) -> list[ReconciledGroup]:
+    """A group followed by several people ("ten tourists follow their guide") walks a little slower,
+    unless its sentence says it hurries, so the ones behind keep up through doors and corners."""
+    followed = {g.leader_index for g in groups if g.leader_index is not None and g.count >= 2}
+    out = []
+    for g in groups:
+        r = reading.groups[g.reading_index] if g.reading_index is not None else None
+        if g.reading_index in followed and r is not None and r.pace == "normal":
+            g = replace(g, speed_factor=round(g.speed_factor * LEADER_PACE, 3),
+                        added=g.added + [f"walks at its followers' pace ({LEADER_PACE:g} of its own)"])
+        out.append(g)
     return out
+
+
+FOLLOW_CLOSEST = 1.5  # metres a follower keeps behind the person it follows (FollowAgent's closest_dist)
+
+
+def _leader_index(reading: PromptReading, group: GroupReading) -> int | None:
+    """The reading index of the group a following group follows, by the words of `follows`."""
+    if not group.follows:
+        return None
+    follows = {lemma(w) for w in words(group.follows)} - {"a", "an", "the", "their", "his", "her", "its"}
+    for i, other in enumerate(reading.groups):
+        if other is not group and follows & ({lemma(w) for w in words(other.who)} | {other.label, lemma(other.label)}):
+            return i
+    return None
+
+
+def _following_seconds(world: World, group: GroupReading) -> float:
+    """How long a follower follows: about the leader's walk from where they start to where they go
+    (a path is some 1.4 times the straight line, at 1 m/s, and time to set off), after which it walks
+    on to the place itself."""
+    points = [_point_of(world, p) for p in (group.start, group.destination or group.location) if p]
+    if len(points) < 2 or points[0] is None or points[1] is None:
+        return 60.0
+    metres = math.dist(points[0], points[1]) * 1.4
+    return float(min(max(round(metres / 1.0 + 10.0), 20.0), 600.0))
+
+
+def _point_of(world: World, name: str) -> tuple[float, float] | None:
+    try:
+        place = world.find(name)
+    except WorldError:
+        return None
+    if isinstance(place, Zone):
+        return place.centroid
+    return place.interaction_point if isinstance(place, Entity) else place.position
 
 
 def _model_fills(group: GroupReading) -> bool:
@@ -738,8 +823,10 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         if base == "follow" and r.follows:
             leader = _leader(reading, r, by_reading)
             if leader is not None:
+                # a crowd behind one guide stands round them: the ring widens with its size
                 claims.append(Claim("follow_person", f"follow {r.follows}", f"walk with {leader.label}",
-                                    partners=tuple(leader.member_ids), distance=3.0, share=0.9))
+                                    partners=tuple(leader.member_ids), distance=round(3.0 + 0.5 * math.sqrt(n - 1), 1),
+                                    share=0.9))
     elif base == "evacuate":
         exits: tuple[str, ...] = (r.destination,) if r.destination and _is_exit(world, r.destination) else ()
         unsure = r.confidence_of("destination")

@@ -36,6 +36,11 @@ def navigation_tags() -> frozenset[str]:
     return frozenset(name for name, spec in NODES.items() if spec.navigates)
 
 
+# Nodes that move the agent to wherever the run takes it (behind someone, around a room): a leg after
+# one cannot be planned beforehand.
+DRIFTING = frozenset({"FollowAgent", "ApproachAgent", "Wander"})
+
+
 def relocating_tags() -> frozenset[str]:
     """Nodes that leave the agent at their resolved x, y without planned waypoints (Queue, FollowVelocityField)."""
     return frozenset(name for name, spec in NODES.items()
@@ -75,10 +80,13 @@ def plan_waypoints(document: TreeDocument, start: Point, planner: _Planner, star
     navigating = navigation_tags()
     relocating = relocating_tags()
     for tree in document.trees.values():
-        position = (float(start[0]), float(start[1]))
+        position: tuple[float, float] | None = (float(start[0]), float(start[1]))
         position_label = start_label
         for element in tree.walk():
             node_id = element.id
+            if node_id in DRIFTING:
+                position = None  # where it ends is the run's to say: the next leg is planned from there
+                continue
             if node_id in relocating:
                 # The next leg starts where this node leaves the agent (e.g. at the queue's counter).
                 if element.get("x") is not None and element.get("y") is not None:
@@ -88,8 +96,11 @@ def plan_waypoints(document: TreeDocument, start: Point, planner: _Planner, star
                 continue
             target = _target_point(element)
             label = _target_label(element)
-            path = planner.plan(position, target, start_label=position_label, goal_label=label)
-            element.set(WAYPOINTS_PORT, format_point_list(path[1:-1]))
+            if position is None:
+                element.set(WAYPOINTS_PORT, "")  # GoTo plans from where it stands when it starts
+            else:
+                path = planner.plan(position, target, start_label=position_label, goal_label=label)
+                element.set(WAYPOINTS_PORT, format_point_list(path[1:-1]))
             position, position_label = target, label
     return document
 

@@ -19,6 +19,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
+from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -133,7 +134,8 @@ class Clauses:
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
                                     or self._told_before(i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
-        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and not self.places.names_place(i + 1):
+        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not self.places.names_place(i + 1) or (
+                s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):  # "to book a tour"
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
             return self._purpose(scan, i, i + 2, i + 4)
@@ -381,7 +383,8 @@ class Clauses:
             c.places.append(replace(subject, prep="obj:start"))
             c.evacuate = True
             scan.used.update(range(own[0], subject.end))
-        elif verb_lemma(after) in ("be", "stay", "remain", "get", "have") or after in (":", "of"):
+        elif verb_lemma(after) in ("be", "stay", "remain", "get", "have") or after in (":", "of") or \
+                (subject.match is not None and topic_mark_at(s, subject.end)):  # "platform 2 rn: 20 people"
             passive = subject.end + 1 < s.n and s.w[subject.end + 1].tag == "VBN"
             verb = verb_lemma(s.low[subject.end + 1]) if passive else ""
             if verb in lx.START_OBJECT_VERBS:

@@ -520,7 +520,7 @@ ZONE_EMPTYING_VERBS = frozenset("clear empty vacate evacuate".split())
 START_PREPOSITIONS = frozenset({"from", "off"})
 DESTINATION_PREPOSITIONS = frozenset({"to", "into", "towards", "toward", "onto", "inside"})
 LOCATION_PREPOSITIONS = frozenset({"at", "in", "on", "near", "by", "beside", "within", "around", "outside", "next",
-                                   "behind", "about", "opposite", "against", "under", "among"})
+                                   "behind", "about", "opposite", "against", "under", "among", "between", "beyond"})
 VIA_PREPOSITIONS = frozenset({"through", "via", "past", "across", "along", "down", "throughout"})
 PLACE_PREPOSITIONS = START_PREPOSITIONS | DESTINATION_PREPOSITIONS | LOCATION_PREPOSITIONS | VIA_PREPOSITIONS
 
@@ -531,7 +531,7 @@ LOCATION_ADVERBS = frozenset("inside outside indoors outdoors downstairs upstair
 DETERMINERS = frozenset("the a an their our its his her my your this that these those some each every any".split())
 # Parts of a place, said with "of" before it ("the corner of the lobby"): the place itself.
 PLACE_PARTS = frozenset("corner end middle centre center side edge floor back front rear far part area half "
-                        "top bottom entrance".split())
+                        "top bottom entrance doorway threshold foot perimeter".split())
 # Words that qualify a place without naming one ("the nearest exit", "the other corridor").
 PLACE_MODIFIERS = frozenset(
     """nearest closest nearby near far farthest furthest other same next first last main back front side rear left
@@ -545,16 +545,17 @@ NON_PLACES = frozenset(
     future background foreground left right top bottom here there curiosity fear surprise interest anger
     conversation chat talk discussion meeting lunch breakfast dinner coffee tea break work shift appointment
     purpose reason fun sake help care each other them themselves him her it rest once all least most front
-    side half sight flight train bus plane match delay delays""".split())
+    side half sight flight train bus plane match delay delays
+    window windows windowsill wall walls pillar pillars column columns ceiling radiator skylight""".split())
 # Words for the whole building: never an unknown place, never a particular RoI.
 BUILDING_WORDS = frozenset("hospital building clinic house home flat apartment premises site facility floor "
                            "place area scene venue property complex centre center interior indoors outdoors "
                            "inside outside".split())
 # Outdoors beyond the building's doors: "out to the street" is out through an exit, when the world
 # names no such place itself.
-OUTDOOR_WORDS = frozenset("street road pavement sidewalk carpark car_park parking forecourt outdoors".split())
+OUTDOOR_WORDS = frozenset("street road pavement sidewalk kerb curb kerbside curbside carpark car_park parking forecourt outdoors".split())
 # Heads that say "a part of" without naming which: matching rests on the words before them.
-GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner".split())
+GENERIC_PLACE_HEADS = frozenset("area room space zone spot section part region corner bit".split())
 DOOR_WORDS = frozenset("door exit gate opening entrance doorway way out".split())
 # Groups of words people use for the same kind of place; matching one counts, at a discount, as
 # matching the others (the literal word still wins).

@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
+from grove_tui.language.place_described import plain_activity, purpose_by_use, rank_described, room_with, vehicle_stop
 from grove_tui.language.places import MeaningMatch, PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -151,15 +152,33 @@ class PlaceMeaning:
         of any other zone's; failing that, the phrase and its clause together, as near as a name."""
         s = self.s
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if content and content[-1] in _ANY_PLACE | lx.GENERIC_PLACE_HEADS | {"hall"} and j < s.n and s.low[j] == "with":
+            return room_with(s.index, s.low, j)  # "the room with the projector": the room that has it
         clause = self._relative_clause(j, bare=bool(content) and content[-1] in _ANY_PLACE | lx.BUILDING_WORDS |
                                         lx.GENERIC_PLACE_HEADS)
         if clause is None:
             return None
         first, end = clause
-        activity = ("" if s.low[first] == "for" else "where ") + self._active(first, end)
-        meant = self._by_activity(phrase, lemmas, activity)
+        activity = plain_activity(("" if s.low[first] == "for" else "where ") + self._active(first, end))
+        meant = None if vehicle_stop(activity) else self._by_activity(phrase, lemmas, activity)
+        if meant is None:  # by names and descriptions together, among the places the head can be
+            head = content[-1] if content else "place"
+            meant = rank_described(s.index, activity, None if head in _ANY_PLACE | lx.BUILDING_WORDS else
+                                   [e.name for e in s.index.entries if _head_fits(head, e.kind, e.tokens)])
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
+        return (meant, end) if meant is not None else None
+
+    def where_clause(self, k: int) -> tuple[Decided, int] | None:
+        """A place said only by what is done there, a clause with no head ("walk to where you get your
+        bags back", "wait where the trains come in"): the place, and the index after the clause."""
+        clause = self._relative_clause(k, bare=False)
+        if clause is None or self.s.low[k] != "where":
+            return None
+        first, end = clause
+        activity = plain_activity("where " + self._active(first, end))
+        meant = (None if vehicle_stop(activity) else self._by_activity(("place",), ("place",), activity)) or \
+            rank_described(self.s.index, activity)
         return (meant, end) if meant is not None else None
 
     def _active(self, first: int, end: int) -> str:
@@ -335,26 +354,32 @@ class PlaceMeaning:
         # "to board his plane" is no departures board: a verb that is only a word of a place's name
         # ("check in" still names the check-in hall)
         ranked = [r for r in self.s.index.by_meaning(purpose.lower()) if r.entry.kind != "door" and
-                  (verb not in r.entry.tokens or (words[1:2] in (["in"], ["out"], ["up"], ["off"], ["on"])
+                  (not _heads(verb, r.entry.phrases) or (words[1:2] in (["in"], ["out"], ["up"], ["off"], ["on"])
                                                    and any(p[:1] == (verb,) for p in r.entry.phrases)))]
         by_name = _clearly_nearest(ranked)
         # what the world says a place is for ("Queue-number ticket dispenser.") answers "to take a queue
         # number" where no name does: it decides when its place is clearly nearest and nearer than the
         # name match, or no name is clearly nearest; within the name match's own room the names decide
         by_use = _clearly_nearest([r for r in self.s.index.by_description(purpose.lower()) if
-                                   verb not in r.entry.tokens or words[1:2] in (["in"], ["out"], ["up"])])
+                                   not _heads(verb, r.entry.phrases) or words[1:2] in (["in"], ["out"], ["up"])])
         if by_use is not None and (by_name is None or (by_use[0].similarity > by_name[0].similarity and
                                                        by_use[0].entry.zone != by_name[0].entry.zone)):
             best, other = by_use
         elif by_name is not None:
             best, other = by_name
         else:
-            return None
+            return purpose_by_use(self.s.index, purpose)  # "to buy aspirin and plasters": the pharmacy
         score = 0.65 if best.similarity >= 0.7 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
+
+def _heads(verb: str, phrases: Sequence[Sequence[str]]) -> bool:
+    """Whether a purpose's verb is the head noun of one of a place's names ("to board" and "departures
+    board"), not a word before it ("to print" and "print station": where printing is done)."""
+    return any(p and p[-1] == verb for p in phrases)
+
 
 def _synonym_of(word: str, head: str) -> bool:
     """Whether `word` is listed as a synonym of `head` ("vending" of "machine")."""

@@ -28,7 +28,7 @@ _NAMES = {tuple(name.replace("'", " ").split()): plain for name, plain in INFORM
 _LONGEST = max(len(words) for words in _NAMES)
 
 # Chat words for a time or a mood that end a place phrase ("@ the coat counter b4 closing", "the café 2nite").
-CHAT_TIME_WORDS = frozenset("b4 til 2nite 2night tonite 2day 2moro 2morrow tmrw tmr l8r asap rn lol omg tbh imo "
+CHAT_TIME_WORDS = frozenset("b4 til atm 2nite 2night tonite 2day 2moro 2morrow tmrw tmr l8r asap rn lol omg tbh imo "
                             "pls plz thx eod".split())
 TIME_WORDS = frozenset("today tonight tomorrow yesterday now later soon noon midnight closing opening".split())
 TIME_NOUNS = frozenset("lunch lunchtime breakfast dinner supper closing opening close noon midnight morning "

@@ -17,6 +17,8 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
+from grove_tui.language.place_around import around, beside_thing, stairs
+from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.places import PlaceMatch
@@ -80,6 +82,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         low = s.low
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
+        record_unknown = record_unknown and prep != "between"  # "naps between operations": a time, maybe
+        if k < s.n and low[k] in ("where", "upstairs", "downstairs"):  # "to where you get your bags back"
+            return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
         if elided and self.owner and \
@@ -97,7 +102,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])) and "&" not in low[j]:  # "in A&E" names a place
+                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j):  # "in A&E"
             return None  # "in line", "at once", "on time": no determiner and no place word
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):
@@ -124,6 +129,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas, k)
+        # "pitch-side", "by the water": the room around the thing
+        match = beside_thing(s.index, prep,
+                             match if match is not None and match.exact else around(s.index, lemmas) or match)
         match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
@@ -151,6 +159,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
+        if absent_kind(s.index, lemmas) is not None:  # "the planetarium (room)": a kind the world lacks
+            numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
         if match is None and self._outdoors(lemmas) and s.index.exits():
@@ -201,14 +211,28 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
+        return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
+                                  out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
+
+    def where_place(self, k: int, prep: str, at: int, mentioned: bool) -> Place | None:
+        """"to where you get your bags back", "wait where the trains come in": the place of the clause."""
+        found = self.where_clause(k) if self.s.low[k] == "where" else stairs(self.s.index, k)
+        if found is None:
+            return None
+        (match, score, reason, alternatives), end = found
+        return self._record(Place(prep, at, tuple(self.s.low[k:end]), match, end, score, reason, alternatives,
+                                  written=self.s.low[at]), k, mentioned)
+
+    def _record(self, place: Place, k: int, mentioned: bool) -> Place:
+        """A place read: its zone decides later ties; a zone people are in frames the sentence."""
+        s, match, at = self.s, place.match, place.index
+        assert match is not None
         self.context_zones.append(match.zone)
-        if match.kind == "zone" and prep in ("in", "at", "on", "inside", "within"):
+        if match.kind == "zone" and place.prep in ("in", "at", "on", "inside", "within"):
             self.frame_zones.append(match.zone)
             if at == 0 or s.w[at - 1].sentence != s.w[at].sentence:
                 self.fronted.setdefault(s.w[at].sentence, match.zone)  # "At gate B2, ...": the sentence's frame
-        self.covered.update(range(k, j))
-        place = Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
-                      out_of=prep == "from" and s.low[at] == "out", written=s.low[at])
+        self.covered.update(range(k, place.end))
         if mentioned:
             self.named.append(match.name)
             self.history.append(place)
@@ -295,7 +319,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         joined = False  # the word follows a hyphen inside the phrase ("check-in")
         while j < s.n and len(phrase) < 6:
             w = low[j]
-            if w == "-" and phrase and j + 1 < s.n and low[j + 1][:1].isalnum():
+            if w == "-" and phrase and j + 1 < s.n and low[j + 1][:1].isalnum() and s.hyphen_inside(j):
                 joined = True
                 j += 1
                 continue
@@ -307,7 +331,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                                      s.w[j].tag == "POS"):
                 j += 1  # "the parents' bed": the owner, then the thing
                 continue
-            if s.is_punct(j) or (w in lx.CLAUSE_STARTERS and not joined) or \
+            if s.is_punct(j) or w in (">", "|") or (w in lx.CLAUSE_STARTERS and not joined) or \
                     w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
             if phrase and not joined and self._time_starts(j):

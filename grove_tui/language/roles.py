@@ -133,6 +133,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
         return "destination"
     if prep == "obj:via":
         return "via"
+    if prep == "between" and not stationary:
+        return "destination" if p.sequel else "start"  # "walks between ward A and ward B": from one to the other
     if prep in lx.VIA_PREPOSITIONS:
         return _through(index, p, verb, stationary, intent, is_door)
     if prep == "by" and is_door and (verb in lx.DEPARTURE_VERBS | lx.BOARDING_VERBS or intent == "evacuate"):

@@ -144,12 +144,27 @@ class Sentence:
             return ("at" if two[0] in ("next", "close") else "to"), 2
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
-        if w == "round" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+        if w == "round" and i + 1 < self.n and (low[i + 1] in lx.DETERMINERS or self.index.knows(lemma(low[i + 1]))):
             return "around", 1  # "gather round the whiteboard"
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
+        if w == "between" and not any(low[x] == "and" for x in range(i + 2, min(i + 8, self.n))):
+            return None  # "drift between shops": among them; "between X and Y" names two places
+        if w == "up" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
+            return "down", 1  # "up the stairs", "up the corridor": along it, as "down"
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
+        if w == "where" and i > 0 and any((lx.INTENT_VERBS.get(verb_lemma(low[x])) or self.w[x].pos == "VERB") and
+                                          self.w[x].lemma.lower() not in _KNOWING and verb_lemma(low[x]) not in _KNOWING
+                                          for x in range(max(0, i - 2), i)):
+            # "wait where the trains come in": the place of the clause (language/place_meaning.py); "go where ..." to it
+            moving = any(lx.INTENT_VERBS.get(verb_lemma(low[x])) in ("walk", "evacuate")
+                         for x in range(max(0, i - 2), i))
+            return ("to" if moving else "at"), 0
+        if w in ("upstairs", "downstairs") and i > 0 and \
+                lx.INTENT_VERBS.get(verb_lemma(low[i - 1]), "wait") not in lx.STATIONARY_INTENTS:
+            # "the kids run upstairs": up the stairs (language/place_around.py); on the way when a place follows
+            return ("via" if i + 1 < self.n and low[i + 1] in lx.DESTINATION_PREPOSITIONS else "to"), 0
         return None
 
     def verb_follows(self, k: int) -> bool:
@@ -161,8 +176,10 @@ class Sentence:
             return False
         if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
             return False
-        if k + 1 < self.n and IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)):
+        if k + 1 < self.n and IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)) and not (
+                self.low[k + 1] == "a" and k + 2 < self.n and self.w[k + 2].pos in ("NOUN", "ADJ")):
             return False  # "to gate C4": a place word with its number, though the parser calls "gate" a verb
+            # (but "to book a study room": a verb and its object)
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
             "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
 
@@ -223,3 +240,8 @@ class Sentence:
                         continue  # "as a family talks", "as a family buys tickets": who the clause is about
                     out.update(range(i, end))
         return frozenset(out)
+
+
+# Verbs whose "where" asks or tells a place, not a place where people are ("know where the exit is").
+_KNOWING = frozenset("know see wonder ask show tell remember forget decide find check say explain point "
+                     "guess learn understand notice hear read look".split())

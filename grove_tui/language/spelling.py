@@ -86,6 +86,7 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     base = lemma(low)
     if base in index.vocabulary or low in index.vocabulary or base in lx.PERSON_NOUNS or \
             low in lx.STOPWORDS or low in lx.NUMBER_WORDS or low in lx.ROBOT_WORDS or \
+            low in lx.PLACE_MODIFIERS or low in lx.PLACE_PARTS or \
             verb_lemma(low) in lx.INTENT_VERBS or verb_lemma(low) in lx.ROBOT_VERBS:
         return None
     person = near_person_noun(low)

@@ -10,11 +10,11 @@ from __future__ import annotations
 import asyncio
 import threading
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Literal, TypeVar, overload
 
 from textual.app import App
 from textual.binding import Binding
-from textual.screen import ModalScreen
+from textual.screen import ModalScreen, Screen
 
 from grove_tui.services.session import GeneratedScenario, GroveSession
 from grove_tui.tui.messages import RunOpened, RunOpenFailed
@@ -23,6 +23,15 @@ from grove_tui.tui.heap import FrozenHeap, drop_dead_widget_caches
 from grove_tui.settings import (GroveSettings, load_history, load_last_choices, load_settings, save_history,
                                 save_last_choices)
 
+if TYPE_CHECKING:
+    from textual.await_complete import AwaitComplete
+    from textual.screen import ScreenResultCallbackType
+    from textual.widget import AwaitMount
+
+    from grove_tui.settings import LastChoices
+
+
+_R = TypeVar("_R")  # a screen's result
 
 QUIT_WAIT_SECONDS = 0.05  # a moment for the model processes to stop by themselves when the app closes
 
@@ -48,14 +57,14 @@ class GroveApp(App[int]):
         history: list[str] | None = None,
         persist_history: bool = False,
         open_bundle: Path | None = None,
-        last_choices: dict[str, Any] | None = None,
+        last_choices: LastChoices | None = None,
         remember_choices: bool = False,
     ) -> None:
         super().__init__()
         self.session = session
         self.settings = settings if settings is not None else GroveSettings()
         # The command line's choice, else the last generation's (data dir), else the config file's.
-        last = dict(last_choices or {})
+        last: LastChoices = last_choices or {}
         self.initial_world = world if world is not None else last.get("world", self.settings.generation.world)
         self.initial_preset = preset if preset is not None else last.get("preset", self.settings.generation.preset)
         self.initial_seed = int(last.get("seed", self.settings.generation.seed))
@@ -116,19 +125,32 @@ class GroveApp(App[int]):
     # screens: notifications belong to the screen they were raised on -------------------------------------
     # Cleared before a full screen replaces another (not for dialogs over the same screen), so toasts
     # never carry over and cover the next screen; what the caller notifies after the switch stays.
-    def push_screen(self, screen: Any, *args: Any, **kwargs: Any) -> Any:
+    if TYPE_CHECKING:  # App.push_screen's own overloads: wait_for_dismiss=True gives a Future of the result
+
+        @overload
+        def push_screen(self, screen: Screen[_R] | str, callback: ScreenResultCallbackType[_R] | None = None,
+                        wait_for_dismiss: Literal[False] = False, *, mode: str | None = None) -> AwaitMount: ...
+
+        @overload
+        def push_screen(self, screen: Screen[_R] | str, callback: ScreenResultCallbackType[_R] | None = None,
+                        wait_for_dismiss: Literal[True] = True, *, mode: str | None = None) -> asyncio.Future[_R]: ...
+
+    def push_screen(self, screen: Screen[_R] | str, callback: ScreenResultCallbackType[_R] | None = None,
+                    wait_for_dismiss: bool = False, *, mode: str | None = None) -> AwaitMount | asyncio.Future[_R]:
         if not isinstance(screen, ModalScreen):
             self.clear_notifications()
-        return super().push_screen(screen, *args, **kwargs)
+        if wait_for_dismiss:
+            return super().push_screen(screen, callback, True, mode=mode)
+        return super().push_screen(screen, callback, False, mode=mode)
 
-    def switch_screen(self, screen: Any) -> Any:
+    def switch_screen(self, screen: Screen | str) -> AwaitComplete:
         if not isinstance(screen, ModalScreen):
             self.clear_notifications()
         result = super().switch_screen(screen)
         drop_dead_widget_caches()
         return result
 
-    def pop_screen(self) -> Any:
+    def pop_screen(self) -> AwaitComplete:
         if not isinstance(self.screen, ModalScreen):
             self.clear_notifications()
         result = super().pop_screen()

@@ -8,8 +8,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from functools import partial
+from typing import TYPE_CHECKING, cast
 
 from textual.command import DiscoveryHit, Hit, Hits, Provider
+
+if TYPE_CHECKING:
+    from grove_tui.tui.app import GroveApp
 
 CommandEntry = tuple[str, str, Callable[[], object]]
 
@@ -24,7 +28,8 @@ def screen_entries(screen: object) -> list[CommandEntry]:
 class GroveCommands(Provider):
     def _entries(self) -> Iterable[CommandEntry]:
         yield from screen_entries(self.screen)
-        yield ("Help", "Help for the focused widget and the keys of this screen", self.app.action_help)
+        app = cast("GroveApp", self.app)  # the provider of GroveApp.COMMANDS, in that app only
+        yield ("Help", "Help for the focused widget and the keys of this screen", app.action_help)
 
     async def discover(self) -> Hits:
         for title, help_text, callback in self._entries():

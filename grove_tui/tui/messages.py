@@ -4,12 +4,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from textual.message import Message
 
 if TYPE_CHECKING:
     from grove_tui.scenario.report import GroundingReport
+    from grove_tui.services.domain import Simulation, World
     from grove_tui.services.exporting import ExportedFile
     from grove_tui.services.session import GeneratedScenario, ModelStatus, PresetInfo
     from grove_tui.tui.screens.generation import GenerationRequest
@@ -24,7 +25,7 @@ class WorldsListed(Message):
 @dataclass
 class WorldLoaded(Message):
     name: str
-    world: Any  # Any: a world.World (the app reaches the world only through services, by contract)
+    world: World
 
 
 @dataclass
@@ -116,7 +117,7 @@ class GenerationStopped(Message):
 
 @dataclass
 class SimulationReady(Message):
-    simulation: Any  # Any: a simulation.Simulation (the app reaches it only through services, by contract)
+    simulation: Simulation
 
 
 @dataclass

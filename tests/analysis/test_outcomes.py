@@ -276,6 +276,32 @@ def test_follow_person_is_keeping_close_to_the_partners(clinic):
     assert check(clinic, claim, apart).status == FAILS
 
 
+def test_follow_person_counts_the_time_the_followed_walk(clinic):
+    # the nurse walks 8 m in 8 s and then stands for 22 s; the two behind keep up on the way and then
+    # stand 6 m off: following is being close on the way, not standing beside her at the end
+    claim = Claim("follow_person", "follow the nurse", "walk with nurse", partners=(3,), distance=3.0)
+    nurse = line((1, 3), (9, 3))
+
+    def behind(k):
+        return lambda t: nurse(t) - [k, 0.0] if t < 8.5 else np.array([3.0 - k, 3.0])
+    held = check(clinic, claim, run(30, people(behind(1.0), behind(2.0), nurse)))
+    assert held.status == HOLDS and "of the time they walked" in held.evidence
+    lagging = check(clinic, claim, run(30, people(line((1, 1), (2, 1)), line((1, 2), (2, 2)), nurse)))
+    assert lagging.status == FAILS
+
+
+def test_follow_person_takes_a_column_behind_them_as_following(clinic):
+    # five walk in single file 1.5 m apart behind the nurse: the tail is 7.5 m back, yet with her
+    claim = Claim("follow_person", "follow the nurse", "walk with nurse", partners=(6,), distance=3.0)
+    nurse = line((8, 3), (18, 3))
+    column = [(lambda k: lambda t: nurse(t) - [1.5 * k, 0.0])(k) for k in range(1, 6)]
+    held = check(clinic, claim, run(10, people(*column, nurse)), members=(1, 2, 3, 4, 5))
+    assert held.status == HOLDS and "5/5" in held.evidence
+    # the same column 6 m back from her: a column, but not with her
+    apart = [(lambda k: lambda t: nurse(t) - [4.5 + 1.5 * k, 0.0])(k) for k in range(1, 6)]
+    assert check(clinic, claim, run(10, people(*apart, nurse)), members=(1, 2, 3, 4, 5)).status == FAILS
+
+
 def test_the_robots_own_claims(clinic):
     reach = Claim("robot_reach", "corridor", "drive to corridor", zone="corridor")
     via = Claim("robot_via", "lobby", "drive through lobby", zone="lobby")

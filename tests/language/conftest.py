@@ -14,14 +14,20 @@ def worlds():
 
 
 @pytest.fixture(scope="session")
-def read():
-    """read(world, prompt): the reading of a prompt in a shipped world, or in an understanding world
-    ("library", "sports_centre") by its name."""
+def read(worlds):
+    """`read(world, prompt)`: the reading of a prompt in a shipped world or an understanding set's world
+    (eval/understanding/worlds: "library", "sports_centre"), seed 0."""
     from pathlib import Path
 
     from grove_tui.language.reading import read_prompt
-    from grove_tui.world import list_worlds, load_world
+    from grove_tui.world import load_world
 
     extra = Path(__file__).resolve().parents[2] / "eval" / "understanding" / "worlds"
-    return lambda world, prompt: read_prompt(
-        prompt, load_world(world if world in list_worlds() else extra / f"{world}.yaml"))
+    loaded = dict(worlds)
+
+    def reading(world, prompt):
+        if world not in loaded:
+            loaded[world] = load_world(extra / f"{world}.yaml")
+        return read_prompt(prompt, loaded[world], seed=0)
+
+    return reading

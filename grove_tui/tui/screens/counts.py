@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from textual import on, work
 from textual.app import ComposeResult
@@ -20,11 +20,12 @@ from grove_tui.tui.screens.generation import describe_failure
 from grove_tui.tui.widgets.prompt_input import ReadlineInput
 
 if TYPE_CHECKING:
+    from grove_tui.jsontypes import Parsed
     from grove_tui.tui.app import GroveApp
 
 COUNT_DIGITS = 3
 READY = "Enter applies · Tab next count · Escape cancels · F1 help"
-def group_rows(generated: GeneratedScenario) -> list[dict[str, Any]]:
+def group_rows(generated: GeneratedScenario) -> list[Parsed]:
     """The groups as the pipeline reported them: index order is the order `replan` counts refer to."""
     return [dict(g) for g in generated.result.report.get("groups", ())]
 

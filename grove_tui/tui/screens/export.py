@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -11,10 +11,13 @@ from textual.containers import Vertical, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Button, ProgressBar, Static
 
+if TYPE_CHECKING:
+    from grove_tui.services.exporting import ExportedFile
+
 NOTE_CHARS = 160
 
 
-def describe(files: list[Any], out_dir: Path) -> str:
+def describe(files: list[ExportedFile], out_dir: Path) -> str:
     """One line per export, paths relative to the export folder (shown once above them)."""
     lines = []
     for exported in files:
@@ -35,7 +38,7 @@ class ExportResultScreen(ModalScreen[None]):
 
     BINDINGS = [Binding("escape,enter", "dismiss", "Close", id="export.close", tooltip="Close this dialog")]
 
-    def __init__(self, files: list[Any], out_dir: Path) -> None:
+    def __init__(self, files: list[ExportedFile], out_dir: Path) -> None:
         super().__init__()
         self.files = files
         self.out_dir = out_dir

@@ -8,11 +8,12 @@ import time
 from textwrap import shorten
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from textual import work
 from textual.app import ComposeResult
 from textual.binding import Binding
+from textual.message import Message
 from textual.screen import Screen
 from rich.segment import Segment
 from textual.strip import Strip
@@ -20,12 +21,16 @@ from textual.widgets import DataTable, Static
 from textual.worker import get_current_worker
 
 from grove_tui.errors import describe_error
-from grove_tui.services.session import ScenarioRequest
+from grove_tui.services.session import (AttemptStarted, Event, LoadingProgress, ScenarioRequest, StageFinished, StageStarted,
+                                        TokenStreamed)
 from grove_tui.tui import messages as msg
 from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
+    from grove_tui.jsontypes import Parsed
     from grove_tui.tui.app import GroveApp
+    from grove_tui.tui.commands import CommandEntry
+    from grove_tui.tui.screens.inspect import InspectScreen
 
 STAGES = {
     "loading": "Loading",
@@ -59,7 +64,7 @@ class GenerationRequest:
     counts: tuple[tuple[str, int], ...] = ()
 
 
-def counts_by_index(groups: list[dict[str, Any]], counts: dict[str, int]) -> tuple[dict[int, int], list[str]]:
+def counts_by_index(groups: list[Parsed], counts: dict[str, int]) -> tuple[dict[int, int], list[str]]:
     """The label -> count edits as the pipeline's group index -> count, and the labels no group has now."""
     by_index: dict[int, int] = {}
     found: set[str] = set()
@@ -78,7 +83,7 @@ class TokenBuffer:
     A timer flushes what is left when the model pauses, so the last tokens never wait for the next one.
     """
 
-    def __init__(self, post: Callable[[Any], Any], interval: float = FLUSH_SECONDS) -> None:
+    def __init__(self, post: Callable[[Message], object], interval: float = FLUSH_SECONDS) -> None:
         self._post = post
         self._interval = interval
         self._lock = threading.Lock()
@@ -217,7 +222,7 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         Binding("r", "retry", "Retry", id="generation.retry", tooltip="Run the generation again"),
     ]
 
-    def __init__(self, request: GenerationRequest, *, back_to: Any = None) -> None:
+    def __init__(self, request: GenerationRequest, *, back_to: InspectScreen | None = None) -> None:
         super().__init__()
         self.request = request
         # The inspect screen this generation was asked from (a regenerate): it shows the new scenario,
@@ -264,7 +269,7 @@ answer was cut off or failed the draft check), the output starts afresh under "a
         sys.setswitchinterval(UI_SWITCH_INTERVAL)
         self.start()
 
-    def command_entries(self) -> list[tuple[str, str, Any]]:
+    def command_entries(self) -> list[CommandEntry]:
         return [
             ("Cancel generation", "Stop the pipeline and return to setup", self.action_cancel),
             ("Retry generation", "Run the pipeline again with the same prompt", self.action_retry),
@@ -296,27 +301,26 @@ answer was cut off or failed the draft check), the output starts afresh under "a
 
         writing: set[str] = set()  # stages whose model has streamed a token
 
-        def on_event(event: Any) -> None:
-            kind = type(event).__name__
-            if kind == "TokenStreamed":
+        def on_event(event: Event | LoadingProgress) -> None:
+            if isinstance(event, TokenStreamed):
                 if event.stage not in writing:
                     # The model process surely exists once it writes (it restarts lazily after a
                     # cancel): from now on it gives way to this process, so keys answer while it writes.
                     writing.add(event.stage)
                     self.grove.session.yield_cpu_to_the_app()
                 buffer.add(event.stage, event.text)
-            elif kind == "AttemptStarted":
+            elif isinstance(event, AttemptStarted):
                 buffer.restart(event.stage, int(event.attempt), str(event.reason))
-            elif kind == "LoadingProgress":
+            elif isinstance(event, LoadingProgress):
                 self.post_message(msg.LoadingPartStarted(event.doing, int(event.index), int(event.parts),
                                                          float(event.expected_seconds), float(event.later_seconds)))
-            elif kind == "StageStarted":
+            elif isinstance(event, StageStarted):
                 buffer.flush()
                 if event.stage in MODEL_STAGES:
                     self.grove.session.yield_cpu_to_the_app()
                 current["stage"] = event.stage
                 self.post_message(msg.StageStarted(event.stage))
-            elif kind == "StageFinished":
+            elif isinstance(event, StageFinished):
                 buffer.flush()
                 current["stage"] = ""
                 self.post_message(msg.StageFinished(

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from collections import defaultdict
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 from rich.text import Text
@@ -28,22 +28,27 @@ from grove_tui.tui.widgets.followup import FollowupBox, FollowupInput
 from grove_tui.tui.widgets.footer import Footer
 
 if TYPE_CHECKING:
+    from grove_tui.jsontypes import Parsed
+    from grove_tui.scenario.model import AgentSpec, Scenario
+    from grove_tui.services.domain import World
     from grove_tui.tui.app import GroveApp
+    from grove_tui.tui.commands import CommandEntry
+    from grove_tui.tui.screens.export import ExportProgressScreen
 
 
-def agent_tree(generated: GeneratedScenario, agent: Any) -> TreeDocument | None:
+def agent_tree(generated: GeneratedScenario, agent: AgentSpec) -> TreeDocument | None:
     """The agent's tree document as generation (or the bundle reader) gave it; None if it has none."""
     tree: TreeDocument | None = generated.result.trees.get(agent.tree)
     return tree
 
 
-def agent_xml(generated: GeneratedScenario, agent: Any) -> str:
+def agent_xml(generated: GeneratedScenario, agent: AgentSpec) -> str:
     """The agent's tree as the XML its bundle file holds, for the XML view."""
     document = agent_tree(generated, agent)
     return tree_text(document) if document is not None else ""
 
 
-def group_key(agent: Any) -> tuple[int, str]:
+def group_key(agent: AgentSpec) -> tuple[int, str]:
     return (agent.group, agent.label or (f"group {agent.group}" if agent.group >= 0 else "ungrouped"))
 
 
@@ -92,7 +97,7 @@ def highlight_for(generated: GeneratedScenario, data: BTNode | None, overlay: Ov
 DESTINATION_REACH = 0.75  # metres: a final goal this close to an entity's interaction point is at that entity
 
 
-def destination(agent: Any, world: Any) -> str:
+def destination(agent: AgentSpec, world: World | None) -> str:
     """Where an agent is going: the entity its last goal serves (a counter, a bed), else the zone that
     holds it, else the door nearest to it (an exit), else its coordinates; "" with no goal."""
     if not agent.goals:
@@ -112,7 +117,7 @@ def destination(agent: Any, world: Any) -> str:
     return f"({x:.1f}, {y:.1f})"
 
 
-def busiest_goal(scenario: Any) -> tuple[float, float] | None:
+def busiest_goal(scenario: Scenario) -> tuple[float, float] | None:
     """The final goal most agents share (a queue's counter, an exit), to the nearest half metre."""
     goals = [tuple(np.round(np.asarray(a.goals[-1], dtype=np.float64) * 2) / 2) for a in scenario.agents if a.goals]
     if not goals:
@@ -179,6 +184,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
         self.count_edits: dict[str, int] = dict(count_edits or {})
         self._overlay = base_overlay(generated)
         self._selected_node: BTNode | None = None
+        self._export_progress: ExportProgressScreen | None = None
         # Scenarios before each edit (follow-ups, counts) and after each undo: every one keeps its bundle.
         self.undo_stack: list[GeneratedScenario] = []
         self.redo_stack: list[GeneratedScenario] = []
@@ -267,7 +273,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
         tree = self.query_one("#bt-tree", BTTree)
         tree.clear_all()
         scenario = self.generated.scenario
-        groups: dict[tuple[int, str], list[Any]] = defaultdict(list)
+        groups: dict[tuple[int, str], list[AgentSpec]] = defaultdict(list)
         for agent in scenario.agents:
             groups[group_key(agent)].append(agent)
         for index, ((_group, label), agents) in enumerate(sorted(groups.items(), key=lambda kv: kv[1][0].id)):
@@ -284,7 +290,7 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
                 BTNode("robot", 0, "robot"))
         tree.root.expand()
 
-    def command_entries(self) -> list[tuple[str, str, Any]]:
+    def command_entries(self) -> list[CommandEntry]:
         return [
             ("Play simulation", "Simulate this scenario", self.action_simulate),
             ("Toggle XML view", "Show the selected agent's BehaviorTree.CPP XML", self.action_toggle_xml),
@@ -380,7 +386,12 @@ scenario has not been exported (it stays in the recent runs, **ctrl+o** on setup
             f"Regenerate with seed {seed}",
             f"You changed the head counts ({edits}). Keep them in the new scenario? Groups are matched by label.",
             [Choice("y", "Keep my counts", "keep"), Choice("n", "Model's counts", "drop")])
-        self.app.push_screen(question, lambda answer: answer and self._regenerate(seed, keep_counts=answer == "keep"))
+
+        def answered(answer: str | None) -> None:
+            if answer:
+                self._regenerate(seed, keep_counts=answer == "keep")
+
+        self.app.push_screen(question, answered)
 
     def _regenerate(self, seed: int, keep_counts: bool) -> None:
         from grove_tui.tui.screens.generation import GenerationRequest, GenerationScreen
@@ -543,7 +554,7 @@ def _last_sentence(generated: GeneratedScenario) -> str:
     return str(history[-1].get("sentence", "")) if history else ""
 
 
-def _diff_lines(diff: dict[str, Any]) -> list[str]:
+def _diff_lines(diff: Parsed) -> list[str]:
     from grove_tui.scenario.history import RefineDiff
 
     return RefineDiff.from_dict(diff).lines() if diff else []

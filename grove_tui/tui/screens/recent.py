@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from rich.text import Text
 from textual import on, work
@@ -17,6 +17,7 @@ from textual.widgets import OptionList, Static
 from textual.widgets.option_list import Option
 
 if TYPE_CHECKING:
+    from grove_tui.services.runs import RunInfo
     from grove_tui.tui.app import GroveApp
 
 
@@ -28,7 +29,7 @@ def shown_path(path: Path) -> str:
         return str(path)
 
 
-def run_label(run: Any, now: float | None = None) -> Text:
+def run_label(run: RunInfo, now: float | None = None) -> Text:
     """Two lines: the prompt, then when, where, seed and size (a broken bundle says why instead)."""
     when = time.strftime("%Y-%m-%d %H:%M", time.localtime(run.modified))
     label = Text(no_wrap=True, overflow="ellipsis")
@@ -61,14 +62,14 @@ first; **Enter** opens one in the inspect screen (trees, map, play, export) as i
     ]
 
     class Listed(Message):
-        def __init__(self, runs: list[Any], error: str = "") -> None:
+        def __init__(self, runs: list[RunInfo], error: str = "") -> None:
             super().__init__()
             self.runs = runs
             self.error = error
 
     def __init__(self) -> None:
         super().__init__()
-        self.runs: list[Any] = []
+        self.runs: list[RunInfo] = []
 
     @property
     def grove(self) -> GroveApp:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from textual import events, on, work
 from textual.app import ComposeResult
@@ -27,6 +27,8 @@ from grove_tui.services.session import GeneratedScenario
 from grove_tui.tui.screens.generation import STAGES, describe_failure
 
 if TYPE_CHECKING:
+    from grove_tui.services.domain import Refinement
+    from grove_tui.services.session import Event, LoadingProgress
     from grove_tui.tui.app import GroveApp
 
 MAX_CHOICES = 9  # one key each, 1..9
@@ -85,7 +87,7 @@ several groups, press the number of the one you mean.
 
     @dataclass
     class Read(Message):
-        refinement: Any
+        refinement: Refinement
 
     @dataclass
     class Asked(Message):
@@ -110,7 +112,7 @@ several groups, press the number of the one you mean.
         self.generated = generated
         self.sentence = sentence
         self.choices: list[int] = []
-        self.refinement: Any = None
+        self.refinement: Refinement | None = None
         self.options: tuple[tuple[int, str], ...] = ()
         self.state = "reading"  # reading, asking, ready, applying, failed
         self._cancel = threading.Event()
@@ -183,7 +185,7 @@ several groups, press the number of the one you mean.
     # applying --------------------------------------------------------------------------------------------
     @on(Button.Pressed, "#refine-apply")
     def action_apply(self) -> None:
-        if self.state != "ready":
+        if self.state != "ready" or self.refinement is None:  # ready: the refinement is read
             return
         self.state = "applying"
         self.query_one("#refine-apply", Button).disabled = True
@@ -192,7 +194,7 @@ several groups, press the number of the one you mean.
         self.apply(self.refinement, self._cancel)
 
     @work(thread=True, exclusive=True, group="refine-apply", exit_on_error=False, description="applying the follow-up")
-    def apply(self, refinement: Any, cancel: threading.Event) -> None:
+    def apply(self, refinement: Refinement, cancel: threading.Event) -> None:
         worker = get_current_worker()
         try:
             generated = self.grove.session.refine(self.generated, refinement, on_event=self._event, cancel=cancel)
@@ -203,7 +205,7 @@ several groups, press the number of the one you mean.
         if not (cancel.is_set() or worker.is_cancelled):
             self.post_message(self.Applied(generated))
 
-    def _event(self, event: Any) -> None:
+    def _event(self, event: Event | LoadingProgress) -> None:
         """Pipeline events, in the worker's thread: a line of progress for the UI thread."""
         from grove_tui.services.session import StageStarted, TokenStreamed
 

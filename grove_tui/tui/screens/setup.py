@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from textual import on, work
 from textual.app import ComposeResult
@@ -28,6 +28,8 @@ from grove_tui.tui.widgets.footer import Footer
 if TYPE_CHECKING:
     from grove_tui.services.session import WarmUpStatus
     from grove_tui.tui.app import GroveApp
+    from grove_tui.tui.screens.generation import GenerationRequest
+    from grove_tui.tui.commands import CommandEntry
 
 SEED_DIGITS = 9  # any seed a user types fits numpy's 32-bit seeds
 
@@ -143,7 +145,7 @@ shows its world, preset, prompt and seed.
         elif not self._presets_listed:
             self.grove.initial_preset = name
 
-    def command_entries(self) -> list[tuple[str, str, Any]]:
+    def command_entries(self) -> list[CommandEntry]:
         return [
             ("Generate scenario", "Run the pipeline on the prompt", self.action_generate),
             ("Choose world", "Focus the world list", lambda: self.action_focus("worlds")),
@@ -166,7 +168,8 @@ shows its world, preset, prompt and seed.
         text = self.query_one("#seed", Input).value.strip()
         return int(text) if text else None
 
-    def action_focus(self, widget_id: str) -> None:
+    # Screen.action_focus (async, a selector) replaced: the bindings' focus('worlds') name a widget id.
+    def action_focus(self, widget_id: str) -> None:  # type: ignore[override]
         self.query_one(f"#{widget_id}").focus()
 
     # workers -----------------------------------------------------------------------------------------
@@ -405,7 +408,7 @@ shows its world, preset, prompt and seed.
         self.check_reading(request)  # unsure readings are asked about first (on_reading_checked)
 
     @work(thread=True, exclusive=True, group="reading", exit_on_error=False, description="reading the sentence")
-    def check_reading(self, request: Any) -> None:
+    def check_reading(self, request: GenerationRequest) -> None:
         try:
             questions = list(self.grove.session.unsure(ScenarioRequest(request.world, request.preset, request.prompt,
                                                                         request.seed)))

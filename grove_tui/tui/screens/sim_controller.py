@@ -16,7 +16,20 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Literal, TypeVar, cast, overload
+
+if TYPE_CHECKING:
+    from grove_tui.services.domain import Frame, LiveMetrics, Simulation
+
+    SimCall = Callable[[Simulation], object]  # work that needs the simulation still, run between steps
+    Reply = Callable[[object], None]  # gets the call's result, or the exception it raised
+    # A command from the UI thread: its name, then its arguments (see SimulationController.send).
+    Command = (tuple[Literal["play"]] | tuple[Literal["play"], bool] | tuple[Literal["step"]]
+               | tuple[Literal["step"], int] | tuple[Literal["speed"], float] | tuple[Literal["select"], int]
+               | tuple[Literal["drive"], float, float] | tuple[Literal["follow_path"]]
+               | tuple[Literal["call"], SimCall, Reply])
+
+_T = TypeVar("_T")
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 MAX_SPEED = 0.0  # as fast as the machine steps
@@ -65,9 +78,9 @@ class Counters:
 @dataclass(frozen=True)
 class Snapshot:
     serial: int
-    frame: Any
+    frame: Frame
     selected: int  # agent id whose tree status is attached, -1 for none
-    tree_status: tuple[tuple[Any, str, str], ...]
+    tree_status: tuple[tuple[str, str, str], ...]  # (path, name, status) of the selected agent's nodes
     playing: bool
     speed: float  # MAX_SPEED for as fast as possible
     steps_per_second: float  # simulated seconds per wall second over the last two seconds (the real speed)
@@ -77,7 +90,8 @@ class Snapshot:
 
 
 class SimulationController:
-    def __init__(self, simulation: Any, fps: float = 20.0, speed: float = 1.0, metrics: Any = None) -> None:
+    def __init__(self, simulation: Simulation, fps: float = 20.0, speed: float = 1.0,
+                 metrics: LiveMetrics | None = None) -> None:
         self.simulation = simulation
         self.fps = fps
         self.dt = float(getattr(simulation, "dt", 0.05))
@@ -89,7 +103,7 @@ class SimulationController:
         self.metrics = metrics  # LiveMetrics (or None: no counters)
         self.counters: Counters | None = None
         self.ended: RunEnd | None = None
-        self._commands: queue.SimpleQueue[tuple[Any, ...]] = queue.SimpleQueue()
+        self._commands: queue.SimpleQueue[Command] = queue.SimpleQueue()
         self._wake = threading.Event()
         self._serial = 0
         self._anchor: tuple[float, float] | None = None
@@ -103,7 +117,26 @@ class SimulationController:
         self._metrics_failed = ""
 
     # commands from the UI thread (thread-safe) ------------------------------------------------------
-    def send(self, *command: Any) -> None:
+    @overload
+    def send(self, name: Literal["play", "step", "follow_path"], /) -> None: ...
+    @overload
+    def send(self, name: Literal["play"], playing: bool, /) -> None: ...
+    @overload
+    def send(self, name: Literal["step", "select"], count_or_agent: int, /) -> None: ...
+    @overload
+    def send(self, name: Literal["speed"], speed: float, /) -> None: ...
+    @overload
+    def send(self, name: Literal["drive"], vx: float, vy: float, /) -> None: ...
+    @overload
+    def send(self, name: Literal["call"], function: Callable[[Simulation], _T],
+             reply: Callable[[_T | Exception], None], /) -> None: ...
+
+    def send(self, *command: object) -> None:
+        """play [on], step [n], speed x, select agent_id, drive vx vy, follow_path, call function reply."""
+        self.send_command(cast("Command", command))  # one of the shapes the overloads above let through
+
+    def send_command(self, command: Command) -> None:
+        """`send` with the command as one tuple: ("play",), ("speed", 2.0), ..."""
         self._commands.put(command)
         self._wake.set()
 
@@ -240,35 +273,34 @@ class SimulationController:
             except queue.Empty:
                 return changed
             changed = True
-            name, *args = command
-            if name == "play":
-                self.playing = bool(args[0]) if args else not self.playing
+            if command[0] == "play":
+                self.playing = bool(command[1]) if len(command) > 1 else not self.playing
                 self._anchor = None
-            elif name == "step":
+            elif command[0] == "step":
                 self.playing = False
-                for _ in range(int(args[0]) if args else 1):
+                for _ in range(int(command[1]) if len(command) > 1 else 1):
                     self.simulation.step()
                     self._steps += 1
-            elif name == "speed":
-                self.speed = float(args[0])
+            elif command[0] == "speed":
+                self.speed = float(command[1])
                 self._anchor = None
-            elif name == "select":
-                self.selected = int(args[0])
-            elif name == "drive":
+            elif command[0] == "select":
+                self.selected = int(command[1])
+            elif command[0] == "drive":
                 self.manual_robot = True
-                self._robot_command(float(args[0]), float(args[1]))
+                self._robot_command(float(command[1]), float(command[2]))
                 self._driving = True
                 self._drive_until = time.monotonic() + DRIVE_HOLD_SECONDS
-            elif name == "follow_path":
+            elif command[0] == "follow_path":
                 self.manual_robot = False
                 self._driving = False
                 crowd = getattr(self.simulation, "crowd", None)
                 if crowd is not None:
                     crowd.clear_robot_command()
-            elif name == "call":
+            elif command[0] == "call":
                 # Work that needs the simulation still (export) runs here, between steps;
                 # `reply` gets the result or the exception (it posts a message to the UI).
-                function, reply = args
+                _name, function, reply = command
                 try:
                     result = function(self.simulation)
                 except Exception as exc:
@@ -284,7 +316,7 @@ class SimulationController:
     def _publish(self) -> None:
         sim = self.simulation
         frame = sim.frame()
-        status: tuple[tuple[Any, str, str], ...] = ()
+        status: tuple[tuple[str, str, str], ...] = ()
         if self.selected >= 0:
             try:
                 status = tuple(sim.tree_status(self.selected))

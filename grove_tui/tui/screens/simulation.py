@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Sequence
-from dataclasses import replace
-from typing import TYPE_CHECKING, Any
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 from textual import on, work
@@ -31,7 +31,14 @@ from grove_tui.tui.widgets.footer import Footer
 from grove_tui.tui.widgets.grounding import GroundingPanel
 
 if TYPE_CHECKING:
+    from grove_tui.scenario.events import SimEvent
+    from grove_tui.scenario.report import GroundingReport
+    from grove_tui.services.domain import Frame, OutcomeChecker, Simulation
+    from grove_tui.services.exporting import ExportedFile
     from grove_tui.tui.app import GroveApp
+    from grove_tui.tui.commands import CommandEntry
+    from grove_tui.tui.screens.export import ExportProgressScreen
+    from grove_tui.tui.screens.sim_controller import Command
 
 UI_SWITCH_INTERVAL = 0.001
 BEHAVIORS = ("Regular", "Impassive", "Surprised", "Scared", "Curious", "Threatening")
@@ -171,7 +178,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         self._switch_interval = sys.getswitchinterval()
         self.exporting = False
         self._resume_after_export = False
-        self._export_progress: Any = None
+        self._export_progress: ExportProgressScreen | None = None
         self.metrics: dict[str, float] = {}  # the counters shown, metrics.json's flat numbers
         self.metrics_step = -1  # the simulation step the shown counters were measured at
         self.metrics_t: float | None = None  # the simulated time they are for
@@ -179,12 +186,12 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         self._counters_folded = False
         self.run_end: RunEnd | None = None  # set once the run is over (RunEnded posted)
         # The grounding report checked on the run as it plays: one checker fed the new rows each time.
-        self._checker: Any = None
+        self._checker: OutcomeChecker | None = None
         self._checker_rows = 0  # recorder rows the checker has seen
         self._grounding_busy = False
         self._grounding_shown_once = False
         self._grounding_step = -1
-        self.grounding: Any = None  # the latest checked report (scenario.report.GroundingReport)
+        self.grounding: GroundingReport | None = None  # the latest checked report
 
     @property
     def grove(self) -> GroveApp:
@@ -236,7 +243,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         self.set_interval(1.0 / settings.fps, self.draw_latest, name="sim-frames")
         self.set_interval(GROUNDING_INTERVAL, self.refresh_grounding, name="sim-grounding")
 
-    def command_entries(self) -> list[tuple[str, str, Any]]:
+    def command_entries(self) -> list[CommandEntry]:
         return [
             ("Play / pause", "Start or pause the simulation", self.action_toggle_play),
             ("Step", "Advance one simulation step", self.action_step),
@@ -458,16 +465,16 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
     def check_grounding(self, controller: SimulationController, final: bool = False) -> None:
         import threading
 
-        taken: dict[str, Any] = {}
+        taken = _TakenRows()
         done = threading.Event()
 
-        def take(simulation: Any) -> None:
+        def take(simulation: Simulation) -> None:
             # In the simulation thread, between steps: the new rows and the events belong to one instant.
-            taken["rows"] = simulation.recorder.rows_from(self._checker_rows)
-            taken["events"] = list(simulation.events)
+            taken.rows = simulation.recorder.rows_from(self._checker_rows)
+            taken.events = list(simulation.events)
 
-        def reply(result: Any) -> None:
-            taken["error"] = result if isinstance(result, Exception) else None
+        def reply(result: object) -> None:
+            taken.error = result if isinstance(result, Exception) else None
             done.set()
 
         try:
@@ -477,10 +484,10 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
                 self.post_message(msg.GroundingChecked(None))
                 return
             controller.send("call", take, reply)
-            if not done.wait(GROUNDING_ROWS_TIMEOUT) or taken.get("error") is not None:
-                raise RuntimeError(f"cannot read the run: {taken.get('error') or 'the simulation did not answer'}")
-            self._checker_rows += len(taken["rows"])
-            report = self.grove.session.check_run_rows(self._checker, taken["rows"], taken["events"],
+            if not done.wait(GROUNDING_ROWS_TIMEOUT) or taken.error is not None:
+                raise RuntimeError(f"cannot read the run: {taken.error or 'the simulation did not answer'}")
+            self._checker_rows += len(taken.rows)
+            report = self.grove.session.check_run_rows(self._checker, taken.rows, taken.events,
                                                        partial=not final)
         except Exception as exc:  # a check bug must show in the panel, not stop the simulation
             self.post_message(msg.GroundingChecked(None, f"{type(exc).__name__}: {exc}"))
@@ -515,15 +522,15 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             self.refresh_grounding()
 
     # actions ---------------------------------------------------------------------------------------
-    def _send(self, *command: Any) -> None:
+    def _send(self, command: Command) -> None:
         if self.controller is not None:
-            self.controller.send(*command)
+            self.controller.send_command(command)
 
     def action_toggle_play(self) -> None:
-        self._send("play")
+        self._send(("play",))
 
     def action_step(self) -> None:
-        self._send("step", 1)
+        self._send(("step", 1))
 
     def action_speed(self, direction: int) -> None:
         current = self.controller.speed if self.controller is not None else 1.0
@@ -533,11 +540,11 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             index = min(range(len(SPEEDS)), key=lambda i: abs(SPEEDS[i] - current))
             index = max(0, min(len(SPEEDS) - 1, index + direction))
             speed = SPEEDS[index]
-        self._send("speed", speed)
+        self._send(("speed", speed))
         self.notify(f"speed {speed_label(speed)}", timeout=1)
 
     def action_max_speed(self) -> None:
-        self._send("speed", MAX_SPEED)
+        self._send(("speed", MAX_SPEED))
 
     def action_select(self, step: int) -> None:
         if not self._agent_ids:
@@ -550,7 +557,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
     def select_agent(self, agent_id: int) -> None:
         self._selected_agent = agent_id
-        self._send("select", agent_id)
+        self._send(("select", agent_id))
         agent = next(a for a in self.generated.scenario.agents if a.id == agent_id)
         tree = self.query_one("#sim-tree", BTTree)
         tree.clear_all()
@@ -564,10 +571,10 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
 
     def drive(self, dx: int, dy: int) -> None:
         speed = self.grove.settings.simulation.robot_speed
-        self._send("drive", dx * speed, dy * speed)
+        self._send(("drive", dx * speed, dy * speed))
 
     def action_follow_path(self) -> None:
-        self._send("follow_path")
+        self._send(("follow_path",))
 
     def action_colour_mode(self) -> None:
         self._colour_mode = "behavior" if self._colour_mode == "group" else "group"
@@ -596,11 +603,11 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         def progress(kind: str, index: int, total: int) -> None:
             self.post_message(msg.ExportProgress(kind, index, total))
 
-        def export(simulation: Any) -> Any:
+        def export(simulation: Simulation) -> list[ExportedFile]:
             # In the simulation thread, which is paused: the run cannot change while it is written.
             return session.export_all(generated, simulation, root, on_progress=progress)
 
-        def reply(result: Any) -> None:
+        def reply(result: list[ExportedFile] | Exception) -> None:
             if isinstance(result, Exception):
                 self.post_message(msg.ExportFailed(describe_error(result).text))
             else:
@@ -610,10 +617,10 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         # over a frozen map while the export holds the simulation thread.
         self._resume_after_export = controller.playing
         self.exporting = True
-        self._send("play", False)
+        self._send(("play", False))
         self._export_progress = ExportProgressScreen("the run")
         self.app.push_screen(self._export_progress)
-        self._send("call", export, reply)
+        controller.send("call", export, reply)
         if self._last_snapshot is not None:
             self._show_status(self._last_snapshot)
 
@@ -631,7 +638,7 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
     def _resume(self, _result: object = None) -> None:
         self.exporting = False
         if self._resume_after_export:
-            self._send("play", True)
+            self._send(("play", True))
         self._resume_after_export = False
         if self._last_snapshot is not None:
             self._show_status(self._last_snapshot)
@@ -652,7 +659,17 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         self.notify(message.error, title="Export failed", severity="error", timeout=15)
 
 
-def robot_pose(frame: Any) -> tuple[float, float, float] | None:
+@dataclass
+class _TakenRows:
+    """What check_grounding takes from the simulation thread: the recorder's new rows and the events
+    (or the exception that stopped it)."""
+
+    rows: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    events: list[SimEvent] = field(default_factory=list)
+    error: Exception | None = None
+
+
+def robot_pose(frame: Frame) -> tuple[float, float, float] | None:
     robot = getattr(frame, "robot", None)
     if robot is None:
         return None

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING
 
 from rich.segment import Segment
 from rich.style import Style
@@ -14,6 +14,9 @@ from textual.widgets import Tree
 from textual.widgets.tree import TreeNode
 
 from grove_tui.services.trees import TreeDocument, TreeElement, behavior_trees
+
+if TYPE_CHECKING:
+    from grove_tui.scenario.model import AgentSpec
 
 STATUS_CLASSES = {
     "RUNNING": "bt--running",
@@ -79,8 +82,9 @@ running, success, failure.
     BTTree > .bt--idle { color: $foreground-muted; }
     """
 
-    def __init__(self, label: str = "Scenario", **kwargs: Any) -> None:
-        super().__init__(label, **kwargs)
+    def __init__(self, label: str = "Scenario", *, name: str | None = None, id: str | None = None,
+                 classes: str | None = None, disabled: bool = False) -> None:
+        super().__init__(label, name=name, id=id, classes=classes, disabled=disabled)
         self.show_root = False
         self.guide_depth = 2
         self._status: dict[str, str] = {}
@@ -97,7 +101,7 @@ running, success, failure.
         trees = behavior_trees(document)
         for tree_index, tree in enumerate(trees):
             container = parent if tree_index == 0 else parent.add(
-                Text(f"SubTree {tree.get('ID', '')}", style="italic"), BTNode("node", agent_id, tree.get("ID", "")))
+                Text(f"SubTree {tree.get('ID', '')}", style="italic"), BTNode("node", agent_id, tree.get("ID") or ""))
             for child_index, element in enumerate(tree.children):
                 self._add_element(container, agent_id, element, (child_index,) if tree_index == 0 else (), expand)
 
@@ -116,7 +120,7 @@ running, success, failure.
         if path:
             self._nodes_by_path[(agent_id, path_key(path))] = node
 
-    def add_agent(self, parent: TreeNode[BTNode], agent: Any, document: TreeDocument | None, expand: bool = False,
+    def add_agent(self, parent: TreeNode[BTNode], agent: AgentSpec, document: TreeDocument | None, expand: bool = False,
                   destination: str = "") -> TreeNode[BTNode]:
         """An agent's row ("agent 3 Regular → pharmacy_counter": where it is going) and its tree."""
         label = Text(f"agent {agent.id}", style="bold")
@@ -127,7 +131,7 @@ running, success, failure.
         return node
 
     def add_runtime_tree(self, parent: TreeNode[BTNode], agent_id: int,
-                         statuses: list[tuple[Any, str, str]]) -> None:
+                         statuses: list[tuple[str, str, str]]) -> None:
         """The tree as the simulation runs it (reaction wrappers and SubTrees included), from tree_status."""
         nodes: dict[str, TreeNode[BTNode]] = {}
         paths = [path_key(path) for path, _name, _status in statuses]
@@ -161,7 +165,7 @@ running, success, failure.
         return Strip.join([strip.crop(0, x2 - x1 - 1), Strip([Segment("…", style)], 1)])
 
     # live status -------------------------------------------------------------------------------------
-    def set_status(self, agent_id: int, statuses: list[tuple[Any, str, str]]) -> None:
+    def set_status(self, agent_id: int, statuses: list[tuple[str, str, str]]) -> None:
         """Statuses from Simulation.tree_status: (node path, node name, status); repaints changed rows only."""
         new = {path_key(path): str(status).upper() for path, _name, status in statuses}
         if agent_id == self._status_agent and new == self._status:

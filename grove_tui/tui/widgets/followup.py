@@ -45,8 +45,8 @@ inspect screen undo and redo an edit.
     class Left(Message):
         """Escape: the user is done typing."""
 
-    def __init__(self, **kwargs: object) -> None:
-        super().__init__(**kwargs)  # type: ignore[arg-type]
+    def __init__(self, *, placeholder: str = "", id: str | None = None, max_length: int = 0) -> None:
+        super().__init__(placeholder=placeholder, id=id, max_length=max_length)
         self.history: list[str] = []
         self._index: int | None = None
 

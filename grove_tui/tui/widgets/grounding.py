@@ -15,9 +15,9 @@ from __future__ import annotations
 
 import io
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING
 
-from rich.console import Console, Group
+from rich.console import Console, Group, RenderableType
 from rich.table import Table
 from rich.text import Text
 from textual.containers import VerticalScroll
@@ -25,10 +25,15 @@ from textual.widgets import Static
 
 from grove_tui.scenario.report import FAILS, HOLDS, MARKS, PLANNED, UNCHECKED, Claim, GroundingReport
 
+if TYPE_CHECKING:
+    from textual.app import ComposeResult
+
+    from grove_tui.jsontypes import Parsed
+
 STYLES = {HOLDS: "green", FAILS: "red", UNCHECKED: "yellow", PLANNED: "dim"}
 
 
-def read_grounding(report: Mapping[str, Any] | None) -> GroundingReport | None:
+def read_grounding(report: Parsed | None) -> GroundingReport | None:
     """The report of a generation.json (its `grounding` entry) or of a grounding.json (the report
     itself); None when there is none."""
     if not isinstance(report, Mapping):
@@ -60,7 +65,7 @@ def render_grounding(report: GroundingReport | None) -> Group:
     if report is None:
         return Group(Text("No grounding report in this bundle: it was generated before the sentence was read "
                           "into groups. Regenerate (g) to get one.", style="dim"))
-    parts: list[Any] = [Text(report.summary(), style="bold")]
+    parts: list[RenderableType] = [Text(report.summary(), style="bold")]
     if not report.checked:
         parts.append(Text("Nothing is ✓ before a run: play it (p) to check what the people do.", style="dim"))
     if not report.groups:
@@ -145,14 +150,15 @@ how long it needs). `+` lines are what the scenario adds beyond the sentence (ne
 readings, `!` count edits and parts of the sentence that could not be honoured.
 """
 
-    def __init__(self, report: Mapping[str, Any] | None, **kwargs: Any) -> None:
-        super().__init__(**kwargs)
+    def __init__(self, report: Parsed | None, *, name: str | None = None, id: str | None = None,
+                 classes: str | None = None, disabled: bool = False) -> None:
+        super().__init__(name=name, id=id, classes=classes, disabled=disabled)
         self._parsed = read_grounding(report)
 
-    def compose(self):
+    def compose(self) -> ComposeResult:
         yield Static(render_grounding(self._parsed), id="grounding-text")
 
-    def show(self, report: Mapping[str, Any] | GroundingReport | None) -> None:
+    def show(self, report: Parsed | GroundingReport | None) -> None:
         self._parsed = report if isinstance(report, GroundingReport) else read_grounding(report)
         self.query_one("#grounding-text", Static).update(render_grounding(self._parsed))
         self.border_title = self.title()

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from rich.text import Text
 from textual.widgets import Static
@@ -34,21 +34,17 @@ class MapLegend(Static):
     MapLegend { height: 1; padding: 0 1; text-wrap: nowrap; text-overflow: ellipsis; }
     """
 
-    def __init__(self, *args: object, **kwargs: object) -> None:
-        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
-        self._shown: tuple[str, tuple[object, ...]] | None = None
+    def __init__(self, content: str = "", *, name: str | None = None, id: str | None = None,
+                 classes: str | None = None) -> None:
+        super().__init__(content, name=name, id=id, classes=classes)
+        self._shown: Callable[[MapView], None] | None = None  # shows the last legend again, on a redrawn map
 
     def map_changed(self, world_map: MapView) -> None:
-        if self._shown is None:
-            return
-        kind, args = self._shown
-        if kind == "symbols":
-            self.show_symbols(world_map, *args)  # type: ignore[arg-type]
-        else:
-            self.show_colours(world_map, *args)  # type: ignore[arg-type]
+        if self._shown is not None:
+            self._shown(world_map)
 
     def show_symbols(self, world_map: MapView, symbols: Sequence[tuple[str, int, str]]) -> None:
-        self._shown = ("symbols", (symbols,))
+        self._shown = lambda redrawn: self.show_symbols(redrawn, symbols)
         entries = list(symbols)
         if world_map.labels_abbreviated:
             # After the markers a scenario draws, before those of a selection or the robot.
@@ -59,13 +55,14 @@ class MapLegend(Static):
         for glyph, style, meaning in entries:
             legend.append(glyph, world_map.get_component_rich_style(STYLE_CLASSES[style]))
             legend.append(f"{meaning} ")
-        self.update(legend.rstrip() or legend)
+        legend.rstrip()  # in place (rich's Text.rstrip returns None)
+        self.update(legend)
         self.tooltip = "  ".join(f"{glyph}{meaning}" for glyph, _style, meaning in entries)
 
     def show_colours(self, world_map: MapView, mode: str, names: Sequence[str],
                      symbols: Sequence[tuple[str, int, str]] = ()) -> None:
         """People coloured by `mode` (group or behavior): one coloured dot per name, then the symbols."""
-        self._shown = ("colours", (mode, names, symbols))
+        self._shown = lambda redrawn: self.show_colours(redrawn, mode, names, symbols)
         legend = Text(no_wrap=True, overflow="ellipsis")
         legend.append(f"{mode}: ")
         for index, name in enumerate(names):

@@ -10,9 +10,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from grove_tui.tui.widgets.map_styles import (  # noqa: F401  (re-exported for callers)
     DOOR,
@@ -33,6 +34,9 @@ from grove_tui.tui.widgets.map_styles import (  # noqa: F401  (re-exported for c
     ZONE_LABEL,
 )
 
+if TYPE_CHECKING:
+    from grove_tui.services.domain import VelocityField, World, Zone
+
 BRAILLE_BASE = 0x2800
 # Braille dot bit for dot column c (0..1) and dot row r (0..3) inside one cell.
 BRAILLE_BITS = np.array([[0x01, 0x08], [0x02, 0x10], [0x04, 0x20], [0x40, 0x80]], dtype=np.uint8)
@@ -51,13 +55,13 @@ class Overlay:
     robot_path: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     highlight_path: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     highlight_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
-    fields: tuple[Any, ...] = ()  # VelocityField-like: origin, resolution, vectors (H, W, 2)
+    fields: tuple[VelocityField, ...] = ()  # origin, resolution, vectors (H, W, 2)
 
 
 class MapRaster:
     """A world drawn at `cols_per_metre` (rows per metre is half of it)."""
 
-    def __init__(self, world: Any, cols_per_metre: float) -> None:
+    def __init__(self, world: World, cols_per_metre: float) -> None:
         self.world = world
         self.cols_per_metre = cols_per_metre
         self.dots_per_metre = 2.0 * cols_per_metre
@@ -73,7 +77,7 @@ class MapRaster:
         self._paint_labels(self.base_chars, self.base_styles)
 
     @staticmethod
-    def fit_scale(world: Any, cols: int, rows: int) -> float:
+    def fit_scale(world: World, cols: int, rows: int) -> float:
         """Columns per metre so the whole world fits `cols` x `rows` cells."""
         xmin, ymin, xmax, ymax = world.bounds()
         span_x = xmax - xmin + 2 * MARGIN_M
@@ -167,7 +171,7 @@ class MapRaster:
         return label != full
 
     @staticmethod
-    def _polygon_segments(points: Any) -> np.ndarray:
+    def _polygon_segments(points: npt.ArrayLike) -> np.ndarray:
         ring = np.asarray(points, dtype=np.float64).reshape(-1, 2)
         if len(ring) < 2:
             return np.zeros((0, 4))
@@ -218,7 +222,7 @@ class MapRaster:
             self._paint_field(chars, styles, velocity_field)
         return chars, styles
 
-    def _paint_field(self, chars: np.ndarray, styles: np.ndarray, velocity_field: Any) -> None:
+    def _paint_field(self, chars: np.ndarray, styles: np.ndarray, velocity_field: VelocityField) -> None:
         vectors = np.asarray(velocity_field.vectors)
         origin_x, origin_y = velocity_field.origin
         resolution = float(velocity_field.resolution)
@@ -351,11 +355,9 @@ def merge_blank_cells(chars_row: np.ndarray, styles_row: np.ndarray, blank_safe:
     return merged
 
 
-def _centroid_xy(zone: Any) -> tuple[float, float]:
-    centroid = zone.centroid
-    if hasattr(centroid, "x"):
-        return float(centroid.x), float(centroid.y)
-    return float(centroid[0]), float(centroid[1])
+def _centroid_xy(zone: Zone) -> tuple[float, float]:
+    x, y = zone.centroid  # world.Zone.centroid: the polygon's centroid as a point (x, y)
+    return float(x), float(y)
 
 
 MIN_LABEL_ROOM = 8  # cells a label may always take, however narrow the map

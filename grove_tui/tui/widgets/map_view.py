@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from rich.segment import Segment
 from rich.style import Style
@@ -18,6 +18,9 @@ from grove_tui.tui.widgets import map_styles as ms
 
 if TYPE_CHECKING:
     import numpy as np
+
+    from grove_tui.services.domain import World
+    from grove_tui.tui.widgets.map_legend import MapLegend
 
 STYLE_CLASSES = {
     ms.FLOOR: "map--floor",
@@ -96,7 +99,7 @@ path, and the selection highlighted with `◆`.
 
     def __init__(self, *, name: str | None = None, id: str | None = None, classes: str | None = None) -> None:
         super().__init__(name=name, id=id, classes=classes)
-        self._world: Any = None
+        self._world: World | None = None
         self._overlay: mr.Overlay | None = None
         self._zoom = 1.0  # multiple of the fit scale
         self._raster: mr.MapRaster | None = None
@@ -116,7 +119,7 @@ path, and the selection highlighted with `◆`.
         self.zoom_target: Callable[[], tuple[float, float] | None] | None = None
         # The MapLegend under the map: told when the map is drawn again (zoom, size), since whether a zone
         # name had to be shortened (and the legend says how) depends on the scale.
-        self.legend: Any = None
+        self.legend: MapLegend | None = None
 
     # public API --------------------------------------------------------------------------------------
     @property
@@ -124,10 +127,10 @@ path, and the selection highlighted with `◆`.
         return self._raster
 
     @property
-    def world(self) -> Any:
+    def world(self) -> World | None:
         return self._world
 
-    def set_world(self, world: Any) -> None:
+    def set_world(self, world: World | None) -> None:
         self._world = world
         self._overlay = None
         self._agent_rows = {}

@@ -1,0 +1,49 @@
+"""Kinds of place a world may lack: a phrase whose words name one ("the planetarium", "the planetarium
+dome", "the sauna room", "the bowling alley") names that kind of place; in a world with no zone, fixture
+or alias of that kind (nor a synonym, nor a name as near as a synonym) it is refused as a place the
+world lacks, never matched by meaning to a loosely similar room (a museum's workshop room is no
+planetarium). Read for language/place_phrases.py."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from grove_tui.language.places import PlaceIndex
+
+# Facilities people name by their kind: each is a kind of place of its own, never a word for rooms in
+# general ("room", "hall", "area") nor for what a room is for ("music", "stock").
+PLACE_KINDS = frozenset("""
+planetarium aquarium observatory greenhouse conservatory arboretum zoo aviary vivarium
+sauna jacuzzi solarium spa steam_room hot_tub ice_rink rink skatepark skate_park bowling_alley bowling arcade
+casino nightclub disco karaoke
+chapel church mosque synagogue temple prayer_room multifaith_room
+nursery creche crèche playground play_area soft_play
+barber barbershop hairdresser salon nail_bar beauty_salon tattoo
+bank post_office launderette laundrette laundromat
+mortuary morgue maternity_ward maternity labour_ward
+""".split())
+# A name this near the kind's word in meaning is that kind under another word ("creche": "nursery").
+SYNONYM_NEAR = 0.75
+
+
+def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
+    """The kind of place a phrase names that the world has none of ("planetarium" of "the planetarium
+    dome"), or None."""
+    words = [t for t in lemmas if t]
+    pairs = ["_".join(words[i:i + 2]) for i in range(len(words) - 1)]
+    for kind in [*pairs, *words]:
+        if kind not in PLACE_KINDS:
+            continue
+        parts = kind.split("_")
+        if all(index.knows(p) for p in parts) or any(index.knows(p) for p in parts if p not in _SHARED):
+            return None  # the world has it ("bowling alley" where an alley is a bowling alley), or a synonym
+        said = kind.replace("_", " ")
+        near = index.by_meaning(said)
+        if near and near[0].similarity >= SYNONYM_NEAR:
+            return None
+        return said
+    return None
+
+
+# Words of a kind's name that other places share ("play" of "play area", "room" of "prayer room").
+_SHARED = frozenset("room area play hot tub ward post office bar beauty steam labour skate park alley".split())
