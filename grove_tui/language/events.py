@@ -7,15 +7,25 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 
+# Collectives that name an event too, after a word of time ("After the night shift, ...", "at the end of
+# the class"): a time.
+EVENT_COLLECTIVES = frozenset({"shift", "class", "tour"})
+EVENT_TIME_WORDS = frozenset("after before during until till since end start beginning middle".split())
+# Someone taken ill who is why a place is cleared ("cleared after a swimmer is sick"): the cause, no group.
+CAUSE_WORDS = frozenset("after because when as since once".split())
+ILLNESS_WORDS = frozenset("sick ill unwell injured hurt".split())
+ILLNESS_VERBS = frozenset("faint collapse vomit".split())
+CLEARING_VERBS = frozenset("clear evacuate empty close shut".split())
+
 
 def event_after_time_word(s: Sentence, p: int, at: int) -> bool:
     """Whether the phrase at `at`, after the word at p, is an event named after a word of time: "after",
     "during", "until" or "the end of" before a collective that names an event too, with only
     determiners, adjectives and nouns between."""
-    timed = s.low[p] in lx.EVENT_TIME_WORDS or (s.low[p] == "of" and p > 0 and s.lemma(p - 1) in lx.EVENT_TIME_WORDS)
+    timed = s.low[p] in EVENT_TIME_WORDS or (s.low[p] == "of" and p > 0 and s.lemma(p - 1) in EVENT_TIME_WORDS)
     if not timed:
         return False
-    end = next((k for k in range(at, min(at + 4, s.n)) if s.lemma(k) in lx.EVENT_COLLECTIVES), None)
+    end = next((k for k in range(at, min(at + 4, s.n)) if s.lemma(k) in EVENT_COLLECTIVES), None)
     return end is not None and all(s.w[k].pos in ("DET", "ADJ", "NOUN", "PRON") for k in range(at, end))
 
 
@@ -24,14 +34,14 @@ def cause_of_a_clearing(s: Sentence, p: int, at: int) -> bool:
     pool hall is cleared after a swimmer is sick in the water; everyone ... is sent out", "the café
     is evacuated after a visitor faints": the cause, not a group of the scene. A word of cause, then in
     its clause a word of being taken ill, after a verb of clearing in the same sentence."""
-    if s.low[p] not in lx.CAUSE_WORDS:
+    if s.low[p] not in CAUSE_WORDS:
         return False
     end = at
     while end < s.n and not s.is_punct(end) and s.low[end] not in lx.CLAUSE_STARTERS - {"as"} and end < at + 8:
         end += 1
-    taken_ill = any(s.low[k] in lx.ILLNESS_WORDS or _base(s.low[k]) in lx.ILLNESS_VERBS for k in range(at, end))
+    taken_ill = any(s.low[k] in ILLNESS_WORDS or _base(s.low[k]) in ILLNESS_VERBS for k in range(at, end))
     sentence = s.w[p].sentence
-    cleared = any(_base(s.low[k]) in lx.CLEARING_VERBS for k in range(p) if s.w[k].sentence == sentence)
+    cleared = any(_base(s.low[k]) in CLEARING_VERBS for k in range(p) if s.w[k].sentence == sentence)
     return taken_ill and cleared
 
 

@@ -246,14 +246,6 @@ PERSON_THINGS = frozenset("fan guide host party crew runner walker driver cook m
 # What an event does, said of a word for people that names an event too ("once the class ends, ...",
 # "when the tour finishes,"): no group, when nothing follows the verb in its clause.
 EVENT_VERBS = frozenset("end finish conclude begin start close break".split())
-# ... and after a word of time ("After the night shift, ...", "at the end of the class"): a time.
-EVENT_COLLECTIVES = frozenset({"shift", "class", "tour"})
-EVENT_TIME_WORDS = frozenset("after before during until till since end start beginning middle".split())
-# Someone taken ill who is why a place is cleared ("cleared after a swimmer is sick"): the cause, no group.
-CAUSE_WORDS = frozenset("after because when as since once".split())
-ILLNESS_WORDS = frozenset("sick ill unwell injured hurt".split())
-ILLNESS_VERBS = frozenset("faint collapse vomit".split())
-CLEARING_VERBS = frozenset("clear evacuate empty close shut".split())
 SOUND_LIGHT_VERBS = frozenset("tick glow shine flash beep buzz hum whir whirr".split())
 # Words that stand for people without naming what kind ("three of them", "someone").
 PRONOUN_PEOPLE = frozenset({"someone", "somebody", "anyone", "anybody", "everyone", "everybody", "nobody", "one",
@@ -426,21 +418,6 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("square", "up", "to"): "block", ("barge", "into"): "block", ("push", "into"): "block",
     ("sneak", "up"): "approach", ("creep", "up"): "approach", ("tiptoe", "up"): "approach",
 }
-# Hostility to the robot (reactions.py): shouting or throwing something at it ("shouts at the robot",
-# "throws a cup at the robot"), not shouting alone ("kids shout with excitement"); refusing or failing to give way ("won't let it pass", "refuses to budge for the robot",
-# "doesn't make way for it") is blocking it.
-HOSTILE_AT_VERBS = frozenset("throw hurl fling chuck toss lob aim shout yell holler swear curse jeer spit snarl "
-                              "growl bark".split())
-WAY_GIVING_VERBS = frozenset("let move budge shift give make step get".split())
-REFUSALS = frozenset("not n't never refuse refuses refused refusing won't".split())
-# Paying the robot no heed ("take no notice of the robot", "pay little attention to it", "never look at
-# it"): no reaction, whatever verb of looking or coming over follows.
-IGNORING_PHRASES = (("pay", "no", "attention"), ("pay", "little", "attention"), ("take", "no", "notice"),
-                    ("take", "little", "notice"), ("pay", "no", "heed"), ("pay", "it", "no"), ("barely", "notice"))
-NEGATIONS = frozenset("not n't never".split())
-# Verbs of contact that are hostile only with the robot for object or after "into"/"at": "pushes past
-# the robot" is passing it.
-PASSING_AFTER = frozenset("past by around round".split())
 # Words that may stand inside a robot phrase without changing it ("keep well clear", "steer
 # completely clear", "stand right in front of").
 ROBOT_PHRASE_FILLERS = frozenset("well very far right completely quite just deliberately carefully".split())

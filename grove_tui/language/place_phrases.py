@@ -130,8 +130,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas, k)
         # "pitch-side", "by the water": the room around the thing
-        match = beside_thing(s.index, prep,
-                             match if match is not None and match.exact else around(s.index, lemmas) or match)
+        thing = match if match is not None and match.exact else around(s.index, lemmas) or match
+        match = beside_thing(s.index, prep, thing)
+        beside = match is not thing  # the room around the thing: decided, whoever stands there
         match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
@@ -202,7 +203,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         sure = owned[1:] if owned is not None else meant[1:] if meant is not None else \
             said_before[1:] if said_before is not None else None
         score, reason, alternatives = sure or self._confidence(phrase, lemmas, match)
-        if not numbered and sure is None and not self._context_decided(match, alternatives):
+        if not numbered and sure is None and not beside and not self._context_decided(match, alternatives):
             chosen = self._words_do_not_decide(phrase, lemmas, match, score, alternatives)
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]

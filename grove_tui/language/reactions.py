@@ -10,6 +10,22 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
+# Hostility to the robot: shouting or throwing something at it ("shouts at the robot", "throws a cup
+# at the robot"), not shouting alone ("kids shout with excitement"); refusing or failing to give way
+# ("won't let it pass", "refuses to budge for the robot", "doesn't make way for it") is blocking it.
+HOSTILE_AT_VERBS = frozenset("throw hurl fling chuck toss lob aim shout yell holler swear curse jeer spit snarl "
+                              "growl bark".split())
+WAY_GIVING_VERBS = frozenset("let move budge shift give make step get".split())
+REFUSALS = frozenset("not n't never refuse refuses refused refusing won't".split())
+# Paying the robot no heed ("take no notice of the robot", "pay little attention to it", "never look at
+# it"): no reaction, whatever verb of looking or coming over follows.
+IGNORING_PHRASES = (("pay", "no", "attention"), ("pay", "little", "attention"), ("take", "no", "notice"),
+                    ("take", "little", "notice"), ("pay", "no", "heed"), ("pay", "it", "no"), ("barely", "notice"))
+NEGATIONS = frozenset("not n't never".split())
+# Verbs of contact that are hostile only with the robot for object or after "into"/"at": "pushes past
+# the robot" is passing it.
+PASSING_AFTER = frozenset("past by around round".split())
+
 
 def robot_positions(s: Sentence, own: Sequence[int], robot_after: int | None) -> list[int]:
     """Where a clause names the robot: its word, or "it"/"its" once the robot was named before; and
@@ -45,7 +61,7 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         if s.low[i] in lx.ROBOT_FEELINGS:
             return lx.ROBOT_FEELINGS[s.low[i]]
     if any(s.low[r - 1] == "at" or (s.low[r - 1] == "the" and s.low[r - 2] == "at") for r in robot_at if r >= 2):
-        if any(s.verb(i) in lx.HOSTILE_AT_VERBS for i in own if i < robot_at[-1]):
+        if any(s.verb(i) in HOSTILE_AT_VERBS for i in own if i < robot_at[-1]):
             return "block"  # "throws a cup at the robot"
         return "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
     return None
@@ -57,10 +73,10 @@ def _ignored(s: Sentence, own: Sequence[int], r: int) -> bool:
     ownset = set(own)
     before = [i for i in own if i < r]
     for n, i in enumerate(before):
-        if any(s.phrase_words(i, len(p), ownset) == p for p in lx.IGNORING_PHRASES):
+        if any(s.phrase_words(i, len(p), ownset) == p for p in IGNORING_PHRASES):
             return True
         near = before[n + 1:n + 4]
-        if s.low[i] in lx.NEGATIONS and any(lx.ROBOT_VERBS.get(s.verb(k)) in ("look", "approach", "follow") for k in near) \
+        if s.low[i] in NEGATIONS and any(lx.ROBOT_VERBS.get(s.verb(k)) in ("look", "approach", "follow") for k in near) \
                 and not any(s.verb(k) in ("stop", "help", "resist") for k in near):  # not "can't stop staring"
             return True
     return False
@@ -72,8 +88,8 @@ def _refused(s: Sentence, own: Sequence[int], r: int) -> bool:
     for it", "doesn't move out of its way")."""
     before = [i for i in own if i < r]
     for n, i in enumerate(before):
-        if s.low[i] in lx.REFUSALS or s.verb(i) == "refuse":
-            if any(s.verb(k) in lx.WAY_GIVING_VERBS or s.verb(k) == "budge" for k in before[n + 1:n + 4]):
+        if s.low[i] in REFUSALS or s.verb(i) == "refuse":
+            if any(s.verb(k) in WAY_GIVING_VERBS or s.verb(k) == "budge" for k in before[n + 1:n + 4]):
                 return True
     return False
 
@@ -142,7 +158,7 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
                     return "approach"  # "the twins toddle up to the robot"
             if _sent_to_robot(s, ownset, i, r):
                 return "approach"  # "hurries to the robot", "runs from the lobby to it"
-        if v in lx.ROBOT_VERBS and lx.ROBOT_VERBS[v] == "block" and i + 1 < s.n and s.low[i + 1] in lx.PASSING_AFTER:
+        if v in lx.ROBOT_VERBS and lx.ROBOT_VERBS[v] == "block" and i + 1 < s.n and s.low[i + 1] in PASSING_AFTER:
             continue  # "pushes past the robot": going by it
         if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
                 not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] == "look"):
