@@ -390,7 +390,7 @@ for _interaction, _verbs in {
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
              "hit punch push slap smack thump whack bash ram barge heckle taunt abuse grab tip topple vandalise "
-             "vandalize headbutt",
+             "vandalize headbutt fight attack assault damage wreck rock climb ride",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)
@@ -416,7 +416,7 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("back", "off"): "avoid", ("get", "out", "of", "the", "way"): "avoid", ("make", "way"): "avoid",
     ("edge", "away"): "avoid", ("scuttle", "away"): "avoid",
     ("square", "up", "to"): "block", ("barge", "into"): "block", ("push", "into"): "block",
-    ("sneak", "up"): "approach", ("creep", "up"): "approach", ("tiptoe", "up"): "approach",
+    ("sit", "on"): "block", ("climb", "on"): "block", ("sneak", "up"): "approach", ("creep", "up"): "approach", ("tiptoe", "up"): "approach",
 }
 # Words that may stand inside a robot phrase without changing it ("keep well clear", "steer
 # completely clear", "stand right in front of").

@@ -72,6 +72,9 @@ def test_things_named_like_people_stay_things(read, world, prompt):
     ("station", "a man barges into the robot"),
     ("sports_centre", "some teenagers try to tip the robot over"),
     ("library", "a reader grabs the robot and won't let go"),
+    ("mall", "a drunk man tries to fight the robot"),
+    ("mall", "a teenager sits on the robot"),
+    ("library", "a student rocks the robot back and forth"),
 ])
 def test_hostility_to_the_robot_is_blocking_it(read, world, prompt):
     g = one(read(world, prompt))
@@ -84,6 +87,8 @@ def test_hostility_to_the_robot_is_blocking_it(read, world, prompt):
     ("mall", "a mother pushes a pram past the robot", None),
     ("office", "a cleaner steps aside to let the robot through", "avoid"),
     ("sports_centre", "a parent glares at the robot", "look"),
+    ("hospital", "a patient sits on the bench next to the robot", None),
+    ("mall", "a man rocks his baby while the robot passes", None),
 ])
 def test_not_every_shout_or_push_is_hostile(read, world, prompt, interaction):
     assert one(read(world, prompt)).robot_interaction == interaction
