@@ -450,6 +450,7 @@ class Mentions:
                            relation=f"others_of:{parent}" if parent is not None else None)
         if low[at] in ("everyone", "everybody") and at + 1 < s.n and low[at + 1] == "else":
             parent = self.parent(found)
+            parent = next((w for w in [whole_of_a_bare_part(s, found, parent)] if w is not None), parent)
             label = found[parent].label if parent is not None else "person"
             return Mention(at, at + 1, s.span(at, at + 1), label, None,
                            relation=f"others_of:{parent}" if parent is not None else None, rest_of_parent=True)

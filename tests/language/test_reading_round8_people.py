@@ -217,6 +217,8 @@ def test_a_shift_or_class_after_a_word_of_time_is_a_time(read, world, prompt, la
     ("sports_centre", "twenty kids arrive at reception; five go to the pool hall and the rest go to the sports hall",
      20, 5, 15),
     ("station", "forty commuters pour off the train; thirty head to the exit and the rest wait on platform 1", 40, 30, 10),
+    ("sports_centre", "thirty parents wait in the cafe; twelve go to the pool hall and everyone else stays put", 30, 12,
+     18),
 ])
 def test_a_bare_number_then_the_others_is_a_partition(read, world, prompt, whole, part, rest):
     g0, g1, g2 = read(world, prompt).groups
