@@ -33,6 +33,13 @@ class Collectives:
                                                            or verb_lemma(s.low[after]) in lx.INTENT_VERBS)
                     and at > 0 and s.low[at - 1] not in ("at", "until", "till", "after", "before", "since")):
                 return Mention(at, after - 1, s.span(at, after - 1), found[-1].label, count_of(s, q, f"{at}:ellipsis"))
+            whole = next((k for k in range(len(found) - 1, -1, -1) if found[k].relation is None), None)
+            if whole is not None and q.kind.startswith("vague") and after < s.n and at > 0 and (
+                    s.is_punct(at - 1) or s.low[at - 1] in lx.CLAUSE_STARTERS) and (
+                    s.is_verb(after) or verb_lemma(s.low[after]) in lx.INTENT_VERBS):
+                # "twenty commuters wait; a few leave through the exit": a few of them
+                return Mention(at, after - 1, s.span(at, after - 1), found[whole].label,
+                               count_of(s, q, f"{at}:part"), relation=f"subset_of:{whole}")
             return None
         collective = self.collective(head, q, at)
         if collective is not None:

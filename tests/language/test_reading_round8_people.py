@@ -369,3 +369,14 @@ def test_standing_guard_is_the_robots_duty_and_nobody(read, world, prompt, place
     r = read(world, prompt)
     assert all(g.label == "person" and g.who == "people" for g in r.groups)
     assert (r.robot.task, r.robot.location) == ("wait", place)
+
+
+@pytest.mark.parametrize("world,prompt,whole,who", [
+    ("station", "twenty commuters wait on platform 1; a few leave through the main entrance", 20, "a few"),
+    ("hospital", "ten patients wait in the waiting room and several walk to the pharmacy", 10, "several"),
+    ("library", "thirty students revise in the reading room; some go to the cafe", 30, "some"),
+])
+def test_a_vague_few_after_a_group_is_part_of_it(read, world, prompt, whole, who):
+    g0, g1 = read(world, prompt).groups
+    assert g0.count.value == whole and (g1.who, g1.relation) == (who, "subset_of:0")
+    assert g1.destination is not None and g0.destination is None
