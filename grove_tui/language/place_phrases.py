@@ -18,6 +18,7 @@ from grove_tui.language.emptied import EmptiedZones
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
+from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
@@ -83,6 +84,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between"  # "naps between operations": a time, maybe
+        if is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
+            return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
         if k < s.n and low[k] in ("where", "upstairs", "downstairs"):  # "to where you get your bags back"
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (

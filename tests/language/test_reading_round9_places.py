@@ -1,0 +1,37 @@
+"""Place classes of round 9, each with sentences of its own over at least two worlds (none from the
+understanding sets): a topic or a feeling after a place preposition is no place ("argue about a bug",
+"bursts into tears"); "outside X" is the zone X's door opens onto; a robot's places after the thing it
+carries; a place described by what is done there beats a shared head noun; a person's own room by who
+they are."""
+
+from __future__ import annotations
+
+import pytest
+
+
+def place_of(group):
+    return group.destination or group.location or group.start
+
+
+# ---- A. a topic or a feeling is no place ---------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt", [
+    ("library", "Two students argue about a bug in the reading room."),
+    ("library", "Two staff talk about the weather at the issue desk."),
+    ("library", "A child breaks into laughter in the reading room."),
+    ("sports_centre", "A girl bursts into tears at the pool."),
+    ("sports_centre", "Two teens get into trouble in the gym."),
+    ("hotel", "Two porters gossip about a famous guest in the lobby."),
+])
+def test_a_topic_or_a_feeling_is_never_an_unknown_place(read, world, prompt):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert place_of(r.groups[0]) is not None
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("sports_centre", "Three swimmers walk into the sauna."),
+    ("library", "Two readers wander into the planetarium."),
+])
+def test_a_missing_room_after_into_is_still_refused(read, world, prompt):
+    assert read(world, prompt).unknown_places != ()
