@@ -18,6 +18,7 @@ from dataclasses import dataclass, field, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.people import People
+from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
@@ -341,7 +342,7 @@ class Clauses:
 
     def _after_transaction(self, i: int, own: Sequence[int]) -> bool:
         """Whether a verb of getting something governs the preposition at i ("buy tickets from")."""
-        return any(verb_lemma(self.s.low[k]) in lx.TRANSACTION_VERBS for k in own if i - 4 <= k < i)
+        return from_is_where_got(self.s, i, own)  # not "takes towels from the laundry to room 108"
 
     def _verb_just_before(self, i: int) -> str | None:
         """The verb (or "beeline") right before i, past adverbs ("head straight for the exit")."""

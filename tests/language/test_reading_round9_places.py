@@ -35,3 +35,24 @@ def test_a_topic_or_a_feeling_is_never_an_unknown_place(read, world, prompt):
 ])
 def test_a_missing_room_after_into_is_still_refused(read, world, prompt):
     assert read(world, prompt).unknown_places != ()
+
+
+# ---- C. a robot's places after the thing it carries ----------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hotel", "The robot takes clean sheets from the laundry to the spa.", "laundry", "spa"),
+    ("library", "The robot takes a box of books from the sorting room to the reading room.", "sorting_room", "reading_room"),
+    ("sports_centre", "The robot takes spare towels from the staff room to the pool.", "staff_room", "pool_hall"),
+])
+def test_a_robot_carrying_a_thing_from_one_place_to_another(read, world, prompt, start, destination):
+    robot = read(world, prompt).robot
+    assert (robot.start, robot.destination) == (start, destination)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("sports_centre", "Two girls buy crisps from the vending machines.", "vending_machines"),
+    ("library", "A student takes a book from the stacks.", "stacks"),
+])
+def test_what_is_got_from_a_place_is_still_got_there(read, world, prompt, place):
+    g = read(world, prompt).groups[0]
+    assert place_of(g) == place
