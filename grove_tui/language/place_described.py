@@ -14,7 +14,7 @@ from collections.abc import Sequence
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.lexicon import PLACE_MODIFIERS
 from grove_tui.language.places import PlaceIndex, PlaceMatch
-from grove_tui.language.tokens import phrase_lemmas
+from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
@@ -51,6 +51,24 @@ DESCRIBED_ACCEPT = 0.4
 DESCRIBED_MARGIN = 0.05
 
 
+# A description that says the activity in its own words ("students come to its counter to hand in
+# coursework") is where it is done, more surely than a name only near it in meaning ("lecturers' office").
+DESCRIPTION_SAYS_IT = 0.08
+_NOT_CONTENT = frozenset("where you people they we someone somebody one who that which the a an their your his her "
+                         "its our in on at to of for and or is are be get do go can could will would some "
+                         "there".split())
+
+
+def says_it(activity: str, description: str) -> float:
+    """The bonus of a description holding the activity's own words: at least two of them, or all."""
+    if not description:
+        return 0.0
+    content = {verb_lemma(lemma(w)) for w in re.findall(r"[a-z]+", activity.lower()) if w not in _NOT_CONTENT}
+    said = {verb_lemma(lemma(w)) for w in re.findall(r"[a-z]+", description.lower())}
+    shared = len(content & said)
+    return DESCRIPTION_SAYS_IT if content and (shared >= 2 or shared == len(content)) else 0.0
+
+
 def plain_activity(activity: str) -> str:
     """The activity in plain words: its idioms replaced ("where people pump iron": "where people lift
     weights"), a vehicle's coming or going said as its stop ("where the trains come in": "the platform
@@ -67,7 +85,8 @@ def vehicle_stop(activity: str) -> str | None:
     return _VEHICLE_STOPS.get(found.group(1)) if found is not None else None
 
 
-def rank_described(index: PlaceIndex, activity: str, kinds: Sequence[str] | None = None) -> Decided | None:
+def rank_described(index: PlaceIndex, activity: str, kinds: Sequence[str] | None = None,
+                   accept: float = DESCRIBED_ACCEPT) -> Decided | None:
     """The room (or fixture) an activity is done at, by its names and its description together: each
     zone is as near as its nearest name or description, or one of its fixtures'; the nearest zone is
     taken when near enough and clearly ahead of the next; the fixture when it is the nearest of its
@@ -83,10 +102,11 @@ def rank_described(index: PlaceIndex, activity: str, kinds: Sequence[str] | None
             e = r.entry
             if e.kind == "door" or (allowed is not None and e.name not in allowed):
                 continue
-            if r.similarity > best_of.get(e.zone, (-1.0, "", ""))[0]:
-                best_of[e.zone] = (r.similarity, e.name, r.nearest)
+            similarity = r.similarity + says_it(activity, r.nearest if r.nearest == e.description else "")
+            if similarity > best_of.get(e.zone, (-1.0, "", ""))[0]:
+                best_of[e.zone] = (similarity, e.name, r.nearest)
     order = sorted(best_of.items(), key=lambda item: -item[1][0])
-    if not order or (order[0][1][0] < DESCRIBED_ACCEPT and not stops):  # a vehicle's stop is named by its kind
+    if not order or (order[0][1][0] < accept and not stops):  # a vehicle's stop is named by its kind
         return None
     zone, (value, name, like) = order[0]
     # places alike ("the changing rooms", "the platforms") that come as near: the first, unsure, the others

@@ -11,7 +11,8 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
-from grove_tui.language.place_described import plain_activity, purpose_by_use, rank_described, room_with, vehicle_stop
+from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
+                                                room_with, vehicle_stop)
 from grove_tui.language.places import MeaningMatch, PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -161,10 +162,19 @@ class PlaceMeaning:
         first, end = clause
         activity = plain_activity(("" if s.low[first] == "for" else "where ") + self._active(first, end))
         meant = None if vehicle_stop(activity) else self._by_activity(phrase, lemmas, activity)
-        if meant is None:  # by names and descriptions together, among the places the head can be
-            head = content[-1] if content else "place"
-            meant = rank_described(s.index, activity, None if head in _ANY_PLACE | lx.BUILDING_WORDS else
-                                   [e.name for e in s.index.entries if _head_fits(head, e.kind, e.tokens)])
+        head = content[-1] if content else "place"
+        kinds = None if head in _ANY_PLACE | lx.BUILDING_WORDS else \
+            [e.name for e in s.index.entries if _head_fits(head, e.kind, e.tokens)]
+        # by names and descriptions together, among the places the head can be: a head that names a kind
+        # ("the office") is read anyway, so the clause may choose when less near; and a room whose
+        # description says it ("students hand in coursework" at the school office) beats one only named
+        # like the head ("head of department's office")
+        both = rank_described(s.index, activity, kinds, accept=DESCRIBED_ACCEPT if kinds is None else
+                              MEANING_ACTIVITY_CHOOSES) if meant is None or kinds is not None else None
+        theirs = {e.name for e in s.index.owned_by(self.owner)} if self.owner and meant is not None else set()
+        if both is not None and (meant is None or both[0].zone != meant[0].zone and both[0].score > meant[0].score
+                                 and meant[0].name not in theirs):  # "the room they sleep in": their own
+            meant = both
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
         return (meant, end) if meant is not None else None

@@ -56,3 +56,15 @@ def test_a_robot_carrying_a_thing_from_one_place_to_another(read, world, prompt,
 def test_what_is_got_from_a_place_is_still_got_there(read, world, prompt, place):
     g = read(world, prompt).groups[0]
     assert place_of(g) == place
+
+
+# ---- D. a place described by what is done there, by the world's descriptions ---------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("university", "A student goes to the office where forms get signed.", "school_office"),
+    ("library", "A volunteer walks to the office where returned books are put on trolleys.", "sorting_room"),
+])
+def test_a_described_office_is_the_one_whose_description_says_it(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert place_of(r.groups[0]) == place
