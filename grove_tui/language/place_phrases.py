@@ -22,6 +22,7 @@ from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
+from grove_tui.language.place_owner import owner_at
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -144,7 +145,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         named_entry = s.index.entry(match.name) if named_owner and match is not None else None
         if named_entry is not None and named_owner in named_entry.tokens and lemmas and lemmas[-1] in named_entry.tokens:
             named_owner = None  # "the women's toilet": the owner is part of the place's own name
-        owner = named_owner or (self.owner if possessive else None)
+        owner = named_owner or (owner_at(s, self.owner, at) if possessive else None)  # "Little Tom's" a child
         owned = self._owned(lemmas, match, owner) if owner and said_before is None else None
         if owned is not None:
             match = owned[0]

@@ -68,3 +68,22 @@ def test_a_described_office_is_the_one_whose_description_says_it(read, world, pr
     r = read(world, prompt)
     assert r.unknown_places == ()
     assert place_of(r.groups[0]) == place
+
+
+# ---- E. a person's own room by who they are ------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("residential", "Little Sam walks to his bedroom.", "child_bedroom"),
+    ("residential", "Baby Amy sleeps in her room.", "child_bedroom"),
+    ("museum", "Little Ben runs off to his workshop.", "education_room"),
+])
+def test_a_first_name_after_little_or_baby_is_a_child_who_owns_the_childs_room(read, world, prompt, place):
+    assert place_of(read(world, prompt).groups[0]) == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("residential", "Dad walks to his bedroom.", "master_bedroom"),
+    ("hotel", "Two honeymooners relax in their suite.", "garden_suite"),
+])
+def test_an_adults_own_room_is_still_theirs(read, world, prompt, place):
+    assert place_of(read(world, prompt).groups[0]) == place
