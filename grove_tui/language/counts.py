@@ -209,6 +209,9 @@ def duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
         return value * unit, q.end + 1
     if low[k] in ("a", "an", "one") and k + 1 < s.n and lemma(low[k + 1]) in lx.DURATION_UNITS:
         return lx.DURATION_UNITS[lemma(low[k + 1])], k + 2
+    if low[k] in ("the", "all") and k + 1 < s.n and low[k + 1] in lx.DAY_PERIODS and k > 0 and \
+            s.verb(k - 1) == "spend":
+        return lx.DAY_PERIODS[low[k + 1]], k + 2  # "spends the afternoon in the bar"
     if low[k] in ("a", "an") and k + 2 < s.n and low[k + 1] in ("whole", "full", "entire", "good") and \
             lemma(low[k + 2]) in lx.DURATION_UNITS:
         return lx.DURATION_UNITS[lemma(low[k + 2])], k + 3  # "for a whole hour", "an entire minute"

@@ -582,8 +582,8 @@ class Mentions:
         relation = f"others_of:{parent}" if other and parent is not None else None
         if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[at] in _POSSESSIVES):
             low_, high_ = lx.FAMILY_PLURALS[noun]  # "the parents": the two of one family
-            return Mention(at, head, s.span(at, head), label,
-                           Count("implied", s.choose(low_, high_, f"{at}:family"), low_, high_))
+            return Mention(at, head, s.span(at, head), label, Count(
+                "implied", s.choose(low_, high_, f"{at}:family"), low_, high_), together=noun in lx.COUPLE_PLURALS)
         return Mention(at, head, s.span(at, head), label,
                        Count("vague", s.choose(low_, high_, f"{at}:bare"), low_, high_), relation=relation)
 

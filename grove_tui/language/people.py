@@ -10,6 +10,7 @@ from grove_tui.language.parser import known_word
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.unlisted_people import unlisted_subject
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
@@ -57,7 +58,7 @@ class People:
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
-                self._reflexive_agent(i):
+                self._reflexive_agent(i) or unlisted_subject(s, i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
@@ -98,6 +99,7 @@ class People:
         # Not after a verb things do as well ("the sprinklers go off", "the heater stays on").
         return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
                 and verb not in lx.THING_VERBS and verb not in lx.INTENT_VERBS and verb not in ("be", "go", "start")
+                and verb_lemma(s.low[i]) not in lx.INTENT_VERBS  # "a cleaner wanders round": its verb
                 and not s.index.knows(lem)
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
                 and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
