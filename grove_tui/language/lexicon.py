@@ -141,7 +141,7 @@ PERSON_NOUNS = frozenset(
     cashier clerk vendor shopkeeper salesperson pharmacist surgeon midwife janitor custodian
     grandad granddad gran granny nan nana grandpa ceo cto cfo boss backpacker hiker businessman businesswoman
     businessperson twin toddler schoolchild schoolboy schoolgirl inspector conductor driver mechanic builder
-    lecturer researcher scientist relative carer holidaymaker
+    lecturer researcher scientist relative carer holidaymaker newlywed honeymooner
     traveler sightseer photographer journalist reporter
  candidate applicant interviewee recruit trainee apprentice graduate newcomer employer staffer official
  crewmember crewman aircrew airman airwoman captain copilot steward purser handler
