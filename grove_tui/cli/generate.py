@@ -150,7 +150,7 @@ def summary_lines(result: Generated, bundle: Path,
 
 @click.command("generate")
 @click.option("--no-ui", is_flag=True, help="Generate headless (the only mode of this command; the TUI is `grove`).")
-@click.option("--world", "world_name", required=True, help="Shipped world name (hospital, office, residential, airport) or a path.")
+@click.option("--world", "world_name", required=True, help="A shipped world (`grove worlds list`: hospital, office, residential, airport, station, museum, mall) or a path to a world YAML.")
 @click.option("--preset", "preset_name", required=True, help="emergency, queuing, normal, vanilla or a user preset.")
 @click.option("--prompt", required=True, help="The scenario in one sentence.")
 @click.option("--seed", type=click.IntRange(0, 2**32 - 1), default=0, show_default=True,
