@@ -31,7 +31,7 @@ def _people_verb(s: Sentence, head: int) -> bool:
 def _a_thing(s: Sentence, lem: str) -> bool:
     return (s.index.knows(lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
             or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
-            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS)
+            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS)
 
 
 def unlisted_subject(s: Sentence, i: int) -> bool:
@@ -46,6 +46,8 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     while first > 0 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
             s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ"):
         first -= 1  # "an airline rep", "two burly roadies"
+    if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
+        return False  # "the robot hums ...": the robot's verb, tagged a noun
     before = s.low[first - 1] if first > 0 else ""
     if first > 0 and s.w[first - 1].pos == "NUM" and s.w[first - 1].head == i:
         return True  # "two roadies wander", "3 roadies leave"
