@@ -51,3 +51,15 @@ def _base(word: str) -> str:
         if word.endswith(ending) and len(word) >= len(ending) + 2:
             return word[: len(word) - len(ending)] + cut
     return word
+
+
+# Events whose end empties a room as a matter of course ("the 9 am lecture ... empties out of LT1", "the
+# matinee crowd spills out of the cinema"): the people leave, walking, unless something is urgent.
+ROUTINE_EVENTS = frozenset("lecture seminar tutorial class lesson matinee screening film show performance concert "
+                           "match game meeting service mass assembly talk session workshop".split())
+
+
+def routine_emptying(s: Sentence, verb: int) -> bool:
+    """Whether the subject of an emptying at `verb` is an event that ends as a matter of course: an
+    event noun before it in its sentence ("The 9 am lecture, 120 first-years, empties out ...")."""
+    return any(s.lemma(k) in ROUTINE_EVENTS and s.w[k].sentence == s.w[verb].sentence for k in range(verb))

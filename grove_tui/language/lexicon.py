@@ -286,7 +286,7 @@ for _intent, _verbs in {
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
-            "file troop stream flood trickle surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
+            "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
             "lug haul",
 }.items():
     for _verb in _verbs.split():

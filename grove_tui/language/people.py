@@ -10,7 +10,7 @@ from grove_tui.language.parser import known_word
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
-from grove_tui.language.unlisted_people import unlisted_subject
+from grove_tui.language.unlisted_people import CHILD_NAME_WORDS, names_a_place_with_next, unlisted_subject
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
@@ -317,6 +317,8 @@ class People:
         nxt, word = s.w[k + 1], s.low[k + 1]
         if word in ("'s", "’s", "'") or nxt.tag == "POS":
             return True  # "the manager's office"
+        if names_a_place_with_next(s, k):
+            return True  # "by the host stand"
         if word in lx.LOCATION_ADVERBS:
             return False  # "the pupils downstairs", "the guests inside": where they are, no noun
         if self._verb_of_joined(k):
@@ -409,6 +411,9 @@ class People:
                       if self.titled_name(k) == head), None)
         if title is not None:
             return title  # "Dr Jones": a doctor
+        if head > 0 and s.low[head - 1] in CHILD_NAME_WORDS and s.w[head].tag == "NNP" and \
+                s.lemma(head) not in lx.PERSON_NOUNS:
+            return "child"  # "Little Tom": a child, by name
         noun = s.lemma(head)
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
             noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays

@@ -6,11 +6,13 @@ one is one person, a counted one that many."""
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 
 if TYPE_CHECKING:
+    from grove_tui.language.places import PlaceIndex
     from grove_tui.language.sentence import Sentence
 
 _OPENERS = frozenset({"a", "an", "the"})
@@ -57,3 +59,16 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     # A name: capitalised, with no determiner, the phrase opening the sentence or after a comma.
     return (word.tag == "NNP" and s.w[i].text[:1].isupper() and s.w[i].text[1:].islower()
             and (first == 0 or s.is_punct(first - 1) or s.low[first - 1] in ("and", "while", "as", "then")))
+
+
+@lru_cache(maxsize=32)
+def _name_pairs(index: PlaceIndex) -> frozenset[tuple[str, str]]:
+    return frozenset((a, b) for e in index.entries for p in e.phrases for a, b in zip(p, p[1:]))
+
+
+def names_a_place_with_next(s: Sentence, k: int) -> bool:
+    """Whether a singular person word and the base form after it are two words of one of the world's
+    names ("by the host stand", "at the concierge desk"): a place, since a singular person would say
+    "stands"."""
+    return (k + 1 < s.n and s.low[k] == s.lemma(k) and s.low[k + 1] == s.lemma(k + 1)
+            and (s.low[k], s.low[k + 1]) in _name_pairs(s.index))

@@ -100,3 +100,40 @@ def test_carrying_out_of_a_room_is_walking(read, world, prompt, start):
 def test_a_verb_after_a_person_is_no_agent_noun(read, world, prompt):
     g = first(read(world, prompt))
     assert g.label == "cleaner" and g.intent == "wander"
+
+
+# ---- E. an event that empties out as a matter of course -------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("university", "The 11 am seminar, 25 students, empties out of the lecture theatre into the corridor",
+     "lecture_theatre_1"),
+    ("hotel", "The wedding reception, 80 guests, spills out of the ballroom into the garden", "ballroom"),
+    ("mall", "The afternoon screening crowd spills out of the cinema", "cinema_lobby"),
+])
+def test_an_event_emptying_out_is_walking(read, world, prompt, start):
+    g = first(read(world, prompt))
+    assert g.intent == "walk" and g.start == start
+
+
+def test_an_emptying_out_with_a_hazard_stays_an_evacuation(read):
+    g = first(read("mall", "Fire! The matinee crowd empties out of the cinema"))
+    assert g.intent == "evacuate"
+
+
+# ---- a name after a child's word; a person word in a place's name ---------------------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("residential", "Little Ben walks from the kitchen to his bedroom", "child_bedroom"),
+    ("residential", "Baby Ava crawls from the living room to her bedroom", "child_bedroom"),
+])
+def test_a_little_one_by_name_is_a_child(read, world, prompt, destination):
+    g = first(read(world, prompt))
+    assert g.label == "child" and g.count.value == 1 and g.destination == destination
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hotel", "Ten guests queue at the buffet and two waiters chat by the host stand"),
+    ("hotel", "Two porters wait by the concierge desk while six guests queue at reception"),
+])
+def test_a_person_word_in_a_place_name_is_no_group(read, world, prompt):
+    assert len(read(world, prompt).groups) == 2
