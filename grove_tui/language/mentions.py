@@ -20,7 +20,7 @@ from grove_tui.language.events import cause_of_a_clearing, event_after_time_word
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
-from grove_tui.language.partitives import Partitives, whole_of_a_bare_part
+from grove_tui.language.partitives import Partitives, other_half, whole_of_a_bare_part
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
@@ -433,8 +433,9 @@ class Mentions:
         """"the others", "the rest", "everyone else": other people than the group before."""
         s = self.s
         low = s.low
-        j = s.skip(at, {"the"})
-        if j < s.n and low[j] in ("others", "rest") and (j == at or low[at] == "the"):
+        half = other_half(s, at)  # "the other half": the rest of a group half of which was named
+        j = half if half is not None else s.skip(at, {"the"})
+        if j < s.n and (low[j] in ("others", "rest") or j == half) and (j == at or low[at] == "the"):
             last = j + 2 if j + 2 < s.n and low[j + 1] == "of" and low[j + 2] in ("them", "us", "the") else j
             last = (self.people.person_head(last + 1, counted=False) or last) if low[last] == "the" else last  # "of the class"
             parent = self.parent(found, plain=True)

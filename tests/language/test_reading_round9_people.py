@@ -137,3 +137,16 @@ def test_a_little_one_by_name_is_a_child(read, world, prompt, destination):
 ])
 def test_a_person_word_in_a_place_name_is_no_group(read, world, prompt):
     assert len(read(world, prompt).groups) == 2
+
+
+# ---- the other half -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,whole", [
+    ("university", "Half of the forty students walk to the library and the other half stay in the atrium", 40),
+    ("office", "Half of the ten developers go to the kitchen and the other half stay at their desks", 10),
+])
+def test_the_other_half_is_the_rest(read, world, prompt, whole):
+    r = read(world, prompt)
+    halves = [g for g in r.groups if g.count.value == whole // 2]
+    assert len(halves) == 2, r.groups
+    assert {g.intent for g in halves} == {"walk", "wait"}
