@@ -175,3 +175,10 @@ class Collectives:
             return Count("exact", size, size, size, 1, size)
         value = parties * size
         return Count("structured", value, value, value, parties, size)
+
+
+def members_named(before: Mention) -> bool:
+    """Whether a mention is a collective said with no count of its own ("the school party", "the 2 pm
+    tour"), whose members a count set off by commas may name ("the school party, 25 children, ...")."""
+    return (before.collective is not None and before.label == before.collective and before.count is not None
+            and before.count.kind == "implied")

@@ -119,6 +119,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
     num = number_at(s, k)
     if num is not None and num[1] < s.n and low[num[1]] in lx.DETERMINERS and not approx:
         return None  # "At nine the porters come in": a time, then the phrase; a number counts no "the ..."
+    if num is not None and num[1] < s.n and low[num[1]] in ("am", "pm", "a.m", "p.m", "o'clock", "oclock") and not approx:
+        return None  # "the 9 am class", "the 2 pm tour": a time, no count
     if num is not None:
         return _number_quantifier(s, num, approx)
     if low[k] == "both" and k + 1 < s.n and not s.is_punct(k + 1):

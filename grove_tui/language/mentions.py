@@ -14,7 +14,7 @@ than that group (others_of; after a subset, the rest of its parent), "a few more
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.collectives import Collectives
+from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import cause_of_a_clearing, event_after_time_word
 from grove_tui.language.mention import Mention
@@ -93,8 +93,9 @@ class Mentions:
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
                 assert count is not None
+                members = members_named(found[-1])  # "The school party, 25 children, ...": who the party is
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
-                if found[-1].label == "person":
+                if found[-1].label == "person" or members:
                     found[-1].label = m.label
                 i = m.last + 1
                 continue
@@ -160,9 +161,8 @@ class Mentions:
                 and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
-        """Whether m only says how many the mention before is, set off by commas, with no verb
-        between them: "everyone in the auditorium, roughly sixty people, evacuates", "the commuters
-        on platform 1, some forty of them, walk"."""
+        """Whether m only says how many the mention before is, set off by commas, with no verb between:
+        "everyone in the auditorium, roughly sixty people, evacuates", "the school party, 25 children, ..."."""
         s = self.s
         if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or m.count.kind not in ("exact", "approximate"):
             return False
@@ -172,7 +172,8 @@ class Mentions:
         if m.last + 1 >= s.n:
             return False
         if m.relation not in (None, f"subset_of:{index}") or \
-                m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person"):
+                m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person") \
+                and not members_named(before):
             return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full

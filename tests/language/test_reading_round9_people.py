@@ -150,3 +150,16 @@ def test_the_other_half_is_the_rest(read, world, prompt, whole):
     halves = [g for g in r.groups if g.count.value == whole // 2]
     assert len(halves) == 2, r.groups
     assert {g.intent for g in halves} == {"walk", "wait"}
+
+
+# ---- a collective whose members a count names; a time is no count ---------------------------------
+
+@pytest.mark.parametrize("world,prompt,label,count", [
+    ("museum", "The school party, 25 children, waits in the foyer", "child", 25),
+    ("hotel", "The wedding party, about 40 guests, gathers in the ballroom", "guest", 40),
+    ("university", "The 9 am class, 30 pupils, leaves the lecture theatre", "pupil", 30),
+])
+def test_a_collective_with_its_members_counted_is_one_group(read, world, prompt, label, count):
+    r = read(world, prompt)
+    assert len(r.groups) == 1, r.groups
+    assert r.groups[0].label == label and r.groups[0].count.value == count
