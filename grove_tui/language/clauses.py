@@ -513,7 +513,8 @@ class Clauses:
         assert c.verb_index is not None
         k0 = s.skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
         k1 = s.skip(k0, {"behind", "after"})
-        k = s.skip(k1, lx.DETERMINERS)
+        her = k1 < s.n and s.low[k1] == "her" and (k1 + 1 >= s.n or s.w[k1 + 1].pos not in ("NOUN", "ADJ", "PROPN"))
+        k = k1 if her else s.skip(k1, lx.DETERMINERS)  # "follows her", not "follows her mother"
         if k + 1 < s.n and s.w[k].pos in ("NOUN", "ADJ", "PROPN") and self.people.is_person_noun(k + 1):
             k += 1  # "follow the charge nurse"
         if k < s.n and (self.people.is_person_noun(k) or s.low[k] in ("them", "him", "her", "others", "leader",

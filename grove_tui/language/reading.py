@@ -95,6 +95,7 @@ def _read(s: Sentence) -> PromptReading:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = _robot_follows_someone_said(robot, found, mentions, read)
+    read = _followers_of_someone_said(read)
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
 
@@ -122,4 +123,21 @@ def _robot_follows_someone_said(robot: RobotReading | None, found: Sequence[Robo
         if group is not None and (not singular or group.count.value == 1):
             return replace(robot, follows=group.who)
     return replace(robot, follows=read[0].who)
+
+
+def _followers_of_someone_said(read: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
+    """People who follow "them", "her", "the group before": the group said last before them (one
+    person for "him"/"her"), by its words; with no way of their own they go where it goes."""
+    out: list[GroupReading] = []
+    for g in read:
+        pronoun = (g.follows or "").lower()
+        if g.intent == "follow" and pronoun in _FOLLOWED_PRONOUNS and out:
+            singular = pronoun in ("him", "her")
+            leader = next((e for e in reversed(out) if not singular or e.count.value == 1), out[-1])
+            g = replace(g, follows=leader.who)
+            if not (g.start or g.destination or g.location or g.via):
+                g = replace(g, start=leader.start, destination=leader.destination, via=leader.via,
+                            location=leader.location)
+        out.append(g)
+    return tuple(out)
 

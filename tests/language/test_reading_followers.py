@@ -1,0 +1,39 @@
+"""People who follow someone said before them ("... and a porter follows her", "a coach follows them"):
+they follow that group, by its words, and with no way of their own they go where it goes."""
+
+from __future__ import annotations
+
+import pytest
+
+
+@pytest.mark.parametrize("world, prompt, leader, start, destination", [
+    ("hospital", "A nurse walks to the pharmacy and a porter follows her.", "A nurse", None, "pharmacy"),
+    ("sports_centre", "Three players walk from the changing rooms to squash court 2, and a coach follows them.",
+     "Three players", "changing_room_men", "squash_court_2"),
+    ("office", "Two managers walk from reception to the boardroom; an intern follows close behind.",
+     "Two managers", "reception", "boardroom"),
+    # "her" is one person, though a group was said after her
+    ("station", "A guard walks to the ticket hall, four commuters wait on platform 1, and a cleaner follows her.",
+     "A guard", None, "ticket_hall"),
+])
+def test_a_follower_follows_the_group_said_before_and_goes_its_way(read, world, prompt, leader, start,
+                                                                     destination):
+    reading = read(world, prompt)
+    follower = next(g for g in reading.groups if g.intent == "follow")
+    assert follower.follows == leader
+    assert (follower.start, follower.destination) == (start, destination)
+
+
+def test_a_follower_with_a_way_of_its_own_keeps_it(read):
+    reading = read("hospital", "A nurse walks to the pharmacy and a porter follows her to the lobby.")
+    porter = next(g for g in reading.groups if g.label == "porter")
+    assert porter.follows == "A nurse" and porter.destination == "entrance_lobby"
+
+
+@pytest.mark.parametrize("world, prompt", [
+    ("residential", "A child follows her mother to the kitchen."),
+    ("museum", "A boy follows his teacher to the auditorium."),
+])
+def test_her_before_a_noun_is_whose_not_whom(read, world, prompt):
+    reading = read(world, prompt)
+    assert reading.groups[0].intent == "follow" and reading.groups[0].follows.split()[-1] in ("mother", "teacher")
