@@ -63,3 +63,11 @@ def routine_emptying(s: Sentence, verb: int) -> bool:
     """Whether the subject of an emptying at `verb` is an event that ends as a matter of course: an
     event noun before it in its sentence ("The 9 am lecture, 120 first-years, empties out ...")."""
     return any(s.lemma(k) in ROUTINE_EVENTS and s.w[k].sentence == s.w[verb].sentence for k in range(verb))
+
+
+def evacuating(s: Sentence, verb: int, pair: tuple[str, str], urgent: bool) -> bool:
+    """Whether a phrasal verb of getting out at `verb` is an evacuation: "empty out" unless an event
+    ends as a matter of course with nothing urgent, "get out" only when urgent."""
+    if pair in lx.EVACUATION_PHRASES:
+        return urgent or not routine_emptying(s, verb)
+    return urgent
