@@ -17,6 +17,7 @@ from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
+from grove_tui.language.events import evacuating
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -488,7 +489,7 @@ class Clauses:
             c.evacuate = True
         for i in own:
             pair = (s.verb(i), s.low[i + 1] if i + 1 < s.n else "")
-            if pair in lx.EVACUATION_PHRASES or (pair in lx.URGENT_EXIT_PHRASES and self.urgent(own)):
+            if pair in lx.EVACUATION_PHRASES + lx.URGENT_EXIT_PHRASES and evacuating(s, i, pair, self.urgent(own)):
                 c.evacuate = True  # "empty out through the back door", "must get out via the east exit"
                 if c.intent is None or c.intent in lx.STATIONARY_INTENTS:
                     c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", pair[0], i, True, True

@@ -30,7 +30,8 @@ class Collectives:
         if head is None:
             # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
             if (found and q.value > 0 and after < s.n and (s.low[after] in lx.PLACE_PREPOSITIONS
-                                                           or verb_lemma(s.low[after]) in lx.INTENT_VERBS)
+                                                           or verb_lemma(s.low[after]) in lx.INTENT_VERBS
+                                                           or self._state_then_place(at, after))
                     and at > 0 and s.low[at - 1] not in ("at", "until", "till", "after", "before", "since")):
                 return Mention(at, after - 1, s.span(at, after - 1), found[-1].label, count_of(s, q, f"{at}:ellipsis"))
             whole = next((k for k in range(len(found) - 1, -1, -1) if found[k].relation is None), None)
@@ -48,6 +49,14 @@ class Collectives:
         if exclusive:
             count = replace(count, kind="exclusive")
         return Mention(at, head, s.span(at, head), self.people.label(head), count, exclusive=exclusive)
+
+    def _state_then_place(self, at: int, after: int) -> bool:
+        """A state after a number set off by a comma, then a place: "3 lads by the board, 1 asleep on
+        the benches", "two sitting on the wall": the number borrows the last group's noun."""
+        s = self.s
+        return (at > 0 and (s.is_punct(at - 1) or s.low[at - 1] == "and") and after + 1 < s.n
+                and (s.w[after].pos == "ADJ" or s.w[after].tag in ("VBG", "VBN"))
+                and s.low[after + 1] in lx.PLACE_PREPOSITIONS)
 
     def collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
         """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
@@ -166,3 +175,10 @@ class Collectives:
             return Count("exact", size, size, size, 1, size)
         value = parties * size
         return Count("structured", value, value, value, parties, size)
+
+
+def members_named(before: Mention) -> bool:
+    """Whether a mention is a collective said with no count of its own ("the school party", "the 2 pm
+    tour"), whose members a count set off by commas may name ("the school party, 25 children, ...")."""
+    return (before.collective is not None and before.label == before.collective and before.count is not None
+            and before.count.kind == "implied")

@@ -119,6 +119,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
     num = number_at(s, k)
     if num is not None and num[1] < s.n and low[num[1]] in lx.DETERMINERS and not approx:
         return None  # "At nine the porters come in": a time, then the phrase; a number counts no "the ..."
+    if num is not None and num[1] < s.n and low[num[1]] in ("am", "pm", "a.m", "p.m", "o'clock", "oclock") and not approx:
+        return None  # "the 9 am class", "the 2 pm tour": a time, no count
     if num is not None:
         return _number_quantifier(s, num, approx)
     if low[k] == "both" and k + 1 < s.n and not s.is_punct(k + 1):
@@ -209,6 +211,9 @@ def duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
         return value * unit, q.end + 1
     if low[k] in ("a", "an", "one") and k + 1 < s.n and lemma(low[k + 1]) in lx.DURATION_UNITS:
         return lx.DURATION_UNITS[lemma(low[k + 1])], k + 2
+    if low[k] in ("the", "all") and k + 1 < s.n and low[k + 1] in lx.DAY_PERIODS and k > 0 and \
+            s.verb(k - 1) == "spend":
+        return lx.DAY_PERIODS[low[k + 1]], k + 2  # "spends the afternoon in the bar"
     if low[k] in ("a", "an") and k + 2 < s.n and low[k + 1] in ("whole", "full", "entire", "good") and \
             lemma(low[k + 2]) in lx.DURATION_UNITS:
         return lx.DURATION_UNITS[lemma(low[k + 2])], k + 3  # "for a whole hour", "an entire minute"

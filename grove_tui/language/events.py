@@ -51,3 +51,23 @@ def _base(word: str) -> str:
         if word.endswith(ending) and len(word) >= len(ending) + 2:
             return word[: len(word) - len(ending)] + cut
     return word
+
+
+# Events whose end empties a room as a matter of course ("the 9 am lecture ... empties out of LT1", "the
+# matinee crowd spills out of the cinema"): the people leave, walking, unless something is urgent.
+ROUTINE_EVENTS = frozenset("lecture seminar tutorial class lesson matinee screening film show performance concert "
+                           "match game meeting service mass assembly talk session workshop".split())
+
+
+def routine_emptying(s: Sentence, verb: int) -> bool:
+    """Whether the subject of an emptying at `verb` is an event that ends as a matter of course: an
+    event noun before it in its sentence ("The 9 am lecture, 120 first-years, empties out ...")."""
+    return any(s.lemma(k) in ROUTINE_EVENTS and s.w[k].sentence == s.w[verb].sentence for k in range(verb))
+
+
+def evacuating(s: Sentence, verb: int, pair: tuple[str, str], urgent: bool) -> bool:
+    """Whether a phrasal verb of getting out at `verb` is an evacuation: "empty out" unless an event
+    ends as a matter of course with nothing urgent, "get out" only when urgent."""
+    if pair in lx.EVACUATION_PHRASES:
+        return urgent or not routine_emptying(s, verb)
+    return urgent

@@ -77,7 +77,9 @@ MODIFYING_COLLECTIVES = frozenset({"tour", "family", "class", "delegation"})
 KIN_NAMES = frozenset("mum mom mummy mommy mama dad daddy papa grandma grandpa granny gran nan nana grandad "
                       "granddad".split())
 # Plurals that, said of one family ("the parents", "her grandparents"), are a known few people.
-FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4)}
+FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (2, 4),
+                                             "newlywed": (2, 2), "honeymooner": (2, 2)}
+COUPLE_PLURALS = frozenset({"newlywed", "honeymooner"})  # "the newlyweds": a couple, together
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
 QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
@@ -103,6 +105,8 @@ NOT_USING_LINKS = frozenset({"by", "through", "thru", "via", "using", "use", "pa
                              "toward", "to", "at", "from", "near", "the", "a", "an", "that", "this", "their", "its"})
 
 DURATION_UNITS = {"second": 1.0, "sec": 1.0, "minute": 60.0, "min": 60.0, "hour": 3600.0, "hr": 3600.0, "moment": 10.0}
+# A part of the day as a stay ("spend the afternoon in the bar"), in seconds.
+DAY_PERIODS = {"morning": 3 * 3600.0, "afternoon": 3 * 3600.0, "evening": 3 * 3600.0, "day": 8 * 3600.0}
 
 # Abbreviations people type in a hurry, written out before the prompt is parsed (language/text.py).
 CHAT_WORDS: dict[str, str] = {
@@ -137,7 +141,7 @@ PERSON_NOUNS = frozenset(
     cashier clerk vendor shopkeeper salesperson pharmacist surgeon midwife janitor custodian
     grandad granddad gran granny nan nana grandpa ceo cto cfo boss backpacker hiker businessman businesswoman
     businessperson twin toddler schoolchild schoolboy schoolgirl inspector conductor driver mechanic builder
-    lecturer researcher scientist relative carer holidaymaker
+    lecturer researcher scientist relative carer holidaymaker newlywed honeymooner
     traveler sightseer photographer journalist reporter
  candidate applicant interviewee recruit trainee apprentice graduate newcomer employer staffer official
  crewmember crewman aircrew airman airwoman captain copilot steward purser handler
@@ -274,7 +278,7 @@ INTENT_VERBS: dict[str, str] = {}
 for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
-            "snooze",
+            "snooze spend",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
               "mop sweep vacuum hoover scrub tidy clean",
@@ -282,7 +286,8 @@ for _intent, _verbs in {
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
-            "file troop stream flood trickle surge toddle deliver drop bring fetch collect slip sneak nip pop board",
+            "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
+            "lug haul",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)

@@ -14,13 +14,13 @@ than that group (others_of; after a subset, the rest of its parent), "a few more
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.collectives import Collectives
+from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import cause_of_a_clearing, event_after_time_word
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
-from grove_tui.language.partitives import Partitives, whole_of_a_bare_part
+from grove_tui.language.partitives import Partitives, other_half, whole_of_a_bare_part
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
@@ -93,8 +93,9 @@ class Mentions:
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
                 assert count is not None
+                members = members_named(found[-1])  # "The school party, 25 children, ...": who the party is
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
-                if found[-1].label == "person":
+                if found[-1].label == "person" or members:
                     found[-1].label = m.label
                 i = m.last + 1
                 continue
@@ -160,9 +161,8 @@ class Mentions:
                 and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
-        """Whether m only says how many the mention before is, set off by commas, with no verb
-        between them: "everyone in the auditorium, roughly sixty people, evacuates", "the commuters
-        on platform 1, some forty of them, walk"."""
+        """Whether m only says how many the mention before is, set off by commas, with no verb between:
+        "everyone in the auditorium, roughly sixty people, evacuates", "the school party, 25 children, ..."."""
         s = self.s
         if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or m.count.kind not in ("exact", "approximate"):
             return False
@@ -172,7 +172,8 @@ class Mentions:
         if m.last + 1 >= s.n:
             return False
         if m.relation not in (None, f"subset_of:{index}") or \
-                m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person"):
+                m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person") \
+                and not members_named(before):
             return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full
@@ -433,8 +434,9 @@ class Mentions:
         """"the others", "the rest", "everyone else": other people than the group before."""
         s = self.s
         low = s.low
-        j = s.skip(at, {"the"})
-        if j < s.n and low[j] in ("others", "rest") and (j == at or low[at] == "the"):
+        half = other_half(s, at)  # "the other half": the rest of a group half of which was named
+        j = half if half is not None else s.skip(at, {"the"})
+        if j < s.n and (low[j] in ("others", "rest") or j == half) and (j == at or low[at] == "the"):
             last = j + 2 if j + 2 < s.n and low[j + 1] == "of" and low[j + 2] in ("them", "us", "the") else j
             last = (self.people.person_head(last + 1, counted=False) or last) if low[last] == "the" else last  # "of the class"
             parent = self.parent(found, plain=True)
@@ -582,8 +584,8 @@ class Mentions:
         relation = f"others_of:{parent}" if other and parent is not None else None
         if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[at] in _POSSESSIVES):
             low_, high_ = lx.FAMILY_PLURALS[noun]  # "the parents": the two of one family
-            return Mention(at, head, s.span(at, head), label,
-                           Count("implied", s.choose(low_, high_, f"{at}:family"), low_, high_))
+            return Mention(at, head, s.span(at, head), label, Count(
+                "implied", s.choose(low_, high_, f"{at}:family"), low_, high_), together=noun in lx.COUPLE_PLURALS)
         return Mention(at, head, s.span(at, head), label,
                        Count("vague", s.choose(low_, high_, f"{at}:bare"), low_, high_), relation=relation)
 

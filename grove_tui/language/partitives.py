@@ -175,3 +175,12 @@ def whole_of_a_bare_part(s: Sentence, found: list[Mention], part: int | None) ->
         return None
     m.relation = f"subset_of:{part - 1}"
     return part - 1
+
+
+def other_half(s: Sentence, at: int) -> int | None:
+    """The index of "half" in "the other half" / "the second half" at `at` (the rest of a group half
+    of which was named before: "half of the thirty students leave and the other half stay"), else None."""
+    if at + 2 < s.n and s.low[at] == "the" and s.low[at + 1] in ("other", "second") and s.low[at + 2] == "half" and \
+            (at + 3 == s.n or s.low[at + 3] != "of"):
+        return at + 2
+    return None

@@ -10,6 +10,7 @@ from grove_tui.language.parser import known_word
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.unlisted_people import CHILD_NAME_WORDS, names_a_place_with_next, unlisted_subject
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
@@ -57,7 +58,7 @@ class People:
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
-                self._reflexive_agent(i):
+                self._reflexive_agent(i) or unlisted_subject(s, i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
@@ -98,6 +99,7 @@ class People:
         # Not after a verb things do as well ("the sprinklers go off", "the heater stays on").
         return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
                 and verb not in lx.THING_VERBS and verb not in lx.INTENT_VERBS and verb not in ("be", "go", "start")
+                and verb_lemma(s.low[i]) not in lx.INTENT_VERBS  # "a cleaner wanders round": its verb
                 and not s.index.knows(lem)
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE
                 and lem not in lx.BUILDING_WORDS and lem not in lx.DURATION_UNITS and lem not in lx.HAZARD_NOUNS)
@@ -315,6 +317,8 @@ class People:
         nxt, word = s.w[k + 1], s.low[k + 1]
         if word in ("'s", "’s", "'") or nxt.tag == "POS":
             return True  # "the manager's office"
+        if names_a_place_with_next(s, k):
+            return True  # "by the host stand"
         if word in lx.LOCATION_ADVERBS:
             return False  # "the pupils downstairs", "the guests inside": where they are, no noun
         if self._verb_of_joined(k):
@@ -407,6 +411,9 @@ class People:
                       if self.titled_name(k) == head), None)
         if title is not None:
             return title  # "Dr Jones": a doctor
+        if head > 0 and s.low[head - 1] in CHILD_NAME_WORDS and s.w[head].tag == "NNP" and \
+                s.lemma(head) not in lx.PERSON_NOUNS:
+            return "child"  # "Little Tom": a child, by name
         noun = s.lemma(head)
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
             noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays

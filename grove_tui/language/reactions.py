@@ -57,6 +57,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
             return found
     if any(_refused(s, own, r) for r in robot_at):
         return "block"  # "won't let it pass", "won't budge for the robot"
+    if any(_kept_from_passing(s, r) for r in robot_at):
+        return "block"  # "stand side by side so the robot can't get through"
     for i in own:
         if s.low[i] in lx.ROBOT_FEELINGS:
             return lx.ROBOT_FEELINGS[s.low[i]]
@@ -92,6 +94,21 @@ def _refused(s: Sentence, own: Sequence[int], r: int) -> bool:
             if any(s.verb(k) in WAY_GIVING_VERBS or s.verb(k) == "budge" for k in before[n + 1:n + 4]):
                 return True
     return False
+
+
+_PASSING_VERBS = frozenset("get pass go move squeeze fit through past by".split())
+
+
+def _kept_from_passing(s: Sentence, r: int) -> bool:
+    """Whether people act so that the robot at r cannot pass: "so (that) the robot can't get
+    through", "so it cannot pass", "so that the robot is unable to get by"."""
+    k = r - 1 if r > 0 and s.low[r - 1] == "the" else r
+    k = k - 1 if k > 0 and s.low[k - 1] == "that" else k
+    if k < 1 or s.low[k - 1] not in ("so", "that"):
+        return False
+    after = s.low[r + 1:r + 5]
+    negated = any(w in NEGATIONS or w in ("cannot", "unable") for w in after)
+    return negated and any(s.verb(j) in _PASSING_VERBS for j in range(r + 1, min(s.n, r + 6)))
 
 
 # Reactions said with no object: "their grandparents shrink back", "a cleaner recoils".

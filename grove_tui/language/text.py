@@ -40,6 +40,11 @@ _ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 _TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(?![\w.])")
 _TIMES_BEFORE = re.compile(r"(?<![\w.])(?:(\d+)\s?[x×]|[x×](\d+))\s+(?=[A-Za-z]{3,})")
 
+# "a second-year", "two first-years": students of that year ("a first-year lecture" names no one).
+_YEAR_PERSON = re.compile(r"\b(first|second|third|fourth|final|1st|2nd|3rd|4th)-year(s?)\b(?![- ]?(?:students?|"
+                          r"undergrad\w*|pupils?|lectures?|class\w*|courses?|modules?|exams?|groups?|seminars?|"
+                          r"tutorials?|rooms?|labs?|halls?|projects?)\b)", re.IGNORECASE)
+
 
 def normalise(text: str) -> str:
     """The prompt as the reader parses it (see the module doc); "" when nothing readable is left."""
@@ -51,6 +56,7 @@ def normalise(text: str) -> str:
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
+    kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     return " ".join(kept.split())
 
 

@@ -1,0 +1,74 @@
+"""A person no list names, told by how the sentence names them: "an airline rep waits", "two
+roadies wander", "Little Tom runs". A noun phrase that opens with "a", "an", "the" or a number, or
+a capitalised name with no determiner, whose head is the subject of a verb of going, staying or
+doing what people do, and names no place, thing, animal, time or the robot, is people: a singular
+one is one person, a counted one that many."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import TYPE_CHECKING
+
+from grove_tui.language import lexicon as lx
+
+if TYPE_CHECKING:
+    from grove_tui.language.places import PlaceIndex
+    from grove_tui.language.sentence import Sentence
+
+_OPENERS = frozenset({"a", "an", "the"})
+# Verbs of going that things do as well ("the cake arrives", "the bus leaves"): with these a noun in
+# no list is people only when a name or counted.
+_THINGS_GO_TOO = frozenset("arrive leave come go pass move return run start stop open close fall drop roll enter "
+                           "exit travel cross get make reach board".split())
+# Words that make a name a child's ("Little Tom", "baby Ava").
+CHILD_NAME_WORDS = frozenset({"little", "baby", "young", "wee"})
+
+
+def _people_verb(s: Sentence, head: int) -> bool:
+    verb = s.verb(head)
+    return s.w[head].pos == "VERB" and verb not in lx.THING_VERBS and (
+        verb in lx.INTENT_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or verb in lx.PEOPLE_GOING_VERBS)
+
+
+def _a_thing(s: Sentence, lem: str) -> bool:
+    return (s.index.knows(lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
+            or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
+            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS)
+
+
+def unlisted_subject(s: Sentence, i: int) -> bool:
+    """Whether word i heads a subject phrase naming people no list has (see the module doc)."""
+    word = s.w[i]
+    if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i or \
+            not s.low[i].isalpha() or len(s.low[i]) < 3 or not _people_verb(s, word.head):
+        return False
+    if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
+        return False
+    first = i
+    while first > 0 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
+            s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ"):
+        first -= 1  # "an airline rep", "two burly roadies"
+    if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
+        return False  # "the robot hums ...": the robot's verb, tagged a noun
+    before = s.low[first - 1] if first > 0 else ""
+    if first > 0 and s.w[first - 1].pos == "NUM" and s.w[first - 1].head == i:
+        return True  # "two roadies wander", "3 roadies leave"
+    if before in _OPENERS:
+        return s.verb(word.head) not in _THINGS_GO_TOO if before != "the" else \
+            s.verb(word.head) in lx.HUMAN_SUBJECT_VERBS  # "the cake arrives": a thing
+    # A name: capitalised, with no determiner, the phrase opening the sentence or after a comma.
+    return (word.tag == "NNP" and s.w[i].text[:1].isupper() and s.w[i].text[1:].islower()
+            and (first == 0 or s.is_punct(first - 1) or s.low[first - 1] in ("and", "while", "as", "then")))
+
+
+@lru_cache(maxsize=32)
+def _name_pairs(index: PlaceIndex) -> frozenset[tuple[str, str]]:
+    return frozenset((a, b) for e in index.entries for p in e.phrases for a, b in zip(p, p[1:]))
+
+
+def names_a_place_with_next(s: Sentence, k: int) -> bool:
+    """Whether a singular person word and the base form after it are two words of one of the world's
+    names ("by the host stand", "at the concierge desk"): a place, since a singular person would say
+    "stands"."""
+    return (k + 1 < s.n and s.low[k] == s.lemma(k) and s.low[k + 1] == s.lemma(k + 1)
+            and (s.low[k], s.low[k + 1]) in _name_pairs(s.index))
