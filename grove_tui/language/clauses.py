@@ -148,7 +148,7 @@ class Clauses:
         prep = s.preposition(i)
         if prep is not None:
             name, width = prep
-            if name == "from" and self._after_transaction(i, scan.own):
+            if name == "from" and from_is_where_got(s, i, scan.own):  # not "takes towels from A to B"
                 name = "at"  # "buy tickets from the machines": where they stand, not where they start
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
             place = self._there(i, width, name) if i + width < s.n and s.low[i + width] == "there" else \
@@ -340,10 +340,6 @@ class Clauses:
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                     c.places.append(place)
         return False
-
-    def _after_transaction(self, i: int, own: Sequence[int]) -> bool:
-        """Whether a verb of getting something governs the preposition at i ("buy tickets from")."""
-        return from_is_where_got(self.s, i, own)  # not "takes towels from the laundry to room 108"
 
     def _verb_just_before(self, i: int) -> str | None:
         """The verb (or "beeline") right before i, past adverbs ("head straight for the exit")."""
