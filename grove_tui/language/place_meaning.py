@@ -13,7 +13,7 @@ from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
                                                 room_with, vehicle_stop)
-from grove_tui.language.places import MeaningMatch, PlaceMatch
+from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -171,13 +171,19 @@ class PlaceMeaning:
         # like the head ("head of department's office")
         both = rank_described(s.index, activity, kinds, accept=DESCRIBED_ACCEPT if kinds is None else
                               MEANING_ACTIVITY_CHOOSES) if meant is None or kinds is not None else None
-        theirs = {e.name for e in s.index.owned_by(self.owner)} if self.owner and meant is not None else set()
+        theirs = {e.name for e in s.index.entries if e.owners & owner_kinds(self.owner)} if self.owner else set()
         if both is not None and (meant is None or both[0].zone != meant[0].zone and both[0].score > meant[0].score
-                                 and meant[0].name not in theirs):  # "the room they sleep in": their own
+                                 and not (meant[0].name in theirs and self._alike(both[0].name, meant[0].name))):
+            # "the room they sleep in": their own bedroom, though the parents' is as near
             meant = both
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
         return (meant, end) if meant is not None else None
+
+    def _alike(self, one: str, other: str) -> bool:
+        """Whether two places are of one kind (two bedrooms, two desks)."""
+        a, b = self.s.index.entry(one), self.s.index.entry(other)
+        return a is not None and b is not None and bool(a.types & b.types)
 
     def where_clause(self, k: int) -> tuple[Decided, int] | None:
         """A place said only by what is done there, a clause with no head ("walk to where you get your
