@@ -41,7 +41,8 @@ def test_a_missing_room_after_into_is_still_refused(read, world, prompt):
 
 @pytest.mark.parametrize("world,prompt,start,destination", [
     ("hotel", "The robot takes clean sheets from the laundry to the spa.", "laundry", "spa"),
-    ("library", "The robot takes a box of books from the sorting room to the reading room.", "sorting_room", "reading_room"),
+    ("library", "The robot takes a box of books from the sorting room to the reading room.", "sorting_room",
+     "reading_room"),
     ("sports_centre", "The robot takes spare towels from the staff room to the pool.", "staff_room", "pool_hall"),
 ])
 def test_a_robot_carrying_a_thing_from_one_place_to_another(read, world, prompt, start, destination):
