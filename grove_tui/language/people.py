@@ -10,7 +10,8 @@ from grove_tui.language.parser import known_word
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
-from grove_tui.language.unlisted_people import CHILD_NAME_WORDS, names_a_place_with_next, unlisted_subject
+from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
+                                                unlisted_subject)
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
@@ -58,7 +59,7 @@ class People:
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
-                self._reflexive_agent(i) or unlisted_subject(s, i):
+                self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i):
             return True
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no

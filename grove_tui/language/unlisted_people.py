@@ -61,6 +61,22 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
             and (first == 0 or s.is_punct(first - 1) or s.low[first - 1] in ("and", "while", "as", "then")))
 
 
+# Verbs whose object is always people ("escorts a shoplifter"): pushing, carrying or wheeling take
+# things too ("wheels a trolley"), so they are not here.
+_PEOPLE_ONLY_OBJECTS = frozenset("escort accompany usher shepherd chaperone frogmarch guide lead".split())
+
+
+def unlisted_escorted(s: Sentence, i: int) -> bool:
+    """Whether word i heads the object of a verb that takes only people, said by a person ("a guard
+    escorts a shoplifter", "a steward ushers two latecomers"): people no list has."""
+    word = s.w[i]
+    if word.pos not in ("NOUN", "PROPN") or word.dep != "dobj" or word.head == i or not s.low[i].isalpha() or \
+            s.verb(word.head) not in _PEOPLE_ONLY_OBJECTS or _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
+        return False
+    before = s.low[i - 1] if i > 0 else ""
+    return before in _OPENERS or (i > 0 and s.w[i - 1].pos == "NUM") or before in ("his", "her", "their")
+
+
 @lru_cache(maxsize=32)
 def _name_pairs(index: PlaceIndex) -> frozenset[tuple[str, str]]:
     return frozenset((a, b) for e in index.entries for p in e.phrases for a, b in zip(p, p[1:]))

@@ -37,3 +37,21 @@ def test_a_follower_with_a_way_of_its_own_keeps_it(read):
 def test_her_before_a_noun_is_whose_not_whom(read, world, prompt):
     reading = read(world, prompt)
     assert reading.groups[0].intent == "follow" and reading.groups[0].follows.split()[-1] in ("mother", "teacher")
+
+
+@pytest.mark.parametrize("world, prompt, led", [
+    ("mall", "A guard escorts a shoplifter from the bookshop to the food court.", "shoplifter"),
+    ("hospital", "A nurse accompanies a bewildered pensioner from the entrance lobby to ward C.", "pensioner"),
+    ("library", "A librarian guides a freshman from the foyer to the reading room.", "freshman"),
+])
+def test_someone_escorted_whom_no_list_names_is_there_and_goes_along(read, world, prompt, led):
+    reading = read(world, prompt)
+    assert [g.count.value for g in reading.groups] == [1, 1]
+    escorted = reading.groups[1]
+    assert escorted.label == led and escorted.intent == "follow"
+    assert escorted.destination == reading.groups[0].destination
+
+
+def test_a_thing_wheeled_is_no_one(read):
+    reading = read("hospital", "A porter wheels a trolley from ward A to the pharmacy.")
+    assert [g.label for g in reading.groups] == ["porter"]
