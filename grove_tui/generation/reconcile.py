@@ -908,10 +908,9 @@ def places_kept_out(world: World, group: GroupReading) -> tuple[str, ...]:
 
 
 def _keep_out_claim(world: World, name: str, members: int) -> Claim:
-    place = world.find(name)
-    if isinstance(place, Zone):
+    if isinstance(world.find(name), Zone):
         return Claim("keep_out", name, f"plan round {name}", zone=name, place=name, share=1.0, needs_seconds=30.0)
-    point = place.interaction_point if isinstance(place, Entity) else place.position
+    point = _point_of(world, name) or (0.0, 0.0)  # a door or a thing: the reading named it, so it is found
     return Claim("keep_out", name, f"plan round {name}", place=name, point=(round(point[0], 3), round(point[1], 3)),
                  radius=1.0, share=1.0, needs_seconds=30.0)
 
