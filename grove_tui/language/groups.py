@@ -164,8 +164,9 @@ class Groups:
                         and s.low[x] not in ("and", "as", "well", "plus", "with")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
-            if mentions[k].partitive:
-                continue  # "two of the six developers follow it": the six do not; they stay
+            if mentions[k].partitive or s.w[mentions[k].last].dep in ("dobj", "dative") or \
+                    self.mentions.objects.led_by(mentions[k].first):
+                continue  # "two of the six developers follow it": the six do not; "follow their guide": an object
             if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
                     not any(s.low[x] in (";", ".", ":") for x in between):

@@ -55,3 +55,14 @@ def test_someone_escorted_whom_no_list_names_is_there_and_goes_along(read, world
 def test_a_thing_wheeled_is_no_one(read):
     reading = read("hospital", "A porter wheels a trolley from ward A to the pharmacy.")
     assert [g.label for g in reading.groups] == ["porter"]
+
+
+@pytest.mark.parametrize("world, prompt, taken_along", [
+    ("museum", "Ten tourists follow their guide from the entrance hall to the Egyptian gallery, and a child runs "
+               "up to the robot.", "guide"),
+    ("hospital", "Two nurses help a patient to ward C and a child runs up to the robot.", "patient"),
+    ("mall", "A guard escorts two shoplifters to the food court, and a toddler waves at the robot.", "shoplifter"),
+])
+def test_the_one_followed_or_taken_along_does_not_take_the_next_groups_verb(read, world, prompt, taken_along):
+    groups = {g.label: g for g in read(world, prompt).groups}
+    assert groups[taken_along].robot_interaction is None and groups[taken_along].intent != "robot"
