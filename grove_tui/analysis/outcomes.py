@@ -952,9 +952,10 @@ class _FollowPersonProbe(_Probe):
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         n = self.members
-        if self.moving_present.sum() > 0:
-            self.present, self.near = self.moving_present, self.moving_near
-        share = np.divide(self.near, self.present, out=np.zeros_like(self.near), where=self.present > 0)
+        # verdict is asked again and again during a live run: read the counts, never swap them
+        present, near = (self.moving_present, self.moving_near) if self.moving_present.sum() > 0 else \
+            (self.present, self.near)
+        share = np.divide(near, present, out=np.zeros_like(near), where=present > 0)
         ok = share >= 0.6
         k = int(ok.sum())
         text = f"{k}/{n} kept within {self.claim.distance or 3.0:g} m of them"

@@ -1004,13 +1004,8 @@ def _robot_seconds(robot: RobotSpec | None) -> float:
 
 
 def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[int | None, PlannedGroup]) -> PlannedGroup | None:
-    follows = {lemma(w) for w in words(r.follows or "")}
-    for i, other in enumerate(reading.groups):
-        if other is r:
-            continue
-        if follows & ({lemma(w) for w in words(other.who)} | {other.label, lemma(other.label)}):
-            return by_reading.get(i)
-    return None
+    index = _leader_index(reading, r)
+    return by_reading.get(index) if index is not None else None
 
 
 # ---- the robot's row --------------------------------------------------------------------------

@@ -344,3 +344,21 @@ def test_chunks_give_the_same_report_as_the_whole_run(clinic):
         checker.add(Trajectories(whole.t[sl], whole.ids, whole.people[sl], whole.people_vel[sl],
                                  whole.people_yaw[sl], whole.groups, None, None))
     assert checker.result([]).groups == once.groups
+
+
+def test_asking_for_the_live_report_midway_changes_nothing_of_the_final_one(clinic):
+    # the app asks for the checked report again and again while a run plays: a probe must only read
+    claim = Claim("follow_person", "follow the nurse", "walk with nurse", partners=(3,), distance=3.0)
+    planned = GroundingReport("test", (GroupGrounding("people", "people", (claim,), (1, 2)),))
+    nurse = line((1, 3), (9, 3))
+    whole = run(20, people(lambda t: nurse(t) - [1.0, 0.0], line((1, 1), (1, 1)), nurse))
+    sc = scenario(3, robot=False)
+    once = check_run(planned, sc, clinic, whole, [])
+    checker = OutcomeChecker(planned, sc, clinic)
+    checker.set_ids(whole.ids)
+    for k in range(0, whole.frames, 50):
+        sl = slice(k, k + 50)
+        checker.add(Trajectories(whole.t[sl], whole.ids, whole.people[sl], whole.people_vel[sl],
+                                 whole.people_yaw[sl], whole.groups, None, None))
+        checker.result([], partial=True)
+    assert checker.result([]).groups == once.groups
