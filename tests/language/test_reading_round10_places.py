@@ -1,5 +1,8 @@
 """Place classes of round 10, each with sentences of its own over at least two worlds (none from the
-understanding sets): one of a numbered series by its rank ("the second gate", "the last lift")."""
+understanding sets): one of a numbered series by its rank ("the second gate", "the last lift"); a kind
+of room the world lacks ("the music room", "the games room") is refused, not read as a loosely similar
+room; a room-worded phrase is no fixture that shares only a tag with it ("the music corner" is no piano);
+"the smoking area" is a part of the building, read or refused, never dropped as the whole scene."""
 
 from __future__ import annotations
 
@@ -46,3 +49,62 @@ def test_a_rank_inside_a_name_is_the_name(read, world, prompt, place):
 def test_a_rank_no_numbered_series_answers_is_not_forced(read, world, prompt, not_place):
     g = read(world, prompt).groups[0]
     assert place_of(g) != not_place or any(c.unsure for c in g.confidence)
+
+
+# ---- B. a kind of room the world lacks ------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("hotel", "A man walks to the music room.", "music room"),
+    ("library", "A man walks to the music room.", "music room"),
+    ("station", "Two kids go to the art room.", "art room"),
+    ("office", "A boy runs to the games room.", "games room"),
+    ("residential", "A kid runs to the games room.", "games room"),
+    ("mall", "Two kids go to the art room.", "art room"),
+    ("university", "A girl goes to the dance studio.", "dance studio"),
+])
+def test_a_kind_of_room_the_world_lacks_is_refused(read, world, prompt, refused):
+    r = read(world, prompt)
+    assert r.unknown_places == (refused,)
+    assert place_of(r.groups[0]) is None
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("sports_centre", "A boy runs to the games room.", "sports_hall"),  # its "games hall"
+    ("museum", "Two kids go to the art room.", "modern_art_gallery"),
+    ("library", "A student walks to the computer room.", "computer_lab"),
+])
+def test_a_kind_of_room_the_world_has_is_read(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert place_of(r.groups[0]) == place
+
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("hotel", "A man waits in the music corner.", "music corner"),  # the piano is only tagged "music"
+    ("hotel", "A man sits in the music space.", "music space"),
+])
+def test_a_room_word_is_no_fixture_sharing_only_a_tag(read, world, prompt, refused):
+    r = read(world, prompt)
+    assert r.unknown_places == (refused,)
+
+
+# ---- C. "the X area" is a part of the building -------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("hotel", "A man waits in the smoking area.", "smoking area"),
+    ("station", "A man waits in the smoking area.", "smoking area"),
+    ("hotel", "A man walks to the coffee area.", "coffee area"),
+])
+def test_an_area_the_world_lacks_is_refused_not_dropped(read, world, prompt, refused):
+    assert read(world, prompt).unknown_places == (refused,)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("office", "A candidate waits in the coffee area.", "kitchen"),
+    ("hotel", "Two porters wait in the luggage area.", "luggage_room"),
+    ("hotel", "Guests relax in the drinks area.", "bar"),
+])
+def test_an_area_the_world_has_is_read(read, world, prompt, place):
+    r = read(world, prompt)
+    assert r.unknown_places == ()
+    assert place_of(r.groups[0]) == place
