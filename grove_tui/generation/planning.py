@@ -482,7 +482,7 @@ class _StartPicker:
         passing by looks in."""
         doors = [d for d in self.world.doors_of(zone) if not d.exit] or self.world.doors_of(zone)
         if not doors:
-            return self.via_point(zone, tuple(path[0]), tuple(path[-1]))  # type: ignore[arg-type]
+            return self.via_point(zone, tuple(path[0]), tuple(path[-1]))
         samples, _ = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
         door = min(doors, key=lambda d: float(np.min(np.hypot(samples[:, 0] - d.position[0],
                                                                samples[:, 1] - d.position[1]))))
