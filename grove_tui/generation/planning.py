@@ -118,6 +118,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
         notes.extend(robot_notes)
         notes.extend(reactor_notes)
+        _at_a_pace_the_robot_keeps(post, robot_spec)
         for g in unseen:
             notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
     fields: dict[str, VelocityField] = {}
@@ -571,6 +572,27 @@ def _followed(reading: PromptReading | None, post: PostProcessed) -> tuple[int, 
         return ()  # whom it follows is no group of the sentence: nobody to follow (the report says so)
     best = best or post.groups[0]
     return tuple(best.member_ids)
+
+
+# A person the robot follows walks at most this share of the robot's top speed, so it can keep up (a
+# pedestrian's 1.0-1.3 m/s against a base's 0.8: it fell behind half the time).
+ROBOT_FOLLOWED_PACE = 0.9
+
+
+def _at_a_pace_the_robot_keeps(post: PostProcessed, robot: RobotSpec) -> None:
+    """The people a following robot follows walk at a pace it can keep, unless their sentence says they
+    hurry; their group lists it as added (the sentence did not ask it)."""
+    if robot.task != "follow" or not robot.follows:
+        return
+    pace = round(ROBOT_FOLLOWED_PACE * float(robot.max_vel), 3)
+    followed = set(robot.follows)
+    for g in post.groups:
+        members = [a for a in post.agents if a.id in followed and a.group_index == g.index]
+        if not members or g.speed_factor > 1.0 or all(a.max_vel <= pace for a in members):
+            continue
+        for a in members:
+            a.max_vel = min(a.max_vel, pace)
+        g.added.append(f"walks at {pace:g} m/s, a pace the robot can follow (its top speed is {robot.max_vel:g} m/s)")
 
 
 # ---- people who react to the robot start where it passes -----------------------------------------

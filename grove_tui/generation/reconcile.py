@@ -1021,9 +1021,16 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
     length = sum(math.dist(a, b) for a, b in zip(path, path[1:]))
     seconds = length / max(float(robot.max_vel), 0.1)
     task = getattr(robot, "task", "cross")
-    plan = (f"{task} from ({robot.start[0]:.1f}, {robot.start[1]:.1f}) to ({robot.goal[0]:.1f}, "
-            f"{robot.goal[1]:.1f}), {length:.0f} m" if task != "wait" else
-            f"wait at ({robot.start[0]:.1f}, {robot.start[1]:.1f})")
+    follows = tuple(getattr(robot, "follows", ()) or ())
+    if task == "wait":
+        plan = f"wait at ({robot.start[0]:.1f}, {robot.start[1]:.1f})"
+    elif task == "follow":
+        # its way is planned as it goes, behind the people it follows
+        plan = (f"follow agent{'s' if len(follows) != 1 else ''} {', '.join(map(str, follows)) or '(nobody)'} "
+                f"from ({robot.start[0]:.1f}, {robot.start[1]:.1f})")
+    else:
+        plan = (f"{task} from ({robot.start[0]:.1f}, {robot.start[1]:.1f}) to ({robot.goal[0]:.1f}, "
+                f"{robot.goal[1]:.1f}), {length:.0f} m")
     if asked is None:
         return RobotGrounding("pass", "", (), plan + " (the sentence asks nothing of it)")
     unsure = tuple(question("the robot", asked, c) for c in asked.confidence if c.unsure)

@@ -51,3 +51,19 @@ def test_a_room_the_route_passes_is_left_as_it_is(hospital):
                         "look at it", [DraftGroup("visitors", 3, "main_waiting_room", DraftNode("LookAtRobot"))])
     assert not any("passes through" in n for n in op.notes)
     assert np.isfinite(np.asarray(op.robot.path)).all()
+
+
+def test_the_person_the_robot_follows_walks_at_a_pace_it_can_keep(hospital):
+    prompt = "the robot follows a nurse from the pharmacy to radiology"
+    op = plan(hospital, prompt, [DraftGroup("nurse", 1, "pharmacy", DraftNode("GoTo", {"target": "radiology"}))])
+    robot = op.robot
+    assert robot.task == "follow" and robot.follows
+    followed = [a for a in op.agents if a.id in robot.follows]
+    assert followed and all(a.max_vel <= 0.9 * robot.max_vel + 1e-9 for a in followed)
+
+
+def test_a_hurrying_person_keeps_their_pace(hospital):
+    prompt = "the robot follows a nurse who hurries from the pharmacy to radiology"
+    op = plan(hospital, prompt, [DraftGroup("nurse", 1, "pharmacy", DraftNode("GoTo", {"target": "radiology"}))])
+    followed = [a for a in op.agents if a.id in op.robot.follows]
+    assert followed and all(a.max_vel > op.robot.max_vel for a in followed)
