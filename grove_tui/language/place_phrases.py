@@ -21,6 +21,7 @@ from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_ordinals import ordinal_place
+from grove_tui.language.place_of_zone import thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.place_owner import owner_at
@@ -56,8 +57,6 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
         if place is not None and place.score < 1.0:
             out.append(FieldConfidence(name, place.score, place.reason, place.alternatives))
     return out
-
-
 
 
 class PlacePhrases(EmptiedZones, PlaceMeaning):
@@ -134,6 +133,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas, k)
+        if (of_zone := None if said_before else thing_of_zone_said(s.index, low, lemmas, match, j, self._words)):
+            said_before, j = of_zone  # "the door of court 2", "the robing room table": that room's own
+            match = said_before[0]
         # "pitch-side", "by the water": the room around the thing
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)
@@ -243,8 +245,6 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             self.named.append(match.name)
             self.history.append(place)
         return place
-
-    # ---- by meaning, and by owner ----------------------------------------------------------------
 
     def _fixture_of_room(self, k: int, j: int) -> PlaceMatch | None:
         """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the

@@ -1,0 +1,26 @@
+"""Place classes of round 11, each with sentences of its own over at least two worlds (none from the
+understanding sets): a thing of a room said with the room ("the restaurant counter", "the door of the
+gym"); a place said and then excluded ("the stairs, not the lifts")."""
+
+from __future__ import annotations
+
+import pytest
+
+
+def place_of(group):
+    return group.destination or group.location or group.start
+
+
+# ---- A. a thing of a room said with the room -------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hotel", "A waiter stands at the restaurant counter.", "breakfast_buffet"),
+    ("hotel", "Two guests wait by the door of the bar.", "bar_door"),
+    ("hotel", "Three guests queue at the spa desk.", "spa_reception"),
+    ("sports_centre", "A coach waits by the door of the gym.", "gym_door"),
+    ("sports_centre", "A parent stands at the door of the first aid room.", "first_aid_door"),
+    ("station", "A guard waits by the door of the waiting room.", "waiting_room_door"),
+    ("library", "Four students sit round the sorting room table.", "sorting_table"),
+])
+def test_a_thing_of_a_room_said_with_the_room(read, world, prompt, place):
+    assert place_of(read(world, prompt).groups[0]) == place
