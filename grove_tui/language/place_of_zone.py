@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.places import PlaceIndex, PlaceMatch
-from grove_tui.language.tokens import phrase_lemmas
+from grove_tui.language.tokens import lemma, phrase_lemmas
 
 
 def _kind_words(index: PlaceIndex, name: str) -> frozenset[str]:
@@ -33,7 +33,9 @@ def thing_of_zone(index: PlaceIndex, head: str, zone: str) -> PlaceMatch | None:
         best = max(((w, own) for w, own, _, _ in doors), default=None)
         main = [(name, z) for w, own, name, z in doors if (w, own) == best]
         return PlaceMatch(main[0][0], "door", main[0][1], 1.0, True) if len(main) == 1 else None
-    found = [e for e in index.entries if e.kind == "entity" and e.zone == zone and head in _kind_words(index, e.name)]
+    things = [e for e in index.entries if e.kind == "entity" and e.zone == zone]
+    found = [e for e in things if any(head in kind.split() for kind in e.types)] or \
+        [e for e in things if head in _kind_words(index, e.name)]  # "the tables": the tables, not the "top table"
     if len(found) != 1:
         return None
     return PlaceMatch(found[0].name, "entity", found[0].zone, 1.0, True)
@@ -62,10 +64,11 @@ def zone_then_thing(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch 
 
 
 def thing_of_named_zone(index: PlaceIndex, low: Sequence[str], lemmas: Sequence[str], j: int,
-                        words: Callable[[int], tuple[list[str], int]]) -> tuple[PlaceMatch, int] | None:
+                        words: Callable[[int], tuple[list[str], int]],
+                        preps: Sequence[str] = ("of", "in", "inside")) -> tuple[PlaceMatch, int] | None:
     """"the door of court 2", "the tables in the café": a kind of thing, then "of" (or "in") and a room
     the world names whole; the thing of that room and the index after the room's words."""
-    if not lemmas or j + 1 >= len(low) or low[j] not in ("of", "in", "inside") or len(lemmas) > 2:
+    if not lemmas or j + 1 >= len(low) or low[j] not in preps or len(lemmas) > 2:
         return None
     k = j + 1
     while k < len(low) and low[k] in lx.DETERMINERS:
@@ -91,3 +94,16 @@ def thing_of_zone_said(index: PlaceIndex, low: Sequence[str], lemmas: Sequence[s
     thing, end = found
     reason = f"'{' '.join(low[i] for i in range(j - len(lemmas), end))}': the {lemmas[-1]} of {thing.zone}"
     return (thing, 1.0, reason, ()), end
+
+
+def ones_of_zone(index: PlaceIndex, low: Sequence[str], k: int, said: Sequence[str],
+                 words: Callable[[int], tuple[list[str], int]]) -> tuple[PlaceMatch, int] | None:
+    """"(the benches in the waiting area, not) the ones in the corridor": "one(s)" standing for the
+    thing said before (`said`, its words), of the room named after it; the thing and the index after."""
+    before = [w for w in said[:next((i for i, w in enumerate(said) if w in lx.PLACE_PREPOSITIONS), len(said))]]
+    if not before:
+        return None
+    head = lemma(before[-1])
+    if k + 1 >= len(low) or low[k] not in ("one", "ones") or low[k + 1] not in ("in", "on", "at", "by", "of", "near"):
+        return None
+    return thing_of_named_zone(index, low, (head,), k + 1, words, ("in", "on", "at", "by", "of", "near"))

@@ -4,8 +4,7 @@
 The phrase's words are matched by the world's one place index (language/places.py), by words first
 and by meaning when words do not decide; a zone the sentence named before decides between fixtures
 alike ("On platform 2 ... the bench"); a phrase in a place role that names nothing of the world is an
-unknown place, unless it names a time, a person, a manner or the building itself.
-"""
+unknown place, unless it names a time, a person, a manner or the building itself."""
 
 from __future__ import annotations
 
@@ -21,7 +20,7 @@ from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_ordinals import ordinal_place
-from grove_tui.language.place_of_zone import thing_of_zone_said
+from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.place_owner import owner_at
@@ -99,6 +98,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 self.named.append(owned[0].name)
             self.covered.add(k)
             return Place(prep, at, (low[k],), owned[0], k + 1, *owned[1:], written=low[at])
+        things = [p.words for p in self.history if p.match is not None and p.match.kind != "zone"]
+        if things and (ones := ones_of_zone(s.index, low, k, things[-1], self._words)):  # "not the ones in the bar"
+            return self._record(Place(prep, at, tuple(low[k:ones[1]]), ones[0], ones[1], written=low[at]), k, mentioned)
         j = k
         if tuple(low[j:j + 2]) in (("one", "of"), ("each", "of"), ("any", "of"), ("some", "of")):
             j += 2  # "sits on one of the concourse benches": the benches
@@ -134,8 +136,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas, k)
         if (of_zone := None if said_before else thing_of_zone_said(s.index, low, lemmas, match, j, self._words)):
-            said_before, j = of_zone  # "the door of court 2", "the robing room table": that room's own
-            match = said_before[0]
+            (said_before, j), match = of_zone, of_zone[0][0]  # "the door of court 2", "the robing room table"
         # "pitch-side", "by the water": the room around the thing
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)

@@ -24,3 +24,22 @@ def place_of(group):
 ])
 def test_a_thing_of_a_room_said_with_the_room(read, world, prompt, place):
     assert place_of(read(world, prompt).groups[0]) == place
+
+
+# ---- B. a place said, then another of its kind excluded ---------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place,avoided", [
+    ("station", "Make eight people wait on the benches in the waiting room, not the ones on the concourse.",
+     "waiting_benches", "concourse_benches"),
+    ("station", "Six people sit on the benches on the concourse, not the ones in the waiting room.",
+     "concourse_benches", "waiting_benches"),
+    ("hotel", "Four guests sit at the tables in the restaurant, not the ones in the bar.", "restaurant_tables", "bar_tables"),
+    ("hotel", "Two guests sit at the tables in the bar, not the ones in the ballroom.", "bar_tables", "banquet_tables"),
+    ("library", "Five students sit at the tables in the reading room, not the ones in the cafe.",
+     "reading_tables", "cafe_tables"),
+    ("library", "Three readers sit at the tables in the cafe, not the ones in the reading room.",
+     "cafe_tables", "reading_tables"),
+])
+def test_the_ones_excluded_are_not_chosen(read, world, prompt, place, avoided):
+    group = read(world, prompt).groups[0]
+    assert (place_of(group), group.avoid) == (place, (avoided,))
