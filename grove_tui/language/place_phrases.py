@@ -21,7 +21,7 @@ from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_kinds import absent_kind
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
-from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
+from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.place_owner import owner_at
 from grove_tui.language.places import PlaceMatch
@@ -341,8 +341,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if s.is_punct(j) or w in (">", "|") or (w in lx.CLAUSE_STARTERS and not joined) or \
                     w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
-            if phrase and not joined and self._time_starts(j):
-                break  # "the coat counter b4 closing", "the café till 5", "the lobby asap": a time, not the place
+            if phrase and not joined and (self._time_starts(j) or chat_ends_name(
+                    s, j, phrase, self.whole_name(phrase))):
+                break  # "the coat counter b4 closing", "the lobby asap", "in lobby waitin 4 taxis": no more place
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False
@@ -409,8 +410,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def _time_starts(self, j: int) -> bool:
         """Whether a time phrase or a chat word starts at j, after a place phrase: "b4 closing", "2nite",
         "asap", "til 5", "till closing" (but "the book till": a till the world has, with no time after it)."""
-        s = self.s
-        w = s.low[j]
+        s, w = self.s, self.s.low[j]
         if w in CHAT_TIME_WORDS or w in TIME_WORDS:
             return not s.index.knows(w)  # "b4" may be a room of a world ("room b4")
         after = s.low[j + 1] if j + 1 < s.n else ""

@@ -43,3 +43,18 @@ def test_a_thing_of_a_room_said_with_the_room(read, world, prompt, place):
 def test_the_ones_excluded_are_not_chosen(read, world, prompt, place, avoided):
     group = read(world, prompt).groups[0]
     assert (place_of(group), group.avoid) == (place, (avoided,))
+
+
+# ---- C. chat after a place's whole name ends the place ----------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hotel", "~20 ppl sat in lobby waitin 4 taxis", "lobby"),
+    ("hotel", "5 guests in bar waitin 4 dinner", "bar"),
+    ("hotel", "6 ppl in restaurant eatin", "restaurant"),
+    ("sports_centre", "10 ppl sat in cafe waitin 4 class", "cafe"),
+    ("sports_centre", "3 kids in foyer chattin", "foyer"),
+    ("library", "4 students in reading room waitin 4 the librarian", "reading_room"),
+])
+def test_chat_after_a_whole_name_is_no_part_of_the_place(read, world, prompt, place):
+    reading = read(world, prompt)
+    assert (reading.groups[0].location, reading.unknown_places) == (place, ())
