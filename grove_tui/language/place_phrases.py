@@ -18,7 +18,7 @@ from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
-from grove_tui.language.place_kinds import absent_kind
+from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
@@ -125,7 +125,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None  # "sit waiting to board": a verb, though "board" is a word of "departures board"
         lemmas = informal[2] if informal is not None else \
             tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
-        if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas):
+        if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas) and not absent_kind(s.index, lemmas):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
             return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
@@ -420,7 +420,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
         s = self.s
         w = s.low[j]
-        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)):
+        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)) and not kind_continues(phrase, w):
             return True
         if verb_lemma(w) in lx.INTENT_VERBS and s.index.knows(lemma(w)) and \
                 not w.endswith("ing") and self.whole_name(phrase) and \

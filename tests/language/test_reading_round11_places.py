@@ -58,3 +58,20 @@ def test_the_ones_excluded_are_not_chosen(read, world, prompt, place, avoided):
 def test_chat_after_a_whole_name_is_no_part_of_the_place(read, world, prompt, place):
     reading = read(world, prompt)
     assert (reading.groups[0].location, reading.unknown_places) == (place, ())
+
+
+# ---- D. a kind of room the world lacks, even when its words hold a person or a verb -----------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("station", "Two mums walk to the baby changing room.", "baby changing room"),
+    ("hospital", "A dad carries his son to the baby changing room.", "baby changing room"),
+    ("hotel", "Two mums walk to the baby changing room.", "baby changing room"),
+    ("sports_centre", "A mum takes her toddler to the baby change room.", "baby change room"),
+    ("library", "A man walks to the first aid room.", "first aid room"),
+])
+def test_a_kind_of_room_the_world_lacks_is_refused(read, world, prompt, refused):
+    assert read(world, prompt).unknown_places == (refused,)
+
+
+def test_a_kind_of_room_the_world_has_is_read(read):
+    assert read("sports_centre", "A man walks to the first aid room.").groups[0].destination == "first_aid_room"
