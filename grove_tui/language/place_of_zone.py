@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.places import PlaceIndex, PlaceMatch
+from grove_tui.language.places import MeaningMatch, PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import lemma, phrase_lemmas
 
 
@@ -107,3 +107,18 @@ def ones_of_zone(index: PlaceIndex, low: Sequence[str], k: int, said: Sequence[s
     if k + 1 >= len(low) or low[k] not in ("one", "ones") or low[k + 1] not in ("in", "on", "at", "by", "of", "near"):
         return None
     return thing_of_named_zone(index, low, (head,), k + 1, words, ("in", "on", "at", "by", "of", "near"))
+
+
+# How much less near a room's serving fixture may be than the room, for a purpose, and still be where it is done.
+SERVED_MARGIN = 0.06
+
+
+def served_at(index: PlaceIndex, ranked: Sequence[MeaningMatch], best: MeaningMatch) -> MeaningMatch:
+    """"to get a coffee": where a room nearest a purpose serves it (the café's coffee counter, tagged
+    for service or a queue), when that fixture is nearly as near as the room; else the room."""
+    if best.entry.kind != "zone":
+        return best
+    served = [r for r in ranked if r.entry.kind == "entity" and r.entry.zone == best.entry.name
+              and r.similarity >= best.similarity - SERVED_MARGIN
+              and {"service", "queue"} & (r.entry.tag_tokens | r.entry.tokens)]
+    return served[0] if len(served) == 1 else best

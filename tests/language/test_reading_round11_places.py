@@ -75,3 +75,16 @@ def test_a_kind_of_room_the_world_lacks_is_refused(read, world, prompt, refused)
 
 def test_a_kind_of_room_the_world_has_is_read(read):
     assert read("sports_centre", "A man walks to the first aid room.").groups[0].destination == "first_aid_room"
+
+
+# ---- E. a purpose is done at the fixture of the room that serves it ----------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("station", "A commuter leaves the platform to grab a coffee.", "cafe_counter"),
+    ("station", "Two travellers leave the waiting room to get a coffee.", "cafe_counter"),
+    ("library", "A student leaves the reading room to get a coffee.", "cafe_counter"),
+    ("library", "A librarian pops out of the stacks to get a coffee.", "cafe_counter"),
+    ("sports_centre", "After her swim a woman heads off to get a coffee.", "cafe_counter"),
+])
+def test_a_purpose_is_done_at_the_counter_that_serves_it(read, world, prompt, place):
+    assert read(world, prompt).groups[0].destination == place
