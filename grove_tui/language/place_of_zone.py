@@ -7,6 +7,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.place_landmark import by_landmark
 from grove_tui.language.places import MeaningMatch, PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import lemma, phrase_lemmas
 
@@ -87,7 +88,7 @@ def thing_of_zone_said(index: PlaceIndex, low: Sequence[str], lemmas: Sequence[s
     """The thing of a room the phrase names with the room, decided, and the index after the phrase."""
     found = thing_of_named_zone(index, low, lemmas, j, words)
     if found is None:
-        thing = zone_then_thing(index, lemmas, match)
+        thing = zone_then_thing(index, lemmas, match) or by_landmark(index, low, lemmas, j, words)
         found = (thing, j) if thing is not None else None
     if found is None:
         return None

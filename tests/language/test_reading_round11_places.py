@@ -88,3 +88,16 @@ def test_a_kind_of_room_the_world_has_is_read(read):
 ])
 def test_a_purpose_is_done_at_the_counter_that_serves_it(read, world, prompt, place):
     assert read(world, prompt).groups[0].destination == place
+
+
+# ---- F. a thing given by what it is next to -------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("station", "Two men sit on the bench next to the water fountain.", "waiting_benches"),
+    ("hotel", "A couple sit at the table next to the buffet.", "restaurant_tables"),
+    ("library", "A student sits at the table next to the reference shelves.", "reading_tables"),
+    ("library", "Two readers sit at the tables near the cafe counter.", "cafe_tables"),
+    ("sports_centre", "A man sits on the bench beside the pool.", "poolside_bench"),
+])
+def test_a_thing_by_what_it_is_next_to(read, world, prompt, place):
+    assert place_of(read(world, prompt).groups[0]) == place
