@@ -23,6 +23,7 @@ bank post_office launderette laundrette laundromat
 mortuary morgue maternity_ward maternity labour_ward
 music_room game_room art_room art_studio craft_room sewing_room playroom play_room dance_studio dance_hall
 recording_studio billiard_room snooker_room trophy_room darkroom screening_room
+baby_changing baby_change nappy_change parent_room first_aid lost_property
 """.split())
 # A name this near the kind's word in meaning is that kind under another word ("creche": "nursery").
 SYNONYM_NEAR = 0.75
@@ -54,5 +55,11 @@ def _named(index: PlaceIndex, word: str) -> bool:
 
 
 # Words of a kind's name that other places share ("play" of "play area", "room" of "prayer room").
-_SHARED = frozenset("room area play hot tub ward post office bar beauty steam labour skate park alley studio hall "
+_SHARED = frozenset("baby changing change first property parent room area play hot tub ward post office bar beauty steam labour skate park alley studio hall "
                     "screening".split())
+
+
+def kind_continues(phrase: Sequence[str], word: str) -> bool:
+    """Whether `word` goes on a kind of place the phrase began ("baby" then "changing"), though a
+    parser reads it as a verb."""
+    return bool(phrase) and f"{phrase[-1]}_{word}" in PLACE_KINDS

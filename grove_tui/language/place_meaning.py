@@ -13,6 +13,7 @@ from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
                                                 room_with, vehicle_stop)
+from grove_tui.language.place_of_zone import served_at
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -385,7 +386,8 @@ class PlaceMeaning:
                                                        by_use[0].entry.zone != by_name[0].entry.zone)):
             best, other = by_use
         elif by_name is not None:
-            best, other = by_name
+            best = served_at(self.s.index, ranked, by_name[0])  # "to get a coffee": the café's coffee counter
+            other = by_name[1] if best is by_name[0] else by_name[0]
         else:
             return purpose_by_use(self.s.index, purpose)  # "to buy aspirin and plasters": the pharmacy
         score = 0.65 if best.similarity >= 0.7 else 0.55

@@ -12,6 +12,10 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from grove_tui.language import lexicon as lx
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import lemma, verb_lemma
+
 # informal name -> what it means, in the words world names use
 INFORMAL_PLACES: dict[str, str] = {
     "hole in the wall": "cash machine", "loo": "toilet", "loos": "toilets", "bog": "toilet", "bogs": "toilets",
@@ -57,3 +61,25 @@ def informal_at(words: Sequence[str], j: int) -> tuple[int, str] | None:
                 end += 1  # "the gents'"
             return end, plain
     return None
+
+
+# Chat for "for" and "to" after a place ("in departure lounge waitin 4 boarding", "in lobby going 2 bar").
+_CHAT_LINKS = frozenset({"4", "2"})
+
+
+def chat_ends_name(s: Sentence, j: int, phrase: Sequence[str], whole: bool) -> bool:
+    """Whether word j ends a place phrase that is already a place's whole name (`whole`): a verb with
+    its g dropped or not ("waitin", "chatting"), or the chat "4"/"2" for "for"/"to" before a word
+    ("waitin 4 boarding"); never a word the world's names hold next to it ("pharmacy waiting chairs")."""
+    low = s.low
+    if not whole or not phrase or j >= s.n:
+        return False
+    w = low[j]
+    if w in _CHAT_LINKS:
+        return j + 1 < s.n and low[j + 1].isalpha() and not s.index.knows(w)
+    nxt = lemma(low[j + 1]) if j + 1 < s.n else ""
+    if (lemma(phrase[-1]), lemma(w)) in s.index.name_pairs or (lemma(w), nxt) in s.index.name_pairs:
+        return False
+    if w.endswith("in") and verb_lemma(w + "g") in lx.INTENT_VERBS:
+        return True  # chat drops the g: no parser knows "waitin"
+    return w.endswith("ing") and s.w[j].pos == "VERB" and verb_lemma(w) in lx.INTENT_VERBS

@@ -4,8 +4,7 @@
 The phrase's words are matched by the world's one place index (language/places.py), by words first
 and by meaning when words do not decide; a zone the sentence named before decides between fixtures
 alike ("On platform 2 ... the bench"); a phrase in a place role that names nothing of the world is an
-unknown place, unless it names a time, a person, a manner or the building itself.
-"""
+unknown place, unless it names a time, a person, a manner or the building itself."""
 
 from __future__ import annotations
 
@@ -19,9 +18,10 @@ from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
-from grove_tui.language.place_kinds import absent_kind
+from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
-from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
+from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
+from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.place_owner import owner_at
 from grove_tui.language.places import PlaceMatch
@@ -56,8 +56,6 @@ def place_confidences(roles: dict[str, str | None], via: Sequence[str],
         if place is not None and place.score < 1.0:
             out.append(FieldConfidence(name, place.score, place.reason, place.alternatives))
     return out
-
-
 
 
 class PlacePhrases(EmptiedZones, PlaceMeaning):
@@ -100,6 +98,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 self.named.append(owned[0].name)
             self.covered.add(k)
             return Place(prep, at, (low[k],), owned[0], k + 1, *owned[1:], written=low[at])
+        things = [p.words for p in self.history if p.match is not None and p.match.kind != "zone"]
+        if things and (ones := ones_of_zone(s.index, low, k, things[-1], self._words)):  # "not the ones in the bar"
+            return self._record(Place(prep, at, tuple(low[k:ones[1]]), ones[0], ones[1], written=low[at]), k, mentioned)
         j = k
         if tuple(low[j:j + 2]) in (("one", "of"), ("each", "of"), ("any", "of"), ("some", "of")):
             j += 2  # "sits on one of the concourse benches": the benches
@@ -124,7 +125,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None  # "sit waiting to board": a verb, though "board" is a word of "departures board"
         lemmas = informal[2] if informal is not None else \
             tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
-        if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas):
+        if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas) and not absent_kind(s.index, lemmas):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
             return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
@@ -134,6 +135,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
             match = door if door is not None and door.kind == "door" else None
         match = match or self._in_context(s.index.match(lemmas), lemmas, k)
+        if (of_zone := None if said_before else thing_of_zone_said(s.index, low, lemmas, match, j, self._words)):
+            (said_before, j), match = of_zone, of_zone[0][0]  # "the door of court 2", "the robing room table"
         # "pitch-side", "by the water": the room around the thing
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)
@@ -244,8 +247,6 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             self.history.append(place)
         return place
 
-    # ---- by meaning, and by owner ----------------------------------------------------------------
-
     def _fixture_of_room(self, k: int, j: int) -> PlaceMatch | None:
         """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the
         room's name, a possessive, then the fixture's words, read among that room's fixtures."""
@@ -340,8 +341,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if s.is_punct(j) or w in (">", "|") or (w in lx.CLAUSE_STARTERS and not joined) or \
                     w in ("who", "which", "that", "where", "for", "of", "with", "then", "to"):
                 break
-            if phrase and not joined and self._time_starts(j):
-                break  # "the coat counter b4 closing", "the café till 5", "the lobby asap": a time, not the place
+            if phrase and not joined and (self._time_starts(j) or chat_ends_name(
+                    s, j, phrase, self.whole_name(phrase))):
+                break  # "the coat counter b4 closing", "the lobby asap", "in lobby waitin 4 taxis": no more place
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False
@@ -408,8 +410,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def _time_starts(self, j: int) -> bool:
         """Whether a time phrase or a chat word starts at j, after a place phrase: "b4 closing", "2nite",
         "asap", "til 5", "till closing" (but "the book till": a till the world has, with no time after it)."""
-        s = self.s
-        w = s.low[j]
+        s, w = self.s, self.s.low[j]
         if w in CHAT_TIME_WORDS or w in TIME_WORDS:
             return not s.index.knows(w)  # "b4" may be a room of a world ("room b4")
         after = s.low[j + 1] if j + 1 < s.n else ""
@@ -419,7 +420,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
         s = self.s
         w = s.low[j]
-        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)):
+        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)) and not kind_continues(phrase, w):
             return True
         if verb_lemma(w) in lx.INTENT_VERBS and s.index.knows(lemma(w)) and \
                 not w.endswith("ing") and self.whole_name(phrase) and \

@@ -203,7 +203,7 @@ def test_an_existential_there_points_at_no_place(worlds):
     ("museum", "A painter crosses the great hall to sketch the whale.", "whale_skeleton"),
     ("office", "Two devs head off to grab a coffee.", "coffee_machine"),
     ("station", "A woman walks over to buy a newspaper.", "magazine_racks"),
-    ("airport", "Two pilots leave the lounge to grab a coffee.", "cafe"),
+    ("airport", "Two pilots leave the lounge to grab a coffee.", "cafe_counter"),  # the café's coffee counter
 ])
 def test_a_purpose_names_the_place_people_go_to(worlds, world, prompt, place):
     reading = read(worlds, world, prompt)
