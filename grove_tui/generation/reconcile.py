@@ -208,7 +208,7 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
                                    PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
-    return _at_the_followers_pace(out, reading)
+    return _behind_their_leader(_at_the_followers_pace(out, reading), world)
 
 
 LEADER_PACE = 0.85  # a guide with a group behind walks at the group's pace, slower than alone
@@ -229,6 +229,43 @@ def _at_the_followers_pace(groups: list[ReconciledGroup], reading: PromptReading
 
 
 FOLLOW_CLOSEST = 1.5  # metres a follower keeps behind the person it follows (FollowAgent's closest_dist)
+
+
+def _behind_their_leader(groups: list[ReconciledGroup], world: World) -> list[ReconciledGroup]:
+    """Followers whose places are their leader's way ("15 kids follow their teacher through the gallery")
+    follow for the leader's whole walk, end where the leader ends, then go on to any place of their own
+    after it: walking the leader's places again on their own sent them back to the gallery as the
+    teacher walked on to the exit."""
+    by_reading = {g.reading_index: g for g in groups if g.reading_index is not None}
+    out = []
+    for g in groups:
+        leader = by_reading.get(g.leader_index) if g.leader_index is not None else None
+        tree = g.tree
+        if leader is not None and tree.node == "Sequence" and any(c.node == "FollowAgent" for c in tree.children):
+            ways, own = _goto_targets(leader.tree), _goto_targets(tree)
+            # their own places after the leader's (the leader's way, then on to an exit), or none
+            onward = own[len(ways):] if own[:len(ways)] == ways else [] if set(own) <= set(ways) else None
+            if ways and own and onward is not None:
+                seconds = _walk_seconds(world, g.spawn, ways, LEADER_PACE)  # the leader starts among them
+                kept = tuple(replace(c, ports={**c.ports, "duration": seconds}) if c.node == "FollowAgent" else c
+                             for c in tree.children if c.node != "GoTo")
+                legs = tuple(DraftNode("GoTo", {"target": t}) for t in (ways[-1], *onward))
+                tree = replace(tree, children=kept + legs)
+                g = replace(g, tree=tree)
+        out.append(g)
+    return out
+
+
+def _goto_targets(tree: DraftNode) -> list[str]:
+    return [str(n.ports["target"]) for n in tree.walk() if n.node == "GoTo" and n.ports.get("target")]
+
+
+def _walk_seconds(world: World, spawn: str, targets: Sequence[str], pace: float) -> float:
+    """About how long a walk from a zone through the targets takes (paths some 1.4 times the straight
+    legs, at `pace` m/s, and time to set off), in [20, 900] s."""
+    points = [p for p in (_point_of(world, name) for name in (spawn, *targets)) if p is not None]
+    metres = 1.4 * sum(math.dist(a, b) for a, b in zip(points, points[1:]))
+    return float(min(max(round(metres / pace + 10.0), 20.0), 900.0))
 
 
 def _leader_index(reading: PromptReading, group: GroupReading) -> int | None:

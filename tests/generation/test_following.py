@@ -55,3 +55,23 @@ def test_a_hurrying_leader_keeps_its_pace(prompt):
     _, post, _ = generate(load_world("museum"), prompt)
     guide = next(g for g in post.groups if g.label == "guide")
     assert guide.speed_factor > 1.0
+
+
+@pytest.mark.parametrize("world_name, prompt, followers, leader", [
+    ("museum", "Fifteen pupils follow their teacher through the Egyptian gallery", "pupil", "teacher"),
+    ("hospital", "Four students follow the consultant through the main waiting room", "student", "consultant"),
+])
+def test_followers_of_a_walk_through_follow_it_all_and_end_where_their_leader_ends(world_name, prompt, followers,
+                                                                                    leader):
+    world = load_world(world_name)
+    _, post, op = generate(world, prompt)
+    by_label = {g.label: g for g in post.groups}
+    guide = op.trees[f"trees/agent_{by_label[leader].member_ids[0]}.xml"]
+    guide_goals = [n.get("target") for n in guide.nodes() if n.id == "GoTo"]
+    assert guide_goals
+    for member in by_label[followers].member_ids:
+        nodes = list(op.trees[f"trees/agent_{member}.xml"].nodes())
+        goals = [n.get("target") for n in nodes if n.id == "GoTo"]
+        assert goals[0] == guide_goals[-1] and not set(goals[1:]) & set(guide_goals)  # never back
+        follow = next(n for n in nodes if n.id == "FollowAgent")
+        assert float(follow.get("duration")) >= 30.0  # the leader's whole walk, from where they start
