@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
@@ -50,6 +51,8 @@ class People:
         if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
             return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
+        if acting_as_verb(s, i):
+            return False  # "..., then guides 5 passengers": a verb, no guide
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):

@@ -1,0 +1,69 @@
+"""Verbs that share the subject of the clause before them: a sequence of tasks for one doer ("the
+robot waits on platform 1, then leads passengers to the exit", "the robot patrols the hall and later
+escorts a visitor to the cafe"). The second verb has no subject of its own; it is the earlier clause's,
+so people after it are the robot's when the robot is that subject."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+if TYPE_CHECKING:
+    from grove_tui.language.people import People
+
+# What joins a second verb to the first one's subject: "..., then leads", "and then guides", "and later takes"
+_JOINERS = frozenset({",", "and", "then", "later", "afterwards", "next", "finally", "eventually", "also", "so"})
+_PRONOUNS = frozenset({"they", "he", "she", "we", "i", "you"})
+
+
+def shared_subject(s: Sentence, people: People, k: int) -> int | None:
+    """The subject an earlier verb shares with the verb right after the words ending at `k`, when
+    those words only join the two ("the robot waits on platform 1, then [leads]", "a guard waits
+    by the gate and later [takes]"): the nearest word before them in the sentence that names someone
+    (the robot, a person, a pronoun) and is followed by a verb; else None."""
+    if k < 0 or s.low[k] not in _JOINERS:
+        return None
+    j = k
+    while j >= 0 and s.low[j] in _JOINERS:
+        j -= 1
+    if j < 0 or s.w[j].sentence != s.w[k].sentence:
+        return None
+    for i in range(j, -1, -1):
+        if s.w[i].sentence != s.w[k].sentence or s.low[i] in (";", ":"):
+            return None
+        word = s.low[i]
+        if not (word in lx.ROBOT_WORDS or word in _PRONOUNS or word == "it" or people.is_person_noun(i)):
+            continue
+        after = i + 1
+        while after < j and s.w[after].pos == "ADV":
+            after += 1
+        if after <= j and s.is_verb(after):
+            return i
+    return None
+
+
+def shared_subject_is_robot(s: Sentence, people: People, k: int) -> bool:
+    """Whether the verb after the joining words ending at `k` is the robot's ("the robot waits on
+    platform 1, then leads passengers to the exit")."""
+    i = shared_subject(s, people, k)
+    return i is not None and (s.low[i] in lx.ROBOT_WORDS or (
+        s.low[i] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:i])))
+
+
+def shared_subject_is_person(s: Sentence, people: People, k: int) -> bool:
+    """Whether the verb after the joining words ending at `k` is a person's ("a guard waits on
+    platform 1, then leads four passengers to the café")."""
+    i = shared_subject(s, people, k)
+    return i is not None and s.low[i] not in lx.ROBOT_WORDS and s.low[i] != "it" and people.is_person_noun(i)
+
+
+def acting_as_verb(s: Sentence, i: int) -> bool:
+    """Whether a word that can name a person is the verb of a sequence instead ("..., then guides 5
+    passengers", "and later escorts a visitor"): a verb of leading, tagged as a verb, after joining
+    words and before its object."""
+    if i < 1 or i + 1 >= s.n or s.w[i].pos != "VERB" or verb_lemma(s.low[i]) not in lx.LEADING_VERBS:
+        return False
+    return s.low[i - 1] in _JOINERS and (s.w[i + 1].pos in ("DET", "NUM", "PRON") or s.low[i + 1] in lx.DETERMINERS)
