@@ -33,3 +33,37 @@ def test_a_leading_verb_after_then_names_nobody(read):
     r = read("library", "The robot waits in the foyer and then guides 3 students to the reading room")
     assert [g.label for g in r.groups] == ["student"]
     assert [g.label for g in read("library", "Two guides wait in the entrance foyer").groups] == ["guide"]
+
+
+@pytest.mark.parametrize("world, prompt, whole, part", [
+    ("library", "50 students study in the reading room, 20% of them go to the cafe", 50, 10),
+    ("library", "50 students study in the reading room; 10 percent of them walk to the toilets", 50, 5),
+    ("library", "30% of the 50 visitors in the foyer walk to the stacks", 50, 15),
+    ("hospital", "There are 40 patients in the main waiting room. 25 per cent of them queue at the pharmacy.", 40, 10),
+])
+def test_a_percentage_of_a_group_is_its_share(read, world, prompt, whole, part):
+    r = read(world, prompt)
+    assert [g.count.value for g in r.groups] == [whole, part]
+    assert r.groups[0].label == r.groups[1].label
+    assert r.groups[1].relation == "subset_of:0"
+
+
+@pytest.mark.parametrize("world, prompt, whole, part, destination", [
+    ("sports_centre", "Of the 40 people in the sports hall, half walk to the cafe", 40, 20, "cafe"),
+    ("sports_centre", "Of the 30 swimmers in the pool hall, two thirds leave for the cafe", 30, 20, "cafe"),
+    ("sports_centre", "Of the 20 players in the sports hall, 25% go to the cafe", 20, 5, "cafe"),
+    ("station", "40 passengers wait on platform 1; half go to the cafe and the rest go to the waiting room", 40, 20,
+     "cafe"),
+    ("university", "Twenty students arrive in the foyer; a quarter head to the canteen", 20, 5, "canteen"),
+])
+def test_a_share_said_alone_is_part_of_the_group_before(read, world, prompt, whole, part, destination):
+    r = read(world, prompt)
+    assert [g.count.value for g in r.groups][:2] == [whole, part]
+    assert r.groups[1].label == r.groups[0].label
+    assert r.groups[1].relation == "subset_of:0"
+    assert r.groups[1].destination == destination
+
+
+def test_half_an_hour_is_no_share(read):
+    r = read("sports_centre", "Half an hour later, ten people walk to the gym")
+    assert [(g.count.value, g.destination) for g in r.groups] == [(10, "gym")]
