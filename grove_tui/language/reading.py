@@ -29,6 +29,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from grove_tui.language.clauses import Clauses
+from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
@@ -95,7 +96,7 @@ def _read(s: Sentence) -> PromptReading:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = _robot_follows_someone_said(robot, found, mentions, read)
-    read = _followers_of_someone_said(read)
+    read = spread_over_each(s, _followers_of_someone_said(read))
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
 

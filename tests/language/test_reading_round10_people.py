@@ -67,3 +67,29 @@ def test_a_share_said_alone_is_part_of_the_group_before(read, world, prompt, who
 def test_half_an_hour_is_no_share(read):
     r = read("sports_centre", "Half an hour later, ten people walk to the gym")
     assert [(g.count.value, g.destination) for g in r.groups] == [(10, "gym")]
+
+
+@pytest.mark.parametrize("world, prompt, count, places", [
+    ("station", "two guards stand at each exit", 2,
+     {"main_entrance", "south_entrance", "platform_1_exit", "platform_2_exit"}),
+    ("station", "place one cleaner on each platform", 1, {"platform_1", "platform_2"}),
+    ("university", "two students wait in each of the seminar rooms", 2, {"seminar_room_1", "seminar_room_2"}),
+    ("university", "one technician in every lab", 1, {"computer_lab", "chemistry_lab", "robotics_lab"}),
+    ("airport", "Spawn 5 passengers at each gate", 5, {"gate_a1", "gate_a2", "gate_b1", "gate_b2"}),
+])
+def test_people_at_each_place_of_a_kind_are_a_group_at_every_one(read, world, prompt, count, places):
+    r = read(world, prompt)
+    assert len(r.groups) == len(places)
+    assert {g.location for g in r.groups} == places
+    assert {g.count.value for g in r.groups} == {count}
+
+
+def test_each_place_keeps_the_other_groups_and_their_relations(read):
+    r = read("station", "three passengers wait on every platform, while a guard patrols the concourse")
+    assert [(g.label, g.location) for g in r.groups] == [("passenger", "platform_1"), ("passenger", "platform_2"),
+                                                         ("guard", "concourse")]
+
+
+def test_every_table_in_one_room_stays_in_that_room(read):
+    r = read("hotel", "a couple sits at every table in the restaurant")
+    assert [g.location for g in r.groups] == ["restaurant_tables"]
