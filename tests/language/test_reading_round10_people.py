@@ -93,3 +93,13 @@ def test_each_place_keeps_the_other_groups_and_their_relations(read):
 def test_every_table_in_one_room_stays_in_that_room(read):
     r = read("hotel", "a couple sits at every table in the restaurant")
     assert [g.location for g in r.groups] == ["restaurant_tables"]
+
+
+@pytest.mark.parametrize("world, prompt, via", [
+    ("university", "The main corridor is crossed by ten cleaners", "main_corridor"),
+    ("hotel", "The lobby is crossed by six guests heading to the lifts", "lobby"),
+    ("hotel", "The guest corridor is traversed by two cleaners", "guest_corridor"),
+])
+def test_a_place_crossed_in_the_passive_is_a_way_through(read, world, prompt, via):
+    g = read(world, prompt).groups[0]
+    assert g.intent == "walk" and via in g.via and g.destination != via
