@@ -278,7 +278,7 @@ INTENT_VERBS: dict[str, str] = {}
 for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
-            "snooze spend",
+            "snooze spend scatter spread dot",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
               "mop sweep vacuum hoover scrub tidy clean",

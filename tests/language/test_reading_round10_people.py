@@ -103,3 +103,14 @@ def test_every_table_in_one_room_stays_in_that_room(read):
 def test_a_place_crossed_in_the_passive_is_a_way_through(read, world, prompt, via):
     g = read(world, prompt).groups[0]
     assert g.intent == "walk" and via in g.via and g.destination != via
+
+
+@pytest.mark.parametrize("world, prompt, location", [
+    ("library", "Generate 25 students scattered across the reading room", "reading_room"),
+    ("library", "30 students are spread out across the reading room", "reading_room"),
+    ("station", "40 commuters spread along platform 1", "platform_1"),
+    ("university", "Twelve students dotted around the canteen", "canteen"),
+])
+def test_people_scattered_across_a_place_stay_in_it(read, world, prompt, location):
+    g = read(world, prompt).groups[0]
+    assert (g.intent, g.location, g.via) == ("wait", location, ())
