@@ -114,3 +114,22 @@ def test_a_place_crossed_in_the_passive_is_a_way_through(read, world, prompt, vi
 def test_people_scattered_across_a_place_stay_in_it(read, world, prompt, location):
     g = read(world, prompt).groups[0]
     assert (g.intent, g.location, g.via) == ("wait", location, ())
+
+
+@pytest.mark.parametrize("world, prompt, places", [
+    ("hospital", "Ten nurses: four on ward A, six on ward B", ["ward_a", "ward_b"]),
+    ("hospital", "Place 5 guards, two at the main entrance and three at the pharmacy", ["main_entrance", "pharmacy"]),
+    ("library", "Add 3 librarians: one at the issue desk, two in the sorting room", ["issue_desk", "sorting_room"]),
+])
+def test_a_whole_split_by_counts_that_add_up_keeps_its_people(read, world, prompt, places):
+    from grove_tui.language.model import effective_counts
+
+    r = read(world, prompt)
+    assert [g.relation for g in r.groups[1:]] == ["subset_of:0"] * len(places)
+    assert [g.location for g in r.groups[1:]] == places
+    assert sum(effective_counts(r).values()) == r.groups[0].count.value
+
+
+def test_a_whole_with_its_own_place_is_no_split(read):
+    r = read("hospital", "Ten nurses walk to ward A, four walk to ward B and six go to ward C")
+    assert [g.relation for g in r.groups] == [None, None, None]
