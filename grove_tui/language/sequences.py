@@ -67,3 +67,22 @@ def acting_as_verb(s: Sentence, i: int) -> bool:
     if i < 1 or i + 1 >= s.n or s.w[i].pos != "VERB" or verb_lemma(s.low[i]) not in lx.LEADING_VERBS:
         return False
     return s.low[i - 1] in _JOINERS and (s.w[i + 1].pos in ("DET", "NUM", "PRON") or s.low[i + 1] in lx.DETERMINERS)
+
+
+def robot_sequel(s: Sentence, verb: int, end: int) -> tuple[int, int] | None:
+    """(first joining word, second verb) of a robot clause from `verb` to `end` that goes on to a
+    second task with people: "waits on platform 1, then leads passengers to the exit", "patrols the
+    hall and later follows a guard"; None when the clause has one verb, or its second one is no
+    verb of leading or following."""
+    for j in range(verb + 1, end):
+        if s.low[j] not in _JOINERS - {"also", "so"} or (j > verb + 1 and s.low[j - 1] in _JOINERS):
+            continue
+        v = j
+        while v < end and (s.low[v] in _JOINERS or s.w[v].pos == "ADV"):
+            v += 1
+        if v >= end or v == j or not (s.w[v].pos in ("VERB", "AUX") or s.w[v].tag.startswith("VB")):
+            continue
+        if verb_lemma(s.low[v]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS and \
+                any(s.low[j] == w for w in ("then", ",", "and")) and v + 1 < s.n and not s.is_punct(v + 1):
+            return j, v
+    return None

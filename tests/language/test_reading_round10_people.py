@@ -133,3 +133,23 @@ def test_a_whole_split_by_counts_that_add_up_keeps_its_people(read, world, promp
 def test_a_whole_with_its_own_place_is_no_split(read):
     r = read("hospital", "Ten nurses walk to ward A, four walk to ward B and six go to ward C")
     assert [g.relation for g in r.groups] == [None, None, None]
+
+
+@pytest.mark.parametrize("world, prompt, task, start, destination", [
+    ("station", "the robot waits on platform 1, then leads passengers to the exit", "cross", "platform_1", None),
+    ("station", "The robot patrols the concourse, then escorts an elderly man to platform 2", "cross", "concourse",
+     "platform_2"),
+    ("university", "The robot waits in the foyer, then follows two students to the canteen", "follow",
+     "entrance_foyer", "canteen"),
+    ("hotel", "The robot delivers towels to the spa and then guides three guests to the bar", "cross", "spa", "bar"),
+])
+def test_the_robots_second_task_with_people_is_its_task(read, world, prompt, task, start, destination):
+    robot = read(world, prompt).robot
+    assert robot is not None
+    assert (robot.task, robot.start) == (task, start)
+    assert destination is None or robot.destination == destination
+
+
+def test_the_robot_following_in_its_second_task_follows_them(read):
+    robot = read("university", "The robot goes to the post room, then follows a professor to the canteen").robot
+    assert robot is not None and robot.task == "follow" and robot.follows == "a professor"
