@@ -70,7 +70,9 @@ class Partitives:
         if head is None:
             return None
         label = self.people.label(head)
-        if low[at] in ("both", "each", "most"):
+        if low[at] == "most" and inner is not None and inner.kind == "exact" and fraction is not None:
+            pass  # "most of the 20 students": a part of the twenty, about three in four
+        elif low[at] in ("both", "each", "most"):
             # "both of the porters", "each of the nurses": the group itself, no part of it
             whole = self._whole(k, head, inner, label)
             count = Count("exact", 2, 2, 2) if low[at] == "both" else whole.count
@@ -93,6 +95,8 @@ class Partitives:
             # "five of the guards": more guards than the five
             more = count.value + 1
             whole.count = replace(whole.count, value=more, low=max(whole.count.low, more), high=max(whole.count.high, more))
+        if count is not None and low[at] == "most":
+            count = replace(count, kind="implied")
         return Mention(at, head, s.span(at, head), label, count, whole=whole)
 
     def fronted_whole(self, at: int) -> Mention | None:
@@ -155,6 +159,9 @@ class Partitives:
             end = at + len(words)
             if tuple(low[at:end]) == words and end < self.s.n and low[end] == "of":
                 return share, end
+        if low[at] == "half" and at + 2 < self.s.n and low[at + 1] in ("the", "those", "these", "their", "our") and \
+                (at == 0 or low[at - 1] not in ("a", "the", "other", "second", "first")):
+            return 0.5, at  # "half the 60 students": "of" left out
         return None, None
 
     def _noun_after(self, k: int) -> bool:

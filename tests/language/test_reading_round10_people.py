@@ -153,3 +153,16 @@ def test_the_robots_second_task_with_people_is_its_task(read, world, prompt, tas
 def test_the_robot_following_in_its_second_task_follows_them(read):
     robot = read("university", "The robot goes to the post room, then follows a professor to the canteen").robot
     assert robot is not None and robot.task == "follow" and robot.follows == "a professor"
+
+
+def test_half_the_n_people_without_of_is_half_of_them(read):
+    r = read("university", "Half the 60 students in lecture theatre 1 go to the canteen")
+    assert [(g.label, g.count.value, g.relation) for g in r.groups] == [("student", 60, None),
+                                                                        ("student", 30, "subset_of:0")]
+    assert r.groups[0].location == "lecture_theatre_1" and r.groups[1].destination == "canteen"
+
+
+def test_most_of_a_counted_group_leaves_the_rest(read):
+    r = read("university", "Most of the 20 students in the study area stay, the rest go to the canteen")
+    assert [g.count.value for g in r.groups] == [20, 15, 5]
+    assert r.groups[1].relation == "subset_of:0" and r.groups[2].destination == "canteen"
