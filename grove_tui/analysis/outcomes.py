@@ -21,6 +21,7 @@ from __future__ import annotations
 import json
 import math
 from abc import ABC, abstractmethod
+from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
 from pathlib import Path
@@ -72,6 +73,9 @@ STAY_SHARE = 0.9  # share of the time after arriving spent there
 WANDER_WALKED = 3.0  # metres walked inside the zone
 MOVE_WALKED = 3.0
 PATROL_RADIUS = 1.0
+ON_THE_WAY_SECONDS = 10.0  # the last stretch of a run over which people not there yet are seen walking on
+ON_THE_WAY_WALKED = 2.0  # metres walked over that stretch: still on the way, not stuck
+ON_THE_WAY_PATIENCE = 3.0  # a run this many times the estimated time, and they are still not there: ✗
 
 
 # ---- the public functions -------------------------------------------------------------------------
@@ -222,6 +226,15 @@ class OutcomeChecker:
                     and not probe.final:
                 status = UNCHECKED
                 evidence = f"{evidence}; needs about {claim.needs_seconds:.0f} s, the run has {self.t_end:.0f} s"
+            elif status == FAILS and not probe.final:
+                walking = probe.still_on_the_way()
+                patience = ON_THE_WAY_PATIENCE * (claim.needs_seconds or 30.0)
+                if walking and self.t_end + 1e-6 < patience:
+                    # the estimate was short (a longer detour, a crowd, the robot in the way), but they are
+                    # walking on: the run ended too soon to tell, which is not a ✗
+                    status = UNCHECKED
+                    evidence = f"{evidence}; {walking} still walking on when the run ended at {_when(self.t_end)}: " \
+                               f"run it longer"
             checked[key] = claim.checked(status, evidence)
         groups = []
         for gi, group in enumerate(self.planned.groups):
@@ -274,6 +287,11 @@ class _Probe(ABC):
 
     def add(self, f: _Frames) -> None:
         """Take in a chunk of frames (probes that judge only from events keep nothing)."""
+
+    def still_on_the_way(self) -> int:
+        """How many of those who have not done it yet were walking on at the end of the frames (0: none,
+        or a claim a longer run cannot change)."""
+        return 0
 
     @abstractmethod
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
@@ -354,14 +372,37 @@ class _StartProbe(_Probe):
         return status, f"{hits}/{n} started in {self.where()}"
 
 
+class _Trail:
+    """The members' positions over the last ON_THE_WAY_SECONDS: who is still walking on at the end."""
+
+    def __init__(self) -> None:
+        self.samples: deque[tuple[float, np.ndarray]] = deque()
+
+    def add(self, t: np.ndarray, pos: np.ndarray) -> None:
+        self.samples.extend((float(x), pos[k]) for k, x in enumerate(t))
+        cut = self.samples[-1][0] - ON_THE_WAY_SECONDS
+        while len(self.samples) > 2 and self.samples[1][0] <= cut:
+            self.samples.popleft()
+
+    def walking(self, pending: np.ndarray) -> int:
+        """How many of the `pending` members walked ON_THE_WAY_WALKED over the last stretch."""
+        if len(self.samples) < 2 or self.samples[-1][0] - self.samples[0][0] < 0.5 * ON_THE_WAY_SECONDS:
+            return 0
+        (_, then), (_, now) = self.samples[0], self.samples[-1]
+        walked = np.hypot(now[:, 0] - then[:, 0], now[:, 1] - then[:, 1])
+        return int((pending & np.isfinite(walked) & (walked >= ON_THE_WAY_WALKED)).sum())
+
+
 class _ReachProbe(_Probe):
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
         self.first = np.full(self.cols.size, np.inf)
+        self.trail = _Trail()
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size or not np.isinf(self.first).any():
             return
+        self.trail.add(f.t, f.pos[:, self.cols])
         inside = self.inside(f)
         hit = inside.any(axis=0)
         for j in np.flatnonzero(hit & np.isinf(self.first)):
@@ -376,6 +417,10 @@ class _ReachProbe(_Probe):
             text += f" by {_when(float(reached.max()))}" if k == n else f" (last at {_when(float(reached.max()))})"
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
+    def still_on_the_way(self) -> int:
+        walking = self.trail.walking(np.isinf(self.first))
+        return walking if int(np.isfinite(self.first).sum()) + walking >= _need(self.claim, self.members) else 0
+
 
 class _StayProbe(_Probe):
     """Arrive, then stay: the share of the time after arriving spent at the place."""
@@ -386,10 +431,14 @@ class _StayProbe(_Probe):
         self.arrived = np.full(m, np.inf)
         self.after = np.zeros(m)
         self.inside_after = np.zeros(m)
+        self.trail = _Trail()
+        self.held = 0  # how many stayed, as the last verdict found
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size:
             return
+        if np.isinf(self.arrived).any():
+            self.trail.add(f.t, f.pos[:, self.cols])
         inside = self.inside(f)
         present = np.isfinite(f.pos[:, self.cols, 0])
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
@@ -409,7 +458,7 @@ class _StayProbe(_Probe):
             # "waits for five minutes": the run must cover the wait (else a longer run is needed)
             long_enough = stayed_for + checker.sample_dt >= asked
             ok = ok & long_enough
-        k = int(ok.sum())
+        k = self.held = int(ok.sum())
         mean_share = float(share[arrived].mean()) if arrived.any() else 0.0
         text = f"{k}/{n} stayed at {self.where()}"
         if arrived.any():
@@ -420,6 +469,11 @@ class _StayProbe(_Probe):
         if asked and arrived.any() and (share[arrived] >= STAY_SHARE).all() and not ok.all():
             return UNCHECKED, text + f"; asked {asked:.0f} s"
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
+
+    def still_on_the_way(self) -> int:
+        # those who arrived and left are not waiting; only the ones not there yet can still make it hold
+        walking = self.trail.walking(np.isinf(self.arrived))
+        return walking if self.held + walking >= _need(self.claim, self.members) else 0
 
 
 class _WanderProbe(_Probe):

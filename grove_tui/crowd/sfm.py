@@ -1568,16 +1568,19 @@ def _integrate(i0, i1, dt, params,
             rdx = rx - px
             rdy = ry - py
             rd2 = rdx * rdx + rdy * rdy
+            if rd2 < (rr + rrad) * (rr + rrad):
+                # the bodies touch, whatever the person makes of the robot (a reaction that takes the
+                # robot out of the social forces, approaching it, fearing it): nobody walks through it
+                rd = math.sqrt(rd2)
+                overlap = rr + rrad - rd
+                if rd > _TINY:
+                    fx -= body * overlap * rdx / rd
+                    fy -= body * overlap * rdy / rd
             if ri_mode == ROBOT_AS_AGENT:
                 if rd2 <= cutoff2:
                     ax_, ay_ = _social_force(px, py, vx, vy, rx, ry, rvx, rvy, i, -1, params)
                     sfx += ax_
                     sfy += ay_
-                    rd = math.sqrt(rd2)
-                    overlap = rr + rrad - rd
-                    if overlap > 0.0 and rd > _TINY:
-                        fx -= body * overlap * rdx / rd
-                        fy -= body * overlap * rdy / rd
             elif ri_mode == ROBOT_AS_OBSTACLE:
                 if rd2 <= (robot_range + rr) * (robot_range + rr):
                     ax_, ay_ = _point_obstacle_force(px, py, rx, ry, rr, w_obs, robot_sigma, i)

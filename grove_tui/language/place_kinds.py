@@ -21,6 +21,8 @@ nursery creche crèche playground play_area soft_play
 barber barbershop hairdresser salon nail_bar beauty_salon tattoo
 bank post_office launderette laundrette laundromat
 mortuary morgue maternity_ward maternity labour_ward
+music_room game_room art_room art_studio craft_room sewing_room playroom play_room dance_studio dance_hall
+recording_studio billiard_room snooker_room trophy_room darkroom screening_room
 """.split())
 # A name this near the kind's word in meaning is that kind under another word ("creche": "nursery").
 SYNONYM_NEAR = 0.75
@@ -35,7 +37,7 @@ def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
         if kind not in PLACE_KINDS:
             continue
         parts = kind.split("_")
-        if all(index.knows(p) for p in parts) or any(index.knows(p) for p in parts if p not in _SHARED):
+        if all(_named(index, p) for p in parts) or any(_named(index, p) for p in parts if p not in _SHARED):
             return None  # the world has it ("bowling alley" where an alley is a bowling alley), or a synonym
         said = kind.replace("_", " ")
         near = index.by_meaning(said)
@@ -45,5 +47,12 @@ def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
     return None
 
 
+def _named(index: PlaceIndex, word: str) -> bool:
+    """Whether some place is called by this word or a synonym of it: a tag is what a place is for, not
+    what it is (a piano tagged "music" is no music room)."""
+    return index.knows(word) and (any(word in e.tokens for e in index.entries) or word not in index.vocabulary)
+
+
 # Words of a kind's name that other places share ("play" of "play area", "room" of "prayer room").
-_SHARED = frozenset("room area play hot tub ward post office bar beauty steam labour skate park alley".split())
+_SHARED = frozenset("room area play hot tub ward post office bar beauty steam labour skate park alley studio hall "
+                    "screening".split())

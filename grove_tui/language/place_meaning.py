@@ -99,6 +99,9 @@ class PlaceMeaning:
         index = self.s.index
         entry = index.entry(name)
         head = lemma(phrase[-1]) if phrase else ""
+        if entry is not None and entry.kind != "zone" and modifiers and head in lx.GENERIC_PLACE_HEADS and \
+                head not in entry.tokens and not set(modifiers) & entry.tokens:
+            return False  # "the tv room" is no boardroom screen, a "tv" only by a synonym: a room, not a fixture
         strange = [t for t in modifiers if entry is not None and (not index.names_word(entry, t) or (
             t not in entry.tokens and _synonym_of(t, head)))]  # "vending" is a synonym of the head "machine" only
         if not strange or entry is None:

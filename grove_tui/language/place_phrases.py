@@ -20,6 +20,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_kinds import absent_kind
+from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.place_owner import owner_at
@@ -127,7 +128,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
             return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
-        said_before = self._said_before(k, at, lemmas)  # "the same exit", "that door": the one said before
+        said_before = self._said_before(k, at, lemmas) or ordinal_place(s.index, lemmas)  # "that door", "the last lift"
         match = said_before[0] if said_before is not None else None
         if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door

@@ -301,6 +301,8 @@ class PlaceIndex:
         head = content[-1]
         if len(content) >= 2 and any(ch.isdigit() for ch in head) and content[-2] in NON_PLACES:
             return True  # "flight BA123", "train 42": a service and its number, not a place
+        if head == "area" and any(t not in self.building_words and t not in _WHOLE_AREA for t in content[:-1]):
+            return False  # "the smoking area", "the coffee area": a part of the building, not all of it
         return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words
                 or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
 
@@ -318,6 +320,10 @@ class PlaceIndex:
 
     def exits(self) -> list[str]:
         return [e.name for e in self.entries if e.kind == "door" and e.exit]
+
+
+# Words before "area" that still mean the whole scene ("the surrounding area", "the general area").
+_WHOLE_AREA = frozenset("surrounding general local immediate wide wider entire same public common this that".split())
 
 
 def _entry(kind: str, name: str, zone: str, type_: str, tags: Sequence[str], aliases: Sequence[str], *,

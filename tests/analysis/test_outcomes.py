@@ -100,6 +100,23 @@ def test_reach_counts_who_got_there_and_when(clinic):
     assert early.status == UNCHECKED and "needs about 40 s" in early.evidence
 
 
+def test_reach_is_not_a_cross_while_they_are_still_walking_on_to_it(clinic):
+    # the estimate said 10 s, but the way is long: at the run's end one is still walking towards it
+    claim = Claim("reach", "pharmacy", "walk to pharmacy", zone="pharmacy", needs_seconds=10.0)
+    slow = people(line((4, 1), (16, 9), speed=1.0), line((4, 1), (16, 9), speed=0.25))
+    outcome = check(clinic, claim, run(20, slow))
+    assert outcome.status == UNCHECKED and "1 still walking on when the run ended" in outcome.evidence
+    # a ✗ all the same when those walking on could not make it hold (a whole group asked, one stopped)
+    one_stopped = people(line((4, 1), (6, 2)), line((4, 1), (16, 9), speed=0.25))
+    assert check(clinic, claim, run(20, one_stopped)).status == FAILS
+    # one who stopped short is a ✗ however short the run
+    stopped = people(line((4, 1), (16, 9)), line((4, 1), (6, 2)))
+    assert check(clinic, claim, run(20, stopped)).status == FAILS
+    # walking on for three times the estimate and still not there: a ✗ (walking round in circles)
+    circling = people(line((4, 1), (16, 9)), lambda t: np.array([4.0 + math.cos(t / 2), 2.0 + math.sin(t / 2)]))
+    assert check(clinic, claim, run(31, circling)).status == FAILS
+
+
 def test_reach_of_a_point_is_within_its_radius(clinic):
     claim = Claim("reach", "reception_desk", "walk to reception_desk", point=(5.0, 5.4), radius=1.5)
     assert check(clinic, claim, run(10, people(line((2, 1), (5, 5)), line((8, 1), (5.5, 4.5))))).status == HOLDS
@@ -112,6 +129,14 @@ def test_stay_is_staying_after_arriving(clinic):
     assert check(clinic, claim, run(20, stayed)).status == HOLDS
     leaves = people(line((20, -3), (20, -3)), line((21, -3), (21, 10), speed=1.0))
     assert check(clinic, claim, run(20, leaves)).status == FAILS
+
+
+def test_stay_is_not_a_cross_while_they_are_still_walking_there(clinic):
+    claim = Claim("stay", "pharmacy", "wait at pharmacy", zone="pharmacy", needs_seconds=10.0)
+    slow = people(line((4, 1), (16, 9), speed=1.0), line((4, 1), (16, 9), speed=0.25))
+    outcome = check(clinic, claim, run(20, slow))
+    assert outcome.status == UNCHECKED and "still walking on" in outcome.evidence
+    assert check(clinic, claim, run(20, people(line((4, 1), (16, 9)), line((4, 1), (5, 1))))).status == FAILS
 
 
 def test_an_asked_wait_needs_a_run_as_long_as_the_wait(clinic):

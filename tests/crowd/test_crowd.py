@@ -418,8 +418,8 @@ def test_robot_follows_its_path_then_obeys_commands():
 
 
 def test_pedestrians_perceive_the_robot_per_behaviour():
-    def closest_approach(interaction):
-        crowd = Crowd()
+    def closest_approach(interaction, params=None):
+        crowd = Crowd(params=params)
         crowd.set_robot((0.0, 0.0), radius=0.3, max_speed=0.0)
         i = crowd.add_agent((-6.0, 0.05), goals=[(6.0, 0.05)], robot_interaction=interaction)
         best = math.inf
@@ -431,7 +431,11 @@ def test_pedestrians_perceive_the_robot_per_behaviour():
     as_agent, reached = closest_approach(ROBOT_AS_AGENT)
     assert as_agent > 0.5 and reached
     ignored, reached = closest_approach(ROBOT_IGNORED)
-    assert ignored < 0.1 and reached  # walks straight through it, as HuNavSim's reacting agents do
+    # no social force from it (HuNavSim's reacting agents), but bodies touch: pressed against it, not
+    # through it (the radii add up to 0.55 m), and round it to the goal
+    assert 0.3 < ignored < as_agent and reached
+    hunav, reached = closest_approach(ROBOT_IGNORED, SFMParams.named("lightsfm"))
+    assert hunav < 0.1 and reached  # HuNavSim's forces exactly: straight through it
     feared, _ = closest_approach(ROBOT_FEARED)
     assert feared > as_agent
 
