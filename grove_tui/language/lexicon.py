@@ -118,6 +118,7 @@ CHAT_WORDS: dict[str, str] = {
     "dev": "developer", "devs": "developers", "exec": "executive", "execs": "executives", "prof": "professor",
     "profs": "professors", "techs": "technicians", "reps": "representatives", "admins": "administrators",
     "grads": "graduates", "mgr": "manager", "mgrs": "managers", "hubby": "husband", "kiddos": "kids",
+    "peds": "pedestrians", "ped": "pedestrian", "npcs": "people", "npc": "person",
 }
 
 # ---- people ---------------------------------------------------------------------------------
@@ -265,7 +266,7 @@ CLAUSE_STARTERS = frozenset("and while whilst whereas but as meanwhile then when
                             "except with".split())
 # Imperative verbs that introduce the people of a scenario ("Simulate ten patients ...").
 SCENE_VERBS = frozenset("simulate show create generate spawn add have make let put place model imagine picture "
-                        "depict want need include populate start send position".split())
+                        "depict want need include populate start send position inject insert deploy instantiate".split())
 # Words that can stand between a count and its person noun ("ten tired old patients").
 NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting new local senior junior impatient "
                          "anxious worried excited angry calm happy curious nervous hungry sick injured "
@@ -308,6 +309,8 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
+    **{(verb, *how): "wander" for verb in ("walk", "move", "go", "stroll", "random") for how in (  # no aim
+        ("randomly",), ("aimlessly",), ("at", "random"), ("walk",), ("around", "randomly"), ("about", "randomly"))},
 }
 # Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
 # the subject walks the route, the object follows.

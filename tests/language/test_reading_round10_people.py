@@ -166,3 +166,26 @@ def test_most_of_a_counted_group_leaves_the_rest(read):
     r = read("university", "Most of the 20 students in the study area stay, the rest go to the canteen")
     assert [g.count.value for g in r.groups] == [20, 15, 5]
     assert r.groups[1].relation == "subset_of:0" and r.groups[2].destination == "canteen"
+
+
+@pytest.mark.parametrize("world, prompt, count, start, destination", [
+    ("airport", "12 agents: gate A1 -> security", 12, "gate_a1", "security_checkpoint"),
+    ("station", "Spawn 10 ppl (ticket hall -> platform 2)", 10, "ticket_hall", "platform_2"),
+    ("station", "10 people: platform 1 → main entrance", 10, "platform_1", "main_entrance"),
+    ("airport", "12 agents -> security", 12, None, "security_checkpoint"),
+])
+def test_a_route_written_with_an_arrow(read, world, prompt, count, start, destination):
+    g = read(world, prompt).groups[0]
+    assert (g.count.value, g.intent, g.start, g.destination) == (count, "walk", start, destination)
+
+
+@pytest.mark.parametrize("world, prompt, label, count, intent, location", [
+    ("airport", "n=20 pedestrians in the concourse, random walk", "person", 20, "wander", "concourse"),
+    ("airport", "10 people walk randomly in the concourse", "person", 10, "wander", "concourse"),
+    ("hotel", "8 guests moving aimlessly around the lobby", "guest", 8, "wander", "lobby"),
+    ("airport", "Inject 6 tourists at the arrivals hall", "tourist", 6, "wait", "arrivals_hall"),
+    ("library", "Deploy 4 peds in the lending hall", "person", 4, "wait", "lending_hall"),
+])
+def test_researchers_shorthand_for_counts_people_and_random_walks(read, world, prompt, label, count, intent, location):
+    g = read(world, prompt).groups[0]
+    assert (g.label, g.count.value, g.intent, g.location) == (label, count, intent, location)
