@@ -60,7 +60,7 @@ def _copies(s: Sentence, g: GroupReading, phrases: Sequence[tuple[str, tuple[str
     for said, words, inside in phrases:
         if said not in text:
             continue
-        for field in ("location", "destination"):
+        for field in ("location", "start", "destination"):
             chosen = getattr(g, field)
             places = _places_alike(s, words, chosen, inside)
             if len(places) > 1:

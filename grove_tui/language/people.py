@@ -434,3 +434,12 @@ class People:
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
         return bool(content) and (content[-1] in lx.PERSON_NOUNS or content[-1] in lx.PRONOUN_PEOPLE) and \
             not self.s.index.knows(content[-1])
+
+
+def whole_zone_pronoun(s: Sentence, at: int) -> bool:
+    """Whether the word at `at` names everyone somewhere, with no kind of people: "everyone",
+    "anyone waiting on platform 1", "whoever is in the café", "those who are in the lobby"."""
+    low = s.low
+    if low[at] in ("everyone", "everybody", "anyone", "anybody", "whoever"):
+        return not (at > 0 and low[at - 1] in ("not", "n't", "hardly", "barely"))
+    return low[at] == "those" and at + 1 < s.n and low[at + 1] == "who"

@@ -189,3 +189,20 @@ def test_a_route_written_with_an_arrow(read, world, prompt, count, start, destin
 def test_researchers_shorthand_for_counts_people_and_random_walks(read, world, prompt, label, count, intent, location):
     g = read(world, prompt).groups[0]
     assert (g.label, g.count.value, g.intent, g.location) == (label, count, intent, location)
+
+
+def test_people_from_each_place_set_off_from_every_one(read):
+    r = read("airport", "Spawn 3 passengers at every gate walking to the concourse")
+    assert {g.start for g in r.groups} == {"gate_a1", "gate_a2", "gate_b1", "gate_b2"}
+    assert {g.destination for g in r.groups} == {"concourse"}
+
+
+@pytest.mark.parametrize("world, prompt, start", [
+    ("station", "Anyone waiting on platform 1 moves to platform 2", "platform_1"),
+    ("station", "Those who are waiting in the waiting room walk to platform 1", "waiting_room"),
+    ("station", "Whoever is in the cafe leaves", "cafe"),
+    ("university", "Each student in the study area walks to the canteen", "study_area"),
+])
+def test_anyone_whoever_and_those_who_are_everyone_there(read, world, prompt, start):
+    g = read(world, prompt).groups[0]
+    assert g.count.kind == "whole_zone" and g.start == start
