@@ -161,7 +161,7 @@ class Groups:
             between = range(mentions[k].last + 1, mentions[k + 1].first)
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
             leftover = [x for x in between if x not in in_places and not s.is_punct(x)
-                        and s.low[x] not in ("and", "as", "well", "plus", "with")]
+                        and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
             if mentions[k].partitive or s.w[mentions[k].last].dep in ("dobj", "dative") or \

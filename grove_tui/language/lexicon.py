@@ -282,7 +282,7 @@ for _intent, _verbs in {
             "snooze spend scatter spread dot",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy clean",
+              "mop sweep vacuum hoover scrub tidy clean tour",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "

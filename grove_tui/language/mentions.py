@@ -21,7 +21,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
 from grove_tui.language.partitives import Partitives, other_half, whole_of_a_bare_part
-from grove_tui.language.people import People, whole_zone_pronoun
+from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -203,7 +203,7 @@ class Mentions:
             return False  # "After the night shift, ...", "at the end of the class": a time, no people
         if prev == "with" and self._conversation_partner(p, at):
             return False
-        if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my"):
+        if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my") and not companions(s, self.people, p):
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True

@@ -206,3 +206,32 @@ def test_people_from_each_place_set_off_from_every_one(read):
 def test_anyone_whoever_and_those_who_are_everyone_there(read, world, prompt, start):
     g = read(world, prompt).groups[0]
     assert g.count.kind == "whole_zone" and g.start == start
+
+
+@pytest.mark.parametrize("world, prompt, groups", [
+    ("mall", "A mother with her two kids walks to the toy store", [("mother", 1), ("kid", 2)]),
+    ("mall", "An old man with his daughter walks slowly to the pharmacy", [("man", 1), ("daughter", 1)]),
+    ("mall", "Two dads with their kids queue at the toy store", [("dad", 2), ("kid", None)]),
+])
+def test_one_persons_companions_are_people_of_their_own_doing_the_same(read, world, prompt, groups):
+    r = read(world, prompt)
+    assert [(g.label, g.count.value if n is not None else None) for g, (_, n) in zip(r.groups, groups)] == groups
+    assert len({(g.intent, g.destination, g.location) for g in r.groups}) == 1
+
+
+def test_a_familys_own_children_are_no_group_of_their_own(read):
+    assert [g.label for g in read("mall", "Families wait at the cinema lobby with their children").groups] == ["family"]
+
+
+def test_people_touring_a_gallery_wander_it(read):
+    g = read("museum", "A school group of 25 pupils tours the dinosaur gallery").groups[0]
+    assert (g.intent, g.location) == ("wander", "dinosaur_gallery")
+
+
+def test_a_whole_said_with_no_number_is_as_many_as_its_parts(read):
+    from grove_tui.language.model import effective_counts
+
+    r = read("mall", "Shoppers: 20 in the food court, 10 in the supermarket")
+    assert r.groups[0].count.value == 30
+    assert [g.relation for g in r.groups[1:]] == ["subset_of:0", "subset_of:0"]
+    assert sum(effective_counts(r).values()) == 30
