@@ -161,7 +161,7 @@ class Groups:
             between = range(mentions[k].last + 1, mentions[k + 1].first)
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
             leftover = [x for x in between if x not in in_places and not s.is_punct(x)
-                        and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my")]
+                        and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my", "each")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
             if mentions[k].partitive or s.w[mentions[k].last].dep in ("dobj", "dative") or \
@@ -201,7 +201,7 @@ class Groups:
                     not (out or sent_to) or p.prep in ("from", "out", "obj:start", "at", "in", "on"))]
                 clauses[k - 1] = replace(clauses[k - 1], places=clauses[k - 1].places + kept)
         for k, m in enumerate(mentions):
-            if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last == m.first - 2:
+            if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last >= m.first - 4:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are
                 places = clauses[k - 1].places + clauses[k].places

@@ -29,6 +29,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from grove_tui.language.clauses import Clauses
+from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
 from grove_tui.language.mention import Mention
@@ -79,6 +80,7 @@ def _read(s: Sentence) -> PromptReading:
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
     mentions = finder.find()
+    taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
     robot_tokens = {i for rc in found for i in rc.tokens}

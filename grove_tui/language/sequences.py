@@ -86,3 +86,13 @@ def robot_sequel(s: Sentence, verb: int, end: int) -> tuple[int, int] | None:
                 any(s.low[j] == w for w in ("then", ",", "and")) and v + 1 < s.n and not s.is_punct(v + 1):
             return j, v
     return None
+
+
+def each_leader(s: Sentence, people: People, k: int) -> int | None:
+    """The person word of the people who each take someone along, when "each" at `k` stands between
+    them and the verb or "with": "four nurses each escort a patient", "two porters, each pushing a
+    patient", "three guides, each with a group of ten visitors"; else None."""
+    if k < 1 or s.low[k] != "each":
+        return None
+    j = k - 1 if s.low[k - 1] != "," else k - 2
+    return j if j >= 0 and people.is_person_noun(j) and s.lemma(j) != s.low[j] else None

@@ -235,3 +235,19 @@ def test_a_whole_said_with_no_number_is_as_many_as_its_parts(read):
     assert r.groups[0].count.value == 30
     assert [g.relation for g in r.groups[1:]] == ["subset_of:0", "subset_of:0"]
     assert sum(effective_counts(r).values()) == 30
+
+
+@pytest.mark.parametrize("world, prompt, leaders, taken, destination", [
+    ("museum", "Three guides, each with a group of ten visitors, walk to the great hall", ("guide", 3),
+     ("visitor", 30), "great_hall"),
+    ("museum", "Two teachers, each leading 15 pupils, enter the dinosaur gallery", ("teacher", 2), ("pupil", 30),
+     "dinosaur_gallery"),
+    ("hospital", "Two porters, each pushing a patient in a wheelchair, go to radiology", ("porter", 2),
+     ("patient", 2), "radiology"),
+    ("hospital", "Four nurses each escort a patient to ward B", ("nurse", 4), ("patient", 4), "ward_b"),
+])
+def test_people_each_of_a_group_takes_along(read, world, prompt, leaders, taken, destination):
+    r = read(world, prompt)
+    assert [(g.label, g.count.value) for g in r.groups] == [leaders, taken]
+    assert [g.destination for g in r.groups] == [destination, destination]
+    assert r.groups[0].intent == "walk"
