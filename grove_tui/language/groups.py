@@ -24,6 +24,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.sequences import pronoun_sentences_end
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
@@ -106,7 +107,7 @@ class Groups:
             end = mentions[regular[n + 1]].first if n + 1 < len(regular) and end > mentions[regular[n + 1]].first \
                 else end
             sentence_end = next((i for i in range(m.last + 1, end) if s.w[i].sentence != s.w[m.first].sentence), end)
-            spans[k] = (start, sentence_end)
+            spans[k] = (start, pronoun_sentences_end(s, sentence_end, end, {x.first for x in mentions}))
         return spans
 
     def _partitive_end(self, m: Mention) -> int:

@@ -96,3 +96,27 @@ def each_leader(s: Sentence, people: People, k: int) -> int | None:
         return None
     j = k - 1 if s.low[k - 1] != "," else k - 2
     return j if j >= 0 and people.is_person_noun(j) and s.lemma(j) != s.low[j] else None
+
+
+# Words that open a sentence going on with the people said before: "Then they ...", "After that, they ..."
+_SEQUENCE_OPENERS = frozenset({"then", "afterwards", "afterward", "later", "next", "finally", "eventually", "after",
+                               "that", "this", "soon", "shortly", "and", ",", "a", "while", "minutes", "minute",
+                               "few", "seconds", "hour", "an"})
+
+
+def pronoun_sentences_end(s: Sentence, at: int, end: int, starts: set[int]) -> int:
+    """Where the words of a group whose sentence ends at `at` end, when the sentences after it (before
+    `end`, the next group's words) go on about them with "they", "he" or "she" and name nobody new:
+    "Four developers chat in the kitchen. Then they go to the boardroom." The group owns them."""
+    while at < end:
+        sentence = s.w[at].sentence
+        last = next((i for i in range(at, end) if s.w[i].sentence != sentence), end)
+        if any(at <= x < last for x in starts):
+            return at
+        j = at
+        while j < last and (s.low[j] in _SEQUENCE_OPENERS or s.w[j].pos == "NUM"):  # "Ten minutes later, they"
+            j += 1
+        if j >= last or s.low[j] not in ("they", "he", "she"):
+            return at
+        at = last
+    return at

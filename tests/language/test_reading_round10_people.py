@@ -251,3 +251,23 @@ def test_people_each_of_a_group_takes_along(read, world, prompt, leaders, taken,
     assert [(g.label, g.count.value) for g in r.groups] == [leaders, taken]
     assert [g.destination for g in r.groups] == [destination, destination]
     assert r.groups[0].intent == "walk"
+
+
+@pytest.mark.parametrize("world, prompt, location, destination", [
+    ("office", "Four developers chat in the kitchen. Then they go to the boardroom.", "kitchen", "boardroom"),
+    ("office", "Four developers chat in the kitchen. Ten minutes later, they go to the boardroom.", "kitchen",
+     "boardroom"),
+    ("library", "Six students study in the reading room. After that, they walk to the cafe.", "reading_room", "cafe"),
+    ("office", "A manager waits in her office. A few minutes later she walks to reception.", "manager_office",
+     "reception"),
+])
+def test_a_next_sentence_about_them_goes_on_with_the_same_people(read, world, prompt, location, destination):
+    r = read(world, prompt)
+    assert len(r.groups) == 1
+    assert location in (r.groups[0].location, r.groups[0].start) and r.groups[0].destination == destination
+
+
+def test_a_next_sentence_about_new_people_is_theirs(read):
+    r = read("office", "Four developers chat in the kitchen. They are tired. Two managers wait in the boardroom.")
+    assert [(g.label, g.location, g.destination) for g in r.groups] == [("developer", "kitchen", None),
+                                                                        ("manager", "boardroom", None)]
