@@ -165,7 +165,7 @@ class Groups:
                         and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my", "each")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
-            if mentions[k].partitive or s.w[mentions[k].last].dep in ("dobj", "dative") or \
+            if mentions[k].partitive or self._an_object(mentions[k]) or \
                     self.mentions.objects.led_by(mentions[k].first):
                 continue  # "two of the six developers follow it": the six do not; "follow their guide": an object
             if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
@@ -211,6 +211,13 @@ class Groups:
                 around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
                 clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
                     "walk" if routed else "wander" if around else "wait"))
+
+    def _an_object(self, m: Mention) -> bool:
+        """Whether the people are someone's object ("follow their guide"), not the scene's own people
+        an imperative sets ("Spawn 8 passengers at gate B1 and 8 at gate B2, all walking ...")."""
+        s = self.s
+        w = s.w[m.last]
+        return w.dep in ("dobj", "dative") and verb_lemma(s.low[w.head]) not in lx.SCENE_VERBS
 
     def _sent_where(self, m: Mention, c: Clause) -> tuple[bool, bool]:
         """(sent out, sent somewhere) for people someone sends: "out of the café", "to the lobby"."""

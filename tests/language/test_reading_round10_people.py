@@ -271,3 +271,9 @@ def test_a_next_sentence_about_new_people_is_theirs(read):
     r = read("office", "Four developers chat in the kitchen. They are tired. Two managers wait in the boardroom.")
     assert [(g.label, g.location, g.destination) for g in r.groups] == [("developer", "kitchen", None),
                                                                         ("manager", "boardroom", None)]
+
+
+def test_an_imperatives_people_share_the_verb_said_after_them_all(read):
+    r = read("airport", "Spawn 8 passengers at gate B1 and 8 at gate B2, all walking to baggage claim")
+    assert [(g.count.value, g.intent, g.start, g.destination) for g in r.groups] == [
+        (8, "walk", "gate_b1", "baggage_claim"), (8, "walk", "gate_b2", "baggage_claim")]
