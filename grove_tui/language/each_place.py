@@ -65,8 +65,15 @@ def _copies(s: Sentence, g: GroupReading, phrases: Sequence[tuple[str, tuple[str
             places = _places_alike(s, words, chosen, inside)
             if len(places) > 1:
                 confidence = tuple(c for c in g.confidence if c.field != field)
-                return [replace(g, confidence=confidence, **{field: p}) for p in places]
+                return [_at(replace(g, confidence=confidence), field, p) for p in places]
     return [g]
+
+
+def _at(g: GroupReading, field: str, place: str) -> GroupReading:
+    """The group with one of its place fields set to `place`."""
+    if field == "location":
+        return replace(g, location=place)
+    return replace(g, start=place) if field == "start" else replace(g, destination=place)
 
 
 def _places_alike(s: Sentence, words: tuple[str, ...], chosen: str | None, inside: bool) -> list[str]:
