@@ -41,6 +41,8 @@ _ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 _TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(?![\w.])")
 _TIMES_BEFORE = re.compile(r"(?<![\w.])(?:(\d+)\s?[x×]|[x×](\d+))\s+(?=[A-Za-z]{3,})")
 
+# "15+ guests", "20+ ppl": at least that many (not "2 nurses + 1 porter", which joins two groups)
+_PLUS_COUNT = re.compile(r"(?<![\w.])(\d+)\s*\+(?=\s*[A-Za-z])")
 # "n=20 pedestrians", "N = 8 agents": a count as a researcher writes it
 _N_EQUALS = re.compile(r"(?<![\w=])[nN]\s*=\s*(?=\d)")
 # "gate A1 -> security", "lobby → lifts": a route; a short place after a colon or comma is where they set off
@@ -58,7 +60,7 @@ def normalise(text: str) -> str:
     folded = unicodedata.normalize("NFKC", text or "")
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
-    kept = _JOINING_SIGN.sub(" and ", kept)
+    kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", kept))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))

@@ -277,3 +277,14 @@ def test_an_imperatives_people_share_the_verb_said_after_them_all(read):
     r = read("airport", "Spawn 8 passengers at gate B1 and 8 at gate B2, all walking to baggage claim")
     assert [(g.count.value, g.intent, g.start, g.destination) for g in r.groups] == [
         (8, "walk", "gate_b1", "baggage_claim"), (8, "walk", "gate_b2", "baggage_claim")]
+
+
+@pytest.mark.parametrize("prompt, count", [("15+ guests wait in the lobby", 15), ("20+ ppl in the bar", 20)])
+def test_a_count_with_a_plus_is_at_least_that_many(read, prompt, count):
+    g = read("hotel", prompt).groups[0]
+    assert g.count.value >= count and g.label in ("guest", "person")
+
+
+def test_a_plus_between_two_groups_still_joins_them(read):
+    r = read("hotel", "2 porters + 1 manager walk to the lobby")
+    assert [(g.label, g.count.value) for g in r.groups] == [("porter", 2), ("manager", 1)]
