@@ -45,6 +45,7 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
+from grove_tui.language.they_all import all_go_on
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -99,7 +100,7 @@ def _read(s: Sentence) -> PromptReading:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = _robot_follows_someone_said(robot, found, mentions, read)
-    read = spread_over_each(s, parts_of_a_split_whole(_followers_of_someone_said(read)))
+    read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
 

@@ -288,3 +288,23 @@ def test_a_count_with_a_plus_is_at_least_that_many(read, prompt, count):
 def test_a_plus_between_two_groups_still_joins_them(read):
     r = read("hotel", "2 porters + 1 manager walk to the lobby")
     assert [(g.label, g.count.value) for g in r.groups] == [("porter", 2), ("manager", 1)]
+
+
+@pytest.mark.parametrize("world, prompt, places, destination", [
+    ("office", "4 people wait in the kitchen and 2 in meeting room 1; then they all walk to reception.",
+     ["kitchen", "meeting_room_1"], "reception"),
+    ("office", "4 people wait in the kitchen and 2 in meeting room 1. Then they all walk to reception.",
+     ["kitchen", "meeting_room_1"], "reception"),
+    ("library", "Five students wait in the foyer and three in the cafe; they all then go to the reading room",
+     ["entrance_foyer", "cafe"], "reading_room"),
+])
+def test_they_all_take_every_group_of_the_sentence_along(read, world, prompt, places, destination):
+    r = read(world, prompt)
+    assert [g.location or g.start for g in r.groups] == places
+    assert [g.destination for g in r.groups] == [destination] * len(places)
+
+
+def test_both_of_them_after_one_group_is_that_group(read):
+    r = read("office", "Three developers chat in the kitchen and two interns wait at reception, "
+                       "then both of them go to the boardroom")
+    assert r.groups[0].destination is None
