@@ -2,7 +2,7 @@
 every platform", "three students in each of the seminar rooms". The group is read once, at the one
 place its phrase names first; here it is given once per place of that kind the world has, each copy
 as many as the sentence says ("two guards at each exit" in a station with four exits: four groups of
-two). The places are those the phrase's words fit best and alike (the index's tied best matches of the
+two; "Every platform has three passengers waiting"). The places are those the phrase's words fit best and alike (the index's tied best matches of the
 chosen place's own kind: doors for "exit", zones for "seminar room"); with "in"/"of" after the phrase
 ("every table in the restaurant") only those inside the chosen place's room."""
 
@@ -14,6 +14,7 @@ from dataclasses import replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import GroupReading
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
 
 _EACH = frozenset({"each", "every"})
 _SKIPPED = frozenset({"of", "the", "single", "one", "its", "their"})
@@ -31,6 +32,8 @@ def spread_over_each(s: Sentence, read: Sequence[GroupReading]) -> tuple[GroupRe
     for k, g in enumerate(read):
         shift[k] = len(out)
         copies = _copies(s, g, phrases)
+        if len(copies) > 1:  # a phrase heading the clause ("Every exit has a guard") is its first group's only
+            phrases = [p for p in phrases if p[0]]
         out.extend(copies)
     if len(out) == len(read):
         return tuple(read)
@@ -40,7 +43,10 @@ def spread_over_each(s: Sentence, read: Sequence[GroupReading]) -> tuple[GroupRe
 def _each_phrase(s: Sentence, i: int) -> tuple[str, tuple[str, ...], bool] | None:
     """(the words from the preposition, the place words, whether "in"/"of" follows) of "at each
     exit", "on every platform", "in each of the seminar rooms"; None when "each" is no place's."""
-    if i < 1 or (s.low[i - 1] not in lx.PLACE_PREPOSITIONS and s.low[i - 1] not in ("at", "on", "in", "by", "to")):
+    fronted = (i == 0 or s.is_punct(i - 1) or s.w[i - 1].sentence != s.w[i].sentence) and \
+        any(verb_lemma(s.low[k]) == "have" for k in range(i + 1, min(i + 6, s.n)))  # "Every exit has a guard"
+    after_preposition = i > 0 and (s.low[i - 1] in lx.PLACE_PREPOSITIONS or s.low[i - 1] in ("at", "on", "in", "by", "to"))
+    if not (fronted or after_preposition):
         return None
     j = i + 1
     while j < s.n and s.low[j] in _SKIPPED:
@@ -52,7 +58,7 @@ def _each_phrase(s: Sentence, i: int) -> tuple[str, tuple[str, ...], bool] | Non
         return None
     words = tuple(s.lemma(k) for k in range(j, end))
     inside = end < s.n and s.low[end] in ("in", "of", "on", "at")
-    return s.span(i - 1, end - 1).lower(), words, inside
+    return ("" if fronted else s.span(i - 1, end - 1).lower()), words, inside
 
 
 def _copies(s: Sentence, g: GroupReading, phrases: Sequence[tuple[str, tuple[str, ...], bool]]) -> list[GroupReading]:

@@ -308,3 +308,16 @@ def test_both_of_them_after_one_group_is_that_group(read):
     r = read("office", "Three developers chat in the kitchen and two interns wait at reception, "
                        "then both of them go to the boardroom")
     assert r.groups[0].destination is None
+
+
+@pytest.mark.parametrize("world, prompt, places", [
+    ("station", "Every platform has three passengers waiting", {"platform_1", "platform_2"}),
+    ("university", "Each seminar room has two students in it", {"seminar_room_1", "seminar_room_2"}),
+])
+def test_every_place_that_has_people_has_them_each(read, world, prompt, places):
+    assert {g.location for g in read(world, prompt).groups} == places
+
+
+def test_a_place_heading_its_clause_is_its_first_groups_only(read):
+    r = read("station", "Each platform has a guard and the concourse has 10 passengers")
+    assert [g.label for g in r.groups].count("passenger") == 1
