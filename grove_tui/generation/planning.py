@@ -30,7 +30,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
-from grove_tui.generation.postprocess import AgentPlan, FreeSpace, PostProcessed
+from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
@@ -44,6 +44,7 @@ from grove_tui.language.model import PromptReading
 from grove_tui.language.tokens import lemma, words
 
 ROBOT_CLEARANCE = 2.0  # metres between the robot's start/goal and anybody's spawn
+ENTRY_DEPTH = 3.0  # metres into a room the robot goes to be seen by the people in it who react to it
 ROBOT_CANDIDATES = 48
 
 
@@ -100,8 +101,25 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
     robot_spec = None
     if robot is None or robot.enabled:
         # The robot first: people whose whole activity is reacting to it start where it passes.
-        robot_spec = plan_robot(world, grid, cached, post, robot or RobotRequest(), seed, notes, reading=reading)
-        place_robot_reactors(world, grid, post, robot_spec, seed, notes)
+        request = robot or RobotRequest()
+        robot_notes: list[str] = []
+        robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading)
+        reactor_notes: list[str] = []
+        unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+        rooms = list(dict.fromkeys(g.reactor_zone for g in unseen if g.reactor_zone))
+        if rooms and robot_spec.task in ("cross", "patrol"):
+            # People the sentence puts in a room to react to the robot ("people in the waiting area look
+            # at it") react only if it comes by: a route fixed elsewhere passes through their room too.
+            robot_notes = []
+            robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading,
+                                    through=rooms)
+            robot_notes.append(f"the robot passes through {', '.join(rooms)} on its way, where people react to it")
+            reactor_notes = []
+            unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+        notes.extend(robot_notes)
+        notes.extend(reactor_notes)
+        for g in unseen:
+            notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
     if preset.velocity == "field":
@@ -222,8 +240,10 @@ def _resolve_point(world: World, grid: OccupancyGrid, value: Point | str, what: 
 
 
 def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: PostProcessed, request: RobotRequest,
-               seed: int, notes: list[str], reading: PromptReading | None = None) -> RobotSpec:
-    """The robot's start, goal, path and task.
+               seed: int, notes: list[str], reading: PromptReading | None = None,
+               through: Sequence[str] = ()) -> RobotSpec:
+    """The robot's start, goal, path and task; a crossing or patrolling robot also passes through the
+    zones `through` (where people who react to it are and its route did not come by).
 
     The user's --robot-start/--robot-goal come first, then the sentence's robot clause (its start,
     destination, the places it passes, where it waits, whom it follows); what neither fixes is chosen
@@ -312,19 +332,29 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     via_zones = [z for z in (world.zone_of_place(v) for v in (asked.via if asked is not None else ())) if z]
     if start is None or goal is None:
         start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
-        if not via_zones:
+        if not via_zones and not through:
             return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
     try:
         path = plan_path(start, goal)
-        for zone in via_zones:
-            if _passes(world, path, zone):
-                continue
-            # through the zone it names: by its free point nearest to the way from start to goal
-            point = picker.via_point(zone, start, goal)
-            path = np.concatenate([plan_path(start, point), plan_path(point, goal)[1:]])
+        path = _through(world, path, via_zones, through, picker, plan_path, start, goal)
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
     return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
+
+
+def _through(world: World, path: np.ndarray, via: Sequence[str], rooms: Sequence[str], picker: _StartPicker,
+             plan_path: Callable[[Point, Point, bool], np.ndarray], start: Point, goal: Point) -> np.ndarray:
+    """The path, made to pass through every zone of `via` it misses (by the zone's free point nearest to
+    the way from start to goal) and into every room of `rooms` it misses (a few metres in by the door
+    nearest to it, and out again), the stops in their order along the path."""
+    stops = [picker.via_point(z, start, goal) for z in via if not _passes(world, path, z)]
+    stops += [picker.entry_point(z, path) for z in rooms if not _passes(world, path, z)]
+    if not stops:
+        return path
+    samples, arcs = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
+    stops.sort(key=lambda p: float(arcs[int(np.argmin(np.hypot(samples[:, 0] - p[0], samples[:, 1] - p[1])))]))
+    legs = [plan_path(a, b, True) for a, b in zip([start, *stops], [*stops, goal])]
+    return np.concatenate([legs[0], *(leg[1:] for leg in legs[1:])])
 
 
 def _passes(world: World, path: np.ndarray, zone: str) -> bool:
@@ -447,6 +477,25 @@ class _StartPicker:
         k = int(np.argmin(d))
         return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
 
+    def entry_point(self, zone: str, path: np.ndarray) -> Point:
+        """A free point ENTRY_DEPTH metres into `zone` from its door nearest to `path`: where a robot
+        passing by looks in."""
+        doors = [d for d in self.world.doors_of(zone) if not d.exit] or self.world.doors_of(zone)
+        if not doors:
+            return self.via_point(zone, tuple(path[0]), tuple(path[-1]))
+        samples, _ = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
+        door = min(doors, key=lambda d: float(np.min(np.hypot(samples[:, 0] - d.position[0],
+                                                               samples[:, 1] - d.position[1]))))
+        inside = door.inward_point(ENTRY_DEPTH) if door.zone == zone else door.outward_point(ENTRY_DEPTH)
+        pts = self.space.cells(zone)
+        if self.robot_planner is not None and len(pts):
+            keep = np.array([self.robot_planner.grid.is_free(x, y) for x, y in pts], dtype=bool)
+            pts = pts[keep] if keep.any() else pts
+        if not len(pts):
+            raise GenerationError(f"zone '{zone}' has no free floor for the robot to pass through")
+        k = int(np.argmin(np.hypot(pts[:, 0] - inside[0], pts[:, 1] - inside[1])))
+        return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
+
     def nearest(self, centre: Point) -> Point:
         """The acceptable free point nearest to `centre` (the robot starts beside the people it follows)."""
         zone = self.world.zone_at(centre[0], centre[1])
@@ -533,13 +582,15 @@ REACTOR_BAND = {"ApproachRobot": (3.0, 6.0), "BlockRobot": (3.0, 6.0), "AvoidRob
 
 
 def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed, robot: RobotSpec | None, seed: int,
-                         notes: list[str]) -> None:
+                         notes: list[str]) -> list[GroupPlan]:
     """Groups whose whole activity is reacting to the robot, and whom the sentence places nowhere, start
     beside its route, a third of the way along (so the robot reaches them early in a run), in sight of
-    it: a reaction gated on the robot showing up must not depend on where a model happened to spawn them."""
+    it: a reaction gated on the robot showing up must not depend on where a model happened to spawn them.
+    Returns the groups with no free floor beside the route (they keep their start)."""
     groups = [g for g in post.groups if g.reacts_only]
     if not groups or robot is None:
-        return
+        return []
+    unseen: list[GroupPlan] = []
     path = np.asarray(robot.path if robot.path else (robot.start, robot.goal), dtype=float).reshape(-1, 2)
     samples, arcs = _along(path, 0.5)
     total = float(arcs[-1]) if len(arcs) else 0.0
@@ -569,7 +620,7 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
             if placed is not None:
                 break
         if placed is None:
-            notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
+            unseen.append(g)
             continue
         spots, along = placed
         members = [a for a in post.agents if a.group_index == g.index]
@@ -581,6 +632,7 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
         g.spawn = members[0].spawn_zone if members else g.spawn
         notes.append(f"group '{g.label}': starts in {g.spawn} beside the robot's route ({along:.0f} m along it), "
                      f"where it sees the robot come")
+    return unseen
 
 
 def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
