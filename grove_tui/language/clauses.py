@@ -387,8 +387,8 @@ class Clauses:
             verb = verb_lemma(s.low[subject.end + 1]) if passive else ""
             if verb in lx.START_OBJECT_VERBS:
                 subject = replace(subject, prep="obj:start")
-            elif verb in lx.DESTINATION_OBJECT_VERBS:
-                subject = replace(subject, prep="obj:dest")
+            elif verb in lx.DESTINATION_OBJECT_VERBS | lx.VIA_OBJECT_VERBS:  # "is crossed by": a way through
+                subject = replace(subject, prep="obj:via" if verb in lx.VIA_OBJECT_VERBS else "obj:dest")
             c.places.append(subject)
             scan.used.update(range(own[0], subject.end))
 

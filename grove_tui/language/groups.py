@@ -24,6 +24,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.sequences import pronoun_sentences_end
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
@@ -106,7 +107,7 @@ class Groups:
             end = mentions[regular[n + 1]].first if n + 1 < len(regular) and end > mentions[regular[n + 1]].first \
                 else end
             sentence_end = next((i for i in range(m.last + 1, end) if s.w[i].sentence != s.w[m.first].sentence), end)
-            spans[k] = (start, sentence_end)
+            spans[k] = (start, pronoun_sentences_end(s, sentence_end, end, {x.first for x in mentions}))
         return spans
 
     def _partitive_end(self, m: Mention) -> int:
@@ -161,10 +162,10 @@ class Groups:
             between = range(mentions[k].last + 1, mentions[k + 1].first)
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
             leftover = [x for x in between if x not in in_places and not s.is_punct(x)
-                        and s.low[x] not in ("and", "as", "well", "plus", "with")]
+                        and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my", "each")]
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
-            if mentions[k].partitive or s.w[mentions[k].last].dep in ("dobj", "dative") or \
+            if mentions[k].partitive or self._an_object(mentions[k]) or \
                     self.mentions.objects.led_by(mentions[k].first):
                 continue  # "two of the six developers follow it": the six do not; "follow their guide": an object
             if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
@@ -201,7 +202,7 @@ class Groups:
                     not (out or sent_to) or p.prep in ("from", "out", "obj:start", "at", "in", "on"))]
                 clauses[k - 1] = replace(clauses[k - 1], places=clauses[k - 1].places + kept)
         for k, m in enumerate(mentions):
-            if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last == m.first - 2:
+            if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last >= m.first - 4:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
                 # helps two kids in the kitchen") both stay where they are
                 places = clauses[k - 1].places + clauses[k].places
@@ -210,6 +211,13 @@ class Groups:
                 around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
                 clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
                     "walk" if routed else "wander" if around else "wait"))
+
+    def _an_object(self, m: Mention) -> bool:
+        """Whether the people are someone's object ("follow their guide"), not the scene's own people
+        an imperative sets ("Spawn 8 passengers at gate B1 and 8 at gate B2, all walking ...")."""
+        s = self.s
+        w = s.w[m.last]
+        return w.dep in ("dobj", "dative") and verb_lemma(s.low[w.head]) not in lx.SCENE_VERBS
 
     def _sent_where(self, m: Mention, c: Clause) -> tuple[bool, bool]:
         """(sent out, sent somewhere) for people someone sends: "out of the café", "to the lobby"."""

@@ -118,6 +118,7 @@ CHAT_WORDS: dict[str, str] = {
     "dev": "developer", "devs": "developers", "exec": "executive", "execs": "executives", "prof": "professor",
     "profs": "professors", "techs": "technicians", "reps": "representatives", "admins": "administrators",
     "grads": "graduates", "mgr": "manager", "mgrs": "managers", "hubby": "husband", "kiddos": "kids",
+    "peds": "pedestrians", "ped": "pedestrian", "npcs": "people", "npc": "person",
 }
 
 # ---- people ---------------------------------------------------------------------------------
@@ -265,7 +266,7 @@ CLAUSE_STARTERS = frozenset("and while whilst whereas but as meanwhile then when
                             "except with".split())
 # Imperative verbs that introduce the people of a scenario ("Simulate ten patients ...").
 SCENE_VERBS = frozenset("simulate show create generate spawn add have make let put place model imagine picture "
-                        "depict want need include populate start send position".split())
+                        "depict want need include populate start send position inject insert deploy instantiate".split())
 # Words that can stand between a count and its person noun ("ten tired old patients").
 NP_MODIFIERS = frozenset("the other more tired young old elderly busy waiting new local senior junior impatient "
                          "anxious worried excited angry calm happy curious nervous hungry sick injured "
@@ -278,16 +279,16 @@ INTENT_VERBS: dict[str, str] = {}
 for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
-            "snooze spend",
+            "snooze spend scatter spread dot",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy clean",
+              "mop sweep vacuum hoover scrub tidy clean tour",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
             "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
-            "lug haul",
+            "lug haul traverse",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -308,6 +309,8 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
+    **{(verb, *how): "wander" for verb in ("walk", "move", "go", "stroll", "random") for how in (  # no aim
+        ("randomly",), ("aimlessly",), ("at", "random"), ("walk",), ("around", "randomly"), ("about", "randomly"))},
 }
 # Verbs whose counted object is a second group that goes along ("a guide leads twelve tourists to ..."):
 # the subject walks the route, the object follows.

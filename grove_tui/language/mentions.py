@@ -21,7 +21,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
 from grove_tui.language.partitives import Partitives, other_half, whole_of_a_bare_part
-from grove_tui.language.people import People
+from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -203,7 +203,7 @@ class Mentions:
             return False  # "After the night shift, ...", "at the end of the class": a time, no people
         if prev == "with" and self._conversation_partner(p, at):
             return False
-        if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my"):
+        if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my") and not companions(s, self.people, p):
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
             return True
@@ -463,7 +463,7 @@ class Mentions:
         everyone in a zone (the zone settled once places are read)."""
         s = self.s
         low = s.low
-        if low[at] == "every" and at + 1 < s.n:
+        if low[at] in ("every", "each") and at + 1 < s.n:
             head = self.people.person_head(at + 1, counted=False)
             if head is not None:  # "every visitor in the lounge": everyone there
                 return Mention(at, head, s.span(at, head), self.people.label(head), None, whole_zone=True)
@@ -471,7 +471,7 @@ class Mentions:
             half = self._half_of(at)
             if half is not None:
                 return half
-        if not (low[at] in ("everyone", "everybody") or (low[at] == "all" and not (num and num.value > 0))):
+        if not (whole_zone_pronoun(s, at) or (low[at] == "all" and not (num and num.value > 0))):
             return None
         last, label = at, "person"
         if low[at] == "all":

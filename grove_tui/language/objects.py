@@ -8,6 +8,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import quantifier
 from grove_tui.language.people import People
+from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -23,8 +24,10 @@ class PeopleObjects:
         orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
-        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not self.people.is_person_noun(p - 1):
-            return False
+        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not (
+                self.people.is_person_noun(p - 1) or shared_subject_is_person(s, self.people, p - 1)
+                or each_leader(s, self.people, p - 1) is not None):  # "two porters, each pushing a patient"
+            return False  # "a guard waits on platform 1, then leads four passengers": the guard's too
         q = quantifier(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
@@ -100,7 +103,8 @@ class PeopleObjects:
         while k > 0 and s.w[k].pos == "ADV":
             k -= 1  # "the robot slowly escorts"
         robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \
-            or (s.low[k] == "to" and k > 0 and s.low[k - 1] in lx.ROBOT_WORDS)  # "ask the robot to escort ..."
+            or (s.low[k] == "to" and k > 0 and s.low[k - 1] in lx.ROBOT_WORDS) \
+            or shared_subject_is_robot(s, self.people, k)  # "ask the robot to escort ..."; "..., then leads ..."
         if not robot:
             return None
         verb = verb_lemma(s.low[p])

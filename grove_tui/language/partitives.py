@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.counts import Quantifier, count_of, quantifier
+from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
@@ -39,6 +39,9 @@ class Partitives:
         (`Mention.whole`), which the finder adds first."""
         s = self.s
         low = s.low
+        bare = self._bare_share(at, found, parent_index)
+        if bare is not None:
+            return bare
         fraction, of_at = self._fraction(at)
         if fraction is None and low[at] in ("each", "most") and at + 1 < s.n and low[at + 1] == "of":
             fraction, of_at = (1.0 if low[at] == "each" else 0.75), at + 1  # "each of them": all of them
@@ -67,7 +70,9 @@ class Partitives:
         if head is None:
             return None
         label = self.people.label(head)
-        if low[at] in ("both", "each", "most"):
+        if low[at] == "most" and inner is not None and inner.kind == "exact" and fraction is not None:
+            pass  # "most of the 20 students": a part of the twenty, about three in four
+        elif low[at] in ("both", "each", "most"):
             # "both of the porters", "each of the nurses": the group itself, no part of it
             whole = self._whole(k, head, inner, label)
             count = Count("exact", 2, 2, 2) if low[at] == "both" else whole.count
@@ -90,6 +95,8 @@ class Partitives:
             # "five of the guards": more guards than the five
             more = count.value + 1
             whole.count = replace(whole.count, value=more, low=max(whole.count.low, more), high=max(whole.count.high, more))
+        if count is not None and low[at] == "most":
+            count = replace(count, kind="implied")
         return Mention(at, head, s.span(at, head), label, count, whole=whole)
 
     def fronted_whole(self, at: int) -> Mention | None:
@@ -108,7 +115,8 @@ class Partitives:
         if head is None or (inner is not None and start == k):
             return None
         comma = next((j for j in range(head + 1, s.n) if s.is_punct(j) or s.w[j].sentence != s.w[at].sentence), None)
-        if comma is None or low[comma] != "," or comma + 1 >= s.n or quantifier(s, comma + 1) is None:
+        if comma is None or low[comma] != "," or comma + 1 >= s.n or (
+                quantifier(s, comma + 1) is None and bare_share_at(s, comma + 1) is None):
             return None
         whole = self._whole(det, head, inner if start > k else None, self.people.label(head))
         whole.first, whole.who, whole.fronted = at, s.span(det, head), True
@@ -125,12 +133,35 @@ class Partitives:
             whole.count = replace(whole.count, value=more, low=max(whole.count.low, more),
                                   high=max(whole.count.high, more))
 
+    def _bare_share(self, at: int, found: list[Mention], parent_index: int | None) -> Mention | None:
+        """A share of the group before said with no "of them", as the subject of its own verb: "40
+        people wait in the foyer; half go to the gym", "Of the 30 swimmers, two thirds leave", "...,
+        20% head to the café", "most stay"."""
+        if parent_index is None:
+            return None
+        share = bare_share_at(self.s, at)
+        if share is None:
+            return None
+        fraction, end = share
+        parent = found[parent_index]
+        count = self._share(parent.count, fraction)
+        if count is not None and self.s.low[at] == "most":
+            count = replace(count, kind="implied")
+        return Mention(at, end - 1, self.s.span(at, end - 1), parent.label, count,
+                       relation=f"subset_of:{parent_index}")
+
     def _fraction(self, at: int) -> tuple[float | None, int | None]:
         low = self.s.low
+        percent = percent_at(self.s, at)  # "20% of them", "ten per cent of the visitors"
+        if percent is not None:
+            return percent
         for words, share in _FRACTIONS.items():
             end = at + len(words)
             if tuple(low[at:end]) == words and end < self.s.n and low[end] == "of":
                 return share, end
+        if low[at] == "half" and at + 2 < self.s.n and low[at + 1] in ("the", "those", "these", "their", "our") and \
+                (at == 0 or low[at - 1] not in ("a", "the", "other", "second", "first")):
+            return 0.5, at  # "half the 60 students": "of" left out
         return None, None
 
     def _noun_after(self, k: int) -> bool:
@@ -184,3 +215,45 @@ def other_half(s: Sentence, at: int) -> int | None:
             (at + 3 == s.n or s.low[at + 3] != "of"):
         return at + 2
     return None
+
+
+_PERCENT_WORDS = (("%",), ("percent",), ("per", "cent"), ("pc",), ("pct",))
+
+
+def percent_at(s: Sentence, at: int) -> tuple[float, int] | None:
+    """(share, index of "of") of a percentage of a group at `at`: "20% of them", "ten percent of the
+    passengers", "30 per cent of the 50 visitors"; else None."""
+    num = number_at(s, at)
+    if num is None or not 0 < num[0] <= 100:
+        return None
+    for words in _PERCENT_WORDS:
+        end = num[1] + len(words)
+        if tuple(s.low[num[1]:end]) == words and end < s.n and s.low[end] == "of":
+            return num[0] / 100, end
+    return None
+
+
+def bare_share_at(s: Sentence, at: int) -> tuple[float, int] | None:
+    """(share, index after) of a share said alone before its verb: "half go", "two thirds leave",
+    "a quarter head off", "20% stay", "most wait"; else None ("half an hour", "half of them")."""
+    low = s.low
+    found: tuple[float, int] | None = None
+    for words, share in (*_FRACTIONS.items(), (("most",), 0.75), (("one", "half"), 0.5)):
+        if tuple(low[at:at + len(words)]) == words:
+            found = share, at + len(words)
+            break
+    num = number_at(s, at) if found is None else None
+    if num is not None and 0 < num[0] <= 100:
+        for words in _PERCENT_WORDS:
+            if tuple(low[num[1]:num[1] + len(words)]) == words:
+                found = num[0] / 100, num[1] + len(words)
+                break
+    if found is None:
+        return None
+    v = found[1]
+    while v < s.n and s.w[v].pos == "ADV" and low[v] not in ("of",):
+        v += 1
+    if v >= s.n or not (s.is_verb(v) or (s.w[v].pos != "DET" and verb_lemma(low[v]) in lx.INTENT_VERBS)) or \
+            s.lemma(v) in lx.PERSON_NOUNS:
+        return None
+    return found

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
@@ -50,6 +51,8 @@ class People:
         if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
             return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
+        if acting_as_verb(s, i):
+            return False  # "..., then guides 5 passengers": a verb, no guide
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
@@ -431,3 +434,27 @@ class People:
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
         return bool(content) and (content[-1] in lx.PERSON_NOUNS or content[-1] in lx.PRONOUN_PEOPLE) and \
             not self.s.index.knows(content[-1])
+
+
+def whole_zone_pronoun(s: Sentence, at: int) -> bool:
+    """Whether the word at `at` names everyone somewhere, with no kind of people: "everyone",
+    "anyone waiting on platform 1", "whoever is in the café", "those who are in the lobby"."""
+    low = s.low
+    if low[at] in ("everyone", "everybody", "anyone", "anybody", "whoever"):
+        return not (at > 0 and low[at - 1] in ("not", "n't", "hardly", "barely"))
+    return low[at] == "those" and at + 1 < s.n and low[at + 1] == "who"
+
+
+def companions(s: Sentence, people: People, with_at: int) -> bool:
+    """Whether "his/her ..." after "with" at `with_at` are people of their own, not members of the
+    subject: the subject is one person ("a mother with her two kids", "an old man with his
+    daughter"), not a family or a group whose own members they are ("families ... with their
+    children", "a school group with its teachers")."""
+    for k in range(with_at - 1, -1, -1):
+        if s.w[k].sentence != s.w[with_at].sentence or s.low[k] in (";", ":"):
+            return False
+        if people.is_person_noun(k):
+            word = s.lemma(k)
+            return word == s.low[k] and word not in lx.IMPLIED_RANGES and word not in lx.TOGETHER_COLLECTIVES \
+                and word not in lx.FAMILY_PLURALS
+    return False

@@ -29,6 +29,8 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from grove_tui.language.clauses import Clauses
+from grove_tui.language.each_person import taken_by_each
+from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
@@ -41,7 +43,9 @@ from grove_tui.language.places import place_index
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
+from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
+from grove_tui.language.they_all import all_go_on
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -77,6 +81,7 @@ def _read(s: Sentence) -> PromptReading:
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
     mentions = finder.find()
+    taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
     robot_tokens = {i for rc in found for i in rc.tokens}
@@ -95,7 +100,7 @@ def _read(s: Sentence) -> PromptReading:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = _robot_follows_someone_said(robot, found, mentions, read)
-    read = _followers_of_someone_said(read)
+    read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
 

@@ -21,6 +21,7 @@ from grove_tui.language.model import FieldConfidence, RobotReading
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.sequences import robot_sequel
 from grove_tui.language.tokens import verb_lemma
 
 _TASK_VERBS = lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS
@@ -39,6 +40,7 @@ class RobotClause:
     tokens: list[int]
     verb: int | None
     command: bool = False  # "send the robot to ...": the verb is the sender's
+    sequel: bool = False  # "..., then leads passengers to the exit": a second task, with people, after the first
 
 
 class RobotClauses:
@@ -63,7 +65,13 @@ class RobotClauses:
                 continue
             first, verb, command = found
             end = self._end(verb if verb is not None else i + 1, starts)
-            out.append(RobotClause(list(range(first, end)), verb, command))
+            second = robot_sequel(s, verb, end) if verb is not None else None
+            if second is not None:
+                joined, sequel = second
+                out.append(RobotClause(list(range(first, joined)), verb, command))
+                out.append(RobotClause(list(range(sequel, end)), sequel, sequel=True))
+            else:
+                out.append(RobotClause(list(range(first, end)), verb, command))
             i = max(end, i + 1)
         return out
 
@@ -215,6 +223,12 @@ class RobotClauses:
                     continue
                 kind = "cross"
                 task_confidence = FieldConfidence("task", 0.6, f"'{verb}' is read as the robot going somewhere")
+            if rc.sequel and task in ("wait", "patrol", "cross") and kind in ("follow", "cross"):
+                # "waits on platform 1, then leads passengers to the exit": the task with the people is
+                # the robot's; where it waited, or got to, is where it sets off from
+                roles["start"] = roles["start"] or (roles["destination"] if task == "cross" else roles["location"])
+                roles["destination"] = roles["location"] = None
+                task = kind
             task = task or kind
             if kind == "follow" and rc.verb is not None and follows is None:
                 follows = self._followed(rc.verb)

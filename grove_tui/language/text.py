@@ -13,7 +13,8 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from grove_tui.language.lexicon import CHAT_WORDS
+from grove_tui.language.lexicon import CHAT_WORDS, PERSON_NOUNS
+from grove_tui.language.tokens import lemma
 
 # Unicode categories that never carry a word: other symbols (emoji, pictographs), modifier symbols
 # (skin tones), format characters (zero-width joiners, variation selectors), private use and
@@ -40,6 +41,14 @@ _ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
 _TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(?![\w.])")
 _TIMES_BEFORE = re.compile(r"(?<![\w.])(?:(\d+)\s?[x×]|[x×](\d+))\s+(?=[A-Za-z]{3,})")
 
+# "15+ guests", "20+ ppl": at least that many (not "2 nurses + 1 porter", which joins two groups)
+_PLUS_COUNT = re.compile(r"(?<![\w.])(\d+)\s*\+(?=\s*[A-Za-z])")
+# "n=20 pedestrians", "N = 8 agents": a count as a researcher writes it
+_N_EQUALS = re.compile(r"(?<![\w=])[nN]\s*=\s*(?=\d)")
+# "gate A1 -> security", "lobby → lifts": a route; a short place after a colon or comma is where they set off
+_ROUTE_ARROW = re.compile(r"([:,;(]\s*|^)((?:[\w'-]+\s+){0,3}[\w'-]+)\s*(?:-+>|→|⟶|=>)\s*")
+_ARROW = re.compile(r"\s*(?:-+>|→|⟶|=>)\s*")
+
 # "a second-year", "two first-years": students of that year ("a first-year lecture" names no one).
 _YEAR_PERSON = re.compile(r"\b(first|second|third|fourth|final|1st|2nd|3rd|4th)-year(s?)\b(?![- ]?(?:students?|"
                           r"undergrad\w*|pupils?|lectures?|class\w*|courses?|modules?|exams?|groups?|seminars?|"
@@ -51,13 +60,23 @@ def normalise(text: str) -> str:
     folded = unicodedata.normalize("NFKC", text or "")
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
-    kept = _JOINING_SIGN.sub(" and ", kept)
+    kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", kept))
+    kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     return " ".join(kept.split())
+
+
+def _route_start(m: re.Match[str]) -> str:
+    """"12 agents: gate A1 -> security" as "12 agents: from gate A1 to security"; a phrase that
+    already says where from, or one that names people ("12 agents -> security"), only gets its "to"."""
+    said = m.group(2)
+    if said.split()[0].lower() in ("from", "to") or any(lemma(w) in PERSON_NOUNS for w in said.split()):
+        return f"{m.group(1)}{said} to "
+    return f"{m.group(1)}from {said} to "
 
 
 def _variation_selector(ch: str) -> bool:
