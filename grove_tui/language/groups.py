@@ -20,6 +20,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.place_phrases import Place, PlacePhrases, place_confidences
+from grove_tui.language.place_served import served_fixture
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
@@ -318,6 +319,8 @@ class Groups:
         self._there(span, roles, stationary)
         if c.purpose and intent not in ("evacuate", "follow", "robot") and not (roles.destination or roles.location):
             self._purpose_place(c.purpose, span, roles, stationary)
+        if stationary and (served := served_fixture(s.index, c.purpose, roles.location)) is not None:
+            roles.location = served  # "a woman queuing to pay in the café": at its counter
         self._fixture_where_the_rest_were(m, roles, earlier, stationary)
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
         count = settle_count(s, m, span, start or location or destination, earlier, self.notes)

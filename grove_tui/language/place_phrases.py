@@ -1,10 +1,9 @@
 """Pass 4, in the sentence: the noun phrases in a place role ("to the pharmacy", "leave the ward",
 "on platform 2") and the world's place each names, with how sure that is.
 
-The phrase's words are matched by the world's one place index (language/places.py), by words first
-and by meaning when words do not decide; a zone the sentence named before decides between fixtures
-alike ("On platform 2 ... the bench"); a phrase in a place role that names nothing of the world is an
-unknown place, unless it names a time, a person, a manner or the building itself."""
+Words are matched by the world's one place index (language/places.py), then by meaning when they do
+not decide; a zone named before decides between fixtures alike ("On platform 2 ... the bench"); a phrase
+in a place role naming nothing of the world is an unknown place, unless a time, person, manner or building."""
 
 from __future__ import annotations
 
@@ -18,6 +17,7 @@ from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
+from grove_tui.language.place_entrance import main_entrance
 from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
@@ -129,7 +129,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
             return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
-        said_before = self._said_before(k, at, lemmas) or ordinal_place(s.index, lemmas)  # "that door", "the last lift"
+        said_before, j = ((d, j) if (d := self._said_before(k, at, lemmas) or ordinal_place(s.index, lemmas)) else main_entrance(s.index, lemmas, low, j, s.index.match(lemmas)) or (None, j))  # "that door", "the last lift", "the way in"
         match = said_before[0] if said_before is not None else None
         if prep == "out" and not set(lemmas) & lx.DOOR_WORDS:
             door = s.index.match((*lemmas, "door"))  # "out the back": out through the back door
