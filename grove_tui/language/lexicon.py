@@ -19,6 +19,8 @@ never more than WHOLE_ZONE_CAP people.
 
 from __future__ import annotations
 
+from grove_tui.language.role_nouns import ROLE_NOUNS
+
 # ---- numbers --------------------------------------------------------------------------------
 
 UNITS = {
@@ -170,7 +172,7 @@ PERSON_NOUNS = frozenset(
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter
  club choir troop coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
  swimmer bather skater climber boxer rower cricketer borrower reader gymnast sprinter bodybuilder learner supporter""".split()
-)
+) | ROLE_NOUNS  # court, port, school, shop, factory, theatre, church and stadium roles
 # Last parts of a compound that names a person ("lifeguard", "groundsman", "goalkeeper", "headteacher"),
 # with at least three letters before them; not the things so named ("mudguard", "ottoman").
 COMPOUND_PERSON_HEADS = ("guard", "man", "woman", "keeper", "boy", "girl", "maid", "master", "mistress", "wife",

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
+from grove_tui.language.place_modifiers import names_a_place
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
@@ -174,7 +175,7 @@ class People:
 
     def _a_thing(self, lem: str) -> bool:
         """A word of a place, the robot, an animal or thing, a building, a time or a hazard."""
-        return (self.s.index.knows(lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
+        return (names_a_place(self.s.index, lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
                 or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
                 or lem in lx.IMPLIED_RANGES)
 
@@ -264,7 +265,7 @@ class People:
                 continue
             if (counted and s.w[k].tag in ("NNS", "NNPS") and s.lemma(k) not in lx.NON_PLACES
                     and s.lemma(k) not in lx.NON_PEOPLE
-                    and s.lemma(k) not in lx.DURATION_UNITS and not s.index.knows(s.lemma(k))
+                    and s.lemma(k) not in lx.DURATION_UNITS and not names_a_place(s.index, s.lemma(k))
                     and verb_lemma(s.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
                 return k
             return None

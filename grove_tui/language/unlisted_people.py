@@ -10,12 +10,15 @@ from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
 
 if TYPE_CHECKING:
     from grove_tui.language.places import PlaceIndex
     from grove_tui.language.sentence import Sentence
 
 _OPENERS = frozenset({"a", "an", "the"})
+# A person's own ("its worried owner waits", "her chaperone waits"): read as "a".
+_POSSESSIVES = frozenset({"its", "his", "her", "their", "my", "our", "your"})
 # Verbs of going that things do as well ("the cake arrives", "the bus leaves"): with these a noun in
 # no list is people only when a name or counted.
 _THINGS_GO_TOO = frozenset("arrive leave come go pass move return run start stop open close fall drop roll enter "
@@ -31,7 +34,7 @@ def _people_verb(s: Sentence, head: int) -> bool:
 
 
 def _a_thing(s: Sentence, lem: str) -> bool:
-    return (s.index.knows(lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
+    return (names_a_place(s.index, lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
             or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
             or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS)
 
@@ -39,7 +42,8 @@ def _a_thing(s: Sentence, lem: str) -> bool:
 def unlisted_subject(s: Sentence, i: int) -> bool:
     """Whether word i heads a subject phrase naming people no list has (see the module doc)."""
     word = s.w[i]
-    if word.pos not in ("NOUN", "PROPN") or word.dep != "nsubj" or word.head == i or \
+    # (A subject the parser tags an adjective is a noun it does not know: "a nervous postgrad leaves".)
+    if word.pos not in ("NOUN", "PROPN", "ADJ") or word.dep != "nsubj" or word.head == i or \
             not s.low[i].isalpha() or len(s.low[i]) < 3 or not _people_verb(s, word.head):
         return False
     if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
@@ -50,10 +54,14 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
         first -= 1  # "an airline rep", "two burly roadies"
     if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
         return False  # "the robot hums ...": the robot's verb, tagged a noun
+    if word.tag != "NNP" and any(s.low[k] in lx.PERSON_NOUNS or s.lemma(k) in lx.PERSON_NOUNS for k in range(first, i)):
+        return False  # "a nervous intern steps aside": the person is named before, the verb mistagged
     before = s.low[first - 1] if first > 0 else ""
     if first > 0 and s.w[first - 1].pos == "NUM" and s.w[first - 1].head == i:
         return True  # "two roadies wander", "3 roadies leave"
-    if before in _OPENERS:
+    if any(s.low[k] in PERSON_ADJECTIVES for k in range(first, i)):
+        return before in _OPENERS or before in _POSSESSIVES  # "a nervous witness leaves", "its worried owner"
+    if before in _OPENERS or before in _POSSESSIVES:
         return s.verb(word.head) not in _THINGS_GO_TOO if before != "the" else \
             s.verb(word.head) in lx.HUMAN_SUBJECT_VERBS  # "the cake arrives": a thing
     # A name: capitalised, with no determiner, the phrase opening the sentence or after a comma.
