@@ -181,8 +181,8 @@ class Clauses:
         if before.prep in ("for", "purpose") or before.match is None:
             return None
         k = s.skip(i, lx.PLACE_SEQUELS)
-        if k >= s.n or k not in scan.own or s.preposition(k) is not None or s.verb_follows(k):
-            return None
+        if k >= s.n or k not in scan.own or s.preposition(k) is not None or s.verb_follows(k) or s.low[k] == "where":
+            return None  # (", where five managers meet": what happens at the place before, no next stop)
         place = self.places.phrase(k, before.prep, i, record_unknown=False)
         if place is None or place.match is None or place.match.name == before.match.name:
             return None

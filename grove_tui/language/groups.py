@@ -317,6 +317,7 @@ class Groups:
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         self._there(span, roles, stationary)
+        self._where_before(m, roles, stationary)
         if c.purpose and intent not in ("evacuate", "follow", "robot") and not (roles.destination or roles.location):
             self._purpose_place(c.purpose, span, roles, stationary)
         if stationary and (served := served_fixture(s.index, c.purpose, roles.location)) is not None:
@@ -420,6 +421,25 @@ class Groups:
         roles.read_from.setdefault(name, replace(said, score=0.8, alternatives=(),
                                                  reason=f"'there': {name}, said before"))
         setattr(roles, role, name)
+
+    def _where_before(self, m: Mention, roles: Roles, stationary: bool) -> None:
+        """"... to the boardroom, where five managers are in a meeting": people named after ", where"
+        are at the place said just before it (or leave from it), when they name no place of their own."""
+        s = self.s
+        if m.first < 2 or s.low[m.first - 1] != "where" or s.low[m.first - 2] != "," or \
+                roles.start or roles.destination or roles.location:
+            return
+        before = [p for p in self.places.history if p.index < m.first - 2 and p.match is not None]
+        if not before:
+            return
+        said = before[-1]
+        name = said.match.name if said.match is not None else ""
+        roles.read_from.setdefault(name, replace(said, score=0.8, alternatives=(),
+                                                 reason=f"', where': {name}, said before"))
+        if stationary:
+            roles.location = name
+        else:
+            roles.start = name
 
     def _purpose_place(self, purpose: str, span: tuple[int, int], roles: Roles, stationary: bool) -> None:
         """"walk from exam room 2 to get a cup of water": with no place to go to, the place the purpose

@@ -205,7 +205,7 @@ class Mentions:
             return False
         if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my") and not companions(s, self.people, p):
             return False  # "families wait at the gate with their children": the families' own members
-        if prev in lx.CLAUSE_STARTERS or prev in lx.EXCEPT_WORDS or prev == "than":
+        if prev in lx.CLAUSE_STARTERS | lx.EXCEPT_WORDS | {"than"} or (s.low[p - 1], prev) == (",", "where"):
             return True
         if self.objects.led_by(at) or self.objects.robot_object(at) is not None or self.objects.followed(at) or \
                 self.objects.sent_by(at):

@@ -210,7 +210,8 @@ class People:
         nxt = i + 1
         mistagged = (0 < i and nxt < s.n and word.pos in ("NOUN", "PROPN", "ADJ")
                      and s.w[i - 1].pos in ("DET", "NUM") and verb_lemma(s.low[nxt]) in lx.HUMAN_SUBJECT_VERBS
-                     and s.low[nxt] != verb_lemma(s.low[nxt]) and s.low[nxt].endswith("s"))
+                     and s.low[nxt] != verb_lemma(s.low[nxt]) and s.low[nxt].endswith("s")
+                     and not (i >= 2 and s.w[i - 2].pos == "ADP"))  # "a family with a pram hurries": its object
         if not (parsed or mistagged):
             return False
         lem = s.lemma(i)

@@ -181,7 +181,7 @@ class RobotClauses:
                     not (j + 1 < s.n and s.low[j + 1] in lx.ROBOT_WORDS):
                 break
             j += 1
-        while j > k and (s.low[j - 1] in lx.CLAUSE_STARTERS or s.is_punct(j - 1)
+        while j > k and (s.low[j - 1] in lx.CLAUSE_STARTERS | {"where"} or s.is_punct(j - 1)
                          or verb_lemma(s.low[j - 1]) in lx.SCENE_VERBS):
             j -= 1  # "send the robot to the kitchen and have ...": not the robot's words
         return j

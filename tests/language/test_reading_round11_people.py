@@ -30,3 +30,33 @@ def test_people_no_list_names(read, world, prompt, label, count):
 ])
 def test_roles_of_courts_churches_and_schools_are_people(read, world, prompt, label):
     assert [g.label for g in read(world, prompt).groups] == [label]
+
+
+@pytest.mark.parametrize("world, prompt, label, count", [
+    ("hotel", "A family with a pushchair hurries to the exit.", "family", 4),
+    ("hotel", "A couple with a buggy hurries to the lifts.", "couple", 2),
+    ("library", "A mum with a pram hurries to the cafe.", "mum", 1),
+    ("sports_centre", "A dad with a buggy hurries to the cafe.", "dad", 1),
+    ("office", "A man with a trolley hurries to the lifts.", "man", 1),
+])
+def test_what_people_push_along_is_not_a_person(read, world, prompt, label, count):
+    groups = read(world, prompt).groups
+    assert [g.label for g in groups] == [label] and groups[0].count.value == count
+
+
+@pytest.mark.parametrize("world, prompt, label, count, location", [
+    ("office", "The robot delivers coffee from the kitchen to the boardroom, where five managers are in a meeting.",
+     "manager", 5, "boardroom"),
+    ("office", "A cleaner goes to the kitchen, where two interns are chatting.", "intern", 2, "kitchen"),
+    ("hotel", "The robot delivers towels from the laundry to the spa, where four guests are waiting.", "guest", 4, "spa"),
+    ("hotel", "The robot takes a tray from the kitchen to the bar, where three guests are having drinks.",
+     "guest", 3, "bar"),
+    ("library", "The robot carries books from the returns desk to the reading room, where six students are studying.",
+     "student", 6, "reading_room"),
+])
+def test_people_in_a_where_clause_after_a_place_are_there(read, world, prompt, label, count, location):
+    reading = read(world, prompt)
+    group = reading.groups[-1]
+    assert (group.label, group.count.value, group.location) == (label, count, location)
+    if reading.robot is not None:
+        assert reading.robot.destination == location
