@@ -4,6 +4,8 @@
 
 from __future__ import annotations
 
+import re
+
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 
@@ -71,3 +73,25 @@ def evacuating(s: Sentence, verb: int, pair: tuple[str, str], urgent: bool) -> b
     if pair in lx.EVACUATION_PHRASES:
         return urgent or not routine_emptying(s, verb)
     return urgent
+
+
+# "At 9 sharp", "by 7.30", "around noon", "at lunchtime": a clock time said before the subject.
+_CLOCK_PREPOSITIONS = frozenset("at by around about after before from until till".split())
+_CLOCK_TAILS = frozenset("sharp exactly precisely o'clock oclock am pm a.m. p.m. on the dot".split())
+_CLOCK_WORDS = frozenset("noon midnight midday lunchtime teatime dawn dusk daybreak nightfall opening closing".split())
+_CLOCK = re.compile(r"\d{1,2}([:.]\d\d)?(am|pm|h)?")
+
+
+def after_a_clock_time(s: Sentence, at: int) -> bool:
+    """Whether only a clock time stands between the start of a clause and `at` ("At 9 sharp a dozen staff
+    stream in", "by 7.30 two porters wait ..."), so a subject may start there with no comma."""
+    j = at - 1
+    while j > 0 and s.low[j] in _CLOCK_TAILS:
+        j -= 1
+    if j < 1 or not (_CLOCK.fullmatch(s.low[j]) or s.low[j] in _CLOCK_WORDS or s.w[j].tag == "CD"):
+        return False
+    j -= 1
+    if s.low[j] not in _CLOCK_PREPOSITIONS:
+        return False
+    return (j == 0 or s.is_punct(j - 1) or s.low[j - 1] in lx.CLAUSE_STARTERS) and \
+        (s.low[at] in lx.DETERMINERS or s.w[at].pos == "NUM" or s.low[at] in lx.NUMBER_WORDS)

@@ -16,7 +16,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
-from grove_tui.language.events import cause_of_a_clearing, event_after_time_word
+from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
@@ -233,7 +233,7 @@ class Mentions:
             return True  # "the boardroom meeting of twelve people breaks up"
         if prev in ("'s", "’s") and self.possessor_place(at) is not None:
             return True  # "ward A's patients", "the café's 8 customers": the people of a place
-        if self._after_time_phrase(at):
+        if self._after_time_phrase(at) or after_a_clock_time(s, at):
             return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
 

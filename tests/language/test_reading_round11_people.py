@@ -60,3 +60,16 @@ def test_people_in_a_where_clause_after_a_place_are_there(read, world, prompt, l
     assert (group.label, group.count.value, group.location) == (label, count, location)
     if reading.robot is not None:
         assert reading.robot.destination == location
+
+
+@pytest.mark.parametrize("world, prompt, label, count", [
+    ("hotel", "At 7 sharp a dozen waiters stream in through the staff entrance and head for the kitchen, "
+              "while two cleaners finish up in the bar.", "waiter", 12),
+    ("hotel", "By 6.30 three porters wait in the lobby.", "porter", 3),
+    ("library", "At 9 sharp a dozen students walk in through the main entrance.", "student", 12),
+    ("sports_centre", "Around 7.15 four lifeguards walk to the pool.", "lifeguard", 4),
+    ("university", "At 10 exactly two porters wait at the main entrance.", "porter", 2),
+])
+def test_a_subject_after_a_clock_time_with_no_comma(read, world, prompt, label, count):
+    group = read(world, prompt).groups[0]
+    assert (group.label, group.count.kind, group.count.value) == (label, "exact", count)
