@@ -20,7 +20,7 @@ from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, e
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects
-from grove_tui.language.partitives import Partitives, other_half, whole_of_a_bare_part
+from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
@@ -146,7 +146,7 @@ class Mentions:
         """A bare count right after a whole said first, before any verb ("..., three get up and ...")."""
         s = self.s
         num = quantifier(s, at)
-        if num is None or at == 0 or s.low[at - 1] != "," or num.end >= s.n or not s.is_verb(num.end):
+        if num is None or at == 0 or s.low[at - 1] != "," or num.end >= s.n or not verb_of_a_bare_count(s, num.end):
             return None
         return Mention(at, num.end - 1, s.span(at, num.end - 1), whole.label, count_of(s, num, f"{at}:part"))
 

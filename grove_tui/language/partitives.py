@@ -257,3 +257,11 @@ def bare_share_at(s: Sentence, at: int) -> tuple[float, int] | None:
             s.lemma(v) in lx.PERSON_NOUNS:
         return None
     return found
+
+
+def verb_of_a_bare_count(s: Sentence, k: int) -> bool:
+    """Whether the word at k, after a bare count, is its verb: a verb by the parser, or a verb of
+    going or staying the parser took for the count's noun, before a place ("..., a handful stop at the
+    customs desk", "..., five head to the café")."""
+    return s.is_verb(k) or (s.w[k].tag in ("NN", "NNS") and verb_lemma(s.low[k]) in lx.INTENT_VERBS.keys() | {"stop", "halt"}
+                            and k + 1 < s.n and s.preposition(k + 1) is not None)

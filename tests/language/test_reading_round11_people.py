@@ -73,3 +73,16 @@ def test_people_in_a_where_clause_after_a_place_are_there(read, world, prompt, l
 def test_a_subject_after_a_clock_time_with_no_comma(read, world, prompt, label, count):
     group = read(world, prompt).groups[0]
     assert (group.label, group.count.kind, group.count.value) == (label, "exact", count)
+
+
+@pytest.mark.parametrize("world, prompt, whole, part", [
+    ("hotel", "Of the 30 guests leaving the ballroom, a handful stop at the bar.", 30, "bar"),
+    ("hotel", "Of the 30 guests in the ballroom, four stop at the bar.", 30, "bar"),
+    ("library", "Of the 20 students in the reading room, three stop at the issue desk.", 20, "issue_desk"),
+    ("sports_centre", "Of the 12 swimmers leaving the pool, a few stop at the cafe.", 12, "cafe"),
+    ("university", "Of the 50 students leaving the lecture theatre, six stop at the coffee bar.", 50, "coffee_bar"),
+])
+def test_a_part_of_a_fronted_whole_that_stops_somewhere(read, world, prompt, whole, part):
+    groups = read(world, prompt).groups
+    assert len(groups) == 2 and groups[0].count.value == whole
+    assert groups[1].relation == "subset_of:0" and groups[1].location == part and groups[1].intent == "wait"
