@@ -409,7 +409,9 @@ class Clauses:
             if phrasal is not None:
                 candidates.append((i, phrasal[1], phrasal[0][0]))
                 continue
-            if i in used or s.after_determiner(i) or any(p.index < i < p.end for p in c.places):
+            if i in used or s.after_determiner(i) or any(p.index < i < p.end for p in c.places) or \
+                    (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
+                                               s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
             v = s.verb(i)
             if v in lx.INTENT_VERBS and not (v == "line" and s.w[i].pos != "VERB"):

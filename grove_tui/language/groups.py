@@ -346,6 +346,8 @@ class Groups:
     @staticmethod
     def _default_intent(c: Clause, scene: Clause | None) -> str:
         intent = c.intent or (scene.intent if scene is not None and scene.intent else None)
+        if c.intent is None and c.has_action and c.robot is None and any(p.prep == "at" for p in c.places):
+            return "wait"  # "..., and two crew check boarding cards at the gate desk": a job there, whatever the scene
         if intent is not None:
             return intent
         # No verb of action ("a cleaner is in the cafeteria"): people who are somewhere stay there;

@@ -86,3 +86,17 @@ def test_a_part_of_a_fronted_whole_that_stops_somewhere(read, world, prompt, who
     groups = read(world, prompt).groups
     assert len(groups) == 2 and groups[0].count.value == whole
     assert groups[1].relation == "subset_of:0" and groups[1].location == part and groups[1].intent == "wait"
+
+
+@pytest.mark.parametrize("world, prompt, location", [
+    ("hotel", "Two receptionists hand out boarding passes at the front desk.", "reception_desk"),
+    ("sports_centre", "Two staff check swimming passes at reception.", "reception_desk"),
+    ("university", "Two porters check parking permits at the main entrance.", "main_entrance"),
+    ("office", "Two guards check visitor passes at the reception desk.", "reception_desk"),
+    ("airport", "Two agents check boarding passes at gate A1.", "gate_a1"),
+    ("airport", "When boarding is called, twenty passengers leave the lounge for gate A1 and two agents check "
+                "boarding passes at gate A1.", "gate_a1"),
+])
+def test_a_job_at_a_post_whose_object_sounds_like_going(read, world, prompt, location):
+    group = read(world, prompt).groups[-1]
+    assert (group.intent, group.location) == ("wait", location)
