@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.group_counts import count_confidence, settle_count
+from grove_tui.language.leading_out import leads_out
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
@@ -269,6 +270,8 @@ class Groups:
         m, c, scene, span = g.mention, g.clause, g.scene, g.span
         text = s.span(span[0], span[1] - 1) if span[1] > span[0] else m.who
         intent = self._default_intent(c, scene)
+        if intent == "wait" and c.intent in (None, "wait") and not c.places and leads_out(s, m.last + 1):
+            intent = "walk"  # "staff guide passengers out": the leaders go (out, in an evacuation)
         followed_by = m.first >= 2 and s.low[m.first - 1] == "by" and s.low[m.first - 2] in _FOLLOWED_BY and earlier
         if followed_by:
             # "..., followed by two assistants": they go where the group before goes, behind it

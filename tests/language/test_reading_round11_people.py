@@ -100,3 +100,15 @@ def test_a_part_of_a_fronted_whole_that_stops_somewhere(read, world, prompt, who
 def test_a_job_at_a_post_whose_object_sounds_like_going(read, world, prompt, location):
     group = read(world, prompt).groups[-1]
     assert (group.intent, group.location) == ("wait", location)
+
+
+@pytest.mark.parametrize("world, prompt, leader", [
+    ("hotel", "Fire alarm: everyone in the bar evacuates, staff guide guests out.", "evacuate"),
+    ("library", "The fire alarm goes off and two librarians usher the readers out.", "evacuate"),
+    ("sports_centre", "Fire drill: the lifeguards lead the swimmers out.", "evacuate"),
+    ("hotel", "A porter leads the children outside.", "walk"),
+    ("university", "Two porters guide the students out.", "walk"),
+])
+def test_people_who_take_others_out_go_and_the_others_follow(read, world, prompt, leader):
+    *_, leaders, led = read(world, prompt).groups
+    assert (leaders.intent, led.intent) == (leader, "follow")
