@@ -28,6 +28,7 @@ from grove_tui.language.roles import Roles, assign_roles
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
+from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
 # Words after an existential "there" ("there are ten people"), which points at no place.
@@ -75,6 +76,9 @@ class Groups:
         for k, (m, clause) in enumerate(zip(mentions, clauses)):
             words = _GroupWords(m, clause, scenes.get(s.w[m.first].sentence), self._own_span(spans[k], m, robot_tokens))
             groups.append(self.group(words, evacuation, groups))
+        # "everyone in the bar and the restaurant": everyone in each (after the others, whose relations count groups)
+        groups += [g for k, m in enumerate(mentions) if (g := everyone_in_the_second_zone(
+            s, m, clauses[k], groups[k], self._own_span(spans[k], m, robot_tokens), self.notes)) is not None]
         for k, m in enumerate(mentions):
             g = groups[k]
             parent = int((g.relation or "").partition(":")[2]) if (g.relation or "").startswith("others_of:") else None

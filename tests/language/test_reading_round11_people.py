@@ -112,3 +112,18 @@ def test_a_job_at_a_post_whose_object_sounds_like_going(read, world, prompt, loc
 def test_people_who_take_others_out_go_and_the_others_follow(read, world, prompt, leader):
     *_, leaders, led = read(world, prompt).groups
     assert (leaders.intent, led.intent) == (leader, "follow")
+
+
+@pytest.mark.parametrize("world, prompt, zones", [
+    ("hotel", "Everyone in the bar and the restaurant evacuates.", ["bar", "restaurant"]),
+    ("hotel", "Fire alarm: everyone in the bar and the restaurant evacuates, staff guide guests out.",
+     ["bar", "restaurant"]),
+    ("library", "Everyone in the reading room and the cafe leaves.", ["reading_room", "cafe"]),
+    ("sports_centre", "The fire alarm sounds and everyone in the gym and the cafe evacuates.", ["gym", "cafe"]),
+    ("university", "Everyone in the library and the common room evacuates.", None),
+])
+def test_everyone_in_two_rooms_is_everyone_in_each(read, world, prompt, zones):
+    groups = [g for g in read(world, prompt).groups if g.count.kind == "whole_zone"]
+    assert len(groups) == 2 and groups[0].start != groups[1].start
+    if zones is not None:
+        assert [g.start for g in groups] == zones
