@@ -360,8 +360,8 @@ class Mentions:
     def _only_people_before(self, p: int) -> bool:
         s = self.s
         sentence = s.w[p].sentence
-        return any(s.low[k] == "only" and k + 1 < s.n and s.low[k + 1] in ("people", "person", "ones", "one")
-                   for k in range(p) if s.w[k].sentence == sentence)
+        return any(s.low[k] == "only" and next((w for w in s.low[k + 1:k + 3] if w != "other"), "") in
+                   ("people", "person", "ones", "one") for k in range(p) if s.w[k].sentence == sentence)
 
     def _exclusive_context(self, at: int) -> bool:
         """Whether the phrase at `at` is the exception to "nobody" in its sentence ("nobody ... except

@@ -100,7 +100,8 @@ class RobotClauses:
             before == 0 or s.is_punct(before - 1) or low[before - 1] in lx.CLAUSE_STARTERS | {"please"})
         subject = (first == 0 or s.is_punct(before) or low[before] in lx.CLAUSE_STARTERS
                    or s.w[before].sentence != s.w[first].sentence
-                   or (s.w[before].pos == "NUM" and before > 0 and low[before - 1] == "at"))  # "At 9 the robot ..."
+                   or (s.w[before].pos == "NUM" and before > 0 and low[before - 1] == "at")  # "At 9 the robot ..."
+                   or self._after_fronted_adverbial(i, first))
         if command:
             first = before
         elif not subject:
@@ -122,6 +123,21 @@ class RobotClauses:
         if s.w[j].pos in ("VERB", "AUX") or s.w[j].tag.startswith("VB") or self._verb_tagged_noun(j):
             return first, j, False
         return None
+
+    def _after_fronted_adverbial(self, i: int, first: int) -> bool:
+        """Whether only a phrase with no verb (a time, a manner) stands between the start of the robot's
+        sentence or clause and it, its parser's subject ("Overnight the robot patrols ...", "At night the
+        robot ...")."""
+        s = self.s
+        if s.w[i].dep != "nsubj" or s.w[s.w[i].head].dep not in ("ROOT", "ccomp", "conj"):
+            return False  # the subject of its sentence's main verb, not of "every time the robot passes"
+        k = first - 1
+        while k >= 0 and not s.is_punct(k) and s.w[k].sentence == s.w[first].sentence:
+            if s.w[k].pos in ("VERB", "AUX") or s.w[k].dep in ("nsubj", "nsubjpass") or first - k > 3 or \
+                    s.low[k] in lx.ROBOT_WORDS or s.low[k] in lx.CLAUSE_STARTERS:
+                return False  # a short phrase only: "A nervous intern steps aside every time the robot ..." has a subject
+            k -= 1
+        return k < first - 1
 
     def _phrase_start(self, i: int, taken: set[int]) -> int:
         """The first word of the robot's noun phrase: "a delivery robot", "the small cleaning robot" (the

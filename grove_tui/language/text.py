@@ -54,6 +54,14 @@ _YEAR_PERSON = re.compile(r"\b(first|second|third|fourth|final|1st|2nd|3rd|4th)-
                           r"undergrad\w*|pupils?|lectures?|class\w*|courses?|modules?|exams?|groups?|seminars?|"
                           r"tutorials?|rooms?|labs?|halls?|projects?)\b)", re.IGNORECASE)
 
+# "does its rounds of the gallery", "is making the rounds", "goes on its rounds": patrols.
+_ROUNDS = re.compile(r"\b(do|does|did|done|doing|make|makes|made|making|go\s+on|goes\s+on|went\s+on|gone\s+on|"
+                     r"going\s+on)\s+(?:its|his|her|their|the|our|my)\s+rounds\b(?:\s+(?:of|in|through|around|round)\b)?",
+                     re.IGNORECASE)
+_PATROL_FORMS = {"do": "patrol", "make": "patrol", "does": "patrols", "makes": "patrols", "goes": "patrols",
+                 "go": "patrol", "did": "patrolled", "made": "patrolled", "done": "patrolled", "went": "patrolled",
+                 "gone": "patrolled", "doing": "patrolling", "making": "patrolling", "going": "patrolling"}
+
 
 def normalise(text: str) -> str:
     """The prompt as the reader parses it (see the module doc); "" when nothing readable is left."""
@@ -67,6 +75,7 @@ def normalise(text: str) -> str:
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
+    kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
     return " ".join(kept.split())
 
 

@@ -127,3 +127,27 @@ def test_everyone_in_two_rooms_is_everyone_in_each(read, world, prompt, zones):
     assert len(groups) == 2 and groups[0].start != groups[1].start
     if zones is not None:
         assert [g.start for g in groups] == zones
+
+
+@pytest.mark.parametrize("world, prompt, location", [
+    ("library", "Overnight the robot does its rounds of the reading room.", "reading_room"),
+    ("hotel", "At night the robot goes on its rounds of the lobby.", "lobby"),
+    ("hotel", "The robot is doing its rounds in the bar.", "bar"),
+    ("library", "The robot makes its rounds of the cafe while two students wait at the help desk.", "cafe"),
+    ("sports_centre", "Late at night the robot patrols the gym.", "gym"),
+])
+def test_rounds_are_a_patrol_and_a_fronted_time_keeps_the_robot(read, world, prompt, location):
+    robot = read(world, prompt).robot
+    assert robot is not None and (robot.task, robot.location) == ("patrol", location)
+
+
+@pytest.mark.parametrize("world, prompt, label", [
+    ("library", "The only other person in the building is a guard at the help desk.", "guard"),
+    ("hotel", "The robot patrols the bar; the only other person in the hotel is a porter at the front desk.", "porter"),
+    ("sports_centre", "The only other person in the centre is a lifeguard by the pool.", "lifeguard"),
+    ("university", "The only other people in the library are two students.", "student"),
+    ("office", "The only other person in the office is a cleaner in the kitchen.", "cleaner"),
+])
+def test_the_only_other_person_is_the_one_named_after(read, world, prompt, label):
+    groups = read(world, prompt).groups
+    assert [g.label for g in groups] == [label] and groups[0].count.kind == "exclusive"
