@@ -81,8 +81,12 @@ def unlisted_escorted(s: Sentence, i: int) -> bool:
     if word.pos not in ("NOUN", "PROPN") or word.dep != "dobj" or word.head == i or not s.low[i].isalpha() or \
             s.verb(word.head) not in _PEOPLE_ONLY_OBJECTS or _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
         return False
-    before = s.low[i - 1] if i > 0 else ""
-    return before in _OPENERS or (i > 0 and s.w[i - 1].pos == "NUM") or before in ("his", "her", "their")
+    first = i
+    while first > 0 and s.w[first - 1].head == i and s.w[first - 1].dep in ("amod", "compound") and \
+            s.w[first - 1].pos in ("ADJ", "VERB", "NOUN"):
+        first -= 1  # "escort a handcuffed smuggler", "usher two unruly fans"
+    before = s.low[first - 1] if first > 0 else ""
+    return before in _OPENERS or (first > 0 and s.w[first - 1].pos == "NUM") or before in ("his", "her", "their")
 
 
 @lru_cache(maxsize=32)

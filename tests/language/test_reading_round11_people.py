@@ -151,3 +151,15 @@ def test_rounds_are_a_patrol_and_a_fronted_time_keeps_the_robot(read, world, pro
 def test_the_only_other_person_is_the_one_named_after(read, world, prompt, label):
     groups = read(world, prompt).groups
     assert [g.label for g in groups] == [label] and groups[0].count.kind == "exclusive"
+
+
+@pytest.mark.parametrize("world, prompt, led", [
+    ("hotel", "Two guards escort a handcuffed smuggler from the lobby to the exit.", "smuggler"),
+    ("library", "A librarian escorts a tearful truant to the help desk.", "truant"),
+    ("hotel", "Two officers escort a handcuffed poacher from the lobby to the exit.", "poacher"),
+    ("sports_centre", "Two stewards escort a drunken streaker from the sports hall to reception.", "streaker"),
+    ("university", "Two porters escort a dishevelled gatecrasher from the bar to the main entrance.", "gatecrasher"),
+])
+def test_someone_escorted_with_an_adjective_is_a_group(read, world, prompt, led):
+    groups = read(world, prompt).groups
+    assert len(groups) == 2 and groups[1].label == led and groups[1].intent == "follow"
