@@ -394,13 +394,14 @@ ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct pr
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave",
-    "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap",
+    "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap "
+                "ask talk chat speak question consult query hail thank",
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
              "hit punch push slap smack thump whack bash ram barge heckle taunt abuse grab tip topple vandalise "
-             "vandalize headbutt fight attack assault damage wreck rock climb ride",
+             "vandalize headbutt fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
 from grove_tui.language.tokens import verb_lemma
 
 # Hostility to the robot: shouting or throwing something at it ("shouts at the robot", "throws a cup
@@ -162,6 +163,8 @@ def _after_robot(s: Sentence, r: int) -> str | None:
 
 def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int, r: int) -> str | None:
     for i in sorted((x for x in own if since < x < r), reverse=True):
+        if in_place_name(s, i) or _sends_robot(s, i, r) or speaks_elsewhere(s, i, r):
+            continue  # "queue at both check-in counters while the robot ...", "ask the robot to fetch ..."
         for phrase, interaction in lx.ROBOT_PHRASES.items():
             last = i + len(phrase) - 1
             if s.phrase_words(i, len(phrase), ownset) == phrase and not (
@@ -183,6 +186,12 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
         if s.lemma(i) in lx.ROBOT_NOUNS:
             return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"
     return None
+
+
+def _sends_robot(s: Sentence, i: int, r: int) -> bool:
+    """Whether the verb at i tells the robot at r what to do ("asks the robot to fetch a wheelchair"):
+    a command to it, not talking to it ("asks the robot the way")."""
+    return s.verb(i) in lx.ROBOT_COMMAND_VERBS and r + 2 < s.n and s.low[r + 1] == "to" and s.verb_follows(r + 2)
 
 
 def _sent_to_robot(s: Sentence, ownset: set[int], i: int, r: int) -> bool:

@@ -21,6 +21,7 @@ from grove_tui.language.model import FieldConfidence, RobotReading
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.robot_out import out_exit
 from grove_tui.language.sequences import robot_sequel
 from grove_tui.language.tokens import verb_lemma
 
@@ -29,6 +30,10 @@ _TASK_VERBS = lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERB
 _OFF_PHRASES = frozenset({("power", "down"), ("shut", "down"), ("switch", "off"), ("turn", "off"), ("power", "off")})
 # Words after a verb of motion that say the robot goes by ("rolls past", "glides by", "zips along").
 _PASSING_WORDS = frozenset("past by through along across over".split())
+# What the robot does for people where it stands ("hands out leaflets near the fountain", "greets
+# visitors at the entrance", "serves drinks at the bar"): a wait at the place.
+_SERVING_VERBS = frozenset("hand give greet welcome serve distribute offer dispense pour sell answer entertain "
+                           "demonstrate display show sign register check".split())
 _PEOPLE_PRONOUNS = ("they", "he", "she", "we", "people", "everyone", "everybody", "someone", "somebody",
                     "nobody", "visitors", "staff")
 
@@ -262,6 +267,13 @@ class RobotClauses:
                     roles[role] = name  # the last destination said, the first start and location
             texts.append(s.span(rc.tokens[0], rc.tokens[-1]))
         start, destination, location = roles["start"], roles["destination"], roles["location"]
+        if task in ("cross", "wait") and destination is None:
+            # "the robot guides the visitors in the cafeteria out": from there to the nearest exit
+            exit_ = next((e for rc in found if (e := out_exit(s, rc.tokens[0], [start, *via, location])) is not None),
+                         None)
+            if exit_ is not None:
+                task, start = "cross", start or (via[0] if via else location)
+                destination, location, via = exit_, None, [v for v in via if v != start]
         if task is None or (task == "cross" and not (start or destination or via)
                             and not any(self._passes_by(rc.verb) for rc in found)):
             return None  # "when the robot comes near": it moves, but the sentence sets no route
@@ -324,9 +336,9 @@ class RobotClauses:
             return "follow"
         if verb in lx.ROBOT_PATROL_VERBS or lx.INTENT_VERBS.get(verb) == "wander" or clause.intent == "wander":
             return "patrol"
-        if verb in lx.ROBOT_WAIT_VERBS or (verb and lx.INTENT_VERBS.get(verb) == "wait"):
+        if verb in lx.ROBOT_WAIT_VERBS or verb in _SERVING_VERBS or (verb and lx.INTENT_VERBS.get(verb) == "wait"):
             return "wait"
-        if verb in lx.ROBOT_CROSS_VERBS or lx.INTENT_VERBS.get(verb) in ("walk", "evacuate") or (command and not verb):
+        if verb in lx.ROBOT_CROSS_VERBS or verb in lx.LEADING_VERBS or lx.INTENT_VERBS.get(verb) in ("walk", "evacuate") or (command and not verb):
             return "cross"
         return None
 
