@@ -101,3 +101,20 @@ def _exits(world):
     extra = Path(__file__).resolve().parents[2] / "eval" / "understanding" / "worlds" / f"{world}.yaml"
     loaded = load_world(extra if extra.exists() else world)
     return {d.name for d in loaded.exits()}
+
+
+# ---- F. the place of an event is nobody's start when people say where they are ---------------------
+
+@pytest.mark.parametrize("world,prompt,event_place,own", [
+    ("hospital", "A fire breaks out in radiology: the robot guides the visitors in the cafeteria out.",
+     "radiology", "cafeteria"),
+    ("hospital", "A pipe bursts in the pharmacy. The robot leads the patients in the main waiting room out.",
+     "pharmacy", "main_waiting_room"),
+    ("hotel", "A fire starts in the kitchen: the robot guides the guests in the bar out.", "kitchen", "bar"),
+    ("library", "The alarm sounds in the sorting room. The robot escorts the readers in the reading room out.",
+     "sorting_room", "reading_room"),
+    ("museum", "Smoke fills the cafe: the robot ushers the children in the lobby out.", "cafe", "entrance_hall"),
+])
+def test_the_place_of_an_event_is_nobodys_start(read, world, prompt, event_place, own):
+    group = read(world, prompt).groups[0]
+    assert group.start != event_place and event_place not in group.via and own in (group.start, group.location)
