@@ -19,7 +19,7 @@ from grove_tui.language.counts import Quantifier, count_of, negative_at, number_
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
-from grove_tui.language.objects import PeopleObjects
+from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -288,7 +288,7 @@ class Mentions:
         if at > 0 and s.w[at - 1].pos in ("DET", "ADJ", "NUM") and not (
                 s.w[at - 1].pos == "NUM" and s.w[at - 1].head < at - 1 and s.low[at] in lx.DETERMINERS | lx.APPROXIMATE_WORDS):
             return False  # inside a noun phrase that starts earlier ("the only people"); not "At 8:15 the ..."
-        if at > 0 and s.w[at - 1].pos == "SCONJ" and s.low[at - 1] not in lx.CLAUSE_STARTERS:
+        if at > 0 and nobody_after_subordinator(s, at):
             return False  # "... until someone collects them", "if anyone asks": nobody who is there
         q = quantifier(s, at)
         begin = at

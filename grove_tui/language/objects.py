@@ -13,6 +13,25 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
 
+# Words after "until" that name someone who is there, when they take someone along or walk ("... until a
+# guard takes her to the desk"), not "until someone collects them" nor "until a nurse calls them".
+_SOMEONE_NAMED = frozenset({"a", "an", "the", "her", "his", "their", "its", "two", "three", "four"})
+
+
+def nobody_after_subordinator(s: Sentence, at: int) -> bool:
+    """Whether the people at `at` come after a word that names nobody who is there ("... until someone
+    collects them", "if anyone asks"); after "until", a person said with an article is somebody ("...
+    cries near the toy store until a guard takes her to the information desk")."""
+    p = at - 1
+    if s.w[p].pos != "SCONJ" or s.low[p] in lx.CLAUSE_STARTERS:
+        return False
+    if s.low[p] != "until" or s.low[at] not in _SOMEONE_NAMED:
+        return True
+    verb = next((k for k in range(at + 1, min(at + 5, s.n)) if s.w[k].pos in ("VERB", "AUX")), None)
+    return verb is None or not (verb_lemma(s.low[verb]) in lx.LEADING_VERBS  # not "until a nurse calls them"
+                                or lx.INTENT_VERBS.get(verb_lemma(s.low[verb])) == "walk")
+
+
 class PeopleObjects:
     def __init__(self, s: Sentence, people: People) -> None:
         self.s = s

@@ -118,3 +118,24 @@ def _exits(world):
 def test_the_place_of_an_event_is_nobodys_start(read, world, prompt, event_place, own):
     group = read(world, prompt).groups[0]
     assert group.start != event_place and event_place not in group.via and own in (group.start, group.location)
+
+
+# ---- G. a person after "until" is somebody who is there --------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,who,place", [
+    ("mall", "A lost child cries near the toy store until a guard takes her to the information desk.", "guard",
+     "information_desk"),
+    ("primary_school", "A pupil sits in the corridor until the teacher takes him to the office.", "teacher",
+     "school_office"),
+    ("hospital", "An old man waits in the cafeteria until a nurse walks him to the pharmacy.", "nurse", "pharmacy"),
+    ("hotel", "A boy sulks in the lobby until his mother takes him to the restaurant.", "mother", "restaurant"),
+    ("library", "A toddler plays by the main entrance until a librarian leads her to the reading room.",
+     "librarian", "reading_room"),
+])
+def test_a_person_after_until_is_somebody(read, world, prompt, who, place):
+    groups = read(world, prompt).groups
+    assert len(groups) == 2 and who in groups[1].who and groups[1].destination == place
+
+
+def test_someone_after_until_is_nobody_there(read):
+    assert len(read("mall", "Two boys wait by the fountain until someone collects them.").groups) == 1
