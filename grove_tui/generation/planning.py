@@ -466,14 +466,19 @@ class _StartPicker:
             k = int(np.argmin(d))
         return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
 
-    def via_point(self, zone: str, a: Point, b: Point) -> Point:
-        """A free point of `zone` (off queues and circles) nearest to the segment a-b."""
+    def _passable(self, zone: str) -> np.ndarray:
+        """The zone's free floor the robot may drive over (off queues and circles when it can be)."""
         pts = self.space.cells(zone)
         if self.robot_planner is not None and len(pts):
             keep = np.array([self.robot_planner.grid.is_free(x, y) for x, y in pts], dtype=bool)
             pts = pts[keep] if keep.any() else pts
         if not len(pts):
             raise GenerationError(f"zone '{zone}' has no free floor for the robot to pass through")
+        return pts
+
+    def via_point(self, zone: str, a: Point, b: Point) -> Point:
+        """A free point of `zone` (off queues and circles) nearest to the segment a-b."""
+        pts = self._passable(zone)
         d = [_point_segment_distance((float(x), float(y)), a, b) for x, y in pts]
         k = int(np.argmin(d))
         return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
@@ -488,12 +493,7 @@ class _StartPicker:
         door = min(doors, key=lambda d: float(np.min(np.hypot(samples[:, 0] - d.position[0],
                                                                samples[:, 1] - d.position[1]))))
         inside = door.inward_point(ENTRY_DEPTH) if door.zone == zone else door.outward_point(ENTRY_DEPTH)
-        pts = self.space.cells(zone)
-        if self.robot_planner is not None and len(pts):
-            keep = np.array([self.robot_planner.grid.is_free(x, y) for x, y in pts], dtype=bool)
-            pts = pts[keep] if keep.any() else pts
-        if not len(pts):
-            raise GenerationError(f"zone '{zone}' has no free floor for the robot to pass through")
+        pts = self._passable(zone)
         k = int(np.argmin(np.hypot(pts[:, 0] - inside[0], pts[:, 1] - inside[1])))
         return (round(float(pts[k, 0]), 3), round(float(pts[k, 1]), 3))
 

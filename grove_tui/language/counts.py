@@ -15,6 +15,8 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma
 
 _DECIMAL = re.compile(r"\d+\.\d+")
+# Words a school year or stage is named by, before its number ("year 6", "grade 9", "class 3").
+COHORT_WORDS = frozenset("year grade class form level stage standard".split())
 
 
 class Quantifier(NamedTuple):
@@ -80,6 +82,14 @@ def decimal_at(s: Sentence, i: int) -> tuple[float, int] | None:
     return None
 
 
+def cohort_number(s: Sentence, i: int) -> bool:
+    """Whether the number at word i names a school year or stage ("four year 6 pupils"): after a
+    cohort word and before a noun, it counts nobody."""
+    return (0 < i < s.n - 1 and s.low[i - 1] in COHORT_WORDS and s.w[i].pos == "NUM" and number_at(s, i) is not None
+            and number_at(s, i + 1) is None and s.w[i + 1].pos in ("NOUN", "PROPN", "ADJ")
+            and lemma(s.low[i + 1]) not in lx.DURATION_UNITS)
+
+
 def negative_at(s: Sentence, i: int) -> bool:
     """Whether a negative number starts at word i ("-5 people", "minus 3 nurses"), not a range ("3-5")."""
     word = s.low[i]
@@ -95,6 +105,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
     low = s.low
     if j >= s.n:
         return None
+    if cohort_number(s, j):
+        return None  # "four year 6 pupils": the 6 is their school year
     approx = False
     k = j
     if low[k] in lx.APPROXIMATE_WORDS and k + 1 < s.n and (number_at(s, k + 1) is not None

@@ -17,6 +17,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.leading_out import leads_out
+from grove_tui.language.list_items import own_participle
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
@@ -176,7 +177,8 @@ class Groups:
                 continue  # "two of the six developers follow it": the six do not; "follow their guide": an object
             if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
-                    not any(s.low[x] in (";", ".", ":") for x in between):
+                    not any(s.low[x] in (";", ".", ":") for x in between) and \
+                    not (clauses[k].places and own_participle(s, mentions[k + 1])):  # "..., and a driver walking to"
                 clauses[k] = replace(clauses[k + 1], places=clauses[k].places + clauses[k + 1].places)
         for k, m in enumerate(mentions):
             if k == 0 or m.exception_of != k - 1:

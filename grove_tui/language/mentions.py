@@ -199,7 +199,7 @@ class Mentions:
         prev = s.low[p]
         if s.is_punct(p) or s.w[p].sentence != s.w[at].sentence:
             return True
-        if event_after_time_word(s, p, at) or cause_of_a_clearing(s, p, at):
+        if event_after_time_word(s, p, at) or cause_of_a_clearing(s, p, at) or self.people.describing_a_place(at):
             return False  # "After the night shift, ...", "at the end of the class": a time, no people
         if prev == "with" and self._conversation_partner(p, at):
             return False
@@ -314,7 +314,7 @@ class Mentions:
                             or s.low[head + 1] in lx.PLACE_PREPOSITIONS):
                     return True  # "After lunch twelve patients queue at ...": the verb tagged a noun they name
                 return s.w[k].dep in ("nsubj", "nsubjpass") and (s.w[head].pos in ("VERB", "AUX") or verb_noun)
-            if s.w[k].pos not in ("DET", "NUM", "ADJ") and s.low[k] not in lx.NP_MODIFIERS:
+            if s.w[k].pos not in ("DET", "NUM", "ADJ") and s.low[k] not in lx.NP_MODIFIERS and not self.people.kind_word(k):
                 return False
         return False
 

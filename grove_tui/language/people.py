@@ -7,11 +7,13 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
+from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.place_modifiers import names_a_place
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.where_people import describes_a_place
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
                                                 unlisted_subject)
 
@@ -60,6 +62,8 @@ class People:
             return False  # "the robot stands guard at the door": a duty, nobody
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
             return True
+        if compound_head_person(s, i) or head_person(s, i):
+            return True  # "two team leaders", "the head goes back to her office"
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
@@ -75,6 +79,14 @@ class People:
             return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
                 and not known_word(s.low[i]) and near_person_noun(s.low[i]) is not None)
+
+    def kind_word(self, k: int) -> bool:
+        """Whether word k is inside a modifier naming a person's kind ("temp", "night-shift", "year 6")."""
+        return kind_word(self.s, k)
+
+    def describing_a_place(self, at: int) -> bool:
+        """Whether the phrase at `at` only describes a place ("the room where poorly children wait")."""
+        return describes_a_place(self.s, at)
 
     def multiword_end(self, i: int) -> bool:
         """Whether word i ends a person named by two words ("au pair", "station master")."""
@@ -235,6 +247,10 @@ class People:
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
+            after = modifier_end(s, k)
+            if after is not None and after < s.n and self.is_person_noun(after):
+                k = after  # "night-shift workers", "year 6 pupils": what kind, no count
+                continue
             person = self.is_person_noun(k)
             if person and self._does_only_what_things_do(k):
                 return None  # "two fans whir in the server room"

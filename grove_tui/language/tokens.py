@@ -67,6 +67,10 @@ def lemma(word: str) -> str:
     return w[:-1]
 
 
+# "queue" misspelt: a "q", then only "u"s and "e"s, then a verb's ending or none.
+_QUEUE_TYPO = re.compile(r"q([ue]{1,5})(?:ing|in|ed|d|s)?")
+
+
 @lru_cache(maxsize=4096)
 def verb_lemma(word: str) -> str:
     """The base form of a verb the lexicon knows ("queuing" -> "queue", "stares" -> "stare"); else `word`."""
@@ -75,6 +79,9 @@ def verb_lemma(word: str) -> str:
         return _IRREGULAR_VERBS[w]
     if w in _KNOWN_VERBS:
         return w
+    typo = _QUEUE_TYPO.fullmatch(w)
+    if typo is not None and "u" in typo.group(1):
+        return "queue"  # "queing", "qeueing", "queuin": "queue" misspelt, its vowels shuffled
     candidates: list[str] = []
     if w.endswith("ing") and len(w) > 4:
         stem = w[:-3]
