@@ -280,14 +280,12 @@ def _leader_index(reading: PromptReading, group: GroupReading) -> int | None:
 
 
 def _following_seconds(world: World, group: GroupReading) -> float:
-    """How long a follower follows: about the leader's walk from where they start to where they go
-    (a path is some 1.4 times the straight line, at 1 m/s, and time to set off), after which it walks
-    on to the place itself."""
-    points = [_point_of(world, p) for p in (group.start, group.destination or group.location) if p]
-    if len(points) < 2 or points[0] is None or points[1] is None:
+    """How long a follower follows: about the leader's walk from where they start to where they go,
+    after which it walks on to the place itself (a minute when the sentence gives no start or place)."""
+    places = [p for p in (group.start, group.destination or group.location) if p]
+    if len(places) < 2 or any(_point_of(world, p) is None for p in places):
         return 60.0
-    metres = math.dist(points[0], points[1]) * 1.4
-    return float(min(max(round(metres / 1.0 + 10.0), 20.0), 600.0))
+    return _walk_seconds(world, places[0], places[1:], 1.0)
 
 
 def _point_of(world: World, name: str) -> tuple[float, float] | None:
