@@ -444,6 +444,10 @@ class _StayProbe(_Probe):
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
         since = f.t[:, None] >= self.arrived[None, :]
+        if self.claim.seconds:
+            # "wait for 90 seconds (and then walk on)": the asked wait after arriving is what is judged;
+            # leaving once it is over is what the sentence says, not a broken wait
+            since &= f.t[:, None] < self.arrived[None, :] + self.claim.seconds
         self.after += (since & present).sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
@@ -462,7 +466,8 @@ class _StayProbe(_Probe):
         mean_share = float(share[arrived].mean()) if arrived.any() else 0.0
         text = f"{k}/{n} stayed at {self.where()}"
         if arrived.any():
-            text += f" ({mean_share:.0%} of the time after arriving"
+            text += f" ({mean_share:.0%} of the {asked:g} s after arriving" if asked else \
+                f" ({mean_share:.0%} of the time after arriving"
             text += f", {float(stayed_for[arrived].min()):.0f} s at least)" if asked else ")"
         else:
             text = f"0/{n} got to {self.where()}"

@@ -493,6 +493,11 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         if place is not None:
             steps.append(DraftNode("GoTo", {"target": place}))
         steps.append(DraftNode("Wait", {"duration": float(group.wait_seconds or DEFAULT_WAIT_SECONDS)}))
+        onward = walks_on_to(group, world)
+        if onward is not None:
+            # "wait at goods in for 90 seconds and then walk to the canteen": the wait, then the walk
+            steps.append(DraftNode("FollowVelocityField", {"exit": onward}) if _is_exit(world, onward)
+                         else DraftNode("GoTo", {"target": onward}))
         return _sequence(via + steps)
     # walk, evacuate, follow
     destination = group.destination
@@ -517,6 +522,18 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
             return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": 0.0})])
         destination = _nearest_exit(world, None, group.avoid)
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
+
+
+def walks_on_to(group: GroupReading, world: World) -> str | None:
+    """Where a waiting group goes once its wait is over: the reading's destination when it waits
+    somewhere else ("wait in the lobby for two minutes, then go to the pharmacy"; "wait at the pharmacy"
+    and "walk to the cafeteria and wait there" read the same place twice and go nowhere after)."""
+    if _base_intent(group) != "wait" or reacts_only(group) or not group.location or not group.destination:
+        return None
+    here, there = world.zone_of_place(group.location), world.zone_of_place(group.destination)
+    if there is None or here == there:
+        return None
+    return group.destination
 
 
 def _largest_neighbour(world: World, zone: str) -> str | None:
@@ -909,6 +926,18 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claim = Claim("stay", "where they are", f"wait in {g.spawn}", zone=g.spawn, place=g.spawn,
                           needs_seconds=(seconds or 10.0) + 5.0)
         claims.append(replace_seconds(claim, seconds))
+        onward = walks_on_to(r, world)
+        if onward is not None:
+            waited = seconds or DEFAULT_WAIT_SECONDS
+            if _is_exit(world, onward):
+                claims.append(Claim("evacuate", onward, f"then leave through {onward}", exits=(onward,),
+                                    needs_seconds=timing.evacuation_eta(n) + waited))
+            else:
+                claim = _place_claim("reach", onward, f"then walk to {onward}", world, n, timing.eta(onward) + waited)
+                if not _reaches(world, onward, _tree_places(g.tree)):
+                    claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
+                                  zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
+                claims.append(claim)
     elif base == "wander":
         zone = world.zone_of_place(r.location or r.destination or r.start or "") or g.spawn
         claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
