@@ -775,6 +775,10 @@ class _RobotFollowProbe(_RobotProbe):
         if d is None:
             return
         within = np.isfinite(d) & (d <= (self.claim.distance or 3.0))
+        if 1 < self.cols.size <= CHAIN_MAX:
+            # eight tourists behind a guiding robot walk as a crowd, the last ones 5 m back but with the others
+            pos = f.pos[:, self.cols]
+            within = _along_the_chain(pos, within, np.isfinite(pos[..., 0]))
         for j in np.flatnonzero(np.isinf(self.since) & within.any(axis=0)):
             self.since[j] = f.t[np.argmax(within[:, j])]
         speed = np.hypot(f.robot_vel[:, 0], f.robot_vel[:, 1]) if f.robot_vel is not None else np.zeros(f.t.size)
@@ -791,7 +795,8 @@ class _RobotFollowProbe(_RobotProbe):
         enough = self.moving * checker.sample_dt >= 3.0
         ok = reached & enough & (share >= FOLLOW_SHARE)
         d = self.claim.distance or 3.0
-        text = f"{int(ok.sum())}/{n} followed it within {d:g} m"
+        text = f"{int(ok.sum())}/{n} followed it within {d:g} m" + \
+            (f" or {CHAIN_LINK:g} m of one who is" if 1 < self.cols.size <= CHAIN_MAX else "")
         if reached.any():
             text += f" ({float(share[reached].mean()):.0%} of its moving time since reaching it, first at " \
                     f"{_when(float(self.since[reached].min()))})"

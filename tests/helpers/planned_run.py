@@ -6,7 +6,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from grove_tui.analysis.outcomes import check_bundle
+from grove_tui.analysis.metrics import iter_trajectory_chunks
+from grove_tui.analysis.outcomes import OutcomeChecker, check_bundle
 from grove_tui.generation.draft import Draft, DraftGroup
 from grove_tui.generation.pipeline import GenerationResult
 from grove_tui.generation.planning import OperationalPlan, plan_operational
@@ -17,7 +18,8 @@ from grove_tui.generation.rois import select_rois
 from grove_tui.generation.route_time import Leg, planned_routes, planning_mode
 from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
-from grove_tui.scenario.bundle import write_bundle
+from grove_tui.scenario.bundle import load_scenario, write_bundle
+from grove_tui.scenario.events import read_events
 from grove_tui.scenario.model import Scenario
 from grove_tui.scenario.report import GroundingReport
 from grove_tui.services.session import GroveSession
@@ -37,6 +39,15 @@ class PlannedRun:
         """Simulate the bundle for `seconds` and check its report on the run."""
         GroveSession().simulate(self.bundle, seconds)
         return check_bundle(self.bundle, write=False)[0]
+
+    def check(self, planned: GroundingReport, world: World) -> GroundingReport:
+        """Another planned report (claims moved to other members) checked on the run `run` made."""
+        checker = OutcomeChecker(planned, load_scenario(self.bundle), world)
+        ids, _, chunks = iter_trajectory_chunks(self.bundle / "trajectories.csv")
+        checker.set_ids(ids)
+        for chunk in chunks:
+            checker.add(chunk)
+        return checker.result(read_events(self.bundle / "events.jsonl"))
 
 
 def plan_by_hand(world: World, preset_name: str, prompt: str, groups: tuple[DraftGroup, ...],
