@@ -357,10 +357,10 @@ class Mentions:
         return prev in lx.EXCEPT_WORDS - {"but"} or (prev == "from" and before == "apart") or \
             (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
 
-    def _only_people_before(self, p: int) -> bool:
+    def _only_people_before(self, p: int, other: bool = True) -> bool:  # "the only other person": one more, not all
         s = self.s
         sentence = s.w[p].sentence
-        return any(s.low[k] == "only" and next((w for w in s.low[k + 1:k + 3] if w != "other"), "") in
+        return any(s.low[k] == "only" and next((w for w in s.low[k + 1:k + 3] if w != "other" or not other), "") in
                    ("people", "person", "ones", "one") for k in range(p) if s.w[k].sentence == sentence)
 
     def _exclusive_context(self, at: int) -> bool:
@@ -373,7 +373,7 @@ class Mentions:
                                                          s.low[k + 1] in ("one", "people", "person", "body"))
                          or s.low[k] in ("empty", "deserted") for k in words)
         near = [s.low[k] for k in words if k < at][-2:]
-        if near[-1:] in (["are"], ["is"]) and self._only_people_before(at - 1):
+        if near[-1:] in (["are"], ["is"]) and self._only_people_before(at - 1, other=False):
             return True
         return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"]
                                or near == ["apart", "from"])
@@ -559,7 +559,7 @@ class Mentions:
         if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
             return Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
-        singular = s.lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
+        singular = s.lemma(head) == low[head] and not self.people.plural_word(head)  # "the injured": some people
         label = self.people.label(head)
         if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
             return None  # "... one person; the person wanders around": the same people again
@@ -567,7 +567,7 @@ class Mentions:
         collective = self.collectives.collective(head)
         if collective is not None:
             return collective
-        if det in ("a", "an") or (singular and det == "the"):
+        if det in ("a", "an") or (singular and (det == "the" or det in _POSSESSIVES and low[at - 1] == "and")):
             kind = "exclusive" if exclusive else "exact"
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:

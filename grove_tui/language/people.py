@@ -8,7 +8,10 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
+from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
+from grove_tui.language.agent_compounds import agent_compound
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
@@ -60,10 +63,10 @@ class People:
             return False
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
             return False  # "the robot stands guard at the door": a duty, nobody
-        if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
-            return True
-        if compound_head_person(s, i) or head_person(s, i):
-            return True  # "two team leaders", "the head goes back to her office"
+        if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i) or adjective_person(s, i):
+            return True  # "a drunk kicks the robot": an adjective standing for a person
+        if compound_head_person(s, i) or head_person(s, i) or agent_compound(s, i):
+            return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
@@ -78,7 +81,11 @@ class People:
         if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
             return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
-                and not known_word(s.low[i]) and near_person_noun(s.low[i]) is not None)
+                and not known_word(s.low[i]) and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
+
+    def plural_word(self, k: int) -> bool:
+        """Whether a person word that looks singular names some people ("staff", "police", "the injured")."""
+        return self.s.low[k] in PLURAL_WORDS
 
     def kind_word(self, k: int) -> bool:
         """Whether word k is inside a modifier naming a person's kind ("temp", "night-shift", "year 6")."""

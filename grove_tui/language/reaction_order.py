@@ -1,0 +1,44 @@
+"""Which reaction to the robot a clause gives when it names the robot twice ("waves at the robot and
+then follows it"), and going "after" the robot by a verb no list names ("toddles after it")."""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.second_verbs import second_verb
+from grove_tui.language.sentence import Sentence
+
+# Looking is what people do first, and any act that follows it is the reaction ("stares at the robot,
+# then runs away from it": avoid); coming over, then following, is more of the same act. A later
+# reaction of this order replaces an earlier one; between avoiding, blocking and coming closer the
+# first said stays (neither is a step on the other).
+_STEPS = ("look", "approach", "follow")
+
+
+def later_reaction(earlier: str | None, later: str | None) -> str | None:
+    """The reaction of one person to the robot said twice: the later if the earlier was only looking
+    or it goes further along look -> approach -> follow ("waves at the robot and toddles after it":
+    follow), else the earlier."""
+    if earlier is None or (earlier == "look" and later is not None):
+        return later
+    if later in _STEPS and earlier in _STEPS and _STEPS.index(later) > _STEPS.index(earlier):
+        return later
+    return earlier
+
+
+def goes_after(s: Sentence, i: int, r: int) -> bool:
+    """Whether word i, a verb (by the parser, the lexicon, or its place after "and"), goes "after"
+    the robot at r ("trots after the robot", "toddles after it"): following it."""
+    k = i + 1
+    if k >= r or s.low[k] != "after":
+        return False
+    if any(s.low[j] not in lx.DETERMINERS for j in range(k + 1, r)):
+        return False  # "waits after the talk for the robot": something else comes after
+    return s.w[i].pos == "VERB" or s.verb(i) != s.low[i] or second_verb(s, i)
+
+
+def verb_in(s: Sentence, i: int, verbs: frozenset[str]) -> bool:
+    """Whether word i is one of `verbs`, in its base form or its "-s" form, which the lexicon may not
+    know and the small model may tag a noun ("a drunk shouts at the robot")."""
+    word = s.low[i]
+    return s.verb(i) in verbs or (word.endswith("s") and (word[:-1] in verbs or
+                                                          word.endswith("es") and word[:-2] in verbs))

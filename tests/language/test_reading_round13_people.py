@@ -1,0 +1,124 @@
+"""Round 13 of the reader's people: a person and a companion named by a possessive, or a kin couple,
+are one group of two who keep together (the pair convention); compound agent nouns keep their count;
+one person acting twice on the robot is one group with the later, further reaction; "the only other
+person" is one more person, not everyone; an adjective standing for a person is one."""
+
+import pytest
+
+PAIRS = [
+    ("hotel", "A mother and her toddler walk from the lobby to the restaurant.", "mother and toddler"),
+    ("residential", "A plumber and his apprentice walk from the kitchen to the bathroom.", "plumber and apprentice"),
+    ("primary_school", "The teacher and her assistant wait in the foyer.", "teacher and assistant"),
+    ("residential", "Mum and Dad head off to their bedroom.", "mum and dad"),
+    ("residential", "Grandma and grandpa doze on the sofa.", "grandma and grandpa"),
+    ("hotel", "A husband and wife check in at reception.", "husband and wife"),
+    ("hotel", "The bride and groom walk from the lobby to the bar.", "bride and groom"),
+    ("library", "An old man and his granddaughter walk to the reading room.", "man and granddaughter"),
+]
+
+
+@pytest.mark.parametrize("world,prompt,label", PAIRS)
+def test_a_pair_is_one_group_of_two_together(read, world, prompt, label):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    g = groups[0]
+    assert (g.label, g.count.value, g.together) == (label, 2, True)
+
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("hospital", "Two surgeons and an anaesthetist walk to reception.", [2, 1]),
+    ("residential", "The au pair and the baby sit in the living room.", [1, 1]),
+    ("mall", "Mum and two kids walk to the food court.", [1, 2]),
+    ("hospital", "A porter wheels a patient to x-ray and her husband follows.", [1, 1, 1]),
+    ("office", "A manager and two interns walk to the kitchen.", [1, 2]),
+])
+def test_other_coordinated_people_stay_one_group_per_noun(read, world, prompt, counts):
+    groups = read(world, prompt).groups
+    assert [g.count.value for g in groups] == counts
+    assert not any(g.together for g in groups)
+
+
+def test_a_pair_after_another_group_keeps_the_relations_after_it(read):
+    groups = read("hotel", "A mother and her son walk to the bar; two porters wait in the lobby and one of them "
+                           "walks to reception.").groups
+    assert [g.count.value for g in groups][:2] == [2, 2]
+    assert groups[-1].relation == "subset_of:1"
+
+
+@pytest.mark.parametrize("world,prompt,label,count", [
+    ("supermarket", "Three shelf stackers walk from the stockroom to aisle 3.", "stacker", 3),
+    ("supermarket", "While two trolley pushers wait at the entrance, four shelf fillers walk to aisle 3.", "filler", 4),
+    ("station", "Four ticket checkers stand at the gateline.", "checker", 4),
+    ("office", "Two window cleaners walk from the lobby to the kitchen.", "cleaner", 2),
+    ("warehouse", "Five forklift drivers wait in dispatch.", "driver", 5),
+])
+def test_a_noun_and_verb_er_person_keeps_its_count(read, world, prompt, label, count):
+    groups = read(world, prompt).groups
+    g = groups[-1]
+    assert (g.label, g.count.kind, g.count.value) == (label, "exact", count)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Two leaf blowers hum in the kitchen."),
+    ("hospital", "Two paper shredders whir in the office."),
+])
+def test_things_named_like_agents_are_nobody(read, world, prompt):
+    assert all(g.label == "person" for g in read(world, prompt).groups)
+
+
+@pytest.mark.parametrize("world,prompt,reaction", [
+    ("mall", "A toddler waves at the robot and toddles after it.", "follow"),
+    ("museum", "A child waves at the robot and then follows it.", "follow"),
+    ("station", "A boy smiles at the robot and trots after it.", "follow"),
+    ("airport", "A child stares at the robot and then runs away from it.", "avoid"),
+    ("office", "Two interns walk up to the robot and stare at it.", "approach"),
+])
+def test_one_person_acting_twice_on_the_robot_is_one_group(read, world, prompt, reaction):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    assert groups[0].robot_interaction == reaction
+
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("office", "The only other person is a guard.", [1]),
+    ("office", "Two developers code at their desks; the only other person is a guard at reception.", [2, 1]),
+    ("museum", "The only other people in the gallery are three students.", [3]),
+])
+def test_the_only_other_person_is_no_exclusive_count(read, world, prompt, counts):
+    groups = read(world, prompt).groups
+    assert [(g.count.kind, g.count.value) for g in groups] == [("exact", c) for c in counts]
+
+
+def test_the_only_people_still_say_nobody_else(read):
+    groups = read("hospital", "The only people in the ward are two nurses.").groups
+    assert [(g.count.kind, g.count.value) for g in groups] == [("exclusive", 2)]
+
+
+@pytest.mark.parametrize("world,prompt,label,interaction", [
+    ("station", "A drunk kicks the robot.", "drunk", "block"),
+    ("airport", "A drunk shouts at the robot.", "drunk", "block"),
+    ("mall", "A local yells at the robot.", "local", "block"),
+    ("station", "A drunk staggers to the exit.", "drunk", None),
+    ("hotel", "A regular waits at the bar.", "regular", None),
+])
+def test_an_adjective_standing_for_a_person_is_one_person(read, world, prompt, label, interaction):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    g = groups[0]
+    assert (g.label, g.count.kind, g.count.value, g.robot_interaction) == (label, "exact", 1, interaction)
+    if interaction == "block":
+        assert g.robot_reaction == "Threatening"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "The injured wait in the waiting room."),
+    ("hotel", "The elderly rest in the lobby."),
+])
+def test_the_adjective_plural_is_some_people(read, world, prompt):
+    g = read(world, prompt).groups[0]
+    assert g.count.kind == "vague" and g.count.value > 1
+
+
+def test_an_adjective_before_its_noun_stays_an_adjective(read):
+    g = read("hotel", "A blind man walks to reception.").groups[0]
+    assert (g.label, g.count.value) == ("man", 1)
