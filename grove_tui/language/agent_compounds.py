@@ -22,6 +22,14 @@ def _verb_stems(word: str) -> list[str]:
     return stems
 
 
+def agent_of_a_verb(word: str, near: str) -> bool:
+    """Whether a word is an "-er" noun of an English verb ("pickers", "stackers"), not a misspelling of
+    the person noun `near` one edit away: "pickers" is no "packers", but "visiters" are visitors (the
+    same verb's person)."""
+    base = word[:-1] if word.endswith("ers") else word
+    return any(known_word(stem) and not near.startswith(stem) for stem in _verb_stems(base))
+
+
 def agent_compound(s: Sentence, i: int) -> bool:
     """Whether word i is the agent noun of a noun + verb-"er" compound naming people (see the module
     doc): a noun before it that hangs on it, the noun's stem an English word, and no thing so named

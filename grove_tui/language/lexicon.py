@@ -395,7 +395,7 @@ ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave",
     "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap "
-                "ask talk chat speak question consult query hail thank",
+                "ask talk chat speak question consult query hail thank crowd surround encircle swarm mob",
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",

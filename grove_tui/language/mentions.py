@@ -20,6 +20,7 @@ from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, e
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
+from grove_tui.language.only_people import only_people_before, the_only_mention
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -157,7 +158,7 @@ class Mentions:
         s = self.s
         return (m.first > 0 and s.low[m.first - 1] == "with" and before.collective is not None
                 and before.label == before.collective and before.count is not None
-                and before.count.kind == "implied" and m.count is not None and m.relation is None
+                and before.count.kind == "implied" and m.count is not None and m.count.value > 1 and m.relation is None
                 and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
@@ -358,10 +359,7 @@ class Mentions:
             (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
 
     def _only_people_before(self, p: int, other: bool = True) -> bool:  # "the only other person": one more, not all
-        s = self.s
-        sentence = s.w[p].sentence
-        return any(s.low[k] == "only" and next((w for w in s.low[k + 1:k + 3] if w != "other" or not other), "") in
-                   ("people", "person", "ones", "one") for k in range(p) if s.w[k].sentence == sentence)
+        return only_people_before(self.s, self.people, p, other)  # "the only people/visitor in X are/is ..."
 
     def _exclusive_context(self, at: int) -> bool:
         """Whether the phrase at `at` is the exception to "nobody" in its sentence ("nobody ... except
@@ -414,7 +412,7 @@ class Mentions:
         if rest is not None:
             return rest
         if low[at] == "the" and at + 1 < s.n and low[at + 1] == "only":
-            return None  # "the only people in the ward are two men": the men are the group
+            return the_only_mention(s, self.people, at)  # "the only people in the ward are two men": the men
         whole = self._whole_zone(at, num)
         if whole is not None:
             return whole
@@ -561,7 +559,7 @@ class Mentions:
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
         singular = s.lemma(head) == low[head] and not self.people.plural_word(head)  # "the injured": some people
         label = self.people.label(head)
-        if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
+        if det == "the" and any(m.label == label or s.lemma(head) == m.label != label.split("-")[-1] for m in found):
             return None  # "... one person; the person wanders around": the same people again
         noun = s.lemma(head)
         collective = self.collectives.collective(head)

@@ -78,7 +78,9 @@ def joined_pairs(s: Sentence, people: People, mentions: Sequence[Mention]) -> li
         if i + 1 < len(mentions) and pair_of(s, people, a, mentions[i + 1]):
             b = mentions[i + 1]
             a.last, a.who = b.last, s.span(a.first, b.last)
-            a.label = f"{a.label} and {b.label}"
+            # "a pilot and his co-pilot": the second's own words where its label repeats the first's
+            other = b.label if b.label != a.label or b.first >= b.last else s.span(b.first + 1, b.last).lower()
+            a.label = f"{a.label} and {other}"
             a.count = Count("exact", 2, 2, 2)
             a.together = True
             a.robot_object = a.robot_object or b.robot_object

@@ -9,7 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
-from grove_tui.language.agent_compounds import agent_compound
+from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
@@ -390,8 +390,12 @@ class People:
         if k + 1 >= s.n:
             return False
         word = s.low[k + 1]
-        return word == verb_lemma(word) and (verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS) \
-            and self._joined_subject(k)
+        # a verb no list names, in its plural form, then where or how ("the kids and their nan bake in
+        # the kitchen"): the small model makes it a noun the person word modifies
+        unlisted = s.w[k + 1].pos == "NOUN" and word.isalpha() and not word.endswith("s") and \
+            not s.index.knows(s.lemma(k + 1)) and (k + 2 >= s.n or s.w[k + 2].pos in ("ADP", "ADV", "PUNCT"))
+        return word == verb_lemma(word) and (verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS
+                                             or unlisted) and self._joined_subject(k)
 
     def _joined_subject(self, k: int) -> bool:
         """Whether the person word at k ends a phrase joined by "and" to people before it ("three
@@ -444,8 +448,11 @@ class People:
                 s.lemma(head) not in lx.PERSON_NOUNS:
             return "child"  # "Little Tom": a child, by name
         noun = s.lemma(head)
+        if head >= 2 and s.low[head - 1] == "-" and modifier_end(s, head - 2) == head and s.w[head - 2].pos != "ADJ":
+            return f"{s.low[head - 2]}-{noun}"  # "the co-pilot": another person than "the pilot"
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
-            noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays
+            near = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" and "pickers" stay
+            noun = noun if agent_of_a_verb(s.low[head], near) else near
         if self.multiword_end(head):
             return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if tuple(s.low[head - len(p) + 1:head + 1]) == p)
         if noun in ("member", "person") and head > 0 and self.is_person_noun(head - 1):

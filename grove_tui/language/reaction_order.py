@@ -25,6 +25,17 @@ def later_reaction(earlier: str | None, later: str | None) -> str | None:
     return earlier
 
 
+# Making a picture of something: of the robot, it is looking at it ("an artist sketches the robot");
+# of anything else, a place's thing ("sketches the whale skeleton"), so no verb of the robot's lists.
+DEPICTING_VERBS = frozenset("sketch draw paint admire doodle".split())
+
+
+def depicts(s: Sentence, i: int, r: int) -> bool:
+    """Whether word i is a verb of depicting whose object is the robot at r ("sketches the robot")."""
+    return verb_in(s, i, DEPICTING_VERBS) and all(s.low[j] in lx.DETERMINERS for j in range(i + 1, r)) and \
+        s.low[r] in lx.ROBOT_WORDS | {"it"}
+
+
 def goes_after(s: Sentence, i: int, r: int) -> bool:
     """Whether word i, a verb (by the parser, the lexicon, or its place after "and"), goes "after"
     the robot at r ("trots after the robot", "toddles after it"): following it."""

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.reaction_order import goes_after, later_reaction, verb_in
+from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
 from grove_tui.language.tokens import verb_lemma
 
@@ -175,9 +175,10 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
             if s.phrase_words(i, len(phrase), ownset) == phrase and not (
                     s.w[last].pos == "ADP" and _object_elsewhere(s, last, r)):
                 return interaction  # not "look at the flight board while the robot ..."
-        # any verb of walking, known or only tagged a verb by the parser ("waddle over to it")
+        # any verb of walking or roaming, known or only tagged a verb by the parser ("waddle over to it",
+        # "a toddler crawls towards the robot")
         v = s.verb(i)
-        if lx.INTENT_VERBS.get(v) == "walk" or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
+        if lx.INTENT_VERBS.get(v) in ("walk", "wander") or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
             for tail in lx.ROBOT_APPROACH_TAILS:
                 if s.phrase_words(i + 1, len(tail), ownset) == tail:
                     return "approach"  # "the twins toddle up to the robot"
@@ -192,6 +193,8 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
             return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"
         if goes_after(s, i, r):
             return "follow"  # "toddles after it", "trots after the robot"
+        if depicts(s, i, r):
+            return "look"  # "an artist sketches the robot"
     return None
 
 

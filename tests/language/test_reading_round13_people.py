@@ -122,3 +122,72 @@ def test_the_adjective_plural_is_some_people(read, world, prompt):
 def test_an_adjective_before_its_noun_stays_an_adjective(read):
     g = read("hotel", "A blind man walks to reception.").groups[0]
     assert (g.label, g.count.value) == ("man", 1)
+
+
+@pytest.mark.parametrize("world,prompt,labels", [
+    ("residential", "The kids and their nan bake in the kitchen.", ["kid", "nan"]),
+    ("residential", "The kids and their mum bake in the kitchen.", ["kid", "mum"]),
+    ("hotel", "Two porters and a bellboy chill in the lobby.", ["porter", "bellboy"]),
+])
+def test_people_joined_before_a_verb_no_list_names_share_its_place(read, world, prompt, labels):
+    groups = read(world, prompt).groups
+    assert [g.label for g in groups] == labels
+    assert len({g.location for g in groups}) == 1 and groups[0].location is not None
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("ferry_terminal", "A couple with a baby wait in the departure lounge."),
+    ("hotel", "A couple with a toddler sit in the bar."),
+])
+def test_a_couple_with_one_companion_keeps_its_two(read, world, prompt):
+    groups = read(world, prompt).groups
+    assert (groups[0].label, groups[0].count.value) == ("couple", 2)
+    assert [g.count.value for g in groups[1:]] == [1]
+
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("library", "A toddler crawls towards the robot.", "approach"),
+    ("mall", "Two kids wander over to the robot.", "approach"),
+    ("courthouse", "A handful of reporters crowd the robot outside courtroom 2.", "approach"),
+    ("mall", "A gang of teenagers surround the robot.", "approach"),
+    ("museum", "An artist sketches the robot from the bench.", "look"),
+    ("courthouse", "A court artist draws the robot outside courtroom 2.", "look"),
+])
+def test_reactions_by_verbs_the_lists_lacked(read, world, prompt, interaction):
+    assert [g.robot_interaction for g in read(world, prompt).groups] == [interaction]
+
+
+def test_depicting_something_else_is_no_reaction(read):
+    g, = read("museum", "A student sketches the whale skeleton for forty-five minutes.").groups
+    assert (g.robot_interaction, g.location) == (None, "whale_skeleton")
+
+
+@pytest.mark.parametrize("world,prompt,labels", [
+    ("airport", "The pilot and the co-pilot walk to the gate.", ["pilot", "co-pilot"]),
+    ("office", "Three co-workers chat in the kitchen.", ["co-worker"]),
+    ("residential", "Her ex-husband waits in the hallway.", ["ex-husband"]),
+])
+def test_a_hyphen_prefixed_person_is_one_person_noun(read, world, prompt, labels):
+    groups = read(world, prompt).groups
+    assert [g.label for g in groups] == labels
+
+
+def test_a_pair_with_a_hyphen_prefixed_companion(read):
+    g, = read("airport", "A pilot and his co-pilot walk to the gate.").groups
+    assert (g.label, g.count.value, g.destination) == ("pilot and co-pilot", 2, "gate_a1")
+
+
+def test_an_agent_of_a_real_verb_is_not_corrected_to_another_person(read):
+    groups = read("warehouse", "A picker and a packer chat at the packing bench.").groups
+    assert [g.label for g in groups] == ["picker", "packer"]
+
+
+@pytest.mark.parametrize("world,prompt,kind,count,label", [
+    ("hospital", "The only nurse on the ward walks to the pharmacy.", "exact", 1, "nurse"),
+    ("museum", "The only other visitor walks to the cafe.", "exact", 1, "visitor"),
+    ("hospital", "The only visitors in the cafeteria are two students.", "exclusive", 2, "student"),
+    ("museum", "The only visitor in the gallery is a student sketching.", "exclusive", 1, "student"),
+])
+def test_the_only_person_noun(read, world, prompt, kind, count, label):
+    g, = read(world, prompt).groups
+    assert (g.count.kind, g.count.value, g.label) == (kind, count, label)
