@@ -144,6 +144,19 @@ def purpose_by_use(index: PlaceIndex, purpose: str) -> Decided | None:
         words = words[1:]
     if len(words) < 2 or words[0] not in _GETTING:
         return None
+    whole = _provided_by(index, purpose, words)
+    if whole is not None or "and" not in words[2:]:
+        return whole
+    # "to buy plasters and paracetamol": a list of things, each asked of the places on its own; the one
+    # room that clearly provides some of them, when no other thing is clearly got elsewhere
+    items = " ".join(words[1:]).split(" and ")
+    decided = [d for item in items if item and (d := _provided_by(index, purpose, [words[0], *item.split()]))]
+    zones = {d[0].zone for d in decided}
+    return decided[0] if len(zones) == 1 else None
+
+
+def _provided_by(index: PlaceIndex, purpose: str, words: Sequence[str]) -> Decided | None:
+    """The room that provides what the words of a purpose get, by zone, near enough and clearly ahead."""
     said = "the place to " + " ".join(words)
     best_of: dict[str, tuple[float, str, str]] = {}
     for ranked in (index.by_meaning(said), index.by_description(said)):

@@ -13,6 +13,7 @@ from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
                                                 room_with, vehicle_stop)
+from grove_tui.language.place_doers import named_doers
 from grove_tui.language.place_of_zone import served_at
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -164,7 +165,21 @@ class PlaceMeaning:
         if clause is None:
             return None
         first, end = clause
-        activity = plain_activity(("" if s.low[first] == "for" else "where ") + self._active(first, end))
+        said = self._active(first, end)
+        activity = plain_activity(("" if s.low[first] == "for" else "where ") + said)
+        meant = self._by_clause(phrase, lemmas, content, activity, j, end)
+        doers, named = named_doers(s, first, said)
+        if doers != said and named and (theirs := self._by_clause(phrase, lemmas, content, plain_activity(
+                ("" if s.low[first] == "for" else "where ") + doers), j, end)) is not None and \
+                theirs[0].name in {e.name for e in s.index.owned_by(named)}:
+            # "the room where they decide on their verdict", the jury's: said of the jury, it is their room
+            meant = theirs
+        return (meant, end) if meant is not None else None
+
+    def _by_clause(self, phrase: Sequence[str], lemmas: Sequence[str], content: Sequence[str], activity: str,
+                   j: int, end: int) -> Decided | None:
+        """The place a head and the activity of its relative clause (words j to end) describe, or None."""
+        s = self.s
         meant = None if vehicle_stop(activity) else self._by_activity(phrase, lemmas, activity)
         head = content[-1] if content else "place"
         kinds = None if head in _ANY_PLACE | lx.BUILDING_WORDS else \
@@ -182,7 +197,7 @@ class PlaceMeaning:
             meant = both
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
-        return (meant, end) if meant is not None else None
+        return meant
 
     def _alike(self, one: str, other: str) -> bool:
         """Whether two places are of one kind (two bedrooms, two desks)."""

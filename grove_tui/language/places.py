@@ -25,6 +25,7 @@ from functools import lru_cache
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
+from grove_tui.language.place_compounds import head_only_modifies, names_another_kind
 from grove_tui.language.tokens import name_tokens
 from grove_tui.world.model import World
 
@@ -247,6 +248,8 @@ class PlaceIndex:
                 total += WHOLE_PHRASE_BONUS + sum(self.idf.get(t, 0.0) for t in max(matched, key=len))
             elif head not in GENERIC_PLACE_HEADS and head not in self.building_words and weights[-1] <= 0:
                 continue  # "the coffee machine": a phrase whose head names nothing of this entry is not it
+            elif head_only_modifies(e, content):
+                continue  # "the garden centre" is no "centre court": the head is only its first word
             elif len(content) == 1 and any(head in p for p in e.phrases) and \
                     all(p[0] == head and len(p) > 1 for p in e.phrases if head in p) and \
                     not any(head in t.split() for t in e.types):
@@ -301,6 +304,8 @@ class PlaceIndex:
         head = content[-1]
         if len(content) >= 2 and any(ch.isdigit() for ch in head) and content[-2] in NON_PLACES:
             return True  # "flight BA123", "train 42": a service and its number, not a place
+        if names_another_kind(self, content):
+            return False  # "the garden centre" in a supermarket: a kind of place, not the building
         if head == "area" and any(t not in self.building_words and t not in _WHOLE_AREA for t in content[:-1]):
             return False  # "the smoking area", "the coffee area": a part of the building, not all of it
         return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words

@@ -55,6 +55,12 @@ class Sentence:
         return (self.w[i].pos == "PUNCT" and not any(ch.isalnum() for ch in self.low[i])) or \
             self.low[i] in _PUNCTUATION
 
+    def joins(self, i: int) -> bool:
+        """Whether word i is a hyphen inside one word ("T-rex", "ice-cream"), no space either side."""
+        w = self.w
+        return self.low[i] in ("-", "‐") and 0 < i < self.n - 1 and w[i - 1].end == w[i].start and \
+            w[i].end == w[i + 1].start
+
     def lemma(self, i: int) -> str:
         return lemma(self.low[i])
 
@@ -191,12 +197,21 @@ class Sentence:
         j = k
         while j < self.n and j < k + 6:
             w = self.low[j]
-            if self.is_punct(j) or w in lx.CLAUSE_STARTERS or (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for":
+            if (self.is_punct(j) and not self.joins(j)) or w in lx.CLAUSE_STARTERS or \
+                    (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for":
                 break
             if not allow_objects and j > k and verb_lemma(w) in lx.INTENT_VERBS and self.w[j].pos == "VERB":
                 break
             j += 1
+        if allow_objects and j > k and j + 1 < self.n and self.low[j] == "and" and self._last_object(j + 1):
+            return j + 2  # "to buy plasters and paracetamol": the things a purpose gets are all of it
         return j
+
+    def _last_object(self, k: int) -> bool:
+        """Whether word k is a bare plural or mass noun that ends a list of things ("... and
+        paracetamol."), not the subject of a clause of its own ("and three nurses walk")."""
+        return self.w[k].tag in ("NN", "NNS") and (k + 1 >= self.n or self.is_punct(k + 1) or self.low[k + 1] in
+                                                  lx.PLACE_PREPOSITIONS) and not self.index.knows(self.lemma(k))
 
     # ---- parse-level spans -------------------------------------------------------------------
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-from grove_tui.language.lexicon import CHAT_WORDS, PERSON_NOUNS
+from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.tokens import lemma
 
 # Unicode categories that never carry a word: other symbols (emoji, pictographs), modifier symbols
@@ -32,6 +32,11 @@ _AT_SIGN = re.compile(r"(?<![\w.])@\s*(?=\w)")
 _FOR_TO = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bby)(?<!\bfrom)(?<!\buntil)(?<!\btill)(?<!\bafter)(?<!\bbefore)"
                      r"(?<!\bsince)(?<!\bto)(?<!\bof)(?<!\bor)(?<!\band)\s+([24])\s+(?=(?:the|his|her|their|my|our|your|its)\b)",
                      re.IGNORECASE)
+# "8 ppl waiting @ customer service 4 refunds": chat's "for" before the last word, a plural that names no
+# person (not "... 4 nurses"), after a word that is not one a place is numbered by ("till 4", "gate 4")
+_FOR_LAST = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bfor)(?<!\bto)(?<!\bof)(?<!\band)(?<!\bor)\s+4\s+([a-z]+s)\s*[.!]?\s*$")
+_NUMBERED_BY = frozenset("gate desk platform room aisle till lane court ward bay stand floor level exit door counter "
+                         "table bed screen track pier dock berth stop zone area block wing unit".split())
 # "~30 pax", "~ 10 people": about so many
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
 # "30-ish visitors", "20ish ppl": about so many
@@ -73,10 +78,21 @@ def normalise(text: str) -> str:
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
+    kept = _FOR_LAST.sub(_for_the_last, kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
     return " ".join(kept.split())
+
+
+def _for_the_last(m: re.Match[str]) -> str:
+    """"... customer service 4 refunds" as "... for refunds"; a count of people or of minutes, or a
+    numbered place, is kept."""
+    before = m.string[:m.start()].split()
+    word = lemma(m.group(1))
+    if word in PERSON_NOUNS or word in DURATION_UNITS or word.rstrip("s") in DURATION_UNITS or (before and before[-1].lower() in _NUMBERED_BY):
+        return m.group(0)
+    return f" for {m.group(1)}"
 
 
 def _route_start(m: re.Match[str]) -> str:

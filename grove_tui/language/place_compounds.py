@@ -1,0 +1,56 @@
+"""Compound place nouns the words alone would misread, for the place index (language/places.py):
+
+- a word for a whole building with a noun before it that says what kind ("the garden centre", "the
+  boat house", "the sports complex") names a kind of place, not the building the scene is in, unless the
+  phrase is near in meaning to what this world is ("the shopping centre" of a mall, "the medical centre"
+  of a hospital); a world that has no place of that kind refuses it rather than read it as nowhere;
+- a phrase whose head is only the first word of a two-word name ("the garden centre" against "centre
+  court", "the ticket box" against "box office") shares a modifier with that place, not what it is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from grove_tui.language.places import PlaceEntry, PlaceIndex
+
+# Building words that take a noun before them to name a kind of place ("garden centre", "guest house",
+# "leisure complex"); "building", "site" and "premises" with a noun are the scene's own ("the office
+# building"), so they stay words for the whole building.
+KIND_HEADS = frozenset("centre center complex facility house".split())
+# Nouns before "centre" that put the place outside any building ("the town centre"): no kind of room.
+SURROUNDINGS = frozenset("town city village".split())
+# A compound this near in meaning to the world's own name is that building ("shopping centre" is 0.63
+# from "supermarket" and 0.67 from "mall", "medical centre" 0.73 from "hospital", "leisure centre" 0.77
+# from "sports centre"); kinds no such world is come no nearer than 0.44 ("garden centre" to a mall,
+# "data centre" 0.29 to a supermarket, "day centre" 0.38 to a hospital).
+OF_THIS_BUILDING = 0.45
+
+
+def names_another_kind(index: PlaceIndex, content: Sequence[str]) -> bool:
+    """Whether a phrase headed by a building word names a kind of place rather than the building: a
+    noun before the head that is no word of the building, and the whole not near what this world is."""
+    if len(content) < 2 or content[-1] not in KIND_HEADS:
+        return False
+    kinds = [t for t in content[:-1] if t not in index.building_words and t.isalpha()]
+    if not kinds or any(t in SURROUNDINGS for t in kinds):
+        return False
+    return index.near_building(" ".join(content)) < OF_THIS_BUILDING
+
+
+def head_only_modifies(entry: PlaceEntry, content: Sequence[str]) -> bool:
+    """Whether the phrase's head names this place only as the first word of a longer name ("centre" of
+    "centre court" for "the garden centre"), and no other word of the phrase is one of its words: the
+    place is another kind of thing. A name whose next word is a number or letter ("ward c", "gate 2")
+    keeps its kind first, so it still counts."""
+    if len(content) < 2:
+        return False
+    head = content[-1]
+    if any(head in kind.split() for kind in entry.types) or any(t in entry.tokens for t in content[:-1]):
+        return False
+    holding = [p for p in entry.phrases if head in p]
+    return bool(holding) and all(
+        p.index(head) < len(p) - 1 and p[p.index(head) + 1].isalpha() and len(p[p.index(head) + 1]) > 1
+        for p in holding)
