@@ -393,7 +393,7 @@ class People:
         # a verb no list names, in its plural form, then where or how ("the kids and their nan bake in
         # the kitchen"): the small model makes it a noun the person word modifies
         unlisted = s.w[k + 1].pos == "NOUN" and word.isalpha() and not word.endswith("s") and \
-            not s.index.knows(s.lemma(k + 1)) and (k + 2 >= s.n or s.w[k + 2].pos in ("ADP", "ADV", "PUNCT"))
+            not s.index.knows(s.lemma(k + 1)) and (k + 2 >= s.n or s.w[k + 2].pos in ("ADP", "ADV", "PUNCT", "DET"))
         return word == verb_lemma(word) and (verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS
                                              or unlisted) and self._joined_subject(k)
 

@@ -191,3 +191,13 @@ def test_an_agent_of_a_real_verb_is_not_corrected_to_another_person(read):
 def test_the_only_person_noun(read, world, prompt, kind, count, label):
     g, = read(world, prompt).groups
     assert (g.count.kind, g.count.value, g.label) == (kind, count, label)
+
+
+@pytest.mark.parametrize("world,prompt,label,destination", [
+    ("ferry_terminal", "A lorry driver and his mate queue at check-in.", "driver and mate", None),
+    ("hospital", "A paramedic and his partner wheel a stretcher to the ward.", "paramedic and partner", "ward_a"),
+])
+def test_a_companion_before_a_verb_the_parser_calls_a_noun(read, world, prompt, label, destination):
+    g, = read(world, prompt).groups
+    assert (g.label, g.count.value, g.destination) == (label, 2, destination)
+
