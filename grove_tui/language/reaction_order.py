@@ -36,6 +36,22 @@ def depicts(s: Sentence, i: int, r: int) -> bool:
         s.low[r] in lx.ROBOT_WORDS | {"it"}
 
 
+def stops_for(s: Sentence, i: int, r: int) -> str | None:
+    """What "stop" at i says of the robot at r: stopping an activity when it passes ("stop whispering
+    when the robot passes": no reaction, "skip") or stopping to let it by ("stops to let the robot
+    cross", "stops for the robot": making way, "avoid"); None when "stop" is something else."""
+    if s.verb(i) not in ("stop", "pause", "halt", "wait") or i + 1 >= r:
+        return None
+    nxt = s.low[i + 1]
+    if nxt.endswith("ing") and s.verb(i) == "stop":
+        return "skip"  # "stop whispering": the verb after is what they stop doing
+    if nxt == "to" and i + 2 < r and s.verb(i + 2) in ("let", "allow"):
+        return "avoid"
+    if nxt == "for" and s.verb(i) != "wait" and all(s.low[j] in lx.DETERMINERS for j in range(i + 2, r)):
+        return "avoid"  # not "waits for the robot": waiting for it gives way only "to let" it by
+    return None
+
+
 def goes_after(s: Sentence, i: int, r: int) -> bool:
     """Whether word i, a verb (by the parser, the lexicon, or its place after "and"), goes "after"
     the robot at r ("trots after the robot", "toddles after it"): following it."""

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, verb_in
+from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
 from grove_tui.language.tokens import verb_lemma
 
@@ -186,6 +186,11 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
                 return "approach"  # "hurries to the robot", "runs from the lobby to it"
         if v in lx.ROBOT_VERBS and lx.ROBOT_VERBS[v] == "block" and i + 1 < s.n and s.low[i + 1] in PASSING_AFTER:
             continue  # "pushes past the robot": going by it
+        stopping = stops_for(s, i, r)
+        if stopping == "skip":
+            continue  # "stop whispering when the robot passes": no stopping of the robot
+        if stopping is not None:
+            return stopping  # "stops to let the robot cross": making way
         if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
                 not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] == "look"):
             return lx.ROBOT_VERBS[v]

@@ -201,3 +201,25 @@ def test_a_companion_before_a_verb_the_parser_calls_a_noun(read, world, prompt, 
     g, = read(world, prompt).groups
     assert (g.label, g.count.value, g.destination) == (label, 2, destination)
 
+
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("library", "Two students stop whispering when the robot passes.", None),
+    ("warehouse", "A forklift driver stops to let the robot cross.", "avoid"),
+    ("station", "A commuter stops for the robot.", "avoid"),
+    ("hospital", "A porter waits to let the robot pass.", "avoid"),
+    ("hospital", "A nurse waits for the robot at reception.", None),
+    ("mall", "Two guards stop the robot at the entrance.", "block"),
+])
+def test_stopping_for_the_robot_is_making_way_and_stopping_an_activity_is_nothing(read, world, prompt, interaction):
+    assert read(world, prompt).groups[0].robot_interaction == interaction
+
+
+@pytest.mark.parametrize("prompt,count,who", [
+    ("The jury walk to the jury room.", 12, "The jury"),
+    ("Two ushers lead the jury from courtroom 1 to the jury room.", 12, "the jury"),
+    ("A clerk waits in the jury room.", 1, "A clerk"),
+])
+def test_the_jury_is_twelve_people(read, prompt, count, who):
+    g = read("courthouse", prompt).groups[-1]
+    assert (g.who, g.count.value) == (who, count)
