@@ -20,6 +20,7 @@ from grove_tui.language.counts import duration_at
 from grove_tui.language.events import evacuating
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
+from grove_tui.language.place_contrast import avoided_places
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
@@ -124,7 +125,7 @@ class Clauses:
             place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else s.phrase_end(k))
             if place is not None and place.match is not None:
-                scan.c.avoid.append(place.match.name)
+                scan.c.avoid.extend(avoided_places(s.index, scan.c.places, place))
             return True
         if w in lx.NOT_USING_WORDS:
             return self._not_using(scan, i)
@@ -189,9 +190,8 @@ class Clauses:
         return replace(place, sequel=True)
 
     def _not_using(self, scan: _Scan, i: int) -> bool:
-        """ "..., not the main doors", "but not through the lobby", "avoiding the lifts": a place the
-        group must not use, kept apart from where it goes (a place word must follow; "not moving" is no
-        place)."""
+        """ "..., not the main doors", "but not through the lobby", "avoiding the lifts": a place the group
+        must not use, kept apart from where it goes (a place word must follow: "not moving" is none)."""
         s = self.s
         k = s.skip(i + 1, lx.NOT_USING_LINKS)
         if k >= s.n or (s.low[i] in ("not", "never") and s.verb_follows(k)):
@@ -199,7 +199,7 @@ class Clauses:
         place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
         if place is None or place.match is None:
             return False
-        scan.c.avoid.append(place.match.name)
+        scan.c.avoid.extend(avoided_places(s.index, scan.c.places, place))
         self._take(scan, i, place.end)
         return True
 

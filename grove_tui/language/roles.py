@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceIndex, PlaceMatch
-from grove_tui.language.tokens import phrase_lemmas
+from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 
 @dataclass
@@ -75,6 +75,12 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             roles.start, roles.location = roles.location, name
         elif role == "via" and name not in roles.via:
             roles.via.append(name)
+    taken = next((p.match.name for p in places if p.prep == "obj:via" and p.match is not None
+                  and verb_lemma(p.written) == "take" and p.match.name in roles.via), None)
+    if taken is not None and roles.destination is None and not stationary:
+        # "five visitors take the stairs": with nowhere else to go, the way they take is where they go
+        roles.via.remove(taken)
+        roles.destination = taken
     return roles
 
 
