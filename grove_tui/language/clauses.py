@@ -1,13 +1,12 @@
 """Pass 3: what each clause says its people do, and where.
 
-A clause is the words a group owns (from its mention to the next group's) or a sentence's words
-before its first mention (its scene, read for every group of that sentence). Phrase by phrase: a
-preposition gives a place its role (from: start; to/into: destination; at/in/on: location, or the
-start of movers; through/via/past: via), a verb's object does too ("leave the ward", "enter the
-lobby", "cross the hall"), "to"/"in order to"/"for" open a purpose ("to catch the train at platform 1"
-keeps its place as where they go), and durations are waits. Then the intent from the verbs (phrasal
-verbs first), the robot interaction (reactions.py), evacuation cues, whom a follower follows, pace
-and togetherness.
+A clause is the words a group owns (from its mention to the next group's) or a sentence's words before
+its first mention (its scene, read for every group of that sentence). Phrase by phrase: a preposition
+gives a place its role (from: start; to/into: destination; at/in/on: location, or the start of movers;
+through/via/past: via), a verb's object does too ("leave the ward", "cross the hall"), "to"/"in order
+to"/"for" open a purpose ("to catch the train at platform 1" keeps its place as where they go), and
+durations are waits. Then the intent from the verbs (phrasal first), the robot interaction
+(reactions.py), evacuation cues, whom a follower follows, pace and togetherness.
 """
 
 from __future__ import annotations
@@ -20,7 +19,7 @@ from grove_tui.language.counts import duration_at
 from grove_tui.language.events import evacuating
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
-from grove_tui.language.place_contrast import avoided_places
+from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
@@ -222,15 +221,15 @@ class Clauses:
             scan.c.wait_seconds = dur[0]
             self._take(scan, i, dur[1])
             return True
-        # "head for the exit", "make a beeline for gate B2", "queue for the coffee machine": a place by
-        # its whole name after a determiner; "for coffee", "for their prescriptions", "head out the back
-        # for a cigarette" are purposes, whatever they match.
-        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS
+        # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
+        # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
+        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
+            refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
-            if place is not None:
-                scan.c.places.append(place)
-                scan.used.update(range(i, place.end))
+            if place is not None or len(self.places.unknown) > refused:  # a place it lacks: no purpose either
+                scan.c.places.extend([place] if place is not None else [])
+                scan.used.update(range(i, place.end if place is not None else s.phrase_end(i + 1)))
                 scan.pos += 1
                 return True
         end = s.phrase_end(i + 1)

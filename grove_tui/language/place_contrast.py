@@ -1,18 +1,22 @@
-"""Two places said against each other that the world keeps in one room: "take the stairs, not the lifts"
-in a hospital whose lift lobby answers to "stairs" and "lifts" alike. Read as the room, the contrast
-says nothing (the group would use and avoid the same place); the room's fixtures tell them apart (its
-stairwell and its two elevators), so each phrase is read as the fixtures of that room its head names.
-Read for language/clauses.py when a place is said not to be used."""
+"""Two places said against each other, for language/clauses.py:
+
+- one used and one not, that the world keeps in one room: "take the stairs, not the lifts" in a hospital
+  whose lift lobby answers to "stairs" and "lifts" alike. Read as the room, the contrast says nothing
+  (the group would use and avoid the same place); the room's fixtures tell them apart (its stairwell and
+  its two elevators), so each phrase is read as the fixtures of that room its head names;
+- one left for the other: "leaves the auditorium for the planetarium" goes to the planetarium (and a
+  world without one refuses it), where "for" after a place is otherwise what they go there for."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import replace
 
-from grove_tui.language.lexicon import PLACE_MODIFIERS, PLACE_SYNONYMS
+from grove_tui.language.lexicon import DEPARTURE_VERBS, PLACE_MODIFIERS, PLACE_SYNONYMS
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceEntry, PlaceIndex, PlaceMatch
-from grove_tui.language.tokens import phrase_lemmas
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 
 def avoided_places(index: PlaceIndex, said: list[Place], avoided: Place) -> list[str]:
@@ -49,3 +53,12 @@ def fixtures_named(index: PlaceIndex, zone: str, words: Sequence[str]) -> list[P
     heads = {head}.union(*(group for group in PLACE_SYNONYMS if head in group))
     return [e for e in index.entries if e.zone == zone and e.kind == "entity"
             and heads & ({w for kind in e.types for w in kind.split()} | (e.tokens - room.tokens))]
+
+
+def left_for(s: Sentence, said: Sequence[Place], at: int) -> bool:
+    """Whether the "for" at `at` follows a place the clause's verb leaves ("leaves the auditorium for
+    the planetarium", "quit the ward for the canteen") and comes with a determiner: the place after it
+    is where they go ("leaves the office for lunch" is still what for)."""
+    before = said[-1] if said else None
+    return before is not None and before.end == at and before.prep == "obj:start" and at + 1 < s.n \
+        and s.low[at + 1] in ("the", "this", "that") and verb_lemma(s.low[before.index]) in DEPARTURE_VERBS
