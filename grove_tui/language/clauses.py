@@ -20,6 +20,7 @@ from grove_tui.language.events import evacuating
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
+from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
@@ -136,8 +137,8 @@ class Clauses:
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
                                     or self._told_before(i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
-        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not self.places.names_place(i + 1) or (
-                s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):  # "to book a tour"
+        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
+                s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
             return self._purpose(scan, i, i + 2, i + 4)

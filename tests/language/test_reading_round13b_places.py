@@ -113,3 +113,35 @@ def test_a_list_stops_at_people_of_a_clause_of_their_own(read):
     reading = read("supermarket", "A man goes to buy a loaf and two nurses walk to the café.")
     assert [(g.purpose, g.destination) for g in reading.groups] == [("to buy a loaf", "bakery_counter"),
                                                                      (None, "cafe")]
+
+
+# ---- E. a place said by what it is next to: the other place is no start -----------------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("library", "A student goes to the group study room next to the café.", "group_study_1"),
+    ("hospital", "A visitor goes to the chairs next to the pharmacy.", "pharmacy_waiting_chairs"),
+    ("airport", "Two men walk to the café near the gates.", "cafe"),
+])
+def test_a_place_next_to_another_gives_no_start(read, world, prompt, destination):
+    group = read(world, prompt).groups[0]
+    assert (group.start, group.destination) == (None, destination)
+
+
+def test_a_start_said_by_what_it_is_near_stays_the_start(read):
+    reading = read("airport", "Two men walk from the café near the gates to security.")
+    assert (reading.groups[0].start, reading.groups[0].destination) == ("cafe", "security_checkpoint")
+
+
+# ---- F. "to" and a numbered place of a series, whatever the parser makes its first word ------------
+
+@pytest.mark.parametrize("world,prompt,refused", [
+    ("university", "Two students walk to lecture theatre 3.", "lecture theatre 3"),
+    ("office", "A developer walks to meeting room 7.", "meeting room 7"),
+])
+def test_a_numbered_place_the_world_lacks_after_to_is_refused(read, world, prompt, refused):
+    reading = read(world, prompt)
+    assert (reading.unknown_places, reading.groups[0].purpose) == ((refused,), None)
+
+
+def test_a_numbered_place_the_world_has_after_to_is_where_they_go(read):
+    assert read("university", "A lecturer hurries to lecture theatre 2.").groups[0].destination == "lecture_theatre_2"
