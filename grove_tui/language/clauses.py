@@ -1,13 +1,12 @@
 """Pass 3: what each clause says its people do, and where.
 
-A clause is the words a group owns (from its mention to the next group's) or a sentence's words
-before its first mention (its scene, read for every group of that sentence). Phrase by phrase: a
-preposition gives a place its role (from: start; to/into: destination; at/in/on: location, or the
-start of movers; through/via/past: via), a verb's object does too ("leave the ward", "enter the
-lobby", "cross the hall"), "to"/"in order to"/"for" open a purpose ("to catch the train at platform 1"
-keeps its place as where they go), and durations are waits. Then the intent from the verbs (phrasal
-verbs first), the robot interaction (reactions.py), evacuation cues, whom a follower follows, pace
-and togetherness.
+A clause is the words a group owns (from its mention to the next group's) or a sentence's words before
+its first mention (its scene, read for every group of that sentence). Phrase by phrase: a preposition
+gives a place its role (from: start; to/into: destination; at/in/on: location, or the start of movers;
+through/via/past: via), a verb's object does too ("leave the ward", "cross the hall"), "to"/"in order
+to"/"for" open a purpose ("to catch the train at platform 1" keeps its place as where they go), and
+durations are waits. Then the intent from the verbs (phrasal first), the robot interaction
+(reactions.py), evacuation cues, whom a follower follows, pace and togetherness.
 """
 
 from __future__ import annotations
@@ -20,6 +19,8 @@ from grove_tui.language.counts import duration_at
 from grove_tui.language.events import evacuating
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
+from grove_tui.language.place_contrast import avoided_places, left_for
+from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
@@ -124,7 +125,7 @@ class Clauses:
             place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else s.phrase_end(k))
             if place is not None and place.match is not None:
-                scan.c.avoid.append(place.match.name)
+                scan.c.avoid.extend(avoided_places(s.index, scan.c.places, place))
             return True
         if w in lx.NOT_USING_WORDS:
             return self._not_using(scan, i)
@@ -136,8 +137,8 @@ class Clauses:
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
                                     or self._told_before(i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
-        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not self.places.names_place(i + 1) or (
-                s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):  # "to book a tour"
+        if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
+                s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
             return self._purpose(scan, i, i, i + 2)
         if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
             return self._purpose(scan, i, i + 2, i + 4)
@@ -189,9 +190,8 @@ class Clauses:
         return replace(place, sequel=True)
 
     def _not_using(self, scan: _Scan, i: int) -> bool:
-        """ "..., not the main doors", "but not through the lobby", "avoiding the lifts": a place the
-        group must not use, kept apart from where it goes (a place word must follow; "not moving" is no
-        place)."""
+        """ "..., not the main doors", "but not through the lobby", "avoiding the lifts": a place the group
+        must not use, kept apart from where it goes (a place word must follow: "not moving" is none)."""
         s = self.s
         k = s.skip(i + 1, lx.NOT_USING_LINKS)
         if k >= s.n or (s.low[i] in ("not", "never") and s.verb_follows(k)):
@@ -199,7 +199,7 @@ class Clauses:
         place = self.places.phrase(k, "at", i, record_unknown=False, mentioned=False)
         if place is None or place.match is None:
             return False
-        scan.c.avoid.append(place.match.name)
+        scan.c.avoid.extend(avoided_places(s.index, scan.c.places, place))
         self._take(scan, i, place.end)
         return True
 
@@ -222,15 +222,15 @@ class Clauses:
             scan.c.wait_seconds = dur[0]
             self._take(scan, i, dur[1])
             return True
-        # "head for the exit", "make a beeline for gate B2", "queue for the coffee machine": a place by
-        # its whole name after a determiner; "for coffee", "for their prescriptions", "head out the back
-        # for a cigarette" are purposes, whatever they match.
-        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS
+        # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
+        # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
+        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
+            refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
-            if place is not None:
-                scan.c.places.append(place)
-                scan.used.update(range(i, place.end))
+            if place is not None or len(self.places.unknown) > refused:  # a place it lacks: no purpose either
+                scan.c.places.extend([place] if place is not None else [])
+                scan.used.update(range(i, place.end if place is not None else s.phrase_end(i + 1)))
                 scan.pos += 1
                 return True
         end = s.phrase_end(i + 1)

@@ -13,8 +13,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from grove_tui.language.lexicon import PLACE_MODIFIERS
+from grove_tui.language.parser import known_word
+from grove_tui.language.place_modifiers import PERSON_ADJECTIVES
+
 if TYPE_CHECKING:
     from grove_tui.language.places import PlaceEntry, PlaceIndex
+    from grove_tui.language.sentence import Sentence
 
 # Building words that take a noun before them to name a kind of place ("garden centre", "guest house",
 # "leisure complex"); "building", "site" and "premises" with a noun are the scene's own ("the office
@@ -54,3 +59,35 @@ def head_only_modifies(entry: PlaceEntry, content: Sequence[str]) -> bool:
     return bool(holding) and all(
         p.index(head) < len(p) - 1 and p[p.index(head) + 1].isalpha() and len(p[p.index(head) + 1]) > 1
         for p in holding)
+
+
+def modified_otherwise(entry: PlaceEntry, modifiers: Sequence[str], head: str) -> bool:
+    """Whether every name of the place holding the phrase's head has another word right before it than
+    the phrase's modifiers: "the travel centre" against "the garden centre", "coffee shop" against "pet
+    shop". Such a name is a kind of that head, and the phrase names another kind; a name that is the
+    head alone ("shop") or a head the world does not qualify is no evidence either way."""
+    holding = [p for p in entry.phrases if head in p]
+    # a misspelt modifier ("the chek-in hall") says no kind: the phrase as a whole decides, as before
+    return bool(holding) and all(p.index(head) > 0 and p[p.index(head) - 1] not in modifiers for p in holding) \
+        and all(known_word(t) for t in modifiers)
+
+
+def noun_like_adjective(s: Sentence, x: int) -> bool:
+    """Whether a word the parser tags an adjective before a place's head may be the noun of a compound
+    ("pet" of "the pet shop", "sweet" of "the sweet shop": the small model tags both JJ), so that it is
+    checked against the place like any kind before the head. Not a word that says how a place looks or
+    lies ("the quiet lounge", "the back office"), nor one only people take ("the nervous ..."), nor an
+    adjective by its ending ("the medical ...", "the electronic ...") or a comparison ("the busiest")."""
+    low = s.low[x]
+    return s.w[x].pos == "ADJ" and s.w[x].tag == "JJ" and s.w[x].dep in ("amod", "compound") and low.isalpha() \
+        and low not in PLACE_MODIFIERS | PERSON_ADJECTIVES | _DESCRIBING and not low.endswith(_ADJECTIVE_ENDINGS) \
+        and known_word(low + "s")  # a noun has a plural English uses ("pets", "sweets"; no "vasts", "nices")
+
+
+# Adjectives with a plural as nouns that still describe a place when before its head ("the cold store" is
+# a name, but "the cold lounge" a lounge): colours and the commonest looks.
+_DESCRIBING = frozenset("""cold cool clean narrow short high long great regular local special ancient bright
+secure green blue red white black yellow silver""".split())
+# Endings English adjectives are made with: a word that has one is no noun of a compound.
+_ADJECTIVE_ENDINGS = ("al", "ic", "ous", "ful", "ive", "able", "ible", "less", "ish", "ary", "ern", "est", "ian",
+                      "ese", "ent", "ant", "y")

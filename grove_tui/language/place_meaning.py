@@ -13,6 +13,7 @@ from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
                                                 room_with, vehicle_stop)
+from grove_tui.language.place_compounds import KIND_HEADS, modified_otherwise, noun_like_adjective
 from grove_tui.language.place_doers import named_doers
 from grove_tui.language.place_of_zone import served_at
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
@@ -89,10 +90,11 @@ class PlaceMeaning:
             # "stockroom", "mailroom": a word the world lacks, made of a kind and a word for places it has
             return next(((word[:n],) for n in range(3, len(word) - 3) if word[n:] in index.zone_words), ())
         return tuple(s.low[x] if s.w[x].tag == "VBG" else s.lemma(x) for x in at[:-1]
-                     if (s.w[x].pos in ("NOUN", "PROPN", "X") or (gerunds and s.w[x].tag == "VBG"))  # "vending"
+                     if (s.w[x].pos in ("NOUN", "PROPN", "X") or (gerunds and s.w[x].tag == "VBG")  # "vending"
+                         or (gerunds and noun_like_adjective(s, x)))  # "the pet shop": tagged an adjective
                      and s.lemma(x) not in index.building_words and not self.people.is_person_noun(x))
 
-    def modifiers_agree(self, modifiers: Sequence[str], name: str, phrase: Sequence[str] = ()) -> bool:
+    def modifiers_agree(self, modifiers: Sequence[str], name: str, phrase: Sequence[str] = (), head: str = "") -> bool:
         """Whether the words that say what kind of place a phrase means fit the place `name`: each is
         one of its words (or a synonym), or together they are near one of its names or its room's. A
         phrase given (a place the words matched by its head alone) must then also be near the place as a
@@ -100,7 +102,7 @@ class PlaceMeaning:
         self-checkout machines, and "vending" is 0.38 from them, but the phrase is only 0.55 from them."""
         index = self.s.index
         entry = index.entry(name)
-        head = lemma(phrase[-1]) if phrase else ""
+        head = lemma(phrase[-1]) if phrase else head  # the head alone: a place read by meaning
         if entry is not None and entry.kind != "zone" and modifiers and head in lx.GENERIC_PLACE_HEADS and \
                 head not in entry.tokens and not set(modifiers) & entry.tokens:
             return False  # "the tv room" is no boardroom screen, a "tv" only by a synonym: a room, not a fixture
@@ -112,6 +114,12 @@ class PlaceMeaning:
         near = index.by_meaning(said, among={entry.name, entry.zone})
         if not near or index.near_building(said) >= MODIFIER_OF_BUILDING:  # "the train platform" of a station
             return True
+        if head not in lx.GENERIC_PLACE_HEADS and modified_otherwise(entry, strange, head):
+            # "the garden centre" is no "travel centre": the place's own modifier says what kind it is,
+            # so the phrase's must be near the place itself (its room, "the concourse", says nothing of it)
+            near = [r for r in near if r.entry.name == entry.name]
+            if not near or (head in KIND_HEADS and near[0].similarity < MODIFIER_SURE):
+                return False  # a building word's modifier is all its kind: "conference" is 0.33 from "travel"
         closest = max(r.similarity for r in near)
         if closest < MODIFIER_AGREES:
             return False

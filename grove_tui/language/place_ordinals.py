@@ -76,3 +76,18 @@ def _own_head(name: str) -> str:
 def _natural(name: str) -> tuple[tuple[int, str], ...]:
     """A name's sort key with its numbers read as numbers (room_9 before room_10)."""
     return tuple((int(part), "") if part.isdigit() else (0, part) for part in re.split(r"(\d+)", name) if part)
+
+
+def series_number_at(index: PlaceIndex, words: Sequence[str]) -> bool:
+    """Whether the words start with the name of a numbered series of the world and a number ("lecture
+    theatre 3" where there are lecture theatres 1 and 2, "platform 9"): one of its places, or one the
+    world lacks, but a place either way ("to lecture theatre 3" is where they go, not what they do, though
+    the parser makes "lecture" a verb)."""
+    lemmas = [t for w in words[:5] for t in name_tokens(w)]
+    at = next((m for m, t in enumerate(lemmas) if m > 0 and any(ch.isdigit() for ch in t)
+               and _IDENTIFIER.fullmatch(t)), None)
+    if at is None:
+        return False
+    kind = tuple(lemmas[:at])
+    return any(len(p) == at + 1 and p[:-1] == kind and _IDENTIFIER.fullmatch(p[-1]) for e in index.entries
+               for p in e.phrases)

@@ -199,7 +199,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 # about to be refused: a place the world has under another word ("the stockroom", "the
                 # nurses' post") is still clearly nearest one of its names, if less near
                 meant = self._by_meaning(said, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
-            if meant is not None and not self.modifiers_agree(kinds, meant[0].name):
+            if meant is not None and not self.modifiers_agree(kinds, meant[0].name, head=lemmas[-1] if lemmas else ""):
                 meant = None  # "the stockroom" is near "boardroom" by its letters, not by what it is
             match = meant[0] if meant is not None else None
         if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):

@@ -25,7 +25,7 @@ from functools import lru_cache
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
-from grove_tui.language.place_compounds import head_only_modifies, names_another_kind
+from grove_tui.language.place_compounds import KIND_HEADS, head_only_modifies, names_another_kind
 from grove_tui.language.tokens import name_tokens
 from grove_tui.world.model import World
 
@@ -248,6 +248,8 @@ class PlaceIndex:
                 total += WHOLE_PHRASE_BONUS + sum(self.idf.get(t, 0.0) for t in max(matched, key=len))
             elif head not in GENERIC_PLACE_HEADS and head not in self.building_words and weights[-1] <= 0:
                 continue  # "the coffee machine": a phrase whose head names nothing of this entry is not it
+            elif head in KIND_HEADS and len(content) > 1 and self.is_nameless(content):
+                continue  # "the shopping centre" of a supermarket is the building, not its shopping aisles
             elif head_only_modifies(e, content):
                 continue  # "the garden centre" is no "centre court": the head is only its first word
             elif len(content) == 1 and any(head in p for p in e.phrases) and \

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceIndex, PlaceMatch
-from grove_tui.language.tokens import phrase_lemmas
+from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 
 @dataclass
@@ -38,8 +38,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
     roles = Roles()
     said_to = False  # the destination came with "to", "into" ...: a later "at" does not replace it
     said = [p for p in places if p.match is not None and p.prep != "obj:seen"]
+    landmarks = _landmarks(places)
     for p in [*places, *scene_places]:
-        if p.match is None or (p.prep == "obj:seen" and said):
+        if p.match is None or (p.prep == "obj:seen" and said) or p in landmarks:
             continue  # "watch TV in the lounge": they are in the lounge
         name = p.match.name
         roles.read_from.setdefault(name, p)
@@ -75,7 +76,29 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             roles.start, roles.location = roles.location, name
         elif role == "via" and name not in roles.via:
             roles.via.append(name)
+    taken = next((p.match.name for p in places if p.prep == "obj:via" and p.match is not None
+                  and verb_lemma(p.written) == "take" and p.match.name in roles.via), None)
+    if taken is not None and roles.destination is None and not stationary:
+        # "five visitors take the stairs": with nowhere else to go, the way they take is where they go
+        roles.via.remove(taken)
+        roles.destination = taken
     return roles
+
+
+# Words that place a place by another: said right after a place phrase ("the study room next to the
+# café", "the exit near the lifts"), the other place says where the first is, not where anyone starts.
+_BESIDE = frozenset("next beside near opposite behind alongside facing".split())
+
+
+def _landmarks(places: Sequence[Place]) -> list[Place]:
+    """The phrases that only say where the place before them is: right after it, by a word of nearness,
+    and not a fixture of its room ("sits in the café next to the window" is at the window)."""
+    out = []
+    for before, p in zip(places, places[1:]):
+        if p.written in _BESIDE and p.index == before.end and before.match is not None and p.match is not None \
+                and not (before.match.kind == "zone" and p.match.zone == before.match.name):
+            out.append(p)
+    return out
 
 
 def narrower(index: PlaceIndex, name: str, than: str) -> bool:

@@ -19,6 +19,7 @@ from functools import cached_property
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word
 from grove_tui.language.places import PlaceIndex
+from grove_tui.language.purpose_things import things_end
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -203,15 +204,9 @@ class Sentence:
             if not allow_objects and j > k and verb_lemma(w) in lx.INTENT_VERBS and self.w[j].pos == "VERB":
                 break
             j += 1
-        if allow_objects and j > k and j + 1 < self.n and self.low[j] == "and" and self._last_object(j + 1):
-            return j + 2  # "to buy plasters and paracetamol": the things a purpose gets are all of it
+        if allow_objects and j > k:
+            return things_end(self, j)  # "to buy plasters and paracetamol": the things a purpose gets are all of it
         return j
-
-    def _last_object(self, k: int) -> bool:
-        """Whether word k is a bare plural or mass noun that ends a list of things ("... and
-        paracetamol."), not the subject of a clause of its own ("and three nurses walk")."""
-        return self.w[k].tag in ("NN", "NNS") and (k + 1 >= self.n or self.is_punct(k + 1) or self.low[k + 1] in
-                                                  lx.PLACE_PREPOSITIONS) and not self.index.knows(self.lemma(k))
 
     # ---- parse-level spans -------------------------------------------------------------------
 
