@@ -530,6 +530,9 @@ def walks_on_to(group: GroupReading, world: World) -> str | None:
     and "walk to the cafeteria and wait there" read the same place twice and go nowhere after)."""
     if _base_intent(group) != "wait" or reacts_only(group) or not group.location or not group.destination:
         return None
+    if _is_exit(world, group.destination):
+        # "... and then leave through the main entrance": out of the building, though the door is the lobby's
+        return group.destination if group.destination != group.location else None
     here, there = world.zone_of_place(group.location), world.zone_of_place(group.destination)
     if there is None or here == there:
         return None

@@ -41,3 +41,16 @@ def test_the_wait_and_the_walk_after_it_both_hold_on_the_run(waited):
     # they stayed the 90 s asked, then left: leaving after the wait is what the sentence says
     assert checked["stay"].status == HOLDS, checked["stay"].evidence
     assert checked["reach"].status == HOLDS, checked["reach"].evidence
+
+
+def test_a_wait_then_leaving_through_a_door_of_the_same_room_leaves(tmp_path):
+    # the hotel's main entrance is a door of the lobby: leaving through it is still going somewhere
+    hotel = "eval/understanding/worlds/hotel.yaml"
+    sentence = "Three guests wait in the lobby for a minute and then leave through the main entrance."
+    run = plan_by_hand(load_world(hotel), "normal", sentence,
+                       (DraftGroup("guests", 3, "lobby", DraftNode("GoTo", {"target": "lobby"})),), tmp_path / "b")
+    claims = {c.kind: c for c in run.report.groups[0].claims}
+    assert claims["evacuate"].exits == ("main_entrance",)
+    checked = {c.kind: c for c in run.run(max(c.needs_seconds or 0.0 for c in claims.values())).groups[0].claims}
+    assert checked["stay"].status == HOLDS, checked["stay"].evidence
+    assert checked["evacuate"].status == HOLDS, checked["evacuate"].evidence
