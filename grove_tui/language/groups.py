@@ -175,7 +175,10 @@ class Groups:
             if mentions[k].partitive or self._an_object(mentions[k]) or \
                     self.mentions.objects.led_by(mentions[k].first):
                 continue  # "two of the six developers follow it": the six do not; "follow their guide": an object
-            if not clauses[k].has_action and clauses[k + 1].has_action and (mentions[k + 1].relation is None or aside) and \
+            # the next clause's verb, or (a verb no list names, "and their nan bake in the kitchen") its places
+            shared = clauses[k + 1].has_action or (bool(clauses[k + 1].places) and not clauses[k].places
+                                                   and [s.low[x] for x in between][:1] == ["and"])
+            if not clauses[k].has_action and shared and (mentions[k + 1].relation is None or aside) and \
                     not leftover and s.w[mentions[k].first].sentence == s.w[mentions[k + 1].first].sentence and \
                     not any(s.low[x] in (";", ".", ":") for x in between) and \
                     not (clauses[k].places and own_participle(s, mentions[k + 1])):  # "..., and a driver walking to"

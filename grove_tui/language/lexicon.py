@@ -55,7 +55,7 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 # Collective nouns: a size when the prompt gives none, and whether the members move together.
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
-    "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3),
+    "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "jury": (12, 12),
     "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2),
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
@@ -395,7 +395,7 @@ ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave",
     "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap "
-                "ask talk chat speak question consult query hail thank",
+                "ask talk chat speak question consult query hail thank crowd surround encircle swarm mob",
     "follow": "follow trail chase shadow tail pursue",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",

@@ -20,6 +20,7 @@ from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, e
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
+from grove_tui.language.only_people import only_people_before, the_only_mention
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -157,7 +158,7 @@ class Mentions:
         s = self.s
         return (m.first > 0 and s.low[m.first - 1] == "with" and before.collective is not None
                 and before.label == before.collective and before.count is not None
-                and before.count.kind == "implied" and m.count is not None and m.relation is None
+                and before.count.kind == "implied" and m.count is not None and m.count.value > 1 and m.relation is None
                 and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
@@ -357,11 +358,8 @@ class Mentions:
         return prev in lx.EXCEPT_WORDS - {"but"} or (prev == "from" and before == "apart") or \
             (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
 
-    def _only_people_before(self, p: int) -> bool:
-        s = self.s
-        sentence = s.w[p].sentence
-        return any(s.low[k] == "only" and next((w for w in s.low[k + 1:k + 3] if w != "other"), "") in
-                   ("people", "person", "ones", "one") for k in range(p) if s.w[k].sentence == sentence)
+    def _only_people_before(self, p: int, other: bool = True) -> bool:  # "the only other person": one more, not all
+        return only_people_before(self.s, self.people, p, other)  # "the only people/visitor in X are/is ..."
 
     def _exclusive_context(self, at: int) -> bool:
         """Whether the phrase at `at` is the exception to "nobody" in its sentence ("nobody ... except
@@ -373,7 +371,7 @@ class Mentions:
                                                          s.low[k + 1] in ("one", "people", "person", "body"))
                          or s.low[k] in ("empty", "deserted") for k in words)
         near = [s.low[k] for k in words if k < at][-2:]
-        if near[-1:] in (["are"], ["is"]) and self._only_people_before(at - 1):
+        if near[-1:] in (["are"], ["is"]) and self._only_people_before(at - 1, other=False):
             return True
         return saw_nobody and (any(x in lx.EXCEPT_WORDS for x in near) or near[-1:] == ["than"]
                                or near == ["apart", "from"])
@@ -414,7 +412,7 @@ class Mentions:
         if rest is not None:
             return rest
         if low[at] == "the" and at + 1 < s.n and low[at + 1] == "only":
-            return None  # "the only people in the ward are two men": the men are the group
+            return the_only_mention(s, self.people, at)  # "the only people in the ward are two men": the men
         whole = self._whole_zone(at, num)
         if whole is not None:
             return whole
@@ -559,15 +557,15 @@ class Mentions:
         if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
             return Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
-        singular = s.lemma(head) == low[head] and low[head] not in ("people", "staff", "police", "crowd")
+        singular = s.lemma(head) == low[head] and not self.people.plural_word(head)  # "the injured": some people
         label = self.people.label(head)
-        if det == "the" and any(m.label == label or s.lemma(head) == m.label for m in found):
+        if det == "the" and any(m.label == label or s.lemma(head) == m.label != label.split("-")[-1] for m in found):
             return None  # "... one person; the person wanders around": the same people again
         noun = s.lemma(head)
         collective = self.collectives.collective(head)
         if collective is not None:
             return collective
-        if det in ("a", "an") or (singular and det == "the"):
+        if det in ("a", "an") or (singular and (det == "the" or det in _POSSESSIVES and low[at - 1] == "and")):
             kind = "exclusive" if exclusive else "exact"
             return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:

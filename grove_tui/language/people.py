@@ -8,7 +8,10 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import known_word
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
+from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
+from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
@@ -60,10 +63,10 @@ class People:
             return False
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
             return False  # "the robot stands guard at the door": a duty, nobody
-        if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i):
-            return True
-        if compound_head_person(s, i) or head_person(s, i):
-            return True  # "two team leaders", "the head goes back to her office"
+        if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i) or adjective_person(s, i):
+            return True  # "a drunk kicks the robot": an adjective standing for a person
+        if compound_head_person(s, i) or head_person(s, i) or agent_compound(s, i):
+            return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
@@ -78,7 +81,11 @@ class People:
         if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
             return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
-                and not known_word(s.low[i]) and near_person_noun(s.low[i]) is not None)
+                and not known_word(s.low[i]) and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
+
+    def plural_word(self, k: int) -> bool:
+        """Whether a person word that looks singular names some people ("staff", "police", "the injured")."""
+        return self.s.low[k] in PLURAL_WORDS
 
     def kind_word(self, k: int) -> bool:
         """Whether word k is inside a modifier naming a person's kind ("temp", "night-shift", "year 6")."""
@@ -383,8 +390,12 @@ class People:
         if k + 1 >= s.n:
             return False
         word = s.low[k + 1]
-        return word == verb_lemma(word) and (verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS) \
-            and self._joined_subject(k)
+        # a verb no list names, in its plural form, then where or how ("the kids and their nan bake in
+        # the kitchen"): the small model makes it a noun the person word modifies
+        unlisted = s.w[k + 1].pos == "NOUN" and word.isalpha() and not word.endswith("s") and \
+            not s.index.knows(s.lemma(k + 1)) and (k + 2 >= s.n or s.w[k + 2].pos in ("ADP", "ADV", "PUNCT", "DET"))
+        return word == verb_lemma(word) and (verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS
+                                             or unlisted) and self._joined_subject(k)
 
     def _joined_subject(self, k: int) -> bool:
         """Whether the person word at k ends a phrase joined by "and" to people before it ("three
@@ -437,8 +448,11 @@ class People:
                 s.lemma(head) not in lx.PERSON_NOUNS:
             return "child"  # "Little Tom": a child, by name
         noun = s.lemma(head)
+        if head >= 2 and s.low[head - 1] == "-" and modifier_end(s, head - 2) == head and s.w[head - 2].pos != "ADJ":
+            return f"{s.low[head - 2]}-{noun}"  # "the co-pilot": another person than "the pilot"
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
-            noun = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" stays
+            near = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" and "pickers" stay
+            noun = noun if agent_of_a_verb(s.low[head], near) else near
         if self.multiword_end(head):
             return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if tuple(s.low[head - len(p) + 1:head + 1]) == p)
         if noun in ("member", "person") and head > 0 and self.is_person_noun(head - 1):

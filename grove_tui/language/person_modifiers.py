@@ -17,6 +17,8 @@ if TYPE_CHECKING:
 # What "the head of ..." is no person of ("the head of the queue", "at the head of the table").
 _HEAD_OF_THINGS = frozenset("queue line table stairs staircase corridor bed river valley column procession "
                             "hall room pier platform steps list page".split())
+# Prefixes of a person noun written with a hyphen ("co-pilot", "ex-wife", "step-dad", "vice-captain").
+_HYPHEN_PREFIXES = frozenset("co ex step vice sub".split())
 # Words before "head" that make it a person ("the deputy head", "the new head").
 _HEAD_TITLES = frozenset("the a deputy assistant acting new former school department our their".split())
 
@@ -28,6 +30,8 @@ def modifier_end(s: Sentence, k: int) -> int | None:
     number = number_at(s, k + 1) if k + 2 < s.n and cohort_number(s, k + 1) else None
     if number is not None:
         return number[1]  # "year 6 pupils"
+    if s.low[k] in _HYPHEN_PREFIXES and k + 2 < s.n and s.low[k + 1] == "-":
+        return k + 2  # "his co-pilot", "her ex-husband": the tokenizer splits one noun in three
     if k + 3 < s.n and s.low[k + 1] == "-" and s.low[k].isalpha() and s.low[k + 2].isalpha() and \
             s.w[k + 3].pos in ("NOUN", "PROPN", "ADJ") and s.low[k] not in lx.ROBOT_WORDS and \
             not (s.lemma(k + 2) in lx.IMPLIED_RANGES and s.w[k].pos != "NOUN"):  # not "a first-class patient"

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
 from grove_tui.language.tokens import verb_lemma
 
@@ -44,6 +45,7 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
     if not robot_at:
         return None
     ownset = set(own)
+    chosen: str | None = None
     for n_mention, r in enumerate(robot_at):
         # The verb closest before the robot governs it ("stop and stare at the robot": look); with
         # two mentions, the words since the one before ("curious about the robot and follow it").
@@ -53,9 +55,12 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         if found == "avoid" and _refused(s, own, r):
             return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
         if found in ("look", "approach", "follow") and _ignored(s, own, r):
-            return None  # "take no notice of the robot", "does not notice it"
-        if found is not None:
-            return found
+            return chosen  # "take no notice of the robot", "does not notice it"
+        if found is not None and chosen is not None and found != later_reaction(chosen, found):
+            return chosen  # "stares at the robot, then backs away from it": the first that is no step on
+        chosen = later_reaction(chosen, found)  # "waves at the robot and follows it": follow
+    if chosen is not None:
+        return chosen
     if any(_refused(s, own, r) for r in robot_at):
         return "block"  # "won't let it pass", "won't budge for the robot"
     if any(_kept_from_passing(s, r) for r in robot_at):
@@ -64,7 +69,7 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         if s.low[i] in lx.ROBOT_FEELINGS:
             return lx.ROBOT_FEELINGS[s.low[i]]
     if any(s.low[r - 1] == "at" or (s.low[r - 1] == "the" and s.low[r - 2] == "at") for r in robot_at if r >= 2):
-        if any(s.verb(i) in HOSTILE_AT_VERBS for i in own if i < robot_at[-1]):
+        if any(verb_in(s, i, HOSTILE_AT_VERBS) for i in own if i < robot_at[-1]):
             return "block"  # "throws a cup at the robot"
         return "look"  # "gawk at the robot", "smile at the robot": a verb the lexicon lacks, aimed at it
     return None
@@ -170,9 +175,10 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
             if s.phrase_words(i, len(phrase), ownset) == phrase and not (
                     s.w[last].pos == "ADP" and _object_elsewhere(s, last, r)):
                 return interaction  # not "look at the flight board while the robot ..."
-        # any verb of walking, known or only tagged a verb by the parser ("waddle over to it")
+        # any verb of walking or roaming, known or only tagged a verb by the parser ("waddle over to it",
+        # "a toddler crawls towards the robot")
         v = s.verb(i)
-        if lx.INTENT_VERBS.get(v) == "walk" or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
+        if lx.INTENT_VERBS.get(v) in ("walk", "wander") or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
             for tail in lx.ROBOT_APPROACH_TAILS:
                 if s.phrase_words(i + 1, len(tail), ownset) == tail:
                     return "approach"  # "the twins toddle up to the robot"
@@ -180,11 +186,20 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
                 return "approach"  # "hurries to the robot", "runs from the lobby to it"
         if v in lx.ROBOT_VERBS and lx.ROBOT_VERBS[v] == "block" and i + 1 < s.n and s.low[i + 1] in PASSING_AFTER:
             continue  # "pushes past the robot": going by it
+        stopping = stops_for(s, i, r)
+        if stopping == "skip":
+            continue  # "stop whispering when the robot passes": no stopping of the robot
+        if stopping is not None:
+            return stopping  # "stops to let the robot cross": making way
         if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
                 not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] == "look"):
             return lx.ROBOT_VERBS[v]
         if s.lemma(i) in lx.ROBOT_NOUNS:
             return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"
+        if goes_after(s, i, r):
+            return "follow"  # "toddles after it", "trots after the robot"
+        if depicts(s, i, r):
+            return "look"  # "an artist sketches the robot"
     return None
 
 

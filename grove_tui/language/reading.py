@@ -34,6 +34,7 @@ from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
+from grove_tui.language.pairs import joined_pairs
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
@@ -80,7 +81,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = finder.find()
+    mentions = joined_pairs(s, people, finder.find())  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

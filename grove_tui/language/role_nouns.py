@@ -1,6 +1,7 @@
 """People named by their part in a place's life that the general list lacks: the roles of courts,
-ports and ferries, schools, shops, factories, theatres, churches and stadiums, and people named by
-what they did or what was done to them. The lexicon adds them to its person nouns."""
+ports and ferries, schools, shops, factories, theatres, churches and stadiums, people named by
+what they did or what was done to them, workmates ("his mate") and the jury (a collective of
+twelve). The lexicon adds them to its person nouns."""
 
 from __future__ import annotations
 
@@ -14,4 +15,5 @@ stagehand theatregoer playgoer cinemagoer moviegoer concertgoer usherette projec
 verger churchwarden sexton deacon curate bishop congregant parishioner bridesmaid groomsman pallbearer
 linesman tout mourner groundstaff
 owner shoplifter thief burglar intruder trespasser protester demonstrator vandal pickpocket
+mate jury
 """.split())

@@ -149,8 +149,9 @@ def test_rounds_are_a_patrol_and_a_fronted_time_keeps_the_robot(read, world, pro
     ("office", "The only other person in the office is a cleaner in the kitchen.", "cleaner"),
 ])
 def test_the_only_other_person_is_the_one_named_after(read, world, prompt, label):
+    # "the only other person" is one more person, not a statement about everyone (decided 2026-11-29)
     groups = read(world, prompt).groups
-    assert [g.label for g in groups] == [label] and groups[0].count.kind == "exclusive"
+    assert [g.label for g in groups] == [label] and groups[0].count.kind == "exact"
 
 
 @pytest.mark.parametrize("world, prompt, led", [
