@@ -25,6 +25,7 @@ from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.school_classes import named_class
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
@@ -553,7 +554,7 @@ class Mentions:
         other = "other" in low[at:k]
         head = self.people.person_head(k, counted=False)
         if head is None:
-            return None  # "ten in the pharmacy": a bare number borrowing the last group's noun is a count
+            return named_class(s, k)  # "Year 4 walks", or none: "ten in the pharmacy" borrows the last noun
         if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
             return Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
