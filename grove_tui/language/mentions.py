@@ -14,6 +14,7 @@ than that group (others_of; after a subset, the rest of its parent), "a few more
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.another_count import more_people
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
@@ -507,7 +508,7 @@ class Mentions:
     def _another(self, at: int, found: list[Mention]) -> Mention:
         """"another nurse", "another group": one more, or a group's size more."""
         s = self.s
-        head = self.people.person_head(at + 1, counted=False)
+        head, last, count = more_people(s, self.people, at)  # "another nurse", "another 5"
         parent = self.parent(found, plain=True)
         relation = f"more_of:{parent}" if parent is not None else None
         if head is not None and s.lemma(head) in lx.IMPLIED_RANGES:
@@ -515,10 +516,9 @@ class Mentions:
             if collective is not None:
                 collective.relation = relation
                 return collective
-        last = head if head is not None else at
         label = self.people.label(head) if head is not None else (found[parent].label if parent is not None
                                                                   else "person")
-        return Mention(at, last, s.span(at, last), label, Count("exact", 1, 1, 1), relation=relation)
+        return Mention(at, last, s.span(at, last), label, count, relation=relation)
 
     def _counted_or_more(self, at: int, num: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
         """"a few more", "two more patients", "a few others", or a plain counted phrase."""

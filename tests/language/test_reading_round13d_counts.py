@@ -92,3 +92,34 @@ def test_a_class_led_by_a_teacher_follows(read, world, prompt):
 def test_a_class_said_as_whose_or_where_is_no_group(read, world, prompt):
     first, cls = read(world, prompt).groups  # only the second class is people
     assert first.count.value == 1 and cls.label == "pupil" and cls.count.low == 25
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("airport", "Over 40 passengers wait at gate B1.", 40),
+    ("hotel", "Under a dozen guests wait in the bar.", 12),
+    ("mall", "No more than 10 shoppers wait at the food court.", 10),
+    ("library", "Fewer than twenty students study in the reading room.", 20),
+    ("station", "More than 30 commuters wait on platform 1.", 30),
+])
+def test_a_bound_is_about_that_many(read, world, prompt, value):
+    c = read(world, prompt).groups[0].count
+    assert (c.kind, c.value) == ("approximate", value) and c.low < value < c.high
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("courthouse", "An 8-strong jury walks to the jury room.", 8),
+    ("hotel", "An eight-strong hen party walks to the bar.", 8),
+    ("ferry_terminal", "A 40-strong coach party waits in the departure lounge.", 40),
+])
+def test_a_strong_collective_has_that_many(read, world, prompt, value):
+    c = read(world, prompt).groups[0].count
+    assert (c.kind, c.value) == ("exact", value)
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("airport", "Five passengers wait at gate B1 and another 5 wait at gate B2.", 5),
+    ("hospital", "Two porters wait in reception and another three porters walk to the pharmacy.", 3),
+])
+def test_another_with_a_number_is_that_many_more(read, world, prompt, value):
+    groups = read(world, prompt).groups
+    assert groups[-1].count.value == value and groups[-1].relation == "more_of:0"
