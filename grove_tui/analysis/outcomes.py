@@ -444,6 +444,10 @@ class _StayProbe(_Probe):
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
         since = f.t[:, None] >= self.arrived[None, :]
+        if self.claim.seconds:
+            # "wait for 90 seconds (and then walk on)": the asked wait after arriving is what is judged;
+            # leaving once it is over is what the sentence says, not a broken wait
+            since &= f.t[:, None] < self.arrived[None, :] + self.claim.seconds
         self.after += (since & present).sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
@@ -462,7 +466,8 @@ class _StayProbe(_Probe):
         mean_share = float(share[arrived].mean()) if arrived.any() else 0.0
         text = f"{k}/{n} stayed at {self.where()}"
         if arrived.any():
-            text += f" ({mean_share:.0%} of the time after arriving"
+            text += f" ({mean_share:.0%} of the {asked:g} s after arriving" if asked else \
+                f" ({mean_share:.0%} of the time after arriving"
             text += f", {float(stayed_for[arrived].min()):.0f} s at least)" if asked else ")"
         else:
             text = f"0/{n} got to {self.where()}"
@@ -770,6 +775,10 @@ class _RobotFollowProbe(_RobotProbe):
         if d is None:
             return
         within = np.isfinite(d) & (d <= (self.claim.distance or 3.0))
+        if 1 < self.cols.size <= CHAIN_MAX:
+            # eight tourists behind a guiding robot walk as a crowd, the last ones 5 m back but with the others
+            pos = f.pos[:, self.cols]
+            within = _along_the_chain(pos, within, np.isfinite(pos[..., 0]))
         for j in np.flatnonzero(np.isinf(self.since) & within.any(axis=0)):
             self.since[j] = f.t[np.argmax(within[:, j])]
         speed = np.hypot(f.robot_vel[:, 0], f.robot_vel[:, 1]) if f.robot_vel is not None else np.zeros(f.t.size)
@@ -786,7 +795,8 @@ class _RobotFollowProbe(_RobotProbe):
         enough = self.moving * checker.sample_dt >= 3.0
         ok = reached & enough & (share >= FOLLOW_SHARE)
         d = self.claim.distance or 3.0
-        text = f"{int(ok.sum())}/{n} followed it within {d:g} m"
+        text = f"{int(ok.sum())}/{n} followed it within {d:g} m" + \
+            (f" or {CHAIN_LINK:g} m of one who is" if 1 < self.cols.size <= CHAIN_MAX else "")
         if reached.any():
             text += f" ({float(share[reached].mean()):.0%} of its moving time since reaching it, first at " \
                     f"{_when(float(self.since[reached].min()))})"

@@ -36,6 +36,7 @@ from grove_tui.generation.postprocess import GroupPlan, PostProcessed, check_pop
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import RobotRequest
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
+from grove_tui.generation.route_time import planned_routes, planning_mode
 from grove_tui.language.model import Count, GroupReading, PromptReading, effective_counts
 from grove_tui.language.reading import read_prompt
 from grove_tui.generation.rois import RoISelection, describe_selection, refine_with_model, select_rois
@@ -445,6 +446,8 @@ class GenerationPipeline:
         report["grounding"] = grounding_report(inputs.reading, post.groups, post.agents, self.world,
                                                post.notes + plan.notes, robot=plan.robot,
                                                sentence=inputs.sentence or inputs.reading,
-                                               walking_speed=self.preset.max_vel).to_dict()
+                                               walking_speed=self.preset.max_vel,
+                                               routes=planned_routes(plan.agents, plan.trees, planning_mode(
+                                                   self.preset.velocity, self.preset.planner.enabled))).to_dict()
         report["goals"] = [list(p) for p in post.goals]
         return GenerationResult(scenario, plan.trees, plan.fields, self.grid, report, inputs)

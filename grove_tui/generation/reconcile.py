@@ -25,7 +25,7 @@ check (scenario/report.py): places, points, partners, paces, each with how long 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Protocol
 
@@ -33,6 +33,7 @@ from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTION
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
+from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
 from grove_tui.language.tokens import lemma, words
@@ -492,6 +493,11 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         if place is not None:
             steps.append(DraftNode("GoTo", {"target": place}))
         steps.append(DraftNode("Wait", {"duration": float(group.wait_seconds or DEFAULT_WAIT_SECONDS)}))
+        onward = walks_on_to(group, world)
+        if onward is not None:
+            # "wait at goods in for 90 seconds and then walk to the canteen": the wait, then the walk
+            steps.append(DraftNode("FollowVelocityField", {"exit": onward}) if _is_exit(world, onward)
+                         else DraftNode("GoTo", {"target": onward}))
         return _sequence(via + steps)
     # walk, evacuate, follow
     destination = group.destination
@@ -516,6 +522,21 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
             return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": 0.0})])
         destination = _nearest_exit(world, None, group.avoid)
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
+
+
+def walks_on_to(group: GroupReading, world: World) -> str | None:
+    """Where a waiting group goes once its wait is over: the reading's destination when it waits
+    somewhere else ("wait in the lobby for two minutes, then go to the pharmacy"; "wait at the pharmacy"
+    and "walk to the cafeteria and wait there" read the same place twice and go nowhere after)."""
+    if _base_intent(group) != "wait" or reacts_only(group) or not group.location or not group.destination:
+        return None
+    if _is_exit(world, group.destination):
+        # "... and then leave through the main entrance": out of the building, though the door is the lobby's
+        return group.destination if group.destination != group.location else None
+    here, there = world.zone_of_place(group.location), world.zone_of_place(group.destination)
+    if there is None or here == there:
+        return None
+    return group.destination
 
 
 def _largest_neighbour(world: World, zone: str) -> str | None:
@@ -709,6 +730,8 @@ class PlannedAgent(Protocol):
     """An agent as the grounding report reads it: post-processing's AgentPlan, or refine's view of one."""
 
     @property
+    def id(self) -> int: ...
+    @property
     def group_index(self) -> int: ...
     @property
     def start(self) -> tuple[float, float]: ...
@@ -721,13 +744,15 @@ class PlannedAgent(Protocol):
 def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], agents: Sequence[PlannedAgent],
                      world: World, repairs: Sequence[str] = (), *, robot: RobotSpec | None = None,
                      sentence: PromptReading | None = None,
-                     walking_speed: float = 1.0) -> GroundingReport:
+                     walking_speed: float = 1.0, routes: Mapping[int, Sequence[Leg]] | None = None) -> GroundingReport:
     """What the sentence asked, as claims a run can check, per reading group and for the robot.
 
     `groups` are post-processing's GroupPlans (reading_index, label, count, spawn, tree, behavior,
     member_ids, added); `agents` its AgentPlans (start, targets, max_vel). `robot` is the planned
     RobotSpec; `sentence` the reading before a user's count edits (default `reading`);
-    `walking_speed` the preset's normal pace, for slow and fast."""
+    `walking_speed` the preset's normal pace, for slow and fast; `routes` each agent's planned legs
+    (`route_time.planned_routes`), which set how long a run needs for each place (without them,
+    straight legs times a detour)."""
     sentence = sentence or reading
     by_reading = {g.reading_index: g for g in groups if getattr(g, "reading_index", None) is not None}
     counts = effective_counts(reading)
@@ -757,7 +782,8 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
         if counts.get(index, 0) != asked_counts.get(index, 0):
             edit = (f"the sentence asked {asked_counts.get(index, 0)} ('{original.who}'); "
                     f"you changed it to {counts.get(index, 0)}")
-        claims += _group_claims(r, g, agents_here, world, reading, by_reading, walking_speed, robot_seconds)
+        claims += _group_claims(r, g, agents_here, routes or {}, world, reading, by_reading, walking_speed,
+                                robot_seconds)
         out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     robot_row = _robot_row(reading.robot, robot, world, agents)
@@ -802,12 +828,13 @@ def _count_claim(original: GroupReading, asked: int, wanted: int, g: PlannedGrou
     return Claim("count", text, plan)
 
 
-def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgent], world: World,
-                  reading: PromptReading, by_reading: dict[int | None, PlannedGroup], walking_speed: float,
-                  robot_seconds: float) -> list[Claim]:
+def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgent], routes: Mapping[int, Sequence[Leg]],
+                  world: World, reading: PromptReading, by_reading: dict[int | None, PlannedGroup],
+                  walking_speed: float, robot_seconds: float) -> list[Claim]:
     claims: list[Claim] = []
     n = max(1, g.count)
     speed = min((a.max_vel for a in agents), default=walking_speed) or walking_speed
+    timing = _Timing(agents, routes, world, speed)
     if r.start:
         zone = world.zone_of_place(r.start)
         spread = getattr(g, "spawn_zones", None)
@@ -819,7 +846,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
     tree_nodes = {node.node for node in g.tree.walk()}
     base = _base_intent(r)
     for v in () if reacts_only(r) else r.via:
-        claims.append(_place_claim("reach", v, f"walk through {v}", world, n, _eta(agents, v, world, speed)))
+        claims.append(_place_claim("reach", v, f"walk through {v}", world, n, timing.eta(v)))
     if r.robot_interaction:
         claims.append(_reaction_claim(r, g, robot_seconds))
         if reacts_only(r):
@@ -835,7 +862,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
     if base == "walk" or base == "follow":
         if r.destination:
             claim = _place_claim("reach", r.destination, f"walk to {r.destination}", world, n,
-                                 _eta(agents, r.destination, world, speed))
+                                 timing.eta(r.destination))
             if not _reaches(world, r.destination, _tree_places(g.tree)):
                 claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there", zone=claim.zone,
                               place=claim.place, point=claim.point, radius=claim.radius)
@@ -845,12 +872,12 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claims.append(Claim("evacuate", "any exit but " + ", ".join(shunned) if shunned else
                                 "walk out (no destination named)", "follow the evacuation field to the nearest exit",
                                 exits=tuple(d.name for d in world.exits() if d.name not in shunned) if shunned else (),
-                                needs_seconds=_evacuation_eta(agents, world, speed, n)))
+                                needs_seconds=timing.evacuation_eta(n)))
         elif r.start and world.zone_of_place(r.start):
             # "people leave the big meeting room": out of it, wherever to
             zone = world.zone_of_place(r.start)
             claims.append(Claim("leave", r.start, "walk out" if "Wander" not in tree_nodes else f"wander in {zone}",
-                                zone=zone, place=r.start, needs_seconds=_eta(agents, None, world, speed) + 20.0))
+                                zone=zone, place=r.start, needs_seconds=timing.eta(None) + 20.0))
         else:
             claims.append(Claim("move", "walk (no destination named)",
                                 "wander where they are" if "Wander" in tree_nodes else "walk",
@@ -870,7 +897,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             exits = tuple(dict.fromkeys(e for e in (*exits, *unsure.alternatives) if _is_exit(world, e)))
         if r.destination and not exits:
             claims.append(_place_claim("reach", r.destination, f"evacuate to {r.destination}", world, n,
-                                       _eta(agents, r.destination, world, speed)))
+                                       timing.eta(r.destination)))
         else:
             shunned = [a for a in r.avoid if _is_exit(world, a)]
             if shunned and not exits:
@@ -880,7 +907,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
                 "any of " + ", ".join(exits) if len(exits) > 1 else r.destination or "any exit"
             claims.append(Claim("evacuate", asked,
                                 "follow the evacuation field" if "FollowVelocityField" in tree_nodes else "walk out",
-                                exits=exits, needs_seconds=_evacuation_eta(agents, world, speed, n)))
+                                exits=exits, needs_seconds=timing.evacuation_eta(n)))
     elif base == "queue":
         service = next((place_of(node, "service_point") for node in g.tree.walk() if node.node == "Queue"), None)
         place = r.location or r.destination or service
@@ -891,21 +918,33 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
                                  if node.node == "Queue"), 10.0)
             claims.append(Claim("queue", place or service, f"queue at {service}", place=service,
                                 zone=world.zone_of_place(service),
-                                needs_seconds=_eta(agents, service, world, speed) + service_time + 15.0))
+                                needs_seconds=timing.eta(service) + service_time + 15.0))
     elif base == "wait":
         place = r.location or r.destination
         seconds = float(r.wait_seconds) if r.wait_seconds else None
         if place:
             claim = _place_claim("stay", place, f"wait at {place}" + (f" {seconds:g} s" if seconds else ""), world,
-                                 n, _eta(agents, place, world, speed) + (seconds or 0.0), stay=True)
+                                 n, timing.eta(place) + (seconds or 0.0), stay=True)
         else:
             claim = Claim("stay", "where they are", f"wait in {g.spawn}", zone=g.spawn, place=g.spawn,
                           needs_seconds=(seconds or 10.0) + 5.0)
         claims.append(replace_seconds(claim, seconds))
+        onward = walks_on_to(r, world)
+        if onward is not None:
+            waited = seconds or DEFAULT_WAIT_SECONDS
+            if _is_exit(world, onward):
+                claims.append(Claim("evacuate", onward, f"then leave through {onward}", exits=(onward,),
+                                    needs_seconds=timing.evacuation_eta(n) + waited))
+            else:
+                claim = _place_claim("reach", onward, f"then walk to {onward}", world, n, timing.eta(onward) + waited)
+                if not _reaches(world, onward, _tree_places(g.tree)):
+                    claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
+                                  zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
+                claims.append(claim)
     elif base == "wander":
         zone = world.zone_of_place(r.location or r.destination or r.start or "") or g.spawn
         claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
-                            needs_seconds=_eta(agents, zone, world, speed) + 20.0))
+                            needs_seconds=timing.eta(zone) + 20.0))
     elif base == "converse":
         spot = r.location or r.start or r.destination
         zone = world.zone_of_place(spot or "") or g.spawn
@@ -918,7 +957,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         else:
             claims.append(Claim("converse", "talk together" + (f" in {zone}" if zone else ""),
                                 f"a conversation circle in {zone}", zone=zone, place=spot, partners=partners,
-                                needs_seconds=_eta(agents, spot or zone, world, speed) + 15.0))
+                                needs_seconds=timing.eta(spot or zone) + 15.0))
     if r.pace in ("slow", "fast"):
         normal = walking_speed
         low, high = (0.2, round(0.85 * normal, 2)) if r.pace == "slow" else (round(1.15 * normal, 2), 3.0)
@@ -992,41 +1031,53 @@ def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: fl
                  radius=round(radius, 2), needs_seconds=round(eta, 1))
 
 
-def _route_length(agent: PlannedAgent, upto: str | None, world: World) -> float:
-    """Straight-line legs from the agent's start through its targets, up to the first at `upto`."""
-    length, here = 0.0, agent.start
-    zone = world.zone_of_place(upto or "") if upto else None
-    for name, point in getattr(agent, "targets", ()):
-        length += math.dist(here, point)
-        here = point
-        if upto is not None and (name == upto or (zone is not None and world.zone_of_place(name) == zone
-                                                  and world.zone_of_place(upto) == upto)):
-            return length
-    if upto is not None and zone is not None:
-        # not among the targets: as the crow flies to the zone's centre
-        try:
-            return length + math.dist(here, world.zone(zone).centroid)
-        except Exception:
-            return length
-    return length
+class _Timing:
+    """How long a group needs to get to its places: the slowest member's route at the group's pace."""
 
+    def __init__(self, agents: Sequence[PlannedAgent], routes: Mapping[int, Sequence[Leg]], world: World,
+                 speed: float) -> None:
+        self.agents, self.routes, self.world, self.speed = agents, routes, world, max(speed, 0.1)
 
-def _eta(agents: Sequence[PlannedAgent], place: str | None, world: World, speed: float) -> float:
-    """Seconds the slowest member needs to get to `place` (detours 1.5 times the straight legs), plus slack."""
-    if not agents:
-        return 30.0
-    longest = max(_route_length(a, place, world) for a in agents)
-    return round(1.5 * longest / max(speed, 0.1) + 10.0, 1)
+    def eta(self, place: str | None) -> float:
+        """Seconds the slowest member needs to get to `place` (its whole route for None), plus slack."""
+        if not self.agents:
+            return 30.0
+        longest = max(self._route_metres(a, place) for a in self.agents)
+        return round(longest / self.speed + 10.0, 1)
 
+    def evacuation_eta(self, n: int) -> float:
+        exits = self.world.exits()
+        if not self.agents or not exits:
+            return 60.0
+        if all(self.routes.get(a.id) for a in self.agents):
+            # each evacuee's planned way out (its field's path, or its waypoints to the door)
+            longest = max(RouteWalk(a.start, self.routes[a.id]).to_end() for a in self.agents)
+        else:
+            longest = 1.8 * max(min(math.dist(a.start, d.position) for d in exits) for a in self.agents)
+        # the last of n people through a door about 1 person/s/m wide
+        flow = sum(d.width for d in exits) or 1.0
+        return round(longest / self.speed + n / flow + 10.0, 1)
 
-def _evacuation_eta(agents: Sequence[PlannedAgent], world: World, speed: float, n: int) -> float:
-    exits = world.exits()
-    if not agents or not exits:
-        return 60.0
-    longest = max(min(math.dist(a.start, d.position) for d in exits) for a in agents)
-    # the last of n people through a door about 1 person/s/m wide
-    flow = sum(d.width for d in exits) or 1.0
-    return round(1.8 * longest / max(speed, 0.1) + n / flow + 10.0, 1)
+    def _route_metres(self, agent: PlannedAgent, upto: str | None) -> float:
+        """Weighted metres from the agent's start along its legs, up to its first target at `upto`
+        (`route_time.Leg.weighted`: a planned path with a margin, a straight leg with a detour)."""
+        world = self.world
+        walk = RouteWalk(agent.start, self.routes.get(agent.id, ()))
+        zone = world.zone_of_place(upto or "") if upto else None
+        for name, point in getattr(agent, "targets", ()):
+            walk.to(point)
+            if upto is not None and (name == upto or (zone is not None and world.zone_of_place(name) == zone
+                                                      and world.zone_of_place(upto) == upto)):
+                return walk.metres
+        if upto is None:
+            return walk.to_end()
+        if zone is not None:
+            # not among the targets: as the crow flies to the zone's centre
+            try:
+                return walk.straight_to(world.zone(zone).centroid)
+            except Exception:
+                return walk.metres
+        return walk.metres
 
 
 def _robot_seconds(robot: RobotSpec | None) -> float:

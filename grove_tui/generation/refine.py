@@ -27,7 +27,7 @@ import hashlib
 import re
 import threading
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from grove_tui.bt.format.document import TreeFiles
@@ -42,6 +42,7 @@ from grove_tui.generation.postprocess import AgentPlan, GroupPlan, PostProcessed
 from grove_tui.generation.presets import load_preset
 from grove_tui.generation.requests import RobotRequest
 from grove_tui.generation.reconcile import grounding_report, tree_for
+from grove_tui.generation.route_time import Leg, planned_routes, planning_mode
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.scene import Scene, SceneGroup, placed_scene
 from grove_tui.generation.synthesis import describe_reading_groups
@@ -448,8 +449,9 @@ def apply_refinement(pipeline: GenerationPipeline, scene: Scene, refinement: Ref
     history.append(HistoryStep(refinement.step, text, refinement.edit.to_dict(), refinement.diff, seed,
                                stages_seconds, stages).to_dict())
     report["history"] = history
+    routes = planned_routes(agents, trees, planning_mode(preset.velocity, preset.planner.enabled))
     report["grounding"] = _grounding(scene, refinement, records, agents, post.agents, step_notes, world, robot,
-                                     preset.max_vel)
+                                     preset.max_vel, routes)
     return GenerationResult(refined, trees, fields, scene.result.grid, report, None)
 
 
@@ -599,7 +601,7 @@ class _GroundedAgent:
 
 def _grounding(scene: Scene, refinement: Refinement, records: Sequence[GroupRecord], agents: Sequence[AgentSpec],
                new_agents: Sequence[AgentPlan], repairs: Sequence[str], world: World, robot: RobotSpec | None,
-               walking_speed: float) -> JSONObject:
+               walking_speed: float, routes: Mapping[int, Sequence[Leg]]) -> JSONObject:
     """The grounding report of the refined scenario: every group against the reading it realises now
     (its sentence's, or a follow-up's), which sentence asked for it and which changed it."""
     from grove_tui.generation.scene import node_from_dict, targets_of
@@ -620,7 +622,8 @@ def _grounding(scene: Scene, refinement: Refinement, records: Sequence[GroupReco
         targets = list(placed[a.id].targets) if a.id in placed else targets_of(scene.document(a))
         people.append(_GroundedAgent(a.id, group_of.get(a.id, -1), a.label, a.start, targets, a.zone, a.max_vel,
                                      a.behavior))
-    report = grounding_report(combined, grounded, people, world, repairs, robot=robot, walking_speed=walking_speed)
+    report = grounding_report(combined, grounded, people, world, repairs, robot=robot, walking_speed=walking_speed,
+                              routes=routes)
     asked = {tuple(g.member_ids): p for g, p in zip(grounded, refinement.groups)}
     groups = tuple(replace(g, asked_by=asked[g.members].asked_by, changed_by=asked[g.members].changed_by)
                    if g.members in asked else g for g in report.groups)

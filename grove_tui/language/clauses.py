@@ -16,6 +16,7 @@ from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
+from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
@@ -25,7 +26,9 @@ from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -95,11 +98,12 @@ class Clauses:
                 scan.pos += 1
         if scene:
             self._scene(scan)
+        c.wait_seconds = c.wait_seconds or stay_in(s, own)  # "until closing", "all afternoon", even inside a phrase
         self._intent(scan)
         self._evacuation(c, own)
         if c.intent == "follow" and c.verb_index is not None:
             self._followed(c)
-        self._manner(c, own)
+        c.pace, c.together = pace(s, own), together(s, own)
         return c
 
     # ---- phrases ---------------------------------------------------------------------------------
@@ -112,12 +116,12 @@ class Clauses:
         nxt = s.low[i + 1] if i + 1 < s.n else ""
         if w == "for" and not (i > 0 and s.low[i - 1] in lx.EXCEPT_WORDS) and self._for(scan, i, nxt):
             return True
-        if i > 0 and lx.INTENT_VERBS.get(s.verb(i - 1)) in lx.STATIONARY_INTENTS and scan.c.wait_seconds is None:
-            dur = duration_at(s, i)  # "waits 15 minutes outside the room": a duration without "for"
-            if dur is not None:
-                scan.c.wait_seconds = dur[0]
-                self._take(scan, i, dur[1])
-                return True
+        dur: tuple[float | None, int] | None = duration_at(s, i) if i > 0 and lx.INTENT_VERBS.get(
+            s.verb(i - 1)) in lx.STATIONARY_INTENTS else None
+        if dur is not None:  # "waits 15 minutes outside the room": a duration without "for"
+            scan.c.wait_seconds = scan.c.wait_seconds or dur[0]
+            self._take(scan, i, dur[1])
+            return True
         negated = next((p for p in lx.NEGATED_PLACE_PHRASES if tuple(s.low[i:i + len(p)]) == p), None)
         if negated is not None:
             # "go to the imaging instead of the waiting room": a place nobody goes to
@@ -217,7 +221,7 @@ class Clauses:
     def _for(self, scan: _Scan, i: int, nxt: str) -> bool:
         """"for five minutes" (a wait), "head for the exit" (a destination), "for coffee" (a purpose)."""
         s = self.s
-        dur = duration_at(s, i + 1)
+        dur = stay_after_for(s, i + 1)  # "for a while", "for the rest of the run": a stay, never a purpose
         if dur is not None:
             scan.c.wait_seconds = dur[0]
             self._take(scan, i, dur[1])
@@ -300,9 +304,8 @@ class Clauses:
                 scan.used.update(range(i + 1, place.end))
                 scan.pos = s.advance(scan.own, place.end)
                 return True
-        if v in lx.ROUTE_OBJECT_VERBS and not s.after_determiner(i) and \
-                any(s.low[x] in lx.PASSAGE_WORDS for x in range(i + 1, s.phrase_end(i + 1))):
-            # "take the stairs", "use the side entrance": the way they go
+        if not s.after_determiner(i) and takes_a_way(s, i, v, s.phrase_end(i + 1)):
+            # "take the stairs", "use the side entrance", "take the lifts", "ride the escalator": the way they go
             place = self.places.phrase(i + 1, "obj:via", i, record_unknown=False)
             c.has_action, c.intent = True, c.intent or "walk"  # a way the world lacks is still a way they go
             if place is not None and place.match is not None:
@@ -403,9 +406,7 @@ class Clauses:
         for i in own:
             if i in used and s.low[i] not in _VERBS_INSIDE_NAMES:
                 continue
-            phrasal = next(((phrase, intent) for phrase, intent in lx.PHRASAL_INTENTS.items()
-                            if tuple(verb_lemma(x) if t == 0 else x for t, x in enumerate(s.low[i:i + len(phrase)]))
-                            == phrase), None)
+            phrasal = phrasal_intent(s, i)  # "line up", "do laps", "stretches her legs"
             if phrasal is not None:
                 candidates.append((i, phrasal[1], phrasal[0][0]))
                 continue
@@ -413,12 +414,12 @@ class Clauses:
                     (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
-            v = s.verb(i)
-            if v in lx.INTENT_VERBS and not (v == "line" and s.w[i].pos != "VERB"):
+            v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
+            if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
                                                                                   "way", "to")):
                     continue
-                candidates.append((i, lx.INTENT_VERBS[v], v))
+                candidates.append((i, kind, v))
         if any(s.w[i].pos == "VERB" and s.w[i].lemma not in ("be", "have") and i not in used for i in own):
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
         if any(i not in s.relative for i, _, _ in candidates):
@@ -439,11 +440,11 @@ class Clauses:
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]
                 if wanted == "wander" and has_destination and "walk" not in kinds[:kinds.index(wanted)] \
-                        and not s.around_follows(i):
+                        and not around_after(s, i):
                     return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
                 return wanted, verb, i
         i, kind, verb = candidates[0]
-        if kind == "walk" and s.around_follows(i) and not has_destination:
+        if kind == "walk" and around_after(s, i) and not has_destination:  # "walks slowly round the hall"
             return "wander", verb, i
         return kind, verb, i
 
@@ -522,18 +523,6 @@ class Clauses:
             c.follows = "the group before"
         else:
             c.intent = "walk"
-
-    def _manner(self, c: Clause, own: Sequence[int]) -> None:
-        s = self.s
-        lemmas = {verb_lemma(s.low[i]) for i in own} | {s.low[i] for i in own}
-        lemmas |= {w[:-3] + "y" if w.endswith("ies") else w[:-1] for w in lemmas if w.endswith("s")}  # "dawdles"
-        trigrams = s.trigrams(own)
-        if lemmas & lx.FAST_WORDS or ("in", "a", "hurry") in trigrams:
-            c.pace = "fast"
-        elif lemmas & lx.SLOW_WORDS or ("take", "their", "time") in {(verb_lemma(t[0]), *t[1:]) for t in trigrams}:
-            c.pace = "slow"
-        if {s.low[i] for i in own} & lx.TOGETHER_WORDS or any(i in s.together_phrases for i in own):
-            c.together = True
 
     # ---- sentence-wide cues ----------------------------------------------------------------------
 

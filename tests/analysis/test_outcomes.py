@@ -145,6 +145,19 @@ def test_an_asked_wait_needs_a_run_as_long_as_the_wait(clinic):
     assert check(clinic, claim, run(30, stayed)).status == UNCHECKED
 
 
+def test_an_asked_wait_is_judged_over_its_seconds_and_leaving_after_it_is_no_cross(clinic):
+    # "wait in the cafeteria for 10 seconds and then walk to the pharmacy"
+    claim = Claim("stay", "cafeteria for 10 s", "wait", zone="cafeteria", seconds=10.0, needs_seconds=15.0)
+
+    def wait_then_go(x, stays):
+        return lambda t: np.array([x, -3.0]) if t < stays else np.array([x, -3.0 + 1.5 * (t - stays)])
+    waited = people(wait_then_go(20, 11.0), wait_then_go(21, 11.0))
+    held = check(clinic, claim, run(30, waited))
+    assert held.status == HOLDS and "of the 10 s after arriving" in held.evidence
+    cut_short = people(wait_then_go(20, 11.0), wait_then_go(21, 1.0))  # out of it 5 s after arriving
+    assert check(clinic, claim, run(30, cut_short)).status == FAILS
+
+
 def test_wander_is_moving_around_inside_the_zone(clinic):
     claim = Claim("wander", "cafeteria", "wander in cafeteria", zone="cafeteria")
 

@@ -1,0 +1,56 @@
+"""A wait with somewhere to go after it ("two workers wait at goods in for 90 seconds and then walk to the
+canteen"): the tree waits and then walks there, and the report checks both on a real run. Before, the walk
+was dropped as "not asked" and the report never said so."""
+
+from __future__ import annotations
+
+import pytest
+from helpers.planned_run import plan_by_hand
+
+from grove_tui.generation.draft import DraftGroup, DraftNode
+from grove_tui.scenario.report import HOLDS
+from grove_tui.world import load_world
+
+WAREHOUSE = "eval/understanding/worlds/warehouse.yaml"
+SENTENCE = "Two workers wait at goods in for 90 seconds and then walk to the canteen."
+# as the model wrote it for this sentence
+MODEL_TREE = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "goods_in"}),
+                                        DraftNode("Wait", {"duration": 90.0}),
+                                        DraftNode("GoTo", {"target": "canteen"})))
+
+
+@pytest.fixture(scope="module")
+def waited(tmp_path_factory):
+    world = load_world(WAREHOUSE)
+    return plan_by_hand(world, "normal", SENTENCE, (DraftGroup("workers", 2, "goods_in", MODEL_TREE),),
+                        tmp_path_factory.mktemp("wait") / "bundle")
+
+
+def test_they_wait_and_then_walk_on(waited):
+    for tree in waited.op.trees.values():
+        steps = [(e.id, e.get("target") or float(e.get("duration") or 0)) for e in tree.nodes()
+                 if e.id in ("GoTo", "Wait")]
+        assert steps == [("GoTo", "goods_in"), ("Wait", 90.0), ("GoTo", "canteen")]
+
+
+def test_the_wait_and_the_walk_after_it_both_hold_on_the_run(waited):
+    claims = {c.kind: c for c in waited.report.groups[0].claims}
+    assert claims["stay"].seconds == 90.0 and claims["reach"].place == "canteen"
+    needs = max(c.needs_seconds or 0.0 for c in claims.values())
+    checked = {c.kind: c for c in waited.run(needs).groups[0].claims}
+    # they stayed the 90 s asked, then left: leaving after the wait is what the sentence says
+    assert checked["stay"].status == HOLDS, checked["stay"].evidence
+    assert checked["reach"].status == HOLDS, checked["reach"].evidence
+
+
+def test_a_wait_then_leaving_through_a_door_of_the_same_room_leaves(tmp_path):
+    # the hotel's main entrance is a door of the lobby: leaving through it is still going somewhere
+    hotel = "eval/understanding/worlds/hotel.yaml"
+    sentence = "Three guests wait in the lobby for a minute and then leave through the main entrance."
+    run = plan_by_hand(load_world(hotel), "normal", sentence,
+                       (DraftGroup("guests", 3, "lobby", DraftNode("GoTo", {"target": "lobby"})),), tmp_path / "b")
+    claims = {c.kind: c for c in run.report.groups[0].claims}
+    assert claims["evacuate"].exits == ("main_entrance",)
+    checked = {c.kind: c for c in run.run(max(c.needs_seconds or 0.0 for c in claims.values())).groups[0].claims}
+    assert checked["stay"].status == HOLDS, checked["stay"].evidence
+    assert checked["evacuate"].status == HOLDS, checked["evacuate"].evidence
