@@ -88,7 +88,8 @@ class Collectives:
             # "groups of three or four", "pairs of tourists": several, however many is not said
             parties, exact_parties = s.choose(*lx.PLURAL_PARTIES_RANGE, f"{head}:groups"), False
         together = noun in lx.TOGETHER_COLLECTIVES
-        last, size, label = head, None, self.people.label(head) if self.people.multiword_end(head) else noun
+        size = number.value if number is not None and number.kind == "strong" else None  # "an 8-strong jury"
+        last, label = head, self.people.label(head) if self.people.multiword_end(head) else noun
         loose: Quantifier | None = None
         if head + 2 < s.n and low[head + 1] == "of":
             loose = quantifier(s, head + 2)

@@ -100,6 +100,36 @@ def negative_at(s: Sentence, i: int) -> bool:
     return word in ("-", "\u2212") and number_at(s, i + 1) is not None and (i == 0 or number_at(s, i - 1) is None)
 
 
+# Counts said by a bound ("over 40 passengers", "under a dozen guests", "no more than 10"): the
+# labelling convention reads a bound as about that number (+-20 %), like "at least" and "up to".
+BOUND_PHRASES: tuple[tuple[str, ...], ...] = (
+    ("no", "more", "than"), ("not", "more", "than"), ("no", "fewer", "than"), ("no", "less", "than"),
+    ("more", "than"), ("fewer", "than"), ("less", "than"), ("well", "over"), ("well", "under"),
+    ("over",), ("under",), ("nearer",), ("getting", "on", "for"))
+
+
+def bound_at(s: Sentence, k: int) -> int | None:
+    """The index of the number after a bound phrase at word k, else None."""
+    for phrase in BOUND_PHRASES:
+        if tuple(s.low[k:k + len(phrase)]) == phrase and number_at(s, k + len(phrase)) is not None:
+            return k + len(phrase)
+    return None
+
+
+def strong_size(s: Sentence, k: int) -> tuple[int, int] | None:
+    """(size, index after) of "8-strong" / "eight strong" at word k (after "a"/"an" if any): how many
+    a collective after it has ("an 8-strong jury", "a forty-strong coach party")."""
+    if k < s.n and s.low[k] in ("a", "an"):
+        k += 1
+    num = number_at(s, k)
+    if num is None:
+        return None
+    after = num[1] + 1 if num[1] < s.n and s.low[num[1]] == "-" else num[1]
+    if after < s.n and s.low[after] == "strong" and num[0] > 0:
+        return num[0], after + 1
+    return None
+
+
 def quantifier(s: Sentence, j: int) -> Quantifier | None:
     """The count expression at word j, if one starts there."""
     low = s.low
@@ -117,6 +147,12 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
             if tuple(low[k:k + len(phrase)]) == phrase and number_at(s, k + len(phrase)) is not None:
                 approx, k = True, k + len(phrase)
                 break
+    bounded = bound_at(s, k) if not approx else None
+    if bounded is not None:
+        approx, k = True, bounded
+    size = strong_size(s, k)
+    if size is not None:
+        return Quantifier(size[0], "strong", size[1])  # "an 8-strong jury": one party of that many
     if low[k] == "between" and number_at(s, k + 1):
         a = number_at(s, k + 1)
         if a is not None and a[1] < s.n and low[a[1]] == "and":
@@ -185,7 +221,7 @@ def _number_quantifier(s: Sentence, num: tuple[int, int], approx: bool) -> Quant
 
 def count_of(s: Sentence, q: Quantifier, key: str, default: tuple[int, int] = lx.BARE_PLURAL_RANGE) -> Count:
     """The Count a quantifier makes; vague and ranged ones take a seeded value inside their range."""
-    if q.kind == "exact":
+    if q.kind in ("exact", "strong"):
         return Count("exact", q.value, q.value, q.value)
     if q.kind == "approximate" and q.low is not None and q.high is not None:
         return Count("approximate", q.value, q.low, q.high)  # "2.5 people": 3, between 2 and 3

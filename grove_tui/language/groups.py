@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
+from grove_tui.language.escorted import attribute_end, company_between
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.leading_out import leads_out
 from grove_tui.language.list_items import own_participle
@@ -28,6 +29,7 @@ from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.roles import Roles, assign_roles
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
+from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 
@@ -63,6 +65,9 @@ class Groups:
         # The robot's own clauses belong to no group: a group's places never come from them.
         excluded = {i for m in mentions for i in range(m.first, m.last + 1)} | robot_tokens | \
             {i for m in mentions if m.apposition for i in range(m.apposition[0], m.apposition[1] + 1)}
+        people = self.mentions.people  # "their patient files are ...": the files are no verb of "file"
+        excluded |= {k + 1 for k in range(s.n) if people.is_person_noun(k) and
+                     modifies_a_thing(s, k, person_next=k + 1 < s.n and people.is_person_noun(k + 1))}
         scenes = self._scenes(mentions, spans, excluded, robot_tokens)
         clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
                                      owner=m.label) for m, (a, b) in zip(mentions, spans)]
@@ -168,8 +173,15 @@ class Groups:
         for k in range(len(clauses) - 2, -1, -1):
             between = range(mentions[k].last + 1, mentions[k + 1].first)
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
-            leftover = [x for x in between if x not in in_places and not s.is_punct(x)
+            described = attribute_end(s, self.mentions.people, mentions[k].last)  # "a boy with a broken arm and ..."
+            leftover = [x for x in between if x not in in_places and not s.is_punct(x) and x > described
                         and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my", "each")]
+            if clauses[k + 1].has_action and (company_between(s, mentions[k].last, mentions[k + 1].first) or (
+                    described > mentions[k].last and not leftover and not clauses[k].places)):
+                # "a defendant flanked by two guards walks to ...", "a girl with a sprained ankle and her
+                # dad wait ...": the verb after both is the first's too, not the participle's
+                clauses[k] = replace(clauses[k + 1], places=clauses[k + 1].places)
+                continue
             # "Ten patients, three of them on crutches, wait ...": a part set off by commas says nothing of the verb
             aside = mentions[k + 1].relation == f"subset_of:{k}" and s.low[mentions[k + 1].first - 1] == ","
             if mentions[k].partitive or self._an_object(mentions[k]) or \

@@ -14,6 +14,7 @@ than that group (others_of; after a subset, the rest of its parent), "a few more
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.another_count import more_people
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
@@ -25,6 +26,7 @@ from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.school_classes import named_class
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
@@ -506,7 +508,7 @@ class Mentions:
     def _another(self, at: int, found: list[Mention]) -> Mention:
         """"another nurse", "another group": one more, or a group's size more."""
         s = self.s
-        head = self.people.person_head(at + 1, counted=False)
+        head, last, count = more_people(s, self.people, at)  # "another nurse", "another 5"
         parent = self.parent(found, plain=True)
         relation = f"more_of:{parent}" if parent is not None else None
         if head is not None and s.lemma(head) in lx.IMPLIED_RANGES:
@@ -514,10 +516,9 @@ class Mentions:
             if collective is not None:
                 collective.relation = relation
                 return collective
-        last = head if head is not None else at
         label = self.people.label(head) if head is not None else (found[parent].label if parent is not None
                                                                   else "person")
-        return Mention(at, last, s.span(at, last), label, Count("exact", 1, 1, 1), relation=relation)
+        return Mention(at, last, s.span(at, last), label, count, relation=relation)
 
     def _counted_or_more(self, at: int, num: Quantifier, found: list[Mention], exclusive: bool) -> Mention | None:
         """"a few more", "two more patients", "a few others", or a plain counted phrase."""
@@ -553,7 +554,7 @@ class Mentions:
         other = "other" in low[at:k]
         head = self.people.person_head(k, counted=False)
         if head is None:
-            return None  # "ten in the pharmacy": a bare number borrowing the last group's noun is a count
+            return named_class(s, k)  # "Year 4 walks", or none: "ten in the pharmacy" borrows the last noun
         if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
             return Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)

@@ -9,6 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import quantifier
 from grove_tui.language.people import People
 from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
+from grove_tui.language.school_classes import named_class
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -50,7 +51,8 @@ class PeopleObjects:
         q = quantifier(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
-        return self.people.person_head(start, counted=q is not None) is not None or self.carried_owner(at) is not None
+        return self.people.person_head(start, counted=q is not None) is not None or self.carried_owner(at) is not None \
+            or named_class(s, start) is not None  # "a teacher takes year 3 to the hall"
 
     def carried_owner(self, at: int) -> tuple[int, int] | None:
         """(the person, the thing) when the phrase at `at` names what someone is carried or pushed in,

@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from grove_tui.language.escorted import attribute_end
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.people import People
@@ -47,7 +48,8 @@ def pair_of(s: Sentence, people: People, a: Mention, b: Mention) -> bool:
     """Whether mention b, right after a, joins it as a pair: "A and his/her B" or a kin couple,
     joined by "and" alone, with no verb of b's own after it ("a patient and her husband follows"
     is two subjects' clauses, not a pair)."""
-    if not (_single(a) and _single(b)) or b.first != a.last + 2 or s.low[a.last + 1] != "and" or \
+    last = attribute_end(s, people, a.last)  # "a boy with a broken arm and his mum": the boy described
+    if not (_single(a) and _single(b)) or b.first != last + 2 or s.low[last + 1] != "and" or \
             s.w[a.first].sentence != s.w[b.last].sentence:
         return False
     if b.last + 1 < s.n and people.third_person_verb(b.last + 1):

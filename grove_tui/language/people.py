@@ -15,6 +15,7 @@ from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
+from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.where_people import describes_a_place
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
@@ -269,7 +270,7 @@ class People:
                 continue
             if person and self.collective_after(k):
                 return k + 1  # "the security team", "a student group": the collective heads the phrase
-            if person and self._modifies_next_noun(k):
+            if person and (self._modifies_next_noun(k) or modifies_a_thing(s, k, person_next=k + 1 < s.n and self.is_person_noun(k + 1))):
                 return None  # "the outpatient clinic", "security alert": a thing named after people
             if person or (s.lemma(k) in lx.IMPLIED_RANGES and k + 1 < s.n and s.low[k + 1] == "of"):
                 # ("a queue of eight people": the collective heads the phrase)
