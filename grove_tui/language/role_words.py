@@ -1,0 +1,77 @@
+"""Words for one person that no list of person nouns can hold in full: a role said by its
+abbreviation ("the GP", "our SENCO", "a PCSO", "the TA": an all-capital short word after a
+determiner, with the person's verb after it), a short colloquial role ("the vet", "the doc"), and a
+substantivised superlative or age word standing for a member of a family ("our youngest", "the
+eldest", "the little one", "their middle one"). Each is a person only where a noun would stand:
+after a determiner or possessive and before its verb, so "the GP surgery" or "the eldest child"
+keep their own heads."""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
+
+_DETERMINERS = frozenset({"the", "a", "an", "our", "their", "his", "her", "my", "your", "another", "one", "this", "that"})
+# Short roles typed in lower case as often as not (an abbreviation's capitals are no help there).
+SHORT_ROLES = frozenset("gp vet doc ref hca pcso senco ta ceo cfo cto pa mp dj mc medic paramedic sen lsa".split())
+# Abbreviations in capitals that name no person: units, times, things, places.
+_NOT_PEOPLE = frozenset("AM PM OK TV PC IT AI UK US EU ID DNA ATM CCTV ICU ENT AE GPS USB VIP WC PE RE PIN SOS "
+                        "HQ CT MRI ECG ER OR ED CPR".split())
+# Words of age or birth order that stand for a child or sibling of a family after a possessive or "the".
+_FAMILY_ORDER = frozenset("youngest eldest oldest middle".split())
+_LITTLE_ONES = frozenset("little young wee youngest eldest oldest middle baby".split())
+_MAX_LETTERS = 5
+# Plurals of adjectives said as one person ("a regular", adjective_people.py) that are nouns by themselves.
+_ADJECTIVE_PLURALS = frozenset("regulars locals natives".split())
+
+
+def _verb_follows(s: Sentence, i: int) -> bool:
+    """Whether the word after i is a verb of the phrase's person (tagged or known by its form)."""
+    if i + 1 >= s.n:
+        return False
+    nxt = s.w[i + 1]
+    return nxt.pos in ("VERB", "AUX") or nxt.tag in ("VBZ", "VBP", "VBD", "MD") or \
+        (s.low[i + 1].endswith("s") and (verb_lemma(s.low[i + 1]) in lx.INTENT_VERBS or verb_lemma(s.low[i + 1]) in lx.HUMAN_SUBJECT_VERBS)) or \
+        s.low[i + 1] in ("and", ",", "who")
+
+
+def abbreviated_role(s: Sentence, i: int) -> bool:
+    """Whether word i is a role said short ("the GP waits", "a PCSO walks", "the vet heads out")."""
+    if i == 0 or s.low[i - 1] not in _DETERMINERS:
+        return False
+    text = s.w[i].text
+    capitals = text.isalpha() and text.isupper() and 2 <= len(text) <= _MAX_LETTERS and text not in _NOT_PEOPLE
+    if not (capitals or s.low[i] in SHORT_ROLES):
+        return False
+    if s.index.knows(s.low[i]) and not capitals:
+        return False  # a world naming a place "the vet" keeps it a place
+    return _verb_follows(s, i)
+
+
+def plural_adjective_people(s: Sentence, i: int) -> bool:
+    """Whether word i is the plural of an adjective said as a person ("regulars", "locals"): a
+    plural noun is a person with or without a determiner ("spin class regulars")."""
+    return s.low[i] in _ADJECTIVE_PLURALS and s.w[i].pos in ("NOUN", "PROPN")
+
+
+def family_member(s: Sentence, i: int) -> bool:
+    """Whether word i stands for one member of a family: "our youngest", "the eldest", "the little
+    one", "their middle one" (the person's verb after it)."""
+    if i == 0:
+        return False
+    word = s.low[i]
+    if word in _FAMILY_ORDER:
+        return s.low[i - 1] in _DETERMINERS and _verb_follows(s, i)
+    if word == "one" and s.low[i - 1] in _LITTLE_ONES and i >= 2 and s.low[i - 2] in _DETERMINERS:
+        return _verb_follows(s, i)
+    return False
+
+
+def world_person_name(s: Sentence, title: int, j: int) -> bool:
+    """Whether words title..j say a person the world names a place after ("Mrs Okafor" of "Mrs
+    Okafor's room"): a name, though its word is a place's word too."""
+    said = tuple(s.low[title:j + 1])
+    n = len(said)
+    return any(phrase[x:x + n] == said for e in s.index.entries for phrase in e.phrases
+               for x in range(len(phrase) - n + 1))

@@ -1,0 +1,81 @@
+"""Round 14 of the reader's people: roles said short ("the GP", "a PCSO", "the vet"), family members
+said by their order ("our youngest", "the eldest", "the little one"), counted compounds of several
+nouns ("a pair of revenue protection officers"), a school class with a count in apposition, "class"
+naming the kind of a person ("spin class regulars"), and a titled name wheeled or pushed by a carer,
+with "her room" the room the world names after her."""
+
+import pytest
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "The HCA walks from the ward to the pharmacy.", "hca"),
+    ("care_home", "The GP heads from reception to the lounge.", "gp"),
+    ("primary_school", "The TA walks from the hall to the school office.", "ta"),
+    ("station", "A PCSO waits by the ticket office.", "pcso"),
+    ("hospital", "The vet heads to the cafeteria.", "vet"),
+])
+def test_a_role_said_short_is_one_person(read, world, prompt, label):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    assert (groups[0].label, groups[0].count.kind, groups[0].count.value) == (label, "exact", 1)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("museum", "Our youngest is scared of the robot and backs away."),
+    ("residential", "The eldest walks to the kitchen."),
+    ("mall", "Their little one toddles to the food court."),
+    ("care_home", "Her middle one walks to the lounge."),
+])
+def test_a_family_member_said_by_order_is_one_person(read, world, prompt):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    assert (groups[0].count.kind, groups[0].count.value) == ("exact", 1)
+
+
+@pytest.mark.parametrize("world,prompt,n,label", [
+    ("station", "Two revenue protection officers walk to the ticket office.", 2, "officer"),
+    ("mall", "A couple of car park attendants walk to the food court.", 2, "attendant"),
+    ("bus_station", "A pair of ticket office staff walk to the cafe.", 2, "staff"),
+])
+def test_a_counted_compound_role_keeps_its_count(read, world, prompt, n, label):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    assert (groups[0].label, groups[0].count.value, groups[0].count.kind) == (label, n, "exact")
+
+
+@pytest.mark.parametrize("world,prompt,n,start", [
+    ("primary_school", "Year 3, 26 children, walk from their classroom to the hall.", 26, "year_3_classroom"),
+    ("primary_school", "Year 6, twenty pupils, troop from their classroom to the playground.", 20, "year_6_classroom"),
+    ("primary_school", "Year 1, 22 pupils, file out of their classroom to the library.", 22, "year_1_classroom"),
+])
+def test_a_school_class_with_a_count_is_one_group_from_its_room(read, world, prompt, n, start):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    g = groups[0]
+    assert (g.count.value, g.count.kind, g.start, g.intent) == (n, "exact", start, "walk")
+
+
+@pytest.mark.parametrize("world,prompt,n", [
+    ("sports_centre", "Six spin class regulars walk from the cafe to the changing rooms.", 6),
+    ("library", "Five craft class regulars head to the cafe.", 5),
+])
+def test_class_naming_a_kind_of_person_is_no_school_class(read, world, prompt, n):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    assert (groups[0].label, groups[0].count.value, groups[0].count.kind) == ("regular", n, "exact")
+
+
+@pytest.mark.parametrize("prompt,room,place", [
+    ("A carer pushes Mr Kowalski from his room to the lounge.", "room_2", "lounge"),
+    ("A nurse wheels Mrs Baxter from her room to the dining room.", "room_1", "dining_room"),
+])
+def test_a_titled_resident_pushed_is_a_group_from_their_named_room(read, prompt, room, place):
+    carer, resident = read("care_home", prompt).groups
+    assert resident.count.value == 1 and resident.intent == "follow"
+    assert carer.start == resident.start == room
+    assert carer.destination == resident.destination == place
+
+
+def test_her_room_of_a_staff_member_stays_theirs(read):
+    g, = read("care_home", "A carer walks from her room to the lounge.").groups
+    assert g.start != "room_3"
