@@ -26,7 +26,7 @@ from grove_tui.language.only_people import only_people_before, the_only_mention
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
-from grove_tui.language.role_words import family_member
+from grove_tui.language.role_words import family_member, person_of_a_person, possessor_of_a_person
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.school_classes import named_class
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -233,8 +233,8 @@ class Mentions:
             return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
             return True  # "the boardroom meeting of twelve people breaks up"
-        if prev in ("'s", "’s") and self.possessor_place(at) is not None:
-            return True  # "ward A's patients", "the café's 8 customers": the people of a place
+        if prev in ("'s", "’s") and (self.possessor_place(at) is not None or family_member(s, at) or person_of_a_person(s, self.people, at)):
+            return True  # "ward A's patients", "the café's 8 customers": the people of a place; "the bride's youngest"
         if self._after_time_phrase(at) or after_a_clock_time(s, at):
             return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
@@ -554,8 +554,8 @@ class Mentions:
         head = self.people.person_head(k, counted=False)
         if head is None:
             return named_class(s, k)  # "Year 4 walks", or none: "ten in the pharmacy" borrows the last noun
-        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
-            return Mention(at, head, s.span(at, head), self.people.label(head),
+        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person; "Dr Patel's registrar": nobody
+            return None if possessor_of_a_person(s, self.people.is_person_noun, head) else Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
         singular = s.lemma(head) == low[head] and not self.people.plural_word(head)  # "the injured": some people
         label = self.people.label(head)

@@ -11,7 +11,7 @@ from grove_tui.language.person_modifiers import compound_head_person, head_perso
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
-from grove_tui.language.role_words import abbreviated_role, family_member, plural_adjective_people, world_person_name
+from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
@@ -47,7 +47,7 @@ class People:
             return None
         j = k + 1 if k + 1 < s.n and s.low[k + 1] != "." else k + 2  # "Dr. Jones"
         end = None
-        while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.isalpha() and \
+        while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.replace("'", "").replace("’", "").isalpha() and \
                 s.w[j].pos == "PROPN" and (not s.index.knows(s.lemma(j)) or world_person_name(s, k, j)) and s.low[j] not in lx.ROBOT_WORDS and \
                 s.low[j] not in lx.STOPWORDS | lx.PLACE_PREPOSITIONS | lx.CLAUSE_STARTERS and \
                 verb_lemma(s.low[j]) not in lx.INTENT_VERBS:  # not "A Doctor Walks To Ward B"
@@ -456,7 +456,7 @@ class People:
         if head > 0 and s.low[head - 1] in CHILD_NAME_WORDS and s.w[head].tag == "NNP" and \
                 s.lemma(head) not in lx.PERSON_NOUNS:
             return "child"  # "Little Tom": a child, by name
-        noun = s.lemma(head)
+        noun = abbreviation_label(s, head) or s.lemma(head)  # "two TAs": ta
         if head >= 2 and s.low[head - 1] == "-" and modifier_end(s, head - 2) == head and s.w[head - 2].pos != "ADJ":
             return f"{s.low[head - 2]}-{noun}"  # "the co-pilot": another person than "the pilot"
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):

@@ -8,11 +8,21 @@ keep their own heads."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Protocol
+
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
-_DETERMINERS = frozenset({"the", "a", "an", "our", "their", "his", "her", "my", "your", "another", "one", "this", "that"})
+class _People(Protocol):
+    def is_person_noun(self, i: int) -> bool: ...
+
+    def person_head(self, j: int, *, counted: bool) -> int | None: ...
+
+
+_DETERMINERS = frozenset({"the", "a", "an", "our", "their", "his", "her", "my", "your", "another", "one", "this", "that",
+                          "'s", "’s"})  # "the bride's youngest"
 # Short roles typed in lower case as often as not (an abbreviation's capitals are no help there).
 SHORT_ROLES = frozenset("gp vet doc ref hca pcso senco ta ceo cfo cto pa mp dj mc medic paramedic sen lsa".split())
 # Abbreviations in capitals that name no person: units, times, things, places.
@@ -33,7 +43,8 @@ def _verb_follows(s: Sentence, i: int) -> bool:
     nxt = s.w[i + 1]
     return nxt.pos in ("VERB", "AUX") or nxt.tag in ("VBZ", "VBP", "VBD", "MD") or \
         (s.low[i + 1].endswith("s") and (verb_lemma(s.low[i + 1]) in lx.INTENT_VERBS or verb_lemma(s.low[i + 1]) in lx.HUMAN_SUBJECT_VERBS)) or \
-        s.low[i + 1] in ("and", ",", "who")
+        s.low[i + 1] in ("and", ",", "who") or \
+        (verb_lemma(s.low[i + 1]) in lx.INTENT_VERBS and nxt.dep == "ROOT")  # "her PA walk": the small model's noun
 
 
 def abbreviated_role(s: Sentence, i: int) -> bool:
@@ -75,3 +86,32 @@ def world_person_name(s: Sentence, title: int, j: int) -> bool:
     n = len(said)
     return any(phrase[x:x + n] == said for e in s.index.entries for phrase in e.phrases
                for x in range(len(phrase) - n + 1))
+
+
+def possessor_of_a_person(s: Sentence, is_person: Callable[[int], bool], head: int) -> bool:
+    """Whether the name ending at `head` only owns the person said next ("Mrs Okafor's daughter",
+    "Dr Patel's registrar"): the daughter is the group, her mother no one said to be there."""
+    if head + 2 >= s.n or s.low[head + 1] not in ("'s", "’s", "'"):
+        return False
+    j = head + 2
+    while j < s.n and j < head + 5 and s.w[j].pos == "ADJ" and not is_person(j):
+        j += 1  # "Mr Reid's elderly sister"
+    return j < s.n and is_person(j)
+
+
+def abbreviation_label(s: Sentence, i: int) -> str | None:
+    """The label of a role said short and in the plural ("TAs", "PCSOs": ta, pcso), else None."""
+    text = s.w[i].text
+    if len(text) >= 3 and text[-1] == "s" and text[:-1].isalpha() and text[:-1].isupper() and \
+            len(text) - 1 <= _MAX_LETTERS and text[:-1] not in _NOT_PEOPLE:
+        return text[:-1].lower()
+    return None
+
+
+def person_of_a_person(s: Sentence, people: _People, at: int) -> bool:
+    """Whether the phrase at `at`, after a person's "'s", is another person who is the subject ("the
+    nurse's elderly mother waits", "Mr Reid's sister walks"): a group, its owner none."""
+    if at < 2 or not people.is_person_noun(at - 2):
+        return False
+    head = people.person_head(at, counted=False)
+    return head is not None and head < at + 3 and (s.w[head].dep in ("nsubj", "nsubjpass") or _verb_follows(s, head))

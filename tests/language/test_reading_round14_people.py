@@ -79,3 +79,34 @@ def test_a_titled_resident_pushed_is_a_group_from_their_named_room(read, prompt,
 def test_her_room_of_a_staff_member_stays_theirs(read):
     g, = read("care_home", "A carer walks from her room to the lounge.").groups
     assert g.start != "room_3"
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("care_home", "Mrs Adeyemi's son walks from reception to the lounge.", "son"),
+    ("hospital", "Dr Khan's registrar walks to the pharmacy.", "registrar"),
+    ("care_home", "Mr Kowalski's elderly sister waits in the lounge.", "sister"),
+    ("museum", "The guide's elderly mother waits in the cafe.", "mother"),
+])
+def test_a_person_owned_by_a_person_is_the_group_not_the_owner(read, world, prompt, label):
+    groups = read(world, prompt).groups
+    assert [(g.label, g.count.value) for g in groups] == [(label, 1)]
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("bus_station", "The driver's eldest waits by the cafe.", "eldest"),
+    ("hotel", "The groom's youngest runs to the lobby.", "youngest"),
+])
+def test_a_family_member_of_someone_is_one_person(read, world, prompt, label):
+    groups = read(world, prompt).groups
+    assert [(g.label, g.count.value) for g in groups] == [(label, 1)]
+
+
+@pytest.mark.parametrize("world,prompt,label,n", [
+    ("primary_school", "Two TAs walk from the hall to the staff room.", "ta", 2),
+    ("office", "The CEO and her PA walk to the boardroom.", "ceo and pa", 2),
+    ("care_home", "Father O'Neill walks from reception to the lounge.", "priest", 1),
+    ("hospital", "A trio of junior doctors walk to the cafeteria.", "doctor", 3),
+])
+def test_short_plural_roles_companions_and_apostrophe_names(read, world, prompt, label, n):
+    groups = read(world, prompt).groups
+    assert [(g.label, g.count.value) for g in groups] == [(label, n)]
