@@ -26,7 +26,7 @@ from grove_tui.language.only_people import only_people_before, the_only_mention
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
-from grove_tui.language.role_words import family_member, person_of_a_person, possessor_of_a_person
+from grove_tui.language.role_words import family_member, family_size, person_of_a_person, possessor_of_a_person
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.school_classes import named_class
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -567,7 +567,7 @@ class Mentions:
             return collective
         if det in ("a", "an") or family_member(s, head) or (singular and (det == "the" or det in _POSSESSIVES and low[at - 1] == "and")):
             kind = "exclusive" if exclusive else "exact"
-            return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
+            return Mention(at, head, s.span(at, head), label, Count(kind, n := family_size(s, head), n, n), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
                     or self.objects.robot_object(at) is not None or self.objects.led_by(at) or self.objects.followed(at)

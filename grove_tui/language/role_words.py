@@ -12,6 +12,7 @@ from collections.abc import Callable
 from typing import Protocol
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.counts import number_at
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -24,13 +25,15 @@ class _People(Protocol):
 _DETERMINERS = frozenset({"the", "a", "an", "our", "their", "his", "her", "my", "your", "another", "one", "this", "that",
                           "'s", "’s"})  # "the bride's youngest"
 # Short roles typed in lower case as often as not (an abbreviation's capitals are no help there).
-SHORT_ROLES = frozenset("gp vet doc ref hca pcso senco ta ceo cfo cto pa mp dj mc medic paramedic sen lsa".split())
+SHORT_ROLES = frozenset("gp vet doc ref hca pcso senco ta ceo cfo cto pa mp dj mc medic paramedic sen lsa reverend rev "
+                        "padre".split())
 # Abbreviations in capitals that name no person: units, times, things, places.
 _NOT_PEOPLE = frozenset("AM PM OK TV PC IT AI UK US EU ID DNA ATM CCTV ICU ENT AE GPS USB VIP WC PE RE PIN SOS "
                         "HQ CT MRI ECG ER OR ED CPR".split())
 # Words of age or birth order that stand for a child or sibling of a family after a possessive or "the".
 _FAMILY_ORDER = frozenset("youngest eldest oldest middle".split())
-_LITTLE_ONES = frozenset("little young wee youngest eldest oldest middle baby".split())
+_LITTLE_ONES = frozenset("little young wee youngest eldest oldest middle baby older younger elder big".split())
+_MAX_SIBLINGS = 6  # "the older two", "the youngest three": children of one family, not a crowd
 _MAX_LETTERS = 5
 # Plurals of adjectives said as one person ("a regular", adjective_people.py) that are nouns by themselves.
 _ADJECTIVE_PLURALS = frozenset("regulars locals natives".split())
@@ -43,7 +46,7 @@ def _verb_follows(s: Sentence, i: int) -> bool:
     nxt = s.w[i + 1]
     return nxt.pos in ("VERB", "AUX") or nxt.tag in ("VBZ", "VBP", "VBD", "MD") or \
         (s.low[i + 1].endswith("s") and (verb_lemma(s.low[i + 1]) in lx.INTENT_VERBS or verb_lemma(s.low[i + 1]) in lx.HUMAN_SUBJECT_VERBS)) or \
-        s.low[i + 1] in ("and", ",", "who") or \
+        s.low[i + 1] in ("and", ",", "who") or (s.low[i + 1].endswith("s") and nxt.dep == "ROOT") or \
         (verb_lemma(s.low[i + 1]) in lx.INTENT_VERBS and nxt.dep == "ROOT")  # "her PA walk": the small model's noun
 
 
@@ -74,9 +77,17 @@ def family_member(s: Sentence, i: int) -> bool:
     word = s.low[i]
     if word in _FAMILY_ORDER:
         return s.low[i - 1] in _DETERMINERS and _verb_follows(s, i)
-    if word == "one" and s.low[i - 1] in _LITTLE_ONES and i >= 2 and s.low[i - 2] in _DETERMINERS:
-        return _verb_follows(s, i)
+    if (word == "one" or family_size(s, i) > 1) and s.low[i - 1] in _LITTLE_ONES and i >= 2 and \
+            s.low[i - 2] in _DETERMINERS:
+        return _verb_follows(s, i)  # "the little one", "the eldest two", "the older three"
     return False
+
+
+def family_size(s: Sentence, i: int) -> int:
+    """How many the family word at i says: 2 for "the eldest two", else 1."""
+    said = number_at(s, i)
+    n = said[0] if said is not None and said[1] == i + 1 else None
+    return n if n is not None and 1 < n <= _MAX_SIBLINGS and i > 0 and s.low[i - 1] in _LITTLE_ONES else 1
 
 
 def world_person_name(s: Sentence, title: int, j: int) -> bool:

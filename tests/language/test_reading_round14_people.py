@@ -110,3 +110,15 @@ def test_a_family_member_of_someone_is_one_person(read, world, prompt, label):
 def test_short_plural_roles_companions_and_apostrophe_names(read, world, prompt, label, n):
     groups = read(world, prompt).groups
     assert [(g.label, g.count.value) for g in groups] == [(label, n)]
+
+
+@pytest.mark.parametrize("world,prompt,n", [
+    ("bus_station", "The older two run ahead to the cafe.", 2),
+    ("museum", "The youngest three wait by the gift shop.", 3),
+    ("care_home", "The Reverend walks from reception to the lounge.", 1),
+    ("bus_station", "Our eldest tugs at his mum's coat and points at the robot.", 1),
+])
+def test_children_said_by_their_order_and_a_number(read, world, prompt, n):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1
+    assert (groups[0].count.kind, groups[0].count.value) == ("exact", n)
