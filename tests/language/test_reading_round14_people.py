@@ -122,3 +122,23 @@ def test_children_said_by_their_order_and_a_number(read, world, prompt, n):
     groups = read(world, prompt).groups
     assert len(groups) == 1
     assert (groups[0].count.kind, groups[0].count.value) == ("exact", n)
+
+
+@pytest.mark.parametrize("world,prompt,n,place", [
+    ("primary_school", "Year 4, 27 children, and their teacher walk to the hall.", 27, "school_hall"),
+    ("museum", "The school party, 30 pupils, and three teachers walk to the cafe.", 30, "cafe"),
+])
+def test_a_group_with_its_count_in_apposition_shares_the_verb_after_and(read, world, prompt, n, place):
+    first, second = read(world, prompt).groups
+    assert first.count.value == n
+    assert first.intent == second.intent == "walk" and first.destination == second.destination == place
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("care_home", "A carer walks Mr Kowalski and Mrs Okafor to the lounge.", "lounge"),
+    ("museum", "A guide leads three tourists and a child to the gift shop.", "gift_shop"),
+])
+def test_people_taken_along_joined_by_and_all_follow(read, world, prompt, place):
+    leader, *led = read(world, prompt).groups
+    assert len(led) == 2 and leader.destination == place and leader.intent == "walk"
+    assert all(g.intent == "follow" and g.destination == place for g in led)
