@@ -25,7 +25,7 @@ class _People(Protocol):
 _DETERMINERS = frozenset({"the", "a", "an", "our", "their", "his", "her", "my", "your", "another", "one", "this", "that",
                           "'s", "’s"})  # "the bride's youngest"
 # Short roles typed in lower case as often as not (an abbreviation's capitals are no help there).
-SHORT_ROLES = frozenset("gp vet doc ref hca pcso senco ta ceo cfo cto pa mp dj mc medic paramedic sen lsa reverend rev "
+SHORT_ROLES = frozenset("gp vet doc ref hca pcso senco ta ceo cfo cto mp dj mc medic paramedic sen lsa reverend rev "
                         "padre".split())
 # Abbreviations in capitals that name no person: units, times, things, places.
 _NOT_PEOPLE = frozenset("AM PM OK TV PC IT AI UK US EU ID DNA ATM CCTV ICU ENT AE GPS USB VIP WC PE RE PIN SOS "
@@ -35,6 +35,9 @@ _FAMILY_ORDER = frozenset("youngest eldest oldest middle".split())
 _LITTLE_ONES = frozenset("little young wee youngest eldest oldest middle baby older younger elder big".split())
 _MAX_SIBLINGS = 6  # "the older two", "the youngest three": children of one family, not a crowd
 _MAX_LETTERS = 5
+# What an unknown capital word does when it is a vehicle or a machine ("the AGV drives", "the PA announces").
+_MACHINE_VERBS = frozenset("drive reverse park beep honk stall announce crackle break idle load unload tow "
+                           "dock charge".split())
 # Plurals of adjectives said as one person ("a regular", adjective_people.py) that are nouns by themselves.
 _ADJECTIVE_PLURALS = frozenset("regulars locals natives".split())
 
@@ -60,6 +63,10 @@ def abbreviated_role(s: Sentence, i: int) -> bool:
         return False
     if s.index.knows(s.low[i]) and not capitals:
         return False  # a world naming a place "the vet" keeps it a place
+    verbs = {verb_lemma(s.low[i + 1]), s.lemma(i + 1), s.low[i + 1].removesuffix("s")} if i + 1 < s.n else set()
+    if s.low[i] not in SHORT_ROLES and any(v in _MACHINE_VERBS or v in lx.SOUND_LIGHT_VERBS or v in lx.THING_VERBS
+                                           for v in verbs):
+        return False  # "the AGV drives to the bay", "an HGV reverses", "the PA announces a delay": a machine
     return _verb_follows(s, i)
 
 

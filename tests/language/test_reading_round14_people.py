@@ -142,3 +142,13 @@ def test_people_taken_along_joined_by_and_all_follow(read, world, prompt, place)
     leader, *led = read(world, prompt).groups
     assert len(led) == 2 and leader.destination == place and leader.intent == "walk"
     assert all(g.intent == "follow" and g.destination == place for g in led)
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("warehouse", "The AGV drives to the loading bay while two pickers walk to the canteen.", "picker"),
+    ("warehouse", "An HGV reverses into bay 2 and a driver walks to the office.", "driver"),
+    ("station", "The PA announces a delay and ten commuters walk to the exit.", "commuter"),
+])
+def test_a_capital_word_that_drives_or_announces_is_a_machine(read, world, prompt, label):
+    groups = read(world, prompt).groups
+    assert [g.label for g in groups] == [label]
