@@ -1139,9 +1139,13 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
                                 needs_seconds=round(2.6 * seconds + 10.0, 1)))
     elif asked.task == "wait":
         where = asked.location or asked.destination or asked.start
-        claims.append(Claim("robot_stay", where or "where it is", f"wait at ({robot.start[0]:.1f}, "
-                            f"{robot.start[1]:.1f})", point=(round(robot.start[0], 3), round(robot.start[1], 3)),
-                            radius=1.0, place=where, needs_seconds=10.0))
+        wait = asked.wait_seconds
+        # "waits at the cloakroom for two minutes": the asked seconds there are the claim, so a shorter run
+        # cannot earn it (the probe judges the window from its arrival, as a group's stay)
+        claim = Claim("robot_stay", where or "where it is", f"wait at ({robot.start[0]:.1f}, "
+                      f"{robot.start[1]:.1f})", point=(round(robot.start[0], 3), round(robot.start[1], 3)),
+                      radius=1.0, place=where, needs_seconds=(wait or 5.0) + 5.0)
+        claims.append(replace_seconds(claim, wait))
     elif asked.task == "follow":
         follows = tuple(getattr(robot, "follows", ()) or ())
         if follows:
