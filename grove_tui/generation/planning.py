@@ -30,6 +30,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
+from grove_tui.generation.guided import guided_exit
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
@@ -305,7 +306,12 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     if request.goal is not None:
         goal = _request_point(world, grid, request.goal, "goal", picker)
     elif asked is not None and asked.destination and task in ("cross", "patrol"):
-        goal = _place_point(world, grid, asked.destination)
+        # a robot that guides people goes to the exit they take, not one picked for its words alone
+        guided = guided_exit(reading, post.groups, post.agents) if reading is not None and task == "cross" else None
+        if guided is not None and guided != asked.destination:
+            notes.append(f"the robot goes to {guided}, the exit of the people it guides (its clause read "
+                         f"{asked.destination})")
+        goal = _place_point(world, grid, guided or asked.destination)
     start: Point | None = None
     if request.start is not None:
         start = _request_point(world, grid, request.start, "start", picker)

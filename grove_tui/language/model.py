@@ -138,6 +138,9 @@ class RobotReading:
     # how long a "wait" lasts when said ("waits at the cloakroom for two minutes": 120); None for no
     # length or the whole scenario, as a group's wait_seconds
     wait_seconds: float | None = None
+    # whom a "cross" the robot leads takes along, as written ("them", "the passengers"): "the robot
+    # guides them to the exit" goes where they go
+    guides: str | None = None
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
@@ -146,14 +149,14 @@ class RobotReading:
         return {"task": self.task, "start": self.start, "destination": self.destination,
                 "location": self.location, "via": list(self.via), "text": self.text,
                 "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows,
-                "wait_seconds": self.wait_seconds}
+                "wait_seconds": self.wait_seconds, "guides": self.guides}
 
     @classmethod
     def from_dict(cls, data: Parsed) -> RobotReading:
         seconds = data.get("wait_seconds")
         return cls(str(data["task"]), data.get("start"), data.get("destination"), data.get("location"),
                    tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")),
-                   data.get("follows"), float(seconds) if seconds is not None else None)
+                   data.get("follows"), float(seconds) if seconds is not None else None, data.get("guides"))
 
 
 @dataclass(frozen=True)
