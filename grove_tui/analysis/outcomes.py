@@ -1033,7 +1033,8 @@ class _FollowPersonProbe(_Probe):
 # the robot's own claims ---------------------------------------------------------------------------
 
 class _RobotPlaceProbe(_Probe):
-    """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time."""
+    """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time
+    (with asked seconds, nearly all of them from its arrival, and the run must cover them)."""
 
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
@@ -1041,6 +1042,7 @@ class _RobotPlaceProbe(_Probe):
         self.frames = 0
         self.there = 0
         self.seen_robot = False
+        self.last_t = 0.0
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
@@ -1049,20 +1051,41 @@ class _RobotPlaceProbe(_Probe):
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])
-        self.frames += int(inside.size)
-        self.there += int(inside.sum())
+        self.last_t = max(self.last_t, float(f.t[-1]))
+        counted = np.ones(inside.size, dtype=bool)
+        if self.claim.kind == "robot_stay" and self.claim.seconds:
+            # "waits there for two minutes": only the asked window from its arrival is judged
+            counted = (f.t >= self.first) & (f.t < self.first + self.claim.seconds)
+        self.frames += int(counted.sum())
+        self.there += int((inside & counted).sum())
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         if not self.seen_robot:
             return FAILS, "no robot in the run"
         if self.claim.kind == "robot_stay":
-            share = self.there / self.frames if self.frames else 0.0
-            return (HOLDS if share >= STAY_SHARE else FAILS), f"at {self.where()} {share:.0%} of the run"
+            return self._stay()
         verb = "passed through" if self.claim.kind == "robot_via" else "reached"
         if math.isinf(self.first):
             return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
                 f"never passed through {self.where()}"
         return HOLDS, f"{verb} {self.where()} at {_when(self.first)}"
+
+    def _stay(self) -> tuple[str, str]:
+        asked = self.claim.seconds
+        if asked and math.isinf(self.first):
+            return FAILS, f"never got to {self.where()}"
+        share = self.there / self.frames if self.frames else 0.0
+        if not asked:
+            return (HOLDS if share >= STAY_SHARE else FAILS), f"at {self.where()} {share:.0%} of the run"
+        stayed = self.there * self.checker.sample_dt
+        text = (f"at {self.where()} {share:.0%} of the time from {_when(self.first)} "
+                f"({stayed:.0f} s of the {asked:g} s asked)")
+        if share < STAY_SHARE:
+            return FAILS, text
+        if self.last_t + 1e-6 < self.first + asked - self.checker.sample_dt:
+            # it was there all the run had, but the run ended before the asked wait did: not a ✓ yet
+            return UNCHECKED, text + f"; the run ended at {_when(self.last_t)}: run it longer"
+        return HOLDS, text
 
 
 class _RobotPatrolProbe(_Probe):

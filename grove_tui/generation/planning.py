@@ -30,6 +30,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
+from grove_tui.generation.guided import guided_exit
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
@@ -305,7 +306,12 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     if request.goal is not None:
         goal = _request_point(world, grid, request.goal, "goal", picker)
     elif asked is not None and asked.destination and task in ("cross", "patrol"):
-        goal = _place_point(world, grid, asked.destination)
+        # a robot that guides people goes to the exit they take, not one picked for its words alone
+        guided = guided_exit(reading, post.groups, post.agents) if reading is not None and task == "cross" else None
+        if guided is not None and guided != asked.destination:
+            notes.append(f"the robot goes to {guided}, the exit of the people it guides (its clause read "
+                         f"{asked.destination})")
+        goal = _place_point(world, grid, guided or asked.destination)
     start: Point | None = None
     if request.start is not None:
         start = _request_point(world, grid, request.start, "start", picker)
@@ -621,6 +627,13 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
     sight = ThetaStarPlanner(grid, landmarks=0)
     taken = [a.start for a in post.agents if a.group_index not in {g.index for g in groups}]
     for g in groups:
+        if g.follows_robot:
+            placed_behind = _behind_the_robot(world, space, sight, path, samples, arcs, g, taken, rng)
+            if placed_behind is not None:
+                _start_at(world, post, g, placed_behind)
+                taken += placed_behind
+                notes.append(f"group '{g.label}': starts in {g.spawn} behind the robot's start, to follow it")
+                continue
         node = next((n.node for n in g.tree.walk() if n.node in REACTOR_BAND), "ApproachRobot")
         near, far = REACTOR_BAND[node]
         order = np.argsort(np.abs(arcs - min(max(0.3 * total, 4.0), total)), kind="stable") if total else np.arange(1)
@@ -645,16 +658,44 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
             unseen.append(g)
             continue
         spots, along = placed
-        members = [a for a in post.agents if a.group_index == g.index]
-        for agent, spot in zip(members, spots):
-            agent.start = spot
-            zone = world.zone_at(spot[0], spot[1])
-            agent.spawn_zone = agent.zone = zone.name if zone is not None else agent.spawn_zone
+        _start_at(world, post, g, spots)
         taken += spots
-        g.spawn = members[0].spawn_zone if members else g.spawn
         notes.append(f"group '{g.label}': starts in {g.spawn} beside the robot's route ({along:.0f} m along it), "
                      f"where it sees the robot come")
     return unseen
+
+
+def _start_at(world: World, post: PostProcessed, g: GroupPlan, spots: Sequence[Point]) -> None:
+    members = [a for a in post.agents if a.group_index == g.index]
+    for agent, spot in zip(members, spots):
+        agent.start = spot
+        zone = world.zone_at(spot[0], spot[1])
+        agent.spawn_zone = agent.zone = zone.name if zone is not None else agent.spawn_zone
+    g.spawn = members[0].spawn_zone if members else g.spawn
+
+
+FOLLOWERS_BEHIND = 5.0  # metres from the robot's start within which its followers start (widened if full)
+
+
+def _behind_the_robot(world: World, space: FreeSpace, sight: ThetaStarPlanner, path: np.ndarray,
+                      samples: np.ndarray, arcs: np.ndarray, g: GroupPlan, taken: Sequence[Point],
+                      rng: np.random.Generator) -> list[Point] | None:
+    """Spots for people who follow the robot: around its start and not ahead of it on its way (a
+    group placed on the route ahead blocks it, and the robot crawls behind its own followers). Behind
+    first; beside the start when the floor behind is too small; None when neither has room."""
+    start = path[0]
+    ahead = samples[int(np.searchsorted(arcs, 2.0))] if len(arcs) and arcs[-1] >= 2.0 else samples[-1]
+    heading = ahead - start
+    norm = float(np.hypot(*heading))
+    direction = heading / norm if norm > 1e-6 else None
+    origin = (float(start[0]), float(start[1]))
+    for behind_only in (True, False) if direction is not None else (False,):
+        for widen in (0.0, 3.0, 6.0):
+            found = _spots(world, space, sight, start, 0.0, FOLLOWERS_BEHIND + widen, origin, taken, g.count, rng,
+                           g.reactor_zone, direction if behind_only else None)
+            if found is not None:
+                return found
+    return None
 
 
 def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
@@ -674,7 +715,9 @@ def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
 
 def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
            robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator,
-           zone_name: str | None = None) -> list[Point] | None:
+           zone_name: str | None = None, behind: np.ndarray | None = None) -> list[Point] | None:
+    """`count` free spots `near`..`far` from `anchor`, in sight of it, clear of the robot's start and of
+    `taken`; with `behind` (a unit heading), none ahead of the anchor along it."""
     if zone_name is None:
         zone = world.zone_at(float(anchor[0]), float(anchor[1]))
         if zone is None:
@@ -686,6 +729,8 @@ def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.n
     d = np.hypot(pts[:, 0] - anchor[0], pts[:, 1] - anchor[1])
     robot = np.hypot(pts[:, 0] - robot_start[0], pts[:, 1] - robot_start[1])
     ok = (d >= near) & (d <= far) & (robot >= ROBOT_CLEARANCE + 0.5)
+    if behind is not None:
+        ok &= (pts[:, 0] - anchor[0]) * behind[0] + (pts[:, 1] - anchor[1]) * behind[1] <= 0.0
     if len(taken):
         others = np.asarray(taken, dtype=float)
         ok &= np.min(np.hypot(pts[:, None, 0] - others[None, :, 0], pts[:, None, 1] - others[None, :, 1]),

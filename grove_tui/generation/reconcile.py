@@ -33,6 +33,7 @@ from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTION
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
+from grove_tui.generation.guided import guided_exit, guided_index
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -784,9 +785,17 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                     f"you changed it to {counts.get(index, 0)}")
         claims += _group_claims(r, g, agents_here, routes or {}, world, reading, by_reading, walking_speed,
                                 robot_seconds)
+        if index == guided_index(reading) and robot is not None and not any(c.kind == "robot_follow" for c in claims):
+            # "the robot guides them to the exit": that they went with it is asked too, and measured
+            claims.append(Claim("robot_follow", "go with the robot, which guides them", "walk where the robot leads",
+                                distance=REACTION_DISTANCE["follow"], share=0.9, needs_seconds=robot_seconds + 10.0))
         out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
-    robot_row = _robot_row(reading.robot, robot, world, agents)
+    asked_robot = reading.robot
+    guided = guided_exit(reading, groups, agents)
+    if asked_robot is not None and guided is not None:
+        asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
+    robot_row = _robot_row(asked_robot, robot, world, agents)
     if robot_row is not None:
         questions += robot_row.unsure
     return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),
@@ -1139,9 +1148,13 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
                                 needs_seconds=round(2.6 * seconds + 10.0, 1)))
     elif asked.task == "wait":
         where = asked.location or asked.destination or asked.start
-        claims.append(Claim("robot_stay", where or "where it is", f"wait at ({robot.start[0]:.1f}, "
-                            f"{robot.start[1]:.1f})", point=(round(robot.start[0], 3), round(robot.start[1], 3)),
-                            radius=1.0, place=where, needs_seconds=10.0))
+        wait = asked.wait_seconds
+        # "waits at the cloakroom for two minutes": the asked seconds there are the claim, so a shorter run
+        # cannot earn it (the probe judges the window from its arrival, as a group's stay)
+        claim = Claim("robot_stay", where or "where it is", f"wait at ({robot.start[0]:.1f}, "
+                      f"{robot.start[1]:.1f})", point=(round(robot.start[0], 3), round(robot.start[1], 3)),
+                      radius=1.0, place=where, needs_seconds=(wait or 5.0) + 5.0)
+        claims.append(replace_seconds(claim, wait))
     elif asked.task == "follow":
         follows = tuple(getattr(robot, "follows", ()) or ())
         if follows:

@@ -135,6 +135,12 @@ class RobotReading:
     text: str = ""  # the prompt words of the robot's clause
     confidence: tuple[FieldConfidence, ...] = ()
     follows: str | None = None  # whom a "follow" task follows, as written ("a porter", "him")
+    # how long a "wait" lasts when said ("waits at the cloakroom for two minutes": 120); None for no
+    # length or the whole scenario, as a group's wait_seconds
+    wait_seconds: float | None = None
+    # whom a "cross" the robot leads takes along, as written ("them", "the passengers"): "the robot
+    # guides them to the exit" goes where they go
+    guides: str | None = None
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
@@ -142,13 +148,15 @@ class RobotReading:
     def to_dict(self) -> JSONObject:
         return {"task": self.task, "start": self.start, "destination": self.destination,
                 "location": self.location, "via": list(self.via), "text": self.text,
-                "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows}
+                "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows,
+                "wait_seconds": self.wait_seconds, "guides": self.guides}
 
     @classmethod
     def from_dict(cls, data: Parsed) -> RobotReading:
+        seconds = data.get("wait_seconds")
         return cls(str(data["task"]), data.get("start"), data.get("destination"), data.get("location"),
                    tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")),
-                   data.get("follows"))
+                   data.get("follows"), float(seconds) if seconds is not None else None, data.get("guides"))
 
 
 @dataclass(frozen=True)

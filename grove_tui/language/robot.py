@@ -231,6 +231,8 @@ class RobotClauses:
         roles: dict[str, str | None] = {"start": None, "destination": None, "location": None}
         via: list[str] = []
         follows: str | None = None
+        wait_seconds: float | None = None
+        guides: str | None = None
         read_from: dict[str, Place] = {}
         texts: list[str] = []
         for rc in found:
@@ -251,6 +253,11 @@ class RobotClauses:
                 roles["destination"] = roles["location"] = None
                 task = kind
             task = task or kind
+            if kind == "wait" and wait_seconds is None:
+                # the clause reader's stay ("for two minutes", "for a while"): how long the robot waits there
+                wait_seconds = clause.wait_seconds
+            if kind == "cross" and rc.verb is not None and guides is None and verb in lx.LEADING_VERBS:
+                guides = self._followed(rc.verb)  # "guides them to the exit": whom it takes along
             if kind == "follow" and rc.verb is not None and follows is None:
                 follows = self._followed(rc.verb)
             for place in clause.places:
@@ -286,7 +293,7 @@ class RobotClauses:
         if task_confidence is not None:
             confidence.insert(0, task_confidence)
         return RobotReading(task, start, destination, location, tuple(via), " ... ".join(texts), tuple(confidence),
-                            follows)
+                            follows, wait_seconds if task == "wait" else None, guides if task == "cross" else None)
 
     def _passes_by(self, verb: int | None) -> bool:
         """Whether the robot's verb says it goes by, though no place is named ("as it rolls past",

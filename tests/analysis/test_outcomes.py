@@ -366,6 +366,22 @@ def test_the_robots_own_claims(clinic):
     assert check(clinic, None, far, robot_claims=(follow,)).status == FAILS
 
 
+def test_a_robot_wait_with_asked_seconds_needs_them_at_the_place(clinic):
+    # "the robot waits at reception for two minutes": a 20 s run there is no ✓ (run it longer), a
+    # 130 s run there is, and leaving after 30 s of a 130 s run is a ✗
+    stay = Claim("robot_stay", "reception for 120 s", "wait", point=(1.0, 4.0), radius=1.0, seconds=120.0,
+                 needs_seconds=125.0)
+    bystanders = people(line((1, 1), (1, 1)), line((2, 1), (2, 1)))
+    short = check(clinic, None, run(20, bystanders, line((1, 4), (1, 4))), robot_claims=(stay,))
+    assert short.status == UNCHECKED and "run it longer" in short.evidence
+    whole = check(clinic, None, run(130, bystanders, line((1, 4), (1, 4))), robot_claims=(stay,))
+    assert whole.status == HOLDS
+
+    def leaves(t):
+        return np.array([1.0, 4.0]) if t < 30 else np.array([min(1.0 + (t - 30), 15.0), 4.0])
+    assert check(clinic, None, run(130, bystanders, leaves), robot_claims=(stay,)).status == FAILS
+
+
 # ---- streaming ----------------------------------------------------------------------------------
 
 def test_chunks_give_the_same_report_as_the_whole_run(clinic):

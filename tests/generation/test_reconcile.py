@@ -16,6 +16,7 @@ from grove_tui.generation.reconcile import grounding_report, is_idle, reconcile
 from grove_tui.generation.rois import select_rois
 from grove_tui.language.reading import read_prompt
 from grove_tui.navigation.grid import build_grid
+from grove_tui.scenario.model import RobotSpec
 from grove_tui.scenario.report import GroundingReport
 
 
@@ -252,3 +253,20 @@ def test_the_emergency_field_is_for_those_the_sentence_evacuates(hospital, coars
     assert "FollowVelocityField" not in {n.node for n in guard.tree.walk()} and guard.field_id is None
     assert all(a.field_id is None for a in post.agents if a.group_index == guard.index)
     assert any("exits in use" in n and "(20 people)" in n for n in post.notes)
+
+
+def test_the_robot_s_asked_wait_is_its_stay_claim(hospital, coarse_grid):
+    # "waits at reception for two minutes": the stay claim carries the 120 s and a run shorter than
+    # them cannot tell it (a 10 s run earned the wait a ✓ when the seconds were dropped)
+    preset = load_preset("normal")
+    reading = read_prompt("Two visitors walk to the pharmacy and the robot waits at the reception for two minutes.",
+                          hospital)
+    selection = select_rois(hospital, preset, reading)
+    draft = Draft((DraftGroup("visitors", 2, "entrance_lobby", goto("pharmacy")),))
+    post = postprocess(hospital, coarse_grid, preset, draft, selection, 0, reading, ("GoTo", "Queue"))
+    robot = RobotSpec(start=(20.0, 10.0), goal=(20.0, 10.0), path=((20.0, 10.0),), task="wait")
+    report = grounding_report(reading, post.groups, post.agents, hospital, post.notes, robot=robot)
+    assert report.robot is not None
+    (stay,) = [c for c in report.robot.claims if c.kind == "robot_stay"]
+    assert stay.seconds == 120.0 and stay.needs_seconds is not None and stay.needs_seconds >= 120.0
+    assert "120 s" in stay.asked

@@ -103,6 +103,20 @@ def test_the_robot_round_trips_through_plain_data(worlds):
     assert PromptReading.from_dict(reading.to_dict()) == reading
 
 
+@pytest.mark.parametrize("prompt, seconds", [
+    ("The robot waits at the cloakroom for two minutes.", 120.0),
+    ("The robot waits at the cloakroom for a while.", 600.0),
+    ("The robot waits at the cloakroom until closing.", None),  # the whole run: no length
+    ("The robot waits at the cloakroom.", None),
+])
+def test_the_robot_s_wait_carries_its_asked_seconds(worlds, prompt, seconds):
+    # the clause reader's stay, as a group's wait_seconds; without it a 10 s run earned the wait a ✓
+    reading = read_prompt(prompt, worlds["museum"])
+    assert reading.robot is not None and reading.robot.task == "wait" and reading.robot.location == "cloakroom"
+    assert reading.robot.wait_seconds == seconds
+    assert PromptReading.from_dict(reading.to_dict()).robot == reading.robot
+
+
 # ---- confidence ------------------------------------------------------------------------------------
 
 

@@ -1,0 +1,55 @@
+"""The people the robot guides, and the exit it takes them to.
+
+"... the passengers evacuate while the robot guides them to the exit": the robot's clause names an
+exit ("the exit") the reader may be unsure of, and the passengers' exit is chosen by walking distance
+at post-processing. A robot that guides people goes where they go: its destination is the exit most of
+the guided group use, whatever place a model picked for "the exit" on its own. The report then carries
+a claim that the guided people went with the robot, measured like any reaction to it.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Sequence
+
+from grove_tui.language.model import PromptReading
+from grove_tui.language.tokens import lemma
+
+# Words for the people the clause points back to rather than names ("guides them", "leads everyone out").
+_POINTING = frozenset({"them", "everyone", "everybody", "all", "him", "her", "us", "people"})
+_ARTICLES = frozenset({"a", "an", "the", "group", "of", "some", "all"})
+
+
+def guided_index(reading: PromptReading) -> int | None:
+    """The reading group the robot's clause leads, or None when it leads nobody: the group its words
+    name, or for a pronoun one that follows the robot, else the group said last before its clause."""
+    robot = reading.robot
+    if robot is None or robot.task != "cross" or not robot.guides or not reading.groups:
+        return None
+    said = {lemma(w) for w in robot.guides.lower().split()} - _ARTICLES - _POINTING
+    if said:
+        for i, g in enumerate(reading.groups):
+            if said & {lemma(w) for w in g.who.lower().split()}:
+                return i
+    followers = [i for i, g in enumerate(reading.groups) if g.robot_interaction == "follow"]
+    if followers:
+        return followers[0]
+    if robot.guides.lower() not in _POINTING:
+        return None  # it names people the reading has no group for
+    prompt = reading.prompt.lower()
+    clause = prompt.find(robot.text.lower()) if robot.text else -1
+    before = [(prompt.find(g.who.lower()), i) for i, g in enumerate(reading.groups)
+              if g.who and 0 <= prompt.find(g.who.lower()) and (clause < 0 or prompt.find(g.who.lower()) < clause)]
+    return max(before)[1] if before else None
+
+
+def guided_exit(reading: PromptReading, groups: Sequence[object], agents: Sequence[object]) -> str | None:
+    """The exit most members of the group the robot guides leave by (post-processing's per-agent
+    exit), or None when it guides nobody or they leave by no exit. `groups` and `agents` are
+    post-processing's plans or views of them (read by `reading_index`, `index`, `group_index`, `exit`)."""
+    index = guided_index(reading)
+    if index is None:
+        return None
+    plans = {getattr(g, "index", None) for g in groups if getattr(g, "reading_index", None) == index}
+    exits = [e for a in agents if getattr(a, "group_index", None) in plans and (e := getattr(a, "exit", None))]
+    return Counter(exits).most_common(1)[0][0] if exits else None
