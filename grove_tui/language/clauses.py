@@ -18,6 +18,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
+from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -530,6 +531,8 @@ class Clauses:
         """A hazard named on its own ("Fire!", "a bomb scare", "smoke in the kitchen"), not as the
         first word of a thing's name ("the fire exit", "the smoke detector")."""
         s = self.s
+        if hazard_cue(s, i):  # "a smell of burning", "the alarm goes off" (hazards.py)
+            return True
         if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN"):
             return False
         return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")
