@@ -58,8 +58,9 @@ def _short(m: re.Match[str]) -> str:
 _TWO = re.compile(r"(?<=\w)(\s+)2(\s+)([A-Za-z][\w-]*)")
 # Words after which "2" is not "to": prepositions that take a number ("at 2", "by 2", "from 2 to 4"),
 # "to" itself, and words of joining.
-_NOT_AFTER = frozenset("at by from until till after before since to of or and about around than under over "
-                       "only just nearly almost all x times".split())
+_NOT_AFTER = lx.DETERMINERS | frozenset("at by from until till after before since to of or and about around than "
+                                        "under over only just nearly almost all x times on in into onto with for "
+                                        "past via through near every".split())
 
 
 def chat_to(text: str, index: PlaceIndex) -> str:
@@ -75,11 +76,14 @@ def chat_to(text: str, index: PlaceIndex) -> str:
             # "from bay 2 2 the café": a place's number, then "to"; "at 1 2 the ..." is no place
             if len(before) < 2 or before[-2].lower() not in numbered:
                 return m.group(0)
-        elif not prev or prev in _NOT_AFTER or prev in numbered:
-            return m.group(0)  # "at 2", "bay 2": a time or a place's number
+        elif not prev or prev in _NOT_AFTER or prev in numbered or \
+                (len(prev) >= 3 and any(n.startswith(prev) for n in numbered)):
+            return m.group(0)  # "at 2", "bay 2", "plat 2": a time or a place's number
         head = lemma(nxt)
         if nxt in lx.DETERMINERS and nxt not in ("all", "both", "some", "any", "no"):
             return f"{m.group(1)}to{m.group(2)}{m.group(3)}"
+        if verb_lemma(nxt) != nxt and lx.INTENT_VERBS.get(verb_lemma(nxt)) is not None:
+            return m.group(0)  # "on plat 2 waiting": the verb after a place's number
         if head in lx.PERSON_NOUNS or head in lx.DURATION_UNITS or nxt.rstrip("s") in lx.DURATION_UNITS or \
                 nxt in lx.NUMBER_WORDS or (head != nxt and nxt.endswith("s")) or not _place_word(nxt, index):
             return m.group(0)  # "2 drivers", "2 mins", "2 bags": a count

@@ -14,6 +14,7 @@ world lacks ("smoke from the boiler room") is still refused: people would be sen
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.place_kinds import PLACE_KINDS
 from grove_tui.language.sentence import Sentence
 
 # Nouns that say a hazard by what is noticed ("fumes", "sparks"), beside the lexicon's hazard nouns.
@@ -26,11 +27,15 @@ _SOUNDING = frozenset("go goes went going gone sound sounds sounded sounding rin
 _ALARMS = frozenset({"alarm", "alarms", "siren", "sirens", "bell", "bells"})
 # Things that fail into a hazard ("a burst pipe", "a burst water main").
 _BURST = frozenset({"pipe", "pipes", "main", "mains", "boiler", "tank"})
-# Heads of phrases that name a room, not a thing: a cause said in one is still a place to refuse.
-ROOM_HEADS = lx.GENERIC_PLACE_HEADS | lx.BUILDING_WORDS | frozenset(
+# Heads of phrases that name a room, not a thing: a cause said in one is still a place to refuse (the
+# kinds of place a world may lack, the lexicon's words for places, and rooms by their usual names).
+ROOM_HEADS = lx.GENERIC_PLACE_HEADS | lx.BUILDING_WORDS | lx.OUTDOOR_WORDS | lx.DOOR_WORDS | \
+    frozenset(w for kind in PLACE_KINDS for w in kind.split("_")[-1:]) | \
+    frozenset(w for group in lx.PLACE_SYNONYMS for w in group) | frozenset(
     "room kitchen office hall lab laboratory ward basement cellar loft attic garage shop store storeroom "
     "stockroom cupboard closet corridor lobby lounge canteen cafeteria cafe café toilet toilets bathroom "
-    "washroom library gym studio theatre chamber suite wing floor level plant depot warehouse yard".split())
+    "washroom library gym studio theatre chamber suite wing floor level plant depot warehouse yard ward gallery "
+    "classroom cinema bar pub restaurant shop pool court garden terrace balcony platform bay gate".split())
 # Prepositions that say where a hazard comes from or is ("from the toaster", "in the bin").
 _CAUSE_PREPOSITIONS = frozenset("from in inside behind under near by at out of".split())
 
