@@ -18,7 +18,7 @@ from grove_tui.language.place_kinds import PLACE_KINDS
 from grove_tui.language.sentence import Sentence
 
 # Nouns that say a hazard by what is noticed ("fumes", "sparks"), beside the lexicon's hazard nouns.
-_NOTICED = frozenset("fumes sparks burning blaze fumes gas siren sirens".split())
+_NOTICED = frozenset("fumes sparks burning blaze gas siren sirens flame flames".split())
 # Words after "smell of" / "smell" that make a smell a hazard ("a smell of burning", "smells of gas").
 _SMELLS = frozenset("burning smoke gas fumes fire petrol chemicals".split())
 # An alarm's verbs of sounding ("the alarm goes off", "alarms are sounding", "the fire alarm rings").
@@ -73,7 +73,8 @@ def cause_thing(s: Sentence, k: int, prep: str, at: int) -> bool:
             s.w[start - 1].sentence == s.w[at].sentence:
         start -= 1
     before = range(start, at)
-    if not any(cue(s, x) or s.lemma(x) in lx.HAZARD_NOUNS and s.w[x].dep != "compound" for x in before):
+    if not any(cue(s, x) or (s.lemma(x) in lx.HAZARD_NOUNS or s.low[x] in lx.HAZARD_NOUNS) and s.w[x].dep != "compound"
+               for x in before):
         return False
     if any(s.low[x] in lx.PERSONAL_PRONOUNS or s.lemma(x) in lx.PERSON_NOUNS for x in before):
         return False  # "the cook in the kitchen smells burning": a person's place
