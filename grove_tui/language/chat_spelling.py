@@ -2,7 +2,7 @@
 
 - a dropped "g" ("walkin", "headin'", "queuin"): the "-ing" form of a verb of what people do, unless
   it follows a determiner ("a walkin clinic" is a walk-in clinic);
-- short words ("frm": from, "b4": before, "bc"/"bcos": because);
+- short words ("frm": from, "b4": before, "bc"/"bcos": because');
 - "2" for "to" between a place and a place ("from the staff office 2 bay 4"), which needs the world:
   "2" is a number when it completes one of the world's names ("bay 2"), when it follows a word
   places are numbered by, or when a person, a unit or a plural follows ("2 drivers", "2 mins").

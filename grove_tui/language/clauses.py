@@ -29,6 +29,7 @@ from grove_tui.language.reactions import robot_interaction, robot_positions, una
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
@@ -425,7 +426,9 @@ class Clauses:
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
         if any(i not in s.relative for i, _, _ in candidates):
             candidates = [c_ for c_ in candidates if c_[0] not in s.relative]
-        if len(candidates) > 1 and own and candidates[0][0] == own[0] and s.w[own[0]].tag == "VBG":
+        if len(candidates) > 1 and any(a_things_verb(s, i) for i, _, _ in candidates):
+            candidates = [c_ for c_ in candidates if not a_things_verb(s, c_[0])]  # "... before the bus leaves"
+        elif len(candidates) > 1 and own and candidates[0][0] == own[0] and s.w[own[0]].tag == "VBG":
             candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
         if candidates:
             c.has_action = True

@@ -110,3 +110,15 @@ def test_a_verb_of_leaving_is_a_walk_from_where_they_are(read, world, prompt, st
 def test_a_verb_of_leaving_with_a_hazard_is_an_evacuation(read, world, prompt, start):
     group = read(world, prompt).groups[0]
     assert (group.intent, group.start) == ("evacuate", start)
+
+
+# ---- E. a thing's verb after a word of time gives the people no intent ------------------------------
+
+
+@pytest.mark.parametrize("world,prompt,intent", [
+    ("bus_station", "5 people queuing for tickets before the bus leaves", "queue"),
+    ("care_home", "3 residents queuing at the dining room before the lunch trolley leaves", "queue"),
+])
+def test_a_things_verb_after_a_word_of_time_is_no_intent(read, world, prompt, intent):
+    assert read(world, prompt).groups[0].intent == intent
+
