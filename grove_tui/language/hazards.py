@@ -33,7 +33,7 @@ ROOM_HEADS = lx.GENERIC_PLACE_HEADS | lx.BUILDING_WORDS | lx.OUTDOOR_WORDS | lx.
     frozenset(w for kind in PLACE_KINDS for w in kind.split("_")[-1:]) | \
     frozenset(w for group in lx.PLACE_SYNONYMS for w in group) | frozenset(
     "room kitchen office hall lab laboratory ward basement cellar loft attic garage shop store storeroom "
-    "stockroom cupboard closet corridor lobby lounge canteen cafeteria cafe café toilet toilets bathroom "
+    "stockroom corridor lobby lounge canteen cafeteria cafe café toilet toilets bathroom "
     "washroom library gym studio theatre chamber suite wing floor level plant depot warehouse yard ward gallery "
     "classroom cinema bar pub restaurant shop pool court garden terrace balcony platform bay gate".split())
 # Prepositions that say where a hazard comes from or is ("from the toaster", "in the bin").

@@ -71,6 +71,7 @@ def test_a_hazard_narrative_makes_leaving_an_evacuation(read, world, prompt, sta
     ("hospital", "Smoke pours from a laptop charger: the patients in the cafeteria get out now", "cafeteria"),
     ("care_home", "There is smoke coming from the laundry basket, the carers in the lounge leg it", "lounge"),
     ("bus_station", "flames from a bus engine at bay 2, passengers in the concourse leg it", "concourse"),
+    ("care_home", "the gas leak in the boiler cupboard means the visitors in the dining room get out", "dining_room"),
 ])
 def test_a_cause_thing_is_not_refused(read, world, prompt, start):
     reading = read(world, prompt)
