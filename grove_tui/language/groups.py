@@ -85,6 +85,9 @@ class Groups:
         # "everyone in the bar and the restaurant": everyone in each (after the others, whose relations count groups)
         groups += [g for k, m in enumerate(mentions) if (g := everyone_in_the_second_zone(
             s, m, clauses[k], groups[k], self._own_span(spans[k], m, robot_tokens), self.notes)) is not None]
+        for k in range(len(mentions) - 1):
+            if self._led_with_next(mentions, k) and groups[k].intent == "follow" and groups[k + 1].intent == "walk":
+                groups[k + 1] = replace(groups[k + 1], intent="follow", follows=groups[k].follows)  # led as well
         for k, m in enumerate(mentions):
             g = groups[k]
             parent = int((g.relation or "").partition(":")[2]) if (g.relation or "").startswith("others_of:") else None
@@ -174,6 +177,7 @@ class Groups:
             between = range(mentions[k].last + 1, mentions[k + 1].first)
             in_places = {x for p in clauses[k].places for x in range(p.index, p.end)}
             described = attribute_end(s, self.mentions.people, mentions[k].last)  # "a boy with a broken arm and ..."
+            described = max(described, (mentions[k].apposition or (0, 0))[1])  # "Year 2, 25 children, and their teacher"
             leftover = [x for x in between if x not in in_places and not s.is_punct(x) and x > described
                         and s.low[x] not in ("and", "as", "well", "plus", "with", "his", "her", "their", "our", "my", "each")]
             if clauses[k + 1].has_action and (company_between(s, mentions[k].last, mentions[k + 1].first) or (
@@ -224,6 +228,11 @@ class Groups:
                 kept = [replace(p, prep="at") for p in clauses[k].places if p.match is not None and (
                     not (out or sent_to) or p.prep in ("from", "out", "obj:start", "at", "in", "on"))]
                 clauses[k - 1] = replace(clauses[k - 1], places=clauses[k - 1].places + kept)
+        for k in range(len(mentions) - 2, -1, -1):
+            if self._led_with_next(mentions, k) and not clauses[k].has_action:
+                # "leads two tourists and a child to the cafe", "walks Mrs Baxter and Mr Reid to ...":
+                # both are taken along, by the way said after the last
+                clauses[k] = replace(clauses[k + 1], places=clauses[k].places + clauses[k + 1].places)
         for k, m in enumerate(mentions):
             if k > 0 and self.mentions.objects.led_by(m.first) and mentions[k - 1].last >= m.first - 4:
                 # the leader takes the route the led group is said to take; with no route ("a nurse
@@ -234,6 +243,14 @@ class Groups:
                 around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
                 clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
                     "walk" if routed else "wander" if around else "wait"))
+
+    def _led_with_next(self, mentions: list[Mention], k: int) -> bool:
+        """Whether mention k is taken along by a leader and the next is joined to it by "and" ("leads
+        two tourists and a child"): the next is taken along too."""
+        s = self.s
+        return k + 1 < len(mentions) and self.mentions.objects.led_by(mentions[k].first) and \
+            mentions[k + 1].relation is None and \
+            [s.low[x] for x in range(mentions[k].last + 1, mentions[k + 1].first)] in (["and"], [",", "and"])
 
     def _an_object(self, m: Mention) -> bool:
         """Whether the people are someone's object ("follow their guide"), not the scene's own people

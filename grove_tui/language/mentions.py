@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.another_count import more_people
+from grove_tui.language.apposed_counts import class_named, collective_is_a_verb
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
@@ -25,6 +26,7 @@ from grove_tui.language.only_people import only_people_before, the_only_mention
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People, companions, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
+from grove_tui.language.role_words import family_member, family_size, person_of_a_person, possessor_of_a_person
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.school_classes import named_class
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -78,11 +80,8 @@ class Mentions:
                     s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \
                     not self.people.third_person_verb(m.last + 1):
                 m = None  # "the first-class lounge", "a first-team pitch": a collective inside a compound modifier
-            if m is not None and found and m.collective is not None and m.first == m.last and m.first > 0 and \
-                    s.w[m.first - 1].pos in ("NOUN", "PROPN") and m.last + 1 < s.n and \
-                    s.low[m.last + 1] in lx.PLACE_PREPOSITIONS | {"round"} and \
-                    verb_lemma(s.low[m.first]) in ("crowd", "cluster", "huddle", "swarm", "throng", "mob", "flock"):
-                m = None  # "4-5 kids w/ notebooks crowd round the t-rex": the collective is their verb
+            if m is not None and found and collective_is_a_verb(s, m):
+                m = None  # "4-5 kids w/ notebooks crowd round the t-rex", "..., 24 pupils, troop from": their verb
             if m is None:
                 i += 1
                 continue
@@ -176,7 +175,7 @@ class Mentions:
             return False
         if m.relation not in (None, f"subset_of:{index}") or \
                 m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person") \
-                and not members_named(before):
+                and not members_named(before) and not class_named(s, before):
             return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full
@@ -234,8 +233,8 @@ class Mentions:
             return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
             return True  # "the boardroom meeting of twelve people breaks up"
-        if prev in ("'s", "’s") and self.possessor_place(at) is not None:
-            return True  # "ward A's patients", "the café's 8 customers": the people of a place
+        if prev in ("'s", "’s") and (self.possessor_place(at) is not None or family_member(s, at) or person_of_a_person(s, self.people, at)):
+            return True  # "ward A's patients", "the café's 8 customers": the people of a place; "the bride's youngest"
         if self._after_time_phrase(at) or after_a_clock_time(s, at):
             return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
@@ -555,8 +554,8 @@ class Mentions:
         head = self.people.person_head(k, counted=False)
         if head is None:
             return named_class(s, k)  # "Year 4 walks", or none: "ten in the pharmacy" borrows the last noun
-        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
-            return Mention(at, head, s.span(at, head), self.people.label(head),
+        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person; "Dr Patel's registrar": nobody
+            return None if possessor_of_a_person(s, self.people.is_person_noun, head) else Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
         singular = s.lemma(head) == low[head] and not self.people.plural_word(head)  # "the injured": some people
         label = self.people.label(head)
@@ -566,9 +565,9 @@ class Mentions:
         collective = self.collectives.collective(head)
         if collective is not None:
             return collective
-        if det in ("a", "an") or (singular and (det == "the" or det in _POSSESSIVES and low[at - 1] == "and")):
+        if det in ("a", "an") or family_member(s, head) or (singular and (det == "the" or det in _POSSESSIVES and low[at - 1] == "and")):
             kind = "exclusive" if exclusive else "exact"
-            return Mention(at, head, s.span(at, head), label, Count(kind, 1, 1, 1), exclusive=exclusive)
+            return Mention(at, head, s.span(at, head), label, Count(kind, n := family_size(s, head), n, n), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
                     or self.objects.robot_object(at) is not None or self.objects.led_by(at) or self.objects.followed(at)

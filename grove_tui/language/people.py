@@ -11,6 +11,7 @@ from grove_tui.language.person_modifiers import compound_head_person, head_perso
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
@@ -46,8 +47,8 @@ class People:
             return None
         j = k + 1 if k + 1 < s.n and s.low[k + 1] != "." else k + 2  # "Dr. Jones"
         end = None
-        while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.isalpha() and \
-                s.w[j].pos == "PROPN" and not s.index.knows(s.lemma(j)) and s.low[j] not in lx.ROBOT_WORDS and \
+        while j < s.n and j <= k + 3 and s.w[j].text[:1].isupper() and s.w[j].text.replace("'", "").replace("’", "").isalpha() and \
+                s.w[j].pos == "PROPN" and (not s.index.knows(s.lemma(j)) or world_person_name(s, k, j)) and s.low[j] not in lx.ROBOT_WORDS and \
                 s.low[j] not in lx.STOPWORDS | lx.PLACE_PREPOSITIONS | lx.CLAUSE_STARTERS and \
                 verb_lemma(s.low[j]) not in lx.INTENT_VERBS:  # not "A Doctor Walks To Ward B"
             end, j = j, j + 1
@@ -66,6 +67,8 @@ class People:
             return False  # "the robot stands guard at the door": a duty, nobody
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i) or adjective_person(s, i):
             return True  # "a drunk kicks the robot": an adjective standing for a person
+        if abbreviated_role(s, i) or family_member(s, i) or plural_adjective_people(s, i):
+            return True  # "the GP waits", "our youngest edges away"
         if compound_head_person(s, i) or head_person(s, i) or agent_compound(s, i):
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
@@ -288,6 +291,11 @@ class People:
             if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and self.is_person_noun(k + 1):
                 k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
                 continue
+            if s.w[k].pos in ("NOUN", "PROPN") and k + 2 < s.n and s.w[k + 1].pos in ("NOUN", "PROPN") and \
+                    s.w[k + 1].tag not in ("NNS", "NNPS") and (self.is_person_noun(k + 2) or (
+                        k + 3 < s.n and s.w[k + 2].pos in ("NOUN", "PROPN") and self.is_person_noun(k + 3))):
+                k += 1  # "revenue protection officers", "car park attendants": a compound naming the kind
+                continue
             if (counted and s.w[k].tag in ("NNS", "NNPS") and s.lemma(k) not in lx.NON_PLACES
                     and s.lemma(k) not in lx.NON_PEOPLE
                     and s.lemma(k) not in lx.DURATION_UNITS and not names_a_place(s.index, s.lemma(k))
@@ -448,7 +456,7 @@ class People:
         if head > 0 and s.low[head - 1] in CHILD_NAME_WORDS and s.w[head].tag == "NNP" and \
                 s.lemma(head) not in lx.PERSON_NOUNS:
             return "child"  # "Little Tom": a child, by name
-        noun = s.lemma(head)
+        noun = abbreviation_label(s, head) or s.lemma(head)  # "two TAs": ta
         if head >= 2 and s.low[head - 1] == "-" and modifier_end(s, head - 2) == head and s.w[head - 2].pos != "ADJ":
             return f"{s.low[head - 2]}-{noun}"  # "the co-pilot": another person than "the pilot"
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):

@@ -24,7 +24,7 @@ from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
-from grove_tui.language.place_owner import owner_at
+from grove_tui.language.named_owners import owned_by_name, owner_at
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -151,7 +151,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if named_entry is not None and named_owner in named_entry.tokens and lemmas and lemmas[-1] in named_entry.tokens:
             named_owner = None  # "the women's toilet": the owner is part of the place's own name
         owner = named_owner or (owner_at(s, self.owner, at) if possessive else None)  # "Little Tom's" a child
-        owned = self._owned(lemmas, match, owner) if owner and said_before is None else None
+        owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
         if owned is not None:
             match = owned[0]
         if match is None and possessive:

@@ -1,0 +1,58 @@
+"""Rooms that carry the name of whoever they belong to. A care home names its residents' rooms
+("Mrs Okafor's room"), a school its classes' rooms ("year 1 classroom"): "a carer wheels Mrs Okafor
+from her room" starts in Mrs Okafor's room, not the carer's own, and "Year 1 ... troop from their
+classroom" in year 1's, not any classroom. The owner is the nearest titled name (or school class)
+said before the possessive in its sentence, the pronoun agreeing ("her" is no Mr's). The world's
+own person names are names though places' words too (role_words.world_person_name)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.place_owner import owner_at
+from grove_tui.language.places import PlaceMatch
+from grove_tui.language.sentence import Sentence
+
+__all__ = ["owned_by_name", "owner_at"]
+
+Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
+
+_HIS = frozenset({"mr", "sir", "father", "uncle"})
+_HER = frozenset({"mrs", "ms", "miss", "dame", "sister", "auntie"})
+_CLASS_WORDS = frozenset({"year", "class", "form", "grade"})
+
+
+def _owner_words(s: Sentence, at: int, pronoun: str) -> tuple[str, ...] | None:
+    """The words of the nearest owner named before word `at` in its sentence: ("mrs", "okafor") or
+    ("year", "1")."""
+    for x in range(at - 1, -1, -1):
+        if s.w[x].sentence != s.w[at].sentence:
+            return None
+        title = s.low[x].rstrip(".")
+        if title in lx.TITLES and x + 1 < at and s.w[x + 1].text[:1].isupper():
+            if (pronoun == "her" and title in _HIS) or (pronoun == "his" and title in _HER):
+                continue
+            return (title, s.low[x + 1]) if pronoun != "their" else None
+        if s.low[x] in _CLASS_WORDS and x + 1 < at and s.low[x + 1][:1].isdigit() and pronoun == "their":
+            return s.low[x], s.low[x + 1]
+    return None
+
+
+def owned_by_name(s: Sentence, at: int, k: int, lemmas: Sequence[str]) -> Decided | None:
+    """The room a possessive at word k names when its owner's name is one of the world's ("her
+    room" of Mrs Okafor: room_3), else None."""
+    if k >= s.n or s.low[k] not in ("her", "his", "their") or not lemmas:
+        return None
+    owner = _owner_words(s, at, s.low[k])
+    if owner is None:
+        return None
+    head = lemmas[-1]
+    n = len(owner)
+    rooms = [e for e in s.index.entries if e.kind == "zone" and head in e.tokens and any(
+        phrase[x:x + n] == owner for phrase in e.phrases for x in range(len(phrase) - n + 1))]
+    if len(rooms) != 1:
+        return None
+    e = rooms[0]
+    return (PlaceMatch(e.name, e.kind, e.zone, 1.0, True), 0.85,
+            f"'{' '.join(lemmas)}' of {' '.join(owner)}: {e.name}", ())
