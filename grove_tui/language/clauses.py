@@ -18,6 +18,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
+from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -28,6 +29,7 @@ from grove_tui.language.reactions import robot_interaction, robot_positions, una
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
@@ -424,7 +426,9 @@ class Clauses:
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
         if any(i not in s.relative for i, _, _ in candidates):
             candidates = [c_ for c_ in candidates if c_[0] not in s.relative]
-        if len(candidates) > 1 and own and candidates[0][0] == own[0] and s.w[own[0]].tag == "VBG":
+        if len(candidates) > 1 and any(a_things_verb(s, i) for i, _, _ in candidates):
+            candidates = [c_ for c_ in candidates if not a_things_verb(s, c_[0])]  # "... before the bus leaves"
+        elif len(candidates) > 1 and own and candidates[0][0] == own[0] and s.w[own[0]].tag == "VBG":
             candidates = candidates[1:]  # "the family sleeping in the bedrooms escape": who they are, not what they do
         if candidates:
             c.has_action = True
@@ -530,6 +534,8 @@ class Clauses:
         """A hazard named on its own ("Fire!", "a bomb scare", "smoke in the kitchen"), not as the
         first word of a thing's name ("the fire exit", "the smoke detector")."""
         s = self.s
+        if hazard_cue(s, i):  # "a smell of burning", "the alarm goes off" (hazards.py)
+            return True
         if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN"):
             return False
         return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
+from grove_tui.language.hazards import cause_thing
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
@@ -83,7 +84,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         low = s.low
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
-        record_unknown = record_unknown and prep != "between"  # "naps between operations": a time, maybe
+        record_unknown = record_unknown and prep != "between" and not cause_thing(s, k, prep, at)  # a time; a cause
         if is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
         if k < s.n and low[k] in ("where", "upstairs", "downstairs"):  # "to where you get your bags back"
@@ -577,9 +578,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         return False
 
     def scan_names(self, skip: set[int]) -> None:
-        """Places the sentence names in no place role ("a fire alarm empties the pharmacy", "the
-        lobby is busy"): a whole name or alias starting a noun phrase, for the places the scenario
-        is about; never an unknown place."""
+        """Places the sentence names in no place role ("a fire alarm empties the pharmacy", "the lobby is
+        busy"): a whole name or alias starting a noun phrase, for the scenario; never an unknown place."""
         s = self.s
         k = 0
         while k < s.n:

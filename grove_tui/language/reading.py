@@ -28,10 +28,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 
+from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
+from grove_tui.language.leaving import as_verbs
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.pairs import joined_pairs
@@ -65,11 +67,12 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    words = parse(text)
+    text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
+    words = as_verbs(parse(text))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     corrected, corrections = correct_places(text, words, index)
     if corrections:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
-        text, words = corrected, parse(corrected)
+        text, words = corrected, as_verbs(parse(corrected))
     reading = _read(Sentence(text, words, index, int(seed)))
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 

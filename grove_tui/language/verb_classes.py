@@ -16,6 +16,7 @@ rather than a word:
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -42,7 +43,8 @@ MORE_PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("take", "a", "breather"): "wait", ("sit", "about"): "wait", ("sit", "around"): "wait",
     ("stand", "about"): "wait", ("stand", "round"): "wait",
 }
-PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS}
+# Leaving phrases first: "make a run for it" is a whole phrase before the lexicon's "make a run".
+PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**LEAVING_PHRASES, **lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS}
 _AROUND = frozenset({"around", "about", "round"})
 
 
@@ -70,6 +72,8 @@ def verb_intent(s: Sentence, i: int) -> str | None:
         return None  # "walk at a snail's pace", "move at a crawl": how fast, not pacing about
     if v in lx.INTENT_VERBS:
         return lx.INTENT_VERBS[v]
+    if v in LEAVING_VERBS or verb_lemma(s.low[i]) in LEAVING_VERBS:
+        return "walk"  # "two carers bail", "the kids scarper"
     b = base(s, i)
     if b in VEHICLE_VERBS and not s.after_determiner(i):
         return "walk"

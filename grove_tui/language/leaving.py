@@ -1,0 +1,52 @@
+"""Verbs of leaving in everyday English the lexicon lacks (round 14): "leg it", "bail", "scarper",
+"make a run for it", "clear off", "head for the exits". Each is a walk away from where the people
+are; said with a hazard (`hazards.py`) or with urgency, the clause's evacuation cues make it an
+evacuation, as for "leave" and "get out"."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from grove_tui.language.parser import Word
+
+# One-word verbs of leaving (base forms): a walk.
+LEAVING_VERBS = frozenset("bail scarper skedaddle scram bolt vamoose decamp depart".split())
+# Phrasal verbs of leaving: (base form, words after it).
+LEAVING_PHRASES: dict[tuple[str, ...], str] = {
+    **{phrase: "walk" for phrase in (
+        ("leg", "it"), ("clear", "off"), ("make", "tracks"), ("make", "off"), ("head", "off"), ("take", "off"),
+        ("make", "a", "run", "for", "it"), ("make", "a", "break", "for", "it"), ("make", "a", "dash", "for", "it"),
+        ("head", "for", "the", "exits"), ("head", "for", "the", "exit"), ("make", "for", "the", "exits"),
+        ("make", "for", "the", "exit"), ("run", "for", "it"), ("run", "for", "the", "exits"),
+        ("get", "out"), ("clear", "out"), ("pile", "out"), ("bail", "out"), ("file", "out"), ("stream", "out"),
+        ("pour", "out"), ("spill", "out"), ("get", "away"))},
+}
+# Phrasal verbs of leaving that are an evacuation when the prompt names a hazard ("legs it", "bails").
+HAZARD_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (
+    ("leg", "it"), ("clear", "off"), ("make", "tracks"), ("make", "off"), ("run", "for"), ("make", "a"),
+    ("head", "for"), ("make", "for"), ("get", "away"), ("file", "out"), ("stream", "out"), ("spill", "out"))
+
+
+# Forms of the leaving verbs the small parser tags as nouns after a noun ("the carers in the lounge
+# leg it": "lounge leg", a compound; "the passengers bail"): with what follows them, they are verbs.
+_LEG_FORMS = frozenset({"leg", "legs", "legged", "legging"})
+_BARE_FORMS = frozenset(f"{v}{end}" for v in ("bail", "scarper", "skedaddle", "scram", "bolt", "decamp")
+                        for end in ("", "s", "ed", "ing", "d")) - {"bolts", "bolt", "scrams"}
+_AFTER_BARE = frozenset({"", ".", "!", ",", ";", ":", "from", "out", "off", "away", "and", "through", "via", "towards",
+                         "toward", "to", "immediately", "now", "fast", "quickly"})
+
+
+def as_verbs(words: list[Word]) -> list[Word]:
+    """The parse with leaving verbs the parser took for nouns tagged as verbs ("lounge leg it")."""
+    out = list(words)
+    for k, w in enumerate(words):
+        nxt = words[k + 1].lower if k + 1 < len(words) else ""
+        leaving = (w.lower in _LEG_FORMS and nxt == "it") or (w.lower in _BARE_FORMS and nxt in _AFTER_BARE and k > 0
+                                                               and words[k - 1].pos in ("NOUN", "PROPN", "PRON"))
+        if leaving and w.pos != "VERB":
+            out[k] = replace(w, pos="VERB", tag="VBP" if not w.lower.endswith(("ed", "ing")) else "VBD",
+                             dep="ROOT", head=k)
+            prev = out[k - 1] if k > 0 else None
+            if prev is not None and prev.dep == "compound" and prev.head == k:
+                out[k - 1] = replace(prev, dep=w.dep, head=w.head)  # "the lounge": the noun the verb was taken for
+    return out
