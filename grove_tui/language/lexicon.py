@@ -60,7 +60,7 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
     "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8), "shift": (4, 10),
-    "club": (6, 15), "choir": (10, 25), "troop": (8, 15), "squadron": (8, 15),
+    "club": (6, 15), "choir": (10, 25), "troop": (8, 15), "squadron": (8, 15), "audience": (20, 60), "congregation": (20, 60),
 }
 # Collectives that end a person named by two words and still count people ("the cabin crew", "a film
 # crew of four"), unlike "the au pair".
@@ -131,7 +131,7 @@ PERSON_NOUNS = frozenset(
     porter student teacher child kid baby toddler teenager teen adult parent mother father mom mum dad grandparent
     grandmother grandfather grandma grandpa family friend couple guest resident neighbour neighbor roommate tenant
     customer client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
-    volunteer caregiver paramedic intern developer engineer member attendee participant crowd group team party
+    volunteer caregiver paramedic intern developer engineer member attendee participant crowd audience congregation group team party
     occupant user walker runner diner commuter spectator fan player athlete pilgrim inpatient outpatient therapist
     technician radiologist dentist chef cook waiter waitress barista boss professor pupil infant housemate sibling
     brother sister son daughter husband wife partner relative cousin uncle aunt courier smoker jogger pair

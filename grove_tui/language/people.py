@@ -17,6 +17,7 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.thing_modifiers import modifies_a_thing
+from grove_tui.language.role_things import role_thing
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.where_people import describes_a_place
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
@@ -61,6 +62,8 @@ class People:
         lem = s.lemma(i)
         if acting_as_verb(s, i):
             return False  # "..., then guides 5 passengers": a verb, no guide
+        if role_thing(s, i):
+            return True  # "the keynote speaker walks", "a session chair heads to ...": a role
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
@@ -285,6 +288,10 @@ class People:
                     # cooks in the kitchen" the second word is the verb
                     k += 1
                 return k
+            if s.w[k].pos == "ADV" and k + 1 < s.n and (
+                    s.w[k + 1].pos == "ADJ" or s.w[k + 1].dep == "amod"):
+                k += 1  # "a partially sighted woman", "a very frail man": the adverb says how, no one
+                continue
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
                 k += 1  # "tired old patients", "two lost children", "waiting visitors"
                 continue

@@ -10,6 +10,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.aspect_verbs import governed_verb
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
 
 if TYPE_CHECKING:
@@ -28,6 +29,7 @@ CHILD_NAME_WORDS = frozenset({"little", "baby", "young", "wee"})
 
 
 def _people_verb(s: Sentence, head: int) -> bool:
+    head = governed_verb(s, head)  # "Stan keeps following it": what he does is following
     verb = s.verb(head)
     return s.w[head].pos == "VERB" and verb not in lx.THING_VERBS and (
         verb in lx.INTENT_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or verb in lx.PEOPLE_GOING_VERBS)
