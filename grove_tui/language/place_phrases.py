@@ -25,6 +25,7 @@ from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import owned_by_name, owner_at
+from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -303,13 +304,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if not content:
             return None
         head = content[-1]
-        theirs = self.s.index.owned_by(owner)
-        rooms = {e.name for e in theirs if e.kind == "zone"}
-        # a thing in a room of theirs first ("the parents' bed": the bed of their bedroom, not the bedroom)
-        owned = [e for e in self.s.index.entries if e.kind not in ("zone", "door") and e.zone in rooms
-                 and head in e.tokens and head not in lx.GENERIC_PLACE_HEADS]
-        owned = owned or [e for e in theirs if (head in e.tokens or (head in lx.GENERIC_PLACE_HEADS and e.kind == "zone"))
-                          and (e.kind != "door" or head in lx.DOOR_WORDS)]  # "her ward" is no door of her station
+        # their room called so, else a thing in a room of theirs ("the parents' bed"), else any of theirs
+        owned = owned_places(self.s.index.entries, self.s.index.owned_by(owner), head)
         mine = [e for e in owned if match is not None and e.name == match.name]
         if len(owned) > 1 and not mine:
             owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door

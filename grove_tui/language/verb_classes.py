@@ -46,6 +46,8 @@ MORE_PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # Leaving phrases first: "make a run for it" is a whole phrase before the lexicon's "make a run".
 PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**LEAVING_PHRASES, **lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS}
 _AROUND = frozenset({"around", "about", "round"})
+# Words after "round" that say where to: "round to the bar", "round into the yard".
+_ON_TO = frozenset({"to", "into", "towards", "toward", "onto"})
 
 
 def base(s: Sentence, i: int) -> str:
@@ -87,6 +89,8 @@ def phrasal_intent(s: Sentence, i: int) -> tuple[tuple[str, ...], str] | None:
     first = {verb_lemma(s.low[i]), s.verb(i)}
     for phrase, intent in PHRASAL_INTENTS.items():
         if phrase[0] in first and tuple(s.low[i + 1:i + len(phrase)]) == phrase[1:]:
+            if phrase[-1] in _AROUND and i + len(phrase) < s.n and s.low[i + len(phrase)] in _ON_TO:
+                continue  # "walks round to the bar": going there the way round, not wandering about
             return phrase, intent
     return None
 
@@ -105,4 +109,5 @@ def around_after(s: Sentence, i: int) -> bool:
     k = i + 1
     while k < s.n and (s.w[k].pos == "ADV" and s.low[k] not in _AROUND or s.low[k] in lx.SLOW_WORDS | lx.FAST_WORDS):
         k += 1
-    return k < s.n and s.low[k] in _AROUND
+    # "wanders round to the toilets": round is the way to a place, not wandering about
+    return k < s.n and s.low[k] in _AROUND and not (k + 1 < s.n and s.low[k + 1] in _ON_TO)
