@@ -11,6 +11,7 @@ from typing import NamedTuple
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.model import Count
+from grove_tui.language.quantity_nouns import VAGUE_QUANTITY_RANGES, quantity_noun_at
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma
 
@@ -44,6 +45,8 @@ def number_at(s: Sentence, i: int) -> tuple[int, int] | None:
         total, current, j = 0, 0, i
         while j < s.n:
             x = low[j]
+            if x in lx.UNITS and j > i and low[j - 1] in lx.UNITS:
+                break  # "ten five-a-side regulars": a number word after a unit starts another word
             if x in lx.UNITS:
                 current += lx.UNITS[x]
             elif x in lx.TENS:
@@ -173,6 +176,9 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
         return _number_quantifier(s, num, approx)
     if low[k] == "both" and k + 1 < s.n and not s.is_punct(k + 1):
         return Quantifier(2, "exact", k + 1)  # "both guards", "both of them"
+    noun = quantity_noun_at(s, k)
+    if noun is not None:  # "a score of pupils": twenty; "a classful of children": a class
+        return Quantifier(noun.value, "exact" if noun.value else f"vague:{noun.word}", noun.end)
     if low[k] in ("a", "an") and k + 1 < s.n:
         nxt = low[k + 1]
         if nxt == "couple" and tuple(low[k + 2:k + 4]) == ("of", "dozen"):
@@ -232,7 +238,7 @@ def count_of(s: Sentence, q: Quantifier, key: str, default: tuple[int, int] = lx
         high = q.high or q.value
         return Count("vague", s.choose(q.value, high, key), q.value, high)
     word = q.kind.split(":", 1)[1]
-    low_, high_ = lx.VAGUE_RANGES.get(word, default)
+    low_, high_ = lx.VAGUE_RANGES.get(word) or VAGUE_QUANTITY_RANGES.get(word, default)
     return Count("vague", s.choose(low_, high_, key), low_, high_)
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.compound_people import chain_end
 from grove_tui.language.parser import known_word
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
@@ -105,14 +106,20 @@ class People:
     def multiword_end(self, i: int) -> bool:
         """Whether word i ends a person named by two words ("au pair", "station master")."""
         low = self.s.low
-        if low[i] not in _MULTIWORD_LAST:
+        if low[i] not in _MULTIWORD_LAST and self.s.lemma(i) not in _MULTIWORD_LAST:
             return False  # asked for every word the reader looks at: the common answer first
-        return any(i - len(p) + 1 >= 0 and tuple(low[i - len(p) + 1:i + 1]) == p for p in lx.MULTIWORD_PEOPLE)
+        return any(self._multiword_at(i - len(p) + 1, p) for p in lx.MULTIWORD_PEOPLE)
+
+    def _multiword_at(self, i: int, p: tuple[str, ...]) -> bool:
+        """Whether the words from i are p, the last one in the plural too ("two dinner ladies")."""
+        last = i + len(p) - 1
+        return (i >= 0 and last < self.s.n and tuple(self.s.low[i:last]) == p[:-1]
+                and p[-1] in (self.s.low[last], self.s.lemma(last)))
 
     def multiword_start(self, i: int) -> int | None:
         """The last word of a person named by two words starting at i, else None."""
         for p in lx.MULTIWORD_PEOPLE:
-            if tuple(self.s.low[i:i + len(p)]) == p:
+            if self._multiword_at(i, p):
                 return i + len(p) - 1
         return None
 
@@ -276,6 +283,10 @@ class People:
                 continue
             if person and self.collective_after(k):
                 return k + 1  # "the security team", "a student group": the collective heads the phrase
+            last = chain_end(s, k) if person else None
+            if last is not None and self.is_person_noun(last):
+                k = last  # "two coach company reps": the reps, of a coach company
+                continue
             if person and (self._modifies_next_noun(k) or modifies_a_thing(s, k, person_next=k + 1 < s.n and self.is_person_noun(k + 1))):
                 return None  # "the outpatient clinic", "security alert": a thing named after people
             if person or (s.lemma(k) in lx.IMPLIED_RANGES and k + 1 < s.n and s.low[k + 1] == "of"):
@@ -470,7 +481,7 @@ class People:
             near = near_person_noun(s.low[head]) or noun  # "nurzes" -> nurse, but "posters" and "pickers" stay
             noun = noun if agent_of_a_verb(s.low[head], near) else near
         if self.multiword_end(head):
-            return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if tuple(s.low[head - len(p) + 1:head + 1]) == p)
+            return next(" ".join(p) for p in lx.MULTIWORD_PEOPLE if self._multiword_at(head - len(p) + 1, p))
         if noun in ("member", "person") and head > 0 and self.is_person_noun(head - 1):
             noun = s.lemma(head - 1)  # "staff members", "family members"
         if noun in lx.GENERIC_PEOPLE or noun in lx.NUMBER_WORDS or noun in lx.PRONOUN_PEOPLE:
