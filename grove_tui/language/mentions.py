@@ -14,7 +14,7 @@ than that group (others_of; after a subset, the rest of its parent), "a few more
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.another_count import more_people
+from grove_tui.language.another_count import more_people, the_other_count
 from grove_tui.language.apposed_counts import class_named, collective_is_a_verb
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
@@ -423,7 +423,7 @@ class Mentions:
         if low[at] in ("someone", "somebody", "anyone", "anybody"):
             return Mention(at, at, s.w[at].text, "person", Count("exclusive" if exclusive else "exact", 1, 1, 1),
                            exclusive=exclusive)
-        if low[at] == "another":
+        if low[at] == "another" or the_other_count(s, at):  # "another 5", "the other 6": more of them
             return self._another(at, found)
         if num is not None:
             return self._counted_or_more(at, num, found, exclusive)

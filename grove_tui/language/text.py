@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_spelling import spell_out
 from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.tokens import lemma
@@ -88,6 +89,7 @@ def normalise(text: str) -> str:
     kept = _FOR_LAST.sub(_for_the_last, kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     kept = _JOINED.sub(lambda m: f"{m.group(1)}{'-' if m.group(1).lower() == 'after' else ''}{m.group(2)}", kept)
+    kept = commas_for_brackets(kept)  # "the school group (25 children) walks": one group of 25
     kept = _A_SIDE.sub(r"\1aside", kept)
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)

@@ -71,3 +71,24 @@ def test_guard_counts_that_already_held(read, world, prompt, label, value):
 def test_numbers_in_words_still_add_up(read, world, prompt, value):
     (g,) = read(world, prompt).groups
     assert g.count.value == value
+
+
+@pytest.mark.parametrize("world,prompt,label,kind,value", [
+    ("primary_school", "The school group (25 children) walks to the hall.", "child", "exact", 25),
+    ("museum", "A tour group (twenty tourists) waits in the lobby.", "tourist", "exact", 20),
+    ("hotel", "The wedding party (about 40 guests) walks to the bar.", "guest", "approximate", 40),
+])
+def test_a_count_in_brackets_is_the_group(read, world, prompt, label, kind, value):
+    (g,) = read(world, prompt).groups
+    assert (g.label, g.count.kind, g.count.value) == (label, kind, value)
+
+
+@pytest.mark.parametrize("world,prompt,value,intent,place", [
+    ("hotel", "Ten guests wait in the lobby; the other 6 are in the bar.", 6, "wait", "bar"),
+    ("hotel", "Ten guests wait in the lobby and the remaining 4 walk to the bar.", 4, "walk", "bar"),
+    ("mall", "Two guards stand at the entrance while the other 3 patrol the food court.", 3, "wander", "food_court"),
+])
+def test_the_other_n_are_more_of_them(read, world, prompt, value, intent, place):
+    first, other = read(world, prompt).groups
+    assert other.label == first.label and (other.count.kind, other.count.value) == ("exact", value)
+    assert other.intent == intent and place in (other.location, other.destination)
