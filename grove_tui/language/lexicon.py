@@ -472,7 +472,7 @@ SLOW_WORDS = frozenset("slowly slow leisurely stroll amble shuffle saunter dawdl
 TOGETHER_WORDS = frozenset({"together", "jointly"})
 TOGETHER_PHRASES = (("as", "a", "group"), ("in", "a", "group"), ("as", "a", "family"), ("side", "by", "side"),
                     ("in", "pairs"), ("in", "groups"), ("with", "each", "other"), ("as", "a", "team"),
-                    ("in", "a", "pack"), ("arm", "in", "arm"), ("hand", "in", "hand"))
+                    ("in", "a", "pack"), ("arm", "in", "arm"), ("hand", "in", "hand"), ("in", "twos"), ("in", "threes"))
 EVACUATION_CUES = frozenset("evacuate evacuation evacuating evacuates evacuated alarm flee escape drill alert".split())
 # Hazards that, named on their own ("Fire!", "Smoke in the kitchen!", "a gas leak"), make leaving an
 # evacuation; as the first word of a compound ("fire exit", "smoke detector") they only name a thing.

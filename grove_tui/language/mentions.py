@@ -19,6 +19,7 @@ from grove_tui.language.apposed_counts import class_named, collective_is_a_verb
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
+from grove_tui.language.family_members import with_members
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
@@ -88,7 +89,7 @@ class Mentions:
             if found and self._members_of_collective(found[-1], m):
                 # "the robot leads a tour ..., with about twelve tourists trailing behind it": the tour's people
                 before = found[-1]
-                before.count, before.label, before.apposition = m.count, m.label, (m.first, m.last)
+                before.count, before.label, before.apposition = *with_members(before, m), (m.first, m.last)
                 i = m.last + 1
                 continue
             if found and not found[-1].fronted and self._apposition(found[-1], m, len(found) - 1):

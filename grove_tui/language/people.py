@@ -12,6 +12,7 @@ from grove_tui.language.person_modifiers import compound_head_person, head_perso
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.thing_people import person_of_a_thing
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.sentence import Sentence
@@ -467,6 +468,8 @@ class People:
         s = self.s
         if head is None:
             return "person"
+        if (moved := person_of_a_thing(s.lemma(head))) is not None:
+            return moved  # "three prams are pushed": three parents
         title = next((lx.TITLES[s.low[k].rstrip(".")] for k in range(max(0, head - 3), head)
                       if self.titled_name(k) == head), None)
         if title is not None:

@@ -92,3 +92,33 @@ def test_the_other_n_are_more_of_them(read, world, prompt, value, intent, place)
     first, other = read(world, prompt).groups
     assert other.label == first.label and (other.count.kind, other.count.value) == ("exact", value)
     assert other.intent == intent and place in (other.location, other.destination)
+
+
+@pytest.mark.parametrize("world,prompt,kind,value", [
+    ("museum", "Visitors drift in twos and threes to the cafe.", "vague", None),
+    ("museum", "Thirty visitors drift in twos and threes to the cafe.", "exact", 30),
+    ("airport", "Passengers wander in threes towards gate 3.", "vague", None),
+])
+def test_in_twos_and_threes_is_small_parties_together(read, world, prompt, kind, value):
+    """Decided: like "in pairs" and "in groups of two or three", the people move in small parties
+    (together); the total is what is said (bare plural 3-6 when none)."""
+    (g,) = read(world, prompt).groups
+    assert g.together and g.count.kind == kind and (value is None or g.count.value == value)
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("mall", "A family with two kids walks to the food court.", 4),
+    ("museum", "A family with three children waits in the lobby.", 5),
+])
+def test_a_family_with_children_is_the_children_and_two_parents(read, world, prompt, value):
+    (g,) = read(world, prompt).groups
+    assert (g.label, g.count.kind, g.count.value, g.together) == ("family", "implied", value, True)
+
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("mall", "Three prams are pushed to the food court.", "parent", 3),
+    ("museum", "Two wheelchairs roll to the cafe.", "wheelchair user", 2),
+])
+def test_people_counted_by_what_they_move(read, world, prompt, label, value):
+    (g,) = read(world, prompt).groups
+    assert (g.label, g.count.value) == (label, value)
