@@ -41,8 +41,11 @@ _NUMBERED_BY = frozenset("gate desk platform room aisle till lane court ward bay
                          "table bed screen track pier dock berth stop zone area block wing unit".split())
 # "~30 pax", "~ 10 people": about so many
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
+# A number written in words takes "-ish" too ("forty-ish fans", "twelveish"): the words of tens and
+# teens only, so no other word ending "-ish" (a "tallish" man) is read as a count.
+_NUMBER_WORD = r"(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred|ten|eleven|twelve|[a-z]+teen)"
 # "30-ish visitors", "20ish ppl": about so many
-_ISH = re.compile(r"\b(\d+)\s*-?\s*ish\b", re.IGNORECASE)
+_ISH = re.compile(r"\b(\d+|" + _NUMBER_WORD + r")\s*-?\s*ish\b", re.IGNORECASE)
 
 # "swimmers x10", "nurses (x3)", "shoppers ×20": so many of them; "10x shoppers", "x3 porters": so many
 _TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(?![\w.])")
@@ -50,6 +53,8 @@ _TIMES_BEFORE = re.compile(r"(?<![\w.])(?:(\d+)\s?[x×]|[x×](\d+))\s+(?=[A-Za-z
 
 # "15+ guests", "20+ ppl": at least that many (not "2 nurses + 1 porter", which joins two groups)
 _PLUS_COUNT = re.compile(r"(?<![\w.])(\d+)\s*\+(?=\s*[A-Za-z])")
+# "ten-plus guests", "40-plus fans": at least so many, the word written out
+_PLUS_WORD = re.compile(r"\b(\d+|" + _NUMBER_WORD + r")\s*-\s*plus\b(?=\s+[A-Za-z])", re.IGNORECASE)
 # "n=20 pedestrians", "N = 8 agents": a count as a researcher writes it
 _N_EQUALS = re.compile(r"(?<![\w=])[nN]\s*=\s*(?=\d)")
 # "gate A1 -> security", "lobby → lifts": a route; a short place after a colon or comma is where they set off
@@ -81,7 +86,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = spell_out(kept)  # "walkin frm": chat's dropped g and short words
-    kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", kept))
+    kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _ISH.sub(r"about \1", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))

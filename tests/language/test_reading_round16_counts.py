@@ -122,3 +122,21 @@ def test_a_family_with_children_is_the_children_and_two_parents(read, world, pro
 def test_people_counted_by_what_they_move(read, world, prompt, label, value):
     (g,) = read(world, prompt).groups
     assert (g.label, g.count.value) == (label, value)
+
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("cinema", "Forty-ish film fans wait in the foyer.", "fan", 40),
+    ("museum", "Twenty ish tourists wait in the lobby.", "tourist", 20),
+])
+def test_a_number_word_with_ish_is_about_that_many(read, world, prompt, label, value):
+    (g,) = read(world, prompt).groups
+    assert (g.label, g.count.kind, g.count.value) == (label, "approximate", value)
+
+
+@pytest.mark.parametrize("world,prompt,label,value", [
+    ("hotel", "Ten-plus guests wait in the lobby.", "guest", 10),
+    ("cinema", "40-plus fans wait in the foyer.", "fan", 40),
+])
+def test_a_number_with_plus_written_out_is_at_least_that_many(read, world, prompt, label, value):
+    (g,) = read(world, prompt).groups
+    assert (g.label, g.count.kind, g.count.value) == (label, "approximate", value)
