@@ -96,10 +96,25 @@ def load_cases(path: str | Path) -> list[UnderstandingCase]:
                 robot=dict(expect["robot"]) if expect.get("robot") else None, robot_stated="robot" in expect))
         except (KeyError, TypeError, ValueError) as exc:
             raise UnderstandingError(f"{path}: cases[{index}]: missing or malformed {exc}") from None
+        _check_values(path, index, cases[-1])
     ids = [c.id for c in cases]
     if len(ids) != len(set(ids)):
         raise UnderstandingError(f"{path}: case ids repeat")
     return cases
+
+
+def _check_values(path: Path, index: int, case: UnderstandingCase) -> None:
+    """An intent or robot task the reader can never give is a typo in the cases, not a miss of the reader:
+    say so when the file loads, instead of scoring it as a wrong reading."""
+    from grove_tui.language.model import INTENTS, ROBOT_TASKS
+
+    for number, group in enumerate(case.groups):
+        if "intent" in group and group["intent"] not in INTENTS:
+            raise UnderstandingError(f"{path}: cases[{index}] ({case.id}): group {number}: intent "
+                                     f"{group['intent']!r} is not one of {', '.join(INTENTS)}")
+    if case.robot and "task" in case.robot and case.robot["task"] not in ROBOT_TASKS:
+        raise UnderstandingError(f"{path}: cases[{index}] ({case.id}): robot task {case.robot['task']!r} is not "
+                                 f"one of {', '.join(ROBOT_TASKS)}")
 
 
 # --- the reading -----------------------------------------------------------------------------------

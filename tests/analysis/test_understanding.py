@@ -5,6 +5,7 @@ from __future__ import annotations
 from helpers.paths import REPO
 import importlib.util
 import sys
+from pathlib import Path
 from collections import Counter
 
 import pytest
@@ -102,6 +103,26 @@ def test_load_cases_reports_bad_files(tmp_path):
     with pytest.raises(UnderstandingError, match=r"cases\[0\]") as info:
         load_cases(bad)
     assert info.value.exit_code == 2 and "build.py" in info.value.hint
+
+
+def test_an_intent_the_reader_cannot_give_is_refused_when_the_cases_load(tmp_path):
+    typo = tmp_path / "typo.yaml"
+    typo.write_text("cases:\n  - id: talkers\n    world: office\n    prompt: Three clerks have a natter.\n"
+                    "    expect:\n      groups:\n      - {count: {value: 3}, intent: talk}\n", encoding="utf-8")
+    with pytest.raises(UnderstandingError, match=r"talkers.*intent 'talk' is not one of walk, queue"):
+        load_cases(typo)
+    robot = tmp_path / "robot.yaml"
+    robot.write_text("cases:\n  - id: r\n    world: office\n    prompt: The robot dances.\n"
+                     "    expect:\n      groups: []\n      robot: {task: dance}\n", encoding="utf-8")
+    with pytest.raises(UnderstandingError, match="robot task 'dance'"):
+        load_cases(robot)
+
+
+def test_every_shipped_cases_file_loads():
+    files = sorted((Path(__file__).resolve().parents[2] / "eval" / "understanding").glob("*.yaml"))
+    assert len(files) >= 20
+    for path in files:
+        assert load_cases(path)
 
 
 # --- the scorer ------------------------------------------------------------------------------------
