@@ -40,6 +40,7 @@ from grove_tui.language.pairs import joined_pairs
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
+from grove_tui.language.passive_escort import to_active
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
@@ -69,6 +70,9 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     index = place_index(world)
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     words = as_verbs(parse(text))  # "the carers in the lounge leg it": a verb, not "lounge leg"
+    active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
+    if active is not None:
+        text, words = active, as_verbs(parse(active))
     corrected, corrections = correct_places(text, words, index)
     if corrections:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").

@@ -16,6 +16,7 @@ rather than a word:
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.activity_nouns import ACTIVITY_PHRASES
 from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
@@ -44,7 +45,8 @@ MORE_PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("stand", "about"): "wait", ("stand", "round"): "wait",
 }
 # Leaving phrases first: "make a run for it" is a whole phrase before the lexicon's "make a run".
-PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**LEAVING_PHRASES, **lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS}
+PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**LEAVING_PHRASES, **lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS,
+                                              **ACTIVITY_PHRASES}  # nouns of activity: "have a natter"
 _AROUND = frozenset({"around", "about", "round"})
 # Words after "round" that say where to: "round to the bar", "round into the yard".
 _ON_TO = frozenset({"to", "into", "towards", "toward", "onto"})
