@@ -6,7 +6,8 @@ this the word was only a place's, the sentence named nobody, and the unnamed cro
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.sentence import Sentence, verb_lemma
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
 
 _ARTICLES = frozenset({"the", "a", "an"})
 # Agent endings a trade's word has: "-er" (hairdresser, barber), "-ist" (florist, chemist), "-ent"
