@@ -23,9 +23,9 @@ _HER = frozenset({"mrs", "ms", "miss", "dame", "sister", "auntie"})
 _CLASS_WORDS = frozenset({"year", "class", "form", "grade"})
 
 
-def _owner_words(s: Sentence, at: int, pronoun: str) -> tuple[str, ...] | None:
-    """The words of the nearest owner named before word `at` in its sentence: ("mrs", "okafor") or
-    ("year", "1")."""
+def _owner_words(s: Sentence, at: int, pronoun: str) -> tuple[tuple[str, ...], ...] | None:
+    """The ways of saying the nearest owner named before word `at` in its sentence: (("mrs",
+    "okafor"),) or (("year", "1"),)."""
     for x in range(at - 1, -1, -1):
         if s.w[x].sentence != s.w[at].sentence:
             return None
@@ -33,9 +33,10 @@ def _owner_words(s: Sentence, at: int, pronoun: str) -> tuple[str, ...] | None:
         if title in lx.TITLES and x + 1 < at and s.w[x + 1].text[:1].isupper():
             if (pronoun == "her" and title in _HIS) or (pronoun == "his" and title in _HER):
                 continue
-            return (title, s.low[x + 1]) if pronoun != "their" else None
+            # As said and as the index keeps it, by lemmas ("Dr Hughes": "dr hughe")
+            return ((title, s.low[x + 1]), (title, s.lemma(x + 1))) if pronoun != "their" else None
         if s.low[x] in _CLASS_WORDS and x + 1 < at and s.low[x + 1][:1].isdigit() and pronoun == "their":
-            return s.low[x], s.low[x + 1]
+            return ((s.low[x], s.low[x + 1]),)
     return None
 
 
@@ -48,11 +49,11 @@ def owned_by_name(s: Sentence, at: int, k: int, lemmas: Sequence[str]) -> Decide
     if owner is None:
         return None
     head = lemmas[-1]
-    n = len(owner)
+    n = len(owner[0])
     rooms = [e for e in s.index.entries if e.kind == "zone" and head in e.tokens and any(
-        phrase[x:x + n] == owner for phrase in e.phrases for x in range(len(phrase) - n + 1))]
+        phrase[x:x + n] in owner for phrase in e.phrases for x in range(len(phrase) - n + 1))]
     if len(rooms) != 1:
         return None
     e = rooms[0]
     return (PlaceMatch(e.name, e.kind, e.zone, 1.0, True), 0.85,
-            f"'{' '.join(lemmas)}' of {' '.join(owner)}: {e.name}", ())
+            f"'{' '.join(lemmas)}' of {' '.join(owner[0])}: {e.name}", ())

@@ -101,8 +101,11 @@ def world_person_name(s: Sentence, title: int, j: int) -> bool:
     """Whether words title..j say a person the world names a place after ("Mrs Okafor" of "Mrs
     Okafor's room"): a name, though its word is a place's word too."""
     said = tuple(s.low[title:j + 1])
+    # The index keeps its phrases' lemmas, and a surname ending in "s" has a plural's ("Dr Hughes's
+    # room" is kept as "dr hughe room"): the name is compared as said and as lemmas.
+    lemmas = tuple(s.lemma(k) for k in range(title, j + 1))
     n = len(said)
-    return any(phrase[x:x + n] == said for e in s.index.entries for phrase in e.phrases
+    return any(phrase[x:x + n] in (said, lemmas) for e in s.index.entries for phrase in e.phrases
                for x in range(len(phrase) - n + 1))
 
 
