@@ -10,7 +10,7 @@ _TALK_NOUNS = ("chat", "natter", "gossip", "catch-up", "catchup", "chinwag", "wo
                "discussion", "chatter", "talk", "debate", "argument", "heart-to-heart", "banter", "yarn", "confab")
 # Nouns of a pause or refreshment after "have"/"take"/"grab": people stay where they are.
 _PAUSE_NOUNS = ("coffee", "cuppa", "tea", "drink", "break", "breather", "rest", "sit-down", "snack", "bite",
-                "sandwich", "smoke", "breather", "pause", "nap", "doze", "breakfast", "lunch", "breakfast")
+                "sandwich", "smoke", "pause", "nap", "doze", "breakfast", "lunch")
 # What may stand between the light verb and its noun ("a quick", "their").
 _BEFORE = (("a",), ("an",), ("a", "quick"), ("a", "little"), ("a", "good"), ("a", "long"), ("a", "short"),
            ("a", "bit", "of", "a"), ("their",), ("his",), ("her",), ("some",), ("a", "friendly"), ("a", "brief"))

@@ -22,7 +22,7 @@ _NOTICED = frozenset("fumes sparks burning blaze gas siren sirens flame flames".
 # Words after "smell of" / "smell" that make a smell a hazard ("a smell of burning", "smells of gas").
 _SMELLS = frozenset("burning smoke gas fumes fire petrol chemicals".split())
 # An alarm's verbs of sounding ("the alarm goes off", "alarms are sounding", "the fire alarm rings").
-_SOUNDING = frozenset("go goes went going gone sound sounds sounded sounding ring rings rang ringing ringing "
+_SOUNDING = frozenset("go goes went going gone sound sounds sounded sounding ring rings rang ringing "
                       "blare blares blaring trigger triggers triggered wail wails wailing".split())
 _ALARMS = frozenset({"alarm", "alarms", "siren", "sirens", "bell", "bells"})
 # Things that fail into a hazard ("a burst pipe", "a burst water main").
@@ -34,8 +34,8 @@ ROOM_HEADS = lx.GENERIC_PLACE_HEADS | lx.BUILDING_WORDS | lx.OUTDOOR_WORDS | lx.
     frozenset(w for group in lx.PLACE_SYNONYMS for w in group) | frozenset(
     "room kitchen office hall lab laboratory ward basement cellar loft attic garage shop store storeroom "
     "stockroom corridor lobby lounge canteen cafeteria cafe café toilet toilets bathroom "
-    "washroom library gym studio theatre chamber suite wing floor level plant depot warehouse yard ward gallery "
-    "classroom cinema bar pub restaurant shop pool court garden terrace balcony platform bay gate".split())
+    "washroom library gym studio theatre chamber suite wing floor level plant depot warehouse yard gallery "
+    "classroom cinema bar pub restaurant pool court garden terrace balcony platform bay gate".split())
 # Prepositions that say where a hazard comes from or is ("from the toaster", "in the bin").
 _CAUSE_PREPOSITIONS = frozenset("from in inside behind under near by at out of".split())
 
