@@ -480,12 +480,16 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         spot = group.location or group.start or group.destination
         if spot is not None:
             seconds = float(group.wait_seconds or CONVERSATION_SECONDS)
-            return _sequence(via + [DraftNode("Converse", {"target": spot, "duration": seconds})])
+            return _sequence(via + [DraftNode("Converse", {"target": spot, "duration": seconds})]
+                             + _onward_steps(group, world))
         base = "wait"
     if base == "wander":
         zone = world.zone_of_place(group.location or group.destination or group.start or "")
         if zone:
-            return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": float(group.wait_seconds or 0.0)})])
+            onward_steps = _onward_steps(group, world)
+            # wandering with somewhere to go after it ends ("..., then walk to the cafe"): a while, not for ever
+            seconds = float(group.wait_seconds or (DEFAULT_WAIT_SECONDS if onward_steps else 0.0))
+            return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": seconds})] + onward_steps)
         base = "wait"
     if base == "wait":
         if reacts_only(group):
@@ -494,12 +498,8 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         if place is not None:
             steps.append(DraftNode("GoTo", {"target": place}))
         steps.append(DraftNode("Wait", {"duration": float(group.wait_seconds or DEFAULT_WAIT_SECONDS)}))
-        onward = walks_on_to(group, world)
-        if onward is not None:
-            # "wait at goods in for 90 seconds and then walk to the canteen": the wait, then the walk
-            steps.append(DraftNode("FollowVelocityField", {"exit": onward}) if _is_exit(world, onward)
-                         else DraftNode("GoTo", {"target": onward}))
-        return _sequence(via + steps)
+        # "wait at goods in for 90 seconds and then walk to the canteen": the wait, then the walk
+        return _sequence(via + steps + _onward_steps(group, world))
     # walk, evacuate, follow
     destination = group.destination
     if base in ("walk", "evacuate") and destination and _is_exit(world, destination):
@@ -525,11 +525,21 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
 
 
+def _onward_steps(group: GroupReading, world: World) -> list[DraftNode]:
+    onward = walks_on_to(group, world)
+    if onward is None:
+        return []
+    return [DraftNode("FollowVelocityField", {"exit": onward}) if _is_exit(world, onward)
+            else DraftNode("GoTo", {"target": onward})]
+
+
 def walks_on_to(group: GroupReading, world: World) -> str | None:
-    """Where a waiting group goes once its wait is over: the reading's destination when it waits
-    somewhere else ("wait in the lobby for two minutes, then go to the pharmacy"; "wait at the pharmacy"
-    and "walk to the cafeteria and wait there" read the same place twice and go nowhere after)."""
-    if _base_intent(group) != "wait" or reacts_only(group) or not group.location or not group.destination:
+    """Where a group that waits, talks or wanders somewhere goes once that is over: the reading's
+    destination when it is somewhere else ("wait in the lobby for two minutes, then go to the pharmacy",
+    "chat in the rest room for a minute and then walk to bay 3"; "wait at the pharmacy" and "walk to the
+    cafeteria and wait there" read the same place twice and go nowhere after)."""
+    if _base_intent(group) not in ("wait", "converse", "wander") or reacts_only(group) or not group.location \
+            or not group.destination:
         return None
     if _is_exit(world, group.destination):
         # "... and then leave through the main entrance": out of the building, though the door is the lobby's
@@ -860,6 +870,10 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         claims.append(_reaction_claim(r, g, robot_seconds))
         if reacts_only(r):
             base = "none"
+            if r.robot_interaction == "follow" and r.destination:
+                # "follow the robot from the foyer to the computer lab": they arrive there behind it
+                claims.append(_place_claim("reach", r.destination, f"follow the robot to {r.destination}", world,
+                                           n, robot_seconds + timing.eta(r.destination)))
             zone = world.zone_of_place(r.location or "")
             if zone and not r.start:
                 # "a cleaner stands in the robot's way in the corridor": that is where they are at first
@@ -938,22 +952,12 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claim = Claim("stay", "where they are", f"wait in {g.spawn}", zone=g.spawn, place=g.spawn,
                           needs_seconds=(seconds or 10.0) + 5.0)
         claims.append(replace_seconds(claim, seconds))
-        onward = walks_on_to(r, world)
-        if onward is not None:
-            waited = seconds or DEFAULT_WAIT_SECONDS
-            if _is_exit(world, onward):
-                claims.append(Claim("evacuate", onward, f"then leave through {onward}", exits=(onward,),
-                                    needs_seconds=timing.evacuation_eta(n) + waited))
-            else:
-                claim = _place_claim("reach", onward, f"then walk to {onward}", world, n, timing.eta(onward) + waited)
-                if not _reaches(world, onward, _tree_places(g.tree)):
-                    claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
-                                  zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
-                claims.append(claim)
+        claims.extend(_onward_claims(r, g, world, timing, n, seconds or DEFAULT_WAIT_SECONDS))
     elif base == "wander":
         zone = world.zone_of_place(r.location or r.destination or r.start or "") or g.spawn
         claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
                             needs_seconds=timing.eta(zone) + 20.0))
+        claims.extend(_onward_claims(r, g, world, timing, n, float(r.wait_seconds or DEFAULT_WAIT_SECONDS)))
     elif base == "converse":
         spot = r.location or r.start or r.destination
         zone = world.zone_of_place(spot or "") or g.spawn
@@ -967,6 +971,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claims.append(Claim("converse", "talk together" + (f" in {zone}" if zone else ""),
                                 f"a conversation circle in {zone}", zone=zone, place=spot, partners=partners,
                                 needs_seconds=timing.eta(spot or zone) + 15.0))
+        claims.extend(_onward_claims(r, g, world, timing, n, float(r.wait_seconds or CONVERSATION_SECONDS)))
     if r.pace in ("slow", "fast"):
         normal = walking_speed
         low, high = (0.2, round(0.85 * normal, 2)) if r.pace == "slow" else (round(1.15 * normal, 2), 3.0)
@@ -980,6 +985,23 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         # "..., avoiding the lifts": never there, all the run long
         claims.append(_keep_out_claim(world, name, g.count))
     return claims
+
+
+def _onward_claims(r: GroupReading, g: PlannedGroup, world: World, timing: _Timing, n: int,
+                   waited: float) -> list[Claim]:
+    """Where the group goes once its wait, talk or wander is over ("..., then walk to bay 3"): reached
+    after it, or out through the exit it names."""
+    onward = walks_on_to(r, world)
+    if onward is None:
+        return []
+    if _is_exit(world, onward):
+        return [Claim("evacuate", onward, f"then leave through {onward}", exits=(onward,),
+                      needs_seconds=timing.evacuation_eta(n) + waited)]
+    claim = _place_claim("reach", onward, f"then walk to {onward}", world, n, timing.eta(onward) + waited)
+    if not _reaches(world, onward, _tree_places(g.tree)):
+        claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
+                      zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
+    return [claim]
 
 
 def places_kept_out(world: World, group: GroupReading) -> tuple[str, ...]:

@@ -54,3 +54,23 @@ def test_a_wait_then_leaving_through_a_door_of_the_same_room_leaves(tmp_path):
     checked = {c.kind: c for c in run.run(max(c.needs_seconds or 0.0 for c in claims.values())).groups[0].claims}
     assert checked["stay"].status == HOLDS, checked["stay"].evidence
     assert checked["evacuate"].status == HOLDS, checked["evacuate"].evidence
+
+
+BUS_STATION = "eval/understanding/worlds/bus_station.yaml"
+
+
+def test_a_chat_then_a_walk_talks_and_then_walks_on(tmp_path):
+    # the talk and its minute were kept, the walk to bay 3 dropped and never claimed: the drivers stayed in
+    # the rest room all run long under a report of nothing but ✓
+    sentence = "two drivers chat in the drivers rest room for a minute and then walk to bay 3"
+    model_tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "drivers_rest_room"}),
+                                            DraftNode("Wait", {"duration": 60.0})))
+    run = plan_by_hand(load_world(BUS_STATION), "normal", sentence,
+                       (DraftGroup("drivers", 2, "drivers_rest_room", model_tree),), tmp_path / "b")
+    for tree in run.op.trees.values():
+        assert [e.id for e in tree.nodes() if e.id in ("Converse", "GoTo")][-2:] == ["Converse", "GoTo"]
+    claims = {c.kind: c for c in run.report.groups[0].claims}
+    assert claims["reach"].place == "bay_3"
+    checked = {c.kind: c for c in run.run(max(c.needs_seconds or 0.0 for c in claims.values())).groups[0].claims}
+    assert checked["converse"].status == HOLDS, checked["converse"].evidence
+    assert checked["reach"].status == HOLDS, checked["reach"].evidence
