@@ -312,12 +312,19 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
             notes.append(f"the robot goes to {guided}, the exit of the people it guides (its clause read "
                          f"{asked.destination})")
         goal = _place_point(world, grid, guided or asked.destination)
+    led = _followers_way(reading) if task == "cross" and (asked is None or not (asked.start or asked.destination)) \
+        else None
+    if goal is None and led is not None and led[1] is not None:
+        # "three students follow the robot from the foyer to the computer lab": the robot leads them there
+        goal = _place_point(world, grid, led[1])
     start: Point | None = None
     if request.start is not None:
         start = _request_point(world, grid, request.start, "start", picker)
         picker.check(start, "the start you gave")
     elif asked is not None and asked.start:
         start = picker.pick(asked.start, towards=None, away_from=goal)
+    elif led is not None and led[0] is not None:
+        start = picker.pick(led[0], towards=None, away_from=goal)
     elif asked is not None and task == "wait" and (asked.location or asked.destination):
         start = picker.pick(asked.location or asked.destination or "", towards=None)
     elif asked is not None and asked.via and task in ("cross", "patrol"):
@@ -347,6 +354,15 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
     return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
+
+
+def _followers_way(reading: PromptReading | None) -> tuple[str | None, str | None] | None:
+    """Where people who follow the robot say it leads them: (from, to) of the first follower group that
+    names a place to go, None when none does."""
+    for group in reading.groups if reading is not None else ():
+        if group.robot_interaction == "follow" and group.destination:
+            return group.start, group.destination
+    return None
 
 
 def _through(world: World, path: np.ndarray, via: Sequence[str], rooms: Sequence[str], picker: _StartPicker,
