@@ -955,9 +955,12 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         claims.extend(_onward_claims(r, g, world, timing, n, seconds or DEFAULT_WAIT_SECONDS))
     elif base == "wander":
         zone = world.zone_of_place(r.location or r.destination or r.start or "") or g.spawn
-        claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
-                            needs_seconds=timing.eta(zone) + 20.0))
-        claims.extend(_onward_claims(r, g, world, timing, n, float(r.wait_seconds or DEFAULT_WAIT_SECONDS)))
+        onward = _onward_claims(r, g, world, timing, n, float(r.wait_seconds or DEFAULT_WAIT_SECONDS))
+        # a wander with somewhere to go after it lasts a while (the tree's), judged over that while
+        seconds = float(r.wait_seconds) if r.wait_seconds else DEFAULT_WAIT_SECONDS if onward else None
+        claims.append(replace_seconds(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
+                                            needs_seconds=timing.eta(zone) + max(20.0, seconds or 0.0)), seconds))
+        claims.extend(onward)
     elif base == "converse":
         spot = r.location or r.start or r.destination
         zone = world.zone_of_place(spot or "") or g.spawn
@@ -1001,7 +1004,8 @@ def _onward_claims(r: GroupReading, g: PlannedGroup, world: World, timing: _Timi
     if not _reaches(world, onward, _tree_places(g.tree)):
         claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
                       zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
-    return [claim]
+    # the walk comes after the wait: an arrival before `waited` seconds is a doorway's margin, not the walk
+    return [replace(claim, seconds=waited) if claim.status != FAILS else claim]
 
 
 def places_kept_out(world: World, group: GroupReading) -> tuple[str, ...]:
