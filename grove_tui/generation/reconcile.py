@@ -806,6 +806,16 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
     robot_row = _robot_row(asked_robot, robot, world, agents)
+    leader_of = next((g for g in reading.groups if g.robot_interaction == "follow" and g.destination), None)
+    if asked_robot is None and robot_row is not None and robot is not None and leader_of is not None \
+            and getattr(robot, "task", "cross") == "cross" and leader_of.destination:
+        # "three students follow the robot from the foyer to the computer lab": planning drove it there
+        seconds = _robot_seconds(robot)
+        robot_row = replace(robot_row, task="cross", text=leader_of.text,
+                            plan=robot_row.plan.replace(" (the sentence asks nothing of it)", ""),
+                            claims=(_place_claim("robot_reach", leader_of.destination,
+                                                 f"lead them to {leader_of.destination}", world, 1,
+                                                 1.3 * seconds + 10.0),))
     if robot_row is not None:
         questions += robot_row.unsure
     return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),

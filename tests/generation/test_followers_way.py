@@ -24,6 +24,10 @@ def test_the_robot_leads_its_followers_where_they_follow_it_and_they_arrive(tmp_
     assert library.zone_at(*robot.goal).name == "computer_lab"
     claims = {c.kind: c for c in run.report.groups[0].claims}
     assert claims["reach"].place == "computer_lab"
-    checked = {c.kind: c for c in run.run(claims["reach"].needs_seconds or 120.0).groups[0].claims}
+    report = run.run(claims["reach"].needs_seconds or 120.0)
+    checked = {c.kind: c for c in report.groups[0].claims}
+    assert report.robot.claims[0].status == HOLDS, report.robot.claims[0].evidence
     assert checked["robot_follow"].status == HOLDS, checked["robot_follow"].evidence
     assert checked["reach"].status == HOLDS, checked["reach"].evidence
+    (robot_reach,) = run.report.robot.claims
+    assert robot_reach.kind == "robot_reach" and robot_reach.place == "computer_lab"
