@@ -202,7 +202,8 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
                                                                                                       "walk"):
             # "the staff evacuate while the robot guides them to the exit": behind the robot, as people who
             # follow it are, for as long as it drives (planning sets how long), then out on their own
-            tree, guided = _prepend(DraftNode(*guided_follow(GUIDED_PLACEHOLDER)), tree), True
+            node, ports = guided_follow(GUIDED_PLACEHOLDER)
+            tree, guided = _prepend(DraftNode(node, {**ports}), tree), True
             added.append("follows the robot that guides them, then walks out")
         leader = _leader_index(reading, group)
         if leader is not None and _base_intent(group) == "follow" and not evacuation_field and \
