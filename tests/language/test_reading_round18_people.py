@@ -54,3 +54,30 @@ def test_a_perceiver_who_also_moves_is_a_group(read):
 def test_kin_listed_together_are_one_family(read, world, prompt, count):
     (g,) = read(world, prompt).groups
     assert (g.count.kind, g.count.value) == ("exact", count) and g.together
+
+
+@pytest.mark.parametrize("world,prompt,low,high", [
+    ("mall", "a dozen or two teens walk to the food court", 12, 24),
+    ("museum", "One or two dozen pupils wait in the great hall", 12, 24),
+    ("station", "two or three hundred fans wait on the concourse", 200, 300),
+    ("hospital", "a handful or so of porters wait in the entrance lobby", 3, 5),
+])
+def test_approximate_ranges(read, world, prompt, low, high):
+    (g,) = read(world, prompt).groups
+    assert (g.count.low, g.count.high) == (low, high) and low <= g.count.value <= high
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("museum", "Once the tour is over, Mr Evans walks to the cafe", "man"),
+    ("museum", "When the tour ends the guide walks to the staff room", "guide"),
+    ("mall", "As soon as the party is over, the guests walk to the food court", "guest"),
+    ("primary_school", "When the lesson is finished, the teacher goes to the staff room", "teacher"),
+])
+def test_a_time_clause_about_an_activity_names_nobody(read, world, prompt, label):
+    (g,) = read(world, prompt).groups
+    assert g.label == label
+
+
+def test_a_tour_group_that_arrives_is_people(read):
+    groups = read("museum", "When the tour group arrives, the guide walks to the staff room").groups
+    assert [g.label for g in groups] == ["tour", "guide"]
