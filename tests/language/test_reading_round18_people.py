@@ -71,7 +71,7 @@ def test_approximate_ranges(read, world, prompt, low, high):
     ("museum", "Once the tour is over, Mr Evans walks to the cafe", "man"),
     ("museum", "When the tour ends the guide walks to the staff room", "guide"),
     ("mall", "As soon as the party is over, the guests walk to the food court", "guest"),
-    ("primary_school", "When the lesson is finished, the teacher goes to the staff room", "teacher"),
+    ("primary_school", "When the class is over, the teacher goes to the staff room", "teacher"),
 ])
 def test_a_time_clause_about_an_activity_names_nobody(read, world, prompt, label):
     (g,) = read(world, prompt).groups
@@ -81,3 +81,30 @@ def test_a_time_clause_about_an_activity_names_nobody(read, world, prompt, label
 def test_a_tour_group_that_arrives_is_people(read):
     groups = read("museum", "When the tour group arrives, the guide walks to the staff room").groups
     assert [g.label for g in groups] == ["tour", "guide"]
+
+
+@pytest.mark.parametrize("world,prompt,count", [
+    ("station", "Three commuters (all men) wait at the gateline", 3),
+    ("station", "two guards (both women) walk to the cafe", 2),
+    ("hospital", "Six nurses (all women) chat in the staff room", 6),
+    ("museum", "Five tourists, all Germans, wait in the great hall", 5),
+])
+def test_an_aside_about_a_group_is_no_group(read, world, prompt, count):
+    (g,) = read(world, prompt).groups
+    assert g.count.value == count
+
+
+@pytest.mark.parametrize("world,prompt,label,count", [
+    ("hospital", "two wheelchairs roll from the entrance lobby to radiology", "wheelchair user", 2),
+    ("hospital", "A pushchair goes to the pharmacy", "parent", 1),
+    ("primary_school", "A wheelchair rolls to the school hall", "wheelchair user", 1),
+    ("hospital", "A stroller heads to the cafeteria", "parent", 1),
+])
+def test_people_named_by_their_wheelchair_or_pram(read, world, prompt, label, count):
+    (g,) = read(world, prompt).groups
+    assert (g.label, g.count.value) == (label, count)
+
+
+def test_a_pram_with_its_pusher_is_no_second_person(read):
+    (g,) = read("hospital", "A mum with a pram walks to the pharmacy").groups
+    assert g.label == "mum" and g.count.value == 1
