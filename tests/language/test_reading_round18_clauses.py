@@ -1,0 +1,32 @@
+"""Round 18 of the reader's clauses and places: leaving for the day is a walk, not an evacuation;
+a hazard said as an event ("a pipe bursts") makes leaving an evacuation; laps and circuits of a
+place are wandering there; "outside X" is the zone X's door opens to; running for a train or a
+flight goes where it is boarded; people who follow the robot somewhere give the robot that task."""
+
+import pytest
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("mall", "Three teenagers make themselves scarce from the bookshop.", "bookshop"),
+    ("mall", "Two staff knock off for the day from the toy store.", "toy_store"),
+    ("mall", "The cleaners in the food court call it a day.", "food_court"),
+    ("office", "The developers in the open plan office knock off early.", "open_plan_office"),
+    ("office", "Two interns make themselves scarce from the kitchen.", "kitchen"),
+    ("museum", "The guides clock off and leave the great hall.", "great_hall"),
+])
+def test_leaving_for_the_day_is_a_walk_away(read, world, prompt, start):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.start == start and g.destination is None
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("hospital", "A pipe bursts in the pharmacy and the staff leave.", "pharmacy"),
+    ("hospital", "The sprinklers go off in the staff room and everyone leaves.", "staff_room"),
+    ("hospital", "A ceiling panel falls in the main waiting room and ten patients hurry out.", "main_waiting_room"),
+    ("museum", "The roof starts leaking in the great hall so the tourists leave.", "great_hall"),
+    ("museum", "When a water pipe bursts in the cafe, the visitors there leave.", "cafe"),
+    ("library", "Water pours through the ceiling of the reading room and the readers in there leave.", "reading_room"),
+])
+def test_leaving_after_a_hazard_said_as_an_event_is_an_evacuation(read, world, prompt, start):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "evacuate" and g.start == start
