@@ -1,7 +1,7 @@
 """Round 18 of the reader's clauses and places: leaving for the day is a walk, not an evacuation;
 a hazard said as an event ("a pipe bursts") makes leaving an evacuation; laps and circuits of a
-place are wandering there; "outside X" is the zone X's door opens to; running for a train or a
-flight goes where it is boarded; people who follow the robot somewhere give the robot that task."""
+place are wandering there; running for a train or a
+flight goes where it is boarded."""
 
 import pytest
 
@@ -30,3 +30,28 @@ def test_leaving_for_the_day_is_a_walk_away(read, world, prompt, start):
 def test_leaving_after_a_hazard_said_as_an_event_is_an_evacuation(read, world, prompt, start):
     (g,) = read(world, prompt).groups
     assert g.intent == "evacuate" and g.start == start
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("mall", "A boy does laps of the main atrium.", "main_atrium"),
+    ("mall", "Two joggers run circuits of the west mall.", "west_mall"),
+    ("airport", "A man walks circuits of the arrivals hall.", "arrivals_hall"),
+    ("airport", "A bored child does a lap of the duty free.", "duty_free"),
+    ("library", "An old man walks slow laps of the reading room.", "reading_room"),
+])
+def test_laps_and_circuits_of_a_place_are_wandering_there(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "wander" and g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("station", "Two passengers run for the train.", "platform_"),
+    ("airport", "A late couple dash from duty free for their flight.", "gate_"),
+    ("airport", "Four passengers run for their flight.", "gate_"),
+    ("bus_station", "A man sprints for the coach from the waiting room.", "bay_"),
+    ("bus_station", "Two students run for the bus.", "bay_"),
+    ("ferry_terminal", "A family rushes for the ferry.", "boarding_area"),
+])
+def test_running_for_a_conveyance_goes_where_it_is_boarded(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.pace == "fast" and (g.destination or "").startswith(destination)
