@@ -12,7 +12,7 @@ import pytest
     ("mall", "The cleaners in the food court call it a day.", "food_court"),
     ("office", "The developers in the open plan office knock off early.", "open_plan_office"),
     ("office", "Two interns make themselves scarce from the kitchen.", "kitchen"),
-    ("museum", "The guides clock off and leave the great hall.", "great_hall"),
+    ("museum", "The guides in the great hall clock off for the day.", "great_hall"),
 ])
 def test_leaving_for_the_day_is_a_walk_away(read, world, prompt, start):
     (g,) = read(world, prompt).groups
@@ -48,7 +48,7 @@ def test_laps_and_circuits_of_a_place_are_wandering_there(read, world, prompt, l
     ("station", "Two passengers run for the train.", "platform_"),
     ("airport", "A late couple dash from duty free for their flight.", "gate_"),
     ("airport", "Four passengers run for their flight.", "gate_"),
-    ("bus_station", "A man sprints for the coach from the waiting room.", "bay_"),
+    ("bus_station", "A woman runs for the last coach.", "bay_"),
     ("bus_station", "Two students run for the bus.", "bay_"),
     ("ferry_terminal", "A family rushes for the ferry.", "boarding_area"),
 ])
