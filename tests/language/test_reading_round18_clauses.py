@@ -55,3 +55,32 @@ def test_laps_and_circuits_of_a_place_are_wandering_there(read, world, prompt, l
 def test_running_for_a_conveyance_goes_where_it_is_boarded(read, world, prompt, destination):
     (g,) = read(world, prompt).groups
     assert g.intent == "walk" and g.pace == "fast" and (g.destination or "").startswith(destination)
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("library", "Two children follow the robot to the cafe.", "cafe"),
+    ("mall", "A curious child trails the robot into the food court.", "food_court"),
+    ("mall", "Three students follow the robot out into the food court.", "food_court"),
+    ("hospital", "A curious child follows the robot into the cafeteria.", "cafeteria"),
+])
+def test_people_who_follow_the_robot_somewhere_make_it_lead_there(read, world, prompt, destination):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.robot_interaction == "follow" and g.destination == destination
+    assert r.robot is not None and (r.robot.task, r.robot.destination) == ("cross", destination)
+
+
+def test_the_robot_followed_nowhere_said_is_given_no_task(read):
+    assert read("hospital", "Two visitors follow the robot.").robot is None
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "Two visitors wait outside the pharmacy.", "main_corridor"),
+    ("hospital", "A porter stands in front of the staff room.", "central_corridor"),
+    ("station", "A man waits outside the newsagent.", "concourse"),
+    ("station", "Two teenagers loiter in front of the cafe.", "concourse"),
+    ("hospital", "Two visitors wait inside the pharmacy.", "pharmacy"),
+])
+def test_outside_a_room_is_the_zone_its_door_opens_to(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.location == location
