@@ -21,6 +21,7 @@ from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
 from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
+from grove_tui.language.place_outside import outside_zone
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
@@ -222,6 +223,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
+        if (out := outside_zone(s, at, match)) is not None:  # "outside the pharmacy": the zone its door opens to
+            match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
                                   out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
 

@@ -33,9 +33,14 @@ MEANS_WORDS = frozenset("lift lifts elevators escalators stair travelators shutt
 WAY_TAKING_VERBS = lx.ROUTE_OBJECT_VERBS | frozenset({"ride", "catch"})
 # Phrasal verbs of an activity the lexicon's phrases lack; the first word is a verb's base form.
 _OWN = ("their", "his", "her", "my", "our")
+# Verbs that go round a place by laps or circuits ("does laps of", "walks circuits of", "jogs a loop of").
+_LAPPING = ("do", "walk", "run", "jog", "swim", "cycle", "complete", "make", "pace", "lap")
+_HOW_LAPS = ("slow", "quick", "brisk", "gentle", "leisurely", "endless", "several", "more", "two", "three", "ten")
 MORE_PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
-    **{("do", *what): "wander" for what in (("laps",), ("a", "lap"), ("lengths",), ("a", "length"), ("circuits",),
-                                            ("a", "circuit"), ("a", "loop"), ("loops",), ("a", "lap", "of"))},
+    **{(verb, *what): "wander" for verb in _LAPPING for what in (
+        ("laps",), ("a", "lap"), ("lengths",), ("a", "length"), ("circuits",), ("a", "circuit"), ("a", "loop"),
+        ("loops",), ("a", "lap", "of"), ("a", "few", "laps"), ("a", "couple", "of", "laps"), ("some", "laps"),
+        *((how, rounds) for how in _HOW_LAPS for rounds in ("laps", "circuits", "loops", "lengths")))},
     **{("stretch", own, "legs"): "wander" for own in _OWN},
     ("have", "a", "wander"): "wander", ("have", "a", "stroll"): "wander", ("have", "a", "look", "round"): "wander",
     ("have", "a", "look", "around"): "wander", ("look", "round"): "wander", ("walk", "round"): "wander",
