@@ -21,6 +21,7 @@ from grove_tui.language.model import FieldConfidence, RobotReading
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
 from grove_tui.language.sequences import robot_sequel
 from grove_tui.language.tokens import verb_lemma
@@ -109,8 +110,8 @@ class RobotClauses:
                    or self._after_fronted_adverbial(i, first))
         if command:
             first = before
-        elif not subject:
-            return None
+        elif not subject or goes_after_robot(s, first):
+            return None  # "two kids trot after the robot round the shop": the robot is what they go after
         j = i + 1
         while j < s.n and (s.w[j].pos == "ADV" or s.w[j].tag == "MD" or low[j] in ("then", "also", "now", "first")) \
                 and not s.is_punct(j):
