@@ -116,3 +116,18 @@ def test_what_the_moved_person_rides_is_no_unknown_place(read, world, prompt):
 
 def test_fetching_a_thing_makes_no_second_group(read):
     assert len(read("hospital", "A nurse fetches a coffee from the cafe.").groups) == 1
+
+
+# ---- D. what the robot has to do is its task ------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,task,place", [
+    ("hospital", "The robot needs to wait by the pharmacy while two nurses chat at reception.", "wait", "pharmacy"),
+    ("museum", "The robot has to patrol the great hall; three guards stand at the entrance.", "patrol", "great_hall"),
+    ("mall", "The robot is supposed to wait outside the cinema while ten teens hang around the food court.", "wait",
+     "cinema_lobby"),
+    ("station", "robot gotta wait @ ticket office, 5 ppl on platform 1", "wait", "ticket_office"),
+    ("hospital", "Tell the robot to wait by the pharmacy.", "wait", "pharmacy"),
+])
+def test_what_the_robot_has_to_do_is_its_task(read, world, prompt, task, place):
+    robot = read(world, prompt).robot
+    assert robot is not None and (robot.task, robot.location) == (task, place)
