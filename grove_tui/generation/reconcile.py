@@ -33,7 +33,7 @@ from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTION
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
-from grove_tui.generation.guided import guided_exit, guided_index
+from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -98,6 +98,7 @@ class ReconciledGroup:
     added: list[str] = field(default_factory=list)  # what the tree does beyond the reading, in words
     reacts_only: bool = False  # its whole activity is reacting to the robot: it starts where the robot passes
     leader_index: int | None = None  # reading index of the group it follows ("follow their guide")
+    guided: bool = False  # the robot guides it ("... while the robot guides them to the exit"): behind it, then out
 
 
 def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
@@ -196,6 +197,14 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
         reacts_only = False
         if group.robot_interaction:
             tree, reacts_only = with_robot_interaction(tree, group)
+        guided = False
+        if index == guided_index(reading) and not group.robot_interaction and _base_intent(group) in ("evacuate",
+                                                                                                      "walk"):
+            # "the staff evacuate while the robot guides them to the exit": behind the robot, as people who
+            # follow it are, for as long as it drives (planning sets how long), then out on their own
+            node, ports = guided_follow(GUIDED_PLACEHOLDER)
+            tree, guided = _prepend(DraftNode(node, {**ports}), tree), True
+            added.append("follows the robot that guides them, then walks out")
         leader = _leader_index(reading, group)
         if leader is not None and _base_intent(group) == "follow" and not evacuation_field and \
                 not any(n.node == "FollowAgent" for n in tree.walk()):
@@ -207,12 +216,13 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
             notes.append(f"group '{label}': walks together as the prompt says")
         party = group.count.party_size if group.count.parties and (group.count.party_size or 0) > 1 else None
         out.append(ReconciledGroup(index, label, count, spawn, tree, behavior, party,
-                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader))
+                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader, guided))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
     return _behind_their_leader(_at_the_followers_pace(out, reading), world)
 
 
+GUIDED_PLACEHOLDER = 60.0  # seconds behind the robot until planning knows its drive (guided.guided_seconds)
 LEADER_PACE = 0.85  # a guide with a group behind walks at the group's pace, slower than alone
 
 
@@ -789,6 +799,9 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
             # "the robot guides them to the exit": that they went with it is asked too, and measured
             claims.append(Claim("robot_follow", "go with the robot, which guides them", "walk where the robot leads",
                                 distance=REACTION_DISTANCE["follow"], share=0.9, needs_seconds=robot_seconds + 10.0))
+            # they leave at the robot's pace: out once it is there, not at their own
+            claims = [replace(c, needs_seconds=max(c.needs_seconds, robot_seconds + 20.0))
+                      if c.kind in ("evacuate", "reach") and c.needs_seconds is not None else c for c in claims]
         out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     asked_robot = reading.robot
