@@ -450,7 +450,8 @@ for _verb in "crowd gather cluster swarm huddle flock throng mob".split():
 ROBOT_APPROACH_TAILS = (("up", "to"), ("over", "to"), ("towards",), ("toward",), ("closer", "to"), ("right", "up", "to"))
 # Words right after the robot that name an interaction ("stand in the robot's way").
 ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
-                                                   ("’s", "way"): "block", ("’s", "path"): "block"}
+                                                   ("’s", "way"): "block", ("’s", "path"): "block",
+                                                   ("'s", "route"): "block", ("’s", "route"): "block"}
 # Feelings that name a reaction when the robot is in the same clause ("scared of the robot").
 ROBOT_FEELINGS: dict[str, str] = {
     "curious": "approach", "curiosity": "approach", "interested": "approach", "fascinated": "approach",

@@ -16,6 +16,7 @@ from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
 from grove_tui.language.trader_people import trader_subject
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
+from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
@@ -86,6 +87,8 @@ class People:
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i):
             return True
+        if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i):
+            return True  # "a keeper wheels a lady ...", "pushes an elderly gent on a gurney"
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
         # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).
