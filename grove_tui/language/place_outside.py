@@ -17,9 +17,11 @@ def _outside_said(s: Sentence, at: int) -> bool:
 
 def zone_outside(index: PlaceIndex, zone: str) -> str | None:
     """The zone the room's widest door opens to (its own doors, then other rooms' doors into it)."""
-    doors = [(d.width, z.name == zone, d.leads_to if z.name == zone else z.name) for z in index.world.zones
-             for d in z.doors if not d.exit and (d.leads_to == zone or z.name == zone)]
-    doors = [d for d in doors if d[2] and d[2] != zone]
+    doors: list[tuple[float, bool, str]] = [
+        (float(d.width), z.name == zone, str(d.leads_to if z.name == zone else z.name))
+        for z in index.world.zones for d in z.doors
+        if not d.exit and (d.leads_to == zone or z.name == zone) and (d.leads_to if z.name == zone else z.name)]
+    doors = [d for d in doors if d[2] != zone]
     if not doors:
         return None
     return max(doors)[2]
