@@ -49,3 +49,19 @@ def test_chat_lists_give_one_group_per_part(read, world, prompt, first, second):
     groups = read(world, prompt).groups
     assert [(g.count.value, g.location) for g in groups] == [first, second]
     assert groups[0].count.kind == ("approximate" if "like" in prompt else "exact")
+
+
+# ---- 5. kin and apposed counts ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("warehouse", "Twin toddlers wait in reception.", 2),
+    ("office", "Near the kitchen, the twin interns chat.", 2),
+    ("warehouse", "The triplets wait in the canteen.", 3),
+    ("office", "Triplets play in the boardroom.", 3),
+    ("warehouse", "The night shift, six strong, file out of the canteen into the locker room.", 6),
+    ("office", "The sales team, eight-strong, walk from reception to the boardroom.", 8),
+])
+def test_kin_words_and_apposed_strength_give_the_count(read, world, prompt, value):
+    groups = read(world, prompt).groups
+    assert len(groups) == 1 and groups[0].count.value == value
