@@ -65,3 +65,21 @@ def test_chat_lists_give_one_group_per_part(read, world, prompt, first, second):
 def test_kin_words_and_apposed_strength_give_the_count(read, world, prompt, value):
     groups = read(world, prompt).groups
     assert len(groups) == 1 and groups[0].count.value == value
+
+
+# ---- 4. an imperative's second group -----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("world,prompt,first,second", [
+    ("warehouse", "Post three guards at reception and one more by the locker room.",
+     (3, "reception"), (1, "locker_room")),
+    ("warehouse", "Station a trio of guards at reception and two more at the dispatch bay.",
+     (3, "reception"), (2, "dispatch_bay")),
+    ("hospital", "Post a pair of porters at the entrance lobby and one more by the pharmacy.",
+     (2, "entrance_lobby"), (1, "pharmacy")),
+    ("hospital", "Station four security guards in the cafeteria and two more at the pharmacy.",
+     (4, "cafeteria"), (2, "pharmacy")),
+])
+def test_a_placing_imperative_gives_both_groups(read, world, prompt, first, second):
+    groups = read(world, prompt).groups
+    assert [(g.count.value, g.location) for g in groups] == [first, second]
