@@ -1,6 +1,8 @@
 """Verb, list and chat classes of round 18, with sentences of their own over several worlds (none
 from the understanding sets): verbs of going read as waiting or wandering ("make for", "takes her
-lunch to", "strolls over to" after another verb); ..."""
+lunch to", "strolls over to" after another verb, "mooch around"); negated alternatives after them;
+chat lists (" n ", "like 40", "brk", groups typed one after the other); placing imperatives ("Post
+three guards at X and one more by Y"); kin and apposed counts ("twin toddlers", ", six strong,")."""
 
 from __future__ import annotations
 
@@ -83,3 +85,19 @@ def test_kin_words_and_apposed_strength_give_the_count(read, world, prompt, valu
 def test_a_placing_imperative_gives_both_groups(read, world, prompt, first, second):
     groups = read(world, prompt).groups
     assert [(g.count.value, g.location) for g in groups] == [first, second]
+
+
+# ---- 2. negated alternatives: the first place is where they go ------------------------------------
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("zoo", "Nine children make for the penguin beach, not the reptile house, which is shut.", "penguin_beach"),
+    ("zoo", "A keeper takes her lunch to the cafe rather than the keepers yard.", "cafe"),
+    ("hospital", "Eight visitors make for the cafeteria, not ward c, which is closed.", "cafeteria"),
+    ("hospital", "Two nurses make for the staff room instead of the cafeteria.", "staff_room"),
+])
+def test_a_negated_alternative_is_not_where_they_go(read, world, prompt, destination):
+    reading = read(world, prompt)
+    g = reading.groups[0]
+    assert len(reading.groups) == 1 and (g.intent, g.destination) == ("walk", destination)
+    assert reading.unknown_places == ()
