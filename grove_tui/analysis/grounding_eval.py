@@ -27,7 +27,8 @@ Suite format (one case):
 
 Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a place or a list of places);
 converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); follow (the `who` of another
-group: close to them while they walk); robot (follow,
+group: close to them while they walk); for (seconds: a stay or wander judged over that long after arriving,
+a reach counted from then, as in "waits for a minute and then walks on"); robot (follow,
 approach, block, avoid, look). The robot's: reach, via, stay, patrol (a place), follow (words of a group).
 """
 
@@ -53,7 +54,7 @@ if TYPE_CHECKING:
     from grove_tui.scenario.model import Scenario
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
-                  "robot", "keep_out", "follow")
+                  "robot", "keep_out", "follow", "for")
 ROBOT_OUTCOMES = ("reach", "via", "stay", "patrol", "follow")
 REACTIONS = ("follow", "approach", "block", "avoid", "look")
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
@@ -282,6 +283,9 @@ def _hand_claims(expected: ExpectedGroup, world: World, speed: float,
     claims: list[Claim] = []
     if expected.count is not None:
         claims.append(Claim("count", str(expected.count), "expected"))
+    # "waits in the kitchen for a minute and then walks on": the stay or wander is judged over those
+    # seconds after arriving, and the reach counts from then (`for: 60`)
+    asked_for = next((float(v) for k, v in expected.expect if k == "for"), None)  # type: ignore[arg-type]
     for kind, value in expected.expect:
         tag = f"{kind}|"
         if kind in ("reach", "stay", "start", "leave", "wander", "keep_out"):
@@ -294,7 +298,8 @@ def _hand_claims(expected: ExpectedGroup, world: World, speed: float,
                 if kind == "start":
                     claim = Claim("start", name, "expected", zone=claim.zone or _zone_of(world, name), share=1.0)
                 claims.append(Claim(claim.kind, tag + claim.asked, claim.plan, zone=claim.zone, place=claim.place,
-                                    point=claim.point, radius=claim.radius, share=claim.share))
+                                    point=claim.point, radius=claim.radius, share=claim.share,
+                                    seconds=asked_for if kind in ("stay", "wander", "reach") else None))
         elif kind == "queue":
             for name in _names(value):
                 obj = world.find(name)

@@ -166,7 +166,13 @@ class OutcomeChecker:
 
     def zone_shape(self, name: str) -> BaseGeometry:
         if name not in self._zones:
-            polygon = self.world.zone(name).polygon.buffer(ZONE_MARGIN)
+            own = self.world.zone(name).polygon
+            polygon = own.buffer(ZONE_MARGIN)
+            # the margin is for doorways and walls, not for the room next door: someone standing inside
+            # the kitchen by its opening to the living room is in the kitchen, not the living room
+            near = [z.polygon for z in self.world.zones if z.name != name and z.polygon.intersects(polygon)]
+            if near:
+                polygon = polygon.difference(shapely.union_all(near).difference(own))
             shapely.prepare(polygon)
             self._zones[name] = polygon
         return self._zones[name]
@@ -404,6 +410,10 @@ class _ReachProbe(_Probe):
             return
         self.trail.add(f.t, f.pos[:, self.cols])
         inside = self.inside(f)
+        if self.claim.seconds:
+            # "wait in the kitchen for a minute and then walk to the living room": the walk comes after the
+            # asked wait, so being there (or by its doorway) before the wait can be over is not reaching it
+            inside &= f.t[:, None] >= self.claim.seconds
         hit = inside.any(axis=0)
         for j in np.flatnonzero(hit & np.isinf(self.first)):
             self.first[j] = f.t[np.argmax(inside[:, j])]
@@ -491,6 +501,7 @@ class _WanderProbe(_Probe):
         self.last = np.full((m, 2), np.nan)
         self.last_inside = np.zeros(m, dtype=bool)
         self.arrived = np.zeros(m, dtype=bool)
+        self.arrived_at = np.full(m, np.inf)
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size:
@@ -504,10 +515,15 @@ class _WanderProbe(_Probe):
         step = np.where(np.isfinite(step) & ins[1:] & ins[:-1], step, 0.0)
         self.walked += step.sum(axis=0)
         # the share inside counts from arrival: walking there from elsewhere is not wandering outside
-        arrived_before = self.arrived.copy()
-        cum = np.maximum.accumulate(inside, axis=0) | arrived_before[None, :]
-        self.present += (present & cum).sum(axis=0)
-        self.inside_n += (inside & cum).sum(axis=0)
+        for j in np.flatnonzero(~self.arrived & inside.any(axis=0)):
+            self.arrived_at[j] = f.t[np.argmax(inside[:, j])]
+        since = f.t[:, None] >= self.arrived_at[None, :]
+        if self.claim.seconds:
+            # "wander for two minutes", "wander around ... and then walk to the cafe": the asked while after
+            # arriving is judged; walking on once it is over is what the sentence says
+            since &= f.t[:, None] < self.arrived_at[None, :] + self.claim.seconds
+        self.present += (present & since).sum(axis=0)
+        self.inside_n += (inside & since).sum(axis=0)
         self.arrived |= inside.any(axis=0)
         self.last = np.where(present[-1][:, None], pos[-1], self.last)
         self.last_inside = np.where(present[-1], inside[-1], self.last_inside)

@@ -9,6 +9,7 @@ a claim that the guided people went with the robot, measured like any reaction t
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from collections.abc import Sequence
 
@@ -18,6 +19,27 @@ from grove_tui.language.tokens import lemma
 # Words for the people the clause points back to rather than names ("guides them", "leads everyone out").
 _POINTING = frozenset({"them", "everyone", "everybody", "all", "him", "her", "us", "people"})
 _ARTICLES = frozenset({"a", "an", "the", "group", "of", "some", "all"})
+
+# People the robot guides out ("the robot guides them to the exit") follow it as followers do, for as
+# long as it drives to their exit (planning writes the duration), hurrying up to this pace when they
+# fall behind: ApproachRobot walks at max_vel * d / (d + closest_dist), which keeps them about 1.5 m
+# behind a robot at GUIDING_VEL (1.2 m/s = 2.0 * 1.5 / 2.5).
+GUIDED_CATCH_UP = 2.0
+GUIDED_CLOSEST = 1.0
+GUIDING_VEL = 1.2  # m/s the robot leads an evacuation at: a brisk walk, not its 0.8 m/s service pace
+
+
+def guided_follow(duration: float = 0.0) -> tuple[str, dict[str, float]]:
+    """The node and ports that keep guided people behind the robot for `duration` seconds."""
+    return "ApproachRobot", {"closest_dist": GUIDED_CLOSEST, "max_vel": GUIDED_CATCH_UP, "duration": duration}
+
+
+def guided_seconds(path: Sequence[tuple[float, float]], robot_vel: float) -> float:
+    """How long guided people keep behind the robot: its drive along `path` and a moment more. Then
+    they walk out on their own, the exit in sight: kept round a robot stopped at the door, they were
+    pushed out past it as people who were not evacuating."""
+    length = sum(math.dist(a, b) for a, b in zip(path, path[1:]))
+    return round(length / max(robot_vel, 0.1) + 2.0, 1)
 
 
 def guided_index(reading: PromptReading) -> int | None:

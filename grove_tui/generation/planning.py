@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 import threading
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import shapely
@@ -30,7 +30,8 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
-from grove_tui.generation.guided import guided_exit
+from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
+from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
@@ -105,6 +106,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         request = robot or RobotRequest()
         robot_notes: list[str] = []
         robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading)
+        robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
         reactor_notes: list[str] = []
         unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
         rooms = list(dict.fromkeys(g.reactor_zone for g in unseen if g.reactor_zone))
@@ -114,6 +116,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             robot_notes = []
             robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading,
                                     through=rooms)
+            robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
             robot_notes.append(f"the robot passes through {', '.join(rooms)} on its way, where people react to it")
             reactor_notes = []
             unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
@@ -122,6 +125,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         _at_a_pace_the_robot_keeps(post, robot_spec)
         for g in unseen:
             notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
+    guided_for = _behind_the_guide_while_it_drives(post, robot_spec)
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
     if preset.velocity == "field":
@@ -156,6 +160,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         _check_cancel(cancel)
         assert a.document is not None  # post-processing gives every agent its tree document
         document = a.document.copy()  # planning edits its own copy: a re-plan starts from the same trees
+        if a.group_index in guided_for:
+            _set_guided_seconds(document, guided_for[a.group_index])
         if preset.velocity == "waypoints" and preset.planner.enabled:
             around = keeping_out.get(a.group_index)
             try:
@@ -279,7 +285,8 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
                 formations = [f for f in formations if f not in formations_at(formations, point, clearance)]
     robot_planner = ThetaStarPlanner(block_formations(grid, formations, clearance)) if formations else None
     space = FreeSpace(world, grid)
-    evacuated = _evacuated_zones(post) - named_places
+    guided_zone = _guided_zone(world, reading, post) if task == "cross" else None
+    evacuated = _evacuated_zones(post) - named_places - {guided_zone}
     picker = _StartPicker(world, grid, space, people, robot_planner, evacuated, notes)
 
     def plan_path(a: Point, b: Point, may_cross: bool = True) -> np.ndarray:
@@ -301,25 +308,36 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     follows: tuple[int, ...] = ()
     if task == "follow":
         follows = _followed(reading, post)
+    guided_out = guided_exit(reading, post.groups, post.agents) if reading is not None and task == "cross" else None
     # Where the sentence or the user puts the robot's goal.
     goal: Point | None = None
     if request.goal is not None:
         goal = _request_point(world, grid, request.goal, "goal", picker)
-    elif asked is not None and asked.destination and task in ("cross", "patrol"):
+    elif asked is not None and task in ("cross", "patrol") and (asked.destination or guided_out is not None):
         # a robot that guides people goes to the exit they take, not one picked for its words alone
-        guided = guided_exit(reading, post.groups, post.agents) if reading is not None and task == "cross" else None
-        if guided is not None and guided != asked.destination:
+        guided = guided_out
+        if guided is not None and asked.destination and guided != asked.destination:
             notes.append(f"the robot goes to {guided}, the exit of the people it guides (its clause read "
                          f"{asked.destination})")
-        goal = _place_point(world, grid, guided or asked.destination)
+        goal = _place_point(world, grid, guided or asked.destination or "")
+    led = _followers_way(reading) if task == "cross" and guided_out is None and \
+        (asked is None or not (asked.start or asked.destination)) else None
+    if goal is None and led is not None and led[1] is not None:
+        # "three students follow the robot from the foyer to the computer lab": the robot leads them there
+        goal = _place_point(world, grid, led[1])
     start: Point | None = None
     if request.start is not None:
         start = _request_point(world, grid, request.start, "start", picker)
         picker.check(start, "the start you gave")
     elif asked is not None and asked.start:
         start = picker.pick(asked.start, towards=None, away_from=goal)
+    elif led is not None and led[0] is not None:
+        start = picker.pick(led[0], towards=None, away_from=goal)
     elif asked is not None and task == "wait" and (asked.location or asked.destination):
         start = picker.pick(asked.location or asked.destination or "", towards=None)
+    elif guided_zone is not None:
+        # "the staff in the kitchen evacuate while the robot guides them out": it sets off from among them
+        start = picker.pick(guided_zone, towards=None, away_from=goal)
     elif asked is not None and asked.via and task in ("cross", "patrol"):
         # "crosses the ticket hall to the platforms": from the far side of the hall
         start = picker.pick(asked.via[0], towards=None, away_from=goal)
@@ -347,6 +365,15 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
     return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
+
+
+def _followers_way(reading: PromptReading | None) -> tuple[str | None, str | None] | None:
+    """Where people who follow the robot say it leads them: (from, to) of the first follower group that
+    names a place to go, None when none does."""
+    for group in reading.groups if reading is not None else ():
+        if group.robot_interaction == "follow" and group.destination:
+            return group.start, group.destination
+    return None
 
 
 def _through(world: World, path: np.ndarray, via: Sequence[str], rooms: Sequence[str], picker: _StartPicker,
@@ -556,7 +583,62 @@ def _evacuated_zones(post: PostProcessed) -> set[str]:
 
 def _reactor_ids(post: PostProcessed) -> set[int]:
     by_index = {g.index: g for g in post.groups}
-    return {a.id for a in post.agents if getattr(by_index.get(a.group_index), "reacts_only", False)}
+    return {a.id for a in post.agents if getattr(by_index.get(a.group_index), "reacts_only", False)
+            or getattr(by_index.get(a.group_index), "follows_robot", False)}
+
+
+def _guided_groups(post: PostProcessed) -> list[GroupPlan]:
+    """Groups the robot guides out before they walk out on their own (reconcile.py: not reacts_only)."""
+    return [g for g in post.groups if g.follows_robot and not g.reacts_only]
+
+
+def _guided_zone(world: World, reading: PromptReading | None, post: PostProcessed) -> str | None:
+    """Where the people the robot guides are at first (their sentence's place, else their one spawn
+    zone): the robot sets off from there, with them behind it."""
+    index = guided_index(reading) if reading is not None else None
+    group = next((g for g in _guided_groups(post) if g.reading_index == index), None)
+    if group is None or reading is None:
+        return None
+    start = reading.groups[index].start if index is not None else None
+    zone = world.zone_of_place(start) if start else None
+    return zone or (group.spawn if not group.spawn_zones else None)
+
+
+def _at_a_guiding_pace(post: PostProcessed, preset: Preset, robot: RobotSpec, notes: list[str]) -> RobotSpec:
+    """A robot that leads an evacuation drives at GUIDING_VEL (a brisk walk, as far as the preset's
+    people walk), not its service pace: evacuees kept behind a 0.8 m/s robot would leave slower than
+    a guided evacuation needs to."""
+    guided = [g for g in _guided_groups(post) if any(n.node == "FollowVelocityField" for n in g.tree.walk())
+              or g.exit_asked or any(a.exit for a in post.agents if a.group_index == g.index)]
+    pace = round(min(GUIDING_VEL, float(preset.max_vel)), 2)
+    if robot.task != "cross" or not guided or pace <= robot.max_vel:
+        return robot
+    notes.append(f"the robot leads the evacuation at {pace:g} m/s (its usual top speed is {robot.max_vel:g} m/s)")
+    return replace(robot, max_vel=pace)
+
+
+def _behind_the_guide_while_it_drives(post: PostProcessed, robot: RobotSpec | None) -> dict[int, float]:
+    """Group index -> seconds the guided keep behind the robot: as long as it drives to their exit,
+    then they walk out on their own; with no robot they walk out at once. Their group's tree says so."""
+    out: dict[int, float] = {}
+    for g in _guided_groups(post):
+        seconds = guided_seconds(robot.path or (robot.start, robot.goal), robot.max_vel) \
+            if robot is not None and robot.task == "cross" else 0.1
+        g.tree = _with_duration(g.tree, seconds)
+        out[g.index] = seconds
+    return out
+
+
+def _set_guided_seconds(document: TreeDocument, seconds: float) -> None:
+    for element in document.nodes():
+        if element.id == "ApproachRobot":
+            element.set("duration", f"{seconds:g}")
+
+
+def _with_duration(tree: DraftNode, seconds: float) -> DraftNode:
+    if tree.node == "ApproachRobot":
+        return replace(tree, ports={**tree.ports, "duration": seconds})
+    return replace(tree, children=tuple(_with_duration(c, seconds) for c in tree.children)) if tree.children else tree
 
 
 def _followed(reading: PromptReading | None, post: PostProcessed) -> tuple[int, ...]:
@@ -615,7 +697,7 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
     beside its route, a third of the way along (so the robot reaches them early in a run), in sight of
     it: a reaction gated on the robot showing up must not depend on where a model happened to spawn them.
     Returns the groups with no free floor beside the route (they keep their start)."""
-    groups = [g for g in post.groups if g.reacts_only]
+    groups = [g for g in post.groups if g.reacts_only or g.follows_robot]
     if not groups or robot is None:
         return []
     unseen: list[GroupPlan] = []
@@ -634,6 +716,8 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
                 taken += placed_behind
                 notes.append(f"group '{g.label}': starts in {g.spawn} behind the robot's start, to follow it")
                 continue
+            if not g.reacts_only:
+                continue  # guided people with no room behind the robot keep their start
         node = next((n.node for n in g.tree.walk() if n.node in REACTOR_BAND), "ApproachRobot")
         near, far = REACTOR_BAND[node]
         order = np.argsort(np.abs(arcs - min(max(0.3 * total, 4.0), total)), kind="stable") if total else np.arange(1)

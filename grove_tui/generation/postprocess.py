@@ -96,8 +96,10 @@ class GroupPlan:
     # it where the robot passes (generation/planning.py, place_robot_reactors).
     reacts_only: bool = False
     reactor_zone: str | None = None  # where the sentence puts such a group: it starts there, by the robot's route
-    # such a group follows the robot ("the robot guides eight tourists"): it starts behind the robot's
-    # start, not ahead on its route, where it would crowd the robot's front
+    # such a group follows the robot ("the robot guides eight tourists"), or is guided out by it before
+    # walking out on its own ("the staff evacuate while the robot guides them to the exit", not
+    # reacts_only): it starts behind the robot's start, not ahead on its route, where it would crowd
+    # the robot's front
     follows_robot: bool = False
     exit_asked: str | None = None  # the exit its sentence sends it through ("leave through the back door")
     leader_index: int | None = None  # reading index of the group it follows: FollowAgent's target
@@ -583,7 +585,8 @@ def plan_groups(world: World, preset: Preset, draft: Draft, selection: RoISelect
                         reacts_only=r.reacts_only, leader_index=r.leader_index,
                         reactor_zone=_reactor_zone(world, reading.groups[r.reading_index or 0]) if r.reacts_only
                         else None,
-                        follows_robot=r.reacts_only and reading.groups[r.reading_index or 0].robot_interaction == "follow",
+                        follows_robot=r.guided or (r.reacts_only and
+                                                   reading.groups[r.reading_index or 0].robot_interaction == "follow"),
                         exit_asked=_exit_asked(world, reading.groups[r.reading_index or 0]),
                         exits_shunned=_exits_shunned(world, reading.groups[r.reading_index or 0]),
                         places_shunned=places_kept_out(world, reading.groups[r.reading_index or 0]))

@@ -33,7 +33,7 @@ from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTION
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
-from grove_tui.generation.guided import guided_exit, guided_index
+from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -98,6 +98,7 @@ class ReconciledGroup:
     added: list[str] = field(default_factory=list)  # what the tree does beyond the reading, in words
     reacts_only: bool = False  # its whole activity is reacting to the robot: it starts where the robot passes
     leader_index: int | None = None  # reading index of the group it follows ("follow their guide")
+    guided: bool = False  # the robot guides it ("... while the robot guides them to the exit"): behind it, then out
 
 
 def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
@@ -196,6 +197,14 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
         reacts_only = False
         if group.robot_interaction:
             tree, reacts_only = with_robot_interaction(tree, group)
+        guided = False
+        if index == guided_index(reading) and not group.robot_interaction and _base_intent(group) in ("evacuate",
+                                                                                                      "walk"):
+            # "the staff evacuate while the robot guides them to the exit": behind the robot, as people who
+            # follow it are, for as long as it drives (planning sets how long), then out on their own
+            node, ports = guided_follow(GUIDED_PLACEHOLDER)
+            tree, guided = _prepend(DraftNode(node, {**ports}), tree), True
+            added.append("follows the robot that guides them, then walks out")
         leader = _leader_index(reading, group)
         if leader is not None and _base_intent(group) == "follow" and not evacuation_field and \
                 not any(n.node == "FollowAgent" for n in tree.walk()):
@@ -207,12 +216,13 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
             notes.append(f"group '{label}': walks together as the prompt says")
         party = group.count.party_size if group.count.parties and (group.count.party_size or 0) > 1 else None
         out.append(ReconciledGroup(index, label, count, spawn, tree, behavior, party,
-                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader))
+                                   PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader, guided))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
     return _behind_their_leader(_at_the_followers_pace(out, reading), world)
 
 
+GUIDED_PLACEHOLDER = 60.0  # seconds behind the robot until planning knows its drive (guided.guided_seconds)
 LEADER_PACE = 0.85  # a guide with a group behind walks at the group's pace, slower than alone
 
 
@@ -480,12 +490,16 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         spot = group.location or group.start or group.destination
         if spot is not None:
             seconds = float(group.wait_seconds or CONVERSATION_SECONDS)
-            return _sequence(via + [DraftNode("Converse", {"target": spot, "duration": seconds})])
+            return _sequence(via + [DraftNode("Converse", {"target": spot, "duration": seconds})]
+                             + _onward_steps(group, world))
         base = "wait"
     if base == "wander":
         zone = world.zone_of_place(group.location or group.destination or group.start or "")
         if zone:
-            return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": float(group.wait_seconds or 0.0)})])
+            onward_steps = _onward_steps(group, world)
+            # wandering with somewhere to go after it ends ("..., then walk to the cafe"): a while, not for ever
+            seconds = float(group.wait_seconds or (DEFAULT_WAIT_SECONDS if onward_steps else 0.0))
+            return _sequence(via + [DraftNode("Wander", {"zone": zone, "duration": seconds})] + onward_steps)
         base = "wait"
     if base == "wait":
         if reacts_only(group):
@@ -494,12 +508,8 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
         if place is not None:
             steps.append(DraftNode("GoTo", {"target": place}))
         steps.append(DraftNode("Wait", {"duration": float(group.wait_seconds or DEFAULT_WAIT_SECONDS)}))
-        onward = walks_on_to(group, world)
-        if onward is not None:
-            # "wait at goods in for 90 seconds and then walk to the canteen": the wait, then the walk
-            steps.append(DraftNode("FollowVelocityField", {"exit": onward}) if _is_exit(world, onward)
-                         else DraftNode("GoTo", {"target": onward}))
-        return _sequence(via + steps)
+        # "wait at goods in for 90 seconds and then walk to the canteen": the wait, then the walk
+        return _sequence(via + steps + _onward_steps(group, world))
     # walk, evacuate, follow
     destination = group.destination
     if base in ("walk", "evacuate") and destination and _is_exit(world, destination):
@@ -525,11 +535,21 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     return _sequence(via + [DraftNode("GoTo", {"target": destination})])
 
 
+def _onward_steps(group: GroupReading, world: World) -> list[DraftNode]:
+    onward = walks_on_to(group, world)
+    if onward is None:
+        return []
+    return [DraftNode("FollowVelocityField", {"exit": onward}) if _is_exit(world, onward)
+            else DraftNode("GoTo", {"target": onward})]
+
+
 def walks_on_to(group: GroupReading, world: World) -> str | None:
-    """Where a waiting group goes once its wait is over: the reading's destination when it waits
-    somewhere else ("wait in the lobby for two minutes, then go to the pharmacy"; "wait at the pharmacy"
-    and "walk to the cafeteria and wait there" read the same place twice and go nowhere after)."""
-    if _base_intent(group) != "wait" or reacts_only(group) or not group.location or not group.destination:
+    """Where a group that waits, talks or wanders somewhere goes once that is over: the reading's
+    destination when it is somewhere else ("wait in the lobby for two minutes, then go to the pharmacy",
+    "chat in the rest room for a minute and then walk to bay 3"; "wait at the pharmacy" and "walk to the
+    cafeteria and wait there" read the same place twice and go nowhere after)."""
+    if _base_intent(group) not in ("wait", "converse", "wander") or reacts_only(group) or not group.location \
+            or not group.destination:
         return None
     if _is_exit(world, group.destination):
         # "... and then leave through the main entrance": out of the building, though the door is the lobby's
@@ -789,6 +809,9 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
             # "the robot guides them to the exit": that they went with it is asked too, and measured
             claims.append(Claim("robot_follow", "go with the robot, which guides them", "walk where the robot leads",
                                 distance=REACTION_DISTANCE["follow"], share=0.9, needs_seconds=robot_seconds + 10.0))
+            # they leave at the robot's pace: out once it is there, not at their own
+            claims = [replace(c, needs_seconds=max(c.needs_seconds, robot_seconds + 20.0))
+                      if c.kind in ("evacuate", "reach") and c.needs_seconds is not None else c for c in claims]
         out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     asked_robot = reading.robot
@@ -796,6 +819,16 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
     robot_row = _robot_row(asked_robot, robot, world, agents)
+    leader_of = next((g for g in reading.groups if g.robot_interaction == "follow" and g.destination), None)
+    if asked_robot is None and robot_row is not None and robot is not None and leader_of is not None \
+            and getattr(robot, "task", "cross") == "cross" and leader_of.destination:
+        # "three students follow the robot from the foyer to the computer lab": planning drove it there
+        seconds = _robot_seconds(robot)
+        robot_row = replace(robot_row, task="cross", text=leader_of.text,
+                            plan=robot_row.plan.replace(" (the sentence asks nothing of it)", ""),
+                            claims=(_place_claim("robot_reach", leader_of.destination,
+                                                 f"lead them to {leader_of.destination}", world, 1,
+                                                 1.3 * seconds + 10.0),))
     if robot_row is not None:
         questions += robot_row.unsure
     return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),
@@ -860,6 +893,10 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         claims.append(_reaction_claim(r, g, robot_seconds))
         if reacts_only(r):
             base = "none"
+            if r.robot_interaction == "follow" and r.destination:
+                # "follow the robot from the foyer to the computer lab": they arrive there behind it
+                claims.append(_place_claim("reach", r.destination, f"follow the robot to {r.destination}", world,
+                                           n, robot_seconds + timing.eta(r.destination)))
             zone = world.zone_of_place(r.location or "")
             if zone and not r.start:
                 # "a cleaner stands in the robot's way in the corridor": that is where they are at first
@@ -938,22 +975,15 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claim = Claim("stay", "where they are", f"wait in {g.spawn}", zone=g.spawn, place=g.spawn,
                           needs_seconds=(seconds or 10.0) + 5.0)
         claims.append(replace_seconds(claim, seconds))
-        onward = walks_on_to(r, world)
-        if onward is not None:
-            waited = seconds or DEFAULT_WAIT_SECONDS
-            if _is_exit(world, onward):
-                claims.append(Claim("evacuate", onward, f"then leave through {onward}", exits=(onward,),
-                                    needs_seconds=timing.evacuation_eta(n) + waited))
-            else:
-                claim = _place_claim("reach", onward, f"then walk to {onward}", world, n, timing.eta(onward) + waited)
-                if not _reaches(world, onward, _tree_places(g.tree)):
-                    claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
-                                  zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
-                claims.append(claim)
+        claims.extend(_onward_claims(r, g, world, timing, n, seconds or DEFAULT_WAIT_SECONDS))
     elif base == "wander":
         zone = world.zone_of_place(r.location or r.destination or r.start or "") or g.spawn
-        claims.append(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
-                            needs_seconds=timing.eta(zone) + 20.0))
+        onward = _onward_claims(r, g, world, timing, n, float(r.wait_seconds or DEFAULT_WAIT_SECONDS))
+        # a wander with somewhere to go after it lasts a while (the tree's), judged over that while
+        seconds = float(r.wait_seconds) if r.wait_seconds else DEFAULT_WAIT_SECONDS if onward else None
+        claims.append(replace_seconds(Claim("wander", zone, f"wander in {zone}", zone=zone, place=zone,
+                                            needs_seconds=timing.eta(zone) + max(20.0, seconds or 0.0)), seconds))
+        claims.extend(onward)
     elif base == "converse":
         spot = r.location or r.start or r.destination
         zone = world.zone_of_place(spot or "") or g.spawn
@@ -967,6 +997,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
             claims.append(Claim("converse", "talk together" + (f" in {zone}" if zone else ""),
                                 f"a conversation circle in {zone}", zone=zone, place=spot, partners=partners,
                                 needs_seconds=timing.eta(spot or zone) + 15.0))
+        claims.extend(_onward_claims(r, g, world, timing, n, float(r.wait_seconds or CONVERSATION_SECONDS)))
     if r.pace in ("slow", "fast"):
         normal = walking_speed
         low, high = (0.2, round(0.85 * normal, 2)) if r.pace == "slow" else (round(1.15 * normal, 2), 3.0)
@@ -980,6 +1011,24 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         # "..., avoiding the lifts": never there, all the run long
         claims.append(_keep_out_claim(world, name, g.count))
     return claims
+
+
+def _onward_claims(r: GroupReading, g: PlannedGroup, world: World, timing: _Timing, n: int,
+                   waited: float) -> list[Claim]:
+    """Where the group goes once its wait, talk or wander is over ("..., then walk to bay 3"): reached
+    after it, or out through the exit it names."""
+    onward = walks_on_to(r, world)
+    if onward is None:
+        return []
+    if _is_exit(world, onward):
+        return [Claim("evacuate", onward, f"then leave through {onward}", exits=(onward,),
+                      needs_seconds=timing.evacuation_eta(n) + waited)]
+    claim = _place_claim("reach", onward, f"then walk to {onward}", world, n, timing.eta(onward) + waited)
+    if not _reaches(world, onward, _tree_places(g.tree)):
+        claim = Claim(claim.kind, claim.asked, claim.plan, FAILS, "the trees never go there",
+                      zone=claim.zone, place=claim.place, point=claim.point, radius=claim.radius)
+    # the walk comes after the wait: an arrival before `waited` seconds is a doorway's margin, not the walk
+    return [replace(claim, seconds=waited) if claim.status != FAILS else claim]
 
 
 def places_kept_out(world: World, group: GroupReading) -> tuple[str, ...]:

@@ -191,6 +191,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
             return Quantifier(1, "range", k + 1, 2)  # "a student or two": one or two
         if nxt in ("few", "handful", "number", "lot"):
             after = k + 2
+            if tuple(low[after:after + 2]) == ("or", "so"):
+                after += 2  # "a handful or so of porters"
             if after < s.n and low[after] == "of":
                 after += 1
             return Quantifier(0, f"vague:{nxt}", after)
@@ -207,6 +209,10 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
     return None
 
 
+# Scale words a range of two numbers may share: "one or two dozen", "a dozen or two".
+_RANGE_SCALES = {"dozen": 12, "hundred": 100}
+
+
 def _number_quantifier(s: Sentence, num: tuple[int, int], approx: bool) -> Quantifier:
     low = s.low
     value, after = num
@@ -220,6 +226,12 @@ def _number_quantifier(s: Sentence, num: tuple[int, int], approx: bool) -> Quant
         return Quantifier(value, "approximate", after + 2)
     if after + 1 < s.n and low[after] in ("to", "-", "or"):
         b = number_at(s, after + 1)
+        scale = _RANGE_SCALES.get(low[b[1] - 1], 0) if b is not None else 0
+        first_scale = _RANGE_SCALES.get(low[after - 1], 0) if low[after] == "or" else 0
+        if b is not None and scale and value < b[0] // scale:
+            value *= scale  # "one or two dozen", "two or three hundred": the scale is both numbers'
+        elif b is not None and first_scale and value < b[0] * first_scale:
+            return Quantifier(value, "range", b[1], b[0] * first_scale)  # "a dozen or two teens": 12 to 24
         if b is not None and b[0] > value:
             return Quantifier(value, "range", b[1], b[0])
     return Quantifier(value, "approximate" if approx else "exact", after)

@@ -14,6 +14,7 @@ world lacks ("smoke from the boiler room") is still refused: people would be sen
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.hazard_events import event_cue
 from grove_tui.language.place_kinds import PLACE_KINDS
 from grove_tui.language.sentence import Sentence
 
@@ -53,6 +54,8 @@ def cue(s: Sentence, i: int) -> bool:
     if w in _ALARMS and (nxt in _SOUNDING or (nxt in ("is", "are", "has", "have", "starts", "start") and after in _SOUNDING)):
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):
+        return True
+    if event_cue(s, i):  # "a pipe bursts", "the sprinklers go off" (hazard_events.py)
         return True
     return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (w.startswith("catch") and nxt == "fire")
 

@@ -11,6 +11,15 @@ from grove_tui.language.parser import Word
 
 # One-word verbs of leaving (base forms): a walk.
 LEAVING_VERBS = frozenset("bail scarper skedaddle scram bolt vamoose decamp depart".split())
+# Leaving for the day or to be out of the way, no hazard said (round 18): "knock off for the day",
+# "make themselves scarce", "head off home", "call it a day".
+_SELVES = ("themselves", "himself", "herself", "ourselves", "myself", "yourself", "yourselves")
+_LEAVING_FOR_HOME: tuple[tuple[str, ...], ...] = (
+    *(("make", own, "scarce") for own in _SELVES), ("knock", "off"), ("clock", "off"), ("clock", "out"),
+    ("sign", "off"), ("call", "it", "a", "day"), ("call", "it", "a", "night"), ("head", "home"), ("go", "home"),
+    ("push", "off"), ("shove", "off"), ("buzz", "off"), ("hit", "the", "road"), ("slope", "off"),
+    ("slip", "away"), ("sneak", "off"), ("sneak", "away"), ("take", "their", "leave"), ("take", "his", "leave"),
+    ("take", "her", "leave"), ("pack", "up"), ("bug", "out"))
 # Phrasal verbs of leaving: (base form, words after it).
 LEAVING_PHRASES: dict[tuple[str, ...], str] = {
     **{phrase: "walk" for phrase in (
@@ -20,6 +29,7 @@ LEAVING_PHRASES: dict[tuple[str, ...], str] = {
         ("make", "for", "the", "exit"), ("run", "for", "it"), ("run", "for", "the", "exits"),
         ("get", "out"), ("clear", "out"), ("pile", "out"), ("bail", "out"), ("file", "out"), ("stream", "out"),
         ("pour", "out"), ("spill", "out"), ("get", "away"))},
+    **{phrase: "walk" for phrase in _LEAVING_FOR_HOME},
 }
 # Phrasal verbs of leaving that are an evacuation when the prompt names a hazard ("legs it", "bails").
 HAZARD_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (

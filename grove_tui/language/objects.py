@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import quantifier
+from grove_tui.language.movers import FETCHING_VERBS
 from grove_tui.language.people import People
 from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
 from grove_tui.language.school_classes import named_class
@@ -44,7 +45,7 @@ class PeopleObjects:
         orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
-        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS or not (
+        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS | FETCHING_VERBS or not (
                 self.people.is_person_noun(p - 1) or shared_subject_is_person(s, self.people, p - 1)
                 or each_leader(s, self.people, p - 1) is not None):  # "two porters, each pushing a patient"
             return False  # "a guard waits on platform 1, then leads four passengers": the guard's too

@@ -12,10 +12,11 @@ from grove_tui.language.person_modifiers import compound_head_person, head_perso
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
-from grove_tui.language.thing_people import person_of_a_thing
+from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
 from grove_tui.language.trader_people import trader_subject
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
+from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
@@ -79,11 +80,15 @@ class People:
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if trader_subject(s, i):
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
+        if moves_as_a_person(s, i):
+            return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i):
             return True
+        if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i):
+            return True  # "a keeper wheels a lady ...", "pushes an elderly gent on a gurney"
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no
         # word of the parser's English vocabulary ("posters" is one edit from "porters", but a word).

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.boarding import boarding_place
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
@@ -393,6 +394,8 @@ class PlaceMeaning:
         words = purpose.lower().replace("-", " ").split()
         while words and words[0] in ("to", "in", "order", "so", "as", "for"):
             words = words[1:]
+        if (boarded := boarding_place(self.s.index, words)) is not None:
+            return boarded  # "run for the train": a platform (boarding.py)
         verb = verb_lemma(words[0]) if words else ""
         # "to board his plane" is no departures board: a verb that is only a word of a place's name
         # ("check in" still names the check-in hall)

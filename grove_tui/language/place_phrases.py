@@ -21,11 +21,13 @@ from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
 from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
+from grove_tui.language.place_outside import outside_zone
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
+from grove_tui.language.movers import carried_in
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -160,8 +162,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
                 any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)):
             return None  # "porters roll a patient in her bed": what carries the person moved, not a place
-        if at >= 1 and k < s.n and low[k] in ("a", "an") and self.people.is_person_noun(at - 1) and \
-                (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
+        if at >= 1 and k < s.n and low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas)) \
+                and (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
             # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person
             # has or wears, not where they are ("a man on a bench" is still the bench)
             return None
@@ -222,6 +224,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
+        if (out := outside_zone(s, at, match)) is not None:  # "outside the pharmacy": the zone its door opens to
+            match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
                                   out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
 

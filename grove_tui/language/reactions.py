@@ -10,6 +10,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
+from grove_tui.language.robot_motion import motion_reaction_before
 from grove_tui.language.tokens import verb_lemma
 
 # Hostility to the robot: shouting or throwing something at it ("shouts at the robot", "throws a cup
@@ -50,8 +51,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         # The verb closest before the robot governs it ("stop and stare at the robot": look); with
         # two mentions, the words since the one before ("curious about the robot and follow it").
         since = robot_at[n_mention - 1] if n_mention else -1
-        found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r) or _noun_after(s, ownset, r)
-                 or _passive(s, r))
+        found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r)
+                 or motion_reaction_before(s, own, since, r) or _noun_after(s, ownset, r) or _passive(s, r))
         if found == "avoid" and _refused(s, own, r):
             return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
         if found in ("look", "approach", "follow") and _ignored(s, own, r):

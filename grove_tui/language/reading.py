@@ -28,11 +28,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 
+from grove_tui.language.activity_times import without_activity_times
+from grove_tui.language.asides import without_asides
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
+from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
@@ -41,10 +44,13 @@ from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, 
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
 from grove_tui.language.passive_escort import to_active
+from grove_tui.language.passive_order import in_said_order
+from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
 from grove_tui.language.robot import RobotClause, RobotClauses
+from grove_tui.language.robot_led import led_by_robot
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
 from grove_tui.language.split_wholes import parts_of_a_split_whole
@@ -78,6 +84,8 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
         text, words = corrected, as_verbs(parse(corrected))
     reading = _read(Sentence(text, words, index, int(seed)))
+    if active is not None:  # the taken before their taker, as the sentence says them
+        reading = replace(reading, groups=in_said_order(reading.groups, typed))
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
@@ -88,7 +96,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, finder.find())  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_asides(s, finder.find()))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
@@ -96,7 +104,7 @@ def _read(s: Sentence) -> PromptReading:
     problems = list(finder.problems)
     read: tuple[GroupReading, ...] = ()
     if mentions:
-        read = tuple(groups.read(mentions, found))
+        read = without_perceivers(s, mentions, groups.read(mentions, found))  # "a guard notices smoke and ..."
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
     elif clauses.negated_tokens():
@@ -107,7 +115,7 @@ def _read(s: Sentence) -> PromptReading:
     else:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
-    robot = _robot_follows_someone_said(robot, found, mentions, read)
+    robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))

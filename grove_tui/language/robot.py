@@ -21,6 +21,8 @@ from grove_tui.language.model import FieldConfidence, RobotReading
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.robot_modals import obligation_verb
+from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
 from grove_tui.language.sequences import robot_sequel
 from grove_tui.language.tokens import verb_lemma
@@ -109,8 +111,8 @@ class RobotClauses:
                    or self._after_fronted_adverbial(i, first))
         if command:
             first = before
-        elif not subject:
-            return None
+        elif not subject or goes_after_robot(s, first):
+            return None  # "two kids trot after the robot round the shop": the robot is what they go after
         j = i + 1
         while j < s.n and (s.w[j].pos == "ADV" or s.w[j].tag == "MD" or low[j] in ("then", "also", "now", "first")) \
                 and not s.is_punct(j):
@@ -123,6 +125,8 @@ class RobotClauses:
             if s.w[j].pos == "VERB" or s.w[j].tag == "VB":
                 return first, j, True  # "have the robot patrol the lobby"
             return first, None, True  # "send the robot to ward A": the sender's verb moves it
+        if (task_verb := obligation_verb(s, j)) is not None:
+            return first, task_verb, False  # "the robot needs to wait by the door", "is meant to follow them"
         if verb_lemma(low[j]) == "be":
             return self._after_be(first, j)
         if s.w[j].pos in ("VERB", "AUX") or s.w[j].tag.startswith("VB") or self._verb_tagged_noun(j):
@@ -236,7 +240,9 @@ class RobotClauses:
         read_from: dict[str, Place] = {}
         texts: list[str] = []
         for rc in found:
-            clause = self.clauses.read(rc.tokens, set())
+            # "needs to wait by the door", "tell it to wait by the door": the task verb's "to" is no purpose
+            told = {rc.verb - 1} if rc.verb is not None and rc.verb > 0 and s.low[rc.verb - 1] in ("to", "ta") else set()
+            clause = self.clauses.read(rc.tokens, told)
             verb = s.verb(rc.verb) if rc.verb is not None else ""
             placed = rc.verb is not None and (s.w[rc.verb].tag == "VBN" and verb in lx.ROBOT_PLACED_VERBS or (
                 verb, s.low[rc.verb + 1] if rc.verb + 1 < s.n else "") in _OFF_PHRASES)

@@ -159,6 +159,8 @@ class Sentence:
             return None  # "drift between shops": among them; "between X and Y" names two places
         if w == "up" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1  # "up the stairs", "up the corridor": along it, as "down"
+        if w == "of" and i > 0 and low[i - 1] in _LAPS:
+            return "around", 1  # "laps of the atrium", "a circuit of the garden": round it
         if w in lx.PLACE_PREPOSITIONS - {"down", "next"}:
             return w, 1
         if w == "where" and i > 0 and any((lx.INTENT_VERBS.get(verb_lemma(low[x])) or self.w[x].pos == "VERB") and
@@ -255,3 +257,5 @@ class Sentence:
 # Verbs whose "where" asks or tells a place, not a place where people are ("know where the exit is").
 _KNOWING = frozenset("know see wonder ask show tell remember forget decide find check say explain point "
                      "guess learn understand notice hear read look".split())
+# Rounds of a place said with "of" ("laps of the atrium"): the place is gone round.
+_LAPS = frozenset("laps lap circuits circuit loops loop lengths length".split())

@@ -84,7 +84,7 @@ class Claim:
     radius: float = 0.0  # within this of `point` counts as there
     exits: tuple[str, ...] = ()  # named exits, for evacuations
     partners: tuple[int, ...] = ()  # agent ids: the conversation's or the followed people
-    seconds: float | None = None  # an asked duration ("waits for five minutes": 300)
+    seconds: float | None = None  # an asked duration ("waits for five minutes": 300); a reach after a wait: the wait
     distance: float | None = None  # metres, for reactions and following
     low: float | None = None  # m/s, for pace
     high: float | None = None

@@ -426,7 +426,11 @@ class _Timed(AgentStatefulAction):
         """Update intents from the current positions."""
 
     # shared moves
-    def walk_to(self, point: Point, speed: float | None = None, goal_radius: float = 0.15) -> None:
+    def walk_to(self, point: Point, speed: float | None = None, goal_radius: float = 0.15,
+                beyond: Point | None = None) -> None:
+        """Walk to `point`; out of sight of it, the planned way to `beyond` when given (the robot a
+        point short of it is approached: that point may lie in the wall beside a door, which the
+        planner moves to the near side of the wall, and the agent walks along it instead of through)."""
         # the target (robot, another agent) moves a few centimetres per tick: rewriting the intents
         # only when it shifted REGOAL or the speed changed by 5 % keeps the behaviour and the cost low
         crowd = self.sim.crowd
@@ -439,7 +443,8 @@ class _Timed(AgentStatefulAction):
                 self.routed_to = None
             elif self.routed_to is None or math.dist(self.routed_to, point) > self.REROUTE or self.facing is not None:
                 # out of sight (another room): walk the planned way there, not into the wall between
-                crowd.set_goals(self.row, sim.plan(here, point), goal_radius=goal_radius)
+                crowd.set_goals(self.row, sim.plan(here, beyond if beyond is not None else point),
+                                goal_radius=goal_radius)
                 self.routed_to = (float(point[0]), float(point[1]))
             self.last_goal = (float(point[0]), float(point[1]))
             if crowd.mode[self.row] != MODE_GOALS:
@@ -603,7 +608,8 @@ class ApproachRobot(_Timed):
         if d <= closest + 0.1:
             self.face("robot")
         else:
-            self.walk_to(goal, self.get_input("max_vel") * d / (d + max(closest, 0.1)))
+            self.walk_to(goal, self.get_input("max_vel") * d / (d + max(closest, 0.1)),
+                         beyond=(float(robot[0]), float(robot[1])))
 
 
 class ApproachAgent(_Timed):
