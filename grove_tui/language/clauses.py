@@ -18,6 +18,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
+from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.going_verbs import goes_to_after
 from grove_tui.language.people import People
@@ -340,8 +341,8 @@ class Clauses:
                 # What people watch is mostly a thing ("the news"), and so is what they clean where a
                 # place follows ("cleans the windows in the hallway"): a place only when the world has it.
                 end = s.phrase_end(i + 1)
-                thing = role == "obj:seen" or (v in lx.THING_OR_PLACE_VERBS and end < s.n
-                                               and s.preposition(end) is not None)
+                thing = role == "obj:seen" or ((v in lx.THING_OR_PLACE_VERBS or left_thing(s, i)) and end < s.n
+                                               and s.preposition(end) is not None)  # "left a bag by the door"
                 place = self.places.phrase(i + 1, role, i, record_unknown=not thing)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                     c.places.append(place)

@@ -369,6 +369,8 @@ class Groups:
         wait = c.wait_seconds
         if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
             wait = scene.wait_seconds
+        if intent == "wait" and wait and location and destination and start is None:
+            start = location  # "waits at the kiosk for 10 minutes, then heads to the shop": it sets off from there
         confidence = count_confidence(s, m, count) + place_confidences(
             {"start": start, "destination": destination, "location": location}, via, roles.read_from)
         if robot is not None and c.robot is None:

@@ -34,6 +34,7 @@ from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
+from grove_tui.language.event_causes import without_causers
 from grove_tui.language.groups import Groups
 from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
@@ -96,7 +97,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_asides(s, finder.find()))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_causers(s, without_asides(s, finder.find())))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

@@ -1,0 +1,65 @@
+"""Round 19 of the reader's clauses and events: an event said as the cause of people leaving (a place
+that shuts, a thing left behind so a zone is cleared) is no group of its own, and the zone is where
+the leavers start; a bell that is no alarm makes no evacuation; a wait for a time before going on
+starts from where it is spent."""
+
+import pytest
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("mall", "Smoke is seen in the toy store, so the toy store shuts and the 12 shoppers browsing in it hurry "
+             "out through the east entrance.", "toy_store", "east_entrance"),
+    ("museum", "Flames are seen in the gift shop, so the gift shop shuts and the 10 tourists browsing there "
+               "hurry out through the main entrance.", "gift_shop", "main_entrance"),
+    ("mall", "Somebody has left a suitcase by the fountain, so the main atrium is cleared: about 60 shoppers "
+             "are sent out via the main entrance.", "main_atrium", "main_entrance"),
+    ("hospital", "Someone has abandoned a holdall under the reception desk, so the entrance lobby is cleared: "
+                 "roughly 50 visitors are sent out via the main entrance.", "entrance_lobby", "main_entrance"),
+    ("station", "A man has dumped a box beside the ticket machines, so the ticket hall is evacuated and about "
+                "90 travellers hurry out through the main entrance.", "ticket_hall", "main_entrance"),
+])
+def test_an_event_that_clears_a_zone_is_one_evacuating_group_from_it(read, world, prompt, start, destination):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.intent == "evacuate" and g.start == start and g.destination == destination
+    assert not r.unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("hospital", "When the bell rings at 8 pm, about 20 visitors drift out of ward a towards the main entrance.",
+     "ward_a"),
+    ("mall", "When the bell goes at closing time, some 30 shoppers wander out of the bookshop towards the west "
+             "entrance.", "bookshop"),
+    ("museum", "When the bell rings at five, around 40 visitors stroll out of the great hall towards the main "
+               "entrance.", "great_hall"),
+    ("library", "As soon as the bell goes, a dozen students file out of the reading room towards the main entrance.", "reading_room"),
+])
+def test_a_bell_that_is_no_alarm_is_no_evacuation(read, world, prompt, start):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.start == start
+
+
+# A guard, not a new reading: a bell said as an alarm still evacuates.
+@pytest.mark.parametrize("world,prompt", [
+    ("mall", "When the fire bell rings, about 30 shoppers leave the bookshop through the west entrance."),
+    ("hospital", "The alarm bells ring and twenty visitors hurry out of ward b."),
+])
+def test_a_fire_bell_is_still_an_alarm(read, world, prompt):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "evacuate"
+
+
+@pytest.mark.parametrize("world,prompt,start,destination,seconds", [
+    ("mall", "A girl hangs around at the phone kiosk for 5 minutes before strolling off alone to the bookshop.",
+     "phone_kiosk", "bookshop", 300),
+    ("museum", "Two tourists linger in the great hall for 10 mins before wandering off to the cafe.",
+     "great_hall", "cafe", 600),
+    ("office", "A developer waits by the kitchen for five minutes, then heads off to the reception.",
+     "kitchen", "reception", 300),
+    ("hospital", "An old man sits in the cafeteria for half an hour, then shuffles off to the pharmacy.",
+     "cafeteria", "pharmacy", 1800),
+])
+def test_a_wait_for_a_time_before_going_on_starts_where_it_is_spent(read, world, prompt, start, destination,
+                                                                    seconds):
+    (g,) = read(world, prompt).groups
+    assert g.start == start and g.destination == destination and g.wait_seconds == seconds
