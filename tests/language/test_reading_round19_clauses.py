@@ -63,3 +63,32 @@ def test_a_wait_for_a_time_before_going_on_starts_where_it_is_spent(read, world,
                                                                     seconds):
     (g,) = read(world, prompt).groups
     assert g.start == start and g.destination == destination and g.wait_seconds == seconds
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("mall", "A nervous shopper sidles warily past the robot, keeping the fountain between herself and it."),
+    ("office", "An anxious intern creeps past the robot, keeping the printer between him and it."),
+    ("hospital", "A cleaner tiptoes cautiously past the robot towards the pharmacy."),
+    ("station", "A small boy edges gingerly around the robot on the concourse."),
+    ("library", "Two readers step carefully round the robot, keeping a shelf between themselves and it."),
+])
+def test_going_past_the_robot_warily_or_keeping_something_between_is_avoiding_it(read, world, prompt):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "robot" and g.robot_interaction == "avoid" and g.robot_reaction == "Scared"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("station", "Two lads deliberately stand where the robot wants to go."),
+    ("hospital", "A porter deliberately parks himself where the robot is trying to drive."),
+    ("office", "Two developers stubbornly position themselves where the robot needs to pass."),
+    ("museum", "Three schoolboys deliberately stand where the robot is trying to go."),
+])
+def test_standing_where_the_robot_wants_to_go_is_blocking_it(read, world, prompt):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "robot" and g.robot_interaction == "block"
+
+
+# A guard: walking past the robot, in no wary manner, is no reaction to it.
+def test_walking_past_the_robot_is_no_reaction(read):
+    (g,) = read("museum", "A guard walks past the robot to the great hall.").groups
+    assert g.intent == "walk" and g.robot_interaction is None
