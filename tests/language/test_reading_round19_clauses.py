@@ -92,3 +92,26 @@ def test_standing_where_the_robot_wants_to_go_is_blocking_it(read, world, prompt
 def test_walking_past_the_robot_is_no_reaction(read):
     (g,) = read("museum", "A guard walks past the robot to the great hall.").groups
     assert g.intent == "walk" and g.robot_interaction is None
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Bent over the reception desk, two receptionists type on.", "reception_desk"),
+    ("office", "Hunched over the kitchen table, three developers eat their lunch, ignoring the robot.", "kitchen_table"),
+    ("hospital", "Leaning over the reception desk, a man chats to the receptionist.", "reception_desk"),
+    ("hospital", "Stooped over the food counter, two cooks chat.", "food_counter"),
+    ("mall", "Bent over the checkout counter, a cashier counts the takings.", "checkout_counter"),
+])
+def test_a_fronted_phrase_over_a_fixture_is_where_the_group_is(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.location == location
+
+
+# A guard: "over" before a number is a count, and over a thing the world lacks no place.
+@pytest.mark.parametrize("world,prompt,location", [
+    ("station", "Over 30 commuters wait on the concourse.", "concourse"),
+    ("mall", "Two boys argue over the bill in the food court.", "food_court"),
+])
+def test_over_a_number_or_a_thing_is_no_place(read, world, prompt, location):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.location == location and not r.unknown_places
