@@ -115,3 +115,15 @@ def test_over_a_number_or_a_thing_is_no_place(read, world, prompt, location):
     r = read(world, prompt)
     (g,) = r.groups
     assert g.location == location and not r.unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("museum", "Three kids play inside the gift shop.", "gift_shop"),
+    ("hospital", "A toddler romps inside the main waiting room.", "main_waiting_room"),
+    ("mall", "Two girls are messing about inside the bookshop.", "bookshop"),
+    ("office", "Some children frolic inside the kitchen.", "kitchen"),
+    ("station", "Two boys play inside the ticket hall.", "ticket_hall"),
+])
+def test_inside_a_place_with_no_verb_of_motion_is_being_there(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.intent in ("wait", "wander") and g.location == location
