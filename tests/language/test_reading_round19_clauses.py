@@ -127,3 +127,14 @@ def test_over_a_number_or_a_thing_is_no_place(read, world, prompt, location):
 def test_inside_a_place_with_no_verb_of_motion_is_being_there(read, world, prompt, location):
     (g,) = read(world, prompt).groups
     assert g.intent in ("wait", "wander") and g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,location,seconds", [
+    ("mall", "A woman makes one coffee last half an hour in the food court.", "food_court", 1800),
+    ("office", "A developer makes a single tea last 20 minutes in the kitchen.", "kitchen", 1200),
+    ("hospital", "An old man makes a cup of tea last forty minutes in the cafeteria.", "cafeteria", 2400),
+    ("museum", "A pensioner is making a pot of tea last 25 minutes in the cafe.", "cafe", 1500),
+])
+def test_making_a_drink_last_a_time_is_a_wait_that_long(read, world, prompt, location, seconds):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "wait" and g.location == location and g.wait_seconds == seconds
