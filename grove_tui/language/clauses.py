@@ -19,6 +19,7 @@ from grove_tui.language.counts import duration_at
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.hazards import cue as hazard_cue
+from grove_tui.language.going_verbs import goes_to_after
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -419,7 +420,7 @@ class Clauses:
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
-                                                                                  "way", "to")):
+                                                                                  "way", "to", "for")):
                     continue
                 candidates.append((i, kind, v))
         if any(s.w[i].pos == "VERB" and s.w[i].lemma not in ("be", "have") and i not in used for i in own):
@@ -443,8 +444,8 @@ class Clauses:
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]
-                if wanted == "wander" and has_destination and "walk" not in kinds[:kinds.index(wanted)] \
-                        and not around_after(s, i):
+                if wanted == "wander" and has_destination and not around_after(s, i) and \
+                        ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)):
                     return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
                 return wanted, verb, i
         i, kind, verb = candidates[0]
