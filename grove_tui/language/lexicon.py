@@ -158,7 +158,7 @@ PERSON_NOUNS = frozenset(
  citizen civilian pedestrian cyclist motorist driver chauffeur cabbie rider commuter hitchhiker
  worshipper pilgrim churchgoer mourner reveller partygoer clubber dancer singer musician performer actor
  actress artist author writer poet blogger influencer vlogger youtuber gamer hacker coder techie geek
- salesman saleswoman salesperson trader dealer broker banker accountant auditor lawyer solicitor barrister
+ salesman saleswoman salesperson trader dealer broker banker accountant auditor lawyer solicitor barrister counsel
  attorney judge clerk notary agent realtor landlord landlady lodger boarder flatmate housemate
  neighbour schoolteacher headteacher headmaster headmistress principal tutor lecturer instructor 
  mentor pupil schoolkid undergraduate postgraduate fresher scholar fellow academic librarian

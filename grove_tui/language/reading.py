@@ -37,6 +37,7 @@ from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.groups import Groups
 from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
+from grove_tui.language.singular_verbs import as_singular_verbs
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.pairs import joined_pairs
@@ -75,14 +76,14 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
-    words = as_verbs(parse(text))  # "the carers in the lounge leg it": a verb, not "lounge leg"
+    words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
-        text, words = active, as_verbs(parse(active))
+        text, words = active, as_singular_verbs(as_verbs(parse(active)))
     corrected, corrections = correct_places(text, words, index)
     if corrections:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
-        text, words = corrected, as_verbs(parse(corrected))
+        text, words = corrected, as_singular_verbs(as_verbs(parse(corrected)))
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
