@@ -282,6 +282,10 @@ class People:
             if after is not None and after < s.n and self.is_person_noun(after):
                 k = after  # "night-shift workers", "year 6 pupils": what kind, no count
                 continue
+            if k + 2 < s.n and s.joins(k + 1) and s.w[k].pos in ("NOUN", "ADJ", "ADV") and self.is_person_noun(k + 2) \
+                    and s.lemma(k + 2) not in lx.IMPLIED_RANGES and not (k + 3 < s.n and self.is_person_noun(k + 3)):
+                k += 2  # "some 25 well-wishers", "two day-trippers": one word, hyphenated
+                continue
             person = self.is_person_noun(k)
             if person and self._does_only_what_things_do(k):
                 return None  # "two fans whir in the server room"

@@ -65,9 +65,9 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
         return False
     first = i
-    while first > 0 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
-            s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ"):
-        first -= 1  # "an airline rep", "two burly roadies"
+    while first > 0 and s.w[first - 1].head == i and (s.joins(first - 1) or s.w[first - 1].dep in ("compound", "amod")
+                                                      and s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ")):
+        first -= 1  # "an airline rep", "two burly roadies", "some 20 well-wishers"
     if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
         return False  # "the robot hums ...": the robot's verb, tagged a noun
     if word.tag != "NNP" and any(s.low[k] in lx.PERSON_NOUNS or s.lemma(k) in lx.PERSON_NOUNS for k in range(first, i)):

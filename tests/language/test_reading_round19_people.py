@@ -1,5 +1,6 @@
 """Round 19 of the reader's people: one person whose verb the parser took for a plural noun
-("a new starter walks", "counsel for the claimant heads", "Sam, our toddler, waddles")."""
+("a new starter walks", "counsel for the claimant heads", "Sam, our toddler, waddles"); ages said
+with a hyphen ("his 4-year-old", "two 8-year-olds"); "some 25 well-wishers"; "a quartet of"."""
 
 import pytest
 
@@ -31,3 +32,43 @@ def test_a_verb_of_taking_after_one_person(read):
 def test_a_named_person_with_an_aside_then_a_verb(read, world, prompt):
     (g,) = read(world, prompt).groups
     assert (g.count.kind, g.count.value) == ("exact", 1) and g.robot_interaction == "follow"
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("mall", "a dad and his 4-year-old walk from the food court to the toy shop", "toy_store"),
+    ("zoo", "a granny and her six-year-old head from the cafe to the penguins", "penguin_beach"),
+])
+def test_a_possessive_pair_with_an_age_noun_is_one_group_of_two(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert g.count.value == 2 and g.together and g.destination == destination
+
+
+@pytest.mark.parametrize("world,prompt,count", [
+    ("mall", "two 8-year-olds run to the toy shop", 2),
+    ("mall", "two 8-year-old girls wait by the fountain", 2),
+    ("zoo", "three 9-year-olds stare at the robot", 3),
+    ("hospital", "an 80-year-old waits in the cafe", 1),
+])
+def test_ages_said_with_a_hyphen_count_the_people(read, world, prompt, count):
+    (g,) = read(world, prompt).groups
+    assert (g.count.kind, g.count.value) == ("exact", count)
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("zoo", "some 20 well-wishers wait at the cafe", 20),
+    ("hospital", "When visiting ends, some 25 well-wishers walk out of ward b to the main entrance", 25),
+    ("zoo", "When the gates open at 9 am, some 30 day-trippers wander in from the entrance to the cafe", 30),
+])
+def test_an_approximate_count_of_a_hyphenated_person_word(read, world, prompt, value):
+    (g,) = read(world, prompt).groups
+    assert (g.count.kind, g.count.value) == ("approximate", value)
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("mall", "a quartet of teenagers wanders round the food court", 4),
+    ("mall", "a quintet of kids runs to the toy shop", 5),
+    ("zoo", "a quartet of keepers walks to the cafe", 4),
+])
+def test_a_quartet_or_quintet_counts(read, world, prompt, value):
+    (g,) = read(world, prompt).groups
+    assert g.count.value == value
