@@ -10,6 +10,7 @@ from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
 from grove_tui.language.people import People
 from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
+from grove_tui.language.robot_modals import before_obligation
 from grove_tui.language.school_classes import named_class
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
@@ -121,7 +122,7 @@ class PeopleObjects:
             return None
         if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
             return None  # "the robot is followed by two children": a passive, the people's own clause
-        k = p - 1
+        k = before_obligation(s, p)  # "the robot is meant to follow", "the robot should follow"
         while k > 0 and s.w[k].pos == "ADV":
             k -= 1  # "the robot slowly escorts"
         robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \

@@ -1,6 +1,7 @@
 """Round 19 of the reader's people: one person whose verb the parser took for a plural noun
 ("a new starter walks", "counsel for the claimant heads", "Sam, our toddler, waddles"); ages said
-with a hyphen ("his 4-year-old", "two 8-year-olds"); "some 25 well-wishers"; "a quartet of"."""
+with a hyphen ("his 4-year-old", "two 8-year-olds"); "some 25 well-wishers"; "a quartet of"; people the robot
+is meant to follow are a group."""
 
 import pytest
 
@@ -72,3 +73,15 @@ def test_an_approximate_count_of_a_hyphenated_person_word(read, world, prompt, v
 def test_a_quartet_or_quintet_counts(read, world, prompt, value):
     (g,) = read(world, prompt).groups
     assert g.count.value == value
+
+
+@pytest.mark.parametrize("world,prompt,label,count", [
+    ("office", "the robot is meant to follow the two interns to the kitchen", "intern", 2),
+    ("office", "the robot has to follow the two interns", "intern", 2),
+    ("museum", "the robot is meant to follow the two guides round the gallery", "guide", 2),
+    ("museum", "The robot should follow the four tourists", "tourist", 4),
+])
+def test_people_the_robot_has_to_follow_are_a_group(read, world, prompt, label, count):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert (g.label, g.count.value) == (label, count) and r.robot is not None and r.robot.task == "follow"
