@@ -18,6 +18,9 @@ from grove_tui.language.tokens import verb_lemma
 
 # Words after "until" that name someone who is there, when they take someone along or walk ("... until a
 # guard takes her to the desk"), not "until someone collects them" nor "until a nurse calls them".
+# Arriving with nowhere said after "until": the one waited for ("until her son turns up").
+_ARRIVING = frozenset("arrive come turn show appear return emerge".split())
+_ARRIVING_TAILS = frozenset("up back out along round over in".split())
 _SOMEONE_NAMED = frozenset({"a", "an", "the", "her", "his", "their", "its", "two", "three", "four"})
 
 
@@ -26,13 +29,27 @@ def nobody_after_subordinator(s: Sentence, at: int) -> bool:
     collects them", "if anyone asks"); after "until", a person said with an article is somebody ("...
     cries near the toy store until a guard takes her to the information desk")."""
     p = at - 1
+    if p >= 1 and s.low[p] in _SOMEONE_NAMED and s.low[p - 1] == "until" and _waited_for(s, at):
+        return True  # "... until her son turns up"
     if s.w[p].pos != "SCONJ" or s.low[p] in lx.CLAUSE_STARTERS:
         return False
     if s.low[p] != "until" or s.low[at] not in _SOMEONE_NAMED:
         return True
     verb = next((k for k in range(at + 1, min(at + 5, s.n)) if s.w[k].pos in ("VERB", "AUX")), None)
+    if _waited_for(s, at):
+        return True
     return verb is None or not (verb_lemma(s.low[verb]) in lx.LEADING_VERBS  # not "until a nurse calls them"
                                 or lx.INTENT_VERBS.get(verb_lemma(s.low[verb])) == "walk")
+
+
+def _waited_for(s: Sentence, at: int) -> bool:
+    """Whether the people at `at`, after "until", only arrive, nowhere said ("until her son turns
+    up", "until their mum comes back"): whom the others wait for, no group of the scene."""
+    verb = next((k for k in range(at + 1, min(at + 5, s.n)) if s.w[k].pos in ("VERB", "AUX")), None)
+    if verb is None or verb_lemma(s.low[verb]) not in _ARRIVING:
+        return False
+    end = s.skip(verb + 1, _ARRIVING_TAILS)
+    return end >= s.n or s.is_punct(end) or (s.low[end] in lx.CLAUSE_STARTERS and s.low[end] not in ("and", "then"))
 
 
 class PeopleObjects:

@@ -1,7 +1,7 @@
 """Round 19 of the reader's people: one person whose verb the parser took for a plural noun
 ("a new starter walks", "counsel for the claimant heads", "Sam, our toddler, waddles"); ages said
 with a hyphen ("his 4-year-old", "two 8-year-olds"); "some 25 well-wishers"; "a quartet of"; people the robot
-is meant to follow are a group."""
+is meant to follow are a group; someone only waited for is no group."""
 
 import pytest
 
@@ -85,3 +85,19 @@ def test_people_the_robot_has_to_follow_are_a_group(read, world, prompt, label, 
     r = read(world, prompt)
     (g,) = r.groups
     assert (g.label, g.count.value) == (label, count) and r.robot is not None and r.robot.task == "follow"
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("hospital", "A visiting dad sits in the cafe for 30 min until his daughter turns up", "dad"),
+    ("hospital", "a woman waits in the pharmacy until her husband arrives", "woman"),
+    ("station", "Grandma sits in the cafe until her grandson shows up", "grandma"),
+    ("station", "two teens loiter on platform 1 until their mum comes back.", "teen"),
+])
+def test_someone_waited_for_is_no_group(read, world, prompt, label):
+    (g,) = read(world, prompt).groups
+    assert g.label == label and g.intent == "wait"
+
+
+def test_someone_who_arrives_then_acts_is_a_group(read):
+    groups = read("hospital", "a boy cries in the cafe until a nurse takes him to ward b").groups
+    assert len(groups) == 2
