@@ -182,7 +182,8 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
         # any verb of walking or roaming, known or only tagged a verb by the parser ("waddle over to it",
         # "a toddler crawls towards the robot")
         v = s.verb(i)
-        if lx.INTENT_VERBS.get(v) in ("walk", "wander") or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
+        if lx.INTENT_VERBS.get(v) in ("walk", "wander") or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS
+                                                             and lx.ROBOT_VERBS.get(v) != "look"):  # "waves to it"
             for tail in lx.ROBOT_APPROACH_TAILS:
                 if s.phrase_words(i + 1, len(tail), ownset) == tail:
                     return "approach"  # "the twins toddle up to the robot"
