@@ -47,6 +47,7 @@ from grove_tui.language.tokens import lemma, words
 
 ROBOT_CLEARANCE = 2.0  # metres between the robot's start/goal and anybody's spawn
 ENTRY_DEPTH = 3.0  # metres into a room the robot goes to be seen by the people in it who react to it
+VIA_SPOT_NEAR = 0.75  # metres: a path this close to a thing's or door's point passes by it (the report allows 1.5)
 ROBOT_CANDIDATES = 48
 
 
@@ -354,14 +355,18 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
             start = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0]
         return RobotSpec(start=start, goal=start, path=(start,), task=task, follows=follows)
 
-    via_zones = [z for z in (world.zone_of_place(v) for v in (asked.via if asked is not None else ())) if z]
+    via = asked.via if asked is not None else ()
+    via_zones = [z for z in (world.zone_of_place(v) for v in via if not _is_spot(world, v)) if z]
+    # "via the fountain": a thing or a door is passed by its own point (where the report checks it), not
+    # anywhere in the zone it stands in
+    via_spots = [p for p in (_place_point(world, grid, v) for v in via if _is_spot(world, v)) if p is not None]
     if start is None or goal is None:
         start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
-        if not via_zones and not through:
+        if not via_zones and not via_spots and not through:
             return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
     try:
         path = plan_path(start, goal)
-        path = _through(world, path, via_zones, through, picker, plan_path, start, goal)
+        path = _through(world, path, via_zones, through, picker, plan_path, start, goal, via_spots)
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
     return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
@@ -376,12 +381,24 @@ def _followers_way(reading: PromptReading | None) -> tuple[str | None, str | Non
     return None
 
 
+def _is_spot(world: World, name: str) -> bool:
+    """Whether a place is a thing or a door (a point to pass by), not a zone."""
+    try:
+        return isinstance(world.find(name), (Entity, Door))
+    except Exception:
+        return False
+
+
 def _through(world: World, path: np.ndarray, via: Sequence[str], rooms: Sequence[str], picker: _StartPicker,
-             plan_path: Callable[[Point, Point, bool], np.ndarray], start: Point, goal: Point) -> np.ndarray:
+             plan_path: Callable[[Point, Point, bool], np.ndarray], start: Point, goal: Point,
+             spots: Sequence[Point] = ()) -> np.ndarray:
     """The path, made to pass through every zone of `via` it misses (by the zone's free point nearest to
-    the way from start to goal) and into every room of `rooms` it misses (a few metres in by the door
-    nearest to it, and out again), the stops in their order along the path."""
+    the way from start to goal), by every point of `spots` it does not come within VIA_SPOT_NEAR of,
+    and into every room of `rooms` it misses (a few metres in by the door nearest to it, and out again),
+    the stops in their order along the path."""
     stops = [picker.via_point(z, start, goal) for z in via if not _passes(world, path, z)]
+    samples, _ = _along(np.asarray(path, dtype=float).reshape(-1, 2), 0.5)
+    stops += [p for p in spots if float(np.min(np.hypot(samples[:, 0] - p[0], samples[:, 1] - p[1]))) > VIA_SPOT_NEAR]
     stops += [picker.entry_point(z, path) for z in rooms if not _passes(world, path, z)]
     if not stops:
         return path

@@ -805,6 +805,26 @@ def _group_point(resolver: TargetResolver, group: GroupPlan, name: str) -> Point
     return resolver.group_points[key]
 
 
+def _field_start(world: World, grid: OccupancyGrid, agent: AgentPlan) -> Point:
+    """Where an evacuee starts to follow the field: the place of the last step that walks it somewhere
+    before the field in its tree (a zone's anchor, a thing's point), else its spawn."""
+    last: str | None = None
+    for node, port in navigation_targets(agent.tree):
+        if node.node == "FollowVelocityField":
+            break
+        last = place_at(node, port)
+    if last is None:
+        return agent.start
+    try:
+        place = world.find(last)
+    except Exception:
+        return agent.start
+    point = place.interaction_point if isinstance(place, Entity) else \
+        place.position if isinstance(place, Door) else place.anchor
+    free = grid.nearest_free(float(point[0]), float(point[1]), max_dist=2.0)
+    return agent.start if free is None else (float(free[0]), float(free[1]))
+
+
 def _with_exit(tree: DraftNode, exit_name: str) -> DraftNode:
     """Every FollowVelocityField of the agent's tree leads to the agent's exit."""
     ports = dict(tree.ports)
@@ -906,7 +926,9 @@ def _assign_exits(world: World, grid: OccupancyGrid, groups: Sequence[GroupPlan]
         return
     exits = {d.name: d for d in world.exits()}
     doors = {name: exits[name] for name in exit_names}
-    starts = [a.start for a in evacuees]
+    # where each sets off along the field: its spawn, or the place its tree walks to first ("hurry to the
+    # south entrance hall" then out: the exit nearest to that hall, not back past where they came from)
+    starts = [_field_start(world, grid, a) for a in evacuees]
     try:
         planner = ThetaStarPlanner(grid, landmarks=0)
         if how == "least_congested":

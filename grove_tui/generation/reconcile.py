@@ -475,6 +475,11 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     base = _base_intent(group)
     if base == "evacuate" and evacuation_field:
         destination = group.destination
+        if destination and not _is_exit(world, destination) and world.zone_of_place(destination):
+            # "they hurry along the screens corridor to the foyer": there, the way the sentence says (the
+            # field takes everybody to the exit nearest to them, which need not be by the foyer at all)
+            return _sequence([DraftNode("GoTo", {"target": v}) for v in group.via]
+                             + [DraftNode("GoTo", {"target": destination})])
         exit_name = destination if destination and _is_exit(world, destination) else \
             _nearest_exit(world, group.start, group.avoid)
         return DraftNode("FollowVelocityField", {"exit": exit_name})

@@ -18,7 +18,9 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
+from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
+from grove_tui.language.going_verbs import goes_to_after
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -339,8 +341,8 @@ class Clauses:
                 # What people watch is mostly a thing ("the news"), and so is what they clean where a
                 # place follows ("cleans the windows in the hallway"): a place only when the world has it.
                 end = s.phrase_end(i + 1)
-                thing = role == "obj:seen" or (v in lx.THING_OR_PLACE_VERBS and end < s.n
-                                               and s.preposition(end) is not None)
+                thing = role == "obj:seen" or ((v in lx.THING_OR_PLACE_VERBS or left_thing(s, i)) and end < s.n
+                                               and s.preposition(end) is not None)  # "left a bag by the door"
                 place = self.places.phrase(i + 1, role, i, record_unknown=not thing)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                     c.places.append(place)
@@ -419,7 +421,7 @@ class Clauses:
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
-                                                                                  "way", "to")):
+                                                                                  "way", "to", "for")):
                     continue
                 candidates.append((i, kind, v))
         if any(s.w[i].pos == "VERB" and s.w[i].lemma not in ("be", "have") and i not in used for i in own):
@@ -443,8 +445,8 @@ class Clauses:
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]
-                if wanted == "wander" and has_destination and "walk" not in kinds[:kinds.index(wanted)] \
-                        and not around_after(s, i):
+                if wanted == "wander" and has_destination and not around_after(s, i) and \
+                        ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)):
                     return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
                 return wanted, verb, i
         i, kind, verb = candidates[0]

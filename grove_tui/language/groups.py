@@ -36,6 +36,9 @@ from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
 # Words after an existential "there" ("there are ten people"), which points at no place.
 _EXISTENTIAL = frozenset("is are was were 's be will must may might seems seem has have".split())
+# Prepositions that send people somewhere with no verb of motion ("... to the exit"); "inside" with no
+# such verb is where they are ("two kids play inside the toy store").
+_SENDING = (lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS) - {"inside"}
 
 
 @dataclass
@@ -369,6 +372,8 @@ class Groups:
         wait = c.wait_seconds
         if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
             wait = scene.wait_seconds
+        if intent == "wait" and wait and location and destination and start is None:
+            start = location  # "waits at the kiosk for 10 minutes, then heads to the shop": it sets off from there
         confidence = count_confidence(s, m, count) + place_confidences(
             {"start": start, "destination": destination, "location": location}, via, roles.read_from)
         if robot is not None and c.robot is None:
@@ -395,7 +400,7 @@ class Groups:
         # only a place they are sent to ("... to the exit") makes them walk. A way taken ("push a bed
         # along the corridor") is walking too. So is being the doer of a passive whose subject is a
         # destination ("the desk is approached by").
-        sends = any(p.prep in lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS or p.prep == "obj:dest"
+        sends = any(p.prep in _SENDING or p.prep == "obj:dest"
                     for p in c.places) or (scene is not None and any(p.prep == "obj:dest" for p in scene.places))
         return "walk" if sends or c.robot else "wait"
 

@@ -26,6 +26,9 @@ _SMELLS = frozenset("burning smoke gas fumes fire petrol chemicals".split())
 _SOUNDING = frozenset("go goes went going gone sound sounds sounded sounding ring rings rang ringing "
                       "blare blares blaring trigger triggers triggered wail wails wailing".split())
 _ALARMS = frozenset({"alarm", "alarms", "siren", "sirens", "bell", "bells"})
+# A bell is an alarm only when said as one ("the fire bell", "alarm bells"): "when the bell goes at
+# 8 pm" ends visiting time or a lesson, and people then walk out.
+_BELL_ALARMS = frozenset("fire alarm alarms emergency evacuation warning".split())
 # Things that fail into a hazard ("a burst pipe", "a burst water main").
 _BURST = frozenset({"pipe", "pipes", "main", "mains", "boiler", "tank"})
 # Heads of phrases that name a room, not a thing: a cause said in one is still a place to refuse (the
@@ -51,6 +54,8 @@ def cue(s: Sentence, i: int) -> bool:
         return w != "burning" or (i >= 2 and low[i - 2].startswith("smell"))  # "smell of burning"
     if w.startswith("smell") and (nxt in _SMELLS or (nxt == "of" and after in _SMELLS)):
         return True
+    if w in ("bell", "bells") and not (i > 0 and low[i - 1] in _BELL_ALARMS):
+        return False
     if w in _ALARMS and (nxt in _SOUNDING or (nxt in ("is", "are", "has", "have", "starts", "start") and after in _SOUNDING)):
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):

@@ -10,6 +10,7 @@ from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
 from grove_tui.language.people import People
 from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
+from grove_tui.language.robot_modals import before_obligation
 from grove_tui.language.school_classes import named_class
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
@@ -17,6 +18,9 @@ from grove_tui.language.tokens import verb_lemma
 
 # Words after "until" that name someone who is there, when they take someone along or walk ("... until a
 # guard takes her to the desk"), not "until someone collects them" nor "until a nurse calls them".
+# Arriving with nowhere said after "until": the one waited for ("until her son turns up").
+_ARRIVING = frozenset("arrive come turn show appear return emerge".split())
+_ARRIVING_TAILS = frozenset("up back out along round over in".split())
 _SOMEONE_NAMED = frozenset({"a", "an", "the", "her", "his", "their", "its", "two", "three", "four"})
 
 
@@ -25,13 +29,27 @@ def nobody_after_subordinator(s: Sentence, at: int) -> bool:
     collects them", "if anyone asks"); after "until", a person said with an article is somebody ("...
     cries near the toy store until a guard takes her to the information desk")."""
     p = at - 1
+    if p >= 1 and s.low[p] in _SOMEONE_NAMED and s.low[p - 1] == "until" and _waited_for(s, at):
+        return True  # "... until her son turns up"
     if s.w[p].pos != "SCONJ" or s.low[p] in lx.CLAUSE_STARTERS:
         return False
     if s.low[p] != "until" or s.low[at] not in _SOMEONE_NAMED:
         return True
     verb = next((k for k in range(at + 1, min(at + 5, s.n)) if s.w[k].pos in ("VERB", "AUX")), None)
+    if _waited_for(s, at):
+        return True
     return verb is None or not (verb_lemma(s.low[verb]) in lx.LEADING_VERBS  # not "until a nurse calls them"
                                 or lx.INTENT_VERBS.get(verb_lemma(s.low[verb])) == "walk")
+
+
+def _waited_for(s: Sentence, at: int) -> bool:
+    """Whether the people at `at`, after "until", only arrive, nowhere said ("until her son turns
+    up", "until their mum comes back"): whom the others wait for, no group of the scene."""
+    verb = next((k for k in range(at + 1, min(at + 5, s.n)) if s.w[k].pos in ("VERB", "AUX")), None)
+    if verb is None or verb_lemma(s.low[verb]) not in _ARRIVING:
+        return False
+    end = s.skip(verb + 1, _ARRIVING_TAILS)
+    return end >= s.n or s.is_punct(end) or (s.low[end] in lx.CLAUSE_STARTERS and s.low[end] not in ("and", "then"))
 
 
 class PeopleObjects:
@@ -121,7 +139,7 @@ class PeopleObjects:
             return None
         if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
             return None  # "the robot is followed by two children": a passive, the people's own clause
-        k = p - 1
+        k = before_obligation(s, p)  # "the robot is meant to follow", "the robot should follow"
         while k > 0 and s.w[k].pos == "ADV":
             k -= 1  # "the robot slowly escorts"
         robot = s.low[k] in lx.ROBOT_WORDS or (s.low[k] == "it" and any(w in lx.ROBOT_WORDS for w in s.low[:k])) \

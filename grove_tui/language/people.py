@@ -18,6 +18,7 @@ from grove_tui.language.role_words import abbreviated_role, abbreviation_label, 
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.singular_verbs import subject_of_a_later_verb
 from grove_tui.language.sequences import acting_as_verb
 from grove_tui.language.spelling import near_person_noun
 from grove_tui.language.thing_modifiers import modifies_a_thing
@@ -281,6 +282,10 @@ class People:
             if after is not None and after < s.n and self.is_person_noun(after):
                 k = after  # "night-shift workers", "year 6 pupils": what kind, no count
                 continue
+            if k + 2 < s.n and s.joins(k + 1) and s.w[k].pos in ("NOUN", "ADJ", "ADV") and self.is_person_noun(k + 2) \
+                    and s.lemma(k + 2) not in lx.IMPLIED_RANGES and not (k + 3 < s.n and self.is_person_noun(k + 3)):
+                k += 2  # "some 25 well-wishers", "two day-trippers": one word, hyphenated
+                continue
             person = self.is_person_noun(k)
             if person and self._does_only_what_things_do(k):
                 return None  # "two fans whir in the server room"
@@ -468,7 +473,7 @@ class People:
         known_verb = verb_lemma(nxt) in lx.INTENT_VERBS or verb_lemma(nxt) in lx.HUMAN_SUBJECT_VERBS
         return (s.w[k + 1].tag in ("VBZ", "VBP", "VBD") or s.w[k + 1].dep == "ROOT" or self.third_person_verb(k + 1)
                 or (known_verb and (nxt != verb_lemma(nxt) or s.verbless(k)))  # "Mum and Dad nap"
-                or nxt in ("is", "are", "was", "were"))
+                or nxt in ("is", "are", "was", "were") or subject_of_a_later_verb(s, k))
 
     def label(self, head: int | None) -> str:
         """The short label of the people a phrase names ("nurse", "au pair"); "person" for words that

@@ -10,6 +10,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
+from grove_tui.language.robot_manner import manner_reaction
 from grove_tui.language.robot_motion import motion_reaction_before
 from grove_tui.language.tokens import verb_lemma
 
@@ -62,6 +63,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         chosen = later_reaction(chosen, found)  # "waves at the robot and follows it": follow
     if chosen is not None:
         return chosen
+    if (manner := manner_reaction(s, own, robot_at)) is not None:
+        return manner  # "edges warily past the robot", "plant themselves where the robot wants to go"
     if any(_refused(s, own, r) for r in robot_at):
         return "block"  # "won't let it pass", "won't budge for the robot"
     if any(_kept_from_passing(s, r) for r in robot_at):
@@ -179,7 +182,8 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
         # any verb of walking or roaming, known or only tagged a verb by the parser ("waddle over to it",
         # "a toddler crawls towards the robot")
         v = s.verb(i)
-        if lx.INTENT_VERBS.get(v) in ("walk", "wander") or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS):
+        if lx.INTENT_VERBS.get(v) in ("walk", "wander") or (s.w[i].pos == "VERB" and v not in lx.INTENT_VERBS
+                                                             and lx.ROBOT_VERBS.get(v) != "look"):  # "waves to it"
             for tail in lx.ROBOT_APPROACH_TAILS:
                 if s.phrase_words(i + 1, len(tail), ownset) == tail:
                     return "approach"  # "the twins toddle up to the robot"

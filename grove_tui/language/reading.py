@@ -34,9 +34,12 @@ from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
+from grove_tui.language.event_causes import without_causers
 from grove_tui.language.groups import Groups
 from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
+from grove_tui.language.singular_verbs import as_singular_verbs
+from grove_tui.language.age_nouns import with_age_heads
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.pairs import joined_pairs
@@ -75,14 +78,15 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
-    words = as_verbs(parse(text))  # "the carers in the lounge leg it": a verb, not "lounge leg"
+    text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
+    words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
-        text, words = active, as_verbs(parse(active))
+        text, words = active, as_singular_verbs(as_verbs(parse(active)))
     corrected, corrections = correct_places(text, words, index)
     if corrections:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
-        text, words = corrected, as_verbs(parse(corrected))
+        text, words = corrected, as_singular_verbs(as_verbs(parse(corrected)))
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
@@ -96,7 +100,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_asides(s, finder.find()))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_causers(s, without_asides(s, finder.find())))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

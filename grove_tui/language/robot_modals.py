@@ -30,3 +30,15 @@ def obligation_verb(s: Sentence, j: int) -> int | None:
         if words == phrase and s.verb_follows(end):
             return end
     return None
+
+
+def before_obligation(s: Sentence, verb: int) -> int:
+    """The word before an obligation phrase or a modal that ends right before the verb at `verb`
+    ("the robot is meant to follow", "the robot should follow": the robot's word); `verb - 1`
+    when none does."""
+    for j in range(max(0, verb - 3), verb):
+        if obligation_verb(s, j) == verb:
+            return j - 1
+    if verb >= 1 and s.w[verb - 1].tag == "MD":
+        return verb - 2  # "should", "must", "will"
+    return verb - 1

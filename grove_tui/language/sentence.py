@@ -153,6 +153,9 @@ class Sentence:
             return "down", 1
         if w == "round" and i + 1 < self.n and (low[i + 1] in lx.DETERMINERS or self.index.knows(lemma(low[i + 1]))):
             return "around", 1  # "gather round the whiteboard"
+        if w == "over" and i + 2 < self.n and low[i + 1] in lx.DETERMINERS and self.index.knows(lemma(low[i + 2])) \
+                and not (i > 0 and lx.INTENT_VERBS.get(verb_lemma(low[i - 1])) in ("walk", "evacuate")):
+            return "at", 1  # "hunched over the reception desk", "leaning over desk 9": at it, not across it
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "out", 1  # "head out the back", "walk out the front door"
         if w == "between" and not any(low[x] == "and" for x in range(i + 2, min(i + 8, self.n))):

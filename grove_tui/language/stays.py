@@ -29,6 +29,8 @@ _WHOLE_NOUNS = frozenset("run scenario simulation session shift time duration ep
 _WHOLE_WORDS = frozenset({"whole", "entire", "full"})
 # "until closing", "till the end", "until close": the scenario's end.
 _UNTIL = frozenset({"until", "till", "til", "untill"})
+# "make a coffee last half an hour": making a thing last as long as one stays.
+_MAKING = frozenset({"make", "makes", "made", "making"})
 _ENDS = frozenset({"closing", "close", "end", "finish", "closing-time", "home-time", "lights-out"})
 
 
@@ -77,6 +79,9 @@ def stay_said_alone(s: Sentence, k: int) -> tuple[float | None, int] | None:
                 j += 2 + (low[j + 1] == "the")  # "till the end of the run"
             return None, j
         return None
+    if low[k] in ("last", "lasts") and any(low[x] in _MAKING for x in range(max(0, k - 5), k)):
+        dur = duration_at(s, k + 1)  # "makes one cuppa last 40 minutes": a stay that long
+        return (dur[0], dur[1]) if dur is not None else None
     if low[k] == "throughout" and (k + 1 >= s.n or s.is_punct(k + 1)):
         return None, k + 1
     if tuple(low[k:k + 3]) == ("all", "the", "time"):

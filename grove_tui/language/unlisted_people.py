@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 from grove_tui.language import lexicon as lx
 from grove_tui.language.aspect_verbs import governed_verb
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
+from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
     from grove_tui.language.places import PlaceIndex
@@ -32,7 +33,19 @@ def _people_verb(s: Sentence, head: int) -> bool:
     head = governed_verb(s, head)  # "Stan keeps following it": what he does is following
     verb = s.verb(head)
     return s.w[head].pos == "VERB" and verb not in lx.THING_VERBS and (
-        verb in lx.INTENT_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or verb in lx.PEOPLE_GOING_VERBS)
+        verb in lx.INTENT_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or verb in lx.PEOPLE_GOING_VERBS
+        or verb in lx.LEADING_VERBS)  # "an auxiliary wheels Mrs Bello"
+
+
+# Words after a verb the lexicon lacks that say it is a way of going, said of a name ("Sam waddles
+# after the robot"; not "an HGV reverses into bay 2").
+_GOING_AFTER = frozenset("after to towards toward into over across along up down round around through past behind "
+                         "off away back out".split())
+
+
+def going_by_way(s: Sentence, v: int) -> bool:
+    """Whether verb v, one the lexicon lacks, is a way of going by the word after it."""
+    return verb_lemma(s.low[v]) == s.low[v] and v + 1 < s.n and s.low[v + 1] in _GOING_AFTER
 
 
 def _a_thing(s: Sentence, lem: str) -> bool:
@@ -46,14 +59,15 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     word = s.w[i]
     # (A subject the parser tags an adjective is a noun it does not know: "a nervous postgrad leaves".)
     if word.pos not in ("NOUN", "PROPN", "ADJ") or word.dep != "nsubj" or word.head == i or \
-            not s.low[i].isalpha() or len(s.low[i]) < 3 or not _people_verb(s, word.head):
+            not s.low[i].isalpha() or len(s.low[i]) < 3 or not (_people_verb(s, word.head) or (
+                going_by_way(s, word.head) and word.tag == "NNP" and (i == 0 or s.low[i - 1] not in _OPENERS))):
         return False
     if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
         return False
     first = i
-    while first > 0 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
-            s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ"):
-        first -= 1  # "an airline rep", "two burly roadies"
+    while first > 0 and s.w[first - 1].head == i and (s.joins(first - 1) or s.w[first - 1].dep in ("compound", "amod")
+                                                      and s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ")):
+        first -= 1  # "an airline rep", "two burly roadies", "some 20 well-wishers"
     if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
         return False  # "the robot hums ...": the robot's verb, tagged a noun
     if word.tag != "NNP" and any(s.low[k] in lx.PERSON_NOUNS or s.lemma(k) in lx.PERSON_NOUNS for k in range(first, i)):

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import ACTIVITY_PHRASES
+from grove_tui.language.going_verbs import THING_TAKING_VERBS, carries_a_thing_to, more_verb_intent
 from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
@@ -88,7 +89,7 @@ def verb_intent(s: Sentence, i: int) -> str | None:
         return "walk"
     if b in PUSHING_VERBS and any(s.lemma(k) in lx.CARRYING_THINGS for k in range(i + 1, min(i + 5, s.n))):
         return "walk"  # "pushes a pram to the café", "a porter pulls a trolley"
-    return None
+    return more_verb_intent(s, i)  # "mooch around", "takes her lunch to the lounge"
 
 
 def phrasal_intent(s: Sentence, i: int) -> tuple[tuple[str, ...], str] | None:
@@ -96,6 +97,8 @@ def phrasal_intent(s: Sentence, i: int) -> tuple[tuple[str, ...], str] | None:
     first = {verb_lemma(s.low[i]), s.verb(i)}
     for phrase, intent in PHRASAL_INTENTS.items():
         if phrase[0] in first and tuple(s.low[i + 1:i + len(phrase)]) == phrase[1:]:
+            if phrase[0] in THING_TAKING_VERBS and carries_a_thing_to(s, i):
+                return None  # "takes her lunch to the lounge": going there with it, not a lunch break
             if phrase[-1] in _AROUND and i + len(phrase) < s.n and s.low[i + len(phrase)] in _ON_TO:
                 continue  # "walks round to the bar": going there the way round, not wandering about
             return phrase, intent

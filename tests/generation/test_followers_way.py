@@ -26,8 +26,10 @@ def test_the_robot_leads_its_followers_where_they_follow_it_and_they_arrive(tmp_
     assert claims["reach"].place == "computer_lab"
     report = run.run(claims["reach"].needs_seconds or 120.0)
     checked = {c.kind: c for c in report.groups[0].claims}
-    assert report.robot.claims[0].status == HOLDS, report.robot.claims[0].evidence
+    assert all(c.status == HOLDS for c in report.robot.claims), [c.evidence for c in report.robot.claims]
     assert checked["robot_follow"].status == HOLDS, checked["robot_follow"].evidence
     assert checked["reach"].status == HOLDS, checked["reach"].evidence
-    (robot_reach,) = run.report.robot.claims
-    assert robot_reach.kind == "robot_reach" and robot_reach.place == "computer_lab"
+    # the reader gives the robot the followers' way ("from the foyer", "to the computer lab"), so it is
+    # claimed to start in the one and reach the other
+    places = {c.place for c in run.report.robot.claims if c.kind == "robot_reach"}
+    assert "computer_lab" in places

@@ -1,0 +1,66 @@
+"""Verbs of going the lexicon's lists read as waiting or wandering (round 18).
+
+- "make for the café" is going there, as "head for" is;
+- "takes her lunch to the staff room", "hauls the shopping through to the car park": taking a thing
+  (not a person: someone moved by another is read elsewhere) to a place is the person walking there;
+- a verb of wandering with where it goes ("strolls over to", "ambles across to", "wanders over to
+  the pond") is a slow walk there, even after another verb of going ("steps out and strolls over
+  to ..."); "mooch around", "potter about" stay wandering.
+"""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.sentence import Sentence
+
+# Verbs of wandering the lexicon lacks ("mooch around the galleries").
+MORE_WANDER_VERBS = frozenset("mooch mosey moseys mooching moseying mooched".split())
+# Verbs of taking a thing along whose object is a thing carried, not a way ("takes her lunch to").
+THING_TAKING_VERBS = frozenset("take cart ferry wheel tote".split())
+# Particles between a verb of going and "to" ("strolls over to", "ambles across to", "through to").
+_PARTICLES = frozenset("over across up down along back through round around off on out".split())
+_TO = frozenset({"to", "into", "towards", "toward", "onto"})
+_OBJECT_PRONOUNS = frozenset({"him", "them", "us", "me", "you", "everyone", "everybody"})
+
+
+def more_verb_intent(s: Sentence, i: int) -> str | None:
+    """The intent of a verb of going the lexicon lacks: "mooch" wanders; "take THING to X" walks."""
+    v = s.verb(i)
+    if v in MORE_WANDER_VERBS or s.low[i] in MORE_WANDER_VERBS:
+        return "wander"
+    if v in THING_TAKING_VERBS and carries_a_thing_to(s, i):
+        return "walk"
+    return None
+
+
+def carries_a_thing_to(s: Sentence, i: int) -> bool:
+    """Whether the verb at i takes a thing (no person) to a place: "takes her lunch to the lounge",
+    "takes the post through to reception"."""
+    k = i + 1
+    if k >= s.n or s.low[k] in _OBJECT_PRONOUNS or (s.low[k] == "her" and s.w[k].tag == "PRP"):
+        return False
+    if any(s.w[x].head == i and s.w[x].dep.startswith("nsubj") and s.low[x] in lx.ROBOT_WORDS for x in range(i)):
+        return False  # "the robot takes clean sheets to the spa": the robot's own task
+    seen_noun = False
+    for x in range(k, min(k + 6, s.n)):
+        w = s.low[x]
+        if w in _TO and s.low[x - 1] in ("next", "close", "up", "due"):
+            return False  # "takes a seat next to the window": where, not whither
+        if w in _TO or (w in _PARTICLES and x + 1 < s.n and s.low[x + 1] in _TO):
+            to = x if w in _TO else x + 1
+            return seen_noun and not s.verb_follows(to + 1)
+        if s.is_punct(x) or s.lemma(x) in lx.PERSON_NOUNS or w in lx.PERSON_NOUNS:
+            return False
+        seen_noun = seen_noun or s.w[x].pos in ("NOUN", "PROPN")
+    return False
+
+
+def goes_to_after(s: Sentence, i: int) -> bool:
+    """Whether the verb at i goes to somewhere right after it, past adverbs and one particle
+    ("strolls over to the pond", "ambles slowly across to the café", "wanders into the shop")."""
+    k = i + 1
+    while k < s.n and s.w[k].pos == "ADV" and s.low[k] not in _PARTICLES:
+        k += 1
+    if k < s.n and s.low[k] in _PARTICLES and k + 1 < s.n and s.low[k + 1] in _TO:
+        k += 1
+    return k < s.n and s.low[k] in _TO and not s.verb_follows(k + 1)

@@ -1,0 +1,20 @@
+"""Imperatives that place people, said with a verb the parser takes for a noun (round 18): "Post a
+trio of doormen at the steps and one more by the staff door", "Station two guards at reception",
+"Stick four pickers in the canteen". At the start of a sentence and before a count or a determiner
+they are "Put", so both groups are read as any "Put ... and ..." is.
+"""
+
+from __future__ import annotations
+
+import re
+
+from grove_tui.language import lexicon as lx
+
+_NUMBER = "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True))
+_PLACING = re.compile(r"(^|[.!?;:]\s+)(?:post|station|stick|plonk|plant|stand|stage|park|seat|sit)\s+"
+                      r"(?=(?:a|an|some|\d+|" + _NUMBER + r")\b)", re.IGNORECASE)
+
+
+def placing_verbs(text: str) -> str:
+    """The text with a placing imperative at a sentence's start written "Put" (see the module doc)."""
+    return _PLACING.sub(lambda m: f"{m.group(1)}Put ", text)

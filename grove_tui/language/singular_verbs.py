@@ -1,0 +1,90 @@
+"""Verbs the small parser takes for plural nouns after one person (round 19): "a new hire heads over
+from the lobby", "a care assistant ambles over to the lounge", "counsel for the claimant heads to
+court 2", "Sam, our toddler, waddles after the robot". Read as nouns, "hire heads" is a crowd of
+heads and the person is lost; read by its place, an "-s" word right after a singular noun phrase
+(opened by "a", "an", "one", "the", a possessive or a name, with no verb before it in its sentence)
+and followed by a preposition, an adverb, a determiner, a name, a number or the end is the phrase's
+verb, and the phrase is its one subject."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from grove_tui.language.parser import Word
+from grove_tui.language.tokens import verb_lemma
+
+if TYPE_CHECKING:
+    from grove_tui.language.sentence import Sentence
+
+_SINGULAR = frozenset({"NN", "NNP", "JJ"})
+_AFTER = frozenset({"ADP", "ADV", "DET", "PROPN", "PRON", "NUM", "PART", "PUNCT"})
+_SUBJECT_WORDS = frozenset({"DET", "ADJ", "NOUN", "PROPN", "NUM", "ADP", "PUNCT", "PRON"})
+
+
+def _verb_form(w: Word) -> bool:
+    low = w.lower
+    if w.pos != "NOUN" or w.tag != "NNS" or not low.isalpha() or len(low) < 4 or not low.endswith("s") or \
+            low.endswith(("ss", "us", "is")):
+        return False
+    return verb_lemma(low) != low or w.dep == "ROOT"  # a verb the lexicon knows, or the parse's own root
+
+
+def _taken_for_noun(words: list[Word], k: int) -> bool:
+    w = words[k]
+    if k == 0 or not _verb_form(w):
+        return False
+    before = [x for x in words[:k] if x.sentence == w.sentence]
+    if not before or any(x.pos not in _SUBJECT_WORDS for x in before):
+        return False  # a verb before it: "they wait by the taxi ranks"
+    if any(x.tag in ("NNS", "NNPS") or (x.pos == "NUM" and x.lower != "one") for x in before):
+        return False  # more than one said before: "nine members queue at reception for their day passes"
+    prev = words[k - 1]
+    subject = any(x.dep == "nsubj" and x.head == k for x in before)
+    if not subject and (prev.pos not in ("NOUN", "PROPN", "ADJ") or prev.tag not in _SINGULAR):
+        return False
+    nxt = words[k + 1] if k + 1 < len(words) and words[k + 1].sentence == w.sentence else None
+    return nxt is None or nxt.pos in _AFTER
+
+
+def as_singular_verbs(words: list[Word]) -> list[Word]:
+    """The parse with the verb of one person, taken for a plural noun, tagged a verb (module doc)."""
+    out = list(words)
+    for k, w in enumerate(words):
+        if not _taken_for_noun(out, k):
+            continue
+        base = verb_lemma(w.lower)
+        if base == w.lower:
+            base = w.lemma if w.lemma != w.lower else w.lower[:-1]
+        subject = any(x.dep == "nsubj" and x.head == k for x in out[:k])
+        root = next((j for j, x in enumerate(out) if x.sentence == w.sentence and x.dep == "ROOT"), k)
+        out[k] = replace(w, pos="VERB", tag="VBZ", lemma=base, dep="ROOT", head=k)
+        if subject:
+            continue  # "Sam, our toddler, waddles": the parser found the subject
+        prev = out[k - 1]
+        if root == k:  # "a care assistant ambles": the noun before is the subject
+            for j in range(k - 1):
+                if out[j].head == k and out[j].sentence == w.sentence:
+                    out[j] = replace(out[j], head=k - 1)
+            out[k - 1] = replace(prev, dep="nsubj", head=k)
+        else:  # "counsel for the claimant heads": the phrase's root is the subject
+            for j in range(k - 1):
+                if out[j].head == k and out[j].sentence == w.sentence:
+                    out[j] = replace(out[j], head=k - 1)
+            out[k - 1] = replace(prev, dep=w.dep, head=w.head)
+            out[root] = replace(out[root], dep="nsubj", head=k)
+    return out
+
+
+def subject_of_a_later_verb(s: Sentence, k: int) -> bool:
+    """Whether person word k is the parser's subject of a verb said after an aside or a phrase
+    about them ("Sam, our toddler, waddles ...", "counsel for the claimant heads ..."): one person
+    named, though no verb follows the word itself."""
+    w = s.w[k]
+    v = w.head
+    if w.dep != "nsubj" or v <= k + 1 or v - k > 8 or s.w[v].pos not in ("VERB", "AUX") or k + 1 >= s.n:
+        return False
+    if s.low[k + 1] != "," and s.w[k + 1].pos != "ADP":
+        return False
+    return all(s.w[j].pos not in ("VERB", "AUX") and s.low[j] not in ("and", "or", "while", "as")
+               for j in range(k + 1, v))
