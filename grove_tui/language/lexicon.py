@@ -240,7 +240,7 @@ PLURAL_PERSONAL_PRONOUNS = frozenset("they them their theirs themselves".split()
 HUMAN_SUBJECT_VERBS = frozenset("chat talk converse gossip discuss argue debate socialise socialize greet "
                                 "queue stroll wander amble saunter meander browse mill stare gaze glance gawk "
                                 "chat giggle laugh smile chatter whisper sip eat drink shop hurry sprint jog "
-                                "tiptoe limp hobble shuffle nap doze snooze".split())
+                                "tiptoe limp hobble shuffle nap doze snooze bicker squabble quarrel".split())
 # Verbs of things, not people: a counted noun no list names that does only these is no group
 # ("two posters hang in the lobby", "three clocks tick", "four lamps light the hall").
 THING_VERBS = frozenset("hang tick light glow shine flash beep buzz hum whir whirr display show cover line decorate "
@@ -282,7 +282,8 @@ for _intent, _verbs in {
     "queue": "queue line queueing",
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
             "snooze spend scatter spread dot",
-    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter",
+    "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter "
+                "bicker squabble quarrel wrangle",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
               "mop sweep vacuum hoover scrub tidy clean tour",
     "follow": "follow accompany escort trail shadow",
@@ -304,7 +305,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
     ("hang", "out"): "wait", ("hang", "around"): "wait", ("hang", "about"): "wait",
     ("hang", "round"): "wait", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
-    ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait",
+    ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait", ("have", "words"): "converse",
     ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",
     ("join", "the", "back"): "queue", ("check", "in"): "queue", ("in", "conversation"): "converse",
     ("in", "line"): "queue", ("in", "a", "line"): "queue", ("in", "a", "queue"): "queue", ("in", "the", "queue"): "queue",
@@ -393,7 +394,7 @@ ROBOT_COMMAND_VERBS = frozenset("send have let make get tell ask order direct pr
 # verb lemma -> interaction when the robot is its object ("stares at the robot").
 ROBOT_VERBS: dict[str, str] = {}
 for _interaction, _verbs in {
-    "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave",
+    "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave gape gawp",
     "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap "
                 "ask talk chat speak question consult query hail thank crowd surround encircle swarm mob",
     "follow": "follow trail chase shadow tail pursue",
@@ -456,7 +457,8 @@ ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s"
 ROBOT_FEELINGS: dict[str, str] = {
     "curious": "approach", "curiosity": "approach", "interested": "approach", "fascinated": "approach",
     "scared": "avoid", "afraid": "avoid", "frightened": "avoid", "fearful": "avoid", "nervous": "avoid",
-    "wary": "avoid", "surprised": "look", "startled": "look", "amazed": "look", "astonished": "look",
+    "wary": "avoid", "surprised": "look", "startled": "look", "amazed": "look", "astonished": "look", **dict.fromkeys(
+        "astonishment amazement surprise awe wonder wonderment disbelief".split(), "look"),
     "hostile": "block", "aggressive": "block", "threatening": "block", "angry": "block",
 }
 # HuNavSim behavior types for each robot interaction.

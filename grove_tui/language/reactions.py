@@ -7,6 +7,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.disregard import disregards
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
@@ -44,6 +45,7 @@ def robot_positions(s: Sentence, own: Sequence[int], robot_after: int | None) ->
 def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) -> str | None:
     """The interaction a clause's words give the robot it names: phrases, then verbs, then nouns,
     then feelings ("scared of the robot"), then anything aimed "at" it ("gawk at the robot")."""
+    robot_at = [r for r in robot_at if not disregards(s, own, r)]  # "not giving it a second glance"
     if not robot_at:
         return None
     ownset = set(own)

@@ -21,6 +21,7 @@ from grove_tui.language.model import FieldConfidence, RobotReading
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.robot_asides import after_aside
 from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
@@ -117,6 +118,7 @@ class RobotClauses:
         while j < s.n and (s.w[j].pos == "ADV" or s.w[j].tag == "MD" or low[j] in ("then", "also", "now", "first")) \
                 and not s.is_punct(j):
             j += 1
+        j = after_aside(s, j)  # "the robot, meanwhile, keeps patrolling"
         if j >= s.n or s.is_punct(j):
             return None
         if command:

@@ -1,7 +1,8 @@
 """Reactions to the robot said by a manner or a situation (round 19). Avoiding it: going past it in a
 wary manner ("edges warily past the robot", "creeps nervously by it"), or keeping something between
 oneself and it ("keeping the dryers between herself and it"). Blocking it: standing where the robot
-wants to go ("deliberately plant themselves where the robot wants to drive")."""
+wants to go or is going ("deliberately plant themselves where the robot wants to drive", "plants his feet
+right where the robot is heading")."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
 
 # Manners of wariness: going past the robot like this is keeping clear of it.
 _WARY = frozenset("warily nervously cautiously gingerly timidly anxiously fearfully apprehensively "
@@ -19,6 +21,7 @@ _SELVES = frozenset("herself himself themselves itself myself ourselves yourself
 _WANTING = frozenset("want wants wanted wanting need needs needed needing try tries tried trying mean means "
                      "meant intend intends intended has have had".split())
 _GOING = frozenset("go drive pass move get roll travel head cross come through".split())
+_UNDER_WAY = frozenset("is are was 's".split())  # "where the robot is heading": its way, going now
 
 
 def _robot_word(s: Sentence, k: int) -> bool:
@@ -47,7 +50,10 @@ def _where_it_goes(s: Sentence, ownset: set[int], r: int) -> bool:
     if k < 1 or s.low[k - 1] != "where":
         return False
     after = [s.low[j] for j in range(r + 1, min(s.n, r + 5))]
-    return any(w in _WANTING for w in after[:2]) and any(w in _GOING for w in after[1:])
+    going = [verb_lemma(w) in _GOING for w in after]
+    if len(after) >= 2 and after[0] in _UNDER_WAY and after[1].endswith("ing") and going[1]:
+        return True  # "where the robot is heading", "where it is going"
+    return any(w in _WANTING for w in after[:2]) and any(going[1:])
 
 
 def manner_reaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) -> str | None:
