@@ -29,6 +29,7 @@ from grove_tui.language.named_owners import owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in
 from grove_tui.language.places import PlaceMatch
+from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
 
@@ -94,8 +95,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
-        if elided and self.owner and \
-                (owned := self._owned(("room",), None, self.owner)) is not None:
+        if elided and self.owner and (owned := self._owned(("room",), None, self.owner)) is not None:
             # "the guards drink tea in their room while the director works in hers": her own room
             self.context_zones.append(owned[0].zone)
             if mentioned:
@@ -359,8 +359,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                     phrase.append(w)  # "the 2 platform", "the 1 exam room": the number of a name, said first
                     j += 1
                     continue
-                if not phrase or (any(ch.isdigit() for ch in phrase[-1]) and j + 1 < s.n
-                                  and self.people.is_person_noun(j + 1)):
+                if (not phrase and not bare_room_number(s, j, self.people.is_person_noun)) or (phrase and any(  # "to 103"
+                        ch.isdigit() for ch in phrase[-1]) and j + 1 < s.n and self.people.is_person_noun(j + 1)):
                     break  # "at gate A1 two agents chat", "on platform 1 three commuters": a count starts
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1

@@ -63,3 +63,14 @@ def test_an_aside_between_the_robot_and_its_verb(read, world, prompt, intent):
 def test_arguing_is_talk(read, world, prompt, location):
     (g,) = read(world, prompt).groups
     assert g.intent == "converse" and g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("hotel", "A guest wanders from the lobby up to 103.", "room_103"),
+    ("hotel", "A porter heads back to 104 with the luggage.", "room_104"),
+    ("hotel", "Two guests walk from the bar across to 103.", "room_103"),
+    ("stadium", "Two fans stroll back to 101 at half time.", "block_101"),
+])
+def test_a_bare_room_number_after_to_is_the_room(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.destination == destination
