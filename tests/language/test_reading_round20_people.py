@@ -37,3 +37,16 @@ def test_a_count_with_no_noun_at_a_place_counts_people(read, world, prompt, valu
 def test_a_count_with_no_noun_and_more_keeps_both(read, world, prompt, first, more):
     counts = sorted(g.count.value for g in read(world, prompt).groups)
     assert counts == sorted([first, more])
+
+
+@pytest.mark.parametrize("world,prompt,more", [
+    ("hospital", "a few visitors queue at reception and another 3 join them", 3),
+    ("mall", "8 shoppers queue at the cafe counter and a few more arrive to queue later", None),
+    ("gp_surgery", "six patients line up at the reception desk; later, 3 more join them", 3),
+    ("airport", "five passengers queue at the security checkpoint, then another two join them", 2),
+])
+def test_people_who_join_a_queue_queue_with_it(read, world, prompt, more):
+    first, second = read(world, prompt).groups
+    assert first.intent == "queue" and second.intent == "queue"
+    assert second.relation == "more_of:0"
+    assert more is None or second.count.value == more
