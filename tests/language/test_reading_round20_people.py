@@ -50,3 +50,14 @@ def test_people_who_join_a_queue_queue_with_it(read, world, prompt, more):
     assert first.intent == "queue" and second.intent == "queue"
     assert second.relation == "more_of:0"
     assert more is None or second.count.value == more
+
+
+@pytest.mark.parametrize("world,prompt,count,destination", [
+    ("office", "the 8 developers spend twenty minutes arguing, then troop back in to the meeting room", 8, "boardroom"),
+    ("office", "the 6 interns chat for ten minutes and then troop back into the kitchen", 6, "kitchen"),
+    ("courthouse", "The 12 jurors spend an hour deliberating, then troop back in to courtroom 2", 12, "courtroom_2"),
+    ("courthouse", "the 5 barristers talk for a while and troop off to the robing room", 5, "robing_room"),
+])
+def test_a_group_verb_after_then_is_the_groups_verb(read, world, prompt, count, destination):
+    (g,) = read(world, prompt).groups
+    assert g.count.value == count and g.destination == destination
