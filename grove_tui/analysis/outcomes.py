@@ -280,6 +280,16 @@ def _when(t: float) -> str:
     return f"t = {t:.1f} s"
 
 
+def _judged_frames(t: np.ndarray, arrived: np.ndarray, seconds: float | None) -> np.ndarray:
+    """Frames x members judged for a stay or a wander: from each member's arrival on, and when the
+    sentence asks a while ("wait for 90 seconds and then walk on", "wander for two minutes") only that
+    while, since going on once it is over is what the sentence says, not a broken stay."""
+    since: np.ndarray = t[:, None] >= arrived[None, :]
+    if seconds:
+        since &= t[:, None] < arrived[None, :] + seconds
+    return since
+
+
 class _Probe(ABC):
     """Accumulates what one claim needs from the frames; `verdict` says holds/fails and the figure."""
 
@@ -453,11 +463,7 @@ class _StayProbe(_Probe):
         present = np.isfinite(f.pos[:, self.cols, 0])
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
-        since = f.t[:, None] >= self.arrived[None, :]
-        if self.claim.seconds:
-            # "wait for 90 seconds (and then walk on)": the asked wait after arriving is what is judged;
-            # leaving once it is over is what the sentence says, not a broken wait
-            since &= f.t[:, None] < self.arrived[None, :] + self.claim.seconds
+        since = _judged_frames(f.t, self.arrived, self.claim.seconds)
         self.after += (since & present).sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
@@ -517,11 +523,7 @@ class _WanderProbe(_Probe):
         # the share inside counts from arrival: walking there from elsewhere is not wandering outside
         for j in np.flatnonzero(~self.arrived & inside.any(axis=0)):
             self.arrived_at[j] = f.t[np.argmax(inside[:, j])]
-        since = f.t[:, None] >= self.arrived_at[None, :]
-        if self.claim.seconds:
-            # "wander for two minutes", "wander around ... and then walk to the cafe": the asked while after
-            # arriving is judged; walking on once it is over is what the sentence says
-            since &= f.t[:, None] < self.arrived_at[None, :] + self.claim.seconds
+        since = _judged_frames(f.t, self.arrived_at, self.claim.seconds)
         self.present += (present & since).sum(axis=0)
         self.inside_n += (inside & since).sum(axis=0)
         self.arrived |= inside.any(axis=0)
