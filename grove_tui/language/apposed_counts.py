@@ -20,11 +20,11 @@ _AFTER_VERB = lx.PLACE_PREPOSITIONS | frozenset({"round", "around", "out", "off"
 
 def collective_is_a_verb(s: Sentence, m: Mention) -> bool:
     """Whether the one-word collective mention m is the verb of the group before it ("..., 24
-    pupils, troop from ...", "4-5 kids w/ notebooks crowd round the t-rex")."""
+    pupils, troop from ...", "4-5 kids w/ notebooks crowd round the t-rex", "..., then troop back in to ...")."""
     if m.collective is None or m.first != m.last or m.first == 0 or m.last + 1 >= s.n:
         return False
     before = m.first - 1
-    return (s.low[before] == "," or s.w[before].pos in ("NOUN", "PROPN")) and s.low[m.last + 1] in _AFTER_VERB \
+    return (s.low[before] in (",", "then", "and") or s.w[before].pos in ("NOUN", "PROPN")) and s.low[m.last + 1] in _AFTER_VERB \
         and verb_lemma(s.low[m.first]) in _GROUP_VERBS
 
 

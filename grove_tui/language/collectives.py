@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.count_alone import people_by_place
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
@@ -29,6 +30,8 @@ class Collectives:
         head = self.people.person_head(after, counted=True)
         if head is None:
             # "twenty people in the cafeteria and ten in the pharmacy": the number borrows the noun
+            if not found and q.value > 0 and people_by_place(s, at, after):  # "all 9 in the lounge head to ..."
+                return Mention(at, after - 1, s.span(at, after - 1), "person", count_of(s, q, f"{at}:count"))
             if (found and q.value > 0 and after < s.n and (s.low[after] in lx.PLACE_PREPOSITIONS
                                                            or verb_lemma(s.low[after]) in lx.INTENT_VERBS
                                                            or self._state_then_place(at, after))

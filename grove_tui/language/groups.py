@@ -17,6 +17,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
 from grove_tui.language.group_counts import count_confidence, settle_count
+from grove_tui.language.joiners import joined_intent
 from grove_tui.language.leading_out import leads_out
 from grove_tui.language.list_items import own_participle
 from grove_tui.language.mention import Mention
@@ -330,6 +331,8 @@ class Groups:
             # "..., two of them students": part of the group, doing as it does; "..., 4 more at lane 1":
             # more of it somewhere else, with no verb of their own, doing the same there
             intent = earlier[int(parent)].intent
+        if kind == "more_of" and parent.isdigit() and int(parent) < len(earlier):  # "another 3 join them"
+            intent = joined_intent(s, m, earlier[int(parent)].intent) or intent
         if self.mentions.objects.led_by(m.first) and earlier and c.robot is None and \
                 earlier[-1].intent not in ("wait", "queue", "converse"):
             intent = "follow"  # "leads twelve tourists": they follow the one who leads

@@ -168,7 +168,7 @@ PERSON_NOUNS = frozenset(
  vip dignitary celebrity politician mayor minister diplomat ambassador delegate envoy representative
  spokesperson presenter host moderator panelist panellist attendee exhibitor organiser organizer
  planner coordinator volunteer helper aide assistant intern understudy deputy
- newborn infant tot kiddo youngster youth lad lass bloke chap fellow dude guy gal granny oldie widow widower
+ newborn infant tot kiddo youngster youth lad lass bloke chap fellow fella pal buddy chum dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter
  club choir troop coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
  swimmer bather skater climber boxer rower cricketer borrower reader gymnast sprinter bodybuilder learner supporter""".split()

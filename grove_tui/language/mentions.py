@@ -21,6 +21,7 @@ from grove_tui.language.counts import Quantifier, count_of, negative_at, number_
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
 from grove_tui.language.mention import Mention
+from grove_tui.language.one_name import one_name
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
 from grove_tui.language.only_people import only_people_before, the_only_mention
@@ -558,7 +559,7 @@ class Mentions:
         if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person; "Dr Patel's registrar": nobody
             return None if possessor_of_a_person(s, self.people.is_person_noun, head) else Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
-        singular = s.lemma(head) == low[head] and not self.people.plural_word(head)  # "the injured": some people
+        singular = (s.lemma(head) == low[head] or one_name(s, head)) and not self.people.plural_word(head)  # "Gladys"
         label = self.people.label(head)
         if det == "the" and any(m.label == label or s.lemma(head) == m.label != label.split("-")[-1] for m in found):
             return None  # "... one person; the person wanders around": the same people again

@@ -35,7 +35,7 @@ def _taken_for_noun(words: list[Word], k: int) -> bool:
     if k == 0 or not _verb_form(w):
         return False
     before = [x for x in words[:k] if x.sentence == w.sentence]
-    if not before or any(x.pos not in _SUBJECT_WORDS for x in before):
+    if not before or any(x.pos not in _SUBJECT_WORDS and x.tag != "POS" for x in before):  # "the porter's pal"
         return False  # a verb before it: "they wait by the taxi ranks"
     if any(x.tag in ("NNS", "NNPS") or (x.pos == "NUM" and x.lower != "one") for x in before):
         return False  # more than one said before: "nine members queue at reception for their day passes"
