@@ -276,6 +276,8 @@ class RobotClauses:
                 role = self._role(place, rc.verb, kind in ("wait", "patrol"))
                 if role == "via" and kind == "cross" and (self._stops_at(rc, place) or self._after_a_thing_gone_to(place, clause)):
                     role = "destination"  # "leaves the kitchen and is parked in the hallway", "goes to its dock in the hallway"
+                if role == "location" and kind == "patrol" and roles["location"] not in (None, name):
+                    role = "via"  # "patrols between the pharmacy and the cafeteria": its round keeps both
                 if role == "via":
                     via += [] if name in via else [name]
                 elif role == "destination" or roles[role] is None:
