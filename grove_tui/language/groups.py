@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
+from grove_tui.language.later_stops import later_words
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.joiners import joined_intent
 from grove_tui.language.leading_out import leads_out
@@ -355,7 +356,7 @@ class Groups:
             c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
                              verb_index=c.verb_index, stationary=stationary, intent=intent,
-                             then_at=[i for i in range(*span) if s.low[i] in lx.SEQUENCE_WORDS],
+                             then_at=later_words(s, *span),
                              verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
                                        and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS],
                              moves_at=[i for i in range(*span) if not s.after_determiner(i)

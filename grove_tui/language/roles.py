@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.later_stops import goes_on_after
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -58,6 +59,12 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
                 and roles.destination != name:
             # "drops a parcel at reception and leaves by the main door": reception on the way out
             # "to the café and then the pharmacy": the café on the way, the pharmacy where they end
+            roles.via.append(roles.destination)
+            roles.destination = name
+        elif role == "destination" and marked and said_to and roles.destination not in (None, name) and \
+                name not in roles.via and (gone := roles.read_from.get(roles.destination)) is not None and \
+                goes_on_after(list(then_at), gone.index, p.index):
+            # "walk to the cafeteria before going to the pharmacy": the cafeteria on the way
             roles.via.append(roles.destination)
             roles.destination = name
         elif role == "start" and (roles.start is None or _narrows(index, name, roles.start, roles)):

@@ -19,3 +19,14 @@ def test_a_patrol_between_two_places_keeps_both(read, world, prompt, location, v
     robot = read(world, prompt).robot
     assert robot is not None and robot.task == "patrol"
     assert robot.location == location and robot.via == via
+
+
+@pytest.mark.parametrize("world,prompt,destination,via", [
+    ("hospital", "Two nurses walk to the cafeteria before going to the pharmacy.", "pharmacy", ("cafeteria",)),
+    ("hospital", "A porter pushes a trolley to radiology and afterwards goes to the pharmacy.", "pharmacy", ("radiology",)),
+    ("airport", "Four passengers walk to the duty free before going to gate A2.", "gate_a2", ("duty_free",)),
+    ("airport", "A family heads to the toilets, later heading to gate A1.", "gate_a1", ("toilets",)),
+])
+def test_a_later_destination_is_where_the_group_ends(read, world, prompt, destination, via):
+    (g,) = read(world, prompt).groups
+    assert g.destination == destination and g.via == via
