@@ -42,3 +42,19 @@ def test_a_name_with_its_role_then_a_second_clause(read, world, prompt, first, s
     assert others.count.value > 1
     if second is not None:
         assert (others.start, others.destination) == second
+
+
+@pytest.mark.parametrize("world,prompt,placed,route", [
+    ("hospital", "Drop 2 security guards at reception, and have a porter wheel a bed out of radiology up to the "
+     "pharmacy.", "reception_desk", ("radiology", "pharmacy")),
+    ("hospital", "Drop three nurses in the cafeteria and have a cleaner push a trolley from the pharmacy to "
+     "radiology.", "cafeteria", ("pharmacy", "radiology")),
+    ("office", "Drop two couriers at reception, and have an intern carry boxes out of the kitchen into the "
+     "boardroom.", "reception", ("kitchen", "boardroom")),
+    ("office", "Drop a guard by the main entrance and have two cleaners push trolleys from the kitchen to the "
+     "boardroom.", "main_entrance", ("kitchen", "boardroom")),
+])
+def test_drop_people_somewhere_and_have_others_go(read, world, prompt, placed, route):
+    dropped, had = read(world, prompt).groups
+    assert dropped.location == placed and dropped.start is None
+    assert (had.start, had.destination) == route and had.intent == "walk"
