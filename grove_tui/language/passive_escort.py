@@ -56,18 +56,33 @@ def to_active(text: str, words: Sequence[Word]) -> str | None:
             continue
         first, last = _span(words, subject.i)
         taker_first, taker_last = _span(words, taker.i)
+        # "by a nurse from the canteen to ...": the route hung on the taker is not the taker's
+        taker_last = next((j - 1 for j in range(taker.i + 1, taker_last + 1) if words[j].lower in _ROUTE_WORDS),
+                          taker_last)
         between = words[last + 1:verb.i]
-        # only "is", "are being", "gets" between the taken and the verb; the "by" phrase after the route
+        # only "is", "are being", "gets" between the taken and the verb; the "by" phrase after the route,
+        # or right after the verb with the route after it ("is taken by a PCSO from X to Y")
         if not between or any(w.dep not in ("auxpass", "aux", "advmod", "neg") for w in between) or \
-                taker_first != agent.i + 1 or agent.i <= verb.i + 1 or any(w.sentence != verb.sentence for w in between):
+                taker_first != agent.i + 1 or any(w.sentence != verb.sentence for w in between):
+            continue
+        if agent.i == verb.i + 1 and not _route_follows(words, taker_last):
             continue
         singular = taker.tag in ("NN", "NNP") and not any(w.lower == "and" for w in words[taker_first:taker_last + 1])
         active = _third_person(verb.lemma) if singular else verb.lemma
         taker_text = text[words[taker_first].start:words[taker_last].end]
         taken_text = text[words[first].start:words[last].end]
-        route = text[verb.end:agent.start].rstrip()
+        route = text[verb.end:agent.start].rstrip() if agent.i > verb.i + 1 else ""
         if first == 0:  # the taker now opens the sentence; the taken's article is inside it
             taker_text = taker_text[:1].upper() + taker_text[1:]
             taken_text = taken_text[:1].lower() + taken_text[1:] if words[first].pos == "DET" else taken_text
         out = out[:words[first].start] + f"{taker_text} {active} {taken_text}{route}" + out[words[taker_last].end:]
     return None if out == text else out
+
+
+_ROUTE_WORDS = frozenset("from to into out up down across through over round around back towards toward onto".split())
+
+
+def _route_follows(words: Sequence[Word], taker_last: int) -> bool:
+    """Whether the route is said right after the taker ("... by a PCSO from the desk to the room")."""
+    nxt = taker_last + 1
+    return nxt < len(words) and words[nxt].lower in _ROUTE_WORDS and words[nxt].sentence == words[taker_last].sentence

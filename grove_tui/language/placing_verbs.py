@@ -1,6 +1,6 @@
 """Imperatives that place people, said with a verb the parser takes for a noun (round 18): "Post a
 trio of doormen at the steps and one more by the staff door", "Station two guards at reception",
-"Stick four pickers in the canteen". At the start of a sentence and before a count or a determiner
+"Stick four pickers in the canteen", "Drop 2 guards at reception". At the start of a sentence and before a count or a determiner
 they are "Put", so both groups are read as any "Put ... and ..." is.
 """
 
@@ -11,7 +11,7 @@ import re
 from grove_tui.language import lexicon as lx
 
 _NUMBER = "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True))
-_PLACING = re.compile(r"(^|[.!?;:]\s+)(?:post|station|stick|plonk|plant|stand|stage|park|seat|sit)\s+"
+_PLACING = re.compile(r"(^|[.!?;:]\s+)(?:post|station|stick|plonk|plant|stand|stage|park|seat|sit|drop|pop|chuck|bung)\s+"
                       r"(?=(?:a|an|some|\d+|" + _NUMBER + r")\b)", re.IGNORECASE)
 
 

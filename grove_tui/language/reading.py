@@ -42,6 +42,7 @@ from grove_tui.language.singular_verbs import as_singular_verbs
 from grove_tui.language.age_nouns import with_age_heads
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
+from grove_tui.language.named_roles import without_apposed_roles
 from grove_tui.language.pairs import joined_pairs
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
@@ -79,6 +80,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     index = place_index(world)
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
+    text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
