@@ -21,7 +21,7 @@ import shapely
 from grove_tui.bt.format.document import TreeDocument, TreeFiles
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
-from grove_tui.errors import Cancelled
+from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
@@ -33,7 +33,6 @@ from grove_tui.generation.formations import (
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
-from grove_tui.errors import GenerationError, PlanningError
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
 from grove_tui.scenario.model import AgentSpec, RobotSpec
@@ -385,7 +384,7 @@ def _is_spot(world: World, name: str) -> bool:
     """Whether a place is a thing or a door (a point to pass by), not a zone."""
     try:
         return isinstance(world.find(name), (Entity, Door))
-    except Exception:
+    except WorldError:  # an unknown name, or an alias several places share: no point to pass by
         return False
 
 
