@@ -385,6 +385,10 @@ class _StartProbe(_Probe):
         ok = self.at_place(self.first[None])[0] if self.cols.size else np.zeros(0, bool)
         n, hits = self.members, int(ok.sum())
         status = HOLDS if hits >= _need(replace(self.claim, share=1.0), n) else FAILS
+        c = self.claim
+        if c.zone and c.place and c.place != c.zone and c.point is None:
+            # a thing or door is where they start in its zone: the zone is what is measured, so say it
+            return status, f"{hits}/{n} started in {c.zone} (where {c.place} is)"
         return status, f"{hits}/{n} started in {self.where()}"
 
 

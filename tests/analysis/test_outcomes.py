@@ -88,6 +88,14 @@ def test_start_is_where_everyone_is_in_the_first_frame(clinic):
     assert outcome.status == FAILS and "1/2 started in lobby" in outcome.evidence
 
 
+def test_a_start_by_a_thing_says_the_zone_it_measures(clinic):
+    # "four travellers wait at the meeting point": the start is checked in the thing's zone, and the
+    # evidence says so (not "started in meeting_point" for people spawned 10 m from it)
+    claim = Claim("start", "reception_desk", "start in lobby", zone="lobby", place="reception_desk", share=1.0)
+    outcome = check(clinic, claim, run(1, people(line((2, 2), (2, 2)), line((3, 2), (3, 2)))))
+    assert outcome.status == HOLDS and outcome.evidence == "2/2 started in lobby (where reception_desk is)"
+
+
 def test_reach_counts_who_got_there_and_when(clinic):
     claim = Claim("reach", "pharmacy", "walk to pharmacy", zone="pharmacy", needs_seconds=40.0)
     to_pharmacy = people(line((4, 1), (16, 9)), line((5, 1), (17, 9)))
