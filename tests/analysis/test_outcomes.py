@@ -166,6 +166,28 @@ def test_an_asked_wait_is_judged_over_its_seconds_and_leaving_after_it_is_no_cro
     assert check(clinic, claim, run(30, cut_short)).status == FAILS
 
 
+def test_an_asked_wait_by_a_thing_is_not_cut_short_by_passing_it_first(clinic):
+    # "a family of four waits at the lounge seats for a minute then walks on": one of them walks past
+    # the seats with the others (2.5 m from them for a few seconds), goes round the other way, comes
+    # back and waits the minute there; the wait holds for them (on main: "3/4 stayed", a false ✗)
+    claim = Claim("stay", "seats for 20 s", "wait at seats 20 s", place="seats", point=(20.0, -3.0), radius=3.0,
+                  seconds=20.0, needs_seconds=40.0)
+
+    def pass_then_come_back(t):
+        if t < 10.0:
+            return np.array([14.0 + 1.0 * t, -0.5])  # by the seats (2.5 m off) at t 4-8, on past them
+        if t < 20.0:
+            return np.array([24.0, -0.5])  # round the other side
+        return np.array([20.0, -3.0])  # back, and waits there
+    came_back = people(pass_then_come_back, line((20, -3), (20, -3)))
+    held = check(clinic, claim, run(50, came_back))
+    assert held.status == HOLDS, held.evidence
+    # who never comes back to wait still fails
+    passed_by = people(lambda t: np.array([14.0 + 1.0 * t, -0.5]) if t < 10.0 else np.array([24.0, -0.5]),
+                       line((20, -3), (20, -3)))
+    assert check(clinic, claim, run(50, passed_by)).status == FAILS
+
+
 def test_wander_is_moving_around_inside_the_zone(clinic):
     claim = Claim("wander", "cafeteria", "wander in cafeteria", zone="cafeteria")
 
