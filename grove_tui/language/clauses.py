@@ -27,7 +27,7 @@ from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
-from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
+from grove_tui.language.reactions import clause_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -94,8 +94,7 @@ class Clauses:
         own = [i for i in toks if i not in excluded]
         scan = _Scan(Clause(), own)
         c = scan.c
-        c.robot = robot_interaction(s, own, robot_positions(s, own, robot_after))
-        c.unaimed = unaimed_reaction(s, own) if c.robot is None else None
+        c.robot, c.unaimed = clause_reaction(s, own, robot_after)
         c.has_action = c.robot is not None
         while scan.pos < len(own):
             if not self._phrase(scan):

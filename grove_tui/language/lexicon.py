@@ -402,7 +402,7 @@ for _interaction, _verbs in {
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
              "hit punch push slap smack thump whack bash ram barge heckle taunt abuse grab tip topple vandalise "
-             "vandalize headbutt fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend",
+             "vandalize headbutt fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend shoo hem",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)
