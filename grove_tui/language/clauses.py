@@ -158,6 +158,7 @@ class Clauses:
             name, width = prep
             if name == "from" and from_is_where_got(s, i, scan.own):  # not "takes towels from A to B"
                 name = "at"  # "buy tickets from the machines": where they stand, not where they start
+            name = "at" if name == "out" and i > 0 and s.verb(i - 1) in lx.THING_OR_PLACE_VERBS else name  # "mops out the bar"
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
             place = self._there(i, width, name) if i + width < s.n and s.low[i + width] == "there" else \
                 self.places.phrase(i + width, name, i, record_unknown=name != "off")

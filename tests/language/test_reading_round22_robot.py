@@ -56,3 +56,26 @@ def test_a_reaction_the_robot_times_is_the_groups(read, world, prompt, interacti
 ])
 def test_a_going_the_robot_only_accompanies_is_no_reaction(read, world, prompt):
     assert read(world, prompt).groups[0].robot_interaction is None
+
+
+# ---- 3. the robot staying put said in other words ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("mall", "The robot holds position by the fountain while two cleaners mop the food court.", "fountain"),
+    ("office", "The robot holds its position near the kitchen while a manager paces the corridor.", "kitchen"),
+    ("airport", "The robot keeps its station beside gate b1 while four pilots chat at the cafe.", "gate_b1"),
+    ("museum", "The robot holds its ground by the cloakroom as a school party files past.", "cloakroom"),
+])
+def test_keeping_a_post_is_a_wait_there(read, world, prompt, place):
+    robot = read(world, prompt).robot
+    assert robot is not None and (robot.task, robot.location) == ("wait", place)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "The robot waits by the pharmacy while a cleaner mops out the canteen.", "cafeteria"),
+    ("mall", "A cleaner sweeps out the food court.", "food_court"),
+    ("office", "Two cleaners scrub out the kitchen.", "kitchen"),
+])
+def test_cleaning_out_a_place_is_being_there(read, world, prompt, place):
+    group = read(world, prompt).groups[0]
+    assert (group.location, group.start) == (place, None)
