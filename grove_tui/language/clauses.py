@@ -460,7 +460,8 @@ class Clauses:
         k = i - 1
         while k > 0 and s.w[k].pos in ("NOUN", "PROPN", "DET", "ADJ", "NUM") and not s.is_punct(k):
             k -= 1
-        return k < i - 1 and s.verb(k) in lx.TELLING_VERBS and any(self.people.is_person_noun(x) for x in range(k + 1, i))
+        return k < i - 1 and s.verb(k) in lx.TELLING_VERBS | lx.ROBOT_COMMAND_VERBS and any(  # or the robot told
+            self.people.is_person_noun(x) or s.low[x] in lx.ROBOT_WORDS for x in range(k + 1, i))
 
     def _sent_away(self, i: int) -> int | None:
         """The word after "to leave", "out", "away" or "home" when the word at i is a passive verb

@@ -13,6 +13,7 @@ from grove_tui.language.reaction_order import depicts, goes_after, later_reactio
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
 from grove_tui.language.robot_idioms import idiom_reaction, timed_by_robot, timed_reaction
 from grove_tui.language.robot_manner import manner_reaction
+from grove_tui.language.robot_requests import asks_to_be_led
 from grove_tui.language.robot_motion import motion_reaction_before
 from grove_tui.language.tokens import verb_lemma
 
@@ -51,6 +52,7 @@ def clause_reaction(s: Sentence, own: Sequence[int], robot_after: int | None) ->
     robot_at = robot_positions(s, own, robot_after)
     timed = timed_by_robot(s, own, robot_after)
     idiom = idiom_reaction(s, own) if robot_at or timed else None
+    idiom = "follow" if asks_to_be_led(s, own, robot_at) else idiom  # "lets the robot lead her to room 107"
     found = idiom if idiom is not None else robot_interaction(s, own, robot_at)
     if found is None and timed:
         found = timed_reaction(s, own)

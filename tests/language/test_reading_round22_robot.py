@@ -42,7 +42,8 @@ def test_no_idiom_no_reaction(read, world, prompt):
     ("office", "Whenever the robot comes near, the new intern ducks behind her monitor.", "avoid"),
     ("hotel", "The cleaner scurries away whenever the robot approaches.", "avoid"),
     ("station", "When the robot rolls onto the concourse, an old man freezes.", "look"),
-    ("museum", "Two schoolgirls squeal and hide behind a pillar whenever the robot comes near.", "avoid"),
+    ("museum", "Whenever the robot trundles close, two schoolgirls hide behind a pillar.", "avoid"),
+    ("zoo", "A keeper's boy scarpers off whenever the robot comes near.", "avoid"),
     ("zoo", "As the robot trundles past the penguins, a little girl nearly jumps out of her skin.", "look"),
 ])
 def test_a_reaction_the_robot_times_is_the_groups(read, world, prompt, interaction):
@@ -79,3 +80,21 @@ def test_keeping_a_post_is_a_wait_there(read, world, prompt, place):
 def test_cleaning_out_a_place_is_being_there(read, world, prompt, place):
     group = read(world, prompt).groups[0]
     assert (group.location, group.start) == (place, None)
+
+
+# ---- 2. people who let or have the robot take them somewhere ----------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hospital", "A lost visitor lets the robot lead him from reception to the pharmacy.", "reception_desk", "pharmacy"),
+    ("mall", "A tired shopper lets the robot guide her from the fountain to the food court.", "fountain", "food_court"),
+    ("museum", "An old man has the robot show him to the cloakroom from the gift shop.", "gift_shop", "cloakroom"),
+    ("station", "A tourist asks the robot to walk him from the ticket office to platform 1.", "ticket_office",
+     "platform_1"),
+    ("airport", "A confused passenger asks the robot to take her to gate b1.", None, "gate_b1"),
+])
+def test_one_the_robot_is_asked_to_take_follows_it(read, world, prompt, start, destination):
+    reading = read(world, prompt)
+    group = reading.groups[0]
+    assert (group.intent, group.robot_interaction) == ("robot", "follow")
+    assert reading.robot is not None and (reading.robot.task, reading.robot.start, reading.robot.destination) == (
+        "cross", start, destination)
