@@ -1,0 +1,64 @@
+"""Round 22 of the reader's clauses, events, places and reactions: verbs of going with a load or at a
+stroll that say where they go walk there; a purpose is not the "for" of who someone is; going off
+whenever the robot comes is avoiding it."""
+
+import pytest
+
+
+@pytest.mark.parametrize("world,prompt,start,destination,via", [
+    ("residential", "My wife carries the weekly shop from the front door to the kitchen.", "front_door", "kitchen", ()),
+    ("mall", "A dad lugs the big shop from the supermarket to the food court.", "supermarket", "food_court", ()),
+    ("hospital", "A nurse leaves the pharmacy and ambles down the corridor to the cafeteria.",
+     "pharmacy", "cafeteria", ("main_corridor",)),
+    ("airport", "A pilot steps out of the lounge and saunters along the concourse to gate A2.",
+     "airline_lounge", "gate_a2", ("concourse",)),
+])
+def test_going_with_a_load_or_at_a_stroll_to_a_place_walks(read, world, prompt, start, destination, via):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.start == start and g.destination == destination and g.via == via
+
+
+@pytest.mark.parametrize("world,prompt,purpose", [
+    ("courthouse", "A solicitor for the family heads from the robing room to the interview room to see his client.",
+     "client"),
+    ("office", "A consultant for the bank goes from reception to the boardroom to brief her team.", "team"),
+    ("hospital", "A lawyer for the family walks from the entrance lobby to the cafeteria to meet his client.", "client"),
+    ("courthouse", "Counsel for the prosecution walks to the interview room to brief a witness.", "witness"),
+])
+def test_the_for_of_who_someone_is_is_no_purpose(read, world, prompt, purpose):
+    g = read(world, prompt).groups[0]
+    assert g.purpose is not None and purpose in g.purpose and "for the" not in g.purpose
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "A nervous child scurries away whenever the robot comes close."),
+    ("museum", "A little boy scuttles off every time the robot rolls up."),
+    ("primary_school", "A shy Year 2 boy scampers away each time the robot comes past."),
+    ("airport", "A wary toddler scampers away whenever the robot rolls towards her."),
+])
+def test_going_off_whenever_the_robot_comes_avoids_it(read, world, prompt):
+    (g,) = read(world, prompt).groups
+    assert g.robot_interaction == "avoid" and g.robot_reaction == "Scared"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "With its window blown in by the gale, the cafeteria's 20 diners evacuate via the main entrance."),
+    ("mall", "With its ceiling brought down by the flood, the food court's 40 diners evacuate via the main entrance."),
+    ("hospital", "Three patients flick through leaflets near the water dispenser."),
+    ("airport", "Two travellers leaf through newspapers at gate A1."),
+    ("mall", "A woman thumbs through brochures by the fountain."),
+    ("hospital", "Two nurses head off for a walk."),
+])
+def test_nouns_that_name_no_place_are_not_refused(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,start,unknown", [
+    ("airport", "Four pilots leave the lounge and set off for the casino.", "airline_lounge", "casino"),
+    ("hospital", "Two porters leave the pharmacy and set off for the aquarium.", "pharmacy", "aquarium"),
+    ("mall", "Three kids leave the food court and set off for the bowling alley.", "food_court", "bowling alley"),
+    ("zoo", "Five pupils leave the giraffe house and set off for the planetarium.", "giraffe_house", "planetarium"),
+])
+def test_a_place_set_off_for_that_the_world_lacks_is_refused_after_a_known_one(read, world, prompt, start, unknown):
+    r = read(world, prompt)
+    assert r.unknown_places == (unknown,) and r.groups[0].start == start
