@@ -62,3 +62,25 @@ def test_nouns_that_name_no_place_are_not_refused(read, world, prompt):
 def test_a_place_set_off_for_that_the_world_lacks_is_refused_after_a_known_one(read, world, prompt, start, unknown):
     r = read(world, prompt)
     assert r.unknown_places == (unknown,) and r.groups[0].start == start
+
+
+@pytest.mark.parametrize("world,prompt,field,place", [
+    ("supermarket", "A shopper walks from the checkouts to the in-store pharmacy.", "destination", "pharmacy"),
+    ("supermarket", "Two women sit in the in-store coffee shop for 20 minutes.", "location", "cafe"),
+    ("hospital", "Two nurses walk from the pharmacy to the on-site cafe.", "destination", "cafeteria"),
+    ("airport", "A pilot walks from gate A1 to the in-station cafe.", "destination", "cafe"),
+])
+def test_a_place_said_as_of_this_place_is_the_place(read, world, prompt, field, place):
+    (g,) = read(world, prompt).groups
+    assert getattr(g, field) == place
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Two designers are hunched over desk 4.", "desk_4"),
+    ("office", "Bent over desk 4, two designers sketch quietly.", "desk_4"),
+    ("hospital", "Leaning over bed 3, two nurses chat.", "ward_a_bed_3"),
+    ("office", "Hunched over desk 2, a pair of testers type away.", "desk_2"),
+])
+def test_hunched_over_a_numbered_thing_is_at_it(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.location == location
