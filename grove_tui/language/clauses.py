@@ -20,7 +20,7 @@ from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
-from grove_tui.language.going_verbs import goes_to_after, named_thing, sets_off_for
+from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -143,8 +143,8 @@ class Clauses:
         if w == "to" and nxt == "be" and i + 2 < s.n and verb_lemma(s.low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
             return False  # "the hall has to be emptied": the zone's evacuation, read by emptied_zones
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
-                                    or self._told_before(i)) and s.verb_follows(i + 1):
-            return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
+                                    or self._told_before(i) or obliged_to(s, i)) and s.verb_follows(i + 1):
+            return False  # "the guests are asked to leave", "tells two interns to go to ...", "have to leave": no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
                 s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
             return self._purpose(scan, i, i, i + 2)

@@ -97,3 +97,10 @@ def sets_off_for(s: Sentence, i: int) -> bool:
     """Whether the "for" at i follows "set off" or "set out" ("set off for the aquarium"): where they go,
     as after "head for" ("set aside for worship" is what for)."""
     return i >= 2 and verb_lemma(s.low[i - 2]) == "set" and s.low[i - 1] in ("off", "out")
+
+
+def obliged_to(s: Sentence, i: int) -> bool:
+    """Whether the "to" at i follows "have", "has" or "need" ("all 20 have to leave", "needs to go"): what
+    they must do, which is what they do, no purpose."""
+    return i >= 1 and s.low[i - 1] in ("have", "has", "had", "need", "needs", "needed") and \
+        not (i >= 2 and s.low[i - 2] in ("will", "would", "might", "may"))

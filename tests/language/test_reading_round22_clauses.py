@@ -84,3 +84,32 @@ def test_a_place_said_as_of_this_place_is_the_place(read, world, prompt, field, 
 def test_hunched_over_a_numbered_thing_is_at_it(read, world, prompt, location):
     (g,) = read(world, prompt).groups
     assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("hospital", "The cafeteria's smoke detector trips and about twenty visitors stream out through the main entrance.",
+     "cafeteria"),
+    ("mall", "The food court's fire alarm goes off and around sixty diners pile out through the main entrance.",
+     "food_court"),
+    ("museum", "The gift shop's sprinklers go off and a dozen visitors hurry out through the main entrance.", "gift_shop"),
+    ("hospital", "The cafeteria's alarm goes off and twenty visitors stream out through the main entrance.", "cafeteria"),
+])
+def test_people_leave_the_zone_whose_own_alarm_goes_off(read, world, prompt, start):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "evacuate" and g.start == start and g.destination == "main_entrance"
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("mall", "A suitcase is spotted by the fountain, so all 12 in the food court have to get out via the main entrance.",
+     "food_court"),
+    ("museum", "An abandoned bag is found near the gift shop, so all 20 in the main hall have to leave via the main "
+     "entrance.", "great_hall"),
+    ("hospital", "A suspicious package is found under a bench, so the 15 people in the cafeteria have to leave via the "
+     "main entrance.", "cafeteria"),
+    ("airport", "An unattended rucksack is spotted by the benches, so all 30 at gate A1 have to get out via the "
+     "concourse.", "gate_a1"),
+])
+def test_a_bag_left_alone_that_is_found_makes_leaving_an_evacuation(read, world, prompt, start):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.intent == "evacuate" and g.start == start and r.unknown_places == ()
