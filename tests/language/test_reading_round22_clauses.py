@@ -113,3 +113,17 @@ def test_a_bag_left_alone_that_is_found_makes_leaving_an_evacuation(read, world,
     r = read(world, prompt)
     (g,) = r.groups
     assert g.intent == "evacuate" and g.start == start and r.unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("mall", "Lightning is spotted nearby, so the cinema shuts and the 40 people in it hurry out via the main entrance.",
+     "main_entrance"),
+    ("zoo", "A thunderstorm breaks overhead, so the children's farm shuts and the 25 visitors in it hurry out via the "
+     "west emergency gate.", "west_emergency_gate"),
+    ("stadium", "Lightning strikes nearby, so the north stand is closed and its 300 fans hurry out via gate C.", "gate_c"),
+    ("theme_park", "Lightning flashes overhead, so the log flume shuts and 20 riders hurry out via the east emergency "
+     "gate.", "east_emergency_gate"),
+])
+def test_people_hurrying_out_of_a_place_shut_for_a_storm_evacuate(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "evacuate" and g.destination == destination
