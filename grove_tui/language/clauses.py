@@ -20,7 +20,7 @@ from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
-from grove_tui.language.going_verbs import goes_to_after
+from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -142,8 +142,8 @@ class Clauses:
         if w == "to" and nxt == "be" and i + 2 < s.n and verb_lemma(s.low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
             return False  # "the hall has to be emptied": the zone's evacuation, read by emptied_zones
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
-                                    or self._told_before(i)) and s.verb_follows(i + 1):
-            return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
+                                    or self._told_before(i) or obliged_to(s, i)) and s.verb_follows(i + 1):
+            return False  # "the guests are asked to leave", "tells two interns to go to ...", "have to leave": no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
                 s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
             return self._purpose(scan, i, i, i + 2)
@@ -232,7 +232,8 @@ class Clauses:
             return True
         # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
         # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
-        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i)
+        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
+            sets_off_for(s, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
             refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
@@ -243,7 +244,7 @@ class Clauses:
                 return True
         end = s.phrase_end(i + 1)
         if end > i + 1 and not any(s.low[x] in lx.ROBOT_WORDS for x in range(i + 1, end)) and \
-                not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
+                not self.people.is_person_noun(i - 1) and not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
             scan.c.purpose = scan.c.purpose or s.span(i, end - 1)
             self._take(scan, i, end)
             return True
@@ -414,7 +415,7 @@ class Clauses:
             if phrasal is not None:
                 candidates.append((i, phrasal[1], phrasal[0][0]))
                 continue
-            if i in used or s.after_determiner(i) or any(p.index < i < p.end for p in c.places) or \
+            if i in used or named_thing(s, i) or any(p.index < i < p.end for p in c.places) or \
                     (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
