@@ -18,7 +18,7 @@ if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
 
 _SINGULAR = frozenset({"NN", "NNP", "JJ"})
-_AFTER = frozenset({"ADP", "ADV", "DET", "PROPN", "PRON", "NUM", "PART", "PUNCT"})
+_AFTER = frozenset({"ADP", "ADV", "DET", "PROPN", "PRON", "NUM", "PART", "PUNCT", "SCONJ", "CCONJ"})
 _SUBJECT_WORDS = frozenset({"DET", "ADJ", "NOUN", "PROPN", "NUM", "ADP", "PUNCT", "PRON"})
 
 

@@ -1,0 +1,46 @@
+"""Round 22 of the reader's people, counts and groups: one person said by a name the parser tags an
+adjective, by a noun no list has after a word for people, by an abbreviation after a modifier ("a
+locum GP"), or by a noun kept for a machine that goes from one room into another, is one person; a
+person's verb after a place phrase and before "when" or "and" is a verb ("a little girl wails when
+..."), not a crowd of "wails"."""
+
+import pytest
+
+
+@pytest.mark.parametrize("world,prompt,start,destination,location", [
+    ("care_home", "Doreen pops out of the lounge and along to the dining room.", "lounge", "dining_room", None),
+    ("office", "Doreen pops out of the kitchen and along to the boardroom.", "kitchen", "boardroom", None),
+    ("supermarket", "An elderly gent dawdles by the tills.", None, None, "checkouts"),
+    ("hospital", "An elderly gent lingers in the cafeteria.", None, None, "cafeteria"),
+    ("hospital", "A nursing auxiliary bustles from the pharmacy into the cafeteria.", "pharmacy", "cafeteria", None),
+    ("care_home", "A nursing auxiliary bustles from the kitchen into the lounge.", "kitchen", "lounge", None),
+    ("hospital", "The dispenser hurries out of the pharmacy into the cafeteria.", "pharmacy", "cafeteria", None),
+    ("office", "The dispenser scurries out of the kitchen into the boardroom.", "kitchen", "boardroom", None),
+])
+def test_one_person_no_list_names_is_one(read, world, prompt, start, destination, location):
+    r = read(world, prompt)
+    (one,) = r.groups
+    assert one.count.kind == "exact" and one.count.value == 1
+    assert (one.start, one.destination, one.location) == (start, destination, location)
+
+
+@pytest.mark.parametrize("world,prompt,place", [
+    ("hospital", "By the pharmacy a little girl wails when she sees the robot.", "pharmacy"),
+    ("office", "In the kitchen a young lad whimpers and hides from the robot.", "kitchen"),
+    ("care_home", "In the lounge an old dear shrieks when she spots the robot.", "lounge"),
+    ("market_hall", "Beside the noodle stall a wee girl wails when she sees the robot.", "noodle_stall"),
+])
+def test_a_place_first_then_one_person_who_reacts(read, world, prompt, place):
+    (one,) = read(world, prompt).groups
+    assert one.count.value == 1 and one.location == place
+
+
+@pytest.mark.parametrize("world,prompt,where", [
+    ("hospital", "The porter nips out of the pharmacy into the cafeteria, while a locum GP loiters by reception.",
+     "reception_desk"),
+    ("office", "A courier dashes from reception to the kitchen, while a locum GP waits in the boardroom.",
+     "boardroom"),
+])
+def test_an_abbreviated_role_after_a_modifier_is_one_person(read, world, prompt, where):
+    first, second = read(world, prompt).groups
+    assert first.count.value == 1 and second.count.value == 1 and second.location == where
