@@ -44,3 +44,15 @@ def test_a_place_first_then_one_person_who_reacts(read, world, prompt, place):
 def test_an_abbreviated_role_after_a_modifier_is_one_person(read, world, prompt, where):
     first, second = read(world, prompt).groups
     assert first.count.value == 1 and second.count.value == 1 and second.location == where
+
+
+@pytest.mark.parametrize("world,prompt,value,start", [
+    ("office", "Some 30 well-wishers drift out of the boardroom towards reception.", 30, "boardroom"),
+    ("care_home", "Some 20 well-wishers drift out of the lounge towards reception.", 20, "lounge"),
+    ("market_hall", "Some 40 holiday-makers drift from the bakery stall towards the noodle stall.", 40, "bakery_stall"),
+    ("office", "About a dozen job-seekers mill about in reception.", 12, None),
+])
+def test_some_number_of_hyphenated_people_whose_verb_the_parser_took_for_a_noun(read, world, prompt, value, start):
+    (group,) = read(world, prompt).groups
+    assert group.count.kind == "approximate" and group.count.value == value and group.count.low < value < group.count.high
+    assert group.start == start
