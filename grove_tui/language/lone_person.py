@@ -23,6 +23,8 @@ _THINGS_GO = frozenset("roll run fall drop move come go pass arrive leave return
 # What water, smoke or light does ("Water pours through the ceiling"): no name opens such a clause.
 _FLOWS = frozenset("pour flow leak drip spill seep trickle stream flood gush spread billow waft rise fall "
                    "burst break shine".split())
+# Endings of a word for one who does ("dispenser", "florist", "optician").
+_DOERS = ("er", "or", "ist", "ian")
 _ROUTE_STARTS = frozenset({"from", "of"})
 _ROUTE_ENDS = frozenset({"to", "into", "towards", "toward", "onto"})
 
@@ -54,7 +56,7 @@ def goes_along_a_route(s: Sentence, i: int) -> bool:
         return False
     lem = s.lemma(i)
     if lem in lx.ROBOT_WORDS or lem in lx.STOPWORDS or lem in lx.CARRYING_THINGS or (
-            (lem in lx.NON_PEOPLE or names_a_place(s.index, lem)) and not s.low[i].endswith(("er", "or"))):
+            (lem in lx.NON_PEOPLE or names_a_place(s.index, lem)) and not s.low[i].endswith(_DOERS)):
         return False  # a thing or a place of the world is one who goes only as a word for one who does
     first = _opened_at(s, i)
     if first == 0 or s.low[first - 1] not in ("a", "an", "the"):

@@ -2,7 +2,8 @@
 well-wishers drift out of the boardroom", where "drift" is read as the sentence's noun and its subject
 a word no list has. A word the parser makes the root noun of its sentence, whose own subject is the
 plural noun right before it (or a plural the parser makes its modifier), and which the lexicon knows as a verb of what people do, followed by a
-preposition, an adverb or the end, is the plural's verb."""
+preposition, an adverb or the end, is the plural's verb. A singular noun the parser makes a modifier
+of the verb right after it ("the hairdresser scoots over"), which has no subject, is its subject."""
 
 from __future__ import annotations
 
@@ -23,6 +24,11 @@ def as_plural_verbs(words: list[Word]) -> list[Word]:
     """The parse with the verb of people in the plural, taken for a noun, tagged a verb (module doc)."""
     out = list(words)
     for k, w in enumerate(words):
+        if k > 0 and w.pos == "VERB" and w.tag == "VBZ" and w.dep == "ROOT" and words[k - 1].dep == "compound" and \
+                words[k - 1].head == k and words[k - 1].tag == "NN" and \
+                not any(x.dep == "nsubj" and x.head == k for x in words if x.sentence == w.sentence):
+            out[k - 1] = replace(words[k - 1], dep="nsubj")  # "the hairdresser scoots": its subject, no modifier
+            continue
         if k == 0 or w.pos != "NOUN" or w.tag != "NN" or w.dep != "ROOT" or not _people_verb(w.lower):
             continue
         prev = words[k - 1]

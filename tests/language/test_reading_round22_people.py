@@ -56,3 +56,19 @@ def test_some_number_of_hyphenated_people_whose_verb_the_parser_took_for_a_noun(
     (group,) = read(world, prompt).groups
     assert group.count.kind == "approximate" and group.count.value == value and group.count.low < value < group.count.high
     assert group.start == start
+
+
+@pytest.mark.parametrize("world,prompt,first,second", [
+    ("market_hall", "Sue the florist scoots over from the noodle stall to the bakery stall, while two traders haul "
+     "crates from the loading bay into the cold store.", ("noodle_stall", "bakery_stall"), ("loading_bay", "cold_store")),
+    ("market_hall", "Kev the florist scoots over from the bakery stall to the noodle stall, as two porters wheel boxes "
+     "from the loading bay into the cold store.", ("bakery_stall", "noodle_stall"), ("loading_bay", "cold_store")),
+    ("gp_surgery", "Mo the dispenser scoots over from the pharmacy to the kitchen, while two receptionists carry files "
+     "from reception into the kitchen.", ("pharmacy", "staff_kitchen"), ("reception", "staff_kitchen")),
+    ("care_home", "Val the hairdresser scoots over from the lounge to the dining room, as two carers wheel a trolley "
+     "from the kitchen into the lounge.", ("lounge", "dining_room"), ("kitchen", "lounge")),
+])
+def test_a_named_trade_the_world_has_a_place_of_goes_then_a_second_clause(read, world, prompt, first, second):
+    named, others = read(world, prompt).groups
+    assert named.count.value == 1 and (named.start, named.destination) == first
+    assert others.count.value == 2 and (others.start, others.destination) == second
