@@ -303,10 +303,11 @@ def _hand_claims(expected: ExpectedGroup, world: World, speed: float,
         elif kind == "queue":
             for name in _names(value):
                 obj = world.find(name)
+                # "sit for a minute before queuing" (`for: 60`): only joins after the wait count
                 if isinstance(obj, Entity):
-                    claims.append(Claim("queue", tag + name, "expected", place=name, zone=obj.zone))
+                    claims.append(Claim("queue", tag + name, "expected", place=name, zone=obj.zone, seconds=asked_for))
                 else:
-                    claims.append(Claim("queue", tag + name, "expected", zone=_zone_of(world, name)))
+                    claims.append(Claim("queue", tag + name, "expected", zone=_zone_of(world, name), seconds=asked_for))
         elif kind == "converse":
             claims.append(Claim("converse", tag + "talk", "expected"))
         elif kind == "evacuate":

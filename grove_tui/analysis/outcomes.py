@@ -669,9 +669,14 @@ class _QueueProbe(_EventsProbe):
         joined = advanced = served = 0
         first_served = math.inf
         elsewhere: set[str] = set()
+        # a queue after a wait ("sit for five minutes before queuing"): a join before the wait is over is too soon
+        after = self.claim.seconds or 0.0
+        early = 0
         for agent in self.member_ids():
             mine = [e for e in events.get(agent, ()) if e.kind.startswith("queue_")]
             here = [e for e in mine if self._here(e.detail)]
+            early += any(e.kind == "queue_join" and e.t < after for e in here)
+            here = [e for e in here if e.t >= after]
             elsewhere |= {e.detail for e in mine if e.kind == "queue_join" and not self._here(e.detail)}
             joined += any(e.kind == "queue_join" for e in here)
             advanced += any(e.kind == "queue_advance" for e in here)
@@ -683,6 +688,8 @@ class _QueueProbe(_EventsProbe):
         text = f"joined {joined}/{n} at {place or self.claim.zone or 'a queue'}, advanced {advanced}, served {served}"
         if served:
             text += f" (first at {_when(first_served)})"
+        if after:
+            text += f"; {early} joined before the {after:g} s wait was over"
         if elsewhere:
             text += f"; queued elsewhere: {', '.join(sorted(elsewhere))}"
         ok = joined >= _need(self.claim, n) and served >= 1 and (n < 2 or advanced + served >= 2 or served >= 1)

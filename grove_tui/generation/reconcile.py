@@ -34,6 +34,7 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
+from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -488,8 +489,13 @@ def tree_for(group: GroupReading, world: World, evacuation_field: bool = False) 
     if base == "queue":
         service = _stationary_place(group, world, "queue") or _service_in(world, group.start or "")
         if service is not None:
-            return DraftNode("Sequence", {}, tuple(via) + (DraftNode("GoTo", {"target": service}),
-                                                           DraftNode("Queue", {"service_point": service})))
+            delay = wait_before_queuing(group, service)
+            # the wait where they start: at its thing or door when the start is one ("by the departure board")
+            there = (DraftNode("GoTo", {"target": group.start}),) if delay and group.start and \
+                world.zone_of_place(group.start) != group.start else ()
+            first = there + (DraftNode("Wait", {"duration": delay}),) if delay else ()
+            return DraftNode("Sequence", {}, first + tuple(via) + (DraftNode("GoTo", {"target": service}),
+                                                                   DraftNode("Queue", {"service_point": service})))
         base = "wait"
     if base == "converse":
         spot = group.location or group.start or group.destination
@@ -967,9 +973,15 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         else:
             service_time = next((float(node.ports.get("service_time", 10.0)) for node in g.tree.walk()
                                  if node.node == "Queue"), 10.0)
-            claims.append(Claim("queue", place or service, f"queue at {service}", place=service,
-                                zone=world.zone_of_place(service),
-                                needs_seconds=timing.eta(service) + service_time + 15.0))
+            delay = wait_before_queuing(r, service)
+            if delay and r.start:
+                # "wait by the kiosk for a minute, then queue": the wait where they start, then joins after it
+                claims.append(replace_seconds(_place_claim("stay", r.start, f"wait at {r.start} {delay:g} s", world,
+                                                           n, timing.eta(r.start) + delay, stay=True), delay))
+            claims.append(Claim("queue", (place or service) + (f" after {delay:g} s" if delay else ""), f"queue at {service}" + (f" after {delay:g} s" if delay
+                                                                                     else ""),
+                                place=service, zone=world.zone_of_place(service), seconds=delay,
+                                needs_seconds=timing.eta(service) + service_time + 15.0 + (delay or 0.0)))
     elif base == "wait":
         place = r.location or r.destination
         seconds = float(r.wait_seconds) if r.wait_seconds else None

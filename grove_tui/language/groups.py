@@ -33,6 +33,7 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
 from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
+from grove_tui.language.wait_first import wait_before_queuing
 from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
@@ -378,6 +379,9 @@ class Groups:
             wait = scene.wait_seconds
         if intent == "wait" and wait and location and destination and start is None:
             start = location  # "waits at the kiosk for 10 minutes, then heads to the shop": it sets off from there
+        first_wait = wait_before_queuing(s, span, c.verb_index) if wait and intent == "queue" else None
+        if first_wait is not None and start is None:  # "queue after waiting in the food court for a minute": there first
+            start = next((p.match.name for p in c.places if p.match and first_wait[0] < p.index < first_wait[1]), None)
         confidence = count_confidence(s, m, count) + place_confidences(
             {"start": start, "destination": destination, "location": location}, via, roles.read_from)
         if robot is not None and c.robot is None:
@@ -388,6 +392,7 @@ class Groups:
             robot_interaction=robot, robot_reaction=lx.ROBOT_REACTIONS.get(robot) if robot else None,
             start=start, destination=destination, location=location, via=tuple(via),
             purpose=c.purpose or (scene.purpose if scene is not None else None), wait_seconds=wait,
+            waits_first=first_wait is not None,
             together=m.together or c.together or count.kind == "structured",
             pace=c.pace if c.pace != "normal" or scene is None else scene.pace, relation=m.relation,
             follows=c.follows, text=text, confidence=tuple(confidence),

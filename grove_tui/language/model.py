@@ -90,6 +90,8 @@ class GroupReading:
     via: tuple[str, ...] = ()  # "through", "via", "past"
     purpose: str | None = None  # a purpose that is not a place: "to check in", "for coffee"
     wait_seconds: float | None = None  # "for five minutes" -> 300.0
+    # the wait_seconds are a stay where they start before the intent ("sit ... for five minutes before queuing")
+    waits_first: bool = False
     together: bool = False  # "together", "as a group", families, couples
     pace: str = "normal"  # "slow" | "normal" | "fast"
     relation: str | None = None  # "subset_of:0", "others_of:0", "more_of:0"

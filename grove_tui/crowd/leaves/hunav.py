@@ -626,7 +626,7 @@ class ApproachAgent(_Timed):
         if d <= closest + 0.1:
             self.face(other)
         else:
-            self.walk_to(goal, self.get_input("max_vel"))
+            self.walk_to(goal, self.get_input("max_vel"), beyond=(float(q[0]), float(q[1])))
 
 
 class BlockRobot(_Timed):
