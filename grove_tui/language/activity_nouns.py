@@ -11,6 +11,7 @@ _TALK_NOUNS = ("chat", "natter", "gossip", "catch-up", "catchup", "chinwag", "wo
 # Nouns of a pause or refreshment after "have"/"take"/"grab": people stay where they are.
 _PAUSE_NOUNS = ("coffee", "cuppa", "tea", "drink", "break", "breather", "rest", "sit-down", "snack", "bite",
                 "sandwich", "smoke", "pause", "nap", "doze", "breakfast", "lunch")
+PAUSE_NOUNS = frozenset(_PAUSE_NOUNS)
 # What may stand between the light verb and its noun ("a quick", "their").
 _BEFORE = (("a",), ("an",), ("a", "quick"), ("a", "little"), ("a", "good"), ("a", "long"), ("a", "short"),
            ("a", "bit", "of", "a"), ("their",), ("his",), ("her",), ("some",), ("a", "friendly"), ("a", "brief"))

@@ -20,14 +20,14 @@ from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
-from grove_tui.language.going_verbs import goes_to_after
+from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
-from grove_tui.language.reactions import robot_interaction, robot_positions, unaimed_reaction
+from grove_tui.language.reactions import clause_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -94,8 +94,7 @@ class Clauses:
         own = [i for i in toks if i not in excluded]
         scan = _Scan(Clause(), own)
         c = scan.c
-        c.robot = robot_interaction(s, own, robot_positions(s, own, robot_after))
-        c.unaimed = unaimed_reaction(s, own) if c.robot is None else None
+        c.robot, c.unaimed = clause_reaction(s, own, robot_after)
         c.has_action = c.robot is not None
         while scan.pos < len(own):
             if not self._phrase(scan):
@@ -143,8 +142,8 @@ class Clauses:
         if w == "to" and nxt == "be" and i + 2 < s.n and verb_lemma(s.low[i + 2]) in lx.ZONE_EMPTYING_VERBS:
             return False  # "the hall has to be emptied": the zone's evacuation, read by emptied_zones
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
-                                    or self._told_before(i)) and s.verb_follows(i + 1):
-            return False  # "the guests are asked to leave", "tells two interns to go to ...": what they do, no purpose
+                                    or self._told_before(i) or obliged_to(s, i)) and s.verb_follows(i + 1):
+            return False  # "the guests are asked to leave", "tells two interns to go to ...", "have to leave": no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
                 s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
             return self._purpose(scan, i, i, i + 2)
@@ -159,6 +158,7 @@ class Clauses:
             name, width = prep
             if name == "from" and from_is_where_got(s, i, scan.own):  # not "takes towels from A to B"
                 name = "at"  # "buy tickets from the machines": where they stand, not where they start
+            name = "at" if name == "out" and i > 0 and s.verb(i - 1) in lx.THING_OR_PLACE_VERBS else name  # "mops out the bar"
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
             place = self._there(i, width, name) if i + width < s.n and s.low[i + width] == "there" else \
                 self.places.phrase(i + width, name, i, record_unknown=name != "off")
@@ -232,7 +232,8 @@ class Clauses:
             return True
         # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
         # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
-        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i)
+        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
+            sets_off_for(s, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
             refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
@@ -243,7 +244,7 @@ class Clauses:
                 return True
         end = s.phrase_end(i + 1)
         if end > i + 1 and not any(s.low[x] in lx.ROBOT_WORDS for x in range(i + 1, end)) and \
-                not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
+                not self.people.is_person_noun(i - 1) and not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
             scan.c.purpose = scan.c.purpose or s.span(i, end - 1)
             self._take(scan, i, end)
             return True
@@ -414,7 +415,7 @@ class Clauses:
             if phrasal is not None:
                 candidates.append((i, phrasal[1], phrasal[0][0]))
                 continue
-            if i in used or s.after_determiner(i) or any(p.index < i < p.end for p in c.places) or \
+            if i in used or named_thing(s, i) or any(p.index < i < p.end for p in c.places) or \
                     (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
@@ -460,7 +461,8 @@ class Clauses:
         k = i - 1
         while k > 0 and s.w[k].pos in ("NOUN", "PROPN", "DET", "ADJ", "NUM") and not s.is_punct(k):
             k -= 1
-        return k < i - 1 and s.verb(k) in lx.TELLING_VERBS and any(self.people.is_person_noun(x) for x in range(k + 1, i))
+        return k < i - 1 and s.verb(k) in lx.TELLING_VERBS | lx.ROBOT_COMMAND_VERBS and any(  # or the robot told
+            self.people.is_person_noun(x) or s.low[x] in lx.ROBOT_WORDS for x in range(k + 1, i))
 
     def _sent_away(self, i: int) -> int | None:
         """The word after "to leave", "out", "away" or "home" when the word at i is a passive verb

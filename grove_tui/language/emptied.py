@@ -1,6 +1,6 @@
 """Zones a sentence says are emptied, read with the place phrases (language/place_phrases.py): "the
-cafeteria clears out", "the ticket hall has to be emptied". Everybody in them leaves, as in an
-evacuation."""
+cafeteria clears out", "the ticket hall has to be emptied", or whose own alarm goes off ("the café's
+smoke alarm trips"). Everybody in them leaves, as in an evacuation."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
@@ -44,7 +45,7 @@ class EmptiedZones:
         s = self.s
         out: list[Place] = []
         for i in tokens:
-            end = self._emptied_subject_end(i)
+            end = self._emptied_subject_end(i) if s.low[i] not in ("'s", "’s") else self._hazard_owner_end(i)
             if end is None:
                 continue
             first = end
@@ -60,6 +61,11 @@ class EmptiedZones:
             self.context_zones.append(match.zone)
             out.append(Place("obj:start", first, words, match, end))
         return out
+
+    def _hazard_owner_end(self, i: int) -> int | None:
+        """The end of a zone that owns a hazard said right after it ("the common room's smoke detector
+        trips", "the café's fire alarm goes off"): everybody in it leaves, as from an emptied zone."""
+        return i if any(hazard_cue(self.s, k) for k in range(i + 1, min(i + 4, self.s.n))) else None
 
     def _emptied_subject_end(self, i: int) -> int | None:
         """The end of the subject an emptying verb at i empties, or None when it empties nothing."""

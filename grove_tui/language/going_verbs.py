@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import verb_lemma
 
 # Verbs of wandering the lexicon lacks ("mooch around the galleries").
 MORE_WANDER_VERBS = frozenset("mooch mosey moseys mooching moseying mooched".split())
@@ -63,4 +64,43 @@ def goes_to_after(s: Sentence, i: int) -> bool:
         k += 1
     if k < s.n and s.low[k] in _PARTICLES and k + 1 < s.n and s.low[k + 1] in _TO:
         k += 1
+    elif k < s.n and s.low[k] in _WAYS:
+        k = _past_a_way(s, k + 1)
     return k < s.n and s.low[k] in _TO and not s.verb_follows(k + 1)
+
+
+# Prepositions of the way taken before where one goes ("ambles down the central aisle to the loading bay").
+_WAYS = frozenset("down along through across up past via".split())
+
+
+def _past_a_way(s: Sentence, k: int) -> int:
+    """The word after a way's noun phrase from k ("the central aisle" in "down the central aisle to"),
+    or k itself when no noun phrase stands there."""
+    j = k
+    while j < s.n and j < k + 5 and (s.w[j].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or s.low[j] in ("'s", "’s")):
+        j += 1
+    return j if j > k and s.w[j - 1].pos in ("NOUN", "PROPN") else k
+
+
+def named_thing(s: Sentence, i: int) -> bool:
+    """Whether the word at i is a noun a determiner leads up to, past adjectives after a verb ("hauls the
+    weekly shop", "lugs her big shop"), so no verb even when the lexicon has one of its spelling."""
+    k = i - 1
+    while k > 0 and s.w[k].pos == "ADJ" and s.w[i].pos == "NOUN":
+        k -= 1
+    if k == i - 1:
+        return s.after_determiner(i)
+    return s.after_determiner(k + 1) and k >= 1 and s.w[k - 1].pos == "VERB"  # not "a cleaner mops", "a few more wait"
+
+
+def sets_off_for(s: Sentence, i: int) -> bool:
+    """Whether the "for" at i follows "set off" or "set out" ("set off for the aquarium"): where they go,
+    as after "head for" ("set aside for worship" is what for)."""
+    return i >= 2 and verb_lemma(s.low[i - 2]) == "set" and s.low[i - 1] in ("off", "out")
+
+
+def obliged_to(s: Sentence, i: int) -> bool:
+    """Whether the "to" at i follows "have", "has" or "need" ("all 20 have to leave", "needs to go"): what
+    they must do, which is what they do, no purpose."""
+    return i >= 1 and s.low[i - 1] in ("have", "has", "had", "need", "needs", "needed") and \
+        not (i >= 2 and s.low[i - 2] in ("will", "would", "might", "may"))

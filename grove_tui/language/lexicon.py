@@ -343,7 +343,7 @@ PURPOSE_PLACE_VERBS = DESTINATION_OBJECT_VERBS | PURPOSE_OBJECT_VERBS | frozense
 # Verbs whose object is a place or a thing in it ("mop the corridor", "clean the windows in the hall").
 # What people carry or hold is no place ("an intern carrying coffees", "a man holding a map").
 HOLDING_VERBS = frozenset("carry hold clutch lug juggle balance grip tote cradle".split())
-THING_OR_PLACE_VERBS = frozenset("clean mop sweep vacuum hoover scrub tidy search fill wipe polish dust".split())
+THING_OR_PLACE_VERBS = frozenset("clean mop sweep vacuum hoover scrub tidy search fill wipe polish dust swab hose".split())
 # Verbs whose object is what people look at ("watch TV"): where they are, unless a place is named too.
 SEEN_OBJECT_VERBS = frozenset({"watch"})
 # Verbs whose object is a place passed through ("cross the hall", "as it passes the lobby").
@@ -402,7 +402,7 @@ for _interaction, _verbs in {
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
              "hit punch push slap smack thump whack bash ram barge heckle taunt abuse grab tip topple vandalise "
-             "vandalize headbutt fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend",
+             "vandalize headbutt fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend shoo hem",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)

@@ -17,6 +17,7 @@ from grove_tui.language.trader_people import trader_subject
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
+from grove_tui.language.lone_person import by_a_person_adjective, goes_along_a_route, told_as_he_or_she
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.singular_verbs import subject_of_a_later_verb
 from grove_tui.language.sequences import acting_as_verb
@@ -69,6 +70,8 @@ class People:
             return False  # "..., then guides 5 passengers": a verb, no guide
         if role_thing(s, i):
             return True  # "the keynote speaker walks", "a session chair heads to ...": a role
+        if goes_along_a_route(s, i) or by_a_person_adjective(s, i):
+            return True  # "the dispenser nips out of the pharmacy into the kitchen", "an elderly gent lingers"
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
             return False
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
@@ -86,7 +89,8 @@ class People:
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
-                self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i):
+                self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
+                told_as_he_or_she(s, i):  # "an old dear shrieks when she spots the robot"
             return True
         if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i):
             return True  # "a keeper wheels a lady ...", "pushes an elderly gent on a gurney"

@@ -13,7 +13,6 @@ from dataclasses import dataclass
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
-from grove_tui.language.hazards import cause_thing
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.place_around import around, beside_thing, stairs
@@ -28,6 +27,7 @@ from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARG
 from grove_tui.language.named_owners import owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in
+from grove_tui.language.not_places import no_place_said
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -88,7 +88,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         low = s.low
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
-        record_unknown = record_unknown and prep != "between" and not cause_thing(s, k, prep, at)  # a time; a cause
+        record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
         if is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
         if k < s.n and low[k] in ("where", "upstairs", "downstairs"):  # "to where you get your bags back"

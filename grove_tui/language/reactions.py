@@ -11,7 +11,9 @@ from grove_tui.language.disregard import disregards
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
+from grove_tui.language.robot_idioms import idiom_reaction, timed_by_robot, timed_reaction
 from grove_tui.language.robot_manner import manner_reaction
+from grove_tui.language.robot_requests import asks_to_be_led
 from grove_tui.language.robot_motion import motion_reaction_before
 from grove_tui.language.tokens import verb_lemma
 
@@ -40,6 +42,21 @@ def robot_positions(s: Sentence, own: Sequence[int], robot_after: int | None) ->
     if robot_after is not None:
         found.append(robot_after)
     return found
+
+
+def clause_reaction(s: Sentence, own: Sequence[int], robot_after: int | None) -> tuple[str | None, str | None]:
+    """A clause's reaction to the robot and, when it has none, its reaction with no object once the
+    robot was named (`unaimed_reaction`). An idiom comes first when the clause names the robot or the
+    robot's clause times it ("stops dead in her tracks as the robot approaches"); a clause the robot
+    times reacts with a verb of shrinking or a start too (robot_idioms.py)."""
+    robot_at = robot_positions(s, own, robot_after)
+    timed = timed_by_robot(s, own, robot_after)
+    idiom = idiom_reaction(s, own) if robot_at or timed else None
+    idiom = "follow" if asks_to_be_led(s, own, robot_at) else idiom  # "lets the robot lead her to room 107"
+    found = idiom if idiom is not None else robot_interaction(s, own, robot_at)
+    if found is None and timed:
+        found = timed_reaction(s, own)
+    return found, (unaimed_reaction(s, own) if found is None else None)
 
 
 def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) -> str | None:

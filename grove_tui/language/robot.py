@@ -22,6 +22,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.robot_asides import after_aside
+from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
@@ -248,6 +249,7 @@ class RobotClauses:
             verb = s.verb(rc.verb) if rc.verb is not None else ""
             placed = rc.verb is not None and (s.w[rc.verb].tag == "VBN" and verb in lx.ROBOT_PLACED_VERBS or (
                 verb, s.low[rc.verb + 1] if rc.verb + 1 < s.n else "") in _OFF_PHRASES)
+            placed = placed or keeps_post(s, rc.verb)  # "holds (its) position by the stairs"
             kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
             if kind is None:
                 if not any(p.match is not None for p in clause.places) and not self._passes_by(rc.verb):

@@ -1,7 +1,8 @@
 """Going to or after the robot by a verb of manner of walking (round 18): "two boys trot after the
 robot", "a pair of interns scamper over to it", "an intern makes a beeline for the robot", "kids skip
 along behind it". The small parser often tags these verbs a noun or an adjective ("trot", "scamper"),
-so they are known here by their words; a verb of the lexicon's walking verbs counts as well."""
+so they are known here by their words; a verb of the lexicon's walking verbs counts as well. Going off
+or away whenever the robot comes ("scurries off whenever the robot rolls near her") is avoiding it."""
 
 from __future__ import annotations
 
@@ -37,6 +38,23 @@ def _manner_verb(s: Sentence, i: int) -> bool:
         lx.INTENT_VERBS.get(s.verb(i)) in ("walk", "wander")
 
 
+# Words after such a verb that go away from where they are ("scurries off", "scuttles away again").
+AWAY_TAILS = (("off",), ("away",), ("off", "again"), ("away", "again"), ("straight", "off"))
+# Words of time that make the robot's coming the reason ("whenever the robot rolls near her").
+_WHEN = frozenset("when whenever as once if each every time the moment minute second soon".split())
+
+
+def fled_when_it_comes(s: Sentence, ownset: set[int], i: int, r: int) -> bool:
+    """Whether the manner of walking at i goes away whenever the robot at r comes ("a frightened girl
+    scurries off whenever the robot rolls near her", "scuttles away as soon as it comes close"): avoiding it."""
+    for tail in AWAY_TAILS:
+        end = i + 1 + len(tail)
+        if tuple(s.low[i + 1:end]) == tail and all(k in ownset for k in range(i + 1, end)) and end < r and \
+                s.low[end] in _WHEN and all(s.low[k] in _WHEN or s.low[k] in lx.DETERMINERS for k in range(end, r)):
+            return True
+    return False
+
+
 def _only_determiners(s: Sentence, a: int, r: int) -> bool:
     return all(s.low[j] in lx.DETERMINERS or s.low[j] in ("just", "right") for j in range(a, r))
 
@@ -51,6 +69,8 @@ def motion_reaction(s: Sentence, ownset: set[int], i: int, r: int) -> str | None
             return "approach"
     if not _manner_verb(s, i):
         return None
+    if fled_when_it_comes(s, ownset, i, r):
+        return "avoid"
     for tails, interaction in ((FOLLOW_TAILS, "follow"), (APPROACH_TAILS, "approach")):
         for tail in tails:
             if tuple(s.low[i + 1:i + 1 + len(tail)]) == tail and all(k in ownset for k in range(i + 1, r)) and \

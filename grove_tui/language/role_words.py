@@ -55,7 +55,11 @@ def _verb_follows(s: Sentence, i: int) -> bool:
 
 def abbreviated_role(s: Sentence, i: int) -> bool:
     """Whether word i is a role said short ("the GP waits", "a PCSO walks", "the vet heads out")."""
-    if i == 0 or s.low[i - 1] not in _DETERMINERS:
+    first = i
+    while first > 1 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
+            s.w[first - 1].pos in ("NOUN", "ADJ"):
+        first -= 1  # "a locum GP loiters", "the duty PCSO walks"
+    if first == 0 or s.low[first - 1] not in _DETERMINERS:
         return False
     text = s.w[i].text
     capitals = text.isalpha() and text.isupper() and 2 <= len(text) <= _MAX_LETTERS and text not in _NOT_PEOPLE

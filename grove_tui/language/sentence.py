@@ -153,7 +153,8 @@ class Sentence:
             return "down", 1
         if w == "round" and i + 1 < self.n and (low[i + 1] in lx.DETERMINERS or self.index.knows(lemma(low[i + 1]))):
             return "around", 1  # "gather round the whiteboard"
-        if w == "over" and i + 2 < self.n and low[i + 1] in lx.DETERMINERS and self.index.knows(lemma(low[i + 2])) \
+        if w == "over" and i + 2 < self.n and (low[i + 1] in lx.DETERMINERS and self.index.knows(lemma(low[i + 2])) or
+                                               self.index.knows(lemma(low[i + 1])) and IDENTIFIER.fullmatch(low[i + 2])) \
                 and not (i > 0 and lx.INTENT_VERBS.get(verb_lemma(low[i - 1])) in ("walk", "evacuate")):
             return "at", 1  # "hunched over the reception desk", "leaning over desk 9": at it, not across it
         if w == "out" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:

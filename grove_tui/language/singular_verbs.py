@@ -12,13 +12,14 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from grove_tui.language.parser import Word
+from grove_tui.language.plural_verbs import as_plural_verbs
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
 
 _SINGULAR = frozenset({"NN", "NNP", "JJ"})
-_AFTER = frozenset({"ADP", "ADV", "DET", "PROPN", "PRON", "NUM", "PART", "PUNCT"})
+_AFTER = frozenset({"ADP", "ADV", "DET", "PROPN", "PRON", "NUM", "PART", "PUNCT", "SCONJ", "CCONJ"})
 _SUBJECT_WORDS = frozenset({"DET", "ADJ", "NOUN", "PROPN", "NUM", "ADP", "PUNCT", "PRON"})
 
 
@@ -73,7 +74,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
                     out[j] = replace(out[j], head=k - 1)
             out[k - 1] = replace(prev, dep=w.dep, head=w.head)
             out[root] = replace(out[root], dep="nsubj", head=k)
-    return out
+    return as_plural_verbs(out)  # "some 30 well-wishers drift out of ...": the plural's verb, too
 
 
 def subject_of_a_later_verb(s: Sentence, k: int) -> bool:

@@ -74,6 +74,8 @@ _YEAR_PERSON = re.compile(r"\b(first|second|third|fourth|final|1st|2nd|3rd|4th)-
 # Words people also write apart or hyphenated that the reader knows joined ("newly-weds", "after school
 # club"): written joined before parsing, so the parser takes one word and not a preposition or an adverb.
 _JOINED = re.compile(r"\b(newly|after)[- ](weds?|school)\b", re.IGNORECASE)
+# "the in-store chemist", "the on-site café": of the place the scene is in, so the place's own name.
+_OF_THIS_PLACE = re.compile(r"\b(?:in|on)\s*-\s*(?:store|site|house|campus|premises|station)\s+(?=[A-Za-z])", re.IGNORECASE)
 # A game named by its side's size ("five-a-side", "7-a-side") is one word, not a count of people.
 _A_SIDE = re.compile(r"\b([A-Za-z]+|\d+)\s*-\s*a\s*-\s*side\b", re.IGNORECASE)
 _ROUNDS = re.compile(r"\b(do|does|did|done|doing|make|makes|made|making|go\s+on|goes\s+on|went\s+on|gone\s+on|"
@@ -100,7 +102,7 @@ def normalise(text: str) -> str:
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     kept = _JOINED.sub(lambda m: f"{m.group(1)}{'-' if m.group(1).lower() == 'after' else ''}{m.group(2)}", kept)
     kept = commas_for_brackets(kept)  # "the school group (25 children) walks": one group of 25
-    kept = _A_SIDE.sub(r"\1aside", kept)
+    kept = _OF_THIS_PLACE.sub("", _A_SIDE.sub(r"\1aside", kept))
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
     return " ".join(kept.split())

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.aspect_verbs import governed_verb
+from grove_tui.language.lone_person import leading_name, said_as_a_verb
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
 from grove_tui.language.tokens import verb_lemma
 
@@ -65,12 +66,13 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
         return False
     first = i
-    while first > 0 and s.w[first - 1].head == i and (s.joins(first - 1) or s.w[first - 1].dep in ("compound", "amod")
+    while first > 0 and s.w[first - 1].head == i and (s.joins(first - 1) or s.w[first - 1].dep in ("compound", "amod", "nmod")
                                                       and s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ")):
         first -= 1  # "an airline rep", "two burly roadies", "some 20 well-wishers"
     if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
         return False  # "the robot hums ...": the robot's verb, tagged a noun
-    if word.tag != "NNP" and any(s.low[k] in lx.PERSON_NOUNS or s.lemma(k) in lx.PERSON_NOUNS for k in range(first, i)):
+    if word.tag != "NNP" and said_as_a_verb(s, i) and \
+            any(s.low[k] in lx.PERSON_NOUNS or s.lemma(k) in lx.PERSON_NOUNS for k in range(first, i)):
         return False  # "a nervous intern steps aside": the person is named before, the verb mistagged
     before = s.low[first - 1] if first > 0 else ""
     if first > 0 and s.w[first - 1].pos == "NUM" and s.w[first - 1].head == i:
@@ -81,7 +83,7 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
         return s.verb(word.head) not in _THINGS_GO_TOO if before != "the" else \
             s.verb(word.head) in lx.HUMAN_SUBJECT_VERBS  # "the cake arrives": a thing
     # A name: capitalised, with no determiner, the phrase opening the sentence or after a comma.
-    return (word.tag == "NNP" and s.w[i].text[:1].isupper() and s.w[i].text[1:].islower()
+    return leading_name(s, i) or (word.tag == "NNP" and s.w[i].text[:1].isupper() and s.w[i].text[1:].islower()
             and (first == 0 or s.is_punct(first - 1) or s.low[first - 1] in ("and", "while", "as", "then")))
 
 

@@ -1,0 +1,48 @@
+"""Nouns after a place preposition that say no place, so nothing to refuse when the world lacks them:
+the cause of a hazard (hazards.py) and, round 22:
+
+- the doer of a passive: "with the roof torn off by the storm", "its windows blown in by the gale"
+  (a phrase whose head names no room: "a bag left by the casino door" is still a place);
+- what is leafed through: "leafing through magazines", "flicks through a brochure" (a verb of turning
+  pages, or a bare plural that no determiner makes a place: "through leaflets");
+- an activity gone for: "set off for a walk", "head off for a jog" (a noun the lexicon knows as a verb
+  of going, or a pause: "for a smoke").
+"""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.activity_nouns import PAUSE_NOUNS
+from grove_tui.language.hazards import ROOM_HEADS, cause_thing
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import lemma, verb_lemma
+
+# Verbs of turning pages ("leafs through", "flicking through", "thumbs through").
+_PAGING = frozenset("leaf flick thumb riffle rifle skim browse page scroll sift rummage read look glance".split())
+# Particles that may stand between a passive participle and "by" ("torn off by", "blown in by").
+_PARTICLES = frozenset("off in out down over up away apart".split())
+
+
+def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
+    """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
+    if cause_thing(s, k, prep, at):
+        return True  # "smell of burning from the toaster"
+    if prep == "by":
+        v = at - 1
+        if v >= 1 and s.low[v] in _PARTICLES:
+            v -= 1
+        end = k
+        while end < s.n and s.w[end].pos in ("DET", "ADJ", "NOUN", "PROPN"):
+            end += 1
+        return v >= 1 and s.w[v].tag == "VBN" and end > k and lemma(s.low[end - 1]) not in ROOM_HEADS
+    if prep == "through":
+        paged = at >= 1 and verb_lemma(s.low[at - 1]) in _PAGING
+        bare_plural = k < s.n and s.low[k] not in lx.DETERMINERS and s.w[k].tag == "NNS"
+        return paged or bare_plural
+    if prep == "for":
+        j = k
+        while j < s.n and s.low[j] in ("a", "an", "their", "his", "her", "quick", "short", "long", "little", "brisk"):
+            j += 1
+        word = lemma(s.low[j]) if j < s.n else ""
+        return j > k and (lx.INTENT_VERBS.get(word) in ("walk", "wander") or word in PAUSE_NOUNS)
+    return False
