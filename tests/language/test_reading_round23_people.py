@@ -39,3 +39,25 @@ def test_a_person_taken_along_by_others_is_a_second_group(read, world, prompt, m
 ])
 def test_no_one_taken_along_without_a_person_and_a_route(read, world, prompt):
     assert all(g.intent != "follow" for g in read(world, prompt).groups)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "Two leaf blowers hum in the kitchen."),
+    ("hospital", "Fairy lights hang around the cafeteria."),
+])
+def test_things_named_by_agent_nouns_are_nobody(read, world, prompt):
+    assert all(g.count.kind == "vague" for g in read(world, prompt).groups)
+
+
+@pytest.mark.parametrize("world,prompt,kind,value", [
+    ("theme_park", "The moment the park opens, about seventy thrill-seekers sprint for the food court.", "approximate", 70),
+    ("zoo", "About thirty sun-seekers laze on penguin beach.", "approximate", 30),
+    ("office", "Some 12 autograph hunters hang about in reception.", "approximate", 12),
+    ("market_hall", "A dozen bargain hunters rummage through the craft stalls as the robot sweeps up and down the "
+     "central aisle.", "exact", 12),
+    ("hospital", "Around forty autograph-hunters hang about in the cafeteria.", "approximate", 40),
+    ("hospital", "A dozen sun-seekers hang around outside the cafeteria.", "exact", 12),
+])
+def test_a_count_on_people_named_by_a_split_agent_noun(read, world, prompt, kind, value):
+    group = read(world, prompt).groups[0]
+    assert group.count.kind == kind and group.count.value == value
