@@ -54,6 +54,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
 from grove_tui.language.robot import RobotClause, RobotClauses
+from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
@@ -122,6 +123,7 @@ def _read(s: Sentence) -> PromptReading:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
+    robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
