@@ -55,3 +55,65 @@ def test_gathering_round_the_robot_itself_is_still_coming_to_it(read):
     assert g.robot_interaction == "approach"
     (g,) = read("station", "Two porters chat to the robot on platform 1.").groups
     assert g.robot_interaction == "approach"
+
+
+# ---- 2. the robot staying or going round said in other words -----------------------------------------
+
+@pytest.mark.parametrize("world,prompt,task,location", [
+    ("station", "Have the robot park by the ticket machines while two porters natter in the staff office.",
+     "wait", "ticket_machines"),
+    ("hotel", "Have the robot park beside the concierge desk while a porter naps in the luggage room.",
+     "wait", "concierge_desk"),
+    ("mall", "A dozen shoppers browse the bookshop as the robot goes up and down the west mall.", "patrol", "west_mall"),
+    ("market_hall", "Two traders chat by the butcher's as the robot trundles back and forth along the middle aisle.",
+     "patrol", "central_aisle"),
+    ("station", "The robot rolls to and fro along platform 1 while a guard waits by the gateline.", "patrol",
+     "platform_1"),
+])
+def test_parking_or_going_to_and_fro_is_a_wait_or_a_patrol(read, world, prompt, task, location):
+    robot = read(world, prompt).robot
+    assert robot is not None and (robot.task, robot.location, robot.via) == (task, location, ())
+
+
+# ---- 3. people who let the robot lead them to a room by its number ------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hotel", "Jet-lagged after a long flight, a guest lets the robot take him from the lobby to number 104.",
+     "lobby", "room_104"),
+    ("hotel", "A confused old man lets the robot guide him from the bar to no. 109.", "bar", "room_109"),
+    ("hotel", "Back from the spa, a woman lets the robot walk her from the lift lobby to #102.", "lift_lobby",
+     "room_102"),
+    ("hotel", "A tipsy wedding guest lets the robot lead him from the ballroom to Number 110.", "ballroom",
+     "room_110"),
+])
+def test_a_room_said_by_number_is_where_the_robot_leads_them(read, world, prompt, start, destination):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.robot_interaction == "follow" and r.unknown_places == ()
+    assert r.robot is not None and (r.robot.task, r.robot.start, r.robot.destination) == ("cross", start, destination)
+
+
+# ---- 4. a reaction said as a state ------------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Busy on a call at her desk, the receptionist pays the robot no attention.", None),
+    ("mall", "Engrossed in a phone call by the fountain, a teenager pays the robot no heed at all.", "fountain"),
+    ("station", "Stuck in a long video call on platform 2, a commuter ignores the robot.", "platform_2"),
+])
+def test_a_call_someone_is_on_is_no_place(read, world, prompt, location):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert r.unknown_places == () and g.robot_interaction is None
+    assert location is None or g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "A new cleaner by the lifts is frightened of the robot and cowers whenever it trundles by.",
+     "elevator_hall"),
+    ("parcel_depot", "A temp driver at van bay B is frightened of the robot and cowers whenever it rolls by.",
+     "van_bay_b"),
+    ("museum", "A shy pupil in the cafe is frightened of the robot and cowers whenever it trundles past.", "cafe"),
+])
+def test_a_second_verb_of_one_person_is_no_group(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert (g.count.value, g.robot_interaction, g.robot_reaction, g.location) == (1, "avoid", "Scared", location)
