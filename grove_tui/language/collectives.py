@@ -111,14 +111,15 @@ class Collectives:
                 if member is not None and member <= inner[1] + 2:
                     last = member
                     if noun in ("group", "crowd", "bunch", "party", "team", "queue", "line", "class", "tour") or \
-                            noun in lx.MEMBERS_NAME_COLLECTIVES:
+                            noun in lx.MEMBERS_NAME_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES:
                         label = self.people.label(member)
             else:
                 member = self.people.person_head(s.skip(head + 2, {"the", "their", "our"}), counted=False)
                 if member is not None:
                     last = member
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
-                                "couple", "pair", "handful", "trio", "duo", "quartet") or noun in lx.MEMBERS_NAME_COLLECTIVES:
+                                "couple", "pair", "handful", "trio", "duo", "quartet") or \
+                            noun in lx.MEMBERS_NAME_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES:
                         label = self.people.label(member)
         if label == noun and head > 0 and self.people.is_person_noun(head - 1) and self.people.collective_after(head - 1):
             at = min(at, head - 1)

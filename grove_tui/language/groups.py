@@ -28,6 +28,7 @@ from grove_tui.language.place_phrases import Place, PlacePhrases, place_confiden
 from grove_tui.language.place_served import served_fixture
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
+from grove_tui.language.robot_crowds import met_people_words
 from grove_tui.language.roles import Roles, assign_roles
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
@@ -282,6 +283,7 @@ class Groups:
         if rc is None:
             return Clause()
         after = [i for i in rc.tokens if i > m.last]
+        after = met_people_words(self.s, after) if m.robot_object == "met" else after  # not the robot's way on
         clause = self.clauses.read(after, excluded - set(after))
         if m.robot_object == "led":
             return replace(clause, robot="follow", intent=clause.intent or "walk", has_action=True)

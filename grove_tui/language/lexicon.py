@@ -55,7 +55,7 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 # Collective nouns: a size when the prompt gives none, and whether the members move together.
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
-    "squad": (3, 6), "crowd": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "jury": (12, 12), "triplet": (3, 3),
+    "squad": (3, 6), "crowd": (15, 30), "throng": (15, 30), "horde": (15, 30), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "jury": (12, 12), "triplet": (3, 3),
     "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2), "quartet": (4, 4), "quintet": (5, 5),
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
@@ -83,7 +83,7 @@ FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (
                                              "newlywed": (2, 2), "honeymooner": (2, 2)}
 COUPLE_PLURALS = frozenset({"newlywed", "honeymooner"})  # "the newlyweds": a couple, together
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
-QUANTIFYING_COLLECTIVES = frozenset({"crowd"})
+QUANTIFYING_COLLECTIVES = frozenset({"crowd", "throng", "horde"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
                                   "trio", "duo", "quartet", "quintet", "class", "tour", "delegation", "twin", "triplet", "coachload", "busload",
                                   "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew",
@@ -131,7 +131,7 @@ PERSON_NOUNS = frozenset(
     porter student teacher child kid baby toddler teenager teen adult parent mother father mom mum dad grandparent
     grandmother grandfather grandma grandpa family friend couple guest resident neighbour neighbor roommate tenant
     customer client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
-    volunteer caregiver paramedic intern developer engineer member attendee participant crowd audience congregation group team party
+    volunteer caregiver paramedic intern developer engineer member attendee participant crowd throng horde audience congregation group team party
     occupant user walker runner diner commuter spectator fan player athlete pilgrim inpatient outpatient therapist
     technician radiologist dentist chef cook waiter waitress barista boss professor pupil infant housemate sibling
     brother sister son daughter husband wife partner relative cousin uncle aunt courier smoker jogger pair
@@ -335,7 +335,7 @@ ONE_SET_PLURALS = frozenset({"twin", "triplet"})
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum watch "
-                                  "hoover scrub tidy".split())
+                                  "hoover scrub tidy crowd throng pack cram".split())
 # Verbs of a purpose ("to reach the ICU", "to get to the pharmacy") whose object, or the place after
 # their "to", is where people go; PURPOSE_OBJECT_VERBS take it as an object ("to use the toilets").
 PURPOSE_OBJECT_VERBS = frozenset("use board".split())

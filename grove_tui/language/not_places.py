@@ -6,7 +6,8 @@ the cause of a hazard (hazards.py) and, round 22:
 - what is leafed through: "leafing through magazines", "flicks through a brochure" (a verb of turning
   pages, or a bare plural that no determiner makes a place: "through leaflets");
 - an activity gone for: "set off for a walk", "head off for a jog" (a noun the lexicon knows as a verb
-  of going, or a pause: "for a smoke").
+  of going, or a pause: "for a smoke");
+- a call someone is on (round 23): "busy on a phone call", "in a video call".
 """
 
 from __future__ import annotations
@@ -27,6 +28,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
     if cause_thing(s, k, prep, at):
         return True  # "smell of burning from the toaster"
+    if prep in ("on", "in", "during") and _a_call(s, k):
+        return True  # "busy on a phone call", "in a video call": what they are doing, not where
     if prep == "by":
         v = at - 1
         if v >= 1 and s.low[v] in _PARTICLES:
@@ -46,3 +49,11 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         word = lemma(s.low[j]) if j < s.n else ""
         return j > k and (lx.INTENT_VERBS.get(word) in ("walk", "wander") or word in PAUSE_NOUNS)
     return False
+
+
+def _a_call(s: Sentence, k: int) -> bool:
+    """Whether the phrase from k is a call someone is on ("a phone call", "a long video call")."""
+    end = k
+    while end < s.n and s.w[end].pos in ("DET", "ADJ", "NOUN", "PROPN", "PRON"):
+        end += 1
+    return end > k and lemma(s.low[end - 1]) in ("call", "phonecall")

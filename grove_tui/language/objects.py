@@ -10,6 +10,7 @@ from grove_tui.language.caused_motion import moves_along
 from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
 from grove_tui.language.people import People
+from grove_tui.language.robot_crowds import its_way
 from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
 from grove_tui.language.robot_modals import before_obligation
 from grove_tui.language.school_classes import named_class
@@ -134,7 +135,8 @@ class PeopleObjects:
         p = at - 1
         direct = True
         while p > 0 and p >= at - 6 and not s.is_punct(p) and s.low[p] not in lx.CLAUSE_STARTERS and \
-                (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or (
+                (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or
+                 its_way(s, p) or (
                     s.w[p].pos in ("NOUN", "NUM") and not self.people.is_person_noun(p)
                     and not s.index.knows(s.lemma(p)))):
             direct = False

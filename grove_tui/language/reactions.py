@@ -220,7 +220,7 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
         if stopping is not None:
             return stopping  # "stops to let the robot cross": making way
         if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
-                not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] == "look"):
+                not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] in ("look", "approach")):
             return lx.ROBOT_VERBS[v]
         if s.lemma(i) in lx.ROBOT_NOUNS:
             return lx.ROBOT_NOUNS[s.lemma(i)]  # "stop to take photos of the robot"

@@ -55,7 +55,9 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
 from grove_tui.language.robot import RobotClause, RobotClauses
+from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
+from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
 from grove_tui.language.split_wholes import parts_of_a_split_whole
@@ -80,6 +82,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
+    text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
@@ -123,6 +126,7 @@ def _read(s: Sentence) -> PromptReading:
         read = (groups.unnamed(robot_tokens),)
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
+    robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))

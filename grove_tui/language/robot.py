@@ -26,6 +26,7 @@ from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
+from grove_tui.language.robot_rounds import to_and_fro
 from grove_tui.language.sequences import robot_sequel
 from grove_tui.language.tokens import verb_lemma
 
@@ -125,8 +126,8 @@ class RobotClauses:
         if command:
             if low[j] == "to" and j + 1 < s.n and s.verb_follows(j + 1):
                 return first, j + 1, True  # "tell the robot to wait by the door"
-            if s.w[j].pos == "VERB" or s.w[j].tag == "VB":
-                return first, j, True  # "have the robot patrol the lobby"
+            if s.w[j].pos == "VERB" or s.w[j].tag == "VB" or verb_lemma(low[j]) in _TASK_VERBS:
+                return first, j, True  # "have the robot patrol the lobby", "have the robot park by ..." (a noun to the tagger)
             return first, None, True  # "send the robot to ward A": the sender's verb moves it
         if (task_verb := obligation_verb(s, j)) is not None:
             return first, task_verb, False  # "the robot needs to wait by the door", "is meant to follow them"
@@ -251,6 +252,8 @@ class RobotClauses:
                 verb, s.low[rc.verb + 1] if rc.verb + 1 < s.n else "") in _OFF_PHRASES)
             placed = placed or keeps_post(s, rc.verb)  # "holds (its) position by the stairs"
             kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
+            if kind in ("cross", None) and to_and_fro(s, rc.verb, rc.tokens):
+                kind = "patrol"  # "goes up and down the west mall": it keeps going round there
             if kind is None:
                 if not any(p.match is not None for p in clause.places) and not self._passes_by(rc.verb):
                     continue
