@@ -42,3 +42,35 @@ def test_a_place_named_outright_stays_itself(read, world, prompt, place):
     outright are not moved to a queue zone."""
     (g,) = read(world, prompt).groups
     assert (g.location or g.destination) == place
+
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("hospital", "Two porters leave the pharmacy in search of the physio gym.", "physio gym"),
+    ("sports_centre", "Two lads leave the gym in search of the sauna.", "sauna"),
+    ("mall", "Three teens go looking for the bowling alley.", "bowling alley"),
+    ("zoo", "A family go looking for the butterfly house.", "butterfly house"),
+    ("museum", "Two kids go hunting for the aquarium.", "aquarium"),
+])
+def test_a_place_searched_for_that_the_world_lacks_is_refused(read, world, prompt, unknown):
+    r = read(world, prompt)
+    assert r.unknown_places == (unknown,) and r.groups[0].destination is None
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("museum", "Two kids leave the cafe hunting for the dinosaur gallery.", "dinosaur_gallery"),
+    ("airport", "A tired couple go looking for the cafe.", "cafe"),
+])
+def test_a_place_searched_for_is_where_they_go(read, world, prompt, destination):
+    """Guards (these pass before round 23 too): a place the world has is still the destination."""
+    r = read(world, prompt)
+    assert r.groups[0].destination == destination and r.unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("residential", "Dad looks for the remote in the living room."),
+    ("hospital", "Two nurses search for a spare trolley in the supply room."),
+    ("airport", "A mum looks for her son in the cafe."),
+])
+def test_a_thing_searched_for_is_no_place(read, world, prompt):
+    """Guards: searching for a thing, or a person, in a place refuses nothing."""
+    assert read(world, prompt).unknown_places == ()
