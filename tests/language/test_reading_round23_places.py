@@ -74,3 +74,20 @@ def test_a_place_searched_for_is_where_they_go(read, world, prompt, destination)
 def test_a_thing_searched_for_is_no_place(read, world, prompt):
     """Guards: searching for a thing, or a person, in a place refuses nothing."""
     assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,intent,seconds", [
+    ("concert_venue", "Two roadies kill 30 mins in the green room.", "wait", 1800),
+    ("office", "Two interns kill twenty minutes in the kitchen before drifting back to the boardroom.", "walk", 1200),
+    ("airport", "Two pilots pass 20 minutes in the lounge before heading to gate B2.", "walk", 1200),
+    ("hotel", "A couple kill an hour in the bar.", "wait", 3600),
+])
+def test_a_stay_said_as_time_killed_or_passed_has_its_length(read, world, prompt, intent, seconds):
+    (g,) = read(world, prompt).groups
+    assert g.intent == intent and g.wait_seconds == seconds
+
+
+def test_a_stay_said_as_time_spent_has_its_length(read):
+    """Guard (passes before round 23 too): "spend" keeps its length."""
+    (g,) = read("library", "Three students spend an hour in the reading room.").groups
+    assert g.wait_seconds == 3600
