@@ -91,3 +91,25 @@ def test_a_stay_said_as_time_spent_has_its_length(read):
     """Guard (passes before round 23 too): "spend" keeps its length."""
     (g,) = read("library", "Three students spend an hour in the reading room.").groups
     assert g.wait_seconds == 3600
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("cinema", "In the interval, twenty people queue at the bar."),
+    ("museum", "In the intermission, a dozen visitors queue at the cafe."),
+    ("office", "On a phone call in the kitchen, a manager ignores the robot."),
+    ("hospital", "Busy on a call in the staff room, a doctor ignores the robot."),
+])
+def test_a_span_of_the_event_or_a_call_is_no_place(read, world, prompt):
+    r = read(world, prompt)
+    assert r.unknown_places == () and r.groups[0].location is not None
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Two clerks chat in the break room.", "kitchen"),
+    ("hospital", "A nurse on duty waits at the nurse station.", "nurse_station"),
+])
+def test_a_room_named_like_a_span_is_still_a_place(read, world, prompt, location):
+    """Guards (pass before round 23 too)."""
+    r = read(world, prompt)
+    if location is not None:
+        assert r.groups[0].location == location
