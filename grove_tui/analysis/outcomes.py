@@ -385,6 +385,10 @@ class _StartProbe(_Probe):
         ok = self.at_place(self.first[None])[0] if self.cols.size else np.zeros(0, bool)
         n, hits = self.members, int(ok.sum())
         status = HOLDS if hits >= _need(replace(self.claim, share=1.0), n) else FAILS
+        c = self.claim
+        if c.zone and c.place and c.place != c.zone and c.point is None:
+            # a thing or door is where they start in its zone: the zone is what is measured, so say it
+            return status, f"{hits}/{n} started in {c.zone} (where {c.place} is)"
         return status, f"{hits}/{n} started in {self.where()}"
 
 
@@ -453,6 +457,10 @@ class _StayProbe(_Probe):
         self.inside_after = np.zeros(m)
         self.trail = _Trail()
         self.held = 0  # how many stayed, as the last verdict found
+        # an asked while: the best dropped window of each member, and when they first came
+        self.best_after = np.zeros(m)
+        self.best_inside = np.zeros(m)
+        self.first_arrival = np.full(m, np.inf)
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size:
@@ -461,17 +469,46 @@ class _StayProbe(_Probe):
             self.trail.add(f.t, f.pos[:, self.cols])
         inside = self.inside(f)
         present = np.isfinite(f.pos[:, self.cols, 0])
+        if self.claim.seconds:
+            self._add_windows(f.t, inside, present, float(self.claim.seconds))
+            return
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
         since = _judged_frames(f.t, self.arrived, self.claim.seconds)
         self.after += (since & present).sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
+    def _add_windows(self, t: np.ndarray, inside: np.ndarray, present: np.ndarray, seconds: float) -> None:
+        """An asked while ("wait at the seats for a minute"): judged from an arrival, but passing by on
+        the way (within the radius for a few seconds, then on round the seats to come back later) is
+        not the arrival: a window that can no longer reach STAY_SHARE is dropped and the next coming
+        back opens a new one; the best window is kept."""
+        allowed = (1.0 - STAY_SHARE) * seconds / self.checker.sample_dt + 1.0
+        for i in range(t.size):
+            opened = np.isinf(self.arrived) & inside[i]
+            self.arrived[opened] = t[i]
+            self.first_arrival = np.minimum(self.first_arrival, self.arrived)
+            window = (t[i] >= self.arrived) & (t[i] < self.arrived + seconds)
+            self.after += window & present[i]
+            self.inside_after += window & inside[i]
+            doomed = window & (self.after - self.inside_after > allowed)
+            if doomed.any():
+                better = doomed & (self.inside_after > self.best_inside)
+                self.best_after[better] = self.after[better]
+                self.best_inside[better] = self.inside_after[better]
+                self.arrived[doomed] = np.inf
+                self.after[doomed] = 0.0
+                self.inside_after[doomed] = 0.0
+
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         n = self.members
-        arrived = np.isfinite(self.arrived)
-        share = np.divide(self.inside_after, self.after, out=np.zeros_like(self.after), where=self.after > 0)
-        stayed_for = (self.inside_after * checker.sample_dt)
+        # the best window of each member who came (a dropped one, or the one still open)
+        keep = self.best_inside > self.inside_after
+        after = np.where(keep, self.best_after, self.after)
+        inside_after = np.where(keep, self.best_inside, self.inside_after)
+        arrived = np.isfinite(self.arrived) | np.isfinite(self.first_arrival)
+        share = np.divide(inside_after, after, out=np.zeros_like(after), where=after > 0)
+        stayed_for = (inside_after * checker.sample_dt)
         ok = arrived & (share >= STAY_SHARE)
         asked = self.claim.seconds
         if asked and ok.any():
@@ -493,7 +530,7 @@ class _StayProbe(_Probe):
 
     def still_on_the_way(self) -> int:
         # those who arrived and left are not waiting; only the ones not there yet can still make it hold
-        walking = self.trail.walking(np.isinf(self.arrived))
+        walking = self.trail.walking(np.isinf(self.arrived) & np.isinf(self.first_arrival))
         return walking if self.held + walking >= _need(self.claim, self.members) else 0
 
 

@@ -693,7 +693,9 @@ def place_groups(world: World, grid: OccupancyGrid, preset: Preset, groups: list
             party = g.sfm_group + k if g.sfm_group >= 0 else -1
             fixed = kept_starts[first:first + size]
             cluster = None
-            if party >= 0 and len(fixed) < size:
+            # a social group starts together; so do people who follow someone ("six tourists follow her":
+            # the tour group around its guide, not spread over the hall, the last one 15 m off)
+            if (party >= 0 or g.leader_index is not None) and len(fixed) < size:
                 (cluster,) = space.sample(zone, 1, rng, 0.1, key=f"anchor:{zone}:{g.index}:{k}")
             starts = fixed + (space.sample(zone, size - len(fixed), rng, SPAWN_SPACING, key="spawn",
                                            cluster=cluster) if len(fixed) < size else [])

@@ -107,7 +107,7 @@ def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
     them: "the robot follows a guide from the entrance hall to the auditorium" asks for a guide who
     walks from the entrance hall to the auditorium, with the robot behind. Likewise the person a group
     follows: "six students follow the senior doctor to ward C" has a doctor walking there ahead of them."""
-    reading = _with_people_followed(reading)
+    reading = _with_people_followed(_subsets_keep_their_activity(reading))
     robot = reading.robot
     if robot is None or robot.task != "follow" or not robot.follows:
         return reading
@@ -129,6 +129,42 @@ def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
 
 _NOBODY_IN_PARTICULAR = {"a", "an", "the", "one", "him", "her", "them", "someone", "their", "his", "its", "group",
                          "before", "others", "everyone", "us", "close", "closely", "behind", "right", "just"}
+
+
+# What some of a group can do to the robot while still doing what the group does ("a dozen passengers
+# queue at the counter and some of them glance at the robot": those six queue too, looking as it comes).
+# Following, approaching or blocking it takes them out of what the group does.
+_ALONG_WITH_THE_GROUP = frozenset({"look"})
+
+
+def _subsets_keep_their_activity(reading: PromptReading) -> PromptReading:
+    """A subset whose own words only react to the robot does its group's activity, with the reaction
+    around it: otherwise "some of them" would stand apart, and the group's activity (a queue of a dozen)
+    would be done, and claimed, by the rest alone."""
+    groups = list(reading.groups)
+    for i, group in enumerate(groups):
+        parent = _parent_index(group)
+        if parent is None or not 0 <= parent < len(groups) or parent == i:
+            continue
+        whole = groups[parent]
+        if group.intent != "robot" or group.robot_interaction not in _ALONG_WITH_THE_GROUP or group.destination \
+                or group.via or whole.intent in ("robot", "evacuate") or whole.robot_interaction:
+            continue
+        groups[i] = replace(group, intent=whole.intent, start=whole.start or group.start,
+                            destination=whole.destination, location=whole.location or group.location,
+                            via=whole.via, wait_seconds=whole.wait_seconds, waits_first=whole.waits_first,
+                            robot_reaction=group.robot_reaction or "Surprised")
+    return replace(reading, groups=tuple(groups)) if groups != list(reading.groups) else reading
+
+
+def _parent_index(group: GroupReading) -> int | None:
+    relation = group.relation or ""
+    if not relation.startswith("subset_of:"):
+        return None
+    try:
+        return int(relation.split(":", 1)[1])
+    except ValueError:
+        return None
 
 
 def _with_people_followed(reading: PromptReading) -> PromptReading:
@@ -191,6 +227,12 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
             else:
                 tree, added = honest_tree(d.tree, group, world, notes, label, evacuation_field, robot_zones)
             spawn = _spawn(group, d, world, default_spawn, tree, robot_zones)
+        if _base_intent(group) == "converse" and tree.node == "Wait" and spawn and \
+                not (group.location or group.start or group.destination):
+            # "while two nurses chat": no place named, so they talk where they are (a wait is no talk)
+            tree = DraftNode("Converse", {"target": spawn,
+                                          "duration": float(group.wait_seconds or CONVERSATION_SECONDS)})
+            added.append(f"talks where it starts ({spawn}): the sentence names no place")
         onward = onward_note(group, tree, world)
         if onward is not None:
             added.append(onward)

@@ -217,7 +217,7 @@ NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull 
     bag case luggage box parcel machine computer laptop phone monitor heater radiator speaker alarm siren bell
     engine motor drone balloon leaf flower plant tree elevator escalator printer scanner projector shutter conveyor
     generator sprinkler dishwasher boiler fridge freezer kettle timer tram ferry tractor forklift mower shuttle
-    scooter trailer container dispenser""".split())
+    scooter trailer container dispenser detector sensor extinguisher ventilator indicator compressor thermostat""".split())
 # Endings of nouns for someone who does something ("busker", "florist", "violinist", "sommelier"):
 # the subject of a verb, such a noun is a person unless the world or a list says otherwise.
 AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")

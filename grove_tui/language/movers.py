@@ -7,6 +7,7 @@ verb of taking someone along and a person as its object, is the mover."""
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.caused_motion import ROUTE_WORDS, taking_verb
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -60,7 +61,14 @@ def carried_in(s: Sentence, at: int, lemmas: tuple[str, ...] | list[str]) -> boo
     """Whether the phrase of a preposition at `at` names what someone moved along rides on ("pushes
     an elderly codger on a gurney"): a thing of riding, after a verb of taking someone along."""
     return bool(lemmas) and lemmas[-1] in RIDDEN_THINGS and \
-        any(verb_lemma(s.low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 6), at))
+        (any(verb_lemma(s.low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 6), at)) or taken_in(s, at))
+
+
+def taken_in(s: Sentence, at: int) -> bool:
+    """Whether the phrase of "in"/"on" at `at` says what someone is taken along in by a verb no list
+    has, a route after it ("hustles Edna in her wheelchair out of ward A")."""
+    return any(taking_verb(s, x) and s.w[x + 1].pos in ("DET", "PROPN", "NUM") for x in range(max(0, at - 5), at - 1)) \
+        and any(s.low[y] in ROUTE_WORDS for y in range(at + 2, min(s.n, at + 7)))
 
 
 # Verbs of going to get someone, who then comes along ("fetches the new starter from the lobby and

@@ -6,6 +6,7 @@ follow their teacher"), and those inside the robot's own clause ("the robot esco
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.caused_motion import moves_along
 from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
 from grove_tui.language.people import People
@@ -63,14 +64,18 @@ class PeopleObjects:
         orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
-        if p < 1 or verb_lemma(s.low[p]) not in lx.LEADING_VERBS | FETCHING_VERBS or not (
+        leading = p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS | FETCHING_VERBS
+        if p < 1 or not (leading or s.w[p].pos == "VERB") or not (
                 self.people.is_person_noun(p - 1) or shared_subject_is_person(s, self.people, p - 1)
                 or each_leader(s, self.people, p - 1) is not None):  # "two porters, each pushing a patient"
             return False  # "a guard waits on platform 1, then leads four passengers": the guard's too
         q = quantifier(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
-        return self.people.person_head(start, counted=q is not None) is not None or self.carried_owner(at) is not None \
+        head = self.people.person_head(start, counted=q is not None)
+        if not leading:  # "a nurse trundles a patient out of X-ray": taken along a route
+            return head is not None and moves_along(s, p, head)
+        return head is not None or self.carried_owner(at) is not None \
             or named_class(s, start) is not None  # "a teacher takes year 3 to the hall"
 
     def carried_owner(self, at: int) -> tuple[int, int] | None:

@@ -26,7 +26,7 @@ from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
-from grove_tui.language.movers import carried_in
+from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.room_numbers import bare_room_number
@@ -160,7 +160,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is None and possessive:
             return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
         if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
-                any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)):
+                (any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)) or taken_in(s, at)):
             return None  # "porters roll a patient in her bed": what carries the person moved, not a place
         if at >= 1 and k < s.n and low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas)) \
                 and (low[at] in ("in", "with") or (low[at] == "on" and match is None)):

@@ -29,6 +29,8 @@ REFUSALS = frozenset("not n't never refuse refuses refused refusing won't".split
 IGNORING_PHRASES = (("pay", "no", "attention"), ("pay", "little", "attention"), ("take", "no", "notice"),
                     ("take", "little", "notice"), ("pay", "no", "heed"), ("pay", "it", "no"), ("barely", "notice"))
 NEGATIONS = frozenset("not n't never".split())
+# Verbs of ignoring whose object is the robot ("ignoring the robot", "snubs it").
+IGNORING_VERBS = frozenset("ignore disregard snub blank".split())
 # Verbs of contact that are hostile only with the robot for object or after "into"/"at": "pushes past
 # the robot" is passing it.
 PASSING_AFTER = frozenset("past by around round".split())
@@ -103,6 +105,8 @@ def _ignored(s: Sentence, own: Sequence[int], r: int) -> bool:
     then, within three words, the verb of looking or coming over ("never look at the robot")."""
     ownset = set(own)
     before = [i for i in own if i < r]
+    if any(s.verb(k) in IGNORING_VERBS for k in before[-3:]):
+        return True  # "gather round the coffee machine, ignoring the robot": not gathering round it
     for n, i in enumerate(before):
         if any(s.phrase_words(i, len(p), ownset) == p for p in IGNORING_PHRASES):
             return True

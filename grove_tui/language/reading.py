@@ -30,6 +30,7 @@ from dataclasses import replace
 
 from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
+from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.each_person import taken_by_each
@@ -102,7 +103,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_causers(s, without_asides(s, finder.find())))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_causers(s, without_second_names(s, without_asides(s, finder.find()))))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

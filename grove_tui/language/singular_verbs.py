@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language.parser import Word
 from grove_tui.language.plural_verbs import as_plural_verbs
+from grove_tui.language.subject_phrases import (
+    prepositions_as_such, subject_before, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -50,8 +52,12 @@ def _taken_for_noun(words: list[Word], k: int) -> bool:
 
 def as_singular_verbs(words: list[Word]) -> list[Word]:
     """The parse with the verb of one person, taken for a plural noun, tagged a verb (module doc)."""
-    out = list(words)
+    out = prepositions_as_such(words)  # "a timid lad beside gate B1": "beside" tagged a noun
     for k, w in enumerate(words):
+        after_phrase = subject_before(out, k) if not _taken_for_noun(out, k) else None
+        if after_phrase is not None:  # "a timid lad beside cashpoint 1 cowers", "Jenny from accounts nips over"
+            out = with_the_subject(out, k, after_phrase)
+            continue
         if not _taken_for_noun(out, k):
             continue
         base = verb_lemma(w.lower)
@@ -74,7 +80,8 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
                     out[j] = replace(out[j], head=k - 1)
             out[k - 1] = replace(prev, dep=w.dep, head=w.head)
             out[root] = replace(out[root], dep="nsubj", head=k)
-    return as_plural_verbs(out)  # "some 30 well-wishers drift out of ...": the plural's verb, too
+    # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject
+    return subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out)))
 
 
 def subject_of_a_later_verb(s: Sentence, k: int) -> bool:

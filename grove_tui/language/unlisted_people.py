@@ -55,14 +55,26 @@ def _a_thing(s: Sentence, lem: str) -> bool:
             or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS)
 
 
+_GROUP_NOUNS = lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES
+
+
 def unlisted_subject(s: Sentence, i: int) -> bool:
     """Whether word i heads a subject phrase naming people no list has (see the module doc)."""
     word = s.w[i]
     # (A subject the parser tags an adjective is a noun it does not know: "a nervous postgrad leaves".)
     if word.pos not in ("NOUN", "PROPN", "ADJ") or word.dep != "nsubj" or word.head == i or \
-            not s.low[i].isalpha() or len(s.low[i]) < 3 or not (_people_verb(s, word.head) or (
-                going_by_way(s, word.head) and word.tag == "NNP" and (i == 0 or s.low[i - 1] not in _OPENERS))):
+            not s.low[i].isalpha() or len(s.low[i]) < 3:
         return False
+    if not (_people_verb(s, word.head) or (going_by_way(s, word.head) and word.tag == "NNP" and (
+            i == 0 or s.low[i - 1] not in _OPENERS))):
+        if s.verb(word.head) in _GROUP_NOUNS:
+            return False  # "Small groups of two chat ...": a group, the parser's verb a noun
+        if word.tag != "NNP" or not s.w[i].text[:1].isupper() or not s.w[i].text[1:].islower() or \
+                s.w[word.head].tag != "VBZ":
+            # "Sarah scurries to the kitchen": a name opening the sentence (tagged a name or, mistaken, an
+            # adjective; not a noun: "Lightning strikes nearby"), any verb of hers
+            return word.tag in ("NNP", "JJ") and leading_name(s, i)
+        # a name, any verb of hers in the singular: "our intern Bella dawdles by the printer"
     if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
         return False
     first = i

@@ -88,6 +88,14 @@ def test_start_is_where_everyone_is_in_the_first_frame(clinic):
     assert outcome.status == FAILS and "1/2 started in lobby" in outcome.evidence
 
 
+def test_a_start_by_a_thing_says_the_zone_it_measures(clinic):
+    # "four travellers wait at the meeting point": the start is checked in the thing's zone, and the
+    # evidence says so (not "started in meeting_point" for people spawned 10 m from it)
+    claim = Claim("start", "reception_desk", "start in lobby", zone="lobby", place="reception_desk", share=1.0)
+    outcome = check(clinic, claim, run(1, people(line((2, 2), (2, 2)), line((3, 2), (3, 2)))))
+    assert outcome.status == HOLDS and outcome.evidence == "2/2 started in lobby (where reception_desk is)"
+
+
 def test_reach_counts_who_got_there_and_when(clinic):
     claim = Claim("reach", "pharmacy", "walk to pharmacy", zone="pharmacy", needs_seconds=40.0)
     to_pharmacy = people(line((4, 1), (16, 9)), line((5, 1), (17, 9)))
@@ -156,6 +164,28 @@ def test_an_asked_wait_is_judged_over_its_seconds_and_leaving_after_it_is_no_cro
     assert held.status == HOLDS and "of the 10 s after arriving" in held.evidence
     cut_short = people(wait_then_go(20, 11.0), wait_then_go(21, 1.0))  # out of it 5 s after arriving
     assert check(clinic, claim, run(30, cut_short)).status == FAILS
+
+
+def test_an_asked_wait_by_a_thing_is_not_cut_short_by_passing_it_first(clinic):
+    # "a family of four waits at the lounge seats for a minute then walks on": one of them walks past
+    # the seats with the others (2.5 m from them for a few seconds), goes round the other way, comes
+    # back and waits the minute there; the wait holds for them (on main: "3/4 stayed", a false ✗)
+    claim = Claim("stay", "seats for 20 s", "wait at seats 20 s", place="seats", point=(20.0, -3.0), radius=3.0,
+                  seconds=20.0, needs_seconds=40.0)
+
+    def pass_then_come_back(t):
+        if t < 10.0:
+            return np.array([14.0 + 1.0 * t, -0.5])  # by the seats (2.5 m off) at t 4-8, on past them
+        if t < 20.0:
+            return np.array([24.0, -0.5])  # round the other side
+        return np.array([20.0, -3.0])  # back, and waits there
+    came_back = people(pass_then_come_back, line((20, -3), (20, -3)))
+    held = check(clinic, claim, run(50, came_back))
+    assert held.status == HOLDS, held.evidence
+    # who never comes back to wait still fails
+    passed_by = people(lambda t: np.array([14.0 + 1.0 * t, -0.5]) if t < 10.0 else np.array([24.0, -0.5]),
+                       line((20, -3), (20, -3)))
+    assert check(clinic, claim, run(50, passed_by)).status == FAILS
 
 
 def test_wander_is_moving_around_inside_the_zone(clinic):

@@ -13,7 +13,7 @@ from grove_tui.generation.pipeline import GenerationResult
 from grove_tui.generation.planning import OperationalPlan, plan_operational
 from grove_tui.generation.postprocess import postprocess
 from grove_tui.generation.presets import load_preset
-from grove_tui.generation.reconcile import grounding_report
+from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.generation.rois import select_rois
 from grove_tui.generation.route_time import Leg, planned_routes, planning_mode
 from grove_tui.language.reading import read_prompt
@@ -51,10 +51,13 @@ class PlannedRun:
 
 
 def plan_by_hand(world: World, preset_name: str, prompt: str, groups: tuple[DraftGroup, ...],
-                 out: Path) -> PlannedRun:
+                 out: Path, as_the_pipeline: bool = False) -> PlannedRun:
+    """`as_the_pipeline`: the reading completed as the pipeline does (people followed, subsets) before planning."""
     preset = load_preset(preset_name)
     grid = build_grid(world)
     reading = read_prompt(prompt, world)
+    if as_the_pipeline:
+        reading = with_followed_person(reading, world)
     post = postprocess(world, grid, preset, Draft(groups), select_rois(world, preset, reading), 0, reading, NODES)
     op = plan_operational(world, grid, preset, post, 0, reading=reading)
     routes = planned_routes(op.agents, op.trees, planning_mode(preset.velocity, preset.planner.enabled))
