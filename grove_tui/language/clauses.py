@@ -21,6 +21,7 @@ from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
+from grove_tui.language.place_search import searched_for
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -117,7 +118,8 @@ class Clauses:
         i = scan.own[scan.pos]
         w = s.low[i]
         nxt = s.low[i + 1] if i + 1 < s.n else ""
-        if w == "for" and not (i > 0 and s.low[i - 1] in lx.EXCEPT_WORDS) and self._for(scan, i, nxt):
+        searched = w == "of" and tuple(s.low[max(0, i - 2):i]) == ("in", "search")  # "in search of the gym"
+        if (w == "for" or searched) and not (i > 0 and s.low[i - 1] in lx.EXCEPT_WORDS) and self._for(scan, i, nxt):
             return True
         dur: tuple[float | None, int] | None = duration_at(s, i) if i > 0 and lx.INTENT_VERBS.get(
             s.verb(i - 1)) in lx.STATIONARY_INTENTS else None
@@ -233,7 +235,7 @@ class Clauses:
         # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
         # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
         right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
-            sets_off_for(s, i)
+            sets_off_for(s, i) or searched_for(s, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
             refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)

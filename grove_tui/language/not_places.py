@@ -7,7 +7,10 @@ the cause of a hazard (hazards.py) and, round 22:
   pages, or a bare plural that no determiner makes a place: "through leaflets");
 - an activity gone for: "set off for a walk", "head off for a jog" (a noun the lexicon knows as a verb
   of going, or a pause: "for a smoke");
-- a call someone is on (round 23): "busy on a phone call", "in a video call".
+- a call someone is on (round 23): "busy on a phone call", "in a video call";
+
+and, round 23, a span of the event ("in the interval", "during the break") and what people are busy on
+("on a phone call", "on a break", "on duty").
 """
 
 from __future__ import annotations
@@ -22,6 +25,9 @@ from grove_tui.language.tokens import lemma, verb_lemma
 _PAGING = frozenset("leaf flick thumb riffle rifle skim browse page scroll sift rummage read look glance".split())
 # Particles that may stand between a passive participle and "by" ("torn off by", "blown in by").
 _PARTICLES = frozenset("off in out down over up away apart".split())
+# Spans of an event people are in ("in the interval", "during half-time"), and what people are on ("on a call").
+_SPANS = frozenset("interval intermission half-time halftime meantime break recess".split())
+_BUSY_ON = frozenset("call break duty shift lunch tea".split())
 
 
 def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
@@ -30,6 +36,12 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         return True  # "smell of burning from the toaster"
     if prep in ("on", "in", "during") and _a_call(s, k):
         return True  # "busy on a phone call", "in a video call": what they are doing, not where
+    head = k
+    while head < s.n and s.w[head].pos in ("DET", "ADJ", "NOUN", "PROPN"):
+        head += 1
+    said = lemma(s.low[head - 1]) if head > k else ""
+    if prep in ("in", "during") and said in _SPANS or prep == "on" and said in _BUSY_ON:
+        return True  # "In the interval, ...", "busy on a phone call in the boardroom"
     if prep == "by":
         v = at - 1
         if v >= 1 and s.low[v] in _PARTICLES:

@@ -18,6 +18,7 @@ from grove_tui.language.place_compounds import KIND_HEADS, modified_otherwise, n
 from grove_tui.language.place_doers import named_doers
 from grove_tui.language.place_of_zone import served_at
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
+from grove_tui.language.place_where_things import where_things_are
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -216,6 +217,8 @@ class PlaceMeaning:
     def where_clause(self, k: int) -> tuple[Decided, int] | None:
         """A place said only by what is done there, a clause with no head ("walk to where you get your
         bags back", "wait where the trains come in"): the place, and the index after the clause."""
+        if (things := where_things_are(self.s.index, self.s.low, k)) is not None:
+            return things  # "to where the washers and dryers are": the room holding them
         clause = self._relative_clause(k, bare=False)
         if clause is None or self.s.low[k] != "where":
             return None

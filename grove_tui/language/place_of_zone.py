@@ -117,8 +117,8 @@ SERVED_MARGIN = 0.06
 def served_at(index: PlaceIndex, ranked: Sequence[MeaningMatch], best: MeaningMatch) -> MeaningMatch:
     """"to get a coffee": where a room nearest a purpose serves it (the café's coffee counter, tagged
     for service or a queue), when that fixture is nearly as near as the room; else the room."""
-    if best.entry.kind != "zone":
-        return best
+    if best.entry.kind != "zone" or any("queue" in t for t in best.entry.types):
+        return best  # a queue line is where the ride is queued for, not its boarding platform
     served = [r for r in ranked if r.entry.kind == "entity" and r.entry.zone == best.entry.name
               and r.similarity >= best.similarity - SERVED_MARGIN
               and {"service", "queue"} & (r.entry.tag_tokens | r.entry.tokens)]

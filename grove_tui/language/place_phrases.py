@@ -20,7 +20,7 @@ from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
 from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
-from grove_tui.language.place_outside import outside_zone
+from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
@@ -91,7 +91,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
         if is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
-        if k < s.n and low[k] in ("where", "upstairs", "downstairs"):  # "to where you get your bags back"
+        if k < s.n and low[k] in ("where", "wherever", "upstairs", "downstairs"):  # "to where you get your bags back"
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
@@ -224,14 +224,14 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
-        if (out := outside_zone(s, at, match)) is not None:  # "outside the pharmacy": the zone its door opens to
+        if (out := zone_around(s, at, j, match)) is not None:  # "outside the pharmacy", "lined up for the Viper"
             match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
                                   out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
 
     def where_place(self, k: int, prep: str, at: int, mentioned: bool) -> Place | None:
         """"to where you get your bags back", "wait where the trains come in": the place of the clause."""
-        found = self.where_clause(k) if self.s.low[k] == "where" else stairs(self.s.index, k)
+        found = self.where_clause(k) if self.s.low[k] in ("where", "wherever") else stairs(self.s.index, k)
         if found is None:
             return None
         (match, score, reason, alternatives), end = found

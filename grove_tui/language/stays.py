@@ -31,6 +31,8 @@ _WHOLE_WORDS = frozenset({"whole", "entire", "full"})
 _UNTIL = frozenset({"until", "till", "til", "untill"})
 # "make a coffee last half an hour": making a thing last as long as one stays.
 _MAKING = frozenset({"make", "makes", "made", "making"})
+# "kill 45 mins in the green room", "spend an hour in the café": passing that long there.
+_SPENDING = frozenset("kill kills killed killing spend spends spent spending pass passes passed passing".split())
 _ENDS = frozenset({"closing", "close", "end", "finish", "closing-time", "home-time", "lights-out"})
 
 
@@ -82,6 +84,8 @@ def stay_said_alone(s: Sentence, k: int) -> tuple[float | None, int] | None:
     if low[k] in ("last", "lasts") and any(low[x] in _MAKING for x in range(max(0, k - 5), k)):
         dur = duration_at(s, k + 1)  # "makes one cuppa last 40 minutes": a stay that long
         return (dur[0], dur[1]) if dur is not None else None
+    if low[k] in _SPENDING and k > 0 and (dur := duration_at(s, k + 1)) is not None:
+        return dur  # "kill 45 mins in dressing room 3", "spend an hour in the café"
     if low[k] == "throughout" and (k + 1 >= s.n or s.is_punct(k + 1)):
         return None, k + 1
     if tuple(low[k:k + 3]) == ("all", "the", "time"):
