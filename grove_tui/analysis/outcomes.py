@@ -1183,6 +1183,50 @@ class _RobotPatrolProbe(_Probe):
         return HOLDS, f"went to {self.where()} ({_when(self.far_at)}) and back ({_when(self.back_at)})"
 
 
+class _RobotPassesProbe(_Probe):
+    """robot_passes ("the robot drives through the queue", "threads its way through the crowd of visitors in
+    the waiting room"): the robot inside the place, within `distance` of one of the people there while they
+    are there (in a queue: someone who has joined it; passing the counter before they queue is no passing)."""
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.partner_cols = self.checker._cols(self.claim.partners)
+        self.t: list[np.ndarray] = []  # the frames the robot was in the place...
+        self.d: list[np.ndarray] = []  # ...and its distance to each of them then
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.partner_cols.size:
+            return
+        partners = f.pos[:, self.partner_cols]
+        d = np.hypot(partners[..., 0] - f.robot[:, 0:1], partners[..., 1] - f.robot[:, 1:2])
+        inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        self.t.append(f.t[inside])
+        self.d.append(np.where(np.isfinite(d[inside]), d[inside], np.inf))
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        n = int(self.partner_cols.size)
+        t = np.concatenate(self.t) if self.t else np.zeros(0)
+        d = np.concatenate(self.d) if self.d else np.zeros((0, n))
+        there = np.zeros(n)  # from when each of them is there
+        if self.claim.place is not None:  # people who queue there: from each one's join on
+            for j, agent in enumerate(self.claim.partners[:n]):
+                joins = [e.t for e in events.get(agent, ()) if e.kind == "queue_join" and e.detail == self.claim.place]
+                there[j] = min(joins) if joins else math.inf
+            if np.isinf(there).all():
+                return FAILS, f"nobody queued at {self.claim.place} for it to pass"
+        d = np.where(t[:, None] >= there[None, :], d, np.inf)
+        reach = self.claim.distance or 2.0
+        near = np.flatnonzero((d <= reach).any(axis=1)) if d.size else np.zeros(0, dtype=int)
+        who = "of someone in the queue" if self.claim.place is not None else "of them"
+        if near.size:
+            return HOLDS, f"came within {reach:g} m {who} in {self.claim.zone} at {_when(float(t[near[0]]))}"
+        text = f"never within {reach:g} m {who} in {self.claim.zone}"
+        if d.size and np.isfinite(d).any():
+            k = int(np.argmin(d.min(axis=1)))
+            text += f"; closest {float(d[k].min()):.1f} m at {_when(float(t[k]))}"
+        return FAILS, text
+
+
 class _RobotFollowPersonProbe(_Probe):
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
@@ -1214,7 +1258,7 @@ _PROBES: dict[str, type[_Probe]] = {
     "robot_approach": _RobotApproachProbe, "robot_block": _RobotBlockProbe, "robot_avoid": _RobotAvoidProbe,
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,
     "robot_stay": _RobotPlaceProbe, "robot_patrol": _RobotPatrolProbe,
-    "robot_follow_person": _RobotFollowPersonProbe,
+    "robot_follow_person": _RobotFollowPersonProbe, "robot_passes": _RobotPassesProbe,
 }
 
 

@@ -35,6 +35,7 @@ from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
+from grove_tui.generation.robot_passing import people_stay_in, zone_before
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.keep_out import keep_out_planner
@@ -339,8 +340,10 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
         # "the staff in the kitchen evacuate while the robot guides them out": it sets off from among them
         start = picker.pick(guided_zone, towards=None, away_from=goal)
     elif asked is not None and asked.via and task in ("cross", "patrol"):
-        # "crosses the ticket hall to the platforms": from the far side of the hall
-        start = picker.pick(asked.via[0], towards=None, away_from=goal)
+        # "crosses the ticket hall to the platforms": from the far side of the hall; "drives through the
+        # queue": from the next room, so it passes the people there (robot_passing.py)
+        before = zone_before(world, asked.via[0], goal) if people_stay_in(reading, world, asked.via[0]) else None
+        start = picker.pick(before or asked.via[0], towards=None, away_from=goal)
     elif task == "follow" and follows:
         rows = [a.start for a in post.agents if a.id in follows]
         centre = (sum(p[0] for p in rows) / len(rows), sum(p[1] for p in rows) / len(rows))

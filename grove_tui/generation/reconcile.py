@@ -871,7 +871,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     guided = guided_exit(reading, groups, agents)
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
-    robot_row = _robot_row(asked_robot, robot, world, agents)
+    robot_row = _robot_row(asked_robot, robot, world, agents, _stationary_groups(reading, groups, world))
     leader_of = next((g for g in reading.groups if g.robot_interaction == "follow" and g.destination), None)
     if asked_robot is None and robot_row is not None and robot is not None and leader_of is not None \
             and getattr(robot, "task", "cross") == "cross" and leader_of.destination:
@@ -1213,8 +1213,38 @@ def _leader(reading: PromptReading, r: GroupReading, by_reading: dict[int | None
 
 # ---- the robot's row --------------------------------------------------------------------------
 
+# How near the robot must come to people it is asked to drive through ("through the queue"), in metres.
+PASSING_DISTANCE = 2.0
+
+
+@dataclass(frozen=True)
+class _StayingGroup:
+    label: str
+    zone: str
+    members: tuple[int, ...]
+    queue_at: str | None  # the service point of a group that queues there
+
+
+def _stationary_groups(reading: PromptReading, groups: Sequence[PlannedGroup], world: World) -> list[_StayingGroup]:
+    """The groups that stay in one zone (queue, wait, talk, wander there): the people a robot driving
+    through that zone is asked to pass."""
+    out: list[_StayingGroup] = []
+    for g in groups:
+        if g.reading_index is None or g.reading_index >= len(reading.groups):
+            continue
+        r = reading.groups[g.reading_index]
+        base = _base_intent(r)
+        place = r.location or (r.destination if base in ("queue", "wait", "converse", "wander") else None)
+        zone = world.zone_of_place(place or "")
+        if base not in ("queue", "wait", "converse", "wander") or zone is None:
+            continue
+        service = next((place_of(node, "service_point") for node in g.tree.walk() if node.node == "Queue"), None)
+        out.append(_StayingGroup(g.label, zone, tuple(g.member_ids), service if base == "queue" else None))
+    return out
+
+
 def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World,
-               agents: Sequence[PlannedAgent]) -> RobotGrounding | None:
+               agents: Sequence[PlannedAgent], staying: Sequence[_StayingGroup] = ()) -> RobotGrounding | None:
     if robot is None:
         if asked is None:
             return None
@@ -1244,6 +1274,14 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
         for v in asked.via:
             claim = _place_claim("robot_via", v, f"drive through {v}", world, 1, seconds * 1.3 + 10.0)
             claims.append(claim)
+            zone = world.zone_of_place(v)
+            for group in (g for g in staying if g.zone == zone):
+                # "drives through the queue", "threads its way through the crowd of visitors in the waiting
+                # room": through the people there, while they are there, not only through the room
+                claims.append(Claim("robot_passes", f"through the {group.label}s in {zone}",
+                                    f"drive through {zone} past them", zone=zone, place=group.queue_at,
+                                    partners=group.members, distance=PASSING_DISTANCE,
+                                    needs_seconds=round(seconds * 1.3 + 10.0, 1)))
         if asked.destination:
             kind = "robot_patrol" if asked.task == "patrol" else "robot_reach"
             plan_text = f"{'patrol to' if kind == 'robot_patrol' else 'drive to'} {asked.destination}"

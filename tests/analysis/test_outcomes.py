@@ -9,6 +9,7 @@ person does is exactly what the test says.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -446,3 +447,23 @@ def test_asking_for_the_live_report_midway_changes_nothing_of_the_final_one(clin
                                  whole.people_yaw[sl], whole.groups, None, None))
         checker.result([], partial=True)
     assert checker.result([]).groups == once.groups
+
+
+def test_the_robot_passes_people_only_while_they_are_there(clinic):
+    """robot_passes ("drives through the queue"): within reach of one of them in the place; a queue's
+    people count from their joining it, so passing the counter before anyone queues is no passing."""
+    crowd = Claim("robot_passes", "through the people in lobby", "drive through", zone="lobby", partners=(1, 2),
+                  distance=2.0)
+    crossing = line((1, 4), (15, 4), 1.0)  # along y = 4 through the lobby, in it until t = 9
+    near = run(20, people(line((5, 5), (5, 5)), line((6, 5.5), (6, 5.5))), crossing)
+    assert check(clinic, None, near, robot_claims=(crowd,)).status == HOLDS
+    far = run(20, people(line((5, 7.5), (5, 7.5)), line((6, 7.5), (6, 7.5))), crossing)
+    missed = check(clinic, None, far, robot_claims=(crowd,))
+    assert missed.status == FAILS and "closest 3.5 m" in missed.evidence
+    queue = replace(crowd, place="reception_desk")
+    late = [SimEvent(12.0, 1, "queue_join", "reception_desk"), SimEvent(12.5, 2, "queue_join", "reception_desk")]
+    assert check(clinic, None, near, events=late, robot_claims=(queue,)).status == FAILS  # gone before they queued
+    early = [SimEvent(1.0, 1, "queue_join", "reception_desk")]
+    assert check(clinic, None, near, events=early, robot_claims=(queue,)).status == HOLDS
+    none = check(clinic, None, near, events=(), robot_claims=(queue,))
+    assert none.status == FAILS and "nobody queued" in none.evidence

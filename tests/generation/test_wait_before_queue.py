@@ -25,7 +25,7 @@ CASES = {
 
 
 @pytest.fixture(scope="module", params=sorted(CASES))
-def queue_run(request, tmp_path_factory):
+def waited_queue_run(request, tmp_path_factory):
     world_name, sentence, service, _ = CASES[request.param]
     world = load_world(world_name)
     assert world.find(service)
@@ -38,8 +38,8 @@ def queue_run(request, tmp_path_factory):
     return request.param, run, run.run(seconds)
 
 
-def test_the_wait_is_claimed_and_holds(queue_run):
-    case, _, checked = queue_run
+def test_the_wait_is_claimed_and_holds(waited_queue_run):
+    case, _, checked = waited_queue_run
     wait = CASES[case][3]
     group = checked.groups[0]
     stay = next(c for c in group.claims if c.kind == "stay")
@@ -47,8 +47,8 @@ def test_the_wait_is_claimed_and_holds(queue_run):
     assert stay.status == HOLDS, stay.evidence
 
 
-def test_they_queue_only_after_the_wait(queue_run):
-    case, run, checked = queue_run
+def test_they_queue_only_after_the_wait(waited_queue_run):
+    case, run, checked = waited_queue_run
     wait = CASES[case][3]
     queue = next(c for c in checked.groups[0].claims if c.kind == "queue")
     assert queue.status == HOLDS, queue.evidence

@@ -1,0 +1,44 @@
+"""Where a robot sent through people sets off: "the robot drives through the queue to the cafeteria",
+"threads its way through the crowd of visitors in the waiting room to the lifts".
+
+A robot sent through a zone starts at the zone's far side from its goal. When people stay in that zone
+(they queue, wait, talk or wander there), starting inside it puts the robot among them before a queue has
+formed and sends it away from them; it sets off from the next room instead, on the side away from its goal,
+so its way runs through the zone while they are there (the report checks it came within reach of them,
+`reconcile.PASSING_DISTANCE`).
+"""
+
+from __future__ import annotations
+
+import math
+
+from grove_tui.language.reading import PromptReading
+from grove_tui.world.model import World
+
+_STAYING = frozenset({"queue", "wait", "converse", "wander"})
+
+Point = tuple[float, float]
+
+
+def people_stay_in(reading: PromptReading | None, world: World, place: str) -> bool:
+    """Whether a group of the reading stays in the zone of `place`."""
+    zone = world.zone_of_place(place)
+    return zone is not None and reading is not None and any(
+        g.intent in _STAYING and world.zone_of_place(g.location or "") == zone for g in reading.groups)
+
+
+def zone_before(world: World, place: str, goal: Point | None) -> str | None:
+    """The zone next to the zone of `place` (through a door) farthest from `goal`, the robot's goal:
+    where it sets off to pass through; None when the zone has no inside neighbour."""
+    zone = world.zone_of_place(place)
+    if zone is None:
+        return None
+    goal_zone = world.zone_at(goal[0], goal[1]) if goal is not None else None
+    names = {z.name for z in world.zones}
+    neighbours = {d.leads_to if d.zone == zone else d.zone for d in world.doors_of(zone)}
+    neighbours = {n for n in neighbours if n in names and n not in (zone, goal_zone)}
+    if not neighbours:
+        return None
+    if goal is None:
+        return sorted(neighbours)[0]
+    return max(sorted(neighbours), key=lambda n: math.dist(world.zone(n).anchor, goal))

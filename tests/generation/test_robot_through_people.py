@@ -1,0 +1,44 @@
+"""A robot sent through people who stay somewhere sets off from the next room and is checked to pass them
+(generation/robot_passing.py, reconcile's robot_passes): "the robot threads its way through the crowd of
+visitors in the main waiting room to reach the lifts". Planned from hand-written drafts (no model) and run
+in the real simulation: the report's ✓ are measured."""
+
+from __future__ import annotations
+
+import pytest
+from helpers.planned_run import plan_by_hand
+
+from grove_tui.generation.draft import DraftGroup, DraftNode
+from grove_tui.scenario.report import HOLDS
+from grove_tui.world import load_world
+
+# (world, sentence, the zone the people stay in)
+CASES = {
+    "hospital-crowd": ("hospital", "The robot threads its way through the crowd of visitors in the main waiting room "
+                       "to reach the lifts.", "main_waiting_room"),
+    "station-crowd": ("station", "The robot picks its way through a crowd of commuters on the concourse to reach "
+                      "platform 2.", "concourse"),
+}
+
+
+@pytest.fixture(scope="module", params=sorted(CASES))
+def passing_run(request, tmp_path_factory):
+    world_name, sentence, zone = CASES[request.param]
+    world = load_world(world_name)
+    stay = DraftNode("Sequence", {}, (DraftNode("Wait", {"duration": 120.0}),))
+    run = plan_by_hand(world, "normal", sentence, (DraftGroup("people", 12, zone, stay),),
+                       tmp_path_factory.mktemp(request.param) / "bundle")
+    seconds = max(c.needs_seconds or 0.0 for c in run.report.robot.claims) + 10.0
+    return world, zone, run, run.run(seconds)
+
+
+def test_the_robot_sets_off_outside_the_room_it_is_sent_through(passing_run):
+    world, zone, run, _ = passing_run
+    assert world.zone_at(*run.op.robot.start) != zone
+
+
+def test_the_robot_is_claimed_and_measured_to_pass_them(passing_run):
+    _, zone, _, checked = passing_run
+    passes = [c for c in checked.robot.claims if c.kind == "robot_passes"]
+    assert passes and passes[0].zone == zone
+    assert passes[0].status == HOLDS, passes[0].evidence
