@@ -20,7 +20,8 @@ from grove_tui.language.tokens import lemma, verb_lemma
 
 # Short words of chat the lexicon's CHAT_WORDS lacks (whole words only).
 _SHORT = {"frm": "from", "b4": "before", "bc": "because", "bcos": "because", "cos": "because", "coz": "because",
-          "bcz": "because", "tho": "though", "thx": "", "tmrw": "tomorrow", "w": "with", "til": "until", "nxt": "next", "outta": "out of", "gonna": "going to", "wanna": "want to"}
+          "bcz": "because", "tho": "though", "thx": "", "tmrw": "tomorrow", "w": "with", "til": "until", "nxt": "next", "outta": "out of", "gonna": "going to", "wanna": "want to",
+          "in2": "into", "on2": "onto"}
 _SHORT_WORD = re.compile(r"(?<![\w'/@&-])(" + "|".join(sorted(_SHORT, key=len, reverse=True)) + r")(?![\w'/@&-])",
                          re.IGNORECASE)
 # "bc" is also a date ("300 BC") and "w" a compass point ("W exit"): only in lower case, after a word.

@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
+from grove_tui.language.fronted_stays import sentence_stay
 from grove_tui.language.later_stops import later_words
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.joiners import joined_intent
@@ -377,7 +378,7 @@ class Groups:
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
         count = settle_count(s, m, span, start or location or destination, earlier, self.notes)
         wait = c.wait_seconds
-        if wait is None and scene is not None and intent in lx.STATIONARY_INTENTS:
+        if wait is None and scene is not None and (intent in lx.STATIONARY_INTENTS or sentence_stay(s, m.first)):
             wait = scene.wait_seconds
         if intent == "wait" and wait and location and destination and start is None:
             start = location  # "waits at the kiosk for 10 minutes, then heads to the shop": it sets off from there

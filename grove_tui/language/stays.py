@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
+from grove_tui.language.fronted_stays import stay_first
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma
 
@@ -33,6 +34,8 @@ _UNTIL = frozenset({"until", "till", "til", "untill"})
 _MAKING = frozenset({"make", "makes", "made", "making"})
 # "kill 45 mins in the green room", "spend an hour in the café": passing that long there.
 _SPENDING = frozenset("kill kills killed killing spend spends spent spending pass passes passed passing".split())
+# Words after a length that end the stay it says ("like 10 min before going in", "like 10 min, then").
+_THEN = frozenset({"before", "then", "and", "b4"})
 _ENDS = frozenset({"closing", "close", "end", "finish", "closing-time", "home-time", "lights-out"})
 
 
@@ -86,6 +89,11 @@ def stay_said_alone(s: Sentence, k: int) -> tuple[float | None, int] | None:
         return (dur[0], dur[1]) if dur is not None else None
     if low[k] in _SPENDING and k > 0 and (dur := duration_at(s, k + 1)) is not None:
         return dur  # "kill 45 mins in dressing room 3", "spend an hour in the café"
+    if low[k] in ("about", "around", "like") and k > 0 and not s.is_punct(k - 1) and (dur := duration_at(s, k + 1)) is not None \
+            and (dur[1] >= s.n or s.is_punct(dur[1]) or low[dur[1]] in _THEN):
+        return dur  # "waitin @ departures board like 20 min" (written "about"): a stay that long
+    if (first := stay_first(s, k)) is not None:
+        return first  # "After forty minutes minding the cloakroom, ...": a stay before the rest
     if low[k] == "throughout" and (k + 1 >= s.n or s.is_punct(k + 1)):
         return None, k + 1
     if tuple(low[k:k + 3]) == ("all", "the", "time"):

@@ -1,0 +1,31 @@
+"""A stay said before the sentence's people (round 24): "After forty minutes minding the cloakroom,
+the pair of volunteers wander off to the café", "After ten minutes waiting in reception, a courier
+walks to the kitchen". The length opens the sentence, after "after" and before a verb's "-ing" form:
+the people stay that long where they are, then do what the sentence's verb says, whatever it is.
+"""
+
+from __future__ import annotations
+
+from grove_tui.language.counts import duration_at
+from grove_tui.language.sentence import Sentence
+
+
+def stay_first(s: Sentence, k: int) -> tuple[float, int] | None:
+    """(seconds, index after the length) of "after <length> <doing>" at k, at a sentence's start or
+    after a punctuation mark; else None."""
+    if s.low[k] != "after" or (k > 0 and not s.is_punct(k - 1)):
+        return None
+    dur = duration_at(s, k + 1)
+    if dur is None or dur[1] >= s.n or not s.low[dur[1]].endswith("ing"):
+        return None
+    return dur
+
+
+def sentence_stay(s: Sentence, first: int) -> float | None:
+    """The seconds of a stay that opens the sentence of the word at `first` ("After forty minutes
+    minding the cloakroom, ..."); None when it opens with none."""
+    k = first
+    while k > 0 and s.w[k - 1].sentence == s.w[first].sentence:
+        k -= 1
+    said = stay_first(s, k)
+    return said[0] if said is not None else None
