@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from grove_tui.language.bound_for import bound_verbs
 from grove_tui.language.event_causes import shutting_verbs
 from grove_tui.language.parser import Word
 
@@ -60,4 +61,4 @@ def as_verbs(words: list[Word]) -> list[Word]:
             prev = out[k - 1] if k > 0 else None
             if prev is not None and prev.dep == "compound" and prev.head == k:
                 out[k - 1] = replace(prev, dep=w.dep, head=w.head)  # "the lounge": the noun the verb was taken for
-    return shutting_verbs(out)  # "the toy store shuts and ..." (event_causes.py)
+    return bound_verbs(shutting_verbs(out))  # "the toy store shuts and ...", "bound for Leeds queue at ..."

@@ -362,7 +362,7 @@ DEPARTURE_VERBS = frozenset("leave exit evacuate flee escape vacate depart".spli
 # Getting on a plane or train: a door they board through or by is where they end (no evacuation).
 BOARDING_VERBS = frozenset("board embark".split())
 # "head for the exit": `for` marks a destination only after these; otherwise it is a purpose.
-FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race beeline".split())
+FOR_DESTINATION_VERBS = frozenset("head make run aim bolt dash rush race beeline bound".split())
 STATIONARY_INTENTS = frozenset({"queue", "wait", "converse", "wander"})
 # Verbs whose object is a place people do not go to ("skip the ICU", "bypass the lobby").
 NEGATING_VERBS = frozenset("skip bypass ignore miss shun".split())

@@ -5,6 +5,7 @@ building stays itself (there is no zone of the world just outside it)."""
 
 from __future__ import annotations
 
+from grove_tui.language.bound_for import bound_zone
 from grove_tui.language.place_queues import queue_zone_for
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.sentence import Sentence
@@ -44,4 +45,4 @@ def outside_zone(s: Sentence, at: int, match: PlaceMatch) -> tuple[PlaceMatch, s
 def zone_around(s: Sentence, at: int, end: int, match: PlaceMatch) -> tuple[PlaceMatch, str] | None:
     """The zone people are in when the phrase at `at` (to `end`) names `match` but means the zone
     outside it or the queue for it; None when it means `match`."""
-    return outside_zone(s, at, match) or queue_zone_for(s, at, end, match)
+    return outside_zone(s, at, match) or queue_zone_for(s, at, end, match) or bound_zone(s, at, match)

@@ -46,3 +46,25 @@ def test_chat_into_after_a_stay_is_where_they_go(read, world, prompt, seconds, d
 def test_no_stay_where_none_is_said_before_the_people(read, world, prompt):
     (g,) = read(world, prompt).groups
     assert g.wait_seconds is None
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("airport", "A porter pushes a wheelchair through security, bound for gate A1.", "gate_a1"),
+    ("airport", "A steward wheels an old man through the concourse, bound for A2.", "gate_a2"),
+    ("station", "Two commuters bound for platform 2 hurry across the concourse.", "platform_2"),
+])
+def test_bound_for_a_place_is_going_to_its_zone(read, world, prompt, destination):
+    g = read(world, prompt).groups[0]
+    assert g.destination == destination
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("airport", "Three backpackers bound for Paris queue at the check-in desk.", "check_in_hall"),
+    ("station", "Five students bound for Leeds queue at the ticket office.", "ticket_office"),
+    ("mall", "Four friends bound for Scarborough queue at the cinema.", "cinema_lobby"),
+    ("bus_station", "Twelve pensioners bound for Whitby queue at stand A.", "bay_1"),
+])
+def test_bound_for_a_town_then_a_queue_is_a_queue(read, world, prompt, location):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.intent == "queue" and g.location == location and not r.unknown_places
