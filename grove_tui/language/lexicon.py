@@ -291,7 +291,7 @@ for _intent, _verbs in {
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
             "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
-            "lug haul traverse",
+            "lug haul traverse quit retire",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -332,7 +332,7 @@ SENT_VERBS = frozenset("send tell order ask direct call wave shoo summon instruc
 PLURAL_PARTIES_RANGE = (2, 5)
 ONE_SET_PLURALS = frozenset({"twin", "triplet"})
 # Verbs whose object is where people start ("leave the cafeteria") or where they go ("enter the ward").
-START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape".split())
+START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape quit abandon desert".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum watch "
                                   "hoover scrub tidy crowd throng pack cram".split())

@@ -68,3 +68,14 @@ def test_bound_for_a_town_then_a_queue_is_a_queue(read, world, prompt, location)
     r = read(world, prompt)
     (g,) = r.groups
     assert g.intent == "queue" and g.location == location and not r.unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("office", "Two cleaners quit the kitchen and retire to the boardroom.", "kitchen", "boardroom"),
+    ("museum", "The conductor quits the auditorium and retires to the staff room.", "auditorium", "staff_room"),
+    ("hospital", "A porter quits the pharmacy and retires to the main corridor.", "pharmacy", "main_corridor"),
+    ("museum", "Two guides quit the cafe and retire to the education room.", "cafe", "education_room"),
+])
+def test_quitting_a_place_is_leaving_it(read, world, prompt, start, destination):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.start == start and g.destination == destination
