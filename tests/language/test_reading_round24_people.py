@@ -1,7 +1,10 @@
 """Round 24 of the reader's people, counts and groups: a part said after its whole ("Of the ten
 visitors waiting in the cafeteria, four troop over to ward A") by a collective's word that is its
 verb, or by a verb the parser took for a noun before "and" and a verb ("three rise and stroll
-through"), and with "the second half" of a game as a time, not the rest of the group."""
+through"), and with "the second half" of a game as a time, not the rest of the group; a list of
+single people whose nouns the world uses for rooms ("a keeper and a vet hurry from ..."); one person
+told by a feeling of the robot, whatever noun names them ("a nervous temp at ... is frightened of the
+robot")."""
 
 import pytest
 
@@ -46,4 +49,24 @@ def test_a_list_of_single_people_is_a_group_each(read, world, prompt, start, des
     ("zoo", "A gift shop and a cafe stand by the entrance plaza."),
 ])
 def test_a_list_of_places_is_no_one(read, world, prompt):
+    assert all(g.count.kind == "vague" for g in read(world, prompt).groups)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("parcel_depot", "A new agency loader in the canteen is scared of the robot and cowers whenever it trundles by."),
+    ("warehouse", "A nervous temp at the packing bench is frightened of the robot and flinches whenever it rolls past."),
+    ("hospital", "A wobbly new locum on ward A is afraid of the robot and shrinks back when it comes near."),
+    ("zoo", "The new vet by the cafe is wary of the robot and edges away whenever it comes close."),
+])
+def test_one_who_feels_something_of_the_robot_is_one_person(read, world, prompt):
+    (group,) = read(world, prompt).groups
+    assert group.count.kind == "exact" and group.count.value == 1
+    assert group.robot_reaction == "Scared"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("museum", "The lift in the main hall is out of order."),
+    ("office", "A printer in the kitchen is jammed."),
+])
+def test_a_thing_in_a_state_is_no_one(read, world, prompt):
     assert all(g.count.kind == "vague" for g in read(world, prompt).groups)
