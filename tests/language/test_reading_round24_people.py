@@ -4,7 +4,8 @@ verb, or by a verb the parser took for a noun before "and" and a verb ("three ri
 through"), and with "the second half" of a game as a time, not the rest of the group; a list of
 single people whose nouns the world uses for rooms ("a keeper and a vet hurry from ..."); one person
 told by a feeling of the robot, whatever noun names them ("a nervous temp at ... is frightened of the
-robot")."""
+robot"); a role then a name between commas before a verb the parser took for a plural
+noun ("our grandad, Bert, shuffles after the robot")."""
 
 import pytest
 
@@ -70,3 +71,15 @@ def test_one_who_feels_something_of_the_robot_is_one_person(read, world, prompt)
 ])
 def test_a_thing_in_a_state_is_no_one(read, world, prompt):
     assert all(g.count.kind == "vague" for g in read(world, prompt).groups)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("care_home", "Our grandad, Bert, shuffles after the robot."),
+    ("residential", "My little brother, Leo, scampers after the robot."),
+    ("mall", "Our nan, Joan, potters after the robot."),
+    ("zoo", "My niece, Isla, waddles after the robot."),
+])
+def test_a_role_then_a_name_between_commas_is_one_person(read, world, prompt):
+    (group,) = read(world, prompt).groups
+    assert group.count.kind == "exact" and group.count.value == 1
+    assert group.robot_interaction == "follow"
