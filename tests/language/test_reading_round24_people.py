@@ -5,7 +5,7 @@ through"), and with "the second half" of a game as a time, not the rest of the g
 single people whose nouns the world uses for rooms ("a keeper and a vet hurry from ..."); one person
 told by a feeling of the robot, whatever noun names them ("a nervous temp at ... is frightened of the
 robot"); a role then a name between commas before a verb the parser took for a plural
-noun ("our grandad, Bert, shuffles after the robot")."""
+noun ("our grandad, Bert, shuffles after the robot"); "q" typed in chat is a queue."""
 
 import pytest
 
@@ -83,3 +83,14 @@ def test_a_role_then_a_name_between_commas_is_one_person(read, world, prompt):
     (group,) = read(world, prompt).groups
     assert group.count.kind == "exact" and group.count.value == 1
     assert group.robot_interaction == "follow"
+
+
+@pytest.mark.parametrize("world,prompt,kind,value", [
+    ("supermarket", "6 ppl in q @ till 3", "exact", 6),
+    ("supermarket", "about 10 ppl in the q at till 1", "approximate", 10),
+    ("station", "12 ppl in q for the ticket office", "exact", 12),
+    ("airport", "like 30 pax in q @ security", "approximate", 30),
+])
+def test_q_typed_in_chat_is_a_queue(read, world, prompt, kind, value):
+    (group,) = read(world, prompt).groups
+    assert group.intent == "queue" and (group.count.kind, group.count.value) == (kind, value)
