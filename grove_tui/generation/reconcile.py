@@ -871,7 +871,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     guided = guided_exit(reading, groups, agents)
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
-    robot_row = _robot_row(asked_robot, robot, world, agents, _stationary_groups(reading, groups, world))
+    robot_row = _robot_row(asked_robot, robot, world, agents, _passed_groups(reading, groups, world))
     leader_of = next((g for g in reading.groups if g.robot_interaction == "follow" and g.destination), None)
     if asked_robot is None and robot_row is not None and robot is not None and leader_of is not None \
             and getattr(robot, "task", "cross") == "cross" and leader_of.destination:
@@ -1225,14 +1225,17 @@ class _StayingGroup:
     queue_at: str | None  # the service point of a group that queues there
 
 
-def _stationary_groups(reading: PromptReading, groups: Sequence[PlannedGroup], world: World) -> list[_StayingGroup]:
-    """The groups that stay in one zone (queue, wait, talk, wander there): the people a robot driving
-    through that zone is asked to pass."""
+def _passed_groups(reading: PromptReading, groups: Sequence[PlannedGroup], world: World) -> list[_StayingGroup]:
+    """The groups the robot's clause goes through, past or around (`RobotReading.passes`) that stay in one
+    zone (queue, wait, talk, wander there): the people it is asked to pass."""
     out: list[_StayingGroup] = []
+    passes = set(reading.robot.passes) if reading.robot is not None else set()
     for g in groups:
         if g.reading_index is None or g.reading_index >= len(reading.groups):
             continue
         r = reading.groups[g.reading_index]
+        if r.who not in passes:
+            continue
         base = _base_intent(r)
         place = r.location or (r.destination if base in ("queue", "wait", "converse", "wander") else None)
         zone = world.zone_of_place(place or "")

@@ -1,8 +1,8 @@
 """Where a robot sent through people sets off: "the robot drives through the queue to the cafeteria",
 "threads its way through the crowd of visitors in the waiting room to the lifts".
 
-A robot sent through a zone starts at the zone's far side from its goal. When people stay in that zone
-(they queue, wait, talk or wander there), starting inside it puts the robot among them before a queue has
+A robot sent through a zone starts at the zone's far side from its goal. When its clause goes through people
+who stay in that zone (they queue, wait, talk or wander there: `RobotReading.passes`), starting inside it puts the robot among them before a queue has
 formed and sends it away from them; it sets off from the next room instead, on the side away from its goal,
 so its way runs through the zone while they are there (the report checks it came within reach of them,
 `reconcile.PASSING_DISTANCE`).
@@ -21,10 +21,12 @@ Point = tuple[float, float]
 
 
 def people_stay_in(reading: PromptReading | None, world: World, place: str) -> bool:
-    """Whether a group of the reading stays in the zone of `place`."""
+    """Whether a group the robot's clause goes through (`RobotReading.passes`) stays in the zone of `place`."""
     zone = world.zone_of_place(place)
+    passes = set(reading.robot.passes) if reading is not None and reading.robot is not None else set()
     return zone is not None and reading is not None and any(
-        g.intent in _STAYING and world.zone_of_place(g.location or "") == zone for g in reading.groups)
+        g.who in passes and g.intent in _STAYING and world.zone_of_place(g.location or "") == zone
+        for g in reading.groups)
 
 
 def zone_before(world: World, place: str, goal: Point | None) -> str | None:

@@ -143,6 +143,9 @@ class RobotReading:
     # whom a "cross" the robot leads takes along, as written ("them", "the passengers"): "the robot
     # guides them to the exit" goes where they go
     guides: str | None = None
+    # the groups (their `who`) its clause goes through, past or around ("threads its way through the crowd
+    # of visitors", "drives through the queue"): their places are among `via`, and it is to pass them
+    passes: tuple[str, ...] = ()
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
@@ -151,14 +154,15 @@ class RobotReading:
         return {"task": self.task, "start": self.start, "destination": self.destination,
                 "location": self.location, "via": list(self.via), "text": self.text,
                 "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows,
-                "wait_seconds": self.wait_seconds, "guides": self.guides}
+                "wait_seconds": self.wait_seconds, "guides": self.guides, "passes": list(self.passes)}
 
     @classmethod
     def from_dict(cls, data: Parsed) -> RobotReading:
         seconds = data.get("wait_seconds")
         return cls(str(data["task"]), data.get("start"), data.get("destination"), data.get("location"),
                    tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")),
-                   data.get("follows"), float(seconds) if seconds is not None else None, data.get("guides"))
+                   data.get("follows"), float(seconds) if seconds is not None else None, data.get("guides"),
+                   tuple(data.get("passes", ())))
 
 
 @dataclass(frozen=True)

@@ -64,6 +64,7 @@ def via_the_people_passed(s: Sentence, robot: RobotReading | None, clauses: Sequ
         return robot
     whos = {g.who: g for g in read}
     via = list(robot.via)
+    passes: list[str] = []
     for tokens in clauses:
         inside = set(tokens)
         said = [whos[m.who] for m in mentions if m.who in whos and (m.last < tokens[0] or m.first in inside)]
@@ -72,10 +73,12 @@ def via_the_people_passed(s: Sentence, robot: RobotReading | None, clauses: Sequ
                 continue
             j = s.skip(i + 1, lx.DETERMINERS | lx.NP_MODIFIERS)
             group = _passed(s, j, said, mentions, whos) if j < s.n and j in inside else None
+            if group is not None and group.location and group.who not in passes:
+                passes.append(group.who)  # the people it goes through: the report checks it passes them
             if group is not None and group.location and group.location not in (
                     *via, robot.start, robot.destination, robot.location):
                 via.append(group.location)
-    return replace(robot, via=tuple(via)) if len(via) > len(robot.via) else robot
+    return replace(robot, via=tuple(via), passes=tuple(passes)) if passes else robot
 
 
 def _passed(s: Sentence, j: int, said: Sequence[GroupReading], mentions: Sequence[Mention],

@@ -42,3 +42,19 @@ def test_the_robot_is_claimed_and_measured_to_pass_them(passing_run):
     passes = [c for c in checked.robot.claims if c.kind == "robot_passes"]
     assert passes and passes[0].zone == zone
     assert passes[0].status == HOLDS, passes[0].evidence
+
+
+@pytest.mark.parametrize("world, sentence, passes", [
+    ("hospital", "Ten patients queue at the pharmacy while the robot drives through the queue to the cafeteria.",
+     ("Ten patients",)),
+    ("station", "Twelve travellers queue at the ticket office while a robot crosses the ticket hall to the platforms.",
+     ()),
+    ("mall", "Six shoppers wait by the fountain as the robot rolls through the atrium to the food court.", ()),
+])
+def test_only_people_the_robots_clause_goes_through_are_to_be_passed(world, sentence, passes):
+    """Crossing the hall where people queue is no asking to pass them: only the people its own clause goes
+    through, past or around are (`RobotReading.passes`)."""
+    from grove_tui.language.reading import read_prompt
+
+    robot = read_prompt(sentence, load_world(world)).robot
+    assert robot is not None and robot.passes == passes
