@@ -14,18 +14,22 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
 # Collectives' words that are verbs of a group moving or standing together.
-_GROUP_VERBS = frozenset("crowd cluster huddle swarm throng mob flock troop file queue gather group pack".split())
+GROUP_VERBS = frozenset("crowd cluster huddle swarm throng mob flock troop file queue gather group pack".split())
 _AFTER_VERB = lx.PLACE_PREPOSITIONS | frozenset({"round", "around", "out", "off", "in", "along", "back", "up", "together"})
 
 
 def collective_is_a_verb(s: Sentence, m: Mention) -> bool:
     """Whether the one-word collective mention m is the verb of the group before it ("..., 24
     pupils, troop from ...", "4-5 kids w/ notebooks crowd round the t-rex", "..., then troop back in to ...")."""
-    if m.collective is None or m.first != m.last or m.first == 0 or m.last + 1 >= s.n:
+    if m.collective is None or m.first == 0 or m.last + 1 >= s.n:
         return False
+    if m.first != m.last:  # "..., four troop over to ward A": a singular collective after a count of more is a verb
+        return m.last == m.first + 1 and m.count is not None and s.w[m.first].pos == "NUM" and \
+            s.low[m.last] == s.lemma(m.last) and s.low[m.last + 1] in _AFTER_VERB | {"over", "through", "across"} \
+            and verb_lemma(s.low[m.last]) in GROUP_VERBS
     before = m.first - 1
     return (s.low[before] in (",", "then", "and") or s.w[before].pos in ("NOUN", "PROPN")) and s.low[m.last + 1] in _AFTER_VERB \
-        and verb_lemma(s.low[m.first]) in _GROUP_VERBS
+        and verb_lemma(s.low[m.first]) in GROUP_VERBS
 
 
 def class_named(s: Sentence, before: Mention) -> bool:

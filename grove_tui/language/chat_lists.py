@@ -21,7 +21,7 @@ from grove_tui.language.tokens import lemma
 CHAT_SHORT = {"brk": "break", "brkfst": "breakfast", "rm": "room", "rms": "rooms", "hse": "house", "shd": "should",
               "bldg": "building", "dept": "department", "depts": "departments", "recep": "reception",
               "corr": "corridor", "caf": "cafe", "entr": "entrance", "wrkshp": "workshop", "lng": "lounge",
-              "wkrs": "workers", "wkr": "worker"}
+              "wkrs": "workers", "wkr": "worker", "q": "queue"}
 _SHORT_WORD = re.compile(r"(?<![\w'/@&-])(" + "|".join(sorted(CHAT_SHORT, key=len, reverse=True)) + r")(?![\w'/@&-])")
 _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True)) + r")"
 # " n " before a count or a determiner: "... in the canteen n 3 drivers".

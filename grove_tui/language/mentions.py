@@ -76,7 +76,7 @@ class Mentions:
             m = self.mention_at(i, found)
             if m is not None and m.count is not None and m.count.kind == "exact" and m.first == i:
                 m = self._approximated(m, found)
-            if fronted is not None and m is None:
+            if fronted is not None and (m is None or collective_is_a_verb(s, m)):
                 m = self._bare_count(i, found[fronted])
             if m is not None and m.collective is not None and m.first == m.last and 0 < m.first and \
                     s.low[m.first - 1] == "-" and m.last + 1 < s.n and s.w[m.last + 1].pos in ("NOUN", "PROPN") and \

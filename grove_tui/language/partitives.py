@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.apposed_counts import GROUP_VERBS
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
@@ -212,9 +213,20 @@ def other_half(s: Sentence, at: int) -> int | None:
     """The index of "half" in "the other half" / "the second half" at `at` (the rest of a group half
     of which was named before: "half of the thirty students leave and the other half stay"), else None."""
     if at + 2 < s.n and s.low[at] == "the" and s.low[at + 1] in ("other", "second") and s.low[at + 2] == "half" and \
-            (at + 3 == s.n or s.low[at + 3] != "of"):
+            (at + 3 == s.n or s.low[at + 3] != "of") and not _half_of_a_match(s, at):
         return at + 2
     return None
+
+
+def _half_of_a_match(s: Sentence, at: int) -> bool:
+    """Whether "the second half" at `at` is a time, the part of a game or show ("when the second half
+    starts", "in the second half", "the second half kicks off"), not the rest of a group."""
+    after = verb_lemma(s.low[at + 3]) if at + 3 < s.n else ""
+    return s.low[at + 1] == "second" and (
+        (at > 0 and s.low[at - 1] in _TIME_WORDS) or after in lx.EVENT_VERBS | {"kick", "get", "resume", "restart"})
+
+
+_TIME_WORDS = frozenset("when until till before after as once in during for by since whenever".split())
 
 
 _PERCENT_WORDS = (("%",), ("percent",), ("per", "cent"), ("pc",), ("pct",))
@@ -263,5 +275,11 @@ def verb_of_a_bare_count(s: Sentence, k: int) -> bool:
     """Whether the word at k, after a bare count, is its verb: a verb by the parser, or a verb of
     going or staying the parser took for the count's noun, before a place ("..., a handful stop at the
     customs desk", "..., five head to the café")."""
-    return s.is_verb(k) or (s.w[k].tag in ("NN", "NNS") and verb_lemma(s.low[k]) in lx.INTENT_VERBS.keys() | {"stop", "halt"}
-                            and k + 1 < s.n and s.preposition(k + 1) is not None)
+    if s.is_verb(k) or (s.w[k].tag in ("NN", "NNS") and verb_lemma(s.low[k]) in lx.INTENT_VERBS.keys() | {"stop", "halt"}
+                        and k + 1 < s.n and s.preposition(k + 1) is not None):
+        return True
+    # "..., three rise and stroll through to ...": a noun the parser saw joined by "and" to a verb is one;
+    # "..., five troop over to ...": a group's verb before its particle
+    return s.w[k].tag == "NN" and k + 2 < s.n and s.lemma(k) not in lx.PERSON_NOUNS and (
+        (s.low[k + 1] in ("and", "then") and s.w[k + 2].tag in ("VB", "VBP", "VBZ")) or
+        (verb_lemma(s.low[k]) in GROUP_VERBS and s.w[k + 1].pos in ("ADP", "ADV")))

@@ -18,6 +18,8 @@ from grove_tui.language.role_words import abbreviated_role, abbreviation_label, 
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.caused_motion import taken_name
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
+from grove_tui.language.feeling_people import feels_about_the_robot
+from grove_tui.language.listed_people import listed_person
 from grove_tui.language.lone_person import by_a_person_adjective, goes_along_a_route, told_as_he_or_she
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.singular_verbs import subject_of_a_later_verb
@@ -83,7 +85,7 @@ class People:
             return True  # "the GP waits", "our youngest edges away"
         if compound_head_person(s, i) or head_person(s, i) or agent_compound(s, i):
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
-        if trader_subject(s, i):
+        if trader_subject(s, i) or listed_person(s, i) or feels_about_the_robot(s, i):
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
         if moves_as_a_person(s, i):
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs

@@ -34,9 +34,15 @@ def _verb_form(w: Word) -> bool:
     return verb_lemma(low) != low or w.dep == "ROOT"  # a verb the lexicon knows, or the parse's own root
 
 
+def _named_before(words: list[Word], k: int) -> bool:
+    """Whether one person's role then name between commas come right before k ("Our toddler, Sam, waddles")."""
+    return k >= 4 and words[k - 1].lower == "," and words[k - 3].lower == "," and words[k - 2].text[:1].isupper() \
+        and words[k - 2].pos in ("PROPN", "NOUN") and words[k - 4].tag in _SINGULAR
+
+
 def _taken_for_noun(words: list[Word], k: int) -> bool:
     w = words[k]
-    if k == 0 or not _verb_form(w):
+    if k == 0 or not (_verb_form(w) or (_named_before(words, k) and w.tag == "NNS" and w.lower.endswith("s"))):
         return False
     before = [x for x in words[:k] if x.sentence == w.sentence]
     if not before or any(x.pos not in _SUBJECT_WORDS and x.tag != "POS" for x in before):  # "the porter's pal"
@@ -45,7 +51,7 @@ def _taken_for_noun(words: list[Word], k: int) -> bool:
         return False  # more than one said before: "nine members queue at reception for their day passes"
     prev = words[k - 1]
     subject = any(x.dep == "nsubj" and x.head == k for x in before)
-    if not subject and (prev.pos not in ("NOUN", "PROPN", "ADJ") or prev.tag not in _SINGULAR):
+    if not subject and not _named_before(words, k) and (prev.pos not in ("NOUN", "PROPN", "ADJ") or prev.tag not in _SINGULAR):
         return False
     nxt = words[k + 1] if k + 1 < len(words) and words[k + 1].sentence == w.sentence else None
     return nxt is None or nxt.pos in _AFTER
