@@ -118,7 +118,7 @@ class Collectives:
                 if member is not None:
                     last = member
                     if noun in ("group", "crowd", "bunch", "party", "team", "class", "tour", "delegation", "gang",
-                                "couple", "pair", "handful", "trio", "duo", "quartet") or \
+                                "couple", "pair", "handful", "trio", "duo", "quartet", "foursome", "twosome") or \
                             noun in lx.MEMBERS_NAME_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES:
                         label = self.people.label(member)
         if label == noun and head > 0 and self.people.is_person_noun(head - 1) and self.people.collective_after(head - 1):
