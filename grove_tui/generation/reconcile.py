@@ -35,6 +35,7 @@ from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.queue_delay import wait_before_queuing
+from grove_tui.generation.robot_passing import passed_zones
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -143,7 +144,7 @@ def _subsets_keep_their_activity(reading: PromptReading) -> PromptReading:
     would be done, and claimed, by the rest alone."""
     groups = list(reading.groups)
     for i, group in enumerate(groups):
-        parent = _parent_index(group)
+        parent = group.related_to("subset_of")
         if parent is None or not 0 <= parent < len(groups) or parent == i:
             continue
         whole = groups[parent]
@@ -155,16 +156,6 @@ def _subsets_keep_their_activity(reading: PromptReading) -> PromptReading:
                             via=whole.via, wait_seconds=whole.wait_seconds, waits_first=whole.waits_first,
                             robot_reaction=group.robot_reaction or "Surprised")
     return replace(reading, groups=tuple(groups)) if groups != list(reading.groups) else reading
-
-
-def _parent_index(group: GroupReading) -> int | None:
-    relation = group.relation or ""
-    if not relation.startswith("subset_of:"):
-        return None
-    try:
-        return int(relation.split(":", 1)[1])
-    except ValueError:
-        return None
 
 
 def _with_people_followed(reading: PromptReading) -> PromptReading:
@@ -1020,9 +1011,9 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
                 # "wait by the kiosk for a minute, then queue": the wait where they start, then joins after it
                 claims.append(replace_seconds(_place_claim("stay", r.start, f"wait at {r.start} {delay:g} s", world,
                                                            n, timing.eta(r.start) + delay, stay=True), delay))
-            claims.append(Claim("queue", (place or service) + (f" after {delay:g} s" if delay else ""), f"queue at {service}" + (f" after {delay:g} s" if delay
-                                                                                     else ""),
-                                place=service, zone=world.zone_of_place(service), seconds=delay,
+            later = f" after {delay:g} s" if delay else ""
+            claims.append(Claim("queue", (place or service) + later, f"queue at {service}{later}", place=service,
+                                zone=world.zone_of_place(service), seconds=delay,
                                 needs_seconds=timing.eta(service) + service_time + 15.0 + (delay or 0.0)))
     elif base == "wait":
         place = r.location or r.destination
@@ -1226,23 +1217,16 @@ class _StayingGroup:
 
 
 def _passed_groups(reading: PromptReading, groups: Sequence[PlannedGroup], world: World) -> list[_StayingGroup]:
-    """The groups the robot's clause goes through, past or around (`RobotReading.passes`) that stay in one
-    zone (queue, wait, talk, wander there): the people it is asked to pass."""
+    """The planned groups the robot is asked to pass where they stay (`robot_passing.passed_zones`)."""
+    zones = passed_zones(reading, world)
     out: list[_StayingGroup] = []
-    passes = set(reading.robot.passes) if reading.robot is not None else set()
     for g in groups:
-        if g.reading_index is None or g.reading_index >= len(reading.groups):
-            continue
-        r = reading.groups[g.reading_index]
-        if r.who not in passes:
-            continue
-        base = _base_intent(r)
-        place = r.location or (r.destination if base in ("queue", "wait", "converse", "wander") else None)
-        zone = world.zone_of_place(place or "")
-        if base not in ("queue", "wait", "converse", "wander") or zone is None:
+        zone = zones.get(g.reading_index) if g.reading_index is not None else None
+        if zone is None or g.reading_index is None:
             continue
         service = next((place_of(node, "service_point") for node in g.tree.walk() if node.node == "Queue"), None)
-        out.append(_StayingGroup(g.label, zone, tuple(g.member_ids), service if base == "queue" else None))
+        queues = reading.groups[g.reading_index].intent == "queue"
+        out.append(_StayingGroup(g.label, zone, tuple(g.member_ids), service if queues else None))
     return out
 
 

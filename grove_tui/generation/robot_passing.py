@@ -20,13 +20,27 @@ _STAYING = frozenset({"queue", "wait", "converse", "wander"})
 Point = tuple[float, float]
 
 
+def passed_zones(reading: PromptReading | None, world: World) -> dict[int, str]:
+    """Reading group index -> the zone it stays in, for the groups the robot's clause goes through
+    (`RobotReading.passes`) that stay in one zone: the people it is asked to pass, and where."""
+    if reading is None or reading.robot is None or not reading.robot.passes:
+        return {}
+    passes = set(reading.robot.passes)
+    out: dict[int, str] = {}
+    for i, g in enumerate(reading.groups):
+        # people who only react to the robot stay where they are unless sent somewhere (reconcile's base intent)
+        intent = g.intent if g.intent != "robot" else ("walk" if g.destination else "wait")
+        place = g.location or (g.destination if intent in _STAYING else None)
+        zone = world.zone_of_place(place or "")
+        if g.who in passes and intent in _STAYING and zone is not None:
+            out[i] = zone
+    return out
+
+
 def people_stay_in(reading: PromptReading | None, world: World, place: str) -> bool:
-    """Whether a group the robot's clause goes through (`RobotReading.passes`) stays in the zone of `place`."""
+    """Whether a group the robot's clause goes through stays in the zone of `place`."""
     zone = world.zone_of_place(place)
-    passes = set(reading.robot.passes) if reading is not None and reading.robot is not None else set()
-    return zone is not None and reading is not None and any(
-        g.who in passes and g.intent in _STAYING and world.zone_of_place(g.location or "") == zone
-        for g in reading.groups)
+    return zone is not None and zone in passed_zones(reading, world).values()
 
 
 def zone_before(world: World, place: str, goal: Point | None) -> str | None:

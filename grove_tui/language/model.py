@@ -103,6 +103,11 @@ class GroupReading:
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
 
+    def related_to(self, kind: str) -> int | None:
+        """The index of the group this one is `kind` of ("subset_of", "others_of", "more_of"), else None."""
+        said, _, parent = (self.relation or "").partition(":")
+        return int(parent) if said == kind and parent.isdigit() else None
+
     def to_dict(self) -> JSONObject:
         data = asdict(self)
         data["count"] = self.count.to_dict()
@@ -210,12 +215,11 @@ def effective_counts(reading: PromptReading) -> dict[int, int]:
     and of "the others" read as the rest of it; a parent left with nobody is absent."""
     counts = {i: g.count.value for i, g in enumerate(reading.groups)}
     for i, g in enumerate(reading.groups):
-        kind, _, parent = (g.relation or "").partition(":")
-        if kind == "subset_of" or (kind == "others_of" and g.count.kind == "implied" and parent.isdigit()
-                                   and _has_subset(reading, int(parent))):
-            p = int(parent)
-            if p in counts:
-                counts[p] = max(0, counts[p] - g.count.value)
+        subset, others = g.related_to("subset_of"), g.related_to("others_of")
+        p = subset if subset is not None else \
+            others if others is not None and g.count.kind == "implied" and _has_subset(reading, others) else None
+        if p is not None and p in counts:
+            counts[p] = max(0, counts[p] - g.count.value)
     return {i: c for i, c in counts.items() if c > 0}
 
 
