@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 from helpers.planned_run import plan_by_hand
 
+from grove_tui.analysis.grounding_eval import ExpectedGroup, GroundingCase, score_bundle
 from grove_tui.generation.draft import DraftGroup, DraftNode
 from grove_tui.scenario.report import HOLDS
 from grove_tui.world import load_world
@@ -60,6 +61,12 @@ def test_a_robot_sent_through_a_queue_goes_through_it(tmp_path):
     assert passes.status == HOLDS, passes.evidence
     reach = next(c for c in checked.robot.claims if c.kind == "robot_reach")
     assert reach.status == HOLDS, reach.evidence
+    # the grounding suite's hand outcome (eval/grounding/suite.yaml's `passes`) agrees on the same run
+    case = GroundingCase("through-queue", "hospital", "queuing", run.report.prompt, 0, 0.0,
+                         (ExpectedGroup("patients", (("queue", "pharmacy_counter"),), 10),),
+                         (("passes", "patients"),))
+    (hand,) = [g for g in score_bundle(case, run.bundle).groups if g.who == "the robot"]
+    assert hand.outcome, hand.evidence
 
 
 @pytest.mark.parametrize("world_name, sentence, service, not_from", [
