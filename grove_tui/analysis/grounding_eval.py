@@ -29,7 +29,7 @@ Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a 
 converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); follow (the `who` of another
 group: close to them while they walk); for (seconds: a stay or wander judged over that long after arriving,
 a reach counted from then, as in "waits for a minute and then walks on"); robot (follow,
-approach, block, avoid, look). The robot's: reach, via, stay, patrol (a place), follow (words of a group).
+approach, block, avoid, look). The robot's: reach, via, stay, patrol (a place), follow and passes (words of a group).
 """
 
 from __future__ import annotations
@@ -55,7 +55,7 @@ if TYPE_CHECKING:
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
                   "robot", "keep_out", "follow", "for")
-ROBOT_OUTCOMES = ("reach", "via", "stay", "patrol", "follow")
+ROBOT_OUTCOMES = ("reach", "via", "stay", "patrol", "follow", "passes")
 REACTIONS = ("follow", "approach", "block", "avoid", "look")
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
 REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0}
@@ -357,7 +357,27 @@ def _robot_claims(robot: Iterable[tuple[str, object]], world: World, scenario: S
                 if found is not None and expected.who == str(value):
                     partners = found.members
             claims.append(Claim("robot_follow_person", tag + str(value), "expected", partners=partners, distance=3.0))
+        elif kind == "passes":
+            claims.append(_passes_claim(tag, str(value), world, pairs))
     return claims
+
+
+def _passes_claim(tag: str, who: str, world: World,
+                  pairs: Sequence[tuple[ExpectedGroup, GroupGrounding | None]]) -> Claim:
+    """The robot goes through a group where it stays (the group's own queue or stay place): within 2 m of one
+    of them there while they are there, in a queue from each one's join on."""
+    expected = next((e for e, _ in pairs if e.who == who), None)
+    if expected is None:
+        raise SuiteError(f"robot passes {who!r}: no group of the case has that 'who'")
+    members = next((found.members for e, found in pairs if e is expected and found is not None), ())
+    outcomes = dict(expected.expect)
+    queue = next(iter(_names(outcomes["queue"])), None) if "queue" in outcomes else None
+    stays = [n for n in _names(outcomes.get("stay") or outcomes.get("start") or "") if n]
+    place = queue or (stays[0] if stays else None)
+    if place is None:
+        raise SuiteError(f"robot passes {who!r}: the group expects no queue, stay or start place")
+    return Claim("robot_passes", tag + who, "expected", zone=_zone_of(world, place), place=queue,
+                 partners=tuple(members), distance=2.0)
 
 
 def _group_outcome(expected: ExpectedGroup, measured: GroupGrounding) -> tuple[bool, list[str]]:

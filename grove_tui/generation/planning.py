@@ -35,7 +35,7 @@ from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
-from grove_tui.generation.robot_passing import people_stay_in, zone_before
+from grove_tui.generation.robot_passing import people_stay_in, through_formations, zone_before
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.keep_out import keep_out_planner
@@ -284,6 +284,8 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
             point = _place_point(world, grid, place)
             if point is not None:
                 formations = [f for f in formations if f not in formations_at(formations, point, clearance)]
+    # "drives through the queue": the queue the robot is sent through is no obstacle; it passes by its gap
+    formations, gaps = through_formations(reading, world, grid, formations)
     robot_planner = ThetaStarPlanner(block_formations(grid, formations, clearance)) if formations else None
     space = FreeSpace(world, grid)
     guided_zone = _guided_zone(world, reading, post) if task == "cross" else None
@@ -362,6 +364,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     # "via the fountain": a thing or a door is passed by its own point (where the report checks it), not
     # anywhere in the zone it stands in
     via_spots = [p for p in (_place_point(world, grid, v) for v in via if _is_spot(world, v)) if p is not None]
+    via_spots += gaps
     if start is None or goal is None:
         start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
         if not via_zones and not via_spots and not through:

@@ -224,6 +224,12 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
             tree = DraftNode("Converse", {"target": spawn,
                                           "duration": float(group.wait_seconds or CONVERSATION_SECONDS)})
             added.append(f"talks where it starts ({spawn}): the sentence names no place")
+        elif _base_intent(group) == "wander" and tree.node == "Wait" and spawn and \
+                not (group.location or group.start or group.destination):
+            # "watching the skaters go round": no place named, so they wander where they are (the report
+            # checks a wander there; a wait is no wandering)
+            tree = DraftNode("Wander", {"zone": spawn, "duration": float(group.wait_seconds or 0.0)})
+            added.append(f"wanders where it starts ({spawn}): the sentence names no place")
         onward = onward_note(group, tree, world)
         if onward is not None:
             added.append(onward)

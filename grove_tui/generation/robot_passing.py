@@ -6,13 +6,19 @@ who stay in that zone (they queue, wait, talk or wander there: `RobotReading.pas
 formed and sends it away from them; it sets off from the next room instead, on the side away from its goal,
 so its way runs through the zone while they are there (the report checks it came within reach of them,
 `reconcile.PASSING_DISTANCE`).
+
+Queues and conversation circles are obstacles the robot's planner keeps clear of (`formations.py`). The ones
+those people form are not: the clause asks the robot through them, so its way passes by a gap in the line
+(`through_formations`); it stops and creeps there as it does for anyone in its way (simulation/robot.py).
 """
 
 from __future__ import annotations
 
 import math
 
+from grove_tui.generation.formations import Formation
 from grove_tui.language.reading import PromptReading
+from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.world.model import World
 
 _STAYING = frozenset({"queue", "wait", "converse", "wander"})
@@ -49,7 +55,7 @@ def zone_before(world: World, place: str, goal: Point | None) -> str | None:
     zone = world.zone_of_place(place)
     if zone is None:
         return None
-    goal_zone = world.zone_at(goal[0], goal[1]) if goal is not None else None
+    goal_zone = _zone_name(world, *goal) if goal is not None else None
     names = {z.name for z in world.zones}
     neighbours = {d.leads_to if d.zone == zone else d.zone for d in world.doors_of(zone)}
     neighbours = {n for n in neighbours if n in names and n not in (zone, goal_zone)}
@@ -58,3 +64,42 @@ def zone_before(world: World, place: str, goal: Point | None) -> str | None:
     if goal is None:
         return sorted(neighbours)[0]
     return max(sorted(neighbours), key=lambda n: math.dist(world.zone(n).anchor, goal))
+
+
+def through_formations(reading: PromptReading | None, world: World, grid: OccupancyGrid,
+                       formations: list[Formation]) -> tuple[list[Formation], list[Point]]:
+    """(the formations the robot still keeps clear of, the points its way must pass by): a queue or
+    conversation in a zone where people the robot's clause goes through stay is no obstacle, and the robot
+    passes by its gap (`gap_point`)."""
+    zones = set(passed_zones(reading, world).values())
+    if not zones:
+        return formations, []
+    kept: list[Formation] = []
+    spots: list[Point] = []
+    for formation in formations:
+        if not any(_zone_name(world, x, y) in zones for x, y in formation.line):
+            kept.append(formation)
+            continue
+        gap = gap_point(formation)
+        free = grid.nearest_free(gap[0], gap[1], max_dist=1.0)
+        if free is None:  # no floor in the gap: the line stays an obstacle
+            kept.append(formation)
+        else:
+            spots.append((float(free[0]), float(free[1])))
+    return kept, spots
+
+
+def gap_point(formation: Formation) -> Point:
+    """Where a robot goes through a formation: a queue between its second and third places (people join at
+    the front first, and the one being served is not cut off), or between its first two places when it is
+    shorter; a conversation through its centre."""
+    slots = formation.line[1:] if formation.kind == "queue" else formation.line
+    if len(slots) < 2:
+        return slots[0] if slots else formation.line[0]
+    a, b = (slots[1], slots[2]) if len(slots) >= 3 else (slots[0], slots[1])
+    return ((a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0)
+
+
+def _zone_name(world: World, x: float, y: float) -> str | None:
+    zone = world.zone_at(x, y)
+    return zone.name if zone is not None else None

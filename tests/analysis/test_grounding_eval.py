@@ -30,7 +30,7 @@ def test_the_public_suite_is_wide():
     assert {c.preset for c in cases} == {"emergency", "queuing", "normal"}
     reactions = {v for c in cases for g in c.groups for k, v in g.expect if k == "robot"}
     assert reactions == {"follow", "approach", "block", "avoid", "look"}
-    assert {k for c in cases for k, _ in c.robot} >= {"reach", "stay", "patrol", "follow"}
+    assert {k for c in cases for k, _ in c.robot} >= {"reach", "stay", "patrol", "follow", "passes"}
     assert sum(len(c.groups) > 1 for c in cases) >= 15
 
 
