@@ -23,7 +23,7 @@ MORE_FEELINGS: dict[str, str] = {
 WAKE_PHRASES: dict[tuple[str, ...], str] = {
     (apostrophe, noun): "follow" for apostrophe in ("'s", "’s") for noun in ("wake", "heels", "tail")}
 WATCHING_PHRASES: dict[tuple[str, ...], str] = {
-    ("keep", "an", "eye", "on"): "look", ("keep", "a", "close", "eye", "on"): "look", ("keep", "tabs", "on"): "look",
+    ("keep", "an", "eye", "on"): "look", ("keep", "a", "close", "eye", "on"): "look", ("keep", "tabs", "on"): "look", ("keep", "tab", "on"): "look",
     ("keep", "watch", "on"): "look", ("keep", "a", "wary", "eye", "on"): "look"}
 DISTANCE_NOUNS = frozenset("metre meter yard foot feet inch mile pace centimetre centimeter kilometre kilometer "
                            "m cm km ft".split())
