@@ -103,6 +103,30 @@ def test_a_fronted_purpose_is_where_the_robot_goes(read, world, prompt, destinat
     assert r.robot.passes == (g.who,)
 
 
+@pytest.mark.parametrize("world,prompt,destination,location", [
+    ("hospital", "On its way to the pharmacy, the robot passes two nurses chatting at the nurse station.", "pharmacy",
+     "nurse_station"),
+    ("airport", "Heading for gate B1, the robot weaves past a dozen passengers queuing at the cafe.", "gate_b1", "cafe"),
+    ("mall", "On the way to the cinema lobby, the robot threads through twenty shoppers at the fountain.",
+     "cinema_lobby", "fountain"),
+    ("museum", "Bound for the cafe, the robot edges past a group of pupils in the great hall.", "cafe", "great_hall"),
+    ("station", "Making for platform 2, the robot squeezes through the crowd on the concourse.", "platform_2",
+     "concourse"),
+])
+def test_a_fronted_way_is_where_the_robot_goes_not_the_peoples(read, world, prompt, destination, location):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert (g.location, g.destination) == (location, None)
+    assert r.robot is not None and (r.robot.task, r.robot.destination, r.robot.via) == ("cross", destination,
+                                                                                      (location,))
+
+
+def test_a_persons_fronted_way_stays_theirs(read):
+    r = read("hospital", "On her way to the pharmacy, a nurse passes the robot.")
+    (g,) = r.groups
+    assert g.destination == "pharmacy" and r.robot is None
+
+
 # ---- 5. the robot showing people to a place ---------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt,start,destination", [
