@@ -19,6 +19,7 @@ never more than WHOLE_ZONE_CAP people.
 
 from __future__ import annotations
 
+from grove_tui.language.robot_feeling_words import DISTANCE_NOUNS, MORE_FEELINGS, WAKE_PHRASES, WATCHING_PHRASES
 from grove_tui.language.role_nouns import ROLE_NOUNS
 
 # ---- numbers --------------------------------------------------------------------------------
@@ -217,7 +218,7 @@ NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull 
     bag case luggage box parcel machine computer laptop phone monitor heater radiator speaker alarm siren bell
     engine motor drone balloon leaf flower plant tree elevator escalator printer scanner projector shutter conveyor
     generator sprinkler dishwasher boiler fridge freezer kettle timer tram ferry tractor forklift mower shuttle
-    scooter trailer container dispenser detector sensor extinguisher ventilator indicator compressor thermostat""".split())
+    scooter trailer container dispenser detector sensor extinguisher ventilator indicator compressor thermostat""".split()) | DISTANCE_NOUNS
 # Endings of nouns for someone who does something ("busker", "florist", "violinist", "sommelier"):
 # the subject of a verb, such a noun is a person unless the world or a list says otherwise.
 AGENT_SUFFIXES = ("er", "or", "ist", "ian", "eur", "ier", "ess")
@@ -428,7 +429,7 @@ ROBOT_PHRASES: dict[tuple[str, ...], str] = {
     ("back", "off"): "avoid", ("get", "out", "of", "the", "way"): "avoid", ("make", "way"): "avoid",
     ("edge", "away"): "avoid", ("scuttle", "away"): "avoid",
     ("square", "up", "to"): "block", ("barge", "into"): "block", ("push", "into"): "block",
-    ("sit", "on"): "block", ("climb", "on"): "block", ("sneak", "up"): "approach", ("creep", "up"): "approach", ("tiptoe", "up"): "approach",
+    **WATCHING_PHRASES, ("sit", "on"): "block", ("climb", "on"): "block", ("sneak", "up"): "approach", ("creep", "up"): "approach", ("tiptoe", "up"): "approach",
 }
 # Words that may stand inside a robot phrase without changing it ("keep well clear", "steer
 # completely clear", "stand right in front of").
@@ -452,14 +453,14 @@ ROBOT_APPROACH_TAILS = (("up", "to"), ("over", "to"), ("towards",), ("toward",),
 # Words right after the robot that name an interaction ("stand in the robot's way").
 ROBOT_AFTER_PHRASES: dict[tuple[str, ...], str] = {("'s", "way"): "block", ("'s", "path"): "block",
                                                    ("’s", "way"): "block", ("’s", "path"): "block",
-                                                   ("'s", "route"): "block", ("’s", "route"): "block"}
+                                                   ("'s", "route"): "block", ("’s", "route"): "block", **WAKE_PHRASES}
 # Feelings that name a reaction when the robot is in the same clause ("scared of the robot").
 ROBOT_FEELINGS: dict[str, str] = {
     "curious": "approach", "curiosity": "approach", "interested": "approach", "fascinated": "approach",
     "scared": "avoid", "afraid": "avoid", "frightened": "avoid", "fearful": "avoid", "nervous": "avoid",
     "wary": "avoid", "surprised": "look", "startled": "look", "amazed": "look", "astonished": "look", **dict.fromkeys(
         "astonishment amazement surprise awe wonder wonderment disbelief".split(), "look"),
-    "hostile": "block", "aggressive": "block", "threatening": "block", "angry": "block",
+    "hostile": "block", "aggressive": "block", "threatening": "block", "angry": "block", **MORE_FEELINGS,
 }
 # HuNavSim behavior types for each robot interaction.
 ROBOT_REACTIONS = {"look": "Surprised", "approach": "Curious", "follow": "Curious", "avoid": "Scared",

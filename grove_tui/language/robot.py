@@ -26,7 +26,10 @@ from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
+from grove_tui.language.robot_purpose import fronted_purpose
 from grove_tui.language.robot_rounds import to_and_fro
+from grove_tui.language.robot_shows import shows_the_way
+from grove_tui.language.robot_states import placing_robot, state_after_robot, stays_so
 from grove_tui.language.sequences import robot_sequel
 from grove_tui.language.tokens import verb_lemma
 
@@ -74,6 +77,7 @@ class RobotClauses:
                 i += 1
                 continue
             first, verb, command = found
+            first = fronted_purpose(s, first, taken)  # "To reach the toy store, the robot must ..."
             end = self._end(verb if verb is not None else i + 1, starts)
             second = robot_sequel(s, verb, end) if verb is not None else None
             if second is not None:
@@ -105,6 +109,8 @@ class RobotClauses:
         if not (is_robot or is_it) or i in taken:
             return None
         first = self._phrase_start(i, taken) if is_robot else i
+        if is_robot and (placer := placing_robot(s, first)) is not None:
+            return placer, placer, False  # "park the robot by the back door": it waits there
         before = first - 1
         command = before >= 0 and verb_lemma(low[before]) in lx.ROBOT_COMMAND_VERBS and (
             before == 0 or s.is_punct(before - 1) or low[before - 1] in lx.CLAUSE_STARTERS | {"please"})
@@ -116,6 +122,8 @@ class RobotClauses:
             first = before
         elif not subject or goes_after_robot(s, first):
             return None  # "two kids trot after the robot round the shop": the robot is what they go after
+        if not command and (state := state_after_robot(s, i)) is not None:
+            return first, state, False  # "bot idle nr pulpit", "the robot is stationary by gate B1"
         j = i + 1
         while j < s.n and (s.w[j].pos == "ADV" or s.w[j].tag == "MD" or low[j] in ("then", "also", "now", "first")) \
                 and not s.is_punct(j):
@@ -250,8 +258,9 @@ class RobotClauses:
             verb = s.verb(rc.verb) if rc.verb is not None else ""
             placed = rc.verb is not None and (s.w[rc.verb].tag == "VBN" and verb in lx.ROBOT_PLACED_VERBS or (
                 verb, s.low[rc.verb + 1] if rc.verb + 1 < s.n else "") in _OFF_PHRASES)
-            placed = placed or keeps_post(s, rc.verb)  # "holds (its) position by the stairs"
+            placed = placed or keeps_post(s, rc.verb) or stays_so(s, rc.verb)  # "holds (its) position by the stairs"
             kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
+            kind = "cross" if kind == "wait" and shows_the_way(s, rc.verb, rc.tokens) else kind  # "shows them to gate 2"
             if kind in ("cross", None) and to_and_fro(s, rc.verb, rc.tokens):
                 kind = "patrol"  # "goes up and down the west mall": it keeps going round there
             if kind is None:
