@@ -1345,7 +1345,7 @@ def _make_probe(claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members
     if claim.status == FAILS and claim.kind != "count":
         return None  # the plan already contradicts it: ✗ stays, with its reason
     robot = checker.planned.robot
-    if claim.kind == "robot_via" and claim.point is None and claim.zone is not None and robot is not None \
-            and robot.task == "cross":
+    crossing = robot is not None and robot.task == "cross" or claim.asked.startswith("cross|")
+    if claim.kind == "robot_via" and claim.point is None and claim.zone is not None and crossing:
         return _RobotCrossProbe(claim, checker, cols, members)
     return kind(claim, checker, cols, members)
