@@ -23,7 +23,7 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
-from grove_tui.generation.crossing import crossing_goal
+from grove_tui.generation.crossing import crossing_goal, crossing_start
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
     block_formations,
@@ -349,6 +349,8 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
             goal = crossing_goal(world, picker, zone, picker.space.cells(zone))
         before = zone_before(world, asked.via[0], goal) if people_stay_in(reading, world, asked.via[0]) else None
         start = picker.pick(before or asked.via[0], towards=None, away_from=goal)
+        if before is None and task == "cross" and goal is not None and not _is_spot(world, asked.via[0]):
+            start = crossing_start(world, picker, world.zone_of_place(asked.via[0]) or "", goal) or start
     elif task == "follow" and follows:
         rows = [a.start for a in post.agents if a.id in follows]
         centre = (sum(p[0] for p in rows) / len(rows), sum(p[1] for p in rows) / len(rows))

@@ -51,3 +51,18 @@ def test_a_robot_setting_off_from_the_middle_of_the_room_has_not_crossed_it(tmp_
     via = next(c for c in checked.robot.claims if c.kind == "robot_via")
     assert via.status == FAILS, via.evidence
     assert "from its edge" in via.evidence
+
+
+def test_crossing_a_hall_to_a_far_goal_sets_off_by_the_wall_across_from_it(tmp_path):
+    # the goal (a platform) is far off: 80 % as far as the farthest point of the hall was most of the
+    # hall, and the robot set off from its middle (5.3 m from any wall of a 12 m hall) to the opening
+    station = load_world("station")
+    prompt = "twelve travellers queue at the ticket office while a robot crosses the ticket hall to the platforms"
+    groups = (DraftGroup("travellers", 12, "ticket_hall", DraftNode("Queue", {"service_point": "ticket_office"})),)
+    run = plan_by_hand(station, "queuing", prompt, groups, tmp_path / "b")
+    hall = station.zone("ticket_hall").polygon
+    start = shapely.Point(run.op.robot.start)
+    assert hall.contains(start) and hall.boundary.distance(start) <= 3.0, run.op.robot.start
+    report = run.run(90.0)
+    via = next(c for c in report.robot.claims if c.kind == "robot_via")
+    assert via.status == HOLDS, via.evidence
