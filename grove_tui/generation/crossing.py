@@ -27,7 +27,8 @@ class _Cells(Protocol):
 
 
 class _StartPicking(Protocol):
-    space: _Cells
+    @property
+    def space(self) -> _Cells: ...
 
     def acceptable(self, p: Point) -> bool: ...
 
