@@ -1154,8 +1154,9 @@ class _RobotPlaceProbe(_Probe):
 
 class _RobotCrossProbe(_RobotPlaceProbe):
     """robot_via of a robot asked to cross a zone ("the robot crosses the waiting room"): one visit that
-    begins at the zone's edge (it came in, or set off by a wall) and ends at another edge (it went out, or
-    stopped by a wall) a good way across; setting off from the middle and driving out is half a crossing."""
+    begins at the zone's edge (it came in, or set off by a wall) and goes a good way across (half the zone's
+    width, out of it or to its goal inside: "crosses the hall to the information desk"); setting off from
+    the middle and driving out by the nearest door is half a crossing."""
 
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
@@ -1188,16 +1189,16 @@ class _RobotCrossProbe(_RobotPlaceProbe):
                 # it came in through the boundary, or it sets off inside: at the edge only if near a wall
                 self.from_edge = self.was_inside is False or self._to_edge(xy) <= self.edge
             elif not inside[k] and self.was_inside:
-                self._end(at_edge=True)
+                self._end()
             if inside[k]:
                 self.last_in = xy
             self.was_inside = bool(inside[k])
 
-    def _end(self, at_edge: bool) -> None:
+    def _end(self) -> None:
         if self.visit_from is None or self.last_in is None:
             return
         apart = math.dist(self.visit_from, self.last_in)
-        if self.from_edge and at_edge:
+        if self.from_edge:
             self.best = max(self.best, apart)
         elif self.half is None or apart > self.half[1]:
             self.half = (self._to_edge(self.visit_from) if not self.from_edge else 0.0, apart)
@@ -1210,19 +1211,19 @@ class _RobotCrossProbe(_RobotPlaceProbe):
             return FAILS, f"never passed through {self.where()}"
         best, half = self.best, self.half
         if self.was_inside and self.visit_from is not None and self.last_in is not None:
-            # still inside at the end of the run: a crossing if it stopped by a wall
+            # still inside at the end of the run (at its goal there, or on its way)
             apart = math.dist(self.visit_from, self.last_in)
-            if self.from_edge and self._to_edge(self.last_in) <= self.edge:
+            if self.from_edge:
                 best = max(best, apart)
             elif half is None or apart > half[1]:
                 half = (self._to_edge(self.visit_from) if not self.from_edge else 0.0, apart)
         need = CROSS_APART * self.width
         if best >= need:
-            return HOLDS, f"crossed {self.where()} ({best:.0f} m from edge to edge; it is {self.width:.0f} m wide)"
+            return HOLDS, f"crossed {self.where()} ({best:.0f} m from its edge; it is {self.width:.0f} m wide)"
         if half is not None and half[0] > 0.0:
             return FAILS, (f"set off inside {self.where()}, {half[0]:.1f} m from its edge, and drove {half[1]:.0f} m "
                            f"in it: not across it ({self.width:.0f} m wide)")
-        text = f"in {self.where()} from {_when(self.first)}, but never from one edge to another"
+        text = f"in {self.where()} from {_when(self.first)}, but never across it from its edge"
         return FAILS, text + (f" (at most {max(best, half[1] if half else 0.0):.0f} m of the {need:.0f} m asked)")
 
 
