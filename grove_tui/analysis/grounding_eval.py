@@ -29,7 +29,7 @@ Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a 
 converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); follow (the `who` of another
 group: close to them while they walk); for (seconds: a stay or wander judged over that long after arriving,
 a reach counted from then, as in "waits for a minute and then walks on"); robot (follow,
-approach, block, avoid, look). The robot's: reach, via, cross (from one edge of the zone to another), stay, patrol
+approach, block, avoid, look). The robot's: reach, via, cross (from its edge half its width across), stay, patrol
 (a place), follow (words of a group).
 """
 
