@@ -29,7 +29,8 @@ Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a 
 converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); follow (the `who` of another
 group: close to them while they walk); for (seconds: a stay or wander judged over that long after arriving,
 a reach counted from then, as in "waits for a minute and then walks on"); robot (follow,
-approach, block, avoid, look). The robot's: reach, via, stay, patrol (a place), follow and passes (words of a group).
+approach, block, avoid, look). The robot's: reach, via, cross (from its edge half its width across), stay, patrol
+(a place), follow and passes (words of a group).
 """
 
 from __future__ import annotations
@@ -55,7 +56,7 @@ if TYPE_CHECKING:
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
                   "robot", "keep_out", "follow", "for")
-ROBOT_OUTCOMES = ("reach", "via", "stay", "patrol", "follow", "passes")
+ROBOT_OUTCOMES = ("reach", "via", "cross", "stay", "patrol", "follow", "passes")
 REACTIONS = ("follow", "approach", "block", "avoid", "look")
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
 REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0}
@@ -338,9 +339,10 @@ def _robot_claims(robot: Iterable[tuple[str, object]], world: World, scenario: S
     claims: list[Claim] = []
     for kind, value in robot:
         tag = f"{kind}|"
-        if kind in ("reach", "via", "stay"):
+        if kind in ("reach", "via", "cross", "stay"):
             for name in _names(value):
-                claim = _place(f"robot_{kind}", name, world, 1)
+                # "cross|..." is checked as a crossing (outcomes._RobotCrossProbe)
+                claim = _place("robot_via" if kind == "cross" else f"robot_{kind}", name, world, 1)
                 claims.append(Claim(claim.kind, tag + name, "expected", zone=claim.zone, place=claim.place,
                                     point=claim.point, radius=1.5 if claim.point else 0.0))
         elif kind == "patrol":

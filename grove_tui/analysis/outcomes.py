@@ -73,6 +73,8 @@ STAY_SHARE = 0.9  # share of the time after arriving spent there
 WANDER_WALKED = 3.0  # metres walked inside the zone
 MOVE_WALKED = 3.0
 PATROL_RADIUS = 1.0
+CROSS_EDGE = 1.5  # metres: at least this near a zone's boundary is at its edge (a quarter of its width if more)
+CROSS_APART = 0.5  # a crossing's ends at least this share of the zone's width apart
 ON_THE_WAY_SECONDS = 10.0  # the last stretch of a run over which people not there yet are seen walking on
 ON_THE_WAY_WALKED = 2.0  # metres walked over that stretch: still on the way, not stuck
 ON_THE_WAY_PATIENCE = 3.0  # a run this many times the estimated time, and they are still not there: ✗
@@ -1150,6 +1152,81 @@ class _RobotPlaceProbe(_Probe):
         return HOLDS, text
 
 
+class _RobotCrossProbe(_RobotPlaceProbe):
+    """robot_via of a robot asked to cross a zone ("the robot crosses the waiting room"): one visit that
+    begins at the zone's edge (it came in, or set off by a wall) and goes a good way across (half the zone's
+    width, out of it or to its goal inside: "crosses the hall to the information desk"); setting off from
+    the middle and driving out by the nearest door is half a crossing."""
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        own = checker.world.zone(claim.zone or "").polygon
+        self.edge_line = own.boundary
+        rect = own.minimum_rotated_rectangle
+        xs, ys = rect.exterior.coords.xy
+        sides = [math.dist((xs[i], ys[i]), (xs[i + 1], ys[i + 1])) for i in range(2)]
+        self.width = min(sides) if min(sides) > 0 else max(sides)
+        self.edge = max(CROSS_EDGE, 0.25 * self.width)
+        self.visit_from: tuple[float, float] | None = None  # where the current visit began
+        self.from_edge = False
+        self.last_in: tuple[float, float] | None = None
+        self.was_inside: bool | None = None
+        self.best = 0.0  # the longest crossing seen, metres between its ends
+        self.half: tuple[float, float] | None = None  # (metres from the edge where it began, metres driven)
+
+    def _to_edge(self, xy: tuple[float, float]) -> float:
+        return float(self.edge_line.distance(shapely.Point(xy)))
+
+    def add(self, f: _Frames) -> None:
+        super().add(f)
+        if f.robot is None:
+            return
+        inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        for k in range(inside.size):
+            xy = (float(f.robot[k, 0]), float(f.robot[k, 1]))
+            if inside[k] and not self.was_inside:
+                self.visit_from = xy
+                # it came in through the boundary, or it sets off inside: at the edge only if near a wall
+                self.from_edge = self.was_inside is False or self._to_edge(xy) <= self.edge
+            elif not inside[k] and self.was_inside:
+                self._end()
+            if inside[k]:
+                self.last_in = xy
+            self.was_inside = bool(inside[k])
+
+    def _end(self) -> None:
+        if self.visit_from is None or self.last_in is None:
+            return
+        apart = math.dist(self.visit_from, self.last_in)
+        if self.from_edge:
+            self.best = max(self.best, apart)
+        elif self.half is None or apart > self.half[1]:
+            self.half = (self._to_edge(self.visit_from) if not self.from_edge else 0.0, apart)
+        self.visit_from = None
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if math.isinf(self.first):
+            return FAILS, f"never passed through {self.where()}"
+        best, half = self.best, self.half
+        if self.was_inside and self.visit_from is not None and self.last_in is not None:
+            # still inside at the end of the run (at its goal there, or on its way)
+            apart = math.dist(self.visit_from, self.last_in)
+            if self.from_edge:
+                best = max(best, apart)
+            elif half is None or apart > half[1]:
+                half = (self._to_edge(self.visit_from) if not self.from_edge else 0.0, apart)
+        need = CROSS_APART * self.width
+        if best >= need:
+            return HOLDS, f"crossed {self.where()} ({best:.0f} m from its edge; it is {self.width:.0f} m wide)"
+        if half is not None and half[0] > 0.0:
+            return FAILS, (f"set off inside {self.where()}, {half[0]:.1f} m from its edge, and drove {half[1]:.0f} m "
+                           f"in it: not across it ({self.width:.0f} m wide)")
+        text = f"in {self.where()} from {_when(self.first)}, but never across it from its edge"
+        return FAILS, text + (f" (at most {max(best, half[1] if half else 0.0):.0f} m of the {need:.0f} m asked)")
+
+
 class _RobotPatrolProbe(_Probe):
     """The robot goes to the far end of its round and comes back to where it started."""
 
@@ -1268,4 +1345,8 @@ def _make_probe(claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members
         return None
     if claim.status == FAILS and claim.kind != "count":
         return None  # the plan already contradicts it: ✗ stays, with its reason
+    robot = checker.planned.robot
+    crossing = robot is not None and robot.task == "cross" or claim.asked.startswith("cross|")
+    if claim.kind == "robot_via" and claim.point is None and claim.zone is not None and crossing:
+        return _RobotCrossProbe(claim, checker, cols, members)
     return kind(claim, checker, cols, members)

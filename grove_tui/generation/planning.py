@@ -23,6 +23,7 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
+from grove_tui.generation.crossing import crossing_goal, crossing_start
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
     block_formations,
@@ -344,8 +345,14 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     elif asked is not None and asked.via and task in ("cross", "patrol"):
         # "crosses the ticket hall to the platforms": from the far side of the hall; "drives through the
         # queue": from the next room, so it passes the people there (robot_passing.py)
+        if goal is None and task == "cross" and not _is_spot(world, asked.via[0]) and world.zone_of_place(asked.via[0]):
+            # nowhere named to go: out by the door across the room, so it sets off from the far wall
+            zone = world.zone_of_place(asked.via[0]) or ""
+            goal = crossing_goal(world, picker, zone, picker.space.cells(zone))
         before = zone_before(world, asked.via[0], goal) if people_stay_in(reading, world, asked.via[0]) else None
         start = picker.pick(before or asked.via[0], towards=None, away_from=goal)
+        if before is None and task == "cross" and goal is not None and not _is_spot(world, asked.via[0]):
+            start = crossing_start(world, picker, world.zone_of_place(asked.via[0]) or "", goal) or start
     elif task == "follow" and follows:
         rows = [a.start for a in post.agents if a.id in follows]
         centre = (sum(p[0] for p in rows) / len(rows), sum(p[1] for p in rows) / len(rows))
