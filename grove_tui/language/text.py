@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_lists import chat_lists
 from grove_tui.language.chat_spelling import spell_out
@@ -105,7 +106,7 @@ def normalise(text: str) -> str:
     kept = _OF_THIS_PLACE.sub("", _A_SIDE.sub(r"\1aside", kept))
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
-    return " ".join(kept.split())
+    return " ".join(bare_items(kept).split())  # "..., intern at printer": one person, an item of its own
 
 
 def _for_the_last(m: re.Match[str]) -> str:

@@ -79,3 +79,24 @@ def test_life_adjectives_keep_one_person(read, world, prompt, location):
     assert group.count.value == 1
     if location:
         assert group.location == location
+
+
+@pytest.mark.parametrize("world,prompt,counts,locations", [
+    ("hospital", "4 nurses in ward A, porter @ pharmacy", [4, 1], ["ward_a", "pharmacy"]),
+    ("library", "12 students in the reading room, librarian @ issue desk", [12, 1], ["reading_room", "issue_desk"]),
+    ("office", "3 devs in kitchen, receptionist at reception desk", [3, 1], ["kitchen", "reception_desk"]),
+    ("airport", "loads of ppl @ check-in, pilot in the lounge", [12, 1], ["check_in_hall", "airline_lounge"]),
+    ("zoo", "10 kids @ penguin beach + cleaner @ the cafe", [10, 1], ["penguin_beach", "cafe"]),
+])
+def test_a_bare_person_of_a_chat_list_is_a_group_of_its_own(read, world, prompt, counts, locations):
+    groups = read(world, prompt).groups
+    assert [g.count.value for g in groups] == counts
+    assert [g.location for g in groups] == locations
+
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("supermarket", "6 ppl in q @ till 3, cleaner mopping aisle 2", [6, 1]),
+    ("hospital", "nurses in ward A, security at the main entrance", [3]),
+])
+def test_chat_lists_keep_their_groups(read, world, prompt, counts):
+    assert [g.count.value for g in read(world, prompt).groups] == counts
