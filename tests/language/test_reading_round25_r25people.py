@@ -100,3 +100,30 @@ def test_a_bare_person_of_a_chat_list_is_a_group_of_its_own(read, world, prompt,
 ])
 def test_chat_lists_keep_their_groups(read, world, prompt, counts):
     assert [g.count.value for g in read(world, prompt).groups] == counts
+
+
+@pytest.mark.parametrize("world,prompt,counts,locations", [
+    ("hospital", "Stick a porter in ward A and get a pair of nurses waiting at the pharmacy.", [1, 2],
+     ["ward_a", "pharmacy"]),
+    ("hospital", "Put two nurses in ward A and leave a porter waiting at the pharmacy.", [2, 1],
+     ["ward_a", "pharmacy"]),
+    ("library", "Put a librarian at the issue desk and get two students waiting in the reading room.", [1, 2],
+     ["issue_desk", "reading_room"]),
+    ("office", "Post a receptionist at the reception desk and get two developers sitting in the kitchen.", [1, 2],
+     ["reception_desk", "kitchen"]),
+    ("supermarket", "Stick two cashiers at till 1 and get a supervisor waiting by the entrance.", [2, 1],
+     ["checkout_1", "entrance_lobby"]),
+])
+def test_a_placing_repeated_after_and_places_a_second_group(read, world, prompt, counts, locations):
+    groups = read(world, prompt).groups
+    assert [g.count.value for g in groups] == counts
+    assert [g.location for g in groups] == locations
+
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("airport", "Station two guards at security and have a cleaner waiting by the departure board.", [2, 1]),
+    ("museum", "Put a guard in the main hall and have a volunteer waiting at the gift shop.", [1, 1]),
+    ("hospital", "Put a porter in ward A. Two nurses chat and get a coffee at the cafeteria.", [1, 2]),
+])
+def test_placings_keep_their_groups(read, world, prompt, counts):
+    assert [g.count.value for g in read(world, prompt).groups] == counts
