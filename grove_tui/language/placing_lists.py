@@ -31,7 +31,23 @@ def placing_lists(text: str) -> str:
         item = re.split(r"[,.;!?]", text[m.end():], maxsplit=1)[0].lower().split()
         if any(verb_lemma(w) == w and (w in lx.INTENT_VERBS or w in lx.PEOPLE_GOING_VERBS) for w in item[1:]):
             continue  # "and have a detective stroll over to ...": what they are made to do, no placing
+        if not _placed_item(item):
+            continue  # "and have a porter wheel a bed out of ...": a verb and its object, no placing
         out.append(text[last:m.start()] + m.group(1))
         last = m.end()
     out.append(text[last:])
     return "".join(out)
+
+
+_PLACED = frozenset("in at by on near behind beside inside outside next round around under over up down".split())
+_COUNTED = frozenset("a an one another some pair trio couple of".split())
+
+
+def _placed_item(item: list[str]) -> bool:
+    """Whether an item is a short noun phrase, then a place's preposition or a word in "-ing"
+    ("a pair of nurses waiting at ...", "two students in the ..."), not a verb with an object."""
+    end = next((k for k, w in enumerate(item) if w in _PLACED or (w.endswith("ing") and len(w) > 4)), None)
+    if end is None:
+        return False
+    noun = [w for w in item[:end] if w not in _COUNTED and not w.isdigit() and w not in lx.NUMBER_WORDS]
+    return 1 <= len(noun) <= 2
