@@ -20,6 +20,9 @@ from grove_tui.language.caused_motion import taken_name
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.feeling_people import feels_about_the_robot
 from grove_tui.language.listed_people import listed_person
+from grove_tui.language.counted_kinds import counted_plural_subject
+from grove_tui.language.owned_by_subject import subject_of_his_or_her
+from grove_tui.language.life_adjectives import by_a_life_adjective
 from grove_tui.language.lone_person import by_a_person_adjective, goes_along_a_route, told_as_he_or_she
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.singular_verbs import subject_of_a_later_verb
@@ -87,6 +90,8 @@ class People:
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if trader_subject(s, i) or listed_person(s, i) or feels_about_the_robot(s, i):
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
+        if counted_plural_subject(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
+            return True  # "thirty top-year juniors troop into ...", "the Dean leaves his vestry"
         if moves_as_a_person(s, i):
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):

@@ -13,10 +13,12 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_lists import chat_lists
 from grove_tui.language.chat_spelling import spell_out
 from grove_tui.language.kin_counts import kin_counts
+from grove_tui.language.placing_lists import placing_lists
 from grove_tui.language.placing_verbs import placing_verbs
 from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.robot_chat import robot_chat
@@ -92,7 +94,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = robot_chat(spell_out(kept))  # "walkin frm", "robo shd wait": chat's dropped g, short words
-    kept = placing_verbs(kin_counts(chat_lists(kept)))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
+    kept = placing_lists(placing_verbs(kin_counts(chat_lists(kept))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
@@ -105,7 +107,7 @@ def normalise(text: str) -> str:
     kept = _OF_THIS_PLACE.sub("", _A_SIDE.sub(r"\1aside", kept))
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
-    return " ".join(kept.split())
+    return " ".join(bare_items(kept).split())  # "..., intern at printer": one person, an item of its own
 
 
 def _for_the_last(m: re.Match[str]) -> str:
