@@ -645,18 +645,28 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
             return DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), activity)), True
         return activity, True
     if group.robot_reaction:
-        return with_reaction(tree, group.robot_reaction), False
+        # "walk to the reading room and avoid the robot": the report checks everyone the robot comes within
+        # REACTION_DISTANCE of, so the reaction must fire from there, not only from HuNavSim's nearer trigger
+        checked_from = REACTION_DISTANCE.get(interaction) if interaction in _CHECKED_FROM_AFAR else None
+        return with_reaction(tree, group.robot_reaction, checked_from), False
     return tree, False
 
 
-def with_reaction(tree: DraftNode, behavior: str) -> DraftNode:
-    """The tree inside HuNavSim's reaction pattern for `behavior`, unless it already reacts."""
+# Reactions around a routine whose check counts everyone within its distance (keeping away, looking); the
+# others are checked nearer than any trigger (coming up to it, blocking it).
+_CHECKED_FROM_AFAR = frozenset({"avoid", "look"})
+
+
+def with_reaction(tree: DraftNode, behavior: str, trigger: float | None = None) -> DraftNode:
+    """The tree inside HuNavSim's reaction pattern for `behavior`, unless it already reacts; it fires when
+    the robot is in sight within `trigger` metres, when that is farther than the behaviour's own range."""
     spec = ROBOT_REACTION_DEFAULTS.get(behavior)
     if spec is None or any(n.node in ROBOT_REACTIONS for n in tree.walk()):
         return tree
     node, distance, duration, once = spec
     reaction = DraftNode("Sequence", {}, (
-        DraftNode("IsRobotVisible", {"distance": max(distance, REACTION_TRIGGER.get(behavior, distance))}),
+        DraftNode("IsRobotVisible", {"distance": max(distance, REACTION_TRIGGER.get(behavior, distance),
+                                                     trigger or 0.0)}),
         DraftNode("ForceFailure", {}, (DraftNode(node, {"beh_duration": duration, "only_once": once}),)),
     ))
     return DraftNode("ReactiveFallback", {}, (reaction, tree))
