@@ -312,6 +312,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
+    ("set", "off", "from"): "walk", ("set", "out", "from"): "walk",  # "set off from the beach": they leave it
     **{(verb, *how): "wander" for verb in ("walk", "move", "go", "stroll", "random") for how in (  # no aim
         ("randomly",), ("aimlessly",), ("at", "random"), ("walk",), ("around", "randomly"), ("about", "randomly"))},
 }

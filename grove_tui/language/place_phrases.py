@@ -24,7 +24,7 @@ from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
-from grove_tui.language.named_owners import owned_by_name, owner_at
+from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
@@ -95,7 +95,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
-        if elided and self.owner and (owned := self._owned(("room",), None, self.owner)) is not None:
+        if elided and (owned := elided_owned(self, k, at)) is not None:
             # "the guards drink tea in their room while the director works in hers": her own room
             self.context_zones.append(owned[0].zone)
             if mentioned:
