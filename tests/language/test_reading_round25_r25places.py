@@ -1,0 +1,108 @@
+"""Round 25 of the reader's places: a room whose owner the world names only in its description ("her
+office" of Ingrid Halvorsen, "hers"), the room left behind when people lock it and go, a feeling's topic
+after "about" (no place to refuse), a place hunted for after a place, and setting off from a place."""
+
+import pytest
+
+
+@pytest.mark.parametrize("world,prompt,role,place", [
+    ("consulate", "Ingrid Halvorsen carries a box of files from her office to the staff room.", "start", "consul_office"),
+    ("consulate", "Consul Halvorsen hurries from her office to the counter hall.", "start", "consul_office"),
+    ("research_lab_building", "Professor Lindqvist walks from her lab to the shared kitchen.", "start", "wet_lab_1"),
+    ("research_lab_building", "Prof Lindqvist leaves the kitchen and heads back to her lab.", "destination", "wet_lab_1"),
+    ("hall_of_residence", "Priya Sharma walks from her room to the common room.", "start", "bedroom_g01"),
+    ("hall_of_residence", "Tom Ellis hurries from his room to the laundry.", "start", "bedroom_g02"),
+])
+def test_her_room_is_the_one_the_world_describes_as_hers(read, world, prompt, role, place):
+    (g,) = read(world, prompt).groups
+    assert getattr(g, role) == place
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("consulate", "Two clerks chat in the staff room while Ingrid Halvorsen stays in hers.", "consul_office"),
+    ("research_lab_building", "A technician walks to the cold room while Professor Lindqvist works in hers.",
+     "prof_office_1"),
+    ("high_street_bank", "Mr Shah walks to the banking hall while Ms Kowalski waits in hers.", "adviser_office_2"),
+    ("parcel_depot", "Two drivers sit in the canteen while Karen Walsh stays in hers.", "depot_manager_office"),
+    ("town_hall", "A porter walks to the council chamber while Ms Adeyemi works in hers.", "chief_executive_office"),
+])
+def test_hers_is_the_room_of_the_one_named(read, world, prompt, location):
+    g = read(world, prompt).groups[-1]
+    assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("research_lab_building", "Professor Lindqvist locks her office behind her and strolls to the shared kitchen.",
+     "prof_office_1", "shared_kitchen"),
+    ("research_lab_building", "Professor Lindqvist locks G07 behind her and strolls down to her lab.",
+     "prof_office_1", "wet_lab_1"),
+    ("consulate", "Ingrid Halvorsen shuts her office behind her and saunters down to the staff room.",
+     "consul_office", "staff_room"),
+    ("office", "The director locks her office and strolls down to the kitchen.", "manager_office", "kitchen"),
+])
+def test_a_room_locked_before_a_stroll_is_where_they_start(read, world, prompt, start, destination):
+    (g,) = read(world, prompt).groups
+    assert (g.start, g.destination) == (start, destination) and g.intent == "walk"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("courthouse", "Angry about the verdict, three jurors walk to the jury room."),
+    ("courthouse", "Worried about the hearing, a witness waits in the lobby."),
+    ("mall", "Excited about the sale, four teens run to the food court."),
+    ("museum", "Nervous about the exam, a student sits in the cafe."),
+    ("hospital", "Two nurses, really stressed out about the rota, walk to the pharmacy."),
+])
+def test_what_a_feeling_is_about_is_no_place_to_refuse(read, world, prompt):
+    r = read(world, prompt)
+    assert not r.unknown_places and r.groups
+
+
+@pytest.mark.parametrize("world,prompt,start,unknown", [
+    ("zoo", "Two kids set off from the reptile house hunting for the planetarium.", "reptile_house", "planetarium"),
+    ("mall", "A couple set off from the fountain hunting for the bowling alley.", "fountain", "bowling alley"),
+    ("station", "Three backpackers set off from platform 1 hunting for the ferry terminal.", "platform_1",
+     "ferry terminal"),
+    ("museum", "Two tourists set off from the cafe searching for the aquarium.", "cafe", "aquarium"),
+])
+def test_setting_off_from_a_place_hunting_for_one_the_world_lacks(read, world, prompt, start, unknown):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.intent == "walk" and g.start == start and unknown in r.unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("zoo", "Two kids set off from the reptile house.", "reptile_house"),
+    ("museum", "A family sets out from the cafe.", "cafe"),
+    ("mall", "Three friends set off from the fountain.", "fountain"),
+])
+def test_setting_off_from_a_place_is_leaving_it(read, world, prompt, start):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "walk" and g.start == start
+
+
+# ---- guards: readings that must not change ---------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("mall", "Two friends argue about the price, then walk to the planetarium.", "planetarium"),
+    ("zoo", "Two kids leave the reptile house looking for the planetarium.", "planetarium"),
+])
+def test_guard_a_place_the_world_lacks_is_still_refused(read, world, prompt, unknown):
+    assert unknown in read(world, prompt).unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,role,place", [
+    ("concert_venue", "Maestra Lindqvist walks from her dressing room to the stage.", "start", "dressing_room_1"),
+    ("ice_rink", "Dmitri Volkov strides from his office to rinkside.", "start", "coaches_office"),
+    ("high_street_bank", "Mr Shah walks from his office to the banking hall.", "start", "adviser_office_1"),
+    ("museum", "Two night guards drink tea in their room while the director works late in hers.", "location",
+     "director_office"),
+    ("mall", "Two kids wander about the food court.", "location", "food_court"),
+])
+def test_guard_owned_rooms_and_places_after_about(read, world, prompt, role, place):
+    g = read(world, prompt).groups[-1]
+    assert getattr(g, role) == place
+
+
+def test_guard_a_toddler_setting_off_the_alarm_does_not_walk(read):
+    (g,) = read("zoo", "A toddler sets off the alarm in the reptile house.").groups
+    assert g.intent != "walk"
