@@ -124,9 +124,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             phrase, j = informal[0], informal[1]  # "the hole in the wall": one name, not "hole" and "wall"
         if not phrase:
             return None
-        if prep == "to" and start == k and (informal is None and len(phrase) == 1 and lx.INTENT_VERBS.get(
-                verb_lemma(phrase[0])) is not None or s.w[k].tag == "VB" and s.low[at] == "to") and not self.whole_name(phrase):
-            return None  # "sit waiting to board", "to pay in": a verb, though "board" is a word of "departures board"
+        if prep == "to" and start == k and informal is None and len(phrase) == 1 and \
+                lx.INTENT_VERBS.get(verb_lemma(phrase[0])) is not None and not self.whole_name(phrase):
+            return None  # "sit waiting to board": a verb, though "board" is a word of "departures board"
         lemmas = informal[2] if informal is not None else \
             tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
         if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas) and not absent_kind(s.index, lemmas):
