@@ -106,3 +106,62 @@ def test_guard_owned_rooms_and_places_after_about(read, world, prompt, role, pla
 def test_guard_a_toddler_setting_off_the_alarm_does_not_walk(read):
     (g,) = read("zoo", "A toddler sets off the alarm in the reptile house.").groups
     assert g.intent != "walk"
+
+
+@pytest.mark.parametrize("world,prompt,role,place", [
+    ("consulate", "Two applicants walk from the reception hall to where their fingerprints get scanned.", "destination",
+     "biometrics_room"),
+    ("consulate", "A couple heads to where fingerprints get scanned.", "destination", "biometrics_room"),
+    ("consulate", "Three applicants wait where their fingerprints are scanned.", "location", "biometrics_room"),
+    ("parcel_depot", "A courier walks from the canteen to where drivers collect their scanners.", "destination",
+     "drivers_room"),
+    ("parcel_depot", "A new driver walks to where route sheets get collected.", "destination", "drivers_room"),
+])
+def test_where_it_is_done_is_the_room_its_description_says_it_of(read, world, prompt, role, place):
+    (g,) = read(world, prompt).groups
+    assert getattr(g, role) == place
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("ice_rink", "A steward pushes a boy with a sprained wrist in a wheelchair from rinkside to the cafe.", "rinkside"),
+    ("hospital", "A porter pushes a man with a broken leg in a wheelchair from the waiting room to radiology.",
+     "main_waiting_room"),
+    ("concert_venue", "An usher pushes an old lady with a stick in a wheelchair from the foyer to the bar.", "foyer"),
+    ("museum", "A guide pushes a visitor with a bad hip in a wheelchair from the cafe to the gift shop.", "cafe"),
+])
+def test_what_someone_is_pushed_in_after_a_long_description_is_no_place(read, world, prompt, start):
+    r = read(world, prompt)
+    assert r.groups[0].start == start and not r.unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,start,purpose", [
+    ("high_street_bank", "A builder goes from the cashpoint lobby to the counter to pay in a cheque.", "cashpoint_lobby",
+     "cheque"),
+    ("high_street_bank", "A pensioner walks from the cashpoints lobby to the counter to pay in her pension.",
+     "cashpoint_lobby", "pension"),
+    ("high_street_bank", "Two students walk from the banking hall to the counter to pay a bill.", "banking_hall", "bill"),
+    ("parcel_depot", "A driver walks from the canteen to the drivers' room to scan his parcels.", "canteen", "parcels"),
+])
+def test_an_infinitive_after_to_is_a_purpose_not_a_place(read, world, prompt, start, purpose):
+    (g,) = read(world, prompt).groups
+    assert g.start == start and g.purpose and purpose in g.purpose
+
+
+@pytest.mark.parametrize("world,prompt,role,place", [
+    ("warehouse", "A temp walks to where hi-vis vests are kept.", "destination", "ppe_station"),
+    ("consulate", "A couple walk to where passport photos get taken.", "destination", "photo_booth"),
+    ("gp_surgery", "A patient walks to where blood gets taken.", "destination", "phlebotomy_room"),
+    ("supermarket", "A shopper walks from aisle 1 to the checkout to pay for her shopping.", "start", "aisle_1"),
+    ("station", "A commuter walks from the concourse to the ticket office to pay a fine.", "destination", "ticket_office"),
+])
+def test_guard_where_clauses_and_purposes_that_already_read_right(read, world, prompt, role, place):
+    (g,) = read(world, prompt).groups
+    assert getattr(g, role) == place
+
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("airport", "Ten passengers walk to gate C4.", "gate c4"),
+    ("mall", "A woman walks from the food court to the bank to pay in a cheque.", "bank"),
+])
+def test_guard_places_the_world_lacks_after_to(read, world, prompt, unknown):
+    assert unknown in read(world, prompt).unknown_places
