@@ -32,6 +32,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
+from grove_tui.language.to_things import to_a_thing_before
 
 
 @dataclass
@@ -84,8 +85,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
         """The noun phrase from word k, after the place preposition (or verb) at `at`; `mentioned`
         False for a place said to be where nobody goes ("instead of the lobby")."""
-        s = self.s
-        low = s.low
+        s, low = self.s, self.s.low
+        prep = "to" if prep in ("at", "by", "in", "on", "near", "beside") and to_a_thing_before(s, at) else prep  # "to his cab by the exit"
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
@@ -321,8 +322,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
 
     def _words(self, j: int) -> tuple[list[str], int]:
         """The words of a place phrase from j, and the index after them."""
-        s = self.s
-        low = s.low
+        s, low = self.s, self.s.low
         phrase: list[str] = []
         joined = False  # the word follows a hyphen inside the phrase ("check-in")
         while j < s.n and len(phrase) < 6:

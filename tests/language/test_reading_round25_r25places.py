@@ -165,3 +165,24 @@ def test_guard_where_clauses_and_purposes_that_already_read_right(read, world, p
 ])
 def test_guard_places_the_world_lacks_after_to(read, world, prompt, unknown):
     assert unknown in read(world, prompt).unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("airport", "A pilot strolls from the lounge to her plane at gate A1.", "airline_lounge", "gate_a1"),
+    ("hospital", "A nurse goes from the pharmacy to her post at the nurses' station.", "pharmacy", "nurse_station"),
+    ("museum", "A guard walks from the cafe to his stool by the main entrance.", "cafe", "main_entrance"),
+    ("station", "A driver walks from the cafe to his cab at platform 2.", "cafe", "platform_2"),
+    ("office", "The courier walks from reception to her van by the back door.", "reception", "back_exit"),
+])
+def test_going_to_a_thing_at_a_place_is_going_to_the_place(read, world, prompt, start, destination):
+    (g,) = read(world, prompt).groups
+    assert (g.start, g.destination) == (start, destination)
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("sports_centre", "A lifeguard walks from the cafe to her chair at the poolside.", "lifeguard_chair"),
+    ("office", "A manager walks to her desk by the window.", "manager_desk"),
+])
+def test_guard_going_to_a_thing_the_world_has(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert g.destination == destination
