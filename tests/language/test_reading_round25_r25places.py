@@ -186,3 +186,28 @@ def test_going_to_a_thing_at_a_place_is_going_to_the_place(read, world, prompt, 
 def test_guard_going_to_a_thing_the_world_has(read, world, prompt, destination):
     (g,) = read(world, prompt).groups
     assert g.destination == destination
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("market_hall", "A dozen bargain hunters rummage through the bric-a-brac stalls.", "craft_stalls"),
+    ("museum", "A toddler rummages through the gift shop.", "gift_shop"),
+    ("station", "A tourist rummages through the newsagent.", "newsagent"),
+    ("airport", "Two kids rummage through the duty free shop.", "duty_free"),
+])
+def test_rummaging_through_a_place_is_browsing_there(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.location == location and not g.via
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("convention_centre", "Exhibitors are busy fitting out booth B.", "stand_b"),
+    ("convention_centre", "Three volunteers are kitting out booth A.", "stand_a"),
+])
+def test_the_place_a_verb_with_out_works_on_is_where_they_are(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.location == location
+
+
+def test_guard_clearing_out_a_place_is_still_leaving_it(read):
+    (g,) = read("mall", "Three cleaners are clearing out the food court.").groups
+    assert g.start == "food_court"
