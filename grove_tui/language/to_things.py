@@ -5,6 +5,7 @@ phrase takes the role of "to"."""
 
 from __future__ import annotations
 
+from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
 
 _TO = frozenset({"to", "towards", "toward", "into"})
@@ -27,4 +28,6 @@ def to_a_thing_before(s: Sentence, at: int) -> bool:
     if not nouns or s.w[at - 1].pos != "NOUN" or s.low[x] not in _OPENERS or x < 1 or s.low[x - 1] not in _TO:
         return False
     # the thing names no place of the world ("to her desk by the window" is the desk)
-    return not any(s.index.knows(s.lemma(n)) for n in nouns)
+    # nor the robot or a person ("runs up to the robot beside the kiosk": where they meet it)
+    return not any(s.index.knows(s.lemma(n)) or s.low[n] in lx.ROBOT_WORDS or s.lemma(n) in lx.PERSON_NOUNS
+                   for n in nouns)

@@ -211,3 +211,12 @@ def test_the_place_a_verb_with_out_works_on_is_where_they_are(read, world, promp
 def test_guard_clearing_out_a_place_is_still_leaving_it(read):
     (g,) = read("mall", "Three cleaners are clearing out the food court.").groups
     assert g.start == "food_court"
+
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("mall", "A curious girl runs up to the robot beside the fountain.", "fountain"),
+    ("museum", "A small boy runs up to the robot by the cloakroom counter.", "cloakroom_counter"),
+])
+def test_guard_running_up_to_the_robot_by_a_place_is_meeting_it_there(read, world, prompt, location):
+    g = read(world, prompt).groups[0]
+    assert g.location == location
