@@ -320,7 +320,7 @@ class Clauses:
                 scan.used.update(range(i, place.end))
                 scan.pos = s.advance(scan.own, place.end)
                 return True
-        obj = i + 2 if nxt in ("up", "down", "off") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
+        obj = i + 2 if nxt in ("up", "down", "off", "out") and i + 1 < s.n and s.w[i + 1].dep == "prt" else i + 1
         nxt = s.low[obj] if obj < s.n else ""
         if v in lx.LEADING_VERBS and any(s.lemma(x) in lx.CARRYING_THINGS for x in range(obj, s.phrase_end(obj))):
             return False  # "pushes a wheelchair", "wheels his father's bed": what someone is taken in, no place

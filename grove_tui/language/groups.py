@@ -364,7 +364,7 @@ class Groups:
                              verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
                                        and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS],
                              moves_at=[i for i in range(*span) if not s.after_determiner(i)
-                                       and lx.INTENT_VERBS.get(verb_lemma(s.low[i])) in ("walk", "evacuate")
+                                       and lx.INTENT_VERBS.get(verb_lemma(s.low[i])) in ("walk", "evacuate", "wander")
                                        and (s.w[i].pos == "VERB" or not s.index.knows(s.lemma(i)))])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)

@@ -286,7 +286,7 @@ for _intent, _verbs in {
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter "
                 "bicker squabble quarrel wrangle",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy clean tour",
+              "mop sweep vacuum hoover scrub tidy clean tour rummage",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
@@ -313,6 +313,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("in", "discussion"): "converse", ("make", "a", "beeline"): "walk", ("make", "a", "dash"): "walk",
     ("make", "a", "run"): "walk", ("make", "a", "break"): "walk", ("pace", "up", "and", "down"): "wander",
     ("get", "out"): "walk", ("get", "off"): "walk", ("get", "on"): "walk", ("get", "onto"): "walk",
+    ("set", "off", "from"): "walk", ("set", "out", "from"): "walk",  # "set off from the beach": they leave it
     **{(verb, *how): "wander" for verb in ("walk", "move", "go", "stroll", "random") for how in (  # no aim
         ("randomly",), ("aimlessly",), ("at", "random"), ("walk",), ("around", "randomly"), ("about", "randomly"))},
 }

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.caused_motion import ROUTE_WORDS, taking_verb
+from grove_tui.language.led_far import led_far_before
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -61,7 +62,8 @@ def carried_in(s: Sentence, at: int, lemmas: tuple[str, ...] | list[str]) -> boo
     """Whether the phrase of a preposition at `at` names what someone moved along rides on ("pushes
     an elderly codger on a gurney"): a thing of riding, after a verb of taking someone along."""
     return bool(lemmas) and lemmas[-1] in RIDDEN_THINGS and \
-        (any(verb_lemma(s.low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 6), at)) or taken_in(s, at))
+        (any(verb_lemma(s.low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 6), at)) or taken_in(s, at)
+         or led_far_before(s, at))
 
 
 def taken_in(s: Sentence, at: int) -> bool:

@@ -10,11 +10,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.described_owners import owned_by_described_name
+from grove_tui.language.elided_owners import elided_owned
 from grove_tui.language.place_owner import owner_at
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import Sentence
 
-__all__ = ["owned_by_name", "owner_at"]
+__all__ = ["elided_owned", "owned_by_name", "owner_at"]
 
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
@@ -47,13 +49,13 @@ def owned_by_name(s: Sentence, at: int, k: int, lemmas: Sequence[str]) -> Decide
         return None
     owner = _owner_words(s, at, s.low[k])
     if owner is None:
-        return None
+        return owned_by_described_name(s, at, k, lemmas)
     head = lemmas[-1]
     n = len(owner[0])
     rooms = [e for e in s.index.entries if e.kind == "zone" and head in e.tokens and any(
         phrase[x:x + n] in owner for phrase in e.phrases for x in range(len(phrase) - n + 1))]
     if len(rooms) != 1:
-        return None
+        return owned_by_described_name(s, at, k, lemmas)
     e = rooms[0]
     return (PlaceMatch(e.name, e.kind, e.zone, 1.0, True), 0.85,
             f"'{' '.join(lemmas)}' of {' '.join(owner[0])}: {e.name}", ())

@@ -6,6 +6,7 @@ place nor refuses it as one the world lacks; a real place after a verb of going 
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.feeling_topics import felt_about
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -24,6 +25,8 @@ INTO_STATES = frozenset(
 
 def is_idiom_phrase(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from word k, after the preposition at `at`, is a topic or a state, not a place."""
+    if felt_about(s, at):
+        return True  # "Furious about the sentence": what the feeling is about
     if at < s.n and s.low[at] in ("about", "over"):
         for x in range(at - 1, max(-1, at - 4), -1):  # "argue loudly about": the verb a word or two back
             if s.is_punct(x):

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
@@ -314,6 +315,8 @@ class PlaceMeaning:
         if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN \
                 and head in _ANY_PLACE | lx.BUILDING_WORDS:
             best = zone  # "the place where you leave your luggage": the room, though its lockers are as near
+        if head in _ANY_PLACE | lx.BUILDING_WORDS and (room := room_saying_it(index, best, activity)) is not None:
+            best = room  # "to where their fingerprints get scanned": the room its description says it of
         fixture = next((r for r in ranked[1:] if r.entry.zone == best.entry.name and r.entry.kind == "entity"), None)
         if best.entry.kind == "zone" and fixture is not None and head not in _ANY_PLACE | lx.BUILDING_WORDS and \
                 head not in ("room", "hall") and best.similarity - fixture.similarity < MEANING_MARGIN:

@@ -24,7 +24,7 @@ from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
-from grove_tui.language.named_owners import owned_by_name, owner_at
+from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
@@ -32,6 +32,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
+from grove_tui.language.to_things import to_a_thing_before
 
 
 @dataclass
@@ -84,8 +85,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def phrase(self, k: int, prep: str, at: int, record_unknown: bool = True, mentioned: bool = True) -> Place | None:
         """The noun phrase from word k, after the place preposition (or verb) at `at`; `mentioned`
         False for a place said to be where nobody goes ("instead of the lobby")."""
-        s = self.s
-        low = s.low
+        s, low = self.s, self.s.low
+        prep = "to" if prep in ("at", "by", "in", "on", "near", "beside") and to_a_thing_before(s, at) else prep  # "to his cab by the exit"
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
@@ -95,7 +96,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
-        if elided and self.owner and (owned := self._owned(("room",), None, self.owner)) is not None:
+        if elided and (owned := elided_owned(self, k, at)) is not None:
             # "the guards drink tea in their room while the director works in hers": her own room
             self.context_zones.append(owned[0].zone)
             if mentioned:
@@ -321,8 +322,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
 
     def _words(self, j: int) -> tuple[list[str], int]:
         """The words of a place phrase from j, and the index after them."""
-        s = self.s
-        low = s.low
+        s, low = self.s, self.s.low
         phrase: list[str] = []
         joined = False  # the word follows a hyphen inside the phrase ("check-in")
         while j < s.n and len(phrase) < 6:

@@ -9,6 +9,7 @@ from grove_tui.language.sentence import Sentence
 
 # Verbs of searching, by their base form: "hunts for", "searching for", "went looking for".
 SEARCH_VERBS = frozenset({"hunt", "search", "look", "scout", "seek"})
+_GERUNDS = frozenset(f"{v}ing" for v in SEARCH_VERBS) | {"seeking"}
 _WITHIN = frozenset({"in", "inside", "on", "at", "under", "behind", "around", "among"})
 
 
@@ -24,4 +25,6 @@ def searched_for(s: Sentence, i: int) -> bool:
     j = i - 1
     while j >= 0 and s.w[j].pos == "ADV":
         j -= 1  # "hunting around for", "looking everywhere for"
-    return s.low[i] == "for" and j >= 0 and (s.w[j].lemma.lower() in SEARCH_VERBS or s.low[j] in SEARCH_VERBS)
+    # "hunting" may be tagged a noun ("from penguin beach hunting for"): its verb's base form still searches
+    return s.low[i] == "for" and j >= 0 and (s.w[j].lemma.lower() in SEARCH_VERBS or s.low[j] in SEARCH_VERBS
+                                             or s.low[j] in _GERUNDS)

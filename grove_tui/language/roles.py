@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.later_stops import goes_on_after
+from grove_tui.language.place_narrowing import guessed_over_named
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
@@ -118,6 +119,10 @@ def _narrows(index: PlaceIndex, name: str, than: str, roles: Roles) -> bool:
     """Whether `name` is a fixture inside the place `than` was read as, or inside one of the places
     its phrase fitted as well: "in the vast hall under the departures board" is the hall with the
     board, whichever hall the words alone chose."""
+    if guessed_over_named(roles.read_from.get(name), roles.read_from.get(than)):
+        return False  # "from the lobby ... pay in a cheque": the lobby, not a machine guessed from "cheque"
+    if guessed_over_named(roles.read_from.get(than), roles.read_from.get(name)):
+        return True  # "in a wheelchair from rinkside": rinkside, not its seating guessed from "chair"
     if narrower(index, name, than):
         return True
     entry = index.entry(name)

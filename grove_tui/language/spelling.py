@@ -152,7 +152,7 @@ def _shortened(words: Sequence[Word], k: int, low: str, index: PlaceIndex) -> st
     recep desk": reception, "rm 3": room), when exactly one of them fits and it completes a name with
     the word next to it, or the shortening is not itself a word and starts a place phrase ("at recep")."""
     found = sorted(v for v in index.name_words if shortens(low, v))
-    if not found:
+    if not found or (k > 0 and words[k - 1].tag == "TO" and words[k].tag == "VB" and known_word(low)):  # "to pay in"
         return None
     before, after = _content_neighbours(words, k)
     completing = [v for v in found if (before, v) in index.name_pairs or (v, after) in index.name_pairs]
