@@ -1126,7 +1126,7 @@ def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float) -> C
     kind = f"robot_{interaction}"
     nodes = [node.node for node in g.tree.walk() if node.node in ROBOT_ACTIVITY_NODES or node.node in ROBOT_REACTIONS]
     plan = ", ".join(dict.fromkeys(nodes)) or "no reaction in the trees"
-    asked = f"{interaction} the robot"
+    asked = f"{interaction} at the robot" if interaction == "look" else f"{interaction} the robot"
     if not nodes:
         return Claim(kind, asked, plan, FAILS, "the trees never react to the robot")
     share = 0.5 if interaction == "block" else 0.9
