@@ -203,10 +203,10 @@ def _walked_to(place: str | None, world: World) -> frozenset[str]:
 
 def _walk(node: Parsed) -> list[Parsed]:
     out = [node]
-    # a robot reaction's branch (IsRobotVisible -> reaction) is how they react, not what they do
+    # a robot reaction's branch (IsRobotVisible or IsRobotClose -> reaction) is how they react, not what they do
     children = list(node.get("children") or ())
     if node.get("node") == "ReactiveFallback" and len(children) == 2 and \
-            any(c.get("node") == "IsRobotVisible" for c in _flat(children[0])):
+            any(c.get("node") in ("IsRobotVisible", "IsRobotClose") for c in _flat(children[0])):
         children = children[1:]
     for child in children:
         out += _walk(child)

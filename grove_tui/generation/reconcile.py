@@ -14,7 +14,7 @@ nothing the sentence does not ask:
 - a stated robot interaction is done for real: a group whose only activity is reacting to the robot
   does it from the start (walks up to it, follows it, steps into its way, keeps away, turns to look),
   not gated on a visibility that may never come; a group with a routine of its own gets HuNavSim's
-  reaction pattern around it (ReactiveFallback[IsRobotVisible -> ForceFailure(<Reaction>Nav)], routine),
+  reaction pattern around it (ReactiveFallback[IsRobotVisible or IsRobotClose -> ForceFailure(<Reaction>Nav)], routine),
   and the robot's route is planned past it (generation/planning.py);
 - a group that should move together gets a JoinGroup step.
 
@@ -657,16 +657,22 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
 _CHECKED_FROM_AFAR = frozenset({"avoid", "look"})
 
 
-def with_reaction(tree: DraftNode, behavior: str, trigger: float | None = None) -> DraftNode:
-    """The tree inside HuNavSim's reaction pattern for `behavior`, unless it already reacts; it fires when
-    the robot is in sight within `trigger` metres, when that is farther than the behaviour's own range."""
+def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = None) -> DraftNode:
+    """The tree inside HuNavSim's reaction pattern for `behavior`, unless it already reacts.
+
+    `checked_from`: the report checks the reaction on everyone the robot comes within that many metres of
+    (keeping away, looking at it). The reaction then fires on the robot being that near whatever their
+    heading (IsRobotClose): HuNavSim's IsRobotVisible misses a robot behind them, which is where it passes
+    people standing in a queue or walking away from it, and the check would count them as not reacting."""
     spec = ROBOT_REACTION_DEFAULTS.get(behavior)
     if spec is None or any(n.node in ROBOT_REACTIONS for n in tree.walk()):
         return tree
     node, distance, duration, once = spec
+    reach = max(distance, REACTION_TRIGGER.get(behavior, distance))
+    cue = DraftNode("IsRobotVisible", {"distance": reach}) if checked_from is None else \
+        DraftNode("IsRobotClose", {"threshold": max(reach, checked_from)})
     reaction = DraftNode("Sequence", {}, (
-        DraftNode("IsRobotVisible", {"distance": max(distance, REACTION_TRIGGER.get(behavior, distance),
-                                                     trigger or 0.0)}),
+        cue,
         DraftNode("ForceFailure", {}, (DraftNode(node, {"beh_duration": duration, "only_once": once}),)),
     ))
     return DraftNode("ReactiveFallback", {}, (reaction, tree))

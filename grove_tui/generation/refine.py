@@ -63,7 +63,7 @@ DOCUMENTS_PER_GROUP = 3
 # Fields reconciliation sets on the tree the group had (no model call).
 KEPT_TREE_FIELDS = ("count", "start", "pace", "together", "wait_seconds", "robot_interaction")
 KEPT, CHANGED_STATUS, ADDED_STATUS = "kept", "changed", "added"
-_REACTION_NODES = frozenset({"IsRobotVisible"})
+_REACTION_NODES = frozenset({"IsRobotVisible", "IsRobotClose"})  # reconcile.with_reaction's cues
 
 
 @dataclass(frozen=True)

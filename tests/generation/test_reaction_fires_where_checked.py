@@ -1,7 +1,8 @@
 """A reaction around a routine fires from as far as the report checks it: "walk to the reading room and avoid
 the robot" is checked on everyone the robot comes within 6 m of, "glance at the robot" on the time it is within
-10 m; HuNavSim's nearer triggers (5 m scared, 8 m surprised) left people the check counted without a reaction
-(a false ✗). Planned from hand-written drafts (no model)."""
+10 m; HuNavSim's nearer triggers (5 m scared, 8 m surprised), seeing only ahead, left people the check counted
+without a reaction (a false ✗; the robot passes people queuing with their backs to it). Planned from hand-written
+drafts (no model), and one run in the real simulation."""
 
 from __future__ import annotations
 
@@ -29,6 +30,8 @@ def test_the_trigger_reaches_as_far_as_the_check(world_name, sentence, place, pe
     run = plan_by_hand(world, "normal", sentence, (DraftGroup("people", people, place, tree),), tmp_path / "b")
     claim = next(c for g in run.report.groups for c in g.claims if c.kind == kind)
     xml = (run.bundle / run.op.agents[0].tree).read_text(encoding="utf-8")
-    triggers = [float(d) for d in re.findall(r'<IsRobotVisible[^>]*distance="([0-9.]+)"', xml)]
+    # whatever their heading: a robot behind them is within the check's reach too
+    assert "<IsRobotVisible" not in xml
+    triggers = [float(d) for d in re.findall(r'<IsRobotClose[^>]*threshold="([0-9.]+)"', xml)]
     assert triggers, xml
     assert min(triggers) >= (claim.distance or 0.0), (triggers, claim.distance)
