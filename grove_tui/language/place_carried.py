@@ -8,6 +8,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.cleared_out import cleared_from
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -23,5 +24,5 @@ def carried_on(s: Sentence, i: int) -> bool:
 def from_is_where_got(s: Sentence, i: int, own: Sequence[int]) -> bool:
     """Whether "from" at i is where a thing is got ("buy tickets from the machines"), a verb of getting
     a few words before it and no "to" after its place."""
-    return any(verb_lemma(s.low[k]) in lx.TRANSACTION_VERBS for k in own if i - 4 <= k < i) and \
-        not carried_on(s, i)
+    return (any(verb_lemma(s.low[k]) in lx.TRANSACTION_VERBS for k in own if i - 4 <= k < i) or
+            cleared_from(s, i, own)) and not carried_on(s, i)
