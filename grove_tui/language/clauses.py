@@ -23,7 +23,7 @@ from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.place_search import searched_for
 from grove_tui.language.people import People
-from grove_tui.language.place_carried import from_is_where_got
+from grove_tui.language.place_carried import bare_place_at, from_is_where_got
 from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -155,7 +155,7 @@ class Clauses:
             sequel = self._sequel(scan, i)
             if sequel is not None:
                 return self._add_place(scan, sequel, i)
-        prep = s.preposition(i)
+        prep = s.preposition(i) or bare_place_at(s, i)  # "sits backstage": a bare adverb of place
         if prep is not None:
             name, width = prep
             if name == "from" and from_is_where_got(s, i, scan.own):  # not "takes towels from A to B"

@@ -8,9 +8,12 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.bare_places import bare_place_at
 from grove_tui.language.cleared_out import cleared_from
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
+
+__all__ = ["bare_place_at", "carried_on", "from_is_where_got"]
 
 _ONWARD = frozenset({"to", "into", "towards", "toward", "onto"})
 

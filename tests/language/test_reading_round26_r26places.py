@@ -1,4 +1,4 @@
-"""Round 26 of the reader's places: a day, a time or a manner after a preposition is no place to refuse
+"""Round 26 of the reader's places: a bare adverb of place ("sits backstage", "stands rinkside"); a day, a time or a manner after a preposition is no place to refuse
 ("on a sunny bank holiday Monday", "on foot"); a trade's word after a place preposition is its shop or
 practice ("towards the dentist"), refused where the world has none; a thing cleared out of a place
 ("sweeps popcorn out of screen 4") says where the worker is, not where they start."""
@@ -39,6 +39,18 @@ def test_a_trade_names_its_practice_which_the_world_may_lack(read, world, prompt
 def test_a_thing_cleared_out_of_a_place_says_where_the_worker_is(read, world, prompt, location):
     g = read(world, prompt).groups[0]
     assert g.location == location and g.start is None
+
+
+@pytest.mark.parametrize("world,prompt,role,place", [
+    ("concert_venue", "The singer sits quietly backstage.", "location", "backstage"),
+    ("concert_venue", "The drummer heads backstage.", "destination", "backstage"),
+    ("ice_rink", "A coach stands rinkside.", "location", "rinkside"),
+    ("ice_rink", "Two parents wait nervously rinkside while their kids skate.", "location", "rinkside"),
+    ("sports_centre", "A mum sits poolside.", "location", "pool_hall"),
+])
+def test_a_bare_adverb_of_place_is_where_they_are_or_go(read, world, prompt, role, place):
+    g = read(world, prompt).groups[0]
+    assert getattr(g, role) == place
 
 
 # ---- guards: readings that must not change ---------------------------------------------------------
