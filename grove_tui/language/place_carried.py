@@ -10,10 +10,11 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.bare_places import bare_place_at
 from grove_tui.language.cleared_out import cleared_from
+from grove_tui.language.purpose_wanted import purpose_said
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
-__all__ = ["bare_place_at", "carried_on", "from_is_where_got"]
+__all__ = ["bare_place_at", "carried_on", "from_is_where_got", "purpose_said"]  # read by language/clauses.py
 
 _ONWARD = frozenset({"to", "into", "towards", "toward", "onto"})
 

@@ -1,4 +1,4 @@
-"""Round 26 of the reader's places: a bare adverb of place ("sits backstage", "stands rinkside"); a day, a time or a manner after a preposition is no place to refuse
+"""Round 26 of the reader's places: what people want where they wait is their purpose ("wanting a refund"); a bare adverb of place ("sits backstage", "stands rinkside"); a day, a time or a manner after a preposition is no place to refuse
 ("on a sunny bank holiday Monday", "on foot"); a trade's word after a place preposition is its shop or
 practice ("towards the dentist"), refused where the world has none; a thing cleared out of a place
 ("sweeps popcorn out of screen 4") says where the worker is, not where they start."""
@@ -53,6 +53,18 @@ def test_a_bare_adverb_of_place_is_where_they_are_or_go(read, world, prompt, rol
     assert getattr(g, role) == place
 
 
+@pytest.mark.parametrize("world,prompt,location,purpose", [
+    ("vet_hospital", "Two owners wait at reception needing worming tablets.", "reception", "worming tablets"),
+    ("station", "Three tourists queue at the ticket office wanting refunds.", "ticket_office", "refunds"),
+    ("mall", "A man waits at the information desk seeking directions.", "information_desk", "directions"),
+    ("supermarket", "Two shoppers queue at the customer service desk wanting a refund.", "customer_service_desk",
+     "refund"),
+])
+def test_what_people_want_where_they_wait_is_their_purpose(read, world, prompt, location, purpose):
+    (g,) = read(world, prompt).groups
+    assert g.location == location and g.purpose and purpose in g.purpose
+
+
 # ---- guards: readings that must not change ---------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt", [
@@ -87,3 +99,12 @@ def test_guard_places_the_world_lacks_are_still_refused(read, world, prompt, unk
 def test_guard_trades_and_leaving_places(read, world, prompt, role, place):
     g = read(world, prompt).groups[0]
     assert getattr(g, role) == place
+
+
+@pytest.mark.parametrize("world,prompt,purpose", [
+    ("hospital", "Two visitors walk to the cafe in order to buy coffee.", "to buy coffee"),
+    ("museum", "Two kids walk to the gift shop to buy postcards.", "postcards"),
+])
+def test_guard_purposes_after_to(read, world, prompt, purpose):
+    (g,) = read(world, prompt).groups
+    assert g.purpose and purpose in g.purpose
