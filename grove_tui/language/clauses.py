@@ -23,7 +23,7 @@ from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.place_search import searched_for
 from grove_tui.language.people import People
-from grove_tui.language.place_carried import from_is_where_got
+from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -149,13 +149,13 @@ class Clauses:
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
                 s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
             return self._purpose(scan, i, i, i + 2)
-        if w == "in" and nxt == "order" and i + 2 < s.n and s.low[i + 2] == "to":
-            return self._purpose(scan, i, i + 2, i + 4)
+        if (said := purpose_said(s, i)) is not None:  # "in order to catch the bus", "wanting flea spray"
+            return self._purpose(scan, i, *said)
         if w in lx.PLACE_SEQUELS and scan.c.places and scan.c.places[-1].end == i:
             sequel = self._sequel(scan, i)
             if sequel is not None:
                 return self._add_place(scan, sequel, i)
-        prep = s.preposition(i)
+        prep = s.preposition(i) or bare_place_at(s, i)  # "sits backstage": a bare adverb of place
         if prep is not None:
             name, width = prep
             if name == "from" and from_is_where_got(s, i, scan.own):  # not "takes towels from A to B"

@@ -19,6 +19,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.times_and_manners import time_or_manner
 from grove_tui.language.tokens import lemma, verb_lemma
 
 # Verbs of turning pages ("leafs through", "flicking through", "thumbs through").
@@ -34,6 +35,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
     if cause_thing(s, k, prep, at):
         return True  # "smell of burning from the toaster"
+    if time_or_manner(s, k, prep):
+        return True  # "on a wet Tuesday", "on foot", "at half past nine"
     if prep in ("on", "in", "during") and _a_call(s, k):
         return True  # "busy on a phone call", "in a video call": what they are doing, not where
     head = k

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language.places import PlaceIndex
+from grove_tui.language.trade_places import TRADE_PLACES
 
 # Facilities people name by their kind: each is a kind of place of its own, never a word for rooms in
 # general ("room", "hall", "area") nor for what a room is for ("music", "stock").
@@ -24,7 +25,7 @@ mortuary morgue maternity_ward maternity labour_ward
 music_room game_room art_room art_studio craft_room sewing_room playroom play_room dance_studio dance_hall
 recording_studio billiard_room snooker_room trophy_room darkroom screening_room
 baby_changing baby_change nappy_change parent_room first_aid lost_property
-""".split())
+""".split()) | TRADE_PLACES
 # A name this near the kind's word in meaning is that kind under another word ("creche": "nursery").
 SYNONYM_NEAR = 0.75
 

@@ -27,6 +27,7 @@ from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLAC
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
 from grove_tui.language.place_compounds import KIND_HEADS, head_only_modifies, names_another_kind
 from grove_tui.language.tokens import name_tokens
+from grove_tui.language.trade_places import TRADE_PLACES
 from grove_tui.world.model import World
 
 SYNONYM_DISCOUNT = 0.6
@@ -310,7 +311,7 @@ class PlaceIndex:
             return False  # "the garden centre" in a supermarket: a kind of place, not the building
         if head == "area" and any(t not in self.building_words and t not in _WHOLE_AREA for t in content[:-1]):
             return False  # "the smoking area", "the coffee area": a part of the building, not all of it
-        return (head in NON_PLACES or head in PERSON_NOUNS or head in self.building_words
+        return (head in NON_PLACES or head in PERSON_NOUNS and head not in TRADE_PLACES or head in self.building_words
                 or all(t.isdigit() for t in content) or (head in GENERIC_PLACE_HEADS and len(content) == 1))
 
     def entry(self, name: str) -> PlaceEntry | None:
