@@ -14,3 +14,24 @@ def test_a_real_plural_is_not_spelt_as_a_place_word(read, world, prompt, who):
     reading = read(world, prompt)
     assert [g.who for g in reading.groups] == [who]
     assert not reading.corrections
+
+
+@pytest.mark.parametrize("world,prompt,who", [
+    ("mall", "At nine Tom Hale walks to the food court.", "Tom Hale"),
+    ("library", "By ten Jo Pike is waiting at the front desk.", "Jo Pike"),
+    ("museum", "At 3 Sarah wanders round the main hall.", "Sarah"),
+    ("office", "Around eleven Mrs Oakes walks to the boardroom.", "Mrs Oakes"),
+    ("zoo", "At 10.30 Gran wanders over to the penguin pool.", "Gran"),
+])
+def test_a_fronted_clock_time_is_no_count_of_the_name_after_it(read, world, prompt, who):
+    (group,) = read(world, prompt).groups
+    assert group.who == who and group.count.value == 1
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("office", "About twelve Japanese tourists walk to the boardroom.", 12),
+    ("stadium", "About fifty Rangers fans walk to the turnstiles.", 50),
+    ("mall", "At nine two guards walk to the food court.", 2),
+])
+def test_a_count_after_a_fronted_word_stays_a_count(read, world, prompt, value):
+    assert [g.count.value for g in read(world, prompt).groups] == [value]
