@@ -35,3 +35,22 @@ def test_a_fronted_clock_time_is_no_count_of_the_name_after_it(read, world, prom
 ])
 def test_a_count_after_a_fronted_word_stays_a_count(read, world, prompt, value):
     assert [g.count.value for g in read(world, prompt).groups] == [value]
+
+
+@pytest.mark.parametrize("world,prompt,who", [
+    ("museum", "Fascinated, a toddler near the main hall wanders over to the robot.", "a toddler"),
+    ("hospital", "Worried, an old man near the pharmacy shuffles over to the robot.", "an old man"),
+    ("mall", "Amazed, a little girl near the fountain toddles over to the robot.", "a little girl"),
+    ("care_home", "Confused, an old lady near the lounge shuffles over to the robot.", "an old lady"),
+    ("zoo", "Enthralled, a boy near the aquariums toddles over to the robot.", "a boy"),
+])
+def test_a_fronted_feeling_is_no_person(read, world, prompt, who):
+    assert [g.who for g in read(world, prompt).groups] == [who]
+
+
+@pytest.mark.parametrize("world,prompt,who", [
+    ("care_home", "Wilfred, a resident, shuffles over to the robot.", ["a resident"]),
+    ("hospital", "Exhausted, two nurses slump in the staff room.", ["two nurses"]),
+])
+def test_fronted_words_keep_their_reading(read, world, prompt, who):
+    assert [g.who for g in read(world, prompt).groups] == who
