@@ -54,3 +54,34 @@ def test_a_fronted_feeling_is_no_person(read, world, prompt, who):
 ])
 def test_fronted_words_keep_their_reading(read, world, prompt, who):
     assert [g.who for g in read(world, prompt).groups] == who
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("courthouse", "A pair of the victim's sisters wait in the entrance hall.", 2),
+    ("hospital", "A trio of the patient's cousins wait in the foyer.", 3),
+    ("mall", "A couple of the bride's friends walk to the food court.", 2),
+    ("museum", "Two of the guide's visitors walk to the main hall.", 2),
+])
+def test_a_counted_part_of_someones_people_is_one_group_of_that_many(read, world, prompt, value):
+    (group,) = read(world, prompt).groups
+    assert group.count.kind in ("exact", "implied") and group.count.value == value
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "The boss's twin daughters wait in the reception."),
+    ("hospital", "The patient's twin sons wait in the foyer."),
+    ("zoo", "The keeper's twin girls wander over to the penguin pool."),
+    ("courthouse", "The usher's twin brothers wait in the entrance hall."),
+])
+def test_someones_twins_are_two(read, world, prompt):
+    (group,) = read(world, prompt).groups
+    assert group.count.value == 2 and group.count.low == 2 and group.count.high == 2
+
+
+@pytest.mark.parametrize("world,prompt,value", [
+    ("hospital", "The patient's two sons wait in the foyer.", 2),
+    ("museum", "A group of students gather in the main hall.", 5),
+    ("courthouse", "The twin brothers wait in the entrance hall.", 2),
+])
+def test_owned_and_counted_people_keep_their_reading(read, world, prompt, value):
+    assert [g.count.value for g in read(world, prompt).groups] == [value]
