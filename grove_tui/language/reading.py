@@ -33,6 +33,7 @@ from grove_tui.language.asides import without_asides
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clock_fronts import with_clock_commas
+from grove_tui.language.watched_people import without_watched
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
@@ -120,7 +121,7 @@ def _read(s: Sentence) -> PromptReading:
     problems = list(finder.problems)
     read: tuple[GroupReading, ...] = ()
     if mentions:
-        read = without_perceivers(s, mentions, groups.read(mentions, found))  # "a guard notices smoke and ..."
+        read = without_watched(s, mentions, without_perceivers(s, mentions, groups.read(mentions, found)))  # "a guard notices smoke and ..."
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
     elif clauses.negated_tokens():

@@ -85,3 +85,22 @@ def test_someones_twins_are_two(read, world, prompt):
 ])
 def test_owned_and_counted_people_keep_their_reading(read, world, prompt, value):
     assert [g.count.value for g in read(world, prompt).groups] == [value]
+
+
+@pytest.mark.parametrize("world,prompt,who", [
+    ("museum", "Two guards stand by the door watching the children run about.", "Two guards"),
+    ("mall", "A dad sits on a bench watching the kids play.", "A dad"),
+    ("zoo", "Two keepers stand at the rail watching the visitors wander about.", "Two keepers"),
+    ("ice_rink", "A coach leans on the boards watching the juniors go round.", "A coach"),
+])
+def test_people_only_watched_are_no_group(read, world, prompt, who):
+    assert [g.who for g in read(world, prompt).groups] == [who]
+
+
+@pytest.mark.parametrize("world,prompt,count", [
+    ("ice_rink", "Two coaches stand at the boards watching the skaters go round the rink.", 2),
+    ("mall", "A guard watches as two shoppers walk to the exit.", 2),
+    ("hospital", "A nurse watches the patients in the day room.", 1),
+])
+def test_watched_people_with_a_way_of_their_own_keep_their_reading(read, world, prompt, count):
+    assert len(read(world, prompt).groups) == count
