@@ -104,3 +104,42 @@ def test_people_only_watched_are_no_group(read, world, prompt, who):
 ])
 def test_watched_people_with_a_way_of_their_own_keep_their_reading(read, world, prompt, count):
     assert len(read(world, prompt).groups) == count
+
+
+@pytest.mark.parametrize("world,prompt,whos", [
+    ("mall", "bf n gf waiting by the fountain", ["boyfriend and girlfriend"]),
+    ("zoo", "mum n dad queueing at the kiosk", ["mum and dad"]),
+    ("hospital", "3 pts waiting @ pharmacy n a doctor in ward a", ["3 patients", "a doctor"]),
+    ("care_home", "pt n her daughter waiting in the lounge", ["patient and her daughter"]),
+])
+def test_people_typed_as_chat_are_people(read, world, prompt, whos):
+    assert [g.who for g in read(world, prompt).groups] == whos
+
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("mall", "4 queuing at the cafe, 2 by the fountain", [4, 2]),
+    ("office", "2 chatting in the kitchen n 1 at reception", [2, 1]),
+    ("garden_centre", "6 browsing the bulbs n 2 at the tills", [6, 2]),
+    ("library", "3 reading in the quiet room, 2 at the front desk", [3, 2]),
+])
+def test_a_bare_count_before_what_its_people_do_is_people(read, world, prompt, counts):
+    assert [g.count.value for g in read(world, prompt).groups] == counts
+
+
+@pytest.mark.parametrize("world,prompt,whos", [
+    ("airport", "a bloke and his girlfriend wait at the departures board", ["a bloke and his girlfriend"]),
+    ("mall", "a lad and his boyfriend wait at the food court", ["a lad and his boyfriend"]),
+    ("hotel", "a man and his missus wait in the lobby", ["a man and his missus"]),
+    ("museum", "A girlfriend and her boyfriend walk to the main hall.", ["A girlfriend and her boyfriend"]),
+])
+def test_a_partner_is_a_person(read, world, prompt, whos):
+    assert [g.who for g in read(world, prompt).groups] == whos
+
+
+@pytest.mark.parametrize("world,prompt,whos", [
+    ("hospital", "5 waiting rooms are full, 2 nurses walk to the pharmacy", ["2 nurses"]),
+    ("airport", "pilot n steward walking to gate a1", ["pilot", "steward"]),
+    ("hospital", "a woman and her fiance wait in the foyer", ["a woman and her fiance"]),
+])
+def test_chat_people_keep_their_reading(read, world, prompt, whos):
+    assert [g.who for g in read(world, prompt).groups] == whos
