@@ -22,6 +22,7 @@ _NAMES = frozenset("fred ted ned manfred wilfred alfred winifred mildred sigfrie
 def _verb_form(word: str) -> bool:
     """Whether a word ending in -ed or -ing is a form of a real verb ("fascinated" of "fascinate",
     "worried" of "worry"), not a name that ends so ("Wilfred", "Sterling")."""
+    stems: tuple[str, ...]
     if word.endswith("ing"):
         stems = (word[:-3], word[:-3] + "e", word[:-4])
     else:

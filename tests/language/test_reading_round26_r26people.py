@@ -1,5 +1,8 @@
 """Round 26 of the reader's people: a plural of a real word no list names ("loaders", "tasters") is
-those people, not a misspelt place word one letter away ("leaders", "masters")."""
+those people, not a misspelt place word one letter away; a fronted clock time or feeling is no
+person and no count; a counted part of someone's people and someone's twins are one group of that
+many; people only watched are no group; people typed as chat ("pt", "gf", "bf n gf", "5 browsing")
+are people; one person placed by name or kind ("Put Mum on the settee") is one person there."""
 
 import pytest
 
@@ -144,3 +147,23 @@ def test_a_partner_is_a_person(read, world, prompt, whos):
 ])
 def test_chat_people_keep_their_reading(read, world, prompt, whos):
     assert [g.who for g in read(world, prompt).groups] == whos
+
+
+@pytest.mark.parametrize("world,prompt,who,location", [
+    ("residential", "Put Mum on the settee and leave the robot in the kitchen", "Mum", "sofa"),
+    ("mall", "Put Grandad on a bench by the fountain", "Grandad", "atrium_benches"),
+    ("care_home", "Put Nan in the lounge and leave the robot by the door", "Nan", "lounge"),
+    ("hospital", "Put a pianist in the foyer", "a pianist", "entrance_lobby"),
+    ("museum", "Put a florist by the main entrance", "a florist", "main_entrance"),
+])
+def test_one_person_placed_by_name_or_kind_is_one_person_there(read, world, prompt, who, location):
+    (group,) = read(world, prompt).groups
+    assert (group.who, group.count.value, group.location) == (who, 1, location)
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "Put a sign by the pharmacy"),
+    ("mall", "Put Starbucks on the map"),
+])
+def test_a_thing_placed_is_no_person(read, world, prompt):
+    assert all(g.count.kind == "vague" for g in read(world, prompt).groups)
