@@ -30,5 +30,7 @@ def _twins(m: re.Match[str]) -> str:
     prev = before[-1].lower().strip(",.;:") if before else ""
     if lemma(m.group(2).lower()) not in lx.PERSON_NOUNS or prev.isdigit() or prev in lx.NUMBER_WORDS:
         return m.group(0)  # "twin beds", "two twin boys"
+    if prev.endswith(("'s", "s'")):
+        return f"two {m.group(2)}"  # "the defendant's twin brothers": his two brothers
     two = "Two" if m.group(1)[0].isupper() else "two"
     return f"{two} {m.group(1).lower() if two == 'Two' else m.group(1)} {m.group(2)}"

@@ -573,7 +573,7 @@ class Mentions:
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
             if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
                     or self.objects.robot_object(at) is not None or self.objects.led_by(at) or self.objects.followed(at)
-                    or self.objects.sent_by(at)) \
+                    or self.objects.sent_by(at) or self.people.placed(head)) \
                     and noun not in lx.PRONOUN_PEOPLE \
                     and noun not in lx.NOBODY_WORDS:  # "everyone except grandma": the exception, named
                 return Mention(at, head, s.span(at, head), label, Count("exclusive" if exclusive else "exact", 1, 1, 1),

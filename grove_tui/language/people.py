@@ -12,6 +12,7 @@ from grove_tui.language.person_modifiers import compound_head_person, head_perso
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.placed_people import placed_person
 from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
 from grove_tui.language.trader_people import trader_subject
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
@@ -98,7 +99,7 @@ class People:
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
-                told_as_he_or_she(s, i):  # "an old dear shrieks when she spots the robot"
+                told_as_he_or_she(s, i) or placed_person(s, i):  # "an old dear shrieks when she spots the robot"
             return True
         if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i) or \
                 (taken_name(s, i) and self.is_person_noun(i - 2)):  # "a carer guides Doris from ..."
@@ -113,6 +114,9 @@ class People:
             return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
                 and not known_word(s.low[i]) and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
+
+    def placed(self, k: int) -> bool:
+        return placed_person(self.s, k)  # "Put Mum on the settee": one person, placed
 
     def plural_word(self, k: int) -> bool:
         """Whether a person word that looks singular names some people ("staff", "police", "the injured")."""

@@ -32,6 +32,10 @@ from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
+from grove_tui.language.clock_fronts import with_clock_commas
+from grove_tui.language.watched_people import without_watched
+from grove_tui.language.owned_partitives import without_partitive_owners
+from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
@@ -83,6 +87,9 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     index = place_index(world)
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
+    text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
+    text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
+    text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
@@ -114,7 +121,7 @@ def _read(s: Sentence) -> PromptReading:
     problems = list(finder.problems)
     read: tuple[GroupReading, ...] = ()
     if mentions:
-        read = without_perceivers(s, mentions, groups.read(mentions, found))  # "a guard notices smoke and ..."
+        read = without_watched(s, mentions, without_perceivers(s, mentions, groups.read(mentions, found)))  # "a guard notices smoke and ..."
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
     elif clauses.negated_tokens():

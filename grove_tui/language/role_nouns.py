@@ -16,4 +16,5 @@ verger churchwarden sexton deacon curate bishop congregant parishioner bridesmai
 linesman tout mourner groundstaff
 owner shoplifter thief burglar intruder trespasser protester demonstrator vandal pickpocket
 mate jury
+girlfriend boyfriend fiance fiancee spouse missus
 """.split())

@@ -121,7 +121,8 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
     if replacement not in as_written:
         replacement += low[len(base):] if low.startswith(base) else "s"  # "machnes" -> "machines"
     completes = (before, found[0]) in index.name_pairs or (found[0], after) in index.name_pairs
-    if (len(low) < 5 or known_word(low)) and not completes:
+    if (len(low) < 5 or known_word(low) or (base != low and known_word(base))) and not completes:
+        # "Two loaders": the plural of a real word ("loader") a list lacks is no misspelt name word
         return None  # "ticket hal" is the ticket hall; "hal" alone is nothing
     return replacement
 

@@ -16,6 +16,7 @@ import unicodedata
 from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_lists import chat_lists
+from grove_tui.language.chat_people import chat_people
 from grove_tui.language.chat_spelling import spell_out
 from grove_tui.language.kin_counts import kin_counts
 from grove_tui.language.placing_lists import placing_lists
@@ -94,7 +95,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = robot_chat(spell_out(kept))  # "walkin frm", "robo shd wait": chat's dropped g, short words
-    kept = placing_lists(placing_verbs(kin_counts(chat_lists(kept))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
+    kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(kept)))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
