@@ -488,8 +488,8 @@ HAZARD_NOUNS = frozenset("fire smoke blaze flames bomb scare leak flood flooding
 # Phrasal verbs of getting everybody out: an evacuation in any building ("get out", "empty out").
 # "get out" alone is also leaving a lift or a car, so it needs urgency ("now", "must", a hazard).
 EVACUATION_PHRASES: tuple[tuple[str, ...], ...] = (("clear", "out"), ("empty", "out"), ("order", "out"),
-                                                   ("bail", "out"))  # "pile out", a crowd leaving, needs urgency
-URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"), ("pile", "out"),
+                                                   ("pile", "out"), ("bail", "out"))
+URGENT_EXIT_PHRASES: tuple[tuple[str, ...], ...] = (("get", "out"), ("head", "out"), ("rush", "out"),
                                                     ("run", "out"), ("hurry", "out"), ("pour", "out"))
 # Verbs by which others make people leave, in the passive ("everyone in there is sent out", "the guests
 # are asked to leave", "the pupils are ushered out"): the people evacuate.
