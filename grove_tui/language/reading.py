@@ -46,6 +46,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
 from grove_tui.language.pairs import joined_pairs
+from grove_tui.language.placed_with import as_placing_clause
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
@@ -87,6 +88,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_heading(text)  # "a coachload descends on the café": "heads to the café"
+    text = as_placing_clause(text)  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
