@@ -121,3 +121,24 @@ def test_the_robot_showing_people_round_a_place_takes_them_through_it(read, worl
 def test_the_robot_waiting_or_showing_things_still_waits(read, world, prompt, place):
     robot = read(world, prompt).robot
     assert robot is not None and (robot.task, robot.location) == ("wait", place)
+
+
+# ---- 6. one person's verb in a later clause of a list, taken for a plural noun --------------------------
+
+@pytest.mark.parametrize("world,prompt,groups", [
+    ("mall", "A cleaner mops the food court, a courier wheels parcels from the supermarket to the toy store, and "
+             "a busker plays in the main atrium.", 3),
+    ("station", "A porter sweeps the concourse, a guard walks from the cafe to platform 2, and a busker sings in "
+                "the ticket hall.", 3),
+    ("station", "A guard walks from platform 2 to the cafe and a busker sings in the ticket hall.", 2),
+    ("mall", "A guard walks to the toy store and a busker sings in the main atrium.", 2),
+    ("library", "A student reads in the reading room and a courier wheels boxes from the sorting room to the "
+                "lending hall.", 2),
+])
+def test_a_later_clauses_person_and_verb_are_read(read, world, prompt, groups):
+    assert len(read(world, prompt).groups) == groups
+
+
+def test_a_list_of_places_after_and_adds_nobody(read):
+    (g,) = read("mall", "Two girls walk past the bookshop and the coffee shops in the main atrium.").groups
+    assert g.count.value == 2
