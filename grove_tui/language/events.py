@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.piling_out import moves_on
 from grove_tui.language.sentence import Sentence
 
 # Collectives that name an event too, after a word of time ("After the night shift, ...", "at the end of
@@ -71,7 +72,7 @@ def evacuating(s: Sentence, verb: int, pair: tuple[str, str], urgent: bool) -> b
     """Whether a phrasal verb of getting out at `verb` is an evacuation: "empty out" unless an event
     ends as a matter of course with nothing urgent, "get out" only when urgent."""
     if pair in lx.EVACUATION_PHRASES:
-        return urgent or not routine_emptying(s, verb)
+        return urgent or not (routine_emptying(s, verb) or moves_on(s, verb, pair))  # "piles out onto platform 1"
     return urgent
 
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.another_count import more_people, the_other_count
 from grove_tui.language.apposed_counts import class_named, collective_is_a_verb
+from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
@@ -184,11 +185,7 @@ class Mentions:
         between = range(before.last + 1, m.first - 1)
         if any(s.w[x].pos in ("VERB", "AUX") or s.low[x] in (",", ";", ":") for x in between):
             return False
-        after = m.last + 1
-        if tuple(s.low[after:after + 2]) in (("in", "all"), ("in", "total"), ("all", "told")):
-            after += 2  # "ward A's patients, six in all, make their way out"
-        elif s.low[after] == "altogether":
-            after += 1
+        after = after_apposed_count(s, m.last + 1)  # "six in all, ...", "eleven lads in matching T-shirts, ..."
         if after >= s.n:
             return False
         return s.low[after] == "," or s.w[after].pos in ("VERB", "AUX") or self.people.third_person_verb(after)

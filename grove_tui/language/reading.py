@@ -37,6 +37,7 @@ from grove_tui.language.watched_people import without_watched
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
+from grove_tui.language.converging import as_heading
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.event_causes import without_causers
@@ -49,6 +50,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
 from grove_tui.language.pairs import joined_pairs
+from grove_tui.language.placed_with import as_placing_clause
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
@@ -92,6 +94,8 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
+    text = as_heading(text)  # "a coachload descends on the café": "heads to the café"
+    text = as_placing_clause(text)  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:

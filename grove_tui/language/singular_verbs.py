@@ -12,6 +12,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from grove_tui.language.and_verbs import as_second_verbs
+from grove_tui.language.later_verbs import as_later_verbs
 from grove_tui.language.parser import Word
 from grove_tui.language.plural_verbs import as_plural_verbs
 from grove_tui.language.subject_phrases import (
@@ -89,7 +90,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
             out[root] = replace(out[root], dep="nsubj", head=k)
     # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject;
     # "is frightened of the robot and cowers whenever ...": one person's second verb
-    return as_second_verbs(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out))))
+    return as_later_verbs(as_second_verbs(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out)))))
 
 
 def subject_of_a_later_verb(s: Sentence, k: int) -> bool:
