@@ -1346,7 +1346,11 @@ def _make_probe(claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members
     if claim.status == FAILS and claim.kind != "count":
         return None  # the plan already contradicts it: ✗ stays, with its reason
     robot = checker.planned.robot
-    crossing = robot is not None and robot.task == "cross" or claim.asked.startswith("cross|")
+    # "drives through the queue to the cafeteria": what it goes through is the people (robot_passes), in and
+    # out of their room by whichever door; a room it goes through for no one is crossed
+    passed = {c.zone for c in robot.claims if c.kind == "robot_passes"} if robot is not None else set()
+    crossing = robot is not None and robot.task == "cross" and claim.zone not in passed \
+        or claim.asked.startswith("cross|")
     if claim.kind == "robot_via" and claim.point is None and claim.zone is not None and crossing:
         return _RobotCrossProbe(claim, checker, cols, members)
     return kind(claim, checker, cols, members)

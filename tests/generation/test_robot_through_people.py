@@ -61,6 +61,9 @@ def test_a_robot_sent_through_a_queue_goes_through_it(tmp_path):
     assert passes.status == HOLDS, passes.evidence
     reach = next(c for c in checked.robot.claims if c.kind == "robot_reach")
     assert reach.status == HOLDS, reach.evidence
+    # the room is passed through to the people, in and out by whichever door: no crossing of it is asked
+    via = next(c for c in checked.robot.claims if c.kind == "robot_via")
+    assert via.status == HOLDS, via.evidence
     # the grounding suite's hand outcome (eval/grounding/suite.yaml's `passes`) agrees on the same run
     case = GroundingCase("through-queue", "hospital", "queuing", run.report.prompt, 0, 0.0,
                          (ExpectedGroup("patients", (("queue", "pharmacy_counter"),), 10),),
