@@ -218,14 +218,13 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
             else:
                 tree, added = honest_tree(d.tree, group, world, notes, label, evacuation_field, robot_zones)
             spawn = _spawn(group, d, world, default_spawn, tree, robot_zones)
-        if _base_intent(group) == "converse" and tree.node == "Wait" and spawn and \
-                not (group.location or group.start or group.destination):
+        unplaced = not (group.location or group.start or group.destination)
+        if _base_intent(group) == "converse" and tree.node == "Wait" and spawn and unplaced:
             # "while two nurses chat": no place named, so they talk where they are (a wait is no talk)
             tree = DraftNode("Converse", {"target": spawn,
                                           "duration": float(group.wait_seconds or CONVERSATION_SECONDS)})
             added.append(f"talks where it starts ({spawn}): the sentence names no place")
-        elif _base_intent(group) == "wander" and tree.node == "Wait" and spawn and \
-                not (group.location or group.start or group.destination):
+        elif _base_intent(group) == "wander" and tree.node == "Wait" and spawn and unplaced:
             # "watching the skaters go round": no place named, so they wander where they are (the report
             # checks a wander there; a wait is no wandering)
             tree = DraftNode("Wander", {"zone": spawn, "duration": float(group.wait_seconds or 0.0)})
