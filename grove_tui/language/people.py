@@ -9,6 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.compound_people import chain_end
 from grove_tui.language.parser import known_word
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
+from grove_tui.language.adverb_subjects import past_adverbs
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
@@ -483,6 +484,7 @@ class People:
     def verb_after(self, k: int) -> bool:
         """Whether the word after k is a verb (so the word at k is the subject of a clause)."""
         s = self.s
+        k = past_adverbs(s, k)  # "Mum quickly walks": the verb past the adverb
         if k + 1 >= s.n:
             return False
         nxt = s.low[k + 1]
