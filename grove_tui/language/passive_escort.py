@@ -12,7 +12,6 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word
-from grove_tui.language.passive_routes import late_by
 
 # Words for the taker that name no person: "taken to the hall by bus", "carried by the crowd" is kept.
 _NOT_TAKERS = frozenset("bus coach car taxi train lift elevator escalator stairs hand ambulance van shuttle "
@@ -49,7 +48,7 @@ def to_active(text: str, words: Sequence[Word]) -> str | None:
     for verb in sorted((w for w in words if w.tag == "VBN" and w.lemma in lx.LEADING_VERBS), key=lambda w: -w.i):
         kids = [w for w in words if w.head == verb.i and w.i != verb.i]
         subject = next((w for w in kids if w.dep == "nsubjpass"), None)
-        agent = next((w for w in kids if w.dep == "agent" and w.lower == "by"), None) or late_by(words, verb)
+        agent = next((w for w in kids if w.dep == "agent" and w.lower == "by"), None)
         if subject is None or agent is None or agent.i == len(words) - 1:
             continue
         taker = next((w for w in words if w.head == agent.i and w.dep == "pobj"), None)
