@@ -9,6 +9,7 @@ person when a verb of a person takes it along a route."""
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.route_particles import route_start
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -35,6 +36,7 @@ def route_after(s: Sentence, head: int) -> bool:
             j += 1
         if j < s.n and s.lemma(j) in lx.CARRYING_THINGS:
             k = j + 1  # "in his wheelchair", "on a trolley"
+    k = route_start(s, k)  # "Dorothy, on her frame, down to the lounge"
     if k + 1 >= s.n or s.low[k] not in ROUTE_WORDS:
         return False
     return s.w[k + 1].tag not in ("VB", "VBG")  # not "from leaving", "to wait"

@@ -9,6 +9,10 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.compound_people import chain_end
 from grove_tui.language.parser import known_word
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
+from grove_tui.language.adverb_subjects import past_adverbs
+from grove_tui.language.held_things import a_load_of_things
+from grove_tui.language.vehicle_words import coach_as_vehicle
+from grove_tui.language.side_words import side_word
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
@@ -73,8 +77,8 @@ class People:
         if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
             return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
-        if acting_as_verb(s, i):
-            return False  # "..., then guides 5 passengers": a verb, no guide
+        if acting_as_verb(s, i) or a_load_of_things(s, i) or coach_as_vehicle(s, i):
+            return False  # "..., then guides 5 passengers": a verb, no guide; "a sack of pellets", "the Glasgow coach": things
         if role_thing(s, i):
             return True  # "the keynote speaker walks", "a session chair heads to ...": a role
         if goes_along_a_route(s, i) or by_a_person_adjective(s, i):
@@ -331,7 +335,7 @@ class People:
                     k += 1
                 return k
             if s.w[k].pos == "ADV" and k + 1 < s.n and (
-                    s.w[k + 1].pos == "ADJ" or s.w[k + 1].dep == "amod"):
+                    s.w[k + 1].pos == "ADJ" or s.w[k + 1].dep == "amod" or side_word(s, k)):  # "away fans"
                 k += 1  # "a partially sighted woman", "a very frail man": the adverb says how, no one
                 continue
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
@@ -483,6 +487,7 @@ class People:
     def verb_after(self, k: int) -> bool:
         """Whether the word after k is a verb (so the word at k is the subject of a clause)."""
         s = self.s
+        k = past_adverbs(s, k)  # "Mum quickly walks": the verb past the adverb
         if k + 1 >= s.n:
             return False
         nxt = s.low[k + 1]

@@ -2,7 +2,9 @@
 and leave the robot in the kitchen", "Put Grandad on a bench by the fountain", "Place Tom Hale at the
 front desk", "Put a florist by the entrance". The object of the sentence's opening "Put" or "Place"
 with a place after it is one person when a capitalised name or a kin word says them, or a noun
-whose ending only people's names have ("-ist", "-ian", "-keeper").
+whose ending only people's names have ("-ist", "-ian", "-keeper"); since round 27 also after "Stick"
+or "Plant" and after "and", and a doer's word that is no thing ("a fiddler"), a role said short ("a
+lab tech") or in capitals ("a PCSO").
 """
 
 from __future__ import annotations
@@ -14,7 +16,17 @@ from grove_tui.language import lexicon as lx
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
 
-_PLACING = frozenset({"put", "place", "position", "sit", "seat"})
+_PLACING = frozenset({"put", "place", "position", "sit", "seat", "stick", "plant", "station", "post", "pop"})
+# Words ending as a doer's name that are things ("Put a heater in the lounge", "Stick a poster by the door").
+_DOER_THINGS = frozenset("poster heater speaker banner marker sticker container computer printer trailer router "
+                         "monitor sensor motor cooler fryer toaster timer counter corner cover flower tower folder "
+                         "binder ladder hamper locker charger scanner projector radiator elevator escalator generator "
+                         "detector extinguisher planter feeder buzzer hanger cooker blender mixer burner boiler "
+                         "freezer drawer shower slipper sweater jumper trainer poker cracker burger paper water "
+                         "letter number order border filter meter barrier register calendar sticker cylinder "
+                         "heater holder dumpster container server answer mirror door floor cushion pillow".split())
+# Roles said short that no list keeps ("a lab tech", "a sound tech").
+_SHORT = frozenset({"tech", "techie", "temp", "rep", "medic", "sarge", "copper", "cop"})
 _WHERE = frozenset("on at in by near beside behind inside outside next".split())
 
 
@@ -24,7 +36,8 @@ def placed_person(s: Sentence, i: int) -> bool:
     if w.dep != "dobj" or w.head == i or not s.low[i].isalpha() or len(s.low[i]) < 3:
         return False
     verb = w.head
-    if s.low[verb] not in _PLACING or not (verb == 0 or s.is_punct(verb - 1)) or s.w[verb].tag != "VB":
+    if s.low[verb] not in _PLACING or not (verb == 0 or s.is_punct(verb - 1) or s.low[verb - 1] in ("and", "then")) \
+            or s.w[verb].tag != "VB":
         return False
     if i + 1 >= s.n or s.low[i + 1] not in _WHERE:
         return False
@@ -39,4 +52,22 @@ def placed_person(s: Sentence, i: int) -> bool:
         return True  # "Put Mum on the settee"
     if first == verb + 1 and w.tag == "NNP" and s.w[i].text[:1].isupper() and s.w[i].text[1:].islower():
         return True  # "Put Grandad ...", "Place Tom Hale ..."
-    return s.low[first - 1] in ("a", "an", "one") and s.low[i].endswith(lx.STRONG_AGENT_SUFFIXES)
+    if s.low[first - 1] in ("a", "an", "one") and s.low[i].endswith(lx.STRONG_AGENT_SUFFIXES):
+        return True
+    return _placed_role(s, verb, i)
+
+
+def _placed_role(s: Sentence, verb: int, i: int) -> bool:
+    """A role no list keeps, placed (round 27): "Put a fiddler on the concourse seats", "Stick one
+    lab tech at the centrifuge", "Stick a PCSO behind the front counter": a word ending as a doer's
+    name ("-er", "-or", "-ant") that is no thing, a role said short, or one in capitals, opened by
+    "a", "an" or "one" with at most one noun before it."""
+    first = i
+    while first > verb + 1 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod"):
+        first -= 1  # "a lab tech", "a street fiddler"
+    if s.low[first - 1] not in ("a", "an", "one") or i - first > 1 or s.low[i] in _DOER_THINGS or \
+            s.lemma(i) in lx.NON_PEOPLE or s.lemma(i) in lx.CARRYING_THINGS:
+        return False
+    text = s.w[i].text
+    return (s.low[i].endswith(("er", "or", "ant")) and len(s.low[i]) >= 6) or s.low[i] in _SHORT or \
+        (text.isalpha() and text.isupper() and 2 <= len(text) <= 5)

@@ -33,6 +33,7 @@ from grove_tui.language.asides import without_asides
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clock_fronts import with_clock_commas
+from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
@@ -91,6 +92,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
+    text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
