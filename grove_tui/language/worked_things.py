@@ -29,9 +29,43 @@ _AFTER = frozenset({"the", "a", "an", "all", "some", "every", "each", "both", "t
                     "their", "its", "our", "my"})
 
 
+# What people are "on" while they work ("two teenagers on work experience stack growbags", "nurses on
+# duty wipe ..."), and the words that may come before it ("the night shift", "their lunch break").
+_STATUS = frozenset("duty shift experience placement patrol break call standby secondment rota watch nights lates "
+                    "earlies days".split())
+_STATUS_BEFORE = frozenset("the a their his her our work night day early late evening morning afternoon lunch tea "
+                           "coffee weekend overnight graveyard split double long short".split())
+_AFTER_VERB = frozenset({"DET", "NOUN", "ADJ", "NUM", "PRON"})
+
+
+def status_verbs(words: list[Word]) -> list[Word]:
+    """The parse with the verb after what people are on taken for a verb, not the last word of that
+    noun phrase: "two teenagers on work experience stack growbags" (the parser's "experience stack
+    growbags")."""
+    out = list(words)
+    for o, on in enumerate(words[:-3]):
+        if on.lower != "on" or o == 0 or words[o - 1].pos not in ("NOUN", "PROPN"):
+            continue
+        t = o + 1
+        while t < len(words) and words[t].lower in _STATUS_BEFORE and words[t].lemma not in _STATUS:
+            t += 1
+        v = t + 1
+        if v + 1 >= len(words) or words[t].lemma not in _STATUS and words[t].lower not in _STATUS:
+            continue
+        verb, nxt = words[v], words[v + 1]
+        if verb.pos not in ("NOUN", "ADJ", "PROPN") or not verb.lower.isalpha() or verb.lower in _STATUS or \
+                not (nxt.pos in _AFTER_VERB or nxt.lower in ("down", "up", "out", "off")):
+            continue
+        tag = "VBZ" if verb.lower.endswith("s") and not verb.lower.endswith("ss") else "VBP"
+        out[v] = replace(verb, pos="VERB", tag=tag, dep="ROOT", head=v)
+        out[t] = replace(words[t], dep="pobj", head=o)
+    return out
+
+
 def work_particles(words: list[Word]) -> list[Word]:
     """The parse with the particle of a verb of work ("hoses down the scrap cars") marked as its
-    particle, not a preposition of a way through."""
+    particle, not a preposition of a way through; and the verb after what people are on a verb."""
+    words = status_verbs(words)
     out = list(words)
     for k in range(1, len(words) - 1):
         w, verb, nxt = words[k], words[k - 1], words[k + 1]
