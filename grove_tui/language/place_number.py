@@ -16,13 +16,17 @@ def said_in_number(index: PlaceIndex, phrase: Sequence[str], match: PlaceMatch) 
     names are not; `match` otherwise."""
     if match.kind != "zone":
         return match
-    words = [w.lower() for w in phrase if w.lower() not in lx.DETERMINERS]
-    text = " ".join(words)
+    text = _bare(" ".join(w for w in phrase if w.lower() not in lx.DETERMINERS))
     zone = index.entry(match.name)
-    if not text or zone is None or text in {x.lower() for x in zone.said}:
-        return match
+    if not text or zone is None or text in {_bare(x) for x in zone.said}:
+        return match  # "x ray" is the room's "X-ray", however it is spelt
     fixtures = [e for e in index.entries if e.kind == "entity" and e.zone == match.name
-                and text in {x.lower() for x in e.said}]
+                and text in {_bare(x) for x in e.said}]
     if len(fixtures) != 1:
         return match
     return PlaceMatch(fixtures[0].name, "entity", fixtures[0].zone, match.score, True)
+
+
+def _bare(text: str) -> str:
+    """A name as letters and digits only: "X-ray", "x ray" and "xray" alike."""
+    return "".join(ch for ch in text.lower() if ch.isalnum())

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+from grove_tui.language import lexicon as lx
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -25,6 +26,8 @@ _WORK_PARTICLES: dict[str, frozenset[str]] = {
     **{v: frozenset({"down", "off", "up", "out"}) for v in _CLEANING},
     **{v: frozenset({"up", "out"}) for v in "lay set stack tidy straighten clear".split()},
 }
+# Verbs whose object is what people are among, not a thing they handle ("browse the shelves").
+_BEING_AMONG = lx.LOCATION_OBJECT_VERBS - lx.THING_OR_PLACE_VERBS
 _AFTER = frozenset({"the", "a", "an", "all", "some", "every", "each", "both", "those", "these", "his", "her",
                     "their", "its", "our", "my"})
 
@@ -104,6 +107,8 @@ def room_worked_in(index: PlaceIndex, current: Place | None, room: Place) -> str
     the thing was read as a fixture of it; None otherwise."""
     if current is None or current.match is None or room.match is None or current.prep != "obj:at":
         return None
+    if verb_lemma(current.written) in _BEING_AMONG:
+        return None  # "browse the perfume shelves in the duty free": among the shelves, not only in the room
     if room.match.kind != "zone" or room.written not in ("in", "inside") or room.index <= current.index:
         return None
     entry = index.entry(current.match.name)
