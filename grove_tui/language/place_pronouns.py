@@ -11,8 +11,9 @@ from grove_tui.language.tokens import lemma, phrase_lemmas
 if TYPE_CHECKING:
     from grove_tui.language.place_phrases import PlacePhrases
 
-# Prepositions after which "it" is a place people are in or leave ("sheltering in it", "out of it").
-IT_PREPOSITIONS = frozenset({"in", "inside", "within", "from", "at", "on"})
+# Prepositions after which "it" is a place people are in ("sheltering in it"); not "at it", "after it",
+# said of the robot as often as of a place ("stare at it as it passes").
+IT_PREPOSITIONS = frozenset({"in", "inside", "within"})
 
 
 def referred_back(places: PlacePhrases, k: int, at: int) -> tuple[tuple[PlaceMatch, float, str, tuple[str, ...]], int] | None:
