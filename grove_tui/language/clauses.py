@@ -343,10 +343,10 @@ class Clauses:
                         else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
                 # What people watch is mostly a thing ("the news"), and so is what they clean where a
                 # place follows ("cleans the windows in the hallway"): a place only when the world has it.
-                end = s.phrase_end(i + 1)
+                end = s.phrase_end(obj)
                 thing = role == "obj:seen" or ((v in lx.THING_OR_PLACE_VERBS or left_thing(s, i)) and end < s.n
                                                and s.preposition(end) is not None)  # "left a bag by the door"
-                place = self.places.phrase(i + 1, role, i, record_unknown=not thing)
+                place = self.places.phrase(obj, role, i, record_unknown=not thing)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                     c.places.append(place)
         return False

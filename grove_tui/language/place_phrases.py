@@ -20,6 +20,8 @@ from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
 from grove_tui.language.place_kinds import absent_kind, kind_continues
 from grove_tui.language.place_ordinals import ordinal_place
+from grove_tui.language.place_number import said_in_number
+from grove_tui.language.place_pronouns import IT_PREPOSITIONS, referred_back
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
@@ -92,7 +94,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
         if is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
-        if k < s.n and low[k] in ("where", "wherever", "upstairs", "downstairs"):  # "to where you get your bags back"
+        if k < s.n and (low[k] in ("where", "wherever", "upstairs", "downstairs") or low[k] == "it" and prep in IT_PREPOSITIONS):
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
@@ -165,8 +167,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None  # "porters roll a patient in her bed": what carries the person moved, not a place
         if at >= 1 and k < s.n and low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas)) \
                 and (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
-            # "a woman in a wheelchair", "a mother with a pram", "a man on crutches": what the person
-            # has or wears, not where they are ("a man on a bench" is still the bench)
+            # "a woman in a wheelchair", "a man on crutches": what one has or wears ("on a bench" is a bench)
             return None
         if prep == "by" and lemmas and lemmas[-1] in lx.HELD_BY and (match is None or not match.exact):
             return None  # "leads a pupil by the arm", "by the scruff of his collar": where one is held, no place
@@ -187,14 +188,12 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 (informal is not None or not self.modifiers_agree(
                     self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS),
                     match.name, phrase)):
-            # "the ice-cream stand" is not the phone stand, though both are stands; an informal name is
-            # its place's whole name or near it in meaning ("the hole in the wall" is no ticket machine)
+            # "the ice-cream stand" is no phone stand; an informal name is its place's whole name or near it
             match = None
         meant = None
         described = None if numbered or (match is not None and match.exact) else self._described(phrase, lemmas, j)
         if described is not None:
-            # "the room where kids do crafts", "the counter where you leave your bags": the place by what
-            # happens there, the relative clause part of the phrase
+            # "the room where kids do crafts": the place by what happens there, the relative clause part of it
             meant, j = described
             match = meant[0]
         if match is None and not numbered and not s.index.is_nameless(lemmas):
@@ -225,14 +224,16 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
+        match = said_in_number(s.index, phrase, match)  # "at the till": the till counter, not the tills
         if (out := zone_around(s, at, j, match)) is not None:  # "outside the pharmacy", "lined up for the Viper"
             match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
                                   out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
 
     def where_place(self, k: int, prep: str, at: int, mentioned: bool) -> Place | None:
-        """"to where you get your bags back", "wait where the trains come in": the place of the clause."""
-        found = self.where_clause(k) if self.s.low[k] in ("where", "wherever") else stairs(self.s.index, k)
+        """"to where you get your bags back", "wait where the trains come in", "in it": the place so said."""
+        found = self.where_clause(k) if self.s.low[k] in ("where", "wherever") else referred_back(self, k, at) \
+            if self.s.low[k] == "it" else stairs(self.s.index, k)  # "to where you go", "in it", "upstairs"
         if found is None:
             return None
         (match, score, reason, alternatives), end = found
@@ -431,8 +432,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             # that only happens to be a place word too ("departures board", the tag "queue"); but
             # "the pharmacy waiting chairs" and "the boardroom meeting" are names and nouns
             return True
-        # "in the cafeteria evacuate", "across the hospital evacuate": the verb after the place or the
-        # building ("gift shop" is a noun)
+        # "in the cafeteria evacuate": the verb after the place or the building ("gift shop" is a noun)
         return verb_lemma(w) in lx.INTENT_VERBS and not s.index.knows(lemma(w)) and (
             s.w[j].tag.startswith("VB") or s.index.match([lemma(x) for x in phrase]) is not None
             or s.index.is_nameless([lemma(x) for x in phrase]))

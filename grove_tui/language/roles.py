@@ -15,6 +15,7 @@ from grove_tui.language.place_narrowing import guessed_over_named
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
+from grove_tui.language.worked_things import room_worked_in
 
 
 @dataclass
@@ -74,6 +75,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
                                         or (marked and not said_to)):
             # "drops her bags off at the lockers and heads to the café": the café
             roles.destination, said_to = name, said_to or marked
+        elif role == "location" and roles.location is not None and \
+                room_worked_in(index, roles.read_from.get(roles.location), p) is not None:
+            roles.location = name  # "folds tunics in the kit room": the room they work in
         elif role == "location" and (roles.location is None or _narrows(index, name, roles.location, roles)):
             roles.location = name
         elif role in ("location", "destination", "start") and getattr(roles, role) is not None and \

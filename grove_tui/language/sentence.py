@@ -22,6 +22,7 @@ from grove_tui.language.places import PlaceIndex
 from grove_tui.language.purpose_things import things_end
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.worked_things import is_work_particle
 
 # A word that picks one place of a series: a number, a letter and a number ("c4", "a1"), or a single
 # letter after the first word of a name ("ward b").
@@ -149,6 +150,8 @@ class Sentence:
         if two in (("next", "to"), ("close", "to"), ("up", "to"), ("over", "to"), ("down", "to"), ("on", "to"),
                    ("in", "to")):
             return ("at" if two[0] in ("next", "close") else "to"), 2
+        if is_work_particle(self.w, i):
+            return None  # "hoses down the scrap cars": what is worked on, no way down
         if w == "down" and i + 1 < self.n and low[i + 1] in lx.DETERMINERS:
             return "down", 1
         if w == "round" and i + 1 < self.n and (low[i + 1] in lx.DETERMINERS or self.index.knows(lemma(low[i + 1]))):
