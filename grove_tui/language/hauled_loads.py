@@ -2,8 +2,8 @@
 check-in hall to gate A2", "two roadies drag the flight cases out of the van into the hall", "a porter
 tows the luggage cart across to the taxi rank". A verb of pushing, pulling or hauling whose object is
 a thing (no person: someone moved by another is read elsewhere) followed, before the clause ends, by a
-"from", "to", "into", "out of" or "across to" of where, is the person walking that way with it; "pulls
-the lever", "pushes the button" with nowhere said stay what the lexicon says.
+"to", "into" or "towards" of where, is the person walking that way with it; "pulls the lever", "pull
+weeds out of the beds" with nowhere to go said stay what they were.
 """
 
 from __future__ import annotations
@@ -14,11 +14,10 @@ from grove_tui.language.tokens import verb_lemma
 
 # Verbs of moving a load by hand.
 LOAD_VERBS = frozenset("push pull drag tow trundle wheel cart heave tug haul lug hump schlep shove trolley".split())
-# Words that open where the load goes or comes from.
-_ROUTE = frozenset({"from", "to", "into", "towards", "toward", "onto", "out", "across", "through", "over", "down",
-                    "up", "along"})
+# Words that open where the load goes.
+_TO = frozenset({"to", "into", "towards", "toward", "onto"})
 _OBJECT_PRONOUNS = frozenset({"him", "them", "us", "me", "you", "everyone", "everybody"})
-_REACH = 9  # words from the verb to its route
+_REACH = 12  # words from the verb to where the load goes
 
 
 def _stem(s: Sentence, i: int) -> str:
@@ -43,13 +42,11 @@ def hauls_a_load(s: Sentence, i: int) -> bool:
     seen_thing = False
     for x in range(i + 1, min(i + 1 + _REACH, s.n)):
         w = s.low[x]
-        if s.is_punct(x) or w in ("and", "but", "while", "as", "then") or s.low[x] in lx.ROBOT_WORDS:
+        if s.is_punct(x) and w not in ("-", "'", "’") or w in ("and", "but", "while", "as", "then") or s.low[x] in lx.ROBOT_WORDS:
             return False
         if s.lemma(x) in lx.PERSON_NOUNS or w in lx.PERSON_NOUNS:
             return False  # "pulls her son to the exit": a person led, read elsewhere
-        if w in _ROUTE and seen_thing and x + 1 < s.n and not s.verb_follows(x + 1):
-            nxt = s.low[x + 1]
-            if w in ("from", "to", "into", "towards", "toward", "onto") or nxt in ("of", "to", "into", "the", "from"):
-                return True
+        if w in _TO and seen_thing and x + 1 < s.n and not s.verb_follows(x + 1):
+            return True  # where the load goes: "pull weeds out of the beds" says none, a clearing out
         seen_thing = seen_thing or s.w[x].pos in ("NOUN", "PROPN")
     return False
