@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from grove_tui.language.counts import duration_at
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.stay_places import stay_place_after
 
 
 def stay_first(s: Sentence, k: int) -> tuple[float, int] | None:
@@ -16,7 +17,7 @@ def stay_first(s: Sentence, k: int) -> tuple[float, int] | None:
     if s.low[k] != "after" or (k > 0 and not s.is_punct(k - 1)):
         return None
     dur = duration_at(s, k + 1)
-    if dur is None or dur[1] >= s.n or not s.low[dur[1]].endswith("ing"):
+    if dur is None or dur[1] >= s.n or not (s.low[dur[1]].endswith("ing") or stay_place_after(s, dur[1])):
         return None
     return dur
 

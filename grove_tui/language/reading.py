@@ -30,6 +30,7 @@ from dataclasses import replace
 
 from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
+from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.clock_fronts import with_clock_commas
@@ -62,6 +63,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
 from grove_tui.language.robot import RobotClause, RobotClauses
+from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
 from grove_tui.language.room_numbers import without_number_words
@@ -93,11 +95,13 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
+    text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_heading(text)  # "a coachload descends on the café": "heads to the café"
-    text = as_placing_clause(text)  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
+    text = as_placing_clause(text)
+    text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
@@ -119,7 +123,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_causers(s, without_second_names(s, without_asides(s, finder.find()))))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_awaited_things(s, without_causers(s, without_second_names(s, without_asides(s, finder.find())))))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

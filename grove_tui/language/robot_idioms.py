@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.robot_holds import HOLDING_IDIOMS
 from grove_tui.language.tokens import lemma
 
 if TYPE_CHECKING:
@@ -37,6 +38,7 @@ IDIOMS: dict[tuple[str, ...], str] = {
     ("keep", "*", "distance"): "avoid", ("give", "*", "a", "wide", "berth"): "avoid",
     ("give", "*", "a", "berth"): "avoid", ("crowd", "round"): "approach", ("flock", "round"): "approach",
 }
+IDIOMS.update(HOLDING_IDIOMS)  # "stands his ground", "keeps a hand on the robot" (robot_holds.py)
 # Verbs of a start or a stop that, timed by the robot, are stopping to look ("an old man freezes as ...").
 _STARTLED_VERBS = frozenset("freeze gasp jump start startle gape gawp".split())
 # Verbs of shrinking or hiding that, timed by the robot, are avoiding it whatever they take.

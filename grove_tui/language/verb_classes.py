@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import ACTIVITY_PHRASES
+from grove_tui.language.hauled_loads import hauls_a_load
 from grove_tui.language.going_verbs import THING_TAKING_VERBS, carries_a_thing_to, more_verb_intent
 from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
 from grove_tui.language.sentence import Sentence
@@ -89,6 +90,8 @@ def verb_intent(s: Sentence, i: int) -> str | None:
         return "walk"
     if b in PUSHING_VERBS and any(s.lemma(k) in lx.CARRYING_THINGS for k in range(i + 1, min(i + 5, s.n))):
         return "walk"  # "pushes a pram to the café", "a porter pulls a trolley"
+    if hauls_a_load(s, i):
+        return "walk"  # "pull their wheelie cases from the check-in hall to gate A2"
     return more_verb_intent(s, i)  # "mooch around", "takes her lunch to the lounge"
 
 
