@@ -68,6 +68,7 @@ from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.bt.format.xml import check_document, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
+from grove_tui.generation.block_at_place import point_goal_ids
 from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.exports.scene import Scene, agent_radius, behavior_block, goal_radius, scene_of, skin
 from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, load_scenario, read_bundle_text
@@ -757,6 +758,7 @@ def _hunav_tree(agent: AgentSpec, document: TreeDocument, scenario: Scenario, bu
     ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
                         muster=scene.muster, world=world if lower else None, conversations=conversations)
     tree = lower_tree(document, ctx, where, world) if lower else _renumber_goal_ids(document, goals)
+    point_goal_ids(tree, goals.id_of)  # IsAtPosition(target_x, target_y): HuNavSim knows it by goal id
     tree = _rename_main_tree(tree, "DefaultTree")
     problems = check_document(tree, HUNAV_NODES if lower else NODES, source=where)
     if problems:

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
+from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_at
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
@@ -633,6 +634,10 @@ def _sequence(steps: list[DraftNode]) -> DraftNode:
 def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftNode, bool]:
     """(tree, reacts_only): the group's robot interaction done for real (module doc)."""
     interaction = group.robot_interaction or ""
+    if reacts_only(group) and interaction == "block" and group.location:
+        # "two guards stand in the doorway and block the robot": they hold the place and block it there
+        return blocking_at(group.location, float(group.wait_seconds or DEFAULT_WAIT_SECONDS),
+                           ROBOT_ACTIVITIES["block"][1]["front_dist"], group.together), True
     if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
         node, ports = ROBOT_ACTIVITIES[interaction]
         ports = dict(ports)
@@ -955,7 +960,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
     for v in () if reacts_only(r) else r.via:
         claims.append(_place_claim("reach", v, f"walk through {v}", world, n, timing.eta(v)))
     if r.robot_interaction:
-        claims.append(_reaction_claim(r, g, robot_seconds))
+        claims.append(_reaction_claim(r, g, robot_seconds, world))
         if reacts_only(r):
             base = "none"
             if r.robot_interaction == "follow" and r.destination:
@@ -1126,7 +1131,7 @@ def replace_seconds(claim: Claim, seconds: float | None) -> Claim:
                  share=claim.share)
 
 
-def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float) -> Claim:
+def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float, world: World | None = None) -> Claim:
     interaction = r.robot_interaction or ""
     kind = f"robot_{interaction}"
     nodes = [node.node for node in g.tree.walk() if node.node in ROBOT_ACTIVITY_NODES or node.node in ROBOT_REACTIONS]
@@ -1135,8 +1140,9 @@ def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float) -> C
     if not nodes:
         return Claim(kind, asked, plan, FAILS, "the trees never react to the robot")
     share = 0.5 if interaction == "block" else 0.9
-    return Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
-                 needs_seconds=robot_seconds + 10.0)
+    claim = Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
+                  needs_seconds=robot_seconds + 10.0)
+    return at_the_blocked_place(claim, r, g, world) if interaction == "block" and world is not None else claim
 
 
 ROBOT_ACTIVITY_NODES = frozenset(node for node, _ in ROBOT_ACTIVITIES.values())
