@@ -958,6 +958,8 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         "- Evacuees walk through their exit to their own point outside (HuNavSim never removes agents).",
         "- Surprised, Scared, Curious and Threatening agents carry their robot reaction in the tree "
         "(IsRobotVisible then the *Nav node), as HuNavSim 2.0 reacts only through trees.",
+        "- People who react to the robot keep reacting once their task is over: the hold sits inside the "
+        "reaction (ReactiveFallback[robot cue, run_once_then_hold]), as in GROVE's simulation.",
     ]
     if not lowered:
         lines += ["- Kept GROVE nodes are named `Grove<Node>` (see `grove_nodes_model.xml`); HuNavSim loads these "
