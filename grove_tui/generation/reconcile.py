@@ -652,7 +652,7 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "walk to the reading room and avoid the robot": the report checks everyone the robot comes within
         # REACTION_DISTANCE of, so the reaction must fire from there, not only from HuNavSim's nearer trigger
         checked_from = REACTION_DISTANCE.get(interaction) if interaction in _CHECKED_FROM_AFAR else None
-        return with_reaction(tree, group.robot_reaction, checked_from), False
+        return with_reaction(tree, group.robot_reaction, checked_from, keep_away=interaction == "avoid"), False
     return tree, False
 
 
@@ -661,7 +661,8 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
 _CHECKED_FROM_AFAR = frozenset({"avoid", "look"})
 
 
-def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = None) -> DraftNode:
+def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = None,
+                  keep_away: bool = False) -> DraftNode:
     """The tree inside HuNavSim's reaction pattern for `behavior`, unless it already reacts.
 
     `checked_from`: the report checks the reaction on everyone the robot comes within that many metres of
@@ -675,10 +676,14 @@ def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = N
     reach = max(distance, REACTION_TRIGGER.get(behavior, distance))
     cue = DraftNode("IsRobotVisible", {"distance": reach}) if checked_from is None else \
         DraftNode("IsRobotClose", {"threshold": max(reach, checked_from)})
-    reaction = DraftNode("Sequence", {}, (
-        cue,
-        DraftNode("ForceFailure", {}, (DraftNode(node, {"beh_duration": duration, "only_once": once}),)),
-    ))
+    response = DraftNode(node, {"beh_duration": duration, "only_once": once})
+    if keep_away and checked_from is not None:
+        # "avoid the robot": out of the distance the report checks and the cue fires at; ScaredNav flees
+        # only inside HuNavSim's 3 m and otherwise stands facing it
+        response = DraftNode("AvoidRobot", {"safe_distance": max(reach, checked_from),
+                                            "runaway_vel": ROBOT_ACTIVITIES["avoid"][1]["runaway_vel"],
+                                            "duration": duration})
+    reaction = DraftNode("Sequence", {}, (cue, DraftNode("ForceFailure", {}, (response,))))
     return DraftNode("ReactiveFallback", {}, (reaction, tree))
 
 

@@ -33,7 +33,9 @@ def students(tmp_path_factory):
 
 
 def test_people_who_arrived_before_the_robot_still_react_to_it(students):
-    students.run(60.0)
+    report = students.run(60.0)
+    claim = next(c for g in report.groups for c in g.claims if c.kind == "robot_avoid")
+    assert claim.status == "holds", claim.evidence
     events = [json.loads(line) for line in (students.bundle / "events.jsonl").read_text().splitlines()]
     arrived = {e["agent_id"]: e["t"] for e in events if e["kind"] == "goal_reached"}
     reacted_after = {e["agent_id"] for e in events if e["kind"] == "robot_reaction"
@@ -87,7 +89,7 @@ def test_the_exported_tree_reacts_after_its_routine_in_btcpp(students, tmp_path)
     factory.robot_near = True
     for _ in range(3):
         tree.tick_once()
-    assert factory.ticks["ScaredNav"] >= 1, factory.ticks
+    assert factory.ticks["AvoidRobot"] >= 1, factory.ticks
 
 
 def test_a_tree_that_deals_with_the_robot_gets_no_second_reaction_in_either():
@@ -103,3 +105,13 @@ def test_a_tree_that_deals_with_the_robot_gets_no_second_reaction_in_either():
                               looping=frozenset({"RegularNav"}))
     assert "ScaredNav" not in {e.id for e in grove.nodes()}
     assert "ScaredNav" not in {e.id for e in exported.nodes()}
+
+
+def test_avoiding_keeps_as_far_away_as_the_check_counts(students):
+    """ScaredNav flees only inside HuNavSim's 3 m and otherwise stands facing the robot; the cue fires and
+    the check counts from 6 m, so people the robot came within 4 m of stood there and failed the check."""
+    claim = next(c for g in students.report.groups for c in g.claims if c.kind == "robot_avoid")
+    xml = (students.bundle / students.op.agents[0].tree).read_text(encoding="utf-8")
+    document = read_tree(xml, "t")
+    avoid = next(e for e in document.nodes() if e.id == "AvoidRobot")
+    assert float(avoid.get("safe_distance")) >= (claim.distance or 0.0)
