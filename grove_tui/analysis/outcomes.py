@@ -923,6 +923,9 @@ class _RobotBlockProbe(_RobotProbe):
         ahead = dx * hx[:, None] + dy * hy[:, None]
         side = np.abs(-dx * hy[:, None] + dy * hx[:, None])
         in_path = np.isfinite(ahead) & (ahead > 0.0) & (ahead <= BLOCK_AHEAD) & (side <= BLOCK_SIDE)
+        if self.claim.zone is not None or self.claim.point is not None:
+            # "block the robot in the doorway": only a block at that place counts
+            in_path &= self.at_place(pos)
         speed = np.hypot(f.robot_vel[:, 0], f.robot_vel[:, 1]) if f.robot_vel is not None else np.zeros(f.t.size)
         self.blocked += in_path.sum(axis=0)
         self.speed_sum += (in_path * speed[:, None]).sum(axis=0)
@@ -936,10 +939,12 @@ class _RobotBlockProbe(_RobotProbe):
         slowed = speed <= BLOCK_SLOWED * checker.robot_max_vel
         ok = (seconds >= BLOCK_SECONDS) & slowed
         k = int(ok.sum())
+        placed = self.claim.zone is not None or self.claim.point is not None
+        at = f" at {self.where()}" if placed else ""
         if not (self.blocked > 0).any():
-            return FAILS, f"0/{n} stood in the robot's path"
+            return FAILS, f"0/{n} stood in the robot's path{at}"
         j = int(np.argmax(seconds))
-        text = (f"{k}/{n} stood in its path and slowed it ({float(seconds[j]):.0f} s in its path; its speed "
+        text = (f"{k}/{n} stood in its path{at} and slowed it ({float(seconds[j]):.0f} s in its path; its speed "
                 f"there {float(speed[j]):.2f} m/s against {checker.robot_max_vel:.2f})")
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 

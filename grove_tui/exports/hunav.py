@@ -68,6 +68,7 @@ from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.bt.format.xml import check_document, read_tree, write_tree
 from grove_tui.errors import BTError, ExportError
 from grove_tui.exports.gazebo_world import world_sdf
+from grove_tui.generation.block_at_place import point_goal_ids
 from grove_tui.exports.nav2_map import write_nav2_map
 from grove_tui.exports.scene import Scene, agent_radius, behavior_block, goal_radius, scene_of, skin
 from grove_tui.scenario.bundle import load_bundle_world, load_field, load_grid, load_scenario, read_bundle_text
@@ -757,6 +758,7 @@ def _hunav_tree(agent: AgentSpec, document: TreeDocument, scenario: Scenario, bu
     ctx = _AgentContext(agent, scenario, bundle, goals, ranks, grid, planner, scenario.seed,
                         muster=scene.muster, world=world if lower else None, conversations=conversations)
     tree = lower_tree(document, ctx, where, world) if lower else _renumber_goal_ids(document, goals)
+    point_goal_ids(tree, goals.id_of)  # IsAtPosition(target_x, target_y): HuNavSim knows it by goal id
     tree = _rename_main_tree(tree, "DefaultTree")
     problems = check_document(tree, HUNAV_NODES if lower else NODES, source=where)
     if problems:
@@ -956,6 +958,8 @@ def export_readme(scenario: Scenario, base: str, world_name: str, simulator: str
         "- Evacuees walk through their exit to their own point outside (HuNavSim never removes agents).",
         "- Surprised, Scared, Curious and Threatening agents carry their robot reaction in the tree "
         "(IsRobotVisible then the *Nav node), as HuNavSim 2.0 reacts only through trees.",
+        "- People who react to the robot keep reacting once their task is over: the hold sits inside the "
+        "reaction (ReactiveFallback[robot cue, run_once_then_hold]), as in GROVE's simulation.",
     ]
     if not lowered:
         lines += ["- Kept GROVE nodes are named `Grove<Node>` (see `grove_nodes_model.xml`); HuNavSim loads these "

@@ -23,6 +23,7 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
+from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
 from grove_tui.generation.crossing import crossing_goal, crossing_start
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
@@ -111,7 +112,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
         reactor_notes: list[str] = []
         unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
-        rooms = list(dict.fromkeys(g.reactor_zone for g in unseen if g.reactor_zone))
+        rooms = list(dict.fromkeys([g.reactor_zone for g in unseen if g.reactor_zone] + rooms_to_pass(
+            world, post.groups, list(robot_spec.path) or [robot_spec.start, robot_spec.goal])))
         if rooms and robot_spec.task in ("cross", "patrol"):
             # People the sentence puts in a room to react to the robot ("people in the waiting area look
             # at it") react only if it comes by: a route fixed elsewhere passes through their room too.
@@ -128,6 +130,9 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         for g in unseen:
             notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
     guided_for = _behind_the_guide_while_it_drives(post, robot_spec)
+    # "two guards block the robot in the doorway": each holds a post where the robot passes the place
+    blocker_posts = posts_for_blockers(world, grid, post.groups, post.agents, (
+        list(robot_spec.path) or [robot_spec.start, robot_spec.goal]) if robot_spec is not None else None, notes)
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
     if preset.velocity == "field":
@@ -164,6 +169,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         document = a.document.copy()  # planning edits its own copy: a re-plan starts from the same trees
         if a.group_index in guided_for:
             _set_guided_seconds(document, guided_for[a.group_index])
+        set_post(document, blocker_posts.get(a.id))
         if preset.velocity == "waypoints" and preset.planner.enabled:
             around = keeping_out.get(a.group_index)
             try:

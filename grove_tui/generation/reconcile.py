@@ -30,6 +30,7 @@ from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
+from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_at
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
@@ -633,6 +634,10 @@ def _sequence(steps: list[DraftNode]) -> DraftNode:
 def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftNode, bool]:
     """(tree, reacts_only): the group's robot interaction done for real (module doc)."""
     interaction = group.robot_interaction or ""
+    if reacts_only(group) and interaction == "block" and group.location:
+        # "two guards stand in the doorway and block the robot": they hold the place and block it there
+        return blocking_at(group.location, float(group.wait_seconds or DEFAULT_WAIT_SECONDS),
+                           ROBOT_ACTIVITIES["block"][1]["front_dist"], group.together), True
     if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
         node, ports = ROBOT_ACTIVITIES[interaction]
         ports = dict(ports)
@@ -647,7 +652,7 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "walk to the reading room and avoid the robot": the report checks everyone the robot comes within
         # REACTION_DISTANCE of, so the reaction must fire from there, not only from HuNavSim's nearer trigger
         checked_from = REACTION_DISTANCE.get(interaction) if interaction in _CHECKED_FROM_AFAR else None
-        return with_reaction(tree, group.robot_reaction, checked_from), False
+        return with_reaction(tree, group.robot_reaction, checked_from, keep_away=interaction == "avoid"), False
     return tree, False
 
 
@@ -656,7 +661,8 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
 _CHECKED_FROM_AFAR = frozenset({"avoid", "look"})
 
 
-def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = None) -> DraftNode:
+def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = None,
+                  keep_away: bool = False) -> DraftNode:
     """The tree inside HuNavSim's reaction pattern for `behavior`, unless it already reacts.
 
     `checked_from`: the report checks the reaction on everyone the robot comes within that many metres of
@@ -670,10 +676,14 @@ def with_reaction(tree: DraftNode, behavior: str, checked_from: float | None = N
     reach = max(distance, REACTION_TRIGGER.get(behavior, distance))
     cue = DraftNode("IsRobotVisible", {"distance": reach}) if checked_from is None else \
         DraftNode("IsRobotClose", {"threshold": max(reach, checked_from)})
-    reaction = DraftNode("Sequence", {}, (
-        cue,
-        DraftNode("ForceFailure", {}, (DraftNode(node, {"beh_duration": duration, "only_once": once}),)),
-    ))
+    response = DraftNode(node, {"beh_duration": duration, "only_once": once})
+    if keep_away and checked_from is not None:
+        # "avoid the robot": out of the distance the report checks and the cue fires at; ScaredNav flees
+        # only inside HuNavSim's 3 m and otherwise stands facing it
+        response = DraftNode("AvoidRobot", {"safe_distance": max(reach, checked_from),
+                                            "runaway_vel": ROBOT_ACTIVITIES["avoid"][1]["runaway_vel"],
+                                            "duration": duration})
+    reaction = DraftNode("Sequence", {}, (cue, DraftNode("ForceFailure", {}, (response,))))
     return DraftNode("ReactiveFallback", {}, (reaction, tree))
 
 
@@ -955,7 +965,7 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
     for v in () if reacts_only(r) else r.via:
         claims.append(_place_claim("reach", v, f"walk through {v}", world, n, timing.eta(v)))
     if r.robot_interaction:
-        claims.append(_reaction_claim(r, g, robot_seconds))
+        claims.append(_reaction_claim(r, g, robot_seconds, world))
         if reacts_only(r):
             base = "none"
             if r.robot_interaction == "follow" and r.destination:
@@ -1126,7 +1136,7 @@ def replace_seconds(claim: Claim, seconds: float | None) -> Claim:
                  share=claim.share)
 
 
-def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float) -> Claim:
+def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float, world: World | None = None) -> Claim:
     interaction = r.robot_interaction or ""
     kind = f"robot_{interaction}"
     nodes = [node.node for node in g.tree.walk() if node.node in ROBOT_ACTIVITY_NODES or node.node in ROBOT_REACTIONS]
@@ -1135,8 +1145,9 @@ def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float) -> C
     if not nodes:
         return Claim(kind, asked, plan, FAILS, "the trees never react to the robot")
     share = 0.5 if interaction == "block" else 0.9
-    return Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
-                 needs_seconds=robot_seconds + 10.0)
+    claim = Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
+                  needs_seconds=robot_seconds + 10.0)
+    return at_the_blocked_place(claim, r, g, world) if interaction == "block" and world is not None else claim
 
 
 ROBOT_ACTIVITY_NODES = frozenset(node for node, _ in ROBOT_ACTIVITIES.values())

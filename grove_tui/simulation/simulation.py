@@ -5,7 +5,10 @@ agent's tree is ticked once (BT.CPP tickExactlyOnce) with blackboard {id, dt}. T
 intents on the crowd; the numba step moves everyone.
 
 Tree lifetime: a GROVE tree runs once. When its root returns SUCCESS or FAILURE the agent's
-behavior is done and it stays where it is. HuNavSim-style trees (those using RegularNav, whose root
+behavior is done and it stays where it is. A tree that reacts to the robot around its routine
+(ReactiveFallback[robot cue branch, routine], as generation and with_robot_reaction write it) keeps
+reacting after the routine: the routine runs once and then holds inside the reaction, as the HuNavSim
+export does (bt/format/after_task.py); the agent counts as done when its routine is. HuNavSim-style trees (those using RegularNav, whose root
 completes every tick by design) are ticked for the whole run, as HuNavSim does.
 
 Robot reactions: an agent whose scenario `behavior` is Surprised, Scared, Curious or Threatening and
@@ -35,6 +38,7 @@ from grove_tui.crowd.context import AgentContext, SimContext
 from grove_tui.crowd.leaves.registry import tree_factory
 from grove_tui.crowd.leaves.hunav import ROBOT_ACTIVITIES, ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS, VISIBLE_HALF_ANGLE
 from grove_tui.bt.runtime.blackboard import Blackboard
+from grove_tui.simulation.after_task import AFTER_TASK_HOLD_SECONDS, holding_node, with_hold_after_task
 from grove_tui.bt.format.document import TreeDocument, node, subtree_call
 from grove_tui.bt.runtime.factory import BehaviorTree
 from grove_tui.bt.runtime.tree_node import FAILURE, SUCCESS, SimClock
@@ -135,6 +139,9 @@ class Simulation:
         self._q_t = np.zeros(n)
         self._q_guard = np.full(n, -1.0)
         self.tree_result = ["" for _ in trees]
+        # rows whose routine holds inside a reaction to the robot: ticked on after their routine is done
+        self._after_task = [holding_node(tree) if tree is not None else None for tree in trees]
+        self._reacting = np.zeros(n, dtype=bool)
         self.tree_errors: dict[int, str] = {}  # agent id -> why its tree stopped (e.g. an unset blackboard entry)
         self._building: BaseGeometry | None = None  # the zones' union, prepared on first use (see _count_people_outside)
         self._exits: list[tuple[str, tuple[float, float]]] = []
@@ -219,9 +226,11 @@ class Simulation:
         loops: list[bool] = []
         for row, (agent, document) in enumerate(zip(agents, documents)):
             document = with_robot_reaction(document, agent.behavior)
+            hunav_style = any(e.id in HUNAV_LOOPING_NODES for e in document.nodes())
+            if not hunav_style:
+                document = with_hold_after_task(document, AFTER_TASK_HOLD_SECONDS)
             blackboard = Blackboard(values={"id": agent.id, "dt": bt_dt})
             trees.append(factory.create(document, blackboard, AgentContext(context, row), clock))
-            hunav_style = any(e.id in HUNAV_LOOPING_NODES for e in document.nodes())
             loops.append(hunav_style)
             if hunav_style and agent.goals:
                 # HuNavSim trees walk the agent's own goal list (agents YAML `goals` and `cyclic_goals`)
@@ -322,7 +331,7 @@ class Simulation:
         ctx.refresh()
         trees, finished, loops = self.trees, self.finished, self.loops
         quiet_rows = self._quiet_rows()
-        alive = np.asarray(self.crowd.active[: len(trees)], dtype=bool) & ~self._finished_mask
+        alive = np.asarray(self.crowd.active[: len(trees)], dtype=bool) & (~self._finished_mask | self._reacting)
         for row in np.flatnonzero(alive & ~quiet_rows).tolist():
             tree = trees[row]
             quiet = tree.quiet
@@ -337,6 +346,12 @@ class Simulation:
                 self._fail_tree(row, str(exc))
                 continue
             self._update_quiet_spec(row)
+            holding = self._after_task[row]
+            if holding is not None and not finished[row] and holding.current > 0:
+                # the routine is over; the agent stands there and keeps reacting to the robot
+                self._finish(row, "done")
+                self._reacting[row] = True
+                continue
             if (status == SUCCESS or status == FAILURE) and not loops[row]:
                 finished[row] = True
                 self._finished_mask[row] = True
@@ -347,8 +362,18 @@ class Simulation:
                     ctx.status[row] = f"{ctx.status[row]} · {self.tree_result[row]}" if ctx.status[row] else self.tree_result[row]
         ctx.queues.commit()
 
+    def _finish(self, row: int, result: str) -> None:
+        ctx = self.context
+        self.finished[row] = True
+        self._finished_mask[row] = True
+        ctx.counters.finished_trees += 1
+        self.tree_result[row] = result
+        if ctx.status[row] != "evacuated":
+            ctx.status[row] = f"{ctx.status[row]} · {result}" if ctx.status[row] else result
+
     def _fail_tree(self, row: int, message: str) -> None:
         ctx = self.context
+        self._reacting[row] = False
         self.finished[row] = True
         self._finished_mask[row] = True
         self._q_on[row] = False
@@ -425,7 +450,9 @@ class Simulation:
     def run_state(self) -> RunState:
         n = len(self.trees)
         active = np.asarray(self.crowd.active[:n], dtype=bool)
-        return RunState(n, int(n - active.sum()), int((self._finished_mask | ~active).sum()))
+        # people who keep reacting to a robot after their task still have something to happen to them
+        waiting = self._reacting if self.crowd.robot_pos is not None else np.zeros(n, dtype=bool)
+        return RunState(n, int(n - active.sum()), int(((self._finished_mask & ~waiting) | ~active).sum()))
 
     def frame(self) -> Frame:
         crowd = self.crowd

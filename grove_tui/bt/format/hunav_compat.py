@@ -28,7 +28,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from grove_tui.bt.format.document import TreeDocument, TreeElement, node
+from grove_tui.bt.format.after_task import (
+    HOLD_NAME, ROBOT_RESPONSES, keep_reacting_after_task, run_once_then_hold,
+)
+from grove_tui.bt.format.document import TreeDocument, node
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.xml import read_tree
 
@@ -111,7 +114,6 @@ CLOCKS: dict[str, str] = {name: node.clock for name, node in HUNAV_NODES.items()
     "Delay": "wall", "Timeout": "wall"}
 
 _ANY_NODE_ATTRIBUTES = frozenset({"name", "ID", "_description", "_uid", "_fullpath"})
-HOLD_NAME = "hold_final_state"
 REACTION_NODES = frozenset({"SurprisedNav", "CuriousNav", "ScaredNav", "ThreateningNav"})
 
 
@@ -164,32 +166,23 @@ def hunav_loading_problems(xml: str | bytes) -> list[str]:
     return problems
 
 
-def hold_forever(wait_seconds: float) -> TreeElement:
-    """A subtree that stands still and never completes.
-
-    HuNavSim ticks every agent's root on every step and BT.CPP 4 resets a root that returned SUCCESS
-    or FAILURE, so a tree that simply ends is started again (bt_node.cpp `tree_tick`, every
-    ComputeAgents call). KeepRunningUntilFailure turns each completed wait into RUNNING and restarts it.
-    """
-    hold = node("KeepRunningUntilFailure", [node("StopAndWaitTimerAction", agent_id="{id}",
-                                                 wait_duration=f"{wait_seconds:g}")])
-    hold.set("name", HOLD_NAME)
-    return hold
-
-
 def wrap_for_hunav(document: TreeDocument, *, reaction: tuple[str, float, float, bool] | None, hold_seconds: float,
                    looping: frozenset[str]) -> TreeDocument:
     """Make a GROVE tree behave in HuNavSim as it does in GROVE (in place; returns the document).
 
     - The main tree's body runs once (ForceSuccess: a failing step ends the routine, as in GROVE, where
       a finished tree leaves the agent where it is) and then holds, standing where it ended; so the
-      final state survives HuNavSim's per-step ticking of the root. Trees that loop HuNavSim-style
+      final state survives HuNavSim's per-step ticking of the root. A tree that already reacts to the
+      robot around its routine gets the hold inside that reaction: the person keeps reacting after the
+      routine, as in GROVE's simulation (bt/format/after_task.py). Trees that loop HuNavSim-style
       (a node of `looping`, e.g. RegularNav, completes every tick by design) and trees already
       wrapped (a re-export of an imported export) are left as they are.
     - `reaction` (node, trigger distance m, duration s, only once) wraps the routine in the pattern
       GROVE's simulation uses (simulation.with_robot_reaction) and HuNavSim 1.0's BTSurprisedNav.xml
       used: ReactiveFallback[Sequence[IsRobotVisible, ForceFailure(<Reaction>Nav)], routine]. HuNavSim
-      2.0 reacts to the robot only through the tree (no built-in reaction), so the tree must carry it.
+      2.0 reacts to the robot only through the tree (no built-in reaction), so the tree must carry it;
+      a tree that already deals with the robot (a reaction or ApproachRobot, AvoidRobot...) is not
+      wrapped again, as GROVE's simulation does not wrap it (simulation.with_robot_reaction).
     """
     used = {element.id for element in document.nodes()}
     wrapped = any(element.get("name") == HOLD_NAME for element in document.nodes())
@@ -198,9 +191,12 @@ def wrap_for_hunav(document: TreeDocument, *, reaction: tuple[str, float, float,
     main = document.trees[document.main_tree_id]
     if len(main.children) != 1:
         return document
-    routine = node("SequenceWithMemory", [node("ForceSuccess", [main.children[0]]), hold_forever(hold_seconds)])
-    routine.set("name", "run_once_then_hold")
-    if reaction is not None and not (used & REACTION_NODES):
+    if keep_reacting_after_task(document, hold_seconds):
+        # the tree reacts to the robot around its routine: the hold goes inside, so the person keeps
+        # reacting once the routine is over, as in GROVE's simulation (bt/format/after_task.py)
+        return document
+    routine = run_once_then_hold(main.children[0], hold_seconds)
+    if reaction is not None and not (used & ROBOT_RESPONSES):
         node_id, distance, duration, once = reaction
         trigger = node("Sequence", [
             node("IsRobotVisible", agent_id="{id}", distance=f"{distance:g}"),
