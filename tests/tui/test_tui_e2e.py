@@ -45,7 +45,10 @@ def test_grove_generates_plays_and_exports_in_a_real_terminal(tmp_path):
 
         terminal.keys("p")
         terminal.wait_for(r"paused", 300, "the simulation screen")
-        terminal.keys("Space")  # real time: still playing when the export starts
+        # 4x: ten simulated seconds in 2.5 wall seconds rather than ten (the speed keys' own checks are
+        # test_app_flow's); ten patients queue for over a minute, so the run still plays when the export starts.
+        terminal.press("]", "]", "Space")
+        terminal.wait_for(r"4x", 10, "the simulation at 4x")
         deadline = time.monotonic() + 300
         while simulated_time(terminal.screen()) < 10.0:
             assert time.monotonic() < deadline, "10 simulated seconds did not pass:\n" + terminal.screen()
