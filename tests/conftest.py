@@ -15,6 +15,9 @@ os.environ.setdefault("HF_HUB_OFFLINE", "1")
 _sandbox = tempfile.mkdtemp(prefix="grove-tests-")
 for _name in ("CACHE", "CONFIG", "DATA"):
     os.environ.setdefault(f"GROVE_{_name}_DIR", os.path.join(_sandbox, _name.lower()))
+# The cache every test that runs `grove` as a user would shares (the node index, the assembled RoI model,
+# the prompts' KV caches): built once per suite, like once per machine (tests/helpers/terminal.py).
+os.environ.setdefault("GROVE_TEST_CACHE_DIR", os.environ["GROVE_CACHE_DIR"])
 for _name in ("GROVE_MODEL", "GROVE_ROI_MODEL", "GROVE_BT_MODEL"):
     os.environ.pop(_name, None)
 os.environ.setdefault("TRANSFORMERS_OFFLINE", "1")

@@ -135,7 +135,7 @@ def assert_quits_quickly(terminal: Terminal, env: dict[str, str], width: int, he
     return seconds
 
 
-def grove_env(tmp_path: Path, config: str) -> dict[str, str]:
+def grove_env(tmp_path: Path, config: str, cache_dir: Path | None = None) -> dict[str, str]:
     config_dir = tmp_path / "config"
     config_dir.mkdir(exist_ok=True)
     (config_dir / "config.yaml").write_text(config, encoding="utf-8")
@@ -146,9 +146,12 @@ def grove_env(tmp_path: Path, config: str) -> dict[str, str]:
         "HF_HUB_OFFLINE": "1",
         "TRANSFORMERS_OFFLINE": "1",
     }
-    # The retrieval index lives in the user's cache, built once per machine, as for any `grove` user.
-    if os.environ.get("GROVE_TEST_CACHE_DIR"):
-        env["GROVE_CACHE_DIR"] = os.environ["GROVE_TEST_CACHE_DIR"]
+    # The retrieval index, the assembled model files and the prompts' KV caches live in the user's cache,
+    # built once per machine, as for any `grove` user: the suite's (GROVE_TEST_CACHE_DIR, tests/conftest.py)
+    # unless the test gives its own (`cache_dir`, for a first start). Always named here: unnamed, grove
+    # took whatever the tmux server was started with (the first test's own empty cache, or another run's),
+    # and every start built the index and assembled the RoI model again.
+    env["GROVE_CACHE_DIR"] = str(cache_dir or os.environ.get("GROVE_TEST_CACHE_DIR") or tmp_path / "cache")
     # A worktree's code, when the tests run with PYTHONPATH pointing at it (the command is installed editable).
     if os.environ.get("PYTHONPATH"):
         env["PYTHONPATH"] = os.environ["PYTHONPATH"]

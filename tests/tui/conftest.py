@@ -13,13 +13,28 @@ def anyio_backend() -> str:
 
 
 
+@pytest.fixture(scope="session")
+def door_graphs(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """One folder of door graphs (navigation/door_graph.py) for every app test of the session."""
+    return tmp_path_factory.mktemp("door_graphs")
+
+
 @pytest.fixture(autouse=True)
-def isolated_user_dirs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    """Config, data and cache go to the test's tmp dir, never the developer's real ones."""
+def isolated_user_dirs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, door_graphs: Path) -> Path:
+    """Config, data and cache go to the test's tmp dir, never the developer's real ones.
+
+    The data dir's door graphs are the session's: a door graph is a cache keyed by a hash of the world
+    and grid (a stale one is never read), built by the first test that plans in a world (2-4 s for the
+    hospital) and read back by the next ones, as on a user's machine after the first run. No app test
+    checks the door graph itself (tests/navigation does, on their own folders).
+    """
+    from grove_tui.navigation.door_graph import CACHE_FOLDER
+
     for name in ("CONFIG", "DATA", "CACHE"):
         folder = tmp_path / name.lower()
         folder.mkdir()
         monkeypatch.setenv(f"GROVE_{name}_DIR", str(folder))
+    (tmp_path / "data" / CACHE_FOLDER).symlink_to(door_graphs, target_is_directory=True)
     monkeypatch.delenv("GROVE_CONFIG_FILE", raising=False)
     return tmp_path
 
