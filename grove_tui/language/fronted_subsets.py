@@ -2,8 +2,8 @@
 
 - the whole with no person noun: "Of the nine sat in the waiting room, two ...", "Out of the twenty
   queuing at the bar, ...": the number is people ("Of the nine people sat in ...");
-- the part said as a small collective: "..., a pair get up and pay", "..., a couple head off", "...,
-  a trio stay": so many of them ("a pair of them").
+- the part said as a pair: "..., a pair get up and pay", "..., a couple head off": two of them
+  ("a pair of them").
 
 Both are written out before the sentence is parsed; the whole and its part are then read as any
 "Of the twelve nurses on the ward, two go ..."."""
