@@ -54,6 +54,10 @@ def _waited_for(s: Sentence, at: int) -> bool:
     return end >= s.n or s.is_punct(end) or (s.low[end] in lx.CLAUSE_STARTERS and s.low[end] not in ("and", "then"))
 
 
+# What one named person rides in: "pushes Alastair's wheelchair" takes Alastair along.
+_RIDDEN_BY_ONE = frozenset("wheelchair pram buggy pushchair stroller bed stretcher gurney".split())
+
+
 class PeopleObjects:
     def __init__(self, s: Sentence, people: People) -> None:
         self.s = s
@@ -86,11 +90,14 @@ class PeopleObjects:
         k = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS | {"his", "her", "their", "my", "our"})
         while k < s.n and s.w[k].pos == "ADJ" and not self.people.is_person_noun(k):
             k += 1
-        if k + 2 >= s.n or not self.people.is_person_noun(k) or s.low[k + 1] not in ("'s", "’s", "'", "s'"):
+        named = s.w[k].pos == "PROPN" and s.w[k].text[:1].isupper()  # "Alastair's wheelchair"
+        if k + 2 >= s.n or not (self.people.is_person_noun(k) or named) or s.low[k + 1] not in ("'s", "’s", "'", "s'"):
             return None
         thing = k + 2
         while thing < s.n and s.w[thing].pos == "ADJ":
             thing += 1
+        if named and not self.people.is_person_noun(k) and thing < s.n and s.lemma(thing) not in _RIDDEN_BY_ONE:
+            return None  # "Boots's trolley", "Tesco's chair": a shop's, no one in it
         return (k, thing) if thing < s.n and s.lemma(thing) in lx.CARRYING_THINGS else None
 
     def sent_by(self, at: int) -> bool:
