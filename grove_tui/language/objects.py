@@ -6,6 +6,7 @@ follow their teacher"), and those inside the robot's own clause ("the robot esco
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.carried_things import counted_things
 from grove_tui.language.caused_motion import moves_along
 from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
@@ -80,6 +81,8 @@ class PeopleObjects:
         head = self.people.person_head(start, counted=q is not None)
         if not leading:  # "a nurse trundles a patient out of X-ray": taken along a route
             return head is not None and moves_along(s, p, head)
+        if counted_things(s, self.people, p, q, head):
+            return False  # "takes a handful of used mirrors to ...": things carried, no one led
         return head is not None or self.carried_owner(at) is not None \
             or named_class(s, start) is not None  # "a teacher takes year 3 to the hall"
 
