@@ -4,7 +4,8 @@ one person; a fronted whole with no person noun ("Of the nine sat in X, ...") an
 pair ("..., a pair get up") are a whole and its subset; a named person's wheelchair or buggy takes them
 along; a person held "arm in arm" or "by the hand" is still taken along; a name with the place they
 work ("Jo from reception") is one person; a counted object of a verb of carrying whose noun is no
-person word ("takes a handful of used mirrors") is things carried, no group."""
+person word ("takes a handful of used mirrors") is things carried, no group; little ones carried
+("mums with babies in slings") are no group of their own."""
 
 import pytest
 
@@ -94,6 +95,18 @@ def test_counted_things_carried_are_no_group(read, world, prompt):
     assert group.count.value == 1 and group.destination
 
 
+@pytest.mark.parametrize("world,prompt,value", [
+    ("mall", "Ten mums with babies in slings wait by the fountain.", 10),
+    ("hospital", "A woman with a baby in a sling waits in the lobby.", 1),
+    ("airport", "Two dads with toddlers on their shoulders walk to gate A2.", 2),
+    ("mall", "Five dads with toddlers in pushchairs queue at the coffee counter.", 5),
+    ("museum", "A young mum with a newborn in her arms walks from the entrance to the main hall.", 1),
+])
+def test_little_ones_carried_are_no_group_of_their_own(read, world, prompt, value):
+    (group,) = read(world, prompt).groups
+    assert group.count.value == value
+
+
 @pytest.mark.parametrize("world,prompt,counts", [
     ("mall", "The crowd, 150 strong, walk to the fountain.", [(150, "exact")]),
     ("mall", "Meanwhile, one of the guards walks to the fountain.", [(3, "vague"), (1, "exact")]),
@@ -106,6 +119,7 @@ def test_counted_things_carried_are_no_group(read, world, prompt):
     ("mall", "Tom walks from the food court to the fountain.", [(1, "exact")]),
     ("mall", "A guard takes a handful of children to the fountain.", [(1, "exact"), (3, "vague")]),
     ("mall", "A guard takes two children to the fountain.", [(1, "exact"), (2, "exact")]),
+    ("hospital", "A mum with two toddlers walks to the cafeteria.", [(1, "exact"), (2, "exact")]),
 ])
 def test_guards_keep_their_reading(read, world, prompt, counts):
     assert [(g.count.value, g.count.kind) for g in read(world, prompt).groups] == counts
