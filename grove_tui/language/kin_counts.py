@@ -15,7 +15,9 @@ from grove_tui.language.tokens import lemma
 
 _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True)) + \
     r")(?:-(?:one|two|three|four|five|six|seven|eight|nine))?"
-_STRONG = re.compile(r",\s*(" + _NUMBER + r")(?:-|\s+)strong\s*,", re.IGNORECASE)
+# "its audience, some 150 strong, pour out": a word of approximation before the number is kept.
+_STRONG = re.compile(r",\s*((?:(?:some|about|around|roughly|nearly|almost|maybe|perhaps|approximately|over)\s+)?"
+                     + _NUMBER + r")(?:-|\s+)strong\s*,", re.IGNORECASE)
 _TWIN = re.compile(r"(?<![\w-])(twin)\s+([a-z]+s)\b", re.IGNORECASE)
 
 

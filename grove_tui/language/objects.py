@@ -6,6 +6,7 @@ follow their teacher"), and those inside the robot's own clause ("the robot esco
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.carried_things import counted_things
 from grove_tui.language.caused_motion import moves_along
 from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
@@ -54,6 +55,10 @@ def _waited_for(s: Sentence, at: int) -> bool:
     return end >= s.n or s.is_punct(end) or (s.low[end] in lx.CLAUSE_STARTERS and s.low[end] not in ("and", "then"))
 
 
+# What one named person rides in: "pushes Alastair's wheelchair" takes Alastair along.
+_RIDDEN_BY_ONE = frozenset("wheelchair pram buggy pushchair stroller bed stretcher gurney".split())
+
+
 class PeopleObjects:
     def __init__(self, s: Sentence, people: People) -> None:
         self.s = s
@@ -76,6 +81,8 @@ class PeopleObjects:
         head = self.people.person_head(start, counted=q is not None)
         if not leading:  # "a nurse trundles a patient out of X-ray": taken along a route
             return head is not None and moves_along(s, p, head)
+        if counted_things(s, self.people, p, q, head):
+            return False  # "takes a handful of used mirrors to ...": things carried, no one led
         return head is not None or self.carried_owner(at) is not None \
             or named_class(s, start) is not None  # "a teacher takes year 3 to the hall"
 
@@ -86,11 +93,14 @@ class PeopleObjects:
         k = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS | {"his", "her", "their", "my", "our"})
         while k < s.n and s.w[k].pos == "ADJ" and not self.people.is_person_noun(k):
             k += 1
-        if k + 2 >= s.n or not self.people.is_person_noun(k) or s.low[k + 1] not in ("'s", "’s", "'", "s'"):
+        named = s.w[k].pos == "PROPN" and s.w[k].text[:1].isupper()  # "Alastair's wheelchair"
+        if k + 2 >= s.n or not (self.people.is_person_noun(k) or named) or s.low[k + 1] not in ("'s", "’s", "'", "s'"):
             return None
         thing = k + 2
         while thing < s.n and s.w[thing].pos == "ADJ":
             thing += 1
+        if named and not self.people.is_person_noun(k) and thing < s.n and s.lemma(thing) not in _RIDDEN_BY_ONE:
+            return None  # "Boots's trolley", "Tesco's chair": a shop's, no one in it
         return (k, thing) if thing < s.n and s.lemma(thing) in lx.CARRYING_THINGS else None
 
     def sent_by(self, at: int) -> bool:

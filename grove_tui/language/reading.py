@@ -51,6 +51,11 @@ from grove_tui.language.age_nouns import with_age_heads
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
+from grove_tui.language.apposed_members import without_apposed_members
+from grove_tui.language.fronted_subsets import with_fronted_subsets
+from grove_tui.language.linked_arms import without_held_hands
+from grove_tui.language.carried_babies import without_carried_babies
+from grove_tui.language.named_workplaces import without_named_workplaces
 from grove_tui.language.pairs import joined_pairs
 from grove_tui.language.placed_with import as_placing_clause
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
@@ -98,6 +103,11 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
+    text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
+    text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
+    text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
+    text = with_fronted_subsets(text)  # "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
+    text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_heading(text)  # "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)

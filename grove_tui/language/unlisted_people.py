@@ -58,12 +58,19 @@ def _a_thing(s: Sentence, lem: str) -> bool:
 _GROUP_NOUNS = lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES
 
 
+def _short_name(s: Sentence, i: int) -> bool:
+    """A two-letter first name ("Jo", "Al", "Ed"): capitalised, tagged a name, no title."""
+    text = s.w[i].text
+    return len(text) == 2 and text[0].isupper() and text[1].islower() and s.w[i].tag == "NNP" and \
+        s.low[i] not in lx.TITLES and s.low[i] not in lx.STOPWORDS
+
+
 def unlisted_subject(s: Sentence, i: int) -> bool:
     """Whether word i heads a subject phrase naming people no list has (see the module doc)."""
     word = s.w[i]
     # (A subject the parser tags an adjective is a noun it does not know: "a nervous postgrad leaves".)
     if word.pos not in ("NOUN", "PROPN", "ADJ") or word.dep != "nsubj" or word.head == i or \
-            not s.low[i].isalpha() or len(s.low[i]) < 3:
+            not s.low[i].isalpha() or (len(s.low[i]) < 3 and not _short_name(s, i)):
         return False
     if not (_people_verb(s, word.head) or (going_by_way(s, word.head) and word.tag == "NNP" and (
             i == 0 or s.low[i - 1] not in _OPENERS))):
