@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language.lexicon import PLACE_MODIFIERS
 from grove_tui.language.parser import known_word
+from grove_tui.language.place_other_kinds import names_a_kind
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES
 
 if TYPE_CHECKING:
@@ -69,7 +70,7 @@ def modified_otherwise(entry: PlaceEntry, modifiers: Sequence[str], head: str) -
     holding = [p for p in entry.phrases if head in p]
     # a misspelt modifier ("the chek-in hall") says no kind: the phrase as a whole decides, as before
     return bool(holding) and all(p.index(head) > 0 and p[p.index(head) - 1] not in modifiers for p in holding) \
-        and all(known_word(t) for t in modifiers)
+        and all(names_a_kind(t, entry) for t in modifiers)
 
 
 def noun_like_adjective(s: Sentence, x: int) -> bool:

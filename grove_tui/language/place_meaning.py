@@ -18,6 +18,9 @@ from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity
 from grove_tui.language.place_compounds import KIND_HEADS, modified_otherwise, noun_like_adjective
 from grove_tui.language.place_doers import named_doers
 from grove_tui.language.place_of_zone import served_at
+from grove_tui.language.place_first_words import names_its_zone
+from grove_tui.language.place_head_clauses import head_described, room_named_by_head
+from grove_tui.language.place_other_kinds import kind_agrees
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -121,7 +124,8 @@ class PlaceMeaning:
             # "the garden centre" is no "travel centre": the place's own modifier says what kind it is,
             # so the phrase's must be near the place itself (its room, "the concourse", says nothing of it)
             near = [r for r in near if r.entry.name == entry.name]
-            if not near or (head in KIND_HEADS and near[0].similarity < MODIFIER_SURE):
+            if not near or (head in KIND_HEADS and near[0].similarity < MODIFIER_SURE) or \
+                    not kind_agrees(entry, strange, head):  # "petrol" is no "coffee": "the petrol kiosk" no coffee kiosk
                 return False  # a building word's modifier is all its kind: "conference" is 0.33 from "travel"
         closest = max(r.similarity for r in near)
         if closest < MODIFIER_AGREES:
@@ -158,7 +162,8 @@ class PlaceMeaning:
         return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
                 f"'{said}' is read by meaning as {best.entry.name} (like '{best.nearest}')", alternatives)
 
-    def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int) -> tuple[Decided, int] | None:
+    def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int,
+                   exact: bool = False) -> tuple[Decided, int] | None:
         """The place a phrase followed by a relative clause means ("the counter where you hire a car",
         "the place you buy tickets", "the room they take X-rays in"), and the index after the clause;
         None when no place is clearly it.
@@ -169,6 +174,8 @@ class PlaceMeaning:
         of any other zone's; failing that, the phrase and its clause together, as near as a name."""
         s = self.s
         content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
+        if exact and not head_described(s, content, j):
+            return None  # a place's whole name: the clause after it says what is done there, not which
         if content and content[-1] in _ANY_PLACE | lx.GENERIC_PLACE_HEADS | {"hall"} and j < s.n and s.low[j] == "with":
             return room_with(s.index, s.low, j)  # "the room with the projector": the room that has it
         clause = self._relative_clause(j, bare=bool(content) and content[-1] in _ANY_PLACE | lx.BUILDING_WORDS |
@@ -185,6 +192,8 @@ class PlaceMeaning:
                 theirs[0].name in {e.name for e in s.index.owned_by(named)}:
             # "the room where they decide on their verdict", the jury's: said of the jury, it is their room
             meant = theirs
+        if meant is not None and exact:  # "the pool where toddlers have lessons": the teaching pool, not its tank
+            meant = (room_named_by_head(s.index, meant[0], content[-1]), *meant[1:])
         return (meant, end) if meant is not None else None
 
     def _by_clause(self, phrase: Sequence[str], lemmas: Sequence[str], content: Sequence[str], activity: str,
@@ -348,7 +357,9 @@ class PlaceMeaning:
             # only "area" or "room" in common: the word match says nothing
             return meant or (match, 0.5, f"'{' '.join(phrase)}' shares only '{' '.join(sorted(shared))}' with "
                                          f"{match.name}", ())
-        if meant is None or meant[0].name == match.name or meant[0].score < MEANING_STRONG:
+        if meant is None or meant[0].name == match.name or meant[0].score < MEANING_STRONG or (
+                entry is not None and meant[0].zone == match.name and len(content) == 1 and
+                names_its_zone(self.s.index.entries, entry, content[0])):  # "into departures": the lounge
             return None
         own = self.s.index.by_meaning(" ".join(phrase), among={match.name})
         if own and meant[0].score - own[0].similarity < MEANING_CLEARER:

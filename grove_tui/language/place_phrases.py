@@ -191,7 +191,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             # "the ice-cream stand" is no phone stand; an informal name is its place's whole name or near it
             match = None
         meant = None
-        described = None if numbered or (match is not None and match.exact) else self._described(phrase, lemmas, j)
+        described = None if numbered else self._described(phrase, lemmas, j, match is not None and match.exact)
         if described is not None:
             # "the room where kids do crafts": the place by what happens there, the relative clause part of it
             meant, j = described
@@ -224,7 +224,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
-        match = said_in_number(s.index, phrase, match)  # "at the till": the till counter, not the tills
+        match = match if described else said_in_number(s.index, phrase, match)  # "at the till": the till counter
         if (out := zone_around(s, at, j, match)) is not None:  # "outside the pharmacy", "lined up for the Viper"
             match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,

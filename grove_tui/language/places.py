@@ -25,6 +25,7 @@ from functools import lru_cache
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
+from grove_tui.language.place_first_words import names_its_zone
 from grove_tui.language.place_compounds import KIND_HEADS, head_only_modifies, names_another_kind
 from grove_tui.language.tokens import name_tokens
 from grove_tui.language.trade_places import TRADE_PLACES
@@ -255,7 +256,7 @@ class PlaceIndex:
                 continue  # "the garden centre" is no "centre court": the head is only its first word
             elif len(content) == 1 and any(head in p for p in e.phrases) and \
                     all(p[0] == head and len(p) > 1 for p in e.phrases if head in p) and \
-                    not any(head in t.split() for t in e.types):
+                    not any(head in t.split() for t in e.types) and not names_its_zone(self.entries, e, head):
                 continue  # "a box": only the first word of "box office", which names an office
             own_words = e.tokens - self._zone_words
             if e.kind == "door" and not exact and not speaks_of_door and not set(content) <= own_words:

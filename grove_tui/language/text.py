@@ -16,6 +16,7 @@ import unicodedata
 from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_lists import chat_lists
+from grove_tui.language.chat_places_first import places_first
 from grove_tui.language.chat_people import chat_people
 from grove_tui.language.chat_spelling import spell_out
 from grove_tui.language.kin_counts import kin_counts
@@ -104,7 +105,7 @@ def normalise(text: str) -> str:
     kept = _FOR_LAST.sub(_for_the_last, kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)
     kept = _JOINED.sub(lambda m: f"{m.group(1)}{'-' if m.group(1).lower() == 'after' else ''}{m.group(2)}", kept)
-    kept = commas_for_brackets(kept)  # "the school group (25 children) walks": one group of 25
+    kept = commas_for_brackets(places_first(kept))  # "dorm 1 asleep (3 ppl)"; "the school group (25 children) walks"
     kept = _OF_THIS_PLACE.sub("", _A_SIDE.sub(r"\1aside", kept))
     kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
