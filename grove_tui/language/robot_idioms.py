@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from grove_tui.language import lexicon as lx
 from grove_tui.language.hiding_moves import hides_by_moving
 from grove_tui.language.robot_holds import HOLDING_IDIOMS
+from grove_tui.language.robot_sticking import sticking_reaction
 from grove_tui.language.time_phrases import time_phrase_end
 from grove_tui.language.tokens import lemma
 
@@ -82,7 +83,7 @@ def idiom_reaction(s: Sentence, own: Sequence[int]) -> str | None:
         for idiom, interaction in IDIOMS.items():
             if _match(s, i, idiom, ownset):
                 return interaction
-    return None
+    return sticking_reaction(s, own)  # "sticks to the robot like glue", "to keep the robot off the ice"
 
 
 def timed_by_robot(s: Sentence, own: Sequence[int], robot_after: int | None) -> bool:
