@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.called_in import called_in_to
+from grove_tui.language.robot_journey import journey_words
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
 from grove_tui.language.fronted_stays import sentence_stay
@@ -286,7 +287,7 @@ class Groups:
             return Clause()
         after = [i for i in rc.tokens if i > m.last]
         after = met_people_words(self.s, after) if m.robot_object == "met" else after  # not the robot's way on
-        clause = self.clauses.read(after, excluded - set(after))
+        clause = self.clauses.read(after, excluded - set(after) | journey_words(self.s))  # not "on its way to X"
         if m.robot_object == "led":
             return replace(clause, robot="follow", intent=clause.intent or "walk", has_action=True)
         if m.robot_object == "met":  # people the robot passes, serves or squeezes by stay where they are

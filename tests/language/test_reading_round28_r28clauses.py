@@ -157,3 +157,30 @@ def test_keeping_the_robot_off_or_away_blocks_it(read, world, prompt):
 ])
 def test_sticking_to_a_path_or_keeping_a_thing_off_has_no_reaction(read, world, prompt):
     assert read(world, prompt).groups[0].robot_interaction is None
+
+
+# ---- 7. the robot's way as its own journey: no one stands in it, and its places are not the people's ----------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "The robot edges past ten visitors chatting in the main waiting room on its way to the pharmacy.",
+     "main_waiting_room"),
+    ("mall", "The robot weaves between a dozen shoppers browsing in the food court on its way to the toy store.",
+     "food_court"),
+    ("station", "The robot squeezes past thirty commuters waiting on platform 1 on its way to the exit.", "platform_1"),
+    ("hall_of_residence", "The robot squeezes past sixty freshers milling in the foyer on its way to the lifts.",
+     None),
+])
+def test_people_passed_on_the_robots_way_neither_block_it_nor_go_its_way(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert g.robot_interaction is None
+    assert g.destination is None
+    if location is not None:
+        assert g.location == location
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("station", "A drunk stands in the robot's way on platform 1."),
+    ("mall", "A boy steps into the robot's path in the food court."),
+])
+def test_standing_in_the_robots_way_still_blocks_it(read, world, prompt):
+    assert read(world, prompt).groups[0].robot_interaction == "block"
