@@ -76,6 +76,8 @@ def test_lying_or_lolling_about_is_waiting(read, world, prompt, location):
 @pytest.mark.parametrize("world,prompt,intent", [
     ("hospital", "A porter lays a blanket on the trolley and walks to the pharmacy.", "walk"),
     ("mall", "Two teenagers lounge on the benches in the food court.", "wait"),
+    ("office", "A sulky intern slouches into the kitchen.", "walk"),
+    ("hospital", "A bored teenager slouches off to the cafeteria.", "walk"),
 ])
 def test_laying_a_thing_or_lounging_keeps_its_reading(read, world, prompt, intent):
     assert read(world, prompt).groups[0].intent == intent
