@@ -187,7 +187,7 @@ def _after_robot(s: Sentence, r: int) -> str | None:
     for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
         if tuple(s.low[r + 1:r + 1 + len(phrase)]) == phrase or (
                 s.low[r] == "its" and tuple(s.low[r:r + len(phrase)]) == ("its", *phrase[1:])):
-            if robots_own_way(s, r):
+            if interaction == "block" and robots_own_way(s, r):
                 return None  # "squeezes past eighty freshers on its way to the lifts": its own journey
             before = r - 1
             while before > 0 and s.low[before] in lx.DETERMINERS:
