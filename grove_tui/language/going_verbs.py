@@ -11,6 +11,7 @@
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.posture_verbs import posture_intent
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -31,7 +32,7 @@ def more_verb_intent(s: Sentence, i: int) -> str | None:
         return "wander"
     if v in THING_TAKING_VERBS and carries_a_thing_to(s, i):
         return "walk"
-    return None
+    return posture_intent(s, i)  # "sprawl across the sofas", "loll on the beanbags"
 
 
 def carries_a_thing_to(s: Sentence, i: int) -> bool:

@@ -14,6 +14,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.called_in import called_in_to
+from grove_tui.language.robot_journey import journey_words
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
 from grove_tui.language.fronted_stays import sentence_stay
@@ -285,7 +287,7 @@ class Groups:
             return Clause()
         after = [i for i in rc.tokens if i > m.last]
         after = met_people_words(self.s, after) if m.robot_object == "met" else after  # not the robot's way on
-        clause = self.clauses.read(after, excluded - set(after))
+        clause = self.clauses.read(after, excluded - set(after) | journey_words(self.s))  # not "on its way to X"
         if m.robot_object == "led":
             return replace(clause, robot="follow", intent=clause.intent or "walk", has_action=True)
         if m.robot_object == "met":  # people the robot passes, serves or squeezes by stay where they are
@@ -375,6 +377,8 @@ class Groups:
         if stationary and (served := served_fixture(s.index, c.purpose, roles.location)) is not None:
             roles.location = served  # "a woman queuing to pay in the café": at its counter
         self._fixture_where_the_rest_were(m, roles, earlier, stationary)
+        if stationary and roles.destination is None and (called := called_in_to(s, span)) is not None:
+            roles.start, roles.destination = roles.start or roles.location, called  # "until the hygienist calls her in"
         start, destination, location, via = roles.start, roles.destination, roles.location, roles.via
         count = settle_count(s, m, span, start or location or destination, earlier, self.notes)
         wait = c.wait_seconds

@@ -11,6 +11,7 @@ from grove_tui.language.disregard import disregards
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
+from grove_tui.language.robot_journey import robots_own_way
 from grove_tui.language.robot_idioms import idiom_reaction, timed_by_robot, timed_reaction
 from grove_tui.language.robot_manner import manner_reaction
 from grove_tui.language.robot_requests import asks_to_be_led
@@ -186,6 +187,8 @@ def _after_robot(s: Sentence, r: int) -> str | None:
     for phrase, interaction in lx.ROBOT_AFTER_PHRASES.items():
         if tuple(s.low[r + 1:r + 1 + len(phrase)]) == phrase or (
                 s.low[r] == "its" and tuple(s.low[r:r + len(phrase)]) == ("its", *phrase[1:])):
+            if interaction == "block" and robots_own_way(s, r):
+                return None  # "squeezes past eighty freshers on its way to the lifts": its own journey
             before = r - 1
             while before > 0 and s.low[before] in lx.DETERMINERS:
                 before -= 1

@@ -14,7 +14,10 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.hiding_moves import hides_by_moving
 from grove_tui.language.robot_holds import HOLDING_IDIOMS
+from grove_tui.language.robot_sticking import sticking_reaction
+from grove_tui.language.time_phrases import time_phrase_end
 from grove_tui.language.tokens import lemma
 
 if TYPE_CHECKING:
@@ -80,7 +83,7 @@ def idiom_reaction(s: Sentence, own: Sequence[int]) -> str | None:
         for idiom, interaction in IDIOMS.items():
             if _match(s, i, idiom, ownset):
                 return interaction
-    return None
+    return sticking_reaction(s, own)  # "sticks to the robot like glue", "to keep the robot off the ice"
 
 
 def timed_by_robot(s: Sentence, own: Sequence[int], robot_after: int | None) -> bool:
@@ -96,20 +99,20 @@ def timed_by_robot(s: Sentence, own: Sequence[int], robot_after: int | None) -> 
         if s.low[k] in _TIME_WORDS and s.w[k].sentence == sentence and (k == 0 or s.is_punct(k - 1)) and \
                 any(s.low[r] in lx.ROBOT_WORDS for r in range(k + 1, min(k + 4, own[0]))):
             return True
-    return any(s.low[k] in _TIME_WORDS and any(s.low[r] in lx.ROBOT_WORDS for r in range(k + 1, min(k + 4, s.n)))
-               for k in own)
+    return any((s.low[k] in _TIME_WORDS or time_phrase_end(s, k)) and  # "every time the robot beeps"
+               any(s.low[r] in lx.ROBOT_WORDS for r in range(k + 1, min(k + 4, s.n))) for k in own)
 
 
 def timed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
     """A reaction with no robot for object in a clause the robot times: shrinking or hiding (avoid),
     going off or aside (avoid), a start or a freeze (look). Only words before any word of time."""
     for n, i in enumerate(own):
-        if s.low[i] in _TIME_WORDS:
+        if s.low[i] in _TIME_WORDS or time_phrase_end(s, i + 1):
             break
         if s.after_determiner(i) or s.w[i].pos not in ("VERB", "AUX", "NOUN", "ADJ", "PROPN"):
             continue
         v = s.verb(i) if s.w[i].pos in ("VERB", "AUX") else s.w[i].lemma  # "scurries" is tagged a noun at times
-        if v in _SHRINKING_VERBS or lx.ROBOT_VERBS.get(v) == "avoid":
+        if v in _SHRINKING_VERBS or lx.ROBOT_VERBS.get(v) == "avoid" or hides_by_moving(s, i):
             return "avoid"
         nxt = own[n + 1] if n + 1 < len(own) else None
         if nxt == i + 1 and s.low[nxt] in _AWAY_TAILS and s.w[i].pos in ("VERB", "NOUN") and _ends(s, nxt + 1):

@@ -17,6 +17,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
 from grove_tui.language.fronted_stays import stay_first
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.times_to_come import time_to_come
 from grove_tui.language.tokens import lemma
 
 # Vague spells after "for", in seconds: a typical length of each.
@@ -116,4 +117,4 @@ def stay_in(s: Sentence, own: Sequence[int]) -> float | None:
         said = stay_said_alone(s, k)
         if said is not None:
             return said[0]
-    return None
+    return time_to_come(s, own)  # "heading to platform 1 in 5 mins": they wait that long first
