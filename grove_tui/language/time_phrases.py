@@ -15,6 +15,6 @@ _TIME_NOUNS = frozenset("time moment minute second instant".split())
 def time_phrase_end(s: Sentence, k: int) -> bool:
     """Whether the word at k ends a phrase of time that leads into a clause ("every time", "the
     moment"): only "every/each/any time" or "the moment/minute/second/instant"."""
-    if k < 1 or s.low[k] not in _TIME_NOUNS or s.low[k - 1] not in _EVERY:
+    if not 1 <= k < s.n or s.low[k] not in _TIME_NOUNS or s.low[k - 1] not in _EVERY:
         return False
     return (s.low[k] == "time") != (s.low[k - 1] == "the")
