@@ -51,6 +51,8 @@ def routine_beside_reaction(s: Sentence, c: Clause, scene: Clause | None, span: 
         return None, []
     if routine == "wait" and not (places.get("location") or wait_seconds):
         return None, []  # "visitors stop and stare": staying is the look itself
+    if routine == "wait" and robot == "block" and not wait_seconds:
+        return None, []  # "two guards stand at the desk and block the robot": the stay is the block, held there
     return routine, confidence
 
 
