@@ -36,6 +36,7 @@ from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.queue_delay import wait_before_queuing
+from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.robot_passing import passed_zones
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
@@ -496,6 +497,9 @@ def _base_intent(group: GroupReading) -> str:
     """What the group does apart from reacting to the robot."""
     if group.intent != "robot":
         return group.intent
+    routine = routine_of(group)
+    if routine is not None:
+        return routine  # "queue at the pharmacy and look at the robot": the queue, with the look around it
     if group.destination:
         return "walk"
     return "wait"
@@ -505,7 +509,7 @@ def reacts_only(group: GroupReading) -> bool:
     """The group's whole activity is its robot interaction: nowhere to go ("two visitors stare at the
     robot in the lobby" are in the lobby, and what they do there is look at the robot). Followers go
     where the robot goes: "follow the robot through the concourse" names the robot's way, not theirs."""
-    if not group.robot_interaction or group.intent != "robot":
+    if not group.robot_interaction or group.intent != "robot" or routine_of(group) is not None:
         return False
     return group.robot_interaction == "follow" or (not group.destination and not group.via)
 
@@ -1257,7 +1261,7 @@ def _passed_groups(reading: PromptReading, groups: Sequence[PlannedGroup], world
         if zone is None or g.reading_index is None:
             continue
         service = next((place_of(node, "service_point") for node in g.tree.walk() if node.node == "Queue"), None)
-        queues = reading.groups[g.reading_index].intent == "queue"
+        queues = "queue" in (reading.groups[g.reading_index].intent, routine_of(reading.groups[g.reading_index]))
         out.append(_StayingGroup(g.label, zone, tuple(g.member_ids), service if queues else None))
     return out
 

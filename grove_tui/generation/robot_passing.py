@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 
 from grove_tui.generation.formations import Formation
+from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.language.reading import PromptReading
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.world.model import World
@@ -35,7 +36,7 @@ def passed_zones(reading: PromptReading | None, world: World) -> dict[int, str]:
     out: dict[int, str] = {}
     for i, g in enumerate(reading.groups):
         # people who only react to the robot stay where they are unless sent somewhere (reconcile's base intent)
-        intent = g.intent if g.intent != "robot" else ("walk" if g.destination else "wait")
+        intent = g.intent if g.intent != "robot" else routine_of(g) or ("walk" if g.destination else "wait")
         place = g.location or (g.destination if intent in _STAYING else None)
         zone = world.zone_of_place(place or "")
         if g.who in passes and intent in _STAYING and zone is not None:

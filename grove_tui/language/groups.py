@@ -33,6 +33,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_crowds import met_people_words
 from grove_tui.language.roles import Roles, assign_roles
+from grove_tui.language.routine_reactions import routine_beside_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
 from grove_tui.language.thing_modifiers import modifies_a_thing
@@ -391,6 +392,9 @@ class Groups:
             start = next((p.match.name for p in c.places if p.match and first_wait[0] < p.index < first_wait[1]), None)
         confidence = count_confidence(s, m, count) + place_confidences(
             {"start": start, "destination": destination, "location": location}, via, roles.read_from)
+        routine, routine_confidence = routine_beside_reaction(
+            s, c, scene, span, robot, {"destination": destination, "location": location}, via, wait)
+        confidence += routine_confidence
         if robot is not None and c.robot is None:
             confidence.append(FieldConfidence("robot_interaction", 0.7, "read from the sentence's words about the "
                                                                       "robot, not from this group's own"))
@@ -403,7 +407,7 @@ class Groups:
             together=m.together or c.together or count.kind == "structured",
             pace=c.pace if c.pace != "normal" or scene is None else scene.pace, relation=m.relation,
             follows=c.follows, text=text, confidence=tuple(confidence),
-            avoid=tuple(dict.fromkeys(c.avoid + (scene.avoid if scene is not None else []))))
+            avoid=tuple(dict.fromkeys(c.avoid + (scene.avoid if scene is not None else []))), routine=routine)
 
     @staticmethod
     def _default_intent(c: Clause, scene: Clause | None) -> str:

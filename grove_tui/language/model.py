@@ -18,6 +18,8 @@ from grove_tui.jsontypes import JSONObject, Parsed
 COUNT_KINDS = ("exact", "approximate", "vague", "implied", "structured", "whole_zone", "exclusive")
 INTENTS = ("walk", "queue", "wait", "wander", "converse", "follow", "evacuate", "robot")
 ROBOT_INTERACTIONS = ("look", "approach", "follow", "avoid", "block")
+# What a group reacting to the robot does besides reacting ("queue at the pharmacy and look at the robot").
+ROUTINES = ("walk", "queue", "wait", "wander", "converse")
 # What a sentence can ask the robot itself to do ("the robot crosses the hall to the lifts": cross).
 ROBOT_TASKS = ("cross", "wait", "patrol", "follow")
 # A field the reader is less sure of than this is "unsure": the report says so, the app asks first,
@@ -99,6 +101,9 @@ class GroupReading:
     text: str = ""  # the prompt words this group owns
     confidence: tuple[FieldConfidence, ...] = ()  # per field; a field not listed was read outright
     avoid: tuple[str, ...] = ()  # places the sentence says they do not use ("not the main doors")
+    # For intent "robot": what they do besides reacting, one of ROUTINES, at the group's places
+    # ("six patients queue at the pharmacy and look at the robot": routine "queue", location pharmacy).
+    routine: str | None = None
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)

@@ -519,6 +519,13 @@ class SurprisedNav(_Reaction):
         super().begin()
         self.face("robot")
 
+    def step(self) -> None:
+        # Started in a ReactiveFallback, it halts the routine after it (a Queue, a GoTo), and the halt stands
+        # the person still (MODE_STOP) after begin() turned them to the robot: turn to it again.
+        if self.sim.crowd.mode[self.row] != MODE_FACE:
+            self.facing = None
+            self.face("robot")
+
 
 class CuriousNav(_Reaction):
     __slots__ = ()
