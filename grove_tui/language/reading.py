@@ -78,6 +78,7 @@ from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
+from grove_tui.language.got_up import got_up_and_went
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -157,6 +158,7 @@ def _read(s: Sentence) -> PromptReading:
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
+    read = got_up_and_went(read)  # "a pair get up and pay at reception": they walk there
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
 

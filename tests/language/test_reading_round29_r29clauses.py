@@ -106,3 +106,29 @@ def test_smoke_itself_still_makes_hurrying_an_evacuation(read, world, prompt):
 def test_hurrying_beside_a_smoker_already_read_keeps_its_reading(read, world, prompt, start, destination):
     movers = [g for g in read(world, prompt).groups if g.destination is not None]
     assert [(g.intent, g.start, g.destination) for g in movers] == [("walk", start, destination)]
+
+
+# ---- 4. a part that gets up and does something at a place walks there -------------------------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("station", "Of the ten people in the waiting room, two get up and buy tickets at the ticket office.",
+     "ticket_office"),
+    ("mall", "Two shoppers get up and order at the coffee counter.", "coffee_counter"),
+    ("hospital", "Of the eight in the main waiting room, three get up and pay at the pharmacy counter.",
+     "pharmacy_counter"),
+    ("dental_clinic", "Of the six people sat in the waiting room, one gets up and books in at reception.",
+     "reception"),
+])
+def test_people_who_get_up_and_do_something_at_a_place_walk_there(read, world, prompt, destination):
+    g = read(world, prompt).groups[-1]
+    assert (g.intent, g.destination) == ("walk", destination)
+
+
+@pytest.mark.parametrize("world,prompt,intent,location", [
+    ("library", "Three students get up and queue at the issue desk.", "queue", "issue_desk"),
+    ("mall", "Two shoppers stand up and wait by the fountain.", "wait", "fountain"),
+    ("hospital", "Two visitors sit and read in the main waiting room.", "wait", "main_waiting_room"),
+])
+def test_getting_up_to_stay_or_queue_keeps_its_reading(read, world, prompt, intent, location):
+    g = read(world, prompt).groups[-1]
+    assert (g.intent, g.location) == (intent, location)
