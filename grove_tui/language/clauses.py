@@ -20,6 +20,7 @@ from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
+from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.place_search import searched_for
 from grove_tui.language.people import People
@@ -537,12 +538,11 @@ class Clauses:
     # ---- sentence-wide cues ----------------------------------------------------------------------
 
     def hazard(self, i: int) -> bool:
-        """A hazard named on its own ("Fire!", "a bomb scare", "smoke in the kitchen"), not as the
-        first word of a thing's name ("the fire exit", "the smoke detector")."""
+        """A hazard named on its own ("Fire!", "smoke in the kitchen"), not a thing's name ("the fire exit")."""
         s = self.s
         if hazard_cue(s, i):  # "a smell of burning", "the alarm goes off" (hazards.py)
             return True
-        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN"):
+        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN") or smoked_by_someone(s, i):
             return False
         return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")
 
