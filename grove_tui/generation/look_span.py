@@ -11,15 +11,16 @@ long, from the group's own verb:
   is near. Their reaction fires again every time the robot is near (not once), and the report checks that
   they faced it for LOOK_SHARE of the time it was within LOOK_RANGE (a look claim without `seconds`).
 
-People whose whole activity is looking at the robot face it all the time (LookAtRobot): a stare, which holds
-a glance's claim too.
+People whose whole activity is looking at the robot stare at it all the time (LookAtRobot); when they only
+glance ("two cleaners glance at the robot as it passes") they stand where they are and turn to it once, briefly,
+when it comes near (`glancing`).
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
 
-from grove_tui.analysis.outcomes import GLANCE_SECONDS, LOOK_SHARE
+from grove_tui.analysis.outcomes import GLANCE_SECONDS, LOOK_RANGE, LOOK_SHARE
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.look_spans import GLANCE, look_span
 from grove_tui.language.model import GroupReading
@@ -38,6 +39,20 @@ def glance_or_stare(tree: DraftNode, group: GroupReading) -> DraftNode:
     ports = {"beh_duration": GLANCE_REACTION, "only_once": True} if span == GLANCE else \
         {"beh_duration": STARE_REACTION, "only_once": False}
     return _with_ports(tree, "SurprisedNav", ports)
+
+
+def glancing(group: GroupReading, seconds: float) -> DraftNode | None:
+    """The tree of people whose whole activity is a glance at the robot: they stand `seconds` and turn to it
+    once when it comes within LOOK_RANGE; None for anyone else (a stare is LookAtRobot)."""
+    if look_span(group) != GLANCE:
+        return None
+    cue = DraftNode("IsRobotClose", {"threshold": LOOK_RANGE})
+    look = DraftNode("SurprisedNav", {"beh_duration": GLANCE_REACTION, "only_once": True})
+    reaction = DraftNode("Sequence", {}, (cue, DraftNode("ForceFailure", {}, (look,))))
+    stand = DraftNode("Wait", {"duration": seconds})
+    if group.together:
+        stand = DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), stand))
+    return DraftNode("ReactiveFallback", {}, (reaction, stand))
 
 
 def _with_ports(tree: DraftNode, node: str, ports: dict[str, float | bool]) -> DraftNode:

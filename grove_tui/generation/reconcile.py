@@ -36,7 +36,7 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
-from grove_tui.generation.look_span import glance_or_stare, look_claim
+from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.robot_passing import passed_zones
@@ -644,6 +644,9 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "two guards stand in the doorway and block the robot": they hold the place and block it there
         return blocking_at(group.location, float(group.wait_seconds or DEFAULT_WAIT_SECONDS),
                            ROBOT_ACTIVITIES["block"][1]["front_dist"], group.together), True
+    glance = glancing(group, float(group.wait_seconds or DEFAULT_WAIT_SECONDS)) if reacts_only(group) else None
+    if glance is not None:  # "two cleaners glance at the robot as it passes": once, briefly, when it comes
+        return glance, True
     if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
         node, ports = ROBOT_ACTIVITIES[interaction]
         ports = dict(ports)

@@ -79,3 +79,16 @@ def test_a_stare_lasts_while_the_robot_is_near(tmp_path):
     assert _surprised(run).get("only_once") == "false"
     report = run.run(120.0)
     assert _look(report).status == "holds", _look(report).evidence
+
+
+def test_people_who_only_glance_turn_to_it_once_and_those_who_stare_keep_facing_it(tmp_path):
+    world = load_world(HOSPITAL)
+    corridor = (DraftGroup("cleaner", 2, "main_corridor", DraftNode("LookAtRobot", {})),)
+    glancers = plan_by_hand(world, "normal", "Two cleaners glance at the robot as it passes through the main "
+                            "corridor.", corridor, tmp_path / "glance")
+    assert _surprised(glancers).get("only_once") == "true"
+    assert _look(glancers.report).seconds == GLANCE_SECONDS
+    starers = plan_by_hand(world, "normal", "Two cleaners stare at the robot as it passes through the main "
+                           "corridor.", corridor, tmp_path / "stare")
+    xml = (starers.bundle / starers.op.agents[0].tree).read_text(encoding="utf-8")
+    assert "<LookAtRobot" in xml and _look(starers.report).seconds is None
