@@ -5,7 +5,9 @@ People whose whole activity is reacting to the robot start beside its route (pla
 and a route fixed elsewhere is run through the rooms the sentence puts them in. People with a routine of their
 own (reaction_routine.py) do it where the sentence says, which the robot's route need not pass: they would
 never see the robot, and their reaction would go "not checked" or ✗ for want of it. So a robot that crosses
-or patrols passes through the zone of each such routine too, as it does for plain reacting groups.
+or patrols passes through the zone of each such routine too, as it does for plain reacting groups; for people
+who walk somewhere and react on the way ("a teacher glances at the robot while she walks to the staff room"),
+the zone they walk to, where they are once there.
 """
 
 from __future__ import annotations
@@ -22,12 +24,14 @@ _STAYING = frozenset({"queue", "wait", "converse", "wander"})
 
 
 def routine_zone(world: World, group_index: int, reading: PromptReading | None) -> str | None:
-    """The zone a group that reacts to the robot around a routine stays in, or None."""
+    """The zone a group that reacts to the robot around a routine stays in (or walks to), or None."""
     if reading is None or not 0 <= group_index < len(reading.groups):
         return None
     g = reading.groups[group_index]
-    if routine_of(g) not in _STAYING:
+    if not g.robot_interaction or g.robot_interaction == "follow" or g.intent not in ("robot", *_STAYING, "walk"):
         return None
+    if g.intent == "robot" and routine_of(g) is None and not g.destination:
+        return None  # their whole activity is the reaction: placed beside the route (planning.place_robot_reactors)
     for place in (g.location, g.destination, g.start):
         zone = world.zone_of_place(place or "")
         if zone:

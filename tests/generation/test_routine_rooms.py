@@ -28,3 +28,18 @@ def test_the_robot_passes_the_routine_and_they_watch_it(tmp_path):
     assert claims["stay"].status == "holds", claims["stay"].evidence
     robot = {c.kind: c for c in report.robot.claims}
     assert robot["robot_reach"].status == "holds", robot
+
+
+def test_the_robot_passes_where_a_walker_who_reacts_is_going(tmp_path):
+    # "the robot never came within 10 m of them": she walked to the staff room, the robot went straight on
+    world = load_world("eval/understanding/worlds/primary_school.yaml")
+    run = plan_by_hand(world, "normal", "A teacher glances at the robot while she walks to the staff room, and the "
+                       "robot drives from the school hall to the library.",
+                       (DraftGroup("teacher", 1, "main_corridor", DraftNode("GoTo", {"target": "staff_room"})),),
+                       tmp_path / "b")
+    route = shapely.LineString(run.op.robot.path)
+    assert route.intersection(world.zone("staff_room").polygon).length > 1.0
+    report = run.run(120.0)
+    claims = {c.kind: c for g in report.groups for c in g.claims}
+    assert claims["robot_look"].status == "holds", claims["robot_look"].evidence
+    assert claims["reach"].status == "holds", claims["reach"].evidence
