@@ -62,7 +62,8 @@ CHAIN_MAX = 120  # followers checked as a column (the pairwise distances grow wi
 FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep within reach
 LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
-LOOK_SHARE = 0.5
+LOOK_SHARE = 0.6  # "stare at", "watch": facing it for most of the time it is within LOOK_RANGE
+GLANCE_SECONDS = 1.0  # "glance at", "look at": facing it at least once this long while within LOOK_RANGE
 AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
 AVOID_MOVED = 0.5  # metres moved away while it was near
 BLOCK_AHEAD = 2.5  # metres ahead of the robot's front
@@ -883,6 +884,9 @@ class _RobotApproachProbe(_RobotProbe):
         if d is None:
             return
         d = np.where(np.isfinite(d), d, np.inf)
+        if self.claim.zone is not None or self.claim.point is not None:
+            # "approach the robot at the entrance": only a meeting at that place counts
+            d = np.where(self.at_place(f.pos[:, self.cols]), d, np.inf)
         k = np.argmin(d, axis=0)
         best = d[k, np.arange(d.shape[1])]
         better = best < self.closest
@@ -897,7 +901,8 @@ class _RobotApproachProbe(_RobotProbe):
         ok = self.closest <= d
         k = int(ok.sum())
         finite = np.isfinite(self.closest)
-        text = f"{k}/{n} came within {d:g} m of the robot"
+        at = f" at {self.where()}" if self.claim.zone is not None or self.claim.point is not None else ""
+        text = f"{k}/{n} came within {d:g} m of the robot{at}"
         if finite.any():
             j = int(np.nanargmin(np.where(finite, self.closest, np.nan)))
             text += f" (closest {float(self.closest[j]):.1f} m at {_when(float(self.when[j]))})"
@@ -1001,11 +1006,17 @@ class _RobotAvoidProbe(_RobotProbe):
 
 
 class _RobotLookProbe(_RobotProbe):
+    """A look at the robot while it is within LOOK_RANGE. A claim with `seconds` ("glance at it", "look at
+    it": generation/look_span.py) asks for one look at least that long; one without ("stare at it", "watch
+    it") for facing it LOOK_SHARE of the time it is in range."""
+
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.in_sight = np.zeros(m)
         self.facing = np.zeros(m)
+        self.run = np.zeros(m)  # frames of the look going on
+        self.longest = np.zeros(m)  # frames of the longest look
         self.seen_robot = False
 
     def add(self, f: _Frames) -> None:
@@ -1018,21 +1029,33 @@ class _RobotLookProbe(_RobotProbe):
         sight = np.isfinite(d) & (d <= LOOK_RANGE)
         bearing = np.arctan2(dy, dx)
         off = np.abs((bearing - f.yaw[:, self.cols] + np.pi) % (2 * np.pi) - np.pi)
+        looking = sight & (off <= LOOK_ANGLE)
         self.in_sight += sight.sum(axis=0)
-        self.facing += (sight & (off <= LOOK_ANGLE)).sum(axis=0)
+        self.facing += looking.sum(axis=0)
+        for row in looking:
+            self.run = np.where(row, self.run + 1, 0)
+            self.longest = np.maximum(self.longest, self.run)
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         if not self.seen_robot:
             return self.no_robot()
         n = self.members
         seen = self.in_sight * checker.sample_dt >= 1.0
-        share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
-        ok = seen & (share >= LOOK_SHARE)
-        k = int(ok.sum())
         if not seen.any():
             return FAILS, f"the robot never came within {LOOK_RANGE:g} m of them"
-        text = (f"{k}/{n} looked at it ({float(share[seen].mean()):.0%} of the "
-                f"{float(self.in_sight[seen].mean() * checker.sample_dt):.0f} s it was within {LOOK_RANGE:g} m)")
+        share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
+        near = f"{float(self.in_sight[seen].mean() * checker.sample_dt):.0f} s it was within {LOOK_RANGE:g} m"
+        if self.claim.seconds:
+            longest = self.longest * checker.sample_dt
+            ok = seen & (longest >= self.claim.seconds - 1e-6)
+            k = int(ok.sum())
+            text = (f"{k}/{n} looked at it for {self.claim.seconds:g} s or more at once (longest look "
+                    f"{float(longest[seen].max()):.1f} s; {float(share[seen].mean()):.0%} of the {near})")
+        else:
+            ok = seen & (share >= LOOK_SHARE)
+            k = int(ok.sum())
+            text = f"{k}/{n} looked at it for {LOOK_SHARE:.0%} or more of the time it was near " \
+                   f"({float(share[seen].mean()):.0%} of the {near})"
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 

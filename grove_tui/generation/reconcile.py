@@ -30,11 +30,13 @@ from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
+from grove_tui.generation.approach_at_place import approach_place, approaching_at, at_the_approached_place
 from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_at
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
+from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.robot_passing import passed_zones
@@ -642,12 +644,19 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "two guards stand in the doorway and block the robot": they hold the place and block it there
         return blocking_at(group.location, float(group.wait_seconds or DEFAULT_WAIT_SECONDS),
                            ROBOT_ACTIVITIES["block"][1]["front_dist"], group.together), True
+    glance = glancing(group, float(group.wait_seconds or DEFAULT_WAIT_SECONDS)) if reacts_only(group) else None
+    if glance is not None:  # "two cleaners glance at the robot as it passes": once, briefly, when it comes
+        return glance, True
     if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
         node, ports = ROBOT_ACTIVITIES[interaction]
         ports = dict(ports)
         for speed in ("max_vel", "runaway_vel"):  # "run up to the robot": at the group's pace
             if speed in ports:
                 ports[speed] = round(ports[speed] * PACE_FACTORS.get(group.pace, 1.0), 2)
+        place = approach_place(group) if interaction == "approach" else None
+        if place is not None:  # "children in the playground approach the robot": there, when it comes
+            return approaching_at(place, float(group.wait_seconds or DEFAULT_WAIT_SECONDS), ports,
+                                  group.together), True
         activity = DraftNode(node, {**ports})
         if group.together:
             return DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), activity)), True
@@ -656,7 +665,8 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "walk to the reading room and avoid the robot": the report checks everyone the robot comes within
         # REACTION_DISTANCE of, so the reaction must fire from there, not only from HuNavSim's nearer trigger
         checked_from = REACTION_DISTANCE.get(interaction) if interaction in _CHECKED_FROM_AFAR else None
-        return with_reaction(tree, group.robot_reaction, checked_from, keep_away=interaction == "avoid"), False
+        return glance_or_stare(with_reaction(tree, group.robot_reaction, checked_from,
+                                             keep_away=interaction == "avoid"), group), False
     return tree, False
 
 
@@ -1151,6 +1161,9 @@ def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float, worl
     share = 0.5 if interaction == "block" else 0.9
     claim = Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
                   needs_seconds=robot_seconds + 10.0)
+    claim = look_claim(claim, r) if interaction == "look" else claim  # a glance or a stare
+    claim = at_the_approached_place(claim, r, g, world) if interaction == "approach" and world is not None \
+        and reacts_only(r) else claim
     return at_the_blocked_place(claim, r, g, world) if interaction == "block" and world is not None else claim
 
 
