@@ -63,3 +63,33 @@ def test_people_who_are_groups_stay_groups(read, world, prompt, count):
 ])
 def test_being_powdered_or_styled_is_done_in_the_make_up_room(read, world, prompt, destination):
     assert read(world, prompt).groups[0].destination == destination
+
+
+# ---- 4. people counted after a preposition, and a handheld device: no place to refuse ----------------------
+
+@pytest.mark.parametrize("world,prompt", [
+    ("warehouse", "The robot weaves through a dozen pickers in the aisles."),
+    ("warehouse", "The robot threads its way through twenty-odd loaders to reach the dispatch bay."),
+    ("parcel_depot", "The robot edges past thirty-odd sorters on the sorting floor."),
+    ("supermarket", "The robot squeezes through a dozen shelf stackers to reach the tills."),
+])
+def test_people_counted_after_a_preposition_are_no_unknown_place(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("mall", "Two teens trail the robot, filming it on a phone."),
+    ("museum", "A student wanders round the gallery taking photos on a tablet."),
+    ("hospital", "A visitor waits in the cafeteria, chatting on a mobile."),
+    ("zoo", "A dad films the penguins on a camera."),
+])
+def test_a_handheld_device_is_no_unknown_place(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("mall", "A cleaner walks through the ball pit.", "ball pit"),
+    ("warehouse", "Two pickers walk through the staff gym.", "staff gym"),
+])
+def test_places_the_world_lacks_after_through_are_still_refused(read, world, prompt, unknown):
+    assert unknown in read(world, prompt).unknown_places
