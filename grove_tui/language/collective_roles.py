@@ -11,12 +11,13 @@ import re
 from grove_tui.language import lexicon as lx
 
 _COLLECTIVES = "shift|crew|club|choir|troop|squad|band|committee|rota"
-_PHRASE = re.compile(r"\b([A-Za-z]+)\s+(" + _COLLECTIVES + r")\s+([A-Za-z]+)\b", re.IGNORECASE)
+_PHRASE = re.compile(r"(?<![-\w])([A-Za-z]+)\s+(" + _COLLECTIVES + r")\s+([A-Za-z]+)\b", re.IGNORECASE)
 # First words that are no part of a name for the collective ("the shift boss", "a crew member").
 _NOT_FIRST = frozenset("the a an this that these those his her their our my your its each every "
                        "whole entire of and or with from to for by".split())
 
 
+_TIMED = frozenset("after before during breakfast".split())
 _HEADS = frozenset("chief captain secretary chairman chairwoman treasurer".split())
 
 
@@ -24,6 +25,9 @@ def with_collective_roles(text: str) -> str:
     """The text with "the night shift boss" written "the night-shift boss" (see the module doc)."""
     def joined(m: re.Match[str]) -> str:
         first, collective, person = m.group(1), m.group(2), m.group(3)
+        before = m.string[:m.start()].split()[-1:]
+        if (before and before[0].lower() in _TIMED) or first.lower().startswith(("after", "before")):
+            return m.group(0)  # "ten after school club kids": a club named by a time, the count kept
         if first.lower() in _NOT_FIRST or first.lower() in lx.NUMBER_WORDS or not _is_person(person.lower()):
             return m.group(0)
         return f"{first}-{collective} {person}"
