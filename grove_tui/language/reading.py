@@ -52,6 +52,10 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
 from grove_tui.language.apposed_members import without_apposed_members
+from grove_tui.language.collective_roles import with_collective_roles
+from grove_tui.language.counted_loads import without_counted_loads
+from grove_tui.language.fronted_size_parts import with_fronted_size_parts
+from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.carried_babies import without_carried_babies
@@ -109,6 +113,10 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
+    text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
+    text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
+    text = with_little_ones(text)  # "leads the little one": "the little child"
+    text = with_fronted_size_parts(text)  # "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(text)  # "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
