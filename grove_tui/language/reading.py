@@ -127,7 +127,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
-    reading = replace(reading, groups=round30_clauses(typed, reading.groups))  # "swerves her buggy wide of the robot"
+    reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
