@@ -45,7 +45,7 @@ def crowding_round(index: PlaceIndex, groups: Sequence[GroupReading]) -> tuple[G
     out: list[GroupReading] = []
     for g in groups:
         m = _AFTER_MOVING.search(g.text)
-        place = _thing(index, m.group(1).split()) if m and g.intent in ("walk", "wait") and g.destination is None \
+        place = _thing(index, m.group(1).split()) if m and g.intent in ("walk", "wait", "wander") and g.destination is None \
             else None
         if m is not None and place is not None and _MOVING.search(g.text[:m.start()]):
             g = replace(g, intent="walk", destination=place, start=None if g.start == place else g.start,
