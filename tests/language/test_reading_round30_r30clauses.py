@@ -26,15 +26,26 @@ def test_a_chat_wait_with_a_duration_then_a_move(read, world, prompt, start, des
 # ---- 2. a zone cleared in the passive -------------------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt,start", [
-    ("station", "A fire alarm sounds on platform 1, and the thirty commuters waiting there are cleared off it.",
-     "platform_1"),
-    ("mall", "Smoke is spotted in the food court, and the forty diners sat there get cleared out of it.", "food_court"),
+    ("station", "Smoke is seen on platform 1, and the thirty commuters stood there are cleared off it.", "platform_1"),
+    ("mall", "A leak is reported in the food court, and the forty diners stood there are cleared off it.", "food_court"),
     ("library", "A pipe bursts in the reading room, and the dozen students working there are cleared from it.",
      "reading_room"),
-    ("job_centre", "A fire alarm goes off in the training room, and the ten trainees sat there get cleared out.",
+    ("hospital", "A leak is reported in the cafeteria, and the twenty visitors stood there are cleared off it.",
+     "cafeteria"),
+    ("job_centre", "Smoke is reported in the training room, and the ten trainees sat there are cleared off it.",
      "training_room"),
 ])
 def test_a_zone_cleared_in_the_passive_is_evacuated(read, world, prompt, start):
+    (g,) = read(world, prompt).groups
+    assert (g.intent, g.start) == ("evacuate", start)
+
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("station", "A fire alarm sounds on platform 1, and the thirty commuters waiting there are cleared off it.",
+     "platform_1"),
+    ("mall", "Smoke is spotted in the food court, and the forty diners sat there get cleared out of it.", "food_court"),
+])
+def test_a_cleared_zone_already_read_keeps_its_evacuation(read, world, prompt, start):
     (g,) = read(world, prompt).groups
     assert (g.intent, g.start) == ("evacuate", start)
 
@@ -66,7 +77,7 @@ def test_crowding_round_a_thing_without_moving_waits_there(read):
     ("supermarket", "A pensioner steers her trolley well clear of the robot."),
     ("hospital", "A porter veers his trolley wide of the robot in the corridor."),
     ("library", "A shy boy hangs back from the robot by the issue desk."),
-    ("station", "Two tourists hang back as the robot passes."),
+    ("station", "Two tourists hang back from the robot on platform 1."),
 ])
 def test_steering_wide_of_or_hanging_back_from_the_robot_avoids_it(read, world, prompt):
     (g,) = read(world, prompt).groups
