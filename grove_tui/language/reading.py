@@ -33,6 +33,7 @@ from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
+from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
@@ -83,6 +84,7 @@ from grove_tui.language.text import normalise
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
+from grove_tui.language.clause_fixes import round30_clauses
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -101,6 +103,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
+    text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
@@ -134,6 +137,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
+    reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
