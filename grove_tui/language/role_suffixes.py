@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
@@ -67,6 +68,11 @@ def suffix_role(s: Sentence, i: int) -> bool:
         return False
     if names_a_place(s.index, lem) or (i > 0 and s.w[i].text[:1].isupper() and s.w[i].pos == "PROPN"):
         return False
+    verb = verb_lemma(low)
+    if verb in lx.INTENT_VERBS or verb in lx.PEOPLE_GOING_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or \
+            (i > 0 and (s.low[i - 1] in lx.PERSON_NOUNS or s.lemma(i - 1) in lx.PERSON_NOUNS)
+             and s.lemma(i - 1) not in lx.IMPLIED_RANGES and lem not in _HEADS):
+        return False  # "a cleaner wanders in the corridor": the person's verb, taken for a noun
     return _opened(s, i) and _where_a_person_stands(s, i)
 
 

@@ -96,3 +96,12 @@ def test_names_after_fronted_feelings_read_before_keep_their_reading(read, world
 def test_a_fronted_feeling_toward_the_robot_keeps_its_reaction(read):
     g = read("care_home", "Intrigued, Dorothy shuffles across the lounge towards the robot.").groups[0]
     assert g.who == "Dorothy" and g.robot_reaction == "Curious" and g.robot_interaction == "approach"
+
+
+@pytest.mark.parametrize("world,prompt,who,intent", [
+    ("hospital", "two porters wait at the lifts and a cleaner wanders in the main corridor", "a cleaner", "wander"),
+    ("mall", "four shoppers sit by the fountain and a guard wanders in the food court", "a guard", "wander"),
+])
+def test_a_persons_verb_after_them_is_no_role_word(read, world, prompt, who, intent):
+    g = read(world, prompt).groups[-1]
+    assert (g.who, g.intent) == (who, intent)
