@@ -338,7 +338,7 @@ class Clauses:
                 c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
                 scan.used.update(range(i, place.end))
         elif not s.after_determiner(i) and v in lx.OBJECT_VERBS and nxt not in ("round", "around"):  # a preposition
-            if nxt in lx.DETERMINERS or (nxt and s.index.knows(lemma(nxt))):
+            if nxt in lx.DETERMINERS or (nxt and (s.index.knows(lemma(nxt)) or self.places.names_place(obj))):
                 role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
                         else "obj:seen" if v in lx.SEEN_OBJECT_VERBS
                         else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
