@@ -39,6 +39,15 @@ def home_zone(sim: SimContext, point: Point) -> str | None:
     return zone.name if zone is not None else None
 
 
+def in_zone(sim: SimContext, zone: str, point: Point) -> bool:
+    """Whether a point is in `zone` (with half a metre for its doorways and walls)."""
+    if sim.world is None:
+        return True
+    polygon = sim.world.zone(zone).polygon
+    return bool(polygon.covers(shapely.Point(float(point[0]), float(point[1])))) or \
+        polygon.distance(shapely.Point(float(point[0]), float(point[1]))) <= 0.5
+
+
 def _zone_spots(sim: SimContext, zone: str) -> np.ndarray:
     cache = _spots.setdefault(sim, {})
     found = cache.get(zone)

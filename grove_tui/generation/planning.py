@@ -327,7 +327,8 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
 
     # "carries books from the returns desk to the reading room": to the desk first, a stop, then on
     errand = robot_errand(asked) if request.start is None and request.goal is None else None
-    errand_spec = errand_robot(world, picker, lambda p: _place_point(world, grid, p), plan_path, errand, notes) \
+    errand_spec = errand_robot(world, picker, lambda p: _place_point(world, grid, p), plan_path, errand, notes,
+                               lambda path, a, b: _through(world, path, (), through, picker, plan_path, a, b)) \
         if errand is not None else None
     if errand_spec is not None:
         return errand_spec

@@ -59,9 +59,11 @@ def _start_beside(world: World, picker: _Picker, pickup: str, pickup_point: Poin
 
 def errand_robot(world: World, picker: _Picker, place_point: Callable[[str], Point | None],
                  plan_path: Callable[[Point, Point, bool], np.ndarray], errand: RobotErrand,
-                 notes: list[str]) -> RobotSpec | None:
+                 notes: list[str], through: Callable[[np.ndarray, Point, Point], np.ndarray] | None = None,
+                 ) -> RobotSpec | None:
     """The robot's start, path and stop for an errand; None when its places have no point (the caller
-    plans the plain crossing)."""
+    plans the plain crossing). `through`: the leg with the thing made to pass the rooms of people who react
+    to the robot (planning._through)."""
     drop_point = place_point(errand.dropoff) if errand.dropoff else None
     if errand.dropoff and drop_point is None:
         return None
@@ -70,6 +72,7 @@ def errand_robot(world: World, picker: _Picker, place_point: Callable[[str], Poi
         assert drop_point is not None
         start = _start_beside(world, picker, errand.dropoff or "", drop_point, None)
         path = plan_path(start, drop_point, True)
+        path = through(path, start, drop_point) if through is not None else path
         notes.append(f"the robot {errand.kind}s to {errand.dropoff}: it sets off from the next room")
         return RobotSpec(start=start, goal=drop_point, path=_rounded(path), task="cross")
     pick_point = place_point(errand.pickup)
@@ -79,6 +82,7 @@ def errand_robot(world: World, picker: _Picker, place_point: Callable[[str], Poi
     goal = drop_point if drop_point is not None else start
     there = plan_path(start, pick_point, True)
     back = plan_path(pick_point, goal, True)
+    back = through(back, pick_point, goal) if through is not None else back
     path = np.concatenate([there, back[1:]])
     where = errand.dropoff or "where it set off"
     notes.append(f"the robot's errand: from the next room to {errand.pickup}, a {PICKUP_SECONDS:g} s stop there "

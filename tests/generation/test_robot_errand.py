@@ -85,3 +85,20 @@ def test_a_fetch_comes_back_where_it_set_off(tmp_path):
     claims = {c.kind: c for c in report.robot.claims}
     assert claims["robot_pickup"].status == "holds", claims["robot_pickup"].evidence
     assert claims["robot_dropoff"].status == "holds", claims["robot_dropoff"].evidence
+
+
+def test_a_delivery_passes_the_people_who_react_to_the_robot(tmp_path):
+    # "the robot never came within 6 m of them": the errand's route ignored the rooms of people who react
+    world = load_world("worlds/hospital.yaml")
+    sentence = "Six patients queue at the pharmacy and keep away from the robot while the robot delivers medicine " \
+               "to the ward"
+    run = plan_by_hand(world, "normal", sentence,
+                       (DraftGroup("patient", 6, "pharmacy", DraftNode("Queue", {"service_point": "pharmacy_counter"})),),
+                       tmp_path / "b")
+    report = run.run(120.0)
+    claims = {c.kind: c for g in report.groups for c in g.claims}
+    # the route now comes by their room (whether a queue grazed at the edge of 6 m steps 0.5 m away is the
+    # avoid check's own matter)
+    assert "never came within" not in claims["robot_avoid"].evidence, claims["robot_avoid"].evidence
+    robot = {c.kind: c for c in report.robot.claims}
+    assert robot["robot_dropoff"].status == "holds", robot

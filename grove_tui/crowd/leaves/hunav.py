@@ -16,7 +16,7 @@ from typing import Literal
 
 from grove_tui.crowd.context import Point, SimContext, Snapshot
 from grove_tui.crowd.coordination import Conversation
-from grove_tui.crowd.keep_in_place import clear_of_parked_robot, home_zone, target_in_place
+from grove_tui.crowd.keep_in_place import clear_of_parked_robot, home_zone, in_zone, target_in_place
 from grove_tui.crowd.leaves.base import (
     FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, QuietSpec, angle_diff,
 )
@@ -708,9 +708,11 @@ class AvoidRobot(_Timed):
             return
         safe, speed = self.get_input("safe_distance"), self.get_input("runaway_vel")
         here = self.sim.pos[self.row]
-        if math.hypot(here[0] - robot[0], here[1] - robot[1]) >= safe:
+        if math.hypot(here[0] - robot[0], here[1] - robot[1]) >= safe and \
+                (self.home is None or in_zone(self.sim, self.home, here)):
             self.face("robot")
             return
+        # too near, or pushed out of their place while standing clear of it: to a clear point of the place
         target = target_in_place(self.sim, self.home, here, (robot[0], robot[1]), safe)
         if target is None:
             _flee(self, safe, speed)
