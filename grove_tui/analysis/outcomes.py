@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
+from grove_tui.analysis.robot_errand import StopTrack, dropoff_verdict, pickup_verdict
+from grove_tui.analysis.robot_errand import speeds as errand_speeds
 from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
 from grove_tui.errors import MetricsError
 from grove_tui.files import write_text_atomic
@@ -1355,6 +1357,41 @@ class _RobotFollowPersonProbe(_Probe):
             f"within {self.claim.distance or 3.0:g} m of them {share:.0%} of the time"
 
 
+class _RobotErrandProbe(_Probe):
+    """robot_pickup / robot_dropoff: the two legs of the robot's errand (analysis/robot_errand.py)."""
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.track = StopTrack(lambda p: self.at_place(p[:, None, :])[:, 0], claim.seconds or 0.0, checker.sample_dt)
+        first = next((c for c in checker.planned.robot.claims if c.kind == "robot_pickup"), None) \
+            if claim.kind == "robot_dropoff" and checker.planned.robot is not None else None
+        self.pickup = _RobotErrandProbe(first, checker, cols, members) if first is not None else None
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None:
+            return
+        self.seen_robot = True
+        after = 0.0
+        if self.pickup is not None:
+            self.pickup.add(f)
+            after = self.pickup.track.done
+            if math.isinf(after):
+                return
+        self.track.add(f.t, f.robot, errand_speeds(f.robot, f.robot_vel, f.t), after)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if self.claim.kind == "robot_pickup":
+            ok, text = pickup_verdict(self.track, self.where())
+        else:
+            done = self.pickup.track.done if self.pickup is not None else None
+            ok, text = dropoff_verdict(self.track, self.where(), done,
+                                       self.pickup.where() if self.pickup is not None else None)
+        return (HOLDS if ok else FAILS), text
+
+
 _PROBES: dict[str, type[_Probe]] = {
     "count": _CountProbe, "start": _StartProbe, "reach": _ReachProbe, "stay": _StayProbe, "wander": _WanderProbe,
     "move": _MoveProbe, "leave": _LeaveProbe, "keep_out": _KeepOutProbe, "pace": _PaceProbe, "queue": _QueueProbe,
@@ -1364,6 +1401,7 @@ _PROBES: dict[str, type[_Probe]] = {
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,
     "robot_stay": _RobotPlaceProbe, "robot_patrol": _RobotPatrolProbe,
     "robot_follow_person": _RobotFollowPersonProbe, "robot_passes": _RobotPassesProbe,
+    "robot_pickup": _RobotErrandProbe, "robot_dropoff": _RobotErrandProbe,
 }
 
 

@@ -39,6 +39,8 @@ from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
+from grove_tui.generation.robot_errand import errand_robot
+from grove_tui.language.robot_errands import robot_errand
 from grove_tui.generation.robot_passing import people_stay_in, through_formations, zone_before
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
@@ -323,6 +325,13 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
                 notes.append(note)
         return path
 
+    # "carries books from the returns desk to the reading room": to the desk first, a stop, then on
+    errand = robot_errand(asked) if request.start is None and request.goal is None else None
+    errand_spec = errand_robot(world, picker, lambda p: _place_point(world, grid, p), plan_path, errand, notes,
+                               lambda path, a, b: _through(world, path, (), through, picker, plan_path, a, b)) \
+        if errand is not None else None
+    if errand_spec is not None:
+        return errand_spec
     follows: tuple[int, ...] = ()
     if task == "follow":
         follows = _followed(reading, post)

@@ -39,7 +39,9 @@ from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
+from grove_tui.generation.robot_errand import errand_claims
 from grove_tui.generation.robot_passing import passed_zones
+from grove_tui.language.robot_errands import robot_errand
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -1304,7 +1306,10 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
         return RobotGrounding("pass", "", (), plan + " (the sentence asks nothing of it)")
     unsure = tuple(question("the robot", asked, c) for c in asked.confidence if c.unsure)
     claims: list[Claim] = []
-    if asked.task in ("cross", "patrol"):
+    errand = robot_errand(asked) if robot.stops or task == "cross" else None
+    if errand is not None and (robot.stops or errand.pickup is None):  # to the pick-up first, then the drop-off
+        claims.extend(errand_claims(errand, robot, world, seconds))
+    elif asked.task in ("cross", "patrol"):
         if asked.start:
             claims.append(_robot_start_claim(asked.start, robot, world))
         for v in asked.via:
