@@ -24,14 +24,13 @@ import os
 from pathlib import Path
 from typing import Any, Literal, TypedDict
 
-import platformdirs
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from pydantic_settings import BaseSettings, InitSettingsSource, PydanticBaseSettingsSource, SettingsConfigDict
 
 from grove_tui.errors import SettingsError
 from grove_tui.limits import InputLimitError, compose_yaml
-from grove_tui.paths import APP
+from grove_tui.paths import APP, cache_dir, config_dir, data_dir  # noqa: F401  (the user's directories, re-exported)
 
 MAX_CONFIG_BYTES = 1024 * 1024
 # The pedestrian models a user can pick (crowd.sfm.SFMParams.named); here so that front ends list
@@ -41,21 +40,6 @@ PEDESTRIAN_MODELS = ("grove", "lightsfm")
 ENVIRONMENT_ONLY = ("model", "roi_model", "bt_model")
 
 
-def _environment_directory(variable: str, default: str) -> Path:
-    value = os.environ.get(variable)
-    return Path(value).expanduser() if value else Path(default)
-
-
-def cache_dir() -> Path:
-    return _environment_directory("GROVE_CACHE_DIR", platformdirs.user_cache_dir(APP))
-
-
-def data_dir() -> Path:
-    return _environment_directory("GROVE_DATA_DIR", platformdirs.user_data_dir(APP))
-
-
-def config_dir() -> Path:
-    return _environment_directory("GROVE_CONFIG_DIR", platformdirs.user_config_dir(APP))
 
 
 def models_dir() -> Path:

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import atexit
 import functools
 import os
+import shutil
 import socket
 import tempfile
 
@@ -13,6 +15,8 @@ os.environ.setdefault("HF_HUB_OFFLINE", "1")
 # Tests never read or write the user's own cache, config or models: a user's config.yaml naming a
 # model, or a stale index, must not change what the suite checks. Subprocesses inherit these.
 _sandbox = tempfile.mkdtemp(prefix="grove-tests-")
+# The suite's caches (a node index, KV caches, bundles) are hundreds of MB: gone when the run ends.
+atexit.register(shutil.rmtree, _sandbox, ignore_errors=True)
 for _name in ("CACHE", "CONFIG", "DATA"):
     os.environ.setdefault(f"GROVE_{_name}_DIR", os.path.join(_sandbox, _name.lower()))
 # The cache every test that runs `grove` as a user would shares (the node index, the assembled RoI model,

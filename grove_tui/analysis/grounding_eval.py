@@ -29,8 +29,9 @@ Outcome kinds (`expect`): reach, stay, queue, wander, leave, start, keep_out (a 
 converse (true); evacuate (any, or exit names); move (true); pace (slow, fast); follow (the `who` of another
 group: close to them while they walk); for (seconds: a stay or wander judged over that long after arriving,
 a reach counted from then, as in "waits for a minute and then walks on"); robot (follow,
-approach, block, avoid, look); at (a place: where the robot reaction happens, for block: "blocks the robot at
-the gateline" is {robot: block, at: gateline}, a block elsewhere does not count; a door or thing counts 3 m round). The robot's: reach, via, cross (from its edge half its width across), stay, patrol
+approach, block, avoid, look: one look of a second at least, stare: facing it most of the time it is near); at
+(a place: where the robot reaction happens, for block and approach: "blocks the robot at the gateline" is
+{robot: block, at: gateline}, a block elsewhere does not count; a door or thing counts 3 m round). The robot's: reach, via, cross (from its edge half its width across), stay, patrol
 (a place), follow and passes (words of a group).
 """
 
@@ -44,7 +45,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from grove_tui.analysis.metrics import iter_trajectory_chunks
-from grove_tui.analysis.outcomes import OutcomeChecker
+from grove_tui.analysis.outcomes import GLANCE_SECONDS, OutcomeChecker
 from grove_tui.errors import SuiteError
 from grove_tui.jsontypes import JSONObject
 from grove_tui.scenario.events import read_events
@@ -58,10 +59,10 @@ if TYPE_CHECKING:
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
                   "robot", "keep_out", "follow", "for", "at")
 ROBOT_OUTCOMES = ("reach", "via", "cross", "stay", "patrol", "follow", "passes")
-REACTIONS = ("follow", "approach", "block", "avoid", "look")
+REACTIONS = ("follow", "approach", "block", "avoid", "look", "stare")
 BLOCK_AT_RADIUS = 3.0  # metres round a door or thing that count as blocking "at" it
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
-REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0}
+REACTION_DISTANCE = {"follow": 3.0, "approach": 2.5, "block": 2.5, "avoid": 6.0, "look": 10.0, "stare": 10.0}
 PACE_BANDS = {"slow": (0.2, 0.85), "fast": (1.15, 3.0)}  # times the preset's normal walking speed
 
 
@@ -331,10 +332,12 @@ def _hand_claims(expected: ExpectedGroup, world: World, speed: float,
                                 distance=round(3.0 + 0.5 * math.sqrt(max(n - 1, 0)), 1)))
         elif kind == "robot":
             share = 0.5 if value == "block" else 0.9
-            claim = Claim(f"robot_{value}", tag + str(value), "expected", distance=REACTION_DISTANCE[str(value)],
-                          share=share)
+            # look: at least once, a short while (one look of GLANCE_SECONDS); stare: most of the time it is near
+            claim = Claim("robot_look" if value == "stare" else f"robot_{value}", tag + str(value), "expected",
+                          distance=REACTION_DISTANCE[str(value)], share=share,
+                          seconds=GLANCE_SECONDS if value == "look" else None)
             at = next((str(v) for k, v in expected.expect if k == "at"), None)
-            if at is not None and value == "block":
+            if at is not None and value in ("block", "approach"):
                 there = _place("reach", at, world, n)
                 claim = replace(claim, asked=claim.asked + f" at {at}", zone=there.zone if there.point is None
                                 else None, place=at, point=there.point,

@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
+from grove_tui.analysis.robot_errand import StopTrack, dropoff_verdict, pickup_verdict
+from grove_tui.analysis.robot_errand import speeds as errand_speeds
 from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
 from grove_tui.errors import MetricsError
 from grove_tui.files import write_text_atomic
@@ -62,7 +64,8 @@ CHAIN_MAX = 120  # followers checked as a column (the pairwise distances grow wi
 FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep within reach
 LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
-LOOK_SHARE = 0.5
+LOOK_SHARE = 0.6  # "stare at", "watch": facing it for most of the time it is within LOOK_RANGE
+GLANCE_SECONDS = 1.0  # "glance at", "look at": facing it at least once this long while within LOOK_RANGE
 AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
 AVOID_MOVED = 0.5  # metres moved away while it was near
 BLOCK_AHEAD = 2.5  # metres ahead of the robot's front
@@ -883,6 +886,9 @@ class _RobotApproachProbe(_RobotProbe):
         if d is None:
             return
         d = np.where(np.isfinite(d), d, np.inf)
+        if self.claim.zone is not None or self.claim.point is not None:
+            # "approach the robot at the entrance": only a meeting at that place counts
+            d = np.where(self.at_place(f.pos[:, self.cols]), d, np.inf)
         k = np.argmin(d, axis=0)
         best = d[k, np.arange(d.shape[1])]
         better = best < self.closest
@@ -897,7 +903,8 @@ class _RobotApproachProbe(_RobotProbe):
         ok = self.closest <= d
         k = int(ok.sum())
         finite = np.isfinite(self.closest)
-        text = f"{k}/{n} came within {d:g} m of the robot"
+        at = f" at {self.where()}" if self.claim.zone is not None or self.claim.point is not None else ""
+        text = f"{k}/{n} came within {d:g} m of the robot{at}"
         if finite.any():
             j = int(np.nanargmin(np.where(finite, self.closest, np.nan)))
             text += f" (closest {float(self.closest[j]):.1f} m at {_when(float(self.when[j]))})"
@@ -1001,11 +1008,17 @@ class _RobotAvoidProbe(_RobotProbe):
 
 
 class _RobotLookProbe(_RobotProbe):
+    """A look at the robot while it is within LOOK_RANGE. A claim with `seconds` ("glance at it", "look at
+    it": generation/look_span.py) asks for one look at least that long; one without ("stare at it", "watch
+    it") for facing it LOOK_SHARE of the time it is in range."""
+
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
         m = self.cols.size
         self.in_sight = np.zeros(m)
         self.facing = np.zeros(m)
+        self.run = np.zeros(m)  # frames of the look going on
+        self.longest = np.zeros(m)  # frames of the longest look
         self.seen_robot = False
 
     def add(self, f: _Frames) -> None:
@@ -1018,21 +1031,33 @@ class _RobotLookProbe(_RobotProbe):
         sight = np.isfinite(d) & (d <= LOOK_RANGE)
         bearing = np.arctan2(dy, dx)
         off = np.abs((bearing - f.yaw[:, self.cols] + np.pi) % (2 * np.pi) - np.pi)
+        looking = sight & (off <= LOOK_ANGLE)
         self.in_sight += sight.sum(axis=0)
-        self.facing += (sight & (off <= LOOK_ANGLE)).sum(axis=0)
+        self.facing += looking.sum(axis=0)
+        for row in looking:
+            self.run = np.where(row, self.run + 1, 0)
+            self.longest = np.maximum(self.longest, self.run)
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         if not self.seen_robot:
             return self.no_robot()
         n = self.members
         seen = self.in_sight * checker.sample_dt >= 1.0
-        share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
-        ok = seen & (share >= LOOK_SHARE)
-        k = int(ok.sum())
         if not seen.any():
             return FAILS, f"the robot never came within {LOOK_RANGE:g} m of them"
-        text = (f"{k}/{n} looked at it ({float(share[seen].mean()):.0%} of the "
-                f"{float(self.in_sight[seen].mean() * checker.sample_dt):.0f} s it was within {LOOK_RANGE:g} m)")
+        share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
+        near = f"{float(self.in_sight[seen].mean() * checker.sample_dt):.0f} s it was within {LOOK_RANGE:g} m"
+        if self.claim.seconds:
+            longest = self.longest * checker.sample_dt
+            ok = seen & (longest >= self.claim.seconds - 1e-6)
+            k = int(ok.sum())
+            text = (f"{k}/{n} looked at it for {self.claim.seconds:g} s or more at once (longest look "
+                    f"{float(longest[seen].max()):.1f} s; {float(share[seen].mean()):.0%} of the {near})")
+        else:
+            ok = seen & (share >= LOOK_SHARE)
+            k = int(ok.sum())
+            text = f"{k}/{n} looked at it for {LOOK_SHARE:.0%} or more of the time it was near " \
+                   f"({float(share[seen].mean()):.0%} of the {near})"
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 
@@ -1332,6 +1357,41 @@ class _RobotFollowPersonProbe(_Probe):
             f"within {self.claim.distance or 3.0:g} m of them {share:.0%} of the time"
 
 
+class _RobotErrandProbe(_Probe):
+    """robot_pickup / robot_dropoff: the two legs of the robot's errand (analysis/robot_errand.py)."""
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.track = StopTrack(lambda p: self.at_place(p[:, None, :])[:, 0], claim.seconds or 0.0, checker.sample_dt)
+        first = next((c for c in checker.planned.robot.claims if c.kind == "robot_pickup"), None) \
+            if claim.kind == "robot_dropoff" and checker.planned.robot is not None else None
+        self.pickup = _RobotErrandProbe(first, checker, cols, members) if first is not None else None
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None:
+            return
+        self.seen_robot = True
+        after = 0.0
+        if self.pickup is not None:
+            self.pickup.add(f)
+            after = self.pickup.track.done
+            if math.isinf(after):
+                return
+        self.track.add(f.t, f.robot, errand_speeds(f.robot, f.robot_vel, f.t), after)
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if self.claim.kind == "robot_pickup":
+            ok, text = pickup_verdict(self.track, self.where())
+        else:
+            done = self.pickup.track.done if self.pickup is not None else None
+            ok, text = dropoff_verdict(self.track, self.where(), done,
+                                       self.pickup.where() if self.pickup is not None else None)
+        return (HOLDS if ok else FAILS), text
+
+
 _PROBES: dict[str, type[_Probe]] = {
     "count": _CountProbe, "start": _StartProbe, "reach": _ReachProbe, "stay": _StayProbe, "wander": _WanderProbe,
     "move": _MoveProbe, "leave": _LeaveProbe, "keep_out": _KeepOutProbe, "pace": _PaceProbe, "queue": _QueueProbe,
@@ -1341,6 +1401,7 @@ _PROBES: dict[str, type[_Probe]] = {
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,
     "robot_stay": _RobotPlaceProbe, "robot_patrol": _RobotPatrolProbe,
     "robot_follow_person": _RobotFollowPersonProbe, "robot_passes": _RobotPassesProbe,
+    "robot_pickup": _RobotErrandProbe, "robot_dropoff": _RobotErrandProbe,
 }
 
 

@@ -23,7 +23,9 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
+from grove_tui.generation import approach_at_place
 from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
+from grove_tui.generation.routine_rooms import rooms_of_routines
 from grove_tui.generation.crossing import crossing_goal, crossing_start
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
@@ -37,6 +39,8 @@ from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
+from grove_tui.generation.robot_errand import errand_robot
+from grove_tui.language.robot_errands import robot_errand
 from grove_tui.generation.robot_passing import people_stay_in, through_formations, zone_before
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
@@ -112,8 +116,10 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
         reactor_notes: list[str] = []
         unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+        route = list(robot_spec.path) or [robot_spec.start, robot_spec.goal]
         rooms = list(dict.fromkeys([g.reactor_zone for g in unseen if g.reactor_zone] + rooms_to_pass(
-            world, post.groups, list(robot_spec.path) or [robot_spec.start, robot_spec.goal])))
+            world, post.groups, route) + approach_at_place.rooms_to_pass(world, post.groups, route)
+            + rooms_of_routines(world, reading, route)))
         if rooms and robot_spec.task in ("cross", "patrol"):
             # People the sentence puts in a room to react to the robot ("people in the waiting area look
             # at it") react only if it comes by: a route fixed elsewhere passes through their room too.
@@ -132,6 +138,9 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
     guided_for = _behind_the_guide_while_it_drives(post, robot_spec)
     # "two guards block the robot in the doorway": each holds a post where the robot passes the place
     blocker_posts = posts_for_blockers(world, grid, post.groups, post.agents, (
+        list(robot_spec.path) or [robot_spec.start, robot_spec.goal]) if robot_spec is not None else None, notes)
+    # "children in the playground approach the robot": each waits beside where the robot passes the place
+    approach_posts = approach_at_place.posts_for_approachers(world, grid, post.groups, post.agents, (
         list(robot_spec.path) or [robot_spec.start, robot_spec.goal]) if robot_spec is not None else None, notes)
     fields: dict[str, VelocityField] = {}
     group_paths: dict[str, np.ndarray] = {}
@@ -170,6 +179,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         if a.group_index in guided_for:
             _set_guided_seconds(document, guided_for[a.group_index])
         set_post(document, blocker_posts.get(a.id))
+        approach_at_place.set_post(document, approach_posts.get(a.id))
         if preset.velocity == "waypoints" and preset.planner.enabled:
             around = keeping_out.get(a.group_index)
             try:
@@ -315,6 +325,13 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
                 notes.append(note)
         return path
 
+    # "carries books from the returns desk to the reading room": to the desk first, a stop, then on
+    errand = robot_errand(asked) if request.start is None and request.goal is None else None
+    errand_spec = errand_robot(world, picker, lambda p: _place_point(world, grid, p), plan_path, errand, notes,
+                               lambda path, a, b: _through(world, path, (), through, picker, plan_path, a, b)) \
+        if errand is not None else None
+    if errand_spec is not None:
+        return errand_spec
     follows: tuple[int, ...] = ()
     if task == "follow":
         follows = _followed(reading, post)

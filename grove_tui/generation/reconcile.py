@@ -30,14 +30,18 @@ from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
+from grove_tui.generation.approach_at_place import approach_place, approaching_at, at_the_approached_place
 from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_at
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
+from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
+from grove_tui.generation.robot_errand import errand_claims
 from grove_tui.generation.robot_passing import passed_zones
+from grove_tui.language.robot_errands import robot_errand
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
 from grove_tui.language.reading import GroupReading, PromptReading, effective_counts
@@ -642,12 +646,19 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "two guards stand in the doorway and block the robot": they hold the place and block it there
         return blocking_at(group.location, float(group.wait_seconds or DEFAULT_WAIT_SECONDS),
                            ROBOT_ACTIVITIES["block"][1]["front_dist"], group.together), True
+    glance = glancing(group, float(group.wait_seconds or DEFAULT_WAIT_SECONDS)) if reacts_only(group) else None
+    if glance is not None:  # "two cleaners glance at the robot as it passes": once, briefly, when it comes
+        return glance, True
     if reacts_only(group) and interaction in ROBOT_ACTIVITIES:
         node, ports = ROBOT_ACTIVITIES[interaction]
         ports = dict(ports)
         for speed in ("max_vel", "runaway_vel"):  # "run up to the robot": at the group's pace
             if speed in ports:
                 ports[speed] = round(ports[speed] * PACE_FACTORS.get(group.pace, 1.0), 2)
+        place = approach_place(group) if interaction == "approach" else None
+        if place is not None:  # "children in the playground approach the robot": there, when it comes
+            return approaching_at(place, float(group.wait_seconds or DEFAULT_WAIT_SECONDS), ports,
+                                  group.together), True
         activity = DraftNode(node, {**ports})
         if group.together:
             return DraftNode("Sequence", {}, (DraftNode("JoinGroup", {}), activity)), True
@@ -656,7 +667,8 @@ def with_robot_interaction(tree: DraftNode, group: GroupReading) -> tuple[DraftN
         # "walk to the reading room and avoid the robot": the report checks everyone the robot comes within
         # REACTION_DISTANCE of, so the reaction must fire from there, not only from HuNavSim's nearer trigger
         checked_from = REACTION_DISTANCE.get(interaction) if interaction in _CHECKED_FROM_AFAR else None
-        return with_reaction(tree, group.robot_reaction, checked_from, keep_away=interaction == "avoid"), False
+        return glance_or_stare(with_reaction(tree, group.robot_reaction, checked_from,
+                                             keep_away=interaction == "avoid"), group), False
     return tree, False
 
 
@@ -1151,6 +1163,9 @@ def _reaction_claim(r: GroupReading, g: PlannedGroup, robot_seconds: float, worl
     share = 0.5 if interaction == "block" else 0.9
     claim = Claim(kind, asked, plan, distance=REACTION_DISTANCE.get(interaction, 3.0), share=share,
                   needs_seconds=robot_seconds + 10.0)
+    claim = look_claim(claim, r) if interaction == "look" else claim  # a glance or a stare
+    claim = at_the_approached_place(claim, r, g, world) if interaction == "approach" and world is not None \
+        and reacts_only(r) else claim
     return at_the_blocked_place(claim, r, g, world) if interaction == "block" and world is not None else claim
 
 
@@ -1291,7 +1306,10 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
         return RobotGrounding("pass", "", (), plan + " (the sentence asks nothing of it)")
     unsure = tuple(question("the robot", asked, c) for c in asked.confidence if c.unsure)
     claims: list[Claim] = []
-    if asked.task in ("cross", "patrol"):
+    errand = robot_errand(asked) if robot.stops or task == "cross" else None
+    if errand is not None and (robot.stops or errand.pickup is None):  # to the pick-up first, then the drop-off
+        claims.extend(errand_claims(errand, robot, world, seconds))
+    elif asked.task in ("cross", "patrol"):
         if asked.start:
             claims.append(_robot_start_claim(asked.start, robot, world))
         for v in asked.via:

@@ -20,6 +20,7 @@ from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
+from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.place_search import searched_for
 from grove_tui.language.people import People
@@ -337,7 +338,7 @@ class Clauses:
                 c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
                 scan.used.update(range(i, place.end))
         elif not s.after_determiner(i) and v in lx.OBJECT_VERBS and nxt not in ("round", "around"):  # a preposition
-            if nxt in lx.DETERMINERS or (nxt and s.index.knows(lemma(nxt))):
+            if nxt in lx.DETERMINERS or (nxt and (s.index.knows(lemma(nxt)) or self.places.names_place(obj))):
                 role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
                         else "obj:seen" if v in lx.SEEN_OBJECT_VERBS
                         else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
@@ -537,12 +538,11 @@ class Clauses:
     # ---- sentence-wide cues ----------------------------------------------------------------------
 
     def hazard(self, i: int) -> bool:
-        """A hazard named on its own ("Fire!", "a bomb scare", "smoke in the kitchen"), not as the
-        first word of a thing's name ("the fire exit", "the smoke detector")."""
+        """A hazard named on its own ("Fire!", "smoke in the kitchen"), not a thing's name ("the fire exit")."""
         s = self.s
         if hazard_cue(s, i):  # "a smell of burning", "the alarm goes off" (hazards.py)
             return True
-        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN"):
+        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN") or smoked_by_someone(s, i):
             return False
         return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")
 

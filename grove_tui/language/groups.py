@@ -151,8 +151,7 @@ class Groups:
 
     def _scenes(self, mentions: list[Mention], spans: list[tuple[int, int]], excluded: set[int],
                 robot_tokens: set[int]) -> dict[int, Clause]:
-        """Sentence -> the clause of its words before its first group (and of a sentence with no
-        people before it)."""
+        """Sentence -> the clause of its words before its first group (and of a people-less one before it)."""
         s = self.s
         claimed = {i for a, b in spans for i in range(a, b)}
         negated = self.clauses.negated_tokens()

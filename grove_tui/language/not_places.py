@@ -18,6 +18,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
+from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.times_and_manners import time_or_manner
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -33,6 +34,8 @@ _BUSY_ON = frozenset("call break duty shift lunch tea".split())
 
 def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
+    if no_place_thing(s, k, prep):
+        return True  # "through forty-odd pickers", "recording it on a phone": people, a device
     if cause_thing(s, k, prep, at):
         return True  # "smell of burning from the toaster"
     if time_or_manner(s, k, prep):

@@ -143,6 +143,8 @@ class PeopleObjects:
                            is None and not self.people.is_person_noun(noun)):
             return None
         p = at - 1
+        while p > 1 and s.w[p].dep in ("amod", "det") and s.w[p].head >= at:
+            p -= 1  # "guides an anxious first-time claimant": the mention's own words, still its object
         direct = True
         while p > 0 and p >= at - 6 and not s.is_punct(p) and s.low[p] not in lx.CLAUSE_STARTERS and \
                 (s.w[p].pos in ("ADP", "ADV", "DET", "ADJ", "PART") or s.low[p] in lx.ROBOT_PREPOSITIONS or

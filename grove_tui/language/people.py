@@ -37,6 +37,7 @@ from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.role_things import role_thing
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.where_people import describes_a_place
+from grove_tui.language.role_suffixes import collective_modifies_role, suffix_role
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
                                                 unlisted_subject)
 
@@ -101,6 +102,8 @@ class People:
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
+        if suffix_role(s, i):
+            return True  # "both quiz contestants leave", "a greeter by the leaflet stand"
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
                 told_as_he_or_she(s, i) or placed_person(s, i):  # "an old dear shrieks when she spots the robot"
@@ -329,7 +332,7 @@ class People:
                 while k + 1 < s.n and self.is_person_noun(k + 1) and s.lemma(k + 1) not in lx.IMPLIED_RANGES \
                         and not s.w[k + 1].tag.startswith("VB") and not (
                             not counted and k + 2 < s.n and s.w[k + 2].pos in ("ADP", "DET", "PUNCT")
-                            and not self._compound_of_next(k)):
+                            and not self._compound_of_next(k) and not collective_modifies_role(s, k)):
                     # "staff members", "security guards": the last noun heads the phrase; but in "Mum
                     # cooks in the kitchen" the second word is the verb
                     k += 1

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from grove_tui.language.grooming_words import plain_grooming
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.lexicon import PLACE_MODIFIERS
 from grove_tui.language.places import PlaceIndex, PlaceMatch
@@ -76,7 +77,7 @@ def plain_activity(activity: str) -> str:
     said = activity.lower()
     for pattern, plain in _IDIOMS:
         said = re.sub(r"\b" + pattern + r"\b", plain, said)
-    return said
+    return plain_grooming(said)
 
 
 def vehicle_stop(activity: str) -> str | None:

@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.boarding import boarding_place
+from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
@@ -236,7 +237,7 @@ class PlaceMeaning:
         activity = plain_activity("where " + self._active(first, end))
         meant = (None if vehicle_stop(activity) else self._by_activity(("place",), ("place",), activity)) or \
             rank_described(self.s.index, activity)
-        return (meant, end) if meant is not None else None
+        return (room_of_listed(self.s, self.people, first, end, meant), end) if meant is not None else None
 
     def _active(self, first: int, end: int) -> str:
         """The clause's words, a passive said as what people do there: "the old maps are kept" is "you keep
@@ -291,6 +292,8 @@ class PlaceMeaning:
         s = self.s
         if s.low[at] not in ("and", "or") or at + 1 >= s.n:
             return False
+        if joins_listed_things(s, self.people, first, at):
+            return True  # "where they sell tropical fish and rabbits": both things the clause's verb has
         verbs = [x for x in range(first, at) if s.is_verb(x) and s.low[x] not in _PASSIVE_AUX]
         if not verbs:
             return not s.is_verb(at + 1) and not self.people.is_person_noun(at + 1)

@@ -15,6 +15,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
+from grove_tui.language.particle_names import first_lemma
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
@@ -523,7 +524,6 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         centres = [world.zone(z).centroid for z in dict.fromkeys(self.context_zones)]
         cx = sum(c[0] for c in centres) / len(centres)
         cy = sum(c[1] for c in centres) / len(centres)
-
         def distance(m: PlaceMatch) -> float:
             door = world.find(m.name)
             x, y = getattr(door, "position", (cx, cy))
@@ -565,7 +565,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         k = self.past_part(k)
         words: list[str] = []
         for j in range(k, min(k + 4, s.n)):
-            if s.is_punct(j) or (words and s.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}):
+            if s.is_punct(j) and not s.hyphen_inside(j) or (words and s.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}):
                 break  # "queue at the copier": the name ends where another place phrase starts
             words.append(s.low[j])
         for n in range(len(words), 0, -1):
@@ -573,7 +573,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if match is not None and match.exact:
                 # the name starts here: "to pick up wheelchairs" is a purpose, though "wheelchairs" is a name
                 entry = s.index.entry(match.name)
-                first = next((lemma(w) for w in words[:n] if w not in lx.DETERMINERS), "")
+                first = first_lemma([w for w in words[:n] if w not in lx.DETERMINERS], lemma)  # "make-up": makeup
                 return entry is None or first in entry.tokens
         return False
 

@@ -33,6 +33,7 @@ from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
+from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
@@ -52,6 +53,10 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
 from grove_tui.language.apposed_members import without_apposed_members
+from grove_tui.language.collective_roles import with_collective_roles
+from grove_tui.language.counted_loads import without_counted_loads
+from grove_tui.language.fronted_size_parts import with_fronted_size_parts
+from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.carried_babies import without_carried_babies
@@ -77,6 +82,9 @@ from grove_tui.language.spelling import correct_places
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
 from grove_tui.language.they_all import all_go_on
+from grove_tui.language.talk_idioms import with_talk_idioms
+from grove_tui.language.got_up import got_up_and_went
+from grove_tui.language.clause_fixes import round30_clauses
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -95,8 +103,10 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
+    text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
+    text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
@@ -106,6 +116,10 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
+    text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
+    text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
+    text = with_little_ones(text)  # "leads the little one": "the little child"
+    text = with_fronted_size_parts(text)  # "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(text)  # "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
@@ -123,6 +137,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
+    reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
@@ -155,6 +170,7 @@ def _read(s: Sentence) -> PromptReading:
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
+    read = got_up_and_went(read)  # "a pair get up and pay at reception": they walk there
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
                          places=tuple(dict.fromkeys(places.named)), problems=tuple(dict.fromkeys(problems)))
 

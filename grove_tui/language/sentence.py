@@ -18,6 +18,7 @@ from functools import cached_property
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word
+from grove_tui.language.particle_names import known_compound
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.purpose_things import things_end
 from grove_tui.language.text import plain
@@ -138,8 +139,11 @@ class Sentence:
         before a verb ("the people inside leave": an adverb there)."""
         low = self.low
         w = low[i]
+        if i >= 2 and self.hyphen_inside(i - 1):
+            return None  # "check-in", "drop-off": the particle of a hyphenated name, no preposition
         if i + 1 < self.n and (self.w[i + 1].pos in ("VERB", "AUX") or verb_lemma(low[i + 1]) in lx.INTENT_VERBS) \
-                and not self.index.knows(lemma(low[i + 1])) and low[i + 1] not in lx.DETERMINERS:
+                and not self.index.knows(lemma(low[i + 1])) and low[i + 1] not in lx.DETERMINERS \
+                and not known_compound(low, i + 1, self.index.knows):  # "in make-up"
             return None
         two = tuple(low[i:i + 2])
         three = tuple(low[i:i + 3])

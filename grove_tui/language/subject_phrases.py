@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.fronted_words import fronted_only
 from grove_tui.language.parser import Word, known_word
 from grove_tui.language.tokens import verb_lemma
 
@@ -129,7 +130,7 @@ def verbs_after_names(words: list[Word]) -> list[Word]:
                                             nxt.lower not in _PARTICLES) or \
                 not _a_name(words, k - 1):
             continue
-        if any(x.pos in ("VERB", "AUX") and x.sentence == w.sentence for x in out[:k]):
+        if any(x.pos in ("VERB", "AUX") and x.sentence == w.sentence for x in out[:k]) and not fronted_only(out, k):
             continue  # a verb before it: "Tom meets Sue's parents at the door"
         base = verb_lemma(low)
         if base == low:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from grove_tui.language.particle_names import joined
 from grove_tui.language.lexicon import (EVACUATION_PHRASES, HUMAN_SUBJECT_VERBS, INTENT_VERBS, LEADING_VERBS,
                                         PERSON_NOUNS, ROBOT_CROSS_VERBS, ROBOT_FOLLOW_VERBS, ROBOT_PATROL_VERBS,
                                         ROBOT_PHRASES, ROBOT_VERBS, ROBOT_WAIT_VERBS, STOPWORDS, UNITS,
@@ -129,8 +130,14 @@ def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
     number word after it, read as its digits ("platform one" is "platform 1", not any platform), and
     "it" before another word, which is information technology there ("the IT room"), not a pronoun."""
     out: list[str] = []
+    skip = 0
     for k, w in enumerate(ws):
-        if k > 0 and w in UNITS and UNITS[w] > 0:
+        if k < skip or w == "-":
+            continue  # "check-in": the hyphen is no word of the name
+        if (one := joined(ws, k)) is not None:
+            out.append(one[0])  # "make-up room": one word "makeup" (language/particle_names.py)
+            skip = one[1]
+        elif k > 0 and w in UNITS and UNITS[w] > 0:
             out.append(str(UNITS[w]))
         elif w == "it" and k + 1 < len(ws):
             out.append(w)

@@ -22,7 +22,9 @@ def describes_a_place(s: Sentence, at: int) -> bool:
     modifiers, no count, between "where" and it."""
     j = at - 1
     while j >= 0 and j >= at - 3 and s.low[j] != "where":
-        if s.w[j].pos not in _BETWEEN or number_at(s, j) is not None or s.low[j] in lx.CLAUSE_STARTERS:
+        compound = s.w[j].pos == "NOUN" and s.w[j + 1].pos == "NOUN"  # "where the pottery classes are held"
+        if s.w[j].pos not in _BETWEEN and not compound or number_at(s, j) is not None or \
+                s.low[j] in lx.CLAUSE_STARTERS:
             return False
         j -= 1
     return (0 < j < at - 1 and s.low[j] == "where" and s.w[j - 1].pos in ("NOUN", "PROPN")

@@ -143,6 +143,9 @@ class RobotSpec:
     # people in `follows` (agent ids).
     task: str = "cross"
     follows: tuple[int, ...] = ()
+    # Where on its path a "cross" stops on the way, and for how long: (x, y, seconds), a point of `path`
+    # ("carries books from the returns desk to the reading room": it stands at the desk to pick them up)
+    stops: tuple[tuple[float, float, float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -459,6 +462,10 @@ def _robot_to_dict(robot: RobotSpec) -> YamlDict:
         del data["follows"]
     else:
         data["follows"] = list(robot.follows)
+    if not robot.stops:
+        del data["stops"]
+    else:
+        data["stops"] = [list(s) for s in robot.stops]
     return data
 
 
@@ -478,12 +485,21 @@ def _robot_from_dict(data: object, where: str) -> RobotSpec:
             task=_robot_task(data.get("task", "cross"), f"{where}.task"),
             follows=tuple(_integer(i, f"{where}.follows[{j}]", 1, 10 * MAX_AGENTS)
                           for j, i in enumerate(data.get("follows") or [])),
+            stops=tuple(_stop(s, f"{where}.stops[{j}]") for j, s in enumerate(data.get("stops") or [])),
         )
     except KeyError as exc:
         raise ScenarioError(f"{where}: missing key {exc.args[0]!r}") from None
 
 
 ROBOT_TASKS = ("cross", "wait", "patrol", "follow")
+ROBOT_STOP_SECONDS = (0.0, 3600.0)
+
+
+def _stop(value: object, where: str) -> tuple[float, float, float]:
+    if not isinstance(value, list) or len(value) != 3:
+        raise ScenarioError(f"{where}: expected [x, y, seconds]")
+    x, y = _point(value[:2], where)
+    return (x, y, _number(value[2], f"{where}[2]", *ROBOT_STOP_SECONDS))
 
 
 def _robot_task(value: object, where: str) -> str:

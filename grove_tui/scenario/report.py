@@ -58,7 +58,9 @@ GROUP_CLAIMS = (
     "pace",            # their walking speed is `pace` (slow/fast), between `low` and `high` m/s
     "keep_out",        # they never set foot in `zone` (or within `radius` of `point`): "avoiding the lifts"
 )
-ROBOT_CLAIMS = ("robot_reach", "robot_via", "robot_stay", "robot_patrol", "robot_follow_person")
+ROBOT_CLAIMS = ("robot_reach", "robot_via", "robot_stay", "robot_patrol", "robot_follow_person",
+                "robot_pickup",    # it stands `seconds` at the pick-up place of its errand
+                "robot_dropoff")   # it gets to the drop-off place after that stop, and stands there
 CLAIM_KINDS = GROUP_CLAIMS + ROBOT_CLAIMS
 
 Point = tuple[float, float]

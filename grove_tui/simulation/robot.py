@@ -46,11 +46,15 @@ class RobotDriver:
         self.follows = tuple(getattr(spec, "follows", ()) or ())
         self._next_follow = 0.0
         self._outbound = True
+        # a "cross" that stops on the way (a pick-up): its path in legs, each but the last ending at a stop
+        self.legs, self.holds = split_at_stops(self.path, getattr(spec, "stops", ()) or ()) \
+            if self.task == "cross" else ([self.path], [])
+        self._held_until: float | None = None
 
     def initial_path(self) -> np.ndarray:
         if self.task == "wait" or self.task == "follow":
             return self.path[:1]
-        return self.path
+        return self.legs[0] if self.holds else self.path
 
     def update(self) -> None:
         crowd = self.crowd
@@ -69,7 +73,22 @@ class RobotDriver:
         elif self.task == "follow" and now >= self._next_follow:
             self._next_follow = now + FOLLOW_REPLAN
             self._follow()
+        elif self.holds and crowd.robot_path_done:
+            self._stop_on_the_way(now)
         self._collision_monitor(now)
+
+    def _stop_on_the_way(self, now: float) -> None:
+        """At the end of a leg that ends at a stop: stand there its seconds, then drive the next leg."""
+        if self._held_until is None:
+            self._held_until = now + self.holds[0]
+            self.context.events.append((now, ROBOT_ID, "robot_stop", f"{self.holds[0]:g}"))
+        if now + 1e-9 < self._held_until:
+            return
+        self._held_until = None
+        self.holds.pop(0)
+        self.legs.pop(0)
+        self.context.events.append((now, ROBOT_ID, "robot_stop_done", ""))
+        self.crowd.set_robot_path(self.legs[0])
 
     def _follow(self) -> None:
         ctx, crowd = self.context, self.crowd
@@ -123,6 +142,26 @@ class RobotDriver:
 
     def _moving_on(self) -> bool:
         """Whether the robot still has somewhere to drive (a robot standing at its goal blocks nobody)."""
-        if self.task == "wait":
+        if self.task == "wait" or self._held_until is not None:
             return False
         return not self.crowd.robot_path_done
+
+
+def split_at_stops(path: np.ndarray, stops: tuple[tuple[float, float, float], ...]) -> tuple[list[np.ndarray], list[float]]:
+    """The path cut at the vertex nearest each stop (in path order), and each stop's seconds: legs[i] ends
+    where the robot stands holds[i] seconds; the last leg ends at the goal."""
+    legs: list[np.ndarray] = []
+    holds: list[float] = []
+    first = 0
+    for x, y, seconds in stops:
+        if path.shape[0] - first < 2:
+            break
+        rest = path[first:]
+        j = first + int(np.argmin(np.hypot(rest[:, 0] - x, rest[:, 1] - y)))
+        if j <= first or j >= path.shape[0] - 1:
+            continue
+        legs.append(path[first:j + 1])
+        holds.append(float(seconds))
+        first = j
+    legs.append(path[first:])
+    return legs, holds

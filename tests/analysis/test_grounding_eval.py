@@ -29,7 +29,7 @@ def test_the_public_suite_is_wide():
     assert {c.world for c in cases} >= {"hospital", "office", "residential", "airport", "station", "museum", "mall"}
     assert {c.preset for c in cases} == {"emergency", "queuing", "normal"}
     reactions = {v for c in cases for g in c.groups for k, v in g.expect if k == "robot"}
-    assert reactions == {"follow", "approach", "block", "avoid", "look"}
+    assert reactions == {"follow", "approach", "block", "avoid", "look", "stare"}
     assert {k for c in cases for k, _ in c.robot} >= {"reach", "stay", "patrol", "follow", "passes"}
     assert sum(len(c.groups) > 1 for c in cases) >= 15
 

@@ -2,7 +2,7 @@
 
 Deterministic by construction: fixed seed, a fake LLM with a fixed answer, scripted pipeline timings,
 simulated time only (no wall clock), cursor blink off. Accept intended changes with
-`python -m pytest tests/tui/test_tui_snapshots.py --snapshot-update` and review the SVGs.
+`python -m pytest -n 0 tests/tui/test_tui_snapshots.py --snapshot-update` and review the SVGs.
 """
 
 from __future__ import annotations

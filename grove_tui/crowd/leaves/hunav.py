@@ -16,6 +16,7 @@ from typing import Literal
 
 from grove_tui.crowd.context import Point, SimContext, Snapshot
 from grove_tui.crowd.coordination import Conversation
+from grove_tui.crowd.keep_in_place import clear_of_parked_robot, home_zone, in_zone, target_in_place
 from grove_tui.crowd.leaves.base import (
     FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, QuietSpec, angle_diff,
 )
@@ -674,17 +675,49 @@ class BlockAgent(_Timed):
 
 
 class AvoidRobot(_Timed):
-    __slots__ = ()
+    """Keeps away inside the zone it stood in when the robot came, and lets the routine go on once the
+    robot stands at the end of its drive a personal distance off (crowd/keep_in_place.py)."""
+
+    __slots__ = ("home",)
+    home: str | None
     ROBOT_EVENT = True
     LABEL = "keeping away from the robot"
 
+    def on_start(self) -> int:
+        if clear_of_parked_robot(self.sim, self.sim.pos[self.row], self.get_input("safe_distance")):
+            return FAILURE  # the robot has gone: the routine goes on
+        return super().on_start()
+
+    def on_running(self) -> int:
+        if clear_of_parked_robot(self.sim, self.sim.pos[self.row], self.get_input("safe_distance")):
+            self.restore_intents()
+            return SUCCESS
+        return super().on_running()
+
+    def setup(self) -> None:
+        super().setup()
+        self.home = None
+
     def begin(self) -> None:
+        self.home = home_zone(self.sim, self.sim.pos[self.row])
         self.sim.crowd.set_robot_interaction(self.row, ROBOT_FEARED)
 
     def step(self) -> None:
-        if self.sim.robot is None:
+        robot = self.sim.robot
+        if robot is None:
             return
-        _flee(self, self.get_input("safe_distance"), self.get_input("runaway_vel"))
+        safe, speed = self.get_input("safe_distance"), self.get_input("runaway_vel")
+        here = self.sim.pos[self.row]
+        if math.hypot(here[0] - robot[0], here[1] - robot[1]) >= safe and \
+                (self.home is None or in_zone(self.sim, self.home, here)):
+            self.face("robot")
+            return
+        # too near, or pushed out of their place while standing clear of it: to a clear point of the place
+        target = target_in_place(self.sim, self.home, here, (robot[0], robot[1]), safe)
+        if target is None:
+            _flee(self, safe, speed)
+        else:
+            self.walk_to(target, speed)
 
 
 class FollowAgent(_Timed):

@@ -1,0 +1,26 @@
+"""A zone cleared in the passive (round 30): "the sixty travellers stood there are cleared off it",
+"the shoppers in the food court get cleared out of it", "everyone on the platform is cleared from it".
+The people are moved out of where they are: they evacuate, starting from the place they were read at.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import replace
+
+from grove_tui.language.model import GroupReading
+
+_CLEARED = re.compile(r"\b(?:is|are|was|were|be|been|being|get|gets|got|getting|gotten)\s+(?:\w+\s+)?"
+                      r"(?:cleared|hustled|shooed|turfed|kicked|evacuated)\s+"
+                      r"(?:off|out|out\s+of|from|away\s+from)\b", re.I)
+
+
+def cleared_away(groups: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
+    """Groups cleared off the place they wait at evacuate from it."""
+    out: list[GroupReading] = []
+    for g in groups:
+        if g.intent == "wait" and g.location is not None and g.destination is None and _CLEARED.search(g.text):
+            g = replace(g, intent="evacuate", start=g.location, location=None, wait_seconds=None)
+        out.append(g)
+    return tuple(out)
