@@ -27,7 +27,7 @@ import numpy as np
 import shapely
 
 from grove_tui.bt.format.document import TreeDocument, TreeElement
-from grove_tui.generation.block_at_place import posts_on_the_route
+from grove_tui.generation.block_at_place import PostedAgent, PostedGroup, posts_on_the_route
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.reading import GroupReading
 from grove_tui.navigation.grid import OccupancyGrid
@@ -150,25 +150,7 @@ def posts_beside_the_route(world: World, grid: OccupancyGrid, place: str, route:
     return None
 
 
-class _Agent(Protocol):
-    @property
-    def id(self) -> int: ...
-    @property
-    def group_index(self) -> int: ...
-    @property
-    def document(self) -> TreeDocument | None: ...
-
-
-class _Group(Protocol):
-    @property
-    def index(self) -> int: ...
-    @property
-    def label(self) -> str: ...
-    @property
-    def tree(self) -> DraftNode: ...
-
-
-def posts_for_approachers(world: World, grid: OccupancyGrid, groups: Sequence[_Group], agents: Sequence[_Agent],
+def posts_for_approachers(world: World, grid: OccupancyGrid, groups: Sequence[PostedGroup], agents: Sequence[PostedAgent],
                           route: Sequence[Point] | None, notes: list[str]) -> dict[int, Point]:
     """Agent id -> the post of each person who approaches the robot at a place: beside where the robot's
     route passes the place; people whose place the route misses keep the place's own point (a note says so)."""
@@ -187,7 +169,7 @@ def posts_for_approachers(world: World, grid: OccupancyGrid, groups: Sequence[_G
     return out
 
 
-def rooms_to_pass(world: World, groups: Sequence[_Group], route: Sequence[Point] | None) -> list[str]:
+def rooms_to_pass(world: World, groups: Sequence[PostedGroup], route: Sequence[Point] | None) -> list[str]:
     """The zones of the places people approach the robot at that its route does not pass."""
     rooms: list[str] = []
     for g in groups:

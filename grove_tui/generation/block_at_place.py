@@ -192,7 +192,9 @@ def at_the_blocked_place(claim: Claim, reading: GroupReading, group: _Planned, w
                    radius=PLACE_RADIUS)
 
 
-class _Agent(Protocol):
+class PostedAgent(Protocol):
+    """An agent as the post placers read it (reconcile's agents)."""
+
     @property
     def id(self) -> int: ...
     @property
@@ -201,7 +203,9 @@ class _Agent(Protocol):
     def document(self) -> TreeDocument | None: ...
 
 
-class _Group(Protocol):
+class PostedGroup(Protocol):
+    """A draft group as the post placers read it."""
+
     @property
     def index(self) -> int: ...
     @property
@@ -210,7 +214,7 @@ class _Group(Protocol):
     def tree(self) -> DraftNode: ...
 
 
-def posts_for_blockers(world: World, grid: OccupancyGrid, groups: Sequence[_Group], agents: Sequence[_Agent],
+def posts_for_blockers(world: World, grid: OccupancyGrid, groups: Sequence[PostedGroup], agents: Sequence[PostedAgent],
                        route: Sequence[Point] | None, notes: list[str]) -> dict[int, Point]:
     """Agent id -> the post each person who blocks the robot at a place holds: where the robot's route passes
     the place, else the place's own point (a note says the robot does not come by)."""
@@ -240,7 +244,7 @@ def set_post(document: TreeDocument, post: Point | None) -> None:
         _set_post(document, post)
 
 
-def rooms_to_pass(world: World, groups: Sequence[_Group], route: Sequence[Point] | None) -> list[str]:
+def rooms_to_pass(world: World, groups: Sequence[PostedGroup], route: Sequence[Point] | None) -> list[str]:
     """The zones of the places people block the robot at that its route does not pass: "a steward blocks
     the robot at the rinkside" has it come by the rinkside, or there is nothing to block there."""
     rooms: list[str] = []
