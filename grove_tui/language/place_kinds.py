@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language.places import PlaceIndex
+from grove_tui.language.sport_kinds import SPORT_KINDS, only_the_head
 from grove_tui.language.trade_places import TRADE_PLACES
 
 # Facilities people name by their kind: each is a kind of place of its own, never a word for rooms in
@@ -25,7 +26,7 @@ mortuary morgue maternity_ward maternity labour_ward
 music_room game_room art_room art_studio craft_room sewing_room playroom play_room dance_studio dance_hall
 recording_studio billiard_room snooker_room trophy_room darkroom screening_room
 baby_changing baby_change nappy_change parent_room first_aid lost_property
-""".split()) | TRADE_PLACES
+""".split()) | TRADE_PLACES | SPORT_KINDS
 # A name this near the kind's word in meaning is that kind under another word ("creche": "nursery").
 SYNONYM_NEAR = 0.75
 
@@ -43,7 +44,7 @@ def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
             return None  # the world has it ("bowling alley" where an alley is a bowling alley), or a synonym
         said = kind.replace("_", " ")
         near = index.by_meaning(said)
-        if near and near[0].similarity >= SYNONYM_NEAR:
+        if near and near[0].similarity >= SYNONYM_NEAR and not only_the_head(kind, near[0].nearest):
             return None
         return said
     return None

@@ -48,3 +48,33 @@ def test_hyphenated_names_read_already_keep_their_reading(read, world, prompt, s
 ])
 def test_make_as_a_verb_stays_a_verb(read, world, prompt, destination):
     assert read(world, prompt).groups[0].destination == destination
+
+
+# ---- a named kind of room for sport the world lacks: refused, though a hall is near in meaning -----------
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("community_centre", "Eight lads with footballs walk from the foyer to the sports hall.", "sports hall"),
+    ("community_centre", "Two coaches carry nets from the kitchen to the sports hall.", "sports hall"),
+    ("cathedral", "A verger walks from the nave to the sports hall.", "sports hall"),
+])
+def test_a_sport_room_the_world_lacks_is_refused(read, world, prompt, unknown):
+    assert unknown in read(world, prompt).unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("community_centre", "Two mums head from the kitchen to the gym.", "gym"),
+    ("office", "A manager walks from the open office to the gym.", "gym"),
+    ("residential", "Dad goes from the kitchen to the swimming pool.", "swimming pool"),
+    ("courthouse", "Two ushers walk from the lobby to the squash court.", "squash court"),
+])
+def test_other_sport_rooms_the_world_lacks_stay_refused(read, world, prompt, unknown):
+    assert unknown in read(world, prompt).unknown_places
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("community_centre", "Eight lads walk from the foyer to the main hall.", "main_hall"),
+    ("primary_school", "A teacher walks from the staff room to the sports hall.", "school_hall"),
+])
+def test_halls_the_world_has_are_still_read(read, world, prompt, destination):
+    reading = read(world, prompt)
+    assert reading.unknown_places == () and reading.groups[0].destination == destination
