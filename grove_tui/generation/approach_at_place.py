@@ -27,7 +27,7 @@ import numpy as np
 import shapely
 
 from grove_tui.bt.format.document import TreeDocument, TreeElement
-from grove_tui.generation.block_at_place import PostedAgent, PostedGroup, posts_on_the_route
+from grove_tui.generation.block_at_place import PostedAgent, PostedGroup, point_post, posts_on_the_route
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.reading import GroupReading
 from grove_tui.navigation.grid import OccupancyGrid
@@ -85,17 +85,7 @@ def set_post(document: TreeDocument, post: Point | None) -> None:
     found = _approach(document) if post is not None else None
     if found is None or post is None:
         return
-    check, goto = found
-    check.set("target_x", f"{post[0]:.3f}")
-    check.set("target_y", f"{post[1]:.3f}")
-    check.attributes.pop("goal_id", None)
-    if goto is not None:
-        goto.set("x", f"{post[0]:.3f}")
-        goto.set("y", f"{post[1]:.3f}")
-        for port, value in (("target_x", post[0]), ("target_y", post[1])):
-            if goto.get(port) is not None:
-                goto.set(port, f"{value:.3f}")
-        goto.attributes.pop("goal_id", None)
+    point_post(*found, post)
 
 
 def _on_the_route(world: World, place: str, route: Sequence[Point] | None) -> Point | None:

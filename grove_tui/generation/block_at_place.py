@@ -83,9 +83,12 @@ def _block(document: TreeDocument) -> tuple[TreeElement, TreeElement | None] | N
 
 def _set_post(document: TreeDocument, post: Point) -> None:
     found = _block(document)
-    if found is None:
-        return
-    check, goto = found
+    if found is not None:
+        point_post(*found, post)
+
+
+def point_post(check: TreeElement, goto: TreeElement | None, post: Point) -> None:
+    """Point a held post's IsAtPosition and the GoTo that takes the person there at `post`, in place."""
     check.set("target_x", f"{post[0]:.3f}")
     check.set("target_y", f"{post[1]:.3f}")
     check.attributes.pop("goal_id", None)
