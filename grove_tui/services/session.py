@@ -30,6 +30,8 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, TypedDict
 
 from grove_tui.errors import (
+    EMPTY_PROMPT_HINT,
+    LONG_PROMPT_HINT,
     EXIT_CANCELLED,
     EXIT_MODEL_ERROR,
     BadInputError,
@@ -48,6 +50,7 @@ from grove_tui.generation.events import Event as Event
 from grove_tui.generation.events import StageFinished as StageFinished
 from grove_tui.generation.events import StageStarted as StageStarted
 from grove_tui.generation.events import TokenStreamed as TokenStreamed
+from grove_tui.generation.requests import MAX_PROMPT_CHARS
 from grove_tui.generation.requests import RobotRequest as RobotRequest
 
 if TYPE_CHECKING:
@@ -415,7 +418,11 @@ class GroveSession:
     def check_request(self, request: ScenarioRequest) -> tuple[World, Preset]:
         """World and preset of a request, and a non-empty prompt, before any model loads."""
         if not request.prompt or not request.prompt.strip():
-            raise PromptError("the prompt is empty: describe the people and what they do")
+            raise PromptError("the prompt is empty: describe the people and what they do", hint=EMPTY_PROMPT_HINT)
+        folded = " ".join(request.prompt.split())
+        if len(folded) > MAX_PROMPT_CHARS:
+            raise PromptError(f"the prompt is {len(folded)} characters long; keep it under {MAX_PROMPT_CHARS}",
+                              hint=LONG_PROMPT_HINT)
         try:
             request.prompt.encode("utf-8")
         except UnicodeEncodeError as exc:

@@ -52,6 +52,18 @@ def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, embedded
     assert not out.exists() and list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("prompt, message, hint", [
+    ("   ", "the prompt is empty", "Say who is there, how many and what they do"),
+    ("people walk " * 200, "characters long", "Say it in one or two sentences"),
+], ids=["empty", "overlong"])
+def test_an_empty_or_overlong_prompt_gets_a_hint_about_itself(tmp_path, embedded_path, prompt, message, hint):
+    result = invoke(generate_args(tmp_path / "bundle", embedded_path, prompt=prompt))
+    assert result.exit_code == EXIT_BAD_INPUT
+    assert message in result.stderr and hint in result.stderr
+    assert "fewer people" not in result.stderr
+    assert not (tmp_path / "bundle").exists()
+
+
 @pytest.mark.slow
 def test_world_by_path(tmp_path, embedded_path):
     from grove_tui.paths import worlds_dir
