@@ -99,3 +99,23 @@ def test_students_who_keep_away_from_the_robot_stay_in_their_room(library, tmp_p
     checked = {c.kind: c for c in run.run(run.report.length.seconds).groups[0].claims}
     assert checked["stay"].status == HOLDS, checked["stay"].evidence
     assert checked["robot_avoid"].status == HOLDS, checked["robot_avoid"].evidence
+
+
+def test_the_apps_run_does_not_end_before_the_scenarios_length():
+    from types import SimpleNamespace
+
+    from grove_tui.tui.screens.sim_controller import SimulationController
+
+    class Done:  # every person is done with their tree from the start; the robot's round goes on
+        dt, time = 0.05, 5.0
+
+        def run_state(self):
+            return SimpleNamespace(over=True, agents=3, out=0)
+
+    sim = Done()
+    controller = SimulationController(sim, run_until=150.0)  # type: ignore[arg-type]
+    controller._check_end()
+    assert controller.ended is None
+    sim.time = 150.0
+    controller._check_end()
+    assert controller.ended is not None and controller.ended.t == 150.0
