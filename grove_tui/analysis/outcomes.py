@@ -1137,11 +1137,14 @@ class _RobotPlaceProbe(_Probe):
         self.there = 0
         self.seen_robot = False
         self.last_t = 0.0
+        self.trail = _Trail()  # where the robot drove over the run's last stretch: still on its way?
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
             return
         self.seen_robot = True
+        if self.claim.kind != "robot_stay" and math.isinf(self.first):
+            self.trail.add(f.t, f.robot[:, None, :2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])
@@ -1163,6 +1166,12 @@ class _RobotPlaceProbe(_Probe):
             return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
                 f"never passed through {self.where()}"
         return HOLDS, f"{verb} {self.where()} at {_when(self.first)}"
+
+    def still_on_the_way(self) -> int:
+        # a robot slowed by the people it leads or drives through, still driving when the run ended
+        if self.claim.kind == "robot_stay" or not math.isinf(self.first):
+            return 0
+        return self.trail.walking(np.ones(1, dtype=bool))
 
     def _stay(self) -> tuple[str, str]:
         asked = self.claim.seconds
@@ -1265,11 +1274,13 @@ class _RobotPatrolProbe(_Probe):
         self.start: np.ndarray | None = None
         self.far_at = math.inf
         self.back_at = math.inf
+        self.trail = _Trail()
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
             return
         xy = f.robot[:, :2]
+        self.trail.add(f.t, xy[:, None, :])
         if self.start is None:
             self.start = xy[0].copy()
         far = self.at_place(xy[:, None, :])[:, 0]
@@ -1288,6 +1299,10 @@ class _RobotPatrolProbe(_Probe):
         if math.isinf(self.back_at):
             return FAILS, f"reached {self.where()} at {_when(self.far_at)} but did not come back"
         return HOLDS, f"went to {self.where()} ({_when(self.far_at)}) and back ({_when(self.back_at)})"
+
+    def still_on_the_way(self) -> int:
+        # out to the far end or back, slowed by people, and still driving when the run ended
+        return 0 if not math.isinf(self.back_at) else self.trail.walking(np.ones(1, dtype=bool))
 
 
 class _RobotPassesProbe(_Probe):

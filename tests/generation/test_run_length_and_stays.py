@@ -119,3 +119,16 @@ def test_the_apps_run_does_not_end_before_the_scenarios_length():
     sim.time = 150.0
     controller._check_end()
     assert controller.ended is not None and controller.ended.t == 150.0
+
+
+def test_a_robot_still_driving_to_its_goal_when_the_run_ends_is_not_checked(patrol, library):
+    # "the robot leads them to the nearest exit": slowed by the 40 people it leads, it was 3 m from the door
+    # when the run ended, driving on; the estimate (without the crowd) had passed, and it said "never reached"
+    from dataclasses import replace
+
+    GroveSession().simulate(patrol.bundle, 25.0)
+    robot = patrol.report.robot
+    short = replace(patrol.report, robot=replace(robot, claims=tuple(
+        replace(c, needs_seconds=12.0) for c in robot.claims if c.kind == "robot_patrol")))
+    claim = patrol.check(short, library).robot.claims[0]
+    assert claim.status == UNCHECKED and "run it longer" in claim.evidence, claim.evidence
