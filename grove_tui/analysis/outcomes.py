@@ -480,7 +480,9 @@ class _StayProbe(_Probe):
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
         since = _judged_frames(f.t, self.arrived, self.claim.seconds)
-        self.after += (since & present).sum(axis=0)
+        # "most of the run": one who left the building after arriving (pushed out by a crowd, out of an
+        # exit while keeping away from the robot) no longer stays, so the frames they are gone count
+        self.after += since.sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
     def _add_windows(self, t: np.ndarray, inside: np.ndarray, present: np.ndarray, seconds: float) -> None:

@@ -132,3 +132,4 @@ def test_a_robot_still_driving_to_its_goal_when_the_run_ends_is_not_checked(patr
         replace(c, needs_seconds=12.0) for c in robot.claims if c.kind == "robot_patrol")))
     claim = patrol.check(short, library).robot.claims[0]
     assert claim.status == UNCHECKED and "run it longer" in claim.evidence, claim.evidence
+
