@@ -1128,6 +1128,19 @@ class _FollowPersonProbe(_Probe):
 
 # the robot's own claims ---------------------------------------------------------------------------
 
+def _robot_driving(trail: _Trail) -> int:
+    """1 when the robot is still driving at the end of the frames: it went ON_THE_WAY_WALKED over the last
+    stretch and is moving in its last second (one parked at the far end after a drive is not)."""
+    if not trail.walking(np.ones(1, dtype=bool)):
+        return 0
+    samples = [(t, p) for t, p in trail.samples if t >= trail.samples[-1][0] - 1.0]
+    if len(samples) < 2:
+        return 0
+    (t0, p0), (t1, p1) = samples[0], samples[-1]
+    speed = float(np.hypot(*(p1[0] - p0[0]))) / max(t1 - t0, 1e-6)
+    return 1 if speed >= ROBOT_MOVING else 0
+
+
 class _RobotPlaceProbe(_Probe):
     """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time
     (with asked seconds, nearly all of them from its arrival, and the run must cover them)."""
@@ -1173,7 +1186,7 @@ class _RobotPlaceProbe(_Probe):
         # a robot slowed by the people it leads or drives through, still driving when the run ended
         if self.claim.kind == "robot_stay" or not math.isinf(self.first):
             return 0
-        return self.trail.walking(np.ones(1, dtype=bool))
+        return _robot_driving(self.trail)
 
     def _stay(self) -> tuple[str, str]:
         asked = self.claim.seconds
@@ -1304,7 +1317,7 @@ class _RobotPatrolProbe(_Probe):
 
     def still_on_the_way(self) -> int:
         # out to the far end or back, slowed by people, and still driving when the run ended
-        return 0 if not math.isinf(self.back_at) else self.trail.walking(np.ones(1, dtype=bool))
+        return 0 if not math.isinf(self.back_at) else _robot_driving(self.trail)
 
 
 class _RobotPassesProbe(_Probe):
