@@ -480,7 +480,9 @@ class _StayProbe(_Probe):
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
         since = _judged_frames(f.t, self.arrived, self.claim.seconds)
-        self.after += (since & present).sum(axis=0)
+        # "most of the run": one who left the building after arriving (pushed out by a crowd, out of an
+        # exit while keeping away from the robot) no longer stays, so the frames they are gone count
+        self.after += since.sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
     def _add_windows(self, t: np.ndarray, inside: np.ndarray, present: np.ndarray, seconds: float) -> None:
@@ -1126,6 +1128,19 @@ class _FollowPersonProbe(_Probe):
 
 # the robot's own claims ---------------------------------------------------------------------------
 
+def _robot_driving(trail: _Trail) -> int:
+    """1 when the robot is still driving at the end of the frames: it went ON_THE_WAY_WALKED over the last
+    stretch and is moving in its last second (one parked at the far end after a drive is not)."""
+    if not trail.walking(np.ones(1, dtype=bool)):
+        return 0
+    samples = [(t, p) for t, p in trail.samples if t >= trail.samples[-1][0] - 1.0]
+    if len(samples) < 2:
+        return 0
+    (t0, p0), (t1, p1) = samples[0], samples[-1]
+    speed = float(np.hypot(*(p1[0] - p0[0]))) / max(t1 - t0, 1e-6)
+    return 1 if speed >= ROBOT_MOVING else 0
+
+
 class _RobotPlaceProbe(_Probe):
     """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time
     (with asked seconds, nearly all of them from its arrival, and the run must cover them)."""
@@ -1137,11 +1152,14 @@ class _RobotPlaceProbe(_Probe):
         self.there = 0
         self.seen_robot = False
         self.last_t = 0.0
+        self.trail = _Trail()  # where the robot drove over the run's last stretch: still on its way?
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
             return
         self.seen_robot = True
+        if self.claim.kind != "robot_stay" and math.isinf(self.first):
+            self.trail.add(f.t, f.robot[:, None, :2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])
@@ -1163,6 +1181,12 @@ class _RobotPlaceProbe(_Probe):
             return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
                 f"never passed through {self.where()}"
         return HOLDS, f"{verb} {self.where()} at {_when(self.first)}"
+
+    def still_on_the_way(self) -> int:
+        # a robot slowed by the people it leads or drives through, still driving when the run ended
+        if self.claim.kind == "robot_stay" or not math.isinf(self.first):
+            return 0
+        return _robot_driving(self.trail)
 
     def _stay(self) -> tuple[str, str]:
         asked = self.claim.seconds
@@ -1265,11 +1289,13 @@ class _RobotPatrolProbe(_Probe):
         self.start: np.ndarray | None = None
         self.far_at = math.inf
         self.back_at = math.inf
+        self.trail = _Trail()
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
             return
         xy = f.robot[:, :2]
+        self.trail.add(f.t, xy[:, None, :])
         if self.start is None:
             self.start = xy[0].copy()
         far = self.at_place(xy[:, None, :])[:, 0]
@@ -1288,6 +1314,10 @@ class _RobotPatrolProbe(_Probe):
         if math.isinf(self.back_at):
             return FAILS, f"reached {self.where()} at {_when(self.far_at)} but did not come back"
         return HOLDS, f"went to {self.where()} ({_when(self.far_at)}) and back ({_when(self.back_at)})"
+
+    def still_on_the_way(self) -> int:
+        # out to the far end or back, slowed by people, and still driving when the run ended
+        return 0 if not math.isinf(self.back_at) else _robot_driving(self.trail)
 
 
 class _RobotPassesProbe(_Probe):

@@ -39,6 +39,8 @@ from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
+from grove_tui.generation.run_length import with_run_length
+from grove_tui.generation.stay_claims import stay_claims
 from grove_tui.generation.robot_errand import errand_claims
 from grove_tui.generation.robot_passing import passed_zones
 from grove_tui.language.robot_errands import robot_errand
@@ -922,8 +924,9 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                                                  1.3 * seconds + 10.0),))
     if robot_row is not None:
         questions += robot_row.unsure
-    return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),
-                           tuple(reading.corrections), robot_row, tuple(dict.fromkeys(questions)))
+    return with_run_length(GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)),
+                                           tuple(repairs), tuple(reading.corrections), robot_row,
+                                           tuple(dict.fromkeys(questions))))
 
 
 def reading_questions(reading: PromptReading) -> list[str]:
@@ -1107,7 +1110,9 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
     for name in places_kept_out(world, r):
         # "..., avoiding the lifts": never there, all the run long
         claims.append(_keep_out_claim(world, name, g.count))
-    return claims
+    return stay_claims(claims, reaction=r.robot_interaction, place=r.location or r.start, spawn=g.spawn, world=world,
+                       eta=timing.eta, seconds=float(r.wait_seconds) if r.wait_seconds else None,
+                       talks=base == "converse", goes_on=walks_on_to(r, world) is not None or bool(r.destination))
 
 
 def _onward_claims(r: GroupReading, g: PlannedGroup, world: World, timing: _Timing, n: int,
@@ -1329,6 +1334,11 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
             claim = _place_claim(kind, asked.destination, plan_text, world, 1,
                                  (2.6 if kind == "robot_patrol" else 1.3) * seconds + 10.0)
             claims.append(claim)
+        elif asked.task == "patrol" and asked.location and asked.via and world.zone_of_place(asked.location):
+            # "patrols between the entrance and the reading tables": out to the place it names and back,
+            # checked at that place, never at wherever its planned round happens to end
+            claims.append(_place_claim("robot_patrol", asked.location, f"patrol to {asked.location} and back",
+                                       world, 1, 2.6 * seconds + 10.0))
         elif asked.task == "patrol":
             claims.append(Claim("robot_patrol", asked.location or "its round", "drive its round and back",
                                 point=(round(robot.goal[0], 3), round(robot.goal[1], 3)), radius=1.0,
