@@ -37,6 +37,7 @@ from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
+from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
@@ -109,6 +110,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
+    text = with_chat_articles(text)  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated

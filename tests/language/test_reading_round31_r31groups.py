@@ -105,3 +105,32 @@ def test_a_thing_done_to_someone_is_no_group(read, world, prompt, who):
 def test_a_person_done_to_in_such_a_clause_is_kept(read):
     groups = read("hospital", "A nurse waits at the pharmacy, and his son taken to the cafeteria by a porter.").groups
     assert any("son" in g.who for g in groups)
+
+
+# ---- 5. a person typed bare as an item of a chat list ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,whos,places", [
+    ("car_showroom", "couple checking out the hatchback, sales guy hovering nr the brochure stand",
+     ["a couple", "a sales guy"], [None, "brochure_stand"]),
+    ("hospital", "nurse at pharmacy, two visitors sitting in the cafeteria", ["a nurse", "two visitors"],
+     ["pharmacy", "cafeteria"]),
+    ("hospital", "couple waiting at pharmacy, porter hovering near the lifts", ["a couple", "a porter"],
+     ["pharmacy", "elevator_hall"]),
+    ("mall", "guard by the fountain, 3 teens loitering at the food court", ["a guard", "3 teens"],
+     ["fountain", "food_court"]),
+    ("mall", "two teens at the fountain, guard watching nr the info desk", ["two teens", "a guard"],
+     ["fountain", "information_desk"]),
+])
+def test_a_bare_person_in_a_chat_list_is_a_group(read, world, prompt, whos, places):
+    groups = read(world, prompt).groups
+    assert [g.who for g in groups] == whos
+    assert [g.location for g in groups][1:] == places[1:]
+
+
+def test_people_written_out_keep_their_reading(read):
+    groups = read("hospital", "A nurse waits at the pharmacy, and two visitors sit in the cafeteria.").groups
+    assert [g.who for g in groups] == ["A nurse", "two visitors"]
+    groups = read("hospital", "staff at the pharmacy, two visitors sitting in the cafeteria").groups
+    assert groups[-1].who == "two visitors"
+    groups = read("mall", "Nurse Patel waits by the fountain, and 3 teens loiter at the food court.").groups
+    assert [g.who for g in groups] == ["Nurse Patel", "3 teens"]
