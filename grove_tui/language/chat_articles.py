@@ -12,7 +12,9 @@ import re
 from grove_tui.language import lexicon as lx
 
 _MASS = frozenset({"staff", "people", "folk", "police", "personnel", "security", "crew", "everyone", "everybody",
-                   "someone", "somebody", "anyone", "nobody", "person", "individual", "pedestrian", "one"})
+                   "someone", "somebody", "anyone", "nobody", "person", "individual", "pedestrian", "one"}) | \
+    lx.MEMBERS_NAME_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES | lx.QUEUE_COLLECTIVES | \
+    frozenset("troop file group team gang party class tour band squad".split())  # "pupils, troop from ...": a verb
 _PREPOSITIONS = ("at", "by", "in", "near", "nr", "on", "@", "beside", "outside", "inside", "next", "w/", "with",
                  "behind", "opposite", "hovering", "outside", "round", "around", "from", "to", "into", "heading")
 _ITEM = re.compile(r"(^|[,;]\s*|\bwhile\s+)([A-Za-z][a-z'-]*)(?:\s+([a-z][a-z'-]*))?"
