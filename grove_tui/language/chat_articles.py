@@ -2,7 +2,7 @@
 hovering nr brochure stand", "nurse at pharmacy, two visitors sitting in the cafeteria". With no
 article the small parser makes the first item the list's head noun and the next its apposition, and
 one of them is lost. An item that opens with one word of a person (or a modifier and one), followed by
-a place word or what they are doing, is said with "a": "a couple checking out ..., a sales guy
+a place word or what they are doing, is said with "a": "a couple checking out ..., and a sales guy
 hovering ...", as the reader reads it written out."""
 
 from __future__ import annotations
@@ -52,5 +52,7 @@ def with_chat_articles(text: str) -> str:
             article = article.capitalize()
             first = first[:1].lower() + first[1:] if first.lower() in lx.PERSON_NOUNS else first
         rest = f" {second}" if second is not None else ""
+        if lead.strip() in (",", ";"):
+            lead = f"{lead.rstrip()} and "  # a later item: "..., and a boss in her office", the list's own
         return f"{lead}{article} {first}{rest}"
     return _ITEM.sub(said, text)
