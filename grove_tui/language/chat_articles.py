@@ -20,7 +20,8 @@ _PREPOSITIONS = ("at", "by", "in", "near", "nr", "on", "@", "beside", "outside",
 _ITEM = re.compile(r"(^|[,;]\s*|\bwhile\s+)([A-Za-z][a-z'-]*)(?:\s+([a-z][a-z'-]*))?"
                    r"(?=\s+(\S+))")
 _NOT_MODIFIERS = frozenset("a an the this that these those my our your his her their its some any no every each "
-                           "and or but then at by in on to of with".split())
+                           "and or but then at by in on to of with one few several many most all both another other "
+                           "more half".split())
 
 
 def _person(word: str) -> bool:
@@ -37,7 +38,8 @@ def with_chat_articles(text: str) -> str:
     """The text with "a" before a person typed bare as a chat item (module doc)."""
     def said(m: re.Match[str]) -> str:
         lead, first, second, nxt = m.group(1), m.group(2), m.group(3), m.group(4)
-        if first.lower() in _NOT_MODIFIERS or first[:1].isupper() and m.start(2) > 0:
+        if first.lower() in _NOT_MODIFIERS or (first.lower() in lx.NUMBER_WORDS and first.lower() not in ("couple", "pair")) or \
+                (first[:1].isupper() and m.start(2) > 0):
             return m.group(0)
         if second is None:
             if not (_person(first) and _doing(nxt)):
