@@ -37,6 +37,10 @@ from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
+from grove_tui.language.chat_articles import with_chat_articles
+from grove_tui.language.described_things import without_described_things
+from grove_tui.language.named_events import without_named_events
+from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
@@ -106,6 +110,8 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
+    text = with_chat_articles(text)  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
+    text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
@@ -148,7 +154,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_awaited_things(s, without_causers(s, without_second_names(s, without_asides(s, finder.find())))))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_causers(s, without_second_names(s, without_asides(s, finder.find())))))))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
