@@ -2,7 +2,8 @@
 they project the stars onto the ceiling" is the dome theatre, not its star projector; "wait in the room
 where the vets scrub up" is the prep room, not its sink. When such a phrase ("the place / room / area /
 spot where ...") was read as a fixture of the world, the place is the zone that holds it, in the role
-its preposition gives (to: destination; from: start; at, in: location)."""
+its preposition gives (to: destination; from: start; at, in: location). A fixture people go up to and
+use (a counter, a desk, a machine) stays: "the place where you get cash out" is the cash machine."""
 
 from __future__ import annotations
 
@@ -15,6 +16,9 @@ from grove_tui.language.places import PlaceIndex
 
 _WHERE = re.compile(r"\b(to|towards|into|from|out\s+of|at|in|inside|by)\s+(?:the\s+|a\s+|an\s+)?(?:[\w'-]+\s+)?"
                     r"(?:place|room|area|spot|space|bit|part|hall)\s+(?:where|in\s+which)\b", re.I)
+# Fixtures people go up to and use: "the place where you get cash out" is the cash machine itself.
+_SERVING = frozenset("counter desk till tills kiosk kiosks atm cashpoint bar window point booth hatch gate gates "
+                     "counters desks cash ticket tickets vending change photo".split())
 _ROLE = {"to": "destination", "towards": "destination", "into": "destination", "from": "start",
          "out of": "start", "at": "location", "in": "location", "inside": "location", "by": "location"}
 
@@ -27,7 +31,9 @@ def activity_place_zones(index: PlaceIndex, groups: Sequence[GroupReading]) -> t
             role = _ROLE[" ".join(m.group(1).lower().split())]
             name = getattr(g, role)
             entry = index.entry(name) if name else None
-            if entry is not None and entry.kind == "entity" and entry.zone and index.entry(entry.zone) is not None:
+            used = set(entry.name.split("_")) | {t for said in entry.types for t in said.split()} if entry else set()
+            if entry is not None and entry.kind == "entity" and entry.zone and index.entry(entry.zone) is not None \
+                    and not used & _SERVING:
                 g = replace(g, **{role: entry.zone})
         out.append(g)
     return tuple(out)

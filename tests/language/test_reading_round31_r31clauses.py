@@ -79,3 +79,28 @@ def test_a_kind_of_place_searched_for_that_the_world_lacks_is_refused(read, worl
 def test_searching_for_a_thing_or_a_place_the_world_has_refuses_nothing(read):
     assert read("hospital", "A porter leaves the cafeteria looking for a spare trolley.").unknown_places == ()
     assert read("mall", "Two teens wander off from the fountain looking for a cashpoint.").unknown_places == ()
+
+
+# ---- 5. a place said by what is done there is the room, not a thing in it ----------------------------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("planetarium", "Three pupils walk from the foyer to the place where they spin the star ball.", "dome_theatre"),
+    ("planetarium", "Four pupils wander from the gift shop to the place where they spin the star machine.",
+     "dome_theatre"),
+    ("airport", "A couple walk from the cafe to the place where they scan your bags.", "security_checkpoint"),
+    ("airport", "Two kids run from the cafe to the place where the suitcases come round on the carousel.",
+     "baggage_claim"),
+    ("hospital", "A porter walks from the lobby to the place where they take the X-rays.", "radiology"),
+])
+def test_a_place_said_by_what_is_done_there_is_the_room(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert (g.intent, g.destination) == ("walk", destination)
+
+
+def test_a_fixture_people_use_stays_the_fixture(read):
+    (g,) = read("mall", "A dad walks from the fountain to the place where you get cash out.").groups
+    assert g.destination == "cash_machine"
+    (g,) = read("station", "A tourist walks from the cafe to the place where you buy tickets from a machine.").groups
+    assert g.destination == "ticket_machines"
+    (g,) = read("mall", "Two girls stroll from the fountain to the place where they make the coffee.").groups
+    assert g.destination == "coffee_counter"
