@@ -23,6 +23,14 @@ _ROLE = {"to": "destination", "towards": "destination", "into": "destination", "
          "out of": "start", "at": "location", "in": "location", "inside": "location", "by": "location"}
 
 
+def _with(g: GroupReading, role: str, place: str) -> GroupReading:
+    if role == "destination":
+        return replace(g, destination=place)
+    if role == "start":
+        return replace(g, start=place)
+    return replace(g, location=place)
+
+
 def activity_place_zones(index: PlaceIndex, groups: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
     """Groups whose place said by an activity was read as a fixture get the fixture's zone instead."""
     out: list[GroupReading] = []
@@ -34,6 +42,6 @@ def activity_place_zones(index: PlaceIndex, groups: Sequence[GroupReading]) -> t
             used = set(entry.name.split("_")) | {t for said in entry.types for t in said.split()} if entry else set()
             if entry is not None and entry.kind == "entity" and entry.zone and index.entry(entry.zone) is not None \
                     and not used & _SERVING:
-                g = replace(g, **{role: entry.zone})
+                g = _with(g, role, entry.zone)
         out.append(g)
     return tuple(out)
