@@ -3,7 +3,8 @@ they project the stars onto the ceiling" is the dome theatre, not its star proje
 where the vets scrub up" is the prep room, not its sink. When such a phrase ("the place / room / area /
 spot where ...") was read as a fixture of the world, the place is the zone that holds it, in the role
 its preposition gives (to: destination; from: start; at, in: location). A fixture people go up to and
-use (a counter, a desk, a machine) stays: "the place where you get cash out" is the cash machine."""
+use (a counter, a desk, a machine) stays: "the place where you get cash out" is the cash machine; and a
+"spot where" names a point, often the fixture itself ("the spot where visitors light a candle")."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from grove_tui.language.model import GroupReading
 from grove_tui.language.places import PlaceIndex
 
 _WHERE = re.compile(r"\b(to|towards|into|from|out\s+of|at|in|inside|by)\s+(?:the\s+|a\s+|an\s+)?(?:[\w'-]+\s+)?"
-                    r"(?:place|room|area|spot|space|bit|part|hall)\s+(?:where|in\s+which)\b", re.I)
+                    r"(?:place|room|area|space|part|hall)\s+(?:where|in\s+which)\b", re.I)
 # Fixtures people go up to and use: "the place where you get cash out" is the cash machine itself.
 _SERVING = frozenset("counter desk till tills kiosk kiosks atm cashpoint bar window point booth hatch gate gates "
                      "counters desks cash ticket tickets vending change photo".split())
