@@ -293,7 +293,7 @@ class People:
         a time or a thing of the world."""
         s = self.s
         k = j
-        while k < s.n and k < j + 4:
+        while k < s.n and k < j + 5 + 2 * sum(s.joins(h) for h in range(j, k)):  # "first-year": one word
             if s.low[k] in lx.ROBOT_WORDS:
                 return None  # "the robot glides": whatever follows, the robot is nobody's kind
             named = self.titled_name(k)
