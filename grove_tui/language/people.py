@@ -303,8 +303,9 @@ class People:
             if end is not None:
                 return end  # "the au pair": one person
             after = modifier_end(s, k)
-            if after is not None and after < s.n and self.is_person_noun(after):
-                k = after  # "night-shift workers", "year 6 pupils": what kind, no count
+            if after is not None and after < s.n and (self.is_person_noun(after) or (
+                    after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1))):
+                k = after  # "night-shift workers", "year 6 pupils", "off-duty bus drivers": what kind, no count
                 continue
             if k + 2 < s.n and s.joins(k + 1) and s.w[k].pos in ("NOUN", "ADJ", "ADV") and self.is_person_noun(k + 2) \
                     and s.lemma(k + 2) not in lx.IMPLIED_RANGES and not (k + 3 < s.n and self.is_person_noun(k + 3)):
