@@ -9,6 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.compound_people import chain_end
 from grove_tui.language.parser import known_word
 from grove_tui.language.counted_pushers import pushes_after
+from grove_tui.language.of_names import of_name_end
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.adverb_subjects import past_adverbs
 from grove_tui.language.held_things import a_load_of_things
@@ -303,7 +304,7 @@ class People:
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
-            after = modifier_end(s, k)
+            after = modifier_end(s, k) or of_name_end(s, k)  # "Duke of Edinburgh hikers"
             if after is not None and after < s.n and (self.is_person_noun(after) or (
                     after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1))):
                 k = after  # "night-shift workers", "year 6 pupils", "off-duty bus drivers": what kind, no count
@@ -349,8 +350,9 @@ class People:
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
                 k += 1  # "tired old patients", "two lost children", "waiting visitors"
                 continue
-            if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and self.is_person_noun(k + 1):
-                k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
+            if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and (self.is_person_noun(k + 1) or (
+                    counted and k >= 3 and s.joins(k - 1) and s.w[k - 3].pos == "NUM" and self.person_head(k + 1, counted=True) == k + 1)):
+                k += 1  # "flight attendants", "dog walker", "twenty season-ticket holders": the kind of person
                 continue
             if s.w[k].pos in ("NOUN", "PROPN") and k + 2 < s.n and s.w[k + 1].pos in ("NOUN", "PROPN") and \
                     s.w[k + 1].tag not in ("NNS", "NNPS") and (self.is_person_noun(k + 2) or (
