@@ -124,6 +124,23 @@ def test_generate_simulate_and_resimulate(tmp_path, embedded_path):
 
 
 @pytest.mark.slow
+def test_simulate_with_no_number_runs_the_scenarios_own_length(tmp_path, embedded_path):
+    out = tmp_path / "pharmacy"
+    # `--simulate` just before `--seed`: the option takes no number and the next option is not eaten
+    result = invoke(generate_args(out, embedded_path, extra=["--simulate", "--seed", "2"]))
+    assert result.exit_code == EXIT_OK, result.stderr
+    simulated = [line for line in result.stdout.splitlines() if line.startswith("simulated: ")]
+    assert simulated, result.stdout
+    seconds = float(simulated[0].split()[1])
+    assert 60.0 <= seconds <= 900.0  # the scenario's length: at least a minute, capped
+    rows = (out / "trajectories.csv").read_text().splitlines()
+    assert float(rows[-1].split(",")[1]) == pytest.approx(seconds, abs=0.5)
+    again = invoke(["simulate", str(out)])  # and `grove simulate` with no --seconds runs the same length
+    assert again.exit_code == EXIT_OK, again.stderr
+    assert any(line.startswith(f"simulated: {seconds:.1f} s") for line in again.stdout.splitlines()), again.stdout
+
+
+@pytest.mark.slow
 def test_batch_loads_once_and_reports_each_line(tmp_path, embedded_path):
     jobs = tmp_path / "jobs.jsonl"
     jobs.write_text("\n".join([
