@@ -88,3 +88,22 @@ def test_arrivals_count_only_a_coming_back():
     assert arrived.tolist() == [[False, False], [False, False], [True, True]]
     assert arrivals.started_there() == 1
     assert FAILS != HOLDS
+
+
+def test_guards_waiting_by_an_exit_stand_beside_its_opening(tmp_path):
+    """'Two security guards wait by the main entrance' stood 0.6 m inside the door's centre, in the way
+    of everyone leaving and pushed out by them: they stand beside the opening, and are checked there."""
+    mall = load_world("worlds/mall.yaml")
+    door = mall.find("main_entrance")
+    tree = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "main_entrance"}),
+                                      DraftNode("Wait", {"duration": 600.0})))
+    sentence = "two security guards wait by the main entrance"
+    run = plan_by_hand(mall, "normal", sentence, (DraftGroup("guard", 2, "south_entrance_hall", tree),),
+                       tmp_path / "bundle")
+    checked = run.run(40.0)
+    traj = Trajectories.from_csv(run.bundle / "trajectories.csv")
+    for x, y in traj.people[-1]:
+        along = abs((x - door.position[0]) * door.along[0] + (y - door.position[1]) * door.along[1])
+        assert along > door.width / 2.0, (x, y)
+    stay = next(c for c in checked.groups[0].claims if c.kind == "stay")
+    assert stay.status == HOLDS, stay.evidence
