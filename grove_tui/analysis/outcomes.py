@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
+from grove_tui.analysis.arrival import Arrivals
+from grove_tui.analysis.left_run import gone_reason
 from grove_tui.analysis.robot_errand import StopTrack, dropoff_verdict, pickup_verdict
 from grove_tui.analysis.robot_errand import speeds as errand_speeds
 from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
@@ -233,7 +235,11 @@ class OutcomeChecker:
             claim = probe.claim
             if status != HOLDS and status != FAILS:
                 status = UNCHECKED
-            if status == FAILS and claim.needs_seconds is not None and self.t_end + 1e-6 < claim.needs_seconds \
+            gone = gone_reason(claim.kind, [int(i) for i in self.ids[probe.cols]], by_agent) \
+                if key[0] >= 0 and status != HOLDS else ""
+            if gone:
+                status, evidence = FAILS, f"{evidence}; {gone}" if evidence else gone
+            elif status == FAILS and claim.needs_seconds is not None and self.t_end + 1e-6 < claim.needs_seconds \
                     and not probe.final:
                 status = UNCHECKED
                 evidence = f"{evidence}; needs about {claim.needs_seconds:.0f} s, the run has {self.t_end:.0f} s"
@@ -423,12 +429,13 @@ class _ReachProbe(_Probe):
         super().__init__(claim, checker, cols, members)
         self.first = np.full(self.cols.size, np.inf)
         self.trail = _Trail()
+        self.arrivals = Arrivals(self.cols.size)  # one who starts there has not arrived (analysis/arrival)
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size or not np.isinf(self.first).any():
             return
         self.trail.add(f.t, f.pos[:, self.cols])
-        inside = self.inside(f)
+        inside = self.arrivals.arrived(self.inside(f), np.isfinite(f.pos[:, self.cols, 0]))
         if self.claim.seconds:
             # "wait in the kitchen for a minute and then walk to the living room": the walk comes after the
             # asked wait, so being there (or by its doorway) before the wait can be over is not reaching it
@@ -444,6 +451,9 @@ class _ReachProbe(_Probe):
         text = f"{k}/{n} reached {self.where()}"
         if k:
             text += f" by {_when(float(reached.max()))}" if k == n else f" (last at {_when(float(reached.max()))})"
+        there = self.arrivals.started_there(np.isinf(self.first))
+        if there:
+            text += f"; {there} started there and never came to it from elsewhere"
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
     def still_on_the_way(self) -> int:
@@ -1153,6 +1163,7 @@ class _RobotPlaceProbe(_Probe):
         self.seen_robot = False
         self.last_t = 0.0
         self.trail = _Trail()  # where the robot drove over the run's last stretch: still on its way?
+        self.arrivals = Arrivals(1)
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
@@ -1161,6 +1172,9 @@ class _RobotPlaceProbe(_Probe):
         if self.claim.kind != "robot_stay" and math.isinf(self.first):
             self.trail.add(f.t, f.robot[:, None, :2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        if self.claim.kind == "robot_reach" and self.claim.needs_seconds:
+            # a drive there, not its start ("start in ..." needs no time): arriving from elsewhere (arrival)
+            inside = self.arrivals.arrived(inside[:, None], np.ones((inside.size, 1), dtype=bool))[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])
         self.last_t = max(self.last_t, float(f.t[-1]))
@@ -1178,6 +1192,8 @@ class _RobotPlaceProbe(_Probe):
             return self._stay()
         verb = "passed through" if self.claim.kind == "robot_via" else "reached"
         if math.isinf(self.first):
+            if verb == "reached" and self.arrivals.started_there():
+                return FAILS, f"it started at {self.where()} and never came to it from elsewhere"
             return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
                 f"never passed through {self.where()}"
         return HOLDS, f"{verb} {self.where()} at {_when(self.first)}"

@@ -35,6 +35,7 @@ from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_a
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
+from grove_tui.generation.exit_post import claim_radius
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
@@ -1191,6 +1192,7 @@ def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: fl
         return Claim(kind, place, plan, zone=obj.name, place=place, needs_seconds=round(eta, 1))
     # people sent to one point stand beside each other: the more of them, the wider the spot
     radius = (2.0 if stay else 1.0) + 0.5 * math.sqrt(n)
+    radius = claim_radius(obj, radius) if isinstance(obj, Door) else radius  # beside an exit's opening (exit_post)
     return Claim(kind, place, plan, place=place, point=(round(float(point[0]), 3), round(float(point[1]), 3)),
                  radius=round(radius, 2), needs_seconds=round(eta, 1))
 

@@ -1,0 +1,42 @@
+"""Nobody leaves the building unless their task is to leave it.
+
+The crowd can push someone out through an exit's opening: a guard standing at the main entrance, a
+guest stepping out of the robot's way by the lobby door. Removing them (as evacuees are removed once
+out) made them vanish from the run, and every claim about them could no longer be told. Only people
+whose tree walks them out (FollowVelocityField: evacuating, walking out through an exit) may leave;
+anyone else the crowd pushes over the door line is held back in, as the door's jambs and a person's
+own will would: put back at the nearest point of the building a body's width inside its outline,
+standing, with a `kept_in` event saying where.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import shapely
+import shapely.ops
+from shapely.geometry.base import BaseGeometry
+
+from grove_tui.bt.format.document import TreeDocument
+
+LEAVING_NODES = frozenset({"FollowVelocityField"})  # the trees that walk a person out of the building
+KEEP_IN_MARGIN = 0.1  # metres beyond the person's radius they are put back inside the outline
+
+
+def may_leave(documents: Sequence[TreeDocument | None]) -> np.ndarray:
+    """Per row, whether the person's task is to leave the building (their tree walks them out)."""
+    return np.array([document is not None and any(e.id in LEAVING_NODES for e in document.nodes())
+                     for document in documents], dtype=bool)
+
+
+def back_inside(building: BaseGeometry, point: tuple[float, float], radius: float) -> tuple[float, float]:
+    """The point of the building nearest to `point` that a body of `radius` stands in, clear of its outline."""
+    inner = building.buffer(-(radius + KEEP_IN_MARGIN))
+    if inner.is_empty:
+        inner = building
+    here = shapely.Point(point)
+    if inner.contains(here):
+        return point
+    near = shapely.ops.nearest_points(inner, here)[0]
+    return float(near.x), float(near.y)
