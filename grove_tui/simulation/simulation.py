@@ -241,7 +241,7 @@ class Simulation:
         recorder = _make_recorder(dt, ids)
         simulation = cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
                          recorder=recorder)
-        simulation.may_leave = may_leave(documents)
+        simulation.may_leave = may_leave(documents, [door.name for door in world.exits()] if world is not None else ())
         if robot is not None:
             simulation.robot_driver = RobotDriver(robot, crowd, context)
             crowd.set_robot_path(simulation.robot_driver.initial_path())
