@@ -313,9 +313,13 @@ class People:
                     and s.lemma(k + 2) not in lx.IMPLIED_RANGES and not (k + 3 < s.n and self.is_person_noun(k + 3)):
                 k += 2  # "some 25 well-wishers", "two day-trippers": one word, hyphenated
                 continue
-            if k + 2 < s.n and s.joins(k + 1) and s.w[k].pos in ("NOUN", "ADJ", "PROPN") and not self.is_person_noun(k) \
+            if k + 2 < s.n and s.joins(k + 1) and (s.w[k].pos in ("NOUN", "ADJ", "PROPN") or s.w[k + 2].dep == "amod") \
+                    and not self.is_person_noun(k) \
                     and s.lemma(k + 2) not in lx.IMPLIED_RANGES:  # not "a first-class patient"
                 k += 2  # "bleary-eyed exam-season students": a hyphenated modifier, its last word then read
+                continue
+            if k > j and s.joins(k - 1) and k + 1 < s.n and s.w[k + 1].pos == "ADJ" and not self.is_person_noun(k):
+                k += 1  # "six third-year medical students": the tail of a hyphenated modifier, then a describing word
                 continue
             person = self.is_person_noun(k)
             if person and self._does_only_what_things_do(k):
