@@ -41,6 +41,7 @@ from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
+from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.owned_partitives import without_partitive_owners
@@ -64,6 +65,7 @@ from grove_tui.language.collective_roles import with_collective_roles
 from grove_tui.language.counted_loads import without_counted_loads
 from grove_tui.language.fronted_size_parts import with_fronted_size_parts
 from grove_tui.language.little_ones import with_little_ones
+from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.carried_babies import without_carried_babies
@@ -116,6 +118,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(text)  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
+    text = with_scale_figures(text)  # "the hundred-odd travellers": about 100
     text = as_simple_work(text)  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
@@ -130,7 +133,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
-    text = with_little_ones(text)  # "leads the little one": "the little child"
+    text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(text)  # "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(text)  # "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"

@@ -88,3 +88,45 @@ def test_running_somewhere_is_still_a_run(read):
     assert groups[0].intent == "walk" and groups[0].destination == "information_desk"
     groups = read("library", "Two volunteers are manning the issue desk.").groups
     assert (groups[0].who, groups[0].location) == ("Two volunteers", "issue_desk")
+
+
+# ---- 4. a child named by "youngest" or "little one" with a describing word before it -------------------
+
+@pytest.mark.parametrize("world,prompt,moved", [
+    ("residential", "Dad carries his sleepy little one from the lounge to the bedroom.", "little child"),
+    ("hospital", "A nurse walks our poorly youngest from the lobby to radiology.", "youngest child"),
+    ("mall", "Mum steers her grumpy eldest from the atrium to the food court.", "eldest child"),
+    ("residential", "Gran leads her drowsy youngest from the kitchen to the bathroom.", "youngest child"),
+])
+def test_a_described_youngest_is_a_child_moved(read, world, prompt, moved):
+    groups = read(world, prompt).groups
+    assert len(groups) == 2 and groups[1].who.endswith(moved)
+    assert (groups[1].intent, groups[1].count.value) == ("follow", 1)
+    assert groups[1].destination == groups[0].destination is not None
+
+
+def test_youngest_before_a_noun_keeps_its_reading(read):
+    groups = read("hospital", "Two nurses walk the youngest patients to radiology.").groups
+    assert [g.who for g in groups] == ["Two nurses", "the youngest patients"]
+    groups = read("mall", "The youngest waits at the fountain.").groups
+    assert [(g.who, g.location) for g in groups] == [("The youngest", "fountain")]
+
+
+# ---- 5. a scale word alone as a rough count ----------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,value,low,high", [
+    ("station", "The hundred-odd travellers on platform 2 wait for the train.", 100, 80, 120),
+    ("mall", "Some hundred-odd shoppers wait in the food court.", 100, 80, 120),
+    ("stadium", "The thousand or so fans in the north stand head to the exits.", 1000, 800, 1200),
+    ("hospital", "The hundred or so visitors in the lobby walk to the cafeteria.", 100, 80, 120),
+])
+def test_a_scale_word_alone_is_a_rough_count(read, world, prompt, value, low, high):
+    count = read(world, prompt).groups[0].count
+    assert (count.kind, count.value, count.low, count.high) == ("approximate", value, low, high)
+
+
+def test_a_scale_with_its_number_keeps_its_count(read):
+    count = read("station", "A hundred travellers wait on platform 2.").groups[0].count
+    assert (count.kind, count.value) == ("exact", 100)
+    count = read("stadium", "Two hundred fans head to the exits.").groups[0].count
+    assert (count.kind, count.value) == ("exact", 200)
