@@ -41,6 +41,7 @@ from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
+from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
@@ -116,7 +117,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
-    text = with_chat_articles(text)  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
+    text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_scale_figures(text)  # "the hundred-odd travellers": about 100
     text = as_simple_work(text)  # "Janet is manning the desk", "Maria runs the issue desk": she mans it

@@ -130,3 +130,25 @@ def test_a_scale_with_its_number_keeps_its_count(read):
     assert (count.kind, count.value) == ("exact", 100)
     count = read("stadium", "Two hundred fans head to the exits.").groups[0].count
     assert (count.kind, count.value) == ("exact", 200)
+
+
+# ---- 6. two bare people joined by "+" or "&" as an item of a chat list -----------------------------------
+
+@pytest.mark.parametrize("world,prompt,whos", [
+    ("hospital", "pt in bed 3, nurse + doctor w/ him, 2 visitors in the cafeteria",
+     ["a patient", "a nurse", "a doctor", "2 visitors"]),
+    ("mall", "guard + cleaner by the fountain, 3 teens at the food court", ["a guard", "a cleaner", "3 teens"]),
+    ("airport", "pilot & steward at gate A1, 2 cleaners in the lounge", ["a pilot", "a steward", "2 cleaners"]),
+    ("supermarket", "3 shoppers at the bakery, cashier + guard at the tills", ["3 shoppers", "a cashier", "a guard"]),
+])
+def test_two_people_joined_by_a_sign_are_two_groups(read, world, prompt, whos):
+    groups = read(world, prompt).groups
+    assert [g.who for g in groups] == whos
+    assert all(g.count.value == 1 for g in groups if g.who.startswith("a "))
+
+
+def test_people_joined_by_a_sign_already_read_keep_their_groups(read):
+    groups = read("hospital", "nurses + porters at the lifts, 1 visitor in the cafeteria").groups
+    assert [g.who for g in groups] == ["nurses", "porters", "1 visitor"]
+    groups = read("mall", "a guard and a cleaner by the fountain, 3 teens at the food court").groups
+    assert [g.who for g in groups] == ["a guard", "a cleaner", "3 teens"]
