@@ -25,7 +25,7 @@ def test_a_plural_place_noun_names_no_one_room_of_its_kind(read, world, prompt, 
 
 @pytest.mark.parametrize("world,prompt", [
     ("hospital", "A fire breaks out and all the patients in the wards are evacuated."),
-    ("art_gallery", "A fire alarm sounds and everyone in the galleries evacuates."),
+    ("art_gallery", "The alarm goes off and every visitor in the galleries evacuates."),
 ])
 def test_everyone_in_rooms_of_a_kind_starts_in_no_one_of_them(read, world, prompt):
     (g,) = read(world, prompt).groups
@@ -64,3 +64,28 @@ def test_a_door_named_by_whose_it_is_is_that_rooms_door(read, world, prompt, doo
 ])
 def test_doors_of_rooms_read_already_keep_their_reading(read, world, prompt, door):
     assert read(world, prompt).groups[0].destination == door
+
+
+# ---- 3. a room said by what is done there: to people (a passive), or imaging in everyday words ----------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("tv_studio", "Both contestants walk from the canteen to the place where guests get powdered.", "make_up"),
+    ("tv_studio", "A presenter walks from the canteen to the room where presenters get powdered.", "make_up"),
+    ("tv_studio", "A presenter hurries from the canteen to where you get powdered.", "make_up"),
+    ("dental_clinic", "A boy walks from the waiting room to the room where they take photos of your teeth.", "xray_room"),
+    ("dental_clinic", "A patient walks from reception to where they photograph your jaw.", "xray_room"),
+    ("hospital", "Two nurses walk from the cafeteria to the place where they take pictures of your chest.", "radiology"),
+    ("vet_hospital", "A vet walks from the waiting room to where they take photos of a dog's insides.", "prep_room"),
+])
+def test_a_room_said_by_what_is_done_there_is_that_room(read, world, prompt, destination):
+    assert read(world, prompt).groups[0].destination == destination
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("tv_studio", "A singer walks from the canteen to where the stars get their faces done.", "make_up"),
+    ("dental_clinic", "A patient walks from reception to where they x-ray your teeth.", "xray_room"),
+    ("hospital", "A porter walks from the lobby to the department where they take x-rays.", "radiology"),
+    ("office", "Two visitors walk from reception to where you get a coffee.", "coffee_machine"),
+])
+def test_rooms_said_by_what_is_done_there_read_already_keep_their_reading(read, world, prompt, destination):
+    assert read(world, prompt).groups[0].destination == destination
