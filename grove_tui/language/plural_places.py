@@ -9,6 +9,9 @@ from collections.abc import Sequence
 
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 
+# Words that tell a pair of rooms apart by who uses them: their plural is the pair's common name.
+_PAIRED = frozenset("men women mens womens male female boys girls ladies gents staff public".split())
+
 
 def several_zones(index: PlaceIndex, phrase: Sequence[str], lemmas: Sequence[str], match: PlaceMatch | None) -> bool:
     """Whether the phrase is a plural noun naming two or more of the world's rooms alike, none above the rest."""
@@ -26,6 +29,8 @@ def several_zones(index: PlaceIndex, phrase: Sequence[str], lemmas: Sequence[str
     tied = [m for m in found if m.kind == "zone" and m.score >= top - 1e-9 and not m.exact]
     if len(tied) < 2 or match.name not in {m.name for m in tied}:
         return False
+    if any(set(m.name.split("_")) & _PAIRED for m in tied):
+        return False  # "the changing rooms": the men's and women's, said as one place
     # each of them is a room of the head's kind: its type or its name ends in the head word
     kinds = [e for e in index.entries if e.name in {m.name for m in tied} and e.kind == "zone"]
     return sum(1 for e in kinds if any(head == p[-1] for p in e.phrases) or
