@@ -161,7 +161,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
         if owned is not None:
             match = owned[0]
-        if match is None and possessive or owned is None and several_zones(s.index, phrase, lemmas, match):
+        if match is None and possessive or owned is None and low[k] not in ("each", "one", "any", "some", "every") and several_zones(s.index, phrase, lemmas, match):
             return None  # "on her rounds"; "in the galleries" (every gallery, no one of them), "in their pyjamas": the person's own things, not a place to refuse
         if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
                 (any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)) or taken_in(s, at)):
