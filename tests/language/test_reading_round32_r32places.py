@@ -1,0 +1,91 @@
+"""Place classes of round 32, each with sentences of its own over at least two worlds (none from the
+understanding sets): a plural place noun that names several rooms of one kind reads no one of them; a door
+named by whose it is (a room, or a thing in the room) is that room's own door, not the room or the thing."""
+
+from __future__ import annotations
+
+import pytest
+
+
+# ---- 1. a plural place noun naming several rooms of a kind: no one of them ------------------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("art_gallery", "Smoke is spotted and everyone in the galleries heads for the fire exit.", "court_fire_exit"),
+    ("primary_school", "The bell rings and the pupils in the classrooms go out to the playground.", "playground"),
+    ("station", "Everyone on the platforms hurries to the concourse.", "concourse"),
+    ("office", "Everyone in the meeting rooms walks to the kitchen.", "kitchen"),
+    ("airport", "Two pilots walk from the gates to the lounge.", "airline_lounge"),
+])
+def test_a_plural_place_noun_names_no_one_room_of_its_kind(read, world, prompt, destination):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert (g.start, g.destination) == (None, destination)
+    assert r.unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "A fire breaks out and all the patients in the wards are evacuated."),
+    ("art_gallery", "The alarm goes off and every visitor in the galleries evacuates."),
+])
+def test_everyone_in_rooms_of_a_kind_starts_in_no_one_of_them(read, world, prompt):
+    (g,) = read(world, prompt).groups
+    assert g.start is None
+
+
+def test_a_plural_narrowed_to_one_room_or_a_rooms_own_name_keeps_its_reading(read):
+    assert read("museum", "Have eighteen schoolkids mooch around the Egyptian galleries.").groups[0].location \
+        == "egyptian_gallery"
+    assert read("hospital", "Two visitors walk from the toilets to the cafeteria.").groups[0].start == "restroom_men"
+    g = read("station", "A guard walks from platform 2 to the ticket office.").groups[0]
+    assert (g.start, g.destination) == ("platform_2", "ticket_office")
+    assert read("station", "A man walks to the platform.").groups[0].destination == "platform_1"
+
+
+# ---- 2. a door named by whose it is: that room's own door -------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,door", [
+    ("art_gallery", "Thirty visitors leave through the Hokusai show's emergency door.", "temporary_fire_exit"),
+    ("art_gallery", "A dozen visitors hurry out through the great wave's fire door.", "temporary_fire_exit"),
+    ("cinema", "The audience of the late film leave through the bar's emergency door.", "bar_street_door"),
+    ("cinema", "Fifty moviegoers are led out through the cocktail bar's fire door.", "bar_street_door"),
+    ("mall", "Forty shoppers leave through the supermarket checkout's emergency door.", "supermarket_exit"),
+])
+def test_a_door_named_by_whose_it_is_is_that_rooms_door(read, world, prompt, door):
+    (g,) = read(world, prompt).groups
+    assert g.destination == door
+    assert g.via == ()
+
+
+@pytest.mark.parametrize("world,prompt,door", [
+    ("hospital", "Ten visitors leave through the canteen's door.", "cafeteria_door"),
+    ("art_gallery", "Twenty visitors leave through the café's terrace door.", "cafe_terrace_door"),
+    ("art_gallery", "Thirty visitors leave through the temporary exhibition's fire exit.", "temporary_fire_exit"),
+    ("museum", "Forty visitors leave through the dinosaur gallery's emergency exit.", "fire_exit"),
+])
+def test_doors_of_rooms_read_already_keep_their_reading(read, world, prompt, door):
+    assert read(world, prompt).groups[0].destination == door
+
+
+# ---- 3. a room said by what is done there: to people (a passive), or imaging in everyday words ----------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("tv_studio", "Both contestants walk from the canteen to the place where guests get powdered.", "make_up"),
+    ("tv_studio", "A presenter walks from the canteen to the room where presenters get powdered.", "make_up"),
+    ("tv_studio", "A presenter hurries from the canteen to where you get powdered.", "make_up"),
+    ("dental_clinic", "A boy walks from the waiting room to the room where they take photos of your teeth.", "xray_room"),
+    ("dental_clinic", "A patient walks from reception to where they photograph your jaw.", "xray_room"),
+    ("hospital", "Two nurses walk from the cafeteria to the place where they take pictures of your chest.", "radiology"),
+    ("vet_hospital", "A vet walks from the waiting room to where they take photos of a dog's insides.", "prep_room"),
+])
+def test_a_room_said_by_what_is_done_there_is_that_room(read, world, prompt, destination):
+    assert read(world, prompt).groups[0].destination == destination
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("tv_studio", "A singer walks from the canteen to where the stars get their faces done.", "make_up"),
+    ("dental_clinic", "A patient walks from reception to where they x-ray your teeth.", "xray_room"),
+    ("hospital", "A porter walks from the lobby to the department where they take x-rays.", "radiology"),
+    ("office", "Two visitors walk from reception to where you get a coffee.", "coffee_machine"),
+])
+def test_rooms_said_by_what_is_done_there_read_already_keep_their_reading(read, world, prompt, destination):
+    assert read(world, prompt).groups[0].destination == destination
