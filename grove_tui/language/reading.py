@@ -90,6 +90,7 @@ from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_fixes import round30_clauses
 from grove_tui.language.clause_fixes31 import round31_clauses
+from grove_tui.language.clause_fixes32 import round32_clauses
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -146,6 +147,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
     reading = round31_clauses(typed, index, reading)  # "late for boarding at B2", "hunting for a bar"
+    reading = round32_clauses(typed, index, reading)  # "sneak off for a cuppa in the canteen"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
