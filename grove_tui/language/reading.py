@@ -91,6 +91,7 @@ from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_fixes import round30_clauses
 from grove_tui.language.clause_fixes31 import round31_clauses
 from grove_tui.language.clause_fixes32 import round32_clauses
+from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -110,6 +111,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
+    text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(text)  # "couple at the suv, sales guy nr the stand": a couple, a sales guy

@@ -1,6 +1,7 @@
 """Clause classes of round 32, each with sentences of its own over at least two worlds (none from the
 understanding sets): a purpose with its place said after going off; surprise at the robot said after a
-comma, with the occasion; an errand with a thing carried from one place to another."""
+comma, with the occasion; an errand with a thing carried from one place to another; a counted group's
+stay in chat shorthand (counted_chat_waits.py)."""
 
 from __future__ import annotations
 
@@ -89,3 +90,21 @@ def test_carried_errands_already_read_keep_their_reading(read):
     assert (g.intent, g.start, g.destination) == ("walk", "pharmacy", "cafeteria")
     (g,) = read("station", "A guard takes the keys over to the ticket office from the waiting room.").groups
     assert (g.intent, g.start, g.destination) == ("walk", "waiting_room", "ticket_office")
+
+
+# ---- 4. a counted group's stay in chat shorthand, its time and its place ----------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,seconds,destination", [
+    ("mall", "2 teens @ fountain 5 mins then off to food court", "fountain", 300.0, "food_court"),
+    ("station", "4 ppl browsing newsagent 3 mins then off to platform 1", "newsagent", 180.0, "platform_1"),
+    ("hospital", "two nurses chattin at pharmacy 10 mins then back to cafeteria", "pharmacy", 600.0, "cafeteria"),
+    ("garden_centre", "5 ppl lookin at orchids 4 mins then off to tills", "orchid_table", 240.0, "tills"),
+])
+def test_a_counted_chat_stay_starts_there_waits_then_goes(read, world, prompt, start, seconds, destination):
+    g = read(world, prompt).groups[0]
+    assert (g.start, g.wait_seconds, g.destination) == (start, seconds, destination)
+
+
+def test_one_persons_chat_wait_keeps_its_reading(read):
+    (g,) = read("library", "guard @ issue desk 2 mins then off to cafe").groups
+    assert (g.start, g.wait_seconds, g.destination) == ("issue_desk", 120.0, "cafe")
