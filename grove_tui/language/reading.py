@@ -96,6 +96,8 @@ from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_fixes import round30_clauses
 from grove_tui.language.clause_fixes31 import round31_clauses
+from grove_tui.language.clause_fixes32 import round32_clauses
+from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -115,6 +117,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
+    text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
@@ -155,6 +158,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
     reading = round31_clauses(typed, index, reading)  # "late for boarding at B2", "hunting for a bar"
+    reading = round32_clauses(typed, index, reading)  # "sneak off for a cuppa in the canteen"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
