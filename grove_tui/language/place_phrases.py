@@ -28,7 +28,6 @@ from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.place_possessed import owned_places
-from grove_tui.language.plural_places import several_zones
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
 from grove_tui.language.places import PlaceMatch
@@ -161,8 +160,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
         if owned is not None:
             match = owned[0]
-        if match is None and possessive or owned is None and low[k] not in ("each", "one", "any", "some", "every") and several_zones(s.index, phrase, lemmas, match):
-            return None  # "on her rounds"; "in the galleries" (every gallery, no one of them), "in their pyjamas": the person's own things, not a place to refuse
+        if match is None and possessive:
+            return None  # "on her rounds", "in their pyjamas": the person's own things, not a place to refuse
         if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
                 (any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)) or taken_in(s, at)):
             return None  # "porters roll a patient in her bed": what carries the person moved, not a place

@@ -94,9 +94,7 @@ from grove_tui.language.text import normalise
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
-from grove_tui.language.clause_fixes import round30_clauses
-from grove_tui.language.clause_fixes31 import round31_clauses
-from grove_tui.language.clause_fixes32 import round32_clauses
+from grove_tui.language.clause_passes import with_clause_passes
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.world.model import World
 
@@ -156,9 +154,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
-    reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
-    reading = round31_clauses(typed, index, reading)  # "late for boarding at B2", "hunting for a bar"
-    reading = round32_clauses(typed, index, reading)  # "sneak off for a cuppa in the canteen"
+    reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
