@@ -8,6 +8,7 @@ import os
 import shutil
 import socket
 import tempfile
+from pathlib import Path
 
 import pytest
 
@@ -162,6 +163,14 @@ def hospital():
     from grove_tui.world import load_world
 
     return load_world("hospital")
+
+
+@pytest.fixture(scope="session")
+def library():
+    """The library of eval/understanding/worlds, a world no reader rule was written for."""
+    from grove_tui.world import load_world
+
+    return load_world(str(Path(__file__).parents[1] / "eval" / "understanding" / "worlds" / "library.yaml"))
 
 
 # ---- hand-built bundles: the hospital scenario of tests/helpers/handmade.py ----------------------

@@ -110,7 +110,7 @@ def test_generate_simulate_and_resimulate(tmp_path, embedded_path):
     assert any(line.startswith("agents: 6 ") for line in lines)
     assert any(line.startswith("simulated: 5.0 s") for line in lines)
     # after a run the report is the checked one, with the run it was checked on
-    assert any(line.startswith("grounding: ") and "(run of 5 s)" in line for line in lines), lines
+    assert any(line.startswith("grounding: ") and "(run of 5 s; the scenario's length is" in line for line in lines), lines
     assert (out / "grounding.json").is_file()
     assert "synthesis" in result.stderr  # progress went to stderr
     scenario, trees, _, _ = load_bundle(out)

@@ -16,16 +16,9 @@ from grove_tui.generation.draft import DraftGroup, DraftNode
 from grove_tui.generation.run_length import RUN_CAP, run_length, scenario_seconds
 from grove_tui.scenario.report import HOLDS, UNCHECKED, Claim, GroundingReport, GroupGrounding
 from grove_tui.services.session import GroveSession
-from grove_tui.world import load_world
 
-LIBRARY = "eval/understanding/worlds/library.yaml"
 STUDY = DraftNode("Sequence", {}, (DraftNode("GoTo", {"target": "reading_tables"}),
                                    DraftNode("Wait", {"duration": 600.0})))
-
-
-@pytest.fixture(scope="module")
-def library():
-    return load_world(LIBRARY)
 
 
 @pytest.fixture(scope="module")

@@ -3,19 +3,9 @@ group keeps out of, never as where it goes; a "not" before anything but a place 
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from grove_tui.language.reading import read_prompt
-from grove_tui.world import load_world
-
-LIBRARY = Path(__file__).parents[2] / "eval" / "understanding" / "worlds" / "library.yaml"
-
-
-@pytest.fixture(scope="module")
-def library():
-    return load_world(str(LIBRARY))
 
 
 @pytest.mark.parametrize("world, prompt, avoid, destination", [

@@ -284,7 +284,8 @@ async def test_typing_right_after_picking_a_preset_goes_on_at_the_prompt(tmp_pat
         assert screen.focused is screen.query_one("#presets")
         for key, character in [("enter", "\r"), ("space", " "), *[(c, c) for c in "the pharmacy"]]:
             app.post_message(events.Key(key, character))
-        await wait_until(pilot, lambda: screen.focused is prompt and prompt.value.endswith("y"), timeout=10,
+        # what is checked is where the keys land, not how fast: a machine at load 13 took over 10 s here
+        await wait_until(pilot, lambda: screen.focused is prompt and prompt.value.endswith("y"), timeout=45,
                          what="the typing at the prompt")
         assert prompt.value == "ten patients queue at the pharmacy"
         assert prompt.cursor_location == prompt.end_location
