@@ -143,6 +143,12 @@ class PromptError(BadInputError):
     hint = "Rephrase the prompt with places of this world and fewer people."
 
 
+# Hints for a prompt that says nothing or says too much: the class hint above is about places and counts.
+EMPTY_PROMPT_HINT = ('Say who is there, how many and what they do, with places of the world: "ten patients queue '
+                     'at the pharmacy while a family walks to the exit".')
+LONG_PROMPT_HINT = "Say it in one or two sentences; add details afterwards with follow-ups (refine)."
+
+
 class EditError(BadInputError):
     """A follow-up sentence asks for no change the scenario can make, or for one it cannot (nobody left)."""
 

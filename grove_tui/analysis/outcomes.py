@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
+from grove_tui.analysis.arrival import Arrivals
+from grove_tui.analysis.left_run import gone_reason
 from grove_tui.analysis.robot_errand import StopTrack, dropoff_verdict, pickup_verdict
 from grove_tui.analysis.robot_errand import speeds as errand_speeds
 from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
@@ -233,7 +235,11 @@ class OutcomeChecker:
             claim = probe.claim
             if status != HOLDS and status != FAILS:
                 status = UNCHECKED
-            if status == FAILS and claim.needs_seconds is not None and self.t_end + 1e-6 < claim.needs_seconds \
+            gone = gone_reason(claim.kind, [int(i) for i in self.ids[probe.cols]], by_agent) \
+                if key[0] >= 0 and status != HOLDS else ""
+            if gone:
+                status, evidence = FAILS, f"{evidence}; {gone}" if evidence else gone
+            elif status == FAILS and claim.needs_seconds is not None and self.t_end + 1e-6 < claim.needs_seconds \
                     and not probe.final:
                 status = UNCHECKED
                 evidence = f"{evidence}; needs about {claim.needs_seconds:.0f} s, the run has {self.t_end:.0f} s"
@@ -423,12 +429,13 @@ class _ReachProbe(_Probe):
         super().__init__(claim, checker, cols, members)
         self.first = np.full(self.cols.size, np.inf)
         self.trail = _Trail()
+        self.arrivals = Arrivals(self.cols.size)  # one who starts there has not arrived (analysis/arrival)
 
     def add(self, f: _Frames) -> None:
         if not self.cols.size or not np.isinf(self.first).any():
             return
         self.trail.add(f.t, f.pos[:, self.cols])
-        inside = self.inside(f)
+        inside = self.arrivals.arrived(self.inside(f), np.isfinite(f.pos[:, self.cols, 0]))
         if self.claim.seconds:
             # "wait in the kitchen for a minute and then walk to the living room": the walk comes after the
             # asked wait, so being there (or by its doorway) before the wait can be over is not reaching it
@@ -444,6 +451,9 @@ class _ReachProbe(_Probe):
         text = f"{k}/{n} reached {self.where()}"
         if k:
             text += f" by {_when(float(reached.max()))}" if k == n else f" (last at {_when(float(reached.max()))})"
+        there = self.arrivals.started_there(np.isinf(self.first))
+        if there:
+            text += f"; {there} started there and never came to it from elsewhere"
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
     def still_on_the_way(self) -> int:
@@ -480,7 +490,9 @@ class _StayProbe(_Probe):
         for j in np.flatnonzero(np.isinf(self.arrived) & inside.any(axis=0)):
             self.arrived[j] = f.t[np.argmax(inside[:, j])]
         since = _judged_frames(f.t, self.arrived, self.claim.seconds)
-        self.after += (since & present).sum(axis=0)
+        # "most of the run": one who left the building after arriving (pushed out by a crowd, out of an
+        # exit while keeping away from the robot) no longer stays, so the frames they are gone count
+        self.after += since.sum(axis=0)
         self.inside_after += (since & inside).sum(axis=0)
 
     def _add_windows(self, t: np.ndarray, inside: np.ndarray, present: np.ndarray, seconds: float) -> None:
@@ -1126,6 +1138,19 @@ class _FollowPersonProbe(_Probe):
 
 # the robot's own claims ---------------------------------------------------------------------------
 
+def _robot_driving(trail: _Trail) -> int:
+    """1 when the robot is still driving at the end of the frames: it went ON_THE_WAY_WALKED over the last
+    stretch and is moving in its last second (one parked at the far end after a drive is not)."""
+    if not trail.walking(np.ones(1, dtype=bool)):
+        return 0
+    samples = [(t, p) for t, p in trail.samples if t >= trail.samples[-1][0] - 1.0]
+    if len(samples) < 2:
+        return 0
+    (t0, p0), (t1, p1) = samples[0], samples[-1]
+    speed = float(np.hypot(*(p1[0] - p0[0]))) / max(t1 - t0, 1e-6)
+    return 1 if speed >= ROBOT_MOVING else 0
+
+
 class _RobotPlaceProbe(_Probe):
     """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time
     (with asked seconds, nearly all of them from its arrival, and the run must cover them)."""
@@ -1137,12 +1162,19 @@ class _RobotPlaceProbe(_Probe):
         self.there = 0
         self.seen_robot = False
         self.last_t = 0.0
+        self.trail = _Trail()  # where the robot drove over the run's last stretch: still on its way?
+        self.arrivals = Arrivals(1)
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
             return
         self.seen_robot = True
+        if self.claim.kind != "robot_stay" and math.isinf(self.first):
+            self.trail.add(f.t, f.robot[:, None, :2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        if self.claim.kind == "robot_reach" and self.claim.needs_seconds:
+            # a drive there, not its start ("start in ..." needs no time): arriving from elsewhere (arrival)
+            inside = self.arrivals.arrived(inside[:, None], np.ones((inside.size, 1), dtype=bool))[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])
         self.last_t = max(self.last_t, float(f.t[-1]))
@@ -1160,9 +1192,17 @@ class _RobotPlaceProbe(_Probe):
             return self._stay()
         verb = "passed through" if self.claim.kind == "robot_via" else "reached"
         if math.isinf(self.first):
+            if verb == "reached" and self.arrivals.started_there():
+                return FAILS, f"it started at {self.where()} and never came to it from elsewhere"
             return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
                 f"never passed through {self.where()}"
         return HOLDS, f"{verb} {self.where()} at {_when(self.first)}"
+
+    def still_on_the_way(self) -> int:
+        # a robot slowed by the people it leads or drives through, still driving when the run ended
+        if self.claim.kind == "robot_stay" or not math.isinf(self.first):
+            return 0
+        return _robot_driving(self.trail)
 
     def _stay(self) -> tuple[str, str]:
         asked = self.claim.seconds
@@ -1265,11 +1305,13 @@ class _RobotPatrolProbe(_Probe):
         self.start: np.ndarray | None = None
         self.far_at = math.inf
         self.back_at = math.inf
+        self.trail = _Trail()
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
             return
         xy = f.robot[:, :2]
+        self.trail.add(f.t, xy[:, None, :])
         if self.start is None:
             self.start = xy[0].copy()
         far = self.at_place(xy[:, None, :])[:, 0]
@@ -1288,6 +1330,10 @@ class _RobotPatrolProbe(_Probe):
         if math.isinf(self.back_at):
             return FAILS, f"reached {self.where()} at {_when(self.far_at)} but did not come back"
         return HOLDS, f"went to {self.where()} ({_when(self.far_at)}) and back ({_when(self.back_at)})"
+
+    def still_on_the_way(self) -> int:
+        # out to the far end or back, slowed by people, and still driving when the run ended
+        return 0 if not math.isinf(self.back_at) else _robot_driving(self.trail)
 
 
 class _RobotPassesProbe(_Probe):

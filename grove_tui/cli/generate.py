@@ -148,6 +148,8 @@ def summary_lines(result: Generated, bundle: Path,
     return lines
 
 
+SCENARIO_LENGTH = -1.0  # `--simulate` with no number: the scenario's own run length
+
 @click.command("generate")
 @click.option("--no-ui", is_flag=True, help="Generate headless (the only mode of this command; the TUI is `grove`).")
 @click.option("--world", "world_name", required=True, help="A shipped world (`grove worlds list`: hospital, office, residential, airport, station, museum, mall) or a path to a world YAML.")
@@ -155,9 +157,10 @@ def summary_lines(result: Generated, bundle: Path,
 @click.option("--prompt", required=True, help="The scenario in one sentence.")
 @click.option("--seed", type=click.IntRange(0, 2**32 - 1), default=0, show_default=True,
               help="Seeds the model and every sampler (0 to 2^32-1).")
-@click.option("--simulate", "simulate_seconds", type=click.FloatRange(min=0.0, max=24 * 3600.0), default=None,
-              callback=lambda ctx, param, value: _finite(value, param),
-              help="Also simulate this many seconds and write trajectories.csv into the bundle.")
+@click.option("--simulate", "simulate_seconds", type=float, is_flag=False, flag_value=SCENARIO_LENGTH, default=None,
+              callback=lambda ctx, param, value: _run_seconds(value, param),
+              help="Also simulate this many seconds and write trajectories.csv into the bundle; with no number, "
+                   "the scenario's own length (long enough for its planned behaviours, capped; the report says it).")
 @click.option("--out", "out_dir", type=click.Path(), required=True,
               help="Bundle folder to write; an existing bundle there is replaced, any other folder is refused.")
 @click.option("--overwrite", is_flag=True, help="Replace --out even when it is a folder that is not a bundle.")
@@ -209,7 +212,8 @@ def _generate_one(session: GroveSession, request: ScenarioRequest, out_dir: Path
     progress = Progress(_err(), prefix=prefix)
     try:
         generated = session.generate(request, out_dir, overwrite=overwrite, on_event=progress)
-        sim = session.simulate(generated.bundle_dir, simulate_seconds).to_dict() if simulate_seconds else None
+        seconds = None if simulate_seconds == SCENARIO_LENGTH else simulate_seconds
+        sim = session.simulate(generated.bundle_dir, seconds).to_dict() if simulate_seconds else None
     except BaseException:
         progress.stop()  # the spinner must not overwrite the error line the grove group prints
         raise
@@ -365,6 +369,16 @@ class _BatchBar:
         self._progress.stop()
 
 
+def _run_seconds(value: float | None, param: click.Parameter) -> float | None:
+    """`--simulate`: a number of seconds (0 to a day; 0 runs nothing) or none, the scenario's length."""
+    if value is None or value == SCENARIO_LENGTH:
+        return value
+    _finite(value, param)
+    if not 0.0 <= value <= 24 * 3600.0:
+        raise click.BadParameter(f"{value:g} is not between 0 and {24 * 3600} seconds", param=param)
+    return value
+
+
 def _finite(value: float | None, param: click.Parameter) -> float | None:
     import math
 
@@ -375,14 +389,15 @@ def _finite(value: float | None, param: click.Parameter) -> float | None:
 
 @click.command("simulate")
 @click.argument("bundle", type=click.Path(file_okay=False))
-@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True, max=24 * 3600.0), default=30.0,
-              show_default=True, callback=lambda ctx, param, value: _finite(value, param),
-              help="Simulated seconds to run (at most a day).")
+@click.option("--seconds", type=click.FloatRange(min=0.0, min_open=True, max=24 * 3600.0), default=None,
+              callback=lambda ctx, param, value: _finite(value, param),
+              help="Simulated seconds to run (at most a day); default the scenario's own length, long enough "
+                   "for its planned behaviours.")
 @click.option("--model", type=click.Choice(PEDESTRIAN_MODELS), default=None,
               help="Pedestrian model: grove (passes RiMEA) or lightsfm (HuNavSim's forces); "
                    "default the settings' simulation.pedestrian_model.")
 @click.pass_context
-def simulate(ctx: click.Context, bundle: str, seconds: float, model: str | None) -> None:
+def simulate(ctx: click.Context, bundle: str, seconds: float | None, model: str | None) -> None:
     """Simulate a bundle and write trajectories.csv into it."""
     out = _out()
     with session_for(ctx) as session:

@@ -34,7 +34,7 @@ from grove_tui.generation.events import AttemptStarted, Event, StageFinished, St
 from grove_tui.generation.planning import OperationalPlan, plan_operational
 from grove_tui.generation.postprocess import GroupPlan, PostProcessed, check_population, postprocess
 from grove_tui.generation.presets import Preset
-from grove_tui.generation.requests import RobotRequest
+from grove_tui.generation.requests import MAX_PROMPT_CHARS, RobotRequest
 from grove_tui.generation.reconcile import grounding_report, with_followed_person
 from grove_tui.generation.route_time import planned_routes, planning_mode
 from grove_tui.language.model import Count, GroupReading, PromptReading, effective_counts
@@ -45,7 +45,7 @@ from grove_tui.scenario.model import Scenario
 from grove_tui.generation.synthesis import (SynthesisRequest, SynthesisResult, describe_documents, draft_summary,
                                            prepare_request, synthesize)
 from grove_tui.navigation.velocity_field import VelocityField
-from grove_tui.errors import BTError, Cancelled, GenerationError, PromptError
+from grove_tui.errors import EMPTY_PROMPT_HINT, LONG_PROMPT_HINT, BTError, Cancelled, GenerationError, PromptError
 from grove_tui.world.model import World
 
 if TYPE_CHECKING:
@@ -53,7 +53,6 @@ if TYPE_CHECKING:
     from grove_tui.llm.local import LocalLLM
 
 STAGES = ("rois", "retrieval", "synthesis", "postprocess", "planning")
-MAX_PROMPT_CHARS = 2000
 
 __all__ = ["AttemptStarted", "Cancelled", "GenerationError", "GenerationPipeline", "GenerationResult", "PlanInputs",
            "STAGES", "StageFinished", "StageStarted", "TokenStreamed"]
@@ -260,9 +259,10 @@ class GenerationPipeline:
         emit = on_event or _no_event
         prompt = " ".join((prompt or "").split())
         if not prompt:
-            raise PromptError("the prompt is empty: describe the people and what they do")
+            raise PromptError("the prompt is empty: describe the people and what they do", hint=EMPTY_PROMPT_HINT)
         if len(prompt) > MAX_PROMPT_CHARS:
-            raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}")
+            raise PromptError(f"the prompt is {len(prompt)} characters long; keep it under {MAX_PROMPT_CHARS}",
+                              hint=LONG_PROMPT_HINT)
         preset, world = self.preset, self.world
         stages: dict[str, StageTiming] = {}
         clock = StageClock(emit, cancel, stages)

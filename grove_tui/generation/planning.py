@@ -347,6 +347,9 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
             notes.append(f"the robot goes to {guided}, the exit of the people it guides (its clause read "
                          f"{asked.destination})")
         goal = _place_point(world, grid, guided or asked.destination or "")
+    elif asked is not None and task == "patrol" and asked.location and asked.via:
+        # "patrols between the entrance and the reading tables": its round runs from one to the other
+        goal = _place_point(world, grid, asked.location)
     led = _followers_way(reading) if task == "cross" and guided_out is None and \
         (asked is None or not (asked.start or asked.destination)) else None
     if goal is None and led is not None and led[1] is not None:

@@ -26,6 +26,8 @@ from grove_tui.generation.draft import Draft, DraftNode, place_at
 from grove_tui.errors import GenerationError, PlanningError, PromptError
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.reconcile import places_kept_out, reconcile
+from grove_tui.generation.exit_post import off_the_opening
+from grove_tui.generation.led_start import led_destination
 from grove_tui.generation.rois import RoISelection
 from grove_tui.language.model import GroupReading, PromptReading, effective_counts
 from grove_tui.navigation.grid import OccupancyGrid
@@ -374,6 +376,8 @@ class TargetResolver:
         if isinstance(obj, Door):
             if node == "FollowVelocityField":
                 return (round(obj.position[0], 3), round(obj.position[1], 3))
+            if obj.exit:  # standing at an exit without leaving: beside its opening (exit_post)
+                return self._beside(name, obj.zone, off_the_opening(obj, lambda p: self.snap(p, name)), slot)
             return self._beside(name, obj.zone, self.snap(obj.inward_point(0.6), name), slot)
         if node == "Queue":
             # A queue needs a service point; a zone named as one is served at its counter-like entity.
@@ -789,7 +793,8 @@ def _exits_shunned(world: World, group: GroupReading) -> tuple[str, ...]:
 def _reactor_zone(world: World, group: GroupReading) -> str | None:
     """The zone a group that reacts to the robot is put in by its sentence: where they are, or where
     they follow it through."""
-    for name in (group.start, group.location, *group.via, group.destination):
+    # people the robot leads are where it picks them up, not already where it takes them (led_start)
+    for name in (group.start, group.location, *group.via, *led_destination(group)):
         if name:
             zone = world.zone_of_place(name) or ""
             if zone:

@@ -35,10 +35,13 @@ from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_a
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
+from grove_tui.generation.exit_post import claim_radius
 from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
+from grove_tui.generation.run_length import with_run_length
+from grove_tui.generation.stay_claims import stay_claims
 from grove_tui.generation.robot_errand import errand_claims
 from grove_tui.generation.robot_passing import passed_zones
 from grove_tui.language.robot_errands import robot_errand
@@ -922,8 +925,9 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                                                  1.3 * seconds + 10.0),))
     if robot_row is not None:
         questions += robot_row.unsure
-    return GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)), tuple(repairs),
-                           tuple(reading.corrections), robot_row, tuple(dict.fromkeys(questions)))
+    return with_run_length(GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)),
+                                           tuple(repairs), tuple(reading.corrections), robot_row,
+                                           tuple(dict.fromkeys(questions))))
 
 
 def reading_questions(reading: PromptReading) -> list[str]:
@@ -1107,7 +1111,9 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
     for name in places_kept_out(world, r):
         # "..., avoiding the lifts": never there, all the run long
         claims.append(_keep_out_claim(world, name, g.count))
-    return claims
+    return stay_claims(claims, reaction=r.robot_interaction, place=r.location or r.start, spawn=g.spawn, world=world,
+                       eta=timing.eta, seconds=float(r.wait_seconds) if r.wait_seconds else None,
+                       talks=base == "converse", goes_on=walks_on_to(r, world) is not None or bool(r.destination))
 
 
 def _onward_claims(r: GroupReading, g: PlannedGroup, world: World, timing: _Timing, n: int,
@@ -1186,6 +1192,7 @@ def _place_claim(kind: str, place: str, plan: str, world: World, n: int, eta: fl
         return Claim(kind, place, plan, zone=obj.name, place=place, needs_seconds=round(eta, 1))
     # people sent to one point stand beside each other: the more of them, the wider the spot
     radius = (2.0 if stay else 1.0) + 0.5 * math.sqrt(n)
+    radius = claim_radius(obj, radius) if isinstance(obj, Door) else radius  # beside an exit's opening (exit_post)
     return Claim(kind, place, plan, place=place, point=(round(float(point[0]), 3), round(float(point[1]), 3)),
                  radius=round(radius, 2), needs_seconds=round(eta, 1))
 
@@ -1329,6 +1336,11 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
             claim = _place_claim(kind, asked.destination, plan_text, world, 1,
                                  (2.6 if kind == "robot_patrol" else 1.3) * seconds + 10.0)
             claims.append(claim)
+        elif asked.task == "patrol" and asked.location and asked.via and world.zone_of_place(asked.location):
+            # "patrols between the entrance and the reading tables": out to the place it names and back,
+            # checked at that place, never at wherever its planned round happens to end
+            claims.append(_place_claim("robot_patrol", asked.location, f"patrol to {asked.location} and back",
+                                       world, 1, 2.6 * seconds + 10.0))
         elif asked.task == "patrol":
             claims.append(Claim("robot_patrol", asked.location or "its round", "drive its round and back",
                                 point=(round(robot.goal[0], 3), round(robot.goal[1], 3)), radius=1.0,

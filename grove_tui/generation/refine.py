@@ -631,5 +631,7 @@ def _grounding(scene: Scene, refinement: Refinement, records: Sequence[GroupReco
     if refinement.robot.kind == "keep" and robot is not None:
         before = scene.report.get("grounding")
         robot_row = GroundingReport.from_dict(before).robot if isinstance(before, dict) else robot_row
-    return replace(report, groups=groups, robot=robot_row, sentences=tuple(sentences),
-                   unsure=report.unsure).to_dict()
+    from grove_tui.generation.run_length import with_run_length
+
+    return with_run_length(replace(report, groups=groups, robot=robot_row, sentences=tuple(sentences),
+                                   unsure=report.unsure)).to_dict()

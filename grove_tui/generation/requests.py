@@ -5,6 +5,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+# The longest prompt read (after whitespace is folded): a scenario is a sentence or two, and the model's
+# context must hold the prompt beside the retrieved nodes. One limit for the CLI, the app, jobs and batch.
+MAX_PROMPT_CHARS = 2000
+
 __all__ = ["Point", "RobotRequest"]
 
 Point = tuple[float, float]

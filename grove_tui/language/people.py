@@ -8,6 +8,8 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.compound_people import chain_end
 from grove_tui.language.parser import known_word
+from grove_tui.language.counted_pushers import pushes_after
+from grove_tui.language.of_names import of_name_end
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.adverb_subjects import past_adverbs
 from grove_tui.language.held_things import a_load_of_things
@@ -293,7 +295,7 @@ class People:
         a time or a thing of the world."""
         s = self.s
         k = j
-        while k < s.n and k < j + 4:
+        while k < s.n and k < j + 6 + 2 * sum(s.joins(h) for h in range(j, k)):  # "first-year": one word
             if s.low[k] in lx.ROBOT_WORDS:
                 return None  # "the robot glides": whatever follows, the robot is nobody's kind
             named = self.titled_name(k)
@@ -302,13 +304,22 @@ class People:
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
-            after = modifier_end(s, k)
-            if after is not None and after < s.n and self.is_person_noun(after):
-                k = after  # "night-shift workers", "year 6 pupils": what kind, no count
+            after = modifier_end(s, k) or of_name_end(s, k)  # "Duke of Edinburgh hikers"
+            if after is not None and after < s.n and (self.is_person_noun(after) or (
+                    after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1))):
+                k = after  # "night-shift workers", "year 6 pupils", "off-duty bus drivers": what kind, no count
                 continue
             if k + 2 < s.n and s.joins(k + 1) and s.w[k].pos in ("NOUN", "ADJ", "ADV") and self.is_person_noun(k + 2) \
                     and s.lemma(k + 2) not in lx.IMPLIED_RANGES and not (k + 3 < s.n and self.is_person_noun(k + 3)):
                 k += 2  # "some 25 well-wishers", "two day-trippers": one word, hyphenated
+                continue
+            if k + 2 < s.n and s.joins(k + 1) and (s.w[k].pos in ("NOUN", "ADJ", "PROPN") or s.w[k + 2].dep == "amod") \
+                    and not self.is_person_noun(k) \
+                    and s.lemma(k + 2) not in lx.IMPLIED_RANGES:  # not "a first-class patient"
+                k += 2  # "bleary-eyed exam-season students": a hyphenated modifier, its last word then read
+                continue
+            if k > j and s.joins(k - 1) and k + 1 < s.n and s.w[k + 1].pos == "ADJ" and not self.is_person_noun(k):
+                k += 1  # "six third-year medical students": the tail of a hyphenated modifier, then a describing word
                 continue
             person = self.is_person_noun(k)
             if person and self._does_only_what_things_do(k):
@@ -344,8 +355,9 @@ class People:
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
                 k += 1  # "tired old patients", "two lost children", "waiting visitors"
                 continue
-            if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and self.is_person_noun(k + 1):
-                k += 1  # "flight attendants", "dog walker": a noun naming the kind of person
+            if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and (self.is_person_noun(k + 1) or (
+                    counted and k >= 3 and s.joins(k - 1) and s.w[k - 3].pos == "NUM" and self.person_head(k + 1, counted=True) == k + 1)):
+                k += 1  # "flight attendants", "dog walker", "twenty season-ticket holders": the kind of person
                 continue
             if s.w[k].pos in ("NOUN", "PROPN") and k + 2 < s.n and s.w[k + 1].pos in ("NOUN", "PROPN") and \
                     s.w[k + 1].tag not in ("NNS", "NNPS") and (self.is_person_noun(k + 2) or (
@@ -422,6 +434,8 @@ class People:
                 verb_lemma(word) in lx.INTENT_VERBS or word in lx.HUMAN_SUBJECT_VERBS or word in lx.SLOW_WORDS) \
                 and (k + 2 >= s.n or s.w[k + 2].pos in ("ADP", "PUNCT", "ADV")):
             return False  # "a retired couple dawdle through", "a dozen shoppers dawdle past": plural verb
+        if pushes_after(s, k):
+            return False  # "a couple of mums wheel prams": their verb, though parsed as a noun
         if k > 0 and s.w[k - 1].pos == "NUM" and s.lemma(k) != s.low[k] and \
                 not s.index.knows(s.lemma(k + 1)) and k + 2 < s.n and \
                 s.w[k + 2].pos in ("NOUN", "DET", "ADP", "PRON"):

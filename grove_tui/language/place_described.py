@@ -12,6 +12,7 @@ import re
 from collections.abc import Sequence
 
 from grove_tui.language.grooming_words import plain_grooming
+from grove_tui.language.imaging_words import plain_imaging
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.lexicon import PLACE_MODIFIERS
 from grove_tui.language.places import PlaceIndex, PlaceMatch
@@ -77,7 +78,7 @@ def plain_activity(activity: str) -> str:
     said = activity.lower()
     for pattern, plain in _IDIOMS:
         said = re.sub(r"\b" + pattern + r"\b", plain, said)
-    return plain_grooming(said)
+    return plain_imaging(plain_grooming(said))  # "get powdered", "pictures of your teeth"
 
 
 def vehicle_stop(activity: str) -> str | None:

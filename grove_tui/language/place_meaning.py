@@ -12,6 +12,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
+from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
@@ -246,8 +247,8 @@ class PlaceMeaning:
         s = self.s
         said = s.span(first, end - 1).lower()
         aux = next((x for x in range(first, end - 1) if s.low[x] in _PASSIVE_AUX and s.w[x + 1].tag == "VBN"), None)
-        if aux is None or aux == first:
-            return said
+        if aux is None or aux == first or done_to_people(s, first, aux):
+            return said  # "where guests get powdered": what is done to them, said as it was
         verbs = [aux + 1]
         x = aux + 2
         while x + 1 < end and s.low[x] in ("and", "or", ",") and s.w[x + 1].tag == "VBN":

@@ -8,6 +8,7 @@ from collections.abc import Callable, Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_landmark import by_landmark
+from grove_tui.language.owned_doors import door_of_owner
 from grove_tui.language.places import MeaningMatch, PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import lemma, phrase_lemmas
 
@@ -86,7 +87,7 @@ def thing_of_zone_said(index: PlaceIndex, low: Sequence[str], lemmas: Sequence[s
                        j: int, words: Callable[[int], tuple[list[str], int]]
                        ) -> tuple[tuple[PlaceMatch, float, str, tuple[str, ...]], int] | None:
     """The thing of a room the phrase names with the room, decided, and the index after the phrase."""
-    found = thing_of_named_zone(index, low, lemmas, j, words)
+    found = thing_of_named_zone(index, low, lemmas, j, words) or door_of_owner(index, low, lemmas, j)  # "the café's fire door"
     if found is None:
         thing = zone_then_thing(index, lemmas, match) or by_landmark(index, low, lemmas, j, words)
         found = (thing, j) if thing is not None else None

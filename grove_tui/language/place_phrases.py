@@ -2,8 +2,7 @@
 "on platform 2") and the world's place each names, with how sure that is.
 
 Words are matched by the world's one place index (language/places.py), then by meaning when they do
-not decide; a zone named before decides between fixtures alike ("On platform 2 ... the bench"); a phrase
-in a place role naming nothing of the world is an unknown place, unless a time, person, manner or building."""
+not decide; a zone named before decides between fixtures alike ("On platform 2 ... the bench"); a phrase in a place role naming nothing of the world is an unknown place, unless a time, person, manner or building."""
 
 from __future__ import annotations
 

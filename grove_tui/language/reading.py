@@ -37,6 +37,14 @@ from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
+from grove_tui.language.chat_articles import with_chat_articles
+from grove_tui.language.described_things import without_described_things
+from grove_tui.language.named_events import without_named_events
+from grove_tui.language.work_imperatives import as_workers
+from grove_tui.language.chat_pairs import with_chat_pairs
+from grove_tui.language.scale_counts import with_scale_figures
+from grove_tui.language.work_progressives import as_simple_work
+from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
@@ -44,6 +52,7 @@ from grove_tui.language.converging import as_heading
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.event_causes import without_causers
+from grove_tui.language.event_appositions import with_people_after_an_event
 from grove_tui.language.groups import Groups
 from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
@@ -57,6 +66,7 @@ from grove_tui.language.collective_roles import with_collective_roles
 from grove_tui.language.counted_loads import without_counted_loads
 from grove_tui.language.fronted_size_parts import with_fronted_size_parts
 from grove_tui.language.little_ones import with_little_ones
+from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.carried_babies import without_carried_babies
@@ -84,7 +94,8 @@ from grove_tui.language.text import normalise
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
-from grove_tui.language.clause_fixes import round30_clauses
+from grove_tui.language.clause_passes import with_clause_passes
+from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -104,8 +115,14 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
+    text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
+    text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
+    text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
+    text = with_scale_figures(text)  # "the hundred-odd travellers": about 100
+    text = as_simple_work(text)  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
+    text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
@@ -118,7 +135,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
-    text = with_little_ones(text)  # "leads the little one": "the little child"
+    text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(text)  # "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(text)  # "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
@@ -137,7 +154,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     reading = _read(Sentence(text, words, index, int(seed)))
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
-    reading = replace(reading, groups=round30_clauses(typed, index, reading.groups))  # "swerves her buggy wide of the robot"
+    reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
@@ -148,7 +165,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_activity_times(s, without_awaited_things(s, without_causers(s, without_second_names(s, without_asides(s, finder.find())))))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, finder.find()))))))))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.robot_shrinking import shrinks_from
 from grove_tui.language.sentence import Sentence
 
 # Verbs of a manner of walking or running, whatever the parser tags them.
@@ -67,6 +68,8 @@ def motion_reaction(s: Sentence, ownset: set[int], i: int, r: int) -> str | None
     for phrase in APPROACH_PHRASES:
         if s.phrase_words(i, len(phrase), ownset) == phrase and _only_determiners(s, i + len(phrase), r):
             return "approach"
+    if shrinks_from(s, ownset, i, r):
+        return "avoid"  # "scurries away from the robot", "cringes back from it" (robot_shrinking.py)
     if not _manner_verb(s, i):
         return None
     if fled_when_it_comes(s, ownset, i, r):

@@ -52,7 +52,8 @@ def _where_a_person_stands(s: Sentence, i: int) -> bool:
     if word.dep == "nsubj" and word.head != i:
         verb = s.verb(word.head)
         return s.w[word.head].pos in ("VERB", "AUX") and verb not in lx.THING_VERBS and (
-            verb in lx.INTENT_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or verb in lx.PEOPLE_GOING_VERBS)
+            verb in lx.INTENT_VERBS or verb in lx.HUMAN_SUBJECT_VERBS or verb in lx.PEOPLE_GOING_VERBS
+            or verb in lx.FAST_WORDS or verb in lx.SLOW_WORDS)  # "the sommelier darts into ..." 
     # "... and a greeter by the leaflet stand": one more placed, a place after
     return word.dep == "conj" and i + 1 < s.n and s.low[i + 1] in lx.PLACE_PREPOSITIONS and \
         any(s.low[k] == "and" for k in range(max(0, i - 4), i))
@@ -61,7 +62,7 @@ def _where_a_person_stands(s: Sentence, i: int) -> bool:
 def suffix_role(s: Sentence, i: int) -> bool:
     """Whether word i is a person by its role word's ending (see the module doc)."""
     low, lem = s.low[i], s.lemma(i)
-    if not low.isalpha() or s.w[i].pos not in ("NOUN", "PROPN") or lem in _THINGS or low in _THINGS or \
+    if not low.isalpha() or not (s.w[i].pos in ("NOUN", "PROPN") or (s.w[i].pos == "ADJ" and s.w[i].dep == "nsubj")) or lem in _THINGS or low in _THINGS or \
             lem in lx.NON_PEOPLE or lem in lx.NON_PLACES or lem in lx.COMPOUND_THINGS or lem in lx.ROBOT_WORDS:
         return False
     if not (lem in _HEADS or (len(lem) >= 6 and lem.endswith(_SURE_ENDINGS + _AGENT_ENDINGS))):

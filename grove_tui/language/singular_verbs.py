@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 from grove_tui.language.and_verbs import as_second_verbs
 from grove_tui.language.later_verbs import as_later_verbs
 from grove_tui.language.parser import Word
+from grove_tui.language.person_shapes import with_shaped_subjects
 from grove_tui.language.plural_verbs import as_plural_verbs
 from grove_tui.language.subject_phrases import (
     prepositions_as_such, subject_before, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
@@ -90,6 +91,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
             out[root] = replace(out[root], dep="nsubj", head=k)
     # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject;
     # "is frightened of the robot and cowers whenever ...": one person's second verb
+    out = with_shaped_subjects(out)  # "The croupier bolts from ...": a person, taken for an adjective
     return as_later_verbs(as_second_verbs(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out)))))
 
 

@@ -11,6 +11,7 @@ from grove_tui.language.parser import Word, known_word
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.person_shapes import person_shaped
 
 
 @lru_cache(maxsize=2048)
@@ -89,6 +90,8 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
             low in lx.PLACE_MODIFIERS or low in lx.PLACE_PARTS or \
             verb_lemma(low) in lx.INTENT_VERBS or verb_lemma(low) in lx.ROBOT_VERBS:
         return None
+    if person_shaped(words, k):
+        return None  # "two posties carry sacks": a person the lexicon lacks, not "posts"
     person = near_person_noun(low)
     if person is not None and person not in index.vocabulary:
         return None  # "docters": a person, read by the people rule ("securty" is both: a place here)

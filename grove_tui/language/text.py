@@ -24,6 +24,7 @@ from grove_tui.language.placing_lists import placing_lists
 from grove_tui.language.placing_verbs import placing_verbs
 from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.robot_chat import robot_chat
+from grove_tui.language.study_years import year_of_people
 from grove_tui.language.tokens import lemma
 
 # Unicode categories that never carry a word: other symbols (emoji, pictographs), modifier symbols
@@ -107,7 +108,7 @@ def normalise(text: str) -> str:
     kept = _JOINED.sub(lambda m: f"{m.group(1)}{'-' if m.group(1).lower() == 'after' else ''}{m.group(2)}", kept)
     kept = commas_for_brackets(places_first(kept))  # "dorm 1 asleep (3 ppl)"; "the school group (25 children) walks"
     kept = _OF_THIS_PLACE.sub("", _A_SIDE.sub(r"\1aside", kept))
-    kept = _YEAR_PERSON.sub(r"\1 year student\2", kept)
+    kept = _YEAR_PERSON.sub(lambda m: m.group(0) if year_of_people(kept, m.end()) else f"{m.group(1)} year student{m.group(2)}", kept)  # "third-year law students"
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
     return " ".join(bare_items(kept).split())  # "..., intern at printer": one person, an item of its own
 

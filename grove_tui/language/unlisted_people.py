@@ -85,7 +85,7 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     if _a_thing(s, s.lemma(i)) or _a_thing(s, s.low[i]):
         return False
     first = i
-    while first > 0 and s.w[first - 1].head == i and (s.joins(first - 1) or s.w[first - 1].dep in ("compound", "amod", "nmod")
+    while first > 0 and first - 1 < s.w[first - 1].head <= i and (s.joins(first - 1) or s.w[first - 1].dep in ("compound", "amod", "nmod")
                                                       and s.w[first - 1].pos in ("NOUN", "PROPN", "ADJ")):
         first -= 1  # "an airline rep", "two burly roadies", "some 20 well-wishers"
     if any(s.low[k] in lx.ROBOT_WORDS for k in range(first, i)):
@@ -94,7 +94,7 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
             any(s.low[k] in lx.PERSON_NOUNS or s.lemma(k) in lx.PERSON_NOUNS for k in range(first, i)):
         return False  # "a nervous intern steps aside": the person is named before, the verb mistagged
     before = s.low[first - 1] if first > 0 else ""
-    if first > 0 and s.w[first - 1].pos == "NUM" and s.w[first - 1].head == i:
+    if first > 0 and s.w[first - 1].pos == "NUM" and first <= s.w[first - 1].head <= i:
         return True  # "two roadies wander", "3 roadies leave"
     if any(s.low[k] in PERSON_ADJECTIVES for k in range(first, i)):
         return before in _OPENERS or before in _POSSESSIVES  # "a nervous witness leaves", "its worried owner"

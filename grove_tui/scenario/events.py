@@ -23,7 +23,7 @@ class SimEvent:
     t: float
     agent_id: int
     # "queue_join", "queue_advance", "queue_served", "evacuated", "left_building" (pushed outside, not
-    # evacuating), "goal_reached", "conversation_start" (detail: the ids in the circle, "3,4,5"),
+    # evacuating), "kept_in" (pushed over an exit's door line, not leaving: held back in, once per person), "goal_reached", "conversation_start" (detail: the ids in the circle, "3,4,5"),
     # "conversation_end", "robot_reaction" (detail: the reaction node), "tree_error"
     kind: str
     detail: str = ""  # queue name for queue events, exit for evacuations

@@ -261,6 +261,36 @@ class RunCheck:
 
 
 @dataclass(frozen=True)
+class RunLength:
+    """How long a run of the scenario should be (generation/run_length.py): `needed`, the longest time a
+    planned claim needs (`by` says whose), with a margin, capped at `cap`."""
+
+    seconds: float
+    needed: float
+    cap: float
+    by: str = ""
+
+    @property
+    def capped(self) -> bool:
+        return self.needed > self.seconds
+
+    def to_dict(self) -> JSONObject:
+        return {"seconds": self.seconds, "needed": self.needed, "cap": self.cap, "by": self.by}
+
+    @classmethod
+    def from_dict(cls, data: Parsed) -> RunLength:
+        return cls(float(data.get("seconds", 0.0)), float(data.get("needed", 0.0)), float(data.get("cap", 0.0)),
+                   str(data.get("by", "")))
+
+    def line(self) -> str:
+        text = f"run length: {self.seconds:.0f} s"
+        if self.by:
+            text += f" (the planned behaviours need {self.needed:.0f} s, longest {self.by}"
+            text += f"; capped at {self.cap:.0f} s)" if self.capped else ", with a margin)"
+        return text
+
+
+@dataclass(frozen=True)
 class GroundingReport:
     prompt: str
     groups: tuple[GroupGrounding, ...]
@@ -275,6 +305,7 @@ class GroundingReport:
     # Every sentence the scenario was made from: the prompt, then each follow-up that refined it
     # (generation/refine.py); empty for a scenario of one sentence.
     sentences: tuple[str, ...] = ()
+    length: RunLength | None = None  # how long a run should be for every claim to be told (planned)
 
     @property
     def checked(self) -> bool:
@@ -309,6 +340,8 @@ class GroundingReport:
         data["run"] = self.run.to_dict() if self.run is not None else None
         if self.sentences:
             data["sentences"] = list(self.sentences)
+        if self.length is not None:
+            data["length"] = self.length.to_dict()
         return data
 
     @classmethod
@@ -319,7 +352,8 @@ class GroundingReport:
                    tuple(str(u) for u in data.get("unhonoured", ())), tuple(str(r) for r in data.get("repairs", ())),
                    tuple(str(c) for c in data.get("corrections", ())),
                    RobotGrounding.from_dict(robot) if robot else None, tuple(str(u) for u in data.get("unsure", ())),
-                   RunCheck.from_dict(run) if run else None, tuple(str(s) for s in data.get("sentences", ())))
+                   RunCheck.from_dict(run) if run else None, tuple(str(s) for s in data.get("sentences", ())),
+                   RunLength.from_dict(data["length"]) if data.get("length") else None)
 
     def counts(self) -> dict[str, int]:
         """Groups (and the robot) per verdict: {"holds": 3, "fails": 1, ...}."""
@@ -343,11 +377,16 @@ class GroundingReport:
         if asks_robot and self.robot is not None:
             text += f"; robot {MARKS[self.robot.status]}"
         when = "so far" if self.run.partial else "run"
-        return f"{text} ({when} of {self.run.seconds:.0f} s)"
+        shorter = ""
+        if self.length is not None and not self.run.partial and self.run.seconds + 1.0 < self.length.seconds:
+            shorter = f"; the scenario's length is {self.length.seconds:.0f} s"
+        return f"{text} ({when} of {self.run.seconds:.0f} s{shorter})"
 
     def lines(self) -> list[str]:
         """Plain-text rendering, one line per group and one per claim (for the CLI and logs)."""
         out: list[str] = [self.summary()]
+        if self.length is not None:
+            out.append(self.length.line())
         for number, sentence in enumerate(self.sentences, start=1):
             out.append(f"sentence {number}: {sentence}")
         for g in self.groups:

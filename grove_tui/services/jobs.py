@@ -25,6 +25,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from grove_tui.errors import JobFileError
+from grove_tui.generation.requests import MAX_PROMPT_CHARS
 from grove_tui.jsontypes import JSONObject
 from grove_tui.services.dataset import INDEX_FILE, PARQUET_FILE, STATE_FILE
 from grove_tui.services.exporting import EXPORT_FORMATS, EXPORT_SUFFIXES, NEEDS_RUN
@@ -32,7 +33,7 @@ from grove_tui.services.exporting import EXPORT_FORMATS, EXPORT_SUFFIXES, NEEDS_
 MAX_JOB_FILE_BYTES = 64 * 1024 * 1024
 MAX_SEED = 2**32 - 1
 MAX_SIMULATE_SECONDS = 24 * 3600.0
-MAX_PROMPT_CHARS = 2000
+SCENARIO_LENGTH = -1.0  # a job's "simulate": true: the scenario's own run length
 REQUIRED = ("world", "preset", "prompt")
 OPTIONAL = ("seed", "name", "simulate", "export", "variations", "refine")
 MAX_FOLLOWUPS = 20
@@ -205,7 +206,9 @@ def _check_job(number: int, job: object, index: int) -> list[BatchJob]:
         raise ValueError(f"prompt is {len(job['prompt'])} characters; the limit is {MAX_PROMPT_CHARS}")
     seed = check_seed(job.get("seed", 0))
     simulate = job.get("simulate")
-    seconds = None if simulate in (None, 0) else check_simulate_seconds(simulate)
+    # "simulate": true runs the scenario for its own length (long enough for its planned behaviours)
+    seconds = SCENARIO_LENGTH if simulate is True else None if simulate in (None, 0, False) \
+        else check_simulate_seconds(simulate)
     name = job.get("name")
     if name is not None and (not isinstance(name, str) or not name.strip()):
         raise ValueError(f"name must be a non-empty string, got {name!r}")

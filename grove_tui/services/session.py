@@ -30,6 +30,8 @@ from pathlib import Path, PurePosixPath
 from typing import TYPE_CHECKING, Any, TypedDict
 
 from grove_tui.errors import (
+    EMPTY_PROMPT_HINT,
+    LONG_PROMPT_HINT,
     EXIT_CANCELLED,
     EXIT_MODEL_ERROR,
     BadInputError,
@@ -48,6 +50,7 @@ from grove_tui.generation.events import Event as Event
 from grove_tui.generation.events import StageFinished as StageFinished
 from grove_tui.generation.events import StageStarted as StageStarted
 from grove_tui.generation.events import TokenStreamed as TokenStreamed
+from grove_tui.generation.requests import MAX_PROMPT_CHARS
 from grove_tui.generation.requests import RobotRequest as RobotRequest
 
 if TYPE_CHECKING:
@@ -415,7 +418,11 @@ class GroveSession:
     def check_request(self, request: ScenarioRequest) -> tuple[World, Preset]:
         """World and preset of a request, and a non-empty prompt, before any model loads."""
         if not request.prompt or not request.prompt.strip():
-            raise PromptError("the prompt is empty: describe the people and what they do")
+            raise PromptError("the prompt is empty: describe the people and what they do", hint=EMPTY_PROMPT_HINT)
+        folded = " ".join(request.prompt.split())
+        if len(folded) > MAX_PROMPT_CHARS:
+            raise PromptError(f"the prompt is {len(folded)} characters long; keep it under {MAX_PROMPT_CHARS}",
+                              hint=LONG_PROMPT_HINT)
         try:
             request.prompt.encode("utf-8")
         except UnicodeEncodeError as exc:
@@ -1023,9 +1030,12 @@ class GroveSession:
         return Simulation.from_scenario(generated.scenario, generated.bundle_dir, world=generated.world,
                                         params=pedestrian_params())
 
-    def simulate(self, bundle: str | Path, seconds: float, *, cancel: threading.Event | None = None,
+    def simulate(self, bundle: str | Path, seconds: float | None = None, *, cancel: threading.Event | None = None,
                  runtime_planning: bool = True, model: str | None = None) -> SimulationSummary:
         """Run a bundle's scenario for `seconds`; give it trajectories.csv, events.jsonl and metrics.json.
+
+        `seconds` None: the scenario's own length (generation/run_length.py), long enough for its planned
+        behaviours (`scenario_run_seconds`).
 
         `model`: the pedestrian model ("grove" or "lightsfm"); default the settings' simulation.pedestrian_model.
 
@@ -1038,6 +1048,8 @@ class GroveSession:
 
         bundle = Path(bundle)
         scenario, _, _, _ = load_bundle(bundle)
+        if seconds is None:
+            seconds = self.scenario_run_seconds(bundle)
         world = self.load_world(str(world_source(bundle, scenario)))
         sim = Simulation.from_scenario(scenario, bundle, world=world, runtime_planning=runtime_planning,
                                        params=pedestrian_params(model))
@@ -1060,6 +1072,15 @@ class GroveSession:
         counters = asdict(frame.counters) if is_dataclass(frame.counters) else {"value": str(frame.counters)}
         return SimulationSummary(round(float(frame.t), 3), round(wall, 3), counters,
                                  int(crowd.get("wall_penetrations", 0)), crowd.get("goal_reach_rate"))
+
+    def scenario_run_seconds(self, bundle: str | Path) -> float:
+        """How long the bundle's scenario runs when the user leaves it to the scenario: the length its
+        planned report carries (RUN_FLOOR for a bundle without one: imported, or made before lengths)."""
+        from grove_tui.generation.run_length import RUN_FLOOR, scenario_seconds
+        from grove_tui.scenario.bundle import REPORT_FILE, load_report
+
+        generation = load_report(Path(bundle)) if (Path(bundle) / REPORT_FILE).is_file() else {}
+        return scenario_seconds(generation) or RUN_FLOOR
 
     def metrics(self, bundle: str | Path) -> BundleMetrics:
         """A simulated bundle's robot and crowd metrics and its grounding report checked on the run, written
@@ -1248,7 +1269,10 @@ class GroveSession:
             for followup in job.refine:  # each step replaces the job's bundle, atomically
                 generated = self.refine(generated, followup, target, overwrite=True, on_event=on_event,
                                         cancel=cancel)
-            summary = self.simulate(generated.bundle_dir, job.simulate, cancel=cancel) if job.simulate else None
+            from grove_tui.services.jobs import SCENARIO_LENGTH
+
+            summary = self.simulate(generated.bundle_dir, None if job.simulate == SCENARIO_LENGTH else job.simulate,
+                                    cancel=cancel) if job.simulate else None
             exports = {kind: self._batch_export(kind, generated.bundle_dir, out_dir, job.name, overwrite)
                        for kind in job.exports}
         except GroveError as exc:

@@ -52,6 +52,7 @@ from grove_tui.navigation.theta_star import ThetaStarPlanner
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.scenario.events import SimEvent
 from grove_tui.scenario.model import AgentSpec, RobotSpec, Scenario
+from grove_tui.simulation.keep_inside import back_inside, may_leave
 from grove_tui.simulation.robot import RobotDriver
 from grove_tui.world.model import World
 
@@ -153,6 +154,8 @@ class Simulation:
         self._agent_contacts: set[tuple[int, int]] = set()
         self._lock = threading.Lock()
         self.robot_driver: RobotDriver | None = None  # the scripted robot's task and collision monitor
+        self._kept_in: set[int] = set()
+        self.may_leave: np.ndarray | None = None  # rows whose task is to leave (None: everyone may; see keep_inside)
         for row in range(len(trees)):
             tree = trees[row]
             if tree is not None:
@@ -238,6 +241,7 @@ class Simulation:
         recorder = _make_recorder(dt, ids)
         simulation = cls(crowd, context, trees, dt=dt, bt_rate=bt_rate, loops=loops, scenario=scenario, world=world,
                          recorder=recorder)
+        simulation.may_leave = may_leave(documents, [door.name for door in world.exits()] if world is not None else ())
         if robot is not None:
             simulation.robot_driver = RobotDriver(robot, crowd, context)
             crowd.set_robot_path(simulation.robot_driver.initial_path())
@@ -304,6 +308,14 @@ class Simulation:
             x, y = float(self.crowd.pos[row, 0]), float(self.crowd.pos[row, 1])
             exit_name = min(self._exits, key=lambda e: math.dist(e[1], (x, y)))[0] if self._exits else ""
             evacuating = int(self.crowd.mode[row]) == MODE_FIELD or ctx.status[row].startswith("evacuating")
+            if not evacuating and self.may_leave is not None and not self.may_leave[row]:
+                # not their task to leave: held back in at the door (keep_inside)
+                self.crowd.pos[row] = back_inside(self._building, (x, y), float(self.crowd.radius[row]))
+                self.crowd.vel[row] = 0.0
+                if row not in self._kept_in:  # said once: the crowd may press them at the door again and again
+                    self._kept_in.add(row)
+                    ctx.event("kept_in", row, exit_name)
+                continue
             self.crowd.set_active(row, False)
             if evacuating:
                 ctx.counters.evacuated += 1

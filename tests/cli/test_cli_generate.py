@@ -52,6 +52,18 @@ def test_bad_input_exits_2_with_a_clear_message_and_no_bundle(tmp_path, embedded
     assert not out.exists() and list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("prompt, message, hint", [
+    ("   ", "the prompt is empty", "Say who is there, how many and what they do"),
+    ("people walk " * 200, "characters long", "Say it in one or two sentences"),
+], ids=["empty", "overlong"])
+def test_an_empty_or_overlong_prompt_gets_a_hint_about_itself(tmp_path, embedded_path, prompt, message, hint):
+    result = invoke(generate_args(tmp_path / "bundle", embedded_path, prompt=prompt))
+    assert result.exit_code == EXIT_BAD_INPUT
+    assert message in result.stderr and hint in result.stderr
+    assert "fewer people" not in result.stderr
+    assert not (tmp_path / "bundle").exists()
+
+
 @pytest.mark.slow
 def test_world_by_path(tmp_path, embedded_path):
     from grove_tui.paths import worlds_dir
@@ -109,6 +121,23 @@ def test_generate_simulate_and_resimulate(tmp_path, embedded_path):
     again = invoke(["simulate", str(out), "--seconds", "5"])
     assert again.exit_code == EXIT_OK, again.stderr
     assert (out / "trajectories.csv").read_text() == first  # the bundle simulates identically
+
+
+@pytest.mark.slow
+def test_simulate_with_no_number_runs_the_scenarios_own_length(tmp_path, embedded_path):
+    out = tmp_path / "pharmacy"
+    # `--simulate` just before `--seed`: the option takes no number and the next option is not eaten
+    result = invoke(generate_args(out, embedded_path, extra=["--simulate", "--seed", "2"]))
+    assert result.exit_code == EXIT_OK, result.stderr
+    simulated = [line for line in result.stdout.splitlines() if line.startswith("simulated: ")]
+    assert simulated, result.stdout
+    seconds = float(simulated[0].split()[1])
+    assert 60.0 <= seconds <= 900.0  # the scenario's length: at least a minute, capped
+    rows = (out / "trajectories.csv").read_text().splitlines()
+    assert float(rows[-1].split(",")[1]) == pytest.approx(seconds, abs=0.5)
+    again = invoke(["simulate", str(out)])  # and `grove simulate` with no --seconds runs the same length
+    assert again.exit_code == EXIT_OK, again.stderr
+    assert any(line.startswith(f"simulated: {seconds:.1f} s") for line in again.stdout.splitlines()), again.stdout
 
 
 @pytest.mark.slow

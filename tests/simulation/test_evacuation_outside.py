@@ -1,5 +1,5 @@
 """Nobody wanders outside uncounted: an evacuee pushed out through the exit is evacuated, anyone else
-who leaves is logged as having left; spawns never sit on an exit."""
+pushed out is held back in; spawns never sit on an exit."""
 
 from __future__ import annotations
 
@@ -30,12 +30,19 @@ def test_an_evacuee_already_outside_is_counted_through_the_exit(hall):
     assert sim.frame().counters.evacuated == 1
 
 
-def test_anyone_else_pushed_outside_is_logged_as_having_left(hall):
+def test_anyone_else_pushed_outside_is_held_back_in(hall):
+    """Only people whose task is to leave leave: someone else shoved over the exit's door line is put
+    back inside at the door, still in the run (keep_inside), and it is said once."""
+    world = hall[0]
     sim = simulate(hall, [agent(1, (19.0, 6.0))], ['<GoTo target="counter" x="2.2" y="6"/>'])
     sim.crowd.pos[0] = (21.0, 6.0)
     sim.step()
-    assert not sim.crowd.active[0]
-    assert [(e.kind, e.detail) for e in sim.events] == [("left_building", "exit_door")]
+    assert sim.crowd.active[0]
+    x, y = (float(v) for v in sim.crowd.pos[0])
+    assert world.outline().contains(shapely.Point(x, y)) and x > 19.5  # back in at the door, not elsewhere
+    sim.crowd.pos[0] = (21.0, 6.0)
+    sim.step()
+    assert [(e.kind, e.detail) for e in sim.events] == [("kept_in", "exit_door")]
     assert sim.frame().counters.evacuated == 0
 
 

@@ -108,6 +108,9 @@ def test_a_wait_with_a_look_in_another_world(tmp_path):
 def test_a_reaction_alone_is_as_before(tmp_path):
     run = plan_by_hand(load_world("hospital"), "normal", "Two porters stare at the robot in the main corridor.",
                        (DraftGroup("porters", 2, "main_corridor", DraftNode("LookAtRobot", {})),), tmp_path / "b")
-    assert not _claims(run.report, "queue") and not _claims(run.report, "stay")
+    assert not _claims(run.report, "queue")
+    # staring at the robot where they are: they stay there, claimed (generation/stay_claims.py)
+    stay, = _claims(run.report, "stay")
+    assert stay.zone == "main_corridor" and stay.seconds is None
     assert _claims(run.report, "robot_look")
     assert "LookAtRobot" in {e.id for e in _root(run).walk()}

@@ -91,8 +91,11 @@ class Snapshot:
 
 class SimulationController:
     def __init__(self, simulation: Simulation, fps: float = 20.0, speed: float = 1.0,
-                 metrics: LiveMetrics | None = None) -> None:
+                 metrics: LiveMetrics | None = None, run_until: float = 0.0) -> None:
         self.simulation = simulation
+        # the scenario's length (generation/run_length.py): the run does not end before it, so a robot's
+        # patrol or a stay the people finished their trees before is still seen out
+        self.run_until = run_until
         self.fps = fps
         self.dt = float(getattr(simulation, "dt", 0.05))
         self.speed = speed
@@ -220,7 +223,7 @@ class SimulationController:
         if run_state is None:
             return
         state = run_state()
-        if state.over:
+        if state.over and self._time() + 1e-9 >= self.run_until:
             self.ended = RunEnd(self._time(), state.agents, state.out)
             self.playing = False
             self._anchor = None

@@ -266,7 +266,12 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
             self.post_message(msg.SimulationFailed(describe_error(exc).text))
             return
         settings = self.grove.settings.simulation
-        controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed, metrics=metrics)
+        try:
+            run_until = self.grove.session.scenario_run_seconds(self.generated.bundle_dir)
+        except Exception:  # a bundle whose report cannot be read still plays, ending when its people are done
+            run_until = 0.0
+        controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed, metrics=metrics,
+                                          run_until=run_until)
         self.controller = controller
         self.post_message(msg.SimulationReady(simulation))
         controller.run(lambda: worker.is_cancelled)

@@ -1,0 +1,43 @@
+"""The clause passes over the groups once they are read, in order. Each reads one way English says
+what people do or where, which the clause reader leaves to them:
+
+- crowding round a thing after moving (crowding_round.py); a zone cleared in the passive as an
+  evacuation from it (cleared_passive.py); steering wide of or hanging back from the robot
+  (steered_clear.py); a feeling set apart from its clause (feeling_adjectives.py);
+- a purpose that names where people go ("late for boarding at B2": purposed_places.py); going to where
+  a problem is (problem_places.py); a place said by what is done there as the room, not a thing in it
+  (activity_place_zones.py); a kind of place searched for that the world lacks, refused
+  (searched_unknown.py);
+- a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
+  errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
+  robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from grove_tui.language.activity_place_zones import activity_place_zones
+from grove_tui.language.carried_errands import carried_errands
+from grove_tui.language.cleared_passive import cleared_away
+from grove_tui.language.crowding_round import crowding_round
+from grove_tui.language.feeling_adjectives import coloured_by_feeling
+from grove_tui.language.leisure_places import leisure_places
+from grove_tui.language.model import PromptReading
+from grove_tui.language.places import PlaceIndex
+from grove_tui.language.problem_places import problem_places
+from grove_tui.language.purposed_places import purposed_places
+from grove_tui.language.searched_unknown import searched_unknown
+from grove_tui.language.steered_clear import steering_clear_of_the_robot
+from grove_tui.language.surprised_at import occasions, surprised_at
+
+
+def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -> PromptReading:
+    """The reading with the clause passes applied, in the order above."""
+    groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, reading.groups))))
+    groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
+    groups = surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))
+    unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
+    events = occasions(prompt)
+    unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)
+    return replace(reading, groups=groups, unknown_places=unknown)

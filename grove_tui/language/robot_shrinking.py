@@ -1,0 +1,46 @@
+"""Going away from the robot by any verb of moving or shrinking (round 31): "scurries away from the
+robot", "a toddler skitters back from it", "slinks off away from the robot", "cringes away from it".
+The verb may be one the lexicon lacks, or one the small parser tags a noun ("scurries"); what reads it
+is the tail "away from" / "back from" / "clear of" right before the robot, with only determiners
+between. Read for language/robot_motion.py."""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.sentence import Sentence
+
+# Words that go away from what follows: "away from", "back from", "off away from", "well away from".
+AWAY_FROM_TAILS = (("away", "from"), ("back", "from"), ("off", "away", "from"), ("right", "away", "from"),
+                   ("well", "away", "from"), ("back", "away", "from"), ("quickly", "away", "from"),
+                   ("off", "from"), ("clear", "of"), ("well", "clear", "of"))
+# Verbs of shrinking or moving away that the manner-of-walking list lacks.
+SHRINKING_VERBS = frozenset("shrink cringe wince quail cower recoil flinch shy edge inch sidle slink slope shuffle "
+                            "scramble scarper skedaddle bolt scoot withdraw retreat pull draw lean step back "
+                            "shift twist turn swerve veer duck dodge".split())
+
+
+def _moving_word(s: Sentence, i: int) -> bool:
+    word = s.low[i]
+    if s.after_determiner(i) or word in lx.ROBOT_WORDS:
+        return False
+    stems = {word, s.verb(i), s.w[i].lemma.lower()}
+    if word.endswith("ies"):
+        stems.add(word[:-3] + "y")  # "scurries", "shies"
+    if word.endswith("es"):
+        stems.add(word[:-2])
+    if word.endswith("s"):
+        stems.add(word[:-1])
+    from grove_tui.language.robot_motion import MANNER_VERBS
+    return bool(stems & (SHRINKING_VERBS | MANNER_VERBS)) or s.w[i].pos == "VERB"
+
+
+def shrinks_from(s: Sentence, ownset: set[int], i: int, r: int) -> bool:
+    """Whether the verb at i goes away from the robot at r ("scurries away from the robot")."""
+    if not _moving_word(s, i):
+        return False
+    for tail in AWAY_FROM_TAILS:
+        end = i + 1 + len(tail)
+        if tuple(s.low[i + 1:end]) == tail and all(k in ownset for k in range(i + 1, end)) and end <= r and \
+                all(s.low[k] in lx.DETERMINERS for k in range(end, r)):
+            return True
+    return False

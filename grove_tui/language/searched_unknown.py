@@ -1,0 +1,39 @@
+"""A place the world lacks, searched for by its kind (round 31): "wander off hunting for a bar", "leave
+the café looking for a cashpoint", "set off in search of a vending machine". Searching for "a" kind of
+place the world has no place of is a place the sentence asks for that the world cannot give: it is
+refused by name, as "head for the library" is when the world has none. Only kinds of place are read
+(a bar, a cashpoint, a loo), never a thing searched for ("looking for a spare trolley")."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from grove_tui.language.places import PlaceIndex
+
+# Kinds of place people go looking for.
+PLACE_KINDS = frozenset(
+    "bar pub cashpoint atm cash_machine vending_machine toilet toilets loo loos lavatory gents ladies restroom restrooms "
+    "cafe café canteen coffee_shop snack_bar pharmacy chemist shop newsagent kiosk lift lifts library gym chapel "
+    "smoking_area first_aid_room water_fountain payphone cloakroom lockers charging_point baby_change prayer_room "
+    "restaurant exit quiet_room ticket_office information_desk help_desk taxi_rank bus_stop car_park".split())
+_SEARCH = re.compile(r"\b(?:(?:hunt|search|look|scout|seek|scour|forag|cast)(?:s|es|ed|ing)?(?:\s+(?:around|about|"
+                     r"everywhere|high\s+and\s+low|round))?\s+for|in\s+search\s+of|on\s+the\s+(?:hunt|lookout)\s+for|"
+                     r"(?:trying|hoping|wanting)\s+to\s+find|seeking)\s+(?:a|an|some|another)\s+((?:[\w'-]+\s*){1,3})",
+                     re.I)
+
+
+def searched_unknown(prompt: str, index: PlaceIndex) -> list[str]:
+    """The kinds of place a prompt searches for that the world has no place of, as written."""
+    found: list[str] = []
+    for m in _SEARCH.finditer(prompt):
+        words = [w.strip(".,;:!?").lower() for w in m.group(1).split()]
+        for end in (2, 1):
+            phrase = words[:end]
+            if len(phrase) < end or "_".join(phrase) not in PLACE_KINDS:
+                continue
+            match = index.match(phrase)
+            if match is None or not match.exact:
+                found.append(" ".join(phrase))
+            break
+    return found
