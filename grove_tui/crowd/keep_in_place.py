@@ -24,6 +24,7 @@ from grove_tui.crowd.context import Point, SimContext
 
 SPOT_STEP = 0.5  # metres between the points of a zone a person may step to
 WALL_MARGIN = 0.4  # metres the points keep inside the zone's outline
+IN_ZONE_SLACK = 0.05  # metres past the outline still counted in the zone (rounding, not a doorway)
 PARKED_DISTANCE = 3.0  # metres kept from a robot standing at the end of its drive
 PARKED_SPEED = 0.05  # m/s: below this the robot stands
 
@@ -40,12 +41,13 @@ def home_zone(sim: SimContext, point: Point) -> str | None:
 
 
 def in_zone(sim: SimContext, zone: str, point: Point) -> bool:
-    """Whether a point is in `zone` (with half a metre for its doorways and walls)."""
+    """Whether a point is in `zone`, as the report's stay check judges it (its outline, a few centimetres
+    for rounding): one who stepped half a metre past it into a doorway or the next room walks back in,
+    where a slack of half a metre had left them standing there for good while the stay claim failed."""
     if sim.world is None:
         return True
     polygon = sim.world.zone(zone).polygon
-    return bool(polygon.covers(shapely.Point(float(point[0]), float(point[1])))) or \
-        polygon.distance(shapely.Point(float(point[0]), float(point[1]))) <= 0.5
+    return bool(polygon.distance(shapely.Point(float(point[0]), float(point[1]))) <= IN_ZONE_SLACK)
 
 
 def _zone_spots(sim: SimContext, zone: str) -> np.ndarray:

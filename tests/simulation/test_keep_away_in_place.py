@@ -70,3 +70,19 @@ def test_people_who_queue_and_keep_away_stay_at_their_queue(tmp_path):
     claims = {c.kind: c for g in report.groups for c in g.claims}
     assert claims["robot_avoid"].status in ("holds", "unchecked"), claims["robot_avoid"].evidence
     assert claims["queue"].status == "holds", claims["queue"].evidence
+
+
+def test_one_who_keeps_away_walks_back_in_when_past_the_outline(tmp_path):
+    """"a nervous visitor avoids the robot in the entrance hall": giving way, the visitor stepped 0.4 m past
+    the hall's east side and stood there for the rest of the run (half a metre past the outline still
+    counted as in the hall for the simulation, not for the stay check: 25 % of the run in it, a ✗ of a run
+    that did not do what was asked). Now the simulation judges the place as the check does."""
+    world = load_world("worlds/museum.yaml")
+    sentence = "a nervous visitor avoids the robot in the entrance hall"
+    run = plan_by_hand(world, "normal", sentence, (DraftGroup("visitor", 1, "entrance_hall",
+                                                              DraftNode("Wait", {"duration": 600.0})),),
+                       tmp_path / "b")
+    report = run.run(90.0)
+    claims = {c.kind: c for g in report.groups for c in g.claims}
+    assert claims["robot_avoid"].status in ("holds", "unchecked"), claims["robot_avoid"].evidence
+    assert claims["stay"].status == "holds", claims["stay"].evidence
