@@ -16,7 +16,7 @@ from textual.screen import Screen
 from textual.widgets import Static, Tree
 from textual.worker import get_current_worker
 
-from grove_tui.errors import describe_error
+from grove_tui.errors import GroveError, describe_error
 from grove_tui.tui import messages as msg
 from grove_tui.services.session import GeneratedScenario
 from grove_tui.tui.screens.inspect import base_overlay, busiest_goal
@@ -268,8 +268,8 @@ is out of the building or done ("all 40 out at t = 83 s"); **space** plays on.
         settings = self.grove.settings.simulation
         try:
             run_until = self.grove.session.scenario_run_seconds(self.generated.bundle_dir)
-        except Exception:  # a bundle whose report cannot be read still plays, ending when its people are done
-            run_until = 0.0
+        except (GroveError, OSError, KeyError, TypeError, ValueError):
+            run_until = 0.0  # a report that cannot be read: the bundle still plays, ending when its people are done
         controller = SimulationController(simulation, fps=settings.fps, speed=settings.speed, metrics=metrics,
                                           run_until=run_until)
         self.controller = controller
