@@ -18,6 +18,7 @@ import click
 from rich.console import Console
 
 from grove_tui.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUNTIME_FAILURE
+from grove_tui.generation.requests import SCENARIO_LENGTH
 from grove_tui.settings import PEDESTRIAN_MODELS
 
 if TYPE_CHECKING:
@@ -147,8 +148,6 @@ def summary_lines(result: Generated, bundle: Path,
         lines += ["  " + line for line in grounding.lines()[1:]]
     return lines
 
-
-SCENARIO_LENGTH = -1.0  # `--simulate` with no number: the scenario's own run length
 
 @click.command("generate")
 @click.option("--no-ui", is_flag=True, help="Generate headless (the only mode of this command; the TUI is `grove`).")

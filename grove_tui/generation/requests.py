@@ -8,6 +8,9 @@ from dataclasses import dataclass
 # The longest prompt read (after whitespace is folded): a scenario is a sentence or two, and the model's
 # context must hold the prompt beside the retrieved nodes. One limit for the CLI, the app, jobs and batch.
 MAX_PROMPT_CHARS = 2000
+# A run length asked with no number (`--simulate` alone, a job's "simulate": true): the scenario's own
+# length (generation/run_length.py), said as a value no real length takes.
+SCENARIO_LENGTH = -1.0
 
 __all__ = ["Point", "RobotRequest"]
 

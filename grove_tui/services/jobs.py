@@ -25,7 +25,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from grove_tui.errors import JobFileError
-from grove_tui.generation.requests import MAX_PROMPT_CHARS
+from grove_tui.generation.requests import MAX_PROMPT_CHARS, SCENARIO_LENGTH
 from grove_tui.jsontypes import JSONObject
 from grove_tui.services.dataset import INDEX_FILE, PARQUET_FILE, STATE_FILE
 from grove_tui.services.exporting import EXPORT_FORMATS, EXPORT_SUFFIXES, NEEDS_RUN
@@ -33,7 +33,6 @@ from grove_tui.services.exporting import EXPORT_FORMATS, EXPORT_SUFFIXES, NEEDS_
 MAX_JOB_FILE_BYTES = 64 * 1024 * 1024
 MAX_SEED = 2**32 - 1
 MAX_SIMULATE_SECONDS = 24 * 3600.0
-SCENARIO_LENGTH = -1.0  # a job's "simulate": true: the scenario's own run length
 REQUIRED = ("world", "preset", "prompt")
 OPTIONAL = ("seed", "name", "simulate", "export", "variations", "refine")
 MAX_FOLLOWUPS = 20
