@@ -1,7 +1,7 @@
 """The clause passes over the groups once they are read, in order. Each reads one way English says
 what people do or where, which the clause reader leaves to them:
 
-- crowding round a thing after moving (crowding_round.py); a zone cleared in the passive as an
+- pacing between two places (pacing_between.py); crowding round a thing after moving (crowding_round.py); a zone cleared in the passive as an
   evacuation from it (cleared_passive.py); steering wide of or hanging back from the robot
   (steered_clear.py); a feeling set apart from its clause (feeling_adjectives.py);
 - a purpose that names where people go ("late for boarding at B2": purposed_places.py); going to where
@@ -24,6 +24,7 @@ from grove_tui.language.crowding_round import crowding_round
 from grove_tui.language.feeling_adjectives import coloured_by_feeling
 from grove_tui.language.leisure_places import leisure_places
 from grove_tui.language.model import PromptReading
+from grove_tui.language.pacing_between import pacing_between
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.problem_places import problem_places
 from grove_tui.language.purposed_places import purposed_places
@@ -34,7 +35,7 @@ from grove_tui.language.surprised_at import occasions, surprised_at
 
 def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -> PromptReading:
     """The reading with the clause passes applied, in the order above."""
-    groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, reading.groups))))
+    groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, pacing_between(index, reading.groups)))))
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
     groups = surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))

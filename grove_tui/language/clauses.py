@@ -1,12 +1,11 @@
 """Pass 3: what each clause says its people do, and where.
 
-A clause is the words a group owns (from its mention to the next group's) or a sentence's words before
-its first mention (its scene, read for every group of that sentence). Phrase by phrase: a preposition
-gives a place its role (from: start; to/into: destination; at/in/on: location, or the start of movers;
-through/via/past: via), a verb's object does too ("leave the ward", "cross the hall"), "to"/"in order
-to"/"for" open a purpose ("to catch the train at platform 1" keeps its place as where they go), and
-durations are waits. Then the intent from the verbs (phrasal first), the robot interaction
-(reactions.py), evacuation cues, whom a follower follows, pace and togetherness.
+A clause is the words a group owns (from its mention to the next group's) or a sentence's words before its first
+mention (its scene, read for every group of that sentence). Phrase by phrase: a preposition gives a place its role
+(from: start; to/into: destination; at/in/on: location, or the start of movers; through/via/past: via), a verb's
+object does too ("leave the ward", "cross the hall"), "to"/"in order to"/"for" open a purpose ("to catch the train at
+platform 1" keeps its place as where they go), and durations are waits. Then the intent from the verbs (phrasal
+first), the robot interaction (reactions.py), evacuation cues, whom a follower follows, pace and togetherness.
 """
 
 from __future__ import annotations
@@ -20,6 +19,7 @@ from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.hazards import cue as hazard_cue
+from grove_tui.language.particle_ends import place_end
 from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.place_search import searched_for
@@ -152,7 +152,7 @@ class Clauses:
             return self._purpose(scan, i, i, i + 2)
         if (said := purpose_said(s, i)) is not None:  # "in order to catch the bus", "wanting flea spray"
             return self._purpose(scan, i, *said)
-        if w in lx.PLACE_SEQUELS and scan.c.places and scan.c.places[-1].end == i:
+        if w in lx.PLACE_SEQUELS and scan.c.places and place_end(s, scan.c.places[-1]) == i:  # "goods in and"
             sequel = self._sequel(scan, i)
             if sequel is not None:
                 return self._add_place(scan, sequel, i)

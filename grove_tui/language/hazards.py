@@ -14,6 +14,7 @@ world lacks ("smoke from the boiler room") is still refused: people would be sen
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.giving_off import giving_off_cue
 from grove_tui.language.hazard_events import event_cue
 from grove_tui.language.hazard_scares import scare_cue
 from grove_tui.language.place_kinds import PLACE_KINDS
@@ -61,7 +62,7 @@ def cue(s: Sentence, i: int) -> bool:
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):
         return True
-    if event_cue(s, i) or scare_cue(s, i):  # "a pipe bursts", "an unattended bag is found" (hazard_*.py)
+    if event_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i):  # "a pipe bursts", "a heater sparks"
         return True
     return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (w.startswith("catch") and nxt == "fire")
 

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.compound_people import chain_end
+from grove_tui.language.gathering_verbs import gathering_verb
 from grove_tui.language.parser import known_word
 from grove_tui.language.counted_pushers import pushes_after
 from grove_tui.language.of_names import of_name_end
@@ -321,7 +322,7 @@ class People:
             if k > j and s.joins(k - 1) and k + 1 < s.n and s.w[k + 1].pos == "ADJ" and not self.is_person_noun(k):
                 k += 1  # "six third-year medical students": the tail of a hyphenated modifier, then a describing word
                 continue
-            person = self.is_person_noun(k)
+            person = self.is_person_noun(k) and not gathering_verb(s.w, k)  # "twenty crowds about the robot"
             if person and self._does_only_what_things_do(k):
                 return None  # "two fans whir in the server room"
             if person and s.w[k].pos == "ADJ" and k + 1 < s.n and \

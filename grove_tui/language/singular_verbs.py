@@ -12,6 +12,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from grove_tui.language.and_verbs import as_second_verbs
+from grove_tui.language.gathering_verbs import as_gathering_verbs
 from grove_tui.language.later_verbs import as_later_verbs
 from grove_tui.language.parser import Word
 from grove_tui.language.person_shapes import with_shaped_subjects
@@ -92,7 +93,8 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject;
     # "is frightened of the robot and cowers whenever ...": one person's second verb
     out = with_shaped_subjects(out)  # "The croupier bolts from ...": a person, taken for an adjective
-    return as_later_verbs(as_second_verbs(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out)))))
+    out = as_later_verbs(as_second_verbs(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out)))))
+    return as_gathering_verbs(out)  # "a class of twenty crowds about the robot"
 
 
 def subject_of_a_later_verb(s: Sentence, k: int) -> bool:
