@@ -16,8 +16,9 @@ from grove_tui.language.later_verbs import as_later_verbs
 from grove_tui.language.parser import Word
 from grove_tui.language.person_shapes import with_shaped_subjects
 from grove_tui.language.plural_verbs import as_plural_verbs
+from grove_tui.language.seated_subjects import subject_of
 from grove_tui.language.subject_phrases import (
-    prepositions_as_such, subject_before, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
+    prepositions_as_such, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -63,7 +64,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     """The parse with the verb of one person, taken for a plural noun, tagged a verb (module doc)."""
     out = prepositions_as_such(words)  # "a timid lad beside gate B1": "beside" tagged a noun
     for k, w in enumerate(words):
-        after_phrase = subject_before(out, k) if not _taken_for_noun(out, k) else None
+        after_phrase = subject_of(out, k) if not _taken_for_noun(out, k) else None
         if after_phrase is not None:  # "a timid lad beside cashpoint 1 cowers", "Jenny from accounts nips over"
             out = with_the_subject(out, k, after_phrase)
             continue
@@ -78,7 +79,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
         if subject:
             continue  # "Sam, our toddler, waddles": the parser found the subject
         prev = out[k - 1]
-        if root == k:  # "a care assistant ambles": the noun before is the subject
+        if root >= k:  # "a care assistant ambles", "... nips over because her pass needs ...": the noun before
             for j in range(k - 1):
                 if out[j].head == k and out[j].sentence == w.sentence:
                     out[j] = replace(out[j], head=k - 1)
