@@ -18,6 +18,8 @@ def is_described_estimate(s: Sentence, end: int) -> bool:
     word follows it before the person noun."""
     if end < 2 or end + 1 >= s.n or s.low[end - 2] != "or":
         return False
+    if end + 2 < s.n and s.low[end + 1] == "-" and s.hyphen_inside(end + 1):
+        return True  # "five or six off-duty porters"
     word, nxt = s.w[end], s.w[end + 1]
     if s.is_punct(end) or s.low[end] in ("of", "and", "or", "to"):
         return False
