@@ -16,4 +16,5 @@ def count_ends_at(s: Sentence, i: int) -> bool:
         return False
     if s.w[i].pos == "NUM":
         return True
-    return s.low[i] == "of" and i > 0 and (s.lemma(i - 1) in lx.TOGETHER_COLLECTIVES or s.lemma(i - 1) in lx.IMPLIED_RANGES)
+    before = s.lemma(i - 1) if i > 0 else ""
+    return s.low[i] == "of" and (before in lx.TOGETHER_COLLECTIVES or before in lx.IMPLIED_RANGES)
