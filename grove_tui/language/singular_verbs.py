@@ -80,7 +80,8 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
         if subject:
             continue  # "Sam, our toddler, waddles": the parser found the subject
         prev = out[k - 1]
-        if root == k or (root > k and any(x.pos == "SCONJ" for x in out[k + 1:root])):
+        if root == k or (root > k and (words[root].pos not in ("VERB", "AUX")
+                                       or any(x.pos == "SCONJ" for x in out[k + 1:root]))):
             # "a care assistant ambles", "... nips over because her pass needs ...": the noun before
             for j in range(k - 1):
                 if out[j].head == k and out[j].sentence == w.sentence:
