@@ -10,6 +10,7 @@ import re
 from typing import NamedTuple
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.described_ranges import couple_or_more, is_described_estimate
 from grove_tui.language.model import Count
 from grove_tui.language.quantity_nouns import VAGUE_QUANTITY_RANGES, quantity_noun_at
 from grove_tui.language.sentence import Sentence
@@ -181,6 +182,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
         return Quantifier(noun.value, "exact" if noun.value else f"vague:{noun.word}", noun.end)
     if low[k] in ("a", "an") and k + 1 < s.n:
         nxt = low[k + 1]
+        if (more := couple_or_more(s, k)) is not None:
+            return Quantifier(2, "approximate", more[1], more[0], 2)  # "a couple or three visitors": about 2-3
         if nxt == "couple" and tuple(low[k + 2:k + 4]) == ("of", "dozen"):
             return Quantifier(24, "approximate", k + 4)  # "a couple of dozen tourists": about 24
         if nxt in ("couple", "pair") and k + 2 < s.n and low[k + 2] == "of":
@@ -248,7 +251,8 @@ def count_of(s: Sentence, q: Quantifier, key: str, default: tuple[int, int] = lx
         return Count("approximate", q.value, max(1, q.value - spread), q.value + spread)
     if q.kind == "range":
         high = q.high or q.value
-        return Count("vague", s.choose(q.value, high, key), q.value, high)
+        kind = "approximate" if is_described_estimate(s, q.end) else "vague"  # "nine or ten weekend decorators"
+        return Count(kind, s.choose(q.value, high, key), q.value, high)
     word = q.kind.split(":", 1)[1]
     low_, high_ = lx.VAGUE_RANGES.get(word) or VAGUE_QUANTITY_RANGES.get(word, default)
     return Count("vague", s.choose(low_, high_, key), low_, high_)

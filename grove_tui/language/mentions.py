@@ -18,6 +18,7 @@ from grove_tui.language.another_count import more_people, the_other_count
 from grove_tui.language.apposed_counts import class_named, collective_is_a_verb
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
+from grove_tui.language.couple_words import bare_couple
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
@@ -579,7 +580,7 @@ class Mentions:
         low_, high_ = lx.OTHERS_RANGE if other else lx.BARE_PLURAL_RANGE
         parent = self.parent(found)
         relation = f"others_of:{parent}" if other and parent is not None else None
-        if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[at] in _POSSESSIVES):
+        if noun in lx.FAMILY_PLURALS and not other and (det == "the" or low[at] in _POSSESSIVES or bare_couple(s, at, noun)):
             low_, high_ = lx.FAMILY_PLURALS[noun]  # "the parents": the two of one family
             return Mention(at, head, s.span(at, head), label, Count(
                 "implied", s.choose(low_, high_, f"{at}:family"), low_, high_), together=noun in lx.COUPLE_PLURALS)

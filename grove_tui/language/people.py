@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.hyphen_counts import count_ends_at
 from grove_tui.language.compound_people import chain_end
 from grove_tui.language.gathering_verbs import gathering_verb
 from grove_tui.language.parser import known_word
@@ -357,7 +358,7 @@ class People:
                 k += 1  # "tired old patients", "two lost children", "waiting visitors"
                 continue
             if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and (self.is_person_noun(k + 1) or (
-                    counted and k >= 3 and s.joins(k - 1) and s.w[k - 3].pos == "NUM" and self.person_head(k + 1, counted=True) == k + 1)):
+                    counted and k >= 3 and s.joins(k - 1) and count_ends_at(s, k - 3) and self.person_head(k + 1, counted=True) == k + 1)):
                 k += 1  # "flight attendants", "dog walker", "twenty season-ticket holders": the kind of person
                 continue
             if s.w[k].pos in ("NOUN", "PROPN") and k + 2 < s.n and s.w[k + 1].pos in ("NOUN", "PROPN") and \

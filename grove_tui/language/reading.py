@@ -37,6 +37,7 @@ from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
+from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
@@ -140,7 +141,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_subsets(text)  # "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
-    text = as_heading(text)  # "a coachload descends on the café": "heads to the café"
+    text = as_heading(with_vehicle_loads(text))  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"

@@ -16,9 +16,11 @@ from grove_tui.language.gathering_verbs import as_gathering_verbs
 from grove_tui.language.later_verbs import as_later_verbs
 from grove_tui.language.parser import Word
 from grove_tui.language.person_shapes import with_shaped_subjects
+from grove_tui.language.origin_names import origins_not_subjects
 from grove_tui.language.plural_verbs import as_plural_verbs
+from grove_tui.language.seated_subjects import subject_of
 from grove_tui.language.subject_phrases import (
-    prepositions_as_such, subject_before, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
+    prepositions_as_such, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -64,7 +66,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     """The parse with the verb of one person, taken for a plural noun, tagged a verb (module doc)."""
     out = prepositions_as_such(words)  # "a timid lad beside gate B1": "beside" tagged a noun
     for k, w in enumerate(words):
-        after_phrase = subject_before(out, k) if not _taken_for_noun(out, k) else None
+        after_phrase = subject_of(out, k) if not _taken_for_noun(out, k) else None
         if after_phrase is not None:  # "a timid lad beside cashpoint 1 cowers", "Jenny from accounts nips over"
             out = with_the_subject(out, k, after_phrase)
             continue
@@ -79,7 +81,9 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
         if subject:
             continue  # "Sam, our toddler, waddles": the parser found the subject
         prev = out[k - 1]
-        if root == k:  # "a care assistant ambles": the noun before is the subject
+        if root == k or (root > k and (words[root].pos not in ("VERB", "AUX")
+                                       or any(x.pos == "SCONJ" for x in out[k + 1:root]))):
+            # "a care assistant ambles", "... nips over because her pass needs ...": the noun before
             for j in range(k - 1):
                 if out[j].head == k and out[j].sentence == w.sentence:
                     out[j] = replace(out[j], head=k - 1)
@@ -93,7 +97,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject;
     # "is frightened of the robot and cowers whenever ...": one person's second verb
     out = with_shaped_subjects(out)  # "The croupier bolts from ...": a person, taken for an adjective
-    out = as_later_verbs(as_second_verbs(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out)))))
+    out = as_later_verbs(as_second_verbs(origins_not_subjects(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out))))))
     return as_gathering_verbs(out)  # "a class of twenty crowds about the robot"
 
 
