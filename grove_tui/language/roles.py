@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.exercise_machines import on_a_machine
 from grove_tui.language.later_stops import goes_on_after
 from grove_tui.language.place_narrowing import guessed_over_named
 from grove_tui.language.place_phrases import Place
@@ -159,6 +160,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
             from_scene: bool) -> str:
     prep = p.prep
     is_door = p.match is not None and p.match.kind == "door"
+    if on_a_machine(p, verb):
+        return "location"  # "one walking on a treadmill": going nowhere, on the machine
     if prep == "out":
         return "destination" if is_door else "start"
     if prep == "from" and p.out_of and is_door and _is_exit(index, p) and verb not in lx.ARRIVAL_VERBS:
