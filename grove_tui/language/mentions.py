@@ -22,6 +22,7 @@ from grove_tui.language.counts import Quantifier, count_of, negative_at, number_
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
 from grove_tui.language.mention import Mention
+from grove_tui.language.moved_pronouns import moved_mention
 from grove_tui.language.one_name import one_name
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
@@ -404,6 +405,8 @@ class Mentions:
             plural = s.lemma(person) != low[person] or low[person + 1] in ("'", "s'")
             return Mention(at, thing, s.span(at, thing), self.people.label(person),
                            Count("vague", s.choose(2, 3, f"{at}:carried"), 2, 3) if plural else Count("exact", 1, 1, 1))
+        if (moved := moved_mention(s, at)) is not None:  # "Mr Ahmed's son wheels him ...": Mr Ahmed, taken along
+            return moved
         num = quantifier(s, at)
         part = self.partitives.part_of(at, num, found, self.parent(found))
         if part is not None:
