@@ -4,7 +4,10 @@ exercise keeps people where the machine is: the machine is their location, not a
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
+
+from grove_tui.language import lexicon as lx
 
 from grove_tui.language.tokens import phrase_lemmas
 
@@ -32,3 +35,10 @@ def on_a_machine(p: Place, verb: str) -> bool:
         return True
     return any(tuple(words[k:k + 2]) in _MACHINE_PHRASES or tuple(words[k:k + 2])[:1] + (words[k + 1].rstrip("s"),)
                in _MACHINE_PHRASES for k in range(len(words) - 1))
+
+
+def stays_on_a_machine(p: Place, verb: str, places: Sequence[Place]) -> bool:
+    """Whether people on the machine `p` stay there: no place after it they go to ("jogs on a treadmill
+    for ten minutes, then goes to the changing rooms": the treadmill is where they start)."""
+    return on_a_machine(p, verb) and not any(
+        q.index > p.index and (q.prep in lx.DESTINATION_PREPOSITIONS or q.prep == "obj:dest") for q in places)
