@@ -22,7 +22,6 @@ from grove_tui.language.counts import Quantifier, count_of, negative_at, number_
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
 from grove_tui.language.mention import Mention
-from grove_tui.language.moved_pronouns import moved_mention
 from grove_tui.language.one_name import one_name
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
@@ -33,6 +32,7 @@ from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.role_words import family_member, family_size, person_of_a_person, possessor_of_a_person
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.school_classes import named_class
+from grove_tui.language.taken_mentions import taken_mention
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
@@ -405,7 +405,7 @@ class Mentions:
             plural = s.lemma(person) != low[person] or low[person + 1] in ("'", "s'")
             return Mention(at, thing, s.span(at, thing), self.people.label(person),
                            Count("vague", s.choose(2, 3, f"{at}:carried"), 2, 3) if plural else Count("exact", 1, 1, 1))
-        if (moved := moved_mention(s, at)) is not None:  # "Mr Ahmed's son wheels him ...": Mr Ahmed, taken along
+        if (moved := taken_mention(s, at)) is not None:  # "Mr Ahmed's son wheels him ...", "Mr and Mrs Obi"
             return moved
         num = quantifier(s, at)
         part = self.partitives.part_of(at, num, found, self.parent(found))

@@ -6,8 +6,6 @@ carer the subject is: a second group that goes along, as "wheels his father from
 from __future__ import annotations
 
 from grove_tui.language.caused_motion import taking_verb
-from grove_tui.language.mention import Mention
-from grove_tui.language.model import Count
 from grove_tui.language.sentence import Sentence
 
 # Words that start the way someone is taken ("from", "back to", "in to", "over to", "out of").
@@ -47,7 +45,3 @@ def owner_name(s: Sentence, at: int) -> str:
         j -= 1
     return s.w[at].text
 
-
-def moved_mention(s: Sentence, at: int) -> Mention | None:
-    """The mention of the person a pronoun at `at` says is taken along, or None."""
-    return Mention(at, at, owner_name(s, at), "person", Count("exact", 1, 1, 1)) if moved_pronoun(s, at) else None
