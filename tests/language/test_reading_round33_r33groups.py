@@ -138,3 +138,21 @@ def test_a_thing_filled_or_locked_up_is_where_they_are(read, world, prompt, loca
 ])
 def test_a_way_up_and_a_thing_wiped_keep_their_reading(read, world, prompt, field, value):
     assert getattr(read(world, prompt).groups[0], field) == value
+
+
+# ---- 6. a bare count as an imperative's first item ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,items", [
+    ("sports_centre", "Put three on the bikes and two by the pool.", [(3, "spin_bikes"), (2, "pool_hall")]),
+    ("hospital", "Put two in the lobby and three in the cafeteria.", [(2, "entrance_lobby"), (3, "cafeteria")]),
+    ("hospital", "Please have four at the pharmacy and one in the lobby.", [(4, "pharmacy"), (1, "entrance_lobby")]),
+    ("mall", "Put six in the food court.", [(6, "food_court")]),
+])
+def test_a_bare_count_first_in_an_imperative_is_people_at_its_place(read, world, prompt, items):
+    assert [(g.count.value, g.location) for g in read(world, prompt).groups] == items
+
+
+def test_a_counted_noun_first_in_an_imperative_keeps_its_reading(read):
+    groups = read("hospital", "Put two nurses in the lobby and three in the cafeteria.").groups
+    assert [(g.who, g.count.value, g.location) for g in groups] == [("two nurses", 2, "entrance_lobby"),
+                                                                    ("three", 3, "cafeteria")]
