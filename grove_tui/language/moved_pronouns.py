@@ -27,8 +27,8 @@ def moved_pronoun(s: Sentence, at: int) -> bool:
         return False  # "pushes her pram": her own thing, no one moved
     j = at - 2
     while j >= 0 and s.low[j] not in _CLAUSE_BREAKS and s.w[j].sentence == s.w[at].sentence:
-        if s.low[j] in owners:
-            return True  # "Mr Ahmed's son", "his carer": the one whose the subject is
+        if s.low[j] in owners:  # "Mr Ahmed's son", "his carer": the one whose the subject is, said first
+            return s.low[j] in ("'s", "’s") or j == 0 or s.is_punct(j - 1) or s.w[j - 1].sentence != s.w[j].sentence
         j -= 1
     return False
 

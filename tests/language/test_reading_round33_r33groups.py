@@ -33,6 +33,7 @@ def test_a_person_moved_by_someone_of_theirs_goes_along(read, world, prompt, sta
     ("hospital", "A nurse helps her son to the cafeteria.", 2),
     ("hospital", "A porter wheels him to radiology.", 1),
     ("hospital", "His carer gives him a coffee in the cafeteria.", 1),
+    ("hospital", "A girl waits in the lobby until her dad wheels her to the cafeteria.", 2),
 ])
 def test_a_pronoun_that_is_no_one_moved_adds_no_group(read, world, prompt, count):
     assert len(read(world, prompt).groups) == count
