@@ -33,6 +33,7 @@ from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.role_words import family_member, family_size, person_of_a_person, possessor_of_a_person
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.school_classes import named_class
+from grove_tui.language.taken_mentions import taken_mention
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 
 _POSSESSIVES = ("their", "his", "her", "our", "my")
@@ -405,6 +406,8 @@ class Mentions:
             plural = s.lemma(person) != low[person] or low[person + 1] in ("'", "s'")
             return Mention(at, thing, s.span(at, thing), self.people.label(person),
                            Count("vague", s.choose(2, 3, f"{at}:carried"), 2, 3) if plural else Count("exact", 1, 1, 1))
+        if (moved := taken_mention(s, at)) is not None:  # "Mr Ahmed's son wheels him ...", "Mr and Mrs Obi"
+            return moved
         num = quantifier(s, at)
         part = self.partitives.part_of(at, num, found, self.parent(found))
         if part is not None:

@@ -55,6 +55,7 @@ from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.event_causes import without_causers
 from grove_tui.language.event_appositions import with_people_after_an_event
 from grove_tui.language.groups import Groups
+from grove_tui.language.scene_closers import without_closers
 from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
 from grove_tui.language.singular_verbs import as_singular_verbs
@@ -166,7 +167,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, finder.find()))))))))))  # "a mother and her toddler": one group of two
+    mentions = joined_pairs(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, finder.find())))))))))))  # "a mother and her toddler": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.exercise_machines import stays_on_a_machine
 from grove_tui.language.later_stops import goes_on_after
 from grove_tui.language.place_narrowing import guessed_over_named
 from grove_tui.language.place_phrases import Place
@@ -51,6 +52,7 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         # main door": leaving, though the clause's verb is dropping off)
         own_verb = next((v for i, v in reversed(verbs_at) if i < p.index), verb) if p.match.kind == "door" else verb
         role = role_of(index, p, own_verb, verb_index, stationary, intent, p in scene_places)
+        role = "location" if role == "start" and stays_on_a_machine(p, own_verb, places) else role
         if role in ("start", "via") and p in scene_places and (roles.start or roles.location):
             continue  # "a fire breaks out in radiology: ... visitors in the cafeteria": where they are is their own
         if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):

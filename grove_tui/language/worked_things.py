@@ -12,6 +12,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.filled_things import FILLING_PARTICLES
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -25,6 +26,7 @@ _CLEANING = frozenset("hose wipe scrub wash rinse spray dust polish clean mop ti
 _WORK_PARTICLES: dict[str, frozenset[str]] = {
     **{v: frozenset({"down", "off", "up", "out"}) for v in _CLEANING},
     **{v: frozenset({"up", "out"}) for v in "lay set stack tidy straighten clear".split()},
+    **FILLING_PARTICLES,
 }
 # Verbs whose object is what people are among, not a thing they handle ("browse the shelves").
 _BEING_AMONG = lx.LOCATION_OBJECT_VERBS - lx.THING_OR_PLACE_VERBS
