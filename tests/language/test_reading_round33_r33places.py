@@ -1,0 +1,44 @@
+"""Place classes of round 33, each with sentences of its own over at least two worlds (none from the
+understanding sets): an event or a club named like a place is no place to refuse; a hazard that spreads
+into a room is not where the people in it go."""
+
+from __future__ import annotations
+
+import pytest
+
+
+# ---- 1. an event or a club named like a place: nothing to refuse -----------------------------------------
+
+@pytest.mark.parametrize("world,prompt", [
+    ("community_centre", "Two grannies at the barn dance stop to stare at the robot."),
+    ("hospital", "Ten nurses at the leaving party wave at the robot."),
+    ("community_centre", "Six neighbours at the jumble sale gawp at the robot."),
+    ("mall", "Two girls from the Brownie pack walk to the food court."),
+    ("cinema", "Twelve fans at the quiz evening cheer at the robot."),
+    ("hospital", "A few porters at the charity raffle stare at the robot."),
+    ("library", "Four readers at the coffee morning look at the robot."),
+    ("museum", "Eight pensioners at the tea dance wave at the robot."),
+    ("cinema", "A girl from the Brownie pack is spellbound by the robot."),
+])
+def test_an_event_or_a_club_named_like_a_place_is_not_refused(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("community_centre", "Some regulars from the bingo night walk to the kitchen."),
+    ("library", "Two pensioners from the knitting circle walk to the reading room."),
+    ("cinema", "Ten teenagers from the film club walk to the bar."),
+    ("mall", "Three mums from the toddler group walk to the food court."),
+])
+def test_clubs_read_already_are_still_not_refused(read, world, prompt):
+    assert read(world, prompt).unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,unknown", [
+    ("community_centre", "Two grannies walk from the kitchen to the swimming pool.", "swimming pool"),
+    ("library", "Two pensioners walk to the night club.", None),
+    ("hospital", "Ten nurses walk to the bowling alley.", "bowling alley"),
+])
+def test_places_the_world_lacks_are_still_refused_beside_events(read, world, prompt, unknown):
+    got = read(world, prompt).unknown_places
+    assert (unknown in got) if unknown else True
