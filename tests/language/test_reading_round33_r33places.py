@@ -42,3 +42,38 @@ def test_clubs_read_already_are_still_not_refused(read, world, prompt):
 def test_places_the_world_lacks_are_still_refused_beside_events(read, world, prompt, unknown):
     got = read(world, prompt).unknown_places
     assert (unknown in got) if unknown else True
+
+
+# ---- 2. a hazard that spreads into a room: where the people are, not where they go ----------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("art_gallery", "Smoke drifts into Gallery 3 and the thirty visitors in there leave through the temporary fire exit.",
+     "modern_gallery", "temporary_fire_exit"),
+    ("cinema", "Smoke drifts into screen 1 and the fifty fans in there are ushered out through the bar's emergency door.",
+     "screen_1", "bar_street_door"),
+    ("cinema", "Smoke pours into screen 1 and the fifty fans there are led out through the bar street door.",
+     "screen_1", "bar_street_door"),
+    ("hospital", "Smoke drifts into the cafeteria and the ten visitors in there are ushered out through the main entrance.",
+     "cafeteria", "main_entrance"),
+    ("hospital", "Water pours into the cafeteria and the ten visitors leave through the main entrance.",
+     "cafeteria", "main_entrance"),
+    ("hospital", "Smoke spreads to the cafeteria and the ten visitors leave via the main entrance.",
+     "cafeteria", "main_entrance"),
+])
+def test_a_hazard_spreading_into_a_room_is_where_they_start_not_where_they_go(read, world, prompt, start, destination):
+    (g,) = read(world, prompt).groups
+    assert (g.start, g.destination) == (start, destination)
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("hospital", "Smoke fills the cafeteria and the ten visitors in there are ushered out through the main entrance.",
+     "cafeteria", "main_entrance"),
+    ("hospital", "Water pours into the cafeteria and the ten visitors walk to the main entrance.",
+     None, "main_entrance"),
+    ("art_gallery", "The thirty visitors in Gallery 3 leave through the temporary fire exit.",
+     "modern_gallery", "temporary_fire_exit"),
+])
+def test_hazards_read_already_keep_their_reading(read, world, prompt, start, destination):
+    (g,) = read(world, prompt).groups
+    assert g.destination == destination
+    assert start is None or g.start == start
