@@ -77,3 +77,30 @@ def test_hazards_read_already_keep_their_reading(read, world, prompt, start, des
     (g,) = read(world, prompt).groups
     assert g.destination == destination
     assert start is None or g.start == start
+
+
+# ---- 3. a named kind of place the world lacks: refused whole, no place of the same head read -------------
+
+@pytest.mark.parametrize("world,prompt,start,refused", [
+    ("supermarket", "A man walks from the tills to the key-cutting kiosk.", "checkouts", "key cutting kiosk"),
+    ("mall", "A man walks from the food court to the key-cutting kiosk.", "food_court", "key cutting kiosk"),
+    ("mall", "Two girls walk from the food court to the nail-painting kiosk.", "food_court", "nail painting kiosk"),
+    ("airport", "A man walks from the check-in hall to the key-cutting kiosk.", "check_in_hall", "key cutting kiosk"),
+    ("hospital", "A man walks from the lobby to the key-cutting kiosk.", "entrance_lobby", "key cutting kiosk"),
+])
+def test_a_named_kind_of_place_the_world_lacks_is_refused_whole(read, world, prompt, start, refused):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert refused in [u.replace("-", " ") for u in r.unknown_places]
+    assert (g.start, g.destination, g.via) == (start, None, ())
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("supermarket", "A man walks from the tills to the lottery kiosk.", "customer_service"),
+    ("mall", "A man walks from the food court to the mobile kiosk.", "phone_kiosk"),
+    ("mall", "A man walks from the food court to the phone kiosk.", "phone_kiosk"),
+    ("post_office", "A man walks from the counter to the passport photo booth.", "photo_booth"),
+    ("diy_store", "Two joiners walk from the tills to the paint-mixing desk.", "paint_mixing_desk"),
+])
+def test_kinds_of_place_the_world_has_keep_their_reading(read, world, prompt, destination):
+    assert read(world, prompt).groups[0].destination == destination
