@@ -14,6 +14,11 @@ from grove_tui.language.place_meaning import MODIFIER_AGREES
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 
 
+# How near the whole phrase must be to the place for a kind the world never names to be that place:
+# "first-class lounge" is 0.77 from the airline lounge, "key-cutting kiosk" 0.65 from a phone kiosk.
+WHOLE_AGREES = 0.7
+
+
 def by_head_alone(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch | None) -> bool:
     """Whether an exact match came from the phrase's head alone, a one-word alias of the place, with
     words before it that are none of the place's own (nor a synonym or a tag of it) nor any other word
@@ -29,4 +34,7 @@ def by_head_alone(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch | 
     if not before or any(index.names_word(entry, t) or t in index.vocabulary for t in before):
         return False
     near = index.by_meaning(" ".join(before), among={entry.name})
-    return not near or near[0].similarity < MODIFIER_AGREES  # "the mobile kiosk" is the phone kiosk
+    if near and near[0].similarity >= MODIFIER_AGREES:
+        return False  # "the mobile kiosk" is the phone kiosk
+    whole = index.by_meaning(" ".join(lemmas), among={entry.name})
+    return not whole or whole[0].similarity < WHOLE_AGREES  # "the first-class lounge" is the airline lounge
