@@ -101,6 +101,7 @@ def test_a_named_kind_of_place_the_world_lacks_is_refused_whole(read, world, pro
     ("mall", "A man walks from the food court to the phone kiosk.", "phone_kiosk"),
     ("post_office", "A man walks from the counter to the passport photo booth.", "photo_booth"),
     ("diy_store", "Two joiners walk from the tills to the paint-mixing desk.", "paint_mixing_desk"),
+    ("airport", "Two travellers walk from gate A1 to the first-class lounge.", "airline_lounge"),
 ])
 def test_kinds_of_place_the_world_has_keep_their_reading(read, world, prompt, destination):
     assert read(world, prompt).groups[0].destination == destination
