@@ -1,6 +1,7 @@
 """Place classes of round 33, each with sentences of its own over at least two worlds (none from the
 understanding sets): an event or a club named like a place is no place to refuse; a hazard that spreads
-into a room is not where the people in it go."""
+into a room is not where the people in it go; a named kind of place the world lacks ("the key-cutting
+kiosk") is refused whole, not read as the world's one kiosk."""
 
 from __future__ import annotations
 
