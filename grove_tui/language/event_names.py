@@ -1,4 +1,5 @@
-"""An event or a club named like a place, round 33: "at the tea dance", "a lad from the Cub pack", "at
+"""An event or a club named like a place, round 33 (where people are or come from: "at", "from", "in",
+"during"; "walks to the wedding" is still refused): "at the tea dance", "a lad from the Cub pack", "at
 the coffee morning", "in the book club", "at the quiz night". The phrase after the preposition is
 headed by a word for a gathering ("dance", "morning", "night", "club", "pack", "sale", "party") rather
 than a room, so when the world has no place of that name there is nothing to refuse: people are at an

@@ -35,7 +35,7 @@ _BUSY_ON = frozenset("call break duty shift lunch tea".split())
 
 def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
-    if names_an_event(s, k):
+    if prep in ("at", "from", "in", "during") and names_an_event(s, k):
         return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
     if no_place_thing(s, k, prep):
         return True  # "through forty-odd pickers", "recording it on a phone": people, a device
