@@ -327,7 +327,7 @@ class Clauses:
             return False  # "pushes a wheelchair", "wheels his father's bed": what someone is taken in, no place
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
                 and v not in lx.ROBOT_VERBS and v not in lx.HOLDING_VERBS  # "carrying coffees": no place
-                and (nxt in lx.DETERMINERS or self.places.names_place(obj))
+                and (nxt in lx.DETERMINERS or self.places.names_place(obj)) and not s.hyphen_inside(i - 1)
                 and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))
                                                    or nxt in _OWNERS)):
             # "a cleaner sweeps platform 2", "mops the corridor", "locks her office", "closes up

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
+from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.sentence import Sentence
@@ -34,6 +35,8 @@ _BUSY_ON = frozenset("call break duty shift lunch tea".split())
 
 def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
+    if prep in ("at", "from", "in", "during") and names_an_event(s, k):
+        return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
     if no_place_thing(s, k, prep):
         return True  # "through forty-odd pickers", "recording it on a phone": people, a device
     if cause_thing(s, k, prep, at):

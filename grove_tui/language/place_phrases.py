@@ -27,6 +27,7 @@ from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
+from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
@@ -174,7 +175,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
-        if absent_kind(s.index, lemmas) is not None:  # "the planetarium (room)": a kind the world lacks
+        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match):  # "the planetarium (room)": a kind the world lacks
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
@@ -349,7 +350,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False
-            if phrase and self._verb_ends_name(phrase, j):
+            if phrase and not after_hyphen and self._verb_ends_name(phrase, j):  # "key-cutting kiosk": one name
                 break
             if phrase and w in lx.DETERMINERS and j + 1 < s.n and s.w[j + 1].pos in ("NOUN", "PROPN", "ADJ", "NUM") \
                     and not self._extends_name(phrase, j) and not self.whole_name([*phrase, w]):

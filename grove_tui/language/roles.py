@@ -53,6 +53,8 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         own_verb = next((v for i, v in reversed(verbs_at) if i < p.index), verb) if p.match.kind == "door" else verb
         role = role_of(index, p, own_verb, verb_index, stationary, intent, p in scene_places)
         role = "location" if role == "start" and stays_on_a_machine(p, own_verb, places) else role
+        if role == "destination" and p in scene_places and roles.destination is not None and p not in places:
+            role = "start"  # "smoke drifts into Gallery 3 and the visitors leave by the fire door": the door
         if role in ("start", "via") and p in scene_places and (roles.start or roles.location):
             continue  # "a fire breaks out in radiology: ... visitors in the cafeteria": where they are is their own
         if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):
