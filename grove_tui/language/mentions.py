@@ -296,8 +296,7 @@ class Mentions:
         q = quantifier(s, at)
         begin = at
         if q is not None and q.kind == "approximate" and number_at(s, at) is None:
-            # "At rush hour about 200 commuters ...", "On Saturday some forty shoppers ...": the
-            # approximation is the phrase's first word; its number and noun follow
+            # "At rush hour about 200 commuters ...": the approximation first, its number and noun after
             begin = next((k for k in range(at + 1, q.end) if number_at(s, k) is not None), at)
         number = number_at(s, begin)
         count_end = number[1] if number is not None else begin  # "a dozen", "half a dozen": words of the count
