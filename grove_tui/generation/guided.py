@@ -29,7 +29,7 @@ GUIDED_CLOSEST = 1.0
 GUIDING_VEL = 1.2  # m/s the robot leads an evacuation at: a brisk walk, not its 0.8 m/s service pace
 # People who follow or are guided by the robot walk to a place this far behind it (crowd/led_slots.py),
 # not at it: converging on the robot they stepped in front of it and its collision monitor stalled it.
-LED_BEHIND = 1.5
+LED_BEHIND = 1.0
 
 
 def guided_follow(duration: float = 0.0) -> tuple[str, dict[str, float]]:
