@@ -69,6 +69,7 @@ class SimContext:
         self.speech = SpeechLog()
         self.status = [""] * len(self.ids)  # short per-agent text for the TUI
         self.counters = Counters()
+        self.led_slots: dict[int, int] = {}  # row -> place behind the robot it follows (crowd/led_slots.py)
         self.events: list[tuple[float, int, str, str]] = []  # (t, agent id, kind, detail), see metrics.SimEvent
         self._plan_failures = 0
         # positions, refreshed once per BT tick as flat float lists: lists of floats are invisible to

@@ -27,11 +27,15 @@ _ARTICLES = frozenset({"a", "an", "the", "group", "of", "some", "all"})
 GUIDED_CATCH_UP = 2.0
 GUIDED_CLOSEST = 1.0
 GUIDING_VEL = 1.2  # m/s the robot leads an evacuation at: a brisk walk, not its 0.8 m/s service pace
+# People who follow or are guided by the robot walk to a place this far behind it (crowd/led_slots.py),
+# not at it: converging on the robot they stepped in front of it and its collision monitor stalled it.
+LED_BEHIND = 1.0
 
 
 def guided_follow(duration: float = 0.0) -> tuple[str, dict[str, float]]:
     """The node and ports that keep guided people behind the robot for `duration` seconds."""
-    return "ApproachRobot", {"closest_dist": GUIDED_CLOSEST, "max_vel": GUIDED_CATCH_UP, "duration": duration}
+    return "ApproachRobot", {"closest_dist": GUIDED_CLOSEST, "max_vel": GUIDED_CATCH_UP, "duration": duration,
+                             "behind": LED_BEHIND}
 
 
 def guided_seconds(path: Sequence[tuple[float, float]], robot_vel: float) -> float:

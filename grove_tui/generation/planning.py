@@ -41,6 +41,7 @@ from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
 from grove_tui.generation.robot_errand import errand_robot
 from grove_tui.language.robot_errands import robot_errand
+from grove_tui.generation.spots_to_pass import spots_to_pass
 from grove_tui.generation.robot_passing import people_stay_in, through_formations, zone_before
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
@@ -120,14 +121,16 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         rooms = list(dict.fromkeys([g.reactor_zone for g in unseen if g.reactor_zone] + rooms_to_pass(
             world, post.groups, route) + approach_at_place.rooms_to_pass(world, post.groups, route)
             + rooms_of_routines(world, reading, route)))
-        if rooms and robot_spec.task in ("cross", "patrol"):
+        spots = spots_to_pass(world, grid, post.groups, route)  # a door or thing they react at, in a room passed
+        if (rooms or spots) and robot_spec.task in ("cross", "patrol"):
             # People the sentence puts in a room to react to the robot ("people in the waiting area look
             # at it") react only if it comes by: a route fixed elsewhere passes through their room too.
             robot_notes = []
             robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading,
-                                    through=rooms)
+                                    through=rooms, past=spots)
             robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
-            robot_notes.append(f"the robot passes through {', '.join(rooms)} on its way, where people react to it")
+            robot_notes.append(f"the robot passes {'through ' + ', '.join(rooms) if rooms else 'by the places'} on "
+                               f"its way, where people react to it")
             reactor_notes = []
             unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
         notes.extend(robot_notes)
@@ -267,9 +270,10 @@ def _resolve_point(world: World, grid: OccupancyGrid, value: Point | str, what: 
 
 def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: PostProcessed, request: RobotRequest,
                seed: int, notes: list[str], reading: PromptReading | None = None,
-               through: Sequence[str] = ()) -> RobotSpec:
+               through: Sequence[str] = (), past: Sequence[Point] = ()) -> RobotSpec:
     """The robot's start, goal, path and task; a crossing or patrolling robot also passes through the
-    zones `through` (where people who react to it are and its route did not come by).
+    zones `through` (where people who react to it are and its route did not come by) and by the points
+    `past` (the doors and things they react at, spots_to_pass.py).
 
     The user's --robot-start/--robot-goal come first, then the sentence's robot clause (its start,
     destination, the places it passes, where it waits, whom it follows); what neither fixes is chosen
@@ -398,6 +402,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     # anywhere in the zone it stands in
     via_spots = [p for p in (_place_point(world, grid, v) for v in via if _is_spot(world, v)) if p is not None]
     via_spots += gaps
+    via_spots += [p for p in past if p not in via_spots]
     if start is None or goal is None:
         start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
         if not via_zones and not via_spots and not through:

@@ -36,7 +36,8 @@ from grove_tui.bt.format.manifest import NODES
 from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.exit_post import claim_radius
-from grove_tui.generation.guided import guided_exit, guided_follow, guided_index
+from grove_tui.generation.mutual_follow import leads_who_follow_it
+from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
@@ -80,7 +81,7 @@ MAX_TRAILING_WAIT = 120.0
 
 # The robot interaction a group does as its whole activity, ungated: (node, ports).
 ROBOT_ACTIVITIES: dict[str, tuple[str, dict[str, float]]] = {
-    "follow": ("ApproachRobot", {"closest_dist": 1.0, "max_vel": 1.5, "duration": 0.0}),
+    "follow": ("ApproachRobot", {"closest_dist": 1.0, "max_vel": 1.5, "duration": 0.0, "behind": LED_BEHIND}),
     "approach": ("ApproachRobot", {"closest_dist": 0.8, "max_vel": 1.3, "duration": 0.0}),
     "block": ("BlockRobot", {"front_dist": 0.8, "duration": 0.0}),
     "avoid": ("AvoidRobot", {"safe_distance": 3.0, "runaway_vel": 1.2, "duration": 0.0}),
@@ -117,7 +118,7 @@ def with_followed_person(reading: PromptReading, world: World) -> PromptReading:
     them: "the robot follows a guide from the entrance hall to the auditorium" asks for a guide who
     walks from the entrance hall to the auditorium, with the robot behind. Likewise the person a group
     follows: "six students follow the senior doctor to ward C" has a doctor walking there ahead of them."""
-    reading = _with_people_followed(_subsets_keep_their_activity(reading))
+    reading = leads_who_follow_it(_with_people_followed(_subsets_keep_their_activity(reading)))
     robot = reading.robot
     if robot is None or robot.task != "follow" or not robot.follows:
         return reading

@@ -553,6 +553,9 @@ _node("ApproachRobot", "action", (
     _in("closest_dist", "float", 1.5, "Distance in metres at which the agent stops.", min=0.0, max=10.0),
     _in("max_vel", "float", 1.8, "Walking speed in m/s.", min=0.0, max=2.5),
     _duration(5.0, what="the approach"),
+    _in("behind", "float", 0.0, "When above 0: walk to a place this many metres behind the robot along its "
+        "heading, spread by the agent's place among its followers, not at the robot (people the robot leads).",
+        min=0.0, max=10.0),
 ), """
     Walks toward the robot (slowing as it gets near) until closest_dist metres away, then stands facing it;
     RUNNING for duration seconds, then succeeds. Use it for people who go to the robot on purpose.""",

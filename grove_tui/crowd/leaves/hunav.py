@@ -16,6 +16,7 @@ from typing import Literal
 
 from grove_tui.crowd.context import Point, SimContext, Snapshot
 from grove_tui.crowd.coordination import Conversation
+from grove_tui.crowd.led_slots import SLOT_EASE, slot_behind
 from grove_tui.crowd.keep_in_place import clear_of_parked_robot, home_zone, in_zone, target_in_place
 from grove_tui.crowd.leaves.base import (
     FAILURE, RUNNING, SUCCESS, AgentCondition, AgentStatefulAction, AgentSyncAction, QuietSpec, angle_diff,
@@ -612,6 +613,17 @@ class ApproachRobot(_Timed):
             return
         p = self.sim.pos[self.row]
         closest = self.get_input("closest_dist")
+        behind = self.get_input("behind")
+        spot = slot_behind(self.sim, self.row, robot, behind) if behind is not None and behind > 0 else None
+        if spot is not None:
+            # people the robot leads walk to their place behind it, not at it (crowd/led_slots.py)
+            goal, d = spot, math.dist(p, spot)
+            if d <= 0.3:
+                self.face("robot")
+            else:
+                self.walk_to(goal, self.get_input("max_vel") * d / (d + SLOT_EASE),
+                             beyond=(float(robot[0]), float(robot[1])))
+            return
         goal, d = _toward(p, robot, closest)
         if d <= closest + 0.1:
             self.face("robot")
