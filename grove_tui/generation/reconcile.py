@@ -37,6 +37,7 @@ from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.exit_post import claim_radius
 from grove_tui.generation.mutual_follow import leads_who_follow_it
+from grove_tui.generation.shared_queue import with_shared_queues
 from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
@@ -926,6 +927,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                                                  1.3 * seconds + 10.0),))
     if robot_row is not None:
         questions += robot_row.unsure
+    out = with_shared_queues(out)  # a queue shared with other groups: its claim waits for them too
     return with_run_length(GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)),
                                            tuple(repairs), tuple(reading.corrections), robot_row,
                                            tuple(dict.fromkeys(questions))))
