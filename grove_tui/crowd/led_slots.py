@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 
 from grove_tui.crowd.context import Point, SimContext
-from grove_tui.crowd.free_start import free_point
 
 MAX_COLUMNS = 5  # followers abreast behind the robot at most (a compact block: about as wide as deep)
 SLOT_SIDE = 0.7  # metres between followers side by side
@@ -45,7 +44,7 @@ def slot_behind(sim: SimContext, row: int, robot: tuple[float, float, float], be
     robot's sight; narrower (straight behind it) where a wall cuts the place off. None while the follower
     is far from the robot or out of its sight (it catches up walking at the robot, round corners and
     through doors as before), or when even the narrow place is out of the robot's sight."""
-    here = free_point(sim, sim.pos[row], robot[:2])  # pressed into a wall band: from the free cell by it
+    here = sim.pos[row]
     back, left = slot_offset(slot_of(sim, row), behind, len(sim.led_slots))
     if math.dist(here, robot[:2]) > back + CATCH_UP or not sim.sees(here, robot[:2]):
         return None

@@ -16,7 +16,6 @@ from typing import Literal
 
 from grove_tui.crowd.context import Point, SimContext, Snapshot
 from grove_tui.crowd.coordination import Conversation
-from grove_tui.crowd.free_start import free_point
 from grove_tui.crowd.led_slots import SLOT_EASE, slot_behind
 from grove_tui.crowd.keep_in_place import clear_of_parked_robot, home_zone, in_zone, target_in_place
 from grove_tui.crowd.leaves.base import (
@@ -440,7 +439,7 @@ class _Timed(AgentStatefulAction):
         last = self.last_goal
         if self.facing is not None or last is None or math.dist(last, point) > self.REGOAL:
             sim = self.sim
-            here = free_point(sim, sim.pos[self.row], point)  # from a wall band: the free cell by it
+            here = sim.pos[self.row]
             if sim.sees(here, point):
                 crowd.set_goals(self.row, [point], goal_radius=goal_radius)
                 self.routed_to = None
