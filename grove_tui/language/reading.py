@@ -49,6 +49,7 @@ from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.past_drills import without_past_drills
+from grove_tui.language.post_verbs import as_work_at_posts
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.converging import as_heading
@@ -126,7 +127,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_scale_figures(text)  # "the hundred-odd travellers": about 100
-    text = as_simple_work(text)  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
+    text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
