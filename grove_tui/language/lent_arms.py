@@ -23,7 +23,7 @@ _PERSON_ARM = re.compile(rf"\b({_GIVING})\s+((?:(?!(?:his|her|their|an|a)\s)[\w'
 _ARM_TO = re.compile(rf"\b({_GIVING})\s+{_ARM}\s+to\s+(?=(?:the|a|an|his|her|their|Mr|Mrs|Ms|Miss|[A-Z])\b)",
                      re.IGNORECASE)
 # "takes her arm and walks her to", "takes Alastair's arm and leads him to".
-_TAKES_ARM = re.compile(r"\b(takes|took|taking|take)\s+(?:((?:(?:his|her|their|the|an|a)\s+)?[\w-]+)['’]s|his|her|their)\s+arm\s+and\s+"
+_TAKES_ARM = re.compile(r"\b(takes|took|taking|take)\s+(?:((?:(?:his|her|their|the|an|a)\s+)?(?:[\w-]+\s+){0,2}?[\w-]+)['’]s|his|her|their)\s+arm\s+and\s+"
                         r"(walks|walked|leads|led|helps|helped|guides|guided|steers|steered|takes|took)\s+"
                         r"(him|her|them)\b")
 

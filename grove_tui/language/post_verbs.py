@@ -10,8 +10,7 @@ from __future__ import annotations
 
 import re
 
-# verb form -> the same form of "work"
-_FORMS = {"s": "works", "": "work", "ed": "worked", "ing": "working"}
+# A verb of working a post, in the forms "works", "work", "worked", "working" are said in.
 _VERBS = {
     "man": ("mans", "man", "manned", "manning"), "mind": ("minds", "mind", "minded", "minding"),
     "staff": ("staffs", "staff", "staffed", "staffing"), "cover": ("covers", "cover", "covered", "covering"),
@@ -21,7 +20,7 @@ _VERBS = {
     "keep watch over": ("keeps watch over", "keep watch over", "kept watch over", "keeping watch over"),
     "keep watch at": ("keeps watch at", "keep watch at", "kept watch at", "keeping watch at"),
 }
-_WORK = dict(zip(("works", "work", "worked", "working"), ("works", "work", "worked", "working")))
+_WORK = ("works", "work", "worked", "working")
 _TO_WORK = {form: work for forms in _VERBS.values() for form, work in zip(forms, _WORK)}
 _POSTS = ("desk", "desks", "counter", "counters", "till", "tills", "checkout", "checkouts", "booth", "kiosk",
           "stall", "reception", "door", "doors", "gate", "gates", "hatch", "window", "entrance", "barrier",
