@@ -185,3 +185,24 @@ def test_a_fronted_verb_with_its_object_keeps_its_reading(read):
                           ("museum", "Before briefing a guide takes two pupils from the cafe to the gift shop.")):
         leader, led = read(world, prompt).groups
         assert leader.intent == "walk" and led.intent == "follow"
+
+
+# ---- 9. an order's first item said by a bare count and an "-ing" verb -------------------------------------
+
+@pytest.mark.parametrize("world,prompt,first,second", [
+    ("mall", "Have two waiting by the fountain and three shoppers at the food court.", "fountain", "food_court"),
+    ("station", "Have two waiting in the ticket office and a guard at the newsagent.", "ticket_office", "newsagent"),
+    ("airport", "Get three queuing at the information desk and a pilot at the cafe.", "information_desk", "cafe"),
+    ("museum", "Put four chatting by the whale skeleton and two guards at the gift shop.", "whale_skeleton",
+     "gift_shop"),
+])
+def test_an_orders_bare_count_doing_something_is_a_group(read, world, prompt, first, second):
+    groups = read(world, prompt).groups
+    assert [g.location for g in groups] == [first, second]
+
+
+def test_an_orders_count_of_things_is_no_group_of_people(read):
+    groups = read("mall", "I have two shopping bags at the fountain.").groups
+    assert not any(g.count.value == 2 for g in groups)
+    groups = read("mall", "Two waiting by the fountain and three shoppers at the food court.").groups
+    assert [g.count.value for g in groups] == [2, 3]
