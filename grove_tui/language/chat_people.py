@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.ordered_counts import ordered_before_a_place
 from grove_tui.language.tokens import lemma, verb_lemma
 
 # Whole words, lower case only ("PT" may be a name or a lesson).
@@ -23,7 +24,7 @@ _N_POSSESSIVE = re.compile(r"(?<=\w)\s+n\s+(?=(?:his|her|their|my|our|its)\b)")
 _N_PERSON = re.compile(r"(?<=\w)\s+n\s+(?=([a-z]+)\b)")
 _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
                                          ("couple", "pair", "handful", "dozens")), key=len, reverse=True)) + r")"
-_BARE_COUNT = re.compile(r"(^|[,;]\s*|\b(?:and|n|while|plus)\s+)(" + _NUMBER + r")\s+([a-z]+ing)\b(?=\s+(\w+))",
+_BARE_COUNT = re.compile(r"(^|[,;]\s*|\b(?:and|n|while|plus)\s+|(?:^|[.!?]\s+)(?:Have|Get|Put|Keep|Leave)\s+)(" + _NUMBER + r")\s+([a-z]+ing)\b(?=\s+(\w+))",
                          re.IGNORECASE)
 # What people do, said by a bare count: "5 browsing", "4 queuing", "2 chatting".
 _DOING = frozenset("browse queue queueing wait sit stand chat talk wander stroll walk mill hang shop eat drink look line "
@@ -46,4 +47,6 @@ def _counted_people(m: re.Match[str]) -> str:
     doing = m.group(3).lower()
     if verb_lemma(doing) not in _DOING or m.group(4).lower() in _ING_NOUNS:
         return m.group(0)
+    if ordered_before_a_place(m.group(1), m.group(4)) is False:
+        return m.group(0)  # "Have two shopping bags": an order's count before a place only ("Have two waiting in")
     return f"{m.group(1)}{m.group(2)} people {m.group(3)}"

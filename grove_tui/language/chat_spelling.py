@@ -41,7 +41,9 @@ def spell_out(text: str) -> str:
 def _with_g(m: re.Match[str]) -> str:
     word = m.group(1)
     full = word + "g"
-    if verb_lemma(full.lower()) not in _VERBS or _DETERMINER_BEFORE.search(m.string[:m.start()]):
+    stem = full.lower()[:-3]  # "doin", "goin": a short verb whose "-ing" the lemmatiser keeps whole
+    if (verb_lemma(full.lower()) not in _VERBS and not (len(stem) == 2 and stem in _VERBS)) or \
+            _DETERMINER_BEFORE.search(m.string[:m.start()]):
         return m.group(0)
     return full
 

@@ -9,6 +9,7 @@ from dataclasses import replace
 
 from grove_tui.language.bound_for import bound_verbs
 from grove_tui.language.event_causes import shutting_verbs
+from grove_tui.language.going_idioms import as_going_verbs
 from grove_tui.language.parser import Word
 from grove_tui.language.pushed_things import as_pushing_verbs
 from grove_tui.language.worked_things import work_particles
@@ -63,4 +64,4 @@ def as_verbs(words: list[Word]) -> list[Word]:
             prev = out[k - 1] if k > 0 else None
             if prev is not None and prev.dep == "compound" and prev.head == k:
                 out[k - 1] = replace(prev, dep=w.dep, head=w.head)  # "the lounge": the noun the verb was taken for
-    return as_pushing_verbs(work_particles(bound_verbs(shutting_verbs(out))))  # "mums wheel prams", "the toy store shuts and ...", "bound for Leeds queue at ..."
+    return as_going_verbs(as_pushing_verbs(work_particles(bound_verbs(shutting_verbs(out)))))  # "mums wheel prams", "the toy store shuts and ...", "bound for Leeds queue at ..."

@@ -12,6 +12,7 @@ from dataclasses import replace
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import GroupReading
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.watching_posts import perceives_nothing
 
 # Verbs of perceiving or reporting something, not of going anywhere.
 PERCEIVING = frozenset("smell notice spot see hear sense detect discover report realise realize witness "
@@ -30,6 +31,8 @@ def _only_perceives(s: Sentence, m: Mention) -> bool:
         return False
     if s.w[verb].lemma not in PERCEIVING or s.w[verb].pos != "VERB":
         return False
+    if perceives_nothing(s, verb):
+        return False  # "two instructors spotting by the cave": at a post, no thing perceived
     # "notices smoke and walks out": a second verb of theirs, with no subject of its own
     for w in s.w:
         if w.head == verb and w.dep == "conj" and w.pos in ("VERB", "AUX") and \

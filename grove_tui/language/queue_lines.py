@@ -11,7 +11,8 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
 # Verbs whose object, or whose "in", is the line people stand in.
-_LINING_VERBS = frozenset("form make join get stand wait fall".split())
+_LINING_VERBS = frozenset("form make join get stand wait fall".split()) | frozenset(
+    "stick stuck sit stay remain be trap trapped".split())  # "are stuck in a long line at", "sit in a long queue"
 # The words for the line itself.
 _LINE_WORDS = frozenset({"line", "queue", "queues", "lines"})
 # Words that may stand between the verb and the line: "in", "at", "the back of", an article.

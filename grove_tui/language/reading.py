@@ -46,7 +46,10 @@ from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
+from grove_tui.language.fronted_ing_times import with_fronted_ing_times
 from grove_tui.language.owned_partitives import without_partitive_owners
+from grove_tui.language.past_drills import without_past_drills
+from grove_tui.language.post_verbs import as_work_at_posts
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.converging import as_heading
@@ -70,6 +73,7 @@ from grove_tui.language.fronted_size_parts import with_fronted_size_parts
 from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
+from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.carried_babies import without_carried_babies
 from grove_tui.language.named_workplaces import without_named_workplaces
@@ -123,7 +127,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_scale_figures(text)  # "the hundred-odd travellers": about 100
-    text = as_simple_work(text)  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
+    text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
@@ -135,6 +139,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
+    text = without_past_drills(with_fronted_ing_times(as_arm_escort(text)))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"

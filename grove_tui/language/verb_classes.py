@@ -20,6 +20,7 @@ from grove_tui.language.activity_nouns import ACTIVITY_PHRASES
 from grove_tui.language.hauled_loads import hauls_a_load
 from grove_tui.language.going_verbs import THING_TAKING_VERBS, carries_a_thing_to, more_verb_intent
 from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
+from grove_tui.language.going_idioms import setting_out
 from grove_tui.language.queue_lines import lined_queue
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
@@ -107,7 +108,10 @@ def phrasal_intent(s: Sentence, i: int) -> tuple[tuple[str, ...], str] | None:
                 continue  # "walks round to the bar": going there the way round, not wandering about
             return phrase, intent
     lined = lined_queue(s, i)  # "form a long line at the servery", "join the back of the long queue"
-    return (lined, "queue") if lined is not None else None
+    if lined is not None:
+        return lined, "queue"
+    setting = setting_out(s, i)  # "sets off for the library", "strike out towards the gate"
+    return (setting, "walk") if setting is not None else None
 
 
 def takes_a_way(s: Sentence, i: int, verb: str, end: int) -> bool:
