@@ -56,12 +56,15 @@ def as_plural_verbs_before_a_clause(words: list[Word]) -> list[Word]:
                 verb.tag != "NN" or verb.dep not in ("dep", "nsubj", "appos", "ROOT") or not verb.lower.isalpha() or \
                 nxt.pos != "ADP" or len({plural.sentence, verb.sentence, nxt.sentence}) != 1:
             continue
-        if words[k - 1].sentence != plural.sentence or words[k - 1].pos not in ("NUM", "DET", "ADJ"):
+        before = words[k - 1]
+        counted = before.pos == "NUM" or (k >= 2 and before.tag == "NN" and before.dep == "compound" and
+                                          words[k - 2].pos == "NUM" and words[k - 2].sentence == plural.sentence)
+        if before.sentence != plural.sentence or (before.pos not in ("NUM", "DET", "ADJ") and not counted):
             continue
         head = words[verb.head]
         if verb.dep == "ROOT":
-            if not any(x.lower == "," and x.sentence == verb.sentence for x in words[verb.i + 1:]):
-                continue  # "six swimmers pad to the pool." alone: read as before
+            if not counted and not any(x.lower == "," and x.sentence == verb.sentence for x in words[verb.i + 1:]):
+                continue  # "the swimmers pad to the pool." alone: read as before
         elif verb.head <= verb.i or head.pos not in ("VERB", "AUX") or \
                 not any(x.lower == "," for x in words[verb.i + 1:verb.head]):
             continue  # only before a later clause of its own, after a comma

@@ -2,7 +2,7 @@
 ...", "four players in concert black wait backstage", "two medics in scrubs", "a guard in hi-vis". Read
 as a place, the clothes were refused as a place the world lacks ("wetsuit pads") and the person, run
 into it, was lost. Clothes say nothing of where anyone is or how many there are, so the phrase is left
-out after a word for people; a place named with a clothing word ("in the uniform store", "the kit room"
+out after a word for people where it runs into a verb in "-s" or ends an aside; a place named with a clothing word ("in the uniform store", "the kit room"
 of the world) is a place still."""
 
 from __future__ import annotations
@@ -28,13 +28,22 @@ _CLOTHES = ("wetsuits? drysuits? scrubs hi-vis hi-viz high-vis high-viz uniforms
             "bikinis? swimsuits? swimming\\s+costumes? trunks ponchos? capes? cloaks? togas? "
             "black\\s+tie tails").split()
 _CLOTHING = "|".join(sorted(_CLOTHES, key=len, reverse=True))
-_WORN = re.compile(rf"(?P<person>\b[A-Za-z][A-Za-z-]*)(?P<worn>,?\s+(?:in|wearing|dressed\s+in|clad\s+in|kitted\s+out\s+in)"
+_WORN = re.compile(rf"(?:\b(?P<det>[A-Za-z]+)\s+)?(?P<person>\b[A-Za-z][A-Za-z-]*)(?P<worn>,?\s+(?:in|wearing|dressed\s+in|clad\s+in|kitted\s+out\s+in)"
                    rf"\s+(?:(?:a|an|the|his|her|their|matching|full|bright|dark|smart|long|white|black|red|blue|"
                    rf"green|yellow|orange|pink|grey|navy|[a-z]+-[a-z]+|[a-z]+)\s+){{0,3}}"
                    rf"(?:{_CLOTHING}))(?P<after>\b[,.;:!?]?\s*(?P<next>[A-Za-z-]*))", re.IGNORECASE)
 _PERSON_ENDS = ("er", "ers", "or", "ors", "ist", "ists", "ian", "ians", "ee", "ees", "ic", "ics", "man", "men",
                 "woman", "women", "people", "folk", "lad", "lads", "girl", "girls", "boy", "boys", "kid", "kids")
 _NOT_PEOPLE = frozenset("water paper corner number order letter power centre center floor door lobby hour".split())
+
+
+_DETERMINERS = frozenset("a an one two three four five six seven eight nine ten some several few".split())
+
+
+def _names_a_place(index: PlaceIndex, first: str, second: str) -> bool:
+    """Whether two words said one after the other are in a place's name ("kit room", "coat rack")."""
+    return any(first in phrase and phrase.index(first) + 1 < len(phrase) and phrase[phrase.index(first) + 1] == second
+               for entry in index.entries for phrase in entry.phrases)
 
 
 def _person(word: str) -> bool:
@@ -49,8 +58,14 @@ def without_worn_clothes(text: str, index: PlaceIndex) -> str:
     def drop(m: re.Match[str]) -> str:
         worn_words = m.group("worn").lower().replace(",", " ").split()
         nxt = m.group("next").lower()
-        if not _person(m.group("person")) or (nxt and index.knows(lemma(nxt))) or \
-                index.knows(lemma(worn_words[-1])):
+        after = m.group("after").strip()
+        if not after[:1] in (",", ";") and not (nxt.endswith("s") and not nxt.endswith("ss")):
+            return m.group(0)  # "two medics in scrubs walk": the parser reads it as it is
+        word = m.group("person").lower()
+        if word in lx.ROBOT_WORDS or word in _NOT_PEOPLE or \
+                not (_person(word) or (m.group("det") or "").lower() in _DETERMINERS) or \
+                (nxt and _names_a_place(index, lemma(worn_words[-1]), lemma(nxt))) or \
+                (worn_words[1] == "the" and index.knows(lemma(worn_words[-1]))):
             return m.group(0)
-        return m.group("person") + m.group("after")
+        return m.group(0)[:m.start("worn") - m.start(0)] + m.group("after")
     return _WORN.sub(drop, text)
