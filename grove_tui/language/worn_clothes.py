@@ -25,7 +25,7 @@ _CLOTHES = ("wetsuits? drysuits? scrubs hi-vis hi-viz high-vis high-viz uniforms
             "pajamas dressing\\s+gowns? onesies? costumes? fancy\\s+dress fatigues camouflage camo whites blacks "
             "black white red blue green yellow orange pink purple grey gray navy tweed denim kit gear livery "
             "cassocks? habits? wimples? turbans? headscarf headscarves hijabs? burkas? niqabs? veils? "
-            "bikinis? swimsuits? swimming\\s+costumes? trunks ponchos? capes? cloaks? togas? "
+            "sashes? scarf scarves bikinis? swimsuits? swimming\\s+costumes? trunks ponchos? capes? cloaks? togas? "
             "black\\s+tie tails").split()
 _CLOTHING = "|".join(sorted(_CLOTHES, key=len, reverse=True))
 _WORN = re.compile(rf"(?:\b(?P<det>[A-Za-z]+)\s+)?(?P<person>\b[A-Za-z][A-Za-z-]*)(?P<worn>,?\s+(?:in|wearing|dressed\s+in|clad\s+in|kitted\s+out\s+in)"
@@ -37,6 +37,8 @@ _PERSON_ENDS = ("er", "ers", "or", "ors", "ist", "ists", "ian", "ians", "ee", "e
 _NOT_PEOPLE = frozenset("water paper corner number order letter power centre center floor door lobby hour".split())
 
 
+_COLOURS = frozenset("black white red blue green yellow orange pink purple grey gray navy tweed denim camo "
+                     "camouflage whites blacks kit gear livery".split())
 _DETERMINERS = frozenset("a an one two three four five six seven eight nine ten some several few".split())
 
 
@@ -59,8 +61,9 @@ def without_worn_clothes(text: str, index: PlaceIndex) -> str:
         worn_words = m.group("worn").lower().replace(",", " ").split()
         nxt = m.group("next").lower()
         after = m.group("after").strip()
-        if not after[:1] in (",", ";") and not (nxt.endswith("s") and not nxt.endswith("ss")):
-            return m.group(0)  # "two medics in scrubs walk": the parser reads it as it is
+        if not after[:1] in (",", ";") and (not (nxt.endswith("s") and not nxt.endswith("ss")) or
+                                            worn_words[-1] in _COLOURS):
+            return m.group(0)  # "two medics in scrubs walk", "women in pink sashes": read as it is
         word = m.group("person").lower()
         if word in lx.ROBOT_WORDS or word in _NOT_PEOPLE or \
                 not (_person(word) or (m.group("det") or "").lower() in _DETERMINERS) or \
