@@ -6,6 +6,7 @@ of a verb, counted by a number or a "pair"/"trio"/"couple" of, and no place, thi
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.group_of_subjects import subject_through_a_group_of
 from grove_tui.language.place_modifiers import names_a_place
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
@@ -46,6 +47,8 @@ def _subject_of_a_verb(s: Sentence, i: int) -> bool:
     """The parser's subject of a verb that is not only a thing's, or a word before a plural verb the
     parser took for an adverb or noun ("mall cops saunter")."""
     word = s.w[i]
+    if subject_through_a_group_of(s, i):
+        return True  # "a couple of first-year sketchers put away ...": the couple is the parser's subject
     if word.dep in ("nsubj", "nsubjpass") and word.head != i and s.w[word.head].pos in ("VERB", "AUX"):
         head = word.head
         lined_up = head + 1 < s.n and s.low[head + 1] == "up"  # "are lined up at ...": a queue, no things
