@@ -7,6 +7,7 @@ changing room")."""
 
 from __future__ import annotations
 
+from grove_tui.language.own_things import past_own
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma
 
@@ -22,7 +23,8 @@ def _state_word(s: Sentence, j: int) -> bool:
 
 def past_state(s: Sentence, k: int) -> int:
     """Past the state words at k ("the jammed pinsetter": at "pinsetter") when a noun the world knows
-    follows them; k itself otherwise."""
+    follows them; k itself otherwise. Past "own" after a possessive too ("his own bed": at "bed")."""
+    k = past_own(s, k)
     j = k
     while j < s.n and j < k + 2 and _state_word(s, j):
         j += 1

@@ -96,3 +96,39 @@ def test_a_bare_adverb_of_place_then_a_room_in_it_is_the_room(read, world, promp
 def test_a_bare_adverb_of_place_alone_keeps_its_reading(read, world, prompt, location):
     (g,) = read(world, prompt).groups
     assert g.location == location
+
+
+# ---- 4. a person's own thing: the one of the person named, never a kind to refuse -----------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("care_home", "Mr Kowalski shuffles back to his own bed.", "room_2_bed"),
+    ("care_home", "Mrs Okafor walks back to her own bed.", "room_3_bed"),
+    ("care_home", "Mr Kowalski shuffles back to his bed.", "room_2_bed"),
+])
+def test_a_persons_own_thing_is_the_one_of_the_person_named(read, world, prompt, destination):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.destination == destination
+    assert r.unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hall_of_residence", "A student heads back to her own bed."),
+    ("care_home", "An old man shuffles back to his own bed."),
+    ("hall_of_residence", "Two students stumble back to their own beds."),
+])
+def test_an_own_thing_of_someone_unnamed_is_no_kind_to_refuse(read, world, prompt):
+    r = read(world, prompt)
+    (g,) = r.groups
+    assert g.destination is not None and r.unknown_places == ()
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("hall_of_residence", "Tom heads back to his own bed.", "g02_bed"),
+    ("care_home", "Mr Kowalski heads back to his own room.", "room_2"),
+    ("care_home", "Mrs Baxter walks back to her room.", "room_1"),
+    ("hospital", "A nurse walks back to her own station.", "nurse_station"),
+])
+def test_a_persons_own_room_keeps_its_reading(read, world, prompt, destination):
+    (g,) = read(world, prompt).groups
+    assert g.destination == destination
