@@ -6,6 +6,7 @@ name of one of the world's places is where people are, or where they go after a 
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.bare_then_named import named_place_after
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -22,8 +23,8 @@ def bare_place_at(s: Sentence, i: int) -> tuple[str, int] | None:
     if i > 0 and (s.low[i - 1] in lx.DETERMINERS or s.preposition(i - 1) is not None):
         return None  # "the poolside", "at rinkside": read as a phrase of its own
     match = s.index.match((lemma(word),))
-    if match is None or not match.exact:
-        return None
+    if match is None or not match.exact or named_place_after(s, i, match.name):
+        return None  # "waits backstage in the green room": the room said after it is where they are
     v = i - 1
     while v > 0 and (s.low[v].endswith("ly") and s.w[v].pos == "ADV" or s.low[v] in ("quietly", "nervously")):
         v -= 1  # "sits quietly backstage"

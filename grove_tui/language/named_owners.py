@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.described_owners import owned_by_described_name
 from grove_tui.language.elided_owners import elided_owned
+from grove_tui.language.named_things import things_of_name
 from grove_tui.language.place_owner import owner_at
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import Sentence
@@ -54,6 +55,7 @@ def owned_by_name(s: Sentence, at: int, k: int, lemmas: Sequence[str]) -> Decide
     n = len(owner[0])
     rooms = [e for e in s.index.entries if e.kind == "zone" and head in e.tokens and any(
         phrase[x:x + n] in owner for phrase in e.phrases for x in range(len(phrase) - n + 1))]
+    rooms = rooms or things_of_name(s.index, owner, head)  # "his own bed": the bed of his room
     if len(rooms) != 1:
         return owned_by_described_name(s, at, k, lemmas)
     e = rooms[0]

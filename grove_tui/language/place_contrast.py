@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from grove_tui.language.lexicon import DEPARTURE_VERBS, PLACE_MODIFIERS, PLACE_SYNONYMS
+from grove_tui.language.moved_off_for import moved_off_for
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceEntry, PlaceIndex, PlaceMatch
 from grove_tui.language.sentence import Sentence
@@ -60,5 +61,7 @@ def left_for(s: Sentence, said: Sequence[Place], at: int) -> bool:
     the planetarium", "quit the ward for the canteen") and comes with a determiner: the place after it
     is where they go ("leaves the office for lunch" is still what for)."""
     before = said[-1] if said else None
+    if before is not None and moved_off_for(s, before, at):
+        return True  # "heads off platform 2 for the signal box": where they go
     return before is not None and before.end == at and before.prep == "obj:start" and at + 1 < s.n \
         and s.low[at + 1] in ("the", "this", "that") and verb_lemma(s.low[before.index]) in DEPARTURE_VERBS

@@ -1,5 +1,4 @@
-"""Pass 4, in the sentence: the noun phrases in a place role ("to the pharmacy", "leave the ward",
-"on platform 2") and the world's place each names, with how sure that is.
+"""Pass 4, in the sentence: the noun phrases in a place role ("to the pharmacy", "leave the ward", "on platform 2") and the world's place each names, with how sure that is.
 
 Words are matched by the world's one place index (language/places.py), then by meaning when they do
 not decide; a zone named before decides between fixtures alike ("On platform 2 ... the bench"); a phrase in a place role naming nothing of the world is an unknown place, unless a time, person, manner or building."""
@@ -28,6 +27,7 @@ from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
+from grove_tui.language.worked_states import past_state
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
@@ -557,7 +557,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         if j > k and j < s.n and s.low[j] == "of" and lemma(s.low[j - 1]) in lx.PLACE_PARTS:
             return s.skip(j + 1, lx.DETERMINERS)
-        return k
+        return past_state(s, k)  # "the jammed pinsetter": the pinsetter, in a state
 
     def names_place(self, k: int) -> bool:
         """Whether the words at k name a place of the world by its whole name or an alias ("ward a")."""
