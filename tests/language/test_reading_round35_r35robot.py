@@ -31,3 +31,26 @@ def test_people_who_go_with_the_robot_follow_it_there(read, world, prompt, desti
 def test_guard_going_with_someone_else_or_following(read, world, prompt, interaction):
     r = read(world, prompt)
     assert r.groups[0].robot_interaction == interaction, r.groups
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "During the drill the robot leads the interns out of the building."),
+    ("office", "The robot ushers two visitors out of the premises."),
+    ("museum", "The robot guides the school party out of the museum."),
+    ("museum", "The robot escorts an elderly couple out of the whole building."),
+    ("airport", "Ten passengers panic while the robot leads them out of the building."),
+    ("hospital", "The robot guides three visitors out of the hospital."),
+])
+def test_the_robot_leading_people_out_of_the_building_goes_to_an_exit(read, worlds, world, prompt):
+    robot = read(world, prompt).robot
+    assert robot is not None and robot.task == "cross", robot
+    assert robot.destination in {door.name for door in worlds[world].exits()}, robot
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("office", "The robot leads the interns out of the kitchen to the boardroom.", "boardroom"),
+    ("museum", "The robot guides the visitors to the cafe.", "cafe"),
+])
+def test_guard_leading_out_of_a_named_place_keeps_its_route(read, world, prompt, destination):
+    robot = read(world, prompt).robot
+    assert robot is not None and robot.destination == destination, robot
