@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.out_of_building import out_of_building
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -27,5 +28,7 @@ def leads_out(s: Sentence, start: int) -> bool:
         elif verb is not None and s.low[k] in _OUT_WORDS and (
                 k + 1 >= s.n or s.is_punct(k + 1) or s.low[k + 1] in lx.CLAUSE_STARTERS):
             return True
+        elif verb is not None and out_of_building(s, k):
+            return True  # "leads them out of the building": out, no place named
         k += 1
     return False

@@ -7,6 +7,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.robot_company import goes_with_robot
 from grove_tui.language.disregard import disregards
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
@@ -75,7 +76,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         # two mentions, the words since the one before ("curious about the robot and follow it").
         since = robot_at[n_mention - 1] if n_mention else -1
         found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r)
-                 or motion_reaction_before(s, own, since, r) or _noun_after(s, ownset, r) or _passive(s, r))
+                 or motion_reaction_before(s, own, since, r) or _noun_after(s, ownset, r) or _passive(s, r)
+                 or goes_with_robot(s, own, r))
         if found == "avoid" and _refused(s, own, r):
             return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
         if found in ("look", "approach", "follow") and _ignored(s, own, r):
