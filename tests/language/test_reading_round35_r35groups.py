@@ -48,6 +48,23 @@ def test_a_stampede_is_fast(read, world, prompt):
     assert g.pace == "fast"
 
 
+# ---- 4. someone moved along, said with an adjective only people are ------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("playhouse", "An usher wheels an elderly patron from the foyer to the studio.", "foyer", "studio_theatre"),
+    ("zoo", "A keeper wheels a disabled patron to the cafe.", None, "cafe"),
+    ("hospital", "A porter wheels a frail patron from the cafeteria to the main entrance.", "cafeteria", "main_entrance"),
+    ("hotel", "A porter wheels an elderly novice from the lobby to the lift.", "lobby", "lift_lobby"),
+    ("hotel", "A porter wheels a frail alumnus from the lobby to the lift.", "lobby", "lift_lobby"),
+    ("mall", "A guard pushes an elderly heir to the food court.", None, "food_court"),
+])
+def test_someone_described_and_moved_along_is_a_person(read, world, prompt, start, destination):
+    mover, moved = read(world, prompt).groups
+    assert (mover.count.value, moved.count.value) == (1, 1)
+    assert moved.intent == "follow"
+    assert (moved.start, moved.destination) == (start, destination)
+
+
 # ---- guards: readings that must stay as they were --------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt,value", [
@@ -69,3 +86,12 @@ def test_a_collective_with_its_people_said_keeps_its_count(read, world, prompt, 
 def test_a_plain_walk_keeps_its_pace(read, world, prompt):
     (g,) = read(world, prompt).groups
     assert g.pace == "normal"
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "A porter wheels a heavy trolley from the ward to the cafeteria."),
+    ("hospital", "A porter wheels an empty bed from the ward to the cafeteria."),
+    ("supermarket", "A cleaner pushes a battered cart to the tills."),
+])
+def test_a_thing_moved_along_is_no_person(read, world, prompt):
+    assert len(read(world, prompt).groups) == 1
