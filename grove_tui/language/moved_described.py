@@ -11,6 +11,9 @@ from grove_tui.language.tokens import verb_lemma
 
 _OPENERS = frozenset({"a", "an", "the", "his", "her", "their", "our", "my"})
 _THINGS = (lx.NON_PEOPLE - lx.PERSON_NOUNS) | lx.ROBOT_WORDS | lx.CARRYING_THINGS
+# Verbs of moving a person along who cannot go alone; "carries", "leads", "walks" take pets too
+# ("carries a sleepy spaniel", "walks a nervous greyhound").
+_MOVING_VERBS = frozenset("wheel push escort usher help steer accompany guide trundle".split())
 
 
 def moved_described_person(s: Sentence, i: int) -> bool:
@@ -27,4 +30,4 @@ def moved_described_person(s: Sentence, i: int) -> bool:
         k -= 1
     if not described or s.low[k] not in _OPENERS or k == 0:
         return False
-    return verb_lemma(s.low[k - 1]) in lx.LEADING_VERBS
+    return verb_lemma(s.low[k - 1]) in _MOVING_VERBS

@@ -92,6 +92,8 @@ def test_a_plain_walk_keeps_its_pace(read, world, prompt):
     ("hospital", "A porter wheels a heavy trolley from the ward to the cafeteria."),
     ("hospital", "A porter wheels an empty bed from the ward to the cafeteria."),
     ("supermarket", "A cleaner pushes a battered cart to the tills."),
+    ("vet_hospital", "A nurse carries a sleepy terrier from the foyer into consult 3."),
+    ("zoo", "A keeper carries a sleepy lemur to the cafe."),
 ])
 def test_a_thing_moved_along_is_no_person(read, world, prompt):
     assert len(read(world, prompt).groups) == 1
