@@ -26,7 +26,8 @@ _PACE_NOUNS = frozenset({"pace", "speed", "clip", "rate", "tilt", "pelt", "jog",
 # A word of speed that is only the scenario or a spell of time after these ("the rest of the run").
 _RUN_DETERMINERS = frozenset({"the", "this", "whole", "entire", "of"})
 # Jogging is quicker than walking; it is no intent of its own beyond walking (the lexicon's).
-_MORE_FAST = frozenset({"jog", "jogging", "jogs", "scurry", "scurries", "scurrying", "bustle", "bustles"})
+_MORE_FAST = frozenset({"jog", "jogging", "jogs", "scurry", "scurries", "scurrying", "bustle", "bustles"}) | frozenset(
+    "stampede hurtle careen pelt hotfoot hare".split())  # "stampede into the store": a rush
 
 
 def _negated(s: Sentence, i: int, own: set[int]) -> bool:

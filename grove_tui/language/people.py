@@ -28,6 +28,7 @@ from grove_tui.language.role_words import abbreviated_role, abbreviation_label, 
 from grove_tui.language.second_verbs import second_verb
 from grove_tui.language.caused_motion import taken_name
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
+from grove_tui.language.moved_described import moved_described_person
 from grove_tui.language.feeling_people import feels_about_the_robot
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
@@ -113,7 +114,7 @@ class People:
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
                 told_as_he_or_she(s, i) or placed_person(s, i):  # "an old dear shrieks when she spots the robot"
             return True
-        if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i) or \
+        if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i) or moved_described_person(s, i) or \
                 (taken_name(s, i) and self.is_person_noun(i - 2)):  # "a carer guides Doris from ..."
             return True  # "a keeper wheels a lady ...", "pushes an elderly gent on a gurney"
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
