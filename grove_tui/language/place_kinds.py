@@ -10,6 +10,7 @@ from collections.abc import Sequence
 
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.sport_kinds import SPORT_KINDS, only_the_head
+from grove_tui.language.tier_places import absent_tier, tier_place as tier_place
 from grove_tui.language.trade_places import TRADE_PLACES
 
 # Facilities people name by their kind: each is a kind of place of its own, never a word for rooms in
@@ -34,6 +35,8 @@ SYNONYM_NEAR = 0.75
 def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
     """The kind of place a phrase names that the world has none of ("planetarium" of "the planetarium
     dome"), or None."""
+    if (tier := absent_tier(index, lemmas)) is not None:
+        return tier  # "the upper circle" of a theatre with none
     words = [t for t in lemmas if t]
     pairs = ["_".join(words[i:i + 2]) for i in range(len(words) - 1)]
     for kind in [*pairs, *words]:

@@ -17,7 +17,7 @@ from grove_tui.language.particle_names import first_lemma
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
-from grove_tui.language.place_kinds import absent_kind, kind_continues
+from grove_tui.language.place_kinds import absent_kind, kind_continues, tier_place
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.place_pronouns import IT_PREPOSITIONS, referred_back
@@ -172,7 +172,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None
         if prep == "by" and lemmas and lemmas[-1] in lx.HELD_BY and (match is None or not match.exact):
             return None  # "leads a pupil by the arm", "by the scruff of his collar": where one is held, no place
-        if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES:
+        if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES and not tier_place(lemmas):
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
         if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match):  # "the planetarium (room)": a kind the world lacks

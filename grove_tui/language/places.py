@@ -27,6 +27,7 @@ from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLAC
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
 from grove_tui.language.place_first_words import names_its_zone
 from grove_tui.language.place_compounds import KIND_HEADS, head_only_modifies, names_another_kind
+from grove_tui.language.tier_places import tier_place
 from grove_tui.language.tokens import name_tokens
 from grove_tui.language.trade_places import TRADE_PLACES
 from grove_tui.world.model import World
@@ -308,7 +309,7 @@ class PlaceIndex:
         head = content[-1]
         if len(content) >= 2 and any(ch.isdigit() for ch in head) and content[-2] in NON_PLACES:
             return True  # "flight BA123", "train 42": a service and its number, not a place
-        if names_another_kind(self, content):
+        if names_another_kind(self, content) or tier_place(phrase) is not None:
             return False  # "the garden centre" in a supermarket: a kind of place, not the building
         if head == "area" and any(t not in self.building_words and t not in _WHOLE_AREA for t in content[:-1]):
             return False  # "the smoking area", "the coffee area": a part of the building, not all of it

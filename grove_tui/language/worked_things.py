@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 from grove_tui.language import lexicon as lx
 from grove_tui.language.filled_things import FILLING_PARTICLES
 from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.used_fixtures import uses_fixture
 
 if TYPE_CHECKING:
     from grove_tui.language.parser import Word
@@ -109,7 +110,7 @@ def room_worked_in(index: PlaceIndex, current: Place | None, room: Place) -> str
     the thing was read as a fixture of it; None otherwise."""
     if current is None or current.match is None or room.match is None or current.prep != "obj:at":
         return None
-    if verb_lemma(current.written) in _BEING_AMONG:
+    if verb_lemma(current.written) in _BEING_AMONG or uses_fixture(current.written):
         return None  # "browse the perfume shelves in the duty free": among the shelves, not only in the room
     if room.match.kind != "zone" or room.written not in ("in", "inside") or room.index <= current.index:
         return None

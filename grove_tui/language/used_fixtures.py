@@ -1,0 +1,22 @@
+"""Fixtures people use, hold on to or look at, said with the room they are in (round 35).
+
+"Hog the air hockey table in the arcade", "sketch the altarpiece in the old masters gallery", "man the
+barrier in the car park": the room only says where the fixture is, and people stay at the fixture.
+A chore done to things in a room ("polishes the tables in the restaurant") keeps the room
+(worked_things.room_worked_in)."""
+
+from __future__ import annotations
+
+from grove_tui.language.tokens import verb_lemma
+
+# Verbs whose object is a fixture people use, take up, keep watch on or look at, not a thing they work on.
+USED_FIXTURE_VERBS = frozenset(
+    "hog commandeer monopolise monopolize occupy use play man staff guard surround mob besiege swamp admire "
+    "sketch draw photograph film study examine ogle eye queue ride try test copy".split())
+
+
+def uses_fixture(verb: str) -> bool:
+    """Whether `verb` ("hogs", "sketching", "man") takes a fixture people use or look at as its object."""
+    low = verb.lower()
+    bases = {verb_lemma(low), low, low[:-1], low[:-2], low[:-3], low[:-3] + "e", low[:-3] + "y", low[:-4]}
+    return not bases.isdisjoint(USED_FIXTURE_VERBS) and len(low) > 2
