@@ -20,7 +20,7 @@ from grove_tui.crowd.context import Point, SimContext
 MAX_COLUMNS = 5  # followers abreast behind the robot at most (a compact block: about as wide as deep)
 SLOT_SIDE = 0.7  # metres between followers side by side
 SLOT_ROW = 0.8  # metres between rows of followers
-SLOT_EASE = 1.0  # metres: a follower slows as d / (d + SLOT_EASE) near its place, so it stops short of a robot that stops
+SLOT_EASE = 1.0  # metres: slows as d / (d + SLOT_EASE) near its place, stops short of a robot that stops
 CATCH_UP = 3.0  # metres beyond its place within which a follower takes it (further off it walks at the robot)
 
 
