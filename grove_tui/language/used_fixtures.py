@@ -18,5 +18,20 @@ USED_FIXTURE_VERBS = frozenset(
 def uses_fixture(verb: str) -> bool:
     """Whether `verb` ("hogs", "sketching", "man") takes a fixture people use or look at as its object."""
     low = verb.lower()
-    bases = {verb_lemma(low), low, low[:-1], low[:-2], low[:-3], low[:-3] + "e", low[:-3] + "y", low[:-4]}
-    return not bases.isdisjoint(USED_FIXTURE_VERBS) and len(low) > 2
+    return len(low) > 2 and not _bases(low).isdisjoint(USED_FIXTURE_VERBS)
+
+
+def _bases(low: str) -> set[str]:
+    """The base forms `low` may be inflected from, by its ending only: "manages" is no form of "man"."""
+    bases = {verb_lemma(low), low}
+    if low.endswith("ies"):
+        bases.add(low[:-3] + "y")  # "copies"
+    elif low.endswith("s"):
+        bases |= {low[:-1], low[:-2]}  # "hogs", "sketches"
+    for ending in ("ing", "ed"):
+        if low.endswith(ending):
+            stem = low[: -len(ending)]
+            bases |= {stem, stem + "e", stem[:-1] + "y" if stem.endswith("i") else stem}  # "riding", "copied"
+            if len(stem) > 2 and stem[-1] == stem[-2]:
+                bases.add(stem[:-1])  # "manning", "hogged"
+    return bases
