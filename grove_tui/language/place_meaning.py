@@ -14,6 +14,7 @@ from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
 from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
+from grove_tui.language.participle_places import participle_said, participle_starts
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
                                                 room_with, vehicle_stop)
@@ -185,7 +186,7 @@ class PlaceMeaning:
         if clause is None:
             return None
         first, end = clause
-        said = self._active(first, end)
+        said = participle_said(s, first, self._active(first, end))
         activity = plain_activity(("" if s.low[first] == "for" else "where ") + said)
         meant = self._by_clause(phrase, lemmas, content, activity, j, end)
         doers, named = named_doers(s, first, said)
@@ -276,6 +277,8 @@ class PlaceMeaning:
             first = j  # "the desk for car hire", "the room for x-rays"; not "for ten minutes", "for a while"
         elif bare and s.low[j] in _SUBJECTS and j + 1 < s.n and (s.is_verb(j + 1) or s.w[j + 1].tag == "MD"):
             first = j  # "the place you buy tickets", "the spot people leave their bags"
+        elif bare and participle_starts(s, j):
+            first = j  # "the place serving tea and scones"
         else:
             return None
         end = first
