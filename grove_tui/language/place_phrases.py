@@ -31,6 +31,7 @@ from grove_tui.language.worked_states import past_state
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
+from grove_tui.language.bare_alias_kinds import by_bare_alias
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -184,13 +185,12 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             exits = [m for e in s.index.exits() if (m := s.index.match(name_tokens(e))) is not None and m.kind == "door"]
             match = self._nearest_exit(exits) if exits and self.context_zones else exits[0] if exits else None
         kinds = tuple(t for t in lemmas[:-1] if t not in lx.PLACE_MODIFIERS) if informal is not None else \
-            self.noun_modifiers(start, j)
-        if match is not None and not match.exact and owned is None and \
+            self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS)
+        if match is not None and (not match.exact or by_bare_alias(s.index, match, lemmas)) and owned is None and \
                 (informal is not None or not self.modifiers_agree(
                     self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS),
                     match.name, phrase)):
-            # "the ice-cream stand" is no phone stand; an informal name is its place's whole name or near it
-            match = None
+            match = None  # "the ice-cream stand" is no phone stand; an informal name is its whole name or near
         meant = None
         described = None if numbered else self._described(phrase, lemmas, j, match is not None and match.exact)
         if described is not None:
