@@ -86,3 +86,25 @@ def test_a_thing_picked_up_makes_no_escort(read):
     r = read("office", "The robot picks up a parcel at reception and takes it to the kitchen.")
     assert r.robot is not None and (r.robot.task, r.robot.destination) == ("cross", "kitchen")
     assert all(g.robot_interaction != "follow" for g in r.groups)
+
+
+# ---- 4. the owner of the robot's place stays in it -------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("high_street_bank", "The robot ferries the post from Mr Shah's office to the cash office; he stays put in his.",
+     "adviser_office_1"),
+    ("gp_surgery", "The robot takes the samples from Dr Patel's room to reception while she stays in hers.",
+     "consulting_room_1"),
+    ("market_hall", "The robot carries the float from Mr Doyle's office to the cafe; he stays put in his.",
+     "market_office"),
+    ("town_hall", "The robot takes the minutes to Ms Adeyemi's office; she waits in hers.", "chief_executive_office"),
+    ("care_home", "The robot wheels the laundry to Mr Reid's room, where he stays.", "room_4"),
+])
+def test_the_owner_of_the_robots_place_who_stays_is_there(read, world, prompt, location):
+    (g,) = read(world, prompt).groups
+    assert (g.intent, g.location) == ("wait", location)
+
+
+def test_an_owner_said_to_stay_nowhere_is_not_placed(read):
+    (g,) = read("high_street_bank", "The robot takes the post from Mr Shah's office to the cash office.").groups
+    assert g.location is None
