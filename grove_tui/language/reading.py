@@ -96,6 +96,8 @@ from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
+from grove_tui.language.robot_followers import with_robot_followers
+from grove_tui.language.owners_stay import owners_stay_put
 from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
@@ -124,6 +126,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
+    text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
@@ -167,6 +170,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if active is not None:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
+    reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 
