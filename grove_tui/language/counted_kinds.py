@@ -6,6 +6,7 @@ of a verb, counted by a number or a "pair"/"trio"/"couple" of, and no place, thi
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.dozen_kinds import counted_by_a_dozen, subject_of_an_untagged_going
 from grove_tui.language.group_of_subjects import subject_through_a_group_of
 from grove_tui.language.place_modifiers import names_a_place
 from grove_tui.language.sentence import Sentence
@@ -34,6 +35,8 @@ def counted_plural_subject(s: Sentence, i: int) -> bool:
         k -= 1
     if k < 0:
         return False
+    if counted_by_a_dozen(s, k + 1, i):
+        return True  # "a dozen ice hockey juniors clatter ...": "dozen" is a noun to the parser
     if s.low[k] == "odd" or (s.low[k] == "-" and k > 0 and s.w[k - 1].pos == "NUM"):
         k -= 1
         while k >= 0 and s.low[k] in ("-", "odd"):
@@ -53,6 +56,8 @@ def _subject_of_a_verb(s: Sentence, i: int) -> bool:
         head = word.head
         lined_up = head + 1 < s.n and s.low[head + 1] == "up"  # "are lined up at ...": a queue, no things
         return s.verb(head) not in lx.THING_VERBS or lined_up
+    if subject_of_an_untagged_going(s, i):
+        return True  # "a dozen ice hockey juniors clatter from ...": the verb read as a name
     if i + 1 < s.n:
         nxt = verb_lemma(s.low[i + 1])
         return nxt in lx.INTENT_VERBS or nxt in lx.HUMAN_SUBJECT_VERBS or nxt in lx.PEOPLE_GOING_VERBS
