@@ -915,8 +915,8 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     asked_robot = reading.robot
     guided = guided_exit(reading, groups, agents)
-    index = guided_index(reading)
-    out = guided_out_by(out, index, guided, reading.groups[index].who if index is not None else None)
+    led = guided_index(reading)
+    out = guided_out_by(out, led, guided, reading.groups[led].who if led is not None else None)
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
     robot_row = _robot_row(asked_robot, robot, world, agents, _passed_groups(reading, groups, world))
