@@ -255,7 +255,7 @@ class OutcomeChecker:
                     status = UNCHECKED
                     evidence = f"{evidence}; {walking} still walking on when the run ended at {_when(self.t_end)}: " \
                                f"run it longer"
-            away = kept_away(claim, self._near.closest.get(key[0], np.inf), self.planned.robot) \
+            away = kept_away(claim, self._near.closest.get(key[0], np.full(1, np.inf)), self.planned.robot) \
                 if key[0] >= 0 and status != HOLDS else ""
             if away:  # why the reaction could not fire: the robot's task kept it away from them
                 evidence = f"{evidence}; {away}" if evidence else away

@@ -19,11 +19,11 @@ REACH = {"robot_follow": 3.0, "robot_approach": 2.5, "robot_block": 2.5, "robot_
 
 
 class Nearness:
-    """The closest the robot came to each group's members over the run (frames in time order)."""
+    """The closest the robot came to each member of each group over the run (frames in time order)."""
 
     def __init__(self, cols: dict[int, np.ndarray]) -> None:
         self.cols = cols
-        self.closest = {g: np.inf for g in cols}
+        self.closest = {g: np.full(c.size, np.inf) for g, c in cols.items()}
 
     def add(self, pos: np.ndarray, robot: np.ndarray | None) -> None:
         if robot is None:
@@ -33,24 +33,29 @@ class Nearness:
                 continue
             p = pos[:, cols]
             d = np.hypot(p[..., 0] - robot[:, 0:1], p[..., 1] - robot[:, 1:2])
-            d = d[np.isfinite(d)]
-            if d.size:
-                self.closest[g] = min(self.closest[g], float(d.min()))
+            self.closest[g] = np.fmin(self.closest[g], np.nanmin(np.where(np.isfinite(d), d, np.inf), axis=0))
 
 
-def kept_away(claim: Claim, closest: float, robot: RobotGrounding | None) -> str:
-    """The reason a reaction claim that did not hold could not fire, or "" when the robot came within reach
-    (the people then did not react, which the claim's own evidence says)."""
+def kept_away(claim: Claim, closest: np.ndarray, robot: RobotGrounding | None) -> str:
+    """The reason a reaction claim that did not hold could not fire for the members the robot never came
+    within reach of, or "" when it came within reach of all (who then did not react, which the claim's own
+    evidence says)."""
     reach = claim.distance or REACH.get(claim.kind)
-    if robot is None or reach is None or claim.kind not in REACH or not np.isfinite(closest) or closest <= reach:
+    closest = np.asarray(closest, dtype=float).reshape(-1)
+    far = closest[np.isfinite(closest)]
+    if robot is None or reach is None or claim.kind not in REACH or not far.size:
+        return ""
+    far = far[far > reach]
+    if not far.size:
         return ""
     what = f"'{robot.text}'" if robot.text else ""
     if robot.task == "follow":
-        cause = f"the robot's task ({what or 'following someone'}) kept it away from them"
+        cause = f"the robot's task ({what or 'following someone'}) kept it away from"
     elif robot.task == "wait":
-        cause = f"the robot's task ({what or 'waiting'}) kept it where it waits, away from them"
+        cause = f"the robot's task ({what or 'waiting'}) kept it where it waits, away from"
     elif robot.task == "pass" or not robot.text:
-        cause = "the robot's route (the sentence gives it no task; planning chose it) did not pass them"
+        cause = "the robot's route (the sentence gives it no task; planning chose it) did not pass"
     else:
-        cause = f"the robot's task ({what}: {robot.plan or robot.task}) kept its route away from them"
-    return f"{cause}: it came within {closest:.1f} m of them, a reaction needs {reach:g} m"
+        cause = f"the robot's task ({what}: {robot.plan or robot.task}) kept its route away from"
+    who = "them" if far.size == closest.size else f"{far.size} of them"
+    return f"{cause} {who}: it came within {float(far.min()):.1f} m of {who}, a reaction needs {reach:g} m"

@@ -66,3 +66,15 @@ def test_the_queue_glance_holds_on_the_run(tmp_path):
                        tmp_path / "b", as_the_pipeline=True)
     looks = [c for g in run.run(90.0).groups for c in g.claims if c.kind == "robot_look"]
     assert looks and all(c.status == HOLDS for c in looks), [c.evidence for c in looks]
+
+
+def test_the_cause_names_the_members_the_robot_never_came_near():
+    """"The robot follows a visitor ... while two employees glance at it": one employee had the robot within
+    8.2 m, the other never nearer than 11.7 m; the ✗ "1/2 looked" now says the follow kept it from that one."""
+    from grove_tui.analysis.robot_kept_away import kept_away
+    from grove_tui.scenario.report import Claim, RobotGrounding
+    robot = RobotGrounding("follow", "The robot follows a visitor from reception to the kitchen", ())
+    look = Claim("robot_look", "look at the robot at least once", "SurprisedNav")
+    text = kept_away(look, np.array([8.2, 11.7]), robot)
+    assert "follows a visitor" in text and "1 of them" in text and "11.7 m" in text
+    assert kept_away(look, np.array([8.2, 9.0]), robot) == ""
