@@ -68,3 +68,30 @@ def widest_gap(path: np.ndarray, points: Sequence[Point]) -> float:
         q = a + t[:, None] * ab
         worst = max(worst, float(np.hypot(q[:, 0] - x, q[:, 1] - y).min()))
     return worst
+
+
+def unplaced_note(world: object, label: str, spawn: str, reactor_zone: str | None, task: str,
+                  route: Sequence[Point]) -> str:
+    """Why people who react to the robot keep their start, as the plan shows it: the robot's task (it waits,
+    it follows someone) keeps it off their room, or its route does not come into their room, or (only then)
+    there is no free floor beside it. "No free floor beside the robot's route" was said of drivers 26 m from a
+    robot told to wait at a bus bay."""
+    try:
+        zone = getattr(world, "zone")(reactor_zone or spawn) if reactor_zone or spawn else None
+    except Exception:  # not a zone of the world: no distance to say
+        zone = None
+    polygon = getattr(zone, "polygon", None)
+    gap = None
+    if polygon is not None and route:
+        import shapely
+        line = shapely.LineString(route) if len(route) > 1 and len(set(route)) > 1 else shapely.Point(route[0])
+        gap = float(line.distance(polygon))
+    where = f" ({gap:.1f} m from {reactor_zone or spawn})" if gap is not None else ""
+    if task in ("wait", "follow"):
+        doing = "waits" if task == "wait" else "follows someone"
+        return (f"group '{label}': the robot {doing} as the sentence asks, away from them{where}; they start in "
+                f"{spawn} and react only if it comes near")
+    if gap is not None and gap > 0.5:
+        return (f"group '{label}': the robot's route does not come into {reactor_zone or spawn}{where}; they "
+                f"start in {spawn}")
+    return f"group '{label}': no free floor beside the robot's route; they start in {spawn}"

@@ -34,7 +34,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
-from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, widest_gap
+from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, unplaced_note, widest_gap
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
@@ -138,7 +138,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         notes.extend(reactor_notes)
         _at_a_pace_the_robot_keeps(post, robot_spec)
         for g in unseen:
-            notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
+            notes.append(unplaced_note(world, g.label, g.spawn, g.reactor_zone, robot_spec.task,  # what kept them
+                                       list(robot_spec.path) or [robot_spec.start, robot_spec.goal]))
     guided_for = _behind_the_guide_while_it_drives(post, robot_spec)
     # "two guards block the robot in the doorway": each holds a post where the robot passes the place
     blocker_posts = posts_for_blockers(world, grid, post.groups, post.agents, (

@@ -78,3 +78,13 @@ def test_the_cause_names_the_members_the_robot_never_came_near():
     text = kept_away(look, np.array([8.2, 11.7]), robot)
     assert "follows a visitor" in text and "1 of them" in text and "11.7 m" in text
     assert kept_away(look, np.array([8.2, 9.0]), robot) == ""
+
+
+def test_the_note_says_the_robots_wait_keeps_it_from_them_not_the_floor(tmp_path):
+    """Drivers 18 m from a robot told to wait at bay 3 were noted "no free floor beside the robot's route"."""
+    run = _plan("eval/understanding/worlds/bus_station.yaml",
+                "Six passengers queue at the ticket desk while the robot waits at bay 3 and two drivers in the rest "
+                "room look at it", tmp_path / "b")
+    notes = [n for n in run.report.repairs if "group 'driver'" in n]
+    assert any("the robot waits as the sentence asks" in n and " m from " in n for n in notes), notes
+    assert not any("no free floor" in n for n in notes), notes
