@@ -32,6 +32,7 @@ import shapely
 
 from grove_tui.analysis.arrival import Arrivals
 from grove_tui.analysis.left_run import gone_reason
+from grove_tui.analysis.robot_kept_away import Nearness, kept_away
 from grove_tui.analysis.robot_errand import StopTrack, dropoff_verdict, pickup_verdict
 from grove_tui.analysis.robot_errand import speeds as errand_speeds
 from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
@@ -192,6 +193,7 @@ class OutcomeChecker:
                 probe = _make_probe(claim, self, cols, len(group.members))
                 if probe is not None:
                     self._probes.append(((gi, ci), probe))
+        self._near = Nearness({gi: self._cols(g.members) for gi, g in enumerate(self.planned.groups)})
         if self.planned.robot is not None:
             for ci, claim in enumerate(self.planned.robot.claims):
                 probe = _make_probe(claim, self, np.zeros(0, dtype=np.int64), 0)
@@ -216,6 +218,7 @@ class OutcomeChecker:
                          None if traj.robot_vel is None else traj.robot_vel[keep])
         for _, probe in self._probes:
             probe.add(frames)
+        self._near.add(frames.pos, frames.robot)
 
     def add_rows(self, rows: np.ndarray) -> None:
         """Rows as the recorder keeps them ((R, 9): frame, t, id, x, y, vx, vy, yaw, group), whole frames."""
@@ -252,6 +255,10 @@ class OutcomeChecker:
                     status = UNCHECKED
                     evidence = f"{evidence}; {walking} still walking on when the run ended at {_when(self.t_end)}: " \
                                f"run it longer"
+            away = kept_away(claim, self._near.closest.get(key[0], np.full(1, np.inf)), self.planned.robot) \
+                if key[0] >= 0 and status != HOLDS else ""
+            if away:  # why the reaction could not fire: the robot's task kept it away from them
+                evidence = f"{evidence}; {away}" if evidence else away
             checked[key] = claim.checked(status, evidence)
         groups = []
         for gi, group in enumerate(self.planned.groups):

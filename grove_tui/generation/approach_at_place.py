@@ -27,7 +27,7 @@ import numpy as np
 import shapely
 
 from grove_tui.bt.format.document import TreeDocument, TreeElement
-from grove_tui.generation.block_at_place import PostedAgent, PostedGroup, point_post, posts_on_the_route
+from grove_tui.generation.block_at_place import PostedAgent, PostedGroup, point_post, posts_on_the_route, route_gap
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.reading import GroupReading
 from grove_tui.navigation.grid import OccupancyGrid
@@ -152,7 +152,8 @@ def posts_for_approachers(world: World, grid: OccupancyGrid, groups: Sequence[Po
         members = [a for a in agents if a.group_index == g.index]
         posts = posts_beside_the_route(world, grid, place, route, len(members))
         if posts is None:
-            notes.append(f"group '{g.label}': the robot's route does not pass {place}; they wait there and "
+            notes.append(f"group '{g.label}': the robot's route does not pass {place}"
+                         f"{route_gap(world, place, route)}; they wait there and "
                          f"approach the robot only if it comes")
             continue
         out.update({a.id: p for a, p in zip(members, posts)})

@@ -35,6 +35,7 @@ from grove_tui.world.model import Zone, World
 
 BLOCK_REACH = 5.0  # metres: the robot this near a person at their post sets the block off
 HOLD_RADIUS = 2.5  # metres from the post a blocker goes at most
+START_CLEAR = 1.5  # metres: a post nearer the robot's start is on top of the robot
 PLACE_RADIUS = HOLD_RADIUS + 1.0  # metres from a door or thing the report counts as "there"
 POST_SPACING = 0.9  # metres between the posts of a group, across the robot's way
 Point = tuple[float, float]
@@ -121,8 +122,29 @@ def posts_on_the_route(world: World, place: str, route: Sequence[Point] | None, 
     if arcs[-1] <= 1e-6:
         return None
     samples = np.array([_along(path, arcs, s) for s in np.arange(0.0, arcs[-1], 0.25)])
-    # past the robot's start: a post on top of where it starts blocks nothing
-    away = np.hypot(samples[:, 0] - path[0, 0], samples[:, 1] - path[0, 1]) > BLOCK_REACH
+    from_start = np.hypot(samples[:, 0] - path[0, 0], samples[:, 1] - path[0, 1])
+    # past the robot's start: a post on top of where it starts blocks nothing; a route that passes the place
+    # only as it sets off (the robot starts by the desk) passes it all the same, and the post is by the start
+    for clear in (BLOCK_REACH, START_CLEAR):
+        posts = _posts_past(world, place, samples, from_start > clear, count)
+        if posts is not None:
+            return posts
+    return None
+
+
+def route_gap(world: World, place: str, route: Sequence[Point] | None) -> str:
+    """How near the robot's whole route comes to `place`, in words for a note (" (it comes within 7.2 m)")."""
+    found = world.find(place)
+    point = None if isinstance(found, Zone) else _point(world, place)
+    if not route or (point is None and not isinstance(found, Zone)):
+        return ""
+    line = shapely.LineString(np.asarray(route, dtype=float)) if len(route) > 1 else shapely.Point(route[0])
+    gap = line.distance(found.polygon if isinstance(found, Zone) else shapely.Point(point))
+    return f" (its whole route comes within {gap:.1f} m of it)"
+
+
+def _posts_past(world: World, place: str, samples: np.ndarray, away: np.ndarray, count: int) -> list[Point] | None:
+    """`posts_on_the_route` on the route's samples where `away` holds."""
     found = world.find(place)
     if isinstance(found, Zone):
         inside = shapely.contains_xy(found.polygon, samples[:, 0], samples[:, 1]) & away
@@ -229,7 +251,8 @@ def posts_for_blockers(world: World, grid: OccupancyGrid, groups: Sequence[Poste
         members = [a for a in agents if a.group_index == g.index]
         posts = posts_on_the_route(world, place, route, len(members))
         if posts is None:
-            notes.append(f"group '{g.label}': the robot's route does not pass {place}; they hold it and block "
+            notes.append(f"group '{g.label}': the robot's route does not pass {place}"
+                         f"{route_gap(world, place, route)}; they hold it and block "
                          f"the robot only if it comes")
             for a in members:
                 own = post_of(a.document) if a.document is not None else None

@@ -34,6 +34,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
+from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, unplaced_note, widest_gap
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
@@ -137,7 +138,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         notes.extend(reactor_notes)
         _at_a_pace_the_robot_keeps(post, robot_spec)
         for g in unseen:
-            notes.append(f"group '{g.label}': no free floor beside the robot's route; they start in {g.spawn}")
+            notes.append(unplaced_note(world, g.label, g.spawn, g.reactor_zone, robot_spec.task,  # what kept them
+                                       list(robot_spec.path) or [robot_spec.start, robot_spec.goal]))
     guided_for = _behind_the_guide_while_it_drives(post, robot_spec)
     # "two guards block the robot in the doorway": each holds a post where the robot passes the place
     blocker_posts = posts_for_blockers(world, grid, post.groups, post.agents, (
@@ -473,8 +475,9 @@ def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people:
                       picker.free(c)] or _robot_candidates(world, grid, post, people, seed, evacuated=set())
     # past the people who react to it where the sentence puts them, else through the crowd
     placed = {g.index for g in post.groups if getattr(g, "reactor_zone", None)}
-    focus = [a.start for a in post.agents if a.id in reactors and a.group_index in placed] or list(people) or \
-        [a.start for a in post.agents]
+    staying = reacting_points(post.agents, skip=reactors)  # people reacting around a routine: where they stay
+    focus = [a.start for a in post.agents if a.id in reactors and a.group_index in placed] + staying or \
+        list(people) or [a.start for a in post.agents]
     centre = (sum(p[0] for p in focus) / len(focus), sum(p[1] for p in focus) / len(focus))
     pairs = []
     firsts = [fixed_start] if fixed_start else candidates
@@ -493,11 +496,18 @@ def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people:
         raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
     # Every pair around the formations first; through one only when no pair can go around.
     for may_cross in (False, True):
+        best: tuple[float, Point, Point, np.ndarray] | None = None
         for _, a, b in pairs[:20]:
             try:
-                return a, b, plan_path(a, b, may_cross)
+                path = plan_path(a, b, may_cross)
             except PlanningError:
                 continue
+            gap = widest_gap(path, staying)  # past everyone who reacts to it, the first pair that does
+            if gap <= PASS_NEAR:
+                return a, b, path
+            best = best if best is not None and best[0] <= gap else (gap, a, b, path)
+        if best is not None:
+            return best[1], best[2], best[3]
     raise GenerationError("no reachable start/goal pair for the robot near the scene")
 
 

@@ -37,7 +37,10 @@ from grove_tui.errors import WorldError
 from grove_tui.generation.draft import Draft, DraftGroup, DraftNode, place_at, place_of
 from grove_tui.generation.exit_post import claim_radius
 from grove_tui.generation.mutual_follow import leads_who_follow_it
-from grove_tui.generation.shared_queue import with_shared_queues
+from grove_tui.generation.shared_queue import (default_service_time, queue_service_times, service_time_of,
+                                               one_service_time_per_queue, with_drafted_service_time,
+                                               with_shared_queues)
+from grove_tui.generation.guided_claims import guided_out_by
 from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.queue_delay import wait_before_queuing
@@ -269,7 +272,7 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
                                    PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader, guided))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
-    return _behind_their_leader(_at_the_followers_pace(out, reading), world)
+    return one_service_time_per_queue(_behind_their_leader(_at_the_followers_pace(out, reading), world))
 
 
 GUIDED_PLACEHOLDER = 60.0  # seconds behind the robot until planning knows its drive (guided.guided_seconds)
@@ -401,7 +404,7 @@ def honest_tree(tree: DraftNode, group: GroupReading, world: World, notes: list[
     """The plain tree for the reading, with what the model wrote after doing it kept only when it is a
     pause, a look or wandering where they arrived (returned in words, as "added"). Everything else the
     model wrote that the sentence does not ask for is dropped, with a note."""
-    core = tree_for(group, world, evacuation_field)
+    core = with_drafted_service_time(tree_for(group, world, evacuation_field), tree)  # the model's service time
     if is_idle(tree):
         notes.append(f"group '{label}': the model's tree had no action ({_kinds(tree)}); {group.intent} "
                      f"as the prompt says")
@@ -912,6 +915,8 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     asked_robot = reading.robot
     guided = guided_exit(reading, groups, agents)
+    led = guided_index(reading)
+    out = guided_out_by(out, led, guided, reading.groups[led].who if led is not None else None)
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
     robot_row = _robot_row(asked_robot, robot, world, agents, _passed_groups(reading, groups, world))
@@ -927,7 +932,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                                                  1.3 * seconds + 10.0),))
     if robot_row is not None:
         questions += robot_row.unsure
-    out = with_shared_queues(out)  # a queue shared with other groups: its claim waits for them too
+    out = with_shared_queues(out, queue_service_times(g.tree for g in groups))  # a shared queue waits for them too
     return with_run_length(GroundingReport(reading.prompt, tuple(out), tuple(dict.fromkeys(unhonoured)),
                                            tuple(repairs), tuple(reading.corrections), robot_row,
                                            tuple(dict.fromkeys(questions))))
@@ -1058,8 +1063,8 @@ def _group_claims(r: GroupReading, g: PlannedGroup, agents: Sequence[PlannedAgen
         if service is None:
             claims.append(Claim("queue", place or "-", "no queue in the trees", FAILS, "the trees never queue"))
         else:
-            service_time = next((float(node.ports.get("service_time", 10.0)) for node in g.tree.walk()
-                                 if node.node == "Queue"), 10.0)
+            service_time = max((service_time_of(node) for node in g.tree.walk() if node.node == "Queue"),
+                               default=default_service_time())
             delay = wait_before_queuing(r, service)
             if delay and r.start:
                 # "wait by the kiosk for a minute, then queue": the wait where they start, then joins after it

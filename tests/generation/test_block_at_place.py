@@ -88,3 +88,24 @@ def test_the_export_knows_the_post_by_its_goal_id(steward, tmp_path):
     check = next(e for e in read_tree(xml, "x").nodes() if e.id == "IsAtPosition")
     goal = goals[int(check.get("goal_id"))]
     assert math.dist((goal["x"], goal["y"]), post) < 0.01
+
+
+DESK = "The receptionist at the reception desk blocks the robot as it leaves reception for the boardroom"
+
+
+def test_a_robot_that_sets_off_by_the_desk_passes_it_and_is_blocked_there(tmp_path):
+    """The robot starts by the reception desk: its route passes the desk in its first metres. The check
+    skipped the route's first 5 m, so the report noted "the robot's route does not pass reception_desk",
+    which the run contradicts, and the receptionist stayed behind the desk. Passing is measured on the
+    whole route: the receptionist holds a post on it and the run shows the block."""
+    world = load_world("worlds/office.yaml")
+    run = plan_by_hand(world, "normal", DESK, (DraftGroup("receptionist", 1, "reception", DraftNode("BlockRobot", {})),),
+                       tmp_path / "b")
+    assert not any("does not pass reception_desk" in n for n in run.report.repairs), run.report.repairs
+    assert run.op.robot is not None
+    start = run.op.robot.path[0]
+    desk = world.find("reception_desk").interaction_point
+    assert math.dist(start, desk) < 5.0  # the robot does set off by the desk
+    checked = run.run(40.0)
+    block = next(c for c in checked.groups[0].claims if c.kind == "robot_block")
+    assert block.status == "holds", block.evidence

@@ -63,3 +63,24 @@ def test_the_people_not_guided_still_evacuate_on_their_own(guided_run):
     trees = [g for g in run.op.trees.values() if "ApproachRobot" in {n.id for n in g.nodes()}]
     guided_members = set(run.report.groups[0].members)
     assert len(trees) == len(guided_members)  # only the guided follow the robot
+
+
+def test_the_guided_and_their_guide_end_at_one_exit(guided_run):
+    """The robot and the people it guides end at one place, in the trees, the plan and the claims: the
+    group's evacuation claim asks for the robot's exit alone (not "any exit"), and the run shows them out
+    through it."""
+    run, checked = guided_run
+    assert checked.robot is not None
+    reach = next(c for c in checked.robot.claims if c.kind == "robot_reach" and c.place)
+    out = _claim(checked.groups[0], "evacuate")
+    assert out.exits == (reach.place,), (out.asked, reach.place)
+    assert reach.place in out.asked
+    members = set(run.report.groups[0].members)
+    exits = {n.get("exit") for agent, doc in run.op.trees.items() for n in doc.nodes()
+             if n.id == "FollowVelocityField" and _agent_id(agent) in members}
+    assert exits <= {reach.place}, exits
+    assert out.status == HOLDS and f"through {reach.place}" in out.evidence, out.evidence
+
+
+def _agent_id(key) -> int:
+    return int(str(key).rsplit("_", 1)[-1].split(".")[0])
