@@ -16,8 +16,11 @@ from collections.abc import Sequence
 from typing import Protocol
 
 import numpy as np
+import shapely
 
+from grove_tui.errors import WorldError
 from grove_tui.generation.draft import DraftNode
+from grove_tui.world.model import World
 
 Point = tuple[float, float]
 
@@ -70,20 +73,18 @@ def widest_gap(path: np.ndarray, points: Sequence[Point]) -> float:
     return worst
 
 
-def unplaced_note(world: object, label: str, spawn: str, reactor_zone: str | None, task: str,
+def unplaced_note(world: World, label: str, spawn: str, reactor_zone: str | None, task: str,
                   route: Sequence[Point]) -> str:
     """Why people who react to the robot keep their start, as the plan shows it: the robot's task (it waits,
     it follows someone) keeps it off their room, or its route does not come into their room, or (only then)
     there is no free floor beside it. "No free floor beside the robot's route" was said of drivers 26 m from a
     robot told to wait at a bus bay."""
     try:
-        zone = getattr(world, "zone")(reactor_zone or spawn) if reactor_zone or spawn else None
-    except Exception:  # not a zone of the world: no distance to say
-        zone = None
-    polygon = getattr(zone, "polygon", None)
+        polygon = world.zone(reactor_zone or spawn).polygon if reactor_zone or spawn else None
+    except WorldError:  # not a zone of the world (a door, an entity): no distance to say
+        polygon = None
     gap = None
     if polygon is not None and route:
-        import shapely
         line = shapely.LineString(route) if len(route) > 1 and len(set(route)) > 1 else shapely.Point(route[0])
         gap = float(line.distance(polygon))
     where = f" ({gap:.1f} m from {reactor_zone or spawn})" if gap is not None else ""
