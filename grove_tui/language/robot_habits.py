@@ -1,7 +1,7 @@
 """The robot's round said as a habit (round 37): a verb of keeping on, then a verb of going round
 ("the robot keeps circling the showroom floor", "keeps on looping round the food court", "carries on
 touring the galleries", "spends the afternoon circling the lobby", "goes on prowling the concourse"):
-the verb of aspect says only that it goes on, the verb it governs says the task, a patrol."""
+the verb of aspect says only that it goes on, the verb it governs says the task, a patrol (or a wait: "keeps waiting by the door")."""
 
 from __future__ import annotations
 
@@ -15,15 +15,18 @@ _BETWEEN = frozenset("on up just endlessly constantly forever always steadily sl
                      "entire day morning afternoon evening night shift hour hours time".split())
 
 
-def keeps_going_round(s: Sentence, verb: int | None) -> bool:
-    """Whether the robot's verb at `verb` is one of habit that governs, a few words on, an "-ing" verb
-    of going round ("keeps circling", "keeps on looping", "spends the day patrolling")."""
+def habit_task(s: Sentence, verb: int | None) -> str | None:
+    """The task a robot's verb of habit governs, a few words on, by its "-ing" verb: going round
+    ("keeps circling", "keeps on looping", "spends the day patrolling": patrol) or staying ("keeps
+    waiting by the door": wait); None for any other verb."""
     if verb is None or s.verb(verb) not in _HABIT_VERBS:
-        return False
+        return None
     k = verb + 1
     while k < min(s.n, verb + 5) and s.low[k] in _BETWEEN:
         k += 1
     if k >= s.n or not s.low[k].endswith("ing") or (s.verb(verb) == "go" and k == verb + 1):
-        return False  # "goes circling": no habit said; "goes on circling" is one
+        return None  # "goes circling": no habit said; "goes on circling" is one
     v = s.verb(k)
-    return v in lx.ROBOT_PATROL_VERBS or lx.INTENT_VERBS.get(v) == "wander"
+    if v in lx.ROBOT_PATROL_VERBS or lx.INTENT_VERBS.get(v) == "wander":
+        return "patrol"
+    return "wait" if v in lx.ROBOT_WAIT_VERBS and s.verb(verb) != "spend" else None
