@@ -87,6 +87,8 @@ def test_a_dog_near_the_robot_is_no_following(read):
     assert g.robot_interaction == "look"
     (g,) = read("mall", "A man walks his dog past the robot.").groups
     assert g.robot_interaction != "follow"
+    (g,) = read("residential", "The family dog-sitter stands in front of the robot in the kitchen.").groups
+    assert g.robot_interaction == "block"
 
 
 # ---- 4. a feeling about the robot said outright wins over the verb's own ---------------------------------
