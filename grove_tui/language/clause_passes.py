@@ -19,9 +19,12 @@ from dataclasses import replace
 
 from grove_tui.language.activity_place_zones import activity_place_zones
 from grove_tui.language.carried_errands import carried_errands
+from grove_tui.language.coming_over import coming_over_after_seeing
 from grove_tui.language.cleared_passive import cleared_away
 from grove_tui.language.crowding_round import crowding_round
+from grove_tui.language.dogged_steps import dogging_the_robot
 from grove_tui.language.feeling_adjectives import coloured_by_feeling
+from grove_tui.language.feeling_phrases import feelings_said_outright
 from grove_tui.language.leisure_places import leisure_places
 from grove_tui.language.model import PromptReading
 from grove_tui.language.pacing_between import pacing_between
@@ -38,6 +41,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, pacing_between(index, reading.groups)))))
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
     groups = surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))
+    groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)

@@ -399,7 +399,7 @@ for _interaction, _verbs in {
     "look": "look stare watch glance gaze notice observe eye peer see spot regard study film photograph wave gape gawp",
     "approach": "approach greet inspect investigate touch examine check poke gather tug pat stroke hug prod nudge tap "
                 "ask talk chat speak question consult query hail thank crowd surround encircle swarm mob",
-    "follow": "follow trail chase shadow tail pursue",
+    "follow": "follow trail chase shadow tail pursue stalk",
     "avoid": "avoid dodge evade flee escape sidestep shun fear shrink recoil flinch cower hide retreat duck "
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "

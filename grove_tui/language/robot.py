@@ -22,6 +22,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.robot_asides import after_aside
+from grove_tui.language.robot_habits import habit_task
 from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
@@ -261,6 +262,8 @@ class RobotClauses:
             placed = placed or keeps_post(s, rc.verb) or stays_so(s, rc.verb)  # "holds (its) position by the stairs"
             kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
             kind = "cross" if kind == "wait" and shows_the_way(s, rc.verb, rc.tokens) else kind  # "shows them to gate 2"
+            if kind in ("cross", "wait", None) and (habit := habit_task(s, rc.verb)) is not None:
+                kind = habit  # "keeps circling the showroom floor": the habit of going round there
             if kind in ("cross", None) and to_and_fro(s, rc.verb, rc.tokens):
                 kind = "patrol"  # "goes up and down the west mall": it keeps going round there
             if kind is None:

@@ -1,0 +1,39 @@
+"""Coming over to the robot after seeing it (round 37): "spot the robot by the turntable and hurry
+across, dying to see what it does", "see the robot and rush over, eager to find out what it is", "catch
+sight of it and dash across to get a closer look". Seeing the robot reads a look; coming over, with no
+place to go to but the robot, goes further: approaching it (Curious)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import replace
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.model import GroupReading
+from grove_tui.language.tokens import verb_lemma
+
+# Verbs of hurrying that the walking lists may lack ("scamper", "dash", "bound").
+_HURRYING = frozenset("run rush hurry dash race scamper scurry scuttle trot toddle jog sprint bound skip hop "
+                      "stride march wander stroll amble saunter mosey sidle come waddle totter shuffle hare "
+                      "zip zoom nip pop".split())
+_COMING_OVER = re.compile(
+    r"\b(?:robot|it)\b[^,.;:!?]*?\b(?:and|then|before)\s+(?:then\s+|quickly\s+|promptly\s+|eagerly\s+|excitedly\s+)?"
+    r"([a-z]+)\s+(?:straight\s+|right\s+)?(?:over|across|up)\b"
+    r"(?=\s*(?:$|[,.;!]|and\b|to\s+(?:it\b|the\s+robot\b|(?!the\b|a\b|an\b|his\b|her\b|their\b|its\b)[a-z]+\b)))", re.I)
+
+
+def _comes_over(text: str) -> bool:
+    m = _COMING_OVER.search(text)
+    if m is None:
+        return False
+    v = verb_lemma(m.group(1))
+    return v in _HURRYING or lx.INTENT_VERBS.get(v) in ("walk", "wander")
+
+
+def coming_over_after_seeing(prompt: str, groups: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
+    """The groups that look at the robot and then come over to it, read as approaching it."""
+    reacting = [g for g in groups if g.robot_interaction is not None]
+    return tuple(replace(g, robot_interaction="approach", robot_reaction="Curious")
+                 if g.robot_interaction == "look" and g.robot_reaction == "Surprised"
+                 and _comes_over(g.text or (prompt if reacting == [g] else "")) else g for g in groups)
