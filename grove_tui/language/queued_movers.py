@@ -32,5 +32,8 @@ def queued_movers(index: PlaceIndex, groups: Sequence[GroupReading]) -> tuple[Gr
             going = _GOING.search(m.group("rest"))
             to = place_named(index, going.group("place").split()) if going is not None else None
             g = replace(g, start=g.destination, destination=to if to != g.destination else None)
+        elif g.intent == "queue" and g.location is not None and g.destination not in (None, g.location) and \
+                g.start is None and _QUEUED.search(g.text) is not None and queue_of(index, g.location) == g.location:
+            g = replace(g, intent="walk", start=g.location, location=None)  # "lined up for it head to the café"
         out.append(g)
     return tuple(out)
