@@ -31,6 +31,8 @@ from grove_tui.language.pacing_between import pacing_between
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.problem_places import problem_places
 from grove_tui.language.purposed_places import purposed_places
+from grove_tui.language.queued_movers import queued_movers
+from grove_tui.language.its_people import its_people
 from grove_tui.language.searched_unknown import searched_unknown
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
 from grove_tui.language.surprised_at import occasions, surprised_at
@@ -40,7 +42,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     """The reading with the clause passes applied, in the order above."""
     groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, pacing_between(index, reading.groups)))))
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
-    groups = surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))
+    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))))
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)

@@ -22,7 +22,7 @@ from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.particle_ends import place_end
 from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
-from grove_tui.language.place_search import searched_for
+from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -236,7 +236,7 @@ class Clauses:
         # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
         # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
         right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
-            sets_off_for(s, i) or searched_for(s, i)
+            sets_off_for(s, i) or searched_or_queued_for(s, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
             refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)

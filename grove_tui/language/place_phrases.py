@@ -20,7 +20,7 @@ from grove_tui.language.place_entrance import main_entrance
 from grove_tui.language.place_kinds import absent_kind, kind_continues, tier_place
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
-from grove_tui.language.place_pronouns import IT_PREPOSITIONS, referred_back
+from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
@@ -96,7 +96,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
         if is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
-        if k < s.n and (low[k] in ("where", "wherever", "upstairs", "downstairs") or low[k] == "it" and prep in IT_PREPOSITIONS):
+        if k < s.n and (low[k] in ("where", "wherever", "upstairs", "downstairs") or may_be_place(s, k, prep, at)):
             return self.where_place(k, prep, at, mentioned)
         elided = k < s.n and (low[k] in ("hers", "theirs", "ours", "mine") or low[k] == "his" and (
             k + 1 >= s.n or s.is_punct(k + 1) or low[k + 1] in lx.CLAUSE_STARTERS))
@@ -233,7 +233,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
 
     def where_place(self, k: int, prep: str, at: int, mentioned: bool) -> Place | None:
         """"to where you get your bags back", "wait where the trains come in", "in it": the place so said."""
-        found = self.where_clause(k) if self.s.low[k] in ("where", "wherever") else referred_back(self, k, at) \
+        found = self.where_clause(k) if self.s.low[k] in ("where", "wherever") else pronoun_place(self, k, prep, at) \
             if self.s.low[k] == "it" else stairs(self.s.index, k)  # "to where you go", "in it", "upstairs"
         if found is None:
             return None

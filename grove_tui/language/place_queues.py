@@ -31,7 +31,7 @@ def queue_of(index: PlaceIndex, zone: str) -> str | None:
     return queues[0] if len(queues) == 1 else None
 
 
-def _queued_for(s: Sentence, at: int, end: int) -> bool:
+def queued_for(s: Sentence, at: int, end: int) -> bool:
     """Whether the "for" at `at` follows a verb of queueing ("lined up for", "queuing patiently for"),
     or the phrase up to `end` ends in a word for the queue itself ("the Viper line")."""
     if end - 1 > at and s.low[end - 1] in _QUEUE_HEADS:
@@ -46,7 +46,7 @@ def queue_zone_for(s: Sentence, at: int, end: int, match: PlaceMatch) -> tuple[P
     """The queue zone of the place queued for after the "for" at `at`, with the reason; None otherwise."""
     if at >= s.n or s.low[at] != "for":
         return None
-    if not _queued_for(s, at, end):
+    if not queued_for(s, at, end):
         return None
     queue = queue_of(s.index, match.zone)
     if queue is None or queue == match.name:
