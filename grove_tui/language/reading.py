@@ -48,6 +48,7 @@ from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
+from grove_tui.language.queue_lengths import with_queue_lengths
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
@@ -134,6 +135,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_counted_collectives(with_scale_figures(text))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100
+    text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
