@@ -162,7 +162,9 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
-    active = to_active(text, words) or late_agents_to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
+    active = to_active(text, words)
+    late = active is None and (active := late_agents_to_active(text, words)) is not None  # "is wheeled up to ward B by a porter": the taker first
+    # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
         text, words = active, as_singular_verbs(as_verbs(parse(active)))
     corrected, corrections = correct_places(text, words, index)
@@ -170,7 +172,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
         text, words = corrected, as_singular_verbs(as_verbs(parse(corrected)))
     reading = _read(Sentence(text, words, index, int(seed)))
-    if active is not None:  # the taken before their taker, as the sentence says them
+    if active is not None and not late:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
