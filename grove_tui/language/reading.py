@@ -48,6 +48,7 @@ from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
+from grove_tui.language.queue_lengths import with_queue_lengths
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
@@ -88,6 +89,7 @@ from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, 
 from grove_tui.language.parser import parse
 from grove_tui.language.passive_escort import to_active
 from grove_tui.language.passive_order import in_said_order
+from grove_tui.language.passive_late_agents import late_agents_to_active
 from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
@@ -134,6 +136,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
     text = with_counted_collectives(with_scale_figures(text))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100
+    text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
@@ -159,7 +162,9 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
-    active = to_active(text, words)  # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
+    active = to_active(text, words)
+    late = active is None and (active := late_agents_to_active(text, words)) is not None  # "is wheeled up to ward B by a porter": the taker first
+    # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
         text, words = active, as_singular_verbs(as_verbs(parse(active)))
     corrected, corrections = correct_places(text, words, index)
@@ -167,7 +172,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
         text, words = corrected, as_singular_verbs(as_verbs(parse(corrected)))
     reading = _read(Sentence(text, words, index, int(seed)))
-    if active is not None:  # the taken before their taker, as the sentence says them
+    if active is not None and not late:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
