@@ -1,6 +1,8 @@
 """Group-count classes of round 37, each with sentences of its own over at least two worlds (none from
 the understanding sets): the part of a whole said first that moves off by a verb of going the parser
-takes for a noun the number counts ("Of the ten members at the table, 3 duck into the phone booths")."""
+takes for a noun the number counts ("Of the ten members at the table, 3 duck into the phone booths"); a list
+item whose verb the parser takes for a noun after its plural subject or "a couple" ("..., and a couple
+bowl on lane 3", "a pair of guests paddle in the indoor pool")."""
 
 from __future__ import annotations
 
@@ -28,6 +30,23 @@ def test_a_part_moving_off_by_a_noun_like_verb_is_a_group(read, world, prompt, w
     assert (go.intent, go.start, go.destination) == ("walk", start, destination)
 
 
+# ---- 2. a list item's verb taken for a noun after its plural or "a couple" -----------------------------
+
+@pytest.mark.parametrize("world,prompt,n,index,location", [
+    ("bowling_alley", "Two staff mop the concourse, and a couple bowl on lane 3.", 2, 1, "bumper_lanes"),
+    ("hotel", "A porter waits in the lobby, a pair of guests paddle in the indoor pool, and a cleaner hoovers the "
+     "corridor.", 3, 1, "swimming_pool"),
+    ("mall", "A guard stands at the main entrance, and a couple dance by the cinema.", 2, 1, "cinema_lobby"),
+    ("mall", "Two cleaners mop the food court and a couple picnic by the fountain.", 2, 1, "fountain"),
+    ("hotel", "The receptionist yawns behind the desk and a couple smoke outside the main entrance.", 2, 1,
+     "main_entrance"),
+])
+def test_a_list_items_noun_like_verb_keeps_its_people(read, world, prompt, n, index, location):
+    groups = read(world, prompt).groups
+    assert len(groups) == n
+    assert (groups[index].count.value, groups[index].location) == (2, location)
+
+
 # ---- guards: readings that must stay as they were --------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt,n", [
@@ -35,6 +54,11 @@ def test_a_part_moving_off_by_a_noun_like_verb_is_a_group(read, world, prompt, w
     ("mall", "Three shoppers duck into the cinema.", 1),
     ("aquarium", "Ten fish swim in the shark tunnel while two visitors watch.", 1),
     ("hospital", "A nurse wheels a patient from room 4 into the lift lobby.", 2),
+    ("swimming_baths", "A lifeguard sits by the poolside, a pair of toddlers paddle in the learner pool, and two "
+     "mums chat in the café.", 3),
+    ("hospital", "A nurse waits at reception, a couple of visitors queue in the cafeteria, and a porter walks to "
+     "ward B.", 3),
+    ("mall", "Two guards stand by the main entrance and a couple bicker outside the cinema.", 2),
 ])
 def test_group_numbers_stay(read, world, prompt, n):
     assert len(read(world, prompt).groups) == n
