@@ -47,6 +47,23 @@ def test_a_list_items_noun_like_verb_keeps_its_people(read, world, prompt, n, in
     assert (groups[index].count.value, groups[index].location) == (2, location)
 
 
+# ---- 3. people who arrive only after a fronted "Before ... arrive," are no group ----------------------
+
+@pytest.mark.parametrize("world,prompt,count,start,destination", [
+    ("hospital", "Before the first patient arrives, a nurse walks from reception to ward B.", 1, "reception_desk",
+     "ward_b"),
+    ("office", "Before the boss gets in, Dave nips from the kitchen to meeting room 2.", 1, "kitchen",
+     "meeting_room_2"),
+    ("museum", "Before the school party turns up, a curator walks from the cafe to the ancient Egypt gallery.", 1,
+     "cafe", "egyptian_gallery"),
+    ("mall", "Before the shoppers arrive, two cleaners walk from the food court to the main entrance.", 2,
+     "food_court", "main_entrance"),
+])
+def test_people_yet_to_arrive_are_no_group(read, world, prompt, count, start, destination):
+    (g,) = read(world, prompt).groups
+    assert (g.count.value, g.start, g.destination) == (count, start, destination)
+
+
 # ---- guards: readings that must stay as they were --------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt,n", [
@@ -59,6 +76,8 @@ def test_a_list_items_noun_like_verb_keeps_its_people(read, world, prompt, n, in
     ("hospital", "A nurse waits at reception, a couple of visitors queue in the cafeteria, and a porter walks to "
      "ward B.", 3),
     ("mall", "Two guards stand by the main entrance and a couple bicker outside the cinema.", 2),
+    ("dental_clinic", "Until the dentist arrives, two patients wait in reception.", 1),
+    ("mall", "After the shoppers arrive, two cleaners walk to the main entrance.", 2),
 ])
 def test_group_numbers_stay(read, world, prompt, n):
     assert len(read(world, prompt).groups) == n
