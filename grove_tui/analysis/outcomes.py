@@ -31,6 +31,7 @@ import numpy as np
 import shapely
 
 from grove_tui.analysis.arrival import Arrivals
+from grove_tui.analysis.kept_up import ArrivalWith, follow_distance
 from grove_tui.analysis.left_run import gone_reason
 from grove_tui.analysis.robot_kept_away import Nearness, kept_away
 from grove_tui.analysis.robot_errand import StopTrack, dropoff_verdict, pickup_verdict
@@ -855,12 +856,20 @@ class _RobotFollowProbe(_RobotProbe):
         self.moving = np.zeros(m)  # robot-moving frames since then
         self.near = np.zeros(m)
         self.seen_robot = False
+        # kept up with it: the group's reach stretched by its size, and at its goal with it (kept_up.py)
+        self.reach = follow_distance(self.claim.distance or 3.0, m)
+        robot = checker.scenario.robot
+        self.arrival = ArrivalWith(robot.goal if robot is not None else None,
+                                   robot.start if robot is not None else None, m, self.reach)
+        self.behind: list[np.ndarray] = []  # the nearest member's distance while the robot drives
 
     def add(self, f: _Frames) -> None:
         d = self.robot_distances(f)
         if d is None:
             return
-        within = np.isfinite(d) & (d <= (self.claim.distance or 3.0))
+        if f.robot is not None:
+            self.arrival.add(f.t, f.robot, f.pos[:, self.cols])
+        within = np.isfinite(d) & (d <= self.reach)
         if 1 < self.cols.size <= CHAIN_MAX:
             # eight tourists behind a guiding robot walk as a crowd, the last ones 5 m back but with the others
             pos = f.pos[:, self.cols]
@@ -871,6 +880,9 @@ class _RobotFollowProbe(_RobotProbe):
         counted = (f.t[:, None] >= self.since[None, :]) & (speed[:, None] > ROBOT_MOVING) & np.isfinite(d)
         self.moving += counted.sum(axis=0)
         self.near += (counted & within).sum(axis=0)
+        driving = (speed > ROBOT_MOVING) & (f.t >= self.since.min())
+        if driving.any():
+            self.behind.append(np.nanmin(np.where(np.isfinite(d[driving]), d[driving], np.inf), axis=1))
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         if not self.seen_robot:
@@ -880,17 +892,28 @@ class _RobotFollowProbe(_RobotProbe):
         share = np.divide(self.near, self.moving, out=np.zeros_like(self.near), where=self.moving > 0)
         enough = self.moving * checker.sample_dt >= 3.0
         ok = reached & enough & (share >= FOLLOW_SHARE)
-        d = self.claim.distance or 3.0
+        d = self.reach
         text = f"{int(ok.sum())}/{n} followed it within {d:g} m" + \
             (f" or {CHAIN_LINK:g} m of one who is" if 1 < self.cols.size <= CHAIN_MAX else "")
         if reached.any():
             text += f" ({float(share[reached].mean()):.0%} of its moving time since reaching it, first at " \
                     f"{_when(float(self.since[reached].min()))})"
+            behind = np.concatenate(self.behind) if self.behind else np.zeros(0)
+            behind = behind[np.isfinite(behind)]
+            if behind.size:
+                low, mid, high = np.percentile(behind, [10, 50, 90])
+                text += f"; the nearest {mid:.1f} m behind it ({low:.1f}-{high:.1f} m) while it drove"
         else:
             text = f"0/{n} came within {d:g} m of the robot"
         if reached.any() and not enough[reached].any():
             return UNCHECKED, text + "; the robot hardly moved after they reached it"
-        return (HOLDS if int(ok.sum()) >= _need(self.claim, n) else FAILS), text
+        kept = int(ok.sum()) >= _need(self.claim, n)
+        arrived, how = self.arrival.judged(_need(self.claim, n)) if kept else (None, "")
+        if how:
+            text += "; " + how
+        if kept and arrived is False:
+            return FAILS, text
+        return (HOLDS if kept else FAILS), text
 
 
 class _RobotApproachProbe(_RobotProbe):
@@ -1162,6 +1185,8 @@ class _RobotPlaceProbe(_Probe):
     """robot_reach / robot_via: the robot at a place at some time; robot_stay: there nearly all the time
     (with asked seconds, nearly all of them from its arrival, and the run must cover them)."""
 
+    from_elsewhere = True  # a robot_via counts once it came to the place from elsewhere
+
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
         self.first = math.inf
@@ -1179,8 +1204,10 @@ class _RobotPlaceProbe(_Probe):
         if self.claim.kind != "robot_stay" and math.isinf(self.first):
             self.trail.add(f.t, f.robot[:, None, :2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
-        if self.claim.kind == "robot_reach" and self.claim.needs_seconds:
-            # a drive there, not its start ("start in ..." needs no time): arriving from elsewhere (arrival)
+        if self.claim.kind == "robot_reach" and self.claim.needs_seconds or \
+                self.claim.kind == "robot_via" and self.from_elsewhere:
+            # a drive there, not its start ("start in ..." needs no time): arriving from elsewhere (arrival);
+            # "passes the desk" too: setting off at the desk is not passing it
             inside = self.arrivals.arrived(inside[:, None], np.ones((inside.size, 1), dtype=bool))[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])
@@ -1199,7 +1226,7 @@ class _RobotPlaceProbe(_Probe):
             return self._stay()
         verb = "passed through" if self.claim.kind == "robot_via" else "reached"
         if math.isinf(self.first):
-            if verb == "reached" and self.arrivals.started_there():
+            if self.arrivals.started_there():
                 return FAILS, f"it started at {self.where()} and never came to it from elsewhere"
             return FAILS, f"never {verb.split()[0]} {self.where()}" if verb == "reached" else \
                 f"never passed through {self.where()}"
@@ -1234,6 +1261,8 @@ class _RobotCrossProbe(_RobotPlaceProbe):
     begins at the zone's edge (it came in, or set off by a wall) and goes a good way across (half the zone's
     width, out of it or to its goal inside: "crosses the hall to the information desk"); setting off from
     the middle and driving out by the nearest door is half a crossing."""
+
+    from_elsewhere = False  # it may set off by a wall inside the zone: the crossing is judged from its edge
 
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)

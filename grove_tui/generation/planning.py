@@ -26,6 +26,7 @@ from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation import approach_at_place
 from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
 from grove_tui.generation.routine_rooms import rooms_of_routines
+from grove_tui.generation.passed_spot import ends_off_the_spot
 from grove_tui.generation.crossing import crossing_goal, crossing_start
 from grove_tui.generation.formations import (
     PASSING_MARGIN,
@@ -385,6 +386,10 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
         start = picker.pick(before or asked.via[0], towards=None, away_from=goal)
         if before is None and task == "cross" and goal is not None and not _is_spot(world, asked.via[0]):
             start = crossing_start(world, picker, world.zone_of_place(asked.via[0]) or "", goal) or start
+        if _is_spot(world, asked.via[0]) and before is None:
+            # "passes the desk": it sets off away from the desk and ends on its far side (passed_spot.py)
+            start, goal = ends_off_the_spot(world, picker, _place_point(world, grid, asked.via[0]), start, goal)
+            assert start is not None
     elif task == "follow" and follows:
         rows = [a.start for a in post.agents if a.id in follows]
         centre = (sum(p[0] for p in rows) / len(rows), sum(p[1] for p in rows) / len(rows))

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 from grove_tui.crowd.leaves.hunav import ROBOT_REACTION_DEFAULTS, ROBOT_REACTIONS
+from grove_tui.generation.picked_places import picked_questions
 from grove_tui.generation.approach_at_place import approach_place, approaching_at, at_the_approached_place
 from grove_tui.generation.block_at_place import at_the_blocked_place, blocking_at
 from grove_tui.bt.format.manifest import NODES
@@ -889,7 +890,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     questions: list[str] = []
     for index, r in enumerate(reading.groups):
         g = by_reading.get(index)
-        unsure = tuple(question(r.who, r, c) for c in r.confidence if c.unsure)
+        unsure = tuple(question(r.who, r, c) for c in r.confidence if c.unsure) + picked_questions(r.who, r)
         questions += unsure
         if g is None:
             if counts.get(index, 0) > 0:
@@ -1319,7 +1320,8 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
                 f"{robot.goal[1]:.1f}), {length:.0f} m")
     if asked is None:
         return RobotGrounding("pass", "", (), plan + " (the sentence asks nothing of it)")
-    unsure = tuple(question("the robot", asked, c) for c in asked.confidence if c.unsure)
+    unsure = tuple(question("the robot", asked, c) for c in asked.confidence if c.unsure) + \
+        picked_questions("the robot", asked)
     claims: list[Claim] = []
     errand = robot_errand(asked) if robot.stops or task == "cross" else None
     if errand is not None and (robot.stops or errand.pickup is None):  # to the pick-up first, then the drop-off

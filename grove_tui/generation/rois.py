@@ -19,6 +19,7 @@ from dataclasses import dataclass, field, replace
 from typing import TypeVar
 
 from grove_tui.errors import PromptError
+from grove_tui.generation.picked_places import model_pick
 from grove_tui.generation.presets import Preset
 from grove_tui.language.model import FieldConfidence, GroupReading, PromptReading, RobotReading
 from grove_tui.llm.grammar import schema_to_gbnf
@@ -337,8 +338,8 @@ Subject = TypeVar("Subject", GroupReading, RobotReading)
 
 def _set_place(subject: Subject, name: str, old: str, new: str) -> Subject:
     """The subject with its place field `name` set to `new` (in place of `old`), and sure of it."""
-    confidence = tuple(c if c.field != name else FieldConfidence(name, 1.0, f"{c.reason}; the roi model chose {new}")
-                       for c in subject.confidence)
+    # the model's pick is what the scenario uses, but the places it chose among still fit (picked_places.py)
+    confidence = tuple(c if c.field != name else model_pick(c, new, old) for c in subject.confidence)
     if name == "via":
         return replace(subject, via=tuple(new if v == old else v for v in subject.via), confidence=confidence)
     if name == "start":
