@@ -22,7 +22,7 @@ _RELATIVES = frozenset({"who", "whom", "that", "whose"})
 _NOT_PEOPLE = frozenset("""afternoon morning evening night day hour minute moment time week weekend session shift
 lift elevator door doors alarm light lights queue line sign screen floor room area hall place bell phone
 noise smell smoke fire water rain sun announcement delivery train bus flight plane van car trolley
-event meeting show film tour class lesson talk match game sale""".split())
+event meeting show film tour class lesson talk match game sale gate barrier turnstile window""".split()) | lx.PASSAGE_WORDS
 
 
 def _starts(s: Sentence) -> list[int]:
