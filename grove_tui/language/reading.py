@@ -111,6 +111,7 @@ from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_passes import with_clause_passes
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
+from grove_tui.language.unnamed_counts import counted_unnamed
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -204,7 +205,7 @@ def _read(s: Sentence) -> PromptReading:
         groups.notes.append("no group of people found in the prompt")
         problems.append(NOBODY)
     else:
-        read = (groups.unnamed(robot_tokens),)
+        read = (counted_unnamed(s, groups.unnamed(robot_tokens), robot_tokens),)  # "a first-time donor lies ..."
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
