@@ -47,6 +47,21 @@ def test_the_robots_trip_after_people_it_passes_is_a_crossing(read, world, promp
     assert via in robot.via
 
 
+@pytest.mark.parametrize("world,prompt,intent,location", [
+    ("mall", "The robot threads through a crowd of teenagers hanging around the fountain, headed for the cinema.",
+     "wait", "fountain"),
+    ("office", "The robot slips between two engineers arguing at the kitchen, heading for meeting room 2.", "converse",
+     "kitchen"),
+    ("airport", "The robot zigzags through a gaggle of backpackers loitering at the information desk, en route to "
+     "gate B1.", "wait", "information_desk"),
+    ("hospital", "The robot edges past two porters chatting in the cafeteria, heading for ward B.", "converse",
+     "cafeteria"),
+])
+def test_the_people_passed_on_the_robots_trip_stay_where_they_are(read, world, prompt, intent, location):
+    (g,) = read(world, prompt).groups
+    assert (g.intent, g.start, g.destination, g.location) == (intent, None, None, location)
+
+
 # ---- guards: readings that must stay ---------------------------------------------------------------------
 
 @pytest.mark.parametrize("world,prompt,destination", [
@@ -70,3 +85,13 @@ def test_the_robots_plain_tasks_stay(read, world, prompt, task, destination, loc
     robot = read(world, prompt).robot
     assert robot is not None
     assert (robot.task, robot.destination, robot.location) == (task, destination, location)
+
+
+@pytest.mark.parametrize("world,prompt,start,destination", [
+    ("mall", "The robot passes two teens at the fountain who are heading for the cinema.", "fountain", "cinema_lobby"),
+    ("hospital", "Two porters in the cafeteria head for ward B as the robot waits by the lifts.", "cafeteria",
+     "ward_b"),
+])
+def test_people_who_go_somewhere_themselves_keep_their_trip(read, world, prompt, start, destination):
+    (g,) = read(world, prompt).groups
+    assert (g.start, g.destination) == (start, destination)
