@@ -25,6 +25,23 @@ noise smell smoke fire water rain sun announcement delivery train bus flight pla
 event meeting show film tour class lesson talk match game sale gate barrier turnstile window""".split()) | lx.PASSAGE_WORDS
 
 
+# Verbs of posture or rest that things do as well as people ("a new mudguard sits by the entrance"): after
+# one of them the subject must show it is a person some other way (_person_cue).
+_THING_POSTURES = frozenset({"sit", "stand", "lie", "hang", "rest", "lean", "stay", "remain", "lay"})
+_PERSON_ENDINGS = ("er", "or", "ist", "ian", "ee", "ant", "ent", "man", "woman", "ess", "ie", "ster")
+_PERSON_PRONOUNS = frozenset({"her", "his", "their", "she", "he", "they", "them", "him", "herself", "himself"})
+
+
+def _person_cue(s: Sentence, first: int, end: int, verb: int | None) -> bool:
+    """Whether the subject shows it is a person: an agent ending ("donor", "jumper"), a hyphened compound
+    ("first-time", "in-laws"), a "who" clause, a personal pronoun in its clause, or the robot it reacts to."""
+    head = lemma(s.low[end - 1])
+    if head.endswith(_PERSON_ENDINGS) or "-" in s.low[first:end] or (end < s.n and s.low[end] in ("who", "whom", "whose")):
+        return True
+    stop = next((i for i in range(verb or end, s.n) if s.low[i] in (";", ".")), s.n)
+    return any(s.low[i] in _PERSON_PRONOUNS or s.low[i] in lx.ROBOT_WORDS for i in range(end, stop))
+
+
 def _starts(s: Sentence) -> list[int]:
     """Where the main clause's subject may begin: the sentence's start, and after each comma of a
     fronted clause or word ("As soon as the session starts, ...", "Wide-eyed, ...")."""
@@ -94,6 +111,8 @@ def subject_count(s: Sentence, robot_tokens: set[int]) -> Count | None:
         if verb is None and not (verbless and q is not None and q.value):
             continue
         if verb is not None and lemma(s.low[verb]) in lx.THING_VERBS | lx.EVENT_VERBS:
+            continue
+        if verb is not None and verb_lemma(s.low[verb]) in _THING_POSTURES and not _person_cue(s, start, end, verb):
             continue
         if single:
             if verb is not None and s.w[verb].tag == "VBP":

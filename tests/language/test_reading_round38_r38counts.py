@@ -49,6 +49,9 @@ def test_an_approximate_count_by_an_unknown_word_is_kept(read, world, prompt, ki
     ("hospital", "The lift breaks down on ward B."),
     ("museum", "The robot crosses the great hall."),
     ("office", "Two printers hum in the open office."),
+    # a thing at rest, said with a verb people share: no person without a cue (a pronoun, "who", an ending)
+    ("residential", "An old armchair sits by the living room window."),
+    ("museum", "A brass plaque hangs beside the entrance."),
 ])
 def test_a_sentence_naming_no_people_keeps_a_vague_crowd(read, world, prompt):
     (group,) = read(world, prompt).groups
