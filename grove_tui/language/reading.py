@@ -99,6 +99,7 @@ from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
+from grove_tui.language.guided_route import route_from_the_guided
 from grove_tui.language.robot_bound import people_passed_stay
 from grove_tui.language.robot_followers import with_robot_followers
 from grove_tui.language.owners_stay import owners_stay_put
@@ -208,6 +209,8 @@ def _read(s: Sentence) -> PromptReading:
     else:
         read = (counted_unnamed(s, groups.unnamed(robot_tokens), robot_tokens),)  # "a first-time donor lies ..."
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
+    first_robot_word = min((i for rc in found for i in rc.tokens), default=s.n)
+    robot = route_from_the_guided(robot, first_robot_word, mentions, read)  # "walk to the exit while the robot guides them"
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = people_passed_stay(s, robot, found, read)  # "threads through teens by the fountain, bound for the cinema"
