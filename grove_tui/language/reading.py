@@ -68,6 +68,7 @@ from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
 from grove_tui.language.singular_verbs import as_singular_verbs
 from grove_tui.language.age_nouns import with_age_heads
+from grove_tui.language.hyphened_people import with_whole_person_words
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
@@ -150,7 +151,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_fronted_place_commas(without_urging_asides(without_worn_clothes(text, index)))  # "By the kiosks a toddler gapes": one toddler
-    text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
+    text = with_age_heads(with_whole_person_words(text))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
