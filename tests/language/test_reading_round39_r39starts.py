@@ -37,3 +37,28 @@ def test_a_mid_event_time_is_not_a_group(read, world, prompt, start):
 def test_mid_adjectives_and_real_parties_keep_their_reading(read, world, prompt, count):
     (group,) = read(world, prompt).groups
     assert group.count.value == count
+
+
+# ---- 2. a zone that shuts: the people who then leave start in it --------------------------------------
+
+@pytest.mark.parametrize("world,prompt,start", [
+    ("mall", "The food court shuts and sixty shoppers hurry out through the main entrance.", "food_court"),
+    ("mall", "The food court closes, so sixty shoppers head for the main entrance.", "food_court"),
+    ("hospital", "The cafeteria shuts early and a dozen visitors walk to the main entrance.", "cafeteria"),
+    ("museum", "The café shuts down and twenty visitors wander to the great hall.", "cafe"),
+    ("theme_park", "Without warning the Viper shuts, and forty riders file out via the east emergency gate.",
+     "viper_station"),
+])
+def test_people_leaving_a_zone_that_shuts_start_in_it(read, world, prompt, start):
+    (group,) = read(world, prompt).groups
+    assert group.start == start
+
+
+# ---- guards: a door that shuts, a zone shut by someone, a zone that is closed -------------------------
+
+@pytest.mark.parametrize("world,prompt,starts", [
+    ("office", "The lift door shuts and two staff walk to the kitchen.", [None]),
+    ("mall", "The food court is closed, so a family waits by the fountain.", [None]),
+])
+def test_a_shut_door_or_a_closed_zone_gives_no_start(read, world, prompt, starts):
+    assert [g.start for g in read(world, prompt).groups] == starts
