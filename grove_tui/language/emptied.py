@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.closed_zones import closing_end
 from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
@@ -45,7 +46,8 @@ class EmptiedZones:
         s = self.s
         out: list[Place] = []
         for i in tokens:
-            end = self._emptied_subject_end(i) if s.low[i] not in ("'s", "’s") else self._hazard_owner_end(i)
+            end = (self._emptied_subject_end(i) or closing_end(s, i)) if s.low[i] not in ("'s", "’s") \
+                else self._hazard_owner_end(i)
             if end is None:
                 continue
             first = end

@@ -52,6 +52,7 @@ from grove_tui.language.queue_lengths import with_queue_lengths
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
+from grove_tui.language.mid_events import with_mid_events
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.past_drills import without_past_drills
 from grove_tui.language.post_verbs import as_work_at_posts
@@ -155,7 +156,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
-    text = without_past_drills(with_fronted_ing_times(as_arm_escort(text)))  # "gives Al her arm to X": walks Al; "after a drill": over
+    text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
