@@ -29,9 +29,8 @@ def handled_at(low: Sequence[str], i: int, knows: Callable[[str], bool]) -> bool
         j -= 1
     if j < 0:
         return False
-    verb = verb_lemma(low[j])
     verbs = _WITH_VERBS if word == "with" else _LOOKING_VERBS[word]
-    if verb not in verbs and low[j] not in verbs:
+    if _bases(low[j]).isdisjoint(verbs):
         return False
     k = i + 1
     while k < len(low) and low[k] in _ARTICLES | {"of"}:
@@ -39,3 +38,15 @@ def handled_at(low: Sequence[str], i: int, knows: Callable[[str], bool]) -> bool
     if k >= len(low) or k == i + 1 and word != "with":
         return False  # "check out" with no article ("check out early") is leaving
     return knows(lemma(low[k]))
+
+
+def _bases(word: str) -> set[str]:
+    """The base forms `word` may be inflected from by its ending ("tinkers", "fiddled", "messing")."""
+    bases = {word, verb_lemma(word)}
+    for ending in ("es", "s", "ing", "ed", "d"):
+        if word.endswith(ending) and len(word) > len(ending) + 2:
+            stem = word[: -len(ending)]
+            bases |= {stem, stem + "e"}
+            if len(stem) > 2 and stem[-1] == stem[-2]:
+                bases.add(stem[:-1])  # "fussed": "fuss"; "tinned": "tin"
+    return bases

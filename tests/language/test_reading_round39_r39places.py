@@ -16,6 +16,8 @@ import pytest
     ("car_showroom", "Two brothers check out the hatchback.", "display_hatchback"),
     ("car_showroom", "a retired pair checking out the electric car", "display_ev"),
     ("mall", "Two plumbers tinker with the fountain.", "fountain"),
+    ("mall", "A plumber tinkers with the fountain.", "fountain"),
+    ("bowling_alley", "A lane mechanic fiddles about with the pinsetters.", "pinsetters"),
 ])
 def test_a_fixture_handled_or_looked_over_is_the_location(read, world, prompt, location):
     (group,) = read(world, prompt).groups
