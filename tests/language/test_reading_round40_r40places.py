@@ -77,3 +77,41 @@ def test_known_parts_keep_their_place(read, world, prompt, location):
 def test_the_head_of_a_department_is_no_table(read):
     reading = read("hospital", "The head of security waits in the entrance lobby.")
     assert [g.location for g in reading.groups] == ["entrance_lobby"]
+
+
+# ---- 3. people said by a hyphened word led by a function word keep their place ----------------------
+
+@pytest.mark.parametrize("world,prompt,count,location", [
+    ("hospital", "Two worried in-laws in the cafeteria.", 2, "cafeteria"),
+    ("mall", "Three no-shows at the information desk.", 3, "information_desk"),
+    ("airport", "Four on-lookers by the departure board.", 4, "departure_board"),
+    ("aquarium", "Two by-standers at the ocean window.", 2, "ocean_window"),
+    ("ferry_terminal", "Five in-patients by the info desk.", 5, "information_desk"),
+    ("station", "Two has-beens on platform 2.", 2, "platform_2"),
+])
+def test_a_hyphened_person_word_led_by_a_function_word_is_people_placed(read, world, prompt, count, location):
+    (group,) = read(world, prompt).groups
+    assert group.count.value == count
+    assert group.location == location
+    assert group.intent != "walk"
+
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("mall", "Two in-laws stroll over to the food court.", "food_court"),
+    ("hospital", "Three no-shows wander off to the cafeteria.", "cafeteria"),
+])
+def test_guard_a_hyphened_person_word_that_walks_goes_where_said(read, world, prompt, destination):
+    (group,) = read(world, prompt).groups
+    assert group.destination == destination and group.count.value in (2, 3)
+
+
+# ---- guards: relatives by marriage after a kin word, and hyphened words the reader knew ---------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("hospital", "Two sisters-in-law wait in the cafeteria.", "cafeteria"),
+    ("hospital", "Two co-workers in the cafeteria.", "cafeteria"),
+    ("mall", "Four walk-ins at the information desk.", "information_desk"),
+])
+def test_hyphened_people_the_reader_knew_keep_their_place(read, world, prompt, location):
+    (group,) = read(world, prompt).groups
+    assert group.location == location
