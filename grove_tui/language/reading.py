@@ -35,6 +35,7 @@ from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
+from grove_tui.language.function_word_people import with_function_word_people
 from grove_tui.language.fronted_place_commas import with_fronted_place_commas
 from grove_tui.language.urged_on_by import without_urging_asides
 from grove_tui.language.worn_clothes import without_worn_clothes
@@ -58,6 +59,8 @@ from grove_tui.language.past_drills import without_past_drills
 from grove_tui.language.post_verbs import as_work_at_posts
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
+from grove_tui.language.cleared_checkpoints import as_passed_checkpoints
+from grove_tui.language.place_part_counts import with_plain_parts
 from grove_tui.language.converging import as_heading
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
@@ -152,11 +155,12 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_fronted_place_commas(without_urging_asides(without_worn_clothes(text, index)))  # "By the kiosks a toddler gapes": one toddler
-    text = with_age_heads(with_whole_person_words(text))  # "his 4-year-old walks": "his 4-year-old child walks"
+    text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
     text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
+    text = with_plain_parts(as_passed_checkpoints(text))  # "clears customs and heads": passes through; "one end of the bar": the end of it
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
