@@ -113,6 +113,7 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
+from grove_tui.language.contracted_is import with_full_is
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
@@ -137,6 +138,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
+    text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
