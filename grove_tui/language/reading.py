@@ -58,6 +58,7 @@ from grove_tui.language.past_drills import without_past_drills
 from grove_tui.language.post_verbs import as_work_at_posts
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
+from grove_tui.language.robot_headings import as_robot_order
 from grove_tui.language.converging import as_heading
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
@@ -134,6 +135,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
+    text = as_robot_order(text)  # "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
