@@ -70,3 +70,34 @@ def test_a_want_said_first_is_the_peoples_purpose(read, world, prompt, wanted, d
 def test_wanting_to_go_and_wants_said_later_keep_their_reading(read, world, prompt, purpose):
     (group,) = read(world, prompt).groups
     assert group.purpose == purpose
+
+
+# ---- 3. the robot passing people said by the verb alone ---------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,passes,via", [
+    ("hospital", "Six visitors queue at reception while the robot passes them on its way to the pharmacy.",
+     "Six visitors", "reception_desk"),
+    ("mall", "A dozen shoppers wait by the fountain; the robot overtakes them on the way to the food court.",
+     "A dozen shoppers", "fountain"),
+    ("museum", "Ten kids queue at the café and the robot skirts the queue on its way to the great hall.",
+     "Ten kids", "cafe"),
+    ("office", "Two staff chat at reception as the robot passes them on its way to the kitchen.", "Two staff",
+     "reception"),
+])
+def test_people_the_robot_passes_by_verb_are_passed(read, world, prompt, passes, via):
+    r = read(world, prompt)
+    assert r.robot is not None and r.robot.task == "cross"
+    assert passes in r.robot.passes and via in r.robot.via
+
+
+# ---- guards: passing a place, and passing by with a preposition, keep their reading -------------------------
+
+@pytest.mark.parametrize("world,prompt,passes,via", [
+    ("station", "The robot passes the gateline on its way to platform 2 while a guard waits by the ticket office.",
+     (), ("gateline",)),
+    ("mall", "A dozen shoppers queue at the cinema; the robot goes past the queue to the food court.",
+     ("A dozen shoppers",), ("cinema_lobby",)),
+])
+def test_passing_a_place_or_passing_by_keeps_its_reading(read, world, prompt, passes, via):
+    r = read(world, prompt)
+    assert r.robot is not None and (r.robot.passes, r.robot.via) == (passes, via)
