@@ -10,6 +10,7 @@ from dataclasses import replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import GroupReading, RobotReading
+from grove_tui.language.robot_passing_verbs import passing_verb
 from grove_tui.language.sentence import Sentence
 
 # "picks its way", "threads a path", "noses her way": a verb of going said with the way it makes.
@@ -69,7 +70,7 @@ def via_the_people_passed(s: Sentence, robot: RobotReading | None, clauses: Sequ
         inside = set(tokens)
         said = [whos[m.who] for m in mentions if m.who in whos and (m.last < tokens[0] or m.first in inside)]
         for i in tokens:
-            if s.low[i] not in _PASSING or i + 1 not in inside:
+            if (s.low[i] not in _PASSING and not passing_verb(s, i)) or i + 1 not in inside:
                 continue
             j = s.skip(i + 1, lx.DETERMINERS | lx.NP_MODIFIERS)
             group = _passed(s, j, said, mentions, whos) if j < s.n and j in inside else None
