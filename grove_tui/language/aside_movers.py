@@ -10,9 +10,9 @@ from grove_tui.language.sentence import Sentence
 
 
 def aside_leader(s: Sentence, people: People, k: int) -> int | None:
-    """The person word before the comma at `k` when an aside about them opens there: "A porter, pushing
-    ...", "the nurse, wheeling ..."; else None. Only a person right after the sentence starts or after
-    an opener ("a", "the", "my") counts: "the lifts, pushing" names no person before the comma."""
+    """The person word before the comma at `k` when an aside about them opens there with a verb in
+    "-ing": "A porter, pushing ...", "the nurse, wheeling ..."; else None ("the lifts, pushing ...":
+    no person before the comma)."""
     if k < 1 or s.low[k] != "," or k + 1 >= s.n or s.w[k + 1].tag != "VBG":
         return None
     j = k - 1
