@@ -6,6 +6,7 @@ follow their teacher"), and those inside the robot's own clause ("the robot esco
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.aside_movers import aside_leader
 from grove_tui.language.carried_things import counted_things
 from grove_tui.language.caused_motion import moves_along, route_after
 from grove_tui.language.moved_pronouns import moved_pronoun
@@ -76,7 +77,8 @@ class PeopleObjects:
         leading = p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS | FETCHING_VERBS
         if p < 1 or not (leading or s.w[p].pos == "VERB") or not (
                 self.people.is_person_noun(p - 1) or shared_subject_is_person(s, self.people, p - 1)
-                or each_leader(s, self.people, p - 1) is not None):  # "two porters, each pushing a patient"
+                or each_leader(s, self.people, p - 1) is not None  # "two porters, each pushing a patient"
+                or aside_leader(s, self.people, p - 1) is not None):  # "a porter, pushing a woman in a wheelchair"
             return False  # "a guard waits on platform 1, then leads four passengers": the guard's too
         q = quantifier(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 from grove_tui.language.and_verbs import as_second_verbs
 from grove_tui.language.counted_verbs import as_counted_verbs
 from grove_tui.language.listed_verbs import as_listed_verbs
+from grove_tui.language.object_verbs import as_object_verbs
 from grove_tui.language.counted_modifiers import as_counted_modifiers, as_plural_verbs_before_a_clause
 from grove_tui.language.gathering_verbs import as_gathering_verbs
 from grove_tui.language.leading_verb_tags import as_leading_verbs
@@ -70,7 +71,7 @@ def _taken_for_noun(words: list[Word], k: int) -> bool:
 def as_singular_verbs(words: list[Word]) -> list[Word]:
     """The parse with the verb of one person, taken for a plural noun, tagged a verb (module doc)."""
     # "4 duck into": a verb; "A pair of orderlies wheel Mr Ahmed", "A porter wheels frail Mrs Patel": the verb
-    words = as_leading_verbs(as_listed_verbs(as_counted_verbs(as_counted_takers(words))))
+    words = as_leading_verbs(as_listed_verbs(as_counted_verbs(as_counted_takers(as_object_verbs(words)))))  # "my mum irons shirts"
     out = prepositions_as_such(as_plural_verbs_before_a_clause(as_counted_modifiers(words)))  # "a timid lad beside gate B1": "beside" tagged a noun
     for k, w in enumerate(words):
         after_phrase = subject_of(out, k) if not _taken_for_noun(out, k) else None
