@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
+from grove_tui.language.consumed_things import consumed_thing
 from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.no_place_things import no_place_thing
@@ -39,6 +40,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
     if no_place_thing(s, k, prep):
         return True  # "through forty-odd pickers", "recording it on a phone": people, a device
+    if consumed_thing(s, k, prep, at):
+        return True  # "stock up on IPA", "roused from a snooze": food, drink, a nap (round 41)
     if cause_thing(s, k, prep, at):
         return True  # "smell of burning from the toaster"
     if time_or_manner(s, k, prep):

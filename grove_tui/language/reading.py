@@ -112,6 +112,7 @@ from grove_tui.language.owners_stay import owners_stay_put
 from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
+from grove_tui.language.outing_parties import as_outing_parties
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
 from grove_tui.language.contracted_is import with_full_is
@@ -148,6 +149,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
+    text = as_outing_parties(text)  # "a stag do of twelve": a stag party of twelve
     text = with_counted_collectives(with_scale_figures(text))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100
     text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
