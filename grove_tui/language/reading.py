@@ -39,6 +39,7 @@ from grove_tui.language.function_word_people import with_function_word_people
 from grove_tui.language.fronted_place_commas import with_fronted_place_commas
 from grove_tui.language.urged_on_by import without_urging_asides
 from grove_tui.language.worn_clothes import without_worn_clothes
+from grove_tui.language.worn_place_words import without_worn_place_words
 from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
@@ -160,7 +161,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
-    text = with_fronted_place_commas(without_urging_asides(without_worn_clothes(text, index)))  # "By the kiosks a toddler gapes": one toddler
+    text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"

@@ -9,6 +9,7 @@ from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import count_of, quantifier
+from grove_tui.language.lone_subjects import lone_subject_count
 from grove_tui.language.model import Count, FieldConfidence, GroupReading
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -125,7 +126,7 @@ def subject_count(s: Sentence, robot_tokens: set[int]) -> Count | None:
 
 def counted_unnamed(s: Sentence, group: GroupReading, robot_tokens: set[int]) -> GroupReading:
     """The unnamed group with the count its subject says, when it says one."""
-    count = subject_count(s, robot_tokens)
+    count = subject_count(s, robot_tokens) or lone_subject_count(s, robot_tokens)  # "the visiting hairdresser makes"
     if count is None:
         return group
     return replace(group, count=count, confidence=tuple(c for c in group.confidence if c.field != "count") + (
