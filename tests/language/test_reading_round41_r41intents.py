@@ -1,8 +1,8 @@
 """Intent classes of round 41, each with sentences of its own over at least two worlds (none from the
 understanding sets): an alarm that calls somebody, is on a watched thing, is false or stops is no
 evacuation ("paged by a temperature alarm", "once the alarm clears"); the people's own verbs say what
-they do; a person who locks or shuts themselves in a room goes into it ("storms out of X and locks
-himself in the toilets"): it is where they go, not where they wait."""
+they do; a person who leaves a place and locks or shuts themselves in a room goes into it ("storms out of
+X and locks himself in the toilets"): it is where they go, not where they wait."""
 
 from __future__ import annotations
 
@@ -50,11 +50,10 @@ def test_an_alarm_that_warns_keeps_the_evacuation(read, world, prompt):
     ("office", "An intern walks out of the boardroom and shuts herself in the ladies.", "boardroom", "restroom_women"),
     ("hospital", "A nurse walks out of the ward and locks herself in the staff room.", "ward_a", "staff_room"),
     ("mall", "A teenager runs out of the food court and locks himself in the toilets.", "food_court", "restrooms"),
-    ("office", "Two interns barricade themselves in the kitchen.", None, "kitchen"),
-    ("residential", "After the row, the teenager locks himself in his bedroom.", None, "child_bedroom"),
     ("residential", "A teenager stomps upstairs and locks herself in the bathroom.", None, "bathroom"),
-    ("museum", "Fed up, a guard locks himself away in the staff room.", None, "staff_room"),
-    ("diy_store", "A cashier storms off the tills and shuts himself in the staff room.", None, "staff_room"),
+    ("diy_store", "A cashier storms off the tills and shuts himself in the staff room.", "tills", "staff_room"),
+    ("hospital", "A junior doctor leaves the ward, then shuts herself in the staff room to cry.", "ward_a", "staff_room"),
+    ("museum", "A guard slips away from the gift shop and locks himself in the staff room.", "gift_shop", "staff_room"),
 ])
 def test_shutting_oneself_in_a_room_is_going_there(read, world, prompt, start, destination):
     (group,) = read(world, prompt).groups
@@ -64,9 +63,12 @@ def test_shutting_oneself_in_a_room_is_going_there(read, world, prompt, start, d
         assert group.start == start
 
 
-# ---- guards: shutting a thing in, or waiting in a room, keep their reading ----------------------------
+# ---- guards: shutting oneself in with no going before, shutting a thing in, waiting keep their reading --
 
 @pytest.mark.parametrize("world,prompt,location", [
+    ("office", "Two interns barricade themselves in the kitchen.", "kitchen"),
+    ("residential", "After the row, the teenager locks himself in his bedroom.", "child_bedroom"),
+    ("museum", "Fed up, a guard locks himself away in the staff room.", "staff_room"),
     ("hospital", "A porter shuts the door to the ward and waits in the staff room.", "staff_room"),
     ("office", "A manager sits in the kitchen.", "kitchen"),
 ])
