@@ -14,6 +14,7 @@ world lacks ("smoke from the boiler room") is still refused: people would be sen
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.calm_alarms import calm_alarm as calm_alarm
 from grove_tui.language.giving_off import giving_off_cue
 from grove_tui.language.hazard_events import event_cue
 from grove_tui.language.hazard_scares import scare_cue
@@ -58,7 +59,7 @@ def cue(s: Sentence, i: int) -> bool:
         return True
     if w in ("bell", "bells") and not (i > 0 and low[i - 1] in _BELL_ALARMS):
         return False
-    if w in _ALARMS and (nxt in _SOUNDING or (nxt in ("is", "are", "has", "have", "starts", "start") and after in _SOUNDING)):
+    if w in _ALARMS and not calm_alarm(s, i) and (nxt in _SOUNDING or (nxt in ("is", "are", "has", "have", "starts", "start") and after in _SOUNDING)):
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):
         return True
