@@ -11,9 +11,8 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
-from grove_tui.language import lexicon as lx
 from grove_tui.language.tokens import lemma
-from grove_tui.language.worn_clothes import _CLOTHES, _names_a_place
+from grove_tui.language.worn_clothes import _CLOTHES, _names_a_place, _person
 
 if TYPE_CHECKING:
     from grove_tui.language.places import PlaceIndex
@@ -29,19 +28,8 @@ _WORN = re.compile(
     rf"(?P<mods>(?:(?:his|her|their|matching|full|bright|dark|smart|long|little|tiny|orange|yellow|red|blue|"
     rf"green|white|black|pink|purple|new|old|[a-z]+-[a-z]+)\s+){{0,2}})"
     rf"(?P<thing>{_WORN_WORDS}))\b(?P<after>\s*(?P<next>[A-Za-z-]*))", re.IGNORECASE)
-_PERSON_ENDS = ("er", "ers", "or", "ors", "ist", "ists", "ian", "ians", "ee", "ees", "ic", "ics", "man", "men",
-                "woman", "women", "people", "folk", "lad", "lads", "girl", "girls", "boy", "boys", "kid", "kids")
-_NOT_PEOPLE = frozenset("water paper corner number order letter power centre center floor door lobby hour".split())
 _NEVER_A_PLACE_CUE = frozenset("room rooms store stores rack racks rail rails shop shops desk counter area bay "
                                "cupboard locker lockers display stand pegs hooks station".split())
-
-
-def _person(word: str) -> bool:
-    low = word.lower()
-    if low in _NOT_PEOPLE or low in lx.ROBOT_WORDS:
-        return False
-    return lemma(low) in lx.PERSON_NOUNS or low in lx.PERSON_NOUNS or low.endswith(_PERSON_ENDS)
-
 
 def without_worn_place_words(text: str, index: PlaceIndex) -> str:
     """The text without what people wear where the world also names a place by it (module doc)."""
