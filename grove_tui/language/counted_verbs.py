@@ -15,7 +15,8 @@ from grove_tui.language.parser import Word
 # verbs of going that are nouns too, beyond those the lexicon gives an intent
 _GOING = frozenset("duck dart hop crowd limp scurry scuttle creep crawl dash bolt race file troop pop nip slip "
                    "step jog trot stroll wander head amble march stride rush hurry shuffle drift sneak scoot "
-                   "skip run walk stream pile spill squeeze edge".split())
+                   "skip run walk stream pile spill squeeze edge peel break split branch slope slink sidle veer "
+                   "splinter".split())
 _DIRECTIONS = frozenset("into in out off over back across through to towards toward up down along past round "
                         "around away inside outside onto on under behind".split())
 
