@@ -44,7 +44,13 @@ def _guided(guides: str, first_robot_word: int, mentions: Sequence[Mention],
         return next((g for g in read if named & {lemma(w) for w in g.who.lower().split()}), None)
     if not words or words[-1] not in _POINTING:
         return None
-    singular = words[-1] in _SINGULAR
+    return said_last_before(first_robot_word, words[-1] in _SINGULAR, mentions, read)
+
+
+def said_last_before(first_robot_word: int, singular: bool, mentions: Sequence[Mention],
+                     read: Sequence[GroupReading]) -> GroupReading | None:
+    """The group said last before the robot's clause, the one its pronoun points back to (one person for
+    "him", "her"), or None."""
     whos = {g.who: g for g in read}
     for m in reversed([m for m in mentions if m.last < first_robot_word]):
         group = whos.get(m.who)

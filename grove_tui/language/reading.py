@@ -107,7 +107,7 @@ from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
-from grove_tui.language.guided_route import route_from_the_guided
+from grove_tui.language.guided_route import route_from_the_guided, said_last_before
 from grove_tui.language.robot_bound import people_passed_stay
 from grove_tui.language.robot_followers import with_robot_followers
 from grove_tui.language.owners_stay import owners_stay_put
@@ -249,14 +249,8 @@ def _robot_follows_someone_said(robot: RobotReading | None, found: Sequence[Robo
     if robot.follows is None and any((set(g.who.lower().split()) - {"a", "an", "the"}) & said_in_clause for g in read):
         return robot  # "the robot follows the climbers": its words name the group
     first = min((i for rc in found for i in rc.tokens), default=0)
-    singular = bool(said_in_clause & {"him", "her"})
-    said = [m.who for m in mentions if m.last < first]
-    whos = {g.who: g for g in read}
-    for who in reversed(said):
-        group = whos.get(who)
-        if group is not None and (not singular or group.count.value == 1):
-            return replace(robot, follows=group.who)
-    return replace(robot, follows=read[0].who)
+    group = said_last_before(first, bool(said_in_clause & {"him", "her"}), mentions, read)
+    return replace(robot, follows=(group or read[0]).who)
 
 
 def _followers_of_someone_said(read: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
