@@ -48,7 +48,8 @@ def guided_seconds(path: Sequence[tuple[float, float]], robot_vel: float) -> flo
 
 def guided_index(reading: PromptReading) -> int | None:
     """The reading group the robot's clause leads, or None when it leads nobody: the group its words
-    name, or for a pronoun one that follows the robot, else the group said last before its clause."""
+    name (for "them", the reader names the group it points back to: language/guided_route.py), else one
+    that follows the robot."""
     robot = reading.robot
     if robot is None or robot.task != "cross" or not robot.guides or not reading.groups:
         return None
@@ -60,13 +61,7 @@ def guided_index(reading: PromptReading) -> int | None:
     followers = [i for i, g in enumerate(reading.groups) if g.robot_interaction == "follow"]
     if followers:
         return followers[0]
-    if robot.guides.lower() not in _POINTING:
-        return None  # it names people the reading has no group for
-    prompt = reading.prompt.lower()
-    clause = prompt.find(robot.text.lower()) if robot.text else -1
-    before = [(prompt.find(g.who.lower()), i) for i, g in enumerate(reading.groups)
-              if g.who and 0 <= prompt.find(g.who.lower()) and (clause < 0 or prompt.find(g.who.lower()) < clause)]
-    return max(before)[1] if before else None
+    return None  # a pronoun the reader found no group for, or people the reading has no group for
 
 
 def guided_exit(reading: PromptReading, groups: Sequence[object], agents: Sequence[object]) -> str | None:

@@ -21,11 +21,14 @@ _ROUTE_FIELDS = ("start", "destination", "via", "location")
 def route_from_the_guided(robot: RobotReading | None, first_robot_word: int, mentions: Sequence[Mention],
                           read: Sequence[GroupReading]) -> RobotReading | None:
     """`robot` with the route of the group it guides when its own clause gave none; None when that
-    group goes nowhere said; `robot` unchanged otherwise."""
-    if robot is None or robot.task != "cross" or robot.guides is None or \
-            robot.start or robot.destination or robot.via:
+    group goes nowhere said; with its own route, the group it guides named by its words ("them": "the
+    staff"); `robot` unchanged otherwise."""
+    if robot is None or robot.task != "cross" or robot.guides is None:
         return robot
     group = _guided(robot.guides, first_robot_word, mentions, read)
+    if robot.start or robot.destination or robot.via:
+        # its own route; "them" named by the group's words, so planning finds them without the sentence
+        return robot if group is None else replace(robot, guides=group.who)
     if group is None or not (group.destination or group.via):
         return None  # "a child waits while the robot guides her": no way to go is said
     start = group.start or (group.location if group.location != group.destination else None)

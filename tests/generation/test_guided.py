@@ -32,7 +32,7 @@ def ferry():
 
 def test_the_robot_guiding_evacuees_goes_to_their_exit_and_the_report_says_they_go_with_it(ferry):
     reading = read_prompt(PROMPT, ferry)
-    assert reading.robot is not None and reading.robot.guides == "them" and guided_index(reading) == 0
+    assert reading.robot is not None and reading.robot.guides == reading.groups[0].who and guided_index(reading) == 0
     # the roi model may settle the unsure "the exit" on a door the passengers do not use
     reading = replace(reading, robot=replace(reading.robot, destination="staff_entrance"))
     preset = load_preset("emergency")

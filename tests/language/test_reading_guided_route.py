@@ -30,7 +30,7 @@ def test_the_robot_goes_where_the_people_it_guides_go(worlds, world, prompt, sta
     assert robot.guides is not None and guided in robot.guides.lower()
 
 
-@pytest.mark.parametrize("world, prompt, destination, pronoun", [
+@pytest.mark.parametrize("world, prompt, destination, pronoun", [  # pronoun: what the robot's clause says
     ("airport", "A lost child waits at the information desk until the robot leads her to the check-in area.",
      "check_in_hall", "her"),
     ("station", "An elderly man waits on platform 1 till the robot guides him to the ticket office.",
@@ -40,8 +40,9 @@ def test_a_clause_opened_by_until_is_the_robots_own(worlds, world, prompt, desti
     reading = read_prompt(prompt, worlds[world], seed=0)
     assert reading.robot is not None and reading.robot.task == "cross"
     assert reading.robot.destination == destination
-    assert reading.robot.guides == pronoun
-    assert len(reading.groups) == 1 and reading.groups[0].intent == "wait"
+    assert len(reading.groups) == 1
+    assert reading.robot.guides == reading.groups[0].who  # "her", "him": the one said before the clause
+    assert reading.groups[0].intent == "wait"
     assert reading.groups[0].destination is None  # the robot's place is not the person's
 
 
