@@ -69,6 +69,8 @@ FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep with
 LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
 LOOK_SHARE = 0.6  # "stare at", "watch": facing it for most of the time it is within LOOK_RANGE
+PASS_AT = 4.0  # metres: a robot within this of a place's point is passing it ("as the robot passes the desk")
+PASS_BY = 5.0  # metres: a robot within this of someone is passing them ("as it goes by")
 GLANCE_SECONDS = 1.0  # "glance at", "look at": facing it at least once this long while within LOOK_RANGE
 AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
 AVOID_MOVED = 0.5  # metres moved away while it was near
@@ -1062,6 +1064,39 @@ class _RobotLookProbe(_RobotProbe):
         self.run = np.zeros(m)  # frames of the look going on
         self.longest = np.zeros(m)  # frames of the longest look
         self.seen_robot = False
+        # a look tied to the robot passing (claim.moment "pass"): when it passed, how near it came, when they looked
+        self.passed: list[float] = []
+        self.closest = math.inf
+        self.looked: list[float] = []
+
+    def _passing(self, f: _Frames, d: np.ndarray) -> np.ndarray:
+        """(F, M) frames the robot is passing the claim's place (within its radius), else them (PASS_BY)."""
+        assert f.robot is not None
+        if self.claim.point is not None:
+            px, py = self.claim.point
+            near = np.hypot(f.robot[:, 0] - px, f.robot[:, 1] - py)
+            finite = near[np.isfinite(near)]
+            if finite.size:
+                self.closest = min(self.closest, float(finite.min()))
+            return np.broadcast_to((np.nan_to_num(near, nan=np.inf) <= (self.claim.radius or PASS_AT))[:, None], d.shape)
+        finite = d[np.isfinite(d)]
+        if finite.size:
+            self.closest = min(self.closest, float(finite.min()))
+        return np.isfinite(d) & (d <= PASS_BY)
+
+    def pass_times(self, t: np.ndarray, passing: np.ndarray) -> None:
+        rows = passing.any(axis=1)
+        if rows.any():
+            times = t[rows]
+            self.passed = [min(self.passed[0], float(times[0])) if self.passed else float(times[0]),
+                           max(self.passed[1], float(times[-1])) if self.passed else float(times[-1])]
+
+    def look_times(self, t: np.ndarray, looking: np.ndarray) -> None:
+        rows = looking.any(axis=1)
+        if rows.any():
+            times = t[rows]
+            self.looked = [min(self.looked[0], float(times[0])) if self.looked else float(times[0]),
+                           max(self.looked[1], float(times[-1])) if self.looked else float(times[-1])]
 
     def add(self, f: _Frames) -> None:
         if f.robot is None or not self.cols.size:
@@ -1074,6 +1109,13 @@ class _RobotLookProbe(_RobotProbe):
         bearing = np.arctan2(dy, dx)
         off = np.abs((bearing - f.yaw[:, self.cols] + np.pi) % (2 * np.pi) - np.pi)
         looking = sight & (off <= LOOK_ANGLE)
+        if self.claim.moment == "pass":
+            # "looks up as the robot passes the desk": only the frames of that pass count
+            passing = self._passing(f, d)
+            self.pass_times(f.t, passing)
+            sight &= passing
+            looking &= passing
+            self.look_times(f.t, looking)
         self.in_sight += sight.sum(axis=0)
         self.facing += looking.sum(axis=0)
         for row in looking:
@@ -1085,6 +1127,15 @@ class _RobotLookProbe(_RobotProbe):
             return self.no_robot()
         n = self.members
         seen = self.in_sight * checker.sample_dt >= 1.0
+        moment = self.claim.moment == "pass"
+        what = self.claim.place or "them"
+        if moment and not self.passed:
+            reach = (self.claim.radius or PASS_AT) if self.claim.point is not None else PASS_BY
+            closest = f" (closest {self.closest:.1f} m)" if math.isfinite(self.closest) else ""
+            return FAILS, f"the robot never passed {what}: it never came within {reach:g} m{closest}"
+        if moment and not seen.any():
+            return FAILS, (f"the robot passed {what} from {_when(self.passed[0])} to {_when(self.passed[1])}, "
+                           f"never within {LOOK_RANGE:g} m of them for 1 s then")
         if not seen.any():
             return FAILS, f"the robot never came within {LOOK_RANGE:g} m of them"
         share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
@@ -1100,6 +1151,11 @@ class _RobotLookProbe(_RobotProbe):
             k = int(ok.sum())
             text = f"{k}/{n} looked at it for {LOOK_SHARE:.0%} or more of the time it was near " \
                    f"({float(share[seen].mean()):.0%} of the {near})"
+        if moment:
+            looked = f"they looked from {_when(self.looked[0])} to {_when(self.looked[1])}" if self.looked else \
+                "they did not look at it then"
+            text = (f"the robot passed {what} from {_when(self.passed[0])} to {_when(self.passed[1])}; {looked}; "
+                    f"{text} while it passed")
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 

@@ -44,6 +44,7 @@ from grove_tui.generation.shared_queue import (default_service_time, queue_servi
 from grove_tui.generation.guided_claims import guided_out_by
 from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
+from grove_tui.generation.passing_look import passing_looks
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.run_length import with_run_length
@@ -905,6 +906,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                     f"you changed it to {counts.get(index, 0)}")
         claims += _group_claims(r, g, agents_here, routes or {}, world, reading, by_reading, walking_speed,
                                 robot_seconds)
+        claims = passing_looks(claims, r, reading, world)  # "looks up as the robot passes the desk"
         if index == guided_index(reading) and robot is not None and not any(c.kind == "robot_follow" for c in claims):
             # "the robot guides them to the exit": that they went with it is asked too, and measured
             claims.append(Claim("robot_follow", "go with the robot, which guides them", "walk where the robot leads",

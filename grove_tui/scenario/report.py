@@ -91,6 +91,7 @@ class Claim:
     low: float | None = None  # m/s, for pace
     high: float | None = None
     share: float = 0.9  # the share of the group's members that must show the outcome
+    moment: str | None = None  # "pass": a reaction checked only while the robot passes (generation/passing_look.py)
 
     @property
     def mark(self) -> str:
@@ -102,7 +103,7 @@ class Claim:
     def to_dict(self) -> JSONObject:
         data: JSONObject = {"kind": self.kind, "asked": self.asked, "plan": self.plan, "status": self.status,
                             "evidence": self.evidence}
-        for name in ("needs_seconds", "zone", "place", "seconds", "distance", "low", "high"):
+        for name in ("needs_seconds", "zone", "place", "seconds", "distance", "low", "high", "moment"):
             value = getattr(self, name)
             if value is not None:
                 data[name] = value
@@ -126,7 +127,7 @@ class Claim:
                    (float(point[0]), float(point[1])) if point else None, float(data.get("radius", 0.0)),
                    tuple(str(e) for e in data.get("exits", ())), tuple(int(p) for p in data.get("partners", ())),
                    _float(data.get("seconds")), _float(data.get("distance")), _float(data.get("low")),
-                   _float(data.get("high")), float(data.get("share", 0.9)))
+                   _float(data.get("high")), float(data.get("share", 0.9)), _str(data.get("moment")))
 
 
 def _float(value: float | str | None) -> float | None:

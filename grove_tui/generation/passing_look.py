@@ -1,0 +1,54 @@
+"""A look tied to the moment the robot passes is checked in that moment, not at any time.
+
+"A guide looks up as the robot passes the desk": the look claim was checked as a glance at any time the
+robot was within LOOK_RANGE, and in one run the robot was within 10 m of the guide for 2 s and never came by
+the desk while they looked, yet the look read ✓. A reaction the sentence ties to the robot passing
+(language/passing_moment.py) now carries that moment: the claim's `moment` is "pass", and its `point` the
+place passed (within PASS_AT of it), else the people themselves (within PASS_BY of them). The probe
+(analysis/outcomes._RobotLookProbe) counts only looks in those frames and says when the robot passed and
+when they looked.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from grove_tui.analysis.outcomes import PASS_AT, PASS_BY
+from grove_tui.language.model import GroupReading, PromptReading
+from grove_tui.language.passing_moment import passing_moment
+from grove_tui.scenario.report import Claim
+from grove_tui.world.model import Door, Entity, World
+
+
+
+def _point(world: World, place: str) -> tuple[float, float] | None:
+    try:
+        obj = world.find(place)
+    except Exception:
+        return None
+    if isinstance(obj, Entity):
+        return obj.interaction_point
+    if isinstance(obj, Door):
+        return obj.inward_point(0.6)
+    return None  # a zone: the people themselves are the moment's place
+
+
+def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReading, world: World) -> list[Claim]:
+    """The group's look claim tied to the moment the robot passes, when the sentence ties it there."""
+    if not any(c.kind == "robot_look" for c in claims):
+        return claims
+    moment = passing_moment(reading.prompt, group, reading.robot)
+    if moment is None:
+        return claims
+    point = _point(world, moment.place) if moment.place else None
+    out = []
+    for c in claims:
+        if c.kind != "robot_look":
+            out.append(c)
+            continue
+        if point is not None:
+            out.append(replace(c, asked=c.asked + f", as the robot passes {moment.place}", moment="pass",
+                               place=moment.place, point=(round(point[0], 3), round(point[1], 3)), radius=PASS_AT))
+        else:
+            out.append(replace(c, asked=c.asked + ", as the robot passes them", moment="pass", radius=PASS_BY))
+    return out
