@@ -1472,6 +1472,46 @@ class _RobotPassesProbe(_Probe):
         return FAILS, text
 
 
+class _RobotBesideProbe(_Probe):
+    """robot_beside ("the robot passes the ticket office" where people queue): it passes the people standing
+    there beside them, never within `distance` of one of them while they stand still (generation/beside_queue.py)."""
+
+    STANDING = 0.2  # m/s: slower than this someone is standing (in a queue, at a counter)
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.partner_cols = self.checker._cols(self.claim.partners)
+        self.closest = math.inf
+        self.at = (0.0, -1)
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.partner_cols.size:
+            return
+        self.seen_robot = True
+        p = f.pos[:, self.partner_cols]
+        speed = np.hypot(f.vel[:, self.partner_cols, 0], f.vel[:, self.partner_cols, 1])
+        d = np.hypot(p[..., 0] - f.robot[:, 0:1], p[..., 1] - f.robot[:, 1:2])
+        d = np.where(np.isfinite(d) & (np.nan_to_num(speed, nan=np.inf) < self.STANDING), d, np.inf)
+        if not np.isfinite(d).any():
+            return
+        k = int(np.argmin(d))
+        row, col = divmod(k, d.shape[1])
+        if float(d[row, col]) < self.closest:
+            self.closest = float(d[row, col])
+            self.at = (float(f.t[row]), int(self.checker.ids[self.partner_cols[col]]))
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if not math.isfinite(self.closest):
+            return HOLDS, f"nobody stood still at {self.claim.place} while the robot was in the run"
+        reach = self.claim.distance or 0.8
+        text = (f"closest to someone standing at {self.claim.place}: {self.closest:.2f} m (agent {self.at[1]} at "
+                f"{_when(self.at[0])}; {reach:g} m or more asked)")
+        return (HOLDS if self.closest >= reach else FAILS), text
+
+
 class _RobotFollowPersonProbe(_Probe):
     def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
         super().__init__(claim, checker, cols, members)
@@ -1539,6 +1579,7 @@ _PROBES: dict[str, type[_Probe]] = {
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,
     "robot_stay": _RobotPlaceProbe, "robot_patrol": _RobotPatrolProbe,
     "robot_follow_person": _RobotFollowPersonProbe, "robot_passes": _RobotPassesProbe,
+    "robot_beside": _RobotBesideProbe,
     "robot_pickup": _RobotErrandProbe, "robot_dropoff": _RobotErrandProbe,
 }
 

@@ -24,6 +24,7 @@ from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation import approach_at_place
+from grove_tui.generation.beside_queue import beside
 from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
 from grove_tui.generation.routine_rooms import rooms_of_routines
 from grove_tui.generation.passed_spot import ends_off_the_spot
@@ -408,6 +409,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     # "via the fountain": a thing or a door is passed by its own point (where the report checks it), not
     # anywhere in the zone it stands in
     via_spots = [p for p in (_place_point(world, grid, v) for v in via if _is_spot(world, v)) if p is not None]
+    via_spots = beside(via_spots, formations, clearance, robot_planner.grid if robot_planner else None)  # not into a queue
     via_spots += gaps
     via_spots += [p for p in past if p not in via_spots]
     if start is None or goal is None:

@@ -45,6 +45,7 @@ from grove_tui.generation.guided_claims import guided_out_by
 from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.passing_look import passing_looks
+from grove_tui.generation.beside_queue import beside_claims
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.run_length import with_run_length
@@ -923,6 +924,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
     robot_row = _robot_row(asked_robot, robot, world, agents, _passed_groups(reading, groups, world))
+    robot_row = beside_claims(robot_row, asked_robot, groups, reading, robot, _robot_seconds(robot))  # not into a queue
     leader_of = next((g for g in reading.groups if g.robot_interaction == "follow" and g.destination), None)
     if asked_robot is None and robot_row is not None and robot is not None and leader_of is not None \
             and getattr(robot, "task", "cross") == "cross" and leader_of.destination:

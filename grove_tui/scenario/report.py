@@ -60,7 +60,8 @@ GROUP_CLAIMS = (
 )
 ROBOT_CLAIMS = ("robot_reach", "robot_via", "robot_stay", "robot_patrol", "robot_follow_person",
                 "robot_pickup",    # it stands `seconds` at the pick-up place of its errand
-                "robot_dropoff")   # it gets to the drop-off place after that stop, and stands there
+                "robot_dropoff",   # it gets to the drop-off place after that stop, and stands there
+                "robot_beside")    # it passes the people standing at a place beside them: never within `distance`
 CLAIM_KINDS = GROUP_CLAIMS + ROBOT_CLAIMS
 
 Point = tuple[float, float]
