@@ -25,6 +25,7 @@ from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldErr
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation import approach_at_place
 from grove_tui.generation.beside_queue import beside
+from grove_tui.generation.led_exit import nearest_exit
 from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
 from grove_tui.generation.routine_rooms import rooms_of_routines
 from grove_tui.generation.passed_spot import ends_off_the_spot
@@ -399,6 +400,10 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
         start = picker.pick(asked.location, towards=None)
         goal = goal or picker.pick(asked.location, towards=None, away_from=start)
 
+    if request.goal is None and task == "cross":  # "leads a family to the exit": the nearest of those that fit
+        start, goal = nearest_exit(world, reading, start, goal, lambda: _chosen_pair(
+            world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0],
+            lambda p: _place_point(world, grid, p), plan_path, notes)
     if task in ("wait", "follow"):
         if start is None:
             start = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0]

@@ -46,6 +46,7 @@ from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, 
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.passing_look import passing_looks
 from grove_tui.generation.beside_queue import beside_claims
+from grove_tui.generation.led_exit import led_exit_of, with_led_exit
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.run_length import with_run_length
@@ -877,6 +878,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     (`route_time.planned_routes`), which set how long a run needs for each place (without them,
     straight legs times a detour)."""
     sentence = sentence or reading
+    reading = with_led_exit(reading, robot, world)  # "leads a family to the exit": the nearest that fits
     by_reading = {g.reading_index: g for g in groups if getattr(g, "reading_index", None) is not None}
     counts = effective_counts(reading)
     asked_counts = effective_counts(sentence)
@@ -918,7 +920,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
         out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     asked_robot = reading.robot
-    guided = guided_exit(reading, groups, agents)
+    guided = led_exit_of(reading, guided_exit(reading, groups, agents), world)
     led = guided_index(reading)
     out = guided_out_by(out, led, guided, reading.groups[led].who if led is not None else None)
     if asked_robot is not None and guided is not None:
