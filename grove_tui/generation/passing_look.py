@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.analysis.outcomes import PASS_AT, PASS_BY
+from grove_tui.generation.draft import DraftNode
 from grove_tui.language.model import GroupReading, PromptReading
 from grove_tui.language.passing_moment import passing_moment
 from grove_tui.scenario.report import Claim
@@ -31,6 +32,21 @@ def _point(world: World, place: str) -> tuple[float, float] | None:
     if isinstance(obj, Door):
         return obj.inward_point(0.6)
     return None  # a zone: the people themselves are the moment's place
+
+
+def cued_as_it_passes(tree: DraftNode, group: GroupReading, reading: PromptReading) -> DraftNode:
+    """A look tied to the robot passing turns them to it as it passes (within PASS_AT), not as soon as it is
+    within a look's 10 m: a glance cued at 10 m fired at t = 0 and was over before the robot came by the desk."""
+    if group.robot_interaction != "look" or passing_moment(reading.prompt, group, reading.robot) is None:
+        return tree
+    return _cued(tree)
+
+
+def _cued(tree: DraftNode) -> DraftNode:
+    ports = dict(tree.ports)
+    if tree.node == "IsRobotClose" and float(ports.get("threshold", 0.0)) > PASS_AT:
+        ports["threshold"] = PASS_AT
+    return DraftNode(tree.node, ports, tuple(_cued(c) for c in tree.children))
 
 
 def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReading, world: World) -> list[Claim]:

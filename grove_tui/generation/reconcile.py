@@ -44,7 +44,7 @@ from grove_tui.generation.shared_queue import (default_service_time, queue_servi
 from grove_tui.generation.guided_claims import guided_out_by
 from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
-from grove_tui.generation.passing_look import passing_looks
+from grove_tui.generation.passing_look import cued_as_it_passes, passing_looks
 from grove_tui.generation.beside_queue import beside_claims
 from grove_tui.generation.led_exit import led_exit_of, with_led_exit
 from grove_tui.generation.queue_delay import wait_before_queuing
@@ -254,6 +254,7 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
         reacts_only = False
         if group.robot_interaction:
             tree, reacts_only = with_robot_interaction(tree, group)
+            tree = cued_as_it_passes(tree, group, reading)  # "looks up as the robot passes the desk"
         guided = False
         if index == guided_index(reading) and not group.robot_interaction and _base_intent(group) in ("evacuate",
                                                                                                       "walk"):

@@ -60,6 +60,11 @@ def test_the_look_is_checked_while_the_robot_passes_the_desk(guide):
     assert planned.moment == "pass" and planned.place == "information_desk" and planned.point is not None, planned
     assert "as the robot passes information_desk" in planned.asked
     checked = _look(report)
+    # the look is cued as the robot passes, not as soon as it is within a look's 10 m
+    xml = (run.bundle / run.op.agents[0].tree).read_text(encoding="utf-8")
+    assert 'threshold="4' in xml and 'threshold="10' not in xml, xml
+    assert checked.status == "holds", checked.evidence
+    checked = _look(report)
     assert "the robot passed information_desk from t = " in checked.evidence, checked.evidence
     assert "they looked from t = " in checked.evidence or checked.status == "fails", checked.evidence
 
