@@ -4,7 +4,8 @@
 by its words ("west_entrance is in check_in_hall, named before"), or the roi model picked one, and the
 robot drove there from wherever planning put it: 98 m to emergency_exit_east in one run. Where the exit is
 picked among several that fit, the robot (and the people it leads, who set off beside it) now go to the
-one nearest by planned path from where they set off (`nearest_exit`); the report's reading carries that
+one nearest by planned path from where they set off (`nearest_exit`; when nobody said where that is,
+not one it starts at: the nearest MIN_LEAD or more away); the report's reading carries that
 exit for the robot and the group (`with_led_exit`), and still says which others fit.
 """
 
@@ -24,7 +25,8 @@ from grove_tui.world.model import World
 
 Point = tuple[float, float]
 Subject = TypeVar("Subject", GroupReading, RobotReading)
-NEAR_GOAL = 3.0  # metres: the robot's goal this near an exit's point is that exit
+NEAR_GOAL = 3.0
+MIN_LEAD = 5.0  # metres: an exit nearer the start planning picked is where they already are, not led to  # metres: the robot's goal this near an exit's point is that exit
 
 
 def fitting_exits(world: World, reading: PromptReading | None) -> tuple[str, ...]:
@@ -60,6 +62,7 @@ def nearest_exit(world: World, reading: PromptReading | None, start: Point | Non
     fit = fitting_exits(world, reading)
     if not fit:
         return start, goal
+    picked_here = start is None
     start = start if start is not None else pick_start()
     lengths: dict[str, tuple[float, Point]] = {}
     for name in fit:
@@ -70,9 +73,15 @@ def nearest_exit(world: World, reading: PromptReading | None, start: Point | Non
             lengths[name] = (_length(plan_path(start, point, True)), point)
         except Exception:  # no way there: not a fitting exit for this start
             continue
+    if picked_here and any(length >= MIN_LEAD for length, _ in lengths.values()):
+        # nobody said where they are: a start planning picked beside an exit leads nobody anywhere (2 m, and
+        # "it started at west_fire_exit" ✗); of the exits MIN_LEAD or more away, the nearest
+        lengths = {n: v for n, v in lengths.items() if v[0] >= MIN_LEAD}
     if not lengths:
         return start, goal
     best = min(lengths, key=lambda n: (lengths[n][0], n))
+    notes[:] = [n for n in notes if not (n.startswith("the robot goes to ") and "the exit of the people it guides" in n
+                                         and not n.startswith(f"the robot goes to {best},"))]
     others = ", ".join(f"{n} {lengths[n][0]:.0f} m" for n in sorted(lengths, key=lambda n: lengths[n][0]) if n != best)
     notes.append(f"the robot leads them to {best}, the nearest of the exits that fit ({lengths[best][0]:.0f} m; "
                  f"{others})")
