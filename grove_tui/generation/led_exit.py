@@ -34,8 +34,8 @@ def fitting_exits(world: World, reading: PromptReading | None) -> tuple[str, ...
     if reading is None or reading.robot is None or reading.robot.task != "cross":
         return ()
     index = guided_index(reading)
-    if index is None:
-        return ()
+    if index is None or reading.groups[index].robot_interaction != "follow":
+        return ()  # evacuees it guides out leave by their own nearest exits (postprocess); it goes with them
     exits = [d.name for d in world.exits()]
     for subject in (reading.robot, reading.groups[index]):
         if subject.destination not in exits:
