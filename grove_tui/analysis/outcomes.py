@@ -1261,9 +1261,10 @@ class _RobotPlaceProbe(_Probe):
             self.trail.add(f.t, f.robot[:, None, :2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
         if self.claim.kind == "robot_reach" and self.claim.needs_seconds or \
-                self.claim.kind == "robot_via" and self.from_elsewhere:
+                self.claim.kind == "robot_via" and self.from_elsewhere and self.claim.zone is None:
             # a drive there, not its start ("start in ..." needs no time): arriving from elsewhere (arrival);
-            # "passes the desk" too: setting off at the desk is not passing it
+            # "passes the desk" too: setting off at the desk is not passing it. A room is passed through from
+            # inside it as well ("patrols the corridor" sets off in the corridor and drives along it)
             inside = self.arrivals.arrived(inside[:, None], np.ones((inside.size, 1), dtype=bool))[:, 0]
         if inside.any() and math.isinf(self.first):
             self.first = float(f.t[np.argmax(inside)])

@@ -26,7 +26,7 @@ class _Cells(Protocol):
     def cells(self, zone: str) -> np.ndarray: ...
 
 
-class _StartPicking(Protocol):
+class StartPicking(Protocol):
     @property
     def space(self) -> _Cells: ...
 
@@ -56,7 +56,7 @@ def _other_side(door: Door, zone: str) -> str | None:
     return None if door.exit or other in ("", "outside", zone) else other
 
 
-def crossing_start(world: World, picker: _StartPicking, zone: str, goal: Point) -> Point | None:
+def crossing_start(world: World, picker: StartPicking, zone: str, goal: Point) -> Point | None:
     """A free point by the wall of `zone` across from `goal` (not wedged in a corner: of the points by the
     wall within a quarter of the zone's width of the farthest, the one nearest the zone's anchor); None
     when the zone has no such point. The start picker's far side (80 % as far as the farthest point) is,

@@ -12,10 +12,10 @@ robot came to the desk from elsewhere (outcomes._RobotPlaceProbe).
 from __future__ import annotations
 
 import math
-from typing import Protocol
 
 import numpy as np
 
+from grove_tui.generation.crossing import StartPicking
 from grove_tui.world import World
 
 Point = tuple[float, float]
@@ -24,18 +24,7 @@ AIM = 8.0  # metres: of the points far enough, the one nearest this far (not the
 ACROSS = 110.0  # degrees: the goal is on the far side (the angle start-spot-goal at least this)
 
 
-class _Cells(Protocol):
-    def cells(self, zone: str) -> np.ndarray: ...
-
-
-class _Picking(Protocol):
-    @property
-    def space(self) -> _Cells: ...
-
-    def acceptable(self, p: Point) -> bool: ...
-
-
-def _candidates(world: World, picker: _Picking, spot: Point) -> list[np.ndarray]:
+def _candidates(world: World, picker: StartPicking, spot: Point) -> list[np.ndarray]:
     """Free floor the robot may start on, AWAY or more from `spot`: its own zone's first, then its
     neighbours' (through a door)."""
     own = world.zone_at(spot[0], spot[1])
@@ -54,7 +43,7 @@ def _candidates(world: World, picker: _Picking, spot: Point) -> list[np.ndarray]
     return out
 
 
-def _best(pts: np.ndarray, spot: Point, picker: _Picking, keep: np.ndarray | None = None) -> Point | None:
+def _best(pts: np.ndarray, spot: Point, picker: StartPicking, keep: np.ndarray | None = None) -> Point | None:
     if not len(pts):
         return None
     d = np.hypot(pts[:, 0] - spot[0], pts[:, 1] - spot[1])
@@ -76,7 +65,7 @@ def _angle(a: np.ndarray, spot: Point, b: Point) -> np.ndarray:
     return np.asarray(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))))
 
 
-def ends_off_the_spot(world: World, picker: _Picking, spot: Point | None, start: Point | None,
+def ends_off_the_spot(world: World, picker: StartPicking, spot: Point | None, start: Point | None,
                       goal: Point | None) -> tuple[Point | None, Point | None]:
     """(start, goal) for a robot that passes `spot`: a start within AWAY of it moved off it (to the side away
     from the goal when there is one), and a missing goal put on its far side; either left as it is when no

@@ -12,7 +12,7 @@ pairs whose planned path comes within `PASS_NEAR` of each of them.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from typing import Protocol
 
 import numpy as np
@@ -32,6 +32,8 @@ _ROBOT_NODES = ("Robot",)  # LookAtRobot, ApproachRobot, BlockRobot, AvoidRobot,
 
 class ReactingAgent(Protocol):
     @property
+    def id(self) -> int: ...
+    @property
     def start(self) -> Point: ...
     @property
     def targets(self) -> list[tuple[str, Point]]: ...
@@ -44,13 +46,14 @@ def reacts_to_robot(tree: DraftNode) -> bool:
     return any(any(word in n.node for word in _ROBOT_NODES) for n in tree.walk())
 
 
-def reacting_points(agents: Sequence[ReactingAgent], skip: set[int] = frozenset()) -> list[Point]:  # type: ignore[assignment]
+def reacting_points(agents: Sequence[ReactingAgent], skip: Collection[int] = frozenset()) -> list[Point]:
     """Where each person who reacts to the robot stays: its last place, else its start."""
     out: list[Point] = []
     for a in agents:
-        if getattr(a, "id", None) in skip or not reacts_to_robot(a.tree):
+        if a.id in skip or not reacts_to_robot(a.tree):
             continue
-        out.append(tuple(a.targets[-1][1]) if a.targets else tuple(a.start))  # type: ignore[arg-type]
+        x, y = a.targets[-1][1] if a.targets else a.start
+        out.append((float(x), float(y)))
     return out
 
 

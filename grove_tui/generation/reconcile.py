@@ -277,7 +277,9 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
                                    PACE_FACTORS.get(group.pace, 1.0), added, reacts_only, leader, guided))
     for i in unused:
         notes.append(f"dropped group '{drafts[i].label}' ({drafts[i].count}): the prompt states no such people")
-    return one_service_time_per_queue(_behind_their_leader(_at_the_followers_pace(out, reading), world))
+    out = _behind_their_leader(_at_the_followers_pace(out, reading), world)
+    served = one_service_time_per_queue([g.tree for g in out])  # one service time per counter
+    return [replace(g, tree=tree) if tree is not g.tree else g for g, tree in zip(out, served)]
 
 
 GUIDED_PLACEHOLDER = 60.0  # seconds behind the robot until planning knows its drive (guided.guided_seconds)

@@ -18,13 +18,10 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
-from typing import TypeVar
 
 from grove_tui.bt.format.manifest import NODES
 from grove_tui.generation.draft import DraftNode, DraftValue
 from grove_tui.scenario.report import GroupGrounding
-
-T = TypeVar("T")
 
 
 def default_service_time() -> float:
@@ -65,18 +62,13 @@ def _served(node: DraftNode, times: Mapping[str, DraftValue], only: DraftValue |
     return replace(node, children=tuple(_served(c, times, only) for c in node.children))
 
 
-def one_service_time_per_queue(groups: Sequence[T]) -> list[T]:
-    """`groups` (with a `tree`) with every Queue node at one service point served for the longest time any
-    of them gives it: the simulation's line serves everyone for the time its first joiner brought, so a
-    subset's default 10 s beside its group's 30 s made the line's pace depend on who arrived first."""
-    times = queue_service_times((g.tree for g in groups), set_only=True)  # type: ignore[attr-defined]
-    out = []
-    for g in groups:
-        tree = g.tree  # type: ignore[attr-defined]
-        if any(n.node == "Queue" for n in tree.walk()):
-            g = replace(g, tree=_served(_unserved(tree), times, None))  # type: ignore[type-var]
-        out.append(g)
-    return out
+def one_service_time_per_queue(trees: Sequence[DraftNode]) -> list[DraftNode]:
+    """`trees` with every Queue node at one service point served for the longest time any of them gives
+    it: the simulation's line serves everyone for the time its first joiner brought, so a subset's default
+    10 s beside its group's 30 s made the line's pace depend on who arrived first."""
+    times = queue_service_times(trees, set_only=True)
+    return [_served(_unserved(tree), times, None) if any(n.node == "Queue" for n in tree.walk()) else tree
+            for tree in trees]
 
 
 def _unserved(node: DraftNode) -> DraftNode:

@@ -322,7 +322,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # So is the person pushed, wheeled or helped along ("an orderly wheels a patient to radiology").
 LEADING_VERBS = frozenset("lead guide escort usher shepherd accompany take bring show push wheel roll carry help assist "
                           "support transport walk drag pull haul hurry rush move evacuate transfer ferry relocate "
-                          "piggyback cradle chaperone steer tow".split())
+                          "piggyback cradle chaperone steer tow steady".split())
 # What a person is carried or pushed in: "pushes his father's wheelchair" takes the father along.
 CARRYING_THINGS = frozenset("wheelchair pram buggy stroller pushchair bed trolley stretcher gurney chair scooter "
                             "cot crib".split())
@@ -404,7 +404,7 @@ for _interaction, _verbs in {
              "swerve",
     "block": "block obstruct confront threaten stop corner impede hinder intercept harass refuse barricade kick shove "
              "hit punch push slap smack thump whack bash ram barge heckle taunt abuse grab tip topple vandalise "
-             "vandalize headbutt fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend shoo hem",
+             "vandalize headbutt bar fight attack assault damage wreck rock climb ride trip sabotage smash overturn upend shoo hem",
 }.items():
     for _verb in _verbs.split():
         ROBOT_VERBS.setdefault(_verb, _interaction)

@@ -9,6 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.carried_things import counted_things
 from grove_tui.language.caused_motion import moves_along, route_after
 from grove_tui.language.moved_pronouns import moved_pronoun
+from grove_tui.language.owned_rides import own_ride
 from grove_tui.language.titled_couples import couple_end
 from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
@@ -81,7 +82,7 @@ class PeopleObjects:
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
         head = self.people.person_head(start, counted=q is not None)
-        if moved_pronoun(s, at) or ((couple := couple_end(s, at)) is not None and (leading or route_after(s, couple))):
+        if moved_pronoun(s, at) or own_ride(s, at) is not None or ((couple := couple_end(s, at)) is not None and (leading or route_after(s, couple))):
             return True  # "Mr Ahmed's son wheels him from ...", "escorts Mr and Mrs Obi from ...": taken along
         if not leading:  # "a nurse trundles a patient out of X-ray": taken along a route
             return head is not None and moves_along(s, p, head)

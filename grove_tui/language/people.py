@@ -26,6 +26,7 @@ from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
 from grove_tui.language.trader_people import trader_subject
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
 from grove_tui.language.second_verbs import second_verb
+from grove_tui.language.aided_names import aided_name
 from grove_tui.language.caused_motion import taken_name
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.moved_described import moved_described_person
@@ -115,7 +116,7 @@ class People:
                 told_as_he_or_she(s, i) or placed_person(s, i):  # "an old dear shrieks when she spots the robot"
             return True
         if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i) or moved_described_person(s, i) or \
-                (taken_name(s, i) and self.is_person_noun(i - 2)):  # "a carer guides Doris from ..."
+                ((taken_name(s, i) or aided_name(s, i)) and self.is_person_noun(i - 2)):  # "a carer guides Doris from ..."
             return True  # "a keeper wheels a lady ...", "pushes an elderly gent on a gurney"
         # A misspelt word for people ("childern", "passangers"): one edit from a person noun, long
         # enough that the edit cannot turn one real word into another, no name of the world, and no

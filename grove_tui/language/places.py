@@ -26,6 +26,7 @@ from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLAC
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
 from grove_tui.language.place_first_words import names_its_zone
+from grove_tui.language.room_exits import room_exit
 from grove_tui.language.place_compounds import KIND_HEADS, head_only_modifies, names_another_kind
 from grove_tui.language.tier_places import tier_place
 from grove_tui.language.tokens import name_tokens
@@ -274,6 +275,9 @@ class PlaceIndex:
 
     def match(self, phrase: Sequence[str]) -> PlaceMatch | None:
         """The place a phrase names; a zone wins a tie with its own fixtures ("the restroom")."""
+        way_out = room_exit(self, phrase)
+        if way_out is not None:
+            return way_out
         found = self.candidates(phrase)
         if not found:
             return None

@@ -13,6 +13,7 @@ from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
 from grove_tui.language.robot_journey import robots_own_way
+from grove_tui.language.robot_fronts import placed_before
 from grove_tui.language.robot_idioms import idiom_reaction, timed_by_robot, timed_reaction
 from grove_tui.language.robot_manner import manner_reaction
 from grove_tui.language.robot_requests import asks_to_be_led
@@ -77,7 +78,7 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         since = robot_at[n_mention - 1] if n_mention else -1
         found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r)
                  or motion_reaction_before(s, own, since, r) or _noun_after(s, ownset, r) or _passive(s, r)
-                 or goes_with_robot(s, own, r))
+                 or goes_with_robot(s, own, r) or placed_before(s, own, r))
         if found == "avoid" and _refused(s, own, r):
             return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
         if found in ("look", "approach", "follow") and _ignored(s, own, r):

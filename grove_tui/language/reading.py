@@ -99,6 +99,7 @@ from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
+from grove_tui.language.robot_bound import people_passed_stay
 from grove_tui.language.robot_followers import with_robot_followers
 from grove_tui.language.owners_stay import owners_stay_put
 from grove_tui.language.room_numbers import without_number_words
@@ -111,6 +112,7 @@ from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_passes import with_clause_passes
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
+from grove_tui.language.unnamed_counts import counted_unnamed
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -204,10 +206,11 @@ def _read(s: Sentence) -> PromptReading:
         groups.notes.append("no group of people found in the prompt")
         problems.append(NOBODY)
     else:
-        read = (groups.unnamed(robot_tokens),)
+        read = (counted_unnamed(s, groups.unnamed(robot_tokens), robot_tokens),)  # "a first-time donor lies ..."
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
+    read = people_passed_stay(s, robot, found, read)  # "threads through teens by the fountain, bound for the cinema"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     read = got_up_and_went(read)  # "a pair get up and pay at reception": they walk there
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,

@@ -22,6 +22,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.robot_asides import after_aside
+from grove_tui.language.robot_bound import bound_trip
 from grove_tui.language.robot_habits import habit_task
 from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
@@ -301,6 +302,11 @@ class RobotClauses:
                     roles[role] = name  # the last destination said, the first start and location
             texts.append(s.span(rc.tokens[0], rc.tokens[-1]))
         start, destination, location = roles["start"], roles["destination"], roles["location"]
+        if task in ("patrol", "cross") and (bound := bound_trip(s, found, read_from)) is not None:
+            # "weaves through the kids milling by the skeleton, bound for the café": its trip there
+            via = [v for v in [*via, *([location] if location else []), *([destination] if destination else [])]
+                   if v not in (bound, start)]
+            task, destination, location = "cross", bound, None
         if task in ("cross", "wait") and destination is None:
             # "the robot guides the visitors in the cafeteria out": from there to the nearest exit
             exit_ = next((e for rc in found if (e := out_exit(s, rc.tokens[0], [start, *via, location])) is not None),
