@@ -37,16 +37,19 @@ def _point(world: World, place: str) -> tuple[float, float] | None:
 def cued_as_it_passes(tree: DraftNode, group: GroupReading, reading: PromptReading) -> DraftNode:
     """A look tied to the robot passing turns them to it as it passes (within PASS_AT), not as soon as it is
     within a look's 10 m: a glance cued at 10 m fired at t = 0 and was over before the robot came by the desk."""
-    if group.robot_interaction != "look" or passing_moment(reading.prompt, group, reading.robot) is None:
+    moment = passing_moment(reading.prompt, group, reading.robot) if group.robot_interaction == "look" else None
+    if moment is None:
         return tree
-    return _cued(tree)
+    # as it passes a place: within PASS_AT; as it passes them: within PASS_BY, the window the look is checked in
+    # (cued at PASS_AT, queueing patients the robot passed at 4.2 m never turned: 2/6 looked)
+    return _cued(tree, PASS_AT if moment.place else PASS_BY)
 
 
-def _cued(tree: DraftNode) -> DraftNode:
+def _cued(tree: DraftNode, reach: float) -> DraftNode:
     ports = dict(tree.ports)
-    if tree.node == "IsRobotClose" and float(ports.get("threshold", 0.0)) > PASS_AT:
-        ports["threshold"] = PASS_AT
-    return DraftNode(tree.node, ports, tuple(_cued(c) for c in tree.children))
+    if tree.node == "IsRobotClose" and float(ports.get("threshold", 0.0)) > reach:
+        ports["threshold"] = reach
+    return DraftNode(tree.node, ports, tuple(_cued(c, reach) for c in tree.children))
 
 
 def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReading, world: World) -> list[Claim]:

@@ -37,6 +37,8 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
+from grove_tui.generation.passing_place import nearest_first, passing_points
+from grove_tui.generation.queue_pass import along_their_queues
 from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, unplaced_note, widest_gap
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
@@ -120,7 +122,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading)
         robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
         reactor_notes: list[str] = []
-        unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+        unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes, passing_points(
+                reading, post.groups, lambda p: _place_point(world, grid, p)))
         route = list(robot_spec.path) or [robot_spec.start, robot_spec.goal]
         rooms = list(dict.fromkeys([g.reactor_zone for g in unseen if g.reactor_zone] + rooms_to_pass(
             world, post.groups, route) + approach_at_place.rooms_to_pass(world, post.groups, route)
@@ -136,7 +139,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             robot_notes.append(f"the robot passes {'through ' + ', '.join(rooms) if rooms else 'by the places'} on "
                                f"its way, where people react to it")
             reactor_notes = []
-            unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+            unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes, passing_points(
+                reading, post.groups, lambda p: _place_point(world, grid, p)))
         notes.extend(robot_notes)
         notes.extend(reactor_notes)
         _at_a_pace_the_robot_keeps(post, robot_spec)
@@ -488,6 +492,8 @@ def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people:
     # past the people who react to it where the sentence puts them, else through the crowd
     placed = {g.index for g in post.groups if getattr(g, "reactor_zone", None)}
     staying = reacting_points(post.agents, skip=reactors)  # people reacting around a routine: where they stay
+    staying = along_their_queues(staying, predict_formations(  # a queue's people along it, not all at its head
+        world, grid, [a.document for a in post.agents if a.document is not None], post.goals))
     focus = [a.start for a in post.agents if a.id in reactors and a.group_index in placed] + staying or \
         list(people) or [a.start for a in post.agents]
     centre = (sum(p[0] for p in focus) / len(focus), sum(p[1] for p in focus) / len(focus))
@@ -774,7 +780,7 @@ REACTOR_BAND = {"ApproachRobot": (3.0, 6.0), "BlockRobot": (3.0, 6.0), "AvoidRob
 
 
 def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed, robot: RobotSpec | None, seed: int,
-                         notes: list[str]) -> list[GroupPlan]:
+                         notes: list[str], at: dict[int, Point] | None = None) -> list[GroupPlan]:
     """Groups whose whole activity is reacting to the robot, and whom the sentence places nowhere, start
     beside its route, a third of the way along (so the robot reaches them early in a run), in sight of
     it: a reaction gated on the robot showing up must not depend on where a model happened to spawn them.
@@ -808,6 +814,8 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
             polygon = world.zone(g.reactor_zone).polygon
             gap = shapely.distance(polygon, shapely.points(samples))
             order = np.lexsort((np.abs(arcs - min(max(0.3 * total, 4.0), total)), np.round(gap, 0)))
+        if at and g.index in at:  # "as the robot passes the ticket desk": where it passes the desk (passing_place.py)
+            order = nearest_first(samples, at[g.index])
         placed = None
         # the band the reaction needs first; in the sentence's zone, further off when the route passes by
         for widen in (0.0, 4.0) if g.reactor_zone is not None else (0.0,):
