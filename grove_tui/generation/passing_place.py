@@ -55,3 +55,17 @@ def passing_points(reading: PromptReading | None, groups: Sequence[_Group],
 def nearest_first(samples: np.ndarray, point: Point) -> np.ndarray:
     """The route's samples by their distance to `point`, nearest first (where the robot passes the place)."""
     return np.argsort(np.hypot(samples[:, 0] - point[0], samples[:, 1] - point[1]), kind="stable")
+
+
+def off_the_route(pts: np.ndarray, route: np.ndarray, near: float) -> np.ndarray:
+    """(N,) whether each of `pts` is at least `near` from every sample of the robot's `route`: a reactor's band
+    was measured from one anchor on the route only, and where the route bends a guard was stood 0.2 m from a
+    later leg of it (the robot came within 0.5 m of him as it passed the desk)."""
+    if not len(route) or not len(pts):
+        return np.ones(len(pts), dtype=bool)
+    gap = np.full(len(pts), np.inf)
+    for k in range(0, len(route), 256):
+        part = route[k:k + 256]
+        gap = np.minimum(gap, np.min(np.hypot(pts[:, None, 0] - part[None, :, 0], pts[:, None, 1] - part[None, :, 1]),
+                                     axis=1))
+    return gap >= near

@@ -37,7 +37,7 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
-from grove_tui.generation.passing_place import nearest_first, passing_points
+from grove_tui.generation.passing_place import nearest_first, off_the_route, passing_points
 from grove_tui.generation.queue_pass import along_their_queues
 from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, unplaced_note, widest_gap
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
@@ -822,7 +822,7 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
             for k in order[:300]:
                 anchor = samples[k]
                 found = _spots(world, space, sight, anchor, near, far + widen, robot.start, taken, g.count, rng,
-                               g.reactor_zone)
+                               g.reactor_zone, route=samples)
                 if found is not None:
                     placed = (found, float(arcs[k]) if total else 0.0)
                     break
@@ -889,7 +889,8 @@ def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
 
 def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
            robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator,
-           zone_name: str | None = None, behind: np.ndarray | None = None) -> list[Point] | None:
+           zone_name: str | None = None, behind: np.ndarray | None = None,
+           route: np.ndarray | None = None) -> list[Point] | None:
     """`count` free spots `near`..`far` from `anchor`, in sight of it, clear of the robot's start and of
     `taken`; with `behind` (a unit heading), none ahead of the anchor along it."""
     if zone_name is None:
@@ -905,6 +906,8 @@ def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.n
     ok = (d >= near) & (d <= far) & (robot >= ROBOT_CLEARANCE + 0.5)
     if behind is not None:
         ok &= (pts[:, 0] - anchor[0]) * behind[0] + (pts[:, 1] - anchor[1]) * behind[1] <= 0.0
+    if route is not None:  # `near` from the whole route, not only from the anchor (passing_place.py)
+        ok &= off_the_route(pts, route, near)
     if len(taken):
         others = np.asarray(taken, dtype=float)
         ok &= np.min(np.hypot(pts[:, None, 0] - others[None, :, 0], pts[:, None, 1] - others[None, :, 1]),

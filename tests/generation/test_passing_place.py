@@ -48,7 +48,7 @@ def test_they_stand_where_the_robot_passes_the_desk(tmp_path, world_name, spawn,
     route = [tuple(p) for p in run.op.robot.path]
     assert min(math.dist(p, point) for p in route) < 1.0, route  # the robot's way passes the desk
     for a in run.op.agents:  # each visitor stands beside the desk, not at the route's start
-        assert math.dist(a.start, point) <= 4.0, (a.start, point, run.op.notes)
+        assert math.dist(a.start, point) <= 4.5, (a.start, point, run.op.notes)
 
 
 def test_they_look_up_as_it_passes_the_desk_on_the_run(tmp_path):
@@ -90,3 +90,22 @@ def test_a_look_as_it_passes_them_is_cued_where_it_is_checked(tmp_path):
                        "as it passes.", (DraftGroup("patients", 6, "main_corridor", tree),), tmp_path / "b")
     xml = (run.bundle / run.op.agents[0].tree).read_text(encoding="utf-8")
     assert f'threshold="{PASS_BY:g}' in xml and 'threshold="4' not in xml, xml
+
+
+GUARDS = "Two guards turn to watch as the robot passes the information desk on its way to the cafe."
+
+
+@pytest.mark.parametrize("world_name, sentence, spawn", [
+    ("museum", GUARDS, "entrance_hall"),
+    ("museum", VISITORS, "entrance_hall"),
+    ("station", VISITORS, "ticket_hall"),
+])
+def test_they_stand_beside_the_route_not_on_a_later_leg_of_it(tmp_path, world_name, sentence, spawn):
+    """The band a reactor stands in is from the whole route: a guard stood 2 m from the point of the route by the
+    desk was 0.2 m from the leg before it, and the robot came within 0.5 m of him."""
+    world = load_world(world_name)
+    run = plan_by_hand(world, "normal", sentence, (DraftGroup("guards", 2, spawn, DraftNode("LookAtRobot", {})),),
+                       tmp_path / "b")
+    path = run.op.robot.path
+    for a in run.op.agents:
+        assert widest_gap(path, [a.start]) >= 2.0 - 0.05, (a.start, path)
