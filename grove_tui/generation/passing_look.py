@@ -69,5 +69,6 @@ def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReadi
             out.append(replace(c, asked=c.asked + f", as the robot passes {moment.place}", moment="pass",
                                place=moment.place, point=(round(point[0], 3), round(point[1], 3)), radius=PASS_AT))
         else:
-            out.append(replace(c, asked=c.asked + ", as the robot passes them", moment="pass", radius=PASS_BY))
+            out.append(replace(c, asked=c.asked + ", as the robot passes them", moment="pass", radius=PASS_BY,
+                               distance=PASS_BY))  # checked within PASS_BY of them, cued there
     return out
