@@ -28,6 +28,12 @@ def _noun_use(after: str, word: str) -> bool:
         verb_lemma(low) != low or low in lx.INTENT_VERBS or low in lx.HUMAN_SUBJECT_VERBS
 
 
+def _person_word(word: str) -> bool:
+    """Whether a word names a person ("8-year-olds girls" is not said; "the 8-year-olds clamber" is a noun)."""
+    low = word.lower()
+    return lemma(low) in lx.PERSON_NOUNS or low in lx.PERSON_NOUNS
+
+
 def with_age_heads(text: str) -> str:
     """The text with each hyphenated age read as what it says of the person (see the module doc)."""
     def said(m: re.Match[str]) -> str:
@@ -35,7 +41,7 @@ def with_age_heads(text: str) -> str:
         years = int(number) if number.isdigit() else lx.UNITS[number]
         child = years < 18 or m.group(3).lower() not in ("year", "yr")
         plural, after, word = m.group(4), m.group(5), m.group(6)
-        if _noun_use(after, word):
+        if _noun_use(after, word) or (plural and "'" not in after and not _person_word(word)):
             person = ("children" if plural else "child") if child else ("people" if plural else "person")
         elif plural:
             return m.group(0)  # "the 8-year-olds' party": no person word after it

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.closed_zones import closing_end
 from grove_tui.language.hazards import cue as hazard_cue
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
@@ -45,7 +46,9 @@ class EmptiedZones:
         s = self.s
         out: list[Place] = []
         for i in tokens:
-            end = self._emptied_subject_end(i) if s.low[i] not in ("'s", "’s") else self._hazard_owner_end(i)
+            emptied = self._emptied_subject_end(i) if s.low[i] not in ("'s", "’s") else self._hazard_owner_end(i)
+            closing = closing_end(s, i) if emptied is None and s.low[i] not in ("'s", "’s") else None
+            end = emptied if emptied is not None else closing
             if end is None:
                 continue
             first = end
@@ -58,6 +61,8 @@ class EmptiedZones:
             match = s.index.match(lemmas) if lemmas else None
             if match is None or match.kind != "zone" or self.people.is_person_phrase(lemmas):
                 continue
+            if closing is not None and not match.exact:
+                continue  # "when the clinic closes": the building's hours, not a room of it named
             self.context_zones.append(match.zone)
             out.append(Place("obj:start", first, words, match, end))
         return out

@@ -108,9 +108,22 @@ def _load_pipeline() -> Language:
         nlp: Language = module.load(exclude=["ner"])
         global _known_words
         # The pipeline's own vocabulary, taken before any prompt adds its words to the string store.
-        _known_words = frozenset(w for w in nlp.vocab.strings if w.isalpha() and w.islower())
+        _known_words = frozenset(w for w in nlp.vocab.strings if w.isalpha() and w.islower()) | _lemma_index(nlp)
         return nlp
     raise ParserError("the English parser is not available: no en_core_web_sm pipeline (" + "; ".join(errors) + ")")
+
+
+def _lemma_index(nlp: Language) -> frozenset[str]:
+    """The base forms the rule lemmatizer ships (WordNet's index of nouns, verbs, adjectives and
+    adverbs): words the training text never used are still English ("fright", "in fright" is no
+    misspelt "flight")."""
+    if "lemmatizer" not in nlp.pipe_names:
+        return frozenset()
+    lookups = getattr(nlp.get_pipe("lemmatizer"), "lookups", None)
+    if lookups is None or "lemma_index" not in lookups.tables:
+        return frozenset()
+    index = lookups.get_table("lemma_index")
+    return frozenset(w for pos in index.keys() for w in index[pos] if w.isalpha() and w.islower())
 
 
 def known_word(word: str) -> bool:

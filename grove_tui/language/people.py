@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.timer_people import timer_person
+from grove_tui.language.animal_idioms import animal_idiom_person
 from grove_tui.language.hyphen_counts import count_ends_at
 from grove_tui.language.compound_people import chain_end
 from grove_tui.language.gathering_verbs import gathering_verb
@@ -92,7 +93,7 @@ class People:
         if goes_along_a_route(s, i) or by_a_person_adjective(s, i):
             return True  # "the dispenser nips out of the pharmacy into the kitchen", "an elderly gent lingers"
         if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
-            return timer_person(s, i)  # "a first-timer": a person, though a timer is a thing
+            return timer_person(s, i) or animal_idiom_person(s, i)  # "a first-timer": a person, though a timer is a thing
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
             return False  # "the robot stands guard at the door": a duty, nobody
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i) or adjective_person(s, i):

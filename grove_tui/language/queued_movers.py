@@ -28,7 +28,8 @@ def queued_movers(index: PlaceIndex, groups: Sequence[GroupReading]) -> tuple[Gr
     """Groups read as going to the queue they were said to stand in start there instead."""
     out: list[GroupReading] = []
     for g in groups:
-        m = _QUEUED.search(g.text) if g.start is None else None
+        # (a start already said that is the queue itself, "Splash Falls shuts and the riders queuing for it ...")
+        m = _QUEUED.search(g.text) if g.start is None or g.start == g.destination else None
         if m is None:
             pass
         elif g.intent in _MOVING and g.destination is not None and queue_of(index, g.destination) == g.destination:

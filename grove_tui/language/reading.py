@@ -52,6 +52,7 @@ from grove_tui.language.queue_lengths import with_queue_lengths
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
+from grove_tui.language.mid_events import with_mid_events
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.past_drills import without_past_drills
 from grove_tui.language.post_verbs import as_work_at_posts
@@ -68,6 +69,7 @@ from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
 from grove_tui.language.singular_verbs import as_singular_verbs
 from grove_tui.language.age_nouns import with_age_heads
+from grove_tui.language.hyphened_people import with_whole_person_words
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
@@ -99,6 +101,7 @@ from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
+from grove_tui.language.guided_route import route_from_the_guided
 from grove_tui.language.robot_bound import people_passed_stay
 from grove_tui.language.robot_followers import with_robot_followers
 from grove_tui.language.owners_stay import owners_stay_put
@@ -149,11 +152,11 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_fronted_place_commas(without_urging_asides(without_worn_clothes(text, index)))  # "By the kiosks a toddler gapes": one toddler
-    text = with_age_heads(text)  # "his 4-year-old walks": "his 4-year-old child walks"
+    text = with_age_heads(with_whole_person_words(text))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
     text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
-    text = without_past_drills(with_fronted_ing_times(as_arm_escort(text)))  # "gives Al her arm to X": walks Al; "after a drill": over
+    text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
@@ -208,6 +211,8 @@ def _read(s: Sentence) -> PromptReading:
     else:
         read = (counted_unnamed(s, groups.unnamed(robot_tokens), robot_tokens),)  # "a first-time donor lies ..."
     places.scan_names({i for m in mentions for i in range(m.first, m.last + 1)})
+    first_robot_word = min((i for rc in found for i in rc.tokens), default=s.n)
+    robot = route_from_the_guided(robot, first_robot_word, mentions, read)  # "walk to the exit while the robot guides them"
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = people_passed_stay(s, robot, found, read)  # "threads through teens by the fountain, bound for the cinema"

@@ -40,6 +40,8 @@ _TASK_VERBS = lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERB
 _OFF_PHRASES = frozenset({("power", "down"), ("shut", "down"), ("switch", "off"), ("turn", "off"), ("power", "off")})
 # Words after a verb of motion that say the robot goes by ("rolls past", "glides by", "zips along").
 _PASSING_WORDS = frozenset("past by through along across over".split())
+# "waits at the desk until the robot leads her to check-in": the robot is the subject of the clause it opens
+_UNTIL = frozenset({"until", "till", "til", "untill"})
 # What the robot does for people where it stands ("hands out leaflets near the fountain", "greets
 # visitors at the entrance", "serves drinks at the bar"): a wait at the place.
 _SERVING_VERBS = frozenset("hand give greet welcome serve distribute offer dispense pour sell answer entertain "
@@ -116,7 +118,7 @@ class RobotClauses:
         before = first - 1
         command = before >= 0 and verb_lemma(low[before]) in lx.ROBOT_COMMAND_VERBS and (
             before == 0 or s.is_punct(before - 1) or low[before - 1] in lx.CLAUSE_STARTERS | {"please"})
-        subject = (first == 0 or s.is_punct(before) or low[before] in lx.CLAUSE_STARTERS
+        subject = (first == 0 or s.is_punct(before) or low[before] in lx.CLAUSE_STARTERS | _UNTIL
                    or s.w[before].sentence != s.w[first].sentence
                    or (s.w[before].pos == "NUM" and before > 0 and low[before - 1] == "at")  # "At 9 the robot ..."
                    or self._after_fronted_adverbial(i, first))
@@ -316,6 +318,8 @@ class RobotClauses:
                 destination, location, via = exit_, None, [v for v in via if v != start]
         if task is None or (task == "cross" and not (start or destination or via)
                             and not any(self._passes_by(rc.verb) for rc in found)):
+            if task == "cross" and guides is not None:  # "... walk to the exit while the robot guides them"
+                return RobotReading("cross", text=" ... ".join(texts), guides=guides)  # route: guided_route.py
             return None  # "when the robot comes near": it moves, but the sentence sets no route
         if task in ("wait", "patrol") and location is None:
             location = destination or (via[0] if via and task == "patrol" else None)
@@ -365,6 +369,8 @@ class RobotClauses:
         head = self.people.person_head(j + 1 if counted else j, counted=counted) if j < s.n else None
         if head is not None:
             return s.span(k, head)  # "the security guard", "the ticket inspector"
+        if k < s.n and s.low[k] in ("him", "her", "them", "us") and (k + 1 == s.n or s.w[k + 1].pos not in ("NOUN", "PROPN", "ADJ")):
+            return s.low[k]  # "leads her to check-in": the pronoun, not "her" as a determiner
         end = s.skip(k, lx.DETERMINERS | lx.NP_MODIFIERS)
         if end < s.n and (self.people.is_person_noun(end) or s.low[end] in ("him", "her", "them", "us")):
             return s.span(k, end)

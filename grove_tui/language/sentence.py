@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from functools import cached_property
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.handled_fixtures import handled_at
 from grove_tui.language.parser import Word
 from grove_tui.language.particle_names import known_compound
 from grove_tui.language.places import PlaceIndex
@@ -141,6 +142,8 @@ class Sentence:
         w = low[i]
         if i >= 2 and self.hyphen_inside(i - 1):
             return None  # "check-in", "drop-off": the particle of a hyphenated name, no preposition
+        if handled_at(low, i, self.index.knows):
+            return "at", 1  # "tinker with the pinsetters", "check out the SUV": at the fixture handled
         if i + 1 < self.n and (self.w[i + 1].pos in ("VERB", "AUX") or verb_lemma(low[i + 1]) in lx.INTENT_VERBS) \
                 and not self.index.knows(lemma(low[i + 1])) and low[i + 1] not in lx.DETERMINERS \
                 and not known_compound(low, i + 1, self.index.knows):  # "in make-up"

@@ -151,6 +151,16 @@ def test_a_reading_that_says_what_is_expected_passes_every_field():
     assert score.checks["places"] == [True] and score.checks["false_refusals"] == [True]
 
 
+def test_a_via_written_as_one_name_is_one_place_not_its_letters():
+    expected = {"count": {"kind": "exact", "value": 4}, "intent": "walk", "via": "kitchen", "destination": "boardroom"}
+    right = score_reading(_case([expected]), {"groups": [_group(via=["kitchen"], destination="boardroom")],
+                                              "unknown_places": []}, frozenset(NODES))
+    assert right.checks["via"] == [True] and right.checks["places"] == [True]
+    wrong = score_reading(_case([expected]), {"groups": [_group(via=["hallway"], destination="boardroom")],
+                                              "unknown_places": []}, frozenset(NODES))
+    assert wrong.checks["via"] == [False]
+
+
 def test_each_wrong_field_fails_on_its_own():
     expected = {"count": {"kind": "vague", "range": [2, 5]}, "intent": "wait", "location": "kitchen",
                 "wait_seconds": 300.0, "robot_reaction": None, "pace": "normal", "purpose": "coffee"}

@@ -308,6 +308,9 @@ def test_misspelt_places_are_corrected_and_the_correction_reported(worlds, world
 @pytest.mark.parametrize("world, prompt", [
     ("hospital", "Three visitors turn left at the lift lobby and walk to ward B."),  # "left" is no "lift"
     ("office", "Two colleagues walk to the kitchen."),
+    # words the parser's training text never used are still English: "fright" is no misspelt "flight"
+    ("airport", "A child hides behind her mother in fright when the robot comes near."),
+    ("museum", "A guard stands frozen in fright by the main entrance as the robot rolls up."),
 ])
 def test_real_words_are_not_corrected_into_places(worlds, world, prompt):
     reading = read(worlds, world, prompt)
