@@ -1051,6 +1051,9 @@ class _RobotAvoidProbe(_RobotProbe):
         return (HOLDS if k >= _need(self.claim, int(came.sum())) else FAILS), text
 
 
+from grove_tui.analysis.passing_window import PassingWindow  # noqa: E402
+
+
 class _RobotLookProbe(_RobotProbe):
     """A look at the robot while it is within LOOK_RANGE. A claim with `seconds` ("glance at it", "look at
     it": generation/look_span.py) asks for one look at least that long; one without ("stare at it", "watch
@@ -1068,6 +1071,7 @@ class _RobotLookProbe(_RobotProbe):
         self.passed: list[float] = []
         self.closest = math.inf
         self.looked: list[float] = []
+        self.window = PassingWindow()
 
     def _passing(self, f: _Frames, d: np.ndarray) -> np.ndarray:
         """(F, M) frames the robot is passing the claim's place (within its radius), else them (PASS_BY)."""
@@ -1079,6 +1083,11 @@ class _RobotLookProbe(_RobotProbe):
             if finite.size:
                 self.closest = min(self.closest, float(finite.min()))
             return np.broadcast_to((np.nan_to_num(near, nan=np.inf) <= (self.claim.radius or PASS_AT))[:, None], d.shape)
+        if self.claim.place is not None and self.claim.place in {z.name for z in self.checker.world.zones}:
+            # a zone passed ("as it passes the gateline"): while the robot is in it
+            xy = np.nan_to_num(f.robot[:, :2], nan=1e9)
+            inside = shapely.contains_xy(self.checker.zone_shape(self.claim.place), xy[:, 0], xy[:, 1])
+            return np.broadcast_to(np.asarray(inside, dtype=bool)[:, None], d.shape)
         finite = d[np.isfinite(d)]
         if finite.size:
             self.closest = min(self.closest, float(finite.min()))
@@ -1110,8 +1119,11 @@ class _RobotLookProbe(_RobotProbe):
         off = np.abs((bearing - f.yaw[:, self.cols] + np.pi) % (2 * np.pi) - np.pi)
         looking = sight & (off <= LOOK_ANGLE)
         if self.claim.moment == "pass":
-            # "looks up as the robot passes the desk": only the frames of that pass count
+            # "looks up as the robot passes the desk": only the frames of that pass count, each member's
+            # once in place (passing_window.py: the verdict recounts from the frames kept here)
             passing = self._passing(f, d)
+            self.window.add(f.t, sight & passing, looking & passing,
+                            np.hypot(f.vel[:, self.cols, 0], f.vel[:, self.cols, 1]))
             self.pass_times(f.t, passing)
             sight &= passing
             looking &= passing
@@ -1126,8 +1138,13 @@ class _RobotLookProbe(_RobotProbe):
         if not self.seen_robot:
             return self.no_robot()
         n = self.members
-        seen = self.in_sight * checker.sample_dt >= 1.0
         moment = self.claim.moment == "pass"
+        ids = [int(i) for i in checker.ids[self.cols]]
+        in_place = self.window.in_place(ids, events) if moment else None
+        if in_place is not None:  # each member's time near the passing robot once in place
+            counts = self.window.counted(in_place, checker.sample_dt)
+            self.in_sight, self.facing, self.longest, self.passed, self.looked = counts
+        seen = self.in_sight * checker.sample_dt >= 1.0
         what = self.claim.place or "them"
         if moment and not self.passed:
             reach = (self.claim.radius or PASS_AT) if self.claim.point is not None else PASS_BY
@@ -1156,6 +1173,8 @@ class _RobotLookProbe(_RobotProbe):
                 "they did not look at it then"
             text = (f"the robot passed {what} from {_when(self.passed[0])} to {_when(self.passed[1])}; {looked}; "
                     f"{text} while it passed")
+            if in_place is not None:
+                text += self.window.said(ids, in_place)
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 
@@ -1446,6 +1465,9 @@ class _RobotPassesProbe(_Probe):
         partners = f.pos[:, self.partner_cols]
         d = np.hypot(partners[..., 0] - f.robot[:, 0:1], partners[..., 1] - f.robot[:, 1:2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        if self.claim.low is not None:  # past them: the people standing there (one served walks off past it)
+            speed = np.hypot(f.vel[:, self.partner_cols, 0], f.vel[:, self.partner_cols, 1])
+            d = np.where(np.nan_to_num(speed, nan=np.inf) < _RobotBesideProbe.STANDING, d, np.inf)
         self.t.append(f.t[inside])
         self.d.append(np.where(np.isfinite(d[inside]), d[inside], np.inf))
 
@@ -1462,6 +1484,8 @@ class _RobotPassesProbe(_Probe):
                 return FAILS, f"nobody queued at {self.claim.place} for it to pass"
         d = np.where(t[:, None] >= there[None, :], d, np.inf)
         reach = self.claim.distance or 2.0
+        if self.claim.low is not None:  # "drives past them": beside them, one claim (generation/past_queue.py)
+            return _beside_verdict(self.claim, t, d, reach, checker.t_end)
         near = np.flatnonzero((d <= reach).any(axis=1)) if d.size else np.zeros(0, dtype=int)
         who = "of someone in the queue" if self.claim.place is not None else "of them"
         if near.size:
@@ -1471,6 +1495,28 @@ class _RobotPassesProbe(_Probe):
             k = int(np.argmin(d.min(axis=1)))
             text += f"; closest {float(d[k].min()):.1f} m at {_when(float(t[k]))}"
         return FAILS, text
+
+
+def _beside_verdict(claim: Claim, t: np.ndarray, d: np.ndarray, reach: float, t_end: float) -> tuple[str, str]:
+    """robot_passes said "past them": the nearest it came to one of them while they were there, within
+    `reach` (it did pass them) and no nearer than `claim.low` (beside them, not into them)."""
+    low = float(claim.low or 0.0)
+    who = f"someone standing in the queue at {claim.place}" if claim.place is not None else f"one of them in {claim.zone}"
+    if not d.size or not np.isfinite(d).any():
+        return FAILS, f"never passed them: the robot was never in {claim.zone} while they were there"
+    k = int(np.argmin(d.min(axis=1)))
+    j = int(np.argmin(d[k]))
+    closest = float(d[k, j])
+    agent = claim.partners[j] if j < len(claim.partners) else j
+    at = f"{closest:.2f} m from {who} (agent {agent} at {_when(float(t[k]))})"
+    if closest > reach:
+        return FAILS, f"never passed them: the nearest it came was {at}, {reach:g} m or nearer asked"
+    if closest < low:
+        return FAILS, f"went into them, not beside them: {at}; {low:g} m or more asked"
+    text = f"passed beside them: nearest {at}, between {low:g} and {reach:g} m"
+    if t.size and float(t[-1]) >= t_end - 0.5:  # still among them when the run ended: it may yet go into them
+        return UNCHECKED, f"{text} so far; the robot was still in {claim.zone} when the run ended: run it longer"
+    return HOLDS, text
 
 
 class _RobotBesideProbe(_Probe):

@@ -77,8 +77,8 @@ def beside_claims(row: RobotGrounding | None, asked: RobotReading | None, groups
         if v in (asked.destination, asked.location):
             continue
         members = tuple(m for g in groups if _stands_at(g, v, reading) for m in getattr(g, "member_ids", ()))
-        if not members:
-            continue
+        if not members or any(c.kind == "robot_passes" and set(c.partners) & set(members) for c in claims):
+            continue  # their passing has its claim already (through them, or past them: past_queue.py)
         for i, c in enumerate(claims):
             if c.kind == "robot_via" and c.place == v and c.point is not None:
                 gap = _gap(path, c.point) + 0.5

@@ -65,7 +65,11 @@ def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReadi
         if c.kind != "robot_look":
             out.append(c)
             continue
-        if point is not None:
+        if point is None and moment.place and world.zone_of_place(moment.place) == moment.place:
+            # "as it passes the gateline", a zone: while the robot is in it, not near them anywhere
+            out.append(replace(c, asked=c.asked + f", as the robot passes {moment.place}", moment="pass",
+                               place=moment.place, point=None))
+        elif point is not None:
             out.append(replace(c, asked=c.asked + f", as the robot passes {moment.place}", moment="pass",
                                place=moment.place, point=(round(point[0], 3), round(point[1], 3)), radius=PASS_AT))
         else:

@@ -25,6 +25,8 @@ from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldErr
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation import approach_at_place
 from grove_tui.generation.beside_queue import beside
+from grove_tui.generation.past_queue import beside_points
+from grove_tui.generation.goes_on_past import ends_off, goes_on
 from grove_tui.generation.led_exit import nearest_exit
 from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
 from grove_tui.generation.routine_rooms import rooms_of_routines
@@ -405,8 +407,10 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
         goal = goal or picker.pick(asked.location, towards=None, away_from=start)
 
     if request.goal is None and task == "cross":  # "leads a family to the exit": the nearest of those that fit
+        # its start as it would set off for the exit the reader picked (a pair across the scene for no exit
+        # set off from a restroom, and twenty followers stood ahead of it on its way out)
         start, goal = nearest_exit(world, reading, start, goal, lambda: _chosen_pair(
-            world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0],
+            world, grid, post, people, seed, picker, reactors, plan_path, None, goal)[0],
             lambda p: _place_point(world, grid, p), plan_path, notes)
     if task in ("wait", "follow"):
         if start is None:
@@ -418,6 +422,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     # "via the fountain": a thing or a door is passed by its own point (where the report checks it), not
     # anywhere in the zone it stands in
     via_spots = [p for p in (_place_point(world, grid, v) for v in via if _is_spot(world, v)) if p is not None]
+    via_spots += beside_points(reading, world, formations, robot_planner.grid if robot_planner else grid)  # "drives past them": by the line's first and last places
     via_spots = beside(via_spots, formations, clearance, robot_planner.grid if robot_planner else None)  # not into a queue
     via_spots += gaps
     via_spots += [p for p in past if p not in via_spots]
@@ -514,18 +519,20 @@ def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people:
         raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
     # Every pair around the formations first; through one only when no pair can go around.
     for may_cross in (False, True):
-        best: tuple[float, Point, Point, np.ndarray] | None = None
-        for _, a, b in pairs[:20]:
-            try:
-                path = plan_path(a, b, may_cross)
-            except PlanningError:
-                continue
-            gap = widest_gap(path, staying)  # past everyone who reacts to it, the first pair that does
-            if gap <= PASS_NEAR:
-                return a, b, path
-            best = best if best is not None and best[0] <= gap else (gap, a, b, path)
-        if best is not None:
-            return best[1], best[2], best[3]
+        # a pair that passes them and goes on first, one that ends beside them after (goes_on_past.py)
+        for tried, settle in ends_off(pairs, staying) if fixed_start is None and fixed_goal is None else [(pairs, True)]:
+            best: tuple[float, Point, Point, np.ndarray] | None = None
+            for _, a, b in tried[:20]:
+                try:
+                    path = plan_path(a, b, may_cross)
+                except PlanningError:
+                    continue
+                gap = widest_gap(path, staying)  # past everyone who reacts to it, the first pair that does
+                if gap <= PASS_NEAR:
+                    return goes_on(a, b, path, staying, candidates, plan_path, may_cross) if settle else (a, b, path)
+                best = best if best is not None and best[0] <= gap else (gap, a, b, path)
+            if best is not None and settle:
+                return goes_on(best[1], best[2], best[3], staying, candidates, plan_path, may_cross)
     raise GenerationError("no reachable start/goal pair for the robot near the scene")
 
 
@@ -777,6 +784,10 @@ def _at_a_pace_the_robot_keeps(post: PostProcessed, robot: RobotSpec) -> None:
 # reaction to show (an avoider must be inside its safe distance), not in the robot's way.
 REACTOR_BAND = {"ApproachRobot": (3.0, 6.0), "BlockRobot": (3.0, 6.0), "AvoidRobot": (1.5, 2.5),
                 "LookAtRobot": (2.0, 5.0)}
+# reactors who react from where they stand keep their band from the whole route (a guard stood 0.2 m from a
+# later leg of it); those who go to the robot (approach, block) only from their anchor: kept 3 m off every leg,
+# a receptionist started 6 m from the desk she holds and the robot was past it before she got there
+_GO_TO_IT = ("ApproachRobot", "BlockRobot")
 
 
 def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed, robot: RobotSpec | None, seed: int,
@@ -808,6 +819,7 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
                 continue  # guided people with no room behind the robot keep their start
         node = next((n.node for n in g.tree.walk() if n.node in REACTOR_BAND), "ApproachRobot")
         near, far = REACTOR_BAND[node]
+        goes_to_it = any(n.node in _GO_TO_IT for n in g.tree.walk())
         order = np.argsort(np.abs(arcs - min(max(0.3 * total, 4.0), total)), kind="stable") if total else np.arange(1)
         if g.reactor_zone is not None:
             # the sentence puts them in a zone: the route's points nearest to it first
@@ -822,7 +834,7 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
             for k in order[:300]:
                 anchor = samples[k]
                 found = _spots(world, space, sight, anchor, near, far + widen, robot.start, taken, g.count, rng,
-                               g.reactor_zone, route=samples)
+                               g.reactor_zone, route=None if goes_to_it else samples)
                 if found is not None:
                     placed = (found, float(arcs[k]) if total else 0.0)
                     break

@@ -46,6 +46,7 @@ from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, 
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
 from grove_tui.generation.passing_look import cued_as_it_passes, passing_looks
 from grove_tui.generation.beside_queue import beside_claims
+from grove_tui.generation.past_queue import past_or_through
 from grove_tui.generation.led_exit import led_exit_of, with_led_exit
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
@@ -1345,10 +1346,10 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
             for group in (g for g in staying if g.zone == zone):
                 # "drives through the queue", "threads its way through the crowd of visitors in the waiting
                 # room": through the people there, while they are there, not only through the room
-                claims.append(Claim("robot_passes", f"through the {group.label}s in {zone}",
-                                    f"drive through {zone} past them", zone=zone, place=group.queue_at,
-                                    partners=group.members, distance=PASSING_DISTANCE,
-                                    needs_seconds=round(seconds * 1.3 + 10.0, 1)))
+                claims.append(past_or_through(Claim(  # "past them": beside them, one claim (past_queue.py)
+                    "robot_passes", f"through the {group.label}s in {zone}", f"drive through {zone} past them",
+                    zone=zone, place=group.queue_at, partners=group.members, distance=PASSING_DISTANCE,
+                    needs_seconds=round(seconds * 1.3 + 10.0, 1)), asked, group.label))
         if asked.destination:
             kind = "robot_patrol" if asked.task == "patrol" else "robot_reach"
             plan_text = f"{'patrol to' if kind == 'robot_patrol' else 'drive to'} {asked.destination}"
