@@ -1484,6 +1484,13 @@ class _RobotPassesProbe(_Probe):
                 return FAILS, f"nobody queued at {self.claim.place} for it to pass"
         d = np.where(t[:, None] >= there[None, :], d, np.inf)
         reach = self.claim.distance or 2.0
+        if self.claim.low is not None and self.claim.place is not None:
+            # past a queue: the people in it, from their join until served (then they step aside, off it)
+            served = np.full(n, np.inf)
+            for j, agent in enumerate(self.claim.partners[:n]):
+                done = [e.t for e in events.get(agent, ()) if e.kind == "queue_served" and e.detail == self.claim.place]
+                served[j] = min(done) if done else math.inf
+            d = np.where(t[:, None] < served[None, :], d, np.inf)
         if self.claim.low is not None:  # "drives past them": beside them, one claim (generation/past_queue.py)
             return _beside_verdict(self.claim, t, d, reach, checker.t_end)
         near = np.flatnonzero((d <= reach).any(axis=1)) if d.size else np.zeros(0, dtype=int)

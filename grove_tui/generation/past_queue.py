@@ -14,6 +14,7 @@ came to someone standing there between BESIDE and PASS_BY), not a second robot_b
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import replace
 
@@ -44,8 +45,8 @@ SIDE = 1.6  # metres from the line's centre to the robot's: BESIDE with room for
 def beside_points(reading: PromptReading | None, world: World, formations: Sequence[Formation],
                   blocked: OccupancyGrid | None) -> list[Point]:
     """For each formation where people the robot passes beside stand: points SIDE off its line, by its
-    second place (the first is being served, and served people step off there) and a place beyond its last,
-    on the side with free floor; a conversation: the nearest free floor to its centre (beside_queue.beside)."""
+    second place (the first is being served) and a place beyond its last, on the side with free floor and
+    SIDE from where served people step aside to stand; a conversation: the nearest free floor to its centre (beside_queue.beside)."""
     if not passes_beside(reading):
         return []
     zones = set(passed_zones(reading, world).values())
@@ -64,18 +65,31 @@ def beside_points(reading: PromptReading | None, world: World, formations: Seque
             continue
         u = along / norm
         n = np.array([-u[1], u[0]])
-        ends = [slots[min(1, len(slots) - 1)], slots[-1] + u * 0.8]
+        back = slots[-1] + u * 0.8
         best: list[Point] | None = None
-        for off in (SIDE, SIDE + 0.4, SIDE + 0.8, SIDE + 1.2):  # the nearest side with free floor at both
+        for off in (SIDE, SIDE + 0.4, SIDE + 0.8, SIDE + 1.2):  # the nearest side with free floor
             for side in (1.0, -1.0):
-                pts = [e + side * off * n for e in ends]
-                if blocked is None or all(blocked.is_free(float(p[0]), float(p[1])) for p in pts):
-                    best = [(round(float(p[0]), 3), round(float(p[1]), 3)) for p in pts]
+                # from its second place back (the first is being served), the first clear of where served
+                # people step aside to stand (one stood 0.8 m from the robot there)
+                fronts = [e + side * off * n for e in slots[min(1, len(slots) - 1):]]
+                end = back + side * off * n
+                if not self_free(blocked, end, f.spots):
+                    continue
+                front = next((p for p in fronts if self_free(blocked, p, f.spots)), None)
+                if front is not None:
+                    best = [(round(float(p[0]), 3), round(float(p[1]), 3)) for p in (front, end)]
                     break
             if best is not None:
                 break
+        ends = [slots[min(1, len(slots) - 1)], back]
         out.extend(best if best is not None else [(float(e[0]), float(e[1])) for e in ends])
     return out
+
+
+def self_free(blocked: OccupancyGrid | None, p: np.ndarray, aside: Sequence[Point]) -> bool:
+    """Whether the robot may pass by `p`: free floor, SIDE from where served people stand aside."""
+    return (blocked is None or blocked.is_free(float(p[0]), float(p[1]))) and \
+        all(math.dist((float(p[0]), float(p[1])), q) >= SIDE for q in aside)
 
 
 def _zone(world: World, p: Point) -> str | None:

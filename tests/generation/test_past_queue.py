@@ -63,7 +63,7 @@ def test_one_claim_of_the_passing_beside_them(past):
 
 def test_the_robot_passes_beside_the_queue_in_the_run(past):
     world, run = past
-    report = run.run(110.0)
+    report = run.run(160.0)
     claim = next(c for c in report.robot.claims if c.kind == "robot_passes")
     assert claim.status == "holds", claim.evidence
     assert "passed beside them: nearest" in claim.evidence, claim.evidence
