@@ -1521,7 +1521,8 @@ def _beside_verdict(claim: Claim, t: np.ndarray, d: np.ndarray, reach: float, t_
     if closest < low:
         return FAILS, f"went into them, not beside them: {at}; {low:g} m or more asked"
     text = f"passed beside them: nearest {at}, between {low:g} and {reach:g} m"
-    if t.size and float(t[-1]) >= t_end - 0.5:  # still among them when the run ended: it may yet go into them
+    if t.size and float(t[-1]) >= t_end - 0.5 and t_end < (claim.needs_seconds or 0.0):
+        # still among them when a run shorter than its way ended: it may yet go into them
         return UNCHECKED, f"{text} so far; the robot was still in {claim.zone} when the run ended: run it longer"
     return HOLDS, text
 

@@ -77,18 +77,20 @@ def beside_claims(row: RobotGrounding | None, asked: RobotReading | None, groups
         if v in (asked.destination, asked.location):
             continue
         members = tuple(m for g in groups if _stands_at(g, v, reading) for m in getattr(g, "member_ids", ()))
-        if not members or any(c.kind == "robot_passes" and set(c.partners) & set(members) for c in claims):
-            continue  # their passing has its claim already (through them, or past them: past_queue.py)
+        if not members:
+            continue
         for i, c in enumerate(claims):
             if c.kind == "robot_via" and c.place == v and c.point is not None:
                 gap = _gap(path, c.point) + 0.5
                 if c.radius < gap <= PASS_AT:
                     claims[i] = replace(c, radius=round(gap, 2), plan=c.plan + f", at the edge of the people there "
                                         f"({gap - 0.5:.1f} m from its point)")
+        if any(c.kind == "robot_passes" and set(c.partners) & set(members) for c in claims):
+            continue  # their passing has its claim already (through them, or past them: past_queue.py)
         claims.append(Claim("robot_beside", f"pass beside the people at {v}, not into them",
                             f"pass {v} at the edge of the people there", place=v, partners=members,
                             distance=BESIDE, needs_seconds=round(robot_seconds * 1.3 + 10.0, 1)))
-    if len(claims) == len(row.claims):
+    if tuple(claims) == tuple(row.claims):
         return row
     return replace(row, claims=tuple(claims))
 
