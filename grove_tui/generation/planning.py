@@ -44,6 +44,7 @@ from grove_tui.generation.queue_pass import along_their_queues
 from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, unplaced_note, widest_gap
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
+from grove_tui.generation.waits_for_watchers import held_for_watchers
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
@@ -146,6 +147,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         notes.extend(robot_notes)
         notes.extend(reactor_notes)
         _at_a_pace_the_robot_keeps(post, robot_spec)
+        robot_spec = held_for_watchers(post, robot_spec, reading)  # "... look at the robot as it passes": once in place
         for g in unseen:
             notes.append(unplaced_note(world, g.label, g.spawn, g.reactor_zone, robot_spec.task,  # what kept them
                                        list(robot_spec.path) or [robot_spec.start, robot_spec.goal]))
