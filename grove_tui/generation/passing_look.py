@@ -14,9 +14,9 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.analysis.outcomes import PASS_AT, PASS_BY
+from grove_tui.bt.format.document import TreeDocument
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.model import GroupReading, PromptReading
-from grove_tui.language.passing_moment import passing_moment
 from grove_tui.scenario.report import Claim
 from grove_tui.world.model import Door, Entity, World
 
@@ -34,15 +34,24 @@ def _point(world: World, place: str) -> tuple[float, float] | None:
     return None  # a zone: the people themselves are the moment's place
 
 
+# People who look as the robot passes them where they stay (a queue, a wait) look once there: within this many
+# metres of the place their routine walks them to, or of their queue's counter with the line behind it.
+IN_PLACE = 1.5
+_STAYING = frozenset({"queue", "wait", "converse"})
+_HELD_REACTIONS = frozenset({"ApproachRobot", "BlockRobot"})  # their own posts (approach/block_at_place.py)
+
+
 def cued_as_it_passes(tree: DraftNode, group: GroupReading, reading: PromptReading) -> DraftNode:
     """A look tied to the robot passing turns them to it as it passes (within PASS_AT), not as soon as it is
-    within a look's 10 m: a glance cued at 10 m fired at t = 0 and was over before the robot came by the desk."""
-    moment = passing_moment(reading.prompt, group, reading.robot) if group.robot_interaction == "look" else None
-    if moment is None:
+    within a look's 10 m: a glance cued at 10 m fired at t = 0 and was over before the robot came by the desk.
+    People who stay somewhere look once there: a patient who spawned beside the robot's start looked at the
+    waiting robot at t = 0, once only, and never as it passed the queue (an IsAtPosition, pointed by in_place)."""
+    if group.robot_interaction != "look" or not group.reacts_as_robot_passes:
         return tree
     # as it passes a place: within PASS_AT; as it passes them: within PASS_BY, the window the look is checked in
     # (cued at PASS_AT, queueing patients the robot passed at 4.2 m never turned: 2/6 looked)
-    return _cued(tree, PASS_AT if moment.place else PASS_BY)
+    cued = _cued(tree, PASS_AT if group.passed_place else PASS_BY)
+    return _once_there(cued) if (group.routine or group.intent) in _STAYING else cued
 
 
 def _cued(tree: DraftNode, reach: float) -> DraftNode:
@@ -52,26 +61,56 @@ def _cued(tree: DraftNode, reach: float) -> DraftNode:
     return DraftNode(tree.node, ports, tuple(_cued(c, reach) for c in tree.children))
 
 
+def _once_there(tree: DraftNode) -> DraftNode:
+    children = tuple(_once_there(c) for c in tree.children)
+    if children and children[0].node == "IsRobotClose" and not any(c.node == "IsAtPosition" for c in children):
+        children = (children[0], DraftNode("IsAtPosition", {"tolerance": IN_PLACE}), *children[1:])
+    return DraftNode(tree.node, dict(tree.ports), children)
+
+
+def in_place(document: TreeDocument, members: int) -> None:
+    """Point the IsAtPosition of a look cued once they are there (cued_as_it_passes) at the place their routine
+    puts them: the queue's counter, with the line of `members` behind it, else the last place they walk to;
+    without such a place the check is dropped (they look wherever they are), in place."""
+    places = [e for e in document.nodes() if e.id in ("Queue", "GoTo") and e.get("x") is not None]
+    queue = next((e for e in places if e.id == "Queue"), None)
+    there = queue or (places[-1] if places else None)
+    for element in list(document.nodes()):
+        kids = element.children
+        for i, check in enumerate(kids):
+            if (check.id != "IsAtPosition" or i == 0 or kids[i - 1].id != "IsRobotClose"
+                    or check.get("target_x") is not None or check.get("goal_id") is not None
+                    or any(k.id in _HELD_REACTIONS for k in kids)):
+                continue
+            if there is None:
+                del kids[i]
+                break
+            line = float(queue.get("spacing") or 0.6) * max(members - 1, 0) if queue is not None else 0.0
+            check.set("target_x", str(there.get("x")))
+            check.set("target_y", str(there.get("y")))
+            check.set("tolerance", f"{min(IN_PLACE + line, 10.0):.2f}")
+
+
 def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReading, world: World) -> list[Claim]:
     """The group's look claim tied to the moment the robot passes, when the sentence ties it there."""
     if not any(c.kind == "robot_look" for c in claims):
         return claims
-    moment = passing_moment(reading.prompt, group, reading.robot)
-    if moment is None:
+    passed = group.passed_place
+    if not group.reacts_as_robot_passes:
         return claims
-    point = _point(world, moment.place) if moment.place else None
+    point = _point(world, passed) if passed else None
     out = []
     for c in claims:
         if c.kind != "robot_look":
             out.append(c)
             continue
-        if point is None and moment.place and world.zone_of_place(moment.place) == moment.place:
+        if point is None and passed and world.zone_of_place(passed) == passed:
             # "as it passes the gateline", a zone: while the robot is in it, not near them anywhere
-            out.append(replace(c, asked=c.asked + f", as the robot passes {moment.place}", moment="pass",
-                               place=moment.place, point=None))
+            out.append(replace(c, asked=c.asked + f", as the robot passes {passed}", moment="pass",
+                               place=passed, point=None))
         elif point is not None:
-            out.append(replace(c, asked=c.asked + f", as the robot passes {moment.place}", moment="pass",
-                               place=moment.place, point=(round(point[0], 3), round(point[1], 3)), radius=PASS_AT))
+            out.append(replace(c, asked=c.asked + f", as the robot passes {passed}", moment="pass",
+                               place=passed, point=(round(point[0], 3), round(point[1], 3)), radius=PASS_AT))
         else:
             out.append(replace(c, asked=c.asked + ", as the robot passes them", moment="pass", radius=PASS_BY,
                                distance=PASS_BY))  # checked within PASS_BY of them, cued there

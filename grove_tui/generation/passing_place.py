@@ -18,7 +18,6 @@ from typing import Protocol
 import numpy as np
 
 from grove_tui.language.model import PromptReading
-from grove_tui.language.passing_moment import passing_moment
 
 Point = tuple[float, float]
 
@@ -43,10 +42,10 @@ def passing_points(reading: PromptReading | None, groups: Sequence[_Group],
         index = g.reading_index
         if not g.reacts_only or index is None or index >= len(reading.groups):
             continue
-        moment = passing_moment(reading.prompt, reading.groups[index], reading.robot)
-        if moment is None or moment.place is None:
+        passed = reading.groups[index].passed_place
+        if not reading.groups[index].reacts_as_robot_passes or passed is None:
             continue
-        point = point_of(moment.place)
+        point = point_of(passed)
         if point is not None:
             out[g.index] = (float(point[0]), float(point[1]))
     return out

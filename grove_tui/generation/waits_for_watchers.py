@@ -17,7 +17,6 @@ import numpy as np
 
 from grove_tui.generation.postprocess import PostProcessed
 from grove_tui.language.model import PromptReading
-from grove_tui.language.passing_moment import passing_moment
 from grove_tui.scenario.model import RobotSpec
 
 WALK_DETOUR = 1.3  # a walked path is about this much longer than the straight line (doors, furniture)
@@ -35,7 +34,7 @@ def held_for_watchers(post: PostProcessed, robot: RobotSpec, reading: PromptRead
     watching = {g.index for g in post.groups
                 if not g.reacts_only and g.reading_index is not None and g.reading_index < len(reading.groups)
                 and reading.groups[g.reading_index].robot_interaction is not None
-                and passing_moment(reading.prompt, reading.groups[g.reading_index], reading.robot) is not None}
+                and reading.groups[g.reading_index].reacts_as_robot_passes}
     if not watching:
         return robot
     path = np.asarray(robot.path, dtype=float).reshape(-1, 2)

@@ -7,14 +7,15 @@ neither. This reads it from the sentence: whether the words right after the grou
 happens as the robot passes, and which place it passes there (the robot's via, when its clause is that one).
 
     passing_moment(prompt, group, robot)  # None, or a PassingMoment (place: the place passed, or None)
+    with_passing_moments(prompt, reading)  # the reading with each reacting group's moment in its fields
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from grove_tui.language.model import GroupReading, RobotReading
+from grove_tui.language.model import GroupReading, PromptReading, RobotReading
 
 _WHEN = r"(?:as|when|while|whenever|once|each\s+time|every\s+time|the\s+moment|just\s+as)"
 _WHO = r"(?:the\s+robot|it|the\s+machine|the\s+droid)"
@@ -46,3 +47,13 @@ def passing_moment(prompt: str, group: GroupReading, robot: RobotReading | None)
     if robot is not None and robot.via and said and clause.startswith(said):
         place = robot.via[0]  # "as the robot passes the desk": the robot's clause is this one, its via the desk
     return PassingMoment(place)
+
+
+def with_passing_moments(prompt: str, reading: PromptReading) -> PromptReading:
+    """`reading` with the groups whose reaction is tied to the robot passing marked so (reacts_as_robot_passes,
+    passed_place): read here, from the sentence, so planning never reads the sentence again."""
+    groups = []
+    for g in reading.groups:
+        moment = passing_moment(prompt, g, reading.robot) if g.robot_interaction is not None else None
+        groups.append(g if moment is None else replace(g, reacts_as_robot_passes=True, passed_place=moment.place))
+    return replace(reading, groups=tuple(groups))
