@@ -69,6 +69,8 @@ FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep with
 LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
 LOOK_SHARE = 0.6  # "stare at", "watch": facing it for most of the time it is within LOOK_RANGE
+PASS_AT = 4.0  # metres: a robot within this of a place's point is passing it ("as the robot passes the desk")
+PASS_BY = 5.0  # metres: a robot within this of someone is passing them ("as it goes by")
 GLANCE_SECONDS = 1.0  # "glance at", "look at": facing it at least once this long while within LOOK_RANGE
 AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
 AVOID_MOVED = 0.5  # metres moved away while it was near
@@ -1049,6 +1051,9 @@ class _RobotAvoidProbe(_RobotProbe):
         return (HOLDS if k >= _need(self.claim, int(came.sum())) else FAILS), text
 
 
+from grove_tui.analysis.passing_window import PassingWindow  # noqa: E402
+
+
 class _RobotLookProbe(_RobotProbe):
     """A look at the robot while it is within LOOK_RANGE. A claim with `seconds` ("glance at it", "look at
     it": generation/look_span.py) asks for one look at least that long; one without ("stare at it", "watch
@@ -1062,6 +1067,45 @@ class _RobotLookProbe(_RobotProbe):
         self.run = np.zeros(m)  # frames of the look going on
         self.longest = np.zeros(m)  # frames of the longest look
         self.seen_robot = False
+        # a look tied to the robot passing (claim.moment "pass"): when it passed, how near it came, when they looked
+        self.passed: list[float] = []
+        self.closest = math.inf
+        self.looked: list[float] = []
+        self.window = PassingWindow()
+
+    def _passing(self, f: _Frames, d: np.ndarray) -> np.ndarray:
+        """(F, M) frames the robot is passing the claim's place (within its radius), else them (PASS_BY)."""
+        assert f.robot is not None
+        if self.claim.point is not None:
+            px, py = self.claim.point
+            near = np.hypot(f.robot[:, 0] - px, f.robot[:, 1] - py)
+            finite = near[np.isfinite(near)]
+            if finite.size:
+                self.closest = min(self.closest, float(finite.min()))
+            return np.broadcast_to((np.nan_to_num(near, nan=np.inf) <= (self.claim.radius or PASS_AT))[:, None], d.shape)
+        if self.claim.place is not None and self.claim.place in {z.name for z in self.checker.world.zones}:
+            # a zone passed ("as it passes the gateline"): while the robot is in it
+            xy = np.nan_to_num(f.robot[:, :2], nan=1e9)
+            inside = shapely.contains_xy(self.checker.zone_shape(self.claim.place), xy[:, 0], xy[:, 1])
+            return np.broadcast_to(np.asarray(inside, dtype=bool)[:, None], d.shape)
+        finite = d[np.isfinite(d)]
+        if finite.size:
+            self.closest = min(self.closest, float(finite.min()))
+        return np.isfinite(d) & (d <= PASS_BY)
+
+    def pass_times(self, t: np.ndarray, passing: np.ndarray) -> None:
+        rows = passing.any(axis=1)
+        if rows.any():
+            times = t[rows]
+            self.passed = [min(self.passed[0], float(times[0])) if self.passed else float(times[0]),
+                           max(self.passed[1], float(times[-1])) if self.passed else float(times[-1])]
+
+    def look_times(self, t: np.ndarray, looking: np.ndarray) -> None:
+        rows = looking.any(axis=1)
+        if rows.any():
+            times = t[rows]
+            self.looked = [min(self.looked[0], float(times[0])) if self.looked else float(times[0]),
+                           max(self.looked[1], float(times[-1])) if self.looked else float(times[-1])]
 
     def add(self, f: _Frames) -> None:
         if f.robot is None or not self.cols.size:
@@ -1074,6 +1118,16 @@ class _RobotLookProbe(_RobotProbe):
         bearing = np.arctan2(dy, dx)
         off = np.abs((bearing - f.yaw[:, self.cols] + np.pi) % (2 * np.pi) - np.pi)
         looking = sight & (off <= LOOK_ANGLE)
+        if self.claim.moment == "pass":
+            # "looks up as the robot passes the desk": only the frames of that pass count, each member's
+            # once in place (passing_window.py: the verdict recounts from the frames kept here)
+            passing = self._passing(f, d)
+            self.window.add(f.t, sight & passing, looking & passing,
+                            np.hypot(f.vel[:, self.cols, 0], f.vel[:, self.cols, 1]))
+            self.pass_times(f.t, passing)
+            sight &= passing
+            looking &= passing
+            self.look_times(f.t, looking)
         self.in_sight += sight.sum(axis=0)
         self.facing += looking.sum(axis=0)
         for row in looking:
@@ -1084,7 +1138,21 @@ class _RobotLookProbe(_RobotProbe):
         if not self.seen_robot:
             return self.no_robot()
         n = self.members
+        moment = self.claim.moment == "pass"
+        ids = [int(i) for i in checker.ids[self.cols]]
+        in_place = self.window.in_place(ids, events) if moment else None
+        if in_place is not None:  # each member's time near the passing robot once in place
+            counts = self.window.counted(in_place, checker.sample_dt)
+            self.in_sight, self.facing, self.longest, self.passed, self.looked = counts
         seen = self.in_sight * checker.sample_dt >= 1.0
+        what = self.claim.place or "them"
+        if moment and not self.passed:
+            reach = (self.claim.radius or PASS_AT) if self.claim.point is not None else PASS_BY
+            closest = f" (closest {self.closest:.1f} m)" if math.isfinite(self.closest) else ""
+            return FAILS, f"the robot never passed {what}: it never came within {reach:g} m{closest}"
+        if moment and not seen.any():
+            return FAILS, (f"the robot passed {what} from {_when(self.passed[0])} to {_when(self.passed[1])}, "
+                           f"never within {LOOK_RANGE:g} m of them for 1 s then")
         if not seen.any():
             return FAILS, f"the robot never came within {LOOK_RANGE:g} m of them"
         share = np.divide(self.facing, self.in_sight, out=np.zeros_like(self.facing), where=self.in_sight > 0)
@@ -1100,6 +1168,13 @@ class _RobotLookProbe(_RobotProbe):
             k = int(ok.sum())
             text = f"{k}/{n} looked at it for {LOOK_SHARE:.0%} or more of the time it was near " \
                    f"({float(share[seen].mean()):.0%} of the {near})"
+        if moment:
+            looked = f"they looked from {_when(self.looked[0])} to {_when(self.looked[1])}" if self.looked else \
+                "they did not look at it then"
+            text = (f"the robot passed {what} from {_when(self.passed[0])} to {_when(self.passed[1])}; {looked}; "
+                    f"{text} while it passed")
+            if in_place is not None:
+                text += self.window.said(ids, in_place)
         return (HOLDS if k >= _need(self.claim, n) else FAILS), text
 
 
@@ -1390,6 +1465,9 @@ class _RobotPassesProbe(_Probe):
         partners = f.pos[:, self.partner_cols]
         d = np.hypot(partners[..., 0] - f.robot[:, 0:1], partners[..., 1] - f.robot[:, 1:2])
         inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        if self.claim.low is not None:  # past them: the people standing there (one served walks off past it)
+            speed = np.hypot(f.vel[:, self.partner_cols, 0], f.vel[:, self.partner_cols, 1])
+            d = np.where(np.nan_to_num(speed, nan=np.inf) < _RobotBesideProbe.STANDING, d, np.inf)
         self.t.append(f.t[inside])
         self.d.append(np.where(np.isfinite(d[inside]), d[inside], np.inf))
 
@@ -1406,6 +1484,15 @@ class _RobotPassesProbe(_Probe):
                 return FAILS, f"nobody queued at {self.claim.place} for it to pass"
         d = np.where(t[:, None] >= there[None, :], d, np.inf)
         reach = self.claim.distance or 2.0
+        if self.claim.low is not None and self.claim.place is not None:
+            # past a queue: the people in it, from their join until served (then they step aside, off it)
+            served = np.full(n, np.inf)
+            for j, agent in enumerate(self.claim.partners[:n]):
+                done = [e.t for e in events.get(agent, ()) if e.kind == "queue_served" and e.detail == self.claim.place]
+                served[j] = min(done) if done else math.inf
+            d = np.where(t[:, None] < served[None, :], d, np.inf)
+        if self.claim.low is not None:  # "drives past them": beside them, one claim (generation/past_queue.py)
+            return _beside_verdict(self.claim, t, d, reach, checker.t_end)
         near = np.flatnonzero((d <= reach).any(axis=1)) if d.size else np.zeros(0, dtype=int)
         who = "of someone in the queue" if self.claim.place is not None else "of them"
         if near.size:
@@ -1415,6 +1502,69 @@ class _RobotPassesProbe(_Probe):
             k = int(np.argmin(d.min(axis=1)))
             text += f"; closest {float(d[k].min()):.1f} m at {_when(float(t[k]))}"
         return FAILS, text
+
+
+def _beside_verdict(claim: Claim, t: np.ndarray, d: np.ndarray, reach: float, t_end: float) -> tuple[str, str]:
+    """robot_passes said "past them": the nearest it came to one of them while they were there, within
+    `reach` (it did pass them) and no nearer than `claim.low` (beside them, not into them)."""
+    low = float(claim.low or 0.0)
+    who = f"someone standing in the queue at {claim.place}" if claim.place is not None else f"one of them in {claim.zone}"
+    if not d.size or not np.isfinite(d).any():
+        return FAILS, f"never passed them: the robot was never in {claim.zone} while they were there"
+    k = int(np.argmin(d.min(axis=1)))
+    j = int(np.argmin(d[k]))
+    closest = float(d[k, j])
+    agent = claim.partners[j] if j < len(claim.partners) else j
+    at = f"{closest:.2f} m from {who} (agent {agent} at {_when(float(t[k]))})"
+    if closest > reach:
+        return FAILS, f"never passed them: the nearest it came was {at}, {reach:g} m or nearer asked"
+    if closest < low:
+        return FAILS, f"went into them, not beside them: {at}; {low:g} m or more asked"
+    text = f"passed beside them: nearest {at}, between {low:g} and {reach:g} m"
+    if t.size and float(t[-1]) >= t_end - 0.5 and t_end < (claim.needs_seconds or 0.0):
+        # still among them when a run shorter than its way ended: it may yet go into them
+        return UNCHECKED, f"{text} so far; the robot was still in {claim.zone} when the run ended: run it longer"
+    return HOLDS, text
+
+
+class _RobotBesideProbe(_Probe):
+    """robot_beside ("the robot passes the ticket office" where people queue): it passes the people standing
+    there beside them, never within `distance` of one of them while they stand still (generation/beside_queue.py)."""
+
+    STANDING = 0.2  # m/s: slower than this someone is standing (in a queue, at a counter)
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.partner_cols = self.checker._cols(self.claim.partners)
+        self.closest = math.inf
+        self.at = (0.0, -1)
+        self.seen_robot = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None or not self.partner_cols.size:
+            return
+        self.seen_robot = True
+        p = f.pos[:, self.partner_cols]
+        speed = np.hypot(f.vel[:, self.partner_cols, 0], f.vel[:, self.partner_cols, 1])
+        d = np.hypot(p[..., 0] - f.robot[:, 0:1], p[..., 1] - f.robot[:, 1:2])
+        d = np.where(np.isfinite(d) & (np.nan_to_num(speed, nan=np.inf) < self.STANDING), d, np.inf)
+        if not np.isfinite(d).any():
+            return
+        k = int(np.argmin(d))
+        row, col = divmod(k, d.shape[1])
+        if float(d[row, col]) < self.closest:
+            self.closest = float(d[row, col])
+            self.at = (float(f.t[row]), int(self.checker.ids[self.partner_cols[col]]))
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if not math.isfinite(self.closest):
+            return HOLDS, f"nobody stood still at {self.claim.place} while the robot was in the run"
+        reach = self.claim.distance or 0.8
+        text = (f"closest to someone standing at {self.claim.place}: {self.closest:.2f} m (agent {self.at[1]} at "
+                f"{_when(self.at[0])}; {reach:g} m or more asked)")
+        return (HOLDS if self.closest >= reach else FAILS), text
 
 
 class _RobotFollowPersonProbe(_Probe):
@@ -1484,6 +1634,7 @@ _PROBES: dict[str, type[_Probe]] = {
     "robot_look": _RobotLookProbe, "robot_reach": _RobotPlaceProbe, "robot_via": _RobotPlaceProbe,
     "robot_stay": _RobotPlaceProbe, "robot_patrol": _RobotPatrolProbe,
     "robot_follow_person": _RobotFollowPersonProbe, "robot_passes": _RobotPassesProbe,
+    "robot_beside": _RobotBesideProbe,
     "robot_pickup": _RobotErrandProbe, "robot_dropoff": _RobotErrandProbe,
 }
 

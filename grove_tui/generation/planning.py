@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import threading
+from collections import Counter
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
@@ -24,6 +25,10 @@ from grove_tui.bt.format.ports import parse_point_list
 from grove_tui.errors import Cancelled, GenerationError, PlanningError, WorldError
 from grove_tui.navigation.theta_star import PlanCache, ThetaStarPlanner
 from grove_tui.generation import approach_at_place
+from grove_tui.generation.beside_queue import beside
+from grove_tui.generation.past_queue import beside_points
+from grove_tui.generation.goes_on_past import ends_off, goes_on
+from grove_tui.generation.led_exit import nearest_exit
 from grove_tui.generation.block_at_place import posts_for_blockers, rooms_to_pass, set_post
 from grove_tui.generation.routine_rooms import rooms_of_routines
 from grove_tui.generation.passed_spot import ends_off_the_spot
@@ -35,9 +40,13 @@ from grove_tui.generation.formations import (
     nearest_formation_gap,
     predict_formations,
 )
+from grove_tui.generation.passing_place import nearest_first, off_the_route, passing_points
+from grove_tui.generation.queue_pass import along_their_queues
 from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, unplaced_note, widest_gap
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
+from grove_tui.generation.waits_for_watchers import held_for_watchers
+from grove_tui.generation.passing_look import in_place
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
@@ -118,7 +127,8 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
         robot_spec = plan_robot(world, grid, cached, post, request, seed, robot_notes, reading=reading)
         robot_spec = _at_a_guiding_pace(post, preset, robot_spec, robot_notes)
         reactor_notes: list[str] = []
-        unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+        unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes, passing_points(
+                reading, post.groups, lambda p: _place_point(world, grid, p)))
         route = list(robot_spec.path) or [robot_spec.start, robot_spec.goal]
         rooms = list(dict.fromkeys([g.reactor_zone for g in unseen if g.reactor_zone] + rooms_to_pass(
             world, post.groups, route) + approach_at_place.rooms_to_pass(world, post.groups, route)
@@ -134,10 +144,12 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             robot_notes.append(f"the robot passes {'through ' + ', '.join(rooms) if rooms else 'by the places'} on "
                                f"its way, where people react to it")
             reactor_notes = []
-            unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes)
+            unseen = place_robot_reactors(world, grid, post, robot_spec, seed, reactor_notes, passing_points(
+                reading, post.groups, lambda p: _place_point(world, grid, p)))
         notes.extend(robot_notes)
         notes.extend(reactor_notes)
         _at_a_pace_the_robot_keeps(post, robot_spec)
+        robot_spec = held_for_watchers(post, robot_spec, reading)  # "... look at the robot as it passes": once in place
         for g in unseen:
             notes.append(unplaced_note(world, g.label, g.spawn, g.reactor_zone, robot_spec.task,  # what kept them
                                        list(robot_spec.path) or [robot_spec.start, robot_spec.goal]))
@@ -178,6 +190,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
     trees: TreeFiles = {}
     keeping_out = _keep_out_planners(world, grid, post, cache, cached)
     groups_by_index = {g.index: g for g in post.groups}
+    members_of = Counter(a.group_index for a in post.agents)
     for a in post.agents:
         _check_cancel(cancel)
         assert a.document is not None  # post-processing gives every agent its tree document
@@ -186,6 +199,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             _set_guided_seconds(document, guided_for[a.group_index])
         set_post(document, blocker_posts.get(a.id))
         approach_at_place.set_post(document, approach_posts.get(a.id))
+        in_place(document, members_of.get(a.group_index, 1))  # a look as the robot passes, once they are there
         if preset.velocity == "waypoints" and preset.planner.enabled:
             around = keeping_out.get(a.group_index)
             try:
@@ -398,6 +412,12 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
         start = picker.pick(asked.location, towards=None)
         goal = goal or picker.pick(asked.location, towards=None, away_from=start)
 
+    if request.goal is None and task == "cross":  # "leads a family to the exit": the nearest of those that fit
+        # its start as it would set off for the exit the reader picked (a pair across the scene for no exit
+        # set off from a restroom, and twenty followers stood ahead of it on its way out)
+        start, goal = nearest_exit(world, reading, start, goal, lambda: _chosen_pair(
+            world, grid, post, people, seed, picker, reactors, plan_path, None, goal)[0],
+            lambda p: _place_point(world, grid, p), plan_path, notes)
     if task in ("wait", "follow"):
         if start is None:
             start = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0]
@@ -408,6 +428,8 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     # "via the fountain": a thing or a door is passed by its own point (where the report checks it), not
     # anywhere in the zone it stands in
     via_spots = [p for p in (_place_point(world, grid, v) for v in via if _is_spot(world, v)) if p is not None]
+    via_spots += beside_points(reading, world, formations, robot_planner.grid if robot_planner else grid)  # "drives past them": by the line's first and last places
+    via_spots = beside(via_spots, formations, clearance, robot_planner.grid if robot_planner else None)  # not into a queue
     via_spots += gaps
     via_spots += [p for p in past if p not in via_spots]
     if start is None or goal is None:
@@ -481,6 +503,8 @@ def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people:
     # past the people who react to it where the sentence puts them, else through the crowd
     placed = {g.index for g in post.groups if getattr(g, "reactor_zone", None)}
     staying = reacting_points(post.agents, skip=reactors)  # people reacting around a routine: where they stay
+    staying = along_their_queues(staying, predict_formations(  # a queue's people along it, not all at its head
+        world, grid, [a.document for a in post.agents if a.document is not None], post.goals))
     focus = [a.start for a in post.agents if a.id in reactors and a.group_index in placed] + staying or \
         list(people) or [a.start for a in post.agents]
     centre = (sum(p[0] for p in focus) / len(focus), sum(p[1] for p in focus) / len(focus))
@@ -501,18 +525,20 @@ def _chosen_pair(world: World, grid: OccupancyGrid, post: PostProcessed, people:
         raise GenerationError("no room for the robot: no two free points 4 m apart near the scene")
     # Every pair around the formations first; through one only when no pair can go around.
     for may_cross in (False, True):
-        best: tuple[float, Point, Point, np.ndarray] | None = None
-        for _, a, b in pairs[:20]:
-            try:
-                path = plan_path(a, b, may_cross)
-            except PlanningError:
-                continue
-            gap = widest_gap(path, staying)  # past everyone who reacts to it, the first pair that does
-            if gap <= PASS_NEAR:
-                return a, b, path
-            best = best if best is not None and best[0] <= gap else (gap, a, b, path)
-        if best is not None:
-            return best[1], best[2], best[3]
+        # a pair that passes them and goes on first, one that ends beside them after (goes_on_past.py)
+        for tried, settle in ends_off(pairs, staying) if fixed_start is None and fixed_goal is None else [(pairs, True)]:
+            best: tuple[float, Point, Point, np.ndarray] | None = None
+            for _, a, b in tried[:20]:
+                try:
+                    path = plan_path(a, b, may_cross)
+                except PlanningError:
+                    continue
+                gap = widest_gap(path, staying)  # past everyone who reacts to it, the first pair that does
+                if gap <= PASS_NEAR:
+                    return goes_on(a, b, path, staying, candidates, plan_path, may_cross) if settle else (a, b, path)
+                best = best if best is not None and best[0] <= gap else (gap, a, b, path)
+            if best is not None and settle:
+                return goes_on(best[1], best[2], best[3], staying, candidates, plan_path, may_cross)
     raise GenerationError("no reachable start/goal pair for the robot near the scene")
 
 
@@ -764,10 +790,14 @@ def _at_a_pace_the_robot_keeps(post: PostProcessed, robot: RobotSpec) -> None:
 # reaction to show (an avoider must be inside its safe distance), not in the robot's way.
 REACTOR_BAND = {"ApproachRobot": (3.0, 6.0), "BlockRobot": (3.0, 6.0), "AvoidRobot": (1.5, 2.5),
                 "LookAtRobot": (2.0, 5.0)}
+# reactors who react from where they stand keep their band from the whole route (a guard stood 0.2 m from a
+# later leg of it); those who go to the robot (approach, block) only from their anchor: kept 3 m off every leg,
+# a receptionist started 6 m from the desk she holds and the robot was past it before she got there
+_GO_TO_IT = ("ApproachRobot", "BlockRobot")
 
 
 def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed, robot: RobotSpec | None, seed: int,
-                         notes: list[str]) -> list[GroupPlan]:
+                         notes: list[str], at: dict[int, Point] | None = None) -> list[GroupPlan]:
     """Groups whose whole activity is reacting to the robot, and whom the sentence places nowhere, start
     beside its route, a third of the way along (so the robot reaches them early in a run), in sight of
     it: a reaction gated on the robot showing up must not depend on where a model happened to spawn them.
@@ -795,19 +825,22 @@ def place_robot_reactors(world: World, grid: OccupancyGrid, post: PostProcessed,
                 continue  # guided people with no room behind the robot keep their start
         node = next((n.node for n in g.tree.walk() if n.node in REACTOR_BAND), "ApproachRobot")
         near, far = REACTOR_BAND[node]
+        goes_to_it = any(n.node in _GO_TO_IT for n in g.tree.walk())
         order = np.argsort(np.abs(arcs - min(max(0.3 * total, 4.0), total)), kind="stable") if total else np.arange(1)
         if g.reactor_zone is not None:
             # the sentence puts them in a zone: the route's points nearest to it first
             polygon = world.zone(g.reactor_zone).polygon
             gap = shapely.distance(polygon, shapely.points(samples))
             order = np.lexsort((np.abs(arcs - min(max(0.3 * total, 4.0), total)), np.round(gap, 0)))
+        if at and g.index in at:  # "as the robot passes the ticket desk": where it passes the desk (passing_place.py)
+            order = nearest_first(samples, at[g.index])
         placed = None
         # the band the reaction needs first; in the sentence's zone, further off when the route passes by
         for widen in (0.0, 4.0) if g.reactor_zone is not None else (0.0,):
             for k in order[:300]:
                 anchor = samples[k]
                 found = _spots(world, space, sight, anchor, near, far + widen, robot.start, taken, g.count, rng,
-                               g.reactor_zone)
+                               g.reactor_zone, route=None if goes_to_it else samples)
                 if found is not None:
                     placed = (found, float(arcs[k]) if total else 0.0)
                     break
@@ -874,7 +907,8 @@ def _along(path: np.ndarray, step: float) -> tuple[np.ndarray, np.ndarray]:
 
 def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.ndarray, near: float, far: float,
            robot_start: Point, taken: Sequence[Point], count: int, rng: np.random.Generator,
-           zone_name: str | None = None, behind: np.ndarray | None = None) -> list[Point] | None:
+           zone_name: str | None = None, behind: np.ndarray | None = None,
+           route: np.ndarray | None = None) -> list[Point] | None:
     """`count` free spots `near`..`far` from `anchor`, in sight of it, clear of the robot's start and of
     `taken`; with `behind` (a unit heading), none ahead of the anchor along it."""
     if zone_name is None:
@@ -890,6 +924,8 @@ def _spots(world: World, space: FreeSpace, sight: ThetaStarPlanner, anchor: np.n
     ok = (d >= near) & (d <= far) & (robot >= ROBOT_CLEARANCE + 0.5)
     if behind is not None:
         ok &= (pts[:, 0] - anchor[0]) * behind[0] + (pts[:, 1] - anchor[1]) * behind[1] <= 0.0
+    if route is not None:  # `near` from the whole route, not only from the anchor (passing_place.py)
+        ok &= off_the_route(pts, route, near)
     if len(taken):
         others = np.asarray(taken, dtype=float)
         ok &= np.min(np.hypot(pts[:, None, 0] - others[None, :, 0], pts[:, None, 1] - others[None, :, 1]),

@@ -44,6 +44,10 @@ from grove_tui.generation.shared_queue import (default_service_time, queue_servi
 from grove_tui.generation.guided_claims import guided_out_by
 from grove_tui.generation.guided import LED_BEHIND, guided_exit, guided_follow, guided_index
 from grove_tui.generation.look_span import glance_or_stare, glancing, look_claim
+from grove_tui.generation.passing_look import cued_as_it_passes, passing_looks
+from grove_tui.generation.beside_queue import beside_claims
+from grove_tui.generation.past_queue import past_or_through
+from grove_tui.generation.led_exit import led_exit_of, with_led_exit
 from grove_tui.generation.queue_delay import wait_before_queuing
 from grove_tui.generation.reaction_routine import routine_of
 from grove_tui.generation.run_length import with_run_length
@@ -251,6 +255,7 @@ def reconcile(draft: Draft, reading: PromptReading, world: World, default_spawn:
         reacts_only = False
         if group.robot_interaction:
             tree, reacts_only = with_robot_interaction(tree, group)
+            tree = cued_as_it_passes(tree, group, reading)  # "looks up as the robot passes the desk"
         guided = False
         if index == guided_index(reading) and not group.robot_interaction and _base_intent(group) in ("evacuate",
                                                                                                       "walk"):
@@ -877,6 +882,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
     (`route_time.planned_routes`), which set how long a run needs for each place (without them,
     straight legs times a detour)."""
     sentence = sentence or reading
+    reading = with_led_exit(reading, robot, world)  # "leads a family to the exit": the nearest that fits
     by_reading = {g.reading_index: g for g in groups if getattr(g, "reading_index", None) is not None}
     counts = effective_counts(reading)
     asked_counts = effective_counts(sentence)
@@ -907,6 +913,7 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
                     f"you changed it to {counts.get(index, 0)}")
         claims += _group_claims(r, g, agents_here, routes or {}, world, reading, by_reading, walking_speed,
                                 robot_seconds)
+        claims = passing_looks(claims, r, reading, world)  # "looks up as the robot passes the desk"
         if index == guided_index(reading) and robot is not None and not any(c.kind == "robot_follow" for c in claims):
             # "the robot guides them to the exit": that they went with it is asked too, and measured
             claims.append(Claim("robot_follow", "go with the robot, which guides them", "walk where the robot leads",
@@ -917,12 +924,13 @@ def grounding_report(reading: PromptReading, groups: Sequence[PlannedGroup], age
         out.append(GroupGrounding(r.who, g.label, tuple(claims), tuple(g.member_ids),
                                   tuple(getattr(g, "added", ()) or ()), unsure, edit))
     asked_robot = reading.robot
-    guided = guided_exit(reading, groups, agents)
+    guided = led_exit_of(reading, guided_exit(reading, groups, agents), world)
     led = guided_index(reading)
     out = guided_out_by(out, led, guided, reading.groups[led].who if led is not None else None)
     if asked_robot is not None and guided is not None:
         asked_robot = replace(asked_robot, destination=guided)  # planning sent it where the guided go
     robot_row = _robot_row(asked_robot, robot, world, agents, _passed_groups(reading, groups, world))
+    robot_row = beside_claims(robot_row, asked_robot, groups, reading, robot, _robot_seconds(robot))  # not into a queue
     leader_of = next((g for g in reading.groups if g.robot_interaction == "follow" and g.destination), None)
     if asked_robot is None and robot_row is not None and robot is not None and leader_of is not None \
             and getattr(robot, "task", "cross") == "cross" and leader_of.destination:
@@ -1338,10 +1346,10 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
             for group in (g for g in staying if g.zone == zone):
                 # "drives through the queue", "threads its way through the crowd of visitors in the waiting
                 # room": through the people there, while they are there, not only through the room
-                claims.append(Claim("robot_passes", f"through the {group.label}s in {zone}",
-                                    f"drive through {zone} past them", zone=zone, place=group.queue_at,
-                                    partners=group.members, distance=PASSING_DISTANCE,
-                                    needs_seconds=round(seconds * 1.3 + 10.0, 1)))
+                claims.append(past_or_through(Claim(  # "past them": beside them, one claim (past_queue.py)
+                    "robot_passes", f"through the {group.label}s in {zone}", f"drive through {zone} past them",
+                    zone=zone, place=group.queue_at, partners=group.members, distance=PASSING_DISTANCE,
+                    needs_seconds=round(seconds * 1.3 + 10.0, 1)), asked, group.label))
         if asked.destination:
             kind = "robot_patrol" if asked.task == "patrol" else "robot_reach"
             plan_text = f"{'patrol to' if kind == 'robot_patrol' else 'drive to'} {asked.destination}"

@@ -18,6 +18,7 @@ import math
 
 from grove_tui.generation.formations import Formation
 from grove_tui.generation.reaction_routine import routine_of
+from grove_tui.language.passing_manner import passes_through
 from grove_tui.language.reading import PromptReading
 from grove_tui.navigation.grid import OccupancyGrid
 from grove_tui.world.model import World
@@ -73,8 +74,8 @@ def through_formations(reading: PromptReading | None, world: World, grid: Occupa
     conversation in a zone where people the robot's clause goes through stay is no obstacle, and the robot
     passes by its gap (`gap_point`)."""
     zones = set(passed_zones(reading, world).values())
-    if not zones:
-        return formations, []
+    if not zones or not passes_through(reading.robot if reading is not None else None):
+        return formations, []  # "drives past them": the line stays an obstacle it passes beside (past_queue.py)
     kept: list[Formation] = []
     spots: list[Point] = []
     for formation in formations:

@@ -104,6 +104,10 @@ class GroupReading:
     # For intent "robot": what they do besides reacting, one of ROUTINES, at the group's places
     # ("six patients queue at the pharmacy and look at the robot": routine "queue", location pharmacy).
     routine: str | None = None
+    # Their reaction happens as the robot passes ("... look at the robot as it passes the desk"), and the
+    # place it passes then (the robot's via; None: as it passes them): language/passing_moment.py.
+    reacts_as_robot_passes: bool = False
+    passed_place: str | None = None
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)

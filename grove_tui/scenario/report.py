@@ -60,7 +60,8 @@ GROUP_CLAIMS = (
 )
 ROBOT_CLAIMS = ("robot_reach", "robot_via", "robot_stay", "robot_patrol", "robot_follow_person",
                 "robot_pickup",    # it stands `seconds` at the pick-up place of its errand
-                "robot_dropoff")   # it gets to the drop-off place after that stop, and stands there
+                "robot_dropoff",   # it gets to the drop-off place after that stop, and stands there
+                "robot_beside")    # it passes the people standing at a place beside them: never within `distance`
 CLAIM_KINDS = GROUP_CLAIMS + ROBOT_CLAIMS
 
 Point = tuple[float, float]
@@ -91,6 +92,7 @@ class Claim:
     low: float | None = None  # m/s, for pace
     high: float | None = None
     share: float = 0.9  # the share of the group's members that must show the outcome
+    moment: str | None = None  # "pass": a reaction checked only while the robot passes (generation/passing_look.py)
 
     @property
     def mark(self) -> str:
@@ -102,7 +104,7 @@ class Claim:
     def to_dict(self) -> JSONObject:
         data: JSONObject = {"kind": self.kind, "asked": self.asked, "plan": self.plan, "status": self.status,
                             "evidence": self.evidence}
-        for name in ("needs_seconds", "zone", "place", "seconds", "distance", "low", "high"):
+        for name in ("needs_seconds", "zone", "place", "seconds", "distance", "low", "high", "moment"):
             value = getattr(self, name)
             if value is not None:
                 data[name] = value
@@ -126,7 +128,7 @@ class Claim:
                    (float(point[0]), float(point[1])) if point else None, float(data.get("radius", 0.0)),
                    tuple(str(e) for e in data.get("exits", ())), tuple(int(p) for p in data.get("partners", ())),
                    _float(data.get("seconds")), _float(data.get("distance")), _float(data.get("low")),
-                   _float(data.get("high")), float(data.get("share", 0.9)))
+                   _float(data.get("high")), float(data.get("share", 0.9)), _str(data.get("moment")))
 
 
 def _float(value: float | str | None) -> float | None:

@@ -158,6 +158,10 @@ def split_at_stops(path: np.ndarray, stops: tuple[tuple[float, float, float], ..
             break
         rest = path[first:]
         j = first + int(np.argmin(np.hypot(rest[:, 0] - x, rest[:, 1] - y)))
+        if first == 0 and j == 0 and not legs:
+            legs.append(path[:1])  # a hold at the start: it waits there before it sets off
+            holds.append(float(seconds))
+            continue
         if j <= first or j >= path.shape[0] - 1:
             continue
         legs.append(path[first:j + 1])
