@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.analysis.outcomes import PASS_AT, PASS_BY
-from grove_tui.bt.format.document import TreeDocument
+from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.model import GroupReading, PromptReading
 from grove_tui.scenario.report import Claim
@@ -34,18 +34,18 @@ def _point(world: World, place: str) -> tuple[float, float] | None:
     return None  # a zone: the people themselves are the moment's place
 
 
-# People who look as the robot passes them where they stay (a queue, a wait) look once there: within this many
-# metres of the place their routine walks them to, or of their queue's counter with the line behind it.
+# People who look as the robot passes them where they stay (a queue, a wait) look once there: the cue is marked
+# with an IsAtPosition (no point) and react_once_there moves the reaction after the walk.
 IN_PLACE = 1.5
 _STAYING = frozenset({"queue", "wait", "converse"})
-_HELD_REACTIONS = frozenset({"ApproachRobot", "BlockRobot"})  # their own posts (approach/block_at_place.py)
+_WALKS = frozenset({"GoTo", "JoinGroup"})  # the way there, before the stay the reaction goes round
 
 
 def cued_as_it_passes(tree: DraftNode, group: GroupReading, reading: PromptReading) -> DraftNode:
     """A look tied to the robot passing turns them to it as it passes (within PASS_AT), not as soon as it is
     within a look's 10 m: a glance cued at 10 m fired at t = 0 and was over before the robot came by the desk.
     People who stay somewhere look once there: a patient who spawned beside the robot's start looked at the
-    waiting robot at t = 0, once only, and never as it passed the queue (an IsAtPosition, pointed by in_place)."""
+    waiting robot at t = 0, once only, and never as it passed the queue (marked here, moved by react_once_there)."""
     if group.robot_interaction != "look" or not group.reacts_as_robot_passes:
         return tree
     # as it passes a place: within PASS_AT; as it passes them: within PASS_BY, the window the look is checked in
@@ -68,27 +68,34 @@ def _once_there(tree: DraftNode) -> DraftNode:
     return DraftNode(tree.node, dict(tree.ports), children)
 
 
-def in_place(document: TreeDocument, members: int) -> None:
-    """Point the IsAtPosition of a look cued once they are there (cued_as_it_passes) at the place their routine
-    puts them: the queue's counter, with the line of `members` behind it, else the last place they walk to;
-    without such a place the check is dropped (they look wherever they are), in place."""
-    places = [e for e in document.nodes() if e.id in ("Queue", "GoTo") and e.get("x") is not None]
-    queue = next((e for e in places if e.id == "Queue"), None)
-    there = queue or (places[-1] if places else None)
-    for element in list(document.nodes()):
+def react_once_there(document: TreeDocument) -> None:
+    """A look cued once they are there (cued_as_it_passes marks its cue with an IsAtPosition): the reaction
+    moves inside the routine, after the walk there, in place. "ReactiveFallback[cue, Sequence[GoTo, Queue]]"
+    becomes "Sequence[GoTo, ReactiveFallback[cue, Queue]]": the patient who walked past the waiting robot
+    on the way to the counter no longer spends the look then (HuNavSim reactions fire once), and looks as it
+    passes the queue. A routine that is no walk and a stay keeps the reaction around it, unmarked."""
+    marked = False
+    for element in document.nodes():  # the mark goes whatever the shape: an IsAtPosition with no point fails
         kids = element.children
-        for i, check in enumerate(kids):
-            if (check.id != "IsAtPosition" or i == 0 or kids[i - 1].id != "IsRobotClose"
-                    or check.get("target_x") is not None or check.get("goal_id") is not None
-                    or any(k.id in _HELD_REACTIONS for k in kids)):
-                continue
-            if there is None:
-                del kids[i]
-                break
-            line = float(queue.get("spacing") or 0.6) * max(members - 1, 0) if queue is not None else 0.0
-            check.set("target_x", str(there.get("x")))
-            check.set("target_y", str(there.get("y")))
-            check.set("tolerance", f"{min(IN_PLACE + line, 10.0):.2f}")
+        if kids and kids[0].id == "IsRobotClose":
+            kept = [c for c in kids if not (c.id == "IsAtPosition" and c.get("target_x") is None
+                                            and c.get("goal_id") is None)]
+            marked |= len(kept) < len(kids)
+            element.children = kept
+    root = document.main
+    if not marked or root.id != "ReactiveFallback" or len(root.children) != 2:
+        return
+    cue, routine = root.children
+    if routine.id not in ("Sequence", "SequenceWithMemory"):
+        return
+    steps = routine.children
+    walks = next((i for i, c in enumerate(steps) if c.id not in _WALKS), len(steps))
+    if walks == 0 or walks == len(steps):
+        return
+    stay = steps[walks:]
+    inner = stay[0] if len(stay) == 1 else TreeElement(routine.id, dict(routine.attributes), list(stay))
+    document.trees[document.main_tree_id].children[0] = TreeElement(
+        routine.id, dict(routine.attributes), [*steps[:walks], TreeElement("ReactiveFallback", {}, [cue, inner])])
 
 
 def passing_looks(claims: list[Claim], group: GroupReading, reading: PromptReading, world: World) -> list[Claim]:

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 import threading
-from collections import Counter
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
@@ -46,7 +45,7 @@ from grove_tui.generation.passing_reactors import PASS_NEAR, reacting_points, un
 from grove_tui.generation.guided import GUIDING_VEL, guided_exit, guided_index, guided_seconds
 from grove_tui.generation.draft import DraftNode
 from grove_tui.generation.waits_for_watchers import held_for_watchers
-from grove_tui.generation.passing_look import in_place
+from grove_tui.generation.passing_look import react_once_there
 from grove_tui.generation.postprocess import AgentPlan, FreeSpace, GroupPlan, PostProcessed
 from grove_tui.generation.presets import Preset
 from grove_tui.generation.requests import Point, RobotRequest
@@ -190,7 +189,6 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
     trees: TreeFiles = {}
     keeping_out = _keep_out_planners(world, grid, post, cache, cached)
     groups_by_index = {g.index: g for g in post.groups}
-    members_of = Counter(a.group_index for a in post.agents)
     for a in post.agents:
         _check_cancel(cancel)
         assert a.document is not None  # post-processing gives every agent its tree document
@@ -199,7 +197,7 @@ def plan_operational(world: World, grid: OccupancyGrid, preset: Preset, post: Po
             _set_guided_seconds(document, guided_for[a.group_index])
         set_post(document, blocker_posts.get(a.id))
         approach_at_place.set_post(document, approach_posts.get(a.id))
-        in_place(document, members_of.get(a.group_index, 1))  # a look as the robot passes, once they are there
+        react_once_there(document)  # a look as the robot passes, once they are there
         if preset.velocity == "waypoints" and preset.planner.enabled:
             around = keeping_out.get(a.group_index)
             try:

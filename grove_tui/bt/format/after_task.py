@@ -56,8 +56,11 @@ def is_reaction_branch(element: TreeElement) -> bool:
 
 def standing_reaction(document: TreeDocument) -> TreeElement | None:
     """The main tree's root when it is a reaction around a routine: a ReactiveFallback whose children
-    but the last are robot cue branches and whose last child is the routine; else None."""
+    but the last are robot cue branches and whose last child is the routine (or such a fallback last in a
+    root sequence, after the walk there: generation/passing_look.react_once_there); else None."""
     root = document.main
+    if root.id in _SEQUENCES and root.children and root.children[-1].id == "ReactiveFallback":
+        root = root.children[-1]  # the walk there, then the reaction around the stay (a look once in place)
     if root.id != "ReactiveFallback" or len(root.children) < 2:
         return None
     *reactions, routine = root.children
