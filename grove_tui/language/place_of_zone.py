@@ -60,7 +60,7 @@ def zone_then_thing(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch 
     if not zones:
         return None
     zone = max(zones, key=lambda z: z[0])[1]
-    if head in zone.tokens and own_word_thing(index, head, zone.name) is None or (match is not None and match.kind != "zone" and match.zone == zone.name):
+    if head in zone.tokens and (tuple(lemmas) in zone.phrases or own_word_thing(index, head, zone.name) is None) or (match is not None and match.kind != "zone" and match.zone == zone.name):
         return None
     said = index.entry(match.name) if match is not None and match.kind != "zone" else None
     if said is not None and any(t in zone.tokens for p in said.phrases for t in p if p and
