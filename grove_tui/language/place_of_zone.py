@@ -10,6 +10,8 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.place_landmark import by_landmark
 from grove_tui.language.owned_doors import door_of_owner
 from grove_tui.language.places import MeaningMatch, PlaceIndex, PlaceMatch
+from grove_tui.language.room_word_things import exit_of_room, own_word_thing, room_by_first_words, thing_said_inside
+from grove_tui.language.room_word_things import exit_of_room_said as exit_of_room_said
 from grove_tui.language.tokens import lemma, phrase_lemmas
 
 
@@ -27,7 +29,7 @@ def thing_of_zone(index: PlaceIndex, head: str, zone: str) -> PlaceMatch | None:
     if zone_entry is None or zone_entry.kind != "zone" or not head or head in lx.GENERIC_PLACE_HEADS:
         return None
     if head in zone_entry.tokens and head not in lx.DOOR_WORDS:
-        return None  # "the robing room": the room itself
+        return own_word_thing(index, head, zone)  # "the robing room": the room itself; "the dorm bunks": its bunks
     if head in ("door", "doorway", "entrance"):
         # the doors in the room and those of other rooms leading into it; several: the widest, the main door
         doors = [(d.width, z.name == zone, d.name, z.name) for z in index.world.zones for d in z.doors
@@ -35,6 +37,8 @@ def thing_of_zone(index: PlaceIndex, head: str, zone: str) -> PlaceMatch | None:
         best = max(((w, own) for w, own, _, _ in doors), default=None)
         main = [(name, z) for w, own, name, z in doors if (w, own) == best]
         return PlaceMatch(main[0][0], "door", main[0][1], 1.0, True) if len(main) == 1 else None
+    if (out := exit_of_room(index, head, zone)) is not None:
+        return out  # "the circle exit"
     things = [e for e in index.entries if e.kind == "entity" and e.zone == zone]
     found = [e for e in things if any(head in kind.split() for kind in e.types)] or \
         [e for e in things if head in _kind_words(index, e.name)]  # "the tables": the tables, not the "top table"
@@ -56,7 +60,7 @@ def zone_then_thing(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch 
     if not zones:
         return None
     zone = max(zones, key=lambda z: z[0])[1]
-    if head in zone.tokens or (match is not None and match.kind != "zone" and match.zone == zone.name):
+    if head in zone.tokens and (tuple(lemmas) in zone.phrases or own_word_thing(index, head, zone.name) is None) or (match is not None and match.kind != "zone" and match.zone == zone.name):
         return None
     said = index.entry(match.name) if match is not None and match.kind != "zone" else None
     if said is not None and any(t in zone.tokens for p in said.phrases for t in p if p and
@@ -87,9 +91,11 @@ def thing_of_zone_said(index: PlaceIndex, low: Sequence[str], lemmas: Sequence[s
                        j: int, words: Callable[[int], tuple[list[str], int]]
                        ) -> tuple[tuple[PlaceMatch, float, str, tuple[str, ...]], int] | None:
     """The thing of a room the phrase names with the room, decided, and the index after the phrase."""
-    found = thing_of_named_zone(index, low, lemmas, j, words) or door_of_owner(index, low, lemmas, j)  # "the café's fire door"
+    found = thing_of_named_zone(index, low, lemmas, j, words) or door_of_owner(index, low, lemmas, j) or \
+        thing_said_inside(low, lemmas, j, lambda said, at: thing_of_named_zone(index, low, said, at, words))  # "the café's fire door"
     if found is None:
-        thing = zone_then_thing(index, lemmas, match) or by_landmark(index, low, lemmas, j, words)
+        thing = zone_then_thing(index, lemmas, match) or by_landmark(index, low, lemmas, j, words) or \
+            (room_by_first_words(index, lemmas, low[j - 1] != lemmas[-1]) if (match is None or not match.exact) and j >= 1 else None)
         found = (thing, j) if thing is not None else None
     if found is None:
         return None

@@ -22,7 +22,7 @@ from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
-from grove_tui.language.place_of_zone import ones_of_zone, thing_of_zone_said
+from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
 from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
@@ -428,7 +428,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if verb_lemma(w) in lx.INTENT_VERBS and s.index.knows(lemma(w)) and \
                 not w.endswith("ing") and self.whole_name(phrase) and \
                 not any(self.whole_name([*phrase, *s.low[j:end]]) for end in range(j + 1, min(j + 3, s.n) + 1)) \
-                and (j + 1 >= s.n or not self.people.is_person_noun(j + 1)):
+                and (j + 1 >= s.n or not self.people.is_person_noun(j + 1)) and not exit_of_room_said(s, phrase, j):
             # "at gate B2 boards the plane", "the check-in hall queue at": a whole name, then a verb
             # that only happens to be a place word too ("departures board", the tag "queue"); but
             # "the pharmacy waiting chairs" and "the boardroom meeting" are names and nouns

@@ -22,9 +22,10 @@ def room_exit(index: PlaceIndex, phrase: Sequence[str]) -> PlaceMatch | None:
     from grove_tui.language.places import PlaceMatch
 
     words = [t for t in phrase if t]
-    if len(words) < 3 or words[-1] not in _KINDS or words[-2] not in _FOR:
+    plain = len(words) >= 2 and words[-1] == "exit" and words[-2] not in _FOR  # "the circle exit" (round 42)
+    if not plain and (len(words) < 3 or words[-1] not in _KINDS or words[-2] not in _FOR):
         return None
-    room_words = words[:-2]
+    room_words = words[:-1] if plain else words[:-2]
     while room_words and room_words[0] in ("the", "a", "an", "its", "their"):
         room_words = room_words[1:]
     if not room_words:
