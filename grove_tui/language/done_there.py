@@ -11,6 +11,7 @@ The clause's words that say who does it ("pregnant women", "you", "staff") and i
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from grove_tui.language.activity_rooms import _said_of
 from grove_tui.language.lexicon import PERSON_NOUNS
@@ -95,3 +96,21 @@ def room_doing_it(index: PlaceIndex, activity: str) -> tuple[PlaceMatch, float, 
     e = found.entry
     return (PlaceMatch(e.name, "zone", e.zone, 0.6, False), 0.6,
             f"'{activity}' is said by the description of {e.name} only (like '{e.description[:60]}')", ())
+
+
+def gerund_room(index: PlaceIndex, phrase: Sequence[str], match: PlaceMatch) -> PlaceMatch:
+    """A place said by the work done there, a gerund ("head for fingerprinting", "off to scanning"): the
+    room whose own names say it (the biometrics room, "fingerprint room"; the scan room), not a fixture
+    read from it (the fingerprint scanners, the ultrasound machine) whose names do not hold the gerund
+    itself; `match` otherwise."""
+    words = [w.lower() for w in phrase if w.lower() not in _EMPTY]
+    if len(words) != 1 or not words[0].endswith("ing") or len(words[0]) < 7 or match.kind != "entity":
+        return match
+    fixture = index.entry(match.name)
+    if fixture is None or words[0] in fixture.tokens:
+        return match  # "the seating": a fixture so named
+    stem = _stem(words[0])
+    zones = [e for e in index.entries if e.kind == "zone" and any(_stem(t) == stem for t in e.tokens)]
+    own = [e for e in zones if e.name == match.zone]
+    chosen = own[0] if own else zones[0] if len(zones) == 1 else None
+    return PlaceMatch(chosen.name, "zone", chosen.name, match.score, False) if chosen is not None else match

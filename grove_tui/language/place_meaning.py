@@ -12,7 +12,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
-from grove_tui.language.done_there import room_doing_it, zone_saying
+from grove_tui.language.done_there import gerund_room as gerund_room, room_doing_it, zone_saying
 from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.participle_places import participle_said, participle_starts
@@ -444,7 +444,8 @@ class PlaceMeaning:
             return purpose_by_use(self.s.index, purpose)  # "to buy aspirin and plasters": the pharmacy
         score = 0.65 if best.similarity >= 0.7 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
-        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
+        return (gerund_room(self.s.index, words, PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone,
+                                                            best.similarity, False)), score,  # "to fingerprinting"
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
 
