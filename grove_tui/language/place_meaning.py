@@ -12,6 +12,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
+from grove_tui.language.done_there import gerund_room as gerund_room, room_doing_it, zone_saying
 from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.participle_places import participle_said, participle_starts
@@ -220,7 +221,7 @@ class PlaceMeaning:
             meant = both
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
-        return meant
+        return meant if meant is not None or head not in _ANY_PLACE else room_doing_it(s.index, activity)
 
     def _alike(self, one: str, other: str) -> bool:
         """Whether two places are of one kind (two bedrooms, two desks)."""
@@ -238,7 +239,7 @@ class PlaceMeaning:
         first, end = clause
         activity = plain_activity("where " + self._active(first, end))
         meant = (None if vehicle_stop(activity) else self._by_activity(("place",), ("place",), activity)) or \
-            rank_described(self.s.index, activity)
+            rank_described(self.s.index, activity) or room_doing_it(self.s.index, activity)
         return (room_of_listed(self.s, self.people, first, end, meant), end) if meant is not None else None
 
     def _active(self, first: int, end: int) -> str:
@@ -331,7 +332,8 @@ class PlaceMeaning:
         if best.entry.kind != "zone" and zone is not None and best.similarity - zone.similarity < MEANING_MARGIN \
                 and head in _ANY_PLACE | lx.BUILDING_WORDS:
             best = zone  # "the place where you leave your luggage": the room, though its lockers are as near
-        if head in _ANY_PLACE | lx.BUILDING_WORDS and (room := room_saying_it(index, best, activity)) is not None:
+        if head in _ANY_PLACE | lx.BUILDING_WORDS and (room := room_saying_it(index, best, activity) or
+                                                      zone_saying(index, activity, best)) is not None:
             best = room  # "to where their fingerprints get scanned": the room its description says it of
         fixture = next((r for r in ranked[1:] if r.entry.zone == best.entry.name and r.entry.kind == "entity"), None)
         if best.entry.kind == "zone" and fixture is not None and head not in _ANY_PLACE | lx.BUILDING_WORDS and \
@@ -442,7 +444,8 @@ class PlaceMeaning:
             return purpose_by_use(self.s.index, purpose)  # "to buy aspirin and plasters": the pharmacy
         score = 0.65 if best.similarity >= 0.7 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
-        return (PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False), score,
+        return (gerund_room(self.s.index, words, PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone,
+                                                            best.similarity, False)), score,  # "to fingerprinting"
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
 

@@ -24,7 +24,7 @@ from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
-from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning
+from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.worked_states import past_state
@@ -225,7 +225,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
-        match = match if described else said_in_number(s.index, phrase, match)  # "at the till": the till counter
+        match = match if described else said_in_number(s.index, phrase, gerund_room(s.index, phrase, match))  # "at the till": the till counter
         if (out := zone_around(s, at, j, match)) is not None:  # "outside the pharmacy", "lined up for the Viper"
             match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
