@@ -22,6 +22,7 @@ from grove_tui.language.side_words import side_word
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
+from grove_tui.language.counted_compounds import kind_before_counted
 from grove_tui.language.placed_people import placed_person
 from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
 from grove_tui.language.trader_people import trader_subject
@@ -361,6 +362,8 @@ class People:
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
                 k += 1  # "tired old patients", "two lost children", "waiting visitors"
                 continue
+            if kind_before_counted(s, k, j, counted, self.is_person_noun, lambda x: self.person_head(x, counted=True)):
+                return k + 1  # "nine cub scouts": the kind, then the counted plural
             if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and (self.is_person_noun(k + 1) or (
                     counted and k >= 3 and s.joins(k - 1) and count_ends_at(s, k - 3) and self.person_head(k + 1, counted=True) == k + 1)):
                 k += 1  # "flight attendants", "dog walker", "twenty season-ticket holders": the kind of person
