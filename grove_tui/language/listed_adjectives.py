@@ -15,6 +15,8 @@ _OPENERS = frozenset("a an the his her their my our your its this that these tho
                      "seven eight nine ten some several few".split())
 # Endings of describing words the small parser calls nouns ("woozy", "tipsy", "bleary-eyed").
 _DESCRIBING_ENDS = ("y", "ed", "ous", "ish", "ful", "less", "al", "ic", "ive", "ble", "ing", "ly")
+# Describing words the small parser calls nouns, with no ending that says so ("a pale, shaky patient").
+_PLAIN_DESCRIBING = frozenset("pale frail weak old young tall short thin stout small big lost sick ill drunk".split())
 # Words that are never the describing words of a list ("the ward, two nurses", "the desk, and").
 _NOT_DESCRIBING = frozenset("and or but then two three four five six seven eight nine ten some all both "
                             "only other another".split())
@@ -24,9 +26,11 @@ def _describing(w: Word) -> bool:
     low = w.lower
     if not low.replace("-", "").isalpha() or low in _NOT_DESCRIBING or low in _OPENERS:
         return False
+    if w.pos == "ADJ" or low in _PLAIN_DESCRIBING:
+        return True  # "elderly", a word for people too, describes one here
     if lemma(low) in PERSON_NOUNS or low in PERSON_NOUNS:
         return False
-    return w.pos == "ADJ" or w.tag == "VBN" or low.endswith(_DESCRIBING_ENDS)
+    return w.tag == "VBN" or low.endswith(_DESCRIBING_ENDS)
 
 
 def _person(w: Word) -> bool:

@@ -2,7 +2,8 @@
 from the understanding sets):
 1. describing words listed with a comma before a person ("a pale, dizzy visitor", "a frail, elderly
    patient") leave one person: as a subject, and as the person a helper takes along a route, who is a
-   second group that follows."""
+   second group that follows.
+2. people who dawdle round, around or about a place wander there; dawdling to a place stays a walk."""
 
 from __future__ import annotations
 
@@ -45,3 +46,27 @@ def test_people_with_listed_describing_words_are_one_group(read, world, prompt, 
 def test_commas_between_people_and_places_keep_their_groups(read, world, prompt, counts):
     groups = read(world, prompt).groups
     assert [g.count.value for g in groups] == counts
+
+
+# ---- 2. dawdling round a place is wandering there ------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,location", [
+    ("garden_centre", "Two sisters dawdle round the pet aquatics section.", "pet_aquatics"),
+    ("mall", "Two pensioners dawdle round the toy shop.", "toy_store"),
+    ("hospital", "A visitor dawdles around the cafeteria.", "cafeteria"),
+    ("office", "A temp dawdles about the kitchen.", "kitchen"),
+])
+def test_dawdling_round_a_place_is_wandering(read, world, prompt, location):
+    (group,) = read(world, prompt).groups
+    assert (group.intent, group.location) == ("wander", location)
+
+
+@pytest.mark.parametrize("world,prompt,intent", [
+    ("mall", "Two pensioners dawdle to the toy shop.", "walk"),
+    ("hospital", "A visitor dawdles from the cafeteria to the pharmacy.", "walk"),
+    ("mall", "A teenager mooches about the food court.", "wander"),
+    ("office", "Two interns wait in the kitchen.", "wait"),
+])
+def test_going_somewhere_slowly_keeps_its_intent(read, world, prompt, intent):
+    (group,) = read(world, prompt).groups
+    assert group.intent == intent
