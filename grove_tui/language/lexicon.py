@@ -296,6 +296,7 @@ for _intent, _verbs in {
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
+INTENT_VERBS.setdefault("dawdle", "wander")  # idling along with no goal: "dawdle round the aquatics section"
 PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("line", "up"): "queue", ("wait", "in", "line"): "queue", ("stand", "in", "line"): "queue",
     ("wait", "in", "a", "line"): "queue", ("wait", "their", "turn"): "queue", ("wait", "for", "their", "turn"): "queue",
