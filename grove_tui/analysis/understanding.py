@@ -24,6 +24,7 @@ import io
 import itertools
 import json
 import time
+import unicodedata
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -226,15 +227,20 @@ def _align(expected: Sequence[Mapping], got: Sequence[Mapping], node_names: froz
     return best[1]
 
 
+def _plain(text: str) -> str:
+    """Lower case without accents: the reader writes "café" as "cafe"."""
+    return unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode("ascii").lower()
+
+
 def score_reading(case: UnderstandingCase, reading: ReadingDict, node_names: frozenset[str] = frozenset()
                   ) -> ReadingScore:
     """Score one reading (the `to_dict()` of a PromptReading) against the case's expectation."""
     score = ReadingScore(case)
     got = list(reading.get("groups") or [])
-    unknown = [str(u).lower() for u in reading.get("unknown_places") or ()]
+    unknown = [_plain(str(u)) for u in reading.get("unknown_places") or ()]
     if case.unknown_places:
-        # A refusal is right only when it names the missing place (its head noun is enough).
-        named = all(any(place.split()[-1].lower() in u for u in unknown) for place in case.unknown_places)
+        # A refusal is right only when it names the missing place (its head noun is enough; "café" is "cafe").
+        named = all(any(_plain(place.split()[-1]) in u for u in unknown) for place in case.unknown_places)
         score.add("unknown_place_refusals", named, f"expected {list(case.unknown_places)}, read {unknown}")
         return score  # the groups of a sentence that is refused are not scored
     score.add("false_refusals", not unknown, f"refused places the world has: {unknown}")

@@ -151,6 +151,13 @@ def test_a_reading_that_says_what_is_expected_passes_every_field():
     assert score.checks["places"] == [True] and score.checks["false_refusals"] == [True]
 
 
+@pytest.mark.parametrize("expected, read, named", [
+    ("café", "cafe", True), ("cafe", "café", True), ("Crèche", "the creche", True), ("café", "canteen", False)])
+def test_a_refusal_names_the_place_whatever_its_accents(expected, read, named):
+    score = score_reading(_case([], unknown=(expected,)), {"groups": [], "unknown_places": [read]}, frozenset(NODES))
+    assert score.checks == {"unknown_place_refusals": [named]}, score.misses
+
+
 def test_a_via_written_as_one_name_is_one_place_not_its_letters():
     expected = {"count": {"kind": "exact", "value": 4}, "intent": "walk", "via": "kitchen", "destination": "boardroom"}
     right = score_reading(_case([expected]), {"groups": [_group(via=["kitchen"], destination="boardroom")],
