@@ -83,6 +83,7 @@ from grove_tui.language.apposed_members import without_apposed_members
 from grove_tui.language.collective_roles import with_collective_roles
 from grove_tui.language.counted_loads import without_counted_loads
 from grove_tui.language.fronted_size_parts import with_fronted_size_parts
+from grove_tui.language.bare_fronted_wholes import with_fronted_whole_articles
 from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
@@ -177,7 +178,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
-    text = with_fronted_size_parts(text)  # "Of the twelve in X, a trio are called": "three of them"
+    text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(without_awaited_arrivals(text))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
