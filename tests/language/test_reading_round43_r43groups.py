@@ -93,3 +93,31 @@ def test_a_person_met_then_taken_along_is_the_second_group(read, world, prompt, 
 ])
 def test_things_found_and_people_taken_keep_their_reading(read, world, prompt, groups):
     assert len(read(world, prompt).groups) == groups
+
+
+# ---- 3. a fronted whole said with a bare number, and its part "a pair", "a trio" ---------------------------------
+
+@pytest.mark.parametrize("world,prompt,whole,part", [
+    ("hospital", "Of twelve nurses on the ward, a pair head to the cafeteria.", 12, 2),
+    ("mall", "Of twenty shoppers in the food court, a trio walk to the cinema.", 20, 3),
+    ("airport", "Of six pilots in the lounge, a couple walk to gate A2.", 6, 2),
+    ("office", "Of 8 developers at their desks, a trio go to the kitchen.", 8, 3),
+    ("museum", "Of thirty pupils in the main hall, a foursome wander off to the gift shop.", 30, 4),
+])
+def test_a_bare_numbered_whole_said_first_keeps_its_part(read, world, prompt, whole, part):
+    first, second = read(world, prompt).groups
+    assert first.count.value == whole
+    assert second.count.value == part and second.relation == "subset_of:0"
+    assert second.intent == "walk"
+
+
+# ---- guards: fronted wholes read already, and "Of course", keep their reading ------------------------------------
+
+@pytest.mark.parametrize("world,prompt,counts", [
+    ("mall", "Of course, two guards walk to the fountain.", [2]),
+    ("hospital", "Of twelve nurses on the ward, two head to the cafeteria.", [12, 2]),
+    ("hospital", "Of the twelve nurses on the ward, a pair head to the cafeteria.", [12, 2]),
+    ("airport", "Of six pilots in the lounge, one walks to gate A2.", [6, 1]),
+])
+def test_fronted_wholes_already_read_keep_their_reading(read, world, prompt, counts):
+    assert [g.count.value for g in read(world, prompt).groups] == counts
