@@ -8,6 +8,7 @@ t-rex", "troop into the hall", "file out")."""
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.apposed_collectives import apposed_collective as apposed_collective
 from grove_tui.language.mention import Mention
 from grove_tui.language.school_classes import named_class
 from grove_tui.language.sentence import Sentence

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.another_count import more_people, the_other_count
-from grove_tui.language.apposed_counts import class_named, collective_is_a_verb
+from grove_tui.language.apposed_counts import apposed_collective, class_named, collective_is_a_verb
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.couple_words import bare_couple
@@ -158,9 +158,8 @@ class Mentions:
         return Mention(at, num.end - 1, s.span(at, num.end - 1), whole.label, count_of(s, num, f"{at}:part"))
 
     def _members_of_collective(self, before: Mention, m: Mention) -> bool:
-        """Whether m, after "with" in the same sentence, counts the people of a collective said with
-        no number and no kind of people ("leads a tour ..., with about twelve tourists trailing behind
-        it", "guides a group ... with ten visitors in tow")."""
+        """Whether m, after "with" in the same sentence, counts the people of a collective said with no number and
+        no kind of people ("leads a tour ..., with about twelve tourists trailing behind it", "a group ... with ten in tow")."""
         s = self.s
         return (m.first > 0 and s.low[m.first - 1] == "with" and before.collective is not None
                 and before.label == before.collective and before.count is not None
@@ -168,9 +167,10 @@ class Mentions:
                 and m.collective is None and s.w[before.first].sentence == s.w[m.first].sentence)
 
     def _apposition(self, before: Mention, m: Mention, index: int) -> bool:
-        """Whether m only says how many the mention before is, set off by commas, with no verb between:
-        "everyone in the auditorium, roughly sixty people, evacuates", "the school party, 25 children, ..."."""
+        """Whether m only says how many the mention before is, set off by commas ("the party, 25 children, ...")."""
         s = self.s
+        if apposed_collective(s, before, m):
+            return True  # "toddlers in ski suits, a gaggle of them, waddle": how many, said by a collective
         if m.first < 2 or s.low[m.first - 1] != "," or m.count is None or m.count.kind not in ("exact", "approximate"):
             return False
         if (m.last + 1 >= s.n or s.low[m.last + 1] in (".", "!", ";")) and m.relation == f"subset_of:{index}" and \

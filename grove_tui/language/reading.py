@@ -83,12 +83,14 @@ from grove_tui.language.apposed_members import without_apposed_members
 from grove_tui.language.collective_roles import with_collective_roles
 from grove_tui.language.counted_loads import without_counted_loads
 from grove_tui.language.fronted_size_parts import with_fronted_size_parts
+from grove_tui.language.bare_fronted_wholes import with_fronted_whole_articles
 from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
+from grove_tui.language.met_then_moved import as_taken_along
 from grove_tui.language.carried_babies import without_carried_babies
 from grove_tui.language.named_workplaces import without_named_workplaces
 from grove_tui.language.pairs import joined_pairs
@@ -170,13 +172,13 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
-    text = without_held_hands(text)  # "takes Edith arm in arm out of X": "takes Edith out of X"
+    text = as_taken_along(without_held_hands(text))  # "links arms with Gramps and walks him": walks Gramps; "takes Edith arm in arm out of X": "takes Edith out of X"
     text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_plain_parts(as_passed_checkpoints(text))  # "clears customs and heads": passes through; "one end of the bar": the end of it
     text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
-    text = with_fronted_size_parts(text)  # "Of the twelve in X, a trio are called": "three of them"
+    text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(without_awaited_arrivals(text))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
