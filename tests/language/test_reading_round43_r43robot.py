@@ -89,3 +89,36 @@ def test_the_hospitals_robot_crossing_has_its_route(read):
 def test_plain_robots_and_robots_people_react_to_keep_their_reading(read, world, prompt, task):
     r = read(world, prompt)
     assert (r.robot.task if r.robot is not None else None) == task
+
+
+# ---- 3. the robot said again as "the machine" -------------------------------------------------------------
+
+@pytest.mark.parametrize("world,prompt,interaction", [
+    ("mall", "When the robot rolls in, a toddler stares at the machine.", "look"),
+    ("mall", "The robot crosses the main atrium and an old man backs away from the contraption.", "avoid"),
+    ("station", "A commuter who dislikes robots steers clear of the machine by the ticket office.", "avoid"),
+    ("hospital", "The robot rolls into the entrance lobby and a nervous visitor edges away from the machine.",
+     "avoid"),
+    ("museum", "The robot glides into the great hall and two kids run after that gadget.", "follow"),
+])
+def test_the_machine_said_after_the_robot_is_the_robot(read, world, prompt, interaction):
+    group = read(world, prompt).groups[0]
+    assert group.intent == "robot"
+    assert group.robot_interaction == interaction
+
+
+# ---- guards: a machine the world has, or a machine with no robot said, keeps its reading --------------------
+
+@pytest.mark.parametrize("world,prompt,destination", [
+    ("mall", "The robot crosses the main atrium and an old man walks to the cash machine.", "cash_machine"),
+    ("office", "Two staff walk to the coffee machine while the robot waits at reception.", "coffee_machine"),
+])
+def test_named_machines_stay_places(read, world, prompt, destination):
+    group = read(world, prompt).groups[0]
+    assert group.destination == destination
+    assert group.intent == "walk"
+
+
+def test_a_machine_with_no_robot_said_is_no_robot(read):
+    group = read("mall", "A toddler stares at the machine.").groups[0]
+    assert group.intent != "robot"
