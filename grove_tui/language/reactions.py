@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.robot_company import goes_with_robot
 from grove_tui.language.disregard import disregards
+from grove_tui.language.hostile_gestures import gesture_threat
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
@@ -70,6 +71,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
     robot_at = [r for r in robot_at if not disregards(s, own, r)]  # "not giving it a second glance"
     if not robot_at:
         return None
+    if gesture_threat(s, own, robot_at):
+        return "block"  # "shakes his fist at the robot", "jabs a finger at it"
     ownset = set(own)
     chosen: str | None = None
     for n_mention, r in enumerate(robot_at):

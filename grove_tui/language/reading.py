@@ -62,6 +62,7 @@ from grove_tui.language.fronted_feelings import with_small_fronted_feelings
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.cleared_checkpoints import as_passed_checkpoints
 from grove_tui.language.place_part_counts import with_plain_parts
+from grove_tui.language.robot_aliases import with_robot_aliases
 from grove_tui.language.robot_headings import as_robot_order
 from grove_tui.language.converging import as_heading
 from grove_tui.language.shut_in import as_going_in
@@ -149,7 +150,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     index = place_index(world)
     text = without_adjective_commas(text)  # "a pale, woozy student": one person, not "a pale" and another
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
-    text = as_robot_order(text)  # "Robot job: take X to Y": "Have the robot take X to Y"
+    text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted

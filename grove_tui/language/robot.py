@@ -29,6 +29,7 @@ from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
 from grove_tui.language.robot_purpose import fronted_purpose
+from grove_tui.language.robot_owners import owner_word
 from grove_tui.language.robot_rounds import to_and_fro
 from grove_tui.language.robot_shows import shows_the_way
 from grove_tui.language.robot_states import placing_robot, state_after_robot, stays_so
@@ -171,6 +172,7 @@ class RobotClauses:
         first = i
         while first > 0 and not s.is_punct(first - 1) and (
                 s.w[first - 1].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or s.low[first - 1] in lx.NP_MODIFIERS
+                or owner_word(s, first - 1)  # "our robot", "the hotel's robot"
                 or (s.low[first - 1] == "-" and first > 1)
                 or (s.w[first - 1].tag == "VBG" and s.w[first - 1].dep in ("amod", "compound"))) and s.low[first - 1] not in lx.CLAUSE_STARTERS \
                 and s.low[first - 1] not in lx.PLACE_PREPOSITIONS and (first - 1) not in taken:
