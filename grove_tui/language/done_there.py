@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 from grove_tui.language.activity_rooms import _said_of
 from grove_tui.language.lexicon import PERSON_NOUNS
+from grove_tui.language.related_words import said_in, widened
 from grove_tui.language.places import MeaningMatch, PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import lemma
 
@@ -63,8 +64,8 @@ def activity_words(activity: str) -> list[str]:
 
 
 def _says_all(stems: list[str], description: str) -> bool:
-    said = {_stem(w) for w in re.findall(r"[a-z]+", description.lower())}
-    return bool(stems) and all(s in said for s in stems)
+    said = widened({_stem(w) for w in re.findall(r"[a-z]+", description.lower())}, _stem)  # "fired": the kiln
+    return bool(stems) and all(said_in(s, said) for s in stems)
 
 
 def zone_saying(index: PlaceIndex, activity: str, best: MeaningMatch | None) -> MeaningMatch | None:

@@ -40,5 +40,6 @@ def is_idiom_phrase(s: Sentence, k: int, prep: str, at: int) -> bool:
             j += 1
         # "into tears", but "into the dance studio": a place word after it makes it a room's name
         return j < s.n and lemma(s.low[j]) in INTO_STATES and not (
-            j + 1 < s.n and s.low[j + 1].isalpha() and s.index.knows(lemma(s.low[j + 1])))
+            j + 1 < s.n and s.low[j + 1].isalpha() and s.index.knows(lemma(s.low[j + 1]))) and not (
+            j + 1 < s.n and s.low[j + 1] in ("where", "wherever"))  # "into the place where the water is filtered"
     return False

@@ -13,6 +13,7 @@ from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
 from grove_tui.language.done_there import gerund_room as gerund_room, room_doing_it, zone_saying
+from grove_tui.language.related_words import to_another_where
 from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.participle_places import participle_said, participle_starts
@@ -234,7 +235,7 @@ class PlaceMeaning:
         if (things := where_things_are(self.s.index, self.s.low, k)) is not None:
             return things  # "to where the washers and dryers are": the room holding them
         clause = self._relative_clause(k, bare=False)
-        if clause is None or self.s.low[k] != "where":
+        if clause is None or self.s.low[k] not in ("where", "wherever"):
             return None
         first, end = clause
         activity = plain_activity("where " + self._active(first, end))
@@ -268,9 +269,9 @@ class PlaceMeaning:
         s = self.s
         if j >= s.n:
             return None
-        if s.low[j] in ("where", "that", "which"):
+        if s.low[j] in ("where", "wherever", "that", "which"):
             first = j + 1
-            if s.low[j] != "where" and not (first < s.n and (s.is_verb(first) or s.low[first] in _SUBJECTS)):
+            if s.low[j] not in ("where", "wherever") and not (first < s.n and (s.is_verb(first) or s.low[first] in _SUBJECTS)):
                 return None  # "the desk that morning": no clause
         elif s.low[j] == "for" and j + 1 < s.n and not any(
                 w[:1].isdigit() or w in lx.UNITS or w in ("a", "an", "while", "ages", "long", "now", "good")
@@ -284,7 +285,8 @@ class PlaceMeaning:
             return None
         end = first
         while end < s.n and end < first + 10 and (not s.is_punct(end) or s.hyphen_inside(end)) and \
-                not (s.low[end] in lx.CLAUSE_STARTERS and end > first and not self._joins_inside(first, end)):
+                not (s.low[end] in lx.CLAUSE_STARTERS and end > first and not self._joins_inside(first, end)) \
+                and not to_another_where(s.low, end):  # "from where they rent skis to where ...": two places
             end += 1
         if end < first + 2:
             return None  # "the room where": no clause to read
