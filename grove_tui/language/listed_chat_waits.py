@@ -13,7 +13,7 @@ from grove_tui.language.chat_waits import _AMOUNT, _UNIT
 from grove_tui.language.counted_chat_waits import _DOING
 
 _COUNT = r"(?:\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|a\s+couple\s+of|a\s+few|a\s+pair\s+of|1|one|a|an)"
-_GROUP = _COUNT + r"\s+[a-z]+(?:\s+[a-z]+)??"
+_GROUP = r"(?:" + _COUNT + r"|the|his|her|their|our)\s+[a-z]+(?:\s+[a-z]+)??"
 _CHAT_WAIT = re.compile(
     r"^(" + _COUNT + r"\s+[a-z]+(?:\s+[a-z]+)??(?:\s+and\s+" + _GROUP + r")?)\s+(?:(?:are\s+|is\s+)?" + _DOING
     + r"\s+)?(?:at|around|round|by|near|in)\s+((?:[\w'-]+\s+){0,3}?[\w'-]+)\s*(,)?\s*(?:for\s+)?" + _AMOUNT + r"\s+"
