@@ -25,7 +25,7 @@ _NOT_PEOPLE = frozenset("robot robots it bot bots droid they he she we i you the
 
 def as_listed_chat_wait(text: str) -> str:
     """The text with counted groups' chat stay written out (module doc); other text as it is. Only a stay
-    after a comma or of two groups joined by "and" (one group without a comma: counted_chat_waits.py)."""
+    with a comma before its time or of two groups joined by "and" (one group without: counted_chat_waits.py)."""
     m = _CHAT_WAIT.match(text)
     if m is None:
         return text
@@ -33,6 +33,7 @@ def as_listed_chat_wait(text: str) -> str:
     heads = [part.split()[-1].lower() for part in re.split(r"\s+and\s+", subject)]
     if any(h in _NOT_PEOPLE for h in heads) or subject.split()[1].lower() in _NOT_PEOPLE:
         return text
-    if " and " not in subject and not m.group(3) and not m.group(6):
-        return text
-    return (f"{subject} wait at {m.group(2)} for {m.group(4)} {m.group(5)}, then go {m.group(7)} " + text[m.end():])
+    if " and " not in subject and not m.group(3):
+        return text  # "a temp waits at X for 2 minutes, then goes to Y": written out already
+    one = " and " not in subject and subject.split()[0].lower() in ("a", "an", "1", "one")
+    return (f"{subject} {'waits' if one else 'wait'} at {m.group(2)} for {m.group(4)} {m.group(5)}, then go {m.group(7)} " + text[m.end():])
