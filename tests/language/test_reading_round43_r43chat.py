@@ -73,6 +73,8 @@ def test_counted_chat_stays_after_a_comma(read, world, prompt, start, wait, dest
 
 @pytest.mark.parametrize("world,prompt,start,wait,dest", [
     ("mall", "3 ppl lookin at the fountain 2 mins then off to the food court", "fountain", 120.0, "food_court"),
+    ("mall", "cleaner stuck @ fountain 5 mins then off to food court", "fountain", 300.0, "food_court"),
+    ("hospital", "porter parked @ pharmacy 10 mins then off to main entrance", "pharmacy", 600.0, "main_entrance"),
     ("ski_lodge", "6 kids wait at ski school desk for 10 minutes, then go out through the chairlift door",
      "ski_school_desk", 600.0, "chairlift_door"),
 ])
