@@ -21,7 +21,6 @@ from grove_tui.scenario.report import Claim
 from grove_tui.world.model import Door, Entity, World
 
 
-
 def _point(world: World, place: str) -> tuple[float, float] | None:
     try:
         obj = world.find(place)
