@@ -34,11 +34,28 @@ def _moving_word(s: Sentence, i: int) -> bool:
     return bool(stems & (SHRINKING_VERBS | MANNER_VERBS)) or s.w[i].pos == "VERB"
 
 
+# Verbs of running off that go away from what follows a bare "from": "bolt from the robot", "flee from it"
+# ("walks from the robot's dock" is a start, not a flight).
+FLEEING_VERBS = frozenset("bolt flee run dash scarper scurry scuttle scamper race sprint rush hurry dart skedaddle "
+                          "retreat recoil shrink cower flinch cringe hare leg".split())
+
+
+def _flees(s: Sentence, i: int) -> bool:
+    word = s.low[i]
+    stems = {word, s.verb(i), s.w[i].lemma.lower(), word[:-1], word[:-2], word[:-3] + "y"}
+    return not s.after_determiner(i) and bool(stems & FLEEING_VERBS)
+
+
+def _the_robot_itself(s: Sentence, r: int) -> bool:
+    """The robot at r is the thing itself, not a word of another ("the robot bay", "the robot's dock")."""
+    return r + 1 >= s.n or (s.w[r + 1].pos not in ("NOUN", "PROPN") and s.low[r + 1] not in ("'s", "’s"))
+
+
 def shrinks_from(s: Sentence, ownset: set[int], i: int, r: int) -> bool:
-    """Whether the verb at i goes away from the robot at r ("scurries away from the robot")."""
+    """Whether the verb at i goes away from the robot at r ("scurries away from the robot", "bolt from it")."""
     if not _moving_word(s, i):
         return False
-    for tail in AWAY_FROM_TAILS:
+    for tail in AWAY_FROM_TAILS + ((("from",),) if _flees(s, i) and _the_robot_itself(s, r) else ()):
         end = i + 1 + len(tail)
         if tuple(s.low[i + 1:end]) == tail and all(k in ownset for k in range(i + 1, end)) and end <= r and \
                 all(s.low[k] in lx.DETERMINERS for k in range(end, r)):
