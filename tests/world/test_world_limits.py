@@ -16,9 +16,9 @@ ROOM = "  - {name: z, type: r, boundary: [[0,0],[4,0],[4,4],[0,4]], doors: [{nam
 
 
 def only_problem(text: str) -> str:
-    started = time.perf_counter()
+    started = time.process_time()  # this process's own work: the wall clock counted the other tests' (6.7 s at load 4)
     world, problems = parse_world(text, "w.yaml")
-    assert time.perf_counter() - started < 5.0, "a limit must be checked before the expensive work"
+    assert time.process_time() - started < 5.0, "a limit must be checked before the expensive work"
     assert world is None and len(problems) == 1, problems
     return problems[0].message
 
