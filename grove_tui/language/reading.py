@@ -88,6 +88,7 @@ from grove_tui.language.bare_fronted_wholes import with_fronted_whole_articles
 from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
+from grove_tui.language.included_members import with_included_members
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
@@ -185,7 +186,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(without_awaited_arrivals(text))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
-    text = without_apposed_members(text)  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"
+    text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_going_in(as_heading(with_vehicle_loads(text)))  # "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
