@@ -90,6 +90,7 @@ from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.included_members import with_included_members
 from grove_tui.language.joined_kinds import with_joined_kinds
+from grove_tui.language.counted_outings import with_counted_outings
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
@@ -164,7 +165,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
-    text = as_outing_parties(text)  # "a stag do of twelve": a stag party of twelve
+    text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(text)))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
