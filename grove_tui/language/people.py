@@ -377,10 +377,22 @@ class People:
             if (counted and s.w[k].tag in ("NNS", "NNPS") and s.lemma(k) not in lx.NON_PLACES
                     and s.lemma(k) not in lx.NON_PEOPLE
                     and s.lemma(k) not in lx.DURATION_UNITS and not names_a_place(s.index, s.lemma(k))
-                    and verb_lemma(s.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
+                    and (verb_lemma(s.low[k]) not in lx.INTENT_VERBS or self._noun_before_its_verb(k))
+                    and self._does_what_people_do(k)):
                 return k
             return None
         return None
+
+    def _noun_before_its_verb(self, k: int) -> bool:
+        """Whether a counted plural that is a verb's form too ("potters", "ramblers") is the parser's subject of
+        a verb after it ("nine potters throw", "the five potters in there get out") or a noun a participle
+        describes ("of nine potters throwing at the wheels"): a noun, not the verb of a bare count."""
+        w, s = self.s.w[k], self.s
+        if w.tag != "NNS":
+            return False
+        if w.dep == "pobj":
+            return k + 1 < s.n and s.w[k + 1].tag in ("VBG", "VBN") and s.w[k + 1].head == k
+        return w.dep in ("nsubj", "nsubjpass") and k < w.head <= k + 4 and s.is_verb(w.head)
 
     def _compound_of_next(self, k: int) -> bool:
         """Whether the parser makes the person word at k a modifier of the next, itself no verb's
