@@ -13,7 +13,7 @@ from grove_tui.language.compound_people import chain_end
 from grove_tui.language.gathering_verbs import gathering_verb
 from grove_tui.language.parser import known_word
 from grove_tui.language.counted_pushers import pushes_after
-from grove_tui.language.of_names import of_name_end
+from grove_tui.language.of_names import of_name_end, possessive_name_end
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.adverb_subjects import past_adverbs
 from grove_tui.language.held_things import a_load_of_things
@@ -312,7 +312,7 @@ class People:
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
-            after = modifier_end(s, k) or of_name_end(s, k)  # "Duke of Edinburgh hikers"
+            after = modifier_end(s, k) or of_name_end(s, k) or possessive_name_end(s, k)  # "Duke of Edinburgh hikers"
             if after is not None and after < s.n and (self.is_person_noun(after) or (
                     after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1))):
                 k = after  # "night-shift workers", "year 6 pupils", "off-duty bus drivers": what kind, no count
