@@ -96,6 +96,7 @@ from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.met_then_moved import as_taken_along
 from grove_tui.language.carried_babies import without_carried_babies
+from grove_tui.language.people_named_things import without_people_named_things
 from grove_tui.language.named_workplaces import without_named_workplaces
 from grove_tui.language.pairs import joined_pairs
 from grove_tui.language.placed_with import as_placing_clause
@@ -179,7 +180,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
-    text = without_carried_babies(text)  # "mums with babies in slings wait": "mums wait"
+    text = without_people_named_things(without_carried_babies(text))  # "mums with babies in slings wait": "mums wait"; "the parent-and-baby session": "the session"
     text = as_taken_along(without_held_hands(text))  # "links arms with Gramps and walks him": walks Gramps; "takes Edith arm in arm out of X": "takes Edith out of X"
     text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_plain_parts(as_passed_checkpoints(text))  # "clears customs and heads": passes through; "one end of the bar": the end of it
