@@ -32,6 +32,7 @@ from grove_tui.language.aided_names import aided_name
 from grove_tui.language.caused_motion import taken_name
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.moved_described import moved_described_person
+from grove_tui.language.aid_things import aid_thing
 from grove_tui.language.failing_things import failing_thing
 from grove_tui.language.feeling_people import feels_about_the_robot
 from grove_tui.language.listed_people import listed_person
@@ -88,7 +89,8 @@ class People:
         if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
             return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
-        if acting_as_verb(s, i) or a_load_of_things(s, i) or coach_as_vehicle(s, i) or failing_thing(s, i):
+        if acting_as_verb(s, i) or a_load_of_things(s, i) or coach_as_vehicle(s, i) or failing_thing(s, i) or \
+                aid_thing(s, i):  # "inches her walker": a walking frame
             return False  # "..., then guides 5 passengers": a verb, no guide; "a sack of pellets", "the Glasgow coach": things
         if role_thing(s, i):
             return True  # "the keynote speaker walks", "a session chair heads to ...": a role
