@@ -90,6 +90,7 @@ from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
 from grove_tui.language.included_members import with_included_members
 from grove_tui.language.joined_kinds import with_joined_kinds
+from grove_tui.language.comma_names import without_name_commas
 from grove_tui.language.counted_outings import with_counted_outings
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
 from grove_tui.language.lent_arms import as_arm_escort
@@ -155,7 +156,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    text = without_adjective_commas(text)  # "a pale, woozy student": one person, not "a pale" and another
+    text = without_adjective_commas(without_name_commas(text, index))  # "a pale, woozy student": one person, not "a pale" and another; "to births, deaths and marriages": one name
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
@@ -180,7 +181,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
-    text = without_people_named_things(without_carried_babies(text))  # "mums with babies in slings wait": "mums wait"; "the parent-and-baby session": "the session"
+    text = without_people_named_things(without_carried_babies(text), index)  # "mums with babies in slings wait": "mums wait"; "the parent-and-baby session": "the session"
     text = as_taken_along(without_held_hands(text))  # "links arms with Gramps and walks him": walks Gramps; "takes Edith arm in arm out of X": "takes Edith out of X"
     text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_plain_parts(as_passed_checkpoints(text))  # "clears customs and heads": passes through; "one end of the bar": the end of it

@@ -21,3 +21,13 @@ def test_person_words_naming_what_a_thing_is_for_are_no_group(read, world, promp
 def test_the_thing_so_named_is_still_a_place(read):
     (group,) = read("day_spa", "A couple walk from reception to the adults-only sauna.").groups
     assert (group.count.value, group.destination) == (2, "sauna")
+
+
+def test_an_event_collective_after_a_word_of_time_is_the_event(read):
+    (group,) = read("maternity_unit", "Two midwives wait in the lobby before the parent-and-baby class.").groups
+    assert group.count.value == 2
+
+
+def test_a_place_the_world_names_so_keeps_its_name(read):
+    (group,) = read("maternity_unit", "Two midwives walk to the mother-and-baby ward.").groups
+    assert group.destination == "postnatal_ward"
