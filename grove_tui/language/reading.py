@@ -76,6 +76,7 @@ from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
 from grove_tui.language.singular_verbs import as_singular_verbs
 from grove_tui.language.age_nouns import with_age_heads
+from grove_tui.language.age_bands import with_age_bands
 from grove_tui.language.hyphened_people import with_whole_person_words
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
@@ -179,7 +180,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_clock_commas(text)  # "At nine Tom Hale walks": a time, not nine of him
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
-    text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
+    text = with_age_heads(with_age_bands(with_function_word_people(with_whole_person_words(text))))  # "his 4-year-old walks": "his 4-year-old child walks"; "eighteen over-fifties": "eighteen older people"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_people_named_things(without_carried_babies(text), index)  # "mums with babies in slings wait": "mums wait"; "the parent-and-baby session": "the session"
     text = as_taken_along(without_held_hands(text))  # "links arms with Gramps and walks him": walks Gramps; "takes Edith arm in arm out of X": "takes Edith out of X"
