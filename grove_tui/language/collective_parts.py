@@ -2,14 +2,19 @@
 wait", "a few of the staff leave", "two of the cast walk off". A collective of the people working or
 performing together (a crew, a team, the staff, the cast) is no group of its own in the scene when
 only a part of it is said to be there: the part is the one group, as many as said. A counted whole
-("two of the six porters") or a plural person noun ("two of the guards") keeps its whole."""
+("two of the six porters") or a plural person noun ("two of the guards") keeps its whole. So does not a
+whole said as someone's own with no count (round 44: "three of her doctoral students", "six of their
+parents"): the others of it are somewhere else, only the part is there."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from grove_tui.language.counts import Quantifier
     from grove_tui.language.sentence import Sentence
+
+_OWNERS = frozenset({"their", "his", "her", "our", "my", "your"})
 
 # Collectives named by what their members do together, each member one of them.
 MEMBER_COLLECTIVES = frozenset("""crew team staff cast squad band gang troupe choir troop shift delegation
@@ -33,3 +38,9 @@ def whole_unsaid(s: Sentence, of_at: int, head: int, counted_whole: bool) -> boo
     of its own."""
     return (not counted_whole and s.lemma(head) in MEMBER_COLLECTIVES and s.w[head].tag in ("NN", "NNP")
             and head >= of_at + 2 and all(s.w[j].pos in ("NOUN", "PROPN", "ADJ") for j in range(of_at + 2, head)))
+
+
+def owned_whole(s: Sentence, k: int, inner: Quantifier | None) -> bool:
+    """Whether the whole of "six of their parents" (its word at k) is someone's own people, with no count
+    of its own: left out of the scene, the part is the group."""
+    return s.low[k] in _OWNERS and inner is None

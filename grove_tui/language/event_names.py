@@ -21,7 +21,8 @@ GATHERING_HEADS = frozenset("""dance disco ball ceilidh barn-dance tea-dance mor
     club pack troop brigade choir society circle guild league party sale fair fete fête bazaar jumble quiz
     bingo raffle tournament contest competition rehearsal recital matinee wedding funeral christening
     service mass evensong lecture seminar workshop session class lesson meeting meetup assembly ceremony
-    celebration reunion gala festival show-and-tell playgroup storytime story-time""".split())
+    celebration reunion gala festival show-and-tell playgroup storytime story-time bash shindig
+    beano do""".split())
 # Words that, before a gathering word, make it a place's own name ("the night shelter", "the dance
 # studio" is headed by "studio"; "the service desk" by "desk"), never said of an event.
 _NOT_AFTER = frozenset("shift".split())

@@ -16,6 +16,10 @@ _ONES = re.compile(r"\b(" + _OWNER + r"\s+(?:little|young|wee|tiny|small|baby|yo
                    r"\s+(one|ones|'un|'uns)\b")
 _MOST = re.compile(r"\b(" + _OWNER + r"\s+(?:youngest|eldest|oldest))\b(?!\s+(?:one|ones|'un|'uns)\b)"
                    r"(?=\s*([^\s]+)|\s*$)")
+# A family by its name in the plural, then its youngest or eldest ("the Hendersons' youngest"): the child
+# is said as "the youngest Henderson child", a phrase the reader finds with no verb right after it.
+_FAMILY_MOST = re.compile(r"\b([Tt]he)\s+([A-Z][a-z]+)s['’]\s+(youngest|eldest|oldest)\b(?!\s+(?:one|ones|'un|'uns)\b)"
+                          r"(?=\s*([^\s]+)|\s*$)")
 _AFTER = frozenset("by at in on near beside with to into from through across over round around towards toward and then is was has had , . ; ! ? : -- off out up down".split())
 
 
@@ -23,6 +27,8 @@ def with_little_ones(text: str) -> str:
     """The text with "the little one" written "the little child" and "the Hendersons' youngest" written
     "the Hendersons' youngest child" (see the module doc)."""
     text = _ONES.sub(lambda m: m.group(1) + (" children" if m.group(2).endswith("s") else " child"), text)
+    text = _FAMILY_MOST.sub(lambda m: f"{m.group(1)} {m.group(3)} {m.group(2)} child" if _bare(m.group(4)) else m.group(0),
+                            text)  # "the Hendersons' youngest by the toy box": "the youngest Henderson child"
     return _MOST.sub(lambda m: m.group(1) + " child" if _bare(m.group(2)) else m.group(0), text)
 
 

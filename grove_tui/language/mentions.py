@@ -553,9 +553,9 @@ class Mentions:
         k = s.skip(at, {"the", "a", "an", "other", "their", "his", "her", "our", "its"})
         det = low[at] if k > at else ""
         other = "other" in low[at:k]
-        head = self.people.person_head(k, counted=False)
-        if head is None:
-            return named_class(s, k)  # "Year 4 walks", or none: "ten in the pharmacy" borrows the last noun
+        head, named = self.people.person_head(k, counted=False), named_class(s, k)  # "Year 4 walks", "the Year 4 form"
+        if head is None or (named is not None and head == named.last):
+            return named  # or none: "ten in the pharmacy" borrows the last noun
         if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person; "Dr Patel's registrar": nobody
             return None if possessor_of_a_person(s, self.people.is_person_noun, head) else Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)

@@ -13,7 +13,7 @@ from grove_tui.language.compound_people import chain_end
 from grove_tui.language.gathering_verbs import gathering_verb
 from grove_tui.language.parser import known_word
 from grove_tui.language.counted_pushers import pushes_after
-from grove_tui.language.of_names import of_name_end
+from grove_tui.language.of_names import of_name_end, possessive_name_end
 from grove_tui.language.person_modifiers import compound_head_person, head_person, kind_word, modifier_end
 from grove_tui.language.adverb_subjects import past_adverbs
 from grove_tui.language.held_things import a_load_of_things
@@ -32,6 +32,8 @@ from grove_tui.language.aided_names import aided_name
 from grove_tui.language.caused_motion import taken_name
 from grove_tui.language.movers import fetched_then_taken, moved_person_noun, mover_subject
 from grove_tui.language.moved_described import moved_described_person
+from grove_tui.language.aid_things import aid_thing
+from grove_tui.language.failing_things import failing_thing
 from grove_tui.language.feeling_people import feels_about_the_robot
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
@@ -87,7 +89,8 @@ class People:
         if self.titled_name(i) is not None or any(self.titled_name(k) == i for k in range(max(0, i - 3), i)):
             return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
-        if acting_as_verb(s, i) or a_load_of_things(s, i) or coach_as_vehicle(s, i):
+        if acting_as_verb(s, i) or a_load_of_things(s, i) or coach_as_vehicle(s, i) or failing_thing(s, i) or \
+                aid_thing(s, i):  # "inches her walker": a walking frame
             return False  # "..., then guides 5 passengers": a verb, no guide; "a sack of pellets", "the Glasgow coach": things
         if role_thing(s, i):
             return True  # "the keynote speaker walks", "a session chair heads to ...": a role
@@ -311,7 +314,7 @@ class People:
             end = self.multiword_start(k)
             if end is not None:
                 return end  # "the au pair": one person
-            after = modifier_end(s, k) or of_name_end(s, k)  # "Duke of Edinburgh hikers"
+            after = modifier_end(s, k) or of_name_end(s, k) or possessive_name_end(s, k)  # "Duke of Edinburgh hikers"
             if after is not None and after < s.n and (self.is_person_noun(after) or (
                     after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1))):
                 k = after  # "night-shift workers", "year 6 pupils", "off-duty bus drivers": what kind, no count
@@ -376,10 +379,22 @@ class People:
             if (counted and s.w[k].tag in ("NNS", "NNPS") and s.lemma(k) not in lx.NON_PLACES
                     and s.lemma(k) not in lx.NON_PEOPLE
                     and s.lemma(k) not in lx.DURATION_UNITS and not names_a_place(s.index, s.lemma(k))
-                    and verb_lemma(s.low[k]) not in lx.INTENT_VERBS and self._does_what_people_do(k)):
+                    and (verb_lemma(s.low[k]) not in lx.INTENT_VERBS or self._noun_before_its_verb(k))
+                    and self._does_what_people_do(k)):
                 return k
             return None
         return None
+
+    def _noun_before_its_verb(self, k: int) -> bool:
+        """Whether a counted plural that is a verb's form too ("potters", "ramblers") is the parser's subject of
+        a verb after it ("nine potters throw", "the five potters in there get out") or a noun a participle
+        describes ("of nine potters throwing at the wheels"): a noun, not the verb of a bare count."""
+        w, s = self.s.w[k], self.s
+        if w.tag != "NNS":
+            return False
+        if w.dep == "pobj":
+            return k + 1 < s.n and s.w[k + 1].tag in ("VBG", "VBN") and s.w[k + 1].head == k
+        return w.dep in ("nsubj", "nsubjpass") and k < w.head <= k + 4 and s.is_verb(w.head)
 
     def _compound_of_next(self, k: int) -> bool:
         """Whether the parser makes the person word at k a modifier of the next, itself no verb's

@@ -18,6 +18,8 @@ from grove_tui.language.tokens import verb_lemma
 CLASS_RANGE = (25, 30)
 _SCHOOL_WORDS = frozenset({"year", "grade", "class", "form", "standard"})
 _TEAM_WORDS = frozenset({"team", "squad"})
+# Words after a year's number that name its class ("the Year 4 form", "the year 10 group").
+_TAIL_WORDS = frozenset({"form", "class", "group", "set"})
 _CODE = re.compile(r"^(\d{1,2})[a-z]?$")  # "7b", "10c", "4"
 # Years and grades of a school run from reception (0) to 13; a bigger number is a calendar year or
 # a room ("class 204"), no people.
@@ -48,6 +50,9 @@ def named_class(s: Sentence, at: int) -> Mention | None:
     if number is None or not 0 <= number[0] <= _MAX_YEAR:
         return None
     end = number[1]
+    if end < s.n and s.low[end] in _TAIL_WORDS and s.low[at] not in _TAIL_WORDS and \
+            (end + 1 >= s.n or s.is_punct(end + 1) or s.w[end + 1].pos in ("VERB", "AUX")):
+        end += 1  # "the Year 4 form, 26 youngsters, ...", "the year 10 group waits": the class by its word after
     if end < s.n and not (s.is_punct(end) or s.low[end] in ("and", "to") or s.w[end].pos in ("VERB", "AUX")
                           or s.w[end].tag in ("VBZ", "VBP", "VBD", "MD") or verb_lemma(s.low[end]) in lx.INTENT_VERBS):
         # ("Class 3 lines up": the small parser makes "lines" a noun)

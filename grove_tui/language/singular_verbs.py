@@ -27,7 +27,8 @@ from grove_tui.language.plural_verbs import as_plural_verbs
 from grove_tui.language.seated_subjects import subject_of
 from grove_tui.language.subject_phrases import (
     prepositions_as_such, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language import lexicon as lx
+from grove_tui.language.tokens import lemma, verb_lemma
 
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
@@ -51,9 +52,24 @@ def _named_before(words: list[Word], k: int) -> bool:
         and words[k - 2].pos in ("PROPN", "NOUN") and words[k - 4].tag in _SINGULAR
 
 
+def _described_people(words: list[Word], k: int) -> bool:
+    """Whether word k is a plural person noun after describing words only, opening its sentence, with
+    a comma after it ("Curious toddlers, a small gaggle of them, waddle ...", "Bored teenagers, a gang of
+    them, loiter ..."): the people the aside counts, not a verb the parser made the root of."""
+    low = words[k].lower
+    if lemma(low) == low or lemma(low) not in lx.PERSON_NOUNS or verb_lemma(low) != low:
+        return False
+    if k + 1 >= len(words) or words[k + 1].lower != ",":
+        return False
+    before = [x for x in words[:k] if x.sentence == words[k].sentence]
+    return bool(before) and all(x.pos in ("ADJ", "ADV") for x in before)
+
+
 def _taken_for_noun(words: list[Word], k: int) -> bool:
     w = words[k]
     if k == 0 or not (_verb_form(w) or (_named_before(words, k) and w.tag == "NNS" and w.lower.endswith("s"))):
+        return False
+    if _described_people(words, k):
         return False
     before = [x for x in words[:k] if x.sentence == w.sentence]
     if not before or any(x.pos not in _SUBJECT_WORDS and x.tag != "POS" for x in before):  # "the porter's pal"

@@ -1,5 +1,5 @@
 """People who only describe a place: "walks to the room where poorly children wait to be
-collected", "to the bar where the regular drinkers sit". A "where" clause after a place tells which
+collected", "to the bar where the regular drinkers sit", "runs to where staff look after lost children". A "where" clause after a place tells which
 place is meant; the people of its subject are no group of the scene, however many modifiers stand
 between "where" and them (a bare "where guests eat" is told apart by the parser's tags already)."""
 
@@ -17,9 +17,27 @@ if TYPE_CHECKING:
 _BETWEEN = frozenset({"ADV", "ADJ", "DET", "VERB"})
 
 
+# Prepositions before "where" that make its clause a place said by what happens there ("runs to where
+# staff look after lost children", "heads back to where the coaches park").
+_TO_WHERE = frozenset("to towards toward into from back over round around near by past".split())
+
+
+def _in_a_place_said_by_a_clause(s: Sentence, at: int) -> bool:
+    """Whether the phrase at `at` is inside a "where" clause that names a place after a preposition, with
+    no clause break between "where" and it: its people, subject or object, only say which place."""
+    j = at - 1
+    while j >= 0 and s.w[j].sentence == s.w[at].sentence and not s.is_punct(j) and s.low[j] != "where" and \
+            s.low[j] not in lx.CLAUSE_STARTERS - {"with", "after", "before", "as"}:
+        j -= 1
+    return j > 0 and s.low[j] == "where" and s.low[j - 1] in _TO_WHERE
+
+
 def describes_a_place(s: Sentence, at: int) -> bool:
     """Whether the phrase at `at` is the subject of a "where" clause after a place noun, with only
-    modifiers, no count, between "where" and it."""
+    modifiers, no count, between "where" and it, or anyone in a "where" clause said after a preposition
+    (round 44: "runs to where staff look after children who got separated from their parents")."""
+    if _in_a_place_said_by_a_clause(s, at):
+        return True
     j = at - 1
     while j >= 0 and j >= at - 3 and s.low[j] != "where":
         compound = s.w[j].pos == "NOUN" and s.w[j + 1].pos == "NOUN"  # "where the pottery classes are held"

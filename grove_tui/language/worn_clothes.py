@@ -2,7 +2,8 @@
 ...", "four players in concert black wait backstage", "two medics in scrubs", "a guard in hi-vis". Read
 as a place, the clothes were refused as a place the world lacks ("wetsuit pads") and the person, run
 into it, was lost. Clothes say nothing of where anyone is or how many there are, so the phrase is left
-out after a word for people where it runs into a verb in "-s" or ends an aside; a place named with a clothing word ("in the uniform store", "the kit room"
+out after a word for people (or a counted plural no list names: "nine cub scouts in party hats, ...")
+where it runs into a verb in "-s" or ends an aside; a place named with a clothing word ("in the uniform store", "the kit room"
 of the world) is a place still."""
 
 from __future__ import annotations
@@ -55,6 +56,16 @@ def _person(word: str) -> bool:
     return lemma(low) in lx.PERSON_NOUNS or low in lx.PERSON_NOUNS or low.endswith(_PERSON_ENDS)
 
 
+_NUMBER = re.compile(r"\b(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True)) +
+                     r")(?:-[a-z]+)?\s+(?:[A-Za-z][A-Za-z-]*\s+){0,2}$", re.IGNORECASE)
+
+
+def _counted_before(text: str, at: int) -> bool:
+    """Whether a count stands at most two words before the plural at `at` ("nine cub scouts in party hats"):
+    people, though no list names the noun."""
+    return _NUMBER.search(text[max(0, at - 40):at]) is not None
+
+
 def without_worn_clothes(text: str, index: PlaceIndex) -> str:
     """The text without what people wear after a word for people (module doc)."""
     def drop(m: re.Match[str]) -> str:
@@ -66,7 +77,7 @@ def without_worn_clothes(text: str, index: PlaceIndex) -> str:
             return m.group(0)  # "two medics in scrubs walk", "women in pink sashes": read as it is
         word = m.group("person").lower()
         if word in lx.ROBOT_WORDS or word in _NOT_PEOPLE or \
-                not (_person(word) or (m.group("det") or "").lower() in _DETERMINERS) or \
+                not (_person(word) or (m.group("det") or "").lower() in _DETERMINERS or _counted_before(text, m.start("person"))) or \
                 (nxt and _names_a_place(index, lemma(worn_words[-1]), lemma(nxt))) or \
                 (worn_words[1] == "the" and index.knows(lemma(worn_words[-1]))):
             return m.group(0)

@@ -1,0 +1,42 @@
+"""One count said before two kinds of people joined by "and" (round 44): "twenty-two boys and girls",
+"ten men and women", "a dozen mums and dads". The count is of both together: one group, as the
+sentence says it ("The choir, twenty-two boys and girls in all, processes ..."), not the count's
+kind and a second vague few of the other. Written before parsing as one plural that covers both
+("twenty-two children", "ten people"). Two kinds each with a count of their own ("two nurses and three
+doctors") or the second with a determiner ("ten kids and their parents") are two groups, untouched."""
+
+from __future__ import annotations
+
+import re
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.tokens import lemma
+
+_NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
+                                        ("couple", "pair", "handful", "dozens", "one", "a")), key=len, reverse=True)) + \
+    r")(?:-(?:one|two|three|four|five|six|seven|eight|nine))?"
+_JOINED = re.compile(r"\b(" + _NUMBER + r")\s+([a-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])", re.IGNORECASE)
+_CHILDREN = frozenset("boy girl kid child toddler pupil schoolchild schoolboy schoolgirl son daughter infant "
+                      "youngster teenager teen".split())
+
+
+def _plural_person(word: str) -> bool:
+    low = word.lower()
+    base = lemma(low)
+    if low in ("staff", "police", "crew"):
+        return True  # "twelve staff and students"
+    return base != low and (base in lx.PERSON_NOUNS or low in lx.PERSON_NOUNS) and base not in lx.IMPLIED_RANGES \
+        and base not in lx.GENERIC_PEOPLE
+
+
+def _joined(m: re.Match[str]) -> str:
+    first, second = m.group(2), m.group(3)
+    if not (_plural_person(first) and _plural_person(second)) or first.lower() == second.lower():
+        return m.group(0)
+    both = "children" if {lemma(first.lower()), lemma(second.lower())} <= _CHILDREN else "people"
+    return f"{m.group(1)} {both}"
+
+
+def with_joined_kinds(text: str) -> str:
+    """The text with a count of two joined kinds of people written as one plural (module doc)."""
+    return _JOINED.sub(_joined, text)
