@@ -132,6 +132,7 @@ from grove_tui.language.chat_fragments import chat_fragments
 from grove_tui.language.scattered_counts import with_scattered_counts
 from grove_tui.language.unnamed_counts import counted_unnamed
 from grove_tui.language.tailed_counts import with_counts_before
+from grove_tui.language.waited_escorts import with_escorts_after_a_wait
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -223,7 +224,8 @@ def _read(s: Sentence) -> PromptReading:
     problems = list(finder.problems)
     read: tuple[GroupReading, ...] = ()
     if mentions:
-        read = without_watched(s, mentions, without_perceivers(s, mentions, groups.read(mentions, found)))  # "a guard notices smoke and ..."
+        read = without_watched(s, mentions, without_perceivers(s, mentions, with_escorts_after_a_wait(
+            s, people, mentions, groups.read(mentions, found))))  # "a guard notices smoke and ..."; "waits, then wheels a patient to X"
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
     elif clauses.negated_tokens():
