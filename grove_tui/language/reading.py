@@ -132,6 +132,7 @@ from grove_tui.language.chat_fragments import chat_fragments
 from grove_tui.language.scattered_counts import with_scattered_counts
 from grove_tui.language.unnamed_counts import counted_unnamed
 from grove_tui.language.tailed_counts import with_counts_before
+from grove_tui.language.robot_guided_people import following_the_robot
 from grove_tui.language.waited_escorts import with_escorts_after_a_wait
 from grove_tui.world.model import World
 
@@ -241,6 +242,7 @@ def _read(s: Sentence) -> PromptReading:
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = people_passed_stay(s, robot, found, read)  # "threads through teens by the fountain, bound for the cinema"
+    robot, read = following_the_robot(s, robot, first_robot_word, read)  # "has wandered into X, so the robot guides him back"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     read = got_up_and_went(read)  # "a pair get up and pay at reception": they walk there
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,
