@@ -17,7 +17,7 @@ from grove_tui.language.tokens import lemma
 _PAIR = re.compile(r"(^|[,;:]\s*)([a-z]+)\s+and\s+([a-z]+)\b(?!\s+and\b)(?!\s+[a-z]+ing\b)")
 
 
-# Kin and partners said bare ("bf n gf", "mum and dad") are one party already (`pairs.py`): left alone.
+# Kin and partners said bare ("bf n gf", "mum and dad") already read as one person each: left alone.
 _KIN = frozenset("boyfriend girlfriend husband wife partner fiance fiancee spouse mum mom dad mother father son "
                  "daughter brother sister gran granny grandad grandma grandpa nan nana aunt uncle cousin niece "
                  "nephew baby toddler kid child grandson granddaughter".split())

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import duration_at
+from grove_tui.language.stay_particles import after_a_stay
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
@@ -122,8 +123,7 @@ class Clauses:
         searched = w == "of" and tuple(s.low[max(0, i - 2):i]) == ("in", "search")  # "in search of the gym"
         if (w == "for" or searched) and not (i > 0 and s.low[i - 1] in lx.EXCEPT_WORDS) and self._for(scan, i, nxt):
             return True
-        dur: tuple[float | None, int] | None = duration_at(s, i) if i > 0 and lx.INTENT_VERBS.get(
-            s.verb(i - 1)) in lx.STATIONARY_INTENTS else None
+        dur: tuple[float | None, int] | None = duration_at(s, i) if i > 0 and after_a_stay(s, i) else None
         if dur is not None:  # "waits 15 minutes outside the room": a duration without "for"
             scan.c.wait_seconds = scan.c.wait_seconds or dur[0]
             self._take(scan, i, dur[1])

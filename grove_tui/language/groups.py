@@ -39,6 +39,7 @@ from grove_tui.language.sequences import pronoun_sentences_end
 from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 from grove_tui.language.wait_first import wait_before_queuing
+from grove_tui.language.possessive_owners import clause_owner
 from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
@@ -81,7 +82,7 @@ class Groups:
                      modifies_a_thing(s, k, person_next=k + 1 < s.n and people.is_person_noun(k + 1))}
         scenes = self._scenes(mentions, spans, excluded, robot_tokens)
         clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
-                                     owner=m.label) for m, (a, b) in zip(mentions, spans)]
+                                     owner=clause_owner(s, mentions, k, (a, b))) for k, (a, b) in enumerate(spans)]
         for k, m in enumerate(mentions):
             if m.zone_place is not None:  # "half the open office goes ...": where they are
                 clauses[k].places.insert(0, m.zone_place)
@@ -130,8 +131,7 @@ class Groups:
             m = mentions[k]
             start = m.first if n == 0 else self.clauses.fronted_start(mentions[regular[n - 1]].last, m.first)
             end = self.clauses.fronted_start(m.last, mentions[regular[n + 1]].first) if n + 1 < len(regular) else s.n
-            end = mentions[regular[n + 1]].first if n + 1 < len(regular) and end > mentions[regular[n + 1]].first \
-                else end
+            end = min(end, mentions[regular[n + 1]].first) if n + 1 < len(regular) else end
             sentence_end = next((i for i in range(m.last + 1, end) if s.w[i].sentence != s.w[m.first].sentence), end)
             spans[k] = (start, pronoun_sentences_end(s, sentence_end, end, {x.first for x in mentions}))
         return spans

@@ -1,7 +1,8 @@
 """Kin said as one list (round 18): "Mum, Dad and the three kids walk to ...", "Grandma, Grandpa and
 two grandchildren wait ..." are one family, a group of everyone listed who keeps together. A couple
-("Mum and Dad") and a possessive pair ("a mum and her toddler") are joined by language/pairs.py; the
-list here has three kin or more ("Mum and two kids" stays two groups, the set's convention).
+("Mum and Dad") and a possessive pair ("a mum and her toddler") stay one group per noun phrase, each of
+one (the writers' convention); the list here has three kin or more ("Mum and two kids" stays two groups,
+the set's convention).
 """
 
 from __future__ import annotations
@@ -61,7 +62,7 @@ def _list_at(s: Sentence, i: int) -> tuple[int, int] | None:
     if any(s.w[j].sentence != s.w[i].sentence for _, j in items):
         return None
     if len(items) < 3:
-        return None  # "Mum and Dad" a couple (language/pairs.py); "Mum and two kids" two groups (the set's convention)
+        return None  # "Mum and Dad", "Mum and two kids": one group per noun phrase (the writers' convention)
     return sum(v for v, _ in items), last[1]
 
 

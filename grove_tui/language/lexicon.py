@@ -305,7 +305,7 @@ PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("in", "the", "line"): "queue", ("queue", "up"): "queue", ("on", "the", "waiting", "list"): "queue",
     ("mill", "around"): "wander", ("mill", "about"): "wander", ("walk", "around"): "wander",
     ("walk", "about"): "wander", ("look", "around"): "wander", ("wander", "around"): "wander",
-    ("hang", "out"): "wait", ("hang", "around"): "wait", ("hang", "about"): "wait",
+    ("hang", "out"): "wait", ("hang", "around"): "wait", ("hang", "about"): "wait", ("hang", "on"): "wait",
     ("hang", "round"): "wait", ("catch", "up"): "converse", ("have", "a", "chat"): "converse",
     ("have", "a", "conversation"): "converse", ("stand", "around"): "wait", ("sit", "down"): "wait", ("have", "words"): "converse",
     ("join", "the", "queue"): "queue", ("join", "the", "line"): "queue", ("join", "a", "queue"): "queue",

@@ -405,7 +405,7 @@ class Mentions:
             plural = s.lemma(person) != low[person] or low[person + 1] in ("'", "s'")
             return Mention(at, thing, s.span(at, thing), self.people.label(person),
                            Count("vague", s.choose(2, 3, f"{at}:carried"), 2, 3) if plural else Count("exact", 1, 1, 1))
-        if (moved := taken_mention(s, at)) is not None:  # "Mr Ahmed's son wheels him ...", "Mr and Mrs Obi"
+        if (moved := taken_mention(s, at, self.objects)) is not None:  # "Mr Ahmed's son wheels him ...", "Mr and Mrs Obi"
             return moved
         num = quantifier(s, at)
         part = self.partitives.part_of(at, num, found, self.parent(found))

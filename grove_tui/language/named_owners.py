@@ -15,6 +15,7 @@ from grove_tui.language.elided_owners import elided_owned
 from grove_tui.language.named_things import things_of_name
 from grove_tui.language.place_owner import owner_at
 from grove_tui.language.places import PlaceMatch
+from grove_tui.language.possessor_rooms import owned_by_possessor_name
 from grove_tui.language.sentence import Sentence
 
 __all__ = ["elided_owned", "owned_by_name", "owner_at"]
@@ -50,7 +51,7 @@ def owned_by_name(s: Sentence, at: int, k: int, lemmas: Sequence[str]) -> Decide
         return None
     owner = _owner_words(s, at, s.low[k])
     if owner is None:
-        return owned_by_described_name(s, at, k, lemmas)
+        return owned_by_described_name(s, at, k, lemmas) or owned_by_possessor_name(s, at, k, lemmas)
     head = lemmas[-1]
     n = len(owner[0])
     rooms = [e for e in s.index.entries if e.kind == "zone" and head in e.tokens and any(

@@ -7,13 +7,14 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.aside_movers import aside_leader
-from grove_tui.language.carried_things import counted_things
+from grove_tui.language.carried_things import collective_of_things, counted_things
 from grove_tui.language.caused_motion import moves_along, route_after
 from grove_tui.language.moved_pronouns import moved_pronoun
 from grove_tui.language.owned_rides import own_ride
 from grove_tui.language.titled_couples import couple_end
 from grove_tui.language.counts import quantifier
 from grove_tui.language.movers import FETCHING_VERBS
+from grove_tui.language.possessed_people import possessed_head
 from grove_tui.language.people import People
 from grove_tui.language.robot_crowds import its_way
 from grove_tui.language.sequences import each_leader, shared_subject_is_person, shared_subject_is_robot
@@ -84,12 +85,14 @@ class PeopleObjects:
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
         head = self.people.person_head(start, counted=q is not None)
+        if head is None and q is None:
+            head = possessed_head(s, self.people, start)  # "pushes the bride's nan": the nan
         if moved_pronoun(s, at) or own_ride(s, at) is not None or ((couple := couple_end(s, at)) is not None and (leading or route_after(s, couple))):
             return True  # "Mr Ahmed's son wheels him from ...", "escorts Mr and Mrs Obi from ...": taken along
         if not leading:  # "a nurse trundles a patient out of X-ray": taken along a route
             return head is not None and moves_along(s, p, head)
-        if counted_things(s, self.people, p, q, head):
-            return False  # "takes a handful of used mirrors to ...": things carried, no one led
+        if counted_things(s, self.people, p, q, head) or collective_of_things(s, self.people, p, head):
+            return False  # "takes a handful of used mirrors to ...", "brings a bunch of flowers": things carried
         return head is not None or self.carried_owner(at) is not None \
             or named_class(s, start) is not None  # "a teacher takes year 3 to the hall"
 

@@ -48,6 +48,7 @@ from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.role_things import role_thing
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.where_people import describes_a_place
+from grove_tui.language.coordinated_roles import coordinated_role
 from grove_tui.language.role_suffixes import collective_modifies_role, suffix_role
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
                                                 unlisted_subject)
@@ -114,8 +115,8 @@ class People:
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
-        if suffix_role(s, i):
-            return True  # "both quiz contestants leave", "a greeter by the leaflet stand"
+        if suffix_role(s, i) or coordinated_role(s, i):
+            return True  # "both quiz contestants leave", "a greeter by the leaflet stand", "the drummer and bassist haul"
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
                 told_as_he_or_she(s, i) or placed_person(s, i):  # "an old dear shrieks when she spots the robot"
@@ -362,8 +363,9 @@ class People:
                     s.w[k + 1].pos == "ADJ" or s.w[k + 1].dep == "amod" or side_word(s, k)):  # "away fans"
                 k += 1  # "a partially sighted woman", "a very frail man": the adverb says how, no one
                 continue
-            if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")):
-                k += 1  # "tired old patients", "two lost children", "waiting visitors"
+            if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")) \
+                    or (s.w[k].pos == "PROPN" and s.w[k].text.islower() and k + 1 < s.n and s.w[k + 1].pos == "ADJ"):
+                k += 1  # "tired old patients", "two lost children", "waiting visitors"; "a tipsy first-year": no name
                 continue
             if kind_before_counted(s, k, j, counted, self.is_person_noun, lambda x: self.person_head(x, counted=True)):
                 return k + 1  # "nine cub scouts": the kind, then the counted plural

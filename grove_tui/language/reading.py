@@ -101,7 +101,6 @@ from grove_tui.language.met_then_moved import as_taken_along
 from grove_tui.language.carried_babies import without_carried_babies
 from grove_tui.language.people_named_things import without_people_named_things
 from grove_tui.language.named_workplaces import without_named_workplaces
-from grove_tui.language.pairs import joined_pairs
 from grove_tui.language.placed_with import as_placing_clause
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
@@ -140,6 +139,8 @@ from grove_tui.language.chat_fragments import chat_fragments
 from grove_tui.language.scattered_counts import with_scattered_counts
 from grove_tui.language.unnamed_counts import counted_unnamed
 from grove_tui.language.tailed_counts import with_counts_before
+from grove_tui.language.robot_guided_people import following_the_robot
+from grove_tui.language.waited_escorts import with_escorts_after_a_wait
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -223,7 +224,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_pairs(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find()))))))))))))  # "a mother and her toddler": one group of two
+    mentions = list(kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find()))))))))))))
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
@@ -231,7 +232,8 @@ def _read(s: Sentence) -> PromptReading:
     problems = list(finder.problems)
     read: tuple[GroupReading, ...] = ()
     if mentions:
-        read = without_watched(s, mentions, without_perceivers(s, mentions, groups.read(mentions, found)))  # "a guard notices smoke and ..."
+        read = without_watched(s, mentions, without_perceivers(s, mentions, with_escorts_after_a_wait(
+            s, people, mentions, groups.read(mentions, found))))  # "a guard notices smoke and ..."; "waits, then wheels a patient to X"
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
     elif clauses.negated_tokens():
@@ -247,6 +249,7 @@ def _read(s: Sentence) -> PromptReading:
     robot = led_by_robot(_robot_follows_someone_said(robot, found, mentions, read), read)  # "follow the robot into X"
     robot = via_the_people_passed(s, robot, [rc.tokens for rc in found], mentions, read)  # "weaves through them"
     read = people_passed_stay(s, robot, found, read)  # "threads through teens by the fountain, bound for the cinema"
+    robot, read = following_the_robot(s, robot, first_robot_word, read)  # "has wandered into X, so the robot guides him back"
     read = spread_over_each(s, parts_of_a_split_whole(all_go_on(s, _followers_of_someone_said(read))))
     read = got_up_and_went(read)  # "a pair get up and pay at reception": they walk there
     return PromptReading(s.prompt, read, tuple(dict.fromkeys(places.unknown)), tuple(groups.notes), robot=robot,

@@ -61,8 +61,15 @@ def _where_a_person_stands(s: Sentence, i: int) -> bool:
 
 def suffix_role(s: Sentence, i: int) -> bool:
     """Whether word i is a person by its role word's ending (see the module doc)."""
+    return role_shaped(s, i) and _opened(s, i) and _where_a_person_stands(s, i)
+
+
+def role_shaped(s: Sentence, i: int, adjective: bool = False) -> bool:
+    """Whether word i is made as a word for a person is (its ending, no thing's word, no verb of a
+    person before it), wherever it stands; an adjective by the parser's tag too when `adjective`."""
     low, lem = s.low[i], s.lemma(i)
-    if not low.isalpha() or not (s.w[i].pos in ("NOUN", "PROPN") or (s.w[i].pos == "ADJ" and s.w[i].dep == "nsubj")) or lem in _THINGS or low in _THINGS or \
+    noun = s.w[i].pos in ("NOUN", "PROPN") or (s.w[i].pos == "ADJ" and (adjective or s.w[i].dep == "nsubj"))
+    if not low.isalpha() or not noun or lem in _THINGS or low in _THINGS or \
             lem in lx.NON_PEOPLE or lem in lx.NON_PLACES or lem in lx.COMPOUND_THINGS or lem in lx.ROBOT_WORDS:
         return False
     if not (lem in _HEADS or (len(lem) >= 6 and lem.endswith(_SURE_ENDINGS + _AGENT_ENDINGS))):
@@ -74,7 +81,7 @@ def suffix_role(s: Sentence, i: int) -> bool:
             (i > 0 and (s.low[i - 1] in lx.PERSON_NOUNS or s.lemma(i - 1) in lx.PERSON_NOUNS)
              and s.lemma(i - 1) not in lx.IMPLIED_RANGES and lem not in _HEADS):
         return False  # "a cleaner wanders in the corridor": the person's verb, taken for a noun
-    return _opened(s, i) and _where_a_person_stands(s, i)
+    return True
 
 
 def collective_modifies_role(s: Sentence, k: int) -> bool:

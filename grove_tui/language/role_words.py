@@ -59,8 +59,9 @@ def abbreviated_role(s: Sentence, i: int) -> bool:
     while first > 1 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
             s.w[first - 1].pos in ("NOUN", "ADJ"):
         first -= 1  # "a locum GP loiters", "the duty PCSO walks"
-    if first == 0 or s.low[first - 1] not in _DETERMINERS:
-        return False
+    opened = first > 0 and s.low[first - 1] in _DETERMINERS
+    if not opened and not (s.low[i] in SHORT_ROLES and first == i and (i == 0 or s.low[i - 1] in (",", ";"))):
+        return False  # a short role typed bare only at the start of chat ("hca hangs on 5 mins @ ...")
     text = s.w[i].text
     capitals = text.isalpha() and text.isupper() and 2 <= len(text) <= _MAX_LETTERS and text not in _NOT_PEOPLE
     if not (capitals or s.low[i] in SHORT_ROLES):
