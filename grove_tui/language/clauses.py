@@ -33,6 +33,7 @@ from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
 from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
+from grove_tui.language.wander_spots import browsing_between_shops, chore_after_coming, wandering_at_a_spot
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -444,12 +445,18 @@ class Clauses(ClauseCues):
         kinds = [k for _, k, _ in candidates]
         has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep in ("obj:dest", "purpose")
                               for p in c.places if p.match is not None)  # "stroll ... to reach gate A2" too
+        if (came := chore_after_coming(candidates)) is not None:  # "come in ... and mop the corridor"
+            c.places = [replace(p, prep="obj:dest") if p.prep == "obj:at" and p.index > came[0] else p for p in c.places]
+            return "walk", came[2], came[0]
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]
                 if wanted == "wander" and has_destination and not around_after(s, i) and \
-                        ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)):
+                        ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)) and \
+                        not browsing_between_shops(s.index, c.places, c.purpose):
                     return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
+                if wanted == "wander" and wandering_at_a_spot(s, c.places):
+                    return "wait", verb, i  # "mill about near the ticket machines": at that spot
                 return wanted, verb, i
         i, kind, verb = candidates[0]
         if kind == "walk" and around_after(s, i) and not has_destination:  # "walks slowly round the hall"
