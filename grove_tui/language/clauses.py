@@ -21,6 +21,7 @@ from grove_tui.language.event_causes import left_thing
 from grove_tui.language.particle_ends import place_end
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
+from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -147,10 +148,14 @@ class Clauses(ClauseCues):
                                     or self._told_before(i) or obliged_to(s, i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...", "have to leave": no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
-                s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
+                s.index, s.low[i + 1:i + 6])) or verb_with_an_object(s, i + 1)):  # "to check tomorrow's rota", "to book a court"
             return self._purpose(scan, i, i, i + 2)
         if (said := purpose_said(s, i)) is not None:  # "in order to catch the bus", "wanting flea spray"
             return self._purpose(scan, i, *said)
+        if (reason := reason_end(s, i)) is not None:  # "because her provisional licence needs a picture"
+            scan.c.purpose = scan.c.purpose or s.span(i, reason - 1)
+            self._take(scan, i, reason)
+            return True
         if w in lx.PLACE_SEQUELS and scan.c.places and place_end(s, scan.c.places[-1]) == i:  # "goods in and"
             sequel = self._sequel(scan, i)
             if sequel is not None:
@@ -266,7 +271,10 @@ class Clauses(ClauseCues):
             scan.c.places.append(goal)
             end = max(end, goal.end)
         prep = s.preposition(end) if end < s.n else None
-        if prep is not None and prep[0] in _PURPOSE_PLACE_PREPOSITIONS:
+        if particle_object(s, end):  # "to stock up on IPA": what the purpose is about, no place
+            end = s.phrase_end(end + 1)
+            scan.c.purpose = s.span(said_from, end - 1)
+        elif prep is not None and prep[0] in _PURPOSE_PLACE_PREPOSITIONS:
             place = self.places.phrase(end + prep[1], "purpose", end)
             if place is not None:
                 scan.c.places.append(place)
