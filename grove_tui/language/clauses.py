@@ -34,7 +34,8 @@ from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
 from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
-from grove_tui.language.wander_spots import browsing_between_shops, chore_after_coming, wandering_at_a_spot
+from grove_tui.language.wander_spots import (browsing_between_shops, chore_after_coming, thing_adjective,
+                                              wandering_at_a_spot)
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -304,6 +305,8 @@ class Clauses(ClauseCues):
         s = self.s
         c = scan.c
         v = s.verb(i)
+        if thing_adjective(s, i):
+            return False  # "clean towels": a thing's adjective, no verb with a place for its object
         if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1)):
             # "skip the critical care and go to ...": a place they do not go to
             place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False, mentioned=False)
@@ -429,6 +432,8 @@ class Clauses(ClauseCues):
                     (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
+            if thing_adjective(s, i):
+                continue  # "carries clean linen to ward B": a thing's adjective, no cleaning
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",

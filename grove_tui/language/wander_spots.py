@@ -9,7 +9,10 @@ Wandering with somewhere to go is walking there ("stroll to the café", "wander 
 except between shops (round 44): "a couple wander from the paint aisle over to lighting", "two teens drift
 from the sports shop to the games shop". Going from one shop (or a shop's department) to another with no
 errand said is browsing one's way round: they wander. From a shop to a café, a tunnel or a museum, or with
-an errand ("... to pick up a day pass"), they walk."""
+an errand ("... to pick up a day pass"), they walk.
+
+A chore's word that is a thing's adjective ("carries clean linen to ward B", "the robot carries clean towels
+from the laundry") is no chore: said after a verb or a determiner and before the noun it describes."""
 
 from __future__ import annotations
 
@@ -74,3 +77,13 @@ def chore_after_coming(candidates: Sequence[tuple[int, str, str]]) -> tuple[int,
     if chore is None or any(c[1] == "wander" and c[2] not in CHORE_VERBS for c in candidates):
         return None
     return next((c for c in candidates if c[1] == "walk" and c[0] < chore[0]), None)
+
+
+def thing_adjective(s: Sentence, i: int) -> bool:
+    """Whether the word at i is an adjective of the thing after it, inside a verb's object ("carries clean
+    linen"), not a verb ("Evacuate boarding area A1", "clean the corridor") (module doc)."""
+    w = s.w[i]
+    if w.pos != "ADJ" or w.dep != "amod" or w.head <= i or i == 0:
+        return False
+    prev = s.w[i - 1]
+    return prev.pos in ("VERB", "DET", "ADJ", "NUM", "PRON") and not s.is_punct(i - 1)
