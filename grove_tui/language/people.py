@@ -129,7 +129,8 @@ class People:
         if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
             return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
-                and not known_word(s.low[i]) and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
+                and not known_word(s.low[i]) and not (lem != s.low[i] and known_word(lem))  # "scones": no "sons"
+                and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
 
     def placed(self, k: int) -> bool:
         return placed_person(self.s, k)  # "Put Mum on the settee": one person, placed
