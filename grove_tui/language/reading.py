@@ -36,6 +36,7 @@ from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.hyphened_waits import with_stays_as_lengths
+from grove_tui.language.fronted_time_commas import with_fronted_time_commas
 from grove_tui.language.function_word_people import with_function_word_people
 from grove_tui.language.fronted_place_commas import with_fronted_place_commas
 from grove_tui.language.urged_on_by import without_urging_asides
@@ -174,7 +175,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
-    text = with_clock_commas(with_stays_as_lengths(text))  # "At nine Tom Hale walks": a time, not nine of him; "after a 15-minute wait"
+    text = with_fronted_time_commas(with_clock_commas(with_stays_as_lengths(text)))  # "During the changeover a bellboy ..."  # "At nine Tom Hale walks": a time, not nine of him; "after a 15-minute wait"
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_function_word_people(with_whole_person_words(text)))  # "his 4-year-old walks": "his 4-year-old child walks"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
