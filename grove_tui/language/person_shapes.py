@@ -66,11 +66,11 @@ def with_shaped_subjects(words: list[Word]) -> list[Word]:
 
 
 # Tags the small parser gives a word for people it misreads before its verb ("A steward hovers": an adverb).
-_MISTAGGED = frozenset({"RB", "JJ", "JJR", "VBN"})
+_MISTAGGED = frozenset({"RB", "JJ", "JJR", "VBN", "NN"})
 
 
 def with_listed_subjects(words: list[Word]) -> list[Word]:
-    """The parse with a word the lexicon lists for people, tagged an adverb or an adjective after "a", "an"
+    """The parse with a word the lexicon lists for people, tagged an adverb, an adjective or a noun's modifier after "a", "an"
     or "the" at the head of a sentence or a list's item and before its "-s" verb and a preposition ("A
     steward hovers near the info point, a pair of dads ..."), made the verb's subject (round 44). The verb,
     taken for a plural noun the sentence's subject, becomes the sentence's root, and the old root its
@@ -81,6 +81,8 @@ def with_listed_subjects(words: list[Word]) -> list[Word]:
         if w.tag not in _MISTAGGED or w.lower not in lx.PERSON_NOUNS or det.lower not in _ARTICLES or \
                 w.head != k + 1 or nxt.pos not in _AFTER_VERB or nxt.sentence != w.sentence:
             continue
+        if w.tag == "NN" and (w.dep != "compound" or v.tag != "NNS"):
+            continue  # "a temp wrestles with ...": the person taken for a modifier of a plural "wrestles"
         if k >= 2 and out[k - 2].sentence == w.sentence and out[k - 2].lower not in (",", ";", "and"):
             continue  # the phrase opens its sentence or a list's item
         if not v.lower.endswith("s") or v.tag not in ("VBZ", "NNS"):
