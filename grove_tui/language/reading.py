@@ -35,6 +35,7 @@ from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.chat_requests import as_chat_request
+from grove_tui.language.listed_place_names import with_listed_place_names
 from grove_tui.language.clock_fronts import with_clock_commas
 from grove_tui.language.hyphened_waits import with_stays_as_lengths
 from grove_tui.language.fronted_time_commas import with_fronted_time_commas
@@ -156,7 +157,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    text = as_chat_request(text)  # "noodle bar q is like 8 deep rn, can u add that + a busker ...": the order asked for
+    text = with_listed_place_names(as_chat_request(text), index)  # "births, deaths and marriages": one name  # "noodle bar q is like 8 deep rn, can u add that + a busker ...": the order asked for
     text = without_adjective_commas(text)  # "a pale, woozy student": one person, not "a pale" and another
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
