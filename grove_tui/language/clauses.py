@@ -34,8 +34,8 @@ from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
 from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
-from grove_tui.language.wander_spots import (browsing_between_shops, chore_after_coming, thing_adjective,
-                                              wandering_at_a_spot)
+from grove_tui.language.wander_spots import (SPOT_KEEPING_VERBS, browsing_between_shops, chore_after_coming,
+                                              thing_adjective, wandering_at_a_spot)
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -468,7 +468,7 @@ class Clauses(ClauseCues):
                         ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)) and \
                         not browsing_between_shops(s.index, c.places, c.purpose):
                     return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
-                if wanted == "wander" and wandering_at_a_spot(s, c.places):
+                if wanted == "wander" and verb not in SPOT_KEEPING_VERBS and wandering_at_a_spot(s, c.places):
                     return "wait", verb, i  # "mill about near the ticket machines": at that spot
                 return wanted, verb, i
         i, kind, verb = candidates[0]

@@ -1,7 +1,8 @@
 """Wandering needs room to wander in (round 44): "three or four schoolgirls mill about near the ticket
 machines", "a couple of teenagers hang around by the vending machine", "two porters drift about beside the
 lifts". Said of a thing, by a word of nearness ("near", "by", "beside", "next to", "outside", "in front of"),
-the people stay at that spot: they wait there. Said of a room or an area ("mill around the concourse",
+the people stay at that spot: they wait there (a round or a chore there, "patrols near the fountain", still
+goes about it). Said of a room or an area ("mill around the concourse",
 "wander round the gallery"), or of a thing gone round or through ("browse the perfume shelves"), they
 wander, as before.
 
@@ -24,6 +25,9 @@ if TYPE_CHECKING:
     from grove_tui.language.places import PlaceIndex
     from grove_tui.language.sentence import Sentence
 
+# Verbs of going about that keep going round a thing, wherever it is said: a round or a chore ("a guard
+# patrols near the fountain", "a cleaner sweeps by the bench"), not idling there.
+SPOT_KEEPING_VERBS = frozenset("patrol pace tour explore mop sweep vacuum hoover scrub tidy clean".split())
 # Words of nearness to a thing: where someone stands, not an area gone about in.
 _NEAR = frozenset({"near", "by", "beside", "next", "outside", "alongside", "close", "front", "against", "at"})
 

@@ -25,3 +25,12 @@ def test_wandering_an_area_is_still_wandering(read, world, prompt, where):
     (g,) = read(world, prompt).groups
     assert g.intent == "wander"
     assert where is None or g.location == where
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("mall", "A guard patrols near the fountain."),
+    ("station", "A cleaner sweeps by the ticket machines."),
+])
+def test_a_round_or_a_chore_by_a_thing_still_goes_about(read, world, prompt):
+    (g,) = read(world, prompt).groups
+    assert g.intent == "wander"
