@@ -10,13 +10,17 @@ import pytest
     ("hotel", "A little girl sees the robot and scurries off to hide."),
     ("hotel", "A page boy is startled by the robot and runs off to hide behind the bar."),
     ("museum", "A small boy takes fright at the robot."),
-    ("mall", "A toddler spots the robot and hides behind the fountain."),
+    ("mall", "A toddler spots the robot and darts away to hide behind the fountain."),
 ])
 def test_hiding_from_the_robot_is_avoiding_it(read, world, prompt):
     (g,) = read(world, prompt).groups
     assert (g.intent, g.robot_interaction, g.robot_reaction) == ("robot", "avoid", "Scared")
 
 
-def test_looking_alone_is_still_a_look(read):
-    (g,) = read("hotel", "A little girl stares at the robot by the lifts.").groups
-    assert (g.robot_interaction, g.robot_reaction) == ("look", "Surprised")
+@pytest.mark.parametrize("world,prompt", [
+    ("hotel", "A little girl stares at the robot by the lifts."),
+    ("mall", "A toddler waves at the robot and then hides behind his dad."),
+])
+def test_looking_or_hiding_where_one_is_is_still_a_look(read, world, prompt):
+    g = read(world, prompt).groups[0]
+    assert g.robot_interaction == "look"
