@@ -20,13 +20,17 @@ _FRONTED = re.compile(
     r"[^,.;!?]{1,40}?)\s+" + _ENDING + r"(?:\s+(?:his|her|their|the|its)\s+[a-z-]+)?,\s+(?=(?P<next>[A-Za-z]+))")
 _PRONOUNS = frozenset({"he", "she", "they", "it", "his", "her", "their", "him", "them"})
 # Words for performers the people lexicon lacks: the turn on a stage.
-_PERFORMERS = frozenset({"comedian", "comic", "speaker", "band", "dj", "compere", "magician", "act", "headliner",
-                         "keynote", "panel", "choir", "orchestra", "quartet", "soloist", "preacher"})
+_PERFORMERS = frozenset({"comedian", "comic", "speaker", "dj", "compere", "magician", "headliner", "soloist",
+                         "preacher"})
+# Gatherings that end ("When the chess club finishes, ...") are read by the rules of gatherings (events.py).
+_GATHERINGS = lx.MEMBERS_NAME_COLLECTIVES | lx.MODIFYING_COLLECTIVES | frozenset(lx.IMPLIED_RANGES) | {"band", "act"}
 _PERSON_ENDS = ("er", "or", "ist", "ian", "ant", "ent")
 
 
 def _a_performer(who: str) -> bool:
     head = who.lower().replace("-", " ").split()[-1]
+    if head in _GATHERINGS or lemma(head) in _GATHERINGS:
+        return False
     return head in _PERFORMERS or lemma(head) in lx.PERSON_NOUNS or head in lx.PERSON_NOUNS or \
         (head.endswith(_PERSON_ENDS) and len(head) > 4)
 
@@ -39,8 +43,6 @@ def without_finished_acts(text: str) -> str:
         if m.group("next").lower() in _PRONOUNS or not _a_performer(m.group("who")):
             continue
         out.append(text[at:m.start()] + (" " if m.start() > 0 else ""))
-        nxt = m.end()
-        out.append(text[nxt:nxt + 1].upper())
-        at = nxt + 1
+        at = m.end()  # the people after it as written ("twelve staff leave ...")
     out.append(text[at:])
     return "".join(out)

@@ -8,9 +8,9 @@ import pytest
 
 
 @pytest.mark.parametrize("world,prompt,who,count", [
-    ("office", "Once the CEO wraps up, twelve staff leave the boardroom.", "Twelve staff", 12),
-    ("university", "Once the lecturer wraps up, sixty students pour out of lecture theatre 1.", "Sixty students", 60),
-    ("concert_venue", "When the support band finishes their set, forty fans head to the bar.", "Forty fans", 40),
+    ("office", "Once the CEO wraps up, twelve staff leave the boardroom.", "twelve staff", 12),
+    ("university", "Once the lecturer wraps up, sixty students pour out of lecture theatre 1.", "sixty students", 60),
+    ("concert_venue", "When the warm-up comic finishes his set, forty fans head to the bar.", "forty fans", 40),
 ])
 def test_one_who_finishes_is_no_group(read, world, prompt, who, count):
     (g,) = read(world, prompt).groups
