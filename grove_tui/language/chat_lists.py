@@ -44,6 +44,8 @@ def _about(m: re.Match[str]) -> str:
     prev = before[-1].lower() if before else ""
     if prev in _WANTING or prev.endswith("'d") or prev in ("look", "looks", "looked", "seem", "seems", "feel", "feels"):
         return m.group(0)
+    if prev in ("is", "'s", "was") and re.match(r"\S+\s+(?:deep|long|strong)\b", m.string[m.end():]):
+        return ""  # "the q is like 8 deep": a line's length as said (chat_requests.py), a filler before it
     return "about "
 
 

@@ -10,7 +10,8 @@ what people do or where, which the clause reader leaves to them:
   (searched_unknown.py);
 - a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
   errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
-  robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py).
+  robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
+- going off to hide after seeing the robot, an avoidance (robot_hiding.py).
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ from grove_tui.language.places import PlaceIndex
 from grove_tui.language.problem_places import problem_places
 from grove_tui.language.purposed_places import purposed_places
 from grove_tui.language.queued_movers import queued_movers
+from grove_tui.language.robot_hiding import hiding_after_seeing
 from grove_tui.language.its_people import its_people
 from grove_tui.language.searched_unknown import searched_unknown
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
@@ -44,6 +46,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
     groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))))
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
+    groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)

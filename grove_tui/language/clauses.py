@@ -14,16 +14,15 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.clause_cues import ClauseCues
 from grove_tui.language.counts import duration_at
 from grove_tui.language.stay_particles import after_a_stay
 from grove_tui.language.manner import pace, together
-from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
-from grove_tui.language.hazards import calm_alarm, cue as hazard_cue
 from grove_tui.language.particle_ends import place_end
-from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
+from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
 from grove_tui.language.people import People
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
@@ -36,6 +35,8 @@ from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
 from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
+from grove_tui.language.wander_spots import (SPOT_KEEPING_VERBS, browsing_between_shops, chore_after_coming,
+                                              thing_adjective, wandering_at_a_spot)
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -74,7 +75,7 @@ class _Scan:
     pos: int = 0  # position in `own`
 
 
-class Clauses:
+class Clauses(ClauseCues):
     """Reads clauses of one sentence."""
 
     def __init__(self, s: Sentence, people: People, places: PlacePhrases) -> None:
@@ -148,10 +149,14 @@ class Clauses:
                                     or self._told_before(i) or obliged_to(s, i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...", "have to leave": no purpose
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
-                s.index, s.low[i + 1:i + 6])) or (s.w[i + 1].tag == "VB" and i + 2 < s.n and s.low[i + 2] in ("a", "an"))):
+                s.index, s.low[i + 1:i + 6])) or verb_with_an_object(s, i + 1)):  # "to check tomorrow's rota", "to book a court"
             return self._purpose(scan, i, i, i + 2)
         if (said := purpose_said(s, i)) is not None:  # "in order to catch the bus", "wanting flea spray"
             return self._purpose(scan, i, *said)
+        if (reason := reason_end(s, i)) is not None:  # "because her provisional licence needs a picture"
+            scan.c.purpose = scan.c.purpose or s.span(i, reason - 1)
+            self._take(scan, i, reason)
+            return True
         if w in lx.PLACE_SEQUELS and scan.c.places and place_end(s, scan.c.places[-1]) == i:  # "goods in and"
             sequel = self._sequel(scan, i)
             if sequel is not None:
@@ -267,7 +272,10 @@ class Clauses:
             scan.c.places.append(goal)
             end = max(end, goal.end)
         prep = s.preposition(end) if end < s.n else None
-        if prep is not None and prep[0] in _PURPOSE_PLACE_PREPOSITIONS:
+        if particle_object(s, end):  # "to stock up on IPA": what the purpose is about, no place
+            end = s.phrase_end(end + 1)
+            scan.c.purpose = s.span(said_from, end - 1)
+        elif prep is not None and prep[0] in _PURPOSE_PLACE_PREPOSITIONS:
             place = self.places.phrase(end + prep[1], "purpose", end)
             if place is not None:
                 scan.c.places.append(place)
@@ -297,6 +305,8 @@ class Clauses:
         s = self.s
         c = scan.c
         v = s.verb(i)
+        if thing_adjective(s, i):
+            return False  # "clean towels": a thing's adjective, no verb with a place for its object
         if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1)):
             # "skip the critical care and go to ...": a place they do not go to
             place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False, mentioned=False)
@@ -422,6 +432,8 @@ class Clauses:
                     (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
+            if thing_adjective(s, i):
+                continue  # "carries clean linen to ward B": a thing's adjective, no cleaning
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
@@ -446,12 +458,18 @@ class Clauses:
         kinds = [k for _, k, _ in candidates]
         has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep in ("obj:dest", "purpose")
                               for p in c.places if p.match is not None)  # "stroll ... to reach gate A2" too
+        if (came := chore_after_coming(candidates)) is not None:  # "come in ... and mop the corridor"
+            c.places = [replace(p, prep="obj:dest") if p.prep == "obj:at" and p.index > came[0] else p for p in c.places]
+            return "walk", came[2], came[0]
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]
                 if wanted == "wander" and has_destination and not around_after(s, i) and \
-                        ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)):
+                        ("walk" not in kinds[:kinds.index(wanted)] or goes_to_after(s, i)) and \
+                        not browsing_between_shops(s.index, c.places, c.purpose):
                     return "walk", verb, i  # "stroll to the cafe": a slow walk with a destination
+                if wanted == "wander" and verb not in SPOT_KEEPING_VERBS and wandering_at_a_spot(s, c.places):
+                    return "wait", verb, i  # "mill about near the ticket machines": at that spot
                 return wanted, verb, i
         i, kind, verb = candidates[0]
         if kind == "walk" and around_after(s, i) and not has_destination:  # "walks slowly round the hall"
@@ -466,135 +484,3 @@ class Clauses:
             k -= 1
         return k < i - 1 and s.verb(k) in lx.TELLING_VERBS | lx.ROBOT_COMMAND_VERBS and any(  # or the robot told
             self.people.is_person_noun(x) or s.low[x] in lx.ROBOT_WORDS for x in range(k + 1, i))
-
-    def _sent_away(self, i: int) -> int | None:
-        """The word after "to leave", "out", "away" or "home" when the word at i is a passive verb
-        by which others make people leave ("is sent out", "are asked to leave", "are ushered away")."""
-        s = self.s
-        if i < 1 or s.w[i].tag != "VBN" or s.verb(i) not in lx.SENDING_VERBS:
-            return None
-        aux = i - 1
-        while aux > 0 and s.w[aux].pos == "ADV":
-            aux -= 1
-        if verb_lemma(s.low[aux]) not in ("be", "get") and s.low[aux] not in ("being", "been"):
-            return None
-        k = s.skip(i + 1, {"quickly", "calmly", "immediately", "swiftly", "gently", "all"})
-        if k < s.n and s.low[k] in ("out", "away", "home", "outside"):
-            return k + 1
-        if k + 1 < s.n and s.low[k] == "to" and s.verb(k + 1) in lx.DEPARTURE_VERBS:
-            return k + 2
-        if k + 2 < s.n and s.low[k] == "to" and s.verb(k + 1) in ("get", "go", "head", "move") and \
-                s.low[k + 2] in ("out", "away", "home", "outside"):
-            return k + 3  # "are told to get out", not "are told to go to the boardroom"
-        return None
-
-    def _evacuation(self, c: Clause, own: Sequence[int]) -> None:
-        s = self.s
-        sent = next((i for i in own if self._sent_away(i) is not None), None)
-        if sent is not None:  # "everyone in there is sent out", "the guests are asked to leave"
-            c.evacuate = True
-            if c.intent is None or c.intent in lx.STATIONARY_INTENTS or c.intent == "walk":
-                c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", s.verb(sent), sent, True, True
-        if any(verb_lemma(s.low[i]) in ("evacuate", "flee", "escape") or s.low[i] in ("evacuation",) for i in own):
-            c.evacuate = True
-        for i in own:
-            pair = (s.verb(i), s.low[i + 1] if i + 1 < s.n else "")
-            if pair in lx.EVACUATION_PHRASES + lx.URGENT_EXIT_PHRASES and evacuating(s, i, pair, self.urgent(own)):
-                c.evacuate = True  # "empty out through the back door", "must get out via the east exit"
-                if c.intent is None or c.intent in lx.STATIONARY_INTENTS:
-                    c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", pair[0], i, True, True
-                break
-        if any(s.verb(i) in lx.DEPARTURE_VERBS for i in own) and any(s.low[i] in lx.IMMEDIACY_WORDS for i in own):
-            c.evacuate = True  # "everyone must leave immediately through the customs exit"
-        for i in own:
-            if s.verb(i) in lx.PERCEPTION_VERBS and any(
-                    s.low[k] in lx.EVACUATION_CUES or self.hazard(k) for k in range(i + 1, min(i + 5, s.n))
-                    if not s.is_punct(k)):
-                # "hear the alarm", "smell smoke": people who notice a hazard and do nothing else leave
-                c.evacuate = True
-                if c.intent is None or c.intent in lx.STATIONARY_INTENTS and c.verb_index == i:
-                    c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", s.verb(i), i, True, True
-                break
-
-    def _followed(self, c: Clause) -> None:
-        """Whom a follower follows: the person after the verb ("follow the charge nurse"), the group
-        before ("a porter follows close behind"), or nobody ("follow the signs": walking)."""
-        s = self.s
-        assert c.verb_index is not None
-        k0 = s.skip(c.verb_index + 1, {"close", "closely", "right", "just", "along"})
-        k1 = s.skip(k0, {"behind", "after"})
-        her = k1 < s.n and s.low[k1] == "her" and (k1 + 1 >= s.n or s.w[k1 + 1].pos not in ("NOUN", "ADJ", "PROPN"))
-        k = k1 if her else s.skip(k1, lx.DETERMINERS)  # "follows her", not "follows her mother"
-        if k + 1 < s.n and s.w[k].pos in ("NOUN", "ADJ", "PROPN") and self.people.is_person_noun(k + 1):
-            k += 1  # "follow the charge nurse"
-        if k < s.n and (self.people.is_person_noun(k) or s.low[k] in ("them", "him", "her", "others", "leader",
-                                                                      "guide", "us", "everyone")):
-            c.follows = s.span(c.verb_index + 1, k)
-        elif k1 > k0 or k0 >= s.n or s.is_punct(k0) or s.low[k0] in lx.CLAUSE_STARTERS:
-            c.follows = "the group before"
-        else:
-            c.intent = "walk"
-
-    # ---- sentence-wide cues ----------------------------------------------------------------------
-
-    def hazard(self, i: int) -> bool:
-        """A hazard named on its own ("Fire!", "smoke in the kitchen"), not a thing's name ("the fire exit")."""
-        s = self.s
-        if hazard_cue(s, i):  # "a smell of burning", "the alarm goes off" (hazards.py)
-            return True
-        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN") or smoked_by_someone(s, i):
-            return False
-        return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")
-
-    def urgent(self, own: Sequence[int]) -> bool:
-        """Whether the clause says leaving cannot wait ("must get out", "get out now") or the prompt
-        names a hazard ("Fire! ... get out")."""
-        return any(self.s.low[i] in lx.URGENCY_WORDS for i in own) or any(self.hazard(i) for i in range(self.s.n))
-
-    def evacuation(self) -> bool:
-        """Whether the prompt speaks of an evacuation anywhere (a cue word or a hazard)."""
-        s = self.s
-        return any((s.low[i] in lx.EVACUATION_CUES or verb_lemma(s.low[i]) in lx.EVACUATION_CUES) and not
-                   calm_alarm(s, i) or self.hazard(i) for i in range(s.n))
-
-    def negated_tokens(self) -> set[int]:
-        """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers
-        are waiting on platform 1, but ..."): its places are where nobody is, so they set no scene.
-        Not when the clause names an exception ("nobody is in the kitchen except the cleaner")."""
-        s = self.s
-        out: set[int] = set()
-        for i in range(s.n):
-            nobody = s.low[i] in lx.NOBODY_WORDS or (s.low[i] == "no" and i + 1 < s.n and (
-                s.low[i + 1] in ("one", "body") or self.people.is_person_noun(i + 1)))
-            if not nobody:
-                continue
-            end = i + 1
-            while end < s.n and s.w[end].sentence == s.w[i].sentence and s.low[end] not in (";", ":") \
-                    and not (s.low[end] in lx.CLAUSE_STARTERS | {"instead"} and end > i + 2):
-                end += 1
-            clause = range(i, end)
-            if any(s.low[k] in lx.EXCEPT_WORDS or s.low[k] in ("apart", "only", "than") for k in clause) or \
-                    (end < s.n and s.low[end] in lx.EXCEPT_WORDS - {"but"}):  # "..., but a cleaner"
-                continue
-            out.update(clause)
-        return out
-
-    def fronted_start(self, previous_last: int, first: int) -> int:
-        """Where the group mentioned at `first` starts owning words: before it, a fronted phrase with
-        no verb, opened by a preposition and closed by a comma; else the mention itself."""
-        s = self.s
-        b = first - 1
-        if b <= previous_last or s.low[b] != ",":
-            return first
-        j = b - 1
-        while j > previous_last and (not s.is_punct(j) or s.hyphen_inside(j)) and s.low[j] not in lx.CLAUSE_STARTERS:
-            j -= 1
-        fronted = range(j + 1, b)
-        if not fronted or s.low[j + 1] not in lx.PLACE_PREPOSITIONS | {"for", "during", "from"}:
-            return first
-        if j == previous_last:
-            return first  # "8 people in line at the desk, 2 more at ...": the phrase is the group's before
-        if any(s.w[x].pos == "VERB" and verb_lemma(s.low[x]) in lx.INTENT_VERBS
-               and not s.index.knows(lemma(s.low[x])) for x in fronted):
-            return first  # a clause of its own, not a fronted phrase ("sitting" in "the sitting room" is a name)
-        return j + 1

@@ -1,6 +1,7 @@
 """A feeling said by an adjective set apart from the clause (round 30): "Spellbound, our toddler gawps at
 the robot", "Intrigued, a lad stares at it", "Wary, an old man watches the robot", "A girl eyes the
-robot, fascinated." Looking at the robot reads Surprised; the feeling says how they look: curious
+robot, fascinated.", and between commas in the clause (round 44: "two sketchers lay aside their pencils,
+fascinated, to study the robot"). Looking at the robot reads Surprised; the feeling says how they look: curious
 (Curious) or afraid (Scared). Only a look is coloured so: a feeling never turns one interaction into
 another.
 """
@@ -22,11 +23,13 @@ _WORD = r"(?:(?:a\s+(?:little|bit)|rather|very|quite|slightly|clearly|visibly|ut
         r"a\s+touch)\s+)?([a-z]+)"
 _FRONTED = re.compile(r"^\s*" + _WORD + r"\s*,", re.I)
 _TRAILING = re.compile(r",\s*" + _WORD + r"\s*[.!]?\s*$", re.I)
+_BETWEEN = re.compile(r",\s*" + _WORD + r"\s*,", re.I)
 
 
 def said_feeling(prompt: str) -> str | None:
     """The reaction a feeling set apart at the start or the end of a one-clause prompt says."""
     found = [m.group(1).lower() for m in (_FRONTED.search(prompt), _TRAILING.search(prompt)) if m]
+    found += [m.group(1).lower() for m in _BETWEEN.finditer(prompt)]
     for word in found:
         if word in _CURIOUS:
             return "Curious"

@@ -434,7 +434,7 @@ class Groups:
             # "walk to the cafeteria and wait there": they go there, then stay; without a verb of
             # motion ("queue to the desk") the place is only where they are.
             roles.location = roles.destination
-            if not moves:
+            if not moves and not (intent == "wander" and roles.start is not None):  # "from the paint aisle over to lighting"
                 roles.destination = None
 
     @staticmethod

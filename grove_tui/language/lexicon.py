@@ -168,7 +168,7 @@ PERSON_NOUNS = frozenset(
  commissionaire ticketholder shopper buyer seller bargain-hunter punter gambler
  vip dignitary celebrity politician mayor minister diplomat ambassador delegate envoy representative
  spokesperson presenter host moderator panelist panellist attendee exhibitor organiser organizer
- planner coordinator volunteer helper aide assistant intern understudy deputy
+ planner coordinator volunteer helper aide assistant intern understudy deputy temp busker
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow fella pal buddy chum dude guy gal granny oldie widow widower
  wheelchair-user amputee patient sufferer sitter dogsitter housesitter
  club choir troop coach referee umpire lifeguard chaplain vicar priest imam rabbi nun monk storyteller footballer golfer
@@ -177,7 +177,7 @@ PERSON_NOUNS = frozenset(
 # Last parts of a compound that names a person ("lifeguard", "groundsman", "goalkeeper", "headteacher"),
 # with at least three letters before them; not the things so named ("mudguard", "ottoman").
 COMPOUND_PERSON_HEADS = ("guard", "man", "woman", "keeper", "boy", "girl", "maid", "master", "mistress", "wife",
-                         "worker", "teacher", "fighter", "minder", "person", "goer", "watcher", "seller", "leader")
+                         "worker", "teacher", "fighter", "minder", "person", "goer", "watcher", "seller", "leader", "people")
 COMPOUND_THINGS = frozenset("safeguard mudguard fireguard vanguard rearguard ottoman walkman caiman dolman "
                             "human".split())
 # Kinds of people a place can belong to, by the kind it counts as: "their room" said of teenagers

@@ -30,6 +30,11 @@ def _english_verbs() -> frozenset[str]:
     return frozenset(lookups.get_table("lemma_index").get("verb", []))
 
 
+def english_verb(base: str) -> bool:
+    """Whether a base form is a verb of the language (WordNet's verb index, as the parser ships it)."""
+    return base in _english_verbs()
+
+
 def _one_person(words: list[Word], k: int) -> int | None:
     """The head of the one person whose phrase ends right before k, else None."""
     prev = words[k - 1]

@@ -24,6 +24,7 @@ from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
 from grove_tui.language.counted_compounds import kind_before_counted
 from grove_tui.language.placed_people import placed_person
+from grove_tui.language.scene_doers import scene_doer
 from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
 from grove_tui.language.trader_people import trader_subject
 from grove_tui.language.role_words import abbreviated_role, abbreviation_label, family_member, plural_adjective_people, world_person_name
@@ -119,7 +120,7 @@ class People:
             return True  # "both quiz contestants leave", "a greeter by the leaflet stand", "the drummer and bassist haul"
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
-                told_as_he_or_she(s, i) or placed_person(s, i):  # "an old dear shrieks when she spots the robot"
+                told_as_he_or_she(s, i) or placed_person(s, i) or scene_doer(s, i):  # "an old dear shrieks when she spots the robot"
             return True
         if mover_subject(s, i) or moved_person_noun(s, i) or fetched_then_taken(s, i) or moved_described_person(s, i) or \
                 ((taken_name(s, i) or aided_name(s, i)) and self.is_person_noun(i - 2)):  # "a carer guides Doris from ..."
@@ -133,10 +134,11 @@ class People:
         if i > 0 and s.low[i - 1] in lx.ROBOT_WORDS:
             return False  # "the robot glides": the robot's verb, however close to "guides"
         return (len(s.low[i]) >= 6 and (s.w[i].pos in ("NOUN", "PROPN") or counted) and not s.index.knows(lem)
-                and not known_word(s.low[i]) and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
+                and not known_word(s.low[i]) and not (lem != s.low[i] and known_word(lem))  # "scones": no "sons"
+                and not second_verb(s, i) and near_person_noun(s.low[i]) is not None)
 
     def placed(self, k: int) -> bool:
-        return placed_person(self.s, k)  # "Put Mum on the settee": one person, placed
+        return placed_person(self.s, k) or scene_doer(self.s, k)  # "Put Mum on the settee": one person, placed; "Have ... and Grandpa doing ..."
 
     def plural_word(self, k: int) -> bool:
         """Whether a person word that looks singular names some people ("staff", "police", "the injured")."""
@@ -347,7 +349,7 @@ class People:
             if last is not None and self.is_person_noun(last):
                 k = last  # "two coach company reps": the reps, of a coach company
                 continue
-            if person and (self._modifies_next_noun(k) or modifies_a_thing(s, k, person_next=k + 1 < s.n and self.is_person_noun(k + 1))):
+            if person and not scene_doer(s, k) and (self._modifies_next_noun(k) or modifies_a_thing(s, k, person_next=k + 1 < s.n and self.is_person_noun(k + 1))):
                 return None  # "the outpatient clinic", "security alert": a thing named after people
             if person or (s.lemma(k) in lx.IMPLIED_RANGES and k + 1 < s.n and s.low[k + 1] == "of"):
                 # ("a queue of eight people": the collective heads the phrase)

@@ -11,6 +11,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.object_verbs import english_verb
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
@@ -61,4 +62,39 @@ def with_shaped_subjects(words: list[Word]) -> list[Word]:
         out[k] = replace(w, pos="NOUN", tag="NN", dep="nsubj", head=k + 1)
         out[k + 1] = replace(v, pos="VERB", tag="VBZ", lemma=base)
         out[k - 1] = replace(det, head=k)
+    return out
+
+
+# Tags the small parser gives a word for people it misreads before its verb ("A steward hovers": an adverb).
+_MISTAGGED = frozenset({"RB", "JJ", "JJR", "VBN", "NN"})
+
+
+def with_listed_subjects(words: list[Word]) -> list[Word]:
+    """The parse with a word the lexicon lists for people, tagged an adverb, an adjective or a noun's modifier after "a", "an"
+    or "the" at the head of a sentence or a list's item and before its "-s" verb and a preposition ("A
+    steward hovers near the info point, a pair of dads ..."), made the verb's subject (round 44). The verb,
+    taken for a plural noun the sentence's subject, becomes the sentence's root, and the old root its
+    second clause."""
+    out = list(words)
+    for k in range(1, len(out) - 2):
+        w, v, nxt, det = out[k], out[k + 1], out[k + 2], out[k - 1]
+        if w.tag not in _MISTAGGED or w.lower not in lx.PERSON_NOUNS or det.lower not in _ARTICLES or \
+                w.head != k + 1 or nxt.pos not in _AFTER_VERB or nxt.sentence != w.sentence:
+            continue
+        if w.tag == "NN" and (w.dep != "compound" or v.tag != "NNS"):
+            continue  # "a temp wrestles with ...": the person taken for a modifier of a plural "wrestles"
+        if k >= 2 and out[k - 2].sentence == w.sentence and out[k - 2].lower not in (",", ";", "and"):
+            continue  # the phrase opens its sentence or a list's item
+        if not v.lower.endswith("s") or v.tag not in ("VBZ", "NNS"):
+            continue
+        base = verb_lemma(v.lower) if verb_lemma(v.lower) != v.lower else v.lemma if v.lemma != v.lower else v.lower[:-1]
+        if v.tag == "NNS" and base == verb_lemma(v.lower) == v.lower or not english_verb(base):
+            continue  # "a steward hovers": a verb of the language, not "a senior nurses"
+        root = next((j for j, x in enumerate(out) if x.sentence == w.sentence and x.dep == "ROOT"), k + 1)
+        out[k] = replace(w, pos="NOUN", tag="NN", dep="nsubj", head=k + 1)
+        out[k + 1] = replace(v, pos="VERB", tag="VBZ", lemma=base, dep="ROOT" if root != k + 1 else v.dep,
+                             head=k + 1 if root != k + 1 else v.head)
+        out[k - 1] = replace(det, head=k)
+        if root != k + 1:
+            out[root] = replace(out[root], dep="conj", head=k + 1)
     return out

@@ -34,8 +34,10 @@ from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
+from grove_tui.language.chat_requests import as_chat_request
 from grove_tui.language.clock_fronts import with_clock_commas
-from grove_tui.language.fronted_time_commas import with_fronted_time_commas
+from grove_tui.language.hyphened_waits import with_stays_as_lengths
+from grove_tui.language.fronted_time_commas import with_fronted_phrase_commas, with_fronted_time_commas
 from grove_tui.language.function_word_people import with_function_word_people
 from grove_tui.language.fronted_place_commas import with_fronted_place_commas
 from grove_tui.language.urged_on_by import without_urging_asides
@@ -48,6 +50,7 @@ from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
+from grove_tui.language.got_out import as_got_out
 from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
@@ -95,6 +98,7 @@ from grove_tui.language.joined_kinds import with_joined_kinds
 from grove_tui.language.comma_names import without_name_commas
 from grove_tui.language.counted_outings import with_counted_outings
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
+from grove_tui.language.finished_acts import without_finished_acts
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.met_then_moved import as_taken_along
@@ -159,7 +163,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    text = without_adjective_commas(without_name_commas(text, index))  # "a pale, woozy student": one person, not "a pale" and another; "to births, deaths and marriages": one name
+    text = without_adjective_commas(without_name_commas(as_chat_request(text), index))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
@@ -169,7 +173,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
-    text = as_workers(text)  # "Have Janet man the front desk": Janet mans it
+    text = as_got_out(as_workers(text))  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(text)))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
@@ -180,7 +184,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
-    text = with_fronted_time_commas(with_clock_commas(text))  # "At nine Tom Hale walks": a time, not nine of him; "After dinner a couple stroll": "After dinner, a couple"
+    text = with_fronted_phrase_commas(with_fronted_time_commas(with_clock_commas(with_stays_as_lengths(text))))  # "At nine Tom Hale walks": a time, not nine of him; "After dinner a couple stroll", "During the changeover a bellboy ...": a comma after the time; "after a 15-minute wait"
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_age_bands(with_function_word_people(with_whole_person_words(text))))  # "his 4-year-old walks": "his 4-year-old child walks"; "eighteen over-fifties": "eighteen older people"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
@@ -192,7 +196,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
-    text = with_fronted_subsets(without_awaited_arrivals(text))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
+    text = with_fronted_subsets(without_finished_acts(without_awaited_arrivals(text)))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_going_in(as_heading(with_vehicle_loads(text)))  # "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"

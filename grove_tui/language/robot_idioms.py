@@ -40,6 +40,7 @@ IDIOMS: dict[tuple[str, ...], str] = {
     ("flatten", "*", "against"): "avoid", ("press", "*", "against"): "avoid", ("make", "*", "scarce"): "avoid",
     ("keep", "*", "distance"): "avoid", ("give", "*", "a", "wide", "berth"): "avoid",
     ("give", "*", "a", "berth"): "avoid", ("crowd", "round"): "approach", ("flock", "round"): "approach",
+    ("take", "fright"): "avoid", ("take", "fright", "at"): "avoid",  # "takes fright at the robot and scurries off"
 }
 IDIOMS.update(HOLDING_IDIOMS)  # "stands his ground", "keeps a hand on the robot" (robot_holds.py)
 # Verbs of a start or a stop that, timed by the robot, are stopping to look ("an old man freezes as ...").

@@ -101,6 +101,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         # "five visitors take the stairs": with nowhere else to go, the way they take is where they go
         roles.via.remove(taken)
         roles.destination = taken
+    if intent == "wander" and roles.destination is not None and roles.start is None and roles.location is not None \
+            and roles.read_from[roles.location].prep == "from":
+        roles.start, roles.location = roles.location, None  # "wander from the paint aisle over to lighting"
     return roles
 
 

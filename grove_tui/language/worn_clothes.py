@@ -72,9 +72,11 @@ def without_worn_clothes(text: str, index: PlaceIndex) -> str:
         worn_words = m.group("worn").lower().replace(",", " ").split()
         nxt = m.group("next").lower()
         after = m.group("after").strip()
+        place_word = any(index.knows(lemma(w)) for x in worn_words[1:-1] for w in x.split("-"))
         if not after[:1] in (",", ";") and (not (nxt.endswith("s") and not nxt.endswith("ss")) or
-                                            worn_words[-1] in _COLOURS):
+                                            worn_words[-1] in _COLOURS) and not place_word:
             return m.group(0)  # "two medics in scrubs walk", "women in pink sashes": read as it is
+        # but "a couple in paint-spattered jeans wander": no paint department in their clothes
         word = m.group("person").lower()
         if word in lx.ROBOT_WORDS or word in _NOT_PEOPLE or \
                 not (_person(word) or (m.group("det") or "").lower() in _DETERMINERS or _counted_before(text, m.start("person"))) or \
