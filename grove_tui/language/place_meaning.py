@@ -10,6 +10,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_rooms import room_saying_it
+from grove_tui.language.bare_alias_kinds import other_kind_of_room
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
 from grove_tui.language.done_there import gerund_room as gerund_room, room_doing_it, zone_saying
@@ -114,6 +115,9 @@ class PlaceMeaning:
         index = self.s.index
         entry = index.entry(name)
         head = lemma(phrase[-1]) if phrase else head  # the head alone: a place read by meaning
+        if entry is not None and other_kind_of_room(index, PlaceMatch(entry.name, entry.kind, entry.zone, 0.0, False),
+                                                    (*modifiers, head), modifiers):
+            return False  # "the bike shop" is no newsagent, though the newsagent is also "the shop"
         if entry is not None and entry.kind != "zone" and modifiers and head in lx.GENERIC_PLACE_HEADS and \
                 head not in entry.tokens and not set(modifiers) & entry.tokens:
             return False  # "the tv room" is no boardroom screen, a "tv" only by a synonym: a room, not a fixture

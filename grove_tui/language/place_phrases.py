@@ -28,11 +28,14 @@ from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARG
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.worked_states import past_state
+from grove_tui.language.worn_fixtures import worn_fixture
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
-from grove_tui.language.bare_alias_kinds import by_bare_alias
+from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
+from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.places import PlaceMatch
+from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -117,7 +120,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j):  # "in A&E"
+                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j):  # "in A&E"
             return None  # "in line", "at once", "on time": no determiner and no place word
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):
@@ -150,7 +153,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)
         beside = match is not thing  # the room around the thing: decided, whoever stands there
-        match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
+        match = fixture_of_room(s, k, j) or (match if prep == "on" else fixtures_as_room(s, k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
         named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")
@@ -167,7 +170,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
                 (any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)) or taken_in(s, at)):
             return None  # "porters roll a patient in her bed": what carries the person moved, not a place
-        if at >= 1 and k < s.n and low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas)) \
+        if at >= 1 and k < s.n and (low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas))
+                                    or worn_fixture(s, k, at, j, match, self.people.is_person_noun)) \
                 and (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
             # "a woman in a wheelchair", "a man on crutches": what one has or wears ("on a bench" is a bench)
             return None
@@ -189,7 +193,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and (not match.exact or by_bare_alias(s.index, match, lemmas)) and owned is None and \
                 (informal is not None or not self.modifiers_agree(
                     self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS),
-                    match.name, phrase)):
+                    match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds):
             match = None  # "the ice-cream stand" is no phone stand; an informal name is its whole name or near
         meant = None
         described = None if numbered else self._described(phrase, lemmas, j, match is not None and match.exact)
@@ -255,32 +259,6 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             self.named.append(match.name)
             self.history.append(place)
         return place
-
-    def _fixture_of_room(self, k: int, j: int) -> PlaceMatch | None:
-        """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the
-        room's name, a possessive, then the fixture's words, read among that room's fixtures."""
-        s = self.s
-        mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
-        if mark is None:
-            return None
-        room = s.index.match(phrase_lemmas(s.low[k:mark]))
-        thing = phrase_lemmas(s.low[mark + 1:j])
-        if room is None or room.kind != "zone" or not thing:
-            return None
-        inside = [m for m in s.index.candidates(thing) if m.kind == "entity" and m.zone == room.name]
-        return inside[0] if inside else None
-
-    def _fixtures_as_room(self, k: int, j: int, lemmas: Sequence[str], match: PlaceMatch | None) -> PlaceMatch | None:
-        """"the luggage carousels", "the ticket gates": several fixtures alike of one room, named in the
-        plural, are that room (not "one of the benches", which is one of them; the caller keeps "sit on
-        the benches" on them)."""
-        s = self.s
-        if match is None or match.kind != "entity" or j <= k or s.w[j - 1].tag != "NNS" or \
-                (k >= 2 and s.low[k - 1] == "of" and s.low[k - 2] in ("one", "each", "any", "some")):
-            return match
-        alike = [m for m in s.index.candidates(lemmas) if m.kind == "entity" and m.zone == match.zone
-                 and m.score >= match.score - 1e-9]
-        return PlaceMatch(match.zone, "zone", match.zone, match.score, False) if len(alike) >= 2 else match
 
     @staticmethod
     def _outdoors(lemmas: Sequence[str]) -> bool:
