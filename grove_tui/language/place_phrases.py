@@ -24,7 +24,7 @@ from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
-from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning, gerund_room
+from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.worked_states import past_state
@@ -207,7 +207,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if meant is None and (record_unknown or prep == "named"):
                 # about to be refused: a place the world has under another word ("the stockroom", "the
                 # nurses' post") is still clearly nearest one of its names, if less near
-                meant = self._by_meaning(said, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
+                meant = self.rescued(said, lemmas)
             if meant is not None and not self.modifiers_agree(kinds, meant[0].name, head=lemmas[-1] if lemmas else ""):
                 meant = None  # "the stockroom" is near "boardroom" by its letters, not by what it is
             match = meant[0] if meant is not None else None
