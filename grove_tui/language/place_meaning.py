@@ -18,6 +18,7 @@ from grove_tui.language.related_words import to_another_where
 from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.participle_places import participle_said, participle_starts
+from grove_tui.language.phrasal_after import particle_after
 from grove_tui.language.people import People
 from grove_tui.language.place_described import (DESCRIBED_ACCEPT, plain_activity, purpose_by_use, rank_described,
                                                 room_with, vehicle_stop)
@@ -298,7 +299,8 @@ class PlaceMeaning:
             return None
         end = first
         while end < s.n and end < first + 10 and (not s.is_punct(end) or s.hyphen_inside(end)) and \
-                not (s.low[end] in lx.CLAUSE_STARTERS and end > first and not self._joins_inside(first, end)) \
+                not (s.low[end] in lx.CLAUSE_STARTERS and end > first and not self._joins_inside(first, end)
+                     and not particle_after(s, end)) \
                 and not to_another_where(s.low, end):  # "from where they rent skis to where ...": two places
             end += 1
         if end < first + 2:
