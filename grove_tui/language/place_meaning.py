@@ -26,7 +26,7 @@ from grove_tui.language.place_compounds import KIND_HEADS, modified_otherwise, n
 from grove_tui.language.place_doers import named_doers
 from grove_tui.language.place_of_zone import served_at
 from grove_tui.language.place_first_words import names_its_zone
-from grove_tui.language.place_head_clauses import head_described, room_named_by_head
+from grove_tui.language.place_head_clauses import fixture_named_by_head, head_described, room_named_by_head
 from grove_tui.language.place_other_kinds import kind_agrees
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
@@ -213,6 +213,8 @@ class PlaceMeaning:
             meant = theirs
         if meant is not None and exact:  # "the pool where toddlers have lessons": the teaching pool, not its tank
             meant = (room_named_by_head(s.index, meant[0], content[-1]), *meant[1:])
+        elif meant is not None and content:  # "the counter that does fried chicken": the chicken shop's counter
+            meant = (fixture_named_by_head(s.index, meant[0], content[-1]), *meant[1:])
         return (meant, end) if meant is not None else None
 
     def _by_clause(self, phrase: Sequence[str], lemmas: Sequence[str], content: Sequence[str], activity: str,
