@@ -293,7 +293,8 @@ class PlaceIndex:
                     break
                 entry = self._by_name.get(m.name)
                 if m.kind == "entity" and m.zone == best.name and m.exact and entry is not None and \
-                        zone is not None and head in _kind_words(entry) and head not in _kind_words(zone):
+                        zone is not None and head in _kind_words(entry) and head not in _kind_words(zone) and \
+                        not _contains(phrase, zone.phrases[0]):  # "the phone booths": the room's own name
                     return m
         if best.kind != "zone":
             for m in found[1:]:
