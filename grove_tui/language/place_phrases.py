@@ -23,7 +23,7 @@ from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said
-from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
+from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
 from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
@@ -225,7 +225,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
         if informal is not None and score > INFORMAL_SURE:
-            score = INFORMAL_SURE
+            match, score = informal_room(s.index, lemmas, match), INFORMAL_SURE  # "the loo": the room, not its toilet
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
