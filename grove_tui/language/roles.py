@@ -101,7 +101,21 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         # "five visitors take the stairs": with nowhere else to go, the way they take is where they go
         roles.via.remove(taken)
         roles.destination = taken
+    if roles.via and roles.destination is None and roles.start is not None and not stationary and \
+            _leads_out(index, roles.via[-1]):
+        # "trail out of the departure lounge and down the forward gangway": a way out of the building
+        # said last, with nowhere else to go, is where they end
+        roles.destination = roles.via.pop()
     return roles
+
+
+def _leads_out(index: PlaceIndex, name: str) -> bool:
+    """Whether a place is a door that leads out of the building (a gangway, a jet bridge, a street door)."""
+    entry = index.entry(name)
+    if entry is None or entry.kind != "door":
+        return False
+    door = index.world.find(name)
+    return getattr(door, "leads_to", "") == "outside"
 
 
 # Words that place a place by another: said right after a place phrase ("the study room next to the
