@@ -22,7 +22,7 @@ from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
-from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said
+from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
 from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
@@ -552,7 +552,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 # the name starts here: "to pick up wheelchairs" is a purpose, though "wheelchairs" is a name
                 entry = s.index.entry(match.name)
                 first = first_lemma([w for w in words[:n] if w not in lx.DETERMINERS], lemma)  # "make-up": makeup
-                return entry is None or first in entry.tokens
+                lemmas = phrase_lemmas(words[:n])  # "the banqueting tables": the tables of the banqueting suite
+                return entry is None or first in entry.tokens or zone_then_thing(s.index, lemmas, match) is not None
         return False
 
     def scan_names(self, skip: set[int]) -> None:

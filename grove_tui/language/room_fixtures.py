@@ -33,5 +33,15 @@ def fixtures_as_room(s: Sentence, k: int, j: int, lemmas: Sequence[str], match: 
             (k >= 2 and s.low[k - 1] == "of" and s.low[k - 2] in ("one", "each", "any", "some")):
         return match
     alike = [m for m in s.index.candidates(lemmas) if m.kind == "entity" and m.zone == match.zone
-             and m.score >= match.score - 1e-9]
+             and m.score >= match.score - 1e-9 and _of_kind(s, m.name, lemmas[-1] if lemmas else "")]
     return PlaceMatch(match.zone, "zone", match.zone, match.score, False) if len(alike) >= 2 else match
+
+
+def _of_kind(s: Sentence, name: str, head: str) -> bool:
+    """Whether a fixture is of the kind the head says (its type or a word of its names): "the banqueting
+    tables" are alike only with other tables of the room, not with its stage (its "top table"), when the
+    room has things of that type."""
+    entry = s.index.entry(name)
+    typed = any(head in t.split() for e in s.index.entries if e.kind == "entity" and entry is not None and
+                e.zone == entry.zone for t in e.types)  # the room has things of that type: by type alone
+    return entry is not None and (any(head in t.split() for t in entry.types) or not typed and head in entry.tokens)
