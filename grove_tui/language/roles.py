@@ -57,7 +57,8 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             role = "start"  # "smoke drifts into Gallery 3 and the visitors leave by the fire door": the door
         if role in ("start", "via") and p in scene_places and (roles.start or roles.location):
             continue  # "a fire breaks out in radiology: ... visitors in the cafeteria": where they are is their own
-        if role == "start" and p in scene_places and p.match.kind == "entity" and p.match.zone:
+        if role == "start" and p in scene_places and p.match.kind == "entity" and p.match.zone and \
+                (intent == "evacuate" or p.prep not in ("in", "inside")):  # "After ten minutes in the sauna, ...": in it
             name = p.match.zone  # "smoke pours from the star projector and the audience flee": from its room
             roles.read_from.setdefault(name, p)
         if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):
