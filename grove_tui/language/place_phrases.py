@@ -523,7 +523,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             # every word of the longer phrase must be the one place's: "check in counter a", not
             # "ward c to the nurses" (two places either side of a preposition)
             entry = s.index.entry(longer.name)
-            if entry is not None and all(t in entry.tokens for t in extended):
+            if entry is not None and all(t in entry.tokens for t in extended) and \
+                    (s.low[j] != "and" or any(" and " in said for said in entry.said)):  # not "the lifts and 2 cleaners"
                 return True
         return False
 
