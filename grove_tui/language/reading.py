@@ -125,6 +125,7 @@ from grove_tui.language.outing_parties import as_outing_parties
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
 from grove_tui.language.listed_adjectives import without_adjective_commas
+from grove_tui.language.prefixed_verbs import with_joined_prefixes
 from grove_tui.language.contracted_is import with_full_is
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
@@ -154,7 +155,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    text = without_adjective_commas(text)  # "a pale, woozy student": one person, not "a pale" and another
+    text = with_joined_prefixes(without_adjective_commas(text))  # "a pale, woozy student": one person; "re-cable": one verb
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
