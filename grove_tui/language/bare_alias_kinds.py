@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from grove_tui.language.lexicon import PERSON_NOUNS
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import name_tokens
 
@@ -47,6 +48,8 @@ def other_kind_of_room(index: PlaceIndex, match: PlaceMatch | None, lemmas: Sequ
     own = set(entry.tokens) | set(entry.tag_tokens) | set(name_tokens(entry.description))
     own |= {t for e in index.entries if e.zone == entry.name for t in e.tokens}
     for word in modifiers:
+        if word in PERSON_NOUNS:
+            continue  # "the men's toilet": whose it is, not another kind
         if word in own or any(len(word) > 3 and word in t for t in own) or index.near_building(word) >= KIND_NEAR:
             continue  # "paper" of a newsagent "selling newspapers"
         near = index.by_meaning(word, among={entry.name})

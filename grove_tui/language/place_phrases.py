@@ -17,7 +17,7 @@ from grove_tui.language.particle_names import first_lemma
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
-from grove_tui.language.place_kinds import absent_kind, kind_continues, tier_place
+from grove_tui.language.place_kinds import absent_kind, gerund_before_room, gerund_kind, kind_continues, tier_place
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
@@ -189,10 +189,10 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             exits = [m for e in s.index.exits() if (m := s.index.match(name_tokens(e))) is not None and m.kind == "door"]
             match = self._nearest_exit(exits) if exits and self.context_zones else exits[0] if exits else None
         kinds = tuple(t for t in lemmas[:-1] if t not in lx.PLACE_MODIFIERS) if informal is not None else \
-            self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS)
+            self.noun_modifiers(start, j, gerunds=gerund_kind(s, lemmas, j))
         if match is not None and (not match.exact or by_bare_alias(s.index, match, lemmas)) and owned is None and \
                 (informal is not None or not self.modifiers_agree(
-                    self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS),
+                    self.noun_modifiers(start, j, gerunds=gerund_kind(s, lemmas, j)),
                     match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds):
             match = None  # "the ice-cream stand" is no phone stand; an informal name is its whole name or near
         meant = None
@@ -401,7 +401,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
         s = self.s
         w = s.low[j]
-        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)) and not kind_continues(phrase, w):
+        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)) and not kind_continues(phrase, w) and \
+                not gerund_before_room(s, j):  # "the old changing rooms": a kind of room, no verb
             return True
         if verb_lemma(w) in lx.INTENT_VERBS and s.index.knows(lemma(w)) and \
                 not w.endswith("ing") and self.whole_name(phrase) and \

@@ -3,9 +3,9 @@
 "two recruits in BA sets jog from the kit room" (the BA sets on their rack), "skaters in hire skates".
 The clothes pass (worn_clothes.py) keeps any phrase a world's name shares, so the fixture was taken
 for where the people are, and it outranked the room they set off from. A person is never "in" a
-fixture said with no determiner and in the plural: that is what they have on; a room of the world
-("staff in scrubs", "patients in ward B", "kids in ball pits" of a world whose pits are rooms) is
-still a place."""
+fixture said with no determiner and in the plural whose head is a thing worn or held (socks, suits,
+sets of kit, aids): that is what they have on; a room of the world ("patients in ward B", "kids in
+ball pits" of a world whose pits are rooms) and furniture ("actors in costume rails") are still places."""
 
 from __future__ import annotations
 
@@ -26,4 +26,10 @@ def worn_fixture(s: Sentence, k: int, at: int, end: int, match: PlaceMatch | Non
         return False
     if s.w[k].pos in ("DET", "NUM", "PRON") or any(s.low[x] in ("'s", "’s") for x in range(k, end)):
         return False
-    return match is None or match.kind != "zone"
+    return (match is None or match.kind != "zone") and s.lemma(end - 1) in WORN_HEADS
+
+
+# Heads of what people wear or carry on them, in the plural ("grip socks", "BA sets", "bunny suits").
+WORN_HEADS = frozenset("sock stocking tights suit set kit gear harness helmet lid goggle glove boot shoe trainer skate "
+                       "aid armband float overall gown apron mask vest jacket coat lanyard badge tag band "
+                       "wristband headphone earmuff glass sunglasses scrub uniform tabard".split())
