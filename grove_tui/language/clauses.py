@@ -18,7 +18,7 @@ from grove_tui.language.counts import duration_at
 from grove_tui.language.manner import pace, together
 from grove_tui.language.events import evacuating
 from grove_tui.language.event_causes import left_thing
-from grove_tui.language.hazards import calm_alarm, cue as hazard_cue
+from grove_tui.language.hazards import calm_alarm, cue as hazard_cue, in_a_place_name
 from grove_tui.language.particle_ends import place_end
 from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
@@ -555,7 +555,7 @@ class Clauses:
         """Whether the prompt speaks of an evacuation anywhere (a cue word or a hazard)."""
         s = self.s
         return any((s.low[i] in lx.EVACUATION_CUES or verb_lemma(s.low[i]) in lx.EVACUATION_CUES) and not
-                   calm_alarm(s, i) or self.hazard(i) for i in range(s.n))
+                   calm_alarm(s, i) and not in_a_place_name(s, i) or self.hazard(i) for i in range(s.n))  # "the drill yard"
 
     def negated_tokens(self) -> set[int]:
         """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.calm_alarms import calm_alarm as calm_alarm
+from grove_tui.language.cue_in_names import in_a_place_name as in_a_place_name
 from grove_tui.language.giving_off import giving_off_cue
 from grove_tui.language.hazard_events import event_cue
 from grove_tui.language.hazard_scares import scare_cue
