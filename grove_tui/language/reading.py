@@ -49,6 +49,7 @@ from grove_tui.language.where_generic_people import without_generic_where_people
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.left_with import as_dropped_off
+from grove_tui.language.causative_orders import as_ordered_clauses
 from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
@@ -165,7 +166,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
-    text = as_dropped_off(as_workers(text), index)  # "Have Janet man the front desk": Janet mans it; "leaves a box with the desk": drops it off there
+    text = as_dropped_off(as_ordered_clauses(as_workers(text)), index)  # "Have Janet man the front desk": Janet mans it; "leaves a box with the desk": drops it off there
     text = as_outing_parties(text)  # "a stag do of twelve": a stag party of twelve
     text = with_counted_collectives(with_scale_figures(text))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100
     text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
