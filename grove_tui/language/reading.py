@@ -54,6 +54,7 @@ from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
 from grove_tui.language.queue_lengths import with_queue_lengths
+from grove_tui.language.has_a_queue import with_queues_had
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
@@ -169,7 +170,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_dropped_off(as_ordered_clauses(as_workers(text)), index)  # "Have Janet man the front desk": Janet mans it; "leaves a box with the desk": drops it off there
     text = as_outing_parties(text)  # "a stag do of twelve": a stag party of twelve
     text = with_counted_collectives(with_scale_figures(text))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100
-    text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
+    text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
