@@ -31,6 +31,7 @@ from grove_tui.language.place_other_kinds import kind_agrees
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
 from grove_tui.language.sentence import IDENTIFIER, Sentence
+from grove_tui.language.service_purposes import served_point, service_done
 from grove_tui.language.tokens import lemma, verb_lemma
 
 # A place matched by meaning alone: at least this similar to one of its names, and this much nearer
@@ -463,8 +464,9 @@ class PlaceMeaning:
             return purpose_by_use(self.s.index, purpose)  # "to buy aspirin and plasters": the pharmacy
         score = 0.65 if best.similarity >= 0.7 else 0.55
         alternatives = (other.entry.name,) if other is not None and score < UNSURE_BELOW else ()
-        return (gerund_room(self.s.index, words, PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone,
-                                                            best.similarity, False)), score,  # "to fingerprinting"
+        found = PlaceMatch(best.entry.name, best.entry.kind, best.entry.zone, best.similarity, False)
+        found = served_point(self.s.index, found) if service_done(words) else found  # "to get his prescription filled"
+        return (gerund_room(self.s.index, words, found), score,  # "to fingerprinting"
                 f"'{purpose}' names no place; by meaning it is done at {best.entry.name} (like '{best.nearest}')",
                 alternatives)
 
