@@ -30,6 +30,6 @@ def worn_fixture(s: Sentence, k: int, at: int, end: int, match: PlaceMatch | Non
 
 
 # Heads of what people wear or carry on them, in the plural ("grip socks", "BA sets", "bunny suits").
-WORN_HEADS = frozenset("sock stocking tights suit set kit gear harness helmet lid goggle glove boot shoe trainer skate "
+WORN_HEADS = frozenset("sock stocking tights suit set kit gear harness helmet lid goggle glove boot shoe trainer skate hat cap "
                        "aid armband float overall gown apron mask vest jacket coat lanyard badge tag band "
                        "wristband headphone earmuff glass sunglasses scrub uniform tabard".split())

@@ -21,3 +21,10 @@ def test_a_worn_fixture_is_no_start(read, world, prompt, start):
 def test_a_room_said_bare_after_in_is_still_a_place(read):
     group = read("hospital", "Two nurses in ward B walk to the pharmacy.").groups[0]
     assert group.start == "ward_b"
+
+
+def test_party_hats_are_worn_not_refused(read):
+    prompt = "The birthday crowd, nine cub scouts in party hats, are tucking into pizza at the long tables in Pole Position."
+    reading = read("karting_centre", prompt)
+    assert reading.unknown_places == ()
+    assert reading.groups[0].location == "pole_position_tables"
