@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.events import evacuating
-from grove_tui.language.hazards import calm_alarm, cue as hazard_cue
+from grove_tui.language.hazards import calm_alarm, cue as hazard_cue, in_a_place_name
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.smoking_people import smoked_by_someone
@@ -117,7 +117,7 @@ class ClauseCues:
         """Whether the prompt speaks of an evacuation anywhere (a cue word or a hazard)."""
         s = self.s
         return any((s.low[i] in lx.EVACUATION_CUES or verb_lemma(s.low[i]) in lx.EVACUATION_CUES) and not
-                   calm_alarm(s, i) or self.hazard(i) for i in range(s.n))
+                   calm_alarm(s, i) and not in_a_place_name(s, i) or self.hazard(i) for i in range(s.n))  # "the drill yard"
 
     def negated_tokens(self) -> set[int]:
         """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers

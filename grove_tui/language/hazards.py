@@ -15,9 +15,11 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.calm_alarms import calm_alarm as calm_alarm
+from grove_tui.language.cue_in_names import in_a_place_name as in_a_place_name
 from grove_tui.language.giving_off import giving_off_cue
 from grove_tui.language.hazard_events import event_cue
 from grove_tui.language.hazard_scares import scare_cue
+from grove_tui.language.outside_sources import outside_at
 from grove_tui.language.place_kinds import PLACE_KINDS
 from grove_tui.language.sentence import Sentence
 
@@ -90,7 +92,10 @@ def cause_thing(s: Sentence, k: int, prep: str, at: int) -> bool:
     if any(s.low[x] in lx.PERSONAL_PRONOUNS or s.lemma(x) in lx.PERSON_NOUNS for x in before):
         return False  # "the cook in the kitchen smells burning": a person's place
     end = k
-    while end < s.n and (s.w[end].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or s.low[end] in ("'s", "’s")):
+    while end < s.n and not outside_at(s, end) and (s.w[end].pos in ("DET", "ADJ", "NOUN", "PROPN", "NUM") or
+                                                 s.low[end] in ("'s", "’s")):
         end += 1
+    if end > k and end < s.n and outside_at(s, end):
+        return True  # "from a bonfire next door": outside the building, no place of it
     heads = [s.lemma(x) for x in range(k, end) if s.w[x].pos in ("NOUN", "PROPN")]
     return bool(heads) and heads[-1] not in ROOM_HEADS and s.low[end - 1] not in ROOM_HEADS

@@ -146,7 +146,7 @@ PERSON_NOUNS = frozenset(
     grandad granddad gran granny nan nana grandpa ceo cto cfo boss backpacker hiker businessman businesswoman
     businessperson twin triplet toddler schoolchild schoolboy schoolgirl inspector conductor driver mechanic builder
     lecturer researcher scientist relative carer holidaymaker newlywed honeymooner
-    traveler sightseer photographer journalist reporter
+    traveler sightseer photographer journalist reporter auxiliary
  candidate applicant interviewee recruit trainee apprentice graduate newcomer employer staffer official
  crewmember crewman aircrew airman airwoman captain copilot steward purser handler
  porter bellboy concierge doorman usher caretaker housekeeper maid butler gardener handyman repairman

@@ -15,4 +15,9 @@ if TYPE_CHECKING:
 def own_participle(s: Sentence, m: Mention) -> bool:
     """Whether the word after mention m is a participle that describes it ("a driver walking to")."""
     nxt = m.last + 1
+    if nxt < s.n and s.low[nxt] == "and":  # "..., pilot and co-pilot walking to B1": the pair's participle
+        nxt += 1
+        while nxt < s.n and nxt <= m.last + 6 and (s.w[nxt].pos in ("DET", "ADJ", "NOUN", "PROPN") or s.low[nxt] == "-") \
+                and s.w[nxt].tag != "VBG":
+            nxt += 1
     return 0 < m.first and nxt < s.n and s.w[nxt].tag == "VBG" and s.low[m.first - 1] in ("and", ",")

@@ -1,6 +1,7 @@
 """Nouns after a place preposition that say no place, round 29: people counted after a preposition
 ("threads its way through forty-odd pickers", "weaves through a dozen pickers": the people the robot
-passes, not a room the world lacks), and a handheld device something is done on ("recording it on a
+passes, not a room the world lacks; round 44, a collective of them: "weaves through a swarm of
+schoolkids", "pushes through a gaggle of hens"), and a handheld device something is done on ("recording it on a
 phone", "chatting on a mobile", "taking photos on a tablet")."""
 
 from __future__ import annotations
@@ -21,7 +22,23 @@ _COUNT_WORDS = frozenset("dozen dozens score scores hundred hundreds odd -odd or
 
 def no_place_thing(s: Sentence, k: int, prep: str) -> bool:
     """Whether the phrase from k after the preposition `prep` is people counted or a handheld device."""
-    return _a_device(s, k, prep) or _counted_people(s, k)
+    return _a_device(s, k, prep) or _counted_people(s, k) or _a_collective_of_people(s, k)
+
+
+def _a_collective_of_people(s: Sentence, k: int) -> bool:
+    """"a swarm of schoolkids", "the small gaggle of hens", "a steady stream of commuters": people."""
+    j = k
+    while j < s.n and (s.low[j] in lx.DETERMINERS or s.w[j].pos == "ADJ"):
+        j += 1
+    if j + 2 >= s.n or s.lemma(j) not in lx.IMPLIED_RANGES or s.low[j + 1] != "of":
+        return False
+    for x in range(j + 2, min(j + 5, s.n)):
+        if s.w[x].pos not in ("ADJ", "NOUN", "PROPN", "DET") and s.low[x] != "-":
+            return False
+        if s.w[x].tag == "NNS" and (s.lemma(x) in lx.PERSON_NOUNS or s.low[x] in lx.PERSON_NOUNS or
+                                   (agent_of_a_verb(s.low[x], "") and not s.index.knows(s.lemma(x)))):
+            return True
+    return False
 
 
 def _a_device(s: Sentence, k: int, prep: str) -> bool:

@@ -20,7 +20,7 @@ TOPIC_VERBS = frozenset(
 INTO_STATES = frozenset(
     "tear laughter laugh giggle hysterics song chant cheer applause sob tantrum rage fury panic trouble "
     "mischief difficulty debt action argument fight row conversation discussion chat smile grin frown "
-    "sweat fit shape line view sight place position habit routine dance".split())
+    "sweat fit shape line view sight place position habit routine dance flame".split())
 
 
 def is_idiom_phrase(s: Sentence, k: int, prep: str, at: int) -> bool:

@@ -8,10 +8,13 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from grove_tui.language import lexicon as lx
 from grove_tui.language.places import PlaceIndex
+from grove_tui.language.sentence import Sentence
 from grove_tui.language.sport_kinds import SPORT_KINDS, only_the_head
 from grove_tui.language.tier_places import absent_tier, tier_place as tier_place
 from grove_tui.language.trade_places import TRADE_PLACES
+from grove_tui.language.tokens import lemma
 
 # Facilities people name by their kind: each is a kind of place of its own, never a word for rooms in
 # general ("room", "hall", "area") nor for what a room is for ("music", "stock").
@@ -68,3 +71,23 @@ def kind_continues(phrase: Sequence[str], word: str) -> bool:
     """Whether `word` goes on a kind of place the phrase began ("baby" then "changing"), though a
     parser reads it as a verb."""
     return bool(phrase) and f"{phrase[-1]}_{word}" in PLACE_KINDS
+
+
+def gerund_before_room(s: Sentence, j: int) -> bool:
+    """Whether the "-ing" word at j says what a room right after it is for ("the old changing rooms", "the
+    drying room"), not a verb after a place phrase ("in the cafeteria evacuating"), round 44."""
+    return s.low[j].endswith("ing") and j + 1 < s.n and s.w[j + 1].pos == "NOUN" and \
+        lemma(s.low[j + 1]) in lx.GENERIC_PLACE_HEADS | _ROOM_HEADS
+
+
+_ROOM_HEADS = frozenset("hall lounge office bay booth suite village block shed cubicle pen".split())
+
+
+def gerund_kind(s: Sentence, lemmas: Sequence[str], end: int) -> bool:
+    """Whether an "-ing" word before a place phrase's head says what kind of place it is: before a head
+    that names something ("the vending machines"), or right before a word for any room ("the changing
+    rooms", round 44: else "rooms" alone matched the staff room)."""
+    if not lemmas:
+        return False
+    return lemmas[-1] not in lx.GENERIC_PLACE_HEADS or (end >= 2 and s.w[end - 2].tag == "VBG" and
+                                                        s.low[end - 2].endswith("ing"))

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -83,3 +84,12 @@ def chat_ends_name(s: Sentence, j: int, phrase: Sequence[str], whole: bool) -> b
     if w.endswith("in") and verb_lemma(w + "g") in lx.INTENT_VERBS:
         return True  # chat drops the g: no parser knows "waitin"
     return w.endswith("ing") and s.w[j].pos == "VERB" and verb_lemma(w) in lx.INTENT_VERBS
+
+
+def informal_room(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch) -> PlaceMatch:
+    """An informal name read as a fixture its room fits as well (round 44): "the loo" is read as
+    "toilet", the name of a house's toilet and an alias of its bathroom; said so, it is the room."""
+    if match.kind != "entity":
+        return match
+    tied = [m for m in index.candidates(lemmas) if m.score >= match.score - 1e-9]
+    return next((m for m in tied if m.kind == "zone" and m.name == match.zone and m.exact), match)

@@ -57,6 +57,12 @@ def zone_then_thing(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch 
     before = tuple(lemmas[:-1])
     zones = [(len(p), e) for e in index.entries if e.kind == "zone" for p in e.phrases
              if len(p) <= len(before) and before[len(before) - len(p):] == p]
+    if not zones and len(before) == 1:
+        # "the banqueting tables": a word only one room is called by ("the banqueting suite"), then a kind
+        # of thing it has; that room's thing, though another room's things are "the tables"
+        called = [e for e in index.entries if before[0] in e.tokens]
+        if len(called) == 1 and called[0].kind == "zone" and head not in called[0].tokens:
+            return thing_of_zone(index, head, called[0].name)
     if not zones:
         return None
     zone = max(zones, key=lambda z: z[0])[1]

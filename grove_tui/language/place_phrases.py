@@ -17,22 +17,25 @@ from grove_tui.language.particle_names import first_lemma
 from grove_tui.language.place_around import around, beside_thing, stairs
 from grove_tui.language.place_idioms import is_idiom_phrase
 from grove_tui.language.place_entrance import main_entrance
-from grove_tui.language.place_kinds import absent_kind, kind_continues, tier_place
+from grove_tui.language.place_kinds import absent_kind, gerund_before_room, gerund_kind, kind_continues, tier_place
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.place_outside import zone_around
-from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said
-from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at
-from grove_tui.language.place_meaning import MEANING_RESCUE, MEANING_RESCUE_MARGIN, Decided, PlaceMeaning, gerund_room
+from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
+from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
+from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.worked_states import past_state
+from grove_tui.language.worn_fixtures import worn_fixture
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
-from grove_tui.language.bare_alias_kinds import by_bare_alias
+from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
+from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.places import PlaceMatch
+from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
@@ -117,7 +120,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j):  # "in A&E"
+                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j):  # "in A&E"
             return None  # "in line", "at once", "on time": no determiner and no place word
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):
@@ -150,7 +153,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)
         beside = match is not thing  # the room around the thing: decided, whoever stands there
-        match = self._fixture_of_room(k, j) or (match if prep == "on" else self._fixtures_as_room(k, j, lemmas, match))
+        match = fixture_of_room(s, k, j) or (match if prep == "on" else fixtures_as_room(s, k, j, lemmas, match))
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
         named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")
@@ -167,7 +170,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if possessive and at >= 2 and low[at] in ("in", "on") and self.people.is_person_noun(at - 1) and \
                 (any(verb_lemma(low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 5), at - 1)) or taken_in(s, at)):
             return None  # "porters roll a patient in her bed": what carries the person moved, not a place
-        if at >= 1 and k < s.n and low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas)) \
+        if at >= 1 and k < s.n and (low[k] in ("a", "an") and (self.people.is_person_noun(at - 1) or carried_in(s, at, lemmas))
+                                    or worn_fixture(s, k, at, j, match, self.people.is_person_noun)) \
                 and (low[at] in ("in", "with") or (low[at] == "on" and match is None)):
             # "a woman in a wheelchair", "a man on crutches": what one has or wears ("on a bench" is a bench)
             return None
@@ -185,11 +189,11 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             exits = [m for e in s.index.exits() if (m := s.index.match(name_tokens(e))) is not None and m.kind == "door"]
             match = self._nearest_exit(exits) if exits and self.context_zones else exits[0] if exits else None
         kinds = tuple(t for t in lemmas[:-1] if t not in lx.PLACE_MODIFIERS) if informal is not None else \
-            self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS)
+            self.noun_modifiers(start, j, gerunds=gerund_kind(s, lemmas, j))
         if match is not None and (not match.exact or by_bare_alias(s.index, match, lemmas)) and owned is None and \
                 (informal is not None or not self.modifiers_agree(
-                    self.noun_modifiers(start, j, gerunds=bool(lemmas) and lemmas[-1] not in lx.GENERIC_PLACE_HEADS),
-                    match.name, phrase)):
+                    self.noun_modifiers(start, j, gerunds=gerund_kind(s, lemmas, j)),
+                    match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds):
             match = None  # "the ice-cream stand" is no phone stand; an informal name is its whole name or near
         meant = None
         described = None if numbered else self._described(phrase, lemmas, j, match is not None and match.exact)
@@ -203,7 +207,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if meant is None and (record_unknown or prep == "named"):
                 # about to be refused: a place the world has under another word ("the stockroom", "the
                 # nurses' post") is still clearly nearest one of its names, if less near
-                meant = self._by_meaning(said, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
+                meant = self.rescued(said, lemmas)
             if meant is not None and not self.modifiers_agree(kinds, meant[0].name, head=lemmas[-1] if lemmas else ""):
                 meant = None  # "the stockroom" is near "boardroom" by its letters, not by what it is
             match = meant[0] if meant is not None else None
@@ -221,7 +225,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if chosen is not None:
                 match, (score, reason, alternatives) = chosen[0], chosen[1:]
         if informal is not None and score > INFORMAL_SURE:
-            score = INFORMAL_SURE
+            match, score = informal_room(s.index, lemmas, match), INFORMAL_SURE  # "the loo": the room, not its toilet
             reason = f"'{' '.join(phrase)}' is an informal name: read as '{' '.join(lemmas)}', {match.name}"
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
@@ -255,32 +259,6 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             self.named.append(match.name)
             self.history.append(place)
         return place
-
-    def _fixture_of_room(self, k: int, j: int) -> PlaceMatch | None:
-        """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the
-        room's name, a possessive, then the fixture's words, read among that room's fixtures."""
-        s = self.s
-        mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
-        if mark is None:
-            return None
-        room = s.index.match(phrase_lemmas(s.low[k:mark]))
-        thing = phrase_lemmas(s.low[mark + 1:j])
-        if room is None or room.kind != "zone" or not thing:
-            return None
-        inside = [m for m in s.index.candidates(thing) if m.kind == "entity" and m.zone == room.name]
-        return inside[0] if inside else None
-
-    def _fixtures_as_room(self, k: int, j: int, lemmas: Sequence[str], match: PlaceMatch | None) -> PlaceMatch | None:
-        """"the luggage carousels", "the ticket gates": several fixtures alike of one room, named in the
-        plural, are that room (not "one of the benches", which is one of them; the caller keeps "sit on
-        the benches" on them)."""
-        s = self.s
-        if match is None or match.kind != "entity" or j <= k or s.w[j - 1].tag != "NNS" or \
-                (k >= 2 and s.low[k - 1] == "of" and s.low[k - 2] in ("one", "each", "any", "some")):
-            return match
-        alike = [m for m in s.index.candidates(lemmas) if m.kind == "entity" and m.zone == match.zone
-                 and m.score >= match.score - 1e-9]
-        return PlaceMatch(match.zone, "zone", match.zone, match.score, False) if len(alike) >= 2 else match
 
     @staticmethod
     def _outdoors(lemmas: Sequence[str]) -> bool:
@@ -423,7 +401,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
     def _verb_ends_name(self, phrase: Sequence[str], j: int) -> bool:
         s = self.s
         w = s.low[j]
-        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)) and not kind_continues(phrase, w):
+        if s.w[j].pos in ("VERB", "AUX") and not s.index.knows(lemma(w)) and not kind_continues(phrase, w) and \
+                not gerund_before_room(s, j):  # "the old changing rooms": a kind of room, no verb
             return True
         if verb_lemma(w) in lx.INTENT_VERBS and s.index.knows(lemma(w)) and \
                 not w.endswith("ing") and self.whole_name(phrase) and \
@@ -545,7 +524,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             # every word of the longer phrase must be the one place's: "check in counter a", not
             # "ward c to the nurses" (two places either side of a preposition)
             entry = s.index.entry(longer.name)
-            if entry is not None and all(t in entry.tokens for t in extended):
+            if entry is not None and all(t in entry.tokens for t in extended) and \
+                    (s.low[j] != "and" or any(" and " in said for said in entry.said)):  # not "the lifts and 2 cleaners"
                 return True
         return False
 
@@ -574,7 +554,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 # the name starts here: "to pick up wheelchairs" is a purpose, though "wheelchairs" is a name
                 entry = s.index.entry(match.name)
                 first = first_lemma([w for w in words[:n] if w not in lx.DETERMINERS], lemma)  # "make-up": makeup
-                return entry is None or first in entry.tokens
+                lemmas = phrase_lemmas(words[:n])  # "the banqueting tables": the tables of the banqueting suite
+                return entry is None or first in entry.tokens or zone_then_thing(s.index, lemmas, match) is not None
         return False
 
     def scan_names(self, skip: set[int]) -> None:

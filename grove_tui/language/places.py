@@ -22,6 +22,7 @@ from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 
+from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
@@ -292,7 +293,8 @@ class PlaceIndex:
                     break
                 entry = self._by_name.get(m.name)
                 if m.kind == "entity" and m.zone == best.name and m.exact and entry is not None and \
-                        zone is not None and head in _kind_words(entry) and head not in _kind_words(zone):
+                        zone is not None and head in _kind_words(entry) and head not in _kind_words(zone) and \
+                        not _contains(phrase, zone.phrases[0]):  # "the phone booths": the room's own name
                     return m
         if best.kind != "zone":
             for m in found[1:]:
@@ -313,7 +315,7 @@ class PlaceIndex:
         head = content[-1]
         if len(content) >= 2 and any(ch.isdigit() for ch in head) and content[-2] in NON_PLACES:
             return True  # "flight BA123", "train 42": a service and its number, not a place
-        if names_another_kind(self, content) or tier_place(phrase) is not None:
+        if names_another_kind(self, content) or tier_place(phrase) is not None or bare_place_name(content, 0):
             return False  # "the garden centre" in a supermarket: a kind of place, not the building
         if head == "area" and any(t not in self.building_words and t not in _WHOLE_AREA for t in content[:-1]):
             return False  # "the smoking area", "the coffee area": a part of the building, not all of it

@@ -48,13 +48,17 @@ from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
+from grove_tui.language.where_generic_people import without_generic_where_people
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.got_out import as_got_out
+from grove_tui.language.left_with import as_dropped_off
+from grove_tui.language.causative_orders import as_ordered_clauses
 from grove_tui.language.chat_pairs import with_chat_pairs
 from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
 from grove_tui.language.queue_lengths import with_queue_lengths
+from grove_tui.language.has_a_queue import with_queues_had
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
@@ -125,6 +129,7 @@ from grove_tui.language.robot_bound import people_passed_stay
 from grove_tui.language.robot_followers import with_robot_followers
 from grove_tui.language.passing_moment import with_passing_moments
 from grove_tui.language.owners_stay import owners_stay_put
+from grove_tui.language.whole_of_zone import whole_of_zone
 from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
@@ -132,6 +137,7 @@ from grove_tui.language.outing_parties import as_outing_parties
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
 from grove_tui.language.listed_adjectives import without_adjective_commas
+from grove_tui.language.prefixed_verbs import with_joined_prefixes
 from grove_tui.language.contracted_is import with_full_is
 from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
@@ -163,7 +169,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    text = without_adjective_commas(without_name_commas(as_chat_request(text), index))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name
+    text = with_joined_prefixes(without_adjective_commas(without_name_commas(as_chat_request(text), index)))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name; "re-cable": one verb
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
@@ -173,10 +179,10 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
-    text = as_got_out(as_workers(text))  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"
+    text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(text)))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
-    text = with_queue_lengths(text)  # "the line at X is forty strong": forty people queue at X
+    text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
@@ -217,6 +223,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
+    reading = whole_of_zone(typed, index, reading)  # "all of the circle, roughly 300 punters, escapes": from the circle
     reading = with_passing_moments(typed, reading)  # "look at the robot as it passes the desk"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
@@ -228,7 +235,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = list(kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find()))))))))))))
+    mentions = list(kin_families(s, without_generic_where_people(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find())))))))))))))
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

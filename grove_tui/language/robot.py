@@ -393,8 +393,8 @@ class RobotClauses:
     @staticmethod
     def _role(p: Place, verb_index: int | None, stationary: bool) -> str:
         prep = p.prep
-        if prep in ("from", "obj:start", "out"):
-            return "start"
+        if prep in ("from", "obj:start", "out", "off"):
+            return "start"  # "brings the towels in off the balcony to the bathroom": from the balcony
         if stationary:
             return "location"
         if prep in lx.DESTINATION_PREPOSITIONS or prep in ("obj:dest", "for", "purpose"):

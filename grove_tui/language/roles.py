@@ -57,7 +57,8 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             role = "start"  # "smoke drifts into Gallery 3 and the visitors leave by the fire door": the door
         if role in ("start", "via") and p in scene_places and (roles.start or roles.location):
             continue  # "a fire breaks out in radiology: ... visitors in the cafeteria": where they are is their own
-        if role == "start" and p in scene_places and p.match.kind == "entity" and p.match.zone:
+        if role == "start" and p in scene_places and p.match.kind == "entity" and p.match.zone and \
+                (intent == "evacuate" or p.prep not in ("in", "inside")):  # "After ten minutes in the sauna, ...": in it
             name = p.match.zone  # "smoke pours from the star projector and the audience flee": from its room
             roles.read_from.setdefault(name, p)
         if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):
@@ -104,7 +105,21 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
     if intent == "wander" and roles.destination is not None and roles.start is None and roles.location is not None \
             and roles.read_from[roles.location].prep == "from":
         roles.start, roles.location = roles.location, None  # "wander from the paint aisle over to lighting"
+    if roles.via and roles.destination is None and roles.start is not None and not stationary and \
+            _leads_out(index, roles.via[-1]):
+        # "trail out of the departure lounge and down the forward gangway": a way out of the building
+        # said last, with nowhere else to go, is where they end
+        roles.destination = roles.via.pop()
     return roles
+
+
+def _leads_out(index: PlaceIndex, name: str) -> bool:
+    """Whether a place is a door that leads out of the building (a gangway, a jet bridge, a street door)."""
+    entry = index.entry(name)
+    if entry is None or entry.kind != "door":
+        return False
+    door = index.world.find(name)
+    return getattr(door, "leads_to", "") == "outside"
 
 
 # Words that place a place by another: said right after a place phrase ("the study room next to the

@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from functools import cached_property
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.handled_fixtures import handled_at
 from grove_tui.language.parser import Word
 from grove_tui.language.particle_names import known_compound
@@ -146,8 +147,8 @@ class Sentence:
             return "at", 1  # "tinker with the pinsetters", "check out the SUV": at the fixture handled
         if i + 1 < self.n and (self.w[i + 1].pos in ("VERB", "AUX") or verb_lemma(low[i + 1]) in lx.INTENT_VERBS) \
                 and not self.index.knows(lemma(low[i + 1])) and low[i + 1] not in lx.DETERMINERS \
-                and not known_compound(low, i + 1, self.index.knows):  # "in make-up"
-            return None
+                and not known_compound(low, i + 1, self.index.knows) and not bare_place_name(low, i + 1):
+            return None  # "in make-up", "to lost property": a place's name, though its first word is a verb
         two = tuple(low[i:i + 2])
         three = tuple(low[i:i + 3])
         if three in (("in", "front", "of"),):
@@ -195,8 +196,8 @@ class Sentence:
         if k >= self.n:
             return False
         w = self.low[k]
-        if w in lx.DETERMINERS or self.w[k].pos in ("DET", "NUM", "PROPN"):
-            return False
+        if w in lx.DETERMINERS or self.w[k].pos in ("DET", "NUM", "PROPN") or bare_place_name(self.low, k):
+            return False  # "to lost property": a place's name
         if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
             return False
         if k + 1 < self.n and IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)) and not (

@@ -83,6 +83,8 @@ def verb_intent(s: Sentence, i: int) -> str | None:
     v = s.verb(i)
     if s.low[i] in ("pace", "crawl") and any(s.low[k] == "at" for k in range(max(0, i - 4), i)):
         return None  # "walk at a snail's pace", "move at a crawl": how fast, not pacing about
+    if _object_noun(s, i):
+        return None  # "swap a failed drive in row B": a thing worked on, no driving
     if v in lx.INTENT_VERBS:
         return lx.INTENT_VERBS[v]
     if v in LEAVING_VERBS or verb_lemma(s.low[i]) in LEAVING_VERBS:
@@ -130,3 +132,15 @@ def around_after(s: Sentence, i: int) -> bool:
         k += 1
     # "wanders round to the toilets": round is the way to a place, not wandering about
     return k < s.n and s.low[k] in _AROUND and not (k + 1 < s.n and s.low[k + 1] in _ON_TO)
+
+
+def _object_noun(s: Sentence, i: int) -> bool:
+    """Whether word i is a noun the parser makes the object of another verb, after a determiner and the
+    words that describe it ("a failed drive", "the last run"): a thing, whatever verb it spells."""
+    w = s.w[i]
+    if w.pos != "NOUN" or w.dep != "dobj" or w.head == i or s.w[w.head].pos not in ("VERB", "AUX"):
+        return False
+    k = i - 1
+    while k >= 0 and k >= i - 3 and s.w[k].dep in ("amod", "compound") and s.w[k].head == i:
+        k -= 1
+    return k < i - 1 and k >= 0 and s.low[k] in ("a", "an", "the", "this", "that", "their", "his", "her", "its")

@@ -12,8 +12,9 @@ import pytest
 # ---- 1. a part moving off by a verb the parser takes for a counted noun ---------------------------------
 
 @pytest.mark.parametrize("world,prompt,whole,part,start,destination", [
+    # "the phone booths" is the phone booth area's own name (its pods are only "a phone booth"): round 44
     ("coworking_space", "Of the 10 members at the communal table, 3 duck into the phone booths.", 10, 3,
-     "communal_table", "phone_pods"),
+     "communal_table", "phone_booths"),
     ("station", "Of the 40 commuters on platform 2, 6 dart into the waiting room.", 40, 6, "platform_2",
      "waiting_room"),
     ("mall", "Of the twenty shoppers in the food court, five hop over to the cinema.", 20, 5, "food_court",

@@ -1,0 +1,47 @@
+"""Fixtures and their rooms in a place phrase, for language/place_phrases.py: a fixture named after
+the room it is in ("the toy shop's till", "the café's counter"), and several fixtures alike of one room
+named in the plural, which are that room ("the luggage carousels", "the ticket gates")."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from grove_tui.language.places import PlaceMatch
+from grove_tui.language.sentence import Sentence
+from grove_tui.language.tokens import phrase_lemmas
+
+
+def fixture_of_room(s: Sentence, k: int, j: int) -> PlaceMatch | None:
+    """"the toy shop's till", "the café's counter": a fixture named after the room it is in, the
+    room's name, a possessive, then the fixture's words, read among that room's fixtures."""
+    mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
+    if mark is None:
+        return None
+    room = s.index.match(phrase_lemmas(s.low[k:mark]))
+    thing = phrase_lemmas(s.low[mark + 1:j])
+    if room is None or room.kind != "zone" or not thing:
+        return None
+    inside = [m for m in s.index.candidates(thing) if m.kind == "entity" and m.zone == room.name]
+    return inside[0] if inside else None
+
+
+def fixtures_as_room(s: Sentence, k: int, j: int, lemmas: Sequence[str], match: PlaceMatch | None) -> PlaceMatch | None:
+    """"the luggage carousels", "the ticket gates": several fixtures alike of one room, named in the
+    plural, are that room (not "one of the benches", which is one of them; the caller keeps "sit on
+    the benches" on them)."""
+    if match is None or match.kind != "entity" or j <= k or s.w[j - 1].tag != "NNS" or \
+            (k >= 2 and s.low[k - 1] == "of" and s.low[k - 2] in ("one", "each", "any", "some")):
+        return match
+    alike = [m for m in s.index.candidates(lemmas) if m.kind == "entity" and m.zone == match.zone
+             and m.score >= match.score - 1e-9 and _of_kind(s, m.name, lemmas[-1] if lemmas else "")]
+    return PlaceMatch(match.zone, "zone", match.zone, match.score, False) if len(alike) >= 2 else match
+
+
+def _of_kind(s: Sentence, name: str, head: str) -> bool:
+    """Whether a fixture is of the kind the head says (its type or a word of its names): "the banqueting
+    tables" are alike only with other tables of the room, not with its stage (its "top table"), when the
+    room has things of that type."""
+    entry = s.index.entry(name)
+    typed = any(head in t.split() for e in s.index.entries if e.kind == "entity" and entry is not None and
+                e.zone == entry.zone for t in e.types)  # the room has things of that type: by type alone
+    return entry is not None and (any(head in t.split() for t in entry.types) or not typed and head in entry.tokens)
