@@ -29,7 +29,23 @@ def _in_a_place_said_by_a_clause(s: Sentence, at: int) -> bool:
     while j >= 0 and s.w[j].sentence == s.w[at].sentence and not s.is_punct(j) and s.low[j] != "where" and \
             s.low[j] not in lx.CLAUSE_STARTERS - {"with", "after", "before", "as"}:
         j -= 1
-    return j > 0 and s.low[j] == "where" and s.low[j - 1] in _TO_WHERE
+    if not (j > 0 and s.low[j] == "where" and s.low[j - 1] in _TO_WHERE):
+        return False
+    return not _present_now(s, j)
+
+
+def _present_now(s: Sentence, where: int) -> bool:
+    """Whether the "where" clause names people of the scene, there now: someone's own or counted people
+    ("to where her two kids are queuing") or people doing it at this moment ("where the guards are
+    waiting"), not people said for what usually happens there ("where staff look after lost children")."""
+    end = where + 1
+    while end < s.n and s.w[end].sentence == s.w[where].sentence and not s.is_punct(end):
+        end += 1
+    clause = range(where + 1, end)
+    if any(s.low[k] in ("her", "his", "their", "our", "my", "your") or s.w[k].pos == "NUM" for k in clause
+           if k < where + 4):
+        return True
+    return any(s.low[k] in ("is", "are") and k + 1 < s.n and s.w[k + 1].tag == "VBG" for k in clause)
 
 
 def describes_a_place(s: Sentence, at: int) -> bool:
