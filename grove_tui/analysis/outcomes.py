@@ -40,6 +40,7 @@ from grove_tui.analysis.metrics import Trajectories, iter_trajectory_chunks
 from grove_tui.errors import MetricsError
 from grove_tui.files import write_text_atomic
 from grove_tui.scenario.events import SimEvent
+from grove_tui.scenario.reach import GLANCE_SECONDS, LOOK_RANGE, LOOK_SHARE, PASS_AT, PASS_BY
 from grove_tui.scenario.report import (
     FAILS,
     HOLDS,
@@ -66,12 +67,7 @@ PARTNER_WALKING = 0.3  # m/s: the people followed are on their way (standing peo
 CHAIN_LINK = 2.0  # metres between neighbours of a column that walks behind someone
 CHAIN_MAX = 120  # followers checked as a column (the pairwise distances grow with its square)
 FOLLOW_SHARE = 0.5  # share of the robot's moving time a follower must keep within reach
-LOOK_RANGE = 10.0  # metres: the robot is in sight for "look" within this
 LOOK_ANGLE = 0.6  # rad: facing within this counts as looking
-LOOK_SHARE = 0.6  # "stare at", "watch": facing it for most of the time it is within LOOK_RANGE
-PASS_AT = 4.0  # metres: a robot within this of a place's point is passing it ("as the robot passes the desk")
-PASS_BY = 5.0  # metres: a robot within this of someone is passing them ("as it goes by")
-GLANCE_SECONDS = 1.0  # "glance at", "look at": facing it at least once this long while within LOOK_RANGE
 AVOID_NEAR = 6.0  # metres (centres): the robot is near enough for a wary person to keep away
 AVOID_MOVED = 0.5  # metres moved away while it was near
 BLOCK_AHEAD = 2.5  # metres ahead of the robot's front

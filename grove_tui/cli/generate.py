@@ -18,7 +18,7 @@ import click
 from rich.console import Console
 
 from grove_tui.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUNTIME_FAILURE
-from grove_tui.generation.requests import SCENARIO_LENGTH
+from grove_tui.services.jobs import SCENARIO_LENGTH
 from grove_tui.settings import PEDESTRIAN_MODELS
 
 if TYPE_CHECKING:

@@ -16,7 +16,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from grove_tui.analysis.outcomes import PASS_AT
+from grove_tui.scenario.reach import PASS_AT
 from grove_tui.generation.draft import place_of
 from grove_tui.generation.formations import PASSING_MARGIN, PERSON_RADIUS, Formation, formations_at
 from grove_tui.language.model import PromptReading, RobotReading

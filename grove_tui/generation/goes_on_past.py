@@ -17,7 +17,7 @@ from typing import TypeVar
 
 import numpy as np
 
-from grove_tui.analysis.outcomes import PASS_BY
+from grove_tui.scenario.reach import PASS_BY
 from grove_tui.errors import PlanningError
 
 Point = tuple[float, float]

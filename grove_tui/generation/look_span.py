@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from grove_tui.analysis.outcomes import GLANCE_SECONDS, LOOK_RANGE, LOOK_SHARE
+from grove_tui.scenario.reach import GLANCE_SECONDS, LOOK_RANGE, LOOK_SHARE
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.look_spans import GLANCE, look_span
 from grove_tui.language.model import GroupReading

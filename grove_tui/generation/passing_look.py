@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from grove_tui.analysis.outcomes import PASS_AT, PASS_BY
+from grove_tui.scenario.reach import PASS_AT, PASS_BY
 from grove_tui.bt.format.document import TreeDocument, TreeElement
 from grove_tui.generation.draft import DraftNode
 from grove_tui.language.model import GroupReading, PromptReading

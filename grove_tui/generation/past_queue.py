@@ -20,7 +20,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from grove_tui.analysis.outcomes import PASS_BY
+from grove_tui.scenario.reach import PASS_BY
 from grove_tui.generation.beside_queue import BESIDE
 from grove_tui.generation.formations import Formation
 from grove_tui.generation.robot_passing import passed_zones
