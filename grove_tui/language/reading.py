@@ -80,6 +80,7 @@ from grove_tui.language.event_causes import without_causers
 from grove_tui.language.event_appositions import with_people_after_an_event
 from grove_tui.language.groups import Groups
 from grove_tui.language.scene_closers import without_closers
+from grove_tui.language.couples import joined_couples
 from grove_tui.language.kin_lists import kin_families
 from grove_tui.language.leaving import as_verbs
 from grove_tui.language.singular_verbs import as_singular_verbs
@@ -235,7 +236,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = list(kin_families(s, without_generic_where_people(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find())))))))))))))
+    mentions = joined_couples(s, people, kin_families(s, without_generic_where_people(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find())))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

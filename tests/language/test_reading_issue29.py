@@ -80,7 +80,7 @@ def test_a_purpose_s_place_is_where_they_go(worlds, world, prompt, via, destinat
 
 @pytest.mark.parametrize("world,prompt,count,location", [
     ("hospital", "A visitor sips coffee in the cafeteria for ten minutes.", 1, "cafeteria"),
-    ("residential", "Mum and dad nap on the sofa.", 1, "sofa"),  # a kin couple: one group per noun, each of one
+    ("residential", "Mum and dad nap on the sofa.", 2, "sofa"),  # a kin couple: one group of two (language/couples.py)
     ("residential", "Both children are asleep in the kids room.", 2, "child_bedroom"),
     ("hospital", "Both doctors are chatting in the doctors office.", 2, "doctors_office"),
     ("station", "The café has a queue of five people.", 5, "cafe"),
@@ -199,10 +199,10 @@ def test_a_person_s_own_room_is_the_one_named_after_their_kind(worlds, prompt, s
 
 
 def test_two_family_names_joined_by_and_are_two_people_though_the_parser_calls_one_a_verb(worlds):
-    # A kin couple is one group per noun phrase, each of one person (the writers' convention).
+    # A kin couple is one group of two who keep together (language/couples.py, decided 2026-11-30).
     groups = read(worlds, "residential", "Grandpa and grandma read in the living room.")
-    assert [(g.who.lower(), g.count.value, g.location) for g in groups] == [
-        ("grandpa", 1, "living_room"), ("grandma", 1, "living_room")]
+    assert [(g.who.lower(), g.count.value, g.location, g.together) for g in groups] == [
+        ("grandpa and grandma", 2, "living_room", True)]
 
 
 @pytest.mark.parametrize("prompt,intent,location", [
