@@ -284,7 +284,7 @@ for _intent, _verbs in {
     "wait": "wait sit stand rest linger stay remain pause idle loiter relax lounge perch sleep read gather doze nap "
             "snooze spend scatter spread dot",
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter "
-                "bicker squabble quarrel wrangle",
+                "bicker squabble quarrel wrangle murmur whisper mutter confer",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
               "mop sweep vacuum hoover scrub tidy clean tour rummage",
     "follow": "follow accompany escort trail shadow",

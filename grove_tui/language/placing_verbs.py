@@ -3,7 +3,9 @@ trio of doormen at the steps and one more by the staff door", "Station two guard
 "Stick four pickers in the canteen", "Drop 2 guards at reception". At the start of a sentence and before a count or a determiner
 they are "Put", so both groups are read as any "Put ... and ..." is. Round 44: "Position a panel of 5
 interviewers along one side of the table" is one too, and "along" in a sentence that puts people
-somewhere is where they are put ("at"), not a way they go along.
+somewhere is where they are put ("at"), not a way they go along. Round 45: before a name, a kin word
+or "the", "both" or an owner ("Stick Mum by the cooker", "Pop Grandad in his chair", "Plonk the twins
+on the rug") too: the parser took "Stick Mum" for one name, and "Stick the kids" was not "Put".
 """
 
 from __future__ import annotations
@@ -14,7 +16,9 @@ from grove_tui.language import lexicon as lx
 
 _NUMBER = "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True))
 _PLACING = re.compile(r"(^|[.!?;:]\s+)(?:post|station|stick|plonk|plant|stand|stage|park|seat|sit|drop|pop|chuck|bung|position)\s+"
-                      r"(?=(?:a|an|some|\d+|" + _NUMBER + r")\b)", re.IGNORECASE)
+                      r"(?=(?:a|an|some|the|both|all|my|our|your|his|her|their|\d+|" + _NUMBER + "|"
+                      + "|".join(sorted(lx.KIN_NAMES, key=len, reverse=True)) + r")\b|(?-i:[A-Z][a-z]+\b))",
+                      re.IGNORECASE)
 
 
 # "along" in a sentence that opens with "Put": where they are put ("Put two guards along the corridor").

@@ -1,6 +1,9 @@
 """The robot's clause typed as chat (round 18), written out before the prompt is parsed: "robo go 2
 gate b1", "rbt waits by pharmacy" (short names of the robot), "robot shd wait @ cloakroom" (chat's
-"should"), "bot to follow em" (a robot "to" do something: what it should do; "em" is "them")."""
+"should"), "bot to follow em" (a robot "to" do something: what it should do; "em" is "them"). Round 45: the robot
+before a route drawn with an arrow ("bot kitchen -> reception", "robot: lobby → lifts") goes that way;
+the arrow alone was read as a route of the robot's words), and the robot before a bare "-ing" verb ("bot
+doing its rounds", "robot patrolling") is doing it: "is" is written in.)"""
 
 from __future__ import annotations
 
@@ -16,6 +19,13 @@ _SHOULD = re.compile(r"(?<![\w'-])(robot|bot)(\s+)(shd|shld|shud|shuld|sld|shoud
 # "bot to follow em": at the start of the text or of a clause, the robot "to" a verb of its tasks.
 _ROBOT_TO = re.compile(r"(^|[,;:.!?]\s*|\b(?:and|n|then|&)\s+)((?:the\s+)?(?:robot|bot))(\s+)to(\s+)([A-Za-z]+)",
                        re.IGNORECASE)
+# "bot kitchen -> reception": the robot, then a short place and an arrow, at a clause's start.
+_ROBOT_ARROW = re.compile(r"(^|[,;:.!?]\s*|\b(?:and|n|then|&)\s+)((?:the\s+)?(?:robot|bot))\s*:?\s+(?:from\s+)?"
+                          r"(?!(?:to|is|goes|will|should|then)\b)((?:[\w'-]+\s+){0,3}?[\w'-]+)\s*(?:-+>|→|⟶|=>)\s*",
+                          re.IGNORECASE)
+# "bot doing its rounds": the robot, then an "-ing" verb with no "is", at a clause's start.
+_ROBOT_ING = re.compile(r"(^|[,;:.!?]\s*|\b(?:and|n|then|&)\s+)((?:the\s+)?(?:robot|bot))\s+(?=[a-z]{2,}ing\b)",
+                        re.IGNORECASE)
 _ROBOT_TASK_VERBS = (lx.ROBOT_WAIT_VERBS | lx.ROBOT_PATROL_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS
                      | lx.LEADING_VERBS | frozenset({"stay", "stand", "park", "hang"}))
 # "em" for "them" after a verb: "follow em", "take em to the exit".
@@ -27,6 +37,8 @@ def robot_chat(text: str) -> str:
     text = _ROBOT_NAMES.sub("robot", text)
     text = _SHOULD.sub(lambda m: f"{m.group(1)}{m.group(2)}should", text)
     text = _ROBOT_TO.sub(_should_do, text)
+    text = _ROBOT_ARROW.sub(lambda m: f"{m.group(1)}{m.group(2)} goes from {m.group(3)} to ", text)
+    text = _ROBOT_ING.sub(lambda m: f"{m.group(1)}{m.group(2)} is ", text)
     return _EM.sub(_them, text)
 
 

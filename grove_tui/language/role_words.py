@@ -53,8 +53,15 @@ def _verb_follows(s: Sentence, i: int) -> bool:
         (verb_lemma(s.low[i + 1]) in lx.INTENT_VERBS and nxt.dep == "ROOT")  # "her PA walk": the small model's noun
 
 
+# Words that count the people of an "of" after them ("a pair of RGNs", "a team of PCSOs").
+_COUNTING_OF = frozenset("pair couple trio quartet handful group team bunch dozen few".split())
+
+
 def abbreviated_role(s: Sentence, i: int) -> bool:
-    """Whether word i is a role said short ("the GP waits", "a PCSO walks", "the vet heads out")."""
+    """Whether word i is a role said short ("the GP waits", "a PCSO walks", "the vet heads out"); round 45:
+    also in the plural after a word that counts people ("a pair of RGNs at the trolley"), verb or none."""
+    if i >= 2 and s.low[i - 1] == "of" and s.low[i - 2] in _COUNTING_OF and abbreviation_label(s, i) is not None:
+        return True
     first = i
     while first > 1 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod") and \
             s.w[first - 1].pos in ("NOUN", "ADJ"):

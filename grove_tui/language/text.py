@@ -24,6 +24,7 @@ from grove_tui.language.placing_lists import placing_lists
 from grove_tui.language.placing_verbs import placing_verbs
 from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.robot_chat import robot_chat
+from grove_tui.language.robot_sent import robot_sent
 from grove_tui.language.study_years import year_of_people
 from grove_tui.language.tokens import lemma
 
@@ -96,7 +97,7 @@ def normalise(text: str) -> str:
     folded = unicodedata.normalize("NFKC", text or "")
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
-    kept = robot_chat(spell_out(kept))  # "walkin frm", "robo shd wait": chat's dropped g, short words
+    kept = robot_sent(robot_chat(spell_out(kept)))  # "walkin frm", "robo shd wait": chat's dropped g, short words
     kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(kept)))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
