@@ -22,6 +22,8 @@ from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.held_origins import origin_of_held
 from grove_tui.language.no_place_things import no_place_thing
+from grove_tui.language.outing_words import an_outing
+from grove_tui.language.weather_words import the_weather
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.times_and_manners import time_or_manner
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -45,6 +47,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         return True  # "stock up on IPA", "roused from a snooze": food, drink, a nap (round 41)
     if cause_thing(s, k, prep, at) or origin_of_held(s, k, prep, at):
         return True  # "smell of burning from the toaster", "clutching mugs from the seconds shelf"
+    if an_outing(s, k, prep) or the_weather(s, k, prep):
+        return True  # "on a geography trip", "against the cold": an outing, the weather (round 45)
     if time_or_manner(s, k, prep):
         return True  # "on a wet Tuesday", "on foot", "at half past nine"
     if prep in ("on", "in", "during") and _a_call(s, k):
