@@ -28,7 +28,8 @@ from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
 from grove_tui.language.only_people import only_people_before, the_only_mention
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
-from grove_tui.language.people import People, companions, whole_zone_pronoun
+from grove_tui.language.people import People
+from grove_tui.language.people_phrases import companions, coordinated_person, whole_zone_pronoun
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.role_words import family_member, family_size, person_of_a_person, possessor_of_a_person
 from grove_tui.language.sentence import Sentence
@@ -571,7 +572,7 @@ class Mentions:
             kind = "exclusive" if exclusive else "exact"
             return Mention(at, head, s.span(at, head), label, Count(kind, n := family_size(s, head), n, n), exclusive=exclusive)
         if singular and noun not in lx.GENERIC_PEOPLE and not other:
-            if (self.people.verb_after(head) or self.after_except(at) or self._coordinated_person(head)
+            if (self.people.verb_after(head) or self.after_except(at) or coordinated_person(self.s, self.people, head)
                     or self.objects.robot_object(at) is not None or self.objects.led_by(at) or self.objects.followed(at)
                     or self.objects.sent_by(at) or self.people.placed(head)) \
                     and noun not in lx.PRONOUN_PEOPLE \
@@ -588,13 +589,3 @@ class Mentions:
                 "implied", s.choose(low_, high_, f"{at}:family"), low_, high_), together=noun in lx.COUPLE_PLURALS)
         return Mention(at, head, s.span(at, head), label,
                        Count("vague", s.choose(low_, high_, f"{at}:bare"), low_, high_), relation=relation)
-
-    def _coordinated_person(self, head: int) -> bool:
-        """Whether a person word is joined by "and" to another person phrase ("Mum and two kids
-        walk", "Mum and Dad chat"): the first of two subjects, though no verb follows it."""
-        s = self.s
-        if head + 2 >= s.n or s.low[head + 1] != "and":
-            return False
-        q = quantifier(s, head + 2)
-        start = q.end if q is not None else s.skip(head + 2, lx.DETERMINERS)
-        return start < s.n and self.people.person_head(start, counted=q is not None) is not None

@@ -577,26 +577,3 @@ class People:
         return bool(content) and (content[-1] in lx.PERSON_NOUNS or content[-1] in lx.PRONOUN_PEOPLE) and \
             not self.s.index.knows(content[-1])
 
-
-def whole_zone_pronoun(s: Sentence, at: int) -> bool:
-    """Whether the word at `at` names everyone somewhere, with no kind of people: "everyone",
-    "anyone waiting on platform 1", "whoever is in the café", "those who are in the lobby"."""
-    low = s.low
-    if low[at] in ("everyone", "everybody", "anyone", "anybody", "whoever"):
-        return not (at > 0 and low[at - 1] in ("not", "n't", "hardly", "barely"))
-    return low[at] == "those" and at + 1 < s.n and low[at + 1] == "who"
-
-
-def companions(s: Sentence, people: People, with_at: int) -> bool:
-    """Whether "his/her ..." after "with" at `with_at` are people of their own, not members of the
-    subject: the subject is one person ("a mother with her two kids", "an old man with his
-    daughter"), not a family or a group whose own members they are ("families ... with their
-    children", "a school group with its teachers")."""
-    for k in range(with_at - 1, -1, -1):
-        if s.w[k].sentence != s.w[with_at].sentence or s.low[k] in (";", ":"):
-            return False
-        if people.is_person_noun(k):
-            word = s.lemma(k)
-            return word == s.low[k] and word not in lx.IMPLIED_RANGES and word not in lx.TOGETHER_COLLECTIVES \
-                and word not in lx.FAMILY_PLURALS
-    return False
