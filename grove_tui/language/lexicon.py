@@ -61,7 +61,7 @@ IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
     "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8), "shift": (4, 10),
-    "club": (6, 15), "choir": (10, 25), "troop": (8, 15), "squadron": (8, 15), "audience": (20, 60), "congregation": (20, 60),
+    "club": (6, 15), "choir": (10, 25), "troop": (8, 15), "pack": (12, 24), "squadron": (8, 15), "audience": (20, 60), "congregation": (20, 60),
 }
 # Collectives that end a person named by two words and still count people ("the cabin crew", "a film
 # crew of four"), unlike "the au pair".
@@ -69,7 +69,7 @@ MULTIWORD_COLLECTIVES = frozenset({"crew", "shift"})
 # What a vehicle holds: "a coachload of pensioners" are pensioners, as many as a coach holds.
 VEHICLE_LOADS = frozenset("coachload busload vanload carload boatload planeload minibusload trainload".split())
 # Collectives known by their members when the members are named ("a choir of thirty children": children).
-MEMBERS_NAME_COLLECTIVES = VEHICLE_LOADS | MULTIWORD_COLLECTIVES | {"club", "choir", "troop", "squadron"}
+MEMBERS_NAME_COLLECTIVES = VEHICLE_LOADS | MULTIWORD_COLLECTIVES | {"club", "choir", "troop", "squadron", "pack"}
 # Words that put what follows after what came before ("..., then waits in the waiting room").
 SEQUENCE_WORDS = frozenset({"then", "afterwards", "afterward", "later"})
 # Words between two places of one route, the second with no preposition ("to the café and then the pharmacy").
@@ -88,7 +88,7 @@ QUANTIFYING_COLLECTIVES = frozenset({"crowd", "throng", "horde", "swarm", "strea
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
                                   "trio", "duo", "quartet", "quintet", "twosome", "foursome", "sextet", "class", "tour", "delegation", "twin", "triplet", "coachload", "busload",
                                   "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew",
-                                  "shift", "club", "choir", "troop"})
+                                  "shift", "club", "choir", "troop", "pack"})
 # What a collective does as it comes about: "a queue of 12 forms at the desk" counts no "forms".
 GATHERING_VERBS = frozenset("form build grow snake stretch set gather assemble develop appear".split())
 # Collectives whose members stand in line: "a queue of eight people forms at the desk" is a queue.

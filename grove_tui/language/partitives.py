@@ -19,6 +19,7 @@ from grove_tui.language.collective_parts import collective_head, owned_whole, wh
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
+from grove_tui.language.lone_parts import lone_one_of
 from grove_tui.language.owned_parts import owned_whole_unsaid
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
@@ -93,7 +94,8 @@ class Partitives:
             return Mention(at, head, s.span(at, head), label, count, relation=f"subset_of:{parent}")
         if fraction is None and num is not None and (whole_unsaid(s, of_at, head, inner is not None)
                                                     or owned_whole(s, k, inner)
-                                                    or owned_whole_unsaid(s, of_at, inner is not None)):
+                                                    or owned_whole_unsaid(s, of_at, inner is not None)
+                                                    or lone_one_of(s, at, num, fraction, inner)):
             return Mention(at, head, s.span(at, head), label, count_of(s, num, f"{at}", lx.OTHERS_RANGE))  # "two of the crew"
         if fraction is not None and (inner is None or inner.kind != "exact"):
             return None  # "half of the patients in the lobby": half of everyone there (a whole-zone share)

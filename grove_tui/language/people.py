@@ -51,8 +51,8 @@ from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.where_people import describes_a_place
 from grove_tui.language.coordinated_roles import coordinated_role
 from grove_tui.language.role_suffixes import collective_modifies_role, suffix_role
-from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted,
-                                                unlisted_subject)
+from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted, unlisted_subject)
+from grove_tui.language.youth_units import youth_unit
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
@@ -108,7 +108,7 @@ class People:
             return True  # "the GP waits", "our youngest edges away"
         if compound_head_person(s, i) or head_person(s, i) or agent_compound(s, i):
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
-        if trader_subject(s, i) or listed_person(s, i) or feels_about_the_robot(s, i):
+        if trader_subject(s, i) or listed_person(s, i) or feels_about_the_robot(s, i) or youth_unit(s, i):
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
         if counted_plural_subject(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
             return True  # "thirty top-year juniors troop into ...", "the Dean leaves his vestry"
