@@ -36,20 +36,21 @@ _COMING_TO_LOOK = re.compile(
     r"marvel|gape)))\s+at\s+(?:the\s+|our\s+|this\s+|that\s+)?(?:robot|it)\b", re.I)
 
 
-def _comes_to_look(text: str) -> bool:
-    m = _COMING_TO_LOOK.search(text)
+def _going_by(pattern: re.Pattern[str], text: str) -> bool:
+    """Whether the pattern finds a verb of going (walking, wandering or hurrying) in the text."""
+    m = pattern.search(text)
     if m is None:
         return False
     v = verb_lemma(m.group(1))
     return v in _HURRYING or lx.INTENT_VERBS.get(v) in ("walk", "wander")
+
+
+def _comes_to_look(text: str) -> bool:
+    return _going_by(_COMING_TO_LOOK, text)
 
 
 def _comes_over(text: str) -> bool:
-    m = _COMING_OVER.search(text)
-    if m is None:
-        return False
-    v = verb_lemma(m.group(1))
-    return v in _HURRYING or lx.INTENT_VERBS.get(v) in ("walk", "wander")
+    return _going_by(_COMING_OVER, text)
 
 
 def coming_over_after_seeing(prompt: str, groups: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
