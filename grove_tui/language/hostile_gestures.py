@@ -1,6 +1,6 @@
 """A threat made at the robot by a gesture (round 43): "shakes his fist at the robot", "jabs a finger
 at it", "wags a finger at the robot", "brandishes an umbrella at it", "makes a rude gesture at the
-robot", "sticks two fingers up at it". Aimed "at" the robot these are hostile (HuNavSim's Threatening,
+robot", "sticks two fingers up at it", and going at it ("lunges at the robot", "swings at it"). Aimed "at" the robot these are hostile (HuNavSim's Threatening,
 the reader's block), not a look as other things done "at" it are ("waves at the robot", "points a
 finger at it")."""
 
@@ -22,6 +22,9 @@ _ALWAYS_HOSTILE = frozenset("brandish wield".split())
 # A gesture said to be hostile ("a rude gesture", "an obscene sign").
 _GESTURES = frozenset("gesture gestures sign signs".split())
 _HOSTILE_MARKS = frozenset("rude obscene threatening angry aggressive menacing crude vulgar".split())
+# Verbs of going at someone to hurt or insult them, hostile with "at" alone ("lunges at the robot", "swings
+# at it", "charges at the robot", "lashes out at it", "spits at it").
+_ATTACKING_VERBS = frozenset("lunge swing charge lash spit swipe snarl growl kick hurl snap".split())
 _WITHIN = 5  # words from the gesture to the "at" before the robot
 
 
@@ -47,6 +50,9 @@ def _hostile_at(s: Sentence, own: set[int], at: int) -> bool:
         verb = verb_lemma(word) if verb_lemma(word) != word else lemma(word)  # "jabs", which the lexicon lacks
         if verb in _ALWAYS_HOSTILE and not s.after_determiner(k):
             return True
+        if verb in _ATTACKING_VERBS and not s.after_determiner(k) and all(
+                s.low[j] in ("out", "wildly", "angrily", "suddenly", "straight") for j in range(k + 1, at)):
+            return True  # "lunges at the robot", "lashes out at it"
         if verb in _THRUSTING_VERBS and not s.after_determiner(k) and any(
                 lemma(s.low[j]) in _HELD_THINGS or s.low[j] in _HELD_THINGS for j in range(k + 1, at)):
             return True  # "jabs a finger at the robot", "wags his umbrella at it"
