@@ -48,7 +48,6 @@ from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
 from grove_tui.language.described_things import without_described_things
-from grove_tui.language.where_generic_people import without_generic_where_people
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.got_out import as_got_out
@@ -236,7 +235,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_couples(s, people, kin_families(s, without_generic_where_people(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find())))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
+    mentions = joined_couples(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find()))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

@@ -26,10 +26,10 @@ def _in_a_place_said_by_a_clause(s: Sentence, at: int) -> bool:
     """Whether the phrase at `at` is inside a "where" clause that names a place after a preposition, with
     no clause break between "where" and it: its people, subject or object, only say which place."""
     j = at - 1
-    while j >= 0 and s.w[j].sentence == s.w[at].sentence and not s.is_punct(j) and s.low[j] != "where" and \
+    while j >= 0 and s.w[j].sentence == s.w[at].sentence and not s.is_punct(j) and s.low[j] not in ("where", "wherever") and \
             s.low[j] not in lx.CLAUSE_STARTERS - {"with", "after", "before", "as"}:
         j -= 1
-    if not (j > 0 and s.low[j] == "where" and s.low[j - 1] in _TO_WHERE):
+    if not (j > 0 and s.low[j] in ("where", "wherever") and s.low[j - 1] in _TO_WHERE):
         return False
     return not _present_now(s, j)
 
