@@ -24,6 +24,7 @@ from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_t
 from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
 from grove_tui.language.people import People
+from grove_tui.language.ahead_of_events import ahead_of_event
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_ordinals import series_number_at
@@ -151,6 +152,10 @@ class Clauses(ClauseCues):
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
                 s.index, s.low[i + 1:i + 6])) or verb_with_an_object(s, i + 1)):  # "to check tomorrow's rota", "to book a court"
             return self._purpose(scan, i, i, i + 2)
+        if (event_end := ahead_of_event(s, i)) is not None:  # "ahead of the 3 pm star show": why they are there
+            scan.c.purpose = scan.c.purpose or s.span(i, event_end - 1)
+            self._take(scan, i, event_end)
+            return True
         if (said := purpose_said(s, i)) is not None:  # "in order to catch the bus", "wanting flea spray"
             return self._purpose(scan, i, *said)
         if (reason := reason_end(s, i)) is not None:  # "because her provisional licence needs a picture"

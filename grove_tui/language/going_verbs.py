@@ -102,6 +102,9 @@ def sets_off_for(s: Sentence, i: int) -> bool:
 
 def obliged_to(s: Sentence, i: int) -> bool:
     """Whether the "to" at i follows "have", "has" or "need" ("all 20 have to leave", "needs to go"): what
-    they must do, which is what they do, no purpose."""
+    they must do, which is what they do, no purpose; or a verb of refusing ("refuse to let it pass",
+    "decline to move"): what they will not do, no purpose either."""
+    if i >= 1 and s.verb(i - 1) in ("refuse", "decline"):
+        return True
     return i >= 1 and s.low[i - 1] in ("have", "has", "had", "need", "needs", "needed") and \
         not (i >= 2 and s.low[i - 2] in ("will", "would", "might", "may"))

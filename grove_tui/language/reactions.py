@@ -82,8 +82,10 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r)
                  or motion_reaction_before(s, own, since, r) or _noun_after(s, ownset, r) or _passive(s, r)
                  or goes_with_robot(s, own, r) or placed_before(s, own, r))
-        if found == "avoid" and _refused(s, own, r):
-            return "block"  # "refuses to get out of the robot's way", "doesn't make way for it"
+        if (found == "avoid" or n_mention) and _refused(s, own, r):
+            # "refuses to get out of the robot's way"; and a later mention refused its way after an
+            # earlier one ("gather round the robot and won't let it through"): they end by blocking it
+            return "block"
         if found in ("look", "approach", "follow") and _ignored(s, own, r):
             return chosen  # "take no notice of the robot", "does not notice it"
         if found is not None and chosen is not None and found != later_reaction(chosen, found):

@@ -7,7 +7,8 @@ import pytest
 
 
 @pytest.mark.parametrize("world,prompt,label,where", [
-    ("hospital", "a new starter walks from the cafe to the pharmacy", "starter", ("cafeteria", "pharmacy")),
+    # "new starter" is a person by two words since 2026-11-30 (lexicon.MULTIWORD_PEOPLE): the label keeps both
+    ("hospital", "a new starter walks from the cafe to the pharmacy", "new starter", ("cafeteria", "pharmacy")),
     ("courthouse", "counsel for the claimant heads from the robing room to the entrance hall", "counsel",
      ("robing_room", "entrance_hall")),
     ("office", "A temp marches from the reception desk to the kitchen", "temp", None),

@@ -1,0 +1,31 @@
+"""An event people are early for, said with "ahead of" or "in advance of": "queuing at the dome doors
+ahead of the 3 pm star show", "gather in the foyer in advance of the lecture". Like "for the show", the
+event is why they are there (their purpose), not a place: the phrase runs to its head noun, which must
+name an event (a show, a match, a service, a lecture) and not a vehicle or a person ("ahead of the
+coach", "ahead of their teacher" say who goes first)."""
+
+from __future__ import annotations
+
+from grove_tui.language import lexicon as lx
+from grove_tui.language.event_names import GATHERING_HEADS
+from grove_tui.language.events import ROUTINE_EVENTS
+from grove_tui.language.sentence import Sentence
+
+# Less the words that also name people ("ahead of the class", "ahead of the tour party": who goes first).
+_EVENTS = (ROUTINE_EVENTS | GATHERING_HEADS | frozenset(
+    "kickoff kick-off race screening premiere launch auction opening talk briefing show".split())) - lx.PERSON_NOUNS
+
+
+def ahead_of_event(s: Sentence, i: int) -> int | None:
+    """The end (exclusive) of an event phrase opened at word i by "ahead of" / "in advance of", else None."""
+    if s.low[i] == "ahead" and i + 1 < s.n and s.low[i + 1] == "of":
+        start = i + 2
+    elif s.low[i] == "in" and tuple(s.low[i + 1:i + 3]) == ("advance", "of"):
+        start = i + 3
+    else:
+        return None
+    end = s.phrase_end(start)
+    if end <= start or end > s.n:
+        return None
+    head = end - 1
+    return end if s.lemma(head) in _EVENTS or s.low[head] in _EVENTS else None
