@@ -53,6 +53,7 @@ from grove_tui.language.coordinated_roles import coordinated_role
 from grove_tui.language.role_suffixes import collective_modifies_role, suffix_role
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted, unlisted_subject)
 from grove_tui.language.youth_units import youth_unit
+from grove_tui.language.weather_nouns import weather_noun
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
 
@@ -98,7 +99,7 @@ class People:
             return True  # "the keynote speaker walks", "a session chair heads to ...": a role
         if goes_along_a_route(s, i) or by_a_person_adjective(s, i):
             return True  # "the dispenser nips out of the pharmacy into the kitchen", "an elderly gent lingers"
-        if lem in lx.NON_PEOPLE and lem not in lx.PERSON_NOUNS:
+        if (lem in lx.NON_PEOPLE or weather_noun(lem)) and lem not in lx.PERSON_NOUNS:
             return timer_person(s, i) or animal_idiom_person(s, i)  # "a first-timer": a person, though a timer is a thing
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
             return False  # "the robot stands guard at the door": a duty, nobody
