@@ -15,9 +15,12 @@ from grove_tui.language.tokens import lemma
 _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
                                         ("couple", "pair", "handful", "dozens", "one", "a")), key=len, reverse=True)) + \
     r")(?:-(?:one|two|three|four|five|six|seven|eight|nine))?"
-_JOINED = re.compile(r"\b(" + _NUMBER + r")\s+([a-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])", re.IGNORECASE)
+_JOINED = re.compile(r"\b(" + _NUMBER + r")\s+([a-z][a-z-]+\s+)?([a-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])",
+                     re.IGNORECASE)  # one word that describes both may come first ("six adult sons and daughters")
 _CHILDREN = frozenset("boy girl kid child toddler pupil schoolchild schoolboy schoolgirl son daughter infant "
                       "youngster teenager teen".split())
+
+_GROWN = frozenset("adult grown grown-up grownup older elderly middle-aged".split())
 
 
 def _plural_person(word: str) -> bool:
@@ -30,11 +33,22 @@ def _plural_person(word: str) -> bool:
 
 
 def _joined(m: re.Match[str]) -> str:
-    first, second = m.group(2), m.group(3)
+    described, first, second = m.group(2) or "", m.group(3), m.group(4)
     if not (_plural_person(first) and _plural_person(second)) or first.lower() == second.lower():
         return m.group(0)
-    both = "children" if {lemma(first.lower()), lemma(second.lower())} <= _CHILDREN else "people"
-    return f"{m.group(1)} {both}"
+    if described and not _describes(described.strip()):
+        return m.group(0)
+    grown = described.strip().lower() in _GROWN  # "six adult sons and daughters": grown children, adults
+    both = "children" if {lemma(first.lower()), lemma(second.lower())} <= _CHILDREN and not grown else "people"
+    return f"{m.group(1)} {described}{both}"
+
+
+def _describes(word: str) -> bool:
+    """Whether a word before two joined kinds can describe both ("adult", "elderly", "grown-up",
+    "excited"): no person, no number, no word of grammar ("and", "of")."""
+    low = word.lower()
+    return not _plural_person(low) and low not in lx.NUMBER_WORDS and low not in lx.STOPWORDS and \
+        low not in ("and", "or", "of", "plus")
 
 
 def with_joined_kinds(text: str) -> str:
