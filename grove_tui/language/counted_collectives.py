@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.tokens import verb_lemma
 
 _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
                                         ("couple", "pair", "handful", "dozens")), key=len, reverse=True)) + \
@@ -30,11 +31,21 @@ _TEAM_FIRST = re.compile(r"^(?:" + _TEAM_WORDS + r")\s+[A-Z]")
 
 
 def _person_follows(text: str, end: int) -> bool:
-    """Whether a person noun follows at `end` ("a team of 5 nurses")."""
-    m = re.match(r"\s+([a-z]+)", text[end:])
+    """Whether a person noun follows at `end` ("a team of 5 nurses"), perhaps after one word that
+    describes them ("a gang of ten excited kids", "a squad of 20 junior nurses"), no verb."""
+    m = re.match(r"\s+([a-z-]+)(?:\s+([a-z]+))?", text[end:])
     if m is None:
         return False
-    word = m.group(1)
+    if m.group(2) and _person_word(m.group(2)) and not _person_word(m.group(1)) and \
+            m.group(1) not in lx.STOPWORDS and verb_lemma(m.group(1)) not in _PEOPLE_VERBS:
+        return True
+    return _person_word(m.group(1))
+
+
+_PEOPLE_VERBS = frozenset(lx.INTENT_VERBS) | lx.HUMAN_SUBJECT_VERBS | lx.THING_VERBS
+
+
+def _person_word(word: str) -> bool:
     return word in lx.PERSON_NOUNS or (word.endswith("s") and word[:-1] in lx.PERSON_NOUNS) or \
         (word.endswith("es") and word[:-2] in lx.PERSON_NOUNS) or word in lx.GENERIC_PEOPLE
 
