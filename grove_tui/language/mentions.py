@@ -16,6 +16,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.another_count import more_people, the_other_count
 from grove_tui.language.apposed_counts import apposed_collective, class_named, collective_is_a_verb
+from grove_tui.language.occasion_headings import without_heading
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.couple_words import bare_couple
@@ -107,6 +108,7 @@ class Mentions:
                     found[-1].label = m.label
                 i = m.last + 1
                 continue
+            found[:] = without_heading(s, found, m)  # "kids bday: 9 on the wall": the heading's kids are the 9
             if m.count is not None and m.count.value == 0 and m.count.kind == "exact":
                 self.problems.append(f"'{m.who}' asks for nobody; give a number of people of at least 1 "
                                      f"(or leave that group out)")
