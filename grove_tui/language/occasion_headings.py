@@ -30,6 +30,8 @@ def without_heading(s: Sentence, found: list[Mention], m: Mention) -> list[Menti
             f.last >= mark or f.count is None or f.count.kind == "exact" or f.relation is not None or f.whole is not None
             for f in found):
         return found  # "3 kids: ...": a count of its own
+    if len(found) == 1 and found[0].first == 0 and found[0].last == mark - 1:
+        return found  # "Shoppers: 20 in the food court, 10 in ...": a whole of its parts, no occasion
     if not any(f.label == m.label for f in found) and m.label != "person":
         return found  # "nurses: 3 porters in the lift": other people
     named = [f.label for f in found if f.collective is None]
