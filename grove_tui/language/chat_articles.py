@@ -19,6 +19,11 @@ _PREPOSITIONS = ("at", "by", "in", "near", "nr", "on", "@", "beside", "outside",
                  "behind", "opposite", "hovering", "outside", "round", "around", "from", "to", "into", "heading")
 _ITEM = re.compile(r"(^|[,;]\s*|\bwhile\s+)([A-Za-z][a-z'-]*)(?:\s+([a-z][a-z'-]*))?"
                    r"(?=\s+(\S+))")
+# Words in "-ed" that describe a person before their noun, besides the lexicon's (round 46: "tired manager @ X").
+_DESCRIBING = frozenset("bored stressed confused lost retired harassed frazzled dazed exhausted flustered annoyed "
+                        "frustrated puzzled bewildered disorientated disoriented distracted relaxed delighted "
+                        "interested unimpressed red-faced bearded masked hooded uniformed suited armed "
+                        "qualified unqualified trained experienced talented dedicated".split())
 _NOT_MODIFIERS = frozenset("a an the this that these those my our your his her their its some any no every each "
                            "and or but then at by in on to of with one few several many most all both another other "
                            "more half".split())
@@ -27,6 +32,13 @@ _NOT_MODIFIERS = frozenset("a an the this that these those my our your his her t
 def _person(word: str) -> bool:
     low = word.lower()
     return low in lx.PERSON_NOUNS and low not in _MASS
+
+
+def _describes(word: str) -> bool:
+    """An "-ed" or "-ing" word that describes the person after it ("tired", "worried", "waiting"), not a
+    verb of the item before it."""
+    low = word.lower()
+    return low in lx.NP_MODIFIERS or low in _DESCRIBING
 
 
 def _doing(word: str) -> bool:
@@ -46,9 +58,11 @@ def with_chat_articles(text: str) -> str:
                 return m.group(0)
         elif _person(first) and _doing(second):
             nxt = second  # "nurse at pharmacy"
+        elif (first.lower(), second.lower()) in lx.MULTIWORD_PEOPLE and _doing(nxt):
+            pass  # "new starter @ photocopier": a person of two words
         elif not (_person(second) and not _person(first) and _doing(nxt) and first.isalpha() and
-                  not first.endswith(("ing", "ed"))):
-            return m.group(0)  # "sales guy hovering": a modifier and a person
+                  (not first.endswith(("ing", "ed")) or _describes(first))):
+            return m.group(0)  # "sales guy hovering": a modifier and a person; "tired manager @ X" too
         article = "an" if first[:1].lower() in "aeiou" else "a"
         if m.start(2) == 0 and first[:1].isupper():
             article = article.capitalize()

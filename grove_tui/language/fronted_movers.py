@@ -4,7 +4,9 @@ blind visitor, a guide walks to the café". The fronted clause has no subject of
 pushed, wheeled or guided was lost with it. Said as the mover's own clause ("a woman brings her father
 from ...", "a guide guides a blind visitor and walks to the café"), the person moved is read like any
 object of a leading verb: a second group that goes along. A thing pushed ("Pushing a trolley, ...")
-reads as before: the object of a leading verb that is no person makes no group."""
+reads as before: the object of a leading verb that is no person makes no group. Round 46: an aid pushed
+before a clause that takes someone somewhere ("Pushing a wheelchair, a porter takes a patient from X to Y")
+is how the one taken goes: the fronted clause is left out, so the porter keeps the way (pushed_aids.py)."""
 
 from __future__ import annotations
 
@@ -12,6 +14,7 @@ import re
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import parse
+from grove_tui.language.pushed_aids import after_is_someone
 from grove_tui.language.tokens import verb_lemma
 
 _PARTICIPLES = {"pushing": "push", "wheeling": "wheel", "guiding": "guide", "leading": "lead",
@@ -44,6 +47,13 @@ def _person(obj: str) -> str:
     return obj
 
 
+def _aid(obj: str) -> bool:
+    """Whether the thing pushed is an aid that carries someone ("a wheelchair", "one of the store
+    wheelchairs"), not a person."""
+    words = obj.lower().split()
+    return bool(words) and (words[-1] in lx.CARRYING_THINGS or words[-1].rstrip("s") in lx.CARRYING_THINGS)
+
+
 def with_fronted_movers(text: str) -> str:
     """The text with a fronted participle that moves someone said as the mover's own clause (module doc)."""
     m = _FRONTED.match(text)
@@ -64,6 +74,8 @@ def with_fronted_movers(text: str) -> str:
     subject = rest[:root.start].rstrip()
     tail = rest[root.start:]
     person = _person(obj)
+    if person == obj and _aid(obj) and verb_lemma(root.lower) in lx.LEADING_VERBS and after_is_someone(words, root.i):
+        return rest[:1].upper() + rest[1:]  # "Pushing a wheelchair, a porter takes a patient to X": the patient goes
     after = words[root.i + 1] if root.i + 1 < len(words) else None
     if verb_lemma(root.lower) in lx.LEADING_VERBS and after is not None and after.lower in _PRONOUNS:
         said = f"{subject} {rest[root.start:after.start]}{person}{rest[after.end:]}"  # "brings him": her father

@@ -127,6 +127,7 @@ from grove_tui.language.robot_led import led_by_robot
 from grove_tui.language.guided_route import route_from_the_guided, said_last_before
 from grove_tui.language.robot_bound import people_passed_stay
 from grove_tui.language.robot_followers import with_robot_followers
+from grove_tui.language.robot_in_tow import with_robot_in_tow
 from grove_tui.language.passing_moment import with_passing_moments
 from grove_tui.language.owners_stay import owners_stay_put
 from grove_tui.language.whole_of_zone import whole_of_zone
@@ -172,7 +173,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_joined_prefixes(without_adjective_commas(without_name_commas(as_chat_request(text), index)))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name; "re-cable": one verb
     text = with_full_is(text)  # "Dad's snoozing on the couch": Dad is snoozing, one person
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
-    text = with_robot_followers(text)  # "Followed by a nurse, the robot ...": the nurse follows the robot
+    text = with_robot_followers(with_robot_in_tow(text))  # "With a nurse in tow, the robot ...", "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = with_scattered_counts(chat_fragments(as_listed_chat_wait(text)))  # "3 from sales gossiping", "... @ desk, 10 mins then out"
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted

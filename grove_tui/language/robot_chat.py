@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.robot_on_patrol import on_patrol
 from grove_tui.language.tokens import verb_lemma
 
 # Short names of the robot in chat (whole words, any case).
@@ -34,7 +35,7 @@ _EM = re.compile(r"(?<![\w'-])([A-Za-z]+)(\s+)'?em(?![\w'-])")
 
 def robot_chat(text: str) -> str:
     """The text with the robot's chat written out (see the module doc)."""
-    text = _ROBOT_NAMES.sub("robot", text)
+    text = on_patrol(_ROBOT_NAMES.sub("robot", text))  # "bot on patrol along X": it patrols there
     text = _SHOULD.sub(lambda m: f"{m.group(1)}{m.group(2)}should", text)
     text = _ROBOT_TO.sub(_should_do, text)
     text = _ROBOT_ARROW.sub(lambda m: f"{m.group(1)}{m.group(2)} goes from {m.group(3)} to ", text)
