@@ -47,6 +47,8 @@ _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near
 _VERBS_INSIDE_NAMES = ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang")
 # Possessives before a room that is someone's own ("locks her office").
 _OWNERS = frozenset({"her", "his", "their", "my", "our"})
+# Words that open a clause before its place subject ("While the boardroom gets vacuumed by a cleaner, ...").
+_OPENING_LINKS = frozenset("while whilst as when once because since".split())
 
 
 @dataclass
@@ -405,7 +407,8 @@ class Clauses(ClauseCues):
         # people seated") or names the event the people come from ("the boardroom meeting of twelve
         # people"); the subject of a passive takes the role the verb gives its object ("Ward B is
         # visited by").
-        subject = self.places.phrase(own[0], "at", own[0], record_unknown=False)
+        first = own[1] if len(own) > 1 and s.low[own[0]] in _OPENING_LINKS and own[1] == own[0] + 1 else own[0]
+        subject = self.places.phrase(first, "at", first, record_unknown=False)  # "While the boardroom gets ..."
         if subject is None:
             return
         after = s.low[subject.end] if subject.end < s.n else ""
@@ -413,7 +416,7 @@ class Clauses(ClauseCues):
             # "Platform 1 must be cleared: ...", "the ward has to be emptied": where everybody leaves
             c.places.append(replace(subject, prep="obj:start"))
             c.evacuate = True
-            scan.used.update(range(own[0], subject.end))
+            scan.used.update(range(first, subject.end))
         elif verb_lemma(after) in ("be", "stay", "remain", "get", "have") or after in (":", "of") or \
                 (subject.match is not None and topic_mark_at(s, subject.end)):  # "platform 2 rn: 20 people"
             passive = subject.end + 1 < s.n and s.w[subject.end + 1].tag == "VBN"
@@ -423,7 +426,7 @@ class Clauses(ClauseCues):
             elif verb in lx.DESTINATION_OBJECT_VERBS | lx.VIA_OBJECT_VERBS:  # "is crossed by": a way through
                 subject = replace(subject, prep="obj:via" if verb in lx.VIA_OBJECT_VERBS else "obj:dest")
             c.places.append(subject)
-            scan.used.update(range(own[0], subject.end))
+            scan.used.update(range(first, subject.end))
 
     # ---- what they do ----------------------------------------------------------------------------
 
