@@ -16,6 +16,7 @@ from grove_tui.language.events import evacuating
 from grove_tui.language.hazards import calm_alarm, cue as hazard_cue, in_a_place_name
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.a_smoke import a_smoke_had
 from grove_tui.language.smoking_people import smoked_by_someone
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -104,7 +105,8 @@ class ClauseCues:
         s = self.s
         if hazard_cue(s, i):  # "a smell of burning", "the alarm goes off" (hazards.py)
             return True
-        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN") or smoked_by_someone(s, i):
+        if s.lemma(i) not in lx.HAZARD_NOUNS or s.w[i].pos not in ("NOUN", "PROPN") or smoked_by_someone(s, i) \
+                or a_smoke_had(s, i):
             return False
         return s.w[i].dep != "compound" and not (i + 1 < s.n and s.w[i + 1].pos == "NOUN")
 

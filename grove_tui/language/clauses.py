@@ -22,6 +22,7 @@ from grove_tui.language.event_causes import left_thing
 from grove_tui.language.particle_ends import place_end
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
+from grove_tui.language.purpose_with import with_object_end
 from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
 from grove_tui.language.people import People
 from grove_tui.language.ahead_of_events import ahead_of_event
@@ -31,6 +32,7 @@ from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import clause_reaction
+from grove_tui.language.numbered_names import numbered_name
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -45,6 +47,8 @@ _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near
 _VERBS_INSIDE_NAMES = ("line", "wait", "stand", "sit", "queue", "walk", "mill", "hang")
 # Possessives before a room that is someone's own ("locks her office").
 _OWNERS = frozenset({"her", "his", "their", "my", "our"})
+# Words that open a clause before its place subject ("While the boardroom gets vacuumed by a cleaner, ...").
+_OPENING_LINKS = frozenset("while whilst as when once because since".split())
 
 
 @dataclass
@@ -247,7 +251,8 @@ class Clauses(ClauseCues):
         # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
         right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
             sets_off_for(s, i) or searched_or_queued_for(s, i)
-        if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)):
+        if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)) or \
+                numbered_name(s, i + 1) and self.places.names_place(i + 1):  # "for gate B1", "for platform 2"
             refused = len(self.places.unknown)
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
             if place is not None or len(self.places.unknown) > refused:  # a place it lacks: no purpose either
@@ -276,6 +281,10 @@ class Clauses(ClauseCues):
             # where they go
             scan.c.places.append(goal)
             end = max(end, goal.end)
+        with_end = with_object_end(s, end, self.people.is_person_noun, self.places.names_place)
+        if with_end > end:  # "to help with boarding": what the purpose is done with (purpose_with.py)
+            end = with_end
+            scan.c.purpose = s.span(said_from, end - 1)
         prep = s.preposition(end) if end < s.n else None
         if particle_object(s, end):  # "to stock up on IPA": what the purpose is about, no place
             end = s.phrase_end(end + 1)
@@ -398,7 +407,8 @@ class Clauses(ClauseCues):
         # people seated") or names the event the people come from ("the boardroom meeting of twelve
         # people"); the subject of a passive takes the role the verb gives its object ("Ward B is
         # visited by").
-        subject = self.places.phrase(own[0], "at", own[0], record_unknown=False)
+        first = own[1] if len(own) > 1 and s.low[own[0]] in _OPENING_LINKS and own[1] == own[0] + 1 else own[0]
+        subject = self.places.phrase(first, "at", first, record_unknown=False)  # "While the boardroom gets ..."
         if subject is None:
             return
         after = s.low[subject.end] if subject.end < s.n else ""
@@ -406,7 +416,7 @@ class Clauses(ClauseCues):
             # "Platform 1 must be cleared: ...", "the ward has to be emptied": where everybody leaves
             c.places.append(replace(subject, prep="obj:start"))
             c.evacuate = True
-            scan.used.update(range(own[0], subject.end))
+            scan.used.update(range(first, subject.end))
         elif verb_lemma(after) in ("be", "stay", "remain", "get", "have") or after in (":", "of") or \
                 (subject.match is not None and topic_mark_at(s, subject.end)):  # "platform 2 rn: 20 people"
             passive = subject.end + 1 < s.n and s.w[subject.end + 1].tag == "VBN"
@@ -416,7 +426,7 @@ class Clauses(ClauseCues):
             elif verb in lx.DESTINATION_OBJECT_VERBS | lx.VIA_OBJECT_VERBS:  # "is crossed by": a way through
                 subject = replace(subject, prep="obj:via" if verb in lx.VIA_OBJECT_VERBS else "obj:dest")
             c.places.append(subject)
-            scan.used.update(range(own[0], subject.end))
+            scan.used.update(range(first, subject.end))
 
     # ---- what they do ----------------------------------------------------------------------------
 

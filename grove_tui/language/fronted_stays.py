@@ -30,3 +30,15 @@ def sentence_stay(s: Sentence, first: int) -> float | None:
         k -= 1
     said = stay_first(s, k)
     return said[0] if said is not None else None
+
+
+def stayed_spots(s: Sentence) -> frozenset[int]:
+    """The prepositions of the places fronted stays were spent at ("After forty minutes on the waiting
+    chairs, a lad hobbles to ..."; round 46): where the walk starts is that place itself, a seat or a
+    counter as much as a room, not the room around it."""
+    spots: set[int] = set()
+    for k in range(s.n):
+        said = stay_first(s, k)
+        if said is not None and said[1] < s.n and stay_place_after(s, said[1]) and s.low[said[1]] != "of":
+            spots.add(said[1])
+    return frozenset(spots)

@@ -7,6 +7,7 @@ smoking by the bins") is no hazard, nor is a whistle that blows."""
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.a_smoke import a_smoke_had
 from grove_tui.language.sentence import Sentence
 
 # Verbs of a thing giving off a hazard, every form ("smokes", "is smoking", "starts to smoke").
@@ -30,8 +31,8 @@ def giving_off_cue(s: Sentence, i: int) -> bool:
     """Whether the word at i is a thing's verb of giving off smoke or sparks, or of blowing (module doc)."""
     w = s.low[i]
     blows = w in _BLOWS
-    if w not in _GIVING_OFF and not blows:
-        return False
+    if w not in _GIVING_OFF and not blows or a_smoke_had(s, i):
+        return False  # "for a quick smoke": a cigarette (a_smoke.py)
     if s.w[i].pos not in ("VERB", "NOUN", "AUX") or i == 0:
         return False
     if i + 1 < s.n and s.w[i + 1].pos in ("NOUN", "PROPN") and s.low[i + 1] not in lx.PERSON_NOUNS:

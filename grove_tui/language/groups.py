@@ -18,7 +18,7 @@ from grove_tui.language.called_in import called_in_to
 from grove_tui.language.robot_journey import journey_words
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
-from grove_tui.language.fronted_stays import sentence_stay
+from grove_tui.language.fronted_stays import sentence_stay, stayed_spots
 from grove_tui.language.later_stops import later_words
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.joiners import joined_intent
@@ -362,7 +362,7 @@ class Groups:
             c.intent in lx.STATIONARY_INTENTS or (c.intent is None and robot in ("look", "block", "avoid"))))
         roles = assign_roles(s.index, c.places, scene.places if scene is not None else [], verb=c.verb or "",
                              verb_index=c.verb_index, stationary=stationary, intent=intent,
-                             then_at=later_words(s, *span),
+                             then_at=later_words(s, *span), stayed_at=stayed_spots(s),
                              verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
                                        and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS],
                              moves_at=[i for i in range(*span) if not s.after_determiner(i)

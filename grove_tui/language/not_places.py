@@ -20,6 +20,7 @@ from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.consumed_things import consumed_thing
 from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
+from grove_tui.language.held_and_spans import held_or_span
 from grove_tui.language.held_origins import origin_of_held
 from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.outing_words import an_outing
@@ -41,6 +42,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
     if prep in ("at", "from", "in", "during") and names_an_event(s, k):
         return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
+    if held_or_span(s, k, prep, at):
+        return True  # "clipboard in hand", "at the interval", "midway through the lecture" (round 46)
     if no_place_thing(s, k, prep):
         return True  # "through forty-odd pickers", "recording it on a phone": people, a device
     if consumed_thing(s, k, prep, at):

@@ -32,7 +32,8 @@ class Roles:
 
 def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Sequence[Place], *, verb: str,
                  verb_index: int | None, stationary: bool, intent: str, then_at: Sequence[int] = (),
-                 verbs_at: Sequence[tuple[int, str]] = (), moves_at: Sequence[int] = ()) -> Roles:
+                 verbs_at: Sequence[tuple[int, str]] = (), moves_at: Sequence[int] = (),
+                 stayed_at: frozenset[int] = frozenset()) -> Roles:
     """The group's places by role: a narrower place (a fixture of the zone already read) replaces
     the zone; a destination said with "to" is not replaced by a later "at"; a place they stay at
     after "then" is where they stay, the one before it where they start ("buys a paper at the
@@ -58,7 +59,8 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
         if role in ("start", "via") and p in scene_places and (roles.start or roles.location):
             continue  # "a fire breaks out in radiology: ... visitors in the cafeteria": where they are is their own
         if role == "start" and p in scene_places and p.match.kind == "entity" and p.match.zone and \
-                (intent == "evacuate" or p.prep not in ("in", "inside")):  # "After ten minutes in the sauna, ...": in it
+                (intent == "evacuate" or p.prep not in ("in", "inside")) and \
+                not (intent != "evacuate" and p.index in stayed_at):  # "After ten minutes in the sauna", "on the chairs"
             name = p.match.zone  # "smoke pours from the star projector and the audience flee": from its room
             roles.read_from.setdefault(name, p)
         if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):
