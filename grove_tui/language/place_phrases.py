@@ -21,6 +21,7 @@ from grove_tui.language.place_kinds import absent_kind, gerund_before_room, geru
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
+from grove_tui.language.outside_contrast import outside_contrasted
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
@@ -230,7 +231,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
         match = match if described else said_in_number(s.index, phrase, gerund_room(s.index, phrase, match))  # "at the till": the till counter
-        if (out := zone_around(s, at, j, match)) is not None:  # "outside the pharmacy", "lined up for the Viper"
+        if (out := zone_around(s, at, j, match)) is not None and \
+                not outside_contrasted(s, at, out[0].name, self.history):  # "outside the pharmacy", "lined up for the Viper"
             match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
                                   out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
