@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
+from grove_tui.language.handled_doors import handled_door_room
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.particle_names import first_lemma
@@ -164,6 +165,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             named_owner = None  # "the women's toilet": the owner is part of the place's own name
         owner = named_owner or (owner_at(s, self.owner, at) if possessive else None)  # "Little Tom's" a child
         owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
+        owned = handled_door_room(s, prep, at, lemmas, owned[0] if owned else match, lambda ls: owned_by_name(
+            s, at, k, ls) or (self._owned(ls, None, owner) if owner else None)) or owned  # "shuts her office door"
         if owned is not None:
             match = owned[0]
         if match is None and possessive:
