@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
 from grove_tui.language.handled_doors import handled_door_room
+from grove_tui.language.held_on_to import held_on_to
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.particle_names import first_lemma
@@ -96,6 +97,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         False for a place said to be where nobody goes ("instead of the lobby")."""
         s, low = self.s, self.s.low
         prep = "to" if prep in ("at", "by", "in", "on", "near", "beside") and to_a_thing_before(s, at) else prep  # "to his cab by the exit"
+        prep = "at" if prep in ("to", "onto") and held_on_to(s, at) else prep  # "cling to the barrier"
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
