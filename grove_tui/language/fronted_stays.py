@@ -7,6 +7,7 @@ the people stay that long where they are, then do what the sentence's verb says,
 from __future__ import annotations
 
 from grove_tui.language.counts import duration_at
+from grove_tui.language.participle_stays import participle_spot
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stay_places import stay_place_after
 
@@ -41,4 +42,6 @@ def stayed_spots(s: Sentence) -> frozenset[int]:
         said = stay_first(s, k)
         if said is not None and said[1] < s.n and stay_place_after(s, said[1]) and s.low[said[1]] != "of":
             spots.add(said[1])
+        elif said is not None and (spot := participle_spot(s, said[1])) is not None:
+            spots.add(spot)  # "After twenty minutes hanging around the desk": that desk
     return frozenset(spots)

@@ -11,6 +11,8 @@ from dataclasses import dataclass
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.emptied import EmptiedZones
+from grove_tui.language.handled_doors import handled_door_room
+from grove_tui.language.held_on_to import held_on_to
 from grove_tui.language.model import FieldConfidence
 from grove_tui.language.people import People
 from grove_tui.language.particle_names import first_lemma
@@ -21,6 +23,7 @@ from grove_tui.language.place_kinds import absent_kind, gerund_before_room, geru
 from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
+from grove_tui.language.outside_contrast import outside_contrasted
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
@@ -94,6 +97,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         False for a place said to be where nobody goes ("instead of the lobby")."""
         s, low = self.s, self.s.low
         prep = "to" if prep in ("at", "by", "in", "on", "near", "beside") and to_a_thing_before(s, at) else prep  # "to his cab by the exit"
+        prep = "at" if prep in ("to", "onto") and held_on_to(s, at) else prep  # "cling to the barrier"
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
@@ -163,6 +167,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             named_owner = None  # "the women's toilet": the owner is part of the place's own name
         owner = named_owner or (owner_at(s, self.owner, at) if possessive else None)  # "Little Tom's" a child
         owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
+        owned = handled_door_room(s, prep, at, lemmas, owned[0] if owned else match, lambda ls: owned_by_name(
+            s, at, k, ls) or (self._owned(ls, None, owner) if owner else None)) or owned  # "shuts her office door"
         if owned is not None:
             match = owned[0]
         if match is None and possessive:
@@ -230,7 +236,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if possessive and owned is None and not (match.exact or self._names_kind(lemmas, match)):
             return None  # "a film on her phone": her own thing, not a place that only shares a word ("phone shop")
         match = match if described else said_in_number(s.index, phrase, gerund_room(s.index, phrase, match))  # "at the till": the till counter
-        if (out := zone_around(s, at, j, match)) is not None:  # "outside the pharmacy", "lined up for the Viper"
+        if (out := zone_around(s, at, j, match)) is not None and \
+                not outside_contrasted(s, at, out[0].name, self.history):  # "outside the pharmacy", "lined up for the Viper"
             match, reason = out
         return self._record(Place(prep, at, tuple(phrase), match, j, score, reason, alternatives,
                                   out_of=prep == "from" and s.low[at] == "out", written=s.low[at]), k, mentioned)
