@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.item_doings import doing_word
 from grove_tui.language.tokens import lemma
 
 _PLACED = frozenset("in at on by near inside outside behind beside".split())
@@ -36,7 +37,7 @@ def bare_items(text: str) -> str:
         first, second, after = m.group("first"), m.group("second"), m.group("after")
         if second is not None and (first, second) in _TWO_WORD:
             noun, follows = second, after
-        elif second is not None and second in _AFTER:
+        elif second is not None and (second in _AFTER or doing_word(second, after)):
             noun, follows = first, second
         elif second is None:
             noun, follows = first, after
@@ -44,7 +45,7 @@ def bare_items(text: str) -> str:
             start = m.start() + len(m.group("sep"))
             continue
         said = bool(before) and before[0] not in _PLACED  # not ", in huddle room 2, boss ...": a place of its own
-        if _bare_person(noun) and follows in _AFTER and said and _PLACED & set(before):
+        if _bare_person(noun) and (follows in _AFTER or doing_word(follows, after if follows != after else None)) and said and _PLACED & set(before):
             article = "an" if first[0] in "aeiou" else "a"
             out.append(text[last:m.start()] + m.group("sep") + article + " ")
             last = m.start() + len(m.group("sep"))

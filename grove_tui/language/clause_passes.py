@@ -26,6 +26,7 @@ from grove_tui.language.crowding_round import crowding_round
 from grove_tui.language.dogged_steps import dogging_the_robot
 from grove_tui.language.feeling_adjectives import coloured_by_feeling
 from grove_tui.language.feeling_phrases import feelings_said_outright
+from grove_tui.language.fronted_surprise import surprised_when_fronted
 from grove_tui.language.leisure_places import leisure_places
 from grove_tui.language.model import PromptReading
 from grove_tui.language.pacing_between import pacing_between
@@ -47,6 +48,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))))
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
+    groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)

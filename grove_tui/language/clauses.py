@@ -170,6 +170,8 @@ class Clauses(ClauseCues):
             sequel = self._sequel(scan, i)
             if sequel is not None:
                 return self._add_place(scan, sequel, i)
+            if i in scan.used:  # the rest of the one name, taken (_sequel)
+                return True
         prep = s.preposition(i) or bare_place_at(s, i)  # "sits backstage": a bare adverb of place
         if prep is not None:
             name, width = prep
@@ -210,7 +212,11 @@ class Clauses(ClauseCues):
         if k >= s.n or k not in scan.own or s.preposition(k) is not None or s.verb_follows(k) or s.low[k] == "where":
             return None  # (", where five managers meet": what happens at the place before, no next stop)
         place = self.places.phrase(k, before.prep, i, record_unknown=False)
-        if place is None or place.match is None or place.match.name == before.match.name:
+        if place is None or place.match is None:
+            return None
+        if place.match.name == before.match.name:
+            if s.low[i] == "and":  # "the owners' and trainers' lounge": the rest of the one name, no verb in it
+                self._take(scan, i, place.end)
             return None
         return replace(place, sequel=True)
 

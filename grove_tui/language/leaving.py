@@ -12,6 +12,7 @@ from grove_tui.language.event_causes import shutting_verbs
 from grove_tui.language.going_idioms import as_going_verbs
 from grove_tui.language.parser import Word
 from grove_tui.language.pushed_things import as_pushing_verbs
+from grove_tui.language.till_words import with_till_nouns
 from grove_tui.language.worked_things import work_particles
 
 # One-word verbs of leaving (base forms): a walk.
@@ -53,6 +54,7 @@ _AFTER_BARE = frozenset({"", ".", "!", ",", ";", ":", "from", "out", "off", "awa
 
 def as_verbs(words: list[Word]) -> list[Word]:
     """The parse with leaving verbs the parser took for nouns tagged as verbs ("lounge leg it")."""
+    words = with_till_nouns(words)  # "a pair of till staff": the shop's till, not "until"
     out = list(words)
     for k, w in enumerate(words):
         nxt = words[k + 1].lower if k + 1 < len(words) else ""
