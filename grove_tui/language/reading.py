@@ -31,7 +31,6 @@ from dataclasses import replace
 from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
-from grove_tui.language.till_workers import with_till_workers
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
@@ -191,7 +190,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
-    text = with_until(with_till_workers(text))  # "two till staff": till-staff; "waits till the coach comes": a time, not the shop's till
+    text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
     text = with_fronted_phrase_commas(with_fronted_time_commas(with_clock_commas(with_stays_as_lengths(text))))  # "At nine Tom Hale walks": a time, not nine of him; "After dinner a couple stroll", "During the changeover a bellboy ...": a comma after the time; "after a 15-minute wait"
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_age_bands(with_function_word_people(with_whole_person_words(text))))  # "his 4-year-old walks": "his 4-year-old child walks"; "eighteen over-fifties": "eighteen older people"
