@@ -38,6 +38,7 @@ from grove_tui.language.not_places import no_place_said
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.places import PlaceMatch
+from grove_tui.language.other_possessors import other_of_kind, setting_words
 from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -186,7 +187,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES and not tier_place(lemmas):
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
-        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match):  # "the planetarium (room)": a kind the world lacks
+        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
+                s.index, match, lemmas, setting_words(s, start, j, self.people.is_person_noun))):  # "the planetarium (room)", "the members' enclosure"
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
