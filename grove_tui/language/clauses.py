@@ -213,12 +213,21 @@ class Clauses(ClauseCues):
             return None  # (", where five managers meet": what happens at the place before, no next stop)
         place = self.places.phrase(k, before.prep, i, record_unknown=False)
         if place is None or place.match is None:
+            if s.low[i] == "and" and s.low[k] not in lx.DETERMINERS and s.low[k] not in lx.NOT_USING_WORDS and \
+                    self._same_head(before.match.name, s.phrase_end(k)):
+                self._take(scan, i, s.phrase_end(k))  # "the residents' and visitors' lounge": one name
             return None
         if place.match.name == before.match.name:
             if s.low[i] == "and":  # "the owners' and trainers' lounge": the rest of the one name, no verb in it
                 self._take(scan, i, place.end)
             return None
         return replace(place, sequel=True)
+
+    def _same_head(self, name: str, end: int) -> bool:
+        """Whether the phrase ending before `end` has a head that is a word of the place `name`, so words
+        after "and" finish that place's name even when they alone name no place of the world."""
+        entry = self.s.index.entry(name)
+        return entry is not None and 0 < end <= self.s.n and self.s.lemma(end - 1) in entry.tokens
 
     def _not_using(self, scan: _Scan, i: int) -> bool:
         """ "..., not the main doors", "but not through the lobby", "avoiding the lifts": a place the group
