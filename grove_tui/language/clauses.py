@@ -32,7 +32,7 @@ from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import clause_reaction
-from grove_tui.language.numbered_names import numbered_name
+from grove_tui.language.numbered_names import numbered_kind, numbered_name
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -267,9 +267,9 @@ class Clauses(ClauseCues):
         right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
             sets_off_for(s, i) or searched_or_queued_for(s, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)) or \
-                numbered_name(s, i + 1) and self.places.names_place(i + 1):  # "for gate B1", "for platform 2"
+                numbered_name(s, i + 1) and self.places.names_place(i + 1) or numbered_kind(s, i + 1):  # "for gate B1"
             refused = len(self.places.unknown)
-            place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb)
+            place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb or numbered_kind(s, i + 1))
             if place is not None or len(self.places.unknown) > refused:  # a place it lacks: no purpose either
                 scan.c.places.extend([place] if place is not None else [])
                 scan.used.update(range(i, place.end if place is not None else s.phrase_end(i + 1)))

@@ -4,7 +4,7 @@
   "a bag on his shoulder", "a folder under one arm": where a thing is carried, not a room the world lacks;
 - a time said by an event or a break: "at the interval", "at half-time", "at the break", and "midway
   (halfway, partway) through the lecture / the concert / the match" (mid_events.py writes "mid-lecture"
-  so). A named room is still a place: "at the break room", "through the lecture theatre" are headed by
+  so), also when no comma ends the time before the subject ("Halfway through the matinee smoke drifts"). A named room is still a place: "at the break room", "through the lecture theatre" are headed by
   a room word, never by the event.
 """
 
@@ -28,7 +28,9 @@ _AT_SPANS = frozenset("interval intermission half-time halftime break interlude 
 _EVENTS = frozenset("lecture concert gig match game show film movie screening performance play talk speech "
                     "service tour party class lesson meeting session shift set race round practice rehearsal "
                     "seminar tutorial briefing ceremony wedding disco visit workout drill interval "
-                    "opera ballet musical recital sermon mass auction".split()) | GATHERING_HEADS
+                    "opera ballet musical recital sermon mass auction matinee premiere finale encore overture "
+                    "act scene quiz exam meal dinner lunch banquet recording broadcast episode taping "
+                    "keynote presentation".split()) | GATHERING_HEADS
 _PART_WAY = frozenset("midway halfway partway part-way half-way mid-way".split())
 
 
@@ -43,7 +45,9 @@ def held_or_span(s: Sentence, k: int, prep: str, at: int) -> bool:
     if prep == "at" and (said in _AT_SPANS or s.low[head] in _AT_SPANS):
         return True  # "At the interval the alarms sound": a time, no place
     if prep == "through" and at >= 1 and s.low[at - 1] in _PART_WAY:
-        return said in _EVENTS or s.low[head] in _EVENTS
+        # "Halfway through the matinee smoke drifts ...": with no comma the time runs into the subject,
+        # so an event anywhere in the phrase ends the time
+        return any(lemma(s.low[x]) in _EVENTS or s.low[x] in _EVENTS for x in range(k, head + 1))
     return False
 
 

@@ -286,7 +286,7 @@ for _intent, _verbs in {
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter "
                 "bicker squabble quarrel wrangle murmur whisper mutter confer",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy clean tour rummage",
+              "mop sweep vacuum hoover scrub tidy clean tour rummage prowl",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
@@ -338,7 +338,7 @@ ONE_SET_PLURALS = frozenset({"twin", "triplet"})
 START_OBJECT_VERBS = frozenset("leave exit evacuate vacate flee escape quit abandon desert".split())
 DESTINATION_OBJECT_VERBS = frozenset("enter reach visit approach cross".split())
 LOCATION_OBJECT_VERBS = frozenset("patrol roam explore browse wander occupy fill clean search tour mop sweep vacuum watch "
-                                  "hoover scrub tidy crowd throng pack cram".split())
+                                  "hoover scrub tidy crowd throng pack cram pace prowl stalk comb scour".split())
 # Verbs of a purpose ("to reach the ICU", "to get to the pharmacy") whose object, or the place after
 # their "to", is where people go; PURPOSE_OBJECT_VERBS take it as an object ("to use the toilets").
 PURPOSE_OBJECT_VERBS = frozenset("use board".split())

@@ -35,6 +35,7 @@ from grove_tui.language.worn_fixtures import worn_fixture
 from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
+from grove_tui.language.stage_parts import stage_part
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.places import PlaceMatch
@@ -219,6 +220,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if meant is not None and not self.modifiers_agree(kinds, meant[0].name, head=lemmas[-1] if lemmas else ""):
                 meant = None  # "the stockroom" is near "boardroom" by its letters, not by what it is
             match = meant[0] if meant is not None else None
+        match = match or (stage_part(s.index, lemmas) if not numbered else None)  # "from the wings"
         if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
         if match is None:

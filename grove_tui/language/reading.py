@@ -134,6 +134,7 @@ from grove_tui.language.whole_of_zone import whole_of_zone
 from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
+from grove_tui.language.refused_corrections import refused_real_words
 from grove_tui.language.outing_parties import as_outing_parties
 from grove_tui.language.split_wholes import parts_of_a_split_whole
 from grove_tui.language.text import normalise
@@ -216,10 +217,17 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if active is not None:
         text, words = active, as_singular_verbs(as_verbs(parse(active)))
     corrected, corrections = correct_places(text, words, index)
+    reading = None
     if corrections:
         # The corrected sentence is parsed again: a misspelt word is often mis-tagged too ("the kitchn").
+        as_written, written_words = text, words
         text, words = corrected, as_singular_verbs(as_verbs(parse(corrected)))
-    reading = _read(Sentence(text, words, index, int(seed)))
+        reading = _read(Sentence(text, words, index, int(seed)))
+        if kept := refused_real_words(written_words, index, reading.unknown_places):  # "car park" is no "cart park"
+            corrected, corrections = correct_places(as_written, written_words, index, skip=kept)
+            text, words = corrected, as_singular_verbs(as_verbs(parse(corrected))) if corrections else written_words
+            reading = _read(Sentence(text, words, index, int(seed)))
+    reading = reading or _read(Sentence(text, words, index, int(seed)))
     if active is not None and not late:  # the taken before their taker, as the sentence says them
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"

@@ -54,7 +54,8 @@ def one_edit(a: str, b: str) -> bool:
     return any(b[:k] + b[k + 1:] == a for k in range(len(b)))
 
 
-def correct_places(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple[str, list[str]]:
+def correct_places(text: str, words: Sequence[Word], index: PlaceIndex,
+                   skip: frozenset[int] = frozenset()) -> tuple[str, list[str]]:
     """The prompt with misspelt place words put right, and what was put right ("read 'kitchn' as
     'kitchen'"). Conservative, so a real word is never turned into a place: a word is corrected only
     when the world has no place word like it, it is no word for people and no verb the lexicon knows,
@@ -63,10 +64,10 @@ def correct_places(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple
     next to it ("intensive cair": care, not chair). Short words (3-4 letters) and real English words ("sever") are
     corrected only when the correction completes a name with the word next to them ("sever room" ->
     "server room"), never alone ("left" is not "lift"). Two words of a name run together are split
-    ("livingroom" -> "living room")."""
+    ("livingroom" -> "living room"). The words at the indices in `skip` are left as written."""
     edits: list[tuple[int, int, str, str]] = []
     for k, w in enumerate(words):
-        replacement = _correction(words, k, index)
+        replacement = None if k in skip else _correction(words, k, index)  # skip: kept as written
         if replacement is None:
             continue
         if w.text[:1].isupper():
@@ -78,6 +79,11 @@ def correct_places(text: str, words: Sequence[Word], index: PlaceIndex) -> tuple
     for start, end, replacement, _ in reversed(edits):
         out = out[:start] + replacement + out[end:]
     return out, [f"read '{original}' as '{replacement}'" for _, _, replacement, original in edits]
+
+
+def correction_of(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
+    """What word k is corrected to, or None when it is left as written."""
+    return _correction(words, k, index)
 
 
 def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:

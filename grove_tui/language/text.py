@@ -22,6 +22,7 @@ from grove_tui.language.chat_spelling import spell_out
 from grove_tui.language.kin_counts import kin_counts
 from grove_tui.language.placing_lists import placing_lists
 from grove_tui.language.placing_verbs import placing_verbs
+from grove_tui.language.name_stops import names_unstopped
 from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.robot_chat import robot_chat
 from grove_tui.language.robot_sent import robot_sent
@@ -97,6 +98,7 @@ def normalise(text: str) -> str:
     folded = unicodedata.normalize("NFKC", text or "")
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
+    kept = names_unstopped(kept)  # "the T. rex", "St. Mary's ward": no sentence end
     kept = robot_sent(robot_chat(spell_out(kept)))  # "walkin frm", "robo shd wait": chat's dropped g, short words
     kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(kept)))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
