@@ -15,10 +15,10 @@ _FRONTED = re.compile(r"(^|[.!?;]\s+)(while|whilst|as|when)\s+((?:the|a|an|his|h
 
 
 def with_fronted_passives_after(text: str) -> str:
-    """The text with each such fronted passive clause said first as a main clause, its "while" after
+    """The text with each such fronted passive clause said first as a main clause, "while" after
     it (see the module doc)."""
     def moved(m: re.Match[str]) -> str:
         clause = m.group(3)
-        return f"{m.group(1)}{clause[:1].upper()}{clause[1:]} {m.group(2).lower()} "
+        return f"{m.group(1)}{clause[:1].upper()}{clause[1:]} while "  # "as" after the clause reads as a cause
 
     return _FRONTED.sub(moved, text)
