@@ -54,8 +54,8 @@ def other_of_kind(index: PlaceIndex, match: PlaceMatch | None, lemmas: Sequence[
     owners = [w for w in words if w in lx.PERSON_NOUNS]
     said = set(lemmas)
     own = [p for p in entry.phrases if len(p) > 1 and p[-1] == head]
-    if _whose(entry.said, head) and bool(own) and not any(set(p) <= said for p in own):
-        return True
+    if _whose(entry.said, head):
+        return bool(own) and not any(set(p) <= said for p in own)
     # "the VIP lounge" matched by its head to a "champagne lounge" where the world's lounge for people is
     # the owners' and trainers': a lounge of another kind of person, which the world does not have
     kin = [e for e in index.entries if e.kind == "zone" and head in e.tokens]
