@@ -11,7 +11,8 @@ what people do or where, which the clause reader leaves to them:
 - a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
   errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
   robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
-- going off to hide after seeing the robot, an avoidance (robot_hiding.py).
+- going off to hide after seeing the robot, an avoidance (robot_hiding.py); a step back or aside from the
+  robot where one stands, located there (stepped_aside.py).
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ from grove_tui.language.queued_movers import queued_movers
 from grove_tui.language.robot_hiding import hiding_after_seeing
 from grove_tui.language.its_people import its_people
 from grove_tui.language.searched_unknown import searched_unknown
+from grove_tui.language.stepped_aside import stepped_aside_in_place
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
 from grove_tui.language.surprised_at import occasions, surprised_at
 
@@ -49,6 +51,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
+    groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)
