@@ -23,6 +23,7 @@ from grove_tui.language.particle_ends import place_end
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_with import with_object_end
+from grove_tui.language.purpose_after_place import purpose_after_destination
 from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
 from grove_tui.language.people import People
 from grove_tui.language.ahead_of_events import ahead_of_event
@@ -153,6 +154,8 @@ class Clauses(ClauseCues):
         if w == "to" and i > 0 and (s.w[i - 1].tag == "VBN" and s.verb(i - 1) in lx.TELLING_VERBS
                                     or self._told_before(i) or obliged_to(s, i)) and s.verb_follows(i + 1):
             return False  # "the guests are asked to leave", "tells two interns to go to ...", "have to leave": no purpose
+        if purpose_after_destination(s, scan.c.places, i):  # "hurries to MR2 to chair student council"
+            return self._purpose(scan, i, i, i + 2)
         if w == "to" and (nxt == "" or s.verb_follows(i + 1)) and (not (self.places.names_place(i + 1) or series_number_at(
                 s.index, s.low[i + 1:i + 6])) or verb_with_an_object(s, i + 1)):  # "to check tomorrow's rota", "to book a court"
             return self._purpose(scan, i, i, i + 2)
@@ -277,11 +280,16 @@ class Clauses(ClauseCues):
                 return True
         end = s.phrase_end(i + 1)
         if end > i + 1 and not any(s.low[x] in lx.ROBOT_WORDS for x in range(i + 1, end)) and \
-                not self.people.is_person_noun(i - 1) and not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
+                (not self.people.is_person_noun(i - 1) or self._ends_a_named_place(scan, i)) and not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
             scan.c.purpose = scan.c.purpose or s.span(i, end - 1)
             self._take(scan, i, end)
             return True
         return False
+
+    def _ends_a_named_place(self, scan: _Scan, i: int) -> bool:
+        """Whether the word before i ends the clause's last place, named by the world ("the kids' club for the
+        pirate party": "club" is the place's, not a club of people the "for" could be about)."""
+        return bool(scan.c.places) and scan.c.places[-1].match is not None and place_end(self.s, scan.c.places[-1]) == i
 
     def _purpose(self, scan: _Scan, first: int, said_from: int, verb_at: int) -> bool:
         """"to register", "in order to catch the bus": a purpose, not a place. A place right after it

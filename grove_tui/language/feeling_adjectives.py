@@ -19,6 +19,10 @@ _CURIOUS = frozenset("spellbound intrigued fascinated curious captivated enthral
 _SCARED = frozenset("wary nervous scared frightened afraid fearful anxious uneasy apprehensive jumpy timid "
                     "terrified petrified spooked alarmed unnerved suspicious leery distrustful mistrustful "
                     "worried edgy twitchy skittish".split())
+# Every word of feeling set apart from a clause (fronted_feelings.py: "Spellbound, a wee lad ..." is no name).
+FEELINGS = _CURIOUS | _SCARED | frozenset("awestruck starstruck dumbstruck thunderstruck delighted thrilled "
+                                          "excited amazed astonished astounded bewildered puzzled baffled "
+                                          "perplexed gleeful giddy eager keen happy glad shy bashful".split())
 _WORD = r"(?:(?:a\s+(?:little|bit)|rather|very|quite|slightly|clearly|visibly|utterly|totally|somewhat|"\
         r"a\s+touch)\s+)?([a-z]+)"
 _FRONTED = re.compile(r"^\s*" + _WORD + r"\s*,", re.I)

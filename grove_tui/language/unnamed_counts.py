@@ -18,6 +18,10 @@ _SINGLE = frozenset({"a", "an", "the", "one", "this", "that"})
 _FINITE = frozenset({"VBZ", "VBP", "VBD", "MD"})
 # Verbs of people a tagger may take for plural nouns after a singular subject ("waits", "wanders").
 _MISTAGGED_VERBS = lx.PEOPLE_GOING_VERBS | lx.HUMAN_SUBJECT_VERBS | lx.ROBOT_WAIT_VERBS
+# Round 48: a second clause's subject ("..., and the twenty or so jumpers in the cage pour out"), and the
+# article before a count ("the twenty or so", "all thirty", "those forty").
+_JOINERS = frozenset({"and", "but"})
+_OPENERS = frozenset({"the", "all", "those", "these"})
 _RELATIVES = frozenset({"who", "whom", "that", "whose"})
 # Words of a subject that is no person: a time, a thing, a place, an event ("a busy afternoon", "the lift").
 _NOT_PEOPLE = frozenset("""afternoon morning evening night day hour minute moment time week weekend session shift
@@ -70,7 +74,8 @@ def _verb_after(s: Sentence, k: int) -> int | None:
         if s.low[i] in (",", ";", ".", "and", "but", "while"):
             return None
         if s.w[i].tag in _FINITE or (s.w[i].pos in ("VERB", "AUX") and s.w[i].tag not in ("VBG", "VBN")) or \
-                (s.w[i].tag == "NNS" and verb_lemma(s.low[i]) in _MISTAGGED_VERBS):  # "a temp ... waits"
+                (s.w[i].tag == "NNS" and verb_lemma(s.low[i]) in _MISTAGGED_VERBS) or \
+                _going_taken_for_a_noun(s, k, i):  # "a temp ... waits", "the fifty ... on the pier pour into"
             if relative and seen == 0:
                 seen = 1
                 continue
@@ -78,6 +83,13 @@ def _verb_after(s: Sentence, k: int) -> int | None:
         if i == k and not relative and s.w[i].pos != "ADP":
             return None
     return None
+
+
+def _going_taken_for_a_noun(s: Sentence, k: int, i: int) -> bool:
+    """Whether the word at i, past the subject's place phrase, is a verb of going the parser took for
+    the place's last noun ("the fifty or so crabbers on the pier pour into the arcade": "pier pour")."""
+    return i > k + 1 and s.w[i].tag in ("NN", "NNS") and i + 1 < s.n and s.w[i + 1].pos == "ADP" and \
+        lx.INTENT_VERBS.get(verb_lemma(s.low[i])) in ("walk", "evacuate") and s.w[i - 1].pos in ("NOUN", "PROPN")
 
 
 def _names_a_place(s: Sentence, first: int, end: int) -> bool:
@@ -89,20 +101,31 @@ def _names_a_place(s: Sentence, first: int, end: int) -> bool:
 
 def subject_count(s: Sentence, robot_tokens: set[int]) -> Count | None:
     """The count the sentence's first subject phrase says, if it has one and names nobody known."""
-    for start in _starts(s)[:3]:
+    joined = [i + 1 for i in range(s.n - 1) if s.low[i] in _JOINERS and s.w[i].pos == "CCONJ"]
+    one: Count | None = None  # a lone "the power fails" gives way to a later clause's counted subject
+    for start in _starts(s)[:3] + joined:  # "The alarm trips and the twenty or so jumpers ... pour out"
+        if one is not None and start not in joined:
+            continue
         if start in robot_tokens or start >= s.n:
             continue
         q = quantifier(s, start)
+        opened = q is None and s.low[start] in _OPENERS and start + 1 < s.n
+        if opened:
+            q = quantifier(s, start + 1)  # "the twenty or so jumpers": the count after its article
         single = q is None and s.low[start] in _SINGLE
         if q is None and not single:
             continue
         head_start = q.end if q is not None else start + 1
         end = _phrase_end(s, head_start)
+        taken = end == head_start and opened and q is not None and head_start + 1 < s.n and s.low[head_start].isalpha() \
+                and s.low[head_start].endswith("s") and s.w[head_start + 1].pos == "ADP"
+        if taken:
+            end += 1  # "the thirty or so floats in the pool": whatever word is counted, tagged a verb or not
         if end == head_start or any(i in robot_tokens for i in range(start, end)):
             continue
         head = s.low[end - 1]
         if head in lx.ROBOT_WORDS or lemma(head) in _NOT_PEOPLE or lemma(head) in lx.NON_PEOPLE or \
-                s.w[end - 1].pos not in ("NOUN", "PROPN") or _names_a_place(s, head_start, end):
+                (s.w[end - 1].pos not in ("NOUN", "PROPN") and not taken) or _names_a_place(s, head_start, end):
             continue
         plural = lemma(head) != head
         if single and (plural or s.low[start] == "the" and s.w[end - 1].pos == "PROPN"):
@@ -118,10 +141,11 @@ def subject_count(s: Sentence, robot_tokens: set[int]) -> Count | None:
         if single:
             if verb is not None and s.w[verb].tag == "VBP":
                 continue
-            return Count("exact", 1, 1, 1)
+            one = one or Count("exact", 1, 1, 1)
+            continue
         assert q is not None
         return count_of(s, q, "unnamed")
-    return None
+    return one
 
 
 def counted_unnamed(s: Sentence, group: GroupReading, robot_tokens: set[int]) -> GroupReading:
