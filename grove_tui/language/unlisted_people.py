@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.aspect_verbs import governed_verb
+from grove_tui.language.hazard_subjects import hazard_verb
 from grove_tui.language.lone_person import leading_name, said_as_a_verb
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
 from grove_tui.language.tokens import verb_lemma
@@ -72,6 +73,8 @@ def unlisted_subject(s: Sentence, i: int) -> bool:
     if word.pos not in ("NOUN", "PROPN", "ADJ") or word.dep != "nsubj" or word.head == i or \
             not s.low[i].isalpha() or (len(s.low[i]) < 3 and not _short_name(s, i)):
         return False
+    if hazard_verb(s, word.head):
+        return False  # "Fat flares up on the grill", "Butter catches fire": a thing on fire, nobody
     if not (_people_verb(s, word.head) or (going_by_way(s, word.head) and word.tag == "NNP" and (
             i == 0 or s.low[i - 1] not in _OPENERS))):
         if s.verb(word.head) in _GROUP_NOUNS:
