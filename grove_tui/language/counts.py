@@ -225,7 +225,7 @@ def _number_quantifier(s: Sentence, num: tuple[int, int], approx: bool) -> Quant
         return Quantifier(value, "approximate", after + 2)  # "forty or thereabouts"
     if after < s.n and low[after] == "odd":
         return Quantifier(value, "approximate", after + 1)  # "twenty-odd customers"
-    if tuple(low[after:after + 2]) == ("-", "odd"):
+    if tuple(low[after:after + 2]) in (("-", "odd"), ("-", "some")):  # "sixty-some moviegoers": about sixty
         return Quantifier(value, "approximate", after + 2)
     if after + 1 < s.n and low[after] in ("to", "-", "or"):
         b = number_at(s, after + 1)
