@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.timer_people import timer_person
 from grove_tui.language.hazard_subjects import hazard_verb
+from grove_tui.language.adverbed_participles import adverb_before_participle
 from grove_tui.language.animal_idioms import animal_idiom_person
 from grove_tui.language.hyphen_counts import count_ends_at
 from grove_tui.language.compound_people import chain_end
@@ -365,7 +366,8 @@ class People:
                     k += 1
                 return k
             if s.w[k].pos == "ADV" and k + 1 < s.n and (
-                    s.w[k + 1].pos == "ADJ" or s.w[k + 1].dep == "amod" or side_word(s, k)):  # "away fans"
+                    s.w[k + 1].pos == "ADJ" or s.w[k + 1].dep == "amod" or side_word(s, k)
+                    or adverb_before_participle(s, k, self.is_person_noun)):  # "away fans", "freshly jabbed"
                 k += 1  # "a partially sighted woman", "a very frail man": the adverb says how, no one
                 continue
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].dep == "amod" and s.w[k].tag in ("VBN", "VBG")) \
