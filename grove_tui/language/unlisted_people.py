@@ -10,6 +10,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.and_a_person import hanging_about, joined_lone_subject
 from grove_tui.language.aspect_verbs import governed_verb
 from grove_tui.language.hazard_subjects import hazard_verb
 from grove_tui.language.lone_person import leading_name, said_as_a_verb
@@ -69,13 +70,15 @@ def _short_name(s: Sentence, i: int) -> bool:
 def unlisted_subject(s: Sentence, i: int) -> bool:
     """Whether word i heads a subject phrase naming people no list has (see the module doc)."""
     word = s.w[i]
+    if joined_lone_subject(s, i, lambda lem: _a_thing(s, lem)):
+        return True  # "..., and a postdoc hangs about by ...": the parser's adjective and plural noun
     # (A subject the parser tags an adjective is a noun it does not know: "a nervous postgrad leaves".)
     if word.pos not in ("NOUN", "PROPN", "ADJ") or word.dep != "nsubj" or word.head == i or \
             not s.low[i].isalpha() or (len(s.low[i]) < 3 and not _short_name(s, i)):
         return False
     if hazard_verb(s, word.head):
         return False  # "Fat flares up on the grill", "Butter catches fire": a thing on fire, nobody
-    if not (_people_verb(s, word.head) or (going_by_way(s, word.head) and word.tag == "NNP" and (
+    if not (_people_verb(s, word.head) or hanging_about(s, word.head) or (going_by_way(s, word.head) and word.tag == "NNP" and (
             i == 0 or s.low[i - 1] not in _OPENERS))):
         if s.verb(word.head) in _GROUP_NOUNS:
             return False  # "Small groups of two chat ...": a group, the parser's verb a noun
