@@ -20,6 +20,7 @@ from grove_tui.language.stay_particles import after_a_stay
 from grove_tui.language.manner import pace, together
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.particle_ends import place_end
+from grove_tui.language.going_idioms import straight_for
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_with import with_object_end
@@ -475,7 +476,8 @@ class Clauses(ClauseCues):
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
-                                                                                  "way", "to", "for")):
+                                                                                  "way", "to", "for")) and \
+                        not (v == "make" and straight_for(s, i)):
                     continue
                 candidates.append((i, kind, v))
         if any(s.w[i].pos == "VERB" and s.w[i].lemma not in ("be", "have") and i not in used for i in own):

@@ -42,6 +42,7 @@ def giving_off_cue(s: Sentence, i: int) -> bool:
         k -= 1
     if s.low[k] in _BETWEEN:
         return False
+    k = _before_numbered_place(s, k)
     subject = s.low[k]
     if s.w[k].pos in _NO_SUBJECT or subject in _PERSONS or s.is_punct(k):
         return False
@@ -51,3 +52,14 @@ def giving_off_cue(s: Sentence, i: int) -> bool:
         up = i + 1 < s.n and s.low[i + 1] == "up"
         return up or subject in _BLOWING_THINGS
     return True
+
+
+def _before_numbered_place(s: Sentence, k: int) -> int:
+    """The thing before a numbered place the word at k ends ("a printer behind counter 3 starts smoking":
+    the printer, not the number), or k itself (round 49)."""
+    if s.w[k].pos != "NUM" or k < 3 or s.w[k - 1].pos not in ("NOUN", "PROPN"):
+        return k
+    for j in range(k - 2, max(k - 5, 0), -1):
+        if s.w[j].pos == "ADP":
+            return j - 1 if s.w[j - 1].pos in ("NOUN", "PROPN") else k
+    return k

@@ -3,7 +3,9 @@
 - "make for the library" after a participle's object ("three sixth-formers doing coursework make for
   the library"): the parser takes "make" for a noun the object compounds with; before "for" and a
   determiner, or before "their way", "a beeline", "tracks", a form of "make" right after a noun is the
-  clause's verb, and `as_going_verbs` tags it so.
+  clause's verb, and `as_going_verbs` tags it so. An adverb between ("make straight for the exit",
+  "made directly for the lifts"), which the parser takes for an adjective "make" makes, is tagged the
+  adverb it is (round 49), as it is after "head".
 - "set off for", "set out for", "set off towards", "start off for", "strike out for": going there, as
   "head for" is (`setting_out`); "set off the alarm" and "set out the chairs" are not going.
 """
@@ -21,6 +23,7 @@ _MAKE_FORMS = frozenset("make makes made making".split())
 _AFTER_FOR = frozenset("the a an this that their his her its our my".split())
 _GOING_OBJECTS = frozenset("way beeline dash run bolt tracks break".split())
 _POSSESSIVE = frozenset("their his her its our my a an".split())
+_STRAIGHT = frozenset("straight directly".split())
 
 # "set off for", "strike out for", "start off towards": a verb, its particle, and where to.
 _SETTING_VERBS = frozenset("set start strike".split())
@@ -43,6 +46,10 @@ def as_going_verbs(words: list[Word]) -> list[Word]:
     """The parse with a form of "make" that says going, taken for a noun after a noun ("coursework make
     for the library"), tagged as the verb it is."""
     out = list(words)
+    for k, w in enumerate(words[:-1]):
+        if w.lower in _MAKE_FORMS and words[k + 1].lower in _STRAIGHT and _says_going(words, k + 1):
+            out[k + 1] = replace(words[k + 1], pos="ADV", tag="RB", dep="advmod", head=k)  # "make straight for"
+    words = list(out)
     for k, w in enumerate(words):
         if k == 0 or w.lower not in _MAKE_FORMS or w.pos == "VERB" or not _says_going(words, k):
             continue
@@ -67,3 +74,8 @@ def setting_out(s: Sentence, i: int) -> tuple[str, ...] | None:
     if s.low[i + 2] == "to" and i + 3 < s.n and s.w[i + 3].pos in ("VERB", "AUX"):
         return None  # "set out to find the café": a purpose, said by the place it comes to
     return tuple(s.low[i:i + 2])
+
+
+def straight_for(s: Sentence, i: int) -> bool:
+    """Whether "make" at i is followed by "straight for" or "directly for" ("make straight for the exit")."""
+    return i + 2 < s.n and s.low[i + 1] in _STRAIGHT and s.low[i + 2] == "for"

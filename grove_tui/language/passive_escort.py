@@ -13,9 +13,10 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word
 
-# Words for the taker that name no person: "taken to the hall by bus", "carried by the crowd" is kept.
+# Words for the taker that name no person: "taken to the hall by bus", "carried by the crowd" is kept. A way
+# out is the way they are taken, no taker ("are got out by the fire exit", "taken out by the side door").
 _NOT_TAKERS = frozenset("bus coach car taxi train lift elevator escalator stairs hand ambulance van shuttle "
-                        "wheelchair stretcher trolley road foot".split())
+                        "wheelchair stretcher trolley road foot escape stairwell staircase route".split()) | lx.DOOR_WORDS
 
 
 def _third_person(lemma: str) -> str:

@@ -1,7 +1,7 @@
 """A crowd piling out of one place onto another (round 26): "the stag party piles out of the buffet onto
 platform one", "the kids pile out of the coach into the car park". Piling out is how a crowd leaves,
-an evacuation only when nothing else is said; with a place gone on to ("onto", "into", "to"), and
-nothing urgent, they walk there."""
+an evacuation only when nothing else is said; with a place gone on to ("onto", "into", "to", also joined
+by "and": "pile out of the bus and into the hall"), and nothing urgent, they walk there."""
 
 from __future__ import annotations
 
@@ -17,6 +17,8 @@ def moves_on(s: Sentence, verb: int, pair: tuple[str, str]) -> bool:
     if pair not in _MOVING_ON:
         return False
     for k in range(verb + 2, min(verb + 12, s.n - 1)):
+        if s.low[k] == "and" and k + 1 < s.n and s.low[k + 1] in _ON_TO:
+            continue  # "pile out of the bus and into the hall": the same going on
         if s.low[k] in _CLAUSE_END or (k > verb + 2 and s.is_verb(k) and s.w[k].tag.startswith("VB")):
             return False
         if s.low[k] in _ON_TO and not s.verb_follows(k + 1):

@@ -51,6 +51,7 @@ from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
 from grove_tui.language.got_out import as_got_out
+from grove_tui.language.into_waits import with_stays_into
 from grove_tui.language.left_with import as_dropped_off
 from grove_tui.language.causative_orders import as_ordered_clauses
 from grove_tui.language.chat_pairs import with_chat_pairs
@@ -196,7 +197,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
     text = with_until(text)  # "waits till the coach comes": a time, not the shop's till
-    text = with_fronted_phrase_commas(with_fronted_time_commas(with_clock_commas(with_stays_as_lengths(text))))  # "At nine Tom Hale walks": a time, not nine of him; "After dinner a couple stroll", "During the changeover a bellboy ...": a comma after the time; "after a 15-minute wait"
+    text = with_fronted_phrase_commas(with_fronted_time_commas(with_clock_commas(with_stays_as_lengths(with_stays_into(text)))))  # "At nine Tom Hale walks": a time, not nine of him; "After dinner a couple stroll", "During the changeover a bellboy ...": a comma after the time; "after a 15-minute wait"
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_age_bands(with_function_word_people(with_whole_person_words(text))))  # "his 4-year-old walks": "his 4-year-old child walks"; "eighteen over-fifties": "eighteen older people"
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
