@@ -43,6 +43,9 @@ from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_
 from grove_tui.language.wander_spots import (SPOT_KEEPING_VERBS, browsing_between_shops, chore_after_coming,
                                               thing_adjective, wandering_at_a_spot)
 
+# Words between "make" and "for" that keep it going: "make straight for the exit".
+_STRAIGHT = frozenset({"straight", "directly", "right", "quickly", "swiftly", "immediately"})
+
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
 # Words that keep a word inside a place phrase available as a verb ("wait in the waiting room").
@@ -478,8 +481,9 @@ class Clauses(ClauseCues):
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):
                 if v in ("make", "get") and not (i + 1 < s.n and s.low[i + 1] in ("their", "its", "his", "her",
-                                                                                  "way", "to", "for")):
-                    continue
+                                                                                  "way", "to", "for")) and \
+                        not (i + 2 < s.n and s.low[i + 1] in _STRAIGHT and s.low[i + 2] in ("for", "to")):
+                    continue  # "make for the exit", "make straight for the toys": going
                 candidates.append((i, kind, v))
         if any(s.w[i].pos == "VERB" and s.w[i].lemma not in ("be", "have") and i not in used for i in own):
             c.has_action = True  # "a nurse pushes a cart to ward b": a verb of its own, even one the lexicon lacks
