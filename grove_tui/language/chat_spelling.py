@@ -22,6 +22,10 @@ from grove_tui.language.tokens import lemma, verb_lemma
 _SHORT = {"frm": "from", "b4": "before", "bc": "because", "bcos": "because", "cos": "because", "coz": "because",
           "bcz": "because", "tho": "though", "thx": "", "tmrw": "tomorrow", "w": "with", "til": "until", "nxt": "next", "outta": "out of", "gonna": "going to", "wanna": "want to",
           "in2": "into", "on2": "onto"}
+# Chat short forms of the words places are named by ("the boardroom tbl", "mtg rm 2", "the toy dept").
+_SHORT.update({"tbl": "table", "tbls": "tables", "rm": "room", "rms": "rooms", "mtg": "meeting",
+               "dept": "department", "depts": "departments", "bldg": "building", "flr": "floor",
+               "recep": "reception"})
 _SHORT_WORD = re.compile(r"(?<![\w'/@&-])(" + "|".join(sorted(_SHORT, key=len, reverse=True)) + r")(?![\w'/@&-])",
                          re.IGNORECASE)
 # "bc" is also a date ("300 BC") and "w" a compass point ("W exit"): only in lower case, after a word.

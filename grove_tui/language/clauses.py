@@ -35,6 +35,7 @@ from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import clause_reaction
 from grove_tui.language.numbered_names import numbered_kind, numbered_name
+from grove_tui.language.moved_things import moved_along
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -373,6 +374,8 @@ class Clauses(ClauseCues):
         nxt = s.low[obj] if obj < s.n else ""
         if v in lx.LEADING_VERBS and any(s.lemma(x) in lx.CARRYING_THINGS for x in range(obj, s.phrase_end(obj))):
             return False  # "pushes a wheelchair", "wheels his father's bed": what someone is taken in, no place
+        if moved_along(s, v, obj):
+            return False  # "wheels a roll cage from ... to ...": the thing moved, no place of theirs
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
                 and v not in lx.ROBOT_VERBS and v not in lx.HOLDING_VERBS  # "carrying coffees": no place
                 and (nxt in lx.DETERMINERS or self.places.names_place(obj)) and not s.hyphen_inside(i - 1)

@@ -23,7 +23,7 @@ from grove_tui.language.tokens import lemma
 _EMPTY = frozenset("where you people they we someone somebody one who that which whom the a an their your his her "
                    "its our my in on at to of for and or is are was were be been being get gets got gotten getting "
                    "have has had having do does did done can could will would some there all any just usually "
-                   "normally often always then them it with by from up".split())
+                   "normally often always then them it with by from up out off away down over".split())  # particles: "sorted out"
 _PEOPLE = frozenset({"staff", "everyone", "everybody", "folk", "folks", "visitor", "guest"})
 
 
@@ -68,6 +68,11 @@ def _says_all(stems: list[str], description: str) -> bool:
     return bool(stems) and all(said_in(s, said) for s in stems)
 
 
+def _says_literally(stems: list[str], description: str) -> bool:
+    said = {_stem(w) for w in re.findall(r"[a-z]+", description.lower())}
+    return bool(stems) and all(s in said for s in stems)
+
+
 def zone_saying(index: PlaceIndex, activity: str, best: MeaningMatch | None) -> MeaningMatch | None:
     """The room whose description (or a fixture's in it) says every word of the activity, when it is the
     only room that does and `best` (the place read by meaning, if any) is not in it or is a fixture whose
@@ -76,6 +81,9 @@ def zone_saying(index: PlaceIndex, activity: str, best: MeaningMatch | None) -> 
     if not stems:
         return None
     zones = {e.zone for e in index.entries if e.kind != "door" and e.description and _says_all(stems, e.description)}
+    if len(zones) > 1:  # several only by a family's words ("post" for "sorted"): the one saying them itself
+        zones = {e.zone for e in index.entries if e.zone in zones and e.kind != "door" and e.description and
+                 _says_literally(stems, e.description)}
     if len(zones) != 1:
         return None
     (zone,) = zones

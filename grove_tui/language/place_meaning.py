@@ -13,6 +13,7 @@ from grove_tui.language.activity_rooms import room_saying_it
 from grove_tui.language.bare_alias_kinds import other_kind_of_room
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
+from grove_tui.language.from_where import from_where_ends
 from grove_tui.language.done_there import gerund_room as gerund_room, room_doing_it, zone_saying
 from grove_tui.language.related_words import to_another_where
 from grove_tui.language.done_to_people import done_to_people
@@ -304,7 +305,7 @@ class PlaceMeaning:
         while end < s.n and end < first + 10 and (not s.is_punct(end) or s.hyphen_inside(end)) and \
                 not (s.low[end] in lx.CLAUSE_STARTERS and end > first and not self._joins_inside(first, end)
                      and not particle_after(s, end)) \
-                and not to_another_where(s.low, end):  # "from where they rent skis to where ...": two places
+                and not to_another_where(s.low, end) and not from_where_ends(s.low, first, end):  # "from where they rent skis to where ...": two places
             end += 1
         if end < first + 2:
             return None  # "the room where": no clause to read
