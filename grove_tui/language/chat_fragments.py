@@ -27,11 +27,13 @@ _LISTED = re.compile(_ITEM_START + r"(" + _NUMBER + r"\s+([a-z]+)\s+and\s+(?:the
 # "-ing" words of places and things, not of what people do ("the waiting room", "meeting room 2").
 _ROOM_AFTER = re.compile(r"[a-z]+ing\s+(?:rooms?|areas?|halls?|lots?|bays?|spaces?|lounges?|spots?|zones?|"
                          r"tables?|stations?|machines?|desks?|counters?|queues?|lines?)\b", re.IGNORECASE)
-_NOT_VERBS = frozenset("building buildings ceiling evening morning something nothing anything everything during "
+# Words in "-ing" that are no verb ("building", "evening"), for every chat pass that looks for one.
+ING_NOUNS = frozenset("building buildings ceiling evening morning something nothing anything everything during "
                        "thing king ring sing spring string wing bring".split())
 
 
-def _person(word: str) -> bool:
+def person_word(word: str) -> bool:
+    """Whether a chat word names a person ("porter", "porters")."""
     word = word.lower()
     return word in lx.PERSON_NOUNS or lemma(word) in lx.PERSON_NOUNS
 
@@ -41,15 +43,15 @@ def chat_fragments(text: str) -> str:
     def bare(m: re.Match[str]) -> str:
         rest = text[m.end():]
         word = rest.split()[0].lower() if rest.split() else ""
-        if word in _NOT_VERBS or _ROOM_AFTER.match(rest):
+        if word in ING_NOUNS or _ROOM_AFTER.match(rest):
             return m.group(0)
         one = m.group(2).lower() in ("1", "one")
         return f"{m.group(1)}{m.group(2)} {'person' if one else 'people'} "
 
     def listed(m: re.Match[str]) -> str:
         rest = text[m.end():]
-        if m.group(5).lower() in _NOT_VERBS or _ROOM_AFTER.match(rest) or not _person(m.group(3)) \
-                or not _person(m.group(4)) or m.group(3).lower() == lemma(m.group(3).lower()):
+        if m.group(5).lower() in ING_NOUNS or _ROOM_AFTER.match(rest) or not person_word(m.group(3)) \
+                or not person_word(m.group(4)) or m.group(3).lower() == lemma(m.group(3).lower()):
             return m.group(0)
         return f"{m.group(1)}{m.group(2)} are "
 

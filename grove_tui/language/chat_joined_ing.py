@@ -10,19 +10,11 @@ from __future__ import annotations
 
 import re
 
-from grove_tui.language import lexicon as lx
-from grove_tui.language.tokens import lemma
+from grove_tui.language.chat_fragments import ING_NOUNS, person_word
 
 _JOINED = re.compile(r"(\s+and\s+|,\s*|;\s*)(a|an|one|1|the)\s+([a-z]+)\s+(?=([a-z]{3,}ing)\s+"
                      r"(?:at|by|near|in|on|outside|inside|beside|behind|around|next|under|along|@)\b)", re.IGNORECASE)
 _EARLIER_ING = re.compile(r"\b[a-z]{3,}ing\b", re.IGNORECASE)
-_NOT_VERBS = frozenset("building ceiling evening morning something nothing anything everything during thing "
-                       "king ring sing spring string wing bring".split())
-
-
-def _person(word: str) -> bool:
-    word = word.lower()
-    return word in lx.PERSON_NOUNS or lemma(word) in lx.PERSON_NOUNS
 
 
 def with_joined_ing_items(text: str) -> str:
@@ -30,8 +22,8 @@ def with_joined_ing_items(text: str) -> str:
     def joined(m: re.Match[str]) -> str:
         before = text[:m.start()]
         sentence = re.split(r"[.!?]\s", before)[-1]
-        if m.group(4).lower() in _NOT_VERBS or not _person(m.group(3)) or \
-                not any(w.group(0).lower() not in _NOT_VERBS for w in _EARLIER_ING.finditer(sentence)):
+        if m.group(4).lower() in ING_NOUNS or not person_word(m.group(3)) or \
+                not any(w.group(0).lower() not in ING_NOUNS for w in _EARLIER_ING.finditer(sentence)):
             return m.group(0)
         return f"{m.group(1)}{m.group(2)} {m.group(3)} is "
 
