@@ -7,13 +7,11 @@ coach", "ahead of their teacher" say who goes first)."""
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.event_names import GATHERING_HEADS
-from grove_tui.language.events import ROUTINE_EVENTS
+from grove_tui.language.event_names import EVENT_WORDS
 from grove_tui.language.sentence import Sentence
 
 # Less the words that also name people ("ahead of the class", "ahead of the tour party": who goes first).
-_EVENTS = (ROUTINE_EVENTS | GATHERING_HEADS | frozenset(
-    "kickoff kick-off race screening premiere launch auction opening talk briefing show".split())) - lx.PERSON_NOUNS
+_EVENTS = EVENT_WORDS - lx.PERSON_NOUNS
 
 
 def ahead_of_event(s: Sentence, i: int) -> int | None:

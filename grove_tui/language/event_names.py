@@ -23,6 +23,14 @@ GATHERING_HEADS = frozenset("""dance disco ball ceilidh barn-dance tea-dance mor
     service mass evensong lecture seminar workshop session class lesson meeting meetup assembly ceremony
     celebration reunion gala festival show-and-tell playgroup storytime story-time bash shindig
     beano do""".split())
+# Words for an event, for every pass that asks whether a phrase names one ("midway through the lecture",
+# "ahead of the 3 pm show"): the gathering words and the shows, games, meals and services people attend.
+EVENT_WORDS = GATHERING_HEADS | frozenset("""lecture concert gig match game show film movie screening performance
+    play talk speech service tour party class lesson meeting session shift set race round practice rehearsal
+    seminar tutorial briefing ceremony wedding disco visit workout drill interval opera ballet musical recital
+    sermon mass auction matinee premiere finale encore overture act scene quiz exam meal dinner lunch banquet
+    recording broadcast episode taping keynote presentation kickoff kick-off launch opening assembly
+    workshop""".split())
 # Words that, before a gathering word, make it a place's own name ("the night shelter", "the dance
 # studio" is headed by "studio"; "the service desk" by "desk"), never said of an event.
 _NOT_AFTER = frozenset("shift".split())

@@ -11,7 +11,7 @@
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.event_names import GATHERING_HEADS
+from grove_tui.language.event_names import EVENT_WORDS
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma
 
@@ -24,13 +24,6 @@ _BEFORE_BODY = frozenset("his her their my your its our each one both either the
                          "spare own".split())
 # A break or a span of an event said with "at" ("at the interval", "at half-time").
 _AT_SPANS = frozenset("interval intermission half-time halftime break interlude changeover".split())
-# Events something happens part-way through ("midway through the lecture"), besides the gathering words.
-_EVENTS = frozenset("lecture concert gig match game show film movie screening performance play talk speech "
-                    "service tour party class lesson meeting session shift set race round practice rehearsal "
-                    "seminar tutorial briefing ceremony wedding disco visit workout drill interval "
-                    "opera ballet musical recital sermon mass auction matinee premiere finale encore overture "
-                    "act scene quiz exam meal dinner lunch banquet recording broadcast episode taping "
-                    "keynote presentation".split()) | GATHERING_HEADS
 _PART_WAY = frozenset("midway halfway partway part-way half-way mid-way".split())
 
 
@@ -47,7 +40,7 @@ def held_or_span(s: Sentence, k: int, prep: str, at: int) -> bool:
     if prep == "through" and at >= 1 and s.low[at - 1] in _PART_WAY:
         # "Halfway through the matinee smoke drifts ...": with no comma the time runs into the subject,
         # so an event anywhere in the phrase ends the time
-        return any(lemma(s.low[x]) in _EVENTS or s.low[x] in _EVENTS for x in range(k, head + 1))
+        return any(lemma(s.low[x]) in EVENT_WORDS or s.low[x] in EVENT_WORDS for x in range(k, head + 1))
     return False
 
 
