@@ -189,6 +189,9 @@ class Clauses(ClauseCues):
             if place is not None and name in lx.VIA_PREPOSITIONS | {"by"} and i > 0 and s.low[i - 1] == "in" and \
                     place.match is not None and place.match.kind == "door":
                 place = replace(place, prep="from")  # "pour in through the main doors": in from there
+            elif place is not None and name == "by" and i > 0 and s.low[i - 1] == "out" and \
+                    place.match is not None and place.match.kind == "door":
+                place = replace(place, prep="out")  # "get out by the side door": out of the scene there
             if place is not None:
                 # "check in counter a": the "in" inside a name is not a new phrase
                 return self._add_place(scan, place, i)
