@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.another_count import more_people, the_other_count
-from grove_tui.language.apposed_counts import apposed_collective, class_named, collective_is_a_verb
+from grove_tui.language.apposed_counts import apposed_collective, collective_is_a_verb
 from grove_tui.language.occasion_headings import without_heading
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
@@ -23,6 +23,7 @@ from grove_tui.language.couple_words import bare_couple
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
+from grove_tui.language.family_surnames import members_said, surname_family
 from grove_tui.language.mention import Mention
 from grove_tui.language.one_name import one_name
 from grove_tui.language.model import Count
@@ -102,7 +103,7 @@ class Mentions:
                 # "All the diners in the canteen, some thirty of them, leave": how many the group before is
                 count = m.count
                 assert count is not None
-                members = members_named(found[-1])  # "The school party, 25 children, ...": who the party is
+                members = members_named(found[-1]) or surname_family(s, found[-1])  # "The school party, 25 children, ...": who the party is
                 found[-1].count, found[-1].whole_zone, found[-1].apposition = count, False, (m.first, m.last)
                 if found[-1].label == "person" or members:
                     found[-1].label = m.label
@@ -183,7 +184,7 @@ class Mentions:
             return False
         if m.relation not in (None, f"subset_of:{index}") or \
                 m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person") \
-                and not members_named(before) and not class_named(s, before):
+                and not members_named(before) and not members_said(s, before):
             return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full
