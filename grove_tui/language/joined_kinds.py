@@ -3,7 +3,10 @@
 sentence says it ("The choir, twenty-two boys and girls in all, processes ..."), not the count's
 kind and a second vague few of the other. Written before parsing as one plural that covers both
 ("twenty-two children", "ten people"). Two kinds each with a count of their own ("two nurses and three
-doctors") or the second with a determiner ("ten kids and their parents") are two groups, untouched."""
+doctors") or the second with a determiner ("ten kids and their parents") are two groups, untouched.
+A quantifier that is not a number ("a handful of mums and dads", "a few lads and lasses", "several
+nurses and porters") counts both the same way; and two kinds that pair off as the halves of one
+people ("mums and dads", "boys and girls", "men and women") are one group with no count at all."""
 
 from __future__ import annotations
 
@@ -51,6 +54,27 @@ def _describes(word: str) -> bool:
         low not in ("and", "or", "of", "plus")
 
 
+_QUANTIFIER = r"(?:a\s+(?:handful|few|couple|group|bunch|crowd|gaggle|load|number|dozen\s+or\s+so)(?:\s+of)?|" \
+    r"some|several|many|lots\s+of|loads\s+of|dozens\s+of|hundreds\s+of|plenty\s+of)"
+_QUANTIFIED = re.compile(r"\b(" + _QUANTIFIER + r")\s+()([a-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])",
+                         re.IGNORECASE)
+# Two kinds that are the halves of one people, said together as one ("mums and dads"): one group.
+_HALVES = frozenset(frozenset(pair.split("/")) for pair in (
+    "mum/dad mom/dad mother/father man/woman boy/girl lad/lass lad/girl guy/girl husband/wife brother/sister "
+    "son/daughter grandma/grandpa grandmother/grandfather granny/grandad nan/grandad aunt/uncle niece/nephew "
+    "grandson/granddaughter").split())
+_PAIRED = re.compile(r"(?<![\w'’-])(?<!\band\s)([A-Za-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])")
+
+
+def _paired(m: re.Match[str]) -> str:
+    first, second = m.group(1), m.group(2)
+    if frozenset((lemma(first.lower()), lemma(second.lower()))) not in _HALVES or \
+            not (_plural_person(first) and _plural_person(second)):
+        return m.group(0)
+    both = "children" if {lemma(first.lower()), lemma(second.lower())} <= _CHILDREN else "people"
+    return both.capitalize() if first[0].isupper() else both
+
+
 def with_joined_kinds(text: str) -> str:
     """The text with a count of two joined kinds of people written as one plural (module doc)."""
-    return _JOINED.sub(_joined, text)
+    return _PAIRED.sub(_paired, _QUANTIFIED.sub(_joined, _JOINED.sub(_joined, text)))
