@@ -232,8 +232,8 @@ class Mentions:
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or s.is_punct(p - 1) or s.low[p - 1] in
                                                    lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
             return True
-        if prev == "by" and s.w[p].dep == "agent":
-            return True  # "the balcony is used by a smoker": the passive's doer
+        if prev == "by" and s.w[p].dep == "agent" and verb_lemma(s.low[s.w[p].head]) != s.low[s.w[p].head]:
+            return True  # "the balcony is used by a smoker": the passive's doer (not "hover by the concierge")
         if verb_lemma(prev) == "have" and self._place_before(p):
             return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
         if prev == "of" and self._event_before(p):
