@@ -10,19 +10,19 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.little_ones import _AFTER, _OWNER, _bare
+from grove_tui.language.little_ones import _AFTER, _ORDER, _OWNER, _bare
 
 _WORD = r"(?:[a-z][a-z-]+)"
-_MOST = re.compile(r"\b(" + _OWNER + r"((?:\s+" + _WORD + r"){1,2})\s+(?:youngest|eldest|oldest))\b"
+_MOST = re.compile(r"\b(" + _OWNER + r"((?:\s+" + _WORD + r"){1,2})\s+" + _ORDER + r")\b"
                    r"(?!\s+(?:one|ones|'un|'uns)\b)(?=\s*([^\s]+)|\s*$)")
-_ONES = re.compile(r"\b(" + _OWNER + r"((?:\s+" + _WORD + r"){1,2})\s+(?:little|young|wee|tiny|small|baby|youngest"
-                   r"|eldest|oldest|middle))\s+(one|ones|'un|'uns)\b")
+_ONES = re.compile(r"\b(" + _OWNER + r"((?:\s+" + _WORD + r"){1,2})\s+(?:little|young|wee|tiny|small|baby|middle|"
+                   + _ORDER + r"))\s+(one|ones|'un|'uns)\b")
 
 
 def _describes(words: str) -> bool:
     """Whether the words between the owner and "youngest" only describe the child: no person, link or verb."""
     return all(w not in _AFTER and w not in lx.PERSON_NOUNS and w.rstrip("s") not in lx.PERSON_NOUNS
-               and w not in ("youngest", "eldest", "oldest", "one", "a", "an", "the")
+               and w not in ("youngest", "eldest", "oldest", "littlest", "smallest", "one", "a", "an", "the")
                for w in words.lower().split())
 
 

@@ -11,10 +11,12 @@ import re
 
 from grove_tui.language import lexicon as lx
 
-_OWNER = r"(?:the|her|his|their|our|my|your|[A-Z][a-z]+(?:'s|s'|’s|s’))"
-_ONES = re.compile(r"\b(" + _OWNER + r"\s+(?:little|young|wee|tiny|small|baby|youngest|eldest|oldest|middle))"
+_OWNER = r"(?:[Tt]he|[Hh]er|[Hh]is|[Tt]heir|[Oo]ur|[Mm]y|[Yy]our|[A-Z][a-z]+(?:'s|s'|’s|s’))"
+# "our youngest", "my eldest", "our littlest": the one child of a family by its place among them
+_ORDER = r"(?:youngest|eldest|oldest|littlest|smallest)"
+_ONES = re.compile(r"\b(" + _OWNER + r"\s+(?:little|young|wee|tiny|small|baby|middle|" + _ORDER + r"))"
                    r"\s+(one|ones|'un|'uns)\b")
-_MOST = re.compile(r"\b(" + _OWNER + r"\s+(?:youngest|eldest|oldest))\b(?!\s+(?:one|ones|'un|'uns)\b)"
+_MOST = re.compile(r"\b(" + _OWNER + r"\s+" + _ORDER + r")\b(?!\s+(?:one|ones|'un|'uns)\b)"
                    r"(?=\s*([^\s]+)|\s*$)")
 # A family by its name in the plural, then its youngest or eldest ("the Hendersons' youngest"): the child
 # is said as "the youngest Henderson child", a phrase the reader finds with no verb right after it.
