@@ -11,7 +11,7 @@ import re
 
 from grove_tui.language import lexicon as lx
 
-_OWNER = r"(?:[Tt]he|[Hh]er|[Hh]is|[Tt]heir|[Oo]ur|[Mm]y|[Yy]our|[A-Z][a-z]+(?:'s|s'|’s|s’))"
+_OWNER = r"(?:the|[Hh]er|[Hh]is|[Tt]heir|[Oo]ur|[Mm]y|[Yy]our|[A-Z][a-z]+(?:'s|s'|’s|s’))"
 # "our youngest", "my eldest", "our littlest": the one child of a family by its place among them
 _ORDER = r"(?:youngest|eldest|oldest|littlest|smallest)"
 _ONES = re.compile(r"\b(" + _OWNER + r"\s+(?:little|young|wee|tiny|small|baby|middle|" + _ORDER + r"))"

@@ -29,6 +29,7 @@ from grove_tui.language.one_name import one_name
 from grove_tui.language.model import Count
 from grove_tui.language.objects import PeopleObjects, nobody_after_subordinator
 from grove_tui.language.only_people import only_people_before, the_only_mention
+from grove_tui.language.passive_doers import participle
 from grove_tui.language.partitives import Partitives, other_half, verb_of_a_bare_count, whole_of_a_bare_part
 from grove_tui.language.people import People
 from grove_tui.language.people_phrases import companions, coordinated_person, whole_zone_pronoun
@@ -232,7 +233,7 @@ class Mentions:
         if verb_lemma(prev) in lx.SCENE_VERBS and (p == 0 or s.is_punct(p - 1) or s.low[p - 1] in
                                                    lx.CLAUSE_STARTERS | {"please", "to", "let's", "lets"}):
             return True
-        if prev == "by" and s.w[p].dep == "agent" and verb_lemma(s.low[s.w[p].head]) != s.low[s.w[p].head]:
+        if prev == "by" and s.w[p].dep == "agent" and participle(s, s.w[p].head):
             return True  # "the balcony is used by a smoker": the passive's doer (not "hover by the concierge")
         if verb_lemma(prev) == "have" and self._place_before(p):
             return True  # "the pharmacy has a queue of eleven people", "ward B has two visitors"
