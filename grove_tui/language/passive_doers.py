@@ -10,6 +10,8 @@ from grove_tui.language.tokens import verb_lemma
 
 
 def participle(s: Sentence, i: int) -> bool:
-    """Whether word i is written as a participle: inflected ("crossed", "seen", "led", "held")."""
+    """Whether word i is written as a participle ("crossed", "seen", "led", "held") or a passive's
+    auxiliary hangs on it ("is being set up by two assistants")."""
     low = s.low[i]
-    return verb_lemma(low) != low or s.w[i].lemma != low or low.endswith(("ed", "en", "wn", "ld"))
+    return verb_lemma(low) != low or s.w[i].lemma != low or low.endswith(("ed", "en", "wn", "ld")) or \
+        any(w.dep == "auxpass" and w.head == i for w in s.w)

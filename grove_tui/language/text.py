@@ -59,7 +59,7 @@ _NUMBER_WORD = r"(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundre
 # "30-ish visitors", "20ish ppl": about so many
 _ISH = re.compile(r"\b(\d+|" + _NUMBER_WORD + r"|(?:one|two|three|four|five|six|seven|eight|nine)(?=-))\s*-?\s*ish\b",
                   re.IGNORECASE)
-# "a dozen-ish kids", "half a dozen-ish": about a dozen (the article moves after "about")
+# "a dozen-ish kids", "half a dozen-ish": a dozen or so
 _DOZEN_ISH = re.compile(r"\b(?:(a|half\s+a)\s+)?dozen\s*-?\s*ish\b", re.IGNORECASE)
 
 # "swimmers x10", "nurses (x3)", "shoppers ×20": so many of them; "10x shoppers", "x3 porters": so many
@@ -108,7 +108,7 @@ def normalise(text: str) -> str:
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
-    kept = _DOZEN_ISH.sub(lambda m: f"about {(m.group(1) or 'a').lower()} dozen", kept)
+    kept = _DOZEN_ISH.sub(lambda m: f"{m.group(1) or 'a'} dozen or so", kept)
     kept = _ISH.sub(lambda m: f"about {m.group(1).lower()}", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _FOR_LAST.sub(_for_the_last, kept)
