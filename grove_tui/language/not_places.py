@@ -18,6 +18,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.consumed_things import consumed_thing
+from grove_tui.language.courses_taken import a_course_taken
 from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.held_and_spans import held_or_span
@@ -50,7 +51,7 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         return True  # "stock up on IPA", "roused from a snooze": food, drink, a nap (round 41)
     if cause_thing(s, k, prep, at) or origin_of_held(s, k, prep, at):
         return True  # "smell of burning from the toaster", "clutching mugs from the seconds shelf"
-    if an_outing(s, k, prep) or the_weather(s, k, prep):
+    if an_outing(s, k, prep) or the_weather(s, k, prep) or a_course_taken(s, k, prep):
         return True  # "on a geography trip", "against the cold": an outing, the weather (round 45)
     if time_or_manner(s, k, prep):
         return True  # "on a wet Tuesday", "on foot", "at half past nine"

@@ -31,6 +31,7 @@ from grove_tui.language.place_head_clauses import fixture_named_by_head, head_de
 from grove_tui.language.place_other_kinds import kind_agrees
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
+from grove_tui.language.user_kinds import USER_KINDS
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.service_purposes import served_point, service_done
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -107,7 +108,8 @@ class PlaceMeaning:
         return tuple(s.low[x] if s.w[x].tag == "VBG" else s.lemma(x) for x in at[:-1]
                      if (s.w[x].pos in ("NOUN", "PROPN", "X") or (gerunds and s.w[x].tag == "VBG")  # "vending"
                          or (gerunds and noun_like_adjective(s, x)))  # "the pet shop": tagged an adjective
-                     and s.lemma(x) not in index.building_words and not self.people.is_person_noun(x))
+                     and s.lemma(x) not in index.building_words and (
+                         not self.people.is_person_noun(x) or s.lemma(x) in USER_KINDS))  # "the staff entrance"
 
     def modifiers_agree(self, modifiers: Sequence[str], name: str, phrase: Sequence[str] = (), head: str = "") -> bool:
         """Whether the words that say what kind of place a phrase means fit the place `name`: each is
@@ -128,6 +130,8 @@ class PlaceMeaning:
             t not in entry.tokens and _synonym_of(t, head)))]  # "vending" is a synonym of the head "machine" only
         if not strange or entry is None:
             return True
+        if any(t in USER_KINDS and t not in entry.tag_tokens for t in strange):
+            return False  # "the staff entrance" of a mall with no entrance for staff (user_kinds.py)
         said = " ".join(strange)
         near = index.by_meaning(said, among={entry.name, entry.zone})
         if not near or index.near_building(said) >= MODIFIER_OF_BUILDING:  # "the train platform" of a station

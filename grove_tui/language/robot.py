@@ -28,6 +28,7 @@ from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
 from grove_tui.language.robot_motion import goes_after_robot
 from grove_tui.language.robot_out import out_exit
+from grove_tui.language.robot_passed_by import hands_back
 from grove_tui.language.robot_purpose import fronted_purpose
 from grove_tui.language.robot_owners import owner_word
 from grove_tui.language.robot_rounds import to_and_fro
@@ -83,7 +84,7 @@ class RobotClauses:
                 continue
             first, verb, command = found
             first = fronted_purpose(s, first, taken)  # "To reach the toy store, the robot must ..."
-            end = self._end(verb if verb is not None else i + 1, starts)
+            end = self._end(verb if verb is not None else i + 1, starts, first)
             second = robot_sequel(s, verb, end) if verb is not None else None
             if second is not None:
                 joined, sequel = second
@@ -208,7 +209,7 @@ class RobotClauses:
             return True
         return s.low[j - 1] in lx.ROBOT_WORDS and j + 1 < s.n and s.preposition(j + 1) is not None
 
-    def _end(self, k: int, starts: set[int]) -> int:
+    def _end(self, k: int, starts: set[int], first: int = -1) -> int:
         """Where a robot clause from k ends: the next group's mention (less the words joining it),
         a new subject after a clause word ("... as a family buys tickets"), a semicolon or colon, or
         the end of the sentence."""
@@ -216,7 +217,7 @@ class RobotClauses:
         sentence = s.w[k].sentence if k < s.n else -1
         j = k
         while j < s.n and s.w[j].sentence == sentence and s.low[j] not in (";", ":"):
-            if j in starts:
+            if j in starts or (j > k and hands_back(s, first, j)):  # "... rolls past and hops out of its way"
                 break
             if s.low[j] in lx.CLAUSE_STARTERS - {"and", "then", "with"} and j > k and self._new_subject_after(j + 1):
                 break

@@ -79,12 +79,22 @@ def idiom_reaction(s: Sentence, own: Sequence[int]) -> str | None:
     """The reaction an idiom of the clause names ("jumps out of her skin", "hem the robot in")."""
     ownset = set(own)
     for i in own:
-        if s.after_determiner(i):
-            continue
+        if s.after_determiner(i) or _named_after_preposition(s, i):
+            continue  # "a junior at the practice wall jumps in ...": a wall, not walling anyone in
         for idiom, interaction in IDIOMS.items():
             if _match(s, i, idiom, ownset):
                 return interaction
     return sticking_reaction(s, own)  # "sticks to the robot like glue", "to keep the robot off the ice"
+
+
+def _named_after_preposition(s: Sentence, i: int) -> bool:
+    """Whether the word at i ends a noun phrase after a preposition ("at the practice wall", "by the
+    garden wall"): a thing, never the verb of an idiom."""
+    k = i - 1
+    while k > 0 and i - k <= 3 and s.w[k].pos in ("NOUN", "PROPN", "ADJ") and not s.after_determiner(k + 1):
+        k -= 1
+    return k >= 1 and k < i and s.low[k] in ("the", "a", "an") and s.w[k - 1].pos == "ADP" and \
+        s.w[i].pos in ("NOUN", "PROPN")
 
 
 def timed_by_robot(s: Sentence, own: Sequence[int], robot_after: int | None) -> bool:

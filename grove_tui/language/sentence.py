@@ -19,6 +19,7 @@ from functools import cached_property
 from grove_tui.language import lexicon as lx
 from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.handled_fixtures import handled_at
+from grove_tui.language.hyphened_nouns import hyphened_particle_noun
 from grove_tui.language.parser import Word
 from grove_tui.language.particle_names import known_compound
 from grove_tui.language.places import PlaceIndex
@@ -200,6 +201,8 @@ class Sentence:
             return False  # "to lost property": a place's name
         if self.index.knows(lemma(w)) and self.w[k].tag != "VB":
             return False
+        if hyphened_particle_noun(self, k):
+            return False  # "walks to check-in": a place, not a purpose
         if k + 1 < self.n and IDENTIFIER.fullmatch(self.low[k + 1]) and self.index.knows(lemma(w)) and not (
                 self.low[k + 1] == "a" and k + 2 < self.n and self.w[k + 2].pos in ("NOUN", "ADJ")):
             return False  # "to gate C4": a place word with its number, though the parser calls "gate" a verb
