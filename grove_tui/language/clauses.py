@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clause_cues import ClauseCues
+from grove_tui.language.coming_in import lets_self_in, settled_after_coming
 from grove_tui.language.counts import duration_at
 from grove_tui.language.stay_particles import after_a_stay
 from grove_tui.language.manner import pace, together
@@ -469,6 +470,9 @@ class Clauses(ClauseCues):
         for i in own:
             if i in used and s.low[i] not in _VERBS_INSIDE_NAMES:
                 continue
+            if lets_self_in(s, i):
+                candidates.append((i, "walk", "come"))  # "let themselves in": coming in
+                continue
             phrasal = phrasal_intent(s, i)  # "line up", "do laps", "stretches her legs"
             if phrasal is not None:
                 candidates.append((i, phrasal[1], phrasal[0][0]))
@@ -506,6 +510,8 @@ class Clauses(ClauseCues):
                               for p in c.places if p.match is not None)  # "stroll ... to reach gate A2" too
         if (came := chore_after_coming(candidates)) is not None:  # "come in ... and mop the corridor"
             c.places = [replace(p, prep="obj:dest") if p.prep == "obj:at" and p.index > came[0] else p for p in c.places]
+            return "walk", came[2], came[0]
+        if (came := settled_after_coming(s, candidates)) is not None:  # "come in ... and sit down at the desks"
             return "walk", came[2], came[0]
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:

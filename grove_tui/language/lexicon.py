@@ -20,6 +20,7 @@ never more than WHOLE_ZONE_CAP people.
 from __future__ import annotations
 
 from grove_tui.language.robot_feeling_words import DISTANCE_NOUNS, MORE_FEELINGS, WAKE_PHRASES, WATCHING_PHRASES
+from grove_tui.language.manner_walks import MANNER_WALKS
 from grove_tui.language.role_nouns import ROLE_NOUNS
 
 # ---- numbers --------------------------------------------------------------------------------
@@ -286,17 +287,16 @@ for _intent, _verbs in {
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter "
                 "bicker squabble quarrel wrangle murmur whisper mutter confer",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy clean tour rummage prowl",
+              "mop sweep vacuum hoover scrub tidy clean tour rummage prowl dawdle",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
             "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
-            "lug haul traverse quit retire totter waddle trot",
+            "lug haul traverse quit retire totter waddle trot " + MANNER_WALKS,
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)
-INTENT_VERBS.setdefault("dawdle", "wander")  # idling along with no goal: "dawdle round the aquatics section"
 PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("line", "up"): "queue", ("wait", "in", "line"): "queue", ("stand", "in", "line"): "queue",
     ("wait", "in", "a", "line"): "queue", ("wait", "their", "turn"): "queue", ("wait", "for", "their", "turn"): "queue",

@@ -15,6 +15,7 @@ from grove_tui.language.grooming_words import plain_grooming
 from grove_tui.language.imaging_words import plain_imaging
 from grove_tui.language.model import UNSURE_BELOW
 from grove_tui.language.lexicon import PLACE_MODIFIERS
+from grove_tui.language.names_say_it import named_by_its_words
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import lemma, phrase_lemmas, verb_lemma
 
@@ -93,6 +94,8 @@ def rank_described(index: PlaceIndex, activity: str, kinds: Sequence[str] | None
     zone is as near as its nearest name or description, or one of its fixtures'; the nearest zone is
     taken when near enough and clearly ahead of the next; the fixture when it is the nearest of its
     zone's and the head allows fixtures (`kinds`: the places the phrase's head can be, all when None)."""
+    if kinds is None and (named := named_by_its_words(index, activity)) is not None:
+        return named  # "where the returns get processed": the "returns room", the "processing room"
     stop = vehicle_stop(activity)
     stops = [e.name for e in index.entries
              if stop is not None and e.kind != "door" and set(stop.split()) <= set(e.phrases[0])]

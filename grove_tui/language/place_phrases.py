@@ -33,6 +33,7 @@ from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.worked_states import past_state
 from grove_tui.language.worn_fixtures import worn_fixture
 from grove_tui.language.place_possessed import owned_places
+from grove_tui.language.its_places import its_place
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.not_places import no_place_said
 from grove_tui.language.stage_parts import stage_part
@@ -172,6 +173,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
         owned = handled_door_room(s, prep, at, lemmas, owned[0] if owned else match, lambda ls: owned_by_name(
             s, at, k, ls) or (self._owned(ls, None, owner) if owner else None)) or owned  # "shuts her office door"
+        if owned is None and possessive and low[k] == "its":  # "platform one ... through its emergency exit": that platform's
+            owned = its_place(s.index, lemmas, [p.match.zone for p in self.history if p.match and p.match.kind == "zone"])
         if owned is not None:
             match = owned[0]
         if match is None and possessive:

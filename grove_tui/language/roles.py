@@ -14,6 +14,7 @@ from grove_tui.language.exercise_machines import stays_on_a_machine
 from grove_tui.language.later_stops import goes_on_after
 from grove_tui.language.place_narrowing import guessed_over_named
 from grove_tui.language.place_phrases import Place
+from grove_tui.language.numbered_things import named_by_number
 from grove_tui.language.places import PlaceIndex, PlaceMatch
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 from grove_tui.language.worked_things import room_worked_in
@@ -60,7 +61,8 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             continue  # "a fire breaks out in radiology: ... visitors in the cafeteria": where they are is their own
         if role == "start" and p in scene_places and p.match.kind == "entity" and p.match.zone and \
                 (intent == "evacuate" or p.prep not in ("in", "inside")) and \
-                not (intent != "evacuate" and p.index in stayed_at):  # "After ten minutes in the sauna", "on the chairs"
+                not (intent != "evacuate" and p.index in stayed_at) and \
+                not (intent != "evacuate" and named_by_number(index, p.match, p.words)):  # "After ten minutes in the sauna", "on the chairs"
             name = p.match.zone  # "smoke pours from the star projector and the audience flee": from its room
             roles.read_from.setdefault(name, p)
         if role == "via" and p.prep == "obj:at" and roles.start is None and any(v > p.index for v in moves_at):
