@@ -34,7 +34,8 @@ def modifier_end(s: Sentence, k: int) -> int | None:
         return k + 2  # "his co-pilot", "her ex-husband": the tokenizer splits one noun in three
     if k + 3 < s.n and s.low[k + 1] == "-" and s.low[k].isalpha() and s.low[k + 2].isalpha() and \
             s.w[k + 3].pos in ("NOUN", "PROPN", "ADJ") and s.low[k] not in lx.ROBOT_WORDS and \
-            not (s.lemma(k + 2) in lx.IMPLIED_RANGES and s.w[k].pos not in ("NOUN", "ADP")):  # not "a first-class patient"
+            not (s.lemma(k + 2) in lx.IMPLIED_RANGES and s.w[k].pos not in ("NOUN", "ADP") and
+                 s.w[k + 3].tag != "NNS"):  # not "a first-class patient", but "four early-shift regulars"
         return k + 3  # "night-shift workers", "part-time cleaners", "off-shift porters"
     return None
 
