@@ -55,6 +55,7 @@ from grove_tui.language.coordinated_roles import coordinated_role
 from grove_tui.language.role_suffixes import collective_modifies_role, suffix_role
 from grove_tui.language.unlisted_people import (CHILD_NAME_WORDS, names_a_place_with_next, unlisted_escorted, unlisted_subject)
 from grove_tui.language.youth_units import youth_unit
+from grove_tui.language.apposed_names import apposed_name
 from grove_tui.language.weather_nouns import weather_noun
 
 _MULTIWORD_LAST = frozenset(p[-1] for p in lx.MULTIWORD_PEOPLE)
@@ -119,7 +120,7 @@ class People:
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
-        if suffix_role(s, i) or coordinated_role(s, i):
+        if suffix_role(s, i) or coordinated_role(s, i) or apposed_name(s, i):  # "our guide Priya strolls": Priya
             return True  # "both quiz contestants leave", "a greeter by the leaflet stand", "the drummer and bassist haul"
         if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
