@@ -28,6 +28,15 @@ def _noun_use(after: str, word: str) -> bool:
         verb_lemma(low) != low or low in lx.INTENT_VERBS or low in lx.HUMAN_SUBJECT_VERBS
 
 
+def _unlisted_verb(plural: str, after: str, word: str) -> bool:
+    """Whether the word after one age is its verb though no lexicon lists it ("our fourteen-year-old
+    stumbles from ..."): one person's age, a space, then a word in -s that names no person (one person,
+    then a plural noun, is not said)."""
+    low = word.lower()
+    return not plural and after == " " and len(low) > 3 and low.endswith("s") and not low.endswith("ss") and \
+        low.isalpha() and not _person_word(word)
+
+
 def _person_word(word: str) -> bool:
     """Whether a word names a person ("8-year-olds girls" is not said; "the 8-year-olds clamber" is a noun)."""
     low = word.lower()
@@ -41,7 +50,8 @@ def with_age_heads(text: str) -> str:
         years = int(number) if number.isdigit() else lx.UNITS[number]
         child = years < 18 or m.group(3).lower() not in ("year", "yr")
         plural, after, word = m.group(4), m.group(5), m.group(6)
-        if _noun_use(after, word) or (plural and "'" not in after and not _person_word(word)):
+        if _noun_use(after, word) or (plural and "'" not in after and not _person_word(word)) or \
+                _unlisted_verb(plural, after, word):
             person = ("children" if plural else "child") if child else ("people" if plural else "person")
         elif plural:
             return m.group(0)  # "the 8-year-olds' party": no person word after it
