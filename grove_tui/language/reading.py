@@ -150,6 +150,7 @@ from grove_tui.language.clause_passes import with_clause_passes
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.language.listed_chat_waits import as_listed_chat_wait
 from grove_tui.language.chat_fragments import chat_fragments
+from grove_tui.language.chat_school_years import with_school_year_pupils
 from grove_tui.language.chat_joined_ing import with_joined_ing_items
 from grove_tui.language.fronted_passives import with_fronted_passives_after
 from grove_tui.language.scattered_counts import with_scattered_counts
@@ -179,7 +180,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_passives_after(with_full_is(text))  # "Dad's snoozing on the couch": Dad is snoozing, one person; "While X is restocked by a porter, ...": "X is restocked by a porter while ..."
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(with_robot_in_tow(text))  # "With a nurse in tow, the robot ...", "Followed by a nurse, the robot ...": the nurse follows the robot
-    text = as_chat_wait(text)  # "guard @ cashpoint 2 mins then off to X": a wait, then the walk
+    text = as_chat_wait(with_school_year_pupils(text))  # "12 yr7s in X": "12 year 7 pupils in X"; "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = with_scattered_counts(with_joined_ing_items(chat_fragments(as_listed_chat_wait(text))))  # "3 from sales gossiping", "... @ desk, 10 mins then out"
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
