@@ -324,7 +324,8 @@ class People:
                 return end  # "the au pair": one person
             after = modifier_end(s, k) or of_name_end(s, k) or possessive_name_end(s, k)  # "Duke of Edinburgh hikers"
             if after is not None and after < s.n and (self.is_person_noun(after) or (
-                    after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1))):
+                    after + 1 < s.n and s.w[after].pos == "NOUN" and self.is_person_noun(after + 1)) or (
+                    counted and k > j and s.w[after].tag == "NNS" and self.person_head(after, counted=True) == after)):
                 k = after  # "night-shift workers", "year 6 pupils", "off-duty bus drivers": what kind, no count
                 continue
             if k + 2 < s.n and s.joins(k + 1) and s.w[k].pos in ("NOUN", "ADJ", "ADV") and self.is_person_noun(k + 2) \
