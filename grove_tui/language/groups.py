@@ -33,7 +33,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_crowds import met_people_words
 from grove_tui.language.roles import Roles, assign_roles
-from grove_tui.language.possessor_starts import possessor_place_kept
+from grove_tui.language.possessor_starts import kept_zone_place
 from grove_tui.language.routine_reactions import routine_beside_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
@@ -85,8 +85,8 @@ class Groups:
         clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
                                      owner=clause_owner(s, mentions, k, (a, b))) for k, (a, b) in enumerate(spans)]
         for k, m in enumerate(mentions):
-            if possessor_place_kept(m, clauses[k].places):  # "half the open office goes ...": where they are
-                clauses[k].places.insert(0, m.zone_place)
+            if (zone_place := kept_zone_place(m, clauses[k].places)) is not None:  # "half the open office goes ...": where they are
+                clauses[k].places.insert(0, zone_place)
             if m.robot_object is not None:
                 clauses[k] = self._with_robot(m, robot_clauses, excluded)
         self._share(mentions, clauses)

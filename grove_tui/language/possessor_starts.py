@@ -16,12 +16,10 @@ from grove_tui.language.place_phrases import Place
 _FROM = frozenset({"from", "out", "obj:start"})
 
 
-def possessor_place_kept(m: Mention, places: Sequence[Place]) -> bool:
-    """Whether the mention's zone is kept as a place of its clause: always for a share of a zone ("half
-    the open office"); for a possessor ("ward A's patients") only when the clause says no place they
-    come from."""
-    if m.zone_place is None:
-        return False
-    if m.whole_zone:
-        return True
-    return not any(p.prep in _FROM and p.match is not None and p.index > m.last for p in places)
+def kept_zone_place(m: Mention, places: Sequence[Place]) -> Place | None:
+    """The mention's zone, kept as a place of its clause: always for a share of a zone ("half the open
+    office"); for a possessor ("ward A's patients") only when the clause says no place they come from."""
+    if m.zone_place is None or m.whole_zone:
+        return m.zone_place
+    said_from = any(p.prep in _FROM and p.match is not None and p.index > m.last for p in places)
+    return None if said_from else m.zone_place
