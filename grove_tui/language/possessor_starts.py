@@ -1,8 +1,8 @@
 """A zone people are named by and a place they are said to come from (round 51): "a bookie's clerk walks
-from the champagne bar back to the betting ring", "ward A's porter wheels a bed out of the lift".
+from the champagne bar back to the betting ring", "the laundry's porter walks from the chapel to the kitchen".
 
 The zone whose people the mention is ("the bookie's", "ward A's") says whom they belong to, and where
-they are when nothing else says so; but a place said after "from" ("out of") is where they set off, by
+they are when nothing else says so; but a place said after "from" is where they set off, by
 its whole name, so the possessor's zone is no place of theirs in that clause. A zone the mention is a
 share of ("half the open office") is still where they are."""
 
@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from grove_tui.language.mention import Mention
 from grove_tui.language.place_phrases import Place
 
-_FROM = frozenset({"from", "out", "obj:start"})
+_FROM = frozenset({"from", "obj:start"})  # not "out": "file out by the side exit" is the way out
 
 
 def kept_zone_place(m: Mention, places: Sequence[Place]) -> Place | None:
