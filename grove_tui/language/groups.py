@@ -33,6 +33,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_crowds import met_people_words
 from grove_tui.language.roles import Roles, assign_roles
+from grove_tui.language.possessor_starts import kept_zone_place
 from grove_tui.language.routine_reactions import routine_beside_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
@@ -84,8 +85,8 @@ class Groups:
         clauses = [self.clauses.read(range(a, b), excluded, robot_after=self.robot.leads_into(a, b, robot_clauses),
                                      owner=clause_owner(s, mentions, k, (a, b))) for k, (a, b) in enumerate(spans)]
         for k, m in enumerate(mentions):
-            if m.zone_place is not None:  # "half the open office goes ...": where they are
-                clauses[k].places.insert(0, m.zone_place)
+            if (zone_place := kept_zone_place(m, clauses[k].places)) is not None:  # "half the open office goes ...": where they are
+                clauses[k].places.insert(0, zone_place)
             if m.robot_object is not None:
                 clauses[k] = self._with_robot(m, robot_clauses, excluded)
         self._share(mentions, clauses)
@@ -293,8 +294,7 @@ class Groups:
         if m.robot_object == "met":  # people the robot passes, serves or squeezes by stay where they are
             return replace(clause, intent=clause.intent or "wait", has_action=True)
         sends = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep == "from" for p in clause.places)
-        return replace(clause, intent=clause.intent or ("walk" if sends or not clause.places else "wander"),
-                       has_action=True)
+        return replace(clause, intent=clause.intent or ("walk" if sends or not clause.places else "wander"), has_action=True)
 
     def _own_span(self, span: tuple[int, int], m: Mention, robot_tokens: set[int]) -> tuple[int, int]:
         """A group's span without a robot clause that ends it ("..., while a robot crosses the hall")."""

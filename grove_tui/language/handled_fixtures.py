@@ -1,5 +1,6 @@
 """Fixtures people busy themselves with (round 39): "two mechanics tinker with the pinsetters", "a
-technician fiddles about with the projector", "a couple check out the SUV". The verb says people are at
+technician fiddles about with the projector", "a couple check out the SUV", "a nurse checks the drugs
+trolley" (round 51). The verb says people are at
 the thing they handle or look over, so its "with" ("out") is a place preposition of where they are, when
 the words after it name a place of the world; "tinker with his phone" (no place) stays no place."""
 
@@ -14,6 +15,10 @@ _WITH_VERBS = frozenset("tinker fiddle tamper fuss mess wrestle struggle potter 
                         "busy".split())
 # Verbs taking "out" or "over" for looking a thing over ("check out the SUV", "look over the boiler").
 _LOOKING_VERBS = {"out": frozenset({"check", "scope", "suss"}), "over": frozenset({"look", "check", "go", "pore"})}
+# Verbs of looking a thing over with no particle ("a nurse checks the drugs trolley", "a steward inspects
+# the lifeboat"): they are the robot's verbs too ("inspects the robot"), but with a place of the world for
+# their object, people are at the thing they check.
+CHECKING_VERBS = frozenset("check inspect examine investigate recheck".split())
 _IN_BETWEEN = frozenset({"about", "around", "away", "themselves", "himself", "herself", "itself"})
 _ARTICLES = frozenset({"the", "a", "an", "one", "some", "those", "these", "that", "this", "both", "all"})
 

@@ -35,6 +35,7 @@ from grove_tui.language.user_kinds import USER_KINDS
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.service_purposes import served_point, service_done
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.building_modifiers import of_no_building
 
 # A place matched by meaning alone: at least this similar to one of its names, and this much nearer
 # than any place of another zone (measured on synonyms and absent places of every shipped world,
@@ -182,6 +183,7 @@ class PlaceMeaning:
         """A phrase about to be refused, read by meaning less strictly (MEANING_RESCUE): as written, then
         in the singular ("the stores" comes nearer "drugstore" by its letters, 0.69, than "store room",
         0.61; "store" is 0.77 from the store room and far ahead of the pharmacy)."""
+        phrase, lemmas = of_no_building(self.s.index, phrase, lemmas)  # "the hospital canteen": a canteen
         meant = self._by_meaning(phrase, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
         if meant is None and list(lemmas) != [w for w in phrase if w not in lx.DETERMINERS]:
             meant = self._by_meaning(lemmas, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)

@@ -128,7 +128,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j):  # "in A&E"
+                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j) and around(s.index, (lemma(low[j]),)) is None:  # "in A&E"; "at trackside": the track's
             return None  # "in line", "at once", "on time": no determiner and no place word
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):

@@ -48,7 +48,9 @@ _FOR_TO = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bby)(?<!\bfrom)(?<!\buntil)(?<
                      re.IGNORECASE)
 # "8 ppl waiting @ customer service 4 refunds": chat's "for" before the last word, a plural that names no
 # person (not "... 4 nurses"), after a word that is not one a place is numbered by ("till 4", "gate 4")
-_FOR_LAST = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bfor)(?<!\bto)(?<!\bof)(?<!\band)(?<!\bor)\s+4\s+([a-z]+s)\s*[.!]?\s*$")
+# A chat list's item ends at its comma as the prompt ends ("6 pts queuin 4 scales, 3 more in waiting rm").
+_FOR_LAST = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bfor)(?<!\bto)(?<!\bof)(?<!\band)(?<!\bor)(?<!\bwith)"
+                       r"\s+4\s+([a-z]+s)(?=\s*(?:[,;]|[.!]?\s*$))")
 _NUMBERED_BY = frozenset("gate desk platform room aisle till lane court ward bay stand floor level exit door counter "
                          "table bed screen track pier dock berth stop zone area block wing unit".split())
 # "~30 pax", "~ 10 people": about so many
