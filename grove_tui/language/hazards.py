@@ -67,7 +67,9 @@ def cue(s: Sentence, i: int) -> bool:
         return True
     if event_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i):  # "a pipe bursts", "a heater sparks"
         return True
-    return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (w.startswith("catch") and nxt == "fire")
+    # "catches fire", and the British "catches light" / "caught light" (never "catches the light": a shine).
+    return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (
+        (w.startswith("catch") or w == "caught") and nxt in ("fire", "light"))
 
 
 def said(s: Sentence) -> bool:
