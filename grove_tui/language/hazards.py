@@ -22,6 +22,7 @@ from grove_tui.language.hazard_scares import scare_cue
 from grove_tui.language.outside_sources import outside_at
 from grove_tui.language.place_kinds import PLACE_KINDS
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.weather_damage import damage_cue
 
 # Nouns that say a hazard by what is noticed ("fumes", "sparks"), beside the lexicon's hazard nouns.
 _NOTICED = frozenset("fumes sparks burning blaze gas siren sirens flame flames".split())
@@ -65,9 +66,11 @@ def cue(s: Sentence, i: int) -> bool:
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):
         return True
-    if event_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i):  # "a pipe bursts", "a heater sparks"
+    if event_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i) or damage_cue(s, i):  # "a pipe bursts", "a heater sparks"
         return True
-    return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (w.startswith("catch") and nxt == "fire")
+    # "catches fire", and the British "catches light" / "caught light" (never "catches the light": a shine).
+    return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (
+        (w.startswith("catch") or w == "caught") and nxt in ("fire", "light"))
 
 
 def said(s: Sentence) -> bool:

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
+from grove_tui.language.weather_nouns import weather_noun
 
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
@@ -55,7 +56,7 @@ def goes_along_a_route(s: Sentence, i: int) -> bool:
     if w.dep != "nsubj" or w.pos not in ("NOUN", "ADJ") or w.tag not in ("NN", "JJ") or not s.low[i].isalpha():
         return False
     lem = s.lemma(i)
-    if lem in lx.ROBOT_WORDS or lem in lx.STOPWORDS or lem in lx.CARRYING_THINGS or (
+    if lem in lx.ROBOT_WORDS or lem in lx.STOPWORDS or lem in lx.CARRYING_THINGS or weather_noun(lem) or (
             (lem in lx.NON_PEOPLE or names_a_place(s.index, lem)) and not s.low[i].endswith(_DOERS)):
         return False  # a thing or a place of the world is one who goes only as a word for one who does
     first = _opened_at(s, i)

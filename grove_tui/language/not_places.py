@@ -19,6 +19,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.consumed_things import consumed_thing
 from grove_tui.language.courses_taken import a_course_taken
+from grove_tui.language.eaten_into import eaten_into
 from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.held_and_spans import held_or_span
@@ -27,6 +28,7 @@ from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.outing_words import an_outing
 from grove_tui.language.weather_words import the_weather
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.span_ends import span_after_part
 from grove_tui.language.times_and_manners import time_or_manner
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -53,6 +55,10 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         return True  # "smell of burning from the toaster", "clutching mugs from the seconds shelf"
     if an_outing(s, k, prep) or the_weather(s, k, prep) or a_course_taken(s, k, prep):
         return True  # "on a geography trip", "against the cold": an outing, the weather (round 45)
+    if eaten_into(s, k, prep, at):
+        return True  # "tucking into curry": food (eaten_into.py)
+    if span_after_part(s, k, prep, at):
+        return True  # "at the end of his session": a time (span_ends.py)
     if time_or_manner(s, k, prep):
         return True  # "on a wet Tuesday", "on foot", "at half past nine"
     if prep in ("on", "in", "during") and _a_call(s, k):

@@ -10,6 +10,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.robot_company import goes_with_robot
 from grove_tui.language.disregard import disregards
 from grove_tui.language.hostile_gestures import gesture_threat
+from grove_tui.language.modified_nouns import after_modified_determiner
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.reaction_order import depicts, goes_after, later_reaction, stops_for, verb_in
 from grove_tui.language.reaction_words import in_place_name, speaks_elsewhere
@@ -230,7 +231,7 @@ def _before_robot(s: Sentence, own: Sequence[int], ownset: set[int], since: int,
             continue  # "stop whispering when the robot passes": no stopping of the robot
         if stopping is not None:
             return stopping  # "stops to let the robot cross": making way
-        if v in lx.ROBOT_VERBS and not s.after_determiner(i) and \
+        if v in lx.ROBOT_VERBS and not s.after_determiner(i) and not after_modified_determiner(s, i) and \
                 not _object_elsewhere(s, i, r, through_preposition=lx.ROBOT_VERBS[v] in ("look", "approach")):
             return lx.ROBOT_VERBS[v]
         if s.lemma(i) in lx.ROBOT_NOUNS:

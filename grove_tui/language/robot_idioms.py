@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.fled_places import flees_to_a_place
 from grove_tui.language.hiding_moves import hides_by_moving
 from grove_tui.language.robot_holds import HOLDING_IDIOMS
 from grove_tui.language.robot_sticking import sticking_reaction
@@ -128,6 +129,8 @@ def timed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
         nxt = own[n + 1] if n + 1 < len(own) else None
         if nxt == i + 1 and s.low[nxt] in _AWAY_TAILS and s.w[i].pos in ("VERB", "NOUN") and _ends(s, nxt + 1):
             return "avoid"  # "scurries off whenever ...", not "pour off platform 1" nor "go back to"
+        if nxt == i + 1 and s.w[i].pos in ("VERB", "NOUN") and flees_to_a_place(s, i, nxt):
+            return "avoid"  # "scurries off to the far corner once it appears" (fled_places.py)
         if v in _STARTLED_VERBS:
             return "look"
     return None

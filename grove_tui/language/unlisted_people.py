@@ -16,6 +16,7 @@ from grove_tui.language.hazard_subjects import hazard_verb
 from grove_tui.language.lone_person import leading_name, said_as_a_verb
 from grove_tui.language.place_modifiers import PERSON_ADJECTIVES, names_a_place
 from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.weather_nouns import weather_noun
 
 if TYPE_CHECKING:
     from grove_tui.language.places import PlaceIndex
@@ -54,7 +55,8 @@ def going_by_way(s: Sentence, v: int) -> bool:
 def _a_thing(s: Sentence, lem: str) -> bool:
     return (names_a_place(s.index, lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
             or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
-            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS)
+            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS
+            or weather_noun(lem))  # "the wind rips the side of the tent": weather, nobody
 
 
 _GROUP_NOUNS = lx.TOGETHER_COLLECTIVES | lx.QUEUE_COLLECTIVES | lx.QUANTIFYING_COLLECTIVES
