@@ -28,6 +28,7 @@ from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_with import with_object_end
 from grove_tui.language.purpose_after_place import purpose_after_destination
 from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
+from grove_tui.language.sought_things import sought_object
 from grove_tui.language.people import People
 from grove_tui.language.ahead_of_events import ahead_of_event
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
@@ -314,6 +315,9 @@ class Clauses(ClauseCues):
         with_end = with_object_end(s, end, self.people.is_person_noun, self.places.names_place)
         if with_end > end:  # "to help with boarding": what the purpose is done with (purpose_with.py)
             end = with_end
+            scan.c.purpose = s.span(said_from, end - 1)
+        if sought_object(s, end):  # "to look for prom dresses": what is sought (sought_things.py)
+            end = s.phrase_end(end + 1)
             scan.c.purpose = s.span(said_from, end - 1)
         prep = s.preposition(end) if end < s.n else None
         if particle_object(s, end):  # "to stock up on IPA": what the purpose is about, no place

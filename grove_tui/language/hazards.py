@@ -16,6 +16,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.calm_alarms import calm_alarm as calm_alarm
 from grove_tui.language.cue_in_names import in_a_place_name as in_a_place_name
+from grove_tui.language.gas_leaks import gas_cue
 from grove_tui.language.giving_off import giving_off_cue
 from grove_tui.language.hazard_events import event_cue
 from grove_tui.language.hazard_scares import scare_cue
@@ -66,7 +67,7 @@ def cue(s: Sentence, i: int) -> bool:
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):
         return True
-    if event_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i) or damage_cue(s, i):  # "a pipe bursts", "a heater sparks"
+    if event_cue(s, i) or gas_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i) or damage_cue(s, i):  # "a pipe bursts", "a heater sparks"
         return True
     # "catches fire", and the British "catches light" / "caught light" (never "catches the light": a shine).
     return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (

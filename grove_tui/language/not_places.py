@@ -24,6 +24,7 @@ from grove_tui.language.event_names import names_an_event
 from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.held_and_spans import held_or_span
 from grove_tui.language.held_origins import origin_of_held
+from grove_tui.language.hidden_behind import hidden_behind
 from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.outing_words import an_outing
 from grove_tui.language.weather_words import the_weather
@@ -47,6 +48,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
     if held_or_span(s, k, prep, at):
         return True  # "clipboard in hand", "at the interval", "midway through the lecture" (round 46)
+    if hidden_behind(s, k, prep, at):
+        return True  # "ducks behind the curtains": a thing one hides by, which the world lacks (round 52)
     if no_place_thing(s, k, prep):
         return True  # "through forty-odd pickers", "recording it on a phone": people, a device
     if consumed_thing(s, k, prep, at):

@@ -24,6 +24,7 @@ from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.place_number import said_in_number
 from grove_tui.language.pronoun_places import may_be_place, pronoun_place
 from grove_tui.language.outside_contrast import outside_contrasted
+from grove_tui.language.outdoor_places import past_the_doors
 from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
@@ -197,7 +198,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
             match = None  # "gate C4" where the gates are A1 to B2: a place the world does not have
-        if match is None and self._outdoors(lemmas) and s.index.exits():
+        if match is None and past_the_doors(s, lemmas, at) and s.index.exits():
             # "to the street", "out to the car park": out through the exit nearest the scene
             exits = [m for e in s.index.exits() if (m := s.index.match(name_tokens(e))) is not None and m.kind == "door"]
             match = self._nearest_exit(exits) if exits and self.context_zones else exits[0] if exits else None
@@ -274,12 +275,6 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             self.named.append(match.name)
             self.history.append(place)
         return place
-
-    @staticmethod
-    def _outdoors(lemmas: Sequence[str]) -> bool:
-        """Whether a place phrase names the outdoors past the doors ("the street", "the car park")."""
-        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        return bool(content) and (content[-1] in lx.OUTDOOR_WORDS or "_".join(content[-2:]) in lx.OUTDOOR_WORDS)
 
     def _names_kind(self, lemmas: Sequence[str], match: PlaceMatch) -> bool:
         """Whether the phrase's head is the kind of place matched ("ward" of ward_a) or a word for rooms."""
