@@ -105,6 +105,7 @@ from grove_tui.language.comma_names import without_name_commas
 from grove_tui.language.counted_outings import with_counted_outings
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
 from grove_tui.language.finished_acts import without_finished_acts
+from grove_tui.language.signal_fronts import without_signal_fronts
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.met_then_moved import as_taken_along
@@ -210,7 +211,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
-    text = with_fronted_subsets(without_finished_acts(without_awaited_arrivals(text)))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
+    text = with_fronted_subsets(without_signal_fronts(without_finished_acts(without_awaited_arrivals(text))))  # "Before the boss gets in, ...", "When the teacher claps, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_going_in(as_heading(with_vehicle_loads(text)))  # "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
