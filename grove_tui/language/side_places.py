@@ -2,7 +2,8 @@
 pitchside", "a nurse bedside". The word is where they are, by the place its first half names; left as
 one word it names no place and, in a list ("3 patients in the gym, 2 physios poolside"), the people
 before it were lost. Before parsing, when the world knows the first half and the word ends a phrase
-after a plural or counted person word, it is said "by the pool"."""
+after a plural or counted person word, it is said "by the pool" (not when the world names the whole
+word, as an ice rink's "rinkside")."""
 
 from __future__ import annotations
 
@@ -20,5 +21,6 @@ def with_side_places(text: str, index: PlaceIndex) -> str:
     """The text with "<place>side" after people said "by the <place>" (module doc)."""
     def by(m: re.Match[str]) -> str:
         place = m.group("place")
-        return f"by the {place}" if index.knows(place.lower()) else m.group(0)
+        known = index.knows(place.lower()) and not index.knows(m.group(0).lower())  # "rinkside": a place itself
+        return f"by the {place}" if known else m.group(0)
     return _SIDE.sub(by, text)
