@@ -18,7 +18,7 @@ _OWNERS = frozenset({"their", "his", "her", "our", "my", "your"})
 
 # Collectives named by what their members do together, each member one of them.
 MEMBER_COLLECTIVES = frozenset("""crew team staff cast squad band gang troupe choir troop shift delegation
-    committee panel workforce personnel orchestra ensemble chorus posse""".split())
+    committee panel workforce personnel orchestra ensemble chorus posse audience congregation""".split())
 
 
 def collective_head(s: Sentence, start: int) -> int | None:

@@ -83,7 +83,9 @@ class Collectives:
         plural = s.low[head] != s.lemma(head)
         parties, exact_parties = 1, True
         if number is not None:
-            if number.kind in ("exact", "approximate") and number.value > 1:
+            if noun in lx.ONE_SET_PLURALS and number.kind == "exact" and number.value == lx.IMPLIED_RANGES[noun][0]:
+                pass  # "both twins", "the two twins": the one pair (round 52), not two pairs
+            elif number.kind in ("exact", "approximate") and number.value > 1:
                 parties = number.value
             elif number.kind.startswith("vague") or number.kind == "range":
                 parties, exact_parties = count_of(s, number, f"{head}:parties").value, False

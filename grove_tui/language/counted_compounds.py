@@ -20,3 +20,14 @@ def kind_before_counted(s: Sentence, k: int, j: int, counted: bool, is_person: C
     if is_person(k) or names_a_place(s.index, s.lemma(k)) or s.index.knows(s.lemma(k)):
         return False  # "nine nurse practitioners" read already; "nine lobby chairs": a place's things
     return head_at(k + 1) == k + 1
+
+
+def kind_before_hyphened(s: Sentence, k: int, j: int, counted: bool, head_at: Callable[[int], int | None]) -> bool:
+    """Whether word k, first after a count (j), is a noun naming when or what kind ("fifty Saturday
+    bargain-hunters", "thirty summer day-trippers") before a hyphened plural:
+    the count is the plural's, not lost on the first noun (round 52)."""
+    if not counted or k != j or k + 3 >= s.n or s.w[k].pos not in ("NOUN", "PROPN") or s.w[k].tag in ("NNS", "NNPS"):
+        return False
+    if s.low[k + 2] != "-" or names_a_place(s.index, s.lemma(k)) or s.index.knows(s.lemma(k)):
+        return False
+    return head_at(k + 1) == k + 3  # the parser may hang the count on the first noun ("twenty evening")

@@ -27,7 +27,8 @@ _GATHERINGS = lx.MEMBERS_NAME_COLLECTIVES | lx.MODIFYING_COLLECTIVES | frozenset
 _PERSON_ENDS = ("er", "or", "ist", "ian", "ant", "ent")
 
 
-def _a_performer(who: str) -> bool:
+def a_performer(who: str) -> bool:
+    """Whether the words name one who performs or works, not a gathering."""
     head = who.lower().replace("-", " ").split()[-1]
     if head in _GATHERINGS or lemma(head) in _GATHERINGS:
         return False
@@ -40,7 +41,7 @@ def without_finished_acts(text: str) -> str:
     out: list[str] = []
     at = 0
     for m in _FRONTED.finditer(text):
-        if m.group("next").lower() in _PRONOUNS or not _a_performer(m.group("who")):
+        if m.group("next").lower() in _PRONOUNS or not a_performer(m.group("who")):
             continue
         out.append(text[at:m.start()] + (" " if m.start() > 0 else ""))
         at = m.end()  # the people after it as written ("twelve staff leave ...")

@@ -24,7 +24,7 @@ from grove_tui.language.side_words import side_word
 from grove_tui.language.adjective_people import PLURAL_WORDS, adjective_person
 from grove_tui.language.agent_compounds import agent_compound, agent_of_a_verb
 from grove_tui.language.place_modifiers import names_a_place
-from grove_tui.language.counted_compounds import kind_before_counted
+from grove_tui.language.counted_compounds import kind_before_counted, kind_before_hyphened
 from grove_tui.language.placed_people import placed_person
 from grove_tui.language.scene_doers import scene_doer
 from grove_tui.language.thing_people import moves_as_a_person, person_of_a_thing
@@ -379,6 +379,9 @@ class People:
                 continue
             if kind_before_counted(s, k, j, counted, self.is_person_noun, lambda x: self.person_head(x, counted=True)):
                 return k + 1  # "nine cub scouts": the kind, then the counted plural
+            if kind_before_hyphened(s, k, j, counted, lambda x: self.person_head(x, counted=True)):
+                k += 1  # "fifty Saturday bargain-hunters": when or what kind, then a hyphened plural
+                continue
             if s.w[k].pos in ("NOUN", "PROPN") and k + 1 < s.n and (self.is_person_noun(k + 1) or (
                     counted and k >= 3 and s.joins(k - 1) and count_ends_at(s, k - 3) and self.person_head(k + 1, counted=True) == k + 1)):
                 k += 1  # "flight attendants", "dog walker", "twenty season-ticket holders": the kind of person

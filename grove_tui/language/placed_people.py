@@ -16,7 +16,8 @@ from grove_tui.language import lexicon as lx
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
 
-_PLACING = frozenset({"put", "place", "position", "sit", "seat", "stick", "plant", "station", "post", "pop"})
+# "Have" opens a placing order too ("Have a mall cop by the fountain and two teens in the shop").
+_PLACING = frozenset({"put", "place", "position", "sit", "seat", "stick", "plant", "station", "post", "pop", "have"})
 # Words ending as a doer's name that are things ("Put a heater in the lounge", "Stick a poster by the door").
 _DOER_THINGS = frozenset("poster heater speaker banner marker sticker container computer printer trailer router "
                          "monitor sensor motor cooler fryer toaster timer counter corner cover flower tower folder "

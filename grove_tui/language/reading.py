@@ -105,6 +105,8 @@ from grove_tui.language.comma_names import without_name_commas
 from grove_tui.language.counted_outings import with_counted_outings
 from grove_tui.language.awaited_arrivals import without_awaited_arrivals
 from grove_tui.language.finished_acts import without_finished_acts
+from grove_tui.language.signal_fronts import without_signal_fronts
+from grove_tui.language.side_places import with_side_places
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.met_then_moved import as_taken_along
@@ -201,6 +203,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_phrase_commas(with_fronted_time_commas(with_clock_commas(with_stays_as_lengths(with_stays_into(text)))))  # "At nine Tom Hale walks": a time, not nine of him; "After dinner a couple stroll", "During the changeover a bellboy ...": a comma after the time; "after a 15-minute wait"
     text = with_fronted_place_commas(without_urging_asides(without_worn_place_words(without_worn_clothes(text, index), index)))  # "By the kiosks a toddler gapes": one toddler
     text = with_age_heads(with_age_bands(with_function_word_people(with_whole_person_words(text))))  # "his 4-year-old walks": "his 4-year-old child walks"; "eighteen over-fifties": "eighteen older people"
+    text = with_side_places(text, index)  # "2 physios poolside": by the pool
     text = without_named_workplaces(text, index)  # "Sam from security walks": "Sam walks"
     text = without_people_named_things(without_carried_babies(text), index)  # "mums with babies in slings wait": "mums wait"; "the parent-and-baby session": "the session"
     text = as_taken_along(without_held_hands(text))  # "links arms with Gramps and walks him": walks Gramps; "takes Edith arm in arm out of X": "takes Edith out of X"
@@ -210,7 +213,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
-    text = with_fronted_subsets(without_finished_acts(without_awaited_arrivals(text)))  # "Before the boss gets in, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
+    text = with_fronted_subsets(without_signal_fronts(without_finished_acts(without_awaited_arrivals(text))))  # "Before the boss gets in, ...", "When the teacher claps, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = as_going_in(as_heading(with_vehicle_loads(text)))  # "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
