@@ -171,10 +171,21 @@ def _shortened(words: Sequence[Word], k: int, low: str, index: PlaceIndex) -> st
     if len(low) <= 2 or low in lx.TITLES:
         return None  # "dr" alone is a doctor, not a door
     lead = plain(words[k - 1].lower) if k > 0 else ""
-    if len(found) == 1 and not completing and lead in _PLACE_LEADS and not dictionary_word(low) and \
+    if len(found) == 1 and not completing and lead in _PLACE_LEADS and \
+            (not dictionary_word(low) or _inflected(low, found[0])) and \
             (not known_word(low) or len(found[0]) <= 2 * len(low)):
         return found[0]  # a dictionary word alone ("the pub") is itself, not a name it starts ("public")
     return None
+
+
+_ENDINGS = ("s", "es", "r", "rs", "er", "ers", "ing", "d", "ed")
+
+
+def _inflected(word: str, name_word: str) -> bool:
+    """Whether a name word is the word with an ending ("smoke" of "smokers'"), not a longer word it
+    only starts ("pub" of "public")."""
+    stem = word[:-1] if word.endswith("e") else word
+    return name_word.startswith(stem) and name_word[len(stem):] in _ENDINGS + tuple("e" + e for e in _ENDINGS)
 
 
 def _edits(a: str, b: str) -> int:

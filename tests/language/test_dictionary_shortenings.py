@@ -24,3 +24,10 @@ def test_a_dictionary_word_is_not_a_shortened_name(read, world, prompt):
 def test_a_chat_shortening_is_still_put_right(read, world, prompt, place):
     reading = read(world, prompt)
     assert place in reading.places
+
+
+def test_a_word_whose_ending_makes_the_name_is_still_read(read):
+    reading = read("casino", "Fresh from a smoke, a pair of croupiers cut across from the poker lounge to the "
+                   "roulette wheel.")
+    assert not reading.unknown_places
+    assert [g.intent for g in reading.groups] == ["walk"]
