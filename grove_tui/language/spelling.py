@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from functools import lru_cache
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.parser import Word, known_word
+from grove_tui.language.parser import Word, dictionary_word, known_word
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -160,7 +160,7 @@ def shortens(short: str, word: str) -> bool:
 def _shortened(words: Sequence[Word], k: int, low: str, index: PlaceIndex) -> str | None:
     """The word of the world's place names a chat shortening stands for ("plat 1": platform, "the
     recep desk": reception, "rm 3": room), when exactly one of them fits and it completes a name with
-    the word next to it, or the shortening is not itself a word and starts a place phrase ("at recep")."""
+    the word next to it, or the shortening is no dictionary word and starts a place phrase ("at recep")."""
     found = sorted(v for v in index.name_words if shortens(low, v))
     if not found or (k > 0 and words[k - 1].tag == "TO" and words[k].tag == "VB" and known_word(low)):  # "to pay in"
         return None
@@ -172,9 +172,20 @@ def _shortened(words: Sequence[Word], k: int, low: str, index: PlaceIndex) -> st
         return None  # "dr" alone is a doctor, not a door
     lead = plain(words[k - 1].lower) if k > 0 else ""
     if len(found) == 1 and not completing and lead in _PLACE_LEADS and \
+            (not dictionary_word(low) or _inflected(low, found[0])) and \
             (not known_word(low) or len(found[0]) <= 2 * len(low)):
-        return found[0]
+        return found[0]  # a dictionary word alone ("the pub") is itself, not a name it starts ("public")
     return None
+
+
+_ENDINGS = ("s", "es", "r", "rs", "er", "ers", "ing", "d", "ed")
+
+
+def _inflected(word: str, name_word: str) -> bool:
+    """Whether a name word is the word with an ending ("smoke" of "smokers'"), not a longer word it
+    only starts ("pub" of "public")."""
+    stem = word[:-1] if word.endswith("e") else word
+    return name_word.startswith(stem) and name_word[len(stem):] in _ENDINGS + tuple("e" + e for e in _ENDINGS)
 
 
 def _edits(a: str, b: str) -> int:
