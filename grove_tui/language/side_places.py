@@ -3,7 +3,8 @@ pitchside", "a nurse bedside". The word is where they are, by the place its firs
 one word it names no place and, in a list ("3 patients in the gym, 2 physios poolside"), the people
 before it were lost. Before parsing, when the world knows the first half and the word ends a phrase
 after a plural or counted person word, it is said "by the pool" (not when the world names the whole
-word, as an ice rink's "rinkside")."""
+word, as an ice rink's "rinkside": that word, and "-side" words read in place after the parse, are
+bare_places.py's)."""
 
 from __future__ import annotations
 
