@@ -38,9 +38,15 @@ def a_performer(who: str) -> bool:
 
 def without_finished_acts(text: str) -> str:
     """The text without a fronted "Once <someone> wraps up," clause (module doc)."""
+    return without_fronted(text, _FRONTED)
+
+
+def without_fronted(text: str, fronted: re.Pattern[str]) -> str:
+    """The text without each fronted clause `fronted` finds (groups `who` and `next`) whose subject is a
+    performer and is not taken up again by a pronoun after the comma."""
     out: list[str] = []
     at = 0
-    for m in _FRONTED.finditer(text):
+    for m in fronted.finditer(text):
         if m.group("next").lower() in _PRONOUNS or not a_performer(m.group("who")):
             continue
         out.append(text[at:m.start()] + (" " if m.start() > 0 else ""))

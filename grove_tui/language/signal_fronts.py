@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from grove_tui.language.finished_acts import a_performer
+from grove_tui.language.finished_acts import without_fronted
 
 _ART = r"(?:the|a|his|her|their)"
 _SIGNAL = (r"(?:claps?(?:\s+" + _ART + r"\s+hands)?|clapped(?:\s+" + _ART + r"\s+hands)?|"
@@ -21,17 +21,8 @@ _SIGNAL = (r"(?:claps?(?:\s+" + _ART + r"\s+hands)?|clapped(?:\s+" + _ART + r"\s
 _FRONTED = re.compile(
     r"(?:^|(?<=[.;!?])\s+)(?:[Oo]nce|[Ww]hen|[Aa]s\s+soon\s+as)\s+(?P<who>(?:the|a|an|our|their|his|her)\s+"
     r"[^,.;!?]{1,30}?)\s+" + _SIGNAL + r"(?:\s+for\s+(?:the|a|an)\s+[a-z-]+)?,\s+(?=(?P<next>[A-Za-z]+))")
-_PRONOUNS = frozenset({"he", "she", "they", "it", "his", "her", "their", "him", "them"})
 
 
 def without_signal_fronts(text: str) -> str:
     """The text without a fronted "When <someone> claps," clause (module doc)."""
-    out: list[str] = []
-    at = 0
-    for m in _FRONTED.finditer(text):
-        if m.group("next").lower() in _PRONOUNS or not a_performer(m.group("who")):
-            continue
-        out.append(text[at:m.start()] + (" " if m.start() > 0 else ""))
-        at = m.end()
-    out.append(text[at:])
-    return "".join(out)
+    return without_fronted(text, _FRONTED)
