@@ -561,8 +561,10 @@ class Mentions:
         head, named = self.people.person_head(k, counted=False), named_class(s, k)  # "Year 4 walks", "the Year 4 form"
         if head is None or (named is not None and head == named.last):
             return named  # or none: "ten in the pharmacy" borrows the last noun
-        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person; "Dr Patel's registrar": nobody
-            return None if possessor_of_a_person(s, self.people.is_person_noun, head) else Mention(at, head, s.span(at, head), self.people.label(head),
+        if possessor_of_a_person(s, self.people.is_person_noun, head):
+            return None  # "Dr Patel's registrar", "the party host's mother": the person after "'s", the owner nobody
+        if self.people.titled_name(k) == head:  # "Dr Jones", "Mr Li's wheelchair": one person
+            return Mention(at, head, s.span(at, head), self.people.label(head),
                            Count("exclusive" if exclusive else "exact", 1, 1, 1), exclusive=exclusive)
         singular = (s.lemma(head) == low[head] or one_name(s, head)) and not self.people.plural_word(head)  # "Gladys"
         label = self.people.label(head)
