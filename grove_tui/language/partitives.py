@@ -83,6 +83,9 @@ class Partitives:
             whole = self._whole(k, head, inner, label)
             count = Count("exact", 2, 2, 2) if low[at] == "both" else whole.count
             return Mention(at, head, s.span(at, head), label, count)
+        elif at > 0 and low[at - 1] == "all" and num is not None and fraction is None and num.kind == "exact":
+            # "all 7 of the sales reps", "all seven of the cleaners": the group itself, as many as said
+            return Mention(at, head, s.span(at, head), label, count_of(s, num, f"{at}"))
         same = next((j for j in range(len(found) - 1, -1, -1) if found[j].label == label
                      and not (found[j].relation or "").startswith("subset_of")), None)
         if same is not None or (parent_index is not None and inner is None and label == "person"):
