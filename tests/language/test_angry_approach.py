@@ -10,7 +10,7 @@ import pytest
 @pytest.mark.parametrize("world,prompt", [
     ("hospital", "Furious, a visitor marches up to the robot and thumps its screen."),
     ("station", "A commuter storms over to the robot and kicks it."),
-    ("museum", "Livid, an old man strides over to the robot and hammers on its lid."),
+    ("museum", "Livid, a tourist strides over to the robot and hammers on its lid."),
     ("recycling_centre", "Fuming, a man in a van storms up to the robot at the weighbridge."),
 ])
 def test_coming_up_to_the_robot_in_anger_is_a_threat(read, world, prompt):
