@@ -12,7 +12,8 @@ what people do or where, which the clause reader leaves to them:
   errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
   robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
 - going off to hide after seeing the robot, an avoidance (robot_hiding.py); a step back or aside from the
-  robot where one stands, located there (stepped_aside.py).
+  robot where one stands, located there (stepped_aside.py); coming up to the robot in anger, Threatening
+  (angry_approach.py).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language.activity_place_zones import activity_place_zones
+from grove_tui.language.angry_approach import angry_approach
 from grove_tui.language.carried_errands import carried_errands
 from grove_tui.language.coming_over import coming_over_after_seeing
 from grove_tui.language.cleared_passive import cleared_away
@@ -51,6 +53,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
+    groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)

@@ -13,9 +13,10 @@ _FAILING_THINGS = frozenset("pipe pipes main mains boiler tank ceiling ceilings 
 _FAILING = frozenset(f"{v}{end}" for v in ("burst", "collapse", "pour", "gush", "flood", "leak", "cave", "crash")
                      for end in ("", "s", "ed", "d", "ing")) | frozenset(
     "fall falls fell falling fallen explode explodes exploded exploding split splits splitting".split())
-# Verbs of a sprinkler system starting ("the sprinklers go off", "come on", "are set off").
+# Verbs of a sprinkler system starting ("the sprinklers go off", "come on", "are set off", "trip").
 _STARTING = frozenset("go goes went going gone come comes came coming set trigger triggers triggered "
-                      "activate activates activated start starts started kick kicks kicked".split())
+                      "activate activates activated start starts started kick kicks kicked "
+                      "trip trips tripped tripping".split())
 _SPRINKLERS = frozenset({"sprinkler", "sprinklers"})
 # Words that may stand between the thing and its verb ("the pipe suddenly bursts", "is pouring").
 _BETWEEN = frozenset("suddenly just then has have had is are was were starts start begins begin system "

@@ -29,9 +29,11 @@ from grove_tui.language.weather_damage import damage_cue
 _NOTICED = frozenset("fumes sparks burning blaze gas siren sirens flame flames".split())
 # Words after "smell of" / "smell" that make a smell a hazard ("a smell of burning", "smells of gas").
 _SMELLS = frozenset("burning smoke gas fumes fire petrol chemicals".split())
-# An alarm's verbs of sounding ("the alarm goes off", "alarms are sounding", "the fire alarm rings").
+# An alarm's verbs of sounding ("the alarm goes off", "alarms are sounding", "the fire alarm rings",
+# "the fire alarm trips").
 _SOUNDING = frozenset("go goes went going gone sound sounds sounded sounding ring rings rang ringing "
-                      "blare blares blaring trigger triggers triggered wail wails wailing".split())
+                      "blare blares blaring trigger triggers triggered wail wails wailing "
+                      "trip trips tripped tripping".split())
 _ALARMS = frozenset({"alarm", "alarms", "siren", "sirens", "bell", "bells"})
 # A bell is an alarm only when said as one ("the fire bell", "alarm bells"): "when the bell goes at
 # 8 pm" ends visiting time or a lesson, and people then walk out.
