@@ -75,6 +75,7 @@ from grove_tui.language.robot_aliases import with_robot_aliases
 from grove_tui.language.robot_headings import as_robot_order
 from grove_tui.language.converging import as_heading
 from grove_tui.language.shut_in import as_going_in
+from grove_tui.language.gone_and_done import as_gone_to
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.event_causes import without_causers
@@ -216,7 +217,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_subsets(without_signal_fronts(without_finished_acts(without_awaited_arrivals(text))))  # "Before the boss gets in, ...", "When the teacher claps, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
-    text = as_going_in(as_heading(with_vehicle_loads(text)))  # "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
+    text = as_gone_to(as_going_in(as_heading(with_vehicle_loads(text))))  # "go and flop in X": "go to X"; "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
