@@ -136,6 +136,7 @@ from grove_tui.language.robot_in_tow import with_robot_in_tow
 from grove_tui.language.passing_moment import with_passing_moments
 from grove_tui.language.owners_stay import owners_stay_put
 from grove_tui.language.whole_of_zone import whole_of_zone
+from grove_tui.language.poured_through import poured_through
 from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
@@ -242,7 +243,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
-    reading = whole_of_zone(typed, index, reading)  # "all of the circle, roughly 300 punters, escapes": from the circle
+    reading = poured_through(typed, index, whole_of_zone(typed, index, reading))  # "all of the circle, roughly 300 punters, escapes": from the circle; "pour through the lobby and ...": from the lobby
     reading = with_passing_moments(typed, reading)  # "look at the robot as it passes the desk"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
