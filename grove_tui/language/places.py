@@ -26,7 +26,6 @@ from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.lexicon import (BUILDING_WORDS, DOOR_WORDS, GENERIC_PLACE_HEADS, NON_PLACES, OWNER_KINDS,
                                         PERSON_NOUNS, PLACE_MODIFIERS, PLACE_SYNONYMS)
 from grove_tui.language.meaning import MiniLM, PhraseVectors, Vectors
-from grove_tui.language.own_fixture_names import names_the_fixture
 from grove_tui.language.place_first_words import names_its_zone
 from grove_tui.language.room_exits import room_exit
 from grove_tui.language.place_compounds import KIND_HEADS, head_only_modifies, names_another_kind
@@ -297,9 +296,6 @@ class PlaceIndex:
                         zone is not None and head in _kind_words(entry) and head not in _kind_words(zone) and \
                         not _contains(phrase, zone.phrases[0]):  # "the phone booths": the room's own name
                     return m
-                if m.kind == "entity" and m.zone == best.name and m.exact and entry is not None and zone is not None \
-                        and names_the_fixture(phrase, entry.phrases[0], zone.phrases[0]):
-                    return m  # "the trade desk": the desk's own name, only an alias of its room
         if best.kind != "zone":
             for m in found[1:]:
                 if m.score < best.score - 1e-9:
