@@ -39,6 +39,7 @@ from grove_tui.language.purposed_places import purposed_places
 from grove_tui.language.queued_movers import queued_movers
 from grove_tui.language.robot_hiding import hiding_after_seeing
 from grove_tui.language.its_people import its_people
+from grove_tui.language.searched_rooms import searched_rooms
 from grove_tui.language.searched_unknown import searched_unknown
 from grove_tui.language.stepped_aside import stepped_aside_in_place
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
@@ -55,7 +56,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
     groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
-    unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
+    unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index), *searched_rooms(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)
     return replace(reading, groups=groups, unknown_places=unknown)

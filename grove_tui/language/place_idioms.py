@@ -8,6 +8,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.feeling_topics import felt_about
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.treatments import on_treatment
 from grove_tui.language.tokens import lemma, verb_lemma
 
 # Verbs whose "about" / "over" phrase is their topic.
@@ -25,6 +26,8 @@ INTO_STATES = frozenset(
 
 def is_idiom_phrase(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from word k, after the preposition at `at`, is a topic or a state, not a place."""
+    if on_treatment(s, k, prep, at):
+        return True  # "patients on dialysis": what they are having
     if felt_about(s, at):
         return True  # "Furious about the sentence": what the feeling is about
     if at < s.n and s.low[at] in ("about", "over"):

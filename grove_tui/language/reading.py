@@ -75,6 +75,7 @@ from grove_tui.language.robot_aliases import with_robot_aliases
 from grove_tui.language.robot_headings import as_robot_order
 from grove_tui.language.converging import as_heading
 from grove_tui.language.shut_in import as_going_in
+from grove_tui.language.gone_and_done import as_gone_to
 from grove_tui.language.each_person import taken_by_each
 from grove_tui.language.each_place import spread_over_each
 from grove_tui.language.event_causes import without_causers
@@ -135,6 +136,7 @@ from grove_tui.language.robot_in_tow import with_robot_in_tow
 from grove_tui.language.passing_moment import with_passing_moments
 from grove_tui.language.owners_stay import owners_stay_put
 from grove_tui.language.whole_of_zone import whole_of_zone
+from grove_tui.language.poured_through import poured_through
 from grove_tui.language.room_numbers import without_number_words
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.spelling import correct_places
@@ -216,7 +218,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_fronted_subsets(without_signal_fronts(without_finished_acts(without_awaited_arrivals(text))))  # "Before the boss gets in, ...", "When the teacher claps, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
-    text = as_going_in(as_heading(with_vehicle_loads(text)))  # "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
+    text = as_gone_to(as_going_in(as_heading(with_vehicle_loads(text))))  # "go and flop in X": "go to X"; "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
@@ -241,7 +243,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
         reading = replace(reading, groups=in_said_order(reading.groups, typed))
     reading = with_clause_passes(typed, index, reading)  # "swerves her buggy wide of the robot", "late for boarding at B2"
     reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
-    reading = whole_of_zone(typed, index, reading)  # "all of the circle, roughly 300 punters, escapes": from the circle
+    reading = poured_through(typed, index, whole_of_zone(typed, index, reading))  # "all of the circle, roughly 300 punters, escapes": from the circle; "pour through the lobby and ...": from the lobby
     reading = with_passing_moments(typed, reading)  # "look at the robot as it passes the desk"
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
