@@ -7,7 +7,7 @@ what people do or where, which the clause reader leaves to them:
 - a purpose that names where people go ("late for boarding at B2": purposed_places.py); going to where
   a problem is (problem_places.py); a place said by what is done there as the room, not a thing in it
   (activity_place_zones.py); a kind of place searched for that the world lacks, refused
-  (searched_unknown.py);
+  (searched_unknown.py), or a room searched for by a name the world lacks (the same);
 - a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
   errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
   robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
@@ -39,7 +39,6 @@ from grove_tui.language.purposed_places import purposed_places
 from grove_tui.language.queued_movers import queued_movers
 from grove_tui.language.robot_hiding import hiding_after_seeing
 from grove_tui.language.its_people import its_people
-from grove_tui.language.searched_rooms import searched_rooms
 from grove_tui.language.searched_unknown import searched_unknown
 from grove_tui.language.stepped_aside import stepped_aside_in_place
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
@@ -56,7 +55,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
     groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
-    unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index), *searched_rooms(prompt, index))))
+    unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)
     return replace(reading, groups=groups, unknown_places=unknown)

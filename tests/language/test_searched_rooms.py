@@ -1,5 +1,5 @@
 """A room the world lacks, searched for by name ("looking for the book room") is refused; one the
-world has is not (searched_rooms)."""
+world has is not (searched_unknown)."""
 
 from __future__ import annotations
 
