@@ -22,7 +22,12 @@ _SCARED = frozenset("wary nervous scared frightened afraid fearful anxious uneas
 # Every word of feeling set apart from a clause (fronted_feelings.py: "Spellbound, a wee lad ..." is no name).
 FEELINGS = _CURIOUS | _SCARED | frozenset("awestruck starstruck dumbstruck thunderstruck delighted thrilled "
                                           "excited amazed astonished astounded bewildered puzzled baffled "
-                                          "perplexed gleeful giddy eager keen happy glad shy bashful".split())
+                                          "perplexed gleeful giddy eager keen happy glad shy bashful "
+                                          # anger and low moods: "Livid, an old man strides over ..." is no one
+                                          # called Livid (angry_approach.py reads the threat from the prompt)
+                                          "livid furious fuming irate enraged incensed seething angry outraged "
+                                          "cross indignant exasperated grumpy impatient weary sleepy bored "
+                                          "sad glum gloomy tearful upset".split())
 _WORD = r"(?:(?:a\s+(?:little|bit)|rather|very|quite|slightly|clearly|visibly|utterly|totally|somewhat|"\
         r"a\s+touch)\s+)?([a-z]+)"
 _FRONTED = re.compile(r"^\s*" + _WORD + r"\s*,", re.I)

@@ -3,7 +3,8 @@
 as a place, the clothes were refused as a place the world lacks ("wetsuit pads") and the person, run
 into it, was lost. Clothes say nothing of where anyone is or how many there are, so the phrase is left
 out after a word for people (or a counted plural no list names: "nine cub scouts in party hats, ...")
-where it runs into a verb in "-s" or ends an aside; a place named with a clothing word ("in the uniform store", "the kit room"
+where it runs into a verb in "-s", ends an aside or is theirs ("regulars in their best coats wait in the
+foyer", in a world with coat rails); a place named with a clothing word ("in the uniform store", "the kit room"
 of the world) is a place still."""
 
 from __future__ import annotations
@@ -73,9 +74,11 @@ def without_worn_clothes(text: str, index: PlaceIndex) -> str:
         nxt = m.group("next").lower()
         after = m.group("after").strip()
         place_word = any(index.knows(lemma(w)) for x in worn_words[1:-1] for w in x.split("-"))
+        owned = any(w in ("his", "her", "their", "my", "our", "your") for w in worn_words[1:-1])
         if not after[:1] in (",", ";") and (not (nxt.endswith("s") and not nxt.endswith("ss")) or
-                                            worn_words[-1] in _COLOURS) and not place_word:
+                                            worn_words[-1] in _COLOURS) and not place_word and not owned:
             return m.group(0)  # "two medics in scrubs walk", "women in pink sashes": read as it is
+        # but "regulars in their best coats wait": clothes someone owns are no room, whatever follows
         # but "a couple in paint-spattered jeans wander": no paint department in their clothes
         word = m.group("person").lower()
         if word in lx.ROBOT_WORDS or word in _NOT_PEOPLE or \
