@@ -36,6 +36,7 @@ from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.chat_requests import as_chat_request
 from grove_tui.language.clock_fronts import with_clock_commas
+from grove_tui.language.crammed_into import with_crammed_in
 from grove_tui.language.hyphened_waits import with_stays_as_lengths
 from grove_tui.language.fronted_time_commas import with_fronted_phrase_commas, with_fronted_time_commas
 from grove_tui.language.function_word_people import with_function_word_people
@@ -197,6 +198,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
+    text = with_crammed_in(text)  # "nine porters are crammed into the lounge": they are in it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_held_fronts(text)  # "Mug in hand, a keeper walks ...": no one called Mug
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
