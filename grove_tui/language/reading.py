@@ -126,8 +126,8 @@ from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
+from grove_tui.language.robot_alone_errands import a_robot_errand_alone
 from grove_tui.language.robot import RobotClause, RobotClauses
-from grove_tui.language.robot_errands import a_robot_errand_alone
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot

@@ -1,58 +1,66 @@
-"""A robot's errand with nobody in it (round 54): "the robot brings a sack of ice up from the cellar to
-the upstairs bar", "the robot carries a tray of glasses to the terrace". A sentence naming no people
-was read as a scene the model fills in (one group of "people"); when the whole sentence is the robot
-carrying a thing, from one place to another or to one, the sentence sets a robot task alone and no
-group is made up. A crowd said anywhere ("a busy bar", "through the crowd") keeps the made-up group."""
+"""The robot's errand: what it picks up where and drops off where, from its clause and its reading.
+
+"The robot carries books from the returns desk to the reading room": the desk is where it picks them up
+(it goes there first and stops a moment), the reading room where it drops them off. The reader gives the
+places as the clause's start and destination ("fetches a map from the cloakroom" gives the cloakroom as a
+place it passes); this pass names their roles:
+
+- carry, bring, take, ferry, haul ... X from A to B: pick up at A, drop off at B;
+- fetch, collect, pick up, get X from A (to B): pick up at A, drop off at B, else back where it set off;
+- deliver X to B (from A): drop off at B, after picking up at A when said.
+
+A clause without such a verb, or with none of its places, is no errand (None).
+"""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import re
+from dataclasses import dataclass
 
-from grove_tui.language import lexicon as lx
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.model import RobotReading
 
-if TYPE_CHECKING:
-    from collections.abc import Sequence
-
-    from grove_tui.language.people import People
-    from grove_tui.language.robot import RobotClause
-    from grove_tui.language.sentence import Sentence
-
-# Verbs of carrying a thing along ("brings a crate", "carries a tray", "delivers a parcel").
-_CARRYING = frozenset("take bring carry fetch ferry cart lug haul deliver transport wheel".split())
-# Particles between the verb and its object ("brings up a crate").
-_PARTICLES = frozenset("up down over across round around along back out in".split())
-# Words that say people are about, so the made-up group stays ("a busy bar", "through the crowd").
-_CROWD = frozenset("busy crowded packed heaving full crowd crowds rush throng bustling".split())
+# a word after the verb that is no object: "moves to the door", "gets through the crowd"
+_NO_OBJECT = "from|to|into|across|through|back|along|over|around|round|past|towards?|down|up|out|in|on|off|" \
+    "away|slowly|quickly|carefully|itself|its way|between|via|the way|the long way|a shortcut|the lift|" \
+    "the stairs|the elevator|the corridor"
+_CARRY = re.compile(r"\b(?:carr(?:y|ies|ying)|brings?|bringing|takes?|taking|ferr(?:y|ies|ying)|hauls?|hauling|"
+                    r"transports?|transporting|moves?|moving|wheels?|wheeling|pushes|pushing)\b"
+                    r"(?= (?!(?:%s)\b)[a-z])" % _NO_OBJECT, re.I)
+_FETCH = re.compile(r"\b(?:fetch(?:es|ing)?|collect(?:s|ing)?|picks? up|picking up|gets?|getting|retrieves?|"
+                    r"retrieving)\b(?= (?!(?:%s)\b)[a-z])" % _NO_OBJECT, re.I)
+_DELIVER = re.compile(r"\b(?:deliver(?:s|ing)?|drops? off|dropping off)\b", re.I)
+_FROM = re.compile(r"\bfrom\b", re.I)
+_TO = re.compile(r"\b(?:to|into|over to|up to)\b", re.I)
 
 
-def a_robot_errand_alone(s: Sentence, people: People, found: Sequence[RobotClause]) -> bool:
-    """Whether a sentence naming nobody is only the robot carrying a thing (no group to make up)."""
-    if len(found) != 1 or found[0].verb is None or found[0].command:
-        return False
-    rc = found[0]
-    verb = rc.verb
-    assert verb is not None
-    if verb_lemma(s.low[verb]) not in _CARRYING or any(w in _CROWD for w in s.low):
-        return False
-    covered = set(rc.tokens)
-    if any(i not in covered and not s.is_punct(i) for i in range(verb, s.n)):
-        return False  # more said after the robot's clause
-    k = verb + 1
-    while k < s.n and s.low[k] in _PARTICLES:
-        k += 1
-    if k >= s.n or s.low[k] not in lx.DETERMINERS:
-        return False  # "brings them", "carries on": no thing said
-    head = k + 1
-    while head < s.n and s.w[head].pos in ("ADJ", "NOUN", "NUM") and head + 1 < s.n and \
-            s.w[head + 1].pos in ("NOUN", "ADJ"):
-        head += 1
-    if head >= s.n or s.w[head].pos != "NOUN" or people.is_person_noun(head):
-        return False
-    if head + 2 < s.n and s.low[head + 1] == "of":  # "a sack of ice", "a crate of mixers", not "a group of kids"
-        j = head + 2
-        while j < s.n and s.w[j].pos in ("ADJ", "DET"):
-            j += 1
-        if j < s.n and people.is_person_noun(j):
-            return False
-    return True
+@dataclass(frozen=True)
+class RobotErrand:
+    """`pickup`: where it picks the thing up (a world place), None when it has it already; `dropoff`:
+    where it leaves it, None for back where it set off (a fetch)."""
+
+    kind: str  # "carry", "fetch" or "deliver"
+    pickup: str | None
+    dropoff: str | None
+
+
+def robot_errand(robot: RobotReading | None) -> RobotErrand | None:
+    """The robot's errand, when its clause asks one of a "cross" robot (module doc)."""
+    if robot is None or robot.task != "cross" or robot.guides or robot.passes:
+        return None
+    text = robot.text
+    said_from = _FROM.search(text) is not None
+    from_place = robot.start or (robot.via[0] if robot.via and said_from else None)
+    if _DELIVER.search(text):
+        if robot.destination is None:
+            return None
+        return RobotErrand("deliver", from_place if said_from else None, robot.destination)
+    if _FETCH.search(text):
+        if from_place is None or not said_from:
+            return None
+        return RobotErrand("fetch", from_place, robot.destination if _TO.search(text) else None)
+    if _CARRY.search(text):
+        # "takes the lift to the first floor", "moves to the door": a carry names both ends
+        if from_place is None or robot.destination is None or not said_from:
+            return None
+        return RobotErrand("carry", from_place, robot.destination)
+    return None

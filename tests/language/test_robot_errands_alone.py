@@ -1,5 +1,5 @@
 """Round 54 (r54a): the robot carrying a thing from one place to another, with nobody named, is a robot
-task alone: no group of people is made up (language/robot_errands.py)."""
+task alone: no group of people is made up (language/robot_alone_errands.py)."""
 
 from __future__ import annotations
 
