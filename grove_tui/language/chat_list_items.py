@@ -20,7 +20,7 @@ def chat_list_item(s: Sentence, i: int) -> bool:
     """Whether the noun at i is one counted item of a chat list of counted people (module doc)."""
     lem = s.lemma(i)
     if lem in lx.ROBOT_WORDS or lem in lx.CARRYING_THINGS or lem in lx.BUILDING_WORDS or \
-            s.w[i].pos not in ("NOUN", "PROPN", "VERB", "ADJ"):
+            s.w[i].pos not in ("NOUN", "PROPN", "VERB"):
         return False
     item = _item(s, i)
     if item is None:
@@ -52,7 +52,7 @@ def _heads(s: Sentence) -> list[int]:
     """The nouns of every counted item of the sentence's list."""
     out = []
     for i in range(1, s.n - 2):
-        if s.w[i].pos in ("NOUN", "PROPN", "VERB", "ADJ") and _item(s, i) is not None:
+        if s.w[i].pos in ("NOUN", "PROPN", "VERB") and _item(s, i) is not None:
             out.append(i)
     return out
 
