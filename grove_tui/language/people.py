@@ -38,6 +38,7 @@ from grove_tui.language.moved_described import moved_described_person
 from grove_tui.language.aid_things import aid_thing
 from grove_tui.language.failing_things import failing_thing
 from grove_tui.language.feeling_people import feels_about_the_robot
+from grove_tui.language.chat_list_items import chat_list_doer, chat_list_item
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
 from grove_tui.language.owned_by_subject import subject_of_his_or_her
@@ -103,7 +104,7 @@ class People:
         if goes_along_a_route(s, i) or by_a_person_adjective(s, i):
             return True  # "the dispenser nips out of the pharmacy into the kitchen", "an elderly gent lingers"
         if (lem in lx.NON_PEOPLE or weather_noun(lem)) and lem not in lx.PERSON_NOUNS:
-            return timer_person(s, i) or animal_idiom_person(s, i)  # "a first-timer": a person, though a timer is a thing
+            return timer_person(s, i) or animal_idiom_person(s, i) or chat_list_doer(s, i)  # "a first-timer": a person, though a timer is a thing
         if lem in ("guard", "watch", "sentry") and i > 0 and s.verb(i - 1) in ("stand", "keep", "mount"):
             return False  # "the robot stands guard at the door": a duty, nobody
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i) or adjective_person(s, i):
@@ -116,7 +117,7 @@ class People:
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
         if counted_plural_subject(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
             return True  # "thirty top-year juniors troop into ...", "the Dean leaves his vestry"
-        if moves_as_a_person(s, i):
+        if moves_as_a_person(s, i) or chat_list_item(s, i):  # "..., 1 sysadmin in comms room"
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair

@@ -36,6 +36,7 @@ from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.chat_requests import as_chat_request
 from grove_tui.language.clock_fronts import with_clock_commas
+from grove_tui.language.crammed_into import with_crammed_in
 from grove_tui.language.hyphened_waits import with_stays_as_lengths
 from grove_tui.language.fronted_time_commas import with_fronted_phrase_commas, with_fronted_time_commas
 from grove_tui.language.function_word_people import with_function_word_people
@@ -125,6 +126,7 @@ from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
+from grove_tui.language.robot_alone_errands import a_robot_errand_alone
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
@@ -196,6 +198,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
+    text = with_crammed_in(text)  # "nine porters are crammed into the lounge": they are in it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_held_fronts(text)  # "Mug in hand, a keeper walks ...": no one called Mug
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
@@ -267,6 +270,8 @@ def _read(s: Sentence) -> PromptReading:
             s, people, mentions, groups.read(mentions, found))))  # "a guard notices smoke and ..."; "waits, then wheels a patient to X"
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
+    elif a_robot_errand_alone(s, people, found):  # "the robot brings a sack of ice from X to Y": nobody there
+        groups.notes.append("no people are named: the robot's errand alone")
     elif clauses.negated_tokens():
         # "Nobody is in the ward": a sentence about nobody sets no scene; nobody to simulate
         places.scan_unknown([i for i in range(s.n) if i not in robot_tokens])
