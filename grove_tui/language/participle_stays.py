@@ -2,7 +2,8 @@
 around the check-in desk, a traveller ...", "After ten minutes sitting at the bar, ...", "After half an
 hour queuing by the counter, ...". The place after the "-ing" word (and a particle such as "around" or
 "about") is where the stay was spent, so it is where they start: that thing itself, not its room, as
-`stay_places` already reads "After forty minutes on the waiting chairs".
+`stay_places` already reads "After forty minutes on the waiting chairs". A thing handled all that while
+("After half an hour fiddling with the bollards") is where they were too (round 54).
 """
 
 from __future__ import annotations
@@ -20,6 +21,9 @@ def participle_spot(s: Sentence, k: int) -> int | None:
     if k >= s.n or not s.low[k].endswith("ing") or len(s.low[k]) < 5:
         return None
     j = k + 1
+    with_at = j + 1 if j < s.n and s.low[j] in _PARTICLES else j
+    if with_at < s.n and s.low[with_at] == "with" and _place_follows(s, with_at):
+        return with_at  # "fiddling with the hook-up posts", "messing about with the scanner": the thing handled
     if j < s.n and s.low[j] in _PARTICLES:
         if j + 1 < s.n and stay_place_after(s, j + 1):
             return j + 1  # "hanging about near the gate"
@@ -28,9 +32,9 @@ def participle_spot(s: Sentence, k: int) -> int | None:
 
 
 def _place_follows(s: Sentence, j: int) -> bool:
-    """Whether "around"/"about" at j is followed by a place of the world up to the clause's comma."""
+    """Whether "around"/"about"/"with" at j is followed by a place of the world up to the clause's comma."""
     end = j + 1
-    while end < s.n and not s.is_punct(end):
+    while end < s.n and (not s.is_punct(end) or s.hyphen_inside(end)):  # "the hook-up posts"
         end += 1
     return end < s.n and s.low[end] == "," and any(s.index.knows(s.lemma(x)) or s.index.knows(s.low[x])
                                                   for x in range(j + 1, end))
