@@ -29,8 +29,9 @@ def _verb_forms() -> dict[int, dict[str, str]]:
     forms: dict[int, dict[str, str]] = {}
     for v in verbs:
         stem = v[:-1] if v.endswith("e") else v
-        third = v[:-1] + "ies" if v.endswith("y") and v[-2] not in "aeiou" else v + ("es" if v.endswith(("s", "sh", "ch", "x")) else "s")
-        past = v + "d" if v.endswith("e") else (v[:-1] + "ied" if v.endswith("y") and v[-2] not in "aeiou" else v + "ed")
+        cy = v.endswith("y") and v[-2] not in "aeiou"  # "hurry": "hurries", "hurried"
+        third = v[:-1] + "ies" if cy else v + ("es" if v.endswith(("s", "sh", "ch", "x")) else "s")
+        past = v + "d" if v.endswith("e") else (v[:-1] + "ied" if cy else v + "ed")
         for form in (v, third, past, stem + "ing"):
             forms.setdefault(len(form), {}).setdefault(form, v)
     return forms

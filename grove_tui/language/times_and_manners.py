@@ -74,7 +74,8 @@ def time_or_manner(s: Sentence, k: int, prep: str) -> bool:
             head = lemma(low[end - 1])
             words = {lemma(w) for w in low[k:end]}
             timed = head in _TIMED_HEADS and end - 2 >= k and low[end - 2] in _TIMED_HEADS[head]
-            if timed or head in _DAYS or head in _MONTHS or head in _FEASTS or (words & _FEASTS and head in ("day", "eve")):
+            if timed or head in _DAYS or head in _MONTHS or head in _FEASTS or \
+                    (words & _FEASTS and head in ("day", "eve")):
                 return True  # "on a sunny bank holiday Monday", "on Boxing Day", "in the rush hour"
     return False
 
