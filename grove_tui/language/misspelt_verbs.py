@@ -4,7 +4,7 @@ the misspelt verb is tagged a noun and read as the last word of the place before
 trapse"), a place the world lacks, so the prompt was refused.
 
 A word is written out only when it is no English word the parser knows, no place word of the world and
-no word for people (nor one edit from one: those are put right by spelling.py and the people rule), and
+no word for people (nor one edit from one, or from a place word's plural: those are put right by spelling.py and the people rule), and
 exactly one verb of going or staying the lexicon knows has a form (base, "-s", "-ed", "-ing") one edit
 away. Words of fewer than five letters and capitalised words (names) are left as written."""
 
@@ -45,12 +45,26 @@ def _near_verb(word: str) -> str | None:
     return found.pop() if len(found) == 1 else None
 
 
+def _inflected_word(word: str) -> bool:
+    """Whether `word` is a form of a real word, or one of the verb forms themselves ("strolls", "spilt")."""
+    if any(word in forms for forms in _verb_forms().values()):
+        return True
+    for end in ("s", "es", "ed", "d", "ing", "t", "ies", "ied"):
+        if word.endswith(end) and len(word) - len(end) >= 3:
+            base = word[:-len(end)]
+            if any(dictionary_word(b) or known_word(b) for b in (base, base + "e", base + "y", base + "l")):
+                return True
+    return False
+
+
 def with_misspelt_verbs(text: str, index: PlaceIndex) -> str:
     """`text` with misspelt verbs of going written out (see the module doc)."""
     def fix(m: re.Match[str]) -> str:
         word = m.group(1)
         if known_word(word) or dictionary_word(word) or word in index.vocabulary or word in lx.PERSON_NOUNS \
-                or near_person_noun(word) is not None or any(one_edit(word, t) for t in index.name_words):
+                or near_person_noun(word) is not None or any(one_edit(word, t) or one_edit(word, t + "s") for t in index.name_words):
             return word
+        if _inflected_word(word):
+            return word  # "strolls", "spilt", "loiters": a real word the vocabulary holds only in its base form
         return _near_verb(word) or word
     return _WORD.sub(fix, text)

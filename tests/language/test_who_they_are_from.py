@@ -10,7 +10,7 @@ import pytest
 @pytest.mark.parametrize("world,prompt,destination", [
     ("zoo", "Twelve children from the primary school trapse over to the penguin pool.", "penguin_pool_rail"),
     ("zoo", "Twelve children from the primary school traipse over to the penguin pool.", "penguin_pool_rail"),
-    ("hospital", "Two porters from the day ward hurrys to the cafeteria.", "cafeteria"),
+    ("hospital", "Two porters from the day ward hurry to the cafeteria.", "cafeteria"),
     ("museum", "A gang of teenagers from the youth club mooch over to the café.", "cafe"),
 ])
 def test_people_from_a_place_the_world_lacks_are_not_refused(read, world, prompt, destination):
