@@ -28,6 +28,8 @@ from grove_tui.language.hidden_behind import hidden_behind
 from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.outing_words import an_outing
 from grove_tui.language.weather_words import the_weather
+from grove_tui.language.who_from import who_they_are_from
+from grove_tui.language.bid_things import a_thing_bid_on
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.span_ends import span_after_part
 from grove_tui.language.times_and_manners import time_or_manner
@@ -46,6 +48,10 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
     if prep in ("at", "from", "in", "during") and names_an_event(s, k):
         return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
+    if a_thing_bid_on(s, k, prep, at):
+        return True  # "lost out on the bureau she came for": a thing (bid_things.py)
+    if who_they_are_from(s, k, prep, at):
+        return True  # "infants from the village school traipse across": who they are (who_from.py)
     if held_or_span(s, k, prep, at):
         return True  # "clipboard in hand", "at the interval", "midway through the lecture" (round 46)
     if hidden_behind(s, k, prep, at):

@@ -164,6 +164,7 @@ from grove_tui.language.unnamed_counts import counted_unnamed
 from grove_tui.language.tailed_counts import with_counts_before
 from grove_tui.language.robot_guided_people import following_the_robot
 from grove_tui.language.waited_escorts import with_escorts_after_a_wait
+from grove_tui.language.misspelt_verbs import with_misspelt_verbs
 from grove_tui.world.model import World
 
 NO_WORDS = ("the prompt has no words to read (only symbols or emoji): describe in English who is there and what "
@@ -189,6 +190,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_chat_wait(with_school_year_pupils(text))  # "12 yr7s in X": "12 year 7 pupils in X"; "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = with_scattered_counts(with_joined_ing_items(chat_fragments(as_listed_chat_wait(text))))  # "3 from sales gossiping", "... @ desk, 10 mins then out"
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
+    text = with_misspelt_verbs(text, index)  # "infants from the school trapse across": "traipse", no "school trapse"
     text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy

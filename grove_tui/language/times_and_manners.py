@@ -4,7 +4,9 @@
   Tuesday", "in the rush hour", "over the Easter weekend" (the phrase's head is a word of the calendar);
 - a clock time: "at half past nine", "at quarter to ten", "at nine o'clock", "by 9.30";
 - how people go: "on foot", "on tiptoe", "on crutches", "on their bikes", "by bike", "by bus", "in a hurry",
-  "in single file", "in pairs".
+  "in single file", "in pairs";
+- round 54: the start or end of a span, "from first light", "since dawn", "until dusk", "from opening time",
+  "until closing".
 """
 
 from __future__ import annotations
@@ -16,7 +18,15 @@ from grove_tui.language.tokens import lemma
 
 _DAYS = frozenset("monday tuesday wednesday thursday friday saturday sunday weekday weekend day night eve holiday "
                   "morning afternoon evening lunchtime teatime dawn dusk daybreak nightfall midday midnight noon "
-                  "hour fortnight week month year season term".split())
+                  "hour fortnight week month year season term sunrise sunset sunup sundown daylight twilight "
+                  "teatime suppertime bedtime".split())
+# Heads that say a time only with a word before them ("first light", "opening time", "closing time").
+_TIMED_HEADS = {"light": frozenset("first last".split()),
+                "time": frozenset("opening closing lunch tea supper dinner bed kick-off kickoff feeding break "
+                                  "home play nap start finish".split())}
+# Bare words of a venue's hours after "from", "since", "until", "till" ("from opening", "until closing").
+_HOURS_WORDS = frozenset("opening closing kick-off kickoff dawn dusk daybreak nightfall sunrise sunset "
+                         "lunchtime teatime breakfast lunch".split())
 _MONTHS = frozenset("january february march april may june july august september october november december".split())
 _FEASTS = frozenset("christmas easter xmas diwali eid hanukkah halloween hallowe'en ramadan whitsun "
                     "michaelmas hogmanay".split())
@@ -51,7 +61,11 @@ def time_or_manner(s: Sentence, k: int, prep: str) -> bool:
         return True  # "in a hurry", "in single file", "in pairs"
     if prep in ("at", "by", "around", "about", "after", "before", "until", "till") and _clock(s, k):
         return True  # "at half past nine", "by 9.30", "at ten o'clock"
-    if prep in ("on", "in", "at", "during", "over", "for", "until", "till", "by", "after", "before", "around"):
+    if prep in ("from", "since", "until", "till") and j == k and first in _HOURS_WORDS and \
+            not _a_place_noun_after(s, j):
+        return True  # "from opening", "until closing", "since dawn" (round 54)
+    if prep in ("on", "in", "at", "during", "over", "for", "until", "till", "by", "after", "before", "around",
+                "from", "since"):
         end = k
         while end < s.n and (s.w[end].pos in ("ADJ", "NOUN", "PROPN") or s.w[end].pos == "DET" and end == k or
                              low[end] in ("'s", "’s", "year's", "new")):
@@ -59,7 +73,9 @@ def time_or_manner(s: Sentence, k: int, prep: str) -> bool:
         if end > k:
             head = lemma(low[end - 1])
             words = {lemma(w) for w in low[k:end]}
-            if head in _DAYS or head in _MONTHS or head in _FEASTS or (words & _FEASTS and head in ("day", "eve")):
+            timed = head in _TIMED_HEADS and end - 2 >= k and low[end - 2] in _TIMED_HEADS[head]
+            if timed or head in _DAYS or head in _MONTHS or head in _FEASTS or \
+                    (words & _FEASTS and head in ("day", "eve")):
                 return True  # "on a sunny bank holiday Monday", "on Boxing Day", "in the rush hour"
     return False
 
