@@ -126,7 +126,6 @@ from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
-from grove_tui.language.robot_alone_errands import a_robot_errand_alone
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
 from grove_tui.language.robot_crowds import via_the_people_passed
@@ -272,8 +271,6 @@ def _read(s: Sentence) -> PromptReading:
             s, people, mentions, groups.read(mentions, found))))  # "a guard notices smoke and ..."; "waits, then wheels a patient to X"
     elif (assumed := groups.evacuees_of_an_emptied_zone()) is not None:
         read = (assumed,)
-    elif a_robot_errand_alone(s, people, found):  # "the robot brings a sack of ice from X to Y": nobody there
-        groups.notes.append("no people are named: the robot's errand alone")
     elif clauses.negated_tokens():
         # "Nobody is in the ward": a sentence about nobody sets no scene; nobody to simulate
         places.scan_unknown([i for i in range(s.n) if i not in robot_tokens])
