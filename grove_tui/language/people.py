@@ -38,6 +38,7 @@ from grove_tui.language.moved_described import moved_described_person
 from grove_tui.language.aid_things import aid_thing
 from grove_tui.language.failing_things import failing_thing
 from grove_tui.language.feeling_people import feels_about_the_robot
+from grove_tui.language.chore_subjects import chore_subject
 from grove_tui.language.chat_list_items import chat_list_doer, chat_list_item
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
@@ -123,7 +124,7 @@ class People:
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if suffix_role(s, i) or coordinated_role(s, i) or apposed_name(s, i):  # "our guide Priya strolls": Priya
             return True  # "both quiz contestants leave", "a greeter by the leaflet stand", "the drummer and bassist haul"
-        if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
+        if self._subject_of_a_human_verb(i) or chore_subject(s, i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
                 told_as_he_or_she(s, i) or placed_person(s, i) or scene_doer(s, i):  # "an old dear shrieks when she spots the robot"
             return True
