@@ -42,6 +42,7 @@ from grove_tui.language.chore_subjects import chore_subject
 from grove_tui.language.chat_list_items import chat_list_doer, chat_list_item
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
+from grove_tui.language.verb_tagged_plurals import verb_tagged_plural
 from grove_tui.language.owned_by_subject import subject_of_his_or_her
 from grove_tui.language.life_adjectives import by_a_life_adjective
 from grove_tui.language.lone_person import by_a_person_adjective, goes_along_a_route, told_as_he_or_she
@@ -116,7 +117,7 @@ class People:
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if trader_subject(s, i) or listed_person(s, i) or feels_about_the_robot(s, i) or youth_unit(s, i):
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
-        if counted_plural_subject(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
+        if counted_plural_subject(s, i) or verb_tagged_plural(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
             return True  # "thirty top-year juniors troop into ...", "the Dean leaves his vestry"
         if moves_as_a_person(s, i) or chat_list_item(s, i):  # "..., 1 sysadmin in comms room"
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
