@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 _SCALES = {"dozen": "twelve", "score": "twenty"}
-_ROUGH = re.compile(r"\b(a|about\s+a|some)\s+(dozen|score)\s+or\s+so\b", re.IGNORECASE)
+_ROUGH = re.compile(r"(?<!half\s)\b(a|about\s+a|some)\s+(dozen|score)\s+or\s+so\b", re.IGNORECASE)
 
 
 def _number(m: re.Match[str]) -> str:
@@ -21,5 +21,5 @@ def _number(m: re.Match[str]) -> str:
 
 
 def with_rough_scales(text: str) -> str:
-    """The text with "a dozen or so" and "a score or so" written as "twelve or so", "twenty or so"."""
+    """The text with "a dozen or so" (not "half a dozen or so") and "a score or so" written as "twelve or so", "twenty or so"."""
     return _ROUGH.sub(_number, text)
