@@ -38,9 +38,11 @@ from grove_tui.language.moved_described import moved_described_person
 from grove_tui.language.aid_things import aid_thing
 from grove_tui.language.failing_things import failing_thing
 from grove_tui.language.feeling_people import feels_about_the_robot
+from grove_tui.language.chore_subjects import chore_subject
 from grove_tui.language.chat_list_items import chat_list_doer, chat_list_item
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
+from grove_tui.language.verb_tagged_plurals import verb_tagged_plural
 from grove_tui.language.owned_by_subject import subject_of_his_or_her
 from grove_tui.language.life_adjectives import by_a_life_adjective
 from grove_tui.language.lone_person import by_a_person_adjective, goes_along_a_route, told_as_he_or_she
@@ -115,7 +117,7 @@ class People:
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"
         if trader_subject(s, i) or listed_person(s, i) or feels_about_the_robot(s, i) or youth_unit(s, i):
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
-        if counted_plural_subject(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
+        if counted_plural_subject(s, i) or verb_tagged_plural(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
             return True  # "thirty top-year juniors troop into ...", "the Dean leaves his vestry"
         if moves_as_a_person(s, i) or chat_list_item(s, i):  # "..., 1 sysadmin in comms room"
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
@@ -123,7 +125,7 @@ class People:
             return True  # "the lifeguard", though the world names a lifeguard's chair
         if suffix_role(s, i) or coordinated_role(s, i) or apposed_name(s, i):  # "our guide Priya strolls": Priya
             return True  # "both quiz contestants leave", "a greeter by the leaflet stand", "the drummer and bassist haul"
-        if self._subject_of_a_human_verb(i) or self._agent_subject(i) or self._agent_going(i) or \
+        if self._subject_of_a_human_verb(i) or chore_subject(s, i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \
                 told_as_he_or_she(s, i) or placed_person(s, i) or scene_doer(s, i):  # "an old dear shrieks when she spots the robot"
             return True
