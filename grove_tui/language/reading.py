@@ -122,6 +122,7 @@ from grove_tui.language.parser import parse
 from grove_tui.language.passive_escort import to_active
 from grove_tui.language.passive_order import in_said_order
 from grove_tui.language.passive_late_agents import late_agents_to_active
+from grove_tui.language.followed_as import followed_route_first
 from grove_tui.language.swamped_places import crowded_places_to_active
 from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
@@ -229,7 +230,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)
     if active is None:
-        active = crowded_places_to_active(text, words)  # "X is swamped by people drifting over from Y"
+        active = crowded_places_to_active(text, words) or followed_route_first(text, words)  # "X is swamped by people drifting over from Y"
     late = active is None and (active := late_agents_to_active(text, words)) is not None  # "is wheeled up to ward B by a porter": the taker first
     # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
