@@ -27,6 +27,8 @@ def to_a_thing_before(s: Sentence, at: int) -> bool:
         x -= 1
     if not nouns or s.w[at - 1].pos != "NOUN" or s.low[x] not in _OPENERS or x < 1 or s.low[x - 1] not in _TO:
         return False
+    if x >= 2 and s.w[x - 2].tag in ("VBN", "JJ"):
+        return False  # "glued to her phone on the benches": no going to the phone
     # the thing names no place of the world ("to her desk by the window" is the desk)
     # nor the robot or a person ("runs up to the robot beside the kiosk": where they meet it)
     return not any(_names_a_place(s, s.lemma(n)) or s.low[n] in lx.ROBOT_WORDS or s.lemma(n) in lx.PERSON_NOUNS

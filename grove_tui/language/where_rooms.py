@@ -44,10 +44,10 @@ def room_doing_where(index: PlaceIndex, activity: str, meant: Decided) -> Decide
 def other_room_saying_it(index: PlaceIndex, activity: str, meant: Decided) -> Decided:
     """The one other room whose own description says every word of the clause `activity` ("where the
     dinghies are launched": the slipway "where dinghies ... are launched"), when the place `meant` is a
-    room, or a fixture (the dinghy racks) in a room, that does not say it all; `meant` otherwise. The
+    fixture (the dinghy racks) in a room that does not say it all; `meant` otherwise. The
     thing handled is kept in one room and handled in another; the clause names where it is handled."""
     match = meant[0]
-    if match.kind not in ("entity", "zone"):
+    if match.kind != "entity":
         return meant
     fixture, room = index.entry(match.name), index.entry(match.zone)
     if fixture is None or room is None:
