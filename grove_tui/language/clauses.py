@@ -39,6 +39,7 @@ from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import clause_reaction
 from grove_tui.language.numbered_names import numbered_kind, numbered_name
 from grove_tui.language.moved_things import moved_along
+from grove_tui.language.contents_of import contents_of_thing
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.stays import stay_after_for, stay_in
 from grove_tui.language.tokens import lemma, verb_lemma
@@ -487,7 +488,7 @@ class Clauses(ClauseCues):
                     (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
-            if thing_adjective(s, i):
+            if thing_adjective(s, i) or contents_of_thing(s, i):
                 continue  # "carries clean linen to ward B": a thing's adjective, no cleaning
             v, kind = s.verb(i), verb_intent(s, i)  # the lexicon's, or a verb of moving in or with something
             if kind is not None and not (v == "line" and s.w[i].pos != "VERB"):

@@ -31,7 +31,7 @@ from grove_tui.language.place_head_clauses import fixture_named_by_head, head_de
 from grove_tui.language.place_other_kinds import kind_agrees
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
-from grove_tui.language.where_rooms import room_doing_where
+from grove_tui.language.where_rooms import other_room_saying_it, room_doing_where
 from grove_tui.language.user_kinds import USER_KINDS
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.service_purposes import served_point, service_done
@@ -268,7 +268,8 @@ class PlaceMeaning:
             rank_described(self.s.index, activity) or room_doing_it(self.s.index, activity)
         if meant is None:
             return None
-        return room_doing_where(self.s.index, activity, room_of_listed(self.s, self.people, first, end, meant)), end
+        meant = room_doing_where(self.s.index, activity, room_of_listed(self.s, self.people, first, end, meant))
+        return other_room_saying_it(self.s.index, activity, meant), end
 
     def _active(self, first: int, end: int) -> str:
         """The clause's words, a passive said as what people do there: "the old maps are kept" is "you keep

@@ -18,6 +18,18 @@ _JOINS = frozenset({"and", "or", ",", "&"})
 _DETERMINERS = frozenset({"the", "a", "an", "all", "some", "those", "these", "its", "their", "our"})
 
 
+# Past participles that still only say where the things are ("where the lockers are kept").
+_PLACED = frozenset({"located", "situated", "sited", "placed", "housed", "kept", "stored", "stacked", "parked",
+                     "lined", "found", "set", "left", "hung", "racked", "moored"})
+
+
+def _done_to_them(low: Sequence[str], verb: int) -> bool:
+    """Whether a passive follows the verb of being, saying what is done to the things there ("where the
+    dinghies are launched"): a room where that is done, for where_clause, not the room that holds them."""
+    nxt = low[verb + 1] if verb + 1 < len(low) else ""
+    return low[verb] in ("is", "are", "were", "was", "be") and nxt.endswith("ed") and nxt not in _PLACED
+
+
 def _zone_of(index: PlaceIndex, words: Sequence[str]) -> str | None:
     """The zone of the one fixture the words name, None when they name a room or nothing."""
     words = [w for w in words if w not in _DETERMINERS]
@@ -35,7 +47,7 @@ def where_things_are(index: PlaceIndex, low: Sequence[str], k: int) -> tuple[Dec
     if k >= len(low) or low[k] not in ("where", "wherever"):
         return None
     verb = next((x for x in range(k + 2, min(len(low), k + 9)) if low[x] in _BEING), None)
-    if verb is None:
+    if verb is None or _done_to_them(low, verb):
         return None
     parts: list[list[str]] = [[]]
     for w in low[k + 1:verb]:

@@ -124,6 +124,9 @@ from grove_tui.language.parser import parse
 from grove_tui.language.passive_escort import to_active
 from grove_tui.language.passive_order import in_said_order
 from grove_tui.language.passive_late_agents import late_agents_to_active
+from grove_tui.language.going_and_getting import going_to_get
+from grove_tui.language.followed_as import followed_route_first
+from grove_tui.language.swamped_places import crowded_places_to_active
 from grove_tui.language.perceivers import without_perceivers
 from grove_tui.language.people import People
 from grove_tui.language.place_phrases import PlacePhrases
@@ -184,7 +187,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
-    text = with_joined_prefixes(without_adjective_commas(without_name_commas(as_chat_request(text), index)))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name; "re-cable": one verb
+    text = going_to_get(with_joined_prefixes(without_adjective_commas(without_name_commas(as_chat_request(text), index))))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name; "re-cable": one verb
     text = with_fronted_passives_after(with_full_is(text))  # "Dad's snoozing on the couch": Dad is snoozing, one person; "While X is restocked by a porter, ...": "X is restocked by a porter while ..."
     text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(with_robot_in_tow(text))  # "With a nurse in tow, the robot ...", "Followed by a nurse, the robot ...": the nurse follows the robot
@@ -229,6 +232,8 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_delivery(text)  # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)
+    if active is None:
+        active = crowded_places_to_active(text, words) or followed_route_first(text, words)  # "X is swamped by people drifting over from Y"
     late = active is None and (active := late_agents_to_active(text, words)) is not None  # "is wheeled up to ward B by a porter": the taker first
     # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:

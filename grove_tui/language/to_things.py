@@ -27,7 +27,18 @@ def to_a_thing_before(s: Sentence, at: int) -> bool:
         x -= 1
     if not nouns or s.w[at - 1].pos != "NOUN" or s.low[x] not in _OPENERS or x < 1 or s.low[x - 1] not in _TO:
         return False
+    if x >= 2 and s.w[x - 2].tag in ("VBN", "JJ"):
+        return False  # "glued to her phone on the benches": no going to the phone
     # the thing names no place of the world ("to her desk by the window" is the desk)
     # nor the robot or a person ("runs up to the robot beside the kiosk": where they meet it)
-    return not any(s.index.knows(s.lemma(n)) or s.low[n] in lx.ROBOT_WORDS or s.lemma(n) in lx.PERSON_NOUNS
+    return not any(_names_a_place(s, s.lemma(n)) or s.low[n] in lx.ROBOT_WORDS or s.lemma(n) in lx.PERSON_NOUNS
                    for n in nouns)
+
+
+def _names_a_place(s: Sentence, word: str) -> bool:
+    """Whether a place of the world is called by this word, not only by names it modifies: "boat" of
+    "boat shop" and "boat trailers" names no place, so "to their boat on pontoon B" goes to pontoon B."""
+    if not s.index.knows(word):
+        return False
+    phrases = [p for e in s.index.entries for p in e.phrases if word in p]
+    return not phrases or any(p[-1] == word for p in phrases)

@@ -39,3 +39,32 @@ def room_doing_where(index: PlaceIndex, activity: str, meant: Decided) -> Decide
         return meant
     return (PlaceMatch(room.name, room.kind, room.name, match.score, False), meant[1],
             f"{meant[2]}; the room whose own words say it, {room.name}", meant[3])
+
+
+def other_room_saying_it(index: PlaceIndex, activity: str, meant: Decided) -> Decided:
+    """The one other room whose own description says every word of the clause `activity` ("where the
+    dinghies are launched": the slipway "where dinghies ... are launched"), when the place `meant` is a
+    fixture (the dinghy racks) in a room that does not say it all; `meant` otherwise. The
+    thing handled is kept in one room and handled in another; the clause names where it is handled."""
+    match = meant[0]
+    if match.kind != "entity":
+        return meant
+    fixture, room = index.entry(match.name), index.entry(match.zone)
+    if fixture is None or room is None:
+        return meant
+    words = _stems(activity)
+    said_there = _loose(room.description) | _loose(" ".join(room.said)) | _loose(fixture.description)
+    if len(words) < 2 or words <= said_there:
+        return meant
+    others = [e for e in index.entries if e.kind == "zone" and e.name != room.name and words <= _loose(e.description)]
+    if len(others) != 1:
+        return meant
+    other = others[0]
+    return (PlaceMatch(other.name, other.kind, other.name, match.score, False), meant[1],
+            f"{meant[2]}; the room whose own words say all of it, {other.name}", meant[3])
+
+
+def _loose(text: str) -> set[str]:
+    """The stems of `text`, a past participle's also without its ending ("launched": "launch", "stored": "store")."""
+    stems = _stems(text)
+    return stems | {w[:-2] for w in stems if w.endswith("ed")} | {w[:-1] for w in stems if w.endswith("ed")}
