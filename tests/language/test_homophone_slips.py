@@ -24,3 +24,8 @@ def test_a_right_too_and_there_are_left_alone():
     index = place_index(load_world("museum"))
     text = "A man walks to the cafe, and his wife goes there too."
     assert with_homophone_slips(text, index) == text
+
+
+def test_people_who_form_a_line_still_form_it(read):
+    (g,) = read("museum", "Around thirty visitors form a long line at the cafe.").groups
+    assert g.intent == "queue"
