@@ -259,12 +259,28 @@ def count_of(s: Sentence, q: Quantifier, key: str, default: tuple[int, int] = lx
 
 
 def duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
-    """(seconds, index after) of "five minutes", "a minute", "half an hour", "a few minutes"."""
+    """(seconds, index after) of "five minutes", "a minute", "half an hour", "a few minutes", and a unit
+    and a half or a quarter more ("an hour and a half", "two hours and a quarter")."""
+    found = _duration_at(s, k)
+    if found is None:
+        return None
+    seconds, end = found
+    part = {"half": 0.5, "quarter": 0.25}.get(s.low[end + 2]) if end + 2 < s.n else None
+    if part and s.low[end:end + 2] == ["and", "a"] and lemma(s.low[end - 1]) in lx.DURATION_UNITS:
+        return seconds + lx.DURATION_UNITS[lemma(s.low[end - 1])] * part, end + 3
+    return found
+
+
+def _duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
     low = s.low
     if k >= s.n:
         return None
     if low[k] == "half" and k + 2 < s.n and low[k + 1] in ("a", "an") and lemma(low[k + 2]) in lx.DURATION_UNITS:
         return lx.DURATION_UNITS[lemma(low[k + 2])] / 2, k + 3
+    many = {"two": 2, "three": 3, "2": 2, "3": 3}.get(low[k])
+    if many and k + 4 < s.n and low[k + 1] == "quarters" and low[k + 2] == "of" and low[k + 3] in ("a", "an") \
+            and lemma(low[k + 4]) in lx.DURATION_UNITS:
+        return lx.DURATION_UNITS[lemma(low[k + 4])] * many / 4, k + 5  # "three quarters of an hour"
     j = k + 1 if low[k] in ("a", "one") else k
     if (j + 3 < s.n and low[j] == "quarter" and low[j + 1] == "of" and low[j + 2] in ("a", "an")
             and lemma(low[j + 3]) in lx.DURATION_UNITS):

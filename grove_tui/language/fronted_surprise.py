@@ -16,6 +16,7 @@ from grove_tui.language.model import GroupReading
 
 _FRONTED = re.compile(r"(?:^|[.!?;]\s+)(?:(?:quite|a\s+(?:bit|little)|rather|completely|utterly)\s+)?"
                       r"(?:startled|surprised|shocked|stunned|taken\s+aback|caught\s+off[\s-]+guard|astonished|"
+                      r"(?:taken|caught)\s+(?:completely\s+|quite\s+)?(?:by\s+surprise|unawares)|"
                       r"amazed|astounded|flabbergasted|gobsmacked|dumbfounded|nonplussed)\s*,\s*", re.I)
 _FRIGHT = re.compile(r"\b(?:fright|terror|fear|panic|horror|dread|terrified|petrified|frightened|scared|panicked)\b",
                      re.I)

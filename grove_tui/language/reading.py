@@ -33,6 +33,7 @@ from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
+from grove_tui.language.homophone_slips import with_homophone_slips
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.chat_requests import as_chat_request
 from grove_tui.language.clock_fronts import with_clock_commas
@@ -195,7 +196,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_scattered_counts(with_joined_ing_items(chat_fragments(as_listed_chat_wait(text))))  # "3 from sales gossiping", "... @ desk, 10 mins then out"
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = with_misspelt_verbs(text, index)  # "infants from the school trapse across": "traipse", no "school trapse"
-    text = chat_to(text, index)  # "from the staff office 2 bay 4": chat's "to" before a place
+    text = with_homophone_slips(chat_to(text, index), index)  # "form there desks too the kitchen": from their desks to it; "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there

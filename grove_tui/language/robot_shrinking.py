@@ -16,7 +16,12 @@ AWAY_FROM_TAILS = (("away", "from"), ("back", "from"), ("off", "away", "from"), 
 # Verbs of shrinking or moving away that the manner-of-walking list lacks.
 SHRINKING_VERBS = frozenset("shrink cringe wince quail cower recoil flinch shy edge inch sidle slink slope shuffle "
                             "scramble scarper skedaddle bolt scoot withdraw retreat pull draw lean step back "
-                            "shift twist turn swerve veer duck dodge".split())
+                            "shift twist turn swerve veer duck dodge leap jump spring hop hobble limp "
+                            "stagger stumble totter lurch".split())
+# Words of direction or haste that may stand between the verb and its tail: "leaps backwards away from
+# the robot", "springs hastily clear of it".
+_BETWEEN = frozenset("backwards backward back quickly hastily hurriedly swiftly smartly nervously warily "
+                     "sharply abruptly suddenly instinctively".split())
 
 
 def _moving_word(s: Sentence, i: int) -> bool:
@@ -55,9 +60,15 @@ def shrinks_from(s: Sentence, ownset: set[int], i: int, r: int) -> bool:
     """Whether the verb at i goes away from the robot at r ("scurries away from the robot", "bolt from it")."""
     if not _moving_word(s, i):
         return False
-    for tail in AWAY_FROM_TAILS + ((("from",),) if _flees(s, i) and _the_robot_itself(s, r) else ()):
-        end = i + 1 + len(tail)
-        if tuple(s.low[i + 1:end]) == tail and all(k in ownset for k in range(i + 1, end)) and end <= r and \
-                all(s.low[k] in lx.DETERMINERS for k in range(end, r)):
-            return True
+    first = i + 1
+    while first < r and s.low[first] in _BETWEEN and first in ownset and \
+            not any(tuple(s.low[first:first + len(t)]) == t for t in AWAY_FROM_TAILS):
+        first += 1  # "leaps backwards away from it" (the "back" of "back from it" is the tail's own)
+    tails = AWAY_FROM_TAILS + ((("from",),) if _flees(s, i) and _the_robot_itself(s, r) else ())
+    for start in dict.fromkeys((i + 1, first)):
+        for tail in tails:
+            end = start + len(tail)
+            if tuple(s.low[start:end]) == tail and all(k in ownset for k in range(i + 1, end)) and end <= r and \
+                    all(s.low[k] in lx.DETERMINERS for k in range(end, r)):
+                return True
     return False
