@@ -125,7 +125,7 @@ from grove_tui.language.parser import parse
 from grove_tui.language.passive_escort import to_active
 from grove_tui.language.passive_order import in_said_order
 from grove_tui.language.passive_late_agents import late_agents_to_active
-from grove_tui.language.going_and_getting import going_to_get
+from grove_tui.language.gone_and_done import going_to_get
 from grove_tui.language.followed_as import followed_route_first
 from grove_tui.language.swamped_places import crowded_places_to_active
 from grove_tui.language.perceivers import without_perceivers

@@ -1,4 +1,4 @@
-"""Going "and" getting something from a place is going there for it (going_and_getting)."""
+"""Going "and" getting something from a place is going there for it (gone_and_done.going_to_get)."""
 
 from __future__ import annotations
 
