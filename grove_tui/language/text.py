@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.paired_kin import as_paired_kin
 from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_lists import chat_lists
@@ -106,7 +107,7 @@ def normalise(text: str) -> str:
                    for ch in folded)
     kept = names_unstopped(kept)  # "the T. rex", "St. Mary's ward": no sentence end
     kept = robot_sent(robot_chat(spell_out(count_words_spelt(kept))))  # "walkin frm", "robo shd wait": chat's dropped g, short words
-    kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(kept)))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
+    kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(as_paired_kin(kept))))))  # "a father-and-daughter pair": "a father-daughter pair"  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", _TILDE.sub("about ", kept))))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
