@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.placed_and_names import placed_after_and
 
 if TYPE_CHECKING:
     from grove_tui.language.sentence import Sentence
@@ -34,6 +35,8 @@ _WHERE = frozenset("on at in by near beside behind inside outside next".split())
 def placed_person(s: Sentence, i: int) -> bool:
     """Whether word i heads the object of an opening placing imperative that names a person."""
     w = s.w[i]
+    if placed_after_and(s, i):
+        return True  # "Put three visitors in the canteen and Tom at reception"
     if w.dep != "dobj" or w.head == i or not s.low[i].isalpha() or len(s.low[i]) < 3:
         return False
     verb = w.head

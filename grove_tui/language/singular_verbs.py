@@ -24,6 +24,7 @@ from grove_tui.language.parser import Word
 from grove_tui.language.person_shapes import with_listed_subjects, with_shaped_subjects
 from grove_tui.language.origin_names import origins_not_subjects
 from grove_tui.language.plural_verbs import as_plural_verbs
+from grove_tui.language.collective_verbs import as_collective_verbs
 from grove_tui.language.seated_subjects import subject_of
 from grove_tui.language.subject_phrases import (
     prepositions_as_such, subjects_of_subjectless_verbs, verbs_after_names, with_the_subject)
@@ -122,7 +123,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject;
     # "is frightened of the robot and cowers whenever ...": one person's second verb
     out = with_shaped_subjects(out)  # "The croupier bolts from ...": a person, taken for an adjective
-    out = as_later_verbs(as_second_verbs(origins_not_subjects(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(out))))))
+    out = as_later_verbs(as_second_verbs(origins_not_subjects(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(as_collective_verbs(out)))))))
     return as_gathering_verbs(out)  # "a class of twenty crowds about the robot"
 
 

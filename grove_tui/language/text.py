@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.paired_kin import as_paired_kin
 from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
 from grove_tui.language.chat_lists import chat_lists
@@ -53,7 +54,7 @@ _FOR_LAST = re.compile(r"(?<=[A-Za-z])(?<!\bat)(?<!\bfor)(?<!\bto)(?<!\bof)(?<!\
                        r"\s+4\s+([a-z]+s)(?=\s*(?:[,;]|[.!]?\s*$))")
 _NUMBERED_BY = frozenset("gate desk platform room aisle till lane court ward bay stand floor level exit door counter "
                          "table bed screen track pier dock berth stop zone area block wing unit".split())
-# "~30 pax", "~ 10 people": about so many
+# "~30 pax", "~ 10 people": about so many (read before "+"/"&" join items, so "hut + ~10 juniors" is two)
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
 # A number written in words takes "-ish" too ("forty-ish fans", "twelveish"): the words of tens and
 # teens only, so no other word ending "-ish" (a "tallish" man) is read as a count.
@@ -106,8 +107,8 @@ def normalise(text: str) -> str:
                    for ch in folded)
     kept = names_unstopped(kept)  # "the T. rex", "St. Mary's ward": no sentence end
     kept = robot_sent(robot_chat(spell_out(count_words_spelt(kept))))  # "walkin frm", "robo shd wait": chat's dropped g, short words
-    kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(kept)))))  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
-    kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", kept)))
+    kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(as_paired_kin(kept))))))  # "a father-and-daughter pair": "a father-daughter pair"  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
+    kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", _TILDE.sub("about ", kept))))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _DOZEN_ISH.sub(lambda m: f"{m.group(1) or 'a'} dozen or so", kept)
