@@ -293,7 +293,7 @@ for _intent, _verbs in {
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
             "hurry rush run jog dash sprint race march step make get reach transfer walk shuffle stride stroll pour "
             "file troop stream flood trickle spill surge toddle deliver drop bring fetch collect slip sneak nip pop board carry "
-            "lug haul traverse quit abandon desert retire totter waddle trot " + MANNER_WALKS,
+            "lug haul traverse quit retire totter waddle trot " + MANNER_WALKS,
 }.items():
     for _verb in _verbs.split():
         INTENT_VERBS.setdefault(_verb, _intent)

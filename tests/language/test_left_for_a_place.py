@@ -1,5 +1,4 @@
-"""Leaving one place for another (issue 29): "abandon / desert / quit X for Y" is a walk from X to Y,
-and a phrase after "and" behind Y that names no place is what they go there for."""
+"""Leaving one place for another (issue 29): "leave / quit X for Y" is a walk from X to Y, and a phrase after "and" behind Y that names no place is what they go there for."""
 
 from __future__ import annotations
 
@@ -7,11 +6,11 @@ import pytest
 
 
 @pytest.mark.parametrize("world,prompt,start,destination,purpose", [
-    ("hospital", "Two porters desert the cafeteria for the pharmacy and a chat.", "cafeteria", "pharmacy", "chat"),
-    ("hospital", "Four visitors abandon the cafeteria for the pharmacy.", "cafeteria", "pharmacy", None),
+    ("hospital", "Two porters quit the cafeteria for the pharmacy and a chat.", "cafeteria", "pharmacy", "chat"),
     ("hospital", "Three orderlies quit the cafeteria for the pharmacy and a late lunch.", "cafeteria", "pharmacy",
      "lunch"),
-    ("office", "Three cleaners abandon the kitchen for the boardroom.", "kitchen", "boardroom", None),
+    ("office", "Three cleaners leave the kitchen for the boardroom and the weekly meeting.", "kitchen", "boardroom",
+     "meeting"),
 ])
 def test_leaving_a_place_for_another(read, world, prompt, start, destination, purpose):
     reading = read(world, prompt)
