@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.chat_slips import written_out
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.tokens import lemma, verb_lemma
 
@@ -39,7 +40,7 @@ _VERBS = frozenset(lx.INTENT_VERBS) | frozenset(lx.ROBOT_VERBS) | frozenset({"ha
 def spell_out(text: str) -> str:
     """The text with chat's dropped "g"s and short words written out (see the module doc)."""
     text = _DROPPED_G.sub(_with_g, text)
-    return _SHORT_WORD.sub(_short, text)
+    return written_out(_SHORT_WORD.sub(_short, text))  # "teh", "are muckin out" (chat_slips.py)
 
 
 def _with_g(m: re.Match[str]) -> str:

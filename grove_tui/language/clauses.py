@@ -26,6 +26,7 @@ from grove_tui.language.going_idioms import straight_for
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_with import with_object_end
+from grove_tui.language.purpose_after_for import purpose_after_for_place
 from grove_tui.language.purpose_after_place import purpose_after_destination
 from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
 from grove_tui.language.sought_things import sought_object
@@ -180,6 +181,11 @@ class Clauses(ClauseCues):
             if sequel is not None:
                 return self._add_place(scan, sequel, i)
             if i in scan.used:  # the rest of the one name, taken (_sequel)
+                return True
+            aim = purpose_after_for_place(s, scan.c.places, i, scan.own, self.people.is_person_noun, self.places.names_place)
+            if aim is not None:  # "for the boardroom and the weekly call": why they go
+                scan.c.purpose = scan.c.purpose or s.span(i + 1, aim - 1)
+                self._take(scan, i, aim)
                 return True
         prep = s.preposition(i) or bare_place_at(s, i)  # "sits backstage": a bare adverb of place
         if prep is not None:

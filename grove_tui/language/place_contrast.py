@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 from grove_tui.language.bare_place_names import bare_place_name
-from grove_tui.language.lexicon import DEPARTURE_VERBS, PLACE_MODIFIERS, PLACE_SYNONYMS
+from grove_tui.language.lexicon import DEPARTURE_VERBS, PLACE_MODIFIERS, PLACE_SYNONYMS, START_OBJECT_VERBS
 from grove_tui.language.moved_off_for import moved_off_for
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.places import PlaceEntry, PlaceIndex, PlaceMatch
@@ -65,4 +65,5 @@ def left_for(s: Sentence, said: Sequence[Place], at: int) -> bool:
     if before is not None and moved_off_for(s, before, at):
         return True  # "heads off platform 2 for the signal box": where they go
     return before is not None and before.end == at and before.prep == "obj:start" and at + 1 < s.n \
-        and (s.low[at + 1] in ("the", "this", "that") or bare_place_name(s.low, at + 1) > 0) and verb_lemma(s.low[before.index]) in DEPARTURE_VERBS
+        and (s.low[at + 1] in ("the", "this", "that") or bare_place_name(s.low, at + 1) > 0) \
+        and verb_lemma(s.low[before.index]) in DEPARTURE_VERBS | START_OBJECT_VERBS
