@@ -35,6 +35,7 @@ from grove_tui.language.ahead_of_events import ahead_of_event
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
 from grove_tui.language.place_ordinals import series_number_at
+from grove_tui.language.refused_destinations import refused_destination_after
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import clause_reaction
@@ -521,6 +522,7 @@ class Clauses(ClauseCues):
         kinds = [k for _, k, _ in candidates]
         has_destination = any(p.prep in lx.DESTINATION_PREPOSITIONS or p.prep in ("obj:dest", "purpose")
                               for p in c.places if p.match is not None)  # "stroll ... to reach gate A2" too
+        has_destination = has_destination or refused_destination_after(s, candidates, self.places.unknown_towards)
         if (came := chore_after_coming(candidates)) is not None:  # "come in ... and mop the corridor"
             c.places = [replace(p, prep="obj:dest") if p.prep == "obj:at" and p.index > came[0] else p for p in c.places]
             return "walk", came[2], came[0]

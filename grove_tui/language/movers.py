@@ -10,6 +10,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.caused_motion import ROUTE_WORDS, taking_verb
 from grove_tui.language.led_far import led_far_before
 from grove_tui.language.load_carriers import load_carrier
+from grove_tui.language.person_carriers import person_carrier
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -64,7 +65,7 @@ def carried_in(s: Sentence, at: int, lemmas: tuple[str, ...] | list[str]) -> boo
     an elderly codger on a gurney"): a thing of riding, after a verb of taking someone along."""
     return bool(lemmas) and lemmas[-1] in RIDDEN_THINGS and \
         (any(verb_lemma(s.low[x]) in lx.LEADING_VERBS for x in range(max(0, at - 6), at)) or taken_in(s, at)
-         or led_far_before(s, at)) or load_carrier(s, at, lemmas)
+         or led_far_before(s, at)) or load_carrier(s, at, lemmas) or person_carrier(s, at, lemmas)
 
 
 def taken_in(s: Sentence, at: int) -> bool:

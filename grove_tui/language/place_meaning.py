@@ -15,6 +15,7 @@ from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
 from grove_tui.language.from_where import from_where_ends
 from grove_tui.language.done_there import gerund_room as gerund_room, room_doing_it, zone_saying
+from grove_tui.language.rescue_heads import only_modifier_shared
 from grove_tui.language.related_words import to_another_where
 from grove_tui.language.done_to_people import done_to_people
 from grove_tui.language.model import UNSURE_BELOW
@@ -188,7 +189,7 @@ class PlaceMeaning:
         meant = self._by_meaning(phrase, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
         if meant is None and list(lemmas) != [w for w in phrase if w not in lx.DETERMINERS]:
             meant = self._by_meaning(lemmas, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
-        return meant
+        return None if meant is not None and only_modifier_shared(self.s.index, lemmas, meant[0].name) else meant
 
     def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int,
                    exact: bool = False) -> tuple[Decided, int] | None:

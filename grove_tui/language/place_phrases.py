@@ -88,6 +88,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         self.s = s
         self.people = people
         self.unknown: list[str] = []
+        self.unknown_towards: list[int] = []  # where "to"/"towards" a refused place is said: still a destination
         self.context_zones: list[str] = []  # zones of the places read so far, in reading order
         self.frame_zones: list[str] = []  # zones named as where people are ("on platform 2"), in order
         self.quiet = False  # True while reading a clause whose places nobody goes to
@@ -229,6 +230,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         match = match or (stage_part(s.index, lemmas) if not numbered else None)  # "from the wings"
         if match is None and record_unknown and not self.quiet and not s.index.is_nameless(lemmas):
             self.unknown.append(" ".join(phrase))
+            self.unknown_towards += [at] if prep in lx.DESTINATION_PREPOSITIONS else []
         if match is None:
             if informal is not None:
                 self.refused.update(range(start, j))
