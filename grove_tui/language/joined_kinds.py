@@ -15,10 +15,10 @@ import re
 from grove_tui.language import lexicon as lx
 from grove_tui.language.tokens import lemma
 
-_NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
+COUNT_WORD = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
                                         ("couple", "pair", "handful", "dozens", "one", "a")), key=len, reverse=True)) + \
     r")(?:-(?:one|two|three|four|five|six|seven|eight|nine))?"
-_JOINED = re.compile(r"\b(" + _NUMBER + r")\s+([a-z][a-z-]+\s+)?([a-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])",
+_JOINED = re.compile(r"\b(" + COUNT_WORD + r")\s+([a-z][a-z-]+\s+)?([a-z][a-z-]+)\s+and\s+([a-z][a-z-]+)\b(?!\s*['’])",
                      re.IGNORECASE)  # one word that describes both may come first ("six adult sons and daughters")
 _CHILDREN = frozenset("boy girl kid child toddler pupil schoolchild schoolboy schoolgirl son daughter infant "
                       "youngster teenager teen".split())
@@ -26,7 +26,8 @@ _CHILDREN = frozenset("boy girl kid child toddler pupil schoolchild schoolboy sc
 _GROWN = frozenset("adult grown grown-up grownup older elderly middle-aged".split())
 
 
-def _plural_person(word: str) -> bool:
+def plural_person(word: str) -> bool:
+    """Whether a word is a plural of people ("nurses", "staff"), no vague crowd word."""
     low = word.lower()
     base = lemma(low)
     if low in ("staff", "police", "crew"):
@@ -37,7 +38,7 @@ def _plural_person(word: str) -> bool:
 
 def _joined(m: re.Match[str]) -> str:
     described, first, second = m.group(2) or "", m.group(3), m.group(4)
-    if not (_plural_person(first) and _plural_person(second)) or first.lower() == second.lower():
+    if not (plural_person(first) and plural_person(second)) or first.lower() == second.lower():
         return m.group(0)
     if described and not _describes(described.strip()):
         return m.group(0)
@@ -50,7 +51,7 @@ def _describes(word: str) -> bool:
     """Whether a word before two joined kinds can describe both ("adult", "elderly", "grown-up",
     "excited"): no person, no number, no word of grammar ("and", "of")."""
     low = word.lower()
-    return not _plural_person(low) and low not in lx.NUMBER_WORDS and low not in lx.STOPWORDS and \
+    return not plural_person(low) and low not in lx.NUMBER_WORDS and low not in lx.STOPWORDS and \
         low not in ("and", "or", "of", "plus")
 
 
@@ -69,7 +70,7 @@ _PAIRED = re.compile(r"(?<![\w'’-])(?<!\band\s)([A-Za-z][a-z-]+)\s+and\s+([a-z
 def _paired(m: re.Match[str]) -> str:
     first, second = m.group(1), m.group(2)
     if frozenset((lemma(first.lower()), lemma(second.lower()))) not in _HALVES or \
-            not (_plural_person(first) and _plural_person(second)):
+            not (plural_person(first) and plural_person(second)):
         return m.group(0)
     both = "children" if {lemma(first.lower()), lemma(second.lower())} <= _CHILDREN else "people"
     return both.capitalize() if first[0].isupper() else both
