@@ -283,7 +283,8 @@ class Clauses(ClauseCues):
             return True
         # "head for the exit", "leave the ward for the canteen", "queue for the coffee machine": a place by its whole
         # name after a determiner; "for coffee", "head out the back for a cigarette" are purposes, whatever they match.
-        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or left_for(s, scan.c.places, i) or \
+        leaves_for = left_for(s, scan.c.places, i)
+        right_after_verb = self._verb_just_before(i) in lx.FOR_DESTINATION_VERBS or leaves_for or \
             sets_off_for(s, i) or searched_or_queued_for(s, i)
         if right_after_verb or (nxt in ("the", "this", "that") and self.places.names_place(i + 2)) or \
                 numbered_name(s, i + 1) and self.places.names_place(i + 1) or numbered_kind(s, i + 1):  # "for gate B1"
@@ -291,6 +292,8 @@ class Clauses(ClauseCues):
             place = self.places.phrase(i + 1, "for", i, record_unknown=right_after_verb or numbered_kind(s, i + 1))
             if place is not None or len(self.places.unknown) > refused:  # a place it lacks: no purpose either
                 scan.c.places.extend([place] if place is not None else [])
+                if leaves_for and place is not None:  # "abandon their desks for the boardroom": they go there
+                    scan.c.has_action, scan.c.intent = True, scan.c.intent or "walk"
                 scan.used.update(range(i, place.end if place is not None else s.phrase_end(i + 1)))
                 scan.pos += 1
                 return True
@@ -394,6 +397,7 @@ class Clauses(ClauseCues):
         if moved_along(s, v, obj):
             return False  # "wheels a roll cage from ... to ...": the thing moved, no place of theirs
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
+                and v not in lx.START_OBJECT_VERBS  # "abandon their desks", "desert the ward": the place left
                 and (v not in lx.ROBOT_VERBS or v in CHECKING_VERBS)  # "checks the drugs trolley": at it
                 and v not in lx.HOLDING_VERBS  # "carrying coffees": no place
                 and (nxt in lx.DETERMINERS or self.places.names_place(obj)) and not s.hyphen_inside(i - 1)
