@@ -25,6 +25,7 @@ _PLACE = r"(?P<det>the|a|an|our|their|his|her|my)\s+(?P<place>(?:[A-Za-z][\w'-]*
 # With a purpose after the place first ("the toy store to buy": the whole name), then without one.
 _WITH_PURPOSE = re.compile(rf"\b{_VERB}\s+{_PARTICLE}\s+{_PLACE}(?P<after>\s+(?:to|for)\s+[A-Za-z])", re.IGNORECASE)
 _STOPPING_BY = re.compile(rf"\b{_VERB}\s+{_PARTICLE}\s+{_PLACE}(?P<after>)", re.IGNORECASE)
+_NOUN_BEFORE = re.compile(r"\b(?:a|an|the|their|his|her|my|our|its|phone|video|quick|brief|short|long|on)\s+$", re.IGNORECASE)
 _PASSIVE = re.compile(r"\b(?:is|are|was|were|be|been|being|get|gets|got|getting)\s+$", re.IGNORECASE)
 
 
@@ -42,6 +43,8 @@ def as_stopped_by(text: str, index: PlaceIndex) -> str:
         particle = " ".join(m.group("particle").lower().split())
         if _PASSIVE.search(text[:m.start()]):
             return m.group(0)  # "is stopped by security": stopped by someone, no visit
+        if _NOUN_BEFORE.search(text[:m.start()]):
+            return m.group(0)  # "on a call at her desk", "a quick stop by the kiosk": a noun, no visit
         if particle == "at" and verb != "call":
             return m.group(0)  # "stops at the door", "drops at the finish": no visit
         if verb == "stop" and particle == "by" and not m.group("after"):
