@@ -17,6 +17,10 @@ _NOT_FIRST = frozenset("the a an this that these those his her their our my your
                        "whole entire of and or with from to for by".split())
 
 
+# Words that end a count said before the collective ("twelve or so club members", "thirty-odd crew
+# members", "a dozen club members"): the count's, no name for the collective; joining them lost the count.
+_COUNT_ENDS = frozenset("so odd ish plus more dozen score couple".split()) | lx.APPROXIMATE_WORDS | \
+    frozenset(lx.VAGUE_RANGES) | frozenset(lx.SCALES)
 _TIMED = frozenset("after before during breakfast".split())
 _HEADS = frozenset("chief captain secretary chairman chairwoman treasurer".split())
 
@@ -28,7 +32,7 @@ def with_collective_roles(text: str) -> str:
         before = m.string[:m.start()].split()[-1:]
         if (before and before[0].lower() in _TIMED) or first.lower().startswith(("after", "before")):
             return m.group(0)  # "ten after school club kids": a club named by a time, the count kept
-        if first.lower() in _NOT_FIRST or first.lower() in lx.NUMBER_WORDS or not _is_person(person.lower()):
+        if first.lower() in _NOT_FIRST | _COUNT_ENDS or first.lower() in lx.NUMBER_WORDS or not _is_person(person.lower()):
             return m.group(0)
         return f"{first}-{collective} {person}"
     return _PHRASE.sub(joined, text)

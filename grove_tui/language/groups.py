@@ -37,6 +37,7 @@ from grove_tui.language.possessor_starts import kept_zone_place
 from grove_tui.language.routine_reactions import routine_beside_reaction
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.sequences import pronoun_sentences_end
+from grove_tui.language.there_stays import stayed_there
 from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 from grove_tui.language.wait_first import wait_before_queuing
@@ -46,8 +47,7 @@ from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
 # Words after an existential "there" ("there are ten people"), which points at no place.
 _EXISTENTIAL = frozenset("is are was were 's be will must may might seems seem has have".split())
-# Prepositions that send people somewhere with no verb of motion ("... to the exit"); "inside" with no
-# such verb is where they are ("two kids play inside the toy store").
+# Prepositions that send people somewhere with no verb of motion ("... to the exit"); "inside" is where they are.
 _SENDING = (lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS) - {"inside"}
 
 
@@ -370,7 +370,8 @@ class Groups:
                                        and (s.w[i].pos == "VERB" or not s.index.knows(s.lemma(i)))])
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
-        self._there(span, roles, stationary)
+        if not stayed_there(self.places, span, roles, stationary):
+            self._there(span, roles, stationary)
         self._where_before(m, roles, stationary)
         if c.purpose and intent not in ("evacuate", "follow", "robot") and not (roles.destination or roles.location):
             self._purpose_place(c.purpose, span, roles, stationary)
@@ -456,9 +457,8 @@ class Groups:
             roles.location = parent.start or parent.location  # "... except three patients, who stay seated"
 
     def _there(self, span: tuple[int, int], roles: Roles, stationary: bool) -> None:
-        """"there" for the place said last before it: "... and three more wait there" (where they are, or
-        go, when the group names no place of its own), "everyone in there is sent out" (where movers
-        start), "they come back from there" (where they start)."""
+        """"there" for the place said last before it: "... and three more wait there" (where they are, or go, when
+        the group names no place), "everyone in there is sent out", "they come back from there" (where they start)."""
         s = self.s
         at = next((x for x in range(span[0] + 1, span[1]) if s.low[x] == "there" and (
             x + 1 >= s.n or s.low[x + 1] not in _EXISTENTIAL or s.low[x - 1] in lx.PLACE_PREPOSITIONS)), None)
