@@ -136,7 +136,6 @@ from grove_tui.language.place_phrases import PlacePhrases
 from grove_tui.language.places import place_index
 from grove_tui.language.robot import RobotClause, RobotClauses
 from grove_tui.language.robot_deliveries import as_delivery
-from grove_tui.language.robot_delivered_to import as_delivered_to
 from grove_tui.language.robot_crowds import via_the_people_passed
 from grove_tui.language.robot_led import led_by_robot
 from grove_tui.language.guided_route import route_from_the_guided, said_last_before
@@ -235,7 +234,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_stopped_by(text, index)  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
     text = as_gone_to(as_going_in(as_heading(with_vehicle_loads(text))))  # "go and flop in X": "go to X"; "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
-    text = as_delivered_to(as_delivery(text))  # "the robot carries soup out to Gran, who is knitting on the terrace": to the terrace, Gran there # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
+    text = as_delivery(text)  # "the robot carries soup out to Gran, who is knitting on the terrace": to the terrace, Gran there # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)
     if active is None:

@@ -1,5 +1,5 @@
 """Round 57 (r57c): "the robot <carries> something out to X, who is <doing> in Y" puts X at Y and the robot
-goes to Y (language/robot_delivered_to.py)."""
+goes to Y (language/robot_deliveries.py)."""
 
 from __future__ import annotations
 
