@@ -42,8 +42,7 @@ from grove_tui.language.chore_subjects import chore_subject
 from grove_tui.language.chat_list_items import chat_list_doer, chat_list_item
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
-from grove_tui.language.verb_tagged_plurals import verb_tagged_plural
-from grove_tui.language.counted_compound_people import counted_compound_person
+from grove_tui.language.verb_tagged_plurals import counted_compound_person, verb_tagged_plural
 from grove_tui.language.owned_by_subject import subject_of_his_or_her
 from grove_tui.language.life_adjectives import by_a_life_adjective
 from grove_tui.language.lone_person import by_a_person_adjective, goes_along_a_route, told_as_he_or_she

@@ -1,7 +1,7 @@
 """Round 57 (r57c): a counted two-word plural person whose first word names a place of the world and
 whose last word is also a thing ("kitchen hands", "bar hands", "stage hands"), then a people's verb in
 its plain form the parser took for a noun or adjective, is one group of that count
-(language/counted_compound_people.py)."""
+(language/verb_tagged_plurals.py)."""
 
 from __future__ import annotations
 
