@@ -215,6 +215,8 @@ class Mentions:
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS | lx.EXCEPT_WORDS | {"than"} or (s.low[p - 1], prev) == (",", "where"):
             return True
+        if self._place_named_with_a_person_word(at):
+            return False  # "the robot ferries soup from the kitchen diner to ...": a room, no diner
         if self.objects.led_by(at) or self.objects.robot_object(at) is not None or self.objects.followed(at) or \
                 self.objects.sent_by(at):
             return True  # "a tour guide leads twelve tourists": a counted group the subject takes along
@@ -244,6 +246,27 @@ class Mentions:
         if self._after_time_phrase(at) or after_a_clock_time(s, at):
             return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
+
+    def _place_named_with_a_person_word(self, at: int) -> bool:
+        """Whether the word at `at` is inside a place's whole name or alias of two words or more, said
+        after a place's preposition ("from the kitchen diner", "to the nurses' station"): a word for people
+        that names no one there."""
+        s = self.s
+        for start in range(at, max(-1, at - 3), -1):
+            before = start - 1
+            while before > 0 and s.low[before] in lx.DETERMINERS:
+                before -= 1
+            if before < 0 or s.low[before] not in lx.PLACE_PREPOSITIONS:
+                continue
+            k = s.skip(start, lx.DETERMINERS)
+            words: list[str] = []
+            for j in range(k, min(k + 4, s.n)):
+                if s.is_punct(j) and not s.hyphen_inside(j) or s.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}:
+                    break
+                words.append(s.low[j])
+            if any(k + n > at and self.places.whole_name(words[:n]) for n in range(len(words), 1, -1)):
+                return True
+        return False
 
     def _after_time_phrase(self, at: int) -> bool:
         """Whether only a phrase of time stands between the start of a clause and `at` ("and every

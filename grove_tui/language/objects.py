@@ -165,7 +165,10 @@ class PeopleObjects:
             p -= 1  # "hands out leaflets to passengers", "drives past a group of visitors"
         if p < 1 or not (s.w[p].pos in ("VERB", "AUX") or s.w[p].tag.startswith("VB") or
                          verb_lemma(s.low[p]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS):
-            return None
+            verb = self._verb_through_prepositions(self._phrase_head(at))
+            if verb is None:
+                return None
+            p, direct = verb, False  # "takes a chart from the nurse in ward B to the doctor": met on its way
         if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
             return None  # "the robot is followed by two children": a passive, the people's own clause
         k = before_obligation(s, p)  # "the robot is meant to follow", "the robot should follow"
@@ -180,6 +183,23 @@ class PeopleObjects:
         if direct and verb in lx.ROBOT_FOLLOW_VERBS and verb not in lx.LEADING_VERBS:
             return "followed"
         return "led" if direct and verb in lx.LEADING_VERBS else "met"
+
+    def _verb_through_prepositions(self, head: int) -> int | None:
+        """The verb a person's phrase hangs from by the parse, through a preposition of the robot's way
+        and what else the verb took ("from the nurse in ward B to the doctor": "to" hangs from the
+        verb, past the place and person before it the words alone cannot step over)."""
+        s = self.s
+        if head >= s.n or s.w[head].dep != "pobj" or s.low[s.w[head].head] not in lx.ROBOT_PREPOSITIONS | {"to", "from"}:
+            return None
+        k = s.w[head].head
+        for _ in range(3):
+            up = s.w[k].head
+            if up == k or s.w[k].dep not in ("prep", "advmod", "dobj", "pobj") or s.w[up].sentence != s.w[head].sentence:
+                return None
+            k = up
+            if s.w[k].pos == "VERB":
+                return k
+        return None
 
     def _phrase_head(self, at: int) -> int:
         s = self.s
