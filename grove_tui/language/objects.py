@@ -199,6 +199,8 @@ class PeopleObjects:
             k = up
             if s.w[k].pos == "VERB":
                 return k
+            if self.people.is_person_noun(k) or s.low[k] in lx.CLAUSE_STARTERS:
+                return None  # "as the duo from the bike club natter": the phrase describes the duo
         return None
 
     def _phrase_head(self, at: int) -> int:

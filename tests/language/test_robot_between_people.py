@@ -30,3 +30,15 @@ def test_place_named_with_a_person_word(read, world, prompt, label, location):
     (group,) = read(world, prompt).groups
     assert group.label == label
     assert location is None or group.location == location
+
+
+@pytest.mark.parametrize("world,prompt,label", [
+    ("restaurant", "The robot brings a crate of wine from the cellar to the bar as the pair from the tennis club natter "
+                   "over a coffee by the window.", "pair"),
+    ("hotel", "The robot wheels towels from the laundry to the pool as the trio from the wedding party chat over a drink "
+              "in the lobby.", "trio"),
+])
+def test_people_of_another_clause_keep_what_describes_them(read, world, prompt, label):
+    """A phrase describing someone in another clause ("the couple from the tennis club") names no one else."""
+    (group,) = read(world, prompt).groups
+    assert group.label == label
