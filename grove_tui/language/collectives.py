@@ -128,9 +128,6 @@ class Collectives:
             while at > 0 and (low[at - 1] in ("a", "an", "the", "their", "our", "his", "her") or low[at - 1] in lx.NP_MODIFIERS):
                 at -= 1
             label = self.people.label(head - 1)  # "the security team": security staff, as many as a team
-        named = self._named_members(head)
-        if named is not None and size is None:
-            size, at = named[0], min(at, named[1])  # "a husband-wife team", "two father-son teams": two each
         count = self._collective_count(noun, label, size, parties, exact_parties, together, head)
         if not exact_parties and count.parties:
             # the number of parties is a seeded guess: the range runs over every number it could be
@@ -140,20 +137,6 @@ class Collectives:
                                                                             count_of(s, number, "").high)
             count = replace(count, low=parties_range[0] * low_size, high=parties_range[1] * high_size)
         return Mention(at, last, s.span(at, last), label, count, together=together, collective=noun)
-
-    def _named_members(self, head: int) -> tuple[int, int] | None:
-        """The people a pair's or team's name lists right before it ("a husband-wife team", "a mother
-        and daughter duo", "father-and-son teams"): how many, and where the names start."""
-        low, k, named, joined = self.s.low, head - 1, 0, True
-        while k >= 0:
-            if joined and self.people.is_person_noun(k) and low[k] == self.s.lemma(k):  # one each: "nurses and
-                named, joined = named + 1, False  # security team" lists kinds, not members
-            elif low[k] in ("-", "–", "and", "&"):
-                joined = True
-            else:
-                break
-            k -= 1
-        return (named, k + 1) if named >= 2 and not joined else None
 
     def _verb_after_count(self, k: int) -> bool:
         """Whether a plural word no list names, right after "a queue of 12", is the sentence's verb:

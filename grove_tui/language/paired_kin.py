@@ -1,7 +1,8 @@
 """Two people named as the kind of one pair (round 56): "a father-and-daughter pair solder at the bench",
 "a mother and son duo wait", "a husband-and-wife team runs the stall". The words of the two people
 were read as one more person beside the pair. They are written joined ("father-daughter pair"), as
-the reader already reads them, and a "team" or "partnership" named by two people is a duo: two."""
+the reader already reads them, and a "team" or "partnership" named by two people is a duo: two ("a
+husband-wife team", "two father-son teams": two each)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import re
 from grove_tui.language import lexicon as lx
 from grove_tui.language.tokens import lemma
 
-_PAIR = re.compile(r"\b([A-Za-z]+)(?:\s*-\s*and\s*-\s*|\s+and\s+|\s*&\s*)([A-Za-z]+)\s*-?\s*"
+_PAIR = re.compile(r"\b([A-Za-z]+)(?:\s*-\s*and\s*-\s*|\s+and\s+|\s*&\s*|-)([A-Za-z]+)\s*-?\s*"
                    r"(pair|duo|couple|twosome|team|partnership)(s?)\b", re.IGNORECASE)
 _TWO = frozenset({"team", "partnership"})
 

@@ -1,4 +1,4 @@
-"""A pair or team named by the people in it ("a husband-wife team", "a father-and-son duo", "two
+"""A pair or team named by the people in it (paired_kin.py: "a husband-wife team", "a father-and-son duo", "two
 mother-daughter teams") has as many people each as its name lists, not a team's usual size."""
 
 from __future__ import annotations
