@@ -20,6 +20,7 @@ from grove_tui.language.occasion_headings import without_heading
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.couple_words import bare_couple
+from grove_tui.language.cue_in_names import in_a_place_name
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
@@ -252,19 +253,11 @@ class Mentions:
         after a place's preposition ("from the kitchen diner", "to the nurses' station"): a word for people
         that names no one there."""
         s = self.s
-        for start in range(at, max(-1, at - 3), -1):
+        for start in range(s.skip(at, lx.DETERMINERS), max(-1, at - 3), -1):
             before = start - 1
             while before > 0 and s.low[before] in lx.DETERMINERS:
                 before -= 1
-            if before < 0 or s.low[before] not in lx.PLACE_PREPOSITIONS:
-                continue
-            k = s.skip(start, lx.DETERMINERS)
-            words: list[str] = []
-            for j in range(k, min(k + 4, s.n)):
-                if s.is_punct(j) and not s.hyphen_inside(j) or s.low[j] in lx.PLACE_PREPOSITIONS | {"to", "for"}:
-                    break
-                words.append(s.low[j])
-            if any(k + n > at and self.places.whole_name(words[:n]) for n in range(len(words), 1, -1)):
+            if before >= 0 and s.low[before] in lx.PLACE_PREPOSITIONS and in_a_place_name(s, start):
                 return True
         return False
 

@@ -165,10 +165,10 @@ class PeopleObjects:
             p -= 1  # "hands out leaflets to passengers", "drives past a group of visitors"
         if p < 1 or not (s.w[p].pos in ("VERB", "AUX") or s.w[p].tag.startswith("VB") or
                          verb_lemma(s.low[p]) in lx.LEADING_VERBS | lx.ROBOT_FOLLOW_VERBS | lx.ROBOT_CROSS_VERBS):
-            verb = self._verb_through_prepositions(self._phrase_head(at))
-            if verb is None:
+            by_parse = self._verb_through_prepositions(self._phrase_head(at))
+            if by_parse is None:
                 return None
-            p, direct = verb, False  # "takes a chart from the nurse in ward B to the doctor": met on its way
+            p, direct = by_parse, False  # "takes a chart from the nurse in ward B to the doctor": met on its way
         if s.w[p].tag == "VBN" and p > 0 and verb_lemma(s.low[p - 1]) in ("be", "get"):
             return None  # "the robot is followed by two children": a passive, the people's own clause
         k = before_obligation(s, p)  # "the robot is meant to follow", "the robot should follow"
