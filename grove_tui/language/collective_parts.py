@@ -43,4 +43,4 @@ def whole_unsaid(s: Sentence, of_at: int, head: int, counted_whole: bool) -> boo
 def owned_whole(s: Sentence, k: int, inner: Quantifier | None) -> bool:
     """Whether the whole of "six of their parents" (its word at k) is someone's own people, with no count
     of its own: left out of the scene, the part is the group."""
-    return s.low[k] in _OWNERS and inner is None
+    return (s.low[k] in _OWNERS or s.low[k] in ("'s", "’s")) and inner is None  # "two of Tom's sons"

@@ -19,6 +19,7 @@ from grove_tui.language.collective_parts import collective_head, owned_whole, wh
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
+from grove_tui.language.owner_partitives import named_owner_end
 from grove_tui.language.lone_parts import lone_one_of
 from grove_tui.language.owned_parts import owned_whole_unsaid
 from grove_tui.language.people import People
@@ -67,7 +68,9 @@ class Partitives:
             return Mention(at, k, s.span(at, k), label, count,
                            relation=f"subset_of:{parent_index}" if parent_index is not None else None)
         if low[k] not in _GROUP_WORDS:
-            return None
+            k = named_owner_end(s, k) or -1  # "both of Mrs Patel's granddaughters": her own, as "her"
+            if k < 0:
+                return None
         inner = quantifier(s, k + 1)
         start = inner.end if inner is not None and inner.kind == "exact" else k + 1
         head = self.people.person_head(start, counted=start > k + 1)

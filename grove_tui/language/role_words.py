@@ -121,14 +121,22 @@ def world_person_name(s: Sentence, title: int, j: int) -> bool:
                for x in range(len(phrase) - n + 1))
 
 
+def _kind_word(s: Sentence, j: int) -> bool:
+    """Whether the word at j only says what kind the noun after it is: a compound noun or a number
+    ("art class", "Year 9 group"), or a piece of a hyphened word ("A-level")."""
+    w = s.w[j]
+    return w.tag == "HYPH" or (j + 1 < s.n and s.w[j + 1].tag == "HYPH") or (
+        w.dep in ("compound", "nummod", "amod") and w.head > j and w.pos in ("NOUN", "PROPN", "NUM", "DET", "ADJ"))
+
+
 def possessor_of_a_person(s: Sentence, is_person: Callable[[int], bool], head: int) -> bool:
     """Whether the name ending at `head` only owns the person said next ("Mrs Okafor's daughter",
     "Dr Patel's registrar"): the daughter is the group, her mother no one said to be there."""
     if head + 2 >= s.n or s.low[head + 1] not in ("'s", "’s", "'"):
         return False
     j = head + 2
-    while j < s.n and j < head + 5 and s.w[j].pos == "ADJ" and not is_person(j):
-        j += 1  # "Mr Reid's elderly sister"
+    while j < s.n and j < head + 6 and not is_person(j) and (s.w[j].pos == "ADJ" or _kind_word(s, j)):
+        j += 1  # "Mr Reid's elderly sister", "Mrs Lee's A-level group", "Mr Shah's art class"
     return j < s.n and is_person(j)
 
 

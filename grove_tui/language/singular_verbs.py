@@ -17,6 +17,7 @@ from grove_tui.language.listed_verbs import as_listed_verbs
 from grove_tui.language.object_verbs import as_object_verbs
 from grove_tui.language.counted_modifiers import as_counted_modifiers, as_plural_verbs_before_a_clause
 from grove_tui.language.gathering_verbs import as_gathering_verbs
+from grove_tui.language.plural_gathering_verbs import as_plural_gathering_verbs
 from grove_tui.language.leading_verb_tags import as_leading_verbs
 from grove_tui.language.counted_takers import as_counted_takers
 from grove_tui.language.later_verbs import as_later_verbs
@@ -124,7 +125,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     # "is frightened of the robot and cowers whenever ...": one person's second verb
     out = with_shaped_subjects(out)  # "The croupier bolts from ...": a person, taken for an adjective
     out = as_later_verbs(as_second_verbs(origins_not_subjects(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(as_collective_verbs(out)))))))
-    return as_gathering_verbs(out)  # "a class of twenty crowds about the robot"
+    return as_plural_gathering_verbs(as_gathering_verbs(out))  # "a class of twenty crowds about the robot"
 
 
 def subject_of_a_later_verb(s: Sentence, k: int) -> bool:
