@@ -401,6 +401,7 @@ class Clauses(ClauseCues):
                 and (v not in lx.ROBOT_VERBS or v in CHECKING_VERBS)  # "checks the drugs trolley": at it
                 and v not in lx.HOLDING_VERBS  # "carrying coffees": no place
                 and (nxt in lx.DETERMINERS or self.places.names_place(obj)) and not s.hyphen_inside(i - 1)
+                and not (i > 0 and s.low[i - 1] == "with")  # "with hired clubs": a modifier of what they hold
                 and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))
                                                    or nxt in _OWNERS)):
             # "a cleaner sweeps platform 2", "mops the corridor", "locks her office", "closes up

@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.held_collectives import held_not_people
 from grove_tui.language.count_alone import people_by_place
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
@@ -61,12 +62,18 @@ class Collectives:
                 and (s.w[after].pos == "ADJ" or s.w[after].tag in ("VBG", "VBN"))
                 and s.low[after + 1] in lx.PLACE_PREPOSITIONS)
 
+    def held(self, head: int) -> bool:
+        """Whether the collective at `head` is a thing held ("with hired clubs"): language/held_collectives.py."""
+        return held_not_people(self.s, head)
+
     def collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
         """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
         s = self.s
         noun = s.lemma(head)
         if noun not in lx.IMPLIED_RANGES or (self.people.multiword_end(head) and noun not in lx.MULTIWORD_COLLECTIVES):
             return None  # "the au pair" is no pair; "the cabin crew" is a crew
+        if held_not_people(s, head):
+            return None  # "with hired clubs", "carry their clubs": things held
         if noun in lx.MULTIWORD_COLLECTIVES and (number is not None and s.low[head] == noun or (
                 head + 1 < s.n and s.lemma(head + 1) == "member")):
             return None  # "three cabin crew", "2 crew", "a crew member": its members counted

@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.called_in import called_in_to
+from grove_tui.language.carried_moves import moves_at
 from grove_tui.language.robot_journey import journey_words
 from grove_tui.language.clauses import Clause, Clauses
 from grove_tui.language.escorted import attribute_end, company_between
@@ -365,9 +366,7 @@ class Groups:
                              then_at=later_words(s, *span), stayed_at=stayed_spots(s),
                              verbs_at=[(i, verb_lemma(s.low[i])) for i in range(*span) if not s.after_determiner(i)
                                        and verb_lemma(s.low[i]) in lx.DEPARTURE_VERBS | lx.ARRIVAL_VERBS | lx.BOARDING_VERBS],
-                             moves_at=[i for i in range(*span) if not s.after_determiner(i)
-                                       and lx.INTENT_VERBS.get(verb_lemma(s.low[i])) in ("walk", "evacuate", "wander")
-                                       and (s.w[i].pos == "VERB" or not s.index.knows(s.lemma(i)))])
+                             moves_at=moves_at(s, span))
         self._settle_places(roles, intent, stationary, c.moves)
         self._inherit_places(m, roles, earlier, stationary)
         if not stayed_there(self.places, span, roles, stationary):

@@ -588,7 +588,7 @@ class Mentions:
             return None  # "... one person; the person wanders around": the same people again
         noun = s.lemma(head)
         collective = self.collectives.collective(head)
-        if collective is not None:
+        if collective is not None or self.collectives.held(head):  # "with hired clubs": things held, no one
             return collective
         if det in ("a", "an") or family_member(s, head) or (singular and (det == "the" or det in _POSSESSIVES and low[at - 1] == "and")):
             kind = "exclusive" if exclusive else "exact"

@@ -179,10 +179,10 @@ class PeopleObjects:
             or shared_subject_is_robot(s, self.people, k)  # "ask the robot to escort ..."; "..., then leads ..."
         if not robot:
             return None
-        verb = verb_lemma(s.low[p])
-        if direct and verb in lx.ROBOT_FOLLOW_VERBS and verb not in lx.LEADING_VERBS:
+        word = verb_lemma(s.low[p])
+        if direct and word in lx.ROBOT_FOLLOW_VERBS and word not in lx.LEADING_VERBS:
             return "followed"
-        return "led" if direct and verb in lx.LEADING_VERBS else "met"
+        return "led" if direct and word in lx.LEADING_VERBS else "met"
 
     def _verb_through_prepositions(self, head: int) -> int | None:
         """The verb a person's phrase hangs from by the parse, through a preposition of the robot's way

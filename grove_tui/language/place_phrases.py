@@ -41,6 +41,7 @@ from grove_tui.language.not_places import no_place_said
 from grove_tui.language.stage_parts import stage_part
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
+from grove_tui.language.where_elsewhere import elsewhere
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.other_possessors import other_of_kind, setting_words
 from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
@@ -261,6 +262,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if found is None:
             return None
         (match, score, reason, alternatives), end = found
+        if (other := elsewhere(self.s.index, self.s, self.history, prep, at, self.s.low[k:end], match, alternatives,
+                                reason)) is not None:
+            match, alternatives, reason = other  # "from the pro shop to where ...": somewhere other than where they left
         return self._record(Place(prep, at, tuple(self.s.low[k:end]), match, end, score, reason, alternatives,
                                   written=self.s.low[at]), k, mentioned)
 
