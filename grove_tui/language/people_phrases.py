@@ -9,6 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.counts import quantifier
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.verbless_pairs import second_of_a_placed_pair
 
 
 def whole_zone_pronoun(s: Sentence, at: int) -> bool:
@@ -38,6 +39,8 @@ def companions(s: Sentence, people: People, with_at: int) -> bool:
 def coordinated_person(s: Sentence, people: People, head: int) -> bool:
     """Whether a person word is joined by "and" to another person phrase ("Mum and two kids
     walk", "Mum and Dad chat"): the first of two subjects, though no verb follows it."""
+    if second_of_a_placed_pair(s, people, head):
+        return True  # "Mum and Dad at the table": the second of the two, with no verb either
     if head + 2 >= s.n or s.low[head + 1] != "and":
         return False
     q = quantifier(s, head + 2)

@@ -5,6 +5,7 @@ order to" (language/clauses.py): each gives where the purpose's words start and 
 from __future__ import annotations
 
 from grove_tui.language.fronted_wants import fronted_want
+from grove_tui.language.paying_purposes import paying_purpose
 from grove_tui.language.sentence import Sentence
 
 _WANTING = frozenset("wanting needing seeking hoping".split())
@@ -18,6 +19,8 @@ def purpose_said(s: Sentence, i: int) -> tuple[int, int] | None:
     if low[i] in _WANTING and i > 1 and i + 1 < s.n and s.w[i + 1].pos not in ("ADP", "PART", "PRON", "PUNCT", "AUX") and \
             s.preposition(i + 1) is None and not s.is_punct(i + 1) and s.preposition(i - 1) is None:
         return i, i + 1  # "wanting flea spray": what they want
+    if (paying := paying_purpose(s, i)) is not None:
+        return paying  # "at the pro's till paying green fees": what they pay for there
     if (fronted := fronted_want(s, i)) is not None:
         return fronted  # "Wanting postcards for their project, a pair of ... cross ..."
     if low[i] == "in" and tuple(low[i + 1:i + 3]) == ("search", "of") and i + 3 < s.n and \
