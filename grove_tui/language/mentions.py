@@ -20,7 +20,7 @@ from grove_tui.language.occasion_headings import without_heading
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.couple_words import bare_couple
-from grove_tui.language.cue_in_names import in_a_place_name
+from grove_tui.language.cue_in_names import person_word_in_a_place_name
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
@@ -216,7 +216,7 @@ class Mentions:
             return False  # "families wait at the gate with their children": the families' own members
         if prev in lx.CLAUSE_STARTERS | lx.EXCEPT_WORDS | {"than"} or (s.low[p - 1], prev) == (",", "where"):
             return True
-        if self._place_named_with_a_person_word(at):
+        if person_word_in_a_place_name(s, at):
             return False  # "the robot ferries soup from the kitchen diner to ...": a room, no diner
         if self.objects.led_by(at) or self.objects.robot_object(at) is not None or self.objects.followed(at) or \
                 self.objects.sent_by(at):
@@ -247,19 +247,6 @@ class Mentions:
         if self._after_time_phrase(at) or after_a_clock_time(s, at):
             return True  # "..., and every so often a lost visitor wanders over"
         return self._parser_subject(at)
-
-    def _place_named_with_a_person_word(self, at: int) -> bool:
-        """Whether the word at `at` is inside a place's whole name or alias of two words or more, said
-        after a place's preposition ("from the kitchen diner", "to the nurses' station"): a word for people
-        that names no one there."""
-        s = self.s
-        for start in range(s.skip(at, lx.DETERMINERS), max(-1, at - 3), -1):
-            before = start - 1
-            while before > 0 and s.low[before] in lx.DETERMINERS:
-                before -= 1
-            if before >= 0 and s.low[before] in lx.PLACE_PREPOSITIONS and in_a_place_name(s, start):
-                return True
-        return False
 
     def _after_time_phrase(self, at: int) -> bool:
         """Whether only a phrase of time stands between the start of a clause and `at` ("and every
