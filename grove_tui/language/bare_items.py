@@ -1,7 +1,8 @@
 """Items of a chat list said with no determiner ("8 people in queue at till 2, staff member restocking
 aisle 3", "ceo and 2 VPs in boardroom, intern at printer", "8 undergrads in chem lab and technician
 at fume cupboards"): a bare singular word for a person opening an item, after an item that said its
-place, is one person, written with "a" so the parser reads a group of its own. A word for people in
+place, is one person, written with "a" (so is a word no list knows in "his" or "her" own place: "gaffer in
+his office", language/own_place_items.py) so the parser reads a group of its own. A word for people in
 the plural, a word the lexicon keeps for many ("staff", "security"), or an item with no place before
 it ("a mother and child at the desk") or after a place said as an item of its own ("marketing lot, 5
 people, in huddle room 2, boss in her office": whose place it is the places decide) is left as it is."""
@@ -12,6 +13,7 @@ import re
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.item_doings import doing_word
+from grove_tui.language.own_place_words import own_place
 from grove_tui.language.tokens import lemma
 
 _PLACED = frozenset("in at on by near inside outside behind beside".split())
@@ -45,7 +47,7 @@ def bare_items(text: str) -> str:
             start = m.start() + len(m.group("sep"))
             continue
         said = bool(before) and before[0] not in _PLACED  # not ", in huddle room 2, boss ...": a place of its own
-        if _bare_person(noun) and (follows in _AFTER or doing_word(follows, after if follows != after else None)) and said and _PLACED & set(before):
+        if (_bare_person(noun) or own_place(noun, follows, after)) and (follows in _AFTER or doing_word(follows, after if follows != after else None)) and said and _PLACED & set(before):
             article = "an" if first[0] in "aeiou" else "a"
             out.append(text[last:m.start()] + m.group("sep") + article + " ")
             last = m.start() + len(m.group("sep"))

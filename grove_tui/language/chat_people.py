@@ -24,12 +24,12 @@ _N_POSSESSIVE = re.compile(r"(?<=\w)\s+n\s+(?=(?:his|her|their|my|our|its)\b)")
 _N_PERSON = re.compile(r"(?<=\w)\s+n\s+(?=([a-z]+)\b)")
 _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha() and w not in
                                          ("couple", "pair", "handful", "dozens")), key=len, reverse=True)) + r")"
-_BARE_COUNT = re.compile(r"(^|[,;]\s*|\b(?:and|n|while|plus)\s+|(?:^|[.!?]\s+)(?:Have|Get|Put|Keep|Leave)\s+)(" + _NUMBER + r")\s+([a-z]+ing)\b(?=\s+(\w+))",
+_BARE_COUNT = re.compile(r"(^|[,;+&]\s*|\b(?:and|n|while|plus)\s+|(?:^|[.!?]\s+)(?:Have|Get|Put|Keep|Leave)\s+)(" + _NUMBER + r")\s+([a-z]+ing)\b(?=\s+(\w+))",
                          re.IGNORECASE)
 # What people do, said by a bare count: "5 browsing", "4 queuing", "2 chatting".
 _DOING = frozenset("browse queue queueing wait sit stand chat talk wander stroll walk mill hang shop eat drink look line "
                    "loiter linger gossip read work lounge relax rest head hover huddle gather sleep doze play "
-                   "run jog smoke argue laugh pray sing dance study".split())
+                   "run jog smoke argue laugh pray sing dance study do doing".split())  # "doing": kept whole by the lemmatiser
 # Nouns a "-ing" word makes with a count: "5 waiting rooms", "2 parking spaces".
 _ING_NOUNS = frozenset("room rooms area areas space spaces bay bays lane lanes spot spots point points station "
                        "stations desk desks hall halls list lists bench benches machine machines".split())

@@ -40,6 +40,7 @@ from grove_tui.language.failing_things import failing_thing
 from grove_tui.language.feeling_people import feels_about_the_robot
 from grove_tui.language.chore_subjects import chore_subject
 from grove_tui.language.chat_list_items import chat_list_doer, chat_list_item
+from grove_tui.language.own_place_items import own_place_item
 from grove_tui.language.listed_people import listed_person
 from grove_tui.language.counted_kinds import counted_plural_subject
 from grove_tui.language.verb_tagged_plurals import counted_compound_person, verb_tagged_plural
@@ -119,7 +120,7 @@ class People:
             return True  # "the hairdresser goes to ...": a trade, though the world has its salon
         if counted_plural_subject(s, i) or verb_tagged_plural(s, i) or subject_of_his_or_her(s, i) or by_a_life_adjective(s, i):
             return True  # "thirty top-year juniors troop into ...", "the Dean leaves his vestry"
-        if moves_as_a_person(s, i) or chat_list_item(s, i) or counted_compound_person(s, i):  # "..., 1 sysadmin in comms room"
+        if moves_as_a_person(s, i) or chat_list_item(s, i) or counted_compound_person(s, i) or own_place_item(s, i):  # "..., 1 sysadmin in comms room"
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair

@@ -20,6 +20,8 @@ from grove_tui.language.chat_lists import chat_lists
 from grove_tui.language.chat_places_first import places_first
 from grove_tui.language.chat_people import chat_people
 from grove_tui.language.chat_spelling import spell_out
+from grove_tui.language.chat_years import chat_years
+from grove_tui.language.some_one import some_one
 from grove_tui.language.count_spelling import count_words_spelt
 from grove_tui.language.kin_counts import kin_counts
 from grove_tui.language.placing_lists import placing_lists
@@ -106,7 +108,7 @@ def normalise(text: str) -> str:
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
     kept = names_unstopped(kept)  # "the T. rex", "St. Mary's ward": no sentence end
-    kept = robot_sent(robot_chat(spell_out(count_words_spelt(kept))))  # "walkin frm", "robo shd wait": chat's dropped g, short words
+    kept = robot_sent(robot_chat(some_one(chat_years(spell_out(count_words_spelt(kept))))))  # "walkin frm", "robo shd wait": chat's dropped g, short words
     kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(as_paired_kin(kept))))))  # "a father-and-daughter pair": "a father-daughter pair"  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", _TILDE.sub("about ", kept))))
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
