@@ -31,6 +31,7 @@ from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_
 from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
+from grove_tui.language.sibling_kinds import sibling_kind
 from grove_tui.language.worked_states import past_state
 from grove_tui.language.worn_fixtures import worn_fixture
 from grove_tui.language.place_possessed import owned_places
@@ -196,7 +197,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES and not tier_place(lemmas):
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
-        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
+        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or sibling_kind(s, start, j, match) or (owned is None and other_of_kind(
                 s.index, match, lemmas, setting_words(s, start, j, self.people.is_person_noun))):  # "the planetarium (room)", "the members' enclosure"
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
