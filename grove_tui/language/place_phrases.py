@@ -198,7 +198,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES and not tier_place(lemmas):
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
-        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or sibling_kind(s, start, j, match) or (owned is None and other_of_kind(
+        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
                 s.index, match, lemmas, setting_words(s, start, j, self.people.is_person_noun))):  # "the planetarium (room)", "the members' enclosure"
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
@@ -212,7 +212,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and (not match.exact or by_bare_alias(s.index, match, lemmas)) and owned is None and \
                 (informal is not None or not self.modifiers_agree(
                     self.noun_modifiers(start, j, gerunds=gerund_kind(s, lemmas, j)),
-                    match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds):
+                    match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds) or sibling_kind(s, start, j, match):
             match = None  # "the ice-cream stand" is no phone stand; an informal name is its whole name or near
         meant = None
         described = None if numbered else self._described(phrase, lemmas, j, match is not None and match.exact)

@@ -2,7 +2,9 @@
 water park whose pools are the wave pool and the splash pool, "the beer tent" of a show whose tents are the
 food tent and the craft tent. The head matches a place, but that place is called by the head with another
 word of kind before it ("wave pool", "food tent"), and the word said is a noun (or "-ing" word) the world
-never uses and is not clearly near the place: the phrase names a sibling kind the world lacks, to refuse.
+never uses and is not clearly near the place: the phrase names a sibling kind, not that place. The match
+is dropped; a place the whole phrase clearly means is still read by meaning ("the eating area" is the
+cafeteria, not the waiting area), else the phrase is refused as a place the world lacks.
 Adjectives ("the huge pool"), whose it is ("the kids' pool") and words the world uses are left alone, as
 is a word clearly near the place ("the swimming pool" is the main pool)."""
 
