@@ -30,7 +30,7 @@ def ridden_on(s: Sentence, k: int, prep: str, at: int) -> bool:
         return False
     x = at - 1
     while x >= 0 and s.low[x] not in _BREAKS:
-        if verb_lemma(s.low[x]) in _STILL:
+        if verb_lemma(s.low[x]) in _STILL or s.low[x].rstrip("s") in _STILL or s.lemma(x) in _STILL:
             return False
         x -= 1
     return True
