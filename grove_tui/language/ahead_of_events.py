@@ -2,7 +2,10 @@
 ahead of the 3 pm star show", "gather in the foyer in advance of the lecture". Like "for the show", the
 event is why they are there (their purpose), not a place: the phrase runs to its head noun, which must
 name an event (a show, a match, a service, a lecture) and not a vehicle or a person ("ahead of the
-coach", "ahead of their teacher" say who goes first)."""
+coach", "ahead of their teacher" say who goes first).
+
+An event said with a day's possessive ("ahead of tonight's whist drive", "in advance of Saturday's fun run")
+is an event whatever its head: a day has occasions, not places or people."""
 
 from __future__ import annotations
 
@@ -12,6 +15,9 @@ from grove_tui.language.sentence import Sentence
 
 # Less the words that also name people ("ahead of the class", "ahead of the tour party": who goes first).
 _EVENTS = EVENT_WORDS - lx.PERSON_NOUNS
+# Days whose possessive opens an event ("tonight's", "Saturday's").
+_DAYS = frozenset("""tonight tomorrow today yesterday evening morning afternoon weekend week month year monday
+tuesday wednesday thursday friday saturday sunday""".split())
 
 
 def ahead_of_event(s: Sentence, i: int) -> int | None:
@@ -22,6 +28,12 @@ def ahead_of_event(s: Sentence, i: int) -> int | None:
         start = i + 3
     else:
         return None
+    if start + 2 < s.n and s.low[start] in _DAYS and s.low[start + 1] in ("'s", "’s"):
+        end = start + 2
+        while end < s.n and end < start + 6 and s.w[end].pos in ("NOUN", "PROPN", "ADJ", "VERB") and \
+                s.low[end] not in lx.CLAUSE_STARTERS and s.low[end] not in lx.PLACE_PREPOSITIONS:
+            end += 1
+        return end if end > start + 2 else None  # "ahead of tonight's whist drive"
     end = s.phrase_end(start)
     if end <= start or end > s.n:
         return None

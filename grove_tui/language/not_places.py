@@ -27,6 +27,7 @@ from grove_tui.language.held_origins import origin_of_held
 from grove_tui.language.hidden_behind import hidden_behind
 from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.outing_words import an_outing
+from grove_tui.language.person_relatives import in_persons_relative
 from grove_tui.language.weather_words import the_weather
 from grove_tui.language.who_from import who_they_are_from
 from grove_tui.language.bid_things import a_thing_bid_on
@@ -48,6 +49,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
     if prep in ("at", "from", "in", "during") and names_an_event(s, k):
         return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
+    if in_persons_relative(s, at):
+        return True  # "a teenager who slipped on the wet tiles": before the scene (person_relatives.py)
     if a_thing_bid_on(s, k, prep, at):
         return True  # "lost out on the bureau she came for": a thing (bid_things.py)
     if who_they_are_from(s, k, prep, at):

@@ -31,6 +31,8 @@ from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_
 from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
 from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
 from grove_tui.language.named_kinds import by_head_alone
+from grove_tui.language.sibling_kinds import sibling_kind
+from grove_tui.language.ridden_things import ridden_on
 from grove_tui.language.worked_states import past_state
 from grove_tui.language.worn_fixtures import worn_fixture
 from grove_tui.language.place_possessed import owned_places
@@ -109,7 +111,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
-        if on_ones_way(s, k, prep, at) or is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
+        if on_ones_way(s, k, prep, at) or ridden_on(s, k, prep, at) or is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
         if k < s.n and (low[k] in ("where", "wherever", "upstairs", "downstairs") or may_be_place(s, k, prep, at)):
             return self.where_place(k, prep, at, mentioned)
@@ -210,7 +212,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and (not match.exact or by_bare_alias(s.index, match, lemmas)) and owned is None and \
                 (informal is not None or not self.modifiers_agree(
                     self.noun_modifiers(start, j, gerunds=gerund_kind(s, lemmas, j)),
-                    match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds):
+                    match.name, phrase)) or other_kind_of_room(s.index, match, lemmas, kinds) or sibling_kind(s, start, j, match):
             match = None  # "the ice-cream stand" is no phone stand; an informal name is its whole name or near
         meant = None
         described = None if numbered else self._described(phrase, lemmas, j, match is not None and match.exact)
