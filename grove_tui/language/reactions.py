@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.robot_company import goes_with_robot
 from grove_tui.language.disregard import disregards
+from grove_tui.language.hemmed_in import kept_from_passing_later
 from grove_tui.language.hostile_gestures import gesture_threat
 from grove_tui.language.modified_nouns import after_modified_determiner
 from grove_tui.language.sentence import Sentence
@@ -60,6 +61,8 @@ def clause_reaction(s: Sentence, own: Sequence[int], robot_after: int | None) ->
     timed = timed_by_robot(s, own, robot_after)
     idiom = idiom_reaction(s, own) if robot_at or timed else None
     idiom = "follow" if asks_to_be_led(s, own, robot_at) else idiom  # "lets the robot lead her to room 107"
+    if idiom == "approach" and any(kept_from_passing_later(s, r) for r in robot_at):
+        idiom = "block"  # "crowd round the robot so it can't get by" (hemmed_in.py)
     found = idiom if idiom is not None else robot_interaction(s, own, robot_at)
     if found is None and timed:
         found = timed_reaction(s, own)
@@ -83,6 +86,8 @@ def robot_interaction(s: Sentence, own: Sequence[int], robot_at: Sequence[int]) 
         found = (_after_robot(s, r) or _before_robot(s, own, ownset, since, r)
                  or motion_reaction_before(s, own, since, r) or _noun_after(s, ownset, r) or _passive(s, r)
                  or goes_with_robot(s, own, r) or placed_before(s, own, r))
+        if found in (None, "approach") and kept_from_passing_later(s, r):
+            found = "block"  # "surround the robot up on the gallery so it can't get past"
         if (found == "avoid" or n_mention) and _refused(s, own, r):
             # "refuses to get out of the robot's way"; and a later mention refused its way after an
             # earlier one ("gather round the robot and won't let it through"): they end by blocking it

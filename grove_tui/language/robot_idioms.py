@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.fled_places import flees_to_a_place
+from grove_tui.language.fronted_timers import fright_reaction, fronted_robot_timer
 from grove_tui.language.hiding_moves import hides_by_moving
 from grove_tui.language.robot_holds import HOLDING_IDIOMS
 from grove_tui.language.robot_sticking import sticking_reaction
@@ -111,6 +112,8 @@ def timed_by_robot(s: Sentence, own: Sequence[int], robot_after: int | None) -> 
         if s.low[k] in _TIME_WORDS and s.w[k].sentence == sentence and (k == 0 or s.is_punct(k - 1)) and \
                 any(s.low[r] in lx.ROBOT_WORDS for r in range(k + 1, min(k + 4, own[0]))):
             return True
+    if fronted_robot_timer(s, own[0]):
+        return True  # "The moment the robot nudges the door open, ...", "As soon as it rolls in, ..."
     return any((s.low[k] in _TIME_WORDS or time_phrase_end(s, k)) and  # "every time the robot beeps"
                any(s.low[r] in lx.ROBOT_WORDS for r in range(k + 1, min(k + 4, s.n))) for k in own)
 
@@ -124,7 +127,8 @@ def timed_reaction(s: Sentence, own: Sequence[int]) -> str | None:
         if s.after_determiner(i) or s.w[i].pos not in ("VERB", "AUX", "NOUN", "ADJ", "PROPN"):
             continue
         v = s.verb(i) if s.w[i].pos in ("VERB", "AUX") else s.w[i].lemma  # "scurries" is tagged a noun at times
-        if v in _SHRINKING_VERBS or lx.ROBOT_VERBS.get(v) == "avoid" or hides_by_moving(s, i):
+        if v in _SHRINKING_VERBS or lx.ROBOT_VERBS.get(v) == "avoid" or hides_by_moving(s, i) or \
+                fright_reaction(s, i):
             return "avoid"
         nxt = own[n + 1] if n + 1 < len(own) else None
         if nxt == i + 1 and s.low[nxt] in _AWAY_TAILS and s.w[i].pos in ("VERB", "NOUN") and _ends(s, nxt + 1):
