@@ -35,6 +35,7 @@ from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.counted_from import with_counted_from
 from grove_tui.language.scale_and_figures import with_scale_and_figures
+from grove_tui.language.fronted_lead_times import without_fronted_lead_times
 from grove_tui.language.homophone_slips import with_homophone_slips
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.chat_requests import as_chat_request
@@ -188,7 +189,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes and what it asks of the robot, in the world's own
     place names (see the module doc)."""
     typed = " ".join((prompt or "").split())
-    text = normalise(typed)
+    text = without_fronted_lead_times(normalise(typed))  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
