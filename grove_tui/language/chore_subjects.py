@@ -1,6 +1,7 @@
 """A noun no list names is a person when it is the subject of a chore done to something ("a
 fishmonger restocks the slab", "a yard hand hoses out the block", "the porter empties the bins"):
-restocking, hosing, mopping or emptying is work people do, not things, and the verb has its object
+restocking, hosing, mopping, emptying or prepping
+(round 60: "a keeper preps fish in the yard") is work people do, not things, and the verb has its object
 after it. Without this such a clause named nobody, and in a list of clauses ("A does X, two B do Y,
 and C do Z") its person was lost. A noun of the world's (a place or a thing), the robot, a hazard or
 a time is still none ("the fountain empties" has no object), except a trade's word that names a
@@ -16,7 +17,8 @@ from grove_tui.language.tokens import verb_lemma
 CHORE_VERBS = frozenset(
     """restock stock replenish refill hose mop sweep wipe scrub polish dust hoover vacuum tidy clean
     rinse wash empty unload unpack bag shelve fillet gut debone slice chop peel stack sort fold iron
-    fix mend repair varnish grease coil scrape swab sluice jetwash sharpen arrange garnish tally""".split())
+    fix mend repair varnish grease coil scrape swab sluice jetwash sharpen arrange garnish tally
+    prep prepare portion weigh dice mince marinate knead decant measure label""".split())
 # A trade's word the world also gives a room ("the fishmonger", "a florist") is still the person
 # when it does a chore: a unit does not restock anything.
 _TRADE_SUFFIXES = lx.AGENT_SUFFIXES + ("ent",)

@@ -10,6 +10,7 @@ import re
 from typing import NamedTuple
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.acronym_units import acronym_before_noun
 from grove_tui.language.described_ranges import couple_or_more, is_described_estimate
 from grove_tui.language.model import Count
 from grove_tui.language.quantity_nouns import VAGUE_QUANTITY_RANGES, quantity_noun_at
@@ -286,7 +287,7 @@ def _duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
             and lemma(low[j + 3]) in lx.DURATION_UNITS):
         return lx.DURATION_UNITS[lemma(low[j + 3])] / 4, j + 4  # "a quarter of an hour"
     q = quantifier(s, k)
-    if q is not None and q.end < s.n and lemma(low[q.end]) in lx.DURATION_UNITS:
+    if q is not None and q.end < s.n and lemma(low[q.end]) in lx.DURATION_UNITS and not acronym_before_noun(s, q.end):
         unit = lx.DURATION_UNITS[lemma(low[q.end])]
         value = float(q.value)
         if q.kind.startswith("vague"):
@@ -295,7 +296,8 @@ def _duration_at(s: Sentence, k: int) -> tuple[float, int] | None:
         elif q.kind == "range":
             value = (q.value + (q.high or q.value)) / 2
         return value * unit, q.end + 1
-    if low[k] in ("a", "an", "one") and k + 1 < s.n and lemma(low[k + 1]) in lx.DURATION_UNITS:
+    if low[k] in ("a", "an", "one") and k + 1 < s.n and lemma(low[k + 1]) in lx.DURATION_UNITS and \
+            not acronym_before_noun(s, k + 1):
         return lx.DURATION_UNITS[lemma(low[k + 1])], k + 2
     if low[k] in ("the", "all") and k + 1 < s.n and low[k + 1] in lx.DAY_PERIODS and k > 0 and \
             s.verb(k - 1) == "spend":

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from grove_tui.language.bound_for import bound_verbs
+from grove_tui.language.chore_verbs_tagged import as_chore_verbs
 from grove_tui.language.event_causes import shutting_verbs
 from grove_tui.language.going_idioms import as_going_verbs
 from grove_tui.language.parser import Word
@@ -55,7 +56,7 @@ _AFTER_BARE = frozenset({"", ".", "!", ",", ";", ":", "from", "out", "off", "awa
 
 def as_verbs(words: list[Word]) -> list[Word]:
     """The parse with leaving verbs the parser took for nouns tagged as verbs ("lounge leg it")."""
-    words = with_till_nouns(words)  # "a pair of till staff": the shop's till, not "until"
+    words = as_chore_verbs(with_till_nouns(words))  # "a keeper preps fish": a verb; "a pair of till staff": the shop's till, not "until"
     out = list(words)
     for k, w in enumerate(words):
         nxt = words[k + 1].lower if k + 1 < len(words) else ""

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.hyphened_modifiers import modified_start, modifier_count
 from grove_tui.language.placed_and_names import placed_after_and
 
 if TYPE_CHECKING:
@@ -66,10 +67,8 @@ def _placed_role(s: Sentence, verb: int, i: int) -> bool:
     lab tech at the centrifuge", "Stick a PCSO behind the front counter": a word ending as a doer's
     name ("-er", "-or", "-ant") that is no thing, a role said short, or one in capitals, opened by
     "a", "an" or "one" with at most one noun before it."""
-    first = i
-    while first > verb + 1 and s.w[first - 1].head == i and s.w[first - 1].dep in ("compound", "amod"):
-        first -= 1  # "a lab tech", "a street fiddler"
-    if s.low[first - 1] not in ("a", "an", "one") or i - first > 1 or s.low[i] in _DOER_THINGS or \
+    first = modified_start(s, i, verb + 1)  # "a lab tech", "a street fiddler", "a night-shift replenisher"
+    if s.low[first - 1] not in ("a", "an", "one") or modifier_count(s, first, i) > 1 or s.low[i] in _DOER_THINGS or \
             s.lemma(i) in lx.NON_PEOPLE or s.lemma(i) in lx.CARRYING_THINGS:
         return False
     text = s.w[i].text

@@ -34,6 +34,8 @@ from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.counted_from import with_counted_from
+from grove_tui.language.scale_and_figures import with_scale_and_figures
+from grove_tui.language.fronted_lead_times import without_fronted_lead_times
 from grove_tui.language.homophone_slips import with_homophone_slips
 from grove_tui.language.chat_waits import as_chat_wait
 from grove_tui.language.chat_requests import as_chat_request
@@ -187,7 +189,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes and what it asks of the robot, in the world's own
     place names (see the module doc)."""
     typed = " ".join((prompt or "").split())
-    text = normalise(typed)
+    text = without_fronted_lead_times(normalise(typed))  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
@@ -204,7 +206,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
-    text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(text)))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
+    text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(with_scale_and_figures(text))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
