@@ -151,7 +151,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return None  # "sit waiting to board": a verb, though "board" is a word of "departures board"
         lemmas = informal[2] if informal is not None else \
             tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
-        if any(w in lx.ROBOT_WORDS for w in phrase) or self.people.is_person_phrase(lemmas) and not absent_kind(s.index, lemmas):
+        if any(w in lx.ROBOT_WORDS for w in phrase) and not self.whole_name(phrase) or self.people.is_person_phrase(lemmas) and not absent_kind(s.index, lemmas):
             return None
         if lemmas and lemmas[-1] in lx.DURATION_UNITS:
             return None  # "in seconds", "within minutes": a time, though "second" starts a room's name
