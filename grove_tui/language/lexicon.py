@@ -187,7 +187,7 @@ OWNER_KINDS: dict[str, str] = {}
 for _kind, _people in {
     "child": "child kid teenager teen son daughter boy girl toddler baby youngster schoolchild pupil infant",
     "parent": "parent mum mom dad mother father husband wife",
-    "manager": "manager director boss ceo executive head",
+    "manager": "manager director boss ceo executive head gaffer guvnor guv",
     "guard": "guard security officer",
     "doctor": "doctor physician surgeon consultant",
     "nurse": "nurse",

@@ -15,6 +15,8 @@ and, round 23, a span of the event ("in the interval", "during the break") and w
 
 from __future__ import annotations
 
+__all__ = ["caught_by", "no_place_said"]
+
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.consumed_things import consumed_thing
@@ -31,6 +33,7 @@ from grove_tui.language.person_relatives import in_persons_relative
 from grove_tui.language.weather_words import the_weather
 from grove_tui.language.who_from import who_they_are_from
 from grove_tui.language.bid_things import a_thing_bid_on
+from grove_tui.language.caught_by import caught_by  # read by place_phrases.py with no_place_said
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.span_ends import span_after_part
 from grove_tui.language.times_and_manners import time_or_manner

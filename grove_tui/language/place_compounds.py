@@ -33,17 +33,28 @@ SURROUNDINGS = frozenset("town city village".split())
 # from "sports centre"); kinds no such world is come no nearer than 0.44 ("garden centre" to a mall,
 # "data centre" 0.29 to a supermarket, "day centre" 0.38 to a hospital).
 OF_THIS_BUILDING = 0.45
+# A head that is a word of the world's own name ("bank" of a food bank, "unit" of a dialysis unit) with
+# another noun before it names the building only when nearer still: "renal unit" is 0.79 from "dialysis
+# unit", while "clothes bank" (0.58) and "baby bank" (0.62) are other kinds of bank than a food bank.
+OF_THIS_NAME = 0.65
 
 
 def names_another_kind(index: PlaceIndex, content: Sequence[str]) -> bool:
     """Whether a phrase headed by a building word names a kind of place rather than the building: a
     noun before the head that is no word of the building, and the whole not near what this world is."""
-    if len(content) < 2 or content[-1] not in KIND_HEADS:
+    own_name = len(content) >= 2 and content[-1] in world_name_words(index)
+    if len(content) < 2 or content[-1] not in KIND_HEADS and not own_name:
         return False
-    kinds = [t for t in content[:-1] if t not in index.building_words and t.isalpha()]
+    kinds = [t for t in content[:-1] if t not in index.building_words and t.isalpha() and known_word(t)]
     if not kinds or any(t in SURROUNDINGS for t in kinds):
         return False
-    return index.near_building(" ".join(content)) < OF_THIS_BUILDING
+    near = index.near_building(" ".join(content))
+    return near < OF_THIS_BUILDING or own_name and content[-1] not in KIND_HEADS and 0.0 < near < OF_THIS_NAME
+
+
+def world_name_words(index: PlaceIndex) -> frozenset[str]:
+    """The words of the world's own name ("food", "bank" of a food bank)."""
+    return frozenset(str(getattr(index.world, "name", "") or "").lower().replace("_", " ").split())
 
 
 def head_only_modifies(entry: PlaceEntry, content: Sequence[str]) -> bool:

@@ -1,5 +1,6 @@
-"""What people ride, float or glide on as they go (issue 29): "kids drift round the river on rubber rings",
-"two teens cruise along the prom on their scooters", "a boy bobs about on a lilo". After "on", with no
+"""What people ride, float or glide on as they go, and what carries the load they push (issue 29):
+"kids drift round the river on rubber rings", "a porter wheels the bags on a cart", "two teens cruise along the prom on their scooters", "a boy bobs
+about on a lilo". After "on", with no
 "the" (bare, "a", or whose), a thing people ride is how they go, no place: never the world's rack of rings
 or bike stand. A posture or a workout before it ("sits on a bike", "pedals on the exercise bikes") leaves
 the phrase to the reader, as does "the" ("on the rings" of a gym)."""
@@ -13,6 +14,9 @@ from grove_tui.language.tokens import lemma, verb_lemma
 _RIDDEN = frozenset("ring lilo inflatable float tube tyre dinghy bodyboard surfboard paddleboard board bike "
                     "bicycle scooter skateboard skate rollerblade horse pony donkey sledge toboggan "
                     "unicycle trike tricycle segway hoverboard".split())
+# Things that carry what people push or pull ("pushes the bags on a cart", "wheels the boxes on a
+# trolley"): how the load goes, no place, as a ridden thing is how its rider goes.
+_CARRIERS = frozenset("cart trolley barrow wheelbarrow handcart dolly gurney stretcher sack truck".split())
 _OWNERS = frozenset("a an their his her my our your its".split())
 # Verbs that keep people in one spot on the thing: the phrase may be a place of the world.
 _STILL = frozenset("sit stand lie lounge perch wait pedal train exercise work rest sprawl kneel".split())
@@ -26,7 +30,7 @@ def ridden_on(s: Sentence, k: int, prep: str, at: int) -> bool:
     j = k + 1 if s.low[k] in _OWNERS else k
     while j < s.n and s.w[j].pos == "ADJ" or j + 1 < s.n and s.w[j].pos == "NOUN" and s.w[j + 1].pos == "NOUN":
         j += 1  # "rubber rings", "inflatable rings"
-    if j >= s.n or lemma(s.low[j]) not in _RIDDEN or j + 1 < s.n and s.w[j + 1].pos == "NOUN":
+    if j >= s.n or lemma(s.low[j]) not in _RIDDEN | _CARRIERS or j + 1 < s.n and s.w[j + 1].pos == "NOUN":
         return False
     x = at - 1
     while x >= 0 and s.low[x] not in _BREAKS:
