@@ -18,7 +18,8 @@ def stay_first(s: Sentence, k: int) -> tuple[float, int] | None:
     if s.low[k] != "after" or (k > 0 and not s.is_punct(k - 1)):
         return None
     dur = duration_at(s, k + 1)
-    if dur is None or dur[1] >= s.n or not (s.low[dur[1]].endswith("ing") or stay_place_after(s, dur[1])):
+    if dur is None or dur[1] >= s.n or not (s.low[dur[1]].endswith("ing") or stay_place_after(s, dur[1]) or
+                                            participle_spot(s, dur[1]) is not None):  # "stuck at the desk"
         return None
     return dur
 
